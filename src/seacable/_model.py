@@ -1,0 +1,196 @@
+"""The base of every input object: immutable, picklable, validated on construction.
+
+Input objects (line types, environments, cases) are frozen pydantic models. A
+value is checked where it is declared, with its unit, through :func:`quantity`;
+every validation failure, whether the object is built in code or read from a
+case file, surfaces as one :class:`~seacable.errors.InputError` whose lines name
+the key path, the value with its unit, what was expected and a fix. Unknown keys
+get a "did you mean" suggestion.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from typing import Annotated, Any
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
+
+from .errors import InputError
+
+__all__ = ["Model", "quantity", "format_validation_error", "suggest"]
+
+
+def suggest(word: str, choices) -> str:
+    """Return ``" Did you mean 'x'?"`` for the closest of ``choices``, or ``""``."""
+    close = difflib.get_close_matches(str(word), [str(c) for c in choices], n=1, cutoff=0.6)
+    return f" Did you mean '{close[0]}'?" if close else ""
+
+
+def _number_checker(unit: str, gt, ge, lt, le, fix: str | None):
+    shown_unit = "" if unit in ("", "-") else f" {unit}"
+    hint = f" Suggested fix: {fix}" if fix else ""
+
+    def check(value: Any) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            if isinstance(value, str):
+                try:
+                    value = float(value)
+                except ValueError:
+                    raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
+                                     + (hint or " Suggested fix: write a plain number in SI units.")) from None
+            else:
+                raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
+                                 + (hint or " Suggested fix: write a plain number in SI units."))
+        value = float(value)
+        if not math.isfinite(value):
+            raise ValueError(f"must be a finite number, got {value}{shown_unit}.{hint}")
+        for bound, ok, sign in ((gt, lambda v, b: v > b, ">"), (ge, lambda v, b: v >= b, ">="),
+                                (lt, lambda v, b: v < b, "<"), (le, lambda v, b: v <= b, "<=")):
+            if bound is not None and not ok(value, bound):
+                raise ValueError(f"must be {sign} {bound:g}{shown_unit}, got {value:g}{shown_unit}.{hint}")
+        return value
+
+    return check
+
+
+def quantity(unit: str, *, gt: float | None = None, ge: float | None = None, lt: float | None = None,
+             le: float | None = None, fix: str | None = None):
+    """A float field in SI ``unit`` with bounds, checked with a house-style message.
+
+    Use as a type: ``diameter: quantity("m", gt=0) = Field(description="... [m]")``.
+    Strings holding numbers (``"1e9"``, as YAML 1.1 reads them) are accepted; booleans,
+    NaN and infinities are not.
+    """
+    return Annotated[float, BeforeValidator(_number_checker(unit, gt, ge, lt, le, fix)),
+                     Field(json_schema_extra={"unit": unit})]
+
+
+#: Values of discriminated-union tags; pydantic puts them in error locations, where they
+#: would read as keys (``analysis.static.fairlead``), so they are left out of paths.
+UNION_TAGS: set[str] = set()
+
+
+def _path(loc) -> str:
+    parts: list[str] = []
+    for i, item in enumerate(loc):
+        if i > 0 and isinstance(item, str) and item in UNION_TAGS:
+            continue
+        if isinstance(item, int):
+            parts.append(f"[{item}]")
+        elif str(item).startswith("function-") or str(item) in ("tagged-union",):
+            continue
+        else:
+            parts.append(("." if parts else "") + str(item))
+    return "".join(parts)
+
+
+def _problems(error: ValidationError) -> list[tuple[tuple, str]]:
+    """(key path, message tail) of each problem; tails read on from the path."""
+    out: list[tuple[tuple, str]] = []
+    for err in error.errors(include_url=False):
+        loc = tuple(err.get("loc", ()))
+        kind, msg, ctx = err.get("type", ""), err.get("msg", ""), err.get("ctx") or {}
+        inner = ctx.get("error")
+        if kind == "value_error" and isinstance(inner, InputError) and getattr(inner, "problems", None):
+            # A nested seacable object raised its own problems: put them under this path.
+            out.extend((loc + sub, tail) for sub, tail in inner.problems)
+            continue
+        if kind == "value_error":
+            msg = msg.removeprefix("Value error, ")
+            tail = f" {msg}" if msg[:1].islower() else f": {msg}"
+        elif kind == "missing":
+            tail = f" is required but missing. Suggested fix: add the key '{loc[-1]}'."
+        elif kind == "extra_forbidden":
+            tail = ": unknown key."
+        elif kind == "union_tag_invalid":
+            tag, expected = ctx.get("tag"), ctx.get("expected_tags", "")
+            choices = [t.strip(" '") for t in str(expected).split(",")]
+            loc = loc + (str(ctx.get("discriminator", "type")).strip("'"),)
+            tail = f" must be one of {expected}, got '{tag}'.{suggest(tag, choices)}"
+        elif kind == "union_tag_not_found":
+            tail = ": the key 'type' is missing. Suggested fix: add 'type:' naming what to compute."
+        elif kind == "literal_error":
+            expected = ctx.get("expected", "")
+            choices = [t.strip(" '") for t in str(expected).replace(" or ", ",").split(",")]
+            tail = f" must be {expected}, got {err.get('input')!r}.{suggest(err.get('input'), choices)}"
+        elif kind in ("dict_type", "model_type", "dataclass_type", "model_attributes_type"):
+            tail = f" must be a mapping of keys to values, got {err.get('input')!r}."
+        elif kind in ("tuple_type", "list_type"):
+            tail = f" must be a list, got {err.get('input')!r}."
+        elif kind == "too_short" and any(len(e["loc"]) > len(loc) and tuple(e["loc"][:len(loc)]) == loc
+                                         for e in error.errors(include_url=False)):
+            continue  # an item inside failed; pydantic then also counts the container short
+        else:
+            tail = f": {msg} (got {err.get('input')!r})."
+        out.append((loc, tail))
+    return list(dict.fromkeys(out))
+
+
+def _join(problems: list[tuple[tuple, str]], root: str) -> str:
+    lines = [(_path(((root,) if root else ()) + loc) + tail).lstrip(": ") for loc, tail in problems]
+    if len(lines) == 1:
+        return lines[0]
+    return f"{len(lines)} problems:\n" + "\n".join(f"  - {line}" for line in lines)
+
+
+def format_validation_error(error: ValidationError, root: str = "") -> str:
+    """Turn a pydantic ValidationError into seacable's one-line-per-problem text."""
+    return _join(_problems(error), root)
+
+
+def _input_error(error: ValidationError, root: str) -> InputError:
+    problems = _problems(error)
+    exc = InputError(_join(problems, root))
+    exc.problems = problems
+    return exc
+
+
+class Model(BaseModel):
+    """Frozen, validated, picklable base of all seacable input objects.
+
+    Construction errors raise :class:`~seacable.errors.InputError`, never a
+    pydantic error, so that callers need to know one exception type.
+    """
+
+    model_config = ConfigDict(frozen=True, extra="forbid", validate_default=True,
+                              arbitrary_types_allowed=False, populate_by_name=True)
+
+    def __init__(self, /, **data: Any) -> None:
+        try:
+            super().__init__(**data)
+        except ValidationError as err:
+            raise _input_error(err, type(self).__name__) from None
+
+    @classmethod
+    def parse(cls, data: Any, *, root: str = ""):
+        """Validate plain data (as read from a file) into this class.
+
+        Parameters
+        ----------
+        data
+            A mapping of keys to values.
+        root
+            A prefix for the key paths in error messages.
+        """
+        try:
+            return cls.model_validate(data)
+        except ValidationError as err:
+            raise _input_error(err, root) from None
+
+    @model_validator(mode="before")
+    @classmethod
+    def _reject_unknown_keys(cls, data: Any) -> Any:
+        if isinstance(data, dict):
+            known = set(cls.model_fields)
+            known |= {f.alias for f in cls.model_fields.values() if f.alias}
+            for key in data:
+                if key not in known:
+                    listing = ", ".join(sorted(k for k in cls.model_fields if not k.startswith("_")))
+                    raise ValueError(f"has an unknown key '{key}'.{suggest(key, known)} "
+                                     f"Known keys here: {listing}.")
+        return data
+
+    def replace(self, **changes: Any):
+        """Return a copy with some fields changed, validated again."""
+        return type(self)(**{**{k: getattr(self, k) for k in type(self).model_fields}, **changes})

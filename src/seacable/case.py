@@ -1,0 +1,230 @@
+"""A case: a line, its environment, and what to compute.
+
+A :class:`Case` is the unit of work of seacable: :func:`seacable.run` is a pure
+function of it, so that cases can be stored, compared, pickled and farmed out.
+Cases are written as YAML files (see :mod:`seacable.io.case_file`) or built in
+code::
+
+    import seacable as sc
+    chain = sc.LineType(diameter=0.09, mass_per_length=77.7, axial_stiffness=3.8e8)
+    case = sc.Case(name="demo", line=sc.Line.single(chain, 902.2),
+                   environment=sc.Environment(depth=320.0),
+                   analysis=sc.StaticAnalysis(fairlead=(848.67, -70.0)))
+    ds = sc.run(case)
+
+Each analysis type is a class with a literal ``type`` (the key a case file uses).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import Field, model_validator
+
+from ._model import UNION_TAGS, Model, quantity, suggest
+from .environment import Environment
+from .line import Line, LineType
+
+__all__ = [
+    "StaticAnalysis",
+    "PushoverAnalysis",
+    "ModalAnalysis",
+    "TowedSteadyAnalysis",
+    "TowedBody",
+    "LayingTheoryAnalysis",
+    "VerticalModesAnalysis",
+    "Analysis",
+    "Case",
+]
+
+_XZ = tuple[float, float]
+
+
+class _Moored(Model):
+    """Geometry shared by the analyses of a line between an anchor and a fairlead."""
+
+    fairlead: _XZ = Field(description="Fairlead (end B) position (x, z): x from the anchor, "
+                                      "z up from the sea surface. [m]")
+    anchor: _XZ | None = Field(None, description="Anchor (end A) position (x, z); "
+                                                  "default (0, -depth), on the seabed. [m]")
+
+    @model_validator(mode="after")
+    def _finite(self):
+        for key in ("fairlead", "anchor"):
+            point = getattr(self, key)
+            if point is not None and not all(math.isfinite(v) for v in point):
+                raise ValueError(f"{key} must hold two finite numbers (x, z) in m, got {point}.")
+        return self
+
+
+class StaticAnalysis(_Moored):
+    """Static equilibrium of a (multi-segment) line between anchor and fairlead."""
+
+    type: Literal["static"] = "static"
+    points_per_segment: int = Field(50, ge=2, le=100_000, description="Profile points per segment.")
+
+
+class PushoverAnalysis(_Moored):
+    """Force-excursion curve: the fairlead moved horizontally by ``offsets``."""
+
+    type: Literal["pushover"] = "pushover"
+    offsets: tuple[float, ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
+    min_offset: quantity("m") = Field(0.0, description="First offset when 'offsets' is not given. [m]")
+    max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
+    n_offsets: int = Field(41, ge=2, le=100_000, description="Number of offsets from min to max.")
+
+    @model_validator(mode="after")
+    def _range(self):
+        if self.offsets is None and self.max_offset is None:
+            raise ValueError("needs 'offsets' (a list, m) or 'max_offset' (m). "
+                             "Suggested fix: add e.g. 'max_offset: 30.0'.")
+        return self
+
+    def offset_values(self) -> tuple[float, ...]:
+        """The offsets to solve at. [m]"""
+        if self.offsets is not None:
+            return self.offsets
+        step = (self.max_offset - self.min_offset) / (self.n_offsets - 1)
+        return tuple(self.min_offset + i * step for i in range(self.n_offsets))
+
+
+class ModalAnalysis(_Moored):
+    """Natural frequencies and mode shapes about the static equilibrium."""
+
+    type: Literal["modal"] = "modal"
+    n_modes: int = Field(10, ge=1, le=1000, description="Modes to report per plane.")
+    n_elements: int = Field(100, ge=2, le=20_000, description="Elements of the linearised model.")
+
+
+class TowedBody(Model):
+    """A body at the lower end of a towed cable."""
+
+    weight_in_water: quantity("N") = Field(0.0, description="Net weight in water (negative floats). [N]")
+    drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
+
+
+class TowedSteadyAnalysis(Model):
+    """Steady state of a cable towed in a uniform current (free end or towed body)."""
+
+    type: Literal["towed_steady"] = "towed_steady"
+    vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
+    body: TowedBody | None = None
+    tangential_drag: Literal["none", "paper000", "quadratic"] = Field(
+        "paper000", description="Tangential drag law (see seacable.statics.towed).")
+    n_nodes: int = Field(7, ge=2, le=100_000, description="Nodes at which the result is reported.")
+
+
+class LayingTheoryAnalysis(Model):
+    """Straight-line laying theory (paper 001 section 2) over a list of ship speeds."""
+
+    type: Literal["laying_theory"] = "laying_theory"
+    ship_speeds: tuple[float, ...] = Field(min_length=1, description="Ship speeds. [m/s]")
+    bottom_tension: quantity("N", ge=0) = Field(0.0, description="Tension at the touchdown. [N]")
+    slack: quantity("-", ge=-0.5, le=10.0) = Field(
+        0.0, description="Payout speed over ship speed minus one. [-]")
+
+    @model_validator(mode="after")
+    def _speeds(self):
+        for i, v in enumerate(self.ship_speeds):
+            if not (math.isfinite(v) and v > 0):
+                raise ValueError(f"ship_speeds[{i}] must be > 0 m/s, got {v} m/s.")
+        return self
+
+
+class VerticalModesAnalysis(Model):
+    """Natural periods of a vertical cable (paper 002 eq. 15 and the exact solution)."""
+
+    type: Literal["vertical_modes"] = "vertical_modes"
+    bottom_tension: quantity("N", ge=0) = Field(description="Tension at the lower end. [N]")
+    n_modes: int = Field(5, ge=1, le=100)
+
+
+ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, LayingTheoryAnalysis,
+            VerticalModesAnalysis)
+Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
+UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
+
+
+class Case(Model):
+    """A line, its environment and an analysis.
+
+    Parameters
+    ----------
+    name
+        Short name, used for output files.
+    description
+        Free text: source, assumptions, unit conversions.
+    line_types
+        Named line types the segments may refer to by name.
+    line
+        The line. In a file, ``line: {line_type: NAME, length: L}`` is short for
+        a single segment.
+    environment
+        Water, current and seabed.
+    analysis
+        What to compute, selected by its ``type``.
+    """
+
+    name: str = Field("case", min_length=1)
+    description: str = ""
+    line_types: dict[str, LineType] = Field(default_factory=dict)
+    line: Line
+    environment: Environment = Environment()
+    analysis: Analysis
+
+    @model_validator(mode="before")
+    @classmethod
+    def _resolve_line_types(cls, data: Any) -> Any:
+        """Replace line-type names by the entries of ``line_types``; expand the short form."""
+        if not isinstance(data, dict) or not isinstance(data.get("line"), dict):
+            return data
+        data = dict(data)
+        types = data.get("line_types") or {}
+        line = dict(data["line"])
+        if "segments" not in line and "line_type" in line:
+            seg = {k: line.pop(k) for k in ("line_type", "length", "n_elements") if k in line}
+            line["segments"] = [seg]
+
+        def resolve(ref, where):
+            if isinstance(ref, str):
+                if not isinstance(types, dict) or ref not in types:
+                    names = list(types) if isinstance(types, dict) else []
+                    raise ValueError(f"{where}.line_type '{ref}' is not defined in line_types "
+                                     f"(defined: {', '.join(names) or 'none'}).{suggest(ref, names)}")
+                return types[ref]
+            return ref
+
+        segments = line.get("segments")
+        if isinstance(segments, (list, tuple)):
+            line["segments"] = [
+                {**seg, "line_type": resolve(seg.get("line_type"), f"line.segments[{i}]")}
+                if isinstance(seg, dict) else seg
+                for i, seg in enumerate(segments)
+            ]
+        data["line"] = line
+        return data
+
+    @model_validator(mode="after")
+    def _needs(self) -> "Case":
+        a = self.analysis
+        if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis)):
+            if self.environment.depth is None and (a.type == "laying_theory" or a.anchor is None):
+                raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
+                                 "Suggested fix: add 'depth:' under 'environment'.")
+        if isinstance(a, (TowedSteadyAnalysis, LayingTheoryAnalysis, VerticalModesAnalysis)):
+            if len(self.line.segments) != 1 or self.line.attachments:
+                raise ValueError(f"analysis '{a.type}' takes a homogeneous line of one segment and no "
+                                 f"attachments, got {len(self.line.segments)} segments and "
+                                 f"{len(self.line.attachments)} attachments.")
+        if isinstance(a, TowedSteadyAnalysis) and self.environment.current.depths is not None:
+            raise ValueError("analysis 'towed_steady' takes a uniform current, got a depth profile. "
+                             "Suggested fix: give 'current: {speed: ...}' or use a dynamic towed model.")
+        return self
+
+    def anchor_position(self) -> tuple[float, float]:
+        """Anchor (x, z): the analysis's, or on the seabed under the origin. [m]"""
+        a = self.analysis
+        if getattr(a, "anchor", None) is not None:
+            return a.anchor
+        return (0.0, -float(self.environment.depth))

@@ -1,0 +1,79 @@
+"""Case files: YAML to :class:`~seacable.case.Case` and back.
+
+A case file is YAML with the keys of :class:`~seacable.case.Case`; SI units
+throughout. ``seacable schema`` prints the JSON schema an editor can use to
+check and complete case files.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from ..case import Case
+from ..errors import CaseFileError, InputError
+
+__all__ = ["load_case", "parse_case", "dump_case", "case_schema"]
+
+
+def parse_case(data: Any, *, source: str = "case") -> Case:
+    """Validate plain data (a mapping, as read from YAML) into a :class:`Case`.
+
+    Raises
+    ------
+    CaseFileError
+        With one line per problem: the key path, the value with its unit, what
+        was expected and a fix.
+    """
+    if not isinstance(data, dict):
+        raise CaseFileError(f"{source}: a case file must be a mapping of keys to values at the top level, "
+                            f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")
+    try:
+        return Case.parse(data)
+    except InputError as err:
+        raise CaseFileError(f"{source}: {err}") from None
+
+
+def load_case(path: str | Path) -> Case:
+    """Read and validate a YAML case file.
+
+    Parameters
+    ----------
+    path
+        The case file.
+
+    Returns
+    -------
+    Case
+        The validated, immutable case.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"case file '{path}' does not exist. Suggested fix: check the path; "
+                            "examples/ holds ready-made cases.") from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise CaseFileError(f"case file '{path}' cannot be read: {err}.") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None)
+        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = getattr(err, "problem", None) or str(err)
+        raise CaseFileError(f"{path}: not valid YAML{where}: {problem}. Suggested fix: check the "
+                            "indentation and the ':' after each key.") from None
+    return parse_case(data, source=str(path))
+
+
+def dump_case(case: Case) -> str:
+    """The case as YAML text, every value explicit (defaults included)."""
+    return yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False)
+
+
+def case_schema() -> str:
+    """The JSON schema of case files, as text."""
+    return json.dumps(Case.model_json_schema(), indent=2)

@@ -1,0 +1,230 @@
+"""Line data: line types (cable, rope, chain), segments, point masses and buoys.
+
+A :class:`Line` runs from end A (the anchor, the free end of a towed cable, or
+the seabed end of a lay) to end B (the fairlead, the vessel) as a chain of
+:class:`Segment` objects, each of one :class:`LineType`, with
+:class:`PointMass` attachments (clump weights, repeaters, buoys, floats) at
+given unstretched arc lengths from end A.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from typing import Literal
+
+from pydantic import Field, field_validator, model_validator
+
+from ._model import Model, quantity
+from .errors import SeacableWarning
+
+__all__ = ["LineType", "Segment", "PointMass", "Line"]
+
+#: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
+_RHO, _G = 1025.0, 9.81
+
+
+class LineType(Model):
+    """Properties of one kind of cable, rope or chain.
+
+    The weight in water is either given (``weight_in_water``) or, when left out,
+    derived from the mass and the displaced volume of a solid cylinder of the
+    given ``diameter``: ``w = (m - rho * pi * d**2 / 4) * g``, with the density
+    and gravity of the environment. For chain, give the volume-equivalent
+    diameter, or give the weight in water.
+
+    Parameters
+    ----------
+    diameter
+        Volume-equivalent (and drag) diameter. [m]
+    mass_per_length
+        Mass per unit unstretched length in air. [kg/m]
+    weight_in_water
+        Submerged weight per unit length, negative for a buoyant line; ``None``
+        to derive it from mass and diameter. [N/m]
+    axial_stiffness
+        Axial stiffness EA; ``None`` for an inextensible line. [N]
+    bending_stiffness
+        Bending stiffness EI. [N m^2]
+    drag_normal, drag_tangential
+        Drag coefficients normal and tangential to the line, on the diameter. [-]
+    added_mass_normal, added_mass_tangential
+        Added-mass coefficients on the displaced mass. [-]
+    breaking_load
+        Minimum breaking load, ``None`` if unknown. [N]
+    name
+        A label used in plots and messages.
+    """
+
+    diameter: quantity("m", gt=0, fix="give the outer diameter in metres, e.g. 0.035.") = Field(
+        description="Volume-equivalent and drag diameter. [m]")
+    mass_per_length: quantity("kg/m", gt=0, fix="give the mass per metre in air in kg/m.") = Field(
+        description="Mass per unit unstretched length in air. [kg/m]")
+    weight_in_water: quantity("N/m") | None = Field(
+        None, description="Submerged weight per unit length (negative: buoyant); "
+                          "derived from mass and diameter when left out. [N/m]")
+    axial_stiffness: quantity("N", gt=0, fix="give EA in newtons, e.g. 4.2e5.") | None = Field(
+        None, description="Axial stiffness EA; left out for an inextensible line. [N]")
+    bending_stiffness: quantity("N m^2", ge=0) = Field(0.0, description="Bending stiffness EI. [N m^2]")
+    drag_normal: quantity("-", ge=0) = Field(1.2, description="Normal drag coefficient. [-]")
+    drag_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential drag coefficient. [-]")
+    added_mass_normal: quantity("-", ge=0) = Field(1.0, description="Normal added-mass coefficient. [-]")
+    added_mass_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential added-mass coefficient. [-]")
+    breaking_load: quantity("N", gt=0) | None = Field(None, description="Minimum breaking load. [N]")
+    name: str | None = Field(None, description="Label used in plots and messages.")
+
+    @model_validator(mode="after")
+    def _check_weight(self) -> "LineType":
+        if self.weight_in_water is not None:
+            in_air = self.mass_per_length * _G
+            if self.weight_in_water > in_air * 1.0001:
+                raise ValueError(
+                    f"weight_in_water must not exceed the weight in air "
+                    f"(mass_per_length * g = {in_air:.6g} N/m), got {self.weight_in_water:.6g} N/m. "
+                    "Suggested fix: give the submerged weight in N/m, not a mass in kg/m.")
+        if self.drag_normal > 10:
+            warnings.warn(f"LineType.drag_normal = {self.drag_normal:g} is unusually large "
+                          "(typical 1.0-2.5 for cable, 2.4 for chain).", SeacableWarning, stacklevel=2)
+        return self
+
+    @property
+    def area(self) -> float:
+        """Cross-section area of the volume-equivalent cylinder. [m^2]"""
+        return math.pi * self.diameter**2 / 4.0
+
+    def submerged_weight(self, water_density: float = _RHO, gravity: float = _G) -> float:
+        """Weight in water per unit length. [N/m]
+
+        The given ``weight_in_water`` if there is one, else ``(m - rho A) g``.
+        """
+        if self.weight_in_water is not None:
+            return self.weight_in_water
+        return (self.mass_per_length - water_density * self.area) * gravity
+
+    def added_mass_per_length(self, water_density: float = _RHO) -> float:
+        """Normal added mass per unit length, ``Ca rho A``. [kg/m]"""
+        return self.added_mass_normal * water_density * self.area
+
+    def effective_axial_stiffness(self) -> float:
+        """EA, or infinity for an inextensible line. [N]"""
+        return math.inf if self.axial_stiffness is None else self.axial_stiffness
+
+
+class Segment(Model):
+    """A length of line of one type.
+
+    Parameters
+    ----------
+    line_type
+        The line type (in a case file: the name of an entry of ``line_types``,
+        or an inline mapping).
+    length
+        Unstretched length. [m]
+    n_elements
+        Number of elements or nodes intervals a discretised model uses on this
+        segment; ``None`` lets the model choose.
+    """
+
+    line_type: LineType
+    length: quantity("m", gt=0, fix="give the unstretched segment length in metres.") = Field(
+        description="Unstretched length. [m]")
+    n_elements: int | None = Field(None, ge=1, description="Elements a discretised model uses here.")
+
+
+class PointMass(Model):
+    """A clump weight, repeater, buoy or float attached at one point of a line.
+
+    Its net weight in water is ``weight_in_water`` if given, else
+    ``(mass - rho * volume) * g``; negative means it floats.
+
+    Parameters
+    ----------
+    s
+        Unstretched arc length from end A. [m]
+    mass
+        Mass in air. [kg]
+    volume
+        Displaced volume. [m^3]
+    weight_in_water
+        Net weight in water, overriding mass and volume (negative: buoyant). [N]
+    drag_area
+        Drag coefficient times frontal area, C_D A. [m^2]
+    added_mass
+        Added mass. [kg]
+    kind
+        What it is, for plots and reports.
+    name
+        Label.
+    """
+
+    s: quantity("m", ge=0, fix="give the arc length from end A in metres.") = Field(
+        description="Unstretched arc length from end A. [m]")
+    mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air. [kg]")
+    volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume. [m^3]")
+    weight_in_water: quantity("N") | None = Field(None, description="Net weight in water. [N]")
+    drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times area. [m^2]")
+    added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass. [kg]")
+    kind: Literal["clump", "buoy", "repeater", "float", "point"] = "point"
+    name: str | None = None
+
+    def net_weight(self, water_density: float = _RHO, gravity: float = _G) -> float:
+        """Net weight in water, negative when buoyant. [N]"""
+        if self.weight_in_water is not None:
+            return self.weight_in_water
+        return (self.mass - water_density * self.volume) * gravity
+
+
+class Line(Model):
+    """A line from end A to end B: segments in order, and attachments along it.
+
+    Parameters
+    ----------
+    segments
+        Segments from end A to end B.
+    attachments
+        Point masses and buoys; their ``s`` must lie on the line.
+    """
+
+    segments: tuple[Segment, ...] = Field(min_length=1)
+    attachments: tuple[PointMass, ...] = ()
+
+    @classmethod
+    def single(cls, line_type: LineType, length: float, **kwargs) -> "Line":
+        """A homogeneous line of one type and ``length``. [m]"""
+        return cls(segments=(Segment(line_type=line_type, length=length),), **kwargs)
+
+    @field_validator("attachments")
+    @classmethod
+    def _sorted(cls, value):
+        return tuple(sorted(value, key=lambda a: a.s))
+
+    @model_validator(mode="after")
+    def _attachments_on_line(self) -> "Line":
+        total = self.length
+        for i, a in enumerate(self.attachments):
+            if a.s > total * (1 + 1e-12):
+                raise ValueError(f"attachments[{i}].s must be <= the line length {total:g} m, "
+                                 f"got {a.s:g} m. Suggested fix: give s as the arc length from end A.")
+        return self
+
+    @property
+    def length(self) -> float:
+        """Total unstretched length. [m]"""
+        return float(sum(seg.length for seg in self.segments))
+
+    @property
+    def segment_ends(self) -> tuple[float, ...]:
+        """Arc lengths of the segment boundaries from end A, starting with 0. [m]"""
+        ends, s = [0.0], 0.0
+        for seg in self.segments:
+            s += seg.length
+            ends.append(s)
+        return tuple(ends)
+
+    def weights(self, water_density: float = _RHO, gravity: float = _G) -> tuple[float, ...]:
+        """Submerged weight per length of each segment. [N/m]"""
+        return tuple(seg.line_type.submerged_weight(water_density, gravity) for seg in self.segments)
+
+    def point_loads(self, water_density: float = _RHO, gravity: float = _G) -> tuple[tuple[float, float], ...]:
+        """``(s, net weight)`` of each attachment. [m, N]"""
+        return tuple((a.s, a.net_weight(water_density, gravity)) for a in self.attachments)
