@@ -1,6 +1,24 @@
-"""seacable: statics and dynamics of marine cables."""
+"""seacable: statics and dynamics of marine cables.
 
+Explicit re-exports only. The physics lives in functions in
+:mod:`seacable.statics` and :mod:`seacable.modal`; the data model
+(:class:`LineType`, :class:`Line`, :class:`Environment`, :class:`Case`) wires
+them through :func:`run`.
+"""
+
+from . import modal, statics
 from ._version import __version__
+from .case import (
+    Case,
+    LayingTheoryAnalysis,
+    ModalAnalysis,
+    PushoverAnalysis,
+    StaticAnalysis,
+    TowedBody,
+    TowedSteadyAnalysis,
+    VerticalModesAnalysis,
+)
+from .environment import Current, Environment, Seabed
 from .errors import (
     CaseFileError,
     ConvergenceError,
@@ -9,9 +27,39 @@ from .errors import (
     SeacableError,
     SeacableWarning,
 )
+from .io import load_case, parse_case
+from .line import Line, LineType, PointMass, Segment
+from .results import read_netcdf, write_netcdf
+from .simulate import run
 
 __all__ = [
     "__version__",
+    # data model
+    "LineType",
+    "Segment",
+    "PointMass",
+    "Line",
+    "Current",
+    "Seabed",
+    "Environment",
+    "Case",
+    "StaticAnalysis",
+    "PushoverAnalysis",
+    "ModalAnalysis",
+    "TowedSteadyAnalysis",
+    "TowedBody",
+    "LayingTheoryAnalysis",
+    "VerticalModesAnalysis",
+    # running
+    "load_case",
+    "parse_case",
+    "run",
+    "read_netcdf",
+    "write_netcdf",
+    # physics
+    "statics",
+    "modal",
+    # errors
     "SeacableError",
     "InputError",
     "CaseFileError",

@@ -18,7 +18,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationEr
 
 from .errors import InputError
 
-__all__ = ["Model", "quantity", "format_validation_error", "suggest"]
+__all__ = ["Model", "quantity", "format_validation_error", "input_error", "suggest"]
 
 
 def suggest(word: str, choices) -> str:
@@ -139,8 +139,8 @@ def format_validation_error(error: ValidationError, root: str = "") -> str:
     return _join(_problems(error), root)
 
 
-def _input_error(error: ValidationError, root: str) -> InputError:
-    problems = _problems(error)
+def input_error(problems: list[tuple[tuple, str]], root: str = "") -> InputError:
+    """An InputError listing ``problems`` ((key path, message tail) pairs) under ``root``."""
     exc = InputError(_join(problems, root))
     exc.problems = problems
     return exc
@@ -160,7 +160,7 @@ class Model(BaseModel):
         try:
             super().__init__(**data)
         except ValidationError as err:
-            raise _input_error(err, type(self).__name__) from None
+            raise input_error(_problems(err), type(self).__name__) from None
 
     @classmethod
     def parse(cls, data: Any, *, root: str = ""):
@@ -176,7 +176,7 @@ class Model(BaseModel):
         try:
             return cls.model_validate(data)
         except ValidationError as err:
-            raise _input_error(err, root) from None
+            raise input_error(_problems(err), root) from None
 
     @model_validator(mode="before")
     @classmethod

@@ -22,9 +22,11 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import Field, model_validator
 
-from ._model import UNION_TAGS, Model, quantity, suggest
+from ._model import UNION_TAGS, Model, input_error, quantity, suggest
 from .environment import Environment
+from .errors import InputError
 from .line import Line, LineType
+from .statics.towed import TangentialDragForm
 
 __all__ = [
     "StaticAnalysis",
@@ -110,8 +112,9 @@ class TowedSteadyAnalysis(Model):
     type: Literal["towed_steady"] = "towed_steady"
     vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
     body: TowedBody | None = None
-    tangential_drag: Literal["none", "paper000", "quadratic"] = Field(
-        "paper000", description="Tangential drag law (see seacable.statics.towed).")
+    tangential_drag: TangentialDragForm = Field(
+        "paper000", description="Form of the tangential drag (seacable.statics.towed.TangentialDragForm); "
+                                "set the line type's drag_tangential to 0 for none.")
     n_nodes: int = Field(7, ge=2, le=100_000, description="Nodes at which the result is reported.")
 
 
@@ -146,6 +149,9 @@ Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
+_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, name="stand-in for an invalid line type")
+
+
 class Case(Model):
     """A line, its environment and an analysis.
 
@@ -172,6 +178,32 @@ class Case(Model):
     line: Line
     environment: Environment = Environment()
     analysis: Analysis
+
+    @classmethod
+    def parse(cls, data: Any, *, root: str = ""):
+        """Validate plain data (as read from a file) into a Case.
+
+        Named line types are checked first and each problem is reported once, at
+        ``line_types.NAME``, not again at every segment that uses the name.
+        """
+        types = data.get("line_types") if isinstance(data, dict) else None
+        if not isinstance(types, dict):
+            return super().parse(data, root=root)
+        problems, checked = [], {}
+        for name, entry in types.items():
+            try:
+                checked[name] = LineType.parse(entry)
+            except InputError as err:
+                problems += [(("line_types", name) + loc, tail) for loc, tail in err.problems]
+                checked[name] = _STAND_IN  # keeps segments that use it from failing again
+        try:
+            case = super().parse({**data, "line_types": checked}, root=root)
+        except InputError as err:
+            problems += err.problems
+            case = None
+        if problems:
+            raise input_error(problems, root)
+        return case
 
     @model_validator(mode="before")
     @classmethod

@@ -1,0 +1,124 @@
+"""The ``seacable`` command line: run, validate, plot, schema.
+
+User errors (bad files, bad values, no solution, no convergence) print one
+clear message and exit with status 2; an interrupted run exits with 130.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import warnings
+from pathlib import Path
+
+from ._version import __version__
+from .errors import SeacableError, SeacableWarning
+
+__all__ = ["main"]
+
+EXIT_USER_ERROR = 2
+EXIT_INTERRUPTED = 130
+
+
+def _show_warning(message, category, filename, lineno, file=None, line=None):
+    if issubclass(category, SeacableWarning):
+        print(f"seacable: warning: {message}", file=sys.stderr)
+    else:
+        print(warnings.formatwarning(message, category, filename, lineno, line), file=sys.stderr, end="")
+
+
+def _cmd_run(args) -> int:
+    from .io import load_case
+    from .results import write_netcdf
+    from .simulate import run
+
+    case = load_case(args.case)
+    out = Path(args.output) if args.output else Path(f"{case.name}.nc")
+    ds = run(case)
+    path = write_netcdf(ds, out)
+    print(f"wrote {path}")
+    if not args.no_plots:
+        from .plot import plot_result
+
+        for png in plot_result(ds, args.plot_dir or path.parent, prefix=path.stem):
+            print(f"wrote {png}")
+    return 0
+
+
+def _cmd_validate(args) -> int:
+    from .io import load_case
+
+    for name in args.cases:
+        case = load_case(name)
+        print(f"{name}: valid ({case.analysis.type} analysis, {len(case.line.segments)} segment(s), "
+              f"line length {case.line.length:g} m)")
+    return 0
+
+
+def _cmd_plot(args) -> int:
+    from .plot import plot_result
+    from .results import read_netcdf
+
+    path = Path(args.result)
+    ds = read_netcdf(path)
+    for png in plot_result(ds, args.output or path.parent, prefix=path.stem):
+        print(f"wrote {png}")
+    return 0
+
+
+def _cmd_schema(args) -> int:
+    from .io import case_schema
+
+    print(case_schema())
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="seacable",
+        description="Statics and dynamics of marine cables: mooring lines, towed cables, cable laying. "
+                    "SI units throughout.")
+    parser.add_argument("--version", action="version", version=f"seacable {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+
+    p = sub.add_parser("run", help="run a case file and write its result (NetCDF) and plots (PNG)")
+    p.add_argument("case", help="YAML case file")
+    p.add_argument("-o", "--output", help="result file (.nc); default CASE_NAME.nc")
+    p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
+    p.add_argument("--no-plots", action="store_true", help="write the result only")
+    p.set_defaults(func=_cmd_run)
+
+    p = sub.add_parser("validate", help="check case files without running them")
+    p.add_argument("cases", nargs="+", help="YAML case files")
+    p.set_defaults(func=_cmd_validate)
+
+    p = sub.add_parser("plot", help="make the standard figures (PNG) of a result file")
+    p.add_argument("result", help="result file (.nc) written by 'seacable run'")
+    p.add_argument("-o", "--output", help="folder for the PNG files; default beside the result")
+    p.set_defaults(func=_cmd_plot)
+
+    p = sub.add_parser("schema", help="print the JSON schema of case files")
+    p.set_defaults(func=_cmd_schema)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point of the ``seacable`` command. Returns the exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if args.command is None:
+        parser.print_help()
+        return EXIT_USER_ERROR
+    warnings.showwarning = _show_warning
+    try:
+        return args.func(args)
+    except SeacableError as err:
+        print(f"seacable: error: {err}", file=sys.stderr)
+        return EXIT_USER_ERROR
+    except KeyboardInterrupt:
+        print("seacable: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,150 @@
+"""Standard figures of each analysis, written as PNG.
+
+matplotlib is imported when a plot is made, not when seacable is imported, and
+uses the non-interactive Agg backend so that plots work on machines without a
+screen.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["plot_result", "FIGURES"]
+
+
+def _label(da) -> str:
+    units = da.attrs.get("units", "")
+    units = "deg" if units == "degree" else units.replace(" m-1", "/m").replace("m s-1", "m/s")
+    name = da.attrs.get("long_name", da.name)
+    return f"{name} [{units}]" if units and units != "1" else str(name)
+
+
+def _static(ds, plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    ax1.plot(ds.x, ds.z, "-", lw=1.5)
+    if "seabed_z" in ds:
+        ax1.axhline(float(ds.seabed_z), color="sienna", lw=1)
+    ax1.axhline(0.0, color="steelblue", lw=0.8, ls="--")
+    ax1.set(xlabel=_label(ds.x), ylabel=_label(ds.z), title="Static shape")
+    ax1.set_aspect("equal", adjustable="datalim")
+    ax2.plot(ds.s, ds.tension / 1e3)
+    ax2.set(xlabel=_label(ds.s), ylabel="effective tension [kN]",
+            title=f"Fairlead {float(ds.tension_fairlead) / 1e3:.1f} kN, "
+                  f"anchor {float(ds.tension_anchor) / 1e3:.1f} kN")
+    return {"shape": fig}
+
+
+def _pushover(ds, plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    ax1.plot(ds.offset, ds.H_fairlead / 1e3, label="horizontal")
+    ax1.plot(ds.offset, ds.tension_fairlead / 1e3, label="total")
+    ax1.set(xlabel=_label(ds.offset), ylabel="fairlead tension [kN]", title="Force-excursion")
+    ax1.legend()
+    ax2.plot(ds.offset, ds.stiffness_horizontal / 1e3)
+    ax2.set(xlabel=_label(ds.offset), ylabel="dH/dx [kN/m]", title="Horizontal stiffness")
+    return {"pushover": fig}
+
+
+def _modal(ds, plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    planes = ds.plane.values.astype(str)
+    for plane, marker in (("in", "o"), ("out", "s")):
+        keep = planes == plane
+        ax1.plot(ds.mode.values[keep], ds.period.values[keep], marker, label=f"{plane}-plane")
+    ax1.axhline(float(ds.wave_period), color="k", ls="--", lw=0.8, label="wave-speed estimate")
+    ax1.set(xlabel="mode", ylabel=_label(ds.period), title="Natural periods")
+    ax1.legend()
+    span = float(np.ptp(ds.x.values)) or float(np.ptp(ds.z.values)) or 1.0
+    ax2.plot(ds.x, ds.z, "k-", lw=2, label="static")
+    for k in range(min(3, ds.sizes["mode"])):
+        shp = ds.shape.isel(mode=k).values
+        scale = 0.08 * span
+        ax2.plot(ds.x + scale * shp[:, 0], ds.z + scale * shp[:, 2],
+                 label=f"mode {k + 1} ({planes[k]}, {float(ds.period[k]):.2f} s)")
+    ax2.set(xlabel=_label(ds.x), ylabel=_label(ds.z), title="Mode shapes (x-z view)")
+    ax2.legend(fontsize=8)
+    return {"modes": fig}
+
+
+def _towed(ds, plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    ax1.plot(ds.x, ds.z, "o-")
+    ax1.set(xlabel=_label(ds.x), ylabel=_label(ds.z),
+            title=f"Steady tow, relative speed {float(ds.relative_speed):.2f} m/s")
+    ax2.plot(ds.s, ds.tension, "o-")
+    ax2.set(xlabel=_label(ds.s), ylabel=_label(ds.tension), title=f"Top tension {float(ds.top_tension):.1f} N")
+    return {"towed": fig}
+
+
+def _laying(ds, plt):
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    ax1.plot(ds.ship_speed, ds.angle, "o-", label="exact root")
+    ax1.plot(ds.ship_speed, ds.angle_small, "x--", label="small angle H/V")
+    ax1.set(xlabel=_label(ds.ship_speed), ylabel="entry angle [deg]", title="Laying angle", ylim=(0, 90))
+    ax1.legend()
+    ax2.plot(ds.ship_speed, ds.layback, "o-")
+    ax2.set(xlabel=_label(ds.ship_speed), ylabel=_label(ds.layback), title="Layback")
+    return {"laying": fig}
+
+
+def _vertical(ds, plt):
+    fig, ax = plt.subplots(figsize=(6, 4.2))
+    for solution in ds.solution.values:
+        ax.plot(ds.mode, ds.period.sel(solution=solution), "o-", label=str(solution))
+    ax.set(xlabel="mode", ylabel=_label(ds.period), title="Vertical cable periods")
+    ax.legend()
+    return {"periods": fig}
+
+
+#: analysis type -> function(ds, pyplot) -> {figure name: Figure}
+FIGURES = {
+    "static": _static,
+    "pushover": _pushover,
+    "modal": _modal,
+    "towed_steady": _towed,
+    "laying_theory": _laying,
+    "vertical_modes": _vertical,
+}
+
+
+def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
+    """Write the standard figures of a result as PNG files.
+
+    Parameters
+    ----------
+    ds
+        A result from :func:`seacable.run` or :func:`seacable.results.read_netcdf`.
+    outdir
+        Folder for the files (created if needed).
+    prefix
+        File-name prefix; the case name by default.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    from .errors import InputError
+
+    analysis = ds.attrs.get("analysis")
+    if analysis not in FIGURES:
+        raise InputError(f"no standard figures for analysis '{analysis}'. Known: {', '.join(FIGURES)}.")
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    prefix = prefix or ds.attrs.get("case_name", analysis)
+    written = []
+    for name, fig in FIGURES[analysis](ds, plt).items():
+        fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
+        fig.tight_layout()
+        path = outdir / f"{prefix}_{name}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(path)
+    return written

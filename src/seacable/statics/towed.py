@@ -1,0 +1,356 @@
+"""Steady state of a cable towed in a uniform current (2-D).
+
+A cable is towed at a relative flow speed ``U`` (vessel speed over ground minus the current
+component along the tow direction; paper 000's Table 1 case, vessel 1.0 m/s into a current of
+-1.0 m/s, is ``U = 2 m/s``). Its lower end is free or carries a towed body. In steady uniform
+flow the shape does not change with time, and the 2-D equations of paper 000, eq. (2) with all
+time derivatives, shear forces and curvatures set to zero, reduce to (derived here, Z up,
+angle ``phi`` of the cable to the horizontal, ``s`` the unstretched arc length from the lower
+end, ``e = T/EA`` the strain)::
+
+    dT/ds   = w sin(phi) + D_t
+    T dphi/ds = w cos(phi) - D_n
+    dx/ds   = -(1 + e) cos(phi)        (x positive astern, i.e. with the relative flow)
+    dz/ds   =  (1 + e) sin(phi)
+
+with the normal and tangential drag per unstretched length
+
+    D_n = 1/2 rho C_dn d U^2 sin(phi)|sin(phi)| * f(e)
+    D_t = 1/2 rho C_dt pi d U^2 cos(phi)|cos(phi)| * f(e)      (wetted perimeter pi d)
+
+where ``f(e) = sqrt(1 + e)`` in paper 000 eq. (6) (the diameter of a constant-volume cable shrinks
+as ``(1+e)^-1/2`` while its length grows as ``1+e``) and ``f = 1`` in the common form. Eq. (6)
+is ``R_t = -1/2 rho d pi C_dt v_t|v_t| (1+e)^1/2`` with ``v_t = -U cos(phi)`` the relative
+tangential velocity: the same form as the common ``1/2 rho C_dt pi d U^2 cos(phi)|cos(phi)|``
+up to the stretch factor, so the two options differ only through ``f(e)`` (and not at all for
+an inextensible cable). A third option refers ``C_dt`` to the diameter ``d`` instead of
+``pi d`` (a convention found in other towed-cable codes); it is ``1/pi`` times the others.
+
+Boundary conditions: at the lower end the cable tension balances the body's weight, drag and
+lift (free end: ``T = 0``, and ``dphi/ds`` finite then requires ``w cos(phi) = D_n``, the critical
+angle); at the top the cable is attached to the tow point. Because the flow is uniform both
+lower-end conditions are known, so the two-point problem reduces to an initial-value problem
+from the lower end, followed by a rigid translation that puts the top at the tow point.
+
+References
+----------
+.. [1] Paper 000 (seeds/000_e4cc68758a51635b.txt): 3-D nonlinear dynamics of a low-tension
+   towed cable, eq. (2) and (6), Tables 1 and 2.
+.. [2] Ablow, C. M. and Schechter, S., 1983. Numerical simulation of undersea cable dynamics.
+   Ocean Engineering 10(6), 443-457.
+"""
+
+from __future__ import annotations
+
+import difflib
+import warnings
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .. import _validate as v
+from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
+
+__all__ = ["TangentialDragForm", "TowedCableSteady", "critical_angle", "towed_cable_steady"]
+
+TangentialDragForm = Literal["paper000", "common", "diameter"]
+"""Form of the tangential drag per unstretched length.
+
+``"paper000"``
+    Paper 000 eq. (6): ``1/2 rho C_dt pi d U^2 cos|cos| sqrt(1+e)``; the normal drag also
+    carries ``sqrt(1+e)``.
+``"common"``
+    ``1/2 rho C_dt pi d U^2 cos|cos|``, no stretch factor on either drag.
+``"diameter"``
+    ``1/2 rho C_dt d U^2 cos|cos|`` (``C_dt`` referred to the diameter), no stretch factor.
+"""
+
+_TANGENTIAL_FORMS = ("paper000", "common", "diameter")
+
+
+def _critical_cos(weight_per_length, normal_drag_scale):
+    """cos(phi) of the root of ``w cos(phi) = q sin^2(phi)``, ``q = 1/2 rho C_dn d U^2``.
+
+    With ``c = cos(phi)`` the equation is ``q c^2 + w c - q = 0``; the positive root written as
+    ``2q / (w + sqrt(w^2 + 4 q^2))`` is free of cancellation and gives ``c = 0`` (vertical)
+    for ``q = 0``.
+    """
+    w = np.asarray(weight_per_length, dtype=float)
+    q = np.asarray(normal_drag_scale, dtype=float)
+    return 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
+
+
+def critical_angle(weight_per_length, diameter, speed, drag_normal, water_density=1025.0):
+    """Critical angle of a free-ended cable towed in a uniform flow.
+
+    The angle ``phi`` to the horizontal at which the normal component of the weight balances
+    the normal drag, ``w cos(phi) = 1/2 rho C_dn d U^2 sin^2(phi)``; a long uniform cable with
+    a free lower end lies straight at this angle. Solved in closed form as a quadratic in
+    ``cos(phi)``. The same root is the laying angle of the straight-line laying theory
+    (paper 001 eq. (7)).
+
+    Parameters
+    ----------
+    weight_per_length : array_like
+        Weight in water per unit length, positive (the cable sinks). [N/m]
+    diameter : array_like
+        Hydrodynamic diameter. [m]
+    speed : array_like
+        Relative flow speed: vessel speed minus the current along the tow direction. [m/s]
+    drag_normal : array_like
+        Normal drag coefficient C_dn. [-]
+    water_density : array_like, optional
+        Density of sea water. [kg/m^3]
+
+    Returns
+    -------
+    numpy.ndarray or float
+        Angle of the cable to the horizontal, in ``(0, pi/2]`` (``pi/2`` at zero speed). [rad]
+
+    Raises
+    ------
+    InputError
+        If an input is out of range (weight, diameter, density not > 0; speed or drag < 0).
+
+    References
+    ----------
+    .. [1] Paper 000, Table 2 and its free-end boundary condition eq. (14).
+    .. [2] Paper 001 eq. (7): ``w cos(alpha) = C_D rho V_s^2 sin^2(alpha) / 2``.
+    """
+    w = v.positive("weight_per_length", weight_per_length, "N/m",
+                   "give the weight in water (positive for a cable that sinks)")
+    d = v.positive("diameter", diameter, "m", "give the outer diameter in metres")
+    u = v.nonnegative("speed", speed, "m/s", "give the relative flow speed (vessel minus current)")
+    cdn = v.nonnegative("drag_normal", drag_normal, "", "use a normal drag coefficient such as 1.2-1.8")
+    rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
+    q = 0.5 * rho * cdn * d * np.asarray(u) ** 2
+    out = np.arccos(np.clip(_critical_cos(w, q), 0.0, 1.0))
+    return out if np.ndim(out) else float(out)
+
+
+@dataclass(frozen=True)
+class TowedCableSteady:
+    """Steady shape and tension of a towed cable (result of :func:`towed_cable_steady`).
+
+    Attributes
+    ----------
+    s : numpy.ndarray
+        Unstretched arc length from the lower end. [m]
+    x : numpy.ndarray
+        Horizontal position relative to the tow point, positive astern (with the flow). [m]
+    z : numpy.ndarray
+        Vertical position relative to the tow point, positive up (so mostly negative). [m]
+    tension : numpy.ndarray
+        Effective tension. [N]
+    angle : numpy.ndarray
+        Angle of the cable to the horizontal, positive when it descends astern. [rad]
+    top_tension : float
+        Tension at the tow point. [N]
+    top_angle : float
+        Angle to the horizontal at the tow point. [rad]
+    layback : float
+        Horizontal distance from the tow point to the lower end, positive astern. [m]
+    depth_of_lower_end : float
+        Depth of the lower end below the tow point (positive down). [m]
+    critical_angle : float
+        Critical angle of the bare cable at this speed (the angle a long cable tends to). [rad]
+    """
+
+    s: np.ndarray
+    x: np.ndarray
+    z: np.ndarray
+    tension: np.ndarray
+    angle: np.ndarray
+    top_tension: float
+    top_angle: float
+    layback: float
+    depth_of_lower_end: float
+    critical_angle: float
+
+
+def _check_form(name, value, allowed):
+    """Raise InputError with a "did you mean" hint unless ``value`` is one of ``allowed``."""
+    if value not in allowed:
+        close = difflib.get_close_matches(str(value), allowed, n=1)
+        hint = f"did you mean {close[0]!r}? " if close else ""
+        raise InputError(f"{name} must be one of {', '.join(map(repr, allowed))}, got {value!r}. "
+                         f"Suggested fix: {hint}use one of the listed values.")
+    return value
+
+
+def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, drag_tangential=0.0,
+                       *, water_density=1025.0, axial_stiffness=None, body_weight=0.0,
+                       body_drag_area=0.0, body_drag_force=0.0, body_lift=0.0,
+                       tangential_drag: TangentialDragForm = "paper000",
+                       n_points=101, rtol=1e-10) -> TowedCableSteady:
+    """Steady 2-D shape and tension of a cable towed in a uniform current.
+
+    Integrates the steady cable equations (module docstring) from the lower end, where the
+    tension and angle follow from the body (or the critical angle with ``T = 0`` for a free
+    end), to the tow point with :func:`scipy.integrate.solve_ivp` (Radau, tight tolerances),
+    and then translates the shape so that the top is at the tow point.
+
+    Parameters
+    ----------
+    length : float
+        Unstretched cable length. [m]
+    weight_per_length : float
+        Weight in water per unit unstretched length, positive when the cable sinks. [N/m]
+    diameter : float
+        Hydrodynamic diameter. [m]
+    speed : float
+        Relative flow speed: vessel speed minus the current along the tow direction
+        (paper 000 Table 1: 1.0 - (-1.0) = 2.0). [m/s]
+    drag_normal : float
+        Normal drag coefficient C_dn. [-]
+    drag_tangential : float, optional
+        Tangential drag coefficient C_dt (0 disables tangential drag). [-]
+    water_density : float, optional
+        Density of sea water. [kg/m^3]
+    axial_stiffness : float or None, optional
+        Axial stiffness EA; ``None`` for an inextensible cable. [N]
+    body_weight : float, optional
+        Weight in water of the towed body, positive when it sinks. [N]
+    body_drag_area : float, optional
+        Drag area C_D*A of the body; its drag is ``1/2 rho C_D A U^2``. [m^2]
+    body_drag_force : float, optional
+        Additional body drag given as a force (added to the drag from the area). [N]
+    body_lift : float, optional
+        Vertical hydrodynamic force on the body, positive up (a depressor gives a negative
+        value). [N]
+    tangential_drag : {"paper000", "common", "diameter"}, optional
+        Form of the tangential drag, see :data:`TangentialDragForm`. [-]
+    n_points : int, optional
+        Number of equally spaced output points along the cable (>= 2). [-]
+    rtol : float, optional
+        Relative tolerance of the integrator. [-]
+
+    Returns
+    -------
+    TowedCableSteady
+        Arrays ``s, x, z, tension, angle`` from the lower end (index 0) to the tow point
+        (index -1), and the summary values.
+
+    Raises
+    ------
+    InputError
+        If an input is out of range or ``tangential_drag`` is not a known form.
+    NoSolutionError
+        If the tension vanishes above a towed body (the body's net force points up and the cable
+        would go slack).
+    ConvergenceError
+        If the integrator fails.
+
+    Warns
+    -----
+    SeacableWarning
+        If part of the cable lies above the tow point (a buoyant or lifting body).
+
+    References
+    ----------
+    .. [1] Paper 000, eq. (2), (6), (14), Tables 1 and 2.
+    """
+    length = v.positive("length", length, "m", "give the unstretched cable length in metres")
+    w = v.positive("weight_per_length", weight_per_length, "N/m",
+                   "give the weight in water (positive for a cable that sinks)")
+    d = v.positive("diameter", diameter, "m", "give the outer diameter in metres")
+    u = v.nonnegative("speed", speed, "m/s", "give the relative flow speed (vessel minus current)")
+    cdn = v.nonnegative("drag_normal", drag_normal, "", "use a normal drag coefficient such as 1.2-1.8")
+    cdt = v.nonnegative("drag_tangential", drag_tangential, "",
+                        "use a tangential drag coefficient such as 0.003-0.02")
+    rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
+    ea = None if axial_stiffness is None else v.positive(
+        "axial_stiffness", axial_stiffness, "N", "give EA in newtons, or None for an inextensible cable")
+    wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
+    cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
+    fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
+    lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
+    rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
+    n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
+    for name, val in (("length", length), ("weight_per_length", w), ("diameter", d), ("speed", u)):
+        if np.ndim(val):
+            raise InputError(f"{name} must be a scalar for towed_cable_steady, got an array of shape "
+                             f"{np.shape(val)}. Suggested fix: loop over the cases.")
+    _check_form("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
+
+    qn = 0.5 * rho * cdn * d * u * u                       # normal drag scale [N/m]
+    perimeter = d if tangential_drag == "diameter" else np.pi * d
+    qt = 0.5 * rho * cdt * perimeter * u * u               # tangential drag scale [N/m]
+    stretch_drag = tangential_drag == "paper000" and ea is not None
+
+    def strain(t):
+        return 0.0 if ea is None else t / ea
+
+    def drag_factor(t):
+        return np.sqrt(1.0 + strain(t)) if stretch_drag else 1.0
+
+    def g_normal(phi, t):  # w cos(phi) - D_n  [N/m]
+        sp = np.sin(phi)
+        return w * np.cos(phi) - qn * sp * abs(sp) * drag_factor(t)
+
+    def dtds(phi, t):
+        cp = np.cos(phi)
+        return w * np.sin(phi) + qt * cp * abs(cp) * drag_factor(t)
+
+    # lower-end conditions ------------------------------------------------------------------
+    body_drag = 0.5 * rho * cda * u * u + fdb
+    body_up = wb - lift                                    # net downward force on the body [N]
+    t0 = float(np.hypot(body_drag, body_up))
+    phi_c = float(np.arccos(np.clip(_critical_cos(w, qn), 0.0, 1.0)))
+    free_end = t0 <= 1e-12 * w * length
+    if free_end:
+        t0, phi0 = 0.0, phi_c
+        # limit of dphi/ds = g/T as T -> 0 along the regular solution: with psi = phi - phi_c,
+        # T ~ a s, g ~ g_phi psi + g_T T, the regular solution psi = k s gives
+        # k = g_T / (1 - g_phi / a).
+        a = dtds(phi0, 0.0)
+        g_phi = -w * np.sin(phi0) - 2.0 * qn * np.sin(phi0) * np.cos(phi0)
+        g_t = -qn * np.sin(phi0) ** 2 * 0.5 / ea if stretch_drag else 0.0
+        k_lim = g_t / (1.0 - g_phi / a) if a > 0 else 0.0
+    else:
+        phi0 = float(np.arctan2(body_up, body_drag))
+        k_lim = 0.0
+    t_small = 1e-9 * w * length
+
+    def rhs(_s, y):
+        t, phi = y[0], y[1]
+        one_e = 1.0 + strain(t)
+        dphi = k_lim if (free_end and t <= t_small) else g_normal(phi, t) / t
+        return [dtds(phi, t), dphi, -one_e * np.cos(phi), one_e * np.sin(phi)]
+
+    def slack_event(_s, y):  # tension falls to (almost) zero above a towed body
+        return y[0] - t_small
+
+    slack_event.terminal = True
+    slack_event.direction = -1
+    s_out = np.linspace(0.0, length, n_points)
+    sol = solve_ivp(rhs, (0.0, length), [t0, phi0, 0.0, 0.0], method="Radau", t_eval=s_out,
+                    rtol=rtol, atol=[rtol * max(w * length, t0, 1.0), rtol, rtol * length, rtol * length],
+                    events=None if free_end else slack_event)
+    if sol.status == 1:
+        raise NoSolutionError(
+            f"the cable tension vanishes at s = {sol.t_events[0][0]:.6g} m above the towed body (body "
+            f"weight {wb:.6g} N, lift {lift:.6g} N): no taut steady shape exists. Suggested fix: make "
+            "the body heavier than its lift, add drag, or tow faster.")
+    if not sol.success:
+        raise ConvergenceError(
+            f"towed_cable_steady: the integrator failed ({sol.message}) after {sol.nfev} evaluations. "
+            "Suggested fix: loosen rtol or check the inputs for extreme values.",
+            iterations=int(sol.nfev))
+    tension, angle = sol.y[0].copy(), sol.y[1].copy()
+    if not np.all(np.isfinite(sol.y)):
+        raise ConvergenceError("towed_cable_steady: the integration produced non-finite values. "
+                               "Suggested fix: check the body forces and cable properties.",
+                               iterations=int(sol.nfev))
+    x = sol.y[2] - sol.y[2][-1]
+    z = sol.y[3] - sol.y[3][-1]
+    if np.any(z > 1e-9 * length):
+        warnings.warn(f"part of the towed cable lies up to {z.max():.3g} m above the tow point; the "
+                      "free surface is not modelled. Check the body weight and lift.",
+                      SeacableWarning, stacklevel=2)
+    return TowedCableSteady(s=s_out, x=x, z=z, tension=tension, angle=angle,
+                            top_tension=float(tension[-1]), top_angle=float(angle[-1]),
+                            layback=float(x[0]), depth_of_lower_end=float(-z[0]),
+                            critical_angle=phi_c)
