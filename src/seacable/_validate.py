@@ -7,11 +7,13 @@ They accept scalars or arrays; for arrays the first offending element is named.
 
 from __future__ import annotations
 
+import difflib
+
 import numpy as np
 
 from .errors import InputError
 
-__all__ = ["positive", "nonnegative", "finite", "at_least", "in_range"]
+__all__ = ["positive", "nonnegative", "finite", "at_least", "in_range", "one_of"]
 
 
 def _fmt(value, unit: str) -> str:
@@ -83,3 +85,14 @@ def in_range(name: str, value, low: float, high: float, unit: str = "", fix: str
         lo, hi = ("[", "]") if inclusive else ("(", ")")
         _fail(name, arr, bad, unit, f"in {lo}{_fmt(low, '')}, {_fmt(high, '')}{hi} {unit}".rstrip(), fix)
     return arr if arr.ndim else float(arr)
+
+
+def one_of(name: str, value, allowed):
+    """Return ``value`` if it is one of the option strings ``allowed``; else raise with a suggestion."""
+    allowed = tuple(str(a) for a in allowed)
+    if isinstance(value, str) and value in allowed:
+        return value
+    listing = ", ".join(repr(a) for a in allowed)
+    close = difflib.get_close_matches(str(value), allowed, n=1)
+    hint = f"did you mean {close[0]!r}? " if close else ""
+    raise InputError(f"{name} must be one of {listing}, got {value!r}. Suggested fix: {hint}use one of {listing}.")

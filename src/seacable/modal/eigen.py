@@ -114,12 +114,7 @@ class CableModes:
 
 
 def _enum(kind, value, name):
-    try:
-        return kind(value)
-    except ValueError:
-        allowed = ", ".join(repr(k.value) for k in kind)
-        raise InputError(f"{name} must be one of {allowed}, got {value!r}. "
-                         f"Suggested fix: use one of {allowed}.") from None
+    return kind(v.one_of(name, value, [k.value for k in kind]))
 
 
 def _per_element(name, value, n, unit, check, fix):

@@ -63,7 +63,7 @@ from scipy.special import j0, jn_zeros, y0
 
 from .. import _validate
 from ..errors import ConvergenceError, InputError
-from .wave_speed import _check_n_modes, _check_option
+from .wave_speed import _check_n_modes
 
 __all__ = ["vertical_cable_period", "vertical_cable_frequencies", "travel_time"]
 
@@ -234,7 +234,7 @@ def vertical_cable_frequencies(length, bottom_tension, mass_per_length, added_ma
     .. [1] Lee, S.-M. and Kim, Y.-C. (1986), section 4 and Table 1.
     .. [2] Abramowitz, M. and Stegun, I. A. (1964), 9.5.28.
     """
-    method = _check_option("method", method, _METHODS)
+    method = _validate.one_of("method", method, _METHODS)
     n_modes = _check_n_modes(n_modes)
     L, T0, M, w = _inputs(length, bottom_tension, mass_per_length, added_mass_per_length,
                           weight_per_length, gravity)

@@ -39,7 +39,6 @@ References
 
 from __future__ import annotations
 
-import difflib
 from typing import Literal
 
 import numpy as np
@@ -60,16 +59,6 @@ Plane = Literal["out", "in"]
 Vertex = Literal["between", "outside"]
 
 _HALF_PI = 0.5 * np.pi
-
-
-def _check_option(name: str, value, allowed: tuple[str, ...]) -> str:
-    """Return ``value`` if it is one of ``allowed``; else raise InputError with a suggestion."""
-    if isinstance(value, str) and value in allowed:
-        return value
-    close = difflib.get_close_matches(str(value), allowed, n=1)
-    hint = f"did you mean {close[0]!r}? " if close else ""
-    raise InputError(f"{name} must be one of {', '.join(repr(a) for a in allowed)}, got {value!r}. "
-                     f"Suggested fix: {hint}use one of {', '.join(repr(a) for a in allowed)}.")
 
 
 def _check_n_modes(n_modes) -> int:
@@ -200,7 +189,7 @@ def sagged_cable_period(horizontal_tension, mass_per_length, phi0, phi1=0.0, *,
        natural frequencies of the sagged cable structures. J. Soc. Naval
        Architects of Korea, 23(3), eq. (4)-(10).
     """
-    vertex = _check_option("vertex", vertex, ("between", "outside"))
+    vertex = _validate.one_of("vertex", vertex, ("between", "outside"))
     H = _validate.positive("horizontal_tension", horizontal_tension, "N",
                            "give the horizontal component of the static tension in newtons")
     m = _validate.positive("mass_per_length", mass_per_length, "kg/m",
@@ -255,7 +244,7 @@ def mode_frequencies(fundamental_period, n_modes: int = 5, plane: Plane = "out")
     .. [1] Lee, S.-M. and Kim, Y.-C. (1986), section 3.
     .. [2] Irvine, H. M. (1981). Cable Structures. MIT Press.
     """
-    plane = _check_option("plane", plane, ("out", "in"))
+    plane = _validate.one_of("plane", plane, ("out", "in"))
     n_modes = _check_n_modes(n_modes)
     T1 = np.asarray(_validate.positive("fundamental_period", fundamental_period, "s"))
     n = np.arange(1, n_modes + 1, dtype=float) + (1.0 if plane == "in" else 0.0)
@@ -291,7 +280,7 @@ def sagged_cable_frequencies(horizontal_tension, mass_per_length, phi0, phi1=0.0
     ----------
     .. [1] Lee, S.-M. and Kim, Y.-C. (1986), eq. (9)-(10) and section 3.
     """
-    plane = _check_option("plane", plane, ("out", "in"))
+    plane = _validate.one_of("plane", plane, ("out", "in"))
     n_modes = _check_n_modes(n_modes)
     T1 = sagged_cable_period(horizontal_tension, mass_per_length, phi0, phi1,
                              added_mass_per_length=added_mass_per_length,

@@ -39,7 +39,7 @@ import numpy as np
 
 from .. import _validate as v
 from ..errors import NoSolutionError, SeacableWarning
-from .towed import _check_form, _critical_cos
+from .towed import _critical_cos
 
 __all__ = ["LayingAngleMethod", "StraightLineLay", "hydrodynamic_constant", "laying_angle",
            "cable_slack", "straight_line_lay"]
@@ -140,7 +140,7 @@ def laying_angle(ship_speed, weight_per_length, diameter, drag_normal, water_den
     ----------
     .. [1] Paper 001, eq. (7)-(9), Table 1.
     """
-    _check_form("method", method, _METHODS)
+    v.one_of("method", method, _METHODS)
     if method == "small_angle":
         vs = v.positive("ship_speed", ship_speed, "m/s",
                         "the small-angle formula needs a moving ship; use method='exact'")

@@ -42,7 +42,6 @@ References
 
 from __future__ import annotations
 
-import difflib
 import warnings
 from dataclasses import dataclass
 from typing import Literal
@@ -170,16 +169,6 @@ class TowedCableSteady:
     critical_angle: float
 
 
-def _check_form(name, value, allowed):
-    """Raise InputError with a "did you mean" hint unless ``value`` is one of ``allowed``."""
-    if value not in allowed:
-        close = difflib.get_close_matches(str(value), allowed, n=1)
-        hint = f"did you mean {close[0]!r}? " if close else ""
-        raise InputError(f"{name} must be one of {', '.join(map(repr, allowed))}, got {value!r}. "
-                         f"Suggested fix: {hint}use one of the listed values.")
-    return value
-
-
 def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, drag_tangential=0.0,
                        *, water_density=1025.0, axial_stiffness=None, body_weight=0.0,
                        body_drag_area=0.0, body_drag_force=0.0, body_lift=0.0,
@@ -273,7 +262,7 @@ def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, 
         if np.ndim(val):
             raise InputError(f"{name} must be a scalar for towed_cable_steady, got an array of shape "
                              f"{np.shape(val)}. Suggested fix: loop over the cases.")
-    _check_form("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
+    v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
 
     qn = 0.5 * rho * cdn * d * u * u                       # normal drag scale [N/m]
     perimeter = d if tangential_drag == "diameter" else np.pi * d
