@@ -48,7 +48,7 @@ def _pushover(ds, plt):
 
 
 def _modal(ds, plt):
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(15, 4.2))
     planes = ds.plane.values.astype(str)
     for plane, marker in (("in", "o"), ("out", "s")):
         keep = planes == plane
@@ -58,13 +58,17 @@ def _modal(ds, plt):
     ax1.legend()
     span = float(np.ptp(ds.x.values)) or float(np.ptp(ds.z.values)) or 1.0
     ax2.plot(ds.x, ds.z, "k-", lw=2, label="static")
-    for k in range(min(3, ds.sizes["mode"])):
+    for k in np.flatnonzero(planes == "in")[:3]:
         shp = ds.shape.isel(mode=k).values
-        scale = 0.08 * span
-        ax2.plot(ds.x + scale * shp[:, 0], ds.z + scale * shp[:, 2],
-                 label=f"mode {k + 1} ({planes[k]}, {float(ds.period[k]):.2f} s)")
-    ax2.set(xlabel=_label(ds.x), ylabel=_label(ds.z), title="Mode shapes (x-z view)")
+        ax2.plot(ds.x + 0.08 * span * shp[:, 0], ds.z + 0.08 * span * shp[:, 2],
+                 label=f"mode {k + 1} ({float(ds.period[k]):.2f} s)")
+    ax2.set(xlabel=_label(ds.x), ylabel=_label(ds.z), title="In-plane modes")
     ax2.legend(fontsize=8)
+    for k in np.flatnonzero(planes == "out")[:3]:
+        ax3.plot(ds.s, ds.shape.isel(mode=k).sel(direction="y"),
+                 label=f"mode {k + 1} ({float(ds.period[k]):.2f} s)")
+    ax3.set(xlabel=_label(ds.s), ylabel="y displacement [-]", title="Out-of-plane modes")
+    ax3.legend(fontsize=8)
     return {"modes": fig}
 
 
