@@ -24,6 +24,9 @@ CASES = {
                                        f"{float(ds.offset[0]):g}..{float(ds.offset[-1]):g} m"),
     "oc3_hywind_modes": lambda ds: (f"first periods {', '.join(f'{p:.2f}' for p in ds.period.values[:4])} s; "
                                     f"wave-speed estimate {float(ds.wave_period):.2f} s"),
+    "paper004_lena_pushover": lambda ds: (f"clump lifts off the seabed: grounded length "
+                                          f"{float(ds.grounded_length[0]):.0f} m at 0 m offset, "
+                                          f"{float(ds.grounded_length[-1]):.0f} m at {float(ds.offset[-1]):g} m"),
     "paper000_steady_tow": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),

@@ -49,6 +49,7 @@ def test_validate_reports_each_file(capsys):
     (["run", "no_such_case.yaml"], "does not exist"),
     (["plot", "no_such_result.nc"], "does not exist"),
     (["validate", "__BAD__"], "diameter must be > 0 m, got -0.035 m"),
+    (["run", "__SHORT__"], "cannot reach"),
 ])
 def test_user_errors_exit_2_with_one_message(tmp_path, capsys, argv, expected):
     if "__BAD__" in argv:
@@ -56,6 +57,10 @@ def test_user_errors_exit_2_with_one_message(tmp_path, capsys, argv, expected):
         bad.write_text((EXAMPLES / "paper000_steady_tow.yaml").read_text().replace(
             "diameter: 0.035", "diameter: -0.035"))
         argv = [a.replace("__BAD__", str(bad)) for a in argv]
+    if "__SHORT__" in argv:  # 400 m of chain cannot span 848.67 m by 250 m
+        short = tmp_path / "short.yaml"
+        short.write_text((EXAMPLES / "oc3_hywind_line.yaml").read_text().replace("length: 902.2", "length: 400.0"))
+        argv = [a.replace("__SHORT__", str(short)) for a in argv]
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err.startswith("seacable: error: ") and expected in err

@@ -515,7 +515,8 @@ def catenary(horizontal_span, vertical_span, length, axial_stiffness, weight_per
     over = np.maximum(TF, TA) / EA > max_strain
     if over.any():
         k = int(np.argmax(over))
-        raise NoSolutionError(_cannot_reach(k, shape, x, z, L, EA, max(TF[k], TA[k]) / EA[k], max_strain))
+        raise NoSolutionError(_cannot_reach(k, shape, x, z, L, EA, max(TF[k], TA[k]) / EA[k], max_strain,
+                                            by_weight=np.hypot(x[k], z[k]) <= L[k]))
     r = lambda a: a.reshape(shape)  # noqa: E731
     return CatenaryResult(r(H), r(V), r(HA), r(VA), r(TF), r(TA), r(LB), K.reshape(shape + (2, 2)),
                           r(reg), int(iters), *(r(a) for a in (x, z, L, EA, w, mu, sb)))
@@ -528,11 +529,17 @@ def _where(k, shape):
     return f"[{idx[0] if len(idx) == 1 else idx}]"
 
 
-def _cannot_reach(k, shape, x, z, L, EA, strain, max_strain):
-    return (f"the line{_where(k, shape)} cannot reach its fairlead: horizontal_span={x[k]:.6g} m, "
-            f"vertical_span={z[k]:.6g} m, length={L[k]:.6g} m, axial_stiffness={EA[k]:.6g} N would need a "
-            f"strain of {strain:.3g} > max_strain={max_strain:.3g}. Suggested fix: lengthen the line "
-            "or bring the ends closer (or raise max_strain if the material really stretches so far).")
+def _cannot_reach(k, shape, x, z, L, EA, strain, max_strain, *, by_weight=False):
+    where = (f"horizontal_span={x[k]:.6g} m, vertical_span={z[k]:.6g} m, length={L[k]:.6g} m, "
+             f"axial_stiffness={EA[k]:.6g} N")
+    if by_weight:
+        # The chord is reachable, but the line's own tension stretches it past the bound.
+        return (f"the line{_where(k, shape)} would stretch by {strain:.3g} > max_strain={max_strain:.3g} "
+                f"under its own tension: {where}. Suggested fix: check axial_stiffness (N) and "
+                "weight_per_length (N/m) for a unit slip; a real line this soft needs max_strain raised.")
+    return (f"the line{_where(k, shape)} cannot reach its fairlead: {where} would need a strain of "
+            f"{strain:.3g} > max_strain={max_strain:.3g}. Suggested fix: lengthen the line or bring the ends "
+            "closer (or raise max_strain if the material really stretches so far).")
 
 
 def _profile(n, xF, zF, L, EA, w, mu, H, VF, LB, regime):

@@ -201,3 +201,12 @@ def test_non_convergence_names_case_iterations_and_residual():
         catenary([400.0, 800.0], [250.0, 250.0], [470.0, 900.0], 1e9, 700.0, 0.5, max_iter=1)
     assert err.value.iterations == 1
     assert err.value.residual > 1e-10
+
+
+def test_line_stretched_by_its_own_weight_is_not_called_too_short():
+    # A vertical span of 229 m is well inside 738.55 m of line, but at 3000 N/m and EA = 1.76e5 N
+    # the line's own tension would stretch it by about 200 %: the message must say so, not suggest
+    # lengthening the line (which would make it worse).
+    with pytest.raises(NoSolutionError, match="under its own tension") as info:
+        catenary(0.0, 229.0, 738.55, 175818.0, 3000.0)
+    assert "lengthen" not in str(info.value)
