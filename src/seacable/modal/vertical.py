@@ -63,7 +63,7 @@ from scipy.special import j0, jn_zeros, y0
 
 from .. import _validate
 from ..errors import ConvergenceError, InputError
-from .wave_speed import _check_n_modes
+from .wave_speed import _check_n_modes, _mass_and_weight
 
 __all__ = ["vertical_cable_period", "vertical_cable_frequencies", "travel_time"]
 
@@ -82,14 +82,7 @@ def _inputs(length, bottom_tension, mass_per_length, added_mass_per_length, weig
     L = _validate.positive("length", length, "m", "give the cable length in metres")
     T0 = _validate.nonnegative("bottom_tension", bottom_tension, "N",
                                "give the tension at the lower end in newtons (0 for a free end)")
-    m = _validate.positive("mass_per_length", mass_per_length, "kg/m",
-                           "give the structural mass per metre of cable")
-    dm = _validate.nonnegative("added_mass_per_length", added_mass_per_length, "kg/m",
-                               "give 0 in air, or the transverse added mass per metre in water")
-    g = _validate.positive("gravity", gravity, "m/s^2", "use 9.81 m/s^2")
-    w = (np.asarray(m) * g if weight_per_length is None else
-         _validate.positive("weight_per_length", weight_per_length, "N/m",
-                            "give the weight per metre (in water for a submerged cable)"))
+    m, dm, g, w = _mass_and_weight(mass_per_length, added_mass_per_length, weight_per_length, gravity)
     L, T0, M, w = np.broadcast_arrays(np.asarray(L, float), np.asarray(T0, float),
                                       np.asarray(m, float) + dm, np.asarray(w, float))
     return L, T0, M, w

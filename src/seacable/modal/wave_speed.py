@@ -61,6 +61,19 @@ Vertex = Literal["between", "outside"]
 _HALF_PI = 0.5 * np.pi
 
 
+def _mass_and_weight(mass_per_length, added_mass_per_length, weight_per_length, gravity):
+    """Checked (m, added mass, g, w); w defaults to m g, the cable in air as in the paper."""
+    m = _validate.positive("mass_per_length", mass_per_length, "kg/m",
+                           "give the structural mass per metre of cable")
+    dm = _validate.nonnegative("added_mass_per_length", added_mass_per_length, "kg/m",
+                               "give 0 in air, or the transverse added mass per metre in water")
+    g = _validate.positive("gravity", gravity, "m/s^2", "use 9.81 m/s^2")
+    w = (np.asarray(m) * g if weight_per_length is None else
+         _validate.positive("weight_per_length", weight_per_length, "N/m",
+                            "give the weight per metre (in water for a submerged cable)"))
+    return m, dm, g, w
+
+
 def _check_n_modes(n_modes) -> int:
     if isinstance(n_modes, bool) or not isinstance(n_modes, (int, np.integer)) or n_modes < 1:
         raise InputError(f"n_modes must be an integer >= 1, got {n_modes!r}. "
@@ -192,14 +205,7 @@ def sagged_cable_period(horizontal_tension, mass_per_length, phi0, phi1=0.0, *,
     vertex = _validate.one_of("vertex", vertex, ("between", "outside"))
     H = _validate.positive("horizontal_tension", horizontal_tension, "N",
                            "give the horizontal component of the static tension in newtons")
-    m = _validate.positive("mass_per_length", mass_per_length, "kg/m",
-                           "give the structural mass per metre of cable")
-    dm = _validate.nonnegative("added_mass_per_length", added_mass_per_length, "kg/m",
-                               "give 0 in air, or the transverse added mass per metre in water")
-    g = _validate.positive("gravity", gravity, "m/s^2", "use 9.81 m/s^2")
-    w = (np.asarray(m) * g if weight_per_length is None else
-         _validate.positive("weight_per_length", weight_per_length, "N/m",
-                            "give the weight per metre (in water for a submerged cable)"))
+    m, dm, g, w = _mass_and_weight(mass_per_length, added_mass_per_length, weight_per_length, gravity)
     f0 = np.asarray(period_factor(_angle("phi0", phi0, allow_zero=False)))
     f1 = np.asarray(period_factor(_angle("phi1", phi1, allow_zero=True)))
     if vertex == "between":
@@ -338,12 +344,7 @@ def suspended_cable_period(length, end_angle, mass_per_length, *, added_mass_per
        suspended chain. Q. J. Mech. Appl. Math. 14.
     """
     L = _validate.positive("length", length, "m", "give the cable length between supports in metres")
-    m = _validate.positive("mass_per_length", mass_per_length, "kg/m",
-                           "give the structural mass per metre of cable")
-    g = _validate.positive("gravity", gravity, "m/s^2", "use 9.81 m/s^2")
-    w = (np.asarray(m) * g if weight_per_length is None else
-         _validate.positive("weight_per_length", weight_per_length, "N/m",
-                            "give the weight per metre (in water for a submerged cable)"))
+    m, _, g, w = _mass_and_weight(mass_per_length, 0.0, weight_per_length, gravity)
     phi = _angle("end_angle", end_angle, allow_zero=False)
     H = w * np.asarray(L) / (2.0 * np.tan(phi))
     return sagged_cable_period(H, m, phi, phi, added_mass_per_length=added_mass_per_length,
