@@ -354,7 +354,7 @@ def _check_representable(line: _Line, H, V_A, kind, itd, s_td, L):
     if not line.seabed:
         return
     fix = ("which this single-contact model does not represent. Suggested fix: move buoyancy "
-           "above the touchdown, or use the finite-element mooring model.")
+           "above the touchdown.")
     for j in range(0 if kind == "none" else itd + 1 if kind == "piece" else itd):
         if line.w[j] < 0.0:
             raise NoSolutionError(f"segment {line.seg[j]} is buoyant ({line.w[j]:.6g} N/m) but "
@@ -399,7 +399,8 @@ def _validate(lengths, weights, axial_stiffness, point_loads, seabed_friction, s
                        "give the slope in radians", inclusive=False)
     if slope != 0.0:
         raise InputError(f"seabed_slope must be 0 rad (a sloping seabed is not implemented), got "
-                         f"{slope:.6g} rad. Suggested fix: use the finite-element mooring model.")
+                         f"{slope:.6g} rad. Suggested fix: use a flat seabed (slope: 0) for static "
+                         "analyses; sloped seabeds are not yet supported there.")
     v.in_range("tol", tol, 0.0, 1e-2, "", "give a relative tolerance such as 1e-9", inclusive=False)
     v.at_least("max_iter", max_iter, 1, "", "allow at least one iteration")
     return lengths, weights, ea, loads
