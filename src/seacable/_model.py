@@ -32,17 +32,16 @@ def _number_checker(unit: str, gt, ge, lt, le, fix: str | None):
     hint = f" Suggested fix: {fix}" if fix else ""
 
     def check(value: Any) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            if isinstance(value, str):
-                try:
-                    value = float(value)
-                except ValueError:
-                    raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
-                                     + (hint or " Suggested fix: write a plain number in SI units.")) from None
-            else:
-                raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
-                                 + (hint or " Suggested fix: write a plain number in SI units."))
-        value = float(value)
+        number = value
+        if isinstance(value, str):  # YAML 1.1 reads "1e9" as text
+            try:
+                number = float(value)
+            except ValueError:
+                pass
+        if isinstance(number, bool) or not isinstance(number, (int, float)):
+            raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
+                             + (hint or " Suggested fix: write a plain number in SI units."))
+        value = float(number)
         if not math.isfinite(value):
             raise ValueError(f"must be a finite number, got {value}{shown_unit}.{hint}")
         for bound, ok, sign in ((gt, lambda v, b: v > b, ">"), (ge, lambda v, b: v >= b, ">="),

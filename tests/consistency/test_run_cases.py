@@ -44,16 +44,14 @@ def test_pushover_starts_at_the_static_solution(oc3):
     assert np.all(np.abs(slope[1:-1] - k[1:-1]) <= 2 * truncation + 1e-9 * k[1:-1])
 
 
-def test_modal_case_fundamental_brackets_the_wave_speed_estimate():
+def test_modal_case_fundamental_brackets_the_wave_speed_estimate(oc3):
     ds = sc.run(sc.load_case(EXAMPLES / "oc3_hywind_modes.yaml"))
     first_out = float(ds.period.where(ds.plane == "out", drop=True)[0])
-    suspended = ds.tension.values[ds.s.values > 140.0]  # above the touchdown (~135 m from the anchor)
+    suspended = ds.tension.values[ds.s.values > float(sc.run(oc3).grounded_length)]
     # Paper 002's wave-speed period and the eigen period of the same line both lie within the Sturm
-    # bracket sqrt(Tmax/Tmin) of each other (helper check in tests/validation/test_modal_closed_forms.py).
+    # bracket sqrt(Tmax/Tmin) of each other (see tests/validation/test_modal_closed_forms.py).
     bracket = np.sqrt(suspended.max() / suspended.min())
     assert 1 / bracket < float(ds.wave_period) / first_out < bracket
-    # OC3's line is shallow-sagged: the two agree to about 1 %
-    assert float(ds.wave_period) == pytest.approx(first_out, rel=0.02)
     # modes are sorted, and both planes are present
     assert np.all(np.diff(ds.frequency) >= 0) and set(ds.plane.values) == {"in", "out"}
 
@@ -69,8 +67,14 @@ def test_lena_case_reproduces_the_clump_lift_off():
 
 def test_paper000_case_matches_the_analytic_top_tension():
     case = sc.load_case(EXAMPLES / "paper000_steady_tow.yaml")
-    # with the paper's tangential drag (eq. 6): analytic 1496.3 N (tests/validation/test_paper000_statics.py)
-    assert float(sc.run(case).top_tension) == pytest.approx(1496.3, rel=5e-3)
+    # Analytic check (SPEC.md): a free-ended cable lies straight at the critical angle, the root of
+    # w cos(phi) = q sin^2(phi) with q = rho C_dn d U^2 / 2, and T_top = L (w sin(phi) + D_t),
+    # D_t = rho C_dt pi d U^2 cos^2(phi) / 2. The case adds EA (stretch), hence the issue's 0.5 %.
+    w, rho, d, u, cdn, cdt, length = 17.7, 1025.0, 0.035, 2.0, 1.5, 0.01, 170.0
+    q = 0.5 * rho * cdn * d * u**2
+    cos_phi = (np.sqrt(w**2 + 4 * q**2) - w) / (2 * q)
+    top = length * (w * np.sqrt(1 - cos_phi**2) + 0.5 * rho * cdt * np.pi * d * u**2 * cos_phi**2)
+    assert float(sc.run(case).top_tension) == pytest.approx(top, rel=5e-3)
     no_drag = case.replace(line=sc.Line.single(
         case.line.segments[0].line_type.replace(drag_tangential=0.0, axial_stiffness=None), 170.0))
     ds = sc.run(no_drag)
