@@ -27,7 +27,7 @@ CASES = {
     "paper004_lena_pushover": lambda ds: (f"clump lifts off the seabed: grounded length "
                                           f"{float(ds.grounded_length[0]):.0f} m at 0 m offset, "
                                           f"{float(ds.grounded_length[-1]):.0f} m at {float(ds.offset[-1]):g} m"),
-    "paper000_steady_tow": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
+    "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),
     "paper002_vertical_cable": lambda ds: ("fundamental period string/exact/wave "

@@ -27,6 +27,7 @@ from .environment import Environment
 from .errors import InputError
 from .line import Line, LineType
 from .statics.towed import TangentialDragForm
+from .towed.vessel import VesselPath
 
 __all__ = [
     "StaticAnalysis",
@@ -104,6 +105,8 @@ class TowedBody(Model):
 
     weight_in_water: quantity("N") = Field(0.0, description="Net weight in water (negative floats). [N]")
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
+    mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air; needed (> 0) by towed_dynamic. [kg]")
+    added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass (isotropic). [kg]")
 
 
 class TowedSteadyAnalysis(Model):
@@ -116,6 +119,42 @@ class TowedSteadyAnalysis(Model):
         "paper000", description="Form of the tangential drag (seacable.statics.towed.TangentialDragForm); "
                                 "set the line type's drag_tangential to 0 for none.")
     n_nodes: int = Field(7, ge=2, le=100_000, description="Nodes at which the result is reported.")
+
+
+class TowedDynamicAnalysis(Model):
+    """Time-domain dynamics of a towed cable behind a vessel path (paper 000 box scheme)."""
+
+    type: Literal["towed_dynamic"] = "towed_dynamic"
+    vessel: VesselPath = Field(description="Tow-point motion: straight, speed_schedule, turn or table.")
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    time_step: quantity("s", gt=0) = Field(0.5, description="Time step (halved locally where Newton fails). [s]")
+    output_interval: quantity("s", gt=0) | None = Field(
+        None, description="Time between stored states, a multiple of time_step (default: time_step). [s]")
+    n_nodes: int = Field(7, ge=3, le=100_000, description="Nodes from the lower end to the vessel.")
+    body: TowedBody | None = None
+    tangential_drag: TangentialDragForm = Field(
+        "paper000", description="Form of the tangential drag (seacable.statics.towed.TangentialDragForm).")
+    current_follows_vessel: bool = Field(
+        False, description="Turn the current with the vessel's course (heading measured from the course).")
+    tolerance: quantity("-", gt=0, lt=1e-2) = Field(1e-8, description="Newton tolerance, scaled. [-]")
+    max_iterations: int = Field(25, ge=2, le=1000, description="Newton iterations per step.")
+
+    @model_validator(mode="after")
+    def _steps(self):
+        if self.time_step > self.duration:
+            raise ValueError(f"time_step ({self.time_step:g} s) must not exceed duration "
+                             f"({self.duration:g} s). Suggested fix: shorten the step.")
+        out = self.output_interval
+        if out is not None:
+            k = round(out / self.time_step)
+            if k < 1 or abs(k * self.time_step - out) > 1e-9 * out:
+                raise ValueError(f"output_interval ({out:g} s) must be a multiple of time_step "
+                                 f"({self.time_step:g} s). Suggested fix: use {max(k, 1) * self.time_step:g} s.")
+        if self.body is not None and not self.body.mass > 0:
+            raise ValueError("body.mass must be > 0 kg for towed_dynamic: the body's inertia enters its "
+                             "equation of motion. Suggested fix: give the mass in air, e.g. weight/9.81 "
+                             "plus the mass of the displaced water.")
+        return self
 
 
 class LayingTheoryAnalysis(Model):
@@ -143,7 +182,8 @@ class VerticalModesAnalysis(Model):
     n_modes: int = Field(5, ge=1, le=100)
 
 
-ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, LayingTheoryAnalysis,
+ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, TowedDynamicAnalysis,
+            LayingTheoryAnalysis,
             VerticalModesAnalysis)
 Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)

@@ -27,6 +27,27 @@ def _show_warning(message, category, filename, lineno, file=None, line=None):
         print(warnings.formatwarning(message, category, filename, lineno, line), file=sys.stderr, end="")
 
 
+class _Progress:
+    """Progress line on stderr for time-domain runs, at most once a second."""
+
+    def __init__(self, every: float = 1.0):
+        self.every = every
+        self.last = None
+
+    def __call__(self, t: float, duration: float) -> None:
+        import time
+
+        now = time.monotonic()
+        done = t >= duration - 1e-9
+        if self.last is None:
+            self.last = now
+        if done or now - self.last >= self.every:
+            self.last = now
+            end = "\n" if done else "\r"
+            print(f"seacable: t = {t:.6g} s of {duration:.6g} s ({100 * t / duration:.0f} %)",
+                  file=sys.stderr, end=end, flush=True)
+
+
 def _cmd_run(args) -> int:
     from .io import load_case
     from .results import write_netcdf
@@ -34,9 +55,14 @@ def _cmd_run(args) -> int:
 
     case = load_case(args.case)
     out = Path(args.output) if args.output else Path(f"{case.name}.nc")
-    ds = run(case)
+    ds = run(case, progress=_Progress())
     path = write_netcdf(ds, out)
     print(f"wrote {path}")
+    if ds.attrs.get("interrupted"):
+        t_end = float(ds["time"].values[-1])
+        print(f"seacable: interrupted at t = {t_end:g} s; {path} holds the result up to then",
+              file=sys.stderr)
+        return EXIT_INTERRUPTED
     if not args.no_plots:
         from .plot import plot_result
 

@@ -282,23 +282,33 @@ def _run_vertical_modes(case: Case):
     return make_dataset(data, coords, analysis="vertical_modes", case=case, references=(REF_002,))
 
 
+def _run_towed_dynamic(case: Case, progress=None):
+    from .towed.run import run_towed_dynamic
+
+    return run_towed_dynamic(case, progress=progress)
+
+
 _RUNNERS = {
     "static": _run_static,
     "pushover": _run_pushover,
     "modal": _run_modal,
     "towed_steady": _run_towed_steady,
+    "towed_dynamic": _run_towed_dynamic,
     "laying_theory": _run_laying_theory,
     "vertical_modes": _run_vertical_modes,
 }
 
 
-def run(case: Case):
+def run(case: Case, progress=None):
     """Run a case and return its result.
 
     Parameters
     ----------
     case
         A validated case, from :func:`seacable.load_case` or built in code.
+    progress
+        Optional ``progress(t, duration)`` callback of time-domain analyses, called as the
+        simulation advances (the CLI prints a progress line with it). [s]
 
     Returns
     -------
@@ -309,4 +319,10 @@ def run(case: Case):
     if not isinstance(case, Case):
         raise InputError(f"run() takes a seacable.Case, got {type(case).__name__}. "
                          "Suggested fix: seacable.load_case('file.yaml') or seacable.Case(...).")
-    return _RUNNERS[case.analysis.type](case)
+    runner = _RUNNERS[case.analysis.type]
+    if progress is not None and case.analysis.type in _TIME_DOMAIN:
+        return runner(case, progress=progress)
+    return runner(case)
+
+
+_TIME_DOMAIN = ("towed_dynamic",)

@@ -66,7 +66,7 @@ def test_lena_case_reproduces_the_clump_lift_off():
 
 
 def test_paper000_case_matches_the_analytic_top_tension():
-    case = sc.load_case(EXAMPLES / "paper000_steady_tow.yaml")
+    case = sc.load_case(EXAMPLES / "paper000_steady_statics.yaml")
     # Analytic check (SPEC.md): a free-ended cable lies straight at the critical angle, the root of
     # w cos(phi) = q sin^2(phi) with q = rho C_dn d U^2 / 2, and T_top = L (w sin(phi) + D_t),
     # D_t = rho C_dt pi d U^2 cos^2(phi) / 2. The case adds EA (stretch), hence the 0.5 %.

@@ -23,7 +23,7 @@ def test_version_and_help(capsys):
 
 def test_run_writes_a_labelled_netcdf_and_plots(tmp_path, capsys):
     out = tmp_path / "res" / "tow.nc"
-    assert main(["run", str(EXAMPLES / "paper000_steady_tow.yaml"), "-o", str(out)]) == 0
+    assert main(["run", str(EXAMPLES / "paper000_steady_statics.yaml"), "-o", str(out)]) == 0
     printed = capsys.readouterr().out
     assert f"wrote {out}" in printed and ".png" in printed
     ds = xr.open_dataset(out)
@@ -54,7 +54,7 @@ def test_validate_reports_each_file(capsys):
 def test_user_errors_exit_2_with_one_message(tmp_path, capsys, argv, expected):
     if "__BAD__" in argv:
         bad = tmp_path / "bad.yaml"
-        bad.write_text((EXAMPLES / "paper000_steady_tow.yaml").read_text().replace(
+        bad.write_text((EXAMPLES / "paper000_steady_statics.yaml").read_text().replace(
             "diameter: 0.035", "diameter: -0.035"))
         argv = [a.replace("__BAD__", str(bad)) for a in argv]
     if "__SHORT__" in argv:  # 400 m of chain cannot span 848.67 m by 250 m

@@ -66,7 +66,18 @@ def load_case(path: str | Path) -> Case:
         problem = getattr(err, "problem", None) or str(err)
         raise CaseFileError(f"{path}: not valid YAML{where}: {problem}. Suggested fix: check the "
                             "indentation and the ':' after each key.") from None
+    _resolve_files(data, path.parent)
     return parse_case(data, source=str(path))
+
+
+def _resolve_files(data, folder: Path) -> None:
+    """Make a vessel table's relative ``file`` relative to the case file's folder."""
+    vessel = data.get("analysis", {}).get("vessel") if isinstance(data, dict) and isinstance(
+        data.get("analysis"), dict) else None
+    if isinstance(vessel, dict) and isinstance(vessel.get("file"), str):
+        f = Path(vessel["file"])
+        if not f.is_absolute():
+            vessel["file"] = str(folder / f)
 
 
 def dump_case(case: Case) -> str:

@@ -24,7 +24,7 @@ from numba import njit
 
 from .equations import (I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV, ORDER, P_IEA,
                         box_assemble, c_terms, current_velocity, frame, g_terms, integrate_positions)
-from .linalg import solve_block_tridiagonal
+from .linalg import solve_banded, solve_block_tridiagonal, solve_dense
 
 __all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march"]
 
@@ -181,8 +181,12 @@ def workspace(n):
 
 
 @njit(cache=True)
-def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scale, tol, max_iter, w):
+def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scale, tol, max_iter, w,
+                solver=0):
     """Solve the box equations for the new state ``hn`` (updated in place; on entry the guess).
+
+    ``solver`` picks the linear solve of the Newton systems: 0 block tri-diagonal (paper 000),
+    1 dense LU of the assembled matrix (the baseline of the benchmark), 2 LAPACK band LU.
 
     Returns ``(status, iterations, correction)`` with ``status`` a key of :data:`STATUS` and
     ``correction`` the last scaled correction ``max |dH_k| / scale_k``.
@@ -196,7 +200,12 @@ def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scal
             if abs(math.cos(hn[j, I_TH])) < 1e-6:
                 return 4, it, err
         _assemble(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, w)
-        status = solve_block_tridiagonal(lower, diag, upper, rhs, dx)
+        if solver == 0:
+            status = solve_block_tridiagonal(lower, diag, upper, rhs, dx)
+        elif solver == 1:
+            status = solve_dense(lower, diag, upper, rhs, dx)
+        else:
+            status = solve_banded(lower, diag, upper, rhs, dx)
         if status != 0:
             return 3, it, err
         err = 0.0
@@ -239,7 +248,7 @@ def _currents(pos, vel, dt, cur, vessel_velocity, out):
 
 @njit(cache=True)
 def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale, tol, max_iter,
-          save_every, out_h, out_pos, w):
+          save_every, out_h, out_pos, w, solver=0):
     """Advance ``len(vessel_vel) - 1`` steps of ``dt`` from the state ``h`` (at ``vessel_*[0]``).
 
     ``h`` and ``h_prev`` (the state one step ``dt_prev`` earlier, for the extrapolated guess of
@@ -273,7 +282,7 @@ def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale,
         else:
             hn[:, :] = h
         status, its, err = newton_step(hn, h, co, un, uo, vessel_vel[i + 1], dt, par, bpar, False,
-                                       scale, tol, max_iter, w)
+                                       scale, tol, max_iter, w, solver)
         total += its
         if status != 0:
             return status, i, total, its, err

@@ -35,6 +35,8 @@ from .scheme import B_DRAG, B_HAS, B_MASS, B_WEIGHT, STATUS, march, newton_step,
 __all__ = ["TowedBodyParameters", "TowedRun", "cable_parameters", "body_parameters", "steady_tow",
            "simulate"]
 
+_SOLVERS = {"block": 0, "dense": 1, "banded": 2}
+
 MAX_HALVINGS = 6
 """Times a failed step is halved before the run stops with a ConvergenceError."""
 
@@ -309,8 +311,8 @@ class TowedRun:
 
 
 def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interval=None, current=None,
-             body=None, water_density=1025.0, current_follows_vessel=False, tol=1e-8, max_iter=25, initial_state=None,
-             progress: Callable | None = None) -> TowedRun:
+             body=None, water_density=1025.0, current_follows_vessel=False, tol=1e-8, max_iter=25,
+             initial_state=None, progress: Callable | None = None, linear_solver="block") -> TowedRun:
     """March the towed-cable box equations in time behind a vessel.
 
     Parameters
@@ -340,6 +342,9 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
         ``H (n, 10)`` at t = 0; by default the steady tow at the vessel's initial velocity.
     progress : callable, optional
         Called as ``progress(t, duration)`` after each output.
+    linear_solver : {"block", "dense", "banded"}
+        Linear solve of the Newton systems: block tri-diagonal (paper 000), dense LU of the
+        assembled matrix (for comparison) or LAPACK's band LU.
 
     Returns
     -------
@@ -364,6 +369,9 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
         raise InputError(f"output_interval must be a multiple of time_step ({dt:g} s), got {out_dt:g} s. "
                          f"Suggested fix: use {max(every, 1) * dt:g} s.")
     n_out = int(math.floor(duration / out_dt + 1e-9))
+    solver = _SOLVERS.get(linear_solver)
+    if solver is None:
+        v.one_of("linear_solver", linear_solver, tuple(_SOLVERS))
     bpar = body_parameters(body, water_density)
     cur = _current_arrays(current, current_follows_vessel)
     pos0, vel0 = path(np.array([0.0]))
@@ -398,7 +406,7 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
             while done < every:
                 status, steps, its, last_its, err = march(
                     h, h_prev, dt_prev, dt, vp[done:], vv[done:], cur, par, bpar, scale, tol, max_iter,
-                    every - done, out_h, out_pos, w)
+                    every - done, out_h, out_pos, w, solver)
                 run.iterations += its
                 run.steps += steps
                 dt_prev = dt if steps > 0 else dt_prev
@@ -406,7 +414,7 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
                 if status == 0:
                     break
                 dt_prev = _halve(h, h_prev, dt_prev, ts[done], dt, path, cur, par, bpar, scale, tol, max_iter,
-                                 w, run, status, last_its, err)
+                                 w, run, status, last_its, err, solver)
                 done += 1
             positions.append(np.zeros((n, 3)))
             integrate_positions(h, vp[-1], par, positions[-1])
@@ -428,7 +436,8 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
     return run
 
 
-def _halve(h, h_prev, dt_prev, t, dt, path, cur, par, bpar, scale, tol, max_iter, w, run, status, its, err):
+def _halve(h, h_prev, dt_prev, t, dt, path, cur, par, bpar, scale, tol, max_iter, w, run, status, its, err,
+           solver):
     """Redo the step from ``t`` to ``t + dt`` in 2, 4, ... sub-steps; returns the last sub-step."""
     h0, hp0 = h.copy(), h_prev.copy()
     n = h.shape[0]
@@ -440,7 +449,7 @@ def _halve(h, h_prev, dt_prev, t, dt, path, cur, par, bpar, scale, tol, max_iter
         vp, vv = path(t + sub * np.arange(parts + 1))
         h[:], h_prev[:] = h0, hp0
         status, steps, total, its, err = march(h, h_prev, dt_prev, sub, vp, vv, cur, par, bpar, scale, tol,
-                                                max_iter, parts + 1, out_h, out_pos, w)
+                                                max_iter, parts + 1, out_h, out_pos, w, solver)
         run.iterations += total
         if status == 0:
             run.steps += parts
