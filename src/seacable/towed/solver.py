@@ -85,7 +85,11 @@ def cable_parameters(length, n_nodes, mass_per_length, weight_per_length, diamet
     m = v.positive("mass_per_length", mass_per_length, "kg/m", "give the mass per metre in air")
     w = v.finite("weight_per_length", weight_per_length, "N/m", "give the weight in water per metre")
     d = v.positive("diameter", diameter, "m", "give the outer diameter in metres")
-    ea = v.positive("axial_stiffness", axial_stiffness, "N", "give EA in newtons (inf: inextensible)")
+    ea = float(axial_stiffness)
+    if not math.isinf(ea):
+        ea = v.positive("axial_stiffness", ea, "N", "give EA in newtons (math.inf: inextensible)")
+    elif ea < 0:
+        v.positive("axial_stiffness", ea, "N", "give EA in newtons (math.inf: inextensible)")
     ei = float(bending_stiffness)
     if not (math.isfinite(ei) and ei > 0):
         raise InputError(
@@ -224,7 +228,7 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
             "paper 000 are singular. Suggested fix: start the vessel moving (or add a current).")
     heading = math.atan2(rel[1], rel[0])
     guess = towed_cable_steady(
-        length, par[P_W], 2.0 * par[P_KN] / (water_density * 1.0), speed, 1.0,
+        length, par[P_W], max(2.0 * par[P_KN] / water_density, 1e-9), speed, 1.0,
         0.0, water_density=water_density,
         axial_stiffness=None if par[P_IEA] == 0 else 1.0 / par[P_IEA],
         body_weight=bpar[B_WEIGHT], body_drag_area=bpar[B_DRAG] * 2.0 / water_density,
