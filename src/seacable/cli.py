@@ -58,16 +58,16 @@ def _cmd_run(args) -> int:
     ds = run(case, progress=_Progress())
     path = write_netcdf(ds, out)
     print(f"wrote {path}")
-    if ds.attrs.get("interrupted"):
-        t_end = float(ds["time"].values[-1])
-        print(f"seacable: interrupted at t = {t_end:g} s; {path} holds the result up to then",
-              file=sys.stderr)
-        return EXIT_INTERRUPTED
     if not args.no_plots:
         from .plot import plot_result
 
         for png in plot_result(ds, args.plot_dir or path.parent, prefix=path.stem):
             print(f"wrote {png}")
+    if ds.attrs.get("interrupted"):
+        t_end = float(ds["time"].values[-1])
+        print(f"seacable: interrupted at t = {t_end:g} s; {path} holds the result up to then",
+              file=sys.stderr)
+        return EXIT_INTERRUPTED
     return 0
 
 
