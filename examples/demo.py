@@ -17,6 +17,13 @@ HERE = Path(__file__).resolve().parent
 
 #: The cases shown, in order, and the one-line summary printed for each.
 CASES = {
+    "paper000_turn": lambda ds: (
+        f"top tension {float(ds.top_tension[0]):.1f} -> {float(ds.top_tension[-1]):.1f} N in "
+        f"{float(ds.time[-1]):g} s ({100 * (float(ds.top_tension[-1] / ds.top_tension[0]) - 1):+.2f} %, paper "
+        f"000 Table 3: -1.54 %); vessel {float(ds.vessel_y[-1]):.1f} m, free end "
+        f"{float(ds.y[-1, 0] - ds.y[0, 0]):.1f} m sideways"),
+    "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
+                                     f"{float(ds.top_tension.min()):.1f} N while stopped"),
     "oc3_hywind_line": lambda ds: (f"fairlead tension {float(ds.tension_fairlead) / 1e3:.1f} kN, "
                                    f"{float(ds.grounded_length):.1f} m on the seabed"),
     "oc3_hywind_pushover": lambda ds: (f"H from {float(ds.H_fairlead[0]) / 1e3:.0f} to "
