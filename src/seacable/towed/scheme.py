@@ -24,7 +24,7 @@ from numba import njit
 
 from .equations import (I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV, ORDER, P_IEA,
                         box_assemble, c_terms, current_velocity, frame, g_terms, integrate_positions)
-from .linalg import solve_banded, solve_block_tridiagonal, solve_dense
+from .linalg import block_thomas, block_tridiagonal_workspace, solve_banded, solve_dense
 
 __all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march"]
 
@@ -139,7 +139,7 @@ def _bc_top(h, vessel_velocity, res, jac):
 def _assemble(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, w):
     """Fill the block tri-diagonal system ``w.lower, w.diag, w.upper, w.rhs`` (= -residual)."""
     n = hn.shape[0]
-    cn, dcn, gm, dgm, bm, res, jl, jr, lower, diag, upper, rhs, r5, j5, mid, rate, scratch = w
+    cn, dcn, gm, dgm, bm, res, jl, jr, lower, diag, upper, rhs, r5, j5, mid, rate = w[:16]
     for j in range(n):
         c_terms(hn[j], un[j], par, cn[j], dcn[j], True)
         if not steady:
@@ -177,7 +177,7 @@ def workspace(n):
     z = np.zeros
     return (z((n, NV)), z((n, NV, NV)), z((n, NV)), z((n, NV, NV)), z((n, NV, NV)), z((n - 1, NV)),
             z((n - 1, NV, NV)), z((n - 1, NV, NV)), z((n, NV, NV)), z((n, NV, NV)), z((n, NV, NV)),
-            z((n, NV)), z(5), z((5, NV)), z(NV), z(NV), z((n, NV)))
+            z((n, NV)), z(5), z((5, NV)), z(NV), z(NV), z((n, NV))) + block_tridiagonal_workspace(n, NV)
 
 
 @njit(cache=True)
@@ -201,7 +201,7 @@ def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scal
                 return 4, it, err
         _assemble(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, w)
         if solver == 0:
-            status = solve_block_tridiagonal(lower, diag, upper, rhs, dx)
+            status = block_thomas(lower, diag, upper, rhs, dx, w[17], w[18], w[19], w[20])
         elif solver == 1:
             status = solve_dense(lower, diag, upper, rhs, dx)
         else:
