@@ -203,9 +203,9 @@ def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scal
         if solver == 0:
             status = block_thomas(lower, diag, upper, rhs, dx, w[17], w[18], w[19], w[20])
         elif solver == 1:
-            status = solve_dense(lower, diag, upper, rhs, dx)
+            status = solve_dense(lower, diag, upper, rhs, dx, False)
         else:
-            status = solve_banded(lower, diag, upper, rhs, dx)
+            status = solve_banded(lower, diag, upper, rhs, dx, False)
         if status != 0:
             return 3, it, err
         err = 0.0
