@@ -242,7 +242,8 @@ def newton_system(n_nodes):
 
 def time_linear_solves(n_nodes, dense=True):
     """Median time [s] of one linear solve per solver, and the largest relative difference."""
-    from seacable.towed.linalg import solve_banded, solve_block_tridiagonal, solve_dense
+    from seacable.towed.lapack import solve_banded, solve_dense
+    from seacable.towed.linalg import solve_block_tridiagonal
 
     system = newton_system(n_nodes)
     solvers = {"block": solve_block_tridiagonal, "banded": solve_banded}

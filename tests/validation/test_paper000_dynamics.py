@@ -28,7 +28,7 @@ import pytest
 from seacable import Current
 from seacable.statics.towed import critical_angle, towed_cable_steady
 from seacable.towed.solver import TowedBodyParameters, cable_parameters, simulate, steady_tow
-from seacable.towed.vessel import SpeedSchedule, StraightPath, TablePath, TurnPath, sample_path
+from seacable.towed.vessel import StraightPath, TablePath, TurnPath, sample_path
 
 # Table 1, with the mass, EA and EI derived as documented in examples/paper000_turn.yaml
 L, D, W0, RHO = 170.0, 0.035, 17.7, 1025.0

@@ -22,9 +22,28 @@ import math
 import numpy as np
 from numba import njit
 
-from .equations import (I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV, ORDER, P_IEA,
-                        box_assemble, c_terms, current_velocity, frame, g_terms, integrate_positions)
-from .linalg import block_thomas, block_tridiagonal_workspace, solve_banded, solve_dense
+from .equations import (
+    I_OB,
+    I_ON,
+    I_PH,
+    I_SB,
+    I_SN,
+    I_T,
+    I_TH,
+    I_VB,
+    I_VN,
+    I_VT,
+    NV,
+    ORDER,
+    box_assemble,
+    c_terms,
+    current_velocity,
+    frame,
+    g_terms,
+    integrate_positions,
+)
+from .lapack import solve_banded, solve_dense
+from .linalg import block_thomas, block_tridiagonal_workspace
 
 __all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march"]
 

@@ -28,8 +28,27 @@ import numpy as np
 from .. import _validate as v
 from ..errors import ConvergenceError, InputError
 from ..statics.towed import TangentialDragForm, towed_cable_steady
-from .equations import (I_OB, I_ON, I_PH, I_T, I_TH, NV, P_DS, P_EI, P_IEA, P_KN, P_KT, P_M, P_MAN,
-                        P_MAT, P_POW, P_STRETCH, P_W, PARAMETERS, c_terms, frame, integrate_positions)
+from .equations import (
+    I_ON,
+    I_PH,
+    I_T,
+    I_TH,
+    NV,
+    P_DS,
+    P_EI,
+    P_IEA,
+    P_KN,
+    P_KT,
+    P_M,
+    P_MAN,
+    P_MAT,
+    P_POW,
+    P_STRETCH,
+    P_W,
+    PARAMETERS,
+    frame,
+    integrate_positions,
+)
 from .scheme import B_DRAG, B_HAS, B_MASS, B_WEIGHT, STATUS, march, newton_step, velocity_global, workspace
 
 __all__ = ["TowedBodyParameters", "TowedRun", "cable_parameters", "body_parameters", "steady_tow",

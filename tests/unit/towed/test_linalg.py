@@ -13,16 +13,13 @@ import scipy.linalg
 from numba import njit
 
 from seacable.errors import InputError, NoSolutionError
+from seacable.towed.lapack import assemble_dense, banded_bandwidths, solve_banded, solve_dense
 from seacable.towed.linalg import (
-    assemble_dense,
-    banded_bandwidths,
     block_tridiagonal_solve,
     block_tridiagonal_workspace,
     check_block_tridiagonal,
-    solve_banded,
     solve_block_tridiagonal,
     solve_block_tridiagonal_work,
-    solve_dense,
 )
 
 EPS = np.finfo(np.float64).eps

@@ -12,7 +12,7 @@ import pickle
 
 import numpy as np
 import pytest
-from pydantic import TypeAdapter
+from pydantic import TypeAdapter, ValidationError
 from scipy.integrate import cumulative_trapezoid
 
 from seacable.errors import InputError, SeacableWarning
@@ -296,7 +296,7 @@ def test_parse_from_dicts():
 def test_models_are_frozen_and_picklable():
     path = TurnPath(speed=1.0, radius=50.0, direction="right", end_time=20.0)
     assert pickle.loads(pickle.dumps(path)) == path
-    with pytest.raises(Exception):
+    with pytest.raises(ValidationError, match="frozen"):
         path.speed = 2.0
 
 
