@@ -15,6 +15,7 @@ from .case import (
     PushoverAnalysis,
     StaticAnalysis,
     TowedBody,
+    TowedDynamicAnalysis,
     TowedSteadyAnalysis,
     VerticalModesAnalysis,
 )
@@ -47,6 +48,7 @@ __all__ = [
     "PushoverAnalysis",
     "ModalAnalysis",
     "TowedSteadyAnalysis",
+    "TowedDynamicAnalysis",
     "TowedBody",
     "LayingTheoryAnalysis",
     "VerticalModesAnalysis",
