@@ -246,15 +246,8 @@ def solve_banded(lower, diag, upper, rhs, x, check=True):
 
     Parameters
     ----------
-    lower, diag, upper : ndarray of shape (n, m, m)
-        Blocks; ``lower[0]`` and ``upper[n-1]`` are ignored. [mixed]
-    rhs : ndarray of shape (n, m)
-        Right-hand side. [mixed]
-    x : ndarray of shape (n, m)
-        Output: the solution, overwritten. [mixed]
-    check : bool, optional
-        Apply the a-posteriori error estimate (:data:`ERROR_LIMIT`); a Newton iteration, which
-        checks its own convergence, passes False. [-]
+    lower, diag, upper, rhs, x, check
+        As :func:`solve_dense`.
 
     Returns
     -------
