@@ -76,6 +76,17 @@ def _dgesv(typingctx, n, nrhs, a, lda, ipiv, b, ldb):
 # dense and banded solvers (LAPACK)
 # --------------------------------------------------------------------------------------------
 @njit(cache=True)
+def _prepare(lower, diag, upper, rhs, x):
+    """Shape check and the rows' scales and power-of-two equilibration factors of both solvers."""
+    big_n = rhs.shape[0] * rhs.shape[1]
+    scale = np.empty(big_n)
+    factor = np.empty(big_n)
+    if not _shapes_ok(lower, diag, upper, rhs, x):
+        return -1, scale, factor
+    return _original_row_scales(lower, diag, upper, scale, factor), scale, factor
+
+
+@njit(cache=True)
 def _original_row_scales(lower, diag, upper, scale, factor):
     """Row equilibration of the assembled matrix; ``k + 1`` of a zero/non-finite row, else 0.
 
@@ -182,15 +193,11 @@ def solve_dense(lower, diag, upper, rhs, x, check=True):
     ----------
     .. [1] Anderson et al., *LAPACK Users' Guide*, 3rd ed., SIAM, 1999 (``dgesv``).
     """
-    if not _shapes_ok(lower, diag, upper, rhs, x):
-        return -1
-    n, m = rhs.shape
-    big_n = n * m
-    scale = np.empty(big_n)
-    factor = np.empty(big_n)
-    st = _original_row_scales(lower, diag, upper, scale, factor)
+    st, scale, factor = _prepare(lower, diag, upper, rhs, x)
     if st != 0:
         return st
+    n, m = rhs.shape
+    big_n = n * m
     # at[c, r] = A[r, c]: a C-ordered array of A^T is A in column-major (Fortran) order
     at = assemble_dense(lower, diag, upper).T.copy()
     b = np.empty(big_n)
@@ -261,15 +268,11 @@ def solve_banded(lower, diag, upper, rhs, x, check=True):
        storage).
     .. [2] Press et al., *Numerical Recipes*, 2nd ed., 1992, section 2.4.
     """
-    if not _shapes_ok(lower, diag, upper, rhs, x):
-        return -1
-    n, m = rhs.shape
-    big_n = n * m
-    scale = np.empty(big_n)
-    factor = np.empty(big_n)
-    st = _original_row_scales(lower, diag, upper, scale, factor)
+    st, scale, factor = _prepare(lower, diag, upper, rhs, x)
     if st != 0:
         return st
+    n, m = rhs.shape
+    big_n = n * m
     kl, ku = banded_bandwidths(lower, diag, upper)
     ldab = 2 * kl + ku + 1
     # Fortran AB(kl+ku+1+i-j, j) = A(i, j) (1-based); C-ordered abt[j, kl+ku+i-j] (0-based)

@@ -7,6 +7,7 @@ import functools
 import numpy as np
 
 from ..case import Case, TowedDynamicAnalysis
+from ..errors import InputError
 from ..results import make_dataset, var
 from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT
 from .solver import TowedBodyParameters, cable_parameters, simulate
@@ -28,8 +29,6 @@ def case_setup(case: Case):
     a: TowedDynamicAnalysis = case.analysis
     env = case.environment
     if len(case.line.segments) != 1 or case.line.attachments:
-        from ..errors import InputError
-
         raise InputError(
             f"towed_dynamic models a uniform cable, but the line has {len(case.line.segments)} segment(s) "
             f"and {len(case.line.attachments)} attachment(s). Suggested fix: give one line type and put a "

@@ -45,7 +45,7 @@ from .equations import (
 from .lapack import solve_banded, solve_dense
 from .linalg import block_thomas, block_tridiagonal_workspace
 
-__all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march"]
+__all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march", "node_currents"]
 
 B_HAS, B_MASS, B_WEIGHT, B_DRAG = range(4)
 """Entries of the body vector ``bpar``: 1 if a body is attached (else a free end), its mass plus
@@ -251,7 +251,7 @@ def velocity_global(h, out):
 
 
 @njit(cache=True)
-def _currents(pos, vel, dt, cur, vessel_velocity, out):
+def node_currents(pos, vel, dt, cur, vessel_velocity, out):
     """Current velocity at the nodes' elevations predicted ``dt`` ahead.
 
     ``cur = (depths, speeds, (cos heading, sin heading, follows))``; with ``follows`` = 1 the
@@ -287,13 +287,13 @@ def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale,
     un = np.zeros((n, 3))
     integrate_positions(h, vessel_pos[0], par, pos)
     velocity_global(h, vel)
-    _currents(pos, vel, 0.0, cur, vessel_vel[0], uo)
+    node_currents(pos, vel, 0.0, cur, vessel_vel[0], uo)
     total = 0
     saved = 0
     for i in range(nsteps):
         for j in range(n):
             c_terms(h[j], uo[j], par, co[j], dummy, False)
-        _currents(pos, vel, dt, cur, vessel_vel[i + 1], un)
+        node_currents(pos, vel, dt, cur, vessel_vel[i + 1], un)
         if dt_prev > 0.0:
             for j in range(n):
                 for r in range(NV):

@@ -49,7 +49,8 @@ from .equations import (
     frame,
     integrate_positions,
 )
-from .scheme import B_DRAG, B_HAS, B_MASS, B_WEIGHT, STATUS, march, newton_step, velocity_global, workspace
+from .scheme import (B_DRAG, B_HAS, B_MASS, B_WEIGHT, STATUS, node_currents, march, newton_step, velocity_global,
+                     workspace)
 
 __all__ = ["TowedBodyParameters", "TowedRun", "cable_parameters", "body_parameters", "steady_tow",
            "simulate"]
@@ -105,10 +106,8 @@ def cable_parameters(length, n_nodes, mass_per_length, weight_per_length, diamet
     w = v.finite("weight_per_length", weight_per_length, "N/m", "give the weight in water per metre")
     d = v.positive("diameter", diameter, "m", "give the outer diameter in metres")
     ea = float(axial_stiffness)
-    if not math.isinf(ea):
+    if ea != math.inf:
         ea = v.positive("axial_stiffness", ea, "N", "give EA in newtons (math.inf: inextensible)")
-    elif ea < 0:
-        v.positive("axial_stiffness", ea, "N", "give EA in newtons (math.inf: inextensible)")
     ei = float(bending_stiffness)
     if not (math.isfinite(ei) and ei > 0):
         raise InputError(
@@ -181,13 +180,11 @@ def _scales(par, n, vessel_speed, current_speed, top_tension):
     return np.array([t_ref] * 3 + [v_ref] * 3 + [1.0, 1.0] + [1.0 / length] * 2)
 
 
-def _currents_at(cur, z, vessel_velocity):
-    depths, speeds, hd = cur
-    heading = math.atan2(hd[1], hd[0])
-    if hd[2] > 0:
-        heading += math.atan2(vessel_velocity[1], vessel_velocity[0])
-    s = np.interp(-np.asarray(z), depths, speeds)
-    return np.stack([s * math.cos(heading), s * math.sin(heading), np.zeros_like(s)], axis=-1)
+def _currents_at(cur, pos, vessel_velocity):
+    """Current velocity (n, 3) at the positions ``pos (n, 3)``, as the time marching sees it."""
+    out = np.zeros_like(pos)
+    node_currents(pos, np.zeros_like(pos), 0.0, cur, vessel_velocity, out)
+    return out
 
 
 def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_density=1025.0,
@@ -237,7 +234,7 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
     vel = np.asarray(vessel_velocity, float).reshape(3)
     cur = _current_arrays(current, current_follows_vessel)
     bpar = body_parameters(body, water_density)
-    u_surface = _currents_at(cur, np.array([0.0]), vel)[0]
+    u_surface = _currents_at(cur, np.zeros((1, 3)), vel)[0]
     rel = vel - u_surface
     speed = math.hypot(rel[0], rel[1])
     if speed < 1e-3:
@@ -264,9 +261,9 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
     w = workspace(n)
     pos = np.zeros((n, 3))
     dummy = np.zeros((n, NV))
-    for outer in range(20):
-        integrate_positions(h, np.zeros(3), par, pos)
-        u = _currents_at(cur, pos[:, 2], vel)
+    integrate_positions(h, np.zeros(3), par, pos)
+    for _ in range(20):
+        u = _currents_at(cur, pos, vel)
         status, its, err = newton_step(h, h, dummy, u, u, vel, 1.0, par, bpar, True, scale, tol,
                                        max_iter, w)
         if status != 0:
@@ -274,11 +271,11 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
                 f"steady tow: {STATUS[status]} after {its} iterations (scaled correction {err:.3g}). "
                 "Suggested fix: check the cable and body inputs; a body much lighter than its lift has "
                 "no taut steady state.", time=0.0, iterations=its, residual=err)
-        if cur[0].size == 1:
+        if cur[0].size == 1:  # uniform current: nothing depends on the positions
             break
-        new = np.zeros((n, 3))
-        integrate_positions(h, np.zeros(3), par, new)
-        if np.max(np.abs(new - pos)) < 1e-9 * length:
+        previous = pos.copy()
+        integrate_positions(h, np.zeros(3), par, pos)
+        if np.max(np.abs(pos - previous)) < 1e-9 * length:
             break
     return h
 
