@@ -1,4 +1,4 @@
-"""The ``seacable`` command line: run, validate, plot, schema.
+"""The ``seacable`` command line: run, validate, plot, animate, schema.
 
 User errors (bad files, bad values, no solution, no convergence) print one
 clear message and exit with status 2; an interrupted run exits with 130.
@@ -92,6 +92,18 @@ def _cmd_plot(args) -> int:
     return 0
 
 
+def _cmd_animate(args) -> int:
+    from .plot import animate_laying
+    from .results import read_netcdf
+
+    path = Path(args.result)
+    ds = read_netcdf(path)
+    out = Path(args.output) if args.output else path.parent / f"{path.stem}_lay.gif"
+    written = animate_laying(ds, out, fps=args.fps, max_frames=args.max_frames)
+    print(f"wrote {written}")
+    return 0
+
+
 def _cmd_schema(args) -> int:
     from .io import case_schema
 
@@ -122,6 +134,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("result", help="result file (.nc) written by 'seacable run'")
     p.add_argument("-o", "--output", help="folder for the PNG files; default beside the result")
     p.set_defaults(func=_cmd_plot)
+
+    p = sub.add_parser("animate", help="animate a cable lay (laying_dynamic result) as GIF or MP4")
+    p.add_argument("result", help="result file (.nc) of a laying_dynamic run")
+    p.add_argument("-o", "--output", help="animation file (.gif, or .mp4 with ffmpeg); "
+                                          "default RESULT_lay.gif beside the result")
+    p.add_argument("--fps", type=int, default=10, help="frames per second (default 10)")
+    p.add_argument("--max-frames", type=int, default=200,
+                   help="largest number of frames; output times are subsampled evenly (default 200)")
+    p.set_defaults(func=_cmd_animate)
 
     p = sub.add_parser("schema", help="print the JSON schema of case files")
     p.set_defaults(func=_cmd_schema)

@@ -1,0 +1,241 @@
+"""Inputs of the ``laying_dynamic`` analysis: ship motion, payout control and bathymetry.
+
+x runs along the ship's track (the ship moves towards +x), z is up with 0 at the sea surface.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+from typing import Annotated, Literal, Union
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .._model import Model, quantity
+from ..errors import InputError
+
+__all__ = ["ShipMotion", "PayoutRate", "PayoutSlack", "PayoutBottomTension", "Payout", "Bathymetry",
+           "schedule_value"]
+
+
+def _check_schedule(times, values, name: str, unit: str) -> None:
+    """Both or neither; equal lengths; times strictly increasing from >= 0; values finite and >= 0."""
+    if times is None and values is None:
+        return
+    if times is None or values is None:
+        raise ValueError(f"needs both 'times' and '{name}' for a schedule, or neither. "
+                         "Suggested fix: give two lists of equal length.")
+    t, v = np.asarray(times, float), np.asarray(values, float)
+    if t.size != v.size or t.size < 1:
+        raise ValueError(f"times and {name} must have the same non-zero length, got {t.size} and {v.size}.")
+    bad = ~np.isfinite(v) | (v < 0)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError(f"{name}[{i}] must be a finite number >= 0 {unit}, got {v[i]:g} {unit}.")
+    if not np.all(np.isfinite(t)) or np.any(t < 0) or np.any(np.diff(t) <= 0):
+        raise ValueError(f"times must be finite, >= 0 s and strictly increasing, got {list(t)} s. "
+                         "Suggested fix: sort the table by time and drop repeated times.")
+
+
+def schedule_value(t: float, constant, times, values) -> float:
+    """A constant, or a table linear in time and held constant beyond its ends."""
+    if times is None:
+        return float(constant)
+    return float(np.interp(t, times, values))
+
+
+class ShipMotion(Model):
+    """The cable ship: its speed over ground, constant or scheduled, and repeater slow-downs.
+
+    Parameters
+    ----------
+    speed
+        Constant speed, when no schedule is given. [m/s]
+    times, speeds
+        Speed schedule, linear between the points and constant beyond. [s], [m/s]
+    start_x
+        Water-entry point at t = 0. [m]
+    repeater_speed
+        Speed while a repeater descends (from its water entry to its touchdown); ``None`` keeps the
+        scheduled speed. [m/s]
+    acceleration
+        Largest rate of change of the speed when slowing down for a repeater and recovering. [m/s^2]
+    """
+
+    speed: quantity("m/s", ge=0, fix="give the ship speed over ground, e.g. 2.0 m/s.") | None = Field(
+        None, description="Constant ship speed. [m/s]")
+    times: tuple[float, ...] | None = Field(None, description="Times of the speed schedule. [s]")
+    speeds: tuple[float, ...] | None = Field(None, description="Speeds of the schedule. [m/s]")
+    start_x: quantity("m") = Field(0.0, description="Water-entry x at t = 0. [m]")
+    repeater_speed: quantity("m/s", ge=0) | None = Field(
+        None, description="Ship speed while a repeater descends. [m/s]")
+    acceleration: quantity("m/s^2", gt=0, fix="a cable ship changes speed at about 0.01-0.1 m/s^2.") = Field(
+        0.02, description="Rate of the speed change for repeaters. [m/s^2]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        _check_schedule(self.times, self.speeds, "speeds", "m/s")
+        if (self.speed is None) == (self.times is None):
+            raise ValueError("give either 'speed' (m/s) or a schedule 'times' (s) and 'speeds' (m/s). "
+                             "Suggested fix: 'ship: {speed: 2.0}'.")
+        return self
+
+    def scheduled(self, t: float) -> float:
+        """Scheduled speed at time ``t``. [m/s]"""
+        return schedule_value(t, self.speed, self.times, self.speeds)
+
+
+class PayoutRate(Model):
+    """Payout at a given speed, constant or scheduled (speed of the cable engine)."""
+
+    type: Literal["rate"] = "rate"
+    speed: quantity("m/s", ge=0) | None = Field(None, description="Constant payout speed. [m/s]")
+    times: tuple[float, ...] | None = Field(None, description="Times of the payout schedule. [s]")
+    speeds: tuple[float, ...] | None = Field(None, description="Payout speeds of the schedule. [m/s]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        _check_schedule(self.times, self.speeds, "speeds", "m/s")
+        if (self.speed is None) == (self.times is None):
+            raise ValueError("give either 'speed' (m/s) or a schedule 'times' (s) and 'speeds' (m/s).")
+        return self
+
+
+class PayoutSlack(Model):
+    """Payout that keeps a target slack: payout speed = (1 + slack) x ship speed on a flat seabed.
+
+    With ``slope_compensation`` the payout follows the seabed as the paper's CPRATE does: the laid
+    length per metre run is ``(1 + slack) / cos(beta)`` for a seabed slope ``beta`` at the
+    touchdown, and the suspended length ``h / sin(alpha)`` changes with the depth ``h`` there.
+    """
+
+    type: Literal["slack"] = "slack"
+    slack: quantity("-", ge=-0.5, le=10.0, fix="slack is a ratio: 0.05 for 5 % slack.") = Field(
+        0.0, description="Target slack, laid length over seabed distance minus one. [-]")
+    slope_compensation: bool = Field(True, description="Adjust the payout to the seabed slope (CPRATE).")
+
+
+class PayoutBottomTension(Model):
+    """Payout controlled to hold a target tension at the touchdown point.
+
+    The payout speed is the slack-free feed-forward ``V_s / cos(beta) / (1 + T_0/EA)`` corrected by
+    ``gain (T_b - T_0) / (w h)`` times the ship speed, ``T_b`` being the bottom tension low-pass
+    filtered with ``time_constant``.
+    """
+
+    type: Literal["bottom_tension"] = "bottom_tension"
+    tension: quantity("N", ge=0, fix="give the touchdown tension in newtons.") = Field(
+        description="Target bottom tension. [N]")
+    gain: quantity("-", gt=0) = Field(1.0, description="Proportional gain on (T_b - T_0) / (w h). [-]")
+    time_constant: quantity("s", gt=0) = Field(10.0, description="Filter time of the bottom tension. [s]")
+
+
+Payout = Annotated[Union[PayoutRate, PayoutSlack, PayoutBottomTension], Field(discriminator="type")]
+
+
+class Bathymetry(Model):
+    """Water depth along the track: a table (inline or a CSV file with columns distance, depth).
+
+    Linear between the points, constant beyond the ends.
+    """
+
+    distance: tuple[float, ...] | None = Field(None, description="Distances along the track. [m]")
+    depth: tuple[float, ...] | None = Field(None, description="Water depths at those distances. [m]")
+    file: str | None = Field(None, description="CSV file with columns 'distance' and 'depth' (relative "
+                                               "to the case file).")
+
+    @model_validator(mode="after")
+    def _check(self):
+        inline = self.distance is not None or self.depth is not None
+        if inline == (self.file is not None):
+            raise ValueError("give either 'distance' and 'depth' lists (m) or a CSV 'file'.")
+        if inline:
+            _check_table(self.distance, self.depth, "bathymetry")
+        return self
+
+    def table(self) -> tuple[np.ndarray, np.ndarray]:
+        """(distance, depth) arrays, reading the file if there is one. [m]"""
+        if self.file is None:
+            return np.asarray(self.distance, float), np.asarray(self.depth, float)
+        return _read_table(self.file)
+
+
+def _check_table(distance, depth, where: str) -> None:
+    if distance is None or depth is None:
+        raise ValueError("needs both 'distance' and 'depth'.")
+    x, h = np.asarray(distance, float), np.asarray(depth, float)
+    if x.size != h.size or x.size < 2:
+        raise ValueError(f"{where}: distance and depth must have the same length >= 2, got {x.size} and "
+                         f"{h.size}.")
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(h))):
+        raise ValueError(f"{where}: distances and depths must be finite numbers [m].")
+    if np.any(np.diff(x) <= 0):
+        raise ValueError(f"{where}: distances must be strictly increasing, got {list(x)} m. "
+                         "Suggested fix: sort the table by distance.")
+    if np.any(h <= 0):
+        i = int(np.argmax(h <= 0))
+        raise ValueError(f"{where}: depth[{i}] must be > 0 m, got {h[i]:g} m. Suggested fix: give depths "
+                         "below the surface as positive numbers.")
+
+
+def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:
+    path = Path(file)
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as handle:
+            rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
+    except OSError as err:
+        raise InputError(f"bathymetry file '{path}' cannot be read ({err.strerror or err}). Suggested fix: "
+                         "check the path (relative to the case file's folder).") from None
+    header = [c.lower() for c in rows[0]] if rows else []
+    if "distance" not in header or "depth" not in header:
+        raise InputError(f"bathymetry file '{path}' needs a header row with columns 'distance' and 'depth', "
+                         f"got {', '.join(header) or 'an empty file'}.")
+    i, j = header.index("distance"), header.index("depth")
+    try:
+        values = np.array([[float(r[i]), float(r[j])] for r in rows[1:]], dtype=float).reshape(-1, 2)
+    except (ValueError, IndexError):
+        raise InputError(f"bathymetry file '{path}': every row needs numbers in the 'distance' and 'depth' "
+                         "columns (m).") from None
+    try:
+        _check_table(values[:, 0], values[:, 1], f"bathymetry file '{path}'")
+    except ValueError as err:
+        raise InputError(str(err)) from None
+    return values[:, 0], values[:, 1]
+
+
+class Seabed2D:
+    """Seabed elevation along the track: a plane (depth at x = 0 and slope) or a bathymetry table.
+
+    ``z(x)`` is the elevation (negative), ``slope(x)`` its derivative and ``arc(x)`` the distance
+    along the seabed from x = 0.
+    """
+
+    def __init__(self, distance: np.ndarray, depth: np.ndarray):
+        self.x = np.asarray(distance, float)
+        self.zb = -np.asarray(depth, float)
+        seg = np.hypot(np.diff(self.x), np.diff(self.zb))
+        self._arc = np.concatenate([[0.0], np.cumsum(seg)])
+
+    @classmethod
+    def plane(cls, depth: float, slope: float, x0: float, x1: float) -> "Seabed2D":
+        """A plane seabed, ``depth`` at x = 0 rising at ``slope`` [rad] towards +x, over [x0, x1]."""
+        xs = np.array([x0, x1], float)
+        return cls(xs, depth - xs * math.tan(slope))
+
+    def z(self, x):
+        return np.interp(x, self.x, self.zb)
+
+    def slope(self, x) -> float:
+        """dz/dx at ``x`` (of the table segment holding x; 0 beyond the ends)."""
+        if x <= self.x[0] or x >= self.x[-1]:
+            return 0.0
+        k = int(np.searchsorted(self.x, x, side="right")) - 1
+        return float((self.zb[k + 1] - self.zb[k]) / (self.x[k + 1] - self.x[k]))
+
+    def arc(self, x):
+        """Distance along the seabed from the table's first point (straight beyond the ends). [m]"""
+        x = np.asarray(x, float)
+        inside = np.interp(x, self.x, self._arc)
+        return inside + np.minimum(x - self.x[0], 0.0) + np.maximum(x - self.x[-1], 0.0)
