@@ -202,6 +202,7 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
     rhs = np.zeros((nseg, 3))
     x = np.zeros((nseg, 3))
     gamma, lu, piv, scale = np.empty((nseg, 3, 3)), np.empty((3, 3)), np.empty(3, dtype=np.int64), np.empty((3, 3))
+    shortest = L.min()
     residual = np.inf
     total = 0
     for _ in range(max_rounds):
@@ -215,23 +216,26 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
                 break
             if it == max_iter or block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale) != 0:
                 break
+            # damped update: no node moves more than a quarter of the shortest segment per iteration
+            move = 0.0
+            for k in range(nseg - 1):
+                move = max(move, abs(x[k, 1]) + abs(x[k, 2]))
+            scale_step = min(1.0, 0.25 * shortest / move) if move > 0.0 else 1.0
             for k in range(nseg):
-                T[k] += x[k, 0]
+                T[k] += scale_step * x[k, 0]
+                if active[k] and T[k] < 0.0:
+                    T[k] = 0.0
+                    active[k] = 0      # projected Newton: a segment in compression goes slack at once
                 if k + 1 < npt - 1:
-                    r[k + 1, 0] += x[k, 1]
-                    r[k + 1, 1] += x[k, 2]
+                    r[k + 1, 0] += scale_step * x[k, 1]
+                    r[k + 1, 1] += scale_step * x[k, 2]
         if not converged:
             return False, total + max_iter, residual
-        # complementarity: a taut segment in compression goes slack, a slack one stretched beyond its
-        # length is taut again
+        # complementarity: a slack segment stretched beyond its length is taut again
         changed = False
         for j in range(nseg):
             g = ell[j] - L[j] * (1.0 + T[j] * comp[j])
-            if active[j] and T[j] < 0.0:
-                T[j] = 0.0
-                active[j] = 0
-                changed = True
-            elif not active[j] and g > 10.0 * tol * L[j]:
+            if not active[j] and g > 10.0 * tol * L[j]:
                 active[j] = 1
                 changed = True
         if not changed:
@@ -307,8 +311,9 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
         rhs[k, 1] = -rx
         rhs[k, 2] = -rz
         # K = T_i P_i + T_k P_k (geometric stiffness at node i), P_j = (I - c c^T) / ell
-        pk = T[k] / ell[k]
-        pi_ = T[i] / ell[i]
+        # (tension only: a compressive iterate would make the matrix indefinite and Newton wander)
+        pk = max(T[k], 0.0) / ell[k]
+        pi_ = max(T[i], 0.0) / ell[i]
         kk11, kk12, kk22 = pk * (1.0 - c[k, 0] ** 2), -pk * c[k, 0] * c[k, 1], pk * (1.0 - c[k, 1] ** 2)
         ki11, ki12, ki22 = pi_ * (1.0 - c[i, 0] ** 2), -pi_ * c[i, 0] * c[i, 1], pi_ * (1.0 - c[i, 1] ** 2)
         for a in range(2):

@@ -44,7 +44,9 @@ __all__ = ["LayParameters", "Repeater", "LayRun", "simulate"]
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
 _HALVINGS = 6         # a failing step is retried with dt/2, dt/4, ...
 _ROUNDS = 20          # active-set updates (segments going slack or taut) per step
-_STRAIN_FLOOR = 1e-7  # strain of an 'inextensible' cable at the weight of its suspended length
+_STRAIN_FLOOR = 1e-5  # strain of an 'inextensible' cable at the weight of its suspended length
+_MAX_LIFTS = 50       # touchdown nodes picked up off the seabed in one step
+_MARGIN = 16          # free rows kept below the touchdown node for nodes picked up again
 
 
 @dataclass(frozen=True)
@@ -94,6 +96,7 @@ class LayRun:
     steps: int = 0
     iterations: int = 0
     halvings: int = 0
+    lifts: int = 0
     wall_time: float = 0.0
     interrupted: bool = False
     stop_reason: str = ""
@@ -117,28 +120,31 @@ class _Cable:
         self.lo = 0
         self.hi = 0
 
-    def _arrays(self):
-        return (self.pos, self.vel, self.s, self.point, self.rep, self.L, self.T, self.active, self.seg_type,
-                self.new_pos, self.new_vel)
+    _NAMES = ("pos", "vel", "s", "point", "rep", "L", "T", "active", "seg_type", "new_pos", "new_vel")
 
-    def make_room(self) -> None:
-        """Move the suspended rows to the start (or grow) so that a row can be appended."""
-        if self.hi + 2 < self.pos.shape[0]:
-            return
+    def _move(self, start: int) -> None:
+        """Move rows ``lo .. hi`` to begin at ``start``, doubling the capacity if they do not fit."""
         n = self.hi - self.lo + 1
         cap = self.pos.shape[0]
-        grow = n + 2 >= cap // 2
-        for name in ("pos", "vel", "s", "point", "rep", "L", "T", "active", "seg_type", "new_pos", "new_vel"):
+        new_cap = cap if start + n + 2 * _MARGIN < cap else 2 * (start + n + 2 * _MARGIN)
+        for name in self._NAMES:
             a = getattr(self, name)
-            if grow:
-                b = np.zeros((2 * cap,) + a.shape[1:], dtype=a.dtype)
-                if name == "rep":
-                    b[:] = -1
-                b[:n] = a[self.lo:self.hi + 1]
-                setattr(self, name, b)
-            else:
-                a[:n] = a[self.lo:self.hi + 1].copy()
-        self.lo, self.hi = 0, n - 1
+            b = np.zeros((new_cap,) + a.shape[1:], dtype=a.dtype)
+            if name == "rep":
+                b[:] = -1
+            b[start:start + n] = a[self.lo:self.hi + 1]
+            setattr(self, name, b)
+        self.lo, self.hi = start, start + n - 1
+
+    def make_room(self) -> None:
+        """Room for a row above ``hi`` (a birth)."""
+        if self.hi + 2 >= self.pos.shape[0]:
+            self._move(_MARGIN)
+
+    def make_room_below(self) -> None:
+        """Room for a row below ``lo`` (a node picked up off the seabed)."""
+        if self.lo < 1:
+            self._move(_MARGIN)
 
 
 def _initial_angle(par: LayParameters, speed: float, depth: float) -> float:
@@ -192,7 +198,9 @@ class _Control:
     def __init__(self, ship: ShipMotion, payout, par: LayParameters, seabed: Seabed2D):
         self.ship, self.payout, self.par, self.seabed = ship, payout, par, seabed
         self.speed = ship.scheduled(0.0)
-        self.bottom_filtered = 0.0
+        # the filter starts at the target: the payout starts at the feed-forward and follows the
+        # measured bottom tension over the filter time, without a jerk
+        self.bottom_filtered = payout.tension if isinstance(payout, PayoutBottomTension) else 0.0
         p = par.props[par.type_at(0.0)]
         self.weight, self.compliance = p[P_WEIGHT], p[P_COMPLIANCE]
 
@@ -226,7 +234,7 @@ class _Control:
         self.bottom_filtered += min(dt / p.time_constant, 1.0) * (bottom_tension - self.bottom_filtered)
         feed = td_speed * (arc / (1.0 + p.tension * self.compliance) - slope / sin_alpha)
         error = (self.bottom_filtered - p.tension) / (self.weight * max(h_td, 1e-9))
-        return max(feed * (1.0 + p.gain * error), 0.0)
+        return feed * min(max(1.0 + p.gain * error, 0.0), 2.0)
 
 
 def _end_tensions(c: _Cable, props) -> tuple[float, float, float]:
@@ -243,6 +251,238 @@ def _end_tensions(c: _Cable, props) -> tuple[float, float, float]:
         bottom = max(c.T[lo] - 0.5 * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / ln_bot, 0.0)
     angle = math.atan2(d_top[1], d_top[0])
     return top, bottom, angle
+
+
+class _Lay:
+    """State of a laying run and the events between steps."""
+
+    def __init__(self, par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D,
+                 initial_angle: float | None):
+        self.par, self.seabed = par, seabed
+        seg = par.segment_length
+        props = par.props
+        self.ctl = ctl = _Control(ship, payout, par, seabed)
+        self.x_ship = ship.start_x
+        depth0 = -float(seabed.z(self.x_ship))
+        alpha = _initial_angle(par, ctl.speed, depth0) if initial_angle is None else float(initial_angle)
+        ell = _touchdown_distance(seabed, self.x_ship, alpha, 0.25 * seg)
+        if ell > par.cable_length:
+            raise InputError(f"the initial suspended cable needs {ell:.6g} m but the line is "
+                             f"{par.cable_length:.6g} m long. Suggested fix: make the line (the cable on board) "
+                             "longer.")
+        self.reps = reps = sorted(par.repeaters, key=lambda r: r.s)
+        self.rep_state = np.zeros(len(reps), dtype=np.int64)      # 0 on board, 1 in the water, 2 landed
+        self.rep_landed = np.full((len(reps), 2), np.nan)
+        # cable already on the seabed behind the touchdown (as long as the suspended part, whole segments):
+        # the run starts in the middle of a lay, and tension can pick laid cable up again
+        cos_a, sin_a = math.cos(alpha), math.sin(alpha)
+        x_td = self.x_ship - ell * cos_a
+        n_laid = max(int(math.ceil(ell / seg)), 2)
+        laid_x = [x_td]
+        for _ in range(n_laid):
+            slope = seabed.slope(laid_x[-1] - 0.5 * seg)
+            laid_x.append(laid_x[-1] - seg / math.sqrt(1.0 + slope * slope))
+        laid_x = laid_x[::-1]
+        pre = n_laid * seg
+        if pre + ell > par.cable_length:
+            raise InputError(f"the run starts with {pre:.6g} m of cable on the seabed and {ell:.6g} m suspended, "
+                             f"but the line is {par.cable_length:.6g} m long. Suggested fix: make the line (the "
+                             "cable on board) longer.")
+        self.laid = {"x": laid_x, "z": [float(seabed.z(x)) for x in laid_x], "s": [k * seg for k in range(n_laid + 1)],
+                     "time": [0.0] * (n_laid + 1)}
+        for r, rep in enumerate(reps):
+            if rep.s <= pre:
+                self.rep_state[r] = 2
+                k = int(np.argmin(np.abs(np.asarray(self.laid["s"]) - rep.s)))
+                self.rep_landed[r] = (self.laid["x"][k], self.laid["z"][k])
+        s_nodes = [pre + v for v in _node_coordinates(ell, seg, [r.s - pre for r in reps])]
+        self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (x_td, depth0, cos_a / max(sin_a, 1e-9)), 0.0, 0.0)
+        self.c = c = _Cable(max(64, 4 * len(s_nodes)))
+        n0 = len(s_nodes)
+        c.lo, c.hi = _MARGIN, _MARGIN + n0 - 1
+        for k, s in enumerate(s_nodes):
+            row = c.lo + k
+            back = pre + ell - s
+            c.pos[row] = (self.x_ship - back * cos_a, -back * sin_a)
+            c.vel[row] = (ctl.speed - vc * cos_a, -vc * sin_a)
+            c.s[row] = s
+            if 0 < k < n0 - 1:
+                self.attach(row)
+            if k < n0 - 1:
+                c.L[row] = s_nodes[k + 1] - s
+                c.seg_type[row] = par.type_at(0.5 * (s + s_nodes[k + 1]))
+                # the straight steady lay's tension (weight along the cable) as the first guess
+                c.T[row] = props[c.seg_type[row], P_WEIGHT] * sin_a * 0.5 * (s + s_nodes[k + 1] - 2 * pre)
+        c.pos[c.lo] = (laid_x[-1], self.laid["z"][-1])
+        c.vel[c.lo] = 0.0
+        c.vel[c.hi] = (ctl.speed, 0.0)
+        c.active[c.lo], c.T[c.lo] = 0, 0.0    # zero tension at the touchdown: the straight lay's bottom is slack
+        self.s_paid = pre + ell
+        self.s_start = pre                 # material coordinate of the touchdown at t = 0 [m]
+        self.s_paid0 = self.s_paid         # ... and of the water entry
+        # an inextensible cable gets the compliance of a 1e-5 strain under the weight of the initial suspended
+        # length: immaterial for the shape, it keeps the matrix of a straight taut cable regular
+        self.floor = _STRAIN_FLOOR / (float(np.max(props[:, P_WEIGHT])) * max(ell, seg))
+
+    def attach(self, row: int) -> None:
+        """Put the repeater whose coordinate is ``s[row]`` (if any) on node ``row``."""
+        c = self.c
+        c.point[row] = 0.0
+        c.rep[row] = -1
+        for r, rep in enumerate(self.reps):
+            if abs(rep.s - c.s[row]) < 1e-9:
+                c.point[row] = (rep.mass, rep.added_mass, rep.weight, rep.drag_area)
+                c.rep[row] = r
+                self.rep_state[r] = 1
+
+    def step(self, t: float, dt: float, geometry, bottom: float, in_water: bool, vc_new, kernel_args):
+        """One implicit step; returns ``(ok, iterations, residual, vs_new, x_new)`` (state not committed)."""
+        c, ctl = self.c, self.ctl
+        vs_new = ctl.ship_speed(t + dt, dt, in_water)
+        x_new = self.x_ship + 0.5 * (ctl.speed + vs_new) * dt
+        lo, hi = c.lo, c.hi
+        c.L[hi - 1] = self.s_paid + vc_new * dt - c.s[hi - 1]
+        props, cur_d, cur_s, rho, tol, max_iter = kernel_args
+        ok, it, res = implicit_step(
+            c.pos[lo:hi + 1], c.vel[lo:hi + 1], np.array([x_new, 0.0]), c.L[lo:hi], c.seg_type[lo:hi], props,
+            c.point[lo:hi + 1], cur_d, cur_s, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, tol, max_iter,
+            _ROUNDS, c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
+        return ok, it, res, vs_new, x_new
+
+    def lifts_off(self) -> bool:
+        """Whether the bottom segment pulls the touchdown node up harder than the cable weighs on it.
+
+        The node carries half of the bottom segment and half of the laid segment behind it; the
+        laid cable takes the horizontal pull.
+        """
+        c = self.c
+        lo = c.lo
+        if len(self.laid["s"]) < 2 or not c.active[lo] or c.hi - lo < 2:
+            return False
+        d = c.new_pos[lo + 1] - c.new_pos[lo]
+        up = c.T[lo] * d[1] / math.hypot(*d)
+        w = self.par.props[c.seg_type[lo], P_WEIGHT]
+        behind = self.laid["s"][-1] - self.laid["s"][-2]
+        return up > 0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]
+
+    def lift(self) -> None:
+        """Pick the touchdown node up off the seabed: the node laid before it becomes the touchdown."""
+        c, laid = self.c, self.laid
+        c.make_room_below()
+        lo = c.lo
+        for key in laid:
+            laid[key].pop()
+        new = lo - 1
+        c.pos[new] = (laid["x"][-1], laid["z"][-1])
+        c.new_pos[new] = c.pos[new]
+        c.vel[new] = 0.0
+        c.s[new] = laid["s"][-1]
+        self.attach(new)
+        if c.rep[lo] >= 0:
+            self.rep_state[c.rep[lo]] = 1
+        c.L[new] = c.s[lo] - c.s[new]
+        c.T[new] = c.T[lo]
+        c.active[new] = 1
+        c.seg_type[new] = self.par.type_at(0.5 * (c.s[new] + c.s[lo]))
+        c.lo = new
+
+    def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
+        c = self.c
+        lo, hi = c.lo, c.hi
+        c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
+        c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
+        c.vel[hi] = (vs_new, 0.0)
+        self.x_ship, self.ctl.speed, self.vc = x_new, vs_new, vc_new
+        self.s_paid += vc_new * dt
+        c.s[hi] = self.s_paid
+
+    def births(self) -> None:
+        """Nodes born on the top segment, one segment length apart (repeaters at their own s)."""
+        c, seg = self.c, self.par.segment_length
+        while True:
+            s_last = c.s[c.hi - 1]
+            nxt = s_last + seg
+            pending = [r.s for r, st in zip(self.reps, self.rep_state) if st == 0 and r.s > s_last + 1e-9]
+            if pending and pending[0] - nxt < 0.5 * seg:
+                nxt = pending[0]
+            if self.s_paid - nxt < 0.5 * seg or nxt > self.par.cable_length:
+                return
+            c.make_room()
+            hi = c.hi
+            a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
+            va = c.vel[hi - 1].copy()
+            chord = b - a
+            v_exit = np.array([self.ctl.speed, 0.0]) - self.vc * chord / math.hypot(*chord)
+            f = (nxt - s_last) / (self.s_paid - s_last)
+            for arr in (c.pos, c.vel, c.s, c.point, c.rep):
+                arr[hi + 1] = arr[hi]
+            c.pos[hi] = a + f * chord
+            c.vel[hi] = va + f * (v_exit - va)
+            c.s[hi] = nxt
+            self.attach(hi)
+            c.L[hi - 1] = nxt - s_last
+            c.L[hi] = self.s_paid - nxt
+            c.T[hi] = c.T[hi - 1]
+            c.active[hi - 1] = c.active[hi] = 1
+            c.seg_type[hi - 1] = self.par.type_at(0.5 * (s_last + nxt))
+            c.seg_type[hi] = self.par.type_at(min(nxt + 0.5 * seg, self.par.cable_length))
+            c.hi = hi + 1
+
+    def touchdowns(self, t: float) -> None:
+        """Land the lowest free nodes that reached the seabed; keep the others above it."""
+        c, seabed = self.c, self.seabed
+        while c.hi - c.lo > 2:
+            k = c.lo + 1
+            zb = float(seabed.z(c.pos[k, 0]))
+            if c.pos[k, 1] > zb + 1e-9:
+                break
+            c.pos[k, 1] = zb
+            c.vel[k] = 0.0
+            if not c.active[c.lo]:
+                # the cable arrived slack: its new lowest segment starts slack too (a straight, taut
+                # chain between fixed ends has no well-defined tension)
+                c.active[k], c.T[k] = 0, 0.0
+            c.lo = k
+            for key, val in (("x", c.pos[k, 0]), ("z", zb), ("s", c.s[k]), ("time", t)):
+                self.laid[key].append(float(val))
+            if c.rep[k] >= 0:
+                self.rep_state[c.rep[k]] = 2
+                self.rep_landed[c.rep[k]] = c.pos[k]
+        for k in range(c.lo + 2, c.hi):      # a seabed rising under the cable holds it up
+            zb = float(seabed.z(c.pos[k, 0]))
+            if c.pos[k, 1] < zb:
+                c.pos[k, 1] = zb
+                c.vel[k, 1] = max(c.vel[k, 1], 0.0)
+
+    def geometry(self):
+        """Touchdown x, depth there and cot of the chord angle, for the payout control."""
+        c = self.c
+        chord = c.pos[c.hi] - c.pos[c.lo]
+        return c.pos[c.lo, 0], -c.pos[c.lo, 1], chord[0] / max(chord[1], 1e-9)
+
+    def repeater_positions(self) -> np.ndarray:
+        c = self.c
+        xz = np.full((len(self.reps), 2), np.nan)
+        for r in range(len(self.reps)):
+            if self.rep_state[r] == 2:
+                xz[r] = self.rep_landed[r]
+        for k in range(c.lo + 1, c.hi):
+            if c.rep[k] >= 0:
+                xz[c.rep[k]] = c.pos[k]
+        return xz
+
+    def slack(self, t: float, window: float) -> float:
+        """Laid length over seabed distance minus one, over the nodes landed in the last ``window`` s."""
+        lx, ls, lt = self.laid["x"], self.laid["s"], self.laid["time"]
+        k0 = int(np.searchsorted(lt, max(t - window, 0.0), side="right"))   # landed during the run
+        if len(lt) - k0 < 3:
+            return np.nan
+        run = float(self.seabed.arc(lx[-1]) - self.seabed.arc(lx[k0]))
+        return (ls[-1] - ls[k0]) / run - 1.0 if run > 0 else np.nan
+
+
+_SERIES = ("ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "bottom_tension", "entry_angle",
+           "touchdown_x", "touchdown_z", "slack", "suspended_length", "laid_length")
 
 
 def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, duration: float, *,
@@ -285,205 +525,76 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
         When a step fails after ``6`` halvings, with the time and the residual.
     """
     wall0 = _time.perf_counter()
-    seg = par.segment_length
-    props = par.props
-    rho = par.water_density
-    cur_d, cur_s = par.current_depths, par.current_speeds
-    ctl = _Control(ship, payout, par, seabed)
-    x_ship = ship.start_x
-    depth0 = -float(seabed.z(x_ship))
-    alpha = _initial_angle(par, ctl.speed, depth0) if initial_angle is None else float(initial_angle)
-    ell = _touchdown_distance(seabed, x_ship, alpha, 0.25 * seg)
-    if ell > par.cable_length:
-        raise InputError(f"the initial suspended cable needs {ell:.6g} m but the line is {par.cable_length:.6g} m "
-                         "long. Suggested fix: make the line (the cable on board) longer.")
-    reps = sorted(par.repeaters, key=lambda r: r.s)
-    s_nodes = _node_coordinates(ell, seg, [r.s for r in reps])
-    cos_a, sin_a = math.cos(alpha), math.sin(alpha)
-    geometry = (x_ship - ell * cos_a, depth0, cos_a / max(sin_a, 1e-9))
-    vc = ctl.payout_speed(0.0, ctl.speed, geometry, 0.0, 0.0)
-
-    c = _Cable(max(64, 4 * len(s_nodes)))
-    n0 = len(s_nodes)
-    c.lo, c.hi = 0, n0 - 1
-    for k, s in enumerate(s_nodes):
-        back = ell - s
-        c.pos[k] = (x_ship - back * cos_a, -back * sin_a)
-        c.vel[k] = (ctl.speed - vc * cos_a, -vc * sin_a)
-        c.s[k] = s
-    c.pos[0, 1] = float(seabed.z(c.pos[0, 0]))
-    c.vel[0] = 0.0
-    c.vel[-1] = 0.0
-    rep_state = np.zeros(len(reps), dtype=np.int64)      # 0 on board, 1 in the water, 2 landed
-    rep_landed = np.full((len(reps), 2), np.nan)
-
-    def attach(k: int, s: float) -> None:
-        for r, rep in enumerate(reps):
-            if abs(rep.s - s) < 1e-9:
-                c.point[k] = (rep.mass, rep.added_mass, rep.weight, rep.drag_area)
-                c.rep[k] = r
-                rep_state[r] = 1
-
-    for k in range(1, n0 - 1):
-        attach(k, c.s[k])
-    for k in range(n0 - 1):
-        c.L[k] = c.s[k + 1] - c.s[k]
-        c.seg_type[k] = par.type_at(0.5 * (c.s[k] + c.s[k + 1]))
-        # tension of the straight steady lay (weight along the cable, no tangential drag) as the guess
-        c.T[k] = props[c.seg_type[k], P_WEIGHT] * sin_a * 0.5 * (c.s[k] + c.s[k + 1])
-    c.active[0], c.T[0] = 0, 0.0      # zero tension at the touchdown: the straight lay's bottom is slack
-    s_paid = ell
-    # an inextensible cable is given the compliance of a 1e-7 strain under the weight of the initial
-    # suspended length: immaterial for the shape, it keeps a straight taut cable's matrix regular
-    floor = _STRAIN_FLOOR / (float(np.max(props[:, P_WEIGHT])) * max(ell, seg))
-    laid = {"x": [float(c.pos[0, 0])], "z": [float(c.pos[0, 1])], "s": [0.0], "time": [0.0]}
-
-    out_t, series, snaps = [], {k: [] for k in (
-        "ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "bottom_tension", "entry_angle",
-        "touchdown_x", "touchdown_z", "slack", "suspended_length", "laid_length")}, []
-    rep_out = []
+    lay = _Lay(par, ship, payout, seabed, initial_angle)
+    c, ctl, props = lay.c, lay.ctl, par.props
+    kernel_args = (props, par.current_depths, par.current_speeds, par.water_density, tol, max_iter)
+    out_t, series, snaps, rep_out = [], {k: [] for k in _SERIES}, [], []
 
     def record(t: float) -> None:
         top, bottom, angle = _end_tensions(c, props)
         out_t.append(t)
-        lx, ls, lt = laid["x"], laid["s"], laid["time"]
-        k0 = int(np.searchsorted(lt, t - slack_window, side="left"))
-        slack = np.nan
-        if len(lt) - k0 >= 3:
-            run = float(seabed.arc(lx[-1]) - seabed.arc(lx[k0]))
-            if run > 0:
-                slack = (ls[-1] - ls[k0]) / run - 1.0
-        values = dict(ship_x=x_ship, ship_speed=ctl.speed, payout_speed=vc, paid_out=s_paid, top_tension=top,
-                      bottom_tension=bottom, entry_angle=math.degrees(angle), touchdown_x=c.pos[c.lo, 0],
-                      touchdown_z=c.pos[c.lo, 1], slack=slack, suspended_length=s_paid - c.s[c.lo],
-                      laid_length=c.s[c.lo])
-        for k, val in values.items():
+        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), c.pos[c.lo, 0],
+                  c.pos[c.lo, 1], lay.slack(t, slack_window), lay.s_paid - c.s[c.lo], c.s[c.lo] - lay.s_start)
+        for k, val in zip(_SERIES, values):
             series[k].append(float(val))
         snaps.append((c.pos[c.lo:c.hi + 1].copy(), (c.T[c.lo:c.hi] * c.active[c.lo:c.hi]).copy()))
-        xz = np.full((len(reps), 2), np.nan)
-        for r in range(len(reps)):
-            if rep_state[r] == 2:
-                xz[r] = rep_landed[r]
-        for k in range(c.lo + 1, c.hi):
-            if c.rep[k] >= 0:
-                xz[c.rep[k]] = c.pos[k]
-        rep_out.append(xz)
+        rep_out.append(lay.repeater_positions())
 
     t = 0.0
     record(t)
     n_out = max(int(round(duration / output_interval)), 1)
     next_out = 1
-    steps = iterations = halvings = 0
+    steps = iterations = halvings = lifts = 0
     interrupted, stop_reason = False, ""
     try:
         while next_out <= n_out:
             t_out = min(next_out * output_interval, duration)
-            top, bottom, angle = _end_tensions(c, props)
-            in_water = bool(np.any(rep_state == 1))
-            dt = min(seg / (steps_per_segment * max(ctl.speed, vc, _MIN_SPEED)), max_time_step, t_out - t)
+            _, bottom, _ = _end_tensions(c, props)
+            in_water = bool(np.any(lay.rep_state == 1))
+            dt = min(par.segment_length / (steps_per_segment * max(ctl.speed, lay.vc, _MIN_SPEED)), max_time_step,
+                     t_out - t)
             if t_out - t - dt < 1e-3 * dt:
                 dt = t_out - t
-            chord = c.pos[c.hi] - c.pos[c.lo]
-            geometry = (c.pos[c.lo, 0], -c.pos[c.lo, 1], chord[0] / max(chord[1], 1e-9))
-            for attempt in range(_HALVINGS + 1):
-                vs_new = ctl.ship_speed(t + dt, dt, in_water)
-                x_new = x_ship + 0.5 * (ctl.speed + vs_new) * dt
-                vc_new = ctl.payout_speed(t + dt, vs_new, geometry, bottom, dt) if attempt == 0 else vc_new
+            vc_new = ctl.payout_speed(t + dt, ctl.ship_speed(t + dt, dt, in_water), lay.geometry(), bottom, dt)
+            attempt, lifted = 0, 0
+            while True:
                 lo, hi = c.lo, c.hi
-                L_top = c.L[hi - 1]
-                c.L[hi - 1] = s_paid + vc_new * dt - c.s[hi - 1]
-                T_save, act_save = c.T[lo:hi].copy(), c.active[lo:hi].copy()
-                ok, it, res = implicit_step(
-                    c.pos[lo:hi + 1], c.vel[lo:hi + 1], np.array([x_new, 0.0]), c.L[lo:hi], c.seg_type[lo:hi],
-                    props, c.point[lo:hi + 1], cur_d, cur_s, rho, dt, c.T[lo:hi], c.active[lo:hi], floor, tol,
-                    max_iter, _ROUNDS, c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
+                saved = (c.L[hi - 1], c.T[lo:hi].copy(), c.active[lo:hi].copy())
+                ok, it, res, vs_new, x_new = lay.step(t, dt, lay.geometry(), bottom, in_water, vc_new, kernel_args)
                 iterations += it
-                if ok:
+                restore = not ok or (lifted < _MAX_LIFTS and lay.lifts_off())
+                if restore:
+                    c.L[hi - 1] = saved[0]
+                    c.T[lo:hi], c.active[lo:hi] = saved[1], saved[2]
+                if ok and not restore:
                     break
-                c.L[hi - 1] = L_top
-                c.T[lo:hi], c.active[lo:hi] = T_save, act_save
+                if ok:                       # pulled off the seabed: redo the step with a longer span
+                    lay.lift()
+                    lifted += 1
+                    lifts += 1
+                    continue
                 if attempt == _HALVINGS:
                     raise ConvergenceError(
-                        f"the laying step from t = {t:.6g} s did not converge: constraint residual {res:.3g} "
-                        f"(relative) after {max_iter} iterations with dt = {dt:.3g} s (halved {_HALVINGS} "
-                        "times). Suggested fix: a smaller 'steps_per_segment' dt is not the cause; check for a "
-                        "cable that floats or is pulled taut between the ship and the seabed.",
+                        f"the laying step from t = {t:.6g} s did not converge: residual {res:.3g} (relative) "
+                        f"after {max_iter} Newton iterations with dt = {dt:.3g} s (halved {_HALVINGS} times). "
+                        "Suggested fix: check that the cable sinks (weight in water > 0) and that the payout "
+                        "is not far below the ship speed of an inextensible cable.",
                         time=t, iterations=max_iter, residual=res)
                 dt *= 0.5
+                attempt += 1
                 halvings += 1
-            lo, hi = c.lo, c.hi
-            c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
-            c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
-            c.vel[hi] = (vs_new, 0.0)
+            lay.commit(dt, vs_new, x_new, vc_new)
             t += dt
-            x_ship, ctl.speed, vc = x_new, vs_new, vc_new
-            s_paid += vc * dt
-            c.s[hi] = s_paid
             steps += 1
-            # births at the surface
-            while True:
-                s_last = c.s[c.hi - 1]
-                nxt = s_last + seg
-                pending = [r.s for r, st in zip(reps, rep_state) if st == 0 and r.s > s_last + 1e-9]
-                if pending and pending[0] - nxt < 0.5 * seg:
-                    nxt = pending[0]
-                if s_paid - nxt < 0.5 * seg:
-                    break
-                if nxt > par.cable_length:
-                    break
-                c.make_room()
-                hi = c.hi
-                a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
-                va = c.vel[hi - 1].copy()
-                chord = b - a
-                unit = chord / math.hypot(*chord)
-                v_exit = np.array([ctl.speed, 0.0]) - vc * unit
-                f = (nxt - s_last) / (s_paid - s_last)
-                for arr in (c.pos, c.vel, c.s, c.point, c.rep):
-                    arr[hi + 1] = arr[hi]
-                c.point[hi] = 0.0
-                c.rep[hi] = -1
-                c.pos[hi] = a + f * chord
-                c.vel[hi] = va + f * (v_exit - va)
-                c.s[hi] = nxt
-                attach(hi, nxt)
-                c.L[hi - 1] = nxt - s_last
-                c.L[hi] = s_paid - nxt
-                c.T[hi] = c.T[hi - 1]
-                c.active[hi - 1] = c.active[hi] = 1
-                c.seg_type[hi - 1] = par.type_at(0.5 * (s_last + nxt))
-                c.seg_type[hi] = par.type_at(min(nxt + 0.5 * seg, par.cable_length))
-                c.hi = hi + 1
-            # touchdown
-            while c.hi - c.lo > 2:
-                k = c.lo + 1
-                zb = float(seabed.z(c.pos[k, 0]))
-                if c.pos[k, 1] > zb + 1e-9:
-                    break
-                c.pos[k, 1] = zb
-                c.vel[k] = 0.0
-                if not c.active[c.lo]:
-                    # the cable arrived slack: its new lowest segment starts slack too (a straight,
-                    # taut chain between fixed ends has no well-defined tension)
-                    c.active[k], c.T[k] = 0, 0.0
-                c.lo = k
-                for key, val in (("x", c.pos[k, 0]), ("z", zb), ("s", c.s[k]), ("time", t)):
-                    laid[key].append(float(val))
-                if c.rep[k] >= 0:
-                    rep_state[c.rep[k]] = 2
-                    rep_landed[c.rep[k]] = c.pos[k]
-            for k in range(c.lo + 2, c.hi):      # other nodes below a rising seabed stay on it
-                zb = float(seabed.z(c.pos[k, 0]))
-                if c.pos[k, 1] < zb:
-                    c.pos[k, 1] = zb
-                    c.vel[k, 1] = max(c.vel[k, 1], 0.0)
+            lay.births()
+            lay.touchdowns(t)
             if t >= t_out - 1e-9 * max(1.0, t_out):
                 record(t)
                 next_out += 1
                 if progress is not None:
                     progress(t, duration)
-            if s_paid >= par.cable_length:
-                stop_reason = (f"all {par.cable_length:g} m of cable paid out at t = {t:.6g} s")
+            if lay.s_paid >= par.cable_length:
+                stop_reason = f"all {par.cable_length:g} m of cable paid out at t = {t:.6g} s"
                 warnings.warn(f"laying stopped: {stop_reason}. Suggested fix: make the line longer.",
                               SeacableWarning, stacklevel=2)
                 break
@@ -498,9 +609,9 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
         z[k, :len(p)] = p[:, 1]
         ten[k, :len(tension)] = tension
     return LayRun(time=np.array(out_t), series={k: np.array(v) for k, v in series.items()}, x=x, z=z,
-                  tension=ten, laid={k: np.array(v) for k, v in laid.items()},
-                  repeater_xz=np.array(rep_out).reshape(len(out_t), len(reps), 2), steps=steps,
-                  iterations=iterations, halvings=halvings, wall_time=_time.perf_counter() - wall0,
+                  tension=ten, laid={k: np.array(v) for k, v in lay.laid.items()},
+                  repeater_xz=np.array(rep_out).reshape(len(out_t), len(lay.reps), 2), steps=steps,
+                  iterations=iterations, halvings=halvings, lifts=lifts, wall_time=_time.perf_counter() - wall0,
                   interrupted=interrupted, stop_reason=stop_reason)
 
 
