@@ -10,6 +10,7 @@ from . import modal, statics
 from ._version import __version__
 from .case import (
     Case,
+    LayingDynamicAnalysis,
     LayingTheoryAnalysis,
     ModalAnalysis,
     PushoverAnalysis,
@@ -29,6 +30,7 @@ from .errors import (
     SeacableWarning,
 )
 from .io import load_case, parse_case
+from .laying.inputs import Bathymetry, PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import run
@@ -51,6 +53,12 @@ __all__ = [
     "TowedDynamicAnalysis",
     "TowedBody",
     "LayingTheoryAnalysis",
+    "LayingDynamicAnalysis",
+    "ShipMotion",
+    "PayoutRate",
+    "PayoutSlack",
+    "PayoutBottomTension",
+    "Bathymetry",
     "VerticalModesAnalysis",
     # running
     "load_case",

@@ -27,6 +27,7 @@ from .environment import Environment
 from .errors import InputError
 from .line import Line, LineType
 from .statics.towed import TangentialDragForm
+from .laying.inputs import Bathymetry, Payout, PayoutBottomTension, PayoutSlack, ShipMotion
 from .towed.vessel import VesselPath
 
 __all__ = [
@@ -36,6 +37,7 @@ __all__ = [
     "TowedSteadyAnalysis",
     "TowedBody",
     "LayingTheoryAnalysis",
+    "LayingDynamicAnalysis",
     "VerticalModesAnalysis",
     "Analysis",
     "Case",
@@ -174,6 +176,48 @@ class LayingTheoryAnalysis(Model):
         return self
 
 
+class LayingDynamicAnalysis(Model):
+    """Time-domain laying from a moving ship: paper 001's 2-D lumped-mass model with payout.
+
+    x runs along the ship's track, z up from the sea surface. The line is the cable on board, end A
+    first: the run starts with cable on the seabed behind the touchdown (as long as the suspended
+    part) and ``line.attachments`` are the repeaters (point masses) at their arc lengths.
+    """
+
+    type: Literal["laying_dynamic"] = "laying_dynamic"
+    ship: ShipMotion = Field(description="Ship speed (constant or a schedule) and repeater slow-downs.")
+    payout: Payout = Field(default_factory=PayoutSlack,
+                           description="Payout control: 'rate', 'slack' or 'bottom_tension'.")
+    bathymetry: Bathymetry | None = Field(
+        None, description="Depth along the track; default environment.depth and seabed.slope.")
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    segment_length: quantity("m", gt=0, fix="use about 1/50 of the water depth or less.") = Field(
+        1.0, description="Length of the cable between nodes. [m]")
+    steps_per_segment: quantity("-", ge=1.0, le=1000.0) = Field(
+        4.0, description="Time steps per segment length paid out or run: dt = l / (n max(V_s, V_c)). [-]")
+    max_time_step: quantity("s", gt=0) = Field(1.0, description="Upper bound of the time step. [s]")
+    output_interval: quantity("s", gt=0) = Field(1.0, description="Time between stored states. [s]")
+    initial_angle: quantity("rad", gt=0, lt=math.pi) | None = Field(
+        None, description="Angle of the initial straight cable; default the steady laying angle. [rad]")
+    extensible: bool = Field(False, description="Elastic cable with the line type's axial_stiffness; "
+                                                "default inextensible (paper eq. (15)).")
+    slack_window: quantity("s", gt=0) = Field(60.0, description="Time over which slack is measured. [s]")
+    tolerance: quantity("-", gt=0, lt=1e-3) = Field(1e-9, description="Newton tolerance, relative. [-]")
+    max_iterations: int = Field(50, ge=2, le=1000, description="Newton iterations per step.")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.output_interval > self.duration:
+            raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
+                             f"({self.duration:g} s).")
+        if isinstance(self.payout, PayoutBottomTension) and not self.extensible:
+            raise ValueError("payout 'bottom_tension' needs 'extensible: true' and an axial_stiffness: for an "
+                             "inextensible cable every bottom tension gives the same straight steady lay "
+                             "(paper eq. (11)) and cannot be set by the payout. Suggested fix: add "
+                             "'extensible: true' and the cable's EA, or use payout 'slack'.")
+        return self
+
+
 class VerticalModesAnalysis(Model):
     """Natural periods of a vertical cable (paper 002 eq. 15 and the exact solution)."""
 
@@ -183,7 +227,7 @@ class VerticalModesAnalysis(Model):
 
 
 ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, TowedDynamicAnalysis,
-            LayingTheoryAnalysis,
+            LayingTheoryAnalysis, LayingDynamicAnalysis,
             VerticalModesAnalysis)
 Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
@@ -289,6 +333,12 @@ class Case(Model):
                 raise ValueError(f"analysis '{a.type}' takes a homogeneous line of one segment and no "
                                  f"attachments, got {len(self.line.segments)} segments and "
                                  f"{len(self.line.attachments)} attachments.")
+        if isinstance(a, LayingDynamicAnalysis):
+            if a.bathymetry is None and self.environment.depth is None:
+                raise ValueError("analysis 'laying_dynamic' needs environment.depth (m) or a bathymetry "
+                                 "table. Suggested fix: add 'depth:' under 'environment'.")
+            if a.extensible and any(seg.line_type.axial_stiffness is None for seg in self.line.segments):
+                raise ValueError("'extensible: true' needs an axial_stiffness (N) on every line type.")
         if isinstance(a, TowedSteadyAnalysis) and self.environment.current.depths is not None:
             raise ValueError("analysis 'towed_steady' takes a uniform current, got a depth profile. "
                              "Suggested fix: give 'current: {speed: ...}' or use a dynamic towed model.")

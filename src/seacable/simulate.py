@@ -288,6 +288,12 @@ def _run_towed_dynamic(case: Case, progress=None):
     return run_towed_dynamic(case, progress=progress)
 
 
+def _run_laying_dynamic(case: Case, progress=None):
+    from .laying.run import run_laying_dynamic
+
+    return run_laying_dynamic(case, progress=progress)
+
+
 _RUNNERS = {
     "static": _run_static,
     "pushover": _run_pushover,
@@ -295,6 +301,7 @@ _RUNNERS = {
     "towed_steady": _run_towed_steady,
     "towed_dynamic": _run_towed_dynamic,
     "laying_theory": _run_laying_theory,
+    "laying_dynamic": _run_laying_dynamic,
     "vertical_modes": _run_vertical_modes,
 }
 
@@ -325,4 +332,4 @@ def run(case: Case, progress=None):
     return runner(case)
 
 
-_TIME_DOMAIN = ("towed_dynamic",)
+_TIME_DOMAIN = ("towed_dynamic", "laying_dynamic")

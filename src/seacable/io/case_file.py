@@ -71,13 +71,16 @@ def load_case(path: str | Path) -> Case:
 
 
 def _resolve_files(data, folder: Path) -> None:
-    """Make a vessel table's relative ``file`` relative to the case file's folder."""
-    vessel = data.get("analysis", {}).get("vessel") if isinstance(data, dict) and isinstance(
-        data.get("analysis"), dict) else None
-    if isinstance(vessel, dict) and isinstance(vessel.get("file"), str):
-        f = Path(vessel["file"])
-        if not f.is_absolute():
-            vessel["file"] = str(folder / f)
+    """Make the relative ``file`` of a vessel or bathymetry table relative to the case file's folder."""
+    analysis = data.get("analysis") if isinstance(data, dict) else None
+    if not isinstance(analysis, dict):
+        return
+    for key in ("vessel", "bathymetry"):
+        table = analysis.get(key)
+        if isinstance(table, dict) and isinstance(table.get("file"), str):
+            f = Path(table["file"])
+            if not f.is_absolute():
+                table["file"] = str(folder / f)
 
 
 def dump_case(case: Case) -> str:

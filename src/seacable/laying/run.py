@@ -1,0 +1,132 @@
+"""The ``laying_dynamic`` analysis: a case in, a labelled xarray Dataset out."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from ..case import Case, LayingDynamicAnalysis
+from ..errors import InputError, SeacableWarning
+from ..results import make_dataset, var
+from .inputs import Seabed2D
+from .solver import LayParameters, Repeater, props_row, simulate
+
+__all__ = ["run_laying_dynamic", "lay_parameters", "lay_seabed"]
+
+REFERENCES = (
+    "Paper 001: Park, H. I. et al., two-dimensional laying simulation of subsea cables by the finite "
+    "difference method (seeds/001): section 3, eq. (12)-(18); section 4, Table 1.",
+    "Walton, T. S. & Polachek, H. (1960). Calculation of transient motion of submerged cables. "
+    "Mathematics of Computation 14, 27-46.",
+    "Zajac, E. E. (1957). Dynamics and kinematics of the laying and recovery of submarine cable. "
+    "Bell System Technical Journal 36(5), 1129-1207.",
+)
+
+
+def lay_parameters(case: Case) -> LayParameters:
+    """Cable, repeater and water data of a ``laying_dynamic`` case."""
+    a: LayingDynamicAnalysis = case.analysis
+    env, line = case.environment, case.line
+    rho, g = env.water_density, env.gravity
+    rows = []
+    for k, seg in enumerate(line.segments):
+        lt = seg.line_type
+        w = lt.submerged_weight(rho, g)
+        if not w > 0:
+            raise InputError(f"line.segments[{k}] weighs {w:.6g} N/m in water: a laid cable must sink "
+                             "(weight in water > 0). Suggested fix: check mass_per_length, diameter and "
+                             "weight_in_water.")
+        ea = lt.effective_axial_stiffness() if a.extensible else math.inf
+        rows.append(props_row(lt.mass_per_length, w, lt.diameter, lt.drag_normal, lt.drag_tangential,
+                              lt.added_mass_normal * rho * lt.area, lt.added_mass_tangential * rho * lt.area,
+                              0.0 if math.isinf(ea) else 1.0 / ea))
+    repeaters = tuple(Repeater(s=p.s, mass=p.mass, added_mass=p.added_mass, weight=p.net_weight(rho, g),
+                               drag_area=p.drag_area, name=p.name or f"repeater {i + 1}")
+                      for i, p in enumerate(line.attachments))
+    cur = env.current
+    along = math.cos(cur.heading)
+    if abs(math.sin(cur.heading)) > 1e-6 and (cur.speed != 0.0 or cur.speeds is not None):
+        warnings.warn("laying_dynamic is 2-D: only the current component along the track (x) is used, "
+                      f"{along:.3g} of its speed.", SeacableWarning, stacklevel=3)
+    if cur.depths is None:
+        depths, speeds = np.zeros(1), np.array([cur.speed * along])
+    else:
+        depths, speeds = np.asarray(cur.depths, float), np.asarray(cur.speeds, float) * along
+    return LayParameters(props=np.array(rows), type_ends=np.cumsum([seg.length for seg in line.segments]),
+                         segment_length=a.segment_length, cable_length=line.length, repeaters=repeaters,
+                         water_density=rho, current_depths=depths, current_speeds=speeds)
+
+
+def lay_seabed(case: Case) -> Seabed2D:
+    """The seabed along the track: the bathymetry table, or the environment's depth and slope."""
+    a: LayingDynamicAnalysis = case.analysis
+    if a.bathymetry is not None:
+        x, h = a.bathymetry.table()
+        return Seabed2D(x, h)
+    reach = case.line.length + 1e4 + 10.0 * a.duration * max(a.ship.speed or 0.0, max(a.ship.speeds or (0.0,)))
+    return Seabed2D.plane(case.environment.depth, case.environment.seabed.slope, a.ship.start_x - reach,
+                          a.ship.start_x + reach)
+
+
+def run_laying_dynamic(case: Case, progress=None):
+    """Run a ``laying_dynamic`` case; see :func:`seacable.run`.
+
+    The Dataset has dims ``time``, ``node`` (suspended nodes from the touchdown, node 0, to the water
+    entry; NaN beyond the count at each time), ``segment``, ``laid`` (nodes landed, in order, with the
+    cable on the seabed at the start), ``seabed_point`` and ``repeater``.
+    """
+    a: LayingDynamicAnalysis = case.analysis
+    par = lay_parameters(case)
+    seabed = lay_seabed(case)
+    res = simulate(par, a.ship, a.payout, seabed, a.duration, output_interval=a.output_interval,
+                   steps_per_segment=a.steps_per_segment, max_time_step=a.max_time_step,
+                   initial_angle=a.initial_angle, slack_window=a.slack_window, tol=a.tolerance,
+                   max_iter=a.max_iterations, progress=progress)
+    s = res.series
+    t1 = "time"
+    data = {
+        "x": var(("time", "node"), res.x, "m", "node x along the track"),
+        "z": var(("time", "node"), res.z, "m", "node elevation (z up, 0 at the sea surface)"),
+        "tension": var(("time", "segment"), res.tension, "N", "segment tension (0: slack)"),
+        "ship_x": var(t1, s["ship_x"], "m", "water-entry point x"),
+        "ship_speed": var(t1, s["ship_speed"], "m s-1", "ship speed"),
+        "payout_speed": var(t1, s["payout_speed"], "m s-1", "payout speed"),
+        "paid_out": var(t1, s["paid_out"], "m", "cable paid out since t = 0"),
+        "top_tension": var(t1, s["top_tension"], "N", "tension at the water entry"),
+        "bottom_tension": var(t1, s["bottom_tension"], "N", "tension at the touchdown"),
+        "entry_angle": var(t1, s["entry_angle"], "degree", "cable angle to the sea surface at the water entry"),
+        "touchdown_x": var(t1, s["touchdown_x"], "m", "touchdown x"),
+        "touchdown_z": var(t1, s["touchdown_z"], "m", "touchdown elevation"),
+        "slack": var(t1, s["slack"], "1", "laid length / seabed distance - 1 over the slack window"),
+        "suspended_length": var(t1, s["suspended_length"], "m", "cable length between touchdown and water entry"),
+        "laid_length": var(t1, s["laid_length"], "m", "cable laid since t = 0"),
+        "laid_x": var("laid", res.laid["x"], "m", "x of the laid nodes"),
+        "laid_z": var("laid", res.laid["z"], "m", "elevation of the laid nodes"),
+        "laid_s": var("laid", res.laid["s"], "m", "arc length of the laid nodes from end A"),
+        "laid_time": var("laid", res.laid["time"], "s", "time of touchdown (0: on the seabed at the start)"),
+    }
+    lo = min(float(np.nanmin(res.x)), float(res.laid["x"][0]))
+    hi = float(np.nanmax(s["ship_x"]))
+    inner = seabed.x[(seabed.x > lo) & (seabed.x < hi)]
+    sx = np.concatenate([[lo], inner, [hi]])
+    data["seabed_x"] = var("seabed_point", sx, "m", "seabed profile x")
+    data["seabed_z"] = var("seabed_point", seabed.z(sx), "m", "seabed profile elevation")
+    if par.repeaters:
+        data["repeater_x"] = var(("time", "repeater"), res.repeater_xz[..., 0], "m", "repeater x")
+        data["repeater_z"] = var(("time", "repeater"), res.repeater_xz[..., 1], "m", "repeater elevation")
+        data["repeater_s"] = var("repeater", np.array([r.s for r in sorted(par.repeaters, key=lambda r: r.s)]),
+                                 "m", "repeater arc length from end A")
+    coords = {"time": var("time", res.time, "s", "time")}
+    settings = {"segment_length": a.segment_length, "steps_per_segment": a.steps_per_segment,
+                "extensible": int(a.extensible), "payout": a.payout.type, "steps": res.steps,
+                "newton_iterations": res.iterations, "halved_steps": res.halvings, "lifted_nodes": res.lifts,
+                "max_nodes": int(res.x.shape[1]), "wall_time_s": round(res.wall_time, 4),
+                "interrupted": int(res.interrupted), "stop_reason": res.stop_reason,
+                "scheme": "lumped mass, backward Euler with implicit drag, Newton on positions and tensions "
+                          "(3x3 block tri-diagonal), slack segments by an active set"}
+    ds = make_dataset(data, coords, analysis="laying_dynamic", case=case, references=REFERENCES,
+                      settings=settings)
+    ds.attrs["interrupted"] = int(res.interrupted)
+    return ds
