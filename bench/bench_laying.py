@@ -1,0 +1,178 @@
+"""Speed of the cable-laying dynamics (the ``laying_dynamic`` analysis, issue 4).
+
+Run: ``python bench/bench_laying.py`` (about 30 s), ``--repeat N`` (best of N counted runs per
+case, default 3), ``--duration T`` (simulated time per run, default 1000 s).
+
+The issue's measurement: the wall time to lay 1 km of cable in 100 m of water at 1 m/s ship speed
+with 1 m segments; target: faster than real time by a factor of at least 100 on this machine. The
+cable is paper 001's (seeds/001; the same line type as ``examples/paper001_lay_2ms_50m.yaml``):
+d = 0.0225 m, m = 0.867 kg/m, w = 4.49 N/m in water, C_dn = 1.85, C_dt = 0, C_an = 1, rho = 1030
+kg/m^3, inextensible, payout ``{type: slack, slack: 0.05}``. "Lay 1 km" is taken as 1000 s of ship
+time: at 1 m/s with 5 % slack that pays out about 1050 m (the laid length reached is printed). The
+case is built in code (seacable.Case / LineType / Line / Environment / LayingDynamicAnalysis,
+output every 10 s) and run with ``seacable.run``. Two more rows: 2 m segments at 1 m/s, and 1 m
+segments at 2 m/s (the same 1000 s, so about 2.1 km laid). The cable on board is 4000 m long,
+more than any row pays out, so no run stops for lack of cable (checked: ``interrupted``).
+
+Columns: nodes = the largest number of suspended nodes in the run (settings ``max_nodes``; the
+cable between touchdown and water entry, about 232 m at 1 m/s in 100 m of water), steps and
+Newton iterations from the Dataset's settings, simulated s = the run's duration, wall s = the
+whole ``seacable.run`` call (case set-up, time integration and building the xarray Dataset; the
+integration alone, settings ``wall_time_s``, is printed as "loop s"), real-time factor =
+simulated s / wall s. Wall times are the best of ``--repeat`` runs with ``time.perf_counter``,
+after a warm-up run of 5 s per case so that numba's compilation (or loading its on-disk cache) is
+excluded; that one-time cost is printed separately. This is a benchmark, not a test: it prints,
+it does not assert.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+
+import numpy as np
+
+DEPTH = 100.0           # m, the issue's water depth
+DURATION = 1000.0       # s of ship time: "lay 1 km" at 1 m/s
+WARM_UP = 5.0           # s, the warm-up run per case (excluded from the timings)
+OUTPUT_INTERVAL = 10.0  # s between stored states
+CABLE_LENGTH = 4000.0   # m on board: more than 1000 s at 2 m/s with 5 % slack pays out (2100 m)
+SLACK = 0.05            # payout slack, paper 001 section 4
+TARGET = 100.0          # issue 4: at least 100 times faster than real time
+CASES = (               # (label, segment length [m], ship speed [m/s])
+    ("1 m segments, 1 m/s", 1.0, 1.0),
+    ("2 m segments, 1 m/s", 2.0, 1.0),
+    ("1 m segments, 2 m/s", 1.0, 2.0),
+)
+
+
+def make_case(segment_length, speed, duration):
+    """The issue's laying case (paper 001's cable, 100 m of water, 5 % slack) built in code."""
+    import seacable
+
+    cable = seacable.LineType(diameter=0.0225, mass_per_length=0.867, weight_in_water=4.49,
+                              drag_normal=1.85, drag_tangential=0.0, added_mass_normal=1.0,
+                              name="paper001_cable")
+    return seacable.Case(
+        name="bench_laying",
+        description="Issue 4 speed benchmark: paper 001's cable laid in 100 m of water.",
+        line=seacable.Line.single(cable, CABLE_LENGTH),
+        environment=seacable.Environment(water_density=1030.0, depth=DEPTH),
+        analysis=seacable.LayingDynamicAnalysis(
+            ship=seacable.ShipMotion(speed=speed), payout=seacable.PayoutSlack(slack=SLACK),
+            duration=duration, segment_length=segment_length,
+            output_interval=min(OUTPUT_INTERVAL, duration)),
+    )
+
+
+def run_once(segment_length, speed, duration):
+    """One ``seacable.run`` call: a record of its wall time and the Dataset's counts."""
+    import seacable
+
+    case = make_case(segment_length, speed, duration)
+    t0 = time.perf_counter()
+    ds = seacable.run(case)
+    wall = time.perf_counter() - t0
+    settings = json.loads(ds.attrs["settings"])
+    return {"wall": wall, "loop": float(settings["wall_time_s"]), "steps": int(settings["steps"]),
+            "iterations": int(settings["newton_iterations"]), "halved": int(settings["halved_steps"]),
+            "nodes": int(settings["max_nodes"]),
+            "nodes_end": int(np.isfinite(ds.x.values[-1]).sum()),
+            "laid": float(ds.laid_length.values[-1]), "simulated": float(ds.time.values[-1]),
+            "interrupted": int(ds.attrs["interrupted"]), "stop_reason": settings.get("stop_reason", "")}
+
+
+def _dispatchers():
+    """Every numba dispatcher of the laying kernel."""
+    from numba.core.registry import CPUDispatcher
+
+    from seacable.laying import kernel
+
+    return [obj for obj in vars(kernel).values() if isinstance(obj, CPUDispatcher)]
+
+
+def warm_up():
+    """Import time, the first (compiling or cache-loading) warm-up call and the cache counts."""
+    t0 = time.perf_counter()
+    import seacable  # noqa: F401
+    from seacable.laying import kernel  # noqa: F401
+
+    t_import = time.perf_counter() - t0
+    first = run_once(*CASES[0][1:], WARM_UP)["wall"]
+    later = run_once(*CASES[0][1:], WARM_UP)["wall"]
+    hits = sum(sum(d.stats.cache_hits.values()) for d in _dispatchers())
+    misses = sum(sum(d.stats.cache_misses.values()) for d in _dispatchers())
+    for _, ds_, v in CASES[1:]:  # same signatures, but warm every case's code path all the same
+        run_once(ds_, v, WARM_UP)
+    return {"import": t_import, "first": first, "later": later, "hits": hits, "misses": misses}
+
+
+def bench(label, segment_length, speed, duration, repeat):
+    """Best of ``repeat`` runs (by wall time) of one case."""
+    runs = [run_once(segment_length, speed, duration) for _ in range(repeat)]
+    best = min(runs, key=lambda r: r["wall"])
+    best["label"] = label
+    best["spread"] = (min(r["wall"] for r in runs), max(r["wall"] for r in runs))
+    return best
+
+
+def print_table(rows, repeat):
+    print(f"Laying dynamics, {DEPTH:g} m of water, paper 001's cable, payout slack {SLACK:g} "
+          f"(best of {repeat} after the warm-up)")
+    head = (f"{'case':<22} {'nodes':>6} {'steps':>7} {'Newton iterations':>18} {'simulated s':>12} "
+            f"{'wall s':>8} {'real-time factor':>17}   {'laid m':>7} {'loop s':>7} {'min-max wall s':>15}")
+    print(head)
+    print("-" * len(head))
+    for r in rows:
+        print(f"{r['label']:<22} {r['nodes']:>6} {r['steps']:>7} {r['iterations']:>18} "
+              f"{r['simulated']:>12.0f} {r['wall']:>8.3f} {r['simulated'] / r['wall']:>17.0f}   "
+              f"{r['laid']:>7.1f} {r['loop']:>7.3f} {r['spread'][0]:>7.3f}-{r['spread'][1]:.3f}")
+    print()
+    main = rows[0]
+    factor = main["simulated"] / main["wall"]
+    print(f"Issue 4 target: {main['label']} at >= {TARGET:g}x real time: {factor:.0f}x, "
+          f"{'met' if factor >= TARGET else 'MISSED'} ({main['laid']:.0f} m laid in {main['wall']:.2f} s, "
+          f"{main['nodes']} suspended nodes, {1e3 * main['loop'] / main['steps']:.3f} ms per step, "
+          f"{1e6 * main['loop'] / main['iterations'] / main['nodes']:.2f} us per Newton iteration "
+          f"and node)")
+    for r in rows:
+        if r["interrupted"] or r["halved"] or r["nodes_end"] != r["nodes"]:
+            print(f"note: {r['label']}: interrupted={r['interrupted']} {r['stop_reason']!r}, "
+                  f"{r['halved']} halved steps, {r['nodes_end']} suspended nodes at the end "
+                  f"(max {r['nodes']})")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=3, metavar="N",
+                    help="counted runs per case, the best is reported (default 3)")
+    ap.add_argument("--duration", type=float, default=DURATION, metavar="T",
+                    help=f"simulated time per run [s] (default {DURATION:g})")
+    args = ap.parse_args(argv)
+    if args.repeat < 1:
+        ap.error(f"--repeat must be >= 1, got {args.repeat}")
+    if not args.duration >= OUTPUT_INTERVAL:
+        ap.error(f"--duration must be >= {OUTPUT_INTERVAL:g} s, got {args.duration:g}")
+    t_start = time.perf_counter()
+    import numba
+    import scipy
+
+    print(f"seacable laying benchmark: Python {sys.version.split()[0]}, numpy {np.__version__}, "
+          f"scipy {scipy.__version__}, numba {numba.__version__}, {os.cpu_count()} CPUs")
+    w = warm_up()
+    state = ("warm: every compiled function loaded from disk" if w["misses"] == 0 and w["hits"] > 0
+             else f"cold: {w['misses']} compilations" if w["hits"] == 0
+             else f"partly warm: {w['hits']} loaded, {w['misses']} compiled")
+    print(f"numba warm-up ({WARM_UP:g} s runs, excluded from the table): import {w['import']:.2f} s, "
+          f"first call {w['first']:.2f} s, second {w['later']:.3f} s => one-time "
+          f"{w['first'] - w['later']:.2f} s (on-disk cache {state})\n")
+    rows = [bench(label, ds_, v, args.duration, args.repeat) for label, ds_, v in CASES]
+    print_table(rows, args.repeat)
+    print(f"total benchmark time {time.perf_counter() - t_start:.0f} s")
+
+
+if __name__ == "__main__":
+    main()
