@@ -198,6 +198,7 @@ class _Control:
     def __init__(self, ship: ShipMotion, payout, par: LayParameters, seabed: Seabed2D):
         self.ship, self.payout, self.par, self.seabed = ship, payout, par, seabed
         self.speed = ship.scheduled(0.0)
+        self.off_schedule = False
         # the filter starts at the target: the payout starts at the feed-forward and follows the
         # measured bottom tension over the filter time, without a jerk
         self.bottom_filtered = payout.tension if isinstance(payout, PayoutBottomTension) else 0.0
@@ -205,15 +206,20 @@ class _Control:
         self.weight, self.compliance = p[P_WEIGHT], p[P_COMPLIANCE]
 
     def ship_speed(self, t_new: float, dt: float, repeater_in_water: bool) -> float:
-        """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration."""
+        """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration
+        (and the schedule regained at the acceleration after the repeater's touchdown)."""
         sched = self.ship.scheduled(t_new)
-        target = sched
-        if repeater_in_water and self.ship.repeater_speed is not None:
-            target = min(sched, self.ship.repeater_speed)
-        if target == sched and abs(self.speed - sched) <= self.ship.acceleration * dt:
+        slow = repeater_in_water and self.ship.repeater_speed is not None and self.ship.repeater_speed < sched
+        if not slow and not self.off_schedule:
             return sched
+        target = self.ship.repeater_speed if slow else sched
         step = self.ship.acceleration * dt
         return self.speed + min(max(target - self.speed, -step), step)
+
+    def update(self, speed: float, t: float) -> None:
+        """Accept the ship speed of a step ending at ``t``."""
+        self.speed = speed
+        self.off_schedule = abs(speed - self.ship.scheduled(t)) > 1e-12
 
     def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float) -> float:
         """Payout speed for ship speed ``vs`` and the present touchdown geometry. [m/s]"""
@@ -392,7 +398,7 @@ class _Lay:
         c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
         c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
         c.vel[hi] = (vs_new, 0.0)
-        self.x_ship, self.ctl.speed, self.vc = x_new, vs_new, vc_new
+        self.x_ship, self.vc = x_new, vc_new
         self.s_paid += vc_new * dt
         c.s[hi] = self.s_paid
 
@@ -585,6 +591,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
                 halvings += 1
             lay.commit(dt, vs_new, x_new, vc_new)
             t += dt
+            ctl.update(vs_new, t)
             steps += 1
             lay.births()
             lay.touchdowns(t)
