@@ -22,6 +22,10 @@ CASES = {
         f"{float(ds.time[-1]):g} s ({100 * (float(ds.top_tension[-1] / ds.top_tension[0]) - 1):+.2f} %, paper "
         f"000 Table 3: -1.54 %); vessel {float(ds.vessel_y[-1]):.1f} m, free end "
         f"{float(ds.y[-1, 0] - ds.y[0, 0]):.1f} m sideways"),
+    "paper001_lay_2ms_50m": lambda ds: (
+        f"entry angle {float(ds.entry_angle[-1]):.3f} deg (paper 001 Table 1: 13.053), ship tension "
+        f"{float(ds.top_tension[-20:].mean()):.1f} N (w h = 224.5 N), slack {float(ds.slack[-1]):.4f}; "
+        f"{float(ds.laid_length[-1]):.0f} m laid"),
     "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
                                      f"{float(ds.top_tension.min()):.1f} N while stopped"),
     "oc3_hywind_line": lambda ds: (f"fairlead tension {float(ds.tension_fairlead) / 1e3:.1f} kN, "
