@@ -8,7 +8,7 @@ from __future__ import annotations
 import csv
 import math
 from pathlib import Path
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -16,8 +16,15 @@ from pydantic import Field, model_validator
 from .._model import Model, quantity
 from ..errors import InputError
 
-__all__ = ["ShipMotion", "PayoutRate", "PayoutSlack", "PayoutBottomTension", "Payout", "Bathymetry",
-           "schedule_value"]
+__all__ = [
+    "Bathymetry",
+    "Payout",
+    "PayoutBottomTension",
+    "PayoutRate",
+    "PayoutSlack",
+    "ShipMotion",
+    "schedule_value",
+]
 
 
 def _check_schedule(times, values, name: str, unit: str) -> None:
@@ -132,7 +139,7 @@ class PayoutBottomTension(Model):
     time_constant: quantity("s", gt=0) = Field(10.0, description="Filter time of the bottom tension. [s]")
 
 
-Payout = Annotated[Union[PayoutRate, PayoutSlack, PayoutBottomTension], Field(discriminator="type")]
+Payout = Annotated[PayoutRate | PayoutSlack | PayoutBottomTension, Field(discriminator="type")]
 
 
 class Bathymetry(Model):
@@ -219,7 +226,7 @@ class Seabed2D:
         self._arc = np.concatenate([[0.0], np.cumsum(seg)])
 
     @classmethod
-    def plane(cls, depth: float, slope: float, x0: float, x1: float) -> "Seabed2D":
+    def plane(cls, depth: float, slope: float, x0: float, x1: float) -> Seabed2D:
         """A plane seabed, ``depth`` at x = 0 rising at ``slope`` [rad] towards +x, over [x0, x1]."""
         xs = np.array([x0, x1], float)
         return cls(xs, depth - xs * math.tan(slope))

@@ -49,8 +49,19 @@ from numba import njit
 
 from ..towed.linalg import block_thomas
 
-__all__ = ["P_MASS", "P_WEIGHT", "P_DIAMETER", "P_CDN", "P_CDT", "P_EN", "P_ET", "P_COMPLIANCE",
-           "N_PROPS", "implicit_step", "current_at"]
+__all__ = [
+    "N_PROPS",
+    "P_CDN",
+    "P_CDT",
+    "P_COMPLIANCE",
+    "P_DIAMETER",
+    "P_EN",
+    "P_ET",
+    "P_MASS",
+    "P_WEIGHT",
+    "current_at",
+    "implicit_step",
+]
 
 # Columns of the per-type property table (per unit unstretched length).
 P_MASS, P_WEIGHT, P_DIAMETER, P_CDN, P_CDT, P_EN, P_ET, P_COMPLIANCE = range(8)

@@ -13,7 +13,7 @@ from ..results import make_dataset, var
 from .inputs import Seabed2D
 from .solver import LayParameters, Repeater, props_row, simulate
 
-__all__ = ["run_laying_dynamic", "lay_parameters", "lay_seabed"]
+__all__ = ["lay_parameters", "lay_seabed", "run_laying_dynamic"]
 
 REFERENCES = (
     "Paper 001: Park, H. I. et al., two-dimensional laying simulation of subsea cables by the finite "

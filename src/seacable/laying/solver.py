@@ -39,7 +39,7 @@ from ..statics.laying import laying_angle
 from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, Seabed2D, ShipMotion, schedule_value
 from .kernel import N_PROPS, P_COMPLIANCE, P_WEIGHT, implicit_step
 
-__all__ = ["LayParameters", "Repeater", "LayRun", "simulate"]
+__all__ = ["LayParameters", "LayRun", "Repeater", "simulate"]
 
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
 _HALVINGS = 6         # a failing step is retried with dt/2, dt/4, ...
