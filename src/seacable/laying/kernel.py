@@ -29,9 +29,12 @@ old tangents and the primes are the new time level. The constraint of each segme
     |r_{j+1}' - r_j'| = L_j (1 + T_j' / EA)        (eq. (15); 1/EA = 0: inextensible)
 
 and a cable takes no compression: a segment whose tension would be negative goes slack (``T_j = 0``,
-chord shorter than ``L_j``). The tensions are found by Newton's method on the constraints; the
-Jacobian is tri-diagonal (Walton & Polachek's "tentative step and improvement" in modern form), and
-the tangents are updated to the new chords at every iteration.
+chord shorter than ``L_j``) and is taut again once stretched (an active set, updated as Newton goes).
+Positions and tensions are solved together by Newton's method; ordered node by node the Jacobian is
+3x3 block tri-diagonal (Walton & Polachek's "tentative step and improvement" in modern form). It
+includes the geometric stiffness ``T (I - t t^T) / l``: holding the tangents fixed and iterating on
+them instead diverges once ``T dt^2 / (m l)`` exceeds about one, which a 1 m segment under 200 N
+does at dt = 0.1 s.
 
 References
 ----------

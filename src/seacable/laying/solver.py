@@ -37,7 +37,7 @@ from scipy.optimize import brentq
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..statics.laying import laying_angle
 from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, Seabed2D, ShipMotion, schedule_value
-from .kernel import N_PROPS, P_COMPLIANCE, P_WEIGHT, implicit_step
+from .kernel import N_PROPS, P_CDN, P_COMPLIANCE, P_DIAMETER, P_WEIGHT, implicit_step
 
 __all__ = ["LayParameters", "LayRun", "Repeater", "simulate"]
 
@@ -155,7 +155,7 @@ def _initial_angle(par: LayParameters, speed: float, depth: float) -> float:
     rel = speed - u
     if abs(rel) < 1e-6:
         return 0.5 * math.pi
-    alpha = float(laying_angle(abs(rel), p[P_WEIGHT], p[2], p[3], par.water_density, method="exact"))
+    alpha = float(laying_angle(abs(rel), p[P_WEIGHT], p[P_DIAMETER], p[P_CDN], par.water_density, method="exact"))
     return alpha if rel > 0 else math.pi - alpha
 
 
@@ -384,8 +384,10 @@ class _Lay:
         c.vel[new] = 0.0
         c.s[new] = laid["s"][-1]
         self.attach(new)
+        if c.rep[new] >= 0:
+            self.rep_state[c.rep[new]] = 2     # the new touchdown node is still on the seabed
         if c.rep[lo] >= 0:
-            self.rep_state[c.rep[lo]] = 1
+            self.rep_state[c.rep[lo]] = 1      # picked up: in the water again
         c.L[new] = c.s[lo] - c.s[new]
         c.T[new] = c.T[lo]
         c.active[new] = 1

@@ -1,0 +1,84 @@
+"""The compiled laying step: its Newton Jacobian against finite differences, and a closed form.
+
+Assembled blocks of the 3x3 block tri-diagonal Newton system (seacable.laying.kernel._assemble)
+against central differences of the residual; and a free fall with drag-free, weight-only node
+against the backward-Euler closed form.
+"""
+
+import math
+
+import numpy as np
+
+from seacable.laying import kernel as K
+from seacable.laying.solver import props_row
+
+
+def _residual_and_blocks(r, T, b, G, act, L, comp):
+    nseg = L.size
+    c, ell = np.zeros((nseg, 2)), np.zeros(nseg)
+    K._chords(r, c, ell)
+    lo, di, up = np.zeros((nseg, 3, 3)), np.zeros((nseg, 3, 3)), np.zeros((nseg, 3, 3))
+    rhs = np.zeros((nseg, 3))
+    K._assemble(r, b, G, T, act, c, ell, L, comp, lo, di, up, rhs)
+    return -rhs, lo, di, up
+
+
+def test_jacobian_matches_finite_differences():
+    rng = np.random.default_rng(1)
+    n = 6
+    r = np.array([[k * 0.9, k * 0.5 + 0.1 * rng.standard_normal()] for k in range(n + 1)])
+    b = r + 0.01 * rng.standard_normal(r.shape)
+    G = np.zeros((n + 1, 2, 2))
+    for i in range(n + 1):
+        a = rng.standard_normal((2, 2))
+        G[i] = 0.01 * (a @ a.T + np.eye(2))
+    T = rng.uniform(1.0, 5.0, n)
+    act = np.ones(n, dtype=np.int64)
+    act[2] = 0                                   # one slack segment
+    L, comp = np.ones(n), np.full(n, 1e-3)
+    res, lo, di, up = _residual_and_blocks(r, T, b, G, act, L, comp)
+    m = 3 * n
+    J = np.zeros((m, m))
+    for k in range(n):
+        J[3 * k:3 * k + 3, 3 * k:3 * k + 3] = di[k]
+        if k > 0:
+            J[3 * k:3 * k + 3, 3 * k - 3:3 * k] = lo[k]
+        if k < n - 1:
+            J[3 * k:3 * k + 3, 3 * k + 3:3 * k + 6] = up[k]
+
+    def shifted(u):
+        r2, T2 = r.copy(), T.copy()
+        for k in range(n):
+            T2[k] += u[3 * k]
+            if k + 1 < n:
+                r2[k + 1] += u[3 * k + 1:3 * k + 3]
+        return _residual_and_blocks(r2, T2, b, G, act, L, comp)[0].ravel()
+
+    h = 1e-6
+    Jfd = np.column_stack([(shifted(h * e) - shifted(-h * e)) / (2 * h) for e in np.eye(m)])
+    keep = np.ones(m, bool)
+    keep[-2:] = False                            # the last block's padding rows/columns
+    # central differences with h = 1e-6 on O(1) entries: truncation ~h^2, round-off ~1e-16/h = 1e-10
+    np.testing.assert_allclose(J[np.ix_(keep, keep)], Jfd[np.ix_(keep, keep)], atol=1e-8)
+
+
+def test_single_node_sinks_at_the_backward_euler_rate():
+    """One node between two slack segments, no drag, no added mass: v' = v - g_eff dt exactly."""
+    mass, weight = 2.0, 10.0                      # per unit length: 2 kg/m, 10 N/m; node carries 1 m
+    props = np.array([props_row(mass, weight, 0.02, 0.0, 0.0, 0.0, 0.0, 0.0)])
+    pos = np.array([[0.0, -10.0], [0.5, -5.0], [1.0, 0.0]])      # chords of 5.02 m ...
+    L = np.array([6.0, 6.0])                                    # ... in 6 m segments: both slack
+    vel = np.zeros((3, 2))
+    T, act = np.zeros(2), np.zeros(2, dtype=np.int64)
+    new_pos, new_vel = np.zeros_like(pos), np.zeros_like(vel)
+    dt = 0.1
+    ok, _, _ = K.implicit_step(pos, vel, pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
+                               np.zeros((3, 4)), np.zeros(1), np.zeros(1), 1025.0, dt, T, act, 0.0,
+                               1e-12, 20, 5, new_pos, new_vel)
+    assert ok
+    accel = weight / mass                          # net weight over mass, per unit length
+    # the free node's backward-Euler step, to round-off
+    assert math.isclose(new_vel[1, 1], -accel * dt, rel_tol=1e-13)
+    assert math.isclose(new_pos[1, 1], -5.0 - accel * dt * dt, rel_tol=1e-13)
+    assert new_vel[1, 0] == 0.0
+    assert np.all(T == 0.0)
