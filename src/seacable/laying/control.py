@@ -1,0 +1,63 @@
+"""Ship speed and payout speed of a laying run (paper 001 section 3.3: speed changes, repeater
+slow-down and recovery, payout adjusted on slopes as the paper's CPRATE does, bottom-tension control)."""
+
+from __future__ import annotations
+
+import math
+
+from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, Seabed2D, ShipMotion, schedule_value
+from .kernel import P_COMPLIANCE, P_WEIGHT
+
+__all__ = ["Control"]
+
+
+class Control:
+    """Ship speed and payout speed as the run goes."""
+
+    def __init__(self, ship: ShipMotion, payout, par, seabed: Seabed2D):
+        """``par``: the run's :class:`~seacable.laying.solver.LayParameters`."""
+        self.ship, self.payout, self.par, self.seabed = ship, payout, par, seabed
+        self.speed = ship.scheduled(0.0)
+        self.off_schedule = False
+        # the filter starts at the target: the payout starts at the feed-forward and follows the
+        # measured bottom tension over the filter time, without a jerk
+        self.bottom_filtered = payout.tension if isinstance(payout, PayoutBottomTension) else 0.0
+        p = par.props[par.type_at(0.0)]
+        self.weight, self.compliance = p[P_WEIGHT], p[P_COMPLIANCE]
+
+    def ship_speed(self, t_new: float, dt: float, repeater_in_water: bool) -> float:
+        """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration
+        (and the schedule regained at the acceleration after the repeater's touchdown)."""
+        sched = self.ship.scheduled(t_new)
+        slow = repeater_in_water and self.ship.repeater_speed is not None and self.ship.repeater_speed < sched
+        if not slow and not self.off_schedule:
+            return sched
+        target = self.ship.repeater_speed if slow else sched
+        step = self.ship.acceleration * dt
+        return self.speed + min(max(target - self.speed, -step), step)
+
+    def update(self, speed: float, t: float) -> None:
+        """Accept the ship speed of a step ending at ``t``."""
+        self.speed = speed
+        self.off_schedule = abs(speed - self.ship.scheduled(t)) > 1e-12
+
+    def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float) -> float:
+        """Payout speed for ship speed ``vs`` and the present touchdown geometry. [m/s]"""
+        p = self.payout
+        if isinstance(p, PayoutRate):
+            return schedule_value(t, p.speed, p.times, p.speeds)
+        x_td, h_td, cot_alpha = geometry
+        slope = self.seabed.slope(x_td)
+        compensate = isinstance(p, PayoutBottomTension) or p.slope_compensation
+        if not compensate:
+            return (1.0 + p.slack) * vs
+        # CPRATE: touchdown speed, laid length per metre run and change of the suspended length
+        td_speed = vs / max(1.0 - slope * cot_alpha, 0.1)
+        sin_alpha = 1.0 / math.sqrt(1.0 + cot_alpha * cot_alpha)
+        arc = math.sqrt(1.0 + slope * slope)
+        if isinstance(p, PayoutSlack):
+            return max(td_speed * ((1.0 + p.slack) * arc - slope / sin_alpha), 0.0)
+        self.bottom_filtered += min(dt / p.time_constant, 1.0) * (bottom_tension - self.bottom_filtered)
+        feed = td_speed * (arc / (1.0 + p.tension * self.compliance) - slope / sin_alpha)
+        error = (self.bottom_filtered - p.tension) / (self.weight * max(h_td, 1e-9))
+        return feed * min(max(1.0 + p.gain * error, 0.0), 2.0)
