@@ -291,7 +291,7 @@ class _Lay:
                 c.rep[row] = r
                 self.rep_state[r] = 1
 
-    def step(self, t: float, dt: float, geometry, bottom: float, in_water: bool, vc_new, kernel_args):
+    def step(self, t: float, dt: float, in_water: bool, vc_new: float, kernel_args):
         """One implicit step; returns ``(ok, iterations, residual, vs_new, x_new)`` (state not committed)."""
         c, ctl = self.c, self.ctl
         vs_new = ctl.ship_speed(t + dt, dt, in_water)
@@ -518,7 +518,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
             while True:
                 lo, hi = c.lo, c.hi
                 saved = (c.L[hi - 1], c.T[lo:hi].copy(), c.active[lo:hi].copy())
-                ok, it, res, vs_new, x_new = lay.step(t, dt, lay.geometry(), bottom, in_water, vc_new, kernel_args)
+                ok, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
                 iterations += it
                 restore = not ok or (lifted < _MAX_LIFTS and lay.lifts_off())
                 if restore:
