@@ -1,0 +1,427 @@
+"""Compiled core of the mooring finite-element model (paper 004): loads, tangents, Newmark, statics.
+
+Nodes carry lumped masses; two-node truss elements join them. For element ``e`` from node a to b,
+with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
+
+    eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
+    f_a = T t,  f_b = -T t,
+    K_e = EA / L t t^T + T / l (I - t t^T)          (paper 004 eq. A6-A10: linear plus geometric)
+
+so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. Half of each element's mass and
+weight in water goes to each end; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
+``P_n = I - t t^T`` and ``P_t = t t^T``. Morison loads on each half element use the node's velocity
+relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
+
+    F = 1/2 rho d L/2 (C_dn |u_n| u_n + pi C_dt |u_t| u_t) + rho A L/2 ((1 + C_an) P_n + (1 + C_at) P_t) a_w
+
+(the tangential drag on the wetted perimeter ``pi d``, as MoorDyn). Attachments add mass, isotropic
+added mass, drag ``1/2 rho C_D A |u| u`` and the Froude-Krylov force of their volume. The seabed
+is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n`` (never
+pulling), with ``d_n`` the sum of ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m,
+Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
+
+Time integration: Newmark's average acceleration (beta 1/4, gamma 1/2) with Newton iterations at
+each step on ``M a - F(x, v) = 0`` for the free nodes; prescribed nodes (fairleads) move the
+coupling terms to the right-hand side (the partitioned equations of paper 004 section 3). The
+Jacobian ``M / (beta dt^2) + C gamma / (beta dt) + K`` is assembled in band storage (nodes ordered
+for a small bandwidth) and factored without pivoting: it is diagonally dominated by the mass term.
+Statics drops the inertia and damps Newton with a Levenberg-Marquardt term, so that it starts from
+a straight line.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..waves import airy_kinematics
+
+__all__ = ["ENV_SIZE", "band_solve", "loads", "newmark_steps", "static_solve"]
+
+# Environment vector layout.
+E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
+E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 12, 13, 14, 15
+ENV_SIZE = 16
+
+
+@njit(cache=True)
+def _fluid(x, t, env, cur_depth, cur_speed, with_waves):
+    """Water velocity and acceleration at point ``x`` and time ``t`` (current plus Airy waves)."""
+    u = np.zeros(3)
+    acc = np.zeros(3)
+    if x[2] > 0.0 and not with_waves:
+        return u, acc
+    if cur_depth.size == 1:
+        speed = cur_speed[0]
+    else:
+        speed = np.interp(-x[2], cur_depth, cur_speed)
+    if x[2] <= 0.0:
+        u[0] = speed * math.cos(env[E_CHEAD])
+        u[1] = speed * math.sin(env[E_CHEAD])
+    if with_waves and env[E_WH] > 0.0:
+        wu, wv, ww, wax, way, waz, _ = airy_kinematics(x[0], x[1], x[2], t, env[E_WH], env[E_WT], env[E_WK],
+                                                       env[E_WDEPTH], env[E_WHEAD], env[E_WPHASE], env[E_G])
+        u[0] += wu
+        u[1] += wv
+        u[2] += ww
+        acc[0] = wax
+        acc[1] = way
+        acc[2] = waz
+    return u, acc
+
+
+@njit(cache=True)
+def _add_block(band, bw, fi, fj, coef, blk):
+    if fi < 0 or fj < 0:
+        return
+    for r in range(3):
+        row = 3 * fi + r
+        for c in range(3):
+            band[row, bw + 3 * fj + c - row] += coef * blk[r, c]
+
+
+@njit(cache=True)
+def _drag_tangent(un, cd, out, coef):
+    """out += coef * cd * d(|u| u)/du restricted to the subspace of ``un`` (out is 3x3)."""
+    mag = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
+    if mag <= 0.0:
+        return
+    for r in range(3):
+        for c in range(3):
+            out[r, c] += coef * cd * un[r] * un[c] / mag
+
+
+@njit(cache=True)
+def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+          weight, pmass, padd, pvol, pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves,
+          F, M, tension, band, bw, cm, cc):
+    """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
+
+    Fills ``F`` (n, 3) with internal, gravity, hydrodynamic and seabed forces, ``M`` (n, 3, 3) with the
+    node mass including added mass, ``tension`` (e,) and, when ``band`` has rows, adds
+    ``cm M + cc C + K`` (C = -dF/dv, K = -dF/dx) for the free nodes (``fidx`` >= 0) in band storage.
+    """
+    n = X.shape[0]
+    rho = env[E_RHO]
+    F[:] = 0.0
+    M[:] = 0.0
+    tension[:] = 0.0
+    jac = band.shape[0] > 0
+    eye = np.eye(3)
+    blk = np.zeros((3, 3))
+    hb = np.zeros((3, 3))
+    for e in range(elements.shape[0]):
+        a = elements[e, 0]
+        b = elements[e, 1]
+        d = X[b] - X[a]
+        l = math.sqrt(d[0] ** 2 + d[1] ** 2 + d[2] ** 2)
+        tv = d / l
+        L = L0[e]
+        eps = l / L - 1.0
+        if eps > 0.0:
+            dv = V[b] - V[a]
+            ldot = tv[0] * dv[0] + tv[1] * dv[1] + tv[2] * dv[2]
+            T = EA[e] * eps + cdamp[e] * ldot / L
+            if T < 0.0:
+                T = 0.0
+            tension[e] = T
+            F[a] += T * tv
+            F[b] -= T * tv
+            if jac:
+                for r in range(3):
+                    for c in range(3):
+                        tt = tv[r] * tv[c]
+                        blk[r, c] = EA[e] / L * tt + T / l * (eye[r, c] - tt) + cc * cdamp[e] / L * tt
+                fa, fb = fidx[a], fidx[b]
+                _add_block(band, bw, fa, fa, 1.0, blk)
+                _add_block(band, bw, fb, fb, 1.0, blk)
+                _add_block(band, bw, fa, fb, -1.0, blk)
+                _add_block(band, bw, fb, fa, -1.0, blk)
+        area = 0.25 * math.pi * dia[e] ** 2
+        half = 0.5 * L
+        for k in (a, b):
+            for r in range(3):
+                M[k, r, r] += mpl[e] * half
+            if X[k, 2] > 0.0:
+                continue  # out of the water: no hydrodynamic load
+            uw, aw = _fluid(X[k], t, env, cur_depth, cur_speed, with_waves)
+            ur = uw - V[k]
+            ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
+            at_s = aw[0] * tv[0] + aw[1] * tv[1] + aw[2] * tv[2]
+            ut = ut_s * tv
+            un = ur - ut
+            an = aw - at_s * tv
+            mn = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
+            mt = abs(ut_s)
+            qd = 0.5 * rho * dia[e] * half
+            ma = rho * area * half
+            for r in range(3):
+                F[k, r] += qd * (cdn[e] * mn * un[r] + math.pi * cdt[e] * mt * ut[r])
+                F[k, r] += ma * ((1.0 + can[e]) * an[r] + (1.0 + cat[e]) * at_s * tv[r])
+                for c in range(3):
+                    tt = tv[r] * tv[c]
+                    M[k, r, c] += ma * (can[e] * (eye[r, c] - tt) + cat[e] * tt)
+            if jac and fidx[k] >= 0 and cc != 0.0:
+                for r in range(3):
+                    for c in range(3):
+                        tt = tv[r] * tv[c]
+                        hb[r, c] = qd * (cdn[e] * mn * (eye[r, c] - tt) + math.pi * cdt[e] * mt * tt)
+                _drag_tangent(un, cdn[e], hb, qd)
+                _drag_tangent(ut, math.pi * cdt[e], hb, qd)
+                _add_block(band, bw, fidx[k], fidx[k], cc, hb)
+    # node loads: weight, attachments, seabed, mass-proportional damping
+    sl = env[E_SLOPE]
+    nrm = np.array([-math.sin(sl), 0.0, math.cos(sl)])
+    depth = env[E_DEPTH]
+    kb, cb, mu, vf = env[E_KBOT], env[E_CBOT], env[E_MU], env[E_VFRIC]
+    alpha = env[E_ALPHA]
+    for i in range(n):
+        F[i, 2] -= weight[i]
+        for r in range(3):
+            M[i, r, r] += pmass[i] + padd[i]
+        if (pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0) and X[i, 2] <= 0.0:
+            uw, aw = _fluid(X[i], t, env, cur_depth, cur_speed, with_waves)
+            ur = uw - V[i]
+            mag = math.sqrt(ur[0] ** 2 + ur[1] ** 2 + ur[2] ** 2)
+            q = 0.5 * rho * pcda[i]
+            F[i] += q * mag * ur + (rho * pvol[i] + padd[i]) * aw
+            if jac and fidx[i] >= 0 and cc != 0.0 and q > 0.0:
+                for r in range(3):
+                    for c in range(3):
+                        hb[r, c] = q * mag * eye[r, c]
+                _drag_tangent(ur, 1.0, hb, q)
+                _add_block(band, bw, fidx[i], fidx[i], cc, hb)
+        if alpha > 0.0:
+            for r in range(3):
+                for c in range(3):
+                    F[i, r] -= alpha * M[i, r, c] * V[i, c]
+            if jac and fidx[i] >= 0:
+                _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
+        if kb > 0.0 and bedc[i] > 0.0 and math.isfinite(depth):
+            pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
+            if pen > 0.0:
+                vn = nrm[0] * V[i, 0] + nrm[1] * V[i, 1] + nrm[2] * V[i, 2]
+                fn = kb * bedc[i] * pen - cb * bedc[i] * vn
+                if fn > 0.0:
+                    F[i] += fn * nrm
+                    vt = V[i] - vn * nrm
+                    s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
+                    if mu > 0.0:
+                        F[i] -= mu * fn / s * vt
+                    if jac and fidx[i] >= 0:
+                        for r in range(3):
+                            for c in range(3):
+                                nn = nrm[r] * nrm[c]
+                                blk[r, c] = kb * bedc[i] * nn + cc * cb * bedc[i] * nn
+                                if mu > 0.0:
+                                    blk[r, c] += cc * mu * fn * ((eye[r, c] - nn) / s - vt[r] * vt[c] / s ** 3)
+                        _add_block(band, bw, fidx[i], fidx[i], 1.0, blk)
+        if jac and fidx[i] >= 0 and cm != 0.0:
+            _add_block(band, bw, fidx[i], fidx[i], cm, M[i])
+
+
+@njit(cache=True)
+def band_solve(band, bw, rhs):
+    """Solve the banded system in place (LU without pivoting); returns False on a zero pivot."""
+    n = rhs.size
+    for k in range(n):
+        piv = band[k, bw]
+        if piv == 0.0 or not math.isfinite(piv):
+            return False
+        for i in range(k + 1, min(n, k + bw + 1)):
+            f = band[i, bw + k - i] / piv
+            if f == 0.0:
+                continue
+            band[i, bw + k - i] = f
+            for j in range(k + 1, min(n, k + bw + 1)):
+                band[i, bw + j - i] -= f * band[k, bw + j - k]
+            rhs[i] -= f * rhs[k]
+    for k in range(n - 1, -1, -1):
+        s = rhs[k]
+        for j in range(k + 1, min(n, k + bw + 1)):
+            s -= band[k, bw + j - k] * rhs[j]
+        rhs[k] = s / band[k, bw]
+    return True
+
+
+@njit(cache=True)
+def _residual(F, M, A, fidx, R):
+    """R = M a - F at the free nodes; returns max |R|."""
+    res = 0.0
+    for i in range(F.shape[0]):
+        f = fidx[i]
+        if f < 0:
+            continue
+        for r in range(3):
+            v = -F[i, r]
+            for c in range(3):
+                v += M[i, r, c] * A[i, c]
+            R[3 * f + r] = v
+            if abs(v) > res:
+                res = abs(v)
+    return res
+
+
+@njit(cache=True)
+def _norm2(v):
+    s = 0.0
+    for k in range(v.size):
+        s += v[k] * v[k]
+    return math.sqrt(s)
+
+
+@njit(cache=True)
+def _force_scale(weight, tension):
+    s = 1.0
+    for i in range(weight.size):
+        s = max(s, abs(weight[i]))
+    for e in range(tension.size):
+        s = max(s, tension[e])
+    return s
+
+
+@njit(cache=True)
+def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
+                  cat, weight, pmass, padd, pvol, pcda, bedc, fidx, nfree, bw, env, cur_depth, cur_speed,
+                  with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
+    """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
+    positions, velocities and accelerations at the end of step k.
+
+    Returns the number of steps completed; a step whose Newton iteration fails leaves the state at
+    its start. ``stats`` receives (iterations, last residual, force scale).
+    """
+    n = X.shape[0]
+    nd = 3 * nfree
+    band = np.zeros((nd, 2 * bw + 1))
+    R = np.zeros(nd)
+    Xn = np.empty_like(X)
+    Vn = np.empty_like(V)
+    An = np.empty_like(A)
+    c0 = 1.0 / (beta * dt * dt)
+    c1 = gamma / (beta * dt)
+    for step in range(px.shape[0]):
+        Xn[:] = X
+        Vn[:] = V
+        An[:] = A
+        t = t0 + (step + 1) * dt
+        for i in range(n):
+            ch = channel[i]
+            if ch >= 0:
+                X[i] = px[step, ch]
+                V[i] = pv[step, ch]
+                A[i] = pa[step, ch]
+            elif fidx[i] >= 0:
+                X[i] = Xn[i] + dt * Vn[i] + 0.5 * dt * dt * An[i]
+        ok = False
+        res = 0.0
+        scale = 1.0
+        for it in range(max_iter):
+            for i in range(n):
+                if fidx[i] >= 0:
+                    A[i] = c0 * (X[i] - Xn[i]) - Vn[i] / (beta * dt) - (0.5 / beta - 1.0) * An[i]
+                    V[i] = Vn[i] + dt * ((1.0 - gamma) * An[i] + gamma * A[i])
+            band[:] = 0.0
+            loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+                  pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
+            res = _residual(F, M, A, fidx, R)
+            scale = _force_scale(weight, tension)
+            stats[0] += 1
+            if res <= tol * scale and it > 0:
+                ok = True
+                break
+            if not math.isfinite(res):
+                break
+            for k in range(nd):
+                R[k] = -R[k]
+            if not band_solve(band, bw, R):
+                break
+            for i in range(n):
+                f = fidx[i]
+                if f >= 0:
+                    for r in range(3):
+                        X[i, r] += R[3 * f + r]
+        stats[1] = res
+        stats[2] = scale
+        if not ok:
+            X[:] = Xn
+            V[:] = Vn
+            A[:] = An
+            return step
+    return px.shape[0]
+
+
+@njit(cache=True)
+def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
+                 bedc, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
+                 stats):
+    """Static equilibrium by Newton with a Levenberg-Marquardt damping; X is updated in place.
+
+    Returns True when ``max |F| <= tol * scale`` at the free nodes. ``stats`` receives
+    (iterations, residual, force scale).
+    """
+    n = X.shape[0]
+    nd = 3 * nfree
+    V = np.zeros_like(X)
+    A = np.zeros_like(X)
+    band = np.zeros((nd, 2 * bw + 1))
+    empty = np.zeros((0, 2 * bw + 1))
+    R = np.zeros(nd)
+    Rt = np.zeros(nd)
+    R0 = np.zeros(nd)
+    Xt = X.copy()
+    loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
+          bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+    res = _residual(F, M, A, fidx, R)
+    # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
+    # weight moves a fraction of an element, and decreasing as Newton takes over
+    lam = env[E_G] / (0.05 * max_step)
+    for it in range(max_iter):
+        scale = _force_scale(weight, tension)
+        stats[0] = it
+        stats[1] = res
+        stats[2] = scale
+        if res <= tol * scale:
+            return True
+        for i in range(n):
+            f = fidx[i]
+            if f >= 0:
+                for r in range(3):
+                    band[3 * f + r, bw] += lam * M[i, r, r]
+        for k in range(nd):
+            R0[k] = R[k]
+            R[k] = -R[k]
+        if not band_solve(band, bw, R):
+            lam *= 10.0
+            band[:] = 0.0
+            loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+                  pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+            res = _residual(F, M, A, fidx, R)
+            continue
+        big = 0.0
+        for k in range(nd):
+            big = max(big, abs(R[k]))
+        shrink = 1.0 if big <= max_step else max_step / big
+        Xt[:] = X
+        for i in range(n):
+            f = fidx[i]
+            if f >= 0:
+                for r in range(3):
+                    Xt[i, r] += shrink * R[3 * f + r]
+        loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+              pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
+        rt = _residual(F, M, A, fidx, Rt)
+        # switched evolution relaxation: always step, lam follows the residual
+        r_new, r_old = _norm2(Rt), _norm2(R0)
+        if math.isfinite(r_new):
+            X[:] = Xt
+            lam *= min(max(r_new / r_old, 0.05), 10.0)
+        else:
+            lam *= 10.0
+        band[:] = 0.0
+        loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
+              bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+        res = _residual(F, M, A, fidx, R)
+    stats[1] = res
+    return False

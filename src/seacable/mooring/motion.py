@@ -1,0 +1,201 @@
+"""Prescribed fairlead motion: harmonic, a time series (CSV), or a rigid platform carrying fairleads.
+
+Each motion is a case-file model with a method ``channels(times, base)`` returning the positions,
+velocities and accelerations of the moved points, shape (len(times), n_points, 3), given their
+positions ``base`` (n_points, 3) at rest. Motions start from rest at ``base``: the offset is
+multiplied by a smooth ramp ``r(t) = (1 - cos(pi t / T_ramp)) / 2`` over ``ramp`` seconds.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Annotated, Literal, Union
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .._model import UNION_TAGS, Model, quantity
+from ..errors import InputError
+
+__all__ = ["HarmonicMotion", "TimeSeriesMotion", "PlatformMotion", "Motion", "rotation_matrix"]
+
+_XYZ = tuple[float, float, float]
+_SIX = tuple[float, float, float, float, float, float]
+
+
+def _ramp(t, T):
+    """Smooth ramp and its first two derivatives."""
+    t = np.asarray(t, float)
+    if T <= 0:
+        one = np.ones_like(t)
+        return one, 0 * one, 0 * one
+    s = np.clip(t / T, 0.0, 1.0)
+    inside = (t > 0) & (t < T)
+    r = 0.5 * (1 - np.cos(math.pi * s))
+    dr = np.where(inside, 0.5 * math.pi / T * np.sin(math.pi * s), 0.0)
+    ddr = np.where(inside, 0.5 * (math.pi / T) ** 2 * np.cos(math.pi * s), 0.0)
+    return r, dr, ddr
+
+
+def _ramped(off, doff, ddoff, times, T):
+    """Offset signals (nt, k) times the ramp, with the product rule."""
+    r, dr, ddr = (a[:, None] for a in _ramp(times, T))
+    return off * r, doff * r + off * dr, ddoff * r + 2 * doff * dr + off * ddr
+
+
+class HarmonicMotion(Model):
+    """Harmonic translation ``x(t) = base + amplitude sin(2 pi t / period + phase)`` of every moved point."""
+
+    type: Literal["harmonic"] = "harmonic"
+    amplitude: _XYZ = Field(description="Amplitude of the motion in x, y, z. [m]")
+    period: quantity("s", gt=0, fix="give the period in seconds, e.g. 10.") = Field(description="Period. [s]")
+    phase: quantity("rad") = Field(0.0, description="Phase at t = 0. [rad]")
+    ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start. [s]")
+
+    def channels(self, times, base):
+        t = np.asarray(times, float)
+        w = 2 * math.pi / self.period
+        amp = np.asarray(self.amplitude, float)
+        arg = (w * t + self.phase)[:, None]
+        off, doff, ddoff = _ramped(np.sin(arg) * amp, w * np.cos(arg) * amp, -w * w * np.sin(arg) * amp, t, self.ramp)
+        return _apply(base, off, doff, ddoff)
+
+
+def _apply(base, off, doff, ddoff):
+    base = np.asarray(base, float)
+    nt, k = off.shape[0], base.shape[0]
+    x = base[None, :, :] + off[:, None, :]
+    v = np.broadcast_to(doff[:, None, :], (nt, k, 3)).copy()
+    a = np.broadcast_to(ddoff[:, None, :], (nt, k, 3)).copy()
+    return x, v, a
+
+
+def _read_table(path: Path, names: tuple[str, ...]) -> np.ndarray:
+    """A CSV of named columns (a header row; '#' comments) -> array with the columns of ``names``."""
+    if not path.exists():
+        raise InputError(f"motion file '{path}' does not exist. Suggested fix: give its path relative to the case "
+                         "file.")
+    try:
+        data = np.genfromtxt(path, delimiter=",", names=True, comments="#", dtype=float, encoding="utf-8")
+    except ValueError as err:
+        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {err}.") from None
+    have = data.dtype.names or ()
+    missing = [n for n in names if n not in have]
+    if "time" in missing or len(missing) == len(names):
+        raise InputError(f"motion file '{path}' needs a header with columns 'time' and some of "
+                         f"{', '.join(names[1:])}; found {', '.join(have) or 'none'}.")
+    cols = [np.atleast_1d(data[n]) if n in have else np.zeros(np.atleast_1d(data["time"]).size) for n in names]
+    table = np.column_stack(cols)
+    if table.shape[0] < 2 or not np.all(np.isfinite(table)):
+        raise InputError(f"motion file '{path}' needs at least two rows of finite numbers.")
+    if np.any(np.diff(table[:, 0]) <= 0):
+        raise InputError(f"motion file '{path}': time must increase strictly from row to row.")
+    return table
+
+
+def _spline(table, times, path):
+    """Cubic spline of the columns 1: of ``table`` against its time column, with two derivatives."""
+    from scipy.interpolate import CubicSpline
+
+    t = np.asarray(times, float)
+    t0, t1 = table[0, 0], table[-1, 0]
+    if t.size and (t.min() < t0 - 1e-9 or t.max() > t1 + 1e-9):
+        raise InputError(f"motion file '{path}' covers {t0:g} to {t1:g} s, the run needs {t.min():g} to "
+                         f"{t.max():g} s. Suggested fix: extend the table or shorten 'duration'.")
+    cs = CubicSpline(table[:, 0], table[:, 1:], bc_type="natural")
+    return cs(t), cs(t, 1), cs(t, 2)
+
+
+class TimeSeriesMotion(Model):
+    """Offsets of the moved points from a CSV file with columns ``time, x, y, z`` (any of x, y, z may be
+    left out), as displacements from the rest position; a natural cubic spline gives velocity and
+    acceleration."""
+
+    type: Literal["time_series"] = "time_series"
+    file: str = Field(description="CSV file, relative to the case file.")
+    ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start. [s]")
+
+    def channels(self, times, base):
+        path = Path(self.file)
+        table = _read_table(path, ("time", "x", "y", "z"))
+        off, doff, ddoff = _ramped(*_spline(table, times, path), np.asarray(times, float), self.ramp)
+        return _apply(base, off, doff, ddoff)
+
+
+def rotation_matrix(roll, pitch, yaw):
+    """Rotation matrices R = Rz(yaw) Ry(pitch) Rx(roll), shape (..., 3, 3)."""
+    cr, sr, cp, sp, cy, sy = (np.cos(roll), np.sin(roll), np.cos(pitch), np.sin(pitch), np.cos(yaw), np.sin(yaw))
+    R = np.empty(np.shape(roll) + (3, 3))
+    R[..., 0, 0] = cy * cp
+    R[..., 0, 1] = cy * sp * sr - sy * cr
+    R[..., 0, 2] = cy * sp * cr + sy * sr
+    R[..., 1, 0] = sy * cp
+    R[..., 1, 1] = sy * sp * sr + cy * cr
+    R[..., 1, 2] = sy * sp * cr - cy * sr
+    R[..., 2, 0] = -sp
+    R[..., 2, 1] = cp * sr
+    R[..., 2, 2] = cp * cr
+    return R
+
+
+class PlatformMotion(Model):
+    """Rigid-body motion of a platform carrying the moved points (fairleads).
+
+    Six degrees of freedom (surge, sway, heave [m]; roll, pitch, yaw [rad], rotations about the
+    platform's ``reference`` point, R = Rz Ry Rx) either harmonic (``amplitude`` and ``phase`` of each,
+    one ``period``) or from a CSV with columns ``time, surge, sway, heave, roll, pitch, yaw``. A fairlead
+    at rest at ``p`` moves to ``reference + d + R (p - reference)``.
+    """
+
+    type: Literal["platform"] = "platform"
+    reference: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of rotation at rest. [m]")
+    amplitude: _SIX | None = Field(None, description="Harmonic amplitudes [m, m, m, rad, rad, rad].")
+    phase: _SIX = Field((0.0,) * 6, description="Phases of the six motions. [rad]")
+    period: quantity("s", gt=0) | None = Field(None, description="Period of the harmonic motion. [s]")
+    file: str | None = Field(None, description="CSV of the six motions, relative to the case file.")
+    ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start. [s]")
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if (self.file is None) == (self.amplitude is None):
+            raise ValueError("give either 'amplitude' (with 'period') for harmonic motion or 'file' for a time "
+                             "series, not both or neither.")
+        if self.amplitude is not None and self.period is None:
+            raise ValueError("harmonic platform motion needs 'period' in s.")
+        return self
+
+    def dofs(self, times):
+        """The six motions (nt, 6) and their time derivatives."""
+        t = np.asarray(times, float)
+        if self.file is not None:
+            path = Path(self.file)
+            table = _read_table(path, ("time", "surge", "sway", "heave", "roll", "pitch", "yaw"))
+            q, dq, ddq = _spline(table, t, path)
+        else:
+            w = 2 * math.pi / self.period
+            arg = w * t[:, None] + np.asarray(self.phase)
+            amp = np.asarray(self.amplitude, float)
+            q, dq, ddq = amp * np.sin(arg), w * amp * np.cos(arg), -w * w * amp * np.sin(arg)
+        return _ramped(q, dq, ddq, t, self.ramp)
+
+    def channels(self, times, base):
+        t = np.asarray(times, float)
+        base = np.asarray(base, float)
+        ref = np.asarray(self.reference, float)
+        arm = base - ref
+
+        def position(tt):
+            q = self.dofs(tt)[0]
+            R = rotation_matrix(q[:, 3], q[:, 4], q[:, 5])
+            return ref + q[:, None, :3] + np.einsum("tij,kj->tki", R, arm)
+
+        # velocities and accelerations of the rotating arm by central differences of the exact positions
+        h = 1e-3
+        x = position(t)
+        xp, xm = position(t + h), position(t - h)
+        return x, (xp - xm) / (2 * h), (xp - 2 * x + xm) / (h * h)
+
+
+Motion = Annotated[Union[HarmonicMotion, TimeSeriesMotion, PlatformMotion], Field(discriminator="type")]
+UNION_TAGS.update(("harmonic", "time_series", "platform"))

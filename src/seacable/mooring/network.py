@@ -1,0 +1,205 @@
+"""The discrete mooring system: nodes and two-node truss elements, as flat arrays.
+
+A :class:`Network` is what the compiled kernel works on. It is built from a case's line
+(:func:`network_from_line`, one line from the anchor, node 0, to the fairlead) or from a MoorDyn
+input file (``seacable.mooring.moordyn``, several lines meeting at points). Nodes are free, fixed
+(anchors) or prescribed (fairleads, moved by a motion channel). Element properties are per element,
+so a distributed clump weight is simply a run of heavy elements; a lumped clump, a buoy or a point
+mass is a node load.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError
+from ..line import Line
+
+__all__ = ["FREE", "FIXED", "PRESCRIBED", "Network", "element_damping", "network_from_line",
+           "node_arc_lengths"]
+
+FREE, FIXED, PRESCRIBED = 0, 1, 2
+
+
+@dataclass(frozen=True)
+class Network:
+    """Nodes and truss elements of a mooring system (all SI, Z up, z = 0 at the still water level).
+
+    Attributes
+    ----------
+    position : (n, 3) initial node positions. [m]
+    kind : (n,) FREE, FIXED or PRESCRIBED.
+    channel : (n,) motion channel of a prescribed node (-1 otherwise).
+    point_mass, point_added_mass : (n,) mass and isotropic added mass of attachments. [kg]
+    point_weight : (n,) net weight in water of attachments, negative when buoyant. [N]
+    point_volume : (n,) displaced volume of attachments (Froude-Krylov force). [m^3]
+    point_drag_area : (n,) C_D A of attachments. [m^2]
+    elements : (e, 2) node indices of each element, end A first.
+    length : (e,) unstretched length. [m]
+    axial_stiffness : (e,) EA. [N]
+    axial_damping : (e,) internal damping coefficient c, force c (dl/dt) / L. [N s]
+    mass_per_length, weight_per_length : (e,) mass in air [kg/m], weight in water [N/m].
+    diameter : (e,) hydrodynamic (volume-equivalent) diameter. [m]
+    cdn, cdt, can, cat : (e,) drag and added-mass coefficients normal and tangential. [-]
+    element_line : (e,) the line each element belongs to.
+    line_nodes : node indices of each line, end A to end B.
+    line_names : a name per line.
+    arc_length : (n,) unstretched arc length from end A of the node's line (NaN for a point node
+        shared by several lines). [m]
+    """
+
+    position: np.ndarray
+    kind: np.ndarray
+    channel: np.ndarray
+    point_mass: np.ndarray
+    point_added_mass: np.ndarray
+    point_weight: np.ndarray
+    point_volume: np.ndarray
+    point_drag_area: np.ndarray
+    elements: np.ndarray
+    length: np.ndarray
+    axial_stiffness: np.ndarray
+    axial_damping: np.ndarray
+    mass_per_length: np.ndarray
+    weight_per_length: np.ndarray
+    diameter: np.ndarray
+    cdn: np.ndarray
+    cdt: np.ndarray
+    can: np.ndarray
+    cat: np.ndarray
+    element_line: np.ndarray
+    line_nodes: tuple[np.ndarray, ...]
+    line_names: tuple[str, ...]
+    arc_length: np.ndarray
+    n_channels: int = 1
+    channel_names: tuple[str, ...] = field(default=("fairlead",))
+
+    @property
+    def n_nodes(self) -> int:
+        return len(self.kind)
+
+    @property
+    def n_elements(self) -> int:
+        return len(self.length)
+
+    def node_weight(self) -> np.ndarray:
+        """Net downward load on each node: half of each adjacent element plus attachments. [N]"""
+        w = self.point_weight.copy()
+        half = 0.5 * self.weight_per_length * self.length
+        np.add.at(w, self.elements[:, 0], half)
+        np.add.at(w, self.elements[:, 1], half)
+        return w
+
+    def replace(self, **changes) -> "Network":
+        from dataclasses import replace
+
+        return replace(self, **changes)
+
+
+def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffness_proportional=0.0):
+    """Internal axial damping coefficient of truss elements. [N s]
+
+    ``c = zeta L sqrt(EA m) + beta EA``: the first term is MoorDyn's rule for a damping ratio
+    ``zeta`` of the element's axial mode (its ``BA = -zeta``), the second the stiffness-proportional
+    part ``beta K`` of Rayleigh damping written as an element damper (force ``c (dl/dt) / L``).
+    """
+    ea, m, L = (np.asarray(a, float) for a in (axial_stiffness, mass_per_length, length))
+    return ratio * L * np.sqrt(ea * m) + stiffness_proportional * ea
+
+
+def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: float | None = None):
+    """Unstretched arc lengths of the nodes of ``line``, with a node at every segment end and attachment.
+
+    Each segment uses its own ``n_elements`` when given; otherwise pieces between break points get
+    elements of about ``element_length``, or of ``L / n_elements`` for the whole line.
+    """
+    L = line.length
+    target = element_length if element_length is not None else L / (n_elements or 50)
+    ends = line.segment_ends
+    cuts = []
+    for k, seg in enumerate(line.segments):
+        s0, s1 = ends[k], ends[k + 1]
+        inner = sorted({a.s for a in line.attachments if s0 + 1e-9 < a.s < s1 - 1e-9})
+        if seg.n_elements is not None and not inner:
+            cuts.append(np.linspace(s0, s1, seg.n_elements + 1)[:-1])
+            continue
+        breaks = [s0, *inner, s1]
+        for p, q in zip(breaks[:-1], breaks[1:]):
+            n = seg.n_elements or max(1, int(math.ceil((q - p) / target - 1e-9)))
+            cuts.append(np.linspace(p, q, n + 1)[:-1])
+    return np.concatenate(cuts + [np.array([L])])
+
+
+def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gravity: float,
+                      n_elements: int | None = None, element_length: float | None = None,
+                      damping_ratio: float = 0.0, stiffness_proportional: float = 0.0,
+                      end_b: str = "prescribed", initial=None) -> Network:
+    """One line from ``anchor`` (node 0, fixed) to ``fairlead`` (last node), as a network.
+
+    Parameters
+    ----------
+    line
+        The line, end A at the anchor.
+    anchor, fairlead
+        End positions (x, y, z). [m]
+    water_density, gravity
+        For the weights and the Froude-Krylov forces. [kg/m^3], [m/s^2]
+    n_elements, element_length
+        Discretisation (see :func:`node_arc_lengths`).
+    damping_ratio, stiffness_proportional
+        Element axial damping (see :func:`element_damping`). [-], [s]
+    end_b
+        ``"prescribed"`` (a fairlead moved by channel 0) or ``"free"`` (a buoy or a free end).
+    initial
+        (n, 3) initial node positions; default a straight line from anchor to fairlead.
+    """
+    s = node_arc_lengths(line, n_elements, element_length)
+    n = len(s)
+    ends = np.asarray(line.segment_ends)
+    mid = 0.5 * (s[:-1] + s[1:])
+    seg_of = np.clip(np.searchsorted(ends, mid, side="right") - 1, 0, len(line.segments) - 1)
+    types = [line.segments[k].line_type for k in seg_of]
+    for k, seg in enumerate(line.segments):
+        if seg.line_type.axial_stiffness is None:
+            raise InputError(f"line.segments[{k}] has no axial_stiffness: the mooring finite-element model needs "
+                             "EA for every line type. Suggested fix: add 'axial_stiffness' in N, e.g. 3.8e8.")
+    length = np.diff(s)
+    ea = np.array([t.axial_stiffness for t in types], float)
+    m = np.array([t.mass_per_length for t in types], float)
+    a = np.asarray(anchor, float)
+    b = np.asarray(fairlead, float)
+    position = a + np.outer(s / s[-1], b - a) if initial is None else np.asarray(initial, float)
+    kind = np.zeros(n, np.int64)
+    kind[0] = FIXED
+    channel = np.full(n, -1, np.int64)
+    if end_b == "prescribed":
+        kind[-1] = PRESCRIBED
+        channel[-1] = 0
+    zeros = np.zeros(n)
+    pm, pa, pw, pv, pd = (zeros.copy() for _ in range(5))
+    for att in line.attachments:
+        i = int(np.argmin(np.abs(s - att.s)))
+        pm[i] += att.mass
+        pa[i] += att.added_mass
+        pw[i] += att.net_weight(water_density, gravity)
+        pv[i] += att.volume
+        pd[i] += att.drag_area
+    return Network(
+        position=position, kind=kind, channel=channel, point_mass=pm, point_added_mass=pa, point_weight=pw,
+        point_volume=pv, point_drag_area=pd,
+        elements=np.column_stack([np.arange(n - 1), np.arange(1, n)]).astype(np.int64),
+        length=length, axial_stiffness=ea,
+        axial_damping=element_damping(ea, m, length, damping_ratio, stiffness_proportional),
+        mass_per_length=m,
+        weight_per_length=np.array([t.submerged_weight(water_density, gravity) for t in types], float),
+        diameter=np.array([t.diameter for t in types], float),
+        cdn=np.array([t.drag_normal for t in types], float),
+        cdt=np.array([t.drag_tangential for t in types], float),
+        can=np.array([t.added_mass_normal for t in types], float),
+        cat=np.array([t.added_mass_tangential for t in types], float),
+        element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
+        arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
+        channel_names=("fairlead",) if end_b == "prescribed" else ())

@@ -1,0 +1,314 @@
+"""Statics, pushover and Newmark time stepping of a mooring :class:`~seacable.mooring.network.Network`.
+
+:class:`MooringModel` binds a network to its water (density, gravity, current, waves, seabed) and
+holds the arrays the compiled kernel needs. :func:`static_equilibrium` finds the rest shape,
+:func:`pushover` the force-excursion curve, :func:`simulate` the response to prescribed fairlead
+motion (Newmark beta 1/4, gamma 1/2 with Newton iterations at each step).
+"""
+
+from __future__ import annotations
+
+import math
+import time as _time
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError
+from . import kernel as K
+from .network import FREE, PRESCRIBED, Network
+
+__all__ = ["Water", "MooringModel", "StaticState", "MooringRun", "static_equilibrium", "pushover",
+           "simulate", "wave_number_or_zero"]
+
+
+@dataclass(frozen=True)
+class Water:
+    """The water around a mooring: density, gravity, seabed, current and regular waves (all SI).
+
+    ``depth`` None means no seabed. The seabed plane passes through (0, 0, -depth) and rises
+    towards +x at ``slope`` [rad]. ``seabed_stiffness`` [Pa/m] and ``seabed_damping`` [Pa s/m] act
+    per unit of projected area (diameter times length); ``friction`` is Coulomb's coefficient,
+    regularised below ``friction_velocity`` [m/s]. ``current_depths`` (>= 0, increasing) and
+    ``current_speeds`` give a profile towards ``current_heading``. Waves: ``wave_height`` (crest to
+    trough), ``wave_period``, ``wave_heading``, ``wave_phase``. ``rayleigh_mass`` is the
+    mass-proportional Rayleigh coefficient [1/s].
+    """
+
+    density: float = 1025.0
+    gravity: float = 9.80665
+    depth: float | None = None
+    slope: float = 0.0
+    seabed_stiffness: float = 3.0e6
+    seabed_damping: float = 3.0e5
+    friction: float = 0.0
+    friction_velocity: float = 0.01
+    current_depths: tuple[float, ...] = (0.0,)
+    current_speeds: tuple[float, ...] = (0.0,)
+    current_heading: float = 0.0
+    wave_height: float = 0.0
+    wave_period: float = 10.0
+    wave_heading: float = 0.0
+    wave_phase: float = 0.0
+    rayleigh_mass: float = 0.0
+
+    def env_vector(self) -> np.ndarray:
+        env = np.zeros(K.ENV_SIZE)
+        depth = math.inf if self.depth is None else float(self.depth)
+        env[[K.E_RHO, K.E_G, K.E_DEPTH, K.E_SLOPE]] = self.density, self.gravity, depth, self.slope
+        env[[K.E_KBOT, K.E_CBOT, K.E_MU, K.E_VFRIC]] = (self.seabed_stiffness, self.seabed_damping, self.friction,
+                                                        self.friction_velocity)
+        env[[K.E_WH, K.E_WT, K.E_WK, K.E_WHEAD, K.E_WPHASE]] = (
+            self.wave_height, self.wave_period, wave_number_or_zero(self), self.wave_heading, self.wave_phase)
+        env[[K.E_CHEAD, K.E_ALPHA, K.E_WDEPTH]] = self.current_heading, self.rayleigh_mass, depth
+        return env
+
+    def seabed_z(self, x) -> np.ndarray:
+        """Seabed elevation under ``x`` (NaN without a seabed). [m]"""
+        x = np.asarray(x, float)
+        if self.depth is None:
+            return np.full_like(x, np.nan)
+        return -self.depth + np.tan(self.slope) * x
+
+
+def wave_number_or_zero(water: Water) -> float:
+    if water.wave_height <= 0.0:
+        return 0.0
+    from ..waves import wave_number
+
+    return float(wave_number(water.wave_period, water.depth, water.gravity))
+
+
+@dataclass
+class MooringModel:
+    """A network in its water, with the kernel's arrays (free nodes ordered for a narrow band)."""
+
+    network: Network
+    water: Water
+    fidx: np.ndarray = field(init=False)
+    nfree: int = field(init=False)
+    bw: int = field(init=False)
+
+    def __post_init__(self):
+        net = self.network
+        free = np.flatnonzero(net.kind == FREE)
+        order = _band_order(net, free)
+        self.fidx = np.full(net.n_nodes, -1, np.int64)
+        self.fidx[order] = np.arange(len(order))
+        self.nfree = len(order)
+        el = net.elements
+        both = (self.fidx[el[:, 0]] >= 0) & (self.fidx[el[:, 1]] >= 0)
+        gap = int(np.max(np.abs(self.fidx[el[both, 0]] - self.fidx[el[both, 1]]), initial=0))
+        self.bw = 3 * gap + 2
+        bedc = np.zeros(net.n_nodes)
+        half = 0.5 * net.diameter * net.length
+        np.add.at(bedc, el[:, 0], half)
+        np.add.at(bedc, el[:, 1], half)
+        self.bedc = bedc
+        self.weight = net.node_weight()
+        self.env = self.water.env_vector()
+        self.cur_depth = np.asarray(self.water.current_depths, float)
+        self.cur_speed = np.asarray(self.water.current_speeds, float)
+
+    def element_args(self):
+        n = self.network
+        return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
+                n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
+                n.point_drag_area, self.bedc)
+
+    def evaluate(self, X, V, A, t=0.0, waves=True):
+        """Node forces F (without inertia and supports), masses M and element tensions at a state.
+
+        Returns ``F, M, tension, support`` with ``support = F - M a`` the force each node applies to its
+        support (meaningful at fixed and prescribed nodes). [N], [kg], [N], [N]
+        """
+        n = self.network.n_nodes
+        F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+        tension = np.zeros(self.network.n_elements)
+        K.loads(X, V, t, *self.element_args(), self.fidx, self.env, self.cur_depth, self.cur_speed, waves,
+                F, M, tension, np.zeros((0, 2 * self.bw + 1)), self.bw, 0.0, 0.0)
+        support = F - np.einsum("nij,nj->ni", M, A)
+        return F, M, tension, support
+
+
+def _band_order(net: Network, free: np.ndarray) -> np.ndarray:
+    """Free nodes in reverse Cuthill-McKee order (a narrow band for networks of several lines)."""
+    if len(net.line_nodes) == 1:
+        return free
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import reverse_cuthill_mckee
+
+    el = net.elements
+    n = net.n_nodes
+    g = coo_matrix((np.ones(2 * len(el)), (np.r_[el[:, 0], el[:, 1]], np.r_[el[:, 1], el[:, 0]])),
+                   shape=(n, n)).tocsr()
+    sub = g[free][:, free]
+    perm = reverse_cuthill_mckee(sub, symmetric_mode=True)
+    return free[perm]
+
+
+@dataclass(frozen=True)
+class StaticState:
+    """A static equilibrium: node positions, element tensions and support forces."""
+
+    position: np.ndarray
+    tension: np.ndarray
+    support: np.ndarray
+    iterations: int
+    residual: float
+
+
+def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, max_iter: int = 500,
+                       max_step: float | None = None) -> StaticState:
+    """Static equilibrium by damped Newton from ``initial`` positions (default the network's).
+
+    Raises :class:`~seacable.errors.ConvergenceError` with the residual when it does not converge.
+    """
+    net = model.network
+    X = np.array(net.position if initial is None else initial, float)
+    n = net.n_nodes
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(net.n_elements)
+    stats = np.zeros(3)
+    step = max_step if max_step is not None else 0.5 * float(np.mean(net.length))
+    ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env, model.cur_depth,
+                        model.cur_speed, tol, max_iter, step, F, M, tension, stats)
+    if not ok:
+        raise ConvergenceError(
+            f"the static equilibrium of the mooring did not converge in {max_iter} iterations: force residual "
+            f"{stats[1]:.3g} N against a tolerance of {tol * stats[2]:.3g} N. Suggested fix: check that the "
+            "line is long enough to reach its fairlead and that buoys cannot lift it out of the water.",
+            iterations=int(stats[0]), residual=float(stats[1]))
+    _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
+    return StaticState(X, tension, support, int(stats[0]), float(stats[1]))
+
+
+def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: float = 1e-9,
+             initial: StaticState | None = None) -> list[StaticState]:
+    """Quasi-static force-excursion: the prescribed nodes moved by ``offsets`` [m] along ``direction``."""
+    net = model.network
+    d = np.asarray(direction, float)
+    d = d / np.linalg.norm(d)
+    moving = net.kind == PRESCRIBED
+    base = net.position.copy()
+    X = (initial.position if initial is not None else static_equilibrium(model, tol=tol).position).copy()
+    states = []
+    for off in np.asarray(offsets, float):
+        X[moving] = base[moving] + off * d
+        states.append(static_equilibrium(model, X, tol=tol))
+        X = states[-1].position.copy()
+    return states
+
+
+MotionFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+
+@dataclass(frozen=True)
+class MooringRun:
+    """Stored states of a time-domain run (``output`` times)."""
+
+    time: np.ndarray
+    position: np.ndarray       # (nt, n, 3)
+    velocity: np.ndarray       # (nt, n, 3)
+    tension: np.ndarray        # (nt, e)
+    support: np.ndarray        # (nt, n, 3)
+    time_step: float
+    iterations: int
+    steps: int
+    interrupted: bool
+    wall_time: float
+
+
+def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
+             *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30, beta: float = 0.25,
+             gamma: float = 0.5, progress=None, max_halvings: int = 6) -> MooringRun:
+    """Newmark time stepping from rest at ``initial`` positions (default a static equilibrium).
+
+    ``motion(times)`` returns positions, velocities and accelerations of the motion channels,
+    shape (len(times), n_channels, 3). A step that does not converge is retried with half the time
+    step, six times at most; then :class:`~seacable.errors.ConvergenceError` reports the time and the
+    residual. Ctrl-C stops the run and returns what was computed (``interrupted``).
+    """
+    net = model.network
+    n = net.n_nodes
+    X = (static_equilibrium(model).position if initial is None else np.array(initial, float)).copy()
+    V, A = np.zeros_like(X), np.zeros_like(X)
+    n_out = int(round(duration / output_interval))
+    sub = max(1, int(math.ceil(output_interval / dt - 1e-9)))
+    h = output_interval / sub
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(net.n_elements)
+    nch = max(net.n_channels, 1)
+
+    def channels(times):
+        if motion is None or net.n_channels == 0:
+            shape = (len(times), nch, 3)
+            base = np.zeros((nch, 3))
+            for i in np.flatnonzero(net.channel >= 0):
+                base[net.channel[i]] = net.position[i]
+            return np.broadcast_to(base, shape).copy(), np.zeros(shape), np.zeros(shape)
+        return motion(times)
+
+    # the state at t = 0: prescribed nodes where the motion puts them, at its velocity
+    x0, v0, a0 = channels(np.zeros(1))
+    pres = np.flatnonzero(net.channel >= 0)
+    X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
+    Fi, Mi, _, _ = model.evaluate(X, V, A)
+    free = model.fidx >= 0
+    A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
+
+    times = [0.0]
+    pos, vel = [X.copy()], [V.copy()]
+    ten, sup = [], []
+
+    def record():
+        _, _, t_e, s_n = model.evaluate(X, V, A, times[-1])
+        ten.append(t_e)
+        sup.append(s_n)
+
+    record()
+    stats = np.zeros(3)
+    iterations = steps = 0
+    interrupted = False
+    start = _time.perf_counter()
+    try:
+        for k in range(n_out):
+            t0 = k * output_interval
+            done, level = 0, 0
+            while done < sub * 2 ** level:
+                dtk = h / 2 ** level
+                m = sub * 2 ** level - done
+                tt = t0 + dtk * (done + np.arange(1, m + 1))
+                px, pv, pa = channels(tt)
+                stats[:] = 0.0
+                got = K.newmark_steps(X, V, A, t0 + done * dtk, dtk, px, pv, pa, net.channel, *model.element_args(),
+                                      model.fidx, model.nfree, model.bw, model.env, model.cur_depth,
+                                      model.cur_speed, True, beta, gamma, tol, max_iter, F, M, tension, stats)
+                iterations += int(stats[0])
+                steps += got
+                done += got
+                if got < m:
+                    if level == max_halvings:
+                        raise ConvergenceError(
+                            f"the mooring time step did not converge at t = {t0 + done * dtk:.6g} s with "
+                            f"dt = {dtk:.3g} s after {max_halvings} halvings: force residual {stats[1]:.3g} N "
+                            f"(tolerance {tol * stats[2]:.3g} N). Suggested fix: smaller time_step, more "
+                            "elements, or check the motion for a jump.",
+                            time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+                    done *= 2
+                    level += 1
+            times.append((k + 1) * output_interval)
+            pos.append(X.copy())
+            vel.append(V.copy())
+            record()
+            if progress is not None:
+                progress(times[-1], duration)
+    except KeyboardInterrupt:
+        interrupted = True
+    wall = _time.perf_counter() - start
+    nt = min(len(times), len(pos), len(vel), len(ten), len(sup))  # an interrupt may fall between appends
+    times, pos, vel, ten, sup = times[:nt], pos[:nt], vel[:nt], ten[:nt], sup[:nt]
+    return MooringRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
+                      tension=np.array(ten), support=np.array(sup), time_step=h, iterations=iterations,
+                      steps=steps, interrupted=interrupted, wall_time=wall)
