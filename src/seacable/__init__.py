@@ -19,8 +19,12 @@ from .case import (
     TowedDynamicAnalysis,
     TowedSteadyAnalysis,
     VerticalModesAnalysis,
+    MooringStaticAnalysis,
+    MooringPushoverAnalysis,
+    MooringDynamicAnalysis,
+    SeabedContact,
 )
-from .environment import Current, Environment, Seabed
+from .environment import Current, Environment, Seabed, Waves
 from .errors import (
     CaseFileError,
     ConvergenceError,
@@ -31,6 +35,7 @@ from .errors import (
 )
 from .io import load_case, parse_case
 from .laying.inputs import Bathymetry, PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion
+from .mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import run
@@ -60,6 +65,14 @@ __all__ = [
     "PayoutBottomTension",
     "Bathymetry",
     "VerticalModesAnalysis",
+    "Waves",
+    "MooringStaticAnalysis",
+    "MooringPushoverAnalysis",
+    "MooringDynamicAnalysis",
+    "SeabedContact",
+    "HarmonicMotion",
+    "TimeSeriesMotion",
+    "PlatformMotion",
     # running
     "load_case",
     "parse_case",

@@ -28,6 +28,7 @@ from .errors import InputError
 from .line import Line, LineType
 from .statics.towed import TangentialDragForm
 from .laying.inputs import Bathymetry, Payout, PayoutBottomTension, PayoutSlack, ShipMotion
+from .mooring.motion import Motion
 from .towed.vessel import VesselPath
 
 __all__ = [
@@ -39,6 +40,10 @@ __all__ = [
     "LayingTheoryAnalysis",
     "LayingDynamicAnalysis",
     "VerticalModesAnalysis",
+    "SeabedContact",
+    "MooringStaticAnalysis",
+    "MooringPushoverAnalysis",
+    "MooringDynamicAnalysis",
     "Analysis",
     "Case",
 ]
@@ -226,9 +231,95 @@ class VerticalModesAnalysis(Model):
     n_modes: int = Field(5, ge=1, le=100)
 
 
+class SeabedContact(Model):
+    """Seabed contact of the mooring finite-element model: penalty springs and dampers on the nodes.
+
+    The force per unit length of line is ``stiffness d p - damping d v_n`` (never pulling), with ``d``
+    the diameter, ``p`` the penetration and ``v_n`` the velocity normal to the seabed (MoorDyn's kBot
+    and cBot); the friction coefficient is ``environment.seabed.friction``, regularised below
+    ``friction_velocity``.
+    """
+
+    stiffness: quantity("Pa/m", ge=0, fix="MoorDyn's default is 3e6 Pa/m.") = Field(
+        3.0e6, description="Penalty stiffness per unit of projected area. [Pa/m]")
+    damping: quantity("Pa s/m", ge=0) = Field(3.0e5, description="Damping per unit of projected area. [Pa s/m]")
+    friction_velocity: quantity("m/s", gt=0) = Field(
+        0.01, description="Sliding speed below which friction is regularised. [m/s]")
+
+
+class _Mooring(_Moored):
+    """Options shared by the analyses of the mooring finite-element model (paper 004)."""
+
+    n_elements: int = Field(50, ge=1, le=100_000,
+                            description="Elements on the line, spread by length (a segment's own "
+                                        "n_elements wins).")
+    element_length: quantity("m", gt=0) | None = Field(
+        None, description="Target element length instead of n_elements. [m]")
+    seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
+    tolerance: quantity("-", gt=0, lt=1e-2) = Field(
+        1e-8, description="Newton tolerance on the force residual, relative to the largest tension or "
+                          "node weight. [-]")
+
+
+class MooringStaticAnalysis(_Mooring):
+    """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
+
+    type: Literal["mooring_static"] = "mooring_static"
+
+
+class MooringPushoverAnalysis(_Mooring):
+    """Quasi-static force-excursion curve of the finite-element model: the fairlead moved along x."""
+
+    type: Literal["mooring_pushover"] = "mooring_pushover"
+    offsets: tuple[float, ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
+    min_offset: quantity("m") = Field(0.0, description="First offset when 'offsets' is not given. [m]")
+    max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
+    n_offsets: int = Field(41, ge=2, le=100_000, description="Number of offsets from min to max.")
+
+    _range = PushoverAnalysis._range
+    offset_values = PushoverAnalysis.offset_values
+
+
+class MooringDynamicAnalysis(_Mooring):
+    """Time-domain response of the line to fairlead motion, current and waves (paper 004).
+
+    Truss finite elements, lumped and added mass, Morison loads, seabed contact, Newmark (beta 1/4,
+    gamma 1/2) with Newton iterations each step. The run starts from the static equilibrium. With
+    ``end_b: free`` the line's end B is a free node (a buoy: put an attachment at its end) and
+    ``release_from`` holds it at (x, z) for the static start, then lets it go at t = 0.
+    """
+
+    type: Literal["mooring_dynamic"] = "mooring_dynamic"
+    motion: Motion | None = Field(None, description="Fairlead motion: harmonic, time_series or platform.")
+    end_b: Literal["fairlead", "free"] = Field("fairlead", description="End B moved by 'motion', or free.")
+    release_from: _XZ | None = Field(None, description="Where a free end B is held before release (x, z). [m]")
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
+    output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
+    damping_ratio: quantity("-", ge=0, le=10) = Field(
+        0.0, description="Axial damping ratio of each element's axial mode (MoorDyn's BA = -ratio). [-]")
+    rayleigh: tuple[float, float] = Field((0.0, 0.0), description="Rayleigh damping (alpha [1/s], beta [s]).")
+    max_iterations: int = Field(30, ge=2, le=1000, description="Newton iterations per step.")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.output_interval > self.duration:
+            raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
+                             f"({self.duration:g} s).")
+        if self.end_b == "free" and self.motion is not None:
+            raise ValueError("a free end B cannot follow a 'motion'. Suggested fix: drop 'motion' or use "
+                             "end_b: fairlead.")
+        if self.release_from is not None and self.end_b != "free":
+            raise ValueError("'release_from' needs 'end_b: free'.")
+        if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
+            raise ValueError(f"rayleigh must hold two finite numbers >= 0 (alpha [1/s], beta [s]), got "
+                             f"{self.rayleigh}.")
+        return self
+
+
 ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, TowedDynamicAnalysis,
             LayingTheoryAnalysis, LayingDynamicAnalysis,
-            VerticalModesAnalysis)
+            VerticalModesAnalysis, MooringStaticAnalysis, MooringPushoverAnalysis, MooringDynamicAnalysis)
 Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
@@ -324,7 +415,7 @@ class Case(Model):
     @model_validator(mode="after")
     def _needs(self) -> "Case":
         a = self.analysis
-        if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis)):
+        if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or a.anchor is None):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
@@ -339,6 +430,11 @@ class Case(Model):
                                  "table. Suggested fix: add 'depth:' under 'environment'.")
             if a.extensible and any(seg.line_type.axial_stiffness is None for seg in self.line.segments):
                 raise ValueError("'extensible: true' needs an axial_stiffness (N) on every line type.")
+        if isinstance(a, _Mooring):
+            missing = [i for i, seg in enumerate(self.line.segments) if seg.line_type.axial_stiffness is None]
+            if missing:
+                raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
+                                 f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
         if isinstance(a, TowedSteadyAnalysis) and self.environment.current.depths is not None:
             raise ValueError("analysis 'towed_steady' takes a uniform current, got a depth profile. "
                              "Suggested fix: give 'current: {speed: ...}' or use a dynamic towed model.")

@@ -16,7 +16,7 @@ from pydantic import Field, model_validator
 from ._model import Model, quantity
 from .errors import SeacableWarning
 
-__all__ = ["Current", "Seabed", "Environment"]
+__all__ = ["Current", "Seabed", "Waves", "Environment"]
 
 
 def _warn_if_degrees(name: str, value: float, limit: float) -> None:
@@ -115,6 +115,34 @@ class Seabed(Model):
         return self
 
 
+class Waves(Model):
+    """Regular (Airy) waves: height, period, heading and phase (see :mod:`seacable.waves`).
+
+    Parameters
+    ----------
+    height
+        Crest-to-trough height. [m]
+    period
+        Period. [s]
+    heading
+        Direction the waves travel towards, from +X towards +Y. [rad]
+    phase
+        Phase of the elevation at the origin at t = 0. [rad]
+    """
+
+    height: quantity("m", ge=0, fix="give the crest-to-trough height in metres.") = Field(
+        description="Wave height. [m]")
+    period: quantity("s", gt=0, fix="give the wave period in seconds, e.g. 10.") = Field(
+        description="Wave period. [s]")
+    heading: quantity("rad") = Field(0.0, description="Direction of travel. [rad]")
+    phase: quantity("rad") = Field(0.0, description="Phase at the origin at t = 0. [rad]")
+
+    @model_validator(mode="after")
+    def _check(self) -> "Waves":
+        _warn_if_degrees("waves.heading", self.heading, 2 * math.pi)
+        return self
+
+
 class Environment(Model):
     """Water, gravity, depth, current and seabed.
 
@@ -130,6 +158,8 @@ class Environment(Model):
         The current.
     seabed
         The seabed.
+    waves
+        Regular waves, used by the mooring dynamics; ``None`` for calm water.
     """
 
     water_density: quantity("kg/m^3", gt=0, fix="sea water is about 1025 kg/m^3.") = Field(
@@ -139,6 +169,7 @@ class Environment(Model):
         None, description="Water depth; left out for deep water. [m]")
     current: Current = Current()
     seabed: Seabed = Seabed()
+    waves: Waves | None = None
 
     @model_validator(mode="after")
     def _check(self) -> "Environment":

@@ -294,6 +294,24 @@ def _run_laying_dynamic(case: Case, progress=None):
     return run_laying_dynamic(case, progress=progress)
 
 
+def _run_mooring_static(case: Case):
+    from .mooring.run import run_mooring_static
+
+    return run_mooring_static(case)
+
+
+def _run_mooring_pushover(case: Case):
+    from .mooring.run import run_mooring_pushover
+
+    return run_mooring_pushover(case)
+
+
+def _run_mooring_dynamic(case: Case, progress=None):
+    from .mooring.run import run_mooring_dynamic
+
+    return run_mooring_dynamic(case, progress=progress)
+
+
 _RUNNERS = {
     "static": _run_static,
     "pushover": _run_pushover,
@@ -303,6 +321,9 @@ _RUNNERS = {
     "laying_theory": _run_laying_theory,
     "laying_dynamic": _run_laying_dynamic,
     "vertical_modes": _run_vertical_modes,
+    "mooring_static": _run_mooring_static,
+    "mooring_pushover": _run_mooring_pushover,
+    "mooring_dynamic": _run_mooring_dynamic,
 }
 
 
@@ -332,4 +353,4 @@ def run(case: Case, progress=None):
     return runner(case)
 
 
-_TIME_DOMAIN = ("towed_dynamic", "laying_dynamic")
+_TIME_DOMAIN = ("towed_dynamic", "laying_dynamic", "mooring_dynamic")

@@ -1,0 +1,17 @@
+"""Mooring lines: the truss finite-element model of paper 004, and MoorDyn input files.
+
+Modules (imported on demand, so that ``import seacable`` does not load numba):
+
+``network``
+    Nodes and two-node truss elements as flat arrays, built from a case's line.
+``kernel``
+    Loads, tangents, the Newmark-Newton step and the static Newton solver (numba).
+``solver``
+    :class:`~seacable.mooring.solver.MooringModel`, static equilibrium, pushover, time stepping.
+``motion``
+    Prescribed fairlead motion: harmonic, time series, rigid platform.
+``moordyn``
+    A MoorDyn input file as a network (lines, fixed, vessel and free points).
+``run``
+    The ``mooring_static``, ``mooring_pushover`` and ``mooring_dynamic`` analyses as Datasets.
+"""

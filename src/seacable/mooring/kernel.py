@@ -16,8 +16,8 @@ relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
 
 (the tangential drag on the wetted perimeter ``pi d``, as MoorDyn). Attachments add mass, isotropic
 added mass, drag ``1/2 rho C_D A |u| u`` and the Froude-Krylov force of their volume. The seabed
-is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n`` (never
-pulling), with ``d_n`` the sum of ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m,
+is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
+over a small band of penetration so that the contact stiffness is continuous, with ``d_n`` the sum of ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m,
 Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
 
 Time integration: Newmark's average acceleration (beta 1/4, gamma 1/2) with Newton iterations at
@@ -43,7 +43,8 @@ __all__ = ["ENV_SIZE", "band_solve", "loads", "newmark_steps", "static_solve"]
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
 E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 12, 13, 14, 15
-ENV_SIZE = 16
+E_BEDRAMP = 16
+ENV_SIZE = 17
 
 
 @njit(cache=True)
@@ -201,23 +202,35 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
         if kb > 0.0 and bedc[i] > 0.0 and math.isfinite(depth):
             pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
-            if pen > 0.0:
+            dl = env[E_BEDRAMP]
+            if pen > -dl:
+                # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,
+                # so that Newton does not cycle at lift-off); the damper engages as r = q / (q + dl)
+                if pen < dl:
+                    q = (pen + dl) ** 2 / (4.0 * dl)
+                    dq = (pen + dl) / (2.0 * dl)
+                else:
+                    q = pen
+                    dq = 1.0
                 vn = nrm[0] * V[i, 0] + nrm[1] * V[i, 1] + nrm[2] * V[i, 2]
-                fn = kb * bedc[i] * pen - cb * bedc[i] * vn
-                if fn > 0.0:
-                    F[i] += fn * nrm
-                    vt = V[i] - vn * nrm
-                    s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
-                    if mu > 0.0:
-                        F[i] -= mu * fn / s * vt
-                    if jac and fidx[i] >= 0:
-                        for r in range(3):
-                            for c in range(3):
-                                nn = nrm[r] * nrm[c]
-                                blk[r, c] = kb * bedc[i] * nn + cc * cb * bedc[i] * nn
-                                if mu > 0.0:
-                                    blk[r, c] += cc * mu * fn * ((eye[r, c] - nn) / s - vt[r] * vt[c] / s ** 3)
-                        _add_block(band, bw, fidx[i], fidx[i], 1.0, blk)
+                ramp = q / (q + dl)
+                dramp = dl / (q + dl) ** 2 * dq
+                fn = kb * bedc[i] * q - cb * bedc[i] * ramp * vn
+                F[i] += fn * nrm
+                vt = V[i] - vn * nrm
+                s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
+                fr = mu * max(fn, 0.0) / s
+                if fr > 0.0:
+                    F[i] -= fr * vt
+                if jac and fidx[i] >= 0:
+                    dk = kb * bedc[i] * dq - cb * bedc[i] * vn * dramp
+                    for r in range(3):
+                        for c in range(3):
+                            nn = nrm[r] * nrm[c]
+                            blk[r, c] = dk * nn + cc * cb * bedc[i] * ramp * nn
+                            if fr > 0.0:
+                                blk[r, c] += cc * fr * ((eye[r, c] - nn) - vt[r] * vt[c] / (s * s))
+                    _add_block(band, bw, fidx[i], fidx[i], 1.0, blk)
         if jac and fidx[i] >= 0 and cm != 0.0:
             _add_block(band, bw, fidx[i], fidx[i], cm, M[i])
 
@@ -296,6 +309,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     nd = 3 * nfree
     band = np.zeros((nd, 2 * bw + 1))
     R = np.zeros(nd)
+    D = np.zeros(nd)
     Xn = np.empty_like(X)
     Vn = np.empty_like(V)
     An = np.empty_like(A)
@@ -316,6 +330,8 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                 X[i] = Xn[i] + dt * Vn[i] + 0.5 * dt * dt * An[i]
         ok = False
         res = 0.0
+        res_prev = np.inf
+        cuts = 0
         scale = 1.0
         for it in range(max_iter):
             for i in range(n):
@@ -331,8 +347,20 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             if res <= tol * scale and it > 0:
                 ok = True
                 break
+            if it > 0 and not (res < res_prev) and cuts < 6:
+                # backtrack: the full Newton step made things worse (contact or slack switching)
+                cuts += 1
+                for i in range(n):
+                    f = fidx[i]
+                    if f >= 0:
+                        for r in range(3):
+                            D[3 * f + r] *= 0.5
+                            X[i, r] -= D[3 * f + r]
+                continue
             if not math.isfinite(res):
                 break
+            res_prev = res
+            cuts = 0
             for k in range(nd):
                 R[k] = -R[k]
             if not band_solve(band, bw, R):
@@ -341,6 +369,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                 f = fidx[i]
                 if f >= 0:
                     for r in range(3):
+                        D[3 * f + r] = R[3 * f + r]
                         X[i, r] += R[3 * f + r]
         stats[1] = res
         stats[2] = scale

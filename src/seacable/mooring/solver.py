@@ -53,7 +53,7 @@ class Water:
     wave_phase: float = 0.0
     rayleigh_mass: float = 0.0
 
-    def env_vector(self) -> np.ndarray:
+    def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         env = np.zeros(K.ENV_SIZE)
         depth = math.inf if self.depth is None else float(self.depth)
         env[[K.E_RHO, K.E_G, K.E_DEPTH, K.E_SLOPE]] = self.density, self.gravity, depth, self.slope
@@ -62,6 +62,7 @@ class Water:
         env[[K.E_WH, K.E_WT, K.E_WK, K.E_WHEAD, K.E_WPHASE]] = (
             self.wave_height, self.wave_period, wave_number_or_zero(self), self.wave_heading, self.wave_phase)
         env[[K.E_CHEAD, K.E_ALPHA, K.E_WDEPTH]] = self.current_heading, self.rayleigh_mass, depth
+        env[K.E_BEDRAMP] = bed_ramp
         return env
 
     def seabed_z(self, x) -> np.ndarray:
@@ -107,7 +108,13 @@ class MooringModel:
         np.add.at(bedc, el[:, 1], half)
         self.bedc = bedc
         self.weight = net.node_weight()
-        self.env = self.water.env_vector()
+        # seabed damper ramp: half the mean static penetration of a node under its own weight
+        if self.water.seabed_stiffness > 0:
+            sink = np.abs(self.weight) / (self.water.seabed_stiffness * np.maximum(bedc, 1e-300))
+            ramp = 0.5 * float(np.median(sink[bedc > 0]))
+        else:
+            ramp = 1e-3
+        self.env = self.water.env_vector(max(ramp, 1e-9))
         self.cur_depth = np.asarray(self.water.current_depths, float)
         self.cur_speed = np.asarray(self.water.current_speeds, float)
 

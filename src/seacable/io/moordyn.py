@@ -1,0 +1,692 @@
+"""Read MoorDyn input files (v2, and v1 ``CONNECTION``/``NODE PROPERTIES`` files) into plain records.
+
+seacable reads the mooring *lines and points* of a MoorDyn file: the line types, the points
+(anchors, fairleads, free connection points with clump masses or buoys), the lines between
+them, the options and the output channel names. Bodies, rods, failures and other sections are
+refused with an :class:`~seacable.errors.InputError` when they have rows, so that a file is
+never half read in silence.
+
+File format (as MoorDyn-C reads it: ``MoorDyn::ReadInFile``, ``findStartOfSection``,
+``readLineProps`` and ``readOptionsLine`` in ``source/MoorDyn2.cpp`` of FloatingArrayDesign/MoorDyn,
+v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
+
+- A section header is any line containing ``---``; its kind is found from a keyword in the
+  upper-cased line: ``LINE DICTIONARY``/``LINE TYPES``; ``ROD DICTIONARY``/``ROD TYPES``;
+  ``BODIES``/``BODY LIST``/``BODY PROPERTIES``; ``POINTS``/``POINT LIST``/``POINT PROPERTIES``/
+  ``CONNECTION PROPERTIES``/``NODE PROPERTIES``; ``RODS``/``ROD LIST``/``ROD PROPERTIES``;
+  ``LINES``/``LINE LIST``/``LINE PROPERTIES``; ``FAILURE``; ``OPTIONS``; ``OUTPUT``.
+  Lines before the first section are free text (the title).
+- A table section has two lines after its header, column names and units, which MoorDyn
+  skips unread; the rows follow until the next header. ``OPTIONS`` and ``OUTPUTS`` have none.
+- Options are ``value name [comment]``. Outputs are channel names, several per line allowed.
+- The file ends at a header containing ``need this line`` or ``END``, or a line ``END``.
+- LINE TYPES, v2 (10 columns): ``name d m EA BA/-zeta EI Cd Ca CdAx CaAx``; v1 (9 columns):
+  ``name d m EA BA/-zeta Can Cat Cdn Cdt`` (no EI; coefficients in another order). The layout
+  is taken from the column-names line (``EI`` present -> v2). EA, BA and EI may be a file name
+  of a nonlinear table in MoorDyn; seacable refuses these.
+- POINTS: ``ID type X Y Z mass volume CdA Ca``, or 12 columns with ``FX FY FZ`` before ``CdA``.
+  Types: ``Fixed``/``Fix``/``Anchor`` -> ``'fixed'``; ``Vessel``/``Ves``/``Coupled``/``Cpld``/
+  ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``.
+- LINES, v2: ``ID type AttachA AttachB UnstrLen NumSegs outputs``; v1 (``LINE PROPERTIES``
+  with ``UnstrLen`` in the 3rd column): ``ID type UnstrLen NumSegs NodeAnch NodeFair flags``.
+  An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``.
+  MoorDyn looks the number up by *position* in the point list; seacable by the ID column, and
+  warns when the two differ (IDs not 1..N in file order). A negative ``UnstrLen`` is, as in
+  MoorDyn's ``Line::initialize``, a factor on the distance between the two end points.
+
+Physics MoorDyn attaches to these inputs (``source/Line.cpp``, ``Line::initialize`` and
+``Line::getStateDeriv``, FloatingArrayDesign/MoorDyn; defaults from the ``MoorDyn`` constructor
+in ``source/MoorDyn2.cpp``), for models that convert a MoorDyn file:
+
+- Internal damping: a segment of unstretched length ``l`` carries the axial damping force
+  ``BA * (dl_str/dt) / l`` along the segment. ``BA >= 0`` is used as written [N s]; ``BA < 0``
+  means ``zeta = -BA`` and MoorDyn sets ``BA = zeta * l * sqrt(EA * m)`` with ``l = L / N``
+  (``c = -BAin * UnstrLen / N * sqrt(E * rho)`` per unit area). ``zeta`` is the damping ratio of
+  the highest axial mode of the lumped-mass line (adjacent nodes out of phase):
+  ``k = 4 EA / l``, ``M = m l``, ``c = 4 BA / l`` give ``c / (2 sqrt(k M)) = BA / (l sqrt(EA m))``.
+  See :func:`moordyn_axial_damping`.
+- Seabed, per node ``i`` below the seabed ``z_b`` (vertical only):
+  ``B_z = ((z_b - z_i) * kBot - dz_i/dt * cBot) * d * l_i`` with ``l_i`` half the sum of the
+  adjacent unstretched segment lengths (half one segment at an end node).
+  Defaults ``kBot = 3.0e6 Pa/m``, ``cBot = 3.0e5 Pa s/m``.
+- Seabed friction (same nodes): ``F_max = mu * |B_z|``; ``F = mu * FricDamp * |v_h|`` with
+  ``v_h`` the node's horizontal velocity; if ``F > StatDynFricScale * F_max`` then ``F = F_max``;
+  applied opposite to ``v_h`` (zero when ``v_h = 0``). Defaults ``FrictionCoefficient mu = 0``,
+  ``FricDamp = 200``, ``StatDynFricScale = 1.0``.
+- Other defaults: ``g = 9.80665 m/s^2`` (MoorDyn v2.0.0; the 2021-22 alphas used 9.8),
+  ``rho_w = 1025 kg/m^3``, ``dtM = 0.001 s``; the water depth is raised to the depth of the
+  deepest point when ``WtrDpth`` is smaller or absent.
+
+References
+----------
+.. [1] M. Hall and A. Goupee, "Validation of a lumped-mass mooring line model with DeepCwind
+   semisubmersible model test data", Ocean Engineering 104, 590-603, 2015.
+.. [2] MoorDyn-C source, https://github.com/FloatingArrayDesign/MoorDyn (BSD-3), files
+   ``source/MoorDyn2.cpp`` and ``source/Line.cpp``; documentation ``docs/inputs.rst``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .. import _validate
+from .._model import suggest
+from ..errors import InputError, SeacableWarning
+
+__all__ = ["MoorDynInput", "MoorDynLine", "MoorDynLineType", "MoorDynPoint", "is_moordyn_file",
+           "moordyn_axial_damping", "read_moordyn"]
+
+
+@dataclass(frozen=True)
+class MoorDynLineType:
+    """One row of a MoorDyn LINE TYPES section, in SI units as written in the file.
+
+    ``axial_damping`` is the BA column as written: ``>= 0`` an internal damping coefficient
+    [N s]; ``< 0`` means ``-zeta``, a damping ratio of the segment's axial mode (see
+    :func:`moordyn_axial_damping`). ``bending_stiffness`` is 0 for v1 files.
+    """
+
+    name: str
+    diameter: float  # volume-equivalent diameter [m]
+    mass_per_length: float  # in air [kg/m]
+    axial_stiffness: float  # EA [N]
+    axial_damping: float  # BA [N s], or -zeta [-] when negative
+    bending_stiffness: float  # EI [N m^2]
+    drag_normal: float  # Cd [-]
+    added_mass_normal: float  # Ca [-]
+    drag_tangential: float  # CdAx [-]
+    added_mass_tangential: float  # CaAx [-]
+
+
+@dataclass(frozen=True)
+class MoorDynPoint:
+    """One row of a MoorDyn POINTS section; ``attachment`` is ``'fixed'``, ``'vessel'`` or ``'free'``."""
+
+    id: int
+    attachment: str
+    position: tuple[float, float, float]  # x, y, z (z up, 0 at the mean surface) [m]
+    mass: float  # point mass, e.g. a clump weight [kg]
+    volume: float  # displaced volume, e.g. a buoy [m^3]
+    drag_area: float  # CdA [m^2]
+    added_mass_coefficient: float  # Ca [-]
+
+
+@dataclass(frozen=True)
+class MoorDynLine:
+    """One row of a MoorDyn LINES section; ``length`` is the resolved unstretched length [m]."""
+
+    id: int
+    line_type: str
+    point_a: int
+    point_b: int
+    length: float  # unstretched [m]
+    n_segments: int
+    outputs: str  # MoorDyn's output flags, e.g. 'pt' or '-'
+
+
+_DEPTH = ("WtrDpth", "depth")
+_RHO = ("WtrDnsty", "rho", "Rho", "rhoW", "rhow")
+_G = ("g", "gravity")
+_KBOT = ("kBot", "kb")
+_CBOT = ("cBot", "cb")
+_DT = ("dtM", "DT")
+_CFL = ("cfl", "CFL")
+
+
+def _option(name, keys, default, doc):
+    """A read-only property: the first of the option ``keys`` present, else ``default``."""
+
+    def get(self):
+        return next((self.options[k] for k in keys if k in self.options), default)
+
+    get.__name__, get.__doc__ = name, doc
+    return property(get)
+
+
+@dataclass(frozen=True)
+class MoorDynInput:
+    """What :func:`read_moordyn` returns: the file's line types, points, lines, options and outputs."""
+
+    path: str | None
+    title: str
+    line_types: dict[str, MoorDynLineType]
+    points: tuple[MoorDynPoint, ...]
+    lines: tuple[MoorDynLine, ...]
+    options: dict[str, float | str]
+    outputs: tuple[str, ...]
+
+    water_depth = _option("water_depth", _DEPTH, None, "Water depth ``WtrDpth``/``depth``, or None. [m]")
+    water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``, default 1025. [kg/m^3]")
+    gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
+    kbot = _option("kbot", _KBOT, 3.0e6, "Seabed stiffness per contact area ``kBot``, default 3e6. [Pa/m]")
+    cbot = _option("cbot", _CBOT, 3.0e5, "Seabed damping per contact area ``cBot``, default 3e5. [Pa s/m]")
+    friction = _option("friction", ("FrictionCoefficient",), 0.0, "Seabed friction coefficient. [-]")
+    friction_damping = _option("friction_damping", ("FricDamp",), 200.0, "``FricDamp``, default 200. [s/m]")
+    static_dynamic_friction_scale = _option("static_dynamic_friction_scale", ("StatDynFricScale",), 1.0,
+                                            "``StatDynFricScale``, default 1. [-]")
+    time_step = _option("time_step", _DT, None, "Mooring time step ``dtM`` (or ``DT``), None if absent. [s]")
+    cfl = _option("cfl", _CFL, None, "CFL factor ``cfl``, None if absent. [-]")
+
+    def point(self, point_id: int) -> MoorDynPoint:
+        """Return the point with ID ``point_id``."""
+        for p in self.points:
+            if p.id == point_id:
+                return p
+        raise InputError(f"no point with ID {point_id}; the IDs are {[p.id for p in self.points]}."
+                         " Suggested fix: use one of those IDs.")
+
+
+def moordyn_axial_damping(axial_damping, axial_stiffness, mass_per_length, segment_length):
+    """Internal axial damping coefficient BA that MoorDyn uses for one segment.
+
+    ``BA`` as written when ``axial_damping >= 0``; else ``-axial_damping * l * sqrt(EA m)``,
+    i.e. ``-axial_damping`` is the damping ratio of the highest axial mode of the
+    lumped-mass line. The segment's damping force is ``BA`` times its strain rate.
+
+    Parameters
+    ----------
+    axial_damping
+        The BA/-zeta column of the line type. [N s] or [-]
+    axial_stiffness
+        Axial stiffness EA. [N]
+    mass_per_length
+        Mass per unit length in air. [kg/m]
+    segment_length
+        Unstretched segment length ``L / N``. [m]
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Damping coefficient BA. [N s]
+
+    References
+    ----------
+    .. [1] MoorDyn-C ``source/Line.cpp``, ``Line::initialize``:
+       ``c = -BAin * UnstrLen / N * sqrt(E * rho)`` with ``E = EA/A``, ``rho = m/A``.
+    """
+    ba = _validate.finite("axial_damping", axial_damping, "N s")
+    ea = _validate.positive("axial_stiffness", axial_stiffness, "N")
+    m = _validate.positive("mass_per_length", mass_per_length, "kg/m")
+    ls = _validate.positive("segment_length", segment_length, "m")
+    out = np.where(np.asarray(ba) < 0, -np.asarray(ba) * ls * np.sqrt(ea * m), ba)
+    return float(out) if out.ndim == 0 else out
+
+
+# --------------------------------------------------------------------------- parsing helpers
+
+_SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' before 'RODS'
+    ("line_types", ("LINE DICTIONARY", "LINE TYPES")),
+    ("rod_types", ("ROD DICTIONARY", "ROD TYPES")),
+    ("bodies", ("BODIES", "BODY LIST", "BODY PROPERTIES")),
+    ("points", ("POINTS", "POINT LIST", "POINT PROPERTIES", "CONNECTION PROPERTIES", "NODE PROPERTIES")),
+    ("rods", ("RODS", "ROD LIST", "ROD PROPERTIES")),
+    ("lines", ("LINES", "LINE LIST", "LINE PROPERTIES")),
+    ("failure", ("FAILURE",)),
+    ("control", ("CONTROL",)),
+    ("external_loads", ("EXTERNAL LOADS",)),
+    ("options", ("OPTIONS",)),
+    ("outputs", ("OUTPUT",)),
+)
+_UNSUPPORTED = {"rod_types": "ROD TYPES", "bodies": "BODIES", "rods": "RODS", "failure": "FAILURE",
+                "control": "CONTROL", "external_loads": "EXTERNAL LOADS"}
+_ATTACH = {"fixed": ("FIXED", "FIX", "ANCHOR"), "vessel": ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD"),
+           "free": ("FREE", "POINT", "CONNECT", "CON")}
+_FORTRAN_EXP = re.compile(r"^([+-]?(\d+\.?\d*|\.\d+))[dD]([+-]?\d+)$")
+
+
+def _as_float(token: str) -> float | None:
+    """The token as a finite float, or None (accepts Fortran ``1.0d5``)."""
+    m = _FORTRAN_EXP.match(token)
+    if m:
+        token = f"{m.group(1)}e{m.group(3)}"
+    try:
+        value = float(token)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
+
+
+class _Reader:
+    """State of one parse: the source label for messages and the lines of text."""
+
+    def __init__(self, label: str):
+        self.label = label
+
+    def error(self, lineno: int | None, message: str) -> InputError:
+        where = f"{self.label}:{lineno}" if lineno else self.label
+        return InputError(f"{where}: {message}")
+
+    def number(self, lineno, token, what, unit, fix="write a plain number in SI units") -> float:
+        value = _as_float(token)
+        if value is None:
+            raise self.error(lineno, f"{what} must be a finite number in {unit}, got {token!r}. "
+                                     f"Suggested fix: {fix}.")
+        return value
+
+    def check(self, lineno, check, what, value, unit, fix, *args):
+        """Run a ``seacable._validate`` check and prefix its message with file and line."""
+        try:
+            return check(what, value, *args, unit, fix)
+        except InputError as exc:
+            raise self.error(lineno, str(exc)) from None
+
+    def columns(self, lineno, tokens, needed, what, layout):
+        if len(tokens) < needed:
+            raise self.error(lineno, f"a {what} row must have {needed} columns ({layout}), got "
+                                     f"{len(tokens)}: {' '.join(tokens)!r}. Suggested fix: "
+                                     "fill in every column; write 0 or - where a value does not apply.")
+
+
+def _load(path_or_text, name):
+    """Return (text, path or None, label)."""
+    if isinstance(path_or_text, Path) or (isinstance(path_or_text, str) and "\n" not in path_or_text):
+        path = Path(path_or_text)
+        label = name or str(path)
+        if not path.is_file():
+            raise InputError(f"MoorDyn file {str(path)!r} not found. Suggested fix: check the path, "
+                             "or pass the file's text (with its newlines) instead of a path.")
+        data = path.read_bytes()
+        if b"\x00" in data[:4096]:
+            raise InputError(f"{label}: this is a binary file, not a MoorDyn text input file "
+                             "(a MoorDyn .ic state file?). Suggested fix: pass the MoorDyn .txt input.")
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError:
+            text = data.decode("latin-1")
+        return text, str(path), label
+    if isinstance(path_or_text, str):
+        return path_or_text, None, name or "<MoorDyn text>"
+    raise InputError(f"read_moordyn needs a path or the file's text, got {type(path_or_text).__name__}. "
+                     "Suggested fix: pass a str or pathlib.Path.")
+
+
+def _section_kind(line: str) -> str | None:
+    upper = line.upper()
+    for kind, keys in _SECTION_KEYS:
+        if any(k in upper for k in keys):
+            return kind
+    return None
+
+
+def _is_end(line: str) -> bool:
+    stripped = line.strip().upper()
+    if stripped == "END" or stripped.startswith("END "):
+        return True
+    return "---" in line and ("NEED THIS LINE" in stripped or re.search(r"\bEND\b", stripped) is not None)
+
+
+def _split_sections(rd: _Reader, text: str):
+    """Return (title lines, echo, {kind: (header lineno, header text, [(lineno, line)])})."""
+    title, sections, echo, unknown = [], {}, None, []
+    current = None  # [kind, header lineno, header text, rows] of the section being filled
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        line = raw.rstrip()
+        if _is_end(line):
+            break
+        if "---" in line:
+            kind = _section_kind(line)
+            if kind is None:  # a header seacable does not know (or the title banner)
+                current = None if not sections else ("unknown", lineno, line.strip(), [])
+                if current is not None:
+                    unknown.append(current)
+                continue
+            if kind in sections:
+                raise rd.error(lineno, f"a second {kind.replace('_', ' ').upper()} section (the first "
+                                       f"starts at line {sections[kind][1]}); MoorDyn reads only the "
+                                       "first. Suggested fix: merge the two sections into one.")
+            current = (kind, lineno, line.strip(), [])
+            sections[kind] = current
+            continue
+        if current is None:  # free text before the first section
+            tokens = line.split()
+            if len(tokens) >= 2 and tokens[1] == "Echo":
+                echo = tokens[0]
+            elif tokens:
+                title.append(line.strip())
+            continue
+        current[3].append((lineno, line))
+    for _, lineno, header, rows in unknown:
+        if any(r.strip() for _, r in rows):
+            warnings.warn(f"{rd.label}:{lineno}: section {header.strip(' -')!r} is not a MoorDyn "
+                          "section seacable knows; its rows are ignored.", SeacableWarning, stacklevel=3)
+    return title, echo, sections
+
+
+def _table(rd: _Reader, section):
+    """Return (column names, [(lineno, tokens)]) of a table section, skipping names and units."""
+    _, header_no, header, body = section
+    names = body[0][1].split() if body else []
+    rows = []
+    for index, (lineno, line) in enumerate(body):
+        tokens = line.split()
+        if index < 2:
+            if tokens and _as_float(tokens[0]) is not None:
+                which = "column names" if index == 0 else "units"
+                raise rd.error(lineno, f"the {which} line of {header.strip(' -')!r} (header at line "
+                                       f"{header_no}) must be text, got the data row {line.strip()!r}; "
+                                       "MoorDyn skips the two lines after a table header unread. "
+                                       "Suggested fix: add the column-names and units lines.")
+            continue
+        if tokens:
+            rows.append((lineno, tokens))
+    return names, rows
+
+
+def _coefficient(rd, lineno, type_name, token, column, unit):
+    value = _as_float(token)
+    if value is None:
+        if "|" in token or "." in token or "/" in token or "\\" in token or token[:1].isalpha():
+            raise rd.error(lineno, f"line type {type_name!r} column {column} must be a constant in "
+                                   f"{unit}, got {token!r}, a nonlinear table (file name or '|' list) "
+                                   "that seacable does not read. Suggested fix: replace it with a "
+                                   f"constant {column} (e.g. the secant value at the working tension).")
+        raise rd.error(lineno, f"line type {type_name!r} column {column} must be a finite number in "
+                               f"{unit}, got {token!r}. Suggested fix: write a plain number in SI units.")
+    return value
+
+
+def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
+    names, rows = _table(rd, section)
+    lowered = [n.lower() for n in names]
+    v1 = "ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(names) == 9)
+    layout = ("name d m EA BA/-zeta Can Cat Cdn Cdt" if v1
+              else "name d m EA BA/-zeta EI Cd Ca CdAx CaAx")
+    out: dict[str, MoorDynLineType] = {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 9 if v1 else 10, "LINE TYPES", layout)
+        name = t[0]
+        if name in out:
+            raise rd.error(lineno, f"line type {name!r} is defined twice. Suggested fix: give each "
+                                   "line type its own name.")
+        d = rd.number(lineno, t[1], f"line type {name!r} diameter", "m")
+        m = rd.number(lineno, t[2], f"line type {name!r} mass per length", "kg/m")
+        ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
+        ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
+        if v1:
+            ei = 0.0
+            can, cat, cdn, cdt = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
+                                  for k, c in zip(range(5, 9), ("Can", "Cat", "Cdn", "Cdt")))
+        else:
+            ei = _coefficient(rd, lineno, name, t[5], "EI", "N m^2")
+            cdn, can, cdt, cat = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
+                                  for k, c in zip(range(6, 10), ("Cd", "Ca", "CdAx", "CaAx")))
+        rd.check(lineno, _validate.positive, f"line type {name!r} diameter", d, "m",
+                 "give the volume-equivalent diameter in metres")
+        rd.check(lineno, _validate.positive, f"line type {name!r} mass per length", m, "kg/m",
+                 "give the mass per metre in air in kg/m")
+        rd.check(lineno, _validate.positive, f"line type {name!r} EA", ea, "N",
+                 "give the axial stiffness EA in newtons")
+        rd.check(lineno, _validate.nonnegative, f"line type {name!r} EI", ei, "N m^2",
+                 "give the bending stiffness in N m^2, or 0")
+        for label, value in (("Cd", cdn), ("Ca", can), ("CdAx", cdt), ("CaAx", cat)):
+            rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value, "",
+                     "hydrodynamic coefficients are >= 0")
+        out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat)
+    return out
+
+
+def _attachment(rd, lineno, word, point_id) -> str:
+    letters = re.match(r"[A-Za-z]*", word).group(0).upper()
+    for kind, words in _ATTACH.items():
+        if letters in words and not word[len(letters):]:
+            return kind
+    known = [w.title() for ws in _ATTACH.values() for w in ws]
+    if letters in ("BODY", "TURBINE"):
+        why = f"a point on a {letters.lower()} ({word!r}); seacable reads lines and points only"
+    else:
+        why = f"{word!r}, not a point type{suggest(word.title(), known)}"
+    raise rd.error(lineno, f"point {point_id} type must be Fixed, Vessel or Free, got {why}. "
+                           "Suggested fix: use Fixed (anchor), Vessel/Coupled (fairlead moved by the "
+                           "vessel) or Free (connection point).")
+
+
+def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
+    _, rows = _table(rd, section)
+    points, where = [], {}
+    layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
+    for lineno, t in rows:
+        rd.columns(lineno, t, 9, "POINTS", layout)
+        pid = _integer(rd, lineno, t[0], "point ID")
+        if pid in where:
+            raise rd.error(lineno, f"point ID {pid} is used twice (first at line {where[pid]}). "
+                                   "Suggested fix: number the points 1, 2, 3, ... once each.")
+        kind = _attachment(rd, lineno, t[1], pid)
+        x, y, z = (rd.number(lineno, t[k], f"point {pid} {c}", "m") for k, c in zip((2, 3, 4), "XYZ"))
+        mass = rd.number(lineno, t[5], f"point {pid} mass", "kg")
+        vol = rd.number(lineno, t[6], f"point {pid} volume", "m^3")
+        if len(t) >= 12:
+            forces = [rd.number(lineno, t[k], f"point {pid} F{c}", "N") for k, c in zip((7, 8, 9), "XYZ")]
+            if any(forces):
+                raise rd.error(lineno, f"point {pid} constant force (FX FY FZ) must be 0, got {forces}; "
+                                       "seacable does not apply constant point forces. Suggested fix: "
+                                       "model the load as a point mass or buoyancy (mass, volume).")
+            cda_tok, ca_tok = t[10], t[11]
+        else:
+            cda_tok, ca_tok = t[7], t[8]
+        cda = rd.number(lineno, cda_tok, f"point {pid} CdA", "m^2")
+        ca = rd.number(lineno, ca_tok, f"point {pid} Ca", "-")
+        for label, value, unit in (("mass", mass, "kg"), ("volume", vol, "m^3"), ("CdA", cda, "m^2"),
+                                   ("Ca", ca, "")):
+            rd.check(lineno, _validate.nonnegative, f"point {pid} {label}", value, unit,
+                     "point masses, volumes and coefficients are >= 0")
+        points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca))
+        where[pid] = lineno
+    return points, where
+
+
+def _integer(rd, lineno, token, what) -> int:
+    value = _as_float(token)
+    if value is None or value != int(value):
+        raise rd.error(lineno, f"{what} must be a whole number, got {token!r}. "
+                               "Suggested fix: write an integer such as 1.")
+    return int(value)
+
+
+def _point_ref(rd, lineno, token, points, line_id, end) -> int:
+    m = re.fullmatch(r"([A-Za-z]*)(\d+)([A-Za-z]*)", token)
+    prefix = m.group(1).upper() if m else ""
+    if m and prefix in ("R", "ROD") and m.group(3):
+        raise rd.error(lineno, f"line {line_id} end {end} is attached to rod end {token!r}; seacable "
+                               "reads lines and points only. Suggested fix: attach the line to a point.")
+    if not m or m.group(3) or prefix not in ("", "C", "CON", "P", "POINT"):
+        raise rd.error(lineno, f"line {line_id} end {end} must be a point ID (e.g. 1, C1 or Point1), got "
+                               f"{token!r}. Suggested fix: write the ID of a row of the POINTS section.")
+    pid = int(m.group(2))
+    if pid not in points:
+        ids = [str(k) for k in points]
+        raise rd.error(lineno, f"line {line_id} end {end} refers to point {pid}, which is not in the "
+                               f"POINTS section (IDs {', '.join(ids)}).{suggest(str(pid), ids)} "
+                               "Suggested fix: add the point or correct the ID.")
+    return pid
+
+
+def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
+    names, rows = _table(rd, section)
+    v1 = len(names) > 2 and "len" in names[2].lower()
+    layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
+              else "ID type AttachA AttachB UnstrLen NumSegs outputs")
+    cols = (4, 5, 2, 3) if v1 else (2, 3, 4, 5)  # attach A, attach B, length, segments
+    out, seen = [], {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 7, "LINES", layout)
+        lid = _integer(rd, lineno, t[0], "line ID")
+        if lid in seen:
+            raise rd.error(lineno, f"line ID {lid} is used twice (first at line {seen[lid]}). "
+                                   "Suggested fix: number the lines 1, 2, 3, ... once each.")
+        seen[lid] = lineno
+        if t[1] not in types:
+            raise rd.error(lineno, f"line {lid} line type must be one of {sorted(types)}, got "
+                                   f"{t[1]!r}.{suggest(t[1], types)} Suggested fix: use a name from the "
+                                   "LINE TYPES section (names are case-sensitive).")
+        a = _point_ref(rd, lineno, t[cols[0]], points, lid, "A")
+        b = _point_ref(rd, lineno, t[cols[1]], points, lid, "B")
+        length = rd.number(lineno, t[cols[2]], f"line {lid} unstretched length", "m")
+        nseg = _integer(rd, lineno, t[cols[3]], f"line {lid} number of segments")
+        rd.check(lineno, _validate.at_least, f"line {lid} number of segments", nseg, "",
+                 "use at least 1 segment (MoorDyn needs about 10 or more for dynamics)", 1)
+        if length < 0:  # MoorDyn: a negative length is a factor on the end-point distance
+            length = -length * math.dist(points[a].position, points[b].position)
+        rd.check(lineno, _validate.positive, f"line {lid} unstretched length", length, "m",
+                 "give the unstretched length in metres (or -factor times the end-point distance)")
+        out.append(MoorDynLine(lid, t[1], a, b, length, nseg, t[6]))
+    return out
+
+
+def _read_options(rd, section) -> dict[str, float | str]:
+    options: dict[str, float | str] = {}
+    for lineno, line in section[3]:
+        tokens = line.split()
+        if not tokens:
+            continue
+        if len(tokens) < 2:
+            raise rd.error(lineno, f"an option line must be 'value name [comment]', got "
+                                   f"{line.strip()!r}. Suggested fix: write the value, then the option "
+                                   "name (e.g. '100 WtrDpth').")
+        value = _as_float(tokens[0])
+        options[tokens[1]] = tokens[0] if value is None else value
+        _check_option(rd, lineno, tokens[1], tokens[0], value)
+    return options
+
+
+_OPTION_CHECKS = {  # name: (check, unit, fix)
+    **{k: (_validate.positive, "m", "give the water depth as a positive number of metres") for k in _DEPTH},
+    **{k: (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
+    **{k: (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
+    **{k: (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")
+       for k in _KBOT},
+    **{k: (_validate.nonnegative, "Pa s/m", "give the seabed damping per contact area, e.g. 3e5")
+       for k in _CBOT},
+    **{k: (_validate.positive, "s", "give the mooring time step in seconds, e.g. 0.001") for k in _DT},
+    **{k: (_validate.positive, "", "give a CFL factor such as 0.5") for k in _CFL},
+    "FrictionCoefficient": (_validate.nonnegative, "", "give a friction coefficient >= 0, e.g. 0.5"),
+    "FricDamp": (_validate.nonnegative, "s/m", "give the friction damping scale, default 200"),
+    "StatDynFricScale": (_validate.nonnegative, "", "give the static/dynamic friction ratio, default 1"),
+}
+
+
+def _check_option(rd, lineno, name, token, value):
+    if name not in _OPTION_CHECKS:
+        return
+    check, unit, fix = _OPTION_CHECKS[name]
+    if value is None:
+        raise rd.error(lineno, f"option {name} must be a number in {unit or 'SI units'}, got {token!r}. "
+                               f"Suggested fix: {fix}.")
+    rd.check(lineno, check, f"option {name}", value, unit, fix)
+
+
+def _read_outputs(section) -> tuple[str, ...]:
+    names = []
+    for _, line in section[3]:
+        for token in re.split(r"[\s,]+", line.strip()):
+            token = token.strip("\"'")
+            if token:
+                names.append(token)
+    return tuple(names)
+
+
+def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
+    """Read a MoorDyn v2 (or v1) input file: line types, points, lines, options and outputs.
+
+    Parameters
+    ----------
+    path_or_text : str or pathlib.Path
+        A path to the file, or the file's text (a string containing a newline).
+    name : str, optional
+        The name used for the file in error messages (default: the path, or ``<MoorDyn text>``).
+
+    Returns
+    -------
+    MoorDynInput
+        The file's contents in SI units, with convenience properties for the options.
+
+    Raises
+    ------
+    InputError
+        With the file, line number, what was wrong, what was expected and a fix: a missing
+        LINE TYPES/POINTS/LINES section; a row with too few columns; a value that is not a
+        number; an unknown line type or point ID; a duplicate ID; a non-positive diameter,
+        mass, EA or length; fewer than one segment; rows in BODIES, RODS, ROD TYPES, FAILURE;
+        a nonlinear (table) EA, BA or EI; a point type other than fixed, vessel or free; a
+        point below the seabed.
+
+    Warns
+    -----
+    SeacableWarning
+        When point IDs are not 1..N in file order (MoorDyn attaches lines by position, seacable
+        by ID), or when a section seacable does not know has rows.
+
+    References
+    ----------
+    .. [1] MoorDyn-C ``source/MoorDyn2.cpp`` (``ReadInFile``), FloatingArrayDesign/MoorDyn.
+    """
+    text, path, label = _load(path_or_text, name)
+    rd = _Reader(label)
+    title, echo, sections = _split_sections(rd, text)
+    for kind, header in _UNSUPPORTED.items():
+        if kind in sections:
+            _, rows = _table(rd, sections[kind])
+            if rows:
+                raise rd.error(rows[0][0], f"the {header} section has {len(rows)} row(s); seacable reads "
+                                           "MoorDyn lines and points only. Suggested fix: remove the "
+                                           f"{header} section, or replace it with points and lines.")
+    for kind, header in (("line_types", "LINE TYPES"), ("points", "POINTS"), ("lines", "LINES")):
+        if kind not in sections:
+            raise rd.error(None, f"the file must have a {header} section (a line of dashes containing "
+                                 f"'{header}'), found none. Suggested fix: check that this is a MoorDyn "
+                                 "input file and that the section header is spelled as MoorDyn expects.")
+    types = _read_line_types(rd, sections["line_types"])
+    points, point_lines = _read_points(rd, sections["points"])
+    by_id = {p.id: p for p in points}
+    lines = _read_lines(rd, sections["lines"], types, by_id)
+    if not lines:
+        raise rd.error(sections["lines"][1], "the LINES section must have at least one line, got none. "
+                                             "Suggested fix: add a row 'ID type AttachA AttachB UnstrLen "
+                                             "NumSegs outputs'.")
+    options = _read_options(rd, sections["options"]) if "options" in sections else {}
+    if echo is not None:
+        options.setdefault("Echo", echo)
+    outputs = _read_outputs(sections["outputs"]) if "outputs" in sections else ()
+    result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs)
+    depth = result.water_depth
+    if isinstance(depth, float):
+        for p in points:
+            if p.position[2] < -depth * (1.0 + 1e-9):
+                raise rd.error(point_lines[p.id], f"point {p.id} z must be >= -WtrDpth = {-depth:g} m, "
+                                                  f"got {p.position[2]:g} m (below the seabed; MoorDyn "
+                                                  "stops with 'Water depth is shallower than Line anchor')."
+                                                  " Suggested fix: raise the point or deepen WtrDpth.")
+    if [p.id for p in points] != list(range(1, len(points) + 1)):
+        warnings.warn(f"{label}: point IDs {[p.id for p in points]} are not 1..{len(points)} in file order; "
+                      "MoorDyn attaches lines to points by their position in the list, seacable by ID, "
+                      "so the two may connect lines differently.", SeacableWarning, stacklevel=2)
+    return result
+
+
+def is_moordyn_file(path) -> bool:
+    """Cheap sniff: is ``path`` a MoorDyn text input file?
+
+    True when the file is text (no NUL bytes) and one of its first 40 lines is a MoorDyn
+    section header (a line of dashes naming LINE TYPES, LINE DICTIONARY, POINTS, ...), or one
+    of its first 5 lines mentions ``MoorDyn``. False for YAML/JSON case files, MoorDyn's binary
+    ``.ic`` state files, directories and missing files.
+    """
+    path = Path(path)
+    if path.suffix.lower() in (".yaml", ".yml", ".json", ".nc", ".ic") or not path.is_file():
+        return False
+    try:
+        with path.open("rb") as handle:
+            head = handle.read(8192)
+    except OSError:
+        return False
+    if b"\x00" in head:
+        return False
+    lines = head.decode("utf-8", errors="replace").splitlines()[:40]
+    if any("---" in ln and _section_kind(ln) in ("line_types", "points", "lines") for ln in lines):
+        return True
+    return any("MoorDyn" in ln and not ln.lstrip().startswith("#") for ln in lines[:5])
