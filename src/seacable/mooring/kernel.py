@@ -48,17 +48,17 @@ ENV_SIZE = 17
 
 
 @njit(cache=True)
-def _fluid(x, t, env, cur_depth, cur_speed, with_waves):
-    """Water velocity and acceleration at point ``x`` and time ``t`` (current plus Airy waves)."""
-    u = np.zeros(3)
-    acc = np.zeros(3)
-    if x[2] > 0.0 and not with_waves:
-        return u, acc
+def _fluid(x, t, env, cur_depth, cur_speed, with_waves, u, acc):
+    """Water velocity ``u`` and acceleration ``acc`` at point ``x`` and time ``t`` (current plus Airy waves)."""
+    u[0] = u[1] = u[2] = 0.0
+    acc[0] = acc[1] = acc[2] = 0.0
+    if x[2] > 0.0:
+        return
     if cur_depth.size == 1:
         speed = cur_speed[0]
     else:
         speed = np.interp(-x[2], cur_depth, cur_speed)
-    if x[2] <= 0.0:
+    if speed != 0.0:
         u[0] = speed * math.cos(env[E_CHEAD])
         u[1] = speed * math.sin(env[E_CHEAD])
     if with_waves and env[E_WH] > 0.0:
@@ -70,7 +70,6 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves):
         acc[0] = wax
         acc[1] = way
         acc[2] = waz
-    return u, acc
 
 
 @njit(cache=True)
@@ -113,23 +112,25 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     eye = np.eye(3)
     blk = np.zeros((3, 3))
     hb = np.zeros((3, 3))
+    tv, uw, aw, ur, ut, un, an, vt = (np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3),
+                                      np.zeros(3), np.zeros(3), np.zeros(3))
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
-        d = X[b] - X[a]
-        l = math.sqrt(d[0] ** 2 + d[1] ** 2 + d[2] ** 2)
-        tv = d / l
+        d0, d1, d2 = X[b, 0] - X[a, 0], X[b, 1] - X[a, 1], X[b, 2] - X[a, 2]
+        l = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+        tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
         L = L0[e]
         eps = l / L - 1.0
         if eps > 0.0:
-            dv = V[b] - V[a]
-            ldot = tv[0] * dv[0] + tv[1] * dv[1] + tv[2] * dv[2]
+            ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             T = EA[e] * eps + cdamp[e] * ldot / L
             if T < 0.0:
                 T = 0.0
             tension[e] = T
-            F[a] += T * tv
-            F[b] -= T * tv
+            for r in range(3):
+                F[a, r] += T * tv[r]
+                F[b, r] -= T * tv[r]
             if jac:
                 for r in range(3):
                     for c in range(3):
@@ -147,13 +148,15 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 M[k, r, r] += mpl[e] * half
             if X[k, 2] > 0.0:
                 continue  # out of the water: no hydrodynamic load
-            uw, aw = _fluid(X[k], t, env, cur_depth, cur_speed, with_waves)
-            ur = uw - V[k]
+            _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, uw, aw)
+            for r in range(3):
+                ur[r] = uw[r] - V[k, r]
             ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
             at_s = aw[0] * tv[0] + aw[1] * tv[1] + aw[2] * tv[2]
-            ut = ut_s * tv
-            un = ur - ut
-            an = aw - at_s * tv
+            for r in range(3):
+                ut[r] = ut_s * tv[r]
+                un[r] = ur[r] - ut[r]
+                an[r] = aw[r] - at_s * tv[r]
             mn = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
             mt = abs(ut_s)
             qd = 0.5 * rho * dia[e] * half
@@ -183,11 +186,13 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         for r in range(3):
             M[i, r, r] += pmass[i] + padd[i]
         if (pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0) and X[i, 2] <= 0.0:
-            uw, aw = _fluid(X[i], t, env, cur_depth, cur_speed, with_waves)
-            ur = uw - V[i]
+            _fluid(X[i], t, env, cur_depth, cur_speed, with_waves, uw, aw)
+            for r in range(3):
+                ur[r] = uw[r] - V[i, r]
             mag = math.sqrt(ur[0] ** 2 + ur[1] ** 2 + ur[2] ** 2)
             q = 0.5 * rho * pcda[i]
-            F[i] += q * mag * ur + (rho * pvol[i] + padd[i]) * aw
+            for r in range(3):
+                F[i, r] += q * mag * ur[r] + (rho * pvol[i] + padd[i]) * aw[r]
             if jac and fidx[i] >= 0 and cc != 0.0 and q > 0.0:
                 for r in range(3):
                     for c in range(3):
@@ -216,12 +221,14 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 ramp = q / (q + dl)
                 dramp = dl / (q + dl) ** 2 * dq
                 fn = kb * bedc[i] * q - cb * bedc[i] * ramp * vn
-                F[i] += fn * nrm
-                vt = V[i] - vn * nrm
+                for r in range(3):
+                    F[i, r] += fn * nrm[r]
+                    vt[r] = V[i, r] - vn * nrm[r]
                 s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
                 fr = mu * max(fn, 0.0) / s
                 if fr > 0.0:
-                    F[i] -= fr * vt
+                    for r in range(3):
+                        F[i, r] -= fr * vt[r]
                 if jac and fidx[i] >= 0:
                     dk = kb * bedc[i] * dq - cb * bedc[i] * vn * dramp
                     for r in range(3):
@@ -322,12 +329,13 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
         t = t0 + (step + 1) * dt
         for i in range(n):
             ch = channel[i]
-            if ch >= 0:
-                X[i] = px[step, ch]
-                V[i] = pv[step, ch]
-                A[i] = pa[step, ch]
-            elif fidx[i] >= 0:
-                X[i] = Xn[i] + dt * Vn[i] + 0.5 * dt * dt * An[i]
+            for r in range(3):
+                if ch >= 0:
+                    X[i, r] = px[step, ch, r]
+                    V[i, r] = pv[step, ch, r]
+                    A[i, r] = pa[step, ch, r]
+                elif fidx[i] >= 0:
+                    X[i, r] = Xn[i, r] + dt * Vn[i, r] + 0.5 * dt * dt * An[i, r]
         ok = False
         res = 0.0
         res_prev = np.inf
@@ -336,8 +344,9 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
         for it in range(max_iter):
             for i in range(n):
                 if fidx[i] >= 0:
-                    A[i] = c0 * (X[i] - Xn[i]) - Vn[i] / (beta * dt) - (0.5 / beta - 1.0) * An[i]
-                    V[i] = Vn[i] + dt * ((1.0 - gamma) * An[i] + gamma * A[i])
+                    for r in range(3):
+                        A[i, r] = c0 * (X[i, r] - Xn[i, r]) - Vn[i, r] / (beta * dt) - (0.5 / beta - 1.0) * An[i, r]
+                        V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)

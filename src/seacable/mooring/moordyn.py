@@ -1,0 +1,223 @@
+"""A MoorDyn input file as a seacable mooring network, and its static or dynamic run.
+
+Each MoorDyn point is a node (Fixed: an anchor; Vessel/Coupled: a fairlead moved by the vessel
+motion, one channel each; Free: a connection point with its mass, volume, C_D A and C_a). Each line
+gets ``NumSegs`` truss elements between its two points, with MoorDyn's line-type data: weight in
+water ``(m - rho pi d^2 / 4) g``, axial damping ``BA`` (a negative BA is a damping ratio, MoorDyn's
+rule, see :func:`seacable.io.moordyn.moordyn_axial_damping`), normal and axial drag and added mass.
+The seabed is MoorDyn's: flat at ``WtrDpth``, ``kBot`` and ``cBot`` per projected area, friction
+coefficient ``FrictionCoefficient`` (regularised; MoorDyn's own friction law differs in detail).
+Bending stiffness is not modelled: a line type with ``EI > 0`` is run as a truss, with a warning.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from ..errors import InputError, SeacableError, SeacableWarning
+from ..io.moordyn import MoorDynInput, moordyn_axial_damping, read_moordyn
+from ..results import make_dataset, var
+from .network import FIXED, FREE, PRESCRIBED, Network
+from .run import REFERENCES, network_variables, snap_loads
+from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
+
+__all__ = ["moordyn_model", "run_moordyn_file"]
+
+_KIND = {"fixed": FIXED, "vessel": PRESCRIBED, "free": FREE}
+
+
+def _line_length(md: MoorDynInput, line, pa, pb) -> float:
+    if line.length > 0:
+        return line.length
+    # MoorDyn: a negative length is a factor on the distance between the two end points
+    return -line.length * float(np.linalg.norm(np.subtract(pb.position, pa.position)))
+
+
+def _catenary_guess(pa, pb, length, w, ea, n, depth):
+    """Node positions of a line on its elastic catenary between two points (x-z plane of the line),
+    or a straight line when the catenary has no solution."""
+    from ..statics.multisegment import line_equilibrium
+
+    a, b = np.asarray(pa, float), np.asarray(pb, float)
+    flip = b[2] < a[2]
+    if flip:
+        a, b = b, a
+    d = b - a
+    h = math.hypot(d[0], d[1])
+    s = np.linspace(0.0, length, n + 1)
+    straight = a + np.outer(s / length, d)
+    if h <= 1e-9 or w <= 0:
+        return straight[::-1] if flip else straight
+    on_seabed = depth is not None and abs(a[2] + depth) < 1e-3 * depth
+    try:
+        eq = line_equilibrium([length], [w], [ea], h, d[2], seabed=on_seabed)
+    except SeacableError:
+        return straight[::-1] if flip else straight
+    prof = eq.profile(points_per_segment=max(200, 4 * n))
+    keep = np.r_[True, np.diff(prof.s) > 0]
+    x = np.interp(s, prof.s[keep], prof.x[keep])
+    z = np.interp(s, prof.s[keep], prof.z[keep])
+    u = np.array([d[0] / h, d[1] / h, 0.0])
+    pos = a + np.outer(x, u) + np.outer(z, [0.0, 0.0, 1.0])
+    return pos[::-1] if flip else pos
+
+
+def moordyn_model(md: MoorDynInput | str, *, tolerance_check: bool = True) -> MooringModel:
+    """The :class:`~seacable.mooring.solver.MooringModel` of a MoorDyn input (a path or a parsed file)."""
+    if not isinstance(md, MoorDynInput):
+        md = read_moordyn(md)
+    rho, g = md.water_density, md.gravity
+    depth = md.water_depth
+    points = {p.id: p for p in md.points}
+    node_of = {pid: k for k, pid in enumerate(points)}
+    n_pts = len(points)
+    pos = [np.asarray(p.position, float) for p in points.values()]
+    kind = [_KIND[p.attachment] for p in points.values()]
+    channel = np.full(n_pts, -1, np.int64)
+    vessels = [k for k, p in enumerate(points.values()) if p.attachment == "vessel"]
+    channel[vessels] = np.arange(len(vessels))
+    pm = np.array([p.mass for p in points.values()], float)
+    pv = np.array([p.volume for p in points.values()], float)
+    pd = np.array([p.drag_area for p in points.values()], float)
+    pa = np.array([p.added_mass_coefficient * rho * p.volume for p in points.values()], float)
+    pw = (pm - rho * pv) * g
+    arc = [np.nan] * n_pts
+    elements, props, element_line, line_nodes = [], [], [], []
+    bent = set()
+    for li, line in enumerate(md.lines):
+        lt = md.line_types[line.line_type]
+        if lt.bending_stiffness > 0:
+            bent.add(lt.name)
+        A, B = points[line.point_a], points[line.point_b]
+        L = _line_length(md, line, A, B)
+        n = line.n_segments
+        area = math.pi * lt.diameter**2 / 4
+        w = (lt.mass_per_length - rho * area) * g
+        guess = _catenary_guess(A.position, B.position, L, w, lt.axial_stiffness, n, depth)
+        first = len(pos)
+        pos.extend(guess[1:-1])
+        kind.extend([FREE] * (n - 1))
+        arc.extend(np.linspace(0, L, n + 1)[1:-1])
+        ids = [node_of[A.id], *range(first, first + n - 1), node_of[B.id]]
+        line_nodes.append(np.array(ids, np.int64))
+        seg = L / n
+        c = moordyn_axial_damping(lt.axial_damping, lt.axial_stiffness, lt.mass_per_length, seg)
+        for k in range(n):
+            elements.append((ids[k], ids[k + 1]))
+            props.append((seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
+                          lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential))
+            element_line.append(li)
+    if bent:
+        warnings.warn(f"line type(s) {', '.join(sorted(bent))} have bending stiffness EI > 0; seacable's "
+                      "mooring model is a truss and ignores it.", SeacableWarning, stacklevel=2)
+    n_nodes = len(pos)
+    extra = n_nodes - n_pts
+    P = np.array(props, float)
+
+    def pad(a):
+        return np.r_[a, np.zeros(extra)]
+
+    net = Network(position=np.array(pos), kind=np.array(kind, np.int64), channel=np.r_[channel, -np.ones(extra, int)],
+                  point_mass=pad(pm), point_added_mass=pad(pa), point_weight=pad(pw), point_volume=pad(pv),
+                  point_drag_area=pad(pd), elements=np.array(elements, np.int64), length=P[:, 0],
+                  axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
+                  weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
+                  element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes),
+                  line_names=tuple(f"line {ln.id}" for ln in md.lines), arc_length=np.array(arc, float),
+                  n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
+                                                               if p.attachment == "vessel"))
+    water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
+                  friction=md.friction)
+    return MooringModel(net, water)
+
+
+def _line_view(model: MooringModel, li: int) -> MooringModel:
+    """A single line of a network as its own network (node 0 at end A), for the line's variables."""
+    net = model.network
+    nodes = net.line_nodes[li]
+    els = np.flatnonzero(net.element_line == li)
+    remap = np.full(net.n_nodes, -1)
+    remap[nodes] = np.arange(len(nodes))
+    sub = {f: getattr(net, f)[nodes] for f in ("position", "kind", "channel", "point_mass", "point_added_mass",
+                                               "point_weight", "point_volume", "point_drag_area", "arc_length")}
+    sub.update({f: getattr(net, f)[els] for f in ("length", "axial_stiffness", "axial_damping", "mass_per_length",
+                                                  "weight_per_length", "diameter", "cdn", "cdt", "can", "cat")})
+    view = Network(**sub, elements=remap[net.elements[els]], element_line=np.zeros(len(els), np.int64),
+                   line_nodes=(np.arange(len(nodes)),), line_names=(net.line_names[li],),
+                   n_channels=net.n_channels, channel_names=net.channel_names)
+    return MooringModel(view, model.water)
+
+
+def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings):
+    """Variables per line; a ``line`` dimension (NaN padded) when there are several lines."""
+    net = model.network
+    per_line = []
+    for li in range(len(net.line_nodes)):
+        view = _line_view(model, li)
+        nodes = net.line_nodes[li]
+        els = np.flatnonzero(net.element_line == li)
+        dims = ("node",) if time is None else ("time", "node")
+        per_line.append((view, network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims)))
+    if len(per_line) == 1:
+        view, data = per_line[0]
+        coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
+                  "s": var("node", _arc(view.network), "m", "unstretched arc length from end A")}
+    else:
+        n_max = max(v.network.n_nodes for v, _ in per_line)
+        e_max = max(v.network.n_elements for v, _ in per_line)
+        data = {}
+        for name in per_line[0][1]:
+            rows = []
+            for v, d in per_line:
+                a = np.asarray(d[name].values, float)
+                dims = d[name].dims
+                width = {"node": n_max, "element": e_max}
+                for ax, dim in enumerate(dims):
+                    if dim in width and a.shape[ax] < width[dim]:
+                        padw = [(0, 0)] * a.ndim
+                        padw[ax] = (0, width[dim] - a.shape[ax])
+                        a = np.pad(a, padw, constant_values=np.nan)
+                rows.append(a)
+            d0 = per_line[0][1][name]
+            data[name] = var(("line",) + d0.dims, np.array(rows), d0.attrs["units"], d0.attrs["long_name"])
+        coords = {"line": var("line", list(net.line_names), "1", "line"),
+                  "node": var("node", np.arange(n_max), "1", "node index, 0 at end A")}
+    if time is not None:
+        coords["time"] = var("time", time, "s", "time")
+    analysis = "mooring_static" if time is None else "mooring_dynamic"
+    return make_dataset(data, coords, analysis=analysis, references=REFERENCES, title=title, settings=settings)
+
+
+def _arc(net: Network):
+    return np.r_[0.0, np.cumsum(net.length)]
+
+
+def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_step: float = 0.1,
+                     output_interval: float = 0.5, tolerance: float = 1e-8, progress=None):
+    """Run a MoorDyn input file: the static equilibrium, and with ``duration`` the response to ``motion``.
+
+    ``motion(times)`` gives the vessel points' positions, velocities and accelerations, shape
+    (len(times), n_vessel_points, 3); ``None`` holds them still. Returns a Dataset with the names of the
+    ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with several lines).
+    """
+    md = read_moordyn(path)
+    model = moordyn_model(md)
+    st = static_equilibrium(model, tol=tolerance)
+    title = md.title or str(path)
+    settings = {"source": str(path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
+    if duration is None:
+        return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
+    if duration <= 0:
+        raise InputError(f"duration must be > 0 s, got {duration:g} s.")
+    run: MooringRun = simulate(model, motion, duration, time_step, output_interval, initial=st.position,
+                               tol=tolerance * 10, progress=progress)
+    ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
+                  settings={**settings, "time_step": run.time_step, "steps": run.steps})
+    ts, es, ps = snap_loads(run.time, run.tension)
+    ds["snap_time"] = var("snap", ts, "s", "time of the peak after an element pulled taut from slack")
+    ds["snap_tension"] = var("snap", ps, "N", "snap load (peak tension after slack)")
+    ds.attrs["interrupted"] = int(run.interrupted)
+    return ds
