@@ -48,14 +48,60 @@ class _Progress:
                   file=sys.stderr, end=end, flush=True)
 
 
+def _moordyn_motion(args):
+    """The vessel motion of a MoorDyn run from the command line: a CSV of offsets, or none."""
+    if args.motion is None:
+        return None
+    from .mooring.motion import TimeSeriesMotion
+
+    return TimeSeriesMotion(file=args.motion)
+
+
+def _run_moordyn(args):
+    """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
+    from .mooring.moordyn import moordyn_model, run_moordyn_file
+    from .mooring.network import PRESCRIBED
+
+    path = Path(args.case)
+    motion = _moordyn_motion(args)
+    fn = None
+    if motion is not None:
+        if args.duration is None:
+            from .errors import InputError
+
+            raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
+                             "e.g. '--duration 100'.")
+        import numpy as np
+
+        net = moordyn_model(path).network
+        base = net.position[net.kind == PRESCRIBED][np.argsort(net.channel[net.kind == PRESCRIBED])]
+
+        def fn(times):
+            return motion.channels(times, base)
+
+    ds = run_moordyn_file(path, duration=args.duration, motion=fn, time_step=args.time_step,
+                          output_interval=args.output_interval, progress=_Progress())
+    return ds, path.stem
+
+
 def _cmd_run(args) -> int:
     from .io import load_case
+    from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
     from .simulate import run
 
-    case = load_case(args.case)
-    out = Path(args.output) if args.output else Path(f"{case.name}.nc")
-    ds = run(case, progress=_Progress())
+    if is_moordyn_file(args.case):
+        ds, name = _run_moordyn(args)
+    else:
+        if args.duration is not None or args.motion is not None:
+            from .errors import InputError
+
+            raise InputError("--duration and --motion apply to MoorDyn input files; a YAML case gives them "
+                             "in its 'analysis'.")
+        case = load_case(args.case)
+        name = case.name
+        ds = run(case, progress=_Progress())
+    out = Path(args.output) if args.output else Path(f"{name}.nc")
     path = write_netcdf(ds, out)
     print(f"wrote {path}")
     if not args.no_plots:
@@ -120,8 +166,14 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
     p = sub.add_parser("run", help="run a case file and write its result (NetCDF) and plots (PNG)")
-    p.add_argument("case", help="YAML case file")
+    p.add_argument("case", help="YAML case file, or a MoorDyn input file (lines and points)")
     p.add_argument("-o", "--output", help="result file (.nc); default CASE_NAME.nc")
+    p.add_argument("--duration", type=float, help="MoorDyn file: simulated time after the statics [s]")
+    p.add_argument("--motion", help="MoorDyn file: CSV of vessel offsets (time, x, y, z) applied to every "
+                                    "vessel point [s, m]")
+    p.add_argument("--time-step", type=float, default=0.1, help="MoorDyn file: Newmark time step [s] (0.1)")
+    p.add_argument("--output-interval", type=float, default=0.5,
+                   help="MoorDyn file: time between stored states [s] (0.5)")
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
     p.set_defaults(func=_cmd_run)

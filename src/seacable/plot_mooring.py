@@ -102,17 +102,17 @@ def _seabed(ds) -> tuple[float, float] | None:
     text = ds.attrs.get("case")
     if not text:
         return None
-    try:
-        import yaml
+    import yaml
 
+    try:
         env = (yaml.safe_load(text) or {}).get("environment") or {}
         depth = env.get("depth")
         if depth is None:
             return None
         slope = (env.get("seabed") or {}).get("slope") or 0.0
         return float(depth), float(slope)
-    except Exception:  # a result written by another tool: no seabed drawn rather than no figure
-        return None
+    except (yaml.YAMLError, AttributeError, TypeError, ValueError):
+        return None  # a result written by another tool: no seabed drawn rather than no figure
 
 
 def _scene(ax, ds, planar: bool, xs) -> None:
@@ -204,7 +204,7 @@ def _mooring_pushover(ds, plt):
     for k, (name, line) in enumerate(lines):
         tag = f"{name}: " if name else ""
         ax1.plot(offset, _h_fairlead(line) / scale, mark, color=f"C{k}", ms=3, label=f"{tag}horizontal")
-        ax1.plot(offset, line.fairlead_tension.values / scale, mark, color=f"C{k}", ms=3, ls="--",
+        ax1.plot(offset, line.fairlead_tension.values / scale, mark.replace("-", "--"), color=f"C{k}", ms=3,
                  label=f"{tag}total")
         ax2.plot(offset, line.seabed_contact_length.values, mark, color=f"C{k}", ms=3, label=name)
     ax1.set(xlabel=_label(ds.offset), ylabel=f"fairlead tension [{unit}]", title="Force-excursion")
@@ -297,7 +297,8 @@ def _mooring_dynamic(ds, plt):
     for k, (name, line) in enumerate(lines):
         tag = f"{name}: " if name else ""
         ax1.plot(time, line.fairlead_tension.values / scale, mark, color=f"C{k}", label=f"{tag}fairlead")
-        ax1.plot(time, line.anchor_tension.values / scale, mark, color=f"C{k}", ls="--", label=f"{tag}anchor")
+        ax1.plot(time, line.anchor_tension.values / scale, mark.replace("-", "--"), color=f"C{k}",
+                 label=f"{tag}anchor")
         ax2.plot(time, line.seabed_contact_length.values, mark, color=f"C{k}", label=name)
         if has_slack:
             axes[2].plot(time, line.slack_elements.values, mark, color=f"C{k}", label=name)

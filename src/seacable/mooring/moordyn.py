@@ -212,6 +212,8 @@ def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_s
         return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
     if duration <= 0:
         raise InputError(f"duration must be > 0 s, got {duration:g} s.")
+    if motion is not None:
+        motion(np.array([0.0, duration]))  # a motion table too short fails here, before the run
     run: MooringRun = simulate(model, motion, duration, time_step, output_interval, initial=st.position,
                                tol=tolerance * 10, progress=progress)
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
