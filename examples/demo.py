@@ -28,16 +28,24 @@ CASES = {
         f"{float(ds.laid_length[-1]):.0f} m laid"),
     "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
                                      f"{float(ds.top_tension.min()):.1f} N while stopped"),
-    "oc3_hywind_line": lambda ds: (f"fairlead tension {float(ds.tension_fairlead) / 1e3:.1f} kN, "
+    "oc3_hywind_static": lambda ds: (f"fairlead tension {float(ds.tension_fairlead) / 1e3:.1f} kN, "
                                    f"{float(ds.grounded_length):.1f} m on the seabed"),
+    "oc3_hywind_line": lambda ds: (f"5 m surge at 20 s in 6 m waves: fairlead tension "
+                                   f"{float(ds.fairlead_tension.min()) / 1e3:.0f} to "
+                                   f"{float(ds.fairlead_tension.max()) / 1e3:.0f} kN (static "
+                                   f"{float(ds.fairlead_tension[0]) / 1e3:.1f} kN), truss FE, Newmark"),
+    "paper004_buoy_relaxation": lambda ds: (f"buoy released, anchor tension {float(ds.anchor_tension[0]):.3f} -> "
+                                            f"{float(ds.anchor_tension[-20:].mean()):.3f} N (at rest 0.475 N)"),
     "oc3_hywind_pushover": lambda ds: (f"H from {float(ds.H_fairlead[0]) / 1e3:.0f} to "
                                        f"{float(ds.H_fairlead[-1]) / 1e3:.0f} kN over "
                                        f"{float(ds.offset[0]):g}..{float(ds.offset[-1]):g} m"),
     "oc3_hywind_modes": lambda ds: (f"first periods {', '.join(f'{p:.2f}' for p in ds.period.values[:4])} s; "
                                     f"wave-speed estimate {float(ds.wave_period):.2f} s"),
-    "paper004_lena_pushover": lambda ds: (f"clump lifts off the seabed: grounded length "
-                                          f"{float(ds.grounded_length[0]):.0f} m at 0 m offset, "
-                                          f"{float(ds.grounded_length[-1]):.0f} m at {float(ds.offset[-1]):g} m"),
+    "paper004_lena_pushover": lambda ds: (f"clump lifts off the seabed: contact length "
+                                          f"{float(ds.seabed_contact_length[0]):.0f} m at 0 m offset, "
+                                          f"{float(ds.seabed_contact_length[-1]):.0f} m at {float(ds.offset[-1]):g} m; "
+                                          f"H {float(ds.H_fairlead[0]) / 1e3:.0f} -> "
+                                          f"{float(ds.H_fairlead[-1]) / 1e3:.0f} kN"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),

@@ -276,8 +276,13 @@ class MooringPushoverAnalysis(_Mooring):
     max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
     n_offsets: int = Field(41, ge=2, le=100_000, description="Number of offsets from min to max.")
 
-    _range = PushoverAnalysis._range
-    offset_values = PushoverAnalysis.offset_values
+    @model_validator(mode="after")
+    def _range(self):
+        return PushoverAnalysis._range(self)
+
+    def offset_values(self) -> tuple[float, ...]:
+        """The offsets to solve at. [m]"""
+        return PushoverAnalysis.offset_values(self)
 
 
 class MooringDynamicAnalysis(_Mooring):

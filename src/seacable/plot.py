@@ -340,6 +340,10 @@ FIGURES = {
     "laying_dynamic": _laying_dynamic,
 }
 
+from .plot_mooring import MOORING_FIGURES  # noqa: E402  (no import loop: it reaches back only when drawing)
+
+FIGURES.update(MOORING_FIGURES)
+
 
 def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     """Write the standard figures of a result as PNG files.

@@ -59,7 +59,7 @@ def test_user_errors_exit_2_with_one_message(tmp_path, capsys, argv, expected):
         argv = [a.replace("__BAD__", str(bad)) for a in argv]
     if "__SHORT__" in argv:  # 400 m of chain cannot span 848.67 m by 250 m
         short = tmp_path / "short.yaml"
-        short.write_text((EXAMPLES / "oc3_hywind_line.yaml").read_text().replace("length: 902.2", "length: 400.0"))
+        short.write_text((EXAMPLES / "oc3_hywind_static.yaml").read_text().replace("length: 902.2", "length: 400.0"))
         argv = [a.replace("__SHORT__", str(short)) for a in argv]
     assert main(argv) == 2
     err = capsys.readouterr().err

@@ -440,6 +440,9 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
         big = 0.0
         for k in range(nd):
             big = max(big, abs(R[k]))
+        if big <= 1e-12 * max_step and res <= 1e3 * tol * scale and lam < 1e-6:
+            # the Newton step is at round-off: a very stiff contact keeps the force residual there
+            return True
         shrink = 1.0 if big <= max_step else max_step / big
         Xt[:] = X
         for i in range(n):

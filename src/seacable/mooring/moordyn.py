@@ -188,7 +188,10 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings):
     if time is not None:
         coords["time"] = var("time", time, "s", "time")
     analysis = "mooring_static" if time is None else "mooring_dynamic"
-    return make_dataset(data, coords, analysis=analysis, references=REFERENCES, title=title, settings=settings)
+    ds = make_dataset(data, coords, analysis=analysis, references=REFERENCES, title=title, settings=settings)
+    if model.water.depth is not None:
+        ds.attrs["depth"] = float(model.water.depth)
+    return ds
 
 
 def _arc(net: Network):

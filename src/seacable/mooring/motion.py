@@ -31,7 +31,7 @@ def _ramp(t, T):
         one = np.ones_like(t)
         return one, 0 * one, 0 * one
     s = np.clip(t / T, 0.0, 1.0)
-    inside = (t > 0) & (t < T)
+    inside = (t >= 0) & (t < T)  # right-continuous at the start
     r = 0.5 * (1 - np.cos(math.pi * s))
     dr = np.where(inside, 0.5 * math.pi / T * np.sin(math.pi * s), 0.0)
     ddr = np.where(inside, 0.5 * (math.pi / T) ** 2 * np.cos(math.pi * s), 0.0)
