@@ -21,11 +21,11 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 sys.path.insert(0, str(Path(__file__).parent))
-import moordyn_peer as md  # noqa: E402
+import moordyn_peer as md
 
-from seacable.mooring.moordyn import moordyn_model  # noqa: E402
-from seacable.mooring.network import PRESCRIBED  # noqa: E402
-from seacable.mooring.solver import simulate, static_equilibrium  # noqa: E402
+from seacable.mooring.moordyn import moordyn_model
+from seacable.mooring.network import PRESCRIBED
+from seacable.mooring.solver import simulate, static_equilibrium
 
 
 def _motion_fn(base, motion):

@@ -125,8 +125,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         if eps > 0.0:
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             T = EA[e] * eps + cdamp[e] * ldot / L
-            if T < 0.0:
-                T = 0.0
+            T = max(T, 0.0)
             tension[e] = T
             for r in range(3):
                 F[a, r] += T * tv[r]
@@ -279,8 +278,7 @@ def _residual(F, M, A, fidx, R):
             for c in range(3):
                 v += M[i, r, c] * A[i, c]
             R[3 * f + r] = v
-            if abs(v) > res:
-                res = abs(v)
+            res = max(res, abs(v))
     return res
 
 

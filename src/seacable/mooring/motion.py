@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated, Literal, Union
+from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -18,7 +18,7 @@ from pydantic import Field, model_validator
 from .._model import UNION_TAGS, Model, quantity
 from ..errors import InputError
 
-__all__ = ["HarmonicMotion", "TimeSeriesMotion", "PlatformMotion", "Motion", "rotation_matrix"]
+__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "rotation_matrix"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -197,5 +197,5 @@ class PlatformMotion(Model):
         return x, (xp - xm) / (2 * h), (xp - 2 * x + xm) / (h * h)
 
 
-Motion = Annotated[Union[HarmonicMotion, TimeSeriesMotion, PlatformMotion], Field(discriminator="type")]
+Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
 UNION_TAGS.update(("harmonic", "time_series", "platform"))

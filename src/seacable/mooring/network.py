@@ -18,8 +18,15 @@ import numpy as np
 from ..errors import InputError
 from ..line import Line
 
-__all__ = ["FREE", "FIXED", "PRESCRIBED", "Network", "element_damping", "network_from_line",
-           "node_arc_lengths"]
+__all__ = [
+    "FIXED",
+    "FREE",
+    "PRESCRIBED",
+    "Network",
+    "element_damping",
+    "network_from_line",
+    "node_arc_lengths",
+]
 
 FREE, FIXED, PRESCRIBED = 0, 1, 2
 
@@ -93,7 +100,7 @@ class Network:
         np.add.at(w, self.elements[:, 1], half)
         return w
 
-    def replace(self, **changes) -> "Network":
+    def replace(self, **changes) -> Network:
         from dataclasses import replace
 
         return replace(self, **changes)

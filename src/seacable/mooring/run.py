@@ -11,8 +11,16 @@ from ..results import make_dataset, var
 from .network import PRESCRIBED, Network, network_from_line
 from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium
 
-__all__ = ["REFERENCES", "case_model", "run_mooring_static", "run_mooring_pushover", "run_mooring_dynamic",
-           "network_variables", "snap_loads", "water_of"]
+__all__ = [
+    "REFERENCES",
+    "case_model",
+    "network_variables",
+    "run_mooring_dynamic",
+    "run_mooring_pushover",
+    "run_mooring_static",
+    "snap_loads",
+    "water_of",
+]
 
 REFERENCES = (
     "Paper 004: finite-element analysis of guyed-tower mooring lines with clump weights (seeds/004): "

@@ -10,17 +10,25 @@ from __future__ import annotations
 
 import math
 import time as _time
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError
+from ..errors import ConvergenceError
 from . import kernel as K
 from .network import FREE, PRESCRIBED, Network
 
-__all__ = ["Water", "MooringModel", "StaticState", "MooringRun", "static_equilibrium", "pushover",
-           "simulate", "wave_number_or_zero"]
+__all__ = [
+    "MooringModel",
+    "MooringRun",
+    "StaticState",
+    "Water",
+    "pushover",
+    "simulate",
+    "static_equilibrium",
+    "wave_number_or_zero",
+]
 
 
 @dataclass(frozen=True)
