@@ -75,10 +75,9 @@ class StaticAnalysis(_Moored):
     points_per_segment: int = Field(50, ge=2, le=100_000, description="Profile points per segment.")
 
 
-class PushoverAnalysis(_Moored):
-    """Force-excursion curve: the fairlead moved horizontally by ``offsets``."""
+class _Offsets(Model):
+    """Horizontal fairlead offsets of a force-excursion curve: a list, or a range."""
 
-    type: Literal["pushover"] = "pushover"
     offsets: tuple[float, ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
     min_offset: quantity("m") = Field(0.0, description="First offset when 'offsets' is not given. [m]")
     max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
@@ -97,6 +96,12 @@ class PushoverAnalysis(_Moored):
             return self.offsets
         step = (self.max_offset - self.min_offset) / (self.n_offsets - 1)
         return tuple(self.min_offset + i * step for i in range(self.n_offsets))
+
+
+class PushoverAnalysis(_Offsets, _Moored):
+    """Force-excursion curve: the fairlead moved horizontally by ``offsets``."""
+
+    type: Literal["pushover"] = "pushover"
 
 
 class ModalAnalysis(_Moored):
@@ -267,22 +272,10 @@ class MooringStaticAnalysis(_Mooring):
     type: Literal["mooring_static"] = "mooring_static"
 
 
-class MooringPushoverAnalysis(_Mooring):
+class MooringPushoverAnalysis(_Offsets, _Mooring):
     """Quasi-static force-excursion curve of the finite-element model: the fairlead moved along x."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
-    offsets: tuple[float, ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
-    min_offset: quantity("m") = Field(0.0, description="First offset when 'offsets' is not given. [m]")
-    max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
-    n_offsets: int = Field(41, ge=2, le=100_000, description="Number of offsets from min to max.")
-
-    @model_validator(mode="after")
-    def _range(self):
-        return PushoverAnalysis._range(self)
-
-    def offset_values(self) -> tuple[float, ...]:
-        """The offsets to solve at. [m]"""
-        return PushoverAnalysis.offset_values(self)
 
 
 class MooringDynamicAnalysis(_Mooring):

@@ -48,38 +48,20 @@ class _Progress:
                   file=sys.stderr, end=end, flush=True)
 
 
-def _moordyn_motion(args):
-    """The vessel motion of a MoorDyn run from the command line: a CSV of offsets, or none."""
-    if args.motion is None:
-        return None
-    from .mooring.motion import TimeSeriesMotion
-
-    return TimeSeriesMotion(file=args.motion)
-
-
 def _run_moordyn(args):
     """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
-    from .mooring.moordyn import moordyn_model, run_moordyn_file
-    from .mooring.network import PRESCRIBED
+    from .errors import InputError
+    from .mooring.moordyn import run_moordyn_file
+    from .mooring.motion import TimeSeriesMotion
 
     path = Path(args.case)
-    motion = _moordyn_motion(args)
-    fn = None
-    if motion is not None:
+    motion = None
+    if args.motion is not None:
         if args.duration is None:
-            from .errors import InputError
-
             raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
                              "e.g. '--duration 100'.")
-        import numpy as np
-
-        net = moordyn_model(path).network
-        base = net.position[net.kind == PRESCRIBED][np.argsort(net.channel[net.kind == PRESCRIBED])]
-
-        def fn(times):
-            return motion.channels(times, base)
-
-    ds = run_moordyn_file(path, duration=args.duration, motion=fn, time_step=args.time_step,
+        motion = TimeSeriesMotion(file=args.motion)
+    ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=args.time_step,
                           output_interval=args.output_interval, progress=_Progress())
     return ds, path.stem
 

@@ -69,10 +69,17 @@ def test_buoy_relaxation():
     final = ds.anchor_tension.where(ds.time >= 8.0, drop=True).mean()
     # 2 %: the buoy still oscillates axially on the soft cable (EA 21 N) at about 1 % of the tension
     assert float(final) == pytest.approx(lift - w * case.line.length, rel=0.02)
-    # released from rest at the held static shape: the anchor tension at t = 0 equals the static one,
-    # the vector sum of the buoy's lift and the line's weight held by the hand (buoy node)
+    # released from rest at the held static shape: at t = 0 the anchor tension is that of the cable alone
+    # hanging between the anchor and the hand (the hand holds the buoy's lift), the elastic catenary;
+    # 4 elements give it to 2.5 % (8 and 16 elements: 0.6 % and 0.16 %, second order), hence 3 %
+    from seacable.statics.multisegment import line_equilibrium
+
+    ax, az = case.anchor_position()
+    hx, hz = case.analysis.release_from
+    lt = case.line.segments[0].line_type
+    held = line_equilibrium([case.line.length], [w], [lt.axial_stiffness], hx - ax, hz - az, seabed=False)
+    assert float(ds.anchor_tension[0]) == pytest.approx(held.tension_anchor, rel=0.03)
     x_end = ds.x.values[:, -1]
-    assert x_end[0] == pytest.approx(case.analysis.release_from[0], abs=1e-9)
     # relaxed within about 8 s (the paper's curves agree with the experiment from 4 s): buoy within
     # 2 % of the line length of the vertical over the anchor
     assert np.all(np.abs(x_end[ds.time.values >= 8.0]) < 0.02 * case.line.length)

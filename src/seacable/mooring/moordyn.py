@@ -17,11 +17,12 @@ import warnings
 
 import numpy as np
 
-from ..errors import InputError, SeacableError, SeacableWarning
+from ..errors import InputError, SeacableWarning
 from ..io.moordyn import MoorDynInput, moordyn_axial_damping, read_moordyn
 from ..results import make_dataset, var
-from .network import FIXED, FREE, PRESCRIBED, Network
-from .run import REFERENCES, network_variables, snap_loads
+from .motion import bind
+from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
+from .run import REFERENCES, network_variables, run_events
 from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
 
 __all__ = ["moordyn_model", "run_moordyn_file"]
@@ -36,36 +37,7 @@ def _line_length(md: MoorDynInput, line, pa, pb) -> float:
     return -line.length * float(np.linalg.norm(np.subtract(pb.position, pa.position)))
 
 
-def _catenary_guess(pa, pb, length, w, ea, n, depth):
-    """Node positions of a line on its elastic catenary between two points (x-z plane of the line),
-    or a straight line when the catenary has no solution."""
-    from ..statics.multisegment import line_equilibrium
-
-    a, b = np.asarray(pa, float), np.asarray(pb, float)
-    flip = b[2] < a[2]
-    if flip:
-        a, b = b, a
-    d = b - a
-    h = math.hypot(d[0], d[1])
-    s = np.linspace(0.0, length, n + 1)
-    straight = a + np.outer(s / length, d)
-    if h <= 1e-9 or w <= 0:
-        return straight[::-1] if flip else straight
-    on_seabed = depth is not None and abs(a[2] + depth) < 1e-3 * depth
-    try:
-        eq = line_equilibrium([length], [w], [ea], h, d[2], seabed=on_seabed)
-    except SeacableError:
-        return straight[::-1] if flip else straight
-    prof = eq.profile(points_per_segment=max(200, 4 * n))
-    keep = np.r_[True, np.diff(prof.s) > 0]
-    x = np.interp(s, prof.s[keep], prof.x[keep])
-    z = np.interp(s, prof.s[keep], prof.z[keep])
-    u = np.array([d[0] / h, d[1] / h, 0.0])
-    pos = a + np.outer(x, u) + np.outer(z, [0.0, 0.0, 1.0])
-    return pos[::-1] if flip else pos
-
-
-def moordyn_model(md: MoorDynInput | str, *, tolerance_check: bool = True) -> MooringModel:
+def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     """The :class:`~seacable.mooring.solver.MooringModel` of a MoorDyn input (a path or a parsed file)."""
     if not isinstance(md, MoorDynInput):
         md = read_moordyn(md)
@@ -96,7 +68,14 @@ def moordyn_model(md: MoorDynInput | str, *, tolerance_check: bool = True) -> Mo
         n = line.n_segments
         area = math.pi * lt.diameter**2 / 4
         w = (lt.mass_per_length - rho * area) * g
-        guess = _catenary_guess(A.position, B.position, L, w, lt.axial_stiffness, n, depth)
+        s = np.linspace(0.0, L, n + 1)
+        # the catenary is solved from the lower end up
+        up = A.position[2] <= B.position[2]
+        guess = (catenary_positions(A.position, B.position, s, [L], [w], [lt.axial_stiffness], depth=depth)
+                 if up else catenary_positions(B.position, A.position, L - s, [L], [w], [lt.axial_stiffness],
+                                               depth=depth))
+        if guess is None:
+            guess = np.asarray(A.position) + np.outer(s / L, np.subtract(B.position, A.position))
         first = len(pos)
         pos.extend(guess[1:-1])
         kind.extend([FREE] * (n - 1))
@@ -202,8 +181,8 @@ def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_s
                      output_interval: float = 0.5, tolerance: float = 1e-8, progress=None):
     """Run a MoorDyn input file: the static equilibrium, and with ``duration`` the response to ``motion``.
 
-    ``motion(times)`` gives the vessel points' positions, velocities and accelerations, shape
-    (len(times), n_vessel_points, 3); ``None`` holds them still. Returns a Dataset with the names of the
+    ``motion`` is a fairlead motion of :mod:`seacable.mooring.motion` applied to every vessel point;
+    ``None`` holds them still. Returns a Dataset with the names of the
     ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with several lines).
     """
     md = read_moordyn(path)
@@ -215,14 +194,11 @@ def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_s
         return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
     if duration <= 0:
         raise InputError(f"duration must be > 0 s, got {duration:g} s.")
-    if motion is not None:
-        motion(np.array([0.0, duration]))  # a motion table too short fails here, before the run
-    run: MooringRun = simulate(model, motion, duration, time_step, output_interval, initial=st.position,
+    fn = bind(motion, model.network.channel_positions(st.position), duration)
+    run: MooringRun = simulate(model, fn, duration, time_step, output_interval, initial=st.position,
                                tol=tolerance * 10, progress=progress)
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
                   settings={**settings, "time_step": run.time_step, "steps": run.steps})
-    ts, es, ps = snap_loads(run.time, run.tension)
-    ds["snap_time"] = var("snap", ts, "s", "time of the peak after an element pulled taut from slack")
-    ds["snap_tension"] = var("snap", ps, "N", "snap load (peak tension after slack)")
+    ds.update(run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
     return ds

@@ -199,3 +199,20 @@ class PlatformMotion(Model):
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
 UNION_TAGS.update(("harmonic", "time_series", "platform"))
+
+
+def bind(motion, base, duration: float):
+    """``motion`` applied to the points at ``base`` (n, 3) as a function of time, or None for no motion.
+
+    The function returns positions, velocities and accelerations (len(times), n, 3). It is evaluated once
+    at 0 and ``duration`` here, so that a time series too short fails before a run starts.
+    """
+    if motion is None:
+        return None
+    base = np.asarray(base, float)
+
+    def channels(times):
+        return motion.channels(times, base)
+
+    channels(np.array([0.0, duration]))
+    return channels

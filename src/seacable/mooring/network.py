@@ -11,6 +11,7 @@ mass is a node load.
 from __future__ import annotations
 
 import math
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -101,9 +102,15 @@ class Network:
         return w
 
     def replace(self, **changes) -> Network:
-        from dataclasses import replace
+        return dataclasses.replace(self, **changes)
 
-        return replace(self, **changes)
+    def channel_positions(self, X=None) -> np.ndarray:
+        """Positions (n_channels, 3) of the prescribed nodes in channel order, from ``X`` or at rest. [m]"""
+        X = self.position if X is None else X
+        out = np.zeros((max(self.n_channels, 1), 3))
+        moved = np.flatnonzero(self.channel >= 0)
+        out[self.channel[moved]] = X[moved]
+        return out
 
 
 def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffness_proportional=0.0):
@@ -115,6 +122,35 @@ def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffne
     """
     ea, m, L = (np.asarray(a, float) for a in (axial_stiffness, mass_per_length, length))
     return ratio * L * np.sqrt(ea * m) + stiffness_proportional * ea
+
+
+def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_loads=(), depth=None, slope=0.0):
+    """Positions at arc lengths ``s`` (from ``a``) on the elastic catenary from ``a`` up to ``b``.
+
+    The multi-segment catenary of :func:`seacable.statics.multisegment.line_equilibrium` in the vertical
+    plane through both points, on the seabed when ``a`` lies on it (``z = -depth``). Returns (len(s), 3)
+    positions, or None when ``b`` is not beside and above ``a`` or no catenary solves (a straight start
+    is then the caller's choice). [m]
+    """
+    from ..errors import SeacableError
+    from ..statics.multisegment import line_equilibrium
+
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    d = b - a
+    h = math.hypot(d[0], d[1])
+    if h <= 1e-9 or d[2] < 0 or min(weights) <= 0:
+        return None
+    on_seabed = depth is not None and abs(a[2] + depth) < 1e-6 * depth
+    try:
+        eq = line_equilibrium(lengths, weights, axial_stiffness, h, d[2], point_loads=point_loads,
+                              seabed=on_seabed, seabed_slope=slope if on_seabed else 0.0)
+    except SeacableError:
+        return None
+    prof = eq.profile(points_per_segment=400)
+    keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
+    x = np.interp(s, prof.s[keep], prof.x[keep])
+    z = np.interp(s, prof.s[keep], prof.z[keep])
+    return a + np.outer(x, [d[0] / h, d[1] / h, 0.0]) + np.outer(z, [0.0, 0.0, 1.0])
 
 
 def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: float | None = None):

@@ -8,7 +8,9 @@ import numpy as np
 
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..results import make_dataset, var
-from .network import PRESCRIBED, Network, network_from_line
+from ..simulate import line_arrays
+from .motion import bind
+from .network import FIXED, PRESCRIBED, Network, catenary_positions, network_from_line
 from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium
 
 __all__ = [
@@ -48,30 +50,6 @@ def water_of(case: Case) -> Water:
                  wave_heading=w.heading if w else 0.0, wave_phase=w.phase if w else 0.0, rayleigh_mass=alpha)
 
 
-def _initial_shape(case: Case, s, anchor, fairlead):
-    """Node positions on the multi-segment catenary when it solves, else None (a straight start)."""
-    from ..errors import SeacableError
-    from ..simulate import line_arrays
-    from ..statics.multisegment import line_equilibrium
-
-    depth = case.environment.depth
-    lengths, weights, ea, loads = line_arrays(case)
-    on_seabed = depth is not None and abs(anchor[2] + depth) < 1e-6 * depth
-    h, v = fairlead[0] - anchor[0], fairlead[2] - anchor[2]
-    if h <= 0:
-        return None
-    try:
-        eq = line_equilibrium(lengths, weights, ea, h, v, point_loads=loads, seabed=on_seabed,
-                              seabed_slope=case.environment.seabed.slope if on_seabed else 0.0)
-    except SeacableError:
-        return None
-    prof = eq.profile(points_per_segment=400)
-    keep = np.r_[True, np.diff(prof.s) > 0]
-    x = np.interp(s, prof.s[keep], prof.x[keep])
-    z = np.interp(s, prof.s[keep], prof.z[keep])
-    return np.column_stack([anchor[0] + x, np.zeros_like(s), anchor[2] + z])
-
-
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:
     """The mooring model of a case's line: anchor (node 0) to fairlead, initial shape on the catenary."""
     a = case.analysis
@@ -83,7 +61,9 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
                             stiffness_proportional=beta, end_b=end_b)
-    start = _initial_shape(case, net.arc_length, anchor, fair)
+    lengths, weights, ea, loads = line_arrays(case)
+    start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
+                               depth=env.depth, slope=env.seabed.slope)
     if start is not None:
         net = net.replace(position=start)
     return MooringModel(net, water_of(case))
@@ -197,15 +177,20 @@ def snap_loads(time, tension, threshold: float = 0.0, window: float = 2.0):
     return np.array(t_out, float), np.array(e_out, int), np.array(p_out, float)
 
 
+def run_events(run: MooringRun) -> dict:
+    """Snap loads and the count of slack elements of a time-domain run, as result variables."""
+    ts, es, ps = snap_loads(run.time, run.tension)
+    return {"snap_time": var("snap", ts, "s", "time of the peak after an element pulled taut from slack"),
+            "snap_element": var("snap", es, "1", "element of the snap load (index in the network)"),
+            "snap_tension": var("snap", ps, "N", "snap load (peak tension after slack)"),
+            "slack_elements": var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")}
+
+
 def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="mooring_dynamic", settings=None):
     """A Dataset of a time-domain run of a single-line network."""
     net = model.network
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"))
-    ts, es, ps = snap_loads(run.time, run.tension)
-    data["snap_time"] = var("snap", ts, "s", "time of the peak after an element pulled taut from slack")
-    data["snap_element"] = var("snap", es, "1", "element of the snap load")
-    data["snap_tension"] = var("snap", ps, "N", "snap load (peak tension after slack)")
-    data["slack_elements"] = var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")
+    data.update(run_events(run))
     coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
     ds = make_dataset(data, coords, analysis=analysis, case=case, references=REFERENCES,
                       settings=_settings(model, time_step=run.time_step, steps=run.steps,
@@ -219,21 +204,13 @@ def run_mooring_dynamic(case: Case, progress=None):
     """Time-domain response of the finite-element model (analysis ``mooring_dynamic``)."""
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
-    model = case_model(case, end_b="free" if free else "prescribed",
-                       fairlead=a.release_from if a.release_from is not None else None)
+    model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
     if free and a.release_from is not None:
         held = MooringModel(model.network.replace(kind=_held(model.network)), model.water)
         start = static_equilibrium(held, tol=a.tolerance).position
     else:
         start = static_equilibrium(model, tol=a.tolerance).position
-    net = model.network
-    base = start[net.kind == PRESCRIBED]
-    if a.motion is None or free:
-        motion = None
-    else:
-        def motion(times):
-            return a.motion.channels(times, base)
-        motion(np.array([0.0, a.duration]))  # a time series too short fails here, before the run
+    motion = bind(a.motion, model.network.channel_positions(start), a.duration)
     run = simulate(model, motion, a.duration, a.time_step, a.output_interval, initial=start,
                    tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress)
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
@@ -243,5 +220,5 @@ def run_mooring_dynamic(case: Case, progress=None):
 def _held(net: Network):
     """Kinds with the last node fixed (a free end held for the static start)."""
     kind = net.kind.copy()
-    kind[net.line_nodes[0][-1]] = 1
+    kind[net.line_nodes[0][-1]] = FIXED
     return kind

@@ -259,10 +259,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     def channels(times):
         if motion is None or net.n_channels == 0:
             shape = (len(times), nch, 3)
-            base = np.zeros((nch, 3))
-            for i in np.flatnonzero(net.channel >= 0):
-                base[net.channel[i]] = net.position[i]
-            return np.broadcast_to(base, shape).copy(), np.zeros(shape), np.zeros(shape)
+            return np.broadcast_to(net.channel_positions(), shape).copy(), np.zeros(shape), np.zeros(shape)
         return motion(times)
 
     # the state at t = 0: prescribed nodes where the motion puts them, at its velocity
