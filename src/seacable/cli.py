@@ -52,7 +52,7 @@ def _run_moordyn(args):
     """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
     from .errors import InputError
     from .mooring.moordyn import run_moordyn_file
-    from .mooring.motion import TimeSeriesMotion
+    from .mooring.motion import motion_from_csv
 
     path = Path(args.case)
     motion = None
@@ -60,7 +60,7 @@ def _run_moordyn(args):
         if args.duration is None:
             raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
                              "e.g. '--duration 100'.")
-        motion = TimeSeriesMotion(file=args.motion)
+        motion = motion_from_csv(args.motion)
     ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=args.time_step,
                           output_interval=args.output_interval, progress=_Progress())
     return ds, path.stem
@@ -152,7 +152,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", help="result file (.nc); default CASE_NAME.nc")
     p.add_argument("--duration", type=float, help="MoorDyn file: simulated time after the statics [s]")
     p.add_argument("--motion", help="MoorDyn file: CSV of vessel offsets (time, x, y, z) applied to every "
-                                    "vessel point [s, m]")
+                                    "vessel point [s, m], or of rigid platform motions about the origin "
+                                    "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]")
     p.add_argument("--time-step", type=float, default=0.1, help="MoorDyn file: Newmark time step [s] (0.1)")
     p.add_argument("--output-interval", type=float, default=0.5,
                    help="MoorDyn file: time between stored states [s] (0.5)")

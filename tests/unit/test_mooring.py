@@ -11,7 +11,7 @@ import pytest
 import seacable as sc
 from seacable.cli import main
 from seacable.mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
-from seacable.mooring.network import PRESCRIBED, element_damping, network_from_line
+from seacable.mooring.network import element_damping, network_from_line
 from seacable.mooring.solver import MooringModel, Water, simulate, static_equilibrium
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
@@ -46,7 +46,11 @@ def test_platform_yaw_moves_fairleads_on_circles():
     assert np.linalg.norm(x[..., :2], axis=-1) == pytest.approx(np.broadcast_to(r0, (9, 2)), rel=1e-12)
     assert x[..., 2] == pytest.approx(-10.0)
     # the velocity is yaw rate x arm: speed = r |d psi/dt|; at t = 0, d psi/dt = 0.2 * 2 pi / 20
-    assert np.linalg.norm(v[0], axis=-1) == pytest.approx(r0 * 0.2 * 2 * math.pi / 20, rel=1e-6)
+    rate = 0.2 * 2 * math.pi / 20
+    assert np.linalg.norm(v[0], axis=-1) == pytest.approx(r0 * rate, rel=1e-6)
+    # and there (yaw 0, d2 psi/dt2 = 0) the acceleration is centripetal, r (d psi/dt)^2 towards the axis
+    # (differences of step 1e-4 in the motions: truncation 1e-8, round-off 1e-14 m / 1e-8 = 1e-6 m/s^2)
+    assert a[0, :, :2] == pytest.approx(-arm[:, :2] * rate**2, abs=1e-5)
 
 
 def test_time_series_motion_reads_csv(tmp_path):
@@ -58,6 +62,9 @@ def test_time_series_motion_reads_csv(tmp_path):
     # a natural cubic spline of a parabola: exact away from the ends to ~1e-3 relative
     assert x[:, 0, 2] == pytest.approx([2.0, 12.5], rel=1e-3)
     assert v[:, 0, 2] == pytest.approx([2.0, 5.0], rel=1e-2)
+    # the natural end condition (zero curvature) decays within a few of the 0.1 s knots: at 2 s and 5 s the
+    # spline's second derivative is the parabola's, 1 m/s^2
+    assert a[:, 0, 2] == pytest.approx([1.0, 1.0], rel=1e-2)
     with pytest.raises(sc.InputError, match="covers 0 to 10 s"):
         m.channels(np.array([11.0]), np.zeros((1, 3)))
     bad = tmp_path / "bad.csv"
@@ -221,3 +228,29 @@ def test_cli_runs_a_moordyn_file(tmp_path, capsys):
     assert main(["run", str(bad), "--no-plots"]) == 2
     err = capsys.readouterr().err
     assert "chainX" in err and "Traceback" not in err
+
+
+def test_cli_moves_vessel_points_rigidly_from_a_platform_csv(tmp_path):
+    """A CSV with surge and yaw columns is a rigid platform motion: the three fairleads move on it."""
+    import xarray as xr
+
+    from seacable.mooring.moordyn import run_moordyn_file
+
+    f = tmp_path / "spread.txt"
+    lines = THREE_LINES.replace("4     Free        0       0       -50     100    30      1.0    1.0",
+                                "4     Vessel      0       0       -50     0      0       0      0")
+    f.write_text(lines)
+    t = np.linspace(0.0, 4.0, 41)
+    csv = tmp_path / "platform.csv"
+    np.savetxt(csv, np.column_stack([t, 2.0 * np.sin(t), 0.05 * t]), delimiter=",", header="time,surge,yaw",
+               comments="")
+    out = tmp_path / "spread.nc"
+    assert main(["run", str(f), "--duration", "2", "--motion", str(csv), "-o", str(out), "--no-plots"]) == 0
+    ds = xr.open_dataset(out)
+    ref = run_moordyn_file(f, duration=2.0, motion=PlatformMotion(file=str(csv)))
+    # the CLI ran the platform motion (not offsets of x): the same tensions as the Python API, to the
+    # NetCDF round trip
+    assert ds.fairlead_tension.values == pytest.approx(ref.fairlead_tension.values, rel=1e-12)
+    # the point at the origin only surges (the yaw turns it in place): x = 2 sin(2) at t = 2 s (the spline
+    # through 41 samples of sin is exact to ~1e-5)
+    assert float(ds.x.sel(time=2.0).isel(line=0, node=-1)) == pytest.approx(2 * math.sin(2.0), abs=1e-4)

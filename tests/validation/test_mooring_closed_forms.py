@@ -16,9 +16,8 @@ from scipy.signal import find_peaks
 
 import seacable as sc
 from seacable.mooring.motion import PlatformMotion
-from seacable.mooring.network import catenary_positions, network_from_line
+from seacable.mooring.network import network_from_line
 from seacable.mooring.solver import MooringModel, Water, simulate, static_equilibrium
-from seacable.statics.multisegment import line_equilibrium
 
 RHO, G = 1025.0, 9.81
 CHAIN = sc.LineType(diameter=0.09, mass_per_length=77.7066, weight_in_water=698.094, axial_stiffness=384.243e6,

@@ -185,16 +185,34 @@ class PlatformMotion(Model):
         ref = np.asarray(self.reference, float)
         arm = base - ref
 
-        def position(tt):
-            q = self.dofs(tt)[0]
+        def position(q):
             R = rotation_matrix(q[:, 3], q[:, 4], q[:, 5])
             return ref + q[:, None, :3] + np.einsum("tij,kj->tki", R, arm)
 
-        # velocities and accelerations of the rotating arm by central differences of the exact positions
-        h = 1e-3
-        x = position(t)
-        xp, xm = position(t + h), position(t - h)
-        return x, (xp - xm) / (2 * h), (xp - 2 * x + xm) / (h * h)
+        # velocity and acceleration of the rotating arm by central differences in the motions (not in time,
+        # so a time series is never read outside its table): v = P'(q) q', a = P'(q) q'' + q'^T P''(q) q'
+        q, dq, ddq = self.dofs(t)
+        h = 1e-4
+        x = position(q)
+        xp, xm = position(q + h * dq), position(q - h * dq)
+        v = (xp - xm) / (2 * h)
+        a = (xp - 2 * x + xm) / (h * h) + (position(q + h * ddq) - position(q - h * ddq)) / (2 * h)
+        return x, v, a
+
+
+def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
+    """The motion a CSV describes: a rigid platform when its header names any of surge, sway, heave,
+    roll, pitch, yaw (about the origin; [m], [rad]), otherwise offsets x, y, z of every moved point [m].
+    """
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"motion file '{path}' does not exist. Suggested fix: check the path.")
+    with path.open(encoding="utf-8") as fh:
+        header = next((ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#")), "")
+    columns = {c.strip().lower() for c in header.split(",")}
+    if columns & {"surge", "sway", "heave", "roll", "pitch", "yaw"}:
+        return PlatformMotion(file=str(path))
+    return TimeSeriesMotion(file=str(path))
 
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
