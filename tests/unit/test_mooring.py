@@ -254,3 +254,14 @@ def test_cli_moves_vessel_points_rigidly_from_a_platform_csv(tmp_path):
     # the point at the origin only surges (the yaw turns it in place): x = 2 sin(2) at t = 2 s (the spline
     # through 41 samples of sin is exact to ~1e-5)
     assert float(ds.x.sel(time=2.0).isel(line=0, node=-1)) == pytest.approx(2 * math.sin(2.0), abs=1e-4)
+
+
+def test_a_lumped_clump_sinking_into_a_soft_seabed_is_warned():
+    """A 20 t clump as a point load on 15 m elements of chain sits W / (k A) = 0.05 m deep at 3e6 Pa/m (less
+    than the 0.09 m chain: no warning); at 3e5 Pa/m, 0.5 m: the warning names the node and the fix."""
+    line = sc.Line(segments=(sc.Segment(line_type=CHAIN, length=900.0),),
+                   attachments=(sc.PointMass(s=90.0, mass=2e4),))
+    net = network_from_line(line, (0, 0, -300), (850, 0, -50), water_density=1025, gravity=9.81, n_elements=60)
+    static_equilibrium(MooringModel(net, Water(depth=300.0)))  # the suite turns warnings into errors
+    with pytest.warns(sc.SeacableWarning, match=r"node 6 \(s = 90 m\) sinks 0\.\d+ m into the seabed"):
+        static_equilibrium(MooringModel(net, Water(depth=300.0, seabed_stiffness=3e5)))

@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import math
 import time as _time
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, SeacableWarning
 from . import kernel as K
 from .network import FREE, PRESCRIBED, Network
 
@@ -196,7 +197,27 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
             "line is long enough to reach its fairlead and that buoys cannot lift it out of the water.",
             iterations=int(stats[0]), residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
+    _warn_sinking(model, X)
     return StaticState(X, tension, support, int(stats[0]), float(stats[1]))
+
+
+def _warn_sinking(model: MooringModel, X) -> None:
+    """Warn when a node sinks into the penalty seabed deeper than the line is thick (a heavy point load)."""
+    water, net = model.water, model.network
+    if water.depth is None or water.seabed_stiffness <= 0:
+        return
+    depth_in = (water.seabed_z(X[:, 0]) - X[:, 2]) * math.cos(water.slope)
+    thick = np.zeros(net.n_nodes)
+    np.maximum.at(thick, net.elements[:, 0], net.diameter)
+    np.maximum.at(thick, net.elements[:, 1], net.diameter)
+    k = int(np.argmax(depth_in - thick))
+    if depth_in[k] > thick[k] > 0:
+        warnings.warn(
+            f"node {k} (s = {net.arc_length[k]:.4g} m) sinks {depth_in[k]:.3g} m into the seabed, more than the "
+            f"line's {thick[k]:.3g} m diameter: its {model.weight[k]:.4g} N bear on the adjacent elements' "
+            f"projected area {model.bedc[k]:.3g} m^2 at seabed_stiffness {water.seabed_stiffness:.3g} Pa/m. "
+            "Suggested fix: model a clump weight as a segment of its own (a distributed clump), or raise "
+            "the seabed stiffness.", SeacableWarning, stacklevel=3)
 
 
 def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: float = 1e-9,
