@@ -12,25 +12,35 @@ one per kind of manoeuvre, that a case file carries under a ``type`` tag:
 ``turn``
     Straight, then a turn at constant speed and constant rate of turn, then
     straight again (:class:`TurnPath`); paper 000's turning case.
+``zigzag``
+    Constant speed on a constant heading plus a sinusoidal sway across the
+    course (:class:`ZigZagPath`), optionally with its amplitude ramped up
+    smoothly; paper 003's zig-zag tow.
 ``table``
     Positions or velocities read from a CSV file and interpolated with cubic
     splines (:class:`TablePath`).
 
 :func:`sample_path` returns positions and velocities at an array of times.
 Positions are the exact integrals of the velocities: closed forms for the first
-three paths (a piecewise quadratic in time for the schedule, circular arcs for
-the turn) and the spline's own antiderivative for a velocity table.
+four paths (a piecewise quadratic in time for the schedule, circular arcs for
+the turn, a sine across the course for the zig-zag) and the spline's own
+antiderivative for a velocity table.
 
 Frame: global X, Y horizontal, Z up with z = 0 at the mean sea surface; headings
 are measured from +X towards +Y (counter-clockwise seen from above). The tow
 point stays at z = 0 unless a table gives ``z`` or ``w``. All units SI; angles
-in radians. Every path is at ``start`` at t = 0 (a table: at its first time).
+in radians. Every path is at ``start`` at t = 0 (a table: at its first time; a
+zig-zag without ramp: displaced by ``amplitude sin(phase)`` across the course).
 
 References
 ----------
 .. [1] Park, H. I. and Jung, D. H., "A numerical analysis of the three-dimensional
    nonlinear dynamic behaviour of a low-tension towed cable" (paper 000 of
    ``shared/seeds``): the turning case, speed 1 m/s and 0.5 deg/s to the left.
+.. [2] Yoon, H. K., Lee, H. S., Park, J. K. and Kim, Y. K., "Modeling and simulation
+   of towline dynamics using multibody element theory" (paper 003 of
+   ``shared/seeds``): the tug zig-zags at 2 knots with 10 m sway amplitude and a
+   50 s period.
 """
 
 from __future__ import annotations
@@ -51,8 +61,8 @@ from .._validate import finite
 from ..environment import _warn_if_degrees
 from ..errors import InputError
 
-__all__ = ["StraightPath", "SpeedSchedule", "TurnPath", "TablePath", "VESSEL_PATHS", "VesselPath",
-           "parse_vessel_path", "sample_path"]
+__all__ = ["StraightPath", "SpeedSchedule", "TurnPath", "ZigZagPath", "TablePath", "VESSEL_PATHS",
+           "VesselPath", "parse_vessel_path", "sample_path"]
 
 _XY = tuple[float, float]
 
@@ -225,6 +235,62 @@ class TurnPath(_Headed):
         return (1.0 if self.direction == "left" else -1.0) * self.speed / self.radius
 
 
+class ZigZagPath(_Headed):
+    """Constant speed on a constant heading with a sinusoidal sway across the course.
+
+    The tow point is at
+
+    .. math:: \\mathbf{x}(t) = \\mathbf{x}_0 + V t\\,\\mathbf{e}(\\psi)
+              + A\\,r(t) \\sin(2\\pi t / T + \\phi)\\,\\mathbf{n}(\\psi),
+
+    with :math:`\\mathbf{e} = (\\cos\\psi, \\sin\\psi)` the course,
+    :math:`\\mathbf{n} = (-\\sin\\psi, \\cos\\psi)` its left normal and
+    :math:`r(t) = (1 - \\cos(\\pi t / T_r))/2` for :math:`0 \\le t < T_r`, 1 after
+    (the half-cosine ramp of :mod:`seacable.mooring.motion`), or :math:`r = 1` when
+    ``ramp`` is 0. The ramp has zero slope at both ends, so with ``ramp > 0`` the
+    sway velocity starts from zero and is continuous; with ``ramp = 0`` the sway
+    velocity jumps to :math:`2\\pi A \\cos\\phi / T` at t = 0. The velocity is the
+    exact time derivative of the position. Paper 003's case is
+    ``speed=1.0289, amplitude=10.0, period=50.0`` (2 knots, 10 m, 50 s).
+
+    Parameters
+    ----------
+    speed
+        Forward speed along the course. [m/s]
+    amplitude
+        Sway amplitude across the course, > 0. [m]
+    period
+        Sway period, > 0. [s]
+    phase
+        Phase of the sine at t = 0; 0 starts on the course line swaying to the
+        left. [rad]
+    ramp
+        Duration of the smooth start of the sway amplitude; 0 for none. [s]
+    heading
+        Course, from +X towards +Y. [rad]
+    start
+        Tow-point position (x, y) at t = 0 (plus the sway ``A sin(phase)``
+        when ``ramp`` is 0). [m]
+    """
+
+    type: Literal["zigzag"] = "zigzag"
+    speed: quantity("m/s", ge=0, fix="give the speed over ground in m/s (1 knot = 0.5144 m/s).") = Field(
+        description="Forward speed along the course. [m/s]")
+    amplitude: quantity("m", gt=0, fix="give the sway amplitude in metres (half the peak-to-peak "
+                                       "sway), e.g. 10.0; use type 'straight' for no sway.") = Field(
+        description="Sway amplitude across the course. [m]")
+    period: quantity("s", gt=0, fix="give the sway period in seconds, e.g. 50.0.") = Field(
+        description="Sway period. [s]")
+    phase: quantity("rad") = Field(0.0, description="Phase of the sway at t = 0. [rad]")
+    ramp: quantity("s", ge=0, fix="give the duration of the smooth start in seconds, 0 for none.") = Field(
+        0.0, description="Duration of the smooth start of the sway amplitude. [s]")
+
+    @model_validator(mode="after")
+    def _phase_in_radians(self):
+        _warn_if_degrees("vessel.phase", self.phase, 2 * math.pi)
+        return self
+
+
 class TablePath(_Planar):
     """Tow-point positions or velocities read from a CSV file.
 
@@ -255,7 +321,7 @@ class TablePath(_Planar):
     kind: Literal["position", "velocity"] = Field(description="What the table holds.")
 
 
-VESSEL_PATHS = (StraightPath, SpeedSchedule, TurnPath, TablePath)
+VESSEL_PATHS = (StraightPath, SpeedSchedule, TurnPath, ZigZagPath, TablePath)
 VesselPath = Annotated[Union[VESSEL_PATHS], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in VESSEL_PATHS)
 
@@ -269,7 +335,7 @@ def parse_vessel_path(data: Any, *, root: str = "vessel"):
     ----------
     data
         A mapping with a ``type`` key (``straight``, ``speed_schedule``,
-        ``turn`` or ``table``) and the fields of that path.
+        ``turn``, ``zigzag`` or ``table``) and the fields of that path.
     root
         A prefix for the key paths in error messages.
 
@@ -417,6 +483,29 @@ def _table_spline(resolved: str, kind: str, stamp: tuple):  # stamp: part of the
     return time, (spline.antiderivative(), spline)
 
 
+def _smooth_ramp(t, duration):
+    """Half-cosine ramp r(t) = (1 - cos(pi t / T_r)) / 2 on [0, T_r), 1 after, 0 before, and dr/dt."""
+    if duration <= 0:
+        return np.ones_like(t), np.zeros_like(t)
+    s = np.clip(t / duration, 0.0, 1.0)
+    inside = (t >= 0) & (t < duration)
+    r = 0.5 * (1.0 - np.cos(math.pi * s))
+    dr = np.where(inside, 0.5 * math.pi / duration * np.sin(math.pi * s), 0.0)
+    return r, dr
+
+
+def _zigzag(t, path: ZigZagPath):
+    """Positions and velocities of a zig-zag path: straight run plus a ramped sine across it."""
+    pos, vel = _straight(t, path.speed, path.heading, path.start)
+    normal = np.array([-math.sin(path.heading), math.cos(path.heading), 0.0])
+    omega = 2.0 * math.pi / path.period
+    arg = omega * t + path.phase
+    r, dr = _smooth_ramp(t, path.ramp)
+    sway = path.amplitude * r * np.sin(arg)
+    sway_rate = path.amplitude * (dr * np.sin(arg) + r * omega * np.cos(arg))
+    return pos + sway[:, None] * normal, vel + sway_rate[:, None] * normal
+
+
 def _table(t, path: TablePath, base_dir):
     resolved = _resolve(path.file, base_dir)
     time, (position, velocity) = _splines(resolved, path.kind)
@@ -480,11 +569,15 @@ def sample_path(path: VesselPath, times, base_dir=None) -> tuple[np.ndarray, np.
     :math:`x = x_s + (V/r)(\\sin\\psi - \\sin\\psi_0)`,
     :math:`y = y_s - (V/r)(\\cos\\psi - \\cos\\psi_0)`, evaluated in the equivalent
     chord form :math:`V\\tau\\,\\mathrm{sinc}(r\\tau/2)(\\cos, \\sin)(\\psi_0 + r\\tau/2)`, exact
-    also as :math:`r \\to 0`.
+    also as :math:`r \\to 0`. Zig-zag: the straight path plus
+    :math:`A\\,r(t)\\sin(2\\pi t/T + \\phi)` along the left normal
+    :math:`(-\\sin\\psi_0, \\cos\\psi_0)`, with the half-cosine ramp :math:`r(t)` of
+    :class:`ZigZagPath`; the velocity is its exact derivative (product rule).
 
     References
     ----------
     .. [1] Paper 000 of ``shared/seeds`` (turning tow, 0.5 deg/s to the left).
+    .. [2] Paper 003 of ``shared/seeds`` (zig-zag tow, 2 knots, 10 m, 50 s).
     """
     if isinstance(path, dict):
         path = parse_vessel_path(path)
@@ -506,4 +599,6 @@ def sample_path(path: VesselPath, times, base_dir=None) -> tuple[np.ndarray, np.
         return pos, speed[:, None] * e
     if isinstance(path, TurnPath):
         return _turn(t, path)
+    if isinstance(path, ZigZagPath):
+        return _zigzag(t, path)
     return _table(t, path, base_dir)

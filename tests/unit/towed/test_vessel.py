@@ -17,7 +17,7 @@ from scipy.integrate import cumulative_trapezoid
 
 from seacable.errors import InputError, SeacableWarning
 from seacable.towed.vessel import (VESSEL_PATHS, SpeedSchedule, StraightPath, TablePath, TurnPath,
-                                   VesselPath, parse_vessel_path, sample_path)
+                                   VesselPath, ZigZagPath, parse_vessel_path, sample_path)
 
 # Positions of order 100 m summed over ~1e4 trapezoids: round-off stays below 1e-9 m.
 ROUND_OFF = 1e-9
@@ -290,7 +290,7 @@ def test_parse_from_dicts():
     assert isinstance(parse_vessel_path({"type": "table", "file": "a.csv", "kind": "velocity"}), TablePath)
     pos, _ = sample_path({"type": "straight", "speed": 2.0}, [1.0])
     np.testing.assert_allclose(pos, [[2.0, 0.0, 0.0]])
-    assert set(VESSEL_PATHS) == {StraightPath, SpeedSchedule, TurnPath, TablePath}
+    assert set(VESSEL_PATHS) == {StraightPath, SpeedSchedule, TurnPath, TablePath, ZigZagPath}
 
 
 def test_models_are_frozen_and_picklable():

@@ -1,0 +1,315 @@
+"""The towline model (paper 003) set up from SI parameters, its initial states and its time stepping."""
+
+from __future__ import annotations
+
+import math
+import time as _time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError
+from . import kernel as K
+from .barge import Barge, barge_parameters
+
+__all__ = ["TowlineModel", "TowlineRun", "energy", "initial_state", "simulate", "stable_time_step"]
+
+#: tug tow-point track: times (n,) -> positions (n, 3), velocities (n, 3)
+TugFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+
+
+@dataclass
+class TowlineModel:
+    """A towline of ``n_elements`` rigid elements between a tug and a barge (all SI).
+
+    ``axial_stiffness`` is EA of the line (paper 003: breaking load over elongation at break), so the
+    joint spring of an element is ``k = EA / l``. ``drag_tangential`` is the skin-friction coefficient
+    C_f on the wetted perimeter, ``drag_normal`` C_D on the diameter, ``added_mass`` C_a across the
+    line. ``damping_ratio`` (zeta, axial) and ``bending_damping_ratio`` (zeta_m) set the material
+    damping of the joints. ``barge`` None holds the barge's tow point still (a fixed end at
+    ``held_tow_point_height`` above the water).
+    """
+
+    n_elements: int
+    length: float
+    diameter: float
+    mass_per_length: float
+    axial_stiffness: float
+    drag_normal: float = 1.2
+    drag_tangential: float = 0.015
+    added_mass: float = 1.0
+    damping_ratio: float = 0.5
+    bending_damping_ratio: float = 0.5
+    transverse_damping_fraction: float = 0.1
+    water_density: float = 1025.0
+    gravity: float = 9.80665
+    brake_tension: float = 0.0
+    impact: bool = True
+    drag: bool = True
+    barge: Barge | None = None
+    held_tow_point_height: float = 1.0
+    params: np.ndarray = field(init=False, repr=False)
+    barge_params: np.ndarray = field(init=False, repr=False)
+
+    def __post_init__(self):
+        n, L = self.n_elements, self.length
+        if n < 1:
+            raise InputError(f"n_elements must be >= 1, got {n}. Suggested fix: use the paper's 11 or more.")
+        for name, unit in (("length", "m"), ("diameter", "m"), ("mass_per_length", "kg/m"),
+                           ("axial_stiffness", "N")):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0):
+                raise InputError(f"{name} must be > 0 {unit}, got {value:g} {unit}.")
+        el = L / n
+        m = self.mass_per_length * el
+        k = self.axial_stiffness / el
+        P = np.zeros(K.P_SIZE)
+        P[K.P_L], P[K.P_M], P[K.P_I] = el, m, m * el * el / 12.0
+        P[K.P_D], P[K.P_AREA] = self.diameter, 0.25 * math.pi * self.diameter**2
+        P[K.P_CA], P[K.P_CD], P[K.P_CF] = self.added_mass, self.drag_normal, self.drag_tangential
+        P[K.P_K] = k
+        P[K.P_CX] = 2.0 * self.damping_ratio * math.sqrt(k * m)
+        P[K.P_CT] = self.transverse_damping_fraction * P[K.P_CX]
+        P[K.P_ZM] = self.bending_damping_ratio
+        P[K.P_RHO], P[K.P_G] = self.water_density, self.gravity
+        P[K.P_BRAKE] = self.brake_tension
+        P[K.P_IMPACT] = float(self.impact)
+        P[K.P_DRAG] = float(self.drag)
+        self.params = P
+        self.barge_params = (barge_parameters(self.barge, self.water_density) if self.barge is not None
+                             else np.zeros(1))
+
+    @property
+    def barge_tow_point(self) -> tuple[float, float]:
+        """Tow point on the barge: (x forward of midship, height above the water). [m]"""
+        if self.barge is None:
+            return 0.0, self.held_tow_point_height
+        return self.barge.tow_x, self.barge.tow_point_height
+
+    @property
+    def element_length(self) -> float:
+        return self.length / self.n_elements
+
+    @property
+    def element_period(self) -> float:
+        """Axial natural period of an element on its joint spring, ``2 pi sqrt(m / k)``. [s]"""
+        return 2 * math.pi * math.sqrt(self.params[K.P_M] / self.params[K.P_K])
+
+
+def stable_time_step(model: TowlineModel, safety: float = 0.8) -> float:
+    """The explicit step, a fraction of the element's axial period ``T_n = 2 pi sqrt(m / k)``. [s]
+
+    Paper 003 bounds the step by ``alpha T_n`` without giving alpha; here it follows from the
+    stability of the symplectic Euler scheme (stable for ``omega dt < 2 (sqrt(1 + zeta^2) - zeta)``)
+    on the two stiffest modes of the chain:
+
+    - all elements turning the same way about their centres open every joint by ``l theta``:
+      ``omega^2 = k l^2 / I = 12 k / m`` (``I = m l^2 / 12``, no added inertia in air);
+    - neighbours moving axially against each other: ``omega = 2 sqrt(k / m)`` with the joint damper
+      at twice its ratio, ``zeta_h = c_x / sqrt(k m) = 2 zeta``.
+
+    ``dt = safety min(2 / sqrt(12), sqrt(1 + zeta_h^2) - zeta_h) sqrt(m / k)``: for zeta = 0.5,
+    0.33 sqrt(m / k) = 0.053 T_n.
+    """
+    P = model.params
+    zh = P[K.P_CX] / math.sqrt(P[K.P_K] * P[K.P_M])
+    bound = min(2.0 / math.sqrt(12.0), math.sqrt(1.0 + zh * zh) - zh)
+    return safety * bound * math.sqrt(P[K.P_M] / P[K.P_K])
+
+
+@dataclass
+class State:
+    """The towline's state: element centres R (n, 3), frames E (n, 3, 3), body velocities nu (n, 3),
+    angular velocities om (n, 2) = (q, r), the first element off the bitt, and the barge (x, y,
+    heading, u, v, r)."""
+
+    R: np.ndarray
+    E: np.ndarray
+    nu: np.ndarray
+    om: np.ndarray
+    first: int
+    barge: np.ndarray
+
+
+def _barge_point(model: TowlineModel, barge) -> np.ndarray:
+    xt, zt = model.barge_tow_point
+    return np.array([barge[0] + xt * math.cos(barge[2]), barge[1] + xt * math.sin(barge[2]), zt])
+
+
+def initial_state(model: TowlineModel, tug_point, *, start: str = "straight", heading: float = 0.0,
+                  drop_height: float | None = None) -> State:
+    """The line at rest behind a tug whose tow point is at ``tug_point`` heading ``heading`` [rad].
+
+    ``start``: ``"straight"`` lays the line straight astern of the tug, from the tow point down (or up)
+    to the barge's tow point height, with the barge at its end; ``"dropped"`` lays it horizontal at
+    ``drop_height`` above the water, the end elements sloping to the tow points (paper 003's drop);
+    ``"coiled"`` keeps the whole line on the tug's bitt with the barge's tow point at the tug's (the
+    payout scenario).
+    """
+    n, el = model.n_elements, model.element_length
+    tug = np.asarray(tug_point, float)
+    back = -np.array([math.cos(heading), math.sin(heading), 0.0])
+    xt, zt = model.barge_tow_point
+    R, E = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    nu, om = np.zeros((n, 3)), np.zeros((n, 2))
+    if start == "coiled":
+        end = tug.copy()
+        end[2] = zt
+        first = n
+        R[:] = tug
+        for k in range(n):
+            K.frame_from_axis(back.copy(), E[k])
+    else:
+        first = 0
+        if start == "straight":
+            dz = zt - tug[2]
+            if abs(dz) >= model.length:
+                raise InputError(f"the tow points differ in height by {abs(dz):g} m, more than the line's "
+                                 f"{model.length:g} m.")
+            h = math.sqrt(model.length**2 - dz**2)
+            pts = tug + np.linspace(0.0, 1.0, n + 1)[:, None] * (h * back + np.array([0.0, 0.0, dz]))
+        elif start == "dropped":
+            if drop_height is None:
+                raise InputError("start 'dropped' needs drop_height in m (paper 003: 1 m above the water).")
+            pts = np.zeros((n + 1, 3))
+            pts[0] = tug
+            for j in range(1, n + 1):
+                target = drop_height if j < n else zt
+                dz = target - pts[j - 1, 2]
+                dz = max(-el * 0.99, min(el * 0.99, dz))
+                pts[j] = pts[j - 1] + math.sqrt(el * el - dz * dz) * back + np.array([0.0, 0.0, dz])
+            end = pts[-1]
+        else:
+            raise InputError(f"start must be 'straight', 'dropped' or 'coiled', got {start!r}.")
+        end = pts[-1]
+        for k in range(n):
+            e1 = pts[k + 1] - pts[k]
+            e1 /= np.linalg.norm(e1)
+            K.frame_from_axis(e1, E[k])
+            R[k] = 0.5 * (pts[k] + pts[k + 1])
+    # the barge's midship behind its bow tow point, on the tug's heading
+    barge = np.array([end[0] + xt * back[0], end[1] + xt * back[1], heading, 0.0, 0.0, 0.0])
+    return State(R, E, nu, om, first, barge)
+
+
+def joint_positions(model: TowlineModel, state: State, tug_point) -> np.ndarray:
+    """Positions of the nodes (n + 1, 3): the tug's tow point, the joints, the barge's tow point."""
+    n, half = model.n_elements, 0.5 * model.element_length
+    e1 = state.E[:, :, 0]
+    front, aft = state.R - half * e1, state.R + half * e1
+    out = np.full((n + 1, 3), np.nan)
+    out[0] = tug_point
+    out[1:n] = 0.5 * (aft[:-1] + front[1:])
+    out[1:state.first + 1] = np.nan
+    out[n] = _barge_point(model, state.barge)
+    return out
+
+
+def energy(model: TowlineModel, state: State, tug_point) -> float:
+    """Kinetic (with added mass) plus gravity, buoyancy-free potential and spring energy. [J]
+
+    For the energy balance of the free line in air (no buoyancy, no drag, no damping).
+    """
+    P = model.params
+    m, I = P[K.P_M], P[K.P_I]
+    ke = 0.5 * m * np.sum(state.nu**2) + 0.5 * I * np.sum(state.om**2)
+    pe = m * model.gravity * float(np.sum(state.R[:, 2]))
+    half = 0.5 * model.element_length
+    e1 = state.E[:, :, 0]
+    ends = [np.asarray(tug_point, float)]
+    for k in range(model.n_elements):
+        ends += [state.R[k] - half * e1[k], state.R[k] + half * e1[k]]
+    ends.append(_barge_point(model, state.barge))
+    gaps = np.array(ends).reshape(-1, 2, 3)
+    spring = 0.5 * P[K.P_K] * float(np.sum((gaps[:, 1] - gaps[:, 0]) ** 2))
+    return ke + pe + spring
+
+
+@dataclass(frozen=True)
+class TowlineRun:
+    """Stored states of a run at the output times."""
+
+    time: np.ndarray
+    nodes: np.ndarray          # (nt, n + 1, 3)
+    centres: np.ndarray        # (nt, n, 3), NaN on the bitt
+    axes: np.ndarray           # (nt, n, 3) e1
+    tension: np.ndarray        # (nt, n + 1)
+    slack: np.ndarray          # (nt, n + 1)
+    released: np.ndarray       # (nt, n)
+    tug: np.ndarray            # (nt, 3)
+    barge: np.ndarray          # (nt, 6)
+    time_step: float
+    steps: int
+    interrupted: bool
+    wall_time: float
+    final: State
+
+
+def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: float, state: State, *,
+             time_step: float | None = None, safety: float = 0.8, progress=None) -> TowlineRun:
+    """Explicit time stepping from ``state``; the tug's tow point follows ``tug(times)``.
+
+    ``time_step`` None takes :func:`stable_time_step` (``safety`` times the stability bound), rounded
+    down to divide ``output_interval``. A state that stops being finite raises
+    :class:`~seacable.errors.ConvergenceError` with the time; Ctrl-C returns what was computed.
+    """
+    if not output_interval > 0 or output_interval > duration:
+        raise InputError(f"output_interval must be > 0 s and not above duration ({duration:g} s), got "
+                         f"{output_interval:g} s.")
+    dt0 = stable_time_step(model, safety) if time_step is None else float(time_step)
+    sub = max(1, int(math.ceil(output_interval / dt0 - 1e-9)))
+    dt = output_interval / sub
+    n_out = int(round(duration / output_interval))
+    n = model.n_elements
+    S = state
+    R, E, nu, om = S.R.copy(), S.E.copy(), S.nu.copy(), S.om.copy()
+    bs = S.barge.copy()
+    first = np.array([S.first], np.int64)
+    ma_prev = np.zeros(n)
+    tension, slack = np.zeros(n + 1), np.zeros(n + 1, np.bool_)
+    held = model.barge is None
+    xt, zt = model.barge_tow_point
+    P, BP = model.params, model.barge_params
+
+    def snapshot(t, tug_point):
+        st = State(R, E, nu, om, int(first[0]), bs)
+        nodes = joint_positions(model, st, tug_point)
+        centres = R.copy()
+        centres[:first[0]] = np.nan
+        rel = np.arange(n) >= first[0]
+        return nodes, centres, E[:, :, 0].copy(), tension.copy(), slack.copy(), rel, bs.copy()
+
+    p0, v0 = tug(np.array([0.0]))
+    K.evaluate(R, E, nu, om, int(first[0]), P, p0[0], v0[0], bs, xt, zt, tension, slack, ma_prev)
+    records = [snapshot(0.0, p0[0])]
+    times, tugs = [0.0], [p0[0]]
+    steps = 0
+    interrupted = False
+    start = _time.perf_counter()
+    try:
+        for k in range(n_out):
+            t0 = k * output_interval
+            tt = t0 + dt * np.arange(sub + 1)
+            tp, tv = tug(tt)
+            done = K.run_steps(t0, dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev,
+                               tension, slack)
+            steps += done
+            if done < sub:
+                raise ConvergenceError(
+                    f"the towline state stopped being finite at t = {t0 + done * dt:.6g} s (time step "
+                    f"{dt:.3g} s, stability bound {stable_time_step(model, 1.0):.3g} s). Suggested fix: a smaller "
+                    "time_step.",
+                    iterations=steps, residual=float("nan"))
+            K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, tension, slack, np.zeros(n))
+            times.append(tt[-1])
+            tugs.append(tp[-1])
+            records.append(snapshot(tt[-1], tp[-1]))
+            if progress is not None:
+                progress(tt[-1], duration)
+    except KeyboardInterrupt:
+        interrupted = True
+    cols = list(zip(*records))
+    return TowlineRun(np.array(times), *(np.array(c) for c in cols[:6]), np.array(tugs), np.array(cols[6]),
+                      dt, steps, interrupted, _time.perf_counter() - start,
+                      State(R, E, nu, om, int(first[0]), bs))
