@@ -10,6 +10,8 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
+
 import seacable as sc
 from seacable.plot import plot_result
 
@@ -46,6 +48,12 @@ CASES = {
                                           f"{float(ds.seabed_contact_length[-1]):.0f} m at {float(ds.offset[-1]):g} m; "
                                           f"H {float(ds.H_fairlead[0]) / 1e3:.0f} -> "
                                           f"{float(ds.H_fairlead[-1]) / 1e3:.0f} kN"),
+    "paper003_zigzag": lambda ds: (f"tug zig-zag 10 m / 50 s at 2 knots: sway {float(np.ptp(ds.y.values[:, 0])):.1f} m at the tug, "
+                                   f"{float(np.ptp(ds.y.values[ds.time.values >= 200, -2])):.1f} m next to the barge; barge tension up "
+                                   f"to {float(ds.tension_barge.max()) / 1e3:.1f} kN"),
+    "paper003_payout": lambda ds: (f"line paid out from the bitt in {float(ds.time[ds.released.all('element')][0]):.0f} s; "
+                                   f"barge at {float(ds.barge_speed[-1]):.3f} m/s, tension "
+                                   f"{float(ds.tension_barge[-1]) / 1e3:.1f} kN"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),

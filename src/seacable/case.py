@@ -30,6 +30,7 @@ from .statics.towed import TangentialDragForm
 from .laying.inputs import Bathymetry, Payout, PayoutBottomTension, PayoutSlack, ShipMotion
 from .mooring.motion import Motion
 from .towed.vessel import VesselPath
+from .towline.barge import Barge
 
 __all__ = [
     "StaticAnalysis",
@@ -44,6 +45,7 @@ __all__ = [
     "MooringStaticAnalysis",
     "MooringPushoverAnalysis",
     "MooringDynamicAnalysis",
+    "TowlineDynamicAnalysis",
     "Analysis",
     "Case",
 ]
@@ -315,9 +317,53 @@ class MooringDynamicAnalysis(_Mooring):
         return self
 
 
+class TowlineDynamicAnalysis(Model):
+    """A tug towing a barge on the towline: the multibody model of paper 003.
+
+    The line is ``n_elements`` rigid elements joined by spring-dampers; its axial stiffness is the
+    line type's ``axial_stiffness``, or ``breaking_load / elongation_at_break`` (paper 003: 16 t and
+    15 %). The tug's tow point follows ``tug`` at ``tug_tow_point_height``; the barge is a rigid body in
+    surge, sway and yaw towed at its own tow point (``barge_held`` holds it still). ``start``:
+    ``straight`` (the line straight astern of the tug, the barge at its end), ``dropped`` (horizontal
+    at ``drop_height`` above the water) or ``coiled`` (on the tug's bitt, paid out as the tug moves
+    off, the barge starting at the tug).
+    """
+
+    type: Literal["towline_dynamic"] = "towline_dynamic"
+    tug: VesselPath = Field(description="Tug tow-point track: straight, speed_schedule, turn, zigzag or table.")
+    tug_tow_point_height: quantity("m") = Field(2.0, description="Tug tow point above the water. [m]")
+    barge: Barge = Field(description="The towed barge.")
+    barge_held: bool = Field(False, description="Hold the barge still (a fixed end).")
+    start: Literal["straight", "dropped", "coiled"] = Field("straight", description="Initial line.")
+    drop_height: quantity("m") | None = Field(None, description="Height of a dropped line. [m]")
+    n_elements: int = Field(11, ge=1, le=10_000, description="Rigid elements (paper 003: 11).")
+    elongation_at_break: quantity("-", gt=0, lt=1) | None = Field(
+        None, description="Strain at the breaking load; with the line type's breaking_load gives EA. [-]")
+    damping_ratio: quantity("-", ge=0) = Field(0.5, description="Axial joint damping ratio zeta. [-]")
+    bending_damping_ratio: quantity("-", ge=0) = Field(0.5, description="Bending damping ratio. [-]")
+    transverse_damping_fraction: quantity("-", ge=0) = Field(
+        0.1, description="Joint damping across the line over that along it (paper 003: 1/10). [-]")
+    brake_tension: quantity("N", ge=0) = Field(0.0, description="Tension holding the line on the bitt. [N]")
+    impact: bool = Field(True, description="Water-entry impact force.")
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    output_interval: quantity("s", gt=0) = Field(1.0, description="Time between stored states. [s]")
+    time_step: quantity("s", gt=0) | None = Field(
+        None, description="Explicit step; default from the stability bound of the elements. [s]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.output_interval > self.duration:
+            raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
+                             f"({self.duration:g} s).")
+        if self.start == "dropped" and self.drop_height is None:
+            raise ValueError("start 'dropped' needs drop_height (m above the water; paper 003: 1.0).")
+        return self
+
+
 ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, TowedDynamicAnalysis,
             LayingTheoryAnalysis, LayingDynamicAnalysis,
-            VerticalModesAnalysis, MooringStaticAnalysis, MooringPushoverAnalysis, MooringDynamicAnalysis)
+            VerticalModesAnalysis, MooringStaticAnalysis, MooringPushoverAnalysis, MooringDynamicAnalysis,
+            TowlineDynamicAnalysis)
 Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
@@ -433,6 +479,16 @@ class Case(Model):
             if missing:
                 raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
                                  f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
+        if isinstance(a, TowlineDynamicAnalysis):
+            lt = self.line.segments[0].line_type
+            if len(self.line.segments) != 1 or self.line.attachments:
+                raise ValueError("analysis 'towline_dynamic' takes a towline of one segment and no attachments, "
+                                 f"got {len(self.line.segments)} segments and {len(self.line.attachments)} "
+                                 "attachments.")
+            if lt.axial_stiffness is None and (a.elongation_at_break is None or lt.breaking_load is None):
+                raise ValueError("analysis 'towline_dynamic' needs the line's stiffness: an axial_stiffness (N) on "
+                                 "the line type, or its breaking_load (N) with the analysis's elongation_at_break "
+                                 "(paper 003: 16 t = 156906 N and 0.15).")
         if isinstance(a, TowedSteadyAnalysis) and self.environment.current.depths is not None:
             raise ValueError("analysis 'towed_steady' takes a uniform current, got a depth profile. "
                              "Suggested fix: give 'current: {speed: ...}' or use a dynamic towed model.")

@@ -122,12 +122,17 @@ def _cmd_plot(args) -> int:
 
 def _cmd_animate(args) -> int:
     from .plot import animate_laying
+    from .plot_towline import animate_towline
     from .results import read_netcdf
 
     path = Path(args.result)
     ds = read_netcdf(path)
-    out = Path(args.output) if args.output else path.parent / f"{path.stem}_lay.gif"
-    written = animate_laying(ds, out, fps=args.fps, max_frames=args.max_frames)
+    if ds.attrs.get("analysis") == "towline_dynamic":
+        animate, tag = animate_towline, "tow"
+    else:  # animate_laying names the analyses it accepts in its error
+        animate, tag = animate_laying, "lay"
+    out = Path(args.output) if args.output else path.parent / f"{path.stem}_{tag}.gif"
+    written = animate(ds, out, fps=args.fps, max_frames=args.max_frames)
     print(f"wrote {written}")
     return 0
 
@@ -170,10 +175,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-o", "--output", help="folder for the PNG files; default beside the result")
     p.set_defaults(func=_cmd_plot)
 
-    p = sub.add_parser("animate", help="animate a cable lay (laying_dynamic result) as GIF or MP4")
-    p.add_argument("result", help="result file (.nc) of a laying_dynamic run")
-    p.add_argument("-o", "--output", help="animation file (.gif, or .mp4 with ffmpeg); "
-                                          "default RESULT_lay.gif beside the result")
+    p = sub.add_parser("animate", help="animate a cable lay (laying_dynamic) or a tow (towline_dynamic) "
+                                       "as GIF or MP4")
+    p.add_argument("result", help="result file (.nc) of a laying_dynamic or towline_dynamic run")
+    p.add_argument("-o", "--output", help="animation file (.gif, or .mp4 with ffmpeg); default "
+                                          "RESULT_lay.gif or RESULT_tow.gif beside the result")
     p.add_argument("--fps", type=int, default=10, help="frames per second (default 10)")
     p.add_argument("--max-frames", type=int, default=200,
                    help="largest number of frames; output times are subsampled evenly (default 200)")

@@ -344,6 +344,10 @@ from .plot_mooring import MOORING_FIGURES  # noqa: E402  (no import loop: it rea
 
 FIGURES.update(MOORING_FIGURES)
 
+from .plot_towline import TOWLINE_FIGURES  # noqa: E402  (same: it imports plot only when drawing)
+
+FIGURES.update(TOWLINE_FIGURES)
+
 
 def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     """Write the standard figures of a result as PNG files.

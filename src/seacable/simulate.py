@@ -312,6 +312,12 @@ def _run_mooring_dynamic(case: Case, progress=None):
     return run_mooring_dynamic(case, progress=progress)
 
 
+def _run_towline_dynamic(case: Case, progress=None):
+    from .towline.run import run_towline_dynamic
+
+    return run_towline_dynamic(case, progress=progress)
+
+
 _RUNNERS = {
     "static": _run_static,
     "pushover": _run_pushover,
@@ -324,6 +330,7 @@ _RUNNERS = {
     "mooring_static": _run_mooring_static,
     "mooring_pushover": _run_mooring_pushover,
     "mooring_dynamic": _run_mooring_dynamic,
+    "towline_dynamic": _run_towline_dynamic,
 }
 
 
@@ -353,4 +360,4 @@ def run(case: Case, progress=None):
     return runner(case)
 
 
-_TIME_DOMAIN = ("towed_dynamic", "laying_dynamic", "mooring_dynamic")
+_TIME_DOMAIN = ("towed_dynamic", "laying_dynamic", "mooring_dynamic", "towline_dynamic")

@@ -71,11 +71,11 @@ def load_case(path: str | Path) -> Case:
 
 
 def _resolve_files(data, folder: Path) -> None:
-    """Make the relative ``file`` of a vessel or bathymetry table relative to the case file's folder."""
+    """Make the relative ``file`` of a vessel, tug, motion or bathymetry table relative to the case file's folder."""
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
         return
-    for key in ("vessel", "bathymetry"):
+    for key in ("vessel", "bathymetry", "motion", "tug"):
         table = analysis.get(key)
         if isinstance(table, dict) and isinstance(table.get("file"), str):
             f = Path(table["file"])

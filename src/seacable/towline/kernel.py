@@ -36,7 +36,8 @@ Forces (F, body components; moments ``(M_q, M_r) = (-s F_z, s F_y)`` of a force 
   (paper 003 writes ``-(m_j / dt)(0, v, w)``, the same momentum given in one step);
 - joint tension: the connection points of neighbours (``b_{j-1}`` and ``a_j``; the tug's and the
   barge's tow points at the ends) are joined by a spring of stiffness ``k`` (from the breaking load
-  and the elongation at break, ``k = P / (eps_b l)``) and a damper ``c_x`` along the joint,
+  and the elongation at break: ``EA = P / eps_b``, ``k = (n + 1) EA / L`` so that the n + 1 joints
+  in series stretch as the line does) and a damper ``c_x`` along the joint,
   ``c_x / 10`` across (``c_x = 2 zeta sqrt(k m)``, paper 003). The tension reported is the joint
   force along the line. A joint whose gap closes along the line (the connection points pushed into
   each other: compression) is slack: the spring keeps only its part across the line, so the joint
@@ -234,7 +235,7 @@ def _forces(t, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, held, Fb, Mb,
         for i in range(3):
             jf[j, i] = f[i]
     # --- elements
-    m, L, d, area = P[P_M], P[P_L], P[P_D], P[P_AREA]
+    m, d, area = P[P_M], P[P_D], P[P_AREA]
     for k in range(first, n):
         e1z = E[k, 2, 0]
         rv = 0.5 * d * math.sqrt(max(1.0 - e1z * e1z, 0.0))

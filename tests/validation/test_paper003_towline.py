@@ -1,0 +1,172 @@
+"""Paper 003 (seeds/003): the tug-barge towline as a chain of rigid 5-DOF elements.
+
+The paper (conference slides) prints no numbers for its four scenarios, only their qualitative
+outcomes; these are checked here, together with what the physics fixes exactly: the steady tow is an
+elastic catenary in air whose horizontal tension is the barge's resistance (checked against the
+statics module and against the mooring finite-element model), and with its damping and drag off the
+free line conserves energy to the first order of the explicit scheme.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+import seacable as sc
+from seacable.statics.catenary import catenary
+from seacable.towline import TowlineModel, barge_resistance, energy, initial_state, simulate
+from seacable.towline.solver import stable_time_step
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
+EA = 156906.0 / 0.15  # 16 t at 15 % elongation
+W_AIR = 1.725 * 9.80665
+
+
+def _run(name, **analysis):
+    data = yaml.safe_load((EXAMPLES / f"paper003_{name}.yaml").read_text())
+    data["analysis"].update(analysis)
+    return sc.run(sc.parse_case(data))
+
+
+@pytest.fixture(scope="module")
+def steady():
+    return _run("steady_tow")
+
+
+def test_dropped_line_floats_except_next_to_the_tow_points():
+    ds = _run("drop")
+    z = ds.element_z.isel(time=-1).values
+    # a floating element sinks until its immersed fraction f carries its weight: f = m / (rho A)
+    r, f = 0.025, 1.725 / (1025.0 * math.pi * 0.025**2)
+    c = _fraction_depth(f)
+    # the inner elements float at that depth, to 2 mm (the slight pull of the end elements); the third
+    # from the barge still dips 5 mm into the transition to the barge's tow point
+    assert z[2:-3] == pytest.approx(-c * r, abs=2e-3)
+    # the paper: all elements at the surface except those next to the tow points (2 m and 1 m up)
+    assert z[0] > r and z[-1] > r
+    # and the line has come to rest
+    assert np.max(np.abs(ds.element_z.isel(time=-1).values - ds.element_z.isel(time=-21).values)) < 1e-3
+
+
+def _fraction_depth(f):
+    """Depth of the axis, in radii, at which a circular section is immersed by the fraction f."""
+    from scipy.optimize import brentq
+
+    return brentq(lambda c: (math.acos(-c) + c * math.sqrt(1 - c * c)) / math.pi - f, -1.0, 1.0, xtol=1e-14)
+
+
+def test_steady_tow_tension_is_the_barge_resistance(steady):
+    last = steady.isel(time=slice(-50, None))
+    barge = sc.load_case(EXAMPLES / "paper003_steady_tow.yaml").analysis.barge
+    resistance = barge_resistance(barge, 2.5722)
+    # the towline pulls along its last element, 1-2 deg from horizontal: H = T cos(angle) differs from
+    # T by < 1e-3; the barge has settled to the tug's speed (its surge oscillation decays by 1e-4 by then)
+    assert last.barge_speed.values == pytest.approx(2.5722, rel=1e-4)
+    assert last.tension_barge.values == pytest.approx(resistance, rel=1e-3)
+
+
+def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
+    """At 25 kN the whole line hangs in air between the tow points (2 m and 1 m up): a catenary."""
+    last = steady.isel(time=-1)
+    x, z = last.x.values, last.z.values
+    n = steady.attrs["n_elements"]
+    res = catenary(x[0] - x[-1], z[0] - z[-1], 100.0, EA, W_AIR, seabed=False)
+    prof = res.profile(n + 1)
+    z_cat = z[-1] + prof.z[::-1] - prof.z[0]
+    assert z.min() > 0.3  # clear of the water
+    # tensions at both ends within 1e-3 (measured 7e-5) and the joints on the catenary within 1 cm of a
+    # 0.9 m sag (measured 3.6 mm): rigid elements carry their weight at their centres, the catenary
+    # continuously; the joints of a chain of rigid links lie on it to O(l^2)
+    assert float(last.tension_barge) == pytest.approx(float(res.tension_anchor), rel=1e-3)
+    assert float(last.tension_tug) == pytest.approx(float(res.tension_fairlead), rel=1e-3)
+    assert np.max(np.abs(z - z_cat)) < 1e-2
+
+
+def test_steady_tow_agrees_with_the_mooring_finite_element_model(steady):
+    """The same line between the same tow points, as truss elements in the mooring model's statics."""
+    from seacable.mooring.network import network_from_line
+    from seacable.mooring.solver import MooringModel, Water, static_equilibrium
+
+    last = steady.isel(time=-1)
+    x, z = last.x.values, last.z.values
+    wire = sc.LineType(diameter=0.05, mass_per_length=1.725, weight_in_water=W_AIR, axial_stiffness=EA)
+    net = network_from_line(sc.Line.single(wire, 100.0), (x[-1], 0, z[-1]), (x[0], 0, z[0]), water_density=1025.0,
+                            gravity=9.80665, n_elements=44)
+    st = static_equilibrium(MooringModel(net, Water(depth=None, gravity=9.80665)))
+    fe_support = np.linalg.norm(st.support[[0, -1]], axis=1)
+    # end tensions within 0.2 % (the two discretisations, 11 rigid links and 44 truss elements, differ by
+    # O(l^2) in how the weight is lumped), and the lowest point within 1 cm
+    assert fe_support == pytest.approx([float(last.tension_barge), float(last.tension_tug)], rel=2e-3)
+    assert st.position[:, 2].min() == pytest.approx(z.min(), abs=1e-2)
+
+
+def test_zigzag_sway_decays_along_the_line():
+    """Paper 003: the farther an element from the tug, the smaller its sway.
+
+    Its second finding, a barge tension periodic with the tug, is not reproduced (see the issue notes):
+    at 2 knots the tug sways sideways at up to 1.26 m/s, faster than it advances, the line goes slack
+    and snaps twice a period, and the barge's yaw (cross-flow drag only) does not settle into a
+    periodic response within 1200 s.
+    """
+    ds = _run("zigzag")
+    late = ds.where(ds.time >= 200.0, drop=True)
+    sway = np.ptp(late.y.values, axis=0)
+    # the tug sways 20 m peak to peak; the sway decreases from joint to joint along the line
+    assert sway[0] == pytest.approx(20.0, rel=1e-6)
+    assert np.all(np.diff(sway[:-1]) < 0)
+    assert sway[-2] < 0.7 * sway[0]
+
+
+def test_payout_releases_elements_at_equal_intervals_and_reaches_steady_tow():
+    ds = _run("payout")
+    released = ds.released.values
+    first = np.array([ds.time.values[np.argmax(released[:, k])] for k in range(released.shape[1])])
+    # the barge end leaves first; then one element each time the tug has run one element length
+    # (9.09 m at 2.5722 m/s = 3.53 s), to the output interval (0.5 s)
+    assert np.all(np.diff(first) < 0)
+    spacing = np.diff(np.sort(first))
+    interval = 100.0 / 11 / 2.5722
+    # each release is seen at the next output time (0.5 s), so a spacing is known to +-0.5 s, plus the
+    # drift of the element already out as it falls to the water: 0.75 s; the mean spacing to 0.1 s
+    assert spacing == pytest.approx(np.full(spacing.size, interval), abs=0.75)
+    assert spacing.mean() == pytest.approx(interval, abs=0.1)
+    # then the barge follows at the tug's speed, pulled by its resistance. The snap when the line comes
+    # taut starts a surge oscillation of the barge on the line (period 2 pi sqrt(M / (EA / L)) = 37 s) that
+    # only the quadratic resistance damps: +-0.3 % in speed and +-2 % in tension at 250-300 s; their
+    # means over that window (1.35 periods) are within 0.1 % and 1 %
+    late = ds.where(ds.time >= 250.0, drop=True)
+    assert float(late.barge_speed.mean()) == pytest.approx(2.5722, rel=1e-3)
+    barge = sc.load_case(EXAMPLES / "paper003_payout.yaml").analysis.barge
+    assert float(late.tension_barge.mean()) == pytest.approx(barge_resistance(barge, 2.5722), rel=1e-2)
+
+
+def test_free_line_conserves_energy_to_first_order():
+    """A line hanging in air between fixed tow points, released from horizontal; no damping, no drag."""
+    errors = []
+    for factor in (0.8, 0.4, 0.2):
+        model = TowlineModel(n_elements=11, length=100.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=EA,
+                             barge=None, held_tow_point_height=50.0, damping_ratio=0.0, bending_damping_ratio=0.0,
+                             drag=False, impact=False)
+        tug = np.array([0.0, 0.0, 50.0])
+        state = initial_state(model, tug, start="dropped", drop_height=50.0)
+
+        def still(t, tug=tug):
+            t = np.atleast_1d(t)
+            return np.broadcast_to(tug, (t.size, 3)).copy(), np.zeros((t.size, 3))
+
+        e0 = energy(model, state, tug)
+        dev = []
+        for _ in range(20):
+            state = simulate(model, still, 0.25, 0.25, state,
+                             time_step=factor * stable_time_step(model, 1.0)).final
+            dev.append(energy(model, state, tug) - e0)
+        errors.append(np.max(np.abs(dev)))
+    # the line falls ~7 m: 10 kJ of potential energy turns into motion and stretch; the error of the
+    # symplectic Euler scheme is bounded (no drift) and of first order in dt
+    orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert errors[0] < 1e-2 * 11 * 15.7 * 9.81 * 7
+    assert orders == pytest.approx([1.0, 1.0], abs=0.15)
