@@ -390,6 +390,46 @@ def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     return written
 
 
+def animation_writer(path, fps, max_frames, dpi, n_times):
+    """Check an animation's arguments; return (path, writer, frame indices, pyplot).
+
+    ``.gif`` is written with Pillow, ``.mp4`` with ffmpeg; the ``n_times`` output times are subsampled
+    evenly, first and last kept, to at most ``max_frames`` frames.
+    """
+    from ._validate import positive
+    from .errors import InputError
+
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".gif", ".mp4"):
+        raise InputError(f"animation file '{path}' must end in .gif or .mp4, got '{path.suffix}'. "
+                         f"Suggested fix: -o {path.with_suffix('.gif')}")
+    positive("fps", fps, "1/s", "give the frame rate, e.g. 10")
+    max_frames = int(positive("max_frames", max_frames, "", "give the largest number of frames, e.g. 200"))
+    if max_frames < 1:
+        raise InputError(f"max_frames must be >= 1, got {max_frames}. Suggested fix: e.g. 200.")
+    positive("dpi", dpi, "1/in", "e.g. 100")
+    if n_times == 0:
+        raise InputError("the result has no output times to animate. Suggested fix: rerun the case.")
+
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import FFMpegWriter, PillowWriter
+
+    if suffix == ".mp4":
+        if not FFMpegWriter.isAvailable():
+            raise InputError(f"cannot write '{path}': MP4 needs ffmpeg, which is not on the PATH. "
+                             f"Suggested fix: install ffmpeg or write a GIF: -o {path.with_suffix('.gif')}")
+        writer = FFMpegWriter(fps=fps)
+    else:
+        writer = PillowWriter(fps=fps)
+    n = min(max_frames, n_times)
+    frames = [n_times - 1] if n == 1 else np.round(np.linspace(0, n_times - 1, n)).astype(int)
+    return path, writer, frames, plt
+
+
 def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int = 100) -> Path:
     """Write an animation of a cable lay (``laying_dynamic`` result) as GIF or MP4.
 
@@ -423,7 +463,6 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
         The result is not a ``laying_dynamic`` one, the suffix is neither ``.gif`` nor ``.mp4``,
         ``.mp4`` was asked for without ffmpeg, or fps, max_frames or dpi is not positive.
     """
-    from ._validate import positive
     from .errors import InputError
 
     analysis = ds.attrs.get("analysis")
@@ -431,36 +470,8 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
         raise InputError(f"animate_laying needs a 'laying_dynamic' result, got analysis '{analysis}'. "
                          "Suggested fix: run a case with analysis type laying_dynamic, or use "
                          "'seacable plot' for the figures of this result.")
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in (".gif", ".mp4"):
-        raise InputError(f"animation file '{path}' must end in .gif or .mp4, got '{path.suffix}'. "
-                         f"Suggested fix: -o {path.with_suffix('.gif')}")
-    positive("fps", fps, "1/s", "give the frame rate, e.g. 10")
-    max_frames = int(positive("max_frames", max_frames, "", "give the largest number of frames, e.g. 200"))
-    if max_frames < 1:
-        raise InputError(f"max_frames must be >= 1, got {max_frames}. Suggested fix: e.g. 200.")
-    positive("dpi", dpi, "1/in", "e.g. 100")
     time = ds.time.values.astype(float)
-    if time.size == 0:
-        raise InputError("the result has no output times to animate. Suggested fix: rerun the case.")
-
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-    from matplotlib.animation import FFMpegWriter, PillowWriter
-
-    if suffix == ".mp4":
-        if not FFMpegWriter.isAvailable():
-            raise InputError(f"cannot write '{path}': MP4 needs ffmpeg, which is not on the PATH. "
-                             f"Suggested fix: install ffmpeg or write a GIF: -o {path.with_suffix('.gif')}")
-        writer = FFMpegWriter(fps=fps)
-    else:
-        writer = PillowWriter(fps=fps)
-
-    n = min(max_frames, time.size)
-    frames = [time.size - 1] if n == 1 else np.round(np.linspace(0, time.size - 1, n)).astype(int)
+    path, writer, frames, plt = animation_writer(path, fps, max_frames, dpi, time.size)
     t_unit = ds.time.attrs.get("units", "s")
     has_laid = "laid_x" in ds and ds.laid_x.size > 0
     if has_laid:

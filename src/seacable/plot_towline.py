@@ -462,39 +462,16 @@ def animate_towline(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int 
         neither ``.gif`` nor ``.mp4``, ``.mp4`` was asked for without ffmpeg, or fps,
         max_frames or dpi is not positive.
     """
-    from ._validate import positive
-    from .errors import InputError
+    from .plot import animation_writer
 
     _check(ds, "animate_towline")
-    path = Path(path)
-    suffix = path.suffix.lower()
-    if suffix not in (".gif", ".mp4"):
-        raise InputError(f"animation file '{path}' must end in .gif or .mp4, got '{path.suffix}'. "
-                         f"Suggested fix: -o {path.with_suffix('.gif')}")
-    positive("fps", fps, "1/s", "give the frame rate, e.g. 10")
-    max_frames = int(positive("max_frames", max_frames, "", "give the largest number of frames, e.g. 200"))
-    if max_frames < 1:
-        raise InputError(f"max_frames must be >= 1, got {max_frames}. Suggested fix: e.g. 200.")
-    positive("dpi", dpi, "1/in", "e.g. 100")
-
-    plt = _pyplot()
-    from matplotlib.animation import FFMpegWriter, PillowWriter
-
-    if suffix == ".mp4":
-        if not FFMpegWriter.isAvailable():
-            raise InputError(f"cannot write '{path}': MP4 needs ffmpeg, which is not on the PATH. "
-                             f"Suggested fix: install ffmpeg or write a GIF: -o {path.with_suffix('.gif')}")
-        writer = FFMpegWriter(fps=fps)
-    else:
-        writer = PillowWriter(fps=fps)
+    path, writer, frames, plt = animation_writer(path, fps, max_frames, dpi, ds.sizes["time"])
 
     time, unit = _time(ds)
     x, y, z, tx, ty = _arrays(ds)
     h = towline_distance(ds)
     bx, by = np.asarray(ds.barge_x.values, float), np.asarray(ds.barge_y.values, float)
     slack = np.asarray(ds.slack.values, dtype=bool) if "slack" in ds else np.zeros(x.shape, dtype=bool)
-    n = min(max_frames, time.size)
-    frames = [time.size - 1] if n == 1 else np.round(np.linspace(0, time.size - 1, n)).astype(int)
     fixed, half = _plan_box(ds, x, y)
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.5), gridspec_kw={"width_ratios": [1.2, 1.0]})

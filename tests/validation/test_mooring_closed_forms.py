@@ -100,8 +100,8 @@ def test_a_line_dragged_along_the_seabed_pulls_with_coulomb_friction():
     # (at a speed 1/10 of the chain's axial wave speed the stretch is steady): 0.5 %
     assert pull == pytest.approx(np.full(pull.shape, expected), rel=5e-3)
     # and without friction nothing holds the line back but its tiny tangential added mass: no pull
-    net0 = MooringModel(net, Water(depth=depth, density=RHO, gravity=G))
-    free_run = simulate(net0, motion, 20.0, 0.05, 0.5)
+    frictionless = MooringModel(net, Water(depth=depth, density=RHO, gravity=G))
+    free_run = simulate(frictionless, motion, 20.0, 0.05, 0.5)
     assert np.max(free_run.tension[free_run.time > 10.0, -1]) < 1e-3 * expected
 
 

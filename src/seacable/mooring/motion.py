@@ -16,6 +16,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, quantity
+from .._ramp import smooth_ramp
 from ..errors import InputError
 
 __all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "rotation_matrix"]
@@ -24,23 +25,9 @@ _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
 
 
-def _ramp(t, T):
-    """Smooth ramp and its first two derivatives."""
-    t = np.asarray(t, float)
-    if T <= 0:
-        one = np.ones_like(t)
-        return one, 0 * one, 0 * one
-    s = np.clip(t / T, 0.0, 1.0)
-    inside = (t >= 0) & (t < T)  # right-continuous at the start
-    r = 0.5 * (1 - np.cos(math.pi * s))
-    dr = np.where(inside, 0.5 * math.pi / T * np.sin(math.pi * s), 0.0)
-    ddr = np.where(inside, 0.5 * (math.pi / T) ** 2 * np.cos(math.pi * s), 0.0)
-    return r, dr, ddr
-
-
 def _ramped(off, doff, ddoff, times, T):
     """Offset signals (nt, k) times the ramp, with the product rule."""
-    r, dr, ddr = (a[:, None] for a in _ramp(times, T))
+    r, dr, ddr = (a[:, None] for a in smooth_ramp(times, T))
     return off * r, doff * r + off * dr, ddoff * r + 2 * doff * dr + off * ddr
 
 

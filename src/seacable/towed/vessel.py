@@ -57,6 +57,7 @@ from pydantic import Field, TypeAdapter, ValidationError, model_validator
 from scipy.interpolate import CubicSpline
 
 from .._model import UNION_TAGS, Model, _problems, input_error, quantity
+from .._ramp import smooth_ramp
 from .._validate import finite
 from ..environment import _warn_if_degrees
 from ..errors import InputError
@@ -246,7 +247,7 @@ class ZigZagPath(_Headed):
     with :math:`\\mathbf{e} = (\\cos\\psi, \\sin\\psi)` the course,
     :math:`\\mathbf{n} = (-\\sin\\psi, \\cos\\psi)` its left normal and
     :math:`r(t) = (1 - \\cos(\\pi t / T_r))/2` for :math:`0 \\le t < T_r`, 1 after
-    (the half-cosine ramp of :mod:`seacable.mooring.motion`), or :math:`r = 1` when
+    (:func:`seacable._ramp.smooth_ramp`, shared with the mooring motions), or :math:`r = 1` when
     ``ramp`` is 0. The ramp has zero slope at both ends, so with ``ramp > 0`` the
     sway velocity starts from zero and is continuous; with ``ramp = 0`` the sway
     velocity jumps to :math:`2\\pi A \\cos\\phi / T` at t = 0. The velocity is the
@@ -483,24 +484,13 @@ def _table_spline(resolved: str, kind: str, stamp: tuple):  # stamp: part of the
     return time, (spline.antiderivative(), spline)
 
 
-def _smooth_ramp(t, duration):
-    """Half-cosine ramp r(t) = (1 - cos(pi t / T_r)) / 2 on [0, T_r), 1 after, 0 before, and dr/dt."""
-    if duration <= 0:
-        return np.ones_like(t), np.zeros_like(t)
-    s = np.clip(t / duration, 0.0, 1.0)
-    inside = (t >= 0) & (t < duration)
-    r = 0.5 * (1.0 - np.cos(math.pi * s))
-    dr = np.where(inside, 0.5 * math.pi / duration * np.sin(math.pi * s), 0.0)
-    return r, dr
-
-
 def _zigzag(t, path: ZigZagPath):
     """Positions and velocities of a zig-zag path: straight run plus a ramped sine across it."""
     pos, vel = _straight(t, path.speed, path.heading, path.start)
     normal = np.array([-math.sin(path.heading), math.cos(path.heading), 0.0])
     omega = 2.0 * math.pi / path.period
     arg = omega * t + path.phase
-    r, dr = _smooth_ramp(t, path.ramp)
+    r, dr, _ = smooth_ramp(t, path.ramp)
     sway = path.amplitude * r * np.sin(arg)
     sway_rate = path.amplitude * (dr * np.sin(arg) + r * omega * np.cos(arg))
     return pos + sway[:, None] * normal, vel + sway_rate[:, None] * normal

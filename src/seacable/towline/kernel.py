@@ -71,7 +71,7 @@ from numba import njit
 
 from .barge import barge_accelerations
 
-__all__ = ["P_SIZE", "evaluate", "frame_from_axis", "joint_points", "run_steps"]
+__all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points", "run_steps"]
 
 # Line parameters (flat vector).
 P_L, P_M, P_I, P_D, P_AREA, P_CA, P_CD, P_CF, P_K, P_CX, P_CT, P_ZM = range(12)
@@ -145,7 +145,7 @@ def joint_points(R, E, nu, om, half, k, pa, va, pb, vb):
 
 
 @njit(cache=True)
-def _barge_point(bs, bxt, bzt, p, v):
+def barge_point(bs, bxt, bzt, p, v):
     c, s = math.cos(bs[B_PSI]), math.sin(bs[B_PSI])
     p[0] = bs[B_X] + bxt * c
     p[1] = bs[B_Y] + bxt * s
@@ -181,8 +181,8 @@ def _spring(P, gap, dgap, axis, out):
 
 
 @njit(cache=True)
-def _forces(t, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, held, Fb, Mb, mass_t, inert,
-            jf, tension, slack, ma_now, work):
+def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, tension, slack,
+            ma_now, work):
     """Body forces Fb (N, 3), moments Mb (N, 2), transverse mass and inertia, joint forces jf (N+1, 3).
 
     ``work`` is (12, 3) scratch.
@@ -190,7 +190,7 @@ def _forces(t, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, held, Fb, Mb,
     n = R.shape[0]
     half = 0.5 * P[P_L]
     rho, g = P[P_RHO], P[P_G]
-    pa, va, pb, vb = work[0], work[1], work[2], work[3]
+    pb, vb = work[2], work[3]
     qa, wa, qb, wb = work[4], work[5], work[6], work[7]
     gap, dgap, axis, f = work[8], work[9], work[10], work[11]
     jf[:] = 0.0
@@ -201,10 +201,11 @@ def _forces(t, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, held, Fb, Mb,
         if j == first:
             qa[:] = tug_p
             wa[:] = tug_v
-        else:
-            joint_points(R, E, nu, om, half, j - 1, pa, va, qa, wa)
+        else:  # the aft point of element j - 1, found as pb, vb at the previous joint
+            qa[:] = pb
+            wa[:] = vb
         if j == n:
-            _barge_point(bs, bxt, bzt, qb, wb)
+            barge_point(bs, bxt, bzt, qb, wb)
         else:
             joint_points(R, E, nu, om, half, j, qb, wb, pb, vb)
         for i in range(3):
@@ -312,8 +313,6 @@ def _forces(t, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, held, Fb, Mb,
             Mb[j - 1, 1] += f[0] * E[j - 1, 0, 2] + f[1] * E[j - 1, 1, 2] + f[2] * E[j - 1, 2, 2]
             Mb[j, 0] -= f[0] * E[j, 0, 1] + f[1] * E[j, 1, 1] + f[2] * E[j, 2, 1]
             Mb[j, 1] -= f[0] * E[j, 0, 2] + f[1] * E[j, 1, 2] + f[2] * E[j, 2, 2]
-    _ = t
-    _ = held
 
 
 @njit(cache=True)
@@ -323,7 +322,7 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
     half = 0.5 * P[P_L]
     pa, va, pb, vb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     if k + 1 == n:
-        _barge_point(bs, bxt, bzt, pb, vb)
+        barge_point(bs, bxt, bzt, pb, vb)
     else:
         joint_points(R, E, nu, om, half, k + 1, pb, vb, pa, va)
     e1 = np.zeros(3)
@@ -350,14 +349,14 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
 def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, tension, slack, ma):
     """Joint tensions, slack flags and transverse added masses of the current state."""
     n = R.shape[0]
-    _forces(0.0, R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, False, np.zeros((n, 3)), np.zeros((n, 2)),
+    _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)),
             np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), tension, slack, ma, np.zeros((12, 3)))
 
 
 @njit(cache=True)
-def run_steps(t0, dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma_prev,
+def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma_prev,
               tension, slack):
-    """Advance ``len(tug_p) - 1`` explicit steps of ``dt``; tug positions/velocities at t0 + i dt.
+    """Advance ``len(tug_p) - 1`` explicit steps of ``dt``; ``tug_p``, ``tug_v`` at the step times.
 
     ``first_arr[0]`` is the first element off the bitt (0 when the whole line is out). Returns the
     number of steps taken, fewer when a state is no longer finite.
@@ -375,12 +374,11 @@ def run_steps(t0, dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, b
     half = 0.5 * P[P_L]
     nstep = tug_p.shape[0] - 1
     for step in range(nstep):
-        t = t0 + step * dt
         first = first_arr[0]
         pt = tug_p[step]
         vt = tug_v[step]
-        _forces(t, R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, held, Fb, Mb, mass_t, inert, jf, tension,
-                slack, ma_now, work)
+        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, tension, slack, ma_now,
+                work)
         for k in range(first, n):
             u, v, w = nu[k, 0], nu[k, 1], nu[k, 2]
             q, r = om[k, 0], om[k, 1]
@@ -421,7 +419,7 @@ def run_steps(t0, dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, b
         # payout: the next element leaves the bitt once there is room for it
         if first > 0:
             if first == n:
-                _barge_point(bs, bxt, bzt, qb, wb)
+                barge_point(bs, bxt, bzt, qb, wb)
             else:
                 joint_points(R, E, nu, om, half, first, qb, wb, sa, sb)
             d2 = 0.0

@@ -138,8 +138,9 @@ class State:
 
 
 def _barge_point(model: TowlineModel, barge) -> np.ndarray:
-    xt, zt = model.barge_tow_point
-    return np.array([barge[0] + xt * math.cos(barge[2]), barge[1] + xt * math.sin(barge[2]), zt])
+    p = np.zeros(3)
+    K.barge_point(barge, *model.barge_tow_point, p, np.zeros(3))
+    return p
 
 
 def initial_state(model: TowlineModel, tug_point, *, start: str = "straight", heading: float = 0.0,
@@ -184,7 +185,6 @@ def initial_state(model: TowlineModel, tug_point, *, start: str = "straight", he
                 dz = target - pts[j - 1, 2]
                 dz = max(-el * 0.99, min(el * 0.99, dz))
                 pts[j] = pts[j - 1] + math.sqrt(el * el - dz * dz) * back + np.array([0.0, 0.0, dz])
-            end = pts[-1]
         else:
             raise InputError(f"start must be 'straight', 'dropped' or 'coiled', got {start!r}.")
         end = pts[-1]
@@ -212,9 +212,11 @@ def joint_positions(model: TowlineModel, state: State, tug_point) -> np.ndarray:
 
 
 def energy(model: TowlineModel, state: State, tug_point) -> float:
-    """Kinetic (with added mass) plus gravity, buoyancy-free potential and spring energy. [J]
+    """Kinetic (with added mass) plus gravity and joint-spring energy of the line. [J]
 
-    For the energy balance of the free line in air (no buoyancy, no drag, no damping).
+    For the energy balance of the free line in air (no buoyancy, no drag, no damping). The spring
+    energy follows the joint law of the kernel: ``k |gap|^2 / 2`` in tension, only the part across the
+    line when the gap closes along it.
     """
     P = model.params
     m, I = P[K.P_M], P[K.P_I]
@@ -222,12 +224,15 @@ def energy(model: TowlineModel, state: State, tug_point) -> float:
     pe = m * model.gravity * float(np.sum(state.R[:, 2]))
     half = 0.5 * model.element_length
     e1 = state.E[:, :, 0]
-    ends = [np.asarray(tug_point, float)]
-    for k in range(model.n_elements):
-        ends += [state.R[k] - half * e1[k], state.R[k] + half * e1[k]]
-    ends.append(_barge_point(model, state.barge))
-    gaps = np.array(ends).reshape(-1, 2, 3)
-    spring = 0.5 * P[K.P_K] * float(np.sum((gaps[:, 1] - gaps[:, 0]) ** 2))
+    prev = np.vstack([np.asarray(tug_point, float)[None], state.R + half * e1])    # joint j: aft of j - 1
+    nxt = np.vstack([state.R - half * e1, _barge_point(model, state.barge)[None]])  # front of j
+    gap = nxt - prev
+    axis = np.zeros_like(gap)
+    axis[:-1] += e1
+    axis[1:] += e1
+    axis /= np.linalg.norm(axis, axis=1, keepdims=True)
+    along = np.minimum(np.sum(gap * axis, axis=1), 0.0)
+    spring = 0.5 * P[K.P_K] * float(np.sum(gap**2) - np.sum(along**2))
     return ke + pe + spring
 
 
@@ -297,7 +302,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
             t0 = k * output_interval
             tt = t0 + dt * np.arange(sub + 1)
             tp, tv = tug(tt)
-            done = K.run_steps(t0, dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev,
+            done = K.run_steps(dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev,
                                tension, slack)
             steps += done
             if done < sub:
