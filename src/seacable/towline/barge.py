@@ -28,8 +28,20 @@ M22 - M11 = m22 - m11; the test suite checks this by integration.)
 Hull forces (X, Y, N), with ``w(x) = v + r x`` the cross-flow velocity of the strip at x::
 
     X = -1/2 rho C_x B T |u| u
-    Y = -1/2 rho C_y T  int_{-L/2}^{L/2} |w| w dx
-    N = -1/2 rho C_y T  int_{-L/2}^{L/2} x |w| w dx
+    Y = -1/2 rho C_y T  int_{-L/2}^{L/2} |w| w dx  -  |u| m'_T w(x_T)
+    N = -1/2 rho C_y T  int_{-L/2}^{L/2} x |w| w dx  -  x_T |u| m'_T w(x_T)
+
+The last terms are the hull's lift by slender-body theory (Newman 1977, sec. 7.9): the sections
+pass aft at the speed ``|u|``, each carrying the lateral momentum ``m' w`` of its added mass, and
+the flow separating at the trailing edge ``x_T = -sign(u) L/2`` (the square stern when going ahead)
+sheds that momentum into the wake. Integrating the sectional force ``|u| d(m' w)/dx`` along the hull
+gives the Munk moment ``-m22 u v`` (in the equations below) plus the force ``-|u| m'_T w(x_T)`` at
+the trailing edge, with ``m'_T = m22 / L`` for uniform sections. It is the linear part of the hull's
+sway and yaw damping, proportional to the speed: ``Y_v = -|u| m22 / L``, ``N_r = -|u| m22 L / 4``, and
+a weathervane moment ``m22 u v / 2`` about midship against the Munk moment ``(m22 - m11) u v`` (1.27
+times larger for paper 003's barge, so the free hull is still directionally unstable and the towline
+at the bow holds it). Without the lift the hull damps sway and yaw only quadratically, through the
+cross-flow drag, and the towed barge wanders in yaw instead of settling to the tug's rhythm.
 
 integrated with the midpoint rule over ``n_strips`` strips (exact for r = 0, second
 order in the strip width otherwise; for pure yaw the relative error is
@@ -49,6 +61,8 @@ References
    ``crossFlowDrag``).
 .. [3] Söding, H. (1982), "Prediction of ship steering capabilities",
    Schiffstechnik 29, 3-29: surge added mass ``2.7 rho V^(5/3) / L^2``.
+.. [7] Newman, J. N. (1977), *Marine Hydrodynamics*, MIT Press, sec. 7.9: slender-body
+   theory of the lateral force and moment, with the lift shed at the trailing edge.
 .. [4] DNV-RP-C205 (2010), *Environmental conditions and environmental loads*,
    App. A, Table A-1: two-dimensional added mass of a rectangle.
 .. [5] Hoerner, S. F. (1965), *Fluid-Dynamic Drag*, ch. 3 (blunt bodies in axial
@@ -77,6 +91,7 @@ __all__ = [
     "B_CY",
     "B_DRAFT",
     "B_LENGTH",
+    "B_LIFT",
     "B_M11",
     "B_M22",
     "B_M66",
@@ -114,7 +129,8 @@ B_N_STRIPS = 11  #: strips of the cross-flow integral (a float holding an intege
 B_RHO = 12       #: water density [kg/m^3]
 B_CX = 13        #: surge drag coefficient C_x [-]
 B_CY = 14        #: cross-flow drag coefficient C_y [-]
-B_SIZE = 15      #: length of the array
+B_LIFT = 15      #: hull_lift * m22 / L, the sectional added mass at the trailing edge [kg/m]
+B_SIZE = 16      #: length of the array
 
 _RHO = 1025.0
 
@@ -174,6 +190,9 @@ class Barge(Model):
     yaw_added_inertia
         Yaw added inertia as a fraction of the strip-theory value
         ``m66 = m22 L^2 / 12`` (uniform sections). Default 1.0. [-]
+    hull_lift
+        The hull's lift as a fraction of its slender-body value ``-|u| (m22 / L) w(x_T)`` at
+        the trailing edge (see the module). Default 1.0; 0 leaves only the cross-flow drag. [-]
     """
 
     length: quantity("m", gt=0, fix="give the length between perpendiculars in metres, e.g. 50.0.") = Field(
@@ -194,6 +213,8 @@ class Barge(Model):
     surge_added_mass: quantity("-", ge=0) = Field(0.05, description="m11 / m. [-]")
     sway_added_mass: quantity("-", ge=0) = Field(2.37, description="C_a of m22' = C_a rho pi T^2 / 2. [-]")
     yaw_added_inertia: quantity("-", ge=0) = Field(1.0, description="m66 / (m22 L^2 / 12). [-]")
+    hull_lift: quantity("-", ge=0) = Field(1.0, description="Hull lift as a fraction of its slender-body "
+                                                            "value at the trailing edge. [-]")
 
     @model_validator(mode="after")
     def _tow_point_on_hull(self):
@@ -326,11 +347,14 @@ def barge_hull_forces(barge: Barge, u, v, r, water_density: float = _RHO, n_stri
     -----
     ``X = -1/2 rho C_x B T |u| u``; ``Y, N = -1/2 rho C_y T int (1, x) |v + r x| (v + r x) dx``
     over ``-L/2 <= x <= L/2`` (Fossen 2011, cross-flow drag), by the midpoint rule:
-    exact for ``r = 0``, error O((L/n)^2) otherwise.
+    exact for ``r = 0``, error O((L/n)^2) otherwise; plus the slender-body lift
+    ``Y_L = -hull_lift |u| (m22 / L) (v + r x_T)``, ``N_L = x_T Y_L`` at the trailing edge
+    ``x_T = -sign(u) L / 2`` (Newman 1977, sec. 7.9).
 
     References
     ----------
     .. [1] Fossen, T. I. (2011), *Handbook of Marine Craft Hydrodynamics and Motion Control*.
+    .. [2] Newman, J. N. (1977), *Marine Hydrodynamics*, sec. 7.9.
     """
     b, rho, n = _barge(barge), _rho(water_density), _strips(n_strips)
     u, v, r = _velocities(u, v, r)
@@ -340,9 +364,16 @@ def barge_hull_forces(barge: Barge, u, v, r, water_density: float = _RHO, n_stri
     w = np.asarray(v)[..., None] + np.asarray(r)[..., None] * x
     drag = 0.5 * rho * b.cross_flow_drag * b.draft * np.abs(w) * w * dx
     X = -0.5 * rho * b.surge_drag * b.beam * b.draft * np.abs(u) * u
-    Y = -drag.sum(axis=-1)
-    N = -(drag * x).sum(axis=-1)
+    x_t = -0.5 * L * np.sign(u)
+    lift = -_lift_per_metre(b, rho) * np.abs(u) * (v + r * x_t)
+    Y = -drag.sum(axis=-1) + lift
+    N = -(drag * x).sum(axis=-1) + x_t * lift
     return X, Y, N
+
+
+def _lift_per_metre(b: Barge, rho: float) -> float:
+    """``hull_lift m22 / L``: the sectional sway added mass at the trailing edge, scaled. [kg/m]"""
+    return b.hull_lift * b.sway_added_mass * 0.5 * rho * math.pi * b.draft**2
 
 
 def barge_equations(barge: Barge, u, v, r, X_ext, Y_ext, N_ext, water_density: float = _RHO,
@@ -416,6 +447,7 @@ def barge_parameters(barge: Barge, water_density: float = _RHO, n_strips: int = 
     p[B_LENGTH], p[B_BEAM], p[B_DRAFT] = b.length, b.beam, b.draft
     p[B_TOW_X], p[B_TOW_Z] = b.tow_x, b.tow_point_height
     p[B_N_STRIPS], p[B_RHO], p[B_CX], p[B_CY] = n, rho, b.surge_drag, b.cross_flow_drag
+    p[B_LIFT] = _lift_per_metre(b, rho)
     return p
 
 
@@ -434,7 +466,9 @@ def barge_hull_forces_flat(params, u, v, r):
         Y += f
         N += f * x
     k_cf = params[B_YCF]
-    return -params[B_XUU] * abs(u) * u, -k_cf * Y, -k_cf * N
+    x_t = -0.5 * L if u > 0.0 else (0.5 * L if u < 0.0 else 0.0)
+    lift = -params[B_LIFT] * abs(u) * (v + r * x_t)
+    return -params[B_XUU] * abs(u) * u, -k_cf * Y + lift, -k_cf * N + x_t * lift
 
 
 @njit(cache=True)

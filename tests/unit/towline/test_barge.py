@@ -19,6 +19,7 @@ from seacable.towline.barge import (
     B_CY,
     B_DRAFT,
     B_LENGTH,
+    B_LIFT,
     B_M11,
     B_M22,
     B_M66,
@@ -159,10 +160,45 @@ def test_resistance_is_quadratic_and_equals_surge_drag(barge):
 def test_pure_sway_is_exact_for_any_strip_count(barge):
     v = np.array([-0.4, -0.1, 0.05, 0.3])
     for n in (1, 7, 20):
-        _, Y, N = barge_hull_forces(barge, 1.0, v, 0.0, n_strips=n)
+        _, Y, N = barge_hull_forces(barge, 0.0, v, 0.0, n_strips=n)
         # Constant integrand: the midpoint rule is exact; -1/2 rho C_y T L |v| v, round-off only.
         np.testing.assert_allclose(Y, -0.5 * RHO * 1.0 * 0.5 * 50.0 * np.abs(v) * v, rtol=1e-13)
         np.testing.assert_allclose(N, 0.0, atol=1e-9 * np.abs(Y).max() * 50.0)
+
+
+# ------------------------------------------------------------------------------------------
+# Slender-body lift at the trailing edge
+# ------------------------------------------------------------------------------------------
+
+def test_hull_lift_is_the_slender_body_force_at_the_stern(barge):
+    no_drag = barge.replace(cross_flow_drag=0.0)
+    # m22 / L = 2.37 rho pi T^2 / 2 = 2.37 * 402.5 = 953.93 kg/m (module docstring)
+    m_t = 2.37 * 0.5 * RHO * math.pi * 0.25
+    u, v, r = 1.5, 0.2, 0.01
+    _, Y, N = barge_hull_forces(no_drag, u, v, r)
+    # going ahead the stern (x = -25 m) sheds the lift: Y = -u m'_T (v - 25 r), N = -25 Y; exact
+    assert Y == pytest.approx(-u * m_t * (v - 25.0 * r), rel=1e-13)
+    assert N == pytest.approx(-25.0 * Y, rel=1e-13)
+    # linear derivatives: Y_v = -u m22 / L, N_v = +u m22 / 2 (weathervane), N_r = -u m22 L / 4
+    _, Yv, Nv = barge_hull_forces(no_drag, u, 1.0, 0.0)
+    _, _, Nr = barge_hull_forces(no_drag, u, 0.0, 1.0)
+    assert (Yv, Nv, Nr) == pytest.approx((-u * m_t, u * m_t * 25.0, -u * m_t * 50.0**2 / 4), rel=1e-13)
+    # going astern the bow is the trailing edge: the hull is mirrored fore-aft
+    _, Ya, Na = barge_hull_forces(no_drag, -u, v, r)
+    assert Ya == pytest.approx(-u * m_t * (v + 25.0 * r), rel=1e-13) and Na == pytest.approx(25.0 * Ya, rel=1e-13)
+    # lift grows with the speed and vanishes at rest, and hull_lift scales it (0 removes it)
+    assert barge_hull_forces(no_drag, 0.0, v, r)[1:] == (0.0, 0.0)
+    half = barge_hull_forces(no_drag.replace(hull_lift=0.5), u, v, r)
+    assert half[1:] == pytest.approx((0.5 * Y, 0.5 * N), rel=1e-13)
+    assert barge_hull_forces(no_drag.replace(hull_lift=0.0), u, v, r)[1:] == (0.0, 0.0)
+
+
+def test_hull_lift_does_no_work_against_the_motion(barge):
+    # The lift dissipates: its power Y v + N r = -|u| m'_T (v + r x_T)^2 <= 0 for any motion.
+    rng = np.random.default_rng(7)
+    u, v, r = rng.normal(0, 1.5, 200), rng.normal(0, 0.4, 200), rng.normal(0, 0.03, 200)
+    _, Y, N = barge_hull_forces(barge.replace(cross_flow_drag=0.0), u, v, r)
+    assert np.all(Y * v + N * r <= 1e-12 * (np.abs(Y * v) + np.abs(N * r)))
 
 
 def test_pure_yaw_moment_converges_at_second_order(barge):
@@ -203,18 +239,26 @@ def test_symmetries_of_hull_forces(barge):
     rng = np.random.default_rng(3)
     u, v, r = rng.normal(0, 1, 50), rng.normal(0, 0.3, 50), rng.normal(0, 0.02, 50)
     X, Y, N = barge_hull_forces(barge, u, v, r)
-    Xm, Ym, Nm = barge_hull_forces(barge, -u, -v, -r)
-    # Odd in the velocity vector (|w| w is odd): exact, the strip abscissae are the same.
+    Xm, _, _ = barge_hull_forces(barge, -u, v, r)
+    _, Ym, Nm = barge_hull_forces(barge, u, -v, -r)
+    # X odd in u; Y, N odd in (v, r) at a given u (|w| w and the lift are odd; the trailing edge is set
+    # by the sign of u, so reversing u as well is not a symmetry): exact, the strip abscissae are the same.
     np.testing.assert_array_equal(Xm, -X)
     np.testing.assert_allclose(Ym, -Y, rtol=1e-13, atol=1e-9)
     np.testing.assert_allclose(Nm, -N, rtol=1e-13, atol=1e-7)
-    # Fore-aft symmetric hull: r -> -r mirrors x -> -x, Y even and N odd (strips symmetric about 0).
-    _, Yf, Nf = barge_hull_forces(barge, u, v, -r)
+    # Fore-aft symmetric hull: (u, r) -> (-u, -r) mirrors x -> -x (the trailing edge too), Y even and
+    # N odd (strips symmetric about 0).
+    Xf, Yf, Nf = barge_hull_forces(barge, -u, v, -r)
+    np.testing.assert_array_equal(Xf, -X)
     np.testing.assert_allclose(Yf, Y, rtol=1e-12, atol=1e-9)
     np.testing.assert_allclose(Nf, -N, rtol=1e-12, atol=1e-7)
     # Y odd in v at r = 0 and N odd in r at v = 0, and both oppose the motion.
     _, Yv, _ = barge_hull_forces(barge, 0.0, v, 0.0)
     _, _, Nr = barge_hull_forces(barge, 0.0, 0.0, r)
+    assert np.all(Yv * v < 0) and np.all(Nr * r < 0)
+    # with the lift (u != 0) as well
+    _, Yv, _ = barge_hull_forces(barge, u, v, 0.0)
+    _, _, Nr = barge_hull_forces(barge, u, 0.0, r)
     assert np.all(Yv * v < 0) and np.all(Nr * r < 0)
 
 
@@ -233,7 +277,7 @@ def _rk4(f, y, dt, steps):
 
 
 def test_kinetic_energy_conserved_without_loads(barge):
-    ideal = barge.replace(surge_drag=0.0, cross_flow_drag=0.0)
+    ideal = barge.replace(surge_drag=0.0, cross_flow_drag=0.0, hull_lift=0.0)
     _, M11, M22, M66 = barge_mass(ideal)
 
     def rhs(y):
@@ -283,6 +327,7 @@ def test_parameter_layout(barge):
     assert (p[B_LENGTH], p[B_BEAM], p[B_DRAFT]) == (50.0, 15.0, 0.5)
     assert (p[B_TOW_X], p[B_TOW_Z]) == (25.0, 1.0)  # bow, 1 m above the water by default
     assert (p[B_N_STRIPS], p[B_RHO], p[B_CX], p[B_CY]) == (24.0, RHO, 1.0, 1.0)
+    assert p[B_LIFT] == pytest.approx(2.37 * 0.5 * RHO * math.pi * 0.25, rel=1e-15)  # m22 / L
     aft = barge_parameters(barge.replace(tow_point_x=-25.0, tow_point_height=2.0))
     assert (aft[B_TOW_X], aft[B_TOW_Z]) == (-25.0, 2.0)
 
