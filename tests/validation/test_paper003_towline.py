@@ -117,10 +117,11 @@ def test_zigzag_sway_decays_along_the_line(zigzag):
     late = zigzag.where(zigzag.time >= 2500.0, drop=True)
     sway = np.ptp(late.y.values, axis=0)
     assert sway[0] == pytest.approx(20.0, rel=1e-3)  # the tug's, 2 x 10 m
-    # strictly decreasing from node to node, down to the barge's tow point, which the barge holds
-    # nearly still: 1.05 m peak to peak; asserted below a tenth of the tug's
-    assert np.all(np.diff(sway) < 0)
-    assert sway[-1] < 0.1 * sway[0]
+    # strictly decreasing from joint to joint along the line (nodes 0 to n - 1); the barge holds its tow
+    # point (node n) nearly still, 1.1 m peak to peak, as the last joint: asserted below a tenth of the
+    # tug's
+    assert np.all(np.diff(sway[:-1]) < 0)
+    assert sway[-1] < 0.1 * sway[0] and sway[-2] < 0.1 * sway[0]
 
 
 def test_zigzag_barge_tension_is_periodic_with_the_tug(zigzag):
@@ -145,6 +146,24 @@ def test_zigzag_barge_tension_is_periodic_with_the_tug(zigzag):
     assert not late.slack.values.any()
     barge = sc.load_case(EXAMPLES / "paper003_zigzag.yaml").analysis.barge
     assert tension.mean() == pytest.approx(barge_resistance(barge, 1.0289), rel=2e-2)
+
+
+def test_barge_overrunning_the_line_piles_it_up_and_the_run_goes_on():
+    """The zig-zag start with 100 elements: the tug sets off at 2 knots with the barge at rest, the line
+    snaps taut (63 kN) and throws the barge forward, an elastic overshoot to nearly twice the tug's
+    speed (2 U undamped), so that the barge overruns the slack line and pushes it together for a
+    minute and a half. Runs of this start blew up at 26-29 s before the joints had their stop at half
+    an element's overlap and the water-entry impact its per-point form."""
+    ds = _run("zigzag", n_elements=100, duration=120.0, output_interval=1.0)
+    speed = ds.barge_speed.values
+    assert speed.max() > 1.6 * 1.0289  # the overrun: 1.84 m/s
+    pushed = ds.where((ds.time >= 30.0) & (ds.time <= 100.0), drop=True)
+    # while it overruns, the barge end of the line carries almost nothing (33 N against the 4 kN of the
+    # steady tow)
+    assert float(pushed.tension_barge.max()) < 0.02 * 4069.0
+    # and the line comes taut again once the barge has slowed below the tug's speed: 6 kN at 120 s
+    assert speed[-1] < 1.0289 and float(ds.tension_barge[-1]) > 4069.0
+    assert np.isfinite(ds.x.values).all()
 
 
 def test_payout_releases_elements_at_equal_intervals_and_reaches_steady_tow():

@@ -33,22 +33,30 @@ Forces (F, body components; moments ``(M_q, M_r) = (-s F_z, s F_y)`` of a force 
 - drag on the wetted length: ``-1/2 rho d C_D |v_n| v_n`` across and ``-1/2 rho pi d C_f |u| u``
   along (skin friction on the wetted perimeter), with the velocity of each Gauss point;
 - water-entry impact: the momentum given to the added mass as it grows, ``H = -(dm_a/dt)_+ (0, v, w)``
-  (paper 003 writes ``-(m_j / dt)(0, v, w)``, the same momentum given in one step);
+  (paper 003 writes ``-(m_j / dt)(0, v, w)``, the same momentum given in one step), taken at each
+  Gauss point with that point's share of the added mass and its own velocity, and so with its
+  moment: a force at the centre's velocity pumps energy into an element that rotates through the
+  surface (its end entering the water while its centre rises), which made 100-element runs blow up;
+  per point, the impact's power ``-(dm_a/dt)_+ |v_p|^2`` is never positive;
 - joint tension: the connection points of neighbours (``b_{j-1}`` and ``a_j``; the tug's and the
   barge's tow points at the ends) are joined by a spring of stiffness ``k`` (from the breaking load
   and the elongation at break: ``EA = P / eps_b``, ``k = (n + 1) EA / L`` so that the n + 1 joints
   in series stretch as the line does) and a damper ``c_x`` along the joint,
   ``c_x / 10`` across (``c_x = 2 zeta sqrt(k m)``, paper 003). The tension reported is the joint
   force along the line. A joint whose gap closes along the line (the connection points pushed into
-  each other: compression) is slack: the spring keeps only its part across the line, so the joint
-  stays pinned sideways but takes no compression, and the tension rises again from zero, without a
-  jump, when the gap reopens. Paper 003 instead releases the joint entirely (no force) when the next
-  connection point comes within ``l/2`` of the previous element's centre; a released joint lets the
-  points drift apart sideways by up to an element length while the line folds, and re-engaging it
-  loads the spring with ``k`` times that gap, an impulse that made the explicit scheme blow up in our
-  runs (energy jumps at each release). A fully pinned joint (no release) instead lets a chain of
-  rigid elements carry compression until it buckles, which pushed a floating line under water ahead
-  of a drifting barge;
+  each other: compression; the line's direction is the mean of the joint's two elements) is slack:
+  the spring keeps only its part across the line, so the joint stays pinned sideways but takes no
+  compression, and the tension rises again from zero, without a jump, when the gap reopens. Past an
+  overlap of half an element the spring takes up compression again (a stop): without it, the
+  elements of a line that piles up, as when the barge overruns it, slid along each other without
+  end, and the slack joint's pull across a turning axis (a follower force) made them flutter until
+  the run blew up. Paper 003 releases the joint entirely (no force) when the next connection point
+  comes within ``l/2`` of the previous element's centre; a released joint lets the points drift
+  apart sideways by up to an element length while the line folds, and re-engaging it loads the
+  spring with ``k`` times that gap, an impulse that made the explicit scheme blow up in our runs
+  (energy jumps at each release). A fully pinned joint (no release) instead lets a chain of rigid
+  elements carry compression until it buckles, which pushed a floating line under water ahead of a
+  drifting barge;
 - material damping of bending: a moment ``c_m (omega_j - omega_{j-1})`` between neighbours,
   ``c_m = 2 zeta_m sqrt(T (l/2) I)`` with the joint's tension T (the element's pendulum mode under
   tension, paper 003's ``2 zeta_m sqrt(P l I_y)``).
@@ -158,34 +166,36 @@ def barge_point(bs, bxt, bzt, p, v):
 
 
 @njit(cache=True)
-def _spring(P, gap, dgap, axis, out):
-    """Joint force on the previous body (towards the next one); returns its tension along the line.
+def _spring(P, gap, dgap, axis, cos_fold, out):
+    """Joint force on the previous body (towards the next one) into ``out``; returns the tension.
 
-    The spring acts on the whole gap in tension; when the gap closes along the line (the next element
-    pushing into the previous one), its axial part is dropped: the joint stays pinned across the line
-    but takes no compression along it.
+    With ``g = gap . axis`` (``axis`` the unit mean of the joint's elements) the spring pins the
+    points across the axis and along it pulls ``k g`` in tension (g > 0); while the gap closes (the
+    next element's end sliding into the previous one) it takes no compression until the overlap
+    reaches half an element, and ``k (g + l/2)`` beyond (a stop, so that elements cannot slide along
+    each other without end). The axial damper acts in tension only, scaled by ``2 / (2 + 3 sin^2)``
+    of the angle between the joint's elements (``cos_fold``): on a folded joint it pushes the other
+    element's end sideways (effective mass m / 4, not m), and so stays within the step's bound.
     """
-    k, cx, ct = P[P_K], P[P_CX], P[P_CT]
+    k, ct = P[P_K], P[P_CT]
     gl = gap[0] * axis[0] + gap[1] * axis[1] + gap[2] * axis[2]
     ga = dgap[0] * axis[0] + dgap[1] * axis[1] + dgap[2] * axis[2]
-    taut = gl > 0.0
+    if gl > 0.0:
+        fa = k * gl + 2.0 * P[P_CX] / (2.0 + 3.0 * max(1.0 - cos_fold * cos_fold, 0.0)) * ga
+    else:
+        fa = k * min(gl + 0.5 * P[P_L], 0.0)
     for i in range(3):
-        across = ct * (dgap[i] - ga * axis[i])
-        if taut:
-            out[i] = k * gap[i] + cx * ga * axis[i] + across
-        else:
-            out[i] = k * (gap[i] - gl * axis[i]) + across
-    if not taut:
-        return 0.0
-    return max(out[0] * axis[0] + out[1] * axis[1] + out[2] * axis[2], 0.0)
+        out[i] = k * (gap[i] - gl * axis[i]) + fa * axis[i] + ct * (dgap[i] - ga * axis[i])
+    return max(fa, 0.0) if gl > 0.0 else 0.0
 
 
 @njit(cache=True)
 def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, tension, slack,
-            ma_now, work):
+            ma_now, ma_prev, dt, work):
     """Body forces Fb (N, 3), moments Mb (N, 2), transverse mass and inertia, joint forces jf (N+1, 3).
 
-    ``work`` is (12, 3) scratch.
+    ``ma_now`` (N, 3) receives the added mass of each Gauss point's share of the element; with
+    ``dt > 0`` its growth since ``ma_prev`` gives the water-entry impact. ``work`` is (12, 3) scratch.
     """
     n = R.shape[0]
     half = 0.5 * P[P_L]
@@ -221,7 +231,7 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
             else:
                 slack[j] = True
             continue
-        # damper axis: along the joint's elements
+        # the joint's axis: along its elements
         for i in range(3):
             axis[i] = 0.0
             if j > first:
@@ -229,9 +239,16 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
             if j < n:
                 axis[i] += E[j, i, 0]
         al = math.sqrt(axis[0] ** 2 + axis[1] ** 2 + axis[2] ** 2)
+        if al < 1e-9:  # folded back on itself: the aft element's direction
+            al = 1.0
+            for i in range(3):
+                axis[i] = E[j, i, 0]
         for i in range(3):
             axis[i] /= al
-        tension[j] = _spring(P, gap, dgap, axis, f)
+        cos_fold = 1.0
+        if first < j < n:
+            cos_fold = E[j - 1, 0, 0] * E[j, 0, 0] + E[j - 1, 1, 0] * E[j, 1, 0] + E[j - 1, 2, 0] * E[j, 2, 0]
+        tension[j] = _spring(P, gap, dgap, axis, cos_fold, f)
         slack[j] = tension[j] <= 0.0
         for i in range(3):
             jf[j, i] = f[i]
@@ -256,30 +273,35 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
             wl = _GW[ip] * half
             z = R[k, 2] + s * e1z
             fr = _immersed(-z, rv) if rv > 0.0 else (1.0 if z < 0.0 else 0.0)
+            ma_p = P[P_CA] * rho * area * fr * wl
+            grow = (ma_p - ma_prev[k, ip]) / dt if dt > 0.0 and P[P_IMPACT] > 0.0 else 0.0
+            ma_now[k, ip] = ma_p
             if fr <= 0.0:
                 continue
             wet += fr * wl
             wet2 += fr * wl * s * s
             bz = rho * g * area * fr * wl  # buoyancy, up
             px, py, pz = bz * E[k, 2, 0], bz * E[k, 2, 1], bz * E[k, 2, 2]
-            # drag at the point: body velocity (u, v + s r, w - s q), still water
+            # the point's body velocity (u, v + s r, w - s q), still water
+            up = nu[k, 0]
+            vp = nu[k, 1] + s * om[k, 1]
+            wp = nu[k, 2] - s * om[k, 0]
             if P[P_DRAG] > 0.0:
-                up = nu[k, 0]
-                vp = nu[k, 1] + s * om[k, 1]
-                wp = nu[k, 2] - s * om[k, 0]
                 vn = math.sqrt(vp * vp + wp * wp)
                 qd = 0.5 * rho * d * fr * wl
                 px -= qd * math.pi * P[P_CF] * abs(up) * up
                 py -= qd * P[P_CD] * vn * vp
                 pz -= qd * P[P_CD] * vn * wp
+            # water entry: the momentum given to the point's growing added mass, at the point's velocity
+            if grow > 0.0:
+                py -= grow * vp
+                pz -= grow * wp
             fx += px
             fy += py
             fz += pz
             mq -= s * pz
             mr += s * py
-        ma = P[P_CA] * rho * area * wet
-        ma_now[k] = ma
-        mass_t[k] = m + ma
+        mass_t[k] = m + P[P_CA] * rho * area * wet
         inert[k] = P[P_I] + P[P_CA] * rho * area * wet2
         # joint forces: at the front (s = -l/2) minus joint k's, at the aft (s = +l/2) joint k+1's
         for side in range(2):
@@ -347,10 +369,10 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
 
 @njit(cache=True)
 def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, tension, slack, ma):
-    """Joint tensions, slack flags and transverse added masses of the current state."""
+    """Joint tensions, slack flags and the added masses ``ma`` (N, 3) of the Gauss points' shares."""
     n = R.shape[0]
     _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)),
-            np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), tension, slack, ma, np.zeros((12, 3)))
+            np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), tension, slack, ma, ma, 0.0, np.zeros((12, 3)))
 
 
 @njit(cache=True)
@@ -367,7 +389,7 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     mass_t = np.zeros(n)
     inert = np.zeros(n)
     jf = np.zeros((n + 1, 3))
-    ma_now = np.zeros(n)
+    ma_now = np.zeros((n, 3))
     work = np.zeros((12, 3))
     qb, wb, sa, sb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     m = P[P_M]
@@ -377,19 +399,15 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
         first = first_arr[0]
         pt = tug_p[step]
         vt = tug_v[step]
-        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, tension, slack, ma_now,
-                work)
+        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, tension, slack,
+                ma_now, ma_prev, dt, work)
         for k in range(first, n):
             u, v, w = nu[k, 0], nu[k, 1], nu[k, 2]
             q, r = om[k, 0], om[k, 1]
             my = mass_t[k]
             fy, fz = Fb[k, 1], Fb[k, 2]
-            if P[P_IMPACT] > 0.0:
-                grow = (ma_now[k] - ma_prev[k]) / dt
-                if grow > 0.0:
-                    fy -= grow * v
-                    fz -= grow * w
-            ma_prev[k] = ma_now[k]
+            for ip in range(3):
+                ma_prev[k, ip] = ma_now[k, ip]
             du = (Fb[k, 0] - q * my * w + r * my * v) / m
             dv = (fy - r * m * u) / my
             dw = (fz + q * m * u) / my
@@ -427,7 +445,7 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
                 d2 += (qb[i] - tug_p[step + 1, i]) ** 2
             if d2 >= P[P_L] * P[P_L]:
                 _release(R, E, nu, om, first - 1, P, tug_p[step + 1], tug_v[step + 1], bs, bxt, bzt)
-                ma_prev[first - 1] = 0.0
+                ma_prev[first - 1, :] = 0.0
                 first_arr[0] = first - 1
         for k in range(first_arr[0], n):
             if not (math.isfinite(R[k, 0]) and math.isfinite(nu[k, 0]) and math.isfinite(om[k, 1])):

@@ -215,8 +215,9 @@ def energy(model: TowlineModel, state: State, tug_point) -> float:
     """Kinetic (with added mass) plus gravity and joint-spring energy of the line. [J]
 
     For the energy balance of the free line in air (no buoyancy, no drag, no damping). The spring
-    energy follows the joint law of the kernel: ``k |gap|^2 / 2`` in tension, only the part across the
-    line when the gap closes along it.
+    energy follows the joint law of the kernel: ``k |gap|^2 / 2`` in tension; when the gap closes along
+    the line (the mean direction of the joint's elements), only the part across it, plus
+    ``k (g + l/2)^2 / 2`` for an overlap ``-g`` beyond half an element.
     """
     P = model.params
     m, I = P[K.P_M], P[K.P_I]
@@ -231,8 +232,10 @@ def energy(model: TowlineModel, state: State, tug_point) -> float:
     axis[:-1] += e1
     axis[1:] += e1
     axis /= np.linalg.norm(axis, axis=1, keepdims=True)
-    along = np.minimum(np.sum(gap * axis, axis=1), 0.0)
-    spring = 0.5 * P[K.P_K] * float(np.sum(gap**2) - np.sum(along**2))
+    g = np.sum(gap * axis, axis=1)
+    closed = np.minimum(g, 0.0)
+    stop = np.minimum(g + half, 0.0)
+    spring = 0.5 * P[K.P_K] * float(np.sum(gap**2) - np.sum(closed**2) + np.sum(stop**2))
     return ke + pe + spring
 
 
@@ -276,7 +279,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     R, E, nu, om = S.R.copy(), S.E.copy(), S.nu.copy(), S.om.copy()
     bs = S.barge.copy()
     first = np.array([S.first], np.int64)
-    ma_prev = np.zeros(n)
+    ma_prev = np.zeros((n, 3))
     tension, slack = np.zeros(n + 1), np.zeros(n + 1, np.bool_)
     held = model.held or model.barge is None
     xt, zt = model.barge_tow_point
@@ -311,7 +314,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
                     f"{dt:.3g} s, stability bound {stable_time_step(model, 1.0):.3g} s). Suggested fix: a smaller "
                     "time_step.",
                     iterations=steps, residual=float("nan"))
-            K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, tension, slack, np.zeros(n))
+            K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, tension, slack, np.zeros((n, 3)))
             times.append(tt[-1])
             tugs.append(tp[-1])
             records.append(snapshot(tt[-1], tp[-1]))
