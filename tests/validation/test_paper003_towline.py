@@ -127,7 +127,7 @@ def test_zigzag_sway_decays_along_the_line(zigzag):
 def test_zigzag_barge_tension_is_periodic_with_the_tug(zigzag):
     """Paper 003: the tension on the barge acts periodically, with the tug's 50 s period."""
     dt = float(zigzag.time[1] - zigzag.time[0])
-    shift = int(round(50.0 / dt))
+    shift = round(50.0 / dt)
     late = zigzag.isel(time=slice(-8 * shift, None))  # the last eight periods, 2600-3000 s
     tension = late.tension_barge.values
     # one period later the tension repeats: the rms difference is 2.2 % of its standard deviation (the

@@ -75,3 +75,61 @@ def test_cli_runs_a_towline_case(tmp_path):
     assert ds.attrs["analysis"] == "towline_dynamic" and ds.sizes["node"] == 12
     assert main(["animate", str(out), "--max-frames", "3"]) == 0
     assert (tmp_path / "tow_tow.gif").stat().st_size > 0
+
+
+def test_implicit_axial_dampers_give_the_joint_damping_ratio():
+    """One element in air between two fixed points, moved along the line and let go. The joint behind it
+    opens and the one ahead closes, and a closing joint takes no compression: in each half cycle one
+    joint (stiffness k, damper c_x = 2 zeta sqrt(k m)) holds the mass m, a damped oscillator with
+    omega = sqrt(k / m) and ratio zeta. The dampers act implicitly, so the step does not matter."""
+    zeta, ea, length, mass = 0.05, 1e6, 10.0, 1.725
+    model = TowlineModel(n_elements=1, length=length, diameter=0.05, mass_per_length=mass, axial_stiffness=ea,
+                         damping_ratio=zeta, bending_damping_ratio=0.0, gravity=0.0, drag=False, impact=False,
+                         held_tow_point_height=10.0)
+    tug = np.array([0.0, 0.0, 10.0])
+    state = initial_state(model, tug, start="straight")
+    state.R[0, 0] -= 1e-3  # 1 mm aft (the tug is ahead, at x = 0): 1 mm into the aft joint, far from its stop
+    k, m = 2 * ea / length, mass * length  # (n + 1) EA / L with n = 1
+    omega = np.sqrt(k / m)
+    period = 2 * np.pi / omega
+    run = simulate(model, lambda t: (np.tile(tug, (np.size(t), 1)), np.zeros((np.size(t), 3))),
+                   30 * period, period / 40, state, time_step=period / 4000)
+    x = run.centres[:, 0, 0] - (run.centres[0, 0, 0] + 1e-3)  # displacement from rest
+    from scipy.signal import find_peaks
+
+    index = find_peaks(x)[0]
+    peaks = x[index]
+    measured = -np.log(peaks[1:] / peaks[:-1]).mean()
+    # the log decrement 2 pi zeta / sqrt(1 - zeta^2) per period; the step (period / 4000) leaves
+    # backward Euler's O(c dt / m) = 1e-4 in it, the peaks sampled at period / 40 a (1 - cos(pi / 40))
+    # = 3e-3 in each peak that cancels in the ratios: 1 %
+    assert peaks.size >= 20
+    assert measured == pytest.approx(2 * np.pi * zeta / np.sqrt(1 - zeta**2), rel=1e-2)
+    # the damped period 2 pi / (omega sqrt(1 - zeta^2)), from the peaks' spacing, to a sample (1/40) over
+    # the 20 periods: 0.2 %
+    spacing = (run.time[index[-1]] - run.time[index[0]]) / (index.size - 1)
+    assert spacing == pytest.approx(period / np.sqrt(1 - zeta**2), rel=2e-3)
+
+
+def test_immersed_fraction_matches_the_circular_segment():
+    from seacable.towline.kernel import _immersed
+
+    c = np.linspace(-1.0, 1.0, 2001)
+    exact = (np.arccos(-c) + c * np.sqrt(1 - c * c)) / np.pi
+    ours = np.array([_immersed(h, 1.0) for h in c])
+    # Abramowitz & Stegun 4.4.46: arccos to 2e-8 rad, so the fraction to 2e-8 / pi; asserted to 1e-8
+    np.testing.assert_allclose(ours, exact, rtol=0, atol=1e-8)
+    assert _immersed(2.0, 1.0) == 1.0 and _immersed(-2.0, 1.0) == 0.0
+
+
+def test_frame_rotation_series_matches_the_exact_rotation():
+    from scipy.spatial.transform import Rotation
+
+    from seacable.towline.kernel import _rotate
+
+    # one step of 0.02 s turning by 0.02, 0.0072 and 1e-4 rad: above the series' switch (0.01), below it
+    for q, r in ((0.6, -0.8), (0.3, -0.2), (3e-3, 4e-3)):
+        E = np.eye(3)
+        _rotate(E, q, r, 0.02)
+        # the body rotation by (0, q, r) dt: round-off on both branches
+        np.testing.assert_allclose(E, Rotation.from_rotvec([0.0, 0.02 * q, 0.02 * r]).as_matrix(), atol=1e-15)
