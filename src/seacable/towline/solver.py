@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._validate import positive
 from ..errors import ConvergenceError, InputError
 from . import kernel as K
 from .barge import Barge, barge_parameters
@@ -62,9 +63,7 @@ class TowlineModel:
             raise InputError(f"n_elements must be >= 1, got {n}. Suggested fix: use the paper's 11 or more.")
         for name, unit in (("length", "m"), ("diameter", "m"), ("mass_per_length", "kg/m"),
                            ("axial_stiffness", "N")):
-            value = getattr(self, name)
-            if not (math.isfinite(value) and value > 0):
-                raise InputError(f"{name} must be > 0 {unit}, got {value:g} {unit}.")
+            positive(name, getattr(self, name), unit)
         el = L / n
         m = self.mass_per_length * el
         # n + 1 joint springs in series (both tow points included) give the line's EA / L
