@@ -87,17 +87,20 @@ __all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points
 
 # Line parameters (flat vector).
 P_L, P_M, P_I, P_D, P_AREA, P_CA, P_CD, P_CF, P_K, P_CX, P_CT, P_ZM = range(12)
-P_RHO, P_G, P_BRAKE, P_IMPACT, P_DRAG = 12, 13, 14, 15, 16
-P_SIZE = 17
+P_RHO, P_G, P_BRAKE, P_IMPACT, P_DRAG, P_KT = 12, 13, 14, 15, 16, 17
+P_SIZE = 18
 
 # Barge state: x, y, heading, u, v, r (barge frame velocities).
 B_X, B_Y, B_PSI, B_U, B_V, B_R = range(6)
+
+# fast floating point short of assuming finite values: the steps check that the state stays finite
+_FAST = {"nsz", "arcp", "contract", "reassoc"}
 
 _GP = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GW = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def _acos01(x):
     """arccos(x) for 0 <= x <= 1 to 2e-8 rad (Abramowitz & Stegun 1964, 4.4.46), without libm's call."""
     p = -0.0012624911
@@ -111,7 +114,7 @@ def _acos01(x):
     return math.sqrt(1.0 - x) * p
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def _immersed(h, rv):
     """Immersed fraction of a circular section whose axis lies ``h`` below the surface.
 
@@ -126,7 +129,7 @@ def _immersed(h, rv):
     return (a + c * math.sqrt(1.0 - c * c)) / math.pi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def frame_from_axis(e1, out):
     """A frame (columns e1, e2, e3) with the given unit axis; e2 horizontal unless e1 is vertical."""
     out[:, 0] = e1
@@ -140,7 +143,7 @@ def frame_from_axis(e1, out):
     out[2, 2] = e1[0] * out[1, 1] - e1[1] * out[0, 1]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def _rotate(E, q, r, dt):
     """E <- E exp(dt [omega]x), omega = (0, q, r) in the element frame (Rodrigues), in place."""
     wy, wz = q * dt, r * dt
@@ -167,7 +170,7 @@ def _rotate(E, q, r, dt):
         E[i, 2] = a * r02 + b * r12 + d * r22
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def joint_points(R, E, nu, om, half, k, pa, va, pb, vb):
     """Front (a) and aft (b) connection points of element k and their velocities."""
     for i in range(3):
@@ -180,7 +183,7 @@ def joint_points(R, E, nu, om, half, k, pa, va, pb, vb):
         vb[i] = V + half * wxe1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def barge_point(bs, bxt, bzt, p, v):
     c, s = math.cos(bs[B_PSI]), math.sin(bs[B_PSI])
     p[0] = bs[B_X] + bxt * c
@@ -193,104 +196,41 @@ def barge_point(bs, bxt, bzt, p, v):
     v[2] = 0.0
 
 
-@njit(cache=True)
-def _spring(P, gap, dgap, axis, damp, out):
-    """Joint force on the previous body (towards the next one) into ``out``; returns the tension.
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
+def _spring(P, gap, dgap, axis, out):
+    """Joint force on the previous body (towards the next one) into ``out``; returns the spring's own
+    axial force (without the damper) and sets ``out`` to spring plus dampers. Tension is ``> 0``.
 
-    With ``g = gap . axis`` (``axis`` the unit mean of the joint's elements) the spring pins the
-    points across the axis and along it pulls ``k g`` in tension (g > 0); while the gap closes (the
-    next element's end sliding into the previous one) it takes no compression until the overlap
-    reaches half an element, and ``k (g + l/2)`` beyond (a stop, so that elements cannot slide along
-    each other without end). The axial damper acts in tension only, here with ``damp = 1``; the time
-    step applies it implicitly instead (``_axial_dampers``) and passes ``damp = 0``.
+    With ``g = gap . axis`` (``axis`` the unit mean of the joint's elements) the spring pulls ``k g``
+    along the axis in tension (g > 0) and pins the points across it with the penalty stiffness
+    ``k_t``; while the gap closes (the next element's end sliding into the previous one) it takes no
+    compression until the overlap reaches half an element, and ``k_t (g + l/2)`` beyond (a stop, so
+    that elements cannot slide along each other without end). The damper is ``c_x`` along the axis
+    in tension and ``c_t`` across it.
     """
-    k, ct = P[P_K], P[P_CT]
+    k, kt, ct = P[P_K], P[P_KT], P[P_CT]
     gl = gap[0] * axis[0] + gap[1] * axis[1] + gap[2] * axis[2]
     ga = dgap[0] * axis[0] + dgap[1] * axis[1] + dgap[2] * axis[2]
     if gl > 0.0:
-        fa = k * gl + damp * P[P_CX] * ga
+        fs = k * gl
+        fa = fs + P[P_CX] * ga
     else:
-        fa = k * min(gl + 0.5 * P[P_L], 0.0)
+        fs = kt * min(gl + 0.5 * P[P_L], 0.0)
+        fa = fs
     for i in range(3):
-        out[i] = k * (gap[i] - gl * axis[i]) + fa * axis[i] + ct * (dgap[i] - ga * axis[i])
-    return max(fa, 0.0) if gl > 0.0 else 0.0
+        out[i] = kt * (gap[i] - gl * axis[i]) + fa * axis[i] + ct * (dgap[i] - ga * axis[i])
+    return fs
 
 
-@njit(cache=True)
-def _point_mobility(E, k, s, a, m, my, inert):
-    """Velocity along the unit ``a`` of element k's point ``s e1`` per unit impulse along ``a``. [1/kg]"""
-    c1 = E[k, 0, 0] * a[0] + E[k, 1, 0] * a[1] + E[k, 2, 0] * a[2]
-    across = max(1.0 - c1 * c1, 0.0)
-    return c1 * c1 / m + across / my + s * s * across / inert
-
-
-@njit(cache=True)
-def _push(E, nu, om, k, s, imp, a, m, my, inert):
-    """Apply the impulse ``imp a`` [N s] at element k's point ``s e1`` to its body velocities."""
-    a1 = E[k, 0, 0] * a[0] + E[k, 1, 0] * a[1] + E[k, 2, 0] * a[2]
-    a2 = E[k, 0, 1] * a[0] + E[k, 1, 1] * a[1] + E[k, 2, 1] * a[2]
-    a3 = E[k, 0, 2] * a[0] + E[k, 1, 2] * a[1] + E[k, 2, 2] * a[2]
-    nu[k, 0] += imp * a1 / m
-    nu[k, 1] += imp * a2 / my
-    nu[k, 2] += imp * a3 / my
-    om[k, 0] -= s * imp * a3 / inert
-    om[k, 1] += s * imp * a2 / inert
-
-
-@njit(cache=True)
-def _axial_dampers(dt, E, nu, om, first, P, tug_v, bs, bxt, bzt, tension, jaxis, mass_t, inert, work):
-    """The taut joints' axial dampers, implicitly (backward Euler), joint after joint; returns the
-    barge joint's impulse on the barge along ``jaxis[n]`` [N s].
-
-    Each damper takes from the relative velocity ``v`` of its points along its axis the impulse
-    ``v c w dt / (1 + c w dt) / w`` (``w`` the points' summed mobility), which leaves
-    ``v / (1 + c w dt)``: dissipative for any step, so the damper does not bound the step.
-    """
-    n = E.shape[0]
-    half = 0.5 * P[P_L]
-    m, cx = P[P_M], P[P_CX]
-    va, pb, vb = work[1], work[2], work[3]
-    out = 0.0
-    for j in range(first, n + 1):
-        if (j == first and first > 0) or tension[j] <= 0.0:
-            continue
-        a = jaxis[j]
-        w = 0.0
-        if j == first:
-            va[:] = tug_v
-        else:
-            _point_velocity(E, nu, om, j - 1, half, va)
-            w += _point_mobility(E, j - 1, half, a, m, mass_t[j - 1], inert[j - 1])
-        if j == n:
-            barge_point(bs, bxt, bzt, pb, vb)
-        else:
-            _point_velocity(E, nu, om, j, -half, vb)
-            w += _point_mobility(E, j, -half, a, m, mass_t[j], inert[j])
-        v = (vb[0] - va[0]) * a[0] + (vb[1] - va[1]) * a[1] + (vb[2] - va[2]) * a[2]
-        cwd = cx * w * dt
-        imp = v * cwd / (1.0 + cwd) / w
-        if j > first:
-            _push(E, nu, om, j - 1, half, imp, a, m, mass_t[j - 1], inert[j - 1])
-        if j < n:
-            _push(E, nu, om, j, -half, -imp, a, m, mass_t[j], inert[j])
-        else:
-            out = -imp
-    return out
-
-
-@njit(cache=True)
-def _point_velocity(E, nu, om, k, s, out):
-    """Velocity (inertial) of element k's point ``s e1``."""
-    for i in range(3):
-        out[i] = (E[k, i, 0] * nu[k, 0] + E[k, i, 1] * nu[k, 1] + E[k, i, 2] * nu[k, 2]
-                  + s * (-om[k, 0] * E[k, i, 2] + om[k, 1] * E[k, i, 1]))
-
-
-@njit(cache=True)
-def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, jaxis, damp, tension,
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
+def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, jf, jaux, tension,
             slack, ma_now, ma_prev, dt, work):
-    """Body forces Fb (N, 3), moments Mb (N, 2), transverse mass and inertia, joint forces jf (N+1, 3)
-    and axes jaxis (N+1, 3); ``damp`` 1 includes the joints' axial dampers in jf, 0 leaves them out.
+    """Body forces Fb (N, 3), moments Mb (N, 2), transverse mass and inertia, joint forces jf (N+1, 3).
+
+    ``D`` (N, 5) receives the diagonal of the dampers' matrix in each element's own velocities
+    (u, v, w, q, r), which the time step takes implicitly. ``jaux`` (N+1, 7) is scratch: each joint's
+    axis, the gradient of its spring energy with respect to the axis (the torque of an axis that turns,
+    see ``_axis_torque``) and its axial damper.
 
     ``ma_now`` (N, 3) receives the added mass of each Gauss point's share of the element; with
     ``dt > 0`` its growth since ``ma_prev`` gives the water-entry impact. ``work`` is (12, 3) scratch.
@@ -328,6 +268,7 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
                 tension[j] = P[P_BRAKE]
             else:
                 slack[j] = True
+            jaux[j, :] = 0.0
             continue
         # the joint's axis: along its elements
         for i in range(3):
@@ -338,17 +279,25 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
                 axis[i] += E[j, i, 0]
         al = math.sqrt(axis[0] ** 2 + axis[1] ** 2 + axis[2] ** 2)
         if al < 1e-9:  # folded back on itself: the aft element's direction
-            al = 1.0
             for i in range(3):
                 axis[i] = E[j, i, 0]
-        for i in range(3):
-            axis[i] /= al
-        for i in range(3):
-            jaxis[j, i] = axis[i]
-        tension[j] = _spring(P, gap, dgap, axis, damp, f)
-        slack[j] = tension[j] <= 0.0
+        else:
+            for i in range(3):
+                axis[i] /= al
+        gl = gap[0] * axis[0] + gap[1] * axis[1] + gap[2] * axis[2]
+        fs = _spring(P, gap, dgap, axis, f)
+        taut = gl > 0.0
+        slack[j] = not taut
+        tension[j] = max(f[0] * axis[0] + f[1] * axis[1] + f[2] * axis[2], 0.0) if taut else 0.0
+        # the spring energy's gradient with respect to the (unnormalised) axis, for _axis_torque; a
+        # joint bent past 120 degrees (al < 1) goes without it rather than divide by a vanishing al
+        c = (fs - P[P_KT] * gl) / al if al >= 1.0 else 0.0
         for i in range(3):
             jf[j, i] = f[i]
+            jaux[j, i] = axis[i]
+            jaux[j, 3 + i] = c * (gap[i] - gl * axis[i])
+        jaux[j, 6] = P[P_CX] if taut else 0.0
+        jaux[j, 7] = P[P_CT]
     # --- elements
     m, d, area = P[P_M], P[P_D], P[P_AREA]
     for k in range(first, n):
@@ -400,7 +349,9 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
             mr += s * py
         mass_t[k] = m + P[P_CA] * rho * area * wet
         inert[k] = P[P_I] + P[P_CA] * rho * area * wet2
-        # joint forces: at the front (s = -l/2) minus joint k's, at the aft (s = +l/2) joint k+1's
+        # joint forces: at the front (s = -l/2) minus joint k's, at the aft (s = +l/2) joint k+1's; the
+        # torque of the joint's turning axis; the diagonal of the joint dampers in (u, v, w, q, r)
+        du = dv = dw = 0.0
         for side in range(2):
             j = k + side
             sgn = -1.0 if side == 0 else 1.0
@@ -411,13 +362,25 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
             bx = E[k, 0, 0] * gx + E[k, 1, 0] * gy + E[k, 2, 0] * gz
             by = E[k, 0, 1] * gx + E[k, 1, 1] * gy + E[k, 2, 1] * gz
             bzz = E[k, 0, 2] * gx + E[k, 1, 2] * gy + E[k, 2, 2] * gz
+            h2 = E[k, 0, 1] * jaux[j, 3] + E[k, 1, 1] * jaux[j, 4] + E[k, 2, 1] * jaux[j, 5]
+            h3 = E[k, 0, 2] * jaux[j, 3] + E[k, 1, 2] * jaux[j, 4] + E[k, 2, 2] * jaux[j, 5]
             fx += bx
             fy += by
             fz += bzz
-            mq -= sl * bzz
-            mr += sl * by
+            mq += h3 - sl * bzz
+            mr += sl * by - h2
+            a1 = E[k, 0, 0] * jaux[j, 0] + E[k, 1, 0] * jaux[j, 1] + E[k, 2, 0] * jaux[j, 2]
+            a2 = E[k, 0, 1] * jaux[j, 0] + E[k, 1, 1] * jaux[j, 1] + E[k, 2, 1] * jaux[j, 2]
+            a3 = E[k, 0, 2] * jaux[j, 0] + E[k, 1, 2] * jaux[j, 1] + E[k, 2, 2] * jaux[j, 2]
+            ct = jaux[j, 7]
+            cd = jaux[j, 6] - ct
+            du += ct + cd * a1 * a1
+            dv += ct + cd * a2 * a2
+            dw += ct + cd * a3 * a3
         Fb[k, 0], Fb[k, 1], Fb[k, 2] = fx, fy, fz
         Mb[k, 0], Mb[k, 1] = mq, mr
+        D[k, 0], D[k, 1], D[k, 2] = du, dv, dw
+        D[k, 3], D[k, 4] = half * half * dw, half * half * dv
     # bending damping between neighbours: c_m (omega_k - omega_{k-1}), c_m = 2 zeta_m sqrt(T l/2 I)
     if P[P_ZM] > 0.0:
         for j in range(first + 1, n):
@@ -428,13 +391,17 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, mass_t, 
                 rel = (om[j, 0] * E[j, i, 1] + om[j, 1] * E[j, i, 2]
                        - om[j - 1, 0] * E[j - 1, i, 1] - om[j - 1, 1] * E[j - 1, i, 2])
                 f[i] = cm * rel
+            D[j - 1, 3] += cm
+            D[j - 1, 4] += cm
+            D[j, 3] += cm
+            D[j, 4] += cm
             Mb[j - 1, 0] += f[0] * E[j - 1, 0, 1] + f[1] * E[j - 1, 1, 1] + f[2] * E[j - 1, 2, 1]
             Mb[j - 1, 1] += f[0] * E[j - 1, 0, 2] + f[1] * E[j - 1, 1, 2] + f[2] * E[j - 1, 2, 2]
             Mb[j, 0] -= f[0] * E[j, 0, 1] + f[1] * E[j, 1, 1] + f[2] * E[j, 2, 1]
             Mb[j, 1] -= f[0] * E[j, 0, 2] + f[1] * E[j, 1, 2] + f[2] * E[j, 2, 2]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
     """Element k leaves the bitt: straight from the tug's tow point to its aft neighbour's front."""
     n = R.shape[0]
@@ -464,16 +431,16 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
     om[k, 1] = dv[0] * E[k, 0, 1] + dv[1] * E[k, 1, 1] + dv[2] * E[k, 2, 1]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, tension, slack, ma):
     """Joint tensions, slack flags and the added masses ``ma`` (N, 3) of the Gauss points' shares."""
     n = R.shape[0]
-    _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)),
-            np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), np.zeros((n + 1, 3)), 1.0, tension, slack, ma, ma, 0.0,
+    _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)), np.zeros((n, 5)),
+            np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), np.zeros((n + 1, 8)), tension, slack, ma, ma, 0.0,
             np.zeros((12, 3)))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma_prev,
               tension, slack):
     """Advance ``len(tug_p) - 1`` explicit steps of ``dt``; ``tug_p``, ``tug_v`` at the step times.
@@ -484,10 +451,11 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     n = R.shape[0]
     Fb = np.zeros((n, 3))
     Mb = np.zeros((n, 2))
+    D = np.zeros((n, 5))
     mass_t = np.zeros(n)
     inert = np.zeros(n)
     jf = np.zeros((n + 1, 3))
-    jaxis = np.zeros((n + 1, 3))
+    jaux = np.zeros((n + 1, 8))
     ma_now = np.zeros((n, 3))
     work = np.zeros((12, 3))
     qb, wb, sa, sb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
@@ -498,36 +466,34 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
         first = first_arr[0]
         pt = tug_p[step]
         vt = tug_v[step]
-        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, mass_t, inert, jf, jaxis, 0.0, tension, slack,
+        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, jf, jaux, tension, slack,
                 ma_now, ma_prev, dt, work)
         for k in range(first, n):
             u, v, w = nu[k, 0], nu[k, 1], nu[k, 2]
             q, r = om[k, 0], om[k, 1]
             my = mass_t[k]
+            ik = inert[k]
             for ip in range(3):
                 ma_prev[k, ip] = ma_now[k, ip]
-            du = (Fb[k, 0] - q * my * w + r * my * v) / m
-            dv = (Fb[k, 1] - r * m * u) / my
-            dw = (Fb[k, 2] + q * m * u) / my
-            dq = (Mb[k, 0] - (m - my) * u * w) / inert[k]
-            dr = (Mb[k, 1] - (my - m) * u * v) / inert[k]
+            # the dampers' own-velocity terms implicitly: x += dt a / (1 + dt d / mass)
+            du = (Fb[k, 0] - q * my * w + r * my * v) / (m + dt * D[k, 0])
+            dv = (Fb[k, 1] - r * m * u) / (my + dt * D[k, 1])
+            dw = (Fb[k, 2] + q * m * u) / (my + dt * D[k, 2])
+            dq = (Mb[k, 0] - (m - my) * u * w) / (ik + dt * D[k, 3])
+            dr = (Mb[k, 1] - (my - m) * u * v) / (ik + dt * D[k, 4])
             nu[k, 0] = u + dt * du
             nu[k, 1] = v + dt * dv
             nu[k, 2] = w + dt * dw
             om[k, 0] = q + dt * dq
             om[k, 1] = r + dt * dr
-        # the axial dampers, implicitly on the new velocities
-        bimp = _axial_dampers(dt, E, nu, om, first, P, tug_v[step + 1], bs, bxt, bzt, tension, jaxis, mass_t,
-                              inert, work)
-        for k in range(first, n):
             for i in range(3):
                 R[k, i] += dt * (E[k, i, 0] * nu[k, 0] + E[k, i, 1] * nu[k, 1] + E[k, i, 2] * nu[k, 2])
             _rotate(E[k], om[k, 0], om[k, 1], dt)
         # the barge: towline force at its tow point (minus joint n's force on the previous body)
         if not held:
             c, s = math.cos(bs[B_PSI]), math.sin(bs[B_PSI])
-            fxg = -jf[n, 0] + bimp / dt * jaxis[n, 0]
-            fyg = -jf[n, 1] + bimp / dt * jaxis[n, 1]
+            fxg = -jf[n, 0]
+            fyg = -jf[n, 1]
             X = fxg * c + fyg * s
             Y = -fxg * s + fyg * c
             du, dv, dr = barge_accelerations(bpar, bs[B_U], bs[B_V], bs[B_R], X, Y, bxt * Y)

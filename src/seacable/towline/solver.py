@@ -14,7 +14,10 @@ from ..errors import ConvergenceError, InputError
 from . import kernel as K
 from .barge import Barge, barge_parameters
 
-__all__ = ["TowlineModel", "TowlineRun", "energy", "initial_state", "simulate", "stable_time_step"]
+#: the joints' stiffness across the line (the pin), a fraction of the axial k: see TowlineModel
+PIN_STIFFNESS = 1.0 / 3.0
+
+__all__ = ["PIN_STIFFNESS", "TowlineModel", "TowlineRun", "energy", "initial_state", "simulate", "stable_time_step"]
 
 #: tug tow-point track: times (n,) -> positions (n, 3), velocities (n, 3)
 TugFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
@@ -73,6 +76,7 @@ class TowlineModel:
         P[K.P_D], P[K.P_AREA] = self.diameter, 0.25 * math.pi * self.diameter**2
         P[K.P_CA], P[K.P_CD], P[K.P_CF] = self.added_mass, self.drag_normal, self.drag_tangential
         P[K.P_K] = k
+        P[K.P_KT] = PIN_STIFFNESS * k
         P[K.P_CX] = 2.0 * self.damping_ratio * math.sqrt(k * m)
         P[K.P_CT] = self.transverse_damping_fraction * P[K.P_CX]
         P[K.P_ZM] = self.bending_damping_ratio
@@ -105,20 +109,15 @@ def stable_time_step(model: TowlineModel, safety: float = 0.8) -> float:
     """The explicit step, a fraction of the element's axial period ``T_n = 2 pi sqrt(m / k)``. [s]
 
     Paper 003 bounds the step by ``alpha T_n`` without giving alpha; here it follows from the
-    stability of the symplectic Euler scheme (stable for ``omega dt < 2 (sqrt(1 + zeta^2) - zeta)``
-    with an explicit damper of ratio zeta) on the chain's stiffest mode: all elements turning the
-    same way about their centres open every joint by ``l theta``, ``omega^2 = k l^2 / I = 12 k / m``
-    (``I = m l^2 / 12``, no added inertia in air), damped by the joints' cross dampers ``c_t`` at
-    both ends with the ratio ``zeta_t = 3 c_t / sqrt(12 k m)``. The axial dampers are applied
-    implicitly and do not bound the step.
-
-    ``dt = safety (2 / sqrt(12)) (sqrt(1 + zeta_t^2) - zeta_t) sqrt(m / k)``: for zeta = 0.5
-    (c_t = c_x / 10, zeta_t = 0.087), 0.42 sqrt(m / k) = 0.067 T_n.
+    stability of the symplectic Euler scheme (``omega dt < 2``) on the chain's stiffest modes, in air
+    (no added mass): neighbours moving against each other along the line, ``omega^2 = 4 k / m``, and
+    all elements turning the same way about their centres, which opens every joint across the line
+    by ``l theta`` against the pin stiffness ``k_t``: ``omega^2 = k_t l^2 / I = 12 k_t / m``. With
+    ``k_t = k / 3`` both give ``dt < sqrt(m / k)`` (= T_n / 2 pi). The dampers are taken implicitly in
+    each element's own velocities and do not bound the step.
     """
     P = model.params
-    zt = 3.0 * P[K.P_CT] / math.sqrt(12.0 * P[K.P_K] * P[K.P_M])
-    bound = 2.0 / math.sqrt(12.0) * (math.sqrt(1.0 + zt * zt) - zt)
-    return safety * bound * math.sqrt(P[K.P_M] / P[K.P_K])
+    return safety * min(math.sqrt(P[K.P_M] / P[K.P_K]), math.sqrt(P[K.P_M] / (3.0 * P[K.P_KT])))
 
 
 @dataclass
@@ -213,9 +212,9 @@ def energy(model: TowlineModel, state: State, tug_point) -> float:
     """Kinetic (with added mass) plus gravity and joint-spring energy of the line. [J]
 
     For the energy balance of the free line in air (no buoyancy, no drag, no damping). The spring
-    energy follows the joint law of the kernel: ``k |gap|^2 / 2`` in tension; when the gap closes along
-    the line (the mean direction of the joint's elements), only the part across it, plus
-    ``k (g + l/2)^2 / 2`` for an overlap ``-g`` beyond half an element.
+    energy follows the joint law of the kernel: ``k_t |gap|^2 / 2`` across the line (the mean direction
+    of the joint's elements), and along it ``k g^2 / 2`` in tension (``g > 0``), nothing while the gap
+    closes, and ``k_t (g + l/2)^2 / 2`` for an overlap ``-g`` beyond half an element.
     """
     P = model.params
     m, I = P[K.P_M], P[K.P_I]
@@ -231,9 +230,9 @@ def energy(model: TowlineModel, state: State, tug_point) -> float:
     axis[1:] += e1
     axis /= np.linalg.norm(axis, axis=1, keepdims=True)
     g = np.sum(gap * axis, axis=1)
-    closed = np.minimum(g, 0.0)
-    stop = np.minimum(g + half, 0.0)
-    spring = 0.5 * P[K.P_K] * float(np.sum(gap**2) - np.sum(closed**2) + np.sum(stop**2))
+    across = np.sum(gap**2, axis=1) - g**2
+    along = np.where(g > 0.0, P[K.P_K] * g**2, P[K.P_KT] * np.minimum(g + half, 0.0) ** 2)
+    spring = 0.5 * float(np.sum(P[K.P_KT] * across + along))
     return ke + pe + spring
 
 
