@@ -100,7 +100,7 @@ _GP = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GW = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
 def _acos01(x):
     """arccos(x) for 0 <= x <= 1 to 2e-8 rad (Abramowitz & Stegun 1964, 4.4.46), without libm's call."""
     p = -0.0012624911
@@ -114,19 +114,18 @@ def _acos01(x):
     return math.sqrt(1.0 - x) * p
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
-def _immersed(h, rv):
-    """Immersed fraction of a circular section whose axis lies ``h`` below the surface.
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _immersed(c):
+    """Immersed fraction of a circular section whose axis lies ``c`` radii below the surface.
 
-    ``(acos(-c) + c sqrt(1 - c^2)) / pi`` with ``c = h / rv``, to 1e-8 (``_acos01``).
+    ``(acos(-c) + c sqrt(1 - c^2)) / pi``, to 1e-8 (``_acos01``).
     """
-    if h >= rv:
+    if c >= 1.0:
         return 1.0
-    if h <= -rv:
+    if c <= -1.0:
         return 0.0
-    c = h / rv
     a = math.pi - _acos01(c) if c >= 0.0 else _acos01(-c)
-    return (a + c * math.sqrt(1.0 - c * c)) / math.pi
+    return (a + c * math.sqrt(1.0 - c * c)) * (1.0 / math.pi)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -143,31 +142,32 @@ def frame_from_axis(e1, out):
     out[2, 2] = e1[0] * out[1, 1] - e1[1] * out[0, 1]
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
 def _rotate(E, q, r, dt):
-    """E <- E exp(dt [omega]x), omega = (0, q, r) in the element frame (Rodrigues), in place."""
+    """E <- E exp(dt [omega]x), omega = (0, q, r) in the element frame (Rodrigues), in place.
+
+    With ``phi = omega dt`` and ``th = |phi|``: ``exp([phi]x) = I + a [phi]x + b [phi]x^2``,
+    ``a = sin(th) / th``, ``b = (1 - cos(th)) / th^2``, both series in ``th^2`` for small steps (no
+    square root, no division).
+    """
     wy, wz = q * dt, r * dt
-    th = math.sqrt(wy * wy + wz * wz)
-    if th < 1e-300:
-        return
-    ky, kz = wy / th, wz / th
-    if th < 1e-2:  # Taylor series, to round-off (next terms th^7 / 5040, th^8 / 40320 < 1e-18)
-        t2 = th * th
-        s = th * (1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0)))
-        C = t2 / 2.0 * (1.0 - t2 / 12.0 * (1.0 - t2 / 30.0))
-        c = 1.0 - C
+    t2 = wy * wy + wz * wz
+    if t2 < 1e-4:  # th < 1e-2: the series to round-off (next terms th^6 / 362880, th^6 / 3628800 < 1e-17)
+        a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0))
+        b = 0.5 - t2 / 24.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0))
     else:
-        s, c = math.sin(th), math.cos(th)
-        C = 1.0 - c
-    # the body-frame rotation about (0, ky, kz): rows of R
-    r00, r01, r02 = c, -kz * s, ky * s
-    r10, r11, r12 = kz * s, c + C * ky * ky, C * ky * kz
-    r20, r21, r22 = -ky * s, C * kz * ky, c + C * kz * kz
+        th = math.sqrt(t2)
+        a = math.sin(th) / th
+        b = (1.0 - math.cos(th)) / t2
+    # rows of the body-frame rotation I + a [phi]x + b [phi]x^2, phi = (0, wy, wz)
+    r00, r01, r02 = 1.0 - b * t2, -a * wz, a * wy
+    r10, r11, r12 = a * wz, 1.0 - b * wz * wz, b * wy * wz
+    r20, r21, r22 = -a * wy, r12, 1.0 - b * wy * wy
     for i in range(3):
-        a, b, d = E[i, 0], E[i, 1], E[i, 2]
-        E[i, 0] = a * r00 + b * r10 + d * r20
-        E[i, 1] = a * r01 + b * r11 + d * r21
-        E[i, 2] = a * r02 + b * r12 + d * r22
+        x, y, z = E[i, 0], E[i, 1], E[i, 2]
+        E[i, 0] = x * r00 + y * r10 + z * r20
+        E[i, 1] = x * r01 + y * r11 + z * r21
+        E[i, 2] = x * r02 + y * r12 + z * r22
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -196,209 +196,226 @@ def barge_point(bs, bxt, bzt, p, v):
     v[2] = 0.0
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
-def _spring(P, gap, dgap, axis, out):
-    """Joint force on the previous body (towards the next one) into ``out``; returns the spring's own
-    axial force (without the damper) and sets ``out`` to spring plus dampers. Tension is ``> 0``.
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _joint(P, gx, gy, gz, dx, dy, dz, ax, ay, az, al):
+    """The joint law: the force on the previous body (towards the next one) for the gap ``g`` between
+    the connection points, its rate ``d`` and the joint's unit axis ``a`` (the mean of its elements,
+    of length ``al`` before normalising).
 
-    With ``g = gap . axis`` (``axis`` the unit mean of the joint's elements) the spring pulls ``k g``
-    along the axis in tension (g > 0) and pins the points across it with the penalty stiffness
-    ``k_t``; while the gap closes (the next element's end sliding into the previous one) it takes no
-    compression until the overlap reaches half an element, and ``k_t (g + l/2)`` beyond (a stop, so
-    that elements cannot slide along each other without end). The damper is ``c_x`` along the axis
-    in tension and ``c_t`` across it.
+    Returns ``(f, h, a, c_axial, c_across, tension)``, 12 floats: ``h`` the gradient of the spring's
+    energy with respect to the unnormalised axis (see ``_forces``), the dampers' coefficients along
+    and across the axis, and the tension along it (0 when slack).
+
+    Along the axis the spring pulls ``k g_a`` in tension (``g_a = g . a > 0``) with the damper
+    ``c_x``; while the gap closes (the next element's end sliding into the previous one) it takes no
+    compression until the overlap reaches half an element, and ``k_t (g_a + l/2)`` beyond (a stop,
+    so that elements cannot slide along each other without end). Across the axis the points are
+    pinned by the penalty stiffness ``k_t`` and the damper ``c_t``.
     """
-    k, kt, ct = P[P_K], P[P_KT], P[P_CT]
-    gl = gap[0] * axis[0] + gap[1] * axis[1] + gap[2] * axis[2]
-    ga = dgap[0] * axis[0] + dgap[1] * axis[1] + dgap[2] * axis[2]
+    kt, ct = P[P_KT], P[P_CT]
+    gl = gx * ax + gy * ay + gz * az
+    ga = dx * ax + dy * ay + dz * az
     if gl > 0.0:
-        fs = k * gl
-        fa = fs + P[P_CX] * ga
+        fs = P[P_K] * gl
+        cax = P[P_CX]
     else:
         fs = kt * min(gl + 0.5 * P[P_L], 0.0)
-        fa = fs
-    for i in range(3):
-        out[i] = kt * (gap[i] - gl * axis[i]) + fa * axis[i] + ct * (dgap[i] - ga * axis[i])
-    return fs
+        cax = 0.0
+    fa = fs + cax * ga
+    # along: fa; across: kt g + ct d
+    fx = kt * (gx - gl * ax) + ct * (dx - ga * ax) + fa * ax
+    fy = kt * (gy - gl * ay) + ct * (dy - ga * ay) + fa * ay
+    fz = kt * (gz - gl * az) + ct * (dz - ga * az) + fa * az
+    # the spring energy's gradient with respect to the unnormalised axis; a joint bent past 120 degrees
+    # (al < 1) goes without it rather than divide by a vanishing al
+    c = (fs - kt * gl) / al if al >= 1.0 else 0.0
+    tension = max(fa, 0.0) if gl > 0.0 else 0.0
+    return (fx, fy, fz, c * (gx - gl * ax), c * (gy - gl * ay), c * (gz - gl * az), ax, ay, az, cax, ct, tension)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _element(k, R, E, nu, om, P, front, aft, inv_dt, Fb, Mb, D, mass_t, inert, ma_now, ma_prev):
+    """Loads on element k in its frame: weight, buoyancy, drag and water entry at three Gauss points,
+    and its two joints (``front``, ``aft``: ``_joint``'s tuples; the front joint's force acts on
+    this element with the opposite sign); the dampers' diagonal ``D[k]``, wetted mass and inertia.
+    """
+    half = 0.5 * P[P_L]
+    rho, g, m, d, area = P[P_RHO], P[P_G], P[P_M], P[P_D], P[P_AREA]
+    e1z, e2z, e3z = E[k, 2, 0], E[k, 2, 1], E[k, 2, 2]
+    rv = 0.5 * d * math.sqrt(max(1.0 - e1z * e1z, 0.0))
+    inv_rv = 1.0 / rv if rv > 0.0 else 0.0
+    # weight (body components of -m g z)
+    fx = -m * g * e1z
+    fy = -m * g * e2z
+    fz = -m * g * e3z
+    mq = 0.0
+    mr = 0.0
+    wet = 0.0
+    wet2 = 0.0
+    u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
+    for ip in range(3):
+        s = _GP[ip] * half
+        wl = _GW[ip] * half
+        z = R[k, 2] + s * e1z
+        fr = _immersed(-z * inv_rv) if rv > 0.0 else (1.0 if z < 0.0 else 0.0)
+        ma_p = P[P_CA] * rho * area * fr * wl
+        grow = (ma_p - ma_prev[k, ip]) * inv_dt
+        ma_now[k, ip] = ma_p
+        if fr <= 0.0:
+            continue
+        wet += fr * wl
+        wet2 += fr * wl * s * s
+        bz = rho * g * area * fr * wl  # buoyancy, up
+        px, py, pz = bz * e1z, bz * e2z, bz * e3z
+        # the point's body velocity (u, v + s r, w - s q), still water
+        vp = v + s * r
+        wp = w - s * q
+        if P[P_DRAG] > 0.0:
+            vn = math.sqrt(vp * vp + wp * wp)
+            qd = 0.5 * rho * d * fr * wl
+            px -= qd * math.pi * P[P_CF] * abs(u) * u
+            py -= qd * P[P_CD] * vn * vp
+            pz -= qd * P[P_CD] * vn * wp
+        # water entry: the momentum given to the point's growing added mass, at the point's velocity
+        if grow > 0.0:
+            py -= grow * vp
+            pz -= grow * wp
+        fx += px
+        fy += py
+        fz += pz
+        mq -= s * pz
+        mr += s * py
+    mass_t[k] = m + P[P_CA] * rho * area * wet
+    inert[k] = P[P_I] + P[P_CA] * rho * area * wet2
+    # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, the torque of the
+    # joint's turning axis, and the diagonal of the joint dampers in (u, v, w, q, r)
+    du = dv = dw = 0.0
+    for side in range(2):
+        jt = front if side == 0 else aft
+        sgn = -1.0 if side == 0 else 1.0
+        gx, gy, gz = sgn * jt[0], sgn * jt[1], sgn * jt[2]
+        bx = E[k, 0, 0] * gx + E[k, 1, 0] * gy + E[k, 2, 0] * gz
+        by = E[k, 0, 1] * gx + E[k, 1, 1] * gy + E[k, 2, 1] * gz
+        bzz = E[k, 0, 2] * gx + E[k, 1, 2] * gy + E[k, 2, 2] * gz
+        h2 = E[k, 0, 1] * jt[3] + E[k, 1, 1] * jt[4] + E[k, 2, 1] * jt[5]
+        h3 = E[k, 0, 2] * jt[3] + E[k, 1, 2] * jt[4] + E[k, 2, 2] * jt[5]
+        a1 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
+        a2 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
+        a3 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
+        fx += bx
+        fy += by
+        fz += bzz
+        mq += h3 + sgn * half * -bzz
+        mr += sgn * half * by - h2
+        cd = jt[9] - jt[10]
+        du += jt[10] + cd * a1 * a1
+        dv += jt[10] + cd * a2 * a2
+        dw += jt[10] + cd * a3 * a3
+    Fb[k, 0], Fb[k, 1], Fb[k, 2] = fx, fy, fz
+    Mb[k, 0], Mb[k, 1] = mq, mr
+    D[k, 0], D[k, 1], D[k, 2] = du, dv, dw
+    D[k, 3], D[k, 4] = half * half * dw, half * half * dv
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, jf, jaux, tension,
-            slack, ma_now, ma_prev, dt, work):
-    """Body forces Fb (N, 3), moments Mb (N, 2), transverse mass and inertia, joint forces jf (N+1, 3).
+def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, tension, slack, ma_now,
+            ma_prev, dt, work):
+    """Body forces Fb (N, 3), moments Mb (N, 2), the dampers' diagonal D (N, 5) in each element's own
+    velocities (u, v, w, q, r), which the time step takes implicitly, transverse mass and inertia, the
+    joints' tension and slack flags; returns the barge joint's force on the line ahead (x, y).
 
-    ``D`` (N, 5) receives the diagonal of the dampers' matrix in each element's own velocities
-    (u, v, w, q, r), which the time step takes implicitly. ``jaux`` (N+1, 7) is scratch: each joint's
-    axis, the gradient of its spring energy with respect to the axis (the torque of an axis that turns,
-    see ``_axis_torque``) and its axial damper.
+    One pass over the joints, j = first the tug's, j = n the barge's (joint j joins element j-1's aft
+    point to element j's front one), finishing element j - 1 once both its joints are known.
+
+    The joints' springs have the energy ``U(g, a)`` of the gap ``g`` and the joint's axis
+    ``a = s / |s|``, ``s`` the sum of its elements' directions ``e1``: as ``a`` turns with the
+    elements, each feels the torque ``-e1 x dU/ds``, which keeps the spring conservative.
 
     ``ma_now`` (N, 3) receives the added mass of each Gauss point's share of the element; with
-    ``dt > 0`` its growth since ``ma_prev`` gives the water-entry impact. ``work`` is (12, 3) scratch.
+    ``dt > 0`` its growth since ``ma_prev`` gives the water-entry impact. ``work`` is (2, 3) scratch.
     """
     n = R.shape[0]
     half = 0.5 * P[P_L]
-    rho, g = P[P_RHO], P[P_G]
-    pb, vb = work[2], work[3]
-    qa, wa, qb, wb = work[4], work[5], work[6], work[7]
-    gap, dgap, axis, f = work[8], work[9], work[10], work[11]
-    jf[:] = 0.0
-    tension[:] = 0.0
-    slack[:] = False
-    # --- joints: j = first is the tug's, j = n the barge's; joint j joins element j-1 (aft) to j (front)
+    inv_dt = 1.0 / dt if dt > 0.0 and P[P_IMPACT] > 0.0 else 0.0
+    qb, wb = work[0], work[1]
+    # the previous body's aft point and its velocity: the tug's tow point first
+    px, py, pz = tug_p[0], tug_p[1], tug_p[2]
+    vx, vy, vz = tug_v[0], tug_v[1], tug_v[2]
+    prev = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    cur = prev
     for j in range(first, n + 1):
-        if j == first:
-            qa[:] = tug_p
-            wa[:] = tug_v
-        else:  # the aft point of element j - 1, found as pb, vb at the previous joint
-            qa[:] = pb
-            wa[:] = vb
+        # the next body's front point (q, w), and the axis sum s of the joint's elements
+        sx = sy = sz = 0.0
+        if j > first:
+            sx, sy, sz = E[j - 1, 0, 0], E[j - 1, 1, 0], E[j - 1, 2, 0]
         if j == n:
             barge_point(bs, bxt, bzt, qb, wb)
+            qx, qy, qz, wx, wy, wz = qb[0], qb[1], qb[2], wb[0], wb[1], wb[2]
+            ax_, ay_, az_, bvx, bvy, bvz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
         else:
-            joint_points(R, E, nu, om, half, j, qb, wb, pb, vb)
-        for i in range(3):
-            gap[i] = qb[i] - qa[i]
-            dgap[i] = wb[i] - wa[i]
+            e1x, e1y, e1z = E[j, 0, 0], E[j, 1, 0], E[j, 2, 0]
+            uu, vv, ww, qq, rr = nu[j, 0], nu[j, 1], nu[j, 2], om[j, 0], om[j, 1]
+            Vx = e1x * uu + E[j, 0, 1] * vv + E[j, 0, 2] * ww
+            Vy = e1y * uu + E[j, 1, 1] * vv + E[j, 1, 2] * ww
+            Vz = e1z * uu + E[j, 2, 1] * vv + E[j, 2, 2] * ww
+            # omega x e1 = -q e3 + r e2
+            Ox = -qq * E[j, 0, 2] + rr * E[j, 0, 1]
+            Oy = -qq * E[j, 1, 2] + rr * E[j, 1, 1]
+            Oz = -qq * E[j, 2, 2] + rr * E[j, 2, 1]
+            qx, qy, qz = R[j, 0] - half * e1x, R[j, 1] - half * e1y, R[j, 2] - half * e1z
+            wx, wy, wz = Vx - half * Ox, Vy - half * Oy, Vz - half * Oz
+            ax_, ay_, az_ = R[j, 0] + half * e1x, R[j, 1] + half * e1y, R[j, 2] + half * e1z
+            bvx, bvy, bvz = Vx + half * Ox, Vy + half * Oy, Vz + half * Oz
+            sx += e1x
+            sy += e1y
+            sz += e1z
+        gx, gy, gz = qx - px, qy - py, qz - pz
         if j == first and first > 0:
             # paying out from the bitt: the brake tension along the line, no spring
-            gl = math.sqrt(gap[0] ** 2 + gap[1] ** 2 + gap[2] ** 2)
+            gl = math.sqrt(gx * gx + gy * gy + gz * gz)
             if gl > 0.0 and P[P_BRAKE] > 0.0:
-                for i in range(3):
-                    jf[j, i] = P[P_BRAKE] * gap[i] / gl
-                tension[j] = P[P_BRAKE]
+                b = P[P_BRAKE] / gl
+                cur = (b * gx, b * gy, b * gz, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, P[P_BRAKE])
+                slack[j] = False
             else:
+                cur = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
                 slack[j] = True
-            jaux[j, :] = 0.0
-            continue
-        # the joint's axis: along its elements
-        for i in range(3):
-            axis[i] = 0.0
-            if j > first:
-                axis[i] += E[j - 1, i, 0]
-            if j < n:
-                axis[i] += E[j, i, 0]
-        al = math.sqrt(axis[0] ** 2 + axis[1] ** 2 + axis[2] ** 2)
-        if al < 1e-9:  # folded back on itself: the aft element's direction
-            for i in range(3):
-                axis[i] = E[j, i, 0]
         else:
-            for i in range(3):
-                axis[i] /= al
-        gl = gap[0] * axis[0] + gap[1] * axis[1] + gap[2] * axis[2]
-        fs = _spring(P, gap, dgap, axis, f)
-        taut = gl > 0.0
-        slack[j] = not taut
-        tension[j] = max(f[0] * axis[0] + f[1] * axis[1] + f[2] * axis[2], 0.0) if taut else 0.0
-        # the spring energy's gradient with respect to the (unnormalised) axis, for _axis_torque; a
-        # joint bent past 120 degrees (al < 1) goes without it rather than divide by a vanishing al
-        c = (fs - P[P_KT] * gl) / al if al >= 1.0 else 0.0
-        for i in range(3):
-            jf[j, i] = f[i]
-            jaux[j, i] = axis[i]
-            jaux[j, 3 + i] = c * (gap[i] - gl * axis[i])
-        jaux[j, 6] = P[P_CX] if taut else 0.0
-        jaux[j, 7] = P[P_CT]
-    # --- elements
-    m, d, area = P[P_M], P[P_D], P[P_AREA]
-    for k in range(first, n):
-        e1z = E[k, 2, 0]
-        rv = 0.5 * d * math.sqrt(max(1.0 - e1z * e1z, 0.0))
-        fx = 0.0
-        fy = 0.0
-        fz = 0.0
-        mq = 0.0
-        mr = 0.0
-        # weight (body components of -m g z)
-        fx -= m * g * E[k, 2, 0]
-        fy -= m * g * E[k, 2, 1]
-        fz -= m * g * E[k, 2, 2]
-        wet = 0.0
-        wet2 = 0.0
-        for ip in range(3):
-            s = _GP[ip] * half
-            wl = _GW[ip] * half
-            z = R[k, 2] + s * e1z
-            fr = _immersed(-z, rv) if rv > 0.0 else (1.0 if z < 0.0 else 0.0)
-            ma_p = P[P_CA] * rho * area * fr * wl
-            grow = (ma_p - ma_prev[k, ip]) / dt if dt > 0.0 and P[P_IMPACT] > 0.0 else 0.0
-            ma_now[k, ip] = ma_p
-            if fr <= 0.0:
-                continue
-            wet += fr * wl
-            wet2 += fr * wl * s * s
-            bz = rho * g * area * fr * wl  # buoyancy, up
-            px, py, pz = bz * E[k, 2, 0], bz * E[k, 2, 1], bz * E[k, 2, 2]
-            # the point's body velocity (u, v + s r, w - s q), still water
-            up = nu[k, 0]
-            vp = nu[k, 1] + s * om[k, 1]
-            wp = nu[k, 2] - s * om[k, 0]
-            if P[P_DRAG] > 0.0:
-                vn = math.sqrt(vp * vp + wp * wp)
-                qd = 0.5 * rho * d * fr * wl
-                px -= qd * math.pi * P[P_CF] * abs(up) * up
-                py -= qd * P[P_CD] * vn * vp
-                pz -= qd * P[P_CD] * vn * wp
-            # water entry: the momentum given to the point's growing added mass, at the point's velocity
-            if grow > 0.0:
-                py -= grow * vp
-                pz -= grow * wp
-            fx += px
-            fy += py
-            fz += pz
-            mq -= s * pz
-            mr += s * py
-        mass_t[k] = m + P[P_CA] * rho * area * wet
-        inert[k] = P[P_I] + P[P_CA] * rho * area * wet2
-        # joint forces: at the front (s = -l/2) minus joint k's, at the aft (s = +l/2) joint k+1's; the
-        # torque of the joint's turning axis; the diagonal of the joint dampers in (u, v, w, q, r)
-        du = dv = dw = 0.0
-        for side in range(2):
-            j = k + side
-            sgn = -1.0 if side == 0 else 1.0
-            sl = -half if side == 0 else half
-            gx = sgn * jf[j, 0]
-            gy = sgn * jf[j, 1]
-            gz = sgn * jf[j, 2]
-            bx = E[k, 0, 0] * gx + E[k, 1, 0] * gy + E[k, 2, 0] * gz
-            by = E[k, 0, 1] * gx + E[k, 1, 1] * gy + E[k, 2, 1] * gz
-            bzz = E[k, 0, 2] * gx + E[k, 1, 2] * gy + E[k, 2, 2] * gz
-            h2 = E[k, 0, 1] * jaux[j, 3] + E[k, 1, 1] * jaux[j, 4] + E[k, 2, 1] * jaux[j, 5]
-            h3 = E[k, 0, 2] * jaux[j, 3] + E[k, 1, 2] * jaux[j, 4] + E[k, 2, 2] * jaux[j, 5]
-            fx += bx
-            fy += by
-            fz += bzz
-            mq += h3 - sl * bzz
-            mr += sl * by - h2
-            a1 = E[k, 0, 0] * jaux[j, 0] + E[k, 1, 0] * jaux[j, 1] + E[k, 2, 0] * jaux[j, 2]
-            a2 = E[k, 0, 1] * jaux[j, 0] + E[k, 1, 1] * jaux[j, 1] + E[k, 2, 1] * jaux[j, 2]
-            a3 = E[k, 0, 2] * jaux[j, 0] + E[k, 1, 2] * jaux[j, 1] + E[k, 2, 2] * jaux[j, 2]
-            ct = jaux[j, 7]
-            cd = jaux[j, 6] - ct
-            du += ct + cd * a1 * a1
-            dv += ct + cd * a2 * a2
-            dw += ct + cd * a3 * a3
-        Fb[k, 0], Fb[k, 1], Fb[k, 2] = fx, fy, fz
-        Mb[k, 0], Mb[k, 1] = mq, mr
-        D[k, 0], D[k, 1], D[k, 2] = du, dv, dw
-        D[k, 3], D[k, 4] = half * half * dw, half * half * dv
+            al = math.sqrt(sx * sx + sy * sy + sz * sz)
+            if al < 1e-9:  # folded back on itself: the aft element's direction
+                sx, sy, sz, ia = E[j, 0, 0], E[j, 1, 0], E[j, 2, 0], 1.0
+            else:
+                ia = 1.0 / al
+            cur = _joint(P, gx, gy, gz, wx - vx, wy - vy, wz - vz, sx * ia, sy * ia, sz * ia, al)
+            slack[j] = (gx * sx + gy * sy + gz * sz) <= 0.0
+        tension[j] = cur[11]
+        if j > first:
+            _element(j - 1, R, E, nu, om, P, prev, cur, inv_dt, Fb, Mb, D, mass_t, inert, ma_now, ma_prev)
+        prev = cur
+        px, py, pz, vx, vy, vz = ax_, ay_, az_, bvx, bvy, bvz
+    fbx, fby = cur[0], cur[1]
     # bending damping between neighbours: c_m (omega_k - omega_{k-1}), c_m = 2 zeta_m sqrt(T l/2 I)
     if P[P_ZM] > 0.0:
+        cz = 2.0 * P[P_ZM] * math.sqrt(0.5 * half)
         for j in range(first + 1, n):
-            if tension[j] <= 0.0:
+            t = tension[j]
+            if t <= 0.0:
                 continue
-            cm = 2.0 * P[P_ZM] * math.sqrt(tension[j] * half * 0.5 * (inert[j - 1] + inert[j]))
-            for i in range(3):
-                rel = (om[j, 0] * E[j, i, 1] + om[j, 1] * E[j, i, 2]
-                       - om[j - 1, 0] * E[j - 1, i, 1] - om[j - 1, 1] * E[j - 1, i, 2])
-                f[i] = cm * rel
-            D[j - 1, 3] += cm
-            D[j - 1, 4] += cm
-            D[j, 3] += cm
-            D[j, 4] += cm
-            Mb[j - 1, 0] += f[0] * E[j - 1, 0, 1] + f[1] * E[j - 1, 1, 1] + f[2] * E[j - 1, 2, 1]
-            Mb[j - 1, 1] += f[0] * E[j - 1, 0, 2] + f[1] * E[j - 1, 1, 2] + f[2] * E[j - 1, 2, 2]
-            Mb[j, 0] -= f[0] * E[j, 0, 1] + f[1] * E[j, 1, 1] + f[2] * E[j, 2, 1]
-            Mb[j, 1] -= f[0] * E[j, 0, 2] + f[1] * E[j, 1, 2] + f[2] * E[j, 2, 2]
+            i0, i1 = j - 1, j
+            cm = cz * math.sqrt(t * (inert[i0] + inert[i1]))
+            # omega = q e2 + r e3 of each element, inertial; the damping moment c_m (omega_j - omega_{j-1})
+            rx = (om[i1, 0] * E[i1, 0, 1] + om[i1, 1] * E[i1, 0, 2] - om[i0, 0] * E[i0, 0, 1] - om[i0, 1] * E[i0, 0, 2])
+            ry = (om[i1, 0] * E[i1, 1, 1] + om[i1, 1] * E[i1, 1, 2] - om[i0, 0] * E[i0, 1, 1] - om[i0, 1] * E[i0, 1, 2])
+            rz = (om[i1, 0] * E[i1, 2, 1] + om[i1, 1] * E[i1, 2, 2] - om[i0, 0] * E[i0, 2, 1] - om[i0, 1] * E[i0, 2, 2])
+            D[i0, 3] += cm
+            D[i0, 4] += cm
+            D[i1, 3] += cm
+            D[i1, 4] += cm
+            Mb[i0, 0] += cm * (rx * E[i0, 0, 1] + ry * E[i0, 1, 1] + rz * E[i0, 2, 1])
+            Mb[i0, 1] += cm * (rx * E[i0, 0, 2] + ry * E[i0, 1, 2] + rz * E[i0, 2, 2])
+            Mb[i1, 0] -= cm * (rx * E[i1, 0, 1] + ry * E[i1, 1, 1] + rz * E[i1, 2, 1])
+            Mb[i1, 1] -= cm * (rx * E[i1, 0, 2] + ry * E[i1, 1, 2] + rz * E[i1, 2, 2])
+    return fbx, fby
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -436,17 +453,16 @@ def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, tension, slack,
     """Joint tensions, slack flags and the added masses ``ma`` (N, 3) of the Gauss points' shares."""
     n = R.shape[0]
     _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)), np.zeros((n, 5)),
-            np.zeros(n), np.zeros(n), np.zeros((n + 1, 3)), np.zeros((n + 1, 8)), tension, slack, ma, ma, 0.0,
-            np.zeros((12, 3)))
+            np.zeros(n), np.zeros(n), tension, slack, ma, ma, 0.0, np.zeros((2, 3)))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma_prev,
-              tension, slack):
+def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma, tension, slack):
     """Advance ``len(tug_p) - 1`` explicit steps of ``dt``; ``tug_p``, ``tug_v`` at the step times.
 
-    ``first_arr[0]`` is the first element off the bitt (0 when the whole line is out). Returns the
-    number of steps taken, fewer when a state is no longer finite.
+    ``first_arr[0]`` is the first element off the bitt (0 when the whole line is out); ``ma`` (N, 3)
+    the Gauss points' added masses, in and out. Returns the number of steps taken, fewer when a
+    state is no longer finite.
     """
     n = R.shape[0]
     Fb = np.zeros((n, 3))
@@ -454,10 +470,8 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     D = np.zeros((n, 5))
     mass_t = np.zeros(n)
     inert = np.zeros(n)
-    jf = np.zeros((n + 1, 3))
-    jaux = np.zeros((n + 1, 8))
-    ma_now = np.zeros((n, 3))
-    work = np.zeros((12, 3))
+    ma_prev, ma_now = ma, np.zeros((n, 3))  # swapped after each step
+    work = np.zeros((2, 3))
     qb, wb, sa, sb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
     m = P[P_M]
     half = 0.5 * P[P_L]
@@ -466,34 +480,36 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
         first = first_arr[0]
         pt = tug_p[step]
         vt = tug_v[step]
-        _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, jf, jaux, tension, slack,
-                ma_now, ma_prev, dt, work)
+        fbx, fby = _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, tension, slack,
+                           ma_now, ma_prev, dt, work)
+        finite = True
         for k in range(first, n):
             u, v, w = nu[k, 0], nu[k, 1], nu[k, 2]
             q, r = om[k, 0], om[k, 1]
             my = mass_t[k]
             ik = inert[k]
-            for ip in range(3):
-                ma_prev[k, ip] = ma_now[k, ip]
             # the dampers' own-velocity terms implicitly: x += dt a / (1 + dt d / mass)
             du = (Fb[k, 0] - q * my * w + r * my * v) / (m + dt * D[k, 0])
             dv = (Fb[k, 1] - r * m * u) / (my + dt * D[k, 1])
             dw = (Fb[k, 2] + q * m * u) / (my + dt * D[k, 2])
             dq = (Mb[k, 0] - (m - my) * u * w) / (ik + dt * D[k, 3])
             dr = (Mb[k, 1] - (my - m) * u * v) / (ik + dt * D[k, 4])
-            nu[k, 0] = u + dt * du
-            nu[k, 1] = v + dt * dv
-            nu[k, 2] = w + dt * dw
+            u += dt * du
+            v += dt * dv
+            w += dt * dw
+            nu[k, 0], nu[k, 1], nu[k, 2] = u, v, w
             om[k, 0] = q + dt * dq
             om[k, 1] = r + dt * dr
             for i in range(3):
-                R[k, i] += dt * (E[k, i, 0] * nu[k, 0] + E[k, i, 1] * nu[k, 1] + E[k, i, 2] * nu[k, 2])
+                R[k, i] += dt * (E[k, i, 0] * u + E[k, i, 1] * v + E[k, i, 2] * w)
             _rotate(E[k], om[k, 0], om[k, 1], dt)
+            finite = finite and math.isfinite(R[k, 0] + u + om[k, 1])
+        ma_prev, ma_now = ma_now, ma_prev
         # the barge: towline force at its tow point (minus joint n's force on the previous body)
         if not held:
             c, s = math.cos(bs[B_PSI]), math.sin(bs[B_PSI])
-            fxg = -jf[n, 0]
-            fyg = -jf[n, 1]
+            fxg = -fbx
+            fyg = -fby
             X = fxg * c + fyg * s
             Y = -fxg * s + fyg * c
             du, dv, dr = barge_accelerations(bpar, bs[B_U], bs[B_V], bs[B_R], X, Y, bxt * Y)
@@ -516,7 +532,10 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
                 _release(R, E, nu, om, first - 1, P, tug_p[step + 1], tug_v[step + 1], bs, bxt, bzt)
                 ma_prev[first - 1, :] = 0.0
                 first_arr[0] = first - 1
-        for k in range(first_arr[0], n):
-            if not (math.isfinite(R[k, 0]) and math.isfinite(nu[k, 0]) and math.isfinite(om[k, 1])):
-                return step
+        if not finite:
+            if step % 2 == 0:
+                ma[:] = ma_prev
+            return step
+    if nstep % 2 == 1:
+        ma[:] = ma_prev
     return nstep

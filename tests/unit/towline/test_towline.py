@@ -116,10 +116,10 @@ def test_immersed_fraction_matches_the_circular_segment():
 
     c = np.linspace(-1.0, 1.0, 2001)
     exact = (np.arccos(-c) + c * np.sqrt(1 - c * c)) / np.pi
-    ours = np.array([_immersed(h, 1.0) for h in c])
+    ours = np.array([_immersed(h) for h in c])
     # Abramowitz & Stegun 4.4.46: arccos to 2e-8 rad, so the fraction to 2e-8 / pi; asserted to 1e-8
     np.testing.assert_allclose(ours, exact, rtol=0, atol=1e-8)
-    assert _immersed(2.0, 1.0) == 1.0 and _immersed(-2.0, 1.0) == 0.0
+    assert _immersed(2.0) == 1.0 and _immersed(-2.0) == 0.0
 
 
 def test_frame_rotation_series_matches_the_exact_rotation():
