@@ -234,10 +234,13 @@ def _joint(P, gx, gy, gz, dx, dy, dz, ax, ay, az, al):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _element(k, R, E, nu, om, P, front, aft, inv_dt, Fb, Mb, D, mass_t, inert, ma_now, ma_prev):
+def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
     """Loads on element k in its frame: weight, buoyancy, drag and water entry at three Gauss points,
     and its two joints (``front``, ``aft``: ``_joint``'s tuples; the front joint's force acts on
-    this element with the opposite sign); the dampers' diagonal ``D[k]``, wetted mass and inertia.
+    this element with the opposite sign).
+
+    Returns ``(F_x, F_y, F_z, M_q, M_r, D_u, D_v, D_w, D_q, D_r, M_y, I)``: force, moment, the joint
+    dampers' diagonal in the element's own velocities, its transverse mass and inertia (wetted).
     """
     half = 0.5 * P[P_L]
     rho, g, m, d, area = P[P_RHO], P[P_G], P[P_M], P[P_D], P[P_AREA]
@@ -285,8 +288,6 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, Fb, Mb, D, mass_t, inert, m
         fz += pz
         mq -= s * pz
         mr += s * py
-    mass_t[k] = m + P[P_CA] * rho * area * wet
-    inert[k] = P[P_I] + P[P_CA] * rho * area * wet2
     # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, the torque of the
     # joint's turning axis, and the diagonal of the joint dampers in (u, v, w, q, r)
     du = dv = dw = 0.0
@@ -311,38 +312,62 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, Fb, Mb, D, mass_t, inert, m
         du += jt[10] + cd * a1 * a1
         dv += jt[10] + cd * a2 * a2
         dw += jt[10] + cd * a3 * a3
-    Fb[k, 0], Fb[k, 1], Fb[k, 2] = fx, fy, fz
-    Mb[k, 0], Mb[k, 1] = mq, mr
-    D[k, 0], D[k, 1], D[k, 2] = du, dv, dw
-    D[k, 3], D[k, 4] = half * half * dw, half * half * dv
+    return (fx, fy, fz, mq, mr, du, dv, dw, half * half * dw, half * half * dv,
+            m + P[P_CA] * rho * area * wet, P[P_I] + P[P_CA] * rho * area * wet2)
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _advance(k, E, nu, om, R, P, ld, dt):
+    """Element k's explicit step on its loads ``ld`` (``_element``'s tuple, bending damping added):
+    Kirchhoff's equations for the new velocities, the dampers' own-velocity terms taken implicitly
+    (``x += dt a / (1 + dt d / mass)``), then position and frame with the new velocities."""
+    m = P[P_M]
+    u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
+    my, ik = ld[10], ld[11]
+    u2 = u + dt * (ld[0] - q * my * w + r * my * v) / (m + dt * ld[5])
+    v2 = v + dt * (ld[1] - r * m * u) / (my + dt * ld[6])
+    w2 = w + dt * (ld[2] + q * m * u) / (my + dt * ld[7])
+    q2 = q + dt * (ld[3] - (m - my) * u * w) / (ik + dt * ld[8])
+    r2 = r + dt * (ld[4] - (my - m) * u * v) / (ik + dt * ld[9])
+    nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1] = u2, v2, w2, q2, r2
+    for i in range(3):
+        R[k, i] += dt * (E[k, i, 0] * u2 + E[k, i, 1] * v2 + E[k, i, 2] * w2)
+    _rotate(E[k], q2, r2, dt)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, tension, slack, ma_now,
-            ma_prev, dt, work):
-    """Body forces Fb (N, 3), moments Mb (N, 2), the dampers' diagonal D (N, 5) in each element's own
-    velocities (u, v, w, q, r), which the time step takes implicitly, transverse mass and inertia, the
-    joints' tension and slack flags; returns the barge joint's force on the line ahead (x, y).
+def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma_now, ma_prev, dt, work):
+    """One explicit step of the line (``dt = 0``: the joints' tensions and the wetted inertias only);
+    returns the barge joint's force on the line ahead (x, y) and whether the new state is finite.
 
     One pass over the joints, j = first the tug's, j = n the barge's (joint j joins element j-1's aft
-    point to element j's front one), finishing element j - 1 once both its joints are known.
+    point to element j's front one); once joint j is known, element j - 1 has all its loads and
+    takes its step (no joint needs its old state any more).
 
     The joints' springs have the energy ``U(g, a)`` of the gap ``g`` and the joint's axis
     ``a = s / |s|``, ``s`` the sum of its elements' directions ``e1``: as ``a`` turns with the
     elements, each feels the torque ``-e1 x dU/ds``, which keeps the spring conservative.
 
-    ``ma_now`` (N, 3) receives the added mass of each Gauss point's share of the element; with
-    ``dt > 0`` its growth since ``ma_prev`` gives the water-entry impact. ``work`` is (2, 3) scratch.
+    Material damping of bending at a taut joint j: the moment ``c_m (omega_j - omega_{j-1})``,
+    ``c_m = 2 zeta_m sqrt(T (l/2) I)`` with ``I`` the mean wetted inertia of the two elements (element
+    j's from the previous step: it has not been loaded yet); its own-velocity terms are implicit too.
+
+    ``inert`` (N) holds the wetted inertias, in and out; ``ma_now`` (N, 3) receives the added mass of
+    each Gauss point's share of the element; with ``dt > 0`` its growth since ``ma_prev`` gives the
+    water-entry impact. ``work`` is (2, 3) scratch.
     """
     n = R.shape[0]
     half = 0.5 * P[P_L]
     inv_dt = 1.0 / dt if dt > 0.0 and P[P_IMPACT] > 0.0 else 0.0
+    cz = 2.0 * P[P_ZM] * math.sqrt(0.5 * half)
     qb, wb = work[0], work[1]
     # the previous body's aft point and its velocity: the tug's tow point first
     px, py, pz = tug_p[0], tug_p[1], tug_p[2]
     vx, vy, vz = tug_v[0], tug_v[1], tug_v[2]
     prev = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     cur = prev
+    bq = br = bd = 0.0  # bending damping of the previous joint on the element being finished
+    finite = True
     for j in range(first, n + 1):
         # the next body's front point (q, w), and the axis sum s of the joint's elements
         sx = sy = sz = 0.0
@@ -390,32 +415,31 @@ def _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, Fb, Mb, D, mass_
             slack[j] = (gx * sx + gy * sy + gz * sz) <= 0.0
         tension[j] = cur[11]
         if j > first:
-            _element(j - 1, R, E, nu, om, P, prev, cur, inv_dt, Fb, Mb, D, mass_t, inert, ma_now, ma_prev)
+            k = j - 1
+            ld = _element(k, R, E, nu, om, P, prev, cur, inv_dt, ma_now, ma_prev)
+            mq, mr, dq = ld[3] + bq, ld[4] + br, ld[8] + bd
+            dr = ld[9] + bd
+            bq = br = bd = 0.0
+            if j < n and cz > 0.0 and cur[11] > 0.0:
+                # bending damping at joint j, on element k now and on element j when it is finished
+                cm = cz * math.sqrt(cur[11] * (ld[11] + inert[j]))
+                rx = om[j, 0] * E[j, 0, 1] + om[j, 1] * E[j, 0, 2] - om[k, 0] * E[k, 0, 1] - om[k, 1] * E[k, 0, 2]
+                ry = om[j, 0] * E[j, 1, 1] + om[j, 1] * E[j, 1, 2] - om[k, 0] * E[k, 1, 1] - om[k, 1] * E[k, 1, 2]
+                rz = om[j, 0] * E[j, 2, 1] + om[j, 1] * E[j, 2, 2] - om[k, 0] * E[k, 2, 1] - om[k, 1] * E[k, 2, 2]
+                mq += cm * (rx * E[k, 0, 1] + ry * E[k, 1, 1] + rz * E[k, 2, 1])
+                mr += cm * (rx * E[k, 0, 2] + ry * E[k, 1, 2] + rz * E[k, 2, 2])
+                dq += cm
+                dr += cm
+                bq = -cm * (rx * E[j, 0, 1] + ry * E[j, 1, 1] + rz * E[j, 2, 1])
+                br = -cm * (rx * E[j, 0, 2] + ry * E[j, 1, 2] + rz * E[j, 2, 2])
+                bd = cm
+            inert[k] = ld[11]
+            _advance(k, E, nu, om, R, P, (ld[0], ld[1], ld[2], mq, mr, ld[5], ld[6], ld[7], dq, dr, ld[10], ld[11]),
+                     dt)
+            finite = finite and math.isfinite(R[k, 0] + nu[k, 0] + om[k, 1])
         prev = cur
         px, py, pz, vx, vy, vz = ax_, ay_, az_, bvx, bvy, bvz
-    fbx, fby = cur[0], cur[1]
-    # bending damping between neighbours: c_m (omega_k - omega_{k-1}), c_m = 2 zeta_m sqrt(T l/2 I)
-    if P[P_ZM] > 0.0:
-        cz = 2.0 * P[P_ZM] * math.sqrt(0.5 * half)
-        for j in range(first + 1, n):
-            t = tension[j]
-            if t <= 0.0:
-                continue
-            i0, i1 = j - 1, j
-            cm = cz * math.sqrt(t * (inert[i0] + inert[i1]))
-            # omega = q e2 + r e3 of each element, inertial; the damping moment c_m (omega_j - omega_{j-1})
-            rx = (om[i1, 0] * E[i1, 0, 1] + om[i1, 1] * E[i1, 0, 2] - om[i0, 0] * E[i0, 0, 1] - om[i0, 1] * E[i0, 0, 2])
-            ry = (om[i1, 0] * E[i1, 1, 1] + om[i1, 1] * E[i1, 1, 2] - om[i0, 0] * E[i0, 1, 1] - om[i0, 1] * E[i0, 1, 2])
-            rz = (om[i1, 0] * E[i1, 2, 1] + om[i1, 1] * E[i1, 2, 2] - om[i0, 0] * E[i0, 2, 1] - om[i0, 1] * E[i0, 2, 2])
-            D[i0, 3] += cm
-            D[i0, 4] += cm
-            D[i1, 3] += cm
-            D[i1, 4] += cm
-            Mb[i0, 0] += cm * (rx * E[i0, 0, 1] + ry * E[i0, 1, 1] + rz * E[i0, 2, 1])
-            Mb[i0, 1] += cm * (rx * E[i0, 0, 2] + ry * E[i0, 1, 2] + rz * E[i0, 2, 2])
-            Mb[i1, 0] -= cm * (rx * E[i1, 0, 1] + ry * E[i1, 1, 1] + rz * E[i1, 2, 1])
-            Mb[i1, 1] -= cm * (rx * E[i1, 0, 2] + ry * E[i1, 1, 2] + rz * E[i1, 2, 2])
-    return fbx, fby
+    return cur[0], cur[1], finite
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -449,61 +473,30 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, tension, slack, ma):
-    """Joint tensions, slack flags and the added masses ``ma`` (N, 3) of the Gauss points' shares."""
-    n = R.shape[0]
-    _forces(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, np.zeros((n, 3)), np.zeros((n, 2)), np.zeros((n, 5)),
-            np.zeros(n), np.zeros(n), tension, slack, ma, ma, 0.0, np.zeros((2, 3)))
+def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma):
+    """Joint tensions, slack flags, the wetted inertias ``inert`` (N) and the added masses ``ma`` (N, 3)
+    of the Gauss points' shares, for the state as it is (a step of zero length)."""
+    _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma, ma, 0.0, np.zeros((2, 3)))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma, tension, slack):
+def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, held, ma, inert, tension, slack):
     """Advance ``len(tug_p) - 1`` explicit steps of ``dt``; ``tug_p``, ``tug_v`` at the step times.
 
     ``first_arr[0]`` is the first element off the bitt (0 when the whole line is out); ``ma`` (N, 3)
-    the Gauss points' added masses, in and out. Returns the number of steps taken, fewer when a
-    state is no longer finite.
+    the Gauss points' added masses and ``inert`` (N) the wetted inertias, in and out. Returns the
+    number of steps taken, fewer when a state is no longer finite.
     """
     n = R.shape[0]
-    Fb = np.zeros((n, 3))
-    Mb = np.zeros((n, 2))
-    D = np.zeros((n, 5))
-    mass_t = np.zeros(n)
-    inert = np.zeros(n)
     ma_prev, ma_now = ma, np.zeros((n, 3))  # swapped after each step
     work = np.zeros((2, 3))
     qb, wb, sa, sb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
-    m = P[P_M]
     half = 0.5 * P[P_L]
     nstep = tug_p.shape[0] - 1
     for step in range(nstep):
         first = first_arr[0]
-        pt = tug_p[step]
-        vt = tug_v[step]
-        fbx, fby = _forces(R, E, nu, om, first, P, pt, vt, bs, bxt, bzt, Fb, Mb, D, mass_t, inert, tension, slack,
-                           ma_now, ma_prev, dt, work)
-        finite = True
-        for k in range(first, n):
-            u, v, w = nu[k, 0], nu[k, 1], nu[k, 2]
-            q, r = om[k, 0], om[k, 1]
-            my = mass_t[k]
-            ik = inert[k]
-            # the dampers' own-velocity terms implicitly: x += dt a / (1 + dt d / mass)
-            du = (Fb[k, 0] - q * my * w + r * my * v) / (m + dt * D[k, 0])
-            dv = (Fb[k, 1] - r * m * u) / (my + dt * D[k, 1])
-            dw = (Fb[k, 2] + q * m * u) / (my + dt * D[k, 2])
-            dq = (Mb[k, 0] - (m - my) * u * w) / (ik + dt * D[k, 3])
-            dr = (Mb[k, 1] - (my - m) * u * v) / (ik + dt * D[k, 4])
-            u += dt * du
-            v += dt * dv
-            w += dt * dw
-            nu[k, 0], nu[k, 1], nu[k, 2] = u, v, w
-            om[k, 0] = q + dt * dq
-            om[k, 1] = r + dt * dr
-            for i in range(3):
-                R[k, i] += dt * (E[k, i, 0] * u + E[k, i, 1] * v + E[k, i, 2] * w)
-            _rotate(E[k], om[k, 0], om[k, 1], dt)
-            finite = finite and math.isfinite(R[k, 0] + u + om[k, 1])
+        fbx, fby, finite = _step(R, E, nu, om, first, P, tug_p[step], tug_v[step], bs, bxt, bzt, inert, tension,
+                                 slack, ma_now, ma_prev, dt, work)
         ma_prev, ma_now = ma_now, ma_prev
         # the barge: towline force at its tow point (minus joint n's force on the previous body)
         if not held:

@@ -277,6 +277,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     bs = S.barge.copy()
     first = np.array([S.first], np.int64)
     ma_prev = np.zeros((n, 3))
+    inert = np.full(n, model.params[K.P_I])
     tension, slack = np.zeros(n + 1), np.zeros(n + 1, np.bool_)
     held = model.held or model.barge is None
     xt, zt = model.barge_tow_point
@@ -291,7 +292,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
         return nodes, centres, E[:, :, 0].copy(), tension.copy(), slack.copy(), rel, bs.copy()
 
     p0, v0 = tug(np.array([0.0]))
-    K.evaluate(R, E, nu, om, int(first[0]), P, p0[0], v0[0], bs, xt, zt, tension, slack, ma_prev)
+    K.evaluate(R, E, nu, om, int(first[0]), P, p0[0], v0[0], bs, xt, zt, inert, tension, slack, ma_prev)
     records = [snapshot(0.0, p0[0])]
     times, tugs = [0.0], [p0[0]]
     steps = 0
@@ -302,7 +303,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
             t0 = k * output_interval
             tt = t0 + dt * np.arange(sub + 1)
             tp, tv = tug(tt)
-            done = K.run_steps(dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev,
+            done = K.run_steps(dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev, inert,
                                tension, slack)
             steps += done
             if done < sub:
@@ -311,7 +312,8 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
                     f"{dt:.3g} s, stability bound {stable_time_step(model, 1.0):.3g} s). Suggested fix: a smaller "
                     "time_step.",
                     iterations=steps, residual=float("nan"))
-            K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, tension, slack, np.zeros((n, 3)))
+            K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, inert, tension, slack,
+                       np.zeros((n, 3)))
             times.append(tt[-1])
             tugs.append(tp[-1])
             records.append(snapshot(tt[-1], tp[-1]))
