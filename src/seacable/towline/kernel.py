@@ -39,15 +39,22 @@ Forces (F, body components; moments ``(M_q, M_r) = (-s F_z, s F_y)`` of a force 
   surface (its end entering the water while its centre rises), which made 100-element runs blow up;
   per point, the impact's power ``-(dm_a/dt)_+ |v_p|^2`` is never positive;
 - joint tension: the connection points of neighbours (``b_{j-1}`` and ``a_j``; the tug's and the
-  barge's tow points at the ends) are joined by a spring of stiffness ``k`` (from the breaking load
-  and the elongation at break: ``EA = P / eps_b``, ``k = (n + 1) EA / L`` so that the n + 1 joints
-  in series stretch as the line does) and a damper ``c_x`` along the joint,
-  ``c_x / 10`` across (``c_x = 2 zeta sqrt(k m)``, paper 003). The tension reported is the joint
-  force along the line. A joint whose gap closes along the line (the connection points pushed into
-  each other: compression; the line's direction is the mean of the joint's two elements) is slack:
-  the spring keeps only its part across the line, so the joint stays pinned sideways but takes no
-  compression, and the tension rises again from zero, without a jump, when the gap reopens. Past an
-  overlap of half an element the spring takes up compression again (a stop): without it, the
+  barge's tow points at the ends) are joined by a spring and a damper. Along the joint's axis (the
+  mean direction of its two elements) the spring has the line's stiffness ``k`` (from the breaking
+  load and the elongation at break: ``EA = P / eps_b``, ``k = (n + 1) EA / L`` so that the n + 1
+  joints in series stretch as the line does) and the damper ``c_x = 2 zeta sqrt(k m)``; across it
+  the joint is a pin, held by the penalty stiffness ``k_t = k / 3`` and the damper ``c_t = c_x / 10``
+  (paper 003's ``c_y = c_z = c_x / 10``). Paper 003's zero-length spring has ``k_t = k``; the pin's
+  stiffness is not a property of the line, only a means to keep the points together (its give, the
+  joint's shear over ``k_t``, is about 2 mm in the paper's 25 kN steady tow with 11 elements), and at ``k / 3`` the stiffest mode
+  of the pins (every element turning the same way, ``omega^2 = 12 k_t / m``) is no stiffer than the
+  line's own axial mode (``4 k / m``), which allows a step ``sqrt(3)`` times longer. The spring's
+  energy depends on the axis, which turns with the elements; each element takes its share of that
+  as a torque (``_step``), so that the spring stays conservative. The tension reported is the joint
+  force along the axis. A joint whose gap closes along the axis (the connection points pushed into
+  each other: compression) is slack: it keeps its pin but takes no compression, and the tension rises
+  again from zero, without a jump, when the gap reopens. Past an overlap of half an element the
+  pin's stiffness takes up compression again (a stop): without it, the
   elements of a line that piles up, as when the barge overruns it, slid along each other without
   end, and the slack joint's pull across a turning axis (a follower force) made them flutter until
   the run blew up. Paper 003 releases the joint entirely (no force) when the next connection point
@@ -67,11 +74,13 @@ act on the relative motion at the joints, which is what a material damping is.
 
 Time stepping is explicit (symplectic Euler: velocities first, then positions with the new
 velocities; the frame turns by the exact rotation of ``omega dt``), with no iteration, and a step
-bounded by the element's axial natural period ``2 pi sqrt(m / k)``. The joints' axial dampers alone
-are applied implicitly, joint after joint, to the new velocities (backward Euler on each joint's
-relative velocity, a closed form): explicit, at the paper's zeta = 0.5 they bounded the step more
-tightly than the springs (by 0.41 against 0.53 sqrt(m / k)), and on a folded joint, where the
-damper pushes the other element's end sideways, they broke that bound.
+bounded by the element's axial natural period: ``dt < sqrt(m / k) = T_n / 2 pi`` (``stable_time_step``).
+The dampers' terms in each element's own velocities (the diagonal ``d`` of the damping matrix in
+``u, v, w, q, r``) are taken implicitly, ``x += dt a / (1 + dt d / mass)``, their coupling to the
+neighbours explicitly: explicit, the paper's zeta = 0.5 bounded the step more tightly than the
+springs (0.41 against 0.53 sqrt(m / k) with ``k_t = k``), and on a folded joint, where the damper
+pushes the other element's end sideways, it broke that bound. Each element takes its step as soon as
+both its joints are known, in one pass along the line.
 """
 
 from __future__ import annotations
@@ -94,7 +103,7 @@ P_SIZE = 18
 B_X, B_Y, B_PSI, B_U, B_V, B_R = range(6)
 
 # fast floating point short of assuming finite values: the steps check that the state stays finite
-_FAST = {"nsz", "arcp", "contract", "reassoc"}
+_FAST = {"arcp", "contract", "reassoc"}
 
 _GP = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GW = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])

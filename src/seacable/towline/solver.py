@@ -14,7 +14,8 @@ from ..errors import ConvergenceError, InputError
 from . import kernel as K
 from .barge import Barge, barge_parameters
 
-#: the joints' stiffness across the line (the pin), a fraction of the axial k: see TowlineModel
+#: the joints' stiffness across the line (the pin's penalty), a fraction of the axial k: with k / 3 the
+#: pins' stiffest mode is no stiffer than the line's axial one (see seacable.towline.kernel)
 PIN_STIFFNESS = 1.0 / 3.0
 
 __all__ = ["PIN_STIFFNESS", "TowlineModel", "TowlineRun", "energy", "initial_state", "simulate", "stable_time_step"]
@@ -31,7 +32,8 @@ class TowlineModel:
     rigid elements stretch only at their n + 1 joints (the two tow points included), so each joint
     spring is ``k = (n + 1) EA / L`` and the springs in series have the line's ``EA / L``; paper 003's
     ``k_j = P / d`` (per element, ``EA / l``) makes the line (n + 1) / n times too soft, 9 % with 11
-    elements. ``drag_tangential`` is the skin-friction coefficient
+    elements. Across the line each joint is a pin held by the penalty stiffness ``PIN_STIFFNESS k``.
+    ``drag_tangential`` is the skin-friction coefficient
     C_f on the wetted perimeter, ``drag_normal`` C_D on the diameter, ``added_mass`` C_a across the
     line. ``damping_ratio`` (zeta, axial) and ``bending_damping_ratio`` (zeta_m) set the material
     damping of the joints. ``held`` holds the barge still; ``barge`` None is a fixed end at
@@ -267,6 +269,12 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     if not output_interval > 0 or output_interval > duration:
         raise InputError(f"output_interval must be > 0 s and not above duration ({duration:g} s), got "
                          f"{output_interval:g} s.")
+    bound = stable_time_step(model, 1.0)
+    if time_step is not None and not 0.0 < time_step <= bound:
+        raise InputError(f"time_step must be > 0 s and not above the explicit scheme's stability bound "
+                         f"{bound:.4g} s (sqrt(m / k) of the {model.element_length:g} m elements), got "
+                         f"{time_step:g} s. Suggested fix: leave time_step out (it is set automatically) or "
+                         "use fewer elements.")
     dt0 = stable_time_step(model, safety) if time_step is None else float(time_step)
     sub = max(1, int(math.ceil(output_interval / dt0 - 1e-9)))
     dt = output_interval / sub
@@ -309,7 +317,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
             if done < sub:
                 raise ConvergenceError(
                     f"the towline state stopped being finite at t = {t0 + done * dt:.6g} s (time step "
-                    f"{dt:.3g} s, stability bound {stable_time_step(model, 1.0):.3g} s). Suggested fix: a smaller "
+                    f"{dt:.3g} s, stability bound {bound:.3g} s). Suggested fix: a smaller "
                     "time_step.",
                     iterations=steps, residual=float("nan"))
             K.evaluate(R, E, nu, om, int(first[0]), P, tp[-1], tv[-1], bs, xt, zt, inert, tension, slack,

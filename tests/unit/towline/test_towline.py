@@ -77,11 +77,71 @@ def test_cli_runs_a_towline_case(tmp_path):
     assert (tmp_path / "tow_tow.gif").stat().st_size > 0
 
 
-def test_implicit_axial_dampers_give_the_joint_damping_ratio():
+def _taut_line(n, stretch):
+    """An undamped line of n elements in air between two fixed points, stretched by ``stretch`` [m]."""
+    model = TowlineModel(n_elements=n, length=100.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=1e6,
+                         damping_ratio=0.0, bending_damping_ratio=0.0, drag=False, impact=False, gravity=0.0,
+                         held_tow_point_height=10.0)
+    tug = np.array([0.0, 0.0, 10.0])
+    state = initial_state(model, tug, start="straight")  # astern of the tug, along -x
+    # every joint open by stretch / (n + 1): the line in equilibrium at the tension EA stretch / L
+    state.R[:, 0] -= (np.arange(n) + 1) * stretch / (n + 1)
+    state.barge[0] -= stretch
+    state.R[:, 1] += 1e-6 * np.sin(np.arange(n))  # a ripple across the line, to excite every mode
+
+    def still(t):
+        t = np.atleast_1d(t)
+        return np.broadcast_to(tug, (t.size, 3)).copy(), np.zeros((t.size, 3))
+
+    return model, state, still
+
+
+def test_stable_step_is_the_axial_chain_bound():
+    """The step bound is sqrt(m / k): symplectic Euler is stable for omega dt < 2 and the chain's stiffest
+    modes, neighbours beating against each other along the line (omega^2 -> 4 k / m) and every element
+    turning the same way against the pins (12 k_t / m with k_t = k / 3), share omega = 2 sqrt(k / m)."""
+    from seacable.towline import kernel as K
+    from seacable.towline.solver import stable_time_step
+
+    n = 40
+    model, state, still = _taut_line(n, 0.05)  # 5 cm on 100 m: 500 N
+    k, m = (n + 1) * 1e6 / 100.0, 1.725 * 100.0 / n
+    assert stable_time_step(model, 1.0) == pytest.approx(np.sqrt(m / k), rel=1e-12)
+    bound = stable_time_step(model, 1.0)
+    # just below the bound the taut line runs on (2 s, some 1600 steps) at its tension EA e / L (to the
+    # ripple's 1e-6 m: 1e-6)
+    run = simulate(model, still, 2.0, 2.0, state, time_step=2.0 / np.ceil(2.0 / (0.97 * bound)))
+    assert run.tension[-1] == pytest.approx(np.full(n + 1, 1e6 * 0.05 / 100.0), rel=1e-6)
+    # 2 % above it the stiffest mode grows and the run ends (after 74 of 2000 steps; asserted within 200):
+    # the bound is tight (the compiled steps themselves, as simulate refuses such a step)
+    n_steps = 2000
+    tp, tv = still(np.zeros(n_steps + 1))
+    S = state
+    done = K.run_steps(1.02 * bound, tp, tv, S.R.copy(), S.E.copy(), S.nu.copy(), S.om.copy(), np.array([0]),
+                       model.params, S.barge.copy(), model.barge_params, 0.0, 10.0, True, np.zeros((n, 3)),
+                       np.full(n, model.params[K.P_I]), np.zeros(n + 1), np.zeros(n + 1, np.bool_))
+    assert done < 200
+
+
+def test_time_step_above_the_stability_bound_is_refused():
+    model, state, still = _taut_line(10, 0.05)
+    with pytest.raises(sc.InputError, match="stability bound"):
+        simulate(model, still, 1.0, 1.0, state, time_step=0.1)
+
+
+def test_a_state_that_is_not_finite_stops_the_run_with_its_time():
+    model, state, still = _taut_line(10, 0.05)
+    state.nu[3, 1] = np.nan
+    with pytest.raises(sc.ConvergenceError, match="stopped being finite at t = 0 s"):
+        simulate(model, still, 1.0, 1.0, state)
+
+
+def test_implicit_joint_dampers_give_the_joint_damping_ratio():
     """One element in air between two fixed points, moved along the line and let go. The joint behind it
     opens and the one ahead closes, and a closing joint takes no compression: in each half cycle one
     joint (stiffness k, damper c_x = 2 zeta sqrt(k m)) holds the mass m, a damped oscillator with
-    omega = sqrt(k / m) and ratio zeta. The dampers act implicitly, so the step does not matter."""
+    omega = sqrt(k / m) and ratio zeta. The damper's term in the element's own velocity is implicit (backward
+    Euler), exact here as the other end of the joint is fixed, so the step does not matter."""
     zeta, ea, length, mass = 0.05, 1e6, 10.0, 1.725
     model = TowlineModel(n_elements=1, length=length, diameter=0.05, mass_per_length=mass, axial_stiffness=ea,
                          damping_ratio=zeta, bending_damping_ratio=0.0, gravity=0.0, drag=False, impact=False,
