@@ -12,8 +12,8 @@ from .solver import TowlineModel, TowlineRun, initial_state, simulate
 __all__ = ["REFERENCES", "case_model", "run_result", "run_towline_dynamic"]
 
 REFERENCES = (
-    "Paper 003: Yoon, H.-K., Lee, H.-S., Park, J.-K. & Kim, Y.-K. (2011). Modelling and simulation of towline "
-    "dynamics by multibody element theory. KINPR spring conference (seeds/003).",
+    ("Paper 003: Yoon, H.-K., Lee, H.-S., Park, J.-K. & Kim, Y.-K. (2011). Modelling and simulation of towline "
+     "dynamics by multibody element theory. KINPR spring conference (seeds/003)."),
     "Fossen, T. I. (2011). Handbook of Marine Craft Hydrodynamics and Motion Control. Wiley (barge model).",
     "Newman, J. N. (1977). Marine Hydrodynamics. MIT Press, section 4.13 (Kirchhoff's equations, Munk moment).",
 )

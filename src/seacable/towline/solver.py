@@ -276,9 +276,9 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
                          f"{time_step:g} s. Suggested fix: leave time_step out (it is set automatically) or "
                          "use fewer elements.")
     dt0 = stable_time_step(model, safety) if time_step is None else float(time_step)
-    sub = max(1, int(math.ceil(output_interval / dt0 - 1e-9)))
+    sub = max(1, math.ceil(output_interval / dt0 - 1e-9))
     dt = output_interval / sub
-    n_out = int(round(duration / output_interval))
+    n_out = round(duration / output_interval)
     n = model.n_elements
     S = state
     R, E, nu, om = S.R.copy(), S.E.copy(), S.nu.copy(), S.om.copy()
@@ -307,10 +307,14 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     interrupted = False
     start = _time.perf_counter()
     try:
+        block = max(1, 2**16 // sub)  # output intervals whose tug track is sampled in one call
         for k in range(n_out):
             t0 = k * output_interval
-            tt = t0 + dt * np.arange(sub + 1)
-            tp, tv = tug(tt)
+            if k % block == 0:
+                times_b = t0 + dt * np.arange(min(block, n_out - k) * sub + 1)
+                tug_p, tug_v = tug(times_b)
+            i = (k % block) * sub
+            tt, tp, tv = times_b[i:i + sub + 1], tug_p[i:i + sub + 1], tug_v[i:i + sub + 1]
             done = K.run_steps(dt, tp, tv, R, E, nu, om, first, P, bs, BP, xt, zt, held, ma_prev, inert,
                                tension, slack)
             steps += done
