@@ -212,7 +212,7 @@ def _joint(P, gx, gy, gz, dx, dy, dz, ax, ay, az, al):
     of length ``al`` before normalising).
 
     Returns ``(f, h, a, c_axial, c_across, tension)``, 12 floats: ``h`` the gradient of the spring's
-    energy with respect to the unnormalised axis (see ``_forces``), the dampers' coefficients along
+    energy with respect to the unnormalised axis (see ``_step``), the dampers' coefficients along
     and across the axis, and the tension along it (0 when slack).
 
     Along the axis the spring pulls ``k g_a`` in tension (``g_a = g . a > 0``) with the damper
@@ -315,7 +315,7 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
         fx += bx
         fy += by
         fz += bzz
-        mq += h3 + sgn * half * -bzz
+        mq += h3 - sgn * half * bzz
         mr += sgn * half * by - h2
         cd = jt[9] - jt[10]
         du += jt[10] + cd * a1 * a1
