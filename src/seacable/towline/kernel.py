@@ -179,17 +179,23 @@ def _rotate(E, q, r, dt):
         E[i, 2] = x * r02 + y * r12 + z * r22
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
-def joint_points(R, E, nu, om, half, k, pa, va, pb, vb):
-    """Front (a) and aft (b) connection points of element k and their velocities."""
-    for i in range(3):
-        e1, e2, e3 = E[k, i, 0], E[k, i, 1], E[k, i, 2]
-        V = e1 * nu[k, 0] + e2 * nu[k, 1] + e3 * nu[k, 2]
-        wxe1 = -om[k, 0] * e3 + om[k, 1] * e2  # omega x e1
-        pa[i] = R[k, i] - half * e1
-        pb[i] = R[k, i] + half * e1
-        va[i] = V - half * wxe1
-        vb[i] = V + half * wxe1
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def joint_points(R, E, nu, om, half, k):
+    """Front (a) and aft (b) connection points of element k and their velocities, as
+    ``(a_x, a_y, a_z, va_x, va_y, va_z, b_x, b_y, b_z, vb_x, vb_y, vb_z)``."""
+    u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
+    e1x, e1y, e1z = E[k, 0, 0], E[k, 1, 0], E[k, 2, 0]
+    Vx = e1x * u + E[k, 0, 1] * v + E[k, 0, 2] * w
+    Vy = e1y * u + E[k, 1, 1] * v + E[k, 1, 2] * w
+    Vz = e1z * u + E[k, 2, 1] * v + E[k, 2, 2] * w
+    # omega x e1 = -q e3 + r e2
+    Ox = -q * E[k, 0, 2] + r * E[k, 0, 1]
+    Oy = -q * E[k, 1, 2] + r * E[k, 1, 1]
+    Oz = -q * E[k, 2, 2] + r * E[k, 2, 1]
+    return (R[k, 0] - half * e1x, R[k, 1] - half * e1y, R[k, 2] - half * e1z,
+            Vx - half * Ox, Vy - half * Oy, Vz - half * Oz,
+            R[k, 0] + half * e1x, R[k, 1] + half * e1y, R[k, 2] + half * e1z,
+            Vx + half * Ox, Vy + half * Oy, Vz + half * Oz)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -387,22 +393,10 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
             qx, qy, qz, wx, wy, wz = qb[0], qb[1], qb[2], wb[0], wb[1], wb[2]
             ax_, ay_, az_, bvx, bvy, bvz = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
         else:
-            e1x, e1y, e1z = E[j, 0, 0], E[j, 1, 0], E[j, 2, 0]
-            uu, vv, ww, qq, rr = nu[j, 0], nu[j, 1], nu[j, 2], om[j, 0], om[j, 1]
-            Vx = e1x * uu + E[j, 0, 1] * vv + E[j, 0, 2] * ww
-            Vy = e1y * uu + E[j, 1, 1] * vv + E[j, 1, 2] * ww
-            Vz = e1z * uu + E[j, 2, 1] * vv + E[j, 2, 2] * ww
-            # omega x e1 = -q e3 + r e2
-            Ox = -qq * E[j, 0, 2] + rr * E[j, 0, 1]
-            Oy = -qq * E[j, 1, 2] + rr * E[j, 1, 1]
-            Oz = -qq * E[j, 2, 2] + rr * E[j, 2, 1]
-            qx, qy, qz = R[j, 0] - half * e1x, R[j, 1] - half * e1y, R[j, 2] - half * e1z
-            wx, wy, wz = Vx - half * Ox, Vy - half * Oy, Vz - half * Oz
-            ax_, ay_, az_ = R[j, 0] + half * e1x, R[j, 1] + half * e1y, R[j, 2] + half * e1z
-            bvx, bvy, bvz = Vx + half * Ox, Vy + half * Oy, Vz + half * Oz
-            sx += e1x
-            sy += e1y
-            sz += e1z
+            qx, qy, qz, wx, wy, wz, ax_, ay_, az_, bvx, bvy, bvz = joint_points(R, E, nu, om, half, j)
+            sx += E[j, 0, 0]
+            sy += E[j, 1, 0]
+            sz += E[j, 2, 0]
         gx, gy, gz = qx - px, qy - py, qz - pz
         if j == first and first > 0:
             # paying out from the bitt: the brake tension along the line, no spring
@@ -456,11 +450,13 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
     """Element k leaves the bitt: straight from the tug's tow point to its aft neighbour's front."""
     n = R.shape[0]
     half = 0.5 * P[P_L]
-    pa, va, pb, vb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    pb, vb = np.zeros(3), np.zeros(3)
     if k + 1 == n:
         barge_point(bs, bxt, bzt, pb, vb)
     else:
-        joint_points(R, E, nu, om, half, k + 1, pb, vb, pa, va)
+        front = joint_points(R, E, nu, om, half, k + 1)
+        for i in range(3):
+            pb[i], vb[i] = front[i], front[3 + i]
     e1 = np.zeros(3)
     for i in range(3):
         e1[i] = pb[i] - tug_p[i]
@@ -499,7 +495,7 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     n = R.shape[0]
     ma_prev, ma_now = ma, np.zeros((n, 3))  # swapped after each step
     work = np.zeros((2, 3))
-    qb, wb, sa, sb = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    qb, wb = np.zeros(3), np.zeros(3)
     half = 0.5 * P[P_L]
     nstep = tug_p.shape[0] - 1
     for step in range(nstep):
@@ -526,7 +522,9 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
             if first == n:
                 barge_point(bs, bxt, bzt, qb, wb)
             else:
-                joint_points(R, E, nu, om, half, first, qb, wb, sa, sb)
+                front = joint_points(R, E, nu, om, half, first)
+                for i in range(3):
+                    qb[i] = front[i]
             d2 = 0.0
             for i in range(3):
                 d2 += (qb[i] - tug_p[step + 1, i]) ** 2

@@ -103,15 +103,16 @@ def test_stable_step_is_the_axial_chain_bound():
     from seacable.towline import kernel as K
     from seacable.towline.solver import stable_time_step
 
-    n = 40
-    model, state, still = _taut_line(n, 0.05)  # 5 cm on 100 m: 500 N
-    k, m = (n + 1) * 1e6 / 100.0, 1.725 * 100.0 / n
+    n, stretch = 40, 0.05
+    model, state, still = _taut_line(n, stretch)  # 5 cm on 100 m: 500 N
+    ea, length = model.axial_stiffness, model.length
+    k, m = (n + 1) * ea / length, model.mass_per_length * length / n
     assert stable_time_step(model, 1.0) == pytest.approx(np.sqrt(m / k), rel=1e-12)
     bound = stable_time_step(model, 1.0)
     # just below the bound the taut line runs on (2 s, some 1600 steps) at its tension EA e / L (to the
     # ripple's 1e-6 m: 1e-6)
     run = simulate(model, still, 2.0, 2.0, state, time_step=2.0 / np.ceil(2.0 / (0.97 * bound)))
-    assert run.tension[-1] == pytest.approx(np.full(n + 1, 1e6 * 0.05 / 100.0), rel=1e-6)
+    assert run.tension[-1] == pytest.approx(np.full(n + 1, ea * stretch / length), rel=1e-6)
     # 2 % above it the stiffest mode grows and the run ends (after 74 of 2000 steps; asserted within 200):
     # the bound is tight (the compiled steps themselves, as simulate refuses such a step)
     n_steps = 2000
