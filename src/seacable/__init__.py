@@ -39,6 +39,7 @@ from .mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import run
+from .sweeps import Range, Sweep, load_sweep, sweep
 
 __all__ = [
     "__version__",
@@ -79,6 +80,11 @@ __all__ = [
     "run",
     "read_netcdf",
     "write_netcdf",
+    # sweeps
+    "Sweep",
+    "Range",
+    "load_sweep",
+    "sweep",
     # physics
     "statics",
     "modal",

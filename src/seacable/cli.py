@@ -1,7 +1,8 @@
-"""The ``seacable`` command line: run, validate, plot, animate, schema.
+"""The ``seacable`` command line: run, sweep, validate, plot, animate, schema.
 
 User errors (bad files, bad values, no solution, no convergence) print one
-clear message and exit with status 2; an interrupted run exits with 130.
+clear message and exit with status 2; an interrupted run exits with 130. A sweep
+in which some cases failed exits with 1 (the others ran; the summary says why).
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from .errors import SeacableError, SeacableWarning
 
 __all__ = ["main"]
 
+EXIT_CASES_FAILED = 1
 EXIT_USER_ERROR = 2
 EXIT_INTERRUPTED = 130
 
@@ -99,6 +101,88 @@ def _cmd_run(args) -> int:
     return 0
 
 
+class _SweepProgress:
+    """Progress line of a sweep on stderr (at most once a second), and each failure as it comes."""
+
+    def __init__(self, every: float = 1.0):
+        self.every = every
+        self.last = None
+
+    def __call__(self, p) -> None:
+        import math
+        import time
+
+        r = p.record
+        if r is not None and r["status"] == "failed":
+            first = r["error"].splitlines()[0] if r["error"] else "failed"
+            print(f"\nseacable: case {r['index']} ({r['name']}) failed: {first}", file=sys.stderr)
+        if r is not None:
+            for w in r["warnings"]:
+                print(f"\nseacable: case {r['index']} ({r['name']}): warning: {w}", file=sys.stderr)
+        now = time.monotonic()
+        done = p.done == p.total
+        if self.last is not None and not done and now - self.last < self.every:
+            return
+        self.last = now
+        left = p.remaining_time
+        eta = f", about {left:.0f} s left" if math.isfinite(left) and not done else ""
+        extra = "".join([f", {p.failed} failed" if p.failed else "",
+                         f", {p.reused} from an earlier run" if p.reused else ""])
+        print(f"seacable: sweep {p.done} of {p.total} cases{extra}; {p.elapsed:.0f} s{eta}",
+              file=sys.stderr, end="\n" if done else "\r", flush=True)
+
+
+def _print_summary(summary) -> None:
+    import json
+
+    import numpy as np
+
+    from .extremes import KEY_FIGURES
+    from .sweeps.engine import summary_table
+
+    table = summary_table(summary)
+    params = json.loads(summary.attrs["parameters"])
+    figures = [c for c in ("top_tension_max", "top_tension_min", "tension_max", "tension_min",
+                           *KEY_FIGURES.get(summary.attrs.get("case_analysis"), ())) if c in table]
+    table = table[["name", *params, "status", *figures]]
+
+    def head(name):
+        units = summary[name].attrs.get("units", "")
+        return f"{name} [{units}]" if units and units != "1" else name
+
+    table.columns = [head(c) for c in table.columns]
+    with np.printoptions(linewidth=200):
+        print(table.to_string(float_format=lambda v: f"{v:.6g}"))
+
+
+def _cmd_sweep(args) -> int:
+    from .results import write_netcdf  # noqa: F401  (summary written by sweep)
+    from .sweeps import load_sweep, sweep
+
+    spec = load_sweep(args.sweep)
+    outdir = Path(args.output) if args.output else Path(spec.name)
+    summary = sweep(spec, outdir, scheduler=args.scheduler, workers=args.workers,
+                    retry_failed=args.retry_failed, progress=_SweepProgress())
+    _print_summary(summary)
+    print(f"wrote {outdir / 'summary.nc'}, {outdir / 'summary.csv'} and {summary.attrs['done']} case result(s) "
+          f"in {outdir / 'cases'}")
+    if not args.no_plots:
+        from .plot import plot_result
+
+        for png in plot_result(summary, outdir, prefix="summary"):
+            print(f"wrote {png}")
+    if summary.attrs.get("interrupted"):
+        print(f"seacable: interrupted; {summary.attrs['done'] + summary.attrs['failed']} of "
+              f"{summary.attrs['cases']} cases are in {outdir}; run the same command again to finish the others",
+              file=sys.stderr)
+        return EXIT_INTERRUPTED
+    if summary.attrs["failed"]:
+        print(f"seacable: {summary.attrs['failed']} of {summary.attrs['cases']} cases failed; their messages "
+              f"are in the summary ('error'). Run again with --retry-failed once fixed.", file=sys.stderr)
+        return EXIT_CASES_FAILED
+    return 0
+
+
 def _cmd_validate(args) -> int:
     from .io import load_case
 
@@ -165,6 +249,18 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
     p.set_defaults(func=_cmd_run)
+
+    p = sub.add_parser("sweep", help="run a sweep: a base case over a grid or a table of parameters, on Dask")
+    p.add_argument("sweep", help="sweep file (YAML): 'base' (a case file) and 'grid' or 'table'")
+    p.add_argument("-o", "--output", help="output folder: per-case results and the summary; default the sweep's "
+                                          "name. Cases already there are not run again")
+    p.add_argument("--scheduler", help="address of an existing Dask scheduler (tcp://host:8786), whose workers "
+                                       "have seacable; default a local cluster on this machine's cores; "
+                                       "'synchronous' runs the cases one by one in this process")
+    p.add_argument("--workers", type=int, help="workers of the local cluster (default: one per core)")
+    p.add_argument("--retry-failed", action="store_true", help="run again the cases that failed before")
+    p.add_argument("--no-plots", action="store_true", help="write the results only")
+    p.set_defaults(func=_cmd_sweep)
 
     p = sub.add_parser("validate", help="check case files without running them")
     p.add_argument("cases", nargs="+", help="YAML case files")

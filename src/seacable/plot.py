@@ -348,6 +348,10 @@ from .plot_towline import TOWLINE_FIGURES  # noqa: E402  (same: it imports plot 
 
 FIGURES.update(TOWLINE_FIGURES)
 
+from .plot_sweep import SWEEP_FIGURES  # noqa: E402  (same)
+
+FIGURES.update(SWEEP_FIGURES)
+
 
 def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     """Write the standard figures of a result as PNG files.

@@ -16,7 +16,7 @@ import yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 
-__all__ = ["load_case", "parse_case", "dump_case", "case_schema"]
+__all__ = ["load_case", "load_case_data", "parse_case", "dump_case", "case_schema", "resolve_files"]
 
 
 def parse_case(data: Any, *, source: str = "case") -> Case:
@@ -37,18 +37,16 @@ def parse_case(data: Any, *, source: str = "case") -> Case:
         raise CaseFileError(f"{source}: {err}") from None
 
 
-def load_case(path: str | Path) -> Case:
-    """Read and validate a YAML case file.
+def load_case_data(path: str | Path) -> dict:
+    """Read a YAML case file into plain data, not yet validated.
 
-    Parameters
-    ----------
-    path
-        The case file.
+    Relative ``file`` entries (vessel, tug, motion and bathymetry tables) are made relative to
+    the file's folder.
 
-    Returns
-    -------
-    Case
-        The validated, immutable case.
+    Raises
+    ------
+    CaseFileError
+        If the file cannot be read or is not YAML.
     """
     path = Path(path)
     try:
@@ -66,11 +64,30 @@ def load_case(path: str | Path) -> Case:
         problem = getattr(err, "problem", None) or str(err)
         raise CaseFileError(f"{path}: not valid YAML{where}: {problem}. Suggested fix: check the "
                             "indentation and the ':' after each key.") from None
-    _resolve_files(data, path.parent)
-    return parse_case(data, source=str(path))
+    if not isinstance(data, dict):
+        raise CaseFileError(f"{path}: a case file must be a mapping of keys to values at the top level, "
+                            f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")
+    resolve_files(data, path.parent)
+    return data
 
 
-def _resolve_files(data, folder: Path) -> None:
+def load_case(path: str | Path) -> Case:
+    """Read and validate a YAML case file.
+
+    Parameters
+    ----------
+    path
+        The case file.
+
+    Returns
+    -------
+    Case
+        The validated, immutable case.
+    """
+    return parse_case(load_case_data(path), source=str(path))
+
+
+def resolve_files(data, folder: Path) -> None:
     """Make the relative ``file`` of a vessel, tug, motion or bathymetry table relative to the case file's folder."""
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):

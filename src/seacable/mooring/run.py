@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..extremes import snap_loads
 from ..results import make_dataset, var
 from ..simulate import line_arrays
 from .motion import bind
@@ -20,7 +21,6 @@ __all__ = [
     "run_mooring_dynamic",
     "run_mooring_pushover",
     "run_mooring_static",
-    "snap_loads",
     "water_of",
 ]
 
@@ -155,26 +155,6 @@ def run_mooring_pushover(case: Case):
     coords = {**_coords(model.network), "offset": var("offset", offsets, "m", "horizontal fairlead offset")}
     return make_dataset(data, coords, analysis="mooring_pushover", case=case, references=REFERENCES,
                         settings=_settings(model))
-
-
-def snap_loads(time, tension, threshold: float = 0.0, window: float = 2.0):
-    """Snap events: an element that was slack (tension <= ``threshold``) pulls taut again.
-
-    Returns arrays (time of the peak, element, peak tension) of the largest tension within ``window``
-    seconds after each slack-to-taut transition. [s], [-], [N]
-    """
-    time = np.asarray(time)
-    tension = np.asarray(tension)
-    slack = tension <= threshold
-    t_out, e_out, p_out = [], [], []
-    rises = np.argwhere(slack[:-1] & ~slack[1:])
-    for k, e in rises:
-        stop = np.searchsorted(time, time[k + 1] + window, side="right")
-        j = k + 1 + int(np.argmax(tension[k + 1:stop, e]))
-        t_out.append(time[j])
-        e_out.append(e)
-        p_out.append(tension[j, e])
-    return np.array(t_out, float), np.array(e_out, int), np.array(p_out, float)
 
 
 def run_events(run: MooringRun) -> dict:

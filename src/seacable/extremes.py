@@ -1,0 +1,155 @@
+"""Design figures of one result: tension extremes, snap loads and each model's own figures.
+
+:func:`case_extremes` reduces a result Dataset of any analysis to scalars, the row a sweep's
+summary keeps per case: maximum and minimum top tension, maximum and minimum tension anywhere
+(a minimum of 0 or less is slack), snap loads, every scalar of the result (fairlead tension,
+touchdown, layback, ...) and the model's own figures (laying: touchdown, bottom tension, layback,
+entry angle; towline: barge tension; mooring: anchor tension). Values at the end of a
+time-domain run are means over its last tenth, the steady state of a case that settles.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from .results import var
+
+__all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads"]
+
+#: The variable holding the tension at the top end (fairlead, ship, tow point, tug), by analysis.
+TOP_TENSION = {
+    "static": "tension_fairlead",
+    "pushover": "tension_fairlead",
+    "towed_steady": "top_tension",
+    "towed_dynamic": "top_tension",
+    "laying_theory": "top_tension",
+    "laying_dynamic": "top_tension",
+    "mooring_static": "fairlead_tension",
+    "mooring_pushover": "fairlead_tension",
+    "mooring_dynamic": "fairlead_tension",
+    "towline_dynamic": "tension_tug",
+}
+
+#: Time series of each analysis reduced to their extremes (max and min) and to their end value.
+_SERIES = {
+    "laying_dynamic": {"extremes": ("bottom_tension",),
+                       "end": ("entry_angle", "touchdown_x", "bottom_tension", "suspended_length", "slack")},
+    "towed_dynamic": {"extremes": ("lower_end_depth",), "end": ("lower_end_depth",)},
+    "towline_dynamic": {"extremes": ("tension_barge",), "end": ("tension_barge", "barge_speed")},
+    "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length"), "end": ()},
+}
+
+#: The model's own figures a sweep shows first (in its printed table and its plot), by analysis.
+KEY_FIGURES = {
+    "laying_dynamic": ("entry_angle_end", "layback_end", "bottom_tension_max"),
+    "towed_dynamic": ("lower_end_depth_max", "lower_end_depth_min"),
+    "towline_dynamic": ("tension_barge_max", "tension_barge_min"),
+    "mooring_dynamic": ("anchor_tension_max", "snap_load_max"),
+    "static": ("touchdown_x", "grounded_length"),
+    "towed_steady": ("layback", "lower_end_depth"),
+    "modal": ("frequency_min",),
+}
+
+
+def snap_loads(time, tension, threshold: float = 0.0, window: float = 2.0):
+    """Snap events: an element that was slack (tension <= ``threshold``) pulls taut again.
+
+    Parameters
+    ----------
+    time
+        Output times, (n_time,). [s]
+    tension
+        Element tensions, (n_time, n_element); NaN where an element does not exist. [N]
+    threshold
+        Tension at or below which an element counts as slack. [N]
+    window
+        Time after the element pulls taut within which its peak is taken. [s]
+
+    Returns
+    -------
+    time, element, peak : numpy.ndarray
+        Time of each peak, its element and the peak tension (the largest within ``window``
+        after each slack-to-taut transition). [s], [-], [N]
+    """
+    time = np.asarray(time)
+    tension = np.asarray(tension)
+    slack = tension <= threshold
+    taut = tension > threshold   # NaN (no element) is neither
+    t_out, e_out, p_out = [], [], []
+    rises = np.argwhere(slack[:-1] & taut[1:])
+    for k, e in rises:
+        stop = np.searchsorted(time, time[k + 1] + window, side="right")
+        j = k + 1 + int(np.nanargmax(tension[k + 1:stop, e]))
+        t_out.append(time[j])
+        e_out.append(e)
+        p_out.append(tension[j, e])
+    return np.array(t_out, float), np.array(e_out, int), np.array(p_out, float)
+
+
+def _end_mean(da: xr.DataArray) -> float:
+    """Mean over the last tenth of the output times (at least the last one)."""
+    n = max(1, da.sizes["time"] // 10)
+    return float(da.isel(time=slice(-n, None)).mean())
+
+
+def _scalar(value: float, da: xr.DataArray, what: str) -> xr.Variable:
+    return var((), float(value), da.attrs.get("units", "1"), f"{what} {da.attrs.get('long_name', da.name)}")
+
+
+def case_extremes(ds: xr.Dataset) -> dict[str, xr.Variable]:
+    """The design figures of one result, each a scalar variable with units and long name.
+
+    Parameters
+    ----------
+    ds
+        A result of :func:`seacable.run` (any analysis).
+
+    Returns
+    -------
+    dict of str to xarray.Variable
+        ``top_tension_max``, ``top_tension_min``, ``tension_max`` and ``tension_min`` (tension
+        anywhere, element tensions where the model has them), and for time-domain results
+        ``snap_count`` and ``snap_load_max`` (the largest peak within 2 s after an element pulled
+        taut from slack; 0 when none did), then every scalar variable of the result and the
+        model's own figures: ``NAME_max`` and ``NAME_min`` of its key time series and ``NAME_end``,
+        their mean over the last tenth of the run. Laying adds ``layback_end``, from the water
+        entry back to the touchdown.
+    """
+    analysis = ds.attrs.get("analysis")
+    out: dict[str, xr.Variable] = {}
+    top = TOP_TENSION.get(analysis)
+    if top in ds:
+        out["top_tension_max"] = _scalar(ds[top].max(), ds[top], "maximum of")
+        out["top_tension_min"] = _scalar(ds[top].min(), ds[top], "minimum of")
+    field = "segment_tension" if "segment_tension" in ds else "tension"
+    if field in ds and ds[field].size:
+        tension = ds[field]
+        ends = [float(ds[top].max()), float(ds[top].min())] if top in ds else []
+        out["tension_max"] = var((), max([float(tension.max()), *ends]), "N", "maximum tension anywhere")
+        out["tension_min"] = var((), min([float(tension.min()), *ends]), "N",
+                                 "minimum tension anywhere (0 or less: slack)")
+        if "time" in tension.dims and tension.ndim == 2:
+            values = tension.transpose("time", ...).values
+            _, _, peaks = snap_loads(ds["time"].values, values)
+            out["snap_count"] = var((), peaks.size, "1", "snap events (elements pulling taut from slack)")
+            out["snap_load_max"] = var((), float(peaks.max()) if peaks.size else 0.0, "N",
+                                       "largest snap load (0: no snap event)")
+    for name, da in ds.data_vars.items():
+        if da.ndim == 0 and da.dtype.kind in "fiu" and name not in out:
+            out[name] = var((), da.values, da.attrs.get("units", "1"), da.attrs.get("long_name", name))
+    series = _SERIES.get(analysis, {})
+    for name in series.get("extremes", ()):
+        if name in ds:
+            out[f"{name}_max"] = _scalar(ds[name].max(), ds[name], "maximum of")
+            out[f"{name}_min"] = _scalar(ds[name].min(), ds[name], "minimum of")
+    for name in series.get("end", ()):
+        if name in ds:
+            out[f"{name}_end"] = _scalar(_end_mean(ds[name]), ds[name], "end of run:")
+    if analysis == "laying_dynamic":
+        layback = ds["ship_x"] - ds["touchdown_x"]
+        layback.attrs.update(units="m", long_name="layback (water entry to touchdown)")
+        out["layback_end"] = _scalar(_end_mean(layback), layback, "end of run:")
+    if analysis == "modal" and "frequency" in ds:
+        out["frequency_min"] = _scalar(ds["frequency"].min(), ds["frequency"], "lowest")
+    return out

@@ -1,0 +1,423 @@
+"""Running a sweep on Dask: one task per case, results written as they finish, resumable.
+
+Each case is one ``dask.distributed`` task. By default seacable starts a local cluster with one
+single-threaded worker process per core and stops it at the end; ``scheduler="tcp://host:8786"``
+sends the same sweep to an existing scheduler (its workers need seacable installed), and
+``scheduler="synchronous"`` runs the cases one after another in this process, without Dask.
+
+The output folder holds ``cases/NNNN.nc`` (each case's result) and ``cases/NNNN.json`` (its
+record: status, error message, warnings, run time and design figures), written as each case
+finishes, and at the end ``summary.nc`` and ``summary.csv``. A record is written after its result
+and both are renamed into place, so a killed sweep leaves whole files only; running the sweep
+again skips every case whose record matches the case (a hash of its full YAML), and so completes
+only the missing ones. Cases that failed are skipped too unless ``retry_failed``; a case whose
+worker died is always run again.
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+import logging
+import math
+import os
+import re
+import time
+import traceback
+import warnings
+from contextlib import ExitStack
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+import xarray as xr
+
+from .._version import __version__
+from ..errors import InputError, SeacableError, SeacableWarning
+from ..extremes import case_extremes
+from ..line import LineType, Segment
+from ..results import make_dataset, var, write_netcdf
+from .spec import Sweep, SweepCase, load_sweep, parse_path
+
+__all__ = ["SweepProgress", "run_case", "sweep", "summary_dataset", "work_estimate"]
+
+#: ``scheduler`` value that runs the cases in this process, one after another, without Dask.
+SYNCHRONOUS = "synchronous"
+
+
+@dataclass(frozen=True)
+class SweepProgress:
+    """State of a running sweep, passed to the ``progress`` callback after each case."""
+
+    done: int          #: cases finished, in this run and earlier ones (failed included)
+    total: int         #: cases in the sweep
+    failed: int        #: cases that failed
+    reused: int        #: cases taken from an earlier run
+    ran: int           #: cases run in this run so far
+    elapsed: float     #: wall time of this run so far [s]
+    record: dict | None  #: the record of the case that just finished (None for the first call)
+
+    @property
+    def remaining_time(self) -> float:
+        """Rough time to the end from the pace of this run so far. [s]"""
+        return math.nan if self.ran <= 0 else self.elapsed / self.ran * (self.total - self.done)
+
+
+def run_case(case) -> dict:
+    """Run one case and reduce it: the task each worker runs.
+
+    Returns
+    -------
+    dict
+        ``status`` ("done" or "failed"), ``error`` (message, "" when done), ``warnings`` (the
+        SeacableWarnings it raised), ``wall_time`` [s], ``extremes`` ({name: (value, units,
+        long_name)}) and ``result`` (the Dataset; None when it failed).
+    """
+    from ..simulate import run
+
+    t0 = time.perf_counter()
+    out = {"status": "failed", "error": "", "warnings": [], "extremes": {}, "result": None}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SeacableWarning)
+        try:
+            ds = run(case)
+            extremes = case_extremes(ds)
+        except SeacableError as err:
+            out["error"] = f"{type(err).__name__}: {err}"
+        except Exception as err:  # a bug: keep it with the case, run the others
+            out["error"] = (f"internal error, please report it: {type(err).__name__}: {err}\n"
+                            + traceback.format_exc())
+        else:
+            out.update(status="done", result=ds, extremes={
+                k: (float(v.values), v.attrs["units"], v.attrs["long_name"]) for k, v in extremes.items()})
+    out["warnings"] = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, SeacableWarning)))
+    out["wall_time"] = time.perf_counter() - t0
+    return out
+
+
+def work_estimate(case) -> float:
+    """Rough work of a case (time steps x nodes), to start the longest cases first.
+
+    Only an ordering: with a few cases per worker, starting the longest first keeps one long case
+    from running alone at the end.
+    """
+    a = case.analysis
+    kind = a.type
+    try:
+        if kind == "laying_dynamic":
+            from ..statics.laying import laying_angle
+
+            env, lt = case.environment, case.line.segments[0].line_type
+            speed = max([a.ship.speed or 0.0, *(a.ship.speeds or ())]) or 1.0
+            alpha = float(laying_angle(speed, lt.submerged_weight(env.water_density, env.gravity), lt.diameter,
+                                       lt.drag_normal, env.water_density))
+            nodes = (env.depth or 100.0) / math.sin(alpha) / a.segment_length
+            return a.duration * a.steps_per_segment * speed / a.segment_length * nodes
+        if kind == "towed_dynamic":
+            return a.duration / a.time_step * a.n_nodes
+        if kind == "mooring_dynamic":
+            return a.duration / a.time_step * (a.n_elements or 20)
+        if kind == "towline_dynamic":
+            return a.duration * a.n_elements ** 2
+    except Exception:  # an estimate only: never let it stop a sweep
+        return 0.0
+    return 1.0
+
+
+def _seacable_version() -> str:
+    import seacable
+
+    return seacable.__version__
+
+
+def _connect(stack: ExitStack, scheduler, workers: int | None):
+    """A Dask client: the user's, one to a scheduler address, or one to a local cluster started here."""
+    from distributed import Client, LocalCluster
+
+    if isinstance(scheduler, Client):
+        return scheduler
+    if scheduler is None:
+        n = workers or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)
+        cluster = stack.enter_context(LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                                   dashboard_address=None, silence_logs=logging.ERROR))
+        return stack.enter_context(Client(cluster))
+    try:
+        client = stack.enter_context(Client(scheduler, timeout="10s"))
+    except (OSError, TimeoutError, ValueError) as err:
+        raise InputError(f"cannot reach the Dask scheduler at '{scheduler}': {err}. Suggested fix: check the "
+                         "address (e.g. tcp://host:8786) and that 'dask scheduler' runs there, or leave out "
+                         "--scheduler to run on this machine.") from None
+    try:
+        versions = client.run(_seacable_version)
+    except ImportError:
+        raise InputError(f"the workers of the Dask scheduler at '{scheduler}' cannot import seacable. "
+                         f"Suggested fix: install seacable {__version__} where the workers run.") from None
+    if not versions:
+        raise InputError(f"the Dask scheduler at '{scheduler}' has no workers. Suggested fix: start some with "
+                         f"'dask worker {scheduler}'.")
+    other = sorted({v for v in versions.values() if v != __version__})
+    if other:
+        warnings.warn(f"workers at '{scheduler}' run seacable {', '.join(other)}, this client "
+                      f"{__version__}; results may differ from a local run.", SeacableWarning, stacklevel=3)
+    return client
+
+
+class _Store:
+    """The output folder: per-case results and records, written whole (renamed into place)."""
+
+    def __init__(self, outdir: Path):
+        self.root = Path(outdir)
+        self.cases = self.root / "cases"
+        try:
+            self.cases.mkdir(parents=True, exist_ok=True)
+        except OSError as err:
+            raise InputError(f"cannot create the output folder '{self.cases}': {err}. Suggested fix: give -o "
+                             "a folder you can write to.") from None
+        for stale in self.cases.glob(".*.partial*"):
+            stale.unlink(missing_ok=True)
+
+    def result_path(self, sc: SweepCase) -> Path:
+        return self.cases / f"{sc.stem}.nc"
+
+    def record_path(self, sc: SweepCase) -> Path:
+        return self.cases / f"{sc.stem}.json"
+
+    def earlier(self, sc: SweepCase, retry_failed: bool) -> dict | None:
+        """The record of an earlier run of this very case, if it is to be kept."""
+        try:
+            record = json.loads(self.record_path(sc).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            return None
+        if record.get("key") != sc.key:
+            return None
+        if record.get("status") == "done" and self.result_path(sc).exists():
+            return record
+        if record.get("status") == "failed" and not retry_failed and not record.get("retry"):
+            return record
+        return None
+
+    def write(self, sc: SweepCase, outcome: dict, sweep_name: str) -> dict:
+        record = {"index": sc.index, "name": sc.name, "key": sc.key, "values": list(sc.values),
+                  "status": outcome["status"], "error": outcome["error"], "warnings": outcome["warnings"],
+                  "wall_time": outcome["wall_time"], "extremes": outcome["extremes"],
+                  "retry": bool(outcome.get("retry", False)), "seacable_version": __version__,
+                  "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
+        ds = outcome.get("result")
+        if ds is not None:
+            ds.attrs.update(sweep=sweep_name, sweep_case=sc.index, sweep_key=sc.key)
+            part = self.cases / f".{sc.stem}.partial.nc"
+            write_netcdf(ds, part)
+            os.replace(part, self.result_path(sc))
+        part = self.cases / f".{sc.stem}.partial.json"
+        part.write_text(json.dumps(record, indent=1, default=str), encoding="utf-8")
+        os.replace(part, self.record_path(sc))
+        return record
+
+
+def _invalid(sc: SweepCase) -> dict:
+    return {"status": "failed", "error": f"InputError: {sc.error}", "warnings": [], "wall_time": 0.0,
+            "extremes": {}}
+
+
+def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, workers: int | None = None,
+          retry_failed: bool = False, progress: Callable[[SweepProgress], None] | None = None,
+          write_summary: bool = True) -> xr.Dataset:
+    """Run every case of a sweep and return its summary.
+
+    Parameters
+    ----------
+    spec
+        A :class:`~seacable.sweeps.Sweep`, or a sweep file (YAML).
+    outdir
+        Output folder: ``cases/NNNN.nc`` and ``cases/NNNN.json`` per case, ``summary.nc`` and
+        ``summary.csv``. Cases already there (same case, same result) are not run again.
+    scheduler
+        None (default): a local Dask cluster on this machine's cores, started and stopped here.
+        An address (``"tcp://host:8786"``) or a ``distributed.Client``: an existing cluster, whose
+        workers need seacable. ``"synchronous"``: one case after another in this process.
+    workers
+        Workers of the local cluster; default one per core.
+    retry_failed
+        Run again the cases that failed in an earlier run (by default their record is kept).
+    progress
+        Called with a :class:`SweepProgress` once at the start and after each case.
+    write_summary
+        Write ``summary.nc`` and ``summary.csv`` (the Dataset is returned either way).
+
+    Returns
+    -------
+    xarray.Dataset
+        The summary (see :func:`summary_dataset`); attribute ``interrupted`` is 1 if the sweep was
+        stopped (Ctrl-C) before every case ran.
+
+    Raises
+    ------
+    InputError, CaseFileError
+        If the sweep file is bad (an unknown parameter path, say); then nothing runs.
+    """
+    sweep_ = spec if isinstance(spec, Sweep) else load_sweep(spec)
+    if workers is not None and (not isinstance(workers, int) or workers < 1):
+        raise InputError(f"workers must be a whole number >= 1, got {workers!r}.")
+    cases = sweep_.cases()
+    store = _Store(Path(outdir))
+    (store.root / "sweep.yaml").write_text(sweep_.text, encoding="utf-8")
+    t0 = time.perf_counter()
+    records: dict[int, dict] = {}
+    reused: set[int] = set()
+    ran = 0
+
+    def report(record):
+        if progress is not None:
+            failed = sum(r["status"] == "failed" for r in records.values())
+            progress(SweepProgress(len(records), len(cases), failed, len(reused), ran,
+                                   time.perf_counter() - t0, record))
+
+    for sc in cases:
+        earlier = store.earlier(sc, retry_failed)
+        if earlier is not None:
+            records[sc.index] = earlier
+            reused.add(sc.index)
+    report(None)
+    for sc in cases:
+        if sc.case is None and sc.index not in records:
+            records[sc.index] = store.write(sc, _invalid(sc), sweep_.name)
+            report(records[sc.index])
+    todo = [sc for sc in cases if sc.index not in records]
+
+    def finished(sc, outcome):
+        nonlocal ran
+        ran += 1
+        records[sc.index] = store.write(sc, outcome, sweep_.name)
+        report(records[sc.index])
+    interrupted = False
+    try:
+        if scheduler == SYNCHRONOUS:
+            for sc in todo:
+                outcome = run_case(sc.case)
+                res = outcome.get("result")
+                if res is not None and res.attrs.get("interrupted"):
+                    raise KeyboardInterrupt  # Ctrl-C inside the run: its partial result is not the case's
+                finished(sc, outcome)
+        elif todo:
+            _run_dask(todo, scheduler, workers, finished)
+    except KeyboardInterrupt:
+        interrupted = True
+    summary = summary_dataset(sweep_, records, reused)
+    summary.attrs["interrupted"] = int(interrupted)
+    summary.attrs["wall_time"] = round(time.perf_counter() - t0, 3)
+    if write_summary:
+        write_netcdf(summary, store.root / "summary.nc")
+        summary_table(summary).to_csv(store.root / "summary.csv")
+    return summary
+
+
+def _run_dask(todo: list[SweepCase], scheduler, workers, done: Callable) -> None:
+    """Submit one task per case, longest first; hand each outcome to ``done`` as it finishes."""
+    from distributed import as_completed
+    from distributed.client import FutureCancelledError
+    from distributed.scheduler import KilledWorker
+
+    with ExitStack() as stack:
+        client = _connect(stack, scheduler, workers)
+        futures = {}
+        try:
+            for sc in todo:
+                fut = client.submit(run_case, sc.case, key=f"seacable-case-{sc.stem}-{sc.key[:16]}", pure=False,
+                                    priority=work_estimate(sc.case))
+                futures[fut] = sc
+            for fut in as_completed(list(futures)):
+                sc = futures.pop(fut)
+                try:
+                    outcome = fut.result()
+                except KilledWorker as err:
+                    outcome = {**_invalid(sc), "retry": True,
+                               "error": f"the case's worker died ({err}); out of memory, or a crash. It will "
+                                        "run again when the sweep is run again."}
+                except FutureCancelledError as err:
+                    outcome = {**_invalid(sc), "retry": True, "error": f"cancelled: {err}"}
+                fut.release()
+                done(sc, outcome)
+        finally:
+            if futures:
+                client.cancel(list(futures))
+
+
+def _parameter_units(case, parts) -> str:
+    """Units of a swept parameter, from the description of its field ("... [m/s]")."""
+    node, model, field = case, None, parts[-1]
+    if parts[0] == "line_types":
+        model = LineType
+    else:
+        for p in parts[:-1]:
+            node = node[p] if isinstance(p, int) and isinstance(node, (list, tuple)) else getattr(node, str(p), None)
+            if node is None:
+                return ""
+        model = type(node)
+        if parts[:-1] == ("line",) and field not in getattr(model, "model_fields", {}):
+            model = Segment  # the short form 'line: {line_type, length}'
+    info = getattr(model, "model_fields", {}).get(field)
+    m = re.search(r"\[([^\]]+)\]\s*$", (info.description or "") if info else "")
+    unit = m.group(1) if m else ""
+    return "1" if unit == "-" else unit
+
+
+def _column(values) -> np.ndarray:
+    if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
+        return np.array(values, float)
+    return np.array([v if isinstance(v, str) else json.dumps(v) for v in values], dtype=object)
+
+
+def summary_dataset(sweep_: Sweep, records: dict[int, dict], reused=frozenset()) -> xr.Dataset:
+    """One row per case: the swept parameters (coordinates), status, error and design figures.
+
+    Dims ``case``; coordinates ``case`` (index), ``name`` and one per swept parameter, named by its
+    path; variables ``status`` ("done", "failed" or "not run"), ``error`` (the message of a failed
+    case), ``warnings``, ``wall_time`` [s], ``reused`` (1: taken from an earlier run) and the
+    design figures of :func:`seacable.extremes.case_extremes` (NaN where a case did not run).
+    """
+    cases = sweep_.cases()
+    n = len(cases)
+    first = next(c.case for c in cases if c.case is not None)
+    coords = {"case": var("case", np.arange(n), "1", "case index"),
+              "name": var("case", np.array([c.name for c in cases], dtype=object), "1", "case name")}
+    for k, path in enumerate(sweep_.parameters):
+        coords[path] = var("case", _column([c.values[k] for c in cases]),
+                           _parameter_units(first, parse_path(path)), path)
+    get = [records.get(c.index) for c in cases]
+    text = lambda key, join="": np.array([join.join(r[key]) if isinstance(r and r[key], list)  # noqa: E731
+                                          else (r[key] if r else "") for r in get], dtype=object)
+    data = {
+        "status": var("case", np.array([r["status"] if r else "not run" for r in get], dtype=object), "1",
+                      "status of the case (done, failed, not run)"),
+        "error": var("case", text("error"), "1", "error message of a failed case"),
+        "warnings": var("case", text("warnings", "\n"), "1", "warnings of the case"),
+        "wall_time": var("case", np.array([r["wall_time"] if r else np.nan for r in get], float), "s",
+                         "wall time of the case"),
+        "reused": var("case", np.array([c.index in reused for c in cases], np.int8), "1",
+                      "result taken from an earlier run of the sweep"),
+    }
+    meta = {}
+    for r in get:
+        for name, (_, units, long_name) in (r or {}).get("extremes", {}).items():
+            meta.setdefault(name, (units, long_name))
+    for name, (units, long_name) in meta.items():
+        values = np.array([(r or {}).get("extremes", {}).get(name, (np.nan,))[0] for r in get], float)
+        data[name] = var("case", values, units, long_name)
+    status = data["status"].values
+    ds = make_dataset(data, coords, analysis="sweep", title=sweep_.name,
+                      settings={"parameters": list(sweep_.parameters), "kind": sweep_.kind},
+                      references=())
+    ds.attrs.update(sweep=sweep_.text, parameters=json.dumps(list(sweep_.parameters)),
+                    case_analysis=first.analysis.type, cases=n, done=int(np.sum(status == "done")),
+                    failed=int(np.sum(status == "failed")), not_run=int(np.sum(status == "not run")))
+    if sweep_.description:
+        ds.attrs["comment"] = sweep_.description
+    return ds
+
+
+def summary_table(summary: xr.Dataset):
+    """The summary as a pandas DataFrame, one row per case (index: case)."""
+    table = summary.reset_coords().to_dataframe()
+    first = ["name", *json.loads(summary.attrs["parameters"])]
+    return table[first + [c for c in table.columns if c not in first]]

@@ -1,0 +1,413 @@
+"""Sweep files: a base case and the parameters varied over it, expanded into cases.
+
+A sweep file is YAML::
+
+    name: lay_speeds
+    base: paper001_lay_2ms_50m.yaml        # a case file (relative to this file) or the case itself
+    grid:                                  # every combination of the lists
+      analysis.ship.speed: [0.75, 1.0, 1.5]
+      environment.current.speed: {start: 0.0, stop: 0.5, step: 0.25}
+
+or, instead of ``grid``, ``table: cases.csv``: one case per row, one parameter path per column.
+A parameter is addressed by its key path in the case file, dots between keys and ``[i]`` (or
+``.i``) for list items: ``line_types.cable.diameter``, ``line.segments[1].length``. Every path is
+checked against the case's schema before anything runs; an unknown one gets a did-you-mean.
+"""
+
+from __future__ import annotations
+
+import copy
+import csv
+import difflib
+import hashlib
+import itertools
+import json
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import yaml
+from pydantic import Field, model_validator
+
+from .._model import Model
+from ..case import Case
+from ..errors import CaseFileError, InputError
+from ..io.case_file import dump_case, load_case_data, parse_case, resolve_files
+from ..line import LineType
+
+__all__ = ["Range", "SweepFile", "Sweep", "SweepCase", "load_sweep", "parse_path"]
+
+
+class Range(Model):
+    """Evenly spaced values from ``start`` to ``stop`` (both included): give ``step`` or ``num``."""
+
+    start: float = Field(description="First value (SI units of the parameter).")
+    stop: float = Field(description="Last value (SI units of the parameter).")
+    step: float | None = Field(None, description="Spacing; the last value is 'stop' when it falls on the grid.")
+    num: int | None = Field(None, ge=2, le=1_000_000, description="Number of values.")
+
+    @model_validator(mode="after")
+    def _one_of(self):
+        if (self.step is None) == (self.num is None):
+            raise ValueError("needs exactly one of 'step' or 'num'. Suggested fix: e.g. "
+                             "{start: 0.5, stop: 5.0, step: 0.25}.")
+        if self.step is not None:
+            if not math.isfinite(self.step) or self.step == 0 or (self.stop - self.start) / self.step < 0:
+                raise ValueError(f"step {self.step:g} does not lead from start {self.start:g} to stop "
+                                 f"{self.stop:g}. Suggested fix: give a step of the sign of stop - start.")
+            if (self.stop - self.start) / self.step > 1_000_000:
+                raise ValueError("gives more than 1 000 000 values. Suggested fix: a larger step.")
+        return self
+
+    def values(self) -> list[float]:
+        """The values, start to stop."""
+        if self.num is not None:
+            return [self.start + (self.stop - self.start) * i / (self.num - 1) for i in range(self.num)]
+        n = int(math.floor((self.stop - self.start) / self.step * (1 + 1e-12) + 1e-9))
+        return [self.start + i * self.step for i in range(n + 1)]
+
+
+class SweepFile(Model):
+    """The keys of a sweep file."""
+
+    name: str = Field("sweep", min_length=1, description="Name of the sweep; the cases are NAME_0000, ...")
+    description: str = Field("", description="Free text, kept in the summary.")
+    base: str | dict[str, Any] = Field(description="The base case: a case file (path relative to the sweep "
+                                                   "file) or the case's keys.")
+    grid: dict[str, list[Any] | Range] | None = Field(
+        None, description="Parameter path -> list of values (or a range); the sweep is every combination.")
+    table: str | None = Field(None, description="CSV file of cases (path relative to the sweep file): a header "
+                                                "of parameter paths, one case per row.")
+
+    @model_validator(mode="after")
+    def _one_of(self):
+        if (self.grid is None) == (self.table is None):
+            raise ValueError("needs exactly one of 'grid' (parameter lists, every combination) or 'table' "
+                             "(a CSV file, one case per row).")
+        if self.grid is not None:
+            if not self.grid:
+                raise ValueError("grid is empty. Suggested fix: add e.g. 'analysis.ship.speed: [1.0, 2.0]'.")
+            for path, values in self.grid.items():
+                if isinstance(values, list) and not values:
+                    raise ValueError(f"grid parameter '{path}' has no values. Suggested fix: list at least one.")
+        return self
+
+
+_TOKEN = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
+
+
+def parse_path(path: str) -> tuple[str | int, ...]:
+    """Split a parameter path into keys (str) and list indices (int).
+
+    ``"line.segments[1].length"`` and ``"line.segments.1.length"`` both give
+    ``("line", "segments", 1, "length")``.
+    """
+    text = str(path).strip()
+    parts: list[str | int] = []
+    pos = 0
+    for match in _TOKEN.finditer(text):
+        gap = text[pos:match.start()]
+        if gap not in ("", ".") or (gap == "." and not parts):
+            break
+        key, index = match.groups()
+        parts.append(int(index) if index is not None else int(key) if key.isdigit() else key)
+        pos = match.end()
+    if not parts or pos != len(text) or isinstance(parts[0], int):
+        raise InputError(f"parameter path '{path}' is not a key path. Expected keys separated by dots, list "
+                         "items as [i], e.g. 'analysis.ship.speed' or 'line.segments[0].length'.")
+    return tuple(parts)
+
+
+def format_path(parts) -> str:
+    """The text of a parsed path, list items as ``[i]``."""
+    out = ""
+    for p in parts:
+        out += f"[{p}]" if isinstance(p, int) else (f".{p}" if out else str(p))
+    return out
+
+
+class _PathError(Exception):
+    """A path that does not fit the structure of the data (through a value, past a list's end)."""
+
+
+def _get(data, parts):
+    node = data
+    for p in parts:
+        if isinstance(p, int):
+            if not isinstance(node, list) or p >= len(node):
+                raise KeyError(p)
+        elif not isinstance(node, dict) or p not in node:
+            raise KeyError(p)
+        node = node[p]
+    return node
+
+
+def _set(data: dict, parts, value) -> None:
+    node = data
+    for i, p in enumerate(parts):
+        last = i == len(parts) - 1
+        where = format_path(parts[:i]) or "the case"
+        if isinstance(p, int):
+            if not isinstance(node, list):
+                raise _PathError(f"{where} is not a list, so it has no item [{p}]")
+            if p >= len(node):
+                raise _PathError(f"{where} has {len(node)} item(s), so no item [{p}]")
+        elif not isinstance(node, dict):
+            raise _PathError(f"{where} is a value ({node!r}), not a mapping of keys, so it has no key '{p}'")
+        if last:
+            node[p] = value
+        else:
+            if isinstance(node, dict) and p not in node:
+                node[p] = [] if isinstance(parts[i + 1], int) else {}
+            node = node[p]
+
+
+def _paths(data, prefix=()) -> list[tuple]:
+    """Every key path of nested mappings and lists."""
+    out = []
+    items = data.items() if isinstance(data, dict) else enumerate(data) if isinstance(data, list) else ()
+    for k, v in items:
+        out.append(prefix + (k,))
+        out.extend(_paths(v, prefix + (k,)))
+    return out
+
+
+@dataclass(frozen=True)
+class SweepCase:
+    """One case of a sweep: its index, name and parameter values; the case, or why it is invalid."""
+
+    index: int
+    name: str
+    values: tuple
+    case: Case | None
+    error: str | None
+    key: str
+
+    @property
+    def stem(self) -> str:
+        """File name stem of the case's result: its index, zero-padded."""
+        return f"{self.index:04d}"
+
+
+class Sweep:
+    """A base case and the parameter values to run it at.
+
+    Parameters
+    ----------
+    base
+        The base case: a :class:`~seacable.case.Case`, a case file, or the case's keys (a mapping).
+    grid
+        Parameter path -> values; the sweep is every combination, the last parameter varying fastest.
+    table
+        Parameter path -> values, all the same length: one case per position (a CSV file's columns).
+    name, description
+        Name of the sweep (cases are ``NAME_0000``, ...) and free text.
+    source
+        Where the sweep came from, for messages.
+
+    Raises
+    ------
+    InputError
+        If a parameter path is not a key of the case (with a did-you-mean), or if no case is valid.
+    """
+
+    def __init__(self, base, *, grid: dict | None = None, table: dict | None = None, name: str = "sweep",
+                 description: str = "", source: str = "sweep", text: str | None = None):
+        if (grid is None) == (table is None):
+            raise InputError("a sweep needs exactly one of 'grid' or 'table'.")
+        self.name, self.description, self.source = name, description, source
+        self.base = _base_data(base)
+        spec = grid if grid is not None else table
+        self.parameters = tuple(str(p) for p in spec)
+        columns = [list(v.values()) if isinstance(v, Range) else list(v) for v in spec.values()]
+        if table is not None:
+            sizes = {len(c) for c in columns}
+            if len(sizes) != 1:
+                raise InputError(f"{source}: the table's columns have different lengths {sorted(sizes)}.")
+            self.rows = list(zip(*columns))
+        else:
+            self.rows = list(itertools.product(*columns))
+        if not self.rows:
+            raise InputError(f"{source}: the sweep has no cases. Suggested fix: give each parameter a value.")
+        self.kind = "grid" if grid is not None else "table"
+        self.text = text if text is not None else yaml.safe_dump(
+            {"name": name, "description": description, "base": self.base, self.kind: {
+                p: list(c) for p, c in zip(self.parameters, columns)}}, sort_keys=False)
+        self._parts = [parse_path(p) for p in self.parameters]
+        self._check_paths()
+        self._cases = None
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def cases(self) -> list[SweepCase]:
+        """Every case, validated: a case that fails validation carries its message instead."""
+        if self._cases is None:
+            self._cases = [self._make(i, row) for i, row in enumerate(self.rows)]
+            if all(c.case is None for c in self._cases):
+                raise InputError(f"{self.source}: no case of the sweep is valid; case 0: {self._cases[0].error}")
+        return self._cases
+
+    def _make(self, index: int, row) -> SweepCase:
+        name = f"{self.name}_{index:04d}"
+        data = copy.deepcopy(self.base)
+        data["name"] = name
+        for parts, value in zip(self._parts, row):
+            _set(data, parts, value)
+        where = f"case {index} ({', '.join(f'{p} = {v!r}' for p, v in zip(self.parameters, row))})"
+        try:
+            case = parse_case(data, source=where)
+        except InputError as err:
+            text = json.dumps(data, sort_keys=True, default=str)
+            return SweepCase(index, name, tuple(row), None, str(err), hashlib.sha256(text.encode()).hexdigest())
+        return SweepCase(index, name, tuple(row), case, None, hashlib.sha256(dump_case(case).encode()).hexdigest())
+
+    def _check_paths(self) -> None:
+        """Fail before anything runs if a path is not a key of the case."""
+        candidates = None
+        for path, parts, probe in zip(self.parameters, self._parts, self.rows[0]):
+            try:
+                _get(self.base, parts)
+                continue
+            except KeyError:
+                pass
+            data = copy.deepcopy(self.base)
+            problem = None
+            try:
+                _set(data, parts, probe)
+            except _PathError as err:
+                problem = str(err)
+            else:
+                try:
+                    parse_case(data)
+                except InputError as err:
+                    for loc, tail in getattr(err, "problems", ()):
+                        m = re.search(r"unknown key '([^']*)'", tail)
+                        if m and m.group(1) in parts:
+                            where = format_path(parts[:parts.index(m.group(1))]) or "the case"
+                            problem = f"{where} has no key '{m.group(1)}'"
+                            break
+            if problem is not None:
+                if candidates is None:
+                    candidates = self._candidates()
+                raise InputError(f"{self.source}: parameter '{path}' is not a key path of the case: {problem}."
+                                 f"{_did_you_mean(format_path(parts), candidates)} Suggested fix: write the "
+                                 "path of the key as in the case file ('seacable schema' lists the keys).")
+
+    def _candidates(self) -> list[str]:
+        """Key paths a parameter may take: the base's, and every key of a valid case with its defaults."""
+        paths = {format_path(p) for p in _paths(self.base)}
+        try:
+            case = Case.parse({**self.base, "name": self.name})
+        except InputError:
+            case = None
+        if case is not None:
+            paths |= {format_path(p) for p in _paths(case.model_dump(mode="json"))}
+        for type_name in (self.base.get("line_types") or {}):
+            paths |= {f"line_types.{type_name}.{f}" for f in LineType.model_fields}
+        return sorted(paths)
+
+
+def _did_you_mean(path: str, candidates: list[str]) -> str:
+    close = difflib.get_close_matches(path, candidates, n=1, cutoff=0.6)
+    if close:
+        return f" Did you mean '{close[0]}'?"
+    last = path.rsplit(".", 1)[-1]
+    same = [c for c in candidates if c.rsplit(".", 1)[-1] == last][:4]
+    if same:
+        return " Did you mean " + " or ".join(f"'{c}'" for c in same) + "?"
+    return ""
+
+
+def _base_data(base) -> dict:
+    if isinstance(base, Case):
+        return base.model_dump(mode="json")
+    if isinstance(base, (str, Path)):
+        return load_case_data(base)
+    if isinstance(base, dict):
+        return copy.deepcopy(base)
+    raise InputError(f"a sweep's base must be a Case, a case file or a mapping of case keys, got "
+                     f"{type(base).__name__}.")
+
+
+def _read_table(path: Path, source: str) -> dict[str, list]:
+    """Columns of a CSV table of cases, each cell read as a YAML scalar (numbers, true/false, text)."""
+    try:
+        with path.open(newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f))
+    except FileNotFoundError:
+        raise CaseFileError(f"{source}: table '{path}' does not exist. Suggested fix: give its path relative "
+                            "to the sweep file.") from None
+    except (OSError, UnicodeDecodeError, csv.Error) as err:
+        raise CaseFileError(f"{source}: table '{path}' cannot be read: {err}.") from None
+    rows = [r for r in rows if any(cell.strip() for cell in r)]
+    if len(rows) < 2:
+        raise CaseFileError(f"{source}: table '{path}' needs a header of parameter paths and at least one row "
+                            "of values.")
+    header = [h.strip() for h in rows[0]]
+    columns: dict[str, list] = {h: [] for h in header}
+    if len(columns) != len(header) or "" in columns:
+        raise CaseFileError(f"{source}: table '{path}' has an empty or repeated column name in its header "
+                            f"{header}.")
+    for line, row in enumerate(rows[1:], start=2):
+        if len(row) != len(header):
+            raise CaseFileError(f"{source}: table '{path}' line {line} has {len(row)} values for "
+                                f"{len(header)} columns.")
+        for h, cell in zip(header, row):
+            if not cell.strip():
+                raise CaseFileError(f"{source}: table '{path}' line {line}, column '{h}' is empty. Suggested "
+                                    "fix: give every case a value.")
+            try:
+                columns[h].append(yaml.safe_load(cell))
+            except yaml.YAMLError:
+                columns[h].append(cell.strip())
+    return columns
+
+
+def load_sweep(path: str | Path) -> Sweep:
+    """Read and check a sweep file (YAML).
+
+    Raises
+    ------
+    CaseFileError
+        If the file, its base case or its table cannot be read, or a key is unknown.
+    InputError
+        If a parameter path is not a key of the case (with a did-you-mean).
+    """
+    path = Path(path)
+    source = str(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"sweep file '{path}' does not exist. Suggested fix: check the path; examples/ "
+                            "holds a sweep.") from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise CaseFileError(f"sweep file '{path}' cannot be read: {err}.") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        raise CaseFileError(f"{path}: not valid YAML: {err}.") from None
+    if not isinstance(data, dict):
+        raise CaseFileError(f"{path}: a sweep file must be a mapping with 'base' and 'grid' or 'table'.")
+    try:
+        spec = SweepFile.parse(data)
+    except InputError as err:
+        raise CaseFileError(f"{path}: {err}") from None
+    base = spec.base
+    if isinstance(base, str):
+        base = path.parent / base
+    else:
+        base = copy.deepcopy(base)
+        resolve_files(base, path.parent)
+    try:
+        if spec.grid is not None:
+            return Sweep(base, grid=spec.grid, name=spec.name, description=spec.description, source=source,
+                         text=text)
+        return Sweep(base, table=_read_table(path.parent / spec.table, source), name=spec.name,
+                     description=spec.description, source=source, text=text)
+    except CaseFileError:
+        raise
+    except InputError as err:
+        raise CaseFileError(str(err)) from None
