@@ -281,7 +281,7 @@ class Sweep:
                 problem = str(err)
             else:
                 try:
-                    parse_case(data)
+                    Case.parse(data)
                 except InputError as err:
                     for loc, tail in getattr(err, "problems", ()):
                         m = re.search(r"unknown key '([^']*)'", tail)

@@ -1,0 +1,289 @@
+"""Sweeps: sweep files, parameter paths, the Dask engine, failures, resuming, the summary.
+
+The engine tests run cheap laying cases (5 m segments, 100 s) so that a dozen cases take seconds.
+Results of the same case are compared exactly: the same code on the same input is deterministic,
+whether it runs in this process or in a worker process.
+"""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+import seacable as sc
+from seacable.cli import main
+from seacable.errors import CaseFileError, InputError
+from seacable.sweeps import Sweep, load_sweep, parse_path, run_case
+from seacable.sweeps.engine import summary_table
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+BASE = {
+    "name": "lay",
+    "line_types": {"cable": {"diameter": 0.0225, "mass_per_length": 0.867, "weight_in_water": 4.49,
+                             "drag_normal": 1.85, "drag_tangential": 0.0, "added_mass_normal": 1.0}},
+    "line": {"line_type": "cable", "length": 3000.0},
+    "environment": {"water_density": 1030.0, "depth": 50.0},
+    "analysis": {"type": "laying_dynamic", "ship": {"speed": 2.0}, "payout": {"type": "slack", "slack": 0.05},
+                 "duration": 100.0, "segment_length": 5.0, "output_interval": 2.0, "initial_angle": 0.3},
+}
+SPEEDS = [0.75, 1.0, 1.5, 2.0, 2.5, 3.0]
+SLACKS = [0.03, 0.05]   # 12 cases
+
+
+def write_sweep(folder: Path, **spec) -> Path:
+    path = folder / "sweep.yaml"
+    path.write_text(yaml.safe_dump({"name": "t", "base": BASE, **spec}), encoding="utf-8")
+    return path
+
+
+def grid_sweep():
+    return Sweep(BASE, grid={"analysis.ship.speed": SPEEDS, "analysis.payout.slack": SLACKS}, name="t")
+
+
+# --- parameter paths ---------------------------------------------------------------------------
+
+def test_parse_path_forms():
+    assert parse_path("analysis.ship.speed") == ("analysis", "ship", "speed")
+    assert parse_path("line.segments[1].length") == ("line", "segments", 1, "length")
+    assert parse_path("line.segments.1.length") == ("line", "segments", 1, "length")
+    for bad in ("", "a..b", ".a", "a.", "[0].a", "a[x]"):
+        with pytest.raises(InputError, match="not a key path"):
+            parse_path(bad)
+
+
+def test_grid_is_the_product_last_parameter_fastest():
+    s = grid_sweep()
+    assert len(s) == 12
+    cases = s.cases()
+    assert [c.values for c in cases[:3]] == [(0.75, 0.03), (0.75, 0.05), (1.0, 0.03)]
+    assert cases[3].case.analysis.ship.speed == 1.0 and cases[3].case.analysis.payout.slack == 0.05
+    assert [c.name for c in cases[:2]] == ["t_0000", "t_0001"]
+    # the base is not changed by the sweep
+    assert BASE["analysis"]["ship"]["speed"] == 2.0
+
+
+def test_range_values():
+    s = Sweep(BASE, grid={"analysis.ship.speed": sc.Range(start=0.75, stop=5.0, step=0.25)})
+    values = [c.values[0] for c in s.cases()]
+    assert len(values) == 18 and values[0] == 0.75 and values[-1] == pytest.approx(5.0, abs=1e-12)
+    assert sc.Range(start=1.0, stop=2.0, num=3).values() == [1.0, 1.5, 2.0]
+    with pytest.raises(InputError, match="exactly one of 'step' or 'num'"):
+        sc.Range(start=0.0, stop=1.0)
+    with pytest.raises(InputError, match="does not lead from start"):
+        sc.Range(start=0.0, stop=1.0, step=-0.1)
+
+
+def test_paths_absent_from_the_base_but_keys_of_the_case():
+    # environment.current is not in the base: its default is swept
+    s = Sweep(BASE, grid={"environment.current.speed": [0.0, 0.5], "line_types.cable.drag_normal": [1.2]})
+    case = s.cases()[1].case
+    assert case.environment.current.speed == 0.5
+    assert case.line.segments[0].line_type.drag_normal == 1.2
+
+
+@pytest.mark.parametrize("path, hint", [
+    ("analysis.ship.sped", "Did you mean 'analysis.ship.speed'?"),
+    ("analysis.shp.speed", "Did you mean 'analysis.ship.speed'?"),
+    ("enviroment.depth", "Did you mean 'environment.depth'?"),
+    ("vessel.speed", "'analysis.ship.speed'"),
+    ("analysis.ship.speed.knots", "is a value (2.0), not a mapping"),
+    ("line_types.cable.diamter", "Did you mean 'line_types.cable.diameter'?"),
+])
+def test_unknown_path_fails_before_anything_runs(tmp_path, path, hint):
+    spec = write_sweep(tmp_path, grid={path: [1.0, 2.0]})
+    with pytest.raises(CaseFileError) as info:
+        sc.sweep(spec, tmp_path / "out")
+    message = str(info.value)
+    assert f"parameter '{path}' is not a key path of the case" in message and hint in message
+    assert not (tmp_path / "out").exists()        # nothing ran, nothing written
+    # the command line: one message, exit status 2
+    assert main(["sweep", str(spec), "-o", str(tmp_path / "out")]) == 2
+    assert not (tmp_path / "out").exists()
+
+
+def test_sweep_file_errors(tmp_path):
+    with pytest.raises(CaseFileError, match="exactly one of 'grid'"):
+        sc.load_sweep(write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0]}, table="x.csv"))
+    with pytest.raises(CaseFileError, match="unknown key 'gird'. Did you mean 'grid'"):
+        sc.load_sweep(write_sweep(tmp_path, gird={"analysis.ship.speed": [1.0]}))
+    with pytest.raises(CaseFileError, match="has no values"):
+        sc.load_sweep(write_sweep(tmp_path, grid={"analysis.ship.speed": []}))
+    with pytest.raises(CaseFileError, match="table '.*cases.csv' does not exist"):
+        sc.load_sweep(write_sweep(tmp_path, table="cases.csv"))
+    (tmp_path / "cases.csv").write_text("analysis.ship.speed,analysis.payout.slack\n1.0\n")
+    with pytest.raises(CaseFileError, match="line 2 has 1 values for 2 columns"):
+        sc.load_sweep(write_sweep(tmp_path, table="cases.csv"))
+    with pytest.raises(CaseFileError, match="does not exist"):
+        sc.load_sweep(tmp_path / "nope.yaml")
+
+
+def test_every_case_invalid_is_an_error():
+    with pytest.raises(InputError, match="no case of the sweep is valid; case 0: .*must be >= 0 m/s"):
+        Sweep(BASE, grid={"analysis.ship.speed": [-1.0, -2.0]}).cases()
+
+
+def test_case_key_is_the_full_case():
+    s = Sweep(BASE, grid={"analysis.ship.speed": [1.0, 1.0, 2.0]}, name="k").cases()
+    # the key hashes the whole case, its name included: equal values in two cases are two cases
+    assert s[0].key != s[1].key
+    again = Sweep(BASE, grid={"analysis.ship.speed": [1.0, 1.0, 2.0]}, name="k").cases()
+    assert [c.key for c in again] == [c.key for c in s]
+    changed = Sweep({**BASE, "environment": {"water_density": 1025.0, "depth": 50.0}},
+                    grid={"analysis.ship.speed": [1.0, 1.0, 2.0]}, name="k").cases()
+    assert all(a.key != b.key for a, b in zip(changed, s))
+
+
+# --- running -----------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def scheduler():
+    """A 2-worker Dask cluster standing in for a user's scheduler (the sweep gets its address)."""
+    from distributed import LocalCluster
+
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                      silence_logs=40) as cluster:
+        yield cluster.scheduler_address
+
+
+@pytest.fixture(scope="module")
+def one_by_one():
+    """Each case of the 12-case grid run on its own with seacable.run, in this process."""
+    return [sc.run(c.case) for c in grid_sweep().cases()]
+
+
+def test_sweep_on_2_workers_equals_cases_one_by_one(tmp_path, scheduler, one_by_one):
+    summary = sc.sweep(grid_sweep(), tmp_path, scheduler=scheduler)
+    assert summary.sizes["case"] == 12 and list(summary.status.values) == ["done"] * 12
+    np.testing.assert_array_equal(summary["analysis.ship.speed"].values, np.repeat(SPEEDS, 2))
+    np.testing.assert_array_equal(summary["analysis.payout.slack"].values, np.tile(SLACKS, 6))
+    for i, ds in enumerate(one_by_one):
+        # the same numbers: the per-case file is the result of seacable.run, bit for bit
+        with xr.open_dataset(tmp_path / "cases" / f"{i:04d}.nc") as saved:
+            for name in ("top_tension", "entry_angle", "x", "z", "tension"):
+                np.testing.assert_array_equal(saved[name].values, ds[name].values, err_msg=name)
+        # and the summary row is the extremes of that result
+        assert summary.top_tension_max.values[i] == float(ds.top_tension.max())
+        assert summary.top_tension_min.values[i] == float(ds.top_tension.min())
+        assert summary.bottom_tension_max.values[i] == float(ds.bottom_tension.max())
+        n = ds.sizes["time"] // 10
+        assert summary.entry_angle_end.values[i] == float(ds.entry_angle[-n:].mean())
+        layback = (ds.ship_x - ds.touchdown_x)[-n:].mean()
+        assert summary.layback_end.values[i] == float(layback)
+    # units and names of the swept parameters
+    assert summary["analysis.ship.speed"].attrs["units"] == "m/s"
+    assert summary.top_tension_max.attrs["units"] == "N"
+    # the summary and its table are on disk
+    on_disk = sc.read_netcdf(tmp_path / "summary.nc")
+    np.testing.assert_array_equal(on_disk.entry_angle_end.values, summary.entry_angle_end.values)
+    table = (tmp_path / "summary.csv").read_text().splitlines()
+    assert table[0].startswith("case,name,analysis.ship.speed,analysis.payout.slack,status,")
+    assert len(table) == 13
+
+
+def test_failed_cases_are_reported_and_the_others_complete(tmp_path, scheduler):
+    """A table of cases: one with a bad value (rejected before it runs), one that fails in its run."""
+    (tmp_path / "cases.csv").write_text(
+        "analysis.ship.speed,line_types.cable.weight_in_water\n"
+        "1.0,4.49\n"
+        "-1.0,4.49\n"        # a negative speed: rejected by the case's validation
+        "1.5,-2.0\n"         # a cable that floats: the laying model refuses it when it runs
+        "2.0,4.49\n")
+    spec = write_sweep(tmp_path, table="cases.csv")
+    summary = sc.sweep(spec, tmp_path / "out", scheduler=scheduler)
+    assert list(summary.status.values) == ["done", "failed", "failed", "done"]
+    assert "analysis.ship.speed must be >= 0 m/s, got -1 m/s" in summary.error.values[1]
+    assert "weighs -2 N/m in water: a laid cable must sink" in summary.error.values[2]
+    assert summary.error.values[0] == summary.error.values[3] == ""
+    assert np.isnan(summary.top_tension_max.values[1:3]).all()
+    assert np.isfinite(summary.top_tension_max.values[[0, 3]]).all()
+    assert summary.attrs["failed"] == 2 and summary.attrs["done"] == 2
+    assert not (tmp_path / "out" / "cases" / "0002.nc").exists()
+    record = json.loads((tmp_path / "out" / "cases" / "0002.json").read_text())
+    assert record["status"] == "failed" and "must sink" in record["error"]
+    # a second run keeps the failures (deterministic) unless asked to retry them
+    again = sc.sweep(spec, tmp_path / "out", scheduler="synchronous")
+    assert again.reused.values.tolist() == [1, 1, 1, 1]
+    retried = sc.sweep(spec, tmp_path / "out", scheduler="synchronous", retry_failed=True)
+    assert retried.reused.values.tolist() == [1, 0, 0, 1]
+    assert list(retried.status.values) == ["done", "failed", "failed", "done"]
+
+
+def test_cli_sweep_exit_status_table_and_plot(tmp_path, capsys):
+    spec = write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0, -1.0, 2.0]})
+    out = tmp_path / "out"
+    assert main(["sweep", str(spec), "-o", str(out), "--scheduler", "synchronous"]) == 1  # a case failed
+    captured = capsys.readouterr()
+    assert "t_0002" in captured.out and "entry_angle_end [degree]" in captured.out
+    assert "case 1 (t_0001) failed: InputError" in captured.err
+    assert "1 of 3 cases failed" in captured.err
+    assert (out / "summary_sweep.png").exists()
+    # seacable plot on the summary draws it again
+    assert main(["plot", str(out / "summary.nc"), "-o", str(tmp_path / "figs")]) == 0
+    assert (tmp_path / "figs" / "summary_sweep.png").exists()
+
+
+def test_run_case_records_warnings_and_errors():
+    case = grid_sweep().cases()[0].case
+    cable = case.line.segments[0].line_type
+    # 400 m of cable: more than the 339 m on the seabed and hanging at the start, all paid out within
+    # the 100 s (at 0.79 m/s)
+    out = run_case(case.replace(line=sc.Line.single(cable, 400.0)))
+    assert out["status"] == "done" and out["result"] is not None
+    assert any("all 400 m of cable paid out" in w for w in out["warnings"])
+    out = run_case(case.replace(line=sc.Line.single(cable, 60.0)))
+    assert out["status"] == "failed" and out["result"] is None and out["extremes"] == {}
+    assert out["error"].startswith("InputError: the initial suspended cable needs 169.193 m")
+
+
+def test_interrupted_sweep_resumes_with_the_missing_cases_only(tmp_path):
+    """Kill a running sweep (the command and its workers), run it again: only the missing cases run."""
+    base = {**BASE, "analysis": {**BASE["analysis"], "segment_length": 2.0, "duration": 300.0}}
+    spec = tmp_path / "sweep.yaml"
+    spec.write_text(yaml.safe_dump({"name": "k", "base": base,
+                                    "grid": {"analysis.ship.speed": [1.0 + 0.25 * i for i in range(12)]}}))
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "seacable", "sweep", str(spec), "-o", str(out), "--workers", "2", "--no-plots"]
+    proc = subprocess.Popen(cmd, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    records = out / "cases"
+    deadline = time.monotonic() + 300
+    while len(list(records.glob("*.json"))) < 3:
+        assert proc.poll() is None, proc.stderr.read().decode()
+        assert time.monotonic() < deadline, "the sweep did not get going"
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)       # the command, its cluster and its workers
+    proc.wait()
+    proc.stderr.close()
+    done = {p.stem: p.stat().st_mtime_ns for p in records.glob("*.json")}
+    assert 3 <= len(done) < 12, "kill the sweep part way"
+    result = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr
+    summary = sc.read_netcdf(out / "summary.nc")
+    assert list(summary.status.values) == ["done"] * 12
+    reused = {f"{i:04d}" for i in np.flatnonzero(summary.reused.values)}
+    assert reused == set(done)                # what was done is kept ...
+    for stem, mtime in done.items():          # ... untouched
+        assert (records / f"{stem}.json").stat().st_mtime_ns == mtime
+    assert f"{len(done)} from an earlier run" in result.stderr
+    assert not list(records.glob(".*"))       # no partial file left
+    # and the resumed sweep gives the numbers of the cases run one by one
+    cases = load_sweep(spec).cases()
+    for i in (0, 11):
+        ds = sc.run(cases[i].case)
+        assert summary.top_tension_max.values[i] == float(ds.top_tension.max())
+
+
+def test_summary_table_columns(tmp_path):
+    summary = sc.sweep(Sweep(BASE, grid={"analysis.ship.speed": [1.0]}, name="one"), tmp_path,
+                       scheduler="synchronous", write_summary=False)
+    table = summary_table(summary)
+    assert list(table.columns[:3]) == ["name", "analysis.ship.speed", "status"]
+    assert not (tmp_path / "summary.nc").exists()
