@@ -185,8 +185,19 @@ def _cmd_sweep(args) -> int:
 
 def _cmd_validate(args) -> int:
     from .io import load_case
+    from .sweeps import is_sweep_file, load_sweep
 
     for name in args.cases:
+        if is_sweep_file(name):
+            spec = load_sweep(name)
+            bad = [c for c in spec.cases() if c.case is None]
+            for c in bad:
+                print(f"{name}: {c.error}", file=sys.stderr)
+            print(f"{name}: valid sweep of {len(spec)} case(s) ({spec.kind} of {', '.join(spec.parameters)})"
+                  + (f"; {len(bad)} case(s) invalid" if bad else ""))
+            if bad:
+                return EXIT_USER_ERROR
+            continue
         case = load_case(name)
         print(f"{name}: valid ({case.analysis.type} analysis, {len(case.line.segments)} segment(s), "
               f"line length {case.line.length:g} m)")
@@ -262,8 +273,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--no-plots", action="store_true", help="write the results only")
     p.set_defaults(func=_cmd_sweep)
 
-    p = sub.add_parser("validate", help="check case files without running them")
-    p.add_argument("cases", nargs="+", help="YAML case files")
+    p = sub.add_parser("validate", help="check case and sweep files without running them")
+    p.add_argument("cases", nargs="+", help="YAML case or sweep files")
     p.set_defaults(func=_cmd_validate)
 
     p = sub.add_parser("plot", help="make the standard figures (PNG) of a result file")

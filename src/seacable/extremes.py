@@ -34,7 +34,8 @@ TOP_TENSION = {
 #: Time series of each analysis reduced to their extremes (max and min) and to their end value.
 _SERIES = {
     "laying_dynamic": {"extremes": ("bottom_tension",),
-                       "end": ("entry_angle", "touchdown_x", "bottom_tension", "suspended_length", "slack")},
+                       "end": ("entry_angle", "top_tension", "touchdown_x", "bottom_tension", "suspended_length",
+                               "slack")},
     "towed_dynamic": {"extremes": ("lower_end_depth",), "end": ("lower_end_depth",)},
     "towline_dynamic": {"extremes": ("tension_barge",), "end": ("tension_barge", "barge_speed")},
     "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length"), "end": ()},

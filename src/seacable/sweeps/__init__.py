@@ -6,7 +6,7 @@ and resumes an interrupted sweep. See :mod:`seacable.sweeps.spec` for the sweep 
 """
 
 from .engine import SweepProgress, run_case, summary_dataset, sweep, work_estimate
-from .spec import Range, Sweep, SweepCase, SweepFile, load_sweep, parse_path
+from .spec import Range, Sweep, SweepCase, SweepFile, is_sweep_file, load_sweep, parse_path
 
-__all__ = ["Sweep", "SweepCase", "SweepFile", "Range", "SweepProgress", "load_sweep", "parse_path", "sweep",
+__all__ = ["Sweep", "SweepCase", "SweepFile", "Range", "SweepProgress", "is_sweep_file", "load_sweep", "parse_path", "sweep",
            "run_case", "summary_dataset", "work_estimate"]

@@ -24,6 +24,7 @@ import os
 import re
 import time
 import traceback
+import uuid
 import warnings
 from contextlib import ExitStack
 from dataclasses import dataclass
@@ -64,20 +65,62 @@ class SweepProgress:
         return math.nan if self.ran <= 0 else self.elapsed / self.ran * (self.total - self.done)
 
 
-def run_case(case) -> dict:
+@dataclass(frozen=True)
+class ResultTarget:
+    """Where a worker writes a case's result itself, if it sees the sweep's output folder."""
+
+    folder: str   #: the sweep's ``cases`` folder, as the client sees it
+    token: str    #: a file the client made there: a worker sees it only if they share the folder
+    stem: str     #: the case's file name stem
+    attrs: dict   #: attributes stamped on the result (sweep name, case index and key)
+
+    def visible(self) -> bool:
+        return os.path.exists(os.path.join(self.folder, self.token))
+
+
+def write_result(ds: xr.Dataset, folder: Path, stem: str, attrs: dict) -> Path:
+    """Write a case's result as ``folder/STEM.nc``, whole: under a temporary name, then renamed."""
+    import dask
+
+    ds.attrs.update(attrs)
+    part = Path(folder) / f".{stem}.partial.nc"
+    # xarray locks a write through the default Dask scheduler, which for a distributed client is a
+    # round trip to the scheduler per variable: this write is local, so its lock is too
+    with dask.config.set(scheduler="synchronous"):
+        write_netcdf(ds, part)
+    path = Path(folder) / f"{stem}.nc"
+    os.replace(part, path)
+    return path
+
+
+def run_case(case, target: ResultTarget | None = None) -> dict:
     """Run one case and reduce it: the task each worker runs.
+
+    Parameters
+    ----------
+    case
+        The :class:`~seacable.case.Case`.
+    target
+        Where to write the result when this process sees the sweep's folder (a local cluster, a
+        shared file system); otherwise the result is returned for the client to write.
 
     Returns
     -------
     dict
         ``status`` ("done" or "failed"), ``error`` (message, "" when done), ``warnings`` (the
         SeacableWarnings it raised), ``wall_time`` [s], ``extremes`` ({name: (value, units,
-        long_name)}) and ``result`` (the Dataset; None when it failed).
+        long_name)}), ``result`` (the Dataset, or None when it failed or was written here) and
+        ``written`` (True when it was written here).
+
+    Raises
+    ------
+    KeyboardInterrupt
+        If the run was interrupted: its partial result is not the case's.
     """
     from ..simulate import run
 
     t0 = time.perf_counter()
-    out = {"status": "failed", "error": "", "warnings": [], "extremes": {}, "result": None}
+    out = {"status": "failed", "error": "", "warnings": [], "extremes": {}, "result": None, "written": False}
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SeacableWarning)
         try:
@@ -89,9 +132,14 @@ def run_case(case) -> dict:
             out["error"] = (f"internal error, please report it: {type(err).__name__}: {err}\n"
                             + traceback.format_exc())
         else:
+            if ds.attrs.get("interrupted"):
+                raise KeyboardInterrupt
             out.update(status="done", result=ds, extremes={
                 k: (float(v.values), v.attrs["units"], v.attrs["long_name"]) for k, v in extremes.items()})
     out["warnings"] = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, SeacableWarning)))
+    if out["result"] is not None and target is not None and target.visible():
+        write_result(out.pop("result"), Path(target.folder), target.stem, target.attrs)
+        out.update(result=None, written=True)
     out["wall_time"] = time.perf_counter() - t0
     return out
 
@@ -141,9 +189,9 @@ def _connect(stack: ExitStack, scheduler, workers: int | None):
         n = workers or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)
         cluster = stack.enter_context(LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                                    dashboard_address=None, silence_logs=logging.ERROR))
-        return stack.enter_context(Client(cluster))
+        return stack.enter_context(Client(cluster, set_as_default=False))
     try:
-        client = stack.enter_context(Client(scheduler, timeout="10s"))
+        client = stack.enter_context(Client(scheduler, timeout="10s", set_as_default=False))
     except (OSError, TimeoutError, ValueError) as err:
         raise InputError(f"cannot reach the Dask scheduler at '{scheduler}': {err}. Suggested fix: check the "
                          "address (e.g. tcp://host:8786) and that 'dask scheduler' runs there, or leave out "
@@ -166,16 +214,26 @@ def _connect(stack: ExitStack, scheduler, workers: int | None):
 class _Store:
     """The output folder: per-case results and records, written whole (renamed into place)."""
 
-    def __init__(self, outdir: Path):
+    def __init__(self, outdir: Path, sweep_name: str):
         self.root = Path(outdir)
         self.cases = self.root / "cases"
+        self.sweep_name = sweep_name
         try:
             self.cases.mkdir(parents=True, exist_ok=True)
         except OSError as err:
             raise InputError(f"cannot create the output folder '{self.cases}': {err}. Suggested fix: give -o "
                              "a folder you can write to.") from None
-        for stale in self.cases.glob(".*.partial*"):
+        for stale in [*self.cases.glob(".*.partial.*"), *self.cases.glob(".sweep-*.token")]:
             stale.unlink(missing_ok=True)
+        self.token = f".sweep-{uuid.uuid4().hex}.token"
+        (self.cases / self.token).touch()
+
+    def close(self) -> None:
+        (self.cases / self.token).unlink(missing_ok=True)
+
+    def target(self, sc: SweepCase) -> ResultTarget:
+        return ResultTarget(str(self.cases.resolve()), self.token, sc.stem,
+                            {"sweep": self.sweep_name, "sweep_case": sc.index, "sweep_key": sc.key})
 
     def result_path(self, sc: SweepCase) -> Path:
         return self.cases / f"{sc.stem}.nc"
@@ -197,18 +255,16 @@ class _Store:
             return record
         return None
 
-    def write(self, sc: SweepCase, outcome: dict, sweep_name: str) -> dict:
+    def write(self, sc: SweepCase, outcome: dict) -> dict:
+        """Write the case's result (unless its worker did) and then its record."""
         record = {"index": sc.index, "name": sc.name, "key": sc.key, "values": list(sc.values),
                   "status": outcome["status"], "error": outcome["error"], "warnings": outcome["warnings"],
                   "wall_time": outcome["wall_time"], "extremes": outcome["extremes"],
                   "retry": bool(outcome.get("retry", False)), "seacable_version": __version__,
                   "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
-        ds = outcome.get("result")
-        if ds is not None:
-            ds.attrs.update(sweep=sweep_name, sweep_case=sc.index, sweep_key=sc.key)
-            part = self.cases / f".{sc.stem}.partial.nc"
-            write_netcdf(ds, part)
-            os.replace(part, self.result_path(sc))
+        if outcome.get("result") is not None:
+            target = self.target(sc)
+            write_result(outcome["result"], self.cases, sc.stem, target.attrs)
         part = self.cases / f".{sc.stem}.partial.json"
         part.write_text(json.dumps(record, indent=1, default=str), encoding="utf-8")
         os.replace(part, self.record_path(sc))
@@ -260,7 +316,7 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
     if workers is not None and (not isinstance(workers, int) or workers < 1):
         raise InputError(f"workers must be a whole number >= 1, got {workers!r}.")
     cases = sweep_.cases()
-    store = _Store(Path(outdir))
+    store = _Store(Path(outdir), sweep_.name)
     (store.root / "sweep.yaml").write_text(sweep_.text, encoding="utf-8")
     t0 = time.perf_counter()
     records: dict[int, dict] = {}
@@ -281,28 +337,26 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
     report(None)
     for sc in cases:
         if sc.case is None and sc.index not in records:
-            records[sc.index] = store.write(sc, _invalid(sc), sweep_.name)
+            records[sc.index] = store.write(sc, _invalid(sc))
             report(records[sc.index])
     todo = [sc for sc in cases if sc.index not in records]
 
     def finished(sc, outcome):
         nonlocal ran
         ran += 1
-        records[sc.index] = store.write(sc, outcome, sweep_.name)
+        records[sc.index] = store.write(sc, outcome)
         report(records[sc.index])
     interrupted = False
     try:
         if scheduler == SYNCHRONOUS:
             for sc in todo:
-                outcome = run_case(sc.case)
-                res = outcome.get("result")
-                if res is not None and res.attrs.get("interrupted"):
-                    raise KeyboardInterrupt  # Ctrl-C inside the run: its partial result is not the case's
-                finished(sc, outcome)
+                finished(sc, run_case(sc.case, store.target(sc)))
         elif todo:
-            _run_dask(todo, scheduler, workers, finished)
+            _run_dask(todo, scheduler, workers, store, finished)
     except KeyboardInterrupt:
         interrupted = True
+    finally:
+        store.close()
     summary = summary_dataset(sweep_, records, reused)
     summary.attrs["interrupted"] = int(interrupted)
     summary.attrs["wall_time"] = round(time.perf_counter() - t0, 3)
@@ -312,7 +366,7 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
     return summary
 
 
-def _run_dask(todo: list[SweepCase], scheduler, workers, done: Callable) -> None:
+def _run_dask(todo: list[SweepCase], scheduler, workers, store: _Store, done: Callable) -> None:
     """Submit one task per case, longest first; hand each outcome to ``done`` as it finishes."""
     from distributed import as_completed
     from distributed.client import FutureCancelledError
@@ -321,12 +375,15 @@ def _run_dask(todo: list[SweepCase], scheduler, workers, done: Callable) -> None
     with ExitStack() as stack:
         client = _connect(stack, scheduler, workers)
         futures = {}
+        # longest first: submitted in that order (the first tasks start as soon as they arrive) and
+        # with that priority (for the queue), so that no long case runs alone at the end
+        work = {sc.index: work_estimate(sc.case) for sc in todo}
         try:
-            for sc in todo:
-                fut = client.submit(run_case, sc.case, key=f"seacable-case-{sc.stem}-{sc.key[:16]}", pure=False,
-                                    priority=work_estimate(sc.case))
+            for sc in sorted(todo, key=lambda sc: -work[sc.index]):
+                fut = client.submit(run_case, sc.case, store.target(sc), key=f"seacable-case-{sc.stem}-{sc.key[:16]}",
+                                    pure=False, priority=work[sc.index])
                 futures[fut] = sc
-            for fut in as_completed(list(futures)):
+            for fut in as_completed(list(futures), loop=client.loop):
                 sc = futures.pop(fut)
                 try:
                     outcome = fut.result()

@@ -37,7 +37,7 @@ from ..errors import CaseFileError, InputError
 from ..io.case_file import dump_case, load_case_data, parse_case, resolve_files
 from ..line import LineType
 
-__all__ = ["Range", "SweepFile", "Sweep", "SweepCase", "load_sweep", "parse_path"]
+__all__ = ["Range", "SweepFile", "Sweep", "SweepCase", "is_sweep_file", "load_sweep", "parse_path"]
 
 
 class Range(Model):
@@ -221,7 +221,7 @@ class Sweep:
         self.base = _base_data(base)
         spec = grid if grid is not None else table
         self.parameters = tuple(str(p) for p in spec)
-        columns = [list(v.values()) if isinstance(v, Range) else list(v) for v in spec.values()]
+        columns = [[_plain(x) for x in (v.values() if isinstance(v, Range) else v)] for v in spec.values()]
         if table is not None:
             sizes = {len(c) for c in columns}
             if len(sizes) != 1:
@@ -310,6 +310,11 @@ class Sweep:
         return sorted(paths)
 
 
+def _plain(value):
+    """A numpy scalar as the Python number it holds (for YAML, JSON and the case's validation)."""
+    return value.item() if hasattr(value, "item") and getattr(value, "ndim", None) == 0 else value
+
+
 def _did_you_mean(path: str, candidates: list[str]) -> str:
     close = difflib.get_close_matches(path, candidates, n=1, cutoff=0.6)
     if close:
@@ -364,6 +369,15 @@ def _read_table(path: Path, source: str) -> dict[str, list]:
             except yaml.YAMLError:
                 columns[h].append(cell.strip())
     return columns
+
+
+def is_sweep_file(path: str | Path) -> bool:
+    """Whether a YAML file is a sweep (top-level 'base' and 'grid' or 'table') rather than a case."""
+    try:
+        data = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, yaml.YAMLError):
+        return False
+    return isinstance(data, dict) and "base" in data and ("grid" in data or "table" in data)
 
 
 def load_sweep(path: str | Path) -> Sweep:

@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 import seacable as sc
+from seacable.sweeps import is_sweep_file
 from seacable.io import dump_case, parse_case
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
@@ -43,7 +44,10 @@ def test_dump_and_parse_round_trip(tmp_path):
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.yaml")), ids=lambda p: p.name)
 def test_every_example_is_valid(path):
-    sc.load_case(path)
+    if is_sweep_file(path):
+        assert all(c.case is not None for c in sc.load_sweep(path).cases())
+    else:
+        sc.load_case(path)
 
 
 @pytest.mark.parametrize("edit, expected", [

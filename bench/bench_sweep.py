@@ -1,0 +1,121 @@
+"""Speed-up of a sweep on a 2-worker local Dask cluster over the serial loop, and the engine's per-task cost.
+
+The sweep is the example examples/paper001_speed_sweep.yaml: paper 001's cable laid at 18 ship speeds
+from 0.75 to 5 m/s (the work per case grows about as the speed squared, so the cases are unequal).
+
+Timed, each from a fresh output folder, after a warm-up that compiles the numba kernels:
+- the serial loop: ``seacable.run`` on each case in turn, in this process;
+- ``seacable.sweep(..., scheduler="synchronous")``: the same loop with the sweep's bookkeeping
+  (per-case NetCDF and records, summary);
+- ``seacable.sweep(..., workers=2)``: the default, a local cluster started and stopped by seacable
+  (what ``seacable sweep`` does), its start-up included;
+- the same sweep sent to an already running 2-worker cluster (``scheduler=ADDRESS``);
+- the machine's own limit: two plain processes, each running its half of the cases (split by their
+  serial run times, longest first) in a loop, timed inside the processes (no Dask, no start-up).
+
+The per-task overhead of the engine is measured on 400 tiny cases (a static catenary, well under a
+millisecond each) on the running cluster: (wall time x workers - the cases' own run time) / cases.
+The issue's target: a speed-up of at least 1.7 on 2 cores.
+
+Run: ``python bench/bench_sweep.py``.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import seacable as sc
+from seacable.sweeps import load_sweep
+
+SWEEP = Path(__file__).parents[1] / "examples" / "paper001_speed_sweep.yaml"
+WORKERS = 2
+
+
+def timed(fn):
+    start = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - start, out
+
+
+def _loop(indices) -> float:
+    """Run the sweep's cases ``indices`` in a loop in this process (after a warm-up); the loop's time."""
+    spec = load_sweep(SWEEP)
+    cases = [c.case for c in spec.cases()]
+    sc.run(cases[0].replace(analysis=cases[0].analysis.replace(duration=10.0)))
+    start = time.perf_counter()
+    for i in indices:
+        sc.run(cases[i])
+    return time.perf_counter() - start
+
+
+def _halves(times) -> list[list[int]]:
+    """Longest-first greedy split of the cases over two processes."""
+    halves, load = [[], []], [0.0, 0.0]
+    for i in np.argsort(times)[::-1]:
+        k = int(np.argmin(load))
+        halves[k].append(int(i))
+        load[k] += times[i]
+    return halves
+
+
+def main() -> None:
+    from distributed import LocalCluster
+
+    spec = load_sweep(SWEEP)
+    cases = [c.case for c in spec.cases()]
+    sc.run(cases[0].replace(analysis=cases[0].analysis.replace(duration=10.0)))   # compile
+    print(f"{SWEEP.name}: {len(cases)} laying cases, {os.cpu_count()} cores, {WORKERS} workers")
+
+    times = []
+    start = time.perf_counter()
+    for c in cases:
+        times.append(timed(lambda: sc.run(c))[0])
+    t_loop = time.perf_counter() - start
+    import multiprocessing
+
+    with multiprocessing.get_context("spawn").Pool(WORKERS) as pool:
+        t_limit = max(pool.map(_loop, _halves(np.array(times))))
+    with tempfile.TemporaryDirectory() as tmp:
+        t_sync, _ = timed(lambda: sc.sweep(spec, Path(tmp) / "sync", scheduler="synchronous"))
+        t_local, summary = timed(lambda: sc.sweep(spec, Path(tmp) / "local", workers=WORKERS))
+        with LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True, dashboard_address=None,
+                          silence_logs=40) as cluster:
+            address = cluster.scheduler_address
+            sc.sweep(sc.Sweep(spec.base, grid={"analysis.duration": [10.0, 12.0]}), Path(tmp) / "warm",
+                     scheduler=address)   # workers import seacable and load the kernels
+            t_warm, _ = timed(lambda: sc.sweep(spec, Path(tmp) / "running", scheduler=address))
+
+            static = sc.Case(name="tiny", line=sc.Line.single(sc.LineType(
+                diameter=0.09, mass_per_length=77.7066, axial_stiffness=384.243e6), 902.2),
+                environment=sc.Environment(depth=320.0),
+                analysis=sc.StaticAnalysis(fairlead=(848.67, -70.0), points_per_segment=2))
+            tiny = sc.Sweep(static, grid={"analysis.fairlead[0]": list(np.linspace(840.0, 850.0, 400))})
+            t_tiny, tiny_summary = timed(lambda: sc.sweep(tiny, Path(tmp) / "tiny", scheduler=address))
+
+    case_time = float(summary.wall_time.sum())
+    print()
+    print(f"{'run':<44} {'wall [s]':>9} {'speed-up':>9}")
+    print(f"{'serial loop of seacable.run':<44} {t_loop:9.2f} {1.0:9.2f}")
+    print(f"{'sweep, synchronous (one process)':<44} {t_sync:9.2f} {t_loop / t_sync:9.2f}")
+    print(f"{'sweep, local cluster started by seacable':<44} {t_local:9.2f} {t_loop / t_local:9.2f}")
+    print(f"{'sweep, running 2-worker cluster':<44} {t_warm:9.2f} {t_loop / t_warm:9.2f}")
+    print(f"{'limit: 2 plain processes, balanced halves':<44} {t_limit:9.2f} {t_loop / t_limit:9.2f}")
+    print()
+    n_tiny = tiny_summary.sizes["case"]
+    tiny_run = float(tiny_summary.wall_time.sum())
+    per_task = (t_tiny * WORKERS - tiny_run) / n_tiny
+    mean_case = case_time / len(cases)
+    print(f"laying cases: {mean_case:.2f} s each on average in the workers ({min(summary.wall_time.values):.2f} "
+          f"to {max(summary.wall_time.values):.2f} s)")
+    print(f"engine per task: {per_task * 1e3:.1f} ms of worker time ({n_tiny} static cases of "
+          f"{tiny_run / n_tiny * 1e3:.2f} ms each: submit, run, gather the result, write its NetCDF and record)")
+    print(f"per-task overhead / laying case time: {per_task / mean_case:.2%}")
+
+
+if __name__ == "__main__":
+    main()
