@@ -189,6 +189,26 @@ def test_sweep_on_2_workers_equals_cases_one_by_one(tmp_path, scheduler, one_by_
     assert len(table) == 13
 
 
+def test_a_worker_killed_mid_sweep_costs_nothing(tmp_path, scheduler, one_by_one):
+    """Dask runs the killed worker's case again on a worker the nanny restarts; the sweep completes."""
+    from distributed import Client
+
+    with Client(scheduler, set_as_default=False) as client:
+        pids = list(client.run(os.getpid).values())
+    killed = []
+
+    def kill_one(progress):
+        if progress.record is not None and not killed:
+            os.kill(pids[0], signal.SIGKILL)
+            killed.append(progress.done)
+
+    summary = sc.sweep(grid_sweep(), tmp_path, scheduler=scheduler, progress=kill_one)
+    assert killed and killed[0] < 12
+    assert list(summary.status.values) == ["done"] * 12
+    top = [float(ds.top_tension.max()) for ds in one_by_one]
+    np.testing.assert_array_equal(summary.top_tension_max.values, top)
+
+
 def test_failed_cases_are_reported_and_the_others_complete(tmp_path, scheduler):
     """A table of cases: one with a bad value (rejected before it runs), one that fails in its run."""
     (tmp_path / "cases.csv").write_text(
