@@ -74,7 +74,7 @@ def main() -> None:
     times = []
     start = time.perf_counter()
     for c in cases:
-        times.append(timed(lambda: sc.run(c))[0])
+        times.append(timed(lambda c=c: sc.run(c))[0])
     t_loop = time.perf_counter() - start
     import multiprocessing
 

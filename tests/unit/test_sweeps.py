@@ -284,7 +284,7 @@ def test_interrupted_sweep_resumes_with_the_missing_cases_only(tmp_path):
     proc.stderr.close()
     done = {p.stem: p.stat().st_mtime_ns for p in records.glob("[0-9]*.json")}   # not the partial files
     assert 3 <= len(done) < 12, "kill the sweep part way"
-    result = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    result = subprocess.run(cmd, check=False, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stderr
     summary = sc.read_netcdf(out / "summary.nc")
     assert list(summary.status.values) == ["done"] * 12
@@ -307,3 +307,21 @@ def test_summary_table_columns(tmp_path):
     table = summary_table(summary)
     assert list(table.columns[:3]) == ["name", "analysis.ship.speed", "status"]
     assert not (tmp_path / "summary.nc").exists()
+
+
+def test_engine_argument_errors(tmp_path, capsys):
+    with pytest.raises(InputError, match="workers must be a whole number >= 1, got 0"):
+        sc.sweep(grid_sweep(), tmp_path, workers=0)
+    with pytest.raises(InputError, match="workers .2. sizes the local cluster"):
+        sc.sweep(grid_sweep(), tmp_path, workers=2, scheduler="synchronous")
+    # a scheduler that is not there: one message, exit status 2 (the client gives up after 10 s)
+    spec = write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0]})
+    assert main(["sweep", str(spec), "-o", str(tmp_path / "out"), "--scheduler", "tcp://127.0.0.1:9"]) == 2
+    assert "cannot reach the Dask scheduler at 'tcp://127.0.0.1:9'" in capsys.readouterr().err
+
+
+def test_grid_values_must_be_lists():
+    with pytest.raises(InputError, match=r"parameter 'analysis.ship.speed' needs a list of values .* got 2.0"):
+        Sweep(BASE, grid={"analysis.ship.speed": 2.0})
+    with pytest.raises(InputError, match="the table's columns have different lengths"):
+        Sweep(BASE, table={"analysis.ship.speed": [1.0, 2.0], "analysis.duration": [10.0]})

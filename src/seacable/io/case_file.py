@@ -16,7 +16,7 @@ import yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 
-__all__ = ["load_case", "load_case_data", "parse_case", "dump_case", "case_schema", "resolve_files"]
+__all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "resolve_files"]
 
 
 def parse_case(data: Any, *, source: str = "case") -> Case:

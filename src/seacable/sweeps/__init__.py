@@ -8,5 +8,5 @@ and resumes an interrupted sweep. See :mod:`seacable.sweeps.spec` for the sweep 
 from .engine import SweepProgress, run_case, summary_dataset, sweep, work_estimate
 from .spec import Range, Sweep, SweepCase, SweepFile, is_sweep_file, load_sweep, parse_path
 
-__all__ = ["Sweep", "SweepCase", "SweepFile", "Range", "SweepProgress", "is_sweep_file", "load_sweep", "parse_path", "sweep",
-           "run_case", "summary_dataset", "work_estimate"]
+__all__ = ["Range", "Sweep", "SweepCase", "SweepFile", "SweepProgress", "is_sweep_file", "load_sweep", "parse_path",
+           "run_case", "summary_dataset", "sweep", "work_estimate"]

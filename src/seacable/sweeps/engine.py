@@ -26,10 +26,10 @@ import time
 import traceback
 import uuid
 import warnings
+from collections.abc import Callable
 from contextlib import ExitStack
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 import xarray as xr
@@ -41,7 +41,7 @@ from ..line import LineType, Segment
 from ..results import make_dataset, var, write_netcdf
 from .spec import Sweep, SweepCase, load_sweep, parse_path
 
-__all__ = ["SweepProgress", "run_case", "sweep", "summary_dataset", "work_estimate"]
+__all__ = ["SweepProgress", "run_case", "summary_dataset", "sweep", "work_estimate"]
 
 #: ``scheduler`` value that runs the cases in this process, one after another, without Dask.
 SYNCHRONOUS = "synchronous"
@@ -128,7 +128,7 @@ def run_case(case, target: ResultTarget | None = None) -> dict:
             extremes = case_extremes(ds)
         except SeacableError as err:
             out["error"] = f"{type(err).__name__}: {err}"
-        except Exception as err:  # a bug: keep it with the case, run the others
+        except Exception as err:  # noqa: BLE001  (a bug: keep it with the case, run the others)
             out["error"] = (f"internal error, please report it: {type(err).__name__}: {err}\n"
                             + traceback.format_exc())
         else:
@@ -168,7 +168,7 @@ def work_estimate(case) -> float:
             return a.duration / a.time_step * (a.n_elements or 20)
         if kind == "towline_dynamic":
             return a.duration * a.n_elements ** 2
-    except Exception:  # an estimate only: never let it stop a sweep
+    except Exception:  # noqa: BLE001  (an estimate only: never let it stop a sweep)
         return 0.0
     return 1.0
 
@@ -261,7 +261,7 @@ class _Store:
                   "status": outcome["status"], "error": outcome["error"], "warnings": outcome["warnings"],
                   "wall_time": outcome["wall_time"], "extremes": outcome["extremes"],
                   "retry": bool(outcome.get("retry", False)), "seacable_version": __version__,
-                  "finished": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")}
+                  "finished": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")}
         if outcome.get("result") is not None:
             target = self.target(sc)
             write_result(outcome["result"], self.cases, sc.stem, target.attrs)
@@ -313,8 +313,13 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         If the sweep file is bad (an unknown parameter path, say); then nothing runs.
     """
     sweep_ = spec if isinstance(spec, Sweep) else load_sweep(spec)
-    if workers is not None and (not isinstance(workers, int) or workers < 1):
-        raise InputError(f"workers must be a whole number >= 1, got {workers!r}.")
+    if workers is not None:
+        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+            raise InputError(f"workers must be a whole number >= 1, got {workers!r}. Suggested fix: leave it "
+                             "out for one worker per core.")
+        if scheduler is not None:
+            raise InputError(f"workers ({workers}) sizes the local cluster seacable starts; with scheduler "
+                             f"{scheduler!r} it has no meaning. Suggested fix: leave out one of the two.")
     cases = sweep_.cases()
     store = _Store(Path(outdir), sweep_.name)
     (store.root / "sweep.yaml").write_text(sweep_.text, encoding="utf-8")
@@ -346,6 +351,7 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         ran += 1
         records[sc.index] = store.write(sc, outcome)
         report(records[sc.index])
+
     interrupted = False
     try:
         if scheduler == SYNCHRONOUS:
@@ -442,8 +448,11 @@ def summary_dataset(sweep_: Sweep, records: dict[int, dict], reused=frozenset())
         coords[path] = var("case", _column([c.values[k] for c in cases]),
                            _parameter_units(first, parse_path(path)), path)
     get = [records.get(c.index) for c in cases]
-    text = lambda key, join="": np.array([join.join(r[key]) if isinstance(r and r[key], list)  # noqa: E731
-                                          else (r[key] if r else "") for r in get], dtype=object)
+
+    def text(key, join=""):
+        return np.array([join.join(r[key]) if isinstance(r and r[key], list) else (r[key] if r else "")
+                         for r in get], dtype=object)
+
     data = {
         "status": var("case", np.array([r["status"] if r else "not run" for r in get], dtype=object), "1",
                       "status of the case (done, failed, not run)"),

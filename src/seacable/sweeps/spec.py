@@ -37,7 +37,7 @@ from ..errors import CaseFileError, InputError
 from ..io.case_file import dump_case, load_case_data, parse_case, resolve_files
 from ..line import LineType
 
-__all__ = ["Range", "SweepFile", "Sweep", "SweepCase", "is_sweep_file", "load_sweep", "parse_path"]
+__all__ = ["Range", "Sweep", "SweepCase", "SweepFile", "is_sweep_file", "load_sweep", "parse_path"]
 
 
 class Range(Model):
@@ -65,7 +65,7 @@ class Range(Model):
         """The values, start to stop."""
         if self.num is not None:
             return [self.start + (self.stop - self.start) * i / (self.num - 1) for i in range(self.num)]
-        n = int(math.floor((self.stop - self.start) / self.step * (1 + 1e-12) + 1e-9))
+        n = math.floor((self.stop - self.start) / self.step * (1 + 1e-12) + 1e-9)
         return [self.start + i * self.step for i in range(n + 1)]
 
 
@@ -221,6 +221,11 @@ class Sweep:
         self.base = _base_data(base)
         spec = grid if grid is not None else table
         self.parameters = tuple(str(p) for p in spec)
+        for path, values in spec.items():
+            if not isinstance(values, Range) and (isinstance(values, (str, bytes, dict))
+                                                  or not hasattr(values, "__iter__")):
+                raise InputError(f"{source}: parameter '{path}' needs a list of values (or a range), got "
+                                 f"{values!r}. Suggested fix: write e.g. [{values!r}].")
         columns = [[_plain(x) for x in (v.values() if isinstance(v, Range) else v)] for v in spec.values()]
         if table is not None:
             sizes = {len(c) for c in columns}
@@ -254,10 +259,13 @@ class Sweep:
         name = f"{self.name}_{index:04d}"
         data = copy.deepcopy(self.base)
         data["name"] = name
-        for parts, value in zip(self._parts, row):
-            _set(data, parts, value)
         where = f"case {index} ({', '.join(f'{p} = {v!r}' for p, v in zip(self.parameters, row))})"
         try:
+            for parts, value in zip(self._parts, row):
+                try:
+                    _set(data, parts, value)
+                except _PathError as err:   # a path through a value an earlier parameter set
+                    raise InputError(f"{where}: {err}.") from None
             case = parse_case(data, source=where)
         except InputError as err:
             text = json.dumps(data, sort_keys=True, default=str)
