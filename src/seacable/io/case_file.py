@@ -16,7 +16,7 @@ import yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 
-__all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "resolve_files"]
+__all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
 
 
 def parse_case(data: Any, *, source: str = "case") -> Case:
@@ -37,6 +37,32 @@ def parse_case(data: Any, *, source: str = "case") -> Case:
         raise CaseFileError(f"{source}: {err}") from None
 
 
+def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
+    """Read a YAML file: its data and its text.
+
+    Raises
+    ------
+    CaseFileError
+        If the file cannot be read or is not YAML; ``what`` names the file in the message.
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"{what} '{path}' does not exist. Suggested fix: check the path; "
+                            "examples/ holds ready-made ones.") from None
+    except (OSError, UnicodeDecodeError) as err:
+        raise CaseFileError(f"{what} '{path}' cannot be read: {err}.") from None
+    try:
+        return yaml.safe_load(text), text
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None)
+        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
+        problem = getattr(err, "problem", None) or str(err)
+        raise CaseFileError(f"{path}: not valid YAML{where}: {problem}. Suggested fix: check the "
+                            "indentation and the ':' after each key.") from None
+
+
 def load_case_data(path: str | Path) -> dict:
     """Read a YAML case file into plain data, not yet validated.
 
@@ -49,21 +75,7 @@ def load_case_data(path: str | Path) -> dict:
         If the file cannot be read or is not YAML.
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise CaseFileError(f"case file '{path}' does not exist. Suggested fix: check the path; "
-                            "examples/ holds ready-made cases.") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise CaseFileError(f"case file '{path}' cannot be read: {err}.") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        mark = getattr(err, "problem_mark", None)
-        where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
-        problem = getattr(err, "problem", None) or str(err)
-        raise CaseFileError(f"{path}: not valid YAML{where}: {problem}. Suggested fix: check the "
-                            "indentation and the ':' after each key.") from None
+    data, _ = read_yaml(path)
     if not isinstance(data, dict):
         raise CaseFileError(f"{path}: a case file must be a mapping of keys to values at the top level, "
                             f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")

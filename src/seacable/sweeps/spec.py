@@ -34,7 +34,7 @@ from pydantic import Field, model_validator
 from .._model import Model
 from ..case import Case
 from ..errors import CaseFileError, InputError
-from ..io.case_file import dump_case, load_case_data, parse_case, resolve_files
+from ..io.case_file import dump_case, load_case_data, parse_case, read_yaml, resolve_files
 from ..line import LineType
 
 __all__ = ["Range", "Sweep", "SweepCase", "SweepFile", "is_sweep_file", "load_sweep", "parse_path"]
@@ -400,17 +400,7 @@ def load_sweep(path: str | Path) -> Sweep:
     """
     path = Path(path)
     source = str(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise CaseFileError(f"sweep file '{path}' does not exist. Suggested fix: check the path; examples/ "
-                            "holds a sweep.") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise CaseFileError(f"sweep file '{path}' cannot be read: {err}.") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as err:
-        raise CaseFileError(f"{path}: not valid YAML: {err}.") from None
+    data, text = read_yaml(path, "sweep file")
     if not isinstance(data, dict):
         raise CaseFileError(f"{path}: a sweep file must be a mapping with 'base' and 'grid' or 'table'.")
     try:
