@@ -135,8 +135,6 @@ class _SweepProgress:
 def _print_summary(summary) -> None:
     import json
 
-    import numpy as np
-
     from .extremes import KEY_FIGURES
     from .sweeps.engine import summary_table
 
@@ -151,12 +149,10 @@ def _print_summary(summary) -> None:
         return f"{name} [{units}]" if units and units != "1" else name
 
     table.columns = [head(c) for c in table.columns]
-    with np.printoptions(linewidth=200):
-        print(table.to_string(float_format=lambda v: f"{v:.6g}"))
+    print(table.to_string(float_format=lambda v: f"{v:.6g}"))
 
 
 def _cmd_sweep(args) -> int:
-    from .results import write_netcdf  # noqa: F401  (summary written by sweep)
     from .sweeps import load_sweep, sweep
 
     spec = load_sweep(args.sweep)
