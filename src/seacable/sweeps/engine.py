@@ -374,9 +374,9 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
 
 def _run_dask(todo: list[SweepCase], scheduler, workers, store: _Store, done: Callable) -> None:
     """Submit one task per case, longest first; hand each outcome to ``done`` as it finishes."""
-    from distributed import as_completed
-    from distributed.client import FutureCancelledError
-    from distributed.scheduler import KilledWorker
+    from concurrent.futures import CancelledError
+
+    from distributed import KilledWorker, as_completed
 
     with ExitStack() as stack:
         client = _connect(stack, scheduler, workers)
@@ -397,7 +397,7 @@ def _run_dask(todo: list[SweepCase], scheduler, workers, store: _Store, done: Ca
                     outcome = {**_invalid(sc), "retry": True,
                                "error": f"the case's worker died ({err}); out of memory, or a crash. It will "
                                         "run again when the sweep is run again."}
-                except FutureCancelledError as err:
+                except CancelledError as err:
                     outcome = {**_invalid(sc), "retry": True, "error": f"cancelled: {err}"}
                 fut.release()
                 done(sc, outcome)
