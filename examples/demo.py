@@ -32,7 +32,7 @@ CASES = {
         f"{float(ds.laid_length[-1]):.0f} m laid"),
     "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
                                      f"{float(ds.top_tension.min()):.1f} N while stopped"),
-    "oc3_hywind_static": lambda ds: (f"fairlead tension {float(ds.tension_fairlead) / 1e3:.1f} kN, "
+    "oc3_hywind_static": lambda ds: (f"fairlead tension {float(ds.fairlead_tension) / 1e3:.1f} kN, "
                                    f"{float(ds.grounded_length):.1f} m on the seabed"),
     "oc3_hywind_line": lambda ds: (f"5 m surge at 20 s in 6 m waves: fairlead tension "
                                    f"{float(ds.fairlead_tension.min()) / 1e3:.0f} to "
@@ -52,10 +52,10 @@ CASES = {
                                           f"{float(ds.H_fairlead[-1]) / 1e3:.0f} kN"),
     "paper003_zigzag": lambda ds: (f"tug zig-zag 10 m / 50 s at 2 knots: sway {float(np.ptp(ds.y.values[:, 0])):.1f} m at the tug, "
                                    f"{float(np.ptp(ds.y.values[ds.time.values >= 200, -2])):.1f} m next to the barge; barge tension up "
-                                   f"to {float(ds.tension_barge.max()) / 1e3:.1f} kN"),
+                                   f"to {float(ds.barge_tension.max()) / 1e3:.1f} kN"),
     "paper003_payout": lambda ds: (f"line paid out from the bitt in {float(ds.time[ds.released.all('element')][0]):.0f} s; "
                                    f"barge at {float(ds.barge_speed[-1]):.3f} m/s, tension "
-                                   f"{float(ds.tension_barge[-1]) / 1e3:.1f} kN"),
+                                   f"{float(ds.barge_tension[-1]) / 1e3:.1f} kN"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),

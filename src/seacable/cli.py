@@ -213,7 +213,7 @@ def _cmd_plot(args) -> int:
 
 def _cmd_animate(args) -> int:
     from .plot import animate_laying
-    from .plot_towline import animate_towline
+    from .plot import animate_towline
     from .results import read_netcdf
 
     path = Path(args.result)

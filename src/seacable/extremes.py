@@ -19,8 +19,8 @@ __all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads"]
 
 #: The variable holding the tension at the top end (fairlead, ship, tow point, tug), by analysis.
 TOP_TENSION = {
-    "static": "tension_fairlead",
-    "pushover": "tension_fairlead",
+    "static": "fairlead_tension",
+    "pushover": "fairlead_tension",
     "towed_steady": "top_tension",
     "towed_dynamic": "top_tension",
     "laying_theory": "top_tension",
@@ -28,7 +28,7 @@ TOP_TENSION = {
     "mooring_static": "fairlead_tension",
     "mooring_pushover": "fairlead_tension",
     "mooring_dynamic": "fairlead_tension",
-    "towline_dynamic": "tension_tug",
+    "towline_dynamic": "top_tension",
 }
 
 #: Time series of each analysis reduced to their extremes (max and min) and to their end value.
@@ -37,7 +37,7 @@ _SERIES = {
                        "end": ("entry_angle", "top_tension", "touchdown_x", "bottom_tension", "suspended_length",
                                "slack")},
     "towed_dynamic": {"extremes": ("lower_end_depth",), "end": ("lower_end_depth",)},
-    "towline_dynamic": {"extremes": ("tension_barge",), "end": ("tension_barge", "barge_speed")},
+    "towline_dynamic": {"extremes": ("barge_tension",), "end": ("barge_tension", "barge_speed")},
     "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length"), "end": ()},
 }
 
@@ -45,7 +45,7 @@ _SERIES = {
 KEY_FIGURES = {
     "laying_dynamic": ("entry_angle_end", "layback_end", "bottom_tension_max"),
     "towed_dynamic": ("lower_end_depth_max", "lower_end_depth_min"),
-    "towline_dynamic": ("tension_barge_max", "tension_barge_min"),
+    "towline_dynamic": ("barge_tension_max", "barge_tension_min"),
     "mooring_dynamic": ("anchor_tension_max", "snap_load_max"),
     "static": ("touchdown_x", "grounded_length"),
     "towed_steady": ("layback", "lower_end_depth"),

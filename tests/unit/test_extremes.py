@@ -33,8 +33,8 @@ def _towline_like():
     tension[11, 2] = 3e4
     ds = xr.Dataset(
         {"tension": (("time", "node"), tension, {"units": "N", "long_name": "joint tension"}),
-         "tension_tug": ("time", tension[:, 0], {"units": "N", "long_name": "towline tension at the tug"}),
-         "tension_barge": ("time", np.r_[np.full(90, 1e4), np.full(10, 2e4)],
+         "top_tension": ("time", tension[:, 0], {"units": "N", "long_name": "towline tension at the tug"}),
+         "barge_tension": ("time", np.r_[np.full(90, 1e4), np.full(10, 2e4)],
                            {"units": "N", "long_name": "towline tension at the barge"}),
          "barge_speed": ("time", np.full(t.size, 1.0), {"units": "m s-1", "long_name": "barge speed"})},
         coords={"time": ("time", t, {"units": "s", "long_name": "time"})},
@@ -48,10 +48,10 @@ def test_tension_extremes_snaps_and_end_values():
     assert value["top_tension_max"] == value["top_tension_min"] == 2e4
     assert value["tension_max"] == 3e4 and value["tension_min"] == 0.0
     assert value["snap_count"] == 1 and value["snap_load_max"] == 3e4
-    assert value["tension_barge_max"] == 2e4 and value["tension_barge_min"] == 1e4
+    assert value["barge_tension_max"] == 2e4 and value["barge_tension_min"] == 1e4
     # the end value is the mean over the last tenth of the run: the last 10 of 100 samples
-    assert value["tension_barge_end"] == 2e4
-    assert out["tension_barge_end"].attrs["units"] == "N"
+    assert value["barge_tension_end"] == 2e4
+    assert out["barge_tension_end"].attrs["units"] == "N"
     assert out["snap_load_max"].attrs["long_name"] == "largest snap load (0: no snap event)"
 
 
@@ -59,8 +59,8 @@ def test_static_catenary_max_tension_is_at_the_fairlead():
     ds = sc.run(sc.load_case(EXAMPLES / "oc3_hywind_static.yaml"))
     out = {k: float(v.values) for k, v in case_extremes(ds).items()}
     # a catenary's tension grows with height (dT/dz = w): the largest is the fairlead's
-    assert out["top_tension_max"] == out["top_tension_min"] == float(ds.tension_fairlead)
-    assert out["tension_max"] == pytest.approx(float(ds.tension_fairlead), rel=1e-9)
+    assert out["top_tension_max"] == out["top_tension_min"] == float(ds.fairlead_tension)
+    assert out["tension_max"] == pytest.approx(float(ds.fairlead_tension), rel=1e-9)
     # every scalar of the result comes along
     assert out["grounded_length"] == float(ds.grounded_length)
     assert "snap_count" not in out       # no time axis

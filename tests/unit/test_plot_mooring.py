@@ -1,4 +1,4 @@
-"""Figures of the mooring analyses (``seacable.plot_mooring``).
+"""Figures of the mooring analyses (``seacable.plot.mooring``).
 
 The results are real runs of the OC3-Hywind line (examples/oc3_hywind_line.yaml: 902.2 m of
 line, anchor 320 m deep, fairlead at x = 848.67 m, z = -70 m) with 20 elements, through
@@ -26,8 +26,9 @@ import matplotlib.pyplot as plt
 import seacable as sc
 from seacable import plot as plot_module
 from seacable.errors import InputError
-from seacable.plot import _snapshot_times, plot_result
-from seacable.plot_mooring import (
+from seacable.plot import plot_result
+from seacable.plot._core import _snapshot_times
+from seacable.plot.mooring import (
     MOORING_FIGURES,
     plot_mooring_dynamic,
     plot_mooring_pushover,

@@ -18,7 +18,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from seacable.errors import InputError  # noqa: E402
 from seacable.io import load_case  # noqa: E402
-from seacable.plot import FIGURES, _nice_step, _snapshot_times, plot_result  # noqa: E402
+from seacable.plot import FIGURES, plot_result
+from seacable.plot._core import _nice_step, _snapshot_times  # noqa: E402
 from seacable.simulate import run  # noqa: E402
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

@@ -23,10 +23,10 @@ import matplotlib.pyplot as plt
 from PIL import Image
 
 from seacable import plot as plot_module
-from seacable import plot_towline as pt
+from seacable.plot import towline as pt
 from seacable.errors import InputError
 from seacable.plot import plot_result
-from seacable.plot_towline import (
+from seacable.plot.towline import (
     TOWLINE_FIGURES,
     animate_towline,
     towline_distance,
@@ -64,9 +64,9 @@ def towline_result(time=None, *, amplitude=AMPLITUDE, speed=2 * KNOT, payout=Fal
             hidden = (j[0] >= 1) & (j[0] <= N - 1 - k)  # joints still on the bitt
             x[i, hidden] = y[i, hidden] = z[i, hidden] = np.nan
             released[i, : N - k] = False
-    tension_tug = 20e3 + 5e3 * np.sin(2 * np.pi * t[:, 0] / PERIOD)
-    tension_barge = 15e3 + 3e3 * np.sin(2 * np.pi * t[:, 0] / PERIOD - 0.5)
-    tension = np.linspace(1.0, 0.75, N + 1)[None, :] * tension_tug[:, None]
+    top_tension = 20e3 + 5e3 * np.sin(2 * np.pi * t[:, 0] / PERIOD)
+    barge_tension = 15e3 + 3e3 * np.sin(2 * np.pi * t[:, 0] / PERIOD - 0.5)
+    tension = np.linspace(1.0, 0.75, N + 1)[None, :] * top_tension[:, None]
 
     def mid(a):
         return 0.5 * (a[:, 1:] + a[:, :-1])
@@ -77,8 +77,8 @@ def towline_result(time=None, *, amplitude=AMPLITUDE, speed=2 * KNOT, payout=Fal
         "x": var(tn, x, "m", "x position"), "y": var(tn, y, "m", "y position"),
         "z": var(tn, z, "m", "elevation"),
         "tension": var(tn, tension, "N", "joint tension"),
-        "tension_tug": var("time", tension_tug, "N", "tension at the tug"),
-        "tension_barge": var("time", tension_barge, "N", "tension at the barge"),
+        "top_tension": var("time", top_tension, "N", "tension at the tug"),
+        "barge_tension": var("time", barge_tension, "N", "tension at the barge"),
         "tug_x": var("time", x[:, 0], "m", "tug tow point x"), "tug_y": var("time", y[:, 0], "m", "tug tow point y"),
         "barge_x": var("time", x[:, N] - 25.0, "m", "barge x"), "barge_y": var("time", y[:, N], "m", "barge y"),
         "barge_heading": var("time", 0 * t[:, 0], "rad", "barge heading"),
@@ -145,8 +145,8 @@ def test_tension_curves_in_kilonewtons(zigzag):
     lines = _labelled(ax1)
     assert list(lines) == ["at the tug", "at the barge"]
     # the plotted values are the result's divided by 1e3: exact to round-off
-    np.testing.assert_allclose(lines["at the tug"].get_ydata(), zigzag.tension_tug.values / 1e3, rtol=1e-15)
-    np.testing.assert_allclose(lines["at the barge"].get_ydata(), zigzag.tension_barge.values / 1e3, rtol=1e-15)
+    np.testing.assert_allclose(lines["at the tug"].get_ydata(), zigzag.top_tension.values / 1e3, rtol=1e-15)
+    np.testing.assert_allclose(lines["at the barge"].get_ydata(), zigzag.barge_tension.values / 1e3, rtol=1e-15)
     np.testing.assert_array_equal(lines["at the tug"].get_xdata(), zigzag.time.values)
     assert ax1.get_ylabel() == "towline tension [kN]"
     assert ax2.get_ylabel() == "barge speed [m/s]" and ax2.get_xlabel() == "time [s]"

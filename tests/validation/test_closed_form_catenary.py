@@ -78,7 +78,7 @@ def _textbook_spans(r, x, z, L, EA, w, mu):
         xB = max(L - H / (mu * w), 0.0) if mu > 0 else 0.0
         return L + (H * L - mu * w * (L ** 2 - xB ** 2) / 2) / EA, 0.0
     if r.regime == R.WEIGHTLESS:
-        T = float(r.tension_fairlead)
+        T = float(r.fairlead_tension)
         return L * (1 + T / EA) * H / T, L * (1 + T / EA) * VF / T
 
 

@@ -66,7 +66,7 @@ def test_steady_tow_tension_is_the_barge_resistance(steady):
     # the towline pulls along its last element, 1-2 deg from horizontal: H = T cos(angle) differs from
     # T by < 1e-3; the barge has settled to the tug's speed (its surge oscillation decays by 1e-4 by then)
     assert last.barge_speed.values == pytest.approx(2.5722, rel=1e-4)
-    assert last.tension_barge.values == pytest.approx(resistance, rel=1e-3)
+    assert last.barge_tension.values == pytest.approx(resistance, rel=1e-3)
 
 
 def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
@@ -82,8 +82,8 @@ def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
     # 0.9 m sag (measured 5.5 mm): rigid elements carry their weight at their centres, the catenary
     # continuously, so the joints of a chain of rigid links lie on it to O(l^2); and each pin gives by
     # its shear over its stiffness k / 3 (some 2 mm here)
-    assert float(last.tension_barge) == pytest.approx(float(res.tension_anchor), rel=1e-3)
-    assert float(last.tension_tug) == pytest.approx(float(res.tension_fairlead), rel=1e-3)
+    assert float(last.barge_tension) == pytest.approx(float(res.anchor_tension), rel=1e-3)
+    assert float(last.top_tension) == pytest.approx(float(res.fairlead_tension), rel=1e-3)
     assert np.max(np.abs(z - z_cat)) < 1e-2
 
 
@@ -101,7 +101,7 @@ def test_steady_tow_agrees_with_the_mooring_finite_element_model(steady):
     fe_support = np.linalg.norm(st.support[[0, -1]], axis=1)
     # end tensions within 0.2 % (the two discretisations, 11 rigid links and 44 truss elements, differ by
     # O(l^2) in how the weight is lumped), and the lowest point within 1 cm
-    assert fe_support == pytest.approx([float(last.tension_barge), float(last.tension_tug)], rel=2e-3)
+    assert fe_support == pytest.approx([float(last.barge_tension), float(last.top_tension)], rel=2e-3)
     assert st.position[:, 2].min() == pytest.approx(z.min(), abs=1e-2)
 
 
@@ -136,7 +136,7 @@ def test_zigzag_barge_tension_is_periodic_with_the_tug(zigzag):
     dt = float(zigzag.time[1] - zigzag.time[0])
     shift = round(50.0 / dt)
     late = zigzag.isel(time=slice(-8 * shift, None))  # the last eight periods, 2600-3000 s
-    tension = late.tension_barge.values
+    tension = late.barge_tension.values
     # one period later the tension repeats: the rms difference is 2.2-2.3 % of its standard deviation (the
     # slow swing's remainder, see the fixture); 5 %, while a non-periodic record of the same spread gives
     # about 140 % (sqrt 2 for uncorrelated values; 107-155 % before the hull lift was modelled)
@@ -167,9 +167,9 @@ def test_barge_overrunning_the_line_piles_it_up_and_the_run_goes_on():
     pushed = ds.where((ds.time >= 30.0) & (ds.time <= 100.0), drop=True)
     # while it overruns, the barge end of the line carries almost nothing (50 N against the 4 kN of the
     # steady tow; asserted below 2 % of it)
-    assert float(pushed.tension_barge.max()) < 0.02 * resistance
+    assert float(pushed.barge_tension.max()) < 0.02 * resistance
     # and the line comes taut again once the barge has slowed below the tug's speed: 6 kN at 120 s
-    assert speed[-1] < tug_speed and float(ds.tension_barge[-1]) > resistance
+    assert speed[-1] < tug_speed and float(ds.barge_tension[-1]) > resistance
     assert np.isfinite(ds.x.values).all()
 
 
@@ -193,7 +193,7 @@ def test_payout_releases_elements_at_equal_intervals_and_reaches_steady_tow():
     late = ds.where(ds.time >= 250.0, drop=True)
     assert float(late.barge_speed.mean()) == pytest.approx(2.5722, rel=1e-3)
     barge = sc.load_case(EXAMPLES / "paper003_payout.yaml").analysis.barge
-    assert float(late.tension_barge.mean()) == pytest.approx(barge_resistance(barge, 2.5722), rel=1e-2)
+    assert float(late.barge_tension.mean()) == pytest.approx(barge_resistance(barge, 2.5722), rel=1e-2)
 
 
 def test_free_line_conserves_energy_to_first_order():

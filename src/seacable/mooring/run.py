@@ -9,7 +9,7 @@ import numpy as np
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..extremes import snap_loads
 from ..results import make_dataset, var
-from ..simulate import line_arrays
+from ..statics.run import line_arrays
 from .motion import bind
 from .network import FIXED, PRESCRIBED, Network, catenary_positions, network_from_line
 from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium

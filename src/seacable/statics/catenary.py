@@ -107,7 +107,7 @@ class CatenaryResult:
     H_anchor, V_anchor : ndarray
         Force the line exerts on the anchor; ``H_anchor > 0`` pulls toward the fairlead,
         ``V_anchor > 0`` lifts the anchor. [N]
-    tension_fairlead, tension_anchor : ndarray
+    fairlead_tension, anchor_tension : ndarray
         Tension magnitude at each end. [N]
     grounded_length : ndarray
         Unstretched length lying on the seabed. [m]
@@ -129,8 +129,8 @@ seabed_friction, seabed : ndarray
     V_fairlead: np.ndarray
     H_anchor: np.ndarray
     V_anchor: np.ndarray
-    tension_fairlead: np.ndarray
-    tension_anchor: np.ndarray
+    fairlead_tension: np.ndarray
+    anchor_tension: np.ndarray
     grounded_length: np.ndarray
     stiffness: np.ndarray
     regime: np.ndarray

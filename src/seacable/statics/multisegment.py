@@ -66,7 +66,7 @@ class LineEquilibrium:
         pointing back toward the anchor and vertical component pointing down. [N]
     H_anchor, V_anchor : force the line exerts on the anchor, toward the fairlead and upward
         (``V_anchor`` = 0 when the line lies on the seabed at the anchor). [N]
-    tension_fairlead, tension_anchor : tension magnitudes at the ends. [N]
+    fairlead_tension, anchor_tension : tension magnitudes at the ends. [N]
     touchdown_s : unstretched arc length of the touchdown from the anchor, 0 when the line is
         fully suspended. [m]
     touchdown_x : horizontal position of the touchdown. [m]
@@ -82,8 +82,8 @@ class LineEquilibrium:
     V_fairlead: float
     H_anchor: float
     V_anchor: float
-    tension_fairlead: float
-    tension_anchor: float
+    fairlead_tension: float
+    anchor_tension: float
     touchdown_s: float
     touchdown_x: float
     grounded_length: float
@@ -110,7 +110,7 @@ class Pushover:
     Attributes
     ----------
     offset : horizontal fairlead offset from the reference span. [m]
-    H_fairlead, V_fairlead, tension_fairlead : fairlead forces. [N]
+    H_fairlead, V_fairlead, fairlead_tension : fairlead forces. [N]
     touchdown_x : horizontal touchdown position. [m]
     grounded_length : unstretched grounded length. [m]
     segment_grounded_length : grounded length of each segment, shape (n_offsets, n_segments). [m]
@@ -120,7 +120,7 @@ class Pushover:
     offset: np.ndarray
     H_fairlead: np.ndarray
     V_fairlead: np.ndarray
-    tension_fairlead: np.ndarray
+    fairlead_tension: np.ndarray
     touchdown_x: np.ndarray
     grounded_length: np.ndarray
     segment_grounded_length: np.ndarray
@@ -642,5 +642,5 @@ def pushover(lengths, weights, axial_stiffness, horizontal_span, vertical_span, 
         guess = (eq.H_fairlead, eq._V_A) if eq.H_fairlead > 0 else None
         rows.append(eq)
     return Pushover(offsets, *(np.array([getattr(e, k) for e in rows]) for k in (
-        "H_fairlead", "V_fairlead", "tension_fairlead", "touchdown_x", "grounded_length",
+        "H_fairlead", "V_fairlead", "fairlead_tension", "touchdown_x", "grounded_length",
         "segment_grounded_length")), np.array([e.stiffness[0, 0] for e in rows]))

@@ -87,7 +87,7 @@ def test_batch_equals_per_case():
         for f in fields:
             # same arithmetic per case; 1e-9 allows SIMD vs scalar libm differences
             # amplified by the solver tolerance (1e-10)
-            scale = max(float(ri.tension_fairlead), 1.0)
+            scale = max(float(ri.fairlead_tension), 1.0)
             assert getattr(r, f)[i] == pytest.approx(float(getattr(ri, f)), rel=1e-9, abs=1e-9 * scale)
 
 
@@ -144,8 +144,8 @@ def test_profile_reaches_both_ends(case):
     assert abs(p.x[0]) + abs(p.z[0]) <= 1e-8 * L
     assert p.x[-1] == pytest.approx(x, abs=1e-8 * L)
     assert p.z[-1] == pytest.approx(z, abs=1e-8 * L)
-    assert p.tension[-1] == pytest.approx(float(r.tension_fairlead), rel=1e-9, abs=1e-9 * L)
-    assert p.tension[0] == pytest.approx(float(r.tension_anchor), rel=1e-9, abs=1e-6 * float(r.tension_fairlead))
+    assert p.tension[-1] == pytest.approx(float(r.fairlead_tension), rel=1e-9, abs=1e-9 * L)
+    assert p.tension[0] == pytest.approx(float(r.anchor_tension), rel=1e-9, abs=1e-6 * float(r.fairlead_tension))
     if case[6]:
         assert p.z.min() >= -1e-9 * L          # never below the seabed
 
@@ -193,7 +193,7 @@ def test_line_that_cannot_reach():
         catenary(400.0, 400.0, 555.0, 1e3, 700.0)
     # ... which is accepted when the user allows the strain
     r = catenary(400.0, 400.0, 555.0, 1e3, 700.0, max_strain=1e3)
-    assert float(r.tension_fairlead) / 1e3 > 1.0
+    assert float(r.fairlead_tension) / 1e3 > 1.0
 
 
 def test_non_convergence_names_case_iterations_and_residual():

@@ -111,7 +111,7 @@ def test_force_balance_with_loads_on_suspended_part():
     i = np.argmin(np.abs(prof.s - s_td))
     assert prof.tension[i] == pytest.approx(eq.H_fairlead, rel=1e-12)
     assert prof.x[-1] == pytest.approx(945.0, abs=1e-6) and prof.z[-1] == pytest.approx(250.0, abs=1e-6)
-    assert prof.tension[-1] == pytest.approx(eq.tension_fairlead, rel=1e-12)
+    assert prof.tension[-1] == pytest.approx(eq.fairlead_tension, rel=1e-12)
     for s in (400.0, 450.0, 700.0, 800.0):                          # every node is sampled
         assert np.any(prof.s == s)
     assert np.sum(prof.s == 700.0) == 2                             # both sides of the point load

@@ -13,6 +13,8 @@ import json
 
 import numpy as np
 
+from ._core import _label
+
 __all__ = ["SWEEP_FIGURES"]
 
 _TENSIONS = (("top_tension_max", "top, max", "-"), ("top_tension_min", "top, min", "--"),
@@ -41,8 +43,7 @@ def _groups(ds, others):
 
 
 def _sweep(ds, plt):
-    from .extremes import KEY_FIGURES
-    from .plot import _label
+    from ..extremes import KEY_FIGURES
 
     params = json.loads(ds.attrs["parameters"])
     xname, others = _axis(ds, params)

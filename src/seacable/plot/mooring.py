@@ -22,6 +22,8 @@ import math
 
 import numpy as np
 
+from ._core import _label, _snapshot_times
+
 __all__ = ["MOORING_FIGURES", "plot_mooring_dynamic", "plot_mooring_pushover", "plot_mooring_static"]
 
 _N_SNAPSHOTS = 8  # shape snapshots of a time series (about)
@@ -30,12 +32,6 @@ _LINESTYLES = ("-", "--", ":", "-.")
 
 
 # ----------------------------------------------------------------------------- helpers
-
-def _label(da) -> str:
-    from .plot import _label as label  # late: plot.py registers this module's figures
-
-    return label(da)
-
 
 def _lines(ds):
     """(name, Dataset of one line) per line: one entry, name None, without a ``line`` dimension."""
@@ -253,8 +249,6 @@ def _snaps(ds):
 def _mooring_dynamic(ds, plt):
     from matplotlib import colormaps
 
-    from .plot import _snapshot_times
-
     lines = _lines(ds)
     planar = _in_xz_plane(ds)
     time = np.asarray(ds.time.values, dtype=float)
@@ -326,7 +320,7 @@ MOORING_FIGURES = {
 
 
 def _figures(ds, analysis: str) -> list:
-    from .errors import InputError
+    from ..errors import InputError
 
     found = ds.attrs.get("analysis")
     if found != analysis:

@@ -27,6 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._core import _snapshot_times, animation_writer
+
 __all__ = ["TOWLINE_FIGURES", "animate_towline", "towline_distance", "towline_shape", "towline_sway",
            "towline_tension", "towline_tracks"]
 
@@ -35,7 +37,7 @@ _N_TRACK_SNAPSHOTS = 6  # towline drawn on the plan view at about this many time
 _N_SHAPE_SNAPSHOTS = 8  # shape snapshots coloured by time
 _SWAY_FRACTIONS = (0.0, 0.25, 0.5, 0.75, 1.0)  # joints of the sway figure, as fractions of N
 _ZIGZAG_RATIO = 1e-3  # tug sway (peak to peak) above this fraction of the line length: a zig-zag run
-_REQUIRED = ("x", "y", "z", "tension_tug", "tension_barge", "tug_x", "tug_y", "barge_x", "barge_y")
+_REQUIRED = ("x", "y", "z", "top_tension", "barge_tension", "tug_x", "tug_y", "barge_x", "barge_y")
 _CMAP = "viridis"
 
 
@@ -43,7 +45,7 @@ _CMAP = "viridis"
 
 def _check(ds, who: str) -> None:
     """Raise InputError unless ``ds`` is a towline_dynamic result with the variables drawn."""
-    from .errors import InputError
+    from ..errors import InputError
 
     found = ds.attrs.get("analysis")
     if found != ANALYSIS:
@@ -84,8 +86,6 @@ def _every(step: float, snaps, unit: str) -> str:
 
 def _snapshots(time, n: int):
     """(step, snapshot times, their indices in ``time``): see :func:`seacable.plot._snapshot_times`."""
-    from .plot import _snapshot_times  # late: plot.py registers this module's figures
-
     step, snaps = _snapshot_times(time, n)
     return step, snaps, np.searchsorted(time, snaps)
 
@@ -183,8 +183,8 @@ def _tension(ds, plt):
     fig, axes = plt.subplots(2 if has_speed else 1, 1, figsize=(8, 6 if has_speed else 4.2), sharex=True,
                              squeeze=False)
     ax1 = axes[0, 0]
-    ax1.plot(time, np.asarray(ds.tension_tug.values, float) / 1e3, mark, color="C0", label="at the tug")
-    ax1.plot(time, np.asarray(ds.tension_barge.values, float) / 1e3, mark, color="C3", label="at the barge")
+    ax1.plot(time, np.asarray(ds.top_tension.values, float) / 1e3, mark, color="C0", label="at the tug")
+    ax1.plot(time, np.asarray(ds.barge_tension.values, float) / 1e3, mark, color="C3", label="at the barge")
     ax1.set(ylabel="towline tension [kN]", title="Towline tension at the tow points" + _note(ds, time, unit))
     ax1.legend(fontsize=8)
     if has_speed:
@@ -296,7 +296,7 @@ def towline_tension(ds):
     Returns
     -------
     matplotlib.figure.Figure
-        Two curves (``tension_tug``, ``tension_barge``) in kN; below them the barge speed
+        Two curves (``top_tension``, ``barge_tension``) in kN; below them the barge speed
         [m/s] when the result holds ``barge_speed``. Titled with ``ds.attrs["title"]``.
 
     Raises
@@ -462,8 +462,6 @@ def animate_towline(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int 
         neither ``.gif`` nor ``.mp4``, ``.mp4`` was asked for without ffmpeg, or fps,
         max_frames or dpi is not positive.
     """
-    from .plot import animation_writer
-
     _check(ds, "animate_towline")
     path, writer, frames, plt = animation_writer(path, fps, max_frames, dpi, ds.sizes["time"])
 

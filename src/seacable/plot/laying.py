@@ -1,0 +1,189 @@
+"""Figures and animation of a cable lay (``laying_dynamic``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ._core import _finite_xz, _interrupted_note, _label, _snapshot_times, animation_writer
+
+__all__ = ["animate_laying"]
+
+
+def _lay_scene(ax, ds) -> None:
+    """Seabed (filled below), sea surface and axis limits covering the cable and the ship.
+
+    The limits cover every suspended node at every time, the laid cable and the ship track, so
+    that snapshots and animation frames share one frame of reference. The aspect ratio is left
+    free: a lay is typically tens of metres deep over hundreds of metres or kilometres long.
+    """
+    xs = [ds.x.values.ravel(), ds.ship_x.values.ravel()]
+    zs = [ds.z.values.ravel(), np.zeros(1)]
+    if "laid_x" in ds:
+        xs.append(ds.laid_x.values.ravel())
+        zs.append(ds.laid_z.values.ravel())
+    xs, zs = np.concatenate(xs), np.concatenate(zs)
+    xs, zs = xs[np.isfinite(xs)], zs[np.isfinite(zs)]
+    x0, x1 = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 1.0)
+    pad = 0.03 * (x1 - x0) or 1.0
+    x0, x1 = x0 - pad, x1 + pad
+    bottom = float(zs.min()) if zs.size else -1.0
+    bx = bz = np.empty(0)
+    if "seabed_x" in ds:
+        bx, bz = _finite_xz(ds.seabed_x.values, ds.seabed_z.values)
+        order = np.argsort(bx)
+        bx, bz = bx[order], bz[order]
+        seen = (bx >= x0) & (bx <= x1)
+        if seen.any():
+            bottom = min(bottom, float(bz[seen].min()))
+        if bx.size:  # the profile at the frame edges, so that the fill reaches them
+            bottom = min(bottom, float(np.interp(x0, bx, bz)), float(np.interp(x1, bx, bz)))
+    depth = max(-bottom, 1.0)
+    y0, y1 = bottom - 0.15 * depth, 0.1 * depth
+    if bx.size:
+        ax.fill_between(bx, bz, y0 - depth, color="tan", alpha=0.7, lw=0, zorder=0)
+        ax.plot(bx, bz, color="sienna", lw=1.2, label="seabed", zorder=1)
+    ax.axhline(0.0, color="steelblue", lw=0.8, ls="--", label="sea surface", zorder=1)
+    ax.set(xlim=(x0, x1), ylim=(y0, y1), xlabel=_label(ds.x), ylabel=_label(ds.z))
+
+
+def _repeaters_at(ds, i: int):
+    """(x, z) of the repeaters in the water at time index ``i`` (empty when there are none)."""
+    if "repeater_x" not in ds or ds.repeater_x.size == 0:
+        return np.empty(0), np.empty(0)
+    return _finite_xz(ds.repeater_x.values[i], ds.repeater_z.values[i])
+
+
+def _laying_dynamic(ds, plt):
+    from matplotlib import colormaps
+
+    time = ds.time.values.astype(float)
+    t_unit = ds.time.attrs.get("units", "s")
+    note = _interrupted_note(ds, time, t_unit)
+    step, snaps = _snapshot_times(time)
+    idx = np.searchsorted(time, snaps)  # the snapshots are output times
+    colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(snaps)))
+    figs = {}
+
+    fig, ax = plt.subplots(figsize=(11, 4.5))
+    _lay_scene(ax, ds)
+    if "laid_x" in ds and ds.laid_x.size:
+        lx, lz = _finite_xz(ds.laid_x.values, ds.laid_z.values)
+        ax.plot(lx, lz, "k-", lw=0.8, label="laid cable")
+    for i, t, c in zip(idx, snaps, colours):
+        x, z = _finite_xz(ds.x.values[i], ds.z.values[i])
+        ax.plot(x, z, "-", color=c, lw=1.5, label=f"t = {t:g} {t_unit}")
+        ax.plot(float(ds.ship_x.values[i]), 0.0, "v", color=c, ms=7)
+    rx, rz = _repeaters_at(ds, idx[-1])
+    if rx.size:
+        ax.plot(rx, rz, "D", color="C3", ms=6, label=f"repeater (t = {snaps[-1]:g} {t_unit})")
+    ax.plot([], [], "kv", ms=7, label="ship")
+    every = (f"every {step:g} {t_unit}" if step else
+             f"at t = {snaps[0]:g} {t_unit}" if snaps.size == 1 else f"at {snaps.size} times")
+    ax.set_title(f"Laying shape {every}" + note)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside: the cable fills the frame
+    figs["shape"] = fig
+
+    fig, (ax1, ax2, ax3) = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    mark = "o-" if time.size == 1 else "-"
+    tension_max = np.nanmax(np.abs(np.r_[ds.top_tension.values, ds.bottom_tension.values, 0.0]))
+    scale, unit = (1e3, "kN") if tension_max >= 1e4 else (1.0, "N")
+    ax1.plot(time, ds.top_tension / scale, mark, label="top (ship)")
+    ax1.plot(time, ds.bottom_tension / scale, mark, label="bottom (touchdown)")
+    ax1.set(ylabel=f"tension [{unit}]", title="Laying tensions, slack and speeds" + note)
+    ax1.legend(fontsize=8)
+    in_percent = ds.slack.attrs.get("units", "1") == "%"
+    ax2.plot(time, ds.slack * (1.0 if in_percent else 100.0), mark, color="C2", label="slack")
+    ax2.set_ylabel("slack [%]")
+    twin = ax2.twinx()
+    twin.plot(time, ds.entry_angle, mark, color="C4", label="entry angle")
+    twin.set_ylabel(_label(ds.entry_angle))
+    lines = ax2.get_lines() + twin.get_lines()
+    ax2.legend(lines, [ln.get_label() for ln in lines], fontsize=8)
+    ax3.plot(time, ds.ship_speed, mark, label="ship")
+    ax3.plot(time, ds.payout_speed, mark, label="payout")
+    ax3.set(xlabel=_label(ds.time), ylabel="speed [m/s]")
+    ax3.legend(fontsize=8)
+    figs["tension"] = fig
+    return figs
+
+
+
+def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int = 100) -> Path:
+    """Write an animation of a cable lay (``laying_dynamic`` result) as GIF or MP4.
+
+    Each frame shows the seabed, the laid cable up to the frame's time (the landed nodes with
+    ``laid_time`` <= t), the suspended cable, the ship at (``ship_x``, 0), the repeaters in the
+    water and the time. The output times are subsampled evenly, first and last kept, to at most
+    ``max_frames`` frames.
+
+    Parameters
+    ----------
+    ds
+        A ``laying_dynamic`` result, from :func:`seacable.run` or
+        :func:`seacable.results.read_netcdf`.
+    path
+        Output file; ``.gif`` (written with Pillow) or ``.mp4`` (needs ffmpeg on the PATH).
+    fps
+        Frames per second of the animation. [1/s]
+    max_frames
+        Largest number of frames; the animation has min(max_frames, number of output times).
+    dpi
+        Resolution of the frames (the figure is 10 x 4.5 in). [1/in]
+
+    Returns
+    -------
+    Path
+        The file written.
+
+    Raises
+    ------
+    InputError
+        The result is not a ``laying_dynamic`` one, the suffix is neither ``.gif`` nor ``.mp4``,
+        ``.mp4`` was asked for without ffmpeg, or fps, max_frames or dpi is not positive.
+    """
+    from ..errors import InputError
+
+    analysis = ds.attrs.get("analysis")
+    if analysis != "laying_dynamic":
+        raise InputError(f"animate_laying needs a 'laying_dynamic' result, got analysis '{analysis}'. "
+                         "Suggested fix: run a case with analysis type laying_dynamic, or use "
+                         "'seacable plot' for the figures of this result.")
+    time = ds.time.values.astype(float)
+    path, writer, frames, plt = animation_writer(path, fps, max_frames, dpi, time.size)
+    t_unit = ds.time.attrs.get("units", "s")
+    has_laid = "laid_x" in ds and ds.laid_x.size > 0
+    if has_laid:
+        lx, lz = ds.laid_x.values.astype(float), ds.laid_z.values.astype(float)
+        lt = ds.laid_time.values.astype(float)
+
+    fig, ax = plt.subplots(figsize=(10, 4.5))
+    _lay_scene(ax, ds)
+    laid, = ax.plot([], [], "k-", lw=0.8, label="laid cable")
+    hanging, = ax.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")
+    ship, = ax.plot([], [], "v", color="C1", ms=9, label="ship")
+    reps, = ax.plot([], [], "D", color="C3", ms=6, label="repeater")
+    label = ax.text(0.01, 0.97, "", transform=ax.transAxes, va="top", fontsize=10)
+    ax.set_title(ds.attrs.get("title", "Cable laying"), fontsize=10)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        with writer.saving(fig, str(path), dpi):
+            for i in frames:
+                t = time[i]
+                if has_laid:
+                    keep = lt <= t + 1e-9 * max(1.0, abs(t))
+                    laid.set_data(*_finite_xz(lx[keep], lz[keep]))
+                hanging.set_data(*_finite_xz(ds.x.values[i], ds.z.values[i]))
+                ship.set_data([float(ds.ship_x.values[i])], [0.0])
+                reps.set_data(*_repeaters_at(ds, i))
+                label.set_text(f"t = {t:.1f} {t_unit}")
+                writer.grab_frame()
+    finally:
+        plt.close(fig)
+    return path
+
+
+LAYING_FIGURES = {"laying_dynamic": _laying_dynamic}

@@ -1,0 +1,191 @@
+"""Runners of the static analyses: a case in, a labelled Dataset out.
+
+``static`` and ``pushover`` (multi-segment elastic catenary), ``towed_steady`` (paper 000's
+steady tow) and ``laying_theory`` (paper 001's straight-line theory).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+
+from ..case import Case, LayingTheoryAnalysis, PushoverAnalysis, StaticAnalysis, TowedSteadyAnalysis
+from ..errors import InputError, SeacableWarning
+from ..results import make_dataset, var
+
+__all__ = ["line_arrays", "run_laying_theory", "run_pushover", "run_static", "run_towed_steady"]
+
+REF_CATENARY = ("Irvine, H. M. (1981). Cable Structures. MIT Press.",
+                "Jonkman, J. M. (2007). Dynamics modeling and loads analysis of an offshore floating wind "
+                "turbine. NREL/TP-500-41958, Appendix: quasi-static mooring line model.")
+REF_000 = "Paper 000: 3-D nonlinear dynamics of a low-tension towed cable (seeds/000), Table 2."
+REF_001 = "Paper 001: 2-D laying simulation of a subsea cable (seeds/001), section 2 and Table 1."
+
+
+def line_arrays(case: Case):
+    """Per-segment arrays of a case's line: lengths, weights, EA, and the point loads.
+
+    Returns
+    -------
+    lengths, weights, axial_stiffness : numpy.ndarray
+        [m], [N/m], [N] (infinite for an inextensible line type).
+    point_loads : tuple of (s, net weight)
+        [m], [N].
+    """
+    env, line = case.environment, case.line
+    rho, g = env.water_density, env.gravity
+    lengths = np.array([seg.length for seg in line.segments])
+    weights = np.array(line.weights(rho, g))
+    ea = np.array([seg.line_type.effective_axial_stiffness() for seg in line.segments])
+    return lengths, weights, ea, line.point_loads(rho, g)
+
+
+def _spans(case: Case, fairlead) -> tuple[float, float, float, float, bool]:
+    ax, az = case.anchor_position()
+    fx, fz = fairlead
+    depth = case.environment.depth
+    on_seabed = depth is not None and abs(az + depth) <= 1e-9 * max(depth, 1.0)
+    if depth is not None and az < -depth - 1e-9 * depth:
+        raise InputError(f"anchor z must be >= -depth = {-depth:g} m, got {az:g} m. "
+                         "Suggested fix: put the anchor on or above the seabed.")
+    if fx < ax:
+        raise InputError(f"fairlead x must be >= anchor x = {ax:g} m, got {fx:g} m. Suggested fix: "
+                         "measure x from the anchor towards the fairlead.")
+    return ax, az, fx - ax, fz - az, on_seabed
+
+
+def equilibrium(case: Case, fairlead):
+    from .multisegment import line_equilibrium
+
+    lengths, weights, ea, loads = line_arrays(case)
+    ax, az, h, v, on_seabed = _spans(case, fairlead)
+    seabed = case.environment.seabed
+    eq = line_equilibrium(lengths, weights, ea, h, v, point_loads=loads, seabed=on_seabed,
+                          seabed_friction=seabed.friction if on_seabed else 0.0,
+                          seabed_slope=seabed.slope if on_seabed else 0.0)
+    return eq, ax, az, on_seabed
+
+
+_END_FORCES = {
+    "H_fairlead": ("N", "horizontal tension at the fairlead"),
+    "V_fairlead": ("N", "vertical tension at the fairlead"),
+    "H_anchor": ("N", "horizontal tension at the anchor"),
+    "V_anchor": ("N", "vertical tension at the anchor"),
+    "fairlead_tension": ("N", "tension at the fairlead"),
+    "anchor_tension": ("N", "tension at the anchor"),
+    "grounded_length": ("m", "length of line on the seabed"),
+}
+
+
+def run_static(case: Case):
+    a: StaticAnalysis = case.analysis
+    eq, ax, az, on_seabed = equilibrium(case, a.fairlead)
+    prof = eq.profile(points_per_segment=a.points_per_segment)
+    data = {
+        "x": var("point", np.asarray(prof.x) + ax, "m", "horizontal position"),
+        "z": var("point", np.asarray(prof.z) + az, "m", "elevation (0 at the sea surface)"),
+        "tension": var("point", prof.tension, "N", "effective tension"),
+        "segment": var("point", prof.segment, "1", "segment index from the anchor"),
+        "touchdown_x": var((), float(eq.touchdown_x) + ax, "m", "touchdown position"),
+        "stiffness": var(("force", "displacement"), eq.stiffness, "N m-1",
+                         "fairlead stiffness d(H, V)/d(x, z)"),
+    }
+    for name, (units, long_name) in _END_FORCES.items():
+        data[name] = var((), float(getattr(eq, name)), units, long_name)
+    if case.environment.depth is not None:
+        data["seabed_z"] = var((), -case.environment.depth, "m", "seabed elevation under the origin")
+    coords = {"s": var("point", prof.s, "m", "unstretched arc length from the anchor"),
+              "force": var("force", ["H", "V"], "1", "fairlead force component"),
+              "displacement": var("displacement", ["x", "z"], "1", "fairlead displacement component")}
+    return make_dataset(data, coords, analysis="static", case=case, references=REF_CATENARY,
+                        settings={"solver": "multi-segment elastic catenary, Newton", "seabed": on_seabed})
+
+
+def run_pushover(case: Case):
+    from .multisegment import pushover
+
+    a: PushoverAnalysis = case.analysis
+    lengths, weights, ea, loads = line_arrays(case)
+    ax, az, h, v, on_seabed = _spans(case, a.fairlead)
+    offsets = np.asarray(a.offset_values(), float)
+    if np.any(h + offsets < 0):
+        raise InputError(f"offsets must keep the fairlead at x >= the anchor's, got a smallest offset "
+                         f"of {offsets.min():g} m with a span of {h:g} m.")
+    seabed = case.environment.seabed
+    po = pushover(lengths, weights, ea, h, v, offsets, point_loads=loads, seabed=on_seabed,
+                  seabed_friction=seabed.friction if on_seabed else 0.0,
+                  seabed_slope=seabed.slope if on_seabed else 0.0)
+    data = {
+        "H_fairlead": var("offset", po.H_fairlead, "N", "horizontal tension at the fairlead"),
+        "V_fairlead": var("offset", po.V_fairlead, "N", "vertical tension at the fairlead"),
+        "fairlead_tension": var("offset", po.fairlead_tension, "N", "tension at the fairlead"),
+        "touchdown_x": var("offset", np.asarray(po.touchdown_x) + ax, "m", "touchdown position"),
+        "grounded_length": var("offset", po.grounded_length, "m", "length of line on the seabed"),
+        "stiffness_horizontal": var("offset", po.stiffness_horizontal, "N m-1",
+                                    "horizontal fairlead stiffness dH/dx"),
+    }
+    coords = {"offset": var("offset", offsets, "m", "horizontal fairlead offset")}
+    return make_dataset(data, coords, analysis="pushover", case=case, references=REF_CATENARY,
+                        settings={"solver": "multi-segment elastic catenary, Newton with continuation"})
+
+
+def run_towed_steady(case: Case):
+    from .towed import towed_cable_steady
+
+    a: TowedSteadyAnalysis = case.analysis
+    env = case.environment
+    lt = case.line.segments[0].line_type
+    cur = env.current
+    speed = a.vessel_speed - cur.speed * math.cos(cur.heading)
+    body = a.body
+    res = towed_cable_steady(case.line.length, lt.submerged_weight(env.water_density, env.gravity),
+                             lt.diameter, speed, lt.drag_normal, lt.drag_tangential,
+                             water_density=env.water_density, axial_stiffness=lt.axial_stiffness,
+                             body_weight=body.weight_in_water if body else 0.0,
+                             body_drag_area=body.drag_area if body else 0.0,
+                             tangential_drag=a.tangential_drag, n_points=a.n_nodes)
+    data = {
+        "x": var("node", res.x, "m", "position relative to the tow point, positive astern"),
+        "z": var("node", res.z, "m", "elevation relative to the tow point"),
+        "tension": var("node", res.tension, "N", "effective tension"),
+        "angle": var("node", np.degrees(res.angle), "degree", "cable angle to the horizontal"),
+        "top_tension": var((), res.top_tension, "N", "tension at the tow point"),
+        "layback": var((), res.layback, "m", "layback of the lower end"),
+        "lower_end_depth": var((), res.depth_of_lower_end, "m", "depth of the lower end below the tow point"),
+        "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle"),
+        "relative_speed": var((), speed, "m s-1", "flow speed relative to the cable"),
+    }
+    coords = {"s": var("node", res.s, "m", "unstretched arc length from the lower end")}
+    return make_dataset(data, coords, analysis="towed_steady", case=case, references=(REF_000,),
+                        settings={"tangential_drag": a.tangential_drag})
+
+
+def run_laying_theory(case: Case):
+    from .laying import straight_line_lay
+
+    a: LayingTheoryAnalysis = case.analysis
+    env = case.environment
+    lt = case.line.segments[0].line_type
+    speeds = np.asarray(a.ship_speeds, float)
+    common = dict(water_depth=env.depth, ship_speed=speeds,
+                  weight_per_length=lt.submerged_weight(env.water_density, env.gravity),
+                  diameter=lt.diameter, drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
+                  payout_speed=speeds * (1.0 + a.slack), bottom_tension=a.bottom_tension,
+                  water_density=env.water_density)
+    exact = straight_line_lay(**common, method="exact")
+    with warnings.catch_warnings():  # the small-angle column is reported beside the exact one on purpose
+        warnings.simplefilter("ignore", SeacableWarning)
+        small = straight_line_lay(**common, method="small_angle")
+    data = {
+        "angle": var("ship_speed", np.degrees(exact.angle), "degree", "entry angle (exact root)"),
+        "angle_small": var("ship_speed", np.degrees(small.angle), "degree", "entry angle (H/V small-angle)"),
+        "layback": var("ship_speed", exact.layback, "m", "layback ship to touchdown"),
+        "suspended_length": var("ship_speed", exact.suspended_length, "m", "suspended cable length"),
+        "top_tension": var("ship_speed", exact.top_tension, "N", "tension at the ship"),
+        "slack": var("ship_speed", exact.slack, "1", "payout speed / ship speed - 1"),
+    }
+    coords = {"ship_speed": var("ship_speed", speeds, "m s-1", "ship speed")}
+    return make_dataset(data, coords, analysis="laying_theory", case=case, references=(REF_001,),
+                        settings={"bottom_tension": a.bottom_tension, "slack": a.slack})
