@@ -19,6 +19,45 @@ from ..errors import CaseFileError, InputError
 __all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
 
 
+class _DuplicateKey(yaml.YAMLError):
+    """A key given twice in one YAML mapping (YAML would silently keep the last)."""
+
+    def __init__(self, key, first, second):
+        super().__init__(f"duplicate key {key!r}")
+        self.key, self.first, self.second = key, first, second
+
+
+class _StrictLoader(yaml.SafeLoader):
+    """``yaml.SafeLoader`` that refuses a key given twice in the same mapping.
+
+    YAML 1.2 requires the keys of a mapping to be unique, but PyYAML keeps the last value
+    silently: two ``analysis:`` blocks would run the second and drop the first. Keys brought
+    in by a merge (``<<: *anchor``) may be overridden, as YAML intends.
+    """
+
+    def construct_mapping(self, node, deep=False):
+        if isinstance(node, yaml.MappingNode):
+            seen = {}
+            for key_node, _ in node.value:
+                if key_node.tag == "tag:yaml.org,2002:merge":
+                    continue
+                key = self.construct_object(key_node, deep=True)
+                try:
+                    hash(key)
+                except TypeError:
+                    continue  # the base class reports an unhashable key
+                line = key_node.start_mark.line + 1
+                if key in seen:
+                    raise _DuplicateKey(key, seen[key], line)
+                seen[key] = line
+        return super().construct_mapping(node, deep=deep)
+
+
+def _safe_load(text: str):
+    """``yaml.safe_load`` with duplicate keys refused (:class:`_DuplicateKey`)."""
+    return yaml.load(text, Loader=_StrictLoader)  # noqa: S506 - a SafeLoader subclass
+
+
 def parse_case(data: Any, *, source: str = "case") -> Case:
     """Validate plain data (a mapping, as read from YAML) into a :class:`Case`.
 
@@ -43,7 +82,8 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
     Raises
     ------
     CaseFileError
-        If the file cannot be read or is not YAML; ``what`` names the file in the message.
+        If the file cannot be read or is not YAML, or if a mapping gives the same key twice
+        (named with both line numbers); ``what`` names the file in the message.
     """
     path = Path(path)
     try:
@@ -54,7 +94,12 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
     except (OSError, UnicodeDecodeError) as err:
         raise CaseFileError(f"{what} '{path}' cannot be read: {err}.") from None
     try:
-        return yaml.safe_load(text), text
+        return _safe_load(text), text
+    except _DuplicateKey as err:
+        raise CaseFileError(f"{path}: key {err.key!r} is given twice in the same mapping, at line {err.first} "
+                            f"and at line {err.second}; YAML would keep only the second silently. Suggested "
+                            f"fix: merge the two '{err.key}' entries into one (or delete the one you do not "
+                            "mean).") from None
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
