@@ -15,6 +15,7 @@ import yaml
 
 from ..case import Case
 from ..errors import CaseFileError, InputError
+from .moordyn import MoorDynCase, is_moordyn_file, load_moordyn_case
 
 __all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
 
@@ -128,19 +129,22 @@ def load_case_data(path: str | Path) -> dict:
     return data
 
 
-def load_case(path: str | Path) -> Case:
-    """Read and validate a YAML case file.
+def load_case(path: str | Path) -> Case | MoorDynCase:
+    """Read and validate a case file: YAML, or a MoorDyn input file.
 
     Parameters
     ----------
     path
-        The case file.
+        The case file. A MoorDyn input file (recognised by
+        :func:`~seacable.io.moordyn.is_moordyn_file`) is read as a MoorDyn network case.
 
     Returns
     -------
-    Case
-        The validated, immutable case.
+    Case or MoorDynCase
+        The validated, immutable case; :func:`seacable.run` runs either.
     """
+    if is_moordyn_file(path):
+        return load_moordyn_case(path)
     return parse_case(load_case_data(path), source=str(path))
 
 
