@@ -633,7 +633,7 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
                  "use at least 1 segment (MoorDyn needs about 10 or more for dynamics)", 1)
         nodes += nseg - 1
         try:
-            _limits.check_run_size(f"line {lid} NumSegs = {nseg} (the file's network of {nodes:.3g} nodes)",
+            _limits.check_run_size(f"line {lid} NumSegs = {nseg:.6g} (the file's network of {nodes:.3g} nodes)",
                                    steps=1, stored_values=_VALUES_PER_NODE * nodes,
                                    fix="use fewer segments: about 1 per 5-20 m of line is usual")
         except InputError as exc:

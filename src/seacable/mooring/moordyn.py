@@ -187,8 +187,14 @@ _MAX_START_STRAIN = 0.10
 
 
 def _check_geometry(md: MoorDynInput) -> None:
-    """Refuse a line whose end points are farther apart than the line can stretch."""
+    """Refuse a Free point without a line, and a line whose end points are farther apart than it can stretch."""
     points = {p.id: p for p in md.points}
+    attached = {ln.point_a for ln in md.lines} | {ln.point_b for ln in md.lines}
+    for p in md.points:
+        if p.attachment == "free" and p.id not in attached:
+            raise InputError(f"{md.path or 'MoorDyn file'}: point {p.id} is Free but no line is attached to it: "
+                             "it has no equilibrium (it sinks or floats away). Suggested fix: attach a line to it "
+                             "in the LINES section, or remove the point.")
     for line in md.lines:
         gap = math.dist(points[line.point_a].position, points[line.point_b].position)
         strain = gap / line.length - 1.0

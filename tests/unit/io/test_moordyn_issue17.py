@@ -290,6 +290,13 @@ def test_a_run_too_long_is_refused_before_it_starts(tmp_path):
         prepare_moordyn(case)
 
 
+def test_a_free_point_without_a_line_is_refused(tmp_path):
+    """It has no static equilibrium: the Newton iteration failed with a ConvergenceError before."""
+    path = _file(tmp_path, deck(points=(ANCHOR, FAIRLEAD, "3 Free 0 0 -50 10 0 0 0")))
+    with pytest.raises(InputError, match=r"point 3 is Free but no line is attached to it"):
+        prepare_moordyn(path)
+
+
 def test_a_line_that_cannot_reach_its_points_is_refused(tmp_path):
     """The issue's example: 410 m of chain between points 4000 m apart ran to 1.47e10 N."""
     points = ("1 Fixed -4000 0 -100 0 0 0 0", FAIRLEAD)
@@ -301,18 +308,19 @@ def test_a_line_that_cannot_reach_its_points_is_refused(tmp_path):
 # ----------------------------------------------------------------------------- the corpus of bad decks
 
 def _variant(section, row):
-    """A deck with ``row`` in ``section`` (replacing its first row); and the 1-based number of that line."""
+    """A deck with ``row`` in ``section`` (replacing its first row; several rows split by newlines), and the
+    1-based number of its (last) line in the file."""
     kw = {"types": (TYPE,), "points": (ANCHOR, FAIRLEAD), "lines": (LINE,), "options": ("100 WtrDpth",)}
     if row is None:
         kw[section] = ()
     else:
-        kw[section] = (row,) + kw[section][1:]
+        kw[section] = tuple(row.split("\n")) + kw[section][1:]
     text = deck(**kw)
     lines = text.splitlines()
     if row is None:
         header = {"types": "LINE TYPES", "points": "POINTS", "lines": "LINES"}[section]
         return text, next(i for i, ln in enumerate(lines, 1) if "---" in ln and header in ln)
-    return text, lines.index(row) + 1
+    return text, lines.index(row.split("\n")[-1]) + 1
 
 
 BAD = [  # section, row, words the message must contain (the column or field)
