@@ -667,8 +667,8 @@ def _read_options(rd, section) -> dict[str, float | str]:
 
 
 _OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
-    **{k.lower(): (_validate.positive, "m", "give the water depth as a positive number of metres, or remove "
-                   "the line (MoorDyn then takes the depth of the deepest point)") for k in _DEPTH},
+    **{k.lower(): (_validate.positive, "m", ("give the water depth as a positive number of metres, or remove "
+                   "the line (MoorDyn then takes the depth of the deepest point)")) for k in _DEPTH},
     **{k.lower(): (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
     **{k.lower(): (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
     **{k.lower(): (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")

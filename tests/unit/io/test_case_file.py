@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 import seacable as sc
-from seacable.sweeps import is_sweep_file
 from seacable.io import dump_case, parse_case
+from seacable.sweeps import is_sweep_file
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 
@@ -55,8 +55,8 @@ def test_every_example_is_valid(path):
     (("diameter: 0.09", "diameter: -0.09"), "line_types.chain.diameter must be > 0 m, got -0.09 m"),
     (("diameter: 0.09", "diameter: .nan"), "line_types.chain.diameter must be a finite number"),
     (("length: 902.2", "length: long"), "line.segments[0].length must be a number in m, got 'long'"),
-    (("line_type: chain,", "line_type: chian,"), "'chian' is not defined in line_types (defined: chain). "
-                                                 "Did you mean 'chain'?"),
+    (("line_type: chain,", "line_type: chian,"), ("'chian' is not defined in line_types (defined: chain). "
+                                                 "Did you mean 'chain'?")),
     (("type: static", "type: statik"), "analysis.type must be one of"),
     (("depth: 320.0", "dept: 320.0"), "environment has an unknown key 'dept'. Did you mean 'depth'?"),
     (("name: t", "nme: t"), "has an unknown key 'nme'. Did you mean 'name'?"),
