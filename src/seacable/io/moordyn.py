@@ -18,7 +18,11 @@ v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
   Lines before the first section are free text (the title).
 - A table section has two lines after its header, column names and units, which MoorDyn
   skips unread; the rows follow until the next header. ``OPTIONS`` and ``OUTPUTS`` have none.
-- Options are ``value name [comment]``. Outputs are channel names, several per line allowed.
+- ``!``, ``#`` and ``%`` start a comment that runs to the end of the line, in every line after the
+  title (``docs/inputs.rst`` of MoorDyn v2; MoorDyn-C 2.7.2 reads a commented row as the row before
+  the comment, which matters for the 9- or 12-column POINTS layout).
+- Options are ``value name [comment]``; the name is matched in any case (MoorDyn-F upper-cases it,
+  MoorDyn-C's own examples write ``kbot``). Outputs are channel names, several per line allowed.
 - The file ends at a header containing ``need this line`` or ``END``, or a line ``END``.
 - LINE TYPES, v2 (10 columns): ``name d m EA BA/-zeta EI Cd Ca CdAx CaAx``; v1 (9 columns):
   ``name d m EA BA/-zeta Can Cat Cdn Cdt`` (no EI; coefficients in another order). The layout
@@ -54,8 +58,28 @@ in ``source/MoorDyn2.cpp``), for models that convert a MoorDyn file:
   applied opposite to ``v_h`` (zero when ``v_h = 0``). Defaults ``FrictionCoefficient mu = 0``,
   ``FricDamp = 200``, ``StatDynFricScale = 1.0``.
 - Other defaults: ``g = 9.80665 m/s^2`` (MoorDyn v2.0.0; the 2021-22 alphas used 9.8),
-  ``rho_w = 1025 kg/m^3``, ``dtM = 0.001 s``; the water depth is raised to the depth of the
-  deepest point when ``WtrDpth`` is smaller or absent.
+  ``rho_w = 1025 kg/m^3``, ``dtM = 0.001 s``. Water depth: MoorDyn-C deepens ``WtrDpth`` (default
+  0) to the deepest point as it reads the POINTS, so a deck without ``WtrDpth`` has its seabed at
+  its deepest anchor (:attr:`MoorDynInput.water_depth`). A point below a *given* ``WtrDpth`` is
+  refused here (MoorDyn moves the seabed down to it with a warning): a contradiction in the file.
+
+Options, and what seacable does with each (``MoorDynInput.notes`` carries a message for every
+option it cannot honour; :func:`seacable.mooring.moordyn.prepare_moordyn` warns with them):
+
+- honoured: ``WtrDpth``/``depth``/``WaterDepth``, ``WtrDnsty``/``rho``/``rhoW``, ``g``/``gravity``,
+  ``kBot``/``kb``, ``cBot``/``cb``, ``FrictionCoefficient``, MoorDyn-F's ``mu_kT``/``mu_kA`` when
+  equal, ``StatDynFricScale``/``MC`` equal to 1, and ``WaveKin``/``Currents`` equal to 0;
+- no counterpart needed, no warning: MoorDyn's own numerics and output (``dtM``, ``DT``, ``cfl``,
+  ``tScheme``, ``dtIC``, ``TmaxIC``, ``CdScaleIC``, ``threshIC``, ``ICgenDynamic``, ``fileIC``,
+  ``inertialF``, ``inertialF_rampT``, ``writeLog``, ``WriteUnits``, ``dtOut``, ``disableOutput``,
+  ``disableOutTime``, ``OutSwitch``, ``Echo``; ``dtWave``, ``waveKin_rampT``, ``UnifyCurrentGrid``
+  without waves): seacable solves the static equilibrium by Newton's method and integrates with an
+  implicit Newmark scheme at the step the user gives;
+- warned: ``WaveKin``/``Currents`` other than 0 and ``WaterKin`` (still water instead),
+  ``SeafloorFile`` (flat seabed instead), ``mu_kT`` and ``mu_kA`` that differ (their mean),
+  ``FricDamp``/``CV`` and ``StatDynFricScale``/``MC`` other than 1 with friction (Coulomb friction
+  regularised over 0.01 m/s instead), a line type's VIV lift ``Cl`` other than 0, and any option
+  name seacable does not know (ignored, with a did-you-mean).
 
 References
 ----------
