@@ -740,7 +740,9 @@ def _check_option(rd, lineno, name, token, value):
         return
     check, unit, fix = _OPTION_CHECKS[key]
     if value is None:
-        raise rd.error(lineno, f"option {name} must be a number in {unit or 'SI units'}, got {token!r}. "
+        why = (" (MoorDyn-F reads a bathymetry file here; seacable has a flat seabed and does not read it)"
+               if key in {k.lower() for k in _DEPTH} else "")
+        raise rd.error(lineno, f"option {name} must be a number in {unit or 'SI units'}, got {token!r}{why}. "
                                f"Suggested fix: {fix}.")
     rd.check(lineno, check, f"option {name}", value, unit, fix)
     if key in _WHOLE and value != int(value):

@@ -230,6 +230,12 @@ def test_friction_details_not_honoured_are_warned(tmp_path, options, match):
         prepare_moordyn(_file(tmp_path, deck(options=options + ("100 WtrDpth",))))
 
 
+def test_a_bathymetry_file_in_wtrdpth_is_refused_with_the_reason():
+    with pytest.raises(InputError, match=r"option WtrDpth must be a number in m, got 'bathy.txt' \(MoorDyn-F reads a "
+                                         r"bathymetry file here"):
+        read_moordyn(deck(options=("bathy.txt WtrDpth",)))
+
+
 def test_viv_lift_coefficient_is_warned(tmp_path):
     types = (TYPE + "  0.8  0.08  0.18",)
     with pytest.warns(SeacableWarning, match=r":6: line type 'chain' Cl = 0.8 .* no VIV model"):
