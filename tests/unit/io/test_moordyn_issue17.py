@@ -126,6 +126,22 @@ def test_no_wtrdpth_puts_the_seabed_at_the_deepest_point(tmp_path):
     assert float(ds.z.min()) > -100.0 - 1e-3  # nothing below the seabed (kBot 1e9 Pa/m: 0.01 mm)
 
 
+def test_moordyn_itself_puts_the_seabed_at_the_deepest_point(tmp_path):
+    """The peer: MoorDyn-C (the moordyn wheel) runs the same deck without WtrDpth and its chain rests on
+    z = -100 m, the anchor's depth, as ours does (before the fix ours hung to z = -141 m)."""
+    moordyn = pytest.importorskip("moordyn")
+    path = _file(tmp_path, deck())
+    system = moordyn.Create(str(path))
+    fairlead = list(moordyn.GetPointPos(moordyn.GetPoint(system, 2)))
+    moordyn.Init(system, fairlead, [0.0, 0.0, 0.0])
+    line = moordyn.GetLine(system, 1)
+    theirs = min(moordyn.GetLineNodePos(line, k)[2] for k in range(moordyn.GetLineN(line) + 1))
+    moordyn.Close(system)
+    ours = float(run_moordyn_file(path).z.min())
+    # kBot = 1e9 Pa/m: the chain sinks w / (kBot d) = 0.01 mm into the seabed in both codes
+    assert theirs == pytest.approx(-100.0, abs=1e-3) and ours == pytest.approx(-100.0, abs=1e-3)
+
+
 def _peer_deck(pattern):
     for base in (Path(__file__).parents[3] / ".." / "shared", Path("/work/shared")):
         found = sorted((base / "peers" / "moordyn").glob(pattern)) if (base / "peers").is_dir() else []
