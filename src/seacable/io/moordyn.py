@@ -248,8 +248,10 @@ class MoorDynInput:
         mu = _lookup(self.options, _MU)
         if mu is not None:
             return mu
-        given = [v for v in (_lookup(self.options, _MU_T), _lookup(self.options, _MU_A)) if v is not None]
-        return float(np.mean(given)) if given else 0.0
+        mu_t, mu_a = _lookup(self.options, _MU_T), _lookup(self.options, _MU_A)
+        if mu_t is None and mu_a is None:
+            return 0.0
+        return ((mu_t or 0.0) + (mu_a or 0.0)) / 2  # MoorDyn-F's default for either is 0
 
     def point(self, point_id: int) -> MoorDynPoint:
         """Return the point with ID ``point_id``."""
@@ -787,10 +789,12 @@ def _option_notes(rd, options: dict, depth: float | None, depth_source: str) -> 
     if mu is not None and (mu_t is not None or mu_a is not None):
         notes.append(f"{rd.at('mu_kT')}options mu_kT/mu_kA (MoorDyn-F) are ignored: FrictionCoefficient = {mu:g} is used for "
                      "the seabed friction.")
-    elif mu_t is not None and mu_a is not None and mu_t != mu_a:
-        notes.append(f"{rd.at('mu_kT')}options mu_kT = {mu_t:g} and mu_kA = {mu_a:g} give different transverse and axial "
-                     "seabed friction; seacable's seabed friction is isotropic and uses their mean, "
-                     f"{(mu_t + mu_a) / 2:g}.")
+    elif (mu_t is not None or mu_a is not None) and (mu_t or 0.0) != (mu_a or 0.0):
+        mu_t, mu_a = mu_t or 0.0, mu_a or 0.0  # MoorDyn-F's default for either is 0
+        notes.append(f"{rd.at('mu_kT' if _lookup(options, _MU_T) is not None else 'mu_kA')}options mu_kT = "
+                     f"{mu_t:g} and mu_kA = {mu_a:g} (MoorDyn-F's default 0 where not given) give different "
+                     "transverse and axial seabed friction; seacable's seabed friction is isotropic and uses "
+                     f"their mean, {(mu_t + mu_a) / 2:g}.")
     friction = mu if mu is not None else max(v for v in (mu_t, mu_a, 0.0) if v is not None)
     damp = [(n, v) for n, v in options.items() if n.lower() in {k.lower() for k in _FRIC_DAMP}]
     if friction > 0 and damp:

@@ -214,10 +214,11 @@ def test_friction_options_map_onto_the_seabed_friction(tmp_path):
     assert water().friction == 0.0
     assert water("0.4 FrictionCoefficient").friction == 0.4
     assert water("0.3 mu_kT", "0.3 mu_kA").friction == 0.3          # MoorDyn-F, isotropic
-    assert water("0.6 MU_KT").friction == 0.6
+    with pytest.warns(SeacableWarning, match=r"mu_kT = 0.6 and mu_kA = 0 \(MoorDyn-F's default 0"):
+        assert water("0.6 MU_KT").friction == 0.3  # MoorDyn-F: mu_kA defaults to 0
     assert water("1.0 StatDynFricScale", "0.5 FrictionCoefficient").friction == 0.5  # ratio 1: honoured
     assert water("4e6 cBot").seabed_damping == 4e6
-    with pytest.warns(SeacableWarning, match=r"mu_kT = 0.2 and mu_kA = 0.6 .* isotropic and uses their mean, 0.4"):
+    with pytest.warns(SeacableWarning, match=r"mu_kT = 0.2 and mu_kA = 0.6 .* isotropic and uses their mean, 0.4\."):
         assert water("0.2 mu_kT", "0.6 mu_kA").friction == pytest.approx(0.4, rel=1e-15)
 
 
