@@ -15,8 +15,48 @@ import yaml
 
 from ..case import Case
 from ..errors import CaseFileError, InputError
+from .moordyn import MoorDynCase, is_moordyn_file, load_moordyn_case
 
 __all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
+
+
+class _DuplicateKey(yaml.YAMLError):
+    """A key given twice in one YAML mapping (YAML would silently keep the last)."""
+
+    def __init__(self, key, first, second):
+        super().__init__(f"duplicate key {key!r}")
+        self.key, self.first, self.second = key, first, second
+
+
+class _StrictLoader(yaml.SafeLoader):
+    """``yaml.SafeLoader`` that refuses a key given twice in the same mapping.
+
+    YAML 1.2 requires the keys of a mapping to be unique, but PyYAML keeps the last value
+    silently: two ``analysis:`` blocks would run the second and drop the first. Keys brought
+    in by a merge (``<<: *anchor``) may be overridden, as YAML intends.
+    """
+
+    def construct_mapping(self, node, deep=False):
+        if isinstance(node, yaml.MappingNode):
+            seen = {}
+            for key_node, _ in node.value:
+                if key_node.tag == "tag:yaml.org,2002:merge":
+                    continue
+                key = self.construct_object(key_node, deep=True)
+                try:
+                    hash(key)
+                except TypeError:
+                    continue  # the base class reports an unhashable key
+                line = key_node.start_mark.line + 1
+                if key in seen:
+                    raise _DuplicateKey(key, seen[key], line)
+                seen[key] = line
+        return super().construct_mapping(node, deep=deep)
+
+
+def _safe_load(text: str):
+    """``yaml.safe_load`` with duplicate keys refused (:class:`_DuplicateKey`)."""
+    return yaml.load(text, Loader=_StrictLoader)
 
 
 def parse_case(data: Any, *, source: str = "case") -> Case:
@@ -43,7 +83,8 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
     Raises
     ------
     CaseFileError
-        If the file cannot be read or is not YAML; ``what`` names the file in the message.
+        If the file cannot be read or is not YAML, or if a mapping gives the same key twice
+        (named with both line numbers); ``what`` names the file in the message.
     """
     path = Path(path)
     try:
@@ -54,7 +95,12 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
     except (OSError, UnicodeDecodeError) as err:
         raise CaseFileError(f"{what} '{path}' cannot be read: {err}.") from None
     try:
-        return yaml.safe_load(text), text
+        return _safe_load(text), text
+    except _DuplicateKey as err:
+        raise CaseFileError(f"{path}: key {err.key!r} is given twice in the same mapping, at line {err.first} "
+                            f"and at line {err.second}; YAML would keep only the second silently. Suggested "
+                            f"fix: merge the two '{err.key}' entries into one (or delete the one you do not "
+                            "mean).") from None
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
@@ -83,19 +129,22 @@ def load_case_data(path: str | Path) -> dict:
     return data
 
 
-def load_case(path: str | Path) -> Case:
-    """Read and validate a YAML case file.
+def load_case(path: str | Path) -> Case | MoorDynCase:
+    """Read and validate a case file: YAML, or a MoorDyn input file.
 
     Parameters
     ----------
     path
-        The case file.
+        The case file. A MoorDyn input file (recognised by
+        :func:`~seacable.io.moordyn.is_moordyn_file`) is read as a MoorDyn network case.
 
     Returns
     -------
-    Case
-        The validated, immutable case.
+    Case or MoorDynCase
+        The validated, immutable case; :func:`seacable.run` runs either.
     """
+    if is_moordyn_file(path):
+        return load_moordyn_case(path)
     return parse_case(load_case_data(path), source=str(path))
 
 

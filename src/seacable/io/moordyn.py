@@ -18,7 +18,11 @@ v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
   Lines before the first section are free text (the title).
 - A table section has two lines after its header, column names and units, which MoorDyn
   skips unread; the rows follow until the next header. ``OPTIONS`` and ``OUTPUTS`` have none.
-- Options are ``value name [comment]``. Outputs are channel names, several per line allowed.
+- ``!``, ``#`` and ``%`` start a comment that runs to the end of the line, in every line after the
+  title (``docs/inputs.rst`` of MoorDyn v2; MoorDyn-C 2.7.2 reads a commented row as the row before
+  the comment, which matters for the 9- or 12-column POINTS layout).
+- Options are ``value name [comment]``; the name is matched in any case (MoorDyn-F upper-cases it,
+  MoorDyn-C's own examples write ``kbot``). Outputs are channel names, several per line allowed.
 - The file ends at a header containing ``need this line`` or ``END``, or a line ``END``.
 - LINE TYPES, v2 (10 columns): ``name d m EA BA/-zeta EI Cd Ca CdAx CaAx``; v1 (9 columns):
   ``name d m EA BA/-zeta Can Cat Cdn Cdt`` (no EI; coefficients in another order). The layout
@@ -54,8 +58,28 @@ in ``source/MoorDyn2.cpp``), for models that convert a MoorDyn file:
   applied opposite to ``v_h`` (zero when ``v_h = 0``). Defaults ``FrictionCoefficient mu = 0``,
   ``FricDamp = 200``, ``StatDynFricScale = 1.0``.
 - Other defaults: ``g = 9.80665 m/s^2`` (MoorDyn v2.0.0; the 2021-22 alphas used 9.8),
-  ``rho_w = 1025 kg/m^3``, ``dtM = 0.001 s``; the water depth is raised to the depth of the
-  deepest point when ``WtrDpth`` is smaller or absent.
+  ``rho_w = 1025 kg/m^3``, ``dtM = 0.001 s``. Water depth: MoorDyn-C deepens ``WtrDpth`` (default
+  0) to the deepest point as it reads the POINTS, so a deck without ``WtrDpth`` has its seabed at
+  its deepest anchor (:attr:`MoorDynInput.water_depth`). A point below a *given* ``WtrDpth`` is
+  refused here (MoorDyn moves the seabed down to it with a warning): a contradiction in the file.
+
+Options, and what seacable does with each (``MoorDynInput.notes`` carries a message for every
+option it cannot honour; :func:`seacable.mooring.moordyn.prepare_moordyn` warns with them):
+
+- honoured: ``WtrDpth``/``depth``/``WaterDepth``, ``WtrDnsty``/``rho``/``rhoW``, ``g``/``gravity``,
+  ``kBot``/``kb``, ``cBot``/``cb``, ``FrictionCoefficient``, MoorDyn-F's ``mu_kT``/``mu_kA`` when
+  equal, ``StatDynFricScale``/``MC`` equal to 1, and ``WaveKin``/``Currents`` equal to 0;
+- no counterpart needed, no warning: MoorDyn's own numerics and output (``dtM``, ``DT``, ``cfl``,
+  ``tScheme``, ``dtIC``, ``TmaxIC``, ``CdScaleIC``, ``threshIC``, ``ICgenDynamic``, ``fileIC``,
+  ``inertialF``, ``inertialF_rampT``, ``writeLog``, ``WriteUnits``, ``dtOut``, ``disableOutput``,
+  ``disableOutTime``, ``OutSwitch``, ``Echo``; ``dtWave``, ``waveKin_rampT``, ``UnifyCurrentGrid``
+  without waves): seacable solves the static equilibrium by Newton's method and integrates with an
+  implicit Newmark scheme at the step the user gives;
+- warned: ``WaveKin``/``Currents`` other than 0 and ``WaterKin`` (still water instead),
+  ``SeafloorFile`` (flat seabed instead), ``mu_kT`` and ``mu_kA`` that differ (their mean),
+  ``FricDamp``/``CV`` and ``StatDynFricScale``/``MC`` other than 1 with friction (Coulomb friction
+  regularised over 0.01 m/s instead), a line type's VIV lift ``Cl`` other than 0, and any option
+  name seacable does not know (ignored, with a did-you-mean).
 
 References
 ----------
@@ -67,6 +91,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 import warnings
@@ -75,12 +100,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import _validate
+from .. import _limits, _validate
 from .._model import suggest
 from ..errors import InputError, SeacableWarning
 
-__all__ = ["MoorDynInput", "MoorDynLine", "MoorDynLineType", "MoorDynPoint", "is_moordyn_file",
-           "moordyn_axial_damping", "read_moordyn"]
+__all__ = ["MoorDynCase", "MoorDynInput", "MoorDynLine", "MoorDynLineType", "MoorDynPoint", "is_moordyn_file",
+           "load_moordyn_case", "moordyn_axial_damping", "read_moordyn"]
 
 
 @dataclass(frozen=True)
@@ -130,20 +155,36 @@ class MoorDynLine:
     outputs: str  # MoorDyn's output flags, e.g. 'pt' or '-'
 
 
-_DEPTH = ("WtrDpth", "depth")
-_RHO = ("WtrDnsty", "rho", "Rho", "rhoW", "rhow")
+_DEPTH = ("WtrDpth", "depth", "WaterDepth")
+_RHO = ("WtrDnsty", "rho", "rhoW")
 _G = ("g", "gravity")
 _KBOT = ("kBot", "kb")
 _CBOT = ("cBot", "cb")
 _DT = ("dtM", "DT")
-_CFL = ("cfl", "CFL")
+_CFL = ("cfl",)
+_MU = ("FrictionCoefficient",)
+_MU_T, _MU_A = ("mu_kT",), ("mu_kA",)
+_FRIC_DAMP = ("FricDamp", "CV")
+_FRIC_SCALE = ("StatDynFricScale", "MC")
+
+
+def _lookup(options: dict, keys):
+    """The value of the first of ``keys`` present in ``options`` (names compared case-insensitively, as
+    MoorDyn-F does; the last of several spellings in the file wins, as in MoorDyn), else None."""
+    wanted = {k.lower() for k in keys}
+    found = None
+    for name, value in options.items():
+        if name.lower() in wanted:
+            found = value
+    return found
 
 
 def _option(name, keys, default, doc):
-    """A read-only property: the first of the option ``keys`` present, else ``default``."""
+    """A read-only property: the option ``keys`` (any spelling, any case), else ``default``."""
 
     def get(self):
-        return next((self.options[k] for k in keys if k in self.options), default)
+        value = _lookup(self.options, keys)
+        return default if value is None else value
 
     get.__name__, get.__doc__ = name, doc
     return property(get)
@@ -151,7 +192,13 @@ def _option(name, keys, default, doc):
 
 @dataclass(frozen=True)
 class MoorDynInput:
-    """What :func:`read_moordyn` returns: the file's line types, points, lines, options and outputs."""
+    """What :func:`read_moordyn` returns: the file's line types, points, lines, options and outputs.
+
+    ``notes`` are the messages about what the file asks for that seacable's mooring model does not
+    do (an option it cannot honour, an unknown option, VIV lift on a line type): each names the
+    option, its value and what seacable does instead. The model that runs the file warns with them
+    (:func:`seacable.mooring.moordyn.prepare_moordyn`).
+    """
 
     path: str | None
     title: str
@@ -160,18 +207,51 @@ class MoorDynInput:
     lines: tuple[MoorDynLine, ...]
     options: dict[str, float | str]
     outputs: tuple[str, ...]
+    notes: tuple[str, ...] = ()
 
-    water_depth = _option("water_depth", _DEPTH, None, "Water depth ``WtrDpth``/``depth``, or None. [m]")
-    water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``, default 1025. [kg/m^3]")
+    water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")
     gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
     kbot = _option("kbot", _KBOT, 3.0e6, "Seabed stiffness per contact area ``kBot``, default 3e6. [Pa/m]")
     cbot = _option("cbot", _CBOT, 3.0e5, "Seabed damping per contact area ``cBot``, default 3e5. [Pa s/m]")
-    friction = _option("friction", ("FrictionCoefficient",), 0.0, "Seabed friction coefficient. [-]")
-    friction_damping = _option("friction_damping", ("FricDamp",), 200.0, "``FricDamp``, default 200. [s/m]")
-    static_dynamic_friction_scale = _option("static_dynamic_friction_scale", ("StatDynFricScale",), 1.0,
-                                            "``StatDynFricScale``, default 1. [-]")
+    friction_damping = _option("friction_damping", _FRIC_DAMP, 200.0,
+                               "``FricDamp`` (MoorDyn-F ``CV``), default 200. [N s/m]")
+    static_dynamic_friction_scale = _option("static_dynamic_friction_scale", _FRIC_SCALE, 1.0,
+                                            "``StatDynFricScale`` (MoorDyn-F ``MC``), default 1. [-]")
     time_step = _option("time_step", _DT, None, "Mooring time step ``dtM`` (or ``DT``), None if absent. [s]")
     cfl = _option("cfl", _CFL, None, "CFL factor ``cfl``, None if absent. [-]")
+
+    @property
+    def given_water_depth(self) -> float | None:
+        """The ``WtrDpth`` option as written (``depth``/``WaterDepth`` too), None if absent. [m]"""
+        return _lookup(self.options, _DEPTH)
+
+    @property
+    def water_depth(self) -> float | None:
+        """Water depth: ``WtrDpth``, or, without it, the depth of the deepest point. [m]
+
+        MoorDyn-C reads the depth as ``WtrDpth`` (default 0) and, point by point, deepens it to
+        the lowest point (``ReadInFile`` in ``source/MoorDyn2.cpp``: "make default water depth at
+        least the depth of the lowest node (so water depth input is optional)"), so a deck
+        without ``WtrDpth`` has its seabed at its deepest anchor. None when no point is below
+        the surface (no seabed). A point below a given ``WtrDpth`` is refused by the reader.
+        """
+        given = self.given_water_depth
+        if given is not None:
+            return given
+        deepest = -min(p.position[2] for p in self.points)
+        return deepest if deepest > 0 else None
+
+    @property
+    def friction(self) -> float:
+        """Seabed friction coefficient: ``FrictionCoefficient`` (MoorDyn-C), else MoorDyn-F's
+        ``mu_kT``/``mu_kA`` (their mean when they differ; see ``notes``), else 0. [-]"""
+        mu = _lookup(self.options, _MU)
+        if mu is not None:
+            return mu
+        mu_t, mu_a = _lookup(self.options, _MU_T), _lookup(self.options, _MU_A)
+        if mu_t is None and mu_a is None:
+            return 0.0
+        return ((mu_t or 0.0) + (mu_a or 0.0)) / 2  # MoorDyn-F's default for either is 0
 
     def point(self, point_id: int) -> MoorDynPoint:
         """Return the point with ID ``point_id``."""
@@ -257,6 +337,13 @@ class _Reader:
 
     def __init__(self, label: str):
         self.label = label
+        self.notes: list[str] = []
+        self.option_lines: dict[str, int] = {}
+
+    def at(self, name: str) -> str:
+        """``file:line: `` of the option ``name`` (any case), for the notes."""
+        lineno = next((n for k, n in self.option_lines.items() if k.lower() == name.lower()), None)
+        return f"{self.label}:{lineno}: " if lineno else f"{self.label}: "
 
     def error(self, lineno: int | None, message: str) -> InputError:
         where = f"{self.label}:{lineno}" if lineno else self.label
@@ -321,12 +408,27 @@ def _is_end(line: str) -> bool:
     return "---" in line and ("NEED THIS LINE" in stripped or re.search(r"\bEND\b", stripped) is not None)
 
 
+_COMMENT = re.compile(r"[!#%]")
+
+
+def _strip_comment(line: str) -> str:
+    """The line without its comment: MoorDyn v2 ignores the rest of a line from a '!', '#' or '%'.
+
+    ``docs/inputs.rst`` of MoorDyn ("!, #, and % are comment characters ... any of these characters
+    will prevent MoorDyn from reading the rest of that line"); MoorDyn-C 2.7.2 reads a points row
+    ``3 Free -150 0 -60 1000 0 1 0 # 1 2 3 4`` as the 9-column row before the ``#``.
+    """
+    match = _COMMENT.search(line)
+    return line if match is None else line[:match.start()]
+
+
 def _split_sections(rd: _Reader, text: str):
     """Return (title lines, echo, {kind: (header lineno, header text, [(lineno, line)])})."""
     title, sections, echo, unknown = [], {}, None, []
     current = None  # [kind, header lineno, header text, rows] of the section being filled
     for lineno, raw in enumerate(text.splitlines(), start=1):
-        line = raw.rstrip()
+        # the title is free text; from the first section on, '!', '#' and '%' start a comment
+        line = (_strip_comment(raw) if sections or current is not None else raw).rstrip()
         if _is_end(line):
             break
         if "---" in line:
@@ -391,12 +493,20 @@ def _coefficient(rd, lineno, type_name, token, column, unit):
     return value
 
 
+def _empty(rd, section, header, row):
+    _, header_no, _, _ = section
+    return rd.error(header_no, f"the {header} section has no rows; a MoorDyn file needs at least one. "
+                               f"Suggested fix: add a row '{row}' after its column-names and units lines.")
+
+
 def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
     names, rows = _table(rd, section)
     lowered = [n.lower() for n in names]
     v1 = "ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(names) == 9)
     layout = ("name d m EA BA/-zeta Can Cat Cdn Cdt" if v1
               else "name d m EA BA/-zeta EI Cd Ca CdAx CaAx")
+    if not rows:
+        raise _empty(rd, section, "LINE TYPES", layout)
     out: dict[str, MoorDynLineType] = {}
     for lineno, t in rows:
         rd.columns(lineno, t, 9 if v1 else 10, "LINE TYPES", layout)
@@ -404,8 +514,8 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
         if name in out:
             raise rd.error(lineno, f"line type {name!r} is defined twice. Suggested fix: give each "
                                    "line type its own name.")
-        d = rd.number(lineno, t[1], f"line type {name!r} diameter", "m")
-        m = rd.number(lineno, t[2], f"line type {name!r} mass per length", "kg/m")
+        d = rd.number(lineno, t[1], f"line type {name!r} Diam (diameter)", "m")
+        m = rd.number(lineno, t[2], f"line type {name!r} MassDen (mass per length)", "kg/m")
         ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
         ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
         if v1:
@@ -416,9 +526,15 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
             ei = _coefficient(rd, lineno, name, t[5], "EI", "N m^2")
             cdn, can, cdt, cat = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
                                   for k, c in zip(range(6, 10), ("Cd", "Ca", "CdAx", "CaAx")))
-        rd.check(lineno, _validate.positive, f"line type {name!r} diameter", d, "m",
+            if len(t) > 10:  # MoorDyn v2.3+: optional Cl dF cF (vortex-induced vibration)
+                cl = rd.number(lineno, t[10], f"line type {name!r} Cl (VIV lift coefficient)", "-")
+                if cl != 0:
+                    rd.notes.append(f"{rd.label}:{lineno}: line type {name!r} Cl = {cl:g} asks for MoorDyn's "
+                                    "vortex-induced vibration lift; seacable has no VIV model and runs the line "
+                                    "without it.")
+        rd.check(lineno, _validate.positive, f"line type {name!r} Diam (diameter)", d, "m",
                  "give the volume-equivalent diameter in metres")
-        rd.check(lineno, _validate.positive, f"line type {name!r} mass per length", m, "kg/m",
+        rd.check(lineno, _validate.positive, f"line type {name!r} MassDen (mass per length)", m, "kg/m",
                  "give the mass per metre in air in kg/m")
         rd.check(lineno, _validate.positive, f"line type {name!r} EA", ea, "N",
                  "give the axial stiffness EA in newtons")
@@ -450,6 +566,8 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
     _, rows = _table(rd, section)
     points, where = [], {}
     layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
+    if not rows:
+        raise _empty(rd, section, "POINTS", "ID type X Y Z mass volume CdA Ca")
     for lineno, t in rows:
         rd.columns(lineno, t, 9, "POINTS", layout)
         pid = _integer(rd, lineno, t[0], "point ID")
@@ -458,8 +576,8 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
                                    "Suggested fix: number the points 1, 2, 3, ... once each.")
         kind = _attachment(rd, lineno, t[1], pid)
         x, y, z = (rd.number(lineno, t[k], f"point {pid} {c}", "m") for k, c in zip((2, 3, 4), "XYZ"))
-        mass = rd.number(lineno, t[5], f"point {pid} mass", "kg")
-        vol = rd.number(lineno, t[6], f"point {pid} volume", "m^3")
+        mass = rd.number(lineno, t[5], f"point {pid} Mass", "kg")
+        vol = rd.number(lineno, t[6], f"point {pid} Volume", "m^3")
         if len(t) >= 12:
             forces = [rd.number(lineno, t[k], f"point {pid} F{c}", "N") for k, c in zip((7, 8, 9), "XYZ")]
             if any(forces):
@@ -471,7 +589,7 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
             cda_tok, ca_tok = t[7], t[8]
         cda = rd.number(lineno, cda_tok, f"point {pid} CdA", "m^2")
         ca = rd.number(lineno, ca_tok, f"point {pid} Ca", "-")
-        for label, value, unit in (("mass", mass, "kg"), ("volume", vol, "m^3"), ("CdA", cda, "m^2"),
+        for label, value, unit in (("Mass", mass, "kg"), ("Volume", vol, "m^3"), ("CdA", cda, "m^2"),
                                    ("Ca", ca, "")):
             rd.check(lineno, _validate.nonnegative, f"point {pid} {label}", value, unit,
                      "point masses, volumes and coefficients are >= 0")
@@ -489,6 +607,7 @@ def _integer(rd, lineno, token, what) -> int:
 
 
 def _point_ref(rd, lineno, token, points, line_id, end) -> int:
+    """The point ID of a LINES attachment (``end`` names it, e.g. ``'A (AttachA)'``)."""
     m = re.fullmatch(r"([A-Za-z]*)(\d+)([A-Za-z]*)", token)
     prefix = m.group(1).upper() if m else ""
     if m and prefix in ("R", "ROD") and m.group(3):
@@ -506,13 +625,21 @@ def _point_ref(rd, lineno, token, points, line_id, end) -> int:
     return pid
 
 
+# memory of one node in the model and its result: position, velocity, acceleration and the band of the
+# Newton matrix (about 50 values), element properties and the stored shape and tensions [values]
+_VALUES_PER_NODE = 64
+
+
 def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
     names, rows = _table(rd, section)
     v1 = len(names) > 2 and "len" in names[2].lower()
     layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
               else "ID type AttachA AttachB UnstrLen NumSegs outputs")
+    if not rows:
+        raise _empty(rd, section, "LINES", layout)
     cols = (4, 5, 2, 3) if v1 else (2, 3, 4, 5)  # attach A, attach B, length, segments
-    out, seen = [], {}
+    ends = ("NodeAnch", "NodeFair") if v1 else ("AttachA", "AttachB")
+    out, seen, nodes = [], {}, len(points)
     for lineno, t in rows:
         rd.columns(lineno, t, 7, "LINES", layout)
         lid = _integer(rd, lineno, t[0], "line ID")
@@ -521,18 +648,28 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
                                    "Suggested fix: number the lines 1, 2, 3, ... once each.")
         seen[lid] = lineno
         if t[1] not in types:
-            raise rd.error(lineno, f"line {lid} line type must be one of {sorted(types)}, got "
+            raise rd.error(lineno, f"line {lid} LineType must be one of {sorted(types)}, got "
                                    f"{t[1]!r}.{suggest(t[1], types)} Suggested fix: use a name from the "
                                    "LINE TYPES section (names are case-sensitive).")
-        a = _point_ref(rd, lineno, t[cols[0]], points, lid, "A")
-        b = _point_ref(rd, lineno, t[cols[1]], points, lid, "B")
-        length = rd.number(lineno, t[cols[2]], f"line {lid} unstretched length", "m")
-        nseg = _integer(rd, lineno, t[cols[3]], f"line {lid} number of segments")
-        rd.check(lineno, _validate.at_least, f"line {lid} number of segments", nseg, "",
+        a = _point_ref(rd, lineno, t[cols[0]], points, lid, f"A ({ends[0]})")
+        b = _point_ref(rd, lineno, t[cols[1]], points, lid, f"B ({ends[1]})")
+        length = rd.number(lineno, t[cols[2]], f"line {lid} UnstrLen (unstretched length)", "m")
+        nseg = _integer(rd, lineno, t[cols[3]], f"line {lid} NumSegs (number of segments)")
+        rd.check(lineno, _validate.at_least, f"line {lid} NumSegs (number of segments)", nseg, "",
                  "use at least 1 segment (MoorDyn needs about 10 or more for dynamics)", 1)
+        nodes += nseg - 1
+        try:
+            _limits.check_run_size(f"line {lid} NumSegs = {nseg:.6g} (the file's network of {nodes:.3g} nodes)",
+                                   steps=1, stored_values=_VALUES_PER_NODE * nodes,
+                                   fix="use fewer segments: about 1 per 5-20 m of line is usual")
+        except InputError as exc:
+            raise rd.error(lineno, str(exc)) from None
+        if a == b:
+            raise rd.error(lineno, f"line {lid} AttachA and AttachB are the same point ({a}). Suggested fix: "
+                                   "attach the line's two ends to two different points.")
         if length < 0:  # MoorDyn: a negative length is a factor on the end-point distance
             length = -length * math.dist(points[a].position, points[b].position)
-        rd.check(lineno, _validate.positive, f"line {lid} unstretched length", length, "m",
+        rd.check(lineno, _validate.positive, f"line {lid} UnstrLen (unstretched length)", length, "m",
                  "give the unstretched length in metres (or -factor times the end-point distance)")
         out.append(MoorDynLine(lid, t[1], a, b, length, nseg, t[6]))
     return out
@@ -541,7 +678,7 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
 def _read_options(rd, section) -> dict[str, float | str]:
     options: dict[str, float | str] = {}
     for lineno, line in section[3]:
-        tokens = line.split()
+        tokens = _strip_comment(line).split()
         if not tokens:
             continue
         if len(tokens) < 2:
@@ -549,41 +686,134 @@ def _read_options(rd, section) -> dict[str, float | str]:
                                    f"{line.strip()!r}. Suggested fix: write the value, then the option "
                                    "name (e.g. '100 WtrDpth').")
         value = _as_float(tokens[0])
-        options[tokens[1]] = tokens[0] if value is None else value
         _check_option(rd, lineno, tokens[1], tokens[0], value)
+        options[tokens[1]] = tokens[0] if value is None else value
+        rd.option_lines[tokens[1]] = lineno
     return options
 
 
-_OPTION_CHECKS = {  # name: (check, unit, fix)
-    **{k: (_validate.positive, "m", "give the water depth as a positive number of metres") for k in _DEPTH},
-    **{k: (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
-    **{k: (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
-    **{k: (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")
+_OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
+    **{k.lower(): (_validate.positive, "m", ("give the water depth as a positive number of metres, or remove "
+                   "the line (MoorDyn then takes the depth of the deepest point)")) for k in _DEPTH},
+    **{k.lower(): (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
+    **{k.lower(): (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
+    **{k.lower(): (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")
        for k in _KBOT},
-    **{k: (_validate.nonnegative, "Pa s/m", "give the seabed damping per contact area, e.g. 3e5")
+    **{k.lower(): (_validate.nonnegative, "Pa s/m", "give the seabed damping per contact area, e.g. 3e5")
        for k in _CBOT},
-    **{k: (_validate.positive, "s", "give the mooring time step in seconds, e.g. 0.001") for k in _DT},
-    **{k: (_validate.positive, "", "give a CFL factor such as 0.5") for k in _CFL},
-    "FrictionCoefficient": (_validate.nonnegative, "", "give a friction coefficient >= 0, e.g. 0.5"),
-    "FricDamp": (_validate.nonnegative, "s/m", "give the friction damping scale, default 200"),
-    "StatDynFricScale": (_validate.nonnegative, "", "give the static/dynamic friction ratio, default 1"),
+    **{k.lower(): (_validate.positive, "s", "give the mooring time step in seconds, e.g. 0.001") for k in _DT},
+    **{k.lower(): (_validate.positive, "", "give a CFL factor such as 0.5") for k in _CFL},
+    **{k.lower(): (_validate.nonnegative, "", "give a friction coefficient >= 0, e.g. 0.5")
+       for k in _MU + _MU_T + _MU_A},
+    **{k.lower(): (_validate.nonnegative, "N s/m", "give the friction damping scale, default 200")
+       for k in _FRIC_DAMP},
+    **{k.lower(): (_validate.positive, "", "give the static/dynamic friction ratio, default 1")
+       for k in _FRIC_SCALE},
+    **{k.lower(): (_validate.nonnegative, "", "give a whole number: 0 (none) or a MoorDyn mode")
+       for k in ("WaveKin", "Currents")},
+    **{k.lower(): (_validate.nonnegative, "s", "give a time in seconds")
+       for k in ("dtWave", "waveKin_rampT", "dtIC", "ICdt", "TmaxIC", "ICTmax", "dtOut", "inertialF_rampT")},
+    **{k.lower(): (_validate.positive, "", "give a positive number") for k in ("CdScaleIC", "ICDfac",
+                                                                               "threshIC", "ICthresh")},
 }
+_WHOLE = {"wavekin", "currents"}
+
+# Options that only steer MoorDyn's own numerics (explicit time integration, the dynamic-relaxation
+# start, coupled-body inertia) or its own files and console: they do not change the mooring problem.
+# seacable solves the static equilibrium by Newton's method and integrates in time with an implicit
+# Newmark scheme at the time step the user gives (``--time-step``), so they need no counterpart.
+_NUMERICS = {k.lower() for k in ("dtM", "DT", "cfl", "tScheme", "dtIC", "ICdt", "TmaxIC", "ICTmax",
+                                 "CdScaleIC", "ICDfac", "threshIC", "ICthresh", "ICgenDynamic", "fileIC",
+                                 "inertialF", "inertialF_rampT", "writeLog", "WriteUnits", "dtOut",
+                                 "disableOutput", "disableOutTime", "OutSwitch", "Echo")}
+# Options honoured by the model (``moordyn_model``) or read with the waves they belong to.
+_MODEL = {k.lower() for k in _DEPTH + _RHO + _G + _KBOT + _CBOT + _MU + _MU_T + _MU_A + _FRIC_DAMP + _FRIC_SCALE
+          + ("WaveKin", "Currents", "WaterKin", "dtWave", "waveKin_rampT", "UnifyCurrentGrid", "SeafloorFile")}
+_KNOWN_OPTIONS = ("WtrDpth", "WtrDnsty", "rhoW", "g", "kBot", "cBot", "FrictionCoefficient", "FricDamp",
+                  "StatDynFricScale", "mu_kT", "mu_kA", "MC", "CV", "WaveKin", "Currents", "WaterKin", "dtWave",
+                  "waveKin_rampT", "UnifyCurrentGrid", "SeafloorFile", "dtM", "cfl", "tScheme", "dtIC",
+                  "TmaxIC", "CdScaleIC", "threshIC", "ICgenDynamic", "fileIC", "inertialF", "inertialF_rampT",
+                  "writeLog", "WriteUnits", "dtOut", "disableOutput", "disableOutTime", "OutSwitch")
 
 
 def _check_option(rd, lineno, name, token, value):
-    if name not in _OPTION_CHECKS:
+    key = name.lower()
+    if key not in _OPTION_CHECKS:
         return
-    check, unit, fix = _OPTION_CHECKS[name]
+    check, unit, fix = _OPTION_CHECKS[key]
     if value is None:
-        raise rd.error(lineno, f"option {name} must be a number in {unit or 'SI units'}, got {token!r}. "
+        why = (" (MoorDyn-F reads a bathymetry file here; seacable has a flat seabed and does not read it)"
+               if key in {k.lower() for k in _DEPTH} else "")
+        raise rd.error(lineno, f"option {name} must be a number in {unit or 'SI units'}, got {token!r}{why}. "
                                f"Suggested fix: {fix}.")
     rd.check(lineno, check, f"option {name}", value, unit, fix)
+    if key in _WHOLE and value != int(value):
+        raise rd.error(lineno, f"option {name} must be a whole number, got {token!r}. Suggested fix: {fix}.")
+
+
+def _fmt_value(value) -> str:
+    return f"{value:g}" if isinstance(value, float) else repr(value)
+
+
+def _option_notes(rd, options: dict, depth: float | None, depth_source: str) -> list[str]:
+    """What seacable does about each option it cannot honour (see :class:`MoorDynInput` ``notes``)."""
+    notes = []
+    seabed = (f"a flat seabed at z = {-depth:g} m ({depth_source})" if depth is not None else "no seabed")
+    for name, value in options.items():
+        key = name.lower()
+        if key in _NUMERICS or key in _MODEL:
+            continue
+        hint = suggest(name, _KNOWN_OPTIONS)
+        notes.append(f"{rd.at(name)}option {name} = {_fmt_value(value)} is not a MoorDyn option seacable knows; it is "
+                     f"ignored.{hint}")
+    wave_kin = _lookup(options, ("WaveKin",))
+    if wave_kin:
+        notes.append(f"{rd.at('WaveKin')}option WaveKin = {wave_kin:g} asks MoorDyn for wave kinematics (from its wave files or "
+                     "a coupled code); seacable runs this file in still water. Suggested fix: for regular waves "
+                     "write the mooring as a YAML case with environment.waves.")
+    currents = _lookup(options, ("Currents",))
+    if currents:
+        notes.append(f"{rd.at('Currents')}option Currents = {currents:g} asks MoorDyn for a current read from its current files; "
+                     "seacable runs this file without current. Suggested fix: for a current profile write the "
+                     "mooring as a YAML case with environment.current.")
+    water_kin = _lookup(options, ("WaterKin",))
+    if water_kin is not None and str(water_kin).strip("\"'").lower() not in ("", "unused", "none", "0"):
+        notes.append(f"{rd.at('WaterKin')}option WaterKin = {_fmt_value(water_kin)} (MoorDyn-F water kinematics) is not read; "
+                     "seacable runs this file in still water.")
+    floor = _lookup(options, ("SeafloorFile",))
+    if floor is not None:
+        notes.append(f"{rd.at('SeafloorFile')}option SeafloorFile = {_fmt_value(floor)} (a 3-D bathymetry) is not read; seacable uses "
+                     f"{seabed}.")
+    mu = _lookup(options, _MU)
+    mu_t, mu_a = _lookup(options, _MU_T), _lookup(options, _MU_A)
+    if mu is not None and (mu_t is not None or mu_a is not None):
+        notes.append(f"{rd.at('mu_kT')}options mu_kT/mu_kA (MoorDyn-F) are ignored: FrictionCoefficient = {mu:g} is used for "
+                     "the seabed friction.")
+    elif (mu_t is not None or mu_a is not None) and (mu_t or 0.0) != (mu_a or 0.0):
+        mu_t, mu_a = mu_t or 0.0, mu_a or 0.0  # MoorDyn-F's default for either is 0
+        notes.append(f"{rd.at('mu_kT' if _lookup(options, _MU_T) is not None else 'mu_kA')}options mu_kT = "
+                     f"{mu_t:g} and mu_kA = {mu_a:g} (MoorDyn-F's default 0 where not given) give different "
+                     "transverse and axial seabed friction; seacable's seabed friction is isotropic and uses "
+                     f"their mean, {(mu_t + mu_a) / 2:g}.")
+    friction = mu if mu is not None else max(v for v in (mu_t, mu_a, 0.0) if v is not None)
+    damp = [(n, v) for n, v in options.items() if n.lower() in {k.lower() for k in _FRIC_DAMP}]
+    if friction > 0 and damp:
+        name, value = damp[-1]
+        notes.append(f"{rd.at(name)}option {name} = {value:g} (MoorDyn's friction ramp, F = mu * {name} * |v| up to mu N) "
+                     "is not used: seacable applies Coulomb friction mu N regularised over 0.01 m/s of "
+                     "sliding speed.")
+    scale = [(n, v) for n, v in options.items() if n.lower() in {k.lower() for k in _FRIC_SCALE}]
+    if friction > 0 and scale and scale[-1][1] != 1.0:
+        name, value = scale[-1]
+        notes.append(f"{rd.at(name)}option {name} = {value:g} (static/dynamic friction ratio) is not used: seacable's "
+                     "static and dynamic friction coefficients are equal (ratio 1).")
+    return notes
 
 
 def _read_outputs(section) -> tuple[str, ...]:
     names = []
     for _, line in section[3]:
-        for token in re.split(r"[\s,]+", line.strip()):
+        for token in re.split(r"[\s,]+", _strip_comment(line).strip()):
             token = token.strip("\"'")
             if token:
                 names.append(token)
@@ -611,15 +841,18 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
         With the file, line number, what was wrong, what was expected and a fix: a missing
         LINE TYPES/POINTS/LINES section; a row with too few columns; a value that is not a
         number; an unknown line type or point ID; a duplicate ID; a non-positive diameter,
-        mass, EA or length; fewer than one segment; rows in BODIES, RODS, ROD TYPES, FAILURE;
-        a nonlinear (table) EA, BA or EI; a point type other than fixed, vessel or free; a
-        point below the seabed.
+        mass, EA or length; fewer than one segment, or more than memory allows (see
+        :mod:`seacable._limits`); a line whose two ends are one point; an empty LINE TYPES,
+        POINTS or LINES section; rows in BODIES, RODS, ROD TYPES, FAILURE; a nonlinear (table)
+        EA, BA or EI; a point type other than fixed, vessel or free; a point below a given
+        ``WtrDpth``; an option value out of range or not a number.
 
     Warns
     -----
     SeacableWarning
         When point IDs are not 1..N in file order (MoorDyn attaches lines by position, seacable
-        by ID), or when a section seacable does not know has rows.
+        by ID), or when a section seacable does not know has rows. Options seacable cannot
+        honour are not warned here but listed in :attr:`MoorDynInput.notes`, for the model.
 
     References
     ----------
@@ -644,28 +877,31 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     points, point_lines = _read_points(rd, sections["points"])
     by_id = {p.id: p for p in points}
     lines = _read_lines(rd, sections["lines"], types, by_id)
-    if not lines:
-        raise rd.error(sections["lines"][1], "the LINES section must have at least one line, got none. "
-                                             "Suggested fix: add a row 'ID type AttachA AttachB UnstrLen "
-                                             "NumSegs outputs'.")
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
     outputs = _read_outputs(sections["outputs"]) if "outputs" in sections else ()
     result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs)
-    depth = result.water_depth
-    if isinstance(depth, float):
+    given = result.given_water_depth
+    if given is not None:
         for p in points:
-            if p.position[2] < -depth * (1.0 + 1e-9):
-                raise rd.error(point_lines[p.id], f"point {p.id} z must be >= -WtrDpth = {-depth:g} m, "
-                                                  f"got {p.position[2]:g} m (below the seabed; MoorDyn "
-                                                  "stops with 'Water depth is shallower than Line anchor')."
-                                                  " Suggested fix: raise the point or deepen WtrDpth.")
+            if p.position[2] < -given * (1.0 + 1e-9):
+                raise rd.error(point_lines[p.id], f"point {p.id} Z must be >= -WtrDpth = {-given:g} m, "
+                                                  f"got {p.position[2]:g} m (below the seabed; MoorDyn would "
+                                                  f"move the seabed down to it with a warning). Suggested fix: "
+                                                  f"raise the point, set WtrDpth to at least "
+                                                  f"{-p.position[2]:g} m, or remove the WtrDpth line (the "
+                                                  "depth is then that of the deepest point, as in MoorDyn).")
+        source = "WtrDpth"
+    else:
+        deepest = min(points, key=lambda p: p.position[2])
+        source = f"no WtrDpth: the depth of the deepest point, point {deepest.id}, as in MoorDyn"
+    rd.notes.extend(_option_notes(rd, options, result.water_depth, source))
     if [p.id for p in points] != list(range(1, len(points) + 1)):
         warnings.warn(f"{label}: point IDs {[p.id for p in points]} are not 1..{len(points)} in file order; "
                       "MoorDyn attaches lines to points by their position in the list, seacable by ID, "
                       "so the two may connect lines differently.", SeacableWarning, stacklevel=2)
-    return result
+    return dataclasses.replace(result, notes=tuple(rd.notes))
 
 
 def is_moordyn_file(path) -> bool:
@@ -690,3 +926,94 @@ def is_moordyn_file(path) -> bool:
     if any("---" in ln and _section_kind(ln) in ("line_types", "points", "lines") for ln in lines):
         return True
     return any("MoorDyn" in ln and not ln.lstrip().startswith("#") for ln in lines[:5])
+
+
+@dataclass(frozen=True)
+class MoorDynCase:
+    """A MoorDyn input file as a case: the file's network and how to run it.
+
+    What :func:`seacable.load_case` returns for a MoorDyn file and :func:`seacable.run` runs
+    (``mooring_static`` without ``duration``, ``mooring_dynamic`` with it). Build one with
+    :func:`load_moordyn_case`; :meth:`with_run` sets the run.
+
+    Parameters
+    ----------
+    data
+        The file, as read by :func:`read_moordyn`.
+    name
+        Short name, used for output files (default: the file's stem).
+    duration
+        Simulated time after the static equilibrium; None for statics only. [s]
+    motion
+        Vessel-point motion (:mod:`seacable.mooring.motion`); None holds the vessel points still.
+    time_step
+        Newmark time step. [s]
+    output_interval
+        Time between stored states. [s]
+    """
+
+    data: MoorDynInput
+    name: str = "moordyn"
+    duration: float | None = None
+    motion: object = None
+    time_step: float = 0.1
+    output_interval: float = 0.5
+
+    @property
+    def path(self) -> str | None:
+        """The file's path (None for text)."""
+        return self.data.path
+
+    @property
+    def analysis_type(self) -> str:
+        """``'mooring_static'`` or, with a ``duration``, ``'mooring_dynamic'``."""
+        return "mooring_static" if self.duration is None else "mooring_dynamic"
+
+    def with_run(self, *, duration=None, motion=None, time_step=None, output_interval=None) -> MoorDynCase:
+        """The same file with a run set (each argument None keeps the current value).
+
+        Raises
+        ------
+        InputError
+            A duration, time step or output interval that is not a positive finite number of
+            seconds, a motion without a duration, or an output interval shorter than the step.
+        """
+        duration = self.duration if duration is None else _validate.positive(
+            "duration", duration, "s", "give the simulated time in seconds, e.g. 100")
+        time_step = self.time_step if time_step is None else _validate.positive(
+            "time step", time_step, "s", "give the Newmark time step in seconds, e.g. 0.1")
+        interval = self.output_interval if output_interval is None else _validate.positive(
+            "output interval", output_interval, "s", "give the time between stored states, e.g. 0.5")
+        motion = self.motion if motion is None else motion
+        if motion is not None and duration is None:
+            raise InputError("a vessel motion needs a duration (s): the length of the run. Suggested fix: "
+                             "give the duration too (--duration on the command line).")
+        if interval < time_step:
+            raise InputError(f"output interval must be >= the time step {time_step:g} s, got {interval:g} s. "
+                             "Suggested fix: store every step at most (output interval = time step).")
+        return dataclasses.replace(self, duration=duration, motion=motion, time_step=time_step,
+                                   output_interval=interval)
+
+    def describe(self) -> str:
+        """One line for ``seacable validate``."""
+        md = self.data
+        segments = sum(ln.n_segments for ln in md.lines)
+        length = sum(ln.length for ln in md.lines)
+        depth = md.water_depth
+        where = "no seabed" if depth is None else f"depth {depth:g} m"
+        return (f"MoorDyn network, {self.analysis_type} analysis: {len(md.lines)} line(s), {len(md.points)} "
+                f"point(s), {segments} segment(s), line length {length:g} m, {where}")
+
+
+def load_moordyn_case(path, *, name=None) -> MoorDynCase:
+    """Read a MoorDyn input file (:func:`read_moordyn`) as a :class:`MoorDynCase` (statics).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The MoorDyn file.
+    name : str, optional
+        The case name (default: the file's stem).
+    """
+    data = read_moordyn(path)
+    return MoorDynCase(data, name=name or Path(path).stem or "moordyn")

@@ -5,8 +5,10 @@ motion, one channel each; Free: a connection point with its mass, volume, C_D A 
 gets ``NumSegs`` truss elements between its two points, with MoorDyn's line-type data: weight in
 water ``(m - rho pi d^2 / 4) g``, axial damping ``BA`` (a negative BA is a damping ratio, MoorDyn's
 rule, see :func:`seacable.io.moordyn.moordyn_axial_damping`), normal and axial drag and added mass.
-The seabed is MoorDyn's: flat at ``WtrDpth``, ``kBot`` and ``cBot`` per projected area, friction
-coefficient ``FrictionCoefficient`` (regularised; MoorDyn's own friction law differs in detail).
+The seabed is MoorDyn's: flat at ``WtrDpth`` (without it, at the deepest point, as MoorDyn-C sets it),
+``kBot`` and ``cBot`` per projected area, friction coefficient ``FrictionCoefficient`` (regularised;
+MoorDyn's own friction law differs in detail). Options seacable cannot honour (waves, currents,
+bathymetry files, ...) are warned by :func:`prepare_moordyn`, each with what seacable does instead.
 Bending stiffness is not modelled: a line type with ``EI > 0`` is run as a truss, with a warning.
 """
 
@@ -17,15 +19,16 @@ import warnings
 
 import numpy as np
 
+from .._limits import check_run_size
 from ..errors import InputError, SeacableWarning
-from ..io.moordyn import MoorDynInput, moordyn_axial_damping, read_moordyn
+from ..io.moordyn import MoorDynCase, MoorDynInput, load_moordyn_case, moordyn_axial_damping, read_moordyn
 from ..results import make_dataset, var
 from .motion import bind
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
 from .run import REFERENCES, network_variables, run_events
 from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
 
-__all__ = ["moordyn_model", "run_moordyn_file"]
+__all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
 
 _KIND = {"fixed": FIXED, "vessel": PRESCRIBED, "free": FREE}
 
@@ -177,6 +180,96 @@ def _arc(net: Network):
     return np.r_[0.0, np.cumsum(net.length)]
 
 
+# A line whose ends start farther apart than its unstretched length times (1 + _MAX_START_STRAIN) is refused:
+# no mooring material carries 10 % axial strain elastically (steel wire and chain yield below 1 %, polyester
+# and nylon ropes break at 10-20 %), so such a start is a wrong length or a wrong point, not a mooring.
+_MAX_START_STRAIN = 0.10
+
+
+def _check_geometry(md: MoorDynInput) -> None:
+    """Refuse a Free point without a line, and a line whose end points are farther apart than it can stretch."""
+    points = {p.id: p for p in md.points}
+    attached = {ln.point_a for ln in md.lines} | {ln.point_b for ln in md.lines}
+    for p in md.points:
+        if p.attachment == "free" and p.id not in attached:
+            raise InputError(f"{md.path or 'MoorDyn file'}: point {p.id} is Free but no line is attached to it: "
+                             "it has no equilibrium (it sinks or floats away). Suggested fix: attach a line to it "
+                             "in the LINES section, or remove the point.")
+    for line in md.lines:
+        gap = math.dist(points[line.point_a].position, points[line.point_b].position)
+        strain = gap / line.length - 1.0
+        if strain > _MAX_START_STRAIN:
+            ea = md.line_types[line.line_type].axial_stiffness
+            raise InputError(
+                f"{md.path or 'MoorDyn file'}: line {line.id} is {line.length:g} m long but its points {line.point_a} "
+                f"and {line.point_b} are {gap:g} m apart: a start strain of {strain:.3g}, i.e. a tension of about "
+                f"{strain * ea:.3g} N at EA = {ea:.3g} N, beyond the {_MAX_START_STRAIN:g} strain no mooring "
+                "material carries (chain and wire yield below 0.01, ropes break at 0.1-0.2). Suggested fix: "
+                f"check UnstrLen of line {line.id} and the coordinates of points {line.point_a} and {line.point_b}.")
+
+
+def prepare_moordyn(case) -> MooringModel:
+    """Every check of a MoorDyn case that can be made before its run; the model the run needs.
+
+    Warns (:class:`~seacable.errors.SeacableWarning`) with each of the file's ``notes``: an option
+    seacable cannot honour (named with its value and what seacable does instead), an unknown
+    option. Refuses (:class:`~seacable.errors.InputError`) a line whose ends are farther apart
+    than it can stretch, and a dynamic run whose steps or stored results exceed the limits of
+    :mod:`seacable._limits`.
+
+    Parameters
+    ----------
+    case : MoorDynCase, str or pathlib.Path
+        The case (:func:`seacable.io.moordyn.load_moordyn_case`), or the file.
+
+    Returns
+    -------
+    MooringModel
+        The network of the file in its water.
+    """
+    if not isinstance(case, MoorDynCase):
+        case = load_moordyn_case(case)
+    md = case.data
+    for note in md.notes:
+        warnings.warn(note, SeacableWarning, stacklevel=2)
+    _check_geometry(md)
+    model = moordyn_model(md)
+    if case.duration is not None:
+        net = model.network
+        stored = (math.floor(case.duration / case.output_interval) + 1) * (10 * net.n_nodes + 2 * net.n_elements)
+        check_run_size(f"the mooring_dynamic run of {case.name}", steps=case.duration / case.time_step,
+                       stored_values=stored, fix="shorten the duration, or lengthen the time step or the output "
+                                                 "interval")
+    return model
+
+
+def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
+    """Run a :class:`~seacable.io.moordyn.MoorDynCase`: the static equilibrium and, with a duration, the response.
+
+    ``case.motion`` (:mod:`seacable.mooring.motion`) moves every vessel point; None holds them still. Returns a
+    Dataset with the names of the ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with
+    several lines). ``progress(t, duration)`` is called as a dynamic run advances.
+    """
+    if not isinstance(case, MoorDynCase):
+        raise InputError(f"run_moordyn_case takes a MoorDynCase, got {type(case).__name__}. Suggested fix: "
+                         "seacable.load_case('lines.txt').")
+    model = prepare_moordyn(case)
+    md = case.data
+    st = static_equilibrium(model, tol=tolerance)
+    title = md.title or str(md.path)
+    settings = {"source": str(md.path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
+    if case.duration is None:
+        return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
+    fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
+    run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
+                               tol=tolerance * 10, progress=progress)
+    ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
+                  settings={**settings, "time_step": run.time_step, "steps": run.steps})
+    ds.update(run_events(run))
+    ds.attrs["interrupted"] = int(run.interrupted)
+    return ds
+
+
 def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_step: float = 0.1,
                      output_interval: float = 0.5, tolerance: float = 1e-8, progress=None):
     """Run a MoorDyn input file: the static equilibrium, and with ``duration`` the response to ``motion``.
@@ -184,21 +277,8 @@ def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_s
     ``motion`` is a fairlead motion of :mod:`seacable.mooring.motion` applied to every vessel point;
     ``None`` holds them still. Returns a Dataset with the names of the
     ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with several lines).
+    The same as ``run_moordyn_case(load_moordyn_case(path).with_run(...))``.
     """
-    md = read_moordyn(path)
-    model = moordyn_model(md)
-    st = static_equilibrium(model, tol=tolerance)
-    title = md.title or str(path)
-    settings = {"source": str(path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
-    if duration is None:
-        return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
-    if duration <= 0:
-        raise InputError(f"duration must be > 0 s, got {duration:g} s.")
-    fn = bind(motion, model.network.channel_positions(st.position), duration)
-    run: MooringRun = simulate(model, fn, duration, time_step, output_interval, initial=st.position,
-                               tol=tolerance * 10, progress=progress)
-    ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
-                  settings={**settings, "time_step": run.time_step, "steps": run.steps})
-    ds.update(run_events(run))
-    ds.attrs["interrupted"] = int(run.interrupted)
-    return ds
+    case = load_moordyn_case(path).with_run(duration=duration, motion=motion, time_step=time_step,
+                                            output_interval=output_interval)
+    return run_moordyn_case(case, tolerance=tolerance, progress=progress)

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 import seacable as sc
-from seacable.sweeps import is_sweep_file
 from seacable.io import dump_case, parse_case
+from seacable.sweeps import is_sweep_file
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples"
 
@@ -55,8 +55,8 @@ def test_every_example_is_valid(path):
     (("diameter: 0.09", "diameter: -0.09"), "line_types.chain.diameter must be > 0 m, got -0.09 m"),
     (("diameter: 0.09", "diameter: .nan"), "line_types.chain.diameter must be a finite number"),
     (("length: 902.2", "length: long"), "line.segments[0].length must be a number in m, got 'long'"),
-    (("line_type: chain,", "line_type: chian,"), "'chian' is not defined in line_types (defined: chain). "
-                                                 "Did you mean 'chain'?"),
+    (("line_type: chain,", "line_type: chian,"), ("'chian' is not defined in line_types (defined: chain). "
+                                                 "Did you mean 'chain'?")),
     (("type: static", "type: statik"), "analysis.type must be one of"),
     (("depth: 320.0", "dept: 320.0"), "environment has an unknown key 'dept'. Did you mean 'depth'?"),
     (("name: t", "nme: t"), "has an unknown key 'nme'. Did you mean 'name'?"),
@@ -93,3 +93,41 @@ def test_cases_built_in_code_equal_cases_from_files(tmp_path):
                    environment=sc.Environment(depth=320.0),
                    analysis=sc.StaticAnalysis(fairlead=(848.67, -70.0)))
     assert case == sc.load_case(write(tmp_path, GOOD))
+
+
+# --------------------------------------------------------------------------- duplicated keys (issue 17)
+
+@pytest.mark.parametrize("text, key, first, second", [
+    # two analysis blocks: PyYAML kept the second silently, the case ran a modal analysis
+    (GOOD + "analysis: {type: modal}\n", "analysis", 7, 8),
+    # a key repeated inside a nested mapping
+    (GOOD.replace("environment: {depth: 320.0}", "environment:\n  depth: 320.0\n  seabed: {}\n  depth: 32.0"),
+     "depth", 7, 9),
+    (GOOD.replace("line_types:\n", "line_types:\n  chain: {diameter: 0.1}\n"), "chain", 4, 5),
+])
+def test_a_key_given_twice_is_an_error_naming_both_lines(tmp_path, text, key, first, second):
+    path = write(tmp_path, text)
+    with pytest.raises(sc.CaseFileError) as info:
+        sc.load_case(path)
+    message = str(info.value)
+    assert message.startswith(f"{path}: key '{key}' is given twice in the same mapping, at line {first} and at "
+                              f"line {second}")
+    assert "Suggested fix:" in message
+
+
+def test_a_sweep_file_with_a_key_given_twice_is_refused(tmp_path):
+    write(tmp_path, GOOD, "base.yaml")
+    sweep = write(tmp_path, "base: base.yaml\ngrid:\n  line.segments.0.length: [900.0, 905.0]\n"
+                            "grid:\n  environment.depth: [300.0]\n", "sweep.yaml")
+    with pytest.raises(sc.CaseFileError, match=r"sweep.yaml: key 'grid' is given twice .* at line 2 and at line 4"):
+        sc.load_sweep(sweep)
+
+
+def test_merge_keys_may_override_and_equal_values_in_other_mappings_are_fine(tmp_path):
+    text = GOOD.replace("analysis: {type: static, fairlead: [848.67, -70.0]}",
+                        "defaults: &d {type: static, fairlead: [1.0, -70.0]}\n"
+                        "analysis:\n  <<: *d\n  fairlead: [848.67, -70.0]").replace("name: t", "name: t\n")
+    from seacable.io.case_file import read_yaml
+
+    data, _ = read_yaml(write(tmp_path, text))
+    assert data["analysis"] == {"type": "static", "fairlead": [848.67, -70.0]}  # the merge is overridden

@@ -176,7 +176,8 @@ def test_inline_deck_reads_and_defaults():
     data = read_moordyn(_deck(options="0.5   cfl"))
     assert data.path is None and data.title == "test deck"
     assert data.lines[0].length == 350.0
-    assert data.water_depth is None  # absent: None, not a made-up default
+    # no WtrDpth: MoorDyn-C's rule (ReadInFile), the depth of the deepest point, the anchor at z = -100 m
+    assert data.given_water_depth is None and data.water_depth == 100.0
     assert (data.water_density, data.gravity, data.kbot, data.cbot, data.friction) == (
         1025.0, 9.80665, 3.0e6, 3.0e5, 0.0)
     assert data.point(2).position == (0.0, 0.0, -5.0)
@@ -269,21 +270,21 @@ def test_too_few_columns():
 
 def test_number_that_does_not_parse():
     _error(_deck(types="chain 0.1x 20.0 1e9 -1 0 1.2 1.0 0.2 0"),
-           r"diameter must be a finite number in m, got '0.1x'")
+           r"Diam \(diameter\) must be a finite number in m, got '0.1x'")
     _error(_deck(points="1 Fixed -300 0 -1e400 0 0 0 0\n2 Vessel 0 0 -5 0 0 0 0"), r"point 1 Z .*'-1e400'")
-    _error(_deck(lines="1 chain 1 2 nan 20 -"), "unstretched length must be a finite number")
-    _error(_deck(lines="1 chain 1 2 350 2.5 -"), r"number of segments must be a whole number, got '2.5'")
+    _error(_deck(lines="1 chain 1 2 nan 20 -"), r"UnstrLen \(unstretched length\) must be a finite number")
+    _error(_deck(lines="1 chain 1 2 350 2.5 -"), r"NumSegs \(number of segments\) must be a whole number, got '2.5'")
 
 
 def test_unknown_line_type_and_point(tmp_path):
-    msg = _error(_deck(lines="1 chian 1 2 350 20 -"), r"line type must be one of \['chain'\], got 'chian'")
+    msg = _error(_deck(lines="1 chian 1 2 350 20 -"), r"LineType must be one of \['chain'\], got 'chian'")
     assert "Did you mean 'chain'?" in msg
-    _error(_deck(lines="1 chain 1 3 350 20 -"), r"end B refers to point 3, which is not in the POINTS")
+    _error(_deck(lines="1 chain 1 3 350 20 -"), r"end B \(AttachB\) refers to point 3, which is not in the POINTS")
     _error(_deck(lines="1 chain R1A 2 350 20 -"), "attached to rod end 'R1A'")
     _error(_deck(lines="1 chain B1 2 350 20 -"), "must be a point ID")
     path = tmp_path / "lines.txt"
     path.write_text(_deck(lines="1 chain 1 9 350 20 -"))
-    with pytest.raises(InputError, match=rf"^{path}:15: line 1 end B refers to point 9"):
+    with pytest.raises(InputError, match=rf"^{path}:15: line 1 end B \(AttachB\) refers to point 9"):
         read_moordyn(path)
     _error(_deck(lines="1 chain 1 9 350 20 -"), r"^mooring.txt:15:", name="mooring.txt")
 
@@ -297,16 +298,16 @@ def test_duplicate_ids():
 
 
 @pytest.mark.parametrize("row, match", [
-    ("1 chain 1 2 350 0 -", r"number of segments must be >= 1, got 0"),
-    ("1 chain 1 2 0 20 -", r"unstretched length must be > 0 m, got 0 m"),
+    ("1 chain 1 2 350 0 -", r"NumSegs \(number of segments\) must be >= 1, got 0"),
+    ("1 chain 1 2 0 20 -", r"UnstrLen \(unstretched length\) must be > 0 m, got 0 m"),
 ])
 def test_bad_line_row(row, match):
     _error(_deck(lines=row), match)
 
 
 @pytest.mark.parametrize("row, match", [
-    ("chain -0.1 20 1e9 -1 0 1.2 1 0.2 0", r"'chain' diameter must be > 0 m, got -0.1 m"),
-    ("chain 0.1 0 1e9 -1 0 1.2 1 0.2 0", r"'chain' mass per length must be > 0 kg/m, got 0 kg/m"),
+    ("chain -0.1 20 1e9 -1 0 1.2 1 0.2 0", r"'chain' Diam \(diameter\) must be > 0 m, got -0.1 m"),
+    ("chain 0.1 0 1e9 -1 0 1.2 1 0.2 0", r"'chain' MassDen \(mass per length\) must be > 0 kg/m, got 0 kg/m"),
     ("chain 0.1 20 -3 -1 0 1.2 1 0.2 0", r"'chain' EA must be > 0 N, got -3 N"),
     ("chain 0.1 20 1e9 -1 -5 1.2 1 0.2 0", r"'chain' EI must be >= 0 N m\^2"),
     ("chain 0.1 20 1e9 -1 0 -1.2 1 0.2 0", r"'chain' Cd must be >= 0"),
@@ -351,11 +352,11 @@ def test_bad_point_attachment(word, match):
 
 def test_bad_point_values():
     _error(_deck(points="1 Fixed -300 0 -100 -5 0 0 0\n2 Vessel 0 0 -5 0 0 0 0"),
-           r"point 1 mass must be >= 0 kg")
+           r"point 1 Mass must be >= 0 kg")
     _error(_deck(points=POINT_ROWS + "\n3 Free 0 0 -50 0 0 0 0 1e3 0 0"),
            r"point 3 constant force .* must be 0")
     _error(_deck(points="1 Fixed -300 0 -120 0 0 0 0\n2 Vessel 0 0 -5 0 0 0 0"),
-           r":10: point 1 z must be >= -WtrDpth = -100 m, got -120 m")
+           r":10: point 1 Z must be >= -WtrDpth = -100 m, got -120 m")
 
 
 def test_bad_options():
@@ -368,7 +369,7 @@ def test_bad_options():
 def test_missing_units_line_and_empty_lines_section():
     text = _deck().replace("(#)   (name)     (#)      (#)       (m)       (-)     (-)\n", "")
     _error(text, r"the units line of 'LINES' .* must be text, got the data row")
-    _error(_deck(lines=""), "LINES section must have at least one line")
+    _error(_deck(lines=""), "the LINES section has no rows")
 
 
 def test_file_errors(tmp_path):
