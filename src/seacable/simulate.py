@@ -13,6 +13,7 @@ from importlib import import_module
 
 from .case import Case
 from .errors import InputError
+from .io.moordyn import MoorDynCase
 
 __all__ = ["check", "run"]
 
@@ -60,6 +61,10 @@ def run(case: Case, progress=None):
         Labelled result with units, long names and provenance; its ``analysis``
         attribute names the analysis type.
     """
+    if isinstance(case, MoorDynCase):  # a MoorDyn input file, from load_case
+        from .mooring.moordyn import run_moordyn_case
+
+        return run_moordyn_case(case, progress=progress)
     module, runner, prepare = _ANALYSES[_case(case).analysis.type]
     runner = getattr(import_module(module), runner)
     if progress is not None and prepare is not None:
@@ -79,5 +84,10 @@ def check(case: Case) -> None:
     InputError, NoSolutionError, ConvergenceError
         As :func:`run` would, before its time loop.
     """
+    if isinstance(case, MoorDynCase):
+        from .mooring.moordyn import prepare_moordyn
+
+        prepare_moordyn(case)
+        return
     module, runner, prepare = _ANALYSES[_case(case).analysis.type]
     getattr(import_module(module), prepare or runner)(case)

@@ -286,8 +286,6 @@ def test_load_case_of_a_moordyn_file_is_a_case_that_runs(tmp_path):
     assert dd.fairlead_tension.values == pytest.approx(float(ds.fairlead_tension), rel=1e-6)
 
 
-@pytest.mark.xfail(strict=True, reason="needs the dispatch of a MoorDynCase in seacable.simulate.run (coordinator's "
-                                       "patch); remove this mark when it is applied")
 def test_seacable_run_accepts_a_moordyn_case(tmp_path):
     case = seacable.load_case(_file(tmp_path, deck()))
     assert seacable.run(case).attrs["analysis"] == "mooring_static"
