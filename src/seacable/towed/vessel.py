@@ -651,7 +651,7 @@ def initial_heading(path: VesselPath, duration: float, distance: float, base_dir
     path
         One of :data:`VESSEL_PATHS`.
     duration
-        The run's duration; the path is searched from 0 to this time. [s]
+        The run's duration; the path is searched from 0 to this time (a table to its end). [s]
     distance
         The small distance that counts as setting off, > 0. [m]
     base_dir
@@ -663,9 +663,10 @@ def initial_heading(path: VesselPath, duration: float, distance: float, base_dir
         Heading from +X towards +Y, in (-pi, pi]; a path that never moves ``distance`` in the run
         gives its ``heading`` (0 for a table that does not move). [rad]
     """
-    duration = float(duration)
-    n = 4097
-    times = np.linspace(0.0, duration, n)
+    end = float(duration)
+    if isinstance(path, TablePath):  # a short run on a long table: look as far as the table goes
+        end = max(end, float(_splines(_resolve(path.file, base_dir), path.kind)[0][-1]))
+    times = np.linspace(0.0, end, 4097)
     pos, _ = sample_path(path, times, base_dir)
     p0 = pos[0, :2]
     far = np.hypot(*(pos[:, :2] - p0).T) > distance
