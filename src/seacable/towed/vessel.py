@@ -5,13 +5,15 @@ on the vessel. This module describes that motion as small frozen input models,
 one per kind of manoeuvre, that a case file carries under a ``type`` tag:
 
 ``straight``
-    Constant speed on a constant heading (:class:`StraightPath`).
+    Constant speed on a constant heading (:class:`StraightPath`), optionally
+    reached from rest over a smooth ``ramp``.
 ``speed_schedule``
     Constant heading, speed piecewise linear in time (:class:`SpeedSchedule`),
     e.g. a stop-and-go manoeuvre.
 ``turn``
     Straight, then a turn at constant speed and constant rate of turn, then
-    straight again (:class:`TurnPath`); paper 000's turning case.
+    straight again (:class:`TurnPath`); paper 000's turning case. Like the
+    straight path it may start from rest with a speed ``ramp``.
 ``zigzag``
     Constant speed on a constant heading plus a sinusoidal sway across the
     course (:class:`ZigZagPath`), optionally with its amplitude ramped up
@@ -20,7 +22,9 @@ one per kind of manoeuvre, that a case file carries under a ``type`` tag:
     Positions or velocities read from a CSV file and interpolated with cubic
     splines (:class:`TablePath`).
 
-:func:`sample_path` returns positions and velocities at an array of times.
+:func:`sample_path` returns positions and velocities at an array of times;
+:func:`initial_heading` the direction in which a path sets off (from its
+displacement, for a line laid out behind the vessel at t = 0).
 Positions are the exact integrals of the velocities: closed forms for the first
 four paths (a piecewise quadratic in time for the schedule, circular arcs for
 the turn, a sine across the course for the zig-zag) and the spline's own
