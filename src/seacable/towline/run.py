@@ -10,6 +10,7 @@ import numpy as np
 from .._limits import check_run_size
 from .._validate import in_range
 from ..case import Case, TowlineDynamicAnalysis
+from ..errors import InputError
 from ..results import make_dataset, var
 from ..towed.seabed import seabed_clearance, warn_depth_not_modelled
 from ..towed.vessel import initial_heading, sample_path
@@ -82,6 +83,11 @@ def _check_sizes(case: Case) -> None:
              f"give it forward of midship, within a barge length; {fix}")
     in_range("analysis.barge.yaw_radius_of_gyration", b.gyradius, 0.0, b.length, "m",
              "about 0.25 * length for a barge (paper 003)")
+    depth = case.environment.depth
+    if depth is not None and b.draft >= depth:
+        raise InputError(f"analysis.barge.draft must be less than environment.depth = {depth:g} m, got "
+                         f"{b.draft:g} m: the barge would sit on the seabed. Suggested fix: check the draft and "
+                         "the depth (both in metres).")
 
 
 @dataclass(frozen=True)

@@ -156,6 +156,12 @@ def test_implausible_sizes_are_refused_before_the_run(where, value, message):
         sc.simulate.check(case)
 
 
+def test_a_barge_deeper_than_the_water_is_refused():
+    with pytest.raises(InputError, match=r"analysis.barge.draft must be less than environment.depth = 2 m, "
+                                         r"got 2.5 m"):
+        prepare_towline_dynamic(_case(dict(type="straight", speed=1.0), depth=2.0))
+
+
 def test_an_implausible_line_length_is_refused():
     case = sc.Case.parse(dict(name="x", line_types={"w": WIRE}, line={"line_type": "w", "length": 1e300},
                               analysis=dict(type="towline_dynamic", barge=BARGE, duration=1.0,
