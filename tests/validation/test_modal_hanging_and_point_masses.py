@@ -131,7 +131,10 @@ def test_taut_string_with_a_mid_span_mass(ratio):
                         mass, 1e15, point_masses=masses, n_modes=8)
     omega = modes.select("out").angular_frequency
     scale = 2.0 / length * math.sqrt(tension / mass)  # omega = theta * scale
-    f = lambda t: t * math.tan(t) - mass * length / point  # noqa: E731
+
+    def f(t):
+        return t * math.tan(t) - mass * length / point
+
     sym = [brentq(f, k * math.pi + 1e-9, k * math.pi + math.pi / 2 - 1e-9) * scale for k in range(2)]
     anti = [math.pi * scale, 2 * math.pi * scale]
     expected = np.sort(np.concatenate([sym, anti]))

@@ -14,7 +14,15 @@ from ..errors import InputError
 from ..results import make_dataset, var
 from ..towed.seabed import seabed_clearance, warn_depth_not_modelled
 from ..towed.vessel import initial_heading, sample_path
-from .solver import State, TowlineModel, TowlineRun, initial_state, simulate, stable_time_step
+from .solver import (
+    State,
+    TowlineModel,
+    TowlineRun,
+    check_time_step,
+    initial_state,
+    simulate,
+    stable_time_step,
+)
 
 __all__ = ["REFERENCES", "PreparedTowline", "case_model", "prepare_towline_dynamic", "run_result",
            "run_towline_dynamic"]
@@ -120,7 +128,8 @@ def prepare_towline_dynamic(case: Case) -> PreparedTowline:
     a: TowlineDynamicAnalysis = case.analysis
     _check_sizes(case)
     model = case_model(case)
-    # the explicit step: the given one (checked against the stability bound by simulate) or the bound's
+    # the explicit step: the given one, not above the stability bound, or a fraction of the bound
+    check_time_step(model, a.time_step)
     dt = stable_time_step(model) if a.time_step is None else float(a.time_step)
     sub = max(1, math.ceil(a.output_interval / dt - 1e-9))
     n_out = round(a.duration / a.output_interval)
@@ -167,10 +176,14 @@ def run_result(model: TowlineModel, run: TowlineRun, *, case=None, settings=None
               "element": var("element", np.arange(n), "1", "element")}
     depth = None if case is None else case.environment.depth
     if depth is not None:
-        data["seabed_clearance"] = var(t, seabed_clearance(
-            run.time, run.nodes[..., 2], depth, analysis="towline_dynamic",
-            node_name=lambda j: f"joint {j} ({'the tug tow point' if j == 0 else 'the barge tow point' if j == n else f'{j} of {n} from the tug'})"),
-            "m", "least height of a joint above the seabed (negative: below it; no seabed contact modelled)")
+        def joint(j):
+            where = "the tug tow point" if j == 0 else "the barge tow point" if j == n else f"{j} of {n} from the tug"
+            return f"joint {j} ({where})"
+
+        data["seabed_clearance"] = var(t, seabed_clearance(run.time, run.nodes[..., 2], depth,
+                                                           analysis="towline_dynamic", node_name=joint),
+                                       "m", "least height of a joint above the seabed (negative: below it; "
+                                            "no seabed contact modelled)")
     ds = make_dataset(data, coords, analysis="towline_dynamic", case=case, references=REFERENCES,
                       settings={"time_step": run.time_step, "steps": run.steps,
                                 "element_period": model.element_period, **(settings or {})})

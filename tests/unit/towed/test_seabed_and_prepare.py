@@ -4,7 +4,6 @@ the layback."""
 
 from __future__ import annotations
 
-import math
 import warnings
 
 import numpy as np

@@ -13,8 +13,15 @@ import pytest
 
 import seacable as sc
 from seacable.errors import InputError, SeacableWarning
-from seacable.towed.vessel import (SpeedSchedule, StraightPath, TablePath, TurnPath, ZigZagPath,
-                                   initial_heading, sample_path)
+from seacable.towed.vessel import (
+    SpeedSchedule,
+    StraightPath,
+    TablePath,
+    TurnPath,
+    ZigZagPath,
+    initial_heading,
+    sample_path,
+)
 from seacable.towline.run import prepare_towline_dynamic, run_towline_dynamic
 
 KNOTS = 0.514444
@@ -154,6 +161,11 @@ def test_implausible_sizes_are_refused_before_the_run(where, value, message):
         case = _case(dict(type="straight", speed=1.0), depth=None, **spec)
     with pytest.raises(InputError, match=message):
         sc.simulate.check(case)
+
+
+def test_a_time_step_above_the_stability_bound_is_refused_before_the_run():
+    with pytest.raises(InputError, match="time_step must be > 0 s and not above the explicit scheme's stability"):
+        prepare_towline_dynamic(_case(dict(type="straight", speed=1.0), depth=None, time_step=0.5))
 
 
 def test_a_barge_deeper_than_the_water_is_refused():
