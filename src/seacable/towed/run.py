@@ -47,6 +47,14 @@ def case_setup(case: Case):
             f"and {len(case.line.attachments)} attachment(s). Suggested fix: give one line type and put a "
             "weight at the lower end as 'analysis.body'.")
     lt = case.line.segments[0].line_type
+    ei = lt.bending_stiffness
+    if not (ei is not None and math.isfinite(ei) and ei > 0):
+        named = f" (line type '{lt.name}')" if getattr(lt, "name", None) else ""
+        raise InputError(
+            f"line.segments[0].line_type.bending_stiffness{named} must be > 0 N m^2 for towed_dynamic, got "
+            f"{ei} N m^2: the box scheme of paper 000 carries the curvatures as unknowns and needs EI to keep a "
+            "low-tension cable well posed. Suggested fix: give the cable's EI (a solid section has "
+            "E pi d^4 / 64; a small value such as 1 N m^2 stands in for a cable with little stiffness).")
     par = cable_parameters(
         case.line.length, a.n_nodes, lt.mass_per_length, lt.submerged_weight(env.water_density, env.gravity),
         lt.diameter, axial_stiffness=lt.effective_axial_stiffness(), bending_stiffness=lt.bending_stiffness,
@@ -181,7 +189,7 @@ def run_towed_dynamic(case: Case, progress=None):
     if depth is not None:
         data["seabed_clearance"] = var("time", seabed_clearance(
             res.time, pos[..., 2], depth, analysis="towed_dynamic",
-            node_name=lambda j: f"node {j}" + (" (the lower end)" if j == 0 else "")),
+            node_name=lambda j: f"node {j}" + ("" if j else " (the towed body)" if a.body else " (the lower end)")),
             "m", "least height of a node above the seabed (negative: below it; no seabed contact modelled)")
     coords = {"time": var("time", res.time, "s", "time"),
               "s": var("node", res.s, "m", "unstretched arc length from the lower end")}

@@ -49,7 +49,7 @@ def test_a_sled_that_crosses_the_seabed_is_warned_about_with_time_node_and_depth
     below = np.argwhere(z < -DEPTH)
     i, j = below[0]
     assert f"t = {ds.time.values[i]:g} s" in crossing[0]
-    assert f"node {j} (the lower end)" in crossing[0] and f"{-z[i, j]:g} m deep" in crossing[0]
+    assert f"node {j} (the towed body)" in crossing[0] and f"{-z[i, j]:g} m deep" in crossing[0]
     # the sled really does cross: above the seabed at the start, below it at the end
     assert z[0].min() > -DEPTH and z[-1].min() < -DEPTH
 
@@ -89,7 +89,8 @@ def test_zero_bending_stiffness_is_refused_before_the_run():
                               line={"line_type": "c", "length": 170.0},
                               analysis=dict(type="towed_dynamic", vessel=dict(type="straight", speed=1.0),
                                             duration=10.0)))
-    with pytest.raises(InputError, match="bending_stiffness must be > 0"):
+    with pytest.raises(InputError, match=r"line.segments\[0\].line_type.bending_stiffness .*must be > 0 N m\^2 "
+                                         r"for towed_dynamic, got 0.0 N m\^2"):
         sc.simulate.check(case)
 
 
