@@ -107,11 +107,23 @@ class PushoverAnalysis(_Offsets, _Moored):
 
 
 class ModalAnalysis(_Moored):
-    """Natural frequencies and mode shapes about the static equilibrium."""
+    """Natural frequencies and mode shapes about the static equilibrium.
+
+    With ``free_end: true`` end A is free: the line hangs straight down from the fairlead (a
+    hanging chain, a riser or a cable hanging from a ship) and ``anchor`` is not used.
+    """
 
     type: Literal["modal"] = "modal"
     n_modes: int = Field(10, ge=1, le=1000, description="Modes to report per plane.")
     n_elements: int = Field(100, ge=2, le=20_000, description="Elements of the linearised model.")
+    free_end: bool = Field(False, description="End A (the lower end) free: the line hangs from the fairlead.")
+
+    @model_validator(mode="after")
+    def _free_end(self):
+        if self.free_end and self.anchor is not None:
+            raise ValueError("'anchor' is not used with 'free_end: true' (end A hangs free below the "
+                             "fairlead). Suggested fix: leave 'anchor' out, or set 'free_end: false'.")
+        return self
 
 
 class TowedBody(Model):
@@ -230,12 +242,41 @@ class LayingDynamicAnalysis(Model):
         return self
 
 
+VerticalModeMethod = Literal["string", "exact", "wave"]
+
+
 class VerticalModesAnalysis(Model):
-    """Natural periods of a vertical cable (paper 002 eq. 15 and the exact solution)."""
+    """Natural periods of a vertical cable (paper 002 eq. 15 and the exact solution).
+
+    ``methods`` lists the solutions to compute (default: every one that applies): ``string``, a
+    uniform string at the bottom tension (paper 002 Table 1 row A, gravity neglected; it needs
+    ``bottom_tension > 0``), ``exact``, the Bessel-function solution (row B; with ``bottom_tension: 0``
+    the hanging chain with its lower end free) and ``wave``, the lateral wave's round trip (eq. 15,
+    row C).
+    """
 
     type: Literal["vertical_modes"] = "vertical_modes"
-    bottom_tension: quantity("N", ge=0) = Field(description="Tension at the lower end. [N]")
+    bottom_tension: quantity("N", ge=0) = Field(description="Tension at the lower end (0: a free end). [N]")
     n_modes: int = Field(5, ge=1, le=100)
+    methods: tuple[VerticalModeMethod, ...] | None = Field(
+        None, min_length=1, description="Solutions to compute: string, exact, wave (default: all that apply).")
+
+    @model_validator(mode="after")
+    def _methods(self):
+        m = self.methods
+        if m is not None and len(set(m)) != len(m):
+            raise ValueError(f"methods lists a solution twice: {list(m)}. Suggested fix: name each once.")
+        if m is not None and "string" in m and self.bottom_tension == 0:
+            raise ValueError("methods includes 'string', a uniform string at the bottom tension, but "
+                             "bottom_tension is 0 N: a string without tension has no frequency. Suggested fix: "
+                             "leave 'string' out of methods (the hanging chain is 'exact' and 'wave').")
+        return self
+
+    def solutions(self) -> tuple[str, ...]:
+        """The solutions to compute, in the order string, exact, wave unless given."""
+        if self.methods is not None:
+            return tuple(self.methods)
+        return ("string", "exact", "wave") if self.bottom_tension > 0 else ("exact", "wave")
 
 
 class SeabedContact(Model):
@@ -460,7 +501,8 @@ class Case(Model):
     def _needs(self) -> "Case":
         a = self.analysis
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
-            if self.environment.depth is None and (a.type == "laying_theory" or a.anchor is None):
+            if self.environment.depth is None and (a.type == "laying_theory" or (
+                    a.anchor is None and not getattr(a, "free_end", False))):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
         if isinstance(a, (TowedSteadyAnalysis, LayingTheoryAnalysis, VerticalModesAnalysis)):

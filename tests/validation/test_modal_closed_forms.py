@@ -328,12 +328,13 @@ def test_near_vertical_suspended_chain_limit():
 
     Each half is a hanging chain of length L/2 and they swing out of plane together.
     Paper 002 (section 5) quotes this limit as 1.20 sqrt(2 g/L). The finite bottom loop
-    (a = H/w = 0.1 m on L = 100 m) stiffens it by O(a/L) = 1e-3 (measured 2.7e-5), hence rtol 1e-3.
+    (a = H/w = 0.1 m on L = 100 m) stiffens it by at most O(a/L) = 1e-3; measured 2.2e-5 (with the
+    400 elements' discretisation error), hence rtol 1e-4, a few times the measured agreement.
     """
     length, mass = 100.0, 1.0
     nodes, h, t = funicular(400, length, mass * G, mass * G * 0.1, 1e12)
     omega = cable_modes(nodes, h, t, mass, 1e12, planes=("out",), n_modes=1).angular_frequency[0]
-    assert omega / np.sqrt(2 * G / length) == pytest.approx(jn_zeros(0, 1)[0] / 2, rel=1e-3)
+    assert omega / np.sqrt(2 * G / length) == pytest.approx(jn_zeros(0, 1)[0] / 2, rel=1e-4)
 
 
 # --- paper 002: fundamental period from the lateral wave speed ----------------------------------

@@ -3,17 +3,30 @@
 from __future__ import annotations
 
 import functools
+import math
+import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
+from .._limits import check_run_size
+from .._validate import in_range
 from ..case import Case, TowedDynamicAnalysis
-from ..errors import InputError
+from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
-from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT
-from .solver import TowedBodyParameters, cable_parameters, simulate
-from .vessel import sample_path
+from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV
+from .seabed import seabed_clearance, warn_depth_not_modelled
+from .solver import TowedBodyParameters, cable_parameters, simulate, steady_tow
+from .vessel import initial_heading, sample_path
 
-__all__ = ["run_towed_dynamic", "case_setup"]
+__all__ = ["PreparedTowed", "case_setup", "prepare_towed_dynamic", "run_towed_dynamic"]
+
+#: Longest plausible towed cable [m]: the longest towed arrays are about 12 km; more is taken for a unit
+#: mistake.
+MAX_CABLE_LENGTH = 100_000.0
+
+#: Values stored per node and output time: the state, positions, velocities and the Dataset's copies.
+_PER_NODE = NV + 6 + 20
 
 REFERENCES = (
     "Paper 000: Park, H. I. & Jung, D. H., nonlinear dynamic analysis of a low-tension towed cable by the "
@@ -34,6 +47,14 @@ def case_setup(case: Case):
             f"and {len(case.line.attachments)} attachment(s). Suggested fix: give one line type and put a "
             "weight at the lower end as 'analysis.body'.")
     lt = case.line.segments[0].line_type
+    ei = lt.bending_stiffness
+    if not (ei is not None and math.isfinite(ei) and ei > 0):
+        named = f" (line type '{lt.name}')" if getattr(lt, "name", None) else ""
+        raise InputError(
+            f"line.segments[0].line_type.bending_stiffness{named} must be > 0 N m^2 for towed_dynamic, got "
+            f"{ei} N m^2: the box scheme of paper 000 carries the curvatures as unknowns and needs EI to keep a "
+            "low-tension cable well posed. Suggested fix: give the cable's EI (a solid section has "
+            "E pi d^4 / 64; a small value such as 1 N m^2 stands in for a cable with little stiffness).")
     par = cable_parameters(
         case.line.length, a.n_nodes, lt.mass_per_length, lt.submerged_weight(env.water_density, env.gravity),
         lt.diameter, axial_stiffness=lt.effective_axial_stiffness(), bending_stiffness=lt.bending_stiffness,
@@ -52,6 +73,69 @@ def case_setup(case: Case):
     return par, a.n_nodes, path, kwargs
 
 
+@dataclass(frozen=True)
+class PreparedTowed:
+    """What the time loop of a towed-cable run needs (see :func:`prepare_towed_dynamic`)."""
+
+    parameters: np.ndarray
+    n_nodes: int
+    path: object
+    options: dict
+    initial_state: np.ndarray
+
+
+def _check_start_direction(a: TowedDynamicAnalysis, path, length: float) -> None:
+    """Warn when the vessel's velocity at t = 0 points against where it goes (a table's spline artefact)."""
+    _, vel = path(np.array([0.0]))
+    u = vel[0, :2]
+    speed = math.hypot(*u)
+    if speed == 0.0:
+        return
+    heading = initial_heading(a.vessel, a.duration, distance=1e-3 * length)
+    along = (u[0] * math.cos(heading) + u[1] * math.sin(heading)) / speed
+    if along < 0.0:
+        warnings.warn(
+            f"analysis.vessel: the tow point's velocity at t = 0 ({u[0]:.3g}, {u[1]:.3g}) m/s points against "
+            f"the direction it then travels (heading {math.degrees(heading):.1f} deg); the steady start is "
+            "computed for that velocity. A table that starts from rest gives its spline's artefact here. "
+            "Suggested fix: start the table with the vessel already moving, or add a short run-in.",
+            SeacableWarning, stacklevel=3)
+
+
+def prepare_towed_dynamic(case: Case) -> PreparedTowed:
+    """Every check of a ``towed_dynamic`` case that can be made before its time loop.
+
+    The cable (one uniform segment, plausible length, bending stiffness > 0), the body, the vessel
+    path over the whole run (a table must cover it; a velocity at t = 0 pointing against the path's
+    first displacement is warned about), the size of the run
+    (:func:`seacable._limits.check_run_size`) and the initial steady tow (a vessel at rest in still
+    water is refused). A given ``environment.depth`` is warned about: this model has no seabed
+    contact.
+
+    Raises
+    ------
+    InputError, ConvergenceError
+        As :func:`run_towed_dynamic` would before its first step.
+    """
+    a: TowedDynamicAnalysis = case.analysis
+    in_range("line.length", case.line.length, 0.0, MAX_CABLE_LENGTH, "m",
+             "give the cable length in metres (the longest towed cables are about 12 km).")
+    par, n, path, kwargs = case_setup(case)
+    out = a.output_interval or a.time_step
+    n_out = math.floor(a.duration / out + 1e-9)
+    check_run_size(f"towed_dynamic case '{case.name}'", steps=a.duration / a.time_step,
+                   stored_values=(n_out + 1) * n * _PER_NODE,
+                   fix="shorten analysis.duration, lengthen analysis.time_step or analysis.output_interval, or "
+                       "use fewer nodes")
+    _check_start_direction(a, path, case.line.length)
+    _, vel0 = path(np.array([0.0]))
+    body = kwargs["body"]
+    h0 = steady_tow(par, n, vel0[0], kwargs["current"], body, water_density=kwargs["water_density"],
+                    current_follows_vessel=kwargs["current_follows_vessel"])
+    warn_depth_not_modelled("towed_dynamic", case.environment.depth)
+    return PreparedTowed(par, n, path, kwargs, h0)
+
+
 def run_towed_dynamic(case: Case, progress=None):
     """Run a ``towed_dynamic`` case; see :func:`seacable.run`.
 
@@ -61,9 +145,13 @@ def run_towed_dynamic(case: Case, progress=None):
     An interrupted run (Ctrl-C) returns what it computed, with the attribute ``interrupted = 1``.
     """
     a: TowedDynamicAnalysis = case.analysis
-    par, n, path, kwargs = case_setup(case)
-    res = simulate(par, n, path, a.duration, a.time_step, progress=progress, **kwargs)
+    prep = prepare_towed_dynamic(case)
+    n = prep.n_nodes
+    res = simulate(prep.parameters, n, prep.path, a.duration, a.time_step, progress=progress,
+                   initial_state=prep.initial_state, **prep.options)
     h, pos, vel = res.state, res.position, res.velocity
+    tow = res.vessel_position
+    at_surface = bool(np.all(tow[:, 2] == 0.0))
     td = ("time", "node")
     data = {
         "x": var(td, pos[..., 0], "m", "node position X"),
@@ -84,10 +172,25 @@ def run_towed_dynamic(case: Case, progress=None):
         "inclination": var(td, np.degrees(h[..., I_TH]), "degree",
                            "tangent angle theta below the horizontal (negative: rising to the vessel)"),
         "top_tension": var("time", h[:, -1, I_T], "N", "tension at the vessel"),
-        "lower_end_depth": var("time", -pos[:, 0, 2], "m", "depth of the lower end below the surface"),
-        "vessel_x": var("time", res.vessel_position[:, 0], "m", "tow point X"),
-        "vessel_y": var("time", res.vessel_position[:, 1], "m", "tow point Y"),
+        "lower_end_depth": var("time", -pos[:, 0, 2], "m",
+                               "depth of the lower end below the surface" + (
+                                   " (the tow point is at the surface: also its depth below the ship)"
+                                   if at_surface else "")),
+        "layback": var("time", np.hypot(pos[:, 0, 0] - tow[:, 0], pos[:, 0, 1] - tow[:, 1]), "m",
+                       "horizontal distance from the tow point to the lower end"
+                       + (" (the towed body)" if a.body is not None else "")),
+        "vessel_x": var("time", tow[:, 0], "m", "tow point X"),
+        "vessel_y": var("time", tow[:, 1], "m", "tow point Y"),
     }
+    if not at_surface:
+        data["depth_below_ship"] = var("time", tow[:, 2] - pos[:, 0, 2], "m",
+                                       "depth of the lower end below the tow point")
+    depth = case.environment.depth
+    if depth is not None:
+        data["seabed_clearance"] = var("time", seabed_clearance(
+            res.time, pos[..., 2], depth, analysis="towed_dynamic",
+            node_name=lambda j: f"node {j}" + ("" if j else " (the towed body)" if a.body else " (the lower end)")),
+            "m", "least height of a node above the seabed (negative: below it; no seabed contact modelled)")
     coords = {"time": var("time", res.time, "s", "time"),
               "s": var("node", res.s, "m", "unstretched arc length from the lower end")}
     settings = dict(res.settings)

@@ -5,13 +5,15 @@ on the vessel. This module describes that motion as small frozen input models,
 one per kind of manoeuvre, that a case file carries under a ``type`` tag:
 
 ``straight``
-    Constant speed on a constant heading (:class:`StraightPath`).
+    Constant speed on a constant heading (:class:`StraightPath`), optionally
+    reached from rest over a smooth ``ramp``.
 ``speed_schedule``
     Constant heading, speed piecewise linear in time (:class:`SpeedSchedule`),
     e.g. a stop-and-go manoeuvre.
 ``turn``
     Straight, then a turn at constant speed and constant rate of turn, then
-    straight again (:class:`TurnPath`); paper 000's turning case.
+    straight again (:class:`TurnPath`); paper 000's turning case. Like the
+    straight path it may start from rest with a speed ``ramp``.
 ``zigzag``
     Constant speed on a constant heading plus a sinusoidal sway across the
     course (:class:`ZigZagPath`), optionally with its amplitude ramped up
@@ -20,7 +22,9 @@ one per kind of manoeuvre, that a case file carries under a ``type`` tag:
     Positions or velocities read from a CSV file and interpolated with cubic
     splines (:class:`TablePath`).
 
-:func:`sample_path` returns positions and velocities at an array of times.
+:func:`sample_path` returns positions and velocities at an array of times;
+:func:`initial_heading` the direction in which a path sets off (from its
+displacement, for a line laid out behind the vessel at t = 0).
 Positions are the exact integrals of the velocities: closed forms for the first
 four paths (a piecewise quadratic in time for the schedule, circular arcs for
 the turn, a sine across the course for the zig-zag) and the spline's own
@@ -63,7 +67,7 @@ from ..environment import _warn_if_degrees
 from ..errors import InputError
 
 __all__ = ["StraightPath", "SpeedSchedule", "TurnPath", "ZigZagPath", "TablePath", "VESSEL_PATHS",
-           "VesselPath", "parse_vessel_path", "sample_path"]
+           "VesselPath", "initial_heading", "parse_vessel_path", "sample_path"]
 
 _XY = tuple[float, float]
 
@@ -92,17 +96,31 @@ class _Headed(_Planar):
         return self
 
 
-class StraightPath(_Headed):
+class _SpeedRamp(Model):
+    """The smooth start of the speed shared by the straight and turning paths."""
+
+    ramp: quantity("s", ge=0, fix="give the duration of the smooth start in seconds, 0 for none.") = Field(
+        0.0, description="Duration of the smooth start of the speed from rest; 0 for none. [s]")
+
+
+class StraightPath(_Headed, _SpeedRamp):
     """Constant speed on a constant heading.
+
+    With ``ramp`` > 0 the vessel starts from rest: its speed is ``speed * r(t)`` with the half-cosine
+    ramp ``r`` of :func:`seacable._ramp.smooth_ramp` (zero slope at both ends), and the distance run is
+    its exact integral ``speed * (t / 2 - T sin(pi t / T) / (2 pi))`` for ``t < T``, ``speed (t - T / 2)``
+    after.
 
     Parameters
     ----------
     speed
-        Vessel speed over ground. [m/s]
+        Vessel speed over ground (after the ramp). [m/s]
     heading
         Course, from +X towards +Y. [rad]
     start
         Tow-point position (x, y) at t = 0. [m]
+    ramp
+        Duration T of the smooth start from rest; 0 for none. [s]
     """
 
     type: Literal["straight"] = "straight"
@@ -115,7 +133,7 @@ class StraightPath(_Headed):
         """This path with a turn: at ``rate`` [rad/s] or on ``radius`` [m], from ``start_time`` [s]."""
         extra = {} if direction is None else {"direction": direction}
         return TurnPath(speed=self.speed, heading=self.heading, start=self.start, turn_rate=rate,
-                        radius=radius, start_time=start_time, end_time=end_time, **extra)
+                        radius=radius, start_time=start_time, end_time=end_time, ramp=self.ramp, **extra)
 
 
 class SpeedSchedule(_Headed):
@@ -169,13 +187,16 @@ _TurnRate = quantity("rad/s", fix="give the rate of turn in rad/s (0.5 deg/s = 0
 _Radius = quantity("m", gt=0, fix="give the turning radius in metres and the side in 'direction'.")
 
 
-class TurnPath(_Headed):
+class TurnPath(_Headed, _SpeedRamp):
     """Straight, then a turn at constant speed and rate of turn, then straight.
 
     The vessel runs at ``heading`` until ``start_time``, turns on a circle of
     radius ``speed / |rate|`` until ``end_time`` (for ever if ``None``) and then
     runs straight on its new heading. Give exactly one of ``turn_rate`` or
     ``radius``. Paper 000's case is ``speed=1.0, turn_rate=math.radians(0.5)``.
+    With ``ramp`` > 0 the vessel starts from rest on the first straight, its
+    speed rising as in :class:`StraightPath`; the ramp must end by
+    ``start_time``, so the turn is made at full speed on its circle.
 
     Parameters
     ----------
@@ -198,6 +219,9 @@ class TurnPath(_Headed):
     end_time
         Time at which the turn ends, after ``start_time``; ``None`` keeps
         turning. [s]
+    ramp
+        Duration of the smooth start from rest, not after ``start_time``; 0 for
+        none. [s]
     """
 
     type: Literal["turn"] = "turn"
@@ -223,6 +247,10 @@ class TurnPath(_Headed):
                                  f"rad/s, which turns {sign} (positive = left, negative = right). "
                                  "Suggested fix: leave 'direction' out and give the rate its sign.")
             _warn_if_degrees("vessel.turn_rate", self.turn_rate, _RATE_LOOKS_LIKE_DEGREES)
+        if self.ramp > self.start_time:
+            raise ValueError(f"ramp ({self.ramp:g} s) must end by start_time ({self.start_time:g} s): the "
+                             "turn is made at full speed. Suggested fix: set start_time to at least the ramp, "
+                             f"e.g. start_time: {self.ramp:g}.")
         if self.end_time is not None and self.end_time <= self.start_time:
             raise ValueError(f"end_time must be > start_time = {self.start_time:g} s, got "
                              f"{self.end_time:g} s. Suggested fix: leave end_time out to keep turning.")
@@ -355,10 +383,25 @@ def parse_vessel_path(data: Any, *, root: str = "vessel"):
 # Closed forms
 # ----------------------------------------------------------------------------------------------
 
-def _straight(t, speed, heading, start):
+def _ramped_time(t, ramp):
+    """``R(t) = int_0^t r`` and ``r(t)`` of the half-cosine ramp (R = t, r = 1 without one). [s, -]
+
+    With the speed ``V r(t)`` the distance run is ``V R(t)``; before t = 0 a ramped path is at rest.
+    """
+    t = np.asarray(t, float)
+    if ramp <= 0:
+        return t, np.ones_like(t)
+    r, _, _ = smooth_ramp(t, ramp)
+    tc = np.clip(t, 0.0, ramp)
+    inside = 0.5 * tc - ramp / (2.0 * math.pi) * np.sin(math.pi * tc / ramp)
+    return inside + np.maximum(t - ramp, 0.0), r
+
+
+def _straight(t, speed, heading, start, ramp=0.0):
     direction = np.array([math.cos(heading), math.sin(heading), 0.0])
-    pos = np.array([start[0], start[1], 0.0]) + speed * t[:, None] * direction
-    vel = np.broadcast_to(speed * direction, pos.shape).copy()
+    run, r = _ramped_time(t, ramp)
+    pos = np.array([start[0], start[1], 0.0]) + speed * run[:, None] * direction
+    vel = (speed * r)[:, None] * direction
     return pos, vel
 
 
@@ -377,7 +420,8 @@ def _schedule_distance(t, times, speeds):
 def _turn(t, path: TurnPath):
     """Positions and velocities of a straight-turn-straight path (exact circular arcs)."""
     speed, psi0, rate = path.speed, path.heading, path.rate
-    before = np.minimum(t, path.start_time)  # time on the first straight (negative before t = 0)
+    # time on the first straight at full speed (negative before t = 0), after the speed ramp
+    before, ramp_speed = _ramped_time(np.minimum(t, path.start_time), path.ramp)
     turning = np.maximum(t - path.start_time, 0.0)
     after = np.zeros_like(t)
     if path.end_time is not None:
@@ -396,6 +440,7 @@ def _turn(t, path: TurnPath):
          + speed * after * np.sin(psi))
     pos = np.stack([x, y, np.zeros_like(t)], axis=-1)
     vel = np.stack([speed * np.cos(psi), speed * np.sin(psi), np.zeros_like(t)], axis=-1)
+    vel[:, :2] *= np.where(t < path.start_time, ramp_speed, 1.0)[:, None]
     return pos, vel
 
 
@@ -580,7 +625,7 @@ def sample_path(path: VesselPath, times, base_dir=None) -> tuple[np.ndarray, np.
                          "Suggested fix: pass times.ravel().")
     t = np.atleast_1d(t)
     if isinstance(path, StraightPath):
-        return _straight(t, path.speed, path.heading, path.start)
+        return _straight(t, path.speed, path.heading, path.start, path.ramp)
     if isinstance(path, SpeedSchedule):
         run, speed = _schedule_distance(t, path.times, path.speeds)
         run0, _ = _schedule_distance(np.zeros(1), path.times, path.speeds)
@@ -592,3 +637,54 @@ def sample_path(path: VesselPath, times, base_dir=None) -> tuple[np.ndarray, np.
     if isinstance(path, ZigZagPath):
         return _zigzag(t, path)
     return _table(t, path, base_dir)
+
+
+def initial_heading(path: VesselPath, duration: float, distance: float, base_dir=None) -> float:
+    """Direction in which the tow point sets off: from its position at t = 0 to where it is first
+    ``distance`` away (horizontally). [rad]
+
+    A line laid out at rest behind a vessel belongs astern of where the vessel goes, and that is
+    the direction of its displacement, not of its velocity at t = 0: a vessel starting from rest has
+    no velocity there, and the velocity of a table's spline at t = 0 is a fitting artefact that may
+    point anywhere (a position table of a tug starting from rest gave -2.7e-5 m/s, and a barge laid
+    430 m ahead of the tug). The same for every kind of path; for a path moving at t = 0 it agrees
+    with the velocity's direction to within ``distance`` times the path's curvature.
+
+    Parameters
+    ----------
+    path
+        One of :data:`VESSEL_PATHS`.
+    duration
+        The run's duration; the path is searched from 0 to this time (a table to its end). [s]
+    distance
+        The small distance that counts as setting off, > 0. [m]
+    base_dir
+        Folder of a table path's file, as in :func:`sample_path`.
+
+    Returns
+    -------
+    float
+        Heading from +X towards +Y, in (-pi, pi]; a path that never moves ``distance`` in the run
+        gives its ``heading`` (0 for a table that does not move). [rad]
+    """
+    end = float(duration)
+    if isinstance(path, TablePath):  # a short run on a long table: look as far as the table goes
+        end = max(end, float(_splines(_resolve(path.file, base_dir), path.kind)[0][-1]))
+    times = np.linspace(0.0, end, 4097)
+    pos, _ = sample_path(path, times, base_dir)
+    p0 = pos[0, :2]
+    far = np.hypot(*(pos[:, :2] - p0).T) > distance
+    if not far.any():
+        return float(getattr(path, "heading", 0.0))
+    i = int(np.argmax(far))
+    lo, hi = times[i - 1], times[i]
+    for _ in range(40):  # bisection for the time the path is first `distance` away
+        mid = 0.5 * (lo + hi)
+        pm, _ = sample_path(path, np.array([mid]), base_dir)
+        if math.hypot(*(pm[0, :2] - p0)) > distance:
+            hi = mid
+        else:
+            lo = mid
+    ph, _ = sample_path(path, np.array([hi]), base_dir)
+    d = ph[0, :2] - p0
+    return float(math.atan2(d[1], d[0]))

@@ -2,14 +2,39 @@
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
+
 import numpy as np
 
+from .._limits import check_run_size
+from .._validate import in_range
 from ..case import Case, TowlineDynamicAnalysis
+from ..errors import InputError
 from ..results import make_dataset, var
-from ..towed.vessel import sample_path
-from .solver import TowlineModel, TowlineRun, initial_state, simulate
+from ..towed.seabed import seabed_clearance, warn_depth_not_modelled
+from ..towed.vessel import initial_heading, sample_path
+from .solver import (
+    State,
+    TowlineModel,
+    TowlineRun,
+    check_time_step,
+    initial_state,
+    simulate,
+    stable_time_step,
+)
 
-__all__ = ["REFERENCES", "case_model", "run_result", "run_towline_dynamic"]
+__all__ = ["REFERENCES", "PreparedTowline", "case_model", "prepare_towline_dynamic", "run_result",
+           "run_towline_dynamic"]
+
+#: Largest plausible sizes [m]: a towline longer than this, or a barge larger, is taken for a unit
+#: mistake (the largest ships afloat are about 460 m long and 70 m wide, 30 m deep in draft).
+MAX_LINE_LENGTH = 20_000.0
+MAX_BARGE = {"length": 1000.0, "beam": 200.0, "draft": 50.0}
+MAX_TOW_POINT_HEIGHT = 100.0
+
+#: Node and element values stored per output time (x, y, z, tension, slack; 3 centres, released)
+_PER_NODE, _PER_ELEMENT, _PER_TIME = 5, 4, 10
 
 REFERENCES = (
     ("Paper 003: Yoon, H.-K., Lee, H.-S., Park, J.-K. & Kim, Y.-K. (2011). Modelling and simulation of towline "
@@ -48,6 +73,80 @@ def _tug(case: Case):
     return track
 
 
+def _check_sizes(case: Case) -> None:
+    """The line and barge dimensions must be finite and physically plausible."""
+    a: TowlineDynamicAnalysis = case.analysis
+    fix = "give the sizes in metres (SI), not millimetres or feet."
+    in_range("line.length", case.line.length, 0.0, MAX_LINE_LENGTH, "m",
+             f"a towline is at most a few km long; {fix}")
+    in_range("analysis.tug_tow_point_height", a.tug_tow_point_height, -MAX_TOW_POINT_HEIGHT,
+             MAX_TOW_POINT_HEIGHT, "m", f"give the height of the tug's tow point above the water; {fix}")
+    b = a.barge
+    for key, top in MAX_BARGE.items():
+        in_range(f"analysis.barge.{key}", getattr(b, key), 0.0, top, "m",
+                 f"the largest ships afloat are about 460 m long, 70 m wide and 30 m deep; {fix}")
+    in_range("analysis.barge.tow_point_height", b.tow_point_height, -MAX_TOW_POINT_HEIGHT,
+             MAX_TOW_POINT_HEIGHT, "m", fix)
+    in_range("analysis.barge.tow_point_x", b.tow_x, -MAX_BARGE["length"], MAX_BARGE["length"], "m",
+             f"give it forward of midship, within a barge length; {fix}")
+    in_range("analysis.barge.yaw_radius_of_gyration", b.gyradius, 0.0, b.length, "m",
+             "about 0.25 * length for a barge (paper 003)")
+    depth = case.environment.depth
+    if depth is not None and b.draft >= depth:
+        raise InputError(f"analysis.barge.draft must be less than environment.depth = {depth:g} m, got "
+                         f"{b.draft:g} m: the barge would sit on the seabed. Suggested fix: check the draft and "
+                         "the depth (both in metres).")
+
+
+@dataclass(frozen=True)
+class PreparedTowline:
+    """What the time loop of a towline run needs: the model, the tug's track, the initial heading and
+    state, and the explicit time step."""
+
+    model: TowlineModel
+    tug: object
+    heading: float
+    state: State
+    time_step: float
+
+
+def prepare_towline_dynamic(case: Case) -> PreparedTowline:
+    """Every check of a ``towline_dynamic`` case that can be made before its time loop.
+
+    The line and barge sizes (finite and plausible), the model (stiffness, time step against the
+    stability bound), the tug's track over the whole run (a table must cover it), the initial
+    heading (from the tug's displacement, :func:`seacable.towed.vessel.initial_heading`), the
+    initial state (the tow points' heights against the line's length) and the size of the run
+    (:func:`seacable._limits.check_run_size`). A given ``environment.depth`` is warned about: this
+    model has no seabed contact.
+
+    Raises
+    ------
+    InputError
+        Naming the input, as :func:`run_towline_dynamic` would before its first step.
+    """
+    a: TowlineDynamicAnalysis = case.analysis
+    _check_sizes(case)
+    model = case_model(case)
+    # the explicit step: the given one, not above the stability bound, or a fraction of the bound
+    check_time_step(model, a.time_step)
+    dt = stable_time_step(model) if a.time_step is None else float(a.time_step)
+    sub = max(1, math.ceil(a.output_interval / dt - 1e-9))
+    n_out = round(a.duration / a.output_interval)
+    n = model.n_elements
+    check_run_size(f"towline_dynamic case '{case.name}'", steps=n_out * sub,
+                   stored_values=(n_out + 1) * ((n + 1) * _PER_NODE + n * _PER_ELEMENT + _PER_TIME),
+                   fix="shorten analysis.duration, lengthen analysis.output_interval or use fewer elements")
+    tug = _tug(case)
+    tug(np.array([0.0, a.duration]))  # a table too short fails here, before the run
+    # the line lies astern of where the tug goes: the direction of its first displacement
+    heading = initial_heading(a.tug, a.duration, distance=1e-3 * model.length)
+    p0, _ = tug(np.array([0.0]))
+    state = initial_state(model, p0[0], start=a.start, heading=heading, drop_height=a.drop_height)
+    warn_depth_not_modelled("towline_dynamic", case.environment.depth)
+    return PreparedTowline(model, tug, heading, state, dt)
+
+
 def run_result(model: TowlineModel, run: TowlineRun, *, case=None, settings=None):
     """The Dataset of a towline run (dims ``time``, ``node`` from the tug, ``element``)."""
     t = ("time",)
@@ -75,6 +174,16 @@ def run_result(model: TowlineModel, run: TowlineRun, *, case=None, settings=None
     }
     coords = {"time": var("time", run.time, "s", "time"), "node": var("node", np.arange(n + 1), "1", "joint"),
               "element": var("element", np.arange(n), "1", "element")}
+    depth = None if case is None else case.environment.depth
+    if depth is not None:
+        def joint(j):
+            where = "the tug tow point" if j == 0 else "the barge tow point" if j == n else f"{j} of {n} from the tug"
+            return f"joint {j} ({where})"
+
+        data["seabed_clearance"] = var(t, seabed_clearance(run.time, run.nodes[..., 2], depth,
+                                                           analysis="towline_dynamic", node_name=joint),
+                                       "m", "least height of a joint above the seabed (negative: below it; "
+                                            "no seabed contact modelled)")
     ds = make_dataset(data, coords, analysis="towline_dynamic", case=case, references=REFERENCES,
                       settings={"time_step": run.time_step, "steps": run.steps,
                                 "element_period": model.element_period, **(settings or {})})
@@ -88,12 +197,10 @@ def run_result(model: TowlineModel, run: TowlineRun, *, case=None, settings=None
 def run_towline_dynamic(case: Case, progress=None):
     """Time-domain towline run (analysis ``towline_dynamic``)."""
     a: TowlineDynamicAnalysis = case.analysis
-    model = case_model(case)
-    tug = _tug(case)
-    p0, v0 = tug(np.array([0.0, a.duration]))
-    heading = float(np.arctan2(v0[0, 1], v0[0, 0])) if np.hypot(*v0[0, :2]) > 0 else getattr(a.tug, "heading", 0.0)
-    state = initial_state(model, p0[0], start=a.start, heading=heading, drop_height=a.drop_height)
-    run = simulate(model, tug, a.duration, a.output_interval, state, time_step=a.time_step, progress=progress)
-    ds = run_result(model, run, case=case, settings={"start": a.start, "damping_ratio": a.damping_ratio})
+    prep = prepare_towline_dynamic(case)
+    run = simulate(prep.model, prep.tug, a.duration, a.output_interval, prep.state, time_step=a.time_step,
+                   progress=progress)
+    ds = run_result(prep.model, run, case=case, settings={"start": a.start, "damping_ratio": a.damping_ratio,
+                                                          "initial_heading": prep.heading})
     ds.attrs["scenario"] = case.description or case.name
     return ds

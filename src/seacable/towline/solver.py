@@ -18,7 +18,8 @@ from .barge import Barge, barge_parameters
 #: pins' stiffest mode is no stiffer than the line's axial one (see seacable.towline.kernel)
 PIN_STIFFNESS = 1.0 / 3.0
 
-__all__ = ["PIN_STIFFNESS", "TowlineModel", "TowlineRun", "energy", "initial_state", "simulate", "stable_time_step"]
+__all__ = ["PIN_STIFFNESS", "TowlineModel", "TowlineRun", "check_time_step", "energy", "initial_state", "simulate",
+           "stable_time_step"]
 
 #: tug tow-point track: times (n,) -> positions (n, 3), velocities (n, 3)
 TugFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
@@ -120,6 +121,17 @@ def stable_time_step(model: TowlineModel, safety: float = 0.8) -> float:
     """
     P = model.params
     return safety * min(math.sqrt(P[K.P_M] / P[K.P_K]), math.sqrt(P[K.P_M] / (3.0 * P[K.P_KT])))
+
+
+def check_time_step(model: TowlineModel, time_step: float | None) -> float:
+    """Refuse a given ``time_step`` [s] above the stability bound; returns the bound. [s]"""
+    bound = stable_time_step(model, 1.0)
+    if time_step is not None and not 0.0 < time_step <= bound:
+        raise InputError(f"time_step must be > 0 s and not above the explicit scheme's stability bound "
+                         f"{bound:.4g} s (sqrt(m / k) of the {model.element_length:g} m elements), got "
+                         f"{time_step:g} s. Suggested fix: leave time_step out (it is set automatically) or "
+                         "use fewer elements.")
+    return bound
 
 
 @dataclass
@@ -269,12 +281,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     if not output_interval > 0 or output_interval > duration:
         raise InputError(f"output_interval must be > 0 s and not above duration ({duration:g} s), got "
                          f"{output_interval:g} s.")
-    bound = stable_time_step(model, 1.0)
-    if time_step is not None and not 0.0 < time_step <= bound:
-        raise InputError(f"time_step must be > 0 s and not above the explicit scheme's stability bound "
-                         f"{bound:.4g} s (sqrt(m / k) of the {model.element_length:g} m elements), got "
-                         f"{time_step:g} s. Suggested fix: leave time_step out (it is set automatically) or "
-                         "use fewer elements.")
+    bound = check_time_step(model, time_step)
     dt0 = stable_time_step(model, safety) if time_step is None else float(time_step)
     sub = max(1, math.ceil(output_interval / dt0 - 1e-9))
     dt = output_interval / sub

@@ -1,0 +1,82 @@
+"""The seabed of the models that do not model contact with it (``towed_dynamic``, ``towline_dynamic``).
+
+Neither the towed-cable box scheme nor the towline's multibody model has seabed contact: a node
+may go below ``environment.depth`` and the run goes on as if the water were deeper. Until they
+have it, a depth given to them is not silently ignored: :func:`warn_depth_not_modelled` says so
+before the run, and :func:`seabed_clearance` gives the result the minimum clearance over the
+nodes at every output time and warns, naming the time, the node and the depth, when a node
+crosses the seabed.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+
+from ..errors import SeacableWarning
+
+__all__ = ["seabed_clearance", "warn_depth_not_modelled"]
+
+
+def warn_depth_not_modelled(analysis: str, depth: float | None) -> None:
+    """Warn (once, before a run) that ``environment.depth`` sets no seabed in ``analysis``.
+
+    Parameters
+    ----------
+    analysis
+        The analysis type, for the message.
+    depth
+        ``environment.depth``; nothing is said when it is None. [m]
+    """
+    if depth is None:
+        return
+    warnings.warn(
+        f"environment.depth = {depth:g} m: analysis '{analysis}' does not model seabed contact, so a line "
+        "that reaches the seabed goes on through it. The result carries 'seabed_clearance' (the lowest "
+        "node's height above the seabed) and the run warns if a node goes below the seabed. Suggested fix: "
+        "check 'seabed_clearance' stays positive, or leave 'depth' out for deep water.",
+        SeacableWarning, stacklevel=3)
+
+
+def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None) -> np.ndarray:
+    """Minimum height of the nodes above the seabed at each output time; warns if it is negative.
+
+    Parameters
+    ----------
+    time
+        Output times, shape (nt,). [s]
+    z
+        Node elevations (Z up, 0 at the surface), shape (nt, nodes); NaN entries (nodes not in
+        the water, e.g. line still on a bitt) are left out. [m]
+    depth
+        Water depth, the seabed at ``z = -depth``. [m]
+    analysis
+        The analysis type, for the message.
+    node_name
+        Optional ``node_name(j) -> str`` describing node ``j`` (e.g. "node 0, the lower end").
+
+    Returns
+    -------
+    numpy.ndarray
+        ``min over nodes (z + depth)`` at each time, shape (nt,); negative where a node is below the
+        seabed. [m]
+    """
+    z = np.asarray(z, float)
+    height = z + float(depth)
+    finite = np.isfinite(height)
+    clearance = np.where(finite.any(axis=1), np.min(np.where(finite, height, np.inf), axis=1), np.nan)
+    below = np.flatnonzero(clearance < 0)
+    if below.size:
+        i = int(below[0])
+        j = int(np.nanargmin(height[i]))
+        worst = int(np.nanargmin(clearance))
+        name = node_name(j) if node_name is not None else f"node {j}"
+        warnings.warn(
+            f"{analysis}: at t = {float(time[i]):g} s {name} is {-z[i, j]:g} m deep, below the seabed at "
+            f"{depth:g} m (environment.depth); this model has no seabed contact, so the line went on through "
+            f"it (deepest: {-float(clearance[worst]):g} m below the seabed at t = {float(time[worst]):g} s). "
+            "The result's 'seabed_clearance' is negative where a node is below the seabed. Suggested fix: "
+            "a shorter or lighter line, a faster tow, or a model with seabed contact (mooring_dynamic).",
+            SeacableWarning, stacklevel=3)
+    return clearance
