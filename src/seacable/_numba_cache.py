@@ -37,8 +37,16 @@ import tempfile
 import time
 from pathlib import Path
 
-__all__ = ["PACKAGE_DIR", "KEEP", "MIN_AGE", "source_key", "candidate_roots", "prune", "install",
-           "cache_folder"]
+__all__ = [
+    "KEEP",
+    "MIN_AGE",
+    "PACKAGE_DIR",
+    "cache_folder",
+    "candidate_roots",
+    "install",
+    "prune",
+    "source_key",
+]
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 """The installed ``seacable`` package whose source keys the cache."""
