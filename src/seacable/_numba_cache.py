@@ -278,14 +278,14 @@ def install() -> Path | None:
         folder = root / key
         try:
             _writable_folder(folder)
-            os.utime(folder)  # marks the last use, for prune()
         except OSError as exc:
             tried.append(f"{folder}: {exc.strerror or exc}")
             continue
         try:
+            os.utime(folder)  # marks the last use, for prune()
             prune(root, key)
         except OSError:
-            pass  # another process pruning at the same time, or a folder we may not list
+            pass  # a shared folder we do not own, or another process pruning at the same time
         existing[:] = [c for c in existing if getattr(c, "__name__", "") != "SeacableCacheLocator"]
         existing.insert(0, _locator_class(folder))
         _folder = folder

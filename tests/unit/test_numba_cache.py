@@ -90,28 +90,36 @@ def test_candidate_roots(tmp_path):
                                                                   tmp_path / "xdg" / "seacable" / "numba"]
 
 
-def test_prune_keeps_the_current_recent_and_young_folders_only(tmp_path):
-    now = 1.0e9
-    hour = 3600.0
-    keys = [f"{i:016x}" for i in range(10)]
-    ages = {keys[0]: 50 * hour,  # current: kept whatever its age
-            keys[1]: 2 * hour, keys[2]: 3 * hour, keys[3]: 4 * hour,  # 3 most recent others: kept
-            keys[4]: 5 * hour, keys[5]: 9 * hour, keys[6]: 30 * hour,  # older: removed
-            keys[7]: 0.5 * hour,  # most recent of all: kept
-            keys[8]: 10 * hour, keys[9]: 0.9 * hour}  # keys[9] used 54 min ago: kept (may be running)
+def _key_folders(root, ages, now):
     for key, age in ages.items():
-        (tmp_path / key / "sub").mkdir(parents=True)
-        os.utime(tmp_path / key, (now - age, now - age))
+        (root / key / "sub").mkdir(parents=True)
+        os.utime(root / key, (now - age, now - age))
+
+
+def test_prune_keeps_the_current_and_the_most_recently_used_folders(tmp_path):
+    now, hour = 1.0e9, 3600.0
+    ages = {"0" * 16: 50 * hour,  # the current key: kept whatever its age
+            "1" * 16: 2 * hour, "2" * 16: 3 * hour, "3" * 16: 4 * hour,  # 3 most recent others
+            "4" * 16: 5 * hour, "5" * 16: 30 * hour}  # older: removed
+    _key_folders(tmp_path, ages, now)
     # not ours: a folder with another name, a file named like a key
     (tmp_path / "my-notes").mkdir()
     os.utime(tmp_path / "my-notes", (now - 99 * hour,) * 2)
     (tmp_path / ("f" * 16)).write_text("a file")
-    removed = nc.prune(tmp_path, keys[0], keep=4, min_age=hour, now=now)
-    # most recent others by last use: keys[7] (0.5 h), keys[9] (0.9 h), keys[1] (2 h) are the 3 kept
-    # besides the current; keys[2..6] and keys[8] are older than 1 h and beyond the 4 kept
-    assert sorted(removed) == sorted([keys[2], keys[3], keys[4], keys[5], keys[6], keys[8]])
-    left = sorted(p.name for p in tmp_path.iterdir())
-    assert left == sorted([keys[0], keys[1], keys[7], keys[9], "my-notes", "f" * 16])
+    removed = nc.prune(tmp_path, "0" * 16, keep=4, min_age=hour, now=now)
+    assert sorted(removed) == ["4" * 16, "5" * 16]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["0" * 16, "1" * 16, "2" * 16, "3" * 16,
+                                                          "f" * 16, "my-notes"]
+
+
+def test_prune_keeps_a_folder_used_recently_by_another_process(tmp_path):
+    now, hour = 1.0e9, 3600.0
+    ages = {"0" * 16: 0.0, "1" * 16: 0.2 * hour,  # current and the most recent other: by rank
+            "2" * 16: 0.4 * hour, "3" * 16: 0.9 * hour,  # used in the last hour: kept by age
+            "4" * 16: 1.5 * hour}  # removed
+    _key_folders(tmp_path, ages, now)
+    assert nc.prune(tmp_path, "0" * 16, keep=2, min_age=hour, now=now) == ["4" * 16]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["0" * 16, "1" * 16, "2" * 16, "3" * 16]
 
 
 def test_this_process_caches_in_the_keyed_folder():
