@@ -20,9 +20,16 @@ of numba's ``RuntimeError: cannot cache function``.
 
 Only functions defined in seacable's own files are affected: numba's other functions keep
 numba's usual cache locations. The hook is a cache locator placed first in numba's list
-(``numba.core.caching.CacheImpl._locator_classes``, numba 0.59 to 0.68 at least); it must be installed before any kernel
+(``numba.core.caching.CacheImpl._locator_classes``, the same in numba 0.59 and 0.68). numba
+picks a function's locator when the function is decorated, so this must run before any kernel
 module is imported, which is why ``seacable/__init__.py`` imports this module first. An
-explicit ``NUMBA_CACHE_LOCATOR_CLASSES`` (numba >= 0.62) replaces that list and wins.
+explicit ``NUMBA_CACHE_LOCATOR_CLASSES`` (recent numba) replaces that list and wins.
+
+Why not set ``numba.config.CACHE_DIR`` instead: it is read at decoration too, but numba's
+``reload_config()``, run at every compilation, re-reads it from the environment whenever a
+``NUMBA_*`` variable changed, silently undoing the setting for kernel modules imported later;
+it would move every numba function of the process, not only seacable's; and it cannot stop
+numba from falling back to ``__pycache__`` beside the source, which is not keyed.
 """
 
 from __future__ import annotations
