@@ -6,6 +6,8 @@ Explicit re-exports only. The physics lives in functions in
 them through :func:`run`.
 """
 
+# first: numba's cache of the kernels is keyed to this source before any kernel is defined
+from . import _numba_cache  # noqa: F401  isort: skip
 from . import modal, statics
 from ._version import __version__
 from .case import (
