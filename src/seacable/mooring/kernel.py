@@ -74,6 +74,17 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, u, acc):
 
 
 @njit(cache=True)
+def _dry_fraction(z0, z1):
+    """Fraction of the straight piece from height z0 to z1 that lies above the still water level."""
+    lo, hi = min(z0, z1), max(z0, z1)
+    if hi <= 0.0:
+        return 0.0
+    if lo >= 0.0:
+        return 1.0
+    return hi / (hi - lo)
+
+
+@njit(cache=True)
 def _add_block(band, bw, fi, fj, coef, blk):
     if fi < 0 or fj < 0:
         return
@@ -96,7 +107,7 @@ def _drag_tangent(un, cd, out, coef):
 
 @njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-          weight, pmass, padd, pvol, pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves,
+          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
@@ -106,6 +117,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     """
     n = X.shape[0]
     rho = env[E_RHO]
+    pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
     F[:] = 0.0
     M[:] = 0.0
     tension[:] = 0.0
@@ -120,7 +132,10 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         b = elements[e, 1]
         d0, d1, d2 = X[b, 0] - X[a, 0], X[b, 1] - X[a, 1], X[b, 2] - X[a, 2]
         l = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-        tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
+        if l > 0.0:
+            tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
+        else:
+            tv[0] = tv[1] = tv[2] = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
         L = L0[e]
         eps = l / L - 1.0
         if eps > 0.0:
@@ -143,9 +158,15 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _add_block(band, bw, fb, fa, -1.0, blk)
         area = 0.25 * math.pi * dia[e] ** 2
         half = 0.5 * L
+        zmid = 0.5 * (X[a, 2] + X[b, 2])
         for k in (a, b):
             for r in range(3):
                 M[k, r, r] += mpl[e] * half
+            # ``weight`` holds the weight in water; the part of this half element above the surface
+            # (straight from the node to the element's middle) loses its buoyancy
+            dry = _dry_fraction(X[k, 2], zmid)
+            if dry > 0.0:
+                F[k, 2] -= dry * buoy[e] * half
             if X[k, 2] > 0.0:
                 continue  # out of the water: no hydrodynamic load
             _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, uw, aw)
@@ -183,6 +204,10 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     alpha = env[E_ALPHA]
     for i in range(n):
         F[i, 2] -= weight[i]
+        if pbuoy[i] != 0.0 and X[i, 2] > -0.5 * pdia[i]:
+            # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
+            # height pdia (its volume's sphere diameter), linear across the waterline
+            F[i, 2] -= pbuoy[i] * min(X[i, 2] / pdia[i] + 0.5, 1.0) if pdia[i] > 0.0 else pbuoy[i]
         for r in range(3):
             M[i, r, r] += pmass[i] + padd[i]
         if (pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0) and X[i, 2] <= 0.0:
@@ -305,8 +330,8 @@ def _force_scale(weight, tension):
 
 @njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
-                  cat, weight, pmass, padd, pvol, pcda, bedc, fidx, nfree, bw, env, cur_depth, cur_speed,
-                  with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth,
+                  cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
     """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
     positions, velocities and accelerations at the end of step k.
 
@@ -350,7 +375,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
+                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
             scale = _force_scale(weight, tension)
             stats[0] += 1
@@ -393,7 +418,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-                 bedc, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
+                 bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
                  stats):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
 
@@ -411,7 +436,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     R0 = np.zeros(nd)
     Xt = X.copy()
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+          bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
     # weight moves a fraction of an element, and decreasing as Newton takes over
@@ -435,7 +460,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
         big = 0.0
@@ -449,7 +474,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
+              pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
@@ -460,7 +485,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+              bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res
     return False

@@ -117,6 +117,11 @@ class MooringModel:
         np.add.at(bedc, el[:, 1], half)
         self.bedc = bedc
         self.weight = net.node_weight()
+        # buoyancy the weight in water holds, given back above the surface: per length of each element and
+        # of each attachment (weight in air minus weight in water) [N/m], [N]
+        g = self.water.gravity
+        self.buoyancy = net.mass_per_length * g - net.weight_per_length
+        self.point_buoyancy = net.point_mass * g - net.point_weight
         # seabed damper ramp: half the mean static penetration of a node under its own weight
         if self.water.seabed_stiffness > 0:
             sink = np.abs(self.weight) / (self.water.seabed_stiffness * np.maximum(bedc, 1e-300))
@@ -131,7 +136,7 @@ class MooringModel:
         n = self.network
         return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
                 n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
-                n.point_drag_area, self.bedc)
+                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy)
 
     def evaluate(self, X, V, A, t=0.0, waves=True):
         """Node forces F (without inertia and supports), masses M and element tensions at a state.
