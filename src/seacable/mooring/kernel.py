@@ -138,19 +138,30 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             tv[0] = tv[1] = tv[2] = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
         L = L0[e]
         eps = l / L - 1.0
-        if eps > 0.0:
+        # tension-only law rounded over |eps| < band (C1, so that Newton does not cycle between slack and
+        # taut); band is the strain at which EA eps carries 4 % of the element's weight in air, so the
+        # rounding changes a tension by at most 1 % of that weight (and nothing once eps > band)
+        sband = 1.0 * mpl[e] * env[E_G] * L / EA[e]
+        if eps >= sband:
+            psi, dpsi, ddpsi = eps, 1.0, 0.0
+        elif eps > -sband:
+            psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
+        else:
+            psi, dpsi, ddpsi = 0.0, 0.0, 0.0
+        if dpsi > 0.0:
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
-            T = EA[e] * eps + cdamp[e] * ldot / L
+            T = EA[e] * psi + cdamp[e] * ldot / L * dpsi
             T = max(T, 0.0)
             tension[e] = T
             for r in range(3):
                 F[a, r] += T * tv[r]
                 F[b, r] -= T * tv[r]
-            if jac:
+            if jac and T > 0.0:
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        blk[r, c] = EA[e] / L * tt + T / l * (eye[r, c] - tt) + cc * cdamp[e] / L * tt
+                        blk[r, c] = ((EA[e] + cc * cdamp[e]) * dpsi + cdamp[e] * ldot / L * ddpsi) / L * tt \
+                            + T / l * (eye[r, c] - tt)
                 fa, fb = fidx[a], fidx[b]
                 _add_block(band, bw, fa, fa, 1.0, blk)
                 _add_block(band, bw, fb, fb, 1.0, blk)
@@ -317,15 +328,45 @@ def _norm2(v):
 
 
 @njit(cache=True)
-def _force_scale(weight, tension):
-    """The force the residual is measured against: the largest node weight or tension (no floor, so that
-    a model of a few newtons, like a tank test, converges as tightly as a full-scale one)."""
+def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
+    """The absolute force tolerance [N] of a Newton iteration: ``tol`` times a force scale, plus the
+    round-off floor of the residual.
+
+    The scale is the largest of the total weight of the nodes (the whole network's weight in water),
+    the element tensions, and the net node forces (seabed reaction, drag, ...) and inertia forces
+    ``M a`` at the free nodes. It cannot collapse to the weight of one node of a tank-scale model in a
+    slack phase, where no tension is larger. The floor is the force that moves a node by 1024 units in
+    the last place of its coordinates through the largest term the residual is computed from
+    (``M c0 x`` of Newmark's acceleration, ``k_b d_n (z + depth)`` of the seabed, ``EA l / L`` of an
+    element): about 1e-11 m for a line 30 m from the origin, far below any accuracy a step needs, and
+    a level that a residual computed from those terms cannot be asked to go below when the time step
+    is small (``c0 = 1 / (beta dt^2)``).
+    """
     s = 0.0
+    total = 0.0
+    big = 0.0
+    kb = env[E_KBOT]
+    depth = env[E_DEPTH] if math.isfinite(env[E_DEPTH]) else 0.0
     for i in range(weight.size):
-        s = max(s, abs(weight[i]))
+        total += abs(weight[i])
+        if fidx[i] < 0:
+            continue
+        xm = max(abs(X[i, 0]), abs(X[i, 1]), abs(X[i, 2]))
+        for r in range(3):
+            s = max(s, abs(F[i, r]))
+            ma = 0.0
+            for c in range(3):
+                ma += M[i, r, c] * A[i, c]
+            s = max(s, abs(ma))
+            big = max(big, M[i, r, r] * c0 * xm)
+        big = max(big, kb * bedc[i] * (xm + depth))
+    s = max(s, total)
     for e in range(tension.size):
         s = max(s, tension[e])
-    return s if s > 0.0 else 1.0
+        big = max(big, EA[e])
+    if s <= 0.0:
+        s = 1.0
+    return tol * s + 1024.0 * 2.220446049250313e-16 * big
 
 
 @njit(cache=True)
@@ -336,7 +377,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     positions, velocities and accelerations at the end of step k.
 
     Returns the number of steps completed; a step whose Newton iteration fails leaves the state at
-    its start. ``stats`` receives (iterations, last residual, force scale).
+    its start. ``stats`` receives (iterations, last residual, absolute force tolerance [N]).
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -377,9 +418,9 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
-            scale = _force_scale(weight, tension)
+            scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0)
             stats[0] += 1
-            if res <= tol * scale and it > 0:
+            if res <= scale and it > 0:
                 ok = True
                 break
             if it > 0 and not (res < res_prev) and cuts < 6:
@@ -422,8 +463,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                  stats):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
 
-    Returns True when ``max |F| <= tol * scale`` at the free nodes. ``stats`` receives
-    (iterations, residual, force scale).
+    Returns True when ``max |F|`` at the free nodes is within the tolerance of :func:`_force_tolerance`.
+    ``stats`` receives (iterations, residual, absolute force tolerance [N]).
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -442,11 +483,11 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     # weight moves a fraction of an element, and decreasing as Newton takes over
     lam = env[E_G] / (0.05 * max_step)
     for it in range(max_iter):
-        scale = _force_scale(weight, tension)
+        scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, 0.0)
         stats[0] = it
         stats[1] = res
         stats[2] = scale
-        if res <= tol * scale:
+        if res <= scale:
             return True
         for i in range(n):
             f = fidx[i]

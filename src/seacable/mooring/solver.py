@@ -198,7 +198,7 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     if not ok:
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations: force residual "
-            f"{stats[1]:.3g} N against a tolerance of {tol * stats[2]:.3g} N. Suggested fix: check that the "
+            f"{stats[1]:.3g} N against a tolerance of {stats[2]:.3g} N. Suggested fix: check that the "
             "line is long enough to reach its fairlead and that buoys cannot lift it out of the water.",
             iterations=int(stats[0]), residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
@@ -331,7 +331,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
                         raise ConvergenceError(
                             f"the mooring time step did not converge at t = {t0 + done * dtk:.6g} s with "
                             f"dt = {dtk:.3g} s after {max_halvings} halvings: force residual {stats[1]:.3g} N "
-                            f"(tolerance {tol * stats[2]:.3g} N). Suggested fix: smaller time_step, more "
+                            f"(tolerance {stats[2]:.3g} N). Suggested fix: smaller time_step, more "
                             "elements, or check the motion for a jump.",
                             time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
                     done *= 2
