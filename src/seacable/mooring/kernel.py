@@ -138,10 +138,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             tv[0] = tv[1] = tv[2] = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
         L = L0[e]
         eps = l / L - 1.0
-        # tension-only law rounded over |eps| < band (C1, so that Newton does not cycle between slack and
-        # taut); band is the strain at which EA eps carries 4 % of the element's weight in air, so the
-        # rounding changes a tension by at most 1 % of that weight (and nothing once eps > band)
-        sband = 1.0 * mpl[e] * env[E_G] * L / EA[e]
+        # tension-only law rounded over |eps| < sband (C1, so that Newton does not cycle between slack and
+        # taut; the tangent below includes the rounding of the damper): EA sband is a quarter of the
+        # element's weight in air, so the rounding adds at most 1/16 of that weight to a tension (at
+        # eps = 0), below the lumped model's own resolution (tensions step by an element's weight from
+        # element to element of a hanging line), and nothing once eps > sband
+        sband = 0.25 * mpl[e] * env[E_G] * L / EA[e]
         if eps >= sband:
             psi, dpsi, ddpsi = eps, 1.0, 0.0
         elif eps > -sband:

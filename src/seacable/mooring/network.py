@@ -58,6 +58,8 @@ class Network:
     line_names : a name per line.
     arc_length : (n,) unstretched arc length from end A of the node's line (NaN for a point node
         shared by several lines). [m]
+    breaking_load : (e,) minimum breaking load of each element's line type, NaN if unknown; None when
+        none is known. [N]
     """
 
     position: np.ndarray
@@ -85,6 +87,7 @@ class Network:
     arc_length: np.ndarray
     n_channels: int = 1
     channel_names: tuple[str, ...] = field(default=("fairlead",))
+    breaking_load: np.ndarray | None = None
 
     @property
     def n_nodes(self) -> int:
@@ -296,4 +299,5 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         cat=np.array([t.added_mass_tangential for t in types], float),
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
+        breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else ())

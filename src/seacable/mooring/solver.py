@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, SeacableWarning
 from . import kernel as K
+from .checks import check_network
 from .network import FREE, PRESCRIBED, Network
 
 __all__ = [
@@ -102,6 +103,7 @@ class MooringModel:
 
     def __post_init__(self):
         net = self.network
+        check_network(net, depth=self.water.depth, slope=self.water.slope)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
@@ -259,6 +261,7 @@ class MooringRun:
     steps: int
     interrupted: bool
     wall_time: float
+    acceleration: np.ndarray | None = None  # (nt, n, 3)
 
 
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
@@ -297,7 +300,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
 
     times = [0.0]
-    pos, vel = [X.copy()], [V.copy()]
+    pos, vel, acc = [X.copy()], [V.copy()], [A.copy()]
     ten, sup = [], []
 
     def record():
@@ -339,14 +342,15 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             times.append((k + 1) * output_interval)
             pos.append(X.copy())
             vel.append(V.copy())
+            acc.append(A.copy())
             record()
             if progress is not None:
                 progress(times[-1], duration)
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - start
-    nt = min(len(times), len(pos), len(vel), len(ten), len(sup))  # an interrupt may fall between appends
-    times, pos, vel, ten, sup = times[:nt], pos[:nt], vel[:nt], ten[:nt], sup[:nt]
+    nt = min(len(times), len(pos), len(vel), len(acc), len(ten), len(sup))  # an interrupt may fall between appends
+    times, pos, vel, acc, ten, sup = times[:nt], pos[:nt], vel[:nt], acc[:nt], ten[:nt], sup[:nt]
     return MooringRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
                       tension=np.array(ten), support=np.array(sup), time_step=h, iterations=iterations,
-                      steps=steps, interrupted=interrupted, wall_time=wall)
+                      steps=steps, interrupted=interrupted, wall_time=wall, acceleration=np.array(acc))
