@@ -4,11 +4,15 @@ Nodes carry lumped masses; two-node truss elements join them. For element ``e`` 
 with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
 
     eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
+
+(the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight)
     f_a = T t,  f_b = -T t,
     K_e = EA / L t t^T + T / l (I - t t^T)          (paper 004 eq. A6-A10: linear plus geometric)
 
 so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. Half of each element's mass and
-weight in water goes to each end; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
+weight in water goes to each end; the part of a half element above the still water level (straight
+from the node to the element's middle) gets its buoyancy back (weight in air), and an attachment's
+buoyancy scales with its immersed fraction across the waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
 ``P_n = I - t t^T`` and ``P_t = t t^T``. Morison loads on each half element use the node's velocity
 relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
 
