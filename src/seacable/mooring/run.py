@@ -103,68 +103,36 @@ def _clearance(water: Water, X):
     return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
 
 
-def _lift_off_gap(c1, c2, h):
-    """Arc length from the touchdown to the first lifted node, clearances ``c1`` < ``c2`` at spacing ``h``. [m]
-
-    Near its touchdown a line on a flat seabed is a catenary leaving it tangentially, height
-    ``c = a (sqrt(1 + (s / a)^2) - 1)`` at arc length ``s`` from the touchdown (``a = H / w``), so
-    ``s = sqrt(c^2 + 2 a c)``. The two lifted nodes fix ``a`` (bisection); ``a = 0`` (a slack line
-    hanging straight up from the seabed) when they rise as steeply as the line is long.
-    """
-    c1, c2, h = np.broadcast_arrays(np.maximum(c1, 0.0), np.maximum(c2, 0.0), h)
-
-    def gap(a):
-        return np.sqrt(c2 * c2 + 2 * a * c2) - np.sqrt(c1 * c1 + 2 * a * c1) - h
-
-    rise = np.sqrt(c2) - np.sqrt(c1)
-    ok = (rise > 0) & (c2 - c1 < h)
-    lo = np.zeros_like(c1)
-    hi = np.where(ok, 2.0 * (h / np.where(ok, rise, 1.0)) ** 2 + h, 0.0)
-    for _ in range(200):
-        if not np.any(ok & (gap(hi) < 0)):
-            break
-        hi = np.where(ok & (gap(hi) < 0), 2 * hi, hi)
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        below = gap(mid) < 0
-        lo, hi = np.where(below, mid, lo), np.where(below, hi, mid)
-    a = np.where(ok, 0.5 * (lo + hi), 0.0)
-    return np.sqrt(c1 * c1 + 2 * a * c1)
-
-
 def contact_length(model: MooringModel, X):
     """Unstretched length of line resting on the seabed, interpolated between nodes, (...,). [m]
 
-    A node is on the seabed when it touches the seabed plane (penalty contact: it sinks in slightly).
-    In an element with one node on and one lifted, the touchdown lies where the catenary through the
-    lifted node and the next one (:func:`_lift_off_gap`) meets the seabed; without a next node, the
-    lifted node's height above the seabed.
+    Each node's share of line (half of each adjacent element) counts in the fraction of its weight
+    that the seabed carries: the penalty spring's force over the node's weight, between 0 and 1. On a
+    flat seabed the reactions add up to the weight of the grounded line, so the sum is the grounded
+    length to the accuracy of the model's end forces, wherever the touchdown lies inside an element
+    (a node near the touchdown carries part of its weight, the hanging line the rest). A held node
+    (an anchor) or a model without seabed stiffness counts as on the seabed when it touches it.
     """
     net, water = model.network, model.water
     X = np.asarray(X, float)
     if water.depth is None:
         return np.zeros(X.shape[:-2])
-    c = _clearance(water, X)
-    total = np.zeros(X.shape[:-2])
-    for li, nodes in enumerate(net.line_nodes):
-        cl = c[..., nodes]
-        h = net.length[net.element_line == li]
-        on = cl <= 0.0
-        total = total + np.sum(np.where(on[..., :-1] & on[..., 1:], h, 0.0), axis=-1)
-        m = len(nodes)
-        for k in range(m - 1):
-            # element k joins nodes k and k + 1 of the line; `off` is the lifted one, `nxt` the node beyond
-            for off, on_node, nxt in ((k + 1, k, k + 2), (k, k + 1, k - 1)):
-                here = on[..., on_node] & ~on[..., off]
-                if not np.any(here):
-                    continue
-                c1 = np.maximum(cl[..., off], 0.0)
-                if 0 <= nxt < m:
-                    gap = _lift_off_gap(c1, cl[..., nxt], h[min(off, nxt)])
-                else:
-                    gap = c1
-                total = total + np.where(here, np.clip(h[k] - gap, 0.0, h[k]), 0.0)
-    return total
+    share = np.zeros(net.n_nodes)
+    np.add.at(share, net.elements[:, 0], 0.5 * net.length)
+    np.add.at(share, net.elements[:, 1], 0.5 * net.length)
+    dl = float(model.env[K_BEDRAMP])
+    pen = -_clearance(water, X)
+    touching = pen >= -dl
+    kb = water.seabed_stiffness
+    if kb > 0:
+        q = np.where(pen >= dl, pen, np.where(pen > -dl, (pen + dl) ** 2 / (4 * dl), 0.0))
+        weight = model.weight
+        held = (net.kind != FREE) | (weight <= 0)
+        carried = np.clip(kb * model.bedc * q / np.where(held, 1.0, weight), 0.0, 1.0)
+        frac = np.where(held, touching, carried)
+    else:
+        frac = (pen >= 0).astype(float)
+    return np.sum(frac * share, axis=-1)
 
 
 def _own_model(model: MooringModel) -> MooringModel:
