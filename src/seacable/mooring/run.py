@@ -216,7 +216,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
         "anchor_tension": var(lead, np.linalg.norm(ends[..., anchor, :], axis=-1), "N",
                               "tension at the anchor end of the line (its end element and half-element loads)"),
         "seabed_contact_length": var(lead, contact_length(model, X), "m",
-                                     "length of line on the seabed (interpolated between nodes)"),
+                                     "length of line on the seabed"),
     }
     for k, name in enumerate("xyz"):
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
