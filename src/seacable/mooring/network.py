@@ -202,8 +202,8 @@ def slack_positions(a, b, s, length, *, depth=None, slope=0.0):
     first = s <= half
     X = np.where(first[:, None], a + np.outer(s / half, apex - a), apex + np.outer((s - half) / half, b - apex))
     if depth is not None:
-        bed = -depth + math.tan(slope) * X[:, 0]
-        X[:, 2] = np.maximum(X[:, 2], bed)
+        bed = -depth + math.tan(slope) * X[1:-1, 0]
+        X[1:-1, 2] = np.maximum(X[1:-1, 2], bed)  # the ends stay where they are given
     return X
 
 
