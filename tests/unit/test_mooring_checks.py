@@ -152,3 +152,18 @@ def test_a_tank_scale_chain_with_a_slack_phase_runs():
     ref = catenary(32.0, 2.4, 33.0, 3.0e5, w)
     # 66 elements of 0.5 m: the lumped model's end tension is the catenary's to half an element's weight
     assert float(ds.fairlead_tension[0]) == pytest.approx(float(ref.tension_fairlead), abs=0.5 * w * 0.5)
+
+
+def test_a_motion_that_takes_the_fairlead_under_the_seabed_or_beyond_reach_is_refused_before_running():
+    """Heave of 10 m from 5 m above the seabed: under it at t = 3/4 of the 20 s period. Surge of 500 m on a
+    410 m chain: beyond its reach at a quarter period. Both are refused by the preparation, naming the time."""
+    heave = {"type": "harmonic", "amplitude": [0, 0, 10.0], "period": 20.0}
+    with pytest.raises(InputError) as err:
+        prepare_mooring_dynamic(_case(_dynamic(fairlead=[300.0, -195.0], motion=heave, duration=20.0,
+                                               output_interval=0.5), length=500.0))
+    assert "t = 15 s" in str(err.value) and "under the seabed" in str(err.value) and "'line'" in str(err.value)
+    surge = {"type": "harmonic", "amplitude": [500.0, 0, 0], "period": 20.0}
+    with pytest.raises(InputError) as err:
+        prepare_mooring_dynamic(_case(_dynamic(fairlead=[300.0, -15.0], motion=surge, duration=20.0,
+                                               output_interval=0.5)))
+    assert "t = 5 s" in str(err.value) and "cannot span" in str(err.value)

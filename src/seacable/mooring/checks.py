@@ -26,7 +26,7 @@ from ..errors import InputError
 from ..statics.multisegment import MAX_STRAIN
 from .network import FIXED, PRESCRIBED, Network
 
-__all__ = ["check_network", "element_stretch_limit"]
+__all__ = ["check_motion", "check_network", "element_stretch_limit"]
 
 
 def element_stretch_limit(network: Network) -> np.ndarray:
@@ -113,3 +113,57 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0) 
                 f"start at a strain of {chord / unstretched - 1:.3g}, and it can stretch to at most "
                 f"{dist[row, j]:.6g} m at its limit strain ({why}). Suggested fix: check the end positions "
                 "(anchor, fairlead or points) and the line length.")
+
+
+def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0) -> None:
+    """Refuse a prescribed motion that takes a moved node under the seabed or beyond the lines' reach.
+
+    Parameters
+    ----------
+    network
+        The network at rest (its held nodes and lines).
+    times
+        (nt,) sample times of the motion. [s]
+    positions
+        (nt, n_channels, 3) positions of the motion channels at ``times``. [m]
+    depth, slope
+        The seabed plane (see :func:`check_network`). [m], [rad]
+
+    Raises
+    ------
+    InputError
+        Naming the line(s), the node, the time and the position.
+    """
+    times = np.asarray(times, float)
+    positions = np.asarray(positions, float)
+    moved = np.flatnonzero(network.channel >= 0)
+    if moved.size == 0 or times.size == 0:
+        return
+    for node in moved:
+        path = positions[:, network.channel[node], :]
+        if depth is not None:
+            below = ((-depth + math.tan(slope) * path[:, 0]) - path[:, 2]) * math.cos(slope)
+            k = int(np.argmax(below))
+            if below[k] > 1e-6 * max(depth, 1.0):
+                raise InputError(
+                    f"{' and '.join(repr(n) for n in _lines_at(network, int(node)))}: the motion takes moved node "
+                    f"{node} to ({path[k, 0]:.6g}, {path[k, 1]:.6g}, {path[k, 2]:.6g}) m at t = {times[k]:.6g} s, "
+                    f"{below[k]:.4g} m under the seabed. Suggested fix: check the motion's amplitude, offsets or "
+                    "the fairlead's depth.")
+    # the reach: the positions at the time each moved node is farthest from each other held node
+    held = np.flatnonzero(network.kind != 0)
+    X = network.position
+    worst = X.copy()
+    for node in moved:
+        path = positions[:, network.channel[node], :]
+        others = held[held != node]
+        if others.size == 0:
+            continue
+        far = np.max(np.linalg.norm(path[:, None, :] - X[None, others, :], axis=-1), axis=1)
+        k = int(np.argmax(far))
+        worst[node] = path[k]
+        try:
+            check_network(network.replace(position=worst), depth=None)
+        except InputError as err:
+            raise InputError(f"at t = {times[k]:.6g} s of the motion: {err}") from None
+        worst[node] = X[node]

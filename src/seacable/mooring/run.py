@@ -11,7 +11,7 @@ from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..extremes import snap_loads
 from ..results import make_dataset, var
-from .checks import check_network
+from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .motion import bind
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
@@ -284,12 +284,14 @@ class MooringDynamicSetup:
 
     model: MooringModel
     start_model: MooringModel  # the model of the static start (a free end B held at release_from)
+    motion: object = None      # the bound fairlead motion: times -> positions, velocities, accelerations
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """Every check of a ``mooring_dynamic`` case that can be made before the time loop.
 
-    The geometric checks of the network (:func:`seacable.mooring.checks.check_network`) at the start,
+    The geometric checks of the network (:func:`seacable.mooring.checks.check_network`) at the start
+    and along the fairlead motion at the output times (:func:`seacable.mooring.checks.check_motion`),
     and the size of the run (:func:`seacable._limits.check_run_size`: time steps, and the stored
     positions, velocities, accelerations, tensions and support forces).
     """
@@ -303,7 +305,13 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
                    stored_values=outputs * (4 * 3 * net.n_nodes + net.n_elements),
                    fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
     start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
-    return MooringDynamicSetup(model, start)
+    # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
+    # now (a time series too short fails here) and check it at the output times
+    motion = bind(a.motion, net.channel_positions(), a.duration)
+    if motion is not None:
+        times = np.linspace(0.0, a.duration, int(round(a.duration / a.output_interval)) + 1)
+        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
+    return MooringDynamicSetup(model, start, motion)
 
 
 def run_mooring_static(case: Case):
@@ -362,8 +370,7 @@ def run_mooring_dynamic(case: Case, progress=None):
     setup = prepare_mooring_dynamic(case)
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
-    motion = bind(a.motion, model.network.channel_positions(start), a.duration)
-    run = simulate(model, motion, a.duration, a.time_step, a.output_interval, initial=start,
+    run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
                    tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress)
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
                                                        "rayleigh": list(a.rayleigh)})
