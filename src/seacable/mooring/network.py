@@ -10,8 +10,9 @@ mass is a node load.
 
 from __future__ import annotations
 
-import math
 import dataclasses
+import itertools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -224,8 +225,8 @@ def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: 
             cuts.append(np.linspace(s0, s1, seg.n_elements + 1)[:-1])
             continue
         breaks = [s0, *inner, s1]
-        for p, q in zip(breaks[:-1], breaks[1:]):
-            n = seg.n_elements or max(1, int(math.ceil((q - p) / target - 1e-9)))
+        for p, q in itertools.pairwise(breaks):
+            n = seg.n_elements or max(1, math.ceil((q - p) / target - 1e-9))
             cuts.append(np.linspace(p, q, n + 1)[:-1])
     return np.concatenate(cuts + [np.array([L])])
 

@@ -35,11 +35,11 @@ __all__ = [
 ]
 
 REFERENCES = (
-    "Paper 004: finite-element analysis of guyed-tower mooring lines with clump weights (seeds/004): "
-    "truss elements with geometric nonlinearity (eq. A6-A10), Newmark-beta with Newton-Raphson, section 3.",
+    ("Paper 004: finite-element analysis of guyed-tower mooring lines with clump weights (seeds/004): "
+    "truss elements with geometric nonlinearity (eq. A6-A10), Newmark-beta with Newton-Raphson, section 3."),
     "Bathe, K.-J. (1996). Finite Element Procedures. Prentice Hall, sections 6.3 and 9.2.4.",
-    "Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind "
-    "semisubmersible model test data. Ocean Engineering 104, 590-603 (MoorDyn: seabed and damping rules).",
+    ("Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind "
+    "semisubmersible model test data. Ocean Engineering 104, 590-603 (MoorDyn: seabed and damping rules)."),
 )
 
 
@@ -309,7 +309,7 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     # now (a time series too short fails here) and check it at the output times
     motion = bind(a.motion, net.channel_positions(), a.duration)
     if motion is not None:
-        times = np.linspace(0.0, a.duration, int(round(a.duration / a.output_interval)) + 1)
+        times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
         check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
     return MooringDynamicSetup(model, start, motion)
 

@@ -278,8 +278,8 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     n = net.n_nodes
     X = (static_equilibrium(model).position if initial is None else np.array(initial, float)).copy()
     V, A = np.zeros_like(X), np.zeros_like(X)
-    n_out = int(round(duration / output_interval))
-    sub = max(1, int(math.ceil(output_interval / dt - 1e-9)))
+    n_out = int(round(duration / output_interval))  # noqa: RUF046 (a numpy float rounds to a float)
+    sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
