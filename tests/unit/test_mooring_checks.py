@@ -167,3 +167,23 @@ def test_a_motion_that_takes_the_fairlead_under_the_seabed_or_beyond_reach_is_re
         prepare_mooring_dynamic(_case(_dynamic(fairlead=[300.0, -15.0], motion=surge, duration=20.0,
                                                output_interval=0.5)))
     assert "t = 5 s" in str(err.value) and "cannot span" in str(err.value)
+
+
+def test_point_forces_of_a_network_are_reported_separately(tmp_path):
+    """The force on each point's support: about 0 at the free point in equilibrium, and at the two anchors
+    the lines' pull (their vertical parts carry the two lines' weight in water less the buoy's lift)."""
+    from seacable.mooring.moordyn import moordyn_model
+    from seacable.mooring.run import point_variables
+    from seacable.mooring.solver import static_equilibrium
+
+    f = tmp_path / "two.txt"
+    f.write_text(MOORDYN)
+    model = moordyn_model(f)
+    st = static_equilibrium(model)
+    pv = point_variables(model, st.support)
+    nodes = list(pv["point_node"].values)
+    assert nodes == [0, 1, 2]  # MoorDyn points 1, 2 (anchors) and 3 (the free point)
+    lift = (1025.0 * 30 - 100.0) * 9.80665
+    assert pv["point_force"].values[2] < 1e-6 * lift
+    w_lines = 2 * 320.0 * (60.0 - 1025.0 * math.pi * 0.1**2 / 4) * 9.80665
+    assert -np.sum(pv["point_force_z"].values[:2]) == pytest.approx(w_lines - lift, rel=1e-6)
