@@ -109,9 +109,14 @@ def static_errors(line, anchor, fairlead, water, n_elements=None, seabed=True):
 
 OC3 = LineType(diameter=0.09, mass_per_length=77.7066, weight_in_water=698.094, axial_stiffness=384.243e6)
 
-# 0.2 %: the brief's bound for the FE statics against the analytic catenary. The measured errors
-# are 10-100x smaller with the meshes used (printed in each test).
-TOL_STATIC = 2e-3
+# Tolerances of the FE statics against the analytic catenary: about three times the largest error
+# measured for each case (issue 17: the former common 2e-3 was 20-150x looser than the agreement, so a
+# physics error of 1e-3 would have passed). Each error is the lumped model's O(h^2) discretisation
+# error, which is deterministic: a change of several times it means the model changed.
+TOL_SUSPENDED_20 = 1.5e-3  # suspended line with 20 elements: measured 8.9e-4 (anchor), scaled by (20 / n)^2
+TOL_OC3 = 1.5e-4           # OC3 line, 100 elements: measured 4.7e-5 (anchor), 3.8e-5 (fairlead)
+TOL_LENA = 2.5e-4          # Lena line, distributed clump, 1 m clump elements: measured 8.5e-5 (1001 m span)
+TOL_LENA_LUMPED = 5e-4     # Lena line, lumped clump: measured 1.9e-4 (1001 m, on the hard seabed)
 
 
 def test_suspended_line_matches_catenary_and_converges_as_1_over_n2():
@@ -122,7 +127,7 @@ def test_suspended_line_matches_catenary_and_converges_as_1_over_n2():
     for n in (20, 40, 80):
         e, _, _ = static_errors(line, (0, 0, -320.0), (500.0, 0, -70.0), water, n, seabed=False)
         errs.append(e)
-        assert max(e) < TOL_STATIC
+        assert max(e) < TOL_SUSPENDED_20 * (20 / n) ** 2
     errs = np.array(errs)
     # Lumped weights on straight chords: the error is O(h^2). Measured ratios per halving 4.00 for
     # both tensions and the position (6.5e-4 -> 1.6e-4 -> 4.1e-5 in the fairlead tension);
@@ -137,14 +142,14 @@ def test_oc3_line_with_seabed_contact_matches_catenary():
     d["analysis"] = {"type": "mooring_static", "fairlead": d["analysis"]["fairlead"], "n_elements": 100}
     ds = seacable.run(seacable.parse_case(d))
     eq = ms.line_equilibrium([902.2], [698.094], [384.243e6], 848.67, 250.0)
-    # measured: fairlead 3.8e-5, anchor 4e-5 with 100 elements; the error is not monotone in N
+    # measured: fairlead 3.8e-5, anchor 4.7e-5 with 100 elements; the error is not monotone in N
     # (+1.6e-4, -3.8e-5, +3e-7 for 50, 100, 200) because the touchdown falls between nodes,
-    # so no order is asserted, only the 0.2 % bound.
-    assert float(ds["fairlead_tension"]) == pytest.approx(eq.fairlead_tension, rel=TOL_STATIC)
-    assert float(ds["anchor_tension"]) == pytest.approx(eq.anchor_tension, rel=TOL_STATIC)
+    # so no order is asserted, only the bound of about 3x the measured error at N = 100.
+    assert float(ds["fairlead_tension"]) == pytest.approx(eq.fairlead_tension, rel=TOL_OC3)
+    assert float(ds["anchor_tension"]) == pytest.approx(eq.anchor_tension, rel=TOL_OC3)
     water = Water(density=1025.0, gravity=G, depth=320.0)
     e, st, _ = static_errors(Line.single(OC3, 902.2), (0, 0, -320.0), (848.67, 0, -70.0), water, 100)
-    assert max(e) < TOL_STATIC, e
+    assert max(e) < TOL_OC3, e
     # the grounded nodes sink by the penalty spring's w / (k d) = 698.094 / (3e6 * 0.09) = 2.59 mm
     # (nodes 2-7, well before the touchdown near node 10; 1 % covers the slope of the line there)
     grounded = st.position[2:8, 2] + 320.0
@@ -161,7 +166,7 @@ def test_lena_distributed_clump_matches_catenary():
     for span in (980.0, 1001.0):
         e, _, eq = static_errors(lena_line(), (0, 0, -DEPTH), (span, 0, Z_FAIR), water)
         assert eq.segment_grounded_length[1] > 0.0  # the clump touches the seabed
-        assert max(e) < TOL_STATIC, (span, e)
+        assert max(e) < TOL_LENA, (span, e)
 
 
 def test_lena_lumped_clump_matches_catenary():
@@ -177,7 +182,7 @@ def test_lena_lumped_clump_matches_catenary():
         s_clump = line.attachments[0].s
         # resting: touchdown at the clump (a partial reaction); lifted: touchdown on the anchor line
         assert (eq.touchdown_s == pytest.approx(s_clump)) if span < 1010 else (0 < eq.touchdown_s < s_clump)
-        assert max(e) < TOL_STATIC, (span, e)
+        assert max(e) < TOL_LENA_LUMPED, (span, e)
 
 
 # --- paper 004 Figs 5-8: force-excursion trends of the Lena line ---

@@ -6,6 +6,9 @@ Modules (imported on demand, so that ``import seacable`` does not load numba):
     Nodes and two-node truss elements as flat arrays, built from a case's line.
 ``kernel``
     Loads, tangents, the Newmark-Newton step and the static Newton solver (numba).
+``checks``
+    The geometric checks every mooring path makes before it solves (nodes under the seabed, ends
+    beyond the lines' reach, a fairlead motion that does either).
 ``solver``
     :class:`~seacable.mooring.solver.MooringModel`, static equilibrium, pushover, time stepping.
 ``motion``
@@ -13,5 +16,6 @@ Modules (imported on demand, so that ``import seacable`` does not load numba):
 ``moordyn``
     A MoorDyn input file as a network (lines, fixed, vessel and free points).
 ``run``
-    The ``mooring_static``, ``mooring_pushover`` and ``mooring_dynamic`` analyses as Datasets.
+    The ``mooring_static``, ``mooring_pushover`` and ``mooring_dynamic`` analyses as Datasets, each
+    with its ``prepare_*`` function (every check that can be made before solving).
 """

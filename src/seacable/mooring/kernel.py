@@ -4,11 +4,15 @@ Nodes carry lumped masses; two-node truss elements join them. For element ``e`` 
 with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
 
     eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
+
+(the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight)
     f_a = T t,  f_b = -T t,
     K_e = EA / L t t^T + T / l (I - t t^T)          (paper 004 eq. A6-A10: linear plus geometric)
 
 so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. Half of each element's mass and
-weight in water goes to each end; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
+weight in water goes to each end; the part of a half element above the still water level (straight
+from the node to the element's middle) gets its buoyancy back (weight in air), and an attachment's
+buoyancy scales with its immersed fraction across the waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
 ``P_n = I - t t^T`` and ``P_t = t t^T``. Morison loads on each half element use the node's velocity
 relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
 
@@ -74,6 +78,17 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, u, acc):
 
 
 @njit(cache=True)
+def _dry_fraction(z0, z1):
+    """Fraction of the straight piece from height z0 to z1 that lies above the still water level."""
+    lo, hi = min(z0, z1), max(z0, z1)
+    if hi <= 0.0:
+        return 0.0
+    if lo >= 0.0:
+        return 1.0
+    return hi / (hi - lo)
+
+
+@njit(cache=True)
 def _add_block(band, bw, fi, fj, coef, blk):
     if fi < 0 or fj < 0:
         return
@@ -96,7 +111,7 @@ def _drag_tangent(un, cd, out, coef):
 
 @njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-          weight, pmass, padd, pvol, pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves,
+          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
@@ -106,6 +121,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     """
     n = X.shape[0]
     rho = env[E_RHO]
+    pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
     F[:] = 0.0
     M[:] = 0.0
     tension[:] = 0.0
@@ -120,22 +136,38 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         b = elements[e, 1]
         d0, d1, d2 = X[b, 0] - X[a, 0], X[b, 1] - X[a, 1], X[b, 2] - X[a, 2]
         l = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-        tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
+        if l > 0.0:
+            tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
+        else:
+            tv[0] = tv[1] = tv[2] = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
         L = L0[e]
         eps = l / L - 1.0
-        if eps > 0.0:
+        # tension-only law rounded over |eps| < sband (C1, so that Newton does not cycle between slack and
+        # taut; the tangent below includes the rounding of the damper): EA sband is a quarter of the
+        # element's weight in air, so the rounding adds at most 1/16 of that weight to a tension (at
+        # eps = 0), below the lumped model's own resolution (tensions step by an element's weight from
+        # element to element of a hanging line), and nothing once eps > sband
+        sband = 0.25 * mpl[e] * env[E_G] * L / EA[e]
+        if eps >= sband:
+            psi, dpsi, ddpsi = eps, 1.0, 0.0
+        elif eps > -sband:
+            psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
+        else:
+            psi, dpsi, ddpsi = 0.0, 0.0, 0.0
+        if dpsi > 0.0:
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
-            T = EA[e] * eps + cdamp[e] * ldot / L
+            T = EA[e] * psi + cdamp[e] * ldot / L * dpsi
             T = max(T, 0.0)
             tension[e] = T
             for r in range(3):
                 F[a, r] += T * tv[r]
                 F[b, r] -= T * tv[r]
-            if jac:
+            if jac and T > 0.0:
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        blk[r, c] = EA[e] / L * tt + T / l * (eye[r, c] - tt) + cc * cdamp[e] / L * tt
+                        blk[r, c] = ((EA[e] + cc * cdamp[e]) * dpsi + cdamp[e] * ldot / L * ddpsi) / L * tt \
+                            + T / l * (eye[r, c] - tt)
                 fa, fb = fidx[a], fidx[b]
                 _add_block(band, bw, fa, fa, 1.0, blk)
                 _add_block(band, bw, fb, fb, 1.0, blk)
@@ -143,9 +175,15 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _add_block(band, bw, fb, fa, -1.0, blk)
         area = 0.25 * math.pi * dia[e] ** 2
         half = 0.5 * L
+        zmid = 0.5 * (X[a, 2] + X[b, 2])
         for k in (a, b):
             for r in range(3):
                 M[k, r, r] += mpl[e] * half
+            # ``weight`` holds the weight in water; the part of this half element above the surface
+            # (straight from the node to the element's middle) loses its buoyancy
+            dry = _dry_fraction(X[k, 2], zmid)
+            if dry > 0.0:
+                F[k, 2] -= dry * buoy[e] * half
             if X[k, 2] > 0.0:
                 continue  # out of the water: no hydrodynamic load
             _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, uw, aw)
@@ -183,6 +221,10 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     alpha = env[E_ALPHA]
     for i in range(n):
         F[i, 2] -= weight[i]
+        if pbuoy[i] != 0.0 and X[i, 2] > -0.5 * pdia[i]:
+            # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
+            # height pdia (its volume's sphere diameter), linear across the waterline
+            F[i, 2] -= pbuoy[i] * min(X[i, 2] / pdia[i] + 0.5, 1.0) if pdia[i] > 0.0 else pbuoy[i]
         for r in range(3):
             M[i, r, r] += pmass[i] + padd[i]
         if (pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0) and X[i, 2] <= 0.0:
@@ -292,26 +334,56 @@ def _norm2(v):
 
 
 @njit(cache=True)
-def _force_scale(weight, tension):
-    """The force the residual is measured against: the largest node weight or tension (no floor, so that
-    a model of a few newtons, like a tank test, converges as tightly as a full-scale one)."""
+def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
+    """The absolute force tolerance [N] of a Newton iteration: ``tol`` times a force scale, plus the
+    round-off floor of the residual.
+
+    The scale is the largest of the total weight of the nodes (the whole network's weight in water),
+    the element tensions, and the net node forces (seabed reaction, drag, ...) and inertia forces
+    ``M a`` at the free nodes. It cannot collapse to the weight of one node of a tank-scale model in a
+    slack phase, where no tension is larger. The floor is the force that moves a node by 1024 units in
+    the last place of its coordinates through the largest term the residual is computed from
+    (``M c0 x`` of Newmark's acceleration, ``k_b d_n (z + depth)`` of the seabed, ``EA l / L`` of an
+    element): about 1e-11 m for a line 30 m from the origin, far below any accuracy a step needs, and
+    a level that a residual computed from those terms cannot be asked to go below when the time step
+    is small (``c0 = 1 / (beta dt^2)``).
+    """
     s = 0.0
+    total = 0.0
+    big = 0.0
+    kb = env[E_KBOT]
+    depth = env[E_DEPTH] if math.isfinite(env[E_DEPTH]) else 0.0
     for i in range(weight.size):
-        s = max(s, abs(weight[i]))
+        total += abs(weight[i])
+        if fidx[i] < 0:
+            continue
+        xm = max(abs(X[i, 0]), abs(X[i, 1]), abs(X[i, 2]))
+        for r in range(3):
+            s = max(s, abs(F[i, r]))
+            ma = 0.0
+            for c in range(3):
+                ma += M[i, r, c] * A[i, c]
+            s = max(s, abs(ma))
+            big = max(big, M[i, r, r] * c0 * xm)
+        big = max(big, kb * bedc[i] * (xm + depth))
+    s = max(s, total)
     for e in range(tension.size):
         s = max(s, tension[e])
-    return s if s > 0.0 else 1.0
+        big = max(big, EA[e])
+    if s <= 0.0:
+        s = 1.0
+    return tol * s + 1024.0 * 2.220446049250313e-16 * big
 
 
 @njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
-                  cat, weight, pmass, padd, pvol, pcda, bedc, fidx, nfree, bw, env, cur_depth, cur_speed,
-                  with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth,
+                  cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
     """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
     positions, velocities and accelerations at the end of step k.
 
     Returns the number of steps completed; a step whose Newton iteration fails leaves the state at
-    its start. ``stats`` receives (iterations, last residual, force scale).
+    its start. ``stats`` receives (iterations, last residual, absolute force tolerance [N]).
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -350,11 +422,11 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
+                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
-            scale = _force_scale(weight, tension)
+            scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0)
             stats[0] += 1
-            if res <= tol * scale and it > 0:
+            if res <= scale and it > 0:
                 ok = True
                 break
             if it > 0 and not (res < res_prev) and cuts < 6:
@@ -393,12 +465,12 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-                 bedc, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
+                 bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
                  stats):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
 
-    Returns True when ``max |F| <= tol * scale`` at the free nodes. ``stats`` receives
-    (iterations, residual, force scale).
+    Returns True when ``max |F|`` at the free nodes is within the tolerance of :func:`_force_tolerance`.
+    ``stats`` receives (iterations, residual, absolute force tolerance [N]).
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -411,17 +483,17 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     R0 = np.zeros(nd)
     Xt = X.copy()
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+          bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
     # weight moves a fraction of an element, and decreasing as Newton takes over
     lam = env[E_G] / (0.05 * max_step)
     for it in range(max_iter):
-        scale = _force_scale(weight, tension)
+        scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, 0.0)
         stats[0] = it
         stats[1] = res
         stats[2] = scale
-        if res <= tol * scale:
+        if res <= scale:
             return True
         for i in range(n):
             f = fidx[i]
@@ -435,7 +507,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
         big = 0.0
@@ -449,7 +521,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
+              pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
@@ -460,7 +532,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+              bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res
     return False

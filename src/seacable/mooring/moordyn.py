@@ -25,7 +25,7 @@ from ..io.moordyn import MoorDynCase, MoorDynInput, load_moordyn_case, moordyn_a
 from ..results import make_dataset, var
 from .motion import bind
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
-from .run import REFERENCES, network_variables, run_events
+from .run import REFERENCES, network_variables, point_variables, run_events
 from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
 
 __all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
@@ -77,8 +77,6 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
         guess = (catenary_positions(A.position, B.position, s, [L], [w], [lt.axial_stiffness], depth=depth)
                  if up else catenary_positions(B.position, A.position, L - s, [L], [w], [lt.axial_stiffness],
                                                depth=depth))
-        if guess is None:
-            guess = np.asarray(A.position) + np.outer(s / L, np.subtract(B.position, A.position))
         first = len(pos)
         pos.extend(guess[1:-1])
         kind.extend([FREE] * (n - 1))
@@ -133,8 +131,11 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
     return MooringModel(view, model.water)
 
 
-def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings):
-    """Variables per line; a ``line`` dimension (NaN padded) when there are several lines."""
+def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None):
+    """Variables per line, a ``line`` dimension (NaN padded) when there are several lines; the points' forces.
+
+    ``velocity`` and ``acceleration`` (time-domain runs) let each line's end tensions include its half end
+    element's water loads and inertia (:func:`seacable.mooring.run.network_variables`)."""
     net = model.network
     per_line = []
     for li in range(len(net.line_nodes)):
@@ -142,7 +143,10 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings):
         nodes = net.line_nodes[li]
         els = np.flatnonzero(net.element_line == li)
         dims = ("node",) if time is None else ("time", "node")
-        per_line.append((view, network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims)))
+        moving = {} if time is None else {"velocity": velocity[..., nodes, :], "acceleration": acceleration[..., nodes, :],
+                                          "time": time}
+        per_line.append((view, network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
+                                                  **moving)))
     if len(per_line) == 1:
         view, data = per_line[0]
         coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
@@ -167,6 +171,7 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings):
             data[name] = var(("line",) + d0.dims, np.array(rows), d0.attrs["units"], d0.attrs["long_name"])
         coords = {"line": var("line", list(net.line_names), "1", "line"),
                   "node": var("node", np.arange(n_max), "1", "node index, 0 at end A")}
+    data.update(point_variables(model, S, dims=("node",) if time is None else ("time", "node")))
     if time is not None:
         coords["time"] = var("time", time, "s", "time")
     analysis = "mooring_static" if time is None else "mooring_dynamic"
@@ -180,32 +185,15 @@ def _arc(net: Network):
     return np.r_[0.0, np.cumsum(net.length)]
 
 
-# A line whose ends start farther apart than its unstretched length times (1 + _MAX_START_STRAIN) is refused:
-# no mooring material carries 10 % axial strain elastically (steel wire and chain yield below 1 %, polyester
-# and nylon ropes break at 10-20 %), so such a start is a wrong length or a wrong point, not a mooring.
-_MAX_START_STRAIN = 0.10
-
-
 def _check_geometry(md: MoorDynInput) -> None:
-    """Refuse a Free point without a line, and a line whose end points are farther apart than it can stretch."""
-    points = {p.id: p for p in md.points}
+    """Refuse a Free point without a line (the geometry of the lines is checked with every mooring model:
+    :func:`seacable.mooring.checks.check_network`)."""
     attached = {ln.point_a for ln in md.lines} | {ln.point_b for ln in md.lines}
     for p in md.points:
         if p.attachment == "free" and p.id not in attached:
             raise InputError(f"{md.path or 'MoorDyn file'}: point {p.id} is Free but no line is attached to it: "
                              "it has no equilibrium (it sinks or floats away). Suggested fix: attach a line to it "
                              "in the LINES section, or remove the point.")
-    for line in md.lines:
-        gap = math.dist(points[line.point_a].position, points[line.point_b].position)
-        strain = gap / line.length - 1.0
-        if strain > _MAX_START_STRAIN:
-            ea = md.line_types[line.line_type].axial_stiffness
-            raise InputError(
-                f"{md.path or 'MoorDyn file'}: line {line.id} is {line.length:g} m long but its points {line.point_a} "
-                f"and {line.point_b} are {gap:g} m apart: a start strain of {strain:.3g}, i.e. a tension of about "
-                f"{strain * ea:.3g} N at EA = {ea:.3g} N, beyond the {_MAX_START_STRAIN:g} strain no mooring "
-                "material carries (chain and wire yield below 0.01, ropes break at 0.1-0.2). Suggested fix: "
-                f"check UnstrLen of line {line.id} and the coordinates of points {line.point_a} and {line.point_b}.")
 
 
 def prepare_moordyn(case) -> MooringModel:
@@ -213,8 +201,8 @@ def prepare_moordyn(case) -> MooringModel:
 
     Warns (:class:`~seacable.errors.SeacableWarning`) with each of the file's ``notes``: an option
     seacable cannot honour (named with its value and what seacable does instead), an unknown
-    option. Refuses (:class:`~seacable.errors.InputError`) a line whose ends are farther apart
-    than it can stretch, and a dynamic run whose steps or stored results exceed the limits of
+    option. Refuses (:class:`~seacable.errors.InputError`) a free point without a line, the
+    geometry :func:`seacable.mooring.checks.check_network` refuses for every mooring model, and a dynamic run whose steps or stored results exceed the limits of
     :mod:`seacable._limits`.
 
     Parameters
@@ -233,7 +221,10 @@ def prepare_moordyn(case) -> MooringModel:
     for note in md.notes:
         warnings.warn(note, SeacableWarning, stacklevel=2)
     _check_geometry(md)
-    model = moordyn_model(md)
+    try:
+        model = moordyn_model(md)
+    except InputError as err:  # the network's own checks: say which file
+        raise InputError(f"{md.path or 'MoorDyn file'}: {err}") from None
     if case.duration is not None:
         net = model.network
         stored = (math.floor(case.duration / case.output_interval) + 1) * (10 * net.n_nodes + 2 * net.n_elements)
@@ -264,7 +255,8 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
     run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
                                tol=tolerance * 10, progress=progress)
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
-                  settings={**settings, "time_step": run.time_step, "steps": run.steps})
+                  settings={**settings, "time_step": run.time_step, "steps": run.steps}, velocity=run.velocity,
+                  acceleration=run.acceleration)
     ds.update(run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
     return ds

@@ -10,8 +10,9 @@ mass is a node load.
 
 from __future__ import annotations
 
-import math
 import dataclasses
+import itertools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -27,6 +28,7 @@ __all__ = [
     "element_damping",
     "network_from_line",
     "node_arc_lengths",
+    "slack_positions",
 ]
 
 FREE, FIXED, PRESCRIBED = 0, 1, 2
@@ -57,6 +59,8 @@ class Network:
     line_names : a name per line.
     arc_length : (n,) unstretched arc length from end A of the node's line (NaN for a point node
         shared by several lines). [m]
+    breaking_load : (e,) minimum breaking load of each element's line type, NaN if unknown; None when
+        none is known. [N]
     """
 
     position: np.ndarray
@@ -84,6 +88,7 @@ class Network:
     arc_length: np.ndarray
     n_channels: int = 1
     channel_names: tuple[str, ...] = field(default=("fairlead",))
+    breaking_load: np.ndarray | None = None
 
     @property
     def n_nodes(self) -> int:
@@ -125,32 +130,82 @@ def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffne
 
 
 def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_loads=(), depth=None, slope=0.0):
-    """Positions at arc lengths ``s`` (from ``a``) on the elastic catenary from ``a`` up to ``b``.
+    """A start shape for the line from ``a`` to ``b``: positions at unstretched arc lengths ``s`` (from ``a``).
 
-    The multi-segment catenary of :func:`seacable.statics.multisegment.line_equilibrium` in the vertical
-    plane through both points, on the seabed when ``a`` lies on it (``z = -depth``). Returns (len(s), 3)
-    positions, or None when ``b`` is not beside and above ``a`` or no catenary solves (a straight start
-    is then the caller's choice). [m]
+    When ``b`` is beside and above ``a``, the multi-segment catenary of
+    :func:`seacable.statics.multisegment.line_equilibrium` in the vertical plane through both points,
+    on the seabed when ``a`` lies on it (``z = -depth``). A slack line whose grounded part is longer
+    than the distance to the touchdown (the catenary bunches it at the touchdown, ``H = 0``) lies
+    instead on the seabed along two straight legs beside the vertical plane, so that no two nodes
+    coincide. Otherwise (ends one above the other, the catenary has no solution) the start is
+    :func:`slack_positions`: straight when the line is shorter than the chord, else a V hanging
+    below the chord. Returns (len(s), 3) positions. [m]
     """
     from ..errors import SeacableError
     from ..statics.multisegment import line_equilibrium
 
     a, b = np.asarray(a, float), np.asarray(b, float)
+    s = np.asarray(s, float)
+    total = float(np.sum(lengths))
     d = b - a
     h = math.hypot(d[0], d[1])
-    if h <= 1e-9 or d[2] < 0 or min(weights) <= 0:
-        return None
+    fallback = slack_positions(a, b, s, total, depth=depth, slope=slope)
+    if h <= 1e-6 * total or d[2] <= 0 or min(weights) <= 0:
+        return fallback
     on_seabed = depth is not None and abs(a[2] + depth) < 1e-6 * depth
     try:
         eq = line_equilibrium(lengths, weights, axial_stiffness, h, d[2], point_loads=point_loads,
                               seabed=on_seabed, seabed_slope=slope if on_seabed else 0.0)
     except SeacableError:
-        return None
+        return fallback
     prof = eq.profile(points_per_segment=400)
     keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
     x = np.interp(s, prof.s[keep], prof.x[keep])
     z = np.interp(s, prof.s[keep], prof.z[keep])
-    return a + np.outer(x, [d[0] / h, d[1] / h, 0.0]) + np.outer(z, [0.0, 0.0, 1.0])
+    along, side = np.array([d[0] / h, d[1] / h, 0.0]), np.array([-d[1] / h, d[0] / h, 0.0])
+    y = np.zeros_like(s)
+    grounded, reach = eq.grounded_length, eq.touchdown_x
+    if on_seabed and grounded > reach * (1.0 + 1e-6) + 1e-9 * total:
+        # slack (H = 0): the grounded length exceeds the distance to the touchdown; lay it on two legs
+        # beside the plane, apex at half the grounded length, instead of bunching it at the touchdown
+        on = s <= grounded
+        f = np.minimum(s[on], grounded - s[on]) / (0.5 * grounded)
+        x[on] = reach * s[on] / grounded
+        y[on] = f * math.sqrt(max((0.5 * grounded) ** 2 - (0.5 * reach) ** 2, 0.0))
+        z[on] = 0.0
+    return a + np.outer(x, along) + np.outer(y, side) + np.outer(z, [0.0, 0.0, 1.0])
+
+
+def slack_positions(a, b, s, length, *, depth=None, slope=0.0):
+    """A start shape that needs no equilibrium: positions at arc lengths ``s`` of a line of ``length``.
+
+    Straight from ``a`` to ``b`` when the line is no longer than the chord; otherwise two straight
+    legs of the full length meeting below the middle of the chord (away from it along the part of
+    gravity normal to the chord, or sideways when the chord is vertical), with nodes that would lie
+    under the seabed moved up onto it. No two nodes coincide, so every element has a direction. [m]
+    """
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    s = np.asarray(s, float)
+    d = b - a
+    chord = float(np.linalg.norm(d))
+    if chord >= length:
+        return a + np.outer(s / length, d)
+    t = d / chord if chord > 0 else np.array([0.0, 0.0, 1.0])
+    n = np.array([0.0, 0.0, -1.0]) - t * (-t[2])       # gravity normal to the chord
+    if np.linalg.norm(n) < 1e-3:
+        n = np.cross(t, [0.0, 1.0, 0.0]) if abs(t[1]) < 0.9 else np.cross(t, [1.0, 0.0, 0.0])
+    n /= np.linalg.norm(n)
+    mid = a + 0.5 * d
+    # apex p = mid + c n with |a - p| + |p - b| = length
+    c = math.sqrt(max((0.5 * length) ** 2 - (0.5 * chord) ** 2, 0.0))
+    apex = mid + c * n
+    half = 0.5 * length
+    first = s <= half
+    X = np.where(first[:, None], a + np.outer(s / half, apex - a), apex + np.outer((s - half) / half, b - apex))
+    if depth is not None:
+        bed = -depth + math.tan(slope) * X[1:-1, 0]
+        X[1:-1, 2] = np.maximum(X[1:-1, 2], bed)  # the ends stay where they are given
+    return X
 
 
 def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: float | None = None):
@@ -170,8 +225,8 @@ def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: 
             cuts.append(np.linspace(s0, s1, seg.n_elements + 1)[:-1])
             continue
         breaks = [s0, *inner, s1]
-        for p, q in zip(breaks[:-1], breaks[1:]):
-            n = seg.n_elements or max(1, int(math.ceil((q - p) / target - 1e-9)))
+        for p, q in itertools.pairwise(breaks):
+            n = seg.n_elements or max(1, math.ceil((q - p) / target - 1e-9))
             cuts.append(np.linspace(p, q, n + 1)[:-1])
     return np.concatenate(cuts + [np.array([L])])
 
@@ -245,4 +300,5 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         cat=np.array([t.added_mass_tangential for t in types], float),
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
+        breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else ())

@@ -3,21 +3,32 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
+from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..extremes import snap_loads
 from ..results import make_dataset, var
 from ..statics.run import line_arrays
+from .checks import check_motion, check_network
+from .kernel import E_BEDRAMP as K_BEDRAMP
 from .motion import bind
-from .network import FIXED, PRESCRIBED, Network, catenary_positions, network_from_line
+from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium
 
 __all__ = [
     "REFERENCES",
+    "MooringDynamicSetup",
     "case_model",
+    "contact_length",
+    "line_end_forces",
     "network_variables",
+    "point_variables",
+    "prepare_mooring_dynamic",
+    "prepare_mooring_pushover",
+    "prepare_mooring_static",
     "run_mooring_dynamic",
     "run_mooring_pushover",
     "run_mooring_static",
@@ -25,11 +36,11 @@ __all__ = [
 ]
 
 REFERENCES = (
-    "Paper 004: finite-element analysis of guyed-tower mooring lines with clump weights (seeds/004): "
-    "truss elements with geometric nonlinearity (eq. A6-A10), Newmark-beta with Newton-Raphson, section 3.",
+    ("Paper 004: finite-element analysis of guyed-tower mooring lines with clump weights (seeds/004): "
+    "truss elements with geometric nonlinearity (eq. A6-A10), Newmark-beta with Newton-Raphson, section 3."),
     "Bathe, K.-J. (1996). Finite Element Procedures. Prentice Hall, sections 6.3 and 9.2.4.",
-    "Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind "
-    "semisubmersible model test data. Ocean Engineering 104, 590-603 (MoorDyn: seabed and damping rules).",
+    ("Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind "
+    "semisubmersible model test data. Ocean Engineering 104, 590-603 (MoorDyn: seabed and damping rules)."),
 )
 
 
@@ -64,9 +75,7 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     lengths, weights, ea, loads = line_arrays(case)
     start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
                                depth=env.depth, slope=env.seabed.slope)
-    if start is not None:
-        net = net.replace(position=start)
-    return MooringModel(net, water_of(case))
+    return MooringModel(net.replace(position=start), water_of(case))
 
 
 def _node_tension(net: Network, tension):
@@ -80,40 +89,145 @@ def _node_tension(net: Network, tension):
     return total / np.maximum(count, 1)
 
 
-def _contact_length(model: MooringModel, X):
-    """Unstretched length of line resting on the seabed (nodes below the seabed plane), (...,). [m]"""
+def _clearance(water: Water, X):
+    """Height of points above the seabed plane, normal to it (negative inside it), (..., n). [m]"""
+    sl = water.slope
+    return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
+
+
+def contact_length(model: MooringModel, X):
+    """Unstretched length of line resting on the seabed, interpolated between nodes, (...,). [m]
+
+    Each node's share of line (half of each adjacent element) counts in the fraction of its weight
+    that the seabed carries: the penalty spring's force over the node's weight, between 0 and 1. On a
+    flat seabed the reactions add up to the weight of the grounded line, so the sum is the grounded
+    length to the accuracy of the model's end forces, wherever the touchdown lies inside an element
+    (a node near the touchdown carries part of its weight, the hanging line the rest). A held node
+    (an anchor) or a model without seabed stiffness counts as on the seabed when it touches it.
+    """
     net, water = model.network, model.water
+    X = np.asarray(X, float)
     if water.depth is None:
         return np.zeros(X.shape[:-2])
     share = np.zeros(net.n_nodes)
     np.add.at(share, net.elements[:, 0], 0.5 * net.length)
     np.add.at(share, net.elements[:, 1], 0.5 * net.length)
-    s = water.slope
-    pen = -(-math.sin(s) * X[..., 0] + math.cos(s) * (X[..., 2] + water.depth))
-    return np.sum(np.where(pen > 0, share, 0.0), axis=-1)
+    dl = float(model.env[K_BEDRAMP])
+    pen = -_clearance(water, X)
+    touching = pen >= -dl
+    kb = water.seabed_stiffness
+    if kb > 0:
+        q = np.where(pen >= dl, pen, np.where(pen > -dl, (pen + dl) ** 2 / (4 * dl), 0.0))
+        weight = model.weight
+        held = (net.kind != FREE) | (weight <= 0)
+        carried = np.clip(kb * model.bedc * q / np.where(held, 1.0, weight), 0.0, 1.0)
+        frac = np.where(held, touching, carried)
+    else:
+        frac = (pen >= 0).astype(float)
+    return np.sum(frac * share, axis=-1)
 
 
-def network_variables(model: MooringModel, X, tension, support, dims=("node",)):
-    """Shape, tensions and end forces of one line network at one or more states."""
+def _own_model(model: MooringModel) -> MooringModel:
+    """The model without the attachments of shared points (nodes with no arc length: MoorDyn points),
+    so that the end forces are those of the line alone."""
+    net = model.network
+    point = ~np.isfinite(net.arc_length)
+    loaded = point & ((net.point_mass != 0) | (net.point_weight != 0) | (net.point_volume != 0)
+                      | (net.point_drag_area != 0) | (net.point_added_mass != 0))
+    if not np.any(loaded):
+        return model
+    keep = ~point
+    return MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
+        "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}), model.water)
+
+
+def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
+    """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
+
+    The pull of the end element plus the loads lumped at the end node from that line's half element
+    (weight, seabed, water, inertia): the line's own end tension, as MoorDyn reports it from the end
+    segment. A point's attachments and the other lines meeting there are left out (see
+    :func:`point_variables` for the force on a point). ``time`` None: a static state (no waves).
+    """
+    own = _own_model(model)
+    net = own.network
+    nodes = net.line_nodes[0]
+    ends = [nodes[0], nodes[-1]]
+    nbrs = [nodes[1], nodes[-2]]
+    end_el = [int(np.flatnonzero((net.elements == k).any(axis=1))[0]) for k in ends]
+    ramp = float(own.env[K_BEDRAMP])
+    X = np.asarray(X, float)
+    V = np.zeros_like(X) if V is None else np.asarray(V, float)
+    A = np.zeros_like(X) if A is None else np.asarray(A, float)
+    lead = X.shape[:-2]
+    out = np.zeros(lead + (2, 3))
+    times = None if time is None else np.broadcast_to(np.asarray(time, float), lead)
+    for idx in np.ndindex(*lead):
+        t = 0.0 if times is None else float(times[idx])
+        _, _, tension, support = own.evaluate(X[idx], V[idx], A[idx], t, waves=times is not None)
+        out[idx] = support[ends]
+        if model.water.depth is not None:
+            # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
+            # along its end element only (the catenary's H at a grounded anchor)
+            for j in (0, 1):
+                if _clearance(model.water, X[idx][ends[j]]) <= ramp:
+                    d = X[idx][nbrs[j]] - X[idx][ends[j]]
+                    out[idx][j] = tension[end_el[j]] * d / max(np.linalg.norm(d), 1e-300)
+    return out
+
+
+def _fairlead_end(net: Network) -> tuple[int, int]:
+    """(anchor end, fairlead end) of a single line, 0 = end A, 1 = end B: the fairlead is the moved end,
+    end B unless only end A is moved."""
+    nodes = net.line_nodes[0]
+    a_moved, b_moved = net.kind[nodes[0]] == PRESCRIBED, net.kind[nodes[-1]] == PRESCRIBED
+    return (1, 0) if a_moved and not b_moved else (0, 1)
+
+
+def network_variables(model: MooringModel, X, tension, support, dims=("node",), *, velocity=None,
+                      acceleration=None, time=None):
+    """Shape, tensions and end forces of one line at one or more states.
+
+    ``fairlead_tension`` and ``anchor_tension`` are the line's own end tensions
+    (:func:`line_end_forces`); ``support`` (the force on each node's support, every line and
+    attachment there) is not used for them. Give ``velocity``, ``acceleration`` and ``time`` of a
+    time-domain run so that the end forces include the half element's water loads and inertia.
+    """
     net = model.network
     lead = tuple(dims[:-1])
-    fair = np.flatnonzero(net.kind == PRESCRIBED)
-    f_end = fair[-1] if fair.size else net.line_nodes[0][-1]
+    ends = line_end_forces(model, X, velocity, acceleration, time)
+    anchor, fair = _fairlead_end(net)
     data = {
         "x": var(dims, X[..., 0], "m", "x position"),
         "y": var(dims, X[..., 1], "m", "y position"),
         "z": var(dims, X[..., 2], "m", "elevation (0 at the still water level)"),
         "tension": var(dims, _node_tension(net, tension), "N", "effective tension (node average)"),
         "segment_tension": var(lead + ("element",), tension, "N", "element effective tension"),
-        "fairlead_tension": var(lead, np.linalg.norm(support[..., f_end, :], axis=-1), "N",
-                                "tension at the fairlead (force of the line on it)"),
-        "anchor_tension": var(lead, np.linalg.norm(support[..., 0, :], axis=-1), "N",
-                              "tension at the anchor (force of the line on it)"),
-        "seabed_contact_length": var(lead, _contact_length(model, X), "m", "length of line on the seabed"),
+        "fairlead_tension": var(lead, np.linalg.norm(ends[..., fair, :], axis=-1), "N",
+                                "tension at the fairlead end of the line (its end element and half-element loads)"),
+        "anchor_tension": var(lead, np.linalg.norm(ends[..., anchor, :], axis=-1), "N",
+                              "tension at the anchor end of the line (its end element and half-element loads)"),
+        "seabed_contact_length": var(lead, contact_length(model, X), "m",
+                                     "length of line on the seabed"),
     }
     for k, name in enumerate("xyz"):
-        data[f"fairlead_force_{name}"] = var(lead, support[..., f_end, k], "N",
-                                             f"{name} force of the line on the fairlead")
+        data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
+                                             f"{name} force of the line on its fairlead end")
+    return data
+
+
+def point_variables(model: MooringModel, support, dims=("node",)):
+    """Force on each point of a network (held nodes and MoorDyn points): every line meeting there and
+    the point's attachments, dimension ``point``. [N]"""
+    net = model.network
+    points = np.flatnonzero((net.kind != FREE) | ~np.isfinite(net.arc_length))
+    lead = tuple(dims[:-1])
+    f = np.asarray(support)[..., points, :]
+    data = {"point_node": var("point", points, "1", "network node of the point"),
+            "point_force": var(lead + ("point",), np.linalg.norm(f, axis=-1), "N",
+                               "force of the lines and attachments on the point's support")}
+    for k, name in enumerate("xyz"):
+        data[f"point_force_{name}"] = var(lead + ("point",), f[..., k], "N", f"{name} force on the point")
     return data
 
 
@@ -130,10 +244,72 @@ def _settings(model: MooringModel, **more):
             **more}
 
 
+def prepare_mooring_static(case: Case) -> MooringModel:
+    """Every check of a ``mooring_static`` case that needs no solve; returns the model to solve.
+
+    Builds the network on its start shape, which runs :func:`seacable.mooring.checks.check_network`
+    (nodes under the seabed, ends beyond the stretch limit).
+    """
+    return case_model(case)
+
+
+def prepare_mooring_pushover(case: Case) -> tuple[MooringModel, np.ndarray]:
+    """Every check of a ``mooring_pushover`` case that needs no solve: the model, and the offsets [m].
+
+    The geometric checks run at the start and with the fairlead at the smallest and largest offset.
+    """
+    a: MooringPushoverAnalysis = case.analysis
+    model = case_model(case)
+    offsets = np.asarray(a.offset_values(), float)
+    net = model.network
+    moved = net.kind == PRESCRIBED
+    for off in (offsets.min(), offsets.max()) if offsets.size else ():
+        X = net.position.copy()
+        X[moved, 0] += off
+        check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope)
+    return model, offsets
+
+
+@dataclass(frozen=True)
+class MooringDynamicSetup:
+    """What the time loop of ``mooring_dynamic`` needs (see :func:`prepare_mooring_dynamic`)."""
+
+    model: MooringModel
+    start_model: MooringModel  # the model of the static start (a free end B held at release_from)
+    motion: object = None      # the bound fairlead motion: times -> positions, velocities, accelerations
+
+
+def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
+    """Every check of a ``mooring_dynamic`` case that can be made before the time loop.
+
+    The geometric checks of the network (:func:`seacable.mooring.checks.check_network`) at the start
+    and along the fairlead motion at the output times (:func:`seacable.mooring.checks.check_motion`),
+    and the size of the run (:func:`seacable._limits.check_run_size`: time steps, and the stored
+    positions, velocities, accelerations, tensions and support forces).
+    """
+    a: MooringDynamicAnalysis = case.analysis
+    free = a.end_b == "free"
+    model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
+    net = model.network
+    steps = a.duration / min(a.time_step, a.output_interval)
+    outputs = a.duration / a.output_interval + 1
+    check_run_size(f"mooring_dynamic case '{case.name}'", steps=steps,
+                   stored_values=outputs * (4 * 3 * net.n_nodes + net.n_elements),
+                   fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
+    start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
+    # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
+    # now (a time series too short fails here) and check it at the output times
+    motion = bind(a.motion, net.channel_positions(), a.duration)
+    if motion is not None:
+        times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
+        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
+    return MooringDynamicSetup(model, start, motion)
+
+
 def run_mooring_static(case: Case):
     """Static equilibrium of the finite-element model (analysis ``mooring_static``)."""
     a = case.analysis
-    model = case_model(case)
+    model = prepare_mooring_static(case)
     st = static_equilibrium(model, tol=a.tolerance)
     data = network_variables(model, st.position, st.tension, st.support)
     return make_dataset(data, _coords(model.network), analysis="mooring_static", case=case, references=REFERENCES,
@@ -143,8 +319,7 @@ def run_mooring_static(case: Case):
 def run_mooring_pushover(case: Case):
     """Quasi-static force-excursion curve of the finite-element model (analysis ``mooring_pushover``)."""
     a: MooringPushoverAnalysis = case.analysis
-    model = case_model(case)
-    offsets = np.asarray(a.offset_values(), float)
+    model, offsets = prepare_mooring_pushover(case)
     states = pushover(model, offsets, tol=a.tolerance)
     X = np.array([st.position for st in states])
     T = np.array([st.tension for st in states])
@@ -169,7 +344,8 @@ def run_events(run: MooringRun) -> dict:
 def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="mooring_dynamic", settings=None):
     """A Dataset of a time-domain run of a single-line network."""
     net = model.network
-    data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"))
+    data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
+                             velocity=run.velocity, acceleration=run.acceleration, time=run.time)
     data.update(run_events(run))
     coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
     ds = make_dataset(data, coords, analysis=analysis, case=case, references=REFERENCES,
@@ -183,15 +359,10 @@ def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="moo
 def run_mooring_dynamic(case: Case, progress=None):
     """Time-domain response of the finite-element model (analysis ``mooring_dynamic``)."""
     a: MooringDynamicAnalysis = case.analysis
-    free = a.end_b == "free"
-    model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
-    if free and a.release_from is not None:
-        held = MooringModel(model.network.replace(kind=_held(model.network)), model.water)
-        start = static_equilibrium(held, tol=a.tolerance).position
-    else:
-        start = static_equilibrium(model, tol=a.tolerance).position
-    motion = bind(a.motion, model.network.channel_positions(start), a.duration)
-    run = simulate(model, motion, a.duration, a.time_step, a.output_interval, initial=start,
+    setup = prepare_mooring_dynamic(case)
+    model = setup.model
+    start = static_equilibrium(setup.start_model, tol=a.tolerance).position
+    run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
                    tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress)
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
                                                        "rayleigh": list(a.rayleigh)})

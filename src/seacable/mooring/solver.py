@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, SeacableWarning
 from . import kernel as K
+from .checks import check_network
 from .network import FREE, PRESCRIBED, Network
 
 __all__ = [
@@ -102,6 +103,7 @@ class MooringModel:
 
     def __post_init__(self):
         net = self.network
+        check_network(net, depth=self.water.depth, slope=self.water.slope)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
@@ -117,6 +119,11 @@ class MooringModel:
         np.add.at(bedc, el[:, 1], half)
         self.bedc = bedc
         self.weight = net.node_weight()
+        # buoyancy the weight in water holds, given back above the surface: per length of each element and
+        # of each attachment (weight in air minus weight in water) [N/m], [N]
+        g = self.water.gravity
+        self.buoyancy = net.mass_per_length * g - net.weight_per_length
+        self.point_buoyancy = net.point_mass * g - net.point_weight
         # seabed damper ramp: half the mean static penetration of a node under its own weight
         if self.water.seabed_stiffness > 0:
             sink = np.abs(self.weight) / (self.water.seabed_stiffness * np.maximum(bedc, 1e-300))
@@ -131,7 +138,7 @@ class MooringModel:
         n = self.network
         return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
                 n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
-                n.point_drag_area, self.bedc)
+                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy)
 
     def evaluate(self, X, V, A, t=0.0, waves=True):
         """Node forces F (without inertia and supports), masses M and element tensions at a state.
@@ -193,7 +200,7 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     if not ok:
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations: force residual "
-            f"{stats[1]:.3g} N against a tolerance of {tol * stats[2]:.3g} N. Suggested fix: check that the "
+            f"{stats[1]:.3g} N against a tolerance of {stats[2]:.3g} N. Suggested fix: check that the "
             "line is long enough to reach its fairlead and that buoys cannot lift it out of the water.",
             iterations=int(stats[0]), residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
@@ -254,6 +261,7 @@ class MooringRun:
     steps: int
     interrupted: bool
     wall_time: float
+    acceleration: np.ndarray | None = None  # (nt, n, 3)
 
 
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
@@ -270,8 +278,8 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     n = net.n_nodes
     X = (static_equilibrium(model).position if initial is None else np.array(initial, float)).copy()
     V, A = np.zeros_like(X), np.zeros_like(X)
-    n_out = int(round(duration / output_interval))
-    sub = max(1, int(math.ceil(output_interval / dt - 1e-9)))
+    n_out = int(round(duration / output_interval))  # noqa: RUF046 (a numpy float rounds to a float)
+    sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
@@ -292,7 +300,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
 
     times = [0.0]
-    pos, vel = [X.copy()], [V.copy()]
+    pos, vel, acc = [X.copy()], [V.copy()], [A.copy()]
     ten, sup = [], []
 
     def record():
@@ -326,7 +334,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
                         raise ConvergenceError(
                             f"the mooring time step did not converge at t = {t0 + done * dtk:.6g} s with "
                             f"dt = {dtk:.3g} s after {max_halvings} halvings: force residual {stats[1]:.3g} N "
-                            f"(tolerance {tol * stats[2]:.3g} N). Suggested fix: smaller time_step, more "
+                            f"(tolerance {stats[2]:.3g} N). Suggested fix: smaller time_step, more "
                             "elements, or check the motion for a jump.",
                             time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
                     done *= 2
@@ -334,14 +342,15 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             times.append((k + 1) * output_interval)
             pos.append(X.copy())
             vel.append(V.copy())
+            acc.append(A.copy())
             record()
             if progress is not None:
                 progress(times[-1], duration)
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - start
-    nt = min(len(times), len(pos), len(vel), len(ten), len(sup))  # an interrupt may fall between appends
-    times, pos, vel, ten, sup = times[:nt], pos[:nt], vel[:nt], ten[:nt], sup[:nt]
+    nt = min(len(times), len(pos), len(vel), len(acc), len(ten), len(sup))  # an interrupt may fall between appends
+    times, pos, vel, acc, ten, sup = times[:nt], pos[:nt], vel[:nt], acc[:nt], ten[:nt], sup[:nt]
     return MooringRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
                       tension=np.array(ten), support=np.array(sup), time_step=h, iterations=iterations,
-                      steps=steps, interrupted=interrupted, wall_time=wall)
+                      steps=steps, interrupted=interrupted, wall_time=wall, acceleration=np.array(acc))

@@ -1,0 +1,169 @@
+"""The geometric checks every mooring analysis makes before it solves: one function, every path.
+
+:func:`check_network` runs whenever a :class:`~seacable.mooring.solver.MooringModel` is built, so
+``mooring_static``, ``mooring_pushover``, ``mooring_dynamic`` and networks read from MoorDyn files
+refuse the same impossible starts with the same message:
+
+* a node the user places (an anchor, a fairlead, a MoorDyn point) under the seabed;
+* two held nodes (fixed or moved) farther apart than the line(s) between them can stretch.
+
+The stretch limit of an element is the strain at its line type's breaking load, ``MBL / EA``, when
+the breaking load is known: the line would break before it reached. Without a breaking load it is
+:data:`seacable.statics.multisegment.MAX_STRAIN` (20 %), the limit the catenary statics
+(analysis ``static``) already apply, so that every analysis refuses the same geometry: it is above
+the breaking strain of every usual mooring material (chain and wire rope 2-4 %, polyester 10-15 %,
+only nylon reaches 20-25 %), so it never refuses a line that could hold, only a geometry no line
+can reach (a typing error in a coordinate or a length).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import InputError
+from ..statics.multisegment import MAX_STRAIN
+from .network import FIXED, PRESCRIBED, Network
+
+__all__ = ["check_motion", "check_network", "element_stretch_limit"]
+
+
+def element_stretch_limit(network: Network) -> np.ndarray:
+    """Largest strain each element may start at: ``MBL / EA``, or ``MAX_STRAIN`` without a breaking load. [-]"""
+    limit = np.full(network.n_elements, MAX_STRAIN)
+    mbl = network.breaking_load
+    if mbl is not None:
+        mbl = np.asarray(mbl, float)
+        known = np.isfinite(mbl) & (mbl > 0)
+        limit[known] = mbl[known] / network.axial_stiffness[known]
+    return limit
+
+
+def _lines_at(network: Network, node: int) -> list[str]:
+    return [name for name, nodes in zip(network.line_names, network.line_nodes) if node in nodes]
+
+
+def _describe(network: Network, node: int) -> str:
+    kind = {FIXED: "fixed", PRESCRIBED: "moved"}.get(int(network.kind[node]), "free")
+    x, y, z = network.position[node]
+    return f"{kind} node {node} at ({x:.6g}, {y:.6g}, {z:.6g}) m"
+
+
+def check_network(network: Network, *, depth: float | None, slope: float = 0.0) -> None:
+    """Refuse a start no line can take: a placed node under the seabed, or held ends beyond the stretch limit.
+
+    Parameters
+    ----------
+    network
+        The mooring network at its start positions.
+    depth, slope
+        The seabed plane, through (0, 0, -depth) rising towards +x at ``slope`` (None: no seabed). [m], [rad]
+
+    Raises
+    ------
+    InputError
+        Naming the line(s), the node and its position, the limit and why, and a fix.
+    """
+    X = network.position
+    held = np.flatnonzero(network.kind != 0)
+    placed = np.union1d(held, np.flatnonzero(~np.isfinite(network.arc_length)))  # plus MoorDyn points
+    if depth is not None:
+        bed = -depth + math.tan(slope) * X[placed, 0]
+        below = (bed - X[placed, 2]) * math.cos(slope)
+        k = int(np.argmax(below)) if placed.size else 0
+        if placed.size and below[k] > 1e-6 * max(depth, 1.0):
+            node = int(placed[k])
+            raise InputError(
+                f"{' and '.join(repr(n) for n in _lines_at(network, node))}: {_describe(network, node)} is "
+                f"{below[k]:.4g} m under the seabed (z = {bed[k]:.6g} m there, depth {depth:.6g} m). Suggested "
+                "fix: put anchors on or above the seabed (z >= -depth) and fairleads and points above it.")
+    if held.size < 2:
+        return
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import dijkstra
+
+    reach = network.length * (1.0 + element_stretch_limit(network))
+    el = network.elements
+    n = network.n_nodes
+    graph = coo_matrix((reach, (el[:, 0], el[:, 1])), shape=(n, n)).tocsr()
+    dist, pred = dijkstra(graph, directed=False, indices=held, return_predecessors=True)
+    for row, i in enumerate(held):
+        for j in held[row + 1:]:
+            chord = float(np.linalg.norm(X[j] - X[i]))
+            if not np.isfinite(dist[row, j]) or chord <= dist[row, j] * (1.0 + 1e-9):
+                continue
+            path, k = [], int(j)
+            while k != i:
+                p = int(pred[row, k])
+                e = np.flatnonzero(((el[:, 0] == p) & (el[:, 1] == k)) | ((el[:, 0] == k) & (el[:, 1] == p)))[0]
+                path.append(e)
+                k = p
+            path = np.array(path[::-1])
+            lines = list(dict.fromkeys(network.line_names[network.element_line[e]] for e in path))
+            unstretched = float(np.sum(network.length[path]))
+            mbl = network.breaking_load
+            known = mbl is not None and bool(np.all(np.isfinite(np.asarray(mbl, float)[path])))
+            why = ("the strain at the line type's breaking load, MBL / EA" if known
+                   else f"{MAX_STRAIN:.0%} without a breaking_load (the statics' limit; above the breaking strain "
+                        "of chain, wire and polyester)")
+            raise InputError(
+                f"{' and '.join(repr(n) for n in lines)} ({unstretched:.6g} m unstretched) cannot span the "
+                f"{chord:.6g} m between {_describe(network, int(i))} and {_describe(network, int(j))}: it would "
+                f"start at a strain of {chord / unstretched - 1:.3g}, and it can stretch to at most "
+                f"{dist[row, j]:.6g} m at its limit strain ({why}). Suggested fix: check the end positions "
+                "(anchor, fairlead or points) and the line length.")
+
+
+def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0) -> None:
+    """Refuse a prescribed motion that takes a moved node under the seabed or beyond the lines' reach.
+
+    Parameters
+    ----------
+    network
+        The network at rest (its held nodes and lines).
+    times
+        (nt,) sample times of the motion. [s]
+    positions
+        (nt, n_channels, 3) positions of the motion channels at ``times``. [m]
+    depth, slope
+        The seabed plane (see :func:`check_network`). [m], [rad]
+
+    Raises
+    ------
+    InputError
+        Naming the line(s), the node, the time and the position.
+    """
+    times = np.asarray(times, float)
+    positions = np.asarray(positions, float)
+    moved = np.flatnonzero(network.channel >= 0)
+    if moved.size == 0 or times.size == 0:
+        return
+    for node in moved:
+        path = positions[:, network.channel[node], :]
+        if depth is not None:
+            below = ((-depth + math.tan(slope) * path[:, 0]) - path[:, 2]) * math.cos(slope)
+            k = int(np.argmax(below))
+            if below[k] > 1e-6 * max(depth, 1.0):
+                raise InputError(
+                    f"{' and '.join(repr(n) for n in _lines_at(network, int(node)))}: the motion takes moved node "
+                    f"{node} to ({path[k, 0]:.6g}, {path[k, 1]:.6g}, {path[k, 2]:.6g}) m at t = {times[k]:.6g} s, "
+                    f"{below[k]:.4g} m under the seabed. Suggested fix: check the motion's amplitude, offsets or "
+                    "the fairlead's depth.")
+    # the reach: the positions at the time each moved node is farthest from each other held node
+    held = np.flatnonzero(network.kind != 0)
+    X = network.position
+    worst = X.copy()
+    for node in moved:
+        path = positions[:, network.channel[node], :]
+        others = held[held != node]
+        if others.size == 0:
+            continue
+        far = np.max(np.linalg.norm(path[:, None, :] - X[None, others, :], axis=-1), axis=1)
+        k = int(np.argmax(far))
+        worst[node] = path[k]
+        try:
+            check_network(network.replace(position=worst), depth=None)
+        except InputError as err:
+            raise InputError(f"at t = {times[k]:.6g} s of the motion: {err}") from None
+        worst[node] = X[node]
