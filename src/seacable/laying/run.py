@@ -127,7 +127,7 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
 
     Cable and water data (the cable must sink), the seabed, a moving ship (see
     :func:`_check_moving_ship`) and the size of the run: time steps ``duration / dt`` with the
-    time step of the solver at the largest speed, and stored values (output times x the largest
+    time step of the solver at the largest speed (steps end on the output times), and stored values (output times x the largest
     suspended node count x the node and segment variables, plus the time series), checked with
     :func:`seacable._limits.check_run_size`.
 
@@ -159,7 +159,7 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     else:
         v_pay = 2.0 * v_ship                         # the bottom-tension controller's ceiling
     dt = min(a.segment_length / (a.steps_per_segment * max(v_ship, v_pay, _MIN_SPEED)), a.max_time_step)
-    steps = a.duration / dt
+    steps = math.ceil(a.output_interval / dt) * (a.duration / a.output_interval)    # steps end on output times
     # suspended nodes: the straight lay over the deepest seabed at the largest speed (smallest angle),
     # twice that for the curvature under bottom tension, at most the whole cable
     x0, x1 = a.ship.start_x - par.cable_length, a.ship.start_x + v_ship * a.duration
