@@ -182,9 +182,12 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
 def run_laying_dynamic(case: Case, progress=None):
     """Run a ``laying_dynamic`` case; see :func:`seacable.run`.
 
-    The Dataset has dims ``time``, ``node`` (suspended nodes from the touchdown, node 0, to the water
-    entry; NaN beyond the count at each time), ``segment``, ``laid`` (nodes landed, in order, with the
-    cable on the seabed at the start), ``seabed_point`` and ``repeater``.
+    The Dataset has dims ``time``, ``node`` (suspended nodes from the touchdown node, node 0, the
+    first node on the seabed counting from the ship, to the water entry; NaN beyond the count at each
+    time), ``segment``, ``laid`` (nodes landed, in order, with the cable on the seabed at the start),
+    ``seabed_point`` and ``repeater``. ``touchdown_x`` is interpolated between node 0 and node 1 and
+    ``layback`` is ``ship_x - touchdown_x``. The case is checked first by
+    :func:`prepare_laying_dynamic`.
     """
     a: LayingDynamicAnalysis = case.analysis
     setup = prepare_laying_dynamic(case)

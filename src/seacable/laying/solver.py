@@ -12,9 +12,14 @@ Events after each step:
   the velocity of the cable leaving the chute (ship velocity plus payout along the cable, paper
   eq. (17)). Position and velocity are linear in ``s`` along the segment, so the mass and the
   momentum of the cable are unchanged by the birth. Repeaters get a node of their own.
-* **touchdown** - the lowest free node that reaches the seabed lands: it is put on the seabed,
-  stops (its momentum goes to the seabed) and stays there; it becomes the new touchdown node and the
-  old one joins the laid cable. Mass is conserved: paid-out length = laid + suspended length.
+* **touchdown** - found from the geometry after every step: the first node on the seabed counting
+  from the ship side lands, and so does every free node below it (nodes above the seabed there span
+  a hollow, held up by the tension, and are laid where they are). A landed node stops (its momentum
+  goes to the seabed) and stays there; the last one is the touchdown node and the others join the
+  laid cable. The reported touchdown point lies between the touchdown node and the lowest free node,
+  where the clearance of the lowest free nodes extrapolates to zero (:meth:`_Lay.touchdown`); the
+  layback, the suspended and laid lengths and the bottom tension are taken there. Mass is conserved:
+  paid-out length = laid + suspended length.
 
 Controls: the ship speed follows its schedule, slowed to ``repeater_speed`` while a repeater is in
 the water and brought back at the given acceleration after its touchdown; the payout speed follows a
@@ -38,7 +43,16 @@ from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..statics.laying import laying_angle
 from .control import Control
 from .inputs import Seabed2D, ShipMotion
-from .kernel import N_PROPS, P_CDN, P_DIAMETER, P_WEIGHT, STEP_ACTIVE_SET, STEP_NOT_CONVERGED, STEP_OK, implicit_step
+from .kernel import (
+    N_PROPS,
+    P_CDN,
+    P_DIAMETER,
+    P_WEIGHT,
+    STEP_ACTIVE_SET,
+    STEP_NOT_CONVERGED,
+    STEP_OK,
+    implicit_step,
+)
 
 __all__ = ["LayParameters", "LayRun", "Repeater", "simulate"]
 
