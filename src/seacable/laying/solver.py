@@ -355,17 +355,21 @@ class _Lay:
         """Whether the bottom segment pulls the touchdown node up harder than the cable weighs on it.
 
         The node carries half of the bottom segment and half of the laid segment behind it; the
-        laid cable takes the horizontal pull.
+        laid cable takes the pull along the seabed. Pull and weight are compared across the seabed
+        (its slope under the bottom segment): a tension along a rising seabed does not lift the
+        cable off it.
         """
         c = self.c
         lo = c.lo
         if len(self.laid["s"]) < 2 or not c.active[lo] or c.hi - lo < 2:
             return False
         d = c.new_pos[lo + 1] - c.new_pos[lo]
-        up = c.T[lo] * d[1] / math.hypot(*d)
+        slope = self.seabed.slope(0.5 * (c.new_pos[lo, 0] + c.new_pos[lo + 1, 0]))
+        cos_b = 1.0 / math.sqrt(1.0 + slope * slope)          # normal to the seabed: (-slope, 1) cos_b
+        up = c.T[lo] * (d[1] - slope * d[0]) * cos_b / math.hypot(*d)
         w = self.par.props[c.seg_type[lo], P_WEIGHT]
         behind = self.laid["s"][-1] - self.laid["s"][-2]
-        return up > 0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]
+        return up > (0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]) * cos_b
 
     def lift(self) -> None:
         """Pick the touchdown node up off the seabed: the node laid before it becomes the touchdown."""
