@@ -72,10 +72,10 @@ def test_single_node_sinks_at_the_backward_euler_rate():
     T, act = np.zeros(2), np.zeros(2, dtype=np.int64)
     new_pos, new_vel = np.zeros_like(pos), np.zeros_like(vel)
     dt = 0.1
-    ok, _, _ = K.implicit_step(pos, vel, pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
+    status, _, _ = K.implicit_step(pos, vel, pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
                                np.zeros((3, 4)), np.zeros(1), np.zeros(1), 1025.0, dt, T, act, 0.0,
                                1e-12, 20, 5, new_pos, new_vel)
-    assert ok
+    assert status == K.STEP_OK
     accel = weight / mass                          # net weight over mass, per unit length
     # the free node's backward-Euler step, to round-off
     assert math.isclose(new_vel[1, 1], -accel * dt, rel_tol=1e-13)

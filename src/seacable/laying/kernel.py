@@ -62,6 +62,10 @@ __all__ = [
     "P_ET",
     "P_MASS",
     "P_WEIGHT",
+    "STEP_ACTIVE_SET",
+    "STEP_NOT_CONVERGED",
+    "STEP_OK",
+    "STEP_SINGULAR",
     "current_at",
     "implicit_step",
 ]
@@ -69,6 +73,11 @@ __all__ = [
 # Columns of the per-type property table (per unit unstretched length).
 P_MASS, P_WEIGHT, P_DIAMETER, P_CDN, P_CDT, P_EN, P_ET, P_COMPLIANCE = range(8)
 N_PROPS = 8
+# Outcomes of implicit_step.
+STEP_OK = 0               # converged: residual <= tol and the slack set settled
+STEP_NOT_CONVERGED = 1    # residual still > tol after max_iter Newton iterations
+STEP_ACTIVE_SET = 2       # converged each time, but segments kept going slack / taut for max_rounds rounds
+STEP_SINGULAR = 3         # the Newton matrix was singular
 # Columns of the per-node point-mass table (repeaters).
 Q_MASS, Q_ADDED, Q_WEIGHT, Q_CDA = range(4)
 
@@ -151,7 +160,7 @@ def _node_matrices(pos, vel, L, seg_type, props, point, depths, speeds, rho, dt,
 @njit(cache=True)
 def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rho, dt, T, active,
                   compliance_floor, tol, max_iter, max_rounds, new_pos, new_vel):
-    """Advance the suspended cable by ``dt``; returns ``(converged, iterations, residual)``.
+    """Advance the suspended cable by ``dt``; returns ``(status, iterations, residual)``.
 
     Parameters
     ----------
@@ -184,11 +193,16 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
 
     Returns
     -------
-    converged : bool
+    status : int
+        ``STEP_OK`` (0): the residual is ``<= tol`` and no slack segment is stretched; otherwise why
+        not: ``STEP_NOT_CONVERGED`` (the residual is still ``> tol`` after ``max_iter`` iterations),
+        ``STEP_ACTIVE_SET`` (converged each time, but the slack set changed ``max_rounds`` times) or
+        ``STEP_SINGULAR`` (singular Newton matrix).
     iterations : int
+        Newton iterations done, all rounds together.
     residual : float
-        Largest ``|chord - L (1 + T/EA)| / L`` or tangent turn in the last iteration over the taut
-        segments. [-]
+        The quantity compared with ``tol``: largest ``|chord - L (1 + T/EA)| / L`` over the taut
+        segments and ``|r_i - b_i - G_i F_i| / L`` over the free nodes, in the last iteration. [-]
     """
     npt = pos.shape[0]
     nseg = npt - 1
@@ -226,10 +240,12 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
             residual = _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs)
             if residual <= tol:
                 converged = True
+                break
+            if it == max_iter:
+                break
+            if block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale) != 0:
                 total += it
-                break
-            if it == max_iter or block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale) != 0:
-                break
+                return STEP_SINGULAR, total, residual
             # damped update: no node moves more than a quarter of the shortest segment per iteration
             move = 0.0
             for k in range(nseg - 1):
@@ -243,8 +259,9 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
                 if k + 1 < npt - 1:
                     r[k + 1, 0] += scale_step * x[k, 1]
                     r[k + 1, 1] += scale_step * x[k, 2]
+        total += it
         if not converged:
-            return False, total + max_iter, residual
+            return STEP_NOT_CONVERGED, total, residual
         # complementarity: a slack segment stretched beyond its length is taut again
         changed = False
         for j in range(nseg):
@@ -258,8 +275,8 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
                 new_vel[i, 1] = (r[i, 1] - pos[i, 1]) / dt
             new_vel[0, 0] = 0.0
             new_vel[0, 1] = 0.0
-            return True, total, residual
-    return False, total, residual
+            return STEP_OK, total, residual
+    return STEP_ACTIVE_SET, total, residual
 
 
 @njit(cache=True)

@@ -4,16 +4,22 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 
 import numpy as np
 
+from .._limits import check_run_size
 from ..case import Case, LayingDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
-from .inputs import Seabed2D
-from .solver import LayParameters, Repeater, props_row, simulate
+from ..statics.laying import laying_angle
+from .inputs import PayoutRate, PayoutSlack, Seabed2D
+from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
+from .solver import _MIN_SPEED, LayParameters, Repeater, props_row, simulate
 
-__all__ = ["lay_parameters", "lay_seabed", "run_laying_dynamic"]
+__all__ = ["LayingSetup", "lay_parameters", "lay_seabed", "prepare_laying_dynamic", "run_laying_dynamic"]
+
+_N_SERIES = 16      # time series stored per output time (ship_x, top_tension, ...)
 
 REFERENCES = (
     "Paper 001: Park, H. I. et al., two-dimensional laying simulation of subsea cables by the finite "
@@ -70,16 +76,122 @@ def lay_seabed(case: Case) -> Seabed2D:
                           a.ship.start_x + reach)
 
 
+@dataclass(frozen=True)
+class LayingSetup:
+    """What the time loop of a ``laying_dynamic`` case needs, checked (see :func:`prepare_laying_dynamic`)."""
+
+    parameters: LayParameters
+    seabed: Seabed2D
+    steps: float            # estimated time steps [1]
+    stored_values: float    # estimated values kept for the result [1]
+
+
+def _ship_speed_range(case: Case) -> tuple[float, float]:
+    """Smallest and largest scheduled ship speed over the run (the schedule is linear between its
+    points, so the extremes are at its points inside the run or at its ends). [m/s]"""
+    a: LayingDynamicAnalysis = case.analysis
+    ship = a.ship
+    times = [0.0, a.duration] + [t for t in (ship.times or ()) if 0.0 < t < a.duration]
+    speeds = [ship.scheduled(t) for t in times]
+    return min(speeds), max(speeds)
+
+
+def _check_moving_ship(case: Case) -> None:
+    """Refuse a ship at rest: the laying theory of the model has no meaning there.
+
+    The run starts from the straight steady lay at the ship speed (paper 001 eq. (7)), the slack is
+    the laid length over the distance run minus one and the payout modes 'slack' and
+    'bottom_tension' pay out in proportion to the ship speed: with the ship at rest the first is a
+    vertical cable with no steady state, the slack is 0/0, and the payout stops.
+    """
+    a: LayingDynamicAnalysis = case.analysis
+    ship = a.ship
+    low, _ = _ship_speed_range(case)
+    if not low > 0.0:
+        where = ("analysis.ship.speed" if ship.times is None else "analysis.ship.speeds")
+        raise InputError(
+            f"{where}: the ship speed reaches {low:g} m/s during the run (0 to {a.duration:g} s); laying_dynamic "
+            "needs a moving ship (> 0 m/s) throughout: the straight-line start (paper 001 eq. (7)) and the slack "
+            "(laid length over the distance run) are undefined for a ship at rest, and the slack and bottom-tension "
+            "payouts stop with it. Suggested fix: give a ship speed > 0 m/s, e.g. 'ship: {speed: 1.0}', or end "
+            "the run (duration) before the ship stops.")
+    if ship.repeater_speed is not None and not ship.repeater_speed > 0.0 and case.line.attachments:
+        raise InputError(
+            f"analysis.ship.repeater_speed must be > 0 m/s, got {ship.repeater_speed:g} m/s: the ship would stop "
+            "while a repeater descends, where the laying model is undefined (see analysis.ship.speed). "
+            "Suggested fix: give the slow-down speed, e.g. 0.5 m/s, or leave repeater_speed out.")
+
+
+def prepare_laying_dynamic(case: Case) -> LayingSetup:
+    """Every check of a ``laying_dynamic`` case that can be made before the time loop.
+
+    Cable and water data (the cable must sink), the seabed, a moving ship (see
+    :func:`_check_moving_ship`) and the size of the run: time steps ``duration / dt`` with the
+    time step of the solver at the largest speed (steps end on the output times), and stored values (output times x the largest
+    suspended node count x the node and segment variables, plus the time series), checked with
+    :func:`seacable._limits.check_run_size`.
+
+    Parameters
+    ----------
+    case
+        A case with a :class:`~seacable.case.LayingDynamicAnalysis`.
+
+    Returns
+    -------
+    LayingSetup
+
+    Raises
+    ------
+    InputError
+        If the case cannot be run, with the input and a suggested fix.
+    """
+    a: LayingDynamicAnalysis = case.analysis
+    _check_moving_ship(case)
+    par = lay_parameters(case)
+    seabed = lay_seabed(case)
+    # time steps: dt = l / (n max(V_s, V_c)), at most max_time_step (seacable.laying.solver.simulate)
+    _, v_ship = _ship_speed_range(case)
+    p = a.payout
+    if isinstance(p, PayoutRate):
+        v_pay = max([p.speed or 0.0, *(p.speeds or ())])
+    elif isinstance(p, PayoutSlack):
+        v_pay = (1.0 + p.slack) * v_ship * 1.1      # slope compensation: a few per cent more
+    else:
+        v_pay = 2.0 * v_ship                         # the bottom-tension controller's ceiling
+    dt = min(a.segment_length / (a.steps_per_segment * max(v_ship, v_pay, _MIN_SPEED)), a.max_time_step)
+    steps = math.ceil(a.output_interval / dt) * (a.duration / a.output_interval)    # steps end on output times
+    # suspended nodes: the straight lay over the deepest seabed at the largest speed (smallest angle),
+    # twice that for the curvature under bottom tension, at most the whole cable
+    x0, x1 = a.ship.start_x - par.cable_length, a.ship.start_x + v_ship * a.duration
+    xs = np.concatenate([[x0, x1], seabed.x[(seabed.x > x0) & (seabed.x < x1)]])
+    depth = max(float(np.max(-seabed.z(xs))), 0.0)
+    row = par.props[0]
+    alpha = float(laying_angle(max(v_ship, _MIN_SPEED), row[P_WEIGHT], row[P_DIAMETER], row[P_CDN],
+                               par.water_density))
+    suspended = min(2.0 * depth / max(math.sin(alpha), 1e-3), par.cable_length)
+    nodes = suspended / a.segment_length + 3.0 + len(par.repeaters)
+    outputs = a.duration / a.output_interval + 1.0
+    laid = (par.cable_length / a.segment_length + len(par.repeaters)) * 4.0
+    stored = outputs * (3.0 * nodes + _N_SERIES + 2.0 * len(par.repeaters)) + laid
+    check_run_size(f"laying_dynamic case {case.name!r}", steps=steps, stored_values=stored,
+                   fix="shorten analysis.duration, lengthen analysis.output_interval or analysis.segment_length, "
+                       "or lower analysis.steps_per_segment")
+    return LayingSetup(parameters=par, seabed=seabed, steps=steps, stored_values=stored)
+
+
 def run_laying_dynamic(case: Case, progress=None):
     """Run a ``laying_dynamic`` case; see :func:`seacable.run`.
 
-    The Dataset has dims ``time``, ``node`` (suspended nodes from the touchdown, node 0, to the water
-    entry; NaN beyond the count at each time), ``segment``, ``laid`` (nodes landed, in order, with the
-    cable on the seabed at the start), ``seabed_point`` and ``repeater``.
+    The Dataset has dims ``time``, ``node`` (suspended nodes from the touchdown node, node 0, the
+    first node on the seabed counting from the ship, to the water entry; NaN beyond the count at each
+    time), ``segment``, ``laid`` (nodes landed, in order, with the cable on the seabed at the start),
+    ``seabed_point`` and ``repeater``. ``touchdown_x`` is interpolated between node 0 and node 1 and
+    ``layback`` is ``ship_x - touchdown_x``. The case is checked first by
+    :func:`prepare_laying_dynamic`.
     """
     a: LayingDynamicAnalysis = case.analysis
-    par = lay_parameters(case)
-    seabed = lay_seabed(case)
+    setup = prepare_laying_dynamic(case)
+    par, seabed = setup.parameters, setup.seabed
     res = simulate(par, a.ship, a.payout, seabed, a.duration, output_interval=a.output_interval,
                    steps_per_segment=a.steps_per_segment, max_time_step=a.max_time_step,
                    initial_angle=a.initial_angle, slack_window=a.slack_window, tol=a.tolerance,
@@ -97,9 +209,11 @@ def run_laying_dynamic(case: Case, progress=None):
         "top_tension": var(t1, s["top_tension"], "N", "tension at the water entry"),
         "bottom_tension": var(t1, s["bottom_tension"], "N", "tension at the touchdown"),
         "entry_angle": var(t1, s["entry_angle"], "degree", "cable angle to the sea surface at the water entry"),
-        "touchdown_x": var(t1, s["touchdown_x"], "m", "touchdown x"),
+        "touchdown_x": var(t1, s["touchdown_x"], "m", "touchdown x (interpolated between nodes)"),
         "touchdown_z": var(t1, s["touchdown_z"], "m", "touchdown elevation"),
-        "slack": var(t1, s["slack"], "1", "laid length / seabed distance - 1 over the slack window"),
+        "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"),
+        "slack": var(t1, s["slack"], "1", "laid length / seabed distance - 1 over the slack window "
+                     "(NaN until 3 nodes have landed in the window)"),
         "suspended_length": var(t1, s["suspended_length"], "m", "cable length between touchdown and water entry"),
         "laid_length": var(t1, s["laid_length"], "m", "cable laid since t = 0"),
         "laid_x": var("laid", res.laid["x"], "m", "x of the laid nodes"),

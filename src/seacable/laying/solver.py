@@ -12,9 +12,14 @@ Events after each step:
   the velocity of the cable leaving the chute (ship velocity plus payout along the cable, paper
   eq. (17)). Position and velocity are linear in ``s`` along the segment, so the mass and the
   momentum of the cable are unchanged by the birth. Repeaters get a node of their own.
-* **touchdown** - the lowest free node that reaches the seabed lands: it is put on the seabed,
-  stops (its momentum goes to the seabed) and stays there; it becomes the new touchdown node and the
-  old one joins the laid cable. Mass is conserved: paid-out length = laid + suspended length.
+* **touchdown** - found from the geometry after every step: the first node on the seabed counting
+  from the ship side lands, and so does every free node below it (nodes above the seabed there span
+  a hollow, held up by the tension, and are laid where they are). A landed node stops (its momentum
+  goes to the seabed) and stays there; the last one is the touchdown node and the others join the
+  laid cable. The reported touchdown point lies between the touchdown node and the lowest free node,
+  where the clearance of the lowest free nodes extrapolates to zero (:meth:`_Lay.touchdown`); the
+  layback, the suspended and laid lengths and the bottom tension are taken there. Mass is conserved:
+  paid-out length = laid + suspended length.
 
 Controls: the ship speed follows its schedule, slowed to ``repeater_speed`` while a repeater is in
 the water and brought back at the given acceleration after its touchdown; the payout speed follows a
@@ -38,13 +43,22 @@ from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..statics.laying import laying_angle
 from .control import Control
 from .inputs import Seabed2D, ShipMotion
-from .kernel import N_PROPS, P_CDN, P_DIAMETER, P_WEIGHT, implicit_step
+from .kernel import (
+    N_PROPS,
+    P_CDN,
+    P_DIAMETER,
+    P_WEIGHT,
+    STEP_ACTIVE_SET,
+    STEP_NOT_CONVERGED,
+    STEP_OK,
+    implicit_step,
+)
 
 __all__ = ["LayParameters", "LayRun", "Repeater", "simulate"]
 
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
 _HALVINGS = 6         # a failing step is retried with dt/2, dt/4, ...
-_ROUNDS = 20          # active-set updates (segments going slack or taut) per step
+_ROUNDS = 20          # active-set updates (segments going slack or taut) per step, beyond two per segment
 _STRAIN_FLOOR = 1e-5  # strain of an 'inextensible' cable at the weight of its suspended length
 _MAX_LIFTS = 50       # touchdown nodes picked up off the seabed in one step
 _MARGIN = 16          # free rows kept below the touchdown node for nodes picked up again
@@ -148,6 +162,33 @@ class _Cable:
             self._move(_MARGIN)
 
 
+def _rounds(n_segments: int) -> int:
+    """Active-set updates allowed in a step.
+
+    A slack cable pulled taut from one end tightens one segment per update (each segment is
+    stretched only once the one above it carries tension), so a fixed count runs out on a long
+    slack stretch with the Newton residual at round-off: allow two updates per segment.
+    """
+    return 2 * n_segments + _ROUNDS
+
+
+def _step_error(status: int, t: float, dt: float, res: float, tol: float, max_iter: int, rounds: int):
+    """The ConvergenceError of a step that failed at its smallest time step, naming what failed."""
+    head = f"the laying step from t = {t:.6g} s failed with dt = {dt:.3g} s (halved {_HALVINGS} times): "
+    fix = ("Suggested fix: check that the cable sinks (weight in water > 0) and that the payout is not far "
+           "below the ship speed of an inextensible cable; a smaller analysis.segment_length or a larger "
+           "analysis.steps_per_segment may help.")
+    if status == STEP_NOT_CONVERGED:
+        why = (f"Newton did not converge: residual {res:.3g} > tolerance {tol:.3g} (relative, "
+               f"analysis.tolerance) after {max_iter} iterations (analysis.max_iterations). ")
+    elif status == STEP_ACTIVE_SET:
+        why = (f"Newton converged (residual {res:.3g} <= tolerance {tol:.3g}) but segments kept going slack and "
+               f"taut again: the set of slack segments did not settle in {rounds} updates. ")
+    else:
+        why = f"the Newton matrix is singular (residual {res:.3g}, tolerance {tol:.3g}). "
+    return ConvergenceError(head + why + fix, time=t, iterations=max_iter, residual=res)
+
+
 def _initial_angle(par: LayParameters, speed: float, depth: float) -> float:
     """Straight-line laying angle at a relative speed (paper 001 eq. (7)), 90 deg at rest. [rad]"""
     p = par.props[par.type_at(0.0)]
@@ -193,9 +234,14 @@ def _node_coordinates(length: float, seg: float, marks) -> list[float]:
     return s
 
 
-def _end_tensions(c: _Cable, props) -> tuple[float, float, float]:
-    """Tension at the water entry and at the touchdown (mid-segment values moved to the ends by the
-    weight of half a segment), and the entry angle to the horizontal [rad]."""
+def _end_tensions(c: _Cable, props, f_td: float = 0.0) -> tuple[float, float, float]:
+    """Tension at the water entry and at the touchdown, and the entry angle to the horizontal [rad].
+
+    The segment tensions are mid-segment values: the top one is moved to the water entry by the
+    weight of half a segment, the bottom one to the touchdown, at the fraction ``f_td`` of the
+    bottom segment from the touchdown node (see :meth:`_Lay.touchdown`), by the weight of the
+    cable between the two.
+    """
     lo, hi = c.lo, c.hi
     d_top = c.pos[hi] - c.pos[hi - 1]
     ln_top = math.hypot(*d_top)
@@ -204,7 +250,7 @@ def _end_tensions(c: _Cable, props) -> tuple[float, float, float]:
     ln_bot = math.hypot(*d_bot)
     bottom = 0.0
     if c.active[lo]:
-        bottom = max(c.T[lo] - 0.5 * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / ln_bot, 0.0)
+        bottom = max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / ln_bot, 0.0)
     angle = math.atan2(d_top[1], d_top[0])
     return top, bottom, angle
 
@@ -292,34 +338,38 @@ class _Lay:
                 self.rep_state[r] = 1
 
     def step(self, t: float, dt: float, in_water: bool, vc_new: float, kernel_args):
-        """One implicit step; returns ``(ok, iterations, residual, vs_new, x_new)`` (state not committed)."""
+        """One implicit step; returns ``(status, iterations, residual, vs_new, x_new)`` (state not committed)."""
         c, ctl = self.c, self.ctl
         vs_new = ctl.ship_speed(t + dt, dt, in_water)
         x_new = self.x_ship + 0.5 * (ctl.speed + vs_new) * dt
         lo, hi = c.lo, c.hi
         c.L[hi - 1] = self.s_paid + vc_new * dt - c.s[hi - 1]
         props, cur_d, cur_s, rho, tol, max_iter = kernel_args
-        ok, it, res = implicit_step(
+        status, it, res = implicit_step(
             c.pos[lo:hi + 1], c.vel[lo:hi + 1], np.array([x_new, 0.0]), c.L[lo:hi], c.seg_type[lo:hi], props,
             c.point[lo:hi + 1], cur_d, cur_s, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, tol, max_iter,
-            _ROUNDS, c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
-        return ok, it, res, vs_new, x_new
+            _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
+        return status, it, res, vs_new, x_new
 
     def lifts_off(self) -> bool:
         """Whether the bottom segment pulls the touchdown node up harder than the cable weighs on it.
 
         The node carries half of the bottom segment and half of the laid segment behind it; the
-        laid cable takes the horizontal pull.
+        laid cable takes the pull along the seabed. Pull and weight are compared across the seabed
+        (its slope under the bottom segment): a tension along a rising seabed does not lift the
+        cable off it.
         """
         c = self.c
         lo = c.lo
         if len(self.laid["s"]) < 2 or not c.active[lo] or c.hi - lo < 2:
             return False
         d = c.new_pos[lo + 1] - c.new_pos[lo]
-        up = c.T[lo] * d[1] / math.hypot(*d)
+        slope = self.seabed.slope(0.5 * (c.new_pos[lo, 0] + c.new_pos[lo + 1, 0]))
+        cos_b = 1.0 / math.sqrt(1.0 + slope * slope)          # normal to the seabed: (-slope, 1) cos_b
+        up = c.T[lo] * (d[1] - slope * d[0]) * cos_b / math.hypot(*d)
         w = self.par.props[c.seg_type[lo], P_WEIGHT]
         behind = self.laid["s"][-1] - self.laid["s"][-2]
-        return up > 0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]
+        return up > (0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]) * cos_b
 
     def lift(self) -> None:
         """Pick the touchdown node up off the seabed: the node laid before it becomes the touchdown."""
@@ -387,36 +437,99 @@ class _Lay:
             c.hi = hi + 1
 
     def touchdowns(self, t: float) -> None:
-        """Land the lowest free nodes that reached the seabed; keep the others above it."""
+        """Land the cable from the geometry: the first node on the seabed counting from the ship side
+        and every node below it; keep the free nodes above the seabed.
+
+        Nodes between the old touchdown node and that one that are above the seabed span a hollow of
+        the seabed (the tension holds the cable up over a valley corner): they are laid where they
+        are, as the laid cable does not move. Looking only at the lowest free node would leave the
+        touchdown behind for good once the cable bridges a hollow while the rest of it rests on the
+        seabed further on.
+        """
         c, seabed = self.c, self.seabed
-        while c.hi - c.lo > 2:
-            k = c.lo + 1
-            zb = float(seabed.z(c.pos[k, 0]))
-            if c.pos[k, 1] > zb + 1e-9:
-                break
-            c.pos[k, 1] = zb
-            c.vel[k] = 0.0
-            if not c.active[c.lo]:
-                # the cable arrived slack: its new lowest segment starts slack too (a straight, taut
-                # chain between fixed ends has no well-defined tension)
-                c.active[k], c.T[k] = 0, 0.0
-            c.lo = k
-            for key, val in (("x", c.pos[k, 0]), ("z", zb), ("s", c.s[k]), ("time", t)):
-                self.laid[key].append(float(val))
-            if c.rep[k] >= 0:
-                self.rep_state[c.rep[k]] = 2
-                self.rep_landed[c.rep[k]] = c.pos[k]
         for k in range(c.lo + 2, c.hi):      # a seabed rising under the cable holds it up
             zb = float(seabed.z(c.pos[k, 0]))
             if c.pos[k, 1] < zb:
                 c.pos[k, 1] = zb
                 c.vel[k, 1] = max(c.vel[k, 1], 0.0)
+        first = c.lo
+        for k in range(c.hi - 2, c.lo, -1):   # one free node is always kept below the water entry
+            if c.pos[k, 1] <= float(seabed.z(c.pos[k, 0])) + 1e-9:
+                first = k
+                break
+        arrived_slack = not c.active[c.lo]
+        for k in range(c.lo + 1, first + 1):
+            zb = float(seabed.z(c.pos[k, 0]))
+            c.pos[k, 1] = max(c.pos[k, 1], zb) if k < first else zb
+            c.vel[k] = 0.0
+            for key, val in (("x", c.pos[k, 0]), ("z", c.pos[k, 1]), ("s", c.s[k]), ("time", t)):
+                self.laid[key].append(float(val))
+            if c.rep[k] >= 0:
+                self.rep_state[c.rep[k]] = 2
+                self.rep_landed[c.rep[k]] = c.pos[k]
+        if first > c.lo:
+            c.lo = first
+            if arrived_slack:
+                # the cable arrived slack: its new lowest segment starts slack too (a straight, taut
+                # chain between fixed ends has no well-defined tension)
+                c.active[first], c.T[first] = 0, 0.0
+
+    def touchdown(self) -> tuple[float, float, float, float]:
+        """The touchdown point between the touchdown node and the lowest free node.
+
+        The clearance above the seabed of the three lowest free nodes, as a function of the arc
+        length, is extrapolated by the parabola through them to the bottom segment: its zero
+        nearest to the lowest free node (its vertex if it has none) is the touchdown. A cable that
+        reaches the seabed at an angle (zero bottom tension) has a clearance linear in the arc
+        length and one under tension a quadratic one, so both are found between the nodes, not at
+        the last node landed.
+
+        Returns
+        -------
+        x, z : float
+            Touchdown point (on the bottom segment's chord). [m]
+        s : float
+            Its material coordinate. [m]
+        f : float
+            Its fraction of the bottom segment from the touchdown node. [-]
+        """
+        c, seabed = self.c, self.seabed
+        lo = c.lo
+        n_free = min(c.hi - lo - 1, 3)
+        s_lo = c.s[lo]
+        f = 0.0
+        if n_free >= 2:
+            ss = c.s[lo + 1:lo + 1 + n_free] - c.s[lo + 1]
+            hh = c.pos[lo + 1:lo + 1 + n_free, 1] - seabed.z(c.pos[lo + 1:lo + 1 + n_free, 0])
+            u_lo = s_lo - c.s[lo + 1]
+            b1 = (hh[1] - hh[0]) / ss[1]
+            curv = 0.0
+            if n_free == 3:
+                curv = ((hh[2] - hh[0]) / ss[2] - b1) / (ss[2] - ss[1])
+            slope = b1 - curv * ss[1]         # h(u) = h0 + slope u + curv u^2, u = s - s_1
+            u = u_lo
+            if abs(curv) * abs(u_lo) < 1e-9 * max(abs(slope), 1e-300):
+                if slope > 0.0:
+                    u = -hh[0] / slope
+            else:
+                disc = slope * slope - 4.0 * curv * hh[0]
+                if disc < 0.0:
+                    u = -slope / (2.0 * curv)
+                else:
+                    roots = ((-slope + math.sqrt(disc)) / (2.0 * curv), (-slope - math.sqrt(disc)) / (2.0 * curv))
+                    below = [r for r in roots if r <= 0.0]
+                    u = max(below) if below else u_lo
+            u = min(max(u, u_lo), 0.0)
+            f = 1.0 - u / u_lo if u_lo < 0.0 else 0.0
+        p = c.pos[lo] + f * (c.pos[lo + 1] - c.pos[lo])
+        return float(p[0]), float(p[1]), float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
 
     def geometry(self):
         """Touchdown x, depth there and cot of the chord angle, for the payout control."""
         c = self.c
-        chord = c.pos[c.hi] - c.pos[c.lo]
-        return c.pos[c.lo, 0], -c.pos[c.lo, 1], chord[0] / max(chord[1], 1e-9)
+        x_td, z_td, _, _ = self.touchdown()
+        chord = c.pos[c.hi] - (x_td, z_td)
+        return x_td, -z_td, chord[0] / max(chord[1], 1e-9)
 
     def repeater_positions(self) -> np.ndarray:
         c = self.c
@@ -440,7 +553,7 @@ class _Lay:
 
 
 _SERIES = ("ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "bottom_tension", "entry_angle",
-           "touchdown_x", "touchdown_z", "slack", "suspended_length", "laid_length")
+           "touchdown_x", "touchdown_z", "layback", "slack", "suspended_length", "laid_length")
 
 
 def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, duration: float, *,
@@ -489,10 +602,11 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
     out_t, series, snaps, rep_out = [], {k: [] for k in _SERIES}, [], []
 
     def record(t: float) -> None:
-        top, bottom, angle = _end_tensions(c, props)
+        x_td, z_td, s_td, f_td = lay.touchdown()
+        top, bottom, angle = _end_tensions(c, props, f_td)
         out_t.append(t)
-        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), c.pos[c.lo, 0],
-                  c.pos[c.lo, 1], lay.slack(t, slack_window), lay.s_paid - c.s[c.lo], c.s[c.lo] - lay.s_start)
+        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), x_td,
+                  z_td, lay.x_ship - x_td, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
         for k, val in zip(_SERIES, values):
             series[k].append(float(val))
         snaps.append((c.pos[c.lo:c.hi + 1].copy(), (c.T[c.lo:c.hi] * c.active[c.lo:c.hi]).copy()))
@@ -507,7 +621,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
     try:
         while next_out <= n_out:
             t_out = min(next_out * output_interval, duration)
-            _, bottom, _ = _end_tensions(c, props)
+            _, bottom, _ = _end_tensions(c, props, lay.touchdown()[3])
             in_water = bool(np.any(lay.rep_state == 1))
             dt = min(par.segment_length / (steps_per_segment * max(ctl.speed, lay.vc, _MIN_SPEED)), max_time_step,
                      t_out - t)
@@ -518,7 +632,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
             while True:
                 lo, hi = c.lo, c.hi
                 saved = (c.L[hi - 1], c.T[lo:hi].copy(), c.active[lo:hi].copy())
-                ok, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
+                status, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
+                ok = status == STEP_OK
                 iterations += it
                 restore = not ok or (lifted < _MAX_LIFTS and lay.lifts_off())
                 if restore:
@@ -532,12 +647,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
                     lifts += 1
                     continue
                 if attempt == _HALVINGS:
-                    raise ConvergenceError(
-                        f"the laying step from t = {t:.6g} s did not converge: residual {res:.3g} (relative) "
-                        f"after {max_iter} Newton iterations with dt = {dt:.3g} s (halved {_HALVINGS} times). "
-                        "Suggested fix: check that the cable sinks (weight in water > 0) and that the payout "
-                        "is not far below the ship speed of an inextensible cable.",
-                        time=t, iterations=max_iter, residual=res)
+                    raise _step_error(status, t, dt, res, tol, max_iter, rounds=_rounds(hi - lo))
                 dt *= 0.5
                 attempt += 1
                 halvings += 1
