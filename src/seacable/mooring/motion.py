@@ -190,16 +190,47 @@ class PlatformMotion(Model):
 def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     """The motion a CSV describes: a rigid platform when its header names any of surge, sway, heave,
     roll, pitch, yaw (about the origin; [m], [rad]), otherwise offsets x, y, z of every moved point [m].
+
+    The whole table is read and checked here, so that a file that is missing, a folder, unreadable,
+    binary, empty or not a table of numbers is refused before a run starts.
+
+    Raises
+    ------
+    InputError
+        Naming the file and what is wrong with it.
     """
     path = Path(path)
+    fix = "give a CSV text file with a header row, e.g. 'time,x,y,z', and one row of numbers per time"
     if not path.exists():
         raise InputError(f"motion file '{path}' does not exist. Suggested fix: check the path.")
-    with path.open(encoding="utf-8") as fh:
-        header = next((ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#")), "")
+    if path.is_dir():
+        raise InputError(f"motion file '{path}' is a folder, not a file. Suggested fix: {fix}.")
+    try:
+        raw = path.read_bytes()
+    except OSError as err:
+        raise InputError(f"motion file '{path}' cannot be read: {err.strerror or err}. Suggested fix: check its "
+                         "permissions.") from None
+    try:
+        if b"\0" in raw:
+            raise UnicodeDecodeError("utf-8", raw, raw.index(b"\0"), raw.index(b"\0") + 1, "NUL byte")
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        raise InputError(f"motion file '{path}' is not a text (CSV) file: it holds binary data. Suggested fix: "
+                         f"{fix}.") from None
+    header = next((ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")), "")
+    if not header:
+        raise InputError(f"motion file '{path}' is empty (no header row). Suggested fix: {fix}.")
     columns = {c.strip().lower() for c in header.split(",")}
-    if columns & {"surge", "sway", "heave", "roll", "pitch", "yaw"}:
-        return PlatformMotion(file=str(path))
-    return TimeSeriesMotion(file=str(path))
+    platform = bool(columns & {"surge", "sway", "heave", "roll", "pitch", "yaw"})
+    names = ("time", "surge", "sway", "heave", "roll", "pitch", "yaw") if platform else ("time", "x", "y", "z")
+    try:
+        _read_table(path, names)
+    except InputError:
+        raise
+    except Exception as err:  # noqa: BLE001  (numpy's CSV reader: any failure means a bad table)
+        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {err}. Suggested fix: "
+                         f"{fix}.") from None
+    return PlatformMotion(file=str(path)) if platform else TimeSeriesMotion(file=str(path))
 
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
