@@ -349,7 +349,7 @@ _NUMERIC = {
     "duration": ("--duration", "s", None, "give the simulated time in seconds, e.g. --duration 100"),
     "output_interval": ("--output-interval", "s", None,
                         "give the time between stored states in seconds, e.g. --output-interval 0.5"),
-    "fps": ("--fps", "1/s", 1, "give the frame rate, e.g. --fps 10"),
+    "fps": ("--fps", "frames/s", 1, "give the frame rate, e.g. --fps 10"),
     "max_frames": ("--max-frames", "", 1, "give the largest number of frames, e.g. --max-frames 200"),
     "workers": ("--workers", "", 1, "give the number of worker processes, e.g. --workers 4, or leave it out"),
     "max_steps": ("--max-steps", "", None, "give the largest number of time steps, e.g. --max-steps 1e9"),

@@ -177,12 +177,12 @@ def check_output_file(path: str | Path, option: str = "-o", suffixes=_NETCDF_SUF
         be written to.
     """
     path = Path(path)
-    if path.suffix.lower() not in suffixes:
-        raise InputError(f"{option} {path}: the file must end in {' or '.join(suffixes)}, got "
-                         f"'{path.suffix or 'no suffix'}'. Suggested fix: {option} {path.with_suffix(suffixes[0])}")
     if path.is_dir():
         raise InputError(f"{option} {path}: that is a folder, expected a file name. Suggested fix: "
                          f"{option} {path / ('result' + suffixes[0])}")
+    if path.suffix.lower() not in suffixes:
+        raise InputError(f"{option} {path}: the file must end in {' or '.join(suffixes)}, got "
+                         f"'{path.suffix or 'no suffix'}'. Suggested fix: {option} {path.with_suffix(suffixes[0])}")
     check_output_folder(path.parent, option, what=f"{option} {path}")
     return path
 

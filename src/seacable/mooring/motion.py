@@ -210,13 +210,14 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     except OSError as err:
         raise InputError(f"motion file '{path}' cannot be read: {err.strerror or err}. Suggested fix: check its "
                          "permissions.") from None
-    try:
-        if b"\0" in raw:
-            raise UnicodeDecodeError("utf-8", raw, raw.index(b"\0"), raw.index(b"\0") + 1, "NUL byte")
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError:
+    if b"\0" in raw:
         raise InputError(f"motion file '{path}' is not a text (CSV) file: it holds binary data. Suggested fix: "
-                         f"{fix}.") from None
+                         f"{fix}.")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise InputError(f"motion file '{path}' is not UTF-8 text: byte {err.start} cannot be read. Suggested "
+                         f"fix: save it as UTF-8 (plain ASCII numbers and column names).") from None
     header = next((ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")), "")
     if not header:
         raise InputError(f"motion file '{path}' is empty (no header row). Suggested fix: {fix}.")
@@ -225,11 +226,11 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     names = ("time", "surge", "sway", "heave", "roll", "pitch", "yaw") if platform else ("time", "x", "y", "z")
     try:
         _read_table(path, names)
-    except InputError:
-        raise
+    except InputError as err:  # on one line (numpy's reader lists the bad rows on several)
+        raise InputError(" ".join(str(err).split())) from None
     except Exception as err:  # noqa: BLE001  (numpy's CSV reader: any failure means a bad table)
-        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {err}. Suggested fix: "
-                         f"{fix}.") from None
+        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {' '.join(str(err).split())}. "
+                         f"Suggested fix: {fix}.") from None
     return PlatformMotion(file=str(path)) if platform else TimeSeriesMotion(file=str(path))
 
 
