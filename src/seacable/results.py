@@ -27,7 +27,7 @@ __all__ = ["ANALYSIS_VARIABLES", "var", "make_dataset", "write_netcdf", "read_ne
 ANALYSIS_VARIABLES: dict[str, tuple[str, ...]] = {
     "static": ("s", "x", "z", "tension", "fairlead_tension", "anchor_tension"),
     "pushover": ("offset", "H_fairlead", "fairlead_tension", "stiffness_horizontal"),
-    "modal": ("mode", "plane", "period", "wave_period", "s", "x", "z", "shape"),
+    "modal": ("mode", "plane", "period", "wave_period", "s", "x", "z", "shape", "direction"),
     "towed_steady": ("s", "x", "z", "tension", "relative_speed", "top_tension"),
     "laying_theory": ("ship_speed", "angle", "angle_small", "layback"),
     "vertical_modes": ("solution", "mode", "period"),
