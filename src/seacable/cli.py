@@ -254,8 +254,11 @@ def _validate_case(name: str) -> list[str]:
 
     case = load_case(name)
     check(case)
-    print(f"{name}: valid ({case.analysis.type} analysis, {len(case.line.segments)} segment(s), "
-          f"line length {case.line.length:g} m)")
+    # a case file, or a MoorDyn file (a case with its own network of lines, no single 'line')
+    analysis = getattr(getattr(case, "analysis", None), "type", None) or getattr(case, "analysis_type", "?")
+    line = getattr(case, "line", None)
+    detail = f", {len(line.segments)} segment(s), line length {line.length:g} m" if line is not None else ""
+    print(f"{name}: valid ({analysis} analysis{detail})")
     return []
 
 
