@@ -77,7 +77,7 @@ def _run_moordyn(args):
     output_interval = 0.5 if args.output_interval is None else args.output_interval
     ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=time_step,
                           output_interval=output_interval, progress=_Progress())
-    return ds, path.stem
+    return ds
 
 
 def _result_path(args, name: str) -> Path:
@@ -104,7 +104,7 @@ def _cmd_run(args) -> int:
     if is_moordyn_file(args.case):
         out = _result_path(args, Path(args.case).stem)
         _check_run_paths(args, out)
-        ds, name = _run_moordyn(args)
+        ds = _run_moordyn(args)
     else:
         given = [opt for opt, value in (("--duration", args.duration), ("--motion", args.motion),
                                         ("--time-step", args.time_step),
@@ -195,9 +195,8 @@ def _print_summary(summary) -> None:
 
 
 def _cmd_sweep(args) -> int:
-    from .sweeps import load_sweep, sweep
-
     from .results import check_output_folder
+    from .sweeps import load_sweep, sweep
     from .sweeps.engine import check_scheduler
 
     check_scheduler(args.scheduler)
@@ -283,9 +282,7 @@ def _cmd_validate(args) -> int:
 
 def _cmd_plot(args) -> int:
     from .plot import plot_result
-    from .results import read_netcdf
-
-    from .results import check_output_folder, check_result
+    from .results import check_output_folder, check_result, read_netcdf
 
     path = Path(args.result)
     ds = read_netcdf(path)
@@ -298,8 +295,7 @@ def _cmd_plot(args) -> int:
 
 
 def _cmd_animate(args) -> int:
-    from .plot import animate_laying
-    from .plot import animate_towline
+    from .plot import animate_laying, animate_towline
     from .results import check_output_file, check_result, read_netcdf
 
     path = Path(args.result)
@@ -356,8 +352,8 @@ _NUMERIC = {
     "max_frames": ("--max-frames", "", 1, "give the largest number of frames, e.g. --max-frames 200"),
     "workers": ("--workers", "", 1, "give the number of worker processes, e.g. --workers 4, or leave it out"),
     "max_steps": ("--max-steps", "", None, "give the largest number of time steps, e.g. --max-steps 1e9"),
-    "max_memory": ("--max-memory", "bytes", None, "give the largest result memory in bytes, e.g. "
-                                                  "--max-memory 16e9"),
+    "max_memory": ("--max-memory", "bytes", None,
+                   "give the largest result memory in bytes, e.g. --max-memory 16e9"),
     "max_cases": ("--max-cases", "", 1, "give the largest number of sweep cases, e.g. --max-cases 1e6"),
 }
 _LIMITS = {"max_steps": "SEACABLE_MAX_STEPS", "max_memory": "SEACABLE_MAX_MEMORY", "max_cases": "SEACABLE_MAX_CASES"}

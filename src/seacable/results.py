@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import json
 import tempfile
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
 import numpy as np
 import xarray as xr
@@ -18,8 +19,8 @@ import xarray as xr
 from ._version import __version__
 from .errors import InputError
 
-__all__ = ["ANALYSIS_VARIABLES", "var", "make_dataset", "write_netcdf", "read_netcdf", "check_schema",
-           "check_result"]
+__all__ = ["ANALYSIS_VARIABLES", "check_output_file", "check_output_folder", "check_result", "check_schema",
+           "make_dataset", "read_netcdf", "var", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
 #: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file

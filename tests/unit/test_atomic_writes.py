@@ -251,7 +251,7 @@ def test_sigterm_keeps_what_was_computed(tmp_path):
         seen += proc.stderr.read() or b""
         time.sleep(0.05)
     proc.send_signal(signal.SIGTERM)
-    stdout, stderr = proc.communicate(timeout=120)
+    _, stderr = proc.communicate(timeout=120)
     stderr = seen + (stderr or b"")
     assert proc.returncode == 130, stderr
     assert b"Traceback" not in stderr and b"interrupted" in stderr

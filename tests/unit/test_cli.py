@@ -1,14 +1,20 @@
 """The command line: exit codes, one clear message on bad input, files written."""
 
+import os
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 import xarray as xr
+import yaml
 
 import seacable as sc
 from seacable.cli import main
+from seacable.results import ANALYSIS_VARIABLES
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -70,7 +76,8 @@ def test_user_errors_exit_2_with_one_message(tmp_path, capsys, argv, expected):
 def test_console_script_exits_non_zero_without_traceback(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("line: {line_type: x, length: 1}\nanalysis: {type: static}\n")
-    proc = subprocess.run([sys.executable, "-m", "seacable", "run", str(bad)], capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, "-m", "seacable", "run", str(bad)], check=False, capture_output=True,
+                          text=True)
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr and "seacable: error:" in proc.stderr
 
@@ -84,15 +91,6 @@ def test_schema_is_json(capsys):
 
 
 # --- issue 17: one validation path, options, exit statuses -------------------------------------
-
-import os
-import signal
-import time
-
-import numpy as np
-import yaml
-
-from seacable.results import ANALYSIS_VARIABLES
 
 
 def _env() -> dict:
@@ -216,7 +214,7 @@ def test_bad_scheduler_fails_fast_and_clean(tmp_path):
     for address in ("not a scheduler", "tcp://127.0.0.1:9"):
         t0 = time.perf_counter()
         proc = subprocess.run([sys.executable, "-m", "seacable", "sweep", sweep, "-o", str(tmp_path / "out"),
-                               "--scheduler", address], capture_output=True, text=True, env=_env(), timeout=120)
+                               "--scheduler", address], check=False, capture_output=True, text=True, env=_env(), timeout=120)
         elapsed = time.perf_counter() - t0
         assert proc.returncode == 2, proc.stderr
         assert "--scheduler" in proc.stderr or "cannot reach" in proc.stderr
@@ -236,7 +234,8 @@ def test_console_script_exit_statuses(tmp_path, argv, status):
     short = tmp_path / "short.yaml"
     short.write_text((EXAMPLES / "oc3_hywind_static.yaml").read_text().replace("length: 902.2", "length: 400.0"))
     argv = [a.format(short=short, static=EXAMPLES / "oc3_hywind_static.yaml") for a in argv]
-    proc = subprocess.run([sys.executable, "-m", "seacable", *argv], capture_output=True, text=True, env=_env(),
+    proc = subprocess.run([sys.executable, "-m", "seacable", *argv], check=False, capture_output=True, text=True,
+                          env=_env(),
                           cwd=tmp_path, timeout=120)
     assert proc.returncode == status, proc.stderr
     assert proc.stderr.startswith("seacable: error: ") and "Traceback" not in proc.stderr
