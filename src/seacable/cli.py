@@ -300,7 +300,9 @@ def _cmd_animate(args) -> int:
 
     path = Path(args.result)
     ds = read_netcdf(path)
-    analysis = check_result(ds, f"result file '{path}'")
+    analysis = ds.attrs.get("analysis")
+    if analysis in ("laying_dynamic", "towline_dynamic"):  # others: animate_laying says what it animates
+        check_result(ds, f"result file '{path}'")
     if analysis == "towline_dynamic":
         animate, tag = animate_towline, "tow"
     else:  # animate_laying names the analyses it accepts in its error

@@ -74,9 +74,11 @@ def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     from ..errors import InputError
     from ..results import check_result
 
-    analysis = check_result(ds)
+    analysis = ds.attrs.get("analysis")
     if analysis not in FIGURES:
-        raise InputError(f"no standard figures for analysis '{analysis}'. Known: {', '.join(FIGURES)}.")
+        raise InputError(f"no standard figures for analysis '{analysis}'. Known: {', '.join(FIGURES)}. "
+                         "Suggested fix: give a result written by 'seacable run' or 'seacable sweep'.")
+    check_result(ds)  # every variable the figures draw, named if missing
     outdir = Path(outdir)
     try:
         outdir.mkdir(parents=True, exist_ok=True)
