@@ -22,7 +22,7 @@ import warnings
 from pathlib import Path
 
 from ._version import __version__
-from .errors import SeacableError, SeacableWarning
+from .errors import InputError, SeacableError, SeacableWarning
 
 __all__ = ["main"]
 
@@ -62,7 +62,6 @@ class _Progress:
 
 def _run_moordyn(args):
     """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
-    from .errors import InputError
     from .mooring.moordyn import run_moordyn_file
     from .mooring.motion import motion_from_csv
 
@@ -95,7 +94,6 @@ def _check_run_paths(args, out: Path) -> None:
 
 def _cmd_run(args) -> int:
     from ._atomic import deferred_interrupts
-    from .errors import InputError
     from .io import load_case
     from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
@@ -301,11 +299,14 @@ def _cmd_animate(args) -> int:
     path = Path(args.result)
     ds = read_netcdf(path)
     analysis = ds.attrs.get("analysis")
-    if analysis in ("laying_dynamic", "towline_dynamic"):  # others: animate_laying says what it animates
-        check_result(ds, f"result file '{path}'")
+    if analysis not in ("laying_dynamic", "towline_dynamic"):
+        raise InputError(f"result file '{path}': animate needs a 'laying_dynamic' result or a 'towline_dynamic' "
+                         f"result, got analysis '{analysis}'. Suggested fix: 'seacable plot {path}' makes the "
+                         "figures of this result.")
+    check_result(ds, f"result file '{path}'")
     if analysis == "towline_dynamic":
         animate, tag = animate_towline, "tow"
-    else:  # animate_laying names the analyses it accepts in its error
+    else:
         animate, tag = animate_laying, "lay"
     out = Path(args.output) if args.output else path.parent / f"{path.stem}_{tag}.gif"
     check_output_file(out, "-o", (".gif", ".mp4"))

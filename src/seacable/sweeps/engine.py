@@ -369,7 +369,7 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         _reachable(scheduler)   # before anything is written
     cases = sweep_.cases()
     store = _Store(Path(outdir), sweep_.name)
-    (store.root / "sweep.yaml").write_text(sweep_.text, encoding="utf-8")
+    atomic_write(store.root / "sweep.yaml", lambda tmp: tmp.write_text(sweep_.text, encoding="utf-8"))
     t0 = time.perf_counter()
     records: dict[int, dict] = {}
     reused: set[int] = set()
