@@ -99,6 +99,11 @@ def _cmd_run(args) -> int:
     from .results import write_netcdf
     from .simulate import run
 
+    from .sweeps import is_sweep_file
+
+    if is_sweep_file(args.case):
+        raise InputError(f"{args.case} is a sweep file ('base' and 'grid' or 'table'), not a case. Suggested fix: "
+                         f"seacable sweep {args.case}")
     if is_moordyn_file(args.case):
         out = _result_path(args, Path(args.case).stem)
         _check_run_paths(args, out)

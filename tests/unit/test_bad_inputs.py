@@ -77,13 +77,13 @@ def _example(name: str) -> dict:
 #: towline, mooring) -- file name -> the command that checks it
 CASE_BASES = {
     "oc3_hywind_static.yaml": "validate",         # static
-    "oc3_hywind_pushover.yaml": "validate",       # pushover
+    "oc3_hywind_pushover.yaml": "run",            # pushover
     "oc3_hywind_modes.yaml": "validate",          # modal
-    "paper000_steady_statics.yaml": "validate",   # towed_steady
+    "paper000_steady_statics.yaml": "run",        # towed_steady
     "paper002_vertical_cable.yaml": "validate",   # vertical_modes
-    "paper000_turn.yaml": "validate",             # towed_dynamic
+    "paper000_turn.yaml": "run",                  # towed_dynamic
     "paper001_lay_2ms_50m.yaml": "validate",      # laying_dynamic
-    "paper003_zigzag.yaml": "validate",           # towline_dynamic
+    "paper003_zigzag.yaml": "run",                # towline_dynamic
 }
 
 #: numeric keys that must be > 0 wherever they appear (a zero or negative value is meaningless)
@@ -206,6 +206,8 @@ def _option_corpus() -> list[Bad]:
     out.append(Bad("schema-unknown-option", ["schema", "--frobnicate"], ["--frobnicate"]))
     out.append(Bad("unknown-command", ["frobnicate"], ["frobnicate"]))
     out.append(Bad("run-no-case", ["run"], ["case"]))
+    out.append(Bad("run-a-sweep-file", ["run", "{sweep}"], ["seacable sweep"]))
+    out.append(Bad("sweep-a-case-file", ["sweep", STATIC], ["sweep file"]))
     for option, value in (("--duration", "10"), ("--time-step", "0.1"), ("--output-interval", "1"),
                           ("--motion", "m.csv")):
         out.append(Bad(f"run-yaml{option}", ["run", STATIC, option, value, "--no-plots"], [option]))

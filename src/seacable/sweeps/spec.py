@@ -425,6 +425,9 @@ def load_sweep(path: str | Path) -> Sweep:
     data, text = read_yaml(path, "sweep file")
     if not isinstance(data, dict):
         raise CaseFileError(f"{path}: a sweep file must be a mapping with 'base' and 'grid' or 'table'.")
+    if "base" not in data and ("analysis" in data or "line" in data):
+        raise CaseFileError(f"{path} is a case file, not a sweep file ('base' and 'grid' or 'table'). Suggested "
+                            f"fix: 'seacable run {path}', or a sweep file with 'base: {path.name}' and a 'grid'.")
     try:
         spec = SweepFile.parse(data)
     except InputError as err:
