@@ -325,3 +325,41 @@ def test_grid_values_must_be_lists():
         Sweep(BASE, grid={"analysis.ship.speed": 2.0})
     with pytest.raises(InputError, match="the table's columns have different lengths"):
         Sweep(BASE, table={"analysis.ship.speed": [1.0, 2.0], "analysis.duration": [10.0]})
+
+
+# --- sizes and scheduler addresses, checked before anything runs (issue 17) ---------------------
+
+@pytest.mark.parametrize("spec", [{"start": 0.0, "stop": 1.0, "step": 0.1}, {"start": 0.5, "stop": 5.0, "step": 0.25},
+                                  {"start": 1.0, "stop": 0.0, "step": -0.3}, {"start": 0.0, "stop": 1.0, "num": 7},
+                                  {"start": 0.0, "stop": 0.0, "step": 1.0}, {"start": 0.1, "stop": 0.7, "step": 0.1}])
+def test_range_is_counted_as_listed(spec):
+    """The case count (checked against the limit before the grid is expanded) is the number of values."""
+    from seacable.sweeps.spec import Range, _count
+
+    r = Range.parse(spec)
+    assert _count(r) == len(r.values())
+
+
+def test_grid_over_the_case_limit_is_refused_before_expansion(monkeypatch):
+    monkeypatch.setenv("SEACABLE_MAX_CASES", "11")
+    with pytest.raises(InputError, match=r"\(6 x 2\) has 12 cases, more than the limit of 11"):
+        grid_sweep()
+    monkeypatch.setenv("SEACABLE_MAX_CASES", "12")
+    assert len(grid_sweep()) == 12
+
+
+@pytest.mark.parametrize("address", [None, "synchronous", "tcp://10.0.0.5:8786", "localhost:8786",
+                                     "tls://scheduler.example.org:8786", "tcp://[::1]:8786", "ws://host:80/"])
+def test_scheduler_address_forms_accepted(address):
+    from seacable.sweeps.engine import check_scheduler
+
+    check_scheduler(address)
+
+
+@pytest.mark.parametrize("address", ["not a scheduler", "tcp://host", "host", "http://host:8786", "tcp://:8786",
+                                     "host:0", "host:70000", "", 8786])
+def test_scheduler_address_forms_refused(address):
+    from seacable.sweeps.engine import check_scheduler
+
+    with pytest.raises(InputError, match="--scheduler"):
+        check_scheduler(address)
