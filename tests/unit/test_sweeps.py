@@ -363,3 +363,28 @@ def test_scheduler_address_forms_refused(address):
 
     with pytest.raises(InputError, match="--scheduler"):
         check_scheduler(address)
+
+
+def test_sigterm_stops_a_sweep_like_ctrl_c(tmp_path):
+    """SIGTERM (what a batch scheduler sends) stops a sweep as Ctrl-C does: the cases done are kept,
+    the summary is written and says so, exit 130."""
+    spec = write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0 + 0.1 * i for i in range(40)]})
+    out = tmp_path / "out"
+    src = str(Path(sc.__file__).resolve().parents[1])
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([src, os.environ.get("PYTHONPATH", "")])}
+    proc = subprocess.Popen([sys.executable, "-m", "seacable", "sweep", str(spec), "-o", str(out), "--scheduler",
+                             "synchronous", "--no-plots"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    deadline = time.monotonic() + 300
+    while len(list((out / "cases").glob("[0-9]*.json"))) < 2:
+        assert proc.poll() is None, proc.stderr.read().decode()
+        assert time.monotonic() < deadline, "the sweep did not get going"
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=300)
+    assert proc.returncode == 130, err.decode()
+    assert b"Traceback" not in err and b"interrupted" in err
+    summary = sc.read_netcdf(out / "summary.nc")
+    assert summary.attrs["interrupted"] == 1
+    done = int((summary.status.values == "done").sum())
+    assert 2 <= done < 40 and summary.attrs["not_run"] == 40 - done - summary.attrs["failed"]
+    assert not list((out / "cases").glob(".*"))
