@@ -260,3 +260,16 @@ def test_schema_is_what_the_figures_need(analysis, tmp_path):
     only = ds[[n for n in names if n in ds.data_vars]]
     only = only.drop_vars([c for c in only.coords if c not in names])
     assert plot_result(only, tmp_path, prefix="p")
+
+
+@pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() == 0,
+                    reason="root writes into read-only folders (the corpus tests /proc instead)")
+def test_read_only_folder_is_refused_before_the_run(tmp_path, capsys):
+    folder = tmp_path / "ro"
+    folder.mkdir()
+    folder.chmod(0o500)
+    try:
+        assert main(["run", str(EXAMPLES / "oc3_hywind_static.yaml"), "-o", str(folder / "r.nc")]) == 2
+        assert "cannot write in the folder" in capsys.readouterr().err
+    finally:
+        folder.chmod(0o700)
