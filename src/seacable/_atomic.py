@@ -74,7 +74,9 @@ def deferred_interrupts() -> Iterator[None]:
     """Hold back SIGINT (Ctrl-C) and SIGTERM during the block; raise KeyboardInterrupt after it if one came.
 
     Used around the writing of a result, so that an interrupt that arrives while a long computation's
-    result is being written does not lose it. Outside the main thread (where signal handlers cannot be
+    result is being written does not lose it, and never stops the NetCDF library midway (which can
+    leave its lock held and hang the next write). Nested blocks pass a held signal to the outermost,
+    which raises once its block is done. Outside the main thread (where signal handlers cannot be
     set) the block runs unprotected.
     """
     if threading.current_thread() is not threading.main_thread():
@@ -85,6 +87,7 @@ def deferred_interrupts() -> Iterator[None]:
     def hold(signum, frame):
         caught.append(signum)
 
+    hold.seacable_hold = True
     previous = {}
     for sig in (signal.SIGINT, signal.SIGTERM):
         previous[sig] = signal.signal(sig, hold)
@@ -94,4 +97,8 @@ def deferred_interrupts() -> Iterator[None]:
         for sig, handler in previous.items():  # None: a handler not set from Python
             signal.signal(sig, signal.SIG_DFL if handler is None else handler)
     if caught:
-        raise KeyboardInterrupt
+        outer = previous[caught[0]]
+        if getattr(outer, "seacable_hold", False):
+            outer(caught[0], None)   # an enclosing block raises when it is done
+        else:
+            raise KeyboardInterrupt

@@ -229,7 +229,8 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
 
     The file is written under a temporary name in the same folder and renamed into place
     (:func:`seacable._atomic.atomic_path`), so that a failed or interrupted write leaves the file
-    that was there before intact.
+    that was there before intact. Ctrl-C or SIGTERM during the write takes effect once the file is
+    written (:func:`seacable._atomic.deferred_interrupts`).
 
     Raises
     ------
@@ -237,7 +238,7 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
         If the suffix is not ``.nc``, or the file cannot be written (a folder of that name, a
         read-only folder, a full disk).
     """
-    from ._atomic import atomic_path
+    from ._atomic import atomic_path, deferred_interrupts
 
     path = Path(path)
     if path.suffix.lower() not in _NETCDF_SUFFIXES:
@@ -247,8 +248,8 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     _make_folder(path.parent, f"the result '{path.name}'")
     encoding = {name: {"zlib": True, "complevel": 4} for name, v in ds.data_vars.items()
                 if v.dtype.kind in "fiu" and v.ndim > 0}
-    try:
-        with atomic_path(path) as tmp:
+    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
+        with deferred_interrupts(), atomic_path(path) as tmp:
             ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     except OSError as err:
         raise InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk "

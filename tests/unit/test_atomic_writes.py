@@ -263,3 +263,14 @@ def test_sigterm_keeps_what_was_computed(tmp_path):
     assert int(ds.attrs["interrupted"]) == 1
     assert 0.0 < float(ds.time[-1]) < duration
     assert _leftovers(tmp_path) == []
+
+
+def test_nested_deferrals_raise_once_after_the_outermost():
+    steps = []
+    with pytest.raises(KeyboardInterrupt), deferred_interrupts():
+        with deferred_interrupts():
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(0.05)
+            steps.append("inner done")
+        steps.append("outer done")   # the inner block does not interrupt the outer one
+    assert steps == ["inner done", "outer done"]

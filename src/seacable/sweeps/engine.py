@@ -307,11 +307,12 @@ class _Store:
                   "wall_time": outcome["wall_time"], "extremes": outcome["extremes"],
                   "retry": bool(outcome.get("retry", False)), "seacable_version": __version__,
                   "finished": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")}
-        if outcome.get("result") is not None:
-            target = self.target(sc)
-            write_result(outcome["result"], self.cases, sc.stem, target.attrs)
         text = json.dumps(record, indent=1, default=str)
-        atomic_write(self.record_path(sc), lambda tmp: tmp.write_text(text, encoding="utf-8"))
+        with deferred_interrupts():   # the result and its record, both or neither
+            if outcome.get("result") is not None:
+                target = self.target(sc)
+                write_result(outcome["result"], self.cases, sc.stem, target.attrs)
+            atomic_write(self.record_path(sc), lambda tmp: tmp.write_text(text, encoding="utf-8"))
         return record
 
 
