@@ -19,7 +19,12 @@ import uuid
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-__all__ = ["PARTIAL", "atomic_path", "atomic_write", "deferred_interrupts"]
+__all__ = ["PARTIAL", "atomic_path", "atomic_write", "deferred_interrupts", "interrupt_requested"]
+
+interrupt_requested = threading.Event()
+"""Set by the command line's SIGINT and SIGTERM handler: the user asked to stop. A case that fails
+after it was set failed because of the interrupt (a library may turn the KeyboardInterrupt raised
+inside its callback into another error), so a sweep stops instead of recording it as failed."""
 
 PARTIAL = ".partial"
 """Infix of the temporary names: ``.NAME.<random>.partial.SUFFIX`` (hidden, same suffix as NAME)."""
@@ -97,6 +102,7 @@ def deferred_interrupts() -> Iterator[None]:
         for sig, handler in previous.items():  # None: a handler not set from Python
             signal.signal(sig, signal.SIG_DFL if handler is None else handler)
     if caught:
+        interrupt_requested.set()
         outer = previous[caught[0]]
         if getattr(outer, "seacable_hold", False):
             outer(caught[0], None)   # an enclosing block raises when it is done

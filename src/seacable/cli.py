@@ -476,20 +476,34 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _terminate(signum, frame):
-    """SIGTERM (what batch schedulers send before killing a job): stop as Ctrl-C does, keeping the result."""
+    """Ctrl-C, and SIGTERM (what batch schedulers send before killing a job): stop, keeping the result.
+
+    Raises KeyboardInterrupt, which the time loops catch (they return what they computed) and
+    records the request (:data:`seacable._atomic.interrupt_requested`), so that a case whose
+    interrupt a library turned into another error is not taken for a failed case.
+    """
+    from ._atomic import interrupt_requested
+
+    interrupt_requested.set()
     raise KeyboardInterrupt
 
 
 @contextlib.contextmanager
-def _sigterm_as_interrupt():
+def _interrupts():
+    """SIGINT and SIGTERM both stop the command as Ctrl-C does (main thread only); restored after."""
+    from ._atomic import interrupt_requested
+
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = signal.signal(signal.SIGTERM, _terminate)
+    interrupt_requested.clear()
+    previous = {sig: signal.signal(sig, _terminate) for sig in (signal.SIGINT, signal.SIGTERM)}
     try:
         yield
     finally:
-        signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)
+        for sig, handler in previous.items():
+            signal.signal(sig, signal.SIG_DFL if handler is None else handler)
+        interrupt_requested.clear()
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -508,7 +522,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return EXIT_USER_ERROR
-    with warnings.catch_warnings(), _sigterm_as_interrupt():
+    with warnings.catch_warnings(), _interrupts():
         # the command line shows warnings (once each), whatever the filters of the caller
         warnings.simplefilter("default", SeacableWarning)
         warnings.showwarning = _show_warning

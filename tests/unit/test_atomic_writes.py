@@ -23,7 +23,7 @@ import xarray as xr
 import yaml
 
 import seacable as sc
-from seacable._atomic import atomic_path, atomic_write, deferred_interrupts
+from seacable._atomic import atomic_path, atomic_write, deferred_interrupts, interrupt_requested
 from seacable.cli import main
 from seacable.errors import InputError
 from seacable.results import make_dataset, read_netcdf, var, write_netcdf
@@ -154,7 +154,8 @@ def test_deferred_interrupts_finish_the_block_then_interrupt(sig):
         os.kill(os.getpid(), sig)
         time.sleep(0.05)
         done.append(1)
-    assert done == [1]
+    assert done == [1] and interrupt_requested.is_set()
+    interrupt_requested.clear()
     # handlers restored: SIGINT raises KeyboardInterrupt again at once
     with pytest.raises(KeyboardInterrupt):
         os.kill(os.getpid(), signal.SIGINT)

@@ -389,3 +389,22 @@ def test_sigterm_stops_a_sweep_like_ctrl_c(tmp_path):
     assert summary.attrs["done"] >= 1 and 2 <= finished < 40, summary.error.values
     assert summary.attrs["not_run"] == 40 - finished
     assert not list((out / "cases").glob(".*"))
+
+
+def test_a_case_failing_after_an_interrupt_stops_the_sweep(monkeypatch):
+    """A library may turn the KeyboardInterrupt raised in its callback into another error: after the
+    user asked to stop, a failed case is the interrupt, not the case's failure."""
+    from seacable import _atomic
+
+    def broken(case, progress=None):
+        raise sc.errors.ConvergenceError("did not converge (interrupted inside a solver)")
+
+    monkeypatch.setattr("seacable.simulate.run", broken)
+    case = grid_sweep().cases()[0].case
+    assert run_case(case)["status"] == "failed"
+    _atomic.interrupt_requested.set()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            run_case(case)
+    finally:
+        _atomic.interrupt_requested.clear()

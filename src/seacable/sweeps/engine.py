@@ -34,7 +34,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .._atomic import PARTIAL, atomic_write, deferred_interrupts
+from .._atomic import PARTIAL, atomic_write, deferred_interrupts, interrupt_requested
 from .._version import __version__
 from ..errors import InputError, SeacableError, SeacableWarning
 from ..extremes import case_extremes
@@ -133,6 +133,8 @@ def run_case(case, target: ResultTarget | None = None) -> dict:
                 raise KeyboardInterrupt
             out.update(status="done", result=ds, extremes={
                 k: (float(v.values), v.attrs["units"], v.attrs["long_name"]) for k, v in extremes.items()})
+    if out["status"] == "failed" and interrupt_requested.is_set():
+        raise KeyboardInterrupt   # failed because it was interrupted: not the case's failure
     out["warnings"] = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, SeacableWarning)))
     if out["result"] is not None and target is not None and target.visible():
         write_result(out.pop("result"), Path(target.folder), target.stem, target.attrs)
