@@ -98,7 +98,6 @@ def _cmd_run(args) -> int:
     from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
     from .simulate import run
-
     from .sweeps import is_sweep_file
 
     if is_sweep_file(args.case):
