@@ -1,24 +1,34 @@
 """The ``seacable`` command line: run, sweep, validate, plot, animate, schema.
 
-User errors (bad files, bad values, no solution, no convergence) print one
-clear message and exit with status 2; an interrupted run exits with 130. A sweep
-in which some cases failed exits with 1 (the others ran; the summary says why).
+User errors (bad files, bad values or options, paths that cannot be written, no
+solution, no convergence) print one clear message and exit with status 2, before
+anything is computed whenever they can be known then. A bug (an unexpected
+exception) prints a short request to report it and exits with 3 (``--debug``
+shows its traceback). A run interrupted by Ctrl-C or SIGTERM (what batch
+schedulers send) writes what it computed and exits with 130. A sweep in which
+some cases failed exits with 1 (the others ran; the summary says why).
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import math
+import os
+import signal
 import sys
+import threading
 import warnings
 from pathlib import Path
 
 from ._version import __version__
-from .errors import SeacableError, SeacableWarning
+from .errors import InputError, SeacableError, SeacableWarning
 
 __all__ = ["main"]
 
 EXIT_CASES_FAILED = 1
 EXIT_USER_ERROR = 2
+EXIT_BUG = 3
 EXIT_INTERRUPTED = 130
 
 
@@ -52,7 +62,6 @@ class _Progress:
 
 def _run_moordyn(args):
     """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
-    from .errors import InputError
     from .mooring.moordyn import run_moordyn_file
     from .mooring.motion import motion_from_csv
 
@@ -63,38 +72,73 @@ def _run_moordyn(args):
             raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
                              "e.g. '--duration 100'.")
         motion = motion_from_csv(args.motion)
-    ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=args.time_step,
-                          output_interval=args.output_interval, progress=_Progress())
-    return ds, path.stem
+    time_step = 0.1 if args.time_step is None else args.time_step
+    output_interval = 0.5 if args.output_interval is None else args.output_interval
+    ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=time_step,
+                          output_interval=output_interval, progress=_Progress())
+    return ds
+
+
+def _result_path(args, name: str) -> Path:
+    return Path(args.output) if args.output else Path(f"{name}.nc")
+
+
+def _check_run_paths(args, out: Path) -> None:
+    """Refuse, before a run starts, an output file or plot folder that cannot be written."""
+    from .results import check_output_file, check_output_folder
+
+    check_output_file(out, "-o" if args.output else "the default result file (-o)")
+    if not args.no_plots and args.plot_dir is not None:
+        check_output_folder(args.plot_dir, "--plot-dir")
 
 
 def _cmd_run(args) -> int:
+    from ._atomic import deferred_interrupts
     from .io import load_case
     from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
     from .simulate import run
+    from .sweeps import is_sweep_file
 
+    if is_sweep_file(args.case):
+        raise InputError(f"{args.case} is a sweep file ('base' and 'grid' or 'table'), not a case. Suggested fix: "
+                         f"seacable sweep {args.case}")
     if is_moordyn_file(args.case):
-        ds, name = _run_moordyn(args)
+        out = _result_path(args, Path(args.case).stem)
+        _check_run_paths(args, out)
+        ds = _run_moordyn(args)
     else:
-        if args.duration is not None or args.motion is not None:
-            from .errors import InputError
-
-            raise InputError("--duration and --motion apply to MoorDyn input files; a YAML case gives them "
-                             "in its 'analysis'.")
+        given = [opt for opt, value in (("--duration", args.duration), ("--motion", args.motion),
+                                        ("--time-step", args.time_step),
+                                        ("--output-interval", args.output_interval)) if value is not None]
+        if given:
+            raise InputError(f"{', '.join(given)} apply to MoorDyn input files; a YAML case gives them in its "
+                             "'analysis' (duration, motion, time_step, output_interval). Suggested fix: leave "
+                             f"out {', '.join(given)} and set them in {args.case}.")
         case = load_case(args.case)
-        name = case.name
+        out = _result_path(args, case.name)
+        _check_run_paths(args, out)
         ds = run(case, progress=_Progress())
-    out = Path(args.output) if args.output else Path(f"{name}.nc")
-    path = write_netcdf(ds, out)
-    print(f"wrote {path}")
+    # the computation is done: an interrupt now must not lose it
+    try:
+        with deferred_interrupts():
+            path = write_netcdf(ds, out)
+            print(f"wrote {path}")
+    except KeyboardInterrupt:
+        print(f"seacable: interrupted; {out} holds the whole result (no plots made)", file=sys.stderr)
+        return EXIT_INTERRUPTED
     if not args.no_plots:
         from .plot import plot_result
 
-        for png in plot_result(ds, args.plot_dir or path.parent, prefix=path.stem):
-            print(f"wrote {png}")
+        try:
+            for png in plot_result(ds, args.plot_dir or path.parent, prefix=path.stem):
+                print(f"wrote {png}")
+        except KeyboardInterrupt:
+            print(f"seacable: interrupted while plotting; {path} holds the whole result. Suggested fix: "
+                  f"'seacable plot {path}' makes the figures.", file=sys.stderr)
+            return EXIT_INTERRUPTED
     if ds.attrs.get("interrupted"):
-        t_end = float(ds["time"].values[-1])
+        t_end = float(ds["time"].values[-1]) if "time" in ds and ds["time"].size else math.nan
         print(f"seacable: interrupted at t = {t_end:g} s; {path} holds the result up to then",
               file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -153,10 +197,14 @@ def _print_summary(summary) -> None:
 
 
 def _cmd_sweep(args) -> int:
+    from .results import check_output_folder
     from .sweeps import load_sweep, sweep
+    from .sweeps.engine import check_scheduler
 
+    check_scheduler(args.scheduler)
     spec = load_sweep(args.sweep)
     outdir = Path(args.output) if args.output else Path(spec.name)
+    check_output_folder(outdir, "-o" if args.output else "the default output folder (-o)")
     summary = sweep(spec, outdir, scheduler=args.scheduler, workers=args.workers,
                     retry_failed=args.retry_failed, progress=_SweepProgress())
     _print_summary(summary)
@@ -179,50 +227,93 @@ def _cmd_sweep(args) -> int:
     return 0
 
 
-def _cmd_validate(args) -> int:
-    from .io import load_case
-    from .sweeps import is_sweep_file, load_sweep
+def _validate_sweep(name: str) -> list[str]:
+    """Load a sweep file and check each of its cases as 'run' would; the messages of the invalid ones."""
+    from .simulate import check
+    from .sweeps import load_sweep
 
-    for name in args.cases:
-        if is_sweep_file(name):
-            spec = load_sweep(name)
-            bad = [c for c in spec.cases() if c.case is None]
-            for c in bad:
-                print(f"{name}: {c.error}", file=sys.stderr)
-            print(f"{name}: valid sweep of {len(spec)} case(s) ({spec.kind} of {', '.join(spec.parameters)})"
-                  + (f"; {len(bad)} case(s) invalid" if bad else ""))
-            if bad:
-                return EXIT_USER_ERROR
+    spec = load_sweep(name)
+    problems = []
+    for c in spec.cases(require_valid=False):
+        if c.case is None:
+            problems.append(c.error)
             continue
-        case = load_case(name)
-        print(f"{name}: valid ({case.analysis.type} analysis, {len(case.line.segments)} segment(s), "
-              f"line length {case.line.length:g} m)")
-    return 0
+        try:
+            check(c.case)
+        except SeacableError as err:
+            values = ", ".join(f"{p} = {v!r}" for p, v in zip(spec.parameters, c.values))
+            problems.append(f"case {c.index} ({values}): {err}")
+    if not problems:
+        print(f"{name}: valid sweep of {len(spec)} case(s) ({spec.kind} of {', '.join(spec.parameters)})")
+    return problems
+
+
+def _validate_case(name: str) -> list[str]:
+    """Load a case file and do everything 'run' does before its time loop."""
+    from .io import load_case
+    from .simulate import check
+
+    case = load_case(name)
+    check(case)
+    # a case file, or a MoorDyn file (a case with its own network of lines, no single 'line')
+    analysis = getattr(getattr(case, "analysis", None), "type", None) or getattr(case, "analysis_type", "?")
+    line = getattr(case, "line", None)
+    detail = f", {len(line.segments)} segment(s), line length {line.length:g} m" if line is not None else ""
+    print(f"{name}: valid ({analysis} analysis{detail})")
+    return []
+
+
+def _cmd_validate(args) -> int:
+    from .sweeps import is_sweep_file
+
+    status = 0
+    for name in args.cases:
+        try:
+            problems = _validate_sweep(name) if is_sweep_file(name) else _validate_case(name)
+        except SeacableError as err:
+            problems = [str(err)]
+        for message in problems:
+            where = "" if message.startswith(name) else f"{name}: "
+            print(f"seacable: error: {where}{message}", file=sys.stderr)
+        if problems:
+            print(f"{name}: invalid" + (f" ({len(problems)} case(s))" if len(problems) > 1 else ""),
+                  file=sys.stderr)
+            status = EXIT_USER_ERROR
+    return status
 
 
 def _cmd_plot(args) -> int:
     from .plot import plot_result
-    from .results import read_netcdf
+    from .results import check_output_folder, check_result, read_netcdf
 
     path = Path(args.result)
     ds = read_netcdf(path)
-    for png in plot_result(ds, args.output or path.parent, prefix=path.stem):
+    check_result(ds, f"result file '{path}'")
+    outdir = Path(args.output) if args.output else path.parent
+    check_output_folder(outdir, "-o")
+    for png in plot_result(ds, outdir, prefix=path.stem):
         print(f"wrote {png}")
     return 0
 
 
 def _cmd_animate(args) -> int:
-    from .plot import animate_laying
-    from .plot import animate_towline
-    from .results import read_netcdf
+    from .plot import animate_laying, animate_towline
+    from .results import check_output_file, check_result, read_netcdf
 
     path = Path(args.result)
     ds = read_netcdf(path)
-    if ds.attrs.get("analysis") == "towline_dynamic":
+    analysis = ds.attrs.get("analysis")
+    if analysis not in ("laying_dynamic", "towline_dynamic"):
+        raise InputError(f"result file '{path}': animate needs a 'laying_dynamic' result or a 'towline_dynamic' "
+                         f"result, got analysis '{analysis}'. Suggested fix: 'seacable plot {path}' makes the "
+                         "figures of this result.")
+    check_result(ds, f"result file '{path}'")
+    if analysis == "towline_dynamic":
         animate, tag = animate_towline, "tow"
-    else:  # animate_laying names the analyses it accepts in its error
+    else:
         animate, tag = animate_laying, "lay"
     out = Path(args.output) if args.output else path.parent / f"{path.stem}_{tag}.gif"
+    check_output_file(out, "-o", (".gif", ".mp4"))
     written = animate(ds, out, fps=args.fps, max_frames=args.max_frames)
     print(f"wrote {written}")
     return 0
@@ -235,80 +326,222 @@ def _cmd_schema(args) -> int:
     return 0
 
 
+class _UsageError(Exception):
+    """A command line argparse rejects (unknown option, a value that is not a number, ...)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit 2 from main(), never SystemExit from inside
+        raise _UsageError(f"{self.prog}: {message}. Suggested fix: see '{self.prog} --help'.")
+
+
+def _number(text: str) -> float:
+    return float(text)
+
+
+def _whole(text: str) -> int:
+    value = float(text)
+    if not value.is_integer():
+        raise ValueError(text)
+    return int(value)
+
+
+_number.__name__ = "number"
+_whole.__name__ = "whole number"
+
+#: numeric options: dest -> (option, unit, smallest allowed (inclusive), suggested fix)
+_NUMERIC = {
+    "time_step": ("--time-step", "s", None, "give the Newmark time step in seconds, e.g. --time-step 0.05"),
+    "duration": ("--duration", "s", None, "give the simulated time in seconds, e.g. --duration 100"),
+    "output_interval": ("--output-interval", "s", None,
+                        "give the time between stored states in seconds, e.g. --output-interval 0.5"),
+    "fps": ("--fps", "frames/s", 1, "give the frame rate, e.g. --fps 10"),
+    "max_frames": ("--max-frames", "", 1, "give the largest number of frames, e.g. --max-frames 200"),
+    "workers": ("--workers", "", 1, "give the number of worker processes, e.g. --workers 4, or leave it out"),
+    "max_steps": ("--max-steps", "", None, "give the largest number of time steps, e.g. --max-steps 1e9"),
+    "max_memory": ("--max-memory", "bytes", None,
+                   "give the largest result memory in bytes, e.g. --max-memory 16e9"),
+    "max_cases": ("--max-cases", "", 1, "give the largest number of sweep cases, e.g. --max-cases 1e6"),
+}
+_LIMITS = {"max_steps": "SEACABLE_MAX_STEPS", "max_memory": "SEACABLE_MAX_MEMORY", "max_cases": "SEACABLE_MAX_CASES"}
+
+
+def _check_options(args) -> None:
+    """Every numeric option finite and positive (whole numbers >= 1 where counted); else InputError."""
+    from ._validate import at_least, positive
+
+    for dest, (option, unit, least, fix) in _NUMERIC.items():
+        value = getattr(args, dest, None)
+        if value is None:
+            continue
+        if least is None:
+            positive(option, value, unit, fix)
+        else:
+            at_least(option, value, least, unit, fix)
+
+
+@contextlib.contextmanager
+def _limits(args):
+    """Set SEACABLE_MAX_* from --max-steps, --max-memory and --max-cases for the command; restore after."""
+    saved = {env: os.environ.get(env) for env in _LIMITS.values()}
+    try:
+        for dest, env in _LIMITS.items():
+            value = getattr(args, dest, None)
+            if value is not None:
+                os.environ[env] = repr(float(value))
+        yield
+    finally:
+        for env, value in saved.items():
+            if value is None:
+                os.environ.pop(env, None)
+            else:
+                os.environ[env] = value
+
+
+def _add_limits(p) -> None:
+    p.add_argument("--max-steps", type=_number, help="largest number of time steps of one run (default 1e8; "
+                                                     "or SEACABLE_MAX_STEPS)")
+    p.add_argument("--max-memory", type=_number, help="largest memory of one run's stored results [bytes] "
+                                                      "(default 8e9; or SEACABLE_MAX_MEMORY)")
+    p.add_argument("--max-cases", type=_number, help="largest number of cases of a sweep (default 1e5; or "
+                                                     "SEACABLE_MAX_CASES)")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="seacable",
         description="Statics and dynamics of marine cables: mooring lines, towed cables, cable laying. "
                     "SI units throughout.")
     parser.add_argument("--version", action="version", version=f"seacable {__version__}")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    parser.add_argument("--debug", action="store_true", help="show the traceback of an internal error")
+    common = _Parser(add_help=False)
+    common.add_argument("--debug", action="store_true", default=argparse.SUPPRESS,
+                        help="show the traceback of an internal error")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
 
-    p = sub.add_parser("run", help="run a case file and write its result (NetCDF) and plots (PNG)")
+    p = sub.add_parser("run", parents=[common],
+                       help="run a case file and write its result (NetCDF) and plots (PNG)")
     p.add_argument("case", help="YAML case file, or a MoorDyn input file (lines and points)")
     p.add_argument("-o", "--output", help="result file (.nc); default CASE_NAME.nc")
-    p.add_argument("--duration", type=float, help="MoorDyn file: simulated time after the statics [s]")
+    p.add_argument("--duration", type=_number, help="MoorDyn file: simulated time after the statics [s]")
     p.add_argument("--motion", help="MoorDyn file: CSV of vessel offsets (time, x, y, z) applied to every "
                                     "vessel point [s, m], or of rigid platform motions about the origin "
                                     "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]")
-    p.add_argument("--time-step", type=float, default=0.1, help="MoorDyn file: Newmark time step [s] (0.1)")
-    p.add_argument("--output-interval", type=float, default=0.5,
-                   help="MoorDyn file: time between stored states [s] (0.5)")
+    p.add_argument("--time-step", type=_number, help="MoorDyn file: Newmark time step [s] (0.1)")
+    p.add_argument("--output-interval", type=_number, help="MoorDyn file: time between stored states [s] (0.5)")
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
+    _add_limits(p)
     p.set_defaults(func=_cmd_run)
 
-    p = sub.add_parser("sweep", help="run a sweep: a base case over a grid or a table of parameters, on Dask")
+    p = sub.add_parser("sweep", parents=[common],
+                       help="run a sweep: a base case over a grid or a table of parameters, on Dask")
     p.add_argument("sweep", help="sweep file (YAML): 'base' (a case file) and 'grid' or 'table'")
     p.add_argument("-o", "--output", help="output folder: per-case results and the summary; default the sweep's "
                                           "name. Cases already there are not run again")
     p.add_argument("--scheduler", help="address of an existing Dask scheduler (tcp://host:8786), whose workers "
                                        "have seacable; default a local cluster on this machine's cores; "
                                        "'synchronous' runs the cases one by one in this process")
-    p.add_argument("--workers", type=int, help="workers of the local cluster (default: one per core)")
+    p.add_argument("--workers", type=_whole, help="workers of the local cluster (default: one per core)")
     p.add_argument("--retry-failed", action="store_true", help="run again the cases that failed before")
     p.add_argument("--no-plots", action="store_true", help="write the results only")
+    _add_limits(p)
     p.set_defaults(func=_cmd_sweep)
 
-    p = sub.add_parser("validate", help="check case and sweep files without running them")
+    p = sub.add_parser("validate", parents=[common],
+                       help="check case and sweep files as 'run' would before computing, without running them")
     p.add_argument("cases", nargs="+", help="YAML case or sweep files")
+    _add_limits(p)
     p.set_defaults(func=_cmd_validate)
 
-    p = sub.add_parser("plot", help="make the standard figures (PNG) of a result file")
+    p = sub.add_parser("plot", parents=[common], help="make the standard figures (PNG) of a result file")
     p.add_argument("result", help="result file (.nc) written by 'seacable run'")
     p.add_argument("-o", "--output", help="folder for the PNG files; default beside the result")
     p.set_defaults(func=_cmd_plot)
 
-    p = sub.add_parser("animate", help="animate a cable lay (laying_dynamic) or a tow (towline_dynamic) "
-                                       "as GIF or MP4")
+    p = sub.add_parser("animate", parents=[common],
+                       help="animate a cable lay (laying_dynamic) or a tow (towline_dynamic) as GIF or MP4")
     p.add_argument("result", help="result file (.nc) of a laying_dynamic or towline_dynamic run")
     p.add_argument("-o", "--output", help="animation file (.gif, or .mp4 with ffmpeg); default "
                                           "RESULT_lay.gif or RESULT_tow.gif beside the result")
-    p.add_argument("--fps", type=int, default=10, help="frames per second (default 10)")
-    p.add_argument("--max-frames", type=int, default=200,
+    p.add_argument("--fps", type=_whole, default=10, help="frames per second (default 10)")
+    p.add_argument("--max-frames", type=_whole, default=200,
                    help="largest number of frames; output times are subsampled evenly (default 200)")
     p.set_defaults(func=_cmd_animate)
 
-    p = sub.add_parser("schema", help="print the JSON schema of case files")
+    p = sub.add_parser("schema", parents=[common], help="print the JSON schema of case files")
     p.set_defaults(func=_cmd_schema)
     return parser
 
 
+def _terminate(signum, frame):
+    """Ctrl-C, and SIGTERM (what batch schedulers send before killing a job): stop, keeping the result.
+
+    Raises KeyboardInterrupt, which the time loops catch (they return what they computed) and
+    records the request (:data:`seacable._atomic.interrupt_requested`), so that a case whose
+    interrupt a library turned into another error is not taken for a failed case.
+    """
+    from ._atomic import interrupt_requested
+
+    interrupt_requested.set()
+    raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def _interrupts():
+    """SIGINT and SIGTERM both stop the command as Ctrl-C does (main thread only); restored after."""
+    from ._atomic import interrupt_requested
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    interrupt_requested.clear()
+    previous = {sig: signal.signal(sig, _terminate) for sig in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, signal.SIG_DFL if handler is None else handler)
+        interrupt_requested.clear()
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point of the ``seacable`` command. Returns the exit status."""
+    """Entry point of the ``seacable`` command. Returns the exit status.
+
+    0: done; 1: a sweep in which some cases failed; 2: a user error (one line on stderr);
+    3: an internal error (a bug; ``--debug`` shows the traceback); 130: interrupted (Ctrl-C or
+    SIGTERM), with what was computed written.
+    """
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args = parser.parse_args(argv)
+    except _UsageError as err:
+        print(f"seacable: error: {err}", file=sys.stderr)
+        return EXIT_USER_ERROR
     if args.command is None:
         parser.print_help()
         return EXIT_USER_ERROR
-    warnings.showwarning = _show_warning
-    try:
-        return args.func(args)
-    except SeacableError as err:
-        print(f"seacable: error: {err}", file=sys.stderr)
-        return EXIT_USER_ERROR
-    except KeyboardInterrupt:
-        print("seacable: interrupted", file=sys.stderr)
-        return EXIT_INTERRUPTED
+    with warnings.catch_warnings(), _interrupts():
+        # the command line shows warnings (once each), whatever the filters of the caller
+        warnings.simplefilter("default", SeacableWarning)
+        warnings.showwarning = _show_warning
+        try:
+            _check_options(args)
+            with _limits(args):
+                return args.func(args)
+        except SeacableError as err:
+            print(f"seacable: error: {err}", file=sys.stderr)
+            return EXIT_USER_ERROR
+        except KeyboardInterrupt:
+            print("seacable: interrupted", file=sys.stderr)
+            return EXIT_INTERRUPTED
+        except Exception as err:
+            if args.debug:
+                raise
+            print(f"seacable: internal error, a bug in seacable {__version__}: {type(err).__name__}: {err}. "
+                  "Please report it to the seacable developers with the command and its input files; "
+                  f"'seacable --debug {args.command} ...' shows the traceback.", file=sys.stderr)
+            return EXIT_BUG
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -8,8 +8,10 @@ whole case (YAML) and the references, so that a result file says how it was made
 from __future__ import annotations
 
 import json
+import tempfile
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
 import numpy as np
 import xarray as xr
@@ -17,7 +19,30 @@ import xarray as xr
 from ._version import __version__
 from .errors import InputError
 
-__all__ = ["var", "make_dataset", "write_netcdf", "read_netcdf", "check_schema"]
+__all__ = ["ANALYSIS_VARIABLES", "check_output_file", "check_output_folder", "check_result", "check_schema",
+           "make_dataset", "read_netcdf", "var", "write_netcdf"]
+
+#: analysis type -> the variables and coordinates its result must hold: those its standard figures and
+#: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file
+#: is checked against this before it is plotted, so that a file that lacks one gets a message naming it.
+ANALYSIS_VARIABLES: dict[str, tuple[str, ...]] = {
+    "static": ("s", "x", "z", "tension", "fairlead_tension", "anchor_tension"),
+    "pushover": ("offset", "H_fairlead", "fairlead_tension", "stiffness_horizontal"),
+    "modal": ("mode", "plane", "period", "wave_period", "s", "x", "z", "shape", "direction"),
+    "towed_steady": ("s", "x", "z", "tension", "relative_speed", "top_tension"),
+    "laying_theory": ("ship_speed", "angle", "angle_small", "layback"),
+    "vertical_modes": ("solution", "mode", "period"),
+    "mooring_static": ("x", "y", "z", "tension", "fairlead_tension", "anchor_tension"),
+    "mooring_pushover": ("offset", "x", "y", "z", "tension", "fairlead_tension", "seabed_contact_length"),
+    "mooring_dynamic": ("time", "x", "y", "z", "tension", "fairlead_tension", "anchor_tension",
+                        "seabed_contact_length"),
+    "towed_dynamic": ("time", "s", "x", "y", "z", "tension", "top_tension"),
+    "laying_dynamic": ("time", "x", "z", "ship_x", "top_tension", "bottom_tension", "slack", "entry_angle",
+                       "ship_speed", "payout_speed"),
+    "towline_dynamic": ("time", "x", "y", "z", "top_tension", "barge_tension", "tug_x", "tug_y", "barge_x",
+                        "barge_y"),
+    "sweep": ("status",),
+}
 
 
 def var(dims: str | Iterable[str], values, units: str, long_name: str, **attrs) -> xr.Variable:
@@ -100,15 +125,135 @@ def check_schema(ds: xr.Dataset) -> None:
             raise AssertionError(f"result variable '{name}' lacks {missing}")
 
 
-def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write a result to NetCDF-4, creating the folder if needed. Returns the path."""
+def check_result(ds: xr.Dataset, source: str = "the result") -> str:
+    """Check that a result holds what its analysis's figures need; return the analysis type.
+
+    Parameters
+    ----------
+    ds
+        A result Dataset (from :func:`seacable.run` or :func:`read_netcdf`).
+    source
+        Where it came from, for messages (the file name).
+
+    Raises
+    ------
+    InputError
+        If the ``analysis`` attribute is missing or unknown, or the result lacks variables of
+        :data:`ANALYSIS_VARIABLES` (all of them named).
+    """
+    analysis = ds.attrs.get("analysis")
+    if analysis is None:
+        raise InputError(f"{source} is not a seacable result: it has no 'analysis' attribute. Suggested fix: "
+                         "give a file written by 'seacable run' or 'seacable sweep'.")
+    if analysis not in ANALYSIS_VARIABLES:
+        raise InputError(f"{source} has analysis '{analysis}', which seacable does not know. Expected one of "
+                         f"{', '.join(ANALYSIS_VARIABLES)}. Suggested fix: give a file written by 'seacable run'.")
+    missing = [name for name in ANALYSIS_VARIABLES[analysis] if name not in ds.variables]
+    if missing:
+        raise InputError(f"{source} is a '{analysis}' result without the variable(s) {', '.join(missing)} that "
+                         f"its figures need. Suggested fix: rerun the case with seacable {__version__} "
+                         "('seacable run CASE.yaml'), or give the file written by that run.")
+    return analysis
+
+
+_NETCDF_SUFFIXES = (".nc", ".nc4", ".netcdf")
+
+
+def check_output_file(path: str | Path, option: str = "-o", suffixes=_NETCDF_SUFFIXES) -> Path:
+    """Check, before a run starts, that a result can be written at ``path``.
+
+    Parameters
+    ----------
+    path
+        The file to write.
+    option
+        The command-line option or argument that gave it, for messages.
+    suffixes
+        The suffixes allowed (lower case), the first one suggested.
+
+    Raises
+    ------
+    InputError
+        If the suffix is wrong, ``path`` is a folder, a parent is a file, or its folder cannot
+        be written to.
+    """
     path = Path(path)
-    if path.suffix.lower() not in (".nc", ".nc4", ".netcdf"):
+    if path.is_dir():
+        raise InputError(f"{option} {path}: that is a folder, expected a file name. Suggested fix: "
+                         f"{option} {path / ('result' + suffixes[0])}")
+    if path.suffix.lower() not in suffixes:
+        raise InputError(f"{option} {path}: the file must end in {' or '.join(suffixes)}, got "
+                         f"'{path.suffix or 'no suffix'}'. Suggested fix: {option} {path.with_suffix(suffixes[0])}")
+    check_output_folder(path.parent, option, what=f"{option} {path}")
+    return path
+
+
+def check_output_folder(folder: str | Path, option: str, what: str | None = None) -> Path:
+    """Check, before a run starts, that files can be written in ``folder`` (created later if needed).
+
+    Raises
+    ------
+    InputError
+        If ``folder`` or one of its parents is a file, or the nearest existing folder cannot be
+        written to (read-only, no permission, ...).
+    """
+    folder = Path(folder)
+    what = what or f"{option} {folder}"
+    probe = folder
+    while not probe.exists():  # the nearest existing parent: every missing one will be created
+        if probe.parent == probe:
+            break
+        probe = probe.parent
+    if not probe.is_dir():
+        raise InputError(f"{what}: '{probe}' is a file, not a folder, so nothing can be written under it. "
+                         f"Suggested fix: give {option} a path in a folder.")
+    try:  # a real write: access() says yes to root even on a read-only file system
+        with tempfile.TemporaryFile(dir=probe, prefix=".seacable-probe-"):
+            pass
+    except OSError as err:
+        raise InputError(f"{what}: cannot write in the folder '{probe}': {err.strerror or err}. Suggested fix: "
+                         f"give {option} a folder you can write to.") from None
+    return folder
+
+
+def _make_folder(folder: Path, what: str) -> None:
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise InputError(f"cannot create the folder '{folder}' for {what}: {err.strerror or err}. Suggested "
+                         "fix: give a folder you can write to.") from None
+
+
+def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
+    """Write a result to NetCDF-4, whole, creating the folder if needed. Returns the path.
+
+    The file is written under a temporary name in the same folder and renamed into place
+    (:func:`seacable._atomic.atomic_path`), so that a failed or interrupted write leaves the file
+    that was there before intact. Ctrl-C or SIGTERM during the write takes effect once the file is
+    written (:func:`seacable._atomic.deferred_interrupts`).
+
+    Raises
+    ------
+    InputError
+        If the suffix is not ``.nc``, or the file cannot be written (a folder of that name, a
+        read-only folder, a full disk).
+    """
+    from ._atomic import atomic_path, deferred_interrupts
+
+    path = Path(path)
+    if path.suffix.lower() not in _NETCDF_SUFFIXES:
         raise InputError(f"output file '{path}' must end in .nc. Suggested fix: -o {path.with_suffix('.nc')}")
-    path.parent.mkdir(parents=True, exist_ok=True)
+    if path.is_dir():
+        raise InputError(f"output file '{path}' is a folder. Suggested fix: -o {path / 'result.nc'}")
+    _make_folder(path.parent, f"the result '{path.name}'")
     encoding = {name: {"zlib": True, "complevel": 4} for name, v in ds.data_vars.items()
                 if v.dtype.kind in "fiu" and v.ndim > 0}
-    ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
+    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
+        with deferred_interrupts(), atomic_path(path) as tmp:
+            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+    except OSError as err:
+        raise InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk "
+                         "space, or give -o a file in a folder you can write to.") from None
     return path
 
 
@@ -118,11 +263,16 @@ def read_netcdf(path: str | Path) -> xr.Dataset:
     if not path.exists():
         raise InputError(f"result file '{path}' does not exist. Suggested fix: run 'seacable run CASE.yaml "
                          f"-o {path}' first.")
+    if path.is_dir():
+        raise InputError(f"result file '{path}' is a folder, expected a .nc file. Suggested fix: give the "
+                         "path of the .nc file 'seacable run' wrote.")
     try:
         with xr.open_dataset(path, engine="netcdf4") as ds:
             ds = ds.load()
-    except (OSError, ValueError) as err:
-        raise InputError(f"'{path}' is not a readable NetCDF file: {err}.") from None
+    except (OSError, ValueError, RuntimeError, KeyError, TypeError) as err:
+        raise InputError(f"result file '{path}' is not a readable NetCDF file: {err}. Suggested fix: give a "
+                         "file written by 'seacable run', or run the case again.") from None
     if "analysis" not in ds.attrs:
-        raise InputError(f"'{path}' is not a seacable result (no 'analysis' attribute).")
+        raise InputError(f"result file '{path}' is not a seacable result (no 'analysis' attribute). Suggested "
+                         "fix: give a file written by 'seacable run'.")
     return ds

@@ -325,3 +325,86 @@ def test_grid_values_must_be_lists():
         Sweep(BASE, grid={"analysis.ship.speed": 2.0})
     with pytest.raises(InputError, match="the table's columns have different lengths"):
         Sweep(BASE, table={"analysis.ship.speed": [1.0, 2.0], "analysis.duration": [10.0]})
+
+
+# --- sizes and scheduler addresses, checked before anything runs (issue 17) ---------------------
+
+@pytest.mark.parametrize("spec", [{"start": 0.0, "stop": 1.0, "step": 0.1}, {"start": 0.5, "stop": 5.0, "step": 0.25},
+                                  {"start": 1.0, "stop": 0.0, "step": -0.3}, {"start": 0.0, "stop": 1.0, "num": 7},
+                                  {"start": 0.0, "stop": 0.0, "step": 1.0}, {"start": 0.1, "stop": 0.7, "step": 0.1}])
+def test_range_is_counted_as_listed(spec):
+    """The case count (checked against the limit before the grid is expanded) is the number of values."""
+    from seacable.sweeps.spec import Range, _count
+
+    r = Range.parse(spec)
+    assert _count(r) == len(r.values())
+
+
+def test_grid_over_the_case_limit_is_refused_before_expansion(monkeypatch):
+    monkeypatch.setenv("SEACABLE_MAX_CASES", "11")
+    with pytest.raises(InputError, match=r"\(6 x 2\) has 12 cases, more than the limit of 11"):
+        grid_sweep()
+    monkeypatch.setenv("SEACABLE_MAX_CASES", "12")
+    assert len(grid_sweep()) == 12
+
+
+@pytest.mark.parametrize("address", [None, "synchronous", "tcp://10.0.0.5:8786", "localhost:8786",
+                                     "tls://scheduler.example.org:8786", "tcp://[::1]:8786", "ws://host:80/"])
+def test_scheduler_address_forms_accepted(address):
+    from seacable.sweeps.engine import check_scheduler
+
+    check_scheduler(address)
+
+
+@pytest.mark.parametrize("address", ["not a scheduler", "tcp://host", "host", "http://host:8786", "tcp://:8786",
+                                     "host:0", "host:70000", "", 8786])
+def test_scheduler_address_forms_refused(address):
+    from seacable.sweeps.engine import check_scheduler
+
+    with pytest.raises(InputError, match="--scheduler"):
+        check_scheduler(address)
+
+
+def test_sigterm_stops_a_sweep_like_ctrl_c(tmp_path):
+    """SIGTERM (what a batch scheduler sends) stops a sweep as Ctrl-C does: the cases done are kept,
+    the summary is written and says so, exit 130."""
+    spec = write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0 + 0.1 * i for i in range(40)]})
+    out = tmp_path / "out"
+    src = str(Path(sc.__file__).resolve().parents[1])
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([src, os.environ.get("PYTHONPATH", "")])}
+    proc = subprocess.Popen([sys.executable, "-m", "seacable", "sweep", str(spec), "-o", str(out), "--scheduler",
+                             "synchronous", "--no-plots"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    deadline = time.monotonic() + 300
+    while len(list((out / "cases").glob("[0-9]*.json"))) < 2:
+        assert proc.poll() is None, proc.stderr.read().decode()
+        assert time.monotonic() < deadline, "the sweep did not get going"
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=300)
+    assert proc.returncode == 130, err.decode()
+    assert b"Traceback" not in err and b"interrupted" in err
+    summary = sc.read_netcdf(out / "summary.nc")
+    assert summary.attrs["interrupted"] == 1
+    finished = summary.attrs["done"] + summary.attrs["failed"]
+    assert summary.attrs["done"] >= 1 and 2 <= finished < 40, summary.error.values
+    assert summary.attrs["not_run"] == 40 - finished
+    assert not list((out / "cases").glob(".*"))
+
+
+def test_a_case_failing_after_an_interrupt_stops_the_sweep(monkeypatch):
+    """A library may turn the KeyboardInterrupt raised in its callback into another error: after the
+    user asked to stop, a failed case is the interrupt, not the case's failure."""
+    from seacable import _atomic
+
+    def broken(case, progress=None):
+        raise sc.errors.ConvergenceError("did not converge (interrupted inside a solver)")
+
+    monkeypatch.setattr("seacable.simulate.run", broken)
+    case = grid_sweep().cases()[0].case
+    assert run_case(case)["status"] == "failed"
+    _atomic.interrupt_requested.set()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            run_case(case)
+    finally:
+        _atomic.interrupt_requested.clear()

@@ -190,16 +190,48 @@ class PlatformMotion(Model):
 def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     """The motion a CSV describes: a rigid platform when its header names any of surge, sway, heave,
     roll, pitch, yaw (about the origin; [m], [rad]), otherwise offsets x, y, z of every moved point [m].
+
+    The whole table is read and checked here, so that a file that is missing, a folder, unreadable,
+    binary, empty or not a table of numbers is refused before a run starts.
+
+    Raises
+    ------
+    InputError
+        Naming the file and what is wrong with it.
     """
     path = Path(path)
+    fix = "give a CSV text file with a header row, e.g. 'time,x,y,z', and one row of numbers per time"
     if not path.exists():
         raise InputError(f"motion file '{path}' does not exist. Suggested fix: check the path.")
-    with path.open(encoding="utf-8") as fh:
-        header = next((ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#")), "")
+    if path.is_dir():
+        raise InputError(f"motion file '{path}' is a folder, not a file. Suggested fix: {fix}.")
+    try:
+        raw = path.read_bytes()
+    except OSError as err:
+        raise InputError(f"motion file '{path}' cannot be read: {err.strerror or err}. Suggested fix: check its "
+                         "permissions.") from None
+    if b"\0" in raw:
+        raise InputError(f"motion file '{path}' is not a text (CSV) file: it holds binary data. Suggested fix: "
+                         f"{fix}.")
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise InputError(f"motion file '{path}' is not UTF-8 text: byte {err.start} cannot be read. Suggested "
+                         f"fix: save it as UTF-8 (plain ASCII numbers and column names).") from None
+    header = next((ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")), "")
+    if not header:
+        raise InputError(f"motion file '{path}' is empty (no header row). Suggested fix: {fix}.")
     columns = {c.strip().lower() for c in header.split(",")}
-    if columns & {"surge", "sway", "heave", "roll", "pitch", "yaw"}:
-        return PlatformMotion(file=str(path))
-    return TimeSeriesMotion(file=str(path))
+    platform = bool(columns & {"surge", "sway", "heave", "roll", "pitch", "yaw"})
+    names = ("time", "surge", "sway", "heave", "roll", "pitch", "yaw") if platform else ("time", "x", "y", "z")
+    try:
+        _read_table(path, names)
+    except InputError as err:  # on one line (numpy's reader lists the bad rows on several)
+        raise InputError(" ".join(str(err).split())) from None
+    except Exception as err:  # noqa: BLE001  (numpy's CSV reader: any failure means a bad table)
+        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {' '.join(str(err).split())}. "
+                         f"Suggested fix: {fix}.") from None
+    return PlatformMotion(file=str(path)) if platform else TimeSeriesMotion(file=str(path))
 
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]

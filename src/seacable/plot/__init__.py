@@ -48,7 +48,6 @@ FIGURES = {**STATICS_FIGURES, **TOWED_FIGURES, **LAYING_FIGURES, **MOORING_FIGUR
            **SWEEP_FIGURES}
 
 
-
 def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     """Write the standard figures of a result as PNG files.
 
@@ -71,22 +70,39 @@ def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:
     matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
+    from .._atomic import atomic_path
     from ..errors import InputError
+    from ..results import check_result
 
     analysis = ds.attrs.get("analysis")
     if analysis not in FIGURES:
-        raise InputError(f"no standard figures for analysis '{analysis}'. Known: {', '.join(FIGURES)}.")
+        raise InputError(f"no standard figures for analysis '{analysis}'. Known: {', '.join(FIGURES)}. "
+                         "Suggested fix: give a result written by 'seacable run' or 'seacable sweep'.")
+    check_result(ds)  # every variable the figures draw, named if missing
     outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
+    try:
+        outdir.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise InputError(f"cannot create the plot folder '{outdir}': {err.strerror or err}. Suggested fix: "
+                         "give a folder you can write to.") from None
     prefix = prefix or ds.attrs.get("case_name", analysis)
     written = []
-    for name, fig in FIGURES[analysis](ds, plt).items():
-        fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
-        fig.tight_layout()
-        path = outdir / f"{prefix}_{name}.png"
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        written.append(path)
+    figures = FIGURES[analysis](ds, plt)
+    try:
+        for name, fig in figures.items():
+            fig.suptitle(ds.attrs.get("title", ""), fontsize=10)
+            fig.tight_layout()
+            path = outdir / f"{prefix}_{name}.png"
+            try:  # whole or not at all: an interrupted write leaves the previous figure
+                with atomic_path(path) as tmp:
+                    fig.savefig(tmp, dpi=110, format="png")
+            except OSError as err:
+                raise InputError(f"cannot write the figure '{path}': {err.strerror or err}. Suggested fix: "
+                                 "free disk space, or give a plot folder you can write to.") from None
+            written.append(path)
+    finally:
+        for fig in figures.values():
+            plt.close(fig)
     return written
 
 

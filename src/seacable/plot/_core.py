@@ -73,6 +73,22 @@ def _finite_xz(x, z):
     return x[keep], z[keep]
 
 
+def _atomic_writer(base):
+    """A matplotlib movie writer class whose ``saving`` writes the file whole (temporary file, rename)."""
+    import contextlib
+
+    from .._atomic import atomic_path
+
+    class AtomicWriter(base):
+        @contextlib.contextmanager
+        def saving(self, fig, outfile, dpi, *args, **kwargs):
+            with atomic_path(outfile) as tmp, super().saving(fig, str(tmp), dpi, *args, **kwargs):
+                yield self
+
+    AtomicWriter.__name__ = AtomicWriter.__qualname__ = f"Atomic{base.__name__}"
+    return AtomicWriter
+
+
 def animation_writer(path, fps, max_frames, dpi, n_times):
     """Check an animation's arguments; return (path, writer, frame indices, pyplot).
 
@@ -105,9 +121,9 @@ def animation_writer(path, fps, max_frames, dpi, n_times):
         if not FFMpegWriter.isAvailable():
             raise InputError(f"cannot write '{path}': MP4 needs ffmpeg, which is not on the PATH. "
                              f"Suggested fix: install ffmpeg or write a GIF: -o {path.with_suffix('.gif')}")
-        writer = FFMpegWriter(fps=fps)
+        writer = _atomic_writer(FFMpegWriter)(fps=fps)
     else:
-        writer = PillowWriter(fps=fps)
+        writer = _atomic_writer(PillowWriter)(fps=fps)
     n = min(max_frames, n_times)
     frames = [n_times - 1] if n == 1 else np.round(np.linspace(0, n_times - 1, n)).astype(int)
     return path, writer, frames, plt

@@ -34,6 +34,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from .._atomic import PARTIAL, atomic_write, deferred_interrupts, interrupt_requested
 from .._version import __version__
 from ..errors import InputError, SeacableError, SeacableWarning
 from ..extremes import case_extremes
@@ -83,14 +84,10 @@ def write_result(ds: xr.Dataset, folder: Path, stem: str, attrs: dict) -> Path:
     import dask
 
     ds.attrs.update(attrs)
-    part = Path(folder) / f".{stem}.partial.nc"
     # xarray locks a write through the default Dask scheduler, which for a distributed client is a
     # round trip to the scheduler per variable: this write is local, so its lock is too
     with dask.config.set(scheduler="synchronous"):
-        write_netcdf(ds, part)
-    path = Path(folder) / f"{stem}.nc"
-    os.replace(part, path)
-    return path
+        return write_netcdf(ds, Path(folder) / f"{stem}.nc")   # atomic: see seacable._atomic
 
 
 def run_case(case, target: ResultTarget | None = None) -> dict:
@@ -136,6 +133,8 @@ def run_case(case, target: ResultTarget | None = None) -> dict:
                 raise KeyboardInterrupt
             out.update(status="done", result=ds, extremes={
                 k: (float(v.values), v.attrs["units"], v.attrs["long_name"]) for k, v in extremes.items()})
+    if out["status"] == "failed" and interrupt_requested.is_set():
+        raise KeyboardInterrupt   # failed because it was interrupted: not the case's failure
     out["warnings"] = list(dict.fromkeys(str(w.message) for w in caught if issubclass(w.category, SeacableWarning)))
     if out["result"] is not None and target is not None and target.visible():
         write_result(out.pop("result"), Path(target.folder), target.stem, target.attrs)
@@ -177,6 +176,54 @@ def _seacable_version() -> str:
     import seacable
 
     return seacable.__version__
+
+
+_ADDRESS = re.compile(r"^(?:(?P<scheme>[a-z][a-z0-9+]*)://)?(?P<host>\[[0-9a-fA-F:.]+\]|[A-Za-z0-9_.-]+):"
+                      r"(?P<port>\d{1,5})/?$")
+_SCHEMES = ("tcp", "tls", "ws", "wss", "ucx")
+
+
+def check_scheduler(scheduler) -> None:
+    """Check the form of a scheduler address before connecting: ``[tcp://]host:port`` or 'synchronous'.
+
+    Raises
+    ------
+    InputError
+        If ``scheduler`` is neither None, a ``distributed.Client``, 'synchronous' nor an address.
+    """
+    if scheduler is None or scheduler == SYNCHRONOUS or not isinstance(scheduler, str):
+        if scheduler is None or scheduler == SYNCHRONOUS or type(scheduler).__name__ == "Client":
+            return
+        raise InputError(f"--scheduler must be an address (tcp://host:8786), '{SYNCHRONOUS}' or a "
+                         f"distributed.Client, got {type(scheduler).__name__}.")
+    m = _ADDRESS.match(scheduler.strip())
+    ok = m is not None and (m["scheme"] or "tcp") in _SCHEMES and 0 < int(m["port"]) < 65536
+    if not ok:
+        raise InputError(f"--scheduler '{scheduler}' is not the address of a Dask scheduler: expected "
+                         f"tcp://host:port (e.g. tcp://10.0.0.5:8786; schemes {', '.join(_SCHEMES)}) or "
+                         f"'{SYNCHRONOUS}'. Suggested fix: give the address 'dask scheduler' prints, or leave "
+                         "out --scheduler to run on this machine's cores.")
+
+
+def _reachable(scheduler: str, timeout: float = 5.0) -> None:
+    """Open (and close) a TCP connection to the scheduler, so that a wrong address fails in seconds.
+
+    A ``distributed.Client`` that fails to connect hangs for 20 s when it is garbage-collected and
+    prints an ignored exception; this probe keeps a wrong address from ever reaching it.
+    """
+    import socket
+
+    m = _ADDRESS.match(scheduler.strip())
+    if (m["scheme"] or "tcp") not in ("tcp", "tls"):
+        return
+    host = m["host"].strip("[]")
+    try:
+        with socket.create_connection((host, int(m["port"])), timeout=timeout):
+            pass
+    except OSError as err:
+        raise InputError(f"cannot reach the Dask scheduler at '{scheduler}': {err.strerror or err}. Suggested "
+                         "fix: check the address (e.g. tcp://host:8786) and that 'dask scheduler' runs there, "
+                         "or leave out --scheduler to run on this machine.") from None
 
 
 def _connect(stack: ExitStack, scheduler, workers: int | None):
@@ -223,7 +270,7 @@ class _Store:
         except OSError as err:
             raise InputError(f"cannot create the output folder '{self.cases}': {err}. Suggested fix: give -o "
                              "a folder you can write to.") from None
-        for stale in [*self.cases.glob(".*.partial.*"), *self.cases.glob(".sweep-*.token")]:
+        for stale in [*self.cases.glob(f".*{PARTIAL}.*"), *self.cases.glob(".sweep-*.token")]:
             stale.unlink(missing_ok=True)
         self.token = f".sweep-{uuid.uuid4().hex}.token"
         (self.cases / self.token).touch()
@@ -262,12 +309,12 @@ class _Store:
                   "wall_time": outcome["wall_time"], "extremes": outcome["extremes"],
                   "retry": bool(outcome.get("retry", False)), "seacable_version": __version__,
                   "finished": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds")}
-        if outcome.get("result") is not None:
-            target = self.target(sc)
-            write_result(outcome["result"], self.cases, sc.stem, target.attrs)
-        part = self.cases / f".{sc.stem}.partial.json"
-        part.write_text(json.dumps(record, indent=1, default=str), encoding="utf-8")
-        os.replace(part, self.record_path(sc))
+        text = json.dumps(record, indent=1, default=str)
+        with deferred_interrupts():   # the result and its record, both or neither
+            if outcome.get("result") is not None:
+                target = self.target(sc)
+                write_result(outcome["result"], self.cases, sc.stem, target.attrs)
+            atomic_write(self.record_path(sc), lambda tmp: tmp.write_text(text, encoding="utf-8"))
         return record
 
 
@@ -320,9 +367,12 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         if scheduler is not None:
             raise InputError(f"workers ({workers}) sizes the local cluster seacable starts; with scheduler "
                              f"{scheduler!r} it has no meaning. Suggested fix: leave out one of the two.")
+    check_scheduler(scheduler)
+    if isinstance(scheduler, str) and scheduler != SYNCHRONOUS:
+        _reachable(scheduler)   # before anything is written
     cases = sweep_.cases()
     store = _Store(Path(outdir), sweep_.name)
-    (store.root / "sweep.yaml").write_text(sweep_.text, encoding="utf-8")
+    atomic_write(store.root / "sweep.yaml", lambda tmp: tmp.write_text(sweep_.text, encoding="utf-8"))
     t0 = time.perf_counter()
     records: dict[int, dict] = {}
     reused: set[int] = set()
@@ -367,8 +417,13 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
     summary.attrs["interrupted"] = int(interrupted)
     summary.attrs["wall_time"] = round(time.perf_counter() - t0, 3)
     if write_summary:
-        write_netcdf(summary, store.root / "summary.nc")
-        summary_table(summary).to_csv(store.root / "summary.csv")
+        try:  # a second Ctrl-C while the summary is written still leaves it whole
+            with deferred_interrupts():
+                write_netcdf(summary, store.root / "summary.nc")
+                table = summary_table(summary)
+                atomic_write(store.root / "summary.csv", table.to_csv)
+        except KeyboardInterrupt:
+            summary.attrs["interrupted"] = 1
     return summary
 
 

@@ -31,6 +31,7 @@ from typing import Any
 import yaml
 from pydantic import Field, model_validator
 
+from .._limits import check_case_count
 from .._model import Model
 from ..case import Case
 from ..errors import CaseFileError, InputError
@@ -226,11 +227,17 @@ class Sweep:
                                                   or not hasattr(values, "__iter__")):
                 raise InputError(f"{source}: parameter '{path}' needs a list of values (or a range), got "
                                  f"{values!r}. Suggested fix: write e.g. [{values!r}].")
+        spec = {p: v if isinstance(v, Range) or hasattr(v, "__len__") else list(v) for p, v in spec.items()}
+        sizes = [_count(v) for v in spec.values()]
+        if grid is not None:   # counted before the grid is expanded: 5000 x 5000 is refused at once
+            check_case_count(f"{source}: the grid ({' x '.join(str(n) for n in sizes)})", math.prod(sizes),
+                             "sweep fewer values, or split the sweep into several")
         columns = [[_plain(x) for x in (v.values() if isinstance(v, Range) else v)] for v in spec.values()]
         if table is not None:
             sizes = {len(c) for c in columns}
             if len(sizes) != 1:
                 raise InputError(f"{source}: the table's columns have different lengths {sorted(sizes)}.")
+            check_case_count(f"{source}: the table", max(sizes), "split the table into several")
             self.rows = list(zip(*columns))
         else:
             self.rows = list(itertools.product(*columns))
@@ -247,12 +254,18 @@ class Sweep:
     def __len__(self) -> int:
         return len(self.rows)
 
-    def cases(self) -> list[SweepCase]:
-        """Every case, validated: a case that fails validation carries its message instead."""
+    def cases(self, require_valid: bool = True) -> list[SweepCase]:
+        """Every case, validated: a case that fails validation carries its message instead.
+
+        Raises
+        ------
+        InputError
+            If no case is valid (unless ``require_valid`` is False).
+        """
         if self._cases is None:
             self._cases = [self._make(i, row) for i, row in enumerate(self.rows)]
-            if all(c.case is None for c in self._cases):
-                raise InputError(f"{self.source}: no case of the sweep is valid; case 0: {self._cases[0].error}")
+        if require_valid and all(c.case is None for c in self._cases):
+            raise InputError(f"{self.source}: no case of the sweep is valid; case 0: {self._cases[0].error}")
         return self._cases
 
     def _make(self, index: int, row) -> SweepCase:
@@ -316,6 +329,15 @@ class Sweep:
         for type_name in (self.base.get("line_types") or {}):
             paths |= {f"line_types.{type_name}.{f}" for f in LineType.model_fields}
         return sorted(paths)
+
+
+def _count(values) -> int:
+    """Number of values of a parameter (a range's without listing them)."""
+    if isinstance(values, Range):
+        if values.num is not None:
+            return values.num
+        return math.floor((values.stop - values.start) / values.step * (1 + 1e-12) + 1e-9) + 1
+    return len(values)
 
 
 def _plain(value):
@@ -403,6 +425,9 @@ def load_sweep(path: str | Path) -> Sweep:
     data, text = read_yaml(path, "sweep file")
     if not isinstance(data, dict):
         raise CaseFileError(f"{path}: a sweep file must be a mapping with 'base' and 'grid' or 'table'.")
+    if "base" not in data and ("analysis" in data or "line" in data):
+        raise CaseFileError(f"{path} is a case file, not a sweep file ('base' and 'grid' or 'table'). Suggested "
+                            f"fix: 'seacable run {path}', or a sweep file with 'base: {path.name}' and a 'grid'.")
     try:
         spec = SweepFile.parse(data)
     except InputError as err:

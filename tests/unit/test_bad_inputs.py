@@ -1,0 +1,497 @@
+"""Every bad input gets one clear message and a non-zero exit (issue 17).
+
+A corpus of bad inputs, generated here from the examples and from small files written by the
+tests, is given to the command line in this process (``seacable.cli.main(argv)``). For each the
+test asserts:
+
+* the exit status is not 0 (2 for a user error, never 3: an internal error is a bug),
+* stderr holds one ``seacable: error:`` message that names the key, the option, the variable or
+  the file that is wrong,
+* nothing prints a traceback.
+
+Classes: case files (wrong types, missing keys, unknown keys, NaN / inf / negative / zero values
+of every numeric field of several case types, absurd sizes), command-line options (numbers out of
+range, not numbers, scheduler addresses), paths (output inside a file, a folder, a read-only
+place; missing, binary or empty inputs), motion CSVs, result files (NetCDF) and sweep files.
+A few subprocess tests check the exit status through the console script.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from seacable.cli import main
+from seacable.results import ANALYSIS_VARIABLES
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+
+#: a MoorDyn input file: the OC3-Hywind line (see examples/oc3_hywind_static.yaml) from anchor to vessel
+MOORDYN = """--------------------- MoorDyn Input File ------------------------------------
+Test: one chain line from an anchor to a vessel point
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA     BA/-zeta    EI    Cd     Ca    CdAx    CaAx
+(name)     (m)     (kg/m)     (N)    (N-s/-)   (N-m^2) (-)    (-)   (-)     (-)
+chain      0.09    77.7066   384.243E6  -0.8     0     1.6    1.0   0.4     0.5
+---------------------- POINTS --------------------------------
+ID  Attachment  X       Y     Z      M     V      CdA   CA
+(-)   (-)      (m)     (m)   (m)    (kg)  (m^3)  (m^2) (-)
+1     Fixed   853.87   0   -320.0    0     0      0     0
+2     Vessel    5.2    0    -70.0    0     0      0     0
+---------------------- LINES --------------------------------------
+ID   LineType  AttachA  AttachB  UnstrLen  NumSegs  Outputs
+(-)   (-)       (-)      (-)       (m)       (-)      (-)
+1     chain      1        2       902.2      20        -
+---------------------- OPTIONS -----------------------------------------
+320      WtrDpth
+---------------------- OUTPUTS -----------------------------------------
+END
+------------------------- need this line -------------------------------------
+"""
+
+
+class Bad:
+    """One bad input: the command line, the words its message must hold, and how to build its files."""
+
+    def __init__(self, id_, argv, names, files=None, mark=None):
+        self.id, self.argv, self.names, self.files, self.mark = id_, argv, names, files or {}, mark
+
+    def param(self):
+        marks = [self.mark] if self.mark is not None else []
+        return pytest.param(self, id=self.id, marks=marks)
+
+
+def _example(name: str) -> dict:
+    return yaml.safe_load((EXAMPLES / name).read_text(encoding="utf-8"))
+
+
+# --- case files --------------------------------------------------------------------------------
+
+#: case files whose numbers are mutated: analyses of every model (statics, modal, towed, laying,
+#: towline, mooring) -- file name -> the command that checks it
+CASE_BASES = {
+    "oc3_hywind_static.yaml": "validate",         # static
+    "oc3_hywind_pushover.yaml": "run",            # pushover
+    "oc3_hywind_modes.yaml": "validate",          # modal
+    "paper000_steady_statics.yaml": "run",        # towed_steady
+    "paper002_vertical_cable.yaml": "validate",   # vertical_modes
+    "paper000_turn.yaml": "run",                  # towed_dynamic
+    "paper001_lay_2ms_50m.yaml": "validate",      # laying_dynamic
+    "paper003_zigzag.yaml": "run",                # towline_dynamic
+}
+
+#: numeric keys that must be > 0 wherever they appear (a zero or negative value is meaningless)
+POSITIVE = {"diameter", "mass_per_length", "axial_stiffness", "length", "water_density", "gravity", "depth",
+            "duration", "time_step", "output_interval", "n_nodes", "n_elements", "segment_length", "period",
+            "n_modes", "n_offsets"}
+
+
+def _leaves(data, path=()):
+    """(path, value) of every number in nested mappings and lists."""
+    items = data.items() if isinstance(data, dict) else enumerate(data) if isinstance(data, list) else ()
+    for k, v in items:
+        if isinstance(v, (dict, list)):
+            yield from _leaves(v, path + (k,))
+        elif isinstance(v, (int, float)) and not isinstance(v, bool):
+            yield path + (k,), v
+
+
+def _mappings(data, path=()):
+    """Paths of every mapping (the case itself first)."""
+    if isinstance(data, dict):
+        yield path
+        for k, v in data.items():
+            yield from _mappings(v, path + (k,))
+    elif isinstance(data, list):
+        for i, v in enumerate(data):
+            yield from _mappings(v, path + (i,))
+
+
+def _set(data, path, value):
+    data = copy.deepcopy(data)
+    node = data
+    for p in path[:-1]:
+        node = node[p]
+    node[path[-1]] = value
+    return data
+
+
+def _delete(data, path):
+    data = copy.deepcopy(data)
+    node = data
+    for p in path[:-1]:
+        node = node[p]
+    del node[path[-1]]
+    return data
+
+
+def _key(path) -> str:
+    """The word a message must name: the last key of the path (a list item names its list)."""
+    keys = [p for p in path if isinstance(p, str)]
+    return keys[-1]
+
+
+def _tag(path) -> str:
+    return ".".join(str(p) for p in path)
+
+
+def _case_corpus() -> list[Bad]:
+    out = []
+    for name, command in CASE_BASES.items():
+        base = _example(name)
+        stem = name.removesuffix(".yaml")
+        for path, value in _leaves(base):
+            key = _key(path)
+            bad_values = {"nan": math.nan, "inf": math.inf, "text": "abc"}
+            if key in POSITIVE and not isinstance(path[-1], int):
+                bad_values.update(zero=0, negative=-abs(value) if value else -1.0)
+            for label, bad in bad_values.items():
+                out.append(Bad(f"case-{stem}-{_tag(path)}-{label}", [command, "{case}"], [key],
+                               {"case": _set(base, path, bad)}))
+        # wrong types of whole blocks, unknown keys, missing keys
+        for path in _mappings(base):
+            if not path:
+                continue
+            out.append(Bad(f"case-{stem}-{_tag(path)}-list", [command, "{case}"], [_key(path)],
+                           {"case": _set(base, path, [1, 2])}))
+            out.append(Bad(f"case-{stem}-{_tag(path)}-unknown", [command, "{case}"], ["colour"],
+                           {"case": _set(base, path + ("colour",), "red")}))
+        for required in ("line", "analysis"):
+            out.append(Bad(f"case-{stem}-missing-{required}", [command, "{case}"], [required],
+                           {"case": _delete(base, (required,))}))
+        out.append(Bad(f"case-{stem}-missing-analysis-type", [command, "{case}"], ["type"],
+                       {"case": _delete(base, ("analysis", "type"))}))
+        out.append(Bad(f"case-{stem}-unknown-top", [command, "{case}"], ["colour"],
+                       {"case": {**base, "colour": "red"}}))
+        out.append(Bad(f"case-{stem}-analysis-type", [command, "{case}"], ["type"],
+                       {"case": _set(base, ("analysis", "type"), "no_such_analysis")}))
+    return out
+
+
+# --- command-line options ----------------------------------------------------------------------
+
+STATIC = str(EXAMPLES / "oc3_hywind_static.yaml")
+
+
+def _option_corpus() -> list[Bad]:
+    out = []
+    floats = ("0", "-0.1", "nan", "inf", "-inf", "abc", "1e400x")
+    for option in ("--time-step", "--duration", "--output-interval"):
+        for value in floats:
+            out.append(Bad(f"run{option}={value}", ["run", "{moordyn}", option, value, "--no-plots"], [option]))
+    for option in ("--max-steps", "--max-memory", "--max-cases"):
+        for command, target in (("run", STATIC), ("validate", STATIC), ("sweep", "{sweep}")):
+            for value in ("0", "-5", "nan", "inf", "abc"):
+                out.append(Bad(f"{command}{option}={value}", [command, target, option, value], [option]))
+    for option in ("--fps", "--max-frames"):
+        for value in ("0", "-3", "nan", "abc", "1.5", "inf"):
+            out.append(Bad(f"animate{option}={value}", ["animate", "{nc_lay}", option, value], [option]))
+    for value in ("0", "-1", "nan", "1.5", "abc"):
+        out.append(Bad(f"sweep--workers={value}", ["sweep", "{sweep}", "--workers", value], ["--workers"]))
+    for value in ("not a scheduler", "http://host:8786", "tcp://host", "host:99999", "tcp://:8786", "", "tcp://a b:1"):
+        out.append(Bad(f"sweep--scheduler={value!r}", ["sweep", "{sweep}", "--scheduler", value], ["--scheduler"]))
+    out.append(Bad("sweep-scheduler-unreachable", ["sweep", "{sweep}", "--scheduler", "tcp://127.0.0.1:9"],
+                   ["scheduler", "127.0.0.1:9"]))
+    out.append(Bad("sweep-workers-and-scheduler", ["sweep", "{sweep}", "--workers", "2", "--scheduler",
+                                                  "synchronous"], ["workers"]))
+    for command, target in (("run", STATIC), ("validate", STATIC), ("plot", "{nc_static}"), ("animate", "{nc_lay}"),
+                            ("sweep", "{sweep}")):
+        out.append(Bad(f"{command}-unknown-option", [command, target, "--frobnicate"], ["--frobnicate"]))
+    out.append(Bad("schema-unknown-option", ["schema", "--frobnicate"], ["--frobnicate"]))
+    out.append(Bad("unknown-command", ["frobnicate"], ["frobnicate"]))
+    out.append(Bad("run-no-case", ["run"], ["case"]))
+    out.append(Bad("run-a-sweep-file", ["run", "{sweep}"], ["seacable sweep"]))
+    out.append(Bad("sweep-a-case-file", ["sweep", STATIC], ["sweep file"]))
+    for option, value in (("--duration", "10"), ("--time-step", "0.1"), ("--output-interval", "1"),
+                          ("--motion", "m.csv")):
+        out.append(Bad(f"run-yaml{option}", ["run", STATIC, option, value, "--no-plots"], [option]))
+    out.append(Bad("run-moordyn-motion-without-duration", ["run", "{moordyn}", "--motion", "{motion_ok}"],
+                   ["--duration"]))
+    return out
+
+
+# --- paths ---------------------------------------------------------------------------------------
+
+def _path_corpus() -> list[Bad]:
+    out = [
+        Bad("run-o-inside-a-file", ["run", STATIC, "-o", "{file}/b.nc"], ["-o", "is a file"]),
+        Bad("run-o-deep-inside-a-file", ["run", STATIC, "-o", "{file}/x/y/b.nc"], ["-o", "is a file"]),
+        Bad("run-o-a-folder", ["run", STATIC, "-o", "{dir}"], ["-o", "folder"]),
+        Bad("run-o-a-folder-nc", ["run", STATIC, "-o", "{dir_nc}"], ["-o", "folder"]),
+        Bad("run-o-suffix-txt", ["run", STATIC, "-o", "{tmp}/r.txt"], ["-o", ".nc"]),
+        Bad("run-o-no-suffix", ["run", STATIC, "-o", "{tmp}/r"], ["-o", ".nc"]),
+        Bad("run-plot-dir-a-file", ["run", STATIC, "-o", "{tmp}/r.nc", "--plot-dir", "{file}"], ["--plot-dir"]),
+        Bad("run-plot-dir-inside-a-file", ["run", STATIC, "-o", "{tmp}/r.nc", "--plot-dir", "{file}/p"],
+            ["--plot-dir"]),
+        Bad("plot-o-a-file", ["plot", "{nc_static}", "-o", "{file}"], ["-o"]),
+        Bad("plot-o-inside-a-file", ["plot", "{nc_static}", "-o", "{file}/figs"], ["-o"]),
+        Bad("animate-o-a-folder", ["animate", "{nc_lay}", "-o", "{dir}"], ["-o", "folder"]),
+        Bad("animate-o-png", ["animate", "{nc_lay}", "-o", "{tmp}/a.png"], ["-o", ".gif"]),
+        Bad("animate-o-inside-a-file", ["animate", "{nc_lay}", "-o", "{file}/a.gif"], ["-o", "is a file"]),
+        Bad("sweep-o-a-file", ["sweep", "{sweep}", "-o", "{file}"], ["-o"]),
+        Bad("sweep-o-inside-a-file", ["sweep", "{sweep}", "-o", "{file}/out"], ["-o"]),
+    ]
+    if Path("/proc").is_dir():   # a read-only place even for root (the tests may run as root)
+        out += [Bad("run-o-read-only", ["run", STATIC, "-o", "/proc/seacable-test/r.nc"], ["-o", "cannot write"]),
+                Bad("run-plot-dir-read-only", ["run", STATIC, "-o", "{tmp}/r.nc", "--plot-dir", "/proc/seacable-p"],
+                    ["--plot-dir", "cannot write"]),
+                Bad("sweep-o-read-only", ["sweep", "{sweep}", "-o", "/proc/seacable-sweep"], ["-o", "cannot write"]),
+                Bad("plot-o-read-only", ["plot", "{nc_static}", "-o", "/proc/seacable-figs"], ["-o", "cannot write"])]
+    for command in ("run", "validate", "sweep"):
+        for kind in ("missing", "dir", "binary", "empty", "text"):
+            out.append(Bad(f"{command}-input-{kind}", [command, "{" + kind + "_yaml}"], ["{" + kind + "_yaml}"]))
+    return out
+
+
+# --- motion CSVs ---------------------------------------------------------------------------------
+
+MOTIONS = {
+    "missing": None,
+    "dir": "<dir>",
+    "binary": b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\x00",
+    "latin1": "time,x\n0,1\n1,2\n# caf\xe9\n".encode("latin-1"),
+    "empty": "",
+    "blank": "\n\n   \n",
+    "comments-only": "# nothing\n# here\n",
+    "header-only": "time,x,y,z\n",
+    "one-row": "time,x,y,z\n0,0,0,0\n",
+    "text-values": "time,x\n0,a\n1,b\n",
+    "nan-values": "time,x\n0,nan\n1,0\n",
+    "inf-time": "time,x\n0,0\ninf,1\n",
+    "time-decreasing": "time,x\n0,0\n2,1\n1,2\n",
+    "time-repeated": "time,x\n0,0\n0,1\n",
+    "no-time": "t,x\n0,0\n1,1\n",
+    "no-motion-column": "time,q\n0,0\n1,1\n",
+    "ragged": "time,x,y\n0,0\n1,1,1,1\n",
+    "platform-no-time": "surge,heave\n0,0\n1,1\n",
+    "platform-text": "time,surge\n0,x\n1,y\n",
+}
+
+
+def _motion_corpus() -> list[Bad]:
+    return [Bad(f"motion-{name}", ["run", "{moordyn}", "--duration", "10", "--no-plots", "--motion",
+                                   "{motion_" + name + "}"], ["motion file"]) for name in MOTIONS]
+
+
+# --- result files (NetCDF) -----------------------------------------------------------------------
+
+def _netcdf_corpus() -> list[Bad]:
+    out = []
+    for command in ("plot", "animate"):
+        for kind in ("missing", "dir", "text", "empty", "no_analysis", "unknown_analysis", "truncated"):
+            out.append(Bad(f"{command}-nc-{kind}", [command, "{nc_" + kind + "}"], ["{nc_" + kind + "}"]))
+    for analysis, names in ANALYSIS_VARIABLES.items():
+        for name in names:
+            out.append(Bad(f"plot-{analysis}-without-{name}", ["plot", "{nc_" + analysis + "_no_" + name + "}"],
+                           [name, analysis]))
+            if analysis in ("laying_dynamic", "towline_dynamic"):
+                out.append(Bad(f"animate-{analysis}-without-{name}",
+                               ["animate", "{nc_" + analysis + "_no_" + name + "}"], [name, analysis]))
+    out.append(Bad("animate-static-result", ["animate", "{nc_static}", "-o", "{tmp}/a.gif"], ["laying_dynamic"]))
+    return out
+
+
+# --- sweep files ---------------------------------------------------------------------------------
+
+def _sweep_corpus() -> list[Bad]:
+    big = [float(v) for v in range(5000)]
+    return [
+        Bad("sweep-5000x5000-grid", ["sweep", "{sweep_big}"], ["cases", "--max-cases"]),
+        Bad("validate-5000x5000-grid", ["validate", "{sweep_big}"], ["cases", "--max-cases"]),
+        Bad("sweep-5000x5000-ranges", ["sweep", "{sweep_big_ranges}"], ["cases", "--max-cases"]),
+        Bad("sweep-max-cases-1", ["sweep", "{sweep}", "--max-cases", "1"], ["cases", "--max-cases"]),
+        Bad("validate-sweep-one-case-invalid", ["validate", "{sweep_one_bad}"], ["depth", "invalid"]),
+        Bad("validate-sweep-case-cannot-reach", ["validate", "{sweep_short}"], ["case 1", "invalid"]),
+        Bad("validate-sweep-all-invalid", ["validate", "{sweep_all_bad}"], ["depth", "invalid"]),
+        Bad("sweep-unknown-path", ["sweep", "{sweep_unknown_path}"], ["environment.dept"]),
+        Bad("sweep-bad-path", ["sweep", "{sweep_bad_path}"], ["a..b"]),
+        Bad("sweep-empty-grid", ["sweep", "{sweep_empty_grid}"], ["grid"]),
+        Bad("sweep-empty-list", ["sweep", "{sweep_empty_list}"], ["environment.depth"]),
+        Bad("sweep-grid-and-table", ["sweep", "{sweep_grid_and_table}"], ["grid", "table"]),
+        Bad("sweep-missing-table", ["sweep", "{sweep_missing_table}"], ["nope.csv"]),
+        Bad("sweep-ragged-table", ["sweep", "{sweep_ragged_table}"], ["line 3"]),
+        Bad("sweep-no-base", ["sweep", "{sweep_no_base}"], ["base"]),
+        Bad("sweep-range-zero-step", ["sweep", "{sweep_zero_step}"], ["step"]),
+        Bad("sweep-scalar-values", ["sweep", "{sweep_scalar}"], ["environment.depth"]),
+    ] + [Bad(f"sweep-{len(big)}-{k}", ["validate", "{sweep_big}", "--max-cases", v], ["--max-cases"])
+         for k, v in (("zero", "0"), ("nan", "nan"))]
+
+
+# --- sizes ---------------------------------------------------------------------------------------
+
+PREPARE = pytest.mark.xfail(strict=False, reason="waits for the models' prepare_<analysis> (check_run_size): "
+                                                 "merged from the model branches")
+
+
+def _size_corpus() -> list[Bad]:
+    out = []
+    for name, key in (("paper000_turn.yaml", "duration"), ("paper001_lay_2ms_50m.yaml", "duration"),
+                      ("paper003_zigzag.yaml", "duration")):
+        base = _example(name)
+        for value in (1e300, 1e12):
+            out.append(Bad(f"size-{name.removesuffix('.yaml')}-{key}={value:g}", ["validate", "{case}"],
+                           ["time steps"], {"case": _set(base, ("analysis", key), value)}, mark=PREPARE))
+    return out
+
+
+# --- items whose fix is on another branch of issue 17 (xfail until merged) ---------------------
+
+def _waits(branch: str, what: str):
+    return pytest.mark.xfail(strict=False, reason=f"waits for {branch}: {what}")
+
+
+def _other_corpus() -> list[Bad]:
+    static = (EXAMPLES / "oc3_hywind_static.yaml").read_text(encoding="utf-8")
+    turn = _example("paper000_turn.yaml")
+    lay = _example("paper001_lay_2ms_50m.yaml")
+    return [
+        Bad("yaml-duplicate-analysis", ["validate", "{dup}"], ["analysis"],
+            {"dup": static + "analysis:\n  type: static\n  fairlead: [800.0, -70.0]\n"},
+            mark=_waits("fix17-moordyn", "YAML duplicate keys")),
+        Bad("moordyn-negative-length", ["run", "{md}", "--no-plots"], ["UnstrLen"],
+            {"md": MOORDYN.replace("902.2      20", "-902.2     20")},
+            mark=_waits("fix17-moordyn", "every MoorDyn number checked")),
+        Bad("towed-zero-bending-stiffness", ["validate", "{case}"], ["bending_stiffness"],
+            {"case": _set(turn, ("line_types", "paper000_cable", "bending_stiffness"), 0.0)},
+            mark=_waits("fix17-towed", "prepare_towed_dynamic")),
+        Bad("laying-ship-speed-0", ["validate", "{case}"], ["speed"],
+            {"case": _set(lay, ("analysis", "ship", "speed"), 0.0)},
+            mark=_waits("fix17-laying", "ship speed 0 refused")),
+    ]
+
+
+CORPUS = (_case_corpus() + _other_corpus() + _option_corpus() + _path_corpus() + _motion_corpus() + _netcdf_corpus()
+          + _sweep_corpus() + _size_corpus())
+
+
+def test_the_corpus_is_large_and_each_id_unique():
+    assert len(CORPUS) >= 200
+    assert len({b.id for b in CORPUS}) == len(CORPUS)
+
+
+# --- the files the corpus refers to --------------------------------------------------------------
+
+
+
+def _write(path: Path, content) -> str:
+    if content is None:
+        return str(path)  # missing
+    if content == "<dir>":
+        path.mkdir()
+    elif isinstance(content, bytes):
+        path.write_bytes(content)
+    elif isinstance(content, (dict, list)):
+        path.write_text(yaml.safe_dump(content, sort_keys=False), encoding="utf-8")
+    else:
+        path.write_text(content, encoding="utf-8")
+    return str(path)
+
+
+def _result(analysis: str, drop: str | None = None) -> xr.Dataset:
+    """A labelled result of ``analysis`` holding every variable of its schema but ``drop``."""
+    data = {}
+    for name in ANALYSIS_VARIABLES[analysis]:
+        if name != drop:
+            data[name] = xr.Variable(("k",), np.arange(3.0), attrs={"units": "1", "long_name": name})
+    return xr.Dataset(data, attrs={"analysis": analysis, "title": analysis})
+
+
+def _sweep_file(tmp: Path, name: str, **spec) -> str:
+    return _write(tmp / f"{name}.yaml", {"name": name, "base": STATIC, **spec})
+
+
+@pytest.fixture(scope="module")
+def shared(tmp_path_factory):
+    """Files shared by many corpus items (results, sweeps, inputs of each kind)."""
+    tmp = tmp_path_factory.mktemp("bad")
+    files = {"tmp": str(tmp), "moordyn": _write(tmp / "lines.txt", MOORDYN)}
+    files["file"] = _write(tmp / "a_file", "not a folder")
+    (tmp / "a_dir").mkdir()
+    files["dir"] = str(tmp / "a_dir")
+    (tmp / "dir.nc").mkdir()
+    files["dir_nc"] = str(tmp / "dir.nc")
+    files["motion_ok"] = _write(tmp / "ok.csv", "time,x\n0,0\n100,1\n")
+    for name, content in MOTIONS.items():
+        files[f"motion_{name}"] = _write(tmp / f"motion_{name}.csv", content)
+    for kind, content in (("missing", None), ("dir", "<dir>"), ("binary", b"\x00\x01\x02\xff" * 64),
+                          ("empty", ""), ("text", "just some text, not a mapping\n")):
+        files[f"{kind}_yaml"] = _write(tmp / f"{kind}.yaml", content)
+    # result files
+    for kind, content in (("missing", None), ("dir", "<dir>"), ("text", "not a netcdf\n"), ("empty", b"")):
+        files[f"nc_{kind}"] = _write(tmp / f"nc_{kind}.nc", content)
+    for analysis in ANALYSIS_VARIABLES:
+        path = tmp / f"{analysis}.nc"
+        _result(analysis).to_netcdf(path)
+        files[f"nc_{analysis}"] = str(path)
+        for name in ANALYSIS_VARIABLES[analysis]:
+            path = tmp / f"{analysis}_no_{name}.nc"
+            _result(analysis, name).to_netcdf(path)
+            files[f"nc_{analysis}_no_{name}"] = str(path)
+    files["nc_lay"] = files["nc_laying_dynamic"]
+    files["nc_static"] = files["nc_static"]
+    no_attr = _result("static")
+    no_attr.attrs = {}
+    no_attr.to_netcdf(tmp / "nc_no_analysis.nc")
+    files["nc_no_analysis"] = str(tmp / "nc_no_analysis.nc")
+    unknown = _result("static")
+    unknown.attrs["analysis"] = "flying"
+    unknown.to_netcdf(tmp / "nc_unknown_analysis.nc")
+    files["nc_unknown_analysis"] = str(tmp / "nc_unknown_analysis.nc")
+    whole = (tmp / "static.nc").read_bytes()
+    files["nc_truncated"] = _write(tmp / "nc_truncated.nc", whole[: len(whole) // 3])
+    # sweep files
+    files["sweep"] = _sweep_file(tmp, "sweep", grid={"environment.depth": [320.0, 330.0]})
+    big = [float(300 + v) for v in range(5000)]
+    files["sweep_big"] = _sweep_file(tmp, "sweep_big", grid={"environment.depth": big,
+                                                             "environment.water_density": big})
+    files["sweep_big_ranges"] = _sweep_file(tmp, "sweep_big_ranges", grid={
+        "environment.depth": {"start": 300.0, "stop": 400.0, "num": 5000},
+        "environment.water_density": {"start": 1000.0, "stop": 1030.0, "num": 5000}})
+    files["sweep_one_bad"] = _sweep_file(tmp, "sweep_one_bad", grid={"environment.depth": [320.0, -5.0]})
+    files["sweep_all_bad"] = _sweep_file(tmp, "sweep_all_bad", grid={"environment.depth": [-1.0, -5.0]})
+    files["sweep_short"] = _sweep_file(tmp, "sweep_short", grid={"line.length": [902.2, 400.0]})
+    files["sweep_unknown_path"] = _sweep_file(tmp, "sweep_unknown_path", grid={"environment.dept": [1.0]})
+    files["sweep_bad_path"] = _sweep_file(tmp, "sweep_bad_path", grid={"a..b": [1.0]})
+    files["sweep_empty_grid"] = _sweep_file(tmp, "sweep_empty_grid", grid={})
+    files["sweep_empty_list"] = _sweep_file(tmp, "sweep_empty_list", grid={"environment.depth": []})
+    files["sweep_grid_and_table"] = _sweep_file(tmp, "sweep_grid_and_table", grid={"environment.depth": [1.0]},
+                                                table="t.csv")
+    files["sweep_missing_table"] = _sweep_file(tmp, "sweep_missing_table", table="nope.csv")
+    _write(tmp / "ragged.csv", "environment.depth,environment.water_density\n320,1025\n330\n")
+    files["sweep_ragged_table"] = _sweep_file(tmp, "sweep_ragged_table", table="ragged.csv")
+    files["sweep_no_base"] = _write(tmp / "sweep_no_base.yaml", {"name": "x", "grid": {"environment.depth": [1.0]},
+                                                                "table": "t.csv"})
+    files["sweep_zero_step"] = _sweep_file(tmp, "sweep_zero_step", grid={
+        "environment.depth": {"start": 300.0, "stop": 400.0, "step": 0.0}})
+    files["sweep_scalar"] = _sweep_file(tmp, "sweep_scalar", grid={"environment.depth": 320.0})
+    return files
+
+
+def _fill(text: str, files: dict) -> str:
+    for key, value in files.items():
+        text = text.replace("{" + key + "}", value)
+    return text
+
+
+@pytest.mark.parametrize("bad", [b.param() for b in CORPUS])
+def test_bad_input_gets_one_clear_message(bad, shared, tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)   # default outputs (CASE.nc, sweep folders) land here
+    files = dict(shared)
+    for key, content in bad.files.items():
+        suffix = ".txt" if key == "md" else ".yaml"   # a MoorDyn file is found by its text, not its suffix
+        files[key] = _write(tmp_path / f"{key}{suffix}", content)
+    argv = [_fill(a, files) for a in bad.argv]
+    status = main(argv)
+    out, err = capsys.readouterr()
+    assert status not in (0, 3), (status, err)
+    assert status == 2, (status, err)
+    assert "Traceback" not in out + err
+    assert "seacable: error:" in err, err
+    for name in bad.names:
+        assert _fill(name, files) in err, (name, err)
