@@ -325,10 +325,6 @@ def _sweep_corpus() -> list[Bad]:
 
 # --- sizes ---------------------------------------------------------------------------------------
 
-PREPARE = pytest.mark.xfail(strict=False, reason="waits for the models' prepare_<analysis> (check_run_size): "
-                                                 "merged from the model branches")
-
-
 def _size_corpus() -> list[Bad]:
     out = []
     for name, key in (("paper000_turn.yaml", "duration"), ("paper001_lay_2ms_50m.yaml", "duration"),
@@ -336,15 +332,11 @@ def _size_corpus() -> list[Bad]:
         base = _example(name)
         for value in (1e300, 1e12):
             out.append(Bad(f"size-{name.removesuffix('.yaml')}-{key}={value:g}", ["validate", "{case}"],
-                           ["time steps"], {"case": _set(base, ("analysis", key), value)}, mark=PREPARE))
+                           ["time steps"], {"case": _set(base, ("analysis", key), value)}))
     return out
 
 
-# --- items whose fix is on another branch of issue 17 (xfail until merged) ---------------------
-
-def _waits(branch: str, what: str):
-    return pytest.mark.xfail(strict=False, reason=f"waits for {branch}: {what}")
-
+# --- items of issue 17 fixed in the models and readers -----------------------------------------
 
 def _other_corpus() -> list[Bad]:
     static = (EXAMPLES / "oc3_hywind_static.yaml").read_text(encoding="utf-8")
@@ -352,17 +344,18 @@ def _other_corpus() -> list[Bad]:
     lay = _example("paper001_lay_2ms_50m.yaml")
     return [
         Bad("yaml-duplicate-analysis", ["validate", "{dup}"], ["analysis"],
-            {"dup": static + "analysis:\n  type: static\n  fairlead: [800.0, -70.0]\n"},
-            mark=_waits("fix17-moordyn", "YAML duplicate keys")),
-        Bad("moordyn-negative-length", ["run", "{md}", "--no-plots"], ["UnstrLen"],
-            {"md": MOORDYN.replace("902.2      20", "-902.2     20")},
-            mark=_waits("fix17-moordyn", "every MoorDyn number checked")),
+            {"dup": static + "analysis:\n  type: static\n  fairlead: [800.0, -70.0]\n"}),
+        # a negative UnstrLen is MoorDyn's factor on the end points' distance: -0.5 cannot reach
+        Bad("moordyn-negative-length", ["run", "{md}", "--no-plots"], ["line 1", "cannot span"],
+            {"md": MOORDYN.replace("902.2      20", "-0.5       20")}),
+        Bad("moordyn-huge-numsegs", ["run", "{md}", "--no-plots"], ["NumSegs"],
+            {"md": MOORDYN.replace("902.2      20", "902.2      100000000")}),
+        Bad("moordyn-huge-duration", ["run", "{md}", "--no-plots", "--duration", "1e12"], ["time steps"],
+            {"md": MOORDYN}),
         Bad("towed-zero-bending-stiffness", ["validate", "{case}"], ["bending_stiffness"],
-            {"case": _set(turn, ("line_types", "paper000_cable", "bending_stiffness"), 0.0)},
-            mark=_waits("fix17-towed", "prepare_towed_dynamic")),
+            {"case": _set(turn, ("line_types", "paper000_cable", "bending_stiffness"), 0.0)}),
         Bad("laying-ship-speed-0", ["validate", "{case}"], ["speed"],
-            {"case": _set(lay, ("analysis", "ship", "speed"), 0.0)},
-            mark=_waits("fix17-laying", "ship speed 0 refused")),
+            {"case": _set(lay, ("analysis", "ship", "speed"), 0.0)}),
     ]
 
 
