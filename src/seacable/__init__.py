@@ -40,11 +40,12 @@ from .laying.inputs import Bathymetry, PayoutBottomTension, PayoutRate, PayoutSl
 from .mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
-from .simulate import run
+from .simulate import check, run
 from .sweeps import Range, Sweep, load_sweep, sweep
 
 __all__ = [
     "__version__",
+    "check",
     # data model
     "LineType",
     "Segment",

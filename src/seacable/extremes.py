@@ -34,10 +34,11 @@ TOP_TENSION = {
 #: Time series of each analysis reduced to their extremes (max and min) and to their end value.
 _SERIES = {
     "laying_dynamic": {"extremes": ("bottom_tension",),
-                       "end": ("entry_angle", "top_tension", "touchdown_x", "bottom_tension", "suspended_length",
-                               "slack")},
-    "towed_dynamic": {"extremes": ("lower_end_depth",), "end": ("lower_end_depth",)},
-    "towline_dynamic": {"extremes": ("barge_tension",), "end": ("barge_tension", "barge_speed")},
+                       "end": ("entry_angle", "top_tension", "touchdown_x", "layback", "bottom_tension",
+                               "suspended_length", "slack")},
+    "towed_dynamic": {"extremes": ("lower_end_depth", "layback", "seabed_clearance"),
+                      "end": ("lower_end_depth", "layback")},
+    "towline_dynamic": {"extremes": ("barge_tension", "seabed_clearance"), "end": ("barge_tension", "barge_speed")},
     "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length"), "end": ()},
 }
 
@@ -114,8 +115,9 @@ def case_extremes(ds: xr.Dataset) -> dict[str, xr.Variable]:
         ``snap_count`` and ``snap_load_max`` (the largest peak within 2 s after an element pulled
         taut from slack; 0 when none did), then every scalar variable of the result and the
         model's own figures: ``NAME_max`` and ``NAME_min`` of its key time series and ``NAME_end``,
-        their mean over the last tenth of the run. Laying adds ``layback_end``, from the water
-        entry back to the touchdown.
+        their mean over the last tenth of the run (``layback_end``: the water entry or tow point to
+        the touchdown or lower end; ``seabed_clearance_min``: the deepest a line went through a
+        seabed its model does not contact).
     """
     analysis = ds.attrs.get("analysis")
     out: dict[str, xr.Variable] = {}
@@ -147,10 +149,6 @@ def case_extremes(ds: xr.Dataset) -> dict[str, xr.Variable]:
     for name in series.get("end", ()):
         if name in ds:
             out[f"{name}_end"] = _scalar(_end_mean(ds[name]), ds[name], "end of run:")
-    if analysis == "laying_dynamic":
-        layback = ds["ship_x"] - ds["touchdown_x"]
-        layback.attrs.update(units="m", long_name="layback (water entry to touchdown)")
-        out["layback_end"] = _scalar(_end_mean(layback), layback, "end of run:")
     if analysis == "modal" and "frequency" in ds:
         out["frequency_min"] = _scalar(ds["frequency"].min(), ds["frequency"], "lowest")
     return out
