@@ -146,29 +146,40 @@ def test_moordyn_itself_puts_the_seabed_at_the_deepest_point(tmp_path):
     assert theirs == pytest.approx(-100.0, abs=1e-3) and ours == pytest.approx(-100.0, abs=1e-3)
 
 
-def _peer_deck(pattern):
-    for base in (Path(__file__).parents[3] / ".." / "shared", Path("/work/shared")):
-        found = sorted((base / "peers" / "moordyn").glob(pattern)) if (base / "peers").is_dir() else []
-        if found:
-            return found[0]
-    return None
+def _oc4_deck() -> str:
+    """The OC4-DeepCwind semi-submersible's mooring, from its definition's published numbers, no WtrDpth.
+
+    Robertson et al. (2014), Definition of the semisubmersible floating system for phase II of OC4,
+    NREL/TP-5000-60601, section 3.4: 200 m of water; three catenary chains 120 deg apart, 835.5 m long,
+    0.0766 m in diameter, 113.35 kg/m, EA 753.6 MN; fairleads 14 m below the still water level at a radius
+    of 40.868 m, anchors at 837.6 m on the seabed. OpenFAST's regression deck gives neither the depth nor
+    a seabed, so MoorDyn takes the seabed at the anchors.
+    """
+    points, lines = [], []
+    for k, heading in enumerate((60.0, 180.0, 300.0)):
+        c, s_ = math.cos(math.radians(heading)), math.sin(math.radians(heading))
+        points.append(f"{2 * k + 1}  Fixed   {837.6 * c:.4f} {837.6 * s_:.4f} -200.0  0 0 0 0")
+        points.append(f"{2 * k + 2}  Vessel  {40.868 * c:.4f} {40.868 * s_:.4f} -14.0   0 0 0 0")
+        lines.append(f"{k + 1}  main  {2 * k + 1}  {2 * k + 2}  835.5  20  -")
+    main = "main  0.0766  113.35  7.536E8  -1.0  0  2.0  0.8  0.4  0.25"
+    return deck(types=(main,), points=tuple(points), lines=tuple(lines), options=("3.0e6 kBot",))
 
 
-def test_oc4_semisubmersible_deck_against_moorpy():
-    """OpenFAST's OC4-DeepCwind semi deck (no WtrDpth; anchors at 200 m): MoorPy's fairlead tension.
-
-    The issue: MoorDyn 1.091 MN and MoorPy 1.106 MN, seacable 1.322 MN (the lines hung below their
-    anchors). Read from ../shared/peers/moordyn when a copy is there; MoorPy runs live."""
-    path = _peer_deck("*OC4*")
-    if path is None:
-        pytest.skip("no OC4 deck in ../shared/peers/moordyn")
+def test_oc4_semisubmersible_without_wtrdpth_against_moorpy(tmp_path):
+    """The issue's case: without WtrDpth the lines hung below their anchors (1.322 MN at the fairleads of
+    OpenFAST's deck, where MoorDyn gives 1.091 MN and MoorPy 1.106 MN). With the seabed at the anchors each
+    fairlead tension matches MoorPy's elastic catenary with seabed contact, run live on the same deck
+    (1.0988 MN here: the deck is rebuilt from the definition's numbers, not OpenFAST's file)."""
     mp = pytest.importorskip("moorpy")
+    path = _file(tmp_path, _oc4_deck())
     ds = run_moordyn_file(path)
-    ms = mp.System(file=str(path), depth=float(ds.attrs["depth"]))
+    assert ds.attrs["depth"] == 200.0
+    ms = mp.System(file=str(path), depth=200.0)
     ms.initialize()
     ms.solveEquilibrium()
     theirs = np.array([line.TB for line in ms.lineList])
-    # 20 elements per 835 m line against MoorPy's continuous catenary: measured 1.7e-3; 5e-3
+    # 20 elements of 42 m per line against MoorPy's continuous catenary, the touchdown inside an element:
+    # measured 2.0e-3 (the old reader: 1.33 MN, +21 %); 5e-3 leaves room for where the touchdown falls
     assert ds.fairlead_tension.values == pytest.approx(theirs, rel=5e-3)
 
 
