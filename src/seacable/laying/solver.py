@@ -24,6 +24,10 @@ Events after each step:
 Controls: the ship speed follows its schedule, slowed to ``repeater_speed`` while a repeater is in
 the water and brought back at the given acceleration after its touchdown; the payout speed follows a
 schedule, a target slack (with the paper's slope adjustment, CPRATE) or a target bottom tension.
+The bottom-tension control is solved with the step, from the bottom tension at its end (backward
+Euler for the cable and its control together, :meth:`_Lay.implicit_payout`): from the tension at the
+start of the step the loop rings at the step frequency once ``dt`` is a fair part of a segment's
+passage (at the default 4 steps per segment).
 The time step is set from the speed: ``dt = l / (n V)`` for segment length ``l``, ``n`` steps per
 segment and ``V`` the larger of the ship and payout speeds (the paper's "time step inversely
 proportional to ship speed").
@@ -160,6 +164,10 @@ class _Cable:
         """Room for a row below ``lo`` (a node picked up off the seabed)."""
         if self.lo < 1:
             self._move(_MARGIN)
+
+
+class _StepFailed(Exception):
+    """A trial step of the implicit payout control did not converge (the step is retried with dt / 2)."""
 
 
 def _rounds(n_segments: int) -> int:
@@ -356,7 +364,7 @@ class _Lay:
             _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
         return status, it, res, vs_new, x_new
 
-    def implicit_payout(self, t: float, dt: float, in_water: bool, vc0: float, kernel_args, saved):
+    def implicit_payout(self, t: float, dt: float, in_water: bool, first, vc0: float, kernel_args, saved):
         """Solve the step together with a bottom-tension payout control (backward Euler for both).
 
         The payout speed of the step is the one the control gives for the bottom tension at the
@@ -368,7 +376,9 @@ class _Lay:
         (bottom tension swinging 0 .. 1200 N around 500 N, nodes landing and lifting in turn).
         ``v - P(T_b(v))`` increases with ``v`` (more payout, less tension, a speed that does not
         grow with it), so its root is unique; it is bracketed from the explicit guess ``vc0`` and
-        found by Brent's method, every evaluation a step from the same start.
+        found by Brent's method, every evaluation a step from the same start (``first`` is the
+        converged step at ``vc0``, as :meth:`step` returns it; ``saved`` the segment lengths,
+        tensions and slack set before it).
 
         Returns
         -------
@@ -381,11 +391,8 @@ class _Lay:
         lo, hi = c.lo, c.hi
         geometry = self.geometry()
         total = 0
-        last = {"v": vc0, "out": None}
-        vs_new = ctl.ship_speed(t + dt, dt, in_water)
-
-        class _Failed(Exception):
-            pass
+        last = {"v": vc0, "out": first}
+        vs_new = first[3]
 
         def g(v: float) -> float:
             nonlocal total
@@ -395,12 +402,11 @@ class _Lay:
                 total += out[1]
                 last["v"], last["out"] = v, out
                 if out[0] != STEP_OK:
-                    raise _Failed
+                    raise _StepFailed
             return v - ctl.payout_speed(t + dt, vs_new, geometry, self.trial_bottom_tension(), dt, commit=False)
 
         xtol = 1e-9 * max(vs_new, vc0, _MIN_SPEED)
         try:
-            last["out"] = None
             ga = g(vc0)
             a = vc0
             if abs(ga) > xtol:
@@ -419,7 +425,7 @@ class _Lay:
                     b = brentq(g, min(a, b), max(a, b), xtol=xtol, rtol=4.0 * np.finfo(float).eps, maxiter=100)
                     if last["v"] != b:
                         g(b)
-        except _Failed:
+        except _StepFailed:
             out = last["out"]
             return out[0], total, out[2], out[3], out[4], last["v"]
         out = last["out"]
@@ -742,8 +748,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
                 status, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
                 iterations += it
                 if status == STEP_OK and implicit:
-                    status, it, res, vs_new, x_new, vc_new = lay.implicit_payout(t, dt, in_water, vc_new, kernel_args,
-                                                                                saved)
+                    status, it, res, vs_new, x_new, vc_new = lay.implicit_payout(
+                        t, dt, in_water, (status, it, res, vs_new, x_new), vc_new, kernel_args, saved)
                     iterations += it
                 ok = status == STEP_OK
                 restore = not ok or (lifted < _MAX_LIFTS and lay.lifts_off())
