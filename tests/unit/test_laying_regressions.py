@@ -118,7 +118,7 @@ def test_bottom_tension_lay_up_a_slope():
     w = TEL35.submerged_weight(1025.0, 9.80665)
     # the mean is the target to the weight of half a segment (as on the flat, test_bottom_tension_lay_over_a_basin);
     # the proportional controller with its 10 s filter follows the shrinking suspended length with a spread of
-    # about 20 N: asserted below a tenth of the target
+    # about 11 N (20 N when the control was explicit): asserted below a tenth of the target
     assert float(np.mean(bottom)) == pytest.approx(500.0, abs=0.5 * w * 5.0)
     assert float(np.std(bottom)) < 50.0
     assert json.loads(ds.attrs["settings"])["lifted_nodes"] < 100

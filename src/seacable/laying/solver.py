@@ -376,7 +376,7 @@ class _Lay:
         (bottom tension swinging 0 .. 1200 N around 500 N, nodes landing and lifting in turn).
         ``v - P(T_b(v))`` increases with ``v`` (more payout, less tension, a speed that does not
         grow with it), so its root is unique; it is bracketed from the explicit guess ``vc0`` and
-        found by Brent's method, every evaluation a step from the same start (``first`` is the
+        found by regula falsi (Illinois), every evaluation a step from the same start (``first`` is the
         converged step at ``vc0``, as :meth:`step` returns it; ``saved`` the segment lengths,
         tensions and slack set before it).
 
@@ -394,37 +394,54 @@ class _Lay:
         last = {"v": vc0, "out": first}
         vs_new = first[3]
 
-        def g(v: float) -> float:
+        known = {}                                  # v -> v - P(T_b(v)); the cable holds the step at last["v"]
+
+        def g(v: float, solve: bool = False) -> float:
             nonlocal total
-            if last["v"] != v or last["out"] is None:
+            if v in known and not solve:
+                return known[v]
+            if last["v"] != v:
                 c.T[lo:hi], c.active[lo:hi] = saved[1], saved[2]
                 out = self.step(t, dt, in_water, v, kernel_args)
                 total += out[1]
                 last["v"], last["out"] = v, out
                 if out[0] != STEP_OK:
                     raise _StepFailed
-            return v - ctl.payout_speed(t + dt, vs_new, geometry, self.trial_bottom_tension(), dt, commit=False)
+            known[v] = v - ctl.payout_speed(t + dt, vs_new, geometry, self.trial_bottom_tension(), dt, commit=False)
+            return known[v]
 
-        xtol = 1e-9 * max(vs_new, vc0, _MIN_SPEED)
+        # speed tolerance: the paid-out length of the step right to 1e-6 of its advance V dt (a bottom tension
+        # right to about 1e-2 N at 8 kN/m, the stiffness above); the bottom tension of a Newton step is itself
+        # only right to EA x its relative tolerance (3e-2 N at 3e7 N and 1e-9), 1e-5 m/s in the control
+        tol_v = 1e-6 * max(vs_new, vc0, _MIN_SPEED)
         try:
-            ga = g(vc0)
-            a = vc0
-            if abs(ga) > xtol:
-                b = vc0 - ga                     # the explicit (fixed-point) update
+            a, ga = vc0, g(vc0)
+            if abs(ga) > tol_v:
+                b = vc0 - ga                         # the explicit (fixed-point) update
                 gb = g(b)
-                grow = 0
-                while ga * gb > 0.0 and grow < 40:   # same side: extrapolate by the secant, widening
-                    step = (b - a) * (-gb / (gb - ga)) if gb != ga else (b - a)
-                    step = math.copysign(min(abs(step), 4.0 * abs(b - a)), step) if step != 0.0 else -gb
-                    a, ga, b = b, gb, max(b + step, 0.0)
-                    gb = g(b)
-                    grow += 1
-                    if b == 0.0 and gb > 0.0:
+                for _ in range(40):                  # same side: extrapolate by the secant, widening
+                    if ga * gb <= 0.0:
                         break
-                if ga * gb <= 0.0 and abs(gb) > xtol:
-                    b = brentq(g, min(a, b), max(a, b), xtol=xtol, rtol=4.0 * np.finfo(float).eps, maxiter=100)
-                    if last["v"] != b:
-                        g(b)
+                    step = -gb * (b - a) / (gb - ga) if gb != ga else b - a
+                    step = math.copysign(min(abs(step), 4.0 * abs(b - a)), step)
+                    a, ga = b, gb
+                    b = max(b + step, 0.0)
+                    gb = g(b)
+                # bracketed: regula falsi (Illinois), to |g| <= tol_v or a bracket of tol_v (a jump of T_b
+                # where a node lands or not)
+                for _ in range(100):
+                    if abs(gb) <= tol_v or abs(b - a) <= tol_v:
+                        break
+                    v = b - gb * (b - a) / (gb - ga)
+                    gv = g(v)
+                    if gv * gb < 0.0:
+                        a, ga = b, gb
+                    else:
+                        ga *= 0.5
+                    b, gb = v, gv
+                if abs(ga) < abs(gb):
+                    b = a
+                g(b, solve=True)
         except _StepFailed:
             out = last["out"]
             return out[0], total, out[2], out[3], out[4], last["v"]
@@ -527,11 +544,11 @@ class _Lay:
         seabed further on.
         """
         c, seabed = self.c, self.seabed
-        for k in range(c.lo + 2, c.hi):      # a seabed rising under the cable holds it up
-            zb = float(seabed.z(c.pos[k, 0]))
-            if c.pos[k, 1] < zb:
-                c.pos[k, 1] = zb
-                c.vel[k, 1] = max(c.vel[k, 1], 0.0)
+        rows = slice(c.lo + 2, c.hi)           # a seabed rising under the cable holds it up
+        zb = seabed.z(c.pos[rows, 0])
+        under = c.pos[rows, 1] < zb
+        c.pos[rows, 1] = np.where(under, zb, c.pos[rows, 1])
+        c.vel[rows, 1] = np.where(under, np.maximum(c.vel[rows, 1], 0.0), c.vel[rows, 1])
         first = self.landing_row(c.pos)
         arrived_slack = not c.active[c.lo]
         for k in range(c.lo + 1, first + 1):
@@ -555,11 +572,10 @@ class _Lay:
 
         One free node is always kept below the water entry.
         """
-        c, seabed = self.c, self.seabed
-        for k in range(c.hi - 2, c.lo, -1):
-            if pos[k, 1] <= float(seabed.z(pos[k, 0])) + 1e-9:
-                return k
-        return c.lo
+        c = self.c
+        rows = pos[c.lo + 1:c.hi - 1]
+        on = np.flatnonzero(rows[:, 1] <= self.seabed.z(rows[:, 0]) + 1e-9)
+        return c.lo + 1 + int(on[-1]) if on.size else c.lo
 
     def trial_bottom_tension(self) -> float:
         """Bottom tension of the step just solved (``c.new_pos``, ``c.T``), not committed. [N]
