@@ -41,8 +41,14 @@ class Control:
         self.speed = speed
         self.off_schedule = abs(speed - self.ship.scheduled(t)) > 1e-12
 
-    def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float) -> float:
-        """Payout speed for ship speed ``vs`` and the present touchdown geometry. [m/s]"""
+    def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float,
+                     commit: bool = True) -> float:
+        """Payout speed for ship speed ``vs`` and the present touchdown geometry. [m/s]
+
+        In bottom-tension mode ``bottom_tension`` is the bottom tension at the end of the step of
+        length ``dt`` [s] (the filter is advanced by backward Euler); ``commit=False`` evaluates the
+        speed for a trial value without advancing the filter.
+        """
         p = self.payout
         if isinstance(p, PayoutRate):
             return schedule_value(t, p.speed, p.times, p.speeds)
@@ -57,7 +63,9 @@ class Control:
         arc = math.sqrt(1.0 + slope * slope)
         if isinstance(p, PayoutSlack):
             return max(td_speed * ((1.0 + p.slack) * arc - slope / sin_alpha), 0.0)
-        self.bottom_filtered += min(dt / p.time_constant, 1.0) * (bottom_tension - self.bottom_filtered)
+        filtered = self.bottom_filtered + min(dt / p.time_constant, 1.0) * (bottom_tension - self.bottom_filtered)
+        if commit:
+            self.bottom_filtered = filtered
         feed = td_speed * (arc / (1.0 + p.tension * self.compliance) - slope / sin_alpha)
-        error = (self.bottom_filtered - p.tension) / (self.weight * max(h_td, 1e-9))
+        error = (filtered - p.tension) / (self.weight * max(h_td, 1e-9))
         return feed * min(max(1.0 + p.gain * error, 0.0), 2.0)

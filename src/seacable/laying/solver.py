@@ -24,9 +24,13 @@ Events after each step:
 Controls: the ship speed follows its schedule, slowed to ``repeater_speed`` while a repeater is in
 the water and brought back at the given acceleration after its touchdown; the payout speed follows a
 schedule, a target slack (with the paper's slope adjustment, CPRATE) or a target bottom tension.
+The bottom-tension control is solved with the step, from the bottom tension at its end (backward
+Euler for the cable and its control together, :meth:`_Lay.implicit_payout`): from the tension at the
+start of the step the loop rings at the step frequency once ``dt`` is a fair part of a segment's
+passage (at the default 4 steps per segment).
 The time step is set from the speed: ``dt = l / (n V)`` for segment length ``l``, ``n`` steps per
 segment and ``V`` the larger of the ship and payout speeds (the paper's "time step inversely
-proportional to ship speed").
+proportional to ship speed"), shortened to equal steps between output times.
 """
 
 from __future__ import annotations
@@ -42,7 +46,7 @@ from scipy.optimize import brentq
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..statics.laying import laying_angle
 from .control import Control
-from .inputs import Seabed2D, ShipMotion
+from .inputs import PayoutBottomTension, Seabed2D, ShipMotion
 from .kernel import (
     N_PROPS,
     P_CDN,
@@ -162,6 +166,10 @@ class _Cable:
             self._move(_MARGIN)
 
 
+class _StepFailed(Exception):
+    """A trial step of the implicit payout control did not converge (the step is retried with dt / 2)."""
+
+
 def _rounds(n_segments: int) -> int:
     """Active-set updates allowed in a step.
 
@@ -238,21 +246,26 @@ def _end_tensions(c: _Cable, props, f_td: float = 0.0) -> tuple[float, float, fl
     """Tension at the water entry and at the touchdown, and the entry angle to the horizontal [rad].
 
     The segment tensions are mid-segment values: the top one is moved to the water entry by the
-    weight of half a segment, the bottom one to the touchdown, at the fraction ``f_td`` of the
-    bottom segment from the touchdown node (see :meth:`_Lay.touchdown`), by the weight of the
-    cable between the two.
+    weight of half a segment, the bottom one to the touchdown (see :func:`_bottom_tension`).
     """
-    lo, hi = c.lo, c.hi
+    hi = c.hi
     d_top = c.pos[hi] - c.pos[hi - 1]
     ln_top = math.hypot(*d_top)
     top = c.T[hi - 1] * c.active[hi - 1] + 0.5 * props[c.seg_type[hi - 1], P_WEIGHT] * c.L[hi - 1] * d_top[1] / ln_top
-    d_bot = c.pos[lo + 1] - c.pos[lo]
-    ln_bot = math.hypot(*d_bot)
-    bottom = 0.0
-    if c.active[lo]:
-        bottom = max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / ln_bot, 0.0)
+    bottom = _bottom_tension(c, props, c.pos, c.lo, f_td)
     angle = math.atan2(d_top[1], d_top[0])
     return top, bottom, angle
+
+
+def _bottom_tension(c: _Cable, props, pos: np.ndarray, lo: int, f_td: float) -> float:
+    """Tension at the touchdown, at the fraction ``f_td`` of the bottom segment (row ``lo`` of
+    ``pos``) from the touchdown node: the mid-segment tension moved there by the weight of the cable
+    between the two (see :meth:`_Lay.touchdown`). [N]"""
+    if not c.active[lo]:
+        return 0.0
+    d_bot = pos[lo + 1] - pos[lo]
+    return max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / math.hypot(*d_bot),
+               0.0)
 
 
 class _Lay:
@@ -351,6 +364,90 @@ class _Lay:
             _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
         return status, it, res, vs_new, x_new
 
+    def implicit_payout(self, t: float, dt: float, in_water: bool, first, vc0: float, kernel_args, saved):
+        """Solve the step together with a bottom-tension payout control (backward Euler for both).
+
+        The payout speed of the step is the one the control gives for the bottom tension at the
+        end of the step, ``v = P(T_b(v))``, instead of the one for the bottom tension at its start.
+        The explicit coupling is a discrete feedback loop whose gain per step is
+        ``gain (dt / time_constant) V dT_b/dv_c / (w h)``: the bottom of a lay under tension is a
+        nearly straight cable, stiff against a change of its length (``dT_b/dv_c`` of several kN
+        per m/s at a 0.8 s step), so at a few steps per segment the loop rang at the step frequency
+        (bottom tension swinging 0 .. 1200 N around 500 N, nodes landing and lifting in turn).
+        ``v - P(T_b(v))`` increases with ``v`` (more payout, less tension, a speed that does not
+        grow with it), so its root is unique; it is bracketed from the explicit guess ``vc0`` and
+        found by regula falsi (Illinois), every evaluation a step from the same start (``first`` is the
+        converged step at ``vc0``, as :meth:`step` returns it; ``saved`` the segment lengths,
+        tensions and slack set before it).
+
+        Returns
+        -------
+        status, iterations, residual, vs_new, x_new
+            As :meth:`step`, for the final payout speed.
+        vc : float
+            Payout speed of the step. [m/s]
+        """
+        c, ctl = self.c, self.ctl
+        lo, hi = c.lo, c.hi
+        geometry = self.geometry()
+        total = 0
+        last = {"v": vc0, "out": first}
+        vs_new = first[3]
+
+        known = {}                                  # v -> v - P(T_b(v)); the cable holds the step at last["v"]
+
+        def g(v: float, solve: bool = False) -> float:
+            nonlocal total
+            if v in known and not solve:
+                return known[v]
+            if last["v"] != v:
+                c.T[lo:hi], c.active[lo:hi] = saved[1], saved[2]
+                out = self.step(t, dt, in_water, v, kernel_args)
+                total += out[1]
+                last["v"], last["out"] = v, out
+                if out[0] != STEP_OK:
+                    raise _StepFailed
+            known[v] = v - ctl.payout_speed(t + dt, vs_new, geometry, self.trial_bottom_tension(), dt, commit=False)
+            return known[v]
+
+        # speed tolerance: the paid-out length of the step right to 1e-6 of its advance V dt (a bottom tension
+        # right to about 1e-2 N at 8 kN/m, the stiffness above); the bottom tension of a Newton step is itself
+        # only right to EA x its relative tolerance (3e-2 N at 3e7 N and 1e-9), 1e-5 m/s in the control
+        tol_v = 1e-6 * max(vs_new, vc0, _MIN_SPEED)
+        try:
+            a, ga = vc0, g(vc0)
+            if abs(ga) > tol_v:
+                b = vc0 - ga                         # the explicit (fixed-point) update
+                gb = g(b)
+                for _ in range(40):                  # same side: extrapolate by the secant, widening
+                    if ga * gb <= 0.0:
+                        break
+                    step = -gb * (b - a) / (gb - ga) if gb != ga else b - a
+                    step = math.copysign(min(abs(step), 4.0 * abs(b - a)), step)
+                    a, ga = b, gb
+                    b = max(b + step, 0.0)
+                    gb = g(b)
+                # bracketed: regula falsi (Illinois), to |g| <= tol_v or a bracket of tol_v (a jump of T_b
+                # where a node lands or not)
+                for _ in range(100):
+                    if abs(gb) <= tol_v or abs(b - a) <= tol_v:
+                        break
+                    v = b - gb * (b - a) / (gb - ga)
+                    gv = g(v)
+                    if gv * gb < 0.0:
+                        a, ga = b, gb
+                    else:
+                        ga *= 0.5
+                    b, gb = v, gv
+                if abs(ga) < abs(gb):
+                    b = a
+                g(b, solve=True)
+        except _StepFailed:
+            out = last["out"]
+            return out[0], total, out[2], out[3], out[4], last["v"]
+        out = last["out"]
+        return out[0], total, out[2], out[3], out[4], last["v"]
+
     def lifts_off(self) -> bool:
         """Whether the bottom segment pulls the touchdown node up harder than the cable weighs on it.
 
@@ -447,16 +544,12 @@ class _Lay:
         seabed further on.
         """
         c, seabed = self.c, self.seabed
-        for k in range(c.lo + 2, c.hi):      # a seabed rising under the cable holds it up
-            zb = float(seabed.z(c.pos[k, 0]))
-            if c.pos[k, 1] < zb:
-                c.pos[k, 1] = zb
-                c.vel[k, 1] = max(c.vel[k, 1], 0.0)
-        first = c.lo
-        for k in range(c.hi - 2, c.lo, -1):   # one free node is always kept below the water entry
-            if c.pos[k, 1] <= float(seabed.z(c.pos[k, 0])) + 1e-9:
-                first = k
-                break
+        rows = slice(c.lo + 2, c.hi)           # a seabed rising under the cable holds it up
+        zb = seabed.z(c.pos[rows, 0])
+        under = c.pos[rows, 1] < zb
+        c.pos[rows, 1] = np.where(under, zb, c.pos[rows, 1])
+        c.vel[rows, 1] = np.where(under, np.maximum(c.vel[rows, 1], 0.0), c.vel[rows, 1])
+        first = self.landing_row(c.pos)
         arrived_slack = not c.active[c.lo]
         for k in range(c.lo + 1, first + 1):
             zb = float(seabed.z(c.pos[k, 0]))
@@ -474,7 +567,33 @@ class _Lay:
                 # chain between fixed ends has no well-defined tension)
                 c.active[first], c.T[first] = 0, 0.0
 
-    def touchdown(self) -> tuple[float, float, float, float]:
+    def landing_row(self, pos: np.ndarray) -> int:
+        """Row of the first node on the seabed counting from the ship side (``c.lo`` if none).
+
+        One free node is always kept below the water entry.
+        """
+        c = self.c
+        rows = pos[c.lo + 1:c.hi - 1]
+        on = np.flatnonzero(rows[:, 1] <= self.seabed.z(rows[:, 0]) + 1e-9)
+        return c.lo + 1 + int(on[-1]) if on.size else c.lo
+
+    def trial_bottom_tension(self) -> float:
+        """Bottom tension of the step just solved (``c.new_pos``, ``c.T``), not committed. [N]
+
+        The same as :func:`_end_tensions` gives once the step is committed and its nodes on the
+        seabed landed (:meth:`touchdowns`): the landing is done on a copy of the positions.
+        """
+        c = self.c
+        pos = c.new_pos.copy()
+        lo = self.landing_row(pos)
+        if lo > c.lo:
+            if not c.active[c.lo]:
+                return 0.0          # arrived slack: the new bottom segment starts slack (touchdowns)
+            pos[lo, 1] = float(self.seabed.z(pos[lo, 0]))
+        f = self.touchdown(pos, lo)[3]
+        return _bottom_tension(c, self.par.props, pos, lo, f)
+
+    def touchdown(self, pos: np.ndarray | None = None, lo: int | None = None) -> tuple[float, float, float, float]:
         """The touchdown point between the touchdown node and the lowest free node.
 
         The clearance above the seabed of the three lowest free nodes, as a function of the arc
@@ -483,6 +602,12 @@ class _Lay:
         reaches the seabed at an angle (zero bottom tension) has a clearance linear in the arc
         length and one under tension a quadratic one, so both are found between the nodes, not at
         the last node landed.
+
+        Parameters
+        ----------
+        pos, lo
+            Node positions and the touchdown node's row; default the committed state
+            (``c.pos``, ``c.lo``).
 
         Returns
         -------
@@ -494,13 +619,14 @@ class _Lay:
             Its fraction of the bottom segment from the touchdown node. [-]
         """
         c, seabed = self.c, self.seabed
-        lo = c.lo
+        pos = c.pos if pos is None else pos
+        lo = c.lo if lo is None else lo
         n_free = min(c.hi - lo - 1, 3)
         s_lo = c.s[lo]
         f = 0.0
         if n_free >= 2:
             ss = c.s[lo + 1:lo + 1 + n_free] - c.s[lo + 1]
-            hh = c.pos[lo + 1:lo + 1 + n_free, 1] - seabed.z(c.pos[lo + 1:lo + 1 + n_free, 0])
+            hh = pos[lo + 1:lo + 1 + n_free, 1] - seabed.z(pos[lo + 1:lo + 1 + n_free, 0])
             u_lo = s_lo - c.s[lo + 1]
             b1 = (hh[1] - hh[0]) / ss[1]
             curv = 0.0
@@ -521,7 +647,7 @@ class _Lay:
                     u = max(below) if below else u_lo
             u = min(max(u, u_lo), 0.0)
             f = 1.0 - u / u_lo if u_lo < 0.0 else 0.0
-        p = c.pos[lo] + f * (c.pos[lo + 1] - c.pos[lo])
+        p = pos[lo] + f * (pos[lo + 1] - pos[lo])
         return float(p[0]), float(p[1]), float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
 
     def geometry(self):
@@ -612,6 +738,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
         snaps.append((c.pos[c.lo:c.hi + 1].copy(), (c.T[c.lo:c.hi] * c.active[c.lo:c.hi]).copy()))
         rep_out.append(lay.repeater_positions())
 
+    implicit = isinstance(payout, PayoutBottomTension)
     t = 0.0
     record(t)
     n_out = max(int(round(duration / output_interval)), 1)
@@ -623,18 +750,27 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
             t_out = min(next_out * output_interval, duration)
             _, bottom, _ = _end_tensions(c, props, lay.touchdown()[3])
             in_water = bool(np.any(lay.rep_state == 1))
-            dt = min(par.segment_length / (steps_per_segment * max(ctl.speed, lay.vc, _MIN_SPEED)), max_time_step,
-                     t_out - t)
-            if t_out - t - dt < 1e-3 * dt:
-                dt = t_out - t
-            vc_new = ctl.payout_speed(t + dt, ctl.ship_speed(t + dt, dt, in_water), lay.geometry(), bottom, dt)
+            # equal steps to the next output, none longer than l / (n V): a sliver of a step to meet the output
+            # time would report its own tensions, those of an impulse (the momentum of a node that has just
+            # landed, stopped within the sliver: a slack bottom segment at 500 N of bottom tension)
+            dt_max = min(par.segment_length / (steps_per_segment * max(ctl.speed, lay.vc, _MIN_SPEED)), max_time_step)
+            # (allowed 1 % of a step longer, not to switch between n and n + 1 steps per output as the payout speed
+            # of a bottom-tension lay flickers about the ship speed)
+            dt = (t_out - t) / max(math.ceil((t_out - t) / dt_max - 0.01), 1)
+            # bottom-tension mode: the explicit speed is the first guess of the implicit one (Lay.implicit_payout)
+            vc_new = ctl.payout_speed(t + dt, ctl.ship_speed(t + dt, dt, in_water), lay.geometry(), bottom, dt,
+                                      commit=not implicit)
             attempt, lifted = 0, 0
             while True:
                 lo, hi = c.lo, c.hi
                 saved = (c.L[hi - 1], c.T[lo:hi].copy(), c.active[lo:hi].copy())
                 status, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
-                ok = status == STEP_OK
                 iterations += it
+                if status == STEP_OK and implicit:
+                    status, it, res, vs_new, x_new, vc_new = lay.implicit_payout(
+                        t, dt, in_water, (status, it, res, vs_new, x_new), vc_new, kernel_args, saved)
+                    iterations += it
+                ok = status == STEP_OK
                 restore = not ok or (lifted < _MAX_LIFTS and lay.lifts_off())
                 if restore:
                     c.L[hi - 1] = saved[0]
@@ -651,6 +787,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
                 dt *= 0.5
                 attempt += 1
                 halvings += 1
+            if implicit:                     # advance the filter with the bottom tension of the accepted step
+                ctl.payout_speed(t + dt, vs_new, lay.geometry(), lay.trial_bottom_tension(), dt)
             lay.commit(dt, vs_new, x_new, vc_new)
             t += dt
             ctl.update(vs_new, t)
