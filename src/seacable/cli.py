@@ -53,6 +53,8 @@ class _Progress:
         done = t >= duration - 1e-9
         if self.last is None:
             self.last = now
+        if done:
+            _computation_done()
         if done or now - self.last >= self.every:
             self.last = now
             end = "\n" if done else "\r"
@@ -93,7 +95,6 @@ def _check_run_paths(args, out: Path) -> None:
 
 
 def _cmd_run(args) -> int:
-    from ._atomic import deferred_interrupts
     from .io import load_case
     from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
@@ -103,10 +104,10 @@ def _cmd_run(args) -> int:
     if is_sweep_file(args.case):
         raise InputError(f"{args.case} is a sweep file ('base' and 'grid' or 'table'), not a case. Suggested fix: "
                          f"seacable sweep {args.case}")
-    if is_moordyn_file(args.case):
+    moordyn = is_moordyn_file(args.case)
+    if moordyn:
         out = _result_path(args, Path(args.case).stem)
         _check_run_paths(args, out)
-        ds = _run_moordyn(args)
     else:
         given = [opt for opt, value in (("--duration", args.duration), ("--motion", args.motion),
                                         ("--time-step", args.time_step),
@@ -118,14 +119,16 @@ def _cmd_run(args) -> int:
         case = load_case(args.case)
         out = _result_path(args, case.name)
         _check_run_paths(args, out)
-        ds = run(case, progress=_Progress())
-    # the computation is done: an interrupt now must not lose it
+    _GUARD.update(armed=True, holding=False, held=[])
     try:
-        with deferred_interrupts():
-            path = write_netcdf(ds, out)
-            print(f"wrote {path}")
-    except KeyboardInterrupt:
-        print(f"seacable: interrupted; {out} holds the whole result (no plots made)", file=sys.stderr)
+        ds = _run_moordyn(args) if moordyn else run(case, progress=_Progress())
+        _computation_done()
+        path = write_netcdf(ds, out)
+        print(f"wrote {path}")
+    finally:
+        _GUARD.update(armed=False, holding=False)
+    if _GUARD["held"]:
+        print(f"seacable: interrupted; {path} holds the whole result (no plots made)", file=sys.stderr)
         return EXIT_INTERRUPTED
     if not args.no_plots:
         from .plot import plot_result
@@ -474,17 +477,40 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+_GUARD = {"armed": False, "holding": False, "held": []}
+"""State of a ``run`` command's result against interrupts (see :func:`_terminate`)."""
+
+
 def _terminate(signum, frame):
     """Ctrl-C, and SIGTERM (what batch schedulers send before killing a job): stop, keeping the result.
 
     Raises KeyboardInterrupt, which the time loops catch (they return what they computed) and
     records the request (:data:`seacable._atomic.interrupt_requested`), so that a case whose
     interrupt a library turned into another error is not taken for a failed case.
+
+    While ``seacable run`` computes a result (``_GUARD["armed"]``), the first signal stops the time loop
+    and every later one is held until the result file is written; so is any signal that comes once the
+    loop has reached its end. Assembling and writing the result is short, and losing a whole run to a
+    second Ctrl-C, or to a SIGTERM that came just after the last step, is what must not happen.
     """
     from ._atomic import interrupt_requested
 
+    if _GUARD["holding"]:
+        _GUARD["held"].append(signum)
+        return
     interrupt_requested.set()
+    if _GUARD["armed"]:
+        _GUARD["holding"] = True
     raise KeyboardInterrupt
+
+
+_terminate.seacable_hold = True  # a deferred_interrupts block hands a signal it held to this handler
+
+
+def _computation_done() -> None:
+    """The time loop reached its end: from now on a signal is held until the result is written."""
+    if _GUARD["armed"]:
+        _GUARD["holding"] = True
 
 
 @contextlib.contextmanager

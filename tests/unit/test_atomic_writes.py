@@ -240,30 +240,47 @@ def test_sweep_summary_and_records_written_whole(tmp_path, monkeypatch):
 
 # --- SIGTERM in a real run (subprocess) ----------------------------------------------------------
 
-def test_sigterm_keeps_what_was_computed(tmp_path):
-    """``seacable run`` of a 300 s lay gets SIGTERM at its first progress line: exit 130, the result
-    file holds the run up to then, flagged interrupted."""
-    case = EXAMPLES / "paper001_lay_2ms_50m.yaml"
-    duration = yaml.safe_load(case.read_text())["analysis"]["duration"]
+def _sigterm_run(tmp_path, case: dict, when: bytes):
+    """``seacable run`` of ``case`` sent SIGTERM once ``when`` appears on its stderr: (exit, stderr, result)."""
+    path = tmp_path / "lay.yaml"
+    path.write_text(yaml.safe_dump(case))
     out = tmp_path / "lay.nc"
-    proc = subprocess.Popen([sys.executable, "-m", "seacable", "run", str(case), "-o", str(out), "--no-plots"],
+    proc = subprocess.Popen([sys.executable, "-m", "seacable", "run", str(path), "-o", str(out), "--no-plots"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path, env=seacable_env())
     os.set_blocking(proc.stderr.fileno(), False)
     seen, t0 = b"", time.monotonic()
-    while b"seacable: t = " not in seen:
+    while when not in seen:
         assert proc.poll() is None, seen
         assert time.monotonic() - t0 < 300, "no progress line"
         seen += proc.stderr.read() or b""
-        time.sleep(0.05)
+        time.sleep(0.01)
     proc.send_signal(signal.SIGTERM)
     _, stderr = proc.communicate(timeout=120)
     stderr = seen + (stderr or b"")
     assert proc.returncode == 130, stderr
     assert b"Traceback" not in stderr and b"interrupted" in stderr
-    ds = read_netcdf(out)
-    assert int(ds.attrs["interrupted"]) == 1
-    assert 0.0 < float(ds.time[-1]) < duration
     assert _leftovers(tmp_path) == []
+    return read_netcdf(out)
+
+
+def test_sigterm_keeps_what_was_computed(tmp_path):
+    """A long lay gets SIGTERM at its first progress line: exit 130, the result file holds the run up to
+    then, flagged interrupted."""
+    case = yaml.safe_load((EXAMPLES / "paper001_lay_2ms_50m.yaml").read_text())
+    case["analysis"]["duration"] = 30000.0   # about a minute of computing: the signal comes mid-run
+    case["line"]["length"] = 70000.0
+    ds = _sigterm_run(tmp_path, case, b"seacable: t = ")
+    assert int(ds.attrs["interrupted"]) == 1
+    assert 0.0 < float(ds.time[-1]) < case["analysis"]["duration"]
+
+
+def test_sigterm_after_the_last_step_still_writes_the_whole_result(tmp_path):
+    """The signal comes once the time loop has ended (its 100 % line), while the result is assembled and
+    written: the whole result is written, not interrupted, and the exit status still says 130."""
+    case = yaml.safe_load((EXAMPLES / "paper001_lay_2ms_50m.yaml").read_text())
+    ds = _sigterm_run(tmp_path, case, b"(100 %)")
+    assert int(ds.attrs["interrupted"]) == 0
+    assert float(ds.time[-1]) == case["analysis"]["duration"]
 
 
 def test_nested_deferrals_raise_once_after_the_outermost():
