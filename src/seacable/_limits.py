@@ -15,7 +15,7 @@ import os
 
 from .errors import InputError
 
-__all__ = ["max_steps", "max_memory", "max_cases", "check_run_size", "check_case_count"]
+__all__ = ["ENVIRONMENT", "check_case_count", "check_run_size", "max_cases", "max_memory", "max_steps"]
 
 DEFAULT_MAX_STEPS = 1.0e8
 """Time steps of one run: about a day of computing for the slowest kernel. [1]"""
@@ -23,6 +23,9 @@ DEFAULT_MAX_MEMORY = 8.0e9
 """Memory of one run's stored results. [byte]"""
 DEFAULT_MAX_CASES = 1.0e5
 """Cases of one sweep. [1]"""
+ENVIRONMENT = {"max_steps": "SEACABLE_MAX_STEPS", "max_memory": "SEACABLE_MAX_MEMORY",
+               "max_cases": "SEACABLE_MAX_CASES"}
+"""The environment variable of each limit."""
 
 
 def _limit(env: str, default: float) -> float:
@@ -41,17 +44,17 @@ def _limit(env: str, default: float) -> float:
 
 def max_steps() -> float:
     """Largest number of time steps one run may take. [1]"""
-    return _limit("SEACABLE_MAX_STEPS", DEFAULT_MAX_STEPS)
+    return _limit(ENVIRONMENT["max_steps"], DEFAULT_MAX_STEPS)
 
 
 def max_memory() -> float:
     """Largest memory one run's stored results may take. [byte]"""
-    return _limit("SEACABLE_MAX_MEMORY", DEFAULT_MAX_MEMORY)
+    return _limit(ENVIRONMENT["max_memory"], DEFAULT_MAX_MEMORY)
 
 
 def max_cases() -> float:
     """Largest number of cases in one sweep. [1]"""
-    return _limit("SEACABLE_MAX_CASES", DEFAULT_MAX_CASES)
+    return _limit(ENVIRONMENT["max_cases"], DEFAULT_MAX_CASES)
 
 
 def _size(value: float) -> str:

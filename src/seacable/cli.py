@@ -62,23 +62,17 @@ class _Progress:
                   file=sys.stderr, end=end, flush=True)
 
 
-def _run_moordyn(args):
-    """``seacable run lines.txt``: a MoorDyn input file, statics (and dynamics with --duration)."""
-    from .mooring.moordyn import run_moordyn_file
+def _moordyn_case(args):
+    """``seacable run lines.txt``: the MoorDyn file as a case, with the run its options ask for."""
+    from .io import load_case
     from .mooring.motion import motion_from_csv
 
-    path = Path(args.case)
-    motion = None
-    if args.motion is not None:
-        if args.duration is None:
-            raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
-                             "e.g. '--duration 100'.")
-        motion = motion_from_csv(args.motion)
-    time_step = 0.1 if args.time_step is None else args.time_step
-    output_interval = 0.5 if args.output_interval is None else args.output_interval
-    ds = run_moordyn_file(path, duration=args.duration, motion=motion, time_step=time_step,
-                          output_interval=output_interval, progress=_Progress())
-    return ds
+    if args.motion is not None and args.duration is None:  # before reading the CSV for nothing
+        raise InputError("--motion needs --duration (s): the length of the run. Suggested fix: add "
+                         "e.g. '--duration 100'.")
+    motion = None if args.motion is None else motion_from_csv(args.motion)
+    return load_case(args.case).with_run(duration=args.duration, motion=motion, time_step=args.time_step,
+                                         output_interval=args.output_interval)
 
 
 def _result_path(args, name: str) -> Path:
@@ -104,10 +98,8 @@ def _cmd_run(args) -> int:
     if is_sweep_file(args.case):
         raise InputError(f"{args.case} is a sweep file ('base' and 'grid' or 'table'), not a case. Suggested fix: "
                          f"seacable sweep {args.case}")
-    moordyn = is_moordyn_file(args.case)
-    if moordyn:
-        out = _result_path(args, Path(args.case).stem)
-        _check_run_paths(args, out)
+    if is_moordyn_file(args.case):
+        case = _moordyn_case(args)
     else:
         given = [opt for opt, value in (("--duration", args.duration), ("--motion", args.motion),
                                         ("--time-step", args.time_step),
@@ -117,11 +109,11 @@ def _cmd_run(args) -> int:
                              "'analysis' (duration, motion, time_step, output_interval). Suggested fix: leave "
                              f"out {', '.join(given)} and set them in {args.case}.")
         case = load_case(args.case)
-        out = _result_path(args, case.name)
-        _check_run_paths(args, out)
+    out = _result_path(args, case.name)
+    _check_run_paths(args, out)
     _GUARD.update(armed=True, holding=False, held=[])
     try:
-        ds = _run_moordyn(args) if moordyn else run(case, progress=_Progress())
+        ds = run(case, progress=_Progress())
         _computation_done()
         path = write_netcdf(ds, out)
         print(f"wrote {path}")
@@ -366,7 +358,6 @@ _NUMERIC = {
                    "give the largest result memory in bytes, e.g. --max-memory 16e9"),
     "max_cases": ("--max-cases", "", 1, "give the largest number of sweep cases, e.g. --max-cases 1e6"),
 }
-_LIMITS = {"max_steps": "SEACABLE_MAX_STEPS", "max_memory": "SEACABLE_MAX_MEMORY", "max_cases": "SEACABLE_MAX_CASES"}
 
 
 def _check_options(args) -> None:
@@ -386,9 +377,11 @@ def _check_options(args) -> None:
 @contextlib.contextmanager
 def _limits(args):
     """Set SEACABLE_MAX_* from --max-steps, --max-memory and --max-cases for the command; restore after."""
-    saved = {env: os.environ.get(env) for env in _LIMITS.values()}
+    from ._limits import ENVIRONMENT
+
+    saved = {env: os.environ.get(env) for env in ENVIRONMENT.values()}
     try:
-        for dest, env in _LIMITS.items():
+        for dest, env in ENVIRONMENT.items():
             value = getattr(args, dest, None)
             if value is not None:
                 os.environ[env] = repr(float(value))
