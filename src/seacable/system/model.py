@@ -1,0 +1,251 @@
+"""A mooring system: points, rigid bodies and the lines between them (the input data model).
+
+A :class:`MooringSystem` is what a mooring engineer draws: anchors and other fixed points, free
+connection points (clump weights, buoys, the junction of two line types), points that follow a
+vessel, rigid bodies (a spar, a semi-submersible, a buoy) with points fixed on them, and lines
+from one point to another. The same data model serves the statics (:mod:`seacable.system.statics`),
+the offsets and watch circle, and the coupled dynamics; MoorDyn files are read into it
+(:func:`seacable.io.moordyn.moordyn_system`).
+
+Conventions (as the rest of seacable): SI units, Z up, z = 0 at the still water level. A body's
+``position`` is its reference point (x, y, z) and its rotation (roll, pitch, yaw) about the global
+x, y and z axes applied in the order roll, then pitch, then yaw (the rotation matrix
+``Rz(yaw) Ry(pitch) Rx(roll)``, as MoorPy and MoorDyn). Body-frame vectors (centre of gravity,
+centre of buoyancy, points on the body) are given relative to the reference point in body axes.
+Six-component forces are (Fx, Fy, Fz, Mx, My, Mz) in global axes about the reference point.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, field_validator, model_validator
+
+from .._model import Model, quantity, suggest
+from ..line import Line
+
+__all__ = ["SystemPoint", "Body", "SystemLine", "MooringSystem"]
+
+_XYZ = tuple[float, float, float]
+_SIX = tuple[float, float, float, float, float, float]
+_MATRIX6 = tuple[_SIX, _SIX, _SIX, _SIX, _SIX, _SIX]
+
+
+def _finite(where: str, values, unit: str) -> None:
+    flat = np.asarray(values, float).ravel()
+    if not np.all(np.isfinite(flat)):
+        raise ValueError(f"{where} must hold finite numbers in {unit}, got {tuple(values)}.")
+
+
+class SystemPoint(Model):
+    """A point of the system that lines end at.
+
+    Parameters
+    ----------
+    kind
+        ``fixed`` (an anchor, or any point held in space), ``free`` (a connection point, clump
+        weight or buoy that finds its own equilibrium), ``coupled`` (follows a vessel: held at
+        ``position`` in statics, moved by the dynamics' motion) or ``body`` (fixed on the body
+        named by ``body``).
+    position
+        Global (x, y, z) for fixed, free and coupled points (the starting guess of a free point);
+        for a point on a body, (x, y, z) relative to the body's reference point in body axes. [m]
+    body
+        The body a ``kind: body`` point is fixed on.
+    mass
+        Mass in air of what sits at the point (clump, buoy, shackle). [kg]
+    volume
+        Displaced volume of what sits at the point. [m^3]
+    external_force
+        Constant force on the point, global axes. [N]
+    drag_area
+        Drag coefficient times frontal area, C_D A, used by the dynamics. [m^2]
+    added_mass
+        Added mass, used by the dynamics. [kg]
+    """
+
+    kind: Literal["fixed", "free", "coupled", "body"] = Field(description="fixed, free, coupled or body.")
+    position: _XYZ = Field(description="Position (global, or in body axes for a point on a body). [m]")
+    body: str | None = Field(None, description="The body a 'kind: body' point is fixed on.")
+    mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air at the point. [kg]")
+    volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume at the point. [m^3]")
+    external_force: _XYZ = Field((0.0, 0.0, 0.0), description="Constant external force. [N]")
+    drag_area: quantity("m^2", ge=0) = Field(0.0, description="C_D A for the dynamics. [m^2]")
+    added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass for the dynamics. [kg]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        _finite("position", self.position, "m")
+        _finite("external_force", self.external_force, "N")
+        if self.kind == "body" and self.body is None:
+            raise ValueError("a point of kind 'body' needs 'body:' naming the body it is fixed on.")
+        if self.kind != "body" and self.body is not None:
+            raise ValueError(f"'body: {self.body}' is only for points of kind 'body', this one is "
+                             f"'{self.kind}'. Suggested fix: set 'kind: body' or drop 'body'.")
+        return self
+
+    def net_weight(self, water_density: float, gravity: float) -> float:
+        """Weight minus buoyancy of what sits at the point, fully submerged. [N]"""
+        return (self.mass - water_density * self.volume) * gravity
+
+
+class Body(Model):
+    """A rigid body with six degrees of freedom.
+
+    Parameters
+    ----------
+    kind
+        ``free`` (finds its equilibrium; moves in the dynamics), ``fixed`` (held at ``position``)
+        or ``prescribed`` (held at ``position`` in statics; moved by ``motion`` in the dynamics).
+    position
+        Reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]; the starting guess of
+        a free body.
+    mass
+        Mass in air. [kg]
+    center_of_gravity
+        Centre of gravity relative to the reference point, body axes. [m]
+    inertia
+        Moments of inertia about the centre of gravity, body axes (Ixx, Iyy, Izz). [kg m^2]
+    volume
+        Displaced volume at the position given. [m^3]
+    center_of_buoyancy
+        Centre of buoyancy relative to the reference point, body axes. [m]
+    waterplane_area
+        Waterplane area, for the heave stiffness rho g A_wp. [m^2]
+    waterplane_moments
+        Second moments of the waterplane area about the body's x and y axes through the reference
+        point (I_xx, I_yy), for the roll and pitch stiffness. [m^4]
+    hydrostatic_stiffness
+        A 6x6 hydrostatic stiffness matrix instead of the waterplane terms (restoring from
+        buoyancy and the centre of gravity are then the user's, not added again). [N/m, N, N m]
+    external_force
+        Constant force and moment on the reference point, global axes (wind, current, drift). [N, N m]
+    added_mass, linear_damping, quadratic_damping
+        6x6 matrices for the dynamics (about the reference point). [kg, kg m, kg m^2], [N s/m ...],
+        [N s^2/m^2 ...]
+    """
+
+    kind: Literal["free", "fixed", "prescribed"] = Field("free", description="free, fixed or prescribed.")
+    position: _SIX = Field((0.0,) * 6, description="x, y, z [m], roll, pitch, yaw [rad].")
+    mass: quantity("kg", ge=0, fix="give the body's mass in air in kg.") = Field(
+        0.0, description="Mass in air. [kg]")
+    center_of_gravity: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of gravity, body axes. [m]")
+    inertia: _XYZ = Field((0.0, 0.0, 0.0), description="Ixx, Iyy, Izz about the centre of gravity. [kg m^2]")
+    volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume. [m^3]")
+    center_of_buoyancy: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of buoyancy, body axes. [m]")
+    waterplane_area: quantity("m^2", ge=0) = Field(0.0, description="Waterplane area. [m^2]")
+    waterplane_moments: tuple[float, float] = Field(
+        (0.0, 0.0), description="Waterplane second moments I_xx, I_yy about the reference point. [m^4]")
+    hydrostatic_stiffness: _MATRIX6 | None = Field(None, description="6x6 hydrostatic stiffness.")
+    external_force: _SIX = Field((0.0,) * 6, description="Constant force and moment. [N, N m]")
+    added_mass: _MATRIX6 | None = Field(None, description="6x6 added-mass matrix.")
+    linear_damping: _MATRIX6 | None = Field(None, description="6x6 linear damping matrix.")
+    quadratic_damping: _MATRIX6 | None = Field(None, description="6x6 quadratic damping matrix.")
+
+    @model_validator(mode="after")
+    def _check(self):
+        for key, unit in (("position", "m and rad"), ("center_of_gravity", "m"), ("center_of_buoyancy", "m"),
+                          ("external_force", "N and N m"), ("waterplane_moments", "m^4")):
+            _finite(key, getattr(self, key), unit)
+        if any(not math.isfinite(i) or i < 0 for i in self.inertia):
+            raise ValueError(f"inertia must hold three moments >= 0 in kg m^2, got {self.inertia}. "
+                             "Suggested fix: give Ixx, Iyy, Izz about the centre of gravity.")
+        for key in ("hydrostatic_stiffness", "added_mass", "linear_damping", "quadratic_damping"):
+            m = getattr(self, key)
+            if m is not None:
+                _finite(key, m, "SI units")
+        return self
+
+    def matrix(self, key: str) -> np.ndarray:
+        """A 6x6 matrix field as an array (zeros when not given)."""
+        m = getattr(self, key)
+        return np.zeros((6, 6)) if m is None else np.asarray(m, float)
+
+
+class SystemLine(Model):
+    """A line from point ``end_a`` to point ``end_b``.
+
+    Parameters
+    ----------
+    line
+        Segments and attachments, end A first (in a file: ``line_type``/``length`` for one segment,
+        or ``segments`` and ``attachments`` as the single-line cases).
+    end_a, end_b
+        Names of the points the line ends at.
+    n_elements
+        Elements a finite-element model uses on the line (a segment's own ``n_elements`` wins).
+    """
+
+    line: Line
+    end_a: str = Field(min_length=1, description="Point at end A.")
+    end_b: str = Field(min_length=1, description="Point at end B.")
+    n_elements: int = Field(20, ge=1, le=100_000, description="Elements of a finite-element model.")
+
+    @model_validator(mode="after")
+    def _ends(self):
+        if self.end_a == self.end_b:
+            raise ValueError(f"end_a and end_b are the same point '{self.end_a}'. Suggested fix: end the "
+                             "line at two different points.")
+        return self
+
+
+class MooringSystem(Model):
+    """Points, bodies and lines; names are the keys of each mapping.
+
+    Cross-references are checked: each line's ends name points, each ``kind: body`` point names a
+    body, each body has at least one line (a body with none would have no mooring restoring).
+    """
+
+    points: dict[str, SystemPoint] = Field(description="Points by name.")
+    bodies: dict[str, Body] = Field(default_factory=dict, description="Bodies by name.")
+    lines: dict[str, SystemLine] = Field(description="Lines by name.")
+
+    @field_validator("lines")
+    @classmethod
+    def _some_lines(cls, lines):
+        if not lines:
+            raise ValueError("must hold at least one line.")
+        return lines
+
+    @model_validator(mode="after")
+    def _references(self):
+        problems = []
+        for name, line in self.lines.items():
+            for end in ("end_a", "end_b"):
+                ref = getattr(line, end)
+                if ref not in self.points:
+                    problems.append(f"lines.{name}.{end}: point '{ref}' is not defined (points: "
+                                    f"{', '.join(self.points) or 'none'}).{suggest(ref, self.points)}")
+        for name, point in self.points.items():
+            if point.kind == "body" and point.body not in self.bodies:
+                problems.append(f"points.{name}.body: body '{point.body}' is not defined (bodies: "
+                                f"{', '.join(self.bodies) or 'none'}).{suggest(point.body, self.bodies)}")
+        moored = {self.points[getattr(line, end)].body for line in self.lines.values()
+                  for end in ("end_a", "end_b") if getattr(line, end) in self.points}
+        for name in self.bodies:
+            if name not in moored:
+                problems.append(f"bodies.{name}: no line ends on this body, so nothing moors it. Suggested "
+                                "fix: add a point of kind 'body' on it and end a line there, or remove the body.")
+        if problems:
+            raise ValueError(problems[0] if len(problems) == 1 else
+                             f"{len(problems)} problems: " + " ".join(problems))
+        return self
+
+    def without(self, *line_names: str) -> MooringSystem:
+        """The damaged system: the same points and bodies with the named lines removed.
+
+        Points no line ends at any more are dropped (a free point would float away); bodies keep
+        their remaining lines (a body left with none is refused, as for any system).
+        """
+        unknown = [n for n in line_names if n not in self.lines]
+        if unknown:
+            from ..errors import InputError
+
+            raise InputError(f"cannot remove line '{unknown[0]}': no such line (lines: {', '.join(self.lines)})."
+                             f"{suggest(unknown[0], self.lines)}")
+        lines = {k: v for k, v in self.lines.items() if k not in line_names}
+        used = {getattr(line, end) for line in lines.values() for end in ("end_a", "end_b")}
+        points = {k: p for k, p in self.points.items() if k in used or p.kind in ("fixed", "coupled")}
+        return MooringSystem(points=points, bodies=dict(self.bodies), lines=lines)
