@@ -49,11 +49,11 @@ def test_stiffness_equals_central_differences_of_equilibrium(build):
     system, env = build()
     body = next(iter(system.bodies))
     eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * (
-        100 if build is ex.oc4_semi else 1)}, tol=1e-12)
+        100 if build is ex.oc4_semi else 1)}, tol=1e-11)
     q = eq.body_position[0]
     K_fd = np.zeros((6, 6))
     # steps: 1 mm and 1e-5 rad; truncation error ~ (h/L)^2 and the 1e-12 solves keep round-off
-    # below 1e-8 of the force changes (K h ~ 1e2..1e5 N)
+    # (1e-11 of the force scale, catenary spans to 1e-12) below 1e-7 of the force changes (K h ~ 1e2..1e5 N)
     for j in range(6):
         h = 1e-3 if j < 3 else 1e-5
         loads = []
@@ -65,7 +65,7 @@ def test_stiffness_equals_central_differences_of_equilibrium(build):
                 th = np.zeros(3)
                 th[j - 3] = sgn * h
                 qp[3:] = euler(_rotvec(th) @ rotation(q[3:]))   # small rotation about the global axis
-            e2 = solve_equilibrium(_held(system, body, qp), env, tol=1e-12)
+            e2 = solve_equilibrium(_held(system, body, qp), env, tol=1e-11)
             loads.append(_line_load_on_body(e2, body))
         K_fd[:, j] = -(loads[0] - loads[1]) / (2 * h)
     K = eq.stiffness

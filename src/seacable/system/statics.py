@@ -257,6 +257,7 @@ class _Problem:
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
+        self.warm = None          # last end forces of every sub-line: the catenaries' next start
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -284,7 +285,8 @@ class _Problem:
         return 6 * self.nb + 3 * j + 2
 
     def eval(self, st: State, load: float) -> Evaluation:
-        ev = evaluate(self.asm, self.bd, st, load_factor=load)
+        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
+        self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
         zd = self._z_dof(st)
         if zd.size:
             # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
