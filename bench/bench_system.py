@@ -47,7 +47,7 @@ def _best(fn, repeats):
 
 def main(repeats: int = 7):
     try:
-        import moorpy  # noqa: F401
+        import moorpy
     except ImportError:  # pragma: no cover - bench-only dependency
         moorpy = None
     print(f"{'system':26s} {'seacable [ms]':>14s} {'MoorPy FD [ms]':>15s} {'ratio':>7s} "
@@ -56,12 +56,12 @@ def main(repeats: int = 7):
         system, env = build()
         body = next(iter(system.bodies))
         ext = {body: np.array(load)}
-        t_ours, eq = _best(lambda: solve_equilibrium(system, env, external=ext), repeats)
+        t_ours, eq = _best(lambda s=system, e=env, x=ext: solve_equilibrium(s, e, external=x), repeats)
         t_fd = t_a = np.nan
         if moorpy is not None:
             start = eq if build is ex.moored_buoy else None
 
-            def run(analytic, start=start):
+            def run(analytic, start=start, system=system, env=env, ext=ext):
                 ms, _ = ex.to_moorpy(system, env, external=ext, start=start, shift=0.1 if start else 0.0)
                 t0 = time.perf_counter()       # building the MoorPy model is not timed
                 ms.solveEquilibrium(tol=1e-7, maxIter=500)

@@ -31,8 +31,9 @@ from . import _stat_kernel as _k
 from ._stat_cat import catenaries
 from ._stat_model import BODY, Assembly, rotation, skew
 
-_GROUNDED = np.array([CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN,
-                      CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR, CatenaryRegime.SLACK_SEABED])
+_GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
+_GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
+           CatenaryRegime.SLACK_SEABED]] = True
 
 
 @dataclass
@@ -90,7 +91,7 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
         rg, rb = R0 @ np.asarray(b.center_of_gravity), R0 @ np.asarray(b.center_of_buoyancy)
         f0[k, :3] = W + B
         f0[k, 3:] = np.cross(rg, W) + np.cross(rb, B)
-    arr = lambda key: np.array([getattr(b, key) for b in bodies], float)  # noqa: E731
+    arr = lambda key: np.array([getattr(b, key) for b in bodies], float)
     return BodyData(mass=arr("mass"), rcg=arr("center_of_gravity").reshape(nb, 3), volume=arr("volume"),
                     rcb=arr("center_of_buoyancy").reshape(nb, 3), awp=arr("waterplane_area"),
                     iwp=arr("waterplane_moments").reshape(nb, 2),
@@ -124,7 +125,7 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, jacobian=True, load_fact
     cat, anchor_is_a, e, tiny = _catenaries(asm, P, warm)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
-    grounded = np.isin(cat.regime, _GROUNDED)
+    grounded = _GROUNDED[cat.regime]
     K = np.where(np.isfinite(cat.stiffness), cat.stiffness, 0.0)
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
                 cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), asm.node_force, asm.node_kind,

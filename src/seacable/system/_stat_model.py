@@ -45,7 +45,7 @@ def euler(R: np.ndarray) -> np.ndarray:
 
 def euler_rate_map(angles) -> np.ndarray:
     """T with omega = T d(roll, pitch, yaw)/dt (omega in global axes) for R = Rz Ry Rx."""
-    r, p, y = (float(a) for a in angles)
+    _r, p, y = (float(a) for a in angles)
     cy, sy, cp, sp = math.cos(y), math.sin(y), math.cos(p), math.sin(p)
     return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
