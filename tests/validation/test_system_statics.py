@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from seacable.environment import Current, Environment
-from seacable.errors import ConvergenceError, InputError
+from seacable.errors import ConvergenceError, InputError, SeacableWarning
 from seacable.line import Line
 from seacable.statics.catenary import catenary
 from seacable.system import _stat_examples as ex
@@ -160,3 +160,37 @@ def test_bad_inputs_are_refused_with_a_fix():
     with pytest.raises((ConvergenceError, InputError)) as err:
         solve_equilibrium(system, env, external={"platform": np.array([5e8, 0, 0, 0, 0, 0])}, max_iter=30)
     assert "Suggested fix" in str(err.value)
+
+
+def test_free_point_lands_on_the_seabed_and_slides_until_held():
+    # A 20 t clump (free point) between 50 m of chain to the anchor and 150 m to a held point:
+    # it cannot hang, rests on the seabed (z = -depth exactly) and slides (no friction) until the
+    # anchor chain, flat on the seabed, carries the pull: x_c = 50 (1 + H / EA), H the horizontal
+    # pull of the upper chain at the clump (closed form of a stretched bar; 1e-9).
+    env = Environment(depth=100.0)
+    chain = ex.BUOY_CHAIN
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "c": SystemPoint(kind="free", position=(40.0, 0.0, -80.0), mass=20000.0),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -10.0))},
+        lines={"l1": SystemLine(line=Line.single(chain, 50.0), end_a="a", end_b="c"),
+               "l2": SystemLine(line=Line.single(chain, 150.0), end_a="c", end_b="b")})
+    eq = solve_equilibrium(system, env)
+    xc = eq.point_position[1]
+    assert xc[2] == -100.0
+    H = eq.end_a_force[1, 0]
+    assert H > 0
+    assert xc[0] == pytest.approx(50.0 * (1.0 + H / chain.axial_stiffness), rel=1e-9)
+    assert eq.end_b_force[0, 0] == pytest.approx(-H, rel=1e-9)     # horizontal balance at the clump
+    ref = catenary(150.0 - xc[0], 90.0, 150.0, chain.axial_stiffness, chain.submerged_weight(1025.0, 9.81))
+    assert eq.end_b_tension[1] == pytest.approx(float(ref.fairlead_tension), rel=1e-9)
+
+
+def test_a_line_pulled_nearly_straight_warns():
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -5.0))},
+        lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 100.0), end_a="a", end_b="b")})
+    with pytest.warns(SeacableWarning, match="stretched by 77.6 %"):
+        solve_equilibrium(system, env)

@@ -45,18 +45,19 @@ References
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..environment import Environment
-from ..errors import ConvergenceError, InputError, NoSolutionError
+from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
-__all__ = ["SystemEquilibrium", "solve_equilibrium", "system_stiffness"]
+__all__ = ["SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"]
 
 _DOF = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 
@@ -495,6 +496,29 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                     "point, or remove the load.")
 
 
+def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None) -> None:
+    """Every check :func:`solve_equilibrium` makes before iterating, without solving.
+
+    For a ``prepare_<analysis>`` step (``seacable validate``): what the catenary lines cannot
+    model (current, sloping seabed, no EA), points below the seabed, unknown bodies in
+    ``external``, lines that cannot reach at the starting positions, and bodies that are
+    hydrostatically unstable with no mooring restoring (or loaded in a DOF nothing restores).
+
+    Raises
+    ------
+    InputError, NoSolutionError
+        As :func:`solve_equilibrium`.
+    """
+    prob = _Problem(system, environment, external, 1e-8, 1)
+    st0 = prob.initial_state(None)
+    try:
+        ev0 = prob.eval(st0, 1.0)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
+                              "points where every line can reach.") from None
+    _check_stability(prob, st0, ev0)
+
+
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
                       tol: float = 1e-8, max_iter: int = 200,
                       initial: SystemEquilibrium | None = None) -> SystemEquilibrium:
@@ -575,7 +599,35 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             "sweeping with `initial=`, start the bodies nearer their equilibrium, check that the lines are "
             "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter.",
             iterations=prob.iterations, residual=err)
-    return _result(prob, st, ev)
+    eq = _result(prob, st, ev)
+    _warn_strain(eq)
+    return eq
+
+
+_STRAIN_WARN = 0.1      # a mooring line stretched by more than 10 % is almost surely an input slip
+
+
+def _warn_strain(eq: SystemEquilibrium) -> None:
+    """Warn about lines stretched beyond 10 % or loaded beyond their breaking load."""
+    asm = eq._asm
+    T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
+    strain = T / asm.sub_EA
+    k = int(np.argmax(strain))
+    if strain[k] > _STRAIN_WARN:
+        name = asm.line_names[asm.sub_line[k]]
+        warnings.warn(f"lines.{name}: stretched by {100 * strain[k]:.3g} % at equilibrium (tension {T[k]:.4g} N, "
+                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends. Suggested "
+                      "fix: check its length and its end positions (or the load on the bodies).",
+                      SeacableWarning, stacklevel=3)
+    for i, name in enumerate(eq.line_names):
+        line = eq.system.lines[name].line
+        mbl = min((seg.line_type.breaking_load for seg in line.segments
+                   if seg.line_type.breaking_load is not None), default=None)
+        t = max(eq.end_a_tension[i], eq.end_b_tension[i])
+        if mbl is not None and t > mbl:
+            warnings.warn(f"lines.{name}: tension {t:.4g} N exceeds the breaking load {mbl:.4g} N of its weakest "
+                          "segment. Suggested fix: check the load, or the line's breaking_load.",
+                          SeacableWarning, stacklevel=3)
 
 
 def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
