@@ -194,3 +194,83 @@ def test_a_line_pulled_nearly_straight_warns():
         lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 100.0), end_a="a", end_b="b")})
     with pytest.warns(SeacableWarning, match="stretched by 77.6 %"):
         solve_equilibrium(system, env)
+
+
+def _own_load(body, env, q):
+    """Weight, buoyancy, heave and waterplane loads of a body at q (the model's equations)."""
+    R = rotation(q[3:])
+    rho, g = env.water_density, env.gravity
+    W = np.array([0, 0, -body.mass * g])
+    B = np.array([0, 0, rho * g * body.volume])
+    a = R[:, 2]
+    f = np.zeros(6)
+    f[:3] = W + B
+    f[2] -= rho * g * body.waterplane_area * (q[2] - body.position[2])
+    f[3:] = np.cross(R @ body.center_of_gravity, W) + np.cross(R @ body.center_of_buoyancy, B)
+    f[3:] += rho * g * np.array([body.waterplane_moments[0] * a[1], -body.waterplane_moments[1] * a[0], 0.0])
+    return f
+
+
+@pytest.mark.parametrize("build", [ex.oc3_hywind, ex.oc4_semi])
+def test_hydrostatic_matrix_equals_central_differences(build):
+    # At an offset and rotated position (under a load) the analytic hydrostatic matrix (weight and
+    # buoyancy arms rotating, heave, waterplane) equals central differences of those loads over
+    # small global rotations; the loads are closed forms, so 1e-7 (steps 1e-4 m, 1e-6 rad).
+    system, env = build()
+    name = next(iter(system.bodies))
+    eq = solve_equilibrium(system, env, external={name: np.array([5e5, 2e5, 0, 1e6, 3e6, 1e6])})
+    q = eq.body_position[0]
+    body = system.bodies[name]
+    K = np.zeros((6, 6))
+    for j in range(6):
+        h = 1e-4 if j < 3 else 1e-6
+        f = []
+        for sgn in (1, -1):
+            qp = q.copy()
+            if j < 3:
+                qp[j] += sgn * h
+            else:
+                th = np.zeros(3)
+                th[j - 3] = sgn * h
+                qp[3:] = euler(_rotvec(th) @ rotation(q[3:]))
+            f.append(_own_load(body, env, qp))
+        K[:, j] = -(f[0] - f[1]) / (2 * h)
+    H = eq.hydrostatic
+    assert np.abs(H - K).max() <= 1e-7 * np.abs(np.diag(H)).max()
+    assert eq.body_stiffness(name, hydrostatics=True) == pytest.approx(eq.stiffness + H)
+
+
+def test_friction_in_a_moored_system_is_the_catenarys():
+    # OC3 on a seabed with friction 0.6 under a surge load: every line's end forces equal the
+    # single-line catenary (with friction) at the solved end positions, 1e-9; friction lowers
+    # the anchor tension of the loaded lines below the touchdown tension.
+    system, env = ex.oc3_hywind()
+    env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.6})})
+    eq = solve_equilibrium(system, env, external={"platform": np.array([1e6, 0, 0, 0, 0, 0])})
+    w = ex.OC3_CHAIN.submerged_weight(env.water_density, env.gravity)
+    for i, name in enumerate(eq.line_names):
+        sl = system.lines[name]
+        pa = eq.point_position[eq.point_names.index(sl.end_a)]
+        pb = eq.point_position[eq.point_names.index(sl.end_b)]
+        ref = catenary(np.hypot(*(pb - pa)[:2]), pb[2] - pa[2], 902.2, ex.OC3_CHAIN.axial_stiffness, w, 0.6, True)
+        assert eq.end_b_tension[i] == pytest.approx(float(ref.fairlead_tension), rel=1e-9)
+        assert eq.end_a_tension[i] == pytest.approx(float(ref.anchor_tension), rel=1e-9)
+        assert eq.grounded_length[i] == pytest.approx(float(ref.grounded_length), rel=1e-9)
+        if ref.grounded_length > 0:
+            assert eq.end_a_tension[i] < float(ref.H_fairlead)
+
+
+def test_line_profile_through_clumps_and_segments():
+    # The buoy's line 1: the profile starts at the anchor, ends at the fairlead, passes through
+    # the clump and the float nodes, and its tension at the fairlead is the end tension.
+    system, env = ex.moored_buoy()
+    eq = solve_equilibrium(system, env)
+    pos, T = eq.line_profile("line1", 191)       # 1 m spacing over 190 m
+    assert pos[0] == pytest.approx(eq.point_position[eq.point_names.index("anchor1")], abs=1e-9)
+    assert pos[-1] == pytest.approx(eq.point_position[eq.point_names.index("fairlead1")], abs=1e-9)
+    assert T[-1] == pytest.approx(eq.end_b_tension[0], rel=1e-9)
+    assert T[0] == pytest.approx(eq.end_a_tension[0], rel=1e-9)
+    nodes = eq._node_position[eq._asm.sub_b[eq._asm.line_first[0]:eq._asm.line_last[0]]]
+    for s, p in zip((95, 110, 150), nodes):                  # the clump, the chain-rope joint, the float
+        assert pos[s] == pytest.approx(p, abs=1e-6)
+    assert np.all(np.diff(np.linalg.norm(np.diff(pos, axis=0), axis=1)) < 0.2)   # no jumps
