@@ -44,12 +44,27 @@ def _held(system, body, q):
     return MooringSystem(points=system.points, bodies=bodies, lines=system.lines)
 
 
-@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy])
+def _tendon_buoy():
+    """A buoy held down by one vertical rope straight above its anchor (the vertical-line limit)."""
+    from seacable.system.model import Body
+
+    buoy = Body(mass=10_000.0, volume=30.0, center_of_buoyancy=(0, 0, -1.0), center_of_gravity=(0, 0, -2.0),
+                waterplane_area=12.0, waterplane_moments=(11.0, 11.0))
+    system = MooringSystem(points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                                   "f": SystemPoint(kind="body", body="b", position=(0.0, 0.0, -2.0))},
+                           bodies={"b": buoy}, lines={"l": SystemLine(line=Line.single(ex.BUOY_ROPE, 97.0),
+                                                                      end_a="a", end_b="f")})
+    return system, Environment(depth=100.0)
+
+
+@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy, _tendon_buoy])
 def test_stiffness_equals_central_differences_of_equilibrium(build):
     system, env = build()
     body = next(iter(system.bodies))
-    eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * (
-        100 if build is ex.oc4_semi else 1)}, tol=1e-11)
+    # the tendon buoy is solved without a load: its line stays exactly vertical (the limit
+    # H/h -> dH/dx of the transverse stiffness)
+    load = {ex.oc4_semi: 100.0, ex.moored_buoy: 1.0, _tendon_buoy: 0.0}[build]
+    eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * load}, tol=1e-11)
     q = eq.body_position[0]
     K_fd = np.zeros((6, 6))
     # steps: 1 mm and 1e-5 rad; truncation error ~ (h/L)^2 and the 1e-12 solves keep round-off
