@@ -31,6 +31,15 @@ Model
   it contains the moment of the end forces as their arms rotate). At zero rotation the small
   rotations are the Euler angle increments.
 
+* A free point (clump, junction, attachment) that reaches the seabed rests on it (its height is
+  held while the net force pushes it down, released when it pulls up); it slides without
+  friction. A sub-line between two points on the seabed lies flat.
+* Equilibrium: Newton on all free DOFs (6 per free body: translations and small rotations about
+  the global axes; 3 per free point) with the analytic Jacobian; each sub-line's catenary
+  restarts from its previous end forces (compiled, :mod:`._stat_cat`), steps are limited (5 %
+  of the longest sub-line, 0.2 rad) with backtracking on the residual norm, and when that fails
+  the external loads are ramped up in 5, then 20 steps.
+
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
 checked against dipping into the seabed, nor a buoyant one against rising above the surface.
