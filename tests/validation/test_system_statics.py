@@ -289,3 +289,18 @@ def test_line_profile_through_clumps_and_segments():
     for s, p in zip((95, 110, 150), nodes):                  # the clump, the chain-rope joint, the float
         assert pos[s] == pytest.approx(p, abs=1e-6)
     assert np.all(np.diff(np.linalg.norm(np.diff(pos, axis=0), axis=1)) < 0.2)   # no jumps
+
+
+def test_a_mid_water_line_sagging_into_the_seabed_warns():
+    # Two held points 10 m above a 100 m deep seabed joined by 300 m of chain 200 m apart: the
+    # catenary between them sags ~ 90 m, through the seabed, which a mid-water sub-line does
+    # not model: a warning says so.
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="coupled", position=(0.0, 0.0, -90.0)),
+                "b": SystemPoint(kind="coupled", position=(200.0, 0.0, -90.0))},
+        lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 300.0), end_a="a", end_b="b")})
+    with pytest.warns(SeacableWarning, match="below the seabed"):
+        solve_equilibrium(system, env)
+    deep = Environment(depth=300.0)
+    solve_equilibrium(system, deep)          # the same line in deeper water: no warning

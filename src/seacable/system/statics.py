@@ -61,7 +61,7 @@ import numpy as np
 
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
-from ..statics.catenary import CatenaryResult
+from ..statics.catenary import CatenaryRegime, CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
@@ -617,7 +617,7 @@ _STRAIN_WARN = 0.1      # a mooring line stretched by more than 10 % is almost s
 
 
 def _warn_strain(eq: SystemEquilibrium) -> None:
-    """Warn about lines stretched beyond 10 % or loaded beyond their breaking load."""
+    """Warn about lines stretched beyond 10 %, loaded beyond their breaking load, or sagging into the seabed."""
     asm = eq._asm
     T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
     strain = T / asm.sub_EA
@@ -628,6 +628,25 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
                       f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends. Suggested "
                       "fix: check its length and its end positions (or the load on the bodies).",
                       SeacableWarning, stacklevel=3)
+    cat = eq._cat
+    depth = eq.environment.depth
+    if depth is not None:
+        # a mid-water sub-line sagging below its lower end (V_A < 0) must not reach the seabed,
+        # which it would cross unnoticed (seabed=False): lowest point of the elastic catenary
+        H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
+        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+        if sag.any():
+            Hs, Vs, ws = H[sag], VA[sag], w[sag]
+            dip = Hs / ws * (np.hypot(1.0, Vs / Hs) - 1.0) + Vs * Vs / (2.0 * ws * asm.sub_EA[sag])
+            low = np.where(eq._anchor_is_a[sag], asm.sub_a[sag], asm.sub_b[sag])
+            bottom = eq._node_position[low, 2] - dip
+            k = int(np.argmin(bottom))
+            if bottom[k] < -depth - 1e-6 * depth:
+                name = asm.line_names[asm.sub_line[np.flatnonzero(sag)[k]]]
+                warnings.warn(f"lines.{name}: a suspended part sags to z = {bottom[k]:.4g} m, below the seabed at "
+                              f"{-depth:g} m; the system statics lets a line lie on the seabed only from a point "
+                              "on it, so this part passes through the seabed. Suggested fix: shorten the line, or "
+                              "add a point on the seabed where it touches down.", SeacableWarning, stacklevel=3)
     for i, name in enumerate(eq.line_names):
         line = eq.system.lines[name].line
         mbl = min((seg.line_type.breaking_load for seg in line.segments
