@@ -169,6 +169,12 @@ def test_bad_inputs_are_refused_with_a_fix():
     deep["anchor1"] = deep["anchor1"].model_copy(update={"position": (-853.87, 0.0, -330.0)})
     with pytest.raises(InputError, match="below the seabed"):
         solve_equilibrium(system.model_copy(update={"points": deep}), env)
+    with pytest.raises(InputError, match="slope"):
+        solve_equilibrium(system, env.model_copy(update={"seabed": env.seabed.model_copy(update={"slope": 0.05})}))
+    soft = ex.OC3_CHAIN.model_copy(update={"axial_stiffness": None})
+    lines = {k: v.model_copy(update={"line": Line.single(soft, 902.2)}) for k, v in system.lines.items()}
+    with pytest.raises(InputError, match="axial_stiffness"):
+        solve_equilibrium(system.model_copy(update={"lines": lines}), env)
     with pytest.raises(InputError, match="no free body"):
         solve_equilibrium(system, env, external={"platfrom": np.zeros(6)})
     # 5e7 N of surge: more than three OC3 lines can hold (they would stretch past breaking)
