@@ -310,3 +310,48 @@ def test_a_mid_water_line_sagging_into_the_seabed_warns():
         solve_equilibrium(system, env)
     deep = Environment(depth=300.0)
     solve_equilibrium(system, deep)          # the same line in deeper water: no warning
+
+
+def _landed_clump():
+    env = Environment(depth=100.0, seabed={"friction": 0.5})
+    chain = ex.BUOY_CHAIN
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "c": SystemPoint(kind="free", position=(45.0, 0.0, -100.0), mass=20000.0),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -10.0))},
+        lines={"l1": SystemLine(line=Line.single(chain, 50.0), end_a="a", end_b="c"),
+               "l2": SystemLine(line=Line.single(chain, 150.0), end_a="c", end_b="b")})
+    return system, env
+
+
+def _buoy_with_friction():
+    system, env = ex.moored_buoy()
+    return system, env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.5})})
+
+
+@pytest.mark.parametrize("build", [_landed_clump, _buoy_with_friction, ex.oc4_semi])
+def test_newton_jacobian_equals_central_differences_with_friction(build):
+    # The full Jacobian of the Newton iteration (bodies and free points, before condensation),
+    # including the anchor-end terms of grounded sub-lines with Coulomb friction
+    # (dH_A = dH_F + mu dV_F) at a free point resting on the seabed, against central
+    # differences of the residual (steps 1e-5 m / 1e-7 rad, catenaries to round-off): 1e-6.
+    from seacable.system.statics import _Problem
+
+    system, env = build()
+    ext = {b: np.array([2e4, 1e4, 0, 0, 0, 1e3]) for b in system.bodies}
+    prob = _Problem(system, env, ext, 1e-8, 50)
+    st = prob.initial_state(None)
+    st, ev, _ = prob.newton(st, 0.5)            # somewhere on the way, not at equilibrium
+    n = ev.residual.size
+    J = np.zeros((n, n))
+    for i in range(n):
+        h = 1e-7 if (i < 6 * prob.nb and i % 6 >= 3) else 1e-5
+        dq = np.zeros(n)
+        dq[i] = h
+        rp = prob.eval(prob.step(st, dq, 1.0), 1.0).residual
+        rm = prob.eval(prob.step(st, -dq, 1.0), 1.0).residual
+        J[:, i] = (rp - rm) / (2 * h)
+    ev = prob.eval(st, 1.0)
+    free = np.setdiff1d(np.arange(n), prob._z_dof(st))     # a point resting on the seabed has its z held
+    D = (J - ev.jac)[np.ix_(free, free)]
+    assert np.abs(D).max() <= 1e-6 * np.abs(ev.jac).max()

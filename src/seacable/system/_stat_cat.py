@@ -20,14 +20,14 @@ from numba import njit
 from ..statics.catenary import CatenaryResult, _guess, catenary
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _asinh_over(q):
     if abs(q) < 1e-3:
         return 1.0 - q * q / 6.0 + 0.075 * q ** 4
     return math.asinh(q) / q
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _spans(H, V, L, EA, w, mu, seabed):
     """Fairlead (x, z) and d(x, z)/d(H, V); grounded flag (as catenary._spans, one line)."""
     if seabed and V < w * L:
@@ -64,7 +64,7 @@ def _spans(H, V, L, EA, w, mu, seabed):
     return x, z, LH * g - n + L / EA, -m, -m, n + L / EA, False
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def solve_warm(x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
     """Newton from (H0, V0) per sub-line; ``out[k]`` = H, V, HA, VA, LB, K00, K01, K10, K11, regime, ok."""
     for k in range(x.size):

@@ -13,7 +13,7 @@ import numpy as np
 from numba import njit
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _skew(v, out):
     out[0, 0] = 0.0
     out[0, 1] = -v[2]
@@ -26,7 +26,7 @@ def _skew(v, out):
     out[2, 2] = 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _block(kxx, kxz, kzx, kzz, kt, ex, ey, out):
     e = (ex, ey)
     for i in range(2):
@@ -38,7 +38,7 @@ def _block(kxx, kxz, kzx, kzz, kt, ex, ey, out):
     out[2, 2] = kzz
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force,
              node_kind, node_body, node_dof, nb, ndof, fa, fb, nf, res, jac):
     """Fill fa, fb (ns, 3), nf (nn, 3), res (ndof,) and jac (ndof, ndof) with the line terms."""
@@ -133,7 +133,7 @@ def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, ground
                     jac[d + 3 + i, d + 3 + j] += Sf[i, 0] * S[0, j] + Sf[i, 1] * S[1, j] + Sf[i, 2] * S[2, j]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def body_terms(R, X, mass, rcg, volume, rcb, awp, iwp, z0, rho, g, own, own_jac):
     """Weight at R r_CG, buoyancy at R r_CB, heave -rho g A_wp (z - z0), waterplane moment; and -d/dq."""
     Sw = np.empty((3, 3))
