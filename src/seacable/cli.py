@@ -254,6 +254,8 @@ def _validate_case(name: str) -> list[str]:
     analysis = getattr(getattr(case, "analysis", None), "type", None) or getattr(case, "analysis_type", "?")
     line = getattr(case, "line", None)
     detail = f", {len(line.segments)} segment(s), line length {line.length:g} m" if line is not None else ""
+    if getattr(case, "lines", None) is not None and hasattr(case, "bodies"):  # a mooring-system case
+        detail = f", {len(case.lines)} line(s), {len(case.bodies)} body(ies), {len(case.points)} point(s)"
     print(f"{name}: valid ({analysis} analysis{detail})")
     return []
 

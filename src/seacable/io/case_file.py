@@ -15,6 +15,7 @@ import yaml
 
 from ..case import Case
 from ..errors import CaseFileError, InputError
+from ..system.case import SystemCase, is_system_data
 from .moordyn import MoorDynCase, is_moordyn_file, load_moordyn_case
 
 __all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
@@ -59,8 +60,11 @@ def _safe_load(text: str):
     return yaml.load(text, Loader=_StrictLoader)
 
 
-def parse_case(data: Any, *, source: str = "case") -> Case:
-    """Validate plain data (a mapping, as read from YAML) into a :class:`Case`.
+def parse_case(data: Any, *, source: str = "case") -> Case | SystemCase:
+    """Validate plain data (a mapping, as read from YAML) into a :class:`Case` or a :class:`SystemCase`.
+
+    A mapping with ``lines``, ``points`` or ``bodies`` at the top and no ``line`` is a mooring-system
+    case (:class:`~seacable.system.case.SystemCase`); any other is a single-line case.
 
     Raises
     ------
@@ -72,7 +76,7 @@ def parse_case(data: Any, *, source: str = "case") -> Case:
         raise CaseFileError(f"{source}: a case file must be a mapping of keys to values at the top level, "
                             f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")
     try:
-        return Case.parse(data)
+        return SystemCase.parse(data) if is_system_data(data) else Case.parse(data)
     except InputError as err:
         raise CaseFileError(f"{source}: {err}") from None
 
@@ -129,7 +133,7 @@ def load_case_data(path: str | Path) -> dict:
     return data
 
 
-def load_case(path: str | Path) -> Case | MoorDynCase:
+def load_case(path: str | Path) -> Case | SystemCase | MoorDynCase:
     """Read and validate a case file: YAML, or a MoorDyn input file.
 
     Parameters
@@ -140,8 +144,9 @@ def load_case(path: str | Path) -> Case | MoorDynCase:
 
     Returns
     -------
-    Case or MoorDynCase
-        The validated, immutable case; :func:`seacable.run` runs either.
+    Case, SystemCase or MoorDynCase
+        The validated, immutable case (a system case when the file has ``lines``, ``points`` or
+        ``bodies`` and no ``line``); :func:`seacable.run` runs any of them.
     """
     if is_moordyn_file(path):
         return load_moordyn_case(path)
@@ -161,7 +166,7 @@ def resolve_files(data, folder: Path) -> None:
                 table["file"] = str(folder / f)
 
 
-def dump_case(case: Case) -> str:
+def dump_case(case: Case | SystemCase) -> str:
     """The case as YAML text, every value explicit (defaults included)."""
     return yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False)
 
