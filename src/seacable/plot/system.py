@@ -150,7 +150,7 @@ def _system_offsets(ds, plt):
     from matplotlib import colormaps
 
     figs = {}
-    loads = np.asarray(ds.load.values, float)
+    loads = np.asarray(ds["load"].values, float)  # not ds.load: Dataset.load()
     headings = np.asarray(ds.heading.values, float)
     order = np.argsort(np.mod(headings, 2 * np.pi))
     full = headings.size >= 3

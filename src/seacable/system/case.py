@@ -231,7 +231,7 @@ class SystemCase(Model):
         try:
             system = self.system()
         except InputError as err:
-            raise ValueError(str(err).removeprefix("MooringSystem").lstrip(": ")) from None
+            raise ValueError(str(err).removeprefix("MooringSystem").lstrip(".: ")) from None
         depth = self.environment.depth
         for name, p in system.points.items():
             if p.kind != "body" and p.position[2] < -depth * (1 + 1e-9) - 1e-9:
@@ -274,11 +274,14 @@ class SystemCase(Model):
         names = self.analysis.damaged_lines
         if not names:
             return None
+        if set(names) >= set(self.lines):
+            raise InputError(f"analysis.damaged_lines {list(names)} removes every line: the damaged system has "
+                             "nothing left to hold it. Suggested fix: name only the lines that break.")
         try:
             return self.system().without(*names)
         except InputError as err:
             raise InputError(f"analysis.damaged_lines {list(names)}: the damaged system is not valid: "
-                             f"{str(err).removeprefix('MooringSystem').lstrip(': ')} Suggested fix: remove fewer "
+                             f"{str(err).removeprefix('MooringSystem').lstrip('.: ')} Suggested fix: remove fewer "
                              "lines, or give the body another line.") from None
 
 

@@ -172,7 +172,7 @@ def _offsets_text(system: MooringSystem, eq) -> str:
     if not free:
         return ""
     if eq is None:
-        return " (no step converged: the bodies were at their given positions)"
+        return "; no load step converged, so there is no last converged offset (the solve started from the given positions)"
     parts = []
     for name in free:
         i = list(eq.body_names).index(name)
@@ -439,14 +439,15 @@ def run_system_offsets(case: SystemCase):
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
     lead = (len(setup.conditions), loads.size, headings.size)
-    values = _stack(records, lead)
+    values = {k: np.swapaxes(v, 1, 2) for k, v in _stack(records, (lead[0], lead[2], lead[1])).items()}
     dims = ("condition", "load", "heading")
     data = _variables(values, dims, _VARIABLES)
     unit = np.stack([np.cos(headings), np.sin(headings)])
     b = setup.bodies.index(a.body)
     offset = values["body_offset_x"][..., b] * unit[0] + values["body_offset_y"][..., b] * unit[1]
     data["offset"] = var(dims, offset, "m", f"offset of body '{a.body}' along the load's heading")
-    data["restoring_force"] = var(dims, np.reshape(restoring, lead), "N",
+    restoring = np.swapaxes(np.reshape(restoring, (lead[0], lead[2], lead[1])), 1, 2)
+    data["restoring_force"] = var(dims, restoring, "N",
                                   f"horizontal force of the lines on body '{a.body}' against the load's heading")
     data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
                                "1 where the line is in the condition, 0 where it is removed (its values NaN)")
