@@ -108,6 +108,8 @@ def _setup(case, analysis_type: str) -> SystemSetup:
     systems = (intact,) if damaged is None else (intact, damaged)
     for condition, system in zip(("intact", "damaged"), systems):
         _check_free_points(system, condition)
+        _start_checks(system, case.environment, "" if condition == "intact" else
+                      f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ")
     return SystemSetup(case=case, conditions=("intact", "damaged")[:len(systems)], systems=systems,
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points))
 
@@ -126,7 +128,10 @@ def prepare_system_static(case: SystemCase) -> SystemSetup:
 
     The case's own checks (names of points, bodies and line types, a body with no line, masses and
     inertias, points below the seabed, the damaged lines) ran when it was built; here the damaged
-    system is built (a body left without lines is refused) and free points without lines are refused.
+    system is built (a body left without lines is refused), free points without lines are refused,
+    and the solver's checks at the given positions run for each condition: what its catenaries
+    cannot model (current, a sloping seabed), a line that cannot reach between its ends, and a body
+    that nothing restores (unstable hydrostatics and no mooring restoring).
     """
     return _setup(case, "system_static")
 
@@ -151,62 +156,64 @@ def prepare_system_offsets(case: SystemCase) -> SystemSetup:
 
 # ----------------------------------------------------------------------------- solving
 
-def _with_loads(system: MooringSystem, factor: float = 1.0, body: str | None = None, extra=None) -> MooringSystem:
-    """The system with every external force scaled by ``factor``, and ``extra`` (6) added on ``body``. [N, N m]"""
-    if factor == 1.0 and extra is None:
-        return system
-    bodies = {}
-    for name, b in system.bodies.items():
-        f = factor * np.asarray(b.external_force, float)
-        if name == body and extra is not None:
-            f = f + np.asarray(extra, float)
-        bodies[name] = b if np.array_equal(f, b.external_force) else b.replace(external_force=tuple(map(float, f)))
-    points = {name: p if factor == 1.0 else p.replace(external_force=tuple(factor * v for v in p.external_force))
-              for name, p in system.points.items()}
-    return MooringSystem(points=points, bodies=bodies, lines=dict(system.lines))
-
-
 def _offsets_text(system: MooringSystem, eq) -> str:
-    """The horizontal offsets of the free bodies at a state (or at the start, ``eq`` None). [m]"""
+    """The horizontal offsets of the free bodies at the last converged state (none: ``eq`` None). [m]"""
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
-    if not free:
+    if not free or eq is None:
         return ""
-    if eq is None:
-        return "; no load step converged, so there is no last converged offset (the solve started from the given positions)"
     parts = []
     for name in free:
-        i = list(eq.body_names).index(name)
-        d = np.asarray(eq.body_position[i][:2], float) - np.asarray(system.bodies[name].position[:2], float)
-        parts.append(f"'{name}' {math.hypot(*d):.4g} m (x {d[0]:+.4g} m, y {d[1]:+.4g} m)")
+        d = np.asarray(eq.body_offset(name), float)
+        parts.append(f"'{name}' {math.hypot(d[0], d[1]):.4g} m (x {d[0]:+.4g} m, y {d[1]:+.4g} m)")
     return "; last converged offset of " + ", ".join(parts)
 
 
-def _solve_path(case: SystemCase, steps, initial, where: str, fix: str):
-    """Solve the equilibrium of each system of ``steps`` (a list of (label, system)), each from the last.
+def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str):
+    """Solve the equilibrium of ``system`` under each external load of ``steps`` (a list of (label,
+    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium.
 
-    Returns the last equilibrium. A failure raises the solver's error type with ``where``, the step,
-    the residual, the last converged offsets and ``fix``.
+    A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
+    last offsets, the last converged offsets and ``fix``.
     """
     from .statics import solve_equilibrium
 
     a = case.analysis
     eq, last_label = initial, None
-    for label, system in steps:
+    for label, external in steps:
         try:
-            eq = solve_equilibrium(system, case.environment, tol=a.tolerance, max_iter=a.max_iterations,
-                                   initial=eq)
+            eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
+                                   max_iter=a.max_iterations, initial=eq)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
-            res = f" (residual {residual:.3g})" if residual is not None else ""
-            done = f" after {last_label}" if last_label else ""
-            message = (f"{where}: no equilibrium found at {label}{done}{res}: {err}{_offsets_text(system, eq)}. "
-                       f"Suggested fix: {fix}")
+            done = f" (the step before, {last_label}, converged)" if last_label else ""
+            said = str(err).split(" Suggested fix:")[0].rstrip(". ")
+            message = (f"{where}: no equilibrium found at {label}{done}: {said}{_offsets_text(system, eq)}. "
+                       f"Suggested fix: {fix}.")
             if isinstance(err, ConvergenceError):
                 raise ConvergenceError(message, iterations=getattr(err, "iterations", None),
                                        residual=residual) from None
             raise NoSolutionError(message) from None
         last_label = label
     return eq
+
+
+def _start_checks(system: MooringSystem, environment, where: str) -> None:
+    """The solver's checks at the given positions, without solving: what its catenaries cannot model,
+    a line that cannot reach between its ends, a body that nothing restores (unstable hydrostatics
+    and no mooring restoring)."""
+    from .statics import _check_stability, _Problem
+
+    try:
+        problem = _Problem(system, environment, None, 1e-8, 1)
+        state = problem.initial_state(None)
+        try:
+            evaluation = problem.eval(state, 1.0)
+        except NoSolutionError as err:
+            raise NoSolutionError(f"at the given positions of the bodies and points: {err} Suggested fix: give "
+                                  "positions where every line can reach between its ends.") from None
+        _check_stability(problem, state, evaluation)
+    except InputError as err:
+        raise type(err)(f"{where}{err}") from None
 
 
 def _check_stable(system: MooringSystem, eq, where: str) -> None:
@@ -230,16 +237,21 @@ def _check_stable(system: MooringSystem, eq, where: str) -> None:
 
 
 def _ramp(system: MooringSystem, steps: int):
-    """(label, system) of the external loads ramped up in ``steps`` steps."""
+    """(label, external loads) that ramp the free bodies' ``external_force`` up in ``steps`` steps: the
+    solver adds ``external`` to each body's own load, so step k adds ``-(1 - k / steps)`` of it."""
     if steps == 1:
-        return [("the full load", system)]
-    return [(f"load step {k} of {steps}", _with_loads(system, k / steps)) for k in range(1, steps + 1)]
+        return [("the full load", None)]
+    loaded = {n: np.asarray(b.external_force, float) for n, b in system.bodies.items()
+              if b.kind == "free" and np.any(np.asarray(b.external_force) != 0)}
+    return [(f"load step {k} of {steps}", {n: tuple(-(1 - k / steps) * f) for n, f in loaded.items()})
+            for k in range(1, steps + 1)]
 
 
 def _static_fix(a) -> str:
     more = max(10, 2 * a.load_steps)
-    return (f"ramp the external loads in steps (analysis.load_steps: {more}), raise analysis.max_iterations "
-            f"({a.max_iterations}), or check that the lines can hold the bodies under their loads")
+    return (f"ramp the bodies' external loads up in steps (analysis.load_steps: {more}), raise "
+            f"analysis.max_iterations ({a.max_iterations}), or check that the lines can hold the bodies under their "
+            "loads (long enough not to pull taut, taut enough to restore)")
 
 
 # ----------------------------------------------------------------------------- results
@@ -367,7 +379,7 @@ def run_system_static(case: SystemCase):
     records, profiles, coupled, iterations, residuals = [], [], [], [], []
     for condition, system in zip(setup.conditions, setup.systems):
         where = f"system_static case '{case.name}', {condition} condition"
-        eq = _solve_path(case, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
         _check_stable(system, eq, where)
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
@@ -419,22 +431,22 @@ def run_system_offsets(case: SystemCase):
     records, restoring = [], []
     for condition, system in zip(setup.conditions, setup.systems):
         where = f"system_offsets case '{case.name}', {condition} condition"
-        base = _solve_path(case, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
         _check_stable(system, base, f"{where}, at no load")
         for h in headings:
             direction = np.array([math.cos(h), math.sin(h), 0.0, 0.0, 0.0, 0.0])
             eq, last = base, 0.0
             for load in loads:
                 if load > 0.0:
-                    steps = [(f"{last + (load - last) * k / a.load_steps:.6g} N at heading {h:.6g} rad",
-                              _with_loads(system, body=a.body,
-                                          extra=(last + (load - last) * k / a.load_steps) * direction))
-                             for k in range(1, a.load_steps + 1)]
+                    steps = []
+                    for k in range(1, a.load_steps + 1):
+                        f = last + (load - last) * k / a.load_steps
+                        steps.append((f"{f:.6g} N at heading {h:.6g} rad", {a.body: tuple(f * direction)}))
                     fix = (f"add intermediate loads between {last:g} N and {load:g} N (a finer ramp in "
                            f"analysis.loads, or analysis.load_steps: {max(10, 2 * a.load_steps)}), raise "
                            f"analysis.max_iterations ({a.max_iterations}), or lower the largest load if the lines "
                            "cannot hold it")
-                    eq = _solve_path(case, steps, eq, where, fix)
+                    eq = _solve_path(case, system, steps, eq, where, fix)
                     last = load
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
