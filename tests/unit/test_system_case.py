@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import pickle
+import re
 from pathlib import Path
 
 import numpy as np
@@ -335,3 +336,57 @@ def test_load_steps_reach_the_same_equilibrium(spread):
     ramped = sc.run(case.replace(analysis=SystemStaticAnalysis(load_steps=4)))
     # the same equilibrium reached through 4 steps: equal to the solver's tolerance
     np.testing.assert_allclose(ramped.body_x.values[0], ds.body_x.values[0], atol=1e-6)
+
+
+def _write(tmp_path, data, name="case.yaml") -> str:
+    path = tmp_path / name
+    path.write_text(yaml.safe_dump(data))
+    return str(path)
+
+
+@pytest.mark.parametrize("change, expected", [
+    # metacentric height 7.5 + 0.6 - 20 < 0: roll stiffness rho g (I + V z_B) - m g z_G < 0, lines too weak
+    (("bodies", "buoy", "center_of_gravity", [0.0, 0.0, 5.0]), ["bodies.buoy", "roll", "capsizes"]),
+    (("environment", "current", {"speed": 1.0}), ["environment.current", "1 m/s"]),
+])
+def test_validate_refuses_what_run_would_before_solving(tmp_path, capsys, change, expected):
+    data = _data()
+    node = data
+    for key in change[:-2]:
+        node = node[key]
+    node[change[-2]] = change[-1]
+    path = _write(tmp_path, data)
+    for argv in (["validate", path], ["run", path, "--no-plots", "-o", str(tmp_path / "r.nc")]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.count("seacable: error:") == 1 and "Traceback" not in err
+        for word in expected:
+            assert word in err, (word, err)
+    assert not (tmp_path / "r.nc").exists()
+
+
+def test_no_equilibrium_under_a_load_the_lines_cannot_hold(tmp_path, capsys):
+    """A 1e9 N m yaw moment on a buoy with no waterplane: the solver gives up with its residual, the
+    body's last offset, and the case's fix (a load ramp)."""
+    data = _data()
+    data["bodies"]["buoy"].update(waterplane_area=0.0, waterplane_moments=[0.0, 0.0],
+                                  external_force=[5.0e5, 0.0, 0.0, 0.0, 0.0, 1.0e9])
+    path = _write(tmp_path, data)
+    assert main(["validate", path]) == 0   # legal input: only solving finds it
+    capsys.readouterr()
+    assert main(["run", path, "--no-plots", "-o", str(tmp_path / "r.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert "no equilibrium found" in err and "residual" in err and "last offsets buoy" in err
+    assert "Suggested fix: ramp the bodies' external loads up in steps (analysis.load_steps: 10)" in err
+
+
+def test_a_line_above_its_breaking_load_is_warned():
+    data = _data()
+    data["lines"]["line2"]["length"] = 500.0   # shorter than the 610 m between its ends: stretched 20 %
+    case = parse_case(data)
+    with pytest.warns(sc.SeacableWarning) as record:
+        sc.run(case)
+    # every line pulls taut (the buoy is drawn towards anchor2): each is named with its tension
+    said = " ".join(str(w.message) for w in record)
+    assert re.search(r"lines\.line2 carries 2\.\d+e\+07 N, above its breaking_load 7\.3e\+06 N", said), said

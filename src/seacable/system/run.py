@@ -236,6 +236,25 @@ def _check_stable(system: MooringSystem, eq, where: str) -> None:
                     f"{hint} of bodies.{name}, or check its hydrostatic_stiffness matrix.")
 
 
+def _warn_breaking(case: SystemCase, values: dict, where: str) -> None:
+    """A SeacableWarning for each line whose end tension exceeds its line types' smallest breaking load."""
+    import warnings
+
+    from ..errors import SeacableWarning
+
+    for name in case.lines:
+        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
+        if not loads or any(b is None for b in loads):
+            continue
+        mbl = min(loads)
+        j = list(case.lines).index(name)
+        peak = np.nanmax(np.stack([values["fairlead_tension"][..., j], values["anchor_tension"][..., j]]))
+        if np.isfinite(peak) and peak > mbl:
+            warnings.warn(f"{where}: lines.{name} carries {peak:.4g} N, above its breaking_load {mbl:.4g} N: the "
+                          "line would break. Suggested fix: check the line's length and the loads, or name the line "
+                          "in analysis.damaged_lines.", SeacableWarning, stacklevel=3)
+
+
 def _ramp(system: MooringSystem, steps: int):
     """(label, external loads) that ramp the free bodies' ``external_force`` up in ``steps`` steps: the
     solver adds ``external`` to each body's own load, so step k adds ``-(1 - k / steps)`` of it."""
@@ -388,6 +407,7 @@ def run_system_static(case: SystemCase):
         residuals.append(float(eq.residual))
     nc = len(setup.conditions)
     values = _stack(records, (nc,))
+    _warn_breaking(case, values, f"system_static case '{case.name}'")
     data = _variables(values, ("condition",), _VARIABLES)
     data.update(_variables(values, ("condition",), _MATRICES))
     data.update(_variables(_stack(profiles, (nc,)), ("condition",), _PROFILE))
@@ -453,6 +473,7 @@ def run_system_offsets(case: SystemCase):
     lead = (len(setup.conditions), loads.size, headings.size)
     values = {k: np.swapaxes(v, 1, 2) for k, v in _stack(records, (lead[0], lead[2], lead[1])).items()}
     dims = ("condition", "load", "heading")
+    _warn_breaking(case, values, f"system_offsets case '{case.name}'")
     data = _variables(values, dims, _VARIABLES)
     unit = np.stack([np.cos(headings), np.sin(headings)])
     b = setup.bodies.index(a.body)
