@@ -149,7 +149,8 @@ def prepare_system_offsets(case: SystemCase) -> SystemSetup:
     solves = n_cond * (a.load_steps + len(headings) * len(a.loads) * a.load_steps)
     stored = n_cond * len(headings) * len(a.loads) * (12 * len(setup.lines) + 12 * len(setup.bodies)
                                                       + 3 * len(setup.points))
-    check_run_size(f"system_offsets case '{case.name}'", steps=solves, stored_values=stored,
+    check_run_size(f"system_offsets case '{case.name}' (each of its {solves:.0f} equilibria counted as a time step)",
+                   steps=solves, stored_values=stored,
                    fix="give fewer analysis.loads or headings (n_headings), or fewer analysis.load_steps")
     return SystemSetup(**{**setup.__dict__, "loads": tuple(a.loads), "headings": tuple(headings)})
 
