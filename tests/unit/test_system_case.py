@@ -390,3 +390,39 @@ def test_a_line_above_its_breaking_load_is_warned():
     # every line pulls taut (the buoy is drawn towards anchor2): each is named with its tension
     said = " ".join(str(w.message) for w in record)
     assert re.search(r"lines\.line2 carries 2\.\d+e\+07 N, above its breaking_load 7\.3e\+06 N", said), said
+
+
+def _line_weight(case, name) -> float:
+    """Weight in water per metre of a one-segment line: (m - rho pi d^2 / 4) g. [N/m]"""
+    lt = case.lines[name].line.segments[0].line_type
+    env = case.environment
+    return (lt.mass_per_length - env.water_density * math.pi * lt.diameter ** 2 / 4) * env.gravity
+
+
+@pytest.mark.parametrize("length", [650.0, 612.0])   # on the seabed at its anchor; lifting its anchor
+def test_each_line_is_in_vertical_equilibrium(length):
+    """The forces of a line on its two ends carry its suspended weight: V_A + F_Bz = -w (L - grounded).
+
+    The seabed carries the grounded part (its friction acts horizontally only). 612 m over the 610 m
+    between anchor and fairlead pulls every line off the seabed: then the anchor is lifted.
+    """
+    data = _data()
+    for name in data["lines"]:
+        data["lines"][name]["length"] = length
+    case = parse_case(data)
+    ds = sc.run(case)
+    for name in case.lines:
+        w = _line_weight(case, name)
+        d = ds.sel(line=name)
+        ok = d.line_present.values == 1
+        lhs = (d.anchor_vertical_force + d.fairlead_force_z).values[ok]
+        rhs = -w * (length - d.grounded_length.values[ok])
+        # catenary closure to the solver's tolerance (1e-8 of the force scale); 1e-6 of the line's weight
+        np.testing.assert_allclose(lhs, rhs, atol=1e-6 * w * length)
+    i = ds.sel(condition="intact")
+    if length < 615.0:
+        assert np.all(i.grounded_length.values == 0)
+        assert np.all(i.anchor_uplift_angle.values > 0.01)   # the anchors are pulled up, not only along
+    else:
+        assert np.all(i.grounded_length.values > 100.0)
+        np.testing.assert_allclose(i.anchor_vertical_force.values, 0.0, atol=1e-6 * w * length)
