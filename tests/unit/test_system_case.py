@@ -419,6 +419,10 @@ def test_each_line_is_in_vertical_equilibrium(length):
         rhs = -w * (length - d.grounded_length.values[ok])
         # catenary closure to the solver's tolerance (1e-8 of the force scale); 1e-6 of the line's weight
         np.testing.assert_allclose(lhs, rhs, atol=1e-6 * w * length)
+        # the fairlead angle below the horizontal: tan = (suspended weight + anchor uplift) / H
+        h_b = np.hypot(d.fairlead_force_x, d.fairlead_force_y).values[ok]
+        np.testing.assert_allclose(np.tan(d.fairlead_angle.values[ok]),
+                                   (-rhs + d.anchor_vertical_force.values[ok]) / h_b, rtol=1e-6)
     i = ds.sel(condition="intact")
     if length < 615.0:
         assert np.all(i.grounded_length.values == 0)
