@@ -42,7 +42,8 @@ from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import check, run
 from .sweeps import Range, Sweep, load_sweep, sweep
-from .system import Body, MooringSystem, SystemCase, SystemLine, SystemOffsetsAnalysis, SystemPoint, SystemStaticAnalysis
+from .system.case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+from .system.model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = [
     "__version__",

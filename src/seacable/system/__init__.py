@@ -1,7 +1,21 @@
-"""Mooring systems: points, rigid bodies and lines; their statics, stiffness and dynamics."""
+"""Mooring systems: points, rigid bodies and lines; their statics, stiffness and dynamics.
 
-from .case import SYSTEM_ANALYSES, SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+The case classes (:mod:`.case`) are loaded on first use, so that importing the data model
+(:mod:`.model`) from a lower layer (the statics, the MoorDyn reader) never imports the case
+layer (:mod:`seacable.case`) with it.
+"""
+
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = ["Body", "MooringSystem", "SYSTEM_ANALYSES", "SystemCase", "SystemLine", "SystemOffsetsAnalysis",
            "SystemPoint", "SystemStaticAnalysis"]
+
+_CASE_NAMES = ("SYSTEM_ANALYSES", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis")
+
+
+def __getattr__(name):
+    if name in _CASE_NAMES:
+        from . import case
+
+        return getattr(case, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
