@@ -245,7 +245,7 @@ class SystemCase(Model):
                                  f"line type; segment(s) {missing} have none. Suggested fix: add 'axial_stiffness'"
                                  " to the line type.")
         a = self.analysis
-        for i, ref in enumerate(a.damaged_lines):
+        for i, ref in enumerate(getattr(a, "damaged_lines", ())):
             if ref not in self.lines:
                 raise ValueError(f"analysis.damaged_lines[{i}]: line '{ref}' is not defined (lines: "
                                  f"{', '.join(self.lines)}).{suggest(ref, self.lines)}")
@@ -264,14 +264,14 @@ class SystemCase(Model):
         return MooringSystem(points=self.points, bodies=self.bodies, lines=self.lines)
 
     def damaged_system(self) -> MooringSystem | None:
-        """The system without the analysis's ``damaged_lines``, or None when it names none.
+        """The system without the analysis's ``damaged_lines``, or None when it names none (or has none).
 
         Raises
         ------
         InputError
             If removing the lines leaves a body with no line.
         """
-        names = self.analysis.damaged_lines
+        names = getattr(self.analysis, "damaged_lines", ())
         if not names:
             return None
         if set(names) >= set(self.lines):
