@@ -84,7 +84,8 @@ def check(case: Case) -> None:
 
     A static or modal analysis is solved (it is cheap, and a line that cannot reach its fairlead
     is only found by solving); a time-domain analysis builds its model, checks its geometry,
-    strains and size, and stops before the first time step.
+    strains and size, and stops before the first time step; a mooring-system analysis
+    (``system_static``, ``system_offsets``) makes every check before its equilibrium solves.
 
     Raises
     ------

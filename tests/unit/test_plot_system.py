@@ -114,3 +114,10 @@ def test_an_intact_only_result_plots(tmp_path):
     ds = sc.run(one)
     assert list(ds.condition.values) == ["intact"]
     assert len(plot_result(ds, tmp_path)) == 3
+
+
+def test_an_intact_only_static_result_plots(tmp_path):
+    case = sc.load_case(EXAMPLES / "spread_mooring.yaml")
+    ds = sc.run(case.replace(analysis=case.analysis.replace(damaged_lines=())))
+    assert list(ds.condition.values) == ["intact"]
+    assert [p.name for p in plot_result(ds, tmp_path)] == ["spread_mooring_system.png", "spread_mooring_tensions.png"]
