@@ -86,8 +86,8 @@ def moored_buoy() -> tuple[MooringSystem, Environment]:
     """A 5 m surface buoy on three chain-rope lines with clumps and floats, depth 100 m.
 
     Lines 1 and 2: 110 m chain from the anchor (a 1.5 t clump 95 m from the anchor) then 80 m rope
-    with a float (0.5 t, 1 m^3) 150 m from the anchor. Line 3 runs through a free junction point
-    (800 kg, 0.1 m^3): 110 m chain from the anchor to it, 125 m rope on to the buoy.
+    with a float (0.5 t, 1 m^3) 150 m from the anchor; anchors 140 m out. Line 3 is the same as two
+    system lines joined at a free junction point (300 kg, 0.05 m^3) at the chain-rope boundary.
     """
     att = (PointMass(s=95.0, mass=1500.0, volume=0.2, kind="clump"),
            PointMass(s=150.0, mass=500.0, volume=1.0, kind="float"))
@@ -100,11 +100,14 @@ def moored_buoy() -> tuple[MooringSystem, Environment]:
         points[f"fairlead{i}"] = SystemPoint(kind="body", body="buoy", position=(2.5 * c, 2.5 * s, -1.5))
         lines[f"line{i}"] = SystemLine(line=two, end_a=f"anchor{i}", end_b=f"fairlead{i}")
     c, s = math.cos(math.radians(240.0)), math.sin(math.radians(240.0))
-    points["anchor3"] = SystemPoint(kind="fixed", position=(170.0 * c, 170.0 * s, -100.0))
-    points["junction"] = SystemPoint(kind="free", position=(90.0 * c, 90.0 * s, -60.0), mass=800.0, volume=0.1)
+    points["anchor3"] = SystemPoint(kind="fixed", position=(140.0 * c, 140.0 * s, -100.0))
+    points["junction"] = SystemPoint(kind="free", position=(60.0 * c, 60.0 * s, -70.0), mass=300.0, volume=0.05)
     points["fairlead3"] = SystemPoint(kind="body", body="buoy", position=(2.5 * c, 2.5 * s, -1.5))
-    lines["line3a"] = SystemLine(line=Line.single(BUOY_CHAIN, 110.0), end_a="anchor3", end_b="junction")
-    lines["line3b"] = SystemLine(line=Line.single(BUOY_ROPE, 125.0), end_a="junction", end_b="fairlead3")
+    lines["line3a"] = SystemLine(line=Line(segments=(Segment(line_type=BUOY_CHAIN, length=110.0),),
+                                           attachments=att[:1]), end_a="anchor3", end_b="junction")
+    lines["line3b"] = SystemLine(line=Line(segments=(Segment(line_type=BUOY_ROPE, length=80.0),),
+                                           attachments=(att[1].model_copy(update={"s": 40.0}),)),
+                                 end_a="junction", end_b="fairlead3")
     D = 5.0
     body = Body(mass=30_000.0, center_of_gravity=(0.0, 0.0, -1.5), volume=math.pi / 4 * D * D * 2.0,
                 center_of_buoyancy=(0.0, 0.0, -1.0), waterplane_area=math.pi / 4 * D * D,
@@ -113,8 +116,13 @@ def moored_buoy() -> tuple[MooringSystem, Environment]:
     return system, Environment(water_density=RHO, gravity=G, depth=100.0)
 
 
-def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = None):
+def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = None, start=None,
+              shift: float = 0.0):
     """The same system in MoorPy 1.3.0; returns (moorpy.System, node -> MoorPy point number).
+
+    ``start``: a :class:`~seacable.system.statics.SystemEquilibrium` whose body and free point
+    positions MoorPy starts from (the free bodies moved by ``shift`` metres in x and y, so that
+    MoorPy still has to iterate).
 
     Free bodies become type-0 bodies with ``rM = r_CB + (0, 0, I/V)`` (needs I_xx = I_yy), ``v``
     the volume, ``AWP`` the waterplane area (the body must be given at z = 0, MoorPy's heave
@@ -138,7 +146,9 @@ def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = N
             raise ValueError("MoorPy measures heave from z = 0: give the body at z = 0")
         rM = np.asarray(b.center_of_buoyancy, float) + np.array([0.0, 0.0, ixx / b.volume if b.volume else 0.0])
         f6 = np.asarray(b.external_force, float) + np.asarray((external or {}).get(name, np.zeros(6)), float)
-        ms.addBody(0, np.asarray(b.position, float), m=b.mass, v=b.volume, rCG=np.asarray(b.center_of_gravity, float),
+        r6 = np.asarray(b.position, float) if start is None else start.body_position[i].copy()
+        r6[:2] += shift
+        ms.addBody(0, r6, m=b.mass, v=b.volume, rCG=np.asarray(b.center_of_gravity, float),
                    AWP=b.waterplane_area, rM=rM, f6Ext=f6)
         body_id[len(body_id)] = len(ms.bodyList)
     node_pt = {}
@@ -162,13 +172,14 @@ def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = N
         if asm.node_kind[n] == BODY:
             ms.addPoint(1, asm.node_rel[n], m=m, v=v, fExt=fext, body=body_id[asm.node_body[n]])
         else:
-            ms.addPoint(1 if asm.node_kind[n] == FIXED else 0, asm.node_pos0[n], m=m, v=v, fExt=fext)
+            r = asm.node_pos0[n] if start is None or asm.node_kind[n] == FIXED else start._node_position[n]
+            ms.addPoint(1 if asm.node_kind[n] == FIXED else 0, np.array(r, float), m=m, v=v, fExt=fext)
         node_pt[n] = len(ms.pointList)
     for k in range(asm.sub_a.size):
         name = f"t{k}"
         mass = asm.sub_w[k] / env.gravity
         # MoorPy recomputes w = (m - rho pi d^2/4) g: give d_vol = 0 and the wet mass
-        ms.setLineType(name=name, mass=mass, d_vol=0.0, EA=float(asm.sub_EA[k]))
+        ms.setLineType(dnommm=0.0, name=name, mass=mass, d_vol=0.0, EA=float(asm.sub_EA[k]))
         ms.addLine(float(asm.sub_L[k]), name, pointA=node_pt[asm.sub_a[k]], pointB=node_pt[asm.sub_b[k]])
     ms.initialize()
     return ms, node_pt

@@ -45,7 +45,7 @@ def euler(R: np.ndarray) -> np.ndarray:
 
 def euler_rate_map(angles) -> np.ndarray:
     """T with omega = T d(roll, pitch, yaw)/dt (omega in global axes) for R = Rz Ry Rx."""
-    r, p, y = (float(a) for a in angles)
+    _r, p, y = (float(a) for a in angles)
     cy, sy, cp, sp = math.cos(y), math.sin(y), math.cos(p), math.sin(p)
     return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
@@ -88,6 +88,7 @@ class Assembly:
     line_first: np.ndarray       # (nl,) first sub-line of each line
     line_last: np.ndarray        # (nl,) last sub-line
     free_nodes: np.ndarray       # indices of FREE nodes (each 3 DOF after the bodies' 6)
+    node_dof: np.ndarray         # (nn,) first DOF of the node's body (BODY) or of the node (FREE), else -1
 
     @property
     def n_dof(self) -> int:
@@ -169,13 +170,13 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
         pa, pb = _guess_end(na, kind, nbody, rel, pos0, system, body_names, free_bodies), \
             _guess_end(nb, kind, nbody, rel, pos0, system, body_names, free_bodies)
         nodes = [na]
-        for s, wgt in cut_s:
+        start = _start_positions(line, pa, pb, [c[0] for c in cut_s], rho, g, depth)
+        for (s, wgt), p0 in zip(cut_s, start):
             nodes.append(len(kind))
             kind.append(FREE)
             nbody.append(-1)
             rel.append(np.zeros(3))
-            # start on the chord, sagged a little so mid-water pieces start as catenaries
-            pos0.append(pa + (pb - pa) * s / total)
+            pos0.append(p0)
             force.append(np.array([0.0, 0.0, -wgt]))
             label.append(f"lines.{lname} at s = {s:g} m")
         nodes.append(nb)
@@ -207,9 +208,50 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
                    node_label=label, point_node=point_node,
                    **{f"sub_{k}": np.array(v, int if k in ("a", "b", "line") else float) for k, v in sub.items()},
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),
-                   free_nodes=np.flatnonzero(kind == FREE))
+                   free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1))
+    nb = len(free_bodies)
+    asm.node_dof[kind == BODY] = 6 * asm.node_body[kind == BODY]
+    asm.node_dof[asm.free_nodes] = 6 * nb + 3 * np.arange(asm.free_nodes.size)
     _check_depths(asm, system)
     return asm
+
+
+def _start_positions(line, pa, pb, cut_s, rho, g, depth):
+    """Starting positions of a line's internal nodes: on one catenary of the whole line.
+
+    The line's mean weight and stiffness, its attachments left out (on the chord if that
+    catenary has no solution or the line is buoyant on average).
+    """
+    total = line.length
+    chord = [pa + (pb - pa) * s / total for s in cut_s]
+    if not cut_s:
+        return chord
+    lengths = np.array([seg.length for seg in line.segments])
+    w = float(np.dot(lengths, line.weights(rho, g)) / total)
+    ea = [seg.line_type.axial_stiffness for seg in line.segments]
+    if w <= 0 or any(e is None for e in ea):
+        return chord
+    low, high, flip = (pa, pb, False) if pa[2] <= pb[2] else (pb, pa, True)
+    d = high - low
+    h = float(np.hypot(d[0], d[1]))
+    seabed = depth is not None and low[2] <= -depth + 1e-6 * depth
+    try:
+        from ..statics.catenary import catenary
+
+        res = catenary(h, max(float(d[2]), 0.0), total, float(np.dot(lengths, ea) / total), w, 0.0, seabed)
+        prof = res.profile(400)
+    except Exception:  # noqa: BLE001 - any failure only costs a worse starting point
+        return chord
+    e = d[:2] / h if h > 0 else np.array([1.0, 0.0])
+    out = []
+    for s in cut_s:
+        sc = total - s if flip else s
+        x, z = np.interp(sc, prof.s, prof.x), np.interp(sc, prof.s, prof.z)
+        p = low + np.array([x * e[0], x * e[1], z])
+        if depth is not None:       # nodes start just off the seabed (they land if they must)
+            p[2] = max(p[2], -depth + min(1.0, 0.01 * depth))
+        out.append(p)
+    return out
 
 
 def _guess_end(node, kind, nbody, rel, pos0, system, body_names, free_bodies):

@@ -52,7 +52,7 @@ import numpy as np
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError
 from ..statics.catenary import CatenaryResult
-from ._stat_eval import BodyData, Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
+from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -245,7 +245,7 @@ class _Problem:
 
     def __init__(self, system, env, external, tol, max_iter):
         self.system, self.env = system, env
-        self.asm = assemble(system, env)
+        self.asm = _assembly(system, env)
         _check_external(system, self.asm, external)
         self.bd = body_data(self.asm, system, external)
         self.tol, self.max_iter = tol, max_iter
@@ -257,6 +257,7 @@ class _Problem:
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
+        self.warm = None          # last end forces of every sub-line: the catenaries' next start
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -284,7 +285,8 @@ class _Problem:
         return 6 * self.nb + 3 * j + 2
 
     def eval(self, st: State, load: float) -> Evaluation:
-        ev = evaluate(self.asm, self.bd, st, load_factor=load)
+        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
+        self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
         zd = self._z_dof(st)
         if zd.size:
             # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
@@ -402,6 +404,22 @@ class _Problem:
         for k in range(self.nb):
             r[6 * k + 3:6 * k + 6] /= self.length_scale
         return r
+
+
+_CACHE: dict = {}
+
+
+def _assembly(system: MooringSystem, env: Environment) -> Assembly:
+    """The flattened system, kept for the last few (system, environment) pairs (both frozen)."""
+    key = (id(system), id(env))
+    hit = _CACHE.get(key)
+    if hit is not None and hit[0] is system and hit[1] is env:
+        return hit[2]
+    asm = assemble(system, env)
+    if len(_CACHE) >= 8:
+        _CACHE.pop(next(iter(_CACHE)))
+    _CACHE[key] = (system, env, asm)
+    return asm
 
 
 def _rotvec(th) -> np.ndarray:
