@@ -72,7 +72,7 @@ def run(case: Case, progress=None):
         from .mooring.moordyn import run_moordyn_case
 
         return run_moordyn_case(case, progress=progress)
-    module, runner, prepare = _ANALYSES[_case(case).analysis.type]
+    module, runner, _ = _ANALYSES[_case(case).analysis.type]
     runner = getattr(import_module(module), runner)
     if progress is not None and case.analysis.type in TIME_DOMAIN:
         return runner(case, progress=progress)

@@ -9,13 +9,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
+import numpy as np
+import pytest
 
-import seacable as sc  # noqa: E402
-from seacable.plot import FIGURES, plot_result, plot_system_offsets, plot_system_static  # noqa: E402
-from seacable.results import ANALYSIS_VARIABLES  # noqa: E402
-from seacable.system import SystemOffsetsAnalysis  # noqa: E402
+import seacable as sc
+from seacable.plot import FIGURES, plot_result, plot_system_offsets, plot_system_static
+from seacable.results import ANALYSIS_VARIABLES
+from seacable.system import SystemOffsetsAnalysis
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 

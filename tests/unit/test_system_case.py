@@ -78,18 +78,18 @@ def test_dump_parse_round_trip_and_pickle():
 
 @pytest.mark.parametrize("edit, expected", [
     (("lines", "line1", "end_b", "fairled1"),
-     "lines.line1.end_b: point 'fairled1' is not defined (points: anchor1, anchor2, anchor3, fairlead1, fairlead2, "
-     "fairlead3). Did you mean 'fairlead1'?"),
-    (("points", "fairlead2", "body", "boy"), "points.fairlead2.body: body 'boy' is not defined (bodies: buoy). "
-                                             "Did you mean 'buoy'?"),
+     ("lines.line1.end_b: point 'fairled1' is not defined (points: anchor1, anchor2, anchor3, fairlead1, fairlead2, "
+      "fairlead3). Did you mean 'fairlead1'?")),
+    (("points", "fairlead2", "body", "boy"), ("points.fairlead2.body: body 'boy' is not defined (bodies: buoy). "
+                                              "Did you mean 'buoy'?")),
     (("bodies", "buoy", "mass", -1.0), "bodies.buoy.mass must be >= 0 kg, got -1 kg"),
     (("bodies", "buoy", "inertia", [5.9e7, -1.0, 3.0e7]), "bodies.buoy inertia must hold three moments >= 0"),
     (("lines", "line2", "length", -650.0), "lines.line2.length must be > 0 m, got -650 m"),
-    (("lines", "line2", "line_type", "chian"), "lines.line2.line_type 'chian' is not defined in line_types "
-                                               "(defined: chain). Did you mean 'chain'?"),
+    (("lines", "line2", "line_type", "chian"), ("lines.line2.line_type 'chian' is not defined in line_types "
+                                                "(defined: chain). Did you mean 'chain'?")),
     (("analysis", "damaged_lines", ["line4"]), "analysis.damaged_lines[0]: line 'line4' is not defined"),
-    (("points", "anchor1", "position", [-606.0, 0.0, -160.0]), "points.anchor1.position: z = -160 m is below "
-                                                               "the seabed at z = -150 m"),
+    (("points", "anchor1", "position", [-606.0, 0.0, -160.0]), ("points.anchor1.position: z = -160 m is below "
+                                                                "the seabed at z = -150 m")),
     (("environment", "depth", None), "needs environment.depth"),
 ])
 def test_bad_system_files_name_the_key_the_value_and_a_fix(edit, expected):
@@ -112,8 +112,8 @@ def test_a_body_with_no_lines_is_refused():
 
 
 @pytest.mark.parametrize("damaged, expected", [
-    (["line4"], "analysis.damaged_lines ['line4']: the damaged system is not valid: bodies.marker: no line ends "
-                "on this body"),
+    (["line4"], ("analysis.damaged_lines ['line4']: the damaged system is not valid: bodies.marker: no line ends "
+                 "on this body")),
     (["line1", "line2", "line3", "line4"], "removes every line"),
 ])
 def test_a_damaged_system_that_leaves_a_body_without_lines_is_refused_before_solving(tmp_path, capsys, damaged,

@@ -7,7 +7,7 @@ layer (:mod:`seacable.case`) with it.
 
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
-__all__ = ["Body", "MooringSystem", "SYSTEM_ANALYSES", "SystemCase", "SystemLine", "SystemOffsetsAnalysis",
+__all__ = ["SYSTEM_ANALYSES", "Body", "MooringSystem", "SystemCase", "SystemLine", "SystemOffsetsAnalysis",
            "SystemPoint", "SystemStaticAnalysis"]
 
 _CASE_NAMES = ("SYSTEM_ANALYSES", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis")

@@ -121,7 +121,7 @@ class SystemOffsetsAnalysis(_Solve):
 
 #: The analyses of a system case; a new one (``system_dynamic``) is one more entry.
 SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis)
-SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]
+SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
 
 _LINE_KEYS = ("segments", "attachments", "line_type", "length")
