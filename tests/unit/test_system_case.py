@@ -63,6 +63,12 @@ def test_a_file_with_lines_and_no_line_is_a_system_case_and_single_line_cases_ar
     assert isinstance(sc.load_case(EXAMPLES / "oc3_hywind_static.yaml"), sc.Case)
 
 
+def test_a_file_with_line_and_lines_is_refused():
+    data = {**_data(), "line": {"line_type": "chain", "length": 650.0}}
+    with pytest.raises(sc.CaseFileError, match="has 'line' .* and 'lines' .*; a case is one or the other"):
+        parse_case(data)
+
+
 def test_segments_form_equals_the_short_form():
     data = _data()
     long = {**data, "lines": {**data["lines"], "line1": {"segments": [{"line_type": "chain", "length": 650.0}],

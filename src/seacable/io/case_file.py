@@ -75,6 +75,11 @@ def parse_case(data: Any, *, source: str = "case") -> Case | SystemCase:
     if not isinstance(data, dict):
         raise CaseFileError(f"{source}: a case file must be a mapping of keys to values at the top level, "
                             f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")
+    both = [k for k in ("lines", "points", "bodies") if k in data]
+    if "line" in data and both:
+        raise CaseFileError(f"{source}: has 'line' (a single-line case) and '{both[0]}' (a mooring system); a case is "
+                            "one or the other. Suggested fix: keep 'line' for one line, or write the line under "
+                            "'lines' with its end points for a system.")
     try:
         return SystemCase.parse(data) if is_system_data(data) else Case.parse(data)
     except InputError as err:
