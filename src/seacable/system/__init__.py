@@ -6,9 +6,11 @@ layer (:mod:`seacable.case`) with it.
 """
 
 from .model import Body, MooringSystem, SystemLine, SystemPoint
+from .statics import SystemEquilibrium, check_statics, solve_equilibrium, system_stiffness
 
-__all__ = ["SYSTEM_ANALYSES", "Body", "MooringSystem", "SystemCase", "SystemLine", "SystemOffsetsAnalysis",
-           "SystemPoint", "SystemStaticAnalysis"]
+__all__ = ["SYSTEM_ANALYSES", "Body", "MooringSystem", "SystemCase", "SystemEquilibrium", "SystemLine",
+           "SystemOffsetsAnalysis", "SystemPoint", "SystemStaticAnalysis", "check_statics", "solve_equilibrium",
+           "system_stiffness"]
 
 _CASE_NAMES = ("SYSTEM_ANALYSES", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis")
 

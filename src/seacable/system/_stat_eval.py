@@ -64,8 +64,8 @@ class State:
 @dataclass
 class Evaluation:
     residual: np.ndarray      # (ndof,) net force on each DOF [N, N m]
-    jac: np.ndarray | None    # (ndof, ndof) d residual / d increment (all terms)
-    jac_lines: np.ndarray | None   # lines and node loads only (no body weight/hydrostatics)
+    jac: np.ndarray           # (ndof, ndof) d residual / d increment (all terms)
+    jac_lines: np.ndarray     # lines and node loads only (no body weight/hydrostatics)
     cat: object               # CatenaryResult
     anchor_is_a: np.ndarray   # (ns,) bool: sub-line end A is the catenary's lower end
     fa: np.ndarray            # (ns, 3) force of each sub-line on its end-A node [N]
@@ -115,8 +115,12 @@ def _seabed_tol(asm):
     return 1e-6 * max(1.0, asm.depth)
 
 
-def evaluate(asm: Assembly, bd: BodyData, st: State, *, jacobian=True, load_factor=1.0, warm=None) -> Evaluation:
-    """Residual (net loads on every DOF) and its Jacobian at state ``st``."""
+def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None) -> Evaluation:
+    """Residual (net loads on every DOF) and its Jacobian at state ``st``.
+
+    ``load_factor`` scales the bodies' external loads (the load ramp); ``warm`` is the sub-lines'
+    previous (H, V) for the catenaries' start.
+    """
     nb, nfree = len(asm.free_bodies), asm.free_nodes.size
     nn = asm.node_kind.size
     ns = asm.sub_a.size

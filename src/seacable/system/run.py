@@ -199,20 +199,13 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
 
 
 def _start_checks(system: MooringSystem, environment, where: str) -> None:
-    """The solver's checks at the given positions, without solving: what its catenaries cannot model,
-    a line that cannot reach between its ends, a body that nothing restores (unstable hydrostatics
-    and no mooring restoring)."""
-    from .statics import _check_stability, _Problem
+    """The solver's checks at the given positions, without solving (:func:`~seacable.system.statics.check_statics`):
+    what its catenaries cannot model, a line that cannot reach between its ends, a body that nothing
+    restores (unstable hydrostatics and no mooring restoring)."""
+    from .statics import check_statics
 
     try:
-        problem = _Problem(system, environment, None, 1e-8, 1)
-        state = problem.initial_state(None)
-        try:
-            evaluation = problem.eval(state, 1.0)
-        except NoSolutionError as err:
-            raise NoSolutionError(f"at the given positions of the bodies and points: {err} Suggested fix: give "
-                                  "positions where every line can reach between its ends.") from None
-        _check_stability(problem, state, evaluation)
+        check_statics(system, environment)
     except InputError as err:
         raise type(err)(f"{where}{err}") from None
 
