@@ -319,7 +319,7 @@ def _cmd_animate(args) -> int:
 def _cmd_schema(args) -> int:
     from .io import case_schema
 
-    print(case_schema())
+    print(case_schema(system=args.system))
     return 0
 
 
@@ -468,6 +468,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_animate)
 
     p = sub.add_parser("schema", parents=[common], help="print the JSON schema of case files")
+    p.add_argument("--system", action="store_true",
+                   help="the schema of mooring-system cases (points, bodies, lines) instead of single-line ones")
     p.set_defaults(func=_cmd_schema)
     return parser
 

@@ -436,3 +436,13 @@ def test_each_line_is_in_vertical_equilibrium(length):
     else:
         assert np.all(i.grounded_length.values > 100.0)
         np.testing.assert_allclose(i.anchor_vertical_force.values, 0.0, atol=1e-6 * w * length)
+
+
+def test_schema_of_system_cases(capsys):
+    import json
+
+    assert main(["schema", "--system"]) == 0
+    schema = json.loads(capsys.readouterr().out)
+    assert {"points", "bodies", "lines", "analysis"} <= set(schema["properties"])
+    assert main(["schema"]) == 0
+    assert "line" in json.loads(capsys.readouterr().out)["properties"]

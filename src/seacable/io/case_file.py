@@ -176,6 +176,6 @@ def dump_case(case: Case | SystemCase) -> str:
     return yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False)
 
 
-def case_schema() -> str:
-    """The JSON schema of case files, as text."""
-    return json.dumps(Case.model_json_schema(), indent=2)
+def case_schema(system: bool = False) -> str:
+    """The JSON schema of case files, as text: single-line cases, or with ``system`` mooring-system cases."""
+    return json.dumps((SystemCase if system else Case).model_json_schema(), indent=2)
