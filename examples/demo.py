@@ -56,6 +56,19 @@ CASES = {
     "paper003_payout": lambda ds: (f"line paid out from the bitt in {float(ds.time[ds.released.all('element')][0]):.0f} s; "
                                    f"barge at {float(ds.barge_speed[-1]):.3f} m/s, tension "
                                    f"{float(ds.barge_tension[-1]) / 1e3:.1f} kN"),
+    "spread_mooring": lambda ds: (
+        "3-line spread, 500 kN on the buoy: offset "
+        + " / ".join(f"{float(ds.body_offset.sel(condition=c, body='buoy')):.1f} m" for c in ds.condition.values)
+        + " (intact / line1 broken); fairlead tensions "
+        + " / ".join(", ".join("-" if np.isnan(t) else f"{t / 1e3:.0f}" for t in ds.fairlead_tension.sel(condition=c).values)
+                     for c in ds.condition.values)
+        + f" kN; surge stiffness {float(ds.stiffness.sel(condition='intact', body='buoy', dof='surge', dof2='surge')) / 1e3:.1f} kN/m"),
+    "spread_mooring_watch_circle": lambda ds: (
+        f"watch circle, {ds.heading.size} headings: at {float(ds['load'][-1]) / 1e6:g} MN the buoy moves "
+        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(load=-1).min()):.1f} to "
+        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(load=-1).max()):.1f} m intact, up to "
+        f"{float(ds.body_offset.sel(condition='damaged', body='buoy').isel(load=-1).max()):.0f} m with line1 broken; "
+        f"largest fairlead tension {float(ds.fairlead_tension.sel(condition='intact').max()) / 1e3:.0f} kN intact"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),

@@ -42,6 +42,8 @@ from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import check, run
 from .sweeps import Range, Sweep, load_sweep, sweep
+from .system.case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+from .system.model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = [
     "__version__",
@@ -77,6 +79,14 @@ __all__ = [
     "HarmonicMotion",
     "TimeSeriesMotion",
     "PlatformMotion",
+    # mooring systems
+    "SystemCase",
+    "MooringSystem",
+    "SystemPoint",
+    "Body",
+    "SystemLine",
+    "SystemStaticAnalysis",
+    "SystemOffsetsAnalysis",
     # running
     "load_case",
     "parse_case",

@@ -254,6 +254,8 @@ def _validate_case(name: str) -> list[str]:
     analysis = getattr(getattr(case, "analysis", None), "type", None) or getattr(case, "analysis_type", "?")
     line = getattr(case, "line", None)
     detail = f", {len(line.segments)} segment(s), line length {line.length:g} m" if line is not None else ""
+    if getattr(case, "lines", None) is not None and hasattr(case, "bodies"):  # a mooring-system case
+        detail = f", {len(case.lines)} line(s), {len(case.bodies)} body(ies), {len(case.points)} point(s)"
     print(f"{name}: valid ({analysis} analysis{detail})")
     return []
 
@@ -317,7 +319,7 @@ def _cmd_animate(args) -> int:
 def _cmd_schema(args) -> int:
     from .io import case_schema
 
-    print(case_schema())
+    print(case_schema(system=args.system))
     return 0
 
 
@@ -466,6 +468,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_animate)
 
     p = sub.add_parser("schema", parents=[common], help="print the JSON schema of case files")
+    p.add_argument("--system", action="store_true",
+                   help="the schema of mooring-system cases (points, bodies, lines) instead of single-line ones")
     p.set_defaults(func=_cmd_schema)
     return parser
 

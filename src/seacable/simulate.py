@@ -14,6 +14,7 @@ from importlib import import_module
 from .case import Case
 from .errors import InputError
 from .io.moordyn import MoorDynCase
+from .system.case import SystemCase
 
 __all__ = ["check", "run"]
 
@@ -31,15 +32,21 @@ _ANALYSES = {
     "laying_dynamic": ("seacable.laying.run", "run_laying_dynamic", "prepare_laying_dynamic"),
     "mooring_dynamic": ("seacable.mooring.run", "run_mooring_dynamic", "prepare_mooring_dynamic"),
     "towline_dynamic": ("seacable.towline.run", "run_towline_dynamic", "prepare_towline_dynamic"),
+    "system_static": ("seacable.system.run", "run_system_static", "prepare_system_static"),
+    "system_offsets": ("seacable.system.run", "run_system_offsets", "prepare_system_offsets"),
 }
 
-TIME_DOMAIN = tuple(name for name, (_, _, prepare) in _ANALYSES.items() if prepare is not None)
+#: analyses with a check before solving but no time loop (no progress callback)
+_NO_TIME_LOOP = ("system_static", "system_offsets")
+
+TIME_DOMAIN = tuple(name for name, (_, _, prepare) in _ANALYSES.items()
+                    if prepare is not None and name not in _NO_TIME_LOOP)
 """The analyses with a time loop: they take a ``progress`` callback and can be interrupted."""
 
 
-def _case(case) -> Case:
-    if not isinstance(case, Case):
-        raise InputError(f"run() takes a seacable.Case, got {type(case).__name__}. "
+def _case(case) -> Case | SystemCase:
+    if not isinstance(case, (Case, SystemCase)):
+        raise InputError(f"run() takes a seacable.Case or a seacable.SystemCase, got {type(case).__name__}. "
                          "Suggested fix: seacable.load_case('file.yaml') or seacable.Case(...).")
     return case
 
@@ -65,9 +72,9 @@ def run(case: Case, progress=None):
         from .mooring.moordyn import run_moordyn_case
 
         return run_moordyn_case(case, progress=progress)
-    module, runner, prepare = _ANALYSES[_case(case).analysis.type]
+    module, runner, _ = _ANALYSES[_case(case).analysis.type]
     runner = getattr(import_module(module), runner)
-    if progress is not None and prepare is not None:
+    if progress is not None and case.analysis.type in TIME_DOMAIN:
         return runner(case, progress=progress)
     return runner(case)
 
@@ -77,7 +84,8 @@ def check(case: Case) -> None:
 
     A static or modal analysis is solved (it is cheap, and a line that cannot reach its fairlead
     is only found by solving); a time-domain analysis builds its model, checks its geometry,
-    strains and size, and stops before the first time step.
+    strains and size, and stops before the first time step; a mooring-system analysis
+    (``system_static``, ``system_offsets``) makes every check before its equilibrium solves.
 
     Raises
     ------

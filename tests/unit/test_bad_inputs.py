@@ -84,6 +84,8 @@ CASE_BASES = {
     "paper000_turn.yaml": "run",                  # towed_dynamic
     "paper001_lay_2ms_50m.yaml": "validate",      # laying_dynamic
     "paper003_zigzag.yaml": "run",                # towline_dynamic
+    "spread_mooring.yaml": "validate",            # system_static (a mooring system: lines, points, bodies)
+    "spread_mooring_watch_circle.yaml": "run",    # system_offsets
 }
 
 #: numeric keys that must be > 0 wherever they appear (a zero or negative value is meaningless)
@@ -162,7 +164,7 @@ def _case_corpus() -> list[Bad]:
                            {"case": _set(base, path, [1, 2])}))
             out.append(Bad(f"case-{stem}-{_tag(path)}-unknown", [command, "{case}"], ["colour"],
                            {"case": _set(base, path + ("colour",), "red")}))
-        for required in ("line", "analysis"):
+        for required in ("lines", "analysis") if "lines" in base else ("line", "analysis"):
             out.append(Bad(f"case-{stem}-missing-{required}", [command, "{case}"], [required],
                            {"case": _delete(base, (required,))}))
         out.append(Bad(f"case-{stem}-missing-analysis-type", [command, "{case}"], ["type"],
@@ -359,7 +361,52 @@ def _other_corpus() -> list[Bad]:
     ]
 
 
-CORPUS = (_case_corpus() + _other_corpus() + _option_corpus() + _path_corpus() + _motion_corpus() + _netcdf_corpus()
+# --- mooring systems (issue 18) ------------------------------------------------------------------
+
+def _system_corpus() -> list[Bad]:
+    spread = _example("spread_mooring.yaml")
+    watch = _example("spread_mooring_watch_circle.yaml")
+    buoy = ("bodies", "buoy")
+    out = [
+        Bad("system-unknown-point", ["validate", "{case}"], ["lines.line1.end_b", "fairled1", "Did you mean"],
+            {"case": _set(spread, ("lines", "line1", "end_b"), "fairled1")}),
+        Bad("system-unknown-body", ["validate", "{case}"], ["points.fairlead2.body", "boy"],
+            {"case": _set(spread, ("points", "fairlead2", "body"), "boy")}),
+        Bad("system-body-with-no-lines", ["validate", "{case}"], ["bodies.spare", "no line"],
+            {"case": _set(spread, ("bodies", "spare"), {"mass": 1.0e3, "volume": 1.0})}),
+        Bad("system-negative-mass", ["validate", "{case}"], ["bodies.buoy.mass", "-1"],
+            {"case": _set(spread, buoy + ("mass",), -1.0)}),
+        Bad("system-negative-inertia", ["validate", "{case}"], ["bodies.buoy", "inertia"],
+            {"case": _set(spread, buoy + ("inertia",), [5.9e7, -5.9e7, 3.0e7])}),
+        Bad("system-unknown-line-type", ["validate", "{case}"], ["lines.line3.line_type", "chian"],
+            {"case": _set(spread, ("lines", "line3", "line_type"), "chian")}),
+        Bad("system-anchor-below-seabed", ["validate", "{case}"], ["points.anchor2.position", "below the seabed"],
+            {"case": _set(spread, ("points", "anchor2", "position"), [303.0, 524.811, -200.0])}),
+        Bad("system-unknown-damaged-line", ["validate", "{case}"], ["damaged_lines", "line9"],
+            {"case": _set(spread, ("analysis", "damaged_lines"), ["line9"])}),
+        Bad("system-every-line-damaged", ["validate", "{case}"], ["damaged_lines", "every line"],
+            {"case": _set(spread, ("analysis", "damaged_lines"), ["line1", "line2", "line3"])}),
+        Bad("system-unstable-hydrostatics", ["validate", "{case}"], ["bodies.buoy", "roll", "capsizes"],
+            {"case": _set(spread, buoy + ("center_of_gravity",), [0.0, 0.0, 5.0])}),
+        Bad("system-current", ["run", "{case}", "--no-plots"], ["environment.current"],
+            {"case": _set(spread, ("environment", "current"), {"speed": 1.0})}),
+        Bad("system-no-equilibrium", ["run", "{case}", "--no-plots"], ["no equilibrium", "residual", "load_steps"],
+            {"case": _set(_set(_set(spread, buoy + ("waterplane_area",), 0.0), buoy + ("waterplane_moments",),
+                                    [0.0, 0.0]), buoy + ("external_force",), [5.0e5, 0.0, 0.0, 0.0, 0.0, 1.0e9])}),
+        Bad("system-offsets-unknown-body", ["validate", "{case}"], ["analysis.body", "bouy"],
+            {"case": _set(watch, ("analysis", "body"), "bouy")}),
+        Bad("system-offsets-loads-decrease", ["validate", "{case}"], ["loads", "increase"],
+            {"case": _set(watch, ("analysis", "loads"), [0.0, 5.0e5, 2.5e5])}),
+        Bad("system-offsets-fixed-body", ["validate", "{case}"], ["analysis.body", "fixed"],
+            {"case": _set(watch, buoy + ("kind",), "fixed")}),
+        # 2 conditions x (1 + 12 headings x 5 loads) = 122 equilibria, each counted as a step of the run
+        Bad("system-offsets-sweep-too-long", ["validate", "{case}", "--max-steps", "100"],
+            ["system_offsets", "--max-steps"], {"case": watch}),
+    ]
+    return out
+
+
+CORPUS = (_case_corpus() + _other_corpus() + _system_corpus() + _option_corpus() + _path_corpus() + _motion_corpus() + _netcdf_corpus()
           + _sweep_corpus() + _size_corpus())
 
 

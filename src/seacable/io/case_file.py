@@ -15,6 +15,7 @@ import yaml
 
 from ..case import Case
 from ..errors import CaseFileError, InputError
+from ..system.case import SystemCase, is_system_data
 from .moordyn import MoorDynCase, is_moordyn_file, load_moordyn_case
 
 __all__ = ["case_schema", "dump_case", "load_case", "load_case_data", "parse_case", "read_yaml", "resolve_files"]
@@ -59,8 +60,11 @@ def _safe_load(text: str):
     return yaml.load(text, Loader=_StrictLoader)
 
 
-def parse_case(data: Any, *, source: str = "case") -> Case:
-    """Validate plain data (a mapping, as read from YAML) into a :class:`Case`.
+def parse_case(data: Any, *, source: str = "case") -> Case | SystemCase:
+    """Validate plain data (a mapping, as read from YAML) into a :class:`Case` or a :class:`SystemCase`.
+
+    A mapping with ``lines``, ``points`` or ``bodies`` at the top and no ``line`` is a mooring-system
+    case (:class:`~seacable.system.case.SystemCase`); any other is a single-line case.
 
     Raises
     ------
@@ -71,8 +75,13 @@ def parse_case(data: Any, *, source: str = "case") -> Case:
     if not isinstance(data, dict):
         raise CaseFileError(f"{source}: a case file must be a mapping of keys to values at the top level, "
                             f"got {type(data).__name__}. Suggested fix: start from a file in examples/.")
+    both = [k for k in ("lines", "points", "bodies") if k in data]
+    if "line" in data and both:
+        raise CaseFileError(f"{source}: has 'line' (a single-line case) and '{both[0]}' (a mooring system); a case is "
+                            "one or the other. Suggested fix: keep 'line' for one line, or write the line under "
+                            "'lines' with its end points for a system.")
     try:
-        return Case.parse(data)
+        return SystemCase.parse(data) if is_system_data(data) else Case.parse(data)
     except InputError as err:
         raise CaseFileError(f"{source}: {err}") from None
 
@@ -129,7 +138,7 @@ def load_case_data(path: str | Path) -> dict:
     return data
 
 
-def load_case(path: str | Path) -> Case | MoorDynCase:
+def load_case(path: str | Path) -> Case | SystemCase | MoorDynCase:
     """Read and validate a case file: YAML, or a MoorDyn input file.
 
     Parameters
@@ -140,8 +149,9 @@ def load_case(path: str | Path) -> Case | MoorDynCase:
 
     Returns
     -------
-    Case or MoorDynCase
-        The validated, immutable case; :func:`seacable.run` runs either.
+    Case, SystemCase or MoorDynCase
+        The validated, immutable case (a system case when the file has ``lines``, ``points`` or
+        ``bodies`` and no ``line``); :func:`seacable.run` runs any of them.
     """
     if is_moordyn_file(path):
         return load_moordyn_case(path)
@@ -161,11 +171,11 @@ def resolve_files(data, folder: Path) -> None:
                 table["file"] = str(folder / f)
 
 
-def dump_case(case: Case) -> str:
+def dump_case(case: Case | SystemCase) -> str:
     """The case as YAML text, every value explicit (defaults included)."""
     return yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False)
 
 
-def case_schema() -> str:
-    """The JSON schema of case files, as text."""
-    return json.dumps(Case.model_json_schema(), indent=2)
+def case_schema(system: bool = False) -> str:
+    """The JSON schema of case files, as text: single-line cases, or with ``system`` mooring-system cases."""
+    return json.dumps((SystemCase if system else Case).model_json_schema(), indent=2)

@@ -3,7 +3,7 @@
 matplotlib is imported when a plot is made, not when seacable is imported, and
 uses the non-interactive Agg backend so that plots work on machines without a
 screen. One module per model (:mod:`.statics`, :mod:`.towed`, :mod:`.laying`,
-:mod:`.mooring`, :mod:`.towline`, :mod:`.sweep`) registers its figures; they
+:mod:`.mooring`, :mod:`.towline`, :mod:`.sweep`, :mod:`.system`) registers its figures; they
 share :mod:`._core` and never import each other.
 """
 
@@ -16,6 +16,7 @@ from .laying import LAYING_FIGURES, animate_laying
 from .mooring import MOORING_FIGURES, plot_mooring_dynamic, plot_mooring_pushover, plot_mooring_static
 from .statics import STATICS_FIGURES
 from .sweep import SWEEP_FIGURES
+from .system import SYSTEM_FIGURES, plot_system_offsets, plot_system_static
 from .towed import TOWED_FIGURES
 from .towline import (
     TOWLINE_FIGURES,
@@ -36,6 +37,8 @@ __all__ = [
     "plot_mooring_pushover",
     "plot_mooring_static",
     "plot_result",
+    "plot_system_offsets",
+    "plot_system_static",
     "towline_distance",
     "towline_shape",
     "towline_sway",
@@ -45,7 +48,7 @@ __all__ = [
 
 #: analysis type -> function(ds, pyplot) -> {figure name: Figure}
 FIGURES = {**STATICS_FIGURES, **TOWED_FIGURES, **LAYING_FIGURES, **MOORING_FIGURES, **TOWLINE_FIGURES,
-           **SWEEP_FIGURES}
+           **SWEEP_FIGURES, **SYSTEM_FIGURES}
 
 
 def plot_result(ds, outdir, prefix: str | None = None) -> list[Path]:

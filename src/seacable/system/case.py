@@ -1,0 +1,299 @@
+"""A mooring-system case: points, bodies and lines, their environment, and what to compute.
+
+A :class:`SystemCase` is to a :class:`~seacable.system.model.MooringSystem` what a
+:class:`~seacable.case.Case` is to a single line: :func:`seacable.run` is a pure function of it.
+In a file, a case with a top-level ``lines`` (or ``points``, ``bodies``) and no ``line`` is a
+system case (:func:`seacable.io.parse_case`)::
+
+    name: spread
+    line_types:
+      chain: {diameter: 0.09, mass_per_length: 77.7, axial_stiffness: 3.8e8}
+    environment: {depth: 200.0}
+    points:
+      anchor1: {kind: fixed, position: [800.0, 0.0, -200.0]}
+      fair1: {kind: body, body: buoy, position: [10.0, 0.0, -10.0]}
+    bodies:
+      buoy: {mass: 1.0e6, volume: 1100.0, waterplane_area: 80.0}
+    lines:
+      line1: {line_type: chain, length: 850.0, end_a: anchor1, end_b: fair1}
+    analysis: {type: system_static, damaged_lines: [line1]}
+
+Each line is written as a single-line case's ``line`` (``line_type`` and ``length`` for one
+segment, or ``segments`` and ``attachments``) plus its ends ``end_a``, ``end_b`` and ``n_elements``.
+
+Analyses: ``system_static`` (equilibrium, end tensions, anchor loads, stiffness; intact and
+damaged) and ``system_offsets`` (equilibrium under an external load on one body swept over
+magnitudes and headings: offsets, watch circle, restoring force). :data:`SYSTEM_ANALYSES` is the
+union of the system analyses: a new one is one more entry there.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import Field, model_validator
+
+from .._model import UNION_TAGS, Model, input_error, quantity, suggest
+from ..case import _STAND_IN
+from ..environment import Environment
+from ..errors import InputError
+from ..line import LineType
+from .model import Body, MooringSystem, SystemLine, SystemPoint
+
+__all__ = ["SYSTEM_ANALYSES", "SystemAnalysis", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis",
+           "is_system_data"]
+
+
+class _Solve(Model):
+    """Options of the system equilibrium shared by the system analyses."""
+
+    damaged_lines: tuple[str, ...] = Field(
+        (), description="Lines removed in the damaged condition, solved beside the intact one (none: intact only).")
+    tolerance: quantity("-", gt=0, lt=1e-2) = Field(
+        1e-8, description="Equilibrium tolerance on the force residual, relative. [-]")
+    max_iterations: int = Field(200, ge=1, le=100_000, description="Newton iterations of one equilibrium.")
+    load_steps: int = Field(1, ge=1, le=1000, description="Steps in which the external loads are ramped up "
+                                                          "(each solved from the last): 1 for none.")
+
+    @model_validator(mode="after")
+    def _damaged(self):
+        d = self.damaged_lines
+        if len(set(d)) != len(d):
+            raise ValueError(f"damaged_lines names a line twice: {list(d)}. Suggested fix: name each once.")
+        return self
+
+
+class SystemStaticAnalysis(_Solve):
+    """Static equilibrium and stiffness of the system, intact and (with ``damaged_lines``) damaged."""
+
+    type: Literal["system_static"] = "system_static"
+    profile_points: int = Field(41, ge=2, le=10_000, description="Points of each line's stored profile.")
+
+
+class SystemOffsetsAnalysis(_Solve):
+    """Offsets and watch circle: an external horizontal load on ``body`` swept over magnitudes and headings.
+
+    The load ``F (cos heading, sin heading, 0)`` is added to the body's own ``external_force`` at each
+    magnitude of ``loads`` [N] and each heading of ``headings`` [rad] (default ``n_headings`` evenly
+    spread over the circle from 0); at a load of 0 the equilibrium is the static one. Each heading's
+    loads are solved in increasing order, each from the last.
+    """
+
+    type: Literal["system_offsets"] = "system_offsets"
+    body: str = Field(min_length=1, description="The free body the load acts on.")
+    loads: tuple[float, ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
+    headings: tuple[float, ...] | None = Field(None, min_length=1,
+                                               description="Load headings from +x towards +y. [rad]")
+    n_headings: int = Field(12, ge=1, le=3600, description="Headings over the circle when 'headings' is not given.")
+
+    @model_validator(mode="after")
+    def _sweep(self):
+        for i, f in enumerate(self.loads):
+            if not (math.isfinite(f) and f >= 0):
+                raise ValueError(f"loads[{i}] must be a finite number >= 0 N, got {f} N. Suggested fix: give "
+                                 "load magnitudes in N; the heading sets the direction.")
+        if any(b <= a for a, b in zip(self.loads, self.loads[1:])):
+            raise ValueError(f"loads must increase, got {list(self.loads)} N (each is solved from the last). "
+                             f"Suggested fix: loads: {sorted(set(self.loads))}.")
+        if self.headings is not None:
+            for i, h in enumerate(self.headings):
+                if not math.isfinite(h):
+                    raise ValueError(f"headings[{i}] must be a finite number in rad, got {h}.")
+            if len(set(self.headings)) != len(self.headings):
+                raise ValueError(f"headings gives a heading twice: {list(self.headings)} rad. Suggested fix: "
+                                 "give each once.")
+            if max(abs(h) for h in self.headings) > 2 * math.pi + 1e-9:
+                import warnings
+
+                from ..errors import SeacableWarning
+
+                warnings.warn(f"analysis.headings {list(self.headings)} go beyond 2 pi: they are radians; did you "
+                              "give degrees?", SeacableWarning, stacklevel=2)
+        return self
+
+    def heading_values(self) -> tuple[float, ...]:
+        """The headings to solve at. [rad]"""
+        if self.headings is not None:
+            return self.headings
+        return tuple(2 * math.pi * k / self.n_headings for k in range(self.n_headings))
+
+
+#: The analyses of a system case; a new one (``system_dynamic``) is one more entry.
+SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis)
+SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
+UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
+
+_LINE_KEYS = ("segments", "attachments", "line_type", "length")
+
+
+def is_system_data(data: Any) -> bool:
+    """True for the plain data of a system case: ``lines``, ``points`` or ``bodies`` at the top, no ``line``."""
+    return isinstance(data, dict) and "line" not in data and any(k in data for k in ("lines", "points", "bodies"))
+
+
+def _line_entry(entry: Any, types: Any, where: str) -> Any:
+    """One line of a file as a :class:`SystemLine`'s data: the short forms expanded, line types resolved."""
+    if not isinstance(entry, dict) or "line" in entry:
+        return entry
+    entry = dict(entry)
+    line = {k: entry.pop(k) for k in _LINE_KEYS if k in entry}
+    if "segments" not in line and "line_type" in line:
+        line["segments"] = [{k: line.pop(k) for k in ("line_type", "length") if k in line}]
+    segments = line.get("segments")
+    if isinstance(segments, (list, tuple)):
+        out = []
+        for i, seg in enumerate(segments):
+            ref = seg.get("line_type") if isinstance(seg, dict) else None
+            if isinstance(ref, str):
+                names = list(types) if isinstance(types, dict) else []
+                if ref not in names:
+                    at = where if len(segments) == 1 and "segments" not in entry else f"{where}.segments[{i}]"
+                    raise ValueError(f"{at}.line_type '{ref}' is not defined in line_types (defined: "
+                                     f"{', '.join(names) or 'none'}).{suggest(ref, names)}")
+                seg = {**seg, "line_type": types[ref]}
+            out.append(seg)
+        line["segments"] = out
+    return {**entry, "line": line}
+
+
+class SystemCase(Model):
+    """A mooring system, its environment and an analysis.
+
+    Parameters
+    ----------
+    name
+        Short name, used for output files.
+    description
+        Free text: source, assumptions, unit conversions.
+    line_types
+        Named line types the lines may refer to by name.
+    environment
+        Water (density, depth), current and seabed; ``depth`` is required.
+    points, bodies, lines
+        The :class:`~seacable.system.model.MooringSystem`: points (fixed, free, coupled, on a body),
+        rigid bodies and lines, each by name. In a file a line is ``{line_type: NAME, length: L,
+        end_a: P, end_b: Q}`` or ``{segments: [...], attachments: [...], end_a: P, end_b: Q}``.
+    analysis
+        What to compute, selected by its ``type`` (:data:`SYSTEM_ANALYSES`).
+    """
+
+    name: str = Field("system", min_length=1)
+    description: str = ""
+    line_types: dict[str, LineType] = Field(default_factory=dict)
+    environment: Environment = Environment()
+    points: dict[str, SystemPoint] = Field(description="Points by name.")
+    bodies: dict[str, Body] = Field(default_factory=dict, description="Bodies by name.")
+    lines: dict[str, SystemLine] = Field(description="Lines by name.")
+    analysis: SystemAnalysis
+
+    @classmethod
+    def parse(cls, data: Any, *, root: str = ""):
+        """Validate plain data (as read from a file) into a SystemCase.
+
+        Named line types are checked first and each problem is reported once, at
+        ``line_types.NAME``; a line's key paths are those of the file (``lines.L1.length``).
+        """
+        types = data.get("line_types") if isinstance(data, dict) else None
+        problems, checked = [], types
+        if isinstance(types, dict):
+            checked = {}
+            for name, entry in types.items():
+                try:
+                    checked[name] = LineType.parse(entry)
+                except InputError as err:
+                    problems += [(("line_types", name) + loc, tail) for loc, tail in err.problems]
+                    checked[name] = _STAND_IN  # keeps lines that use it from failing again
+        try:
+            case = super().parse(data if checked is types else {**data, "line_types": checked}, root=root)
+        except InputError as err:
+            problems += [(_file_path(loc, data), tail) for loc, tail in err.problems]
+            case = None
+        if problems:
+            raise input_error(problems, root)
+        return case
+
+    @model_validator(mode="before")
+    @classmethod
+    def _resolve_lines(cls, data: Any) -> Any:
+        """Expand each line's short form and replace line-type names by the entries of ``line_types``."""
+        if not isinstance(data, dict) or not isinstance(data.get("lines"), dict):
+            return data
+        types = data.get("line_types") or {}
+        lines = {name: _line_entry(entry, types, f"lines.{name}") for name, entry in data["lines"].items()}
+        return {**data, "lines": lines}
+
+    @model_validator(mode="after")
+    def _system(self):
+        if self.environment.depth is None:
+            raise ValueError(f"analysis '{self.analysis.type}' needs environment.depth (m): the seabed the lines "
+                             "rest on. Suggested fix: add 'depth:' under 'environment'.")
+        try:
+            system = self.system()
+        except InputError as err:
+            raise ValueError(str(err).removeprefix("MooringSystem").lstrip(".: ")) from None
+        depth = self.environment.depth
+        for name, p in system.points.items():
+            if p.kind != "body" and p.position[2] < -depth * (1 + 1e-9) - 1e-9:
+                raise ValueError(f"points.{name}.position: z = {p.position[2]:g} m is below the seabed at "
+                                 f"z = {-depth:g} m (environment.depth {depth:g} m). Suggested fix: put the point "
+                                 f"on the seabed (z = {-depth:g} m) or above it.")
+        for name, line in system.lines.items():
+            missing = [i for i, seg in enumerate(line.line.segments) if seg.line_type.axial_stiffness is None]
+            if missing:
+                raise ValueError(f"lines.{name}: the system statics need an axial_stiffness (EA, N) on every "
+                                 f"line type; segment(s) {missing} have none. Suggested fix: add 'axial_stiffness'"
+                                 " to the line type.")
+        a = self.analysis
+        for i, ref in enumerate(getattr(a, "damaged_lines", ())):
+            if ref not in self.lines:
+                raise ValueError(f"analysis.damaged_lines[{i}]: line '{ref}' is not defined (lines: "
+                                 f"{', '.join(self.lines)}).{suggest(ref, self.lines)}")
+        if isinstance(a, SystemOffsetsAnalysis):
+            body = self.bodies.get(a.body)
+            if body is None:
+                raise ValueError(f"analysis.body: body '{a.body}' is not defined (bodies: "
+                                 f"{', '.join(self.bodies) or 'none'}).{suggest(a.body, self.bodies)}")
+            if body.kind != "free":
+                raise ValueError(f"analysis.body: body '{a.body}' is '{body.kind}', it cannot move under the load. "
+                                 "Suggested fix: name a free body, or set its kind to 'free'.")
+        return self
+
+    def system(self) -> MooringSystem:
+        """The mooring system of the case (points, bodies, lines)."""
+        return MooringSystem(points=self.points, bodies=self.bodies, lines=self.lines)
+
+    def damaged_system(self) -> MooringSystem | None:
+        """The system without the analysis's ``damaged_lines``, or None when it names none (or has none).
+
+        Raises
+        ------
+        InputError
+            If removing the lines leaves a body with no line.
+        """
+        names = getattr(self.analysis, "damaged_lines", ())
+        if not names:
+            return None
+        if set(names) >= set(self.lines):
+            raise InputError(f"analysis.damaged_lines {list(names)} removes every line: the damaged system has "
+                             "nothing left to hold it. Suggested fix: name only the lines that break.")
+        try:
+            return self.system().without(*names)
+        except InputError as err:
+            raise InputError(f"analysis.damaged_lines {list(names)}: the damaged system is not valid: "
+                             f"{str(err).removeprefix('MooringSystem').lstrip('.: ')} Suggested fix: remove fewer "
+                             "lines, or give the body another line.") from None
+
+
+def _file_path(loc: tuple, data: Any) -> tuple:
+    """A validation error's key path as the file writes it: ``lines.L1.line.segments[0].length`` is
+    ``lines.L1.length`` for a line in the short form, ``lines.L1.segments[0].length`` otherwise."""
+    if len(loc) < 3 or loc[0] != "lines" or loc[2] != "line" or not isinstance(data, dict):
+        return loc
+    entry = (data.get("lines") or {}).get(loc[1]) if isinstance(data.get("lines"), dict) else None
+    if not isinstance(entry, dict) or "line" in entry:
+        return loc
+    rest = loc[3:]
+    if "segments" not in entry and rest[:2] == ("segments", 0):
+        rest = rest[2:]
+    return loc[:2] + rest

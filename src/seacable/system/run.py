@@ -1,0 +1,500 @@
+"""The system analyses of a case (``system_static``, ``system_offsets``) as Datasets.
+
+Each analysis solves the equilibrium of the system (:func:`seacable.system.statics.solve_equilibrium`)
+in its intact condition and, when the analysis names ``damaged_lines``, in its damaged condition (the
+same system without those lines), and reports both along a ``condition`` dimension. Lines, bodies and
+points are dimensions (``line``, ``body``, ``point``) whose coordinates hold their names; a line removed
+in the damaged condition has NaN there, and ``line_present`` says which lines each condition has.
+
+Every check that can be made before solving is in :func:`prepare_system_static` and
+:func:`prepare_system_offsets`, which ``seacable validate`` runs (one validation path).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._limits import check_run_size
+from ..errors import ConvergenceError, InputError, NoSolutionError
+from ..results import make_dataset, var
+from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+from .model import MooringSystem
+
+__all__ = ["DOFS", "REFERENCES", "SystemSetup", "equilibrium_variables", "prepare_system_offsets",
+           "prepare_system_static", "run_system_offsets", "run_system_static"]
+
+#: The six degrees of freedom of a body, in the order of its 6x6 matrices.
+DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+_POSE = (("body_x", "m", "x of the body's reference point"), ("body_y", "m", "y of the body's reference point"),
+         ("body_z", "m", "z of the body's reference point (0 at the still water level)"),
+         ("body_roll", "rad", "body roll (rotation about x, applied first)"),
+         ("body_pitch", "rad", "body pitch (rotation about y, applied second)"),
+         ("body_yaw", "rad", "body yaw (rotation about z, applied last)"))
+_STIFFNESS_UNITS = "N/m, N/rad, N m/m, N m/rad (by block)"
+
+REFERENCES = (
+    "Irvine, H. M. (1981). Cable Structures. MIT Press (the elastic catenary).",
+    ("Hall, M. (2023). MoorPy: quasi-static mooring analysis in Python (System, Body, solveEquilibrium, "
+     "getCoupledStiffness); the conventions of bodies and points follow it and MoorDyn v2."),
+)
+
+#: name -> (dimensions after the leading ones, units, long name) of the per-equilibrium variables
+_VARIABLES = {
+    "fairlead_tension": (("line",), "N", "tension at end B of the line (fairlead)"),
+    "anchor_tension": (("line",), "N", "tension at end A of the line (anchor)"),
+    "anchor_horizontal_force": (("line",), "N", "horizontal force of the line on its end A (anchor)"),
+    "anchor_vertical_force": (("line",), "N", "vertical force of the line on its end A (anchor), upward positive"),
+    "anchor_uplift_angle": (("line",), "rad", "angle of the line's pull on end A (anchor) above the horizontal"),
+    "fairlead_angle": (("line",), "rad", "angle of the line at end B (fairlead) below the horizontal"),
+    "fairlead_force_x": (("line",), "N", "x force of the line on its end B (fairlead)"),
+    "fairlead_force_y": (("line",), "N", "y force of the line on its end B (fairlead)"),
+    "fairlead_force_z": (("line",), "N", "z force of the line on its end B (fairlead)"),
+    "grounded_length": (("line",), "m", "length of line resting on the seabed"),
+    **{name: (("body",), units, long) for name, units, long in _POSE},
+    "body_offset_x": (("body",), "m", "x offset of the body's reference point from its given position"),
+    "body_offset_y": (("body",), "m", "y offset of the body's reference point from its given position"),
+    "body_offset": (("body",), "m", "horizontal offset of the body's reference point from its given position"),
+    "point_x": (("point",), "m", "x of the point"),
+    "point_y": (("point",), "m", "y of the point"),
+    "point_z": (("point",), "m", "z of the point (0 at the still water level)"),
+}
+_MATRICES = {
+    "stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
+                  "mooring stiffness of the free body, lines only, about its reference point (NaN: not free)"),
+    "hydrostatic_stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
+                              "hydrostatic stiffness of the free body about its reference point (NaN: not free)"),
+}
+_PROFILE = {
+    "x": (("line", "node"), "m", "x position along the line"),
+    "y": (("line", "node"), "m", "y position along the line"),
+    "z": (("line", "node"), "m", "elevation along the line (0 at the still water level)"),
+    "tension": (("line", "node"), "N", "effective tension along the line"),
+}
+
+
+@dataclass(frozen=True)
+class SystemSetup:
+    """What the solves of a system analysis need (see :func:`prepare_system_static`).
+
+    ``conditions`` names the conditions (``intact``, ``damaged``) and ``systems`` holds their
+    systems; ``lines``, ``bodies`` and ``points`` are the names along the result's dimensions
+    (those of the intact system). ``headings`` [rad] and ``loads`` [N] are the sweep of
+    ``system_offsets`` (empty for ``system_static``).
+    """
+
+    case: SystemCase
+    conditions: tuple[str, ...]
+    systems: tuple[MooringSystem, ...]
+    lines: tuple[str, ...]
+    bodies: tuple[str, ...]
+    points: tuple[str, ...]
+    loads: tuple[float, ...] = ()
+    headings: tuple[float, ...] = ()
+
+    @property
+    def free_bodies(self) -> tuple[str, ...]:
+        return tuple(n for n in self.bodies if self.systems[0].bodies[n].kind == "free")
+
+
+def _setup(case, analysis_type: str) -> SystemSetup:
+    if not isinstance(case, SystemCase) or case.analysis.type != analysis_type:
+        raise InputError(f"{analysis_type} takes a system case (seacable.system.SystemCase with analysis type "
+                         f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
+    intact = case.system()
+    damaged = case.damaged_system()
+    systems = (intact,) if damaged is None else (intact, damaged)
+    for condition, system in zip(("intact", "damaged"), systems):
+        _check_free_points(system, condition)
+        _start_checks(system, case.environment, "" if condition == "intact" else
+                      f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ")
+    return SystemSetup(case=case, conditions=("intact", "damaged")[:len(systems)], systems=systems,
+                       lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points))
+
+
+def _check_free_points(system: MooringSystem, condition: str) -> None:
+    """A free point no line ends at has no equilibrium (it sinks or floats away)."""
+    used = {getattr(line, end) for line in system.lines.values() for end in ("end_a", "end_b")}
+    for name, point in system.points.items():
+        if point.kind == "free" and name not in used:
+            raise InputError(f"points.{name}: a free point that no line ends at ({condition} condition) has no "
+                             "equilibrium. Suggested fix: end a line there, make it 'fixed', or remove it.")
+
+
+def prepare_system_static(case: SystemCase) -> SystemSetup:
+    """Every check of a ``system_static`` case that needs no solve; returns what the solves need.
+
+    The case's own checks (names of points, bodies and line types, a body with no line, masses and
+    inertias, points below the seabed, the damaged lines) ran when it was built; here the damaged
+    system is built (a body left without lines is refused), free points without lines are refused,
+    and the solver's checks at the given positions run for each condition: what its catenaries
+    cannot model (current, a sloping seabed), a line that cannot reach between its ends, and a body
+    that nothing restores (unstable hydrostatics and no mooring restoring).
+    """
+    return _setup(case, "system_static")
+
+
+def prepare_system_offsets(case: SystemCase) -> SystemSetup:
+    """Every check of a ``system_offsets`` case that needs no solve; returns what the solves need.
+
+    As :func:`prepare_system_static`, and the size of the sweep
+    (:func:`seacable._limits.check_run_size`: one solve per condition, heading, load and load step).
+    """
+    setup = _setup(case, "system_offsets")
+    a: SystemOffsetsAnalysis = case.analysis
+    headings = a.heading_values()
+    n_cond = len(setup.conditions)
+    solves = n_cond * (a.load_steps + len(headings) * len(a.loads) * a.load_steps)
+    stored = n_cond * len(headings) * len(a.loads) * (12 * len(setup.lines) + 12 * len(setup.bodies)
+                                                      + 3 * len(setup.points))
+    check_run_size(f"system_offsets case '{case.name}' (each of its {solves:.0f} equilibria counted as a time step)",
+                   steps=solves, stored_values=stored,
+                   fix="give fewer analysis.loads or headings (n_headings), or fewer analysis.load_steps")
+    return SystemSetup(**{**setup.__dict__, "loads": tuple(a.loads), "headings": tuple(headings)})
+
+
+# ----------------------------------------------------------------------------- solving
+
+def _offsets_text(system: MooringSystem, eq) -> str:
+    """The horizontal offsets of the free bodies at the last converged state (none: ``eq`` None). [m]"""
+    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    if not free or eq is None:
+        return ""
+    parts = []
+    for name in free:
+        d = np.asarray(eq.body_offset(name), float)
+        parts.append(f"'{name}' {math.hypot(d[0], d[1]):.4g} m (x {d[0]:+.4g} m, y {d[1]:+.4g} m)")
+    return "; last converged offset of " + ", ".join(parts)
+
+
+def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str):
+    """Solve the equilibrium of ``system`` under each external load of ``steps`` (a list of (label,
+    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium.
+
+    A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
+    last offsets, the last converged offsets and ``fix``.
+    """
+    from .statics import solve_equilibrium
+
+    a = case.analysis
+    eq, last_label = initial, None
+    for label, external in steps:
+        try:
+            eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
+                                   max_iter=a.max_iterations, initial=eq)
+        except (ConvergenceError, NoSolutionError) as err:
+            residual = getattr(err, "residual", None)
+            done = f" (the step before, {last_label}, converged)" if last_label else ""
+            said = str(err).split(" Suggested fix:")[0].rstrip(". ")
+            message = (f"{where}: no equilibrium found at {label}{done}: {said}{_offsets_text(system, eq)}. "
+                       f"Suggested fix: {fix}.")
+            if isinstance(err, ConvergenceError):
+                raise ConvergenceError(message, iterations=getattr(err, "iterations", None),
+                                       residual=residual) from None
+            raise NoSolutionError(message) from None
+        last_label = label
+    return eq
+
+
+def _start_checks(system: MooringSystem, environment, where: str) -> None:
+    """The solver's checks at the given positions, without solving (:func:`~seacable.system.statics.check_statics`):
+    what its catenaries cannot model, a line that cannot reach between its ends, a body that nothing
+    restores (unstable hydrostatics and no mooring restoring)."""
+    from .statics import check_statics
+
+    try:
+        check_statics(system, environment)
+    except InputError as err:
+        raise type(err)(f"{where}{err}") from None
+
+
+def _check_stable(system: MooringSystem, eq, where: str) -> None:
+    """Refuse an equilibrium at which a free body's total (mooring + hydrostatic) stiffness is negative."""
+    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    if not free:
+        return
+    km, kh = np.asarray(eq.stiffness, float), np.asarray(eq.hydrostatic, float)
+    units = ("N/m", "N/m", "N/m", "N m/rad", "N m/rad", "N m/rad")
+    for i, name in enumerate(free):
+        for k in range(6):
+            m, h = km[6 * i + k, 6 * i + k], kh[6 * i + k, 6 * i + k]
+            if m + h < 0 and abs(m + h) > 1e-9 * (abs(m) + abs(h)):
+                hint = ("lower the centre of gravity or enlarge the waterplane moments (a positive metacentric "
+                        "height)" if k in (3, 4) else "check the waterplane area and the displaced volume")
+                raise NoSolutionError(
+                    f"{where}: body '{name}' has no stable equilibrium in {DOFS[k]}: its hydrostatic stiffness "
+                    f"is {h:.4g} {units[k]} and the lines add {m:.4g} {units[k]}, a total of {m + h:.4g} "
+                    f"{units[k]} < 0 (the body would capsize or sink away from this state). Suggested fix: "
+                    f"{hint} of bodies.{name}, or check its hydrostatic_stiffness matrix.")
+
+
+def _warn_breaking(case: SystemCase, values: dict, where: str) -> None:
+    """A SeacableWarning for each line whose end tension exceeds its line types' smallest breaking load."""
+    import warnings
+
+    from ..errors import SeacableWarning
+
+    for name in case.lines:
+        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
+        if not loads or any(b is None for b in loads):
+            continue
+        mbl = min(loads)
+        j = list(case.lines).index(name)
+        peak = np.nanmax(np.stack([values["fairlead_tension"][..., j], values["anchor_tension"][..., j]]))
+        if np.isfinite(peak) and peak > mbl:
+            warnings.warn(f"{where}: lines.{name} carries {peak:.4g} N, above its breaking_load {mbl:.4g} N: the "
+                          "line would break. Suggested fix: check the line's length and the loads, or name the line "
+                          "in analysis.damaged_lines.", SeacableWarning, stacklevel=3)
+
+
+def _ramp(system: MooringSystem, steps: int):
+    """(label, external loads) that ramp the free bodies' ``external_force`` up in ``steps`` steps: the
+    solver adds ``external`` to each body's own load, so step k adds ``-(1 - k / steps)`` of it."""
+    if steps == 1:
+        return [("the full load", None)]
+    loaded = {n: np.asarray(b.external_force, float) for n, b in system.bodies.items()
+              if b.kind == "free" and np.any(np.asarray(b.external_force) != 0)}
+    return [(f"load step {k} of {steps}", {n: tuple(-(1 - k / steps) * f) for n, f in loaded.items()})
+            for k in range(1, steps + 1)]
+
+
+def _static_fix(a) -> str:
+    more = max(10, 2 * a.load_steps)
+    return (f"ramp the bodies' external loads up in steps (analysis.load_steps: {more}), raise "
+            f"analysis.max_iterations ({a.max_iterations}), or check that the lines can hold the bodies under their "
+            "loads (long enough not to pull taut, taut enough to restore)")
+
+
+# ----------------------------------------------------------------------------- results
+
+def _nan(shape=()):
+    return np.full(shape, np.nan)
+
+
+def equilibrium_variables(eq, system: MooringSystem, setup: SystemSetup) -> dict[str, np.ndarray]:
+    """The per-equilibrium quantities of :data:`_VARIABLES` and :data:`_MATRICES` as arrays along the
+    setup's lines, bodies and points (NaN for those the system lacks: removed lines, non-free bodies).
+
+    Anchor loads are those of end A: the horizontal and vertical components of the force of the line
+    on its end point and the angle of that pull above the horizontal; the fairlead angle is the angle
+    of the line at end B below the horizontal.
+    """
+    nl, nb, npt = len(setup.lines), len(setup.bodies), len(setup.points)
+    out = {name: _nan((nl,) if dims == ("line",) else (nb,) if dims == ("body",) else (npt,))
+           for name, (dims, _, _) in _VARIABLES.items()}
+    out.update({name: _nan((nb, 6, 6)) for name in _MATRICES})
+    li = {n: i for i, n in enumerate(eq.line_names)}
+    for j, name in enumerate(setup.lines):
+        if name not in li:
+            continue
+        i = li[name]
+        fa, fb = np.asarray(eq.end_a_force[i], float), np.asarray(eq.end_b_force[i], float)
+        ha, hb = math.hypot(fa[0], fa[1]), math.hypot(fb[0], fb[1])
+        out["anchor_tension"][j] = eq.end_a_tension[i]
+        out["fairlead_tension"][j] = eq.end_b_tension[i]
+        out["anchor_horizontal_force"][j] = ha
+        out["anchor_vertical_force"][j] = fa[2]
+        out["anchor_uplift_angle"][j] = math.atan2(fa[2], ha)
+        out["fairlead_angle"][j] = math.atan2(-fb[2], hb)
+        for k, c in enumerate("xyz"):
+            out[f"fairlead_force_{c}"][j] = fb[k]
+        out["grounded_length"][j] = eq.grounded_length[i]
+    bi = {n: i for i, n in enumerate(eq.body_names)}
+    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    for j, name in enumerate(setup.bodies):
+        if name not in bi:
+            continue
+        pose = np.asarray(eq.body_position[bi[name]], float)
+        for k, (var_name, _, _) in enumerate(_POSE):
+            out[var_name][j] = pose[k]
+        d = pose[:2] - np.asarray(system.bodies[name].position[:2], float)
+        out["body_offset_x"][j], out["body_offset_y"][j] = d
+        out["body_offset"][j] = math.hypot(*d)
+        if name in free:
+            f = free.index(name)
+            out["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
+            out["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
+    pi = {n: i for i, n in enumerate(eq.point_names)}
+    for j, name in enumerate(setup.points):
+        if name in pi:
+            for k, c in enumerate("xyz"):
+                out[f"point_{c}"][j] = eq.point_position[pi[name]][k]
+    return out
+
+
+def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
+    nl = len(setup.lines)
+    out = {name: _nan((nl, n)) for name in _PROFILE}
+    for j, name in enumerate(setup.lines):
+        if name in eq.line_names:
+            positions, tension = eq.line_profile(name, n)
+            positions = np.asarray(positions, float)
+            out["x"][j], out["y"][j], out["z"][j] = positions.T
+            out["tension"][j] = tension
+    return out
+
+
+def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
+    return {k: np.stack([r[k] for r in records]).reshape(lead + np.shape(records[0][k])) for k in records[0]}
+
+
+def _coords(setup: SystemSetup) -> dict:
+    case = setup.case
+    return {
+        "condition": var("condition", np.array(setup.conditions, dtype=object), "1",
+                         "condition of the system: intact, or damaged (analysis.damaged_lines removed)"),
+        "line": var("line", np.array(setup.lines, dtype=object), "1", "line name"),
+        "body": var("body", np.array(setup.bodies, dtype=object), "1", "body name"),
+        "point": var("point", np.array(setup.points, dtype=object), "1", "point name"),
+        "line_length": var("line", [case.lines[n].line.length for n in setup.lines], "m",
+                           "unstretched length of the line"),
+        "end_a": var("line", np.array([case.lines[n].end_a for n in setup.lines], dtype=object), "1",
+                     "point at end A of the line (anchor)"),
+        "end_b": var("line", np.array([case.lines[n].end_b for n in setup.lines], dtype=object), "1",
+                     "point at end B of the line (fairlead)"),
+        "point_kind": var("point", np.array([case.points[n].kind for n in setup.points], dtype=object), "1",
+                          "kind of the point: fixed, free, coupled or body"),
+        "body_kind": var("body", np.array([case.bodies[n].kind for n in setup.bodies], dtype=object), "1",
+                         "kind of the body: free, fixed or prescribed"),
+    }
+
+
+def _line_present(setup: SystemSetup) -> np.ndarray:
+    return np.array([[name in system.lines for name in setup.lines] for system in setup.systems], dtype=np.int8)
+
+
+def _variables(values: dict, lead: tuple[str, ...], table: dict) -> dict:
+    return {name: var(lead + table[name][0], values[name], table[name][1], table[name][2])
+            for name in table if name in values}
+
+
+def _settings(case: SystemCase, setup: SystemSetup, **more) -> dict:
+    a = case.analysis
+    return {"tolerance": a.tolerance, "max_iterations": a.max_iterations, "load_steps": a.load_steps,
+            "damaged_lines": list(a.damaged_lines), "depth": case.environment.depth, **more}
+
+
+def run_system_static(case: SystemCase):
+    """Equilibrium, end tensions, anchor loads and stiffness of a system (analysis ``system_static``).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions ``condition`` (intact, and damaged when ``damaged_lines`` are given), ``line``,
+        ``body``, ``point``, ``node`` (profile points, evenly spaced in unstretched arc length),
+        ``dof`` and ``dof2`` (surge, sway, heave, roll, pitch, yaw) and ``body_dof``, ``body_dof2``
+        (those of every free body, for the coupled stiffness).
+    """
+    a: SystemStaticAnalysis = case.analysis
+    setup = prepare_system_static(case)
+    records, profiles, coupled, iterations, residuals = [], [], [], [], []
+    for condition, system in zip(setup.conditions, setup.systems):
+        where = f"system_static case '{case.name}', {condition} condition"
+        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        _check_stable(system, eq, where)
+        records.append(equilibrium_variables(eq, system, setup))
+        profiles.append(_profiles(eq, setup, a.profile_points))
+        coupled.append(np.asarray(eq.stiffness, float))
+        iterations.append(int(eq.iterations))
+        residuals.append(float(eq.residual))
+    nc = len(setup.conditions)
+    values = _stack(records, (nc,))
+    _warn_breaking(case, values, f"system_static case '{case.name}'")
+    data = _variables(values, ("condition",), _VARIABLES)
+    data.update(_variables(values, ("condition",), _MATRICES))
+    data.update(_variables(_stack(profiles, (nc,)), ("condition",), _PROFILE))
+    data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
+                               "1 where the line is in the condition, 0 where it is removed (its values NaN)")
+    free = setup.free_bodies
+    labels = np.array([f"{b} {d}" for b in free for d in DOFS], dtype=object)
+    data["coupled_stiffness"] = var(("condition", "body_dof", "body_dof2"), np.stack(coupled), _STIFFNESS_UNITS,
+                                    "coupled mooring stiffness of the free bodies, lines only")
+    data["iterations"] = var("condition", iterations, "1", "iterations of the equilibrium solve")
+    data["residual"] = var("condition", residuals, "1", "residual of the equilibrium, relative")
+    coords = _coords(setup)
+    s = np.array([np.linspace(0.0, case.lines[n].line.length, a.profile_points) for n in setup.lines])
+    coords.update({
+        "node": var("node", np.arange(a.profile_points), "1", "profile point, 0 at end A"),
+        "s": var(("line", "node"), s, "m", "unstretched arc length from end A"),
+        "dof": var("dof", np.array(DOFS, dtype=object), "1", "degree of freedom (force or moment)"),
+        "dof2": var("dof2", np.array(DOFS, dtype=object), "1", "degree of freedom (displacement or rotation)"),
+        "body_dof": var("body_dof", labels, "1", "free body and degree of freedom (force or moment)"),
+        "body_dof2": var("body_dof2", labels, "1", "free body and degree of freedom (displacement or rotation)"),
+    })
+    ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
+                      settings=_settings(case, setup))
+    ds.attrs["depth"] = float(case.environment.depth)
+    return ds
+
+
+def run_system_offsets(case: SystemCase):
+    """Offsets, watch circle and restoring force of a body under a swept load (analysis ``system_offsets``).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions ``condition``, ``load`` [N], ``heading`` [rad], ``line``, ``body``, ``point``. The
+        ``restoring_force`` is the horizontal force of the lines on the loaded body against the load's
+        heading; ``offset`` the loaded body's offset along the heading from its given position.
+    """
+    a: SystemOffsetsAnalysis = case.analysis
+    setup = prepare_system_offsets(case)
+    loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
+    records, restoring = [], []
+    for condition, system in zip(setup.conditions, setup.systems):
+        where = f"system_offsets case '{case.name}', {condition} condition"
+        base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        _check_stable(system, base, f"{where}, at no load")
+        for h in headings:
+            direction = np.array([math.cos(h), math.sin(h), 0.0, 0.0, 0.0, 0.0])
+            eq, last = base, 0.0
+            for load in loads:
+                if load > 0.0:
+                    steps = []
+                    for k in range(1, a.load_steps + 1):
+                        f = last + (load - last) * k / a.load_steps
+                        steps.append((f"{f:.6g} N at heading {h:.6g} rad", {a.body: tuple(f * direction)}))
+                    fix = (f"add intermediate loads between {last:g} N and {load:g} N (a finer ramp in "
+                           f"analysis.loads, or analysis.load_steps: {max(10, 2 * a.load_steps)}), raise "
+                           f"analysis.max_iterations ({a.max_iterations}), or lower the largest load if the lines "
+                           "cannot hold it")
+                    eq = _solve_path(case, system, steps, eq, where, fix)
+                    last = load
+                records.append(equilibrium_variables(eq, system, setup))
+                restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
+    lead = (len(setup.conditions), loads.size, headings.size)
+    values = {k: np.swapaxes(v, 1, 2) for k, v in _stack(records, (lead[0], lead[2], lead[1])).items()}
+    dims = ("condition", "load", "heading")
+    _warn_breaking(case, values, f"system_offsets case '{case.name}'")
+    data = _variables(values, dims, _VARIABLES)
+    unit = np.stack([np.cos(headings), np.sin(headings)])
+    b = setup.bodies.index(a.body)
+    offset = values["body_offset_x"][..., b] * unit[0] + values["body_offset_y"][..., b] * unit[1]
+    data["offset"] = var(dims, offset, "m", f"offset of body '{a.body}' along the load's heading")
+    restoring = np.swapaxes(np.reshape(restoring, (lead[0], lead[2], lead[1])), 1, 2)
+    data["restoring_force"] = var(dims, restoring, "N",
+                                  f"horizontal force of the lines on body '{a.body}' against the load's heading")
+    data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
+                               "1 where the line is in the condition, 0 where it is removed (its values NaN)")
+    coords = _coords(setup)
+    coords.update({"load": var("load", loads, "N", f"external horizontal load on body '{a.body}'"),
+                   "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})
+    ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
+                      settings=_settings(case, setup, body=a.body))
+    ds.attrs["loaded_body"] = a.body
+    ds.attrs["depth"] = float(case.environment.depth)
+    return ds
+
+
+def _body_line_force(eq, system: MooringSystem, body: str) -> np.ndarray:
+    """Force of every line on the points fixed on ``body``, summed, global axes. [N]"""
+    total = np.zeros(3)
+    for i, name in enumerate(eq.line_names):
+        line = system.lines[name]
+        for end, forces in (("end_a", eq.end_a_force), ("end_b", eq.end_b_force)):
+            p = system.points[getattr(line, end)]
+            if p.kind == "body" and p.body == body:
+                total += np.asarray(forces[i], float)
+    return total

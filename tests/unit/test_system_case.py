@@ -1,0 +1,448 @@
+"""Mooring-system cases (seacable.system.case, seacable.system.run): files, checks, results.
+
+The physics asserted: the equilibrium of the body (the lines' horizontal pull balances the external
+load), the mirror symmetry of the spread, the anchor loads as components of the solver's end force,
+the damaged body drifting away from the broken line's anchor, the watch circle at no load being the
+static equilibrium, the restoring force equal to the load, and the compliance of small loads
+against the inverse of the reported stiffness.
+"""
+
+from __future__ import annotations
+
+import math
+import pickle
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+import seacable as sc
+from seacable.cli import main
+from seacable.io import dump_case, parse_case
+from seacable.system import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+SPREAD = EXAMPLES / "spread_mooring.yaml"
+WATCH = EXAMPLES / "spread_mooring_watch_circle.yaml"
+LOAD = 5.0e5  # the environmental load of spread_mooring.yaml along +x [N]
+
+
+def _data(path=SPREAD) -> dict:
+    return yaml.safe_load(path.read_text(encoding="utf-8"))
+
+
+@pytest.fixture(scope="module")
+def spread():
+    """The example case and its system_static result (intact and line1 broken)."""
+    case = sc.load_case(SPREAD)
+    return case, sc.run(case)
+
+
+@pytest.fixture(scope="module")
+def offsets():
+    """A small watch-circle sweep of the example (no constant load on the buoy), and the static case."""
+    case = sc.load_case(WATCH)
+    small = case.replace(analysis=SystemOffsetsAnalysis(body="buoy", loads=(0.0, 1.0e3, 2.5e5, 5.0e5),
+                                                        headings=(0.0, math.pi / 3, -math.pi / 3, math.pi),
+                                                        damaged_lines=("line1",)))
+    static = case.replace(analysis=SystemStaticAnalysis(damaged_lines=("line1",)))
+    return small, sc.run(small), sc.run(static)
+
+
+# --- files ----------------------------------------------------------------------------------------
+
+def test_a_file_with_lines_and_no_line_is_a_system_case_and_single_line_cases_are_unchanged():
+    case = sc.load_case(SPREAD)
+    assert isinstance(case, SystemCase)
+    assert set(case.lines) == {"line1", "line2", "line3"}
+    assert case.lines["line1"].line.segments[0].line_type.axial_stiffness == 7.7e8
+    assert case.analysis.damaged_lines == ("line1",)
+    assert isinstance(sc.load_case(EXAMPLES / "oc3_hywind_static.yaml"), sc.Case)
+
+
+def test_a_file_with_line_and_lines_is_refused():
+    data = {**_data(), "line": {"line_type": "chain", "length": 650.0}}
+    with pytest.raises(sc.CaseFileError, match="has 'line' .* and 'lines' .*; a case is one or the other"):
+        parse_case(data)
+
+
+def test_segments_form_equals_the_short_form():
+    data = _data()
+    long = {**data, "lines": {**data["lines"], "line1": {"segments": [{"line_type": "chain", "length": 650.0}],
+                                                         "end_a": "anchor1", "end_b": "fairlead1"}}}
+    assert parse_case(long) == parse_case(data)
+
+
+def test_dump_parse_round_trip_and_pickle():
+    case = sc.load_case(SPREAD)
+    assert parse_case(yaml.safe_load(dump_case(case))) == case
+    assert pickle.loads(pickle.dumps(case)) == case
+
+
+@pytest.mark.parametrize("edit, expected", [
+    (("lines", "line1", "end_b", "fairled1"),
+     ("lines.line1.end_b: point 'fairled1' is not defined (points: anchor1, anchor2, anchor3, fairlead1, fairlead2, "
+      "fairlead3). Did you mean 'fairlead1'?")),
+    (("points", "fairlead2", "body", "boy"), ("points.fairlead2.body: body 'boy' is not defined (bodies: buoy). "
+                                              "Did you mean 'buoy'?")),
+    (("bodies", "buoy", "mass", -1.0), "bodies.buoy.mass must be >= 0 kg, got -1 kg"),
+    (("bodies", "buoy", "inertia", [5.9e7, -1.0, 3.0e7]), "bodies.buoy inertia must hold three moments >= 0"),
+    (("lines", "line2", "length", -650.0), "lines.line2.length must be > 0 m, got -650 m"),
+    (("lines", "line2", "line_type", "chian"), ("lines.line2.line_type 'chian' is not defined in line_types "
+                                                "(defined: chain). Did you mean 'chain'?")),
+    (("analysis", "damaged_lines", ["line4"]), "analysis.damaged_lines[0]: line 'line4' is not defined"),
+    (("points", "anchor1", "position", [-606.0, 0.0, -160.0]), ("points.anchor1.position: z = -160 m is below "
+                                                                "the seabed at z = -150 m")),
+    (("environment", "depth", None), "needs environment.depth"),
+])
+def test_bad_system_files_name_the_key_the_value_and_a_fix(edit, expected):
+    data = _data()
+    node = data
+    for key in edit[:-2]:
+        node = node[key]
+    node[edit[-2]] = edit[-1]
+    with pytest.raises(sc.CaseFileError) as info:
+        parse_case(data, source="f.yaml")
+    assert expected in str(info.value)
+    assert "\n" not in str(info.value)  # one message
+
+
+def test_a_body_with_no_lines_is_refused():
+    data = _data()
+    data["bodies"]["spare"] = {"mass": 1.0e3, "volume": 1.0}
+    with pytest.raises(sc.CaseFileError, match=r"bodies\.spare: no line ends on this body"):
+        parse_case(data)
+
+
+@pytest.mark.parametrize("damaged, expected", [
+    (["line4"], ("analysis.damaged_lines ['line4']: the damaged system is not valid: bodies.marker: no line ends "
+                 "on this body")),
+    (["line1", "line2", "line3", "line4"], "removes every line"),
+])
+def test_a_damaged_system_that_leaves_a_body_without_lines_is_refused_before_solving(tmp_path, capsys, damaged,
+                                                                                    expected):
+    data = _data()
+    data["bodies"]["marker"] = {"mass": 1.0e3, "volume": 2.0, "waterplane_area": 1.0}
+    data["points"]["marker_eye"] = {"kind": "body", "body": "marker", "position": [0.0, 0.0, -1.0]}
+    data["lines"]["line4"] = {"line_type": "chain", "length": 200.0, "end_a": "anchor1", "end_b": "marker_eye"}
+    data["analysis"]["damaged_lines"] = damaged
+    path = tmp_path / "d.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["validate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert expected in err
+
+
+def test_offsets_needs_a_free_body_and_increasing_loads():
+    data = _data(WATCH)
+    for change, expected in (({"body": "bouy"}, "body 'bouy' is not defined (bodies: buoy). Did you mean 'buoy'?"),
+                             ({"loads": [0.0, 5.0e5, 2.5e5]}, "loads must increase"),
+                             ({"loads": [-1.0]}, "loads[0] must be a finite number >= 0 N, got -1.0 N")):
+        with pytest.raises(sc.CaseFileError, match="analysis") as info:
+            parse_case({**data, "analysis": {**data["analysis"], **change}})
+        assert expected in str(info.value)
+    data["bodies"]["buoy"]["kind"] = "fixed"
+    with pytest.raises(sc.CaseFileError, match="'buoy' is 'fixed'"):
+        parse_case(data)
+
+
+def test_validate_accepts_the_examples(capsys):
+    assert main(["validate", str(SPREAD), str(WATCH)]) == 0
+    assert capsys.readouterr().out.count("3 line(s), 1 body(ies), 6 point(s)") == 2
+
+
+# --- system_static: physics ------------------------------------------------------------------------
+
+def test_result_holds_the_solver_values(spread):
+    """The result's tensions, anchor loads and stiffness are the solver's (the intact system)."""
+    from seacable.system.statics import solve_equilibrium
+
+    case, ds = spread
+    eq = solve_equilibrium(case.system(), case.environment, tol=case.analysis.tolerance)
+    intact = ds.sel(condition="intact")
+    order = [list(eq.line_names).index(n) for n in ds.line.values]
+    np.testing.assert_allclose(intact.anchor_tension.values, np.asarray(eq.end_a_tension)[order], rtol=1e-12)
+    np.testing.assert_allclose(intact.fairlead_tension.values, np.asarray(eq.end_b_tension)[order], rtol=1e-12)
+    fa = np.asarray(eq.end_a_force)[order]
+    np.testing.assert_allclose(intact.anchor_horizontal_force.values, np.hypot(fa[:, 0], fa[:, 1]), rtol=1e-12)
+    np.testing.assert_allclose(intact.anchor_vertical_force.values, fa[:, 2], rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(intact.grounded_length.values, np.asarray(eq.grounded_length)[order], rtol=1e-12)
+    np.testing.assert_allclose(intact.stiffness.sel(body="buoy").values, eq.body_stiffness("buoy"), rtol=1e-12)
+    np.testing.assert_allclose(intact.coupled_stiffness.values, eq.stiffness, rtol=1e-12)
+
+
+def test_anchor_loads_are_the_components_of_the_anchor_tension(spread):
+    _, ds = spread
+    h, v = ds.anchor_horizontal_force.values, ds.anchor_vertical_force.values
+    ok = np.isfinite(h)
+    # the end force's magnitude is the end tension (same numbers, rounding only)
+    np.testing.assert_allclose(np.hypot(h, v)[ok], ds.anchor_tension.values[ok], rtol=1e-9)
+    np.testing.assert_allclose(np.tan(ds.anchor_uplift_angle.values[ok]), (v / h)[ok], rtol=1e-9, atol=1e-12)
+
+
+def test_the_lines_hold_the_load(spread):
+    """Body equilibrium in the horizontal plane: the lines' pull on the fairleads balances the load."""
+    _, ds = spread
+    for condition in ds.condition.values:
+        d = ds.sel(condition=condition)
+        fx = np.nansum(d.fairlead_force_x.values)   # every line ends B on the buoy
+        fy = np.nansum(d.fairlead_force_y.values)
+        # the solver's tolerance is 1e-8 relative; 1e-6 of the load leaves room for its scaling
+        assert abs(fx + LOAD) < 1e-6 * LOAD, (condition, fx)
+        assert abs(fy) < 1e-6 * LOAD, (condition, fy)
+
+
+def test_the_spread_is_symmetric_about_the_load(spread):
+    """Lines 2 and 3 are mirror images about the x axis, as is the load: equal tensions, no sway."""
+    _, ds = spread
+    for condition in ds.condition.values:
+        d = ds.sel(condition=condition)
+        # mirror symmetry holds to the solver's tolerance (1e-8); 1e-6 relative
+        np.testing.assert_allclose(d.fairlead_tension.sel(line="line2"), d.fairlead_tension.sel(line="line3"),
+                                   rtol=1e-6)
+        assert abs(float(d.body_y.sel(body="buoy"))) < 1e-6 * float(d.body_offset.sel(body="buoy"))
+    i = ds.sel(condition="intact")
+    # line1 is upwind of the +x load: it holds the most
+    assert float(i.fairlead_tension.sel(line="line1")) > float(i.fairlead_tension.sel(line="line2"))
+    assert float(i.body_x.sel(body="buoy")) > 0
+
+
+def test_the_damaged_body_drifts_away_from_the_broken_line(spread):
+    _, ds = spread
+    assert list(ds.condition.values) == ["intact", "damaged"]
+    assert ds.line_present.sel(condition="damaged").values.tolist() == [0, 1, 1]
+    assert np.isnan(ds.fairlead_tension.sel(condition="damaged", line="line1"))
+    intact, damaged = (float(ds.body_x.sel(condition=c, body="buoy")) for c in ("intact", "damaged"))
+    # line1's anchor is at -x: without it the buoy goes further along +x, and the others take the load
+    assert damaged > intact + 1.0
+    t = ds.fairlead_tension.sel(line="line2")
+    assert float(t.sel(condition="damaged")) > float(t.sel(condition="intact"))
+
+
+def test_translational_stiffness_is_symmetric_and_positive(spread):
+    _, ds = spread
+    k = ds.stiffness.sel(condition="intact", body="buoy").values
+    # translations: the lines' force derives from their elastic and gravity energy, so the translational
+    # block is symmetric to rounding (the rotational blocks are not under a net line moment)
+    t = k[:3, :3]
+    np.testing.assert_allclose(t, t.T, rtol=1e-6, atol=1e-9 * np.abs(t).max())
+    assert k[0, 0] > 0 and k[1, 1] > 0 and k[5, 5] > 0
+    assert ds.stiffness.dims == ("condition", "body", "dof", "dof2")
+    assert list(ds.dof.values) == ["surge", "sway", "heave", "roll", "pitch", "yaw"]
+
+
+def test_profiles_run_from_anchor_to_fairlead(spread):
+    _, ds = spread
+    d = ds.sel(condition="intact", line="line1")
+    # the profile's ends are the line's end points (anchor1 and fairlead1)
+    a, b = ds.sel(condition="intact", point="anchor1"), ds.sel(condition="intact", point="fairlead1")
+    np.testing.assert_allclose([d.x[0], d.y[0], d.z[0]], [a.point_x, a.point_y, a.point_z], atol=1e-6)
+    np.testing.assert_allclose([d.x[-1], d.y[-1], d.z[-1]], [b.point_x, b.point_y, b.point_z], atol=1e-6)
+    assert float(d.s[-1]) == 650.0
+    np.testing.assert_allclose(float(d.tension[-1]), float(d.fairlead_tension), rtol=1e-6)
+
+
+def test_every_variable_is_labelled_and_the_netcdf_round_trips(spread, tmp_path):
+    _, ds = spread
+    for name in list(ds.data_vars) + list(ds.coords):
+        assert {"units", "long_name"} <= set(ds[name].attrs), name
+    path = sc.write_netcdf(ds, tmp_path / "r.nc")
+    back = sc.read_netcdf(path)
+    for name in ds.data_vars:
+        np.testing.assert_array_equal(back[name].values, ds[name].values, err_msg=name)
+    assert list(back.line.values) == ["line1", "line2", "line3"]
+    assert back.attrs["analysis"] == "system_static"
+    assert isinstance(parse_case(yaml.safe_load(back.attrs["case"])), SystemCase)
+
+
+# --- system_offsets: physics -----------------------------------------------------------------------
+
+def test_watch_circle_at_no_load_is_the_static_equilibrium(offsets):
+    _, ds, static = offsets
+    for condition in ds.condition.values:
+        at_rest = ds.sel(condition=condition, load=0.0)
+        s = static.sel(condition=condition)
+        for name in ("body_x", "body_y", "body_z"):
+            # the same equilibrium solved twice from the same start: equal to the solver's tolerance
+            np.testing.assert_allclose(at_rest[name].sel(body="buoy").values,
+                                       np.full(ds.heading.size, float(s[name].sel(body="buoy"))), atol=1e-6)
+
+
+def test_restoring_force_is_the_load(offsets):
+    """At equilibrium the lines' horizontal pull on the buoy against the heading equals the load."""
+    _, ds, _ = offsets
+    load = ds["load"].values[None, :, None]
+    # the residual tolerance is 1e-8 relative; 1e-6 of the largest load
+    np.testing.assert_allclose(ds.restoring_force.values, np.broadcast_to(load, ds.restoring_force.shape),
+                               atol=1e-6 * ds["load"].values.max())
+
+
+def test_small_loads_follow_the_stiffness(offsets):
+    """A 1 kN load displaces the buoy by the compliance: the inverse of the total 6x6 stiffness."""
+    _, ds, static = offsets
+    s = static.sel(condition="intact")
+    k = s.stiffness.sel(body="buoy").values + s.hydrostatic_stiffness.sel(body="buoy").values
+    d = ds.sel(condition="intact")
+    f = 1.0e3
+    for h in d.heading.values:
+        u = np.array([math.cos(h), math.sin(h), 0, 0, 0, 0])
+        expected = f * u[:2] @ np.linalg.solve(k, u)[:2]
+        moved = float(d.offset.sel(load=f, heading=h) - d.offset.sel(load=0.0, heading=h))
+        # linear for a 1 kN load (the surge stiffness changes by < 0.1 % over the 1 kN offset)
+        assert moved == pytest.approx(expected, rel=2e-3), h
+
+
+def test_watch_circle_is_symmetric_and_largest_against_the_broken_line(offsets):
+    _, ds, _ = offsets
+    i = ds.sel(condition="intact", load=5.0e5)
+    # the headings +60 and -60 deg are mirror images about the x axis
+    a, b = i.sel(heading=math.pi / 3), i.sel(heading=-math.pi / 3)
+    np.testing.assert_allclose(float(a.body_offset_x.sel(body="buoy")), float(b.body_offset_x.sel(body="buoy")),
+                               rtol=1e-6)
+    np.testing.assert_allclose(float(a.body_offset_y.sel(body="buoy")), -float(b.body_offset_y.sel(body="buoy")),
+                               rtol=1e-6)
+    # a load towards +x (heading 0) pulls the buoy away from line1's anchor: with line1 broken the offset
+    # along the heading is larger
+    off = ds.offset.sel(load=5.0e5, heading=0.0)
+    assert float(off.sel(condition="damaged")) > float(off.sel(condition="intact"))
+
+
+# --- command line ----------------------------------------------------------------------------------
+
+def test_cli_runs_and_plots_a_system_case(tmp_path, capsys):
+    out = tmp_path / "spread.nc"
+    assert main(["run", str(SPREAD), "-o", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "spread_system.png" in printed and "spread_tensions.png" in printed
+    assert main(["plot", str(out), "-o", str(tmp_path / "figs")]) == 0
+    assert sorted(p.name for p in (tmp_path / "figs").glob("*.png")) == ["spread_system.png", "spread_tensions.png"]
+    ds = xr.open_dataset(out)
+    assert ds.attrs["analysis"] == "system_static"
+    ds.close()
+
+
+def test_no_equilibrium_names_the_residual_the_offset_and_a_ramp(tmp_path, capsys):
+    data = _data()
+    data["analysis"]["max_iterations"] = 1
+    path = tmp_path / "stuck.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["run", str(path), "--no-plots", "-o", str(tmp_path / "r.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert "no equilibrium found" in err and "intact condition" in err
+    assert "offset" in err and "Suggested fix" in err and "load_steps" in err
+
+
+def test_load_steps_reach_the_same_equilibrium(spread):
+    case, ds = spread
+    ramped = sc.run(case.replace(analysis=SystemStaticAnalysis(load_steps=4)))
+    # the same equilibrium reached through 4 steps: equal to the solver's tolerance
+    np.testing.assert_allclose(ramped.body_x.values[0], ds.body_x.values[0], atol=1e-6)
+
+
+def _write(tmp_path, data, name="case.yaml") -> str:
+    path = tmp_path / name
+    path.write_text(yaml.safe_dump(data))
+    return str(path)
+
+
+@pytest.mark.parametrize("change, expected", [
+    # metacentric height 7.5 + 0.6 - 20 < 0: roll stiffness rho g (I + V z_B) - m g z_G < 0, lines too weak
+    (("bodies", "buoy", "center_of_gravity", [0.0, 0.0, 5.0]), ["bodies.buoy", "roll", "capsizes"]),
+    (("environment", "current", {"speed": 1.0}), ["environment.current", "1 m/s"]),
+])
+def test_validate_refuses_what_run_would_before_solving(tmp_path, capsys, change, expected):
+    data = _data()
+    node = data
+    for key in change[:-2]:
+        node = node[key]
+    node[change[-2]] = change[-1]
+    path = _write(tmp_path, data)
+    for argv in (["validate", path], ["run", path, "--no-plots", "-o", str(tmp_path / "r.nc")]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.count("seacable: error:") == 1 and "Traceback" not in err
+        for word in expected:
+            assert word in err, (word, err)
+    assert not (tmp_path / "r.nc").exists()
+
+
+def test_no_equilibrium_under_a_load_the_lines_cannot_hold(tmp_path, capsys):
+    """A 1e9 N m yaw moment on a buoy with no waterplane: the solver gives up with its residual, the
+    body's last offset, and the case's fix (a load ramp)."""
+    data = _data()
+    data["bodies"]["buoy"].update(waterplane_area=0.0, waterplane_moments=[0.0, 0.0],
+                                  external_force=[5.0e5, 0.0, 0.0, 0.0, 0.0, 1.0e9])
+    path = _write(tmp_path, data)
+    assert main(["validate", path]) == 0   # legal input: only solving finds it
+    capsys.readouterr()
+    assert main(["run", path, "--no-plots", "-o", str(tmp_path / "r.nc")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert "no equilibrium found" in err and "residual" in err and "last offsets buoy" in err
+    assert "Suggested fix: ramp the bodies' external loads up in steps (analysis.load_steps: 10)" in err
+
+
+def test_a_line_above_its_breaking_load_is_warned():
+    data = _data()
+    data["lines"]["line2"]["length"] = 500.0   # shorter than the 610 m between its ends: stretched 20 %
+    case = parse_case(data)
+    with pytest.warns(sc.SeacableWarning) as record:
+        sc.run(case)
+    # every line pulls taut (the buoy is drawn towards anchor2): each is named with its tension
+    said = " ".join(str(w.message) for w in record)
+    assert re.search(r"lines\.line2 carries 2\.\d+e\+07 N, above its breaking_load 7\.3e\+06 N", said), said
+
+
+def _line_weight(case, name) -> float:
+    """Weight in water per metre of a one-segment line: (m - rho pi d^2 / 4) g. [N/m]"""
+    lt = case.lines[name].line.segments[0].line_type
+    env = case.environment
+    return (lt.mass_per_length - env.water_density * math.pi * lt.diameter ** 2 / 4) * env.gravity
+
+
+@pytest.mark.parametrize("length", [650.0, 612.0])   # on the seabed at its anchor; lifting its anchor
+def test_each_line_is_in_vertical_equilibrium(length):
+    """The forces of a line on its two ends carry its suspended weight: V_A + F_Bz = -w (L - grounded).
+
+    The seabed carries the grounded part (its friction acts horizontally only). 612 m over the 610 m
+    between anchor and fairlead pulls every line off the seabed: then the anchor is lifted.
+    """
+    data = _data()
+    for name in data["lines"]:
+        data["lines"][name]["length"] = length
+    case = parse_case(data)
+    ds = sc.run(case)
+    for name in case.lines:
+        w = _line_weight(case, name)
+        d = ds.sel(line=name)
+        ok = d.line_present.values == 1
+        lhs = (d.anchor_vertical_force + d.fairlead_force_z).values[ok]
+        rhs = -w * (length - d.grounded_length.values[ok])
+        # catenary closure to the solver's tolerance (1e-8 of the force scale); 1e-6 of the line's weight
+        np.testing.assert_allclose(lhs, rhs, atol=1e-6 * w * length)
+        # the fairlead angle below the horizontal: tan = (suspended weight + anchor uplift) / H
+        h_b = np.hypot(d.fairlead_force_x, d.fairlead_force_y).values[ok]
+        np.testing.assert_allclose(np.tan(d.fairlead_angle.values[ok]),
+                                   (-rhs + d.anchor_vertical_force.values[ok]) / h_b, rtol=1e-6)
+    i = ds.sel(condition="intact")
+    if length < 615.0:
+        assert np.all(i.grounded_length.values == 0)
+        assert np.all(i.anchor_uplift_angle.values > 0.01)   # the anchors are pulled up, not only along
+    else:
+        assert np.all(i.grounded_length.values > 100.0)
+        np.testing.assert_allclose(i.anchor_vertical_force.values, 0.0, atol=1e-6 * w * length)
+
+
+def test_schema_of_system_cases(capsys):
+    import json
+
+    assert main(["schema", "--system"]) == 0
+    schema = json.loads(capsys.readouterr().out)
+    assert {"points", "bodies", "lines", "analysis"} <= set(schema["properties"])
+    assert main(["schema"]) == 0
+    assert "line" in json.loads(capsys.readouterr().out)["properties"]
