@@ -78,7 +78,10 @@ CASES = {
 }
 
 
-def main(outdir: str = "demo_out") -> int:
+def main(outdir: str = "demo_out", *extra: str) -> int:
+    if extra or outdir.startswith("-"):
+        print("usage: python examples/demo.py [OUTDIR]   (default demo_out/)")
+        return 0 if outdir in ("-h", "--help") else 2
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     print(f"seacable {sc.__version__} demo -> {out.resolve()}")
