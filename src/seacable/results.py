@@ -44,7 +44,7 @@ ANALYSIS_VARIABLES: dict[str, tuple[str, ...]] = {
     "sweep": ("status",),
     "system_static": ("condition", "line", "x", "y", "z", "body_x", "body_y", "body_z", "point_x", "point_y",
                       "point_z", "point_kind", "fairlead_tension", "anchor_tension"),
-    "system_offsets": ("condition", "load", "heading", "body", "body_offset_x", "body_offset_y", "offset",
+    "system_offsets": ("condition", "applied_load", "heading", "body", "body_offset_x", "body_offset_y", "offset",
                        "restoring_force", "fairlead_tension"),
 }
 

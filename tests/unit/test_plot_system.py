@@ -71,13 +71,13 @@ def test_watch_circle_closes_each_loads_curve_over_the_headings(offsets):
         ax = figs[0].axes[0]
         curves = [ln for ln in ax.get_lines() if len(ln.get_xdata()) == offsets.heading.size + 1]
         # a curve per load and condition, each closed (first point repeated)
-        assert len(curves) == offsets["load"].size * offsets.condition.size
+        assert len(curves) == offsets.applied_load.size * offsets.condition.size
         for ln in curves:
             assert ln.get_xdata()[0] == ln.get_xdata()[-1] and ln.get_ydata()[0] == ln.get_ydata()[-1]
         # the largest intact circle is the intact offsets at the largest load
-        big = curves[offsets["load"].size - 1]
+        big = curves[offsets.applied_load.size - 1]
         radius = np.hypot(big.get_xdata()[:-1], big.get_ydata()[:-1])
-        expected = offsets.body_offset.sel(condition="intact", body="buoy").isel(load=-1).values
+        expected = offsets.body_offset.sel(condition="intact", body="buoy").isel(applied_load=-1).values
         np.testing.assert_allclose(np.sort(radius), np.sort(expected), rtol=1e-12)
     finally:
         for f in figs:

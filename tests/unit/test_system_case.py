@@ -264,7 +264,7 @@ def test_every_variable_is_labelled_and_the_netcdf_round_trips(spread, tmp_path)
 def test_watch_circle_at_no_load_is_the_static_equilibrium(offsets):
     _, ds, static = offsets
     for condition in ds.condition.values:
-        at_rest = ds.sel(condition=condition, load=0.0)
+        at_rest = ds.sel(condition=condition, applied_load=0.0)
         s = static.sel(condition=condition)
         for name in ("body_x", "body_y", "body_z"):
             # the same equilibrium solved twice from the same start: equal to the solver's tolerance
@@ -275,10 +275,10 @@ def test_watch_circle_at_no_load_is_the_static_equilibrium(offsets):
 def test_restoring_force_is_the_load(offsets):
     """At equilibrium the lines' horizontal pull on the buoy against the heading equals the load."""
     _, ds, _ = offsets
-    load = ds["load"].values[None, :, None]
+    load = ds.applied_load.values[None, :, None]
     # the residual tolerance is 1e-8 relative; 1e-6 of the largest load
     np.testing.assert_allclose(ds.restoring_force.values, np.broadcast_to(load, ds.restoring_force.shape),
-                               atol=1e-6 * ds["load"].values.max())
+                               atol=1e-6 * ds.applied_load.values.max())
 
 
 def test_small_loads_follow_the_stiffness(offsets):
@@ -291,14 +291,14 @@ def test_small_loads_follow_the_stiffness(offsets):
     for h in d.heading.values:
         u = np.array([math.cos(h), math.sin(h), 0, 0, 0, 0])
         expected = f * u[:2] @ np.linalg.solve(k, u)[:2]
-        moved = float(d.offset.sel(load=f, heading=h) - d.offset.sel(load=0.0, heading=h))
+        moved = float(d.offset.sel(applied_load=f, heading=h) - d.offset.sel(applied_load=0.0, heading=h))
         # linear for a 1 kN load (the surge stiffness changes by < 0.1 % over the 1 kN offset)
         assert moved == pytest.approx(expected, rel=2e-3), h
 
 
 def test_watch_circle_is_symmetric_and_largest_against_the_broken_line(offsets):
     _, ds, _ = offsets
-    i = ds.sel(condition="intact", load=5.0e5)
+    i = ds.sel(condition="intact", applied_load=5.0e5)
     # the headings +60 and -60 deg are mirror images about the x axis
     a, b = i.sel(heading=math.pi / 3), i.sel(heading=-math.pi / 3)
     np.testing.assert_allclose(float(a.body_offset_x.sel(body="buoy")), float(b.body_offset_x.sel(body="buoy")),
@@ -307,7 +307,7 @@ def test_watch_circle_is_symmetric_and_largest_against_the_broken_line(offsets):
                                rtol=1e-6)
     # a load towards +x (heading 0) pulls the buoy away from line1's anchor: with line1 broken the offset
     # along the heading is larger
-    off = ds.offset.sel(load=5.0e5, heading=0.0)
+    off = ds.offset.sel(applied_load=5.0e5, heading=0.0)
     assert float(off.sel(condition="damaged")) > float(off.sel(condition="intact"))
 
 

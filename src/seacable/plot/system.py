@@ -150,7 +150,7 @@ def _system_offsets(ds, plt):
     from matplotlib import colormaps
 
     figs = {}
-    loads = np.asarray(ds["load"].values, float)  # not ds.load: Dataset.load()
+    loads = np.asarray(ds.applied_load.values, float)
     headings = np.asarray(ds.heading.values, float)
     order = np.argsort(np.mod(headings, 2 * np.pi))
     full = headings.size >= 3

@@ -466,7 +466,7 @@ def run_system_offsets(case: SystemCase):
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
     lead = (len(setup.conditions), loads.size, headings.size)
     values = {k: np.swapaxes(v, 1, 2) for k, v in _stack(records, (lead[0], lead[2], lead[1])).items()}
-    dims = ("condition", "load", "heading")
+    dims = ("condition", "applied_load", "heading")
     _warn_breaking(case, values, f"system_offsets case '{case.name}'")
     data = _variables(values, dims, _VARIABLES)
     unit = np.stack([np.cos(headings), np.sin(headings)])
@@ -479,7 +479,7 @@ def run_system_offsets(case: SystemCase):
     data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
                                "1 where the line is in the condition, 0 where it is removed (its values NaN)")
     coords = _coords(setup)
-    coords.update({"load": var("load", loads, "N", f"external horizontal load on body '{a.body}'"),
+    coords.update({"applied_load": var("applied_load", loads, "N", f"external horizontal load on body '{a.body}'"),
                    "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})
     ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
                       settings=_settings(case, setup, body=a.body))
