@@ -127,11 +127,21 @@ class MoorDynLineType:
     added_mass_normal: float  # Ca [-]
     drag_tangential: float  # CdAx [-]
     added_mass_tangential: float  # CaAx [-]
+    tension_strain: tuple[tuple[float, float], ...] | None = None  # nonlinear EA: (strain [-], tension [N])
+    dynamic_stiffness: tuple[float, ...] | None = None  # viscoelastic: (EA_d,) or (EA_Dc, EA_D_Lm) [N, -]
+    dynamic_damping: float | None = None  # viscoelastic: BA_d [N s]
+    table_file: str | None = None  # the file the nonlinear EA table was read from
 
 
 @dataclass(frozen=True)
 class MoorDynPoint:
-    """One row of a MoorDyn POINTS section; ``attachment`` is ``'fixed'``, ``'vessel'`` or ``'free'``."""
+    """One row of a MoorDyn POINTS section.
+
+    ``attachment`` is ``'fixed'``, ``'vessel'``, ``'free'``, ``'body'`` (``BodyN``: ``position`` is
+    then relative to body N's reference point, in body axes; ``body`` is N) or ``'turbine'``
+    (``TurbineN`` of FAST.Farm: ``position`` relative to turbine N's platform reference point;
+    ``turbine`` is N).
+    """
 
     id: int
     attachment: str
@@ -140,6 +150,84 @@ class MoorDynPoint:
     volume: float  # displaced volume, e.g. a buoy [m^3]
     drag_area: float  # CdA [m^2]
     added_mass_coefficient: float  # Ca [-]
+    body: int | None = None  # N of a 'BodyN' point
+    turbine: int | None = None  # N of a 'TurbineN' point
+
+
+@dataclass(frozen=True)
+class MoorDynRodType:
+    """One row of a MoorDyn ROD TYPES section (SI units)."""
+
+    name: str
+    diameter: float  # [m]
+    mass_per_length: float  # [kg/m]
+    drag_normal: float  # Cd [-]
+    added_mass_normal: float  # Ca [-]
+    drag_end: float  # CdEnd [-]
+    added_mass_end: float  # CaEnd [-]
+
+
+@dataclass(frozen=True)
+class MoorDynBody:
+    """One row of a MoorDyn BODIES section (SI units; angles in radians).
+
+    ``attachment`` is ``'free'``, ``'fixed'``, ``'coupled'`` (MoorDyn's Coupled/Vessel: moved by the
+    coupled code) or ``'turbine'`` (FAST.Farm's TurbineN, ``turbine`` is N). ``pinned`` is True for
+    ``CoupledPinned`` (the reference point follows the vessel, the rotations are free).
+    ``drag_area`` is expanded to six values (MoorDyn: 1 for all, 2 translation|rotation, 3 per axis
+    for both, or 6); ``added_mass_coefficient`` to three.
+    """
+
+    id: int
+    attachment: str
+    position: tuple[float, float, float, float, float, float]  # x, y, z [m], roll, pitch, yaw [rad]
+    mass: float  # [kg]
+    center_of_gravity: tuple[float, float, float]  # body axes [m]
+    inertia: tuple[float, float, float]  # Ixx, Iyy, Izz [kg m^2]
+    volume: float  # [m^3]
+    drag_area: tuple[float, float, float, float, float, float]  # CdA [m^2] (rotational: [m^5])
+    added_mass_coefficient: tuple[float, float, float]  # Ca [-]
+    pinned: bool = False
+    turbine: int | None = None
+
+
+@dataclass(frozen=True)
+class MoorDynRod:
+    """One row of a MoorDyn RODS section.
+
+    ``attachment`` is ``'fixed'``, ``'free'``, ``'coupled'``, ``'turbine'`` or ``'body'``; ``pinned``
+    marks MoorDyn's ``Pinned``, ``CoupledPinned`` and ``BodyNPinned`` (end A held, rotation free).
+    ``end_a``/``end_b`` are global, or relative to body N (``body``) in body axes.
+    """
+
+    id: int
+    rod_type: str
+    attachment: str
+    end_a: tuple[float, float, float]  # [m]
+    end_b: tuple[float, float, float]  # [m]
+    n_segments: int
+    outputs: str
+    pinned: bool = False
+    body: int | None = None
+    turbine: int | None = None
+
+    @property
+    def length(self) -> float:
+        """Distance between the two ends. [m]"""
+        return math.dist(self.end_a, self.end_b)
+
+
+@dataclass(frozen=True)
+class MoorDynFailure:
+    """One row of a MoorDyn FAILURE section: the named lines detach from ``attachment`` (a point
+    ID, or a rod end ``(rod ID, 'A' or 'B')``) at ``time`` or when the tension reaches ``tension``,
+    whichever comes first (a 0 disables that trigger, as in MoorDyn-F)."""
+
+    id: int
+    attachment: int | tuple[int, str]
+    lines: tuple[int, ...]
+    time: float  # [s], 0 = no time trigger
+    tension: float  # [N], 0 = no tension trigger
 
 
 @dataclass(frozen=True)
@@ -153,6 +241,8 @@ class MoorDynLine:
     length: float  # unstretched [m]
     n_segments: int
     outputs: str  # MoorDyn's output flags, e.g. 'pt' or '-'
+    rod_a: tuple[int, str] | None = None  # end A on a rod end (rod ID, 'A' or 'B'); point_a is then None
+    rod_b: tuple[int, str] | None = None  # end B on a rod end (rod ID, 'A' or 'B'); point_b is then None
 
 
 _DEPTH = ("WtrDpth", "depth", "WaterDepth")
@@ -208,6 +298,11 @@ class MoorDynInput:
     options: dict[str, float | str]
     outputs: tuple[str, ...]
     notes: tuple[str, ...] = ()
+    rod_types: dict[str, MoorDynRodType] = dataclasses.field(default_factory=dict)
+    bodies: tuple[MoorDynBody, ...] = ()
+    rods: tuple[MoorDynRod, ...] = ()
+    failures: tuple[MoorDynFailure, ...] = ()
+    layout: str = "v2"  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
 
     water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")
     gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
@@ -238,7 +333,12 @@ class MoorDynInput:
         given = self.given_water_depth
         if given is not None:
             return given
-        deepest = -min(p.position[2] for p in self.points)
+        globals_ = [p.position[2] for p in self.points if p.attachment in ("fixed", "free", "vessel")]
+        globals_ += [z for r in self.rods if r.attachment in ("fixed", "free", "coupled")
+                     for z in (r.end_a[2], r.end_b[2])]
+        if not globals_:
+            return None
+        deepest = -min(globals_)
         return deepest if deepest > 0 else None
 
     @property
@@ -313,8 +413,9 @@ _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' bef
     ("options", ("OPTIONS",)),
     ("outputs", ("OUTPUT",)),
 )
-_UNSUPPORTED = {"rod_types": "ROD TYPES", "bodies": "BODIES", "rods": "RODS", "failure": "FAILURE",
-                "control": "CONTROL", "external_loads": "EXTERNAL LOADS"}
+_UNSUPPORTED = {"control": "CONTROL", "external_loads": "EXTERNAL LOADS"}
+_COUNT = re.compile(r"^N[A-Za-z]+$")  # v1 count lines: '3 NLines - number of line objects'
+
 _ATTACH = {"fixed": ("FIXED", "FIX", "ANCHOR"), "vessel": ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD"),
            "free": ("FREE", "POINT", "CONNECT", "CON")}
 _FORTRAN_EXP = re.compile(r"^([+-]?(\d+\.?\d*|\.\d+))[dD]([+-]?\d+)$")
@@ -335,8 +436,10 @@ def _as_float(token: str) -> float | None:
 class _Reader:
     """State of one parse: the source label for messages and the lines of text."""
 
-    def __init__(self, label: str):
+    def __init__(self, label: str, folder: Path | None = None):
         self.label = label
+        self.folder = folder  # where files named in the deck (nonlinear tables) are looked up
+        self.v1_counts = False
         self.notes: list[str] = []
         self.option_lines: dict[str, int] = {}
 
@@ -463,6 +566,13 @@ def _split_sections(rd: _Reader, text: str):
 def _table(rd: _Reader, section):
     """Return (column names, [(lineno, tokens)]) of a table section, skipping names and units."""
     _, header_no, header, body = section
+    count = None
+    first = body[0][1].split() if body else []
+    if len(first) >= 2 and _as_float(first[0]) is not None and _COUNT.match(first[1]):
+        # MoorDyn v1 (MoorDyn-F before v2): a count line 'N NTypes' opens the section
+        count = (body[0][0], first[1], first[0])
+        body = body[1:]
+        rd.v1_counts = True
     names = body[0][1].split() if body else []
     rows = []
     for index, (lineno, line) in enumerate(body):
@@ -477,6 +587,13 @@ def _table(rd: _Reader, section):
             continue
         if tokens:
             rows.append((lineno, tokens))
+    if count is not None:
+        lineno, word, token = count
+        value = _as_float(token)
+        if value != len(rows):
+            raise rd.error(lineno, f"{word} must be the number of rows of {header.strip(' -')!r}, got {token!r} "
+                                   f"but the section has {len(rows)} row(s). Suggested fix: write {len(rows)}, or "
+                                   "add the missing rows (MoorDyn v1 reads exactly that many).")
     return names, rows
 
 
@@ -486,11 +603,63 @@ def _coefficient(rd, lineno, type_name, token, column, unit):
         if "|" in token or "." in token or "/" in token or "\\" in token or token[:1].isalpha():
             raise rd.error(lineno, f"line type {type_name!r} column {column} must be a constant in "
                                    f"{unit}, got {token!r}, a nonlinear table (file name or '|' list) "
-                                   "that seacable does not read. Suggested fix: replace it with a "
+                                   "that seacable does not read for this column. Suggested fix: replace it with a "
                                    f"constant {column} (e.g. the secant value at the working tension).")
         raise rd.error(lineno, f"line type {type_name!r} column {column} must be a finite number in "
                                f"{unit}, got {token!r}. Suggested fix: write a plain number in SI units.")
     return value
+
+
+def _bar_values(rd, lineno, type_name, token, column, unit, counts):
+    """The numbers of a MoorDyn '|' list (``EA_s|EA_d``), each checked; ``counts`` the allowed lengths."""
+    parts = token.split("|")
+    if len(parts) not in counts:
+        raise rd.error(lineno, f"line type {type_name!r} column {column} must hold "
+                               f"{' or '.join(str(c) for c in counts)} values separated by '|', got {token!r}. "
+                               f"Suggested fix: write {column} as MoorDyn v2 does, e.g. EA_s|EA_d or "
+                               "EA_s|EA_Dc|EA_D_Lm for the viscoelastic model (docs/inputs.rst of MoorDyn).")
+    return [rd.number(lineno, v, f"line type {type_name!r} {column} value {k + 1} of {token!r}", unit)
+            for k, v in enumerate(parts)]
+
+
+def _tension_strain_table(rd, lineno, type_name, token):
+    """A MoorDyn nonlinear EA: a file of (strain, tension) rows next to the deck, read and checked.
+
+    MoorDyn-C (``getCoefficientOrCurve``) reads two numbers per line and skips lines that do not
+    start with numbers (titles, column names, units); seacable does the same.
+    """
+    if rd.folder is None:
+        raise rd.error(lineno, f"line type {type_name!r} EA names the table file {token!r}, but the deck was "
+                               "given as text, so there is no folder to find it in. Suggested fix: read the "
+                               "deck from its file, next to the table.")
+    path = rd.folder / token
+    if not path.is_file():
+        raise rd.error(lineno, f"line type {type_name!r} EA names the strain-tension table {token!r}, which is "
+                               f"not a file (looked for {path}). Suggested fix: put the table next to the deck, "
+                               "or write a constant EA in N.")
+    rows = []
+    for k, line in enumerate(path.read_text(errors="replace").splitlines(), start=1):
+        tokens = _strip_comment(line).split()
+        if len(tokens) < 2 or _as_float(tokens[0]) is None:
+            continue
+        strain, tension = _as_float(tokens[0]), _as_float(tokens[1])
+        if tension is None:
+            raise InputError(f"{path}:{k}: the tension of a strain-tension row must be a finite number in N, got "
+                             f"{tokens[1]!r}. Suggested fix: write 'strain tension' per line.")
+        rows.append((k, strain, tension))
+    if len(rows) < 2:
+        raise InputError(f"{path}: a strain-tension table needs at least 2 rows of 'strain tension', found "
+                         f"{len(rows)}. Suggested fix: give the curve from strain 0 up to the largest strain "
+                         "expected.")
+    for (k0, e0, t0), (k1, e1, t1) in zip(rows, rows[1:]):
+        if e1 <= e0 or t1 < t0:
+            raise InputError(f"{path}:{k1}: the strain-tension table must have increasing strain and non-decreasing "
+                             f"tension, got ({e1:g}, {t1:g} N) after ({e0:g}, {t0:g} N) at line {k0}. Suggested "
+                             "fix: sort the rows by strain; a softening rope curve is not supported.")
+    if rows[0][1] < 0 or rows[0][2] < 0:
+        raise InputError(f"{path}:{rows[0][0]}: the strain-tension table must start at strain >= 0 and tension "
+                         f">= 0, got ({rows[0][1]:g}, {rows[0][2]:g} N). Suggested fix: start the table at (0, 0).")
+    return tuple((e, t) for _, e, t in rows)
 
 
 def _empty(rd, section, header, row):
@@ -516,8 +685,26 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
                                    "line type its own name.")
         d = rd.number(lineno, t[1], f"line type {name!r} Diam (diameter)", "m")
         m = rd.number(lineno, t[2], f"line type {name!r} MassDen (mass per length)", "kg/m")
-        ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
-        ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
+        table = dynamic = ba_dynamic = table_file = None
+        if "|" in t[3]:  # viscoelastic (MoorDyn v2): EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm
+            ea, *dyn = _bar_values(rd, lineno, name, t[3], "EA", "N", (2, 3))
+            dynamic = tuple(dyn)
+            for label, value in zip(("EA_d" if len(dyn) == 1 else "EA_Dc", "EA_D_Lm"), dyn):
+                rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value,
+                         "N" if label != "EA_D_Lm" else "", "give the dynamic stiffness of the viscoelastic model")
+        elif _as_float(t[3]) is None and not v1 and (t[3][:1].isalpha() or "." in t[3] or "/" in t[3]):
+            table = _tension_strain_table(rd, lineno, name, t[3])
+            table_file = t[3]
+            e_last, t_last = table[-1]
+            ea = t_last / e_last if e_last > 0 else 0.0  # secant EA at the table's end
+        else:
+            ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
+        if "|" in t[4]:  # viscoelastic: BA_s|BA_d (BA_s may be -zeta)
+            ba, ba_dynamic = _bar_values(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)", (2,))
+            rd.check(lineno, _validate.nonnegative, f"line type {name!r} BA_d (dynamic damping)", ba_dynamic,
+                     "N s", "give the dynamic damping in N s (MoorDyn takes no damping ratio here)")
+        else:
+            ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
         if v1:
             ei = 0.0
             can, cat, cdn, cdt = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
@@ -543,23 +730,25 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
         for label, value in (("Cd", cdn), ("Ca", can), ("CdAx", cdt), ("CaAx", cat)):
             rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value, "",
                      "hydrodynamic coefficients are >= 0")
-        out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat)
+        out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat, table, dynamic, ba_dynamic,
+                                    table_file)
     return out
 
 
-def _attachment(rd, lineno, word, point_id) -> str:
+def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
+    """A POINTS attachment: (kind, N of BodyN/TurbineN or None)."""
     letters = re.match(r"[A-Za-z]*", word).group(0).upper()
     for kind, words in _ATTACH.items():
         if letters in words and not word[len(letters):]:
-            return kind
-    known = [w.title() for ws in _ATTACH.values() for w in ws]
-    if letters in ("BODY", "TURBINE"):
-        why = f"a point on a {letters.lower()} ({word!r}); seacable reads lines and points only"
-    else:
-        why = f"{word!r}, not a point type{suggest(word.title(), known)}"
-    raise rd.error(lineno, f"point {point_id} type must be Fixed, Vessel or Free, got {why}. "
+            return kind, None
+    number = word[len(letters):]
+    if letters in ("BODY", "TURBINE") and number.isdigit() and int(number) >= 1:
+        return letters.lower(), int(number)
+    known = [w.title() for ws in _ATTACH.values() for w in ws] + ["Body1", "Turbine1"]
+    why = f"{word!r}, not a point type{suggest(word.title(), known)}"
+    raise rd.error(lineno, f"point {point_id} type must be Fixed, Vessel, Free, BodyN or TurbineN, got {why}. "
                            "Suggested fix: use Fixed (anchor), Vessel/Coupled (fairlead moved by the "
-                           "vessel) or Free (connection point).")
+                           "vessel), Free (connection point), Body1 (fixed on body 1) or Turbine1 (FAST.Farm).")
 
 
 def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
@@ -571,10 +760,17 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
     for lineno, t in rows:
         rd.columns(lineno, t, 9, "POINTS", layout)
         pid = _integer(rd, lineno, t[0], "point ID")
-        if pid in where:
-            raise rd.error(lineno, f"point ID {pid} is used twice (first at line {where[pid]}). "
-                                   "Suggested fix: number the points 1, 2, 3, ... once each.")
-        kind = _attachment(rd, lineno, t[1], pid)
+        if pid in where:  # MoorDyn-C numbers the points by position and never reads this column
+            warnings.warn(f"{rd.label}:{lineno}: point ID {pid} is used twice (first at line {where[pid]}); MoorDyn "
+                          "numbers points by their position in the list, and so does seacable for this file: "
+                          f"this point is point {len(points) + 1}. Suggested fix: number the points 1, 2, 3, ... "
+                          "once each.", SeacableWarning, stacklevel=4)
+            pid = len(points) + 1
+            if pid in where:
+                raise rd.error(lineno, f"point ID {t[0]} is used twice and its position {pid} is another point's ID "
+                                       "(first at line {where[pid]}). Suggested fix: number the points 1, 2, 3, ... "
+                                       "once each.")
+        kind, owner = _attachment(rd, lineno, t[1], pid)
         x, y, z = (rd.number(lineno, t[k], f"point {pid} {c}", "m") for k, c in zip((2, 3, 4), "XYZ"))
         mass = rd.number(lineno, t[5], f"point {pid} Mass", "kg")
         vol = rd.number(lineno, t[6], f"point {pid} Volume", "m^3")
@@ -593,7 +789,8 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
                                    ("Ca", ca, "")):
             rd.check(lineno, _validate.nonnegative, f"point {pid} {label}", value, unit,
                      "point masses, volumes and coefficients are >= 0")
-        points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca))
+        points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca, owner if kind == "body" else None,
+                                   owner if kind == "turbine" else None))
         where[pid] = lineno
     return points, where
 
@@ -606,16 +803,23 @@ def _integer(rd, lineno, token, what) -> int:
     return int(value)
 
 
-def _point_ref(rd, lineno, token, points, line_id, end) -> int:
-    """The point ID of a LINES attachment (``end`` names it, e.g. ``'A (AttachA)'``)."""
+def _point_ref(rd, lineno, token, points, line_id, end, rods=None):
+    """The point ID of a LINES attachment (``end`` names it, e.g. ``'A (AttachA)'``), or a rod end
+    ``(rod ID, 'A'|'B')`` for ``R1A``/``Rod1B``."""
     m = re.fullmatch(r"([A-Za-z]*)(\d+)([A-Za-z]*)", token)
     prefix = m.group(1).upper() if m else ""
-    if m and prefix in ("R", "ROD") and m.group(3):
-        raise rd.error(lineno, f"line {line_id} end {end} is attached to rod end {token!r}; seacable "
-                               "reads lines and points only. Suggested fix: attach the line to a point.")
+    if m and prefix in ("R", "ROD") and m.group(3).upper() in ("A", "B"):
+        rid, side = int(m.group(2)), m.group(3).upper()
+        if not rods or rid not in rods:
+            ids = [str(k) for k in (rods or {})]
+            raise rd.error(lineno, f"line {line_id} end {end} is attached to rod end {token!r}, but rod {rid} is "
+                                   f"not in the RODS section (IDs {', '.join(ids) or 'none'}). Suggested fix: add "
+                                   "the rod or correct the ID.")
+        return rid, side
     if not m or m.group(3) or prefix not in ("", "C", "CON", "P", "POINT"):
-        raise rd.error(lineno, f"line {line_id} end {end} must be a point ID (e.g. 1, C1 or Point1), got "
-                               f"{token!r}. Suggested fix: write the ID of a row of the POINTS section.")
+        raise rd.error(lineno, f"line {line_id} end {end} must be a point ID (e.g. 1, C1 or Point1) or a rod end "
+                               f"(R1A, R1B), got {token!r}. Suggested fix: write the ID of a row of the POINTS "
+                               "section.")
     pid = int(m.group(2))
     if pid not in points:
         ids = [str(k) for k in points]
@@ -630,7 +834,18 @@ def _point_ref(rd, lineno, token, points, line_id, end) -> int:
 _VALUES_PER_NODE = 64
 
 
-def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
+def _end_position(points, rods, ref):
+    """Global position of a line end for a negative UnstrLen (None if it is not global)."""
+    if isinstance(ref, tuple):
+        rod = rods[ref[0]]
+        if rod.attachment == "body":
+            return None
+        return rod.end_a if ref[1] == "A" else rod.end_b
+    p = points[ref]
+    return p.position if p.attachment in ("fixed", "free", "vessel") else None
+
+
+def _read_lines(rd, section, types, points, rods=None) -> list[MoorDynLine]:
     names, rows = _table(rd, section)
     v1 = len(names) > 2 and "len" in names[2].lower()
     layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
@@ -651,8 +866,8 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
             raise rd.error(lineno, f"line {lid} LineType must be one of {sorted(types)}, got "
                                    f"{t[1]!r}.{suggest(t[1], types)} Suggested fix: use a name from the "
                                    "LINE TYPES section (names are case-sensitive).")
-        a = _point_ref(rd, lineno, t[cols[0]], points, lid, f"A ({ends[0]})")
-        b = _point_ref(rd, lineno, t[cols[1]], points, lid, f"B ({ends[1]})")
+        a = _point_ref(rd, lineno, t[cols[0]], points, lid, f"A ({ends[0]})", rods)
+        b = _point_ref(rd, lineno, t[cols[1]], points, lid, f"B ({ends[1]})", rods)
         length = rd.number(lineno, t[cols[2]], f"line {lid} UnstrLen (unstretched length)", "m")
         nseg = _integer(rd, lineno, t[cols[3]], f"line {lid} NumSegs (number of segments)")
         rd.check(lineno, _validate.at_least, f"line {lid} NumSegs (number of segments)", nseg, "",
@@ -668,11 +883,196 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
             raise rd.error(lineno, f"line {lid} AttachA and AttachB are the same point ({a}). Suggested fix: "
                                    "attach the line's two ends to two different points.")
         if length < 0:  # MoorDyn: a negative length is a factor on the end-point distance
-            length = -length * math.dist(points[a].position, points[b].position)
+            pa, pb = _end_position(points, rods, a), _end_position(points, rods, b)
+            if pa is None or pb is None:
+                raise rd.error(lineno, f"line {lid} UnstrLen {t[cols[2]]} is negative (a factor on the distance "
+                                       "between the ends), but an end is on a body, whose global position seacable "
+                                       "does not compute while reading. Suggested fix: give the length in metres.")
+            length = -length * math.dist(pa, pb)
         rd.check(lineno, _validate.positive, f"line {lid} UnstrLen (unstretched length)", length, "m",
                  "give the unstretched length in metres (or -factor times the end-point distance)")
-        out.append(MoorDynLine(lid, t[1], a, b, length, nseg, t[6]))
+        rod_a, rod_b = (a if isinstance(a, tuple) else None), (b if isinstance(b, tuple) else None)
+        out.append(MoorDynLine(lid, t[1], None if rod_a else a, None if rod_b else b, length, nseg, t[6],
+                               rod_a, rod_b))
     return out
+
+
+_BODY_KINDS = {"FREE": ("free", False), "FIXED": ("fixed", False), "FIX": ("fixed", False),
+               "COUPLED": ("coupled", False), "VESSEL": ("coupled", False), "CPLD": ("coupled", False),
+               "VES": ("coupled", False), "COUPLEDPINNED": ("coupled", True), "VESSELPINNED": ("coupled", True),
+               "CPLDPIN": ("coupled", True)}
+_ROD_KINDS = {**_BODY_KINDS, "PINNED": ("free", True), "PIN": ("free", True)}
+
+
+def _bar_list(rd, lineno, token, what, unit, counts):
+    """A value, or several separated by '|' (MoorDyn's CG, I, CdA, Ca columns), each a number >= 0 except CG."""
+    parts = token.split("|")
+    if len(parts) not in counts:
+        raise rd.error(lineno, f"{what} must be {' or '.join(str(c) for c in counts)} value(s) separated by '|' "
+                               f"(no spaces), got {token!r}. Suggested fix: e.g. 0 or 0|0|-10.")
+    return [rd.number(lineno, v, what, unit) for v in parts]
+
+
+def _read_rod_types(rd, section) -> dict[str, MoorDynRodType]:
+    _, rows = _table(rd, section)
+    layout = "TypeName Diam Mass/m Cd Ca CdEnd CaEnd"
+    out: dict[str, MoorDynRodType] = {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 7, "ROD TYPES", layout)
+        name = t[0]
+        if name in out:
+            raise rd.error(lineno, f"rod type {name!r} is defined twice. Suggested fix: give each rod type its own "
+                                   "name.")
+        values = [rd.number(lineno, t[k], f"rod type {name!r} {c}", u) for k, c, u in
+                  zip(range(1, 7), ("Diam", "Mass/m", "Cd", "Ca", "CdEnd", "CaEnd"), ("m", "kg/m", "", "", "", ""))]
+        rd.check(lineno, _validate.positive, f"rod type {name!r} Diam", values[0], "m",
+                 "give the rod's diameter in metres")
+        for label, value, unit in zip(("Mass/m", "Cd", "Ca", "CdEnd", "CaEnd"), values[1:],
+                                      ("kg/m", "", "", "", "")):
+            rd.check(lineno, _validate.nonnegative, f"rod type {name!r} {label}", value, unit,
+                     "rod masses and coefficients are >= 0")
+        out[name] = MoorDynRodType(name, *values)
+    return out
+
+
+def _read_bodies(rd, section) -> tuple[list[MoorDynBody], dict[int, int]]:
+    _, rows = _table(rd, section)
+    layout = "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca"
+    bodies, where = [], {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 14, "BODIES", layout)
+        bid = _integer(rd, lineno, t[0], "body ID")
+        if bid in where:
+            raise rd.error(lineno, f"body ID {bid} is used twice (first at line {where[bid]}). Suggested fix: number "
+                                   "the bodies 1, 2, 3, ... once each.")
+        word = t[1].upper()
+        turbine = None
+        if word in _BODY_KINDS:
+            kind, pinned = _BODY_KINDS[word]
+        elif word.startswith("TURBINE") and word[7:].isdigit():
+            kind, pinned, turbine = "turbine", False, int(word[7:])
+        else:
+            raise rd.error(lineno, f"body {bid} Attachment must be Free, Fixed, Coupled (Vessel), CoupledPinned or "
+                                   f"TurbineN, got {t[1]!r}.{suggest(t[1].title(), ['Free', 'Fixed', 'Coupled'])} "
+                                   "Suggested fix: use one of those words.")
+        x, y, z = (rd.number(lineno, t[k], f"body {bid} {c}0", "m") for k, c in zip((2, 3, 4), "XYZ"))
+        angles = tuple(math.radians(rd.number(lineno, t[k], f"body {bid} {c}", "deg"))
+                       for k, c in zip((5, 6, 7), ("r0", "p0", "y0")))
+        mass = rd.number(lineno, t[8], f"body {bid} Mass", "kg")
+        cg = _bar_list(rd, lineno, t[9], f"body {bid} CG", "m", (1, 3))
+        cg = (0.0, 0.0, cg[0]) if len(cg) == 1 else tuple(cg)  # one value: along the body's z axis
+        inertia = _bar_list(rd, lineno, t[10], f"body {bid} I", "kg m^2", (1, 3))
+        inertia = tuple(inertia * 3) if len(inertia) == 1 else tuple(inertia)
+        volume = rd.number(lineno, t[11], f"body {bid} Volume", "m^3")
+        cda = _bar_list(rd, lineno, t[12], f"body {bid} CdA", "m^2", (1, 2, 3, 6))
+        cda = {1: lambda v: v * 6, 2: lambda v: [v[0]] * 3 + [v[1]] * 3, 3: lambda v: v * 2,
+               6: lambda v: v}[len(cda)](cda)
+        ca = _bar_list(rd, lineno, t[13], f"body {bid} Ca", "-", (1, 3))
+        ca = tuple(ca * 3) if len(ca) == 1 else tuple(ca)
+        for label, value, unit in (("Mass", mass, "kg"), ("Volume", volume, "m^3"),
+                                   *((f"I[{k}]", v, "kg m^2") for k, v in enumerate(inertia)),
+                                   *((f"CdA[{k}]", v, "m^2") for k, v in enumerate(cda)),
+                                   *((f"Ca[{k}]", v, "") for k, v in enumerate(ca))):
+            rd.check(lineno, _validate.nonnegative, f"body {bid} {label}", value, unit,
+                     "body masses, inertias, volumes and coefficients are >= 0")
+        bodies.append(MoorDynBody(bid, kind, (x, y, z, *angles), mass, cg, inertia, volume, tuple(cda), ca,
+                                  pinned, turbine))
+        where[bid] = lineno
+    return bodies, where
+
+
+def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[int, int]]:
+    _, rows = _table(rd, section)
+    layout = "ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs"
+    rods, where = [], {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 11, "RODS", layout)
+        rid = _integer(rd, lineno, t[0], "rod ID")
+        if rid in where:
+            raise rd.error(lineno, f"rod ID {rid} is used twice (first at line {where[rid]}). Suggested fix: number "
+                                   "the rods 1, 2, 3, ... once each.")
+        if t[1] not in rod_types:
+            raise rd.error(lineno, f"rod {rid} RodType must be one of {sorted(rod_types)}, got {t[1]!r}."
+                                   f"{suggest(t[1], rod_types)} Suggested fix: use a name from the ROD TYPES section.")
+        word = t[2].upper()
+        body = turbine = None
+        m = re.fullmatch(r"(BODY|TURBINE)(\d+)(PINNED|PIN)?", word)
+        if word in _ROD_KINDS:
+            kind, pinned = _ROD_KINDS[word]
+        elif m and m.group(1) == "BODY":
+            kind, pinned, body = "body", m.group(3) is not None, int(m.group(2))
+            if body not in bodies:
+                raise rd.error(lineno, f"rod {rid} is attached to body {body}, which is not in the BODIES section "
+                                       f"(IDs {', '.join(str(b) for b in bodies) or 'none'}). Suggested fix: add the "
+                                       "body or correct the ID.")
+        elif m:
+            kind, pinned, turbine = "turbine", m.group(3) is not None, int(m.group(2))
+        else:
+            raise rd.error(lineno, f"rod {rid} Attachment must be Fixed, Pinned, Free, Coupled (Vessel), "
+                                   f"CoupledPinned, BodyN, BodyNPinned or TurbineN, got {t[2]!r}."
+                                   f"{suggest(t[2].title(), ['Fixed', 'Pinned', 'Free', 'Coupled', 'Body1'])} "
+                                   "Suggested fix: use one of those words.")
+        ends = [rd.number(lineno, t[k], f"rod {rid} {c}", "m") for k, c in
+                zip(range(3, 9), ("Xa", "Ya", "Za", "Xb", "Yb", "Zb"))]
+        nseg = _integer(rd, lineno, t[9], f"rod {rid} NumSegs")
+        rd.check(lineno, _validate.nonnegative, f"rod {rid} NumSegs", nseg, "",
+                 "use 0 (a point-like rod) or more segments")
+        rod = MoorDynRod(rid, t[1], kind, tuple(ends[:3]), tuple(ends[3:]), nseg, t[10], pinned, body, turbine)
+        if rod.length == 0 and nseg > 0:
+            raise rd.error(lineno, f"rod {rid} has its two ends at the same place {tuple(ends[:3])} m but {nseg} "
+                                   "segment(s). Suggested fix: give the rod a length, or NumSegs 0.")
+        rods.append(rod)
+        where[rid] = lineno
+    return rods, where
+
+
+def _read_failures(rd, section, points, rods, lines) -> list[MoorDynFailure]:
+    names, rows = _table(rd, section)
+    out = []
+    line_ids = {ln.id: ln for ln in lines}
+    for index, (lineno, t) in enumerate(rows, start=1):
+        if len(t) >= 5:
+            fid = _integer(rd, lineno, t[0], "failure ID")
+            t = t[1:]
+        else:
+            rd.columns(lineno, t, 4, "FAILURE", "FailureID Point Line(s) FailTime FailTen")
+            fid = index
+        ref = t[0]
+        m = re.fullmatch(r"(?:R|ROD)(\d+)([AB])", ref.upper())
+        if m:
+            where = (int(m.group(1)), m.group(2))
+            if where[0] not in rods:
+                raise rd.error(lineno, f"failure {fid} is at rod end {ref!r}, but there is no rod {where[0]}. "
+                                       "Suggested fix: name a rod end of the RODS section, e.g. R1A.")
+        else:
+            where = _point_ref(rd, lineno, ref, points, f"of failure {fid}", "(Point)")
+        ids = []
+        for token in t[1].split(","):
+            lid = _integer(rd, lineno, token, f"failure {fid} Line(s) entry")
+            if lid not in line_ids:
+                raise rd.error(lineno, f"failure {fid} names line {lid}, which is not in the LINES section. "
+                                       "Suggested fix: list IDs of lines, separated by commas without spaces.")
+            ln = line_ids[lid]
+            at = [ln.point_a, ln.point_b] if isinstance(where, int) else [ln.rod_a, ln.rod_b]
+            if where not in at:
+                raise rd.error(lineno, f"failure {fid}: line {lid} is not attached to {ref} (its ends are "
+                                       f"{_end_name(ln.point_a, ln.rod_a)} and {_end_name(ln.point_b, ln.rod_b)}). "
+                                       "Suggested fix: name the point or rod end the line ends at.")
+            ids.append(lid)
+        time = rd.number(lineno, t[2], f"failure {fid} FailTime", "s")
+        tension = rd.number(lineno, t[3], f"failure {fid} FailTen", "N")
+        rd.check(lineno, _validate.nonnegative, f"failure {fid} FailTime", time, "s", "give a time in s, or 0")
+        rd.check(lineno, _validate.nonnegative, f"failure {fid} FailTen", tension, "N",
+                 "give a tension in N, or 0")
+        if time == 0 and tension == 0:
+            rd.notes.append(f"{rd.label}:{lineno}: failure {fid} has FailTime 0 and FailTen 0: MoorDyn-F then "
+                            "breaks the line(s) at the start.")
+        out.append(MoorDynFailure(fid, where, tuple(ids), time, tension))
+    return out
+
+
+def _end_name(point, rod) -> str:
+    return f"R{rod[0]}{rod[1]}" if rod else f"point {point}"
 
 
 def _read_options(rd, section) -> dict[str, float | str]:
@@ -695,8 +1095,9 @@ def _read_options(rd, section) -> dict[str, float | str]:
 _OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
     **{k.lower(): (_validate.positive, "m", ("give the water depth as a positive number of metres, or remove "
                    "the line (MoorDyn then takes the depth of the deepest point)")) for k in _DEPTH},
-    **{k.lower(): (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
-    **{k.lower(): (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
+    # MoorDyn's own tests switch gravity or buoyancy off with 0: read, and refused by the models that need them
+    **{k.lower(): (_validate.nonnegative, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
+    **{k.lower(): (_validate.nonnegative, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
     **{k.lower(): (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")
        for k in _KBOT},
     **{k.lower(): (_validate.nonnegative, "Pa s/m", "give the seabed damping per contact area, e.g. 3e5")
@@ -713,8 +1114,8 @@ _OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
        for k in ("WaveKin", "Currents")},
     **{k.lower(): (_validate.nonnegative, "s", "give a time in seconds")
        for k in ("dtWave", "waveKin_rampT", "dtIC", "ICdt", "TmaxIC", "ICTmax", "dtOut", "inertialF_rampT")},
-    **{k.lower(): (_validate.positive, "", "give a positive number") for k in ("CdScaleIC", "ICDfac",
-                                                                               "threshIC", "ICthresh")},
+    **{k.lower(): (_validate.positive, "", "give a positive number") for k in ("CdScaleIC", "ICDfac")},
+    **{k.lower(): (_validate.nonnegative, "", "give a number >= 0") for k in ("threshIC", "ICthresh")},
 }
 _WHOLE = {"wavekin", "currents"}
 
@@ -859,33 +1260,60 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     .. [1] MoorDyn-C ``source/MoorDyn2.cpp`` (``ReadInFile``), FloatingArrayDesign/MoorDyn.
     """
     text, path, label = _load(path_or_text, name)
-    rd = _Reader(label)
+    rd = _Reader(label, Path(path).parent if path else None)
     title, echo, sections = _split_sections(rd, text)
     for kind, header in _UNSUPPORTED.items():
         if kind in sections:
             _, rows = _table(rd, sections[kind])
             if rows:
-                raise rd.error(rows[0][0], f"the {header} section has {len(rows)} row(s); seacable reads "
-                                           "MoorDyn lines and points only. Suggested fix: remove the "
-                                           f"{header} section, or replace it with points and lines.")
-    for kind, header in (("line_types", "LINE TYPES"), ("points", "POINTS"), ("lines", "LINES")):
-        if kind not in sections:
+                raise rd.error(rows[0][0], f"the {header} section has {len(rows)} row(s); seacable does not read "
+                                           f"MoorDyn-F's {header} (OpenFAST-coupled). Suggested fix: remove the "
+                                           f"{header} section, or give the loads as body external forces in a "
+                                           "seacable system case.")
+    rod_types = _read_rod_types(rd, sections["rod_types"]) if "rod_types" in sections else {}
+    bodies, _ = _read_bodies(rd, sections["bodies"]) if "bodies" in sections else ([], {})
+    body_ids = {b.id: b for b in bodies}
+    rods, _ = _read_rods(rd, sections["rods"], rod_types, body_ids) if "rods" in sections else ([], {})
+    rod_ids = {r.id: r for r in rods}
+    structures = bool(bodies or rods)
+    required = (("line_types", "LINE TYPES"), ("points", "POINTS"), ("lines", "LINES"))
+    for kind, header in required:
+        if kind not in sections and not (structures and (kind != "line_types" or "lines" not in sections)):
             raise rd.error(None, f"the file must have a {header} section (a line of dashes containing "
                                  f"'{header}'), found none. Suggested fix: check that this is a MoorDyn "
                                  "input file and that the section header is spelled as MoorDyn expects.")
-    types = _read_line_types(rd, sections["line_types"])
-    points, point_lines = _read_points(rd, sections["points"])
+    types = _read_line_types(rd, sections["line_types"]) if "line_types" in sections else {}
+    if "points" in sections and (sections["points"][3] or not structures):
+        _, point_rows = _table(rd, sections["points"])
+        if point_rows or not structures:
+            points, point_lines = _read_points(rd, sections["points"])
+        else:
+            points, point_lines = [], {}
+    else:
+        points, point_lines = [], {}
     by_id = {p.id: p for p in points}
-    lines = _read_lines(rd, sections["lines"], types, by_id)
+    for p in points:
+        if p.attachment == "body" and p.body not in body_ids:
+            raise rd.error(point_lines[p.id], f"point {p.id} is on body {p.body}, which is not in the BODIES "
+                                              f"section (IDs {', '.join(str(b) for b in body_ids) or 'none'}). "
+                                              "Suggested fix: add the body or correct the attachment.")
+    lines = (_read_lines(rd, sections["lines"], types, by_id, rod_ids)
+             if "lines" in sections and (sections["lines"][3] or not structures)
+             and (_table(rd, sections["lines"])[1] or not structures) else [])
+    failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
     outputs = _read_outputs(sections["outputs"]) if "outputs" in sections else ()
-    result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs)
+    lowered = [n.lower() for n in _table(rd, sections["line_types"])[0]] if "line_types" in sections else []
+    v1 = rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
+    result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs,
+                          rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
+                          layout="v1" if v1 else "v2")
     given = result.given_water_depth
     if given is not None:
         for p in points:
-            if p.position[2] < -given * (1.0 + 1e-9):
+            if p.attachment in ("fixed", "free", "vessel") and p.position[2] < -given * (1.0 + 1e-9):
                 raise rd.error(point_lines[p.id], f"point {p.id} Z must be >= -WtrDpth = {-given:g} m, "
                                                   f"got {p.position[2]:g} m (below the seabed; MoorDyn would "
                                                   f"move the seabed down to it with a warning). Suggested fix: "
@@ -894,8 +1322,12 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
                                                   "depth is then that of the deepest point, as in MoorDyn).")
         source = "WtrDpth"
     else:
-        deepest = min(points, key=lambda p: p.position[2])
-        source = f"no WtrDpth: the depth of the deepest point, point {deepest.id}, as in MoorDyn"
+        globals_ = [p for p in points if p.attachment in ("fixed", "free", "vessel")]
+        if globals_:
+            deepest = min(globals_, key=lambda p: p.position[2])
+            source = f"no WtrDpth: the depth of the deepest point, point {deepest.id}, as in MoorDyn"
+        else:
+            source = "no WtrDpth: the depth of the deepest rod end, as in MoorDyn"
     rd.notes.extend(_option_notes(rd, options, result.water_depth, source))
     if [p.id for p in points] != list(range(1, len(points) + 1)):
         warnings.warn(f"{label}: point IDs {[p.id for p in points]} are not 1..{len(points)} in file order; "
