@@ -1,0 +1,259 @@
+"""Forces and analytic Jacobian of a flattened mooring system (private to :mod:`.statics`).
+
+State: each free body's reference point X and rotation matrix R, each free node's position.
+Degrees of freedom of an increment: per free body (dx, dy, dz, th_x, th_y, th_z) with th a small
+rotation about the *global* axes (R -> Rot(th) R), then (dx, dy, dz) per free node. The Jacobian
+is the exact derivative of the residual (net force and moment about the reference point, global
+axes) with respect to these increments; the stiffness is its negative (MoorPy's analytic
+convention, ``Body.getStiffnessA``).
+
+Sub-line end forces in 3-D: the catenary runs from its lower end ("anchor", catenary end A) to
+its upper end ("fairlead"), in the vertical plane through both, horizontal unit vector ``e``
+from anchor to fairlead. The line pulls the fairlead by ``(-H_F e, -V_F)`` and the anchor by
+``(H_A e, V_A)``. With the catenary's 2x2 ``K = d(H_F, V_F)/d(x_F, z_F)`` the fairlead block of
+the 3x3 stiffness is ``[[K00 e e^T + (H_F/h)(I - e e^T), K01 e], [K10 e^T, K11]]``; the
+transverse term ``H_F/h`` (h the horizontal span) is the rotation of the catenary plane about
+the anchor, and tends to ``K00`` for a vertical line (H is odd in the horizontal span there).
+The anchor's force follows from ``H_A = H_F`` (suspended) or ``H_A = H_F - mu (w L - V_F)``
+(grounded, Coulomb friction), ``V_A = V_F - w L`` (suspended) or 0 (grounded), and moving both
+ends together leaves every force unchanged (the seabed is flat), so the anchor's columns are the
+negated fairlead columns.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..statics.catenary import CatenaryRegime, catenary
+from ._stat_model import BODY, Assembly, rotation, skew
+
+_GROUNDED = np.array([CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN,
+                      CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR, CatenaryRegime.SLACK_SEABED])
+
+
+@dataclass
+class BodyData:
+    """Per free body constants (arrays over free bodies)."""
+
+    mass: np.ndarray          # (nb,)
+    rcg: np.ndarray           # (nb, 3) body frame
+    volume: np.ndarray
+    rcb: np.ndarray
+    awp: np.ndarray
+    iwp: np.ndarray           # (nb, 2)
+    z0: np.ndarray            # reference heave of the displaced volume
+    khs: list                 # 6x6 or None
+    q0: np.ndarray            # (nb, 6) position given (for a user hydrostatic matrix)
+    f0: np.ndarray            # (nb, 6) weight + buoyancy at the given position (user matrix only)
+    external: np.ndarray      # (nb, 6)
+
+
+@dataclass
+class State:
+    X: np.ndarray             # (nb, 3)
+    R: np.ndarray             # (nb, 3, 3)
+    P: np.ndarray             # (nn, 3) every node (free nodes are the state; others derived)
+    grounded: np.ndarray      # (nn,) bool: free node resting on the seabed (z held)
+
+
+@dataclass
+class Evaluation:
+    residual: np.ndarray      # (ndof,) net force on each DOF [N, N m]
+    jac: np.ndarray | None    # (ndof, ndof) d residual / d increment (all terms)
+    jac_lines: np.ndarray | None   # lines and node loads only (no body weight/hydrostatics)
+    cat: object               # CatenaryResult
+    anchor_is_a: np.ndarray   # (ns,) bool: sub-line end A is the catenary's lower end
+    fa: np.ndarray            # (ns, 3) force of each sub-line on its end-A node [N]
+    fb: np.ndarray            # (ns, 3) force on its end-B node [N]
+    e: np.ndarray             # (ns, 2) horizontal unit vectors anchor -> fairlead
+    node_force: np.ndarray    # (nn, 3) total force on each node (lines + node loads) [N]
+    scale: float              # force scale for the relative residual [N]
+
+
+def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
+    bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
+    nb = len(bodies)
+    ext = np.array([b.external_force for b in bodies], float).reshape(nb, 6)
+    for name, load in (external or {}).items():
+        k = asm.free_bodies.index(asm.body_names.index(name))
+        ext[k] += np.asarray(load, float)
+    f0 = np.zeros((nb, 6))
+    rho, g = asm.rho, asm.g
+    for k, b in enumerate(bodies):
+        R0 = rotation(b.position[3:])
+        W = np.array([0.0, 0.0, -b.mass * g])
+        B = np.array([0.0, 0.0, rho * g * b.volume])
+        rg, rb = R0 @ np.asarray(b.center_of_gravity), R0 @ np.asarray(b.center_of_buoyancy)
+        f0[k, :3] = W + B
+        f0[k, 3:] = np.cross(rg, W) + np.cross(rb, B)
+    arr = lambda key: np.array([getattr(b, key) for b in bodies], float)  # noqa: E731
+    return BodyData(mass=arr("mass"), rcg=arr("center_of_gravity").reshape(nb, 3), volume=arr("volume"),
+                    rcb=arr("center_of_buoyancy").reshape(nb, 3), awp=arr("waterplane_area"),
+                    iwp=arr("waterplane_moments").reshape(nb, 2),
+                    z0=np.array([b.position[2] for b in bodies], float),
+                    khs=[None if b.hydrostatic_stiffness is None else np.asarray(b.hydrostatic_stiffness, float)
+                         for b in bodies],
+                    q0=arr("position").reshape(nb, 6), f0=f0, external=ext)
+
+
+def node_positions(asm: Assembly, X, R, P):
+    """Global positions of every node; body nodes from their body's X and R."""
+    P = P.copy()
+    bn = np.flatnonzero(asm.node_kind == BODY)
+    if bn.size:
+        k = asm.node_body[bn]
+        P[bn] = X[k] + np.einsum("nij,nj->ni", R[k], asm.node_rel[bn])
+    return P
+
+
+def _seabed_tol(asm):
+    return 1e-6 * max(1.0, asm.depth)
+
+
+def lines(asm: Assembly, P: np.ndarray):
+    """One catenary call over all sub-lines: end forces and 3x3 derivative blocks."""
+    pa, pb = P[asm.sub_a], P[asm.sub_b]
+    anchor_is_a = pa[:, 2] <= pb[:, 2]
+    pA = np.where(anchor_is_a[:, None], pa, pb)
+    pF = np.where(anchor_is_a[:, None], pb, pa)
+    d = pF - pA
+    h = np.hypot(d[:, 0], d[:, 1])
+    v = np.maximum(d[:, 2], 0.0)
+    if asm.depth is None:
+        seabed = np.zeros(h.shape, bool)
+    else:
+        seabed = pA[:, 2] <= -asm.depth + _seabed_tol(asm)
+    cat = catenary(h, v, asm.sub_L, asm.sub_EA, asm.sub_w, asm.friction, seabed)
+    tiny = h <= 1e-9 * asm.sub_L
+    e = np.where(tiny[:, None], np.array([1.0, 0.0]), d[:, :2] / np.where(tiny, 1.0, h)[:, None])
+    K = np.where(np.isfinite(cat.stiffness), cat.stiffness, 0.0)
+    HF, VF, HA, VA = cat.H_fairlead, cat.V_fairlead, cat.H_anchor, cat.V_anchor
+    fF = np.column_stack([-HF * e[:, 0], -HF * e[:, 1], -VF])
+    fA = np.column_stack([HA * e[:, 0], HA * e[:, 1], VA])
+    kt = np.where(tiny, K[:, 0, 0], HF / np.where(tiny, 1.0, h))
+    grounded = np.isin(cat.regime, _GROUNDED)
+    mu = asm.friction
+    hx = np.where(grounded, np.where(HA > 0, K[:, 0, 0] + mu * K[:, 1, 0], 0.0), K[:, 0, 0])
+    hz = np.where(grounded, np.where(HA > 0, K[:, 0, 1] + mu * K[:, 1, 1], 0.0), K[:, 0, 1])
+    vx = np.where(grounded, 0.0, K[:, 1, 0])
+    vz = np.where(grounded, 0.0, K[:, 1, 1])
+    kta = np.where(tiny, hx, HA / np.where(tiny, 1.0, h))
+    DF = -_block(K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1], kt, e)    # d fF / d pF
+    DAF = _block(hx, hz, vx, vz, kta, e)                                    # d fA / d pF
+    return cat, anchor_is_a, fA, fF, DF, DAF, e
+
+
+def _block(kxx, kxz, kzx, kzz, kt, e):
+    n = e.shape[0]
+    out = np.zeros((n, 3, 3))
+    ee = e[:, :, None] * e[:, None, :]
+    out[:, :2, :2] = kxx[:, None, None] * ee + kt[:, None, None] * (np.eye(2) - ee)
+    out[:, :2, 2] = kxz[:, None] * e
+    out[:, 2, :2] = kzx[:, None] * e
+    out[:, 2, 2] = kzz
+    return out
+
+
+def evaluate(asm: Assembly, bd: BodyData, st: State, *, jacobian=True, load_factor=1.0) -> Evaluation:
+    """Residual (net loads on every DOF) and its Jacobian at state ``st``."""
+    nb, nfree = len(asm.free_bodies), asm.free_nodes.size
+    nn = asm.node_kind.size
+    P = node_positions(asm, st.X, st.R, st.P)
+    cat, anchor_is_a, fA, fF, DF, DAF, e = lines(asm, P)
+    a_is = anchor_is_a[:, None]
+    fa = np.where(a_is, fA, fF)
+    fb = np.where(a_is, fF, fA)
+    nf = asm.node_force.copy()
+    np.add.at(nf, asm.sub_a, fa)
+    np.add.at(nf, asm.sub_b, fb)
+    ndof = 6 * nb + 3 * nfree
+    res = np.zeros(ndof)
+    # body terms
+    bnodes = np.flatnonzero(asm.node_kind == BODY)
+    rnode = np.zeros((nn, 3))
+    if bnodes.size:
+        rnode[bnodes] = P[bnodes] - st.X[asm.node_body[bnodes]]
+    rho, g = asm.rho, asm.g
+    own = np.zeros((nb, 6))
+    own_jac = np.zeros((nb, 6, 6))
+    for k in range(nb):
+        sel = bnodes[asm.node_body[bnodes] == k]
+        res[6 * k:6 * k + 3] = nf[sel].sum(0)
+        res[6 * k + 3:6 * k + 6] = np.cross(rnode[sel], nf[sel]).sum(0)
+        R = st.R[k]
+        if bd.khs[k] is None:
+            W = np.array([0.0, 0.0, -bd.mass[k] * g])
+            B = np.array([0.0, 0.0, rho * g * bd.volume[k]])
+            rg, rb = R @ bd.rcg[k], R @ bd.rcb[k]
+            a = R[:, 2]
+            Pm = rho * g * np.array([[0.0, bd.iwp[k, 0], 0.0], [-bd.iwp[k, 1], 0.0, 0.0], [0.0, 0.0, 0.0]])
+            own[k, :3] = W + B
+            own[k, 2] -= rho * g * bd.awp[k] * (st.X[k, 2] - bd.z0[k])
+            own[k, 3:] = np.cross(rg, W) + np.cross(rb, B) + Pm @ a
+            own_jac[k, 2, 2] = -rho * g * bd.awp[k]
+            own_jac[k, 3:, 3:] = skew(W) @ skew(rg) + skew(B) @ skew(rb) - Pm @ skew(a)
+        else:
+            from ._stat_model import euler, euler_rate_map
+            ang = euler(R)
+            dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
+            own[k] = bd.f0[k] - bd.khs[k] @ dq
+            M = np.eye(6)
+            M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
+            own_jac[k] = -bd.khs[k] @ M
+        res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
+    for j, n in enumerate(asm.free_nodes):
+        res[6 * nb + 3 * j:6 * nb + 3 * j + 3] = nf[n]
+    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)),
+                float(np.abs(asm.node_force).max(initial=0.0)), float(np.abs(own).max(initial=0.0)) if nb else 0.0,
+                float(np.abs(bd.external).max(initial=0.0)) if nb else 0.0)
+    jac = jac_lines = None
+    if jacobian:
+        # node-node derivative of the line forces (3nn x 3nn)
+        D = np.zeros((nn, 3, nn, 3))
+        iA = np.where(anchor_is_a, asm.sub_a, asm.sub_b)
+        iF = np.where(anchor_is_a, asm.sub_b, asm.sub_a)
+        np.add.at(D, (iF, slice(None), iF), DF)
+        np.add.at(D, (iF, slice(None), iA), -DF)
+        np.add.at(D, (iA, slice(None), iF), DAF)
+        np.add.at(D, (iA, slice(None), iA), -DAF)
+        D = D.reshape(3 * nn, 3 * nn)
+        Bm = np.zeros((3 * nn, ndof))
+        for n in bnodes:
+            k = asm.node_body[n]
+            Bm[3 * n:3 * n + 3, 6 * k:6 * k + 3] = np.eye(3)
+            Bm[3 * n:3 * n + 3, 6 * k + 3:6 * k + 6] = -skew(rnode[n])
+        for j, n in enumerate(asm.free_nodes):
+            Bm[3 * n:3 * n + 3, 6 * nb + 3 * j:6 * nb + 3 * j + 3] = np.eye(3)
+        jac_lines = Bm.T @ D @ Bm
+        for n in bnodes:
+            k = asm.node_body[n]
+            jac_lines[6 * k + 3:6 * k + 6, 6 * k + 3:6 * k + 6] += skew(nf[n]) @ skew(rnode[n])
+        jac = jac_lines.copy()
+        for k in range(nb):
+            jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
+    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale)
+
+
+def hydrostatic_matrix(asm: Assembly, bd: BodyData, st: State) -> np.ndarray:
+    """Block-diagonal restoring of the free bodies' weight, buoyancy and waterplane (6 nb)^2."""
+    nb = len(asm.free_bodies)
+    out = np.zeros((6 * nb, 6 * nb))
+    rho, g = asm.rho, asm.g
+    for k in range(nb):
+        R = st.R[k]
+        if bd.khs[k] is None:
+            W = np.array([0.0, 0.0, -bd.mass[k] * g])
+            B = np.array([0.0, 0.0, rho * g * bd.volume[k]])
+            Pm = rho * g * np.array([[0.0, bd.iwp[k, 0], 0.0], [-bd.iwp[k, 1], 0.0, 0.0], [0.0, 0.0, 0.0]])
+            blk = np.zeros((6, 6))
+            blk[2, 2] = rho * g * bd.awp[k]
+            blk[3:, 3:] = -(skew(W) @ skew(R @ bd.rcg[k]) + skew(B) @ skew(R @ bd.rcb[k]) - Pm @ skew(R[:, 2]))
+        else:
+            from ._stat_model import euler, euler_rate_map
+            M = np.eye(6)
+            M[3:, 3:] = np.linalg.inv(euler_rate_map(euler(R)))
+            blk = bd.khs[k] @ M
+        out[6 * k:6 * k + 6, 6 * k:6 * k + 6] = blk
+    return out

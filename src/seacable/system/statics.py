@@ -1,0 +1,592 @@
+"""Static equilibrium and analytic stiffness of a mooring system (the ``system_static`` engine).
+
+:func:`solve_equilibrium` finds the equilibrium of every free body (6 DOF) and free point
+(3 DOF) of a :class:`~seacable.system.model.MooringSystem` under weight, buoyancy, hydrostatics,
+external loads and the line forces; :class:`SystemEquilibrium` holds the result: body offsets,
+point positions, line end forces and tensions, grounded lengths, anchor loads, and the
+stiffness of the free bodies from the analytic line tangents (free points condensed out).
+
+Model
+-----
+* Each line is split at segment boundaries and attachments into homogeneous sub-lines; each
+  sub-line is one elastic catenary (:func:`seacable.statics.catenary.catenary`) in the vertical
+  plane through its ends, all sub-lines solved in one vectorised call per Newton iteration.
+  A sub-line whose lower end is on the seabed (within 1e-6 x depth) may lie on it, with the
+  environment's Coulomb friction; otherwise it hangs free. Attachments become free nodes
+  carrying their net weight ``(m - rho V) g``.
+* A free body carries its weight ``m g`` at the centre of gravity and a buoyancy ``rho g V`` at
+  the centre of buoyancy (both rotate with the body), a heave restoring
+  ``-rho g A_wp (z - z_given)`` at the reference point (``volume`` is the displacement at the
+  position given), and a waterplane moment ``rho g (I_xx a_y, -I_yy a_x, 0)``, ``a = R e_z``,
+  which is ``-rho g I phi`` for small roll or pitch. With ``I_xx = I_yy = I`` this is exactly
+  MoorPy's ``Body`` (buoyancy at the metacentre ``rM``): ``rM = r_CB + (0, 0, I/V)``, MoorPy's
+  ``v`` our ``volume``, ``AWP`` our ``waterplane_area``, its heave measured from z = 0 (give
+  the body at z = 0 in both). A body with a ``hydrostatic_stiffness`` matrix instead gets
+  ``F(q_given) - K_hs (q - q_given)`` with ``F(q_given)`` its weight and buoyancy at the
+  position given (Euler angle differences for the rotations).
+* Body rotation ``R = Rz(yaw) Ry(pitch) Rx(roll)`` (MoorPy's ``rotationMatrix``). Loads are
+  (Fx, Fy, Fz, Mx, My, Mz), global axes, about the reference point.
+* Stiffness: ``K = -dF/dq`` with ``q`` = (translations, small rotations about the global axes),
+  as MoorPy's ``getStiffnessA``/``getCoupledStiffnessA`` (not symmetric away from equilibrium:
+  it contains the moment of the end forces as their arms rotate). At zero rotation the small
+  rotations are the Euler angle increments.
+
+Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
+sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
+checked against dipping into the seabed, nor a buoyant one against rising above the surface.
+
+References
+----------
+.. [1] M. Hall et al., MoorPy (NREL), ``moorpy/body.py`` (``getForces``, ``getStiffnessA``),
+   ``moorpy/system.py`` (``solveEquilibrium``, ``getCoupledStiffnessA``), v1.3.0.
+.. [2] J. Jonkman, "Definition of the Floating System for Phase IV of OC3",
+   NREL/TP-500-47535, 2010.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..environment import Environment
+from ..errors import ConvergenceError, InputError, NoSolutionError
+from ..statics.catenary import CatenaryResult
+from ._stat_eval import BodyData, Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
+from ._stat_model import Assembly, assemble, euler, rotation
+from .model import MooringSystem
+
+__all__ = ["SystemEquilibrium", "solve_equilibrium", "system_stiffness"]
+
+_DOF = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+
+
+@dataclass(frozen=True)
+class SystemEquilibrium:
+    """The static equilibrium of a mooring system.
+
+    Attributes
+    ----------
+    system, environment
+        What was solved.
+    body_names : list of str
+        Every body (free, fixed, prescribed), in the system's order.
+    body_position : ndarray, shape (nb, 6)
+        x, y, z [m], roll, pitch, yaw [rad] of each body's reference point.
+    free_body_names : list of str
+        The free bodies, the order of the stiffness matrices' 6-blocks.
+    point_names : list of str
+    point_position : ndarray, shape (np, 3)
+        Global position of every point (points on bodies included). [m]
+    line_names : list of str
+    end_a_force, end_b_force : ndarray, shape (nl, 3)
+        Force each line exerts on its end A / end B point, global axes. [N]
+    end_a_tension, end_b_tension : ndarray, shape (nl,)
+        Tension magnitude at each end. [N]
+    grounded_length : ndarray, shape (nl,)
+        Unstretched length lying on the seabed. [m]
+    stiffness : ndarray, shape (6 nbf, 6 nbf)
+        Coupled mooring stiffness of the free bodies, free points condensed out (Schur
+        complement); translations then small rotations about the global axes, per body. [N/m,
+        N/rad, N m/m, N m/rad]
+    hydrostatic : ndarray, shape (6 nbf, 6 nbf)
+        Restoring of the bodies' weight, buoyancy and waterplane (block diagonal).
+    iterations : int
+        Newton iterations (all load steps).
+    residual : float
+        Largest residual, relative to the system's force scale (moments also divided by its
+        length scale). [-]
+    """
+
+    system: MooringSystem
+    environment: Environment
+    body_names: list
+    body_position: np.ndarray
+    free_body_names: list
+    point_names: list
+    point_position: np.ndarray
+    line_names: list
+    end_a_force: np.ndarray
+    end_b_force: np.ndarray
+    end_a_tension: np.ndarray
+    end_b_tension: np.ndarray
+    grounded_length: np.ndarray
+    stiffness: np.ndarray
+    hydrostatic: np.ndarray
+    iterations: int
+    residual: float
+    _asm: Assembly = field(repr=False)
+    _cat: CatenaryResult = field(repr=False)
+    _anchor_is_a: np.ndarray = field(repr=False)
+    _e: np.ndarray = field(repr=False)
+    _node_position: np.ndarray = field(repr=False)
+
+    def _free_body(self, name: str) -> int:
+        if name not in self.free_body_names:
+            from .._model import suggest
+
+            raise InputError(f"body '{name}' is not a free body of this system (free bodies: "
+                             f"{', '.join(self.free_body_names) or 'none'}).{suggest(name, self.free_body_names)}")
+        return self.free_body_names.index(name)
+
+    def body_stiffness(self, name: str, hydrostatics: bool = False) -> np.ndarray:
+        """6x6 stiffness of one free body, other free bodies held, free points equilibrated.
+
+        Parameters
+        ----------
+        name : str
+            A free body.
+        hydrostatics : bool
+            Add the body's hydrostatic (weight, buoyancy, waterplane) restoring.
+
+        Returns
+        -------
+        ndarray, shape (6, 6)
+            [N/m, N/rad, N m/m, N m/rad]
+        """
+        k = self._free_body(name)
+        K = self.stiffness[6 * k:6 * k + 6, 6 * k:6 * k + 6].copy()
+        if hydrostatics:
+            K += self.hydrostatic[6 * k:6 * k + 6, 6 * k:6 * k + 6]
+        return K
+
+    def body_offset(self, name: str) -> np.ndarray:
+        """Position of a body minus the position given in the system. [m, rad]"""
+        i = self.body_names.index(name)
+        return self.body_position[i] - np.asarray(self.system.bodies[name].position, float)
+
+    def anchor_loads(self) -> dict:
+        """Loads on the anchors: for each line with an end on a fixed point.
+
+        Returns
+        -------
+        dict
+            ``{line: (horizontal [N], vertical [N] (> 0 uplift), uplift angle [rad])}`` from the
+            force the line exerts on that point (end A if both are fixed).
+        """
+        out = {}
+        for i, name in enumerate(self.line_names):
+            sl = self.system.lines[name]
+            for end, f in (("end_a", self.end_a_force[i]), ("end_b", self.end_b_force[i])):
+                if self.system.points[getattr(sl, end)].kind == "fixed":
+                    H = float(np.hypot(f[0], f[1]))
+                    out[name] = (H, float(f[2]), float(np.arctan2(f[2], H)))
+                    break
+        return out
+
+    def line_profile(self, line_name: str, n: int = 100):
+        """Shape and tension along a line from end A to end B, for plots.
+
+        Parameters
+        ----------
+        line_name : str
+        n : int
+            Points, evenly spaced in unstretched arc length, >= 2.
+
+        Returns
+        -------
+        positions : ndarray, shape (n, 3)
+            Global positions. [m]
+        tension : ndarray, shape (n,)
+            Effective tension (at a clump, the value on one side). [N]
+        """
+        if line_name not in self.line_names:
+            from .._model import suggest
+
+            raise InputError(f"line '{line_name}' is not in this system (lines: {', '.join(self.line_names)})."
+                             f"{suggest(line_name, self.line_names)}")
+        n = int(n)
+        if n < 2:
+            raise InputError(f"n must be >= 2, got {n}. Suggested fix: use 100.")
+        asm = self._asm
+        il = self.line_names.index(line_name)
+        subs = range(asm.line_first[il], asm.line_last[il] + 1)
+        total = sum(asm.sub_L[k] for k in subs)
+        S, X, T = [], [], []
+        for k in subs:
+            m = max(4, int(np.ceil(2 * n * asm.sub_L[k] / total)) + 2)
+            prof = self._cat.profile(m, index=k)
+            a_is = self._anchor_is_a[k]
+            pA = self._node_position[asm.sub_a[k] if a_is else asm.sub_b[k]]
+            e = self._e[k]
+            pos = pA + np.column_stack([prof.x * e[0], prof.x * e[1], prof.z])
+            s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
+            order = np.argsort(s, kind="stable")
+            S.append(s[order])
+            X.append(pos[order])
+            T.append(prof.tension[order])
+        S, X, T = np.concatenate(S), np.concatenate(X), np.concatenate(T)
+        s = np.linspace(0.0, total, n)
+        pos = np.column_stack([np.interp(s, S, X[:, j]) for j in range(3)])
+        return pos, np.interp(s, S, T)
+
+
+def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.ndarray:
+    """Coupled stiffness of all free bodies of an equilibrium (free points condensed out).
+
+    Parameters
+    ----------
+    eq : SystemEquilibrium
+    hydrostatics : bool
+        Add the bodies' hydrostatic restoring.
+
+    Returns
+    -------
+    ndarray, shape (6 nbf, 6 nbf)
+    """
+    return eq.stiffness + eq.hydrostatic if hydrostatics else eq.stiffness.copy()
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+class _Problem:
+    """Newton iteration on the free DOFs of an assembled system."""
+
+    def __init__(self, system, env, external, tol, max_iter):
+        self.system, self.env = system, env
+        self.asm = assemble(system, env)
+        _check_external(system, self.asm, external)
+        self.bd = body_data(self.asm, system, external)
+        self.tol, self.max_iter = tol, max_iter
+        asm = self.asm
+        self.nb = len(asm.free_bodies)
+        self.nfree = asm.free_nodes.size
+        reach = [np.abs(asm.node_rel[asm.node_kind == 1]).max(initial=0.0)]
+        reach += [np.abs(self.bd.rcg).max(initial=0.0), np.abs(self.bd.rcb).max(initial=0.0)]
+        self.length_scale = max(1.0, *reach)
+        self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
+        self.iterations = 0
+
+    def initial_state(self, initial: SystemEquilibrium | None) -> State:
+        asm = self.asm
+        nb = self.nb
+        X = np.zeros((nb, 3))
+        R = np.zeros((nb, 3, 3))
+        P = asm.node_pos0.copy()
+        for k, i in enumerate(asm.free_bodies):
+            q = np.asarray(self.system.bodies[asm.body_names[i]].position, float)
+            if initial is not None:
+                q = initial.body_position[i]
+            X[k], R[k] = q[:3], rotation(q[3:])
+        if initial is not None:
+            P[asm.free_nodes] = initial._node_position[asm.free_nodes]
+        grounded = np.zeros(P.shape[0], bool)
+        if asm.depth is not None:
+            low = P[asm.free_nodes, 2] <= -asm.depth
+            P[asm.free_nodes[low], 2] = -asm.depth
+            grounded[asm.free_nodes[low]] = True
+        return State(X, R, P, grounded)
+
+    def _z_dof(self, st: State) -> np.ndarray:
+        """DOF indices of the grounded free nodes' z."""
+        j = np.flatnonzero(st.grounded[self.asm.free_nodes])
+        return 6 * self.nb + 3 * j + 2
+
+    def eval(self, st: State, load: float) -> Evaluation:
+        ev = evaluate(self.asm, self.bd, st, load_factor=load)
+        zd = self._z_dof(st)
+        if zd.size:
+            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
+            lift = ev.residual[zd] > 0
+            if lift.any():
+                st.grounded[self.asm.free_nodes[(zd[lift] - 6 * self.nb) // 3]] = False
+            zd = zd[~lift]
+            ev.residual[zd] = 0.0
+            for J in (ev.jac, ev.jac_lines):
+                J[zd, :] = 0.0
+                J[:, zd] = 0.0
+                J[zd, zd] = 1.0
+        return ev
+
+    def error(self, ev: Evaluation) -> float:
+        r = ev.residual / ev.scale
+        if self.nb:
+            rot = np.zeros(r.size, bool)
+            for k in range(self.nb):
+                rot[6 * k + 3:6 * k + 6] = True
+            r = np.where(rot, r / self.length_scale, r)
+        return float(np.abs(r).max(initial=0.0))
+
+    def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
+        nb = self.nb
+        X, R, P = st.X.copy(), st.R.copy(), st.P.copy()
+        for k in range(nb):
+            X[k] += alpha * dq[6 * k:6 * k + 3]
+            R[k] = _rotvec(alpha * dq[6 * k + 3:6 * k + 6]) @ R[k]
+        fn = self.asm.free_nodes
+        P[fn] += alpha * dq[6 * nb:].reshape(-1, 3)
+        grounded = st.grounded.copy()
+        if self.asm.depth is not None:
+            low = P[fn, 2] < -self.asm.depth
+            P[fn[low], 2] = -self.asm.depth
+            grounded[fn[low]] = True
+        return State(X, R, P, grounded)
+
+    def newton(self, st: State, load: float):
+        """Newton with step limits and backtracking; returns (state, evaluation, converged)."""
+        ev = self.eval(st, load)
+        err = self.error(ev)
+        stalls = 0
+        for _ in range(self.max_iter):
+            if err <= self.tol:
+                return st, ev, True
+            self.iterations += 1
+            try:
+                dq = np.linalg.solve(ev.jac, -ev.residual)
+            except np.linalg.LinAlgError:
+                dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
+            if not np.all(np.isfinite(dq)):
+                return st, ev, False
+            merit = np.linalg.norm(self._scaled(ev))
+            accepted = fallback = None
+            # the per-object clipped step first, then the Newton direction scaled as a whole (a
+            # descent direction of the residual norm), each with backtracking
+            for cand in (self.clip(dq), dq * self.uniform_limit(dq)):
+                alpha = 1.0
+                for _ls in range(5):
+                    trial = self.step(st, cand, alpha)
+                    try:
+                        ev2 = self.eval(trial, load)
+                    except (NoSolutionError, ConvergenceError):
+                        alpha *= 0.5
+                        continue
+                    if fallback is None:
+                        fallback = (trial, ev2)
+                    if np.linalg.norm(self._scaled(ev2)) < (1 - 1e-4 * alpha) * merit:
+                        accepted = (trial, ev2)
+                        break
+                    alpha *= 0.5
+                if accepted is not None:
+                    break
+            if accepted is None:
+                # no decrease: take the clipped step anyway (the residual norm is not monotone
+                # through a change of regime); give up after many such steps
+                stalls += 1
+                accepted = fallback
+                if accepted is None or stalls > 30:
+                    return st, ev, False
+            st, ev = accepted
+            err = self.error(ev)
+        return st, ev, err <= self.tol
+
+    def uniform_limit(self, dq):
+        """Factor that brings the largest translation to step_len and rotation to 0.2 rad."""
+        nb = self.nb
+        lim = 1.0
+        for k in range(nb):
+            lim = min(lim, self.step_len / max(np.abs(dq[6 * k:6 * k + 3]).max(), 1e-300),
+                      0.2 / max(np.abs(dq[6 * k + 3:6 * k + 6]).max(), 1e-300))
+        if self.nfree:
+            lim = min(lim, self.step_len / max(np.abs(dq[6 * nb:]).max(), 1e-300))
+        return lim
+
+    def clip(self, dq):
+        """Step limits per object: translations to step_len, rotations to 0.2 rad."""
+        dq = dq.copy()
+        nb = self.nb
+        for k in range(nb):
+            for sl, lim in ((slice(6 * k, 6 * k + 3), self.step_len), (slice(6 * k + 3, 6 * k + 6), 0.2)):
+                n = np.abs(dq[sl]).max()
+                if n > lim:
+                    dq[sl] *= lim / n
+        d = dq[6 * nb:].reshape(-1, 3)
+        n = np.abs(d).max(axis=1, initial=0.0)
+        big = n > self.step_len
+        d[big] *= (self.step_len / n[big])[:, None]
+        dq[6 * nb:] = d.ravel()
+        return dq
+
+    def _scaled(self, ev):
+        r = ev.residual / ev.scale
+        for k in range(self.nb):
+            r[6 * k + 3:6 * k + 6] /= self.length_scale
+        return r
+
+
+def _rotvec(th) -> np.ndarray:
+    """Rotation matrix of the rotation vector th (Rodrigues)."""
+    a = float(np.linalg.norm(th))
+    if a < 1e-300:
+        return np.eye(3)
+    k = th / a
+    K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+    return np.eye(3) + np.sin(a) * K + (1 - np.cos(a)) * (K @ K)
+
+
+def _check_external(system, asm, external):
+    for name, load in (external or {}).items():
+        if name not in system.bodies or system.bodies[name].kind != "free":
+            from .._model import suggest
+
+            free = [asm.body_names[i] for i in asm.free_bodies]
+            raise InputError(f"external['{name}']: no free body of that name (free bodies: "
+                             f"{', '.join(free) or 'none'}).{suggest(name, free)} Suggested fix: name a free body.")
+        arr = np.asarray(load, float)
+        if arr.shape != (6,) or not np.all(np.isfinite(arr)):
+            raise InputError(f"external['{name}'] must be 6 finite numbers (Fx, Fy, Fz [N], Mx, My, Mz [N m]), "
+                             f"got {load!r}. Suggested fix: give a 6-component load in global axes.")
+
+
+def _condense(K: np.ndarray, nb: int, keep_points: np.ndarray) -> np.ndarray:
+    """Schur complement of the free-point DOFs: K_bb - K_bp K_pp^-1 K_pb."""
+    b = np.arange(6 * nb)
+    p = keep_points
+    if p.size == 0:
+        return K[np.ix_(b, b)]
+    Kpp = K[np.ix_(p, p)]
+    Kpb = K[np.ix_(p, b)]
+    try:
+        X = np.linalg.solve(Kpp, Kpb)
+    except np.linalg.LinAlgError:
+        X = np.linalg.lstsq(Kpp, Kpb, rcond=None)[0]
+    return K[np.ix_(b, b)] - K[np.ix_(b, p)] @ X
+
+
+def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
+    """Refuse a body DOF whose hydrostatics is unstable (or absent under a load) with no mooring."""
+    nb = prob.nb
+    if nb == 0:
+        return
+    hyd = hydrostatic_matrix(prob.asm, prob.bd, st)
+    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
+    moor = _condense(-ev.jac_lines, nb, pts)
+    tot = np.diag(hyd) + np.diag(moor)
+    for k in range(nb):
+        name = prob.asm.body_names[prob.asm.free_bodies[k]]
+        for j in range(6):
+            i = 6 * k + j
+            same = [6 * kk + jj for kk in range(nb) for jj in ((0, 1, 2) if j < 3 else (3, 4, 5))]
+            ref = max(np.abs(np.diag(hyd)[same]).max(), np.abs(np.diag(moor)[same]).max(), 1e-300)
+            if tot[i] > 1e-9 * ref:
+                continue
+            unit = "N/m" if j < 3 else "N m/rad"
+            if hyd[i, i] < 0 and tot[i] < 0:
+                raise InputError(
+                    f"bodies.{name}: the hydrostatic stiffness in {_DOF[j]} is {hyd[i, i]:.4g} {unit} (unstable: "
+                    f"the centre of gravity is too high for the buoyancy and waterplane) and the lines add "
+                    f"only {moor[i, i]:.4g} {unit}, so the body capsizes. Suggested fix: check "
+                    "center_of_gravity, center_of_buoyancy and waterplane_moments (or hydrostatic_stiffness), "
+                    "or moor the body so the lines restore it.")
+            if abs(ev.residual[i]) > prob.tol * ev.scale * (1 if j < 3 else prob.length_scale):
+                raise InputError(
+                    f"bodies.{name}: nothing restores the body in {_DOF[j]} (hydrostatic {hyd[i, i]:.4g} {unit}, "
+                    f"lines {moor[i, i]:.4g} {unit}) but it is loaded there by {ev.residual[i]:.4g} "
+                    f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
+                    "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
+                    "point, or remove the load.")
+
+
+def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
+                      tol: float = 1e-8, max_iter: int = 200,
+                      initial: SystemEquilibrium | None = None) -> SystemEquilibrium:
+    """Static equilibrium of every free body and free point of a mooring system.
+
+    Parameters
+    ----------
+    system : MooringSystem
+    environment : Environment
+        Water density, gravity, depth, seabed friction (no current, flat seabed).
+    external : dict, optional
+        ``{body name: (Fx, Fy, Fz, Mx, My, Mz)}`` loads added to the named free bodies, global
+        axes, about the reference point, on top of ``Body.external_force``. [N, N m]
+    tol : float
+        Largest residual force relative to the system's force scale (the largest line end
+        force, weight, buoyancy or load; moments also divided by its length scale). [-]
+    max_iter : int
+        Newton iterations per load step.
+    initial : SystemEquilibrium, optional
+        A previous solution of the same system to start from (sweeps).
+
+    Returns
+    -------
+    SystemEquilibrium
+
+    Raises
+    ------
+    InputError
+        What the catenary lines cannot model, unknown body names in ``external``, an unstable
+        body with no mooring restoring.
+    ConvergenceError
+        No equilibrium found with a plain Newton iteration nor a load ramp; names the residual
+        and the last offset of each body.
+    """
+    tol = float(tol)
+    if not (tol > 0 and np.isfinite(tol)):
+        raise InputError(f"tol must be > 0, got {tol!r}. Suggested fix: use 1e-8.")
+    max_iter = int(max_iter)
+    if max_iter < 1:
+        raise InputError(f"max_iter must be >= 1, got {max_iter}. Suggested fix: use 200.")
+    if initial is not None and initial.system is not system:
+        raise InputError("initial must be an equilibrium of the same system object. Suggested fix: pass the "
+                         "previous solve_equilibrium result of this system, or None.")
+    prob = _Problem(system, environment, external, tol, max_iter)
+    st0 = prob.initial_state(initial)
+    try:
+        ev0 = prob.eval(st0, 1.0)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
+                              "points where every line can reach.") from None
+    _check_stability(prob, st0, ev0)
+    st, ev, ok = prob.newton(st0, 1.0)
+    if not ok:
+        # load ramp: external loads in steps from zero, each step from the last solution
+        for n_steps in (5, 20):
+            s = prob.initial_state(initial)
+            good = True
+            for lam in np.linspace(1.0 / n_steps, 1.0, n_steps):
+                s, ev, good = prob.newton(s, float(lam))
+                if not good:
+                    break
+            st = s
+            if good:
+                ok = True
+                break
+    if not ok:
+        err = prob.error(ev)
+        offs = []
+        for k, i in enumerate(prob.asm.free_bodies):
+            name = prob.asm.body_names[i]
+            q0 = np.asarray(system.bodies[name].position, float)
+            d = np.concatenate([st.X[k] - q0[:3], np.degrees(euler(st.R[k]) - q0[3:])])
+            offs.append(f"{name}: ({d[0]:.4g}, {d[1]:.4g}, {d[2]:.4g}) m, ({d[3]:.3g}, {d[4]:.3g}, {d[5]:.3g}) deg")
+        raise ConvergenceError(
+            f"system statics did not converge: residual {err:.3g} x force scale ({ev.scale:.4g} N) after "
+            f"{prob.iterations} Newton iterations with a load ramp (tol {tol:g}); last offsets "
+            f"{'; '.join(offs) or '(no free body)'}. Suggested fix: apply the load in smaller steps by "
+            "sweeping with `initial=`, start the bodies nearer their equilibrium, check that the lines are "
+            "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter.",
+            iterations=prob.iterations, residual=err)
+    return _result(prob, st, ev)
+
+
+def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
+    asm, system = prob.asm, prob.system
+    nb = prob.nb
+    P = node_positions(asm, st.X, st.R, st.P)
+    body_pos = np.array([np.asarray(system.bodies[n].position, float) for n in asm.body_names]).reshape(-1, 6)
+    for k, i in enumerate(asm.free_bodies):
+        body_pos[i, :3] = st.X[k]
+        body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
+    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
+    K = _condense(-ev.jac_lines, nb, pts)
+    hyd = hydrostatic_matrix(asm, prob.bd, st)
+    fa = ev.fa[asm.line_first]
+    fb = ev.fb[asm.line_last]
+    grounded = np.zeros(len(asm.line_names))
+    np.add.at(grounded, asm.sub_line, ev.cat.grounded_length)
+    point_names = list(system.points)
+    return SystemEquilibrium(
+        system=system, environment=prob.env, body_names=list(asm.body_names), body_position=body_pos,
+        free_body_names=[asm.body_names[i] for i in asm.free_bodies], point_names=point_names,
+        point_position=P[[asm.point_node[n] for n in point_names]], line_names=list(asm.line_names),
+        end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
+        end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
+        iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
+        _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P)
+
+
+def _continuous(angles, ref):
+    """Euler angles shifted by whole turns to lie nearest the reference angles."""
+    return ref + (angles - ref + np.pi) % (2 * np.pi) - np.pi
+
