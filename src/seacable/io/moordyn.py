@@ -101,11 +101,14 @@ from pathlib import Path
 import numpy as np
 
 from .. import _limits, _validate
-from .._model import suggest
+from pydantic import ValidationError
+
+from .._model import format_validation_error, suggest
 from ..errors import InputError, SeacableWarning
 
-__all__ = ["MoorDynCase", "MoorDynInput", "MoorDynLine", "MoorDynLineType", "MoorDynPoint", "is_moordyn_file",
-           "load_moordyn_case", "moordyn_axial_damping", "read_moordyn"]
+__all__ = ["MoorDynBody", "MoorDynCase", "MoorDynFailure", "MoorDynInput", "MoorDynLine", "MoorDynLineType",
+           "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "is_moordyn_file", "load_moordyn_case",
+           "moordyn_axial_damping", "moordyn_system", "read_moordyn"]
 
 
 @dataclass(frozen=True)
@@ -1426,6 +1429,16 @@ class MoorDynCase:
         return dataclasses.replace(self, duration=duration, motion=motion, time_step=time_step,
                                    output_interval=interval)
 
+    @property
+    def has_structures(self) -> bool:
+        """True when the deck has bodies, rods or points on a body or turbine: a system analysis runs it."""
+        md = self.data
+        return bool(md.bodies or md.rods or any(p.attachment in ("body", "turbine") for p in md.points))
+
+    def system(self, *, turbine_positions: dict | None = None):
+        """The deck as ``(MooringSystem, Environment)`` (:func:`moordyn_system`), for the system analyses."""
+        return moordyn_system(self.data, turbine_positions=turbine_positions)
+
     def describe(self) -> str:
         """One line for ``seacable validate``."""
         md = self.data
@@ -1449,3 +1462,283 @@ def load_moordyn_case(path, *, name=None) -> MoorDynCase:
     """
     data = read_moordyn(path)
     return MoorDynCase(data, name=name or Path(path).stem or "moordyn")
+
+
+# --------------------------------------------------------------------------- the deck as a MooringSystem
+
+def _rotation(roll, pitch, yaw) -> np.ndarray:
+    """``Rz(yaw) Ry(pitch) Rx(roll)`` (the system model's convention, MoorDyn's and MoorPy's)."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                              math.sin(yaw))
+    rz = np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1.0]])
+    ry = np.array([[cp, 0, sp], [0, 1.0, 0], [-sp, 0, cp]])
+    rx = np.array([[1.0, 0, 0], [0, cr, -sr], [0, sr, cr]])
+    return rz @ ry @ rx
+
+
+class _Rigid:
+    """Mass, inertia, buoyancy, waterplane and hydrodynamics gathered on one rigid body, in body axes."""
+
+    def __init__(self):
+        self.mass, self.first = 0.0, np.zeros(3)  # sum m, sum m r
+        self.inertia = np.zeros((3, 3))  # about the reference point, body axes
+        self.volume, self.vfirst = 0.0, np.zeros(3)
+        self.awp, self.iwp = 0.0, np.zeros(2)
+        self.added, self.drag = np.zeros(3), np.zeros(3)  # translational, body axes
+
+    def add_mass(self, m, c, inertia_cg):
+        c = np.asarray(c, float)
+        self.mass += m
+        self.first += m * c
+        self.inertia += np.asarray(inertia_cg, float) + m * (c @ c * np.eye(3) - np.outer(c, c))
+
+    def add_volume(self, v, c):
+        self.volume += v
+        self.vfirst += v * np.asarray(c, float)
+
+    def cg(self):
+        return self.first / self.mass if self.mass > 0 else np.zeros(3)
+
+    def cb(self):
+        return self.vfirst / self.volume if self.volume > 0 else np.zeros(3)
+
+    def inertia_cg(self):
+        c = self.cg()
+        return self.inertia - self.mass * (c @ c * np.eye(3) - np.outer(c, c))
+
+
+def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body, ref, R, rho):
+    """Add a rod with ends ``a_body``/``b_body`` (body axes) to a body at global ``ref`` with rotation ``R``.
+
+    Mass ``m L`` at the middle, a slender cylinder's inertia; the displaced volume of the part below
+    z = 0 at this pose, at its centroid (MoorDyn's rods are buoyant over their submerged length);
+    a rod piercing the surface adds its cross-section ``pi d^2 / 4 / |cos(tilt)|`` to the waterplane
+    and its second moments. Added mass ``Ca rho V`` normal to the rod and drag ``rho Cd d L / 2``
+    normal to it go onto the translations (the end terms ``CaEnd``/``CdEnd`` along the axis).
+    """
+    a, b = np.asarray(a_body, float), np.asarray(b_body, float)
+    length = float(np.linalg.norm(b - a))
+    u = (b - a) / length if length > 0 else np.array([0.0, 0.0, 1.0])
+    area = math.pi * rt.diameter**2 / 4
+    m = rt.mass_per_length * length
+    i_ax, i_n = m * rt.diameter**2 / 8, m * (length**2 / 12 + rt.diameter**2 / 16)
+    rigid.add_mass(m, (a + b) / 2, i_n * np.eye(3) + (i_ax - i_n) * np.outer(u, u))
+    ga, gb = ref + R @ a, ref + R @ b
+    za, zb = ga[2], gb[2]
+    if za <= 0 and zb <= 0:
+        frac_lo, frac_hi = 0.0, 1.0
+    elif za > 0 and zb > 0:
+        frac_lo = frac_hi = 0.0
+    else:  # pierces the surface
+        f = za / (za - zb)
+        frac_lo, frac_hi = (f, 1.0) if za > 0 else (0.0, f)
+        cos_tilt = abs((gb - ga)[2]) / length
+        awp = area / max(cos_tilt, 1e-6)
+        cut = a + f * (b - a)
+        rigid.awp += awp
+        rigid.iwp += awp * np.array([cut[1] ** 2, cut[0] ** 2]) + math.pi * rt.diameter**4 / 64
+    sub = (frac_hi - frac_lo) * length
+    if sub > 0:
+        rigid.add_volume(area * sub, a + (frac_lo + frac_hi) / 2 * (b - a))
+        normal = np.eye(3) - np.outer(u, u)
+        rigid.added += np.diag(rt.added_mass_normal * rho * area * sub * normal) + \
+            rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * u**2
+        rigid.drag += np.diag(0.5 * rho * rt.drag_normal * rt.diameter * sub * normal) + \
+            0.5 * rho * rt.drag_end * area * u**2
+
+
+def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
+    """The deck as a :class:`~seacable.system.model.MooringSystem` and its :class:`~seacable.environment.Environment`.
+
+    Mapping (names: ``point<ID>``, ``body<ID>``, ``rod<ID>``, ``turbine<N>``, ``line<ID>``):
+
+    - points: Fixed -> ``fixed``; Free/Connect -> ``free`` (mass, volume, C_D A, added mass
+      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>``; TurbineN -> on the
+      prescribed body ``turbine<N>`` (FAST.Farm places turbine N; the deck does not say where:
+      ``turbine_positions`` ``{N: (x, y, z)}``, default the origin, with a SeacableWarning).
+    - bodies: free/fixed/coupled -> ``free``/``fixed``/``prescribed`` (CoupledPinned: prescribed
+      and ``pinned``). Mass, centre of gravity and inertia as written; MoorDyn's body volume acts
+      at the reference point and bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
+      translations of ``added_mass``; ``rho CdA / 2`` on the diagonal of ``quadratic_damping``.
+    - rods: a rod on body N (``BodyN``, and ``BodyNPinned``, taken as rigidly fixed there: the
+      data model has no joint on a moving body, a SeacableWarning says so) adds its mass,
+      inertia, submerged volume, waterplane and hydrodynamics to ``body<N>``; any other rod
+      becomes its own body ``rod<ID>`` (Fixed -> fixed, Coupled -> prescribed, Free -> free,
+      Pinned -> free and ``pinned``, CoupledPinned -> prescribed and ``pinned``) with its body
+      z axis along the rod from end A (its reference point) to end B. Rod ends a line attaches
+      to (``R1A``) become points ``rod<ID>_a``/``rod<ID>_b`` on that body. Buoyancy is the
+      submerged part at the deck's pose, a surface-piercing rod adds a waterplane.
+    - line types: d, m, EA, EI, Cd, Ca, CdAx, CaAx; a nonlinear EA table goes to
+      ``LineType.tension_strain`` (``axial_stiffness`` is its secant at the table's end; the
+      statics of :mod:`seacable.system.statics` use that constant EA, a SeacableWarning says so);
+      a viscoelastic ``EA_s|EA_d`` to ``axial_stiffness = EA_s`` and ``dynamic_axial_stiffness``.
+      The axial damping BA is not in the data model (a dynamics setting).
+    - environment: WtrDnsty, g, WtrDpth (or the deepest point, as MoorDyn), FrictionCoefficient.
+      MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - ``FAILURE`` rows stay in ``md.failures`` (a dynamics input).
+
+    Raises
+    ------
+    InputError
+        A deck without lines, with g = 0 or water density 0 (MoorDyn test decks that switch
+        gravity or buoyancy off), or one the data model refuses (a body no line ends on).
+    """
+    from ..environment import Environment, Seabed
+    from ..line import Line, LineType
+    from ..system.model import Body, MooringSystem, SystemLine, SystemPoint
+
+    label = md.path or "MoorDyn file"
+    rho, g = md.water_density, md.gravity
+    if rho <= 0 or g <= 0:
+        which = "WtrDnsty" if rho <= 0 else "g"
+        raise InputError(f"{label}: option {which} = {rho if rho <= 0 else g:g} switches "
+                         f"{'buoyancy' if rho <= 0 else 'gravity'} off, which a seacable environment cannot "
+                         "(water density and gravity must be > 0). Suggested fix: give WtrDnsty and g their "
+                         "physical values for a mooring analysis.")
+    if not md.lines:
+        raise InputError(f"{label}: the deck has no lines; a seacable mooring system needs at least one line "
+                         "(MoorDyn runs rods and bodies alone). Suggested fix: add the mooring lines.")
+    turbine_positions = dict(turbine_positions or {})
+    bodies_in = {b.id: b for b in md.bodies}
+    rods_in = {r.id: r for r in md.rods}
+    rigid: dict[str, _Rigid] = {}
+    spec: dict[str, dict] = {}
+    points: dict[str, SystemPoint] = {}
+
+    def turbine(n):
+        name = f"turbine{n}"
+        if name not in spec:
+            if n not in turbine_positions:
+                warnings.warn(f"{label}: points or rods are on turbine {n} (FAST.Farm's TurbineN), whose position is "
+                              "set in the FAST.Farm input, not in this deck; seacable puts turbine "
+                              f"{n}'s reference point at the origin. Suggested fix: give turbine_positions="
+                              f"{{{n}: (x, y, z)}}.", SeacableWarning, stacklevel=3)
+            x, y, z = turbine_positions.get(n, (0.0, 0.0, 0.0))
+            spec[name] = dict(kind="prescribed", position=(x, y, z, 0.0, 0.0, 0.0), pinned=False)
+            rigid[name] = _Rigid()
+        return name
+
+    for b in md.bodies:
+        name = f"body{b.id}"
+        kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[b.attachment]
+        position = b.position
+        if b.attachment == "turbine":
+            tx, ty, tz = turbine_positions.get(b.turbine, (0.0, 0.0, 0.0))
+            position = (b.position[0] + tx, b.position[1] + ty, b.position[2] + tz, *b.position[3:])
+        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient)
+        r = _Rigid()
+        r.add_mass(b.mass, b.center_of_gravity, np.diag(b.inertia))
+        r.add_volume(b.volume, (0.0, 0.0, 0.0))  # MoorDyn: the body's buoyancy acts at its reference point
+        rigid[name] = r
+
+    rod_end_points: dict[tuple[int, str], str] = {}
+    pinned_on_body = []
+    for rod in md.rods:
+        rt = md.rod_types[rod.rod_type]
+        if rod.attachment == "body":
+            host = f"body{rod.body}"
+            b = bodies_in[rod.body]
+            ref, R = np.asarray(spec[host]["position"][:3]), _rotation(*spec[host]["position"][3:])
+            _add_rod(rigid[host], rod, rt, rod.end_a, rod.end_b, ref, R, rho)
+            if rod.pinned:
+                pinned_on_body.append(rod.id)
+            for side, end in (("A", rod.end_a), ("B", rod.end_b)):
+                rod_end_points[(rod.id, side)] = (host, end)
+            del b
+            continue
+        name = f"rod{rod.id}"
+        a, bvec = np.asarray(rod.end_a, float), np.asarray(rod.end_b, float)
+        if rod.attachment == "turbine":
+            a = a + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            bvec = bvec + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            turbine(rod.turbine)
+        axis = bvec - a
+        length = float(np.linalg.norm(axis))
+        u = axis / length if length > 0 else np.array([0.0, 0.0, 1.0])
+        pitch, yaw = math.acos(max(-1.0, min(1.0, u[2]))), math.atan2(u[1], u[0])
+        kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[rod.attachment]
+        spec[name] = dict(kind=kind, position=(*a, 0.0, pitch, yaw), pinned=rod.pinned)
+        r = _Rigid()
+        _add_rod(r, rod, rt, (0.0, 0.0, 0.0), (0.0, 0.0, length), a, _rotation(0.0, pitch, yaw), rho)
+        rigid[name] = r
+        rod_end_points[(rod.id, "A")] = (name, (0.0, 0.0, 0.0))
+        rod_end_points[(rod.id, "B")] = (name, (0.0, 0.0, length))
+    if pinned_on_body:
+        warnings.warn(f"{label}: rod(s) {', '.join(map(str, pinned_on_body))} are pinned to a body (BodyNPinned); "
+                      "seacable's system model has no joint on a moving body and fixes them rigidly to it (their "
+                      "own rotation is not free).", SeacableWarning, stacklevel=2)
+
+    for p in md.points:
+        common = dict(mass=p.mass, volume=p.volume, drag_area=p.drag_area,
+                      added_mass=p.added_mass_coefficient * rho * p.volume)
+        if p.attachment == "body":
+            points[f"point{p.id}"] = SystemPoint(kind="body", body=f"body{p.body}", position=p.position, **common)
+        elif p.attachment == "turbine":
+            points[f"point{p.id}"] = SystemPoint(kind="body", body=turbine(p.turbine), position=p.position, **common)
+        else:
+            kind = {"fixed": "fixed", "free": "free", "vessel": "coupled"}[p.attachment]
+            points[f"point{p.id}"] = SystemPoint(kind=kind, position=p.position, **common)
+
+    def end(point_id, rod_end):
+        if rod_end is None:
+            return f"point{point_id}"
+        name = f"rod{rod_end[0]}_{rod_end[1].lower()}"
+        if name not in points:
+            host, where = rod_end_points[rod_end]
+            points[name] = SystemPoint(kind="body", body=host, position=tuple(float(v) for v in where))
+        return name
+
+    types, tabled = {}, []
+    for lt in md.line_types.values():
+        dynamic = None
+        if lt.dynamic_stiffness is not None:
+            dynamic = (lt.dynamic_stiffness[0], lt.dynamic_stiffness[1] if len(lt.dynamic_stiffness) > 1 else 0.0)
+        if lt.tension_strain is not None:
+            tabled.append(lt.name)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SeacableWarning)  # MoorDyn's own Cd values, e.g. chain 2.4+
+            types[lt.name] = LineType(
+                name=lt.name, diameter=lt.diameter, mass_per_length=lt.mass_per_length,
+                axial_stiffness=lt.axial_stiffness, bending_stiffness=lt.bending_stiffness,
+                drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
+                added_mass_normal=lt.added_mass_normal, added_mass_tangential=lt.added_mass_tangential,
+                tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic)
+    if tabled:
+        warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
+                      "kept in LineType.tension_strain, but seacable's system statics use a constant EA, the "
+                      "table's secant at its last point.", SeacableWarning, stacklevel=2)
+    lines = {}
+    for ln in md.lines:
+        lines[f"line{ln.id}"] = SystemLine(line=Line.single(types[ln.line_type], ln.length),
+                                           end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
+                                           n_elements=ln.n_segments)
+
+    bodies = {}
+    for name, s in spec.items():
+        r = rigid[name]
+        drag = np.zeros(6)
+        added = np.zeros(6)
+        if "drag" in s:
+            drag += 0.5 * rho * np.asarray(s["drag"])
+            added[:3] += np.asarray(s["ca"]) * rho * r.volume
+        drag[:3] += r.drag
+        added[:3] += r.added
+        inertia = r.inertia_cg()
+        bodies[name] = Body(
+            kind=s["kind"], position=tuple(float(v) for v in s["position"]), mass=r.mass,
+            center_of_gravity=tuple(float(v) for v in r.cg()),
+            inertia=tuple(float(max(v, 0.0)) for v in np.diag(inertia)), volume=r.volume,
+            center_of_buoyancy=tuple(float(v) for v in r.cb()), waterplane_area=r.awp,
+            waterplane_moments=tuple(float(v) for v in r.iwp),
+            added_mass=tuple(tuple(float(v) for v in row) for row in np.diag(added)) if added.any() else None,
+            quadratic_damping=tuple(tuple(float(v) for v in row) for row in np.diag(drag)) if drag.any() else None,
+            pinned=s["pinned"])
+    try:
+        system = MooringSystem(points=points, bodies=bodies, lines=lines)
+    except ValidationError as exc:  # say which deck
+        raise InputError(f"{label}: the deck does not make a seacable mooring system: "
+                         f"{format_validation_error(exc)}") from None
+    except InputError as exc:
+        raise InputError(f"{label}: the deck does not make a seacable mooring system: {exc}") from None
+    env = Environment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
+    return system, env
