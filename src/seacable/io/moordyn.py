@@ -1599,6 +1599,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         raise InputError(f"{label}: the deck has no lines; a seacable mooring system needs at least one line "
                          "(MoorDyn runs rods and bodies alone). Suggested fix: add the mooring lines.")
     turbine_positions = dict(turbine_positions or {})
+    unplaced: list[int] = []
     bodies_in = {b.id: b for b in md.bodies}
     rods_in = {r.id: r for r in md.rods}
     rigid: dict[str, _Rigid] = {}
@@ -1609,10 +1610,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         name = f"turbine{n}"
         if name not in spec:
             if n not in turbine_positions:
-                warnings.warn(f"{label}: points or rods are on turbine {n} (FAST.Farm's TurbineN), whose position is "
-                              "set in the FAST.Farm input, not in this deck; seacable puts turbine "
-                              f"{n}'s reference point at the origin. Suggested fix: give turbine_positions="
-                              f"{{{n}: (x, y, z)}}.", SeacableWarning, stacklevel=3)
+                unplaced.append(n)
             x, y, z = turbine_positions.get(n, (0.0, 0.0, 0.0))
             spec[name] = dict(kind="prescribed", position=(x, y, z, 0.0, 0.0, 0.0), pinned=False)
             rigid[name] = _Rigid()
@@ -1663,6 +1661,15 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         rigid[name] = r
         rod_end_points[(rod.id, "A")] = (name, (0.0, 0.0, 0.0))
         rod_end_points[(rod.id, "B")] = (name, (0.0, 0.0, length))
+    for p in md.points:
+        if p.attachment == "turbine":
+            turbine(p.turbine)
+    if unplaced:
+        ns = ", ".join(map(str, sorted(unplaced)))
+        warnings.warn(f"{label}: points or rods are on turbine(s) {ns} (FAST.Farm's TurbineN), whose positions are "
+                      "set in the FAST.Farm input, not in this deck; seacable puts their reference points at the "
+                      f"origin. Suggested fix: give turbine_positions={{{sorted(unplaced)[0]}: (x, y, z), ...}}.",
+                      SeacableWarning, stacklevel=2)
     if pinned_on_body:
         warnings.warn(f"{label}: rod(s) {', '.join(map(str, pinned_on_body))} are pinned to a body (BodyNPinned); "
                       "seacable's system model has no joint on a moving body and fixes them rigidly to it (their "
