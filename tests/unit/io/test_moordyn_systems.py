@@ -78,8 +78,6 @@ def test_bodies_rods_and_rod_ends():
     assert [(p.attachment, p.body) for p in md.points[:2]] == [("body", 1), ("fixed", None)]
     coupled = read_moordyn(DECKS / "MoorDyn/tests/Mooring/lines_body.txt").bodies[0]
     assert coupled.center_of_gravity == (0.0, 0.0, -35.0)  # one CG value: along the body's z axis (MoorDyn docs)
-    assert moordyn_system(read_moordyn(DECKS / "MoorDyn/tests/Mooring/lines_body.txt"))[0].bodies[
-        "body1"].center_of_gravity == (0.0, 0.0, -35.0)
     floating = read_moordyn(DECKS / "MoorDyn/tests/Mooring/body_tests/floatingBodies.txt")
     assert floating.bodies[1].center_of_gravity == (0.0, -10.0, 0.0)  # 0|-10|0
     drag = read_moordyn(DECKS / "MoorDyn/tests/Mooring/body_tests/bodyDrag.txt").bodies[0]
