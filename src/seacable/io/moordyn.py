@@ -107,7 +107,7 @@ from .._model import format_validation_error, suggest
 from ..errors import InputError, SeacableWarning
 
 __all__ = ["MoorDynBody", "MoorDynCase", "MoorDynFailure", "MoorDynInput", "MoorDynLine", "MoorDynLineType",
-           "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "is_moordyn_file", "load_moordyn_case",
+           "MoorDynExternalLoad", "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "is_moordyn_file", "load_moordyn_case",
            "moordyn_axial_damping", "moordyn_system", "read_moordyn"]
 
 
@@ -234,6 +234,22 @@ class MoorDynFailure:
 
 
 @dataclass(frozen=True)
+class MoorDynExternalLoad:
+    """One row of a MoorDyn-F EXTERNAL LOADS section: a constant force and translational linear and
+    quadratic damping on a body, point or rod (``kind`` ``'body'``, ``'point'`` or ``'rod'``, ``target``
+    its ID). ``frame`` is ``'G'`` (global axes) or ``'L'`` (body axes, bodies only); rods take two damping
+    values (transverse, axial)."""
+
+    id: int
+    kind: str
+    target: int
+    force: tuple[float, float, float]  # [N]
+    linear_damping: tuple[float, ...]  # [N s/m]
+    quadratic_damping: tuple[float, ...]  # [N s^2/m^2]
+    frame: str = "G"
+
+
+@dataclass(frozen=True)
 class MoorDynLine:
     """One row of a MoorDyn LINES section; ``length`` is the resolved unstretched length [m]."""
 
@@ -305,7 +321,8 @@ class MoorDynInput:
     bodies: tuple[MoorDynBody, ...] = ()
     rods: tuple[MoorDynRod, ...] = ()
     failures: tuple[MoorDynFailure, ...] = ()
-    layout: str = "v2"  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
+    layout: str = "v2"
+    external_loads: tuple[MoorDynExternalLoad, ...] = ()  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
 
     water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")
     gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
@@ -416,7 +433,7 @@ _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' bef
     ("options", ("OPTIONS",)),
     ("outputs", ("OUTPUT",)),
 )
-_UNSUPPORTED = {"control": "CONTROL", "external_loads": "EXTERNAL LOADS"}
+_UNSUPPORTED = {"control": "CONTROL"}
 _COUNT = re.compile(r"^N[A-Za-z]+$")  # v1 count lines: '3 NLines - number of line objects'
 
 _ATTACH = {"fixed": ("FIXED", "FIX", "ANCHOR"), "vessel": ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD"),
@@ -1074,6 +1091,35 @@ def _read_failures(rd, section, points, rods, lines) -> list[MoorDynFailure]:
     return out
 
 
+def _read_external_loads(rd, section, points, bodies, rods) -> list[MoorDynExternalLoad]:
+    _, rows = _table(rd, section)
+    out = []
+    for lineno, t in rows:
+        rd.columns(lineno, t, 5, "EXTERNAL LOADS", "ID Object Fext Blin Bquad [CSys]")
+        lid = _integer(rd, lineno, t[0], "external load ID")
+        m = re.fullmatch(r"(BODY|POINT|ROD)(\d+)", t[1].upper())
+        pool = {"BODY": bodies, "POINT": points, "ROD": rods}
+        if not m or int(m.group(2)) not in pool[m.group(1)]:
+            raise rd.error(lineno, f"external load {lid} Object must name a body, point or rod of the deck (e.g. "
+                                   f"Body1, Point3, Rod2), got {t[1]!r}. Suggested fix: use the object's kind and ID.")
+        kind, target = m.group(1).lower(), int(m.group(2))
+        force = _bar_list(rd, lineno, t[2], f"external load {lid} Fext", "N", (3,))
+        damp_counts = (2,) if kind == "rod" else (3,)
+        blin = _bar_list(rd, lineno, t[3], f"external load {lid} Blin", "N s/m", damp_counts)
+        bquad = _bar_list(rd, lineno, t[4], f"external load {lid} Bquad", "N s^2/m^2", damp_counts)
+        for label, values in (("Blin", blin), ("Bquad", bquad)):
+            for v in values:
+                rd.check(lineno, _validate.nonnegative, f"external load {lid} {label}", v, "",
+                         "damping coefficients are >= 0")
+        frame = t[5].upper() if len(t) > 5 else "G"
+        if kind == "body" and frame not in ("G", "L"):
+            raise rd.error(lineno, f"external load {lid} CSys must be G (global) or L (body axes) for a body, got "
+                                   f"{t[5]!r}. Suggested fix: write G or L.")
+        out.append(MoorDynExternalLoad(lid, kind, target, tuple(force), tuple(blin), tuple(bquad),
+                                       frame if kind == "body" else "G"))
+    return out
+
+
 def _end_name(point, rod) -> str:
     return f"R{rod[0]}{rod[1]}" if rod else f"point {point}"
 
@@ -1304,6 +1350,8 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
              if "lines" in sections and (sections["lines"][3] or not structures)
              and (_table(rd, sections["lines"])[1] or not structures) else [])
     failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
+    loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
+             if "external_loads" in sections else [])
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
@@ -1312,7 +1360,7 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     v1 = rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
     result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs,
                           rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
-                          layout="v1" if v1 else "v2")
+                          layout="v1" if v1 else "v2", external_loads=tuple(loads))
     given = result.given_water_depth
     if given is not None:
         for p in points:
@@ -1720,10 +1768,38 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                                            end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
                                            n_elements=ln.n_segments)
 
+    body_force = {name: np.zeros(6) for name in spec}
+    body_lin = {name: np.zeros(6) for name in spec}
+    body_quad = {name: np.zeros(6) for name in spec}
+    for load in md.external_loads:
+        if load.kind == "point":
+            name = f"point{load.target}"
+            p = points[name]
+            points[name] = p.model_copy(update={"external_force": tuple(np.add(p.external_force, load.force))})
+            if any(load.linear_damping) or any(load.quadratic_damping):
+                warnings.warn(f"{label}: external load {load.id} damps point {load.target}; the system model has no "
+                              "damping on points (it is left out).", SeacableWarning, stacklevel=2)
+            continue
+        name = f"body{load.target}" if load.kind == "body" else f"rod{load.target}"
+        if name not in spec:  # a rod merged into its body
+            name = f"body{rods_in[load.target].body}"
+        R = _rotation(*spec[name]["position"][3:])
+        force = np.asarray(load.force, float)
+        if load.frame == "L":  # body axes at the deck's pose; the system model's force is global
+            force = R @ force
+            warnings.warn(f"{label}: external load {load.id} on {name} is in body axes (CSys L); seacable applies it "
+                          "as the constant global force it is at the deck's pose.", SeacableWarning, stacklevel=2)
+        body_force[name][:3] += force
+        lin, quad = load.linear_damping, load.quadratic_damping
+        if len(lin) == 2:  # a rod: transverse and axial, along its axis (body z for a rod body)
+            lin, quad = (lin[0], lin[0], lin[1]), (quad[0], quad[0], quad[1])
+        body_lin[name][:3] += lin
+        body_quad[name][:3] += quad
+
     bodies = {}
     for name, s in spec.items():
         r = rigid[name]
-        drag = np.zeros(6)
+        drag = body_quad[name].copy()
         added = np.zeros(6)
         if "drag" in s:
             drag += 0.5 * rho * np.asarray(s["drag"])
@@ -1739,7 +1815,9 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
             waterplane_moments=tuple(float(v) for v in r.iwp),
             added_mass=tuple(tuple(float(v) for v in row) for row in np.diag(added)) if added.any() else None,
             quadratic_damping=tuple(tuple(float(v) for v in row) for row in np.diag(drag)) if drag.any() else None,
-            pinned=s["pinned"])
+            linear_damping=(tuple(tuple(float(v) for v in row) for row in np.diag(body_lin[name]))
+                            if body_lin[name].any() else None),
+            external_force=tuple(float(v) for v in body_force[name]), pinned=s["pinned"])
     try:
         system = MooringSystem(points=points, bodies=bodies, lines=lines)
     except ValidationError as exc:  # say which deck

@@ -328,7 +328,6 @@ def test_nonlinear_coefficient_tables_need_their_file_or_valid_values():
 
 @pytest.mark.parametrize("section, header", [
     ("---- CONTROL ----\nChannelID Line(s)\n() (,)\n1 1\n", "CONTROL"),
-    ("---- EXTERNAL LOADS ----\nID Object Fext\n(#) (name) (N)\n1 Body1 0|0|0\n", "EXTERNAL LOADS"),
 ])
 def test_unsupported_sections_with_rows(section, header):
     msg = _error(_deck(extra=section),
