@@ -33,9 +33,9 @@ v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
   ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``.
 - LINES, v2: ``ID type AttachA AttachB UnstrLen NumSegs outputs``; v1 (``LINE PROPERTIES``
   with ``UnstrLen`` in the 3rd column): ``ID type UnstrLen NumSegs NodeAnch NodeFair flags``.
-  An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``.
-  MoorDyn looks the number up by *position* in the point list; seacable by the ID column, and
-  warns when the two differ (IDs not 1..N in file order). A negative ``UnstrLen`` is, as in
+  An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``, or a
+  rod end ``R1A``/``R1B``. MoorDyn looks the number up by *position* in the point list (it never
+  reads the ID column), and so does seacable, with a warning when the IDs are not 1..N in order. A negative ``UnstrLen`` is, as in
   MoorDyn's ``Line::initialize``, a factor on the distance between the two end points.
 
 Physics MoorDyn attaches to these inputs (``source/Line.cpp``, ``Line::initialize`` and
@@ -773,23 +773,15 @@ def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
 
 def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
     _, rows = _table(rd, section)
-    points, where = [], {}
+    points, where, written = [], {}, []
     layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
     if not rows:
         raise _empty(rd, section, "POINTS", "ID type X Y Z mass volume CdA Ca")
     for lineno, t in rows:
         rd.columns(lineno, t, 9, "POINTS", layout)
         pid = _integer(rd, lineno, t[0], "point ID")
-        if pid in where:  # MoorDyn-C numbers the points by position and never reads this column
-            warnings.warn(f"{rd.label}:{lineno}: point ID {pid} is used twice (first at line {where[pid]}); MoorDyn "
-                          "numbers points by their position in the list, and so does seacable for this file: "
-                          f"this point is point {len(points) + 1}. Suggested fix: number the points 1, 2, 3, ... "
-                          "once each.", SeacableWarning, stacklevel=4)
-            pid = len(points) + 1
-            if pid in where:
-                raise rd.error(lineno, f"point ID {t[0]} is used twice and its position {pid} is another point's ID "
-                                       "(first at line {where[pid]}). Suggested fix: number the points 1, 2, 3, ... "
-                                       "once each.")
+        written.append(pid)
+        pid = len(points) + 1  # MoorDyn-C numbers the points by position and never reads the ID column
         kind, owner = _attachment(rd, lineno, t[1], pid)
         x, y, z = (rd.number(lineno, t[k], f"point {pid} {c}", "m") for k, c in zip((2, 3, 4), "XYZ"))
         mass = rd.number(lineno, t[5], f"point {pid} Mass", "kg")
@@ -812,6 +804,11 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
         points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca, owner if kind == "body" else None,
                                    owner if kind == "turbine" else None))
         where[pid] = lineno
+    if written != list(range(1, len(written) + 1)):
+        warnings.warn(f"{rd.label}: point IDs {written} are not 1..{len(written)} in file order; MoorDyn numbers the "
+                      "points by their position in the list (it never reads the ID column), and so does seacable: "
+                      "lines attach to points 1..N in file order. Suggested fix: number the points 1, 2, 3, ... in "
+                      "order.", SeacableWarning, stacklevel=4)
     return points, where
 
 
@@ -1380,10 +1377,6 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
         else:
             source = "no WtrDpth: the depth of the deepest rod end, as in MoorDyn"
     rd.notes.extend(_option_notes(rd, options, result.water_depth, source))
-    if [p.id for p in points] != list(range(1, len(points) + 1)):
-        warnings.warn(f"{label}: point IDs {[p.id for p in points]} are not 1..{len(points)} in file order; "
-                      "MoorDyn attaches lines to points by their position in the list, seacable by ID, "
-                      "so the two may connect lines differently.", SeacableWarning, stacklevel=2)
     return dataclasses.replace(result, notes=tuple(rd.notes))
 
 

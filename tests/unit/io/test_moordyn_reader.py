@@ -292,7 +292,7 @@ def test_unknown_line_type_and_point(tmp_path):
 def test_duplicate_ids():
     _error(_deck(types=TYPE_ROW + "\n" + TYPE_ROW), "line type 'chain' is defined twice")
     # MoorDyn numbers points by position and never reads the ID column: a repeated ID is the next point
-    with pytest.warns(SeacableWarning, match=r"point ID 2 is used twice \(first at line 11\).*this point is point 3"):
+    with pytest.warns(SeacableWarning, match=r"point IDs \[1, 2, 2\] are not 1..3 in file order"):
         data = read_moordyn(_deck(points=POINT_ROWS + "\n2 Free 0 0 -50 0 0 0 0"))
     assert [p.id for p in data.points] == [1, 2, 3]
     _error(_deck(lines=LINE_ROW + "\n" + LINE_ROW), "line ID 1 is used twice")
@@ -384,9 +384,11 @@ def test_file_errors(tmp_path):
 
 def test_warnings():
     points = "2 Fixed -300 0 -100 0 0 0 0\n1 Vessel 0 0 -5 0 0 0 0"
-    with pytest.warns(SeacableWarning, match="MoorDyn attaches lines to points by their position"):
+    with pytest.warns(SeacableWarning, match=r"point IDs \[2, 1\] are not 1..2 in file order; MoorDyn numbers"):
         data = read_moordyn(_deck(points=points))
-    assert (data.lines[0].point_a, data.lines[0].point_b) == (1, 2)  # by ID
+    # by position, as MoorDyn: point 1 is the first row (written '2', the anchor)
+    assert (data.lines[0].point_a, data.lines[0].point_b) == (1, 2)
+    assert data.points[0].attachment == "fixed" and data.points[0].id == 1
     with pytest.warns(SeacableWarning, match="'WAVES' is not a MoorDyn section"):
         read_moordyn(_deck(extra="---- WAVES ----\n1 2 3\n"))
 
