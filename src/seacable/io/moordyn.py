@@ -134,6 +134,7 @@ class MoorDynLineType:
     dynamic_stiffness: tuple[float, ...] | None = None  # viscoelastic: (EA_d,) or (EA_Dc, EA_D_Lm) [N, -]
     dynamic_damping: float | None = None  # viscoelastic: BA_d [N s]
     table_file: str | None = None  # the file the nonlinear EA table was read from
+    syrope: tuple[str, float, float] | None = None  # Syrope working curve (WCType, k1, k2); tension_strain is the OWC
 
 
 @dataclass(frozen=True)
@@ -322,7 +323,8 @@ class MoorDynInput:
     rods: tuple[MoorDynRod, ...] = ()
     failures: tuple[MoorDynFailure, ...] = ()
     layout: str = "v2"
-    external_loads: tuple[MoorDynExternalLoad, ...] = ()  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
+    external_loads: tuple[MoorDynExternalLoad, ...] = ()
+    syrope_ic: dict[int, tuple[float, float]] = dataclasses.field(default_factory=dict)  # line: (Tmax0, Tmean0) [N]  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
 
     water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")
     gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
@@ -428,6 +430,7 @@ _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' bef
     ("rods", ("RODS", "ROD LIST", "ROD PROPERTIES")),
     ("lines", ("LINES", "LINE LIST", "LINE PROPERTIES")),
     ("failure", ("FAILURE",)),
+    ("syrope_ic", ("SYROPE IC",)),
     ("control", ("CONTROL",)),
     ("external_loads", ("EXTERNAL LOADS",)),
     ("options", ("OPTIONS",)),
@@ -642,6 +645,31 @@ def _bar_values(rd, lineno, type_name, token, column, unit, counts):
             for k, v in enumerate(parts)]
 
 
+def _syrope(rd, lineno, type_name, token):
+    """A Syrope configuration file (``value key`` lines: OWC table path relative to the deck, WCType, k1,
+    k2): ((WCType, k1, k2), OWC path, OWC table)."""
+    if rd.folder is None or not (rd.folder / token).is_file():
+        raise rd.error(lineno, f"line type {type_name!r} names the Syrope file {token!r}, which is not a file"
+                               f"{'' if rd.folder is None else f' (looked for {rd.folder / token})'}. Suggested fix: "
+                               "put it next to the deck and read the deck from its file.")
+    values = {}
+    for line in (rd.folder / token).read_text(errors="replace").splitlines():
+        tokens = _strip_comment(line).split()
+        if len(tokens) >= 2:
+            values[tokens[1].upper()] = tokens[0]
+    missing = [k for k in ("OWC", "WCTYPE", "K1", "K2") if k not in values]
+    if missing:
+        raise InputError(f"{rd.folder / token}: the Syrope file must give OWC, WCType, k1 and k2 as 'value key' "
+                         f"lines; {', '.join(missing)} missing. Suggested fix: follow MoorDyn's Syrope input format.")
+    wc = values["WCTYPE"].upper()
+    if wc not in ("LINEAR", "QUADRATIC", "EXP"):
+        raise InputError(f"{rd.folder / token}: WCType must be LINEAR, QUADRATIC or EXP, got {values['WCTYPE']!r}. "
+                         "Suggested fix: use one of MoorDyn's Syrope working curves.")
+    k1, k2 = (rd.number(lineno, values[k], f"line type {type_name!r} Syrope {k.lower()}", "N") for k in ("K1", "K2"))
+    table = _tension_strain_table(rd, lineno, type_name, values["OWC"])
+    return (wc, k1, k2), values["OWC"], table
+
+
 def _tension_strain_table(rd, lineno, type_name, token):
     """A MoorDyn nonlinear EA: a file of (strain, tension) rows next to the deck, read and checked.
 
@@ -705,8 +733,18 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
                                    "line type its own name.")
         d = rd.number(lineno, t[1], f"line type {name!r} Diam (diameter)", "m")
         m = rd.number(lineno, t[2], f"line type {name!r} MassDen (mass per length)", "kg/m")
-        table = dynamic = ba_dynamic = table_file = None
-        if "|" in t[3]:  # viscoelastic (MoorDyn v2): EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm
+        table = dynamic = ba_dynamic = table_file = syrope = None
+        if t[3].upper().startswith("SYROPE:"):  # MoorDyn's Syrope polyester model: SYROPE:file|EA_Dc|EA_D_Lm
+            parts = t[3][7:].split("|")
+            if len(parts) != 3:
+                raise rd.error(lineno, f"line type {name!r} EA {t[3]!r} must be SYROPE:<file>|EA_Dc|EA_D_Lm. "
+                                       "Suggested fix: write it as MoorDyn's Syrope documentation does.")
+            dynamic = tuple(rd.number(lineno, v, f"line type {name!r} Syrope {c}", u)
+                            for v, c, u in zip(parts[1:], ("EA_Dc", "EA_D_Lm"), ("N", "-")))
+            syrope, table_file, table = _syrope(rd, lineno, name, parts[0])
+            e_last, t_last = table[-1]
+            ea = t_last / e_last
+        elif "|" in t[3]:  # viscoelastic (MoorDyn v2): EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm
             ea, *dyn = _bar_values(rd, lineno, name, t[3], "EA", "N", (2, 3))
             dynamic = tuple(dyn)
             for label, value in zip(("EA_d" if len(dyn) == 1 else "EA_Dc", "EA_D_Lm"), dyn):
@@ -751,7 +789,7 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
             rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value, "",
                      "hydrodynamic coefficients are >= 0")
         out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat, table, dynamic, ba_dynamic,
-                                    table_file)
+                                    table_file, syrope)
     return out
 
 
@@ -1014,8 +1052,8 @@ def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[i
         word = t[2].upper()
         body = turbine = None
         m = re.fullmatch(r"(BODY|TURBINE)(\d+)(PINNED|PIN)?", word)
-        if word in _ROD_KINDS:
-            kind, pinned = _ROD_KINDS[word]
+        if word in _ROD_KINDS or re.fullmatch(r"PINNED\d+", word):  # MoorDyn-F's r-test writes 'Pinned1'
+            kind, pinned = _ROD_KINDS.get(word, ("free", True))
         elif m and m.group(1) == "BODY":
             kind, pinned, body = "body", m.group(3) is not None, int(m.group(2))
             if body not in bodies:
@@ -1349,6 +1387,13 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
     loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
              if "external_loads" in sections else [])
+    syrope_ic = {}
+    if "syrope_ic" in sections:
+        for lineno, t in _table(rd, sections["syrope_ic"])[1]:
+            rd.columns(lineno, t, 3, "SYROPE IC", "Line(s) Tmax0 Tmean0")
+            tmax, tmean = (rd.number(lineno, v, f"SYROPE IC {c}", "N") for v, c in zip(t[1:3], ("Tmax0", "Tmean0")))
+            for token in t[0].split(","):
+                syrope_ic[_integer(rd, lineno, token, "SYROPE IC line")] = (tmax, tmean)
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
@@ -1357,7 +1402,8 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     v1 = rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
     result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs,
                           rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
-                          layout="v1" if v1 else "v2", external_loads=tuple(loads))
+                          layout="v1" if v1 else "v2", external_loads=tuple(loads),
+                          syrope_ic=syrope_ic)
     given = result.given_water_depth
     if given is not None:
         for p in points:
@@ -1754,7 +1800,9 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
     if tabled:
         warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
                       "kept in LineType.tension_strain, but seacable's system statics use a constant EA, the "
-                      "table's secant at its last point.", SeacableWarning, stacklevel=2)
+                      "table's secant at its last point (for a Syrope rope the table is its original working "
+                      "curve; the working curve after the load history of SYROPE IC is not modelled).",
+                      SeacableWarning, stacklevel=2)
     lines = {}
     for ln in md.lines:
         lines[f"line{ln.id}"] = SystemLine(line=Line.single(types[ln.line_type], ln.length),

@@ -85,7 +85,9 @@ print("JSON" + json.dumps(out))
 
 
 def decks():
-    return sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and p.is_file())
+    from seacable.io.moordyn import is_moordyn_file
+
+    return sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and is_moordyn_file(p))
 
 
 def _child(code: str, deck: Path, env: dict) -> tuple[dict | None, str, float]:
