@@ -37,6 +37,12 @@ NOT_A_SYSTEM = {
     "MoorDyn/tests/Mooring/body_tests/floatingBodies.txt": "option g = 0 switches gravity off",
     "MoorDyn/tests/Mooring/body_tests/pinnedBody.txt": "option WtrDnsty = 0 switches buoyancy off",
     "r-test/modules/moordyn/md_float/moordyn.dat": "no line ends on this body",
+    "MoorDyn/tests/Mooring/body_tests/orbitalBody.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt": "option g = 0 switches gravity off",
+    # rods that only sink or swing, with a dummy line between two anchors (MoorDyn needs a line)
+    "r-test/modules/moordyn/md_horizontal/moordyn.dat": "no line ends on this body",
+    "r-test/modules/moordyn/md_vertical/moordyn.dat": "no line ends on this body",
+    "r-test/modules/moordyn/md_no_line/moordyn.dat": "no line ends on this body",
 }
 # Decks that convert but whose statics seacable does not solve (yet), and why.
 NO_STATICS = {
