@@ -991,8 +991,22 @@ def _read_rod_types(rd, section) -> dict[str, MoorDynRodType]:
 
 
 def _read_bodies(rd, section) -> tuple[list[MoorDynBody], dict[int, int]]:
-    _, rows = _table(rd, section)
+    names, rows = _table(rd, section)
     layout = "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca"
+    if any(n.lower() == "xcg" for n in names):
+        # the early MoorDyn-F v2 layout (OpenFAST r-test 5MW_OC4): 'BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ
+        # CdA Ca', the ID and attachment written together ('1coupled'): rewritten into today's columns
+        old = "BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ CdA Ca"
+        rewritten = []
+        for lineno, t in rows:
+            rd.columns(lineno, t, 17, "BODIES", old)
+            m = re.fullmatch(r"(\d+)([A-Za-z]\w*)", t[0])
+            if not m:
+                raise rd.error(lineno, f"the body ID and attachment of this layout ({old}) are written together, e.g. "
+                                       f"'1coupled', got {t[0]!r}. Suggested fix: write the ID then the attachment.")
+            rewritten.append((lineno, [m.group(1), m.group(2), *t[1:7], t[10], "|".join(t[7:10]), "|".join(t[12:15]),
+                                       t[11], t[15], t[16]]))
+        rows = rewritten
     bodies, where = [], {}
     for lineno, t in rows:
         rd.columns(lineno, t, 14, "BODIES", layout)
