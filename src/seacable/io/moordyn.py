@@ -1413,7 +1413,9 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
         options.setdefault("Echo", echo)
     outputs = _read_outputs(sections["outputs"]) if "outputs" in sections else ()
     lowered = [n.lower() for n in _table(rd, sections["line_types"])[0]] if "line_types" in sections else []
-    v1 = rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
+    line_names = _table(rd, sections["lines"])[0] if "lines" in sections else []
+    v1 = (rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
+          or (len(line_names) > 2 and "len" in line_names[2].lower()))  # v1 LINE PROPERTIES columns
     result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs,
                           rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
                           layout="v1" if v1 else "v2", external_loads=tuple(loads),
