@@ -64,7 +64,8 @@ NO_STATICS = {
 }
 # MoorPy 1.3.0 leaves lifting.txt's free point where it starts (zero tension, 'converged'); the closed
 # form is tested instead (test_a_weight_on_a_neutral_line_hangs_by_its_weight).
-MOORPY_WRONG = {"MoorDyn/tests/Mooring/lifting.txt"}
+# MoorPy gives 3D_seafloor/hanging_lines' vertical chains with a massless free end half their weight at both ends.
+MOORPY_WRONG = {"MoorDyn/tests/Mooring/lifting.txt", "MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt"}
 
 
 def _quiet(fn, *args, **kwargs):
@@ -184,6 +185,19 @@ def test_a_coupled_body_carries_the_fairleads_of_the_points_deck():
     assert body_md.bodies[0].attachment == "coupled" and body_md.layout == "v1"
     assert np.allclose(body.end_b_tension, points.end_b_tension, rtol=1e-9)
     assert np.allclose(body.end_a_tension, points.end_a_tension, rtol=1e-9)
+
+
+def test_chains_with_a_free_end_hang_straight_down():
+    """3D_seafloor/hanging_lines: ten 10 m chains from fixed points, each ending at a massless free point: the
+    top carries the chain's wet weight w L, the free end nothing, and hangs L + w L^2 / (2 EA) below the top."""
+    md, eq = _solve("MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt")
+    lt, length = md.line_types["chain"], md.lines[0].length
+    w = (lt.mass_per_length - md.water_density * np.pi * lt.diameter**2 / 4) * md.gravity
+    # 1e-9 relative / 1e-6 N: exact vertical catenaries, Newton residual ~1e-8 of the force scale
+    assert np.allclose(eq.end_a_tension, w * length, rtol=1e-9)
+    assert np.allclose(eq.end_b_tension, 0.0, atol=1e-6)
+    ends = eq.point_position[[eq.point_names.index(f"point{2 * k + 2}") for k in range(10)]]
+    assert np.allclose(ends[:, 2], -6.6 - length - w * length**2 / (2 * lt.axial_stiffness), rtol=1e-9)
 
 
 def test_seabed_friction_is_the_decks():
