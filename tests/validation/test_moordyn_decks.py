@@ -200,6 +200,17 @@ def test_chains_with_a_free_end_hang_straight_down():
     assert np.allclose(ends[:, 2], -6.6 - length - w * length**2 / (2 * lt.axial_stiffness), rtol=1e-9)
 
 
+def test_a_body_with_an_external_load_balances_it():
+    """md_BdyExtLdDmpg: a 21244 kg body (no volume) on a 48 m nylon line from a fixed point, pushed by the
+    EXTERNAL LOADS force (104170, 50000, -10000) N: the line's pull on the body balances weight and load."""
+    md, eq = _solve("r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat")
+    body = md.bodies[0]
+    load = np.asarray(md.external_loads[0].force) + (0.0, 0.0, -body.mass * md.gravity)
+    # the line ends at the body point (end B): 1e-8 of the 2.5e5 N load, the Newton tolerance
+    assert np.allclose(eq.end_b_force[0] + load, 0.0, atol=1e-8 * np.linalg.norm(load) * 10)
+    assert eq.body_position[0][0] > 0 and eq.body_position[0][1] > 0  # pushed along +x, +y
+
+
 def test_seabed_friction_is_the_decks():
     """WD0050_Chain asks for FrictionCoefficient 0.5: the environment carries it (the comparisons above take
     the frictionless seabed MoorPy and MoorDyn's relaxed start have); with it the anchor tension drops."""
