@@ -1,10 +1,13 @@
-"""Read MoorDyn input files (v2, and v1 ``CONNECTION``/``NODE PROPERTIES`` files) into plain records.
+"""Read MoorDyn input files (v2, v1 and MoorDyn-F layouts) into plain records, and turn them into a system.
 
-seacable reads the mooring *lines and points* of a MoorDyn file: the line types, the points
-(anchors, fairleads, free connection points with clump masses or buoys), the lines between
-them, the options and the output channel names. Bodies, rods, failures and other sections are
-refused with an :class:`~seacable.errors.InputError` when they have rows, so that a file is
-never half read in silence.
+seacable reads every section of a MoorDyn deck: line types (constant, viscoelastic ``EA_s|EA_d``,
+nonlinear strain-tension tables, Syrope ropes; bending stiffness EI kept), rod types, bodies, rods,
+points (fixed, free, coupled, on a body, on a FAST.Farm turbine), lines (ends at points or rod ends),
+failures, MoorDyn-F external loads, options and outputs. :func:`moordyn_system` turns the deck into a
+:class:`~seacable.system.model.MooringSystem` and its environment for the system analyses; decks with
+lines and points only also run as a line network (:mod:`seacable.mooring.moordyn`). What cannot be
+read (MoorDyn-F's CONTROL section, a malformed row) is refused with an :class:`~seacable.errors.InputError`
+naming the file and line, so that a file is never half read in silence.
 
 File format (as MoorDyn-C reads it: ``MoorDyn::ReadInFile``, ``findStartOfSection``,
 ``readLineProps`` and ``readOptionsLine`` in ``source/MoorDyn2.cpp`` of FloatingArrayDesign/MoorDyn,
@@ -26,11 +29,22 @@ v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
 - The file ends at a header containing ``need this line`` or ``END``, or a line ``END``.
 - LINE TYPES, v2 (10 columns): ``name d m EA BA/-zeta EI Cd Ca CdAx CaAx``; v1 (9 columns):
   ``name d m EA BA/-zeta Can Cat Cdn Cdt`` (no EI; coefficients in another order). The layout
-  is taken from the column-names line (``EI`` present -> v2). EA, BA and EI may be a file name
-  of a nonlinear table in MoorDyn; seacable refuses these.
+  is taken from the column-names line (``EI`` present -> v2). EA may be ``EA_s|EA_d`` or
+  ``EA_s|EA_Dc|EA_D_Lm`` (viscoelastic, with BA ``BA_s|BA_d``), a file of ``strain tension`` rows
+  (read; lines that do not start with two numbers are skipped), or ``SYROPE:file|EA_Dc|EA_D_Lm``
+  (a Syrope settings file naming its original working curve). A BA or EI table is refused.
+- v1 count lines (``3 NLines - number of line objects``) opening a section are read and checked
+  against the rows.
+- ROD TYPES: ``name d m/l Cd Ca CdEnd CaEnd``. RODS: ``ID type attachment Xa Ya Za Xb Yb Zb NumSegs
+  outputs``, attachment Fixed, Pinned, Free, Coupled/Vessel, CoupledPinned, BodyN, BodyNPinned,
+  TurbineN. BODIES: ``ID attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca`` (CG, I, CdA, Ca one
+  value or several separated by '|'), or the early MoorDyn-F layout ``1coupled X0 .. y0 Xcg Ycg Zcg
+  M V IX IY IZ CdA Ca``. FAILURE: ``[ID] point-or-rod-end lines time tension``. EXTERNAL LOADS:
+  ``ID object Fext Blin Bquad [CSys]``. SYROPE IC: ``lines Tmax0 Tmean0``.
 - POINTS: ``ID type X Y Z mass volume CdA Ca``, or 12 columns with ``FX FY FZ`` before ``CdA``.
   Types: ``Fixed``/``Fix``/``Anchor`` -> ``'fixed'``; ``Vessel``/``Ves``/``Coupled``/``Cpld``/
-  ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``.
+  ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``; ``BodyN`` ->
+  ``'body'``; ``TurbineN`` -> ``'turbine'``.
 - LINES, v2: ``ID type AttachA AttachB UnstrLen NumSegs outputs``; v1 (``LINE PROPERTIES``
   with ``UnstrLen`` in the 3rd column): ``ID type UnstrLen NumSegs NodeAnch NodeFair flags``.
   An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``, or a
@@ -1320,7 +1334,8 @@ def _read_outputs(section) -> tuple[str, ...]:
 
 
 def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
-    """Read a MoorDyn v2 (or v1) input file: line types, points, lines, options and outputs.
+    """Read a MoorDyn v2 (or v1) input file: every section (line and rod types, bodies, rods, points, lines,
+    failures, external loads, options, outputs).
 
     Parameters
     ----------
@@ -1339,18 +1354,19 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     InputError
         With the file, line number, what was wrong, what was expected and a fix: a missing
         LINE TYPES/POINTS/LINES section; a row with too few columns; a value that is not a
-        number; an unknown line type or point ID; a duplicate ID; a non-positive diameter,
-        mass, EA or length; fewer than one segment, or more than memory allows (see
-        :mod:`seacable._limits`); a line whose two ends are one point; an empty LINE TYPES,
-        POINTS or LINES section; rows in BODIES, RODS, ROD TYPES, FAILURE; a nonlinear (table)
-        EA, BA or EI; a point type other than fixed, vessel or free; a point below a given
-        ``WtrDpth``; an option value out of range or not a number.
+        number; an unknown line type, rod type, point, body or rod ID; a duplicate line,
+        body or rod ID; a non-positive diameter, mass, EA or length; fewer than one segment, or
+        more than memory allows (see :mod:`seacable._limits`); a line whose two ends are one
+        point; an empty LINE TYPES, POINTS or LINES section (without bodies or rods); rows in
+        CONTROL; a strain-tension or Syrope file that is missing or not increasing; a BA or EI
+        table; an unknown point, body or rod attachment; a failure at a point its lines do not
+        end at; a point below a given ``WtrDpth``; an option value out of range or not a number.
 
     Warns
     -----
     SeacableWarning
-        When point IDs are not 1..N in file order (MoorDyn attaches lines by position, seacable
-        by ID), or when a section seacable does not know has rows. Options seacable cannot
+        When point IDs are not 1..N in file order (MoorDyn and seacable number the points by
+        position), or when a section seacable does not know has rows. Options seacable cannot
         honour are not warned here but listed in :attr:`MoorDynInput.notes`, for the model.
 
     References
@@ -1773,6 +1789,11 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                       "set in the FAST.Farm input, not in this deck; seacable puts their reference points at the "
                       f"origin. Suggested fix: give turbine_positions={{{sorted(unplaced)[0]}: (x, y, z), ...}}.",
                       SeacableWarning, stacklevel=2)
+    free_pinned = sorted(n for n, sp in spec.items() if sp["pinned"] and sp["kind"] == "free")
+    if free_pinned:
+        warnings.warn(f"{label}: {', '.join(free_pinned)} pinned (MoorDyn Pinned: end A held, rotation free) is "
+                      "recorded as Body.pinned; an analysis that does not hold a pinned body's reference point "
+                      "treats it as free.", SeacableWarning, stacklevel=2)
     if pinned_on_body:
         warnings.warn(f"{label}: rod(s) {', '.join(map(str, pinned_on_body))} are pinned to a body (BodyNPinned); "
                       "seacable's system model has no joint on a moving body and fixes them rigidly to it (their "

@@ -193,3 +193,30 @@ def test_case_exposes_the_system():
     assert system.bodies["body1"].kind == "prescribed" and system.points["point2"].body == "body1"
     assert not load_moordyn_case(DECKS / "MoorPy/tests/case1.dat").has_structures
     assert np.isclose(env.depth, 50.0)
+
+
+def test_external_loads_are_read_and_refused_when_wrong():
+    md = read_moordyn(DECKS / "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat")
+    (load,) = md.external_loads
+    assert (load.kind, load.target, load.force, load.linear_damping, load.quadratic_damping, load.frame) == (
+        "body", 1, (1.0417e5, 0.5e5, -1.0e4), (1.0e3, 0.7e3, 0.6e2), (3.0e3, 2.1e3, 1.0e4), "G")
+    system, _ = moordyn_system(md)
+    body = system.bodies["body1"]
+    assert body.external_force == (1.0417e5, 0.5e5, -1.0e4, 0.0, 0.0, 0.0)
+    assert body.matrix("linear_damping")[2, 2] == 60.0 and body.matrix("quadratic_damping")[1, 1] == 2.1e3
+    text = (DECKS / "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat").read_text()
+    with pytest.raises(InputError, match=r"external load 1 Object must name a body, point or rod .* got 'Body2'"):
+        read_moordyn(text.replace(" 1     Body1  1.0417e5", " 1     Body2  1.0417e5"))
+    with pytest.raises(InputError, match=r"external load 1 Fext must be 3 value\(s\)"):
+        read_moordyn(text.replace("1.0417e5|0.5e5|-1.0e4", "1.0417e5|0.5e5"))
+    with pytest.raises(InputError, match=r"external load 1 CSys must be G \(global\) or L"):
+        read_moordyn(text.replace("1.0e4       G", "1.0e4       Q"))
+
+
+def test_syrope_line_type():
+    md = _quiet(read_moordyn, DECKS / "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt")
+    lt = md.line_types["poly"]
+    assert lt.syrope == ("LINEAR", 1.25e8, 0.0) and lt.dynamic_stiffness == (1.53e8, 23.12)
+    assert lt.tension_strain[1] == (2.06897e-03, 1.71768e+05) and len(lt.tension_strain) == 30  # owc.dat
+    assert lt.axial_stiffness == 4.38601e+06 / 6.00000e-02  # secant at the table's end
+    assert md.syrope_ic == {1: (1.3886e6, 4.339e5)}
