@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from seacable.environment import Current, Environment
-from seacable.errors import ConvergenceError, InputError
+from seacable.errors import ConvergenceError, InputError, SeacableWarning
 from seacable.line import Line
 from seacable.statics.catenary import catenary
 from seacable.system import _stat_examples as ex
@@ -44,16 +44,31 @@ def _held(system, body, q):
     return MooringSystem(points=system.points, bodies=bodies, lines=system.lines)
 
 
-@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy])
+def _tendon_buoy():
+    """A buoy held down by one vertical rope straight above its anchor (the vertical-line limit)."""
+    from seacable.system.model import Body
+
+    buoy = Body(mass=10_000.0, volume=30.0, center_of_buoyancy=(0, 0, -1.0), center_of_gravity=(0, 0, -2.0),
+                waterplane_area=12.0, waterplane_moments=(11.0, 11.0))
+    system = MooringSystem(points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                                   "f": SystemPoint(kind="body", body="b", position=(0.0, 0.0, -2.0))},
+                           bodies={"b": buoy}, lines={"l": SystemLine(line=Line.single(ex.BUOY_ROPE, 97.0),
+                                                                      end_a="a", end_b="f")})
+    return system, Environment(depth=100.0)
+
+
+@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy, _tendon_buoy])
 def test_stiffness_equals_central_differences_of_equilibrium(build):
     system, env = build()
     body = next(iter(system.bodies))
-    eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * (
-        100 if build is ex.oc4_semi else 1)}, tol=1e-12)
+    # the tendon buoy is solved without a load: its line stays exactly vertical (the limit
+    # H/h -> dH/dx of the transverse stiffness)
+    load = {ex.oc4_semi: 100.0, ex.moored_buoy: 1.0, _tendon_buoy: 0.0}[build]
+    eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * load}, tol=1e-11)
     q = eq.body_position[0]
     K_fd = np.zeros((6, 6))
     # steps: 1 mm and 1e-5 rad; truncation error ~ (h/L)^2 and the 1e-12 solves keep round-off
-    # below 1e-8 of the force changes (K h ~ 1e2..1e5 N)
+    # (1e-11 of the force scale, catenary spans to 1e-12) below 1e-7 of the force changes (K h ~ 1e2..1e5 N)
     for j in range(6):
         h = 1e-3 if j < 3 else 1e-5
         loads = []
@@ -65,7 +80,7 @@ def test_stiffness_equals_central_differences_of_equilibrium(build):
                 th = np.zeros(3)
                 th[j - 3] = sgn * h
                 qp[3:] = euler(_rotvec(th) @ rotation(q[3:]))   # small rotation about the global axis
-            e2 = solve_equilibrium(_held(system, body, qp), env, tol=1e-12)
+            e2 = solve_equilibrium(_held(system, body, qp), env, tol=1e-11)
             loads.append(_line_load_on_body(e2, body))
         K_fd[:, j] = -(loads[0] - loads[1]) / (2 * h)
     K = eq.stiffness
@@ -154,9 +169,189 @@ def test_bad_inputs_are_refused_with_a_fix():
     deep["anchor1"] = deep["anchor1"].model_copy(update={"position": (-853.87, 0.0, -330.0)})
     with pytest.raises(InputError, match="below the seabed"):
         solve_equilibrium(system.model_copy(update={"points": deep}), env)
+    with pytest.raises(InputError, match="slope"):
+        solve_equilibrium(system, env.model_copy(update={"seabed": env.seabed.model_copy(update={"slope": 0.05})}))
+    soft = ex.OC3_CHAIN.model_copy(update={"axial_stiffness": None})
+    lines = {k: v.model_copy(update={"line": Line.single(soft, 902.2)}) for k, v in system.lines.items()}
+    with pytest.raises(InputError, match="axial_stiffness"):
+        solve_equilibrium(system.model_copy(update={"lines": lines}), env)
     with pytest.raises(InputError, match="no free body"):
         solve_equilibrium(system, env, external={"platfrom": np.zeros(6)})
     # 5e7 N of surge: more than three OC3 lines can hold (they would stretch past breaking)
     with pytest.raises((ConvergenceError, InputError)) as err:
         solve_equilibrium(system, env, external={"platform": np.array([5e8, 0, 0, 0, 0, 0])}, max_iter=30)
     assert "Suggested fix" in str(err.value)
+
+
+def test_free_point_lands_on_the_seabed_and_slides_until_held():
+    # A 20 t clump (free point) between 50 m of chain to the anchor and 150 m to a held point:
+    # it cannot hang, rests on the seabed (z = -depth exactly) and slides (no friction) until the
+    # anchor chain, flat on the seabed, carries the pull: x_c = 50 (1 + H / EA), H the horizontal
+    # pull of the upper chain at the clump (closed form of a stretched bar; 1e-9).
+    env = Environment(depth=100.0)
+    chain = ex.BUOY_CHAIN
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "c": SystemPoint(kind="free", position=(40.0, 0.0, -80.0), mass=20000.0),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -10.0))},
+        lines={"l1": SystemLine(line=Line.single(chain, 50.0), end_a="a", end_b="c"),
+               "l2": SystemLine(line=Line.single(chain, 150.0), end_a="c", end_b="b")})
+    eq = solve_equilibrium(system, env)
+    xc = eq.point_position[1]
+    assert xc[2] == -100.0
+    H = eq.end_a_force[1, 0]
+    assert H > 0
+    assert xc[0] == pytest.approx(50.0 * (1.0 + H / chain.axial_stiffness), rel=1e-9)
+    assert eq.end_b_force[0, 0] == pytest.approx(-H, rel=1e-9)     # horizontal balance at the clump
+    ref = catenary(150.0 - xc[0], 90.0, 150.0, chain.axial_stiffness, chain.submerged_weight(1025.0, 9.81))
+    assert eq.end_b_tension[1] == pytest.approx(float(ref.fairlead_tension), rel=1e-9)
+
+
+def test_a_line_pulled_nearly_straight_warns():
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -5.0))},
+        lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 100.0), end_a="a", end_b="b")})
+    with pytest.warns(SeacableWarning, match="stretched by 77.6 %"):
+        solve_equilibrium(system, env)
+
+
+def _own_load(body, env, q):
+    """Weight, buoyancy, heave and waterplane loads of a body at q (the model's equations)."""
+    R = rotation(q[3:])
+    rho, g = env.water_density, env.gravity
+    W = np.array([0, 0, -body.mass * g])
+    B = np.array([0, 0, rho * g * body.volume])
+    a = R[:, 2]
+    f = np.zeros(6)
+    f[:3] = W + B
+    f[2] -= rho * g * body.waterplane_area * (q[2] - body.position[2])
+    f[3:] = np.cross(R @ body.center_of_gravity, W) + np.cross(R @ body.center_of_buoyancy, B)
+    f[3:] += rho * g * np.array([body.waterplane_moments[0] * a[1], -body.waterplane_moments[1] * a[0], 0.0])
+    return f
+
+
+@pytest.mark.parametrize("build", [ex.oc3_hywind, ex.oc4_semi])
+def test_hydrostatic_matrix_equals_central_differences(build):
+    # At an offset and rotated position (under a load) the analytic hydrostatic matrix (weight and
+    # buoyancy arms rotating, heave, waterplane) equals central differences of those loads over
+    # small global rotations; the loads are closed forms, so 1e-7 (steps 1e-4 m, 1e-6 rad).
+    system, env = build()
+    name = next(iter(system.bodies))
+    eq = solve_equilibrium(system, env, external={name: np.array([5e5, 2e5, 0, 1e6, 3e6, 1e6])})
+    q = eq.body_position[0]
+    body = system.bodies[name]
+    K = np.zeros((6, 6))
+    for j in range(6):
+        h = 1e-4 if j < 3 else 1e-6
+        f = []
+        for sgn in (1, -1):
+            qp = q.copy()
+            if j < 3:
+                qp[j] += sgn * h
+            else:
+                th = np.zeros(3)
+                th[j - 3] = sgn * h
+                qp[3:] = euler(_rotvec(th) @ rotation(q[3:]))
+            f.append(_own_load(body, env, qp))
+        K[:, j] = -(f[0] - f[1]) / (2 * h)
+    H = eq.hydrostatic
+    assert np.abs(H - K).max() <= 1e-7 * np.abs(np.diag(H)).max()
+    assert eq.body_stiffness(name, hydrostatics=True) == pytest.approx(eq.stiffness + H)
+
+
+def test_friction_in_a_moored_system_is_the_catenarys():
+    # OC3 on a seabed with friction 0.6 under a surge load: every line's end forces equal the
+    # single-line catenary (with friction) at the solved end positions, 1e-9; friction lowers
+    # the anchor tension of the loaded lines below the touchdown tension.
+    system, env = ex.oc3_hywind()
+    env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.6})})
+    eq = solve_equilibrium(system, env, external={"platform": np.array([1e6, 0, 0, 0, 0, 0])})
+    w = ex.OC3_CHAIN.submerged_weight(env.water_density, env.gravity)
+    for i, name in enumerate(eq.line_names):
+        sl = system.lines[name]
+        pa = eq.point_position[eq.point_names.index(sl.end_a)]
+        pb = eq.point_position[eq.point_names.index(sl.end_b)]
+        ref = catenary(np.hypot(*(pb - pa)[:2]), pb[2] - pa[2], 902.2, ex.OC3_CHAIN.axial_stiffness, w, 0.6, True)
+        assert eq.end_b_tension[i] == pytest.approx(float(ref.fairlead_tension), rel=1e-9)
+        assert eq.end_a_tension[i] == pytest.approx(float(ref.anchor_tension), rel=1e-9)
+        assert eq.grounded_length[i] == pytest.approx(float(ref.grounded_length), rel=1e-9)
+        if ref.grounded_length > 0:
+            assert eq.end_a_tension[i] < float(ref.H_fairlead)
+
+
+def test_line_profile_through_clumps_and_segments():
+    # The buoy's line 1: the profile starts at the anchor, ends at the fairlead, passes through
+    # the clump and the float nodes, and its tension at the fairlead is the end tension.
+    system, env = ex.moored_buoy()
+    eq = solve_equilibrium(system, env)
+    pos, T = eq.line_profile("line1", 191)       # 1 m spacing over 190 m
+    assert pos[0] == pytest.approx(eq.point_position[eq.point_names.index("anchor1")], abs=1e-9)
+    assert pos[-1] == pytest.approx(eq.point_position[eq.point_names.index("fairlead1")], abs=1e-9)
+    assert T[-1] == pytest.approx(eq.end_b_tension[0], rel=1e-9)
+    assert T[0] == pytest.approx(eq.end_a_tension[0], rel=1e-9)
+    nodes = eq._node_position[eq._asm.sub_b[eq._asm.line_first[0]:eq._asm.line_last[0]]]
+    for s, p in zip((95, 110, 150), nodes):                  # the clump, the chain-rope joint, the float
+        assert pos[s] == pytest.approx(p, abs=1e-6)
+    assert np.all(np.diff(np.linalg.norm(np.diff(pos, axis=0), axis=1)) < 0.2)   # no jumps
+
+
+def test_a_mid_water_line_sagging_into_the_seabed_warns():
+    # Two held points 10 m above a 100 m deep seabed joined by 300 m of chain 200 m apart: the
+    # catenary between them sags ~ 90 m, through the seabed, which a mid-water sub-line does
+    # not model: a warning says so.
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="coupled", position=(0.0, 0.0, -90.0)),
+                "b": SystemPoint(kind="coupled", position=(200.0, 0.0, -90.0))},
+        lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 300.0), end_a="a", end_b="b")})
+    with pytest.warns(SeacableWarning, match="below the seabed"):
+        solve_equilibrium(system, env)
+    deep = Environment(depth=300.0)
+    solve_equilibrium(system, deep)          # the same line in deeper water: no warning
+
+
+def _landed_clump():
+    env = Environment(depth=100.0, seabed={"friction": 0.5})
+    chain = ex.BUOY_CHAIN
+    system = MooringSystem(
+        points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                "c": SystemPoint(kind="free", position=(45.0, 0.0, -100.0), mass=20000.0),
+                "b": SystemPoint(kind="coupled", position=(150.0, 0.0, -10.0))},
+        lines={"l1": SystemLine(line=Line.single(chain, 50.0), end_a="a", end_b="c"),
+               "l2": SystemLine(line=Line.single(chain, 150.0), end_a="c", end_b="b")})
+    return system, env
+
+
+def _buoy_with_friction():
+    system, env = ex.moored_buoy()
+    return system, env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.5})})
+
+
+@pytest.mark.parametrize("build", [_landed_clump, _buoy_with_friction, ex.oc4_semi])
+def test_newton_jacobian_equals_central_differences_with_friction(build):
+    # The full Jacobian of the Newton iteration (bodies and free points, before condensation),
+    # including the anchor-end terms of grounded sub-lines with Coulomb friction
+    # (dH_A = dH_F + mu dV_F) at a free point resting on the seabed, against central
+    # differences of the residual (steps 1e-5 m / 1e-7 rad, catenaries to round-off): 1e-6.
+    from seacable.system.statics import _Problem
+
+    system, env = build()
+    ext = {b: np.array([2e4, 1e4, 0, 0, 0, 1e3]) for b in system.bodies}
+    prob = _Problem(system, env, ext, 1e-8, 50)
+    st = prob.initial_state(None)
+    st, ev, _ = prob.newton(st, 0.5)            # somewhere on the way, not at equilibrium
+    n = ev.residual.size
+    J = np.zeros((n, n))
+    for i in range(n):
+        h = 1e-7 if (i < 6 * prob.nb and i % 6 >= 3) else 1e-5
+        dq = np.zeros(n)
+        dq[i] = h
+        rp = prob.eval(prob.step(st, dq, 1.0), 1.0).residual
+        rm = prob.eval(prob.step(st, -dq, 1.0), 1.0).residual
+        J[:, i] = (rp - rm) / (2 * h)
+    ev = prob.eval(st, 1.0)
+    free = np.setdiff1d(np.arange(n), prob._z_dof(st))     # a point resting on the seabed has its z held
+    D = (J - ev.jac)[np.ix_(free, free)]
+    assert np.abs(D).max() <= 1e-6 * np.abs(ev.jac).max()

@@ -26,11 +26,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..statics.catenary import CatenaryRegime, catenary
+from ..statics.catenary import CatenaryRegime
+from . import _stat_kernel as _k
+from ._stat_cat import catenaries
 from ._stat_model import BODY, Assembly, rotation, skew
 
-_GROUNDED = np.array([CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN,
-                      CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR, CatenaryRegime.SLACK_SEABED])
+_GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
+_GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
+           CatenaryRegime.SLACK_SEABED]] = True
 
 
 @dataclass
@@ -61,8 +64,8 @@ class State:
 @dataclass
 class Evaluation:
     residual: np.ndarray      # (ndof,) net force on each DOF [N, N m]
-    jac: np.ndarray | None    # (ndof, ndof) d residual / d increment (all terms)
-    jac_lines: np.ndarray | None   # lines and node loads only (no body weight/hydrostatics)
+    jac: np.ndarray           # (ndof, ndof) d residual / d increment (all terms)
+    jac_lines: np.ndarray     # lines and node loads only (no body weight/hydrostatics)
     cat: object               # CatenaryResult
     anchor_is_a: np.ndarray   # (ns,) bool: sub-line end A is the catenary's lower end
     fa: np.ndarray            # (ns, 3) force of each sub-line on its end-A node [N]
@@ -88,7 +91,7 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
         rg, rb = R0 @ np.asarray(b.center_of_gravity), R0 @ np.asarray(b.center_of_buoyancy)
         f0[k, :3] = W + B
         f0[k, 3:] = np.cross(rg, W) + np.cross(rb, B)
-    arr = lambda key: np.array([getattr(b, key) for b in bodies], float)  # noqa: E731
+    arr = lambda key: np.array([getattr(b, key) for b in bodies], float)
     return BodyData(mass=arr("mass"), rcg=arr("center_of_gravity").reshape(nb, 3), volume=arr("volume"),
                     rcb=arr("center_of_buoyancy").reshape(nb, 3), awp=arr("waterplane_area"),
                     iwp=arr("waterplane_moments").reshape(nb, 2),
@@ -112,128 +115,64 @@ def _seabed_tol(asm):
     return 1e-6 * max(1.0, asm.depth)
 
 
-def lines(asm: Assembly, P: np.ndarray):
-    """One catenary call over all sub-lines: end forces and 3x3 derivative blocks."""
+def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None) -> Evaluation:
+    """Residual (net loads on every DOF) and its Jacobian at state ``st``.
+
+    ``load_factor`` scales the bodies' external loads (the load ramp); ``warm`` is the sub-lines'
+    previous (H, V) for the catenaries' start.
+    """
+    nb, nfree = len(asm.free_bodies), asm.free_nodes.size
+    nn = asm.node_kind.size
+    ns = asm.sub_a.size
+    ndof = 6 * nb + 3 * nfree
+    P = node_positions(asm, st.X, st.R, st.P)
+    cat, anchor_is_a, e, tiny = _catenaries(asm, P, warm)
+    fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
+    res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
+    grounded = _GROUNDED[cat.regime]
+    K = np.where(np.isfinite(cat.stiffness), cat.stiffness, 0.0)
+    _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
+                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), asm.node_force, asm.node_kind,
+                asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
+    own = np.zeros((nb, 6))
+    own_jac = np.zeros((nb, 6, 6))
+    if nb:
+        _k.body_terms(st.R, st.X, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
+                      own, own_jac)
+    for k in range(nb):
+        if bd.khs[k] is not None:
+            from ._stat_model import euler, euler_rate_map
+            ang = euler(st.R[k])
+            dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
+            own[k] = bd.f0[k] - bd.khs[k] @ dq
+            M = np.eye(6)
+            M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
+            own_jac[k] = -bd.khs[k] @ M
+    jac = jac_lines.copy()
+    for k in range(nb):
+        res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
+        jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
+    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)),
+                float(np.abs(asm.node_force).max(initial=0.0)), float(np.abs(own).max(initial=0.0)),
+                float(np.abs(bd.external).max(initial=0.0)))
+    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale)
+
+
+def _catenaries(asm: Assembly, P: np.ndarray, warm):
     pa, pb = P[asm.sub_a], P[asm.sub_b]
     anchor_is_a = pa[:, 2] <= pb[:, 2]
     pA = np.where(anchor_is_a[:, None], pa, pb)
-    pF = np.where(anchor_is_a[:, None], pb, pa)
-    d = pF - pA
+    d = np.where(anchor_is_a[:, None], pb, pa) - pA
     h = np.hypot(d[:, 0], d[:, 1])
     v = np.maximum(d[:, 2], 0.0)
     if asm.depth is None:
         seabed = np.zeros(h.shape, bool)
     else:
         seabed = pA[:, 2] <= -asm.depth + _seabed_tol(asm)
-    cat = catenary(h, v, asm.sub_L, asm.sub_EA, asm.sub_w, asm.friction, seabed)
+    cat = catenaries(h, v, asm.sub_L, asm.sub_EA, asm.sub_w, asm.friction, seabed, warm)
     tiny = h <= 1e-9 * asm.sub_L
     e = np.where(tiny[:, None], np.array([1.0, 0.0]), d[:, :2] / np.where(tiny, 1.0, h)[:, None])
-    K = np.where(np.isfinite(cat.stiffness), cat.stiffness, 0.0)
-    HF, VF, HA, VA = cat.H_fairlead, cat.V_fairlead, cat.H_anchor, cat.V_anchor
-    fF = np.column_stack([-HF * e[:, 0], -HF * e[:, 1], -VF])
-    fA = np.column_stack([HA * e[:, 0], HA * e[:, 1], VA])
-    kt = np.where(tiny, K[:, 0, 0], HF / np.where(tiny, 1.0, h))
-    grounded = np.isin(cat.regime, _GROUNDED)
-    mu = asm.friction
-    hx = np.where(grounded, np.where(HA > 0, K[:, 0, 0] + mu * K[:, 1, 0], 0.0), K[:, 0, 0])
-    hz = np.where(grounded, np.where(HA > 0, K[:, 0, 1] + mu * K[:, 1, 1], 0.0), K[:, 0, 1])
-    vx = np.where(grounded, 0.0, K[:, 1, 0])
-    vz = np.where(grounded, 0.0, K[:, 1, 1])
-    kta = np.where(tiny, hx, HA / np.where(tiny, 1.0, h))
-    DF = -_block(K[:, 0, 0], K[:, 0, 1], K[:, 1, 0], K[:, 1, 1], kt, e)    # d fF / d pF
-    DAF = _block(hx, hz, vx, vz, kta, e)                                    # d fA / d pF
-    return cat, anchor_is_a, fA, fF, DF, DAF, e
-
-
-def _block(kxx, kxz, kzx, kzz, kt, e):
-    n = e.shape[0]
-    out = np.zeros((n, 3, 3))
-    ee = e[:, :, None] * e[:, None, :]
-    out[:, :2, :2] = kxx[:, None, None] * ee + kt[:, None, None] * (np.eye(2) - ee)
-    out[:, :2, 2] = kxz[:, None] * e
-    out[:, 2, :2] = kzx[:, None] * e
-    out[:, 2, 2] = kzz
-    return out
-
-
-def evaluate(asm: Assembly, bd: BodyData, st: State, *, jacobian=True, load_factor=1.0) -> Evaluation:
-    """Residual (net loads on every DOF) and its Jacobian at state ``st``."""
-    nb, nfree = len(asm.free_bodies), asm.free_nodes.size
-    nn = asm.node_kind.size
-    P = node_positions(asm, st.X, st.R, st.P)
-    cat, anchor_is_a, fA, fF, DF, DAF, e = lines(asm, P)
-    a_is = anchor_is_a[:, None]
-    fa = np.where(a_is, fA, fF)
-    fb = np.where(a_is, fF, fA)
-    nf = asm.node_force.copy()
-    np.add.at(nf, asm.sub_a, fa)
-    np.add.at(nf, asm.sub_b, fb)
-    ndof = 6 * nb + 3 * nfree
-    res = np.zeros(ndof)
-    # body terms
-    bnodes = np.flatnonzero(asm.node_kind == BODY)
-    rnode = np.zeros((nn, 3))
-    if bnodes.size:
-        rnode[bnodes] = P[bnodes] - st.X[asm.node_body[bnodes]]
-    rho, g = asm.rho, asm.g
-    own = np.zeros((nb, 6))
-    own_jac = np.zeros((nb, 6, 6))
-    for k in range(nb):
-        sel = bnodes[asm.node_body[bnodes] == k]
-        res[6 * k:6 * k + 3] = nf[sel].sum(0)
-        res[6 * k + 3:6 * k + 6] = np.cross(rnode[sel], nf[sel]).sum(0)
-        R = st.R[k]
-        if bd.khs[k] is None:
-            W = np.array([0.0, 0.0, -bd.mass[k] * g])
-            B = np.array([0.0, 0.0, rho * g * bd.volume[k]])
-            rg, rb = R @ bd.rcg[k], R @ bd.rcb[k]
-            a = R[:, 2]
-            Pm = rho * g * np.array([[0.0, bd.iwp[k, 0], 0.0], [-bd.iwp[k, 1], 0.0, 0.0], [0.0, 0.0, 0.0]])
-            own[k, :3] = W + B
-            own[k, 2] -= rho * g * bd.awp[k] * (st.X[k, 2] - bd.z0[k])
-            own[k, 3:] = np.cross(rg, W) + np.cross(rb, B) + Pm @ a
-            own_jac[k, 2, 2] = -rho * g * bd.awp[k]
-            own_jac[k, 3:, 3:] = skew(W) @ skew(rg) + skew(B) @ skew(rb) - Pm @ skew(a)
-        else:
-            from ._stat_model import euler, euler_rate_map
-            ang = euler(R)
-            dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
-            own[k] = bd.f0[k] - bd.khs[k] @ dq
-            M = np.eye(6)
-            M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
-            own_jac[k] = -bd.khs[k] @ M
-        res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
-    for j, n in enumerate(asm.free_nodes):
-        res[6 * nb + 3 * j:6 * nb + 3 * j + 3] = nf[n]
-    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)),
-                float(np.abs(asm.node_force).max(initial=0.0)), float(np.abs(own).max(initial=0.0)) if nb else 0.0,
-                float(np.abs(bd.external).max(initial=0.0)) if nb else 0.0)
-    jac = jac_lines = None
-    if jacobian:
-        # node-node derivative of the line forces (3nn x 3nn)
-        D = np.zeros((nn, 3, nn, 3))
-        iA = np.where(anchor_is_a, asm.sub_a, asm.sub_b)
-        iF = np.where(anchor_is_a, asm.sub_b, asm.sub_a)
-        np.add.at(D, (iF, slice(None), iF), DF)
-        np.add.at(D, (iF, slice(None), iA), -DF)
-        np.add.at(D, (iA, slice(None), iF), DAF)
-        np.add.at(D, (iA, slice(None), iA), -DAF)
-        D = D.reshape(3 * nn, 3 * nn)
-        Bm = np.zeros((3 * nn, ndof))
-        for n in bnodes:
-            k = asm.node_body[n]
-            Bm[3 * n:3 * n + 3, 6 * k:6 * k + 3] = np.eye(3)
-            Bm[3 * n:3 * n + 3, 6 * k + 3:6 * k + 6] = -skew(rnode[n])
-        for j, n in enumerate(asm.free_nodes):
-            Bm[3 * n:3 * n + 3, 6 * nb + 3 * j:6 * nb + 3 * j + 3] = np.eye(3)
-        jac_lines = Bm.T @ D @ Bm
-        for n in bnodes:
-            k = asm.node_body[n]
-            jac_lines[6 * k + 3:6 * k + 6, 6 * k + 3:6 * k + 6] += skew(nf[n]) @ skew(rnode[n])
-        jac = jac_lines.copy()
-        for k in range(nb):
-            jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
-    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale)
+    return cat, anchor_is_a, e, tiny
 
 
 def hydrostatic_matrix(asm: Assembly, bd: BodyData, st: State) -> np.ndarray:

@@ -152,34 +152,47 @@ def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = N
                    AWP=b.waterplane_area, rM=rM, f6Ext=f6)
         body_id[len(body_id)] = len(ms.bodyList)
     node_pt = {}
-    # the constant force on a node is weight - buoyancy + external; give MoorPy the same as a mass
-    # and volume (weights) and fExt (externals of system points)
-    pnames = {v: k for k, v in asm.point_node.items()}
+    # point loads, rebuilt from the input (not from seacable's assembled node forces, so that an
+    # error there shows): system points' mass, volume, force; attachments' mass and volume
+    mass = np.zeros(asm.node_kind.size)
+    vol = np.zeros(asm.node_kind.size)
+    fext = np.zeros((asm.node_kind.size, 3))
+    for pname, n in asm.point_node.items():
+        p = system.points[pname]
+        mass[n], vol[n], fext[n] = p.mass, p.volume, p.external_force
+    seg_of = []
+    for il, lname in enumerate(asm.line_names):
+        subs = range(asm.line_first[il], asm.line_last[il] + 1)
+        nodes = [asm.sub_a[subs[0]]] + [asm.sub_b[k] for k in subs]
+        arcs = [asm.sub_s0[k] for k in subs] + [system.lines[lname].line.length]
+        line = system.lines[lname].line
+        for att in line.attachments:
+            n = nodes[int(np.argmin(np.abs(np.array(arcs) - att.s)))]
+            if att.weight_in_water is not None:
+                fext[n, 2] -= att.weight_in_water
+            else:
+                mass[n] += att.mass
+                vol[n] += att.volume
+        ends = line.segment_ends
+        for k in subs:
+            mid = asm.sub_s0[k] + 0.5 * asm.sub_L[k]
+            seg_of.append(line.segments[next(j for j in range(len(line.segments)) if mid <= ends[j + 1])])
     for n in range(asm.node_kind.size):
-        f = asm.node_force[n]
-        if n in pnames:
-            p = system.points[pnames[n]]
-            m, v, fext = p.mass, p.volume, np.asarray(p.external_force, float)
-            extra = f - (np.array([0.0, 0.0, -(m - env.water_density * v) * env.gravity]) + fext)
-            fext = fext + extra          # attachments at the line ends
-        else:
-            m, v, fext = 0.0, 0.0, f.copy()
-            w = -f[2]
-            if w > 0:
-                m, fext = w / env.gravity, np.array([f[0], f[1], 0.0])
-            elif w < 0:
-                v, fext = -w / (env.water_density * env.gravity), np.array([f[0], f[1], 0.0])
         if asm.node_kind[n] == BODY:
-            ms.addPoint(1, asm.node_rel[n], m=m, v=v, fExt=fext, body=body_id[asm.node_body[n]])
+            ms.addPoint(1, asm.node_rel[n], m=mass[n], v=vol[n], fExt=fext[n], body=body_id[asm.node_body[n]])
         else:
             r = asm.node_pos0[n] if start is None or asm.node_kind[n] == FIXED else start._node_position[n]
-            ms.addPoint(1 if asm.node_kind[n] == FIXED else 0, np.array(r, float), m=m, v=v, fExt=fext)
+            ms.addPoint(1 if asm.node_kind[n] == FIXED else 0, np.array(r, float), m=mass[n], v=vol[n],
+                        fExt=fext[n])
         node_pt[n] = len(ms.pointList)
     for k in range(asm.sub_a.size):
         name = f"t{k}"
-        mass = asm.sub_w[k] / env.gravity
-        # MoorPy recomputes w = (m - rho pi d^2/4) g: give d_vol = 0 and the wet mass
-        ms.setLineType(dnommm=0.0, name=name, mass=mass, d_vol=0.0, EA=float(asm.sub_EA[k]))
+        lt = seg_of[k].line_type
+        if lt.weight_in_water is None:      # MoorPy: w = (m - rho pi d^2 / 4) g
+            ms.setLineType(dnommm=0.0, name=name, mass=lt.mass_per_length, d_vol=lt.diameter, EA=lt.axial_stiffness)
+        else:
+            ms.setLineType(dnommm=0.0, name=name, mass=lt.weight_in_water / env.gravity, d_vol=0.0,
+                           EA=lt.axial_stiffness)
         ms.addLine(float(asm.sub_L[k]), name, pointA=node_pt[asm.sub_a[k]], pointB=node_pt[asm.sub_b[k]])
     ms.initialize()
     return ms, node_pt

@@ -45,7 +45,7 @@ def euler(R: np.ndarray) -> np.ndarray:
 
 def euler_rate_map(angles) -> np.ndarray:
     """T with omega = T d(roll, pitch, yaw)/dt (omega in global axes) for R = Rz Ry Rx."""
-    r, p, y = (float(a) for a in angles)
+    _r, p, y = (float(a) for a in angles)
     cy, sy, cp, sp = math.cos(y), math.sin(y), math.cos(p), math.sin(p)
     return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
@@ -88,6 +88,7 @@ class Assembly:
     line_first: np.ndarray       # (nl,) first sub-line of each line
     line_last: np.ndarray        # (nl,) last sub-line
     free_nodes: np.ndarray       # indices of FREE nodes (each 3 DOF after the bodies' 6)
+    node_dof: np.ndarray         # (nn,) first DOF of the node's body (BODY) or of the node (FREE), else -1
 
     @property
     def n_dof(self) -> int:
@@ -207,7 +208,10 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
                    node_label=label, point_node=point_node,
                    **{f"sub_{k}": np.array(v, int if k in ("a", "b", "line") else float) for k, v in sub.items()},
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),
-                   free_nodes=np.flatnonzero(kind == FREE))
+                   free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1))
+    nb = len(free_bodies)
+    asm.node_dof[kind == BODY] = 6 * asm.node_body[kind == BODY]
+    asm.node_dof[asm.free_nodes] = 6 * nb + 3 * np.arange(asm.free_nodes.size)
     _check_depths(asm, system)
     return asm
 

@@ -26,7 +26,7 @@ from pydantic import Field, field_validator, model_validator
 from .._model import Model, quantity, suggest
 from ..line import Line
 
-__all__ = ["SystemPoint", "Body", "SystemLine", "MooringSystem"]
+__all__ = ["Body", "MooringSystem", "SystemLine", "SystemPoint"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]

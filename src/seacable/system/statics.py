@@ -31,6 +31,15 @@ Model
   it contains the moment of the end forces as their arms rotate). At zero rotation the small
   rotations are the Euler angle increments.
 
+* A free point (clump, junction, attachment) that reaches the seabed rests on it (its height is
+  held while the net force pushes it down, released when it pulls up); it slides without
+  friction. A sub-line between two points on the seabed lies flat.
+* Equilibrium: Newton on all free DOFs (6 per free body: translations and small rotations about
+  the global axes; 3 per free point) with the analytic Jacobian; each sub-line's catenary
+  restarts from its previous end forces (compiled, :mod:`._stat_cat`), steps are limited (5 %
+  of the longest sub-line, 0.2 rad) with backtracking on the residual norm, and when that fails
+  the external loads are ramped up in 5, then 20 steps.
+
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
 checked against dipping into the seabed, nor a buoyant one against rising above the surface.
@@ -45,18 +54,19 @@ References
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..environment import Environment
-from ..errors import ConvergenceError, InputError, NoSolutionError
-from ..statics.catenary import CatenaryResult
-from ._stat_eval import BodyData, Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
+from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
+from ..statics.catenary import CatenaryRegime, CatenaryResult
+from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
-__all__ = ["SystemEquilibrium", "solve_equilibrium", "system_stiffness"]
+__all__ = ["SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"]
 
 _DOF = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 
@@ -245,7 +255,7 @@ class _Problem:
 
     def __init__(self, system, env, external, tol, max_iter):
         self.system, self.env = system, env
-        self.asm = assemble(system, env)
+        self.asm = _assembly(system, env)
         _check_external(system, self.asm, external)
         self.bd = body_data(self.asm, system, external)
         self.tol, self.max_iter = tol, max_iter
@@ -257,6 +267,7 @@ class _Problem:
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
+        self.warm = None          # last end forces of every sub-line: the catenaries' next start
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -284,7 +295,8 @@ class _Problem:
         return 6 * self.nb + 3 * j + 2
 
     def eval(self, st: State, load: float) -> Evaluation:
-        ev = evaluate(self.asm, self.bd, st, load_factor=load)
+        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
+        self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
         zd = self._z_dof(st)
         if zd.size:
             # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
@@ -404,6 +416,22 @@ class _Problem:
         return r
 
 
+_CACHE: dict = {}
+
+
+def _assembly(system: MooringSystem, env: Environment) -> Assembly:
+    """The flattened system, kept for the last few (system, environment) pairs (both frozen)."""
+    key = (id(system), id(env))
+    hit = _CACHE.get(key)
+    if hit is not None and hit[0] is system and hit[1] is env:
+        return hit[2]
+    asm = assemble(system, env)
+    if len(_CACHE) >= 8:
+        _CACHE.pop(next(iter(_CACHE)))
+    _CACHE[key] = (system, env, asm)
+    return asm
+
+
 def _rotvec(th) -> np.ndarray:
     """Rotation matrix of the rotation vector th (Rodrigues)."""
     a = float(np.linalg.norm(th))
@@ -475,6 +503,29 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                     f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
                     "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
                     "point, or remove the load.")
+
+
+def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None) -> None:
+    """Every check :func:`solve_equilibrium` makes before iterating, without solving.
+
+    For a ``prepare_<analysis>`` step (``seacable validate``): what the catenary lines cannot
+    model (current, sloping seabed, no EA), points below the seabed, unknown bodies in
+    ``external``, lines that cannot reach at the starting positions, and bodies that are
+    hydrostatically unstable with no mooring restoring (or loaded in a DOF nothing restores).
+
+    Raises
+    ------
+    InputError, NoSolutionError
+        As :func:`solve_equilibrium`.
+    """
+    prob = _Problem(system, environment, external, 1e-8, 1)
+    st0 = prob.initial_state(None)
+    try:
+        ev0 = prob.eval(st0, 1.0)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
+                              "points where every line can reach.") from None
+    _check_stability(prob, st0, ev0)
 
 
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
@@ -557,7 +608,54 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             "sweeping with `initial=`, start the bodies nearer their equilibrium, check that the lines are "
             "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter.",
             iterations=prob.iterations, residual=err)
-    return _result(prob, st, ev)
+    eq = _result(prob, st, ev)
+    _warn_strain(eq)
+    return eq
+
+
+_STRAIN_WARN = 0.1      # a mooring line stretched by more than 10 % is almost surely an input slip
+
+
+def _warn_strain(eq: SystemEquilibrium) -> None:
+    """Warn about lines stretched beyond 10 %, loaded beyond their breaking load, or sagging into the seabed."""
+    asm = eq._asm
+    T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
+    strain = T / asm.sub_EA
+    k = int(np.argmax(strain))
+    if strain[k] > _STRAIN_WARN:
+        name = asm.line_names[asm.sub_line[k]]
+        warnings.warn(f"lines.{name}: stretched by {100 * strain[k]:.3g} % at equilibrium (tension {T[k]:.4g} N, "
+                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends. Suggested "
+                      "fix: check its length and its end positions (or the load on the bodies).",
+                      SeacableWarning, stacklevel=3)
+    cat = eq._cat
+    depth = eq.environment.depth
+    if depth is not None:
+        # a mid-water sub-line sagging below its lower end (V_A < 0) must not reach the seabed,
+        # which it would cross unnoticed (seabed=False): lowest point of the elastic catenary
+        H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
+        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+        if sag.any():
+            Hs, Vs, ws = H[sag], VA[sag], w[sag]
+            dip = Hs / ws * (np.hypot(1.0, Vs / Hs) - 1.0) + Vs * Vs / (2.0 * ws * asm.sub_EA[sag])
+            low = np.where(eq._anchor_is_a[sag], asm.sub_a[sag], asm.sub_b[sag])
+            bottom = eq._node_position[low, 2] - dip
+            k = int(np.argmin(bottom))
+            if bottom[k] < -depth - 1e-6 * depth:
+                name = asm.line_names[asm.sub_line[np.flatnonzero(sag)[k]]]
+                warnings.warn(f"lines.{name}: a suspended part sags to z = {bottom[k]:.4g} m, below the seabed at "
+                              f"{-depth:g} m; the system statics lets a line lie on the seabed only from a point "
+                              "on it, so this part passes through the seabed. Suggested fix: shorten the line, or "
+                              "add a point on the seabed where it touches down.", SeacableWarning, stacklevel=3)
+    for i, name in enumerate(eq.line_names):
+        line = eq.system.lines[name].line
+        mbl = min((seg.line_type.breaking_load for seg in line.segments
+                   if seg.line_type.breaking_load is not None), default=None)
+        t = max(eq.end_a_tension[i], eq.end_b_tension[i])
+        if mbl is not None and t > mbl:
+            warnings.warn(f"lines.{name}: tension {t:.4g} N exceeds the breaking load {mbl:.4g} N of its weakest "
+                          "segment. Suggested fix: check the load, or the line's breaking_load.",
+                          SeacableWarning, stacklevel=3)
 
 
 def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:

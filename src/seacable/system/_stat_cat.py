@@ -1,0 +1,153 @@
+"""Warm-started elastic catenaries of many sub-lines, compiled (private to :mod:`.statics`).
+
+Inside the system's Newton iteration the sub-lines move a little between evaluations, so each
+catenary restarts from its previous end forces and converges in one or two steps. This kernel
+solves the two generic regimes of :func:`seacable.statics.catenary.catenary` - suspended (any
+shape, seabed or not) and touching down on the seabed with Coulomb friction - with the same
+equations (Irvine 1981 eqs. 2.26-2.27; Jonkman 2007 eqs. 2-35 to 2-42, in the forms of
+``catenary._spans``) and the same tolerance. Every other case (buoyant or weightless lines, a
+zero span, the slack L shape, a failure to converge, a strain above 1) is flagged and left to
+the vectorised public function, which also serves the first evaluation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..statics.catenary import CatenaryResult, _guess, catenary
+
+
+@njit(cache=True, error_model="numpy")
+def _asinh_over(q):
+    if abs(q) < 1e-3:
+        return 1.0 - q * q / 6.0 + 0.075 * q ** 4
+    return math.asinh(q) / q
+
+
+@njit(cache=True, error_model="numpy")
+def _spans(H, V, L, EA, w, mu, seabed):
+    """Fairlead (x, z) and d(x, z)/d(H, V); grounded flag (as catenary._spans, one line)."""
+    if seabed and V < w * L:
+        ag = V / H
+        Rg = math.hypot(1.0, ag)
+        LB = L - V / w
+        xB = LB - H / (mu * w) if mu > 0 else 0.0
+        xBp = max(xB, 0.0)
+        if abs(ag) < 1e-3:
+            am = ag ** 3 / 3.0 - 0.3 * ag ** 5
+        else:
+            am = math.asinh(ag) - ag / math.hypot(1.0, ag)
+        x = LB + V / w * _asinh_over(ag) + H * L / EA - 0.5 * mu * w / EA * (LB * LB - xBp * xBp)
+        z = V / w * ag / (Rg + 1.0) + V * V / (2.0 * w * EA)
+        c = -ag * ag / (Rg * (Rg + 1.0)) / w
+        return x, z, am / w + (L - xBp) / EA, c + mu * (LB - xBp) / EA, c, ag / Rg / w + V / (w * EA), True
+    a = V / H
+    b = (V - w * L) / H
+    Ra = math.hypot(1.0, a)
+    Rb = math.hypot(1.0, b)
+    if a * b > 0:
+        c = (a + b) / (a * Rb + b * Ra)
+        g = _asinh_over((a - b) * c) * c
+    elif a == b:
+        c, g = 1.0, 1.0
+    else:
+        c = (a * Rb - b * Ra) / (a - b)
+        g = (math.asinh(a) - math.asinh(b)) / (a - b)
+    LH = L / H
+    x = L * g + H * L / EA
+    z = L * (a + b) / (Ra + Rb) + (V * L - 0.5 * w * L * L) / EA
+    m = LH * (a + b) / ((Ra + Rb) * Ra * Rb)
+    n = LH * c / (Ra * Rb)
+    return x, z, LH * g - n + L / EA, -m, -m, n + L / EA, False
+
+
+@njit(cache=True, error_model="numpy")
+def solve_warm(x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
+    """Newton from (H0, V0) per sub-line; ``out[k]`` = H, V, HA, VA, LB, K00, K01, K10, K11, regime, ok."""
+    for k in range(x.size):
+        out[k, 10] = 0.0
+        if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
+            continue
+        H, V = H0[k], V0[k]
+        scale = max(L[k], math.hypot(x[k], z[k]))
+        fx, fz, jxh, jxv, jzh, jzv, grd = _spans(H, V, L[k], EA[k], w[k], mu[k], seabed[k])
+        fx -= x[k]
+        fz -= z[k]
+        ok = False
+        polished = False
+        for _it in range(31):
+            if max(abs(fx), abs(fz)) <= tol * scale:
+                if polished:
+                    ok = True
+                    break
+                polished = True          # one more full step: quadratic convergence to round-off
+            det = jxh * jzv - jxv * jzh
+            dH = -(jzv * fx - jxv * fz) / det
+            dV = -(-jzh * fx + jxh * fz) / det
+            if not (math.isfinite(dH) and math.isfinite(dV)):
+                break
+            alpha = 1.0
+            if H + dH < 0.1 * H:
+                alpha = min(alpha, 0.9 * H / -dH)
+            if seabed[k] and V > 0 and V + dV < 0.1 * V:
+                alpha = min(alpha, 0.9 * V / -dV)
+            f2 = fx * fx + fz * fz
+            for _ls in range(30):
+                Ht = max(H + alpha * dH, 1e-15 * (w[k] * L[k] + abs(V + alpha * dV)))
+                Vt = V + alpha * dV
+                gx, gz, a1, a2, a3, a4, g5 = _spans(Ht, Vt, L[k], EA[k], w[k], mu[k], seabed[k])
+                gx -= x[k]
+                gz -= z[k]
+                if (math.isfinite(gx) and math.isfinite(gz) and (polished or gx * gx + gz * gz <= (1 - 1e-4 * alpha) * f2)) \
+                        or _ls == 29:
+                    H, V, fx, fz, jxh, jxv, jzh, jzv, grd = Ht, Vt, gx, gz, a1, a2, a3, a4, g5
+                    break
+                alpha *= 0.5
+        if not ok or H <= 0:
+            continue
+        det = jxh * jzv - jxv * jzh
+        out[k, 0], out[k, 1] = H, V
+        if grd:
+            LB = L[k] - V / w[k]
+            HA = max(H - mu[k] * w[k] * LB, 0.0)
+            out[k, 2], out[k, 3], out[k, 4] = HA, 0.0, LB
+            out[k, 9] = 2.0 if HA > 0 else 3.0
+        else:
+            out[k, 2], out[k, 3], out[k, 4] = H, V - w[k] * L[k], 0.0
+            out[k, 9] = 1.0
+        out[k, 5], out[k, 6] = jzv / det, -jxv / det
+        out[k, 7], out[k, 8] = -jzh / det, jxh / det
+        if max(math.hypot(H, V), math.hypot(out[k, 2], out[k, 3])) > EA[k]:
+            continue                       # strain above 1: the public function explains it
+        out[k, 10] = 1.0
+
+
+def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResult:
+    """All sub-lines at once: warm-started kernel where it applies, the public function elsewhere."""
+    n = h.size
+    mu_arr = np.broadcast_to(np.asarray(mu, float), (n,)).copy()
+    if warm is None:
+        # Peyrot & Goulois's start, as the public function (for w > 0; others fall back)
+        wp = np.where(w > 0, w, 1.0)
+        warm = _guess(h, v, L, EA, wp)
+        warm = (np.where(w > 0, warm[0], 0.0), warm[1])
+    out = np.zeros((n, 11))
+    solve_warm(h, v, L, EA, w, mu_arr, seabed, warm[0], warm[1], tol, out)
+    bad = out[:, 10] == 0.0
+    H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
+    K = out[:, 5:9].reshape(n, 2, 2).copy()
+    reg = out[:, 9].astype(np.int8)
+    iters = 0
+    if bad.any():
+        r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol)
+        H[bad], V[bad], HA[bad], VA[bad], LB[bad] = r.H_fairlead, r.V_fairlead, r.H_anchor, r.V_anchor, \
+            r.grounded_length
+        K[bad] = r.stiffness
+        reg[bad] = r.regime
+        iters = r.iterations
+    return CatenaryResult(H, V, HA, VA, np.hypot(H, V), np.hypot(HA, VA), LB, K, reg, iters, h, v, L, EA, w,
+                          mu_arr, np.asarray(seabed, bool))
+

@@ -1,0 +1,164 @@
+"""Compiled assembly of the system's residual and Jacobian (private to :mod:`._stat_eval`).
+
+The same equations as the module docstring of :mod:`._stat_eval`, in loops: sub-line end
+forces and their 3x3 derivative blocks, node forces, the residual of every DOF and its
+Jacobian ``J = G^T D G`` plus the moment arms' rotation ``[f]x [r]x`` (G maps DOF increments
+to node displacements: identity for a free node, ``[I, -[r]x]`` for a node on a body), and the
+bodies' own weight, buoyancy, heave and waterplane terms.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, error_model="numpy")
+def _skew(v, out):
+    out[0, 0] = 0.0
+    out[0, 1] = -v[2]
+    out[0, 2] = v[1]
+    out[1, 0] = v[2]
+    out[1, 1] = 0.0
+    out[1, 2] = -v[0]
+    out[2, 0] = -v[1]
+    out[2, 1] = v[0]
+    out[2, 2] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def _block(kxx, kxz, kzx, kzz, kt, ex, ey, out):
+    e = (ex, ey)
+    for i in range(2):
+        for j in range(2):
+            ee = e[i] * e[j]
+            out[i, j] = kxx * ee + kt * ((1.0 if i == j else 0.0) - ee)
+        out[i, 2] = kxz * e[i]
+        out[2, i] = kzx * e[i]
+    out[2, 2] = kzz
+
+
+@njit(cache=True, error_model="numpy")
+def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force,
+             node_kind, node_body, node_dof, nb, ndof, fa, fb, nf, res, jac):
+    """Fill fa, fb (ns, 3), nf (nn, 3), res (ndof,) and jac (ndof, ndof) with the line terms."""
+    ns = sub_a.size
+    nn = P.shape[0]
+    nf[:, :] = node_force
+    res[:] = 0.0
+    jac[:, :] = 0.0
+    DF = np.empty((3, 3))
+    DAF = np.empty((3, 3))
+    # node -> DOF maps G (3 x 6 for a body node, 3 x 3 for a free node)
+    r = np.zeros((nn, 3))
+    G = np.zeros((nn, 3, 6))
+    S = np.empty((3, 3))
+    for n in range(nn):
+        if node_kind[n] == 1:
+            k = node_body[n]
+            for i in range(3):
+                r[n, i] = P[n, i] - X[k, i]
+            _skew(r[n], S)
+            for i in range(3):
+                G[n, i, i] = 1.0
+                for j in range(3):
+                    G[n, i, 3 + j] = -S[i, j]
+        elif node_kind[n] == 2:
+            for i in range(3):
+                G[n, i, i] = 1.0
+    for s in range(ns):
+        ex, ey = e[s, 0], e[s, 1]
+        fF = (-HF[s] * ex, -HF[s] * ey, -VF[s])
+        fA = (HA[s] * ex, HA[s] * ey, VA[s])
+        ia, ib = sub_a[s], sub_b[s]
+        iA, iF = (ia, ib) if anchor_is_a[s] else (ib, ia)
+        for i in range(3):
+            if anchor_is_a[s]:
+                fa[s, i], fb[s, i] = fA[i], fF[i]
+            else:
+                fa[s, i], fb[s, i] = fF[i], fA[i]
+            nf[iA, i] += fA[i]
+            nf[iF, i] += fF[i]
+        k00, k01, k10, k11 = K[s, 0, 0], K[s, 0, 1], K[s, 1, 0], K[s, 1, 1]
+        hs = max(np.hypot(P[ib, 0] - P[ia, 0], P[ib, 1] - P[ia, 1]), 1e-300)
+        kt = k00 if tiny[s] else HF[s] / hs
+        _block(k00, k01, k10, k11, kt, ex, ey, DF)
+        for i in range(3):
+            for j in range(3):
+                DF[i, j] = -DF[i, j]
+        if grounded[s]:
+            if HA[s] > 0:
+                hx, hz = k00 + mu * k10, k01 + mu * k11
+            else:
+                hx, hz = 0.0, 0.0
+            vx, vz = 0.0, 0.0
+        else:
+            hx, hz, vx, vz = k00, k01, k10, k11
+        kta = hx if tiny[s] else HA[s] / hs
+        _block(hx, hz, vx, vz, kta, ex, ey, DAF)
+        # node-node blocks: (F,F) DF, (F,A) -DF, (A,F) DAF, (A,A) -DAF, mapped through G
+        for (ni, nj, sgn, D) in ((iF, iF, 1.0, DF), (iF, iA, -1.0, DF), (iA, iF, 1.0, DAF), (iA, iA, -1.0, DAF)):
+            if node_kind[ni] == 0 or node_kind[nj] == 0:
+                continue
+            di, dj = node_dof[ni], node_dof[nj]
+            wi = 6 if node_kind[ni] == 1 else 3
+            wj = 6 if node_kind[nj] == 1 else 3
+            # T = D G_j (3 x wj); jac[di.., dj..] += G_i^T T
+            for b in range(wj):
+                t0 = sgn * (D[0, 0] * G[nj, 0, b] + D[0, 1] * G[nj, 1, b] + D[0, 2] * G[nj, 2, b])
+                t1 = sgn * (D[1, 0] * G[nj, 0, b] + D[1, 1] * G[nj, 1, b] + D[1, 2] * G[nj, 2, b])
+                t2 = sgn * (D[2, 0] * G[nj, 0, b] + D[2, 1] * G[nj, 1, b] + D[2, 2] * G[nj, 2, b])
+                for a in range(wi):
+                    jac[di + a, dj + b] += G[ni, 0, a] * t0 + G[ni, 1, a] * t1 + G[ni, 2, a] * t2
+    # residual and the rotation of the moment arms
+    Sf = np.empty((3, 3))
+    for n in range(nn):
+        d = node_dof[n]
+        if node_kind[n] == 2:
+            for i in range(3):
+                res[d + i] += nf[n, i]
+        elif node_kind[n] == 1:
+            rr = r[n]
+            f = nf[n]
+            res[d] += f[0]
+            res[d + 1] += f[1]
+            res[d + 2] += f[2]
+            res[d + 3] += rr[1] * f[2] - rr[2] * f[1]
+            res[d + 4] += rr[2] * f[0] - rr[0] * f[2]
+            res[d + 5] += rr[0] * f[1] - rr[1] * f[0]
+            _skew(f, Sf)
+            _skew(rr, S)
+            for i in range(3):
+                for j in range(3):
+                    jac[d + 3 + i, d + 3 + j] += Sf[i, 0] * S[0, j] + Sf[i, 1] * S[1, j] + Sf[i, 2] * S[2, j]
+
+
+@njit(cache=True, error_model="numpy")
+def body_terms(R, X, mass, rcg, volume, rcb, awp, iwp, z0, rho, g, own, own_jac):
+    """Weight at R r_CG, buoyancy at R r_CB, heave -rho g A_wp (z - z0), waterplane moment; and -d/dq."""
+    Sw = np.empty((3, 3))
+    Sr = np.empty((3, 3))
+    for k in range(X.shape[0]):
+        W = -mass[k] * g
+        B = rho * g * volume[k]
+        rg = R[k] @ rcg[k]
+        rb = R[k] @ rcb[k]
+        a = R[k][:, 2]
+        own[k, :] = 0.0
+        own_jac[k, :, :] = 0.0
+        own[k, 2] = W + B - rho * g * awp[k] * (X[k, 2] - z0[k])
+        # r x (0, 0, F) = (r_y F, -r_x F, 0)
+        own[k, 3] = rg[1] * W + rb[1] * B + rho * g * iwp[k, 0] * a[1]
+        own[k, 4] = -rg[0] * W - rb[0] * B - rho * g * iwp[k, 1] * a[0]
+        own_jac[k, 2, 2] = -rho * g * awp[k]
+        for (F, rr) in ((W, rg), (B, rb)):
+            _skew(np.array([0.0, 0.0, F]), Sw)
+            _skew(rr, Sr)
+            for i in range(3):
+                for j in range(3):
+                    own_jac[k, 3 + i, 3 + j] += Sw[i, 0] * Sr[0, j] + Sw[i, 1] * Sr[1, j] + Sw[i, 2] * Sr[2, j]
+        # - P [a]x with P = rho g [[0, Ixx, 0], [-Iyy, 0, 0], [0, 0, 0]]
+        _skew(a, Sr)
+        for j in range(3):
+            own_jac[k, 3, 3 + j] -= rho * g * iwp[k, 0] * Sr[1, j]
+            own_jac[k, 4, 3 + j] += rho * g * iwp[k, 1] * Sr[0, j]
