@@ -220,3 +220,17 @@ def test_syrope_line_type():
     assert lt.tension_strain[1] == (2.06897e-03, 1.71768e+05) and len(lt.tension_strain) == 30  # owc.dat
     assert lt.axial_stiffness == 4.38601e+06 / 6.00000e-02  # secant at the table's end
     assert md.syrope_ic == {1: (1.3886e6, 4.339e5)}
+
+
+def test_line_type_tables_are_checked():
+    from seacable.line import LineType
+
+    ok = LineType(diameter=0.2, mass_per_length=50.0, axial_stiffness=1e8, tension_strain=((0.0, 0.0), (0.01, 1e6)),
+                  dynamic_axial_stiffness=(1.5e8, 20.0))
+    assert ok.tension_strain == ((0.0, 0.0), (0.01, 1e6)) and ok.dynamic_axial_stiffness == (1.5e8, 20.0)
+    with pytest.raises(InputError, match=r"tension_strain\[2\] = \(0.005, 2e\+06 N\) must have a larger strain"):
+        LineType(diameter=0.2, mass_per_length=50.0, tension_strain=((0.0, 0.0), (0.01, 1e6), (0.005, 2e6)))
+    with pytest.raises(InputError, match=r"tension_strain must hold at least 2"):
+        LineType(diameter=0.2, mass_per_length=50.0, tension_strain=((0.0, 0.0),))
+    with pytest.raises(InputError, match=r"dynamic_axial_stiffness must be \(EA_Dc >= 0"):
+        LineType(diameter=0.2, mass_per_length=50.0, dynamic_axial_stiffness=(-1.0, 0.0))
