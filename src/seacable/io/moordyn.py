@@ -445,6 +445,7 @@ _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' bef
     ("lines", ("LINES", "LINE LIST", "LINE PROPERTIES")),
     ("failure", ("FAILURE",)),
     ("syrope_ic", ("SYROPE IC",)),
+    ("syrope_wc", ("SYROPE WORKING CURVES",)),
     ("control", ("CONTROL",)),
     ("external_loads", ("EXTERNAL LOADS",)),
     ("options", ("OPTIONS",)),
@@ -477,6 +478,7 @@ class _Reader:
         self.label = label
         self.folder = folder  # where files named in the deck (nonlinear tables) are looked up
         self.v1_counts = False
+        self.syrope_types: dict[str, int] = {}  # Syrope line types and their line
         self.notes: list[str] = []
         self.option_lines: dict[str, int] = {}
 
@@ -666,11 +668,16 @@ def _syrope(rd, lineno, type_name, token):
         raise rd.error(lineno, f"line type {type_name!r} names the Syrope file {token!r}, which is not a file"
                                f"{'' if rd.folder is None else f' (looked for {rd.folder / token})'}. Suggested fix: "
                                "put it next to the deck and read the deck from its file.")
-    values = {}
+    values, numeric = {}, 0
     for line in (rd.folder / token).read_text(errors="replace").splitlines():
         tokens = _strip_comment(line).split()
         if len(tokens) >= 2:
             values[tokens[1].upper()] = tokens[0]
+            numeric += _as_float(tokens[0]) is not None and _as_float(tokens[1]) is not None
+    if "OWC" not in values and numeric >= 2:
+        # the other MoorDyn Syrope syntax: the file is the original working curve itself, and the working
+        # curve comes from the SYROPE WORKING CURVES section (filled in by read_moordyn)
+        return None, token, _tension_strain_table(rd, lineno, type_name, token)
     missing = [k for k in ("OWC", "WCTYPE", "K1", "K2") if k not in values]
     if missing:
         raise InputError(f"{rd.folder / token}: the Syrope file must give OWC, WCType, k1 and k2 as 'value key' "
@@ -756,6 +763,7 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
             dynamic = tuple(rd.number(lineno, v, f"line type {name!r} Syrope {c}", u)
                             for v, c, u in zip(parts[1:], ("EA_Dc", "EA_D_Lm"), ("N", "-")))
             syrope, table_file, table = _syrope(rd, lineno, name, parts[0])
+            rd.syrope_types[name] = lineno
             e_last, t_last = table[-1]
             ea = t_last / e_last
         elif "|" in t[3]:  # viscoelastic (MoorDyn v2): EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm
@@ -1417,6 +1425,22 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
     loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
              if "external_loads" in sections else [])
+    if "syrope_wc" in sections:
+        for lineno, t in _table(rd, sections["syrope_wc"])[1]:
+            rd.columns(lineno, t, 4, "SYROPE WORKING CURVES", "LineType WCType k1 k2")
+            if t[0] not in types:
+                raise rd.error(lineno, f"SYROPE WORKING CURVES names line type {t[0]!r}, which is not in LINE TYPES."
+                                       f"{suggest(t[0], types)} Suggested fix: use a line type's name.")
+            if t[1].upper() not in ("LINEAR", "QUADRATIC", "EXP"):
+                raise rd.error(lineno, f"SYROPE WORKING CURVES WCType must be LINEAR, QUADRATIC or EXP, got {t[1]!r}. "
+                                       "Suggested fix: use one of MoorDyn's Syrope working curves.")
+            k1, k2 = (rd.number(lineno, v, f"SYROPE WORKING CURVES {c}", "-") for v, c in zip(t[2:4], ("k1", "k2")))
+            types[t[0]] = dataclasses.replace(types[t[0]], syrope=(t[1].upper(), k1, k2))
+    for name, lineno in rd.syrope_types.items():
+        if types[name].syrope is None:
+            raise rd.error(lineno, f"line type {name!r} is a Syrope rope whose file is its original working curve, "
+                                   "but no SYROPE WORKING CURVES row gives its working curve. Suggested fix: add a row "
+                                   f"'{name} LINEAR k1 k2' to a SYROPE WORKING CURVES section.")
     syrope_ic = {}
     if "syrope_ic" in sections:
         for lineno, t in _table(rd, sections["syrope_ic"])[1]:

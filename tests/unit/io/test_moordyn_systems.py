@@ -234,3 +234,18 @@ def test_line_type_tables_are_checked():
         LineType(diameter=0.2, mass_per_length=50.0, tension_strain=((0.0, 0.0),))
     with pytest.raises(InputError, match=r"dynamic_axial_stiffness must be \(EA_Dc >= 0"):
         LineType(diameter=0.2, mass_per_length=50.0, dynamic_axial_stiffness=(-1.0, 0.0))
+
+
+def test_syrope_working_curves_section():
+    """The other Syrope syntax: SYROPE:<the OWC table itself>, the working curve in its own section."""
+    md = _quiet(read_moordyn, DECKS / "MoorDyn/tests/Mooring/syrope/exp_wc/line.txt")
+    lt = md.line_types["poly"]
+    assert lt.syrope == ("EXP", 0.2, 1.5) and lt.table_file == "../owc.dat" and len(lt.tension_strain) == 30
+    text = (DECKS / "MoorDyn/tests/Mooring/syrope/exp_wc/line.txt").read_text()
+    broken = DECKS / "MoorDyn/tests/Mooring/syrope/exp_wc" / "_no_wc.txt"
+    try:
+        broken.write_text(text.replace("poly      EXP        0.2     1.5\n", ""))
+        with pytest.raises(InputError, match=r"_no_wc.txt:5: line type 'poly' is a Syrope rope .* no SYROPE WORKING"):
+            _quiet(read_moordyn, broken)
+    finally:
+        broken.unlink()

@@ -30,6 +30,8 @@ NOTES = {  # what the table cannot see: the test that checks the deck instead, o
     "r-test/modules/moordyn/md_lineFail/moordyn.dat": "a free rod has no stiffness in spin about its own axis",
     "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat": "all lines end at one body point: no roll restoring",
     "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "turbine positions are in the FAST.Farm input",
+    "MoorDyn/tests/Mooring/BeamSimplySupported.txt": "a taut EI beam in air (z = +10 m): no reference (MoorPy NaN, "
+                                                     "MoorDyn's IC not converged); seacable's catenary has no EI",
 }
 
 
@@ -67,7 +69,10 @@ def main():
         agree = []
         if eq is not None:
             mp = r.get("moorpy", {})
-            if "lines" in mp:
+            finite = "lines" in mp and all(np.isfinite(v) for ln in mp["lines"].values() for v in ln.values())
+            if "lines" in mp and not finite:
+                cells[3] = "NaN (MoorPy)"
+            elif "lines" in mp:
                 d = [abs(ours - mp["lines"][str(ln.id)][f"end_{e}_tension"]) /
                      max(abs(mp["lines"][str(ln.id)][f"end_{e}_tension"]), 1.0)
                      for k, ln in enumerate(md.lines) for e, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k]))]
