@@ -47,6 +47,8 @@ NOT_A_SYSTEM = {
     "MoorDyn/tests/Mooring/body_tests/rotatingBody.txt": "option g = 0 switches gravity off",
     "MoorDyn/tests/Mooring/rotations/nwu.txt": "option g = 0 switches gravity off",
     "MoorDyn/tests/Mooring/syrope/exp_wc/line.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/quadratic_wc/line.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/slow_loading.txt": "option g = 0 switches gravity off",
     "MoorDyn/tests/Mooring/rod_tests/AddedMass.txt": "the deck has no lines",
 }
 # Decks that convert but whose statics seacable does not solve (yet), and why.
