@@ -54,6 +54,15 @@ class LineType(Model):
         Minimum breaking load, ``None`` if unknown. [N]
     name
         A label used in plots and messages.
+    tension_strain
+        A nonlinear axial law, ``(strain, tension)`` pairs from strain 0 with increasing strain
+        and non-decreasing tension (a MoorDyn EA table); ``axial_stiffness`` is then a secant EA
+        for models that take a constant one. ``None`` for a linear line. [-, N]
+    dynamic_axial_stiffness
+        Viscoelastic (synthetic rope) dynamic stiffness ``EA_d = EA_Dc + EA_D_Lm * mean tension``
+        as ``(EA_Dc, EA_D_Lm)`` (MoorDyn v2's ``EA_s|EA_d`` gives ``(EA_d, 0)``);
+        ``axial_stiffness`` is the static EA_s that the statics use. ``None`` for an elastic line.
+        [N, -]
     """
 
     diameter: quantity("m", gt=0, fix="give the outer diameter in metres, e.g. 0.035.") = Field(
@@ -72,6 +81,36 @@ class LineType(Model):
     added_mass_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential added-mass coefficient. [-]")
     breaking_load: quantity("N", gt=0) | None = Field(None, description="Minimum breaking load. [N]")
     name: str | None = Field(None, description="Label used in plots and messages.")
+    tension_strain: tuple[tuple[float, float], ...] | None = Field(
+        None, description="Nonlinear axial law: (strain [-], tension [N]) pairs, from strain 0.")
+    dynamic_axial_stiffness: tuple[float, float] | None = Field(
+        None, description="Viscoelastic dynamic stiffness (EA_Dc [N], EA_D_Lm [-]); statics use axial_stiffness.")
+
+    @field_validator("tension_strain")
+    @classmethod
+    def _check_table(cls, table):
+        if table is None:
+            return table
+        if len(table) < 2:
+            raise ValueError(f"tension_strain must hold at least 2 (strain, tension) pairs, got {len(table)}. "
+                             "Suggested fix: give the curve from strain 0 up to the largest strain expected.")
+        for k, (e, t) in enumerate(table):
+            if not (math.isfinite(e) and math.isfinite(t)) or e < 0 or t < 0:
+                raise ValueError(f"tension_strain[{k}] must be finite strain >= 0 [-] and tension >= 0 [N], got "
+                                 f"({e}, {t}). Suggested fix: give strains as fractions (0.01 = 1 %) and tensions in N.")
+            if k and (e <= table[k - 1][0] or t < table[k - 1][1]):
+                raise ValueError(f"tension_strain[{k}] = ({e:g}, {t:g} N) must have a larger strain and no smaller "
+                                 f"tension than the pair before, ({table[k - 1][0]:g}, {table[k - 1][1]:g} N). "
+                                 "Suggested fix: sort the pairs by strain; softening curves are not supported.")
+        return table
+
+    @field_validator("dynamic_axial_stiffness")
+    @classmethod
+    def _check_dynamic(cls, value):
+        if value is not None and not all(math.isfinite(v) and v >= 0 for v in value):
+            raise ValueError(f"dynamic_axial_stiffness must be (EA_Dc >= 0 [N], EA_D_Lm >= 0 [-]), got {value}. "
+                             "Suggested fix: give the dynamic stiffness at zero mean load and its slope.")
+        return value
 
     @model_validator(mode="after")
     def _check_weight(self) -> "LineType":

@@ -1,10 +1,13 @@
-"""Read MoorDyn input files (v2, and v1 ``CONNECTION``/``NODE PROPERTIES`` files) into plain records.
+"""Read MoorDyn input files (v2, v1 and MoorDyn-F layouts) into plain records, and turn them into a system.
 
-seacable reads the mooring *lines and points* of a MoorDyn file: the line types, the points
-(anchors, fairleads, free connection points with clump masses or buoys), the lines between
-them, the options and the output channel names. Bodies, rods, failures and other sections are
-refused with an :class:`~seacable.errors.InputError` when they have rows, so that a file is
-never half read in silence.
+seacable reads every section of a MoorDyn deck: line types (constant, viscoelastic ``EA_s|EA_d``,
+nonlinear strain-tension tables, Syrope ropes; bending stiffness EI kept), rod types, bodies, rods,
+points (fixed, free, coupled, on a body, on a FAST.Farm turbine), lines (ends at points or rod ends),
+failures, MoorDyn-F external loads, options and outputs. :func:`moordyn_system` turns the deck into a
+:class:`~seacable.system.model.MooringSystem` and its environment for the system analyses; decks with
+lines and points only also run as a line network (:mod:`seacable.mooring.moordyn`). What cannot be
+read (MoorDyn-F's CONTROL section, a malformed row) is refused with an :class:`~seacable.errors.InputError`
+naming the file and line, so that a file is never half read in silence.
 
 File format (as MoorDyn-C reads it: ``MoorDyn::ReadInFile``, ``findStartOfSection``,
 ``readLineProps`` and ``readOptionsLine`` in ``source/MoorDyn2.cpp`` of FloatingArrayDesign/MoorDyn,
@@ -26,16 +29,27 @@ v2.0.0; v1 layout from ``docs/inputs.rst`` of the same repository):
 - The file ends at a header containing ``need this line`` or ``END``, or a line ``END``.
 - LINE TYPES, v2 (10 columns): ``name d m EA BA/-zeta EI Cd Ca CdAx CaAx``; v1 (9 columns):
   ``name d m EA BA/-zeta Can Cat Cdn Cdt`` (no EI; coefficients in another order). The layout
-  is taken from the column-names line (``EI`` present -> v2). EA, BA and EI may be a file name
-  of a nonlinear table in MoorDyn; seacable refuses these.
+  is taken from the column-names line (``EI`` present -> v2). EA may be ``EA_s|EA_d`` or
+  ``EA_s|EA_Dc|EA_D_Lm`` (viscoelastic, with BA ``BA_s|BA_d``), a file of ``strain tension`` rows
+  (read; lines that do not start with two numbers are skipped), or ``SYROPE:file|EA_Dc|EA_D_Lm``
+  (a Syrope settings file naming its original working curve). A BA or EI table is refused.
+- v1 count lines (``3 NLines - number of line objects``) opening a section are read and checked
+  against the rows.
+- ROD TYPES: ``name d m/l Cd Ca CdEnd CaEnd``. RODS: ``ID type attachment Xa Ya Za Xb Yb Zb NumSegs
+  outputs``, attachment Fixed, Pinned, Free, Coupled/Vessel, CoupledPinned, BodyN, BodyNPinned,
+  TurbineN. BODIES: ``ID attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca`` (CG, I, CdA, Ca one
+  value or several separated by '|'), or the early MoorDyn-F layout ``1coupled X0 .. y0 Xcg Ycg Zcg
+  M V IX IY IZ CdA Ca``. FAILURE: ``[ID] point-or-rod-end lines time tension``. EXTERNAL LOADS:
+  ``ID object Fext Blin Bquad [CSys]``. SYROPE IC: ``lines Tmax0 Tmean0``.
 - POINTS: ``ID type X Y Z mass volume CdA Ca``, or 12 columns with ``FX FY FZ`` before ``CdA``.
   Types: ``Fixed``/``Fix``/``Anchor`` -> ``'fixed'``; ``Vessel``/``Ves``/``Coupled``/``Cpld``/
-  ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``.
+  ``Fairlead`` -> ``'vessel'``; ``Free``/``Point``/``Connect``/``Con`` -> ``'free'``; ``BodyN`` ->
+  ``'body'``; ``TurbineN`` -> ``'turbine'``.
 - LINES, v2: ``ID type AttachA AttachB UnstrLen NumSegs outputs``; v1 (``LINE PROPERTIES``
   with ``UnstrLen`` in the 3rd column): ``ID type UnstrLen NumSegs NodeAnch NodeFair flags``.
-  An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``.
-  MoorDyn looks the number up by *position* in the point list; seacable by the ID column, and
-  warns when the two differ (IDs not 1..N in file order). A negative ``UnstrLen`` is, as in
+  An attachment is a point number, optionally prefixed ``C``, ``Con``, ``P`` or ``Point``, or a
+  rod end ``R1A``/``R1B``. MoorDyn looks the number up by *position* in the point list (it never
+  reads the ID column), and so does seacable, with a warning when the IDs are not 1..N in order. A negative ``UnstrLen`` is, as in
   MoorDyn's ``Line::initialize``, a factor on the distance between the two end points.
 
 Physics MoorDyn attaches to these inputs (``source/Line.cpp``, ``Line::initialize`` and
@@ -101,11 +115,14 @@ from pathlib import Path
 import numpy as np
 
 from .. import _limits, _validate
-from .._model import suggest
+from pydantic import ValidationError
+
+from .._model import format_validation_error, suggest
 from ..errors import InputError, SeacableWarning
 
-__all__ = ["MoorDynCase", "MoorDynInput", "MoorDynLine", "MoorDynLineType", "MoorDynPoint", "is_moordyn_file",
-           "load_moordyn_case", "moordyn_axial_damping", "read_moordyn"]
+__all__ = ["MoorDynBody", "MoorDynCase", "MoorDynFailure", "MoorDynInput", "MoorDynLine", "MoorDynLineType",
+           "MoorDynExternalLoad", "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "is_moordyn_file", "load_moordyn_case",
+           "moordyn_axial_damping", "moordyn_system", "read_moordyn"]
 
 
 @dataclass(frozen=True)
@@ -127,11 +144,22 @@ class MoorDynLineType:
     added_mass_normal: float  # Ca [-]
     drag_tangential: float  # CdAx [-]
     added_mass_tangential: float  # CaAx [-]
+    tension_strain: tuple[tuple[float, float], ...] | None = None  # nonlinear EA: (strain [-], tension [N])
+    dynamic_stiffness: tuple[float, ...] | None = None  # viscoelastic: (EA_d,) or (EA_Dc, EA_D_Lm) [N, -]
+    dynamic_damping: float | None = None  # viscoelastic: BA_d [N s]
+    table_file: str | None = None  # the file the nonlinear EA table was read from
+    syrope: tuple[str, float, float] | None = None  # Syrope working curve (WCType, k1, k2); tension_strain is the OWC
 
 
 @dataclass(frozen=True)
 class MoorDynPoint:
-    """One row of a MoorDyn POINTS section; ``attachment`` is ``'fixed'``, ``'vessel'`` or ``'free'``."""
+    """One row of a MoorDyn POINTS section.
+
+    ``attachment`` is ``'fixed'``, ``'vessel'``, ``'free'``, ``'body'`` (``BodyN``: ``position`` is
+    then relative to body N's reference point, in body axes; ``body`` is N) or ``'turbine'``
+    (``TurbineN`` of FAST.Farm: ``position`` relative to turbine N's platform reference point;
+    ``turbine`` is N).
+    """
 
     id: int
     attachment: str
@@ -140,6 +168,100 @@ class MoorDynPoint:
     volume: float  # displaced volume, e.g. a buoy [m^3]
     drag_area: float  # CdA [m^2]
     added_mass_coefficient: float  # Ca [-]
+    body: int | None = None  # N of a 'BodyN' point
+    turbine: int | None = None  # N of a 'TurbineN' point
+
+
+@dataclass(frozen=True)
+class MoorDynRodType:
+    """One row of a MoorDyn ROD TYPES section (SI units)."""
+
+    name: str
+    diameter: float  # [m]
+    mass_per_length: float  # [kg/m]
+    drag_normal: float  # Cd [-]
+    added_mass_normal: float  # Ca [-]
+    drag_end: float  # CdEnd [-]
+    added_mass_end: float  # CaEnd [-]
+
+
+@dataclass(frozen=True)
+class MoorDynBody:
+    """One row of a MoorDyn BODIES section (SI units; angles in radians).
+
+    ``attachment`` is ``'free'``, ``'fixed'``, ``'coupled'`` (MoorDyn's Coupled/Vessel: moved by the
+    coupled code) or ``'turbine'`` (FAST.Farm's TurbineN, ``turbine`` is N). ``pinned`` is True for
+    ``CoupledPinned`` (the reference point follows the vessel, the rotations are free).
+    ``drag_area`` is expanded to six values (MoorDyn: 1 for all, 2 translation|rotation, 3 per axis
+    for both, or 6); ``added_mass_coefficient`` to three.
+    """
+
+    id: int
+    attachment: str
+    position: tuple[float, float, float, float, float, float]  # x, y, z [m], roll, pitch, yaw [rad]
+    mass: float  # [kg]
+    center_of_gravity: tuple[float, float, float]  # body axes [m]
+    inertia: tuple[float, float, float]  # Ixx, Iyy, Izz [kg m^2]
+    volume: float  # [m^3]
+    drag_area: tuple[float, float, float, float, float, float]  # CdA [m^2] (rotational: [m^5])
+    added_mass_coefficient: tuple[float, float, float]  # Ca [-]
+    pinned: bool = False
+    turbine: int | None = None
+
+
+@dataclass(frozen=True)
+class MoorDynRod:
+    """One row of a MoorDyn RODS section.
+
+    ``attachment`` is ``'fixed'``, ``'free'``, ``'coupled'``, ``'turbine'`` or ``'body'``; ``pinned``
+    marks MoorDyn's ``Pinned``, ``CoupledPinned`` and ``BodyNPinned`` (end A held, rotation free).
+    ``end_a``/``end_b`` are global, or relative to body N (``body``) in body axes.
+    """
+
+    id: int
+    rod_type: str
+    attachment: str
+    end_a: tuple[float, float, float]  # [m]
+    end_b: tuple[float, float, float]  # [m]
+    n_segments: int
+    outputs: str
+    pinned: bool = False
+    body: int | None = None
+    turbine: int | None = None
+
+    @property
+    def length(self) -> float:
+        """Distance between the two ends. [m]"""
+        return math.dist(self.end_a, self.end_b)
+
+
+@dataclass(frozen=True)
+class MoorDynFailure:
+    """One row of a MoorDyn FAILURE section: the named lines detach from ``attachment`` (a point
+    ID, or a rod end ``(rod ID, 'A' or 'B')``) at ``time`` or when the tension reaches ``tension``,
+    whichever comes first (a 0 disables that trigger, as in MoorDyn-F)."""
+
+    id: int
+    attachment: int | tuple[int, str]
+    lines: tuple[int, ...]
+    time: float  # [s], 0 = no time trigger
+    tension: float  # [N], 0 = no tension trigger
+
+
+@dataclass(frozen=True)
+class MoorDynExternalLoad:
+    """One row of a MoorDyn-F EXTERNAL LOADS section: a constant force and translational linear and
+    quadratic damping on a body, point or rod (``kind`` ``'body'``, ``'point'`` or ``'rod'``, ``target``
+    its ID). ``frame`` is ``'G'`` (global axes) or ``'L'`` (body axes, bodies only); rods take two damping
+    values (transverse, axial)."""
+
+    id: int
+    kind: str
+    target: int
+    force: tuple[float, float, float]  # [N]
+    linear_damping: tuple[float, ...]  # [N s/m]
+    quadratic_damping: tuple[float, ...]  # [N s^2/m^2]
+    frame: str = "G"
 
 
 @dataclass(frozen=True)
@@ -153,6 +275,8 @@ class MoorDynLine:
     length: float  # unstretched [m]
     n_segments: int
     outputs: str  # MoorDyn's output flags, e.g. 'pt' or '-'
+    rod_a: tuple[int, str] | None = None  # end A on a rod end (rod ID, 'A' or 'B'); point_a is then None
+    rod_b: tuple[int, str] | None = None  # end B on a rod end (rod ID, 'A' or 'B'); point_b is then None
 
 
 _DEPTH = ("WtrDpth", "depth", "WaterDepth")
@@ -208,6 +332,13 @@ class MoorDynInput:
     options: dict[str, float | str]
     outputs: tuple[str, ...]
     notes: tuple[str, ...] = ()
+    rod_types: dict[str, MoorDynRodType] = dataclasses.field(default_factory=dict)
+    bodies: tuple[MoorDynBody, ...] = ()
+    rods: tuple[MoorDynRod, ...] = ()
+    failures: tuple[MoorDynFailure, ...] = ()
+    layout: str = "v2"
+    external_loads: tuple[MoorDynExternalLoad, ...] = ()
+    syrope_ic: dict[int, tuple[float, float]] = dataclasses.field(default_factory=dict)  # line: (Tmax0, Tmean0) [N]  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
 
     water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")
     gravity = _option("gravity", _G, 9.80665, "Gravity ``g``, default 9.80665 (MoorDyn v2.0.0). [m/s^2]")
@@ -238,7 +369,12 @@ class MoorDynInput:
         given = self.given_water_depth
         if given is not None:
             return given
-        deepest = -min(p.position[2] for p in self.points)
+        globals_ = [p.position[2] for p in self.points if p.attachment in ("fixed", "free", "vessel")]
+        globals_ += [z for r in self.rods if r.attachment in ("fixed", "free", "coupled")
+                     for z in (r.end_a[2], r.end_b[2])]
+        if not globals_:
+            return None
+        deepest = -min(globals_)
         return deepest if deepest > 0 else None
 
     @property
@@ -308,13 +444,16 @@ _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' bef
     ("rods", ("RODS", "ROD LIST", "ROD PROPERTIES")),
     ("lines", ("LINES", "LINE LIST", "LINE PROPERTIES")),
     ("failure", ("FAILURE",)),
+    ("syrope_ic", ("SYROPE IC",)),
+    ("syrope_wc", ("SYROPE WORKING CURVES",)),
     ("control", ("CONTROL",)),
     ("external_loads", ("EXTERNAL LOADS",)),
     ("options", ("OPTIONS",)),
     ("outputs", ("OUTPUT",)),
 )
-_UNSUPPORTED = {"rod_types": "ROD TYPES", "bodies": "BODIES", "rods": "RODS", "failure": "FAILURE",
-                "control": "CONTROL", "external_loads": "EXTERNAL LOADS"}
+_UNSUPPORTED = {"control": "CONTROL"}
+_COUNT = re.compile(r"^N[A-Za-z]+$")  # v1 count lines: '3 NLines - number of line objects'
+
 _ATTACH = {"fixed": ("FIXED", "FIX", "ANCHOR"), "vessel": ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD"),
            "free": ("FREE", "POINT", "CONNECT", "CON")}
 _FORTRAN_EXP = re.compile(r"^([+-]?(\d+\.?\d*|\.\d+))[dD]([+-]?\d+)$")
@@ -335,8 +474,11 @@ def _as_float(token: str) -> float | None:
 class _Reader:
     """State of one parse: the source label for messages and the lines of text."""
 
-    def __init__(self, label: str):
+    def __init__(self, label: str, folder: Path | None = None):
         self.label = label
+        self.folder = folder  # where files named in the deck (nonlinear tables) are looked up
+        self.v1_counts = False
+        self.syrope_types: dict[str, int] = {}  # Syrope line types and their line
         self.notes: list[str] = []
         self.option_lines: dict[str, int] = {}
 
@@ -463,6 +605,13 @@ def _split_sections(rd: _Reader, text: str):
 def _table(rd: _Reader, section):
     """Return (column names, [(lineno, tokens)]) of a table section, skipping names and units."""
     _, header_no, header, body = section
+    count = None
+    first = body[0][1].split() if body else []
+    if len(first) >= 2 and _as_float(first[0]) is not None and _COUNT.match(first[1]):
+        # MoorDyn v1 (MoorDyn-F before v2): a count line 'N NTypes' opens the section
+        count = (body[0][0], first[1], first[0])
+        body = body[1:]
+        rd.v1_counts = True
     names = body[0][1].split() if body else []
     rows = []
     for index, (lineno, line) in enumerate(body):
@@ -477,6 +626,13 @@ def _table(rd: _Reader, section):
             continue
         if tokens:
             rows.append((lineno, tokens))
+    if count is not None:
+        lineno, word, token = count
+        value = _as_float(token)
+        if value != len(rows):
+            raise rd.error(lineno, f"{word} must be the number of rows of {header.strip(' -')!r}, got {token!r} "
+                                   f"but the section has {len(rows)} row(s). Suggested fix: write {len(rows)}, or "
+                                   "add the missing rows (MoorDyn v1 reads exactly that many).")
     return names, rows
 
 
@@ -486,11 +642,93 @@ def _coefficient(rd, lineno, type_name, token, column, unit):
         if "|" in token or "." in token or "/" in token or "\\" in token or token[:1].isalpha():
             raise rd.error(lineno, f"line type {type_name!r} column {column} must be a constant in "
                                    f"{unit}, got {token!r}, a nonlinear table (file name or '|' list) "
-                                   "that seacable does not read. Suggested fix: replace it with a "
+                                   "that seacable does not read for this column. Suggested fix: replace it with a "
                                    f"constant {column} (e.g. the secant value at the working tension).")
         raise rd.error(lineno, f"line type {type_name!r} column {column} must be a finite number in "
                                f"{unit}, got {token!r}. Suggested fix: write a plain number in SI units.")
     return value
+
+
+def _bar_values(rd, lineno, type_name, token, column, unit, counts):
+    """The numbers of a MoorDyn '|' list (``EA_s|EA_d``), each checked; ``counts`` the allowed lengths."""
+    parts = token.split("|")
+    if len(parts) not in counts:
+        raise rd.error(lineno, f"line type {type_name!r} column {column} must hold "
+                               f"{' or '.join(str(c) for c in counts)} values separated by '|', got {token!r}. "
+                               f"Suggested fix: write {column} as MoorDyn v2 does, e.g. EA_s|EA_d or "
+                               "EA_s|EA_Dc|EA_D_Lm for the viscoelastic model (docs/inputs.rst of MoorDyn).")
+    return [rd.number(lineno, v, f"line type {type_name!r} {column} value {k + 1} of {token!r}", unit)
+            for k, v in enumerate(parts)]
+
+
+def _syrope(rd, lineno, type_name, token):
+    """A Syrope configuration file (``value key`` lines: OWC table path relative to the deck, WCType, k1,
+    k2): ((WCType, k1, k2), OWC path, OWC table)."""
+    if rd.folder is None or not (rd.folder / token).is_file():
+        raise rd.error(lineno, f"line type {type_name!r} names the Syrope file {token!r}, which is not a file"
+                               f"{'' if rd.folder is None else f' (looked for {rd.folder / token})'}. Suggested fix: "
+                               "put it next to the deck and read the deck from its file.")
+    values, numeric = {}, 0
+    for line in (rd.folder / token).read_text(errors="replace").splitlines():
+        tokens = _strip_comment(line).split()
+        if len(tokens) >= 2:
+            values[tokens[1].upper()] = tokens[0]
+            numeric += _as_float(tokens[0]) is not None and _as_float(tokens[1]) is not None
+    if "OWC" not in values and numeric >= 2:
+        # the other MoorDyn Syrope syntax: the file is the original working curve itself, and the working
+        # curve comes from the SYROPE WORKING CURVES section (filled in by read_moordyn)
+        return None, token, _tension_strain_table(rd, lineno, type_name, token)
+    missing = [k for k in ("OWC", "WCTYPE", "K1", "K2") if k not in values]
+    if missing:
+        raise InputError(f"{rd.folder / token}: the Syrope file must give OWC, WCType, k1 and k2 as 'value key' "
+                         f"lines; {', '.join(missing)} missing. Suggested fix: follow MoorDyn's Syrope input format.")
+    wc = values["WCTYPE"].upper()
+    if wc not in ("LINEAR", "QUADRATIC", "EXP"):
+        raise InputError(f"{rd.folder / token}: WCType must be LINEAR, QUADRATIC or EXP, got {values['WCTYPE']!r}. "
+                         "Suggested fix: use one of MoorDyn's Syrope working curves.")
+    k1, k2 = (rd.number(lineno, values[k], f"line type {type_name!r} Syrope {k.lower()}", "N") for k in ("K1", "K2"))
+    table = _tension_strain_table(rd, lineno, type_name, values["OWC"])
+    return (wc, k1, k2), values["OWC"], table
+
+
+def _tension_strain_table(rd, lineno, type_name, token):
+    """A MoorDyn nonlinear EA: a file of (strain, tension) rows next to the deck, read and checked.
+
+    MoorDyn-C (``getCoefficientOrCurve``) reads two numbers per line and skips lines that do not
+    start with numbers (titles, column names, units); seacable does the same.
+    """
+    if rd.folder is None:
+        raise rd.error(lineno, f"line type {type_name!r} EA names the table file {token!r}, but the deck was "
+                               "given as text, so there is no folder to find it in. Suggested fix: read the "
+                               "deck from its file, next to the table.")
+    path = rd.folder / token
+    if not path.is_file():
+        raise rd.error(lineno, f"line type {type_name!r} EA names the strain-tension table {token!r}, which is "
+                               f"not a file (looked for {path}). Suggested fix: put the table next to the deck, "
+                               "or write a constant EA in N.")
+    rows = []
+    for k, line in enumerate(path.read_text(errors="replace").splitlines(), start=1):
+        tokens = _strip_comment(line).split()
+        if len(tokens) < 2 or _as_float(tokens[0]) is None:
+            continue
+        strain, tension = _as_float(tokens[0]), _as_float(tokens[1])
+        if tension is None:
+            raise InputError(f"{path}:{k}: the tension of a strain-tension row must be a finite number in N, got "
+                             f"{tokens[1]!r}. Suggested fix: write 'strain tension' per line.")
+        rows.append((k, strain, tension))
+    if len(rows) < 2:
+        raise InputError(f"{path}: a strain-tension table needs at least 2 rows of 'strain tension', found "
+                         f"{len(rows)}. Suggested fix: give the curve from strain 0 up to the largest strain "
+                         "expected.")
+    for (k0, e0, t0), (k1, e1, t1) in zip(rows, rows[1:]):
+        if e1 <= e0 or t1 < t0:
+            raise InputError(f"{path}:{k1}: the strain-tension table must have increasing strain and non-decreasing "
+                             f"tension, got ({e1:g}, {t1:g} N) after ({e0:g}, {t0:g} N) at line {k0}. Suggested "
+                             "fix: sort the rows by strain; a softening rope curve is not supported.")
+    if rows[0][1] < 0 or rows[0][2] < 0:
+        raise InputError(f"{path}:{rows[0][0]}: the strain-tension table must start at strain >= 0 and tension "
+                         f">= 0, got ({rows[0][1]:g}, {rows[0][2]:g} N). Suggested fix: start the table at (0, 0).")
+    return tuple((e, t) for _, e, t in rows)
 
 
 def _empty(rd, section, header, row):
@@ -516,8 +754,37 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
                                    "line type its own name.")
         d = rd.number(lineno, t[1], f"line type {name!r} Diam (diameter)", "m")
         m = rd.number(lineno, t[2], f"line type {name!r} MassDen (mass per length)", "kg/m")
-        ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
-        ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
+        table = dynamic = ba_dynamic = table_file = syrope = None
+        if t[3].upper().startswith("SYROPE:"):  # MoorDyn's Syrope polyester model: SYROPE:file|EA_Dc|EA_D_Lm
+            parts = t[3][7:].split("|")
+            if len(parts) != 3:
+                raise rd.error(lineno, f"line type {name!r} EA {t[3]!r} must be SYROPE:<file>|EA_Dc|EA_D_Lm. "
+                                       "Suggested fix: write it as MoorDyn's Syrope documentation does.")
+            dynamic = tuple(rd.number(lineno, v, f"line type {name!r} Syrope {c}", u)
+                            for v, c, u in zip(parts[1:], ("EA_Dc", "EA_D_Lm"), ("N", "-")))
+            syrope, table_file, table = _syrope(rd, lineno, name, parts[0])
+            rd.syrope_types[name] = lineno
+            e_last, t_last = table[-1]
+            ea = t_last / e_last
+        elif "|" in t[3]:  # viscoelastic (MoorDyn v2): EA_s|EA_d or EA_s|EA_Dc|EA_D_Lm
+            ea, *dyn = _bar_values(rd, lineno, name, t[3], "EA", "N", (2, 3))
+            dynamic = tuple(dyn)
+            for label, value in zip(("EA_d" if len(dyn) == 1 else "EA_Dc", "EA_D_Lm"), dyn):
+                rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value,
+                         "N" if label != "EA_D_Lm" else "", "give the dynamic stiffness of the viscoelastic model")
+        elif _as_float(t[3]) is None and not v1 and (t[3][:1].isalpha() or "." in t[3] or "/" in t[3]):
+            table = _tension_strain_table(rd, lineno, name, t[3])
+            table_file = t[3]
+            e_last, t_last = table[-1]
+            ea = t_last / e_last if e_last > 0 else 0.0  # secant EA at the table's end
+        else:
+            ea = _coefficient(rd, lineno, name, t[3], "EA", "N")
+        if "|" in t[4]:  # viscoelastic: BA_s|BA_d (BA_s may be -zeta)
+            ba, ba_dynamic = _bar_values(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)", (2,))
+            rd.check(lineno, _validate.nonnegative, f"line type {name!r} BA_d (dynamic damping)", ba_dynamic,
+                     "N s", "give the dynamic damping in N s (MoorDyn takes no damping ratio here)")
+        else:
+            ba = _coefficient(rd, lineno, name, t[4], "BA/-zeta", "N s (or -zeta)")
         if v1:
             ei = 0.0
             can, cat, cdn, cdt = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
@@ -543,38 +810,39 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
         for label, value in (("Cd", cdn), ("Ca", can), ("CdAx", cdt), ("CaAx", cat)):
             rd.check(lineno, _validate.nonnegative, f"line type {name!r} {label}", value, "",
                      "hydrodynamic coefficients are >= 0")
-        out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat)
+        out[name] = MoorDynLineType(name, d, m, ea, ba, ei, cdn, can, cdt, cat, table, dynamic, ba_dynamic,
+                                    table_file, syrope)
     return out
 
 
-def _attachment(rd, lineno, word, point_id) -> str:
+def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
+    """A POINTS attachment: (kind, N of BodyN/TurbineN or None)."""
     letters = re.match(r"[A-Za-z]*", word).group(0).upper()
     for kind, words in _ATTACH.items():
         if letters in words and not word[len(letters):]:
-            return kind
-    known = [w.title() for ws in _ATTACH.values() for w in ws]
-    if letters in ("BODY", "TURBINE"):
-        why = f"a point on a {letters.lower()} ({word!r}); seacable reads lines and points only"
-    else:
-        why = f"{word!r}, not a point type{suggest(word.title(), known)}"
-    raise rd.error(lineno, f"point {point_id} type must be Fixed, Vessel or Free, got {why}. "
+            return kind, None
+    number = word[len(letters):]
+    if letters in ("BODY", "TURBINE") and number.isdigit() and int(number) >= 1:
+        return letters.lower(), int(number)
+    known = [w.title() for ws in _ATTACH.values() for w in ws] + ["Body1", "Turbine1"]
+    why = f"{word!r}, not a point type{suggest(word.title(), known)}"
+    raise rd.error(lineno, f"point {point_id} type must be Fixed, Vessel, Free, BodyN or TurbineN, got {why}. "
                            "Suggested fix: use Fixed (anchor), Vessel/Coupled (fairlead moved by the "
-                           "vessel) or Free (connection point).")
+                           "vessel), Free (connection point), Body1 (fixed on body 1) or Turbine1 (FAST.Farm).")
 
 
 def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
     _, rows = _table(rd, section)
-    points, where = [], {}
+    points, where, written = [], {}, []
     layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
     if not rows:
         raise _empty(rd, section, "POINTS", "ID type X Y Z mass volume CdA Ca")
     for lineno, t in rows:
         rd.columns(lineno, t, 9, "POINTS", layout)
         pid = _integer(rd, lineno, t[0], "point ID")
-        if pid in where:
-            raise rd.error(lineno, f"point ID {pid} is used twice (first at line {where[pid]}). "
-                                   "Suggested fix: number the points 1, 2, 3, ... once each.")
-        kind = _attachment(rd, lineno, t[1], pid)
+        written.append(pid)
+        pid = len(points) + 1  # MoorDyn-C numbers the points by position and never reads the ID column
+        kind, owner = _attachment(rd, lineno, t[1], pid)
         x, y, z = (rd.number(lineno, t[k], f"point {pid} {c}", "m") for k, c in zip((2, 3, 4), "XYZ"))
         mass = rd.number(lineno, t[5], f"point {pid} Mass", "kg")
         vol = rd.number(lineno, t[6], f"point {pid} Volume", "m^3")
@@ -593,8 +861,14 @@ def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
                                    ("Ca", ca, "")):
             rd.check(lineno, _validate.nonnegative, f"point {pid} {label}", value, unit,
                      "point masses, volumes and coefficients are >= 0")
-        points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca))
+        points.append(MoorDynPoint(pid, kind, (x, y, z), mass, vol, cda, ca, owner if kind == "body" else None,
+                                   owner if kind == "turbine" else None))
         where[pid] = lineno
+    if written != list(range(1, len(written) + 1)):
+        warnings.warn(f"{rd.label}: point IDs {written} are not 1..{len(written)} in file order; MoorDyn numbers the "
+                      "points by their position in the list (it never reads the ID column), and so does seacable: "
+                      "lines attach to points 1..N in file order. Suggested fix: number the points 1, 2, 3, ... in "
+                      "order.", SeacableWarning, stacklevel=4)
     return points, where
 
 
@@ -606,16 +880,23 @@ def _integer(rd, lineno, token, what) -> int:
     return int(value)
 
 
-def _point_ref(rd, lineno, token, points, line_id, end) -> int:
-    """The point ID of a LINES attachment (``end`` names it, e.g. ``'A (AttachA)'``)."""
+def _point_ref(rd, lineno, token, points, line_id, end, rods=None):
+    """The point ID of a LINES attachment (``end`` names it, e.g. ``'A (AttachA)'``), or a rod end
+    ``(rod ID, 'A'|'B')`` for ``R1A``/``Rod1B``."""
     m = re.fullmatch(r"([A-Za-z]*)(\d+)([A-Za-z]*)", token)
     prefix = m.group(1).upper() if m else ""
-    if m and prefix in ("R", "ROD") and m.group(3):
-        raise rd.error(lineno, f"line {line_id} end {end} is attached to rod end {token!r}; seacable "
-                               "reads lines and points only. Suggested fix: attach the line to a point.")
+    if m and prefix in ("R", "ROD") and m.group(3).upper() in ("A", "B"):
+        rid, side = int(m.group(2)), m.group(3).upper()
+        if not rods or rid not in rods:
+            ids = [str(k) for k in (rods or {})]
+            raise rd.error(lineno, f"line {line_id} end {end} is attached to rod end {token!r}, but rod {rid} is "
+                                   f"not in the RODS section (IDs {', '.join(ids) or 'none'}). Suggested fix: add "
+                                   "the rod or correct the ID.")
+        return rid, side
     if not m or m.group(3) or prefix not in ("", "C", "CON", "P", "POINT"):
-        raise rd.error(lineno, f"line {line_id} end {end} must be a point ID (e.g. 1, C1 or Point1), got "
-                               f"{token!r}. Suggested fix: write the ID of a row of the POINTS section.")
+        raise rd.error(lineno, f"line {line_id} end {end} must be a point ID (e.g. 1, C1 or Point1) or a rod end "
+                               f"(R1A, R1B), got {token!r}. Suggested fix: write the ID of a row of the POINTS "
+                               "section.")
     pid = int(m.group(2))
     if pid not in points:
         ids = [str(k) for k in points]
@@ -630,7 +911,18 @@ def _point_ref(rd, lineno, token, points, line_id, end) -> int:
 _VALUES_PER_NODE = 64
 
 
-def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
+def _end_position(points, rods, ref):
+    """Global position of a line end for a negative UnstrLen (None if it is not global)."""
+    if isinstance(ref, tuple):
+        rod = rods[ref[0]]
+        if rod.attachment == "body":
+            return None
+        return rod.end_a if ref[1] == "A" else rod.end_b
+    p = points[ref]
+    return p.position if p.attachment in ("fixed", "free", "vessel") else None
+
+
+def _read_lines(rd, section, types, points, rods=None) -> list[MoorDynLine]:
     names, rows = _table(rd, section)
     v1 = len(names) > 2 and "len" in names[2].lower()
     layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
@@ -651,8 +943,8 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
             raise rd.error(lineno, f"line {lid} LineType must be one of {sorted(types)}, got "
                                    f"{t[1]!r}.{suggest(t[1], types)} Suggested fix: use a name from the "
                                    "LINE TYPES section (names are case-sensitive).")
-        a = _point_ref(rd, lineno, t[cols[0]], points, lid, f"A ({ends[0]})")
-        b = _point_ref(rd, lineno, t[cols[1]], points, lid, f"B ({ends[1]})")
+        a = _point_ref(rd, lineno, t[cols[0]], points, lid, f"A ({ends[0]})", rods)
+        b = _point_ref(rd, lineno, t[cols[1]], points, lid, f"B ({ends[1]})", rods)
         length = rd.number(lineno, t[cols[2]], f"line {lid} UnstrLen (unstretched length)", "m")
         nseg = _integer(rd, lineno, t[cols[3]], f"line {lid} NumSegs (number of segments)")
         rd.check(lineno, _validate.at_least, f"line {lid} NumSegs (number of segments)", nseg, "",
@@ -668,11 +960,239 @@ def _read_lines(rd, section, types, points) -> list[MoorDynLine]:
             raise rd.error(lineno, f"line {lid} AttachA and AttachB are the same point ({a}). Suggested fix: "
                                    "attach the line's two ends to two different points.")
         if length < 0:  # MoorDyn: a negative length is a factor on the end-point distance
-            length = -length * math.dist(points[a].position, points[b].position)
+            pa, pb = _end_position(points, rods, a), _end_position(points, rods, b)
+            if pa is None or pb is None:
+                raise rd.error(lineno, f"line {lid} UnstrLen {t[cols[2]]} is negative (a factor on the distance "
+                                       "between the ends), but an end is on a body, whose global position seacable "
+                                       "does not compute while reading. Suggested fix: give the length in metres.")
+            length = -length * math.dist(pa, pb)
         rd.check(lineno, _validate.positive, f"line {lid} UnstrLen (unstretched length)", length, "m",
                  "give the unstretched length in metres (or -factor times the end-point distance)")
-        out.append(MoorDynLine(lid, t[1], a, b, length, nseg, t[6]))
+        rod_a, rod_b = (a if isinstance(a, tuple) else None), (b if isinstance(b, tuple) else None)
+        out.append(MoorDynLine(lid, t[1], None if rod_a else a, None if rod_b else b, length, nseg, t[6],
+                               rod_a, rod_b))
     return out
+
+
+_BODY_KINDS = {"FREE": ("free", False), "FIXED": ("fixed", False), "FIX": ("fixed", False),
+               "COUPLED": ("coupled", False), "VESSEL": ("coupled", False), "CPLD": ("coupled", False),
+               "VES": ("coupled", False), "COUPLEDPINNED": ("coupled", True), "VESSELPINNED": ("coupled", True),
+               "CPLDPIN": ("coupled", True)}
+_ROD_KINDS = {**_BODY_KINDS, "PINNED": ("free", True), "PIN": ("free", True)}
+
+
+def _bar_list(rd, lineno, token, what, unit, counts):
+    """A value, or several separated by '|' (MoorDyn's CG, I, CdA, Ca columns), each a number >= 0 except CG."""
+    parts = token.split("|")
+    if len(parts) not in counts:
+        raise rd.error(lineno, f"{what} must be {' or '.join(str(c) for c in counts)} value(s) separated by '|' "
+                               f"(no spaces), got {token!r}. Suggested fix: e.g. 0 or 0|0|-10.")
+    return [rd.number(lineno, v, what, unit) for v in parts]
+
+
+def _read_rod_types(rd, section) -> dict[str, MoorDynRodType]:
+    _, rows = _table(rd, section)
+    layout = "TypeName Diam Mass/m Cd Ca CdEnd CaEnd"
+    out: dict[str, MoorDynRodType] = {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 7, "ROD TYPES", layout)
+        name = t[0]
+        if name in out:
+            raise rd.error(lineno, f"rod type {name!r} is defined twice. Suggested fix: give each rod type its own "
+                                   "name.")
+        values = [rd.number(lineno, t[k], f"rod type {name!r} {c}", u) for k, c, u in
+                  zip(range(1, 7), ("Diam", "Mass/m", "Cd", "Ca", "CdEnd", "CaEnd"), ("m", "kg/m", "", "", "", ""))]
+        rd.check(lineno, _validate.positive, f"rod type {name!r} Diam", values[0], "m",
+                 "give the rod's diameter in metres")
+        for label, value, unit in zip(("Mass/m", "Cd", "Ca", "CdEnd", "CaEnd"), values[1:],
+                                      ("kg/m", "", "", "", "")):
+            rd.check(lineno, _validate.nonnegative, f"rod type {name!r} {label}", value, unit,
+                     "rod masses and coefficients are >= 0")
+        out[name] = MoorDynRodType(name, *values)
+    return out
+
+
+def _read_bodies(rd, section) -> tuple[list[MoorDynBody], dict[int, int]]:
+    names, rows = _table(rd, section)
+    layout = "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca"
+    if any(n.lower() == "xcg" for n in names):
+        # the early MoorDyn-F v2 layout (OpenFAST r-test 5MW_OC4): 'BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ
+        # CdA Ca', the ID and attachment written together ('1coupled'): rewritten into today's columns
+        old = "BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ CdA Ca"
+        rewritten = []
+        for lineno, t in rows:
+            rd.columns(lineno, t, 17, "BODIES", old)
+            m = re.fullmatch(r"(\d+)([A-Za-z]\w*)", t[0])
+            if not m:
+                raise rd.error(lineno, f"the body ID and attachment of this layout ({old}) are written together, e.g. "
+                                       f"'1coupled', got {t[0]!r}. Suggested fix: write the ID then the attachment.")
+            rewritten.append((lineno, [m.group(1), m.group(2), *t[1:7], t[10], "|".join(t[7:10]), "|".join(t[12:15]),
+                                       t[11], t[15], t[16]]))
+        rows = rewritten
+    bodies, where = [], {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 14, "BODIES", layout)
+        bid = _integer(rd, lineno, t[0], "body ID")
+        if bid in where:
+            raise rd.error(lineno, f"body ID {bid} is used twice (first at line {where[bid]}). Suggested fix: number "
+                                   "the bodies 1, 2, 3, ... once each.")
+        word = t[1].upper()
+        turbine = None
+        if word in _BODY_KINDS:
+            kind, pinned = _BODY_KINDS[word]
+        elif word.startswith("TURBINE") and word[7:].isdigit():
+            kind, pinned, turbine = "turbine", False, int(word[7:])
+        else:
+            raise rd.error(lineno, f"body {bid} Attachment must be Free, Fixed, Coupled (Vessel), CoupledPinned or "
+                                   f"TurbineN, got {t[1]!r}.{suggest(t[1].title(), ['Free', 'Fixed', 'Coupled'])} "
+                                   "Suggested fix: use one of those words.")
+        x, y, z = (rd.number(lineno, t[k], f"body {bid} {c}0", "m") for k, c in zip((2, 3, 4), "XYZ"))
+        angles = tuple(math.radians(rd.number(lineno, t[k], f"body {bid} {c}", "deg"))
+                       for k, c in zip((5, 6, 7), ("r0", "p0", "y0")))
+        mass = rd.number(lineno, t[8], f"body {bid} Mass", "kg")
+        cg = _bar_list(rd, lineno, t[9], f"body {bid} CG", "m", (1, 3))
+        cg = (0.0, 0.0, cg[0]) if len(cg) == 1 else tuple(cg)  # one value: along the body's z axis
+        inertia = _bar_list(rd, lineno, t[10], f"body {bid} I", "kg m^2", (1, 3))
+        inertia = tuple(inertia * 3) if len(inertia) == 1 else tuple(inertia)
+        volume = rd.number(lineno, t[11], f"body {bid} Volume", "m^3")
+        cda = _bar_list(rd, lineno, t[12], f"body {bid} CdA", "m^2", (1, 2, 3, 6))
+        cda = {1: lambda v: v * 6, 2: lambda v: [v[0]] * 3 + [v[1]] * 3, 3: lambda v: v * 2,
+               6: lambda v: v}[len(cda)](cda)
+        ca = _bar_list(rd, lineno, t[13], f"body {bid} Ca", "-", (1, 3))
+        ca = tuple(ca * 3) if len(ca) == 1 else tuple(ca)
+        for label, value, unit in (("Mass", mass, "kg"), ("Volume", volume, "m^3"),
+                                   *((f"I[{k}]", v, "kg m^2") for k, v in enumerate(inertia)),
+                                   *((f"CdA[{k}]", v, "m^2") for k, v in enumerate(cda)),
+                                   *((f"Ca[{k}]", v, "") for k, v in enumerate(ca))):
+            rd.check(lineno, _validate.nonnegative, f"body {bid} {label}", value, unit,
+                     "body masses, inertias, volumes and coefficients are >= 0")
+        bodies.append(MoorDynBody(bid, kind, (x, y, z, *angles), mass, cg, inertia, volume, tuple(cda), ca,
+                                  pinned, turbine))
+        where[bid] = lineno
+    return bodies, where
+
+
+def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[int, int]]:
+    _, rows = _table(rd, section)
+    layout = "ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs"
+    rods, where = [], {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 11, "RODS", layout)
+        rid = _integer(rd, lineno, t[0], "rod ID")
+        if rid in where:
+            raise rd.error(lineno, f"rod ID {rid} is used twice (first at line {where[rid]}). Suggested fix: number "
+                                   "the rods 1, 2, 3, ... once each.")
+        if t[1] not in rod_types:
+            raise rd.error(lineno, f"rod {rid} RodType must be one of {sorted(rod_types)}, got {t[1]!r}."
+                                   f"{suggest(t[1], rod_types)} Suggested fix: use a name from the ROD TYPES section.")
+        word = t[2].upper()
+        body = turbine = None
+        m = re.fullmatch(r"(BODY|TURBINE)(\d+)(PINNED|PIN)?", word)
+        if word in _ROD_KINDS or re.fullmatch(r"PINNED\d+", word):  # MoorDyn-F's r-test writes 'Pinned1'
+            kind, pinned = _ROD_KINDS.get(word, ("free", True))
+        elif m and m.group(1) == "BODY":
+            kind, pinned, body = "body", m.group(3) is not None, int(m.group(2))
+            if body not in bodies:
+                raise rd.error(lineno, f"rod {rid} is attached to body {body}, which is not in the BODIES section "
+                                       f"(IDs {', '.join(str(b) for b in bodies) or 'none'}). Suggested fix: add the "
+                                       "body or correct the ID.")
+        elif m:
+            kind, pinned, turbine = "turbine", m.group(3) is not None, int(m.group(2))
+        else:
+            raise rd.error(lineno, f"rod {rid} Attachment must be Fixed, Pinned, Free, Coupled (Vessel), "
+                                   f"CoupledPinned, BodyN, BodyNPinned or TurbineN, got {t[2]!r}."
+                                   f"{suggest(t[2].title(), ['Fixed', 'Pinned', 'Free', 'Coupled', 'Body1'])} "
+                                   "Suggested fix: use one of those words.")
+        ends = [rd.number(lineno, t[k], f"rod {rid} {c}", "m") for k, c in
+                zip(range(3, 9), ("Xa", "Ya", "Za", "Xb", "Yb", "Zb"))]
+        nseg = _integer(rd, lineno, t[9], f"rod {rid} NumSegs")
+        rd.check(lineno, _validate.nonnegative, f"rod {rid} NumSegs", nseg, "",
+                 "use 0 (a point-like rod) or more segments")
+        rod = MoorDynRod(rid, t[1], kind, tuple(ends[:3]), tuple(ends[3:]), nseg, t[10], pinned, body, turbine)
+        if rod.length == 0 and nseg > 0:
+            raise rd.error(lineno, f"rod {rid} has its two ends at the same place {tuple(ends[:3])} m but {nseg} "
+                                   "segment(s). Suggested fix: give the rod a length, or NumSegs 0.")
+        rods.append(rod)
+        where[rid] = lineno
+    return rods, where
+
+
+def _read_failures(rd, section, points, rods, lines) -> list[MoorDynFailure]:
+    names, rows = _table(rd, section)
+    out = []
+    line_ids = {ln.id: ln for ln in lines}
+    for index, (lineno, t) in enumerate(rows, start=1):
+        if len(t) >= 5:
+            fid = _integer(rd, lineno, t[0], "failure ID")
+            t = t[1:]
+        else:
+            rd.columns(lineno, t, 4, "FAILURE", "FailureID Point Line(s) FailTime FailTen")
+            fid = index
+        ref = t[0]
+        m = re.fullmatch(r"(?:R|ROD)(\d+)([AB])", ref.upper())
+        if m:
+            where = (int(m.group(1)), m.group(2))
+            if where[0] not in rods:
+                raise rd.error(lineno, f"failure {fid} is at rod end {ref!r}, but there is no rod {where[0]}. "
+                                       "Suggested fix: name a rod end of the RODS section, e.g. R1A.")
+        else:
+            where = _point_ref(rd, lineno, ref, points, f"of failure {fid}", "(Point)")
+        ids = []
+        for token in t[1].split(","):
+            lid = _integer(rd, lineno, token, f"failure {fid} Line(s) entry")
+            if lid not in line_ids:
+                raise rd.error(lineno, f"failure {fid} names line {lid}, which is not in the LINES section. "
+                                       "Suggested fix: list IDs of lines, separated by commas without spaces.")
+            ln = line_ids[lid]
+            at = [ln.point_a, ln.point_b] if isinstance(where, int) else [ln.rod_a, ln.rod_b]
+            if where not in at:
+                raise rd.error(lineno, f"failure {fid}: line {lid} is not attached to {ref} (its ends are "
+                                       f"{_end_name(ln.point_a, ln.rod_a)} and {_end_name(ln.point_b, ln.rod_b)}). "
+                                       "Suggested fix: name the point or rod end the line ends at.")
+            ids.append(lid)
+        time = rd.number(lineno, t[2], f"failure {fid} FailTime", "s")
+        tension = rd.number(lineno, t[3], f"failure {fid} FailTen", "N")
+        rd.check(lineno, _validate.nonnegative, f"failure {fid} FailTime", time, "s", "give a time in s, or 0")
+        rd.check(lineno, _validate.nonnegative, f"failure {fid} FailTen", tension, "N",
+                 "give a tension in N, or 0")
+        if time == 0 and tension == 0:
+            rd.notes.append(f"{rd.label}:{lineno}: failure {fid} has FailTime 0 and FailTen 0: MoorDyn-F then "
+                            "breaks the line(s) at the start.")
+        out.append(MoorDynFailure(fid, where, tuple(ids), time, tension))
+    return out
+
+
+def _read_external_loads(rd, section, points, bodies, rods) -> list[MoorDynExternalLoad]:
+    _, rows = _table(rd, section)
+    out = []
+    for lineno, t in rows:
+        rd.columns(lineno, t, 5, "EXTERNAL LOADS", "ID Object Fext Blin Bquad [CSys]")
+        lid = _integer(rd, lineno, t[0], "external load ID")
+        m = re.fullmatch(r"(BODY|POINT|ROD)(\d+)", t[1].upper())
+        pool = {"BODY": bodies, "POINT": points, "ROD": rods}
+        if not m or int(m.group(2)) not in pool[m.group(1)]:
+            raise rd.error(lineno, f"external load {lid} Object must name a body, point or rod of the deck (e.g. "
+                                   f"Body1, Point3, Rod2), got {t[1]!r}. Suggested fix: use the object's kind and ID.")
+        kind, target = m.group(1).lower(), int(m.group(2))
+        force = _bar_list(rd, lineno, t[2], f"external load {lid} Fext", "N", (3,))
+        damp_counts = (2,) if kind == "rod" else (3,)
+        blin = _bar_list(rd, lineno, t[3], f"external load {lid} Blin", "N s/m", damp_counts)
+        bquad = _bar_list(rd, lineno, t[4], f"external load {lid} Bquad", "N s^2/m^2", damp_counts)
+        for label, values in (("Blin", blin), ("Bquad", bquad)):
+            for v in values:
+                rd.check(lineno, _validate.nonnegative, f"external load {lid} {label}", v, "",
+                         "damping coefficients are >= 0")
+        frame = t[5].upper() if len(t) > 5 else "G"
+        if kind == "body" and frame not in ("G", "L"):
+            raise rd.error(lineno, f"external load {lid} CSys must be G (global) or L (body axes) for a body, got "
+                                   f"{t[5]!r}. Suggested fix: write G or L.")
+        out.append(MoorDynExternalLoad(lid, kind, target, tuple(force), tuple(blin), tuple(bquad),
+                                       frame if kind == "body" else "G"))
+    return out
+
+
+def _end_name(point, rod) -> str:
+    return f"R{rod[0]}{rod[1]}" if rod else f"point {point}"
 
 
 def _read_options(rd, section) -> dict[str, float | str]:
@@ -695,8 +1215,9 @@ def _read_options(rd, section) -> dict[str, float | str]:
 _OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
     **{k.lower(): (_validate.positive, "m", ("give the water depth as a positive number of metres, or remove "
                    "the line (MoorDyn then takes the depth of the deepest point)")) for k in _DEPTH},
-    **{k.lower(): (_validate.positive, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
-    **{k.lower(): (_validate.positive, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
+    # MoorDyn's own tests switch gravity or buoyancy off with 0: read, and refused by the models that need them
+    **{k.lower(): (_validate.nonnegative, "kg/m^3", "give the water density, e.g. 1025") for k in _RHO},
+    **{k.lower(): (_validate.nonnegative, "m/s^2", "give g in m/s^2, e.g. 9.80665") for k in _G},
     **{k.lower(): (_validate.nonnegative, "Pa/m", "give the seabed stiffness per contact area, e.g. 3e6")
        for k in _KBOT},
     **{k.lower(): (_validate.nonnegative, "Pa s/m", "give the seabed damping per contact area, e.g. 3e5")
@@ -713,8 +1234,8 @@ _OPTION_CHECKS = {  # name (lower case): (check, unit, fix)
        for k in ("WaveKin", "Currents")},
     **{k.lower(): (_validate.nonnegative, "s", "give a time in seconds")
        for k in ("dtWave", "waveKin_rampT", "dtIC", "ICdt", "TmaxIC", "ICTmax", "dtOut", "inertialF_rampT")},
-    **{k.lower(): (_validate.positive, "", "give a positive number") for k in ("CdScaleIC", "ICDfac",
-                                                                               "threshIC", "ICthresh")},
+    **{k.lower(): (_validate.positive, "", "give a positive number") for k in ("CdScaleIC", "ICDfac")},
+    **{k.lower(): (_validate.nonnegative, "", "give a number >= 0") for k in ("threshIC", "ICthresh")},
 }
 _WHOLE = {"wavekin", "currents"}
 
@@ -821,7 +1342,8 @@ def _read_outputs(section) -> tuple[str, ...]:
 
 
 def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
-    """Read a MoorDyn v2 (or v1) input file: line types, points, lines, options and outputs.
+    """Read a MoorDyn v2 (or v1) input file: every section (line and rod types, bodies, rods, points, lines,
+    failures, external loads, options, outputs).
 
     Parameters
     ----------
@@ -840,18 +1362,19 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     InputError
         With the file, line number, what was wrong, what was expected and a fix: a missing
         LINE TYPES/POINTS/LINES section; a row with too few columns; a value that is not a
-        number; an unknown line type or point ID; a duplicate ID; a non-positive diameter,
-        mass, EA or length; fewer than one segment, or more than memory allows (see
-        :mod:`seacable._limits`); a line whose two ends are one point; an empty LINE TYPES,
-        POINTS or LINES section; rows in BODIES, RODS, ROD TYPES, FAILURE; a nonlinear (table)
-        EA, BA or EI; a point type other than fixed, vessel or free; a point below a given
-        ``WtrDpth``; an option value out of range or not a number.
+        number; an unknown line type, rod type, point, body or rod ID; a duplicate line,
+        body or rod ID; a non-positive diameter, mass, EA or length; fewer than one segment, or
+        more than memory allows (see :mod:`seacable._limits`); a line whose two ends are one
+        point; an empty LINE TYPES, POINTS or LINES section (without bodies or rods); rows in
+        CONTROL; a strain-tension or Syrope file that is missing or not increasing; a BA or EI
+        table; an unknown point, body or rod attachment; a failure at a point its lines do not
+        end at; a point below a given ``WtrDpth``; an option value out of range or not a number.
 
     Warns
     -----
     SeacableWarning
-        When point IDs are not 1..N in file order (MoorDyn attaches lines by position, seacable
-        by ID), or when a section seacable does not know has rows. Options seacable cannot
+        When point IDs are not 1..N in file order (MoorDyn and seacable number the points by
+        position), or when a section seacable does not know has rows. Options seacable cannot
         honour are not warned here but listed in :attr:`MoorDynInput.notes`, for the model.
 
     References
@@ -859,33 +1382,88 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     .. [1] MoorDyn-C ``source/MoorDyn2.cpp`` (``ReadInFile``), FloatingArrayDesign/MoorDyn.
     """
     text, path, label = _load(path_or_text, name)
-    rd = _Reader(label)
+    rd = _Reader(label, Path(path).parent if path else None)
     title, echo, sections = _split_sections(rd, text)
     for kind, header in _UNSUPPORTED.items():
         if kind in sections:
             _, rows = _table(rd, sections[kind])
             if rows:
-                raise rd.error(rows[0][0], f"the {header} section has {len(rows)} row(s); seacable reads "
-                                           "MoorDyn lines and points only. Suggested fix: remove the "
-                                           f"{header} section, or replace it with points and lines.")
-    for kind, header in (("line_types", "LINE TYPES"), ("points", "POINTS"), ("lines", "LINES")):
-        if kind not in sections:
+                raise rd.error(rows[0][0], f"the {header} section has {len(rows)} row(s); seacable does not read "
+                                           f"MoorDyn-F's {header} (OpenFAST-coupled). Suggested fix: remove the "
+                                           f"{header} section, or give the loads as body external forces in a "
+                                           "seacable system case.")
+    rod_types = _read_rod_types(rd, sections["rod_types"]) if "rod_types" in sections else {}
+    bodies, _ = _read_bodies(rd, sections["bodies"]) if "bodies" in sections else ([], {})
+    body_ids = {b.id: b for b in bodies}
+    rods, _ = _read_rods(rd, sections["rods"], rod_types, body_ids) if "rods" in sections else ([], {})
+    rod_ids = {r.id: r for r in rods}
+    structures = bool(bodies or rods)
+    required = (("line_types", "LINE TYPES"), ("points", "POINTS"), ("lines", "LINES"))
+    for kind, header in required:
+        if kind not in sections and not (structures and (kind != "line_types" or "lines" not in sections)):
             raise rd.error(None, f"the file must have a {header} section (a line of dashes containing "
                                  f"'{header}'), found none. Suggested fix: check that this is a MoorDyn "
                                  "input file and that the section header is spelled as MoorDyn expects.")
-    types = _read_line_types(rd, sections["line_types"])
-    points, point_lines = _read_points(rd, sections["points"])
+    types = _read_line_types(rd, sections["line_types"]) if "line_types" in sections else {}
+    if "points" in sections and (sections["points"][3] or not structures):
+        _, point_rows = _table(rd, sections["points"])
+        if point_rows or not structures:
+            points, point_lines = _read_points(rd, sections["points"])
+        else:
+            points, point_lines = [], {}
+    else:
+        points, point_lines = [], {}
     by_id = {p.id: p for p in points}
-    lines = _read_lines(rd, sections["lines"], types, by_id)
+    for p in points:
+        if p.attachment == "body" and p.body not in body_ids:
+            raise rd.error(point_lines[p.id], f"point {p.id} is on body {p.body}, which is not in the BODIES "
+                                              f"section (IDs {', '.join(str(b) for b in body_ids) or 'none'}). "
+                                              "Suggested fix: add the body or correct the attachment.")
+    lines = (_read_lines(rd, sections["lines"], types, by_id, rod_ids)
+             if "lines" in sections and (sections["lines"][3] or not structures)
+             and (_table(rd, sections["lines"])[1] or not structures) else [])
+    failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
+    loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
+             if "external_loads" in sections else [])
+    if "syrope_wc" in sections:
+        for lineno, t in _table(rd, sections["syrope_wc"])[1]:
+            rd.columns(lineno, t, 4, "SYROPE WORKING CURVES", "LineType WCType k1 k2")
+            if t[0] not in types:
+                raise rd.error(lineno, f"SYROPE WORKING CURVES names line type {t[0]!r}, which is not in LINE TYPES."
+                                       f"{suggest(t[0], types)} Suggested fix: use a line type's name.")
+            if t[1].upper() not in ("LINEAR", "QUADRATIC", "EXP"):
+                raise rd.error(lineno, f"SYROPE WORKING CURVES WCType must be LINEAR, QUADRATIC or EXP, got {t[1]!r}. "
+                                       "Suggested fix: use one of MoorDyn's Syrope working curves.")
+            k1, k2 = (rd.number(lineno, v, f"SYROPE WORKING CURVES {c}", "-") for v, c in zip(t[2:4], ("k1", "k2")))
+            types[t[0]] = dataclasses.replace(types[t[0]], syrope=(t[1].upper(), k1, k2))
+    for name, lineno in rd.syrope_types.items():
+        if types[name].syrope is None:
+            raise rd.error(lineno, f"line type {name!r} is a Syrope rope whose file is its original working curve, "
+                                   "but no SYROPE WORKING CURVES row gives its working curve. Suggested fix: add a row "
+                                   f"'{name} LINEAR k1 k2' to a SYROPE WORKING CURVES section.")
+    syrope_ic = {}
+    if "syrope_ic" in sections:
+        for lineno, t in _table(rd, sections["syrope_ic"])[1]:
+            rd.columns(lineno, t, 3, "SYROPE IC", "Line(s) Tmax0 Tmean0")
+            tmax, tmean = (rd.number(lineno, v, f"SYROPE IC {c}", "N") for v, c in zip(t[1:3], ("Tmax0", "Tmean0")))
+            for token in t[0].split(","):
+                syrope_ic[_integer(rd, lineno, token, "SYROPE IC line")] = (tmax, tmean)
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
     outputs = _read_outputs(sections["outputs"]) if "outputs" in sections else ()
-    result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs)
+    lowered = [n.lower() for n in _table(rd, sections["line_types"])[0]] if "line_types" in sections else []
+    line_names = _table(rd, sections["lines"])[0] if "lines" in sections else []
+    v1 = (rd.v1_counts or ("ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(lowered) == 9))
+          or (len(line_names) > 2 and "len" in line_names[2].lower()))  # v1 LINE PROPERTIES columns
+    result = MoorDynInput(path, "\n".join(title), types, tuple(points), tuple(lines), options, outputs,
+                          rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
+                          layout="v1" if v1 else "v2", external_loads=tuple(loads),
+                          syrope_ic=syrope_ic)
     given = result.given_water_depth
     if given is not None:
         for p in points:
-            if p.position[2] < -given * (1.0 + 1e-9):
+            if p.attachment in ("fixed", "free", "vessel") and p.position[2] < -given * (1.0 + 1e-9):
                 raise rd.error(point_lines[p.id], f"point {p.id} Z must be >= -WtrDpth = {-given:g} m, "
                                                   f"got {p.position[2]:g} m (below the seabed; MoorDyn would "
                                                   f"move the seabed down to it with a warning). Suggested fix: "
@@ -894,13 +1472,13 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
                                                   "depth is then that of the deepest point, as in MoorDyn).")
         source = "WtrDpth"
     else:
-        deepest = min(points, key=lambda p: p.position[2])
-        source = f"no WtrDpth: the depth of the deepest point, point {deepest.id}, as in MoorDyn"
+        globals_ = [p for p in points if p.attachment in ("fixed", "free", "vessel")]
+        if globals_:
+            deepest = min(globals_, key=lambda p: p.position[2])
+            source = f"no WtrDpth: the depth of the deepest point, point {deepest.id}, as in MoorDyn"
+        else:
+            source = "no WtrDpth: the depth of the deepest rod end, as in MoorDyn"
     rd.notes.extend(_option_notes(rd, options, result.water_depth, source))
-    if [p.id for p in points] != list(range(1, len(points) + 1)):
-        warnings.warn(f"{label}: point IDs {[p.id for p in points]} are not 1..{len(points)} in file order; "
-                      "MoorDyn attaches lines to points by their position in the list, seacable by ID, "
-                      "so the two may connect lines differently.", SeacableWarning, stacklevel=2)
     return dataclasses.replace(result, notes=tuple(rd.notes))
 
 
@@ -994,6 +1572,16 @@ class MoorDynCase:
         return dataclasses.replace(self, duration=duration, motion=motion, time_step=time_step,
                                    output_interval=interval)
 
+    @property
+    def has_structures(self) -> bool:
+        """True when the deck has bodies, rods or points on a body or turbine: a system analysis runs it."""
+        md = self.data
+        return bool(md.bodies or md.rods or any(p.attachment in ("body", "turbine") for p in md.points))
+
+    def system(self, *, turbine_positions: dict | None = None):
+        """The deck as ``(MooringSystem, Environment)`` (:func:`moordyn_system`), for the system analyses."""
+        return moordyn_system(self.data, turbine_positions=turbine_positions)
+
     def describe(self) -> str:
         """One line for ``seacable validate``."""
         md = self.data
@@ -1017,3 +1605,327 @@ def load_moordyn_case(path, *, name=None) -> MoorDynCase:
     """
     data = read_moordyn(path)
     return MoorDynCase(data, name=name or Path(path).stem or "moordyn")
+
+
+# --------------------------------------------------------------------------- the deck as a MooringSystem
+
+def _rotation(roll, pitch, yaw) -> np.ndarray:
+    """``Rz(yaw) Ry(pitch) Rx(roll)`` (the system model's convention, MoorDyn's and MoorPy's)."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                              math.sin(yaw))
+    rz = np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1.0]])
+    ry = np.array([[cp, 0, sp], [0, 1.0, 0], [-sp, 0, cp]])
+    rx = np.array([[1.0, 0, 0], [0, cr, -sr], [0, sr, cr]])
+    return rz @ ry @ rx
+
+
+class _Rigid:
+    """Mass, inertia, buoyancy, waterplane and hydrodynamics gathered on one rigid body, in body axes."""
+
+    def __init__(self):
+        self.mass, self.first = 0.0, np.zeros(3)  # sum m, sum m r
+        self.inertia = np.zeros((3, 3))  # about the reference point, body axes
+        self.volume, self.vfirst = 0.0, np.zeros(3)
+        self.awp, self.iwp = 0.0, np.zeros(2)
+        self.added, self.drag = np.zeros(3), np.zeros(3)  # translational, body axes
+
+    def add_mass(self, m, c, inertia_cg):
+        c = np.asarray(c, float)
+        self.mass += m
+        self.first += m * c
+        self.inertia += np.asarray(inertia_cg, float) + m * (c @ c * np.eye(3) - np.outer(c, c))
+
+    def add_volume(self, v, c):
+        self.volume += v
+        self.vfirst += v * np.asarray(c, float)
+
+    def cg(self):
+        return self.first / self.mass if self.mass > 0 else np.zeros(3)
+
+    def cb(self):
+        return self.vfirst / self.volume if self.volume > 0 else np.zeros(3)
+
+    def inertia_cg(self):
+        c = self.cg()
+        return self.inertia - self.mass * (c @ c * np.eye(3) - np.outer(c, c))
+
+
+def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body, ref, R, rho):
+    """Add a rod with ends ``a_body``/``b_body`` (body axes) to a body at global ``ref`` with rotation ``R``.
+
+    Mass ``m L`` at the middle, a slender cylinder's inertia; the displaced volume of the part below
+    z = 0 at this pose, at its centroid (MoorDyn's rods are buoyant over their submerged length);
+    a rod piercing the surface adds its cross-section ``pi d^2 / 4 / |cos(tilt)|`` to the waterplane
+    and its second moments. Added mass ``Ca rho V`` normal to the rod and drag ``rho Cd d L / 2``
+    normal to it go onto the translations (the end terms ``CaEnd``/``CdEnd`` along the axis).
+    """
+    a, b = np.asarray(a_body, float), np.asarray(b_body, float)
+    length = float(np.linalg.norm(b - a))
+    u = (b - a) / length if length > 0 else np.array([0.0, 0.0, 1.0])
+    area = math.pi * rt.diameter**2 / 4
+    m = rt.mass_per_length * length
+    i_ax, i_n = m * rt.diameter**2 / 8, m * (length**2 / 12 + rt.diameter**2 / 16)
+    rigid.add_mass(m, (a + b) / 2, i_n * np.eye(3) + (i_ax - i_n) * np.outer(u, u))
+    ga, gb = ref + R @ a, ref + R @ b
+    za, zb = ga[2], gb[2]
+    if za <= 0 and zb <= 0:
+        frac_lo, frac_hi = 0.0, 1.0
+    elif za > 0 and zb > 0:
+        frac_lo = frac_hi = 0.0
+    else:  # pierces the surface
+        f = za / (za - zb)
+        frac_lo, frac_hi = (f, 1.0) if za > 0 else (0.0, f)
+        cos_tilt = abs((gb - ga)[2]) / length
+        awp = area / max(cos_tilt, 1e-6)
+        cut = a + f * (b - a)
+        rigid.awp += awp
+        rigid.iwp += awp * np.array([cut[1] ** 2, cut[0] ** 2]) + math.pi * rt.diameter**4 / 64
+    sub = (frac_hi - frac_lo) * length
+    if sub > 0:
+        rigid.add_volume(area * sub, a + (frac_lo + frac_hi) / 2 * (b - a))
+        normal = np.eye(3) - np.outer(u, u)
+        rigid.added += np.diag(rt.added_mass_normal * rho * area * sub * normal) + \
+            rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * u**2
+        rigid.drag += np.diag(0.5 * rho * rt.drag_normal * rt.diameter * sub * normal) + \
+            0.5 * rho * rt.drag_end * area * u**2
+
+
+def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
+    """The deck as a :class:`~seacable.system.model.MooringSystem` and its :class:`~seacable.environment.Environment`.
+
+    Mapping (names: ``point<ID>``, ``body<ID>``, ``rod<ID>``, ``turbine<N>``, ``line<ID>``):
+
+    - points: Fixed -> ``fixed``; Free/Connect -> ``free`` (mass, volume, C_D A, added mass
+      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>``; TurbineN -> on the
+      prescribed body ``turbine<N>`` (FAST.Farm places turbine N; the deck does not say where:
+      ``turbine_positions`` ``{N: (x, y, z)}``, default the origin, with a SeacableWarning).
+    - bodies: free/fixed/coupled -> ``free``/``fixed``/``prescribed`` (CoupledPinned: prescribed
+      and ``pinned``). Mass, centre of gravity and inertia as written; MoorDyn's body volume acts
+      at the reference point and bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
+      translations of ``added_mass``; ``rho CdA / 2`` on the diagonal of ``quadratic_damping``.
+    - rods: a rod on body N (``BodyN``, and ``BodyNPinned``, taken as rigidly fixed there: the
+      data model has no joint on a moving body, a SeacableWarning says so) adds its mass,
+      inertia, submerged volume, waterplane and hydrodynamics to ``body<N>``; any other rod
+      becomes its own body ``rod<ID>`` (Fixed -> fixed, Coupled -> prescribed, Free -> free,
+      Pinned -> free and ``pinned``, CoupledPinned -> prescribed and ``pinned``) with its body
+      z axis along the rod from end A (its reference point) to end B. Rod ends a line attaches
+      to (``R1A``) become points ``rod<ID>_a``/``rod<ID>_b`` on that body. Buoyancy is the
+      submerged part at the deck's pose, a surface-piercing rod adds a waterplane.
+    - line types: d, m, EA, EI, Cd, Ca, CdAx, CaAx; a nonlinear EA table goes to
+      ``LineType.tension_strain`` (``axial_stiffness`` is its secant at the table's end; the
+      statics of :mod:`seacable.system.statics` use that constant EA, a SeacableWarning says so);
+      a viscoelastic ``EA_s|EA_d`` to ``axial_stiffness = EA_s`` and ``dynamic_axial_stiffness``.
+      The axial damping BA is not in the data model (a dynamics setting).
+    - environment: WtrDnsty, g, WtrDpth (or the deepest point, as MoorDyn), FrictionCoefficient.
+      MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - ``FAILURE`` rows stay in ``md.failures`` (a dynamics input).
+
+    Raises
+    ------
+    InputError
+        A deck without lines, with g = 0 or water density 0 (MoorDyn test decks that switch
+        gravity or buoyancy off), or one the data model refuses (a body no line ends on).
+    """
+    from ..environment import Environment, Seabed
+    from ..line import Line, LineType
+    from ..system.model import Body, MooringSystem, SystemLine, SystemPoint
+
+    label = md.path or "MoorDyn file"
+    rho, g = md.water_density, md.gravity
+    if rho <= 0 or g <= 0:
+        which = "WtrDnsty" if rho <= 0 else "g"
+        raise InputError(f"{label}: option {which} = {rho if rho <= 0 else g:g} switches "
+                         f"{'buoyancy' if rho <= 0 else 'gravity'} off, which a seacable environment cannot "
+                         "(water density and gravity must be > 0). Suggested fix: give WtrDnsty and g their "
+                         "physical values for a mooring analysis.")
+    if not md.lines:
+        raise InputError(f"{label}: the deck has no lines; a seacable mooring system needs at least one line "
+                         "(MoorDyn runs rods and bodies alone). Suggested fix: add the mooring lines.")
+    turbine_positions = dict(turbine_positions or {})
+    unplaced: list[int] = []
+    bodies_in = {b.id: b for b in md.bodies}
+    rods_in = {r.id: r for r in md.rods}
+    rigid: dict[str, _Rigid] = {}
+    spec: dict[str, dict] = {}
+    points: dict[str, SystemPoint] = {}
+
+    def turbine(n):
+        name = f"turbine{n}"
+        if name not in spec:
+            if n not in turbine_positions:
+                unplaced.append(n)
+            x, y, z = turbine_positions.get(n, (0.0, 0.0, 0.0))
+            spec[name] = dict(kind="prescribed", position=(x, y, z, 0.0, 0.0, 0.0), pinned=False)
+            rigid[name] = _Rigid()
+        return name
+
+    for b in md.bodies:
+        name = f"body{b.id}"
+        kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[b.attachment]
+        position = b.position
+        if b.attachment == "turbine":
+            tx, ty, tz = turbine_positions.get(b.turbine, (0.0, 0.0, 0.0))
+            position = (b.position[0] + tx, b.position[1] + ty, b.position[2] + tz, *b.position[3:])
+        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient)
+        r = _Rigid()
+        r.add_mass(b.mass, b.center_of_gravity, np.diag(b.inertia))
+        r.add_volume(b.volume, (0.0, 0.0, 0.0))  # MoorDyn: the body's buoyancy acts at its reference point
+        rigid[name] = r
+
+    rod_end_points: dict[tuple[int, str], str] = {}
+    pinned_on_body = []
+    for rod in md.rods:
+        rt = md.rod_types[rod.rod_type]
+        if rod.attachment == "body":
+            host = f"body{rod.body}"
+            b = bodies_in[rod.body]
+            ref, R = np.asarray(spec[host]["position"][:3]), _rotation(*spec[host]["position"][3:])
+            _add_rod(rigid[host], rod, rt, rod.end_a, rod.end_b, ref, R, rho)
+            if rod.pinned:
+                pinned_on_body.append(rod.id)
+            for side, end in (("A", rod.end_a), ("B", rod.end_b)):
+                rod_end_points[(rod.id, side)] = (host, end)
+            del b
+            continue
+        name = f"rod{rod.id}"
+        a, bvec = np.asarray(rod.end_a, float), np.asarray(rod.end_b, float)
+        if rod.attachment == "turbine":
+            a = a + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            bvec = bvec + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            turbine(rod.turbine)
+        axis = bvec - a
+        length = float(np.linalg.norm(axis))
+        u = axis / length if length > 0 else np.array([0.0, 0.0, 1.0])
+        pitch, yaw = math.acos(max(-1.0, min(1.0, u[2]))), math.atan2(u[1], u[0])
+        kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[rod.attachment]
+        spec[name] = dict(kind=kind, position=(*a, 0.0, pitch, yaw), pinned=rod.pinned)
+        r = _Rigid()
+        _add_rod(r, rod, rt, (0.0, 0.0, 0.0), (0.0, 0.0, length), a, _rotation(0.0, pitch, yaw), rho)
+        rigid[name] = r
+        rod_end_points[(rod.id, "A")] = (name, (0.0, 0.0, 0.0))
+        rod_end_points[(rod.id, "B")] = (name, (0.0, 0.0, length))
+    for p in md.points:
+        if p.attachment == "turbine":
+            turbine(p.turbine)
+    if unplaced:
+        ns = ", ".join(map(str, sorted(unplaced)))
+        warnings.warn(f"{label}: points or rods are on turbine(s) {ns} (FAST.Farm's TurbineN), whose positions are "
+                      "set in the FAST.Farm input, not in this deck; seacable puts their reference points at the "
+                      f"origin. Suggested fix: give turbine_positions={{{sorted(unplaced)[0]}: (x, y, z), ...}}.",
+                      SeacableWarning, stacklevel=2)
+    free_pinned = sorted(n for n, sp in spec.items() if sp["pinned"] and sp["kind"] == "free")
+    if free_pinned:
+        warnings.warn(f"{label}: {', '.join(free_pinned)} pinned (MoorDyn Pinned: end A held, rotation free) is "
+                      "recorded as Body.pinned; an analysis that does not hold a pinned body's reference point "
+                      "treats it as free.", SeacableWarning, stacklevel=2)
+    if pinned_on_body:
+        warnings.warn(f"{label}: rod(s) {', '.join(map(str, pinned_on_body))} are pinned to a body (BodyNPinned); "
+                      "seacable's system model has no joint on a moving body and fixes them rigidly to it (their "
+                      "own rotation is not free).", SeacableWarning, stacklevel=2)
+
+    for p in md.points:
+        common = dict(mass=p.mass, volume=p.volume, drag_area=p.drag_area,
+                      added_mass=p.added_mass_coefficient * rho * p.volume)
+        if p.attachment == "body":
+            points[f"point{p.id}"] = SystemPoint(kind="body", body=f"body{p.body}", position=p.position, **common)
+        elif p.attachment == "turbine":
+            points[f"point{p.id}"] = SystemPoint(kind="body", body=turbine(p.turbine), position=p.position, **common)
+        else:
+            kind = {"fixed": "fixed", "free": "free", "vessel": "coupled"}[p.attachment]
+            points[f"point{p.id}"] = SystemPoint(kind=kind, position=p.position, **common)
+
+    def end(point_id, rod_end):
+        if rod_end is None:
+            return f"point{point_id}"
+        name = f"rod{rod_end[0]}_{rod_end[1].lower()}"
+        if name not in points:
+            host, where = rod_end_points[rod_end]
+            points[name] = SystemPoint(kind="body", body=host, position=tuple(float(v) for v in where))
+        return name
+
+    types, tabled = {}, []
+    for lt in md.line_types.values():
+        dynamic = None
+        if lt.dynamic_stiffness is not None:
+            dynamic = (lt.dynamic_stiffness[0], lt.dynamic_stiffness[1] if len(lt.dynamic_stiffness) > 1 else 0.0)
+        if lt.tension_strain is not None:
+            tabled.append(lt.name)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SeacableWarning)  # MoorDyn's own Cd values, e.g. chain 2.4+
+            types[lt.name] = LineType(
+                name=lt.name, diameter=lt.diameter, mass_per_length=lt.mass_per_length,
+                axial_stiffness=lt.axial_stiffness, bending_stiffness=lt.bending_stiffness,
+                drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
+                added_mass_normal=lt.added_mass_normal, added_mass_tangential=lt.added_mass_tangential,
+                tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic)
+    if tabled:
+        warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
+                      "kept in LineType.tension_strain, but seacable's system statics use a constant EA, the "
+                      "table's secant at its last point (for a Syrope rope the table is its original working "
+                      "curve; the working curve after the load history of SYROPE IC is not modelled).",
+                      SeacableWarning, stacklevel=2)
+    lines = {}
+    for ln in md.lines:
+        lines[f"line{ln.id}"] = SystemLine(line=Line.single(types[ln.line_type], ln.length),
+                                           end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
+                                           n_elements=ln.n_segments)
+
+    body_force = {name: np.zeros(6) for name in spec}
+    body_lin = {name: np.zeros(6) for name in spec}
+    body_quad = {name: np.zeros(6) for name in spec}
+    for load in md.external_loads:
+        if load.kind == "point":
+            name = f"point{load.target}"
+            p = points[name]
+            points[name] = p.model_copy(update={"external_force": tuple(np.add(p.external_force, load.force))})
+            if any(load.linear_damping) or any(load.quadratic_damping):
+                warnings.warn(f"{label}: external load {load.id} damps point {load.target}; the system model has no "
+                              "damping on points (it is left out).", SeacableWarning, stacklevel=2)
+            continue
+        name = f"body{load.target}" if load.kind == "body" else f"rod{load.target}"
+        if name not in spec:  # a rod merged into its body
+            name = f"body{rods_in[load.target].body}"
+        R = _rotation(*spec[name]["position"][3:])
+        force = np.asarray(load.force, float)
+        if load.frame == "L":  # body axes at the deck's pose; the system model's force is global
+            force = R @ force
+            warnings.warn(f"{label}: external load {load.id} on {name} is in body axes (CSys L); seacable applies it "
+                          "as the constant global force it is at the deck's pose.", SeacableWarning, stacklevel=2)
+        body_force[name][:3] += force
+        lin, quad = load.linear_damping, load.quadratic_damping
+        if len(lin) == 2:  # a rod: transverse and axial, along its axis (body z for a rod body)
+            lin, quad = (lin[0], lin[0], lin[1]), (quad[0], quad[0], quad[1])
+        body_lin[name][:3] += lin
+        body_quad[name][:3] += quad
+
+    bodies = {}
+    for name, s in spec.items():
+        r = rigid[name]
+        drag = body_quad[name].copy()
+        added = np.zeros(6)
+        if "drag" in s:
+            drag += 0.5 * rho * np.asarray(s["drag"])
+            added[:3] += np.asarray(s["ca"]) * rho * r.volume
+        drag[:3] += r.drag
+        added[:3] += r.added
+        inertia = r.inertia_cg()
+        bodies[name] = Body(
+            kind=s["kind"], position=tuple(float(v) for v in s["position"]), mass=r.mass,
+            center_of_gravity=tuple(float(v) for v in r.cg()),
+            inertia=tuple(float(max(v, 0.0)) for v in np.diag(inertia)), volume=r.volume,
+            center_of_buoyancy=tuple(float(v) for v in r.cb()), waterplane_area=r.awp,
+            waterplane_moments=tuple(float(v) for v in r.iwp),
+            added_mass=tuple(tuple(float(v) for v in row) for row in np.diag(added)) if added.any() else None,
+            quadratic_damping=tuple(tuple(float(v) for v in row) for row in np.diag(drag)) if drag.any() else None,
+            linear_damping=(tuple(tuple(float(v) for v in row) for row in np.diag(body_lin[name]))
+                            if body_lin[name].any() else None),
+            external_force=tuple(float(v) for v in body_force[name]), pinned=s["pinned"])
+    try:
+        system = MooringSystem(points=points, bodies=bodies, lines=lines)
+    except ValidationError as exc:  # say which deck
+        raise InputError(f"{label}: the deck does not make a seacable mooring system: "
+                         f"{format_validation_error(exc)}") from None
+    except InputError as exc:
+        raise InputError(f"{label}: the deck does not make a seacable mooring system: {exc}") from None
+    env = Environment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
+    return system, env

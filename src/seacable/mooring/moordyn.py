@@ -9,7 +9,11 @@ The seabed is MoorDyn's: flat at ``WtrDpth`` (without it, at the deepest point, 
 ``kBot`` and ``cBot`` per projected area, friction coefficient ``FrictionCoefficient`` (regularised;
 MoorDyn's own friction law differs in detail). Options seacable cannot honour (waves, currents,
 bathymetry files, ...) are warned by :func:`prepare_moordyn`, each with what seacable does instead.
-Bending stiffness is not modelled: a line type with ``EI > 0`` is run as a truss, with a warning.
+Bending stiffness is not modelled here: a line type with ``EI > 0`` is run as a truss, with a warning
+(the reader keeps EI in the line type, and :func:`seacable.io.moordyn.moordyn_system` passes it on).
+A viscoelastic line runs with its static EA, a nonlinear (table) EA with its secant, each with a
+warning. Decks with bodies, rods or points on a body or turbine are refused here: they run as a
+mooring system (:meth:`seacable.io.moordyn.MoorDynCase.system`).
 """
 
 from __future__ import annotations
@@ -44,6 +48,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     """The :class:`~seacable.mooring.solver.MooringModel` of a MoorDyn input (a path or a parsed file)."""
     if not isinstance(md, MoorDynInput):
         md = read_moordyn(md)
+    _check_network_only(md)
     rho, g = md.water_density, md.gravity
     depth = md.water_depth
     points = {p.id: p for p in md.points}
@@ -93,6 +98,12 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     if bent:
         warnings.warn(f"line type(s) {', '.join(sorted(bent))} have bending stiffness EI > 0; seacable's "
                       "mooring model is a truss and ignores it.", SeacableWarning, stacklevel=2)
+    special = {lt.name: ("viscoelastic: its static EA_s is used" if lt.dynamic_stiffness is not None
+                         else "a nonlinear strain-tension table: its secant EA at the table's end is used")
+               for lt in md.line_types.values() if lt.dynamic_stiffness is not None or lt.tension_strain is not None}
+    for name, why in special.items():
+        warnings.warn(f"line type {name} is {why} (the line network takes a constant EA).", SeacableWarning,
+                      stacklevel=2)
     n_nodes = len(pos)
     extra = n_nodes - n_pts
     P = np.array(props, float)
@@ -185,9 +196,29 @@ def _arc(net: Network):
     return np.r_[0.0, np.cumsum(net.length)]
 
 
+def _check_network_only(md: MoorDynInput) -> None:
+    """Refuse a deck the line network cannot carry: bodies, rods, points on a body or turbine, a line
+    without any line (these run as a mooring system: :meth:`seacable.io.moordyn.MoorDynCase.system`)."""
+    parts = []
+    if md.bodies:
+        parts.append(f"{len(md.bodies)} body(ies)")
+    if md.rods:
+        parts.append(f"{len(md.rods)} rod(s)")
+    on = [p.id for p in md.points if p.attachment in ("body", "turbine")]
+    if on:
+        parts.append(f"points {', '.join(map(str, on))} on a body or turbine")
+    if parts or not md.lines:
+        what = ", ".join(parts) if parts else "no lines"
+        raise InputError(f"{md.path or 'MoorDyn file'}: this deck has {what}; the MoorDyn line network "
+                         "(mooring_static/mooring_dynamic) holds lines and points only. Suggested fix: run it as a "
+                         "mooring system (MoorDynCase.system() gives its MooringSystem and Environment for the "
+                         "system analyses).")
+
+
 def _check_geometry(md: MoorDynInput) -> None:
     """Refuse a Free point without a line (the geometry of the lines is checked with every mooring model:
     :func:`seacable.mooring.checks.check_network`)."""
+    _check_network_only(md)
     attached = {ln.point_a for ln in md.lines} | {ln.point_b for ln in md.lines}
     for p in md.points:
         if p.attachment == "free" and p.id not in attached:

@@ -125,6 +125,10 @@ class Body(Model):
     added_mass, linear_damping, quadratic_damping
         6x6 matrices for the dynamics (about the reference point). [kg, kg m, kg m^2], [N s/m ...],
         [N s^2/m^2 ...]
+    pinned
+        The reference point is tied where ``position`` puts it (free body) or to the motion
+        (prescribed body) by a ball joint: only the three rotations are free (a MoorDyn
+        ``Pinned``/``CoupledPinned`` rod or body).
     """
 
     kind: Literal["free", "fixed", "prescribed"] = Field("free", description="free, fixed or prescribed.")
@@ -143,9 +147,13 @@ class Body(Model):
     added_mass: _MATRIX6 | None = Field(None, description="6x6 added-mass matrix.")
     linear_damping: _MATRIX6 | None = Field(None, description="6x6 linear damping matrix.")
     quadratic_damping: _MATRIX6 | None = Field(None, description="6x6 quadratic damping matrix.")
+    pinned: bool = Field(False, description="Reference point tied by a ball joint; only rotations free.")
 
     @model_validator(mode="after")
     def _check(self):
+        if self.pinned and self.kind == "fixed":
+            raise ValueError("a fixed body cannot be pinned (it has no free rotation). Suggested fix: make it "
+                             "kind 'free' with pinned: true to free its rotations, or drop 'pinned'.")
         for key, unit in (("position", "m and rad"), ("center_of_gravity", "m"), ("center_of_buoyancy", "m"),
                           ("external_force", "N and N m"), ("waterplane_moments", "m^4")):
             _finite(key, getattr(self, key), unit)

@@ -291,8 +291,10 @@ def test_unknown_line_type_and_point(tmp_path):
 
 def test_duplicate_ids():
     _error(_deck(types=TYPE_ROW + "\n" + TYPE_ROW), "line type 'chain' is defined twice")
-    _error(_deck(points=POINT_ROWS + "\n2 Free 0 0 -50 0 0 0 0"),
-           r"point ID 2 is used twice \(first at line 11\)")
+    # MoorDyn numbers points by position and never reads the ID column: a repeated ID is the next point
+    with pytest.warns(SeacableWarning, match=r"point IDs \[1, 2, 2\] are not 1..3 in file order"):
+        data = read_moordyn(_deck(points=POINT_ROWS + "\n2 Free 0 0 -50 0 0 0 0"))
+    assert [p.id for p in data.points] == [1, 2, 3]
     _error(_deck(lines=LINE_ROW + "\n" + LINE_ROW), "line ID 1 is used twice")
     _error(_deck(extra="---- LINES ----\n"), "a second LINES section")
 
@@ -316,24 +318,20 @@ def test_bad_line_type_values(row, match):
     _error(_deck(types=row), match)
 
 
-@pytest.mark.parametrize("token, column", [("poly_EA.dat", "EA"), ("0.0|1e6", "EA")])
-def test_nonlinear_coefficient_tables_are_refused(token, column):
-    row = f"chain 0.1 20 {token} -1 0 1.2 1 0.2 0"
-    msg = _error(_deck(types=row), rf"line type 'chain' column {column} must be a constant")
-    assert "nonlinear table" in msg
+def test_nonlinear_coefficient_tables_need_their_file_or_valid_values():
+    _error(_deck(types="chain 0.1 20 poly_EA.dat -1 0 1.2 1 0.2 0"), r"EA names the table file 'poly_EA.dat'.*as text")
+    _error(_deck(types="chain 0.1 20 0.0|1e6 -1 0 1.2 1 0.2 0"), r"'chain' EA must be > 0 N, got 0 N")
+    _error(_deck(types="chain 0.1 20 1|2|3|4 -1 0 1.2 1 0.2 0"), r"EA must hold 2 or 3 values separated by '\|'")
     _error(_deck(types="chain 0.1 20 1e9 damp.txt 0 1.2 1 0.2 0"), "column BA/-zeta must be a constant")
     _error(_deck(types="chain 0.1 20 1e9 -1 EI_curve.dat 1.2 1 0.2 0"), "column EI must be a constant")
 
 
 @pytest.mark.parametrize("section, header", [
-    ("---- BODIES ----\nID Attachment X0\n(#) (-) (m)\n1 Free 0\n", "BODIES"),
-    ("---- RODS ----\nID RodType Attachment\n(#) (name) (#)\n1 can Body1\n", "RODS"),
-    ("---- ROD TYPES ----\nTypeName Diam\n(name) (m)\ncan 1.0 1 1 1 1 1\n", "ROD TYPES"),
-    ("---- FAILURE ----\nNode Line Time Ten\n(-) (-) (s) (N)\n1 1 10 1e6\n", "FAILURE"),
+    ("---- CONTROL ----\nChannelID Line(s)\n() (,)\n1 1\n", "CONTROL"),
 ])
 def test_unsupported_sections_with_rows(section, header):
     msg = _error(_deck(extra=section),
-                 rf"the {header} section has 1 row\(s\); seacable reads MoorDyn lines and points only")
+                 rf"the {header} section has 1 row\(s\); seacable does not read MoorDyn-F's {header}")
     assert msg.startswith("<MoorDyn text>:")
 
 
@@ -342,12 +340,13 @@ def test_empty_unsupported_section_is_fine():
 
 
 @pytest.mark.parametrize("word, match", [
-    ("Body1", "a point on a body"), ("Turbine2", "a point on a turbine"),
-    ("Fixd", "Did you mean 'Fixed'"), ("Fixed1", "not a point type"),
+    ("Fixd", "Did you mean 'Fixed'"), ("Fixed1", "not a point type"), ("Body0", "not a point type"),
 ])
 def test_bad_point_attachment(word, match):
     msg = _error(_deck(points=f"1 {word} -300 0 -100 0 0 0 0\n2 Vessel 0 0 -5 0 0 0 0"), match)
-    assert "point 1 type must be Fixed, Vessel or Free" in msg
+    assert "point 1 type must be Fixed, Vessel, Free, BodyN or TurbineN" in msg
+    _error(_deck(points="1 Body1 -300 0 -100 0 0 0 0\n2 Vessel 0 0 -5 0 0 0 0"),
+           r"point 1 is on body 1, which is not in the BODIES section \(IDs none\)")
 
 
 def test_bad_point_values():
@@ -385,9 +384,11 @@ def test_file_errors(tmp_path):
 
 def test_warnings():
     points = "2 Fixed -300 0 -100 0 0 0 0\n1 Vessel 0 0 -5 0 0 0 0"
-    with pytest.warns(SeacableWarning, match="MoorDyn attaches lines to points by their position"):
+    with pytest.warns(SeacableWarning, match=r"point IDs \[2, 1\] are not 1..2 in file order; MoorDyn numbers"):
         data = read_moordyn(_deck(points=points))
-    assert (data.lines[0].point_a, data.lines[0].point_b) == (1, 2)  # by ID
+    # by position, as MoorDyn: point 1 is the first row (written '2', the anchor)
+    assert (data.lines[0].point_a, data.lines[0].point_b) == (1, 2)
+    assert data.points[0].attachment == "fixed" and data.points[0].id == 1
     with pytest.warns(SeacableWarning, match="'WAVES' is not a MoorDyn section"):
         read_moordyn(_deck(extra="---- WAVES ----\n1 2 3\n"))
 

@@ -1,0 +1,112 @@
+"""Write ``DECKS.md``: for each vendored deck, whether seacable reads it, converts it to a mooring system,
+solves its statics, and how far its line end tensions are from MoorPy's and from MoorDyn's (``reference.json``).
+
+    PYTHONPATH=src python tests/validation/data/moordyn_decks/deck_table.py
+
+The comparisons take the seabed without friction, as MoorPy and MoorDyn's relaxed start have it (see
+``tests/validation/test_moordyn_decks.py``).
+"""
+
+from __future__ import annotations
+
+import json
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+NOTES = {  # what the table cannot see: the test that checks the deck instead, or why it does not solve
+    "MoorDyn/tests/Mooring/lifting.txt": "MoorPy leaves the free point where it starts (0 N); the closed form m g agrees "
+                                         "(test_a_weight_on_a_neutral_line_hangs_by_its_weight)",
+    "MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt": "MoorPy halves the chains' weight; the closed form agrees "
+                                                           "(test_chains_with_a_free_end_hang_straight_down)",
+    "r-test/modules/moordyn/5MW_OC4/moordyn.dat": "same tensions as the OC4 points deck to 1e-9 "
+                                                  "(test_a_coupled_body_carries_the_fairleads_of_the_points_deck)",
+    "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat": "force balance of the body with its external load "
+                                                          "(test_a_body_with_an_external_load_balances_it)",
+    "MoorDyn/tests/Mooring/RodHanging.txt": "a free rod has no stiffness in spin about its own axis",
+    "r-test/modules/moordyn/md_lineFail/moordyn.dat": "a free rod has no stiffness in spin about its own axis",
+    "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat": "all lines end at one body point: no roll restoring",
+    "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "turbine positions are in the FAST.Farm input",
+    "MoorDyn/tests/Mooring/wave_surface/wave_surface.txt": "lines up to 10 m above the water: seacable's catenary "
+                                                           "takes the wet weight everywhere, MoorDyn the dry weight "
+                                                           "in air; MoorDyn's IC not converged (0.088 m/s^2)",
+    "MoorDyn/tests/Mooring/BeamSimplySupported.txt": "a taut EI beam in air (z = +10 m): no reference (MoorPy NaN, "
+                                                     "MoorDyn's IC not converged); seacable's catenary has no EI",
+}
+
+
+def main():
+    from seacable.io.moordyn import is_moordyn_file, moordyn_system, read_moordyn
+    from seacable.system.statics import solve_equilibrium
+
+    ref = json.loads((HERE / "reference.json").read_text())
+    rows = ["| deck | read | system | statics | vs MoorPy | vs MoorDyn | note |", "|---|---|---|---|---|---|---|"]
+    counts = dict(decks=0, read=0, system=0, statics=0, moorpy=0, moordyn=0, agree=0)
+    for path in sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and "LICENSES" not in p.parts
+                       and is_moordyn_file(p)):
+        rel = path.relative_to(HERE).as_posix()
+        r = ref["decks"].get(rel, {})
+        counts["decks"] += 1
+        cells, note = ["", "", "", "", ""], ""
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            try:
+                md = read_moordyn(path)
+                cells[0] = "yes"
+                counts["read"] += 1
+                system, env = moordyn_system(md)
+                cells[1] = "yes"
+                counts["system"] += 1
+                env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.0})})
+                t0 = time.time()
+                eq = solve_equilibrium(system, env)
+                cells[2] = f"yes ({time.time() - t0:.2f} s)"
+                counts["statics"] += 1
+            except Exception as exc:  # noqa: BLE001 - the table records why
+                cells[sum(1 for c in cells if c)] = "no"
+                note = str(exc).split(": ", 1)[-1][:140].replace("|", "/")
+                eq = None
+        agree = []
+        if eq is not None:
+            mp = r.get("moorpy", {})
+            finite = "lines" in mp and all(np.isfinite(v) for ln in mp["lines"].values() for v in ln.values())
+            if "lines" in mp and not finite:
+                cells[3] = "NaN (MoorPy)"
+            elif "lines" in mp:
+                d = [abs(ours - mp["lines"][str(ln.id)][f"end_{e}_tension"]) /
+                     max(abs(mp["lines"][str(ln.id)][f"end_{e}_tension"]), 1.0)
+                     for k, ln in enumerate(md.lines) for e, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k]))]
+                cells[3] = f"{max(d) * 100:.4f} %"
+                counts["moorpy"] += 1
+                agree.append(max(d) <= 0.01)
+            else:
+                cells[3] = "-"
+                note = note or ("MoorPy: " + mp.get("error", "no result")[-90:]).replace("|", "/")
+            if r.get("ic_converged"):
+                d = [abs(ours - np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"])) /
+                     np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"])
+                     for k, ln in enumerate(md.lines) for e, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k]))
+                     if np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"]) > 0]
+                cells[4] = f"{max(d) * 100:.3f} % (IC residual {r.get('ic_residual')})"
+                counts["moordyn"] += 1
+                agree.append(max(d) <= 0.01)
+            else:
+                cells[4] = "-" if "error" not in r else "MoorDyn refuses it"
+        if agree and any(agree):
+            counts["agree"] += 1
+        if rel in NOTES:
+            note = NOTES[rel] + (f"; {note}" if note and rel not in NOTES else "")
+        rows.append(f"| {rel} | " + " | ".join(cells) + f" | {note} |")
+    summary = (f"{counts['decks']} decks: {counts['read']} read, {counts['system']} convert to a mooring system, "
+               f"{counts['statics']} solve; compared with MoorPy {counts['moorpy']}, with a converged MoorDyn "
+               f"{counts['moordyn']}; within 1 % of at least one of them: {counts['agree']}.")
+    (HERE / "DECKS.md").write_text("# The vendored MoorDyn decks in seacable\n\nWritten by `deck_table.py`. "
+                                   + summary + "\n\n" + "\n".join(rows) + "\n")
+    print(summary)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,154 @@
+"""Write ``reference.json``: MoorDyn's own initial static state of every vendored deck.
+
+Run from the repository root (needs the ``moordyn`` Python bindings, 2.7.2 when this was written)::
+
+    PYTHONPATH=src python tests/validation/data/moordyn_decks/make_reference.py [deck ...]
+
+For each deck MoorDyn-C is created from the file and ``moordyn.Init`` computes its initial
+condition by MoorDyn's own relaxation (its options ``TmaxIC``, ``threshIC``, ... as written in the
+deck), with every coupled body, rod and point held where the deck puts it. Recorded per line: the
+force each end node passes to what it is attached to (``GetLineNodeForce`` at node 0 and node N,
+MoorDyn's end-node net force, weight of the half segment included: the force a catenary end
+carries); per body and rod: its position; per point: its position. A deck MoorDyn refuses or
+that does not finish in ``TIMEOUT`` seconds is recorded with the reason. Each deck runs in its own
+process (MoorDyn prints to the console and a failed Init can abort).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+TIMEOUT = 240.0
+
+_CHILD = r"""
+import json, sys, math
+import moordyn
+from seacable.io.moordyn import read_moordyn
+path = sys.argv[1]
+md = read_moordyn(path)
+x = []
+for b in md.bodies:
+    if b.attachment == "coupled":
+        x += list(b.position[:3]) + list(b.position[3:])
+for r in md.rods:
+    if r.attachment == "coupled":
+        x += list(r.end_a) + ([0.0, 0.0, 0.0] if r.pinned else list(r.end_b))
+for p in md.points:
+    if p.attachment == "vessel":
+        x += list(p.position)
+s = moordyn.Create(path)
+n = moordyn.NCoupledDOF(s)
+if n != len(x):
+    raise SystemExit(f"coupled DOFs: MoorDyn {n}, deck {len(x)}")
+moordyn.Init(s, x, [0.0] * len(x))
+out = {"lines": {}, "bodies": {}, "rods": {}, "points": {}}
+for i in range(1, moordyn.GetNumberLines(s) + 1):
+    L = moordyn.GetLine(s, i)
+    nn = moordyn.GetLineN(L)
+    out["lines"][str(i)] = {"end_a_force": list(moordyn.GetLineNodeForce(L, 0)),
+                            "end_b_force": list(moordyn.GetLineNodeForce(L, nn)),
+                            "fair_ten": moordyn.GetLineFairTen(L)}
+for i in range(1, moordyn.GetNumberBodies(s) + 1):
+    r, _ = moordyn.GetBodyState(moordyn.GetBody(s, i))
+    out["bodies"][str(i)] = list(r)
+for i in range(1, moordyn.GetNumberRods(s) + 1):
+    R = moordyn.GetRod(s, i)
+    k = moordyn.GetRodN(R)
+    out["rods"][str(i)] = [list(moordyn.GetRodNodePos(R, 0)), list(moordyn.GetRodNodePos(R, k))]
+for i in range(1, moordyn.GetNumberPoints(s) + 1):
+    out["points"][str(i)] = list(moordyn.GetPointPos(moordyn.GetPoint(s, i)))
+moordyn.Close(s)
+print("JSON" + json.dumps(out))
+"""
+
+_MOORPY = r"""
+import json, sys, warnings
+warnings.simplefilter("ignore")
+import moorpy as mp
+from seacable.io.moordyn import read_moordyn
+md = read_moordyn(sys.argv[1])
+ms = mp.System(file=sys.argv[1], depth=md.water_depth or 0.0, rho=md.water_density, g=md.gravity)
+ms.initialize()
+ok = ms.solveEquilibrium(tol=1e-6, maxIter=2000)
+out = {"converged": bool(ok) if ok is not None else True,
+       "lines": {str(k + 1): {"end_a_tension": float(ln.TA), "end_b_tension": float(ln.TB)}
+                 for k, ln in enumerate(ms.lineList)},
+       "bodies": {str(k + 1): [float(v) for v in b.r6] for k, b in enumerate(ms.bodyList)}}
+print("JSON" + json.dumps(out))
+"""
+
+
+def decks():
+    from seacable.io.moordyn import is_moordyn_file
+
+    return sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and is_moordyn_file(p))
+
+
+def _child(code: str, deck: Path, env: dict) -> tuple[dict | None, str, float]:
+    t0 = time.time()
+    try:
+        proc = subprocess.run([sys.executable, "-W", "ignore", "-c", code, str(deck)], capture_output=True,
+                              text=True, timeout=TIMEOUT, cwd=deck.parent, env=env)
+    except subprocess.TimeoutExpired:
+        return None, f"did not finish in {TIMEOUT:g} s", TIMEOUT
+    seconds = round(time.time() - t0, 2)
+    for line in proc.stdout.splitlines():
+        if line.startswith("JSON"):
+            return json.loads(line[4:]), proc.stdout, seconds
+    tail = (proc.stderr or proc.stdout).strip().splitlines()[-3:]
+    return None, " | ".join(tail)[-400:] or f"exit code {proc.returncode}", seconds
+
+
+def run(deck: Path) -> dict:
+    """MoorDyn's state (``error`` if it fails; ``ic_residual``: the last 'Remaining error' MoorDyn prints, in
+    m/s^2, and ``ic_converged``: below 1 % of g and a line carrying tension) and MoorPy's (``moorpy``)."""
+    src = str(HERE.parents[3] / "src")  # this checkout's seacable, whatever the working folder
+    env = {**os.environ, "PYTHONPATH": src + os.pathsep + os.environ.get("PYTHONPATH", "")}
+    result, text, seconds = _child(_CHILD, deck, env)
+    if result is None:
+        out = {"error": "MoorDyn: " + text, "seconds": seconds}
+    else:
+        import re
+
+        found = re.findall(r"Remaining error after [\d.eE+-]+ s = ([\d.eE+-]+) m/s2", text)
+        residual = float(found[-1]) if found else None
+        loaded = any(any(v != 0 for v in ln["end_b_force"]) for ln in result["lines"].values())
+        out = {**result, "seconds": seconds, "ic_residual": residual,
+               "ic_converged": bool(loaded and (residual is None or residual < 0.098))}
+    mp_result, mp_text, _ = _child(_MOORPY, deck, env)
+    out["moorpy"] = mp_result if mp_result is not None else {"error": "MoorPy: " + mp_text}
+    return out
+
+
+def main(argv):
+    import moordyn
+
+    target = HERE / "reference.json"
+    data = json.loads(target.read_text()) if target.is_file() else {"decks": {}}
+    data["moordyn_version"] = getattr(moordyn, "__version__", None) or _version()
+    data["moorpy_version"] = _version("moorpy")
+    chosen = [Path(a).resolve() for a in argv] or decks()
+    for deck in chosen:
+        rel = deck.relative_to(HERE).as_posix()
+        result = run(deck)
+        data["decks"][rel] = result
+        print(f"{rel}: {'error: ' + result['error'] if 'error' in result else 'ok'} ({result.get('seconds')} s), "
+              f"converged {result.get('ic_converged')} residual {result.get('ic_residual')}, "
+              f"MoorPy {'error' if 'error' in result['moorpy'] else 'ok'}", flush=True)
+    target.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")
+
+
+def _version(name="moordyn"):
+    from importlib.metadata import version
+
+    return version(name)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -1,0 +1,246 @@
+"""Public MoorDyn decks, read, converted to a mooring system and solved, against MoorDyn and MoorPy.
+
+The decks are vendored in ``data/moordyn_decks`` (``PROVENANCE.md``: repository, path, commit,
+licence). ``reference.json`` holds MoorDyn 2.7.2's initial static state (``moordyn.Init``, its own
+relaxation) and MoorPy 1.3.0's ``solveEquilibrium`` for each deck, written by ``make_reference.py``
+in the same folder, so that this test compares to numbers; ``test_moordyn_live`` re-runs MoorDyn on
+two decks to show the cache is MoorDyn's answer.
+
+Tolerances. MoorPy solves the same elastic catenaries exactly (rigid frictionless seabed), as
+seacable's system statics do: 1e-4 relative on every line end tension and 1e-3 m on body positions
+(both solvers stop at ~1e-6 relative residuals; 1e-4 leaves room, and is 100 times tighter than the
+issue's 1 %). MoorDyn is a lumped-mass model relaxed in time: its end-node force differs from the
+exact catenary by the discretisation (a few 0.1 % at 20-40 segments) and by where its relaxation
+stopped (``threshIC`` of the deck): 1 % where its relaxation converged below 1e-2 m/s^2.
+"""
+
+from __future__ import annotations
+
+import json
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seacable.errors import InputError
+from seacable.io.moordyn import is_moordyn_file, moordyn_system, read_moordyn
+
+HERE = Path(__file__).parent / "data" / "moordyn_decks"
+REFERENCE = json.loads((HERE / "reference.json").read_text())
+DECKS = sorted(p.relative_to(HERE).as_posix() for p in HERE.rglob("*")
+               if p.suffix in (".txt", ".dat") and "LICENSES" not in p.parts and is_moordyn_file(p))  # not the tables the decks name
+
+# Decks seacable reads but does not turn into a system, and why (the message must say so).
+NOT_A_SYSTEM = {
+    "MoorDyn/tests/Mooring/RodPinnedFloating.txt": "the deck has no lines",
+    "MoorDyn/tests/Mooring/body_tests/floatingBodies.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/body_tests/pinnedBody.txt": "option WtrDnsty = 0 switches buoyancy off",
+    "r-test/modules/moordyn/md_float/moordyn.dat": "no line ends on this body",
+    "MoorDyn/tests/Mooring/body_tests/orbitalBody.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt": "option g = 0 switches gravity off",
+    # rods that only sink or swing, with a dummy line between two anchors (MoorDyn needs a line)
+    "r-test/modules/moordyn/md_horizontal/moordyn.dat": "no line ends on this body",
+    "r-test/modules/moordyn/md_vertical/moordyn.dat": "no line ends on this body",
+    "r-test/modules/moordyn/md_no_line/moordyn.dat": "no line ends on this body",
+    "MoorDyn/tests/Mooring/rod_tests/RodInertia.txt": "the deck has no lines",
+    "MoorDyn/tests/Mooring/body_tests/rotatingBody.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/rotations/nwu.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/exp_wc/line.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/quadratic_wc/line.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/syrope/slow_loading.txt": "option g = 0 switches gravity off",
+    "MoorDyn/tests/Mooring/rod_tests/AddedMass.txt": "the deck has no lines",
+}
+# Decks that convert but whose statics seacable does not solve (yet), and why.
+NO_STATICS = {
+    # a free rod is a body with no stiffness in spin about its own axis: the statics refuse it
+    "MoorDyn/tests/Mooring/RodHanging.txt": "hydrostatic stiffness in roll",
+    "r-test/modules/moordyn/md_lineFail/moordyn.dat": "hydrostatic stiffness in roll",
+    # all three lines end at one body point: no roll restoring (a dynamic test deck, TmaxIC = 0)
+    "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat": "hydrostatic stiffness in roll",
+    # a 1 m line between points 2 m apart (a viscoelastic element test): strain 1
+    "r-test/modules/moordyn/md_viscoelastic/moordyn.dat": "cannot reach its fairlead",
+    # FAST.Farm places the two turbines; the deck does not say where
+    "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "cannot reach its fairlead",
+    # a W of three lines with a float and seabed contact: the system statics' Newton does not converge
+    "MoorPy/tests/case6.dat": "did not converge",
+    # a 1 N EA spring carrying 1 kg: strain 9.8 (MoorDyn's stability test), beyond the statics' strain limit
+    "MoorDyn/tests/Mooring/stability/springs.txt": "did not converge",
+    "MoorDyn/tests/Mooring/stability/spring.txt": "did not converge",
+}
+# MoorPy 1.3.0 leaves lifting.txt's free point where it starts (zero tension, 'converged'); the closed
+# form is tested instead (test_a_weight_on_a_neutral_line_hangs_by_its_weight).
+# MoorPy gives 3D_seafloor/hanging_lines' vertical chains with a massless free end half their weight at both ends.
+MOORPY_WRONG = {"MoorDyn/tests/Mooring/lifting.txt", "MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt"}
+
+
+def _quiet(fn, *args, **kwargs):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # each deck's notes (options seacable does not honour) are tested elsewhere
+        return fn(*args, **kwargs)
+
+
+def test_every_vendored_deck_is_listed_with_its_provenance():
+    provenance = (HERE / "PROVENANCE.md").read_text()
+    assert len(DECKS) >= 40
+    for path in HERE.rglob("*"):
+        if path.suffix in (".txt", ".dat") and "LICENSES" not in path.parts:  # decks and the tables they name
+            assert f"| {path.relative_to(HERE).as_posix()} |" in provenance
+    for deck in DECKS:
+        assert deck in REFERENCE["decks"]
+    assert REFERENCE["moordyn_version"] == "2.7.2" and REFERENCE["moorpy_version"] == "1.3.0"
+
+
+@pytest.mark.parametrize("deck", DECKS)
+def test_deck_reads_and_converts(deck):
+    md = _quiet(read_moordyn, HERE / deck)
+    assert md.lines or md.rods or md.bodies
+    if deck in NOT_A_SYSTEM:
+        with pytest.raises(InputError, match=NOT_A_SYSTEM[deck]):
+            _quiet(moordyn_system, md)
+        return
+    system, env = _quiet(moordyn_system, md)
+    assert len(system.lines) == len(md.lines)
+    assert env.water_density == md.water_density and env.gravity == md.gravity
+
+
+def _solve(deck, frictionless=True):
+    """The deck's equilibrium. ``frictionless``: MoorPy ignores seabed friction, and MoorDyn's relaxed
+    initial state has none acting (its friction is a velocity-regularised law, zero at rest after a
+    relaxation from the catenary start), so the comparisons take the seabed without friction; seacable's
+    statics with friction take the fully mobilised friction toward the fairlead (a different state)."""
+    from seacable.system.statics import solve_equilibrium
+
+    md = _quiet(read_moordyn, HERE / deck)
+    system, env = _quiet(moordyn_system, md)
+    if frictionless:
+        env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.0})})
+    return md, _quiet(solve_equilibrium, system, env)
+
+
+def _moorpy_decks():
+    """Decks MoorPy solved (finite tensions: MoorPy returns NaN for BeamSimplySupported's taut beam in air)."""
+    return [d for d in DECKS if "lines" in REFERENCE["decks"][d].get("moorpy", {})
+            and all(np.isfinite(v) for ln in REFERENCE["decks"][d]["moorpy"]["lines"].values() for v in ln.values())
+            and d not in NOT_A_SYSTEM and d not in NO_STATICS and d not in MOORPY_WRONG]
+
+
+@pytest.mark.parametrize("deck", _moorpy_decks())
+def test_statics_agree_with_moorpy(deck):
+    ref = REFERENCE["decks"][deck]["moorpy"]
+    md, eq = _solve(deck)
+    for k, line in enumerate(md.lines):
+        expect = ref["lines"][str(line.id)]
+        # 1e-4 relative (see the module docstring); 1 N floor for a slack end that carries ~0
+        assert eq.end_a_tension[k] == pytest.approx(expect["end_a_tension"], rel=1e-4, abs=1.0)
+        assert eq.end_b_tension[k] == pytest.approx(expect["end_b_tension"], rel=1e-4, abs=1.0)
+    for k, position in enumerate(ref["bodies"].values()):
+        assert np.allclose(eq.body_position[k][:3], position[:3], atol=1e-3)
+        assert np.allclose(eq.body_position[k][3:], position[3:], atol=1e-4)
+
+
+def _moordyn_decks():
+    return [d for d in DECKS if REFERENCE["decks"][d].get("ic_converged")
+            and (REFERENCE["decks"][d].get("ic_residual") or 0.0) < 1e-2
+            and d not in NOT_A_SYSTEM and d not in NO_STATICS]
+
+
+@pytest.mark.parametrize("deck", _moordyn_decks())
+def test_statics_agree_with_moordyn(deck):
+    ref = REFERENCE["decks"][deck]
+    md, eq = _solve(deck)
+    for k, line in enumerate(md.lines):
+        for end, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k])):
+            theirs = float(np.linalg.norm(ref["lines"][str(line.id)][f"end_{end}_force"]))
+            assert ours == pytest.approx(theirs, rel=1e-2)  # 1 %: MoorDyn's lumped mass (docstring)
+    for k, (name, position) in enumerate(ref["bodies"].items()):
+        assert np.allclose(eq.body_position[k][:3], position[:3], atol=1e-2)
+
+
+def test_a_free_body_deck_hangs_where_the_elastic_line_puts_it():
+    """bodyDrag: a free 10 kg body (no volume) starts at the surface on a 4.5 m spring line from an anchor
+    5 m down; it sinks below the anchor and hangs. Closed form for a vertical elastic line of wet weight w
+    per metre carrying the body's weight W at its lower end: stretch = (W L + w L^2 / 2) / EA."""
+    md, eq = _solve("MoorDyn/tests/Mooring/body_tests/bodyDrag.txt")
+    lt, g, rho = md.line_types["spring"], md.gravity, md.water_density
+    w = (lt.mass_per_length - rho * np.pi * lt.diameter**2 / 4) * g
+    weight, length = md.bodies[0].mass * g, md.lines[0].length
+    stretch = (weight * length + w * length**2 / 2) / lt.axial_stiffness
+    z_anchor = md.points[1].position[2]
+    # 1e-9 relative: the catenary of a vertical line is exact and the Newton residual is 1e-8 of 184 N
+    assert eq.body_position[0][2] == pytest.approx(z_anchor - length - stretch, rel=1e-9)
+    assert max(eq.end_a_tension[0], eq.end_b_tension[0]) == pytest.approx(weight + w * length, rel=1e-9)
+
+
+def test_a_weight_on_a_neutral_line_hangs_by_its_weight():
+    """lifting: a 1000 kg point on a 100.5 m line as dense as the water (7.85398 kg/m, d = 0.1 m, rho = 1000):
+    the line carries the point's weight m g at both ends, and stretches by m g L / EA."""
+    md, eq = _solve("MoorDyn/tests/Mooring/lifting.txt")
+    weight = md.points[1].mass * md.gravity
+    # 1e-6: the line's residual wet weight (7.85398 vs 1000 pi 0.1^2 / 4 = 7.853982 kg/m) is 3e-8 of m g
+    assert eq.end_a_tension[0] == pytest.approx(weight, rel=1e-6)
+    assert eq.end_b_tension[0] == pytest.approx(weight, rel=1e-6)
+    stretch = weight * md.lines[0].length / md.line_types["main"].axial_stiffness
+    assert eq.point_position[1][2] == pytest.approx(-(md.lines[0].length + stretch), rel=1e-9)
+
+
+def test_a_coupled_body_carries_the_fairleads_of_the_points_deck():
+    """r-test 5MW_OC4 (early MoorDyn-F v2 layout: a coupled body '1coupled' at the origin, the fairleads on it,
+    v1 line columns) is the OC4 semi of NRELOffshrBsline5MW_OC4DeepCwindSemi_MoorDyn.dat with vessel points:
+    the same end tensions (1e-9: the same catenaries solved twice)."""
+    body_md, body = _solve("r-test/modules/moordyn/5MW_OC4/moordyn.dat")
+    _, points = _solve("r-test/glue-codes/openfast/5MW_OC4Semi_WSt_WavesWN/NRELOffshrBsline5MW_OC4DeepCwindSemi_MoorDyn.dat")
+    assert body_md.bodies[0].attachment == "coupled" and body_md.layout == "v1"
+    assert np.allclose(body.end_b_tension, points.end_b_tension, rtol=1e-9)
+    assert np.allclose(body.end_a_tension, points.end_a_tension, rtol=1e-9)
+
+
+def test_chains_with_a_free_end_hang_straight_down():
+    """3D_seafloor/hanging_lines: ten 10 m chains from fixed points, each ending at a massless free point: the
+    top carries the chain's wet weight w L, the free end nothing, and hangs L + w L^2 / (2 EA) below the top."""
+    md, eq = _solve("MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt")
+    lt, length = md.line_types["chain"], md.lines[0].length
+    w = (lt.mass_per_length - md.water_density * np.pi * lt.diameter**2 / 4) * md.gravity
+    # 1e-9 relative / 1e-6 N: exact vertical catenaries, Newton residual ~1e-8 of the force scale
+    assert np.allclose(eq.end_a_tension, w * length, rtol=1e-9)
+    assert np.allclose(eq.end_b_tension, 0.0, atol=1e-6)
+    ends = eq.point_position[[eq.point_names.index(f"point{2 * k + 2}") for k in range(10)]]
+    assert np.allclose(ends[:, 2], -6.6 - length - w * length**2 / (2 * lt.axial_stiffness), rtol=1e-9)
+
+
+def test_a_body_with_an_external_load_balances_it():
+    """md_BdyExtLdDmpg: a 21244 kg body (no volume) on a 48 m nylon line from a fixed point, pushed by the
+    EXTERNAL LOADS force (104170, 50000, -10000) N: the line's pull on the body balances weight and load."""
+    md, eq = _solve("r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat")
+    body = md.bodies[0]
+    load = np.asarray(md.external_loads[0].force) + (0.0, 0.0, -body.mass * md.gravity)
+    # the line ends at the body point (end B): 1e-8 of the 2.5e5 N load, the Newton tolerance
+    assert np.allclose(eq.end_b_force[0] + load, 0.0, atol=1e-8 * np.linalg.norm(load) * 10)
+    assert eq.body_position[0][0] > 0 and eq.body_position[0][1] > 0  # pushed along +x, +y
+
+
+def test_seabed_friction_is_the_decks():
+    """WD0050_Chain asks for FrictionCoefficient 0.5: the environment carries it (the comparisons above take
+    the frictionless seabed MoorPy and MoorDyn's relaxed start have); with it the anchor tension drops."""
+    md, with_friction = _solve("MoorDyn/tests/Mooring/WD0050_Chain.txt", frictionless=False)
+    _, without = _solve("MoorDyn/tests/Mooring/WD0050_Chain.txt")
+    assert _quiet(moordyn_system, md)[1].seabed.friction == 0.5
+    assert with_friction.end_a_tension[0] < 0.9 * without.end_a_tension[0]
+
+
+@pytest.mark.parametrize("deck", ["MoorPy/tests/case1.dat", "MoorDyn/tests/Mooring/lines_body.txt"])
+def test_moordyn_live(deck):
+    """The cached numbers are MoorDyn's: run MoorDyn 2.7.2 here and compare to the cache to 1e-6."""
+    moordyn = pytest.importorskip("moordyn")
+    import subprocess
+    import sys
+
+    script = HERE / "make_reference.py"
+    code = (f"import sys; sys.path.insert(0, {str(script.parent)!r}); import make_reference as m, json; "
+            f"print('OUT' + json.dumps(m.run(m.HERE / {deck!r})))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    live = json.loads(next(ln for ln in proc.stdout.splitlines() if ln.startswith("OUT"))[3:])
+    cached = REFERENCE["decks"][deck]
+    del moordyn
+    for key, line in cached["lines"].items():
+        assert np.allclose(live["lines"][key]["end_b_force"], line["end_b_force"], rtol=1e-6)
