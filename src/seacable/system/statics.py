@@ -55,7 +55,7 @@ References
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -255,9 +255,14 @@ class _Problem:
 
     def __init__(self, system, env, external, tol, max_iter):
         self.system, self.env = system, env
-        self.asm = _assembly(system, env)
+        self.asm, base = _assembly(system, env)
         _check_external(system, self.asm, external)
-        self.bd = body_data(self.asm, system, external)
+        self.bd = base
+        if external:
+            ext = base.external.copy()
+            for name, load in external.items():
+                ext[self.asm.free_bodies.index(self.asm.body_names.index(name))] += np.asarray(load, float)
+            self.bd = replace(base, external=ext, external_scale=float(np.abs(ext).max(initial=0.0)))
         self.tol, self.max_iter = tol, max_iter
         asm = self.asm
         self.nb = len(asm.free_bodies)
@@ -268,6 +273,9 @@ class _Problem:
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
+        self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
+        for k in range(self.nb):
+            self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -291,6 +299,8 @@ class _Problem:
 
     def _z_dof(self, st: State) -> np.ndarray:
         """DOF indices of the grounded free nodes' z."""
+        if not st.grounded.any():
+            return np.zeros(0, int)
         j = np.flatnonzero(st.grounded[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
@@ -312,13 +322,8 @@ class _Problem:
         return ev
 
     def error(self, ev: Evaluation) -> float:
-        r = ev.residual / ev.scale
-        if self.nb:
-            rot = np.zeros(r.size, bool)
-            for k in range(self.nb):
-                rot[6 * k + 3:6 * k + 6] = True
-            r = np.where(rot, r / self.length_scale, r)
-        return float(np.abs(r).max(initial=0.0))
+        """Largest residual relative to the force scale (moments also to the length scale)."""
+        return float(np.abs(self._scaled(ev)).max(initial=0.0))
 
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
         nb = self.nb
@@ -335,9 +340,13 @@ class _Problem:
             grounded[fn[low]] = True
         return State(X, R, P, grounded)
 
-    def newton(self, st: State, load: float):
-        """Newton with step limits and backtracking; returns (state, evaluation, converged)."""
-        ev = self.eval(st, load)
+    def newton(self, st: State, load: float, ev: Evaluation | None = None):
+        """Newton with step limits and backtracking; returns (state, evaluation, converged).
+
+        ``ev``: the evaluation at ``st`` if already made (with the same load).
+        """
+        if ev is None:
+            ev = self.eval(st, load)
         err = self.error(ev)
         stalls = 0
         for _ in range(self.max_iter):
@@ -410,26 +419,25 @@ class _Problem:
         return dq
 
     def _scaled(self, ev):
-        r = ev.residual / ev.scale
-        for k in range(self.nb):
-            r[6 * k + 3:6 * k + 6] /= self.length_scale
-        return r
+        return ev.residual * self.weights / ev.scale
 
 
 _CACHE: dict = {}
 
 
-def _assembly(system: MooringSystem, env: Environment) -> Assembly:
-    """The flattened system, kept for the last few (system, environment) pairs (both frozen)."""
+def _assembly(system: MooringSystem, env: Environment):
+    """The flattened system and its bodies' constants, kept for the last few (system, environment)
+    pairs (both frozen models)."""
     key = (id(system), id(env))
     hit = _CACHE.get(key)
     if hit is not None and hit[0] is system and hit[1] is env:
-        return hit[2]
+        return hit[2], hit[3]
     asm = assemble(system, env)
+    base = body_data(asm, system, None)
     if len(_CACHE) >= 8:
         _CACHE.pop(next(iter(_CACHE)))
-    _CACHE[key] = (system, env, asm)
-    return asm
+    _CACHE[key] = (system, env, asm, base)
+    return asm, base
 
 
 def _rotvec(th) -> np.ndarray:
@@ -579,7 +587,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                               "points where every line can reach.") from None
     _check_stability(prob, st0, ev0)
-    st, ev, ok = prob.newton(st0, 1.0)
+    st, ev, ok = prob.newton(st0, 1.0, ev0)
     if not ok:
         # load ramp: external loads in steps from zero, each step from the last solution
         for n_steps in (5, 20):
