@@ -29,7 +29,7 @@ import numpy as np
 from ..statics.catenary import CatenaryRegime
 from . import _stat_kernel as _k
 from ._stat_cat import frame_and_catenaries
-from ._stat_model import BODY, Assembly, rotation, skew
+from ._stat_model import BODY, Assembly, rotation
 
 _GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
 _GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
@@ -74,6 +74,7 @@ class Evaluation:
     e: np.ndarray             # (ns, 2) horizontal unit vectors anchor -> fairlead
     node_force: np.ndarray    # (nn, 3) total force on each node (lines + node loads) [N]
     scale: float              # force scale for the relative residual [N]
+    hydro: np.ndarray         # (6 nb, 6 nb) restoring of the bodies' weight, buoyancy, waterplane
 
 
 def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
@@ -148,32 +149,11 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
             M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
             own_jac[k] = -bd.khs[k] @ M
     jac = jac_lines.copy()
+    hydro = np.zeros((6 * nb, 6 * nb))
     for k in range(nb):
         res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
         jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
+        hydro[6 * k:6 * k + 6, 6 * k:6 * k + 6] = -own_jac[k]
     scale = max(1.0, np.abs(fa).max(initial=0.0), np.abs(fb).max(initial=0.0), float(np.abs(asm.node_force).max(initial=0.0)),
                 np.abs(own).max(initial=0.0), bd.external_scale)
-    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale)
-
-
-def hydrostatic_matrix(asm: Assembly, bd: BodyData, st: State) -> np.ndarray:
-    """Block-diagonal restoring of the free bodies' weight, buoyancy and waterplane (6 nb)^2."""
-    nb = len(asm.free_bodies)
-    out = np.zeros((6 * nb, 6 * nb))
-    rho, g = asm.rho, asm.g
-    for k in range(nb):
-        R = st.R[k]
-        if bd.khs[k] is None:
-            W = np.array([0.0, 0.0, -bd.mass[k] * g])
-            B = np.array([0.0, 0.0, rho * g * bd.volume[k]])
-            Pm = rho * g * np.array([[0.0, bd.iwp[k, 0], 0.0], [-bd.iwp[k, 1], 0.0, 0.0], [0.0, 0.0, 0.0]])
-            blk = np.zeros((6, 6))
-            blk[2, 2] = rho * g * bd.awp[k]
-            blk[3:, 3:] = -(skew(W) @ skew(R @ bd.rcg[k]) + skew(B) @ skew(R @ bd.rcb[k]) - Pm @ skew(R[:, 2]))
-        else:
-            from ._stat_model import euler, euler_rate_map
-            M = np.eye(6)
-            M[3:, 3:] = np.linalg.inv(euler_rate_map(euler(R)))
-            blk = bd.khs[k] @ M
-        out[6 * k:6 * k + 6, 6 * k:6 * k + 6] = blk
-    return out
+    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)

@@ -62,7 +62,7 @@ import numpy as np
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
-from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
+from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -484,7 +484,7 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     nb = prob.nb
     if nb == 0:
         return
-    hyd = hydrostatic_matrix(prob.asm, prob.bd, st)
+    hyd = ev.hydro
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     moor = _condense(-ev.jac_lines, nb, pts)
     tot = np.diag(hyd) + np.diag(moor)
@@ -676,7 +676,7 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     K = _condense(-ev.jac_lines, nb, pts)
-    hyd = hydrostatic_matrix(asm, prob.bd, st)
+    hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
     grounded = np.zeros(len(asm.line_names))
