@@ -23,7 +23,7 @@ system                     seacable      MoorPy FD       ratio  MoorPy A       r
 =========================  ============  ==============  =====  =============  =====
 OC3-Hywind spar            1.0 ms        48 ms           48     24 ms          24
 OC4-DeepCwind semi         1.1 ms        28 ms           26     9.4 ms         8.6
-buoy, clumps and floats    13 ms         3500 ms         266    37 ms          2.8
+buoy, clumps and floats    6.4 ms        3000-6000 ms    >450   38 ms          6.0
 =========================  ============  ==============  =====  =============  =====
 """
 
