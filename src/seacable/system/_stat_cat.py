@@ -68,61 +68,152 @@ def _spans(H, V, L, EA, w, mu, seabed):
 def solve_warm(x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
     """Newton from (H0, V0) per sub-line; ``out[k]`` = H, V, HA, VA, LB, K00, K01, K10, K11, regime, ok."""
     for k in range(x.size):
-        out[k, 10] = 0.0
-        if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
-            continue
-        H, V = H0[k], V0[k]
-        scale = max(L[k], math.hypot(x[k], z[k]))
-        fx, fz, jxh, jxv, jzh, jzv, grd = _spans(H, V, L[k], EA[k], w[k], mu[k], seabed[k])
-        fx -= x[k]
-        fz -= z[k]
-        ok = False
-        polished = False
-        for _it in range(31):
-            if max(abs(fx), abs(fz)) <= tol * scale:
-                if polished:
-                    ok = True
-                    break
-                polished = True          # one more full step: quadratic convergence to round-off
-            det = jxh * jzv - jxv * jzh
-            dH = -(jzv * fx - jxv * fz) / det
-            dV = -(-jzh * fx + jxh * fz) / det
-            if not (math.isfinite(dH) and math.isfinite(dV)):
+        _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out)
+
+
+@njit(cache=True, error_model="numpy")
+def _guess_one(x, z, L, EA, w):
+    """Peyrot & Goulois (1979) start, raised to the straight-bar tension when taut (as catenary._guess)."""
+    chord = math.hypot(x, z)
+    lam = 0.2
+    if L > chord and x > 0:
+        q = 3.0 * ((L * L - z * z) / (x * x) - 1.0)
+        if q > 0 and math.isfinite(q) and math.sqrt(q) >= 0.2:
+            lam = min(math.sqrt(q), 1e6)
+    H = 0.5 * w * x / lam
+    V = 0.5 * w * (z / math.tanh(lam) + L)
+    if chord >= L:
+        T = EA * (chord / L - 1.0)
+        H = max(H, T * x / chord)
+        V = T * z / chord + 0.5 * w * L
+    return max(H, 1e-15 * (w * L + abs(V))), V
+
+
+@njit(cache=True, error_model="numpy")
+def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0, have_warm, tol,
+                       geom, seabed, anchor_is_a, out):
+    """Each sub-line's catenary frame (lower end = anchor) and its warm-started solution.
+
+    ``geom[s]`` = horizontal span, vertical span, e_x, e_y, tiny (horizontal span ~ 0);
+    ``depth`` NaN for no seabed; without ``have_warm`` the start is Peyrot & Goulois's.
+    """
+    for s in range(sub_a.size):
+        pa, pb = P[sub_a[s]], P[sub_b[s]]
+        a_is = pa[2] <= pb[2]
+        pA, pF = (pa, pb) if a_is else (pb, pa)
+        dx, dy, dz = pF[0] - pA[0], pF[1] - pA[1], pF[2] - pA[2]
+        h = math.hypot(dx, dy)
+        tiny = h <= 1e-9 * L[s]
+        geom[s, 0] = h
+        geom[s, 1] = max(dz, 0.0)
+        geom[s, 2] = 1.0 if tiny else dx / h
+        geom[s, 3] = 0.0 if tiny else dy / h
+        geom[s, 4] = 1.0 if tiny else 0.0
+        anchor_is_a[s] = a_is
+        seabed[s] = (not math.isnan(depth)) and pA[2] <= -depth + seabed_tol
+        if not have_warm:
+            if w[s] > 0:
+                H0[s], V0[s] = _guess_one(h, geom[s, 1], L[s], EA[s], w[s])
+            else:
+                H0[s], V0[s] = 0.0, 0.0
+    solve_warm(geom[:, 0], geom[:, 1], L, EA, w, mu, seabed, H0, V0, tol, out)
+
+
+@njit(cache=True, error_model="numpy")
+def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
+    """Sub-line ``k``: damped Newton on (H, V) with one polishing step; out[k, 10] = 1 if solved."""
+    out[k, 10] = 0.0
+    if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
+        return
+    H, V = H0[k], V0[k]
+    scale = max(L[k], math.hypot(x[k], z[k]))
+    fx, fz, jxh, jxv, jzh, jzv, grd = _spans(H, V, L[k], EA[k], w[k], mu[k], seabed[k])
+    fx -= x[k]
+    fz -= z[k]
+    ok = False
+    polished = False
+    for _it in range(31):
+        if max(abs(fx), abs(fz)) <= tol * scale:
+            if polished:
+                ok = True
                 break
-            alpha = 1.0
-            if H + dH < 0.1 * H:
-                alpha = min(alpha, 0.9 * H / -dH)
-            if seabed[k] and V > 0 and V + dV < 0.1 * V:
-                alpha = min(alpha, 0.9 * V / -dV)
-            f2 = fx * fx + fz * fz
-            for _ls in range(30):
-                Ht = max(H + alpha * dH, 1e-15 * (w[k] * L[k] + abs(V + alpha * dV)))
-                Vt = V + alpha * dV
-                gx, gz, a1, a2, a3, a4, g5 = _spans(Ht, Vt, L[k], EA[k], w[k], mu[k], seabed[k])
-                gx -= x[k]
-                gz -= z[k]
-                if (math.isfinite(gx) and math.isfinite(gz) and (polished or gx * gx + gz * gz <= (1 - 1e-4 * alpha) * f2)) \
-                        or _ls == 29:
-                    H, V, fx, fz, jxh, jxv, jzh, jzv, grd = Ht, Vt, gx, gz, a1, a2, a3, a4, g5
-                    break
-                alpha *= 0.5
-        if not ok or H <= 0:
-            continue
+            polished = True          # one more full step: quadratic convergence to round-off
         det = jxh * jzv - jxv * jzh
-        out[k, 0], out[k, 1] = H, V
-        if grd:
-            LB = L[k] - V / w[k]
-            HA = max(H - mu[k] * w[k] * LB, 0.0)
-            out[k, 2], out[k, 3], out[k, 4] = HA, 0.0, LB
-            out[k, 9] = 2.0 if HA > 0 else 3.0
-        else:
-            out[k, 2], out[k, 3], out[k, 4] = H, V - w[k] * L[k], 0.0
-            out[k, 9] = 1.0
-        out[k, 5], out[k, 6] = jzv / det, -jxv / det
-        out[k, 7], out[k, 8] = -jzh / det, jxh / det
-        if max(math.hypot(H, V), math.hypot(out[k, 2], out[k, 3])) > EA[k]:
-            continue                       # strain above 1: the public function explains it
-        out[k, 10] = 1.0
+        dH = -(jzv * fx - jxv * fz) / det
+        dV = -(-jzh * fx + jxh * fz) / det
+        if not (math.isfinite(dH) and math.isfinite(dV)):
+            break
+        alpha = 1.0
+        if H + dH < 0.1 * H:
+            alpha = min(alpha, 0.9 * H / -dH)
+        if seabed[k] and V > 0 and V + dV < 0.1 * V:
+            alpha = min(alpha, 0.9 * V / -dV)
+        f2 = fx * fx + fz * fz
+        for _ls in range(30):
+            Ht = max(H + alpha * dH, 1e-15 * (w[k] * L[k] + abs(V + alpha * dV)))
+            Vt = V + alpha * dV
+            gx, gz, a1, a2, a3, a4, g5 = _spans(Ht, Vt, L[k], EA[k], w[k], mu[k], seabed[k])
+            gx -= x[k]
+            gz -= z[k]
+            if (math.isfinite(gx) and math.isfinite(gz) and (polished or gx * gx + gz * gz <= (1 - 1e-4 * alpha) * f2)) \
+                    or _ls == 29:
+                H, V, fx, fz, jxh, jxv, jzh, jzv, grd = Ht, Vt, gx, gz, a1, a2, a3, a4, g5
+                break
+            alpha *= 0.5
+    if not ok or H <= 0:
+        return
+    det = jxh * jzv - jxv * jzh
+    out[k, 0], out[k, 1] = H, V
+    if grd:
+        LB = L[k] - V / w[k]
+        HA = max(H - mu[k] * w[k] * LB, 0.0)
+        out[k, 2], out[k, 3], out[k, 4] = HA, 0.0, LB
+        out[k, 9] = 2.0 if HA > 0 else 3.0
+    else:
+        out[k, 2], out[k, 3], out[k, 4] = H, V - w[k] * L[k], 0.0
+        out[k, 9] = 1.0
+    out[k, 5], out[k, 6] = jzv / det, -jxv / det
+    out[k, 7], out[k, 8] = -jzh / det, jxh / det
+    if max(math.hypot(H, V), math.hypot(out[k, 2], out[k, 3])) > EA[k]:
+        return                         # strain above 1: the public function explains it
+    out[k, 10] = 1.0
+
+
+def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e-12):
+    """Sub-line frames and catenaries from node positions; (cat, anchor_is_a, e, tiny)."""
+    ns = sub_a.size
+    geom = np.empty((ns, 5))
+    seabed = np.empty(ns, np.bool_)
+    anchor_is_a = np.empty(ns, np.bool_)
+    out = np.zeros((ns, 11))
+    mu_arr = np.full(ns, float(mu))
+    have = warm is not None
+    H0 = warm[0].copy() if have else np.empty(ns)
+    V0 = warm[1].copy() if have else np.empty(ns)
+    dep = math.nan if depth is None else float(depth)
+    geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu_arr, dep, 1e-6 * (1.0 if depth is None else max(1.0, dep)),
+                       H0, V0, have, tol, geom, seabed, anchor_is_a, out)
+    h, v = geom[:, 0], geom[:, 1]
+    cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol)
+    return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
+
+
+def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol) -> CatenaryResult:
+    n = h.size
+    bad = out[:, 10] == 0.0
+    H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
+    K = out[:, 5:9].reshape(n, 2, 2).copy()
+    reg = out[:, 9].astype(np.int8)
+    iters = 0
+    if bad.any():
+        r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol)
+        H[bad], V[bad], HA[bad], VA[bad], LB[bad] = r.H_fairlead, r.V_fairlead, r.H_anchor, r.V_anchor, \
+            r.grounded_length
+        K[bad] = r.stiffness
+        reg[bad] = r.regime
+        iters = r.iterations
+    return CatenaryResult(H, V, HA, VA, np.hypot(H, V), np.hypot(HA, VA), LB, K, reg, iters, h, v, L, EA, w,
+                          mu_arr, seabed)
 
 
 def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResult:

@@ -28,8 +28,8 @@ import numpy as np
 
 from ..statics.catenary import CatenaryRegime
 from . import _stat_kernel as _k
-from ._stat_cat import catenaries
-from ._stat_model import BODY, Assembly, rotation, skew
+from ._stat_cat import frame_and_catenaries
+from ._stat_model import BODY, Assembly, rotation
 
 _GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
 _GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
@@ -51,6 +51,7 @@ class BodyData:
     q0: np.ndarray            # (nb, 6) position given (for a user hydrostatic matrix)
     f0: np.ndarray            # (nb, 6) weight + buoyancy at the given position (user matrix only)
     external: np.ndarray      # (nb, 6)
+    external_scale: float     # largest component of the external loads [N or N m]
 
 
 @dataclass
@@ -73,6 +74,7 @@ class Evaluation:
     e: np.ndarray             # (ns, 2) horizontal unit vectors anchor -> fairlead
     node_force: np.ndarray    # (nn, 3) total force on each node (lines + node loads) [N]
     scale: float              # force scale for the relative residual [N]
+    hydro: np.ndarray         # (6 nb, 6 nb) restoring of the bodies' weight, buoyancy, waterplane
 
 
 def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
@@ -98,7 +100,8 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
                     z0=np.array([b.position[2] for b in bodies], float),
                     khs=[None if b.hydrostatic_stiffness is None else np.asarray(b.hydrostatic_stiffness, float)
                          for b in bodies],
-                    q0=arr("position").reshape(nb, 6), f0=f0, external=ext)
+                    q0=arr("position").reshape(nb, 6), f0=f0, external=ext,
+                    external_scale=float(np.abs(ext).max(initial=0.0)))
 
 
 def node_positions(asm: Assembly, X, R, P):
@@ -109,10 +112,6 @@ def node_positions(asm: Assembly, X, R, P):
         k = asm.node_body[bn]
         P[bn] = X[k] + np.einsum("nij,nj->ni", R[k], asm.node_rel[bn])
     return P
-
-
-def _seabed_tol(asm):
-    return 1e-6 * max(1.0, asm.depth)
 
 
 def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None) -> Evaluation:
@@ -126,11 +125,12 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     ns = asm.sub_a.size
     ndof = 6 * nb + 3 * nfree
     P = node_positions(asm, st.X, st.R, st.P)
-    cat, anchor_is_a, e, tiny = _catenaries(asm, P, warm)
+    cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
+                                                     asm.friction, asm.depth, warm)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     grounded = _GROUNDED[cat.regime]
-    K = np.where(np.isfinite(cat.stiffness), cat.stiffness, 0.0)
+    K = cat.stiffness
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
                 cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), asm.node_force, asm.node_kind,
                 asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
@@ -149,50 +149,11 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
             M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
             own_jac[k] = -bd.khs[k] @ M
     jac = jac_lines.copy()
+    hydro = np.zeros((6 * nb, 6 * nb))
     for k in range(nb):
         res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
         jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
-    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)),
-                float(np.abs(asm.node_force).max(initial=0.0)), float(np.abs(own).max(initial=0.0)),
-                float(np.abs(bd.external).max(initial=0.0)))
-    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale)
-
-
-def _catenaries(asm: Assembly, P: np.ndarray, warm):
-    pa, pb = P[asm.sub_a], P[asm.sub_b]
-    anchor_is_a = pa[:, 2] <= pb[:, 2]
-    pA = np.where(anchor_is_a[:, None], pa, pb)
-    d = np.where(anchor_is_a[:, None], pb, pa) - pA
-    h = np.hypot(d[:, 0], d[:, 1])
-    v = np.maximum(d[:, 2], 0.0)
-    if asm.depth is None:
-        seabed = np.zeros(h.shape, bool)
-    else:
-        seabed = pA[:, 2] <= -asm.depth + _seabed_tol(asm)
-    cat = catenaries(h, v, asm.sub_L, asm.sub_EA, asm.sub_w, asm.friction, seabed, warm)
-    tiny = h <= 1e-9 * asm.sub_L
-    e = np.where(tiny[:, None], np.array([1.0, 0.0]), d[:, :2] / np.where(tiny, 1.0, h)[:, None])
-    return cat, anchor_is_a, e, tiny
-
-
-def hydrostatic_matrix(asm: Assembly, bd: BodyData, st: State) -> np.ndarray:
-    """Block-diagonal restoring of the free bodies' weight, buoyancy and waterplane (6 nb)^2."""
-    nb = len(asm.free_bodies)
-    out = np.zeros((6 * nb, 6 * nb))
-    rho, g = asm.rho, asm.g
-    for k in range(nb):
-        R = st.R[k]
-        if bd.khs[k] is None:
-            W = np.array([0.0, 0.0, -bd.mass[k] * g])
-            B = np.array([0.0, 0.0, rho * g * bd.volume[k]])
-            Pm = rho * g * np.array([[0.0, bd.iwp[k, 0], 0.0], [-bd.iwp[k, 1], 0.0, 0.0], [0.0, 0.0, 0.0]])
-            blk = np.zeros((6, 6))
-            blk[2, 2] = rho * g * bd.awp[k]
-            blk[3:, 3:] = -(skew(W) @ skew(R @ bd.rcg[k]) + skew(B) @ skew(R @ bd.rcb[k]) - Pm @ skew(R[:, 2]))
-        else:
-            from ._stat_model import euler, euler_rate_map
-            M = np.eye(6)
-            M[3:, 3:] = np.linalg.inv(euler_rate_map(euler(R)))
-            blk = bd.khs[k] @ M
-        out[6 * k:6 * k + 6, 6 * k:6 * k + 6] = blk
-    return out
+        hydro[6 * k:6 * k + 6, 6 * k:6 * k + 6] = -own_jac[k]
+    scale = max(1.0, np.abs(fa).max(initial=0.0), np.abs(fb).max(initial=0.0), float(np.abs(asm.node_force).max(initial=0.0)),
+                np.abs(own).max(initial=0.0), bd.external_scale)
+    return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)

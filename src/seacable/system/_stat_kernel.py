@@ -80,6 +80,11 @@ def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, ground
             nf[iA, i] += fA[i]
             nf[iF, i] += fF[i]
         k00, k01, k10, k11 = K[s, 0, 0], K[s, 0, 1], K[s, 1, 0], K[s, 1, 1]
+        # a tensioned line lying flat has dV/dz = inf (lift-off); its end's height is held
+        k00 = k00 if np.isfinite(k00) else 0.0
+        k01 = k01 if np.isfinite(k01) else 0.0
+        k10 = k10 if np.isfinite(k10) else 0.0
+        k11 = k11 if np.isfinite(k11) else 0.0
         hs = max(np.hypot(P[ib, 0] - P[ia, 0], P[ib, 1] - P[ia, 1]), 1e-300)
         kt = k00 if tiny[s] else HF[s] / hs
         _block(k00, k01, k10, k11, kt, ex, ey, DF)

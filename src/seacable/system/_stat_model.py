@@ -50,16 +50,6 @@ def euler_rate_map(angles) -> np.ndarray:
     return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
 
-def skew(v) -> np.ndarray:
-    """[v]x, the matrix of the cross product v x (.); works on (..., 3)."""
-    v = np.asarray(v, float)
-    out = np.zeros(v.shape[:-1] + (3, 3))
-    out[..., 0, 1], out[..., 0, 2] = -v[..., 2], v[..., 1]
-    out[..., 1, 0], out[..., 1, 2] = v[..., 2], -v[..., 0]
-    out[..., 2, 0], out[..., 2, 1] = -v[..., 1], v[..., 0]
-    return out
-
-
 @dataclass
 class Assembly:
     """Flattened system (see the module docstring); arrays indexed by node or sub-line."""

@@ -36,9 +36,11 @@ Model
   friction. A sub-line between two points on the seabed lies flat.
 * Equilibrium: Newton on all free DOFs (6 per free body: translations and small rotations about
   the global axes; 3 per free point) with the analytic Jacobian; each sub-line's catenary
-  restarts from its previous end forces (compiled, :mod:`._stat_cat`), steps are limited (5 %
-  of the longest sub-line, 0.2 rad) with backtracking on the residual norm, and when that fails
-  the external loads are ramped up in 5, then 20 steps.
+  restarts from its previous end forces (compiled, :mod:`._stat_cat`). Steps are clipped per
+  body and point (5 % of the longest sub-line, 0.2 rad) and kept if the residual norm grows
+  less than tenfold (non-monotone: a line lifting off or a point landing), else halved, then
+  replaced by the Newton step scaled as a whole with backtracking; when that fails the external
+  loads are ramped up in 5, then 20 steps.
 
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
@@ -55,14 +57,14 @@ References
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
-from ._stat_eval import Evaluation, State, body_data, evaluate, hydrostatic_matrix, node_positions
+from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from ._stat_model import Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -255,9 +257,14 @@ class _Problem:
 
     def __init__(self, system, env, external, tol, max_iter):
         self.system, self.env = system, env
-        self.asm = _assembly(system, env)
+        self.asm, base = _assembly(system, env)
         _check_external(system, self.asm, external)
-        self.bd = body_data(self.asm, system, external)
+        self.bd = base
+        if external:
+            ext = base.external.copy()
+            for name, load in external.items():
+                ext[self.asm.free_bodies.index(self.asm.body_names.index(name))] += np.asarray(load, float)
+            self.bd = replace(base, external=ext, external_scale=float(np.abs(ext).max(initial=0.0)))
         self.tol, self.max_iter = tol, max_iter
         asm = self.asm
         self.nb = len(asm.free_bodies)
@@ -268,6 +275,9 @@ class _Problem:
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
+        self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
+        for k in range(self.nb):
+            self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -291,6 +301,8 @@ class _Problem:
 
     def _z_dof(self, st: State) -> np.ndarray:
         """DOF indices of the grounded free nodes' z."""
+        if not st.grounded.any():
+            return np.zeros(0, int)
         j = np.flatnonzero(st.grounded[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
@@ -312,13 +324,8 @@ class _Problem:
         return ev
 
     def error(self, ev: Evaluation) -> float:
-        r = ev.residual / ev.scale
-        if self.nb:
-            rot = np.zeros(r.size, bool)
-            for k in range(self.nb):
-                rot[6 * k + 3:6 * k + 6] = True
-            r = np.where(rot, r / self.length_scale, r)
-        return float(np.abs(r).max(initial=0.0))
+        """Largest residual relative to the force scale (moments also to the length scale)."""
+        return float(np.abs(self._scaled(ev)).max(initial=0.0))
 
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
         nb = self.nb
@@ -335,9 +342,13 @@ class _Problem:
             grounded[fn[low]] = True
         return State(X, R, P, grounded)
 
-    def newton(self, st: State, load: float):
-        """Newton with step limits and backtracking; returns (state, evaluation, converged)."""
-        ev = self.eval(st, load)
+    def newton(self, st: State, load: float, ev: Evaluation | None = None):
+        """Newton with step limits and backtracking; returns (state, evaluation, converged).
+
+        ``ev``: the evaluation at ``st`` if already made (with the same load).
+        """
+        if ev is None:
+            ev = self.eval(st, load)
         err = self.error(ev)
         stalls = 0
         for _ in range(self.max_iter):
@@ -351,33 +362,29 @@ class _Problem:
             if not np.all(np.isfinite(dq)):
                 return st, ev, False
             merit = np.linalg.norm(self._scaled(ev))
-            accepted = fallback = None
-            # the per-object clipped step first, then the Newton direction scaled as a whole (a
-            # descent direction of the residual norm), each with backtracking
-            for cand in (self.clip(dq), dq * self.uniform_limit(dq)):
-                alpha = 1.0
-                for _ls in range(5):
-                    trial = self.step(st, cand, alpha)
-                    try:
-                        ev2 = self.eval(trial, load)
-                    except (NoSolutionError, ConvergenceError):
-                        alpha *= 0.5
-                        continue
-                    if fallback is None:
-                        fallback = (trial, ev2)
-                    if np.linalg.norm(self._scaled(ev2)) < (1 - 1e-4 * alpha) * merit:
-                        accepted = (trial, ev2)
-                        break
-                    alpha *= 0.5
-                if accepted is not None:
+            accepted = None
+            # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
+            # if the residual norm grows less than GROWTH-fold (a change of regime - a line lifting
+            # off, a point landing - makes it non-monotone), else halved, then the Newton
+            # direction scaled as a whole (a descent direction of the norm) with backtracking
+            alpha = 1.0
+            cand = self.clip(dq)
+            for trial_n in range(8):
+                if trial_n == 3:
+                    cand, alpha = dq * self.uniform_limit(dq), 1.0
+                trial = self.step(st, cand, alpha)
+                alpha *= 0.5
+                try:
+                    ev2 = self.eval(trial, load)
+                except (NoSolutionError, ConvergenceError):
+                    continue
+                m2 = np.linalg.norm(self._scaled(ev2))
+                if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
+                    accepted = (trial, ev2)
+                    stalls = stalls + 1 if m2 >= merit else 0
                     break
-            if accepted is None:
-                # no decrease: take the clipped step anyway (the residual norm is not monotone
-                # through a change of regime); give up after many such steps
-                stalls += 1
-                accepted = fallback
-                if accepted is None or stalls > 30:
-                    return st, ev, False
+            if accepted is None or stalls > 30:
+                return st, ev, False
             st, ev = accepted
             err = self.error(ev)
         return st, ev, err <= self.tol
@@ -410,26 +417,26 @@ class _Problem:
         return dq
 
     def _scaled(self, ev):
-        r = ev.residual / ev.scale
-        for k in range(self.nb):
-            r[6 * k + 3:6 * k + 6] /= self.length_scale
-        return r
+        return ev.residual * self.weights / ev.scale
 
 
+_GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much (non-monotone)
 _CACHE: dict = {}
 
 
-def _assembly(system: MooringSystem, env: Environment) -> Assembly:
-    """The flattened system, kept for the last few (system, environment) pairs (both frozen)."""
+def _assembly(system: MooringSystem, env: Environment):
+    """The flattened system and its bodies' constants, kept for the last few (system, environment)
+    pairs (both frozen models)."""
     key = (id(system), id(env))
     hit = _CACHE.get(key)
     if hit is not None and hit[0] is system and hit[1] is env:
-        return hit[2]
+        return hit[2], hit[3]
     asm = assemble(system, env)
+    base = body_data(asm, system, None)
     if len(_CACHE) >= 8:
         _CACHE.pop(next(iter(_CACHE)))
-    _CACHE[key] = (system, env, asm)
-    return asm
+    _CACHE[key] = (system, env, asm, base)
+    return asm, base
 
 
 def _rotvec(th) -> np.ndarray:
@@ -476,7 +483,7 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     nb = prob.nb
     if nb == 0:
         return
-    hyd = hydrostatic_matrix(prob.asm, prob.bd, st)
+    hyd = ev.hydro
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     moor = _condense(-ev.jac_lines, nb, pts)
     tot = np.diag(hyd) + np.diag(moor)
@@ -579,7 +586,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                               "points where every line can reach.") from None
     _check_stability(prob, st0, ev0)
-    st, ev, ok = prob.newton(st0, 1.0)
+    st, ev, ok = prob.newton(st0, 1.0, ev0)
     if not ok:
         # load ramp: external loads in steps from zero, each step from the last solution
         for n_steps in (5, 20):
@@ -668,7 +675,7 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     K = _condense(-ev.jac_lines, nb, pts)
-    hyd = hydrostatic_matrix(asm, prob.bd, st)
+    hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
     grounded = np.zeros(len(asm.line_names))
