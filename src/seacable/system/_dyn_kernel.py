@@ -186,13 +186,14 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
 
 
 @njit(cache=True)
-def iterate(X, V, A, q, qd, qdd, t, cm, cc, dynamic, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
+def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular.
 
-    ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
+    ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
+    step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
     count in the residual divided by the body's size (their largest point arm, at least 1 m).
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy) = args
@@ -258,7 +259,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cc, dynamic, args, weight, fidx, nfree, 
                     v += M6[k, c] * qdd[b, c]
             Rq[6 * b + k] = v
             for c in range(6):
-                Jq[6 * b + k, 6 * b + c] += cm * M6[k, c]
+                Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
         # stiffness and damping of the body's own forces by forward differences
         for c in range(6):
             h = 1e-6 * (1.0 + abs(q[b, c]))
@@ -452,7 +453,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 for k in range(6):
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
-            solved = iterate(X, V, A, q, qd, qdd, t, c0, c1, True, args, weight, fidx, nfree, bw, env, cur_depth,
+            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, args, weight, fidx, nfree, bw, env, cur_depth,
                              cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
                              bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
             res, scale = out[0], out[1]
@@ -499,8 +500,11 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
 @njit(cache=True)
 def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed, node_fext, con_node, con_body,
                    con_arm, con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, max_iter,
-                   max_step, F, M, tension, stats):
+                   max_step, body_scale, F, M, tension, stats):
     """Static equilibrium of the lines and bodies by pseudo-transient Newton, ``(K + lam M) dx = -R``.
+
+    The bodies' mass matrices in ``M`` are scaled by ``body_scale`` (a node's mass over a body's), so
+    that the pseudo-time moves a body as fast as a node.
 
     ``lam`` [1/s^2] starts where a node under its weight moves a fraction of an element and follows the
     residual (switched evolution relaxation); a step is limited to ``max_step`` [m] of any node or body
@@ -524,7 +528,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     res_prev = np.inf
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
     for it in range(max_iter):
-        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, 0.0, False, args, weight, fidx, nfree, bw, env, cur_depth,
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
         res, scale = out[0], out[1]

@@ -495,10 +495,13 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
     stats = np.zeros(3)
     step = 0.5 * float(np.mean(net.length))
     active = np.ones(len(fe.con_node), np.int64)
+    node_mass = float(np.max(net.mass_per_length * net.length))
+    body_mass = float(np.max(fe.bpar[:, DK.B_MASS], initial=0.0)) + float(np.max(fe.badd[:, 0, 0], initial=0.0))
+    body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 else 1.0
     bargs = fe.body_args() if not held else tuple(np.zeros((0,) + a.shape[1:], a.dtype) for a in fe.body_args())
     ok = DK.coupled_static(X, qs, fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
                            fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
-                           step, F, M, tension, stats)
+                           step, body_scale, F, M, tension, stats)
     if not ok:
         qtxt = "" if not len(qs) else f"; the bodies ended at {np.array2string(qs, precision=4)}"
         raise ConvergenceError(
