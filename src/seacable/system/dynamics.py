@@ -161,6 +161,10 @@ class SystemDynamicAnalysis(Model):
     failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
     start: Literal["equilibrium", "held"] = Field(
         "equilibrium", description="Static start of the whole system, or with free bodies held at their position.")
+    release_offsets: dict[str, _SIX] = Field(
+        default_factory=dict, description="Free decay: each named free body held at its equilibrium plus this "
+                                          "offset (x, y, z [m], roll, pitch, yaw [rad]) while the lines settle, "
+                                          "then released at t = 0.")
     seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
     damping_ratio: quantity("-", ge=0, le=10) = Field(
         0.0, description="Axial damping ratio of each element's axial mode (MoorDyn's BA = -ratio). [-]")
@@ -175,6 +179,8 @@ class SystemDynamicAnalysis(Model):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
+        if self.release_offsets and self.start == "held":
+            raise ValueError("release_offsets start from the equilibrium: they need 'start: equilibrium'.")
         if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
             raise ValueError(f"rayleigh must hold two finite numbers >= 0 (alpha [1/s], beta [s]), got "
                              f"{self.rayleigh}.")
@@ -402,6 +408,13 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         fairlead_end.append(0 if moved[0] and not moved[1] else 1)
     P = np.vstack(props)
     nn = len(pos)
+    # a point no line ends at any more (its line fails there: the line's end has its own node) carries
+    # nothing: held, and not tied
+    used = np.zeros(nn, bool)
+    used[np.asarray(elements, np.int64).ravel()] = True
+    for k in np.flatnonzero(~used):
+        kind[k] = FIXED
+    con = [c for c in con if used[c[0]]]
 
     def full(point_values, key):
         return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
@@ -711,7 +724,8 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     system = _system_of(case)
     where = "analysis"
     for key, names, want in (("body_motions", a.body_motions, ("prescribed",)),
-                             ("external_forces", a.external_forces, ("free",))):
+                             ("external_forces", a.external_forces, ("free",)),
+                             ("release_offsets", a.release_offsets, ("free",))):
         for name in names:
             if name not in system.bodies:
                 raise InputError(f"{where}.{key}: body '{name}' is not defined (bodies: "
@@ -838,8 +852,15 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
 
 
 def start_state(fe: SystemFE, analysis: SystemDynamicAnalysis) -> SystemState:
-    """The static start of a run: the coupled equilibrium, or the lines' equilibrium with the free bodies held."""
-    return static_system(fe, held=analysis.start == "held", tol=analysis.tolerance)
+    """The static start of a run: the coupled equilibrium, or the lines' equilibrium with the free bodies held
+    (at their given positions, or at the equilibrium plus ``release_offsets``)."""
+    st = static_system(fe, held=analysis.start == "held", tol=analysis.tolerance)
+    if not analysis.release_offsets:
+        return st
+    q = st.body_position.copy()
+    for name, off in analysis.release_offsets.items():
+        q[fe.free_bodies.index(name)] += np.asarray(off, float)
+    return static_system(fe, held=True, q=q, X=st.position, tol=analysis.tolerance)
 
 
 def run_system_dynamic(case, progress=None):
