@@ -236,7 +236,7 @@ def floating(**body):
 def heave_run(system, amp=0.5, periods=4, steps=100):
     K, st = mooring_stiffness(system, 2, 0.05)
     body = system.bodies["buoy"]
-    k_total = RHO * G * body.waterplane_area + K[2]
+    k_total = RHO * G * (body.waterplane_area or 50.0) + K[2]
     T0 = 2 * math.pi * math.sqrt((body.mass + body.added_mass[2][2]) / k_total)
     q = st.body_position[0]
     ds = run(system, release_offsets={"buoy": (0, 0, amp, 0, 0, 0)}, duration=periods * T0,
@@ -244,13 +244,21 @@ def heave_run(system, amp=0.5, periods=4, steps=100):
     return ds, T0, k_total, K[2], q
 
 
-def test_heave_oscillates_at_the_hydrostatic_frequency():
+@pytest.mark.parametrize("hydrostatics", ["waterplane", "matrix"])
+def test_heave_oscillates_at_the_hydrostatic_frequency(hydrostatics):
     """Heave free decay of the floating buoy on its weak mooring: omega = sqrt((rho g A_wp + K33) / (M + A33))
     with K33 the ropes' heave stiffness (< 1 % of rho g A_wp = 503 kN/m, from the FE statics). Tolerance
     0.3 %: the ropes' inertia (585 kg, 0.04 % of M + A33) and Newmark's (w dt)^2 / 12 = 3e-4 at 100 steps
     per period. A hydrostatic term left out (A_wp) or the added mass left out (A33 = 5e5 kg, a third of the
-    inertia) moves the period by > 10 %."""
-    ds, T0, k_total, k_lines, _ = heave_run(floating())
+    inertia) moves the period by > 10 %. The same with the user's 6x6 hydrostatic matrix (rho g A_wp in
+    heave, the waterplane area not given)."""
+    system = floating()
+    if hydrostatics == "matrix":
+        C = np.zeros((6, 6))
+        C[2, 2] = RHO * G * 50.0
+        C[3, 3] = C[4, 4] = 1e8  # roll and pitch held up (not excited)
+        system = floating(waterplane_area=0.0, hydrostatic_stiffness=C.tolist())
+    ds, T0, k_total, k_lines, _ = heave_run(system)
     assert abs(k_lines) < 0.01 * RHO * G * 50.0  # a weak mooring: the waterplane carries the heave
     T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(dof="z").values[:, 0])))
     assert T == pytest.approx(T0, rel=0.003)
