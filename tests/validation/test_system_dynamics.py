@@ -297,25 +297,30 @@ def test_quadratic_damping_takes_its_energy_per_cycle():
 
 
 def test_external_force_series_moves_the_body_to_the_static_offset(tmp_path):
-    """A surge force from a CSV series, ramped from 0 to 20 kN over 20 s and then held, with linear surge
-    damping (zeta about 0.5) to settle: the body ends where the FE statics puts it under a constant 20 kN
-    (the same system with external_force), within 1 % of that offset (0.44 m; the residual of the decay
-    after six damped periods is below 0.1 %). The submerged buoy on its chains (K11 = 46 kN/m)."""
+    """A surge force from a CSV series, ramped linearly from 0 to 20 kN over 200 s and then held, with
+    linear surge damping c (zeta about 0.5). On the ramp F = a t the body follows the quasi-static
+    x = a (t - c / K11) / K11 once the start's transient has died (e^-(zeta w t) = 2e-5 at 150 s; the mass
+    term vanishes on a linear ramp): at 150 s, x / x_end = (150 - c / K11) / 200 = 0.717, within 2 % (the
+    stiffness's change over the 0.44 m, below 1 %). At the end the body sits where the FE statics puts it
+    under a constant 20 kN (the same system with external_force), within 1 % of that offset (the decay's
+    residue is below 0.1 %). The submerged buoy on its chains (K11 = 45.8 kN/m)."""
     system = buoy_system(body=dict(center_of_gravity=(0, 0, -10)))
     csv = tmp_path / "force.csv"
-    csv.write_text("time,fx,fy,fz,mx,my,mz\n0,0,0,0,0,0,0\n20,2e4,0,0,0,0,0\n1000,2e4,0,0,0,0,0\n")
+    csv.write_text("time,fx,fy,fz,mx,my,mz\n0,0,0,0,0,0,0\n200,2e4,0,0,0,0,0\n1000,2e4,0,0,0,0,0\n")
+    c = 3e5
     B = np.zeros((6, 6))
-    B[0, 0] = 3e5
+    B[0, 0] = c
     damped = with_body(system, linear_damping=B.tolist())
-    fe0 = build_system_fe(system, ENV)
-    q0 = static_system(fe0).body_position[0]
+    K, st0 = mooring_stiffness(system, 0, 0.1)
+    q0 = st0.body_position[0]
     loaded = with_body(system, external_force=(2e4, 0, 0, 0, 0, 0))
     q1 = static_system(build_system_fe(loaded, ENV)).body_position[0]
-    ds = run(damped, duration=400.0, time_step=0.5, output_interval=1.0,
+    ds = run(damped, duration=600.0, time_step=0.5, output_interval=1.0,
              external_forces={"buoy": {"file": str(csv)}})
-    x_end = ds.body_position.sel(dof="x").values[-1, 0]
+    x = ds.body_position.sel(dof="x").values[:, 0] - q0[0]
     assert q1[0] - q0[0] > 0.3
-    assert x_end - q0[0] == pytest.approx(q1[0] - q0[0], rel=0.01)
+    assert x[-1] == pytest.approx(q1[0] - q0[0], rel=0.01)
+    assert x[150] / x[-1] == pytest.approx((150 - c / K[0]) / 200, rel=0.02)
 
 
 def test_weight_acts_at_the_centre_of_gravity():
