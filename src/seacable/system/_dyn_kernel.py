@@ -133,6 +133,54 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
 
 
 @njit(cache=True)
+def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
+    """The Newton matrices of the body's own forces: ``K = -df6/dq`` and ``C = -df6/dqd`` (rotation
+    increments as small rotation vectors; the damping's turning with the body and the mass matrix's
+    change with the angles left out, which only slows Newton, not the answer).
+
+    Weight ``F`` at the turning arm ``c``: ``-skew(F) skew(c)`` (MoorPy's Body.getStiffnessA); buoyancy
+    the same at the centre of buoyancy plus the waterplane's heave term and its moment arm; waterplane
+    roll and pitch terms; or the user's matrix.
+    """
+    R = np.empty((3, 3))
+    rotation(q[3], q[4], q[5], R)
+    S1 = np.empty((3, 3))
+    S2 = np.empty((3, 3))
+    K[:] = 0.0
+    C[:] = 0.0
+    m = par[B_MASS]
+    F = np.zeros(3)
+    if par[B_HASK] > 0.0:
+        K[:] = khs
+    else:
+        F[2] = -m * g
+        _skew(F, S1)
+        _skew(R @ par[B_CG:B_CG + 3], S2)
+        K[3:, 3:] -= S1 @ S2
+        cb = R @ par[B_CB:B_CB + 3]
+        F[2] = rho * g * (par[B_VOL] - par[B_AWP] * (q[2] - par[B_Q0 + 2]))
+        _skew(F, S1)
+        _skew(cb, S2)
+        K[3:, 3:] -= S1 @ S2
+        kw = rho * g * par[B_AWP]
+        K[2, 2] += kw
+        # d(cb x (0, 0, -kw dz)) / dz, negated
+        K[3, 2] += cb[1] * kw
+        K[4, 2] -= cb[0] * kw
+        K[3, 3] += rho * g * par[B_IXX]
+        K[4, 4] += rho * g * par[B_IYY]
+    R6 = np.zeros((6, 6))
+    R6[:3, :3] = R
+    R6[3:, 3:] = R
+    vb = R6.T @ qd
+    D = lin.copy()
+    for k in range(6):
+        for j in range(6):
+            D[k, j] += 2.0 * quad[k, j] * abs(vb[j])
+    C[:] = R6 @ D @ R6.T
+
+
+@njit(cache=True)
 def band_factor(band, bw):
     """LU factor of a banded matrix in place (no pivoting); False on a zero pivot."""
     n = band.shape[0]
@@ -152,19 +200,39 @@ def band_factor(band, bw):
 
 @njit(cache=True)
 def band_substitute(band, bw, rhs, first):
-    """Solve with a factored band in place; ``rhs`` is zero above row ``first`` (skips that part)."""
+    """Solve with a factored band in place. ``first`` >= 0: ``rhs`` is the unit vector of row ``first``;
+    ``first`` < 0: any ``rhs``.
+
+    For a unit vector exact zeros are skipped: the forward sweep stops where its fill ends, and the
+    backward sweep starts there and stops above ``first`` once ``bw`` rows in a row came out zero, so the
+    column of a node on one line of a network of separate lines costs that line's rows only.
+    """
     n = rhs.size
+    unit = first >= 0
+    if not unit:
+        first = 0
+    last = first if unit else n
     for k in range(first, n):
+        if k > last + bw:
+            break
         rk = rhs[k]
         if rk == 0.0:
             continue
+        if unit:
+            last = k
         for i in range(k + 1, min(n, k + bw + 1)):
             rhs[i] -= band[i, bw + k - i] * rk
-    for k in range(n - 1, -1, -1):
+    top = min(n - 1, last + bw)
+    low = top + 1
+    for k in range(top, -1, -1):
+        if unit and k < first and k + bw < low:
+            break
         s = rhs[k]
         for j in range(k + 1, min(n, k + bw + 1)):
             s -= band[k, bw + j - k] * rhs[j]
         rhs[k] = s / band[k, bw]
+        if rhs[k] != 0.0:
+            low = k
 
 
 @njit(cache=True)
@@ -236,12 +304,12 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nf
     Rq = np.zeros(6 * nb)
     Jq = np.zeros((6 * nb, 6 * nb))
     f6 = np.zeros(6)
-    fp = np.zeros(6)
     M6 = np.zeros((6, 6))
-    Mw = np.zeros((6, 6))
     R = np.empty((3, 3))
     S1 = np.empty((3, 3))
     S2 = np.empty((3, 3))
+    Kb = np.empty((6, 6))
+    Cb = np.empty((6, 6))
     arm = np.zeros(3)
     size = np.ones(nb)
     for j in range(con_node.size):
@@ -260,23 +328,10 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nf
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
-        # stiffness and damping of the body's own forces by forward differences
-        for c in range(6):
-            h = 1e-6 * (1.0 + abs(q[b, c]))
-            qq = q[b].copy()
-            qq[c] += h
-            body_load(qq, qd[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
-                      fp, Mw)
-            for k in range(6):
-                Jq[6 * b + k, 6 * b + c] -= (fp[k] - f6[k]) / h
-            if dynamic and cc != 0.0:
-                hv = 1e-6 * (1.0 + abs(qd[b, c]))
-                vv = qd[b].copy()
-                vv[c] += hv
-                body_load(q[b], vv, t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho,
-                          g, fp, Mw)
-                for k in range(6):
-                    Jq[6 * b + k, 6 * b + c] -= cc * (fp[k] - f6[k]) / hv
+        body_tangent(q[b], qd[b], par, bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        for k in range(6):
+            for c in range(6):
+                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
         scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
     Rr = Rq.copy()
     for j in range(con_node.size):
@@ -312,7 +367,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nf
     if not band_factor(band, bw):
         return False
     y0 = -Ru
-    band_substitute(band, bw, y0, 0)
+    band_substitute(band, bw, y0, -1)
     m = 3 * nca + 6 * nb
     Y = np.zeros((nd, 3 * nca))
     rows = np.zeros(3 * nca, np.int64)
