@@ -254,7 +254,7 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
 
 
 @njit(cache=True)
-def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
+def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
@@ -363,6 +363,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, args, weight, fidx, nf
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
     out[0] = res
     out[1] = scale
+    if check and res <= scale:
+        return True  # converged: no correction needed
     # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T
     if not band_factor(band, bw):
         return False
@@ -508,7 +510,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 for k in range(6):
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
-            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, args, weight, fidx, nfree, bw, env, cur_depth,
+            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, args, weight, fidx, nfree, bw, env, cur_depth,
                              cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
                              bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
             res, scale = out[0], out[1]
@@ -583,7 +585,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     res_prev = np.inf
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
     for it in range(max_iter):
-        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, args, weight, fidx, nfree, bw, env, cur_depth,
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
         res, scale = out[0], out[1]
