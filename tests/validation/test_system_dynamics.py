@@ -443,3 +443,80 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     # the broken line hangs from its anchor: its free end element holds the end node's half element
     w = (CHAIN["mass_per_length"] - RHO * math.pi * CHAIN["diameter"] ** 2 / 4) * G
     assert float(ds.fairlead_tension.isel(time=-1).sel(line="line0")) == pytest.approx(w * 390.0 / 20 / 2, rel=0.01)
+
+
+# ------------------------------------------------------------------------------------------- prescribed bodies
+
+
+def test_a_prescribed_body_moved_as_the_free_one_moved_loads_its_lines_alike(tmp_path):
+    """The free surge decay of the buoy (released 2 m, 100 s), then the same buoy as a prescribed body whose
+    6-DOF motion is the free run's (a CSV of surge ... yaw every 0.1 s, a natural cubic spline between):
+    the lines see the same fairlead paths, so the fairlead tensions agree: within 2e-4 of the mean tension
+    (the spline through the 0.1 s samples against the coupled step's own Newmark kinematics, 3.4e-5 here;
+    a body force or inertia that the coupling lost would show at the percent level, the size of the
+    body's line force swing). The prescribed body's reported position is the motion's, and its fairleads
+    sit at r + R p."""
+    system = buoy_system(body=dict(center_of_gravity=(0, 0, -10)))
+    free, q = release(system, [2.0, 0, 0, 0, 0, 0], duration=100.0, time_step=0.1, output_interval=0.1)
+    qt = free.body_position.sel(body="buoy").values
+    csv = tmp_path / "motion.csv"
+    rows = np.column_stack([free.time.values, qt - qt[0]])
+    np.savetxt(csv, rows, delimiter=",", header="time,surge,sway,heave,roll,pitch,yaw", comments="")
+    prescribed = with_body(system, kind="prescribed", position=tuple(qt[0]))
+    ds = run(prescribed, duration=100.0, time_step=0.1, output_interval=0.1,
+             body_motions={"buoy": {"type": "platform", "file": str(csv)}})
+    T_free, T_pres = free.fairlead_tension.values, ds.fairlead_tension.values
+    assert np.max(np.abs(T_pres - T_free)) < 2e-4 * np.mean(T_free)
+    np.testing.assert_allclose(ds.body_position.sel(body="buoy").values, qt, atol=1e-9)
+    # the fairleads sit on the moved body: x = r + R p
+    from seacable.mooring.motion import rotation_matrix
+
+    fair = np.column_stack([ds[c].sel(line="line0").values[:, -1] for c in "xyz"])
+    R = rotation_matrix(qt[:, 3], qt[:, 4], qt[:, 5])
+    np.testing.assert_allclose(fair, qt[:, :3] + R @ np.array([10.0, 0, 0]), atol=1e-9)
+
+
+# ------------------------------------------------------------------------------------------- bad input
+
+
+def _case(system, **analysis):
+    return SimpleNamespace(environment=ENV, analysis=SystemDynamicAnalysis(**analysis), system=system, name="bad")
+
+
+@pytest.mark.parametrize("analysis, match", [
+    (dict(failures=[{"line": "lin0", "end": "a", "time": 1.0}]), "line 'lin0' is not defined.*line0"),
+    (dict(external_forces={"boy": {"times": [0, 10], "values": [[0] * 6, [0] * 6]}}), "body 'boy' is not defined"),
+    (dict(external_forces={"buoy": {"times": [0, 5], "values": [[0] * 6, [0] * 6]}}), "covers 0 to 5 s"),
+    (dict(body_motions={"buoy": {"type": "platform", "amplitude": [1, 0, 0, 0, 0, 0], "period": 10}}),
+     "body 'buoy' is free"),
+    (dict(point_motions={"anchor0": {"type": "harmonic", "amplitude": [1, 0, 0], "period": 10}}),
+     "only coupled points follow a motion"),
+])
+def test_bad_input_is_refused_before_the_run(analysis, match):
+    from seacable.errors import InputError
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    with pytest.raises(InputError, match=match):
+        prepare_system_dynamic(_case(buoy_system(), duration=10.0, **analysis))
+
+
+def test_a_failure_at_a_free_point_is_refused():
+    from seacable.errors import InputError
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    lt = LineType(**CHAIN)
+    system = MooringSystem(
+        points={"a": dict(kind="fixed", position=(0, 0, -100)), "c": dict(kind="free", position=(50, 0, -50), mass=1e3),
+                "b": dict(kind="fixed", position=(100, 0, -100))},
+        lines={"l1": dict(line=Line.single(lt, 80.0), end_a="a", end_b="c"),
+               "l2": dict(line=Line.single(lt, 80.0), end_a="c", end_b="b")})
+    with pytest.raises(InputError, match="free point 'c'"):
+        prepare_system_dynamic(_case(system, duration=10.0, failures=[{"line": "l1", "end": "b", "time": 1.0}]))
+
+
+def test_a_prescribed_body_without_motion_is_warned():
+    from seacable.errors import SeacableWarning
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    with pytest.warns(SeacableWarning, match="prescribed but analysis.body_motions has no motion"):
+        prepare_system_dynamic(_case(with_body(buoy_system(), kind="prescribed"), duration=10.0))
