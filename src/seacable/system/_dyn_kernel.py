@@ -116,8 +116,10 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         # buoyancy of the volume at the reference pose, changed by the waterplane area with heave
         _add_point_force(f6, cb, 0.0, 0.0, rho * g * (par[B_VOL] - par[B_AWP] * (q[2] - q0[2])))
-        f6[3] -= rho * g * par[B_IXX] * (q[3] - q0[3])
-        f6[4] -= rho * g * par[B_IYY] * (q[4] - q0[4])
+        # the waterplane's moment rho g (I_xx a_y, -I_yy a_x, 0), a = R e_z (-rho g I phi for small roll or
+        # pitch), as the system statics
+        f6[3] += rho * g * par[B_IXX] * R[1, 2]
+        f6[4] -= rho * g * par[B_IYY] * R[0, 2]
     for k in range(6):
         f6[k] += par[B_FEXT + k]
     if ext_n > 0:
@@ -167,8 +169,12 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
         # d(cb x (0, 0, -kw dz)) / dz, negated
         K[3, 2] += cb[1] * kw
         K[4, 2] -= cb[0] * kw
-        K[3, 3] += rho * g * par[B_IXX]
-        K[4, 4] += rho * g * par[B_IYY]
+        # d a / d phi = -skew(a) for a = R e_z
+        a = np.array([R[0, 2], R[1, 2], R[2, 2]])
+        _skew(a, S1)
+        for j in range(3):
+            K[3, 3 + j] += rho * g * par[B_IXX] * S1[1, j]
+            K[4, 3 + j] -= rho * g * par[B_IYY] * S1[0, j]
     R6 = np.zeros((6, 6))
     R6[:3, :3] = R
     R6[3:, 3:] = R

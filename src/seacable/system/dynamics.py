@@ -10,9 +10,11 @@ point on a prescribed body follows the body's 6-DOF motion.
 A free body has six degrees of freedom: the reference point (x, y, z) and the angles (roll, pitch,
 yaw), ``R = Rz(yaw) Ry(pitch) Rx(roll)``. Its loads (global axes, moments about the reference point):
 weight ``m g`` at the centre of gravity and buoyancy ``rho g V`` at the centre of buoyancy (both turning
-with the body), the waterplane's heave stiffness ``rho g A_wp`` (the volume is the one at the body's
-given position) and roll and pitch stiffness ``rho g I_xx``, ``rho g I_yy`` -- or, when given, the
-user's 6x6 hydrostatic matrix about the given position (weight and buoyancy then as at that position);
+with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` (the volume is the one
+at the body's given position) and its moment ``rho g (I_xx a_y, -I_yy a_x, 0)`` with ``a = R e_z``
+(``-rho g I phi`` for small roll or pitch) -- or, when given, the user's 6x6 hydrostatic matrix about
+the given position (weight and buoyancy then as at that position): the conventions of the system
+statics (:mod:`seacable.system.statics`, MoorPy's Body);
 the constant external force, an optional external force time series, linear and quadratic damping
 (6x6, body axes: ``-B1 v - B2 |v| v``), added mass (6x6, body axes) and the forces of the lines at its
 points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
