@@ -13,15 +13,15 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "validation"))
-from test_system_dynamics import ENV, buoy_system  # noqa: E402
+from test_system_dynamics import ENV, buoy_system
 
-from seacable.mooring.solver import MooringModel, simulate  # noqa: E402
-from seacable.mooring.network import PRESCRIBED  # noqa: E402
-from seacable.system.dynamics import SystemDynamicAnalysis, build_system_fe, simulate_system, static_system  # noqa: E402
+from seacable.mooring.network import PRESCRIBED
+from seacable.mooring.solver import MooringModel, simulate
+from seacable.system.dynamics import SystemDynamicAnalysis, build_system_fe, simulate_system, static_system
 
 
 def main(duration=200.0, dt=0.1, repeat=5):
-    system = buoy_system(body=dict(center_of_gravity=(0, 0, -10)))
+    system = buoy_system(body={"center_of_gravity": (0, 0, -10)})
     a = SystemDynamicAnalysis(duration=duration, time_step=dt, output_interval=1.0, release_offsets={"buoy": (2, 0, 0, 0, 0, 0)})
     fe = build_system_fe(system, ENV, a)
     st = static_system(fe)

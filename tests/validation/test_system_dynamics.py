@@ -24,18 +24,24 @@ import pytest
 
 from seacable.environment import Environment
 from seacable.line import Line, LineType
-from seacable.system.dynamics import (SystemDynamicAnalysis, body_line_force, build_system_fe, run_system_dynamic,
-                                      simulate_system, static_system)
+from seacable.system.dynamics import (
+    SystemDynamicAnalysis,
+    body_line_force,
+    build_system_fe,
+    run_system_dynamic,
+    simulate_system,
+    static_system,
+)
 from seacable.system.model import MooringSystem
 
 RHO, G = 1025.0, 9.81
 DEPTH = 100.0
 ENV = Environment(depth=DEPTH, water_density=RHO, gravity=G)
-CHAIN = dict(diameter=0.1, mass_per_length=150.0, axial_stiffness=5e8, drag_normal=1.2, added_mass_normal=1.0)
+CHAIN = {"diameter": 0.1, "mass_per_length": 150.0, "axial_stiffness": 5e8, "drag_normal": 1.2, "added_mass_normal": 1.0}
 BARE = dict(CHAIN, drag_normal=0.0, added_mass_normal=0.0)  # no water loads on the lines
 # a light rope (0.5 kg/m, 1.75 N/m in water): a weak mooring whose inertia (585 kg on three lines) and
 # stiffness are negligible next to a buoy's, without water loads
-ROPE = dict(diameter=0.02, mass_per_length=0.5, axial_stiffness=1e6, drag_normal=0.0, added_mass_normal=0.0)
+ROPE = {"diameter": 0.02, "mass_per_length": 0.5, "axial_stiffness": 1e6, "drag_normal": 0.0, "added_mass_normal": 0.0}
 
 
 def buoy_system(position=(0, 0, -20, 0, 0, 0), mass=1e6, volume=1050.0, inertia=1e8, added=None, L=390.0,
@@ -44,12 +50,12 @@ def buoy_system(position=(0, 0, -20, 0, 0, 0), mass=1e6, volume=1050.0, inertia=
     points, lines = {}, {}
     for k in range(3):
         ang = 2 * math.pi * k / 3
-        points[f"anchor{k}"] = dict(kind="fixed", position=(R * math.cos(ang), R * math.sin(ang), -DEPTH))
-        points[f"fair{k}"] = dict(kind="body", body="buoy", position=(r * math.cos(ang), r * math.sin(ang), fair_z))
-        lines[f"line{k}"] = dict(line=Line.single(lt, L), end_a=f"anchor{k}", end_b=f"fair{k}", n_elements=n_el)
+        points[f"anchor{k}"] = {"kind": "fixed", "position": (R * math.cos(ang), R * math.sin(ang), -DEPTH)}
+        points[f"fair{k}"] = {"kind": "body", "body": "buoy", "position": (r * math.cos(ang), r * math.sin(ang), fair_z)}
+        lines[f"line{k}"] = {"line": Line.single(lt, L), "end_a": f"anchor{k}", "end_b": f"fair{k}", "n_elements": n_el}
     A = np.zeros((6, 6))
     A[[0, 1, 2], [0, 1, 2]] = RHO * volume if added is None else added
-    b = dict(kind="free", position=position, mass=mass, inertia=(inertia,) * 3, volume=volume, added_mass=A.tolist())
+    b = {"kind": "free", "position": position, "mass": mass, "inertia": (inertia,) * 3, "volume": volume, "added_mass": A.tolist()}
     b.update(body or {})
     return MooringSystem(points=points, bodies={"buoy": b}, lines=lines)
 
@@ -116,7 +122,7 @@ def test_surge_decay_period_against_the_single_dof_closed_form():
     """
     mass = 1e7
     volume = 1050 + (mass - 1e6) / RHO
-    system = buoy_system(mass=mass, volume=volume, added=RHO * 1050, body=dict(center_of_gravity=(0, 0, -10)))
+    system = buoy_system(mass=mass, volume=volume, added=RHO * 1050, body={"center_of_gravity": (0, 0, -10)})
     K, _ = mooring_stiffness(system, 0, 0.1)
     T0 = 2 * math.pi * math.sqrt((mass + RHO * 1050) / K[0])
     ds, _ = release(system, [0.3, 0, 0, 0, 0, 0], duration=4 * T0, time_step=T0 / 200, output_interval=T0 / 200)
@@ -228,7 +234,7 @@ def test_surge_decay_side_by_side_with_moordyn(tmp_path):
 def floating(**body):
     """A buoy floating at the surface (1e6 kg, waterplane 50 m^2, 1050 m^3 at z = 0, A33 = 5e5 kg) on three
     light ropes (a weak mooring; no water loads on them), fairleads at the waterline."""
-    extra = dict(waterplane_area=50.0, volume=1e6 / RHO)
+    extra = {"waterplane_area": 50.0, "volume": 1e6 / RHO}
     extra.update(body)
     return buoy_system(position=(0, 0, 0, 0, 0, 0), chain=ROPE, body=extra, added=5e5)
 
@@ -258,7 +264,7 @@ def test_heave_oscillates_at_the_hydrostatic_frequency(hydrostatics):
         C[2, 2] = RHO * G * 50.0
         C[3, 3] = C[4, 4] = 1e8  # roll and pitch held up (not excited)
         system = floating(waterplane_area=0.0, hydrostatic_stiffness=C.tolist())
-    ds, T0, k_total, k_lines, _ = heave_run(system)
+    ds, T0, _k_total, k_lines, _ = heave_run(system)
     assert abs(k_lines) < 0.01 * RHO * G * 50.0  # a weak mooring: the waterplane carries the heave
     T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(dof="z").values[:, 0])))
     assert T == pytest.approx(T0, rel=0.003)
@@ -304,7 +310,7 @@ def test_external_force_series_moves_the_body_to_the_static_offset(tmp_path):
     stiffness's change over the 0.44 m, below 1 %). At the end the body sits where the FE statics puts it
     under a constant 20 kN (the same system with external_force), within 1 % of that offset (the decay's
     residue is below 0.1 %). The submerged buoy on its chains (K11 = 45.8 kN/m)."""
-    system = buoy_system(body=dict(center_of_gravity=(0, 0, -10)))
+    system = buoy_system(body={"center_of_gravity": (0, 0, -10)})
     csv = tmp_path / "force.csv"
     csv.write_text("time,fx,fy,fz,mx,my,mz\n0,0,0,0,0,0,0\n200,2e4,0,0,0,0,0\n1000,2e4,0,0,0,0,0\n")
     c = 3e5
@@ -328,8 +334,8 @@ def test_weight_acts_at_the_centre_of_gravity():
     (the start of a run) to m g x_cg / C55 (small angle), C55 = rho g I_yy + rho g V z_b - m g z_g plus the
     ropes' K55 (central difference of the FE statics). Within 1 % (the pitch is 0.03 rad: the angle against
     its sine, 2e-4; the ropes' coupling). Weight at the reference point instead would give no pitch."""
-    body = dict(center_of_gravity=(0.2, 0, -3.0), center_of_buoyancy=(0, 0, -1.0),
-                waterplane_moments=(4000.0, 4000.0))
+    body = {"center_of_gravity": (0.2, 0, -3.0), "center_of_buoyancy": (0, 0, -1.0),
+                "waterplane_moments": (4000.0, 4000.0)}
     system = floating(**body)
     K, st = mooring_stiffness(system, 4, 0.002)
     b = system.bodies["buoy"]
@@ -384,7 +390,7 @@ def test_line_break_energy_bookkeeping():
     weight or buoyancy term that were wrong would break the balance by its share of the transient."""
     env = Environment(depth=None, water_density=RHO, gravity=G)
     system = buoy_system(position=(0, 0, 0, 0, 0, 0), chain=BARE, added=0.0, fair_z=-5.0,
-                         body=dict(waterplane_area=50.0, center_of_gravity=(0, 0, -10)))
+                         body={"waterplane_area": 50.0, "center_of_gravity": (0, 0, -10)})
     a = SystemDynamicAnalysis(duration=9.0, time_step=0.005, output_interval=0.1,
                               failures=[{"line": "line0", "end": "b", "time": 5.0}])
     fe = build_system_fe(system, env, a)
@@ -416,8 +422,8 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     (it moves 27 m) and the tensions within 0.5 % after 600 s (the transient's residue e^-(zeta w t) is far
     below both)."""
     system = buoy_system(position=(0, 0, 0, 0, 0, 0), fair_z=-5.0,
-                         body=dict(center_of_gravity=(0, 0, -10), waterplane_area=50.0,
-                                   external_force=(2e5, 0, 0, 0, 0, 0)))
+                         body={"center_of_gravity": (0, 0, -10), "waterplane_area": 50.0,
+                                   "external_force": (2e5, 0, 0, 0, 0, 0)})
     B = np.zeros((6, 6))
     B[0, 0] = B[1, 1] = B[2, 2] = 1e5
     B[3, 3] = B[4, 4] = B[5, 5] = 1e9
@@ -456,8 +462,8 @@ def test_a_prescribed_body_moved_as_the_free_one_moved_loads_its_lines_alike(tmp
     a body force or inertia that the coupling lost would show at the percent level, the size of the
     body's line force swing). The prescribed body's reported position is the motion's, and its fairleads
     sit at r + R p."""
-    system = buoy_system(body=dict(center_of_gravity=(0, 0, -10)))
-    free, q = release(system, [2.0, 0, 0, 0, 0, 0], duration=100.0, time_step=0.1, output_interval=0.1)
+    system = buoy_system(body={"center_of_gravity": (0, 0, -10)})
+    free, _q = release(system, [2.0, 0, 0, 0, 0, 0], duration=100.0, time_step=0.1, output_interval=0.1)
     qt = free.body_position.sel(body="buoy").values
     csv = tmp_path / "motion.csv"
     rows = np.column_stack([free.time.values, qt - qt[0]])
@@ -484,12 +490,12 @@ def _case(system, **analysis):
 
 
 @pytest.mark.parametrize("analysis, match", [
-    (dict(failures=[{"line": "lin0", "end": "a", "time": 1.0}]), "line 'lin0' is not defined.*line0"),
-    (dict(external_forces={"boy": {"times": [0, 10], "values": [[0] * 6, [0] * 6]}}), "body 'boy' is not defined"),
-    (dict(external_forces={"buoy": {"times": [0, 5], "values": [[0] * 6, [0] * 6]}}), "covers 0 to 5 s"),
-    (dict(body_motions={"buoy": {"type": "platform", "amplitude": [1, 0, 0, 0, 0, 0], "period": 10}}),
+    ({"failures": [{"line": "lin0", "end": "a", "time": 1.0}]}, "line 'lin0' is not defined.*line0"),
+    ({"external_forces": {"boy": {"times": [0, 10], "values": [[0] * 6, [0] * 6]}}}, "body 'boy' is not defined"),
+    ({"external_forces": {"buoy": {"times": [0, 5], "values": [[0] * 6, [0] * 6]}}}, "covers 0 to 5 s"),
+    ({"body_motions": {"buoy": {"type": "platform", "amplitude": [1, 0, 0, 0, 0, 0], "period": 10}}},
      "body 'buoy' is free"),
-    (dict(point_motions={"anchor0": {"type": "harmonic", "amplitude": [1, 0, 0], "period": 10}}),
+    ({"point_motions": {"anchor0": {"type": "harmonic", "amplitude": [1, 0, 0], "period": 10}}},
      "only coupled points follow a motion"),
 ])
 def test_bad_input_is_refused_before_the_run(analysis, match):
@@ -506,10 +512,10 @@ def test_a_failure_at_a_free_point_is_refused():
 
     lt = LineType(**CHAIN)
     system = MooringSystem(
-        points={"a": dict(kind="fixed", position=(0, 0, -100)), "c": dict(kind="free", position=(50, 0, -50), mass=1e3),
-                "b": dict(kind="fixed", position=(100, 0, -100))},
-        lines={"l1": dict(line=Line.single(lt, 80.0), end_a="a", end_b="c"),
-               "l2": dict(line=Line.single(lt, 80.0), end_a="c", end_b="b")})
+        points={"a": {"kind": "fixed", "position": (0, 0, -100)}, "c": {"kind": "free", "position": (50, 0, -50), "mass": 1e3},
+                "b": {"kind": "fixed", "position": (100, 0, -100)}},
+        lines={"l1": {"line": Line.single(lt, 80.0), "end_a": "a", "end_b": "c"},
+               "l2": {"line": Line.single(lt, 80.0), "end_a": "c", "end_b": "b"}})
     with pytest.raises(InputError, match="free point 'c'"):
         prepare_system_dynamic(_case(system, duration=10.0, failures=[{"line": "l1", "end": "b", "time": 1.0}]))
 

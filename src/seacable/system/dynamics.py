@@ -372,8 +372,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
             chan.append(-1)
             arc.append(s[at])
             fext.append(np.zeros(3))
-            for k in extra:
-                extra[k].append(0.0)
+            for values in extra.values():
+                values.append(0.0)
             ids[at] = node
             if p.kind == "free":
                 raise InputError(f"analysis.failures: line '{lname}' end {'ab'[end]} is at the free point '{pname}'; "
@@ -393,9 +393,9 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         chan.extend([-1] * (n - 2))
         arc.extend(s[1:-1])
         fext.extend([np.zeros(3)] * (n - 2))
-        for k in extra:
+        for k, values in extra.items():
             vals = getattr(sub, k)
-            extra[k].extend(vals[1:-1])
+            values.extend(vals[1:-1])
             # attachments at the line's ends sit on the end nodes
             for at in (0, n - 1):
                 node = ids[at]
