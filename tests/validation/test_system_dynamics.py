@@ -526,3 +526,33 @@ def test_a_prescribed_body_without_motion_is_warned():
 
     with pytest.warns(SeacableWarning, match="prescribed but analysis.body_motions has no motion"):
         prepare_system_dynamic(_case(with_body(buoy_system(), kind="prescribed"), duration=10.0))
+
+
+def test_a_coupled_point_runs_as_the_single_line_mooring_model():
+    """One chain from an anchor to a coupled point moved harmonically (2 m surge, 15 s, 10 s ramp): the
+    system model and the single-line mooring model (:func:`seacable.mooring.solver.simulate` on
+    :func:`network_from_line`, same elements) run the same kernel loads with the same Newmark step, so
+    the fairlead tensions agree to the Newton tolerance (1e-7 of the force scale; asserted 1e-5 of the
+    mean tension)."""
+    from seacable.mooring.motion import HarmonicMotion, bind
+    from seacable.mooring.network import catenary_positions, network_from_line
+    from seacable.mooring.solver import MooringModel, Water, simulate, static_equilibrium
+
+    lt = LineType(**CHAIN)
+    line = Line.single(lt, 390.0)
+    anchor, fair = (380.0, 0.0, -DEPTH), (10.0, 0.0, -20.0)
+    system = MooringSystem(points={"a": dict(kind="fixed", position=anchor), "f": dict(kind="coupled", position=fair)},
+                           lines={"l": dict(line=line, end_a="a", end_b="f", n_elements=20)})
+    motion = HarmonicMotion(amplitude=(2.0, 0.0, 0.0), period=15.0, ramp=10.0)
+    ds = run(system, duration=60.0, time_step=0.1, output_interval=0.5, point_motions={"f": motion.model_dump()})
+    net = network_from_line(line, anchor, fair, water_density=RHO, gravity=G, n_elements=20)
+    start = catenary_positions(fair, anchor, 390.0 - net.arc_length, [390.0], [line.weights(RHO, G)[0]],
+                               [lt.axial_stiffness], depth=DEPTH)
+    model = MooringModel(net.replace(position=start), Water(density=RHO, gravity=G, depth=DEPTH))
+    st = static_equilibrium(model, tol=1e-8)
+    r = simulate(model, bind(motion, net.channel_positions(st.position), 60.0), 60.0, 0.1, 0.5,
+                 initial=st.position, tol=1e-7)
+    ours = ds.fairlead_tension.sel(line="l").values
+    theirs = r.tension[:, -1]
+    assert np.ptp(ours) > 0.1 * np.mean(ours)  # the motion loads the line
+    np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-5 * np.mean(theirs))
