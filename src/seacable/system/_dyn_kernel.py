@@ -187,6 +187,38 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
 
 
 @njit(cache=True)
+def dense_solve(A, b):
+    """Solve the small dense system ``A x = b`` in place (Gaussian elimination, partial pivoting); x in b.
+    False when singular."""
+    m = b.size
+    for k in range(m):
+        p = k
+        big = abs(A[k, k])
+        for i in range(k + 1, m):
+            if abs(A[i, k]) > big:
+                big = abs(A[i, k])
+                p = i
+        if big == 0.0 or not math.isfinite(big):
+            return False
+        if p != k:
+            for c in range(m):
+                A[k, c], A[p, c] = A[p, c], A[k, c]
+            b[k], b[p] = b[p], b[k]
+        for i in range(k + 1, m):
+            f = A[i, k] / A[k, k]
+            if f != 0.0:
+                for c in range(k + 1, m):
+                    A[i, c] -= f * A[k, c]
+                b[i] -= f * b[k]
+    for k in range(m - 1, -1, -1):
+        s = b[k]
+        for c in range(k + 1, m):
+            s -= A[k, c] * b[c]
+        b[k] = s / A[k, k]
+    return True
+
+
+@njit(cache=True)
 def band_factor(band, bw):
     """LU factor of a banded matrix in place (no pivoting); False on a zero pivot."""
     n = band.shape[0]
@@ -262,13 +294,14 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
-            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out):
+            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular.
 
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
-    count in the residual divided by the body's size (their largest point arm, at least 1 m).
+    count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
+    (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy) = args
     n = X.shape[0]
@@ -281,7 +314,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
-    Ru = np.zeros(nd)
+    Ru = du  # the residual of the nodes, then the correction in place
     for i in range(n):
         f = fidx[i]
         if f < 0:
@@ -292,7 +325,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
                 for c in range(3):
                     v += M[i, r, c] * A[i, c]
             Ru[3 * f + r] = v
-    tied = np.zeros(n, np.bool_)
+    tied[:] = False
     nca = 0
     for j in range(con_node.size):
         if con_active[j]:
@@ -334,10 +367,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
-        body_tangent(q[b], qd[b], par, bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
-        for k in range(6):
-            for c in range(6):
-                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
         scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
     Rr = Rq.copy()
     for j in range(con_node.size):
@@ -357,13 +386,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         Rr[6 * b + 3] -= arm[1] * mu[2] - arm[2] * mu[1]
         Rr[6 * b + 4] -= arm[2] * mu[0] - arm[0] * mu[2]
         Rr[6 * b + 5] -= arm[0] * mu[1] - arm[1] * mu[0]
-        # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm)
-        _skew(mu, S1)
-        _skew(arm, S2)
-        G = S1 @ S2
-        for r in range(3):
-            for c in range(3):
-                Jq[6 * b + 3 + r, 6 * b + 3 + c] -= G[r, c]
     for b in range(nb):
         for k in range(6):
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
@@ -371,14 +393,29 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     out[1] = scale
     if check and res <= scale:
         return True  # converged: no correction needed
-    # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T
-    if not band_factor(band, bw):
-        return False
-    y0 = -Ru
-    band_substitute(band, bw, y0, -1)
-    m = 3 * nca + 6 * nb
-    Y = np.zeros((nd, 3 * nca))
-    rows = np.zeros(3 * nca, np.int64)
+    # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
+    for b in range(nb):
+        body_tangent(q[b], qd[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        for k in range(6):
+            for c in range(6):
+                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
+    for j in range(con_node.size):
+        b = con_body[j]
+        if con_active[j] == 0 or b < 0:
+            continue
+        f = fidx[con_node[j]]
+        rotation(q[b, 3], q[b, 4], q[b, 5], R)
+        for r in range(3):
+            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm), mu = -Ru
+        _skew(-Ru[3 * f:3 * f + 3], S1)
+        _skew(arm, S2)
+        G = S1 @ S2
+        for r in range(3):
+            for c in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + c] -= G[r, c]
+    # the band rows of the tied nodes
+    rows = np.empty(3 * nca, np.int64)
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -386,11 +423,20 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         f = fidx[con_node[j]]
         for r in range(3):
             rows[k] = 3 * f + r
-            Y[3 * f + r, k] = 1.0
-            col = Y[:, k].copy()
-            band_substitute(band, bw, col, 3 * f + r)
-            Y[:, k] = col
             k += 1
+    # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T (stored transposed, a row per column)
+    if not band_factor(band, bw):
+        return False
+    for a in range(nd):
+        Ru[a] = -Ru[a]
+    y0 = Ru
+    band_substitute(band, bw, y0, -1)
+    m = 3 * nca + 6 * nb
+    for k in range(3 * nca):
+        Y = Yt[k]
+        Y[:] = 0.0
+        Y[rows[k]] = 1.0
+        band_substitute(band, bw, Y, rows[k])
     Sm = np.zeros((m, m))
     rhs = np.zeros(m)
     k = 0
@@ -407,7 +453,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
             row = k + r
             # S mu + T dq = C y0
             for c in range(3 * nca):
-                Sm[row, c] = Y[rows[row], c]
+                Sm[row, c] = Yt[c, rows[row]]
             rhs[row] = y0[rows[row]]
             if b >= 0:
                 col = 3 * nca + 6 * b
@@ -424,15 +470,12 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         rhs[3 * nca + a] = -Rq[a]
         for c in range(6 * nb):
             Sm[3 * nca + a, 3 * nca + c] += Jq[a, c]
-    if m > 0:
-        sol = np.linalg.solve(Sm, rhs)
-    else:
-        sol = np.zeros(0)
-    for a in range(nd):
-        v = y0[a]
-        for c in range(3 * nca):
-            v -= Y[a, c] * sol[c]
-        du[a] = v
+    if not dense_solve(Sm, rhs):
+        return False
+    sol = rhs
+    for c in range(3 * nca):
+        for a in range(nd):
+            du[a] -= Yt[c, a] * sol[c]
     for a in range(6 * nb):
         dq[a] = sol[3 * nca + a]
     return True
@@ -472,6 +515,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     Du = np.zeros(nd)
     Dq = np.zeros(6 * nb)
     out = np.zeros(2)
+    Yt = np.zeros((3 * con_node.size, nd))
+    tied = np.zeros(n, np.bool_)
     Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
     c0 = 1.0 / (beta * dt * dt)
@@ -518,7 +563,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
             solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, args, weight, fidx, nfree, bw, env, cur_depth,
                              cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
-                             bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
+                             bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out,
+                             Yt, tied)
             res, scale = out[0], out[1]
             stats[0] += 1
             if res <= scale and it > 0:
@@ -584,6 +630,8 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     du = np.zeros(nd)
     dq = np.zeros(6 * nb)
     out = np.zeros(2)
+    Yt = np.zeros((3 * con_node.size, nd))
+    tied = np.zeros(X.shape[0], np.bool_)
     Xp = X.copy()
     qp = q.copy()
     lam = env[1] / (0.05 * max_step)
@@ -593,7 +641,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     for it in range(max_iter):
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
-                         badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out)
+                         badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied)
         res, scale = out[0], out[1]
         stats[0] = it
         stats[1] = res
