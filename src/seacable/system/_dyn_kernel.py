@@ -114,8 +114,9 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
         f6 -= khs @ (q - q0)
     else:
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
-        # buoyancy of the volume at the reference pose, changed by the waterplane area with heave
-        _add_point_force(f6, cb, 0.0, 0.0, rho * g * (par[B_VOL] - par[B_AWP] * (q[2] - q0[2])))
+        # buoyancy of the volume at the given pose, and the waterplane's heave restoring at the reference point
+        _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
+        f6[2] -= rho * g * par[B_AWP] * (q[2] - q0[2])
         # the waterplane's moment rho g (I_xx a_y, -I_yy a_x, 0), a = R e_z (-rho g I phi for small roll or
         # pitch), as the system statics
         f6[3] += rho * g * par[B_IXX] * R[1, 2]
@@ -141,8 +142,8 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
     change with the angles left out, which only slows Newton, not the answer).
 
     Weight ``F`` at the turning arm ``c``: ``-skew(F) skew(c)`` (MoorPy's Body.getStiffnessA); buoyancy
-    the same at the centre of buoyancy plus the waterplane's heave term and its moment arm; waterplane
-    roll and pitch terms; or the user's matrix.
+    the same at the centre of buoyancy; the waterplane's heave and roll and pitch terms; or the user's
+    matrix.
     """
     R = np.empty((3, 3))
     rotation(q[3], q[4], q[5], R)
@@ -159,16 +160,11 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
         _skew(F, S1)
         _skew(R @ par[B_CG:B_CG + 3], S2)
         K[3:, 3:] -= S1 @ S2
-        cb = R @ par[B_CB:B_CB + 3]
-        F[2] = rho * g * (par[B_VOL] - par[B_AWP] * (q[2] - par[B_Q0 + 2]))
+        F[2] = rho * g * par[B_VOL]
         _skew(F, S1)
-        _skew(cb, S2)
+        _skew(R @ par[B_CB:B_CB + 3], S2)
         K[3:, 3:] -= S1 @ S2
-        kw = rho * g * par[B_AWP]
-        K[2, 2] += kw
-        # d(cb x (0, 0, -kw dz)) / dz, negated
-        K[3, 2] += cb[1] * kw
-        K[4, 2] -= cb[0] * kw
+        K[2, 2] += rho * g * par[B_AWP]
         # d a / d phi = -skew(a) for a = R e_z
         a = np.array([R[0, 2], R[1, 2], R[2, 2]])
         _skew(a, S1)

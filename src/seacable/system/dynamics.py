@@ -10,8 +10,8 @@ point on a prescribed body follows the body's 6-DOF motion.
 A free body has six degrees of freedom: the reference point (x, y, z) and the angles (roll, pitch,
 yaw), ``R = Rz(yaw) Ry(pitch) Rx(roll)``. Its loads (global axes, moments about the reference point):
 weight ``m g`` at the centre of gravity and buoyancy ``rho g V`` at the centre of buoyancy (both turning
-with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` (the volume is the one
-at the body's given position) and its moment ``rho g (I_xx a_y, -I_yy a_x, 0)`` with ``a = R e_z``
+with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` at the reference point
+(the volume is the one at the body's given position) and its moment ``rho g (I_xx a_y, -I_yy a_x, 0)`` with ``a = R e_z``
 (``-rho g I phi`` for small roll or pitch) -- or, when given, the user's 6x6 hydrostatic matrix about
 the given position (weight and buoyancy then as at that position): the conventions of the system
 statics (:mod:`seacable.system.statics`, MoorPy's Body);
@@ -29,10 +29,19 @@ rotation vector and the rotational inertia acts on the angles' accelerations (gy
 out), which suits moored floating bodies whose roll and pitch stay within some tens of degrees.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
-reaches a given value; the end's node is then released and moves freely with its half element. The
-run starts from the static equilibrium of the same finite-element system, bodies included (or, with
-``start: held``, with the free bodies held at their given positions and released at t = 0, as
-MoorDyn starts its free bodies).
+reaches a given value; the end's node (a node of its own from the start, tied to its point until
+then) is released and moves freely with its half element; the time is recorded (``failure_time``).
+Only ends at fixed, coupled or body points can fail (the node of a free point is shared).
+
+The run starts from the static equilibrium of the same finite-element system, bodies included
+(pseudo-transient Newton on the same bordered system with the inertia replaced by a pseudo-mass);
+``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
+settle, and release them at t = 0 (a free decay); ``start: held`` instead holds the free bodies at
+their given positions for the static start, as MoorDyn starts its free bodies.
+
+Stiff modes the step cannot resolve (the axial ringing of a snapped line end) are not damped by the
+average-acceleration rule; the lines' axial damping (``damping_ratio``), water drag and seabed
+friction take them, and ``numerical_damping`` adds Newmark's first-order dissipation when needed.
 """
 
 from __future__ import annotations
