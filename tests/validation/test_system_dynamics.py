@@ -357,7 +357,7 @@ def test_pitch_mode_of_a_low_cg_couples_with_surge():
     system = floating(center_of_gravity=(0, 0, -3.0), center_of_buoyancy=(0, 0, -1.0),
                       waterplane_moments=(4000.0, 4000.0))
     b = system.bodies["buoy"]
-    K1, st = mooring_stiffness(system, 0, 0.05)
+    K1, _st = mooring_stiffness(system, 0, 0.05)
     K5, _ = mooring_stiffness(system, 4, 0.002)
     zg, m = -3.0, b.mass
     Mt = np.array([[m + b.added_mass[0][0], m * zg], [m * zg, b.inertia[1] + m * zg**2]])
@@ -570,8 +570,8 @@ def test_a_coupled_point_runs_as_the_single_line_mooring_model():
     lt = LineType(**CHAIN)
     line = Line.single(lt, 390.0)
     anchor, fair = (380.0, 0.0, -DEPTH), (10.0, 0.0, -20.0)
-    system = MooringSystem(points={"a": dict(kind="fixed", position=anchor), "f": dict(kind="coupled", position=fair)},
-                           lines={"l": dict(line=line, end_a="a", end_b="f", n_elements=20)})
+    system = MooringSystem(points={"a": {"kind": "fixed", "position": anchor}, "f": {"kind": "coupled", "position": fair}},
+                           lines={"l": {"line": line, "end_a": "a", "end_b": "f", "n_elements": 20}})
     motion = HarmonicMotion(amplitude=(2.0, 0.0, 0.0), period=15.0, ramp=10.0)
     ds = run(system, duration=60.0, time_step=0.1, output_interval=0.5, point_motions={"f": motion.model_dump()})
     net = network_from_line(line, anchor, fair, water_density=RHO, gravity=G, n_elements=20)
