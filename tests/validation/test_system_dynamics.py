@@ -447,9 +447,9 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     line 0 until it fails at its fairlead at 1.05 times its tension at rest. With body damping (zeta about
     0.16 in surge and sway, 0.05 in heave, rotations damped) and the lines' axial damping (ratio 0.8,
     which takes the snapped end's ringing), the body and the two remaining lines settle where the FE
-    statics of the damaged system (line 0 removed) puts them: the body within 2 cm of that equilibrium
-    (it moves 27 m) and the tensions within 0.5 % after 600 s (the transient's residue e^-(zeta w t) is far
-    below both)."""
+    statics of the damaged system (line 0 removed) puts them after 600 s: the body within 1 mm of that
+    equilibrium (it moves 73 m; 0.04 mm here) and the tensions within 1e-4 (5e-6 here), the residue of
+    the damped transient and of the Newton tolerance."""
     system = buoy_system(position=(0, 0, 0, 0, 0, 0), fair_z=-5.0,
                          body={"center_of_gravity": (0, 0, -10), "waterplane_area": 50.0,
                                    "external_force": (2e5, 0, 0, 0, 0, 0)})
@@ -471,10 +471,10 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     st = static_system(fe)
     end = ds.body_position.isel(time=-1).sel(body="buoy").values
     assert abs(st.body_position[0, 0] - q[0]) > 10.0
-    np.testing.assert_allclose(end[:3], st.body_position[0, :3], atol=0.02)
+    np.testing.assert_allclose(end[:3], st.body_position[0, :3], atol=1e-3)
     tens = [st.tension[fe.line_elements[k][-1]] for k in range(2)]
     np.testing.assert_allclose(ds.fairlead_tension.isel(time=-1).sel(line=["line1", "line2"]).values, tens,
-                               rtol=0.005)
+                               rtol=1e-4)
     # the broken line hangs from its anchor: its free end element holds the end node's half element
     w = (CHAIN["mass_per_length"] - RHO * math.pi * CHAIN["diameter"] ** 2 / 4) * G
     assert float(ds.fairlead_tension.isel(time=-1).sel(line="line0")) == pytest.approx(w * 390.0 / 20 / 2, rel=0.01)
