@@ -585,3 +585,14 @@ def test_a_coupled_point_runs_as_the_single_line_mooring_model():
     theirs = r.tension[:, -1]
     assert np.ptp(ours) > 0.1 * np.mean(ours)  # the motion loads the line
     np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-5 * np.mean(theirs))
+
+
+def test_waves_on_free_bodies_are_warned():
+    from seacable.errors import SeacableWarning
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    env = Environment(depth=DEPTH, water_density=RHO, gravity=G, waves={"height": 2.0, "period": 10.0})
+    case = SimpleNamespace(environment=env, analysis=SystemDynamicAnalysis(duration=10.0), system=buoy_system(),
+                           name="waves")
+    with pytest.warns(SeacableWarning, match="not on the free bodies"):
+        prepare_system_dynamic(case)

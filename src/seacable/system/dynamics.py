@@ -755,6 +755,15 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if body.kind == "free" and body.mass <= 0:
             raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
+    env = case.environment
+    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    moving_water = env.waves is not None or (env.current.speed if env.current.depths is None
+                                             else max(abs(v) for v in env.current.speeds)) != 0
+    if free and moving_water:
+        warnings.warn(f"the water's waves and current act on the lines only, not on the free bodies ({', '.join(free)}): "
+                      "their wave and current loads are not modelled. Suggested fix: give them as "
+                      "analysis.external_forces (a time series) and the bodies' damping matrices.",
+                      SeacableWarning, stacklevel=2)
     for name in a.point_motions:
         if name not in system.points:
             raise InputError(f"{where}.point_motions: point '{name}' is not defined (points: "
