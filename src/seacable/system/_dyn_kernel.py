@@ -1,0 +1,674 @@
+"""Compiled core of the coupled body-line dynamics: one Newton iteration on the line nodes and body DOFs.
+
+The lines' nodes that are not held are the unknowns of the banded system of
+:mod:`seacable.mooring.kernel` (``loads`` assembles their forces, masses and the Newton matrix
+``cm M + cc C + K``). A node on a rigid body (a fairlead) is one of those nodes too, tied to its
+body by a constraint ``x_j = r + R(theta) p_j``; a line end that may fail is tied the same way to
+its anchor or fairlead. With ``mu_j`` the force the node passes to what it is tied to, one Newton
+iteration solves the bordered system::
+
+    [ J     C^T   0  ] [du]   [-R_u]        J: banded Newton matrix of the nodes
+    [ C     0    -T  ] [mu] = [  0 ]        C: picks the tied nodes, T_j = [I, -skew(R p_j)]
+    [ 0    -T^T   J_q] [dq]   [-R_q]        J_q: the bodies' own 6x6 Newton matrices
+
+by its Schur complement: the band is factored once, solved for ``-R_u`` and for the ``3 n_c``
+columns of ``C^T`` (``n_c`` tied nodes), and the small dense system in ``mu`` and ``dq`` is solved
+last, so that the cost stays linear in the number of nodes. Tied nodes are then put back exactly on
+their body (``x_j = r + R p_j``), so the constraint holds at every iterate.
+
+Rotations are the body's (roll, pitch, yaw) with ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the geometry
+(points, centre of gravity and of buoyancy) is exact at any angle; the increment of the angles is
+taken as the small rotation vector (``T_j``) and the rotational inertia acts on the angles'
+accelerations (rotation rates small, gyroscopic terms left out), as suits moored floating bodies
+whose roll and pitch stay within some tens of degrees. Pitch near +-90 deg is singular.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..mooring.kernel import _force_tolerance, loads
+
+# body parameter layout (one row per body in ``bpar``)
+B_MASS, B_VOL, B_AWP, B_IXX, B_IYY, B_HASK = 0, 1, 2, 3, 4, 5
+B_CG, B_CB, B_INERT, B_Q0, B_FEXT = 6, 9, 12, 15, 21
+B_SIZE = 27
+
+
+@njit(cache=True)
+def rotation(roll, pitch, yaw, R):
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                              math.sin(yaw))
+    R[0, 0] = cy * cp
+    R[0, 1] = cy * sp * sr - sy * cr
+    R[0, 2] = cy * sp * cr + sy * sr
+    R[1, 0] = sy * cp
+    R[1, 1] = sy * sp * sr + cy * cr
+    R[1, 2] = sy * sp * cr - cy * sr
+    R[2, 0] = -sp
+    R[2, 1] = cp * sr
+    R[2, 2] = cp * cr
+
+
+@njit(cache=True)
+def _skew(v, S):
+    S[0, 0] = 0.0
+    S[0, 1] = -v[2]
+    S[0, 2] = v[1]
+    S[1, 0] = v[2]
+    S[1, 1] = 0.0
+    S[1, 2] = -v[0]
+    S[2, 0] = -v[1]
+    S[2, 1] = v[0]
+    S[2, 2] = 0.0
+
+
+@njit(cache=True)
+def _add_point_force(f6, arm, fx, fy, fz):
+    """f6 += (F, arm x F)."""
+    f6[0] += fx
+    f6[1] += fy
+    f6[2] += fz
+    f6[3] += arm[1] * fz - arm[2] * fy
+    f6[4] += arm[2] * fx - arm[0] * fz
+    f6[5] += arm[0] * fy - arm[1] * fx
+
+
+@njit(cache=True)
+def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
+    """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external; global axes,
+    moments about the reference point) and its mass matrix ``M6`` (rigid body about the reference point
+    plus added mass, global axes)."""
+    R = np.empty((3, 3))
+    rotation(q[3], q[4], q[5], R)
+    m = par[B_MASS]
+    c = R @ par[B_CG:B_CG + 3]
+    cb = R @ par[B_CB:B_CB + 3]
+    # rigid-body mass matrix about the reference point
+    Ig = R @ np.diag(par[B_INERT:B_INERT + 3]) @ R.T
+    S = np.empty((3, 3))
+    _skew(c, S)
+    cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
+    M6[:] = 0.0
+    for r in range(3):
+        M6[r, r] = m
+        for k in range(3):
+            M6[r, 3 + k] = -m * S[r, k]
+            M6[3 + r, k] = m * S[r, k]
+            M6[3 + r, 3 + k] = Ig[r, k] + m * ((cc if r == k else 0.0) - c[r] * c[k])
+    R6 = np.zeros((6, 6))
+    R6[:3, :3] = R
+    R6[3:, 3:] = R
+    M6 += R6 @ add @ R6.T
+    f6[:] = 0.0
+    q0 = par[B_Q0:B_Q0 + 6]
+    if par[B_HASK] > 0.0:
+        # the user's hydrostatic matrix: weight and buoyancy as at the reference pose, restoring from K
+        R0 = np.empty((3, 3))
+        rotation(q0[3], q0[4], q0[5], R0)
+        _add_point_force(f6, R0 @ par[B_CG:B_CG + 3], 0.0, 0.0, -m * g)
+        _add_point_force(f6, R0 @ par[B_CB:B_CB + 3], 0.0, 0.0, rho * g * par[B_VOL])
+        f6 -= khs @ (q - q0)
+    else:
+        _add_point_force(f6, c, 0.0, 0.0, -m * g)
+        # buoyancy of the volume at the given pose, and the waterplane's heave restoring at the reference point
+        _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
+        f6[2] -= rho * g * par[B_AWP] * (q[2] - q0[2])
+        # the waterplane's moment rho g (I_xx a_y, -I_yy a_x, 0), a = R e_z (-rho g I phi for small roll or
+        # pitch), as the system statics
+        f6[3] += rho * g * par[B_IXX] * R[1, 2]
+        f6[4] -= rho * g * par[B_IYY] * R[0, 2]
+    for k in range(6):
+        f6[k] += par[B_FEXT + k]
+    if ext_n > 0:
+        for k in range(6):
+            f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
+    # damping, in body axes
+    vb = R6.T @ qd
+    fb = lin @ vb
+    for k in range(6):
+        for j in range(6):
+            fb[k] += quad[k, j] * abs(vb[j]) * vb[j]
+    f6 -= R6 @ fb
+
+
+@njit(cache=True)
+def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
+    """The Newton matrices of the body's own forces: ``K = -df6/dq`` and ``C = -df6/dqd`` (rotation
+    increments as small rotation vectors; the damping's turning with the body and the mass matrix's
+    change with the angles left out, which only slows Newton, not the answer).
+
+    Weight ``F`` at the turning arm ``c``: ``-skew(F) skew(c)`` (MoorPy's Body.getStiffnessA); buoyancy
+    the same at the centre of buoyancy; the waterplane's heave and roll and pitch terms; or the user's
+    matrix.
+    """
+    R = np.empty((3, 3))
+    rotation(q[3], q[4], q[5], R)
+    S1 = np.empty((3, 3))
+    S2 = np.empty((3, 3))
+    K[:] = 0.0
+    C[:] = 0.0
+    m = par[B_MASS]
+    F = np.zeros(3)
+    if par[B_HASK] > 0.0:
+        K[:] = khs
+    else:
+        F[2] = -m * g
+        _skew(F, S1)
+        _skew(R @ par[B_CG:B_CG + 3], S2)
+        K[3:, 3:] -= S1 @ S2
+        F[2] = rho * g * par[B_VOL]
+        _skew(F, S1)
+        _skew(R @ par[B_CB:B_CB + 3], S2)
+        K[3:, 3:] -= S1 @ S2
+        K[2, 2] += rho * g * par[B_AWP]
+        # d a / d phi = -skew(a) for a = R e_z
+        a = np.array([R[0, 2], R[1, 2], R[2, 2]])
+        _skew(a, S1)
+        for j in range(3):
+            K[3, 3 + j] += rho * g * par[B_IXX] * S1[1, j]
+            K[4, 3 + j] -= rho * g * par[B_IYY] * S1[0, j]
+    R6 = np.zeros((6, 6))
+    R6[:3, :3] = R
+    R6[3:, 3:] = R
+    vb = R6.T @ qd
+    D = lin.copy()
+    for k in range(6):
+        for j in range(6):
+            D[k, j] += 2.0 * quad[k, j] * abs(vb[j])
+    C[:] = R6 @ D @ R6.T
+
+
+@njit(cache=True)
+def dense_solve(A, b):
+    """Solve the small dense system ``A x = b`` in place (Gaussian elimination, partial pivoting); x in b.
+    False when singular."""
+    m = b.size
+    for k in range(m):
+        p = k
+        big = abs(A[k, k])
+        for i in range(k + 1, m):
+            if abs(A[i, k]) > big:
+                big = abs(A[i, k])
+                p = i
+        if big == 0.0 or not math.isfinite(big):
+            return False
+        if p != k:
+            for c in range(m):
+                A[k, c], A[p, c] = A[p, c], A[k, c]
+            b[k], b[p] = b[p], b[k]
+        for i in range(k + 1, m):
+            f = A[i, k] / A[k, k]
+            if f != 0.0:
+                for c in range(k + 1, m):
+                    A[i, c] -= f * A[k, c]
+                b[i] -= f * b[k]
+    for k in range(m - 1, -1, -1):
+        s = b[k]
+        for c in range(k + 1, m):
+            s -= A[k, c] * b[c]
+        b[k] = s / A[k, k]
+    return True
+
+
+@njit(cache=True)
+def band_factor(band, bw):
+    """LU factor of a banded matrix in place (no pivoting); False on a zero pivot."""
+    n = band.shape[0]
+    for k in range(n):
+        piv = band[k, bw]
+        if piv == 0.0 or not math.isfinite(piv):
+            return False
+        for i in range(k + 1, min(n, k + bw + 1)):
+            f = band[i, bw + k - i] / piv
+            if f == 0.0:
+                continue
+            band[i, bw + k - i] = f
+            for j in range(k + 1, min(n, k + bw + 1)):
+                band[i, bw + j - i] -= f * band[k, bw + j - k]
+    return True
+
+
+@njit(cache=True)
+def band_substitute(band, bw, rhs, first):
+    """Solve with a factored band in place. ``first`` >= 0: ``rhs`` is the unit vector of row ``first``;
+    ``first`` < 0: any ``rhs``.
+
+    For a unit vector exact zeros are skipped: the forward sweep stops where its fill ends, and the
+    backward sweep starts there and stops above ``first`` once ``bw`` rows in a row came out zero, so the
+    column of a node on one line of a network of separate lines costs that line's rows only.
+    """
+    n = rhs.size
+    unit = first >= 0
+    if not unit:
+        first = 0
+    last = first if unit else n
+    for k in range(first, n):
+        if k > last + bw:
+            break
+        rk = rhs[k]
+        if rk == 0.0:
+            continue
+        if unit:
+            last = k
+        for i in range(k + 1, min(n, k + bw + 1)):
+            rhs[i] -= band[i, bw + k - i] * rk
+    top = min(n - 1, last + bw)
+    low = top + 1
+    for k in range(top, -1, -1):
+        if unit and k < first and k + bw < low:
+            break
+        s = rhs[k]
+        for j in range(k + 1, min(n, k + bw + 1)):
+            s -= band[k, bw + j - k] * rhs[j]
+        rhs[k] = s / band[k, bw]
+        if rhs[k] != 0.0:
+            low = k
+
+
+@njit(cache=True)
+def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
+    """Put each tied node where it is tied: on its body (r + R p) or at its target."""
+    R = np.empty((3, 3))
+    for j in range(con_node.size):
+        if con_active[j] == 0:
+            continue
+        i = con_node[j]
+        b = con_body[j]
+        if b >= 0:
+            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            for r in range(3):
+                X[i, r] = q[b, r] + R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        else:
+            for r in range(3):
+                X[i, r] = con_target[j, r]
+
+
+@njit(cache=True)
+def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
+            with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
+            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
+    """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
+    (6 per body). Returns False when the matrix is singular.
+
+    ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
+    step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
+    count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
+    (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
+    """
+    (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy) = args
+    n = X.shape[0]
+    nd = 3 * nfree
+    nb = q.shape[0]
+    rho, g = env[0], env[1]
+    band[:] = 0.0
+    loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
+          buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, cm, cc)
+    for i in range(n):
+        for r in range(3):
+            F[i, r] += node_fext[i, r]
+    Ru = du  # the residual of the nodes, then the correction in place
+    for i in range(n):
+        f = fidx[i]
+        if f < 0:
+            continue
+        for r in range(3):
+            v = -F[i, r]
+            if dynamic:
+                for c in range(3):
+                    v += M[i, r, c] * A[i, c]
+            Ru[3 * f + r] = v
+    tied[:] = False
+    nca = 0
+    for j in range(con_node.size):
+        if con_active[j]:
+            tied[con_node[j]] = True
+            nca += 1
+    res = 0.0
+    for i in range(n):
+        f = fidx[i]
+        if f >= 0 and not tied[i]:
+            for r in range(3):
+                res = max(res, abs(Ru[3 * f + r]))
+    scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
+    # bodies: own residual R_q = M6 qdd - f6, residual R_q - sum T^T mu (mu = the tied node's net force
+    # -Ru), Newton matrix
+    Rq = np.zeros(6 * nb)
+    Jq = np.zeros((6 * nb, 6 * nb))
+    f6 = np.zeros(6)
+    M6 = np.zeros((6, 6))
+    R = np.empty((3, 3))
+    S1 = np.empty((3, 3))
+    S2 = np.empty((3, 3))
+    Kb = np.empty((6, 6))
+    Cb = np.empty((6, 6))
+    arm = np.zeros(3)
+    size = np.ones(nb)
+    for j in range(con_node.size):
+        b = con_body[j]
+        if b >= 0:
+            size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
+    for b in range(nb):
+        par = bpar[b]
+        body_load(q[b], qd[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
+                  f6, M6)
+        for k in range(6):
+            v = -f6[k]
+            if dynamic:
+                for c in range(6):
+                    v += M6[k, c] * qdd[b, c]
+            Rq[6 * b + k] = v
+            for c in range(6):
+                Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
+        scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
+    Rr = Rq.copy()
+    for j in range(con_node.size):
+        b = con_body[j]
+        if con_active[j] == 0 or b < 0:
+            continue
+        i = con_node[j]
+        f = fidx[i]
+        rotation(q[b, 3], q[b, 4], q[b, 5], R)
+        for r in range(3):
+            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        mu = -Ru[3 * f:3 * f + 3]
+        # the residual of the body: R_q - T^T mu, force mu and moment arm x mu
+        Rr[6 * b + 0] -= mu[0]
+        Rr[6 * b + 1] -= mu[1]
+        Rr[6 * b + 2] -= mu[2]
+        Rr[6 * b + 3] -= arm[1] * mu[2] - arm[2] * mu[1]
+        Rr[6 * b + 4] -= arm[2] * mu[0] - arm[0] * mu[2]
+        Rr[6 * b + 5] -= arm[0] * mu[1] - arm[1] * mu[0]
+    for b in range(nb):
+        for k in range(6):
+            res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
+    out[0] = res
+    out[1] = scale
+    if check and res <= scale:
+        return True  # converged: no correction needed
+    # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
+    for b in range(nb):
+        body_tangent(q[b], qd[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        for k in range(6):
+            for c in range(6):
+                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
+    for j in range(con_node.size):
+        b = con_body[j]
+        if con_active[j] == 0 or b < 0:
+            continue
+        f = fidx[con_node[j]]
+        rotation(q[b, 3], q[b, 4], q[b, 5], R)
+        for r in range(3):
+            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm), mu = -Ru
+        _skew(-Ru[3 * f:3 * f + 3], S1)
+        _skew(arm, S2)
+        G = S1 @ S2
+        for r in range(3):
+            for c in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + c] -= G[r, c]
+    # the band rows of the tied nodes
+    rows = np.empty(3 * nca, np.int64)
+    k = 0
+    for j in range(con_node.size):
+        if con_active[j] == 0:
+            continue
+        f = fidx[con_node[j]]
+        for r in range(3):
+            rows[k] = 3 * f + r
+            k += 1
+    # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T (stored transposed, a row per column)
+    if not band_factor(band, bw):
+        return False
+    for a in range(nd):
+        Ru[a] = -Ru[a]
+    y0 = Ru
+    band_substitute(band, bw, y0, -1)
+    m = 3 * nca + 6 * nb
+    for k in range(3 * nca):
+        Y = Yt[k]
+        Y[:] = 0.0
+        Y[rows[k]] = 1.0
+        band_substitute(band, bw, Y, rows[k])
+    Sm = np.zeros((m, m))
+    rhs = np.zeros(m)
+    k = 0
+    for j in range(con_node.size):
+        if con_active[j] == 0:
+            continue
+        b = con_body[j]
+        if b >= 0:
+            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            for r in range(3):
+                arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+            _skew(arm, S2)
+        for r in range(3):
+            row = k + r
+            # S mu + T dq = C y0
+            for c in range(3 * nca):
+                Sm[row, c] = Yt[c, rows[row]]
+            rhs[row] = y0[rows[row]]
+            if b >= 0:
+                col = 3 * nca + 6 * b
+                Sm[row, col + r] += 1.0
+                for c in range(3):
+                    Sm[row, col + 3 + c] += -S2[r, c]
+                # -T^T mu + Jq dq = -Rq
+                Sm[col + r, row] -= 1.0
+                for c in range(3):
+                    # (T^T)[3 + c, r] = (-skew(arm))^T[c, r] = -S2[r, c]
+                    Sm[col + 3 + c, row] -= -S2[r, c]
+        k += 3
+    for a in range(6 * nb):
+        rhs[3 * nca + a] = -Rq[a]
+        for c in range(6 * nb):
+            Sm[3 * nca + a, 3 * nca + c] += Jq[a, c]
+    if not dense_solve(Sm, rhs):
+        return False
+    sol = rhs
+    for c in range(3 * nca):
+        for a in range(nd):
+            du[a] -= Yt[c, a] * sol[c]
+    for a in range(6 * nb):
+        dq[a] = sol[3 * nca + a]
+    return True
+
+
+@njit(cache=True)
+def _apply(X, q, du, dq, fidx, s):
+    for i in range(X.shape[0]):
+        f = fidx[i]
+        if f >= 0:
+            for r in range(3):
+                X[i, r] += s * du[3 * f + r]
+    for b in range(q.shape[0]):
+        for k in range(6):
+            q[b, k] += s * dq[6 * b + k]
+
+
+@njit(cache=True)
+def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
+                  cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
+                  fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
+                  beta, gamma, tol, max_iter, F, M, tension, stats):
+    """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
+
+    ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
+    step k. After each step a tied line end whose failure time has come, or whose end element's
+    tension reached its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
+    the number of steps completed; a step whose Newton iteration fails leaves the state at its start.
+    ``stats`` receives (iterations, last residual, absolute force tolerance [N]).
+    """
+    n = X.shape[0]
+    nb = q.shape[0]
+    nd = 3 * nfree
+    band = np.zeros((nd, 2 * bw + 1))
+    du = np.zeros(nd)
+    dq = np.zeros(6 * nb)
+    Du = np.zeros(nd)
+    Dq = np.zeros(6 * nb)
+    out = np.zeros(2)
+    Yt = np.zeros((3 * con_node.size, nd))
+    tied = np.zeros(n, np.bool_)
+    Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
+    qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
+    c0 = 1.0 / (beta * dt * dt)
+    c1 = gamma / (beta * dt)
+    for step in range(px.shape[0]):
+        Xn[:] = X
+        Vn[:] = V
+        An[:] = A
+        qn[:] = q
+        qdn[:] = qd
+        qddn[:] = qdd
+        t = t0 + (step + 1) * dt
+        for i in range(n):
+            ch = channel[i]
+            for r in range(3):
+                if ch >= 0:
+                    X[i, r] = px[step, ch, r]
+                    V[i, r] = pv[step, ch, r]
+                    A[i, r] = pa[step, ch, r]
+                elif fidx[i] >= 0:
+                    X[i, r] = Xn[i, r] + dt * Vn[i, r] + 0.5 * dt * dt * An[i, r]
+        for j in range(con_node.size):
+            if con_chan[j] >= 0:
+                for r in range(3):
+                    con_target[j, r] = px[step, con_chan[j], r]
+        for b in range(nb):
+            for k in range(6):
+                q[b, k] = qn[b, k] + dt * qdn[b, k] + 0.5 * dt * dt * qddn[b, k]
+        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+        ok = False
+        res = 0.0
+        res_prev = np.inf
+        cuts = 0
+        scale = 1.0
+        for it in range(max_iter):
+            for i in range(n):
+                if fidx[i] >= 0:
+                    for r in range(3):
+                        A[i, r] = c0 * (X[i, r] - Xn[i, r]) - Vn[i, r] / (beta * dt) - (0.5 / beta - 1.0) * An[i, r]
+                        V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
+            for b in range(nb):
+                for k in range(6):
+                    qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
+                    qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
+            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, args, weight, fidx, nfree, bw, env, cur_depth,
+                             cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
+                             bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out,
+                             Yt, tied)
+            res, scale = out[0], out[1]
+            stats[0] += 1
+            if res <= scale and it > 0:
+                ok = True
+                break
+            if it > 0 and not (res < res_prev) and cuts < 6:
+                # backtrack: the full Newton step made things worse (contact or slack switching)
+                cuts += 1
+                Du *= 0.5
+                Dq *= 0.5
+                _apply(X, q, Du, Dq, fidx, -1.0)
+                place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+                continue
+            if not math.isfinite(res) or not solved:
+                break
+            res_prev = res
+            cuts = 0
+            Du[:] = du
+            Dq[:] = dq
+            _apply(X, q, du, dq, fidx, 1.0)
+            place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+        stats[1] = res
+        stats[2] = scale
+        if not ok:
+            X[:] = Xn
+            V[:] = Vn
+            A[:] = An
+            q[:] = qn
+            qd[:] = qdn
+            qdd[:] = qddn
+            return step
+        for j in range(con_node.size):
+            if con_active[j] == 0:
+                continue
+            e = fail_elem[j]
+            if t >= fail_time[j] - 1e-9 * dt or (e >= 0 and tension[e] >= fail_tension[j]):
+                con_active[j] = 0
+                fail_at[j] = t
+    return px.shape[0]
+
+
+@njit(cache=True)
+def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed, node_fext, con_node, con_body,
+                   con_arm, con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, max_iter,
+                   max_step, body_scale, F, M, tension, stats):
+    """Static equilibrium of the lines and bodies by pseudo-transient Newton, ``(K + lam M) dx = -R``.
+
+    The bodies' mass matrices in ``M`` are scaled by ``body_scale`` (a node's mass over a body's), so
+    that the pseudo-time moves a body as fast as a node.
+
+    ``lam`` [1/s^2] starts where a node under its weight moves a fraction of an element and follows the
+    residual (switched evolution relaxation); a step is limited to ``max_step`` [m] of any node or body
+    and 0.1 rad of rotation. Returns True when converged; ``stats`` receives (iterations, residual,
+    absolute force tolerance [N]).
+    """
+    nb = q.shape[0]
+    nd = 3 * nfree
+    V = np.zeros_like(X)
+    A = np.zeros_like(X)
+    qd = np.zeros_like(q)
+    qdd = np.zeros_like(q)
+    band = np.zeros((nd, 2 * bw + 1))
+    du = np.zeros(nd)
+    dq = np.zeros(6 * nb)
+    out = np.zeros(2)
+    Yt = np.zeros((3 * con_node.size, nd))
+    tied = np.zeros(X.shape[0], np.bool_)
+    Xp = X.copy()
+    qp = q.copy()
+    lam = env[1] / (0.05 * max_step)
+    lam_min = 1e-9 * lam  # keeps a DOF without stiffness (the yaw of a body on one line) regular
+    res_prev = np.inf
+    place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+    for it in range(max_iter):
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, args, weight, fidx, nfree, bw, env, cur_depth,
+                         cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
+                         badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied)
+        res, scale = out[0], out[1]
+        stats[0] = it
+        stats[1] = res
+        stats[2] = scale
+        if res <= scale:
+            return True
+        if not math.isfinite(res) or not solved or res > 1e3 * res_prev:
+            # back to the last state, more inertia
+            X[:] = Xp
+            q[:] = qp
+            lam *= 10.0
+            res_prev = np.inf
+            continue
+        if math.isfinite(res_prev):
+            lam = max(lam * min(max(res / res_prev, 0.05), 10.0), lam_min)
+        res_prev = res
+        big = 0.0
+        for k in range(nd):
+            big = max(big, abs(du[k]))
+        rot = 0.0
+        for b in range(nb):
+            for k in range(3):
+                big = max(big, abs(dq[6 * b + k]))
+                rot = max(rot, abs(dq[6 * b + 3 + k]))
+        shrink = 1.0
+        if big > max_step:
+            shrink = max_step / big
+        if rot * shrink > 0.1:
+            shrink = 0.1 / rot
+        Xp[:] = X
+        qp[:] = q
+        _apply(X, q, du, dq, fidx, shrink)
+        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+    return False

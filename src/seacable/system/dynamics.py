@@ -1,0 +1,905 @@
+"""Coupled dynamics of a mooring system (analysis ``system_dynamic``): finite-element lines and rigid bodies.
+
+Every line of a :class:`~seacable.system.model.MooringSystem` is discretised into truss elements as
+the single-line mooring model (:func:`seacable.mooring.network.network_from_line`: segments,
+attachments, element count); lines that end at the same point share its node. Fixed points are held,
+coupled points follow a motion, free points move with their mass, volume, added mass and drag area.
+A point on a free body is tied to it (``x = r + R(theta) p``); a point on a fixed body is held, a
+point on a prescribed body follows the body's 6-DOF motion.
+
+A free body has six degrees of freedom: the reference point (x, y, z) and the angles (roll, pitch,
+yaw), ``R = Rz(yaw) Ry(pitch) Rx(roll)``. Its loads (global axes, moments about the reference point):
+weight ``m g`` at the centre of gravity and buoyancy ``rho g V`` at the centre of buoyancy (both turning
+with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` at the reference point
+(the volume is the one at the body's given position) and its moment ``rho g (I_xx a_y, -I_yy a_x, 0)`` with ``a = R e_z``
+(``-rho g I phi`` for small roll or pitch) -- or, when given, the user's 6x6 hydrostatic matrix about
+the given position (weight and buoyancy then as at that position): the conventions of the system
+statics (:mod:`seacable.system.statics`, MoorPy's Body);
+the constant external force, an optional external force time series, linear and quadratic damping
+(6x6, body axes: ``-B1 v - B2 |v| v``), added mass (6x6, body axes) and the forces of the lines at its
+points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
+rule, the coupling ``m skew(c)`` of an offset centre of gravity).
+
+One implicit step advances the lines and the bodies together: Newmark's average acceleration (beta
+1/4, gamma 1/2) with Newton iterations on the free nodes and the body DOFs at once; the banded
+system of the nodes is bordered by the bodies and solved by its Schur complement
+(:mod:`seacable.system._dyn_kernel`), so a step costs about as much as one of the prescribed-motion
+model. Rotations: the geometry is exact at any angle; angle increments are taken as the small
+rotation vector and the rotational inertia acts on the angles' accelerations (gyroscopic terms left
+out), which suits moored floating bodies whose roll and pitch stay within some tens of degrees.
+
+A line end can fail (``failures``): at a given time, or when the tension of its end element first
+reaches a given value; the end's node (a node of its own from the start, tied to its point until
+then) is released and moves freely with its half element; the time is recorded (``failure_time``).
+Only ends at fixed, coupled or body points can fail (the node of a free point is shared).
+
+The run starts from the static equilibrium of the same finite-element system, bodies included
+(pseudo-transient Newton on the same bordered system with the inertia replaced by a pseudo-mass);
+``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
+settle, and release them at t = 0 (a free decay); ``start: held`` instead holds the free bodies at
+their given positions for the static start, as MoorDyn starts its free bodies.
+
+Stiff modes the step cannot resolve (the axial ringing of a snapped line end) are not damped by the
+average-acceleration rule; the lines' axial damping (``damping_ratio``), water drag and seabed
+friction take them, and ``numerical_damping`` adds Newmark's first-order dissipation when needed.
+"""
+
+from __future__ import annotations
+
+import math
+import time as _time
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .._limits import check_run_size
+from .._model import Model, quantity, suggest
+from ..case import SeabedContact
+from ..errors import ConvergenceError, InputError, SeacableWarning
+from ..mooring.motion import Motion, PlatformMotion, rotation_matrix
+from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
+from ..mooring.solver import MooringModel, Water
+from ..results import make_dataset, var
+from . import _dyn_kernel as DK
+from .model import MooringSystem
+
+__all__ = [
+    "ExternalForceSeries",
+    "LineFailure",
+    "SystemDynamicAnalysis",
+    "SystemFE",
+    "SystemRun",
+    "build_system_fe",
+    "prepare_system_dynamic",
+    "run_system_dynamic",
+    "simulate_system",
+    "static_system",
+]
+
+_SIX = tuple[float, float, float, float, float, float]
+DOFS = ("x", "y", "z", "roll", "pitch", "yaw")
+
+REFERENCES = (
+    ("Paper 004: finite-element analysis of guyed-tower mooring lines (seeds/004): truss elements with "
+     "geometric nonlinearity, Newmark-beta with Newton-Raphson."),
+    "Bathe, K.-J. (1996). Finite Element Procedures. Prentice Hall, sections 6.3 and 9.2.4.",
+    ("Hall, M. (2020). MoorDyn V2: new capabilities in mooring system components and load cases. "
+     "ASME OMAE 2020 (rigid bodies coupled with lumped-mass lines)."),
+    ("Hall, M. et al. (2021). MoorPy: quasi-static mooring analysis in Python. NREL/TP (Body hydrostatics: "
+     "weight at the CG, buoyancy, waterplane heave stiffness)."),
+)
+
+
+class ExternalForceSeries(Model):
+    """A time series of force and moment on a body's reference point, global axes, linear between rows.
+
+    Either ``file``: a CSV with a header row ``time, fx, fy, fz, mx, my, mz`` (any force column may be
+    left out, '#' comments), relative to the case file; or ``times`` and ``values`` inline. Zero outside
+    the table's time span is not assumed: the table must cover the run.
+    """
+
+    file: str | None = Field(None, description="CSV with columns time, fx, fy, fz, mx, my, mz.")
+    times: list[float] | None = Field(None, description="Times, increasing. [s]")
+    values: list[_SIX] | None = Field(None, description="Force and moment at each time. [N, N m]")
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if (self.file is None) == (self.times is None):
+            raise ValueError("give either 'file' (a CSV with columns time, fx, fy, fz, mx, my, mz) or 'times' and "
+                             "'values', not both or neither.")
+        if self.times is not None:
+            if self.values is None or len(self.values) != len(self.times):
+                raise ValueError(f"'values' needs one row of six numbers per time ({len(self.times)} times). "
+                                 "Suggested fix: give [fx, fy, fz, mx, my, mz] in N and N m for each time.")
+            if len(self.times) < 2 or np.any(np.diff(self.times) <= 0):
+                raise ValueError("'times' needs at least two strictly increasing times in s.")
+            if not np.all(np.isfinite(self.values)) or not np.all(np.isfinite(self.times)):
+                raise ValueError("'times' and 'values' must hold finite numbers.")
+        return self
+
+    def table(self) -> tuple[np.ndarray, np.ndarray]:
+        """Times (nt,) [s] and forces (nt, 6) [N, N m]."""
+        if self.file is None:
+            return np.asarray(self.times, float), np.asarray(self.values, float)
+        from ..mooring.motion import _read_table
+
+        t = _read_table(Path(self.file), ("time", "fx", "fy", "fz", "mx", "my", "mz"))
+        return t[:, 0], t[:, 1:]
+
+
+class LineFailure(Model):
+    """A line end that detaches: at ``time``, or when its end element's tension first reaches ``tension``
+    (whichever comes first when both are given)."""
+
+    line: str = Field(min_length=1, description="The line that fails.")
+    end: Literal["a", "b"] = Field(description="The end that detaches: a or b.")
+    time: quantity("s", ge=0) | None = Field(None, description="Time of the failure. [s]")
+    tension: quantity("N", gt=0) | None = Field(None, description="Tension at which the end fails. [N]")
+
+    @model_validator(mode="after")
+    def _when(self):
+        if self.time is None and self.tension is None:
+            raise ValueError(f"failure of line '{self.line}' needs 'time' (s) or 'tension' (N). Suggested fix: "
+                             "give e.g. 'time: 10'.")
+        return self
+
+
+class SystemDynamicAnalysis(Model):
+    """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
+
+    Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force
+    series); prescribed bodies and coupled points follow ``body_motions`` / ``point_motions``; line ends
+    may fail (``failures``). Newmark's average acceleration with Newton iterations on the nodes and
+    bodies together, starting from the static equilibrium (``start: equilibrium``) or with the free
+    bodies held at their given positions and released at t = 0 (``start: held``).
+    """
+
+    type: Literal["system_dynamic"] = "system_dynamic"
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
+    output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
+    n_elements: int | None = Field(None, ge=1, le=100_000,
+                                   description="Elements per line for every line (default: each line's own).")
+    body_motions: dict[str, PlatformMotion] = Field(
+        default_factory=dict, description="6-DOF motion of each prescribed body, about its reference point.")
+    point_motions: dict[str, Motion] = Field(default_factory=dict, description="Motion of each coupled point.")
+    external_forces: dict[str, ExternalForceSeries] = Field(
+        default_factory=dict, description="External force time series per free body.")
+    failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
+    start: Literal["equilibrium", "held"] = Field(
+        "equilibrium", description="Static start of the whole system, or with free bodies held at their position.")
+    release_offsets: dict[str, _SIX] = Field(
+        default_factory=dict, description="Free decay: each named free body held at its equilibrium plus this "
+                                          "offset (x, y, z [m], roll, pitch, yaw [rad]) while the lines settle, "
+                                          "then released at t = 0.")
+    seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
+    damping_ratio: quantity("-", ge=0, le=10) = Field(
+        0.0, description="Axial damping ratio of each element's axial mode (MoorDyn's BA = -ratio). [-]")
+    rayleigh: tuple[float, float] = Field((0.0, 0.0), description="Rayleigh damping of the lines (alpha [1/s], "
+                                                                   "beta [s]).")
+    max_iterations: int = Field(30, ge=2, le=1000, description="Newton iterations per step.")
+    numerical_damping: quantity("-", ge=0, le=0.3) = Field(
+        0.0, description="Newmark's gamma = 1/2 + this, beta = (1 + this)^2 / 4: damps the ringing of stiff "
+                         "modes the step cannot resolve (a snapped line end) at a first-order cost for the "
+                         "resolved ones (a damping ratio of about this times w dt / 2). [-]")
+    tolerance: quantity("-", gt=0, lt=1e-2) = Field(
+        1e-8, description="Newton tolerance of the statics on the force residual, relative. [-]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.output_interval > self.duration:
+            raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
+                             f"({self.duration:g} s).")
+        if self.release_offsets and self.start == "held":
+            raise ValueError("release_offsets start from the equilibrium: they need 'start: equilibrium'.")
+        if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
+            raise ValueError(f"rayleigh must hold two finite numbers >= 0 (alpha [1/s], beta [s]), got "
+                             f"{self.rayleigh}.")
+        return self
+
+
+# --------------------------------------------------------------------------------------------- the FE system
+
+
+@dataclass
+class SystemFE:
+    """The finite-element system of a :class:`MooringSystem`: the network and what ties nodes to bodies.
+
+    Attributes
+    ----------
+    model : the lines' network in its water (band nodes: free nodes, nodes on free bodies, ends that may
+        fail).
+    system : the mooring system.
+    free_bodies : names of the free bodies (rows of ``q``).
+    q0 : (nb, 6) the free bodies' given positions.
+    point_node : node of each point.
+    line_names, line_nodes, line_elements : per line, its nodes (end A to B) and elements.
+    fairlead_end : per line, 1 when end B is the fairlead (on a body or coupled point), 0 for end A.
+    con_* : one row per tied node: node, free body (-1 none), arm (body axes) or held position, channel.
+    fail_time, fail_tension, fail_elem : failure of each tied node (inf / -1 when none).
+    con_line : line of each tied node with a failure (-1 otherwise).
+    """
+
+    model: MooringModel
+    system: MooringSystem
+    free_bodies: tuple[str, ...]
+    q0: np.ndarray
+    point_node: dict[str, int]
+    line_names: tuple[str, ...]
+    line_nodes: tuple[np.ndarray, ...]
+    line_elements: tuple[np.ndarray, ...]
+    fairlead_end: np.ndarray
+    node_fext: np.ndarray
+    con_node: np.ndarray
+    con_body: np.ndarray
+    con_arm: np.ndarray
+    con_target: np.ndarray
+    con_chan: np.ndarray
+    fail_time: np.ndarray
+    fail_tension: np.ndarray
+    fail_elem: np.ndarray
+    con_line: np.ndarray
+    channel_source: list = field(default_factory=list)  # per channel: ("point", name) or ("body", name, arm)
+    bpar: np.ndarray = None
+    bkhs: np.ndarray = None
+    badd: np.ndarray = None
+    blin: np.ndarray = None
+    bquad: np.ndarray = None
+    ext_t: np.ndarray = None
+    ext_f: np.ndarray = None
+    ext_n: np.ndarray = None
+
+    def kernel_args(self):
+        m = self.model
+        net = m.network
+        args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
+                net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
+                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy)
+        return args
+
+    def body_args(self):
+        return (self.bpar, self.bkhs, self.badd, self.blin, self.bquad, self.ext_t, self.ext_f, self.ext_n)
+
+
+def _rot(six) -> np.ndarray:
+    return rotation_matrix(six[3], six[4], six[5])
+
+
+def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
+    env = environment
+    cur = env.current
+    depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
+    w = env.waves
+    contact = analysis.seabed_contact if analysis is not None else SeabedContact()
+    alpha = analysis.rayleigh[0] if analysis is not None else 0.0
+    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
+                 seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
+                 friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
+                 current_speeds=tuple(speeds), current_heading=cur.heading,
+                 wave_height=w.height if w else 0.0, wave_period=w.period if w else 10.0,
+                 wave_heading=w.heading if w else 0.0, wave_phase=w.phase if w else 0.0, rayleigh_mass=alpha)
+
+
+def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicAnalysis | None = None, *,
+                    n_elements: int | None = None) -> SystemFE:
+    """The finite-element system of ``system`` in ``environment`` (nodes at the given positions, lines on
+    their catenary start shapes). ``analysis`` gives the element count, damping, failures and external
+    force series; ``n_elements`` overrides every line's element count."""
+    rho, g = environment.water_density, environment.gravity
+    depth = environment.depth
+    slope = environment.seabed.slope
+    a = analysis
+    n_el = n_elements if n_elements is not None else (a.n_elements if a is not None else None)
+    ratio, beta = (a.damping_ratio, a.rayleigh[1]) if a is not None else (0.0, 0.0)
+    failures = {(f.line, f.end): f for f in (a.failures if a is not None else [])}
+    free_bodies = tuple(n for n, b in system.bodies.items() if b.kind == "free")
+    bindex = {n: k for k, n in enumerate(free_bodies)}
+
+    # points: one node each
+    names = list(system.points)
+    pos, kind, chan = [], [], []
+    channel_source = []
+    for name in names:
+        p = system.points[name]
+        if p.kind == "body":
+            body = system.bodies[p.body]
+            x = np.asarray(body.position[:3]) + _rot(body.position) @ np.asarray(p.position)
+            if body.kind == "free":
+                k = FREE
+            elif body.kind == "fixed":
+                k = FIXED
+            else:
+                k = PRESCRIBED
+        else:
+            x = np.asarray(p.position, float)
+            k = {"fixed": FIXED, "free": FREE, "coupled": PRESCRIBED}[p.kind]
+        pos.append(x)
+        kind.append(k)
+        if k == PRESCRIBED:
+            chan.append(len(channel_source))
+            channel_source.append(("body", p.body, np.asarray(p.position, float)) if p.kind == "body"
+                                  else ("point", name))
+        else:
+            chan.append(-1)
+    point_node = {n: k for k, n in enumerate(names)}
+    pm = np.array([system.points[n].mass for n in names], float)
+    pa = np.array([system.points[n].added_mass for n in names], float)
+    pv = np.array([system.points[n].volume for n in names], float)
+    pd = np.array([system.points[n].drag_area for n in names], float)
+    pw = np.array([system.points[n].net_weight(rho, g) for n in names], float)
+    fext = [np.asarray(system.points[n].external_force, float) for n in names]
+    # tied nodes: points on free bodies
+    con = []  # (node, body, arm, target, chan, fail_time, fail_tension, fail_elem, line)
+    for name in names:
+        p = system.points[name]
+        if p.kind == "body" and system.bodies[p.body].kind == "free":
+            con.append([point_node[name], bindex[p.body], np.asarray(p.position, float), np.zeros(3), -1, math.inf,
+                        math.inf, -1, -1])
+
+    elements, props, element_line, line_nodes, line_elements = [], [], [], [], []
+    arc = [np.nan] * len(names)
+    fields = ("length", "axial_stiffness", "axial_damping", "mass_per_length", "weight_per_length", "diameter",
+              "cdn", "cdt", "can", "cat", "breaking_load")
+    extra = {f: [] for f in ("point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}
+    fairlead_end = []
+    line_names = tuple(system.lines)
+    for li, (lname, sl) in enumerate(system.lines.items()):
+        ends = [sl.end_a, sl.end_b]
+        xa, xb = pos[point_node[ends[0]]], pos[point_node[ends[1]]]
+        sub = network_from_line(sl.line, xa, xb, water_density=rho, gravity=g,
+                                n_elements=n_el if n_el is not None else sl.n_elements, damping_ratio=ratio,
+                                stiffness_proportional=beta, end_b="free")
+        s = sub.arc_length
+        n = len(s)
+        # start shape: the catenary, solved from the lower end up
+        lengths = np.array([seg.length for seg in sl.line.segments])
+        weights = np.array(sl.line.weights(rho, g))
+        ea = np.array([seg.line_type.effective_axial_stiffness() for seg in sl.line.segments])
+        if xa[2] <= xb[2]:
+            shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=sl.line.point_loads(rho, g),
+                                       depth=depth, slope=slope)
+        else:
+            L = s[-1]
+            rev = [(L - ps, w) for ps, w in sl.line.point_loads(rho, g)][::-1]
+            shape = catenary_positions(xb, xa, L - s, lengths[::-1], weights[::-1], ea[::-1], point_loads=rev,
+                                       depth=depth, slope=slope)
+        ids = np.empty(n, np.int64)
+        for j, (end, at) in enumerate(((0, 0), (1, n - 1))):
+            pname = ends[end]
+            f = failures.get((lname, "ab"[end]))
+            if f is None:
+                ids[at] = point_node[pname]
+                continue
+            p = system.points[pname]
+            node = len(pos)
+            pos.append(pos[point_node[pname]].copy())
+            kind.append(FREE)
+            chan.append(-1)
+            arc.append(s[at])
+            fext.append(np.zeros(3))
+            for values in extra.values():
+                values.append(0.0)
+            ids[at] = node
+            if p.kind == "free":
+                raise InputError(f"analysis.failures: line '{lname}' end {'ab'[end]} is at the free point '{pname}'; "
+                                 "only ends at fixed, coupled or body points can fail. Suggested fix: make the "
+                                 "failing end the line's other end, or fail another line at that point.")
+            body = system.bodies[p.body] if p.kind == "body" else None
+            b = bindex[p.body] if body is not None and body.kind == "free" else -1
+            ch = chan[point_node[pname]]
+            arm = np.asarray(p.position, float) if b >= 0 else np.zeros(3)
+            elem = len(elements) + (0 if at == 0 else n - 2)
+            con.append([node, b, arm, pos[point_node[pname]].copy(), ch, math.inf if f.time is None else f.time,
+                        math.inf if f.tension is None else f.tension, elem, li])
+        first = len(pos)
+        ids[1:-1] = np.arange(first, first + n - 2)
+        pos.extend(shape[1:-1])
+        kind.extend([FREE] * (n - 2))
+        chan.extend([-1] * (n - 2))
+        arc.extend(s[1:-1])
+        fext.extend([np.zeros(3)] * (n - 2))
+        for k, values in extra.items():
+            vals = getattr(sub, k)
+            values.extend(vals[1:-1])
+            # attachments at the line's ends sit on the end nodes
+            for at in (0, n - 1):
+                node = ids[at]
+                if node < len(names):
+                    {"point_mass": pm, "point_added_mass": pa, "point_weight": pw, "point_volume": pv,
+                     "point_drag_area": pd}[k][node] += vals[at]
+                else:
+                    extra[k][node - len(names)] += vals[at]
+        el0 = len(elements)
+        elements.extend(ids[sub.elements])
+        props.append(np.column_stack([getattr(sub, f) for f in fields]))
+        element_line.extend([li] * (n - 1))
+        line_nodes.append(ids)
+        line_elements.append(np.arange(el0, el0 + n - 1))
+        moved = [system.points[e].kind in ("body", "coupled") for e in ends]
+        fairlead_end.append(0 if moved[0] and not moved[1] else 1)
+    P = np.vstack(props)
+    nn = len(pos)
+    # a point no line ends at any more (its line fails there: the line's end has its own node) carries
+    # nothing: held, and not tied
+    used = np.zeros(nn, bool)
+    used[np.asarray(elements, np.int64).ravel()] = True
+    for k in np.flatnonzero(~used):
+        kind[k] = FIXED
+    con = [c for c in con if used[c[0]]]
+
+    def full(point_values, key):
+        return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
+
+    net = Network(
+        position=np.array(pos, float), kind=np.array(kind, np.int64), channel=np.array(chan, np.int64),
+        point_mass=full(pm, "point_mass"), point_added_mass=full(pa, "point_added_mass"),
+        point_weight=full(pw, "point_weight"), point_volume=full(pv, "point_volume"),
+        point_drag_area=full(pd, "point_drag_area"), elements=np.array(elements, np.int64),
+        length=P[:, 0], axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
+        weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
+        element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes), line_names=line_names,
+        arc_length=np.array(arc, float), n_channels=len(channel_source),
+        channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
+        breaking_load=P[:, 10])
+    model = MooringModel(net, _water(environment, analysis))
+    nb = len(free_bodies)
+    bpar = np.zeros((nb, DK.B_SIZE))
+    bkhs, badd, blin, bquad = (np.zeros((nb, 6, 6)) for _ in range(4))
+    series = {}
+    if a is not None:
+        for name, ser in a.external_forces.items():
+            series[name] = ser.table()
+    nt = max([len(t) for t, _ in series.values()], default=1)
+    ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
+    for k, name in enumerate(free_bodies):
+        b = system.bodies[name]
+        bpar[k, DK.B_MASS], bpar[k, DK.B_VOL], bpar[k, DK.B_AWP] = b.mass, b.volume, b.waterplane_area
+        bpar[k, DK.B_IXX], bpar[k, DK.B_IYY] = b.waterplane_moments
+        bpar[k, DK.B_HASK] = 1.0 if b.hydrostatic_stiffness is not None else 0.0
+        bpar[k, DK.B_CG:DK.B_CG + 3] = b.center_of_gravity
+        bpar[k, DK.B_CB:DK.B_CB + 3] = b.center_of_buoyancy
+        bpar[k, DK.B_INERT:DK.B_INERT + 3] = b.inertia
+        bpar[k, DK.B_Q0:DK.B_Q0 + 6] = b.position
+        bpar[k, DK.B_FEXT:DK.B_FEXT + 6] = b.external_force
+        bkhs[k], badd[k] = b.matrix("hydrostatic_stiffness"), b.matrix("added_mass")
+        blin[k], bquad[k] = b.matrix("linear_damping"), b.matrix("quadratic_damping")
+        if name in series:
+            t, f = series[name]
+            ext_t[k, :len(t)], ext_f[k, :len(t)], ext_n[k] = t, f, len(t)
+    C = list(zip(*con, strict=True)) if con else [[]] * 9
+    fe = SystemFE(
+        model=model, system=system, free_bodies=free_bodies,
+        q0=np.array([system.bodies[n].position for n in free_bodies], float).reshape(nb, 6),
+        point_node=point_node, line_names=line_names, line_nodes=tuple(line_nodes),
+        line_elements=tuple(line_elements), fairlead_end=np.array(fairlead_end, np.int64),
+        node_fext=np.array(fext, float).reshape(nn, 3),
+        con_node=np.array(C[0], np.int64), con_body=np.array(C[1], np.int64),
+        con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
+        con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
+        fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
+        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n)
+    return fe
+
+
+# --------------------------------------------------------------------------------------------- statics
+
+
+@dataclass(frozen=True)
+class SystemState:
+    """A static state of the finite-element system."""
+
+    position: np.ndarray       # (n, 3) node positions [m]
+    body_position: np.ndarray  # (nb, 6) free bodies [m, rad]
+    tension: np.ndarray        # (e,) element tensions [N]
+    iterations: int
+    residual: float
+
+
+def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: float = 1e-9,
+                  max_iter: int = 1000) -> SystemState:
+    """Static equilibrium of the finite-element system, bodies included (``held``: free bodies held at ``q``,
+    default their given positions). Raises :class:`ConvergenceError` with the residual."""
+    m = fe.model
+    net = m.network
+    X = np.array(net.position if X is None else X, float)
+    q = np.array(fe.q0 if q is None else q, float).reshape(-1, 6)
+    con_body, con_target = fe.con_body.copy(), fe.con_target.copy()
+    qs = q
+    if held and len(fe.free_bodies):
+        # tie the nodes to where the held bodies put them
+        for j in range(len(con_body)):
+            b = con_body[j]
+            if b >= 0:
+                con_target[j] = q[b, :3] + _rot(q[b]) @ fe.con_arm[j]
+                con_body[j] = -1
+        qs = np.zeros((0, 6))
+    n = net.n_nodes
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(net.n_elements)
+    stats = np.zeros(3)
+    step = 0.5 * float(np.mean(net.length))
+    active = np.ones(len(fe.con_node), np.int64)
+    node_mass = float(np.max(net.mass_per_length * net.length))
+    body_mass = float(np.max(fe.bpar[:, DK.B_MASS], initial=0.0)) + float(np.max(fe.badd[:, 0, 0], initial=0.0))
+    body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 else 1.0
+    bargs = fe.body_args() if not held else tuple(np.zeros((0,) + a.shape[1:], a.dtype) for a in fe.body_args())
+    ok = DK.coupled_static(X, qs, fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
+                           fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
+                           step, body_scale, F, M, tension, stats)
+    if not ok:
+        qtxt = "" if not len(qs) else f"; the bodies ended at {np.array2string(qs, precision=4)}"
+        raise ConvergenceError(
+            f"the static equilibrium of the mooring system did not converge in {max_iter} iterations: residual "
+            f"{stats[1]:.3g} N against a tolerance of {stats[2]:.3g} N{qtxt}. Suggested fix: start the bodies "
+            "nearer their equilibrium, check that the lines reach their points and that the bodies float.",
+            iterations=int(stats[0]), residual=float(stats[1]))
+    return SystemState(X, q if held else qs, tension.copy(), int(stats[0]), float(stats[1]))
+
+
+def body_line_force(fe: SystemFE, X, q, V=None, A=None, t=0.0) -> np.ndarray:
+    """Force and moment of the lines on each free body (nb, 6) at a state (statics when V, A are None). [N, N m]"""
+    m = fe.model
+    V = np.zeros_like(X) if V is None else V
+    A = np.zeros_like(X) if A is None else A
+    F, M, _, _ = m.evaluate(X, V, A, t, waves=V is not None)
+    F = F + fe.node_fext
+    out = np.zeros((len(fe.free_bodies), 6))
+    for j in range(len(fe.con_node)):
+        b = fe.con_body[j]
+        if b < 0:
+            continue
+        i = fe.con_node[j]
+        mu = F[i] - M[i] @ A[i]
+        arm = _rot(q[b]) @ fe.con_arm[j]
+        out[b, :3] += mu
+        out[b, 3:] += np.cross(arm, mu)
+    return out
+
+
+# --------------------------------------------------------------------------------------------- time loop
+
+
+@dataclass(frozen=True)
+class SystemRun:
+    """Stored states of a coupled run at the output times."""
+
+    time: np.ndarray            # (nt,)
+    position: np.ndarray        # (nt, n, 3)
+    velocity: np.ndarray        # (nt, n, 3)
+    tension: np.ndarray         # (nt, e)
+    body_position: np.ndarray   # (nt, nb, 6)
+    body_velocity: np.ndarray   # (nt, nb, 6)
+    failure_time: np.ndarray    # (n_tied,) NaN when the end did not fail
+    time_step: float
+    steps: int
+    iterations: int
+    wall_time: float
+    interrupted: bool
+
+
+def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration: float):
+    """Positions, velocities and accelerations (len(times), n_channels, 3) of the prescribed nodes."""
+    net = fe.model.network
+    base = net.channel_positions()
+    nch = max(net.n_channels, 1)
+    groups = {}
+    for k, src in enumerate(fe.channel_source):
+        key = src[:2]
+        groups.setdefault(key, []).append(k)
+    motions = []
+    for key, chans in groups.items():
+        kind, name = key
+        mot = None
+        if analysis is not None:
+            if kind == "point":
+                mot = analysis.point_motions.get(name)
+            else:
+                mot = analysis.body_motions.get(name)
+                if mot is not None:
+                    mot = mot.model_copy(update={"reference": tuple(fe.system.bodies[name].position[:3])})
+        if mot is not None:
+            mot.channels(np.array([0.0, duration]), base[chans])  # a time series too short fails here
+            motions.append((mot, np.array(chans)))
+
+    def channels(times):
+        shape = (len(times), nch, 3)
+        x = np.broadcast_to(base[:nch] if len(base) else np.zeros((nch, 3)), shape).copy()
+        v, a = np.zeros(shape), np.zeros(shape)
+        for mot, chans in motions:
+            x[:, chans], v[:, chans], a[:, chans] = mot.channels(times, base[chans])
+        return x, v, a
+
+    return channels
+
+
+def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
+                    analysis: SystemDynamicAnalysis | None = None, tol: float = 1e-7, max_iter: int = 30,
+                    beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6) -> SystemRun:
+    """Newmark time stepping of the coupled system from rest at ``start``."""
+    m = fe.model
+    net = m.network
+    n = net.n_nodes
+    X = start.position.copy()
+    V, A = np.zeros_like(X), np.zeros_like(X)
+    q = start.body_position.copy().reshape(-1, 6)
+    nb = len(fe.free_bodies)
+    qd, qdd = np.zeros((nb, 6)), np.zeros((nb, 6))
+    channels = _channels_fn(fe, analysis, duration)
+    x0, v0, a0 = channels(np.zeros(1))
+    pres = np.flatnonzero(net.channel >= 0)
+    X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
+    con_target = fe.con_target.copy()
+    active = np.ones(len(fe.con_node), np.int64)
+    fail_at = np.full(len(fe.con_node), np.nan)
+    # the bodies' initial acceleration (zero at an equilibrium; a held start is released here)
+    if nb:
+        fl = body_line_force(fe, X, q)
+        for b in range(nb):
+            f6, M6 = np.zeros(6), np.zeros((6, 6))
+            DK.body_load(q[b], qd[b], 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
+                         fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6)
+            qdd[b] = np.linalg.solve(M6, f6 + fl[b])
+    n_out = int(round(duration / output_interval))  # noqa: RUF046
+    sub = max(1, math.ceil(output_interval / dt - 1e-9))
+    h = output_interval / sub
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(net.n_elements)
+    _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
+    times, pos, vel, ten, bq, bqd = [0.0], [X.copy()], [V.copy()], [t0_tension], [q.copy()], [qd.copy()]
+    stats = np.zeros(3)
+    iterations = steps = 0
+    interrupted = False
+    args = fe.kernel_args()
+    bargs = fe.body_args()
+    begin = _time.perf_counter()
+    try:
+        for k in range(n_out):
+            t0 = k * output_interval
+            done, level = 0, 0
+            while done < sub * 2 ** level:
+                dtk = h / 2 ** level
+                msteps = sub * 2 ** level - done
+                tt = t0 + dtk * (done + np.arange(1, msteps + 1))
+                px, pv, pa = channels(tt)
+                stats[:] = 0.0
+                got = DK.coupled_steps(X, V, A, q, qd, qdd, t0 + done * dtk, dtk, px, pv, pa, net.channel, args, m.weight,
+                                       m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
+                                       fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
+                                       fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma, tol,
+                                       max_iter, F, M, tension, stats)
+                iterations += int(stats[0])
+                steps += got
+                done += got
+                if got < msteps:
+                    if level == max_halvings:
+                        raise ConvergenceError(
+                            f"the system time step did not converge at t = {t0 + done * dtk:.6g} s with dt = "
+                            f"{dtk:.3g} s after {max_halvings} halvings: residual {stats[1]:.3g} N (tolerance "
+                            f"{stats[2]:.3g} N). Suggested fix: smaller time_step, more elements, or check the "
+                            "motions and external forces for a jump.",
+                            time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+                    done *= 2
+                    level += 1
+            times.append((k + 1) * output_interval)
+            pos.append(X.copy())
+            vel.append(V.copy())
+            ten.append(tension.copy())
+            bq.append(q.copy())
+            bqd.append(qd.copy())
+            if progress is not None:
+                progress(times[-1], duration)
+    except KeyboardInterrupt:
+        interrupted = True
+    wall = _time.perf_counter() - begin
+    nt = min(len(times), len(pos), len(vel), len(ten), len(bq), len(bqd))
+    return SystemRun(time=np.array(times[:nt]), position=np.array(pos[:nt]), velocity=np.array(vel[:nt]),
+                     tension=np.array(ten[:nt]), body_position=np.array(bq[:nt]).reshape(nt, nb, 6),
+                     body_velocity=np.array(bqd[:nt]).reshape(nt, nb, 6), failure_time=fail_at, time_step=h,
+                     steps=steps, iterations=iterations, wall_time=wall, interrupted=interrupted)
+
+
+# --------------------------------------------------------------------------------------------- the analysis
+
+
+def _system_of(case) -> MooringSystem:
+    """The MooringSystem of a case: ``case.system()`` or ``case.system``, or its points/bodies/lines."""
+    sys_ = getattr(case, "system", None)
+    if callable(sys_):
+        sys_ = sys_()
+    if isinstance(sys_, MooringSystem):
+        return sys_
+    try:
+        return MooringSystem(points=case.points, bodies=getattr(case, "bodies", {}) or {}, lines=case.lines)
+    except AttributeError:
+        raise InputError(f"a system_dynamic case needs a mooring system (points, bodies, lines); got "
+                         f"{type(case).__name__}. Suggested fix: give 'points', 'bodies' and 'lines'.") from None
+
+
+@dataclass
+class SystemDynamicSetup:
+    """What the time loop of ``system_dynamic`` needs (see :func:`prepare_system_dynamic`)."""
+
+    fe: SystemFE
+    analysis: SystemDynamicAnalysis
+
+
+def prepare_system_dynamic(case) -> SystemDynamicSetup:
+    """Every check of a ``system_dynamic`` case that can be made before the time loop.
+
+    The names in ``body_motions``, ``point_motions``, ``external_forces`` and ``failures``; the kinds they
+    need (a prescribed body has a motion, a free body's force series covers the run); the network's
+    geometry (:func:`seacable.mooring.checks.check_network`, through the model); motions bound over the run;
+    and the run size (:func:`seacable._limits.check_run_size`).
+    """
+    a: SystemDynamicAnalysis = case.analysis
+    system = _system_of(case)
+    where = "analysis"
+    for key, names, want in (("body_motions", a.body_motions, ("prescribed",)),
+                             ("external_forces", a.external_forces, ("free",)),
+                             ("release_offsets", a.release_offsets, ("free",))):
+        for name in names:
+            if name not in system.bodies:
+                raise InputError(f"{where}.{key}: body '{name}' is not defined (bodies: "
+                                 f"{', '.join(system.bodies) or 'none'}).{suggest(name, system.bodies)}")
+            if system.bodies[name].kind not in want:
+                raise InputError(f"{where}.{key}.{name}: body '{name}' is {system.bodies[name].kind}; {key} is for "
+                                 f"{want[0]} bodies. Suggested fix: set 'kind: {want[0]}' on the body or drop the entry.")
+    for name, body in system.bodies.items():
+        if body.kind == "prescribed" and name not in a.body_motions:
+            warnings.warn(f"body '{name}' is prescribed but {where}.body_motions has no motion for it: it is held "
+                          "still. Suggested fix: add its motion, or make it 'fixed'.", SeacableWarning, stacklevel=2)
+        if body.kind == "free" and body.mass <= 0:
+            raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
+                             f"{body.mass:g} kg. Suggested fix: give its mass in air.")
+    env = case.environment
+    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    moving_water = env.waves is not None or (env.current.speed if env.current.depths is None
+                                             else max(abs(v) for v in env.current.speeds)) != 0
+    if free and moving_water:
+        warnings.warn(f"the water's waves and current act on the lines only, not on the free bodies ({', '.join(free)}): "
+                      "their wave and current loads are not modelled. Suggested fix: give them as "
+                      "analysis.external_forces (a time series) and the bodies' damping matrices.",
+                      SeacableWarning, stacklevel=2)
+    for name in a.point_motions:
+        if name not in system.points:
+            raise InputError(f"{where}.point_motions: point '{name}' is not defined (points: "
+                             f"{', '.join(system.points)}).{suggest(name, system.points)}")
+        if system.points[name].kind != "coupled":
+            raise InputError(f"{where}.point_motions.{name}: point '{name}' is {system.points[name].kind}; only "
+                             "coupled points follow a motion. Suggested fix: set 'kind: coupled'.")
+    seen = set()
+    for k, f in enumerate(a.failures):
+        if f.line not in system.lines:
+            raise InputError(f"{where}.failures[{k}].line: line '{f.line}' is not defined (lines: "
+                             f"{', '.join(system.lines)}).{suggest(f.line, system.lines)}")
+        if (f.line, f.end) in seen:
+            raise InputError(f"{where}.failures[{k}]: line '{f.line}' end {f.end} fails twice. Suggested fix: give "
+                             "one entry per line end (time and tension together if both).")
+        seen.add((f.line, f.end))
+    for name, ser in a.external_forces.items():
+        t, _ = ser.table()
+        if t[0] > 1e-9 or t[-1] < a.duration - 1e-9:
+            raise InputError(f"{where}.external_forces.{name}: the series covers {t[0]:g} to {t[-1]:g} s, the run "
+                             f"needs 0 to {a.duration:g} s. Suggested fix: extend the table.")
+    fe = build_system_fe(system, case.environment, a)
+    net = fe.model.network
+    steps = a.duration / min(a.time_step, a.output_interval)
+    outputs = a.duration / a.output_interval + 1
+    check_run_size(f"system_dynamic case '{getattr(case, 'name', 'system')}'", steps=steps,
+                   stored_values=outputs * (2 * 3 * net.n_nodes + net.n_elements + 12 * len(fe.free_bodies)),
+                   fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
+    _channels_fn(fe, a, a.duration)
+    return SystemDynamicSetup(fe, a)
+
+
+def _padded(per_line, width, fill=np.nan):
+    """Stack per-line arrays (..., k_i) into (..., line, width), NaN padded."""
+    out = []
+    for a in per_line:
+        a = np.asarray(a, float)
+        padw = [(0, 0)] * (a.ndim - 1) + [(0, width - a.shape[-1])]
+        out.append(np.pad(a, padw, constant_values=fill))
+    return np.stack(out, axis=-2)
+
+
+def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
+    """The Dataset of a coupled run."""
+    sysm = fe.system
+    nl = len(fe.line_names)
+    nmax = max(len(n) for n in fe.line_nodes)
+    emax = max(len(e) for e in fe.line_elements)
+    data = {}
+    for k, name in enumerate("xyz"):
+        data[name] = var(("time", "line", "node"), _padded([run.position[:, nodes, k] for nodes in fe.line_nodes], nmax),
+                         "m", {"x": "x position", "y": "y position",
+                               "z": "elevation (0 at the still water level)"}[name])
+    data["segment_tension"] = var(("time", "line", "element"),
+                                  _padded([run.tension[:, els] for els in fe.line_elements], emax), "N",
+                                  "element effective tension")
+    end_t = np.stack([np.stack([run.tension[:, els[0]], run.tension[:, els[-1]]], axis=-1)
+                      for els in fe.line_elements], axis=1)  # (nt, line, 2)
+    fair = fe.fairlead_end
+    data["fairlead_tension"] = var(("time", "line"), end_t[:, np.arange(nl), fair], "N",
+                                   "tension at the fairlead end of the line (its end element)")
+    data["anchor_tension"] = var(("time", "line"), end_t[:, np.arange(nl), 1 - fair], "N",
+                                 "tension at the anchor end of the line (its end element)")
+    ft = np.full(nl, np.nan)
+    for j, li in enumerate(fe.con_line):
+        if li >= 0 and np.isfinite(run.failure_time[j]):
+            ft[li] = np.nanmin([ft[li], run.failure_time[j]])
+    data["failure_time"] = var("line", ft, "s", "time the line failed (NaN: intact)")
+    bodies = list(sysm.bodies)
+    nt = len(run.time)
+    bp = np.zeros((nt, len(bodies), 6))
+    bv = np.zeros((nt, len(bodies), 6))
+    for k, name in enumerate(bodies):
+        body = sysm.bodies[name]
+        if name in fe.free_bodies:
+            j = fe.free_bodies.index(name)
+            bp[:, k], bv[:, k] = run.body_position[:, j], run.body_velocity[:, j]
+        else:
+            bp[:, k] = body.position
+            a = getattr(case, "analysis", None)
+            mot = a.body_motions.get(name) if a is not None and body.kind == "prescribed" else None
+            if mot is not None:
+                d, dd, _ = mot.dofs(run.time)
+                bp[:, k] += d
+                bv[:, k] = dd
+    coords = {"time": var("time", run.time, "s", "time"),
+              "line": var("line", list(fe.line_names), "1", "line"),
+              "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),
+              "element": var("element", np.arange(emax), "1", "element index along the line, 0 at end A"),
+              "s": var(("line", "node"), _padded([np.r_[0.0, np.cumsum(fe.model.network.length[e])]
+                                                  for e in fe.line_elements], nmax), "m",
+                       "unstretched arc length from end A")}
+    if bodies:
+        coords["body"] = var("body", bodies, "1", "body")
+        coords["dof"] = var("dof", list(DOFS), "1", "degree of freedom: x, y, z [m], roll, pitch, yaw [rad]")
+        data["body_position"] = var(("time", "body", "dof"), bp, "m or rad",
+                                    "body reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]")
+        data["body_velocity"] = var(("time", "body", "dof"), bv, "m/s or rad/s",
+                                    "body velocity (x, y, z) [m/s] and rotation rates [rad/s]")
+    title = getattr(case, "name", None) or "system_dynamic"
+    ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
+                      settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
+                                "time_step": run.time_step, "steps": run.steps, "newton_iterations": run.iterations,
+                                **(settings or {})})
+    ds.attrs["interrupted"] = int(run.interrupted)
+    ds.attrs["wall_time"] = run.wall_time
+    if fe.model.water.depth is not None:
+        ds.attrs["depth"] = float(fe.model.water.depth)
+    return ds
+
+
+def start_state(fe: SystemFE, analysis: SystemDynamicAnalysis) -> SystemState:
+    """The static start of a run: the coupled equilibrium, or the lines' equilibrium with the free bodies held
+    (at their given positions, or at the equilibrium plus ``release_offsets``)."""
+    st = static_system(fe, held=analysis.start == "held", tol=analysis.tolerance)
+    if not analysis.release_offsets:
+        return st
+    q = st.body_position.copy()
+    for name, off in analysis.release_offsets.items():
+        q[fe.free_bodies.index(name)] += np.asarray(off, float)
+    return static_system(fe, held=True, q=q, X=st.position, tol=analysis.tolerance)
+
+
+def run_system_dynamic(case, progress=None):
+    """Time-domain response of a mooring system (analysis ``system_dynamic``) as a Dataset.
+
+    ``case`` has ``environment``, ``analysis`` (a :class:`SystemDynamicAnalysis`) and a mooring system
+    (``case.system()``, ``case.system``, or fields ``points``, ``bodies``, ``lines``).
+    """
+    setup = prepare_system_dynamic(case)
+    a = setup.analysis
+    fe = setup.fe
+    start = start_state(fe, a)
+    nd = a.numerical_damping
+    run = simulate_system(fe, start, a.duration, a.time_step, a.output_interval, analysis=a,
+                          tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
+                          beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
+    return system_result(fe, run, case=case, settings={"damping_ratio": a.damping_ratio, "rayleigh": list(a.rayleigh),
+                                                       "start": a.start})
