@@ -18,7 +18,9 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
+import tempfile
 import sys
 import time
 from pathlib import Path
@@ -107,7 +109,17 @@ def _child(code: str, deck: Path, env: dict) -> tuple[dict | None, str, float]:
 
 def run(deck: Path) -> dict:
     """MoorDyn's state (``error`` if it fails; ``ic_residual``: the last 'Remaining error' MoorDyn prints, in
-    m/s^2, and ``ic_converged``: below 1 % of g and a line carrying tension) and MoorPy's (``moorpy``)."""
+    m/s^2, and ``ic_converged``: below 1 % of g and a line carrying tension) and MoorPy's (``moorpy``).
+
+    MoorDyn writes its .out and .log files beside the deck, so both codes read a copy of the deck's folder
+    in a temporary folder: the vendored data stays as it is."""
+    with tempfile.TemporaryDirectory(prefix="seacable-deck-") as tmp:
+        copy = Path(tmp) / deck.parent.name
+        shutil.copytree(deck.parent, copy, ignore=shutil.ignore_patterns("*.out", "*.log"))
+        return _run(copy / deck.name)
+
+
+def _run(deck: Path) -> dict:
     src = str(HERE.parents[3] / "src")  # this checkout's seacable, whatever the working folder
     env = {**os.environ, "PYTHONPATH": src + os.pathsep + os.environ.get("PYTHONPATH", "")}
     result, text, seconds = _child(_CHILD, deck, env)
