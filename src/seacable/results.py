@@ -46,6 +46,7 @@ ANALYSIS_VARIABLES: dict[str, tuple[str, ...]] = {
                       "point_z", "point_kind", "fairlead_tension", "anchor_tension"),
     "system_offsets": ("condition", "applied_load", "heading", "body", "body_offset_x", "body_offset_y", "offset",
                        "restoring_force", "fairlead_tension"),
+    "system_dynamic": ("time", "line", "x", "y", "z", "fairlead_tension", "anchor_tension", "failure_time"),
 }
 
 

@@ -34,6 +34,7 @@ _ANALYSES = {
     "towline_dynamic": ("seacable.towline.run", "run_towline_dynamic", "prepare_towline_dynamic"),
     "system_static": ("seacable.system.run", "run_system_static", "prepare_system_static"),
     "system_offsets": ("seacable.system.run", "run_system_offsets", "prepare_system_offsets"),
+    "system_dynamic": ("seacable.system.dynamics", "run_system_dynamic", "prepare_system_dynamic"),
 }
 
 #: analyses with a check before solving but no time loop (no progress callback)
@@ -68,7 +69,9 @@ def run(case: Case, progress=None):
         Labelled result with units, long names and provenance; its ``analysis``
         attribute names the analysis type.
     """
-    if isinstance(case, MoorDynCase):  # a MoorDyn input file, from load_case
+    if isinstance(case, MoorDynCase) and case.has_structures:  # bodies or rods: the system analyses
+        case = case.system_case()
+    elif isinstance(case, MoorDynCase):  # a MoorDyn network of lines and points
         from .mooring.moordyn import run_moordyn_case
 
         return run_moordyn_case(case, progress=progress)
@@ -92,7 +95,9 @@ def check(case: Case) -> None:
     InputError, NoSolutionError, ConvergenceError
         As :func:`run` would, before its time loop.
     """
-    if isinstance(case, MoorDynCase):
+    if isinstance(case, MoorDynCase) and case.has_structures:
+        case = case.system_case()
+    elif isinstance(case, MoorDynCase):
         from .mooring.moordyn import prepare_moordyn
 
         prepare_moordyn(case)

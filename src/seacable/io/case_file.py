@@ -159,12 +159,17 @@ def load_case(path: str | Path) -> Case | SystemCase | MoorDynCase:
 
 
 def resolve_files(data, folder: Path) -> None:
-    """Make the relative ``file`` of a vessel, tug, motion or bathymetry table relative to the case file's folder."""
+    """Make the relative ``file`` of a vessel, tug, motion, bathymetry or force table relative to the
+    case file's folder."""
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
         return
-    for key in ("vessel", "bathymetry", "motion", "tug"):
-        table = analysis.get(key)
+    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "motion", "tug")]
+    for key in ("body_motions", "point_motions", "external_forces"):  # system_dynamic: one table per name
+        named = analysis.get(key)
+        if isinstance(named, dict):
+            tables += list(named.values())
+    for table in tables:
         if isinstance(table, dict) and isinstance(table.get("file"), str):
             f = Path(table["file"])
             if not f.is_absolute():

@@ -1544,8 +1544,10 @@ class MoorDynCase:
 
     @property
     def analysis_type(self) -> str:
-        """``'mooring_static'`` or, with a ``duration``, ``'mooring_dynamic'``."""
-        return "mooring_static" if self.duration is None else "mooring_dynamic"
+        """``'mooring_static'`` or, with a ``duration``, ``'mooring_dynamic'``; ``system_static`` and
+        ``system_dynamic`` for a deck with bodies, rods or points on a body (:meth:`system_case`)."""
+        kind = "system" if self.has_structures else "mooring"
+        return f"{kind}_static" if self.duration is None else f"{kind}_dynamic"
 
     def with_run(self, *, duration=None, motion=None, time_step=None, output_interval=None) -> MoorDynCase:
         """The same file with a run set (each argument None keeps the current value).
@@ -1582,6 +1584,36 @@ class MoorDynCase:
         """The deck as ``(MooringSystem, Environment)`` (:func:`moordyn_system`), for the system analyses."""
         return moordyn_system(self.data, turbine_positions=turbine_positions)
 
+    def system_case(self):
+        """The deck as a :class:`~seacable.system.case.SystemCase`: ``system_static``, or with a duration
+        ``system_dynamic`` with the deck's ``FAILURE`` rows (what :func:`seacable.run` runs for a deck with
+        bodies, rods or points on a body).
+
+        Raises
+        ------
+        InputError
+            What :func:`moordyn_system` refuses; a vessel ``motion`` (a deck with structures takes its
+            motions in a YAML system case: ``body_motions``, ``point_motions``).
+        """
+        from ..system.case import SystemCase, SystemStaticAnalysis
+        from ..system.dynamics import SystemDynamicAnalysis
+
+        label = self.data.path or "MoorDyn file"
+        if self.motion is not None:
+            raise InputError(f"{label}: a vessel motion for a deck with bodies, rods or points on a body is not "
+                             "taken from the command line. Suggested fix: write the system as a YAML case "
+                             "(seacable.io.dump_case(case.system_case())) and give 'body_motions' or "
+                             "'point_motions' in its system_dynamic analysis.")
+        system, environment = self.system()
+        if self.duration is None:
+            analysis = SystemStaticAnalysis()
+        else:
+            analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
+                                             output_interval=self.output_interval,
+                                             failures=_line_failures(self.data))
+        return SystemCase(name=self.name, description=f"MoorDyn file {label}", environment=environment,
+                          points=system.points, bodies=system.bodies, lines=system.lines, analysis=analysis)
+
     def describe(self) -> str:
         """One line for ``seacable validate``."""
         md = self.data
@@ -1591,6 +1623,29 @@ class MoorDynCase:
         where = "no seabed" if depth is None else f"depth {depth:g} m"
         return (f"MoorDyn network, {self.analysis_type} analysis: {len(md.lines)} line(s), {len(md.points)} "
                 f"point(s), {segments} segment(s), line length {length:g} m, {where}")
+
+
+def _line_failures(md: MoorDynInput) -> list:
+    """The deck's ``FAILURE`` rows as :class:`~seacable.system.dynamics.LineFailure` items (one per line end)."""
+    from ..system.dynamics import LineFailure
+
+    out = []
+    for f in md.failures:
+        for line_id in f.lines:
+            line = next((ln for ln in md.lines if ln.id == line_id), None)
+            if line is None:
+                raise InputError(f"{md.path or 'MoorDyn file'}: FAILURE {f.id} names line {line_id}, which the "
+                                 "LINES section does not define. Suggested fix: name a line of the deck.")
+            if isinstance(f.attachment, tuple):
+                end = "a" if line.rod_a == f.attachment else "b" if line.rod_b == f.attachment else None
+            else:
+                end = "a" if line.point_a == f.attachment else "b" if line.point_b == f.attachment else None
+            if end is None:
+                raise InputError(f"{md.path or 'MoorDyn file'}: FAILURE {f.id}: line {line_id} does not end at "
+                                 f"attachment {f.attachment}. Suggested fix: name the point (or rod end) the line "
+                                 "ends at.")
+            out.append(LineFailure(line=f"line{line_id}", end=end, time=f.time or None, tension=f.tension or None))
+    return out
 
 
 def load_moordyn_case(path, *, name=None) -> MoorDynCase:

@@ -16,7 +16,7 @@ from .laying import LAYING_FIGURES, animate_laying
 from .mooring import MOORING_FIGURES, plot_mooring_dynamic, plot_mooring_pushover, plot_mooring_static
 from .statics import STATICS_FIGURES
 from .sweep import SWEEP_FIGURES
-from .system import SYSTEM_FIGURES, plot_system_offsets, plot_system_static
+from .system import SYSTEM_FIGURES, plot_system_dynamic, plot_system_offsets, plot_system_static
 from .towed import TOWED_FIGURES
 from .towline import (
     TOWLINE_FIGURES,
@@ -37,6 +37,7 @@ __all__ = [
     "plot_mooring_pushover",
     "plot_mooring_static",
     "plot_result",
+    "plot_system_dynamic",
     "plot_system_offsets",
     "plot_system_static",
     "towline_distance",

@@ -1,4 +1,4 @@
-"""Standard figures of the mooring-system analyses (``system_static``, ``system_offsets``).
+"""Standard figures of the mooring-system analyses (``system_static``, ``system_offsets``, ``system_dynamic``).
 
 The figure functions follow :data:`seacable.plot.FIGURES`: ``function(ds, pyplot)`` returns a
 dict ``{figure name: Figure}``; :data:`SYSTEM_FIGURES` maps the analysis names to them. The public
@@ -18,9 +18,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._core import _label
+from ._core import _interrupted_note, _label, _snapshot_times
 
-__all__ = ["SYSTEM_FIGURES", "plot_system_offsets", "plot_system_static"]
+__all__ = ["SYSTEM_FIGURES", "plot_system_dynamic", "plot_system_offsets", "plot_system_static"]
 
 _STYLE = {"intact": "-", "damaged": "--"}
 
@@ -210,10 +210,96 @@ def _system_offsets(ds, plt):
     return figs
 
 
+def _failures(ds, ax) -> None:
+    """Dotted vertical lines at the times lines failed."""
+    if "failure_time" not in ds.variables:
+        return
+    for k, (name, t) in enumerate(zip(_names(ds, "line"), np.asarray(ds.failure_time.values, float))):
+        if np.isfinite(t):
+            ax.axvline(t, color=f"C{k}", ls=":", lw=1.0)
+            ax.annotate(f"{name} fails", (t, 1.0), xycoords=("data", "axes fraction"), rotation=90, ha="right",
+                        va="top", fontsize=7)
+
+
+def _dynamic_tensions(ds, plt):
+    """Fairlead and anchor tension of each line in time, failures marked."""
+    time = np.asarray(ds.time.values, float)
+    scale, unit = _scale(ds.fairlead_tension.values, ds.anchor_tension.values)
+    fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    for ax, key, where in ((axes[0], "fairlead_tension", "fairlead"), (axes[1], "anchor_tension", "anchor")):
+        for k, name in enumerate(_names(ds, "line")):
+            ax.plot(time, np.asarray(ds[key].values[:, k], float) / scale, color=f"C{k}", lw=1.1, label=name)
+        _failures(ds, ax)
+        ax.set(ylabel=f"{where} tension [{unit}]")
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7)
+    axes[0].set_title("Line end tensions" + _interrupted_note(ds, time, "s"))
+    axes[1].set(xlabel="time [s]")
+    return fig
+
+
+def _dynamic_bodies(ds, plt):
+    """Each body's translations and rotations in time, failures marked."""
+    time = np.asarray(ds.time.values, float)
+    fig, (trans, rot) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    pos = np.asarray(ds.body_position.values, float)  # (time, body, dof)
+    for j, body in enumerate(_names(ds, "body")):
+        for d, (name, ls) in enumerate(zip(("x", "y", "z"), ("-", "--", ":"))):
+            trans.plot(time, pos[:, j, d] - pos[0, j, d], ls, color=f"C{j}", lw=1.1, label=f"{body} {name}")
+            rot.plot(time, np.degrees(pos[:, j, 3 + d] - pos[0, j, 3 + d]), ls, color=f"C{j}", lw=1.1,
+                     label=f"{body} {('roll', 'pitch', 'yaw')[d]}")
+    for ax in (trans, rot):
+        _failures(ds, ax)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7, ncol=3)
+    trans.set(ylabel="displacement from t = 0 [m]", title="Body motions" + _interrupted_note(ds, time, "s"))
+    rot.set(xlabel="time [s]", ylabel="rotation from t = 0 [deg]")
+    return fig
+
+
+def _dynamic_views(ds, plt):
+    """Plan view and elevation of the lines at a few times."""
+    time = np.asarray(ds.time.values, float)
+    _, shown = _snapshot_times(time, 5)
+    fig, (plan, side) = plt.subplots(1, 2, figsize=(13, 5.2), gridspec_kw={"width_ratios": [1, 1.3]})
+    shades = np.linspace(0.35, 1.0, len(shown))
+    for i, t in enumerate(shown):
+        n = int(np.argmin(np.abs(time - t)))
+        for k, name in enumerate(_names(ds, "line")):
+            x, y, z = (np.asarray(ds[v].values[n, k], float) for v in ("x", "y", "z"))
+            keep = np.isfinite(x) & np.isfinite(y) & np.isfinite(z)
+            label = f"{name}" if i == len(shown) - 1 else None
+            for ax, v in ((plan, y), (side, z)):
+                ax.plot(x[keep], v[keep], color=f"C{k}", alpha=float(shades[i]), lw=1.2, label=label)
+        if "body_position" in ds.variables:
+            bp = np.asarray(ds.body_position.values[n], float)
+            plan.plot(bp[:, 0], bp[:, 1], "s", ms=7, mfc="none", mec="k", alpha=float(shades[i]))
+            side.plot(bp[:, 0], bp[:, 2], "s", ms=7, mfc="none", mec="k", alpha=float(shades[i]))
+    times = ", ".join(f"{t:g}" for t in shown)
+    plan.set(xlabel="x [m]", ylabel="y [m]", title=f"Plan view at t = {times} s (darker: later)")
+    plan.set_aspect("equal", adjustable="datalim")
+    plan.legend(fontsize=7)
+    depth = _depth(ds)
+    if depth is not None:
+        side.axhline(-depth, color="sienna", lw=1.2, label="seabed")
+    side.axhline(0.0, color="steelblue", lw=0.8, ls="--", label="sea surface")
+    side.set(xlabel="x [m]", ylabel="z [m]", title="Elevation (looking along +y)")
+    side.legend(fontsize=7)
+    return fig
+
+
+def _system_dynamic(ds, plt):
+    figs = {"tensions": _dynamic_tensions(ds, plt), "system": _dynamic_views(ds, plt)}
+    if "body_position" in ds.variables and ds.sizes.get("body", 0):
+        figs["bodies"] = _dynamic_bodies(ds, plt)
+    return figs
+
+
 #: analysis type -> function(ds, pyplot) -> {figure name: Figure}; merged into seacable.plot.FIGURES
 SYSTEM_FIGURES = {
     "system_static": _system_static,
     "system_offsets": _system_offsets,
+    "system_dynamic": _system_dynamic,
 }
 
 
@@ -277,3 +363,26 @@ def plot_system_offsets(ds) -> list:
         The result is not a ``system_offsets`` one.
     """
     return _figures(ds, "system_offsets")
+
+
+def plot_system_dynamic(ds) -> list:
+    """Figures of a ``system_dynamic`` result: tensions and body motions in time, the system at a few times.
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A ``system_dynamic`` result.
+
+    Returns
+    -------
+    list of matplotlib.figure.Figure
+        The fairlead and anchor tension of each line against time; the lines in plan view and
+        elevation at about five times (later darker), with the bodies; each body's translations and
+        rotations from their values at t = 0. Line failures are dotted vertical lines.
+
+    Raises
+    ------
+    InputError
+        The result is not a ``system_dynamic`` one.
+    """
+    return _figures(ds, "system_dynamic")

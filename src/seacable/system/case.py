@@ -23,8 +23,10 @@ segment, or ``segments`` and ``attachments``) plus its ends ``end_a``, ``end_b``
 
 Analyses: ``system_static`` (equilibrium, end tensions, anchor loads, stiffness; intact and
 damaged) and ``system_offsets`` (equilibrium under an external load on one body swept over
-magnitudes and headings: offsets, watch circle, restoring force). :data:`SYSTEM_ANALYSES` is the
-union of the system analyses: a new one is one more entry there.
+magnitudes and headings: offsets, watch circle, restoring force) and ``system_dynamic`` (the
+finite-element lines coupled with the rigid bodies in time, line failures;
+:mod:`seacable.system.dynamics`). :data:`SYSTEM_ANALYSES` is the union of the system analyses: a
+new one is one more entry there.
 """
 
 from __future__ import annotations
@@ -39,6 +41,7 @@ from ..case import _STAND_IN
 from ..environment import Environment
 from ..errors import InputError
 from ..line import LineType
+from .dynamics import SystemDynamicAnalysis
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = ["SYSTEM_ANALYSES", "SystemAnalysis", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis",
@@ -120,7 +123,7 @@ class SystemOffsetsAnalysis(_Solve):
 
 
 #: The analyses of a system case; a new one (``system_dynamic``) is one more entry.
-SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis)
+SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis, SystemDynamicAnalysis)
 SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
 
