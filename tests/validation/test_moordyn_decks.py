@@ -53,10 +53,9 @@ NOT_A_SYSTEM = {
 }
 # Decks that convert but whose statics seacable does not solve (yet), and why.
 NO_STATICS = {
-    # a free rod is a body with no stiffness in spin about its own axis: the statics refuse it
-    "MoorDyn/tests/Mooring/RodHanging.txt": "hydrostatic stiffness in roll",
-    "r-test/modules/moordyn/md_lineFail/moordyn.dat": "hydrostatic stiffness in roll",
-    # all three lines end at one body point: no roll restoring (a dynamic test deck, TmaxIC = 0)
+    # a 1.03e6 kg body without volume, its three lines at one point 0.22 m below its centre of gravity:
+    # it sinks to the anchors' depth (MoorPy: z = -70 m, lines slack, rolled 1.7 rad); a dynamic test
+    # deck (TmaxIC = 0) with no upright equilibrium
     "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat": "hydrostatic stiffness in roll",
     # a 1 m line between points 2 m apart (a viscoelastic element test): strain 1
     "r-test/modules/moordyn/md_viscoelastic/moordyn.dat": "cannot reach its fairlead",
@@ -217,6 +216,25 @@ def test_a_body_with_an_external_load_balances_it():
     # the line ends at the body point (end B): 1e-8 of the 2.5e5 N load, the Newton tolerance
     assert np.allclose(eq.end_b_force[0] + load, 0.0, atol=1e-8 * np.linalg.norm(load) * 10)
     assert eq.body_position[0][0] > 0 and eq.body_position[0][1] > 0  # pushed along +x, +y
+
+
+def test_a_free_rod_hangs_plumb_with_its_spin_held():
+    """md_lineFail: a free 10 m rod hangs from a coupled point by a 10 m line at its top end and is pulled
+    sideways at its bottom end by chains from both sides. Nothing resists its spin about its own axis (every
+    load on the axis): the spin is held and reported, the rod found plumb. The lines' forces on the rod balance
+    its wet weight (1e-6 of it: Newton tolerance 1e-8 of the 4e6 N force scale), independently summed here."""
+    md, eq = _solve("r-test/modules/moordyn/md_lineFail/moordyn.dat")
+    assert len(eq.indeterminate) == 1 and "(0, 0, 1)" in eq.indeterminate[0]
+    rod = eq.system.bodies["rod1"]
+    wet = (rod.mass - md.water_density * rod.volume) * md.gravity
+    fz = 0.0
+    for i, name in enumerate(eq.line_names):
+        line = eq.system.lines[name]
+        for end, f in ((line.end_a, eq.end_a_force[i]), (line.end_b, eq.end_b_force[i])):
+            if end.startswith("rod1"):
+                fz += f[2]
+    assert fz == pytest.approx(wet, rel=1e-6)
+    assert abs(eq.body_position[0][3]) < 1e-9 and abs(eq.body_position[0][4]) < 1e-9
 
 
 def test_seabed_friction_is_the_decks():

@@ -75,6 +75,7 @@ class Evaluation:
     node_force: np.ndarray    # (nn, 3) total force on each node (lines + node loads) [N]
     scale: float              # force scale for the relative residual [N]
     hydro: np.ndarray         # (6 nb, 6 nb) restoring of the bodies' weight, buoyancy, waterplane
+    reaction: np.ndarray | None = None   # (nb, 3) force of the pin on each body (zero unless pinned) [N]
 
 
 def body_data(asm: Assembly, system, external: dict | None) -> BodyData:

@@ -65,7 +65,7 @@ from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
-from ._stat_model import Assembly, assemble, euler, rotation
+from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
 __all__ = ["SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"]
@@ -108,6 +108,12 @@ class SystemEquilibrium:
     residual : float
         Largest residual, relative to the system's force scale (moments also divided by its
         length scale). [-]
+    indeterminate : list of str
+        Rotations of free bodies that nothing resists nor loads (a rod's spin about its own axis:
+        every line point and its centres of gravity and buoyancy on the axis), held where they
+        start; their stiffness is zero.
+    pin_reaction : ndarray, shape (nbf, 3)
+        Force the pin exerts on each pinned free body (zero for the others), global axes. [N]
     """
 
     system: MooringSystem
@@ -132,6 +138,8 @@ class SystemEquilibrium:
     _anchor_is_a: np.ndarray = field(repr=False)
     _e: np.ndarray = field(repr=False)
     _node_position: np.ndarray = field(repr=False)
+    indeterminate: list = field(default_factory=list)
+    pin_reaction: np.ndarray | None = None
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
@@ -278,6 +286,12 @@ class _Problem:
         self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
         for k in range(self.nb):
             self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
+        # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
+        # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
+        bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
+        self.pinned = np.array([b.pinned for b in bodies], bool)
+        self.spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
+        self.spin_k = 1.0         # stiffness the indeterminate rotations are held with [N m/rad], set per evaluation
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -309,6 +323,7 @@ class _Problem:
     def eval(self, st: State, load: float) -> Evaluation:
         ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
         self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
+        self._hold(st, ev)
         zd = self._z_dof(st)
         if zd.size:
             # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
@@ -322,6 +337,38 @@ class _Problem:
                 J[:, zd] = 0.0
                 J[zd, zd] = 1.0
         return ev
+
+    def _hold(self, st: State, ev: Evaluation) -> None:
+        """Hold a pinned body's translations (the residual there is the pin's reaction, kept in
+        ``ev.reaction``) and give the indeterminate rotations a stiffness in the Newton Jacobian only
+        (their moment is zero whatever the rotation, so the step has no component along them)."""
+        ev.reaction = np.zeros((self.nb, 3))
+        for k in np.flatnonzero(self.pinned):
+            t = slice(6 * k, 6 * k + 3)
+            ev.reaction[k] = -ev.residual[t]
+            ev.residual[t] = 0.0
+            ev.jac[t, :] = 0.0
+            ev.jac[:, t] = 0.0
+            ev.jac[t, t] = np.eye(3)
+        if not any(a.size for a in self.spin):
+            return
+        self.spin_k = ev.scale * self.length_scale
+        for k, axes in enumerate(self.spin):
+            if axes.size:
+                A = st.R[k] @ axes.T          # global directions of the indeterminate rotations
+                r = slice(6 * k + 3, 6 * k + 6)
+                ev.jac[r, r] -= self.spin_k * (A @ A.T)
+
+    def held_rotations(self, st: State) -> list:
+        """The indeterminate rotations, for the result: '<body>: rotation about (ax, ay, az) (global)'."""
+        out = []
+        for k, axes in enumerate(self.spin):
+            name = self.asm.body_names[self.asm.free_bodies[k]]
+            for a in axes:
+                g = st.R[k] @ a
+                g = np.where(np.abs(g) < 1e-9, 0.0, g) + 0.0
+                out.append(f"{name}: rotation about ({g[0]:.4g}, {g[1]:.4g}, {g[2]:.4g}) (global axes)")
+        return out
 
     def error(self, ev: Evaluation) -> float:
         """Largest residual relative to the force scale (moments also to the length scale)."""
@@ -449,6 +496,42 @@ def _rotvec(th) -> np.ndarray:
     return np.eye(3) + np.sin(a) * K + (1 - np.cos(a)) * (K @ K)
 
 
+def _indeterminate_rotations(asm, k: int, body) -> np.ndarray:
+    """Body-frame unit axes (m, 3) of the rotations of free body ``k`` that nothing resists nor loads.
+
+    A rotation about the reference point along ``n`` changes the moment along ``n`` of no load
+    applied at ``r`` with ``n x r = 0``: when every line point, the centre of gravity (with mass) and
+    of buoyancy (with volume) lie on one line through the reference point, the rotation about that
+    line (a rod's spin) is indeterminate; all three when they are all at the reference point. The
+    waterplane moment depends on the body z axis only: it leaves the spin about body z free (with
+    I_xx = I_yy, which makes its moment along that axis zero) and no other. A user hydrostatic
+    matrix decides for itself (nothing held).
+    """
+    if body.hydrostatic_stiffness is not None:
+        return np.zeros((0, 3))
+    arms = [asm.node_rel[n] for n in np.flatnonzero((asm.node_kind == BODY) & (asm.node_body == k))]
+    if body.mass > 0:
+        arms.append(np.asarray(body.center_of_gravity, float))
+    if body.volume > 0:
+        arms.append(np.asarray(body.center_of_buoyancy, float))
+    arms = np.array(arms, float).reshape(-1, 3)
+    size = max(float(np.abs(arms).max(initial=0.0)), 1e-300)
+    arms = arms[np.linalg.norm(arms, axis=1) > 1e-9 * size]
+    if arms.size == 0:
+        axes = np.eye(3)
+    else:
+        n = arms[np.argmax(np.linalg.norm(arms, axis=1))]
+        n = n / np.linalg.norm(n)
+        if np.abs(np.cross(arms, n)).max() > 1e-9 * size:
+            return np.zeros((0, 3))
+        axes = n[None, :]
+    if any(body.waterplane_moments):
+        ixx, iyy = body.waterplane_moments
+        keep = [a for a in axes if abs(a[0]) < 1e-12 and abs(a[1]) < 1e-12 and abs(ixx - iyy) <= 1e-12 * abs(ixx)]
+        axes = np.array([[0.0, 0.0, 1.0]]) if keep else np.zeros((0, 3))
+    return axes
+
+
 def _check_external(system, asm, external):
     for name, load in (external or {}).items():
         if name not in system.bodies or system.bodies[name].kind != "free":
@@ -486,11 +569,28 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     hyd = ev.hydro
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     moor = _condense(-ev.jac_lines, nb, pts)
+    for k, axes in enumerate(prob.spin):
+        if not axes.size:
+            continue
+        A = st.R[k] @ axes.T
+        r = slice(6 * k + 3, 6 * k + 6)
+        moment = A.T @ ev.residual[r]
+        if np.abs(moment).max() > prob.tol * ev.scale * prob.length_scale:
+            name = prob.asm.body_names[prob.asm.free_bodies[k]]
+            a = A[:, int(np.argmax(np.abs(moment)))]
+            raise InputError(
+                f"bodies.{name}: nothing resists a rotation about ({a[0]:.4g}, {a[1]:.4g}, {a[2]:.4g}) (global axes; "
+                "every line point, the centre of gravity and of buoyancy are on that axis) but a moment of "
+                f"{np.abs(moment).max():.4g} N m loads it there, so the body spins without end. Suggested fix: "
+                "remove the moment about the axis from external_force, or attach a line off the axis.")
+        moor[r, r] += prob.spin_k * (A @ A.T)
     tot = np.diag(hyd) + np.diag(moor)
     for k in range(nb):
         name = prob.asm.body_names[prob.asm.free_bodies[k]]
         for j in range(6):
             i = 6 * k + j
+            if j < 3 and prob.pinned[k]:
+                continue      # held by the pin
             same = [6 * kk + jj for kk in range(nb) for jj in ((0, 1, 2) if j < 3 else (3, 4, 5))]
             ref = max(np.abs(np.diag(hyd)[same]).max(), np.abs(np.diag(moor)[same]).max(), 1e-300)
             if tot[i] > 1e-9 * ref:
@@ -532,7 +632,12 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     except NoSolutionError as err:
         raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                               "points where every line can reach.") from None
-    _check_stability(prob, st0, ev0)
+    try:
+        _check_stability(prob, st0, ev0)
+    except InputError:
+        # a body unstable where it starts may be restored once the lines take load (a rod hanging from
+        # a line that is unloaded at the start): the solve decides, as solve_equilibrium does
+        solve_equilibrium(system, environment, external=external)
 
 
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
@@ -585,7 +690,13 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     except NoSolutionError as err:
         raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                               "points where every line can reach.") from None
-    _check_stability(prob, st0, ev0)
+    try:
+        _check_stability(prob, st0, ev0)
+        unstable_start = None
+    except InputError as err:
+        # unstable where it starts, maybe not at equilibrium (lines unloaded at the start): solve, then
+        # check the equilibrium; refuse with this message if no stable equilibrium is found
+        unstable_start = err
     st, ev, ok = prob.newton(st0, 1.0, ev0)
     if not ok:
         # load ramp: external loads in steps from zero, each step from the last solution
@@ -600,6 +711,13 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             if good:
                 ok = True
                 break
+    if unstable_start is not None:
+        if not ok:
+            raise unstable_start
+        try:
+            _check_stability(prob, st, ev)
+        except InputError as err:
+            raise InputError(f"at the equilibrium found: {err}") from None
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -688,7 +806,8 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
-        _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P)
+        _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
+        pin_reaction=ev.reaction.copy())
 
 
 def _continuous(angles, ref):
