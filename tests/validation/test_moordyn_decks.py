@@ -61,8 +61,6 @@ NO_STATICS = {
     "r-test/modules/moordyn/md_viscoelastic/moordyn.dat": "cannot reach its fairlead",
     # FAST.Farm places the two turbines; the deck does not say where
     "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "cannot reach its fairlead",
-    # a W of three lines with a float and seabed contact: the system statics' Newton does not converge
-    "MoorPy/tests/case6.dat": "did not converge",
     # a 1 N EA spring carrying 1 kg: strain 9.8 (MoorDyn's stability test), beyond the statics' strain limit
     "MoorDyn/tests/Mooring/stability/springs.txt": "did not converge",
     "MoorDyn/tests/Mooring/stability/spring.txt": "did not converge",

@@ -297,15 +297,26 @@ def test_line_profile_through_clumps_and_segments():
     assert np.all(np.diff(np.linalg.norm(np.diff(pos, axis=0), axis=1)) < 0.2)   # no jumps
 
 
-def test_a_mid_water_line_sagging_into_the_seabed_warns():
-    # Two held points 10 m above a 100 m deep seabed joined by 300 m of chain 200 m apart: the
-    # catenary between them sags ~ 90 m, through the seabed, which a mid-water sub-line does
-    # not model: a warning says so.
+def test_a_line_sagging_into_the_seabed_lands_there(monkeypatch):
+    """Two held points 10 m above a 100 m deep seabed, 200 m apart, joined by 300 m of chain: one free
+    catenary between them would sag ~90 m, through the seabed. The statics split the line at its lowest
+    point, which lands: by symmetry each half is the touchdown catenary from the seabed to a point 10 m up
+    and 100 m across, 150 m long (seacable's single-line catenary; 1e-7: the Newton tolerance is 1e-8 of
+    the force scale). Without the split (no rounds) the statics warn that the line passes the seabed."""
+    from seacable.system import statics
+
     env = Environment(depth=100.0)
     system = MooringSystem(
         points={"a": SystemPoint(kind="coupled", position=(0.0, 0.0, -90.0)),
                 "b": SystemPoint(kind="coupled", position=(200.0, 0.0, -90.0))},
         lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 300.0), end_a="a", end_b="b")})
+    eq = solve_equilibrium(system, env)          # no warning: it lies on the seabed
+    w = ex.BUOY_CHAIN.submerged_weight(env.water_density, env.gravity)
+    half = catenary(100.0, 10.0, 150.0, ex.BUOY_CHAIN.axial_stiffness, w, 0.0, True)
+    assert eq.end_a_tension[0] == pytest.approx(half.fairlead_tension, rel=1e-7)
+    assert eq.end_b_tension[0] == pytest.approx(half.fairlead_tension, rel=1e-7)
+    assert eq.grounded_length[0] == pytest.approx(2 * half.grounded_length, rel=1e-6)
+    monkeypatch.setattr(statics, "_SAG_ROUNDS", 0)
     with pytest.warns(SeacableWarning, match="below the seabed"):
         solve_equilibrium(system, env)
     deep = Environment(depth=300.0)

@@ -263,9 +263,9 @@ def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.nd
 class _Problem:
     """Newton iteration on the free DOFs of an assembled system."""
 
-    def __init__(self, system, env, external, tol, max_iter):
+    def __init__(self, system, env, external, tol, max_iter, cuts=None):
         self.system, self.env = system, env
-        self.asm, base = _assembly(system, env)
+        self.asm, base = _assembly(system, env, cuts)
         _check_external(system, self.asm, external)
         self.bd = base
         if external:
@@ -304,7 +304,7 @@ class _Problem:
             if initial is not None:
                 q = initial.body_position[i]
             X[k], R[k] = q[:3], rotation(q[3:])
-        if initial is not None:
+        if initial is not None and initial._node_position.shape == P.shape:
             P[asm.free_nodes] = initial._node_position[asm.free_nodes]
         grounded = np.zeros(P.shape[0], bool)
         if asm.depth is not None:
@@ -480,14 +480,15 @@ _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much
 _CACHE: dict = {}
 
 
-def _assembly(system: MooringSystem, env: Environment):
-    """The flattened system and its bodies' constants, kept for the last few (system, environment)
-    pairs (both frozen models)."""
-    key = (id(system), id(env))
+def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None):
+    """The flattened system and its bodies' constants, kept for the last few (system, environment,
+    added cuts) (the models are frozen)."""
+    cuts = {k: tuple(v) for k, v in sorted((cuts or {}).items())}
+    key = (id(system), id(env), tuple(cuts.items()))
     hit = _CACHE.get(key)
     if hit is not None and hit[0] is system and hit[1] is env:
         return hit[2], hit[3]
-    asm = assemble(system, env)
+    asm = assemble(system, env, cuts)
     base = body_data(asm, system, None)
     if len(_CACHE) >= 8:
         _CACHE.pop(next(iter(_CACHE)))
@@ -692,41 +693,54 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     if initial is not None and initial.system is not system:
         raise InputError("initial must be an equilibrium of the same system object. Suggested fix: pass the "
                          "previous solve_equilibrium result of this system, or None.")
-    prob = _Problem(system, environment, external, tol, max_iter)
-    st0 = prob.initial_state(initial)
-    try:
-        ev0 = prob.eval(st0, 1.0)
-    except NoSolutionError as err:
-        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
-                              "points where every line can reach.") from None
-    try:
-        _check_stability(prob, st0, ev0)
-        unstable_start = None
-    except InputError as err:
-        # unstable where it starts, maybe not at equilibrium (lines unloaded at the start): solve, then
-        # check the equilibrium; refuse with this message if no stable equilibrium is found
-        unstable_start = err
-    st, ev, ok = prob.newton(st0, 1.0, ev0)
-    if not ok:
-        # load ramp: external loads in steps from zero, each step from the last solution
-        for n_steps in (5, 20):
-            s = prob.initial_state(initial)
-            good = True
-            for lam in np.linspace(1.0 / n_steps, 1.0, n_steps):
-                s, ev, good = prob.newton(s, float(lam))
-                if not good:
-                    break
-            st = s
-            if good:
-                ok = True
-                break
-    if unstable_start is not None:
-        if not ok:
-            raise unstable_start
+    # a line sagging into the seabed between its nodes gets a node at its lowest point, where it may
+    # land (the catenaries either side then touch down there): split before solving if it sags at
+    # the start, and after solving if it sags at the equilibrium, at most _SAG_ROUNDS times
+    cuts = dict(initial._asm.extra_cuts or {}) if initial is not None else {}
+    for attempt in range(_SAG_ROUNDS + 1):
+        prob = _Problem(system, environment, external, tol, max_iter, cuts)
+        st0 = prob.initial_state(initial)
         try:
-            _check_stability(prob, st, ev)
+            ev0 = prob.eval(st0, 1.0)
+        except NoSolutionError as err:
+            raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
+                                  "points where every line can reach.") from None
+        more = _sag_cuts(prob, st0, ev0) if attempt < _SAG_ROUNDS else {}
+        if more:
+            cuts = _merge_cuts(cuts, more)
+            continue
+        try:
+            _check_stability(prob, st0, ev0)
+            unstable_start = None
         except InputError as err:
-            raise InputError(f"at the equilibrium found: {err}") from None
+            # unstable where it starts, maybe not at equilibrium (lines unloaded at the start): solve, then
+            # check the equilibrium; refuse with this message if no stable equilibrium is found
+            unstable_start = err
+        st, ev, ok = prob.newton(st0, 1.0, ev0)
+        if not ok:
+            # load ramp: external loads in steps from zero, each step from the last solution
+            for n_steps in (5, 20):
+                s = prob.initial_state(initial)
+                good = True
+                for lam in np.linspace(1.0 / n_steps, 1.0, n_steps):
+                    s, ev, good = prob.newton(s, float(lam))
+                    if not good:
+                        break
+                st = s
+                if good:
+                    ok = True
+                    break
+        if unstable_start is not None:
+            if not ok:
+                raise unstable_start
+            try:
+                _check_stability(prob, st, ev)
+            except InputError as err:
+                raise InputError(f"at the equilibrium found: {err}") from None
+        more = _sag_cuts(prob, st, ev) if attempt < _SAG_ROUNDS else {}
+        if not more:
+            break
+        cuts = _merge_cuts(cuts, more)
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -745,6 +759,44 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     eq = _result(prob, st, ev)
     _warn_strain(eq)
     return eq
+
+
+_SAG_ROUNDS = 3         # times lines sagging into the seabed are split and the system solved again
+
+
+def _merge_cuts(cuts: dict, more: dict) -> dict:
+    out = {k: tuple(v) for k, v in cuts.items()}
+    for k, v in more.items():
+        out[k] = tuple(sorted(set(out.get(k, ())) | set(v)))
+    return out
+
+
+def _sag_cuts(prob: _Problem, st: State, ev: Evaluation) -> dict:
+    """``{line: (arc length,)}`` of the lowest point of each suspended sub-line whose sag reaches below
+    the seabed (it would pass through it: the catenary of a sub-line lies on the seabed only from a
+    node on it)."""
+    asm = prob.asm
+    if asm.depth is None:
+        return {}
+    cat = ev.cat
+    H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
+    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+    out: dict = {}
+    if not sag.any():
+        return out
+    P = node_positions(asm, st.X, st.R, st.P)
+    for k in np.flatnonzero(sag):
+        dip = H[k] / w[k] * (np.hypot(1.0, VA[k] / H[k]) - 1.0) + VA[k] ** 2 / (2.0 * w[k] * asm.sub_EA[k])
+        low = asm.sub_a[k] if ev.anchor_is_a[k] else asm.sub_b[k]
+        if P[low, 2] - dip >= -asm.depth - 1e-6 * asm.depth:
+            continue
+        s_low = -VA[k] / w[k]              # unstretched arc length from the lower end to where V = 0
+        if not 1e-3 * asm.sub_L[k] < s_low < (1 - 1e-3) * asm.sub_L[k]:
+            continue
+        s = asm.sub_s0[k] + (s_low if ev.anchor_is_a[k] else asm.sub_L[k] - s_low)
+        name = asm.line_names[asm.sub_line[k]]
+        out[name] = tuple(sorted(set(out.get(name, ())) | {float(s)}))
+    return out
 
 
 _STRAIN_WARN = 0.1      # a mooring line stretched by more than 10 % is almost surely an input slip
