@@ -263,8 +263,9 @@ def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.nd
 class _Problem:
     """Newton iteration on the free DOFs of an assembled system."""
 
-    def __init__(self, system, env, external, tol, max_iter, cuts=None):
+    def __init__(self, system, env, external, tol, max_iter, cuts=None, max_strain=1.0):
         self.system, self.env = system, env
+        self.max_strain = max_strain
         self.asm, base = _assembly(system, env, cuts)
         _check_external(system, self.asm, external)
         self.bd = base
@@ -321,7 +322,7 @@ class _Problem:
         return 6 * self.nb + 3 * j + 2
 
     def eval(self, st: State, load: float) -> Evaluation:
-        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
+        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm, max_strain=self.max_strain)
         self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
         self._hold(st, ev)
         zd = self._z_dof(st)
@@ -416,6 +417,11 @@ class _Problem:
                 dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
             if not np.all(np.isfinite(dq)):
                 return st, ev, False
+            if np.abs(dq).max(initial=0.0) <= 1e-12 * self.step_len:
+                # no Newton step though the residual is not zero: nothing resists yet (a weightless line
+                # exactly at its length, slack, carrying a weight): move along the net forces instead
+                g = self._scaled(ev)
+                dq = g / np.abs(g).max() * self.step_len
             merit = np.linalg.norm(self._scaled(ev))
             accepted = None
             # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
@@ -622,7 +628,8 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                     "point, or remove the load.")
 
 
-def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None) -> None:
+def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None,
+                  max_strain: float = 1.0) -> None:
     """Every check :func:`solve_equilibrium` makes before iterating, without solving.
 
     For a ``prepare_<analysis>`` step (``seacable validate``): what the catenary lines cannot
@@ -635,7 +642,8 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     InputError, NoSolutionError
         As :func:`solve_equilibrium`.
     """
-    prob = _Problem(system, environment, external, 1e-8, 1)
+    max_strain = _check_max_strain(max_strain)
+    prob = _Problem(system, environment, external, 1e-8, 1, max_strain=max_strain)
     st0 = prob.initial_state(None)
     try:
         ev0 = prob.eval(st0, 1.0)
@@ -647,12 +655,20 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     except InputError:
         # a body unstable where it starts may be restored once the lines take load (a rod hanging from
         # a line that is unloaded at the start): the solve decides, as solve_equilibrium does
-        solve_equilibrium(system, environment, external=external)
+        solve_equilibrium(system, environment, external=external, max_strain=max_strain)
+
+
+def _check_max_strain(max_strain) -> float:
+    m = float(max_strain)
+    if not (m > 0 and np.isfinite(m)):
+        raise InputError(f"max_strain must be > 0, got {max_strain!r}. Suggested fix: use 1.0 (100 %), or more "
+                         "for a soft spring line (a MoorDyn spring test).")
+    return m
 
 
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
                       tol: float = 1e-8, max_iter: int = 200,
-                      initial: SystemEquilibrium | None = None) -> SystemEquilibrium:
+                      initial: SystemEquilibrium | None = None, max_strain: float = 1.0) -> SystemEquilibrium:
     """Static equilibrium of every free body and free point of a mooring system.
 
     Parameters
@@ -670,6 +686,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         Newton iterations per load step.
     initial : SystemEquilibrium, optional
         A previous solution of the same system to start from (sweeps).
+    max_strain : float
+        Largest strain T/EA a line may take; a line that would need more cannot reach
+        (``NoSolutionError``). Raise it for a soft spring line (a line above 10 % warns). [-]
 
     Returns
     -------
@@ -690,6 +709,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     max_iter = int(max_iter)
     if max_iter < 1:
         raise InputError(f"max_iter must be >= 1, got {max_iter}. Suggested fix: use 200.")
+    max_strain = _check_max_strain(max_strain)
     if initial is not None and initial.system is not system:
         raise InputError("initial must be an equilibrium of the same system object. Suggested fix: pass the "
                          "previous solve_equilibrium result of this system, or None.")
@@ -698,7 +718,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     # the start, and after solving if it sags at the equilibrium, at most _SAG_ROUNDS times
     cuts = dict(initial._asm.extra_cuts or {}) if initial is not None else {}
     for attempt in range(_SAG_ROUNDS + 1):
-        prob = _Problem(system, environment, external, tol, max_iter, cuts)
+        prob = _Problem(system, environment, external, tol, max_iter, cuts, max_strain)
         st0 = prob.initial_state(initial)
         try:
             ev0 = prob.eval(st0, 1.0)
@@ -811,8 +831,9 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
     if strain[k] > _STRAIN_WARN:
         name = asm.line_names[asm.sub_line[k]]
         warnings.warn(f"lines.{name}: stretched by {100 * strain[k]:.3g} % at equilibrium (tension {T[k]:.4g} N, "
-                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends. Suggested "
-                      "fix: check its length and its end positions (or the load on the bodies).",
+                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends, or is a soft "
+                      "spring. Suggested fix: check its length, EA and its end positions (or the load on the "
+                      "bodies); a spring line stretched so far is fine.",
                       SeacableWarning, stacklevel=3)
     cat = eq._cat
     depth = eq.environment.depth
