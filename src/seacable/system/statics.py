@@ -283,6 +283,7 @@ class _Problem:
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
+        self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
         self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
         for k in range(self.nb):
@@ -437,7 +438,8 @@ class _Problem:
                 alpha *= 0.5
                 try:
                     ev2 = self.eval(trial, load)
-                except (NoSolutionError, ConvergenceError):
+                except (NoSolutionError, ConvergenceError) as err:
+                    self.refused = str(err)
                     continue
                 m2 = np.linalg.norm(self._scaled(ev2))
                 if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
@@ -774,7 +776,8 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             f"{prob.iterations} Newton iterations with a load ramp (tol {tol:g}); last offsets "
             f"{'; '.join(offs) or '(no free body)'}. Suggested fix: apply the load in smaller steps by "
             "sweeping with `initial=`, start the bodies nearer their equilibrium, check that the lines are "
-            "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter.",
+            "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter."
+            + (f" The last step refused was: {prob.refused}" if prob.refused else ""),
             iterations=prob.iterations, residual=err)
     eq = _result(prob, st, ev)
     _warn_strain(eq)
