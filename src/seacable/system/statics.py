@@ -328,16 +328,8 @@ class _Problem:
         self._hold(st, ev)
         zd = self._z_dof(st)
         if zd.size:
-            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off, but only
-            # once the rest of the system is near its equilibrium with the node held (an active set: a
-            # node released while the others are far from balance lands again next step, and a point
-            # where lines run flat along the seabed into it can cycle between landing and lifting)
-            lift = ev.residual[zd] > self.tol * ev.scale
-            if lift.any():
-                held = ev.residual.copy()
-                held[zd] = 0.0
-                if np.abs(held * self.weights / ev.scale).max(initial=0.0) > max(_RELEASE, self.tol):
-                    lift[:] = False
+            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
+            lift = ev.residual[zd] > 0
             if lift.any():
                 st.grounded[self.asm.free_nodes[(zd[lift] - 6 * self.nb) // 3]] = False
             zd = zd[~lift]
@@ -483,7 +475,6 @@ class _Problem:
         return ev.residual * self.weights / ev.scale
 
 
-_RELEASE = 1e-7   # a grounded node lifts off once the other residuals are below this (x force scale)
 _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much (non-monotone)
 _CACHE: dict = {}
 
