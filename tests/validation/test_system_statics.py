@@ -425,3 +425,32 @@ def test_a_hanging_rod_is_held_in_spin_and_hangs_as_the_catenary_says():
     cat = catenary(440.0, -z, 450.0, lt.axial_stiffness, w, 0.0, False)
     assert cat.V_anchor == pytest.approx(w_rod / 2, rel=1e-6)
     assert eq.end_b_tension[0] == pytest.approx(np.hypot(cat.H_anchor, cat.V_anchor), rel=1e-6)
+
+
+def test_a_line_above_the_water_weighs_its_dry_weight():
+    """A 20 m rope hangs plumb from a point 5 m above the water to a 1000 kg weight: the 5 m above the
+    surface weigh m g per metre, the 15 m below (m - rho A) g; the top carries the weight plus both. EA is
+    1e10 N: the stretch (~1e-6) moves the surface along the rope by ~1e-5 m, 1e-8 of the tension: 1e-7 relative. The surface node
+    sits at z = 0. A rope wholly in air between two points 10 m up is the dry catenary (1e-7)."""
+    from seacable.line import LineType
+
+    rope = LineType(name="stiff", diameter=0.08, mass_per_length=6.0, axial_stiffness=1e10)
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"top": SystemPoint(kind="fixed", position=(0.0, 0.0, 5.0)),
+                "w": SystemPoint(kind="free", position=(0.0, 0.0, -15.0), mass=1000.0)},
+        lines={"l": SystemLine(line=Line.single(rope, 20.0), end_a="w", end_b="top")})
+    eq = solve_equilibrium(system, env)
+    g = env.gravity
+    dry, wet = rope.mass_per_length * g, rope.submerged_weight(env.water_density, g)
+    assert eq.end_b_tension[0] == pytest.approx(1000.0 * g + 5.0 * dry + 15.0 * wet, rel=1e-7)
+    assert eq.end_a_tension[0] == pytest.approx(1000.0 * g, rel=1e-7)
+    nodes = eq._node_position[eq._asm.node_kind == 2]
+    assert np.abs(nodes[:, 2]).min() < 1e-6          # a node on the surface
+    # wholly in air: the single-line catenary with the dry weight
+    air = MooringSystem(points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, 10.0)),
+                                "b": SystemPoint(kind="fixed", position=(30.0, 0.0, 10.0))},
+                        lines={"l": SystemLine(line=Line.single(rope, 32.0), end_a="a", end_b="b")})
+    eq = solve_equilibrium(air, env)
+    cat = catenary(30.0, 0.0, 32.0, 1e10, dry, 0.0, False)
+    assert eq.end_a_tension[0] == pytest.approx(cat.fairlead_tension, rel=1e-7)

@@ -140,6 +140,7 @@ class SystemEquilibrium:
     _node_position: np.ndarray = field(repr=False)
     indeterminate: list = field(default_factory=list)
     pin_reaction: np.ndarray | None = None
+    _rounds: tuple = field(default=({}, {}, {}), repr=False)   # (sag cuts, surface cuts, parts in air)
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
@@ -263,10 +264,10 @@ def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.nd
 class _Problem:
     """Newton iteration on the free DOFs of an assembled system."""
 
-    def __init__(self, system, env, external, tol, max_iter, cuts=None, max_strain=1.0):
+    def __init__(self, system, env, external, tol, max_iter, cuts=None, max_strain=1.0, air=None):
         self.system, self.env = system, env
         self.max_strain = max_strain
-        self.asm, base = _assembly(system, env, cuts)
+        self.asm, base = _assembly(system, env, cuts, air)
         _check_external(system, self.asm, external)
         self.bd = base
         if external:
@@ -479,15 +480,16 @@ _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much
 _CACHE: dict = {}
 
 
-def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None):
+def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None, air: dict | None = None):
     """The flattened system and its bodies' constants, kept for the last few (system, environment,
-    added cuts) (the models are frozen)."""
+    added cuts, parts in air) (the models are frozen)."""
     cuts = {k: tuple(v) for k, v in sorted((cuts or {}).items())}
-    key = (id(system), id(env), tuple(cuts.items()))
+    air = {k: tuple(v) for k, v in sorted((air or {}).items())}
+    key = (id(system), id(env), tuple(cuts.items()), tuple(air.items()))
     hit = _CACHE.get(key)
     if hit is not None and hit[0] is system and hit[1] is env:
         return hit[2], hit[3]
-    asm = assemble(system, env, cuts)
+    asm = assemble(system, env, cuts, air)
     base = body_data(asm, system, None)
     if len(_CACHE) >= 8:
         _CACHE.pop(next(iter(_CACHE)))
@@ -709,18 +711,20 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     # a line sagging into the seabed between its nodes gets a node at its lowest point, where it may
     # land (the catenaries either side then touch down there): split before solving if it sags at
     # the start, and after solving if it sags at the equilibrium, at most _SAG_ROUNDS times
-    cuts = dict(initial._asm.extra_cuts or {}) if initial is not None else {}
-    for attempt in range(_SAG_ROUNDS + 1):
-        prob = _Problem(system, environment, external, tol, max_iter, cuts, max_strain)
+    cuts, surf, air = initial._rounds if initial is not None else ({}, {}, {})
+    sag_rounds = surf_rounds = 0
+    while True:
+        prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
         st0 = prob.initial_state(initial)
         try:
             ev0 = prob.eval(st0, 1.0)
         except NoSolutionError as err:
             raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                                   "points where every line can reach.") from None
-        more = _sag_cuts(prob, st0, ev0) if attempt < _SAG_ROUNDS else {}
+        more = _sag_cuts(prob, st0, ev0) if sag_rounds < _SAG_ROUNDS else {}
         if more:
             cuts = _merge_cuts(cuts, more)
+            sag_rounds += 1
             continue
         try:
             _check_stability(prob, st0, ev0)
@@ -750,10 +754,20 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
                 _check_stability(prob, st, ev)
             except InputError as err:
                 raise InputError(f"at the equilibrium found: {err}") from None
-        more = _sag_cuts(prob, st, ev) if attempt < _SAG_ROUNDS else {}
-        if not more:
-            break
-        cuts = _merge_cuts(cuts, more)
+        more = _sag_cuts(prob, st, ev) if sag_rounds < _SAG_ROUNDS else {}
+        if more:
+            cuts = _merge_cuts(cuts, more)
+            sag_rounds += 1
+            continue
+        # parts of lines above the water weigh their dry weight: a node where a line crosses the
+        # surface, moved to where the last solution crosses it until it stays (a fixed point)
+        if ok and surf_rounds < _SURFACE_ROUNDS:
+            new_surf, new_air = _surface(prob, st, ev)
+            if not _same_split(new_surf, surf, new_air, air, prob.asm):
+                surf, air = new_surf, new_air
+                surf_rounds += 1
+                continue
+        break
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -771,8 +785,67 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             + (f" The last step refused was: {prob.refused}" if prob.refused else ""),
             iterations=prob.iterations, residual=err)
     eq = _result(prob, st, ev)
+    eq = replace(eq, _rounds=(cuts, surf, air))
     _warn_strain(eq)
     return eq
+
+
+_SURFACE_ROUNDS = 8     # times the surface crossings of lines are moved to the last solution's
+
+
+def _surface(prob: _Problem, st: State, ev: Evaluation):
+    """Where each line crosses the surface z = 0 and the arc-length intervals above it, from the
+    catenaries of sub-lines with an end above the water: ``({line: (s, ...)}, {line: ((s0, s1), ...)})``."""
+    asm = prob.asm
+    P = node_positions(asm, st.X, st.R, st.P)
+    eps = 1e-9 * max(1.0, float(np.abs(P[:, 2]).max(initial=0.0)))
+    up = (P[asm.sub_a, 2] > eps) | (P[asm.sub_b, 2] > eps)
+    cross: dict = {}
+    air: dict = {}
+    for k in np.flatnonzero(up):
+        name = asm.line_names[asm.sub_line[k]]
+        a_is = ev.anchor_is_a[k]
+        low = asm.sub_a[k] if a_is else asm.sub_b[k]
+        prof = ev.cat.profile(801, index=k)
+        z = P[low, 2] + prof.z
+        s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
+        if not a_is:
+            z, s = z[::-1], s[::-1]
+        above = z > eps
+        start = s[0] if above[0] else None
+        for j in np.flatnonzero(above[1:] != above[:-1]):
+            sc = s[j] + (s[j + 1] - s[j]) * z[j] / (z[j] - z[j + 1])      # linear: z = 0 between samples
+            cross.setdefault(name, []).append(float(sc))
+            if above[j]:
+                air.setdefault(name, []).append((start, float(sc)))
+                start = None
+            else:
+                start = float(sc)
+        if start is not None:
+            air.setdefault(name, []).append((start, float(s[-1])))
+    L = {n: prob.system.lines[n].line.length for n in cross}
+    cross = {n: tuple(sorted(c for c in v if _MERGE_S * L[n] < c < (1 - _MERGE_S) * L[n])) for n, v in cross.items()}
+    return {n: v for n, v in cross.items() if v}, {n: tuple(v) for n, v in air.items()}
+
+
+_MERGE_S = 1e-6         # a crossing this close (x line length) to a line end is the end
+
+
+def _same_split(surf, old_surf, air, old_air, asm) -> bool:
+    """The surface crossings and the parts in air are those of the last round (to 1e-6 x line length)."""
+    if set(surf) != set(old_surf) or set(air) != set(old_air):
+        return False
+    for n in surf:
+        if len(surf[n]) != len(old_surf[n]):
+            return False
+    lengths = dict(zip(asm.line_names, np.bincount(asm.sub_line, weights=asm.sub_L)))
+    for n in surf:
+        if np.abs(np.subtract(surf[n], old_surf[n])).max() > _MERGE_S * lengths[n]:
+            return False
+    for n in air:
+        if len(air[n]) != len(old_air[n]) or np.abs(np.subtract(air[n], old_air[n])).max() > _MERGE_S * lengths[n]:
+            return False
+    return True
 
 
 _SAG_ROUNDS = 3         # times lines sagging into the seabed are split and the system solved again
