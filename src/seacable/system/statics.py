@@ -762,7 +762,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         # parts of lines above the water weigh their dry weight: a node where a line crosses the
         # surface, moved to where the last solution crosses it until it stays (a fixed point)
         if ok and surf_rounds < _SURFACE_ROUNDS:
-            new_surf, new_air = _surface(prob, st, ev)
+            new_surf, new_air = _surface(prob, st, ev, cuts)
             if not _same_split(new_surf, surf, new_air, air, prob.asm):
                 surf, air = new_surf, new_air
                 surf_rounds += 1
@@ -793,7 +793,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
 _SURFACE_ROUNDS = 8     # times the surface crossings of lines are moved to the last solution's
 
 
-def _surface(prob: _Problem, st: State, ev: Evaluation):
+def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
     """Where each line crosses the surface z = 0 and the arc-length intervals above it, from the
     catenaries of sub-lines with an end above the water: ``({line: (s, ...)}, {line: ((s0, s1), ...)})``."""
     asm = prob.asm
@@ -823,12 +823,27 @@ def _surface(prob: _Problem, st: State, ev: Evaluation):
                 start = float(sc)
         if start is not None:
             air.setdefault(name, []).append((start, float(s[-1])))
-    L = {n: prob.system.lines[n].line.length for n in cross}
-    cross = {n: tuple(sorted(c for c in v if _MERGE_S * L[n] < c < (1 - _MERGE_S) * L[n])) for n, v in cross.items()}
-    return {n: v for n, v in cross.items() if v}, {n: tuple(v) for n, v in air.items()}
+    out = {}
+    for n, v in cross.items():
+        # no node within _SURFACE_GAP x length of a line end or another node (a sub-line that short is
+        # ill-conditioned); the piece between goes with its sub-line's middle (a weight error below
+        # _SURFACE_GAP of the line's)
+        line = prob.system.lines[n].line
+        nodes = list(line.segment_ends) + [a.s for a in line.attachments] + list(sag_cuts.get(n, ()))
+        gap = _SURFACE_GAP * line.length
+        keep = []
+        for c in sorted(v):
+            near_own = any(abs(c - t) < gap for t in keep)
+            near_node = any(abs(c - t) < gap for t in nodes)
+            if not near_own and not near_node and gap < c < line.length - gap:
+                keep.append(c)
+        if keep:
+            out[n] = tuple(keep)
+    return out, {n: tuple(v) for n, v in air.items()}
 
 
-_MERGE_S = 1e-6         # a crossing this close (x line length) to a line end is the end
+_MERGE_S = 1e-6         # crossings moved less than this (x line length) stay where they are
+_SURFACE_GAP = 1e-3     # no surface node nearer than this (x line length) to a line end or another node
 
 
 def _same_split(surf, old_surf, air, old_air, asm) -> bool:
