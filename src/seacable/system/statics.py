@@ -42,9 +42,22 @@ Model
   replaced by the Newton step scaled as a whole with backtracking; when that fails the external
   loads are ramped up in 5, then 20 steps.
 
+* A pinned free body (``Body.pinned``) keeps its reference point where it is given; only its
+  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). A rotation
+  that no load resists nor loads - every line point and the centres of gravity and buoyancy on
+  one axis through the reference point (a rod's spin about its own axis) - is indeterminate: held
+  where it starts and listed in ``SystemEquilibrium.indeterminate``. A body unstable where it
+  starts is checked again at the equilibrium (its lines may take load on the way).
+* A suspended sub-line whose sag would pass through the seabed gets a node at its lowest point,
+  which lands (the catenaries either side touch down there, MoorPy's "U" profile); a line part
+  above the water weighs its dry weight ``m g``: a node where a line crosses z = 0, moved to the
+  last solution's crossing until it stays (not nearer than 1e-3 x length to another node).
+* ``max_strain`` (default 1) bounds the strain a line may take; a soft spring line needs more.
+  Where Newton has no step (a weightless slack line at its length) the step follows the forces.
+
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
-sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
-checked against dipping into the seabed, nor a buoyant one against rising above the surface.
+sloping seabed, line ends inside the seabed, lines without EA. A buoyant sub-line is not
+checked against rising above the surface, nor a point's buoyancy against its being in air.
 
 References
 ----------
