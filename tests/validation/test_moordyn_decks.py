@@ -259,6 +259,19 @@ def test_a_spring_line_stretches_as_hookes_law_says():
         assert eq.point_position[1][2] == pytest.approx(-(md.lines[0].length + stretch), rel=1e-9)
 
 
+def test_a_pendulum_on_a_stiff_slack_line_swings_down_plumb():
+    """seafloor: a 10 kg point starts 10 m aside on a slack 32 m line (EA 1e9 N, as dense as the water to 2e-7)
+    from a fixed point: it hangs plumb below it, the line carrying m g. The stiff line pulled round the arc
+    grows the residual at any step along the tangent; the statics still get there. 1e-5: the line's residual
+    buoyancy, 32 m x 1.6e-5 N/m = 5e-4 N, is 5e-6 of m g."""
+    md, eq = _solve("MoorDyn/tests/Mooring/seafloor.txt")
+    weight = md.points[1].mass * md.gravity
+    assert eq.end_a_tension[0] == pytest.approx(weight, rel=1e-5)
+    assert eq.point_position[1][:2] == pytest.approx(md.points[0].position[:2], abs=1e-6)
+    stretch = weight * md.lines[0].length / md.line_types["main"].axial_stiffness
+    assert eq.point_position[1][2] == pytest.approx(-(md.lines[0].length + stretch), rel=1e-6)
+
+
 def test_seabed_friction_is_the_decks():
     """WD0050_Chain asks for FrictionCoefficient 0.5: the environment carries it (the comparisons above take
     the frictionless seabed MoorPy and MoorDyn's relaxed start have); with it the anchor tension drops."""

@@ -430,7 +430,7 @@ class _Problem:
                 g = self._scaled(ev)
                 dq = g / np.abs(g).max() * self.step_len
             merit = np.linalg.norm(self._scaled(ev))
-            accepted = None
+            accepted = fallback = None
             # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
             # if the residual norm grows less than GROWTH-fold (a change of regime - a line lifting
             # off, a point landing - makes it non-monotone), else halved, then the Newton
@@ -447,11 +447,18 @@ class _Problem:
                 except (NoSolutionError, ConvergenceError) as err:
                     self.refused = str(err)
                     continue
+                if fallback is None:
+                    fallback = (trial, ev2)
                 m2 = np.linalg.norm(self._scaled(ev2))
                 if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
                     accepted = (trial, ev2)
                     stalls = stalls + 1 if m2 >= merit else 0
                     break
+            if accepted is None:
+                # no trial acceptable: take the clipped step anyway (a stiff line pulled round a
+                # pendulum's arc grows the residual at any step along the tangent), counted as a stall
+                stalls += 1
+                accepted = fallback
             if accepted is None or stalls > 30:
                 return st, ev, False
             st, ev = accepted
