@@ -297,15 +297,26 @@ def test_line_profile_through_clumps_and_segments():
     assert np.all(np.diff(np.linalg.norm(np.diff(pos, axis=0), axis=1)) < 0.2)   # no jumps
 
 
-def test_a_mid_water_line_sagging_into_the_seabed_warns():
-    # Two held points 10 m above a 100 m deep seabed joined by 300 m of chain 200 m apart: the
-    # catenary between them sags ~ 90 m, through the seabed, which a mid-water sub-line does
-    # not model: a warning says so.
+def test_a_line_sagging_into_the_seabed_lands_there(monkeypatch):
+    """Two held points 10 m above a 100 m deep seabed, 200 m apart, joined by 300 m of chain: one free
+    catenary between them would sag ~90 m, through the seabed. The statics split the line at its lowest
+    point, which lands: by symmetry each half is the touchdown catenary from the seabed to a point 10 m up
+    and 100 m across, 150 m long (seacable's single-line catenary; 1e-7: the Newton tolerance is 1e-8 of
+    the force scale). Without the split (no rounds) the statics warn that the line passes the seabed."""
+    from seacable.system import statics
+
     env = Environment(depth=100.0)
     system = MooringSystem(
         points={"a": SystemPoint(kind="coupled", position=(0.0, 0.0, -90.0)),
                 "b": SystemPoint(kind="coupled", position=(200.0, 0.0, -90.0))},
         lines={"l": SystemLine(line=Line.single(ex.BUOY_CHAIN, 300.0), end_a="a", end_b="b")})
+    eq = solve_equilibrium(system, env)          # no warning: it lies on the seabed
+    w = ex.BUOY_CHAIN.submerged_weight(env.water_density, env.gravity)
+    half = catenary(100.0, 10.0, 150.0, ex.BUOY_CHAIN.axial_stiffness, w, 0.0, True)
+    assert eq.end_a_tension[0] == pytest.approx(half.fairlead_tension, rel=1e-7)
+    assert eq.end_b_tension[0] == pytest.approx(half.fairlead_tension, rel=1e-7)
+    assert eq.grounded_length[0] == pytest.approx(2 * half.grounded_length, rel=1e-6)
+    monkeypatch.setattr(statics, "_SAG_ROUNDS", 0)
     with pytest.warns(SeacableWarning, match="below the seabed"):
         solve_equilibrium(system, env)
     deep = Environment(depth=300.0)
@@ -355,3 +366,91 @@ def test_newton_jacobian_equals_central_differences_with_friction(build):
     free = np.setdiff1d(np.arange(n), prob._z_dof(st))     # a point resting on the seabed has its z held
     D = (J - ev.jac)[np.ix_(free, free)]
     assert np.abs(D).max() <= 1e-6 * np.abs(ev.jac).max()
+
+
+def _pinned_lever(pinned=True):
+    """A body pinned at (0, 0, -20) with its centre of gravity 3 m along body x and a vertical rope from
+    body point (8, 0, 0) up to a fixed point 10 m above it (9.99 m long: taut from the start); no volume."""
+    from seacable.system.model import Body
+
+    body = Body(mass=2000.0, center_of_gravity=(3.0, 0.0, 0.0), position=(0.0, 0.0, -20.0, 0.0, 0.0, 0.0),
+                pinned=pinned)
+    system = MooringSystem(points={"top": SystemPoint(kind="fixed", position=(8.0, 0.0, -10.0)),
+                                   "p": SystemPoint(kind="body", body="b", position=(8.0, 0.0, 0.0))},
+                           bodies={"b": body}, lines={"l": SystemLine(line=Line.single(ex.BUOY_ROPE, 9.99),
+                                                                      end_a="p", end_b="top")})
+    return system, Environment(depth=100.0)
+
+
+def test_a_pinned_body_balances_its_moment_about_the_pin():
+    """A pinned body keeps its reference point and turns until the moments about the pin balance: a
+    vertical rope at arm a = 8 m holds a weight W at arm c = 3 m with T = W c / a, the pin takes W - T.
+    (Exact for a vertical rope; the rope tilts by ~stretch / a ~ 1e-4 rad, a 1e-8 relative effect; the
+    Newton tolerance is 1e-8 of the force scale: 1e-6 relative.)"""
+    system, env = _pinned_lever()
+    eq = solve_equilibrium(system, env)
+    W = 2000.0 * env.gravity
+    assert eq.end_a_tension[0] == pytest.approx(W * 3.0 / 8.0, rel=1e-6)
+    assert np.array_equal(eq.body_position[0][:3], [0.0, 0.0, -20.0])     # the pin holds the point
+    assert eq.pin_reaction[0] == pytest.approx([0.0, 0.0, W - W * 3.0 / 8.0], abs=1e-6 * W)
+    assert abs(eq.body_position[0][4]) > 1e-6           # it turned (pitch) to stretch the rope
+
+
+def test_a_hanging_rod_is_held_in_spin_and_hangs_as_the_catenary_says():
+    """MoorDyn's RodHanging: a 20 m rod hangs level from two identical 450 m ropes to fixed points at
+    x = -450 and 450 m. Its spin about its own axis is indeterminate (every load on the axis): held and
+    reported, not refused. By symmetry each rope carries half the rod's wet weight at its lower end: with the
+    rod level at the depth found, seacable's single-line catenary over the same spans (440 m across) gives a
+    lower-end vertical force of W_rod / 2 (1e-6: the Newton tolerance is 1e-8 of the ~1e6 N force scale,
+    relative to the 7e3 N half weight)."""
+    from pathlib import Path
+
+    from seacable.io.moordyn import moordyn_system, read_moordyn
+
+    deck = Path(__file__).parent / "data" / "moordyn_decks" / "MoorDyn" / "tests" / "Mooring" / "RodHanging.txt"
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        md = read_moordyn(deck)
+        system, env = moordyn_system(md)
+    eq = solve_equilibrium(system, env)
+    assert len(eq.indeterminate) == 1 and "rod1" in eq.indeterminate[0]
+    rod = system.bodies["rod1"]
+    w_rod = (rod.mass - env.water_density * rod.volume) * env.gravity
+    z = eq.body_position[0][2]
+    assert eq.body_position[0][4] == pytest.approx(np.pi / 2, abs=1e-9)      # level
+    lt = md.line_types["rope"]
+    w = (lt.mass_per_length - env.water_density * np.pi * lt.diameter**2 / 4) * env.gravity
+    cat = catenary(440.0, -z, 450.0, lt.axial_stiffness, w, 0.0, False)
+    assert cat.V_anchor == pytest.approx(w_rod / 2, rel=1e-6)
+    assert eq.end_b_tension[0] == pytest.approx(np.hypot(cat.H_anchor, cat.V_anchor), rel=1e-6)
+
+
+def test_a_line_above_the_water_weighs_its_dry_weight():
+    """A 20 m rope hangs plumb from a point 5 m above the water to a 1000 kg weight: the 5 m above the
+    surface weigh m g per metre, the 15 m below (m - rho A) g; the top carries the weight plus both. EA is
+    1e10 N: the stretch (~1e-6) moves the surface along the rope by ~1e-5 m, 1e-8 of the tension: 1e-7 relative. The surface node
+    sits at z = 0. A rope wholly in air between two points 10 m up is the dry catenary (1e-7)."""
+    from seacable.line import LineType
+
+    rope = LineType(name="stiff", diameter=0.08, mass_per_length=6.0, axial_stiffness=1e10)
+    env = Environment(depth=100.0)
+    system = MooringSystem(
+        points={"top": SystemPoint(kind="fixed", position=(0.0, 0.0, 5.0)),
+                "w": SystemPoint(kind="free", position=(0.0, 0.0, -15.0), mass=1000.0)},
+        lines={"l": SystemLine(line=Line.single(rope, 20.0), end_a="w", end_b="top")})
+    eq = solve_equilibrium(system, env)
+    g = env.gravity
+    dry, wet = rope.mass_per_length * g, rope.submerged_weight(env.water_density, g)
+    assert eq.end_b_tension[0] == pytest.approx(1000.0 * g + 5.0 * dry + 15.0 * wet, rel=1e-7)
+    assert eq.end_a_tension[0] == pytest.approx(1000.0 * g, rel=1e-7)
+    nodes = eq._node_position[eq._asm.node_kind == 2]
+    assert np.abs(nodes[:, 2]).min() < 1e-6          # a node on the surface
+    # wholly in air: the single-line catenary with the dry weight
+    air = MooringSystem(points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, 10.0)),
+                                "b": SystemPoint(kind="fixed", position=(30.0, 0.0, 10.0))},
+                        lines={"l": SystemLine(line=Line.single(rope, 32.0), end_a="a", end_b="b")})
+    eq = solve_equilibrium(air, env)
+    cat = catenary(30.0, 0.0, 32.0, 1e10, dry, 0.0, False)
+    assert eq.end_a_tension[0] == pytest.approx(cat.fairlead_tension, rel=1e-7)

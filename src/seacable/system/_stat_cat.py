@@ -179,8 +179,10 @@ def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
     out[k, 10] = 1.0
 
 
-def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e-12):
-    """Sub-line frames and catenaries from node positions; (cat, anchor_is_a, e, tiny)."""
+def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e-12, max_strain=1.0):
+    """Sub-line frames and catenaries from node positions; (cat, anchor_is_a, e, tiny).
+
+    ``max_strain``: a sub-line stretched more is refused (NoSolutionError) by the public function."""
     ns = sub_a.size
     geom = np.empty((ns, 5))
     seabed = np.empty(ns, np.bool_)
@@ -194,11 +196,11 @@ def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e
     geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu_arr, dep, 1e-6 * (1.0 if depth is None else max(1.0, dep)),
                        H0, V0, have, tol, geom, seabed, anchor_is_a, out)
     h, v = geom[:, 0], geom[:, 1]
-    cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol)
+    cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain)
     return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
 
 
-def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol) -> CatenaryResult:
+def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0) -> CatenaryResult:
     n = h.size
     bad = out[:, 10] == 0.0
     H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
@@ -206,7 +208,8 @@ def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol) -> CatenaryResult:
     reg = out[:, 9].astype(np.int8)
     iters = 0
     if bad.any():
-        r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol)
+        r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol,
+                     max_strain=max_strain)
         H[bad], V[bad], HA[bad], VA[bad], LB[bad] = r.H_fairlead, r.V_fairlead, r.H_anchor, r.V_anchor, \
             r.grounded_length
         K[bad] = r.stiffness

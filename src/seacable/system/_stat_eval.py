@@ -75,6 +75,7 @@ class Evaluation:
     node_force: np.ndarray    # (nn, 3) total force on each node (lines + node loads) [N]
     scale: float              # force scale for the relative residual [N]
     hydro: np.ndarray         # (6 nb, 6 nb) restoring of the bodies' weight, buoyancy, waterplane
+    reaction: np.ndarray | None = None   # (nb, 3) force of the pin on each body (zero unless pinned) [N]
 
 
 def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
@@ -114,11 +115,11 @@ def node_positions(asm: Assembly, X, R, P):
     return P
 
 
-def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None) -> Evaluation:
+def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None, max_strain=1.0) -> Evaluation:
     """Residual (net loads on every DOF) and its Jacobian at state ``st``.
 
     ``load_factor`` scales the bodies' external loads (the load ramp); ``warm`` is the sub-lines'
-    previous (H, V) for the catenaries' start.
+    previous (H, V) for the catenaries' start; ``max_strain`` the largest strain a sub-line may take.
     """
     nb, nfree = len(asm.free_bodies), asm.free_nodes.size
     nn = asm.node_kind.size
@@ -126,7 +127,7 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     ndof = 6 * nb + 3 * nfree
     P = node_positions(asm, st.X, st.R, st.P)
     cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
-                                                     asm.friction, asm.depth, warm)
+                                                     asm.friction, asm.depth, warm, max_strain=max_strain)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     grounded = _GROUNDED[cat.regime]

@@ -79,6 +79,8 @@ class Assembly:
     line_last: np.ndarray        # (nl,) last sub-line
     free_nodes: np.ndarray       # indices of FREE nodes (each 3 DOF after the bodies' 6)
     node_dof: np.ndarray         # (nn,) first DOF of the node's body (BODY) or of the node (FREE), else -1
+    extra_cuts: dict | None = None   # line name -> arc lengths of added internal nodes (sag onto the seabed)
+    air: dict | None = None          # line name -> arc-length intervals above the water (dry weight)
 
     @property
     def n_dof(self) -> int:
@@ -100,8 +102,15 @@ def check_environment(env: Environment) -> None:
                          "statics yet: the catenary seabed is horizontal. Suggested fix: use slope 0.")
 
 
-def assemble(system: MooringSystem, env: Environment) -> Assembly:
-    """Flatten ``system`` in ``env`` into nodes and sub-lines, checking what statics needs."""
+def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = None,
+             air: dict | None = None) -> Assembly:
+    """Flatten ``system`` in ``env`` into nodes and sub-lines, checking what statics needs.
+
+    ``extra_cuts``: ``{line name: arc lengths [m]}`` of further internal nodes (massless): where a
+    line sagging into the seabed between its nodes may land, where a line crosses the surface.
+    ``air``: ``{line name: ((s0, s1), ...)}`` arc-length intervals above the water, where a
+    sub-line (its middle in one) weighs its dry weight ``m g``.
+    """
     check_environment(env)
     rho, g = env.water_density, env.gravity
     depth = env.depth
@@ -143,7 +152,7 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
         # cut points: segment ends and attachments; net weight of the attachments at each cut
         ends = line.segment_ends
         cuts = {}
-        for s in ends[1:-1]:
+        for s in list(ends[1:-1]) + list((extra_cuts or {}).get(lname, ())):
             cuts.setdefault(round(s / total / _MERGE), [s, 0.0])
         end_load = {na: 0.0, nb: 0.0}
         for i, att in enumerate(line.attachments):
@@ -185,7 +194,8 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
             sub["b"].append(nodes[k + 1])
             sub["L"].append(s1 - s0)
             sub["EA"].append(lt.axial_stiffness)
-            sub["w"].append(lt.submerged_weight(rho, g))
+            dry = any(a <= mid <= b for a, b in (air or {}).get(lname, ()))
+            sub["w"].append(lt.mass_per_length * g if dry else lt.submerged_weight(rho, g))
             sub["line"].append(il)
             sub["s0"].append(s0)
         last.append(len(sub["a"]) - 1)
@@ -198,7 +208,9 @@ def assemble(system: MooringSystem, env: Environment) -> Assembly:
                    node_label=label, point_node=point_node,
                    **{f"sub_{k}": np.array(v, int if k in ("a", "b", "line") else float) for k, v in sub.items()},
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),
-                   free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1))
+                   free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1),
+                   extra_cuts={k: tuple(v) for k, v in (extra_cuts or {}).items()},
+                   air={k: tuple(v) for k, v in (air or {}).items()})
     nb = len(free_bodies)
     asm.node_dof[kind == BODY] = 6 * asm.node_body[kind == BODY]
     asm.node_dof[asm.free_nodes] = 6 * nb + 3 * np.arange(asm.free_nodes.size)

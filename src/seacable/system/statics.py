@@ -42,9 +42,22 @@ Model
   replaced by the Newton step scaled as a whole with backtracking; when that fails the external
   loads are ramped up in 5, then 20 steps.
 
+* A pinned free body (``Body.pinned``) keeps its reference point where it is given; only its
+  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). A rotation
+  that no load resists nor loads - every line point and the centres of gravity and buoyancy on
+  one axis through the reference point (a rod's spin about its own axis) - is indeterminate: held
+  where it starts and listed in ``SystemEquilibrium.indeterminate``. A body unstable where it
+  starts is checked again at the equilibrium (its lines may take load on the way).
+* A suspended sub-line whose sag would pass through the seabed gets a node at its lowest point,
+  which lands (the catenaries either side touch down there, MoorPy's "U" profile); a line part
+  above the water weighs its dry weight ``m g``: a node where a line crosses z = 0, moved to the
+  last solution's crossing until it stays (not nearer than 1e-3 x length to another node).
+* ``max_strain`` (default 1) bounds the strain a line may take; a soft spring line needs more.
+  Where Newton has no step (a weightless slack line at its length) the step follows the forces.
+
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
-sloping seabed, line ends inside the seabed, lines without EA. A mid-water sub-line is not
-checked against dipping into the seabed, nor a buoyant one against rising above the surface.
+sloping seabed, line ends inside the seabed, lines without EA. A buoyant sub-line is not
+checked against rising above the surface, nor a point's buoyancy against its being in air.
 
 References
 ----------
@@ -65,7 +78,7 @@ from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
-from ._stat_model import Assembly, assemble, euler, rotation
+from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
 __all__ = ["SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"]
@@ -108,6 +121,12 @@ class SystemEquilibrium:
     residual : float
         Largest residual, relative to the system's force scale (moments also divided by its
         length scale). [-]
+    indeterminate : list of str
+        Rotations of free bodies that nothing resists nor loads (a rod's spin about its own axis:
+        every line point and its centres of gravity and buoyancy on the axis), held where they
+        start; their stiffness is zero.
+    pin_reaction : ndarray, shape (nbf, 3)
+        Force the pin exerts on each pinned free body (zero for the others), global axes. [N]
     """
 
     system: MooringSystem
@@ -132,6 +151,9 @@ class SystemEquilibrium:
     _anchor_is_a: np.ndarray = field(repr=False)
     _e: np.ndarray = field(repr=False)
     _node_position: np.ndarray = field(repr=False)
+    indeterminate: list = field(default_factory=list)
+    pin_reaction: np.ndarray | None = None
+    _rounds: tuple = field(default=({}, {}, {}), repr=False)   # (sag cuts, surface cuts, parts in air)
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
@@ -255,9 +277,10 @@ def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.nd
 class _Problem:
     """Newton iteration on the free DOFs of an assembled system."""
 
-    def __init__(self, system, env, external, tol, max_iter):
+    def __init__(self, system, env, external, tol, max_iter, cuts=None, max_strain=1.0, air=None):
         self.system, self.env = system, env
-        self.asm, base = _assembly(system, env)
+        self.max_strain = max_strain
+        self.asm, base = _assembly(system, env, cuts, air)
         _check_external(system, self.asm, external)
         self.bd = base
         if external:
@@ -274,10 +297,17 @@ class _Problem:
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
         self.iterations = 0
+        self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
         self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
         for k in range(self.nb):
             self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
+        # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
+        # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
+        bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
+        self.pinned = np.array([b.pinned for b in bodies], bool)
+        self.spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
+        self.spin_k = 1.0         # stiffness the indeterminate rotations are held with [N m/rad], set per evaluation
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
         asm = self.asm
@@ -290,7 +320,7 @@ class _Problem:
             if initial is not None:
                 q = initial.body_position[i]
             X[k], R[k] = q[:3], rotation(q[3:])
-        if initial is not None:
+        if initial is not None and initial._node_position.shape == P.shape:
             P[asm.free_nodes] = initial._node_position[asm.free_nodes]
         grounded = np.zeros(P.shape[0], bool)
         if asm.depth is not None:
@@ -307,8 +337,9 @@ class _Problem:
         return 6 * self.nb + 3 * j + 2
 
     def eval(self, st: State, load: float) -> Evaluation:
-        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm)
+        ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm, max_strain=self.max_strain)
         self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
+        self._hold(st, ev)
         zd = self._z_dof(st)
         if zd.size:
             # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
@@ -322,6 +353,38 @@ class _Problem:
                 J[:, zd] = 0.0
                 J[zd, zd] = 1.0
         return ev
+
+    def _hold(self, st: State, ev: Evaluation) -> None:
+        """Hold a pinned body's translations (the residual there is the pin's reaction, kept in
+        ``ev.reaction``) and give the indeterminate rotations a stiffness in the Newton Jacobian only
+        (their moment is zero whatever the rotation, so the step has no component along them)."""
+        ev.reaction = np.zeros((self.nb, 3))
+        for k in np.flatnonzero(self.pinned):
+            t = slice(6 * k, 6 * k + 3)
+            ev.reaction[k] = -ev.residual[t]
+            ev.residual[t] = 0.0
+            ev.jac[t, :] = 0.0
+            ev.jac[:, t] = 0.0
+            ev.jac[t, t] = np.eye(3)
+        if not any(a.size for a in self.spin):
+            return
+        self.spin_k = ev.scale * self.length_scale
+        for k, axes in enumerate(self.spin):
+            if axes.size:
+                A = st.R[k] @ axes.T          # global directions of the indeterminate rotations
+                r = slice(6 * k + 3, 6 * k + 6)
+                ev.jac[r, r] -= self.spin_k * (A @ A.T)
+
+    def held_rotations(self, st: State) -> list:
+        """The indeterminate rotations, for the result: '<body>: rotation about (ax, ay, az) (global)'."""
+        out = []
+        for k, axes in enumerate(self.spin):
+            name = self.asm.body_names[self.asm.free_bodies[k]]
+            for a in axes:
+                g = st.R[k] @ a
+                g = np.where(np.abs(g) < 1e-9, 0.0, g) + 0.0
+                out.append(f"{name}: rotation about ({g[0]:.4g}, {g[1]:.4g}, {g[2]:.4g}) (global axes)")
+        return out
 
     def error(self, ev: Evaluation) -> float:
         """Largest residual relative to the force scale (moments also to the length scale)."""
@@ -361,8 +424,13 @@ class _Problem:
                 dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
             if not np.all(np.isfinite(dq)):
                 return st, ev, False
+            if np.abs(dq).max(initial=0.0) <= 1e-12 * self.step_len:
+                # no Newton step though the residual is not zero: nothing resists yet (a weightless line
+                # exactly at its length, slack, carrying a weight): move along the net forces instead
+                g = self._scaled(ev)
+                dq = g / np.abs(g).max() * self.step_len
             merit = np.linalg.norm(self._scaled(ev))
-            accepted = None
+            accepted = fallback = None
             # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
             # if the residual norm grows less than GROWTH-fold (a change of regime - a line lifting
             # off, a point landing - makes it non-monotone), else halved, then the Newton
@@ -376,13 +444,21 @@ class _Problem:
                 alpha *= 0.5
                 try:
                     ev2 = self.eval(trial, load)
-                except (NoSolutionError, ConvergenceError):
+                except (NoSolutionError, ConvergenceError) as err:
+                    self.refused = str(err)
                     continue
+                if fallback is None:
+                    fallback = (trial, ev2)
                 m2 = np.linalg.norm(self._scaled(ev2))
                 if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
                     accepted = (trial, ev2)
                     stalls = stalls + 1 if m2 >= merit else 0
                     break
+            if accepted is None:
+                # no trial acceptable: take the clipped step anyway (a stiff line pulled round a
+                # pendulum's arc grows the residual at any step along the tangent), counted as a stall
+                stalls += 1
+                accepted = fallback
             if accepted is None or stalls > 30:
                 return st, ev, False
             st, ev = accepted
@@ -424,14 +500,16 @@ _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much
 _CACHE: dict = {}
 
 
-def _assembly(system: MooringSystem, env: Environment):
-    """The flattened system and its bodies' constants, kept for the last few (system, environment)
-    pairs (both frozen models)."""
-    key = (id(system), id(env))
+def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None, air: dict | None = None):
+    """The flattened system and its bodies' constants, kept for the last few (system, environment,
+    added cuts, parts in air) (the models are frozen)."""
+    cuts = {k: tuple(v) for k, v in sorted((cuts or {}).items())}
+    air = {k: tuple(v) for k, v in sorted((air or {}).items())}
+    key = (id(system), id(env), tuple(cuts.items()), tuple(air.items()))
     hit = _CACHE.get(key)
     if hit is not None and hit[0] is system and hit[1] is env:
         return hit[2], hit[3]
-    asm = assemble(system, env)
+    asm = assemble(system, env, cuts, air)
     base = body_data(asm, system, None)
     if len(_CACHE) >= 8:
         _CACHE.pop(next(iter(_CACHE)))
@@ -447,6 +525,42 @@ def _rotvec(th) -> np.ndarray:
     k = th / a
     K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
     return np.eye(3) + np.sin(a) * K + (1 - np.cos(a)) * (K @ K)
+
+
+def _indeterminate_rotations(asm, k: int, body) -> np.ndarray:
+    """Body-frame unit axes (m, 3) of the rotations of free body ``k`` that nothing resists nor loads.
+
+    A rotation about the reference point along ``n`` changes the moment along ``n`` of no load
+    applied at ``r`` with ``n x r = 0``: when every line point, the centre of gravity (with mass) and
+    of buoyancy (with volume) lie on one line through the reference point, the rotation about that
+    line (a rod's spin) is indeterminate; all three when they are all at the reference point. The
+    waterplane moment depends on the body z axis only: it leaves the spin about body z free (with
+    I_xx = I_yy, which makes its moment along that axis zero) and no other. A user hydrostatic
+    matrix decides for itself (nothing held).
+    """
+    if body.hydrostatic_stiffness is not None:
+        return np.zeros((0, 3))
+    arms = [asm.node_rel[n] for n in np.flatnonzero((asm.node_kind == BODY) & (asm.node_body == k))]
+    if body.mass > 0:
+        arms.append(np.asarray(body.center_of_gravity, float))
+    if body.volume > 0:
+        arms.append(np.asarray(body.center_of_buoyancy, float))
+    arms = np.array(arms, float).reshape(-1, 3)
+    size = max(float(np.abs(arms).max(initial=0.0)), 1e-300)
+    arms = arms[np.linalg.norm(arms, axis=1) > 1e-9 * size]
+    if arms.size == 0:
+        axes = np.eye(3)
+    else:
+        n = arms[np.argmax(np.linalg.norm(arms, axis=1))]
+        n = n / np.linalg.norm(n)
+        if np.abs(np.cross(arms, n)).max() > 1e-9 * size:
+            return np.zeros((0, 3))
+        axes = n[None, :]
+    if any(body.waterplane_moments):
+        ixx, iyy = body.waterplane_moments
+        keep = [a for a in axes if abs(a[0]) < 1e-12 and abs(a[1]) < 1e-12 and abs(ixx - iyy) <= 1e-12 * abs(ixx)]
+        axes = np.array([[0.0, 0.0, 1.0]]) if keep else np.zeros((0, 3))
+    return axes
 
 
 def _check_external(system, asm, external):
@@ -486,11 +600,28 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     hyd = ev.hydro
     pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
     moor = _condense(-ev.jac_lines, nb, pts)
+    for k, axes in enumerate(prob.spin):
+        if not axes.size:
+            continue
+        A = st.R[k] @ axes.T
+        r = slice(6 * k + 3, 6 * k + 6)
+        moment = A.T @ ev.residual[r]
+        if np.abs(moment).max() > prob.tol * ev.scale * prob.length_scale:
+            name = prob.asm.body_names[prob.asm.free_bodies[k]]
+            a = A[:, int(np.argmax(np.abs(moment)))]
+            raise InputError(
+                f"bodies.{name}: nothing resists a rotation about ({a[0]:.4g}, {a[1]:.4g}, {a[2]:.4g}) (global axes; "
+                "every line point, the centre of gravity and of buoyancy are on that axis) but a moment of "
+                f"{np.abs(moment).max():.4g} N m loads it there, so the body spins without end. Suggested fix: "
+                "remove the moment about the axis from external_force, or attach a line off the axis.")
+        moor[r, r] += prob.spin_k * (A @ A.T)
     tot = np.diag(hyd) + np.diag(moor)
     for k in range(nb):
         name = prob.asm.body_names[prob.asm.free_bodies[k]]
         for j in range(6):
             i = 6 * k + j
+            if j < 3 and prob.pinned[k]:
+                continue      # held by the pin
             same = [6 * kk + jj for kk in range(nb) for jj in ((0, 1, 2) if j < 3 else (3, 4, 5))]
             ref = max(np.abs(np.diag(hyd)[same]).max(), np.abs(np.diag(moor)[same]).max(), 1e-300)
             if tot[i] > 1e-9 * ref:
@@ -512,7 +643,8 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                     "point, or remove the load.")
 
 
-def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None) -> None:
+def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None,
+                  max_strain: float = 1.0) -> None:
     """Every check :func:`solve_equilibrium` makes before iterating, without solving.
 
     For a ``prepare_<analysis>`` step (``seacable validate``): what the catenary lines cannot
@@ -525,19 +657,33 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     InputError, NoSolutionError
         As :func:`solve_equilibrium`.
     """
-    prob = _Problem(system, environment, external, 1e-8, 1)
+    max_strain = _check_max_strain(max_strain)
+    prob = _Problem(system, environment, external, 1e-8, 1, max_strain=max_strain)
     st0 = prob.initial_state(None)
     try:
         ev0 = prob.eval(st0, 1.0)
     except NoSolutionError as err:
         raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
                               "points where every line can reach.") from None
-    _check_stability(prob, st0, ev0)
+    try:
+        _check_stability(prob, st0, ev0)
+    except InputError:
+        # a body unstable where it starts may be restored once the lines take load (a rod hanging from
+        # a line that is unloaded at the start): the solve decides, as solve_equilibrium does
+        solve_equilibrium(system, environment, external=external, max_strain=max_strain)
+
+
+def _check_max_strain(max_strain) -> float:
+    m = float(max_strain)
+    if not (m > 0 and np.isfinite(m)):
+        raise InputError(f"max_strain must be > 0, got {max_strain!r}. Suggested fix: use 1.0 (100 %), or more "
+                         "for a soft spring line (a MoorDyn spring test).")
+    return m
 
 
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
                       tol: float = 1e-8, max_iter: int = 200,
-                      initial: SystemEquilibrium | None = None) -> SystemEquilibrium:
+                      initial: SystemEquilibrium | None = None, max_strain: float = 1.0) -> SystemEquilibrium:
     """Static equilibrium of every free body and free point of a mooring system.
 
     Parameters
@@ -555,6 +701,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         Newton iterations per load step.
     initial : SystemEquilibrium, optional
         A previous solution of the same system to start from (sweeps).
+    max_strain : float
+        Largest strain T/EA a line may take; a line that would need more cannot reach
+        (``NoSolutionError``). Raise it for a soft spring line (a line above 10 % warns). [-]
 
     Returns
     -------
@@ -575,31 +724,70 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     max_iter = int(max_iter)
     if max_iter < 1:
         raise InputError(f"max_iter must be >= 1, got {max_iter}. Suggested fix: use 200.")
+    max_strain = _check_max_strain(max_strain)
     if initial is not None and initial.system is not system:
         raise InputError("initial must be an equilibrium of the same system object. Suggested fix: pass the "
                          "previous solve_equilibrium result of this system, or None.")
-    prob = _Problem(system, environment, external, tol, max_iter)
-    st0 = prob.initial_state(initial)
-    try:
-        ev0 = prob.eval(st0, 1.0)
-    except NoSolutionError as err:
-        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
-                              "points where every line can reach.") from None
-    _check_stability(prob, st0, ev0)
-    st, ev, ok = prob.newton(st0, 1.0, ev0)
-    if not ok:
-        # load ramp: external loads in steps from zero, each step from the last solution
-        for n_steps in (5, 20):
-            s = prob.initial_state(initial)
-            good = True
-            for lam in np.linspace(1.0 / n_steps, 1.0, n_steps):
-                s, ev, good = prob.newton(s, float(lam))
-                if not good:
+    # a line sagging into the seabed between its nodes gets a node at its lowest point, where it may
+    # land (the catenaries either side then touch down there): split before solving if it sags at
+    # the start, and after solving if it sags at the equilibrium, at most _SAG_ROUNDS times
+    cuts, surf, air = initial._rounds if initial is not None else ({}, {}, {})
+    sag_rounds = surf_rounds = 0
+    while True:
+        prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
+        st0 = prob.initial_state(initial)
+        try:
+            ev0 = prob.eval(st0, 1.0)
+        except NoSolutionError as err:
+            raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
+                                  "points where every line can reach.") from None
+        more = _sag_cuts(prob, st0, ev0) if sag_rounds < _SAG_ROUNDS else {}
+        if more:
+            cuts = _merge_cuts(cuts, more)
+            sag_rounds += 1
+            continue
+        try:
+            _check_stability(prob, st0, ev0)
+            unstable_start = None
+        except InputError as err:
+            # unstable where it starts, maybe not at equilibrium (lines unloaded at the start): solve, then
+            # check the equilibrium; refuse with this message if no stable equilibrium is found
+            unstable_start = err
+        st, ev, ok = prob.newton(st0, 1.0, ev0)
+        if not ok:
+            # load ramp: external loads in steps from zero, each step from the last solution
+            for n_steps in (5, 20):
+                s = prob.initial_state(initial)
+                good = True
+                for lam in np.linspace(1.0 / n_steps, 1.0, n_steps):
+                    s, ev, good = prob.newton(s, float(lam))
+                    if not good:
+                        break
+                st = s
+                if good:
+                    ok = True
                     break
-            st = s
-            if good:
-                ok = True
-                break
+        if unstable_start is not None:
+            if not ok:
+                raise unstable_start
+            try:
+                _check_stability(prob, st, ev)
+            except InputError as err:
+                raise InputError(f"at the equilibrium found: {err}") from None
+        more = _sag_cuts(prob, st, ev) if sag_rounds < _SAG_ROUNDS else {}
+        if more:
+            cuts = _merge_cuts(cuts, more)
+            sag_rounds += 1
+            continue
+        # parts of lines above the water weigh their dry weight: a node where a line crosses the
+        # surface, moved to where the last solution crosses it until it stays (a fixed point)
+        if ok and surf_rounds < _SURFACE_ROUNDS:
+            new_surf, new_air = _surface(prob, st, ev, cuts)
+            if not _same_split(new_surf, surf, new_air, air, prob.asm):
+                surf, air = new_surf, new_air
+                surf_rounds += 1
+                continue
+        break
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -613,11 +801,124 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             f"{prob.iterations} Newton iterations with a load ramp (tol {tol:g}); last offsets "
             f"{'; '.join(offs) or '(no free body)'}. Suggested fix: apply the load in smaller steps by "
             "sweeping with `initial=`, start the bodies nearer their equilibrium, check that the lines are "
-            "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter.",
+            "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter."
+            + (f" The last step refused was: {prob.refused}" if prob.refused else ""),
             iterations=prob.iterations, residual=err)
     eq = _result(prob, st, ev)
+    eq = replace(eq, _rounds=(cuts, surf, air))
     _warn_strain(eq)
     return eq
+
+
+_SURFACE_ROUNDS = 8     # times the surface crossings of lines are moved to the last solution's
+
+
+def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
+    """Where each line crosses the surface z = 0 and the arc-length intervals above it, from the
+    catenaries of sub-lines with an end above the water: ``({line: (s, ...)}, {line: ((s0, s1), ...)})``."""
+    asm = prob.asm
+    P = node_positions(asm, st.X, st.R, st.P)
+    eps = 1e-9 * max(1.0, float(np.abs(P[:, 2]).max(initial=0.0)))
+    up = (P[asm.sub_a, 2] > eps) | (P[asm.sub_b, 2] > eps)
+    cross: dict = {}
+    air: dict = {}
+    for k in np.flatnonzero(up):
+        name = asm.line_names[asm.sub_line[k]]
+        a_is = ev.anchor_is_a[k]
+        low = asm.sub_a[k] if a_is else asm.sub_b[k]
+        prof = ev.cat.profile(801, index=k)
+        z = P[low, 2] + prof.z
+        s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
+        if not a_is:
+            z, s = z[::-1], s[::-1]
+        above = z > eps
+        start = s[0] if above[0] else None
+        for j in np.flatnonzero(above[1:] != above[:-1]):
+            sc = s[j] + (s[j + 1] - s[j]) * z[j] / (z[j] - z[j + 1])      # linear: z = 0 between samples
+            cross.setdefault(name, []).append(float(sc))
+            if above[j]:
+                air.setdefault(name, []).append((start, float(sc)))
+                start = None
+            else:
+                start = float(sc)
+        if start is not None:
+            air.setdefault(name, []).append((start, float(s[-1])))
+    out = {}
+    for n, v in cross.items():
+        # no node within _SURFACE_GAP x length of a line end or another node (a sub-line that short is
+        # ill-conditioned); the piece between goes with its sub-line's middle (a weight error below
+        # _SURFACE_GAP of the line's)
+        line = prob.system.lines[n].line
+        nodes = list(line.segment_ends) + [a.s for a in line.attachments] + list(sag_cuts.get(n, ()))
+        gap = _SURFACE_GAP * line.length
+        keep = []
+        for c in sorted(v):
+            near_own = any(abs(c - t) < gap for t in keep)
+            near_node = any(abs(c - t) < gap for t in nodes)
+            if not near_own and not near_node and gap < c < line.length - gap:
+                keep.append(c)
+        if keep:
+            out[n] = tuple(keep)
+    return out, {n: tuple(v) for n, v in air.items()}
+
+
+_MERGE_S = 1e-6         # crossings moved less than this (x line length) stay where they are
+_SURFACE_GAP = 1e-3     # no surface node nearer than this (x line length) to a line end or another node
+
+
+def _same_split(surf, old_surf, air, old_air, asm) -> bool:
+    """The surface crossings and the parts in air are those of the last round (to 1e-6 x line length)."""
+    if set(surf) != set(old_surf) or set(air) != set(old_air):
+        return False
+    for n in surf:
+        if len(surf[n]) != len(old_surf[n]):
+            return False
+    lengths = dict(zip(asm.line_names, np.bincount(asm.sub_line, weights=asm.sub_L)))
+    for n in surf:
+        if np.abs(np.subtract(surf[n], old_surf[n])).max() > _MERGE_S * lengths[n]:
+            return False
+    for n in air:
+        if len(air[n]) != len(old_air[n]) or np.abs(np.subtract(air[n], old_air[n])).max() > _MERGE_S * lengths[n]:
+            return False
+    return True
+
+
+_SAG_ROUNDS = 3         # times lines sagging into the seabed are split and the system solved again
+
+
+def _merge_cuts(cuts: dict, more: dict) -> dict:
+    out = {k: tuple(v) for k, v in cuts.items()}
+    for k, v in more.items():
+        out[k] = tuple(sorted(set(out.get(k, ())) | set(v)))
+    return out
+
+
+def _sag_cuts(prob: _Problem, st: State, ev: Evaluation) -> dict:
+    """``{line: (arc length,)}`` of the lowest point of each suspended sub-line whose sag reaches below
+    the seabed (it would pass through it: the catenary of a sub-line lies on the seabed only from a
+    node on it)."""
+    asm = prob.asm
+    if asm.depth is None:
+        return {}
+    cat = ev.cat
+    H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
+    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+    out: dict = {}
+    if not sag.any():
+        return out
+    P = node_positions(asm, st.X, st.R, st.P)
+    for k in np.flatnonzero(sag):
+        dip = H[k] / w[k] * (np.hypot(1.0, VA[k] / H[k]) - 1.0) + VA[k] ** 2 / (2.0 * w[k] * asm.sub_EA[k])
+        low = asm.sub_a[k] if ev.anchor_is_a[k] else asm.sub_b[k]
+        if P[low, 2] - dip >= -asm.depth - 1e-6 * asm.depth:
+            continue
+        s_low = -VA[k] / w[k]              # unstretched arc length from the lower end to where V = 0
+        if not 1e-3 * asm.sub_L[k] < s_low < (1 - 1e-3) * asm.sub_L[k]:
+            continue
+        s = asm.sub_s0[k] + (s_low if ev.anchor_is_a[k] else asm.sub_L[k] - s_low)
+        name = asm.line_names[asm.sub_line[k]]
+        out[name] = tuple(sorted(set(out.get(name, ())) | {float(s)}))
+    return out
 
 
 _STRAIN_WARN = 0.1      # a mooring line stretched by more than 10 % is almost surely an input slip
@@ -632,8 +933,9 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
     if strain[k] > _STRAIN_WARN:
         name = asm.line_names[asm.sub_line[k]]
         warnings.warn(f"lines.{name}: stretched by {100 * strain[k]:.3g} % at equilibrium (tension {T[k]:.4g} N, "
-                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends. Suggested "
-                      "fix: check its length and its end positions (or the load on the bodies).",
+                      f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends, or is a soft "
+                      "spring. Suggested fix: check its length, EA and its end positions (or the load on the "
+                      "bodies); a spring line stretched so far is fine.",
                       SeacableWarning, stacklevel=3)
     cat = eq._cat
     depth = eq.environment.depth
@@ -688,7 +990,8 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
-        _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P)
+        _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
+        pin_reaction=ev.reaction.copy())
 
 
 def _continuous(angles, ref):
