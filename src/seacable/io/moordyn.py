@@ -1606,7 +1606,7 @@ class MoorDynCase:
                              "'point_motions' in its system_dynamic analysis.")
         system, environment = self.system()
         if self.duration is None:
-            analysis = SystemStaticAnalysis()
+            analysis = SystemStaticAnalysis(max_strain=_DECK_MAX_STRAIN)
         else:
             analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
                                              output_interval=self.output_interval,
@@ -1623,6 +1623,11 @@ class MoorDynCase:
         where = "no seabed" if depth is None else f"depth {depth:g} m"
         return (f"MoorDyn network, {self.analysis_type} analysis: {len(md.lines)} line(s), {len(md.points)} "
                 f"point(s), {segments} segment(s), line length {length:g} m, {where}")
+
+
+#: the largest line strain the statics of a MoorDyn deck accept: MoorDyn has no limit, and its test decks
+#: model springs as lines stretched to 10 times their length (stability/spring.txt); above 10 % a warning says so
+_DECK_MAX_STRAIN = 20.0
 
 
 def _line_failures(md: MoorDynInput) -> list:

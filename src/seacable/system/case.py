@@ -58,6 +58,9 @@ class _Solve(Model):
     max_iterations: int = Field(200, ge=1, le=100_000, description="Newton iterations of one equilibrium.")
     load_steps: int = Field(1, ge=1, le=1000, description="Steps in which the external loads are ramped up "
                                                           "(each solved from the last): 1 for none.")
+    max_strain: quantity("-", gt=0, le=100) = Field(
+        1.0, description="Largest strain T/EA a line may take; a line that would need more cannot reach its "
+                         "ends (strains above 10 % are warned). [-]")
 
     @model_validator(mode="after")
     def _damaged(self):

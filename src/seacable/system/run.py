@@ -109,7 +109,8 @@ def _setup(case, analysis_type: str) -> SystemSetup:
     for condition, system in zip(("intact", "damaged"), systems):
         _check_free_points(system, condition)
         _start_checks(system, case.environment, "" if condition == "intact" else
-                      f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ")
+                      f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ",
+                      case.analysis.max_strain)
     return SystemSetup(case=case, conditions=("intact", "damaged")[:len(systems)], systems=systems,
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points))
 
@@ -183,7 +184,7 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     for label, external in steps:
         try:
             eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
-                                   max_iter=a.max_iterations, initial=eq)
+                                   max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""
@@ -198,14 +199,14 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     return eq
 
 
-def _start_checks(system: MooringSystem, environment, where: str) -> None:
+def _start_checks(system: MooringSystem, environment, where: str, max_strain: float = 1.0) -> None:
     """The solver's checks at the given positions, without solving (:func:`~seacable.system.statics.check_statics`):
     what its catenaries cannot model, a line that cannot reach between its ends, a body that nothing
     restores (unstable hydrostatics and no mooring restoring)."""
     from .statics import check_statics
 
     try:
-        check_statics(system, environment)
+        check_statics(system, environment, max_strain=max_strain)
     except InputError as err:
         raise type(err)(f"{where}{err}") from None
 
@@ -218,9 +219,13 @@ def _check_stable(system: MooringSystem, eq, where: str) -> None:
     km, kh = np.asarray(eq.stiffness, float), np.asarray(eq.hydrostatic, float)
     units = ("N/m", "N/m", "N/m", "N m/rad", "N m/rad", "N m/rad")
     for i, name in enumerate(free):
+        body = system.bodies[name]
+        # a scale of the body's stiffness: its weight (and buoyancy) over, or times, one metre; a total below
+        # 1e-9 of it is a rotation nothing resists nor loads (a rod's spin), held by the statics, not unstable
+        scale = (body.mass + 1025.0 * body.volume) * 9.81
         for k in range(6):
             m, h = km[6 * i + k, 6 * i + k], kh[6 * i + k, 6 * i + k]
-            if m + h < 0 and abs(m + h) > 1e-9 * (abs(m) + abs(h)):
+            if m + h < 0 and abs(m + h) > 1e-9 * max(abs(m) + abs(h), scale):
                 hint = ("lower the centre of gravity or enlarge the waterplane moments (a positive metacentric "
                         "height)" if k in (3, 4) else "check the waterplane area and the displaced volume")
                 raise NoSolutionError(
@@ -373,6 +378,7 @@ def _variables(values: dict, lead: tuple[str, ...], table: dict) -> dict:
 def _settings(case: SystemCase, setup: SystemSetup, **more) -> dict:
     a = case.analysis
     return {"tolerance": a.tolerance, "max_iterations": a.max_iterations, "load_steps": a.load_steps,
+            "max_strain": a.max_strain,
             "damaged_lines": list(a.damaged_lines), "depth": case.environment.depth, **more}
 
 
@@ -390,10 +396,15 @@ def run_system_static(case: SystemCase):
     a: SystemStaticAnalysis = case.analysis
     setup = prepare_system_static(case)
     records, profiles, coupled, iterations, residuals = [], [], [], [], []
-    for condition, system in zip(setup.conditions, setup.systems):
+    pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
+    for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_static case '{case.name}', {condition} condition"
         eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
         _check_stable(system, eq, where)
+        if eq.pin_reaction is not None:
+            for k, name in enumerate(eq.free_body_names):
+                pins[c, setup.bodies.index(name)] = eq.pin_reaction[k]
+        held += [f"{condition}: {what}" for what in eq.indeterminate]
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
         coupled.append(np.asarray(eq.stiffness, float))
@@ -413,6 +424,10 @@ def run_system_static(case: SystemCase):
                                     "coupled mooring stiffness of the free bodies, lines only")
     data["iterations"] = var("condition", iterations, "1", "iterations of the equilibrium solve")
     data["residual"] = var("condition", residuals, "1", "residual of the equilibrium, relative")
+    if setup.bodies:
+        for k, axis in enumerate("xyz"):
+            data[f"pin_reaction_{axis}"] = var(("condition", "body"), pins[..., k], "N",
+                                               f"force of the pin on a pinned body, {axis} (0: not pinned)")
     coords = _coords(setup)
     s = np.array([np.linspace(0.0, case.lines[n].line.length, a.profile_points) for n in setup.lines])
     coords.update({
@@ -426,6 +441,8 @@ def run_system_static(case: SystemCase):
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup))
     ds.attrs["depth"] = float(case.environment.depth)
+    if held:
+        ds.attrs["indeterminate"] = "; ".join(held)  # rotations nothing resists, held where they start
     return ds
 
 
