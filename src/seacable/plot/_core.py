@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["animation_writer"]
+__all__ = ["animation_writer", "figures_of"]
 
 
 def _label(da) -> str:
@@ -129,3 +129,26 @@ def animation_writer(path, fps, max_frames, dpi, n_times):
     return path, writer, frames, plt
 
 
+
+
+def figures_of(ds, analysis: str, table: dict) -> list:
+    """The figures of ``table[analysis]`` for a result of that analysis (a model's public ``plot_*``).
+
+    Raises
+    ------
+    InputError
+        The result is of another analysis.
+    """
+    from ..errors import InputError
+
+    found = ds.attrs.get("analysis")
+    if found != analysis:
+        raise InputError(f"plot_{analysis} needs a '{analysis}' result, got analysis '{found}'. "
+                         f"Suggested fix: run a case with analysis type {analysis}, or use "
+                         "seacable.plot.plot_result for the figures of this result.")
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    return list(table[analysis](ds, plt).values())

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from ._core import _label, _snapshot_times
+from ._core import _label, _snapshot_times, figures_of
 
 __all__ = ["MOORING_FIGURES", "plot_mooring_dynamic", "plot_mooring_pushover", "plot_mooring_static"]
 
@@ -320,19 +320,7 @@ MOORING_FIGURES = {
 
 
 def _figures(ds, analysis: str) -> list:
-    from ..errors import InputError
-
-    found = ds.attrs.get("analysis")
-    if found != analysis:
-        raise InputError(f"plot_{analysis} needs a '{analysis}' result, got analysis '{found}'. "
-                         f"Suggested fix: run a case with analysis type {analysis}, or use "
-                         "seacable.plot.plot_result for the figures of this result.")
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return list(MOORING_FIGURES[analysis](ds, plt).values())
+    return figures_of(ds, analysis, MOORING_FIGURES)
 
 
 def plot_mooring_static(ds) -> list:

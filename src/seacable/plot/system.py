@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._core import _interrupted_note, _label, _snapshot_times
+from ._core import _interrupted_note, _label, _snapshot_times, figures_of
 
 __all__ = ["SYSTEM_FIGURES", "plot_system_dynamic", "plot_system_offsets", "plot_system_static"]
 
@@ -304,19 +304,7 @@ SYSTEM_FIGURES = {
 
 
 def _figures(ds, analysis: str) -> list:
-    from ..errors import InputError
-
-    found = ds.attrs.get("analysis")
-    if found != analysis:
-        raise InputError(f"plot_{analysis} needs a '{analysis}' result, got analysis '{found}'. "
-                         f"Suggested fix: run a case with analysis type {analysis}, or use "
-                         "seacable.plot.plot_result for the figures of this result.")
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    return list(SYSTEM_FIGURES[analysis](ds, plt).values())
+    return figures_of(ds, analysis, SYSTEM_FIGURES)
 
 
 def plot_system_static(ds) -> list:
