@@ -86,6 +86,7 @@ CASE_BASES = {
     "paper003_zigzag.yaml": "run",                # towline_dynamic
     "spread_mooring.yaml": "validate",            # system_static (a mooring system: lines, points, bodies)
     "spread_mooring_watch_circle.yaml": "run",    # system_offsets
+    "spread_mooring_line_break.yaml": "validate",  # system_dynamic (coupled bodies and FE lines, a failure)
 }
 
 #: numeric keys that must be > 0 wherever they appear (a zero or negative value is meaningless)
@@ -366,6 +367,7 @@ def _other_corpus() -> list[Bad]:
 def _system_corpus() -> list[Bad]:
     spread = _example("spread_mooring.yaml")
     watch = _example("spread_mooring_watch_circle.yaml")
+    brk = _example("spread_mooring_line_break.yaml")
     buoy = ("bodies", "buoy")
     out = [
         Bad("system-unknown-point", ["validate", "{case}"], ["lines.line1.end_b", "fairled1", "Did you mean"],
@@ -402,6 +404,23 @@ def _system_corpus() -> list[Bad]:
         # 2 conditions x (1 + 12 headings x 5 loads) = 122 equilibria, each counted as a step of the run
         Bad("system-offsets-sweep-too-long", ["validate", "{case}", "--max-steps", "100"],
             ["system_offsets", "--max-steps"], {"case": watch}),
+        # system_dynamic (examples/spread_mooring_line_break.yaml)
+        Bad("system-dynamic-unknown-motion-body", ["validate", "{case}"], ["body_motions", "bouy", "Did you mean"],
+            {"case": _set(brk, ("analysis", "body_motions"), {"bouy": {"amplitude": [1.0, 0.0, 0.0, 0.0, 0.0, 0.0], "period": 10.0}})}),
+        Bad("system-dynamic-unknown-force-body", ["validate", "{case}"], ["external_forces", "bouy", "Did you mean"],
+            {"case": _set(brk, ("analysis", "external_forces"),
+                          {"bouy": {"times": [0.0, 200.0], "values": [[0.0] * 6, [0.0] * 6]}})}),
+        Bad("system-dynamic-unknown-failed-line", ["validate", "{case}"], ["failures[0].line", "line7"],
+            {"case": _set(brk, ("analysis", "failures"), [{"line": "line7", "end": "b", "time": 20.0}])}),
+        Bad("system-dynamic-output-interval", ["validate", "{case}"], ["output_interval", "duration"],
+            {"case": _set(brk, ("analysis", "output_interval"), 200.0)}),
+        Bad("system-dynamic-short-force-series", ["validate", "{case}"], ["external_forces.buoy", "extend"],
+            {"case": _set(brk, ("analysis", "external_forces"),
+                          {"buoy": {"times": [0.0, 60.0], "values": [[0.0] * 6, [0.0] * 6]}})}),
+        Bad("system-dynamic-missing-force-file", ["validate", "{case}"], ["nope.csv"],
+            {"case": _set(brk, ("analysis", "external_forces"), {"buoy": {"file": "nope.csv"}})}),
+        Bad("system-dynamic-failure-no-trigger", ["validate", "{case}"], ["failures", "line1", "time"],
+            {"case": _set(brk, ("analysis", "failures"), [{"line": "line1", "end": "b"}])}),
     ]
     return out
 

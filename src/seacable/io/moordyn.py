@@ -1649,7 +1649,10 @@ def _line_failures(md: MoorDynInput) -> list:
                 raise InputError(f"{md.path or 'MoorDyn file'}: FAILURE {f.id}: line {line_id} does not end at "
                                  f"attachment {f.attachment}. Suggested fix: name the point (or rod end) the line "
                                  "ends at.")
-            out.append(LineFailure(line=f"line{line_id}", end=end, time=f.time or None, tension=f.tension or None))
+            # a 0 disables that trigger; both 0 breaks the line at the start (MoorDyn-F)
+            out.append(LineFailure(line=f"line{line_id}", end=end,
+                                   time=f.time if f.time > 0 or not f.tension > 0 else None,
+                                   tension=f.tension if f.tension > 0 else None))
     return out
 
 
