@@ -751,7 +751,9 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     for name, body in system.bodies.items():
         if body.kind == "prescribed" and name not in a.body_motions:
             warnings.warn(f"body '{name}' is prescribed but {where}.body_motions has no motion for it: it is held "
-                          "still. Suggested fix: add its motion, or make it 'fixed'.", SeacableWarning, stacklevel=2)
+                          "still. Suggested fix: add its motion, or make it 'fixed' (a MoorDyn deck: write it as a YAML case with "
+                          "seacable.io.dump_case(case.system_case()) and add the motion there).", SeacableWarning,
+                          stacklevel=2)
         if body.kind == "free" and body.mass <= 0:
             raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
