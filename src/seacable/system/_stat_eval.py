@@ -107,12 +107,9 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
 
 def node_positions(asm: Assembly, X, R, P):
     """Global positions of every node; body nodes from their body's X and R."""
-    P = P.copy()
-    bn = np.flatnonzero(asm.node_kind == BODY)
-    if bn.size:
-        k = asm.node_body[bn]
-        P[bn] = X[k] + np.einsum("nij,nj->ni", R[k], asm.node_rel[bn])
-    return P
+    out = np.empty_like(P)
+    _k.node_positions(P, X, R, asm.node_kind, asm.node_body, asm.node_rel, out)
+    return out
 
 
 def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None, max_strain=1.0) -> Evaluation:

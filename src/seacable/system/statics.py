@@ -78,6 +78,7 @@ from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
+from . import _stat_kernel as _kern
 from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -296,6 +297,7 @@ class _Problem:
         reach += [np.abs(self.bd.rcg).max(initial=0.0), np.abs(self.bd.rcb).max(initial=0.0)]
         self.length_scale = max(1.0, *reach)
         self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
+        self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
@@ -391,18 +393,9 @@ class _Problem:
         return float(np.abs(self._scaled(ev)).max(initial=0.0))
 
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
-        nb = self.nb
-        X, R, P = st.X.copy(), st.R.copy(), st.P.copy()
-        for k in range(nb):
-            X[k] += alpha * dq[6 * k:6 * k + 3]
-            R[k] = _rotvec(alpha * dq[6 * k + 3:6 * k + 6]) @ R[k]
-        fn = self.asm.free_nodes
-        P[fn] += alpha * dq[6 * nb:].reshape(-1, 3)
+        X, R, P = np.empty_like(st.X), np.empty_like(st.R), np.empty_like(st.P)
         grounded = st.grounded.copy()
-        if self.asm.depth is not None:
-            low = P[fn, 2] < -self.asm.depth
-            P[fn[low], 2] = -self.asm.depth
-            grounded[fn[low]] = True
+        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded)
         return State(X, R, P, grounded)
 
     def newton(self, st: State, load: float, ev: Evaluation | None = None):
