@@ -111,7 +111,9 @@ def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0,
         geom[s, 4] = 1.0 if tiny else 0.0
         anchor_is_a[s] = a_is
         seabed[s] = (not math.isnan(depth)) and pA[2] <= -depth + seabed_tol
-        if not have_warm:
+        if not have_warm or (w[s] > 0 and not H0[s] > 0):
+            # no start, or a last solution with no horizontal force (a vertical or slack-L line that
+            # the public function solved): Peyrot & Goulois's start
             if w[s] > 0:
                 H0[s], V0[s] = _guess_one(h, geom[s, 1], L[s], EA[s], w[s])
             else:

@@ -69,6 +69,7 @@ References
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, field, replace
 
@@ -293,22 +294,32 @@ class _Problem:
         asm = self.asm
         self.nb = len(asm.free_bodies)
         self.nfree = asm.free_nodes.size
-        reach = [np.abs(asm.node_rel[asm.node_kind == 1]).max(initial=0.0)]
-        reach += [np.abs(self.bd.rcg).max(initial=0.0), np.abs(self.bd.rcb).max(initial=0.0)]
-        self.length_scale = max(1.0, *reach)
-        self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
+        const = getattr(asm, "_problem_constants", None)
+        if const is None:
+            # what depends on the assembly only (kept with it in the cache): scales, the moments'
+            # weights, the pinned bodies and the indeterminate rotations
+            reach = [np.abs(asm.node_rel[asm.node_kind == 1]).max(initial=0.0)]
+            reach += [np.abs(base.rcg).max(initial=0.0), np.abs(base.rcb).max(initial=0.0)]
+            length_scale = max(1.0, *reach)
+            weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
+            for k in range(self.nb):
+                weights[6 * k + 3:6 * k + 6] = 1.0 / length_scale
+            weights.flags.writeable = False
+            # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
+            # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
+            bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
+            pinned = np.array([b.pinned for b in bodies], bool)
+            spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
+            const = (length_scale, max(1.0, 0.05 * float(asm.sub_L.max())), weights, pinned, spin,
+                     float(np.abs(asm.node_force).max(initial=0.0)))
+            asm._problem_constants = const
+        self.length_scale, self.step_len, self.weights, self.pinned, spin, asm._force_max = const
+        self.spin = list(spin)
+        self.any_held = bool(self.pinned.any()) or any(a.size for a in self.spin)
         self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
-        self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
-        for k in range(self.nb):
-            self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
-        # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
-        # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
-        bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
-        self.pinned = np.array([b.pinned for b in bodies], bool)
-        self.spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
         self.spin_k = 1.0         # stiffness the indeterminate rotations are held with [N m/rad], set per evaluation
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
@@ -354,6 +365,7 @@ class _Problem:
                 J[zd, :] = 0.0
                 J[:, zd] = 0.0
                 J[zd, zd] = 1.0
+        ev.scaled = ev.residual * self.weights / ev.scale
         return ev
 
     def _hold(self, st: State, ev: Evaluation) -> None:
@@ -361,6 +373,8 @@ class _Problem:
         ``ev.reaction``) and give the indeterminate rotations a stiffness in the Newton Jacobian only
         (their moment is zero whatever the rotation, so the step has no component along them)."""
         ev.reaction = np.zeros((self.nb, 3))
+        if not self.any_held:
+            return
         for k in np.flatnonzero(self.pinned):
             t = slice(6 * k, 6 * k + 3)
             ev.reaction[k] = -ev.residual[t]
@@ -422,7 +436,7 @@ class _Problem:
                 # exactly at its length, slack, carrying a weight): move along the net forces instead
                 g = self._scaled(ev)
                 dq = g / np.abs(g).max() * self.step_len
-            merit = np.linalg.norm(self._scaled(ev))
+            merit = _norm(self._scaled(ev))
             accepted = fallback = None
             # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
             # if the residual norm grows less than GROWTH-fold (a change of regime - a line lifting
@@ -442,7 +456,7 @@ class _Problem:
                     continue
                 if fallback is None:
                     fallback = (trial, ev2)
-                m2 = np.linalg.norm(self._scaled(ev2))
+                m2 = _norm(self._scaled(ev2))
                 if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
                     accepted = (trial, ev2)
                     stalls = stalls + 1 if m2 >= merit else 0
@@ -486,6 +500,8 @@ class _Problem:
         return dq
 
     def _scaled(self, ev):
+        if ev.scaled is not None:
+            return ev.scaled
         return ev.residual * self.weights / ev.scale
 
 
@@ -508,6 +524,10 @@ def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None,
         _CACHE.pop(next(iter(_CACHE)))
     _CACHE[key] = (system, env, asm, base)
     return asm, base
+
+
+def _norm(v) -> float:
+    return math.sqrt(float(np.dot(v, v)))
 
 
 def _rotvec(th) -> np.ndarray:
