@@ -157,6 +157,5 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     force_max = getattr(asm, "_force_max", None)
     if force_max is None:
         force_max = float(np.abs(asm.node_force).max(initial=0.0))
-    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)), force_max,
-                float(np.abs(own).max(initial=0.0)), bd.external_scale)
+    scale = _k.force_scale(fa, fb, own, max(1.0, force_max, bd.external_scale))
     return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)

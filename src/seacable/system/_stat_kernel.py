@@ -225,3 +225,58 @@ def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
         if not math.isnan(depth) and P2[n, 2] < -depth:
             P2[n, 2] = -depth
             grounded[n] = True
+
+
+@njit(cache=True, error_model="numpy")
+def _absmax(dq, i0, i1):
+    m = 0.0
+    for i in range(i0, i1):
+        m = max(m, abs(dq[i]))
+    return m
+
+
+@njit(cache=True, error_model="numpy")
+def clip_step(dq, nb, step_len, out):
+    """out = dq with each body's translation (rotation) scaled to at most step_len (0.2 rad) in its
+    largest component, and each free node's to step_len."""
+    for i in range(dq.size):
+        out[i] = dq[i]
+    for k in range(nb):
+        for i0, lim in ((6 * k, step_len), (6 * k + 3, 0.2)):
+            n = _absmax(dq, i0, i0 + 3)
+            if n > lim:
+                f = lim / n
+                for i in range(i0, i0 + 3):
+                    out[i] *= f
+    for i0 in range(6 * nb, dq.size, 3):
+        n = _absmax(dq, i0, i0 + 3)
+        if n > step_len:
+            f = step_len / n
+            for i in range(i0, i0 + 3):
+                out[i] *= f
+
+
+@njit(cache=True, error_model="numpy")
+def uniform_limit(dq, nb, step_len):
+    """Factor that brings the largest translation to step_len and rotation to 0.2 rad (at most 1)."""
+    lim = 1.0
+    for k in range(nb):
+        lim = min(lim, step_len / max(_absmax(dq, 6 * k, 6 * k + 3), 1e-300),
+                  0.2 / max(_absmax(dq, 6 * k + 3, 6 * k + 6), 1e-300))
+    if dq.size > 6 * nb:
+        lim = min(lim, step_len / max(_absmax(dq, 6 * nb, dq.size), 1e-300))
+    return lim
+
+
+@njit(cache=True, error_model="numpy")
+def force_scale(fa, fb, own, floor):
+    """max(floor, largest |component| of fa, fb and own)."""
+    m = floor
+    for a in (fa, fb):
+        for i in range(a.shape[0]):
+            for j in range(3):
+                m = max(m, abs(a[i, j]))
+    for i in range(own.shape[0]):
+        for j in range(6):
+            m = max(m, abs(own[i, j]))
+    return m

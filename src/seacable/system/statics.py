@@ -474,30 +474,13 @@ class _Problem:
 
     def uniform_limit(self, dq):
         """Factor that brings the largest translation to step_len and rotation to 0.2 rad."""
-        nb = self.nb
-        lim = 1.0
-        for k in range(nb):
-            lim = min(lim, self.step_len / max(np.abs(dq[6 * k:6 * k + 3]).max(), 1e-300),
-                      0.2 / max(np.abs(dq[6 * k + 3:6 * k + 6]).max(), 1e-300))
-        if self.nfree:
-            lim = min(lim, self.step_len / max(np.abs(dq[6 * nb:]).max(), 1e-300))
-        return lim
+        return float(_kern.uniform_limit(dq, self.nb, float(self.step_len)))
 
     def clip(self, dq):
         """Step limits per object: translations to step_len, rotations to 0.2 rad."""
-        dq = dq.copy()
-        nb = self.nb
-        for k in range(nb):
-            for sl, lim in ((slice(6 * k, 6 * k + 3), self.step_len), (slice(6 * k + 3, 6 * k + 6), 0.2)):
-                n = np.abs(dq[sl]).max()
-                if n > lim:
-                    dq[sl] *= lim / n
-        d = dq[6 * nb:].reshape(-1, 3)
-        n = np.abs(d).max(axis=1, initial=0.0)
-        big = n > self.step_len
-        d[big] *= (self.step_len / n[big])[:, None]
-        dq[6 * nb:] = d.ravel()
-        return dq
+        out = np.empty_like(dq)
+        _kern.clip_step(dq, self.nb, float(self.step_len), out)
+        return out
 
     def _scaled(self, ev):
         if ev.scaled is not None:
@@ -628,32 +611,32 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                 f"{np.abs(moment).max():.4g} N m loads it there, so the body spins without end. Suggested fix: "
                 "remove the moment about the axis from external_force, or attach a line off the axis.")
         moor[r, r] += prob.spin_k * (A @ A.T)
-    tot = np.diag(hyd) + np.diag(moor)
-    for k in range(nb):
+    dh, dm = np.diag(hyd), np.diag(moor)
+    tot = dh + dm
+    # reference per kind of DOF: the largest diagonal term of any body's translations / rotations
+    ah, am = np.abs(dh).reshape(nb, 6), np.abs(dm).reshape(nb, 6)
+    refs = [max(float(ah[:, sl].max()), float(am[:, sl].max()), 1e-300) for sl in (slice(0, 3), slice(3, 6))]
+    ref_dof = np.tile(np.repeat(refs, 3), nb)
+    weak = ~(tot > 1e-9 * ref_dof)
+    weak.reshape(nb, 6)[prob.pinned, :3] = False      # held by the pin
+    for i in np.flatnonzero(weak):
+        k, j = divmod(int(i), 6)
         name = prob.asm.body_names[prob.asm.free_bodies[k]]
-        for j in range(6):
-            i = 6 * k + j
-            if j < 3 and prob.pinned[k]:
-                continue      # held by the pin
-            same = [6 * kk + jj for kk in range(nb) for jj in ((0, 1, 2) if j < 3 else (3, 4, 5))]
-            ref = max(np.abs(np.diag(hyd)[same]).max(), np.abs(np.diag(moor)[same]).max(), 1e-300)
-            if tot[i] > 1e-9 * ref:
-                continue
-            unit = "N/m" if j < 3 else "N m/rad"
-            if hyd[i, i] < 0 and tot[i] < 0:
-                raise InputError(
-                    f"bodies.{name}: the hydrostatic stiffness in {_DOF[j]} is {hyd[i, i]:.4g} {unit} (unstable: "
-                    f"the centre of gravity is too high for the buoyancy and waterplane) and the lines add "
-                    f"only {moor[i, i]:.4g} {unit}, so the body capsizes. Suggested fix: check "
-                    "center_of_gravity, center_of_buoyancy and waterplane_moments (or hydrostatic_stiffness), "
-                    "or moor the body so the lines restore it.")
-            if abs(ev.residual[i]) > prob.tol * ev.scale * (1 if j < 3 else prob.length_scale):
-                raise InputError(
-                    f"bodies.{name}: nothing restores the body in {_DOF[j]} (hydrostatic {hyd[i, i]:.4g} {unit}, "
-                    f"lines {moor[i, i]:.4g} {unit}) but it is loaded there by {ev.residual[i]:.4g} "
-                    f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
-                    "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
-                    "point, or remove the load.")
+        unit = "N/m" if j < 3 else "N m/rad"
+        if hyd[i, i] < 0 and tot[i] < 0:
+            raise InputError(
+                f"bodies.{name}: the hydrostatic stiffness in {_DOF[j]} is {hyd[i, i]:.4g} {unit} (unstable: "
+                f"the centre of gravity is too high for the buoyancy and waterplane) and the lines add "
+                f"only {moor[i, i]:.4g} {unit}, so the body capsizes. Suggested fix: check "
+                "center_of_gravity, center_of_buoyancy and waterplane_moments (or hydrostatic_stiffness), "
+                "or moor the body so the lines restore it.")
+        if abs(ev.residual[i]) > prob.tol * ev.scale * (1 if j < 3 else prob.length_scale):
+            raise InputError(
+                f"bodies.{name}: nothing restores the body in {_DOF[j]} (hydrostatic {hyd[i, i]:.4g} {unit}, "
+                f"lines {moor[i, i]:.4g} {unit}) but it is loaded there by {ev.residual[i]:.4g} "
+                f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
+                "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
+                "point, or remove the load.")
 
 
 def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None,
