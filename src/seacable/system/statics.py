@@ -349,6 +349,13 @@ class _Problem:
         j = np.flatnonzero(st.grounded[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
+    def point_dofs(self, st: State) -> np.ndarray:
+        """DOF indices of the free points that are not held on the seabed (condensed out)."""
+        allp = np.arange(6 * self.nb, 6 * self.nb + 3 * self.nfree)
+        if not self.nfree or not st.grounded.any():
+            return allp
+        return np.setdiff1d(allp, self._z_dof(st))
+
     def eval(self, st: State, load: float) -> Evaluation:
         ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm, max_strain=self.max_strain)
         self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
@@ -578,7 +585,7 @@ def _condense(K: np.ndarray, nb: int, keep_points: np.ndarray) -> np.ndarray:
     b = np.arange(6 * nb)
     p = keep_points
     if p.size == 0:
-        return K[np.ix_(b, b)]
+        return K[:b.size, :b.size].copy()
     Kpp = K[np.ix_(p, p)]
     Kpb = K[np.ix_(p, b)]
     try:
@@ -594,8 +601,7 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     if nb == 0:
         return
     hyd = ev.hydro
-    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
-    moor = _condense(-ev.jac_lines, nb, pts)
+    moor = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
     for k, axes in enumerate(prob.spin):
         if not axes.size:
             continue
@@ -879,6 +885,7 @@ def _same_split(surf, old_surf, air, old_air, asm) -> bool:
     return True
 
 
+_SUSPENDED = int(CatenaryRegime.SUSPENDED)
 _SAG_ROUNDS = 3         # times lines sagging into the seabed are split and the system solved again
 
 
@@ -898,7 +905,7 @@ def _sag_cuts(prob: _Problem, st: State, ev: Evaluation) -> dict:
         return {}
     cat = ev.cat
     H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
-    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == _SUSPENDED)
     out: dict = {}
     if not sag.any():
         return out
@@ -939,7 +946,7 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
         # a mid-water sub-line sagging below its lower end (V_A < 0) must not reach the seabed,
         # which it would cross unnoticed (seabed=False): lowest point of the elastic catenary
         H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
-        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == _SUSPENDED)
         if sag.any():
             Hs, Vs, ws = H[sag], VA[sag], w[sag]
             dip = Hs / ws * (np.hypot(1.0, Vs / Hs) - 1.0) + Vs * Vs / (2.0 * ws * asm.sub_EA[sag])
@@ -952,10 +959,16 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
                               f"{-depth:g} m; the system statics lets a line lie on the seabed only from a point "
                               "on it, so this part passes through the seabed. Suggested fix: shorten the line, or "
                               "add a point on the seabed where it touches down.", SeacableWarning, stacklevel=3)
+    mbls = getattr(asm, "_breaking_loads", None)
+    if mbls is None:
+        # weakest segment's breaking load of each line (None: not given), kept with the cached assembly
+        mbls = [min((seg.line_type.breaking_load for seg in eq.system.lines[name].line.segments
+                     if seg.line_type.breaking_load is not None), default=None) for name in eq.line_names]
+        asm._breaking_loads = mbls
     for i, name in enumerate(eq.line_names):
-        line = eq.system.lines[name].line
-        mbl = min((seg.line_type.breaking_load for seg in line.segments
-                   if seg.line_type.breaking_load is not None), default=None)
+        mbl = mbls[i]
+        if mbl is None:
+            continue
         t = max(eq.end_a_tension[i], eq.end_b_tension[i])
         if mbl is not None and t > mbl:
             warnings.warn(f"lines.{name}: tension {t:.4g} N exceeds the breaking load {mbl:.4g} N of its weakest "
@@ -967,22 +980,27 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
     asm, system = prob.asm, prob.system
     nb = prob.nb
     P = node_positions(asm, st.X, st.R, st.P)
-    body_pos = np.array([np.asarray(system.bodies[n].position, float) for n in asm.body_names]).reshape(-1, 6)
+    given = getattr(asm, "_result_constants", None)
+    if given is None:
+        # positions given of every body, the system's point names and their nodes (kept with the cached assembly)
+        point_names = list(system.points)
+        given = (np.array([np.asarray(system.bodies[n].position, float) for n in asm.body_names]).reshape(-1, 6),
+                 point_names, np.array([asm.point_node[n] for n in point_names], int))
+        asm._result_constants = given
+    body_pos = given[0].copy()
     for k, i in enumerate(asm.free_bodies):
         body_pos[i, :3] = st.X[k]
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
-    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
-    K = _condense(-ev.jac_lines, nb, pts)
+    K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
     hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
-    grounded = np.zeros(len(asm.line_names))
-    np.add.at(grounded, asm.sub_line, ev.cat.grounded_length)
-    point_names = list(system.points)
+    grounded = np.bincount(asm.sub_line, weights=ev.cat.grounded_length, minlength=len(asm.line_names))
+    point_names = list(given[1])
     return SystemEquilibrium(
         system=system, environment=prob.env, body_names=list(asm.body_names), body_position=body_pos,
         free_body_names=[asm.body_names[i] for i in asm.free_bodies], point_names=point_names,
-        point_position=P[[asm.point_node[n] for n in point_names]], line_names=list(asm.line_names),
+        point_position=P[given[2]], line_names=list(asm.line_names),
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
