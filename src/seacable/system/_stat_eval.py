@@ -128,6 +128,19 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
                                                      asm.friction, asm.depth, warm, max_strain=max_strain)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
+    force_max = getattr(asm, "_force_max", None)
+    if force_max is None:
+        force_max = float(np.abs(asm.node_force).max(initial=0.0))
+    floor = max(1.0, force_max, bd.external_scale)
+    if not any(k is not None for k in bd.khs):
+        # everything in one compiled call
+        jac, hydro = np.empty((ndof, ndof)), np.empty((6 * nb, 6 * nb))
+        scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead,
+                                cat.V_fairlead, cat.H_anchor, cat.V_anchor, cat.stiffness, cat.regime, _GROUNDED,
+                                float(asm.friction), asm.node_force, asm.node_kind, asm.node_body, asm.node_dof, nb,
+                                ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
+                                bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
+        return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
     grounded = _GROUNDED[cat.regime]
     K = cat.stiffness
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
@@ -154,8 +167,5 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
         b = slice(6 * k, 6 * k + 6)
         jac[b, b] += own_jac[k]
         hydro[b, b] = -own_jac[k]
-    force_max = getattr(asm, "_force_max", None)
-    if force_max is None:
-        force_max = float(np.abs(asm.node_force).max(initial=0.0))
-    scale = _k.force_scale(fa, fb, own, max(1.0, force_max, bd.external_scale))
+    scale = _k.force_scale(fa, fb, own, floor)
     return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)

@@ -280,3 +280,34 @@ def force_scale(fa, fb, own, floor):
         for j in range(6):
             m = max(m, abs(own[i, j]))
     return m
+
+
+@njit(cache=True, error_model="numpy")
+def assemble_all(P, X, R, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, regime, grounded_of, mu,
+                 node_force, node_kind, node_body, node_dof, nb, ndof, mass, rcg, volume, rcb, awp, iwp, z0, rho,
+                 g, external, load_factor, floor, fa, fb, nf, res, jac_lines, jac, hydro):
+    """:func:`assemble` and :func:`body_terms` in one call (bodies without a user hydrostatic matrix):
+    fills fa, fb, nf, res (lines, bodies' own terms and external loads), jac_lines, jac (all terms)
+    and hydro (6 nb x 6 nb, the bodies' own restoring); returns the force scale
+    max(floor, |fa|, |fb|, |own terms|)."""
+    ns = sub_a.size
+    grounded = np.empty(ns, np.bool_)
+    for s in range(ns):
+        grounded[s] = grounded_of[regime[s]]
+    assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force, node_kind,
+             node_body, node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
+    own = np.zeros((nb, 6))
+    own_jac = np.zeros((nb, 6, 6))
+    if nb:
+        body_terms(R, X, mass, rcg, volume, rcb, awp, iwp, z0, rho, g, own, own_jac)
+    for i in range(ndof):
+        for j in range(ndof):
+            jac[i, j] = jac_lines[i, j]
+    hydro[:, :] = 0.0
+    for k in range(nb):
+        for i in range(6):
+            res[6 * k + i] += own[k, i] + load_factor * external[k, i]
+            for j in range(6):
+                jac[6 * k + i, 6 * k + j] += own_jac[k, i, j]
+                hydro[6 * k + i, 6 * k + j] = -own_jac[k, i, j]
+    return force_scale(fa, fb, own, floor)
