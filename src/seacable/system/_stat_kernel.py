@@ -311,3 +311,9 @@ def assemble_all(P, X, R, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K,
                 jac[6 * k + i, 6 * k + j] += own_jac[k, i, j]
                 hydro[6 * k + i, 6 * k + j] = -own_jac[k, i, j]
     return force_scale(fa, fb, own, floor)
+
+
+@njit(cache=True)
+def solve(A, b):
+    """np.linalg.solve compiled (no Python call overhead); raises LinAlgError when A is singular."""
+    return np.linalg.solve(A, b)

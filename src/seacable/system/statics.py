@@ -433,9 +433,13 @@ class _Problem:
                 return st, ev, True
             self.iterations += 1
             try:
-                dq = np.linalg.solve(ev.jac, -ev.residual)
+                dq = _kern.solve(ev.jac, -ev.residual)
             except np.linalg.LinAlgError:
-                dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
+                # singular or not finite: numpy's own solve, least squares if singular
+                try:
+                    dq = np.linalg.solve(ev.jac, -ev.residual)
+                except np.linalg.LinAlgError:
+                    dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
             if not np.all(np.isfinite(dq)):
                 return st, ev, False
             if np.abs(dq).max(initial=0.0) <= 1e-12 * self.step_len:
@@ -806,8 +810,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter."
             + (f" The last step refused was: {prob.refused}" if prob.refused else ""),
             iterations=prob.iterations, residual=err)
-    eq = _result(prob, st, ev)
-    eq = replace(eq, _rounds=(cuts, surf, air))
+    eq = _result(prob, st, ev, (cuts, surf, air))
     _warn_strain(eq)
     return eq
 
@@ -976,7 +979,7 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
                           SeacableWarning, stacklevel=3)
 
 
-def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
+def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, {})) -> SystemEquilibrium:
     asm, system = prob.asm, prob.system
     nb = prob.nb
     P = node_positions(asm, st.X, st.R, st.P)
@@ -1005,7 +1008,7 @@ def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction.copy())
+        pin_reaction=ev.reaction.copy(), _rounds=rounds)
 
 
 def _continuous(angles, ref):
