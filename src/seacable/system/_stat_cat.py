@@ -122,9 +122,40 @@ def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0,
 
 
 @njit(cache=True, error_model="numpy")
+def _vertical(k, z, L, EA, w, out):
+    """A weighty line hanging in mid-water with zero horizontal span (``catenary``'s closed form:
+    straight and vertical when taut, else a U folded at its lowest point); out[k, 10] = 1 unless its
+    strain exceeds 1 (the public function decides)."""
+    f = 1.0 + 0.5 * w * L / EA
+    taut = abs(z) >= L * f
+    sz = 1.0 if z > 0 else (-1.0 if z < 0 else 0.0)
+    VA3 = EA * (z - sz * L) / L - 0.5 * w * L
+    k00 = 0.0
+    if taut:
+        q = w * L / VA3 if VA3 != 0.0 else math.inf
+        if math.isfinite(q) and q > -1.0:
+            dxdH = abs(math.log1p(q)) / w + L / EA
+            if math.isfinite(dxdH):
+                k00 = 1.0 / dxdH
+    d = z / f
+    V = VA3 + w * L if taut else 0.5 * w * (L + d)
+    VA = VA3 if taut else V - w * L
+    out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4] = 0.0, V, 0.0, VA, 0.0
+    out[k, 5], out[k, 6], out[k, 7] = k00, 0.0, 0.0
+    out[k, 8] = EA / L if taut else 0.5 * w / f
+    out[k, 9] = 6.0 if taut else 5.0          # CatenaryRegime.VERTICAL, SLACK_U
+    if max(abs(V), abs(VA)) > EA:
+        return
+    out[k, 10] = 1.0
+
+
+@njit(cache=True, error_model="numpy")
 def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
     """Sub-line ``k``: damped Newton on (H, V) with one polishing step; out[k, 10] = 1 if solved."""
     out[k, 10] = 0.0
+    if w[k] > 0 and not seabed[k] and x[k] <= 1e-12 * L[k] and math.hypot(x[k], z[k]) / L[k] - 1.0 <= 1.0:
+        _vertical(k, z[k], L[k], EA[k], w[k], out)
+        return
     if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
         return
     H, V = H0[k], V0[k]
