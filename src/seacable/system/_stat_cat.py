@@ -5,8 +5,9 @@ catenary restarts from its previous end forces and converges in one or two steps
 solves the two generic regimes of :func:`seacable.statics.catenary.catenary` - suspended (any
 shape, seabed or not) and touching down on the seabed with Coulomb friction - with the same
 equations (Irvine 1981 eqs. 2.26-2.27; Jonkman 2007 eqs. 2-35 to 2-42, in the forms of
-``catenary._spans``) and the same tolerance. Every other case (buoyant or weightless lines, a
-zero span, the slack L shape, a failure to converge, a strain above 1) is flagged and left to
+``catenary._spans``) and the same tolerance, and a weighty mid-water line with zero horizontal span
+(the public function's closed form). Every other case (buoyant or weightless lines, a zero span
+on the seabed, the slack L shape, a failure to converge, a strain above 1) is flagged and left to
 the vectorised public function, which also serves the first evaluation.
 """
 
