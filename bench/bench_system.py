@@ -16,15 +16,20 @@ not converge (499 iterations), so it starts from seacable's solution moved 0.1 m
 best of ``repeats`` (default 7) timed with ``time.perf_counter``. The bodies' positions agree
 to 1e-6 relative (checked).
 
-Measured (2-core shared machine, 2026-11-24, MoorPy 1.3.0, best of 7, warm-up excluded):
+Measured (2-core shared machine, 2026-11-24, MoorPy 1.3.0, best of 7, warm-up excluded; MoorPy's
+figure is the lowest of three runs that day, the machine being shared; "before" is commit e7dbd95,
+before the per-iteration overhead was cut: compiled node positions, trial steps, step limits,
+assembly and Newton solve, constants kept with the cached assembly, fewer catenary fallbacks):
 
-=========================  ============  ==============  =====  =============  =====
-system                     seacable      MoorPy FD       ratio  MoorPy A       ratio
-=========================  ============  ==============  =====  =============  =====
-OC3-Hywind spar            1.0 ms        48 ms           48     24 ms          24
-OC4-DeepCwind semi         1.1 ms        28 ms           26     9.4 ms         8.6
-buoy, clumps and floats    6.4 ms        3000-6000 ms    >450   38 ms          6.0
-=========================  ============  ==============  =====  =============  =====
+=========================  ===========  ============  ==============  =====  =============  =====
+system                     before       seacable      MoorPy FD       ratio  MoorPy A       ratio
+=========================  ===========  ============  ==============  =====  =============  =====
+OC3-Hywind spar            1.19 ms      0.43 ms       45 ms           105    24 ms          56
+OC4-DeepCwind semi         1.27 ms      0.46 ms       27 ms           59     9.1 ms         20
+buoy, clumps and floats    6.24 ms      1.7-2.0 ms    3500-5300 ms    >1700  40 ms          20
+=========================  ===========  ============  ==============  =====  =============  =====
+
+Same iterations (5, 6, 19) and the same equilibria as before (the validation suites unchanged).
 """
 
 from __future__ import annotations

@@ -5,8 +5,9 @@ catenary restarts from its previous end forces and converges in one or two steps
 solves the two generic regimes of :func:`seacable.statics.catenary.catenary` - suspended (any
 shape, seabed or not) and touching down on the seabed with Coulomb friction - with the same
 equations (Irvine 1981 eqs. 2.26-2.27; Jonkman 2007 eqs. 2-35 to 2-42, in the forms of
-``catenary._spans``) and the same tolerance. Every other case (buoyant or weightless lines, a
-zero span, the slack L shape, a failure to converge, a strain above 1) is flagged and left to
+``catenary._spans``) and the same tolerance, and a weighty mid-water line with zero horizontal span
+(the public function's closed form). Every other case (buoyant or weightless lines, a zero span
+on the seabed, the slack L shape, a failure to converge, a strain above 1) is flagged and left to
 the vectorised public function, which also serves the first evaluation.
 """
 
@@ -111,7 +112,9 @@ def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0,
         geom[s, 4] = 1.0 if tiny else 0.0
         anchor_is_a[s] = a_is
         seabed[s] = (not math.isnan(depth)) and pA[2] <= -depth + seabed_tol
-        if not have_warm:
+        if not have_warm or (w[s] > 0 and not H0[s] > 0):
+            # no start, or a last solution with no horizontal force (a vertical or slack-L line that
+            # the public function solved): Peyrot & Goulois's start
             if w[s] > 0:
                 H0[s], V0[s] = _guess_one(h, geom[s, 1], L[s], EA[s], w[s])
             else:
@@ -120,9 +123,40 @@ def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0,
 
 
 @njit(cache=True, error_model="numpy")
+def _vertical(k, z, L, EA, w, out):
+    """A weighty line hanging in mid-water with zero horizontal span (``catenary``'s closed form:
+    straight and vertical when taut, else a U folded at its lowest point); out[k, 10] = 1 unless its
+    strain exceeds 1 (the public function decides)."""
+    f = 1.0 + 0.5 * w * L / EA
+    taut = abs(z) >= L * f
+    sz = 1.0 if z > 0 else (-1.0 if z < 0 else 0.0)
+    VA3 = EA * (z - sz * L) / L - 0.5 * w * L
+    k00 = 0.0
+    if taut:
+        q = w * L / VA3 if VA3 != 0.0 else math.inf
+        if math.isfinite(q) and q > -1.0:
+            dxdH = abs(math.log1p(q)) / w + L / EA
+            if math.isfinite(dxdH):
+                k00 = 1.0 / dxdH
+    d = z / f
+    V = VA3 + w * L if taut else 0.5 * w * (L + d)
+    VA = VA3 if taut else V - w * L
+    out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4] = 0.0, V, 0.0, VA, 0.0
+    out[k, 5], out[k, 6], out[k, 7] = k00, 0.0, 0.0
+    out[k, 8] = EA / L if taut else 0.5 * w / f
+    out[k, 9] = 6.0 if taut else 5.0          # CatenaryRegime.VERTICAL, SLACK_U
+    if max(abs(V), abs(VA)) > EA:
+        return
+    out[k, 10] = 1.0
+
+
+@njit(cache=True, error_model="numpy")
 def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
     """Sub-line ``k``: damped Newton on (H, V) with one polishing step; out[k, 10] = 1 if solved."""
     out[k, 10] = 0.0
+    if w[k] > 0 and not seabed[k] and x[k] <= 1e-12 * L[k] and math.hypot(x[k], z[k]) / L[k] - 1.0 <= 1.0:
+        _vertical(k, z[k], L[k], EA[k], w[k], out)
+        return
     if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
         return
     H, V = H0[k], V0[k]

@@ -76,6 +76,7 @@ class Evaluation:
     scale: float              # force scale for the relative residual [N]
     hydro: np.ndarray         # (6 nb, 6 nb) restoring of the bodies' weight, buoyancy, waterplane
     reaction: np.ndarray | None = None   # (nb, 3) force of the pin on each body (zero unless pinned) [N]
+    scaled: np.ndarray | None = None     # residual / scale (moments also / length scale), set by the solver
 
 
 def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
@@ -107,12 +108,9 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
 
 def node_positions(asm: Assembly, X, R, P):
     """Global positions of every node; body nodes from their body's X and R."""
-    P = P.copy()
-    bn = np.flatnonzero(asm.node_kind == BODY)
-    if bn.size:
-        k = asm.node_body[bn]
-        P[bn] = X[k] + np.einsum("nij,nj->ni", R[k], asm.node_rel[bn])
-    return P
+    out = np.empty_like(P)
+    _k.node_positions(P, X, R, asm.node_kind, asm.node_body, asm.node_rel, out)
+    return out
 
 
 def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=None, max_strain=1.0) -> Evaluation:
@@ -130,6 +128,19 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
                                                      asm.friction, asm.depth, warm, max_strain=max_strain)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
+    force_max = getattr(asm, "_force_max", None)
+    if force_max is None:
+        force_max = float(np.abs(asm.node_force).max(initial=0.0))
+    floor = max(1.0, force_max, bd.external_scale)
+    if not any(k is not None for k in bd.khs):
+        # everything in one compiled call
+        jac, hydro = np.empty((ndof, ndof)), np.empty((6 * nb, 6 * nb))
+        scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead,
+                                cat.V_fairlead, cat.H_anchor, cat.V_anchor, cat.stiffness, cat.regime, _GROUNDED,
+                                float(asm.friction), asm.node_force, asm.node_kind, asm.node_body, asm.node_dof, nb,
+                                ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
+                                bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
+        return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
     grounded = _GROUNDED[cat.regime]
     K = cat.stiffness
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
@@ -140,21 +151,21 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     if nb:
         _k.body_terms(st.R, st.X, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
                       own, own_jac)
-    for k in range(nb):
-        if bd.khs[k] is not None:
-            from ._stat_model import euler, euler_rate_map
-            ang = euler(st.R[k])
-            dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
-            own[k] = bd.f0[k] - bd.khs[k] @ dq
-            M = np.eye(6)
-            M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
-            own_jac[k] = -bd.khs[k] @ M
+        for k in range(nb):
+            if bd.khs[k] is not None:
+                from ._stat_model import euler, euler_rate_map
+                ang = euler(st.R[k])
+                dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
+                own[k] = bd.f0[k] - bd.khs[k] @ dq
+                M = np.eye(6)
+                M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
+                own_jac[k] = -bd.khs[k] @ M
     jac = jac_lines.copy()
     hydro = np.zeros((6 * nb, 6 * nb))
+    res[:6 * nb] += (own + load_factor * bd.external).ravel()
     for k in range(nb):
-        res[6 * k:6 * k + 6] += own[k] + load_factor * bd.external[k]
-        jac[6 * k:6 * k + 6, 6 * k:6 * k + 6] += own_jac[k]
-        hydro[6 * k:6 * k + 6, 6 * k:6 * k + 6] = -own_jac[k]
-    scale = max(1.0, np.abs(fa).max(initial=0.0), np.abs(fb).max(initial=0.0), float(np.abs(asm.node_force).max(initial=0.0)),
-                np.abs(own).max(initial=0.0), bd.external_scale)
+        b = slice(6 * k, 6 * k + 6)
+        jac[b, b] += own_jac[k]
+        hydro[b, b] = -own_jac[k]
+    scale = _k.force_scale(fa, fb, own, floor)
     return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)

@@ -9,6 +9,8 @@ bodies' own weight, buoyancy, heave and waterplane terms.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
 
@@ -167,3 +169,151 @@ def body_terms(R, X, mass, rcg, volume, rcb, awp, iwp, z0, rho, g, own, own_jac)
         for j in range(3):
             own_jac[k, 3, 3 + j] -= rho * g * iwp[k, 0] * Sr[1, j]
             own_jac[k, 4, 3 + j] += rho * g * iwp[k, 1] * Sr[0, j]
+
+
+@njit(cache=True, error_model="numpy")
+def node_positions(P, X, R, node_kind, node_body, node_rel, out):
+    """out = P with every body node at X + R r_rel of its body."""
+    for n in range(P.shape[0]):
+        if node_kind[n] == 1:
+            k = node_body[n]
+            r = node_rel[n]
+            for i in range(3):
+                out[n, i] = X[k, i] + R[k, i, 0] * r[0] + R[k, i, 1] * r[1] + R[k, i, 2] * r[2]
+        else:
+            for i in range(3):
+                out[n, i] = P[n, i]
+
+
+@njit(cache=True, error_model="numpy")
+def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
+    """X2, R2, P2 = the state moved by alpha dq (rotations R -> Rot(alpha th) R, Rodrigues); free
+    nodes below the seabed (depth NaN: none) put on it and flagged in ``grounded``."""
+    nb = X.shape[0]
+    K = np.empty((3, 3))
+    Q = np.empty((3, 3))
+    for k in range(nb):
+        for i in range(3):
+            X2[k, i] = X[k, i] + alpha * dq[6 * k + i]
+        t0, t1, t2 = alpha * dq[6 * k + 3], alpha * dq[6 * k + 4], alpha * dq[6 * k + 5]
+        a = math.sqrt(t0 * t0 + t1 * t1 + t2 * t2)
+        if a < 1e-300:
+            for i in range(3):
+                for j in range(3):
+                    R2[k, i, j] = R[k, i, j]
+            continue
+        k0, k1, k2 = t0 / a, t1 / a, t2 / a
+        K[0, 0], K[0, 1], K[0, 2] = 0.0, -k2, k1
+        K[1, 0], K[1, 1], K[1, 2] = k2, 0.0, -k0
+        K[2, 0], K[2, 1], K[2, 2] = -k1, k0, 0.0
+        s, c = math.sin(a), 1.0 - math.cos(a)
+        for i in range(3):
+            for j in range(3):
+                KK = K[i, 0] * K[0, j] + K[i, 1] * K[1, j] + K[i, 2] * K[2, j]
+                Q[i, j] = (1.0 if i == j else 0.0) + s * K[i, j] + c * KK
+        for i in range(3):
+            for j in range(3):
+                R2[k, i, j] = Q[i, 0] * R[k, 0, j] + Q[i, 1] * R[k, 1, j] + Q[i, 2] * R[k, 2, j]
+    for n in range(P.shape[0]):
+        for i in range(3):
+            P2[n, i] = P[n, i]
+    base = 6 * nb
+    for j in range(free_nodes.size):
+        n = free_nodes[j]
+        for i in range(3):
+            P2[n, i] = P[n, i] + alpha * dq[base + 3 * j + i]
+        if not math.isnan(depth) and P2[n, 2] < -depth:
+            P2[n, 2] = -depth
+            grounded[n] = True
+
+
+@njit(cache=True, error_model="numpy")
+def _absmax(dq, i0, i1):
+    m = 0.0
+    for i in range(i0, i1):
+        m = max(m, abs(dq[i]))
+    return m
+
+
+@njit(cache=True, error_model="numpy")
+def clip_step(dq, nb, step_len, out):
+    """out = dq with each body's translation (rotation) scaled to at most step_len (0.2 rad) in its
+    largest component, and each free node's to step_len."""
+    for i in range(dq.size):
+        out[i] = dq[i]
+    for k in range(nb):
+        for i0, lim in ((6 * k, step_len), (6 * k + 3, 0.2)):
+            n = _absmax(dq, i0, i0 + 3)
+            if n > lim:
+                f = lim / n
+                for i in range(i0, i0 + 3):
+                    out[i] *= f
+    for i0 in range(6 * nb, dq.size, 3):
+        n = _absmax(dq, i0, i0 + 3)
+        if n > step_len:
+            f = step_len / n
+            for i in range(i0, i0 + 3):
+                out[i] *= f
+
+
+@njit(cache=True, error_model="numpy")
+def uniform_limit(dq, nb, step_len):
+    """Factor that brings the largest translation to step_len and rotation to 0.2 rad (at most 1)."""
+    lim = 1.0
+    for k in range(nb):
+        lim = min(lim, step_len / max(_absmax(dq, 6 * k, 6 * k + 3), 1e-300),
+                  0.2 / max(_absmax(dq, 6 * k + 3, 6 * k + 6), 1e-300))
+    if dq.size > 6 * nb:
+        lim = min(lim, step_len / max(_absmax(dq, 6 * nb, dq.size), 1e-300))
+    return lim
+
+
+@njit(cache=True, error_model="numpy")
+def force_scale(fa, fb, own, floor):
+    """max(floor, largest |component| of fa, fb and own)."""
+    m = floor
+    for a in (fa, fb):
+        for i in range(a.shape[0]):
+            for j in range(3):
+                m = max(m, abs(a[i, j]))
+    for i in range(own.shape[0]):
+        for j in range(6):
+            m = max(m, abs(own[i, j]))
+    return m
+
+
+@njit(cache=True, error_model="numpy")
+def assemble_all(P, X, R, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, regime, grounded_of, mu,
+                 node_force, node_kind, node_body, node_dof, nb, ndof, mass, rcg, volume, rcb, awp, iwp, z0, rho,
+                 g, external, load_factor, floor, fa, fb, nf, res, jac_lines, jac, hydro):
+    """:func:`assemble` and :func:`body_terms` in one call (bodies without a user hydrostatic matrix):
+    fills fa, fb, nf, res (lines, bodies' own terms and external loads), jac_lines, jac (all terms)
+    and hydro (6 nb x 6 nb, the bodies' own restoring); returns the force scale
+    max(floor, |fa|, |fb|, |own terms|)."""
+    ns = sub_a.size
+    grounded = np.empty(ns, np.bool_)
+    for s in range(ns):
+        grounded[s] = grounded_of[regime[s]]
+    assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force, node_kind,
+             node_body, node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
+    own = np.zeros((nb, 6))
+    own_jac = np.zeros((nb, 6, 6))
+    if nb:
+        body_terms(R, X, mass, rcg, volume, rcb, awp, iwp, z0, rho, g, own, own_jac)
+    for i in range(ndof):
+        for j in range(ndof):
+            jac[i, j] = jac_lines[i, j]
+    hydro[:, :] = 0.0
+    for k in range(nb):
+        for i in range(6):
+            res[6 * k + i] += own[k, i] + load_factor * external[k, i]
+            for j in range(6):
+                jac[6 * k + i, 6 * k + j] += own_jac[k, i, j]
+                hydro[6 * k + i, 6 * k + j] = -own_jac[k, i, j]
+    return force_scale(fa, fb, own, floor)
+
+
+@njit(cache=True)
+def solve(A, b):
+    """np.linalg.solve compiled (no Python call overhead); raises LinAlgError when A is singular."""
+    return np.linalg.solve(A, b)

@@ -69,6 +69,7 @@ References
 
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, field, replace
 
@@ -78,6 +79,7 @@ from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
+from . import _stat_kernel as _kern
 from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -292,21 +294,32 @@ class _Problem:
         asm = self.asm
         self.nb = len(asm.free_bodies)
         self.nfree = asm.free_nodes.size
-        reach = [np.abs(asm.node_rel[asm.node_kind == 1]).max(initial=0.0)]
-        reach += [np.abs(self.bd.rcg).max(initial=0.0), np.abs(self.bd.rcb).max(initial=0.0)]
-        self.length_scale = max(1.0, *reach)
-        self.step_len = max(1.0, 0.05 * float(asm.sub_L.max()))
+        const = getattr(asm, "_problem_constants", None)
+        if const is None:
+            # what depends on the assembly only (kept with it in the cache): scales, the moments'
+            # weights, the pinned bodies and the indeterminate rotations
+            reach = [np.abs(asm.node_rel[asm.node_kind == 1]).max(initial=0.0)]
+            reach += [np.abs(base.rcg).max(initial=0.0), np.abs(base.rcb).max(initial=0.0)]
+            length_scale = max(1.0, *reach)
+            weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
+            for k in range(self.nb):
+                weights[6 * k + 3:6 * k + 6] = 1.0 / length_scale
+            weights.flags.writeable = False
+            # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
+            # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
+            bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
+            pinned = np.array([b.pinned for b in bodies], bool)
+            spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
+            const = (length_scale, max(1.0, 0.05 * float(asm.sub_L.max())), weights, pinned, spin,
+                     float(np.abs(asm.node_force).max(initial=0.0)))
+            asm._problem_constants = const
+        self.length_scale, self.step_len, self.weights, self.pinned, spin, asm._force_max = const
+        self.spin = list(spin)
+        self.any_held = bool(self.pinned.any()) or any(a.size for a in self.spin)
+        self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
-        self.weights = np.ones(6 * self.nb + 3 * self.nfree)     # 1 / length scale on the moments
-        for k in range(self.nb):
-            self.weights[6 * k + 3:6 * k + 6] = 1.0 / self.length_scale
-        # held DOFs: a pinned body's translations; rotations about an axis that no load has an arm
-        # about (every point, the centre of gravity and of buoyancy on it: a rod's spin), indeterminate
-        bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
-        self.pinned = np.array([b.pinned for b in bodies], bool)
-        self.spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
         self.spin_k = 1.0         # stiffness the indeterminate rotations are held with [N m/rad], set per evaluation
 
     def initial_state(self, initial: SystemEquilibrium | None) -> State:
@@ -336,6 +349,13 @@ class _Problem:
         j = np.flatnonzero(st.grounded[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
+    def point_dofs(self, st: State) -> np.ndarray:
+        """DOF indices of the free points that are not held on the seabed (condensed out)."""
+        allp = np.arange(6 * self.nb, 6 * self.nb + 3 * self.nfree)
+        if not self.nfree or not st.grounded.any():
+            return allp
+        return np.setdiff1d(allp, self._z_dof(st))
+
     def eval(self, st: State, load: float) -> Evaluation:
         ev = evaluate(self.asm, self.bd, st, load_factor=load, warm=self.warm, max_strain=self.max_strain)
         self.warm = (ev.cat.H_fairlead, ev.cat.V_fairlead)
@@ -352,6 +372,7 @@ class _Problem:
                 J[zd, :] = 0.0
                 J[:, zd] = 0.0
                 J[zd, zd] = 1.0
+        ev.scaled = ev.residual * self.weights / ev.scale
         return ev
 
     def _hold(self, st: State, ev: Evaluation) -> None:
@@ -359,6 +380,8 @@ class _Problem:
         ``ev.reaction``) and give the indeterminate rotations a stiffness in the Newton Jacobian only
         (their moment is zero whatever the rotation, so the step has no component along them)."""
         ev.reaction = np.zeros((self.nb, 3))
+        if not self.any_held:
+            return
         for k in np.flatnonzero(self.pinned):
             t = slice(6 * k, 6 * k + 3)
             ev.reaction[k] = -ev.residual[t]
@@ -391,18 +414,9 @@ class _Problem:
         return float(np.abs(self._scaled(ev)).max(initial=0.0))
 
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
-        nb = self.nb
-        X, R, P = st.X.copy(), st.R.copy(), st.P.copy()
-        for k in range(nb):
-            X[k] += alpha * dq[6 * k:6 * k + 3]
-            R[k] = _rotvec(alpha * dq[6 * k + 3:6 * k + 6]) @ R[k]
-        fn = self.asm.free_nodes
-        P[fn] += alpha * dq[6 * nb:].reshape(-1, 3)
+        X, R, P = np.empty_like(st.X), np.empty_like(st.R), np.empty_like(st.P)
         grounded = st.grounded.copy()
-        if self.asm.depth is not None:
-            low = P[fn, 2] < -self.asm.depth
-            P[fn[low], 2] = -self.asm.depth
-            grounded[fn[low]] = True
+        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded)
         return State(X, R, P, grounded)
 
     def newton(self, st: State, load: float, ev: Evaluation | None = None):
@@ -419,9 +433,13 @@ class _Problem:
                 return st, ev, True
             self.iterations += 1
             try:
-                dq = np.linalg.solve(ev.jac, -ev.residual)
+                dq = _kern.solve(ev.jac, -ev.residual)
             except np.linalg.LinAlgError:
-                dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
+                # singular or not finite: numpy's own solve, least squares if singular
+                try:
+                    dq = np.linalg.solve(ev.jac, -ev.residual)
+                except np.linalg.LinAlgError:
+                    dq = np.linalg.lstsq(ev.jac, -ev.residual, rcond=None)[0]
             if not np.all(np.isfinite(dq)):
                 return st, ev, False
             if np.abs(dq).max(initial=0.0) <= 1e-12 * self.step_len:
@@ -429,7 +447,7 @@ class _Problem:
                 # exactly at its length, slack, carrying a weight): move along the net forces instead
                 g = self._scaled(ev)
                 dq = g / np.abs(g).max() * self.step_len
-            merit = np.linalg.norm(self._scaled(ev))
+            merit = _norm(self._scaled(ev))
             accepted = fallback = None
             # the step clipped per object (translations to step_len, rotations to 0.2 rad); kept
             # if the residual norm grows less than GROWTH-fold (a change of regime - a line lifting
@@ -449,7 +467,7 @@ class _Problem:
                     continue
                 if fallback is None:
                     fallback = (trial, ev2)
-                m2 = np.linalg.norm(self._scaled(ev2))
+                m2 = _norm(self._scaled(ev2))
                 if m2 < (_GROWTH if trial_n < 3 else 1.0) * merit:
                     accepted = (trial, ev2)
                     stalls = stalls + 1 if m2 >= merit else 0
@@ -467,32 +485,17 @@ class _Problem:
 
     def uniform_limit(self, dq):
         """Factor that brings the largest translation to step_len and rotation to 0.2 rad."""
-        nb = self.nb
-        lim = 1.0
-        for k in range(nb):
-            lim = min(lim, self.step_len / max(np.abs(dq[6 * k:6 * k + 3]).max(), 1e-300),
-                      0.2 / max(np.abs(dq[6 * k + 3:6 * k + 6]).max(), 1e-300))
-        if self.nfree:
-            lim = min(lim, self.step_len / max(np.abs(dq[6 * nb:]).max(), 1e-300))
-        return lim
+        return float(_kern.uniform_limit(dq, self.nb, float(self.step_len)))
 
     def clip(self, dq):
         """Step limits per object: translations to step_len, rotations to 0.2 rad."""
-        dq = dq.copy()
-        nb = self.nb
-        for k in range(nb):
-            for sl, lim in ((slice(6 * k, 6 * k + 3), self.step_len), (slice(6 * k + 3, 6 * k + 6), 0.2)):
-                n = np.abs(dq[sl]).max()
-                if n > lim:
-                    dq[sl] *= lim / n
-        d = dq[6 * nb:].reshape(-1, 3)
-        n = np.abs(d).max(axis=1, initial=0.0)
-        big = n > self.step_len
-        d[big] *= (self.step_len / n[big])[:, None]
-        dq[6 * nb:] = d.ravel()
-        return dq
+        out = np.empty_like(dq)
+        _kern.clip_step(dq, self.nb, float(self.step_len), out)
+        return out
 
     def _scaled(self, ev):
+        if ev.scaled is not None:
+            return ev.scaled
         return ev.residual * self.weights / ev.scale
 
 
@@ -515,6 +518,10 @@ def _assembly(system: MooringSystem, env: Environment, cuts: dict | None = None,
         _CACHE.pop(next(iter(_CACHE)))
     _CACHE[key] = (system, env, asm, base)
     return asm, base
+
+
+def _norm(v) -> float:
+    return math.sqrt(float(np.dot(v, v)))
 
 
 def _rotvec(th) -> np.ndarray:
@@ -582,7 +589,7 @@ def _condense(K: np.ndarray, nb: int, keep_points: np.ndarray) -> np.ndarray:
     b = np.arange(6 * nb)
     p = keep_points
     if p.size == 0:
-        return K[np.ix_(b, b)]
+        return K[:b.size, :b.size].copy()
     Kpp = K[np.ix_(p, p)]
     Kpb = K[np.ix_(p, b)]
     try:
@@ -598,8 +605,7 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
     if nb == 0:
         return
     hyd = ev.hydro
-    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
-    moor = _condense(-ev.jac_lines, nb, pts)
+    moor = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
     for k, axes in enumerate(prob.spin):
         if not axes.size:
             continue
@@ -615,32 +621,32 @@ def _check_stability(prob: _Problem, st: State, ev: Evaluation) -> None:
                 f"{np.abs(moment).max():.4g} N m loads it there, so the body spins without end. Suggested fix: "
                 "remove the moment about the axis from external_force, or attach a line off the axis.")
         moor[r, r] += prob.spin_k * (A @ A.T)
-    tot = np.diag(hyd) + np.diag(moor)
-    for k in range(nb):
+    dh, dm = np.diag(hyd), np.diag(moor)
+    tot = dh + dm
+    # reference per kind of DOF: the largest diagonal term of any body's translations / rotations
+    ah, am = np.abs(dh).reshape(nb, 6), np.abs(dm).reshape(nb, 6)
+    refs = [max(float(ah[:, sl].max()), float(am[:, sl].max()), 1e-300) for sl in (slice(0, 3), slice(3, 6))]
+    ref_dof = np.tile(np.repeat(refs, 3), nb)
+    weak = ~(tot > 1e-9 * ref_dof)
+    weak.reshape(nb, 6)[prob.pinned, :3] = False      # held by the pin
+    for i in np.flatnonzero(weak):
+        k, j = divmod(int(i), 6)
         name = prob.asm.body_names[prob.asm.free_bodies[k]]
-        for j in range(6):
-            i = 6 * k + j
-            if j < 3 and prob.pinned[k]:
-                continue      # held by the pin
-            same = [6 * kk + jj for kk in range(nb) for jj in ((0, 1, 2) if j < 3 else (3, 4, 5))]
-            ref = max(np.abs(np.diag(hyd)[same]).max(), np.abs(np.diag(moor)[same]).max(), 1e-300)
-            if tot[i] > 1e-9 * ref:
-                continue
-            unit = "N/m" if j < 3 else "N m/rad"
-            if hyd[i, i] < 0 and tot[i] < 0:
-                raise InputError(
-                    f"bodies.{name}: the hydrostatic stiffness in {_DOF[j]} is {hyd[i, i]:.4g} {unit} (unstable: "
-                    f"the centre of gravity is too high for the buoyancy and waterplane) and the lines add "
-                    f"only {moor[i, i]:.4g} {unit}, so the body capsizes. Suggested fix: check "
-                    "center_of_gravity, center_of_buoyancy and waterplane_moments (or hydrostatic_stiffness), "
-                    "or moor the body so the lines restore it.")
-            if abs(ev.residual[i]) > prob.tol * ev.scale * (1 if j < 3 else prob.length_scale):
-                raise InputError(
-                    f"bodies.{name}: nothing restores the body in {_DOF[j]} (hydrostatic {hyd[i, i]:.4g} {unit}, "
-                    f"lines {moor[i, i]:.4g} {unit}) but it is loaded there by {ev.residual[i]:.4g} "
-                    f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
-                    "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
-                    "point, or remove the load.")
+        unit = "N/m" if j < 3 else "N m/rad"
+        if hyd[i, i] < 0 and tot[i] < 0:
+            raise InputError(
+                f"bodies.{name}: the hydrostatic stiffness in {_DOF[j]} is {hyd[i, i]:.4g} {unit} (unstable: "
+                f"the centre of gravity is too high for the buoyancy and waterplane) and the lines add "
+                f"only {moor[i, i]:.4g} {unit}, so the body capsizes. Suggested fix: check "
+                "center_of_gravity, center_of_buoyancy and waterplane_moments (or hydrostatic_stiffness), "
+                "or moor the body so the lines restore it.")
+        if abs(ev.residual[i]) > prob.tol * ev.scale * (1 if j < 3 else prob.length_scale):
+            raise InputError(
+                f"bodies.{name}: nothing restores the body in {_DOF[j]} (hydrostatic {hyd[i, i]:.4g} {unit}, "
+                f"lines {moor[i, i]:.4g} {unit}) but it is loaded there by {ev.residual[i]:.4g} "
+                f"{'N' if j < 3 else 'N m'}, so it has no equilibrium. Suggested fix: add waterplane_area/"
+                "waterplane_moments or a hydrostatic_stiffness, attach the lines away from the reference "
+                "point, or remove the load.")
 
 
 def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None,
@@ -804,8 +810,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             "long enough (a line pulled taut) or not so slack that a point has no restoring, or raise max_iter."
             + (f" The last step refused was: {prob.refused}" if prob.refused else ""),
             iterations=prob.iterations, residual=err)
-    eq = _result(prob, st, ev)
-    eq = replace(eq, _rounds=(cuts, surf, air))
+    eq = _result(prob, st, ev, (cuts, surf, air))
     _warn_strain(eq)
     return eq
 
@@ -883,6 +888,7 @@ def _same_split(surf, old_surf, air, old_air, asm) -> bool:
     return True
 
 
+_SUSPENDED = int(CatenaryRegime.SUSPENDED)
 _SAG_ROUNDS = 3         # times lines sagging into the seabed are split and the system solved again
 
 
@@ -902,7 +908,7 @@ def _sag_cuts(prob: _Problem, st: State, ev: Evaluation) -> dict:
         return {}
     cat = ev.cat
     H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
-    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+    sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == _SUSPENDED)
     out: dict = {}
     if not sag.any():
         return out
@@ -943,7 +949,7 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
         # a mid-water sub-line sagging below its lower end (V_A < 0) must not reach the seabed,
         # which it would cross unnoticed (seabed=False): lowest point of the elastic catenary
         H, VA, w = cat.H_anchor, cat.V_anchor, asm.sub_w
-        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == CatenaryRegime.SUSPENDED)
+        sag = (~cat.seabed) & (w > 0) & (VA < 0) & (H > 0) & (cat.regime == _SUSPENDED)
         if sag.any():
             Hs, Vs, ws = H[sag], VA[sag], w[sag]
             dip = Hs / ws * (np.hypot(1.0, Vs / Hs) - 1.0) + Vs * Vs / (2.0 * ws * asm.sub_EA[sag])
@@ -956,10 +962,16 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
                               f"{-depth:g} m; the system statics lets a line lie on the seabed only from a point "
                               "on it, so this part passes through the seabed. Suggested fix: shorten the line, or "
                               "add a point on the seabed where it touches down.", SeacableWarning, stacklevel=3)
+    mbls = getattr(asm, "_breaking_loads", None)
+    if mbls is None:
+        # weakest segment's breaking load of each line (None: not given), kept with the cached assembly
+        mbls = [min((seg.line_type.breaking_load for seg in eq.system.lines[name].line.segments
+                     if seg.line_type.breaking_load is not None), default=None) for name in eq.line_names]
+        asm._breaking_loads = mbls
     for i, name in enumerate(eq.line_names):
-        line = eq.system.lines[name].line
-        mbl = min((seg.line_type.breaking_load for seg in line.segments
-                   if seg.line_type.breaking_load is not None), default=None)
+        mbl = mbls[i]
+        if mbl is None:
+            continue
         t = max(eq.end_a_tension[i], eq.end_b_tension[i])
         if mbl is not None and t > mbl:
             warnings.warn(f"lines.{name}: tension {t:.4g} N exceeds the breaking load {mbl:.4g} N of its weakest "
@@ -967,31 +979,36 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
                           SeacableWarning, stacklevel=3)
 
 
-def _result(prob: _Problem, st: State, ev: Evaluation) -> SystemEquilibrium:
+def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, {})) -> SystemEquilibrium:
     asm, system = prob.asm, prob.system
     nb = prob.nb
     P = node_positions(asm, st.X, st.R, st.P)
-    body_pos = np.array([np.asarray(system.bodies[n].position, float) for n in asm.body_names]).reshape(-1, 6)
+    given = getattr(asm, "_result_constants", None)
+    if given is None:
+        # positions given of every body, the system's point names and their nodes (kept with the cached assembly)
+        point_names = list(system.points)
+        given = (np.array([np.asarray(system.bodies[n].position, float) for n in asm.body_names]).reshape(-1, 6),
+                 point_names, np.array([asm.point_node[n] for n in point_names], int))
+        asm._result_constants = given
+    body_pos = given[0].copy()
     for k, i in enumerate(asm.free_bodies):
         body_pos[i, :3] = st.X[k]
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
-    pts = np.setdiff1d(np.arange(6 * nb, 6 * nb + 3 * prob.nfree), prob._z_dof(st))
-    K = _condense(-ev.jac_lines, nb, pts)
+    K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
     hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
-    grounded = np.zeros(len(asm.line_names))
-    np.add.at(grounded, asm.sub_line, ev.cat.grounded_length)
-    point_names = list(system.points)
+    grounded = np.bincount(asm.sub_line, weights=ev.cat.grounded_length, minlength=len(asm.line_names))
+    point_names = list(given[1])
     return SystemEquilibrium(
         system=system, environment=prob.env, body_names=list(asm.body_names), body_position=body_pos,
         free_body_names=[asm.body_names[i] for i in asm.free_bodies], point_names=point_names,
-        point_position=P[[asm.point_node[n] for n in point_names]], line_names=list(asm.line_names),
+        point_position=P[given[2]], line_names=list(asm.line_names),
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction.copy())
+        pin_reaction=ev.reaction.copy(), _rounds=rounds)
 
 
 def _continuous(angles, ref):
