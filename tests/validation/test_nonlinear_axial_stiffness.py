@@ -10,14 +10,18 @@ a linear table against the constant-EA model.
 
 from __future__ import annotations
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import seacable as sc
 from seacable.mooring import kernel as K
+from seacable.mooring.moordyn import moordyn_model
 from seacable.mooring.network import network_from_line
+from seacable.mooring.run import line_end_forces
 from seacable.mooring.solver import MooringModel, Water, simulate, static_equilibrium
 
 RHO, G = 1025.0, 9.81
@@ -159,3 +163,43 @@ def test_a_mass_on_a_nonlinear_line_oscillates_with_the_tables_tangent_stiffness
     # Newmark by (omega dt)^2 / 12 = 2e-5, the zero-crossing interpolation by ~4e-5: 1e-3 covers them and
     # is 1/80 of the 8 % of the secant EA
     assert observed == pytest.approx(period, rel=1e-3)
+
+
+DECK = Path(__file__).parent / "data" / "nonlinear_ea" / "polyester_table.txt"
+MOORDYN = json.loads((DECK.parent / "moordyn_reference.json").read_text())
+
+
+def test_a_moordyn_deck_with_an_ea_table_agrees_with_moordyn():
+    """The polyester deck of MoorDyn's tests with its EA as a 4-piece strain-tension table (slopes 150 to
+    350 MN), solved on the network path: the fairlead tension against MoorDyn 2.7.2's converged initial
+    condition (``moordyn_reference.json``, IC residual 0.006 m/s^2, written as the live test below does).
+
+    None of the vendored decks can serve: the only ones with a table (syrope/*) are refused by MoorDyn
+    2.7.2 and by MoorPy. The constant EA the network used before (the table's secant at its end,
+    333 MN) gives 1.52 MN, 25 % above MoorDyn's 1.22 MN.
+    """
+    model = moordyn_model(DECK)
+    assert model.network.element_tension_strain[0][2] == (0.004, 9.0e5)
+    st = static_equilibrium(model)
+    fair = np.linalg.norm(line_end_forces(model, st.position)[1])
+    ref = MOORDYN["lines"]["1"]["fair_ten"]
+    assert MOORDYN["ic_converged"]
+    # 1 %: the issue's agreement target for decks; the constant-EA polyester deck agrees to 0.003 %, this
+    # one to 0.3 % (MoorDyn's relaxation stops at its own threshold: its two ends' horizontal forces still
+    # differ by 0.02 %, and the lumped models place the seabed touchdown differently)
+    assert fair == pytest.approx(ref, rel=0.01)
+
+
+def test_moordyn_live_reads_the_same_table():
+    """The cached MoorDyn numbers are MoorDyn's: run MoorDyn 2.7.2 on the deck here (about 20 s)."""
+    pytest.importorskip("moordyn")
+    import subprocess
+    import sys
+
+    script = Path(__file__).parent / "data" / "moordyn_decks" / "make_reference.py"
+    code = (f"import sys; sys.path.insert(0, {str(script.parent)!r}); import make_reference as m, json; "
+            f"from pathlib import Path; print('OUT' + json.dumps(m.run(Path({str(DECK)!r}))))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    live = json.loads(next(ln for ln in proc.stdout.splitlines() if ln.startswith("OUT"))[3:])
+    # the same code and input: MoorDyn is deterministic, 1e-6 allows for a different build's round-off
+    assert live["lines"]["1"]["fair_ten"] == pytest.approx(MOORDYN["lines"]["1"]["fair_ten"], rel=1e-6)
