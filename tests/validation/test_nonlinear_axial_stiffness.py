@@ -199,7 +199,8 @@ def test_moordyn_live_reads_the_same_table():
     script = Path(__file__).parent / "data" / "moordyn_decks" / "make_reference.py"
     code = (f"import sys; sys.path.insert(0, {str(script.parent)!r}); import make_reference as m, json; "
             f"from pathlib import Path; print('OUT' + json.dumps(m.run(Path({str(DECK)!r}))))")
-    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    proc = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
+                          timeout=300)
     live = json.loads(next(ln for ln in proc.stdout.splitlines() if ln.startswith("OUT"))[3:])
     # the same code and input: MoorDyn is deterministic, 1e-6 allows for a different build's round-off
     assert live["lines"]["1"]["fair_ten"] == pytest.approx(MOORDYN["lines"]["1"]["fair_ten"], rel=1e-6)

@@ -114,7 +114,7 @@ def _drag_tangent(un, cd, out, coef):
 
 @njit(cache=True)
 def table_tension(eps, lo, hi, ts_x, ts_y):
-    """Tension [N] and its slope dT/d(eps) [N] of a strain-tension table ``ts_x/ts_y[lo:hi]`` at strain ``eps``.
+    """Tension [N] and slope dT/d(eps) [N] of the strain-tension table ``ts_x/ts_y[lo:hi]`` at ``eps``.
 
     MoorDyn's convention (``Line::getNonlinearEA`` with ``moordyn::interp``): linear between the
     points; held at the first point's tension below its strain and at the last point's tension
@@ -134,7 +134,8 @@ def table_tension(eps, lo, hi, ts_x, ts_y):
 
 @njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves,
+          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth,
+          cur_speed, with_waves,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
@@ -199,15 +200,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 F[a, r] += T * tv[r]
                 F[b, r] -= T * tv[r]
             if jac and T > 0.0:
+                # axial stiffness plus damper: the table's slope, or EA (the same operations as before tables)
+                kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        if tab:
-                            blk[r, c] = (kel + cc * cdamp[e] * dpsi + cdamp[e] * ldot / L * ddpsi) / L * tt \
-                                + T / l * (eye[r, c] - tt)
-                        else:
-                            blk[r, c] = ((EA[e] + cc * cdamp[e]) * dpsi + cdamp[e] * ldot / L * ddpsi) / L * tt \
-                                + T / l * (eye[r, c] - tt)
+                        blk[r, c] = (kax + cdamp[e] * ldot / L * ddpsi) / L * tt + T / l * (eye[r, c] - tt)
                 fa, fb = fidx[a], fidx[b]
                 _add_block(band, bw, fa, fa, 1.0, blk)
                 _add_block(band, bw, fb, fb, 1.0, blk)
@@ -417,7 +415,8 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
 
 @njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
-                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, nfree, bw,
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx,
+                  nfree, bw,
                   env, cur_depth,
                   cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
     """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
@@ -463,7 +462,8 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension,
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed,
+                  with_waves, F, M, tension,
                   band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
             scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0)
@@ -507,7 +507,8 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter,
+                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, nfree, bw, env, cur_depth, cur_speed,
+                 tol, max_iter,
                  max_step, F, M, tension,
                  stats):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
@@ -526,7 +527,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     R0 = np.zeros(nd)
     Xt = X.copy()
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension,
+          band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
     # weight moves a fraction of an element, and decreasing as Newton takes over
@@ -550,7 +552,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False,
+                  F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
         big = 0.0
@@ -564,7 +567,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
+              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F,
+              M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
@@ -575,7 +579,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M,
+              tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res
     return False
