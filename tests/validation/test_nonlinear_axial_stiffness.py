@@ -204,3 +204,23 @@ def test_moordyn_live_reads_the_same_table():
     live = json.loads(next(ln for ln in proc.stdout.splitlines() if ln.startswith("OUT"))[3:])
     # the same code and input: MoorDyn is deterministic, 1e-6 allows for a different build's round-off
     assert live["lines"]["1"]["fair_ten"] == pytest.approx(MOORDYN["lines"]["1"]["fair_ten"], rel=1e-6)
+
+
+def test_the_system_model_hangs_the_weight_on_the_table_too():
+    """The same hanging line as a mooring system (a fixed point, a free point with the 50 kN weight as a
+    point mass of 50e3 / g kg with no volume), solved by the coupled system kernel: the closed-form stretch.
+    """
+    from seacable.environment import Environment
+    from seacable.system.dynamics import build_system_fe, static_system
+    from seacable.system.model import MooringSystem
+
+    system = MooringSystem(
+        points={"top": {"kind": "fixed", "position": (0.0, 0.0, TOP)},
+                "end": {"kind": "free", "position": (0.0, 0.0, TOP - LENGTH), "mass": W_END / G}},
+        lines={"l": {"line": sc.Line.single(_line_type(BILINEAR), LENGTH), "end_a": "top", "end_b": "end",
+                     "n_elements": N_EL}})
+    fe = build_system_fe(system, Environment(depth=1000.0, water_density=RHO, gravity=G))
+    st = static_system(fe, tol=1e-12)
+    end = fe.model.network.line_nodes[0][-1]
+    # as above: the discrete model is exact, the solver's tolerance and round-off are below 1e-9 m
+    assert TOP - st.position[end, 2] - LENGTH == pytest.approx(_closed_form_stretch(), rel=1e-6)

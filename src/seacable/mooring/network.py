@@ -50,7 +50,9 @@ class Network:
     point_drag_area : (n,) C_D A of attachments. [m^2]
     elements : (e, 2) node indices of each element, end A first.
     length : (e,) unstretched length. [m]
-    axial_stiffness : (e,) EA. [N]
+    axial_stiffness : (e,) EA; for an element with a strain-tension table (``element_tension_strain``)
+        a constant stand-in (the line type's EA, else the table's secant at its end) that sets only the
+        slack rounding band, the damping and the solver's tolerances: its tension is the table's. [N]
     axial_damping : (e,) internal damping coefficient c, force c (dl/dt) / L. [N s]
     mass_per_length, weight_per_length : (e,) mass in air [kg/m], weight in water [N/m].
     diameter : (e,) hydrodynamic (volume-equivalent) diameter. [m]
