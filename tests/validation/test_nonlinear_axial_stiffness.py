@@ -224,3 +224,24 @@ def test_the_system_model_hangs_the_weight_on_the_table_too():
     end = fe.model.network.line_nodes[0][-1]
     # as above: the discrete model is exact, the solver's tolerance and round-off are below 1e-9 m
     assert TOP - st.position[end, 2] - LENGTH == pytest.approx(_closed_form_stretch(), rel=1e-6)
+
+
+@pytest.mark.parametrize("strain, expected", [
+    (0.03, T1 + EA2 * 0.02),  # inside: linear between the points (475 kN)
+    (EPS1, T1),  # on the kink
+    (0.08, BILINEAR[-1][1]),  # beyond the table: held at its last tension (MoorDyn's interp clamps)
+    (-0.01, 0.0),  # compression: no tension
+])
+def test_an_element_follows_moordyns_table_convention(strain, expected):
+    """One weightless element between a fixed and a held node, stretched to ``strain``: its tension is the
+    table's value by MoorDyn's convention (``Line::getNonlinearEA``: interpolation, clamped beyond the
+    last point, zero in compression)."""
+    lt = _line_type(BILINEAR, weight=0.0)
+    net = network_from_line(sc.Line.single(lt, 10.0), (0, 0, -50.0), (10.0 * (1 + strain), 0, -50.0),
+                            water_density=RHO, gravity=G, n_elements=1)
+    model = MooringModel(net, Water(depth=None, density=RHO, gravity=G))
+    X = net.position
+    tension = model.evaluate(X, 0 * X, 0 * X)[2][0]
+    # the slack rounding acts only within |strain| < 1e-8 here (a massless-looking element: 15 kg/m), and
+    # round-off of l / L - 1 is ~1e-16: 1e-9 relative (1e-3 N absolute at zero) is far below any table error
+    assert tension == pytest.approx(expected, rel=1e-9, abs=1e-3)
