@@ -5,6 +5,9 @@ with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
 
     eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
 
+(an element whose line type has a strain-tension table takes ``T(eps)`` from it instead of ``EA eps``,
+piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent)
+
 (the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight)
     f_a = T t,  f_b = -T t,
     K_e = EA / L t t^T + T / l (I - t t^T)          (paper 004 eq. A6-A10: linear plus geometric)
@@ -43,7 +46,7 @@ from numba import njit
 
 from ..waves import airy_kinematics
 
-__all__ = ["ENV_SIZE", "band_solve", "loads", "newmark_steps", "static_solve"]
+__all__ = ["ENV_SIZE", "band_solve", "loads", "newmark_steps", "static_solve", "table_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -110,8 +113,29 @@ def _drag_tangent(un, cd, out, coef):
 
 
 @njit(cache=True)
+def table_tension(eps, lo, hi, ts_x, ts_y):
+    """Tension [N] and slope dT/d(eps) [N] of the strain-tension table ``ts_x/ts_y[lo:hi]`` at ``eps``.
+
+    MoorDyn's convention (``Line::getNonlinearEA`` with ``moordyn::interp``): linear between the
+    points; held at the first point's tension below its strain and at the last point's tension
+    beyond the table (slope 0 there); a breakpoint takes the slope of the piece above it.
+    Compression (eps < 0) is handled by the caller (no tension).
+    """
+    if eps <= ts_x[lo]:
+        return ts_y[lo], 0.0
+    if eps >= ts_x[hi - 1]:
+        return ts_y[hi - 1], 0.0
+    j = lo + 1
+    while ts_x[j] <= eps:
+        j += 1
+    k = (ts_y[j] - ts_y[j - 1]) / (ts_x[j] - ts_x[j - 1])
+    return ts_y[j - 1] + k * (eps - ts_x[j - 1]), k
+
+
+@njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves,
+          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth,
+          cur_speed, with_waves,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
@@ -154,20 +178,34 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
         else:
             psi, dpsi, ddpsi = 0.0, 0.0, 0.0
+        tab = ts_hi[e] > ts_lo[e]
+        tel = kel = 0.0
+        if tab and dpsi > 0.0:
+            # a strain-tension table: T(eps) and its slope beyond the band; within it the same quadratic
+            # rounding, scaled to the table's secant at eps = sband (continuous tension)
+            if eps >= sband:
+                tel, kel = table_tension(eps, ts_lo[e], ts_hi[e], ts_x, ts_y)
+            else:
+                tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
+                tel, kel = tb / sband * psi, tb / sband * dpsi
         if dpsi > 0.0:
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
-            T = EA[e] * psi + cdamp[e] * ldot / L * dpsi
+            if tab:
+                T = tel + cdamp[e] * ldot / L * dpsi
+            else:
+                T = EA[e] * psi + cdamp[e] * ldot / L * dpsi
             T = max(T, 0.0)
             tension[e] = T
             for r in range(3):
                 F[a, r] += T * tv[r]
                 F[b, r] -= T * tv[r]
             if jac and T > 0.0:
+                # axial stiffness plus damper: the table's slope, or EA (the same operations as before tables)
+                kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        blk[r, c] = ((EA[e] + cc * cdamp[e]) * dpsi + cdamp[e] * ldot / L * ddpsi) / L * tt \
-                            + T / l * (eye[r, c] - tt)
+                        blk[r, c] = (kax + cdamp[e] * ldot / L * ddpsi) / L * tt + T / l * (eye[r, c] - tt)
                 fa, fb = fidx[a], fidx[b]
                 _add_block(band, bw, fa, fa, 1.0, blk)
                 _add_block(band, bw, fb, fb, 1.0, blk)
@@ -377,7 +415,9 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
 
 @njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
-                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth,
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx,
+                  nfree, bw,
+                  env, cur_depth,
                   cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
     """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
     positions, velocities and accelerations at the end of step k.
@@ -422,7 +462,9 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, c0, c1)
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed,
+                  with_waves, F, M, tension,
+                  band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
             scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0)
             stats[0] += 1
@@ -465,7 +507,9 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-                 bedc, buoy, pbuoy, fidx, nfree, bw, env, cur_depth, cur_speed, tol, max_iter, max_step, F, M, tension,
+                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, nfree, bw, env, cur_depth, cur_speed,
+                 tol, max_iter,
+                 max_step, F, M, tension,
                  stats):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
 
@@ -483,7 +527,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     R0 = np.zeros(nd)
     Xt = X.copy()
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension,
+          band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
     # weight moves a fraction of an element, and decreasing as Newton takes over
@@ -507,7 +552,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False,
+                  F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
         big = 0.0
@@ -521,7 +567,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, empty, bw, 0.0, 0.0)
+              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F,
+              M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
@@ -532,7 +579,8 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, buoy, pbuoy, fidx, env, cur_depth, cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M,
+              tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res
     return False

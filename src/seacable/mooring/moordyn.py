@@ -66,6 +66,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     pw = (pm - rho * pv) * g
     arc = [np.nan] * n_pts
     elements, props, element_line, line_nodes = [], [], [], []
+    tables = []  # per element: its line type's strain-tension table (MoorDyn's nonlinear EA) or None
     bent = set()
     for li, line in enumerate(md.lines):
         lt = md.line_types[line.line_type]
@@ -95,15 +96,14 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
             props.append((seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
                           lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential))
             element_line.append(li)
+            tables.append(lt.tension_strain)
     if bent:
         warnings.warn(f"line type(s) {', '.join(sorted(bent))} have bending stiffness EI > 0; seacable's "
                       "mooring model is a truss and ignores it.", SeacableWarning, stacklevel=2)
-    special = {lt.name: ("viscoelastic: its static EA_s is used" if lt.dynamic_stiffness is not None
-                         else "a nonlinear strain-tension table: its secant EA at the table's end is used")
-               for lt in md.line_types.values() if lt.dynamic_stiffness is not None or lt.tension_strain is not None}
-    for name, why in special.items():
-        warnings.warn(f"line type {name} is {why} (the line network takes a constant EA).", SeacableWarning,
-                      stacklevel=2)
+    special = [lt.name for lt in md.line_types.values() if lt.dynamic_stiffness is not None]
+    for name in special:
+        warnings.warn(f"line type {name} is viscoelastic: its static EA_s (or strain-tension table) is used "
+                      "(the line network has no dynamic stiffness).", SeacableWarning, stacklevel=2)
     n_nodes = len(pos)
     extra = n_nodes - n_pts
     P = np.array(props, float)
@@ -118,6 +118,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
                   element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes),
                   line_names=tuple(f"line {ln.id}" for ln in md.lines), arc_length=np.array(arc, float),
+                  element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
                                                                if p.attachment == "vessel"))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
@@ -138,7 +139,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                                                   "weight_per_length", "diameter", "cdn", "cdt", "can", "cat")})
     view = Network(**sub, elements=remap[net.elements[els]], element_line=np.zeros(len(els), np.int64),
                    line_nodes=(np.arange(len(nodes)),), line_names=(net.line_names[li],),
-                   n_channels=net.n_channels, channel_names=net.channel_names)
+                   n_channels=net.n_channels, channel_names=net.channel_names,
+                   element_tension_strain=None if net.element_tension_strain is None
+                   else tuple(net.element_tension_strain[e] for e in els))
     return MooringModel(view, model.water)
 
 

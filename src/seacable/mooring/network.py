@@ -29,6 +29,7 @@ __all__ = [
     "network_from_line",
     "node_arc_lengths",
     "slack_positions",
+    "table_secant",
 ]
 
 FREE, FIXED, PRESCRIBED = 0, 1, 2
@@ -49,7 +50,9 @@ class Network:
     point_drag_area : (n,) C_D A of attachments. [m^2]
     elements : (e, 2) node indices of each element, end A first.
     length : (e,) unstretched length. [m]
-    axial_stiffness : (e,) EA. [N]
+    axial_stiffness : (e,) EA; for an element with a strain-tension table (``element_tension_strain``)
+        a constant stand-in (the line type's EA, else the table's secant at its end) that sets only the
+        slack rounding band, the damping and the solver's tolerances: its tension is the table's. [N]
     axial_damping : (e,) internal damping coefficient c, force c (dl/dt) / L. [N s]
     mass_per_length, weight_per_length : (e,) mass in air [kg/m], weight in water [N/m].
     diameter : (e,) hydrodynamic (volume-equivalent) diameter. [m]
@@ -61,6 +64,8 @@ class Network:
         shared by several lines). [m]
     breaking_load : (e,) minimum breaking load of each element's line type, NaN if unknown; None when
         none is known. [N]
+    element_tension_strain : per element, the line type's strain-tension table (``LineType.tension_strain``,
+        ``(strain, tension)`` pairs) or None for a linear EA; None when no element has one. [-, N]
     """
 
     position: np.ndarray
@@ -89,6 +94,30 @@ class Network:
     n_channels: int = 1
     channel_names: tuple[str, ...] = field(default=("fairlead",))
     breaking_load: np.ndarray | None = None
+    element_tension_strain: tuple | None = None
+
+    def tension_strain_arrays(self):
+        """The strain-tension tables as the kernel takes them: ``(lo, hi, strain, tension)``.
+
+        Element ``e`` has the table ``strain[lo[e]:hi[e]]``, ``tension[lo[e]:hi[e]]`` when
+        ``hi[e] > lo[e]``, and a constant EA otherwise; elements of one table share its points. [-], [N]
+        """
+        n = self.n_elements
+        lo, hi = np.zeros(n, np.int64), np.zeros(n, np.int64)
+        xs, ys, where = [], [], {}
+        for e, table in enumerate(self.element_tension_strain or ()):
+            if table is None:
+                continue
+            key = tuple(map(tuple, table))
+            if key not in where:
+                start = sum(len(x) for x in xs)
+                where[key] = (start, start + len(key))
+                xs.append([p[0] for p in key])
+                ys.append([p[1] for p in key])
+            lo[e], hi[e] = where[key]
+        if not xs:
+            return lo, hi, np.zeros(1), np.zeros(1)
+        return lo, hi, np.concatenate(xs).astype(float), np.concatenate(ys).astype(float)
 
     @property
     def n_nodes(self) -> int:
@@ -116,6 +145,12 @@ class Network:
         moved = np.flatnonzero(self.channel >= 0)
         out[self.channel[moved]] = X[moved]
         return out
+
+
+def table_secant(table) -> float:
+    """EA of a strain-tension table where one is needed as a constant: its secant to the last point. [N]"""
+    strain, tension = table[-1]
+    return tension / strain
 
 
 def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffness_proportional=0.0):
@@ -261,11 +296,13 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
     seg_of = np.clip(np.searchsorted(ends, mid, side="right") - 1, 0, len(line.segments) - 1)
     types = [line.segments[k].line_type for k in seg_of]
     for k, seg in enumerate(line.segments):
-        if seg.line_type.axial_stiffness is None:
+        if seg.line_type.axial_stiffness is None and seg.line_type.tension_strain is None:
             raise InputError(f"line.segments[{k}] has no axial_stiffness: the mooring finite-element model needs "
                              "EA for every line type. Suggested fix: add 'axial_stiffness' in N, e.g. 3.8e8.")
     length = np.diff(s)
-    ea = np.array([t.axial_stiffness for t in types], float)
+    ea = np.array([t.axial_stiffness if t.axial_stiffness is not None else table_secant(t.tension_strain)
+                   for t in types], float)
+    tables = tuple(t.tension_strain for t in types) if any(t.tension_strain for t in types) else None
     m = np.array([t.mass_per_length for t in types], float)
     a = np.asarray(anchor, float)
     b = np.asarray(fairlead, float)
@@ -301,4 +338,4 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
-        channel_names=("fairlead",) if end_b == "prescribed" else ())
+        channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables)

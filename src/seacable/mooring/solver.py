@@ -133,12 +133,14 @@ class MooringModel:
         self.env = self.water.env_vector(max(ramp, 1e-9))
         self.cur_depth = np.asarray(self.water.current_depths, float)
         self.cur_speed = np.asarray(self.water.current_speeds, float)
+        # strain-tension tables (lo, hi, strain, tension) of the elements that have one
+        self.tension_strain = net.tension_strain_arrays()
 
     def element_args(self):
         n = self.network
         return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
                 n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
-                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy)
+                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy, *self.tension_strain)
 
     def evaluate(self, X, V, A, t=0.0, waves=True):
         """Node forces F (without inertia and supports), masses M and element tensions at a state.

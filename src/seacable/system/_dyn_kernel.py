@@ -299,14 +299,16 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
     (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
-    (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy) = args
+    (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
+     ts_lo, ts_hi, ts_x, ts_y) = args
     n = X.shape[0]
     nd = 3 * nfree
     nb = q.shape[0]
     rho, g = env[0], env[1]
     band[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
-          buoy, pbuoy, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw, cm, cc)
+          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw,
+          cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]

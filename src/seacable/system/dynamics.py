@@ -258,7 +258,7 @@ class SystemFE:
         net = m.network
         args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
                 net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
-                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy)
+                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain)
         return args
 
     def body_args(self):
@@ -346,6 +346,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
               "cdn", "cdt", "can", "cat", "breaking_load")
     extra = {f: [] for f in ("point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}
     fairlead_end = []
+    tables = []  # per element: its line type's strain-tension table or None
     line_names = tuple(system.lines)
     for li, (lname, sl) in enumerate(system.lines.items()):
         ends = [sl.end_a, sl.end_b]
@@ -416,6 +417,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         el0 = len(elements)
         elements.extend(ids[sub.elements])
         props.append(np.column_stack([getattr(sub, f) for f in fields]))
+        tables.extend(sub.element_tension_strain or [None] * (n - 1))
         element_line.extend([li] * (n - 1))
         line_nodes.append(ids)
         line_elements.append(np.arange(el0, el0 + n - 1))
@@ -444,7 +446,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes), line_names=line_names,
         arc_length=np.array(arc, float), n_channels=len(channel_source),
         channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
-        breaking_load=P[:, 10])
+        breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None)
     model = MooringModel(net, _water(environment, analysis))
     nb = len(free_bodies)
     bpar = np.zeros((nb, DK.B_SIZE))
