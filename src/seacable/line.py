@@ -102,6 +102,9 @@ class LineType(Model):
                 raise ValueError(f"tension_strain[{k}] = ({e:g}, {t:g} N) must have a larger strain and no smaller "
                                  f"tension than the pair before, ({table[k - 1][0]:g}, {table[k - 1][1]:g} N). "
                                  "Suggested fix: sort the pairs by strain; softening curves are not supported.")
+        if table[-1][1] <= 0:
+            raise ValueError(f"must end at a tension > 0 N, got {table[-1][1]:g} N: a line that carries no tension "
+                             "at any strain of the table holds nothing. Suggested fix: give the tensions in N.")
         return table
 
     @field_validator("dynamic_axial_stiffness")

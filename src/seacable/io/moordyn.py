@@ -1923,8 +1923,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                 tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic)
     if tabled:
         warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
-                      "kept in LineType.tension_strain, but seacable's system statics use a constant EA, the "
-                      "table's secant at its last point (for a Syrope rope the table is its original working "
+                      "kept in LineType.tension_strain and the finite-element lines (system_dynamic) use it, but the "
+                      "catenary statics (system_static) use a constant EA, the table's secant at its last point (for a Syrope rope the table is its original working "
                       "curve; the working curve after the load history of SYROPE IC is not modelled).",
                       SeacableWarning, stacklevel=2)
     lines = {}
