@@ -249,6 +249,40 @@ def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: fl
 MotionFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 
+def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix):
+    """Advance the state one output interval: ``sub`` steps of ``h`` from ``t0``, each failed step halved.
+
+    ``steps(t, dt, px, pv, pa)`` runs the compiled time loop over the motion channels sampled at the
+    steps' end times, filling ``stats`` (iterations, residual, tolerance), and returns how many steps
+    converged; from the first that did not, the rest of the interval is redone at half the step, up to
+    ``max_halvings`` times. Returns (steps taken, Newton iterations).
+
+    Raises
+    ------
+    ConvergenceError
+        A step that does not converge at the smallest step, with the time, step and residual.
+    """
+    done, level, taken, spent = 0, 0, 0, 0
+    while done < sub * 2 ** level:
+        dtk = h / 2 ** level
+        m = sub * 2 ** level - done
+        px, pv, pa = channels(t0 + dtk * (done + np.arange(1, m + 1)))
+        stats[:] = 0.0
+        got = steps(t0 + done * dtk, dtk, px, pv, pa)
+        spent += int(stats[0])
+        taken += got
+        done += got
+        if got < m:
+            if level == max_halvings:
+                raise ConvergenceError(
+                    f"the {what} time step did not converge at t = {t0 + done * dtk:.6g} s with dt = {dtk:.3g} s "
+                    f"after {max_halvings} halvings: force residual {stats[1]:.3g} N (tolerance {stats[2]:.3g} N). "
+                    f"Suggested fix: {fix}.", time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+            done *= 2
+            level += 1
+    return taken, spent
+
+
 @dataclass(frozen=True)
 class MooringRun:
     """Stored states of a time-domain run (``output`` times)."""
@@ -317,30 +351,16 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     start = _time.perf_counter()
     try:
         for k in range(n_out):
-            t0 = k * output_interval
-            done, level = 0, 0
-            while done < sub * 2 ** level:
-                dtk = h / 2 ** level
-                m = sub * 2 ** level - done
-                tt = t0 + dtk * (done + np.arange(1, m + 1))
-                px, pv, pa = channels(tt)
-                stats[:] = 0.0
-                got = K.newmark_steps(X, V, A, t0 + done * dtk, dtk, px, pv, pa, net.channel, *model.element_args(),
-                                      model.fidx, model.nfree, model.bw, model.env, model.cur_depth,
-                                      model.cur_speed, True, beta, gamma, tol, max_iter, F, M, tension, stats)
-                iterations += int(stats[0])
-                steps += got
-                done += got
-                if got < m:
-                    if level == max_halvings:
-                        raise ConvergenceError(
-                            f"the mooring time step did not converge at t = {t0 + done * dtk:.6g} s with "
-                            f"dt = {dtk:.3g} s after {max_halvings} halvings: force residual {stats[1]:.3g} N "
-                            f"(tolerance {stats[2]:.3g} N). Suggested fix: smaller time_step, more "
-                            "elements, or check the motion for a jump.",
-                            time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
-                    done *= 2
-                    level += 1
+            def newmark(t, dtk, px, pv, pa):
+                return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
+                                       model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
+                                       beta, gamma, tol, max_iter, F, M, tension, stats)
+
+            done, spent = advance_interval(k * output_interval, h, sub, channels, newmark, stats, max_halvings,
+                                           max_iter, "mooring", "smaller time_step, more elements, or check the "
+                                                                "motion for a jump")
+            steps += done
+            iterations += spent
             times.append((k + 1) * output_interval)
             pos.append(X.copy())
             vel.append(V.copy())

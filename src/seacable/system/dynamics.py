@@ -62,7 +62,7 @@ from ..case import SeabedContact
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..mooring.motion import Motion, PlatformMotion, rotation_matrix
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
-from ..mooring.solver import MooringModel, Water
+from ..mooring.solver import MooringModel, Water, advance_interval
 from ..results import make_dataset, var
 from . import _dyn_kernel as DK
 from .model import MooringSystem
@@ -660,32 +660,18 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     begin = _time.perf_counter()
     try:
         for k in range(n_out):
-            t0 = k * output_interval
-            done, level = 0, 0
-            while done < sub * 2 ** level:
-                dtk = h / 2 ** level
-                msteps = sub * 2 ** level - done
-                tt = t0 + dtk * (done + np.arange(1, msteps + 1))
-                px, pv, pa = channels(tt)
-                stats[:] = 0.0
-                got = DK.coupled_steps(X, V, A, q, qd, qdd, t0 + done * dtk, dtk, px, pv, pa, net.channel, args, m.weight,
-                                       m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
-                                       fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
-                                       fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma, tol,
-                                       max_iter, F, M, tension, stats)
-                iterations += int(stats[0])
-                steps += got
-                done += got
-                if got < msteps:
-                    if level == max_halvings:
-                        raise ConvergenceError(
-                            f"the system time step did not converge at t = {t0 + done * dtk:.6g} s with dt = "
-                            f"{dtk:.3g} s after {max_halvings} halvings: residual {stats[1]:.3g} N (tolerance "
-                            f"{stats[2]:.3g} N). Suggested fix: smaller time_step, more elements, or check the "
-                            "motions and external forces for a jump.",
-                            time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
-                    done *= 2
-                    level += 1
+            def coupled(t, dtk, px, pv, pa):
+                return DK.coupled_steps(X, V, A, q, qd, qdd, t, dtk, px, pv, pa, net.channel, args, m.weight, m.fidx,
+                                        m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
+                                        fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
+                                        fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma,
+                                        tol, max_iter, F, M, tension, stats)
+
+            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats, max_halvings,
+                                           max_iter, "system", "smaller time_step, more elements, or check the "
+                                                               "motions and external forces for a jump")
+            steps += done
+            iterations += spent
             times.append((k + 1) * output_interval)
             pos.append(X.copy())
             vel.append(V.copy())
