@@ -64,10 +64,10 @@ CASES = {
                      for c in ds.condition.values)
         + f" kN; surge stiffness {float(ds.stiffness.sel(condition='intact', body='buoy', dof='surge', dof2='surge')) / 1e3:.1f} kN/m"),
     "spread_mooring_watch_circle": lambda ds: (
-        f"watch circle, {ds.heading.size} headings: at {float(ds['load'][-1]) / 1e6:g} MN the buoy moves "
-        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(load=-1).min()):.1f} to "
-        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(load=-1).max()):.1f} m intact, up to "
-        f"{float(ds.body_offset.sel(condition='damaged', body='buoy').isel(load=-1).max()):.0f} m with line1 broken; "
+        f"watch circle, {ds.heading.size} headings: at {float(ds.applied_load[-1]) / 1e6:g} MN the buoy moves "
+        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(applied_load=-1).min()):.1f} to "
+        f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(applied_load=-1).max()):.1f} m intact, up to "
+        f"{float(ds.body_offset.sel(condition='damaged', body='buoy').isel(applied_load=-1).max()):.0f} m with line1 broken; "
         f"largest fairlead tension {float(ds.fairlead_tension.sel(condition='intact').max()) / 1e3:.0f} kN intact"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
     "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
