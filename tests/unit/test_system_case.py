@@ -396,6 +396,18 @@ def test_a_line_above_its_breaking_load_is_warned():
     # every line pulls taut (the buoy is drawn towards anchor2): each is named with its tension
     said = " ".join(str(w.message) for w in record)
     assert re.search(r"lines\.line2 carries 2\.\d+e\+07 N, above its breaking_load 7\.3e\+06 N", said), said
+    # one warning per line over the run, not one more from each equilibrium solve (the solver's own, filtered)
+    assert sum("line2" in str(w.message) for w in record) == 1, said
+
+
+def test_a_line_that_cannot_reach_is_named_by_its_name():
+    data = _data()
+    data["lines"]["line1"]["length"] = 100.0   # 600 m across and 140 m up: a strain of 5
+    with pytest.raises(sc.NoSolutionError) as err:
+        sc.check(parse_case(data))
+    said = str(err.value)
+    # the name the file uses, not the solver's index into its vectorised sub-lines
+    assert "lines.line1 cannot reach" in said and "line[" not in said, said
 
 
 def _line_weight(case, name) -> float:

@@ -14,10 +14,12 @@ the vectorised public function, which also serves the first evaluation.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 from numba import njit
 
+from ..errors import NoSolutionError
 from ..statics.catenary import CatenaryResult, _guess, catenary
 
 
@@ -242,8 +244,14 @@ def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0) -> Catenar
     reg = out[:, 9].astype(np.int8)
     iters = 0
     if bad.any():
-        r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol,
-                     max_strain=max_strain)
+        try:
+            r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol,
+                         max_strain=max_strain)
+        except NoSolutionError as err:  # say which sub-line of the whole system (the caller names its line)
+            found = re.search(r"the line\[(\d+)\]", str(err))
+            if found:
+                err.sub_line = int(np.flatnonzero(bad)[int(found.group(1))])
+            raise
         H[bad], V[bad], HA[bad], VA[bad], LB[bad] = r.H_fairlead, r.V_fairlead, r.H_anchor, r.V_anchor, \
             r.grounded_length
         K[bad] = r.stiffness

@@ -22,14 +22,16 @@ negated fairlead columns.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import NoSolutionError
 from ..statics.catenary import CatenaryRegime
 from . import _stat_kernel as _k
 from ._stat_cat import frame_and_catenaries
-from ._stat_model import BODY, Assembly, rotation
+from ._stat_model import Assembly, rotation
 
 _GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
 _GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
@@ -124,8 +126,15 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     ns = asm.sub_a.size
     ndof = 6 * nb + 3 * nfree
     P = node_positions(asm, st.X, st.R, st.P)
-    cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
-                                                     asm.friction, asm.depth, warm, max_strain=max_strain)
+    try:
+        cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
+                                                         asm.friction, asm.depth, warm, max_strain=max_strain)
+    except NoSolutionError as err:
+        k = getattr(err, "sub_line", None)
+        if k is None:
+            raise
+        name = asm.line_names[int(asm.sub_line[k])]
+        raise NoSolutionError(re.sub(r"the line\[\d+\]", f"lines.{name}", str(err), count=1)) from None
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     force_max = getattr(asm, "_force_max", None)

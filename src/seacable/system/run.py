@@ -13,6 +13,7 @@ Every check that can be made before solving is in :func:`prepare_system_static` 
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -183,8 +184,11 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     eq, last_label = initial, None
     for label, external in steps:
         try:
-            eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
-                                   max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
+            with warnings.catch_warnings():
+                # one warning per line at its largest tension over the run (_warn_breaking), not one per solve
+                warnings.filterwarnings("ignore", message=r"lines\.\S+: tension .* exceeds the breaking load")
+                eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
+                                       max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""

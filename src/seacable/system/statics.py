@@ -78,8 +78,8 @@ import numpy as np
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..statics.catenary import CatenaryRegime, CatenaryResult
-from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from . import _stat_kernel as _kern
+from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
 
@@ -669,8 +669,8 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     try:
         ev0 = prob.eval(st0, 1.0)
     except NoSolutionError as err:
-        raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
-                              "points where every line can reach.") from None
+        raise NoSolutionError(f"at the starting positions: {err} (Or start the bodies and free points where "
+                              "every line can reach.)") from None
     try:
         _check_stability(prob, st0, ev0)
     except InputError:
@@ -745,8 +745,8 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         try:
             ev0 = prob.eval(st0, 1.0)
         except NoSolutionError as err:
-            raise NoSolutionError(f"at the starting positions: {err} Suggested fix: start the bodies and free "
-                                  "points where every line can reach.") from None
+            raise NoSolutionError(f"at the starting positions: {err} (Or start the bodies and free points where "
+                                  "every line can reach.)") from None
         more = _sag_cuts(prob, st0, ev0) if sag_rounds < _SAG_ROUNDS else {}
         if more:
             cuts = _merge_cuts(cuts, more)
