@@ -6,7 +6,7 @@ dict ``{figure name: Figure}``; :data:`SYSTEM_FIGURES` maps the analysis names t
 
 The results are those of :mod:`seacable.system.run`: a ``condition`` dimension (intact, damaged),
 ``line``, ``body`` and ``point`` dimensions holding the names, the line profiles ``x``, ``y``,
-``z`` (``condition, line, node``) of ``system_static`` and the sweep (``load``, ``heading``) of
+``z`` (``condition, line, node``) of ``system_static`` and the sweep (``applied_load``, ``heading``) of
 ``system_offsets``. The intact condition is drawn solid, the damaged one dashed; a line removed in
 the damaged condition (NaN there) is not drawn in it.
 

@@ -456,7 +456,7 @@ def run_system_offsets(case: SystemCase):
     Returns
     -------
     xarray.Dataset
-        Dimensions ``condition``, ``load`` [N], ``heading`` [rad], ``line``, ``body``, ``point``. The
+        Dimensions ``condition``, ``applied_load`` [N], ``heading`` [rad], ``line``, ``body``, ``point``. The
         ``restoring_force`` is the horizontal force of the lines on the loaded body against the load's
         heading; ``offset`` the loaded body's offset along the heading from its given position.
     """
