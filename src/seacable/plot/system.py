@@ -134,7 +134,7 @@ def _system_static(ds, plt):
 
 
 def _offsets_values(ds):
-    """(offset x, offset y) of the loaded body, (condition, load, heading). [m]"""
+    """(offset x, offset y) of the loaded body, (condition, applied_load, heading). [m]"""
     name = ds.attrs.get("loaded_body")
     bodies = _names(ds, "body")
     j = bodies.index(name) if name in bodies else 0
