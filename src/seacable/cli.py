@@ -133,9 +133,12 @@ def _cmd_run(args) -> int:
                   f"'seacable plot {path}' makes the figures.", file=sys.stderr)
             return EXIT_INTERRUPTED
     if ds.attrs.get("interrupted"):
-        t_end = float(ds["time"].values[-1]) if "time" in ds and ds["time"].size else math.nan
-        print(f"seacable: interrupted at t = {t_end:g} s; {path} holds the result up to then",
-              file=sys.stderr)
+        if "time" in ds and ds["time"].size:
+            print(f"seacable: interrupted at t = {float(ds['time'].values[-1]):g} s; {path} holds the result up "
+                  "to then", file=sys.stderr)
+        else:
+            print(f"seacable: interrupted; {path} holds the cases solved until then (NaN for the others)",
+                  file=sys.stderr)
         return EXIT_INTERRUPTED
     return 0
 
@@ -148,7 +151,6 @@ class _SweepProgress:
         self.last = None
 
     def __call__(self, p) -> None:
-        import math
         import time
 
         r = p.record

@@ -458,3 +458,30 @@ def test_schema_of_system_cases(capsys):
     assert {"points", "bodies", "lines", "analysis"} <= set(schema["properties"])
     assert main(["schema"]) == 0
     assert "line" in json.loads(capsys.readouterr().out)["properties"]
+
+
+def test_an_interrupted_watch_circle_keeps_the_equilibria_it_found(monkeypatch):
+    from seacable.system import run as system_run
+
+    case = sc.load_case(WATCH)
+    case = case.replace(analysis=SystemOffsetsAnalysis(body="buoy", loads=(0.0, 1.0e3, 2.5e5, 5.0e5),
+                                                       headings=(0.0, math.pi), damaged_lines=("line1",)))
+    whole = sc.run(case)
+    solve, calls = system_run._solve_path, []
+
+    def interrupted_after_three(*args, **kwargs):
+        calls.append(1)
+        if len(calls) > 3:
+            raise KeyboardInterrupt
+        return solve(*args, **kwargs)
+
+    monkeypatch.setattr(system_run, "_solve_path", interrupted_after_three)
+    ds = sc.run(case)
+    assert ds.attrs["interrupted"] == 1 and whole.attrs["interrupted"] == 0
+    # three solves: the intact no-load state, then the first heading's 1 kN and 250 kN: the loads 0, 1 kN and
+    # 250 kN at heading 0 are the uninterrupted run's exactly; every other case is NaN
+    got = ds.offset.sel(condition="intact", heading=0.0).values
+    np.testing.assert_array_equal(got[:3], whole.offset.sel(condition="intact", heading=0.0).values[:3])
+    assert np.isnan(got[3:]).all()
+    assert np.isnan(ds.offset.sel(condition="intact", heading=math.pi).values).all()
+    assert np.isnan(ds.offset.sel(condition="damaged").values).all()

@@ -450,20 +450,10 @@ def run_system_static(case: SystemCase):
     return ds
 
 
-def run_system_offsets(case: SystemCase):
-    """Offsets, watch circle and restoring force of a body under a swept load (analysis ``system_offsets``).
-
-    Returns
-    -------
-    xarray.Dataset
-        Dimensions ``condition``, ``applied_load`` [N], ``heading`` [rad], ``line``, ``body``, ``point``. The
-        ``restoring_force`` is the horizontal force of the lines on the loaded body against the load's
-        heading; ``offset`` the loaded body's offset along the heading from its given position.
-    """
+def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, restoring: list) -> None:
+    """Solve the swept loads of each condition and heading in order, appending each equilibrium's
+    variables to ``records`` and its restoring force to ``restoring`` (so that an interrupt keeps them)."""
     a: SystemOffsetsAnalysis = case.analysis
-    setup = prepare_system_offsets(case)
-    loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
-    records, restoring = [], []
     for condition, system in zip(setup.conditions, setup.systems):
         where = f"system_offsets case '{case.name}', {condition} condition"
         base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
@@ -485,6 +475,33 @@ def run_system_offsets(case: SystemCase):
                     last = load
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
+
+
+def run_system_offsets(case: SystemCase):
+    """Offsets, watch circle and restoring force of a body under a swept load (analysis ``system_offsets``).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimensions ``condition``, ``applied_load`` [N], ``heading`` [rad], ``line``, ``body``, ``point``. The
+        ``restoring_force`` is the horizontal force of the lines on the loaded body against the load's
+        heading; ``offset`` the loaded body's offset along the heading from its given position.
+    """
+    a: SystemOffsetsAnalysis = case.analysis
+    setup = prepare_system_offsets(case)
+    loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
+    records, restoring = [], []
+    try:
+        _sweep_offsets(case, setup, loads, headings, records, restoring)
+        interrupted = False
+    except KeyboardInterrupt:  # Ctrl-C or SIGTERM: keep the equilibria found, NaN for the rest
+        if not records:
+            raise
+        interrupted = True
+        blank = {k: np.full_like(np.asarray(v, float), np.nan) for k, v in records[0].items()}
+        missing = len(setup.conditions) * loads.size * headings.size - len(records)
+        records += [blank] * missing
+        restoring += [math.nan] * missing
     lead = (len(setup.conditions), loads.size, headings.size)
     values = {k: np.swapaxes(v, 1, 2) for k, v in _stack(records, (lead[0], lead[2], lead[1])).items()}
     dims = ("condition", "applied_load", "heading")
@@ -506,6 +523,7 @@ def run_system_offsets(case: SystemCase):
                       settings=_settings(case, setup, body=a.body))
     ds.attrs["loaded_body"] = a.body
     ds.attrs["depth"] = float(case.environment.depth)
+    ds.attrs["interrupted"] = int(interrupted)
     return ds
 
 
