@@ -414,6 +414,21 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
 
 
 @njit(cache=True)
+def predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt):
+    """The start of a Newmark step: prescribed nodes where their channel puts them at ``step``, free nodes
+    at the constant-acceleration predictor from the last state (``Xn``, ``Vn``, ``An``)."""
+    for i in range(X.shape[0]):
+        ch = channel[i]
+        for r in range(3):
+            if ch >= 0:
+                X[i, r] = px[step, ch, r]
+                V[i, r] = pv[step, ch, r]
+                A[i, r] = pa[step, ch, r]
+            elif fidx[i] >= 0:
+                X[i, r] = Xn[i, r] + dt * Vn[i, r] + 0.5 * dt * dt * An[i, r]
+
+
+@njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
                   cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx,
                   nfree, bw,
@@ -440,15 +455,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
         Vn[:] = V
         An[:] = A
         t = t0 + (step + 1) * dt
-        for i in range(n):
-            ch = channel[i]
-            for r in range(3):
-                if ch >= 0:
-                    X[i, r] = px[step, ch, r]
-                    V[i, r] = pv[step, ch, r]
-                    A[i, r] = pa[step, ch, r]
-                elif fidx[i] >= 0:
-                    X[i, r] = Xn[i, r] + dt * Vn[i, r] + 0.5 * dt * dt * An[i, r]
+        predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         ok = False
         res = 0.0
         res_prev = np.inf

@@ -30,7 +30,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import _force_tolerance, loads
+from ..mooring.kernel import _force_tolerance, loads, predict_nodes
+from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
 B_MASS, B_VOL, B_AWP, B_IXX, B_IYY, B_HASK = 0, 1, 2, 3, 4, 5
@@ -51,19 +52,6 @@ def rotation(roll, pitch, yaw, R):
     R[2, 0] = -sp
     R[2, 1] = cp * sr
     R[2, 2] = cp * cr
-
-
-@njit(cache=True)
-def _skew(v, S):
-    S[0, 0] = 0.0
-    S[0, 1] = -v[2]
-    S[0, 2] = v[1]
-    S[1, 0] = v[2]
-    S[1, 1] = 0.0
-    S[1, 2] = -v[0]
-    S[2, 0] = -v[1]
-    S[2, 1] = v[0]
-    S[2, 2] = 0.0
 
 
 @njit(cache=True)
@@ -527,15 +515,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
         qdn[:] = qd
         qddn[:] = qdd
         t = t0 + (step + 1) * dt
-        for i in range(n):
-            ch = channel[i]
-            for r in range(3):
-                if ch >= 0:
-                    X[i, r] = px[step, ch, r]
-                    V[i, r] = pv[step, ch, r]
-                    A[i, r] = pa[step, ch, r]
-                elif fidx[i] >= 0:
-                    X[i, r] = Xn[i, r] + dt * Vn[i, r] + 0.5 * dt * dt * An[i, r]
+        predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         for j in range(con_node.size):
             if con_chan[j] >= 0:
                 for r in range(3):
