@@ -18,7 +18,7 @@ from pydantic import Field, field_validator, model_validator
 from ._model import Model, quantity
 from .errors import SeacableWarning
 
-__all__ = ["LineType", "Segment", "PointMass", "Line"]
+__all__ = ["Line", "LineType", "PointMass", "Segment"]
 
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81
@@ -63,6 +63,9 @@ class LineType(Model):
         as ``(EA_Dc, EA_D_Lm)`` (MoorDyn v2's ``EA_s|EA_d`` gives ``(EA_d, 0)``);
         ``axial_stiffness`` is the static EA_s that the statics use. ``None`` for an elastic line.
         [N, -]
+    dynamic_axial_damping
+        Viscoelastic fast damper BA_D, in parallel with the dynamic spring (MoorDyn v2's ``BA_s|BA_d``);
+        the slow damper is the model's ordinary axial damping. ``None`` for none. [N s]
     """
 
     diameter: quantity("m", gt=0, fix="give the outer diameter in metres, e.g. 0.035.") = Field(
@@ -85,6 +88,8 @@ class LineType(Model):
         None, description="Nonlinear axial law: (strain [-], tension [N]) pairs, from strain 0.")
     dynamic_axial_stiffness: tuple[float, float] | None = Field(
         None, description="Viscoelastic dynamic stiffness (EA_Dc [N], EA_D_Lm [-]); statics use axial_stiffness.")
+    dynamic_axial_damping: quantity("N s", ge=0) | None = Field(
+        None, description="Viscoelastic fast damper BA_D, in parallel with the dynamic spring. [N s]")
 
     @field_validator("tension_strain")
     @classmethod
@@ -116,7 +121,18 @@ class LineType(Model):
         return value
 
     @model_validator(mode="after")
-    def _check_weight(self) -> "LineType":
+    def _check_viscoelastic(self) -> LineType:
+        dyn, ea = self.dynamic_axial_stiffness, self.axial_stiffness
+        if dyn is not None and ea is not None and self.tension_strain is None and not dyn[0] > ea:
+            raise ValueError(
+                f"dynamic_axial_stiffness EA_Dc = {dyn[0]:.6g} N must exceed the static axial_stiffness EA_s = "
+                f"{ea:.6g} N: the viscoelastic model puts a slow spring EA_D EA_s / (EA_D - EA_s) in series with "
+                "EA_D. Suggested fix: give the dynamic stiffness (typically 1.5-3 x EA_s for polyester), or "
+                "leave dynamic_axial_stiffness out for an elastic line.")
+        return self
+
+    @model_validator(mode="after")
+    def _check_weight(self) -> LineType:
         if self.weight_in_water is not None:
             in_air = self.mass_per_length * _G
             if self.weight_in_water > in_air * 1.0001:
@@ -231,7 +247,7 @@ class Line(Model):
     attachments: tuple[PointMass, ...] = ()
 
     @classmethod
-    def single(cls, line_type: LineType, length: float, **kwargs) -> "Line":
+    def single(cls, line_type: LineType, length: float, **kwargs) -> Line:
         """A homogeneous line of one type and ``length``. [m]"""
         return cls(segments=(Segment(line_type=line_type, length=length),), **kwargs)
 
@@ -241,7 +257,7 @@ class Line(Model):
         return tuple(sorted(value, key=lambda a: a.s))
 
     @model_validator(mode="after")
-    def _attachments_on_line(self) -> "Line":
+    def _attachments_on_line(self) -> Line:
         total = self.length
         for i, a in enumerate(self.attachments):
             if a.s > total * (1 + 1e-12):

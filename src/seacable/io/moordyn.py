@@ -1920,7 +1920,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                 axial_stiffness=lt.axial_stiffness, bending_stiffness=lt.bending_stiffness,
                 drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
                 added_mass_normal=lt.added_mass_normal, added_mass_tangential=lt.added_mass_tangential,
-                tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic)
+                tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic,
+                dynamic_axial_damping=lt.dynamic_damping)
     if tabled:
         warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
                       "kept in LineType.tension_strain and the finite-element lines (system_dynamic) use it, but the "

@@ -46,13 +46,22 @@ from numba import njit
 
 from ..waves import airy_kinematics
 
-__all__ = ["ENV_SIZE", "band_solve", "loads", "newmark_steps", "static_solve", "table_tension"]
+__all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
+           "table_tension", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
 E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 12, 13, 14, 15
 E_BEDRAMP = 16
-ENV_SIZE = 17
+E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
+ENV_SIZE = 18
+
+# Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
+# dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the
+# fast damper BA_D [N s], and the slow stretch and its input at the start of the step (Y0, U0) and at the
+# state last evaluated (Y, U) [m]
+V_EAD, V_LM, V_BAD, V_Y0, V_U0, V_Y, V_U = 0, 1, 2, 3, 4, 5, 6
+V_SIZE = 7
 
 
 @njit(cache=True)
@@ -133,16 +142,182 @@ def table_tension(eps, lo, hi, ts_x, ts_y):
 
 
 @njit(cache=True)
+def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
+    """MoorDyn v2's nodal bending stiffness: forces on the three nodes of each hinge, and their tangent.
+
+    A hinge is an inner node ``i1`` of a line with its neighbours ``i0`` and ``i2``. With the unit
+    vectors ``a`` (i0 to i1) and ``b`` (i1 to i2) of the stretched elements of lengths ``l1``, ``l2``, the
+    angle ``theta`` between them and ``c = cos(theta) = a . b``, the curvature and moment are
+    (``Line::getStateDeriv`` and ``GetCurvature`` of MoorDyn v2)::
+
+        kappa = 4 sin(theta / 2) / (l1 + l2),   M = EI kappa
+
+    and M acts as forces M / l1 and M / l2 on the neighbours, normal to their elements in the plane of the
+    hinge, and their opposite on the node. These are ``-M grad(theta)``: with
+    ``g = M / sin(theta) = 2 EI / ((l1 + l2) cos(theta / 2))`` (smooth at theta = 0)::
+
+        f0 = -g (b - c a) / l1,   f2 = g (a - c b) / l2,   f1 = -f0 - f2
+
+    The line's ends at points are pinned (no moment), as MoorDyn's ends at points. When ``band`` has
+    rows, ``K = -df/dx`` of the nine node pairs is added for the free nodes (exact: it couples ``i0`` with
+    ``i2``, which the caller's band width allows for).
+    """
+    jac = band.shape[0] > 0
+    a, b, u, w = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
+    Pa, Pb = np.zeros((3, 3)), np.zeros((3, 3))
+    Da = np.zeros((3, 3, 3))      # d a / d r_k
+    Db = np.zeros((3, 3, 3))      # d b / d r_k
+    dl1 = np.zeros((3, 3))        # d l1 / d r_k
+    dl2 = np.zeros((3, 3))
+    dg = np.zeros(3)
+    du, dw, blk = np.zeros((3, 3)), np.zeros((3, 3)), np.zeros((3, 3))
+    J = np.zeros((3, 3, 3, 3))    # J[m, k] = d f_m / d r_k
+    for h in range(hinges.shape[0]):
+        i0, i1, i2 = hinges[h, 0], hinges[h, 1], hinges[h, 2]
+        l1 = l2 = 0.0
+        for r in range(3):
+            a[r] = X[i1, r] - X[i0, r]
+            b[r] = X[i2, r] - X[i1, r]
+            l1 += a[r] * a[r]
+            l2 += b[r] * b[r]
+        l1, l2 = math.sqrt(l1), math.sqrt(l2)
+        if l1 <= 0.0 or l2 <= 0.0:
+            continue  # coincident nodes: no direction, no moment
+        c = 0.0
+        for r in range(3):
+            a[r] /= l1
+            b[r] /= l2
+            c += a[r] * b[r]
+        if c <= -1.0 + 1e-9:
+            continue  # folded back on itself: the moment's plane is undefined
+        ei = hinge_ei[h]
+        g = 2.0 * ei / ((l1 + l2) * math.sqrt(0.5 * (1.0 + c)))
+        for r in range(3):
+            u[r] = (b[r] - c * a[r]) / l1
+            w[r] = (a[r] - c * b[r]) / l2
+            F[i0, r] -= g * u[r]
+            F[i2, r] += g * w[r]
+            F[i1, r] += g * (u[r] - w[r])
+        if not jac:
+            continue
+        for r in range(3):
+            for q in range(3):
+                d = 1.0 if r == q else 0.0
+                Pa[r, q] = (d - a[r] * a[q]) / l1
+                Pb[r, q] = (d - b[r] * b[q]) / l2
+        Da[:] = 0.0
+        Db[:] = 0.0
+        dl1[:] = 0.0
+        dl2[:] = 0.0
+        for r in range(3):
+            for q in range(3):
+                Da[0, r, q] = -Pa[r, q]
+                Da[1, r, q] = Pa[r, q]
+                Db[1, r, q] = -Pb[r, q]
+                Db[2, r, q] = Pb[r, q]
+            dl1[0, r], dl1[1, r] = -a[r], a[r]
+            dl2[1, r], dl2[2, r] = -b[r], b[r]
+        gc = -g / (2.0 * (1.0 + c))   # dg/dc
+        gl = -g / (l1 + l2)           # dg/dl1 = dg/dl2
+        for k in range(3):
+            # dg/dr_k (a row), du/dr_k and dw/dr_k (3x3), from c = a.b, u(a, b, l1), w(a, b, l2)
+            for q in range(3):
+                s = 0.0
+                for r in range(3):
+                    s += b[r] * Da[k, r, q] + a[r] * Db[k, r, q]
+                dg[q] = gc * s + gl * (dl1[k, q] + dl2[k, q])
+            for r in range(3):
+                for q in range(3):
+                    sa = sb = sa2 = sb2 = 0.0
+                    for p in range(3):
+                        d = 1.0 if r == p else 0.0
+                        # du/da = -(c I + a b^T) / l1, du/db = (I - a a^T) / l1
+                        sa += -(c * d + a[r] * b[p]) * Da[k, p, q]
+                        sb += (d - a[r] * a[p]) * Db[k, p, q]
+                        # dw/da = (I - b b^T) / l2, dw/db = -(c I + b a^T) / l2
+                        sa2 += (d - b[r] * b[p]) * Da[k, p, q]
+                        sb2 += -(c * d + b[r] * a[p]) * Db[k, p, q]
+                    du[r, q] = (sa + sb) / l1 - u[r] * dl1[k, q] / l1
+                    dw[r, q] = (sa2 + sb2) / l2 - w[r] * dl2[k, q] / l2
+            for r in range(3):
+                for q in range(3):
+                    J[0, k, r, q] = -(u[r] * dg[q] + g * du[r, q])
+                    J[2, k, r, q] = w[r] * dg[q] + g * dw[r, q]
+                    J[1, k, r, q] = -J[0, k, r, q] - J[2, k, r, q]
+        nodes = (i0, i1, i2)
+        for m in range(3):
+            fm = fidx[nodes[m]]
+            if fm < 0:
+                continue
+            for k in range(3):
+                for r in range(3):
+                    for q in range(3):
+                        blk[r, q] = J[m, k, r, q]
+                _add_block(band, bw, fm, fidx[nodes[k]], -1.0, blk)
+
+
+@njit(cache=True)
+def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
+    """Tension [N] of a viscoelastic element and its slopes dT/d(dl) [N/m] and dT/d(dl/dt) [N s/m].
+
+    MoorDyn v2's model (Hall, Duong and Lozon 2023): a fast spring EA_D with damper BA_D in series with
+    a slow spring EA_1 = EA_D EA_s / (EA_D - EA_s) with damper BA, so that the static stiffness is EA_s.
+    The slow stretch ``y`` (MoorDyn's ``dl_1``) follows::
+
+        (BA + BA_D) dy/dt = EA_D dl - (EA_D + EA_1) y + BA_D d(dl)/dt,    T = (EA_1 y + BA dy/dt) / L
+
+    with ``dl`` the element's stretch [m]. Written ``dy/dt = k (u - y)`` with
+    ``k = (EA_D + EA_1) / (BA + BA_D)`` and ``u = (EA_D dl + BA_D d(dl)/dt) / (EA_D + EA_1)``, it is
+    integrated exactly over the step ``dt`` for ``u`` linear in time from the step's start (``row[V_U0]``,
+    ``row[V_Y0]``): ``y = e y0 + (phi - e) u0 + (1 - phi) u`` with ``e = exp(-k dt)``,
+    ``phi = (1 - e) / (k dt)`` (second order, unconditionally stable). ``dt`` = inf is the static limit
+    (``y = u``: T = EA_s dl / L), ``dt`` = 0 the state at the step's start. A mean-load-dependent dynamic
+    stiffness ``EA_D = EA_Dc + EA_D_Lm T_mean`` (MoorDyn's ``EA_s|alphaMBL|vbeta``, with the slow spring's
+    tension ``EA_1 y / L`` as the mean tension, solved for EA_D) takes ``y`` at the step's start.
+    Writes ``y`` and ``u`` in ``row[V_Y]``, ``row[V_U]``. The caller keeps the tension >= 0 (no compression).
+    """
+    ead = row[V_EAD]
+    if row[V_LM] > 0.0 and row[V_Y0] > 0.0:
+        k1 = ea_s / L
+        sd = ead + ea_s + row[V_LM] * row[V_Y0] * k1
+        ead = 0.5 * (sd + math.sqrt(max(sd * sd - 4.0 * ead * ea_s, 0.0)))
+    ea1 = ead * ea_s / (ead - ea_s)
+    bsum = ba + row[V_BAD]
+    kk = ead + ea1
+    u = (ead * dl + row[V_BAD] * ldot) / kk
+    if bsum <= 0.0 or math.isinf(dt):
+        e, phi = 0.0, 0.0
+    else:
+        x = kk / bsum * dt
+        if x < 1e-8:
+            e, phi = 1.0 - x, 1.0 - 0.5 * x
+        else:
+            e = math.exp(-x)
+            phi = (1.0 - e) / x
+    y = e * row[V_Y0] + (phi - e) * row[V_U0] + (1.0 - phi) * u
+    row[V_Y] = y
+    row[V_U] = u
+    rate = kk / bsum * (u - y) if bsum > 0.0 else 0.0
+    T = (ea1 * y + ba * rate) / L
+    dtdu = (ea1 * (1.0 - phi) + ba * kk / bsum * phi) / L if bsum > 0.0 else ea1 / L
+    return T, dtdu * ead / kk, dtdu * row[V_BAD] / kk
+
+
+@njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth,
-          cur_speed, with_waves,
+          weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
+          fidx, env, cur_depth, cur_speed, with_waves,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
     Fills ``F`` (n, 3) with internal, gravity, hydrodynamic and seabed forces, ``M`` (n, 3, 3) with the
     node mass including added mass, ``tension`` (e,) and, when ``band`` has rows, adds
     ``cm M + cc C + K`` (C = -dF/dv, K = -dF/dx) for the free nodes (``fidx`` >= 0) in band storage.
+    ``hinges`` (h, 3) and ``hinge_ei`` (h,) are the inner nodes of lines with bending stiffness
+    (:func:`bending_loads`; none: a truss); ``visco`` (e, V_SIZE) the viscoelastic elements
+    (:func:`viscoelastic_tension`, advanced over ``env[E_VDT]``; no rows: none).
     """
+    nvis = visco.shape[0]
     n = X.shape[0]
     rho = env[E_RHO]
     pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
@@ -188,7 +363,26 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             else:
                 tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        if dpsi > 0.0:
+        if nvis > 0 and visco[e, V_EAD] > 0.0:
+            # viscoelastic (MoorDyn's EA_s|EA_d): the slow stretch advanced over the step env[E_VDT]
+            ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+            T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], env[E_VDT])
+            if eps > 0.0 and T > 0.0:
+                tension[e] = T
+                for r in range(3):
+                    F[a, r] += T * tv[r]
+                    F[b, r] -= T * tv[r]
+                if jac:
+                    for r in range(3):
+                        for c in range(3):
+                            tt = tv[r] * tv[c]
+                            blk[r, c] = (kdl + cc * kdv) * tt + T / l * (eye[r, c] - tt)
+                    fa, fb = fidx[a], fidx[b]
+                    _add_block(band, bw, fa, fa, 1.0, blk)
+                    _add_block(band, bw, fb, fb, 1.0, blk)
+                    _add_block(band, bw, fa, fb, -1.0, blk)
+                    _add_block(band, bw, fb, fa, -1.0, blk)
+        elif dpsi > 0.0:
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             if tab:
                 T = tel + cdamp[e] * ldot / L * dpsi
@@ -251,6 +445,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _drag_tangent(un, cdn[e], hb, qd)
                 _drag_tangent(ut, math.pi * cdt[e], hb, qd)
                 _add_block(band, bw, fidx[k], fidx[k], cc, hb)
+    if hinges.shape[0] > 0:
+        bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
     sl = env[E_SLOPE]
     nrm = np.array([-math.sin(sl), 0.0, math.cos(sl)])
@@ -430,7 +626,7 @@ def predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt):
 
 @njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
-                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx,
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx,
                   nfree, bw,
                   env, cur_depth,
                   cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
@@ -450,6 +646,8 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     An = np.empty_like(A)
     c0 = 1.0 / (beta * dt * dt)
     c1 = gamma / (beta * dt)
+    env = env.copy()
+    env[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
     for step in range(px.shape[0]):
         Xn[:] = X
         Vn[:] = V
@@ -469,7 +667,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed,
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
                   with_waves, F, M, tension,
                   band, bw, c0, c1)
             res = _residual(F, M, A, fidx, R)
@@ -509,12 +707,21 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             V[:] = Vn
             A[:] = An
             return step
+        commit_viscoelastic(visco)
     return px.shape[0]
 
 
 @njit(cache=True)
+def commit_viscoelastic(visco):
+    """Start the next step from the viscoelastic state last evaluated (a converged step's end)."""
+    for e in range(visco.shape[0]):
+        visco[e, V_Y0] = visco[e, V_Y]
+        visco[e, V_U0] = visco[e, V_U]
+
+
+@njit(cache=True)
 def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, nfree, bw, env, cur_depth, cur_speed,
+                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, nfree, bw, env, cur_depth, cur_speed,
                  tol, max_iter,
                  max_step, F, M, tension,
                  stats):
@@ -533,8 +740,10 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     Rt = np.zeros(nd)
     R0 = np.zeros(nd)
     Xt = X.copy()
+    env = env.copy()
+    env[E_VDT] = math.inf  # statics: viscoelastic elements at their static stiffness
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M, tension,
+          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F, M, tension,
           band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
@@ -559,7 +768,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False,
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False,
                   F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
@@ -574,7 +783,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F,
+              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F,
               M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
@@ -586,7 +795,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, False, F, M,
+              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F, M,
               tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res

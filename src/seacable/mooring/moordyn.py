@@ -9,11 +9,13 @@ The seabed is MoorDyn's: flat at ``WtrDpth`` (without it, at the deepest point, 
 ``kBot`` and ``cBot`` per projected area, friction coefficient ``FrictionCoefficient`` (regularised;
 MoorDyn's own friction law differs in detail). Options seacable cannot honour (waves, currents,
 bathymetry files, ...) are warned by :func:`prepare_moordyn`, each with what seacable does instead.
-Bending stiffness is not modelled here: a line type with ``EI > 0`` is run as a truss, with a warning
-(the reader keeps EI in the line type, and :func:`seacable.io.moordyn.moordyn_system` passes it on).
-A viscoelastic line runs with its static EA, a nonlinear (table) EA with its secant, each with a
-warning. Decks with bodies, rods or points on a body or turbine are refused here: they run as a
-mooring system (:meth:`seacable.io.moordyn.MoorDynCase.system`).
+A line type's bending stiffness ``EI`` acts at the inner nodes of its lines (MoorDyn v2's nodal
+bending, ends at points pinned; :func:`seacable.mooring.kernel.bending_loads`), a viscoelastic
+``EA_s|EA_d`` (or ``EA_s|EA_Dc|EA_D_Lm``) with ``BA_s|BA_d`` runs MoorDyn v2's viscoelastic model
+(:func:`seacable.mooring.kernel.viscoelastic_tension`; statics at EA_s), a nonlinear (table) EA with
+its table; a Syrope rope with its original working curve, with a warning. Decks with bodies, rods
+or points on a body or turbine are refused here: they run as a mooring system
+(:meth:`seacable.io.moordyn.MoorDynCase.system`).
 """
 
 from __future__ import annotations
@@ -67,11 +69,9 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     arc = [np.nan] * n_pts
     elements, props, element_line, line_nodes = [], [], [], []
     tables = []  # per element: its line type's strain-tension table (MoorDyn's nonlinear EA) or None
-    bent = set()
+    bending, visco = [], []  # per element: EI; (EA_Dc, EA_D_Lm, BA_D) of a viscoelastic line type
     for li, line in enumerate(md.lines):
         lt = md.line_types[line.line_type]
-        if lt.bending_stiffness > 0:
-            bent.add(lt.name)
         A, B = points[line.point_a], points[line.point_b]
         L = _line_length(md, line, A, B)
         n = line.n_segments
@@ -97,13 +97,16 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                           lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential))
             element_line.append(li)
             tables.append(lt.tension_strain)
-    if bent:
-        warnings.warn(f"line type(s) {', '.join(sorted(bent))} have bending stiffness EI > 0; seacable's "
-                      "mooring model is a truss and ignores it.", SeacableWarning, stacklevel=2)
-    special = [lt.name for lt in md.line_types.values() if lt.dynamic_stiffness is not None]
+            bending.append(lt.bending_stiffness)
+            dyn = lt.dynamic_stiffness
+            visco.append((dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
+                         if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0))
+    special = [lt.name for lt in md.line_types.values() if lt.dynamic_stiffness is not None
+               and lt.tension_strain is not None]
     for name in special:
-        warnings.warn(f"line type {name} is viscoelastic: its static EA_s (or strain-tension table) is used "
-                      "(the line network has no dynamic stiffness).", SeacableWarning, stacklevel=2)
+        warnings.warn(f"line type {name} is a Syrope rope: its original working curve (strain-tension table) is "
+                      "used, without the dynamic stiffness of the working curves.", SeacableWarning, stacklevel=2)
+    visco = np.array(visco, float)
     n_nodes = len(pos)
     extra = n_nodes - n_pts
     P = np.array(props, float)
@@ -119,6 +122,8 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes),
                   line_names=tuple(f"line {ln.id}" for ln in md.lines), arc_length=np.array(arc, float),
                   element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
+                  bending_stiffness=np.array(bending, float) if any(bending) else None,
+                  element_viscoelastic=visco if np.any(visco[:, 0] > 0) else None,
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
                                                                if p.attachment == "vessel"))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
@@ -141,7 +146,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    line_nodes=(np.arange(len(nodes)),), line_names=(net.line_names[li],),
                    n_channels=net.n_channels, channel_names=net.channel_names,
                    element_tension_strain=None if net.element_tension_strain is None
-                   else tuple(net.element_tension_strain[e] for e in els))
+                   else tuple(net.element_tension_strain[e] for e in els),
+                   bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
+                   element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els])
     return MooringModel(view, model.water)
 
 

@@ -26,6 +26,8 @@ __all__ = [
     "PRESCRIBED",
     "Network",
     "element_damping",
+    "line_bending",
+    "line_viscoelastic",
     "network_from_line",
     "node_arc_lengths",
     "slack_positions",
@@ -66,6 +68,14 @@ class Network:
         none is known. [N]
     element_tension_strain : per element, the line type's strain-tension table (``LineType.tension_strain``,
         ``(strain, tension)`` pairs) or None for a linear EA; None when no element has one. [-, N]
+    bending_stiffness : (e,) EI of each element's line type; None (or all 0) for a truss. The bending
+        moment acts at the inner nodes of each line (:func:`seacable.mooring.kernel.bending_loads`),
+        with the mean EI of the node's two elements; line ends are pinned. [N m^2]
+    element_viscoelastic : (e, 3) per element ``(EA_Dc, EA_D_Lm, BA_D)`` of a viscoelastic line type
+        (``LineType.dynamic_axial_stiffness`` and the fast damper), zeros for an elastic element; None
+        when no element is viscoelastic. ``axial_stiffness`` is then the static EA_s and
+        ``axial_damping`` the slow damper BA (:func:`seacable.mooring.kernel.viscoelastic_tension`).
+        [N, -, N s]
     """
 
     position: np.ndarray
@@ -95,6 +105,35 @@ class Network:
     channel_names: tuple[str, ...] = field(default=("fairlead",))
     breaking_load: np.ndarray | None = None
     element_tension_strain: tuple | None = None
+    bending_stiffness: np.ndarray | None = None
+    element_viscoelastic: np.ndarray | None = None
+
+    def hinge_arrays(self):
+        """The inner nodes of the lines with bending stiffness as the kernel takes them.
+
+        Returns ``(hinges, ei)``: ``hinges`` (h, 3) the node and its two neighbours along its line
+        (end A side first), ``ei`` (h,) the mean EI of the two elements [N m^2]; no rows for a truss.
+        """
+        ei = self.bending_stiffness
+        if ei is None or not np.any(np.asarray(ei) > 0):
+            return np.zeros((0, 3), np.int64), np.zeros(0)
+        ei = np.asarray(ei, float)
+        of = {(int(a), int(b)): e for e, (a, b) in enumerate(self.elements)}
+        rows, vals = [], []
+        for nodes in self.line_nodes:
+            for k in range(1, len(nodes) - 1):
+                i0, i1, i2 = int(nodes[k - 1]), int(nodes[k]), int(nodes[k + 1])
+                e1 = of.get((i0, i1), of.get((i1, i0)))
+                e2 = of.get((i1, i2), of.get((i2, i1)))
+                if e1 is None or e2 is None:
+                    continue
+                value = 0.5 * (ei[e1] + ei[e2])
+                if value > 0:
+                    rows.append((i0, i1, i2))
+                    vals.append(value)
+        if not rows:
+            return np.zeros((0, 3), np.int64), np.zeros(0)
+        return np.array(rows, np.int64), np.array(vals, float)
 
     def tension_strain_arrays(self):
         """The strain-tension tables as the kernel takes them: ``(lo, hi, strain, tension)``.
@@ -338,4 +377,21 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
-        channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables)
+        channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
+        bending_stiffness=line_bending(types), element_viscoelastic=line_viscoelastic(types))
+
+
+def line_bending(types) -> np.ndarray | None:
+    """EI per element from the elements' line types; None when none bends (a truss). [N m^2]"""
+    ei = np.array([t.bending_stiffness for t in types], float)
+    return ei if np.any(ei > 0) else None
+
+
+def line_viscoelastic(types) -> np.ndarray | None:
+    """``(EA_Dc, EA_D_Lm, BA_D)`` per element of viscoelastic line types (zeros for the others; a line type
+    with a strain-tension table keeps its table); None when no element is viscoelastic. [N, -, N s]"""
+    rows = np.zeros((len(types), 3))
+    for e, t in enumerate(types):
+        if t.dynamic_axial_stiffness is not None and t.tension_strain is None and t.axial_stiffness is not None:
+            rows[e] = (*t.dynamic_axial_stiffness, t.dynamic_axial_damping or 0.0)
+    return rows if np.any(rows[:, 0] > 0) else None

@@ -73,6 +73,7 @@ class Water:
             self.wave_height, self.wave_period, wave_number_or_zero(self), self.wave_heading, self.wave_phase)
         env[[K.E_CHEAD, K.E_ALPHA, K.E_WDEPTH]] = self.current_heading, self.rayleigh_mass, depth
         env[K.E_BEDRAMP] = bed_ramp
+        env[K.E_VDT] = math.inf  # viscoelastic elements at their static stiffness unless a time step says
         return env
 
     def seabed_z(self, x) -> np.ndarray:
@@ -112,6 +113,12 @@ class MooringModel:
         el = net.elements
         both = (self.fidx[el[:, 0]] >= 0) & (self.fidx[el[:, 1]] >= 0)
         gap = int(np.max(np.abs(self.fidx[el[both, 0]] - self.fidx[el[both, 1]]), initial=0))
+        # bending couples each inner node's two neighbours: the band holds them (a truss: no hinges)
+        self.hinges, self.hinge_ei = net.hinge_arrays()
+        for j, k in ((0, 1), (1, 2), (0, 2)):
+            fj, fk = self.fidx[self.hinges[:, j]], self.fidx[self.hinges[:, k]]
+            ok = (fj >= 0) & (fk >= 0)
+            gap = max(gap, int(np.max(np.abs(fj[ok] - fk[ok]), initial=0)))
         self.bw = 3 * gap + 2
         bedc = np.zeros(net.n_nodes)
         half = 0.5 * net.diameter * net.length
@@ -135,26 +142,44 @@ class MooringModel:
         self.cur_speed = np.asarray(self.water.current_speeds, float)
         # strain-tension tables (lo, hi, strain, tension) of the elements that have one
         self.tension_strain = net.tension_strain_arrays()
+        # viscoelastic elements: parameters and the slow stretch (kernel.V_*), no rows when there are none
+        self.visco = np.zeros((0, K.V_SIZE))
+        if net.element_viscoelastic is not None:
+            self.visco = np.zeros((net.n_elements, K.V_SIZE))
+            self.visco[:, [K.V_EAD, K.V_LM, K.V_BAD]] = net.element_viscoelastic
 
     def element_args(self):
         n = self.network
         return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
                 n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
-                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy, *self.tension_strain)
+                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy, *self.tension_strain,
+                self.hinges, self.hinge_ei, self.visco)
 
-    def evaluate(self, X, V, A, t=0.0, waves=True):
+    def evaluate(self, X, V, A, t=0.0, waves=True, settled=False):
         """Node forces F (without inertia and supports), masses M and element tensions at a state.
 
         Returns ``F, M, tension, support`` with ``support = F - M a`` the force each node applies to its
-        support (meaningful at fixed and prescribed nodes). [N], [kg], [N], [N]
+        support (meaningful at fixed and prescribed nodes). Viscoelastic elements are at their static
+        stiffness, or with ``settled`` at their slow stretch of the last converged time step (a
+        time-domain state). [N], [kg], [N], [N]
         """
         n = self.network.n_nodes
         F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
         tension = np.zeros(self.network.n_elements)
-        K.loads(X, V, t, *self.element_args(), self.fidx, self.env, self.cur_depth, self.cur_speed, waves,
+        env = self.env
+        if settled and self.visco.shape[0]:
+            env = env.copy()
+            env[K.E_VDT] = 0.0
+        K.loads(X, V, t, *self.element_args(), self.fidx, env, self.cur_depth, self.cur_speed, waves,
                 F, M, tension, np.zeros((0, 2 * self.bw + 1)), self.bw, 0.0, 0.0)
         support = F - np.einsum("nij,nj->ni", M, A)
         return F, M, tension, support
+
+    def settle_viscoelastic(self, X, V) -> None:
+        """Start the viscoelastic elements' slow stretch at its static value at positions ``X``."""
+        if self.visco.shape[0]:
+            self.evaluate(X, V, np.zeros_like(X), waves=False)
+            K.commit_viscoelastic(self.visco)
 
 
 def _band_order(net: Network, free: np.ndarray) -> np.ndarray:
@@ -331,7 +356,8 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     x0, v0, a0 = channels(np.zeros(1))
     pres = np.flatnonzero(net.channel >= 0)
     X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
-    Fi, Mi, _, _ = model.evaluate(X, V, A)
+    model.settle_viscoelastic(X, np.zeros_like(V))
+    Fi, Mi, _, _ = model.evaluate(X, V, A, settled=True)
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
 
@@ -340,7 +366,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     ten, sup = [], []
 
     def record():
-        _, _, t_e, s_n = model.evaluate(X, V, A, times[-1])
+        _, _, t_e, s_n = model.evaluate(X, V, A, times[-1], settled=True)
         ten.append(t_e)
         sup.append(s_n)
 

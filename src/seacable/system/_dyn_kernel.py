@@ -30,7 +30,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import _force_tolerance, loads, predict_nodes
+from ..mooring.kernel import E_VDT, _force_tolerance, commit_viscoelastic, loads, predict_nodes
 from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
@@ -288,15 +288,15 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
-     ts_lo, ts_hi, ts_x, ts_y) = args
+     ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco) = args
     n = X.shape[0]
     nd = 3 * nfree
     nb = q.shape[0]
     rho, g = env[0], env[1]
     band[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
-          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw,
-          cm, cc)
+          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
+          with_waves, F, M, tension, band, bw, cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -507,6 +507,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
     c0 = 1.0 / (beta * dt * dt)
     c1 = gamma / (beta * dt)
+    env = env.copy()
+    env[E_VDT] = dt  # viscoelastic lines: the slow stretch advances over the step
     for step in range(px.shape[0]):
         Xn[:] = X
         Vn[:] = V
@@ -574,6 +576,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             qd[:] = qdn
             qdd[:] = qddn
             return step
+        commit_viscoelastic(args[-1])
         for j in range(con_node.size):
             if con_active[j] == 0:
                 continue

@@ -258,7 +258,8 @@ class SystemFE:
         net = m.network
         args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
                 net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
-                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain)
+                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain, m.hinges, m.hinge_ei,
+                m.visco)
         return args
 
     def body_args(self):
@@ -347,6 +348,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     extra = {f: [] for f in ("point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}
     fairlead_end = []
     tables = []  # per element: its line type's strain-tension table or None
+    bending, visco = [], []  # per line: its elements' EI and viscoelastic parameters
     line_names = tuple(system.lines)
     for li, (lname, sl) in enumerate(system.lines.items()):
         ends = [sl.end_a, sl.end_b]
@@ -418,6 +420,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         elements.extend(ids[sub.elements])
         props.append(np.column_stack([getattr(sub, f) for f in fields]))
         tables.extend(sub.element_tension_strain or [None] * (n - 1))
+        bending.append(np.zeros(n - 1) if sub.bending_stiffness is None else sub.bending_stiffness)
+        visco.append(np.zeros((n - 1, 3)) if sub.element_viscoelastic is None else sub.element_viscoelastic)
         element_line.extend([li] * (n - 1))
         line_nodes.append(ids)
         line_elements.append(np.arange(el0, el0 + n - 1))
@@ -446,7 +450,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes), line_names=line_names,
         arc_length=np.array(arc, float), n_channels=len(channel_source),
         channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
-        breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None)
+        breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
+        bending_stiffness=np.concatenate(bending), element_viscoelastic=np.vstack(visco) if np.any(np.vstack(visco)) else None)
     model = MooringModel(net, _water(environment, analysis))
     nb = len(free_bodies)
     bpar = np.zeros((nb, DK.B_SIZE))
@@ -650,6 +655,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     h = output_interval / sub
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
+    m.settle_viscoelastic(X, np.zeros_like(X))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
     times, pos, vel, ten, bq, bqd = [0.0], [X.copy()], [V.copy()], [t0_tension], [q.copy()], [qd.copy()]
     stats = np.zeros(3)
