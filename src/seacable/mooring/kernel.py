@@ -273,14 +273,19 @@ def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
     ``phi = (1 - e) / (k dt)`` (second order, unconditionally stable). ``dt`` = inf is the static limit
     (``y = u``: T = EA_s dl / L), ``dt`` = 0 the state at the step's start. A mean-load-dependent dynamic
     stiffness ``EA_D = EA_Dc + EA_D_Lm T_mean`` (MoorDyn's ``EA_s|alphaMBL|vbeta``, with the slow spring's
-    tension ``EA_1 y / L`` as the mean tension, solved for EA_D) takes ``y`` at the step's start.
+    tension ``EA_1 y / L`` as the mean tension, solved for EA_D) takes ``y`` at the step's start; in
+    statics the mean tension is the static tension ``EA_s dl / L``.
     Writes ``y`` and ``u`` in ``row[V_Y]``, ``row[V_U]``. The caller keeps the tension >= 0 (no compression).
     """
     ead = row[V_EAD]
-    if row[V_LM] > 0.0 and row[V_Y0] > 0.0:
-        k1 = ea_s / L
-        sd = ead + ea_s + row[V_LM] * row[V_Y0] * k1
-        ead = 0.5 * (sd + math.sqrt(max(sd * sd - 4.0 * ead * ea_s, 0.0)))
+    if row[V_LM] > 0.0:
+        if math.isinf(dt):
+            # statics: the mean tension is the static one, EA_s dl / L (then y = u below is consistent)
+            ead += row[V_LM] * max(ea_s * dl / L, 0.0)
+        elif row[V_Y0] > 0.0:
+            # EA_D = EA_Dc + EA_D_Lm EA_1(EA_D) y0 / L, solved for EA_D (the root above EA_s)
+            sd = ead + ea_s + row[V_LM] * row[V_Y0] * ea_s / L
+            ead = 0.5 * (sd + math.sqrt(max(sd * sd - 4.0 * ead * ea_s, 0.0)))
     ea1 = ead * ea_s / (ead - ea_s)
     bsum = ba + row[V_BAD]
     kk = ead + ea1
