@@ -323,6 +323,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     (:func:`viscoelastic_tension`, advanced over ``env[E_VDT]``; no rows: none).
     """
     nvis = visco.shape[0]
+    vstatic = math.isinf(env[E_VDT])
     n = X.shape[0]
     rho = env[E_RHO]
     pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
@@ -368,7 +369,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             else:
                 tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        if nvis > 0 and visco[e, V_EAD] > 0.0:
+        vis = nvis > 0 and visco[e, V_EAD] > 0.0
+        if vis and vstatic:
+            # a viscoelastic element in statics is the elastic one at EA_s (below); its static slow stretch
+            # is kept for a time-domain run to start from
+            viscoelastic_tension(l - L, 0.0, L, EA[e], cdamp[e], visco[e], math.inf)
+        if vis and not vstatic:
             # viscoelastic (MoorDyn's EA_s|EA_d): the slow stretch advanced over the step env[E_VDT]
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], env[E_VDT])
