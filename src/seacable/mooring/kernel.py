@@ -47,7 +47,7 @@ from numba import njit
 from ..waves import airy_kinematics
 
 __all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
-           "table_tension", "viscoelastic_tension"]
+           "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -309,6 +309,56 @@ def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
 
 
 @njit(cache=True)
+def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tension, band, bw, cc):
+    """Axial forces, tensions and tangents of the viscoelastic elements (``visco`` rows with EA_Dc > 0).
+
+    Each element's slow stretch advances over ``dt`` (:func:`viscoelastic_tension`); no tension in
+    compression. In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
+    only its static slow stretch is written (the start of a time-domain run).
+    """
+    jac = band.shape[0] > 0
+    eye = np.eye(3)
+    blk = np.zeros((3, 3))
+    tv = np.zeros(3)
+    static = math.isinf(dt)
+    for e in range(elements.shape[0]):
+        if visco[e, V_EAD] <= 0.0:
+            continue
+        a = elements[e, 0]
+        b = elements[e, 1]
+        l = 0.0
+        for r in range(3):
+            tv[r] = X[b, r] - X[a, r]
+            l += tv[r] * tv[r]
+        l = math.sqrt(l)
+        L = L0[e]
+        if static:
+            viscoelastic_tension(l - L, 0.0, L, EA[e], cdamp[e], visco[e], math.inf)
+            continue
+        if l > 0.0:
+            for r in range(3):
+                tv[r] /= l
+        ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+        T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], dt)
+        if l <= L or T <= 0.0:
+            continue
+        tension[e] = T
+        for r in range(3):
+            F[a, r] += T * tv[r]
+            F[b, r] -= T * tv[r]
+        if jac:
+            for r in range(3):
+                for c in range(3):
+                    tt = tv[r] * tv[c]
+                    blk[r, c] = (kdl + cc * kdv) * tt + T / l * (eye[r, c] - tt)
+            fa, fb = fidx[a], fidx[b]
+            _add_block(band, bw, fa, fa, 1.0, blk)
+            _add_block(band, bw, fb, fb, 1.0, blk)
+            _add_block(band, bw, fa, fb, -1.0, blk)
+            _add_block(band, bw, fb, fa, -1.0, blk)
+
+
+@njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
           weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
           fidx, env, cur_depth, cur_speed, with_waves,
@@ -369,31 +419,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             else:
                 tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        vis = nvis > 0 and visco[e, V_EAD] > 0.0
-        if vis and vstatic:
-            # a viscoelastic element in statics is the elastic one at EA_s (below); its static slow stretch
-            # is kept for a time-domain run to start from
-            viscoelastic_tension(l - L, 0.0, L, EA[e], cdamp[e], visco[e], math.inf)
-        if vis and not vstatic:
-            # viscoelastic (MoorDyn's EA_s|EA_d): the slow stretch advanced over the step env[E_VDT]
-            ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
-            T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], env[E_VDT])
-            if eps > 0.0 and T > 0.0:
-                tension[e] = T
-                for r in range(3):
-                    F[a, r] += T * tv[r]
-                    F[b, r] -= T * tv[r]
-                if jac:
-                    for r in range(3):
-                        for c in range(3):
-                            tt = tv[r] * tv[c]
-                            blk[r, c] = (kdl + cc * kdv) * tt + T / l * (eye[r, c] - tt)
-                    fa, fb = fidx[a], fidx[b]
-                    _add_block(band, bw, fa, fa, 1.0, blk)
-                    _add_block(band, bw, fb, fb, 1.0, blk)
-                    _add_block(band, bw, fa, fb, -1.0, blk)
-                    _add_block(band, bw, fb, fa, -1.0, blk)
-        elif dpsi > 0.0:
+        if dpsi > 0.0 and not (nvis > 0 and visco[e, V_EAD] > 0.0 and not vstatic):
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             if tab:
                 T = tel + cdamp[e] * ldot / L * dpsi
@@ -456,6 +482,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _drag_tangent(un, cdn[e], hb, qd)
                 _drag_tangent(ut, math.pi * cdt[e], hb, qd)
                 _add_block(band, bw, fidx[k], fidx[k], cc, hb)
+    if nvis > 0:
+        viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc)
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
