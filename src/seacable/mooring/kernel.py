@@ -8,11 +8,17 @@ with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
 (an element whose line type has a strain-tension table takes ``T(eps)`` from it instead of ``EA eps``,
 piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent)
 
-(the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight)
+(the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight;
+an element of a viscoelastic line type takes its tension from MoorDyn v2's series spring-damper model
+with its slow stretch as an internal state, :func:`viscoelastic_loads`, and is the elastic one at EA_s
+in statics)
     f_a = T t,  f_b = -T t,
     K_e = EA / L t t^T + T / l (I - t t^T)          (paper 004 eq. A6-A10: linear plus geometric)
 
-so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. Half of each element's mass and
+so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. A line with bending stiffness EI
+adds MoorDyn v2's nodal bending moments at its inner nodes (:func:`bending_loads`, with their exact
+tangent, which couples a node's two neighbours: the band is widened for it only when a line bends).
+Half of each element's mass and
 weight in water goes to each end; the part of a half element above the still water level (straight
 from the node to the element's middle) gets its buoyancy back (weight in air), and an attachment's
 buoyancy scales with its immersed fraction across the waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
