@@ -1779,31 +1779,25 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
       statics of :mod:`seacable.system.statics` use that constant EA, a SeacableWarning says so);
       a viscoelastic ``EA_s|EA_d`` to ``axial_stiffness = EA_s`` and ``dynamic_axial_stiffness``.
       The axial damping BA is not in the data model (a dynamics setting).
-    - environment: WtrDnsty, g, WtrDpth (or the deepest point, as MoorDyn), FrictionCoefficient.
-      MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - environment (a :class:`~seacable.environment.SystemEnvironment`): WtrDnsty, g, WtrDpth (or
+      the deepest point, as MoorDyn), FrictionCoefficient. ``g = 0`` (no weight nor buoyancy) and
+      ``WtrDnsty = 0`` (no buoyancy nor hydrodynamics) are kept: MoorDyn's own tests switch gravity
+      or buoyancy off so. MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - a deck without lines (rods or bodies alone), or with bodies no line ends on, is a system all
+      the same (the dynamics run it; the statics need each free body restored).
     - ``FAILURE`` rows stay in ``md.failures`` (a dynamics input).
 
     Raises
     ------
     InputError
-        A deck without lines, with g = 0 or water density 0 (MoorDyn test decks that switch
-        gravity or buoyancy off), or one the data model refuses (a body no line ends on).
+        A deck the data model refuses (a line end on a point that does not exist, ...).
     """
-    from ..environment import Environment, Seabed
+    from ..environment import Seabed, SystemEnvironment
     from ..line import Line, LineType
     from ..system.model import Body, MooringSystem, SystemLine, SystemPoint
 
     label = md.path or "MoorDyn file"
     rho, g = md.water_density, md.gravity
-    if rho <= 0 or g <= 0:
-        which = "WtrDnsty" if rho <= 0 else "g"
-        raise InputError(f"{label}: option {which} = {rho if rho <= 0 else g:g} switches "
-                         f"{'buoyancy' if rho <= 0 else 'gravity'} off, which a seacable environment cannot "
-                         "(water density and gravity must be > 0). Suggested fix: give WtrDnsty and g their "
-                         "physical values for a mooring analysis.")
-    if not md.lines:
-        raise InputError(f"{label}: the deck has no lines; a seacable mooring system needs at least one line "
-                         "(MoorDyn runs rods and bodies alone). Suggested fix: add the mooring lines.")
     turbine_positions = dict(turbine_positions or {})
     unplaced: list[int] = []
     bodies_in = {b.id: b for b in md.bodies}
@@ -1990,5 +1984,5 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                          f"{format_validation_error(exc)}") from None
     except InputError as exc:
         raise InputError(f"{label}: the deck does not make a seacable mooring system: {exc}") from None
-    env = Environment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
+    env = SystemEnvironment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
     return system, env

@@ -159,7 +159,7 @@ class MooringModel:
 
 def _band_order(net: Network, free: np.ndarray) -> np.ndarray:
     """Free nodes in reverse Cuthill-McKee order (a narrow band for networks of several lines)."""
-    if len(net.line_nodes) == 1:
+    if len(net.line_nodes) == 1 or free.size == 0:
         return free
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import reverse_cuthill_mckee
