@@ -1690,7 +1690,8 @@ class _Rigid:
         self.inertia = np.zeros((3, 3))  # about the reference point, body axes
         self.volume, self.vfirst = 0.0, np.zeros(3)
         self.awp, self.iwp = 0.0, np.zeros(2)
-        self.added, self.drag = np.zeros(3), np.zeros(3)  # translational, body axes
+        self.added = np.zeros((6, 6))  # about the reference point, body axes
+        self.drag = np.zeros(3)  # translational, body axes
 
     def add_mass(self, m, c, inertia_cg):
         c = np.asarray(c, float)
@@ -1713,14 +1714,24 @@ class _Rigid:
         return self.inertia - self.mass * (c @ c * np.eye(3) - np.outer(c, c))
 
 
+def _added_about_reference(a3, r) -> np.ndarray:
+    """6x6 added mass about the reference point of a 3x3 added mass ``a3`` at ``r`` (body axes)."""
+    S = np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
+    return np.block([[a3, -a3 @ S], [S @ a3, -S @ a3 @ S]])
+
+
 def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body, ref, R, rho):
     """Add a rod with ends ``a_body``/``b_body`` (body axes) to a body at global ``ref`` with rotation ``R``.
 
     Mass ``m L`` at the middle, a slender cylinder's inertia; the displaced volume of the part below
     z = 0 at this pose, at its centroid (MoorDyn's rods are buoyant over their submerged length);
     a rod piercing the surface adds its cross-section ``pi d^2 / 4 / |cos(tilt)|`` to the waterplane
-    and its second moments. Added mass ``Ca rho V`` normal to the rod and drag ``rho Cd d L / 2``
-    normal to it go onto the translations (the end terms ``CaEnd``/``CdEnd`` along the axis).
+    and its second moments. Added mass ``Ca rho A`` per metre normal to the rod (and the end term
+    ``CaEnd rho pi d^3 / 12`` along its axis, at the middle of the submerged part) is integrated
+    along the submerged part into the 6x6 added mass about the reference point (a point ``r`` of
+    the rod moves at ``v + w x r``, so its added mass ``a`` adds ``[[a, -a S], [S a, -S a S]]``,
+    ``S = skew(r)``); drag ``rho Cd d L / 2`` normal to it goes onto the translations (``CdEnd``
+    along the axis).
     """
     a, b = np.asarray(a_body, float), np.asarray(b_body, float)
     length = float(np.linalg.norm(b - a))
@@ -1747,8 +1758,13 @@ def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body,
     if sub > 0:
         rigid.add_volume(area * sub, a + (frac_lo + frac_hi) / 2 * (b - a))
         normal = np.eye(3) - np.outer(u, u)
-        rigid.added += np.diag(rt.added_mass_normal * rho * area * sub * normal) + \
-            rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * u**2
+        per_length = rt.added_mass_normal * rho * area * normal
+        # 3-point Gauss-Legendre along the submerged part: exact for the quadratic -S a S
+        for x, wt in zip((-math.sqrt(0.6), 0.0, math.sqrt(0.6)), (5 / 9, 8 / 9, 5 / 9)):
+            frac = frac_lo + (frac_hi - frac_lo) * (1 + x) / 2
+            rigid.added += _added_about_reference(per_length * sub * wt / 2, a + frac * (b - a))
+        end = rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * np.outer(u, u)
+        rigid.added += _added_about_reference(end, a + (frac_lo + frac_hi) / 2 * (b - a))
         rigid.drag += np.diag(0.5 * rho * rt.drag_normal * rt.diameter * sub * normal) + \
             0.5 * rho * rt.drag_end * area * u**2
 
@@ -1823,7 +1839,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         if b.attachment == "turbine":
             tx, ty, tz = turbine_positions.get(b.turbine, (0.0, 0.0, 0.0))
             position = (b.position[0] + tx, b.position[1] + ty, b.position[2] + tz, *b.position[3:])
-        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient)
+        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient,
+                          volume=b.volume)
         r = _Rigid()
         r.add_mass(b.mass, b.center_of_gravity, np.diag(b.inertia))
         r.add_volume(b.volume, (0.0, 0.0, 0.0))  # MoorDyn: the body's buoyancy acts at its reference point
@@ -1959,12 +1976,12 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
     for name, s in spec.items():
         r = rigid[name]
         drag = body_quad[name].copy()
-        added = np.zeros(6)
+        added = r.added.copy()
         if "drag" in s:
             drag += 0.5 * rho * np.asarray(s["drag"])
-            added[:3] += np.asarray(s["ca"]) * rho * r.volume
+            # MoorDyn: the body's Ca acts on its own volume (its rods carry their own added mass)
+            added[:3, :3] += np.diag(np.broadcast_to(np.asarray(s["ca"], float) * rho * s["volume"], 3))
         drag[:3] += r.drag
-        added[:3] += r.added
         inertia = r.inertia_cg()
         bodies[name] = Body(
             kind=s["kind"], position=tuple(float(v) for v in s["position"]), mass=r.mass,
@@ -1972,7 +1989,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
             inertia=tuple(float(max(v, 0.0)) for v in np.diag(inertia)), volume=r.volume,
             center_of_buoyancy=tuple(float(v) for v in r.cb()), waterplane_area=r.awp,
             waterplane_moments=tuple(float(v) for v in r.iwp),
-            added_mass=tuple(tuple(float(v) for v in row) for row in np.diag(added)) if added.any() else None,
+            added_mass=tuple(tuple(float(v) for v in row) for row in added) if added.any() else None,
             quadratic_damping=tuple(tuple(float(v) for v in row) for row in np.diag(drag)) if drag.any() else None,
             linear_damping=(tuple(tuple(float(v) for v in row) for row in np.diag(body_lin[name]))
                             if body_lin[name].any() else None),
