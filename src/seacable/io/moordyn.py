@@ -1769,15 +1769,39 @@ def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body,
             0.5 * rho * rt.drag_end * area * u**2
 
 
+def _turbine_pose(label, n, value) -> tuple[float, ...]:
+    """A ``turbine_positions`` entry as six floats (x, y, z [m], roll, pitch, yaw [rad])."""
+    v = np.asarray(value, float).ravel()
+    if v.size not in (3, 6) or not np.all(np.isfinite(v)):
+        raise InputError(f"{label}: turbine_positions[{n}] must be (x, y, z) [m] or (x, y, z, roll, pitch, yaw) "
+                         f"[m, rad], got {value!r}. Suggested fix: give the platform reference point of turbine {n} "
+                         "(FAST.Farm's WT_X, WT_Y, WT_Z plus ElastoDyn's PtfmSurge, PtfmSway, PtfmHeave).")
+    return tuple(float(x) for x in np.r_[v, np.zeros(6 - v.size)])
+
+
+def _turbine_shift(label, poses, n) -> tuple[float, float, float]:
+    """The translation of turbine ``n`` for a body or rod on it (refused if the turbine is rotated)."""
+    pose = poses.get(n, (0.0,) * 6)
+    if any(pose[3:]):
+        raise InputError(f"{label}: a body or rod is on turbine {n}, whose turbine_positions entry rotates it "
+                         f"({pose[3:]} rad); seacable moves bodies and rods on a turbine by its position only. "
+                         f"Suggested fix: give turbine_positions[{n}] as (x, y, z).")
+    return pose[:3]
+
+
 def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
     """The deck as a :class:`~seacable.system.model.MooringSystem` and its :class:`~seacable.environment.Environment`.
 
     Mapping (names: ``point<ID>``, ``body<ID>``, ``rod<ID>``, ``turbine<N>``, ``line<ID>``):
 
     - points: Fixed -> ``fixed``; Free/Connect -> ``free`` (mass, volume, C_D A, added mass
-      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>``; TurbineN -> on the
+      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>`` (its mass and volume
+      lumped into the body's, as MoorDyn); TurbineN -> on the
       prescribed body ``turbine<N>`` (FAST.Farm places turbine N; the deck does not say where:
-      ``turbine_positions`` ``{N: (x, y, z)}``, default the origin, with a SeacableWarning).
+      ``turbine_positions`` ``{N: (x, y, z)}`` or ``{N: (x, y, z, roll, pitch, yaw)}`` [m, rad], the
+      platform reference point of turbine N: FAST.Farm's ``WT_X, WT_Y, WT_Z`` plus ElastoDyn's
+      initial platform displacements; default the origin, with a SeacableWarning). Bodies and rods
+      on a turbine are moved with its position (a rotated turbine carries points only).
     - bodies: free/fixed/coupled -> ``free``/``fixed``/``prescribed`` (CoupledPinned: prescribed
       and ``pinned``). Mass, centre of gravity and inertia as written; MoorDyn's body volume acts
       at the reference point and bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
@@ -1814,7 +1838,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
 
     label = md.path or "MoorDyn file"
     rho, g = md.water_density, md.gravity
-    turbine_positions = dict(turbine_positions or {})
+    turbine_positions = {int(n): _turbine_pose(label, n, v) for n, v in (turbine_positions or {}).items()}
     unplaced: list[int] = []
     bodies_in = {b.id: b for b in md.bodies}
     rods_in = {r.id: r for r in md.rods}
@@ -1827,8 +1851,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         if name not in spec:
             if n not in turbine_positions:
                 unplaced.append(n)
-            x, y, z = turbine_positions.get(n, (0.0, 0.0, 0.0))
-            spec[name] = dict(kind="prescribed", position=(x, y, z, 0.0, 0.0, 0.0), pinned=False)
+            spec[name] = dict(kind="prescribed", position=turbine_positions.get(n, (0.0,) * 6), pinned=False)
             rigid[name] = _Rigid()
         return name
 
@@ -1837,7 +1860,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[b.attachment]
         position = b.position
         if b.attachment == "turbine":
-            tx, ty, tz = turbine_positions.get(b.turbine, (0.0, 0.0, 0.0))
+            tx, ty, tz = _turbine_shift(label, turbine_positions, b.turbine)
             position = (b.position[0] + tx, b.position[1] + ty, b.position[2] + tz, *b.position[3:])
         spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient,
                           volume=b.volume)
@@ -1864,8 +1887,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         name = f"rod{rod.id}"
         a, bvec = np.asarray(rod.end_a, float), np.asarray(rod.end_b, float)
         if rod.attachment == "turbine":
-            a = a + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
-            bvec = bvec + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            a = a + np.asarray(_turbine_shift(label, turbine_positions, rod.turbine))
+            bvec = bvec + np.asarray(_turbine_shift(label, turbine_positions, rod.turbine))
             turbine(rod.turbine)
         axis = bvec - a
         length = float(np.linalg.norm(axis))
@@ -1901,6 +1924,11 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         common = dict(mass=p.mass, volume=p.volume, drag_area=p.drag_area,
                       added_mass=p.added_mass_coefficient * rho * p.volume)
         if p.attachment == "body":
+            # MoorDyn lumps a point's mass and volume into the body it is on: so does the conversion (the
+            # body's mass, centre of gravity, inertia and buoyancy; the dynamics need the body's own mass)
+            rigid[f"body{p.body}"].add_mass(p.mass, p.position, np.zeros((3, 3)))
+            rigid[f"body{p.body}"].add_volume(p.volume, p.position)
+            common.update(mass=0.0, volume=0.0)
             points[f"point{p.id}"] = SystemPoint(kind="body", body=f"body{p.body}", position=p.position, **common)
         elif p.attachment == "turbine":
             points[f"point{p.id}"] = SystemPoint(kind="body", body=turbine(p.turbine), position=p.position, **common)

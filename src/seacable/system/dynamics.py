@@ -745,6 +745,8 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if body.kind == "free" and body.mass <= 0:
             raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
+        if body.kind == "free":
+            body.check_accelerable(name)  # a singular mass matrix: one clear message, not a LinAlgError
     env = case.environment
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     moving_water = env.waves is not None or (env.current.speed if env.current.depths is None

@@ -171,6 +171,40 @@ class Body(Model):
         m = getattr(self, key)
         return np.zeros((6, 6)) if m is None else np.asarray(m, float)
 
+    def mass_matrix(self) -> np.ndarray:
+        """The 6x6 mass matrix about the reference point in body axes: the rigid body's (mass at the centre of
+        gravity, ``inertia`` about it) plus ``added_mass``. [kg, kg m, kg m^2]"""
+        c = np.asarray(self.center_of_gravity, float)
+        S = np.array([[0.0, -c[2], c[1]], [c[2], 0.0, -c[0]], [-c[1], c[0], 0.0]])
+        m = self.mass
+        rigid = np.block([[m * np.eye(3), -m * S], [m * S, np.diag(self.inertia) - m * S @ S]])
+        return rigid + self.matrix("added_mass")
+
+    def check_accelerable(self, name: str) -> None:
+        """Refuse a free body whose mass matrix is singular in a free direction (the dynamics solve with it).
+
+        Raises
+        ------
+        InputError
+            Naming the body and the direction nothing gives inertia to.
+        """
+        from ..errors import InputError
+
+        M = self.mass_matrix()
+        free = slice(3, 6) if self.pinned else slice(0, 6)
+        block = 0.5 * (M[free, free] + M[free, free].T)
+        values, vectors = np.linalg.eigh(block)
+        if values[0] > 1e-12 * max(values[-1], 1e-300):
+            return
+        v = vectors[:, 0]
+        what = "rotation about" if self.pinned else "motion along (x, y, z, roll, pitch, yaw)"
+        raise InputError(
+            f"bodies.{name}: its mass matrix about the reference point (mass {self.mass:g} kg, inertia "
+            f"{tuple(self.inertia)} kg m^2 about the centre of gravity, added mass) gives no inertia to the "
+            f"{what} ({', '.join(f'{x:.3g}' for x in v)}), so the dynamics cannot accelerate it (a point mass with "
+            "no inertia of its own about an axis through it). Suggested fix: give the body its moments of inertia "
+            "(inertia: Ixx, Iyy, Izz > 0) or an added-mass matrix.")
+
 
 class SystemLine(Model):
     """A line from point ``end_a`` to point ``end_b``.
