@@ -359,6 +359,10 @@ def test_gravity_off_leaves_straight_lines_stretched_by_hookes_law():
         assert eq.end_b_tension[k] == pytest.approx(ea * (1.0 / 0.9 - 1.0), rel=1e-9)
     assert eq.end_a_tension[6] == pytest.approx(0.0, abs=1e-9 * ea)
     assert np.allclose(eq.body_position[0][:3], (0.0, 0.0, 5.0), atol=1e-9)
+    # in time (released where the deck puts it) nothing moves: the same tensions throughout, 1e-9
+    _, _, ds = _run_in_time("MoorDyn/tests/Mooring/body_tests/rotatingBody.txt")
+    assert np.allclose(ds["fairlead_tension"].values[:, :6], ea * (1.0 / 0.9 - 1.0), rtol=1e-9)
+    assert np.allclose(ds["body_position"].values[:, 0, :3], (0.0, 0.0, 5.0), atol=1e-9)
 
     deck = "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt"
     md, eq = _solve(deck)
