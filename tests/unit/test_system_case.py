@@ -139,6 +139,27 @@ def test_a_held_body_with_no_lines_is_part_of_the_system(change):
     assert np.allclose(ds["fairlead_tension"].values, base["fairlead_tension"].values, rtol=1e-12, equal_nan=True)
 
 
+@pytest.mark.parametrize("damaged, expected", [
+    (["line4"], ("damaged condition (analysis.damaged_lines ['line4'] removed): bodies.marker: a free body that no "
+                 "line ends on has no horizontal restoring")),
+    (["line1", "line2", "line3", "line4"], "removes every line"),
+])
+def test_a_damaged_system_that_leaves_a_body_without_lines_is_refused_before_solving(tmp_path, capsys, damaged,
+                                                                                    expected):
+    data = _data()
+    data["bodies"]["marker"] = {"mass": 1.0e3, "volume": 2.0, "waterplane_area": 1.0,
+                                "position": [-500.0, 0.0, 0.0, 0.0, 0.0, 0.0]}  # line4 reaches it from anchor1
+    data["points"]["marker_eye"] = {"kind": "body", "body": "marker", "position": [0.0, 0.0, -1.0]}
+    data["lines"]["line4"] = {"line_type": "chain", "length": 200.0, "end_a": "anchor1", "end_b": "marker_eye"}
+    data["analysis"]["damaged_lines"] = damaged
+    path = tmp_path / "d.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["validate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert expected in err
+
+
 def test_offsets_needs_a_free_body_and_increasing_loads():
     data = _data(WATCH)
     for change, expected in (({"body": "bouy"}, "body 'bouy' is not defined (bodies: buoy). Did you mean 'buoy'?"),
