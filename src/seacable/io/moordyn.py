@@ -1587,7 +1587,9 @@ class MoorDynCase:
     def system_case(self):
         """The deck as a :class:`~seacable.system.case.SystemCase`: ``system_static``, or with a duration
         ``system_dynamic`` with the deck's ``FAILURE`` rows (what :func:`seacable.run` runs for a deck with
-        bodies, rods or points on a body).
+        bodies, rods or points on a body), started from the static equilibrium, or with the free bodies
+        held where the deck puts them when a free body has no line nor horizontal restoring (no static
+        equilibrium; MoorDyn starts them so).
 
         Raises
         ------
@@ -1608,9 +1610,16 @@ class MoorDynCase:
         if self.duration is None:
             analysis = SystemStaticAnalysis(max_strain=_DECK_MAX_STRAIN)
         else:
+            from ..system.run import check_bodies_without_lines
+
+            try:  # a free body nothing holds has no static start: released where the deck puts it, as MoorDyn
+                check_bodies_without_lines(system)
+                start = "equilibrium"
+            except InputError:
+                start = "held"
             analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
                                              output_interval=self.output_interval,
-                                             failures=_line_failures(self.data))
+                                             failures=_line_failures(self.data), start=start)
         return SystemCase(name=self.name, description=f"MoorDyn file {label}", environment=environment,
                           points=system.points, bodies=system.bodies, lines=system.lines, analysis=analysis)
 
