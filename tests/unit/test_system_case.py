@@ -604,3 +604,20 @@ def test_a_system_without_lines_has_an_empty_line_dimension_that_writes_and_plot
     assert dyn.sizes["line"] == 0 and np.all(np.isfinite(z)) and z[-1] > z[0]
     dyn.to_netcdf(tmp_path / "rod_dyn.nc")
     assert plot_system_dynamic(dyn)
+
+
+def test_a_free_body_without_lines_held_by_its_hydrostatic_matrix_has_an_equilibrium():
+    """A free body no line ends on with a 6x6 hydrostatic matrix restoring every direction (a user's model of a
+    moored or dynamically positioned hull) has an equilibrium: under a horizontal load F it moves F / K11, and its
+    net buoyancy (rho V - m) g lifts it by that over K33. Closed form of a linear spring, 1e-9."""
+    k = [2.0e5, 3.0e5, 4.0e6, 1.0e9, 1.0e9, 5.0e8]
+    data = {"name": "dp", "environment": {"depth": 100.0},
+            "bodies": {"hull": {"mass": 1.0e6, "volume": 1000.0, "inertia": [1e9, 1e9, 1e9],
+                                "hydrostatic_stiffness": [[k[i] if i == j else 0.0 for j in range(6)]
+                                                          for i in range(6)],
+                                "external_force": [1.0e5, 0.0, 0.0, 0.0, 0.0, 0.0]}},
+            "analysis": {"type": "system_static"}}
+    ds = sc.run(parse_case(data))
+    assert ds.sizes["line"] == 0
+    assert ds["body_x"].item() == pytest.approx(1.0e5 / k[0], rel=1e-9)
+    assert ds["body_z"].item() == pytest.approx((1025.0 * 1000.0 - 1.0e6) * 9.81 / k[2], rel=1e-9)

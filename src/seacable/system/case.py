@@ -275,7 +275,8 @@ class SystemCase(Model):
         Raises
         ------
         InputError
-            If removing the lines leaves a body with no line.
+            If it removes every line (a body left with none is refused by the statics when nothing
+            else holds it: :func:`seacable.system.run.check_bodies_without_lines`).
         """
         names = getattr(self.analysis, "damaged_lines", ())
         if not names:

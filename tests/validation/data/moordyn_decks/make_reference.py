@@ -129,7 +129,7 @@ def run(deck: Path) -> dict:
 
     MoorDyn writes its .out and .log files beside the deck, so both codes read a copy of the deck's folder
     in a temporary folder: the vendored data stays as it is."""
-    rel = deck.relative_to(HERE).as_posix()
+    rel = deck.relative_to(HERE).as_posix() if deck.is_relative_to(HERE) else None  # other tests' decks too
     # a deck (or a table beside it) naming a file one folder up (the SYROPE decks' '../owc.dat') is copied with
     # that folder
     up = any("../" in f.read_text(errors="replace") for f in deck.parent.iterdir()
