@@ -16,7 +16,7 @@ from pydantic import Field, model_validator
 from ._model import Model, quantity
 from .errors import SeacableWarning
 
-__all__ = ["Current", "Seabed", "Waves", "Environment", "SystemEnvironment"]
+__all__ = ["Current", "Environment", "Seabed", "SystemEnvironment", "Waves"]
 
 
 def _warn_if_degrees(name: str, value: float, limit: float) -> None:
@@ -205,7 +205,7 @@ class SystemEnvironment(Environment):
         9.81, description="Gravity; 0 for no weight nor buoyancy. [m/s^2]")
 
     @model_validator(mode="after")
-    def _check(self) -> "SystemEnvironment":
+    def _check(self) -> SystemEnvironment:
         if self.water_density != 0.0 and not 900.0 <= self.water_density <= 1100.0:
             warnings.warn(f"environment.water_density = {self.water_density:g} kg/m^3 is far from "
                           "water's ~1000-1030 kg/m^3 (0 switches buoyancy off).", SeacableWarning, stacklevel=3)

@@ -136,7 +136,7 @@ def test_deck_statics_solve_or_say_why(deck):
         with pytest.raises((InputError, NoSolutionError), match=NO_STATICS[deck]):
             _solve(deck)
         return
-    md, eq = _solve(deck)
+    _, eq = _solve(deck)
     assert np.all(np.isfinite(eq.end_a_tension)) and np.all(np.isfinite(eq.end_b_tension))
     assert np.all(np.isfinite(eq.body_position)) and np.all(np.isfinite(eq.point_position))
 
@@ -427,7 +427,7 @@ def test_shared_mooring_agrees_with_fast_farm_where_its_moordyn_had_settled():
     gives AnchTen1-4 and FairTen1-5 within 0.03 % of seacable (1 %: MoorDyn's lumped mass, as above). Its FairTen6-7
     (turbine 2's slack downwind lines, 1.129e6 and 1.118e6 N) are still relaxing (-4.5 % over the first 4 s of the
     run) and are not compared; MoorPy agrees with seacable on every line to 1e-4 (test_statics_agree_with_moorpy)."""
-    md, eq = _solve("r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat")
+    _, eq = _solve("r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat")
     anchor = (2.7112618e6, 2.5198362e6, 2.7155732e6, 3.0376860e6)
     fair = (2.7090642e6, 2.5200678e6, 2.7176622e6, 3.0598970e6, 3.0300605e6)
     assert np.allclose(eq.end_a_tension[:4], anchor, rtol=1e-2)

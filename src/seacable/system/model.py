@@ -21,7 +21,7 @@ import math
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 
 from .._model import Model, quantity, suggest
 from ..line import Line

@@ -160,7 +160,7 @@ def _place_turbines(path: Path, poses: dict) -> None:
     lines = path.read_text().splitlines()
     for i, line in enumerate(lines):
         tokens = line.split()
-        m = re.fullmatch(r"turbine(\d+)", tokens[1], re.I) if len(tokens) >= 5 else None
+        m = re.fullmatch(r"turbine(\d+)", tokens[1], re.IGNORECASE) if len(tokens) >= 5 else None
         if m is None:
             continue
         pose = poses[int(m.group(1))]
