@@ -16,7 +16,7 @@ from pydantic import Field, model_validator
 from ._model import Model, quantity
 from .errors import SeacableWarning
 
-__all__ = ["Current", "Seabed", "Waves", "Environment"]
+__all__ = ["Current", "Environment", "Seabed", "SystemEnvironment", "Waves"]
 
 
 def _warn_if_degrees(name: str, value: float, limit: float) -> None:
@@ -176,4 +176,41 @@ class Environment(Model):
         if not 900.0 <= self.water_density <= 1100.0:
             warnings.warn(f"environment.water_density = {self.water_density:g} kg/m^3 is far from "
                           "water's ~1000-1030 kg/m^3.", SeacableWarning, stacklevel=3)
+        return self
+
+
+class SystemEnvironment(Environment):
+    """The environment of a mooring system (:class:`~seacable.system.case.SystemCase`).
+
+    As :class:`Environment`, except that gravity and water density may be 0, as MoorDyn's own test
+    decks use them to switch effects off:
+
+    - ``gravity: 0`` switches gravity off: nothing has weight nor buoyancy (lines, points and bodies),
+      no waterplane restoring; masses keep their inertia in the dynamics. Waves need gravity and are
+      refused.
+    - ``water_density: 0`` switches the water off: no buoyancy (lines weigh ``m g`` per metre, bodies
+      and points their weight in air), no waterplane restoring, no drag and no added mass.
+
+    Parameters
+    ----------
+    water_density
+        Sea water density; 0 for no buoyancy nor hydrodynamic loads. [kg/m^3]
+    gravity
+        Acceleration of gravity; 0 for no weight nor buoyancy. [m/s^2]
+    """
+
+    water_density: quantity("kg/m^3", ge=0, fix="sea water is about 1025 kg/m^3 (0 switches buoyancy off).") = \
+        Field(1025.0, description="Water density; 0 for no buoyancy nor hydrodynamic loads. [kg/m^3]")
+    gravity: quantity("m/s^2", ge=0, fix="give g, e.g. 9.81 m/s^2 (0 switches gravity off).") = Field(
+        9.81, description="Gravity; 0 for no weight nor buoyancy. [m/s^2]")
+
+    @model_validator(mode="after")
+    def _check(self) -> SystemEnvironment:
+        if self.water_density != 0.0 and not 900.0 <= self.water_density <= 1100.0:
+            warnings.warn(f"environment.water_density = {self.water_density:g} kg/m^3 is far from "
+                          "water's ~1000-1030 kg/m^3 (0 switches buoyancy off).", SeacableWarning, stacklevel=3)
+        if self.gravity == 0.0 and self.waves is not None:
+            raise ValueError("environment.waves need gravity (their dispersion omega^2 = g k tanh(k d)), but "
+                             "environment.gravity = 0 m/s^2 switches it off. Suggested fix: give gravity (e.g. "
+                             "9.81 m/s^2) or drop the waves.")
         return self

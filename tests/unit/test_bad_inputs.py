@@ -154,6 +154,8 @@ def _case_corpus() -> list[Bad]:
             bad_values = {"nan": math.nan, "inf": math.inf, "text": "abc"}
             if key in POSITIVE and not isinstance(path[-1], int):
                 bad_values.update(zero=0, negative=-abs(value) if value else -1.0)
+                if "lines" in base and key in ("water_density", "gravity"):
+                    del bad_values["zero"]  # a system environment takes 0: gravity or buoyancy off (SystemEnvironment)
             for label, bad in bad_values.items():
                 out.append(Bad(f"case-{stem}-{_tag(path)}-{label}", [command, "{case}"], [key],
                                {"case": _set(base, path, bad)}))

@@ -110,22 +110,45 @@ def test_bad_system_files_name_the_key_the_value_and_a_fix(edit, expected):
     assert "\n" not in str(info.value)  # one message
 
 
-def test_a_body_with_no_lines_is_refused():
+def test_a_free_body_with_no_lines_and_no_horizontal_restoring_is_refused_before_solving(tmp_path, capsys):
+    """The issue's bad input 'a body with no lines': a free body no line ends on has no horizontal restoring, so
+    system_static has no equilibrium for it: one message naming the body, its surge and sway stiffness and the fixes
+    (seacable validate refuses it as run would). The file itself is valid (the dynamics run such a body)."""
     data = _data()
     data["bodies"]["spare"] = {"mass": 1.0e3, "volume": 1.0}
-    with pytest.raises(sc.CaseFileError, match=r"bodies\.spare: no line ends on this body"):
-        parse_case(data)
+    case = parse_case(data)
+    assert "spare" in case.bodies
+    path = tmp_path / "spare.yaml"
+    path.write_text(yaml.safe_dump(data))
+    assert main(["validate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("seacable: error:") == 1 and "Traceback" not in err
+    assert ("bodies.spare: a free body that no line ends on has no horizontal restoring (surge 0 N/m, sway 0 N/m"
+            in err and "Suggested fix:" in err and "system_dynamic" in err)
+
+
+@pytest.mark.parametrize("change", [{"kind": "fixed"}, {"kind": "prescribed"}])
+def test_a_held_body_with_no_lines_is_part_of_the_system(change):
+    """A fixed or prescribed body no line ends on stays where it is given; the rest of the system is unchanged
+    (the same tensions as without it: 1e-12, the same equilibrium solved twice)."""
+    base = sc.run(parse_case(_data()))
+    data = _data()
+    data["bodies"]["spare"] = {"mass": 1.0e3, "volume": 1.0, "position": [50.0, 0.0, -5.0, 0.0, 0.0, 0.0], **change}
+    ds = sc.run(parse_case(data))
+    assert ds["body_x"].sel(body="spare").values == pytest.approx(50.0)
+    assert np.allclose(ds["fairlead_tension"].values, base["fairlead_tension"].values, rtol=1e-12, equal_nan=True)
 
 
 @pytest.mark.parametrize("damaged, expected", [
-    (["line4"], ("analysis.damaged_lines ['line4']: the damaged system is not valid: bodies.marker: no line ends "
-                 "on this body")),
+    (["line4"], ("damaged condition (analysis.damaged_lines ['line4'] removed): bodies.marker: a free body that no "
+                 "line ends on has no horizontal restoring")),
     (["line1", "line2", "line3", "line4"], "removes every line"),
 ])
 def test_a_damaged_system_that_leaves_a_body_without_lines_is_refused_before_solving(tmp_path, capsys, damaged,
                                                                                     expected):
     data = _data()
-    data["bodies"]["marker"] = {"mass": 1.0e3, "volume": 2.0, "waterplane_area": 1.0}
+    data["bodies"]["marker"] = {"mass": 1.0e3, "volume": 2.0, "waterplane_area": 1.0,
+                                "position": [-500.0, 0.0, 0.0, 0.0, 0.0, 0.0]}  # line4 reaches it from anchor1
     data["points"]["marker_eye"] = {"kind": "body", "body": "marker", "position": [0.0, 0.0, -1.0]}
     data["lines"]["line4"] = {"line_type": "chain", "length": 200.0, "end_a": "anchor1", "end_b": "marker_eye"}
     data["analysis"]["damaged_lines"] = damaged
@@ -485,3 +508,116 @@ def test_an_interrupted_watch_circle_keeps_the_equilibria_it_found(monkeypatch):
     assert np.isnan(got[3:]).all()
     assert np.isnan(ds.offset.sel(condition="intact", heading=math.pi).values).all()
     assert np.isnan(ds.offset.sel(condition="damaged").values).all()
+
+
+# ----------------------------------------------------------------------------- gravity or water switched off, no lines
+
+def _two_line_case(gravity: float, water_density: float = 1025.0) -> dict:
+    """A 1e4 kg body (5 m^3) at z = -50 between two anchors 100 m away along x, held by taut 98 m lines to fairleads
+    1 m either side of its reference point (50 kg/m, EA 1e7 N); its centre of gravity 1 m below the reference."""
+    return {
+        "name": "taut", "line_types": {"rope": {"diameter": 0.1, "mass_per_length": 50.0, "axial_stiffness": 1.0e7}},
+        "environment": {"water_density": water_density, "gravity": gravity, "depth": 200.0},
+        "bodies": {"b": {"mass": 1.0e4, "volume": 5.0, "center_of_gravity": [0.0, 0.0, -1.0],
+                         "inertia": [1.0e4, 1.0e4, 1.0e4], "position": [0.0, 0.0, -50.0, 0.0, 0.0, 0.0]}},
+        "points": {"a1": {"kind": "fixed", "position": [-100.0, 0.0, -50.0]},
+                   "a2": {"kind": "fixed", "position": [100.0, 0.0, -50.0]},
+                   "f1": {"kind": "body", "body": "b", "position": [-1.0, 0.0, 0.0]},
+                   "f2": {"kind": "body", "body": "b", "position": [1.0, 0.0, 0.0]}},
+        "lines": {"l1": {"line_type": "rope", "length": 98.0, "end_a": "a1", "end_b": "f1"},
+                  "l2": {"line_type": "rope", "length": 98.0, "end_a": "a2", "end_b": "f2"}},
+        "analysis": {"type": "system_static"},
+    }
+
+
+def test_gravity_off_has_no_weight_effects():
+    """gravity: 0 (a system environment may switch it off, as MoorDyn's g = 0): nothing weighs, so the body stays at
+    z = -50 and the lines are straight, each carrying EA (99 / 98 - 1) at both ends. Closed form, 1e-9 relative
+    (straight weightless lines are exact). With gravity the same system sags (the body's net weight 4.7e4 N)."""
+    ds = sc.run(parse_case(_two_line_case(gravity=0.0)))
+    expect = 1.0e7 * (99.0 / 98.0 - 1.0)
+    assert np.allclose(ds["fairlead_tension"].sel(condition="intact").values, expect, rtol=1e-9)
+    assert np.allclose(ds["anchor_tension"].sel(condition="intact").values, expect, rtol=1e-9)
+    assert ds["body_z"].sel(condition="intact", body="b").item() == pytest.approx(-50.0, abs=1e-9)
+    assert np.allclose(ds["z"].sel(condition="intact").values, -50.0, atol=1e-9)  # the profiles are straight
+    heavy = sc.run(parse_case(_two_line_case(gravity=9.81)))
+    assert heavy["body_z"].sel(condition="intact", body="b").item() < -50.5
+
+
+def test_water_off_has_no_buoyancy():
+    """water_density: 0 (MoorDyn's WtrDnsty = 0): the body hangs from one vertical line with no buoyancy on it
+    nor on the line (its 5 m^3 and the rope's volume displace nothing): the top carries (M + m L) g, the bottom M g,
+    and the body hangs L + (M g L + m g L^2 / 2) / EA below the top. Closed form of a vertical elastic line, 1e-9."""
+    data = _two_line_case(gravity=9.81, water_density=0.0)
+    data["points"] = {"top": {"kind": "fixed", "position": [0.0, 0.0, -10.0]},
+                      "eye": {"kind": "body", "body": "b", "position": [0.0, 0.0, 0.0]}}
+    data["lines"] = {"l1": {"line_type": "rope", "length": 30.0, "end_a": "eye", "end_b": "top"}}
+    data["bodies"]["b"]["position"] = [0.0, 0.0, -40.0, 0.0, 0.0, 0.0]
+    ds = sc.run(parse_case(data))
+    g, M, m, L, ea = 9.81, 1.0e4, 50.0, 30.0, 1.0e7
+    assert ds["fairlead_tension"].item() == pytest.approx((M + m * L) * g, rel=1e-9)
+    assert ds["anchor_tension"].item() == pytest.approx(M * g, rel=1e-9)
+    assert ds["body_z"].item() == pytest.approx(-10.0 - L - (M * g * L + m * g * L**2 / 2) / ea, rel=1e-9)
+
+
+def test_only_system_environments_switch_gravity_or_water_off():
+    """A single-line case keeps its checks (gravity and density > 0); a system environment takes 0, but not waves
+    without gravity."""
+    from seacable.environment import Environment, SystemEnvironment
+
+    with pytest.raises(sc.InputError, match=r"gravity must be > 0"):
+        Environment.parse({"gravity": 0.0})
+    assert SystemEnvironment.parse({"gravity": 0.0, "water_density": 0.0}).gravity == 0.0
+    with pytest.raises(sc.InputError, match=r"waves need gravity"):
+        SystemEnvironment.parse({"gravity": 0.0, "waves": {"height": 1.0, "period": 8.0}})
+
+
+def _no_line_case(analysis: dict) -> dict:
+    """A 1 m pinned rod (10 kg, 0.0491 m^3, RodPinnedFloating of MoorDyn's tests), lying at z = -5: no lines."""
+    return {"name": "rod", "environment": {"depth": 10.0},
+            "bodies": {"rod": {"pinned": True, "mass": 10.0, "volume": 0.0490874, "center_of_gravity": [0, 0, 0.5],
+                               "center_of_buoyancy": [0, 0, 0.5], "inertia": [0.8724, 0.8724, 0.0781],
+                               "position": [0.0, 0.0, -5.0, 0.0, math.pi / 2, 0.0]}},
+            "analysis": analysis}
+
+
+def test_a_system_without_lines_has_an_empty_line_dimension_that_writes_and_plots(tmp_path):
+    """A system of bodies alone (MoorDyn runs rods without lines): the pinned buoyant rod turns upright (pitch 0)
+    and its pin holds its net buoyancy, (rho V - m) g = 395.35 N (closed form, 1e-9); the result has an empty
+    ``line`` dimension, is valid NetCDF and plots; so does a run in time (system_dynamic)."""
+    from seacable.plot.system import plot_system_dynamic, plot_system_static
+
+    ds = sc.run(parse_case(_no_line_case({"type": "system_static"})))
+    assert ds.sizes["line"] == 0
+    assert abs(ds["body_pitch"].item()) < 1e-7
+    assert ds["pin_reaction_z"].item() == pytest.approx(-(1025.0 * 0.0490874 - 10.0) * 9.81, rel=1e-9)
+    ds.to_netcdf(tmp_path / "rod.nc")
+    with xr.open_dataset(tmp_path / "rod.nc") as back:
+        assert back.sizes["line"] == 0 and back["body_pitch"].item() == pytest.approx(ds["body_pitch"].item())
+    assert plot_system_static(ds)
+    # in time the same rod, free (the dynamics hold no pin): released level, it rises
+    data = _no_line_case({"type": "system_dynamic", "duration": 0.2, "time_step": 0.01, "output_interval": 0.1,
+                          "start": "held"})
+    data["bodies"]["rod"]["pinned"] = False
+    dyn = sc.run(parse_case(data))
+    z = dyn["body_position"].sel(body="rod", dof="z").values
+    assert dyn.sizes["line"] == 0 and np.all(np.isfinite(z)) and z[-1] > z[0]
+    dyn.to_netcdf(tmp_path / "rod_dyn.nc")
+    assert plot_system_dynamic(dyn)
+
+
+def test_a_free_body_without_lines_held_by_its_hydrostatic_matrix_has_an_equilibrium():
+    """A free body no line ends on with a 6x6 hydrostatic matrix restoring every direction (a user's model of a
+    moored or dynamically positioned hull) has an equilibrium: under a horizontal load F it moves F / K11, and its
+    net buoyancy (rho V - m) g lifts it by that over K33. Closed form of a linear spring, 1e-9."""
+    k = [2.0e5, 3.0e5, 4.0e6, 1.0e9, 1.0e9, 5.0e8]
+    data = {"name": "dp", "environment": {"depth": 100.0},
+            "bodies": {"hull": {"mass": 1.0e6, "volume": 1000.0, "inertia": [1e9, 1e9, 1e9],
+                                "hydrostatic_stiffness": [[k[i] if i == j else 0.0 for j in range(6)]
+                                                          for i in range(6)],
+                                "external_force": [1.0e5, 0.0, 0.0, 0.0, 0.0, 0.0]}},
+            "analysis": {"type": "system_static"}}
+    ds = sc.run(parse_case(data))
+    assert ds.sizes["line"] == 0
+    assert ds["body_x"].item() == pytest.approx(1.0e5 / k[0], rel=1e-9)
+    assert ds["body_z"].item() == pytest.approx((1025.0 * 1000.0 - 1.0e6) * 9.81 / k[2], rel=1e-9)

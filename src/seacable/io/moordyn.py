@@ -1587,7 +1587,9 @@ class MoorDynCase:
     def system_case(self):
         """The deck as a :class:`~seacable.system.case.SystemCase`: ``system_static``, or with a duration
         ``system_dynamic`` with the deck's ``FAILURE`` rows (what :func:`seacable.run` runs for a deck with
-        bodies, rods or points on a body).
+        bodies, rods or points on a body), started from the static equilibrium, or with the free bodies
+        held where the deck puts them when a free body has no line nor horizontal restoring (no static
+        equilibrium; MoorDyn starts them so).
 
         Raises
         ------
@@ -1608,9 +1610,16 @@ class MoorDynCase:
         if self.duration is None:
             analysis = SystemStaticAnalysis(max_strain=_DECK_MAX_STRAIN)
         else:
+            from ..system.run import check_bodies_without_lines
+
+            try:  # a free body nothing holds has no static start: released where the deck puts it, as MoorDyn
+                check_bodies_without_lines(system)
+                start = "equilibrium"
+            except InputError:
+                start = "held"
             analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
                                              output_interval=self.output_interval,
-                                             failures=_line_failures(self.data))
+                                             failures=_line_failures(self.data), start=start)
         return SystemCase(name=self.name, description=f"MoorDyn file {label}", environment=environment,
                           points=system.points, bodies=system.bodies, lines=system.lines, analysis=analysis)
 
@@ -1690,7 +1699,8 @@ class _Rigid:
         self.inertia = np.zeros((3, 3))  # about the reference point, body axes
         self.volume, self.vfirst = 0.0, np.zeros(3)
         self.awp, self.iwp = 0.0, np.zeros(2)
-        self.added, self.drag = np.zeros(3), np.zeros(3)  # translational, body axes
+        self.added = np.zeros((6, 6))  # about the reference point, body axes
+        self.drag = np.zeros(3)  # translational, body axes
 
     def add_mass(self, m, c, inertia_cg):
         c = np.asarray(c, float)
@@ -1713,14 +1723,24 @@ class _Rigid:
         return self.inertia - self.mass * (c @ c * np.eye(3) - np.outer(c, c))
 
 
+def _added_about_reference(a3, r) -> np.ndarray:
+    """6x6 added mass about the reference point of a 3x3 added mass ``a3`` at ``r`` (body axes)."""
+    S = np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
+    return np.block([[a3, -a3 @ S], [S @ a3, -S @ a3 @ S]])
+
+
 def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body, ref, R, rho):
     """Add a rod with ends ``a_body``/``b_body`` (body axes) to a body at global ``ref`` with rotation ``R``.
 
     Mass ``m L`` at the middle, a slender cylinder's inertia; the displaced volume of the part below
     z = 0 at this pose, at its centroid (MoorDyn's rods are buoyant over their submerged length);
     a rod piercing the surface adds its cross-section ``pi d^2 / 4 / |cos(tilt)|`` to the waterplane
-    and its second moments. Added mass ``Ca rho V`` normal to the rod and drag ``rho Cd d L / 2``
-    normal to it go onto the translations (the end terms ``CaEnd``/``CdEnd`` along the axis).
+    and its second moments. Added mass ``Ca rho A`` per metre normal to the rod (and the end term
+    ``CaEnd rho pi d^3 / 12`` along its axis, at the middle of the submerged part) is integrated
+    along the submerged part into the 6x6 added mass about the reference point (a point ``r`` of
+    the rod moves at ``v + w x r``, so its added mass ``a`` adds ``[[a, -a S], [S a, -S a S]]``,
+    ``S = skew(r)``); drag ``rho Cd d L / 2`` normal to it goes onto the translations (``CdEnd``
+    along the axis).
     """
     a, b = np.asarray(a_body, float), np.asarray(b_body, float)
     length = float(np.linalg.norm(b - a))
@@ -1747,10 +1767,35 @@ def _add_rod(rigid: _Rigid, rod: MoorDynRod, rt: MoorDynRodType, a_body, b_body,
     if sub > 0:
         rigid.add_volume(area * sub, a + (frac_lo + frac_hi) / 2 * (b - a))
         normal = np.eye(3) - np.outer(u, u)
-        rigid.added += np.diag(rt.added_mass_normal * rho * area * sub * normal) + \
-            rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * u**2
+        per_length = rt.added_mass_normal * rho * area * normal
+        # 3-point Gauss-Legendre along the submerged part: exact for the quadratic -S a S
+        for x, wt in zip((-math.sqrt(0.6), 0.0, math.sqrt(0.6)), (5 / 9, 8 / 9, 5 / 9)):
+            frac = frac_lo + (frac_hi - frac_lo) * (1 + x) / 2
+            rigid.added += _added_about_reference(per_length * sub * wt / 2, a + frac * (b - a))
+        end = rt.added_mass_end * rho * (math.pi * rt.diameter**3 / 12) * np.outer(u, u)
+        rigid.added += _added_about_reference(end, a + (frac_lo + frac_hi) / 2 * (b - a))
         rigid.drag += np.diag(0.5 * rho * rt.drag_normal * rt.diameter * sub * normal) + \
             0.5 * rho * rt.drag_end * area * u**2
+
+
+def _turbine_pose(label, n, value) -> tuple[float, ...]:
+    """A ``turbine_positions`` entry as six floats (x, y, z [m], roll, pitch, yaw [rad])."""
+    v = np.asarray(value, float).ravel()
+    if v.size not in (3, 6) or not np.all(np.isfinite(v)):
+        raise InputError(f"{label}: turbine_positions[{n}] must be (x, y, z) [m] or (x, y, z, roll, pitch, yaw) "
+                         f"[m, rad], got {value!r}. Suggested fix: give the platform reference point of turbine {n} "
+                         "(FAST.Farm's WT_X, WT_Y, WT_Z plus ElastoDyn's PtfmSurge, PtfmSway, PtfmHeave).")
+    return tuple(float(x) for x in np.r_[v, np.zeros(6 - v.size)])
+
+
+def _turbine_shift(label, poses, n) -> tuple[float, float, float]:
+    """The translation of turbine ``n`` for a body or rod on it (refused if the turbine is rotated)."""
+    pose = poses.get(n, (0.0,) * 6)
+    if any(pose[3:]):
+        raise InputError(f"{label}: a body or rod is on turbine {n}, whose turbine_positions entry rotates it "
+                         f"({pose[3:]} rad); seacable moves bodies and rods on a turbine by its position only. "
+                         f"Suggested fix: give turbine_positions[{n}] as (x, y, z).")
+    return pose[:3]
 
 
 def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
@@ -1759,9 +1804,13 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
     Mapping (names: ``point<ID>``, ``body<ID>``, ``rod<ID>``, ``turbine<N>``, ``line<ID>``):
 
     - points: Fixed -> ``fixed``; Free/Connect -> ``free`` (mass, volume, C_D A, added mass
-      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>``; TurbineN -> on the
+      ``Ca rho V``); Vessel/Coupled -> ``coupled``; BodyN -> on ``body<N>`` (its mass and volume
+      lumped into the body's, as MoorDyn); TurbineN -> on the
       prescribed body ``turbine<N>`` (FAST.Farm places turbine N; the deck does not say where:
-      ``turbine_positions`` ``{N: (x, y, z)}``, default the origin, with a SeacableWarning).
+      ``turbine_positions`` ``{N: (x, y, z)}`` or ``{N: (x, y, z, roll, pitch, yaw)}`` [m, rad], the
+      platform reference point of turbine N: FAST.Farm's ``WT_X, WT_Y, WT_Z`` plus ElastoDyn's
+      initial platform displacements; default the origin, with a SeacableWarning). Bodies and rods
+      on a turbine are moved with its position (a rotated turbine carries points only).
     - bodies: free/fixed/coupled -> ``free``/``fixed``/``prescribed`` (CoupledPinned: prescribed
       and ``pinned``). Mass, centre of gravity and inertia as written; MoorDyn's body volume acts
       at the reference point and bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
@@ -1779,32 +1828,26 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
       statics of :mod:`seacable.system.statics` use that constant EA, a SeacableWarning says so);
       a viscoelastic ``EA_s|EA_d`` to ``axial_stiffness = EA_s`` and ``dynamic_axial_stiffness``.
       The axial damping BA is not in the data model (a dynamics setting).
-    - environment: WtrDnsty, g, WtrDpth (or the deepest point, as MoorDyn), FrictionCoefficient.
-      MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - environment (a :class:`~seacable.environment.SystemEnvironment`): WtrDnsty, g, WtrDpth (or
+      the deepest point, as MoorDyn), FrictionCoefficient. ``g = 0`` (no weight nor buoyancy) and
+      ``WtrDnsty = 0`` (no buoyancy nor hydrodynamics) are kept: MoorDyn's own tests switch gravity
+      or buoyancy off so. MoorDyn's soft seabed (kBot) becomes a rigid one.
+    - a deck without lines (rods or bodies alone), or with bodies no line ends on, is a system all
+      the same (the dynamics run it; the statics need each free body restored).
     - ``FAILURE`` rows stay in ``md.failures`` (a dynamics input).
 
     Raises
     ------
     InputError
-        A deck without lines, with g = 0 or water density 0 (MoorDyn test decks that switch
-        gravity or buoyancy off), or one the data model refuses (a body no line ends on).
+        A deck the data model refuses (a line end on a point that does not exist, ...).
     """
-    from ..environment import Environment, Seabed
+    from ..environment import Seabed, SystemEnvironment
     from ..line import Line, LineType
     from ..system.model import Body, MooringSystem, SystemLine, SystemPoint
 
     label = md.path or "MoorDyn file"
     rho, g = md.water_density, md.gravity
-    if rho <= 0 or g <= 0:
-        which = "WtrDnsty" if rho <= 0 else "g"
-        raise InputError(f"{label}: option {which} = {rho if rho <= 0 else g:g} switches "
-                         f"{'buoyancy' if rho <= 0 else 'gravity'} off, which a seacable environment cannot "
-                         "(water density and gravity must be > 0). Suggested fix: give WtrDnsty and g their "
-                         "physical values for a mooring analysis.")
-    if not md.lines:
-        raise InputError(f"{label}: the deck has no lines; a seacable mooring system needs at least one line "
-                         "(MoorDyn runs rods and bodies alone). Suggested fix: add the mooring lines.")
-    turbine_positions = dict(turbine_positions or {})
+    turbine_positions = {int(n): _turbine_pose(label, n, v) for n, v in (turbine_positions or {}).items()}
     unplaced: list[int] = []
     bodies_in = {b.id: b for b in md.bodies}
     rods_in = {r.id: r for r in md.rods}
@@ -1817,8 +1860,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         if name not in spec:
             if n not in turbine_positions:
                 unplaced.append(n)
-            x, y, z = turbine_positions.get(n, (0.0, 0.0, 0.0))
-            spec[name] = dict(kind="prescribed", position=(x, y, z, 0.0, 0.0, 0.0), pinned=False)
+            spec[name] = dict(kind="prescribed", position=turbine_positions.get(n, (0.0,) * 6), pinned=False)
             rigid[name] = _Rigid()
         return name
 
@@ -1827,9 +1869,10 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         kind = {"free": "free", "fixed": "fixed", "coupled": "prescribed", "turbine": "prescribed"}[b.attachment]
         position = b.position
         if b.attachment == "turbine":
-            tx, ty, tz = turbine_positions.get(b.turbine, (0.0, 0.0, 0.0))
+            tx, ty, tz = _turbine_shift(label, turbine_positions, b.turbine)
             position = (b.position[0] + tx, b.position[1] + ty, b.position[2] + tz, *b.position[3:])
-        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient)
+        spec[name] = dict(kind=kind, position=position, pinned=b.pinned, drag=b.drag_area, ca=b.added_mass_coefficient,
+                          volume=b.volume)
         r = _Rigid()
         r.add_mass(b.mass, b.center_of_gravity, np.diag(b.inertia))
         r.add_volume(b.volume, (0.0, 0.0, 0.0))  # MoorDyn: the body's buoyancy acts at its reference point
@@ -1853,8 +1896,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         name = f"rod{rod.id}"
         a, bvec = np.asarray(rod.end_a, float), np.asarray(rod.end_b, float)
         if rod.attachment == "turbine":
-            a = a + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
-            bvec = bvec + np.asarray(turbine_positions.get(rod.turbine, (0.0, 0.0, 0.0)))
+            a = a + np.asarray(_turbine_shift(label, turbine_positions, rod.turbine))
+            bvec = bvec + np.asarray(_turbine_shift(label, turbine_positions, rod.turbine))
             turbine(rod.turbine)
         axis = bvec - a
         length = float(np.linalg.norm(axis))
@@ -1890,6 +1933,11 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         common = dict(mass=p.mass, volume=p.volume, drag_area=p.drag_area,
                       added_mass=p.added_mass_coefficient * rho * p.volume)
         if p.attachment == "body":
+            # MoorDyn lumps a point's mass and volume into the body it is on: so does the conversion (the
+            # body's mass, centre of gravity, inertia and buoyancy; the dynamics need the body's own mass)
+            rigid[f"body{p.body}"].add_mass(p.mass, p.position, np.zeros((3, 3)))
+            rigid[f"body{p.body}"].add_volume(p.volume, p.position)
+            common.update(mass=0.0, volume=0.0)
             points[f"point{p.id}"] = SystemPoint(kind="body", body=f"body{p.body}", position=p.position, **common)
         elif p.attachment == "turbine":
             points[f"point{p.id}"] = SystemPoint(kind="body", body=turbine(p.turbine), position=p.position, **common)
@@ -1966,12 +2014,12 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
     for name, s in spec.items():
         r = rigid[name]
         drag = body_quad[name].copy()
-        added = np.zeros(6)
+        added = r.added.copy()
         if "drag" in s:
             drag += 0.5 * rho * np.asarray(s["drag"])
-            added[:3] += np.asarray(s["ca"]) * rho * r.volume
+            # MoorDyn: the body's Ca acts on its own volume (its rods carry their own added mass)
+            added[:3, :3] += np.diag(np.broadcast_to(np.asarray(s["ca"], float) * rho * s["volume"], 3))
         drag[:3] += r.drag
-        added[:3] += r.added
         inertia = r.inertia_cg()
         bodies[name] = Body(
             kind=s["kind"], position=tuple(float(v) for v in s["position"]), mass=r.mass,
@@ -1979,7 +2027,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
             inertia=tuple(float(max(v, 0.0)) for v in np.diag(inertia)), volume=r.volume,
             center_of_buoyancy=tuple(float(v) for v in r.cb()), waterplane_area=r.awp,
             waterplane_moments=tuple(float(v) for v in r.iwp),
-            added_mass=tuple(tuple(float(v) for v in row) for row in np.diag(added)) if added.any() else None,
+            added_mass=tuple(tuple(float(v) for v in row) for row in added) if added.any() else None,
             quadratic_damping=tuple(tuple(float(v) for v in row) for row in np.diag(drag)) if drag.any() else None,
             linear_damping=(tuple(tuple(float(v) for v in row) for row in np.diag(body_lin[name]))
                             if body_lin[name].any() else None),
@@ -1991,5 +2039,5 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                          f"{format_validation_error(exc)}") from None
     except InputError as exc:
         raise InputError(f"{label}: the deck does not make a seacable mooring system: {exc}") from None
-    env = Environment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
+    env = SystemEnvironment(water_density=rho, gravity=g, depth=md.water_depth, seabed=Seabed(friction=md.friction))
     return system, env

@@ -132,7 +132,7 @@ class MooringModel:
         self.buoyancy = net.mass_per_length * g - net.weight_per_length
         self.point_buoyancy = net.point_mass * g - net.point_weight
         # seabed damper ramp: half the mean static penetration of a node under its own weight
-        if self.water.seabed_stiffness > 0:
+        if self.water.seabed_stiffness > 0 and np.any(bedc > 0):  # no elements (bodies alone): no ramp
             sink = np.abs(self.weight) / (self.water.seabed_stiffness * np.maximum(bedc, 1e-300))
             ramp = 0.5 * float(np.median(sink[bedc > 0]))
         else:
@@ -184,7 +184,7 @@ class MooringModel:
 
 def _band_order(net: Network, free: np.ndarray) -> np.ndarray:
     """Free nodes in reverse Cuthill-McKee order (a narrow band for networks of several lines)."""
-    if len(net.line_nodes) == 1:
+    if len(net.line_nodes) == 1 or free.size == 0:
         return free
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import reverse_cuthill_mckee
@@ -221,7 +221,7 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
     stats = np.zeros(3)
-    step = max_step if max_step is not None else 0.5 * float(np.mean(net.length))
+    step = max_step if max_step is not None else (0.5 * float(np.mean(net.length)) if net.n_elements else 1.0)
     ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env, model.cur_depth,
                         model.cur_speed, tol, max_iter, step, F, M, tension, stats)
     if not ok:

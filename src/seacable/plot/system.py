@@ -278,7 +278,8 @@ def _dynamic_views(ds, plt):
     times = ", ".join(f"{t:g}" for t in shown)
     plan.set(xlabel="x [m]", ylabel="y [m]", title=f"Plan view at t = {times} s (darker: later)")
     plan.set_aspect("equal", adjustable="datalim")
-    plan.legend(fontsize=7)
+    if ds.sizes.get("line", 0):  # a system of bodies alone has no line to label
+        plan.legend(fontsize=7)
     depth = _depth(ds)
     if depth is not None:
         side.axhline(-depth, color="sienna", lw=1.2, label="seabed")
@@ -289,7 +290,8 @@ def _dynamic_views(ds, plt):
 
 
 def _system_dynamic(ds, plt):
-    figs = {"tensions": _dynamic_tensions(ds, plt), "system": _dynamic_views(ds, plt)}
+    figs = {"tensions": _dynamic_tensions(ds, plt)} if ds.sizes.get("line", 0) else {}  # no lines: no tensions
+    figs["system"] = _dynamic_views(ds, plt)
     if "body_position" in ds.variables and ds.sizes.get("body", 0):
         figs["bodies"] = _dynamic_bodies(ds, plt)
     return figs

@@ -201,10 +201,11 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         last.append(len(sub["a"]) - 1)
 
     kind = np.array(kind, int)
-    pos0 = np.array(pos0, float)
+    pos0 = np.array(pos0, float).reshape(-1, 3)  # (0, 3) for a system of bodies alone
     asm = Assembly(rho=rho, g=g, depth=depth, friction=env.seabed.friction, body_names=body_names,
                    free_bodies=free_bodies, node_kind=kind, node_body=np.array(nbody, int),
-                   node_rel=np.array(rel, float), node_pos0=pos0, node_force=np.array(force, float),
+                   node_rel=np.array(rel, float).reshape(-1, 3), node_pos0=pos0,
+                   node_force=np.array(force, float).reshape(-1, 3),
                    node_label=label, point_node=point_node,
                    **{f"sub_{k}": np.array(v, int if k in ("a", "b", "line") else float) for k, v in sub.items()},
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),

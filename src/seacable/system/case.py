@@ -38,7 +38,7 @@ from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest
 from ..case import _STAND_IN
-from ..environment import Environment
+from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import LineType
 from .dynamics import SystemDynamicAnalysis
@@ -187,10 +187,10 @@ class SystemCase(Model):
     name: str = Field("system", min_length=1)
     description: str = ""
     line_types: dict[str, LineType] = Field(default_factory=dict)
-    environment: Environment = Environment()
-    points: dict[str, SystemPoint] = Field(description="Points by name.")
+    environment: SystemEnvironment = SystemEnvironment()
+    points: dict[str, SystemPoint] = Field(default_factory=dict, description="Points by name.")
     bodies: dict[str, Body] = Field(default_factory=dict, description="Bodies by name.")
-    lines: dict[str, SystemLine] = Field(description="Lines by name.")
+    lines: dict[str, SystemLine] = Field(default_factory=dict, description="Lines by name.")
     analysis: SystemAnalysis
 
     @classmethod
@@ -275,7 +275,8 @@ class SystemCase(Model):
         Raises
         ------
         InputError
-            If removing the lines leaves a body with no line.
+            If it removes every line (a body left with none is refused by the statics when nothing
+            else holds it: :func:`seacable.system.run.check_bodies_without_lines`).
         """
         names = getattr(self.analysis, "damaged_lines", ())
         if not names:

@@ -427,7 +427,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         line_elements.append(np.arange(el0, el0 + n - 1))
         moved = [system.points[e].kind in ("body", "coupled") for e in ends]
         fairlead_end.append(0 if moved[0] and not moved[1] else 1)
-    P = np.vstack(props)
+    P = np.vstack(props) if props else np.zeros((0, len(fields)))  # no lines: bodies (and points) alone
     nn = len(pos)
     # a point no line ends at any more (its line fails there: the line's end has its own node) carries
     # nothing: held, and not tied
@@ -441,10 +441,10 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
 
     net = Network(
-        position=np.array(pos, float), kind=np.array(kind, np.int64), channel=np.array(chan, np.int64),
+        position=np.array(pos, float).reshape(-1, 3), kind=np.array(kind, np.int64), channel=np.array(chan, np.int64),
         point_mass=full(pm, "point_mass"), point_added_mass=full(pa, "point_added_mass"),
         point_weight=full(pw, "point_weight"), point_volume=full(pv, "point_volume"),
-        point_drag_area=full(pd, "point_drag_area"), elements=np.array(elements, np.int64),
+        point_drag_area=full(pd, "point_drag_area"), elements=np.array(elements, np.int64).reshape(-1, 2),
         length=P[:, 0], axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
         weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
         element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes), line_names=line_names,
@@ -528,11 +528,11 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
     stats = np.zeros(3)
-    step = 0.5 * float(np.mean(net.length))
+    step = 0.5 * float(np.mean(net.length)) if net.n_elements else 1.0  # no lines: bodies alone
     active = np.ones(len(fe.con_node), np.int64)
-    node_mass = float(np.max(net.mass_per_length * net.length))
+    node_mass = float(np.max(net.mass_per_length * net.length, initial=0.0))
     body_mass = float(np.max(fe.bpar[:, DK.B_MASS], initial=0.0)) + float(np.max(fe.badd[:, 0, 0], initial=0.0))
-    body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 else 1.0
+    body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 and node_mass > 0 else 1.0
     bargs = fe.body_args() if not held else tuple(np.zeros((0,) + a.shape[1:], a.dtype) for a in fe.body_args())
     ok = DK.coupled_static(X, qs, fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
                            fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
@@ -751,6 +751,8 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if body.kind == "free" and body.mass <= 0:
             raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
+        if body.kind == "free":
+            body.check_accelerable(name)  # a singular mass matrix: one clear message, not a LinAlgError
     env = case.environment
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     moving_water = env.waves is not None or (env.current.speed if env.current.depths is None
@@ -792,8 +794,10 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     return SystemDynamicSetup(fe, a)
 
 
-def _padded(per_line, width, fill=np.nan):
-    """Stack per-line arrays (..., k_i) into (..., line, width), NaN padded."""
+def _padded(per_line, width, fill=np.nan, lead=()):
+    """Stack per-line arrays (..., k_i) into (..., line, width), NaN padded (``lead`` + (0, width): no lines)."""
+    if not per_line:
+        return np.full(tuple(lead) + (0, width), fill)
     out = []
     for a in per_line:
         a = np.asarray(a, float)
@@ -806,18 +810,19 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     """The Dataset of a coupled run."""
     sysm = fe.system
     nl = len(fe.line_names)
-    nmax = max(len(n) for n in fe.line_nodes)
-    emax = max(len(e) for e in fe.line_elements)
+    nmax = max((len(n) for n in fe.line_nodes), default=0)
+    emax = max((len(e) for e in fe.line_elements), default=0)
+    nt = len(run.time)
     data = {}
     for k, name in enumerate("xyz"):
-        data[name] = var(("time", "line", "node"), _padded([run.position[:, nodes, k] for nodes in fe.line_nodes], nmax),
+        data[name] = var(("time", "line", "node"), _padded([run.position[:, nodes, k] for nodes in fe.line_nodes], nmax, lead=(nt,)),
                          "m", {"x": "x position", "y": "y position",
                                "z": "elevation (0 at the still water level)"}[name])
     data["segment_tension"] = var(("time", "line", "element"),
-                                  _padded([run.tension[:, els] for els in fe.line_elements], emax), "N",
+                                  _padded([run.tension[:, els] for els in fe.line_elements], emax, lead=(nt,)), "N",
                                   "element effective tension")
     end_t = np.stack([np.stack([run.tension[:, els[0]], run.tension[:, els[-1]]], axis=-1)
-                      for els in fe.line_elements], axis=1)  # (nt, line, 2)
+                      for els in fe.line_elements], axis=1) if nl else np.zeros((nt, 0, 2))  # (nt, line, 2)
     fair = fe.fairlead_end
     data["fairlead_tension"] = var(("time", "line"), end_t[:, np.arange(nl), fair], "N",
                                    "tension at the fairlead end of the line (its end element)")
@@ -829,7 +834,6 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
             ft[li] = np.nanmin([ft[li], run.failure_time[j]])
     data["failure_time"] = var("line", ft, "s", "time the line failed (NaN: intact)")
     bodies = list(sysm.bodies)
-    nt = len(run.time)
     bp = np.zeros((nt, len(bodies), 6))
     bv = np.zeros((nt, len(bodies), 6))
     for k, name in enumerate(bodies):

@@ -21,12 +21,12 @@ import math
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, model_validator
 
 from .._model import Model, quantity, suggest
 from ..line import Line
 
-__all__ = ["Body", "MooringSystem", "SystemLine", "SystemPoint"]
+__all__ = ["Body", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -171,6 +171,40 @@ class Body(Model):
         m = getattr(self, key)
         return np.zeros((6, 6)) if m is None else np.asarray(m, float)
 
+    def mass_matrix(self) -> np.ndarray:
+        """The 6x6 mass matrix about the reference point in body axes: the rigid body's (mass at the centre of
+        gravity, ``inertia`` about it) plus ``added_mass``. [kg, kg m, kg m^2]"""
+        c = np.asarray(self.center_of_gravity, float)
+        S = np.array([[0.0, -c[2], c[1]], [c[2], 0.0, -c[0]], [-c[1], c[0], 0.0]])
+        m = self.mass
+        rigid = np.block([[m * np.eye(3), -m * S], [m * S, np.diag(self.inertia) - m * S @ S]])
+        return rigid + self.matrix("added_mass")
+
+    def check_accelerable(self, name: str) -> None:
+        """Refuse a free body whose mass matrix is singular in a free direction (the dynamics solve with it).
+
+        Raises
+        ------
+        InputError
+            Naming the body and the direction nothing gives inertia to.
+        """
+        from ..errors import InputError
+
+        M = self.mass_matrix()
+        free = slice(3, 6) if self.pinned else slice(0, 6)
+        block = 0.5 * (M[free, free] + M[free, free].T)
+        values, vectors = np.linalg.eigh(block)
+        if values[0] > 1e-12 * max(values[-1], 1e-300):
+            return
+        v = vectors[:, 0]
+        what = "rotation about" if self.pinned else "motion along (x, y, z, roll, pitch, yaw)"
+        raise InputError(
+            f"bodies.{name}: its mass matrix about the reference point (mass {self.mass:g} kg, inertia "
+            f"{tuple(self.inertia)} kg m^2 about the centre of gravity, added mass) gives no inertia to the "
+            f"{what} ({', '.join(f'{x:.3g}' for x in v)}), so the dynamics cannot accelerate it (a point mass with "
+            "no inertia of its own about an axis through it). Suggested fix: give the body its moments of inertia "
+            "(inertia: Ixx, Iyy, Izz > 0) or an added-mass matrix.")
+
 
 class SystemLine(Model):
     """A line from point ``end_a`` to point ``end_b``.
@@ -203,19 +237,15 @@ class MooringSystem(Model):
     """Points, bodies and lines; names are the keys of each mapping.
 
     Cross-references are checked: each line's ends name points, each ``kind: body`` point names a
-    body, each body has at least one line (a body with none would have no mooring restoring).
+    body. A system needs at least one line or body. A body no line ends on is allowed (a fixed or
+    prescribed body, a floating body in the dynamics, a MoorDyn deck of rods alone); whether it has
+    a static equilibrium (restoring in every free direction) is the statics' check
+    (:func:`bodies_without_lines`).
     """
 
-    points: dict[str, SystemPoint] = Field(description="Points by name.")
+    points: dict[str, SystemPoint] = Field(default_factory=dict, description="Points by name.")
     bodies: dict[str, Body] = Field(default_factory=dict, description="Bodies by name.")
-    lines: dict[str, SystemLine] = Field(description="Lines by name.")
-
-    @field_validator("lines")
-    @classmethod
-    def _some_lines(cls, lines):
-        if not lines:
-            raise ValueError("must hold at least one line.")
-        return lines
+    lines: dict[str, SystemLine] = Field(default_factory=dict, description="Lines by name.")
 
     @model_validator(mode="after")
     def _references(self):
@@ -230,12 +260,9 @@ class MooringSystem(Model):
             if point.kind == "body" and point.body not in self.bodies:
                 problems.append(f"points.{name}.body: body '{point.body}' is not defined (bodies: "
                                 f"{', '.join(self.bodies) or 'none'}).{suggest(point.body, self.bodies)}")
-        moored = {self.points[getattr(line, end)].body for line in self.lines.values()
-                  for end in ("end_a", "end_b") if getattr(line, end) in self.points}
-        for name in self.bodies:
-            if name not in moored:
-                problems.append(f"bodies.{name}: no line ends on this body, so nothing moors it. Suggested "
-                                "fix: add a point of kind 'body' on it and end a line there, or remove the body.")
+        if not self.lines and not self.bodies:
+            problems.append("lines: the system has no line and no body, nothing to analyse. Suggested fix: add "
+                            "the lines (and the bodies they moor).")
         if problems:
             raise ValueError(problems[0] if len(problems) == 1 else
                              f"{len(problems)} problems: " + " ".join(problems))
@@ -245,7 +272,8 @@ class MooringSystem(Model):
         """The damaged system: the same points and bodies with the named lines removed.
 
         Points no line ends at any more are dropped (a free point would float away); bodies keep
-        their remaining lines (a body left with none is refused, as for any system).
+        their remaining lines (a free body left with none has no static equilibrium unless its
+        hydrostatics restore it in every free direction: the statics refuse it).
         """
         unknown = [n for n in line_names if n not in self.lines]
         if unknown:
@@ -257,3 +285,10 @@ class MooringSystem(Model):
         used = {getattr(line, end) for line in lines.values() for end in ("end_a", "end_b")}
         points = {k: p for k, p in self.points.items() if k in used or p.kind in ("fixed", "coupled")}
         return MooringSystem(points=points, bodies=dict(self.bodies), lines=lines)
+
+
+def bodies_without_lines(system: MooringSystem) -> tuple[str, ...]:
+    """Names of the bodies of ``system`` that no line ends on (through a point on the body)."""
+    moored = {system.points[getattr(line, end)].body for line in system.lines.values()
+              for end in ("end_a", "end_b") if getattr(line, end) in system.points}
+    return tuple(name for name in system.bodies if name not in moored)

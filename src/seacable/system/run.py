@@ -24,8 +24,8 @@ from ..results import make_dataset, var
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
 from .model import MooringSystem
 
-__all__ = ["DOFS", "REFERENCES", "SystemSetup", "equilibrium_variables", "prepare_system_offsets",
-           "prepare_system_static", "run_system_offsets", "run_system_static"]
+__all__ = ["DOFS", "REFERENCES", "SystemSetup", "check_bodies_without_lines", "equilibrium_variables",
+           "prepare_system_offsets", "prepare_system_static", "run_system_offsets", "run_system_static"]
 
 #: The six degrees of freedom of a body, in the order of its 6x6 matrices.
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
@@ -109,6 +109,9 @@ def _setup(case, analysis_type: str) -> SystemSetup:
     systems = (intact,) if damaged is None else (intact, damaged)
     for condition, system in zip(("intact", "damaged"), systems):
         _check_free_points(system, condition)
+        check_bodies_without_lines(system, "" if condition == "intact" else
+                                   f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} "
+                                   "removed): ")
         _start_checks(system, case.environment, "" if condition == "intact" else
                       f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ",
                       case.analysis.max_strain)
@@ -125,12 +128,46 @@ def _check_free_points(system: MooringSystem, condition: str) -> None:
                              "equilibrium. Suggested fix: end a line there, make it 'fixed', or remove it.")
 
 
+def check_bodies_without_lines(system: MooringSystem, where: str = "") -> None:
+    """Refuse a free body that no line ends on and that nothing holds horizontally: no static equilibrium.
+
+    A body no line ends on is held by its hydrostatics alone. Fixed and prescribed bodies are held
+    where they are given; a pinned free body (only its rotations free) is restored by its weight,
+    buoyancy and waterplane (the statics' own checks refuse what they cannot restore). A free body
+    that is not pinned needs restoring in surge and sway, which only a ``hydrostatic_stiffness``
+    matrix (positive surge and sway terms) gives: without it the body has no equilibrium in the
+    horizontal plane (it drifts under any horizontal load, and sits anywhere under none), and
+    ``system_static`` refuses it. The dynamics (``system_dynamic``) run such a body.
+
+    Raises
+    ------
+    InputError
+        Naming the body, the hydrostatic surge and sway stiffness [N/m] and the fixes.
+    """
+    from .model import bodies_without_lines
+
+    for name in bodies_without_lines(system):
+        body = system.bodies[name]
+        if body.kind != "free" or body.pinned:
+            continue
+        k = body.matrix("hydrostatic_stiffness")
+        if k[0, 0] > 0 and k[1, 1] > 0:
+            continue
+        raise InputError(
+            f"{where}bodies.{name}: a free body that no line ends on has no horizontal restoring (surge "
+            f"{k[0, 0]:g} N/m, sway {k[1, 1]:g} N/m: no line and no hydrostatic_stiffness holds it), so it has no "
+            "static equilibrium: it drifts under any horizontal load. Suggested fix: end a line on it (a point of "
+            "kind 'body'), make it 'fixed' or 'prescribed', pin it (pinned: true, only its rotations free), give a "
+            "hydrostatic_stiffness with surge and sway terms, or run it in time (analysis type system_dynamic).")
+
+
 def prepare_system_static(case: SystemCase) -> SystemSetup:
     """Every check of a ``system_static`` case that needs no solve; returns what the solves need.
 
-    The case's own checks (names of points, bodies and line types, a body with no line, masses and
-    inertias, points below the seabed, the damaged lines) ran when it was built; here the damaged
-    system is built (a body left without lines is refused), free points without lines are refused,
+    The case's own checks (names of points, bodies and line types, masses and inertias, points below
+    the seabed, the damaged lines) ran when it was built; here the damaged system is built, free
+    points without lines and free bodies without lines nor horizontal restoring
+    (:func:`check_bodies_without_lines`) are refused,
     and the solver's checks at the given positions run for each condition: what its catenaries
     cannot model (current, a sloping seabed), a line that cannot reach between its ends, and a body
     that nothing restores (unstable hydrostatics and no mooring restoring).
@@ -433,7 +470,8 @@ def run_system_static(case: SystemCase):
             data[f"pin_reaction_{axis}"] = var(("condition", "body"), pins[..., k], "N",
                                                f"force of the pin on a pinned body, {axis} (0: not pinned)")
     coords = _coords(setup)
-    s = np.array([np.linspace(0.0, case.lines[n].line.length, a.profile_points) for n in setup.lines])
+    s = np.array([np.linspace(0.0, case.lines[n].line.length, a.profile_points) for n in setup.lines]).reshape(
+        len(setup.lines), a.profile_points)  # (0, node) for a system without lines
     coords.update({
         "node": var("node", np.arange(a.profile_points), "1", "profile point, 0 at end A"),
         "s": var(("line", "node"), s, "m", "unstretched arc length from end A"),

@@ -310,7 +310,7 @@ class _Problem:
             bodies = [system.bodies[asm.body_names[i]] for i in asm.free_bodies]
             pinned = np.array([b.pinned for b in bodies], bool)
             spin = [_indeterminate_rotations(asm, k, b) for k, b in enumerate(bodies)]
-            const = (length_scale, max(1.0, 0.05 * float(asm.sub_L.max())), weights, pinned, spin,
+            const = (length_scale, max(1.0, 0.05 * float(asm.sub_L.max(initial=0.0))), weights, pinned, spin,
                      float(np.abs(asm.node_force).max(initial=0.0)))
             asm._problem_constants = const
         self.length_scale, self.step_len, self.weights, self.pinned, spin, asm._force_max = const
@@ -935,8 +935,8 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
     asm = eq._asm
     T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
     strain = T / asm.sub_EA
-    k = int(np.argmax(strain))
-    if strain[k] > _STRAIN_WARN:
+    k = int(np.argmax(strain)) if strain.size else -1
+    if k >= 0 and strain[k] > _STRAIN_WARN:
         name = asm.line_names[asm.sub_line[k]]
         warnings.warn(f"lines.{name}: stretched by {100 * strain[k]:.3g} % at equilibrium (tension {T[k]:.4g} N, "
                       f"EA {asm.sub_EA[k]:.4g} N): the line is pulled almost straight between its ends, or is a soft "

@@ -150,13 +150,13 @@ def test_rods_on_a_body_add_their_mass_and_submerged_volume():
     """md_float: a body at z = -1 pitched 45 deg carries a 5 m can (d 2 m, 100 kg/m) from z_b = -1 to 4 and a
     1 m weight (d 4 m, 2.15e4 kg/m); the can pierces the surface at 1/5 of its length (body z = 1)."""
     md = read_moordyn(DECKS / "r-test/modules/moordyn/md_float/moordyn.dat")
-    with pytest.raises(InputError, match="no line ends on this body"):
-        moordyn_system(md)
+    unmoored, _ = _quiet(moordyn_system, md)  # the body no line ends on is a body all the same
     # the same deck with the body moored by its line: end the line on a point on the body
     text = (DECKS / "r-test/modules/moordyn/md_float/moordyn.dat").read_text().replace(
         "1         Fixed      3        0        -4", "1         Body1      0        0        -2")
     system, _ = _quiet(moordyn_system, read_moordyn(text))
     body = system.bodies["body1"]
+    assert body == unmoored.bodies["body1"]
     assert body.mass == pytest.approx(100.0 * 5 + 2.15e4 * 1, rel=1e-12)
     # pitched 45 deg: a point at body z is at global z = -1 + z cos(45 deg); the can's top end is at
     # -1 + 4 cos 45 > 0, its lower end -1 - cos 45 < 0: submerged from body z = -1 to z = 1/cos 45 = 1.414
@@ -183,6 +183,12 @@ def test_turbine_points_follow_the_turbine_positions():
         moordyn_system(md)
     system, _ = moordyn_system(md, turbine_positions={1: (0.0, 0.0, 0.0), 2: (1600.0, 0.0, 0.0)})
     assert system.bodies["turbine2"].kind == "prescribed" and system.bodies["turbine2"].position[0] == 1600.0
+    # a pose (x, y, z, roll, pitch, yaw): turbine 1 of SharedMooring2 is yawed 180 deg, its fairlead point 1 at
+    # (-58, 0, -14) in its axes is 58 m downwind of it
+    system, _ = moordyn_system(md, turbine_positions={1: (20.3, 0.0, 0.0, 0.0, 0.0, math.pi), 2: (1600.0, 0.0, 0.0)})
+    assert system.bodies["turbine1"].position == pytest.approx((20.3, 0.0, 0.0, 0.0, 0.0, math.pi))
+    with pytest.raises(InputError, match=r"turbine_positions\[2\] must be \(x, y, z\)"):
+        moordyn_system(md, turbine_positions={1: (0.0, 0.0, 0.0), 2: (1600.0, 0.0)})
     assert system.points["point4"].body == "turbine2" and system.points["point4"].position == (-58.0, 0.0, -14.0)
 
 

@@ -1,5 +1,9 @@
 """Write ``DECKS.md``: for each vendored deck, whether seacable reads it, converts it to a mooring system,
 solves its statics (admitting a strain up to 20, as MoorDyn has no limit), and how far its line end tensions are from MoorPy's and from MoorDyn's (``reference.json``).
+A deck whose statics are refused (a body with no equilibrium: free with no line and no horizontal restoring,
+or one that capsizes) is run in time instead (``system_dynamic``, its free bodies released from where the deck
+puts them, 1 s at 0.01 s): the column ``dynamics``. Decks on FAST.Farm turbines take the turbine poses
+``reference.json`` records for them (``make_reference.TURBINES``).
 
     PYTHONPATH=src python tests/validation/data/moordyn_decks/deck_table.py
 
@@ -35,9 +39,28 @@ NOTES = {  # what the table cannot see: the test that checks the deck instead, o
     "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat": "a 1.03e6 kg body without volume, its three lines at one "
                                                            "point 0.22 m below its centre of gravity: no upright "
                                                            "equilibrium (MoorPy: sunk to z = -70 m, lines slack, "
-                                                           "rolled 1.7 rad); not a spin indeterminacy",
-    "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "turbine positions are in the FAST.Farm input (at the "
-                                                                "origin a line stretches 113 %): no comparison",
+                                                           "rolled 1.7 rad); a dynamic test deck (TmaxIC = 0): runs "
+                                                           "in time",
+    "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": "turbines placed as FAST.Farm.fstf and the ElastoDyn "
+                                                                "inputs place them (reference.json); MoorDyn's IC of "
+                                                                "that copy does not converge; FAST.Farm's MoorDyn at "
+                                                                "t = 0 agrees on lines 1-5 within 0.03 % (its slack "
+                                                                "lines 6-7 still relaxing)",
+    "MoorDyn/tests/Mooring/body_tests/rotatingBody.txt": "g = 0: six 0.9 m lines stretched to 1 m, T = EA / 9 "
+                                                         "(test_gravity_off_leaves_straight_lines_stretched_by_hookes_law)",
+    "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt": "g = 0: a straight line, T = EA strain (test_gravity_off_leaves_"
+                                                       "straight_lines_stretched_by_hookes_law)",
+    "MoorDyn/tests/Mooring/RodPinnedFloating.txt": "no lines: the pinned buoyant rod turns upright "
+                                                   "(test_a_pinned_buoyant_rod_without_lines_floats_upright)",
+    "MoorDyn/tests/Mooring/rod_tests/AddedMass.txt": "no lines, a rising rod: z(t) with its added mass "
+                                                     "(test_a_rising_rod_accelerates_with_its_added_mass)",
+    "MoorDyn/tests/Mooring/body_tests/orbitalBody.txt": "g = 0, free bodies with no line: no static equilibrium; the "
+                                                        "dynamics refuse body1, a 40 kg point mass 10 m from its "
+                                                        "reference point with no inertia of its own (nothing resists "
+                                                        "a rotation about the point; MoorDyn's test drives its "
+                                                        "kinematics)",
+    "MoorDyn/tests/Mooring/rotations/nwu.txt": "g = 0, a coupled body alone: its three points where its pose puts "
+                                               "them",
     "MoorDyn/tests/Mooring/wave_surface/wave_surface.txt": "lines crossing the surface are split there, dry weight "
                                                            "above; MoorDyn's IC not converged (0.088 m/s^2): its "
                                                            "wholly submerged lines 1-3 are 1.4 % off too",
@@ -51,34 +74,57 @@ NOTES = {  # what the table cannot see: the test that checks the deck instead, o
     "MoorDyn/tests/Mooring/BeamSimplySupported.txt": "a taut EI beam in air (z = +10 m): no reference (MoorPy NaN, "
                                                      "MoorDyn's IC not converged); seacable's catenary has no EI",
 }
-# solved, but the references solved another system (turbines placed elsewhere): not compared
-NO_COMPARISON = {"r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat"}
+# solved, but the references solved another system: not compared
+NO_COMPARISON: set[str] = set()
+
+
+def turbine_positions(entry: dict) -> dict | None:
+    """The turbine poses ``reference.json`` records for a deck on FAST.Farm turbines (None for others)."""
+    poses = entry.get("turbine_positions")
+    return None if poses is None else {int(n): tuple(v) for n, v in poses.items()}
+
+
+def run_in_time(system, env, duration=1.0, time_step=0.01):
+    """``system_dynamic`` of the deck's system for ``duration`` [s], free bodies released where the deck puts them."""
+    from seacable.system.case import SystemCase
+    from seacable.system.dynamics import SystemDynamicAnalysis, run_system_dynamic
+
+    case = SystemCase(name="deck", environment=env, points=system.points, bodies=system.bodies, lines=system.lines,
+                      analysis=SystemDynamicAnalysis(duration=duration, time_step=time_step,
+                                                     output_interval=duration / 2, start="held"))
+    return run_system_dynamic(case)
 
 
 def main():
+    from seacable.errors import InputError, NoSolutionError
     from seacable.io.moordyn import is_moordyn_file, moordyn_system, read_moordyn
+    from seacable.system.run import check_bodies_without_lines
     from seacable.system.statics import solve_equilibrium
 
     ref = json.loads((HERE / "reference.json").read_text())
-    rows = ["| deck | read | system | statics | vs MoorPy | vs MoorDyn | note |", "|---|---|---|---|---|---|---|"]
-    counts = dict(decks=0, read=0, system=0, statics=0, moorpy=0, moordyn=0, agree=0)
+    rows = ["| deck | read | system | statics | dynamics | vs MoorPy | vs MoorDyn | note |",
+            "|---|---|---|---|---|---|---|---|"]
+    counts = dict(decks=0, read=0, system=0, statics=0, dynamics=0, moorpy=0, moordyn=0, agree=0)
     for path in sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and "LICENSES" not in p.parts
                        and is_moordyn_file(p)):
         rel = path.relative_to(HERE).as_posix()
         r = ref["decks"].get(rel, {})
         counts["decks"] += 1
         cells, note = ["", "", "", "", ""], ""
+        dynamics = ""
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
+            system = env = None
             try:
                 md = read_moordyn(path)
                 cells[0] = "yes"
                 counts["read"] += 1
-                system, env = moordyn_system(md)
+                system, env = moordyn_system(md, turbine_positions=turbine_positions(r))
                 cells[1] = "yes"
                 counts["system"] += 1
                 env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.0})})
                 t0 = time.time()
+                check_bodies_without_lines(system)  # as system_static: a free body nothing holds has no equilibrium
                 eq = solve_equilibrium(system, env, max_strain=20.0)  # MoorDyn has no strain limit
                 cells[2] = f"yes ({time.time() - t0:.2f} s)"
                 counts["statics"] += 1
@@ -86,41 +132,53 @@ def main():
                 cells[sum(1 for c in cells if c)] = "no"
                 note = str(exc).split(": ", 1)[-1][:140].replace("|", "/")
                 eq = None
+                if system is not None and isinstance(exc, (InputError, NoSolutionError)):
+                    try:
+                        t0 = time.time()
+                        run_in_time(system, env)
+                        dynamics = f"yes ({time.time() - t0:.2f} s)"
+                        counts["dynamics"] += 1
+                    except Exception as dyn:  # noqa: BLE001
+                        dynamics = "no"
+                        note += " / dynamics: " + str(dyn)[:120].replace("|", "/")
+        cells.insert(3, dynamics)
         agree = []
         if eq is not None and rel in NO_COMPARISON:
-            cells[3] = cells[4] = "-"
+            cells[4] = cells[5] = "-"
         elif eq is not None:
             mp = r.get("moorpy", {})
             finite = "lines" in mp and all(np.isfinite(v) for ln in mp["lines"].values() for v in ln.values())
             if "lines" in mp and not finite:
-                cells[3] = "NaN (MoorPy)"
+                cells[4] = "NaN (MoorPy)"
             elif "lines" in mp:
                 d = [abs(ours - mp["lines"][str(ln.id)][f"end_{e}_tension"]) /
                      max(abs(mp["lines"][str(ln.id)][f"end_{e}_tension"]), 1.0)
                      for k, ln in enumerate(md.lines) for e, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k]))]
-                cells[3] = f"{max(d) * 100:.4f} %"
-                counts["moorpy"] += 1
-                agree.append(max(d) <= 0.01)
+                cells[4] = f"{max(d) * 100:.4f} %" if d else "- (no lines)"
+                if d:
+                    counts["moorpy"] += 1
+                    agree.append(max(d) <= 0.01)
             else:
-                cells[3] = "-"
+                cells[4] = "-"
                 note = note or ("MoorPy: " + mp.get("error", "no result")[-90:]).replace("|", "/")
-            if r.get("ic_converged"):
+            if r.get("ic_converged") and r.get("lines"):
                 d = [abs(ours - np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"])) /
                      np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"])
                      for k, ln in enumerate(md.lines) for e, ours in (("a", eq.end_a_tension[k]), ("b", eq.end_b_tension[k]))
                      if np.linalg.norm(r["lines"][str(ln.id)][f"end_{e}_force"]) > 0]
-                cells[4] = f"{max(d) * 100:.3f} % (IC residual {r.get('ic_residual')})"
+                cells[5] = f"{max(d) * 100:.3f} % (IC residual {r.get('ic_residual')})"
                 counts["moordyn"] += 1
                 agree.append(max(d) <= 0.01)
             else:
-                cells[4] = "-" if "error" not in r else "MoorDyn refuses it"
+                cells[5] = "-" if "error" not in r else "MoorDyn refuses it"
         if agree and any(agree):
             counts["agree"] += 1
         if rel in NOTES:
             note = NOTES[rel] + (f"; {note}" if note and rel not in NOTES else "")
         rows.append(f"| {rel} | " + " | ".join(cells) + f" | {note} |")
     summary = (f"{counts['decks']} decks: {counts['read']} read, {counts['system']} convert to a mooring system, "
-               f"{counts['statics']} solve; compared with MoorPy {counts['moorpy']}, with a converged MoorDyn "
+               f"{counts['statics']} solve their statics and the {counts['dynamics']} others with no static equilibrium "
+               f"run in time; compared with MoorPy {counts['moorpy']}, with a converged MoorDyn "
                f"{counts['moordyn']}; within 1 % of at least one of them: {counts['agree']}.")
     (HERE / "DECKS.md").write_text("# The vendored MoorDyn decks in seacable\n\nWritten by `deck_table.py`. "
                                    + summary + "\n\n" + "\n".join(rows) + "\n")

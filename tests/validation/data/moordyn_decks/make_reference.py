@@ -17,7 +17,9 @@ process (MoorDyn prints to the console and a failed Init can abort).
 from __future__ import annotations
 
 import json
+import math
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -27,6 +29,20 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 TIMEOUT = 240.0
+
+# Decks whose points are on FAST.Farm turbines (``TurbineN``): where FAST.Farm puts each turbine's platform
+# reference point, (x, y, z [m], roll, pitch, yaw [rad]). SharedMooring2 (OpenFAST r-test
+# glue-codes/fast-farm/MD_Shared, commit 71a5adcc): FAST.Farm.fstf places turbine 1 at WT_X, WT_Y, WT_Z = (0, 0, 0)
+# and turbine 2 at (1600, 0, 0); the ElastoDyn inputs of the two turbines (IEA-15-240-RWT-UMaineSemi_ElastoDynT1/T2.dat)
+# start their platforms displaced by PtfmSurge, PtfmSway, PtfmHeave [m] and PtfmRoll, PtfmPitch, PtfmYaw [deg]:
+# T1 (20.3, -0.18, -0.70; -0.26, -2.40, 180), T2 (20.9, 0.13, -0.34; 0.28, 2.4, 0.41) (FAST.Farm.T2.out at t = 0 reads
+# the same). MoorDyn and MoorPy run a copy of the deck with those points made Fixed where the turbines put them.
+TURBINES = {
+    "r-test/glue-codes/fast-farm/MD_Shared/SharedMooring2.dat": {
+        1: (20.3, -0.18, -0.70, math.radians(-0.26), math.radians(-2.40), math.radians(180.0)),
+        2: (1620.9, 0.13, -0.34, math.radians(0.28), math.radians(2.4), math.radians(0.41)),
+    },
+}
 
 _CHILD = r"""
 import json, sys, math
@@ -113,10 +129,46 @@ def run(deck: Path) -> dict:
 
     MoorDyn writes its .out and .log files beside the deck, so both codes read a copy of the deck's folder
     in a temporary folder: the vendored data stays as it is."""
+    rel = deck.relative_to(HERE).as_posix() if deck.is_relative_to(HERE) else None  # other tests' decks too
+    # a deck (or a table beside it) naming a file one folder up (the SYROPE decks' '../owc.dat') is copied with
+    # that folder
+    up = any("../" in f.read_text(errors="replace") for f in deck.parent.iterdir()
+             if f.is_file() and f.suffix in (".txt", ".dat"))
+    root = deck.parent.parent if up else deck.parent
     with tempfile.TemporaryDirectory(prefix="seacable-deck-") as tmp:
-        copy = Path(tmp) / deck.parent.name
-        shutil.copytree(deck.parent, copy, ignore=shutil.ignore_patterns("*.out", "*.log"))
-        return _run(copy / deck.name)
+        copy = Path(tmp) / root.name
+        shutil.copytree(root, copy, ignore=shutil.ignore_patterns("*.out", "*.log"))
+        target = copy / deck.relative_to(root)
+        if rel in TURBINES:
+            _place_turbines(target, TURBINES[rel])
+        out = _run(target)
+    if rel in TURBINES:
+        out["turbine_positions"] = {str(n): list(pose) for n, pose in TURBINES[rel].items()}
+    return out
+
+
+def _place_turbines(path: Path, poses: dict) -> None:
+    """Rewrite the deck at ``path``: each point on a turbine becomes a Fixed point where the turbine's pose
+    puts it (global = position + R(roll, pitch, yaw) r, R = Rz Ry Rx)."""
+    def rotation(roll, pitch, yaw):
+        cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                                  math.sin(yaw))
+        return ((cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr),
+                (sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr),
+                (-sp, cp * sr, cp * cr))
+
+    lines = path.read_text().splitlines()
+    for i, line in enumerate(lines):
+        tokens = line.split()
+        m = re.fullmatch(r"turbine(\d+)", tokens[1], re.IGNORECASE) if len(tokens) >= 5 else None
+        if m is None:
+            continue
+        pose = poses[int(m.group(1))]
+        R = rotation(*pose[3:])
+        r = [float(v) for v in tokens[2:5]]
+        g = [pose[k] + sum(R[k][j] * r[j] for j in range(3)) for k in range(3)]
+        lines[i] = " ".join([tokens[0], "Fixed"] + [f"{v:.9g}" for v in g] + tokens[5:])
+    path.write_text("\n".join(lines) + "\n")
 
 
 def _run(deck: Path) -> dict:
