@@ -128,7 +128,8 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     P = node_positions(asm, st.X, st.R, st.P)
     try:
         cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
-                                                         asm.friction, asm.depth, warm, max_strain=max_strain)
+                                                         asm.friction, asm.depth, warm, max_strain=max_strain,
+                                                         tables=asm.tables)
     except NoSolutionError as err:
         k = getattr(err, "sub_line", None)
         if k is None:

@@ -22,6 +22,7 @@ import numpy as np
 
 from ..environment import Environment
 from ..errors import InputError
+from ..mooring.network import table_secant
 from .model import MooringSystem
 
 FIXED, BODY, FREE = 0, 1, 2
@@ -81,6 +82,7 @@ class Assembly:
     node_dof: np.ndarray         # (nn,) first DOF of the node's body (BODY) or of the node (FREE), else -1
     extra_cuts: dict | None = None   # line name -> arc lengths of added internal nodes (sag onto the seabed)
     air: dict | None = None          # line name -> arc-length intervals above the water (dry weight)
+    tables: tuple | None = None      # (ts_lo, ts_hi, tT, te): inverse strain-tension tables, or None
 
     @property
     def n_dof(self) -> int:
@@ -143,6 +145,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         rel.append(np.zeros(3))
 
     sub = {k: [] for k in ("a", "b", "L", "EA", "w", "line", "s0")}
+    ts_lo, ts_hi, ts_T, ts_e = [], [], [], []
     first, last = [], []
     line_names = list(system.lines)
     for il, (lname, sl) in enumerate(system.lines.items()):
@@ -186,14 +189,20 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
             mid = 0.5 * (s0 + s1)
             seg = next(j for j in range(len(line.segments)) if mid <= ends[j + 1])
             lt = line.segments[seg].line_type
-            if lt.axial_stiffness is None:
+            if lt.axial_stiffness is None and lt.tension_strain is None:
                 raise InputError(f"lines.{lname}: line type {lt.name or seg} has no axial_stiffness; the "
                                  "system statics needs EA in N. Suggested fix: give axial_stiffness "
                                  "(a very large value for an almost inextensible line).")
             sub["a"].append(nodes[k])
             sub["b"].append(nodes[k + 1])
             sub["L"].append(s1 - s0)
-            sub["EA"].append(lt.axial_stiffness)
+            ts_lo.append(len(ts_T))
+            if lt.tension_strain is not None:
+                T_inv, e_inv = inverse_table(lt.tension_strain)
+                ts_T.extend(T_inv)
+                ts_e.extend(e_inv)
+            ts_hi.append(len(ts_T))
+            sub["EA"].append(lt.axial_stiffness if lt.axial_stiffness is not None else table_secant(lt.tension_strain))
             dry = any(a <= mid <= b for a, b in (air or {}).get(lname, ()))
             sub["w"].append(lt.mass_per_length * g if dry else lt.submerged_weight(rho, g))
             sub["line"].append(il)
@@ -210,12 +219,28 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),
                    free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1),
                    extra_cuts={k: tuple(v) for k, v in (extra_cuts or {}).items()},
-                   air={k: tuple(v) for k, v in (air or {}).items()})
+                   air={k: tuple(v) for k, v in (air or {}).items()},
+                   tables=(np.array(ts_lo, np.int64), np.array(ts_hi, np.int64), np.array(ts_T, float),
+                           np.array(ts_e, float)) if ts_T else None)
     nb = len(free_bodies)
     asm.node_dof[kind == BODY] = 6 * asm.node_body[kind == BODY]
     asm.node_dof[asm.free_nodes] = 6 * nb + 3 * np.arange(asm.free_nodes.size)
     _check_depths(asm, system)
     return asm
+
+
+def inverse_table(table) -> tuple[list, list]:
+    """A strain-tension table ``((strain, tension), ...)`` as its inverse, tension points from 0 and
+    their strains (for :mod:`._stat_cat`: strain linear in tension between the points).
+
+    MoorDyn's tension is linear in strain between the points and held flat beyond the last; a
+    table whose first point is not at the origin is joined to it by a straight line here (MoorDyn
+    holds the first point's tension down to zero strain, a jump the statics cannot take).
+    """
+    pts = [(float(t), float(e)) for e, t in table]
+    if pts[0][0] > 0:
+        pts.insert(0, (0.0, 0.0))
+    return [p[0] for p in pts], [p[1] for p in pts]
 
 
 def _start_positions(line, pa, pb, cut_s, rho, g, depth):

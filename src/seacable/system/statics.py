@@ -14,6 +14,14 @@ Model
   A sub-line whose lower end is on the seabed (within 1e-6 x depth) may lie on it, with the
   environment's Coulomb friction; otherwise it hangs free. Attachments become free nodes
   carrying their net weight ``(m - rho V) g``.
+* A line type with a strain-tension table (``LineType.tension_strain``) is the elastic catenary
+  with strain eps(T): its stretch is the integral of eps(T(s)) along the unstretched length,
+  T = sqrt(H^2 + V(s)^2) suspended and T = H - mu w (L_B - s) (down to 0) on the seabed, in
+  closed form per piece of the table, with the analytic tangent (:mod:`._stat_cat`). The table is
+  taken from the origin (a first point at a strain > 0 is joined to it by a straight line).
+  Weightless, buoyant and slack-on-the-seabed parts of a tabled line take its constant EA (a warning
+  says so). MoorDyn holds the tension flat beyond the table's last point; an equilibrium that needs
+  more tension than that is refused (``NoSolutionError``).
 * A free body carries its weight ``m g`` at the centre of gravity and a buoyancy ``rho g V`` at
   the centre of buoyancy (both rotate with the body), a heave restoring
   ``-rho g A_wp (z - z_given)`` at the reference point (``volume`` is the displacement at the
@@ -77,8 +85,9 @@ import numpy as np
 
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
-from ..statics.catenary import CatenaryRegime, CatenaryResult
+from ..statics.catenary import CatenaryProfile, CatenaryRegime, CatenaryResult
 from . import _stat_kernel as _kern
+from ._stat_cat import sub_profile, table_strain
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
@@ -241,7 +250,7 @@ class SystemEquilibrium:
         S, X, T = [], [], []
         for k in subs:
             m = max(4, int(np.ceil(2 * n * asm.sub_L[k] / total)) + 2)
-            prof = self._cat.profile(m, index=k)
+            prof = sub_profile(self._cat, k, m, asm.tables, CatenaryProfile)
             a_is = self._anchor_is_a[k]
             pA = self._node_position[asm.sub_a[k] if a_is else asm.sub_b[k]]
             e = self._e[k]
@@ -831,7 +840,7 @@ def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
         name = asm.line_names[asm.sub_line[k]]
         a_is = ev.anchor_is_a[k]
         low = asm.sub_a[k] if a_is else asm.sub_b[k]
-        prof = ev.cat.profile(801, index=k)
+        prof = sub_profile(ev.cat, k, 801, asm.tables, CatenaryProfile)
         z = P[low, 2] + prof.z
         s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
         if not a_is:
@@ -935,6 +944,21 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
     asm = eq._asm
     T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
     strain = T / asm.sub_EA
+    if asm.tables is not None:
+        tabled = np.flatnonzero(asm.tables[1] > asm.tables[0])
+        for k in tabled:
+            strain[k] = table_strain(T[k], k, asm.tables)[0]
+        # tabled sub-lines the catenary kernel leaves to the public function (constant EA): buoyant,
+        # weightless, slack on the seabed
+        approx = [k for k in tabled if int(eq._cat.regime[k]) not in (1, 2, 3, 5, 6) or asm.sub_w[k] <= 0]
+        if approx:
+            name = asm.line_names[asm.sub_line[approx[0]]]
+            warnings.warn(f"lines.{name}: its tension-strain table is applied exactly to weighty lines hanging or "
+                          "lying on the seabed under tension; this part (buoyant, weightless, or slack on the "
+                          f"seabed: {CatenaryRegime(int(eq._cat.regime[approx[0]])).name}) takes the constant EA "
+                          f"{asm.sub_EA[approx[0]]:.4g} N (axial_stiffness, else the table's secant). Suggested fix: "
+                          "none needed at low tension; give axial_stiffness as the slope at the tension expected.",
+                          SeacableWarning, stacklevel=3)
     k = int(np.argmax(strain))
     if strain[k] > _STRAIN_WARN:
         name = asm.line_names[asm.sub_line[k]]
