@@ -173,3 +173,31 @@ def test_a_grounded_tabled_line_with_friction_reaches_its_fairlead_by_quadrature
     zs = sum(quad(lambda s: (1 + eps(T(s))) * w * s / T(s), a, b, epsabs=1e-10, epsrel=1e-12)[0] for a, b in bounds)
     assert xg + xs == pytest.approx(x_f, abs=1e-8)
     assert zs == pytest.approx(90.0, abs=1e-8)
+
+
+def test_a_load_beyond_the_end_of_the_table_has_no_equilibrium():
+    """MoorDyn holds the tension flat beyond a table's last point: a static load that needs more has no
+    equilibrium (the line yields without end). A 1 MN weight on the bilinear line (table ends at 855 kN), and
+    OC3-Hywind pulled by 4 MN on lines whose table ends at 2 MN: a NoSolutionError naming the line, the
+    table's last tension and the load, with a fix; just inside the table (a 700 kN weight) it solves."""
+    w, L, top = 100.0, 100.0, -10.0
+    lt = _line_type(BILINEAR, w)
+    env = Environment(water_density=RHO, gravity=G, depth=500.0)
+
+    def hang(weight):
+        return MooringSystem(points={"top": SystemPoint(kind="fixed", position=(0.0, 0.0, top)),
+                                     "weight": SystemPoint(kind="free", position=(0.0, 0.0, top - L),
+                                                           mass=weight / G)},
+                             lines={"l": SystemLine(line=sc.Line.single(lt, L), end_a="weight", end_b="top")})
+
+    with pytest.raises(sc.errors.NoSolutionError, match=r"lines\.l: no static equilibrium: .* needs a tension of "
+                       r"1\.01e\+06 N .* table \(855000 N at strain 0\.05\).*Suggested fix: extend the table"):
+        solve_equilibrium(hang(1e6), env)
+    eq = solve_equilibrium(hang(7e5), env)
+    assert eq.end_b_tension[0] == pytest.approx(7e5 + w * L, rel=1e-9)
+
+    system, env = ex.oc3_hywind()
+    short = ex.OC3_CHAIN.model_copy(update={"tension_strain": ((0.0, 0.0), (2e6 / ex.OC3_CHAIN.axial_stiffness, 2e6))})
+    with pytest.raises(sc.errors.NoSolutionError, match=r"lines\.line1: no static equilibrium: the external load on "
+                       r"platform: \|F\| = 4e\+06 N needs a tension of .* \(2e\+06 N at strain"):
+        solve_equilibrium(_with_type(system, short), env, external={"platform": [4e6, 0, 0, 0, 0, 0]})

@@ -729,6 +729,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     InputError
         What the catenary lines cannot model, unknown body names in ``external``, an unstable
         body with no mooring restoring.
+    NoSolutionError
+        A line cannot reach at the starting positions, or the equilibrium needs a tension above the
+        last point of a line's strain-tension table.
     ConvergenceError
         No equilibrium found with a plain Newton iteration nor a load ramp; names the residual
         and the last offset of each body.
@@ -803,6 +806,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
                 surf_rounds += 1
                 continue
         break
+    beyond = _beyond_table(prob, ev)
+    if beyond:
+        raise NoSolutionError(beyond)
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -822,6 +828,32 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     eq = _result(prob, st, ev, (cuts, surf, air))
     _warn_strain(eq)
     return eq
+
+
+def _beyond_table(prob: _Problem, ev: Evaluation) -> str:
+    """The message for a line whose tension exceeds the last point of its strain-tension table at the
+    state reached (a solution or the last iterate), else ''."""
+    asm = prob.asm
+    if asm.tables is None:
+        return ""
+    lo, hi, tT, te = asm.tables
+    T = np.maximum(ev.cat.fairlead_tension, ev.cat.anchor_tension)
+    worst, over = -1, 0.0
+    for k in np.flatnonzero(hi > lo):
+        r = T[k] / tT[hi[k] - 1]
+        if r > 1.0 + 1e-9 and r > over:
+            worst, over = int(k), r
+    if worst < 0:
+        return ""
+    name = asm.line_names[asm.sub_line[worst]]
+    t_last, e_last = tT[hi[worst] - 1], te[hi[worst] - 1]
+    loads = [f"{asm.body_names[i]}: |F| = {np.linalg.norm(prob.bd.external[k, :3]):.4g} N"
+             for k, i in enumerate(asm.free_bodies) if np.any(prob.bd.external[k])]
+    load = ("the external load on " + ", ".join(loads)) if loads else "the weights, buoyancy and point loads"
+    return (f"lines.{name}: no static equilibrium: {load} needs a tension of {T[worst]:.6g} N in this line, above "
+            f"the last point of its tension-strain table ({t_last:.6g} N at strain {e_last:.4g}); beyond the table "
+            "the tension is held flat (as MoorDyn), so the line yields without end. Suggested fix: extend the "
+            "table to the strains this load needs, or reduce the load (or share it among more lines).")
 
 
 _SURFACE_ROUNDS = 8     # times the surface crossings of lines are moved to the last solution's
