@@ -62,6 +62,7 @@ class State:
     R: np.ndarray             # (nb, 3, 3)
     P: np.ndarray             # (nn, 3) every node (free nodes are the state; others derived)
     grounded: np.ndarray      # (nn,) bool: free node resting on the seabed (z held)
+    surfaced: np.ndarray | None = None   # (nn,) bool: free node with buoyancy stopped at the surface z = 0
 
 
 @dataclass
@@ -136,6 +137,14 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
             raise
         name = asm.line_names[int(asm.sub_line[k])]
         raise NoSolutionError(re.sub(r"the line\[\d+\]", f"lines.{name}", str(err), count=1)) from None
+    node_force = asm.node_force
+    if asm.node_buoy is not None and asm.node_buoy.any():
+        # what sits at a node above the water weighs its dry weight (the buoyancy switches off at z = 0;
+        # a step, no term in the Jacobian); a node stopped at the surface counts as immersed
+        dry = (P[:, 2] > 0.0) & (asm.node_buoy != 0.0)
+        if dry.any():
+            node_force = node_force.copy()
+            node_force[dry, 2] -= asm.node_buoy[dry]
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     force_max = getattr(asm, "_force_max", None)
@@ -147,14 +156,14 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
         jac, hydro = np.empty((ndof, ndof)), np.empty((6 * nb, 6 * nb))
         scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead,
                                 cat.V_fairlead, cat.H_anchor, cat.V_anchor, cat.stiffness, cat.regime, _GROUNDED,
-                                float(asm.friction), asm.node_force, asm.node_kind, asm.node_body, asm.node_dof, nb,
+                                float(asm.friction), node_force, asm.node_kind, asm.node_body, asm.node_dof, nb,
                                 ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
                                 bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
         return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
     grounded = _GROUNDED[cat.regime]
     K = cat.stiffness
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
-                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), asm.node_force, asm.node_kind,
+                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), node_force, asm.node_kind,
                 asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
     own = np.zeros((nb, 6))
     own_jac = np.zeros((nb, 6, 6))

@@ -186,9 +186,11 @@ def node_positions(P, X, R, node_kind, node_body, node_rel, out):
 
 
 @njit(cache=True, error_model="numpy")
-def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
+def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded, floats, surfaced):
     """X2, R2, P2 = the state moved by alpha dq (rotations R -> Rot(alpha th) R, Rodrigues); free
-    nodes below the seabed (depth NaN: none) put on it and flagged in ``grounded``."""
+    nodes below the seabed (depth NaN: none) put on it and flagged in ``grounded``; free nodes with
+    buoyancy (``floats``) that rise through the surface from below stopped at z = 0 and flagged in
+    ``surfaced``."""
     nb = X.shape[0]
     K = np.empty((3, 3))
     Q = np.empty((3, 3))
@@ -225,6 +227,9 @@ def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
         if not math.isnan(depth) and P2[n, 2] < -depth:
             P2[n, 2] = -depth
             grounded[n] = True
+        if floats[n] and P[n, 2] <= 0.0 and P2[n, 2] > 0.0:
+            P2[n, 2] = 0.0
+            surfaced[n] = True
 
 
 @njit(cache=True, error_model="numpy")

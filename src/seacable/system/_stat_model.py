@@ -83,6 +83,7 @@ class Assembly:
     extra_cuts: dict | None = None   # line name -> arc lengths of added internal nodes (sag onto the seabed)
     air: dict | None = None          # line name -> arc-length intervals above the water (dry weight)
     tables: tuple | None = None      # (ts_lo, ts_hi, tT, te): inverse strain-tension tables, or None
+    node_buoy: np.ndarray | None = None  # (nn,) buoyancy of what sits at the node (points, attachments) [N]
 
     @property
     def n_dof(self) -> int:
@@ -119,7 +120,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
     body_names = list(system.bodies)
     free_bodies = [i for i, n in enumerate(body_names) if system.bodies[n].kind == "free"]
     free_index = {body_names[i]: k for k, i in enumerate(free_bodies)}
-    kind, nbody, rel, pos0, force, label = [], [], [], [], [], []
+    kind, nbody, rel, pos0, force, label, buoy = [], [], [], [], [], [], []
     point_node = {}
     for name, p in system.points.items():
         point_node[name] = len(kind)
@@ -127,6 +128,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         f = np.array(p.external_force, float)
         f[2] -= p.net_weight(rho, g)
         force.append(f)
+        buoy.append(rho * g * p.volume)
         if p.kind == "body":
             body = system.bodies[p.body]
             if body.kind == "free":
@@ -158,23 +160,31 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         for s in list(ends[1:-1]) + list((extra_cuts or {}).get(lname, ())):
             cuts.setdefault(round(s / total / _MERGE), [s, 0.0])
         end_load = {na: 0.0, nb: 0.0}
+        end_buoy = {na: 0.0, nb: 0.0}
         for i, att in enumerate(line.attachments):
             wgt = att.net_weight(rho, g)
+            b = att.mass * g - wgt            # its buoyancy (it weighs m g in air)
             if att.s <= _MERGE * total:
                 end_load[na] += wgt
+                end_buoy[na] += b
             elif att.s >= total * (1 - _MERGE):
                 end_load[nb] += wgt
+                end_buoy[nb] += b
             else:
-                cuts.setdefault(round(att.s / total / _MERGE), [att.s, 0.0])[1] += wgt
+                c = cuts.setdefault(round(att.s / total / _MERGE), [att.s, 0.0])
+                c[1] += wgt
+                c.append(b)
         for node, wgt in end_load.items():
             force[node] = force[node] + np.array([0.0, 0.0, -wgt])
-        cut_s = sorted(cuts.values())
+            buoy[node] += end_buoy[node]
+        cut_s = sorted(cuts.values(), key=lambda c: c[0])
         pa, pb = _guess_end(na, kind, nbody, rel, pos0, system, body_names, free_bodies), \
             _guess_end(nb, kind, nbody, rel, pos0, system, body_names, free_bodies)
         nodes = [na]
         start = _start_positions(line, pa, pb, [c[0] for c in cut_s], rho, g, depth)
-        for (s, wgt), p0 in zip(cut_s, start):
+        for (s, wgt, *b_att), p0 in zip(cut_s, start):
             nodes.append(len(kind))
+            buoy.append(sum(b_att))
             kind.append(FREE)
             nbody.append(-1)
             rel.append(np.zeros(3))
@@ -220,6 +230,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
                    free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1),
                    extra_cuts={k: tuple(v) for k, v in (extra_cuts or {}).items()},
                    air={k: tuple(v) for k, v in (air or {}).items()},
+                   node_buoy=np.array(buoy, float),
                    tables=(np.array(ts_lo, np.int64), np.array(ts_hi, np.int64), np.array(ts_T, float),
                            np.array(ts_e, float)) if ts_T else None)
     nb = len(free_bodies)

@@ -39,6 +39,13 @@ Model
   it contains the moment of the end forces as their arms rotate). At zero rotation the small
   rotations are the Euler angle increments.
 
+* A point (clump, buoy, attachment, a point on a body) above the water (z > 0) weighs its dry
+  weight ``m g``: a point is a point, so its buoyancy switches off at z = 0, a step (no partial
+  immersion of its volume). The Jacobian has no term for the step (its derivative is zero on
+  either side). A free point that rises through z = 0 stops there and is held, as a point landing
+  on the seabed, while immersed it is lifted and with its dry weight alone it is not (floating
+  partly immersed: the surface takes the difference, and the stiffness holds its height); it is
+  released to sink or to rise into the air when either no longer holds.
 * A free point (clump, junction, attachment) that reaches the seabed rests on it (its height is
   held while the net force pushes it down, released when it pulls up); it slides without
   friction. A sub-line between two points on the seabed lies flat.
@@ -65,7 +72,7 @@ Model
 
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A buoyant sub-line is not
-checked against rising above the surface, nor a point's buoyancy against its being in air.
+checked against rising above the surface.
 
 References
 ----------
@@ -326,6 +333,7 @@ class _Problem:
         self.spin = list(spin)
         self.any_held = bool(self.pinned.any()) or any(a.size for a in self.spin)
         self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
+        self.floats = asm.node_buoy > 0        # nodes whose buoyancy switches off above the water
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
@@ -349,19 +357,20 @@ class _Problem:
             low = P[asm.free_nodes, 2] <= -asm.depth
             P[asm.free_nodes[low], 2] = -asm.depth
             grounded[asm.free_nodes[low]] = True
-        return State(X, R, P, grounded)
+        return State(X, R, P, grounded, np.zeros(P.shape[0], bool))
 
     def _z_dof(self, st: State) -> np.ndarray:
-        """DOF indices of the grounded free nodes' z."""
-        if not st.grounded.any():
+        """DOF indices of the z of the free nodes held on the seabed or at the surface."""
+        held = st.grounded | st.surfaced
+        if not held.any():
             return np.zeros(0, int)
-        j = np.flatnonzero(st.grounded[self.asm.free_nodes])
+        j = np.flatnonzero(held[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
     def point_dofs(self, st: State) -> np.ndarray:
-        """DOF indices of the free points that are not held on the seabed (condensed out)."""
+        """DOF indices of the free points that are not held on the seabed or at the surface (condensed out)."""
         allp = np.arange(6 * self.nb, 6 * self.nb + 3 * self.nfree)
-        if not self.nfree or not st.grounded.any():
+        if not self.nfree or not (st.grounded.any() or st.surfaced.any()):
             return allp
         return np.setdiff1d(allp, self._z_dof(st))
 
@@ -371,10 +380,16 @@ class _Problem:
         self._hold(st, ev)
         zd = self._z_dof(st)
         if zd.size:
-            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
-            lift = ev.residual[zd] > 0
+            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off. A node
+            # stopped at the surface (counted immersed) stays there while its buoyancy lifts it and its
+            # dry weight alone would not (partly immersed: the surface takes the difference); it sinks
+            # when immersed it is pulled down, and rises into the air when its dry weight alone is lifted
+            node = self.asm.free_nodes[(zd - 6 * self.nb) // 3]
+            res = ev.residual[zd]
+            lift = np.where(st.grounded[node], res > 0, (res <= 0) | (res - self.asm.node_buoy[node] > 0))
             if lift.any():
-                st.grounded[self.asm.free_nodes[(zd[lift] - 6 * self.nb) // 3]] = False
+                st.grounded[node[lift]] = False
+                st.surfaced[node[lift]] = False
             zd = zd[~lift]
             ev.residual[zd] = 0.0
             for J in (ev.jac, ev.jac_lines):
@@ -425,8 +440,10 @@ class _Problem:
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
         X, R, P = np.empty_like(st.X), np.empty_like(st.R), np.empty_like(st.P)
         grounded = st.grounded.copy()
-        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded)
-        return State(X, R, P, grounded)
+        surfaced = st.surfaced.copy()
+        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded,
+                         self.floats, surfaced)
+        return State(X, R, P, grounded, surfaced)
 
     def newton(self, st: State, load: float, ev: Evaluation | None = None):
         """Newton with step limits and backtracking; returns (state, evaluation, converged).
