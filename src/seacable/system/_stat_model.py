@@ -60,7 +60,7 @@ class Assembly:
     depth: float | None
     friction: float
     body_names: list
-    free_bodies: list            # indices into body_names of the free bodies
+    free_bodies: list            # indices into body_names of the solved bodies (free, and prescribed pinned)
     node_kind: np.ndarray        # (nn,) FIXED / BODY / FREE
     node_body: np.ndarray        # (nn,) index into free_bodies for BODY nodes, else -1
     node_rel: np.ndarray         # (nn, 3) body-frame offset of BODY nodes
@@ -118,7 +118,9 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
     rho, g = env.water_density, env.gravity
     depth = env.depth
     body_names = list(system.bodies)
-    free_bodies = [i for i, n in enumerate(body_names) if system.bodies[n].kind == "free"]
+    # solved bodies: free ones, and prescribed ones pinned (CoupledPinned: rotations free, point held)
+    free_bodies = [i for i, n in enumerate(body_names) if system.bodies[n].kind == "free"
+                   or (system.bodies[n].kind == "prescribed" and system.bodies[n].pinned)]
     free_index = {body_names[i]: k for k, i in enumerate(free_bodies)}
     kind, nbody, rel, pos0, force, label, buoy = [], [], [], [], [], [], []
     point_node = {}
@@ -131,7 +133,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         buoy.append(rho * g * p.volume)
         if p.kind == "body":
             body = system.bodies[p.body]
-            if body.kind == "free":
+            if p.body in free_index:
                 kind.append(BODY)
                 nbody.append(free_index[p.body])
                 rel.append(np.array(p.position, float))

@@ -58,7 +58,11 @@ Model
   loads are ramped up in 5, then 20 steps.
 
 * A pinned free body (``Body.pinned``) keeps its reference point where it is given; only its
-  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). A rotation
+  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). So is a pinned
+  prescribed body (MoorDyn's ``CoupledPinned``: the reference point follows the vessel, held at
+  ``position`` in statics, the rotations free): its rotations are solved for moment equilibrium, its
+  pose is in ``body_position``, and it is not a free body of the result (its rotations are condensed
+  out of the stiffness with the free points). A rotation
   that no load resists nor loads - every line point and the centres of gravity and buoyancy on
   one axis through the reference point (a rod's spin about its own axis) - is indeterminate: held
   where it starts and listed in ``SystemEquilibrium.indeterminate``. A body unstable where it
@@ -610,9 +614,10 @@ def _check_external(system, asm, external):
                              f"got {load!r}. Suggested fix: give a 6-component load in global axes.")
 
 
-def _condense(K: np.ndarray, nb: int, keep_points: np.ndarray) -> np.ndarray:
-    """Schur complement of the free-point DOFs: K_bb - K_bp K_pp^-1 K_pb."""
-    b = np.arange(6 * nb)
+def _condense(K: np.ndarray, nb, keep_points: np.ndarray) -> np.ndarray:
+    """Schur complement of the free-point DOFs: K_bb - K_bp K_pp^-1 K_pb (``nb``: the number of bodies,
+    whose DOFs are the first 6 nb, or the body DOF indices to keep)."""
+    b = np.arange(6 * nb) if np.ndim(nb) == 0 else np.asarray(nb, int)
     p = keep_points
     if p.size == 0:
         return K[:b.size, :b.size].copy()
@@ -1067,21 +1072,30 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
     for k, i in enumerate(asm.free_bodies):
         body_pos[i, :3] = st.X[k]
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
-    K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
-    hyd = ev.hydro
+    # a prescribed pinned body (MoorDyn's CoupledPinned) is solved for its rotations but is not a free body
+    # of the result: its rotations are condensed out with the free points, its translations are held
+    free_k = np.array([k for k, i in enumerate(asm.free_bodies) if system.bodies[asm.body_names[i]].kind == "free"],
+                      int)
+    coupled_k = np.setdiff1d(np.arange(nb), free_k)
+    b = (6 * free_k[:, None] + np.arange(6)).ravel()
+    inner = prob.point_dofs(st)
+    if coupled_k.size:
+        inner = np.concatenate([(6 * coupled_k[:, None] + np.arange(3, 6)).ravel(), inner])
+    K = _condense(-ev.jac_lines, b, inner)
+    hyd = ev.hydro[np.ix_(b, b)]
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
     grounded = np.bincount(asm.sub_line, weights=ev.cat.grounded_length, minlength=len(asm.line_names))
     point_names = list(given[1])
     return SystemEquilibrium(
         system=system, environment=prob.env, body_names=list(asm.body_names), body_position=body_pos,
-        free_body_names=[asm.body_names[i] for i in asm.free_bodies], point_names=point_names,
+        free_body_names=[asm.body_names[asm.free_bodies[k]] for k in free_k], point_names=point_names,
         point_position=P[given[2]], line_names=list(asm.line_names),
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction.copy(), _rounds=rounds)
+        pin_reaction=ev.reaction[free_k].copy(), _rounds=rounds)
 
 
 def _continuous(angles, ref):
