@@ -13,6 +13,7 @@ the vectorised public function, which also serves the first evaluation.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -485,12 +486,20 @@ def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e
     V0 = warm[1].copy() if have else np.empty(ns)
     dep = math.nan if depth is None else float(depth)
     if tables is None:
-        tables = (np.zeros(ns, np.int64), np.zeros(ns, np.int64), _NO_TABLE[2], _NO_TABLE[3])
+        tables = _no_tables(ns)
     geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu_arr, dep, 1e-6 * (1.0 if depth is None else max(1.0, dep)),
                        H0, V0, have, tol, *tables, float(max_strain), geom, seabed, anchor_is_a, out)
     h, v = geom[:, 0], geom[:, 1]
     cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain, tables)
     return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
+
+
+@functools.lru_cache(maxsize=16)
+def _no_tables(ns):
+    """Table arrays saying "no table" for ``ns`` sub-lines (kept: the evaluation calls this each time)."""
+    z = np.zeros(ns, np.int64)
+    z.flags.writeable = False
+    return z, z, _NO_TABLE[2], _NO_TABLE[3]
 
 
 def table_strain(T, k, tables):
@@ -501,7 +510,9 @@ def table_strain(T, k, tables):
 
 def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=None) -> CatenaryResult:
     n = h.size
-    over = np.flatnonzero(out[:, 10] == -1.0)
+    flags = out[:, 10]
+    all_ok = bool(flags.min() == 1.0)
+    over = np.zeros(0, int) if all_ok else np.flatnonzero(flags == -1.0)
     if over.size:
         # a tabled sub-line strained beyond max_strain (the table's continuation: T above its end)
         k = int(over[0])
@@ -513,12 +524,12 @@ def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=Non
             "lengthen the line or bring the ends closer, or extend the table to the strains expected.")
         err.sub_line = k
         raise err
-    bad = out[:, 10] == 0.0
+    bad = flags == 0.0
     H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
     K = out[:, 5:9].reshape(n, 2, 2).copy()
     reg = out[:, 9].astype(np.int8)
     iters = 0
-    if bad.any():
+    if not all_ok and bad.any():
         # (a tabled sub-line here - buoyant, weightless, slack on the seabed - takes its EA: the table's
         # secant; statics._warn_strain says so)
         try:

@@ -138,7 +138,7 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
         name = asm.line_names[int(asm.sub_line[k])]
         raise NoSolutionError(re.sub(r"the line\[\d+\]", f"lines.{name}", str(err), count=1)) from None
     node_force = asm.node_force
-    if asm.node_buoy is not None and asm.node_buoy.any():
+    if asm.node_buoy is not None:
         # what sits at a node above the water weighs its dry weight (the buoyancy switches off at z = 0;
         # a step, no term in the Jacobian); a node stopped at the surface counts as immersed
         dry = (P[:, 2] > 0.0) & (asm.node_buoy != 0.0)

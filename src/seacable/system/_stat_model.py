@@ -83,7 +83,7 @@ class Assembly:
     extra_cuts: dict | None = None   # line name -> arc lengths of added internal nodes (sag onto the seabed)
     air: dict | None = None          # line name -> arc-length intervals above the water (dry weight)
     tables: tuple | None = None      # (ts_lo, ts_hi, tT, te): inverse strain-tension tables, or None
-    node_buoy: np.ndarray | None = None  # (nn,) buoyancy of what sits at the node (points, attachments) [N]
+    node_buoy: np.ndarray | None = None  # (nn,) buoyancy of what sits at the nodes (points, attachments), None: none [N]
 
     @property
     def n_dof(self) -> int:
@@ -232,7 +232,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
                    free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1),
                    extra_cuts={k: tuple(v) for k, v in (extra_cuts or {}).items()},
                    air={k: tuple(v) for k, v in (air or {}).items()},
-                   node_buoy=np.array(buoy, float),
+                   node_buoy=np.array(buoy, float) if any(buoy) else None,
                    tables=(np.array(ts_lo, np.int64), np.array(ts_hi, np.int64), np.array(ts_T, float),
                            np.array(ts_e, float)) if ts_T else None)
     nb = len(free_bodies)

@@ -337,7 +337,8 @@ class _Problem:
         self.spin = list(spin)
         self.any_held = bool(self.pinned.any()) or any(a.size for a in self.spin)
         self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
-        self.floats = asm.node_buoy > 0        # nodes whose buoyancy switches off above the water
+        # nodes whose buoyancy switches off above the water
+        self.floats = np.zeros(asm.node_kind.size, bool) if asm.node_buoy is None else asm.node_buoy > 0
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
@@ -390,7 +391,10 @@ class _Problem:
             # when immersed it is pulled down, and rises into the air when its dry weight alone is lifted
             node = self.asm.free_nodes[(zd - 6 * self.nb) // 3]
             res = ev.residual[zd]
-            lift = np.where(st.grounded[node], res > 0, (res <= 0) | (res - self.asm.node_buoy[node] > 0))
+            if st.surfaced.any():
+                lift = np.where(st.grounded[node], res > 0, (res <= 0) | (res - self.asm.node_buoy[node] > 0))
+            else:
+                lift = res > 0
             if lift.any():
                 st.grounded[node[lift]] = False
                 st.surfaced[node[lift]] = False
@@ -1074,8 +1078,11 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
     # a prescribed pinned body (MoorDyn's CoupledPinned) is solved for its rotations but is not a free body
     # of the result: its rotations are condensed out with the free points, its translations are held
-    free_k = np.array([k for k, i in enumerate(asm.free_bodies) if system.bodies[asm.body_names[i]].kind == "free"],
-                      int)
+    free_k = getattr(asm, "_result_free", None)
+    if free_k is None:
+        free_k = np.array([k for k, i in enumerate(asm.free_bodies)
+                           if system.bodies[asm.body_names[i]].kind == "free"], int)
+        asm._result_free = free_k
     coupled_k = np.setdiff1d(np.arange(nb), free_k)
     b = (6 * free_k[:, None] + np.arange(6)).ravel()
     inner = prob.point_dofs(st)
