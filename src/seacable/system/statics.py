@@ -875,8 +875,12 @@ def _beyond_table(prob: _Problem, ev: Evaluation) -> str:
     t_last, e_last = tT[hi[worst] - 1], te[hi[worst] - 1]
     loads = [f"{asm.body_names[i]}: |F| = {np.linalg.norm(prob.bd.external[k, :3]):.4g} N"
              for k, i in enumerate(asm.free_bodies) if np.any(prob.bd.external[k])]
-    load = ("the external load on " + ", ".join(loads)) if loads else "the weights, buoyancy and point loads"
-    return (f"lines.{name}: no static equilibrium: {load} needs a tension of {T[worst]:.6g} N in this line, above "
+    il = int(asm.sub_line[worst])
+    held = all(asm.node_kind[n] == 0 for n in (asm.sub_a[asm.line_first[il]], asm.sub_b[asm.line_last[il]]))
+    load = ("the external load on " + ", ".join(loads)) if loads else \
+        ("the positions of its held ends" if held else "the weights, buoyancy and point loads")
+    verb = "need" if load.startswith(("the positions", "the weights")) else "needs"
+    return (f"lines.{name}: no static equilibrium: {load} {verb} a tension of {T[worst]:.6g} N in this line, above "
             f"the last point of its tension-strain table ({t_last:.6g} N at strain {e_last:.4g}); beyond the table "
             "the tension is held flat (as MoorDyn), so the line yields without end. Suggested fix: extend the "
             "table to the strains this load needs, or reduce the load (or share it among more lines).")
