@@ -40,7 +40,7 @@ def test_a_point_above_the_water_weighs_its_dry_weight():
     m, V = 1000.0, 0.5
     eq = solve_equilibrium(_hang(20.0, 10.0, rope, m, V), ENV)
     assert eq.point_position[1, 2] == pytest.approx(10.0, abs=1e-4)      # stretch T L / EA = 1e-5 m
-    assert eq.end_a_tension[0] == pytest.approx(m * G, rel=1e-7)
+    assert eq.end_a_tension[0] == pytest.approx(m * G, rel=1e-7) and eq.surfaced == []
     assert eq.end_b_tension[0] == pytest.approx(m * G + 10.0 * rope.mass_per_length * G, rel=1e-7)
     eq = solve_equilibrium(_hang(5.0, 10.0, rope, m, V), ENV)
     assert eq.point_position[1, 2] == pytest.approx(-5.0, abs=1e-4)
@@ -65,5 +65,5 @@ def test_a_buoy_whose_buoyancy_lifts_it_out_floats_at_the_surface():
     T = 1e7 * (50.01 / 50.0 - 1.0) + w * 50.0 / 2
     assert (RHO * V - m) * G > T > -m * G            # immersed it rises, dry it falls: it floats
     eq = solve_equilibrium(system, Environment(depth=50.01))      # the anchor on the seabed
-    assert eq.point_position[1, 2] == 0.0
+    assert eq.point_position[1, 2] == 0.0 and eq.surfaced == ["b"]
     assert eq.end_b_tension[0] == pytest.approx(T, rel=1e-9)

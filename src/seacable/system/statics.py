@@ -45,7 +45,8 @@ Model
   either side). A free point that rises through z = 0 stops there and is held, as a point landing
   on the seabed, while immersed it is lifted and with its dry weight alone it is not (floating
   partly immersed: the surface takes the difference, and the stiffness holds its height); it is
-  released to sink or to rise into the air when either no longer holds.
+  released to sink or to rise into the air when either no longer holds
+  (``SystemEquilibrium.surfaced``). A point on a body only switches (the body has no such hold).
 * A free point (clump, junction, attachment) that reaches the seabed rests on it (its height is
   held while the net force pushes it down, released when it pulls up); it slides without
   friction. A sub-line between two points on the seabed lies flat.
@@ -149,6 +150,9 @@ class SystemEquilibrium:
         start; their stiffness is zero.
     pin_reaction : ndarray, shape (nbf, 3)
         Force the pin exerts on each pinned free body (zero for the others), global axes. [N]
+    surfaced : list of str
+        Free points (and line attachments) floating at the surface z = 0, partly immersed: their
+        buoyancy lifts them, their dry weight alone would not.
     """
 
     system: MooringSystem
@@ -176,6 +180,7 @@ class SystemEquilibrium:
     indeterminate: list = field(default_factory=list)
     pin_reaction: np.ndarray | None = None
     _rounds: tuple = field(default=({}, {}, {}), repr=False)   # (sag cuts, surface cuts, parts in air)
+    surfaced: list = field(default_factory=list)
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
@@ -1106,7 +1111,8 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction[free_k].copy(), _rounds=rounds)
+        pin_reaction=ev.reaction[free_k].copy(), _rounds=rounds,
+        surfaced=[asm.node_label[n].removeprefix("points.") for n in np.flatnonzero(st.surfaced)])
 
 
 def _continuous(angles, ref):
