@@ -371,9 +371,9 @@ class _Problem:
 
     def _z_dof(self, st: State) -> np.ndarray:
         """DOF indices of the z of the free nodes held on the seabed or at the surface."""
+        if not (st.grounded.any() or st.surfaced.any()):
+            return _NO_DOF
         held = st.grounded | st.surfaced
-        if not held.any():
-            return np.zeros(0, int)
         j = np.flatnonzero(held[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
@@ -538,6 +538,8 @@ class _Problem:
         return ev.residual * self.weights / ev.scale
 
 
+_NO_DOF = np.zeros(0, int)
+_NO_DOF.flags.writeable = False
 _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much (non-monotone)
 _CACHE: dict = {}
 
@@ -1087,18 +1089,20 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
     # a prescribed pinned body (MoorDyn's CoupledPinned) is solved for its rotations but is not a free body
     # of the result: its rotations are condensed out with the free points, its translations are held
-    free_k = getattr(asm, "_result_free", None)
-    if free_k is None:
+    split = getattr(asm, "_result_free", None)
+    if split is None:
         free_k = np.array([k for k, i in enumerate(asm.free_bodies)
                            if system.bodies[asm.body_names[i]].kind == "free"], int)
-        asm._result_free = free_k
-    coupled_k = np.setdiff1d(np.arange(nb), free_k)
-    b = (6 * free_k[:, None] + np.arange(6)).ravel()
-    inner = prob.point_dofs(st)
-    if coupled_k.size:
-        inner = np.concatenate([(6 * coupled_k[:, None] + np.arange(3, 6)).ravel(), inner])
-    K = _condense(-ev.jac_lines, b, inner)
-    hyd = ev.hydro[np.ix_(b, b)]
+        coupled_k = np.setdiff1d(np.arange(nb), free_k)
+        split = asm._result_free = (free_k, (6 * free_k[:, None] + np.arange(6)).ravel(),
+                                    (6 * coupled_k[:, None] + np.arange(3, 6)).ravel())
+    free_k, b, coupled_rot = split
+    if coupled_rot.size:
+        K = _condense(-ev.jac_lines, b, np.concatenate([coupled_rot, prob.point_dofs(st)]))
+        hyd = ev.hydro[np.ix_(b, b)]
+    else:
+        K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
+        hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
     grounded = np.bincount(asm.sub_line, weights=ev.cat.grounded_length, minlength=len(asm.line_names))
@@ -1111,7 +1115,7 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction[free_k].copy(), _rounds=rounds,
+        pin_reaction=ev.reaction[free_k] if coupled_rot.size else ev.reaction.copy(), _rounds=rounds,
         surfaced=[asm.node_label[n].removeprefix("points.") for n in np.flatnonzero(st.surfaced)])
 
 
