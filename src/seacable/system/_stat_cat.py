@@ -103,7 +103,7 @@ def _piece(j, hi, tT, te):
 def table_eps(T, lo, hi, tT, te):
     """Strain and d(strain)/dT at tension T >= 0."""
     for j in range(lo, hi):
-        a, b, t0, t1 = _piece(j, hi, tT, te)
+        a, b, _t0, t1 = _piece(j, hi, tT, te)
         if T < t1:
             return a + b * T, b
     return math.nan, math.nan
