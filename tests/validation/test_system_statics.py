@@ -57,13 +57,26 @@ def _tendon_buoy():
     return system, Environment(depth=100.0)
 
 
-@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy, _tendon_buoy])
+def _tabled_oc3():
+    """OC3-Hywind on lines with a bilinear strain-tension table (slope 0.3 EA up to strain 0.007, then EA:
+    kinked at 807 kN, inside the tension range of one line under the test loads, above and below the
+    others) and friction 0.5 on the seabed."""
+    system, env = ex.oc3_hywind()
+    ea = ex.OC3_CHAIN.axial_stiffness
+    t1 = 0.007 * 0.3 * ea
+    lt = ex.OC3_CHAIN.model_copy(update={"tension_strain": ((0.0, 0.0), (0.007, t1), (0.1, t1 + 0.093 * ea))})
+    lines = {k: v.model_copy(update={"line": Line.single(lt, v.line.length)}) for k, v in system.lines.items()}
+    env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.5})})
+    return MooringSystem(points=system.points, bodies=system.bodies, lines=lines), env
+
+
+@pytest.mark.parametrize("build", [ex.oc4_semi, ex.moored_buoy, _tendon_buoy, _tabled_oc3])
 def test_stiffness_equals_central_differences_of_equilibrium(build):
     system, env = build()
     body = next(iter(system.bodies))
     # the tendon buoy is solved without a load: its line stays exactly vertical (the limit
     # H/h -> dH/dx of the transverse stiffness)
-    load = {ex.oc4_semi: 100.0, ex.moored_buoy: 1.0, _tendon_buoy: 0.0}[build]
+    load = {ex.oc4_semi: 100.0, ex.moored_buoy: 1.0, _tendon_buoy: 0.0, _tabled_oc3: 50.0}[build]
     eq = solve_equilibrium(system, env, external={body: np.array([1e4, 5e3, 0, 0, 0, 2e3]) * load}, tol=1e-11)
     q = eq.body_position[0]
     K_fd = np.zeros((6, 6))
@@ -340,7 +353,7 @@ def _buoy_with_friction():
     return system, env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.5})})
 
 
-@pytest.mark.parametrize("build", [_landed_clump, _buoy_with_friction, ex.oc4_semi])
+@pytest.mark.parametrize("build", [_landed_clump, _buoy_with_friction, ex.oc4_semi, _tabled_oc3])
 def test_newton_jacobian_equals_central_differences_with_friction(build):
     # The full Jacobian of the Newton iteration (bodies and free points, before condensation),
     # including the anchor-end terms of grounded sub-lines with Coulomb friction

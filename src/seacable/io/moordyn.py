@@ -1959,7 +1959,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         dynamic = None
         if lt.dynamic_stiffness is not None:
             dynamic = (lt.dynamic_stiffness[0], lt.dynamic_stiffness[1] if len(lt.dynamic_stiffness) > 1 else 0.0)
-        if lt.tension_strain is not None:
+        if lt.syrope is not None:
             tabled.append(lt.name)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # MoorDyn's own Cd values, e.g. chain 2.4+
@@ -1971,10 +1971,9 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                 tension_strain=lt.tension_strain, dynamic_axial_stiffness=dynamic,
                 dynamic_axial_damping=lt.dynamic_damping)
     if tabled:
-        warnings.warn(f"{label}: line type(s) {', '.join(tabled)} have a nonlinear (strain-tension table) EA; it is "
-                      "kept in LineType.tension_strain and the finite-element lines (system_dynamic) use it, but the "
-                      "catenary statics (system_static) use a constant EA, the table's secant at its last point (for a Syrope rope the table is its original working "
-                      "curve; the working curve after the load history of SYROPE IC is not modelled).",
+        warnings.warn(f"{label}: Syrope line type(s) {', '.join(tabled)}: the statics (system_static) use the "
+                      "original working curve as the rope's strain-tension table; the working curve after the load "
+                      "history of SYROPE IC applies only in the finite-element lines.",
                       SeacableWarning, stacklevel=2)
     lines = {}
     for ln in md.lines:

@@ -13,6 +13,7 @@ the vectorised public function, which also serves the first evaluation.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 
@@ -67,11 +68,243 @@ def _spans(H, V, L, EA, w, mu, seabed):
     return x, z, LH * g - n + L / EA, -m, -m, n + L / EA, False
 
 
+# ---- nonlinear axial stiffness: a strain-tension table ------------------------------------------
+#
+# A sub-line with a table carries its inverse, strain as a function of tension, as the points
+# ``tT[lo:hi]`` (tension, increasing from 0) and ``te[lo:hi]`` (strain): linear between them, and
+# beyond the last point the last piece continued. (MoorDyn holds the tension flat there: the line
+# yields at the table's last tension. The continuation keeps Newton's tangent finite on the way; an
+# equilibrium that needs a tension above the table's end is refused by the caller, statics.py.) On a
+# piece eps = a + b T, and with T = sqrt(H^2 + V^2) along the catenary (V the vertical force, linear
+# in the unstretched arc length s, dV = w ds) the stretch integrals are closed forms:
+#
+#   x:  int eps/T dV = a [asinh(V/H)] + b [V],         z:  int eps V/T dV = int eps dT = [G(T)],
+#
+# G(T) = int_0^T eps; d/dH of the first is -a [V/(H T)] (eps continuous: the pieces' moving ends
+# add nothing).
+
+
 @njit(cache=True, error_model="numpy")
-def solve_warm(x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
-    """Newton from (H0, V0) per sub-line; ``out[k]`` = H, V, HA, VA, LB, K00, K01, K10, K11, regime, ok."""
+def _piece(j, hi, tT, te):
+    """(a, b, T_lo, T_hi) of piece j (j = hi - 1: the continuation beyond the table)."""
+    if j < hi - 1:
+        dT = tT[j + 1] - tT[j]
+        b = (te[j + 1] - te[j]) / dT if dT > 0 else 0.0
+        return te[j] - b * tT[j], b, tT[j], tT[j + 1]
+    T1, e1 = tT[hi - 1], te[hi - 1]
+    dT = T1 - tT[hi - 2]
+    b = (e1 - te[hi - 2]) / dT if dT > 0 else 0.0
+    if not b > 0:
+        b = e1 / T1
+    return e1 - b * T1, b, T1, math.inf
+
+
+@njit(cache=True, error_model="numpy")
+def table_eps(T, lo, hi, tT, te):
+    """Strain and d(strain)/dT at tension T >= 0."""
+    for j in range(lo, hi):
+        a, b, _t0, t1 = _piece(j, hi, tT, te)
+        if T < t1:
+            return a + b * T, b
+    return math.nan, math.nan
+
+
+@njit(cache=True, error_model="numpy")
+def table_G(T, lo, hi, tT, te):
+    """int_0^T eps(t) dt."""
+    g = 0.0
+    for j in range(lo, hi):
+        a, b, t0, t1 = _piece(j, hi, tT, te)
+        if t1 <= t0:
+            continue
+        top = min(T, t1)
+        if top > t0:
+            g += a * (top - t0) + 0.5 * b * (top * top - t0 * t0)
+        if T <= t1:
+            break
+    return g
+
+
+@njit(cache=True, error_model="numpy")
+def _J(u, H, lo, hi, tT, te):
+    """(int_0^u eps(T)/T dv, its d/dH) with T = sqrt(H^2 + v^2), u >= 0, H > 0."""
+    Tu = math.hypot(H, u)
+    J = 0.0
+    JH = 0.0
+    for j in range(lo, hi):
+        a, b, t0, t1 = _piece(j, hi, tT, te)
+        tl, th = max(t0, H), min(t1, Tu)
+        if th <= tl:
+            if t1 >= Tu:
+                break
+            continue
+        vl = math.sqrt(max(tl * tl - H * H, 0.0))
+        vh = math.sqrt(max(th * th - H * H, 0.0))
+        J += b * (vh - vl)
+        if a != 0.0:
+            # asinh(vh/H) - asinh(vl/H) without the division by H
+            J += a * math.asinh((th * th - tl * tl) / (vh * tl + vl * th))
+            JH -= a * (vh / th - vl / tl) / H
+        if t1 >= Tu:
+            break
+    return J, JH
+
+
+@njit(cache=True, error_model="numpy")
+def _I(V, H, lo, hi, tT, te):
+    """int_0^V eps/T dv (odd in V) and its d/dH."""
+    J, JH = _J(abs(V), H, lo, hi, tT, te)
+    if V < 0:
+        return -J, -JH
+    return J, JH
+
+
+@njit(cache=True, error_model="numpy")
+def _spans_nl(H, V, L, w, mu, seabed, lo, hi, tT, te):
+    """:func:`_spans` of a line whose strain is the table's eps(T) (w > 0, H > 0)."""
+    x, z, xh, xv, zh, zv, grd = _spans(H, V, L, math.inf, w, mu, seabed)
+    TF = math.hypot(H, V)
+    eF, _d = table_eps(TF, lo, hi, tT, te)
+    GF = table_G(TF, lo, hi, tT, te)
+    if grd:
+        LB = L - V / w
+        IF, IFH = _I(V, H, lo, hi, tT, te)
+        eH, dH = table_eps(H, lo, hi, tT, te)
+        # grounded part: T falls from H at the touchdown by mu w per metre towards the anchor
+        if mu > 0:
+            HA = H - mu * w * LB
+            if HA > 0:
+                eA, _d = table_eps(HA, lo, hi, tT, te)
+                Sg = (table_G(H, lo, hi, tT, te) - table_G(HA, lo, hi, tT, te)) / (mu * w)
+                SgH, SgV = (eH - eA) / (mu * w), -eA / w
+            else:
+                Sg = table_G(H, lo, hi, tT, te) / (mu * w)
+                SgH, SgV = eH / (mu * w), 0.0
+        else:
+            Sg, SgH, SgV = LB * eH, LB * dH, -eH / w
+        x += H / w * IF + Sg
+        xh += IF / w + H / w * IFH + SgH
+        xv += H / w * eF / TF + SgV
+        z += (GF - table_G(H, lo, hi, tT, te)) / w
+        zh += (eF * H / TF - eH) / w
+        zv += eF * V / TF / w
+        return x, z, xh, xv, zh, zv, grd
+    VA = V - w * L
+    TA = math.hypot(H, VA)
+    eA, _d = table_eps(TA, lo, hi, tT, te)
+    IF, IFH = _I(V, H, lo, hi, tT, te)
+    IA, IAH = _I(VA, H, lo, hi, tT, te)
+    x += H / w * (IF - IA)
+    xh += (IF - IA) / w + H / w * (IFH - IAH)
+    xv += H / w * (eF / TF - eA / TA)
+    z += (GF - table_G(TA, lo, hi, tT, te)) / w
+    zh += H * (eF / TF - eA / TA) / w
+    zv += (eF * V / TF - eA * VA / TA) / w
+    return x, z, xh, xv, zh, zv, grd
+
+
+@njit(cache=True, error_model="numpy")
+def _log_int(T1, T2, lo, hi, tT, te):
+    """int_T1^T2 eps(T)/T dT, 0 < T1 <= T2 (a vertical line's horizontal compliance)."""
+    out = 0.0
+    for j in range(lo, hi):
+        a, b, t0, t1 = _piece(j, hi, tT, te)
+        tl, th = max(t0, T1), min(t1, T2)
+        if th > tl:
+            out += b * (th - tl) + (a * math.log(th / tl) if a != 0.0 else 0.0)
+        if t1 >= T2:
+            break
+    return out
+
+
+@njit(cache=True, error_model="numpy")
+def _vertical_nl(k, z, L, w, lo, hi, tT, te, out):
+    """:func:`_vertical` of a line with a strain-tension table: straight and taut when the chord
+    ``z`` is at least ``L + G(w L)/w`` (hanging under its own weight from the upper end), else a U
+    folded at its lowest point (branch lengths l1 above the fairlead's side, L - l1 the anchor's).
+    Safeguarded Newton (bisection on a bracket) to 1e-14 x L."""
+    Gw = table_G(w * L, lo, hi, tT, te)
+    zc = L + Gw / w
+    if z >= zc:
+        # z = L + (G(V) - G(V - w L)) / w, increasing in V >= w L
+        lo_v, hi_v = w * L, w * L
+        while True:
+            hi_v = 2.0 * hi_v + tT[hi - 1]
+            if L + (table_G(hi_v, lo, hi, tT, te) - table_G(hi_v - w * L, lo, hi, tT, te)) / w > z:
+                break
+            if hi_v > 1e300:
+                return
+        V = 0.5 * (lo_v + hi_v)
+        for _it in range(200):
+            f = L + (table_G(V, lo, hi, tT, te) - table_G(V - w * L, lo, hi, tT, te)) / w - z
+            if abs(f) <= 1e-14 * L:
+                break
+            if f > 0:
+                hi_v = V
+            else:
+                lo_v = V
+            d = (table_eps(V, lo, hi, tT, te)[0] - table_eps(V - w * L, lo, hi, tT, te)[0]) / w
+            Vn = V - f / d if d > 0 else 0.5 * (lo_v + hi_v)
+            if not (lo_v < Vn < hi_v):
+                Vn = 0.5 * (lo_v + hi_v)
+            if abs(Vn - V) <= 1e-15 * Vn:
+                V = Vn
+                break
+            V = Vn
+        VA = V - w * L
+        dzdV = (table_eps(V, lo, hi, tT, te)[0] - table_eps(VA, lo, hi, tT, te)[0]) / w
+        k00 = 0.0
+        if VA > 0:
+            k00 = w / (math.log(V / VA) + _log_int(VA, V, lo, hi, tT, te))
+        out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4] = 0.0, V, 0.0, VA, 0.0
+        out[k, 5], out[k, 6], out[k, 7], out[k, 8] = k00, 0.0, 0.0, 1.0 / dzdV
+        out[k, 9] = 6.0
+        out[k, 10] = 1.0
+        return
+    # U: z = l1 + G(w l1)/w - l2 - G(w l2)/w, l2 = L - l1, increasing in l1 in [L/2, L]
+    a_, b_ = 0.5 * L, L
+    l1 = 0.5 * (a_ + b_)
+    for _it in range(200):
+        l2 = L - l1
+        f = l1 - l2 + (table_G(w * l1, lo, hi, tT, te) - table_G(w * l2, lo, hi, tT, te)) / w - z
+        if abs(f) <= 1e-14 * L:
+            break
+        if f > 0:
+            b_ = l1
+        else:
+            a_ = l1
+        d = 2.0 + table_eps(w * l1, lo, hi, tT, te)[0] + table_eps(w * l2, lo, hi, tT, te)[0]
+        ln = l1 - f / d
+        if not (a_ <= ln <= b_):
+            ln = 0.5 * (a_ + b_)
+        if abs(ln - l1) <= 1e-15 * L:
+            l1 = ln
+            break
+        l1 = ln
+    l2 = L - l1
+    d = 2.0 + table_eps(w * l1, lo, hi, tT, te)[0] + table_eps(w * l2, lo, hi, tT, te)[0]
+    out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4] = 0.0, w * l1, 0.0, -w * l2, 0.0
+    out[k, 5], out[k, 6], out[k, 7], out[k, 8] = 0.0, 0.0, 0.0, w / d
+    out[k, 9] = 5.0
+    out[k, 10] = 1.0
+
+
+@njit(cache=True, error_model="numpy")
+def _spans_any(H, V, L, EA, w, mu, seabed, lo, hi, tT, te):
+    if hi > lo:
+        return _spans_nl(H, V, L, w, mu, seabed, lo, hi, tT, te)
+    return _spans(H, V, L, EA, w, mu, seabed)
+
+
+@njit(cache=True, error_model="numpy")
+def solve_warm(x, z, L, EA, w, mu, seabed, H0, V0, tol, ts_lo, ts_hi, tT, te, max_strain, out):
+    """Newton from (H0, V0) per sub-line; ``out[k]`` = H, V, HA, VA, LB, K00, K01, K10, K11, regime, ok.
+
+    ``ts_lo/ts_hi`` index each sub-line's inverse strain-tension table in ``tT``/``te`` (empty:
+    constant EA); ok = 1 solved, 0 left to the public function, -1 a tabled sub-line strained
+    beyond ``max_strain``."""
     for k in range(x.size):
-        _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out)
+        _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, ts_lo[k], ts_hi[k], tT, te, max_strain, out)
 
 
 @njit(cache=True, error_model="numpy")
@@ -94,7 +327,7 @@ def _guess_one(x, z, L, EA, w):
 
 @njit(cache=True, error_model="numpy")
 def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0, have_warm, tol,
-                       geom, seabed, anchor_is_a, out):
+                       ts_lo, ts_hi, tT, te, max_strain, geom, seabed, anchor_is_a, out):
     """Each sub-line's catenary frame (lower end = anchor) and its warm-started solution.
 
     ``geom[s]`` = horizontal span, vertical span, e_x, e_y, tiny (horizontal span ~ 0);
@@ -121,7 +354,7 @@ def geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu, depth, seabed_tol, H0, V0,
                 H0[s], V0[s] = _guess_one(h, geom[s, 1], L[s], EA[s], w[s])
             else:
                 H0[s], V0[s] = 0.0, 0.0
-    solve_warm(geom[:, 0], geom[:, 1], L, EA, w, mu, seabed, H0, V0, tol, out)
+    solve_warm(geom[:, 0], geom[:, 1], L, EA, w, mu, seabed, H0, V0, tol, ts_lo, ts_hi, tT, te, max_strain, out)
 
 
 @njit(cache=True, error_model="numpy")
@@ -153,17 +386,21 @@ def _vertical(k, z, L, EA, w, out):
 
 
 @njit(cache=True, error_model="numpy")
-def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
+def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, lo, hi, tT, te, max_strain, out):
     """Sub-line ``k``: damped Newton on (H, V) with one polishing step; out[k, 10] = 1 if solved."""
     out[k, 10] = 0.0
     if w[k] > 0 and not seabed[k] and x[k] <= 1e-12 * L[k] and math.hypot(x[k], z[k]) / L[k] - 1.0 <= 1.0:
-        _vertical(k, z[k], L[k], EA[k], w[k], out)
+        if hi > lo:
+            _vertical_nl(k, z[k], L[k], w[k], lo, hi, tT, te, out)
+            _check_table_strain(k, lo, hi, tT, te, max_strain, out)
+        else:
+            _vertical(k, z[k], L[k], EA[k], w[k], out)
         return
     if not (w[k] > 0 and H0[k] > 0 and x[k] > 1e-9 * L[k]) or (seabed[k] and z[k] <= 1e-12 * L[k]):
         return
     H, V = H0[k], V0[k]
     scale = max(L[k], math.hypot(x[k], z[k]))
-    fx, fz, jxh, jxv, jzh, jzv, grd = _spans(H, V, L[k], EA[k], w[k], mu[k], seabed[k])
+    fx, fz, jxh, jxv, jzh, jzv, grd = _spans_any(H, V, L[k], EA[k], w[k], mu[k], seabed[k], lo, hi, tT, te)
     fx -= x[k]
     fz -= z[k]
     ok = False
@@ -188,7 +425,7 @@ def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
         for _ls in range(30):
             Ht = max(H + alpha * dH, 1e-15 * (w[k] * L[k] + abs(V + alpha * dV)))
             Vt = V + alpha * dV
-            gx, gz, a1, a2, a3, a4, g5 = _spans(Ht, Vt, L[k], EA[k], w[k], mu[k], seabed[k])
+            gx, gz, a1, a2, a3, a4, g5 = _spans_any(Ht, Vt, L[k], EA[k], w[k], mu[k], seabed[k], lo, hi, tT, te)
             gx -= x[k]
             gz -= z[k]
             if (math.isfinite(gx) and math.isfinite(gz) and (polished or gx * gx + gz * gz <= (1 - 1e-4 * alpha) * f2)) \
@@ -210,15 +447,34 @@ def _solve_one(k, x, z, L, EA, w, mu, seabed, H0, V0, tol, out):
         out[k, 9] = 1.0
     out[k, 5], out[k, 6] = jzv / det, -jxv / det
     out[k, 7], out[k, 8] = -jzh / det, jxh / det
+    if hi > lo:
+        out[k, 10] = 1.0
+        _check_table_strain(k, lo, hi, tT, te, max_strain, out)
+        return
     if max(math.hypot(H, V), math.hypot(out[k, 2], out[k, 3])) > EA[k]:
         return                         # strain above 1: the public function explains it
     out[k, 10] = 1.0
 
 
-def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e-12, max_strain=1.0):
+@njit(cache=True, error_model="numpy")
+def _check_table_strain(k, lo, hi, tT, te, max_strain, out):
+    """ok = -1 if a solved tabled sub-line's largest strain exceeds max_strain."""
+    if out[k, 10] == 1.0:
+        T = max(math.hypot(out[k, 0], out[k, 1]), math.hypot(out[k, 2], out[k, 3]))
+        if table_eps(T, lo, hi, tT, te)[0] > max_strain:
+            out[k, 10] = -1.0
+
+
+_NO_TABLE = (np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0), np.zeros(0))
+
+
+def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e-12, max_strain=1.0, tables=None):
     """Sub-line frames and catenaries from node positions; (cat, anchor_is_a, e, tiny).
 
-    ``max_strain``: a sub-line stretched more is refused (NoSolutionError) by the public function."""
+    ``max_strain``: a sub-line stretched more is refused (NoSolutionError). ``tables``:
+    ``(ts_lo, ts_hi, tT, te)``, each sub-line's inverse strain-tension table (see :func:`_piece`;
+    ``ts_lo == ts_hi``: constant EA), or None for none. In the result a tabled sub-line's ``EA``
+    is its secant at the fairlead tension (what :meth:`CatenaryResult.profile` draws it with)."""
     ns = sub_a.size
     geom = np.empty((ns, 5))
     seabed = np.empty(ns, np.bool_)
@@ -229,21 +485,53 @@ def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e
     H0 = warm[0].copy() if have else np.empty(ns)
     V0 = warm[1].copy() if have else np.empty(ns)
     dep = math.nan if depth is None else float(depth)
+    if tables is None:
+        tables = _no_tables(ns)
     geometry_and_solve(P, sub_a, sub_b, L, EA, w, mu_arr, dep, 1e-6 * (1.0 if depth is None else max(1.0, dep)),
-                       H0, V0, have, tol, geom, seabed, anchor_is_a, out)
+                       H0, V0, have, tol, *tables, float(max_strain), geom, seabed, anchor_is_a, out)
     h, v = geom[:, 0], geom[:, 1]
-    cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain)
+    cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain, tables)
     return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
 
 
-def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0) -> CatenaryResult:
+@functools.lru_cache(maxsize=16)
+def _no_tables(ns):
+    """Table arrays saying "no table" for ``ns`` sub-lines (kept: the evaluation calls this each time)."""
+    z = np.zeros(ns, np.int64)
+    z.flags.writeable = False
+    return z, z, _NO_TABLE[2], _NO_TABLE[3]
+
+
+def table_strain(T, k, tables):
+    """Strain of sub-line ``k`` at tension(s) ``T`` from its table. [-]"""
+    lo, hi, tT, te = int(tables[0][k]), int(tables[1][k]), tables[2], tables[3]
+    return np.array([table_eps(float(t), lo, hi, tT, te)[0] for t in np.atleast_1d(T)])
+
+
+def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=None) -> CatenaryResult:
     n = h.size
-    bad = out[:, 10] == 0.0
+    flags = out[:, 10]
+    all_ok = bool(flags.min() == 1.0)
+    over = np.zeros(0, int) if all_ok else np.flatnonzero(flags == -1.0)
+    if over.size:
+        # a tabled sub-line strained beyond max_strain (the table's continuation: T above its end)
+        k = int(over[0])
+        T = max(math.hypot(out[k, 0], out[k, 1]), math.hypot(out[k, 2], out[k, 3]))
+        err = NoSolutionError(
+            f"the line[{k}] would stretch by {table_strain(T, k, tables)[0]:.3g} > max_strain={max_strain:.3g} "
+            f"(tension {T:.6g} N on its tension-strain table, which ends at {tables[2][tables[1][k] - 1]:.6g} N): "
+            f"horizontal_span={h[k]:.6g} m, vertical_span={v[k]:.6g} m, length={L[k]:.6g} m. Suggested fix: "
+            "lengthen the line or bring the ends closer, or extend the table to the strains expected.")
+        err.sub_line = k
+        raise err
+    bad = flags == 0.0
     H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
     K = out[:, 5:9].reshape(n, 2, 2).copy()
     reg = out[:, 9].astype(np.int8)
     iters = 0
-    if bad.any():
+    if not all_ok and bad.any():
+        # (a tabled sub-line here - buoyant, weightless, slack on the seabed - takes its EA: the table's
+        # secant; statics._warn_strain says so)
         try:
             r = catenary(h[bad], v[bad], L[bad], EA[bad], w[bad], mu_arr[bad], seabed[bad], tol=tol,
                          max_strain=max_strain)
@@ -257,12 +545,21 @@ def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0) -> Catenar
         K[bad] = r.stiffness
         reg[bad] = r.regime
         iters = r.iterations
-    return CatenaryResult(H, V, HA, VA, np.hypot(H, V), np.hypot(HA, VA), LB, K, reg, iters, h, v, L, EA, w,
+    ea = EA
+    if tables is not None and tables[2].size:
+        tabled = np.flatnonzero((tables[1] > tables[0]) & ~bad)
+        if tabled.size:
+            ea = EA.copy()
+            for k in tabled:
+                T = math.hypot(H[k], V[k])
+                e = table_strain(T, k, tables)[0]
+                ea[k] = T / e if e > 0 and T > 0 else EA[k]
+    return CatenaryResult(H, V, HA, VA, np.hypot(H, V), np.hypot(HA, VA), LB, K, reg, iters, h, v, L, ea, w,
                           mu_arr, seabed)
 
 
 def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResult:
-    """All sub-lines at once: warm-started kernel where it applies, the public function elsewhere."""
+    """All sub-lines at once (constant EA): warm-started kernel where it applies, the public function elsewhere."""
     n = h.size
     mu_arr = np.broadcast_to(np.asarray(mu, float), (n,)).copy()
     if warm is None:
@@ -271,7 +568,8 @@ def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResu
         warm = _guess(h, v, L, EA, wp)
         warm = (np.where(w > 0, warm[0], 0.0), warm[1])
     out = np.zeros((n, 11))
-    solve_warm(h, v, L, EA, w, mu_arr, seabed, warm[0], warm[1], tol, out)
+    zero = np.zeros(n, np.int64)
+    solve_warm(h, v, L, EA, w, mu_arr, seabed, warm[0], warm[1], tol, zero, zero, _NO_TABLE[2], _NO_TABLE[3], 1.0, out)
     bad = out[:, 10] == 0.0
     H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
     K = out[:, 5:9].reshape(n, 2, 2).copy()
@@ -287,3 +585,52 @@ def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResu
     return CatenaryResult(H, V, HA, VA, np.hypot(H, V), np.hypot(HA, VA), LB, K, reg, iters, h, v, L, EA, w,
                           mu_arr, np.asarray(seabed, bool))
 
+
+
+@njit(cache=True, error_model="numpy")
+def _table_profile(s, H, V, L, w, mu, LB, regime, lo, hi, tT, te, x, z, T):
+    """Shape (x, z from the lower end) and tension at arc lengths ``s`` of a solved tabled sub-line:
+    the stretch integrals of :func:`_spans_nl` over [0, s] (each part of a catenary is one)."""
+    VA = V - w * L
+    for i in range(s.size):
+        si = s[i]
+        if regime == 5 or regime == 6:           # vertical: taut or folded
+            Vs = VA + w * si
+            x[i] = 0.0
+            z[i] = (abs(Vs) - abs(VA) + table_G(abs(Vs), lo, hi, tT, te) - table_G(abs(VA), lo, hi, tT, te)) / w
+            T[i] = abs(Vs)
+        elif regime == 2 or regime == 3:         # grounded up to LB, then suspended
+            if si >= LB:
+                x[i], z[i] = _spans_nl(H, w * (si - LB), si, w, mu, True, lo, hi, tT, te)[:2]
+                T[i] = math.hypot(H, w * (si - LB))
+            else:
+                if mu > 0:
+                    T0 = max(H - mu * w * LB, 0.0)
+                    Ts = max(H - mu * w * (LB - si), 0.0)
+                    x[i] = si + (table_G(Ts, lo, hi, tT, te) - table_G(T0, lo, hi, tT, te)) / (mu * w)
+                else:
+                    Ts = H
+                    x[i] = si + si * table_eps(H, lo, hi, tT, te)[0]
+                z[i] = 0.0
+                T[i] = Ts
+        else:                                    # suspended
+            Vs = VA + w * si
+            if si > 0:
+                x[i], z[i] = _spans_nl(H, Vs, si, w, 0.0, False, lo, hi, tT, te)[:2]
+            else:
+                x[i], z[i] = 0.0, 0.0
+            T[i] = math.hypot(H, Vs)
+
+
+def sub_profile(cat, k, n, tables, profile_cls):
+    """Profile of sub-line ``k`` at ``n`` points: exact for a tabled sub-line solved here (regimes
+    suspended, grounded, vertical), else ``cat.profile``."""
+    if tables is not None and tables[1][k] > tables[0][k] and int(cat.regime[k]) in (1, 2, 3, 5, 6) \
+            and float(cat.weight_per_length[k]) > 0:
+        s = np.linspace(0.0, float(cat.length[k]), n)
+        x, z, T = np.empty(n), np.empty(n), np.empty(n)
+        _table_profile(s, float(cat.H_fairlead[k]), float(cat.V_fairlead[k]), float(cat.length[k]),
+                       float(cat.weight_per_length[k]), float(cat.seabed_friction[k]), float(cat.grounded_length[k]),
+                       int(cat.regime[k]), int(tables[0][k]), int(tables[1][k]), tables[2], tables[3], x, z, T)
+        return profile_cls(s, x, z, T)
+    return cat.profile(n, index=k)

@@ -22,6 +22,7 @@ negated fairlead columns.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
@@ -62,6 +63,7 @@ class State:
     R: np.ndarray             # (nb, 3, 3)
     P: np.ndarray             # (nn, 3) every node (free nodes are the state; others derived)
     grounded: np.ndarray      # (nn,) bool: free node resting on the seabed (z held)
+    surfaced: np.ndarray | None = None   # (nn,) bool: free node with buoyancy stopped at the surface z = 0
 
 
 @dataclass
@@ -108,6 +110,13 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
                     external_scale=float(np.abs(ext).max(initial=0.0)))
 
 
+@functools.lru_cache(maxsize=16)
+def _zeros(n):
+    z = np.zeros(n)
+    z.flags.writeable = False
+    return z
+
+
 def node_positions(asm: Assembly, X, R, P):
     """Global positions of every node; body nodes from their body's X and R."""
     out = np.empty_like(P)
@@ -128,13 +137,18 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     P = node_positions(asm, st.X, st.R, st.P)
     try:
         cat, anchor_is_a, e, tiny = frame_and_catenaries(P, asm.sub_a, asm.sub_b, asm.sub_L, asm.sub_EA, asm.sub_w,
-                                                         asm.friction, asm.depth, warm, max_strain=max_strain)
+                                                         asm.friction, asm.depth, warm, max_strain=max_strain,
+                                                         tables=asm.tables)
     except NoSolutionError as err:
         k = getattr(err, "sub_line", None)
         if k is None:
             raise
         name = asm.line_names[int(asm.sub_line[k])]
         raise NoSolutionError(re.sub(r"the line\[\d+\]", f"lines.{name}", str(err), count=1)) from None
+    node_force = asm.node_force
+    # what sits at a node above the water weighs its dry weight (the buoyancy switches off at z = 0; a
+    # step, no term in the Jacobian; a node stopped at the surface counts as immersed): in the kernel
+    node_buoy = asm.node_buoy if asm.node_buoy is not None else _zeros(nn)
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     force_max = getattr(asm, "_force_max", None)
@@ -146,14 +160,14 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
         jac, hydro = np.empty((ndof, ndof)), np.empty((6 * nb, 6 * nb))
         scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead,
                                 cat.V_fairlead, cat.H_anchor, cat.V_anchor, cat.stiffness, cat.regime, _GROUNDED,
-                                float(asm.friction), asm.node_force, asm.node_kind, asm.node_body, asm.node_dof, nb,
-                                ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
-                                bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
+                                float(asm.friction), node_force, node_buoy, asm.node_kind, asm.node_body,
+                                asm.node_dof, nb, ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0,
+                                asm.rho, asm.g, bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
         return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
     grounded = _GROUNDED[cat.regime]
     K = cat.stiffness
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
-                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), asm.node_force, asm.node_kind,
+                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), node_force, node_buoy, asm.node_kind,
                 asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
     own = np.zeros((nb, 6))
     own_jac = np.zeros((nb, 6, 6))

@@ -41,12 +41,16 @@ def _block(kxx, kxz, kzx, kzz, kt, ex, ey, out):
 
 
 @njit(cache=True, error_model="numpy")
-def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force,
+def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force, node_buoy,
              node_kind, node_body, node_dof, nb, ndof, fa, fb, nf, res, jac):
-    """Fill fa, fb (ns, 3), nf (nn, 3), res (ndof,) and jac (ndof, ndof) with the line terms."""
+    """Fill fa, fb (ns, 3), nf (nn, 3), res (ndof,) and jac (ndof, ndof) with the line terms (and the node
+    loads: ``node_force``, less the buoyancy ``node_buoy`` of nodes above the water)."""
     ns = sub_a.size
     nn = P.shape[0]
     nf[:, :] = node_force
+    for n in range(nn):
+        if node_buoy[n] != 0.0 and P[n, 2] > 0.0:
+            nf[n, 2] -= node_buoy[n]           # above the water: dry weight (a step, no Jacobian term)
     res[:] = 0.0
     jac[:, :] = 0.0
     DF = np.empty((3, 3))
@@ -186,9 +190,11 @@ def node_positions(P, X, R, node_kind, node_body, node_rel, out):
 
 
 @njit(cache=True, error_model="numpy")
-def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
+def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded, floats, surfaced):
     """X2, R2, P2 = the state moved by alpha dq (rotations R -> Rot(alpha th) R, Rodrigues); free
-    nodes below the seabed (depth NaN: none) put on it and flagged in ``grounded``."""
+    nodes below the seabed (depth NaN: none) put on it and flagged in ``grounded``; free nodes with
+    buoyancy (``floats``) that rise through the surface from below stopped at z = 0 and flagged in
+    ``surfaced``."""
     nb = X.shape[0]
     K = np.empty((3, 3))
     Q = np.empty((3, 3))
@@ -225,6 +231,9 @@ def step_state(X, R, P, dq, alpha, free_nodes, depth, X2, R2, P2, grounded):
         if not math.isnan(depth) and P2[n, 2] < -depth:
             P2[n, 2] = -depth
             grounded[n] = True
+        if floats[n] and P[n, 2] <= 0.0 and P2[n, 2] > 0.0:
+            P2[n, 2] = 0.0
+            surfaced[n] = True
 
 
 @njit(cache=True, error_model="numpy")
@@ -284,7 +293,8 @@ def force_scale(fa, fb, own, floor):
 
 @njit(cache=True, error_model="numpy")
 def assemble_all(P, X, R, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, regime, grounded_of, mu,
-                 node_force, node_kind, node_body, node_dof, nb, ndof, mass, rcg, volume, rcb, awp, iwp, z0, rho,
+                 node_force, node_buoy, node_kind, node_body, node_dof, nb, ndof, mass, rcg, volume, rcb, awp, iwp,
+                 z0, rho,
                  g, external, load_factor, floor, fa, fb, nf, res, jac_lines, jac, hydro):
     """:func:`assemble` and :func:`body_terms` in one call (bodies without a user hydrostatic matrix):
     fills fa, fb, nf, res (lines, bodies' own terms and external loads), jac_lines, jac (all terms)
@@ -294,7 +304,7 @@ def assemble_all(P, X, R, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K,
     grounded = np.empty(ns, np.bool_)
     for s in range(ns):
         grounded[s] = grounded_of[regime[s]]
-    assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force, node_kind,
+    assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, mu, node_force, node_buoy, node_kind,
              node_body, node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
     own = np.zeros((nb, 6))
     own_jac = np.zeros((nb, 6, 6))

@@ -22,6 +22,7 @@ import numpy as np
 
 from ..environment import Environment
 from ..errors import InputError
+from ..mooring.network import table_secant
 from .model import MooringSystem
 
 FIXED, BODY, FREE = 0, 1, 2
@@ -59,7 +60,7 @@ class Assembly:
     depth: float | None
     friction: float
     body_names: list
-    free_bodies: list            # indices into body_names of the free bodies
+    free_bodies: list            # indices into body_names of the solved bodies (free, and prescribed pinned)
     node_kind: np.ndarray        # (nn,) FIXED / BODY / FREE
     node_body: np.ndarray        # (nn,) index into free_bodies for BODY nodes, else -1
     node_rel: np.ndarray         # (nn, 3) body-frame offset of BODY nodes
@@ -81,6 +82,8 @@ class Assembly:
     node_dof: np.ndarray         # (nn,) first DOF of the node's body (BODY) or of the node (FREE), else -1
     extra_cuts: dict | None = None   # line name -> arc lengths of added internal nodes (sag onto the seabed)
     air: dict | None = None          # line name -> arc-length intervals above the water (dry weight)
+    tables: tuple | None = None      # (ts_lo, ts_hi, tT, te): inverse strain-tension tables, or None
+    node_buoy: np.ndarray | None = None  # (nn,) buoyancy of what sits at the nodes (points, attachments), None: none [N]
 
     @property
     def n_dof(self) -> int:
@@ -115,9 +118,11 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
     rho, g = env.water_density, env.gravity
     depth = env.depth
     body_names = list(system.bodies)
-    free_bodies = [i for i, n in enumerate(body_names) if system.bodies[n].kind == "free"]
+    # solved bodies: free ones, and prescribed ones pinned (CoupledPinned: rotations free, point held)
+    free_bodies = [i for i, n in enumerate(body_names) if system.bodies[n].kind == "free"
+                   or (system.bodies[n].kind == "prescribed" and system.bodies[n].pinned)]
     free_index = {body_names[i]: k for k, i in enumerate(free_bodies)}
-    kind, nbody, rel, pos0, force, label = [], [], [], [], [], []
+    kind, nbody, rel, pos0, force, label, buoy = [], [], [], [], [], [], []
     point_node = {}
     for name, p in system.points.items():
         point_node[name] = len(kind)
@@ -125,9 +130,10 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         f = np.array(p.external_force, float)
         f[2] -= p.net_weight(rho, g)
         force.append(f)
+        buoy.append(rho * g * p.volume)
         if p.kind == "body":
             body = system.bodies[p.body]
-            if body.kind == "free":
+            if p.body in free_index:
                 kind.append(BODY)
                 nbody.append(free_index[p.body])
                 rel.append(np.array(p.position, float))
@@ -143,6 +149,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         rel.append(np.zeros(3))
 
     sub = {k: [] for k in ("a", "b", "L", "EA", "w", "line", "s0")}
+    ts_lo, ts_hi, ts_T, ts_e = [], [], [], []
     first, last = [], []
     line_names = list(system.lines)
     for il, (lname, sl) in enumerate(system.lines.items()):
@@ -155,23 +162,31 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
         for s in list(ends[1:-1]) + list((extra_cuts or {}).get(lname, ())):
             cuts.setdefault(round(s / total / _MERGE), [s, 0.0])
         end_load = {na: 0.0, nb: 0.0}
+        end_buoy = {na: 0.0, nb: 0.0}
         for i, att in enumerate(line.attachments):
             wgt = att.net_weight(rho, g)
+            b = att.mass * g - wgt            # its buoyancy (it weighs m g in air)
             if att.s <= _MERGE * total:
                 end_load[na] += wgt
+                end_buoy[na] += b
             elif att.s >= total * (1 - _MERGE):
                 end_load[nb] += wgt
+                end_buoy[nb] += b
             else:
-                cuts.setdefault(round(att.s / total / _MERGE), [att.s, 0.0])[1] += wgt
+                c = cuts.setdefault(round(att.s / total / _MERGE), [att.s, 0.0])
+                c[1] += wgt
+                c.append(b)
         for node, wgt in end_load.items():
             force[node] = force[node] + np.array([0.0, 0.0, -wgt])
-        cut_s = sorted(cuts.values())
+            buoy[node] += end_buoy[node]
+        cut_s = sorted(cuts.values(), key=lambda c: c[0])
         pa, pb = _guess_end(na, kind, nbody, rel, pos0, system, body_names, free_bodies), \
             _guess_end(nb, kind, nbody, rel, pos0, system, body_names, free_bodies)
         nodes = [na]
         start = _start_positions(line, pa, pb, [c[0] for c in cut_s], rho, g, depth)
-        for (s, wgt), p0 in zip(cut_s, start):
+        for (s, wgt, *b_att), p0 in zip(cut_s, start):
             nodes.append(len(kind))
+            buoy.append(sum(b_att))
             kind.append(FREE)
             nbody.append(-1)
             rel.append(np.zeros(3))
@@ -186,14 +201,20 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
             mid = 0.5 * (s0 + s1)
             seg = next(j for j in range(len(line.segments)) if mid <= ends[j + 1])
             lt = line.segments[seg].line_type
-            if lt.axial_stiffness is None:
+            if lt.axial_stiffness is None and lt.tension_strain is None:
                 raise InputError(f"lines.{lname}: line type {lt.name or seg} has no axial_stiffness; the "
                                  "system statics needs EA in N. Suggested fix: give axial_stiffness "
                                  "(a very large value for an almost inextensible line).")
             sub["a"].append(nodes[k])
             sub["b"].append(nodes[k + 1])
             sub["L"].append(s1 - s0)
-            sub["EA"].append(lt.axial_stiffness)
+            ts_lo.append(len(ts_T))
+            if lt.tension_strain is not None:
+                T_inv, e_inv = inverse_table(lt.tension_strain)
+                ts_T.extend(T_inv)
+                ts_e.extend(e_inv)
+            ts_hi.append(len(ts_T))
+            sub["EA"].append(lt.axial_stiffness if lt.axial_stiffness is not None else table_secant(lt.tension_strain))
             dry = any(a <= mid <= b for a, b in (air or {}).get(lname, ()))
             sub["w"].append(lt.mass_per_length * g if dry else lt.submerged_weight(rho, g))
             sub["line"].append(il)
@@ -211,12 +232,29 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
                    line_names=line_names, line_first=np.array(first, int), line_last=np.array(last, int),
                    free_nodes=np.flatnonzero(kind == FREE), node_dof=np.full(kind.size, -1),
                    extra_cuts={k: tuple(v) for k, v in (extra_cuts or {}).items()},
-                   air={k: tuple(v) for k, v in (air or {}).items()})
+                   air={k: tuple(v) for k, v in (air or {}).items()},
+                   node_buoy=np.array(buoy, float) if any(buoy) else None,
+                   tables=(np.array(ts_lo, np.int64), np.array(ts_hi, np.int64), np.array(ts_T, float),
+                           np.array(ts_e, float)) if ts_T else None)
     nb = len(free_bodies)
     asm.node_dof[kind == BODY] = 6 * asm.node_body[kind == BODY]
     asm.node_dof[asm.free_nodes] = 6 * nb + 3 * np.arange(asm.free_nodes.size)
     _check_depths(asm, system)
     return asm
+
+
+def inverse_table(table) -> tuple[list, list]:
+    """A strain-tension table ``((strain, tension), ...)`` as its inverse, tension points from 0 and
+    their strains (for :mod:`._stat_cat`: strain linear in tension between the points).
+
+    MoorDyn's tension is linear in strain between the points and held flat beyond the last; a
+    table whose first point is not at the origin is joined to it by a straight line here (MoorDyn
+    holds the first point's tension down to zero strain, a jump the statics cannot take).
+    """
+    pts = [(float(t), float(e)) for e, t in table]
+    if pts[0][0] > 0:
+        pts.insert(0, (0.0, 0.0))
+    return [p[0] for p in pts], [p[1] for p in pts]
 
 
 def _start_positions(line, pa, pb, cut_s, rho, g, depth):

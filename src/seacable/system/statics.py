@@ -14,6 +14,14 @@ Model
   A sub-line whose lower end is on the seabed (within 1e-6 x depth) may lie on it, with the
   environment's Coulomb friction; otherwise it hangs free. Attachments become free nodes
   carrying their net weight ``(m - rho V) g``.
+* A line type with a strain-tension table (``LineType.tension_strain``) is the elastic catenary
+  with strain eps(T): its stretch is the integral of eps(T(s)) along the unstretched length,
+  T = sqrt(H^2 + V(s)^2) suspended and T = H - mu w (L_B - s) (down to 0) on the seabed, in
+  closed form per piece of the table, with the analytic tangent (:mod:`._stat_cat`). The table is
+  taken from the origin (a first point at a strain > 0 is joined to it by a straight line).
+  Weightless, buoyant and slack-on-the-seabed parts of a tabled line take its constant EA (a warning
+  says so). MoorDyn holds the tension flat beyond the table's last point; an equilibrium that needs
+  more tension than that is refused (``NoSolutionError``).
 * A free body carries its weight ``m g`` at the centre of gravity and a buoyancy ``rho g V`` at
   the centre of buoyancy (both rotate with the body), a heave restoring
   ``-rho g A_wp (z - z_given)`` at the reference point (``volume`` is the displacement at the
@@ -31,6 +39,14 @@ Model
   it contains the moment of the end forces as their arms rotate). At zero rotation the small
   rotations are the Euler angle increments.
 
+* A point (clump, buoy, attachment, a point on a body) above the water (z > 0) weighs its dry
+  weight ``m g``: a point is a point, so its buoyancy switches off at z = 0, a step (no partial
+  immersion of its volume). The Jacobian has no term for the step (its derivative is zero on
+  either side). A free point that rises through z = 0 stops there and is held, as a point landing
+  on the seabed, while immersed it is lifted and with its dry weight alone it is not (floating
+  partly immersed: the surface takes the difference, and the stiffness holds its height); it is
+  released to sink or to rise into the air when either no longer holds
+  (``SystemEquilibrium.surfaced``). A point on a body only switches (the body has no such hold).
 * A free point (clump, junction, attachment) that reaches the seabed rests on it (its height is
   held while the net force pushes it down, released when it pulls up); it slides without
   friction. A sub-line between two points on the seabed lies flat.
@@ -43,7 +59,11 @@ Model
   loads are ramped up in 5, then 20 steps.
 
 * A pinned free body (``Body.pinned``) keeps its reference point where it is given; only its
-  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). A rotation
+  rotations are solved (``SystemEquilibrium.pin_reaction``: the force of the pin). So is a pinned
+  prescribed body (MoorDyn's ``CoupledPinned``: the reference point follows the vessel, held at
+  ``position`` in statics, the rotations free): its rotations are solved for moment equilibrium, its
+  pose is in ``body_position``, and it is not a free body of the result (its rotations are condensed
+  out of the stiffness with the free points). A rotation
   that no load resists nor loads - every line point and the centres of gravity and buoyancy on
   one axis through the reference point (a rod's spin about its own axis) - is indeterminate: held
   where it starts and listed in ``SystemEquilibrium.indeterminate``. A body unstable where it
@@ -57,7 +77,7 @@ Model
 
 Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A buoyant sub-line is not
-checked against rising above the surface, nor a point's buoyancy against its being in air.
+checked against rising above the surface.
 
 References
 ----------
@@ -77,8 +97,9 @@ import numpy as np
 
 from ..environment import Environment
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
-from ..statics.catenary import CatenaryRegime, CatenaryResult
+from ..statics.catenary import CatenaryProfile, CatenaryRegime, CatenaryResult
 from . import _stat_kernel as _kern
+from ._stat_cat import sub_profile, table_strain
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
 from ._stat_model import BODY, Assembly, assemble, euler, rotation
 from .model import MooringSystem
@@ -129,6 +150,9 @@ class SystemEquilibrium:
         start; their stiffness is zero.
     pin_reaction : ndarray, shape (nbf, 3)
         Force the pin exerts on each pinned free body (zero for the others), global axes. [N]
+    surfaced : list of str
+        Free points (and line attachments) floating at the surface z = 0, partly immersed: their
+        buoyancy lifts them, their dry weight alone would not.
     """
 
     system: MooringSystem
@@ -156,6 +180,7 @@ class SystemEquilibrium:
     indeterminate: list = field(default_factory=list)
     pin_reaction: np.ndarray | None = None
     _rounds: tuple = field(default=({}, {}, {}), repr=False)   # (sag cuts, surface cuts, parts in air)
+    surfaced: list = field(default_factory=list)
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
@@ -241,7 +266,7 @@ class SystemEquilibrium:
         S, X, T = [], [], []
         for k in subs:
             m = max(4, int(np.ceil(2 * n * asm.sub_L[k] / total)) + 2)
-            prof = self._cat.profile(m, index=k)
+            prof = sub_profile(self._cat, k, m, asm.tables, CatenaryProfile)
             a_is = self._anchor_is_a[k]
             pA = self._node_position[asm.sub_a[k] if a_is else asm.sub_b[k]]
             e = self._e[k]
@@ -317,6 +342,8 @@ class _Problem:
         self.spin = list(spin)
         self.any_held = bool(self.pinned.any()) or any(a.size for a in self.spin)
         self.depth_nan = np.nan if asm.depth is None else float(asm.depth)
+        # nodes whose buoyancy switches off above the water
+        self.floats = np.zeros(asm.node_kind.size, bool) if asm.node_buoy is None else asm.node_buoy > 0
         self.iterations = 0
         self.refused = ""         # why the last refused trial step was refused (a line that cannot reach)
         self.warm = None          # last end forces of every sub-line: the catenaries' next start
@@ -340,19 +367,20 @@ class _Problem:
             low = P[asm.free_nodes, 2] <= -asm.depth
             P[asm.free_nodes[low], 2] = -asm.depth
             grounded[asm.free_nodes[low]] = True
-        return State(X, R, P, grounded)
+        return State(X, R, P, grounded, np.zeros(P.shape[0], bool))
 
     def _z_dof(self, st: State) -> np.ndarray:
-        """DOF indices of the grounded free nodes' z."""
-        if not st.grounded.any():
-            return np.zeros(0, int)
-        j = np.flatnonzero(st.grounded[self.asm.free_nodes])
+        """DOF indices of the z of the free nodes held on the seabed or at the surface."""
+        if not (st.grounded.any() or st.surfaced.any()):
+            return _NO_DOF
+        held = st.grounded | st.surfaced
+        j = np.flatnonzero(held[self.asm.free_nodes])
         return 6 * self.nb + 3 * j + 2
 
     def point_dofs(self, st: State) -> np.ndarray:
-        """DOF indices of the free points that are not held on the seabed (condensed out)."""
+        """DOF indices of the free points that are not held on the seabed or at the surface (condensed out)."""
         allp = np.arange(6 * self.nb, 6 * self.nb + 3 * self.nfree)
-        if not self.nfree or not st.grounded.any():
+        if not self.nfree or not (st.grounded.any() or st.surfaced.any()):
             return allp
         return np.setdiff1d(allp, self._z_dof(st))
 
@@ -362,10 +390,19 @@ class _Problem:
         self._hold(st, ev)
         zd = self._z_dof(st)
         if zd.size:
-            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off
-            lift = ev.residual[zd] > 0
+            # a grounded node pushed down rests (the seabed takes it); pulled up it lifts off. A node
+            # stopped at the surface (counted immersed) stays there while its buoyancy lifts it and its
+            # dry weight alone would not (partly immersed: the surface takes the difference); it sinks
+            # when immersed it is pulled down, and rises into the air when its dry weight alone is lifted
+            node = self.asm.free_nodes[(zd - 6 * self.nb) // 3]
+            res = ev.residual[zd]
+            if st.surfaced.any():
+                lift = np.where(st.grounded[node], res > 0, (res <= 0) | (res - self.asm.node_buoy[node] > 0))
+            else:
+                lift = res > 0
             if lift.any():
-                st.grounded[self.asm.free_nodes[(zd[lift] - 6 * self.nb) // 3]] = False
+                st.grounded[node[lift]] = False
+                st.surfaced[node[lift]] = False
             zd = zd[~lift]
             ev.residual[zd] = 0.0
             for J in (ev.jac, ev.jac_lines):
@@ -416,8 +453,10 @@ class _Problem:
     def step(self, st: State, dq: np.ndarray, alpha: float) -> State:
         X, R, P = np.empty_like(st.X), np.empty_like(st.R), np.empty_like(st.P)
         grounded = st.grounded.copy()
-        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded)
-        return State(X, R, P, grounded)
+        surfaced = st.surfaced.copy()
+        _kern.step_state(st.X, st.R, st.P, dq, float(alpha), self.asm.free_nodes, self.depth_nan, X, R, P, grounded,
+                         self.floats, surfaced)
+        return State(X, R, P, grounded, surfaced)
 
     def newton(self, st: State, load: float, ev: Evaluation | None = None):
         """Newton with step limits and backtracking; returns (state, evaluation, converged).
@@ -499,6 +538,8 @@ class _Problem:
         return ev.residual * self.weights / ev.scale
 
 
+_NO_DOF = np.zeros(0, int)
+_NO_DOF.flags.writeable = False
 _GROWTH = 10.0     # a clipped Newton step may raise the residual norm this much (non-monotone)
 _CACHE: dict = {}
 
@@ -584,9 +625,10 @@ def _check_external(system, asm, external):
                              f"got {load!r}. Suggested fix: give a 6-component load in global axes.")
 
 
-def _condense(K: np.ndarray, nb: int, keep_points: np.ndarray) -> np.ndarray:
-    """Schur complement of the free-point DOFs: K_bb - K_bp K_pp^-1 K_pb."""
-    b = np.arange(6 * nb)
+def _condense(K: np.ndarray, nb, keep_points: np.ndarray) -> np.ndarray:
+    """Schur complement of the free-point DOFs: K_bb - K_bp K_pp^-1 K_pb (``nb``: the number of bodies,
+    whose DOFs are the first 6 nb, or the body DOF indices to keep)."""
+    b = np.arange(6 * nb) if np.ndim(nb) == 0 else np.asarray(nb, int)
     p = keep_points
     if p.size == 0:
         return K[:b.size, :b.size].copy()
@@ -720,6 +762,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     InputError
         What the catenary lines cannot model, unknown body names in ``external``, an unstable
         body with no mooring restoring.
+    NoSolutionError
+        A line cannot reach at the starting positions, or the equilibrium needs a tension above the
+        last point of a line's strain-tension table.
     ConvergenceError
         No equilibrium found with a plain Newton iteration nor a load ramp; names the residual
         and the last offset of each body.
@@ -794,6 +839,9 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
                 surf_rounds += 1
                 continue
         break
+    beyond = _beyond_table(prob, ev)
+    if beyond:
+        raise NoSolutionError(beyond)
     if not ok:
         err = prob.error(ev)
         offs = []
@@ -815,6 +863,36 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     return eq
 
 
+def _beyond_table(prob: _Problem, ev: Evaluation) -> str:
+    """The message for a line whose tension exceeds the last point of its strain-tension table at the
+    state reached (a solution or the last iterate), else ''."""
+    asm = prob.asm
+    if asm.tables is None:
+        return ""
+    lo, hi, tT, te = asm.tables
+    T = np.maximum(ev.cat.fairlead_tension, ev.cat.anchor_tension)
+    worst, over = -1, 0.0
+    for k in np.flatnonzero(hi > lo):
+        r = T[k] / tT[hi[k] - 1]
+        if r > 1.0 + 1e-9 and r > over:
+            worst, over = int(k), r
+    if worst < 0:
+        return ""
+    name = asm.line_names[asm.sub_line[worst]]
+    t_last, e_last = tT[hi[worst] - 1], te[hi[worst] - 1]
+    loads = [f"{asm.body_names[i]}: |F| = {np.linalg.norm(prob.bd.external[k, :3]):.4g} N"
+             for k, i in enumerate(asm.free_bodies) if np.any(prob.bd.external[k])]
+    il = int(asm.sub_line[worst])
+    held = all(asm.node_kind[n] == 0 for n in (asm.sub_a[asm.line_first[il]], asm.sub_b[asm.line_last[il]]))
+    load = ("the external load on " + ", ".join(loads)) if loads else \
+        ("the positions of its held ends" if held else "the weights, buoyancy and point loads")
+    verb = "need" if load.startswith(("the positions", "the weights")) else "needs"
+    return (f"lines.{name}: no static equilibrium: {load} {verb} a tension of {T[worst]:.6g} N in this line, above "
+            f"the last point of its tension-strain table ({t_last:.6g} N at strain {e_last:.4g}); beyond the table "
+            "the tension is held flat (as MoorDyn), so the line yields without end. Suggested fix: extend the "
+            "table to the strains this load needs, or reduce the load (or share it among more lines).")
+
+
 _SURFACE_ROUNDS = 8     # times the surface crossings of lines are moved to the last solution's
 
 
@@ -831,7 +909,7 @@ def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
         name = asm.line_names[asm.sub_line[k]]
         a_is = ev.anchor_is_a[k]
         low = asm.sub_a[k] if a_is else asm.sub_b[k]
-        prof = ev.cat.profile(801, index=k)
+        prof = sub_profile(ev.cat, k, 801, asm.tables, CatenaryProfile)
         z = P[low, 2] + prof.z
         s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
         if not a_is:
@@ -935,6 +1013,21 @@ def _warn_strain(eq: SystemEquilibrium) -> None:
     asm = eq._asm
     T = np.maximum(eq._cat.fairlead_tension, eq._cat.anchor_tension)
     strain = T / asm.sub_EA
+    if asm.tables is not None:
+        tabled = np.flatnonzero(asm.tables[1] > asm.tables[0])
+        for k in tabled:
+            strain[k] = table_strain(T[k], k, asm.tables)[0]
+        # tabled sub-lines the catenary kernel leaves to the public function (constant EA): buoyant,
+        # weightless, slack on the seabed
+        approx = [k for k in tabled if int(eq._cat.regime[k]) not in (1, 2, 3, 5, 6) or asm.sub_w[k] <= 0]
+        if approx:
+            name = asm.line_names[asm.sub_line[approx[0]]]
+            warnings.warn(f"lines.{name}: its tension-strain table is applied exactly to weighty lines hanging or "
+                          "lying on the seabed under tension; this part (buoyant, weightless, or slack on the "
+                          f"seabed: {CatenaryRegime(int(eq._cat.regime[approx[0]])).name}) takes the constant EA "
+                          f"{asm.sub_EA[approx[0]]:.4g} N (axial_stiffness, else the table's secant). Suggested fix: "
+                          "none needed at low tension; give axial_stiffness as the slope at the tension expected.",
+                          SeacableWarning, stacklevel=3)
     k = int(np.argmax(strain)) if strain.size else -1
     if k >= 0 and strain[k] > _STRAIN_WARN:
         name = asm.line_names[asm.sub_line[k]]
@@ -994,21 +1087,36 @@ def _result(prob: _Problem, st: State, ev: Evaluation, rounds: tuple = ({}, {}, 
     for k, i in enumerate(asm.free_bodies):
         body_pos[i, :3] = st.X[k]
         body_pos[i, 3:] = _continuous(euler(st.R[k]), body_pos[i, 3:])
-    K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
-    hyd = ev.hydro
+    # a prescribed pinned body (MoorDyn's CoupledPinned) is solved for its rotations but is not a free body
+    # of the result: its rotations are condensed out with the free points, its translations are held
+    split = getattr(asm, "_result_free", None)
+    if split is None:
+        free_k = np.array([k for k, i in enumerate(asm.free_bodies)
+                           if system.bodies[asm.body_names[i]].kind == "free"], int)
+        coupled_k = np.setdiff1d(np.arange(nb), free_k)
+        split = asm._result_free = (free_k, (6 * free_k[:, None] + np.arange(6)).ravel(),
+                                    (6 * coupled_k[:, None] + np.arange(3, 6)).ravel())
+    free_k, b, coupled_rot = split
+    if coupled_rot.size:
+        K = _condense(-ev.jac_lines, b, np.concatenate([coupled_rot, prob.point_dofs(st)]))
+        hyd = ev.hydro[np.ix_(b, b)]
+    else:
+        K = _condense(-ev.jac_lines, nb, prob.point_dofs(st))
+        hyd = ev.hydro
     fa = ev.fa[asm.line_first]
     fb = ev.fb[asm.line_last]
     grounded = np.bincount(asm.sub_line, weights=ev.cat.grounded_length, minlength=len(asm.line_names))
     point_names = list(given[1])
     return SystemEquilibrium(
         system=system, environment=prob.env, body_names=list(asm.body_names), body_position=body_pos,
-        free_body_names=[asm.body_names[i] for i in asm.free_bodies], point_names=point_names,
+        free_body_names=[asm.body_names[asm.free_bodies[k]] for k in free_k], point_names=point_names,
         point_position=P[given[2]], line_names=list(asm.line_names),
         end_a_force=fa, end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1),
         end_b_tension=np.linalg.norm(fb, axis=1), grounded_length=grounded, stiffness=K, hydrostatic=hyd,
         iterations=prob.iterations, residual=prob.error(ev), _asm=asm, _cat=ev.cat,
         _anchor_is_a=ev.anchor_is_a, _e=ev.e, _node_position=P, indeterminate=prob.held_rotations(st),
-        pin_reaction=ev.reaction.copy(), _rounds=rounds)
+        pin_reaction=ev.reaction[free_k] if coupled_rot.size else ev.reaction.copy(), _rounds=rounds,
+        surfaced=[asm.node_label[n].removeprefix("points.") for n in np.flatnonzero(st.surfaced)])
 
 
 def _continuous(angles, ref):
