@@ -66,6 +66,29 @@ def _add_point_force(f6, arm, fx, fy, fz):
 
 
 @njit(cache=True)
+def _mv(R, v, out):
+    """out = R v (3x3 times 3), without a BLAS call."""
+    for r in range(3):
+        out[r] = R[r, 0] * v[0] + R[r, 1] * v[1] + R[r, 2] * v[2]
+
+
+@njit(cache=True)
+def _rot6(R, A, out, transposed):
+    """out = R6 A R6^T (``transposed``: R6^T A R6) for a 6x6 ``A`` and R6 = diag(R, R), without BLAS calls."""
+    for bi in range(2):
+        for bj in range(2):
+            for r in range(3):
+                for c in range(3):
+                    s = 0.0
+                    for k in range(3):
+                        for l in range(3):
+                            rk = R[k, r] if transposed else R[r, k]
+                            cl = R[l, c] if transposed else R[c, l]
+                            s += rk * A[3 * bi + k, 3 * bj + l] * cl
+                    out[3 * bi + r, 3 * bj + c] = s
+
+
+@njit(cache=True)
 def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
     """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external; global axes,
     moments about the reference point) and its mass matrix ``M6`` (rigid body about the reference point
@@ -73,33 +96,38 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
     R = np.empty((3, 3))
     rotation(q[3], q[4], q[5], R)
     m = par[B_MASS]
-    c = R @ par[B_CG:B_CG + 3]
-    cb = R @ par[B_CB:B_CB + 3]
-    # rigid-body mass matrix about the reference point
-    Ig = R @ np.diag(par[B_INERT:B_INERT + 3]) @ R.T
-    S = np.empty((3, 3))
-    _skew(c, S)
+    c = np.empty(3)
+    cb = np.empty(3)
+    _mv(R, par[B_CG:B_CG + 3], c)
+    _mv(R, par[B_CB:B_CB + 3], cb)
+    # rigid-body mass matrix about the reference point (I_g = R diag(I) R^T), plus the added mass R6 A R6^T
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
-    M6[:] = 0.0
+    _rot6(R, add, M6, False)
     for r in range(3):
-        M6[r, r] = m
+        M6[r, r] += m
         for k in range(3):
-            M6[r, 3 + k] = -m * S[r, k]
-            M6[3 + r, k] = m * S[r, k]
-            M6[3 + r, 3 + k] = Ig[r, k] + m * ((cc if r == k else 0.0) - c[r] * c[k])
-    R6 = np.zeros((6, 6))
-    R6[:3, :3] = R
-    R6[3:, 3:] = R
-    M6 += R6 @ add @ R6.T
+            ig = R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1] + R[r, 2] * par[B_INERT + 2] * R[k, 2]
+            M6[3 + r, 3 + k] += ig + m * ((cc if r == k else 0.0) - c[r] * c[k])
+    # the coupling m skew(c) (moment rows) and -m skew(c) (force rows)
+    for r in range(3):
+        for k in range(3):
+            # skew(c)[r, k] = -eps_rkl c_l
+            s = 0.0 if r == k else (c[3 - r - k] if (k - r) % 3 == 2 else -c[3 - r - k])
+            M6[3 + r, k] += m * s
+            M6[r, 3 + k] -= m * s
     f6[:] = 0.0
     q0 = par[B_Q0:B_Q0 + 6]
     if par[B_HASK] > 0.0:
         # the user's hydrostatic matrix: weight and buoyancy as at the reference pose, restoring from K
         R0 = np.empty((3, 3))
         rotation(q0[3], q0[4], q0[5], R0)
-        _add_point_force(f6, R0 @ par[B_CG:B_CG + 3], 0.0, 0.0, -m * g)
-        _add_point_force(f6, R0 @ par[B_CB:B_CB + 3], 0.0, 0.0, rho * g * par[B_VOL])
-        f6 -= khs @ (q - q0)
+        _mv(R0, par[B_CG:B_CG + 3], c)
+        _mv(R0, par[B_CB:B_CB + 3], cb)
+        _add_point_force(f6, c, 0.0, 0.0, -m * g)
+        _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
+        for r in range(6):
+            for k in range(6):
+                f6[r] -= khs[r, k] * (q[k] - q0[k])
     else:
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         # buoyancy of the volume at the given pose, and the waterplane's heave restoring at the reference point
@@ -114,13 +142,20 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
     if ext_n > 0:
         for k in range(6):
             f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
-    # damping, in body axes
-    vb = R6.T @ qd
-    fb = lin @ vb
+    # damping, in body axes: vb = R6^T qd, f6 -= R6 (B1 vb + B2 |vb| vb)
+    vb = np.empty(6)
+    fb = np.empty(6)
+    _mv(R.T, qd[:3], vb[:3])
+    _mv(R.T, qd[3:], vb[3:])
     for k in range(6):
+        s = 0.0
         for j in range(6):
-            fb[k] += quad[k, j] * abs(vb[j]) * vb[j]
-    f6 -= R6 @ fb
+            s += (lin[k, j] + quad[k, j] * abs(vb[j])) * vb[j]
+        fb[k] = s
+    _mv(R, fb[:3], vb[:3])
+    _mv(R, fb[3:], vb[3:])
+    for k in range(6):
+        f6[k] -= vb[k]
 
 
 @njit(cache=True)
@@ -135,39 +170,37 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
     """
     R = np.empty((3, 3))
     rotation(q[3], q[4], q[5], R)
-    S1 = np.empty((3, 3))
-    S2 = np.empty((3, 3))
     K[:] = 0.0
-    C[:] = 0.0
     m = par[B_MASS]
-    F = np.zeros(3)
     if par[B_HASK] > 0.0:
         K[:] = khs
     else:
-        F[2] = -m * g
-        _skew(F, S1)
-        _skew(R @ par[B_CG:B_CG + 3], S2)
-        K[3:, 3:] -= S1 @ S2
-        F[2] = rho * g * par[B_VOL]
-        _skew(F, S1)
-        _skew(R @ par[B_CB:B_CB + 3], S2)
-        K[3:, 3:] -= S1 @ S2
+        # -skew(F) skew(c) for a vertical force F = (0, 0, f) at c: [[f c_z, 0, -f c_x], [0, f c_z, -f c_y], [0, 0, 0]]
+        for off, f in ((B_CG, -m * g), (B_CB, rho * g * par[B_VOL])):
+            cx = R[0, 0] * par[off] + R[0, 1] * par[off + 1] + R[0, 2] * par[off + 2]
+            cy = R[1, 0] * par[off] + R[1, 1] * par[off + 1] + R[1, 2] * par[off + 2]
+            cz = R[2, 0] * par[off] + R[2, 1] * par[off + 1] + R[2, 2] * par[off + 2]
+            K[3, 3] += f * cz
+            K[4, 4] += f * cz
+            K[3, 5] -= f * cx
+            K[4, 5] -= f * cy
         K[2, 2] += rho * g * par[B_AWP]
         # d a / d phi = -skew(a) for a = R e_z
-        a = np.array([R[0, 2], R[1, 2], R[2, 2]])
-        _skew(a, S1)
-        for j in range(3):
-            K[3, 3 + j] += rho * g * par[B_IXX] * S1[1, j]
-            K[4, 3 + j] -= rho * g * par[B_IYY] * S1[0, j]
-    R6 = np.zeros((6, 6))
-    R6[:3, :3] = R
-    R6[3:, 3:] = R
-    vb = R6.T @ qd
-    D = lin.copy()
+        ax, ay, az = R[0, 2], R[1, 2], R[2, 2]
+        kx, ky = rho * g * par[B_IXX], rho * g * par[B_IYY]
+        K[3, 3] += kx * az
+        K[3, 5] -= kx * ax
+        K[4, 4] += ky * az
+        K[4, 5] -= ky * ay
+    # damping: R6 (B1 + 2 B2 |vb|) R6^T
+    vb = np.empty(6)
+    _mv(R.T, qd[:3], vb[:3])
+    _mv(R.T, qd[3:], vb[3:])
+    D = np.empty((6, 6))
     for k in range(6):
         for j in range(6):
-            D[k, j] += 2.0 * quad[k, j] * abs(vb[j])
-    C[:] = R6 @ D @ R6.T
+            D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
+    _rot6(R, D, C, False)
 
 
 @njit(cache=True)
@@ -204,57 +237,83 @@ def dense_solve(A, b):
 
 @njit(cache=True)
 def band_factor(band, bw):
-    """LU factor of a banded matrix in place (no pivoting); False on a zero pivot."""
+    """LU factor of a banded matrix in place (no pivoting): the multipliers L below the diagonal, U on and
+    above. Returns 0 on a zero pivot, 1, or 2 when the matrix is symmetric: then U = D L^T and only the upper
+    band is eliminated (the multipliers written from it), half the work of the general case.
+    """
     n = band.shape[0]
+    sym = True
+    for i in range(n):
+        for j in range(i + 1, min(n, i + bw + 1)):
+            if band[i, bw + j - i] != band[j, bw + i - j]:
+                sym = False
+                break
+        if not sym:
+            break
     for k in range(n):
         piv = band[k, bw]
         if piv == 0.0 or not math.isfinite(piv):
-            return False
-        for i in range(k + 1, min(n, k + bw + 1)):
-            f = band[i, bw + k - i] / piv
+            return 0
+        top = min(n, k + bw + 1)
+        for i in range(k + 1, top):
+            f = (band[k, bw + i - k] if sym else band[i, bw + k - i]) / piv
+            band[i, bw + k - i] = f
             if f == 0.0:
                 continue
-            band[i, bw + k - i] = f
-            for j in range(k + 1, min(n, k + bw + 1)):
+            for j in range(i if sym else k + 1, top):
                 band[i, bw + j - i] -= f * band[k, bw + j - k]
-    return True
+    return 2 if sym else 1
 
 
 @njit(cache=True)
-def band_substitute(band, bw, rhs, first):
-    """Solve with a factored band in place. ``first`` >= 0: ``rhs`` is the unit vector of row ``first``;
-    ``first`` < 0: any ``rhs``.
+def band_forward(band, bw, x):
+    """x <- L^-1 x with the unit lower factor of :func:`band_factor`."""
+    n = x.size
+    for k in range(n):
+        xk = x[k]
+        if xk != 0.0:
+            for i in range(k + 1, min(n, k + bw + 1)):
+                x[i] -= band[i, bw + k - i] * xk
 
-    For a unit vector exact zeros are skipped: the forward sweep stops where its fill ends, and the
-    backward sweep starts there and stops above ``first`` once ``bw`` rows in a row came out zero, so the
-    column of a node on one line of a network of separate lines costs that line's rows only.
-    """
-    n = rhs.size
-    unit = first >= 0
-    if not unit:
-        first = 0
-    last = first if unit else n
-    for k in range(first, n):
-        if k > last + bw:
-            break
-        rk = rhs[k]
-        if rk == 0.0:
-            continue
-        if unit:
-            last = k
-        for i in range(k + 1, min(n, k + bw + 1)):
-            rhs[i] -= band[i, bw + k - i] * rk
-    top = min(n - 1, last + bw)
-    low = top + 1
-    for k in range(top, -1, -1):
-        if unit and k < first and k + bw < low:
-            break
-        s = rhs[k]
+
+@njit(cache=True)
+def band_backward(band, bw, x):
+    """x <- U^-1 x with the upper factor of :func:`band_factor`."""
+    n = x.size
+    for k in range(n - 1, -1, -1):
+        s = x[k]
         for j in range(k + 1, min(n, k + bw + 1)):
-            s -= band[k, bw + j - k] * rhs[j]
-        rhs[k] = s / band[k, bw]
-        if rhs[k] != 0.0:
-            low = k
+            s -= band[k, bw + j - k] * x[j]
+        x[k] = s / band[k, bw]
+
+
+@njit(cache=True)
+def unit_column(band, bw, x, first, upper):
+    """The part of ``L^-1 e_first`` (``upper``: ``U^-T e_first``) that can be nonzero, in ``x[first:last + 1]``;
+    returns ``last``. ``x`` need not be zero on entry: the sweep clears the rows it reaches, and stops where the
+    fill ends (``bw`` rows without a nonzero), so the column of a node at the end of its line's rows in
+    the band costs a few rows, not the line.
+    """
+    n = x.size
+    x[first] = 1.0
+    hi = first
+    last = first
+    k = first
+    while k < n and k <= last + bw:
+        xk = x[k]
+        if upper:
+            xk /= band[k, bw]
+            x[k] = xk
+        if xk != 0.0:
+            last = k
+            top = min(n - 1, k + bw)
+            for i in range(hi + 1, top + 1):
+                x[i] = 0.0
+            hi = max(hi, top)
+            for i in range(k + 1, top + 1):
+                x[i] -= (band[k, bw + i - k] if upper else band[i, bw + k - i]) * xk
+        k += 1
+    return last
 
 
 @njit(cache=True)
@@ -285,7 +344,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
     count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
-    (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
+    (6 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y) = args
@@ -331,7 +390,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     f6 = np.zeros(6)
     M6 = np.zeros((6, 6))
     R = np.empty((3, 3))
-    S1 = np.empty((3, 3))
     S2 = np.empty((3, 3))
     Kb = np.empty((6, 6))
     Cb = np.empty((6, 6))
@@ -362,16 +420,15 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         i = con_node[j]
         f = fidx[i]
         rotation(q[b, 3], q[b, 4], q[b, 5], R)
-        for r in range(3):
-            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-        mu = -Ru[3 * f:3 * f + 3]
+        _mv(R, con_arm[j], arm)
+        m0, m1, m2 = -Ru[3 * f], -Ru[3 * f + 1], -Ru[3 * f + 2]
         # the residual of the body: R_q - T^T mu, force mu and moment arm x mu
-        Rr[6 * b + 0] -= mu[0]
-        Rr[6 * b + 1] -= mu[1]
-        Rr[6 * b + 2] -= mu[2]
-        Rr[6 * b + 3] -= arm[1] * mu[2] - arm[2] * mu[1]
-        Rr[6 * b + 4] -= arm[2] * mu[0] - arm[0] * mu[2]
-        Rr[6 * b + 5] -= arm[0] * mu[1] - arm[1] * mu[0]
+        Rr[6 * b + 0] -= m0
+        Rr[6 * b + 1] -= m1
+        Rr[6 * b + 2] -= m2
+        Rr[6 * b + 3] -= arm[1] * m2 - arm[2] * m1
+        Rr[6 * b + 4] -= arm[2] * m0 - arm[0] * m2
+        Rr[6 * b + 5] -= arm[0] * m1 - arm[1] * m0
     for b in range(nb):
         for k in range(6):
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
@@ -385,85 +442,97 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         for k in range(6):
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
-    for j in range(con_node.size):
-        b = con_body[j]
-        if con_active[j] == 0 or b < 0:
-            continue
-        f = fidx[con_node[j]]
-        rotation(q[b, 3], q[b, 4], q[b, 5], R)
-        for r in range(3):
-            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-        # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm), mu = -Ru
-        _skew(-Ru[3 * f:3 * f + 3], S1)
-        _skew(arm, S2)
-        G = S1 @ S2
-        for r in range(3):
-            for c in range(3):
-                Jq[6 * b + 3 + r, 6 * b + 3 + c] -= G[r, c]
-    # the band rows of the tied nodes
-    rows = np.empty(3 * nca, np.int64)
+    nc3 = 3 * nca
+    rows = np.empty(nc3, np.int64)
+    arms = np.zeros((nca, 3))
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         f = fidx[con_node[j]]
+        b = con_body[j]
+        if b >= 0:
+            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            _mv(R, con_arm[j], arm)
+            arms[k // 3] = arm
+            # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm) = arm mu^T - (mu.arm) I,
+            # mu = -Ru
+            ma = 0.0
+            for r in range(3):
+                ma -= Ru[3 * f + r] * arm[r]
+            for r in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + r] += ma
+                for c in range(3):
+                    Jq[6 * b + 3 + r, 6 * b + 3 + c] += arm[r] * Ru[3 * f + c]
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
-    # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T (stored transposed, a row per column)
-    if not band_factor(band, bw):
+    # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
+    # when J is symmetric) for the tied rows k, so that (C J^-1 C^T)_ik = w_i . v_k and C J^-1 (-Ru) = w_i . z0;
+    # each column is short when its node ends its rows in the band (a fairlead at the end of its line)
+    kind = band_factor(band, bw)
+    if kind == 0:
         return False
     for a in range(nd):
         Ru[a] = -Ru[a]
-    y0 = Ru
-    band_substitute(band, bw, y0, -1)
-    m = 3 * nca + 6 * nb
-    for k in range(3 * nca):
-        Y = Yt[k]
-        Y[:] = 0.0
-        Y[rows[k]] = 1.0
-        band_substitute(band, bw, Y, rows[k])
+    z0 = Ru
+    band_forward(band, bw, z0)
+    last = np.empty(2 * nc3, np.int64)
+    for k in range(nc3):
+        last[k] = unit_column(band, bw, Yt[k], rows[k], False)
+        if kind == 1:
+            last[nc3 + k] = unit_column(band, bw, Yt[nc3 + k], rows[k], True)
+        else:
+            for a in range(rows[k], last[k] + 1):
+                Yt[nc3 + k, a] = Yt[k, a] / band[a, bw]
+            last[nc3 + k] = last[k]
+    m = nc3 + 6 * nb
     Sm = np.zeros((m, m))
     rhs = np.zeros(m)
+    for i in range(nc3):
+        w = Yt[nc3 + i]
+        s = 0.0
+        for a in range(rows[i], last[nc3 + i] + 1):
+            s += w[a] * z0[a]
+        rhs[i] = s
+        for c in range(nc3):
+            v = Yt[c]
+            s = 0.0
+            for a in range(max(rows[i], rows[c]), min(last[nc3 + i], last[c]) + 1):
+                s += w[a] * v[a]
+            Sm[i, c] = s
+    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm)]
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         b = con_body[j]
         if b >= 0:
-            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            _skew(arms[k // 3], S2)
+            col = nc3 + 6 * b
             for r in range(3):
-                arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-            _skew(arm, S2)
-        for r in range(3):
-            row = k + r
-            # S mu + T dq = C y0
-            for c in range(3 * nca):
-                Sm[row, c] = Yt[c, rows[row]]
-            rhs[row] = y0[rows[row]]
-            if b >= 0:
-                col = 3 * nca + 6 * b
+                row = k + r
                 Sm[row, col + r] += 1.0
-                for c in range(3):
-                    Sm[row, col + 3 + c] += -S2[r, c]
-                # -T^T mu + Jq dq = -Rq
                 Sm[col + r, row] -= 1.0
                 for c in range(3):
-                    # (T^T)[3 + c, r] = (-skew(arm))^T[c, r] = -S2[r, c]
-                    Sm[col + 3 + c, row] -= -S2[r, c]
+                    Sm[row, col + 3 + c] -= S2[r, c]
+                    Sm[col + 3 + c, row] += S2[r, c]
         k += 3
     for a in range(6 * nb):
-        rhs[3 * nca + a] = -Rq[a]
+        rhs[nc3 + a] = -Rq[a]
         for c in range(6 * nb):
-            Sm[3 * nca + a, 3 * nca + c] += Jq[a, c]
+            Sm[nc3 + a, nc3 + c] += Jq[a, c]
     if not dense_solve(Sm, rhs):
         return False
-    sol = rhs
-    for c in range(3 * nca):
-        for a in range(nd):
-            du[a] -= Yt[c, a] * sol[c]
+    # du = U^-1 (z0 - sum_k v_k mu_k)
+    for c in range(nc3):
+        v = Yt[c]
+        mu = rhs[c]
+        for a in range(rows[c], last[c] + 1):
+            du[a] -= v[a] * mu
+    band_backward(band, bw, du)
     for a in range(6 * nb):
-        dq[a] = sol[3 * nca + a]
+        dq[a] = rhs[nc3 + a]
     return True
 
 
@@ -501,7 +570,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     Du = np.zeros(nd)
     Dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((3 * con_node.size, nd))
+    Yt = np.zeros((6 * con_node.size, nd))
     tied = np.zeros(n, np.bool_)
     Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
@@ -608,7 +677,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     du = np.zeros(nd)
     dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((3 * con_node.size, nd))
+    Yt = np.zeros((6 * con_node.size, nd))
     tied = np.zeros(X.shape[0], np.bool_)
     Xp = X.copy()
     qp = q.copy()
