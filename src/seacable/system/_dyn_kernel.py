@@ -11,10 +11,14 @@ iteration solves the bordered system::
     [ C     0    -T  ] [mu] = [  0 ]        C: picks the tied nodes, T_j = [I, -skew(R p_j)]
     [ 0    -T^T   J_q] [dq]   [-R_q]        J_q: the bodies' own 6x6 Newton matrices
 
-by its Schur complement: the band is factored once, solved for ``-R_u`` and for the ``3 n_c``
-columns of ``C^T`` (``n_c`` tied nodes), and the small dense system in ``mu`` and ``dq`` is solved
-last, so that the cost stays linear in the number of nodes. Tied nodes are then put back exactly on
-their body (``x_j = r + R p_j``), so the constraint holds at every iterate.
+by its Schur complement: the band is factored once (``J = L U``, on its upper half when it is
+symmetric, as the lines' tangents are), ``C J^-1 C^T`` comes from the short sweeps ``L^-1 e_k`` and
+``U^-T e_k`` of the ``3 n_c`` tied rows (``n_c`` tied nodes; a few rows each when the node ends its
+line's rows in the band, as a fairlead does), the small dense system in ``mu`` and ``dq`` is solved,
+and one forward and one backward sweep give ``du``: about one band solve in all, linear in the number
+of nodes. Tied nodes are then put back exactly on their body (``x_j = r + R p_j``), so the constraint
+holds at every iterate. The first convergence check of a time step (where most steps stop) assembles
+the residual only, not the Newton matrix; the criterion is the prescribed-motion model's.
 
 Rotations are the body's (roll, pitch, yaw) with ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the geometry
 (points, centre of gravity and of buoyancy) is exact at any angle; the increment of the angles is
@@ -335,11 +339,12 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
 
 
 @njit(cache=True)
-def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
+def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
-    (6 per body). Returns False when the matrix is singular.
+    (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
+    Newton matrix and no correction.
 
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
@@ -352,10 +357,11 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     nd = 3 * nfree
     nb = q.shape[0]
     rho, g = env[0], env[1]
-    band[:] = 0.0
+    bnd = band if jac else band[:0]  # no rows: loads skips the Newton matrix
+    bnd[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
-          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension, band, bw,
-          cm, cc)
+          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, fidx, env, cur_depth, cur_speed, with_waves, F, M, tension,
+          bnd, bw, cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -413,6 +419,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
         scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
     Rr = Rq.copy()
+    arms = np.zeros((con_node.size, 3))
     for j in range(con_node.size):
         b = con_body[j]
         if con_active[j] == 0 or b < 0:
@@ -421,6 +428,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         f = fidx[i]
         rotation(q[b, 3], q[b, 4], q[b, 5], R)
         _mv(R, con_arm[j], arm)
+        arms[j] = arm
         m0, m1, m2 = -Ru[3 * f], -Ru[3 * f + 1], -Ru[3 * f + 2]
         # the residual of the body: R_q - T^T mu, force mu and moment arm x mu
         Rr[6 * b + 0] -= m0
@@ -434,7 +442,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
     out[0] = res
     out[1] = scale
-    if check and res <= scale:
+    if not jac or (check and res <= scale):
         return True  # converged: no correction needed
     # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
     for b in range(nb):
@@ -444,7 +452,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
     nc3 = 3 * nca
     rows = np.empty(nc3, np.int64)
-    arms = np.zeros((nca, 3))
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -452,9 +459,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         f = fidx[con_node[j]]
         b = con_body[j]
         if b >= 0:
-            rotation(q[b, 3], q[b, 4], q[b, 5], R)
-            _mv(R, con_arm[j], arm)
-            arms[k // 3] = arm
+            arm = arms[j]
             # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm) = arm mu^T - (mu.arm) I,
             # mu = -Ru
             ma = 0.0
@@ -508,7 +513,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
             continue
         b = con_body[j]
         if b >= 0:
-            _skew(arms[k // 3], S2)
+            _skew(arms[j], S2)
             col = nc3 + 6 * b
             for r in range(3):
                 row = k + r
@@ -608,10 +613,14 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 for k in range(6):
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
-            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, args, weight, fidx, nfree, bw, env, cur_depth,
-                             cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
-                             bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out,
-                             Yt, tied)
+            # the first check of a step, where most steps converge, assembles the residual only
+            for jac in (it != 1, True):
+                solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, jac, args, weight, fidx, nfree, bw,
+                                 env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
+                                 con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
+                                 tension, band, du, dq, out, Yt, tied)
+                if jac or out[0] <= out[1] or not (out[0] < res_prev):
+                    break
             res, scale = out[0], out[1]
             stats[0] += 1
             if res <= scale and it > 0:
@@ -686,7 +695,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     res_prev = np.inf
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
     for it in range(max_iter):
-        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, args, weight, fidx, nfree, bw, env, cur_depth,
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, True, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied)
         res, scale = out[0], out[1]
