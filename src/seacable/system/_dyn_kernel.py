@@ -21,10 +21,11 @@ holds at every iterate. The first convergence check of a time step (where most s
 the residual only, not the Newton matrix; the criterion is the prescribed-motion model's.
 
 Rotations are the body's (roll, pitch, yaw) with ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the geometry
-(points, centre of gravity and of buoyancy) is exact at any angle; the increment of the angles is
-taken as the small rotation vector (``T_j``) and the rotational inertia acts on the angles'
-accelerations (rotation rates small, gyroscopic terms left out), as suits moored floating bodies
-whose roll and pitch stay within some tens of degrees. Pitch near +-90 deg is singular.
+(points, centre of gravity and of buoyancy) is exact at any angle; the angular velocity is ``w = E
+theta'`` (:func:`angular_map`), the body's equations are those of the rigid body in ``(a, dw/dt)`` with
+its gyroscopic and centripetal terms (:func:`body_load`), and their moment rows are taken as the angles'
+generalised forces ``E^T M`` (the tied nodes move by ``-skew(R p_j) E dtheta``, so ``T_j = [I, -skew(R p_j)
+E]``). The Newton matrix leaves out the change of ``E`` with the angles. Pitch near +-90 deg is singular.
 """
 
 from __future__ import annotations
@@ -93,10 +94,31 @@ def _rot6(R, A, out, transposed):
 
 
 @njit(cache=True)
+def angular_map(q, qd, E, ed):
+    """The angular velocity of the angles' rates, ``w = E(q) qd[3:]`` (global axes, ``R = Rz(yaw) Ry(pitch)
+    Rx(roll)``: ``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``), and ``ed = dE/dt qd[3:]``, so that the
+    angular acceleration is ``E qdd[3:] + ed``."""
+    sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
+    dr, dp, dy = qd[3], qd[4], qd[5]
+    E[0, 0], E[0, 1], E[0, 2] = cy * cp, -sy, 0.0
+    E[1, 0], E[1, 1], E[1, 2] = sy * cp, cy, 0.0
+    E[2, 0], E[2, 1], E[2, 2] = -sp, 0.0, 1.0
+    ed[0] = dr * (-sy * cp * dy - cy * sp * dp) - cy * dy * dp
+    ed[1] = dr * (cy * cp * dy - sy * sp * dp) - sy * dy * dp
+    ed[2] = -dr * cp * dp
+
+
+@njit(cache=True)
 def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
-    """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external; global axes,
-    moments about the reference point) and its mass matrix ``M6`` (rigid body about the reference point
-    plus added mass, global axes)."""
+    """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
+    body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
+    matrix ``M6`` (rigid body about the reference point plus added mass, global axes), at the velocity
+    ``u = (v, w)`` (reference point, angular velocity; global axes), so that ``M6 (a, alpha) = f6``.
+
+    The rigid body's inertia forces about the reference point at ``c`` from the CG are ``M6 (a, alpha)`` and
+    ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
+    is ``w x (m (|c|^2 - c c^T) w)``); those of the added mass in a turning frame are left out.
+    """
     R = np.empty((3, 3))
     rotation(q[3], q[4], q[5], R)
     m = par[B_MASS]
@@ -106,12 +128,28 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
     _mv(R, par[B_CB:B_CB + 3], cb)
     # rigid-body mass matrix about the reference point (I_g = R diag(I) R^T), plus the added mass R6 A R6^T
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
-    _rot6(R, add, M6, False)
+    Ma = np.empty((6, 6))
+    _rot6(R, add, Ma, False)
+    M6[:] = Ma
     for r in range(3):
         M6[r, r] += m
         for k in range(3):
             ig = R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1] + R[r, 2] * par[B_INERT + 2] * R[k, 2]
             M6[3 + r, 3 + k] += ig + m * ((cc if r == k else 0.0) - c[r] * c[k])
+    # the gyroscopic moment w x (I_r w) and the centripetal force m w x (w x c), with I_r = M6's rigid part
+    w = qd[3:]
+    h = np.zeros(3)
+    for r in range(3):
+        for k in range(3):
+            h[r] += (M6[3 + r, 3 + k] - Ma[3 + r, 3 + k]) * w[k]
+    wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
+    ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2]
+    gyro = np.empty(6)
+    for r in range(3):
+        gyro[r] = m * (w[r] * wc - c[r] * ww)
+    gyro[3] = w[1] * h[2] - w[2] * h[1]
+    gyro[4] = w[2] * h[0] - w[0] * h[2]
+    gyro[5] = w[0] * h[1] - w[1] * h[0]
     # the coupling m skew(c) (moment rows) and -m skew(c) (force rows)
     for r in range(3):
         for k in range(3):
@@ -119,7 +157,8 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
             s = 0.0 if r == k else (c[3 - r - k] if (k - r) % 3 == 2 else -c[3 - r - k])
             M6[3 + r, k] += m * s
             M6[r, 3 + k] -= m * s
-    f6[:] = 0.0
+    for k in range(6):
+        f6[k] = -gyro[k]
     q0 = par[B_Q0:B_Q0 + 6]
     if par[B_HASK] > 0.0:
         # the user's hydrostatic matrix: weight and buoyancy as at the reference pose, restoring from K
@@ -205,6 +244,31 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
         for j in range(6):
             D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
     _rot6(R, D, C, False)
+    # the velocity tangent of the gyroscopic and centripetal terms: d(w x I_r w)/dw = skew(w) I_r - skew(I_r w),
+    # d(m w x (w x c))/dw = m ((w.c) I + w c^T - 2 c w^T)
+    Ir = np.empty((3, 3))
+    c = np.empty(3)
+    _mv(R, par[B_CG:B_CG + 3], c)
+    cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
+    for r in range(3):
+        for k in range(3):
+            Ir[r, k] = (R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1]
+                        + R[r, 2] * par[B_INERT + 2] * R[k, 2] + m * ((cc if r == k else 0.0) - c[r] * c[k]))
+    w = qd[3:]
+    h = np.empty(3)
+    _mv(Ir, w, h)
+    W = np.empty((3, 3))
+    H = np.empty((3, 3))
+    _skew(w, W)
+    _skew(h, H)
+    wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
+    for r in range(3):
+        for k in range(3):
+            s = -H[r, k]
+            for l in range(3):
+                s += W[r, l] * Ir[l, k]
+            C[3 + r, 3 + k] += s
+            C[r, 3 + k] += m * ((wc if r == k else 0.0) + w[r] * c[k] - 2.0 * c[r] * w[k])
 
 
 @njit(cache=True)
@@ -339,6 +403,31 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
 
 
 @njit(cache=True)
+def _angle_rows(E, m):
+    """m <- E^T m: a moment as the generalised force of the angles."""
+    a = E[0, 0] * m[0] + E[1, 0] * m[1] + E[2, 0] * m[2]
+    b = E[0, 1] * m[0] + E[1, 1] * m[1] + E[2, 1] * m[2]
+    c = E[0, 2] * m[0] + E[1, 2] * m[1] + E[2, 2] * m[2]
+    m[0], m[1], m[2] = a, b, c
+
+
+@njit(cache=True)
+def _angle_matrix(E, J):
+    """J <- T^T J T, T = diag(I, E): a 6x6 Newton matrix in rotation vectors as one in the angles (the change
+    of E with the angles left out)."""
+    for r in range(6):
+        a = J[r, 3] * E[0, 0] + J[r, 4] * E[1, 0] + J[r, 5] * E[2, 0]
+        b = J[r, 3] * E[0, 1] + J[r, 4] * E[1, 1] + J[r, 5] * E[2, 1]
+        c = J[r, 3] * E[0, 2] + J[r, 4] * E[1, 2] + J[r, 5] * E[2, 2]
+        J[r, 3], J[r, 4], J[r, 5] = a, b, c
+    for c in range(6):
+        a = E[0, 0] * J[3, c] + E[1, 0] * J[4, c] + E[2, 0] * J[5, c]
+        b = E[0, 1] * J[3, c] + E[1, 1] * J[4, c] + E[2, 1] * J[5, c]
+        d = E[0, 2] * J[3, c] + E[1, 2] * J[4, c] + E[2, 2] * J[5, c]
+        J[3, c], J[4, c], J[5, c] = a, b, d
+
+
+@njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
@@ -389,13 +478,15 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             for r in range(3):
                 res = max(res, abs(Ru[3 * f + r]))
     scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
-    # bodies: own residual R_q = M6 qdd - f6, residual R_q - sum T^T mu (mu = the tied node's net force
-    # -Ru), Newton matrix
+    # bodies: own residual R_q = M6 (a, alpha) - f6, residual R_q - sum T^T mu (mu = the tied node's net force
+    # -Ru), Newton matrix; their moment rows are then those of the angles (E^T times the moments, with w = E
+    # qd[3:], the virtual rotation E dq[3:])
     Rq = np.zeros(6 * nb)
     Jq = np.zeros((6 * nb, 6 * nb))
     f6 = np.zeros(6)
     M6 = np.zeros((6, 6))
     R = np.empty((3, 3))
+    S1 = np.empty((3, 3))
     S2 = np.empty((3, 3))
     Kb = np.empty((6, 6))
     Cb = np.empty((6, 6))
@@ -405,15 +496,25 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         b = con_body[j]
         if b >= 0:
             size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
+    Eb = np.empty((nb, 3, 3))
+    ub = np.empty((nb, 6))
+    acc = np.empty(6)
+    ed = np.empty(3)
     for b in range(nb):
         par = bpar[b]
-        body_load(q[b], qd[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
+        angular_map(q[b], qd[b], Eb[b], ed)
+        for r in range(3):
+            ub[b, r] = qd[b, r]
+            ub[b, 3 + r] = Eb[b, r, 0] * qd[b, 3] + Eb[b, r, 1] * qd[b, 4] + Eb[b, r, 2] * qd[b, 5]
+            acc[r] = qdd[b, r]
+            acc[3 + r] = Eb[b, r, 0] * qdd[b, 3] + Eb[b, r, 1] * qdd[b, 4] + Eb[b, r, 2] * qdd[b, 5] + ed[r]
+        body_load(q[b], ub[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
                   f6, M6)
         for k in range(6):
             v = -f6[k]
             if dynamic:
                 for c in range(6):
-                    v += M6[k, c] * qdd[b, c]
+                    v += M6[k, c] * acc[c]
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
@@ -438,6 +539,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         Rr[6 * b + 4] -= arm[2] * m0 - arm[0] * m2
         Rr[6 * b + 5] -= arm[0] * m1 - arm[1] * m0
     for b in range(nb):
+        _angle_rows(Eb[b], Rq[6 * b + 3:6 * b + 6])
+        _angle_rows(Eb[b], Rr[6 * b + 3:6 * b + 6])
         for k in range(6):
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
     out[0] = res
@@ -446,7 +549,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         return True  # converged: no correction needed
     # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
     for b in range(nb):
-        body_tangent(q[b], qd[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        body_tangent(q[b], ub[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
         for k in range(6):
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
@@ -472,6 +575,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
+    for b in range(nb):
+        _angle_matrix(Eb[b], Jq[6 * b:6 * b + 6, 6 * b:6 * b + 6])
     # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
     # when J is symmetric) for the tied rows k, so that (C J^-1 C^T)_ik = w_i . v_k and C J^-1 (-Ru) = w_i . z0;
     # each column is short when its node ends its rows in the band (a fairlead at the end of its line)
@@ -506,14 +611,17 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             for a in range(max(rows[i], rows[c]), min(last[nc3 + i], last[c]) + 1):
                 s += w[a] * v[a]
             Sm[i, c] = s
-    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm)]
+    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm) E]
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         b = con_body[j]
         if b >= 0:
-            _skew(arms[j], S2)
+            _skew(arms[j], S1)
+            for r in range(3):
+                for c in range(3):
+                    S2[r, c] = S1[r, 0] * Eb[b, 0, c] + S1[r, 1] * Eb[b, 1, c] + S1[r, 2] * Eb[b, 2, c]
             col = nc3 + 6 * b
             for r in range(3):
                 row = k + r

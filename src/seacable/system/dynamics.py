@@ -23,10 +23,14 @@ rule, the coupling ``m skew(c)`` of an offset centre of gravity).
 One implicit step advances the lines and the bodies together: Newmark's average acceleration (beta
 1/4, gamma 1/2) with Newton iterations on the free nodes and the body DOFs at once; the banded
 system of the nodes is bordered by the bodies and solved by its Schur complement
-(:mod:`seacable.system._dyn_kernel`), so a step costs about as much as one of the prescribed-motion
-model. Rotations: the geometry is exact at any angle; angle increments are taken as the small
-rotation vector and the rotational inertia acts on the angles' accelerations (gyroscopic terms left
-out), which suits moored floating bodies whose roll and pitch stay within some tens of degrees.
+(:mod:`seacable.system._dyn_kernel`), so a step costs no more than one of the prescribed-motion
+model (``bench/bench_system_dynamics.py``). Rotations: the unknowns are the angles and the geometry is exact at any angle; the angular
+velocity is ``w = E(angles) d(angles)/dt`` (``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``) and the
+rigid body's rotational inertia acts on ``dw/dt = E angles'' + E' angles'``, with its gyroscopic moment
+``w x (I w)`` and the centripetal force ``m w x (w x c)`` of an offset centre of gravity (those of the added
+mass in a turning frame are left out); the moments enter as the angles' generalised forces ``E^T M``.
+Pitch at +-90 deg is singular. ``body_velocity`` reports the reference point's velocity and the angles'
+rates.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
 reaches a given value; the end's node (a node of its own from the start, tied to its point until
@@ -620,8 +624,10 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
 
 def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
                     analysis: SystemDynamicAnalysis | None = None, tol: float = 1e-7, max_iter: int = 30,
-                    beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6) -> SystemRun:
-    """Newmark time stepping of the coupled system from rest at ``start``."""
+                    beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6,
+                    body_velocity=None) -> SystemRun:
+    """Newmark time stepping of the coupled system from rest at ``start`` (the free bodies at ``body_velocity``,
+    (nb, 6) reference point velocity [m/s] and angle rates [rad/s], when given; the lines at rest)."""
     m = fe.model
     net = m.network
     n = net.n_nodes
@@ -629,7 +635,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     V, A = np.zeros_like(X), np.zeros_like(X)
     q = start.body_position.copy().reshape(-1, 6)
     nb = len(fe.free_bodies)
-    qd, qdd = np.zeros((nb, 6)), np.zeros((nb, 6))
+    qd = np.zeros((nb, 6)) if body_velocity is None else np.array(body_velocity, float).reshape(nb, 6)
+    qdd = np.zeros((nb, 6))
     channels = _channels_fn(fe, analysis, duration)
     x0, v0, a0 = channels(np.zeros(1))
     pres = np.flatnonzero(net.channel >= 0)
@@ -641,10 +648,13 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     if nb:
         fl = body_line_force(fe, X, q)
         for b in range(nb):
-            f6, M6 = np.zeros(6), np.zeros((6, 6))
-            DK.body_load(q[b], qd[b], 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
+            f6, M6, E, ed = np.zeros(6), np.zeros((6, 6)), np.zeros((3, 3)), np.zeros(3)
+            DK.angular_map(q[b], qd[b], E, ed)
+            u = np.r_[qd[b, :3], E @ qd[b, 3:]]
+            DK.body_load(q[b], u, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
                          fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6)
-            qdd[b] = np.linalg.solve(M6, f6 + fl[b])
+            acc = np.linalg.solve(M6, f6 + fl[b])
+            qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
     n_out = int(round(duration / output_interval))  # noqa: RUF046
     sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
