@@ -538,20 +538,6 @@ def test_bad_input_is_refused_before_the_run(analysis, match):
         prepare_system_dynamic(_case(buoy_system(), duration=10.0, **analysis))
 
 
-def test_a_failure_at_a_free_point_is_refused():
-    from seacable.errors import InputError
-    from seacable.system.dynamics import prepare_system_dynamic
-
-    lt = LineType(**CHAIN)
-    system = MooringSystem(
-        points={"a": {"kind": "fixed", "position": (0, 0, -100)}, "c": {"kind": "free", "position": (50, 0, -50), "mass": 1e3},
-                "b": {"kind": "fixed", "position": (100, 0, -100)}},
-        lines={"l1": {"line": Line.single(lt, 80.0), "end_a": "a", "end_b": "c"},
-               "l2": {"line": Line.single(lt, 80.0), "end_a": "c", "end_b": "b"}})
-    with pytest.raises(InputError, match="free point 'c'"):
-        prepare_system_dynamic(_case(system, duration=10.0, failures=[{"line": "l1", "end": "b", "time": 1.0}]))
-
-
 def test_a_prescribed_body_without_motion_is_warned():
     from seacable.errors import SeacableWarning
     from seacable.system.dynamics import prepare_system_dynamic

@@ -4,7 +4,8 @@ The lines' nodes that are not held are the unknowns of the banded system of
 :mod:`seacable.mooring.kernel` (``loads`` assembles their forces, masses and the Newton matrix
 ``cm M + cc C + K``). A node on a rigid body (a fairlead) is one of those nodes too, tied to its
 body by a constraint ``x_j = r + R(theta) p_j``; a line end that may fail is tied the same way to
-its anchor or fairlead. With ``mu_j`` the force the node passes to what it is tied to, one Newton
+its anchor or fairlead, or, at a free point, to the point's node (``x_j = x_k``, a row of ``C`` with
+``I`` at the end's node and ``-I`` at the point's). With ``mu_j`` the force the node passes to what it is tied to, one Newton
 iteration solves the bordered system::
 
     [ J     C^T   0  ] [du]   [-R_u]        J: banded Newton matrix of the nodes
@@ -386,7 +387,8 @@ def unit_column(band, bw, x, first, upper):
 
 @njit(cache=True)
 def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
-    """Put each tied node where it is tied: on its body (r + R p) or at its target."""
+    """Put each tied node where it is tied: on its body (r + R p), at its target, or on its free node
+    (``con_body`` = -2 - node)."""
     R = np.empty((3, 3))
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -397,6 +399,9 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
             rotation(q[b, 3], q[b, 4], q[b, 5], R)
             for r in range(3):
                 X[i, r] = q[b, r] + R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        elif b <= -2:
+            for r in range(3):
+                X[i, r] = X[-2 - b, r]
         else:
             for r in range(3):
                 X[i, r] = con_target[j, r]
@@ -438,7 +443,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
     count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
-    (6 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
+    (12 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y) = args
@@ -471,12 +476,24 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         if con_active[j]:
             tied[con_node[j]] = True
             nca += 1
-    res = 0.0
-    for i in range(n):
-        f = fidx[i]
-        if f >= 0 and not tied[i]:
-            for r in range(3):
-                res = max(res, abs(Ru[3 * f + r]))
+    # a node tied to a free node passes its net force to it: the pair's residual is the sum (added to the
+    # free node's for the check only)
+    npart = 0
+    for sign in (1.0, -1.0):
+        for j in range(con_node.size):
+            if con_active[j] and con_body[j] <= -2:
+                fs, fp = fidx[con_node[j]], fidx[-2 - con_body[j]]
+                npart += 1
+                for r in range(3):
+                    Ru[3 * fp + r] += sign * Ru[3 * fs + r]
+        if sign > 0:
+            res = 0.0
+            for i in range(n):
+                f = fidx[i]
+                if f >= 0 and not tied[i]:
+                    for r in range(3):
+                        res = max(res, abs(Ru[3 * f + r]))
+    npart //= 2
     scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
     # bodies: own residual R_q = M6 (a, alpha) - f6, residual R_q - sum T^T mu (mu = the tied node's net force
     # -Ru), Newton matrix; their moment rows are then those of the angles (E^T times the moments, with w = E
@@ -554,7 +571,10 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
     nc3 = 3 * nca
-    rows = np.empty(nc3, np.int64)
+    nt3 = nc3 + 3 * npart  # the rows the constraints touch: the tied nodes', then their free nodes'
+    rows = np.empty(nt3, np.int64)
+    prow = np.full(nc3, -1, np.int64)  # the row in ``rows`` of a tied row's free node
+    kp = nc3
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -572,14 +592,20 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                 Jq[6 * b + 3 + r, 6 * b + 3 + r] += ma
                 for c in range(3):
                     Jq[6 * b + 3 + r, 6 * b + 3 + c] += arm[r] * Ru[3 * f + c]
+        if b <= -2:
+            for r in range(3):
+                rows[kp] = 3 * fidx[-2 - b] + r
+                prow[k + r] = kp
+                kp += 1
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
     for b in range(nb):
         _angle_matrix(Eb[b], Jq[6 * b:6 * b + 6, 6 * b:6 * b + 6])
     # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
-    # when J is symmetric) for the tied rows k, so that (C J^-1 C^T)_ik = w_i . v_k and C J^-1 (-Ru) = w_i . z0;
-    # each column is short when its node ends its rows in the band (a fairlead at the end of its line)
+    # when J is symmetric) for the touched rows k, so that (P J^-1 P^T)_ik = w_i . v_k and P J^-1 (-Ru) = w_i .
+    # z0, and C = D P with D +1 at a tied row and -1 at its free node's row; each column is short when its node
+    # ends its rows in the band (a fairlead at the end of its line)
     kind = band_factor(band, bw)
     if kind == 0:
         return False
@@ -587,30 +613,41 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         Ru[a] = -Ru[a]
     z0 = Ru
     band_forward(band, bw, z0)
-    last = np.empty(2 * nc3, np.int64)
-    for k in range(nc3):
+    last = np.empty(2 * nt3, np.int64)
+    for k in range(nt3):
         last[k] = unit_column(band, bw, Yt[k], rows[k], False)
         if kind == 1:
-            last[nc3 + k] = unit_column(band, bw, Yt[nc3 + k], rows[k], True)
+            last[nt3 + k] = unit_column(band, bw, Yt[nt3 + k], rows[k], True)
         else:
             for a in range(rows[k], last[k] + 1):
-                Yt[nc3 + k, a] = Yt[k, a] / band[a, bw]
-            last[nc3 + k] = last[k]
+                Yt[nt3 + k, a] = Yt[k, a] / band[a, bw]
+            last[nt3 + k] = last[k]
     m = nc3 + 6 * nb
     Sm = np.zeros((m, m))
     rhs = np.zeros(m)
-    for i in range(nc3):
-        w = Yt[nc3 + i]
+    for i in range(nt3):
+        w = Yt[nt3 + i]
         s = 0.0
-        for a in range(rows[i], last[nc3 + i] + 1):
+        for a in range(rows[i], last[nt3 + i] + 1):
             s += w[a] * z0[a]
-        rhs[i] = s
-        for c in range(nc3):
+        ri = i if i < nc3 else -1
+        if i >= nc3:  # a free node's row: into the rows of the tied rows it belongs to, with -1
+            for k in range(nc3):
+                if prow[k] == i:
+                    ri = k
+        sgn_i = 1.0 if i < nc3 else -1.0
+        rhs[ri] += sgn_i * s
+        for c in range(nt3):
             v = Yt[c]
             s = 0.0
-            for a in range(max(rows[i], rows[c]), min(last[nc3 + i], last[c]) + 1):
+            for a in range(max(rows[i], rows[c]), min(last[nt3 + i], last[c]) + 1):
                 s += w[a] * v[a]
-            Sm[i, c] = s
+            rc = c if c < nc3 else -1
+            if c >= nc3:
+                for k in range(nc3):
+                    if prow[k] == c:
+                        rc = k
+            Sm[ri, rc] += sgn_i * (1.0 if c < nc3 else -1.0) * s
     # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm) E]
     k = 0
     for j in range(con_node.size):
@@ -637,10 +674,15 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             Sm[nc3 + a, nc3 + c] += Jq[a, c]
     if not dense_solve(Sm, rhs):
         return False
-    # du = U^-1 (z0 - sum_k v_k mu_k)
-    for c in range(nc3):
+    # du = U^-1 (z0 - sum_k (v_k - v_pk) mu_k)
+    for c in range(nt3):
         v = Yt[c]
-        mu = rhs[c]
+        if c < nc3:
+            mu = rhs[c]
+        else:
+            for k in range(nc3):
+                if prow[k] == c:
+                    mu = -rhs[k]
         for a in range(rows[c], last[c] + 1):
             du[a] -= v[a] * mu
     band_backward(band, bw, du)
@@ -683,7 +725,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     Du = np.zeros(nd)
     Dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((6 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(n, np.bool_)
     Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
@@ -794,7 +836,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     du = np.zeros(nd)
     dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((6 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(X.shape[0], np.bool_)
     Xp = X.copy()
     qp = q.copy()

@@ -34,8 +34,10 @@ rates.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
 reaches a given value; the end's node (a node of its own from the start, tied to its point until
-then) is released and moves freely with its half element; the time is recorded (``failure_time``).
-Only ends at fixed, coupled or body points can fail (the node of a free point is shared).
+then: held there, on its body, or at a free point on the point's node, ``x_end = x_point``, the tie's
+force passing to the point) is released with the position and velocity it has and moves freely with
+its half element; the point keeps its own mass, volume and the other lines. The time is recorded
+(``failure_time``).
 
 The run starts from the static equilibrium of the same finite-element system, bodies included
 (pseudo-transient Newton on the same bordered system with the inertia replaced by a pseudo-mass);
@@ -223,7 +225,8 @@ class SystemFE:
     point_node : node of each point.
     line_names, line_nodes, line_elements : per line, its nodes (end A to B) and elements.
     fairlead_end : per line, 1 when end B is the fairlead (on a body or coupled point), 0 for end A.
-    con_* : one row per tied node: node, free body (-1 none), arm (body axes) or held position, channel.
+    con_* : one row per tied node: node, free body (-1: held at ``con_target``; -2 - k: tied to the free node k,
+        a failing line end at a free point), arm (body axes) or held position, channel.
     fail_time, fail_tension, fail_elem : failure of each tied node (inf / -1 when none).
     con_line : line of each tied node with a failure (-1 otherwise).
     """
@@ -389,12 +392,10 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
             for values in extra.values():
                 values.append(0.0)
             ids[at] = node
-            if p.kind == "free":
-                raise InputError(f"analysis.failures: line '{lname}' end {'ab'[end]} is at the free point '{pname}'; "
-                                 "only ends at fixed, coupled or body points can fail. Suggested fix: make the "
-                                 "failing end the line's other end, or fail another line at that point.")
             body = system.bodies[p.body] if p.kind == "body" else None
             b = bindex[p.body] if body is not None and body.kind == "free" else -1
+            if p.kind == "free":
+                b = -2 - point_node[pname]  # tied to the free point's node
             ch = chan[point_node[pname]]
             arm = np.asarray(p.position, float) if b >= 0 else np.zeros(3)
             elem = len(elements) + (0 if at == 0 else n - 2)
@@ -436,6 +437,9 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     for k in np.flatnonzero(~used):
         kind[k] = FIXED
     con = [c for c in con if used[c[0]]]
+    for c in con:
+        if c[1] <= -2 and not used[-2 - c[1]]:
+            c[1] = -1  # a free point no other line ends at: its line's end is held there until it fails
 
     def full(point_values, key):
         return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
