@@ -36,7 +36,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import _force_tolerance, loads, predict_nodes
+from ..mooring.kernel import _fluid, _force_tolerance, loads, predict_nodes
 from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
@@ -95,6 +95,14 @@ def _rot6(R, A, out, transposed):
 
 
 @njit(cache=True)
+def _body_current(q, env, cur_depth, cur_speed, uc):
+    """The current's velocity (3, global) at the body's reference point (at the surface when it is above)."""
+    x = np.array([q[0], q[1], min(q[2], 0.0)])
+    acc = np.empty(3)
+    _fluid(x, 0.0, env, cur_depth, cur_speed, False, uc, acc)
+
+
+@njit(cache=True)
 def angular_map(q, qd, E, ed):
     """The angular velocity of the angles' rates, ``w = E(q) qd[3:]`` (global axes, ``R = Rz(yaw) Ry(pitch)
     Rx(roll)``: ``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``), and ``ed = dE/dt qd[3:]``, so that the
@@ -110,11 +118,13 @@ def angular_map(q, qd, E, ed):
 
 
 @njit(cache=True)
-def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
+def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
     """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
     body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
     matrix ``M6`` (rigid body about the reference point plus added mass, global axes), at the velocity
-    ``u = (v, w)`` (reference point, angular velocity; global axes), so that ``M6 (a, alpha) = f6``.
+    ``u = (v, w)`` (reference point, angular velocity; global axes), so that ``M6 (a, alpha) = f6``. The
+    quadratic damping (drag) acts on the velocity relative to the current ``uc`` (3, global) at the body,
+    the linear damping on the body's own.
 
     The rigid body's inertia forces about the reference point at ``c`` from the CG are ``M6 (a, alpha)`` and
     ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
@@ -186,15 +196,18 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
     if ext_n > 0:
         for k in range(6):
             f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
-    # damping, in body axes: vb = R6^T qd, f6 -= R6 (B1 vb + B2 |vb| vb)
+    # damping, in body axes: vb = R6^T qd, vr = R6^T (qd - uc), f6 -= R6 (B1 vb + B2 |vr| vr)
     vb = np.empty(6)
     fb = np.empty(6)
-    _mv(R.T, qd[:3], vb[:3])
+    vr = np.empty(6)
     _mv(R.T, qd[3:], vb[3:])
+    _mv(R.T, qd[:3] - uc, vr[:3])
+    vr[3:] = vb[3:]
+    _mv(R.T, qd[:3], vb[:3])
     for k in range(6):
         s = 0.0
         for j in range(6):
-            s += (lin[k, j] + quad[k, j] * abs(vb[j])) * vb[j]
+            s += lin[k, j] * vb[j] + quad[k, j] * abs(vr[j]) * vr[j]
         fb[k] = s
     _mv(R, fb[:3], vb[:3])
     _mv(R, fb[3:], vb[3:])
@@ -203,7 +216,7 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
 
 
 @njit(cache=True)
-def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
+def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
     """The Newton matrices of the body's own forces: ``K = -df6/dq`` and ``C = -df6/dqd`` (rotation
     increments as small rotation vectors; the damping's turning with the body and the mass matrix's
     change with the angles left out, which only slows Newton, not the answer).
@@ -236,9 +249,9 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
         K[3, 5] -= kx * ax
         K[4, 4] += ky * az
         K[4, 5] -= ky * ay
-    # damping: R6 (B1 + 2 B2 |vb|) R6^T
+    # damping: R6 (B1 + 2 B2 |vr|) R6^T, vr relative to the current
     vb = np.empty(6)
-    _mv(R.T, qd[:3], vb[:3])
+    _mv(R.T, qd[:3] - uc, vb[:3])
     _mv(R.T, qd[3:], vb[3:])
     D = np.empty((6, 6))
     for k in range(6):
@@ -515,6 +528,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
     Eb = np.empty((nb, 3, 3))
     ub = np.empty((nb, 6))
+    ucb = np.empty((nb, 3))
     acc = np.empty(6)
     ed = np.empty(3)
     for b in range(nb):
@@ -525,7 +539,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             ub[b, 3 + r] = Eb[b, r, 0] * qd[b, 3] + Eb[b, r, 1] * qd[b, 4] + Eb[b, r, 2] * qd[b, 5]
             acc[r] = qdd[b, r]
             acc[3 + r] = Eb[b, r, 0] * qdd[b, 3] + Eb[b, r, 1] * qdd[b, 4] + Eb[b, r, 2] * qdd[b, 5] + ed[r]
-        body_load(q[b], ub[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
+        _body_current(q[b], env, cur_depth, cur_speed, ucb[b])
+        body_load(q[b], ub[b], ucb[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
                   f6, M6)
         for k in range(6):
             v = -f6[k]
@@ -566,7 +581,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         return True  # converged: no correction needed
     # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
     for b in range(nb):
-        body_tangent(q[b], ub[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        body_tangent(q[b], ub[b], ucb[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
         for k in range(6):
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)

@@ -16,8 +16,10 @@ with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` a
 the given position (weight and buoyancy then as at that position): the conventions of the system
 statics (:mod:`seacable.system.statics`, MoorPy's Body);
 the constant external force, an optional external force time series, linear and quadratic damping
-(6x6, body axes: ``-B1 v - B2 |v| v``), added mass (6x6, body axes) and the forces of the lines at its
-points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
+(6x6, body axes: ``-B1 v - B2 |v_r| v_r``, ``v_r`` the velocity relative to the current at the reference
+point -- at the surface when it is above --, so that a body in a current drifts to where its lines
+balance the current's drag; waves act on the lines only), added mass (6x6, body axes) and the forces
+of the lines at its points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
 rule, the coupling ``m skew(c)`` of an offset centre of gravity).
 
 One implicit step advances the lines and the bodies together: Newmark's average acceleration (beta
@@ -655,7 +657,9 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
             f6, M6, E, ed = np.zeros(6), np.zeros((6, 6)), np.zeros((3, 3)), np.zeros(3)
             DK.angular_map(q[b], qd[b], E, ed)
             u = np.r_[qd[b, :3], E @ qd[b, 3:]]
-            DK.body_load(q[b], u, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
+            uc = np.zeros(3)
+            DK._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
+            DK.body_load(q[b], u, uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
                          fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6)
             acc = np.linalg.solve(M6, f6 + fl[b])
             qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
@@ -761,12 +765,10 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
     env = case.environment
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
-    moving_water = env.waves is not None or (env.current.speed if env.current.depths is None
-                                             else max(abs(v) for v in env.current.speeds)) != 0
-    if free and moving_water:
-        warnings.warn(f"the water's waves and current act on the lines only, not on the free bodies ({', '.join(free)}): "
-                      "their wave and current loads are not modelled. Suggested fix: give them as "
-                      "analysis.external_forces (a time series) and the bodies' damping matrices.",
+    if free and env.waves is not None:
+        warnings.warn(f"the water's waves act on the lines only, not on the free bodies ({', '.join(free)}): their "
+                      "wave loads are not modelled (the current acts on them through their quadratic damping). "
+                      "Suggested fix: give the wave loads as analysis.external_forces (a time series).",
                       SeacableWarning, stacklevel=2)
     for name in a.point_motions:
         if name not in system.points:
