@@ -3,7 +3,8 @@
 Three 20-element chains on a free buoy (system_dynamic), and the same network with the buoy's points
 moved by a prescribed platform motion (the mooring model's simulate): seconds per time step of each and
 Newton iterations per step. The two runs alternate, a pair at a time, so that a shared machine's drift
-hits both; printed: the best time of each and the median of the pairs' ratios.
+hits both; printed: the best time of each and the median of the pairs' ratios (CPU time of the process, so that
+other work on a shared machine counts less).
 Run: PYTHONPATH=src python bench/bench_system_dynamics.py [pairs]
 """
 
@@ -47,12 +48,12 @@ def main(duration=200.0, dt=0.1, pairs=7):
     simulate(pm, motion, 2.0, dt, 1.0, initial=st.position)  # compile
     coupled, prescribed, ratios = math.inf, math.inf, []
     for _ in range(pairs):
-        t = time.perf_counter()
+        t = time.process_time()
         rc = simulate_system(fe, st, duration, dt, 1.0, analysis=a)
-        c = (time.perf_counter() - t) / rc.steps
-        t = time.perf_counter()
+        c = (time.process_time() - t) / rc.steps
+        t = time.process_time()
         pr = simulate(pm, motion, duration, dt, 1.0, initial=st.position)
-        p = (time.perf_counter() - t) / pr.steps
+        p = (time.process_time() - t) / pr.steps
         coupled, prescribed = min(coupled, c), min(prescribed, p)
         ratios.append(c / p)
     print(f"coupled (free body, {net.n_nodes} nodes): {coupled * 1e6:.1f} us/step, "

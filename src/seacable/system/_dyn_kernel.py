@@ -97,6 +97,9 @@ def _rot6(R, A, out, transposed):
 @njit(cache=True)
 def _body_current(q, env, cur_depth, cur_speed, uc):
     """The current's velocity (3, global) at the body's reference point (at the surface when it is above)."""
+    if cur_depth.size == 1 and cur_speed[0] == 0.0:
+        uc[:] = 0.0  # still water
+        return
     x = np.array([q[0], q[1], min(q[2], 0.0)])
     acc = np.empty(3)
     _fluid(x, 0.0, env, cur_depth, cur_speed, False, uc, acc)
@@ -130,16 +133,17 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
     is ``w x (m (|c|^2 - c c^T) w)``); those of the added mass in a turning frame are left out.
     """
-    R = np.empty((3, 3))
+    wk = np.empty(96)  # one allocation for the small work arrays
+    R = wk[0:9].reshape((3, 3))
     rotation(q[3], q[4], q[5], R)
     m = par[B_MASS]
-    c = np.empty(3)
-    cb = np.empty(3)
+    c = wk[9:12]
+    cb = wk[12:15]
     _mv(R, par[B_CG:B_CG + 3], c)
     _mv(R, par[B_CB:B_CB + 3], cb)
     # rigid-body mass matrix about the reference point (I_g = R diag(I) R^T), plus the added mass R6 A R6^T
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
-    Ma = np.empty((6, 6))
+    Ma = wk[15:51].reshape((6, 6))
     _rot6(R, add, Ma, False)
     M6[:] = Ma
     for r in range(3):
@@ -149,13 +153,14 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
             M6[3 + r, 3 + k] += ig + m * ((cc if r == k else 0.0) - c[r] * c[k])
     # the gyroscopic moment w x (I_r w) and the centripetal force m w x (w x c), with I_r = M6's rigid part
     w = qd[3:]
-    h = np.zeros(3)
+    h = wk[51:54]
+    h[:] = 0.0
     for r in range(3):
         for k in range(3):
             h[r] += (M6[3 + r, 3 + k] - Ma[3 + r, 3 + k]) * w[k]
     wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
     ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2]
-    gyro = np.empty(6)
+    gyro = wk[54:60]
     for r in range(3):
         gyro[r] = m * (w[r] * wc - c[r] * ww)
     gyro[3] = w[1] * h[2] - w[2] * h[1]
@@ -173,7 +178,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     q0 = par[B_Q0:B_Q0 + 6]
     if par[B_HASK] > 0.0:
         # the user's hydrostatic matrix: weight and buoyancy as at the reference pose, restoring from K
-        R0 = np.empty((3, 3))
+        R0 = wk[60:69].reshape((3, 3))
         rotation(q0[3], q0[4], q0[5], R0)
         _mv(R0, par[B_CG:B_CG + 3], c)
         _mv(R0, par[B_CB:B_CB + 3], cb)
@@ -197,9 +202,9 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
         for k in range(6):
             f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
     # damping, in body axes: vb = R6^T qd, vr = R6^T (qd - uc), f6 -= R6 (B1 vb + B2 |vr| vr)
-    vb = np.empty(6)
-    fb = np.empty(6)
-    vr = np.empty(6)
+    vb = wk[69:75]
+    fb = wk[75:81]
+    vr = wk[81:87]
     _mv(R.T, qd[3:], vb[3:])
     _mv(R.T, qd[:3] - uc, vr[:3])
     vr[3:] = vb[3:]
@@ -225,7 +230,8 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
     the same at the centre of buoyancy; the waterplane's heave and roll and pitch terms; or the user's
     matrix.
     """
-    R = np.empty((3, 3))
+    wk = np.empty(96)  # one allocation for the small work arrays
+    R = wk[0:9].reshape((3, 3))
     rotation(q[3], q[4], q[5], R)
     K[:] = 0.0
     m = par[B_MASS]
@@ -250,18 +256,18 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
         K[4, 4] += ky * az
         K[4, 5] -= ky * ay
     # damping: R6 (B1 + 2 B2 |vr|) R6^T, vr relative to the current
-    vb = np.empty(6)
+    vb = wk[9:15]
     _mv(R.T, qd[:3] - uc, vb[:3])
     _mv(R.T, qd[3:], vb[3:])
-    D = np.empty((6, 6))
+    D = wk[15:51].reshape((6, 6))
     for k in range(6):
         for j in range(6):
             D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
     _rot6(R, D, C, False)
     # the velocity tangent of the gyroscopic and centripetal terms: d(w x I_r w)/dw = skew(w) I_r - skew(I_r w),
     # d(m w x (w x c))/dw = m ((w.c) I + w c^T - 2 c w^T)
-    Ir = np.empty((3, 3))
-    c = np.empty(3)
+    Ir = wk[51:60].reshape((3, 3))
+    c = wk[60:63]
     _mv(R, par[B_CG:B_CG + 3], c)
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
     for r in range(3):
@@ -269,10 +275,10 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
             Ir[r, k] = (R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1]
                         + R[r, 2] * par[B_INERT + 2] * R[k, 2] + m * ((cc if r == k else 0.0) - c[r] * c[k]))
     w = qd[3:]
-    h = np.empty(3)
+    h = wk[63:66]
     _mv(Ir, w, h)
-    W = np.empty((3, 3))
-    H = np.empty((3, 3))
+    W = wk[66:75].reshape((3, 3))
+    H = wk[75:84].reshape((3, 3))
     _skew(w, W)
     _skew(h, H)
     wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
@@ -337,13 +343,21 @@ def band_factor(band, bw):
         if piv == 0.0 or not math.isfinite(piv):
             return 0
         top = min(n, k + bw + 1)
-        for i in range(k + 1, top):
-            f = (band[k, bw + i - k] if sym else band[i, bw + k - i]) / piv
-            band[i, bw + k - i] = f
-            if f == 0.0:
-                continue
-            for j in range(i if sym else k + 1, top):
-                band[i, bw + j - i] -= f * band[k, bw + j - k]
+        inv = 1.0 / piv
+        if sym:
+            for i in range(k + 1, top):
+                f = band[k, bw + i - k] * inv
+                band[i, bw + k - i] = f
+                if f != 0.0:
+                    for j in range(i, top):
+                        band[i, bw + j - i] -= f * band[k, bw + j - k]
+        else:
+            for i in range(k + 1, top):
+                f = band[i, bw + k - i] * inv
+                band[i, bw + k - i] = f
+                if f != 0.0:
+                    for j in range(k + 1, top):
+                        band[i, bw + j - i] -= f * band[k, bw + j - k]
     return 2 if sym else 1
 
 
@@ -507,30 +521,39 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                     for r in range(3):
                         res = max(res, abs(Ru[3 * f + r]))
     npart //= 2
-    scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
+    scale = 0.0  # not checked: not needed
+    if check:
+        scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
     # bodies: own residual R_q = M6 (a, alpha) - f6, residual R_q - sum T^T mu (mu = the tied node's net force
     # -Ru), Newton matrix; their moment rows are then those of the angles (E^T times the moments, with w = E
     # qd[3:], the virtual rotation E dq[3:])
-    Rq = np.zeros(6 * nb)
-    Jq = np.zeros((6 * nb, 6 * nb))
-    f6 = np.zeros(6)
-    M6 = np.zeros((6, 6))
-    R = np.empty((3, 3))
-    S1 = np.empty((3, 3))
-    S2 = np.empty((3, 3))
-    Kb = np.empty((6, 6))
-    Cb = np.empty((6, 6))
-    arm = np.zeros(3)
-    size = np.ones(nb)
+    nwk = 6 * nb + 36 * nb * nb
+    wk = np.zeros(2 * nwk + 45 * nb + 3 * con_node.size + 153)  # one allocation for the work arrays
+    Rq = wk[0:6 * nb]
+    Jq = wk[6 * nb:nwk].reshape((6 * nb, 6 * nb))
+    Rr = wk[nwk:nwk + 6 * nb]
+    o = 2 * nwk
+    f6 = wk[o:o + 6]
+    M6 = wk[o + 6:o + 42].reshape((6, 6))
+    R = wk[o + 42:o + 51].reshape((3, 3))
+    S1 = wk[o + 51:o + 60].reshape((3, 3))
+    S2 = wk[o + 60:o + 69].reshape((3, 3))
+    Kb = wk[o + 69:o + 105].reshape((6, 6))
+    Cb = wk[o + 105:o + 141].reshape((6, 6))
+    arm = wk[o + 141:o + 144]
+    acc = wk[o + 144:o + 150]
+    ed = wk[o + 150:o + 153]
+    o += 153
+    Eb = wk[o:o + 9 * nb].reshape((nb, 3, 3))
+    ub = wk[o + 9 * nb:o + 15 * nb].reshape((nb, 6))
+    ucb = wk[o + 15 * nb:o + 18 * nb].reshape((nb, 3))
+    size = wk[o + 18 * nb:o + 19 * nb]
+    size[:] = 1.0
+    arms = wk[o + 19 * nb:o + 19 * nb + 3 * con_node.size].reshape((con_node.size, 3))
     for j in range(con_node.size):
         b = con_body[j]
         if b >= 0:
             size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
-    Eb = np.empty((nb, 3, 3))
-    ub = np.empty((nb, 6))
-    ucb = np.empty((nb, 3))
-    acc = np.empty(6)
-    ed = np.empty(3)
     for b in range(nb):
         par = bpar[b]
         angular_map(q[b], qd[b], Eb[b], ed)
@@ -550,9 +573,9 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
-        scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
-    Rr = Rq.copy()
-    arms = np.zeros((con_node.size, 3))
+        if check:
+            scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
+    Rr[:] = Rq
     for j in range(con_node.size):
         b = con_body[j]
         if con_active[j] == 0 or b < 0:
