@@ -41,9 +41,9 @@ force passing to the point) is released with the position and velocity it has an
 its half element; the point keeps its own mass, volume and the other lines. The time is recorded
 (``failure_time``).
 
-The run starts from the static equilibrium of the same finite-element system, bodies included
-(pseudo-transient Newton on the same bordered system with the inertia replaced by a pseudo-mass);
-``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
+The run starts from the static equilibrium of the same finite-element system, bodies included (and
+the current's drag on them; pseudo-transient Newton on the same bordered system with the inertia
+replaced by a pseudo-mass); ``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
 settle, and release them at t = 0 (a free decay); ``start: held`` instead holds the free bodies at
 their given positions for the static start, as MoorDyn starts its free bodies.
 
