@@ -445,8 +445,10 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     transient left them), pushed by a constant 200 kN towards line 0's anchor so that lines 1 and 2 hold
     it, also after the failure. A surge decay released 3 m towards line 0's anchor swings back and loads
     line 0 until it fails at its fairlead at 1.05 times its tension at rest. With body damping (zeta about
-    0.16 in surge and sway, 0.05 in heave, rotations damped) and the lines' axial damping (ratio 0.8,
-    which takes the snapped end's ringing), the body and the two remaining lines settle where the FE
+    0.16 in surge and sway, 0.05 in heave, rotations damped), the lines' axial damping (ratio 0.8,
+    which takes the snapped end's ringing) and their mass-proportional damping (0.05 1/s: the broken line's
+    swing under quadratic drag alone decays only algebraically, and whether it had come to rest at 600 s
+    depended on round-off: a release 1e-6 m larger left it swinging 25 m), the body and the two remaining lines settle where the FE
     statics of the damaged system (line 0 removed) puts them after 600 s: the body within 1 mm of that
     equilibrium (it moves 73 m; 0.04 mm here) and the tensions within 1e-4 (5e-6 here), the residue of
     the damped transient and of the Newton tolerance."""
@@ -462,7 +464,8 @@ def test_line_break_settles_on_the_damaged_equilibrium():
     st0 = static_system(fe0)
     t_rest = st0.tension[fe0.line_elements[0][-1]]
     ds, q = release(damped, [3.0, 0, 0, 0, 0, 0], env, duration=600.0, time_step=0.2, output_interval=1.0,
-                    damping_ratio=0.8, failures=[{"line": "line0", "end": "b", "tension": 1.05 * t_rest}])
+                    damping_ratio=0.8, rayleigh=(0.05, 0.0),
+                    failures=[{"line": "line0", "end": "b", "tension": 1.05 * t_rest}])
     t_fail = float(ds.failure_time.sel(line="line0"))
     assert 5.0 < t_fail < 60.0
     assert np.all(np.isnan(ds.failure_time.sel(line=["line1", "line2"]).values))
@@ -533,20 +536,6 @@ def test_bad_input_is_refused_before_the_run(analysis, match):
 
     with pytest.raises(InputError, match=match):
         prepare_system_dynamic(_case(buoy_system(), duration=10.0, **analysis))
-
-
-def test_a_failure_at_a_free_point_is_refused():
-    from seacable.errors import InputError
-    from seacable.system.dynamics import prepare_system_dynamic
-
-    lt = LineType(**CHAIN)
-    system = MooringSystem(
-        points={"a": {"kind": "fixed", "position": (0, 0, -100)}, "c": {"kind": "free", "position": (50, 0, -50), "mass": 1e3},
-                "b": {"kind": "fixed", "position": (100, 0, -100)}},
-        lines={"l1": {"line": Line.single(lt, 80.0), "end_a": "a", "end_b": "c"},
-               "l2": {"line": Line.single(lt, 80.0), "end_a": "c", "end_b": "b"}})
-    with pytest.raises(InputError, match="free point 'c'"):
-        prepare_system_dynamic(_case(system, duration=10.0, failures=[{"line": "l1", "end": "b", "time": 1.0}]))
 
 
 def test_a_prescribed_body_without_motion_is_warned():

@@ -4,23 +4,29 @@ The lines' nodes that are not held are the unknowns of the banded system of
 :mod:`seacable.mooring.kernel` (``loads`` assembles their forces, masses and the Newton matrix
 ``cm M + cc C + K``). A node on a rigid body (a fairlead) is one of those nodes too, tied to its
 body by a constraint ``x_j = r + R(theta) p_j``; a line end that may fail is tied the same way to
-its anchor or fairlead. With ``mu_j`` the force the node passes to what it is tied to, one Newton
+its anchor or fairlead, or, at a free point, to the point's node (``x_j = x_k``, a row of ``C`` with
+``I`` at the end's node and ``-I`` at the point's). With ``mu_j`` the force the node passes to what it is tied to, one Newton
 iteration solves the bordered system::
 
     [ J     C^T   0  ] [du]   [-R_u]        J: banded Newton matrix of the nodes
     [ C     0    -T  ] [mu] = [  0 ]        C: picks the tied nodes, T_j = [I, -skew(R p_j)]
     [ 0    -T^T   J_q] [dq]   [-R_q]        J_q: the bodies' own 6x6 Newton matrices
 
-by its Schur complement: the band is factored once, solved for ``-R_u`` and for the ``3 n_c``
-columns of ``C^T`` (``n_c`` tied nodes), and the small dense system in ``mu`` and ``dq`` is solved
-last, so that the cost stays linear in the number of nodes. Tied nodes are then put back exactly on
-their body (``x_j = r + R p_j``), so the constraint holds at every iterate.
+by its Schur complement: the band is factored once (``J = L U``, on its upper half when it is
+symmetric, as the lines' tangents are), ``C J^-1 C^T`` comes from the short sweeps ``L^-1 e_k`` and
+``U^-T e_k`` of the ``3 n_c`` tied rows (``n_c`` tied nodes; a few rows each when the node ends its
+line's rows in the band, as a fairlead does), the small dense system in ``mu`` and ``dq`` is solved,
+and one forward and one backward sweep give ``du``: about one band solve in all, linear in the number
+of nodes. Tied nodes are then put back exactly on their body (``x_j = r + R p_j``), so the constraint
+holds at every iterate. The first convergence check of a time step (where most steps stop) assembles
+the residual only, not the Newton matrix; the criterion is the prescribed-motion model's.
 
 Rotations are the body's (roll, pitch, yaw) with ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the geometry
-(points, centre of gravity and of buoyancy) is exact at any angle; the increment of the angles is
-taken as the small rotation vector (``T_j``) and the rotational inertia acts on the angles'
-accelerations (rotation rates small, gyroscopic terms left out), as suits moored floating bodies
-whose roll and pitch stay within some tens of degrees. Pitch near +-90 deg is singular.
+(points, centre of gravity and of buoyancy) is exact at any angle; the angular velocity is ``w = E
+theta'`` (:func:`angular_map`), the body's equations are those of the rigid body in ``(a, dw/dt)`` with
+its gyroscopic and centripetal terms (:func:`body_load`), and their moment rows are taken as the angles'
+generalised forces ``E^T M`` (the tied nodes move by ``-skew(R p_j) E dtheta``, so ``T_j = [I, -skew(R p_j)
+E]``). The Newton matrix leaves out the change of ``E`` with the angles. Pitch near +-90 deg is singular.
 """
 
 from __future__ import annotations
@@ -30,7 +36,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import E_VDT, _force_tolerance, commit_viscoelastic, loads, predict_nodes
+from ..mooring.kernel import E_VDT, _fluid, _force_tolerance, commit_viscoelastic, loads, predict_nodes
 from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
@@ -66,40 +72,121 @@ def _add_point_force(f6, arm, fx, fy, fz):
 
 
 @njit(cache=True)
-def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
-    """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external; global axes,
-    moments about the reference point) and its mass matrix ``M6`` (rigid body about the reference point
-    plus added mass, global axes)."""
-    R = np.empty((3, 3))
+def _mv(R, v, out):
+    """out = R v (3x3 times 3), without a BLAS call."""
+    for r in range(3):
+        out[r] = R[r, 0] * v[0] + R[r, 1] * v[1] + R[r, 2] * v[2]
+
+
+@njit(cache=True)
+def _rot6(R, A, out, transposed):
+    """out = R6 A R6^T (``transposed``: R6^T A R6) for a 6x6 ``A`` and R6 = diag(R, R), without BLAS calls."""
+    for bi in range(2):
+        for bj in range(2):
+            for r in range(3):
+                for c in range(3):
+                    s = 0.0
+                    for k in range(3):
+                        for l in range(3):
+                            rk = R[k, r] if transposed else R[r, k]
+                            cl = R[l, c] if transposed else R[c, l]
+                            s += rk * A[3 * bi + k, 3 * bj + l] * cl
+                    out[3 * bi + r, 3 * bj + c] = s
+
+
+@njit(cache=True)
+def _body_current(q, env, cur_depth, cur_speed, uc):
+    """The current's velocity (3, global) at the body's reference point (at the surface when it is above)."""
+    if cur_depth.size == 1 and cur_speed[0] == 0.0:
+        uc[:] = 0.0  # still water
+        return
+    x = np.array([q[0], q[1], min(q[2], 0.0)])
+    acc = np.empty(3)
+    _fluid(x, 0.0, env, cur_depth, cur_speed, False, uc, acc)
+
+
+@njit(cache=True)
+def angular_map(q, qd, E, ed):
+    """The angular velocity of the angles' rates, ``w = E(q) qd[3:]`` (global axes, ``R = Rz(yaw) Ry(pitch)
+    Rx(roll)``: ``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``), and ``ed = dE/dt qd[3:]``, so that the
+    angular acceleration is ``E qdd[3:] + ed``."""
+    sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
+    dr, dp, dy = qd[3], qd[4], qd[5]
+    E[0, 0], E[0, 1], E[0, 2] = cy * cp, -sy, 0.0
+    E[1, 0], E[1, 1], E[1, 2] = sy * cp, cy, 0.0
+    E[2, 0], E[2, 1], E[2, 2] = -sp, 0.0, 1.0
+    ed[0] = dr * (-sy * cp * dy - cy * sp * dp) - cy * dy * dp
+    ed[1] = dr * (cy * cp * dy - sy * sp * dp) - sy * dy * dp
+    ed[2] = -dr * cp * dp
+
+
+@njit(cache=True)
+def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
+    """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
+    body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
+    matrix ``M6`` (rigid body about the reference point plus added mass, global axes), at the velocity
+    ``u = (v, w)`` (reference point, angular velocity; global axes), so that ``M6 (a, alpha) = f6``. The
+    quadratic damping (drag) acts on the velocity relative to the current ``uc`` (3, global) at the body,
+    the linear damping on the body's own.
+
+    The rigid body's inertia forces about the reference point at ``c`` from the CG are ``M6 (a, alpha)`` and
+    ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
+    is ``w x (m (|c|^2 - c c^T) w)``); those of the added mass in a turning frame are left out.
+    """
+    wk = np.empty(96)  # one allocation for the small work arrays
+    R = wk[0:9].reshape((3, 3))
     rotation(q[3], q[4], q[5], R)
     m = par[B_MASS]
-    c = R @ par[B_CG:B_CG + 3]
-    cb = R @ par[B_CB:B_CB + 3]
-    # rigid-body mass matrix about the reference point
-    Ig = R @ np.diag(par[B_INERT:B_INERT + 3]) @ R.T
-    S = np.empty((3, 3))
-    _skew(c, S)
+    c = wk[9:12]
+    cb = wk[12:15]
+    _mv(R, par[B_CG:B_CG + 3], c)
+    _mv(R, par[B_CB:B_CB + 3], cb)
+    # rigid-body mass matrix about the reference point (I_g = R diag(I) R^T), plus the added mass R6 A R6^T
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
-    M6[:] = 0.0
+    Ma = wk[15:51].reshape((6, 6))
+    _rot6(R, add, Ma, False)
+    M6[:] = Ma
     for r in range(3):
-        M6[r, r] = m
+        M6[r, r] += m
         for k in range(3):
-            M6[r, 3 + k] = -m * S[r, k]
-            M6[3 + r, k] = m * S[r, k]
-            M6[3 + r, 3 + k] = Ig[r, k] + m * ((cc if r == k else 0.0) - c[r] * c[k])
-    R6 = np.zeros((6, 6))
-    R6[:3, :3] = R
-    R6[3:, 3:] = R
-    M6 += R6 @ add @ R6.T
-    f6[:] = 0.0
+            ig = R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1] + R[r, 2] * par[B_INERT + 2] * R[k, 2]
+            M6[3 + r, 3 + k] += ig + m * ((cc if r == k else 0.0) - c[r] * c[k])
+    # the gyroscopic moment w x (I_r w) and the centripetal force m w x (w x c), with I_r = M6's rigid part
+    w = qd[3:]
+    h = wk[51:54]
+    h[:] = 0.0
+    for r in range(3):
+        for k in range(3):
+            h[r] += (M6[3 + r, 3 + k] - Ma[3 + r, 3 + k]) * w[k]
+    wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
+    ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2]
+    gyro = wk[54:60]
+    for r in range(3):
+        gyro[r] = m * (w[r] * wc - c[r] * ww)
+    gyro[3] = w[1] * h[2] - w[2] * h[1]
+    gyro[4] = w[2] * h[0] - w[0] * h[2]
+    gyro[5] = w[0] * h[1] - w[1] * h[0]
+    # the coupling m skew(c) (moment rows) and -m skew(c) (force rows)
+    for r in range(3):
+        for k in range(3):
+            # skew(c)[r, k] = -eps_rkl c_l
+            s = 0.0 if r == k else (c[3 - r - k] if (k - r) % 3 == 2 else -c[3 - r - k])
+            M6[3 + r, k] += m * s
+            M6[r, 3 + k] -= m * s
+    for k in range(6):
+        f6[k] = -gyro[k]
     q0 = par[B_Q0:B_Q0 + 6]
     if par[B_HASK] > 0.0:
         # the user's hydrostatic matrix: weight and buoyancy as at the reference pose, restoring from K
-        R0 = np.empty((3, 3))
+        R0 = wk[60:69].reshape((3, 3))
         rotation(q0[3], q0[4], q0[5], R0)
-        _add_point_force(f6, R0 @ par[B_CG:B_CG + 3], 0.0, 0.0, -m * g)
-        _add_point_force(f6, R0 @ par[B_CB:B_CB + 3], 0.0, 0.0, rho * g * par[B_VOL])
-        f6 -= khs @ (q - q0)
+        _mv(R0, par[B_CG:B_CG + 3], c)
+        _mv(R0, par[B_CB:B_CB + 3], cb)
+        _add_point_force(f6, c, 0.0, 0.0, -m * g)
+        _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
+        for r in range(6):
+            for k in range(6):
+                f6[r] -= khs[r, k] * (q[k] - q0[k])
     else:
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         # buoyancy of the volume at the given pose, and the waterplane's heave restoring at the reference point
@@ -114,17 +201,27 @@ def body_load(q, qd, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f
     if ext_n > 0:
         for k in range(6):
             f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
-    # damping, in body axes
-    vb = R6.T @ qd
-    fb = lin @ vb
+    # damping, in body axes: vb = R6^T qd, vr = R6^T (qd - uc), f6 -= R6 (B1 vb + B2 |vr| vr)
+    vb = wk[69:75]
+    fb = wk[75:81]
+    vr = wk[81:87]
+    _mv(R.T, qd[3:], vb[3:])
+    _mv(R.T, qd[:3] - uc, vr[:3])
+    vr[3:] = vb[3:]
+    _mv(R.T, qd[:3], vb[:3])
     for k in range(6):
+        s = 0.0
         for j in range(6):
-            fb[k] += quad[k, j] * abs(vb[j]) * vb[j]
-    f6 -= R6 @ fb
+            s += lin[k, j] * vb[j] + quad[k, j] * abs(vr[j]) * vr[j]
+        fb[k] = s
+    _mv(R, fb[:3], vb[:3])
+    _mv(R, fb[3:], vb[3:])
+    for k in range(6):
+        f6[k] -= vb[k]
 
 
 @njit(cache=True)
-def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
+def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
     """The Newton matrices of the body's own forces: ``K = -df6/dq`` and ``C = -df6/dqd`` (rotation
     increments as small rotation vectors; the damping's turning with the body and the mass matrix's
     change with the angles left out, which only slows Newton, not the answer).
@@ -133,41 +230,65 @@ def body_tangent(q, qd, par, khs, lin, quad, rho, g, K, C):
     the same at the centre of buoyancy; the waterplane's heave and roll and pitch terms; or the user's
     matrix.
     """
-    R = np.empty((3, 3))
+    wk = np.empty(96)  # one allocation for the small work arrays
+    R = wk[0:9].reshape((3, 3))
     rotation(q[3], q[4], q[5], R)
-    S1 = np.empty((3, 3))
-    S2 = np.empty((3, 3))
     K[:] = 0.0
-    C[:] = 0.0
     m = par[B_MASS]
-    F = np.zeros(3)
     if par[B_HASK] > 0.0:
         K[:] = khs
     else:
-        F[2] = -m * g
-        _skew(F, S1)
-        _skew(R @ par[B_CG:B_CG + 3], S2)
-        K[3:, 3:] -= S1 @ S2
-        F[2] = rho * g * par[B_VOL]
-        _skew(F, S1)
-        _skew(R @ par[B_CB:B_CB + 3], S2)
-        K[3:, 3:] -= S1 @ S2
+        # -skew(F) skew(c) for a vertical force F = (0, 0, f) at c: [[f c_z, 0, -f c_x], [0, f c_z, -f c_y], [0, 0, 0]]
+        for off, f in ((B_CG, -m * g), (B_CB, rho * g * par[B_VOL])):
+            cx = R[0, 0] * par[off] + R[0, 1] * par[off + 1] + R[0, 2] * par[off + 2]
+            cy = R[1, 0] * par[off] + R[1, 1] * par[off + 1] + R[1, 2] * par[off + 2]
+            cz = R[2, 0] * par[off] + R[2, 1] * par[off + 1] + R[2, 2] * par[off + 2]
+            K[3, 3] += f * cz
+            K[4, 4] += f * cz
+            K[3, 5] -= f * cx
+            K[4, 5] -= f * cy
         K[2, 2] += rho * g * par[B_AWP]
         # d a / d phi = -skew(a) for a = R e_z
-        a = np.array([R[0, 2], R[1, 2], R[2, 2]])
-        _skew(a, S1)
-        for j in range(3):
-            K[3, 3 + j] += rho * g * par[B_IXX] * S1[1, j]
-            K[4, 3 + j] -= rho * g * par[B_IYY] * S1[0, j]
-    R6 = np.zeros((6, 6))
-    R6[:3, :3] = R
-    R6[3:, 3:] = R
-    vb = R6.T @ qd
-    D = lin.copy()
+        ax, ay, az = R[0, 2], R[1, 2], R[2, 2]
+        kx, ky = rho * g * par[B_IXX], rho * g * par[B_IYY]
+        K[3, 3] += kx * az
+        K[3, 5] -= kx * ax
+        K[4, 4] += ky * az
+        K[4, 5] -= ky * ay
+    # damping: R6 (B1 + 2 B2 |vr|) R6^T, vr relative to the current
+    vb = wk[9:15]
+    _mv(R.T, qd[:3] - uc, vb[:3])
+    _mv(R.T, qd[3:], vb[3:])
+    D = wk[15:51].reshape((6, 6))
     for k in range(6):
         for j in range(6):
-            D[k, j] += 2.0 * quad[k, j] * abs(vb[j])
-    C[:] = R6 @ D @ R6.T
+            D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
+    _rot6(R, D, C, False)
+    # the velocity tangent of the gyroscopic and centripetal terms: d(w x I_r w)/dw = skew(w) I_r - skew(I_r w),
+    # d(m w x (w x c))/dw = m ((w.c) I + w c^T - 2 c w^T)
+    Ir = wk[51:60].reshape((3, 3))
+    c = wk[60:63]
+    _mv(R, par[B_CG:B_CG + 3], c)
+    cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
+    for r in range(3):
+        for k in range(3):
+            Ir[r, k] = (R[r, 0] * par[B_INERT] * R[k, 0] + R[r, 1] * par[B_INERT + 1] * R[k, 1]
+                        + R[r, 2] * par[B_INERT + 2] * R[k, 2] + m * ((cc if r == k else 0.0) - c[r] * c[k]))
+    w = qd[3:]
+    h = wk[63:66]
+    _mv(Ir, w, h)
+    W = wk[66:75].reshape((3, 3))
+    H = wk[75:84].reshape((3, 3))
+    _skew(w, W)
+    _skew(h, H)
+    wc = w[0] * c[0] + w[1] * c[1] + w[2] * c[2]
+    for r in range(3):
+        for k in range(3):
+            s = -H[r, k]
+            for l in range(3):
+                s += W[r, l] * Ir[l, k]
+            C[3 + r, 3 + k] += s
+            C[r, 3 + k] += m * ((wc if r == k else 0.0) + w[r] * c[k] - 2.0 * c[r] * w[k])
 
 
 @njit(cache=True)
@@ -204,62 +325,97 @@ def dense_solve(A, b):
 
 @njit(cache=True)
 def band_factor(band, bw):
-    """LU factor of a banded matrix in place (no pivoting); False on a zero pivot."""
+    """LU factor of a banded matrix in place (no pivoting): the multipliers L below the diagonal, U on and
+    above. Returns 0 on a zero pivot, 1, or 2 when the matrix is symmetric: then U = D L^T and only the upper
+    band is eliminated (the multipliers written from it), half the work of the general case.
+    """
     n = band.shape[0]
+    sym = True
+    for i in range(n):
+        for j in range(i + 1, min(n, i + bw + 1)):
+            if band[i, bw + j - i] != band[j, bw + i - j]:
+                sym = False
+                break
+        if not sym:
+            break
     for k in range(n):
         piv = band[k, bw]
         if piv == 0.0 or not math.isfinite(piv):
-            return False
-        for i in range(k + 1, min(n, k + bw + 1)):
-            f = band[i, bw + k - i] / piv
-            if f == 0.0:
-                continue
-            band[i, bw + k - i] = f
-            for j in range(k + 1, min(n, k + bw + 1)):
-                band[i, bw + j - i] -= f * band[k, bw + j - k]
-    return True
+            return 0
+        top = min(n, k + bw + 1)
+        inv = 1.0 / piv
+        if sym:
+            for i in range(k + 1, top):
+                f = band[k, bw + i - k] * inv
+                band[i, bw + k - i] = f
+                if f != 0.0:
+                    for j in range(i, top):
+                        band[i, bw + j - i] -= f * band[k, bw + j - k]
+        else:
+            for i in range(k + 1, top):
+                f = band[i, bw + k - i] * inv
+                band[i, bw + k - i] = f
+                if f != 0.0:
+                    for j in range(k + 1, top):
+                        band[i, bw + j - i] -= f * band[k, bw + j - k]
+    return 2 if sym else 1
 
 
 @njit(cache=True)
-def band_substitute(band, bw, rhs, first):
-    """Solve with a factored band in place. ``first`` >= 0: ``rhs`` is the unit vector of row ``first``;
-    ``first`` < 0: any ``rhs``.
+def band_forward(band, bw, x):
+    """x <- L^-1 x with the unit lower factor of :func:`band_factor`."""
+    n = x.size
+    for k in range(n):
+        xk = x[k]
+        if xk != 0.0:
+            for i in range(k + 1, min(n, k + bw + 1)):
+                x[i] -= band[i, bw + k - i] * xk
 
-    For a unit vector exact zeros are skipped: the forward sweep stops where its fill ends, and the
-    backward sweep starts there and stops above ``first`` once ``bw`` rows in a row came out zero, so the
-    column of a node on one line of a network of separate lines costs that line's rows only.
-    """
-    n = rhs.size
-    unit = first >= 0
-    if not unit:
-        first = 0
-    last = first if unit else n
-    for k in range(first, n):
-        if k > last + bw:
-            break
-        rk = rhs[k]
-        if rk == 0.0:
-            continue
-        if unit:
-            last = k
-        for i in range(k + 1, min(n, k + bw + 1)):
-            rhs[i] -= band[i, bw + k - i] * rk
-    top = min(n - 1, last + bw)
-    low = top + 1
-    for k in range(top, -1, -1):
-        if unit and k < first and k + bw < low:
-            break
-        s = rhs[k]
+
+@njit(cache=True)
+def band_backward(band, bw, x):
+    """x <- U^-1 x with the upper factor of :func:`band_factor`."""
+    n = x.size
+    for k in range(n - 1, -1, -1):
+        s = x[k]
         for j in range(k + 1, min(n, k + bw + 1)):
-            s -= band[k, bw + j - k] * rhs[j]
-        rhs[k] = s / band[k, bw]
-        if rhs[k] != 0.0:
-            low = k
+            s -= band[k, bw + j - k] * x[j]
+        x[k] = s / band[k, bw]
+
+
+@njit(cache=True)
+def unit_column(band, bw, x, first, upper):
+    """The part of ``L^-1 e_first`` (``upper``: ``U^-T e_first``) that can be nonzero, in ``x[first:last + 1]``;
+    returns ``last``. ``x`` need not be zero on entry: the sweep clears the rows it reaches, and stops where the
+    fill ends (``bw`` rows without a nonzero), so the column of a node at the end of its line's rows in
+    the band costs a few rows, not the line.
+    """
+    n = x.size
+    x[first] = 1.0
+    hi = first
+    last = first
+    k = first
+    while k < n and k <= last + bw:
+        xk = x[k]
+        if upper:
+            xk /= band[k, bw]
+            x[k] = xk
+        if xk != 0.0:
+            last = k
+            top = min(n - 1, k + bw)
+            for i in range(hi + 1, top + 1):
+                x[i] = 0.0
+            hi = max(hi, top)
+            for i in range(k + 1, top + 1):
+                x[i] -= (band[k, bw + i - k] if upper else band[i, bw + k - i]) * xk
+        k += 1
+    return last
 
 
 @njit(cache=True)
 def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
-    """Put each tied node where it is tied: on its body (r + R p) or at its target."""
+    """Put each tied node where it is tied: on its body (r + R p), at its target, or on its free node
+    (``con_body`` = -2 - node)."""
     R = np.empty((3, 3))
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -270,22 +426,51 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
             rotation(q[b, 3], q[b, 4], q[b, 5], R)
             for r in range(3):
                 X[i, r] = q[b, r] + R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
+        elif b <= -2:
+            for r in range(3):
+                X[i, r] = X[-2 - b, r]
         else:
             for r in range(3):
                 X[i, r] = con_target[j, r]
 
 
 @njit(cache=True)
-def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
+def _angle_rows(E, m):
+    """m <- E^T m: a moment as the generalised force of the angles."""
+    a = E[0, 0] * m[0] + E[1, 0] * m[1] + E[2, 0] * m[2]
+    b = E[0, 1] * m[0] + E[1, 1] * m[1] + E[2, 1] * m[2]
+    c = E[0, 2] * m[0] + E[1, 2] * m[1] + E[2, 2] * m[2]
+    m[0], m[1], m[2] = a, b, c
+
+
+@njit(cache=True)
+def _angle_matrix(E, J):
+    """J <- T^T J T, T = diag(I, E): a 6x6 Newton matrix in rotation vectors as one in the angles (the change
+    of E with the angles left out)."""
+    for r in range(6):
+        a = J[r, 3] * E[0, 0] + J[r, 4] * E[1, 0] + J[r, 5] * E[2, 0]
+        b = J[r, 3] * E[0, 1] + J[r, 4] * E[1, 1] + J[r, 5] * E[2, 1]
+        c = J[r, 3] * E[0, 2] + J[r, 4] * E[1, 2] + J[r, 5] * E[2, 2]
+        J[r, 3], J[r, 4], J[r, 5] = a, b, c
+    for c in range(6):
+        a = E[0, 0] * J[3, c] + E[1, 0] * J[4, c] + E[2, 0] * J[5, c]
+        b = E[0, 1] * J[3, c] + E[1, 1] * J[4, c] + E[2, 1] * J[5, c]
+        d = E[0, 2] * J[3, c] + E[1, 2] * J[4, c] + E[2, 2] * J[5, c]
+        J[3, c], J[4, c], J[5, c] = a, b, d
+
+
+@njit(cache=True)
+def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
-    (6 per body). Returns False when the matrix is singular.
+    (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
+    Newton matrix and no correction.
 
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
     count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
-    (3 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
+    (12 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco) = args
@@ -293,10 +478,11 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
     nd = 3 * nfree
     nb = q.shape[0]
     rho, g = env[0], env[1]
-    band[:] = 0.0
+    bnd = band if jac else band[:0]  # no rows: loads skips the Newton matrix
+    bnd[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
           buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-          with_waves, F, M, tension, band, bw, cm, cc)
+          with_waves, F, M, tension, bnd, bw, cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -317,44 +503,79 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         if con_active[j]:
             tied[con_node[j]] = True
             nca += 1
-    res = 0.0
-    for i in range(n):
-        f = fidx[i]
-        if f >= 0 and not tied[i]:
-            for r in range(3):
-                res = max(res, abs(Ru[3 * f + r]))
-    scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
-    # bodies: own residual R_q = M6 qdd - f6, residual R_q - sum T^T mu (mu = the tied node's net force
-    # -Ru), Newton matrix
-    Rq = np.zeros(6 * nb)
-    Jq = np.zeros((6 * nb, 6 * nb))
-    f6 = np.zeros(6)
-    M6 = np.zeros((6, 6))
-    R = np.empty((3, 3))
-    S1 = np.empty((3, 3))
-    S2 = np.empty((3, 3))
-    Kb = np.empty((6, 6))
-    Cb = np.empty((6, 6))
-    arm = np.zeros(3)
-    size = np.ones(nb)
+    # a node tied to a free node passes its net force to it: the pair's residual is the sum (added to the
+    # free node's for the check only)
+    npart = 0
+    for sign in (1.0, -1.0):
+        for j in range(con_node.size):
+            if con_active[j] and con_body[j] <= -2:
+                fs, fp = fidx[con_node[j]], fidx[-2 - con_body[j]]
+                npart += 1
+                for r in range(3):
+                    Ru[3 * fp + r] += sign * Ru[3 * fs + r]
+        if sign > 0:
+            res = 0.0
+            for i in range(n):
+                f = fidx[i]
+                if f >= 0 and not tied[i]:
+                    for r in range(3):
+                        res = max(res, abs(Ru[3 * f + r]))
+    npart //= 2
+    scale = 0.0  # not checked: not needed
+    if check:
+        scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm if dynamic else 0.0)
+    # bodies: own residual R_q = M6 (a, alpha) - f6, residual R_q - sum T^T mu (mu = the tied node's net force
+    # -Ru), Newton matrix; their moment rows are then those of the angles (E^T times the moments, with w = E
+    # qd[3:], the virtual rotation E dq[3:])
+    nwk = 6 * nb + 36 * nb * nb
+    wk = np.zeros(2 * nwk + 45 * nb + 3 * con_node.size + 153)  # one allocation for the work arrays
+    Rq = wk[0:6 * nb]
+    Jq = wk[6 * nb:nwk].reshape((6 * nb, 6 * nb))
+    Rr = wk[nwk:nwk + 6 * nb]
+    o = 2 * nwk
+    f6 = wk[o:o + 6]
+    M6 = wk[o + 6:o + 42].reshape((6, 6))
+    R = wk[o + 42:o + 51].reshape((3, 3))
+    S1 = wk[o + 51:o + 60].reshape((3, 3))
+    S2 = wk[o + 60:o + 69].reshape((3, 3))
+    Kb = wk[o + 69:o + 105].reshape((6, 6))
+    Cb = wk[o + 105:o + 141].reshape((6, 6))
+    arm = wk[o + 141:o + 144]
+    acc = wk[o + 144:o + 150]
+    ed = wk[o + 150:o + 153]
+    o += 153
+    Eb = wk[o:o + 9 * nb].reshape((nb, 3, 3))
+    ub = wk[o + 9 * nb:o + 15 * nb].reshape((nb, 6))
+    ucb = wk[o + 15 * nb:o + 18 * nb].reshape((nb, 3))
+    size = wk[o + 18 * nb:o + 19 * nb]
+    size[:] = 1.0
+    arms = wk[o + 19 * nb:o + 19 * nb + 3 * con_node.size].reshape((con_node.size, 3))
     for j in range(con_node.size):
         b = con_body[j]
         if b >= 0:
             size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
     for b in range(nb):
         par = bpar[b]
-        body_load(q[b], qd[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
+        angular_map(q[b], qd[b], Eb[b], ed)
+        for r in range(3):
+            ub[b, r] = qd[b, r]
+            ub[b, 3 + r] = Eb[b, r, 0] * qd[b, 3] + Eb[b, r, 1] * qd[b, 4] + Eb[b, r, 2] * qd[b, 5]
+            acc[r] = qdd[b, r]
+            acc[3 + r] = Eb[b, r, 0] * qdd[b, 3] + Eb[b, r, 1] * qdd[b, 4] + Eb[b, r, 2] * qdd[b, 5] + ed[r]
+        _body_current(q[b], env, cur_depth, cur_speed, ucb[b])
+        body_load(q[b], ub[b], ucb[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
                   f6, M6)
         for k in range(6):
             v = -f6[k]
             if dynamic:
                 for c in range(6):
-                    v += M6[k, c] * qdd[b, c]
+                    v += M6[k, c] * acc[c]
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
-        scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
-    Rr = Rq.copy()
+        if check:
+            scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
+    Rr[:] = Rq
     for j in range(con_node.size):
         b = con_body[j]
         if con_active[j] == 0 or b < 0:
@@ -362,108 +583,149 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, args, weight, f
         i = con_node[j]
         f = fidx[i]
         rotation(q[b, 3], q[b, 4], q[b, 5], R)
-        for r in range(3):
-            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-        mu = -Ru[3 * f:3 * f + 3]
+        _mv(R, con_arm[j], arm)
+        arms[j] = arm
+        m0, m1, m2 = -Ru[3 * f], -Ru[3 * f + 1], -Ru[3 * f + 2]
         # the residual of the body: R_q - T^T mu, force mu and moment arm x mu
-        Rr[6 * b + 0] -= mu[0]
-        Rr[6 * b + 1] -= mu[1]
-        Rr[6 * b + 2] -= mu[2]
-        Rr[6 * b + 3] -= arm[1] * mu[2] - arm[2] * mu[1]
-        Rr[6 * b + 4] -= arm[2] * mu[0] - arm[0] * mu[2]
-        Rr[6 * b + 5] -= arm[0] * mu[1] - arm[1] * mu[0]
+        Rr[6 * b + 0] -= m0
+        Rr[6 * b + 1] -= m1
+        Rr[6 * b + 2] -= m2
+        Rr[6 * b + 3] -= arm[1] * m2 - arm[2] * m1
+        Rr[6 * b + 4] -= arm[2] * m0 - arm[0] * m2
+        Rr[6 * b + 5] -= arm[0] * m1 - arm[1] * m0
     for b in range(nb):
+        _angle_rows(Eb[b], Rq[6 * b + 3:6 * b + 6])
+        _angle_rows(Eb[b], Rr[6 * b + 3:6 * b + 6])
         for k in range(6):
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
     out[0] = res
     out[1] = scale
-    if check and res <= scale:
+    if not jac or (check and res <= scale):
         return True  # converged: no correction needed
     # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
     for b in range(nb):
-        body_tangent(q[b], qd[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        body_tangent(q[b], ub[b], ucb[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
         for k in range(6):
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
-    for j in range(con_node.size):
-        b = con_body[j]
-        if con_active[j] == 0 or b < 0:
-            continue
-        f = fidx[con_node[j]]
-        rotation(q[b, 3], q[b, 4], q[b, 5], R)
-        for r in range(3):
-            arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-        # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm), mu = -Ru
-        _skew(-Ru[3 * f:3 * f + 3], S1)
-        _skew(arm, S2)
-        G = S1 @ S2
-        for r in range(3):
-            for c in range(3):
-                Jq[6 * b + 3 + r, 6 * b + 3 + c] -= G[r, c]
-    # the band rows of the tied nodes
-    rows = np.empty(3 * nca, np.int64)
+    nc3 = 3 * nca
+    nt3 = nc3 + 3 * npart  # the rows the constraints touch: the tied nodes', then their free nodes'
+    rows = np.empty(nt3, np.int64)
+    prow = np.full(nc3, -1, np.int64)  # the row in ``rows`` of a tied row's free node
+    kp = nc3
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         f = fidx[con_node[j]]
+        b = con_body[j]
+        if b >= 0:
+            arm = arms[j]
+            # the moment arm turns with the body: d(-arm x mu)/dphi = -skew(mu) skew(arm) = arm mu^T - (mu.arm) I,
+            # mu = -Ru
+            ma = 0.0
+            for r in range(3):
+                ma -= Ru[3 * f + r] * arm[r]
+            for r in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + r] += ma
+                for c in range(3):
+                    Jq[6 * b + 3 + r, 6 * b + 3 + c] += arm[r] * Ru[3 * f + c]
+        if b <= -2:
+            for r in range(3):
+                rows[kp] = 3 * fidx[-2 - b] + r
+                prow[k + r] = kp
+                kp += 1
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
-    # Schur complement of the band: y0 = J^-1 (-Ru), Y = J^-1 C^T (stored transposed, a row per column)
-    if not band_factor(band, bw):
+    for b in range(nb):
+        _angle_matrix(Eb[b], Jq[6 * b:6 * b + 6, 6 * b:6 * b + 6])
+    # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
+    # when J is symmetric) for the touched rows k, so that (P J^-1 P^T)_ik = w_i . v_k and P J^-1 (-Ru) = w_i .
+    # z0, and C = D P with D +1 at a tied row and -1 at its free node's row; each column is short when its node
+    # ends its rows in the band (a fairlead at the end of its line)
+    kind = band_factor(band, bw)
+    if kind == 0:
         return False
     for a in range(nd):
         Ru[a] = -Ru[a]
-    y0 = Ru
-    band_substitute(band, bw, y0, -1)
-    m = 3 * nca + 6 * nb
-    for k in range(3 * nca):
-        Y = Yt[k]
-        Y[:] = 0.0
-        Y[rows[k]] = 1.0
-        band_substitute(band, bw, Y, rows[k])
+    z0 = Ru
+    band_forward(band, bw, z0)
+    last = np.empty(2 * nt3, np.int64)
+    for k in range(nt3):
+        last[k] = unit_column(band, bw, Yt[k], rows[k], False)
+        if kind == 1:
+            last[nt3 + k] = unit_column(band, bw, Yt[nt3 + k], rows[k], True)
+        else:
+            for a in range(rows[k], last[k] + 1):
+                Yt[nt3 + k, a] = Yt[k, a] / band[a, bw]
+            last[nt3 + k] = last[k]
+    m = nc3 + 6 * nb
     Sm = np.zeros((m, m))
     rhs = np.zeros(m)
+    for i in range(nt3):
+        w = Yt[nt3 + i]
+        s = 0.0
+        for a in range(rows[i], last[nt3 + i] + 1):
+            s += w[a] * z0[a]
+        ri = i if i < nc3 else -1
+        if i >= nc3:  # a free node's row: into the rows of the tied rows it belongs to, with -1
+            for k in range(nc3):
+                if prow[k] == i:
+                    ri = k
+        sgn_i = 1.0 if i < nc3 else -1.0
+        rhs[ri] += sgn_i * s
+        for c in range(nt3):
+            v = Yt[c]
+            s = 0.0
+            for a in range(max(rows[i], rows[c]), min(last[nt3 + i], last[c]) + 1):
+                s += w[a] * v[a]
+            rc = c if c < nc3 else -1
+            if c >= nc3:
+                for k in range(nc3):
+                    if prow[k] == c:
+                        rc = k
+            Sm[ri, rc] += sgn_i * (1.0 if c < nc3 else -1.0) * s
+    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm) E]
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         b = con_body[j]
         if b >= 0:
-            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            _skew(arms[j], S1)
             for r in range(3):
-                arm[r] = R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
-            _skew(arm, S2)
-        for r in range(3):
-            row = k + r
-            # S mu + T dq = C y0
-            for c in range(3 * nca):
-                Sm[row, c] = Yt[c, rows[row]]
-            rhs[row] = y0[rows[row]]
-            if b >= 0:
-                col = 3 * nca + 6 * b
-                Sm[row, col + r] += 1.0
                 for c in range(3):
-                    Sm[row, col + 3 + c] += -S2[r, c]
-                # -T^T mu + Jq dq = -Rq
+                    S2[r, c] = S1[r, 0] * Eb[b, 0, c] + S1[r, 1] * Eb[b, 1, c] + S1[r, 2] * Eb[b, 2, c]
+            col = nc3 + 6 * b
+            for r in range(3):
+                row = k + r
+                Sm[row, col + r] += 1.0
                 Sm[col + r, row] -= 1.0
                 for c in range(3):
-                    # (T^T)[3 + c, r] = (-skew(arm))^T[c, r] = -S2[r, c]
-                    Sm[col + 3 + c, row] -= -S2[r, c]
+                    Sm[row, col + 3 + c] -= S2[r, c]
+                    Sm[col + 3 + c, row] += S2[r, c]
         k += 3
     for a in range(6 * nb):
-        rhs[3 * nca + a] = -Rq[a]
+        rhs[nc3 + a] = -Rq[a]
         for c in range(6 * nb):
-            Sm[3 * nca + a, 3 * nca + c] += Jq[a, c]
+            Sm[nc3 + a, nc3 + c] += Jq[a, c]
     if not dense_solve(Sm, rhs):
         return False
-    sol = rhs
-    for c in range(3 * nca):
-        for a in range(nd):
-            du[a] -= Yt[c, a] * sol[c]
+    # du = U^-1 (z0 - sum_k (v_k - v_pk) mu_k)
+    for c in range(nt3):
+        v = Yt[c]
+        if c < nc3:
+            mu = rhs[c]
+        else:
+            for k in range(nc3):
+                if prow[k] == c:
+                    mu = -rhs[k]
+        for a in range(rows[c], last[c] + 1):
+            du[a] -= v[a] * mu
+    band_backward(band, bw, du)
     for a in range(6 * nb):
-        dq[a] = sol[3 * nca + a]
+        dq[a] = rhs[nc3 + a]
     return True
 
 
@@ -501,7 +763,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     Du = np.zeros(nd)
     Dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((3 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(n, np.bool_)
     Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
@@ -541,10 +803,14 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 for k in range(6):
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
-            solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, args, weight, fidx, nfree, bw, env, cur_depth,
-                             cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active,
-                             bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out,
-                             Yt, tied)
+            # the first check of a step, where most steps converge, assembles the residual only
+            for jac in (it != 1, True):
+                solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, jac, args, weight, fidx, nfree, bw,
+                                 env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
+                                 con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
+                                 tension, band, du, dq, out, Yt, tied)
+                if jac or out[0] <= out[1] or not (out[0] < res_prev):
+                    break
             res, scale = out[0], out[1]
             stats[0] += 1
             if res <= scale and it > 0:
@@ -611,7 +877,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     du = np.zeros(nd)
     dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((3 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(X.shape[0], np.bool_)
     Xp = X.copy()
     qp = q.copy()
@@ -620,7 +886,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     res_prev = np.inf
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
     for it in range(max_iter):
-        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, args, weight, fidx, nfree, bw, env, cur_depth,
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, True, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied)
         res, scale = out[0], out[1]

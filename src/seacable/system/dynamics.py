@@ -16,26 +16,34 @@ with the body), the waterplane's heave restoring ``-rho g A_wp (z - z_given)`` a
 the given position (weight and buoyancy then as at that position): the conventions of the system
 statics (:mod:`seacable.system.statics`, MoorPy's Body);
 the constant external force, an optional external force time series, linear and quadratic damping
-(6x6, body axes: ``-B1 v - B2 |v| v``), added mass (6x6, body axes) and the forces of the lines at its
-points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
+(6x6, body axes: ``-B1 v - B2 |v_r| v_r``, ``v_r`` the velocity relative to the current at the reference
+point -- at the surface when it is above --, so that a body in a current drifts to where its lines
+balance the current's drag; waves act on the lines only), added mass (6x6, body axes) and the forces
+of the lines at its points. The inertia is the rigid body's about the reference point (``I_cg`` moved by the parallel-axis
 rule, the coupling ``m skew(c)`` of an offset centre of gravity).
 
 One implicit step advances the lines and the bodies together: Newmark's average acceleration (beta
 1/4, gamma 1/2) with Newton iterations on the free nodes and the body DOFs at once; the banded
 system of the nodes is bordered by the bodies and solved by its Schur complement
-(:mod:`seacable.system._dyn_kernel`), so a step costs about as much as one of the prescribed-motion
-model. Rotations: the geometry is exact at any angle; angle increments are taken as the small
-rotation vector and the rotational inertia acts on the angles' accelerations (gyroscopic terms left
-out), which suits moored floating bodies whose roll and pitch stay within some tens of degrees.
+(:mod:`seacable.system._dyn_kernel`), so a step costs no more than one of the prescribed-motion
+model (``bench/bench_system_dynamics.py``). Rotations: the unknowns are the angles and the geometry is exact at any angle; the angular
+velocity is ``w = E(angles) d(angles)/dt`` (``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``) and the
+rigid body's rotational inertia acts on ``dw/dt = E angles'' + E' angles'``, with its gyroscopic moment
+``w x (I w)`` and the centripetal force ``m w x (w x c)`` of an offset centre of gravity (those of the added
+mass in a turning frame are left out); the moments enter as the angles' generalised forces ``E^T M``.
+Pitch at +-90 deg is singular. ``body_velocity`` reports the reference point's velocity and the angles'
+rates.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
 reaches a given value; the end's node (a node of its own from the start, tied to its point until
-then) is released and moves freely with its half element; the time is recorded (``failure_time``).
-Only ends at fixed, coupled or body points can fail (the node of a free point is shared).
+then: held there, on its body, or at a free point on the point's node, ``x_end = x_point``, the tie's
+force passing to the point) is released with the position and velocity it has and moves freely with
+its half element; the point keeps its own mass, volume and the other lines. The time is recorded
+(``failure_time``).
 
-The run starts from the static equilibrium of the same finite-element system, bodies included
-(pseudo-transient Newton on the same bordered system with the inertia replaced by a pseudo-mass);
-``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
+The run starts from the static equilibrium of the same finite-element system, bodies included (and
+the current's drag on them; pseudo-transient Newton on the same bordered system with the inertia
+replaced by a pseudo-mass); ``release_offsets`` then hold named free bodies at their equilibrium plus an offset while the lines
 settle, and release them at t = 0 (a free decay); ``start: held`` instead holds the free bodies at
 their given positions for the static start, as MoorDyn starts its free bodies.
 
@@ -219,7 +227,8 @@ class SystemFE:
     point_node : node of each point.
     line_names, line_nodes, line_elements : per line, its nodes (end A to B) and elements.
     fairlead_end : per line, 1 when end B is the fairlead (on a body or coupled point), 0 for end A.
-    con_* : one row per tied node: node, free body (-1 none), arm (body axes) or held position, channel.
+    con_* : one row per tied node: node, free body (-1: held at ``con_target``; -2 - k: tied to the free node k,
+        a failing line end at a free point), arm (body axes) or held position, channel.
     fail_time, fail_tension, fail_elem : failure of each tied node (inf / -1 when none).
     con_line : line of each tied node with a failure (-1 otherwise).
     """
@@ -387,12 +396,10 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
             for values in extra.values():
                 values.append(0.0)
             ids[at] = node
-            if p.kind == "free":
-                raise InputError(f"analysis.failures: line '{lname}' end {'ab'[end]} is at the free point '{pname}'; "
-                                 "only ends at fixed, coupled or body points can fail. Suggested fix: make the "
-                                 "failing end the line's other end, or fail another line at that point.")
             body = system.bodies[p.body] if p.kind == "body" else None
             b = bindex[p.body] if body is not None and body.kind == "free" else -1
+            if p.kind == "free":
+                b = -2 - point_node[pname]  # tied to the free point's node
             ch = chan[point_node[pname]]
             arm = np.asarray(p.position, float) if b >= 0 else np.zeros(3)
             elem = len(elements) + (0 if at == 0 else n - 2)
@@ -436,6 +443,9 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     for k in np.flatnonzero(~used):
         kind[k] = FIXED
     con = [c for c in con if used[c[0]]]
+    for c in con:
+        if c[1] <= -2 and not used[-2 - c[1]]:
+            c[1] = -1  # a free point no other line ends at: its line's end is held there until it fails
 
     def full(point_values, key):
         return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
@@ -625,8 +635,10 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
 
 def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
                     analysis: SystemDynamicAnalysis | None = None, tol: float = 1e-7, max_iter: int = 30,
-                    beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6) -> SystemRun:
-    """Newmark time stepping of the coupled system from rest at ``start``."""
+                    beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6,
+                    body_velocity=None) -> SystemRun:
+    """Newmark time stepping of the coupled system from rest at ``start`` (the free bodies at ``body_velocity``,
+    (nb, 6) reference point velocity [m/s] and angle rates [rad/s], when given; the lines at rest)."""
     m = fe.model
     net = m.network
     n = net.n_nodes
@@ -634,7 +646,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     V, A = np.zeros_like(X), np.zeros_like(X)
     q = start.body_position.copy().reshape(-1, 6)
     nb = len(fe.free_bodies)
-    qd, qdd = np.zeros((nb, 6)), np.zeros((nb, 6))
+    qd = np.zeros((nb, 6)) if body_velocity is None else np.array(body_velocity, float).reshape(nb, 6)
+    qdd = np.zeros((nb, 6))
     channels = _channels_fn(fe, analysis, duration)
     x0, v0, a0 = channels(np.zeros(1))
     pres = np.flatnonzero(net.channel >= 0)
@@ -646,10 +659,15 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     if nb:
         fl = body_line_force(fe, X, q)
         for b in range(nb):
-            f6, M6 = np.zeros(6), np.zeros((6, 6))
-            DK.body_load(q[b], qd[b], 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
+            f6, M6, E, ed = np.zeros(6), np.zeros((6, 6)), np.zeros((3, 3)), np.zeros(3)
+            DK.angular_map(q[b], qd[b], E, ed)
+            u = np.r_[qd[b, :3], E @ qd[b, 3:]]
+            uc = np.zeros(3)
+            DK._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
+            DK.body_load(q[b], u, uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
                          fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6)
-            qdd[b] = np.linalg.solve(M6, f6 + fl[b])
+            acc = np.linalg.solve(M6, f6 + fl[b])
+            qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
     n_out = int(round(duration / output_interval))  # noqa: RUF046
     sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
@@ -755,12 +773,10 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
             body.check_accelerable(name)  # a singular mass matrix: one clear message, not a LinAlgError
     env = case.environment
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
-    moving_water = env.waves is not None or (env.current.speed if env.current.depths is None
-                                             else max(abs(v) for v in env.current.speeds)) != 0
-    if free and moving_water:
-        warnings.warn(f"the water's waves and current act on the lines only, not on the free bodies ({', '.join(free)}): "
-                      "their wave and current loads are not modelled. Suggested fix: give them as "
-                      "analysis.external_forces (a time series) and the bodies' damping matrices.",
+    if free and env.waves is not None:
+        warnings.warn(f"the water's waves act on the lines only, not on the free bodies ({', '.join(free)}): their "
+                      "wave loads are not modelled (the current acts on them through their quadratic damping). "
+                      "Suggested fix: give the wave loads as analysis.external_forces (a time series).",
                       SeacableWarning, stacklevel=2)
     for name in a.point_motions:
         if name not in system.points:
