@@ -6,7 +6,9 @@ with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
     eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
 
 (an element whose line type has a strain-tension table takes ``T(eps)`` from it instead of ``EA eps``,
-piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent)
+piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent; a Syrope
+rope's element takes it from the working curve of the largest mean tension so far, :func:`syrope_tension`,
+with that tension as a state committed after each converged step)
 
 (the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight;
 an element of a viscoelastic line type takes its tension from MoorDyn v2's series spring-damper model
@@ -53,7 +55,7 @@ from numba import njit
 from ..waves import airy_kinematics
 
 __all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
-           "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
+           "syrope_tension", "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -67,7 +69,12 @@ ENV_SIZE = 18
 # fast damper BA_D [N s], and the slow stretch and its input at the start of the step (Y0, U0) and at the
 # state last evaluated (Y, U) [m]
 V_EAD, V_LM, V_BAD, V_Y0, V_U0, V_Y, V_U = 0, 1, 2, 3, 4, 5, 6
-V_SIZE = 7
+# and, for an element of a Syrope rope (whose strain-tension table is its original working curve), the working
+# curve's form (0: none, 1: linear, 2: quadratic, 3: exponential) and its parameters k1, k2 [-] (k1 [N] for a
+# linear curve with k1 >= 1), and the largest mean tension so far, Tmax, committed (TM0) and at the state last
+# evaluated (TM) [N] (:func:`syrope_tension`)
+V_WC, V_K1, V_K2, V_TM0, V_TM = 7, 8, 9, 10, 11
+V_SIZE = 12
 
 
 @njit(cache=True)
@@ -145,6 +152,59 @@ def table_tension(eps, lo, hi, ts_x, ts_y):
         j += 1
     k = (ts_y[j] - ts_y[j - 1]) / (ts_x[j] - ts_x[j - 1])
     return ts_y[j - 1] + k * (eps - ts_x[j - 1]), k
+
+
+@njit(cache=True)
+def syrope_tension(eps, row, lo, hi, ts_x, ts_y):
+    """Tension [N] and slope dT/d(eps) [N] of a Syrope rope element at strain ``eps`` (Falkenberg et al. 2017).
+
+    MoorDyn's Syrope model, quasi-static: the original working curve (OWC, the strain-tension table
+    ``ts_x/ts_y[lo:hi]``) beyond the strain ``eps_max`` at which it reaches the largest mean tension so far
+    ``Tmax = row[V_TM0]``, and below it the working curve of that ``Tmax``, from zero tension at
+    ``eps_min`` to ``Tmax`` at ``eps_max``, with ``xi = (eps - eps_min) / (eps_max - eps_min)``::
+
+        eps_min = eps_0 + k1 (eps_max - eps_0)     (eps_0 the OWC's first strain)
+        eps_min = eps_max - Tmax / k1              (LINEAR with k1 >= 1: k1 is the curve's stiffness [N])
+        T = Tmax xi                                (LINEAR)
+        T = Tmax xi (k2 xi + 1 - k2)               (QUADRATIC)
+        T = Tmax (exp(k2 xi) - 1) / (exp(k2) - 1)  (EXP)
+
+    and no tension below ``eps_min`` (the permanent stretch). Writes the ``Tmax`` this state would leave,
+    ``max(Tmax, T)`` on the OWC, in ``row[V_TM]`` (committed after a converged step).
+    """
+    tmax = row[V_TM0]
+    # the OWC's strain at Tmax (the table is increasing; held at its ends as MoorDyn's interp)
+    if tmax <= ts_y[lo]:
+        emax = ts_x[lo]
+    elif tmax >= ts_y[hi - 1]:
+        emax = ts_x[hi - 1]
+    else:
+        j = lo + 1
+        while ts_y[j] <= tmax:
+            j += 1
+        emax = ts_x[j - 1] + (tmax - ts_y[j - 1]) * (ts_x[j] - ts_x[j - 1]) / (ts_y[j] - ts_y[j - 1])
+    if eps >= emax:
+        T, k = table_tension(eps, lo, hi, ts_x, ts_y)
+        row[V_TM] = max(tmax, T)
+        return T, k
+    row[V_TM] = tmax
+    form, k1, k2 = row[V_WC], row[V_K1], row[V_K2]
+    if form == 1.0 and k1 >= 1.0:
+        emin = emax - tmax / k1
+    else:
+        emin = ts_x[lo] + k1 * (emax - ts_x[lo])
+    d = emax - emin
+    if d <= 0.0:
+        return table_tension(eps, lo, hi, ts_x, ts_y)
+    xi = (eps - emin) / d
+    if xi <= 0.0:
+        return 0.0, 0.0
+    if form == 2.0:
+        return tmax * xi * (k2 * xi + 1.0 - k2), tmax * (2.0 * k2 * xi + 1.0 - k2) / d
+    if form == 3.0 and abs(k2) > 1e-12:
+        den = math.exp(k2) - 1.0
+        return tmax * (math.exp(k2 * xi) - 1.0) / den, tmax * k2 * math.exp(k2 * xi) / den / d
+    return tmax * xi, tmax / d
 
 
 @njit(cache=True)
@@ -420,11 +480,20 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         if tab and dpsi > 0.0:
             # a strain-tension table: T(eps) and its slope beyond the band; within it the same quadratic
             # rounding, scaled to the table's secant at eps = sband (continuous tension)
+            wc = nvis > 0 and visco[e, V_WC] > 0.0  # a Syrope rope: its current working curve
             if eps >= sband:
-                tel, kel = table_tension(eps, ts_lo[e], ts_hi[e], ts_x, ts_y)
+                if wc:
+                    tel, kel = syrope_tension(eps, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+                else:
+                    tel, kel = table_tension(eps, ts_lo[e], ts_hi[e], ts_x, ts_y)
             else:
-                tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
+                if wc:
+                    tb, _ = syrope_tension(sband, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+                else:
+                    tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
+        elif tab and nvis > 0 and visco[e, V_WC] > 0.0:
+            visco[e, V_TM] = visco[e, V_TM0]  # a slack Syrope rope keeps its Tmax
         if dpsi > 0.0 and not (nvis > 0 and visco[e, V_EAD] > 0.0 and not vstatic):
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             if tab:
@@ -758,10 +827,12 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def commit_viscoelastic(visco):
-    """Start the next step from the viscoelastic state last evaluated (a converged step's end)."""
+    """Start the next step from the viscoelastic state last evaluated (a converged step's end), and a
+    Syrope rope's largest mean tension Tmax from that state's."""
     for e in range(visco.shape[0]):
         visco[e, V_Y0] = visco[e, V_Y]
         visco[e, V_U0] = visco[e, V_U]
+        visco[e, V_TM0] = visco[e, V_TM]
 
 
 @njit(cache=True)
