@@ -375,11 +375,14 @@ def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
 
 
 @njit(cache=True)
-def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tension, band, bw, cc):
+def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tension, band, bw, cc, mpl, g):
     """Axial forces, tensions and tangents of the viscoelastic elements (``visco`` rows with EA_Dc > 0).
 
     Each element's slow stretch advances over ``dt`` (:func:`viscoelastic_tension`); no tension in
-    compression. In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
+    compression, the switch rounded as the elastic element's: the model's tension ``T`` becomes
+    ``(T + Tb)^2 / (4 Tb)`` for ``|T| < Tb`` (0 below), with ``Tb`` a quarter of the element's weight in
+    air (the elastic element's band ``EA sband``; in the static limit ``T = EA_s eps`` this is its rounding
+    exactly). In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
     only its static slow stretch is written (the start of a time-domain run).
     """
     jac = band.shape[0] > 0
@@ -406,8 +409,13 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
                 tv[r] /= l
         ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
         T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], dt)
-        if l <= L or T <= 0.0:
+        tb = 0.25 * mpl[e] * g * L
+        if T <= -tb or l <= 0.0 or (tb <= 0.0 and T <= 0.0):
             continue
+        if T < tb:
+            kdl *= (T + tb) / (2.0 * tb)
+            kdv *= (T + tb) / (2.0 * tb)
+            T = (T + tb) ** 2 / (4.0 * tb)
         tension[e] = T
         for r in range(3):
             F[a, r] += T * tv[r]
@@ -558,7 +566,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _drag_tangent(ut, math.pi * cdt[e], hb, qd)
                 _add_block(band, bw, fidx[k], fidx[k], cc, hb)
     if nvis > 0:
-        viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc)
+        viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc, mpl,
+                           env[E_G])
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
