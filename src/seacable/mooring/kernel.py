@@ -55,7 +55,7 @@ from numba import njit
 from ..waves import airy_kinematics
 
 __all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
-           "syrope_tension", "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
+           "syrope_loads", "syrope_tension", "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -433,6 +433,64 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
 
 
 @njit(cache=True)
+def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, ts_y, fidx, F, tension, band, bw,
+                 cc, g):
+    """Axial forces, tensions and tangents of the Syrope rope elements (``visco`` rows with a working curve).
+
+    The elastic element of :func:`loads` with :func:`syrope_tension` in place of its table (the same
+    slack rounding and damper), in a pass of its own so that lines without Syrope ropes compile as before.
+    """
+    jac = band.shape[0] > 0
+    eye = np.eye(3)
+    blk = np.zeros((3, 3))
+    tv = np.zeros(3)
+    for e in range(elements.shape[0]):
+        if visco[e, V_WC] <= 0.0:
+            continue
+        a = elements[e, 0]
+        b = elements[e, 1]
+        l = 0.0
+        for r in range(3):
+            tv[r] = X[b, r] - X[a, r]
+            l += tv[r] * tv[r]
+        l = math.sqrt(l)
+        if l > 0.0:
+            for r in range(3):
+                tv[r] /= l
+        L = L0[e]
+        eps = l / L - 1.0
+        sband = 0.25 * mpl[e] * g * L / EA[e]
+        if eps >= sband:
+            psi, dpsi, ddpsi = eps, 1.0, 0.0
+            tel, kel = syrope_tension(eps, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+        elif eps > -sband:
+            psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
+            tb, _ = syrope_tension(sband, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+            visco[e, V_TM] = visco[e, V_TM0]
+            tel, kel = tb / sband * psi, tb / sband * dpsi
+        else:
+            visco[e, V_TM] = visco[e, V_TM0]  # a slack Syrope rope keeps its Tmax
+            continue
+        ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+        T = max(tel + cdamp[e] * ldot / L * dpsi, 0.0)
+        tension[e] = T
+        for r in range(3):
+            F[a, r] += T * tv[r]
+            F[b, r] -= T * tv[r]
+        if jac and T > 0.0:
+            kax = kel + cc * cdamp[e] * dpsi
+            for r in range(3):
+                for c in range(3):
+                    tt = tv[r] * tv[c]
+                    blk[r, c] = (kax + cdamp[e] * ldot / L * ddpsi) / L * tt + T / l * (eye[r, c] - tt)
+            fa, fb = fidx[a], fidx[b]
+            _add_block(band, bw, fa, fa, 1.0, blk)
+            _add_block(band, bw, fb, fb, 1.0, blk)
+            _add_block(band, bw, fa, fb, -1.0, blk)
+            _add_block(band, bw, fb, fa, -1.0, blk)
+
+
+@njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
           weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
           fidx, env, cur_depth, cur_speed, with_waves,
@@ -488,21 +546,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         if tab and dpsi > 0.0:
             # a strain-tension table: T(eps) and its slope beyond the band; within it the same quadratic
             # rounding, scaled to the table's secant at eps = sband (continuous tension)
-            wc = nvis > 0 and visco[e, V_WC] > 0.0  # a Syrope rope: its current working curve
             if eps >= sband:
-                if wc:
-                    tel, kel = syrope_tension(eps, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
-                else:
-                    tel, kel = table_tension(eps, ts_lo[e], ts_hi[e], ts_x, ts_y)
+                tel, kel = table_tension(eps, ts_lo[e], ts_hi[e], ts_x, ts_y)
             else:
-                if wc:
-                    tb, _ = syrope_tension(sband, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
-                else:
-                    tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
+                tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        elif tab and nvis > 0 and visco[e, V_WC] > 0.0:
-            visco[e, V_TM] = visco[e, V_TM0]  # a slack Syrope rope keeps its Tmax
-        if dpsi > 0.0 and not (nvis > 0 and visco[e, V_EAD] > 0.0 and not vstatic):
+        if dpsi > 0.0 and not (nvis > 0 and (visco[e, V_EAD] > 0.0 and not vstatic or visco[e, V_WC] > 0.0)):
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             if tab:
                 T = tel + cdamp[e] * ldot / L * dpsi
@@ -568,6 +617,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     if nvis > 0:
         viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc, mpl,
                            env[E_G])
+        syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, ts_y, fidx, F, tension, band,
+                     bw, cc, env[E_G])
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
