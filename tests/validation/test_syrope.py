@@ -188,3 +188,45 @@ def test_side_by_side_with_moordyn(tmp_path, case):
     assert np.max(np.abs(ours[1:] - peer)) < 3e-3 * peak
     owc_only = np.array([_owc(e) for e in eps[1:]])
     assert np.max(np.abs(owc_only - peer)) > 0.1 * peak
+
+
+def test_statics_on_the_working_curve_of_the_initial_tmax(tmp_path):
+    """The linear_wc deck with its segment split in two (a free node between, its weight 196 N against
+    0.43 MN): the static tension is the working curve's at the fairlead strain, the deck's Tmean0 =
+    0.4339 MN (to its fairlead's 7 digits, 2e-3), not the OWC's 1.00 MN there."""
+    folder = tmp_path / "syrope" / "linear_wc"
+    shutil.copytree(SYROPE / "linear_wc", folder)
+    shutil.copy(SYROPE / "owc.dat", folder.parent / "owc.dat")
+    deck = folder / "line.txt"
+    deck.write_text(deck.read_text().replace("1.0          1           tsc", "1.0          2           tsc"))
+    from seacable.mooring.solver import static_equilibrium
+
+    model = _model(deck)
+    assert model.network.n_elements == 2
+    st = static_equilibrium(model)
+    x = model.network.position
+    eps0 = abs(x[1, 0] - x[0, 0]) - 1.0
+    assert _owc(eps0) == pytest.approx(1.0016e6, rel=1e-3)
+    assert st.tension == pytest.approx([4.339e5, 4.339e5], rel=2e-3)
+
+
+def test_tangent_is_the_slope_of_the_curves():
+    """syrope_tension's slope against central differences of its tension (1e-6 relative, differences of
+    1e-9 in strain on curves whose curvature changes the slope by < 1e-7 over them), on each form's working
+    curve and on the OWC, with Tmax = 1.3886 MN."""
+    from seacable.mooring import kernel as K
+
+    lo, hi = 0, len(OWC)
+    for form, k1, k2 in ((1.0, 1.25e8, 0.0), (2.0, 0.25, 1.0), (3.0, 0.2, 1.5)):
+        row = np.zeros(K.V_SIZE)
+        row[[K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = form, k1, k2, 1.3886e6
+        for eps in (0.0150575, 0.02, 0.03):
+            h = 1e-9
+            tp, _ = K.syrope_tension(eps + h, row, lo, hi, OWC[:, 0].copy(), OWC[:, 1].copy())
+            tm, _ = K.syrope_tension(eps - h, row, lo, hi, OWC[:, 0].copy(), OWC[:, 1].copy())
+            T, k = K.syrope_tension(eps, row, lo, hi, OWC[:, 0].copy(), OWC[:, 1].copy())
+            assert k == pytest.approx((tp - tm) / (2 * h), rel=1e-6)
+            if eps == 0.03:
+                assert T == pytest.approx(_owc(eps), rel=1e-12) and row[K.V_TM] == T  # on the OWC: a new Tmax
+            else:
+                assert row[K.V_TM] == 1.3886e6
