@@ -8,7 +8,7 @@ with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
 (an element whose line type has a strain-tension table takes ``T(eps)`` from it instead of ``EA eps``,
 piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent; a Syrope
 rope's element takes it from the working curve of the largest mean tension so far, :func:`syrope_tension`,
-with that tension as a state committed after each converged step)
+with that tension as a state committed after each converged step, in a pass of its own, :func:`syrope_loads`)
 
 (the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight;
 an element of a viscoelastic line type takes its tension from MoorDyn v2's series spring-damper model

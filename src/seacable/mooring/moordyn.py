@@ -13,7 +13,8 @@ A line type's bending stiffness ``EI`` acts at the inner nodes of its lines (Moo
 bending, ends at points pinned; :func:`seacable.mooring.kernel.bending_loads`), a viscoelastic
 ``EA_s|EA_d`` (or ``EA_s|EA_Dc|EA_D_Lm``) with ``BA_s|BA_d`` runs MoorDyn v2's viscoelastic model
 (:func:`seacable.mooring.kernel.viscoelastic_tension`; statics at EA_s), a nonlinear (table) EA with
-its table; a Syrope rope with its working curves (quasi-static, without its dynamic stiffness), with a warning. Decks with bodies, rods
+its table; a Syrope rope with its working curves (:func:`seacable.mooring.kernel.syrope_tension`: quasi-static,
+from SYROPE IC's Tmax, without MoorDyn's dynamic stiffness and slow damper), with a warning. Decks with bodies, rods
 or points on a body or turbine are refused here: they run as a mooring system
 (:meth:`seacable.io.moordyn.MoorDynCase.system`).
 """
