@@ -380,9 +380,9 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
 
     Each element's slow stretch advances over ``dt`` (:func:`viscoelastic_tension`); no tension in
     compression, the switch rounded as the elastic element's: the model's tension ``T`` becomes
-    ``(T + Tb)^2 / (4 Tb)`` for ``|T| < Tb`` (0 below), with ``Tb`` a quarter of the element's weight in
-    air (the elastic element's band ``EA sband``; in the static limit ``T = EA_s eps`` this is its rounding
-    exactly). In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
+    ``(T + Tb)^2 / (4 Tb)`` for ``|T| < Tb`` (0 below, and 0 for a strain below ``-sband``, as the elastic
+    element), with ``Tb`` a quarter of the element's weight in air (the elastic element's band
+    ``EA_s sband``; in the static limit ``T = EA_s eps`` this is its rounding exactly). In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
     only its static slow stretch is written (the start of a time-domain run).
     """
     jac = band.shape[0] > 0
@@ -410,8 +410,8 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
         ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
         T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], dt)
         tb = 0.25 * mpl[e] * g * L
-        if T <= -tb or l <= 0.0 or (tb <= 0.0 and T <= 0.0):
-            continue
+        if T <= -tb or l - L <= -tb / EA[e] * L or (tb <= 0.0 and T <= 0.0):
+            continue  # slack, or shortened beyond the elastic element's band (no compression)
         if T < tb:
             kdl *= (T + tb) / (2.0 * tb)
             kdv *= (T + tb) / (2.0 * tb)
