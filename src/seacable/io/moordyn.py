@@ -1973,8 +1973,9 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                 dynamic_axial_damping=lt.dynamic_damping)
     if tabled:
         warnings.warn(f"{label}: Syrope line type(s) {', '.join(tabled)}: the statics (system_static) use the "
-                      "original working curve as the rope's strain-tension table; the working curve after the load "
-                      "history of SYROPE IC applies only in the finite-element lines.",
+                      "original working curve as the rope's strain-tension table; the working curves after a load "
+                      "history (SYROPE IC) are followed only when the deck, having no bodies or rods, runs as a "
+                      "line network (its time-domain run).",
                       SeacableWarning, stacklevel=2)
     lines = {}
     for ln in md.lines:
