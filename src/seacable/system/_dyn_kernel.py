@@ -24,9 +24,11 @@ the residual only, not the Newton matrix; the criterion is the prescribed-motion
 Rotations are the body's (roll, pitch, yaw) with ``R = Rz(yaw) Ry(pitch) Rx(roll)``: the geometry
 (points, centre of gravity and of buoyancy) is exact at any angle; the angular velocity is ``w = E
 theta'`` (:func:`angular_map`), the body's equations are those of the rigid body in ``(a, dw/dt)`` with
-its gyroscopic and centripetal terms (:func:`body_load`), and their moment rows are taken as the angles'
-generalised forces ``E^T M`` (the tied nodes move by ``-skew(R p_j) E dtheta``, so ``T_j = [I, -skew(R p_j)
-E]``). The Newton matrix leaves out the change of ``E`` with the angles. Pitch near +-90 deg is singular.
+its gyroscopic and centripetal terms (:func:`body_load`). The Newton step is solved in small rotation
+vectors ``dphi`` (moments as they are, the tied nodes move by ``-skew(R p_j) dphi``, so ``T_j = [I, -skew(R
+p_j)]``) and mapped to the angles by ``dtheta = E^-1 dphi`` (:func:`_angle_increment`, regularised at pitch
++-90 deg, where ``E`` is singular: a horizontal MoorDyn rod starts there); the convergence check is on the
+angles' generalised forces ``E^T M``. The Newton matrix leaves out the change of ``E`` with the angles.
 """
 
 from __future__ import annotations
@@ -444,19 +446,18 @@ def _angle_rows(E, m):
 
 
 @njit(cache=True)
-def _angle_matrix(E, J):
-    """J <- T^T J T, T = diag(I, E): a 6x6 Newton matrix in rotation vectors as one in the angles (the change
-    of E with the angles left out)."""
-    for r in range(6):
-        a = J[r, 3] * E[0, 0] + J[r, 4] * E[1, 0] + J[r, 5] * E[2, 0]
-        b = J[r, 3] * E[0, 1] + J[r, 4] * E[1, 1] + J[r, 5] * E[2, 1]
-        c = J[r, 3] * E[0, 2] + J[r, 4] * E[1, 2] + J[r, 5] * E[2, 2]
-        J[r, 3], J[r, 4], J[r, 5] = a, b, c
-    for c in range(6):
-        a = E[0, 0] * J[3, c] + E[1, 0] * J[4, c] + E[2, 0] * J[5, c]
-        b = E[0, 1] * J[3, c] + E[1, 1] * J[4, c] + E[2, 1] * J[5, c]
-        d = E[0, 2] * J[3, c] + E[1, 2] * J[4, c] + E[2, 2] * J[5, c]
-        J[3, c], J[4, c], J[5, c] = a, b, d
+def _angle_increment(q, d):
+    """d <- the angles' increment of the small rotation vector ``d`` (global axes): ``E^-1 d`` with ``E = Rz(yaw)
+    B``, ``B = [[cos p, 0, 0], [0, 1, 0], [-sin p, 0, 1]]``. At pitch +-90 deg (a horizontal rod, gimbal lock) ``E``
+    is singular: roll and yaw turn about the same axis and the rotation about ``Rz e_x`` has no angle rate; the
+    roll increment is then regularised to ``cos p v_x / (cos^2 p + 1e-12)`` (relative change < 1e-8 when
+    ``|cos p| > 0.01``), so that the Newton step stays finite and the yaw takes the turn about z."""
+    sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
+    vx = cy * d[0] + sy * d[1]
+    vy = -sy * d[0] + cy * d[1]
+    vz = d[2]
+    roll = cp * vx / (cp * cp + 1e-12)
+    d[0], d[1], d[2] = roll, vy, vz + sp * roll
 
 
 @njit(cache=True)
@@ -536,7 +537,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     f6 = wk[o:o + 6]
     M6 = wk[o + 6:o + 42].reshape((6, 6))
     R = wk[o + 42:o + 51].reshape((3, 3))
-    S1 = wk[o + 51:o + 60].reshape((3, 3))
     S2 = wk[o + 60:o + 69].reshape((3, 3))
     Kb = wk[o + 69:o + 105].reshape((6, 6))
     Cb = wk[o + 105:o + 141].reshape((6, 6))
@@ -594,7 +594,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         Rr[6 * b + 4] -= arm[2] * m0 - arm[0] * m2
         Rr[6 * b + 5] -= arm[0] * m1 - arm[1] * m0
     for b in range(nb):
-        _angle_rows(Eb[b], Rq[6 * b + 3:6 * b + 6])
+        # the check on the angles' generalised forces E^T M; the Newton step itself is solved in rotation
+        # vectors (moments as they are) and mapped to the angles after (see _angle_increment)
         _angle_rows(Eb[b], Rr[6 * b + 3:6 * b + 6])
         for k in range(6):
             res = max(res, abs(Rr[6 * b + k]) / (size[b] if k >= 3 else 1.0))
@@ -638,8 +639,6 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
-    for b in range(nb):
-        _angle_matrix(Eb[b], Jq[6 * b:6 * b + 6, 6 * b:6 * b + 6])
     # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
     # when J is symmetric) for the touched rows k, so that (P J^-1 P^T)_ik = w_i . v_k and P J^-1 (-Ru) = w_i .
     # z0, and C = D P with D +1 at a tied row and -1 at its free node's row; each column is short when its node
@@ -686,17 +685,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                     if prow[k] == c:
                         rc = k
             Sm[ri, rc] += sgn_i * (1.0 if c < nc3 else -1.0) * s
-    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm) E]
+    # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm)], dq[3:] a rotation vector
     k = 0
     for j in range(con_node.size):
         if con_active[j] == 0:
             continue
         b = con_body[j]
         if b >= 0:
-            _skew(arms[j], S1)
-            for r in range(3):
-                for c in range(3):
-                    S2[r, c] = S1[r, 0] * Eb[b, 0, c] + S1[r, 1] * Eb[b, 1, c] + S1[r, 2] * Eb[b, 2, c]
+            _skew(arms[j], S2)
             col = nc3 + 6 * b
             for r in range(3):
                 row = k + r
@@ -726,6 +722,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     band_backward(band, bw, du)
     for a in range(6 * nb):
         dq[a] = rhs[nc3 + a]
+    for b in range(nb):
+        _angle_increment(q[b], dq[6 * b + 3:6 * b + 6])
     return True
 
 
