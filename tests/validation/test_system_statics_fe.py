@@ -201,3 +201,25 @@ def test_grounded_lines_lie_on_a_sloping_seabed():
         assert np.all(gap >= -1.5 * pen)               # nowhere through the seabed
     assert grounded > 10
     np.testing.assert_allclose(ds.grounded_length.values[0], eq.grounded_length)
+
+
+# --- system_offsets and damaged lines in a current -----------------------------------------------------------
+
+def test_offsets_and_damaged_lines_in_a_current():
+    """The watch circle in a current, intact and with line1 broken: the lines' restoring force on the
+    buoy (no drag of its own) balances the applied load at every heading and in both conditions (to the
+    solver's 1e-8, checked to 1e-6 of the load), and the current carries the intact buoy downstream (+x)
+    at no load."""
+    from seacable.system.run import run_system_offsets
+
+    d = _suspended(current={"speed": 1.0})
+    d["bodies"]["buoy"]["external_force"] = [0.0] * 6
+    d["analysis"] = {"type": "system_offsets", "body": "buoy", "loads": [0.0, 1.0e5], "headings": [0.0, math.pi / 2],
+                     "damaged_lines": ["line2"]}
+    ds = run_system_offsets(parse_case(d))
+    assert ds.attrs["statics"] == "finite_element"
+    load = ds.applied_load.values[None, :, None]
+    np.testing.assert_allclose(ds.restoring_force.values, np.broadcast_to(load, ds.restoring_force.shape),
+                               atol=1e-6 * 1.0e5)
+    assert np.all(ds.body_offset_x.values[0, 0, :, 0] > 0)      # intact: downstream at no load (0.44 m)
+    assert np.isnan(ds.fairlead_tension.values[1, :, :, 1]).all()   # line2 removed in the damaged condition
