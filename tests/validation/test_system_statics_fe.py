@@ -187,7 +187,7 @@ def test_grounded_lines_lie_on_a_sloping_seabed():
     pen = w / (3.0e6 * lt.diameter)   # static penetration of the penalty seabed (3e6 Pa/m): 3 mm
     grounded = 0
     for name in eq.line_names:
-        s, X, _ = eq.line_nodes(name)
+        _, X, _ = eq.line_nodes(name)
         bed = -depth + math.tan(slope) * X[:, 0]
         gap = (X[:, 2] - bed) * math.cos(slope)       # normal distance, > 0 above the seabed
         on = gap < 0.5 * pen
