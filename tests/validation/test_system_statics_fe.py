@@ -214,7 +214,7 @@ def test_offsets_and_damaged_lines_in_a_current():
 
     d = _suspended(current={"speed": 1.0})
     d["bodies"]["buoy"]["external_force"] = [0.0] * 6
-    d["analysis"] = {"type": "system_offsets", "body": "buoy", "loads": [0.0, 1.0e5], "headings": [0.0, math.pi / 2],
+    d["analysis"] = {"type": "system_offsets", "body": "buoy", "loads": [0.0, 5.0e4, 1.0e5], "headings": [0.0, math.pi / 2],
                      "damaged_lines": ["line2"]}
     ds = run_system_offsets(parse_case(d))
     assert ds.attrs["statics"] == "finite_element"

@@ -103,6 +103,7 @@ class FEEquilibrium:
     indeterminate: list = dataclasses.field(default_factory=list)
     pin_reaction: np.ndarray | None = None
     surfaced: list = dataclasses.field(default_factory=list)
+    base_fe: object = dataclasses.field(default=None, repr=False)   # the system without ``external``
     stiffness_method: str = STIFFNESS_FD
     statics: str = "finite_element"
 
@@ -264,7 +265,7 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
 
     check_fe(system, env)
     if initial is not None and n_elements is None:
-        fe0 = initial.fe
+        fe0 = initial.base_fe         # without the loads ``initial`` was solved under
     else:
         fe0 = build_system_fe(system, env, None, n_elements=n_elements)
     fe = _with_loads(fe0, external)
@@ -303,7 +304,7 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
         point_names=point_names, point_position=ppos, line_names=list(fe.line_names), end_a_force=fa,
         end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1), end_b_tension=np.linalg.norm(fb, axis=1),
         grounded_length=grounded, stiffness=K, hydrostatic=hydrostatic(system, env, free, q), iterations=st.iterations,
-        residual=st.residual / scale, fe=fe, state=st)
+        residual=st.residual / scale, fe=fe, state=st, base_fe=fe0)
 
 
 def hydrostatic(system, env, free: list, q: np.ndarray) -> np.ndarray:
