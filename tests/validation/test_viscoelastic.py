@@ -276,3 +276,34 @@ def test_coupled_system_kernel_carries_the_viscoelasticity():
     elastic = _coupled_and_mooring(sc.LineType(**kw))
     assert np.max(np.abs(visco[0] - visco[1])) < 1e-6 * np.max(visco[1])
     assert np.max(np.abs(visco[1] - elastic[1])) > 0.2 * np.ptp(elastic[1])
+
+
+def test_slack_rounding_is_the_elastic_elements():
+    """Going slack in the time domain: the viscoelastic element's tension-only switch is rounded over the
+    elastic element's band (a quarter of the element's weight in air, Tb = EA_s sband). With a step so long
+    that the slow stretch has settled (dt = 1e12 s: T = EA_s eps), its tension at eps = -sband/2, 0,
+    sband/2 and 2 sband equals the elastic element's (the static path, rounded) to 1e-5 relative (the
+    roundings are the same parabola, (T + Tb)^2 / (4 Tb); the band here is 2.5e-9 m of a 10 m element, whose
+    stretch the two paths form differently, l - L and l / L - 1, to 1e-15 m: 1e-6 of it); before, it was
+    0 at and below eps = 0."""
+    from seacable.mooring import kernel as K
+
+    model = _element(free=False, ba_d=1.0e3)
+    net = model.network
+    sband = 0.25 * net.mass_per_length[0] * model.water.gravity * L / EA_S
+
+    def tension(eps, dt):
+        X = net.position.copy()
+        X[1, 2] = X[0, 2] - L * (1 + eps)
+        env = model.env.copy()
+        env[K.E_VDT] = dt
+        F, M, T = np.zeros((2, 3)), np.zeros((2, 3, 3)), np.zeros(1)
+        K.loads(X, np.zeros_like(X), 0.0, *model.element_args(), model.fidx, env, model.cur_depth,
+                model.cur_speed, False, F, M, T, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
+        return T[0]
+
+    for f in (-0.5, 0.0, 0.5, 2.0):
+        elastic = tension(f * sband, math.inf)
+        assert elastic > 0.0
+        assert tension(f * sband, 1e12) == pytest.approx(elastic, rel=1e-5)
+    assert tension(-1.5 * sband, 1e12) == 0.0

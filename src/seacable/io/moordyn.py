@@ -1587,9 +1587,10 @@ class MoorDynCase:
     def system_case(self):
         """The deck as a :class:`~seacable.system.case.SystemCase`: ``system_static``, or with a duration
         ``system_dynamic`` with the deck's ``FAILURE`` rows (what :func:`seacable.run` runs for a deck with
-        bodies, rods or points on a body), started from the static equilibrium, or with the free bodies
-        held where the deck puts them when a free body has no line nor horizontal restoring (no static
-        equilibrium; MoorDyn starts them so).
+        bodies, rods or points on a body), started from the static equilibrium (``start: auto``: held where
+        the deck puts the free bodies, with a warning, when that is not found), or with the free bodies
+        held there when a free body has no line nor horizontal restoring (no static equilibrium; MoorDyn
+        starts them so).
 
         Raises
         ------
@@ -1614,7 +1615,7 @@ class MoorDynCase:
 
             try:  # a free body nothing holds has no static start: released where the deck puts it, as MoorDyn
                 check_bodies_without_lines(system)
-                start = "equilibrium"
+                start = "auto"  # the static start, or held where the deck puts the bodies when none is found
             except InputError:
                 start = "held"
             analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
@@ -1972,8 +1973,9 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                 dynamic_axial_damping=lt.dynamic_damping)
     if tabled:
         warnings.warn(f"{label}: Syrope line type(s) {', '.join(tabled)}: the statics (system_static) use the "
-                      "original working curve as the rope's strain-tension table; the working curve after the load "
-                      "history of SYROPE IC applies only in the finite-element lines.",
+                      "original working curve as the rope's strain-tension table; the working curves after a load "
+                      "history (SYROPE IC) are followed only when the deck, having no bodies or rods, runs as a "
+                      "line network (its time-domain run).",
                       SeacableWarning, stacklevel=2)
     lines = {}
     for ln in md.lines:

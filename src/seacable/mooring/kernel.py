@@ -6,7 +6,9 @@ with unstretched length ``L``, current chord ``l`` and unit tangent ``t``::
     eps = l / L - 1,    T = EA eps + c (t . (v_b - v_a)) / L   if eps > 0, else 0  (no compression)
 
 (an element whose line type has a strain-tension table takes ``T(eps)`` from it instead of ``EA eps``,
-piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent)
+piecewise linear as MoorDyn's nonlinear EA, and the table's slope in place of EA in the tangent; a Syrope
+rope's element takes it from the working curve of the largest mean tension so far, :func:`syrope_tension`,
+with that tension as a state committed after each converged step, in a pass of its own, :func:`syrope_loads`)
 
 (the kink at eps = 0 rounded over a strain band at which EA eps is a quarter of the element's weight;
 an element of a viscoelastic line type takes its tension from MoorDyn v2's series spring-damper model
@@ -53,7 +55,7 @@ from numba import njit
 from ..waves import airy_kinematics
 
 __all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
-           "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
+           "syrope_loads", "syrope_tension", "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -67,7 +69,12 @@ ENV_SIZE = 18
 # fast damper BA_D [N s], and the slow stretch and its input at the start of the step (Y0, U0) and at the
 # state last evaluated (Y, U) [m]
 V_EAD, V_LM, V_BAD, V_Y0, V_U0, V_Y, V_U = 0, 1, 2, 3, 4, 5, 6
-V_SIZE = 7
+# and, for an element of a Syrope rope (whose strain-tension table is its original working curve), the working
+# curve's form (0: none, 1: linear, 2: quadratic, 3: exponential) and its parameters k1, k2 [-] (k1 [N] for a
+# linear curve with k1 >= 1), and the largest mean tension so far, Tmax, committed (TM0) and at the state last
+# evaluated (TM) [N] (:func:`syrope_tension`)
+V_WC, V_K1, V_K2, V_TM0, V_TM = 7, 8, 9, 10, 11
+V_SIZE = 12
 
 
 @njit(cache=True)
@@ -145,6 +152,59 @@ def table_tension(eps, lo, hi, ts_x, ts_y):
         j += 1
     k = (ts_y[j] - ts_y[j - 1]) / (ts_x[j] - ts_x[j - 1])
     return ts_y[j - 1] + k * (eps - ts_x[j - 1]), k
+
+
+@njit(cache=True)
+def syrope_tension(eps, row, lo, hi, ts_x, ts_y):
+    """Tension [N] and slope dT/d(eps) [N] of a Syrope rope element at strain ``eps`` (Falkenberg et al. 2017).
+
+    MoorDyn's Syrope model, quasi-static: the original working curve (OWC, the strain-tension table
+    ``ts_x/ts_y[lo:hi]``) beyond the strain ``eps_max`` at which it reaches the largest mean tension so far
+    ``Tmax = row[V_TM0]``, and below it the working curve of that ``Tmax``, from zero tension at
+    ``eps_min`` to ``Tmax`` at ``eps_max``, with ``xi = (eps - eps_min) / (eps_max - eps_min)``::
+
+        eps_min = eps_0 + k1 (eps_max - eps_0)     (eps_0 the OWC's first strain)
+        eps_min = eps_max - Tmax / k1              (LINEAR with k1 >= 1: k1 is the curve's stiffness [N])
+        T = Tmax xi                                (LINEAR)
+        T = Tmax xi (k2 xi + 1 - k2)               (QUADRATIC)
+        T = Tmax (exp(k2 xi) - 1) / (exp(k2) - 1)  (EXP)
+
+    and no tension below ``eps_min`` (the permanent stretch). Writes the ``Tmax`` this state would leave,
+    ``max(Tmax, T)`` on the OWC, in ``row[V_TM]`` (committed after a converged step).
+    """
+    tmax = row[V_TM0]
+    # the OWC's strain at Tmax (the table is increasing; held at its ends as MoorDyn's interp)
+    if tmax <= ts_y[lo]:
+        emax = ts_x[lo]
+    elif tmax >= ts_y[hi - 1]:
+        emax = ts_x[hi - 1]
+    else:
+        j = lo + 1
+        while ts_y[j] <= tmax:
+            j += 1
+        emax = ts_x[j - 1] + (tmax - ts_y[j - 1]) * (ts_x[j] - ts_x[j - 1]) / (ts_y[j] - ts_y[j - 1])
+    if eps >= emax:
+        T, k = table_tension(eps, lo, hi, ts_x, ts_y)
+        row[V_TM] = max(tmax, T)
+        return T, k
+    row[V_TM] = tmax
+    form, k1, k2 = row[V_WC], row[V_K1], row[V_K2]
+    if form == 1.0 and k1 >= 1.0:
+        emin = emax - tmax / k1
+    else:
+        emin = ts_x[lo] + k1 * (emax - ts_x[lo])
+    d = emax - emin
+    if d <= 0.0:
+        return table_tension(eps, lo, hi, ts_x, ts_y)
+    xi = (eps - emin) / d
+    if xi <= 0.0:
+        return 0.0, 0.0
+    if form == 2.0:
+        return tmax * xi * (k2 * xi + 1.0 - k2), tmax * (2.0 * k2 * xi + 1.0 - k2) / d
+    if form == 3.0 and abs(k2) > 1e-12:
+        den = math.exp(k2) - 1.0
+        return tmax * (math.exp(k2 * xi) - 1.0) / den, tmax * k2 * math.exp(k2 * xi) / den / d
+    return tmax * xi, tmax / d
 
 
 @njit(cache=True)
@@ -315,11 +375,14 @@ def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
 
 
 @njit(cache=True)
-def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tension, band, bw, cc):
+def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tension, band, bw, cc, mpl, g):
     """Axial forces, tensions and tangents of the viscoelastic elements (``visco`` rows with EA_Dc > 0).
 
     Each element's slow stretch advances over ``dt`` (:func:`viscoelastic_tension`); no tension in
-    compression. In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
+    compression, the switch rounded as the elastic element's: the model's tension ``T`` becomes
+    ``(T + Tb)^2 / (4 Tb)`` for ``|T| < Tb`` (0 below, and 0 for a strain below ``-sband``, as the elastic
+    element), with ``Tb`` a quarter of the element's weight in air (the elastic element's band
+    ``EA_s sband``; in the static limit ``T = EA_s eps`` this is its rounding exactly). In statics (``dt`` = inf) the element is the elastic one at EA_s of :func:`loads`, and
     only its static slow stretch is written (the start of a time-domain run).
     """
     jac = band.shape[0] > 0
@@ -346,8 +409,13 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
                 tv[r] /= l
         ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
         T, kdl, kdv = viscoelastic_tension(l - L, ldot, L, EA[e], cdamp[e], visco[e], dt)
-        if l <= L or T <= 0.0:
-            continue
+        tb = 0.25 * mpl[e] * g * L
+        if T <= -tb or l - L <= -tb / EA[e] * L or (tb <= 0.0 and T <= 0.0):
+            continue  # slack, or shortened beyond the elastic element's band (no compression)
+        if T < tb:
+            kdl *= (T + tb) / (2.0 * tb)
+            kdv *= (T + tb) / (2.0 * tb)
+            T = (T + tb) ** 2 / (4.0 * tb)
         tension[e] = T
         for r in range(3):
             F[a, r] += T * tv[r]
@@ -357,6 +425,64 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
                 for c in range(3):
                     tt = tv[r] * tv[c]
                     blk[r, c] = (kdl + cc * kdv) * tt + T / l * (eye[r, c] - tt)
+            fa, fb = fidx[a], fidx[b]
+            _add_block(band, bw, fa, fa, 1.0, blk)
+            _add_block(band, bw, fb, fb, 1.0, blk)
+            _add_block(band, bw, fa, fb, -1.0, blk)
+            _add_block(band, bw, fb, fa, -1.0, blk)
+
+
+@njit(cache=True)
+def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, ts_y, fidx, F, tension, band, bw,
+                 cc, g):
+    """Axial forces, tensions and tangents of the Syrope rope elements (``visco`` rows with a working curve).
+
+    The elastic element of :func:`loads` with :func:`syrope_tension` in place of its table (the same
+    slack rounding and damper), in a pass of its own so that lines without Syrope ropes compile as before.
+    """
+    jac = band.shape[0] > 0
+    eye = np.eye(3)
+    blk = np.zeros((3, 3))
+    tv = np.zeros(3)
+    for e in range(elements.shape[0]):
+        if visco[e, V_WC] <= 0.0:
+            continue
+        a = elements[e, 0]
+        b = elements[e, 1]
+        l = 0.0
+        for r in range(3):
+            tv[r] = X[b, r] - X[a, r]
+            l += tv[r] * tv[r]
+        l = math.sqrt(l)
+        if l > 0.0:
+            for r in range(3):
+                tv[r] /= l
+        L = L0[e]
+        eps = l / L - 1.0
+        sband = 0.25 * mpl[e] * g * L / EA[e]
+        if eps >= sband:
+            psi, dpsi, ddpsi = eps, 1.0, 0.0
+            tel, kel = syrope_tension(eps, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+        elif eps > -sband:
+            psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
+            tb, _ = syrope_tension(sband, visco[e], ts_lo[e], ts_hi[e], ts_x, ts_y)
+            visco[e, V_TM] = visco[e, V_TM0]
+            tel, kel = tb / sband * psi, tb / sband * dpsi
+        else:
+            visco[e, V_TM] = visco[e, V_TM0]  # a slack Syrope rope keeps its Tmax
+            continue
+        ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+        T = max(tel + cdamp[e] * ldot / L * dpsi, 0.0)
+        tension[e] = T
+        for r in range(3):
+            F[a, r] += T * tv[r]
+            F[b, r] -= T * tv[r]
+        if jac and T > 0.0:
+            kax = kel + cc * cdamp[e] * dpsi
+            for r in range(3):
+                for c in range(3):
+                    tt = tv[r] * tv[c]
+                    blk[r, c] = (kax + cdamp[e] * ldot / L * ddpsi) / L * tt + T / l * (eye[r, c] - tt)
             fa, fb = fidx[a], fidx[b]
             _add_block(band, bw, fa, fa, 1.0, blk)
             _add_block(band, bw, fb, fb, 1.0, blk)
@@ -425,7 +551,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             else:
                 tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        if dpsi > 0.0 and not (nvis > 0 and visco[e, V_EAD] > 0.0 and not vstatic):
+        if dpsi > 0.0 and not (nvis > 0 and (visco[e, V_EAD] > 0.0 and not vstatic or visco[e, V_WC] > 0.0)):
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
             if tab:
                 T = tel + cdamp[e] * ldot / L * dpsi
@@ -489,7 +615,10 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 _drag_tangent(ut, math.pi * cdt[e], hb, qd)
                 _add_block(band, bw, fidx[k], fidx[k], cc, hb)
     if nvis > 0:
-        viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc)
+        viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc, mpl,
+                           env[E_G])
+        syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, ts_y, fidx, F, tension, band,
+                     bw, cc, env[E_G])
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
@@ -758,10 +887,12 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
 
 @njit(cache=True)
 def commit_viscoelastic(visco):
-    """Start the next step from the viscoelastic state last evaluated (a converged step's end)."""
+    """Start the next step from the viscoelastic state last evaluated (a converged step's end), and a
+    Syrope rope's largest mean tension Tmax from that state's."""
     for e in range(visco.shape[0]):
         visco[e, V_Y0] = visco[e, V_Y]
         visco[e, V_U0] = visco[e, V_U]
+        visco[e, V_TM0] = visco[e, V_TM]
 
 
 @njit(cache=True)

@@ -13,7 +13,8 @@ A line type's bending stiffness ``EI`` acts at the inner nodes of its lines (Moo
 bending, ends at points pinned; :func:`seacable.mooring.kernel.bending_loads`), a viscoelastic
 ``EA_s|EA_d`` (or ``EA_s|EA_Dc|EA_D_Lm``) with ``BA_s|BA_d`` runs MoorDyn v2's viscoelastic model
 (:func:`seacable.mooring.kernel.viscoelastic_tension`; statics at EA_s), a nonlinear (table) EA with
-its table; a Syrope rope with its original working curve, with a warning. Decks with bodies, rods
+its table; a Syrope rope with its working curves (:func:`seacable.mooring.kernel.syrope_tension`: quasi-static,
+from SYROPE IC's Tmax, without MoorDyn's dynamic stiffness and slow damper), with a warning. Decks with bodies, rods
 or points on a body or turbine are refused here: they run as a mooring system
 (:meth:`seacable.io.moordyn.MoorDynCase.system`).
 """
@@ -37,6 +38,9 @@ from .solver import MooringModel, MooringRun, Water, simulate, static_equilibriu
 __all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
 
 _KIND = {"fixed": FIXED, "vessel": PRESCRIBED, "free": FREE}
+
+
+_WC_FORM = {"LINEAR": 1.0, "QUADRATIC": 2.0, "EXP": 3.0}  # kernel.V_WC codes of the Syrope working curves
 
 
 def _line_length(md: MoorDynInput, line, pa, pb) -> float:
@@ -70,8 +74,11 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     elements, props, element_line, line_nodes = [], [], [], []
     tables = []  # per element: its line type's strain-tension table (MoorDyn's nonlinear EA) or None
     bending, visco = [], []  # per element: EI; (EA_Dc, EA_D_Lm, BA_D) of a viscoelastic line type
+    syrope = []  # per element: (form, k1, k2, Tmax0) of a Syrope rope's working curves, zeros otherwise
     for li, line in enumerate(md.lines):
         lt = md.line_types[line.line_type]
+        wc = getattr(lt, "syrope", None) if lt.tension_strain is not None else None
+        tmax0 = getattr(md, "syrope_ic", {}).get(line.id, (0.0, 0.0))[0]
         A, B = points[line.point_a], points[line.point_b]
         L = _line_length(md, line, A, B)
         n = line.n_segments
@@ -101,12 +108,15 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
             dyn = lt.dynamic_stiffness
             visco.append((dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
                          if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0))
-    special = [lt.name for lt in md.line_types.values() if lt.dynamic_stiffness is not None
-               and lt.tension_strain is not None]
+            syrope.append((_WC_FORM[wc[0]], wc[1], wc[2], tmax0) if wc is not None else (0.0, 0.0, 0.0, 0.0))
+    special = [lt.name for lt in md.line_types.values() if getattr(lt, "syrope", None) is not None]
     for name in special:
-        warnings.warn(f"line type {name} is a Syrope rope: its original working curve (strain-tension table) is "
-                      "used, without the dynamic stiffness of the working curves.", SeacableWarning, stacklevel=2)
+        warnings.warn(f"line type {name} is a Syrope rope: its tension follows its working curves quasi-statically "
+                      "(the curve of the largest mean tension so far, from SYROPE IC's Tmax), without the dynamic "
+                      "stiffness EA_Dc|EA_D_Lm and the slow damper of MoorDyn's Syrope model.", SeacableWarning,
+                      stacklevel=2)
     visco = np.array(visco, float)
+    syrope = np.array(syrope, float)
     n_nodes = len(pos)
     extra = n_nodes - n_pts
     P = np.array(props, float)
@@ -124,6 +134,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
                   bending_stiffness=np.array(bending, float) if any(bending) else None,
                   element_viscoelastic=visco if np.any(visco[:, 0] > 0) else None,
+                  element_syrope=syrope if np.any(syrope[:, 0] > 0) else None,
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
                                                                if p.attachment == "vessel"))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
@@ -148,7 +159,8 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    element_tension_strain=None if net.element_tension_strain is None
                    else tuple(net.element_tension_strain[e] for e in els),
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
-                   element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els])
+                   element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
+                   element_syrope=None if net.element_syrope is None else net.element_syrope[els])
     return MooringModel(view, model.water)
 
 

@@ -76,6 +76,10 @@ class Network:
         when no element is viscoelastic. ``axial_stiffness`` is then the static EA_s and
         ``axial_damping`` the slow damper BA (:func:`seacable.mooring.kernel.viscoelastic_tension`).
         [N, -, N s]
+    element_syrope : (e, 4) per element ``(form, k1, k2, Tmax0)`` of a Syrope rope (its working curve's form,
+        1 linear, 2 quadratic, 3 exponential, and parameters, and the largest mean tension before the run),
+        whose ``element_tension_strain`` is its original working curve; zeros for other elements; None when
+        there is none (:func:`seacable.mooring.kernel.syrope_tension`). [-, -, -, N]
     """
 
     position: np.ndarray
@@ -107,6 +111,7 @@ class Network:
     element_tension_strain: tuple | None = None
     bending_stiffness: np.ndarray | None = None
     element_viscoelastic: np.ndarray | None = None
+    element_syrope: np.ndarray | None = None
 
     def hinge_arrays(self):
         """The inner nodes of the lines with bending stiffness as the kernel takes them.

@@ -143,10 +143,16 @@ class MooringModel:
         # strain-tension tables (lo, hi, strain, tension) of the elements that have one
         self.tension_strain = net.tension_strain_arrays()
         # viscoelastic elements: parameters and the slow stretch (kernel.V_*), no rows when there are none
+        # and Syrope ropes: their working curve and largest mean tension so far (kernel.syrope_tension)
         self.visco = np.zeros((0, K.V_SIZE))
-        if net.element_viscoelastic is not None:
+        syrope = getattr(net, "element_syrope", None)
+        if net.element_viscoelastic is not None or syrope is not None:
             self.visco = np.zeros((net.n_elements, K.V_SIZE))
+        if net.element_viscoelastic is not None:
             self.visco[:, [K.V_EAD, K.V_LM, K.V_BAD]] = net.element_viscoelastic
+        if syrope is not None:
+            self.visco[:, [K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = syrope
+            self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
 
     def element_args(self):
         n = self.network

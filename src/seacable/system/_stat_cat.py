@@ -511,7 +511,7 @@ def table_strain(T, k, tables):
 def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=None) -> CatenaryResult:
     n = h.size
     flags = out[:, 10]
-    all_ok = bool(flags.min(initial=1.0) == 1.0)  # no sub-lines (bodies alone): nothing to redo
+    all_ok = bool(flags.size == 0 or flags.min() == 1.0)  # no sub-lines: bodies alone
     over = np.zeros(0, int) if all_ok else np.flatnonzero(flags == -1.0)
     if over.size:
         # a tabled sub-line strained beyond max_strain (the table's continuation: T above its end)

@@ -54,6 +54,7 @@ friction take them, and ``numerical_damping`` adds Newmark's first-order dissipa
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time as _time
 import warnings
@@ -162,8 +163,10 @@ class SystemDynamicAnalysis(Model):
     Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force
     series); prescribed bodies and coupled points follow ``body_motions`` / ``point_motions``; line ends
     may fail (``failures``). Newmark's average acceleration with Newton iterations on the nodes and
-    bodies together, starting from the static equilibrium (``start: equilibrium``) or with the free
-    bodies held at their given positions and released at t = 0 (``start: held``).
+    bodies together, starting from the static equilibrium (``start: equilibrium``), with the free
+    bodies held at their given positions and released at t = 0 (``start: held``), or from the
+    equilibrium when it is found and held otherwise, with a warning (``start: auto``, what a MoorDyn
+    deck run in time uses: a deck's free bodies are placed where the deck puts them).
     """
 
     type: Literal["system_dynamic"] = "system_dynamic"
@@ -178,8 +181,9 @@ class SystemDynamicAnalysis(Model):
     external_forces: dict[str, ExternalForceSeries] = Field(
         default_factory=dict, description="External force time series per free body.")
     failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
-    start: Literal["equilibrium", "held"] = Field(
-        "equilibrium", description="Static start of the whole system, or with free bodies held at their position.")
+    start: Literal["equilibrium", "held", "auto"] = Field(
+        "equilibrium", description="Static start of the whole system, or with free bodies held at their position, "
+                                   "or 'auto': the static start when it converges, else held (with a warning).")
     release_offsets: dict[str, _SIX] = Field(
         default_factory=dict, description="Free decay: each named free body held at its equilibrium plus this "
                                           "offset (x, y, z [m], roll, pitch, yaw [rad]) while the lines settle, "
@@ -202,7 +206,7 @@ class SystemDynamicAnalysis(Model):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
-        if self.release_offsets and self.start == "held":
+        if self.release_offsets and self.start != "equilibrium":
             raise ValueError("release_offsets start from the equilibrium: they need 'start: equilibrium'.")
         if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
             raise ValueError(f"rayleigh must hold two finite numbers >= 0 (alpha [1/s], beta [s]), got "
@@ -461,7 +465,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         arc_length=np.array(arc, float), n_channels=len(channel_source),
         channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
         breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
-        bending_stiffness=np.concatenate(bending), element_viscoelastic=np.vstack(visco) if np.any(np.vstack(visco)) else None)
+        bending_stiffness=np.concatenate(bending) if bending else np.zeros(0),
+            element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None)
     model = MooringModel(net, _water(environment, analysis))
     nb = len(free_bodies)
     bpar = np.zeros((nb, DK.B_SIZE))
@@ -514,6 +519,7 @@ class SystemState:
     tension: np.ndarray        # (e,) element tensions [N]
     iterations: int
     residual: float
+    start: str = "equilibrium"  # how it was found: 'equilibrium', or 'held' (free bodies at their given positions)
 
 
 def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: float = 1e-9,
@@ -891,10 +897,43 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     return ds
 
 
-def start_state(fe: SystemFE, analysis: SystemDynamicAnalysis) -> SystemState:
+def start_state(fe: SystemFE, analysis: SystemDynamicAnalysis, environment=None) -> SystemState:
     """The static start of a run: the coupled equilibrium, or the lines' equilibrium with the free bodies held
-    (at their given positions, or at the equilibrium plus ``release_offsets``)."""
-    st = static_system(fe, held=analysis.start == "held", tol=analysis.tolerance)
+    (at their given positions, or at the equilibrium plus ``release_offsets``).
+
+    ``start: auto`` falls back, with a warning naming the residual, when the coupled static solve does
+    not converge: the free bodies are held where the catenary statics
+    (:func:`seacable.system.statics.solve_equilibrium`, given ``environment``) put them, so that the
+    release at t = 0 starts near rest, or where the case puts them when that fails too.
+    """
+    held = analysis.start == "held"
+    q = None
+    try:
+        st = static_system(fe, held=held, tol=analysis.tolerance)
+    except ConvergenceError as err:
+        if analysis.start != "auto" or not len(fe.free_bodies):
+            raise
+        where = "where the case puts them"
+        if environment is not None:
+            from ..errors import InputError, NoSolutionError
+            from .statics import solve_equilibrium
+
+            try:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", SeacableWarning)
+                    eq = solve_equilibrium(fe.system, environment)
+                q = np.array([eq.body_position[eq.body_names.index(name)] for name in fe.free_bodies], float)
+                where = "at the catenary statics' equilibrium"
+            except (InputError, NoSolutionError, ConvergenceError):
+                q = None
+        warnings.warn(f"system_dynamic: the finite-element static start did not converge ({err}); the free "
+                      f"bodies {', '.join(fe.free_bodies)} start held {where} and are released at t = 0. "
+                      "Suggested fix: none needed if the release transient is acceptable; otherwise place the "
+                      "bodies nearer their equilibrium.", SeacableWarning, stacklevel=2)
+        held = True
+        st = static_system(fe, held=True, q=q, tol=analysis.tolerance)
+    if held:
+        st = dataclasses.replace(st, start="held")
     if not analysis.release_offsets:
         return st
     q = st.body_position.copy()
@@ -912,10 +951,10 @@ def run_system_dynamic(case, progress=None):
     setup = prepare_system_dynamic(case)
     a = setup.analysis
     fe = setup.fe
-    start = start_state(fe, a)
+    start = start_state(fe, a, case.environment)
     nd = a.numerical_damping
     run = simulate_system(fe, start, a.duration, a.time_step, a.output_interval, analysis=a,
                           tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
                           beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
     return system_result(fe, run, case=case, settings={"damping_ratio": a.damping_ratio, "rayleigh": list(a.rayleigh),
-                                                       "start": a.start})
+                                                       "start": start.start})
