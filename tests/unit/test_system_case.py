@@ -376,7 +376,6 @@ def _write(tmp_path, data, name="case.yaml") -> str:
 @pytest.mark.parametrize("change, expected", [
     # metacentric height 7.5 + 0.6 - 20 < 0: roll stiffness rho g (I + V z_B) - m g z_G < 0, lines too weak
     (("bodies", "buoy", "center_of_gravity", [0.0, 0.0, 5.0]), ["bodies.buoy", "roll", "capsizes"]),
-    (("environment", "current", {"speed": 1.0}), ["environment.current", "1 m/s"]),
 ])
 def test_validate_refuses_what_run_would_before_solving(tmp_path, capsys, change, expected):
     data = _data()
@@ -392,6 +391,25 @@ def test_validate_refuses_what_run_would_before_solving(tmp_path, capsys, change
         for word in expected:
             assert word in err, (word, err)
     assert not (tmp_path / "r.nc").exists()
+
+
+def test_a_current_is_validated_and_run_with_the_finite_element_statics(tmp_path, capsys):
+    """A current (which the catenary lines cannot carry) is no longer refused: validate passes and the run
+    says it used the finite-element statics, with the stiffness by central differences; the buoy is carried
+    downstream (+x) of its still-water equilibrium."""
+    data = _data()
+    data["environment"]["current"] = {"speed": 1.0}
+    data["analysis"] = {"type": "system_static"}
+    path = _write(tmp_path, data)
+    assert main(["validate", path]) == 0
+    capsys.readouterr()
+    case = sc.load_case(path)
+    ds = sc.run(case)
+    assert ds.attrs["statics"] == "finite_element" and "current" in ds.attrs["statics_reason"]
+    assert ds.attrs["stiffness_method"] == "central differences of the finite-element statics"
+    still = sc.run(case.replace(environment=case.environment.model_copy(update={"current": sc.Current()})))
+    assert still.attrs["statics"] == "catenary"
+    assert float(ds.body_x[0, 0]) > float(still.body_x[0, 0])
 
 
 def test_no_equilibrium_under_a_load_the_lines_cannot_hold(tmp_path, capsys):

@@ -169,20 +169,7 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
                 cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), node_force, node_buoy, asm.node_kind,
                 asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
-    own = np.zeros((nb, 6))
-    own_jac = np.zeros((nb, 6, 6))
-    if nb:
-        _k.body_terms(st.R, st.X, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
-                      own, own_jac)
-        for k in range(nb):
-            if bd.khs[k] is not None:
-                from ._stat_model import euler, euler_rate_map
-                ang = euler(st.R[k])
-                dq = np.concatenate([st.X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
-                own[k] = bd.f0[k] - bd.khs[k] @ dq
-                M = np.eye(6)
-                M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
-                own_jac[k] = -bd.khs[k] @ M
+    own, own_jac = _own_terms(asm, bd, st.X, st.R)
     jac = jac_lines.copy()
     hydro = np.zeros((6 * nb, 6 * nb))
     res[:6 * nb] += (own + load_factor * bd.external).ravel()
@@ -192,3 +179,29 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
         hydro[b, b] = -own_jac[k]
     scale = _k.force_scale(fa, fb, own, floor)
     return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
+
+
+def _own_terms(asm, bd: BodyData, X, R):
+    """The free bodies' own loads (nb, 6) (weight, buoyancy, waterplane, or the user's hydrostatic matrix)
+    and their derivatives (nb, 6, 6) at reference points X (nb, 3) and rotations R (nb, 3, 3)."""
+    nb = X.shape[0]
+    own = np.zeros((nb, 6))
+    own_jac = np.zeros((nb, 6, 6))
+    if nb:
+        _k.body_terms(R, X, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0, asm.rho, asm.g,
+                      own, own_jac)
+        for k in range(nb):
+            if bd.khs[k] is not None:
+                from ._stat_model import euler, euler_rate_map
+                ang = euler(R[k])
+                dq = np.concatenate([X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
+                own[k] = bd.f0[k] - bd.khs[k] @ dq
+                M = np.eye(6)
+                M[3:, 3:] = np.linalg.inv(euler_rate_map(ang))
+                own_jac[k] = -bd.khs[k] @ M
+    return own, own_jac
+
+
+def body_own(asm, system, X, R):
+    """:func:`_own_terms` of ``system``'s free bodies (``asm`` needs free_bodies, body_names, rho, g)."""
+    return _own_terms(asm, body_data(asm, system, None), np.asarray(X, float), np.asarray(R, float))

@@ -96,13 +96,15 @@ def check_environment(env: Environment) -> None:
     speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
     if any(abs(v) > 0 for v in speeds):
         raise InputError(f"environment.current: a current of {max(abs(v) for v in speeds):g} m/s is not "
-                         "supported by the system statics yet: each line is an elastic catenary in the "
+                         "supported by the catenary system statics: each line is an elastic catenary in the "
                          "vertical plane through its ends, which has no drag load. Suggested fix: set the "
-                         "current speed to 0 for the system statics (model the mean drag as a body "
-                         "external_force), or run the line with the finite-element mooring model.")
+                         "current speed to 0 for the catenary statics, or leave analysis.statics at 'auto' (the "
+                         "system analyses then use the finite-element statics: "
+                         "seacable.system._stat_fe.fe_equilibrium).")
     if env.seabed.slope != 0:
         raise InputError(f"environment.seabed.slope = {env.seabed.slope:g} rad is not supported by the system "
-                         "statics yet: the catenary seabed is horizontal. Suggested fix: use slope 0.")
+                         "catenary statics: their seabed is horizontal. Suggested fix: use slope 0, or leave "
+                         "analysis.statics at 'auto' (the system analyses then use the finite-element statics).")
 
 
 def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = None,

@@ -6,6 +6,14 @@ same system without those lines), and reports both along a ``condition`` dimensi
 points are dimensions (``line``, ``body``, ``point``) whose coordinates hold their names; a line removed
 in the damaged condition has NaN there, and ``line_present`` says which lines each condition has.
 
+Which statics: lines of one homogeneous catenary and the FE statics for the rest
+(:func:`seacable.system.statics.solve_equilibrium`) when the water has no current and the seabed is
+flat; otherwise the finite-element statics of the whole system (:mod:`seacable.system._stat_fe`: the
+coupled finite-element lines and bodies of ``system_dynamic`` at rest, with the current's drag and the
+sloping seabed, their stiffness by central differences of equilibria). The analysis option ``statics``
+(``auto``, ``catenary``, ``finite_element``; default ``auto``) forces one; the Dataset's attributes
+``statics`` and ``stiffness_method`` say which were used.
+
 Every check that can be made before solving is in :func:`prepare_system_static` and
 :func:`prepare_system_offsets`, which ``seacable validate`` runs (one validation path).
 """
@@ -94,16 +102,44 @@ class SystemSetup:
     points: tuple[str, ...]
     loads: tuple[float, ...] = ()
     headings: tuple[float, ...] = ()
+    statics: str = "catenary"
+
+    @property
+    def fe(self) -> bool:
+        """The finite-element statics are used (a current, a sloping seabed, or asked for)."""
+        return self.statics == "finite_element"
 
     @property
     def free_bodies(self) -> tuple[str, ...]:
         return tuple(n for n in self.bodies if self.systems[0].bodies[n].kind == "free")
 
 
-def _setup(case, analysis_type: str) -> SystemSetup:
+STATICS = ("auto", "catenary", "finite_element")
+
+
+def statics_used(case, statics: str | None = None) -> str:
+    """'catenary' or 'finite_element': the statics a system case is solved with.
+
+    ``statics`` (default the analysis option ``statics``, else ``auto``): ``auto`` takes the catenary
+    statics unless the environment has what they cannot model (a current, a sloping seabed:
+    :func:`seacable.system._stat_fe.needs_fe`); ``catenary`` then refuses those.
+    """
+    from ._stat_fe import needs_fe
+
+    mode = statics if statics is not None else getattr(case.analysis, "statics", "auto")
+    if mode not in STATICS:
+        raise InputError(f"analysis.statics: '{mode}' is not one of {', '.join(STATICS)}. Suggested fix: use "
+                         "'auto' (the catenary statics unless there is a current or a sloping seabed).")
+    if mode == "auto":
+        return "finite_element" if needs_fe(case.environment) else "catenary"
+    return mode
+
+
+def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
     if not isinstance(case, SystemCase) or case.analysis.type != analysis_type:
         raise InputError(f"{analysis_type} takes a system case (seacable.system.SystemCase with analysis type "
                          f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
+    mode = statics_used(case, statics)
     intact = case.system()
     damaged = case.damaged_system()
     systems = (intact,) if damaged is None else (intact, damaged)
@@ -112,11 +148,28 @@ def _setup(case, analysis_type: str) -> SystemSetup:
         check_bodies_without_lines(system, "" if condition == "intact" else
                                    f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} "
                                    "removed): ")
-        _start_checks(system, case.environment, "" if condition == "intact" else
-                      f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): ",
-                      case.analysis.max_strain)
+        where = "" if condition == "intact" else \
+            f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): "
+        if mode == "finite_element":
+            _fe_checks(system, case.environment, where)
+        else:
+            _start_checks(system, case.environment, where, case.analysis.max_strain)
     return SystemSetup(case=case, conditions=("intact", "damaged")[:len(systems)], systems=systems,
-                       lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points))
+                       lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points),
+                       statics=mode)
+
+
+def _fe_checks(system: MooringSystem, environment, where: str) -> None:
+    """The finite-element statics' checks without solving: what they cannot model (a pinned body), and the
+    finite-element system's geometry (line ends below the seabed, lines that cannot reach: as the dynamics)."""
+    from ._stat_fe import check_fe
+    from .dynamics import build_system_fe
+
+    try:
+        check_fe(system, environment, where)
+        build_system_fe(system, environment, None)
+    except InputError as err:
+        raise type(err)(f"{where}{err}" if where and not str(err).startswith(where) else str(err)) from None
 
 
 def _check_free_points(system: MooringSystem, condition: str) -> None:
@@ -161,27 +214,29 @@ def check_bodies_without_lines(system: MooringSystem, where: str = "") -> None:
             "hydrostatic_stiffness with surge and sway terms, or run it in time (analysis type system_dynamic).")
 
 
-def prepare_system_static(case: SystemCase) -> SystemSetup:
+def prepare_system_static(case: SystemCase, statics: str | None = None) -> SystemSetup:
     """Every check of a ``system_static`` case that needs no solve; returns what the solves need.
 
     The case's own checks (names of points, bodies and line types, masses and inertias, points below
     the seabed, the damaged lines) ran when it was built; here the damaged system is built, free
     points without lines and free bodies without lines nor horizontal restoring
     (:func:`check_bodies_without_lines`) are refused,
-    and the solver's checks at the given positions run for each condition: what its catenaries
-    cannot model (current, a sloping seabed), a line that cannot reach between its ends, and a body
-    that nothing restores (unstable hydrostatics and no mooring restoring).
+    and the solver's checks at the given positions run for each condition: a line that cannot reach
+    between its ends, and a body that nothing restores (unstable hydrostatics and no mooring
+    restoring). With a current or a sloping seabed (or ``statics: finite_element``) the
+    finite-element statics are used (:func:`statics_used`) and their checks run instead: no pinned
+    body, the finite-element system's geometry.
     """
-    return _setup(case, "system_static")
+    return _setup(case, "system_static", statics)
 
 
-def prepare_system_offsets(case: SystemCase) -> SystemSetup:
+def prepare_system_offsets(case: SystemCase, statics: str | None = None) -> SystemSetup:
     """Every check of a ``system_offsets`` case that needs no solve; returns what the solves need.
 
     As :func:`prepare_system_static`, and the size of the sweep
     (:func:`seacable._limits.check_run_size`: one solve per condition, heading, load and load step).
     """
-    setup = _setup(case, "system_offsets")
+    setup = _setup(case, "system_offsets", statics)
     a: SystemOffsetsAnalysis = case.analysis
     headings = a.heading_values()
     n_cond = len(setup.conditions)
@@ -208,13 +263,16 @@ def _offsets_text(system: MooringSystem, eq) -> str:
     return "; last converged offset of " + ", ".join(parts)
 
 
-def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str):
+def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str,
+                statics: str = "catenary", stiffness: bool = True):
     """Solve the equilibrium of ``system`` under each external load of ``steps`` (a list of (label,
     ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium.
 
     A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
-    last offsets, the last converged offsets and ``fix``.
+    last offsets, the last converged offsets and ``fix``. ``statics``: 'catenary' or 'finite_element'
+    (:func:`seacable.system._stat_fe.fe_equilibrium`, its stiffness at the last step when ``stiffness``).
     """
+    from ._stat_fe import fe_equilibrium
     from .statics import solve_equilibrium
 
     a = case.analysis
@@ -224,8 +282,16 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
             with warnings.catch_warnings():
                 # one warning per line at its largest tension over the run (_warn_breaking), not one per solve
                 warnings.filterwarnings("ignore", message=r"lines\.\S+: tension .* exceeds the breaking load")
-                eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
-                                       max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
+                # said once by the prepare step
+                warnings.filterwarnings("ignore", message=r".*the finite-element statics .* are frictionless")
+                if statics == "finite_element":
+                    last = label == steps[-1][0]
+                    eq = fe_equilibrium(system, case.environment, external=external, tol=a.tolerance,
+                                        max_iter=max(a.max_iterations, 1000), initial=eq,
+                                        stiffness=stiffness and last)
+                else:
+                    eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
+                                           max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""
@@ -423,7 +489,7 @@ def _settings(case: SystemCase, setup: SystemSetup, **more) -> dict:
             "damaged_lines": list(a.damaged_lines), "depth": case.environment.depth, **more}
 
 
-def run_system_static(case: SystemCase):
+def run_system_static(case: SystemCase, statics: str | None = None):
     """Equilibrium, end tensions, anchor loads and stiffness of a system (analysis ``system_static``).
 
     Returns
@@ -432,15 +498,19 @@ def run_system_static(case: SystemCase):
         Dimensions ``condition`` (intact, and damaged when ``damaged_lines`` are given), ``line``,
         ``body``, ``point``, ``node`` (profile points, evenly spaced in unstretched arc length),
         ``dof`` and ``dof2`` (surge, sway, heave, roll, pitch, yaw) and ``body_dof``, ``body_dof2``
-        (those of every free body, for the coupled stiffness).
+        (those of every free body, for the coupled stiffness). Attributes ``statics`` (``catenary`` or
+        ``finite_element``) and ``stiffness_method`` say how the equilibrium and the stiffness were found.
+
+    ``statics`` overrides the analysis option ``statics`` (:func:`statics_used`): ``auto``, ``catenary``,
+    ``finite_element``.
     """
     a: SystemStaticAnalysis = case.analysis
-    setup = prepare_system_static(case)
+    setup = prepare_system_static(case, statics)
     records, profiles, coupled, iterations, residuals = [], [], [], [], []
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_static case '{case.name}', {condition} condition"
-        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
         _check_stable(system, eq, where)
         if eq.pin_reaction is not None:
             for k, name in enumerate(eq.free_body_names):
@@ -483,6 +553,7 @@ def run_system_static(case: SystemCase):
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup))
     ds.attrs["depth"] = float(case.environment.depth)
+    _statics_attrs(ds, setup)
     if held:
         ds.attrs["indeterminate"] = "; ".join(held)  # rotations nothing resists, held where they start
     return ds
@@ -494,7 +565,7 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
     a: SystemOffsetsAnalysis = case.analysis
     for condition, system in zip(setup.conditions, setup.systems):
         where = f"system_offsets case '{case.name}', {condition} condition"
-        base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a))
+        base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
         _check_stable(system, base, f"{where}, at no load")
         for h in headings:
             direction = np.array([math.cos(h), math.sin(h), 0.0, 0.0, 0.0, 0.0])
@@ -509,13 +580,13 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
                            f"analysis.loads, or analysis.load_steps: {max(10, 2 * a.load_steps)}), raise "
                            f"analysis.max_iterations ({a.max_iterations}), or lower the largest load if the lines "
                            "cannot hold it")
-                    eq = _solve_path(case, system, steps, eq, where, fix)
+                    eq = _solve_path(case, system, steps, eq, where, fix, setup.statics, stiffness=False)
                     last = load
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
 
 
-def run_system_offsets(case: SystemCase):
+def run_system_offsets(case: SystemCase, statics: str | None = None):
     """Offsets, watch circle and restoring force of a body under a swept load (analysis ``system_offsets``).
 
     Returns
@@ -526,7 +597,7 @@ def run_system_offsets(case: SystemCase):
         heading; ``offset`` the loaded body's offset along the heading from its given position.
     """
     a: SystemOffsetsAnalysis = case.analysis
-    setup = prepare_system_offsets(case)
+    setup = prepare_system_offsets(case, statics)
     loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
     records, restoring = [], []
     try:
@@ -562,7 +633,20 @@ def run_system_offsets(case: SystemCase):
     ds.attrs["loaded_body"] = a.body
     ds.attrs["depth"] = float(case.environment.depth)
     ds.attrs["interrupted"] = int(interrupted)
+    _statics_attrs(ds, setup)
     return ds
+
+
+def _statics_attrs(ds, setup: SystemSetup) -> None:
+    """Say which statics and which stiffness the Dataset holds."""
+    from ._stat_fe import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
+
+    ds.attrs["statics"] = setup.statics
+    ds.attrs["stiffness_method"] = STIFFNESS_FD if setup.fe else STIFFNESS_ANALYTIC
+    if setup.fe:
+        why = needs_fe(setup.case.environment)
+        ds.attrs["statics_reason"] = (f"the environment has {why}, which the catenary lines cannot model" if why
+                                      else "asked for (analysis.statics: finite_element)")
 
 
 def _body_line_force(eq, system: MooringSystem, body: str) -> np.ndarray:

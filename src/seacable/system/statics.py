@@ -75,9 +75,12 @@ Model
 * ``max_strain`` (default 1) bounds the strain a line may take; a soft spring line needs more.
   Where Newton has no step (a weightless slack line at its length) the step follows the forces.
 
-Not modelled yet (refused with an ``InputError``): current (no drag on the catenaries), a
+Not modelled here (refused with an ``InputError``): current (no drag on the catenaries), a
 sloping seabed, line ends inside the seabed, lines without EA. A buoyant sub-line is not
-checked against rising above the surface.
+checked against rising above the surface. The system analyses (``system_static``,
+``system_offsets``, damaged lines; :mod:`seacable.system.run`) solve a current or a sloping seabed
+with the finite-element statics instead (:mod:`seacable.system._stat_fe`: the coupled
+finite-element lines and bodies at rest, stiffness by central differences of equilibria).
 
 References
 ----------
@@ -738,7 +741,8 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     ----------
     system : MooringSystem
     environment : Environment
-        Water density, gravity, depth, seabed friction (no current, flat seabed).
+        Water density, gravity, depth, seabed friction (no current, flat seabed: for those,
+        :func:`seacable.system._stat_fe.fe_equilibrium`).
     external : dict, optional
         ``{body name: (Fx, Fy, Fz, Mx, My, Mz)}`` loads added to the named free bodies, global
         axes, about the reference point, on top of ``Body.external_force``. [N, N m]

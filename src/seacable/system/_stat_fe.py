@@ -1,0 +1,329 @@
+"""Finite-element statics of a mooring system: the fallback of ``system_static`` for what the catenary
+lines cannot model (a current, a sloping seabed).
+
+The system is the coupled finite-element model of the dynamics (:func:`seacable.system.dynamics.build_system_fe`:
+truss elements, lumped weight and drag, a penalty seabed, the free bodies' weight, buoyancy, waterplane and
+quadratic damping in the current), and its equilibrium is the dynamics' pseudo-transient Newton
+(:func:`seacable.system.dynamics.static_system`). :func:`fe_equilibrium` returns a :class:`FEEquilibrium`
+with the attributes and methods of :class:`~seacable.system.statics.SystemEquilibrium` that the system
+analyses read, so that :mod:`seacable.system.run` reports both the same way.
+
+* End forces: the force a line exerts on its end node is its end element's contribution to that node: the
+  element's tension along its chord plus the half element lumped there (its weight in water, its drag in
+  the current, its seabed contact). The chord tension is the tension at the element's middle to second
+  order, and the half-element load carries it to the end, so the end force converges to the continuous
+  line's at second order in the element length (as the profile).
+  At an end held on the seabed (an anchor) with its element lying there, the seabed carries the half
+  element's weight: its component into the seabed is left out of the end force (the catenary's grounded
+  anchor takes no vertical load).
+* Grounded length: the unstretched length of the elements whose two nodes press on the seabed (penalty
+  force > 0): first order in the element length.
+* Stiffness: ``K = -dF/dq`` of the lines' force and moment on each free body (about its reference point,
+  global axes), by central differences of finite-element equilibria with the free bodies held (free
+  points and nodes equilibrated): translations by ``+-delta`` [m], rotations by ``+-delta_r`` [rad] about
+  the global axes (``R -> Rot(th) R``, the analytic statics' convention). The hydrostatic matrix is the
+  analytic one of the catenary statics (the bodies' own weight, buoyancy and waterplane).
+* Seabed friction: a static line does not slide, so the dynamics' regularised Coulomb friction (force
+  proportional to the sliding velocity below ``friction_velocity``) gives no static force: the
+  finite-element statics are frictionless (a warning says so when the seabed has friction).
+* Pinned bodies (only their rotations free) are not modelled by the finite-element system: refused.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+
+import numpy as np
+
+from ..errors import InputError, SeacableWarning
+from ..mooring import kernel as MK
+from ..mooring.network import FREE
+from ._stat_model import euler, rotation
+
+__all__ = ["FEEquilibrium", "fe_equilibrium", "needs_fe"]
+
+STIFFNESS_FD = "central differences of the finite-element statics"
+STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
+
+
+def needs_fe(env) -> str:
+    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed."""
+    cur = env.current
+    speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
+    why = []
+    if any(abs(v) > 0 for v in speeds):
+        why.append(f"a current of {max(abs(v) for v in speeds):g} m/s")
+    if env.seabed.slope != 0:
+        why.append(f"a seabed sloping at {env.seabed.slope:g} rad")
+    return " and ".join(why)
+
+
+def check_fe(system, env, where: str = "") -> None:
+    """Refuse what the finite-element statics cannot model (pinned bodies); warn about seabed friction."""
+    for name, body in system.bodies.items():
+        if body.pinned:
+            raise InputError(f"{where}bodies.{name}: a pinned body (only its rotations free) is not modelled by the "
+                             "finite-element statics, which the system statics use for a current or a sloping seabed. "
+                             "Suggested fix: drop 'pinned' (tie the body by a short stiff line instead), or set the "
+                             "current to 0 and the seabed slope to 0 for the catenary statics.")
+    if env.seabed.friction > 0 and env.depth is not None:
+        warnings.warn(f"{where}environment.seabed.friction = {env.seabed.friction:g}: the finite-element statics (used for "
+                      "a current or a sloping seabed) are frictionless: a line at rest does not slide, and the "
+                      "dynamics' regularised friction gives no static force. Suggested fix: none needed if friction "
+                      "does not hold the lines; else compare with the catenary statics at no current.",
+                      SeacableWarning, stacklevel=3)
+
+
+@dataclasses.dataclass(frozen=True)
+class FEEquilibrium:
+    """The static equilibrium of the finite-element system, read as a
+    :class:`~seacable.system.statics.SystemEquilibrium` (same attribute names and units)."""
+
+    system: object
+    environment: object
+    body_names: list
+    body_position: np.ndarray
+    free_body_names: list
+    point_names: list
+    point_position: np.ndarray
+    line_names: list
+    end_a_force: np.ndarray
+    end_b_force: np.ndarray
+    end_a_tension: np.ndarray
+    end_b_tension: np.ndarray
+    grounded_length: np.ndarray
+    stiffness: np.ndarray
+    hydrostatic: np.ndarray
+    iterations: int
+    residual: float
+    fe: object = dataclasses.field(repr=False)
+    state: object = dataclasses.field(repr=False)
+    indeterminate: list = dataclasses.field(default_factory=list)
+    pin_reaction: np.ndarray | None = None
+    surfaced: list = dataclasses.field(default_factory=list)
+    base_fe: object = dataclasses.field(default=None, repr=False)   # the system without ``external``
+    stiffness_method: str = STIFFNESS_FD
+    statics: str = "finite_element"
+
+    def body_stiffness(self, name: str, hydrostatics: bool = False) -> np.ndarray:
+        """6x6 stiffness of one free body, other free bodies held. [N/m, N/rad, N m/m, N m/rad]"""
+        k = self.free_body_names.index(name)
+        K = self.stiffness[6 * k:6 * k + 6, 6 * k:6 * k + 6].copy()
+        if hydrostatics:
+            K += self.hydrostatic[6 * k:6 * k + 6, 6 * k:6 * k + 6]
+        return K
+
+    def body_offset(self, name: str) -> np.ndarray:
+        """Position of a body minus the position given in the system. [m, rad]"""
+        i = self.body_names.index(name)
+        return self.body_position[i] - np.asarray(self.system.bodies[name].position, float)
+
+    def line_nodes(self, line_name: str):
+        """Unstretched arc length (k,) [m], node positions (k, 3) [m] and element tensions (k - 1,) [N]."""
+        fe = self.fe
+        il = fe.line_names.index(line_name)
+        nodes, els = fe.line_nodes[il], fe.line_elements[il]
+        s = np.r_[0.0, np.cumsum(fe.model.network.length[els])]
+        return s, self.state.position[nodes], self.state.tension[els]
+
+    def line_profile(self, line_name: str, n: int = 100):
+        """Shape and tension along a line from end A to end B, ``n`` points evenly spaced in unstretched
+        arc length, linear between the nodes; the tension at the nodes is the mean of the adjacent
+        elements', at the ends the end tension. [m], [N]"""
+        s, X, Te = self.line_nodes(line_name)
+        il = self.line_names.index(line_name)
+        Tn = np.r_[self.end_a_tension[il], 0.5 * (Te[1:] + Te[:-1]), self.end_b_tension[il]]
+        t = np.linspace(0.0, s[-1], int(n))
+        pos = np.column_stack([np.interp(t, s, X[:, j]) for j in range(3)])
+        return pos, np.interp(t, s, Tn)
+
+
+def _end_force(model, X, e: int, node: int) -> np.ndarray:
+    """Force of element ``e`` (its tension and the half element lumped at its end ``node``: weight in water,
+    drag, seabed contact) on ``node``, at rest. [N]"""
+    net = model.network
+    n = net.n_nodes
+    a, b = net.elements[e]
+    half = 0.5 * net.length[e]
+    weight = np.zeros(n)
+    weight[a] = weight[b] = net.weight_per_length[e] * half
+    bedc = np.zeros(n)
+    bedc[a] = bedc[b] = net.diameter[e] * half
+    zeros = np.zeros(n)
+    lo, hi, tx, ty = model.tension_strain
+    sl = slice(e, e + 1)
+    visco = model.visco[sl] if model.visco.shape[0] else model.visco
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(1)
+    MK.loads(X, np.zeros_like(X), 0.0, net.elements[sl], net.length[sl], net.axial_stiffness[sl],
+             net.axial_damping[sl], net.mass_per_length[sl], net.diameter[sl], net.cdn[sl], net.cdt[sl], net.can[sl],
+             net.cat[sl], weight, zeros, zeros, zeros, zeros, bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl], tx, ty,
+             np.zeros((0, 3), np.int64), np.zeros(0), visco, model.fidx, model.env, model.cur_depth, model.cur_speed,
+             False, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
+    f = F[node]
+    bed = _on_seabed(model, X[[a, b]])
+    if net.kind[node] != FREE and bed.all():
+        # an end held on the seabed with its element lying there: the seabed carries the half element's
+        # weight (a free node would sink into the penalty seabed until it does), not the end
+        sl = model.water.slope
+        nrm = np.array([-math.sin(sl), 0.0, math.cos(sl)])
+        other = b if node == a else a
+        chord = X[other] - X[node]
+        pull = tension[0] * chord / max(float(np.linalg.norm(chord)), 1e-300)
+        fn = float((f - pull) @ nrm)
+        if fn < 0.0:
+            f = f - fn * nrm
+    return f
+
+
+def _on_seabed(model, X) -> np.ndarray:
+    """Nodes pressing on the penalty seabed (penetration above minus the contact ramp). (n,) bool"""
+    w = model.water
+    if w.depth is None:
+        return np.zeros(X.shape[0], bool)
+    sl = w.slope
+    pen = -(-math.sin(sl) * X[:, 0] + math.cos(sl) * (X[:, 2] + w.depth))
+    return pen > -model.env[MK.E_BEDRAMP]
+
+
+def _with_loads(fe, external: dict | None):
+    """``fe`` with ``external`` ({free body: 6 loads}) added to its bodies' constant external force."""
+    if not external:
+        return fe
+    from . import _dyn_kernel as DK
+
+    bpar = fe.bpar.copy()
+    for name, load in external.items():
+        k = fe.free_bodies.index(name)
+        bpar[k, DK.B_FEXT:DK.B_FEXT + 6] += np.asarray(load, float)
+    return dataclasses.replace(fe, bpar=bpar)
+
+
+def _rotated(q, axis: int, th: float) -> np.ndarray:
+    """Pose ``q`` turned by ``th`` [rad] about global axis ``axis`` (R -> Rot(th) R)."""
+    out = np.array(q, float)
+    c, s = math.cos(th), math.sin(th)
+    i, j = (axis + 1) % 3, (axis + 2) % 3       # right-handed: about z turns x towards y
+    Rg = np.eye(3)
+    Rg[i, i], Rg[i, j], Rg[j, i], Rg[j, j] = c, -s, s, c
+    out[3:] = euler(Rg @ rotation(out[3:]))
+    return out
+
+
+def fd_stiffness(fe, state, tol: float, delta: float, delta_r: float) -> np.ndarray:
+    """Coupled mooring stiffness (6 nb, 6 nb) of the free bodies by central differences of equilibria with
+    the bodies held (free points and line nodes equilibrated). [N/m, N/rad, N m/m, N m/rad]"""
+    from .dynamics import body_line_force, static_system
+
+    q0 = state.body_position.reshape(-1, 6)
+    nb = q0.shape[0]
+    K = np.zeros((6 * nb, 6 * nb))
+    for b in range(nb):
+        for j in range(6):
+            cols = []
+            for sign in (1.0, -1.0):
+                q = q0.copy()
+                if j < 3:
+                    q[b, j] += sign * delta
+                else:
+                    q[b] = _rotated(q[b], j - 3, sign * delta_r)
+                st = static_system(fe, held=True, q=q, X=state.position, tol=tol)
+                cols.append(body_line_force(fe, st.position, q).ravel())
+            K[:, 6 * b + j] = -(cols[0] - cols[1]) / (2.0 * (delta if j < 3 else delta_r))
+    return K
+
+
+def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e-8, max_iter: int = 1000,
+                   initial: FEEquilibrium | None = None, n_elements: int | None = None,
+                   stiffness: bool = True) -> FEEquilibrium:
+    """Static equilibrium of ``system`` in ``env`` with finite-element lines (a current, a sloping seabed).
+
+    Parameters
+    ----------
+    system : MooringSystem
+    env : Environment
+    external : dict, optional
+        ``{free body: (Fx, Fy, Fz, Mx, My, Mz)}`` added to the bodies' external force. [N, N m]
+    tol : float
+        Force tolerance of the pseudo-transient Newton, relative. [-]
+    max_iter : int
+        Iterations of one equilibrium.
+    initial : FEEquilibrium, optional
+        A previous equilibrium of the same system to start from (sweeps).
+    n_elements : int, optional
+        Elements of every line (default: each line's ``n_elements``).
+    stiffness : bool
+        Compute the stiffness (12 more equilibria per free body).
+
+    Returns
+    -------
+    FEEquilibrium
+    """
+    from .dynamics import build_system_fe, static_system
+
+    check_fe(system, env)
+    if initial is not None and n_elements is None:
+        fe0 = initial.base_fe         # without the loads ``initial`` was solved under
+    else:
+        fe0 = build_system_fe(system, env, None, n_elements=n_elements)
+    fe = _with_loads(fe0, external)
+    if initial is not None:
+        st = static_system(fe, q=initial.state.body_position, X=initial.state.position, tol=tol, max_iter=max_iter)
+    else:
+        st = static_system(fe, tol=tol, max_iter=max_iter)
+    model = fe.model
+    X = st.position
+    nl = len(fe.line_names)
+    fa, fb, grounded = np.zeros((nl, 3)), np.zeros((nl, 3)), np.zeros(nl)
+    bed = _on_seabed(model, X)
+    net = model.network
+    for il in range(nl):
+        nodes, els = fe.line_nodes[il], fe.line_elements[il]
+        fa[il] = _end_force(model, X, int(els[0]), int(nodes[0]))
+        fb[il] = _end_force(model, X, int(els[-1]), int(nodes[-1]))
+        e2 = net.elements[els]
+        grounded[il] = float(net.length[els][bed[e2[:, 0]] & bed[e2[:, 1]]].sum())
+    body_names = list(system.bodies)
+    free = list(fe.free_bodies)
+    bpos = np.array([np.asarray(system.bodies[n].position, float) for n in body_names]).reshape(-1, 6)
+    q = st.body_position.reshape(-1, 6)
+    for k, name in enumerate(free):
+        bpos[body_names.index(name)] = q[k]
+    point_names = list(system.points)
+    ppos = X[[fe.point_node[n] for n in point_names]] if point_names else np.zeros((0, 3))
+    scale = max(1.0, float(np.abs(fa).max(initial=0.0)), float(np.abs(fb).max(initial=0.0)))
+    nbf = len(free)
+    K = np.zeros((6 * nbf, 6 * nbf))
+    if stiffness and nbf:
+        span = max([float(np.ptp(X[:, k])) for k in range(3)] + [1.0])
+        K = fd_stiffness(fe, st, tol=min(tol, 1e-10), delta=1e-4 * span, delta_r=1e-4)
+    return FEEquilibrium(
+        system=system, environment=env, body_names=body_names, body_position=bpos, free_body_names=free,
+        point_names=point_names, point_position=ppos, line_names=list(fe.line_names), end_a_force=fa,
+        end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1), end_b_tension=np.linalg.norm(fb, axis=1),
+        grounded_length=grounded, stiffness=K, hydrostatic=hydrostatic(system, env, free, q), iterations=st.iterations,
+        residual=st.residual / scale, fe=fe, state=st, base_fe=fe0)
+
+
+def hydrostatic(system, env, free: list, q: np.ndarray) -> np.ndarray:
+    """Block-diagonal hydrostatic restoring (6 nb, 6 nb) of the free bodies at poses ``q`` (nb, 6): the
+    analytic one of the catenary statics (weight, buoyancy, waterplane, or the user's matrix)."""
+    from types import SimpleNamespace
+
+    from ._stat_eval import body_own
+
+    nb = len(free)
+    if not nb:
+        return np.zeros((0, 0))
+    names = list(system.bodies)
+    asm = SimpleNamespace(free_bodies=[names.index(n) for n in free], body_names=names, rho=env.water_density,
+                          g=env.gravity)
+    X = np.asarray(q, float).reshape(nb, 6)[:, :3].copy()
+    R = np.array([rotation(p[3:]) for p in np.asarray(q, float).reshape(nb, 6)])
+    _, own_jac = body_own(asm, system, X, R)
+    H = np.zeros((6 * nb, 6 * nb))
+    for k in range(nb):
+        H[6 * k:6 * k + 6, 6 * k:6 * k + 6] = -own_jac[k]
+    return H
