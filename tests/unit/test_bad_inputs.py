@@ -392,8 +392,6 @@ def _system_corpus() -> list[Bad]:
             {"case": _set(spread, ("analysis", "damaged_lines"), ["line1", "line2", "line3"])}),
         Bad("system-unstable-hydrostatics", ["validate", "{case}"], ["bodies.buoy", "roll", "capsizes"],
             {"case": _set(spread, buoy + ("center_of_gravity",), [0.0, 0.0, 5.0])}),
-        Bad("system-current", ["run", "{case}", "--no-plots"], ["environment.current"],
-            {"case": _set(spread, ("environment", "current"), {"speed": 1.0})}),
         Bad("system-no-equilibrium", ["run", "{case}", "--no-plots"], ["no equilibrium", "residual", "load_steps"],
             {"case": _set(_set(_set(spread, buoy + ("waterplane_area",), 0.0), buoy + ("waterplane_moments",),
                                     [0.0, 0.0]), buoy + ("external_force",), [5.0e5, 0.0, 0.0, 0.0, 0.0, 1.0e9])}),

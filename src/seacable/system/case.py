@@ -61,6 +61,11 @@ class _Solve(Model):
     max_strain: quantity("-", gt=0, le=100) = Field(
         1.0, description="Largest strain T/EA a line may take; a line that would need more cannot reach its "
                          "ends (strains above 10 % are warned). [-]")
+    statics: Literal["auto", "catenary", "finite_element"] = Field(
+        "auto", description="Line statics: exact elastic catenaries with analytic stiffness ('catenary'), or the "
+                            "finite-element lines with the stiffness by central differences ('finite_element'); "
+                            "'auto' takes the catenaries unless a current or a sloping seabed needs the "
+                            "finite elements.")
 
     @model_validator(mode="after")
     def _damaged(self):
