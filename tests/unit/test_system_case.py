@@ -412,6 +412,51 @@ def test_a_current_is_validated_and_run_with_the_finite_element_statics(tmp_path
     assert float(ds.body_x[0, 0]) > float(still.body_x[0, 0])
 
 
+def test_the_case_file_chooses_the_statics(tmp_path, capsys):
+    """``analysis.statics`` in the file: 'finite_element' in still water gives the FE statics, whose fairlead
+    tensions agree with the catenary's to the resolution of the touchdown by the nodes: the grounded length
+    is known to an element, and half an element of suspended chain more or less moves the fairlead tension
+    by at most w le / 2 (le = 650 m / 20 elements, w the chain's submerged weight: 25 kN, the measured gap
+    is 2.6 kN; test_system_statics_fe shows the order of convergence); 'catenary' with a current is refused
+    at validate, naming the current and the fix."""
+    data = _data()
+    data["analysis"] = {"type": "system_static", "statics": "finite_element"}
+    fe = sc.run(sc.load_case(_write(tmp_path, data)))
+    assert fe.attrs["statics"] == "finite_element"
+    data["analysis"]["statics"] = "catenary"
+    cat = sc.run(sc.load_case(_write(tmp_path, data)))
+    assert cat.attrs["statics"] == "catenary"
+    chain = sc.load_case(_write(tmp_path, data)).line_types["chain"]
+    w = (chain.mass_per_length - 1025.0 * np.pi / 4 * chain.diameter ** 2) * 9.80665
+    np.testing.assert_allclose(fe.fairlead_tension.values, cat.fairlead_tension.values, rtol=0,
+                               atol=w * (650.0 / 20) / 2)
+    assert not np.allclose(fe.fairlead_tension.values, cat.fairlead_tension.values, rtol=1e-6)  # two solvers
+    data["environment"]["current"] = {"speed": 1.0}
+    path = _write(tmp_path, data)
+    assert main(["validate", path]) == 2
+    err = capsys.readouterr().err
+    assert "current" in err and "Suggested fix" in err and "Traceback" not in err
+
+
+def test_points_below_a_sloping_seabed_are_refused_where_the_plane_is(tmp_path, capsys):
+    """On a seabed rising towards +x by 0.05 rad the bed under x is at -150 + tan(0.05) x: anchor1 at
+    x = -606 m may sit 30.3 m below -150 m (it was refused against the flat -150 m), and anchor2 at
+    x = 303 m, 15.2 m under its bed, is refused with the bed's height in the message."""
+    data = _data()
+    data["environment"]["seabed"] = {"slope": 0.05}
+    bed1 = -150.0 + math.tan(0.05) * -606.0
+    data["points"]["anchor1"]["position"] = [-606.0, 0.0, bed1]
+    data["points"]["anchor2"]["position"] = [303.0, 524.811, -150.0 + math.tan(0.05) * 303.0]
+    data["points"]["anchor3"]["position"] = [303.0, -524.811, -150.0 + math.tan(0.05) * 303.0]
+    data["analysis"] = {"type": "system_static"}
+    assert main(["validate", _write(tmp_path, data)]) == 0
+    data["points"]["anchor2"]["position"] = [303.0, 524.811, -150.0]
+    assert main(["validate", _write(tmp_path, data)]) == 2
+    err = capsys.readouterr().err
+    assert "points.anchor2.position: z = -150 m is below the seabed at z = -134.8" in err
+    assert "seabed.slope 0.05 rad at x = 303 m" in err
+
+
 def test_no_equilibrium_under_a_load_the_lines_cannot_hold(tmp_path, capsys):
     """A 1e9 N m yaw moment on a buoy with no waterplane: the solver gives up with its residual, the
     body's last offset, and the case's fix (a load ramp)."""

@@ -244,11 +244,15 @@ class SystemCase(Model):
         except InputError as err:
             raise ValueError(str(err).removeprefix("MooringSystem").lstrip(".: ")) from None
         depth = self.environment.depth
+        slope = self.environment.seabed.slope
         for name, p in system.points.items():
-            if p.kind != "body" and p.position[2] < -depth * (1 + 1e-9) - 1e-9:
+            bed = -depth + math.tan(slope) * p.position[0]  # the plane seabed, rising towards +X by its slope
+            if p.kind != "body" and p.position[2] < bed - 1e-9 * (depth + abs(bed)) - 1e-9:
+                where = f"z = {bed:g} m" + (f" (environment.depth {depth:g} m" + (
+                    f", seabed.slope {slope:g} rad at x = {p.position[0]:g} m)" if slope else ")"))
                 raise ValueError(f"points.{name}.position: z = {p.position[2]:g} m is below the seabed at "
-                                 f"z = {-depth:g} m (environment.depth {depth:g} m). Suggested fix: put the point "
-                                 f"on the seabed (z = {-depth:g} m) or above it.")
+                                 f"{where}. Suggested fix: put the point on the seabed (z = {bed:g} m) or "
+                                 "above it.")
         for name, line in system.lines.items():
             missing = [i for i, seg in enumerate(line.line.segments) if seg.line_type.axial_stiffness is None]
             if missing:
