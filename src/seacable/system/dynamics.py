@@ -484,7 +484,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         bpar[k, DK.B_HASK] = 1.0 if b.hydrostatic_stiffness is not None else 0.0
         bpar[k, DK.B_CG:DK.B_CG + 3] = b.center_of_gravity
         bpar[k, DK.B_CB:DK.B_CB + 3] = b.center_of_buoyancy
-        bpar[k, DK.B_INERT:DK.B_INERT + 3] = b.inertia
+        bpar[k, DK.B_INERT:DK.B_INERT + 3] = b.dynamic_inertia()  # a point mass's free spin: its own inertia
         bpar[k, DK.B_Q0:DK.B_Q0 + 6] = b.position
         bpar[k, DK.B_FEXT:DK.B_FEXT + 6] = b.external_force
         bkhs[k], badd[k] = b.matrix("hydrostatic_stiffness"), b.matrix("added_mass")
@@ -737,6 +737,32 @@ def _system_of(case) -> MooringSystem:
                          f"{type(case).__name__}. Suggested fix: give 'points', 'bodies' and 'lines'.") from None
 
 
+def _moment_sources(system: MooringSystem, name: str, analysis: SystemDynamicAnalysis) -> list[str]:
+    """What could turn body ``name`` about its centre of gravity (for a body with no inertia about it): lines
+    and loaded points off the centre of gravity, buoyancy off it, hydrostatics, external moments (or forces at
+    a reference point off it), damping and added mass that act on the rotations or at such a reference point."""
+    b = system.bodies[name]
+    cg = np.asarray(b.center_of_gravity, float)
+    tol = 1e-9 * (1.0 + float(np.linalg.norm(cg)))
+    off = float(np.linalg.norm(cg)) > tol
+    ends = {e for line in system.lines.values() for e in (line.end_a, line.end_b)}
+    out = [f"point {p}" for p, pt in system.points.items()
+           if pt.kind == "body" and pt.body == name and float(np.linalg.norm(np.asarray(pt.position) - cg)) > tol
+           and (p in ends or pt.mass or pt.volume or pt.drag_area or any(pt.external_force))]
+    if b.volume > 0 and float(np.linalg.norm(np.asarray(b.center_of_buoyancy) - cg)) > tol:
+        out.append("its buoyancy")
+    if b.waterplane_area > 0 or any(b.waterplane_moments) or b.hydrostatic_stiffness is not None:
+        out.append("its hydrostatics")
+    force = np.asarray(b.external_force, float)
+    if force[3:].any() or (off and force[:3].any()) or name in analysis.external_forces:
+        out.append("its external force")
+    for key in ("linear_damping", "quadratic_damping"):
+        m = b.matrix(key)
+        if m[3:].any() or m[:, 3:].any() or (off and m.any()):
+            out.append(f"its {key}")
+    return out
+
+
 @dataclass
 class SystemDynamicSetup:
     """What the time loop of ``system_dynamic`` needs (see :func:`prepare_system_dynamic`)."""
@@ -776,7 +802,7 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
             raise InputError(f"bodies.{name}.mass: a free body needs a mass > 0 kg for the dynamics, got "
                              f"{body.mass:g} kg. Suggested fix: give its mass in air.")
         if body.kind == "free":
-            body.check_accelerable(name)  # a singular mass matrix: one clear message, not a LinAlgError
+            body.check_accelerable(name, _moment_sources(system, name, a))  # not a LinAlgError
     env = case.environment
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     if free and env.waves is not None:

@@ -18,6 +18,7 @@ Six-component forces are (Fx, Fy, Fz, Mx, My, Mz) in global axes about the refer
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
@@ -180,13 +181,38 @@ class Body(Model):
         rigid = np.block([[m * np.eye(3), -m * S], [m * S, np.diag(self.inertia) - m * S @ S]])
         return rigid + self.matrix("added_mass")
 
-    def check_accelerable(self, name: str) -> None:
+    def _spin_free(self) -> np.ndarray:
+        """Which of the principal inertias about the centre of gravity are zero (a point mass: all three; masses
+        on one axis: the inertia about that axis), when the body has mass and no added mass."""
+        inertia = np.asarray(self.inertia, float)
+        if self.mass <= 0 or self.added_mass is not None:
+            return np.zeros(3, bool)
+        c = np.asarray(self.center_of_gravity, float)
+        return inertia <= 1e-12 * self.mass * max(float(c @ c), 1.0)
+
+    def dynamic_inertia(self) -> tuple[float, float, float]:
+        """``inertia`` as the dynamics use it: a principal inertia about the centre of gravity that is zero (a
+        point mass, or masses on one axis) is given ``1e-3 m max(|r_cg|, 1 m)^2``. The dynamics accept such a
+        body only when nothing turns it about its centre of gravity (:meth:`check_accelerable`); then its
+        angular velocity about that axis stays as it started, whatever the inertia: Euler's equations give
+        ``I dw/dt = 0`` (the gyroscopic moment about an axis of zero inertia is zero too, since a rigid body
+        with ``Ixx = 0`` has ``Iyy = Izz``). [kg m^2]"""
+        c = np.asarray(self.center_of_gravity, float)
+        eps = 1e-3 * self.mass * max(float(c @ c), 1.0)
+        return tuple(float(i + eps * z) for i, z in zip(self.inertia, self._spin_free(), strict=True))
+
+    def check_accelerable(self, name: str, moment_sources: Sequence[str] = ()) -> None:
         """Refuse a free body whose mass matrix is singular in a free direction (the dynamics solve with it).
+
+        A body with mass whose inertia about its centre of gravity is zero about an axis (a point mass held
+        off its reference point, as MoorDyn's orbitalBody) is accepted when ``moment_sources`` (what could
+        turn it about its centre of gravity: lines or loaded points off it, buoyancy, damping, external moments)
+        is empty: its spin about the centre of gravity is then free and constant (:meth:`dynamic_inertia`).
 
         Raises
         ------
         InputError
-            Naming the body and the direction nothing gives inertia to.
+            Naming the body, the direction nothing gives inertia to and what would turn it.
         """
         from ..errors import InputError
 
@@ -196,14 +222,19 @@ class Body(Model):
         values, vectors = np.linalg.eigh(block)
         if values[0] > 1e-12 * max(values[-1], 1e-300):
             return
+        spin = self._spin_free().any() and not self.pinned
+        if spin and not moment_sources:
+            return
         v = vectors[:, 0]
         what = "rotation about" if self.pinned else "motion along (x, y, z, roll, pitch, yaw)"
+        turn = (f"; {', '.join(moment_sources)} would turn it about its centre of gravity, which nothing resists"
+                if spin else "")
         raise InputError(
             f"bodies.{name}: its mass matrix about the reference point (mass {self.mass:g} kg, inertia "
             f"{tuple(self.inertia)} kg m^2 about the centre of gravity, added mass) gives no inertia to the "
             f"{what} ({', '.join(f'{x:.3g}' for x in v)}), so the dynamics cannot accelerate it (a point mass with "
-            "no inertia of its own about an axis through it). Suggested fix: give the body its moments of inertia "
-            "(inertia: Ixx, Iyy, Izz > 0) or an added-mass matrix.")
+            f"no inertia of its own about an axis through it){turn}. Suggested fix: give the body its moments of "
+            "inertia (inertia: Ixx, Iyy, Izz > 0) or an added-mass matrix.")
 
 
 class SystemLine(Model):

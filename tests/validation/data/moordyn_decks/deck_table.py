@@ -54,11 +54,10 @@ NOTES = {  # what the table cannot see: the test that checks the deck instead, o
                                                    "(test_a_pinned_buoyant_rod_without_lines_floats_upright)",
     "MoorDyn/tests/Mooring/rod_tests/AddedMass.txt": "no lines, a rising rod: z(t) with its added mass "
                                                      "(test_a_rising_rod_accelerates_with_its_added_mass)",
-    "MoorDyn/tests/Mooring/body_tests/orbitalBody.txt": "g = 0, free bodies with no line: no static equilibrium; the "
-                                                        "dynamics refuse body1, a 40 kg point mass 10 m from its "
-                                                        "reference point with no inertia of its own (nothing resists "
-                                                        "a rotation about the point; MoorDyn's test drives its "
-                                                        "kinematics)",
+    "MoorDyn/tests/Mooring/body_tests/orbitalBody.txt": "g = 0, free bodies with no line: no static equilibrium; in "
+                                                        "time body1, a 40 kg point mass 10 m from its reference "
+                                                        "point, spins freely (test_a_point_mass_body_orbits_its_"
+                                                        "centre_of_gravity)",
     "MoorDyn/tests/Mooring/rotations/nwu.txt": "g = 0, a coupled body alone: its three points where its pose puts "
                                                "them",
     "MoorDyn/tests/Mooring/wave_surface/wave_surface.txt": "lines crossing the surface are split there, dry weight "
