@@ -219,45 +219,13 @@ def test_moordyn_simply_supported_beam_side_by_side(tmp_path):
     assert sag[9] / continuous - 1 == pytest.approx(-0.004, abs=0.001)
 
 
-def _coupled_and_mooring(line_type, *, n=20, duration=10.0, dt=0.1):
-    """One 100 m line from a fixed anchor to a coupled point moved harmonically (0.5 m, 0.25 m at 10 s),
-    run by the coupled body-line kernel (system_dynamic) and by the mooring kernel; element tensions
-    (nt, e) of both."""
-    from seacable.mooring.motion import HarmonicMotion, bind
-    from seacable.mooring.network import network_from_line
-    from seacable.system.dynamics import (
-        SystemDynamicAnalysis,
-        build_system_fe,
-        simulate_system,
-        static_system,
-    )
-    from seacable.system.model import MooringSystem, SystemLine, SystemPoint
-
-    line = sc.Line.single(line_type, 100.0)
-    a, b = (0.0, 0.0, -60.0), (80.0, 0.0, -10.0)
-    motion = HarmonicMotion(amplitude=(0.5, 0.0, 0.25), period=10.0)
-    system = MooringSystem(points={"anchor": SystemPoint(kind="fixed", position=a),
-                                   "fair": SystemPoint(kind="coupled", position=b)}, bodies={},
-                           lines={"l": SystemLine(line=line, end_a="anchor", end_b="fair", n_elements=n)})
-    analysis = SystemDynamicAnalysis(duration=duration, time_step=dt, output_interval=0.5,
-                                     point_motions={"fair": motion})
-    fe = build_system_fe(system, sc.Environment(water_density=1025.0, gravity=9.81, depth=100.0), analysis)
-    coupled = simulate_system(fe, static_system(fe), duration, dt, 0.5, analysis=analysis)
-    net = network_from_line(line, a, b, water_density=1025.0, gravity=9.81, n_elements=n)
-    model = MooringModel(net, Water(density=1025.0, gravity=9.81, depth=100.0))
-    start = static_equilibrium(model, initial=fe.model.network.position[fe.model.network.line_nodes[0]])
-    alone = simulate(model, bind(motion, net.channel_positions(start.position), duration), duration, dt, 0.5,
-                     initial=start.position)
-    return coupled.tension, alone.tension
-
-
-def test_coupled_system_kernel_carries_the_bending():
+def test_coupled_system_kernel_carries_the_bending(two_kernels):
     """The coupled body-line kernel (system_dynamic) and the mooring kernel run the same line with EI =
     2e5 N m^2 under the same fairlead motion: the same tensions to 1e-6 of the largest (observed 2e-8,
     the two Newton solves' tolerance), and EI raises the tension range by 16 % over the truss's (so the
     agreement is not the truss's)."""
-    bent = _coupled_and_mooring(sc.LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e7,
+    bent = two_kernels(sc.LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e7,
                                             bending_stiffness=2e5))
-    truss = _coupled_and_mooring(sc.LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e7))
+    truss = two_kernels(sc.LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e7))
     assert np.max(np.abs(bent[0] - bent[1])) < 1e-6 * np.max(bent[1])
     assert np.ptp(bent[1][:, -1]) > 1.1 * np.ptp(truss[1][:, -1])

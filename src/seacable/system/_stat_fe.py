@@ -40,7 +40,7 @@ import numpy as np
 from ..errors import InputError, SeacableWarning
 from ..mooring import kernel as MK
 from ..mooring.network import FREE
-from ._stat_model import euler, rotation
+from ._stat_model import EquilibriumFields, euler, rotation
 
 __all__ = ["FEEquilibrium", "fe_equilibrium", "needs_fe"]
 
@@ -77,27 +77,10 @@ def check_fe(system, env, where: str = "") -> None:
 
 
 @dataclasses.dataclass(frozen=True)
-class FEEquilibrium:
+class FEEquilibrium(EquilibriumFields):
     """The static equilibrium of the finite-element system, read as a
     :class:`~seacable.system.statics.SystemEquilibrium` (same attribute names and units)."""
 
-    system: object
-    environment: object
-    body_names: list
-    body_position: np.ndarray
-    free_body_names: list
-    point_names: list
-    point_position: np.ndarray
-    line_names: list
-    end_a_force: np.ndarray
-    end_b_force: np.ndarray
-    end_a_tension: np.ndarray
-    end_b_tension: np.ndarray
-    grounded_length: np.ndarray
-    stiffness: np.ndarray
-    hydrostatic: np.ndarray
-    iterations: int
-    residual: float
     fe: object = dataclasses.field(repr=False)
     state: object = dataclasses.field(repr=False)
     indeterminate: list = dataclasses.field(default_factory=list)

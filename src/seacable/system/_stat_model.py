@@ -51,6 +51,31 @@ def euler_rate_map(angles) -> np.ndarray:
     return np.array([[cy * cp, -sy, 0.0], [sy * cp, cy, 0.0], [-sp, 0.0, 1.0]])
 
 
+@dataclass(frozen=True)
+class EquilibriumFields:
+    """What every static equilibrium of a system holds, whichever statics found it (the catenary's
+    :class:`~seacable.system.statics.SystemEquilibrium`, the finite elements'
+    :class:`~seacable.system._stat_fe.FEEquilibrium`); the attributes are documented there."""
+
+    system: MooringSystem
+    environment: Environment
+    body_names: list
+    body_position: np.ndarray
+    free_body_names: list
+    point_names: list
+    point_position: np.ndarray
+    line_names: list
+    end_a_force: np.ndarray
+    end_b_force: np.ndarray
+    end_a_tension: np.ndarray
+    end_b_tension: np.ndarray
+    grounded_length: np.ndarray
+    stiffness: np.ndarray
+    hydrostatic: np.ndarray
+    iterations: int
+    residual: float
+
+
 @dataclass
 class Assembly:
     """Flattened system (see the module docstring); arrays indexed by node or sub-line."""

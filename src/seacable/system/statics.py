@@ -104,7 +104,7 @@ from ..statics.catenary import CatenaryProfile, CatenaryRegime, CatenaryResult
 from . import _stat_kernel as _kern
 from ._stat_cat import sub_profile, table_strain
 from ._stat_eval import Evaluation, State, body_data, evaluate, node_positions
-from ._stat_model import BODY, Assembly, assemble, euler, rotation
+from ._stat_model import BODY, Assembly, EquilibriumFields, assemble, euler, rotation
 from .model import MooringSystem
 
 __all__ = ["SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"]
@@ -113,7 +113,7 @@ _DOF = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 
 
 @dataclass(frozen=True)
-class SystemEquilibrium:
+class SystemEquilibrium(EquilibriumFields):
     """The static equilibrium of a mooring system.
 
     Attributes
@@ -158,23 +158,6 @@ class SystemEquilibrium:
         buoyancy lifts them, their dry weight alone would not.
     """
 
-    system: MooringSystem
-    environment: Environment
-    body_names: list
-    body_position: np.ndarray
-    free_body_names: list
-    point_names: list
-    point_position: np.ndarray
-    line_names: list
-    end_a_force: np.ndarray
-    end_b_force: np.ndarray
-    end_a_tension: np.ndarray
-    end_b_tension: np.ndarray
-    grounded_length: np.ndarray
-    stiffness: np.ndarray
-    hydrostatic: np.ndarray
-    iterations: int
-    residual: float
     _asm: Assembly = field(repr=False)
     _cat: CatenaryResult = field(repr=False)
     _anchor_is_a: np.ndarray = field(repr=False)
