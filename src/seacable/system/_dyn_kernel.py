@@ -29,6 +29,15 @@ vectors ``dphi`` (moments as they are, the tied nodes move by ``-skew(R p_j) dph
 p_j)]``) and mapped to the angles by ``dtheta = E^-1 dphi`` (:func:`_angle_increment`, regularised at pitch
 +-90 deg, where ``E`` is singular: a horizontal MoorDyn rod starts there); the convergence check is on the
 angles' generalised forces ``E^T M``. The Newton matrix leaves out the change of ``E`` with the angles.
+
+Charts: each body's rotation is ``R = R0 R(angles)`` with a base rotation ``R0`` (``frame``, F_SIZE numbers per
+body: a flag, ``R0``, and the continuous global angles of ``R`` for the output). ``R0 = I`` until the body's
+|pitch| passes ``CHART_LIMIT`` (1 rad) after a converged step; it is then re-charted (:func:`rechart`): ``R0
+<- R0 R(angles)``, angles <- 0, rates and accelerations re-expressed with the angular velocity and
+acceleration unchanged. With ``R0``, ``w = R0 E angles'``, ``dphi = R0 E dangles``: every use of ``E`` is
+``R0 E`` and every rotation ``R0 R(angles)`` (:func:`body_rotation`). So the angles never come near pitch
++-90 deg except within one step, and a body that never re-charts runs the same floating-point operations
+as without charts.
 """
 
 from __future__ import annotations

@@ -31,8 +31,26 @@ velocity is ``w = E(angles) d(angles)/dt`` (``w = roll' Rz Ry e_x + pitch' Rz e_
 rigid body's rotational inertia acts on ``dw/dt = E angles'' + E' angles'``, with its gyroscopic moment
 ``w x (I w)`` and the centripetal force ``m w x (w x c)`` of an offset centre of gravity (those of the added
 mass in a turning frame are left out); the moments enter as the angles' generalised forces ``E^T M``.
-Pitch at +-90 deg is singular. ``body_velocity`` reports the reference point's velocity and the angles'
-rates.
+``E`` is singular at pitch +-90 deg, so each body carries a chart: ``R = R0 R(angles)`` with a base
+rotation ``R0`` (the identity to start with). After a converged step (and at the start) a body whose
+|pitch| exceeds 1 rad is re-charted: ``R0 <- R0 R(angles)``, angles <- 0, and the rates re-expressed so
+that the angular velocity and acceleration are unchanged (``angles' = R0^T w``, ``angles'' = R0^T alpha -
+E'(0) angles'``, :func:`seacable.system._dyn_kernel.rechart`); everything that uses the rotation (points,
+centres of gravity and buoyancy, inertia, added mass, damping, waterplane) uses ``R0 R(angles)``, ``E``
+becomes ``R0 E``. A body that never passes 1 rad of pitch keeps ``R0 = I`` and its results are those
+without charts, bit for bit. The output ``body_position`` angles are the global (roll, pitch, yaw) of
+``R = Rz(yaw) Ry(pitch) Rx(roll)`` followed continuously from step to step (of their two Euler branches,
+moved by whole turns, the one nearest the last; pitch then leaves [-pi/2, pi/2] when the body turns
+over): continuous except at pitch +-90 deg itself, where only roll -+ yaw is defined. ``body_velocity``
+reports the reference point's velocity and the rates of those angles (``E^-1 w``, regularised at pitch
++-90 deg as the Newton step is), ``body_angular_velocity`` the angular velocity ``w`` (global axes),
+which stays regular there.
+
+The statics (and the static start) leave out of each Newton step the turn about a body's free spin
+axis, when it has one: the line through its reference point on which all its line points and its
+centres of gravity and buoyancy lie (a MoorDyn rod), turning about which changes none of its loads.
+Without it the Newton matrix's unsymmetric turning terms give that stiffness-free turn steps of
+hundreds of radians, and the step limit (0.1 rad) then stalls the whole solve.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
 reaches a given value; the end's node (a node of its own from the start, tied to its point until
@@ -74,6 +92,7 @@ from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positio
 from ..mooring.solver import MooringModel, Water, advance_interval
 from ..results import make_dataset, var
 from . import _dyn_kernel as DK
+from ._stat_model import euler_rate_map
 from .model import MooringSystem
 
 __all__ = [
@@ -961,11 +980,14 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     bodies = list(sysm.bodies)
     bp = np.zeros((nt, len(bodies), 6))
     bv = np.zeros((nt, len(bodies), 6))
+    bw = np.zeros((nt, len(bodies), 3))
     for k, name in enumerate(bodies):
         body = sysm.bodies[name]
         if name in fe.free_bodies:
             j = fe.free_bodies.index(name)
             bp[:, k], bv[:, k] = run.body_position[:, j], run.body_velocity[:, j]
+            if run.body_angular_velocity is not None:
+                bw[:, k] = run.body_angular_velocity[:, j]
         else:
             bp[:, k] = body.position
             a = getattr(case, "analysis", None)
@@ -974,6 +996,8 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 d, dd, _ = mot.dofs(run.time)
                 bp[:, k] += d
                 bv[:, k] = dd
+                for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
+                    bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
     coords = {"time": var("time", run.time, "s", "time"),
               "line": var("line", list(fe.line_names), "1", "line"),
               "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),
@@ -988,6 +1012,9 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                                     "body reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]")
         data["body_velocity"] = var(("time", "body", "dof"), bv, "m/s or rad/s",
                                     "body velocity (x, y, z) [m/s] and rotation rates [rad/s]")
+        coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
+        data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
+                                            "body angular velocity, global axes")
     title = getattr(case, "name", None) or "system_dynamic"
     ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
                       settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
