@@ -247,6 +247,36 @@ def angular_map(q, qd, E, ed, fr):
 
 
 @njit(cache=True)
+def rate_tangent(q, qd, fr, P):
+    """P <- ``d(E' qd[3:]) / d qd[3:] E^-1`` in the chart ``fr`` (``R0 G E^-1 R0^T``, ``G`` the derivative of
+    :func:`angular_map`'s ``ed`` by the rates): the change of the angular acceleration's velocity part per
+    small rotation rate, so that a rotation increment ``dphi`` changes the angular acceleration by ``c0 dphi
+    + c1 P dphi`` (Newmark's ``c1 = gamma / (beta dt)``). Its size is ``|w|``; times the body's large inertia it
+    outweighs ``c0`` times a rod's small spin inertia, and Newton converges only linearly without it."""
+    sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
+    dr, dp, dy = qd[3], qd[4], qd[5]
+    G = np.empty((3, 3))
+    G[0, 0], G[1, 0], G[2, 0] = -sy * cp * dy - cy * sp * dp, cy * cp * dy - sy * sp * dp, -cp * dp
+    G[0, 1], G[1, 1], G[2, 1] = -dr * cy * sp - cy * dy, -dr * sy * sp - sy * dy, -dr * cp
+    G[0, 2], G[1, 2], G[2, 2] = -dr * sy * cp - cy * dp, dr * cy * cp - sy * dp, 0.0
+    # E^-1 = B^-1 Rz^T, B = [[cp, 0, 0], [0, 1, 0], [-sp, 0, 1]]
+    ic = cp / (cp * cp + 1e-12)
+    Ei = np.empty((3, 3))
+    Ei[0, 0], Ei[0, 1], Ei[0, 2] = ic * cy, ic * sy, 0.0
+    Ei[1, 0], Ei[1, 1], Ei[1, 2] = -sy, cy, 0.0
+    Ei[2, 0], Ei[2, 1], Ei[2, 2] = sp * ic * cy, sp * ic * sy, 1.0
+    for r in range(3):
+        for c in range(3):
+            P[r, c] = G[r, 0] * Ei[0, c] + G[r, 1] * Ei[1, c] + G[r, 2] * Ei[2, c]
+    if fr[F_ON] != 0.0:
+        _premul(fr, P)  # R0 P
+        for r in range(3):  # (R0 P) R0^T
+            a0, a1, a2 = P[r, 0], P[r, 1], P[r, 2]
+            for c in range(3):
+                P[r, c] = a0 * fr[F_R0 + 3 * c] + a1 * fr[F_R0 + 3 * c + 1] + a2 * fr[F_R0 + 3 * c + 2]
+
+
+@njit(cache=True)
 def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6, fr):
     """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
     body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
@@ -708,6 +738,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
+        if dynamic and frame[b, F_ON] != 0.0:
+            # a re-charted body (one that turns a lot): the velocity part of its angular acceleration in the
+            # Newton matrix too (left out for the others, whose results stay those without charts)
+            P = S2
+            rate_tangent(q[b], qd[b], frame[b], P)
+            for k in range(6):
+                for c in range(3):
+                    Jq[6 * b + k, 6 * b + 3 + c] += cc * (M6[k, 3] * P[0, c] + M6[k, 4] * P[1, c] + M6[k, 5] * P[2, c])
         if check:
             scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
     Rr[:] = Rq
@@ -993,7 +1031,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 frame[b, F_GLOB:F_GLOB + 3] = gq
             else:
                 frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
-            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT)
+            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT if frame[b, F_ON] == 0.0 else 0.0)
         for j in range(con_node.size):
             if con_active[j] == 0:
                 continue
