@@ -34,7 +34,9 @@ Charts: each body's rotation is ``R = R0 R(angles)`` with a base rotation ``R0``
 body: a flag, ``R0``, and the continuous global angles of ``R`` for the output). ``R0 = I`` until the body's
 |pitch| passes ``CHART_LIMIT`` (1 rad) after a converged step; it is then re-charted (:func:`rechart`): ``R0
 <- R0 R(angles)``, angles <- 0, rates and accelerations re-expressed with the angular velocity and
-acceleration unchanged. With ``R0``, ``w = R0 E angles'``, ``dphi = R0 E dangles``: every use of ``E`` is
+acceleration unchanged; and again after every later step (in the statics, whenever |pitch| passes the
+limit), so that its Newmark step works on angles within one step's turn of 0 (incremental rotations);
+its Newton matrix then also takes the velocity part of the angular acceleration (:func:`rate_tangent`). With ``R0``, ``w = R0 E angles'``, ``dphi = R0 E dangles``: every use of ``E`` is
 ``R0 E`` and every rotation ``R0 R(angles)`` (:func:`body_rotation`). So the angles never come near pitch
 +-90 deg except within one step, and a body that never re-charts runs the same floating-point operations
 as without charts.
@@ -931,8 +933,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     tension reached its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
     the number of steps completed; a step whose Newton iteration fails leaves the state at its start.
     ``stats`` receives (iterations, last residual, absolute force tolerance [N]). After each converged step a
-    body whose |pitch| exceeds ``CHART_LIMIT`` is re-charted (:func:`rechart`; ``frame`` is updated in place,
-    with the continuous global angles of every re-charted body).
+    body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
+    ``frame`` is updated in place, with the continuous global angles of every re-charted body).
     """
     n = X.shape[0]
     nb = q.shape[0]

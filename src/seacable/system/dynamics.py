@@ -35,7 +35,10 @@ mass in a turning frame are left out); the moments enter as the angles' generali
 rotation ``R0`` (the identity to start with). After a converged step (and at the start) a body whose
 |pitch| exceeds 1 rad is re-charted: ``R0 <- R0 R(angles)``, angles <- 0, and the rates re-expressed so
 that the angular velocity and acceleration are unchanged (``angles' = R0^T w``, ``angles'' = R0^T alpha -
-E'(0) angles'``, :func:`seacable.system._dyn_kernel.rechart`); everything that uses the rotation (points,
+E'(0) angles'``, :func:`seacable.system._dyn_kernel.rechart`), and from then on after every step (its
+angles then stay within one step's turn of 0: incremental rotations, as accurate whichever way the body
+points, and its Newton matrix takes the velocity part of the angular acceleration too,
+:func:`~seacable.system._dyn_kernel.rate_tangent`); everything that uses the rotation (points,
 centres of gravity and buoyancy, inertia, added mass, damping, waterplane) uses ``R0 R(angles)``, ``E``
 becomes ``R0 E``. A body that never passes 1 rad of pitch keeps ``R0 = I`` and its results are those
 without charts, bit for bit. The output ``body_position`` angles are the global (roll, pitch, yaw) of
