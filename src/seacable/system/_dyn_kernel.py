@@ -29,6 +29,17 @@ vectors ``dphi`` (moments as they are, the tied nodes move by ``-skew(R p_j) dph
 p_j)]``) and mapped to the angles by ``dtheta = E^-1 dphi`` (:func:`_angle_increment`, regularised at pitch
 +-90 deg, where ``E`` is singular: a horizontal MoorDyn rod starts there); the convergence check is on the
 angles' generalised forces ``E^T M``. The Newton matrix leaves out the change of ``E`` with the angles.
+
+Charts: each body's rotation is ``R = R0 R(angles)`` with a base rotation ``R0`` (``frame``, F_SIZE numbers per
+body: a flag, ``R0``, and the continuous global angles of ``R`` for the output). ``R0 = I`` until the body's
+|pitch| passes ``CHART_LIMIT`` (1 rad) after a converged step; it is then re-charted (:func:`rechart`): ``R0
+<- R0 R(angles)``, angles <- 0, rates and accelerations re-expressed with the angular velocity and
+acceleration unchanged; and again after every later step (in the statics, whenever |pitch| passes the
+limit), so that its Newmark step works on angles within one step's turn of 0 (incremental rotations);
+its Newton matrix then also takes the velocity part of the angular acceleration (:func:`rate_tangent`). With ``R0``, ``w = R0 E angles'``, ``dphi = R0 E dangles``: every use of ``E`` is
+``R0 E`` and every rotation ``R0 R(angles)`` (:func:`body_rotation`). So the angles never come near pitch
++-90 deg except within one step, and a body that never re-charts runs the same floating-point operations
+as without charts.
 """
 
 from __future__ import annotations
@@ -60,6 +71,118 @@ def rotation(roll, pitch, yaw, R):
     R[2, 0] = -sp
     R[2, 1] = cp * sr
     R[2, 2] = cp * cr
+
+
+# a free body's chart (one row of ``frame`` per body): [0] 1 when its base rotation R0 is not the identity,
+# [1:10] R0 row by row, [10:13] the continuous global (roll, pitch, yaw) of R0 R(angles) (see ``rechart``)
+F_ON, F_R0, F_GLOB = 0, 1, 10
+F_SIZE = 13
+CHART_LIMIT = 1.0  # [rad] a body whose |pitch| exceeds this after a step is re-charted (angles back to 0)
+
+
+@njit(cache=True)
+def _premul(fr, a):
+    """a <- R0 a for a vector (3,) or the columns of a (3, k) matrix, R0 = the chart ``fr``'s base rotation."""
+    if a.ndim == 1:
+        a0, a1, a2 = a[0], a[1], a[2]
+        for r in range(3):
+            a[r] = fr[F_R0 + 3 * r] * a0 + fr[F_R0 + 3 * r + 1] * a1 + fr[F_R0 + 3 * r + 2] * a2
+    else:
+        for c in range(a.shape[1]):
+            a0, a1, a2 = a[0, c], a[1, c], a[2, c]
+            for r in range(3):
+                a[r, c] = fr[F_R0 + 3 * r] * a0 + fr[F_R0 + 3 * r + 1] * a1 + fr[F_R0 + 3 * r + 2] * a2
+
+
+@njit(cache=True)
+def _premul_t(fr, a):
+    """a <- R0^T a for a vector (3,)."""
+    a0, a1, a2 = a[0], a[1], a[2]
+    for r in range(3):
+        a[r] = fr[F_R0 + r] * a0 + fr[F_R0 + 3 + r] * a1 + fr[F_R0 + 6 + r] * a2
+
+
+@njit(cache=True)
+def body_rotation(q, fr, R):
+    """The body's rotation ``R = R0 R(roll, pitch, yaw)`` (``R0`` its chart's base rotation, the identity until
+    it is first re-charted: then exactly ``R(angles)``)."""
+    rotation(q[3], q[4], q[5], R)
+    if fr[F_ON] != 0.0:
+        _premul(fr, R)
+
+
+@njit(cache=True)
+def _wrap_near(a, ref):
+    """a + 2 pi k nearest to ``ref``."""
+    return a + 2.0 * math.pi * round((ref - a) / (2.0 * math.pi))
+
+
+@njit(cache=True)
+def euler_near(R, ref, out):
+    """out <- the (roll, pitch, yaw) of ``R = Rz Ry Rx`` nearest to ``ref``: of the two branches ``(r, p, y)``
+    (pitch in [-pi/2, pi/2]) and ``(r + pi, pi - p, y + pi)``, each angle moved by whole turns towards
+    ``ref``, the one nearer it. Followed step by step this keeps the angles continuous through pitch +-90
+    deg (pitch then leaves [-pi/2, pi/2]); at that point itself only roll -+ yaw is defined."""
+    p = -math.asin(max(-1.0, min(1.0, R[2, 0])))
+    r = math.atan2(R[2, 1], R[2, 2])
+    y = math.atan2(R[1, 0], R[0, 0])
+    best = np.inf
+    for k in range(2):
+        a0 = _wrap_near(r + k * math.pi, ref[0])
+        a1 = _wrap_near(p if k == 0 else math.pi - p, ref[1])
+        a2 = _wrap_near(y + k * math.pi, ref[2])
+        d = (a0 - ref[0]) ** 2 + (a1 - ref[1]) ** 2 + (a2 - ref[2]) ** 2
+        if d < best:
+            best = d
+            out[0], out[1], out[2] = a0, a1, a2
+
+
+@njit(cache=True)
+def global_angles(q, fr, out):
+    """out <- the body's global (roll, pitch, yaw) of ``R0 R(angles)``, continuous with ``fr``'s last ones
+    (the angles themselves when the body was never re-charted)."""
+    if fr[F_ON] == 0.0:
+        out[0], out[1], out[2] = q[3], q[4], q[5]
+        return
+    R = np.empty((3, 3))
+    body_rotation(q, fr, R)
+    euler_near(R, fr[F_GLOB:F_GLOB + 3], out)
+
+
+@njit(cache=True)
+def rechart(q, qd, qdd, fr, limit):
+    """Re-chart a body whose |pitch| exceeds ``limit`` [rad] (False otherwise, nothing changed): ``R0 <- R0
+    R(angles)``, angles <- 0, and the rates re-expressed so that the angular velocity ``w = R0 E qd[3:]`` and
+    acceleration ``alpha = R0 (E qdd[3:] + E' qd[3:])`` (global) are unchanged. With the angles 0, ``E = I`` in
+    the new chart: ``qd[3:] = R0^T w`` and ``qdd[3:] = R0^T alpha - E'(0) qd[3:]``, ``E'(0) qd = (-yaw' pitch',
+    roll' yaw', -roll' pitch')`` (:func:`angular_map` at zero angles). The global angles ``fr[10:13]`` are
+    kept continuous."""
+    if not abs(q[4]) > limit:
+        return False
+    E = np.empty((3, 3))
+    ed = np.empty(3)
+    angular_map(q, qd, E, ed, fr)
+    w = np.empty(3)
+    al = np.empty(3)
+    for r in range(3):
+        w[r] = E[r, 0] * qd[3] + E[r, 1] * qd[4] + E[r, 2] * qd[5]
+        al[r] = E[r, 0] * qdd[3] + E[r, 1] * qdd[4] + E[r, 2] * qdd[5] + ed[r]
+    g = np.empty(3)
+    global_angles(q, fr, g)
+    R = np.empty((3, 3))
+    body_rotation(q, fr, R)
+    for r in range(3):
+        for c in range(3):
+            fr[F_R0 + 3 * r + c] = R[r, c]
+    fr[F_ON] = 1.0
+    fr[F_GLOB:F_GLOB + 3] = g
+    q[3], q[4], q[5] = 0.0, 0.0, 0.0
+    _premul_t(fr, w)
+    _premul_t(fr, al)
+    dr, dp, dy = w[0], w[1], w[2]
+    qd[3], qd[4], qd[5] = dr, dp, dy
+    qdd[3], qdd[4], qdd[5] = al[0] + dy * dp, al[1] - dr * dy, al[2] + dr * dp
+    return True
 
 
 @njit(cache=True)
@@ -108,10 +231,10 @@ def _body_current(q, env, cur_depth, cur_speed, uc):
 
 
 @njit(cache=True)
-def angular_map(q, qd, E, ed):
-    """The angular velocity of the angles' rates, ``w = E(q) qd[3:]`` (global axes, ``R = Rz(yaw) Ry(pitch)
-    Rx(roll)``: ``w = roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z``), and ``ed = dE/dt qd[3:]``, so that the
-    angular acceleration is ``E qdd[3:] + ed``."""
+def angular_map(q, qd, E, ed, fr):
+    """The angular velocity of the angles' rates, ``w = E(q) qd[3:]`` (global axes, ``R = R0 Rz(yaw) Ry(pitch)
+    Rx(roll)``: ``w = R0 (roll' Rz Ry e_x + pitch' Rz e_y + yaw' e_z)``, ``R0`` the chart ``fr``'s base
+    rotation), and ``ed = dE/dt qd[3:]``, so that the angular acceleration is ``E qdd[3:] + ed``."""
     sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
     dr, dp, dy = qd[3], qd[4], qd[5]
     E[0, 0], E[0, 1], E[0, 2] = cy * cp, -sy, 0.0
@@ -120,10 +243,43 @@ def angular_map(q, qd, E, ed):
     ed[0] = dr * (-sy * cp * dy - cy * sp * dp) - cy * dy * dp
     ed[1] = dr * (cy * cp * dy - sy * sp * dp) - sy * dy * dp
     ed[2] = -dr * cp * dp
+    if fr[F_ON] != 0.0:
+        _premul(fr, E)
+        _premul(fr, ed)
 
 
 @njit(cache=True)
-def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6):
+def rate_tangent(q, qd, fr, P):
+    """P <- ``d(E' qd[3:]) / d qd[3:] E^-1`` in the chart ``fr`` (``R0 G E^-1 R0^T``, ``G`` the derivative of
+    :func:`angular_map`'s ``ed`` by the rates): the change of the angular acceleration's velocity part per
+    small rotation rate, so that a rotation increment ``dphi`` changes the angular acceleration by ``c0 dphi
+    + c1 P dphi`` (Newmark's ``c1 = gamma / (beta dt)``). Its size is ``|w|``; times the body's large inertia it
+    outweighs ``c0`` times a rod's small spin inertia, and Newton converges only linearly without it."""
+    sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
+    dr, dp, dy = qd[3], qd[4], qd[5]
+    G = np.empty((3, 3))
+    G[0, 0], G[1, 0], G[2, 0] = -sy * cp * dy - cy * sp * dp, cy * cp * dy - sy * sp * dp, -cp * dp
+    G[0, 1], G[1, 1], G[2, 1] = -dr * cy * sp - cy * dy, -dr * sy * sp - sy * dy, -dr * cp
+    G[0, 2], G[1, 2], G[2, 2] = -dr * sy * cp - cy * dp, dr * cy * cp - sy * dp, 0.0
+    # E^-1 = B^-1 Rz^T, B = [[cp, 0, 0], [0, 1, 0], [-sp, 0, 1]]
+    ic = cp / (cp * cp + 1e-12)
+    Ei = np.empty((3, 3))
+    Ei[0, 0], Ei[0, 1], Ei[0, 2] = ic * cy, ic * sy, 0.0
+    Ei[1, 0], Ei[1, 1], Ei[1, 2] = -sy, cy, 0.0
+    Ei[2, 0], Ei[2, 1], Ei[2, 2] = sp * ic * cy, sp * ic * sy, 1.0
+    for r in range(3):
+        for c in range(3):
+            P[r, c] = G[r, 0] * Ei[0, c] + G[r, 1] * Ei[1, c] + G[r, 2] * Ei[2, c]
+    if fr[F_ON] != 0.0:
+        _premul(fr, P)  # R0 P
+        for r in range(3):  # (R0 P) R0^T
+            a0, a1, a2 = P[r, 0], P[r, 1], P[r, 2]
+            for c in range(3):
+                P[r, c] = a0 * fr[F_R0 + 3 * c] + a1 * fr[F_R0 + 3 * c + 1] + a2 * fr[F_R0 + 3 * c + 2]
+
+
+@njit(cache=True)
+def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6, fr):
     """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
     body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
     matrix ``M6`` (rigid body about the reference point plus added mass, global axes), at the velocity
@@ -133,11 +289,12 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
 
     The rigid body's inertia forces about the reference point at ``c`` from the CG are ``M6 (a, alpha)`` and
     ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
-    is ``w x (m (|c|^2 - c c^T) w)``); those of the added mass in a turning frame are left out.
+    is ``w x (m (|c|^2 - c c^T) w)``); those of the added mass in a turning frame are left out. The rotation
+    is ``R0 R(angles)`` of the body's chart ``fr``; a user's hydrostatic matrix acts on the global angles.
     """
     wk = np.empty(96)  # one allocation for the small work arrays
     R = wk[0:9].reshape((3, 3))
-    rotation(q[3], q[4], q[5], R)
+    body_rotation(q, fr, R)
     m = par[B_MASS]
     c = wk[9:12]
     cb = wk[12:15]
@@ -186,9 +343,12 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
         _mv(R0, par[B_CB:B_CB + 3], cb)
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
+        qg = wk[87:93]  # the pose with the global angles (the chart's own when never re-charted)
+        qg[:3] = q[:3]
+        global_angles(q, fr, qg[3:])
         for r in range(6):
             for k in range(6):
-                f6[r] -= khs[r, k] * (q[k] - q0[k])
+                f6[r] -= khs[r, k] * (qg[k] - q0[k])
     else:
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         # buoyancy of the volume at the given pose, and the waterplane's heave restoring at the reference point
@@ -223,7 +383,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
 
 
 @njit(cache=True)
-def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
+def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C, fr):
     """The Newton matrices of the body's own forces: ``K = -df6/dq`` and ``C = -df6/dqd`` (rotation
     increments as small rotation vectors; the damping's turning with the body and the mass matrix's
     change with the angles left out, which only slows Newton, not the answer).
@@ -234,7 +394,7 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C):
     """
     wk = np.empty(96)  # one allocation for the small work arrays
     R = wk[0:9].reshape((3, 3))
-    rotation(q[3], q[4], q[5], R)
+    body_rotation(q, fr, R)
     K[:] = 0.0
     m = par[B_MASS]
     if par[B_HASK] > 0.0:
@@ -415,9 +575,9 @@ def unit_column(band, bw, x, first, upper):
 
 
 @njit(cache=True)
-def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
-    """Put each tied node where it is tied: on its body (r + R p), at its target, or on its free node
-    (``con_body`` = -2 - node)."""
+def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame):
+    """Put each tied node where it is tied: on its body (r + R p, ``R = R0 R(angles)`` of its chart
+    ``frame[b]``), at its target, or on its free node (``con_body`` = -2 - node)."""
     R = np.empty((3, 3))
     for j in range(con_node.size):
         if con_active[j] == 0:
@@ -425,7 +585,7 @@ def place_tied(X, q, con_node, con_body, con_arm, con_target, con_active):
         i = con_node[j]
         b = con_body[j]
         if b >= 0:
-            rotation(q[b, 3], q[b, 4], q[b, 5], R)
+            body_rotation(q[b], frame[b], R)
             for r in range(3):
                 X[i, r] = q[b, r] + R[r, 0] * con_arm[j, 0] + R[r, 1] * con_arm[j, 1] + R[r, 2] * con_arm[j, 2]
         elif b <= -2:
@@ -446,12 +606,15 @@ def _angle_rows(E, m):
 
 
 @njit(cache=True)
-def _angle_increment(q, d):
-    """d <- the angles' increment of the small rotation vector ``d`` (global axes): ``E^-1 d`` with ``E = Rz(yaw)
-    B``, ``B = [[cos p, 0, 0], [0, 1, 0], [-sin p, 0, 1]]``. At pitch +-90 deg (a horizontal rod, gimbal lock) ``E``
+def _angle_increment(q, d, fr):
+    """d <- the angles' increment of the small rotation vector ``d`` (global axes): ``E^-1 R0^T d`` (``R0`` the
+    chart ``fr``'s base rotation) with ``E = Rz(yaw) B``, ``B = [[cos p, 0, 0], [0, 1, 0], [-sin p, 0, 1]]``. At pitch +-90 deg (a horizontal rod, gimbal lock) ``E``
     is singular: roll and yaw turn about the same axis and the rotation about ``Rz e_x`` has no angle rate; the
     roll increment is then regularised to ``cos p v_x / (cos^2 p + 1e-12)`` (relative change < 1e-8 when
-    ``|cos p| > 0.01``), so that the Newton step stays finite and the yaw takes the turn about z."""
+    ``|cos p| > 0.01``), so that the Newton step stays finite and the yaw takes the turn about z. A body is
+    re-charted (:func:`rechart`) before its pitch comes near +-90 deg, unless a single step takes it there."""
+    if fr[F_ON] != 0.0:
+        _premul_t(fr, d)
     sp, cp, sy, cy = math.sin(q[4]), math.cos(q[4]), math.sin(q[5]), math.cos(q[5])
     vx = cy * d[0] + sy * d[1]
     vy = -sy * d[0] + cy * d[1]
@@ -463,7 +626,7 @@ def _angle_increment(q, d):
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
-            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied):
+            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
     Newton matrix and no correction.
@@ -471,7 +634,11 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
     count in the residual divided by the body's size (their largest point arm, at least 1 m). ``Yt``
-    (12 n_c, 3 n_free) and ``tied`` (n,) are work arrays.
+    (12 n_c, 3 n_free) and ``tied`` (n,) are work arrays. ``frame`` (nb, F_SIZE): each body's chart (its
+    rotation is ``R0 R(angles)``). ``spin`` (nb, 3): in statics (``dynamic`` False), a body-axes unit axis
+    about which turning the body moves none of its points, centres of gravity and buoyancy nor its
+    hydrostatics (a rod's own axis; zeros when none): that part of the rotation step is left out, since it
+    has no stiffness and the Newton matrix's unsymmetric turning terms would give it an arbitrary size.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco) = args
@@ -556,7 +723,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             size[b] = max(size[b], math.sqrt(con_arm[j, 0] ** 2 + con_arm[j, 1] ** 2 + con_arm[j, 2] ** 2))
     for b in range(nb):
         par = bpar[b]
-        angular_map(q[b], qd[b], Eb[b], ed)
+        angular_map(q[b], qd[b], Eb[b], ed, frame[b])
         for r in range(3):
             ub[b, r] = qd[b, r]
             ub[b, 3 + r] = Eb[b, r, 0] * qd[b, 3] + Eb[b, r, 1] * qd[b, 4] + Eb[b, r, 2] * qd[b, 5]
@@ -564,7 +731,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             acc[3 + r] = Eb[b, r, 0] * qdd[b, 3] + Eb[b, r, 1] * qdd[b, 4] + Eb[b, r, 2] * qdd[b, 5] + ed[r]
         _body_current(q[b], env, cur_depth, cur_speed, ucb[b])
         body_load(q[b], ub[b], ucb[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
-                  f6, M6)
+                  f6, M6, frame[b])
         for k in range(6):
             v = -f6[k]
             if dynamic:
@@ -573,6 +740,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             Rq[6 * b + k] = v
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += cmb * M6[k, c]
+        if dynamic and frame[b, F_ON] != 0.0:
+            # a re-charted body (one that turns a lot): the velocity part of its angular acceleration in the
+            # Newton matrix too (left out for the others, whose results stay those without charts)
+            P = S2
+            rate_tangent(q[b], qd[b], frame[b], P)
+            for k in range(6):
+                for c in range(3):
+                    Jq[6 * b + k, 6 * b + 3 + c] += cc * (M6[k, 3] * P[0, c] + M6[k, 4] * P[1, c] + M6[k, 5] * P[2, c])
         if check:
             scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
     Rr[:] = Rq
@@ -582,7 +757,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             continue
         i = con_node[j]
         f = fidx[i]
-        rotation(q[b, 3], q[b, 4], q[b, 5], R)
+        body_rotation(q[b], frame[b], R)
         _mv(R, con_arm[j], arm)
         arms[j] = arm
         m0, m1, m2 = -Ru[3 * f], -Ru[3 * f + 1], -Ru[3 * f + 2]
@@ -605,7 +780,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         return True  # converged: no correction needed
     # the bodies' Newton matrices: their own forces' tangents, and the tied nodes' forces turning with them
     for b in range(nb):
-        body_tangent(q[b], ub[b], ucb[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb)
+        body_tangent(q[b], ub[b], ucb[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb, frame[b])
         for k in range(6):
             for c in range(6):
                 Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
@@ -723,7 +898,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     for a in range(6 * nb):
         dq[a] = rhs[nc3 + a]
     for b in range(nb):
-        _angle_increment(q[b], dq[6 * b + 3:6 * b + 6])
+        d = dq[6 * b + 3:6 * b + 6]
+        if not dynamic and (spin[b, 0] != 0.0 or spin[b, 1] != 0.0 or spin[b, 2] != 0.0):
+            body_rotation(q[b], frame[b], R)
+            _mv(R, spin[b], arm)  # the free axis, global
+            s = d[0] * arm[0] + d[1] * arm[1] + d[2] * arm[2]
+            for r in range(3):
+                d[r] -= s * arm[r]
+        _angle_increment(q[b], d, frame[b])
     return True
 
 
@@ -743,14 +925,16 @@ def _apply(X, q, du, dq, fidx, s):
 def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
                   cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
                   fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
-                  beta, gamma, tol, max_iter, F, M, tension, stats):
+                  beta, gamma, tol, max_iter, F, M, tension, stats, frame):
     """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
 
     ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
     step k. After each step a tied line end whose failure time has come, or whose end element's
     tension reached its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
     the number of steps completed; a step whose Newton iteration fails leaves the state at its start.
-    ``stats`` receives (iterations, last residual, absolute force tolerance [N]).
+    ``stats`` receives (iterations, last residual, absolute force tolerance [N]). After each converged step a
+    body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
+    ``frame`` is updated in place, with the continuous global angles of every re-charted body).
     """
     n = X.shape[0]
     nb = q.shape[0]
@@ -767,6 +951,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
     c0 = 1.0 / (beta * dt * dt)
     c1 = gamma / (beta * dt)
+    spin = np.zeros((nb, 3))  # dynamics: a free spin keeps its (small) inertia
+    gq = np.empty(3)
     env = env.copy()
     env[E_VDT] = dt  # viscoelastic lines: the slow stretch advances over the step
     for step in range(px.shape[0]):
@@ -785,7 +971,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
         for b in range(nb):
             for k in range(6):
                 q[b, k] = qn[b, k] + dt * qdn[b, k] + 0.5 * dt * dt * qddn[b, k]
-        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
         ok = False
         res = 0.0
         res_prev = np.inf
@@ -806,7 +992,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, jac, args, weight, fidx, nfree, bw,
                                  env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
-                                 tension, band, du, dq, out, Yt, tied)
+                                 tension, band, du, dq, out, Yt, tied, frame, spin)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
                     break
             res, scale = out[0], out[1]
@@ -820,7 +1006,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 Du *= 0.5
                 Dq *= 0.5
                 _apply(X, q, Du, Dq, fidx, -1.0)
-                place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+                place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
                 continue
             if not math.isfinite(res) or not solved:
                 break
@@ -829,7 +1015,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             Du[:] = du
             Dq[:] = dq
             _apply(X, q, du, dq, fidx, 1.0)
-            place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+            place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
         stats[1] = res
         stats[2] = scale
         if not ok:
@@ -841,6 +1027,13 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             qdd[:] = qddn
             return step
         commit_viscoelastic(args[-1])
+        for b in range(nb):
+            if frame[b, F_ON] != 0.0:
+                global_angles(q[b], frame[b], gq)
+                frame[b, F_GLOB:F_GLOB + 3] = gq
+            else:
+                frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
+            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT if frame[b, F_ON] == 0.0 else 0.0)
         for j in range(con_node.size):
             if con_active[j] == 0:
                 continue
@@ -854,7 +1047,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
 @njit(cache=True)
 def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed, node_fext, con_node, con_body,
                    con_arm, con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, max_iter,
-                   max_step, body_scale, F, M, tension, stats):
+                   max_step, body_scale, F, M, tension, stats, frame, spin):
     """Static equilibrium of the lines and bodies by pseudo-transient Newton, ``(K + lam M) dx = -R``.
 
     The bodies' mass matrices in ``M`` are scaled by ``body_scale`` (a node's mass over a body's), so
@@ -862,8 +1055,10 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
 
     ``lam`` [1/s^2] starts where a node under its weight moves a fraction of an element and follows the
     residual (switched evolution relaxation); a step is limited to ``max_step`` [m] of any node or body
-    and 0.1 rad of rotation. Returns True when converged; ``stats`` receives (iterations, residual,
-    absolute force tolerance [N]).
+    and 0.1 rad of rotation (the turn about a body's free ``spin`` axis left out, see :func:`iterate`). A
+    body whose |pitch| exceeds ``CHART_LIMIT`` after an iteration is re-charted (``frame``, in place, as in
+    :func:`coupled_steps`). Returns True when converged; ``stats`` receives (iterations, residual, absolute
+    force tolerance [N]).
     """
     nb = q.shape[0]
     nd = 3 * nfree
@@ -877,16 +1072,23 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     out = np.zeros(2)
     Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(X.shape[0], np.bool_)
+    gq = np.empty(3)
+    for b in range(nb):
+        if frame[b, F_ON] == 0.0:
+            frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
+        rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT)
     Xp = X.copy()
     qp = q.copy()
+    framep = frame.copy()
     lam = env[1] / (0.05 * max_step)
     lam_min = 1e-9 * lam  # keeps a DOF without stiffness (the yaw of a body on one line) regular
     res_prev = np.inf
-    place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+    place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     for it in range(max_iter):
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, True, args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
-                         badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied)
+                         badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
+                         spin)
         res, scale = out[0], out[1]
         stats[0] = it
         stats[1] = res
@@ -897,6 +1099,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
             # back to the last state, more inertia
             X[:] = Xp
             q[:] = qp
+            frame[:] = framep
             lam *= 10.0
             res_prev = np.inf
             continue
@@ -918,6 +1121,14 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
             shrink = 0.1 / rot
         Xp[:] = X
         qp[:] = q
+        framep[:] = frame
         _apply(X, q, du, dq, fidx, shrink)
-        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active)
+        for b in range(nb):
+            if frame[b, F_ON] != 0.0:
+                global_angles(q[b], frame[b], gq)
+                frame[b, F_GLOB:F_GLOB + 3] = gq
+            else:
+                frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
+            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT)
+        place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     return False

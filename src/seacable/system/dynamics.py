@@ -31,8 +31,29 @@ velocity is ``w = E(angles) d(angles)/dt`` (``w = roll' Rz Ry e_x + pitch' Rz e_
 rigid body's rotational inertia acts on ``dw/dt = E angles'' + E' angles'``, with its gyroscopic moment
 ``w x (I w)`` and the centripetal force ``m w x (w x c)`` of an offset centre of gravity (those of the added
 mass in a turning frame are left out); the moments enter as the angles' generalised forces ``E^T M``.
-Pitch at +-90 deg is singular. ``body_velocity`` reports the reference point's velocity and the angles'
-rates.
+``E`` is singular at pitch +-90 deg, so each body carries a chart: ``R = R0 R(angles)`` with a base
+rotation ``R0`` (the identity to start with). After a converged step (and at the start) a body whose
+|pitch| exceeds 1 rad is re-charted: ``R0 <- R0 R(angles)``, angles <- 0, and the rates re-expressed so
+that the angular velocity and acceleration are unchanged (``angles' = R0^T w``, ``angles'' = R0^T alpha -
+E'(0) angles'``, :func:`seacable.system._dyn_kernel.rechart`), and from then on after every step (its
+angles then stay within one step's turn of 0: incremental rotations, as accurate whichever way the body
+points, and its Newton matrix takes the velocity part of the angular acceleration too,
+:func:`~seacable.system._dyn_kernel.rate_tangent`); everything that uses the rotation (points,
+centres of gravity and buoyancy, inertia, added mass, damping, waterplane) uses ``R0 R(angles)``, ``E``
+becomes ``R0 E``. A body that never passes 1 rad of pitch keeps ``R0 = I`` and its results are those
+without charts, bit for bit. The output ``body_position`` angles are the global (roll, pitch, yaw) of
+``R = Rz(yaw) Ry(pitch) Rx(roll)`` followed continuously from step to step (of their two Euler branches,
+moved by whole turns, the one nearest the last; pitch then leaves [-pi/2, pi/2] when the body turns
+over): continuous except at pitch +-90 deg itself, where only roll -+ yaw is defined. ``body_velocity``
+reports the reference point's velocity and the rates of those angles (``E^-1 w``, regularised at pitch
++-90 deg as the Newton step is), ``body_angular_velocity`` the angular velocity ``w`` (global axes),
+which stays regular there.
+
+The statics (and the static start) leave out of each Newton step the turn about a body's free spin
+axis, when it has one: the line through its reference point on which all its line points and its
+centres of gravity and buoyancy lie (a MoorDyn rod), turning about which changes none of its loads.
+Without it the Newton matrix's unsymmetric turning terms give that stiffness-free turn steps of
+hundreds of radians, and the step limit (0.1 rad) then stalls the whole solve.
 
 A line end can fail (``failures``): at a given time, or when the tension of its end element first
 reaches a given value; the end's node (a node of its own from the start, tied to its point until
@@ -74,6 +95,7 @@ from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positio
 from ..mooring.solver import MooringModel, Water, advance_interval
 from ..results import make_dataset, var
 from . import _dyn_kernel as DK
+from ._stat_model import euler_rate_map
 from .model import MooringSystem
 
 __all__ = [
@@ -265,6 +287,7 @@ class SystemFE:
     ext_t: np.ndarray = None
     ext_f: np.ndarray = None
     ext_n: np.ndarray = None
+    spin: np.ndarray = None  # (nb, 3) body axes: the axis turning about which moves nothing (a rod's), or zeros
 
     def kernel_args(self):
         m = self.model
@@ -492,6 +515,11 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         if name in series:
             t, f = series[name]
             ext_t[k, :len(t)], ext_f[k, :len(t)], ext_n[k] = t, f, len(t)
+    spin = np.zeros((nb, 3))
+    cur_still = not np.any(model.cur_speed)
+    for k, name in enumerate(free_bodies):
+        arms = [c[2] for c in con if c[1] == k]
+        spin[k] = _free_spin_axis(system.bodies[name], arms, cur_still)
     C = list(zip(*con, strict=True)) if con else [[]] * 9
     fe = SystemFE(
         model=model, system=system, free_bodies=free_bodies,
@@ -503,8 +531,33 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
-        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n)
+        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin)
     return fe
+
+
+def _free_spin_axis(body, arms, still_water: bool) -> np.ndarray:
+    """The body-axes unit axis about which turning the body changes none of its static loads, or zeros.
+
+    That is the line through the reference point on which its tied points (``arms``), centre of gravity
+    and centre of buoyancy all lie (a rod with its lines at its ends), when its hydrostatics do not turn
+    with it (no 6x6 matrix; waterplane moments only about a vertical axis) and no current drags it (its
+    damping matrices then act on the velocity only). The statics leave the turn about it out of their
+    Newton steps: it has no stiffness at all. Zeros when there is no such line, or when every arm is zero
+    (a point-like body: no axis is singled out).
+    """
+    vecs = [np.asarray(v, float) for v in (*arms, body.center_of_gravity, body.center_of_buoyancy)]
+    size = max((float(np.linalg.norm(v)) for v in vecs), default=0.0)
+    if size == 0.0 or body.hydrostatic_stiffness is not None:
+        return np.zeros(3)
+    n = max(vecs, key=lambda v: float(np.linalg.norm(v)))
+    n = n / np.linalg.norm(n)
+    if any(float(np.linalg.norm(np.cross(v, n))) > 1e-9 * size for v in vecs):
+        return np.zeros(3)
+    if any(body.waterplane_moments) and abs(n[2]) < 1.0 - 1e-12:
+        return np.zeros(3)
+    if not still_water and (np.any(body.matrix("linear_damping")) or np.any(body.matrix("quadratic_damping"))):
+        return np.zeros(3)
+    return n
 
 
 # --------------------------------------------------------------------------------------------- statics
@@ -550,9 +603,13 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
     body_mass = float(np.max(fe.bpar[:, DK.B_MASS], initial=0.0)) + float(np.max(fe.badd[:, 0, 0], initial=0.0))
     body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 and node_mass > 0 else 1.0
     bargs = fe.body_args() if not held else tuple(np.zeros((0,) + a.shape[1:], a.dtype) for a in fe.body_args())
+    qs = np.array(qs, float)
+    frame = np.zeros((len(qs), DK.F_SIZE))
+    spin = (fe.spin if fe.spin is not None else np.zeros((len(qs), 3))) if len(qs) else np.zeros((0, 3))
     ok = DK.coupled_static(X, qs, fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
                            fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
-                           step, body_scale, F, M, tension, stats)
+                           step, body_scale, F, M, tension, stats, frame, spin)
+    qs = _global_pose(qs, frame)
     if not ok:
         qtxt = "" if not len(qs) else f"; the bodies ended at {np.array2string(qs, precision=4)}"
         raise ConvergenceError(
@@ -602,6 +659,7 @@ class SystemRun:
     iterations: int
     wall_time: float
     interrupted: bool
+    body_angular_velocity: np.ndarray | None = None  # (nt, nb, 3) global axes [rad/s]
 
 
 def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration: float):
@@ -661,17 +719,22 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     con_target = fe.con_target.copy()
     active = np.ones(len(fe.con_node), np.int64)
     fail_at = np.full(len(fe.con_node), np.nan)
+    # each body's chart: R = R0 R(angles), R0 = I until its |pitch| passes DK.CHART_LIMIT (from the start too)
+    frame = np.zeros((nb, DK.F_SIZE))
+    frame[:, DK.F_GLOB:DK.F_GLOB + 3] = q[:, 3:]
+    for b in range(nb):
+        DK.rechart(q[b], qd[b], qdd[b], frame[b], DK.CHART_LIMIT)
     # the bodies' initial acceleration (zero at an equilibrium; a held start is released here)
     if nb:
-        fl = body_line_force(fe, X, q)
+        fl = body_line_force(fe, X, _global_pose(q, frame))
         for b in range(nb):
             f6, M6, E, ed = np.zeros(6), np.zeros((6, 6)), np.zeros((3, 3)), np.zeros(3)
-            DK.angular_map(q[b], qd[b], E, ed)
+            DK.angular_map(q[b], qd[b], E, ed, frame[b])
             u = np.r_[qd[b, :3], E @ qd[b, 3:]]
             uc = np.zeros(3)
             DK._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
             DK.body_load(q[b], u, uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
-                         fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6)
+                         fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6, frame[b])
             acc = np.linalg.solve(M6, f6 + fl[b])
             qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
     n_out = int(round(duration / output_interval))  # noqa: RUF046
@@ -681,7 +744,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     tension = np.zeros(net.n_elements)
     m.settle_viscoelastic(X, np.zeros_like(X))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
-    times, pos, vel, ten, bq, bqd = [0.0], [X.copy()], [V.copy()], [t0_tension], [q.copy()], [qd.copy()]
+    g = _global_state(q, qd, frame)
+    times, pos, vel, ten, bq, bqd, bw = [0.0], [X.copy()], [V.copy()], [t0_tension], [g[0]], [g[1]], [g[2]]
     stats = np.zeros(3)
     iterations = steps = 0
     interrupted = False
@@ -695,7 +759,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
                                         m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
                                         fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
                                         fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma,
-                                        tol, max_iter, F, M, tension, stats)
+                                        tol, max_iter, F, M, tension, stats, frame)
 
             done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats, max_halvings,
                                            max_iter, "system", "smaller time_step, more elements, or check the "
@@ -706,18 +770,53 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
             pos.append(X.copy())
             vel.append(V.copy())
             ten.append(tension.copy())
-            bq.append(q.copy())
-            bqd.append(qd.copy())
+            g = _global_state(q, qd, frame)
+            bq.append(g[0])
+            bqd.append(g[1])
+            bw.append(g[2])
             if progress is not None:
                 progress(times[-1], duration)
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - begin
-    nt = min(len(times), len(pos), len(vel), len(ten), len(bq), len(bqd))
+    nt = min(len(times), len(pos), len(vel), len(ten), len(bq), len(bqd), len(bw))
     return SystemRun(time=np.array(times[:nt]), position=np.array(pos[:nt]), velocity=np.array(vel[:nt]),
                      tension=np.array(ten[:nt]), body_position=np.array(bq[:nt]).reshape(nt, nb, 6),
                      body_velocity=np.array(bqd[:nt]).reshape(nt, nb, 6), failure_time=fail_at, time_step=h,
-                     steps=steps, iterations=iterations, wall_time=wall, interrupted=interrupted)
+                     steps=steps, iterations=iterations, wall_time=wall, interrupted=interrupted,
+                     body_angular_velocity=np.array(bw[:nt]).reshape(nt, nb, 3))
+
+
+def _global_pose(q, frame) -> np.ndarray:
+    """The bodies' poses (nb, 6) with the global (roll, pitch, yaw) of their charts' ``R0 R(angles)``."""
+    out = np.array(q, float).reshape(-1, 6)
+    for b in range(out.shape[0]):
+        if frame[b, DK.F_ON]:
+            g = np.empty(3)
+            DK.global_angles(out[b], frame[b], g)
+            out[b, 3:] = g
+    return out
+
+
+def _global_state(q, qd, frame):
+    """Poses (nb, 6) and velocities (nb, 6) in the global angles, and angular velocities (nb, 3), of the
+    bodies' chart states: a body never re-charted as it is (its angles are the global ones); a re-charted
+    one with the global angles of ``R0 R(angles)`` (continuous, :func:`~seacable.system._dyn_kernel.euler_near`)
+    and their rates ``E(global)^-1 w`` (regularised at pitch +-90 deg as the Newton step,
+    :func:`~seacable.system._dyn_kernel._angle_increment`)."""
+    nb = q.shape[0]
+    pose, vel, w = q.copy(), qd.copy(), np.zeros((nb, 3))
+    eye = np.zeros(DK.F_SIZE)
+    for b in range(nb):
+        E, ed = np.zeros((3, 3)), np.zeros(3)
+        DK.angular_map(q[b], qd[b], E, ed, frame[b])
+        w[b] = E @ qd[b, 3:]
+        if frame[b, DK.F_ON]:
+            pose[b, 3:] = frame[b, DK.F_GLOB:DK.F_GLOB + 3]
+            rates = w[b].copy()
+            DK._angle_increment(pose[b], rates, eye)
+            vel[b, 3:] = rates
+    return pose, vel, w
 
 
 # --------------------------------------------------------------------------------------------- the analysis
@@ -884,11 +983,14 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     bodies = list(sysm.bodies)
     bp = np.zeros((nt, len(bodies), 6))
     bv = np.zeros((nt, len(bodies), 6))
+    bw = np.zeros((nt, len(bodies), 3))
     for k, name in enumerate(bodies):
         body = sysm.bodies[name]
         if name in fe.free_bodies:
             j = fe.free_bodies.index(name)
             bp[:, k], bv[:, k] = run.body_position[:, j], run.body_velocity[:, j]
+            if run.body_angular_velocity is not None:
+                bw[:, k] = run.body_angular_velocity[:, j]
         else:
             bp[:, k] = body.position
             a = getattr(case, "analysis", None)
@@ -897,6 +999,8 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 d, dd, _ = mot.dofs(run.time)
                 bp[:, k] += d
                 bv[:, k] = dd
+                for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
+                    bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
     coords = {"time": var("time", run.time, "s", "time"),
               "line": var("line", list(fe.line_names), "1", "line"),
               "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),
@@ -911,6 +1015,9 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                                     "body reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]")
         data["body_velocity"] = var(("time", "body", "dof"), bv, "m/s or rad/s",
                                     "body velocity (x, y, z) [m/s] and rotation rates [rad/s]")
+        coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
+        data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
+                                            "body angular velocity, global axes")
     title = getattr(case, "name", None) or "system_dynamic"
     ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
                       settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
