@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .. import _validate
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from . import kernel as K
 from .checks import check_network
@@ -338,14 +339,12 @@ def generalized_alpha(spectral_radius: float = 1.0) -> tuple[float, float, float
     InputError
         A spectral radius that is not a number in [0, 1].
     """
-    rho = spectral_radius
-    if isinstance(rho, bool) or not isinstance(rho, (int, float, np.floating, np.integer)) \
-            or not 0.0 <= float(rho) <= 1.0:
-        raise InputError(f"spectral_radius must be a number in [0, 1] (the generalised-alpha amplification of "
-                         f"the highest frequencies per step, 1: no numerical damping), got {rho!r}. Suggested "
-                         "fix: use 1.0 (average acceleration, the default) or 0.8 to damp the ringing of stiff "
-                         "modes.")
-    rho = float(rho)
+    if isinstance(spectral_radius, bool):
+        raise InputError(f"spectral_radius must be a number in [0, 1], got {spectral_radius!r}. Suggested fix: "
+                         "use 1.0 (the default) or 0.8.")
+    rho = _validate.in_range("spectral_radius", spectral_radius, 0.0, 1.0, "",
+                             "use 1 (average acceleration, no numerical damping, the default) or 0.7-0.9 to damp "
+                             "the ringing of stiff modes at a coarse step.")
     if rho == 1.0:
         return 0.0, 0.0, 0.25, 0.5
     alpha_m = (2.0 * rho - 1.0) / (rho + 1.0)
