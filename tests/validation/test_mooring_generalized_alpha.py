@@ -1,0 +1,185 @@
+"""The generalised-alpha time integration of the mooring model against the scheme's own theory.
+
+Sources
+-------
+- Chung, J. and Hulbert, G. M. (1993). A time integration algorithm for structural dynamics with
+  improved numerical dissipation: the generalized-alpha method. J. Appl. Mech. 60, 371-375: the
+  parameters of a spectral radius at infinity rho_inf, alpha_m = (2 rho_inf - 1) / (rho_inf + 1),
+  alpha_f = rho_inf / (rho_inf + 1), gamma = 1/2 - alpha_m + alpha_f, beta = (1 - alpha_m + alpha_f)^2 / 4;
+  second-order accuracy; the amplification matrix of the undamped oscillator, whose spectral radius
+  tends to rho_inf as omega dt grows.
+- Hughes, T. J. R. (2000). The Finite Element Method, Dover, ch. 9.1: average acceleration (rho_inf = 1)
+  conserves the energy of a linear undamped system.
+
+The single-degree-of-freedom oscillator is one truss element in vacuum (no drag, no added mass, no
+seabed) hanging from a fixed node, a point mass at its free end moving along the element: while taut
+its equation is exactly linear, ``m x'' + (EA / L) x = 0`` about the static stretch, so the model's
+steps must be the scheme's amplification matrix applied to the start, to the Newton tolerance.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import seacable as sc
+from seacable.errors import InputError
+from seacable.mooring.network import network_from_line
+from seacable.mooring.solver import MooringModel, Water, generalized_alpha, simulate, static_equilibrium
+
+G = 9.80665
+EA, LENGTH, MASS, WIRE = 1e7, 100.0, 1e4, 1.0  # [N], [m], [kg], [kg/m]
+K_AXIAL = EA / LENGTH
+M_NODE = MASS + 0.5 * WIRE * LENGTH  # the point mass and half the wire's
+OMEGA = math.sqrt(K_AXIAL / M_NODE)  # 3.154 rad/s
+X0 = 0.3  # start 0.3 m below the static position (static stretch W L / EA = 0.98 m: taut throughout)
+
+
+def _scheme(rho):
+    """Chung and Hulbert's parameters, written out here (not the model's function)."""
+    am = (2 * rho - 1) / (rho + 1)
+    af = rho / (rho + 1)
+    gamma = 0.5 - am + af
+    beta = 0.25 * (1 - am + af) ** 2
+    return am, af, beta, gamma
+
+
+def _amplification(omega_dt, rho):
+    """The generalised-alpha amplification matrix of ``x'' + omega^2 x = 0`` on the state
+    (x, dt v, dt^2 a): Newmark's updates and the equilibrium
+    ``(1 - am) a1 + am a0 + omega^2 ((1 - af) x1 + af x0) = 0`` (Chung and Hulbert eqs. 2-5)."""
+    am, af, beta, gamma = _scheme(rho)
+    w2 = omega_dt**2
+    A = np.zeros((3, 3))
+    for j, (x0, v0, a0) in enumerate(np.eye(3)):
+        a1 = -(am * a0 + w2 * x0 + w2 * (1 - af) * (v0 + (0.5 - beta) * a0)) / ((1 - am) + w2 * (1 - af) * beta)
+        A[:, j] = x0 + v0 + (0.5 - beta) * a0 + beta * a1, v0 + (1 - gamma) * a0 + gamma * a1, a1
+    return A
+
+
+@pytest.fixture(scope="module")
+def oscillator():
+    wire = sc.LineType(diameter=0.01, mass_per_length=WIRE, axial_stiffness=EA, drag_normal=0.0,
+                       drag_tangential=0.0, added_mass_normal=0.0, added_mass_tangential=0.0)
+    line = sc.Line(segments=(sc.Segment(line_type=wire, length=LENGTH),),
+                   attachments=(sc.PointMass(s=LENGTH, mass=MASS),))
+    net = network_from_line(line, (0, 0, 0.0), (0, 0, -LENGTH), water_density=0.0, gravity=G, n_elements=1,
+                            end_b="free")
+    model = MooringModel(net, Water(density=0.0, gravity=G, depth=None))
+    return model, static_equilibrium(model, tol=1e-12).position
+
+
+def _run(oscillator, omega_dt, n_steps, rho, x0=X0):
+    model, eq = oscillator
+    start = eq.copy()
+    start[-1, 2] -= x0
+    dt = omega_dt / OMEGA
+    run = simulate(model, None, n_steps * dt, dt, dt, initial=start, tol=1e-12, spectral_radius=rho)
+    # displacement, velocity and acceleration from the static position (z down is negative: flip)
+    return run, -(run.position[:, -1, 2] - eq[-1, 2]), -run.velocity[:, -1, 2], -run.acceleration[:, -1, 2]
+
+
+def test_the_parameters_are_chung_and_hulberts():
+    for rho in (0.0, 0.5, 0.8, 0.95):
+        assert generalized_alpha(rho) == pytest.approx(_scheme(rho), abs=1e-15)
+    # rho_inf = 1 is average acceleration: Chung and Hulbert's alpha_m = alpha_f = 1/2 give the same beta,
+    # gamma and (the equilibrium being the mean of the two ends', which holds at the start) the same steps
+    assert generalized_alpha(1.0) == (0.0, 0.0, 0.25, 0.5)
+    assert _scheme(1.0) == (0.5, 0.5, 0.25, 0.5)
+
+
+@pytest.mark.parametrize("bad", [1.01, -0.2, math.nan, "high", True])
+def test_a_spectral_radius_outside_0_1_is_refused(bad):
+    with pytest.raises(InputError, match="spectral_radius"):
+        generalized_alpha(bad)
+
+
+def test_the_case_refuses_a_spectral_radius_above_1():
+    case = sc.load_case("examples/oc3_hywind_line.yaml")
+    data = case.model_dump(mode="json", exclude_none=True)
+    data["analysis"]["spectral_radius"] = 1.5
+    with pytest.raises(InputError, match=r"analysis\.spectral_radius must be <= 1, got 1\.5"):
+        sc.Case(**data)
+
+
+@pytest.mark.parametrize("rho", [0.8, 0.5, 0.0])
+@pytest.mark.parametrize("omega_dt", [0.5, 10.0, 1000.0])
+def test_each_step_is_the_schemes_amplification_matrix(oscillator, omega_dt, rho):
+    """The run's (x, dt v, dt^2 a) after n steps equal A(omega dt)^n applied to the start, and the
+    roots of the recursion the displacements follow are the eigenvalues of A: the amplification of
+    the mode per step is the one the scheme predicts, ``rho(A) -> rho_inf`` as ``omega dt -> inf``."""
+    n = 20
+    run, x, v, a = _run(oscillator, omega_dt, n, rho)
+    dt = omega_dt / OMEGA
+    A = _amplification(omega_dt, rho)
+    y = np.array([X0, 0.0, -OMEGA**2 * X0 * dt**2])  # the start: at rest, acceleration from equilibrium
+    expected = [y]
+    for _ in range(n):
+        expected.append(A @ expected[-1])
+    ours = np.column_stack([x, dt * v, dt**2 * a])
+    # each step solves a linear equation to the Newton tolerance 1e-12 of the force scale (the weight,
+    # 1e5 N): 1e-7 N, i.e. 1e-12 m at k = 1e5 N/m, plus the round-off of coordinates near 100 m
+    # (2e-14 m); 1e-9 of the start's 0.3 m is far above both and far below any scheme error (a wrong
+    # gamma changes the third step by 1e-2 of the start)
+    assert ours == pytest.approx(np.array(expected), abs=1e-9 * X0 * max(1.0, omega_dt**2))
+    # the observed amplification: x_n obeys the characteristic polynomial of A (Cayley-Hamilton);
+    # fitting its three coefficients recovers the roots
+    rows = np.column_stack([x[2:-1], x[1:-2], x[:-3]])
+    coef = np.linalg.lstsq(rows, x[3:], rcond=None)[0]
+    observed = np.sort(np.abs(np.roots([1.0, *(-coef)])))
+    theory = np.sort(np.abs(np.linalg.eigvals(A)))
+    # the fit is exact up to the 1e-12 relative noise of x over 20 steps that decay to rho^20 (1e-2 at
+    # rho 0.8; 1e-6 of the start at rho_inf = 0.5 and omega dt = 1000): measured within 3.3e-8 of
+    # theory (0.80772122 against 0.80772125 at rho_inf 0.8, omega dt 1000); 1e-6 allows for that noise
+    assert observed[-1] == pytest.approx(theory[-1], rel=1e-6)
+    if omega_dt >= 1000.0:
+        # Chung and Hulbert: rho(A) = rho_inf + O(1 / (omega dt)) (0.8077 at 0.8, 0.508 at 0.5, 0.0101 at 0)
+        assert observed[-1] == pytest.approx(rho, abs=0.011)
+    if omega_dt <= 0.5:
+        # a resolved mode (omega dt 0.5) is hardly damped: 1 - rho(A) < 2e-3 per step for rho_inf >= 0
+        assert observed[-1] > 0.98
+
+
+def test_newton_converges_in_one_iteration_on_a_linear_oscillator(oscillator):
+    """The Newton matrix is the exact derivative of the generalised-alpha equilibrium,
+    ((1 - alpha_m) / (beta dt^2) M + (1 - alpha_f) (gamma / (beta dt) C + K)) / (1 - alpha_f): on a linear
+    system every step converges at its first correction (two residual evaluations a step). A tangent
+    with the wrong alpha_f weighting converges linearly, in many more. The start is 1 cm off the static
+    position so that the predictor, ``x + dt v + dt^2 a / 2``, about (omega dt)^2 / 2 = 4.5 times the
+    amplitude away, keeps the wire taut (stretch 0.98 m): a slack predictor is a nonlinear start."""
+    for rho in (1.0, 0.8, 0.3):
+        run, *_ = _run(oscillator, 3.0, 20, rho, x0=0.01)
+        assert run.steps == 20
+        assert run.iterations == 2 * run.steps
+
+
+def test_average_acceleration_conserves_the_energy_of_a_linear_oscillator(oscillator):
+    """rho_inf = 1: 1/2 m v^2 + 1/2 k x^2 is constant at any step (here omega dt = 0.5 and 20), while
+    rho_inf = 0.8 loses energy at a rate the scheme's amplification gives."""
+    for omega_dt in (0.5, 20.0):
+        _, x, v, _ = _run(oscillator, omega_dt, 100, 1.0)
+        energy = 0.5 * M_NODE * v**2 + 0.5 * K_AXIAL * x**2
+        # the Newton tolerance (1e-7 N on 1e5 N/m: 1e-12 m on 0.3 m) and round-off leave < 1e-9 of it
+        assert np.ptp(energy) < 1e-9 * energy[0]
+        _, x, v, _ = _run(oscillator, omega_dt, 100, 0.8)
+        damped = 0.5 * M_NODE * v**2 + 0.5 * K_AXIAL * x**2
+        # 100 steps at the scheme's amplification: energy ~ rho(A)^(2 n), at omega dt 0.5 a loss of
+        # 1 - 0.99996^200 = 0.8 %, at 20 a factor 0.9^200; either far beyond the 1e-9 above
+        assert damped[-1] < (1 - 1e-3) * damped[0]
+
+
+@pytest.mark.parametrize("rho", [0.8, 0.5])
+def test_generalized_alpha_is_second_order_on_the_oscillator(oscillator, rho):
+    """The largest displacement error over three periods against x0 cos(omega t): it falls by 4 per
+    halving of the step."""
+    err = []
+    for n in (40, 80, 160):
+        run, x, _, _ = _run(oscillator, 2 * math.pi / n, 3 * n, rho)
+        err.append(np.max(np.abs(x - X0 * np.cos(OMEGA * run.time))))
+    order = np.log2(np.array(err[:-1]) / np.array(err[1:]))
+    # the leading error is the period error, O((omega dt)^2) (the amplitude error is of higher order:
+    # measured at the peaks alone the order is 3.9); the next term is (omega dt)^2 = 2.5e-2 to 1.5e-3
+    # of it at 40-160 steps a period: orders within 2 +- 0.05
+    assert order == pytest.approx([2.0, 2.0], abs=0.05)
