@@ -112,7 +112,7 @@ def test_each_step_is_the_schemes_amplification_matrix(oscillator, omega_dt, rho
     roots of the recursion the displacements follow are the eigenvalues of A: the amplification of
     the mode per step is the one the scheme predicts, ``rho(A) -> rho_inf`` as ``omega dt -> inf``."""
     n = 20
-    run, x, v, a = _run(oscillator, omega_dt, n, rho)
+    _, x, v, a = _run(oscillator, omega_dt, n, rho)
     dt = omega_dt / OMEGA
     A = _amplification(omega_dt, rho)
     y = np.array([X0, 0.0, -OMEGA**2 * X0 * dt**2])  # the start: at rest, acceleration from equilibrium
@@ -226,7 +226,7 @@ def test_chung_and_hulberts_rho_1_is_average_acceleration(moved_chain, monkeypat
     chain: the mid-step equilibrium is the mean of the two ends', and the start's holds. Measured: the
     positions agree to 3.0e-9 m over 2 s (the Newton tolerance, 1e-10 of the force scale, carried by the
     scheme's spurious root -1); rho_inf = 0.8 moves them by 3.6e-5 m. 1e-7 m separates the two."""
-    import seacable.mooring.solver as solver
+    from seacable.mooring import solver
 
     model, start, motion = moved_chain
     newmark = simulate(model, motion, 2.0, 1 / 400, 0.05, initial=start, tol=1e-10)
