@@ -1,8 +1,8 @@
 """Snap loads of a tank-scale chain: the cycle maxima converge with the step, and the ringing of a coarse step.
 
-The case of issue 19: 33 m of chain in a 3 m deep tank, 83 segments, its fairlead moved on a circle of
-0.2 m radius every 1.25 s (a platform motion: surge and heave a quarter period apart, 1.25 s ramp).
-The chain's properties are a tank-scale studless chain of our own (3.6 mm volume-equivalent diameter,
+The case of issue 19 (``examples/snap_load_tank_chain.yaml``): 33 m of chain in a 3 m deep tank, 83
+segments, its fairlead moved on a circle of 0.2 m radius every 1.25 s (a platform motion: surge and heave
+a quarter period apart, 1.25 s ramp). The chain's properties are a tank-scale studless chain of our own (3.6 mm volume-equivalent diameter,
 0.0818 kg/m, EA 4e4 N, C_dn 2.4, C_dt 0.4, C_an 1, C_at 0.5; anchor 31 m from the fairlead, which is
 0.7 m below the surface): the line goes slack as the fairlead comes down towards the anchor and snaps
 taut as it rises away, about 87 N against 1.6 N at rest.
@@ -16,7 +16,7 @@ is ``bench/bench_snap_convergence.py``; measured there with 6.25e-5 s: cycle max
 
 from __future__ import annotations
 
-import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -25,21 +25,16 @@ import seacable as sc
 from seacable.mooring.run import prepare_mooring_dynamic
 from seacable.mooring.solver import simulate, static_equilibrium
 
-PERIOD = 1.25  # [s]
+EXAMPLE = Path(__file__).parents[2] / "examples" / "snap_load_tank_chain.yaml"
+PERIOD = 1.25  # [s], the fairlead's circle
 
 
 def snap_case(time_step, spectral_radius=1.0, cycles=1, n_elements=83):
-    """The case of the module's docstring, ``cycles`` periods after the ramp, every step stored."""
-    chain = {"diameter": 0.0036, "mass_per_length": 0.0818, "axial_stiffness": 4e4, "drag_normal": 2.4,
-             "drag_tangential": 0.4, "added_mass_normal": 1.0, "added_mass_tangential": 0.5}
-    return sc.Case(
-        name="snap", line_types={"chain": chain}, line={"line_type": "chain", "length": 33.0},
-        environment={"depth": 3.0, "water_density": 1025.0, "gravity": 9.81},
-        analysis={"type": "mooring_dynamic", "fairlead": [31.0, -0.7], "n_elements": n_elements,
-                  "motion": {"type": "platform", "amplitude": [0.2, 0, 0.2, 0, 0, 0],
-                             "phase": [0, 0, math.pi / 2, 0, 0, 0], "period": PERIOD, "ramp": PERIOD},
-                  "duration": PERIOD * (cycles + 1), "time_step": time_step, "output_interval": time_step,
-                  "spectral_radius": spectral_radius})
+    """The example case, ``cycles`` periods after the ramp, every step stored."""
+    data = sc.load_case(EXAMPLE).model_dump(mode="json", exclude_none=True)
+    data["analysis"].update(n_elements=n_elements, duration=PERIOD * (cycles + 1), time_step=time_step,
+                            output_interval=time_step, spectral_radius=spectral_radius)
+    return sc.Case(**data)
 
 
 def cycle_maxima(case):
