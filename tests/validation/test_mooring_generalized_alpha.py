@@ -237,3 +237,53 @@ def test_chung_and_hulberts_rho_1_is_average_acceleration(moved_chain, monkeypat
     damped = simulate(model, motion, 2.0, 1 / 400, 0.05, initial=start, tol=1e-10, spectral_radius=0.8)
     assert np.abs(midpoint.position - newmark.position).max() < 1e-7
     assert np.abs(damped.position - newmark.position).max() > 1e-5
+
+
+ONE_LINE = """--------------------- MoorDyn Input File ------------------------------------
+one chain from an anchor to a vessel point
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain      0.1     60         5e8        -0.5        0          1.2    1.0    0.2     0.0
+---------------------- POINTS ----------------------------------------
+ID    Attachment  X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)         (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed       -300    0       -100    0      0       0      0
+2     Vessel      0       0       -20     0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         320       16      -
+---------------------- OPTIONS -----------------------------------------
+300           WtrDpth       water depth (m)
+------------------------- need this line --------------------------------------
+"""
+
+
+def test_the_case_and_a_moordyn_deck_run_with_their_spectral_radius(tmp_path):
+    """``analysis.spectral_radius`` and a deck's ``spectral_radius`` reach the time loop (the tensions
+    change with it) and are recorded in the result's settings; the default stays average acceleration."""
+    import json
+
+    from seacable.io.moordyn import load_moordyn_case
+    from seacable.mooring.moordyn import run_moordyn_file
+
+    data = sc.load_case("examples/oc3_hywind_line.yaml").model_dump(mode="json", exclude_none=True)
+    data["analysis"].update(duration=2.0, time_step=0.1, output_interval=0.5)
+    plain = sc.run(sc.Case(**data))
+    data["analysis"]["spectral_radius"] = 0.5
+    damped = sc.run(sc.Case(**data))
+    assert json.loads(plain.attrs["settings"])["spectral_radius"] == 1.0
+    assert json.loads(damped.attrs["settings"])["spectral_radius"] == 0.5
+    assert np.abs(damped.fairlead_tension.values - plain.fairlead_tension.values).max() > 1e-6
+
+    deck = tmp_path / "one.txt"
+    deck.write_text(ONE_LINE)
+    motion = HarmonicMotion(amplitude=(2.0, 0.0, 1.0), period=5.0)
+    runs = {rho: run_moordyn_file(deck, duration=2.0, time_step=0.05, output_interval=0.5, motion=motion,
+                                  spectral_radius=rho) for rho in (1.0, 0.5)}
+    assert [json.loads(ds.attrs["settings"])["spectral_radius"] for ds in runs.values()] == [1.0, 0.5]
+    assert np.abs(runs[1.0].fairlead_tension.values - runs[0.5].fairlead_tension.values).max() > 1e-6
+    assert load_moordyn_case(deck).spectral_radius == 1.0
+    with pytest.raises(InputError, match=r"spectral radius must be in \[0, 1\], got 1\.5"):
+        load_moordyn_case(deck).with_run(duration=1.0, spectral_radius=1.5)
