@@ -11,7 +11,8 @@ The snap travels along the line as an axial wave (c = sqrt(EA / m) = 700 m/s, el
 highest axial frequency 2 c / h = 3500 rad/s), so its peak needs a step that resolves it,
 omega dt <~ 1. The full study (steps 2e-3 to 6.25e-5 s, 41, 83 and 166 segments, several spectral radii)
 is ``bench/bench_snap_convergence.py``; measured there with 6.25e-5 s: cycle maxima 86.95 and 87.22 N
-(rho_inf 1), 86.91 and 87.27 N (0.8); with 166 segments 88.63 and 85.00 N.
+(rho_inf 1), 86.9 and 87.3 N (0.8); with 166 segments 88.7 and 85.4 N (2.3 % per cycle, 0.6 % in the
+mean of the two: the mesh study is too slow for a test), with 41 segments 80.2 and 79.5 N (9 % low).
 """
 
 from __future__ import annotations
