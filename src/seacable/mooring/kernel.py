@@ -796,7 +796,8 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
     (``M c0 x`` of Newmark's acceleration, ``k_b d_n (z + depth)`` of the seabed, ``EA l / L`` of an
     element): about 1e-11 m for a line 30 m from the origin, far below any accuracy a step needs, and
     a level that a residual computed from those terms cannot be asked to go below when the time step
-    is small (``c0 = 1 / (beta dt^2)``).
+    is small (``c0`` the mass coefficient of the Newton matrix, ``1 / (beta dt^2)`` for Newmark,
+    ``(1 - alpha_m) / ((1 - alpha_f) beta dt^2)`` for the generalised alpha).
     """
     s = 0.0
     total = 0.0
