@@ -1528,6 +1528,9 @@ class MoorDynCase:
         Newmark time step. [s]
     output_interval
         Time between stored states. [s]
+    spectral_radius
+        Generalised-alpha amplification per step of the modes far above 1 / time_step (1: Newmark's
+        average acceleration, no numerical damping; :func:`seacable.mooring.solver.generalized_alpha`). [-]
     """
 
     data: MoorDynInput
@@ -1536,6 +1539,7 @@ class MoorDynCase:
     motion: object = None
     time_step: float = 0.1
     output_interval: float = 0.5
+    spectral_radius: float = 1.0
 
     @property
     def path(self) -> str | None:
@@ -1549,15 +1553,19 @@ class MoorDynCase:
         kind = "system" if self.has_structures else "mooring"
         return f"{kind}_static" if self.duration is None else f"{kind}_dynamic"
 
-    def with_run(self, *, duration=None, motion=None, time_step=None, output_interval=None) -> MoorDynCase:
+    def with_run(self, *, duration=None, motion=None, time_step=None, output_interval=None,
+                 spectral_radius=None) -> MoorDynCase:
         """The same file with a run set (each argument None keeps the current value).
 
         Raises
         ------
         InputError
             A duration, time step or output interval that is not a positive finite number of
-            seconds, a motion without a duration, or an output interval shorter than the step.
+            seconds, a motion without a duration, an output interval shorter than the step, or a
+            spectral radius outside [0, 1].
         """
+        rho = self.spectral_radius if spectral_radius is None else _validate.in_range(
+            "spectral radius", spectral_radius, 0.0, 1.0, "", "use 1 (average acceleration, the default) or 0.8")
         duration = self.duration if duration is None else _validate.positive(
             "duration", duration, "s", "give the simulated time in seconds, e.g. 100")
         time_step = self.time_step if time_step is None else _validate.positive(
@@ -1572,7 +1580,7 @@ class MoorDynCase:
             raise InputError(f"output interval must be >= the time step {time_step:g} s, got {interval:g} s. "
                              "Suggested fix: store every step at most (output interval = time step).")
         return dataclasses.replace(self, duration=duration, motion=motion, time_step=time_step,
-                                   output_interval=interval)
+                                   output_interval=interval, spectral_radius=rho)
 
     @property
     def has_structures(self) -> bool:

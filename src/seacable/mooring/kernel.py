@@ -35,10 +35,18 @@ is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d
 over a small band of penetration so that the contact stiffness is continuous, with ``d_n`` the sum of ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m,
 Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
 
-Time integration: Newmark's average acceleration (beta 1/4, gamma 1/2) with Newton iterations at
-each step on ``M a - F(x, v) = 0`` for the free nodes; prescribed nodes (fairleads) move the
+Time integration: the generalised-alpha method (Chung and Hulbert 1993) with Newton iterations at
+each step on the equilibrium of the free nodes at the intermediate times,
+
+    (1 - alpha_m) M a_{n+1} + alpha_m M_n a_n - (1 - alpha_f) F(x_{n+1}, v_{n+1}) - alpha_f F_n = 0,
+
+with Newmark's updates of x and v (beta, gamma); inertia and forces are interpolated between the
+step's ends (Erlicher, Bonaventura and Bursi 2002, the form for nonlinear forces, which keeps the
+viscoelastic state at the step's end). ``alpha_m = alpha_f = 0`` is Newmark's average acceleration
+(beta 1/4, gamma 1/2), the default. Prescribed nodes (fairleads) move the
 coupling terms to the right-hand side (the partitioned equations of paper 004 section 3). The
-Jacobian ``M / (beta dt^2) + C gamma / (beta dt) + K`` is assembled in band storage (nodes ordered
+Jacobian ``(1 - alpha_m) M / (beta dt^2) + (1 - alpha_f) (C gamma / (beta dt) + K)`` (divided by
+``1 - alpha_f``) is assembled in band storage (nodes ordered
 for a small bandwidth) and factored without pivoting: it is diagonally dominated by the mass term.
 Statics drops the inertia and solves ``(K + lam M) dx = -R`` with ``lam`` following the residual
 (pseudo-transient continuation, switched evolution relaxation), so that it starts from
@@ -54,8 +62,9 @@ from numba import njit
 
 from ..waves import airy_kinematics
 
-__all__ = ["ENV_SIZE", "V_SIZE", "band_solve", "bending_loads", "commit_viscoelastic", "loads", "newmark_steps", "static_solve",
-           "syrope_loads", "syrope_tension", "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
+__all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_solve", "bending_loads", "commit_viscoelastic",
+           "loads", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension", "table_tension",
+           "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
@@ -734,6 +743,39 @@ def _residual(F, M, A, fidx, R):
 
 
 @njit(cache=True)
+def _residual_alpha(F, M, A, G, wm, wg, fidx, R):
+    """R = wm M a - F + wg G at the free nodes (the generalised-alpha equilibrium divided by
+    ``1 - alpha_f``: ``wm = (1 - alpha_m) / (1 - alpha_f)``, ``wg = 1 / (1 - alpha_f)``); returns max |R|."""
+    res = 0.0
+    for i in range(F.shape[0]):
+        f = fidx[i]
+        if f < 0:
+            continue
+        for r in range(3):
+            v = 0.0
+            for c in range(3):
+                v += M[i, r, c] * A[i, c]
+            v = wm * v - F[i, r] + wg * G[i, r]
+            R[3 * f + r] = v
+            res = max(res, abs(v))
+    return res
+
+
+@njit(cache=True)
+def alpha_history(F, M, A, G, alpha_m, alpha_f, fidx):
+    """The share of a step's start in the next step's generalised-alpha equilibrium:
+    ``G = alpha_m M a - alpha_f F`` at the free nodes (zero elsewhere). [N]"""
+    for i in range(F.shape[0]):
+        for r in range(3):
+            v = 0.0
+            if fidx[i] >= 0:
+                for c in range(3):
+                    v += M[i, r, c] * A[i, c]
+                v = alpha_m * v - alpha_f * F[i, r]
+            G[i, r] = v
+
+
+@njit(cache=True)
 def _norm2(v):
     s = 0.0
     for k in range(v.size):
@@ -754,7 +796,8 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
     (``M c0 x`` of Newmark's acceleration, ``k_b d_n (z + depth)`` of the seabed, ``EA l / L`` of an
     element): about 1e-11 m for a line 30 m from the origin, far below any accuracy a step needs, and
     a level that a residual computed from those terms cannot be asked to go below when the time step
-    is small (``c0 = 1 / (beta dt^2)``).
+    is small (``c0`` the mass coefficient of the Newton matrix, ``1 / (beta dt^2)`` for Newmark,
+    ``(1 - alpha_m) / ((1 - alpha_f) beta dt^2)`` for the generalised alpha).
     """
     s = 0.0
     total = 0.0
@@ -803,12 +846,17 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                   cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx,
                   nfree, bw,
                   env, cur_depth,
-                  cur_speed, with_waves, beta, gamma, tol, max_iter, F, M, tension, stats):
-    """Advance ``px.shape[0]`` Newmark steps in place; ``px/pv/pa[k, channel]`` are the prescribed
-    positions, velocities and accelerations at the end of step k.
+                  cur_speed, with_waves, beta, gamma, alpha_m, alpha_f, G, tol, max_iter, F, M, tension, stats):
+    """Advance ``px.shape[0]`` generalised-alpha steps in place; ``px/pv/pa[k, channel]`` are the
+    prescribed positions, velocities and accelerations at the end of step k.
 
-    Returns the number of steps completed; a step whose Newton iteration fails leaves the state at
-    its start. ``stats`` receives (iterations, last residual, absolute force tolerance [N]).
+    ``beta``, ``gamma`` are Newmark's parameters and ``alpha_m``, ``alpha_f`` the weights of the step's
+    start in the inertia and in the forces (:func:`seacable.mooring.solver.generalized_alpha`; both 0:
+    Newmark, the equilibrium at the step's end). ``G`` (n, 3) holds ``alpha_m M a - alpha_f F`` of
+    the state at the start (:func:`alpha_history`) and is advanced with it; unused when both alphas
+    are 0. Returns the number of steps completed; a step whose Newton iteration fails leaves the
+    state (and ``G``) at its start. ``stats`` receives (iterations, last residual, absolute force
+    tolerance [N]).
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -820,6 +868,12 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     An = np.empty_like(A)
     c0 = 1.0 / (beta * dt * dt)
     c1 = gamma / (beta * dt)
+    # generalised alpha: the equilibrium divided by 1 - alpha_f, so that the Newton matrix is
+    # wm c0 M + c1 C + K, i.e. ((1 - alpha_m) c0 M + (1 - alpha_f) (c1 C + K)) / (1 - alpha_f)
+    galpha = alpha_m != 0.0 or alpha_f != 0.0
+    wm = (1.0 - alpha_m) / (1.0 - alpha_f)
+    wg = 1.0 / (1.0 - alpha_f)
+    cm = wm * c0
     env = env.copy()
     env[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
     for step in range(px.shape[0]):
@@ -843,9 +897,12 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
                   with_waves, F, M, tension,
-                  band, bw, c0, c1)
-            res = _residual(F, M, A, fidx, R)
-            scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0)
+                  band, bw, cm, c1)
+            if galpha:
+                res = _residual_alpha(F, M, A, G, wm, wg, fidx, R)
+            else:
+                res = _residual(F, M, A, fidx, R)
+            scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm)
             stats[0] += 1
             if res <= scale and it > 0:
                 ok = True
@@ -882,6 +939,8 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             A[:] = An
             return step
         commit_viscoelastic(visco)
+        if galpha:
+            alpha_history(F, M, A, G, alpha_m, alpha_f, fidx)  # F, M: the converged state's
     return px.shape[0]
 
 

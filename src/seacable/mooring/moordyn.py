@@ -306,9 +306,10 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
         return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
     run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
-                               tol=tolerance * 10, progress=progress)
+                               tol=tolerance * 10, progress=progress, spectral_radius=case.spectral_radius)
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
-                  settings={**settings, "time_step": run.time_step, "steps": run.steps}, velocity=run.velocity,
+                  settings={**settings, "time_step": run.time_step, "steps": run.steps,
+                            "spectral_radius": run.spectral_radius}, velocity=run.velocity,
                   acceleration=run.acceleration)
     ds.update(run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
@@ -316,14 +317,16 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
 
 
 def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_step: float = 0.1,
-                     output_interval: float = 0.5, tolerance: float = 1e-8, progress=None):
+                     output_interval: float = 0.5, tolerance: float = 1e-8, progress=None,
+                     spectral_radius: float = 1.0):
     """Run a MoorDyn input file: the static equilibrium, and with ``duration`` the response to ``motion``.
 
     ``motion`` is a fairlead motion of :mod:`seacable.mooring.motion` applied to every vessel point;
-    ``None`` holds them still. Returns a Dataset with the names of the
+    ``None`` holds them still; ``spectral_radius`` that of the generalised-alpha scheme (1: average
+    acceleration). Returns a Dataset with the names of the
     ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with several lines).
     The same as ``run_moordyn_case(load_moordyn_case(path).with_run(...))``.
     """
     case = load_moordyn_case(path).with_run(duration=duration, motion=motion, time_step=time_step,
-                                            output_interval=output_interval)
+                                            output_interval=output_interval, spectral_radius=spectral_radius)
     return run_moordyn_case(case, tolerance=tolerance, progress=progress)

@@ -350,7 +350,8 @@ def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="moo
     coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
     ds = make_dataset(data, coords, analysis=analysis, case=case, references=REFERENCES,
                       settings=_settings(model, time_step=run.time_step, steps=run.steps,
-                                         newton_iterations=run.iterations, **(settings or {})))
+                                         newton_iterations=run.iterations, spectral_radius=run.spectral_radius,
+                                         **(settings or {})))
     ds.attrs["interrupted"] = int(run.interrupted)
     ds.attrs["wall_time"] = run.wall_time
     return ds
@@ -363,7 +364,8 @@ def run_mooring_dynamic(case: Case, progress=None):
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
     run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
-                   tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress)
+                   tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
+                   spectral_radius=a.spectral_radius)
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
                                                        "rayleigh": list(a.rayleigh)})
 

@@ -1,0 +1,100 @@
+"""Snap loads of a tank-scale chain: the cycle maxima converge with the step, and the ringing of a coarse step.
+
+The case of issue 19 (``examples/snap_load_tank_chain.yaml``): 33 m of chain in a 3 m deep tank, 83
+segments, its fairlead moved on a circle of 0.2 m radius every 1.25 s (a platform motion: surge and heave
+a quarter period apart, 1.25 s ramp). The chain's properties are a tank-scale studless chain of our own (3.6 mm volume-equivalent diameter,
+0.0818 kg/m, EA 4e4 N, C_dn 2.4, C_dt 0.4, C_an 1, C_at 0.5; anchor 31 m from the fairlead, which is
+0.7 m below the surface): the line goes slack as the fairlead comes down towards the anchor and snaps
+taut as it rises away, about 87 N against 1.6 N at rest.
+
+The snap travels along the line as an axial wave (c = sqrt(EA / m) = 700 m/s, element 0.4 m: the
+highest axial frequency 2 c / h = 3500 rad/s), so its peak needs a step that resolves it,
+omega dt <~ 1. The full study (steps 2e-3 to 6.25e-5 s, 41, 83 and 166 segments, several spectral radii)
+is ``bench/bench_snap_convergence.py``; measured there with 6.25e-5 s: cycle maxima 86.95 and 87.22 N
+(rho_inf 1), 86.9 and 87.3 N (0.8); with 166 segments 88.7 and 85.4 N (2.3 % per cycle, 0.6 % in the
+mean of the two: the mesh study is too slow for a test), with 41 segments 80.2 and 79.5 N (9 % low).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import seacable as sc
+from seacable.mooring.run import prepare_mooring_dynamic
+from seacable.mooring.solver import simulate, static_equilibrium
+
+EXAMPLE = Path(__file__).parents[2] / "examples" / "snap_load_tank_chain.yaml"
+PERIOD = 1.25  # [s], the fairlead's circle
+
+
+def snap_case(time_step, spectral_radius=1.0, cycles=1, n_elements=83):
+    """The example case, ``cycles`` periods after the ramp, every step stored."""
+    data = sc.load_case(EXAMPLE).model_dump(mode="json", exclude_none=True)
+    data["analysis"].update(n_elements=n_elements, duration=PERIOD * (cycles + 1), time_step=time_step,
+                            output_interval=time_step, spectral_radius=spectral_radius)
+    return sc.Case(**data)
+
+
+def cycle_maxima(case):
+    """The largest fairlead tension of each period after the ramp, and the run. [N]"""
+    a = case.analysis
+    setup = prepare_mooring_dynamic(case)
+    start = static_equilibrium(setup.model, tol=a.tolerance).position
+    run = simulate(setup.model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
+                   tol=min(a.tolerance * 10, 1e-4), spectral_radius=a.spectral_radius)
+    fair = setup.model.network.line_nodes[0][-1]
+    tension = np.linalg.norm(run.support[:, fair], axis=1)
+    cycle = np.floor(run.time / PERIOD - 1e-9).astype(int)
+    n = round(a.duration / PERIOD) - 1
+    return np.array([tension[cycle == k].max() for k in range(1, n + 1)]), run, tension
+
+
+@pytest.fixture(scope="module")
+def converged():
+    """The first cycle's maximum at dt = 1.25e-4 s (omega dt = 0.44 for the highest axial mode)."""
+    return cycle_maxima(snap_case(1.25e-4))[0]
+
+
+def test_snap_load_maxima_converge_with_the_step(converged):
+    """Halving the step from 2.5e-4 s (omega dt 0.9) to 1.25e-4 s moves the snap maximum by < 2 %.
+
+    Measured 88.07 N and 87.14 N (1.1 %); the bench's 6.25e-5 s run gives 86.95 N, so the halving
+    sequence 88.07, 87.14, 86.95 contracts by 5 (at least first order in the peak, whose time is
+    resolved to a step) and 87.14 N is within 0.3 % of the limit. The 2 % of the issue bounds the change.
+    With rho_inf = 0.8 at 1.25e-4 s the maximum is the same to 0.3 % (86.89 N): at omega dt = 0.44 the
+    scheme's dissipation per step, 1 - rho(A), is 2.4e-5. (At 2.5e-4 s it is 3.6e-4 a step on the highest
+    modes and rho_inf = 0.8 gives 89.6 N, 2.8 % high: numerical damping does not buy a coarser step here.)
+    """
+    coarse = cycle_maxima(snap_case(2.5e-4))[0]
+    assert 80.0 < converged[0] < 95.0  # a snap: 50 times the 1.6 N at rest (not a slack-free swing)
+    assert coarse == pytest.approx(converged, rel=0.02)
+    damped = cycle_maxima(snap_case(1.25e-4, spectral_radius=0.8))[0]
+    assert damped == pytest.approx(converged, rel=0.01)
+
+
+def test_a_coarse_step_rings_with_average_acceleration_and_numerical_damping_tames_it(converged):
+    """dt = 2e-3 s (omega dt = 7 for the highest axial mode): average acceleration keeps the unresolved
+    axial modes at amplification 1, and the snap rings in them: measured cycle maxima 417 and 335 N,
+    4.8 and 3.8 times the converged 87 N (the issue's 86-112 N against 68 N at its step). The
+    generalised-alpha scheme multiplies those modes by rho(A(omega dt)) < 1 each step (0.81 at
+    omega dt = 7 for rho_inf = 0.6, 0.95 for 0.8; test_mooring_generalized_alpha): rho_inf = 0.6 gives 147
+    and 137 N (0.8: 238 and 241 N)
+    and halves the step-to-step (Nyquist) oscillation of the tension (RMS 19.1 N to 7.3 N). Neither is
+    the converged peak: a snap load needs omega dt <~ 1 (2.5e-4 s here) whatever the spectral radius,
+    since numerical damping removes the unresolved modes, it does not resolve them.
+    """
+    ringing, _, t_avg = cycle_maxima(snap_case(2e-3, cycles=2))
+    damped, _, t_damped = cycle_maxima(snap_case(2e-3, spectral_radius=0.6, cycles=2))
+
+    def nyquist_rms(tension):
+        alternating = (tension[2:] - 2 * tension[1:-1] + tension[:-2]) / 4
+        return float(np.sqrt(np.mean(alternating[round(PERIOD / 2e-3):] ** 2)))  # after the ramp
+
+    # the defect: maxima more than twice the converged one with average acceleration
+    assert np.all(ringing > 2.0 * converged[0])
+    # the spurious excess over the converged maximum at least halved, and the ringing too
+    assert np.all(damped - converged[0] < 0.5 * (ringing - converged[0]))
+    assert nyquist_rms(t_damped) < 0.5 * nyquist_rms(t_avg)
