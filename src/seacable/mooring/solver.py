@@ -19,6 +19,7 @@ import numpy as np
 from ..errors import ConvergenceError, SeacableWarning
 from . import kernel as K
 from .checks import check_network
+from ..seastate import no_sea
 from .network import FREE, PRESCRIBED, Network
 
 __all__ = [
@@ -42,7 +43,10 @@ class Water:
     per unit of projected area (diameter times length); ``friction`` is Coulomb's coefficient,
     regularised below ``friction_velocity`` [m/s]. ``current_depths`` (>= 0, increasing) and
     ``current_speeds`` give a profile towards ``current_heading``. Waves: ``wave_height`` (crest to
-    trough), ``wave_period``, ``wave_heading``, ``wave_phase``. ``rayleigh_mass`` is the
+    trough), ``wave_period``, ``wave_heading``, ``wave_phase``; an irregular sea ``sea``
+    (:class:`seacable.seastate.SeaComponents`, its kinematics precomputed on a grid by
+    :meth:`MooringModel.prepare_sea`); ``stretching`` the kinematics above the still-water level
+    ("none": the z = 0 values, "wheeler": Wheeler stretching). ``rayleigh_mass`` is the
     mass-proportional Rayleigh coefficient [1/s].
     """
 
@@ -62,6 +66,8 @@ class Water:
     wave_heading: float = 0.0
     wave_phase: float = 0.0
     rayleigh_mass: float = 0.0
+    sea: object = None            # an irregular sea (seacable.seastate.SeaComponents) or None
+    stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         env = np.zeros(K.ENV_SIZE)
@@ -138,6 +144,7 @@ class MooringModel:
         else:
             ramp = 1e-3
         self.env = self.water.env_vector(max(ramp, 1e-9))
+        self.sea = no_sea(self.water.stretching)  # the kernel's packed irregular sea (prepare_sea fills it)
         self.cur_depth = np.asarray(self.water.current_depths, float)
         self.cur_speed = np.asarray(self.water.current_speeds, float)
         # strain-tension tables (lo, hi, strain, tension) of the elements that have one
@@ -153,6 +160,38 @@ class MooringModel:
         if syrope is not None:
             self.visco[:, [K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = syrope
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
+
+    def prepare_sea(self, duration: float, positions) -> None:
+        """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
+
+        The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
+        the box of ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) widened
+        by Hs and two grid steps each side, and in depth the water down to the deepest of them
+        (or the seabed). A point outside gets the values at the box's edge. Its size is checked against
+        the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing to do.
+        """
+        sea = self.water.sea
+        if sea is None:
+            return
+        from .._limits import check_run_size
+        from ..seastate import grid_size, kinematics_grid
+
+        P = np.asarray(positions, float).reshape(-1, 3)
+        cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
+        xi = P[:, 0] * cb + P[:, 1] * sb
+        ze = -P[:, 0] * sb + P[:, 1] * cb
+        _, (_, dx, _, _) = grid_size(sea, duration, ((0.0, 0.0), (0.0, 0.0)), 0.0)
+        pad = 4.0 * math.sqrt(sea.m0) + 2.0 * dx
+        box = ((float(xi.min()) - pad, float(xi.max()) + pad), (float(ze.min()) - pad, float(ze.max()) + pad))
+        zmin = float(P[:, 2].min()) - pad
+        if self.water.depth is not None:
+            zmin = max(zmin, -float(self.water.depth))
+        (nt, nx, ny, nz), _ = grid_size(sea, duration, box, zmin)
+        check_run_size("the irregular sea's kinematics grid", steps=0.0,
+                       stored_values=float(nt) * nx * ny * (6 * nz + 1),
+                       fix=f"shorten analysis.duration or narrow environment.waves.frequency_range (grid of {nt} "
+                           f"times x {nx} x {ny} horizontal x {nz} depth points)")
+        self.sea = kinematics_grid(sea, duration, box, zmin, stretching=self.water.stretching)
 
     def element_args(self):
         n = self.network
@@ -176,7 +215,7 @@ class MooringModel:
         if settled and self.visco.shape[0]:
             env = env.copy()
             env[K.E_VDT] = 0.0
-        K.loads(X, V, t, *self.element_args(), self.fidx, env, self.cur_depth, self.cur_speed, waves,
+        K.loads(X, V, t, *self.element_args(), self.fidx, env, self.cur_depth, self.cur_speed, waves, self.sea,
                 F, M, tension, np.zeros((0, 2 * self.bw + 1)), self.bw, 0.0, 0.0)
         support = F - np.einsum("nij,nj->ni", M, A)
         return F, M, tension, support
@@ -363,6 +402,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     pres = np.flatnonzero(net.channel >= 0)
     X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
     model.settle_viscoelastic(X, np.zeros_like(V))
+    # an irregular sea: its kinematics on a grid over the nodes and the fairleads' range
+    t_out = np.linspace(0.0, duration, n_out + 1)
+    model.prepare_sea(duration, np.concatenate((X, channels(t_out)[0].reshape(-1, 3))))
     Fi, Mi, _, _ = model.evaluate(X, V, A, settled=True)
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
@@ -386,7 +428,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             def newmark(t, dtk, px, pv, pa):
                 return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
                                        model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
-                                       beta, gamma, tol, max_iter, F, M, tension, stats)
+                                       model.sea, beta, gamma, tol, max_iter, F, M, tension, stats)
 
             done, spent = advance_interval(k * output_interval, h, sub, channels, newmark, stats, max_halvings,
                                            max_iter, "mooring", "smaller time_step, more elements, or check the "
