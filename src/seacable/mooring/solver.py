@@ -161,21 +161,12 @@ class MooringModel:
             self.visco[:, [K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = syrope
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
 
-    def prepare_sea(self, duration: float, positions) -> None:
-        """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
-
-        The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
-        the box of ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) widened
-        by Hs and two grid steps each side, and in depth the water down to the deepest of them
-        (or the seabed). A point outside gets the values at the box's edge. Its size is checked against
-        the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing to do.
-        """
-        sea = self.water.sea
-        if sea is None:
-            return
+    def _sea_grid(self, duration: float, positions):
+        """(box, z_min, grid counts) of the irregular sea's grid over ``positions``, size-checked."""
         from .._limits import check_run_size
-        from ..seastate import grid_size, kinematics_grid
+        from ..seastate import grid_size
 
+        sea = self.water.sea
         P = np.asarray(positions, float).reshape(-1, 3)
         cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
         xi = P[:, 0] * cb + P[:, 1] * sb
@@ -189,9 +180,31 @@ class MooringModel:
         (nt, nx, ny, nz), _ = grid_size(sea, duration, box, zmin)
         check_run_size("the irregular sea's kinematics grid", steps=0.0,
                        stored_values=float(nt) * nx * ny * (6 * nz + 1),
-                       fix=f"shorten analysis.duration or narrow environment.waves.frequency_range (grid of {nt} "
+                       fix=f"shorten analysis.duration or narrow environment.waves.frequency_range (a grid of {nt} "
                            f"times x {nx} x {ny} horizontal x {nz} depth points)")
-        self.sea = kinematics_grid(sea, duration, box, zmin, stretching=self.water.stretching)
+        return box, zmin
+
+    def check_sea(self, duration: float, positions) -> None:
+        """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
+        if self.water.sea is not None:
+            self._sea_grid(duration, positions)
+
+    def prepare_sea(self, duration: float, positions) -> None:
+        """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
+
+        The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
+        the box of ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) widened
+        by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water down to the deepest
+        of them (or the seabed). A point outside gets the values at the box's edge. Its size is checked
+        against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
+        to do.
+        """
+        if self.water.sea is None:
+            return
+        from ..seastate import kinematics_grid
+
+        box, zmin = self._sea_grid(duration, positions)
+        self.sea = kinematics_grid(self.water.sea, duration, box, zmin, stretching=self.water.stretching)
 
     def element_args(self):
         n = self.network
