@@ -256,6 +256,23 @@ def test_with_a_wave_the_dry_part_follows_the_instantaneous_surface():
     assert np.all(F[top, :2] == 0.0)
 
 
+def test_a_node_between_the_still_water_level_and_the_crest_gets_its_water_load():
+    """The element from z = -9.5 to +0.5 m under the crest (eta = +1 m, deep water, H = 2 m, T = 10 s): the
+    top node is in the water, so it gets Morison drag from the crest's horizontal velocity, held at its
+    z = 0 value u = omega H/2 (constant extrapolation; the crest's horizontal acceleration is 0):
+    F_x = 1/2 rho d (L/2) C_dn u^2 (closed form, 1e-12). Before the wave zone it got nothing (z > 0)."""
+    net = _vertical_element(half=5.0)
+    X = net.position.copy()
+    X[:, 2] -= 4.5
+    H, T = 2.0, 10.0
+    model = MooringModel(net.replace(position=X), Water(depth=None, density=1025.0, gravity=9.80665,
+                                                        wave_height=H, wave_period=T))
+    F, _, _, _ = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), t=0.0, waves=True)
+    top = int(np.argmax(X[:, 2]))
+    u = 2 * math.pi / T * H / 2
+    assert F[top, 0] == pytest.approx(0.5 * 1025.0 * 0.1 * 10.2 / 2 * 1.2 * u * u, rel=1e-12)
+
+
 def test_mooring_dynamic_with_an_irregular_sea_writes_the_elevation():
     """The OC3 line in a JONSWAP sea (case file): the run finishes, and its wave_elevation is the sea's
     elevation at the origin (direct sum of the same seeded components, 1e-12 m)."""
