@@ -319,3 +319,39 @@ def test_a_regular_wave_case_is_read_as_before_and_a_table_sea_has_the_tables_m0
     assert sea.band * 400 == pytest.approx(hi - lo, rel=1e-12)
     x = np.linspace(lo, hi, 4001)
     assert sea.m0 == pytest.approx(np.trapezoid(np.interp(x, w, s), x), rel=0.01)
+
+
+@pytest.mark.parametrize(("option", "name"), [("3 WaveKin", "WaveKin"), ("1 Currents", "Currents")])
+def test_a_moordyn_deck_asking_for_water_kinematics_runs_its_statics_but_refuses_a_dynamic_run(tmp_path, option,
+                                                                                                name):
+    """MoorDyn's WaveKin/Currents read its own wave and current files (or a coupled code): the statics (in still
+    water, as MoorDyn's initial conditions) run with a warning; a dynamic run is refused, naming the option."""
+    from seacable.io.moordyn import load_moordyn_case
+    from seacable.mooring.moordyn import prepare_moordyn
+
+    text = f"""--- MoorDyn input file ---
+---------------------- LINE TYPES -----------------------------------
+TypeName   Diam    Mass/m     EA     BA/-zeta    EI    Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)    (N-s/-)     (-)   (-)    (-)    (-)     (-)
+chain      0.1     50.0       1e9    -1.0        0     1.2    1.0    0.2     0.0
+---------------------- POINTS ---------------------------------------
+ID   Attachment  X       Y     Z      Mass   Volume  CdA    CA
+(#)  (-)         (m)     (m)   (m)    (kg)   (mˆ3)   (m^2)  (-)
+1    Fixed       -400    0     -100   0      0       0      0
+2    Vessel      -10     0     -10    0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  Outputs
+(#)  (name)     (#)      (#)      (m)       (-)      (-)
+1    chain      1        2        420       20       -
+---------------------- OPTIONS -----------------------------------------
+100     WtrDpth
+{option}
+------------------------- need this line -------------------------------------
+"""
+    path = tmp_path / "deck.txt"
+    path.write_text(text)
+    with pytest.warns(sc.SeacableWarning, match=f"option {name}"):
+        prepare_moordyn(load_moordyn_case(path))
+    with pytest.warns(sc.SeacableWarning), pytest.raises(InputError, match=rf"option {name} = \S+ asks MoorDyn .* "
+                                                                              "Suggested fix"):
+        prepare_moordyn(load_moordyn_case(path).with_run(duration=10.0, time_step=0.1, output_interval=0.5))
