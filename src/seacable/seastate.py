@@ -69,7 +69,12 @@ S_Y0, S_DY, S_NY = 8, 9, 10       # across it (zeta = -x sin b + y cos b)
 S_COS, S_SIN = 11, 12             # cos b, sin b of the mean heading
 S_ZC, S_ZH, S_NZ = 13, 14, 15     # depth levels z = -c (exp(i h) - 1), i = 0 .. nz - 1
 S_DEPTH = 16                      # water depth (inf: deep) [m]
-GRID_HEADER = 17
+S_ZMIN = 17                       # the grid's deepest point: no wave kinematics below [m]
+GRID_HEADER = 18
+
+#: Below the depth where the sea's horizontal velocity standard deviation falls under this fraction of its
+#: value at z = 0 the kinematics grid stops and the waves' kinematics are neglected (:func:`cutoff_depth`). [-]
+CUTOFF = 1e-3
 
 
 def pierson_moskowitz(omega, hs, tp):
@@ -315,6 +320,19 @@ def synthesise(spectrum, *, n_components, omega_range, seed, heading=0.0, spread
                          gravity=float(gravity), mean_heading=float(heading), band=dw, scale=scale)
 
 
+def cutoff_depth(sea: SeaComponents, fraction=CUTOFF) -> float:
+    """The depth below which the sea's horizontal velocity standard deviation ``sqrt(sum (a w C(z))^2 / 2)``
+    is under ``fraction`` of its value at z = 0 (the seabed, -d, when it never is). [m]"""
+    top = 60.0 / float(np.min(sea.wave_number))     # exp(-60): far below any fraction asked
+    if math.isfinite(sea.depth):
+        top = min(top, sea.depth)
+    z = -np.linspace(0.0, top, 2001)
+    ch, _ = sea.profiles(z)
+    sd = np.sqrt(np.sum((sea.amplitude * sea.omega * ch) ** 2, axis=-1))
+    below = np.flatnonzero(sd < fraction * sd[0])
+    return -top if below.size == 0 else float(z[below[0]])
+
+
 def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10):
     """Grid counts (nt, nx, ny, nz) and steps of :func:`kinematics_grid` (for a size check first)."""
     wmax = float(np.max(sea.omega))
@@ -349,7 +367,7 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, stretching="none",
     (x0, _), (y0, _) = box
     dy = dx
     cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
-    head = np.array([1.0, 0.0, 0.0, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth])
+    head = np.array([1.0, 0.0, 0.0, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min])
     head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
     xi = x0 + dx * np.arange(nx)
     ze = y0 + dy * np.arange(ny)
@@ -420,9 +438,11 @@ def grid_point(sea, x, y, zs, t):
     """Kinematics of the packed grid at (x, y) and linear-theory depth ``zs`` (<= 0) at time ``t``.
 
     Returns ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2]: multilinear in t, xi, zeta and the depth
-    level's index; clamped at the grid's edges (a point below the grid's deepest level gets that
-    level's values).
+    level's index; clamped at the grid's horizontal and time edges. Below the grid's deepest point
+    (``sea[S_ZMIN]``, :func:`cutoff_depth` or the seabed) the waves' kinematics are neglected: zeros.
     """
+    if zs < sea[S_ZMIN]:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     cb, sb = sea[S_COS], sea[S_SIN]
     nt, nx, ny, nz = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NZ])
     it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)

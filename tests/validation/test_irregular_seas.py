@@ -144,12 +144,12 @@ def test_one_component_reduces_to_the_regular_airy_wave(depth):
     assert np.max(np.abs(eta - ref.elevation)) < 1e-12 * H
     # the grid, at its own points, in the compiled kernel's interpolation
     box = ((-20.0, 30.0), (-5.0, 5.0))
-    sea_arr = kinematics_grid(sea, 10.0, box, -30.0)
+    sea_arr = kinematics_grid(sea, 10.0, box, -60.0)
     dt, x0, dx, y0, dy, zc, zh = (sea_arr[i] for i in (3, 5, 6, 8, 9, 13, 14))
     cb, sb = math.cos(0.3), math.sin(0.3)
     d = math.inf if depth is None else depth
     k = wave_number(T, depth)
-    for it, ix, iz in ((3, 2, 0), (17, 5, 4), (25, 6, 6)):
+    for it, ix, iz in ((3, 2, 0), (17, 5, 4), (25, 6, 8)):
         xi, tt, zz = x0 + ix * dx, it * dt, -zc * math.expm1(zh * iz)
         px, py = xi * cb, xi * sb          # on the grid's line across (zeta = 0 is not a grid line: use y0)
         px, py = px - y0 * sb, py + y0 * cb
@@ -158,6 +158,20 @@ def test_one_component_reduces_to_the_regular_airy_wave(depth):
         assert np.max(np.abs(np.array(got) - np.array(want))) < 1e-12 * scale * 2 * math.pi / T
         e_ref = H / 2 * math.cos(k * (px * cb + py * sb) - 2 * math.pi / T * tt + 0.7)
         assert grid_eta(sea_arr, px, py, tt) == pytest.approx(e_ref, abs=1e-12 * H)
+
+
+def test_the_grid_stops_where_the_waves_die_out():
+    """One deep-water component: its velocity decays as exp(k z), so the cutoff depth where it falls to 1e-3
+    of the surface's is ln(1e-3) / k (closed form; to the search's step 60/k / 2000); below the grid's
+    deepest point the kinematics are zero, above it they are not."""
+    sea = _one_component(None)
+    k = float(sea.wave_number[0])
+    from seacable.seastate import cutoff_depth
+
+    assert cutoff_depth(sea) == pytest.approx(math.log(1e-3) / k, abs=60.0 / k / 2000)
+    arr = kinematics_grid(sea, 5.0, ((-10.0, 10.0), (0.0, 0.0)), -50.0)
+    assert grid_point(arr, 0.0, 0.0, -50.001, 1.0) == (0.0,) * 6
+    assert np.any(np.array(grid_point(arr, 0.0, 0.0, -49.9, 1.0)) != 0.0)
 
 
 def test_grid_interpolation_error_is_within_its_bound():

@@ -164,17 +164,20 @@ class MooringModel:
     def _sea_grid(self, duration: float, positions):
         """(box, z_min, grid counts) of the irregular sea's grid over ``positions``, size-checked."""
         from .._limits import check_run_size
-        from ..seastate import grid_size
+        from ..seastate import cutoff_depth, grid_size
 
         sea = self.water.sea
         P = np.asarray(positions, float).reshape(-1, 3)
+        # only the points above the depth where the waves die out need the grid (below it: no kinematics)
+        zcut = cutoff_depth(sea)
+        P = P[P[:, 2] >= zcut] if np.any(P[:, 2] >= zcut) else P[np.argmax(P[:, 2])][None]
         cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
         xi = P[:, 0] * cb + P[:, 1] * sb
         ze = -P[:, 0] * sb + P[:, 1] * cb
         _, (_, dx, _, _) = grid_size(sea, duration, ((0.0, 0.0), (0.0, 0.0)), 0.0)
         pad = 4.0 * math.sqrt(sea.m0) + 2.0 * dx
         box = ((float(xi.min()) - pad, float(xi.max()) + pad), (float(ze.min()) - pad, float(ze.max()) + pad))
-        zmin = float(P[:, 2].min()) - pad
+        zmin = max(float(P[:, 2].min()) - pad, zcut)
         if self.water.depth is not None:
             zmin = max(zmin, -float(self.water.depth))
         (nt, nx, ny, nz), _ = grid_size(sea, duration, box, zmin)
@@ -193,9 +196,11 @@ class MooringModel:
         """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
 
         The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
-        the box of ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) widened
+        the box of those ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) that lie
+        above the depth where the waves die out (:func:`seacable.seastate.cutoff_depth`: their velocity
+        standard deviation under 0.1 % of the surface's; below it the kinematics are neglected), widened
         by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water down to the deepest
-        of them (or the seabed). A point outside gets the values at the box's edge. Its size is checked
+        of them (or that depth, or the seabed). A point outside the box gets the values at its edge. Its size is checked
         against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
         to do.
         """
