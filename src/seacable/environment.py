@@ -9,10 +9,9 @@ from __future__ import annotations
 
 import math
 import warnings
-
-import numpy as np
 from typing import Literal
 
+import numpy as np
 from pydantic import Field, field_validator, model_validator
 
 from ._model import Model, quantity
@@ -50,7 +49,7 @@ class Current(Model):
     speeds: tuple[float, ...] | None = Field(None, description="Profile speeds. [m/s]")
 
     @model_validator(mode="after")
-    def _check(self) -> "Current":
+    def _check(self) -> Current:
         _warn_if_degrees("current.heading", self.heading, 2 * math.pi)
         if (self.depths is None) != (self.speeds is None):
             raise ValueError("needs both 'depths' and 'speeds' for a profile, or neither. "
@@ -70,12 +69,12 @@ class Current(Model):
         return self
 
     @classmethod
-    def uniform(cls, speed: float, heading: float = 0.0) -> "Current":
+    def uniform(cls, speed: float, heading: float = 0.0) -> Current:
         """A current of one ``speed`` [m/s] at every depth, towards ``heading`` [rad]."""
         return cls(speed=speed, heading=heading)
 
     @classmethod
-    def profile(cls, depths, speeds, heading: float = 0.0) -> "Current":
+    def profile(cls, depths, speeds, heading: float = 0.0) -> Current:
         """A depth profile: ``speeds`` [m/s] at ``depths`` [m] below the surface."""
         return cls(depths=tuple(float(d) for d in depths), speeds=tuple(float(v) for v in speeds),
                    heading=heading)
@@ -112,7 +111,7 @@ class Seabed(Model):
         0.0, description="Coulomb friction coefficient. [-]")
 
     @model_validator(mode="after")
-    def _check(self) -> "Seabed":
+    def _check(self) -> Seabed:
         _warn_if_degrees("seabed.slope", self.slope, math.radians(45))
         return self
 
@@ -145,7 +144,7 @@ class Waves(Model):
         "none", description="Kinematics above z = 0: 'none' (constant) or 'wheeler' (Wheeler stretching).")
 
     @model_validator(mode="after")
-    def _check(self) -> "Waves":
+    def _check(self) -> Waves:
         _warn_if_degrees("waves.heading", self.heading, 2 * math.pi)
         return self
 
@@ -203,7 +202,7 @@ class IrregularWaves(Model):
         "none", description="Kinematics above z = 0: 'none' (constant) or 'wheeler' (Wheeler stretching).")
 
     @model_validator(mode="after")
-    def _check(self) -> "IrregularWaves":
+    def _check(self) -> IrregularWaves:
         _warn_if_degrees("waves.heading", self.heading, 2 * math.pi)
         if self.spectrum == "table":
             if self.frequencies is None or self.density is None:
@@ -306,7 +305,7 @@ class Environment(Model):
         return value
 
     @model_validator(mode="after")
-    def _check(self) -> "Environment":
+    def _check(self) -> Environment:
         if not 900.0 <= self.water_density <= 1100.0:
             warnings.warn(f"environment.water_density = {self.water_density:g} kg/m^3 is far from "
                           "water's ~1000-1030 kg/m^3.", SeacableWarning, stacklevel=3)

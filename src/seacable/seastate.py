@@ -55,8 +55,18 @@ from numba import njit
 
 from .waves import STANDARD_GRAVITY, wave_number
 
-__all__ = ["SeaComponents", "cos2s_spreading", "frequency_range", "grid_point", "jonswap", "kinematics_grid",
-           "pierson_moskowitz", "synthesise", "table_spectrum", "GRID_HEADER"]
+__all__ = [
+    "GRID_HEADER",
+    "SeaComponents",
+    "cos2s_spreading",
+    "frequency_range",
+    "grid_point",
+    "jonswap",
+    "kinematics_grid",
+    "pierson_moskowitz",
+    "synthesise",
+    "table_spectrum",
+]
 
 #: Energy fraction left out of the default frequency range (half below, half above). [-]
 TAIL_ENERGY = 1e-2
@@ -338,16 +348,16 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
     wmax = float(np.max(sea.omega))
     kmax = float(np.max(sea.wave_number))
     dt = 2.0 * math.pi / wmax / per_period
-    nt = int(math.ceil(t_end / dt)) + 2
+    nt = math.ceil(t_end / dt) + 2
     dx = 2.0 * math.pi / kmax / per_wavelength
     (x0, x1), (y0, y1) = box
-    nx = max(int(math.ceil((x1 - x0) / dx)) + 1, 1) if x1 > x0 else 1
+    nx = max(math.ceil((x1 - x0) / dx) + 1, 1) if x1 > x0 else 1
     long_crested = bool(np.all(sea.heading == sea.mean_heading))
-    ny = 1 if long_crested or y1 <= y0 else max(int(math.ceil((y1 - y0) / dx)) + 1, 1)
+    ny = 1 if long_crested or y1 <= y0 else max(math.ceil((y1 - y0) / dx) + 1, 1)
     zc = 3.0 / kmax                         # top level spacing about 0.3 / k_max
     zh = 0.1                                # levels 10 % further apart each
     depth_span = max(-z_min, 0.0)
-    nz = int(math.ceil(math.log1p(depth_span / zc) / zh)) + 2
+    nz = math.ceil(math.log1p(depth_span / zc) / zh) + 2
     return (nt, nx, ny, nz), (dt, dx, zc, zh)
 
 

@@ -113,16 +113,30 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from .. import _limits, _validate
 from pydantic import ValidationError
 
+from .. import _limits, _validate
 from .._model import format_validation_error, suggest
 from ..errors import InputError, SeacableWarning
 
-__all__ = ["MoorDynBody", "MoorDynCase", "MoorDynFailure", "MoorDynInput", "MoorDynLine", "MoorDynLineType",
-           "MoorDynExternalLoad", "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "check_water_kinematics", "is_moordyn_file", "load_moordyn_case",
-           "moordyn_axial_damping", "moordyn_system", "read_moordyn"]
+__all__ = [
+    "MoorDynBody",
+    "MoorDynCase",
+    "MoorDynExternalLoad",
+    "MoorDynFailure",
+    "MoorDynInput",
+    "MoorDynLine",
+    "MoorDynLineType",
+    "MoorDynPoint",
+    "MoorDynRod",
+    "MoorDynRodType",
+    "check_water_kinematics",
+    "is_moordyn_file",
+    "load_moordyn_case",
+    "moordyn_axial_damping",
+    "moordyn_system",
+    "read_moordyn",
+]
 
 
 @dataclass(frozen=True)

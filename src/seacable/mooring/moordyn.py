@@ -28,8 +28,14 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..errors import InputError, SeacableWarning
-from ..io.moordyn import (MoorDynCase, MoorDynInput, check_water_kinematics, load_moordyn_case,
-                          moordyn_axial_damping, read_moordyn)
+from ..io.moordyn import (
+    MoorDynCase,
+    MoorDynInput,
+    check_water_kinematics,
+    load_moordyn_case,
+    moordyn_axial_damping,
+    read_moordyn,
+)
 from ..results import make_dataset, var
 from .motion import bind
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions

@@ -17,9 +17,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import ConvergenceError, SeacableWarning
+from ..seastate import no_sea
 from . import kernel as K
 from .checks import check_network
-from ..seastate import no_sea
 from .network import FREE, PRESCRIBED, Network
 
 __all__ = [

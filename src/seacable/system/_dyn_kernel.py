@@ -38,7 +38,15 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import E_VDT, GRID_HEADER, _fluid, _force_tolerance, commit_viscoelastic, loads, predict_nodes
+from ..mooring.kernel import (
+    E_VDT,
+    GRID_HEADER,
+    _fluid,
+    _force_tolerance,
+    commit_viscoelastic,
+    loads,
+    predict_nodes,
+)
 from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
