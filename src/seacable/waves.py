@@ -23,8 +23,9 @@ hyperbolic ratios are evaluated in exponential form, so deep water (``depth = in
 C = S = exp(k z) and nothing overflows.
 
 Linear theory is valid only below z = 0. Here the kinematics above the still-water level are
-the z = 0 values held constant up to the instantaneous surface (constant extrapolation; no
-Wheeler stretching), points above the surface (z > eta) get zero, and points below the seabed
+the z = 0 values held constant up to the instantaneous surface (constant extrapolation; Wheeler
+stretching is an option of the mooring kernel, :func:`seacable.mooring.kernel._fluid`, through
+:func:`airy_linear`), points above the surface (z > eta) get zero, and points below the seabed
 (a node pressed into a soft seabed) get the seabed values. The accelerations are local
 (d/dt at a fixed point); the convective terms are second order in H and dropped, consistently
 with linear theory.

@@ -378,3 +378,13 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  Outputs
     with pytest.warns(sc.SeacableWarning), pytest.raises(InputError, match=rf"option {name} = \S+ asks MoorDyn .* "
                                                                               "Suggested fix"):
         prepare_moordyn(load_moordyn_case(path).with_run(duration=10.0, time_step=0.1, output_interval=0.5))
+
+
+def test_the_mooring_system_model_refuses_an_irregular_sea():
+    """The system model (bodies, several lines) runs regular waves only: an irregular sea is refused by name."""
+    from seacable.environment import SystemEnvironment
+    from seacable.system.dynamics import _water
+
+    env = SystemEnvironment(depth=100.0, waves={"spectrum": "jonswap", "hs": 2.0, "tp": 8.0})
+    with pytest.raises(InputError, match=r"environment\.waves: an irregular sea \(spectrum 'jonswap'\) .* Suggested fix"):
+        _water(env, None)

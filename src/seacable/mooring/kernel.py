@@ -21,11 +21,16 @@ so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. A line with b
 adds MoorDyn v2's nodal bending moments at its inner nodes (:func:`bending_loads`, with their exact
 tangent, which couples a node's two neighbours: the band is widened for it only when a line bends).
 Half of each element's mass and
-weight in water goes to each end; the part of a half element above the still water level (straight
-from the node to the element's middle) gets its buoyancy back (weight in air), and an attachment's
-buoyancy scales with its immersed fraction across the waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
-``P_n = I - t t^T`` and ``P_t = t t^T``. Morison loads on each half element use the node's velocity
-relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
+weight in water goes to each end; the part of a half element above the water surface (straight
+from the node to the element's middle, the surface taken linear between them: the still-water level,
+or with waves the instantaneous elevation eta at the node and over the middle, :func:`_surface`) gets its
+buoyancy back (weight in air), and an attachment's buoyancy scales with its immersed fraction across the
+instantaneous waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
+``P_n = I - t t^T`` and ``P_t = t t^T``. A node above the instantaneous surface gets no water load.
+Morison loads on each half element use the node's velocity relative to the water ``u = u_w - v``
+(current plus regular Airy waves or an irregular sea interpolated from its precomputed grid, the
+argument ``sea`` of :mod:`seacable.seastate`; above z = 0 the z = 0 kinematics or Wheeler stretching,
+:func:`_fluid`)::
 
     F = 1/2 rho d L/2 (C_dn |u_n| u_n + pi C_dt |u_t| u_t) + rho A L/2 ((1 + C_an) P_n + (1 + C_at) P_t) a_w
 

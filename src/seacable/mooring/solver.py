@@ -66,7 +66,7 @@ class Water:
     wave_heading: float = 0.0
     wave_phase: float = 0.0
     rayleigh_mass: float = 0.0
-    sea: object = None            # an irregular sea (seacable.seastate.SeaComponents) or None
+    sea: object = field(default=None, compare=False)  # an irregular sea (seastate.SeaComponents) or None
     stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
