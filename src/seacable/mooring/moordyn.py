@@ -168,7 +168,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
                    element_syrope=None if net.element_syrope is None else net.element_syrope[els])
-    return MooringModel(view, model.water)
+    line = MooringModel(view, model.water)
+    line.sea = model.sea  # an irregular sea's grid, when the run has one
+    return line
 
 
 def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None):

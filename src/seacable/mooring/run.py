@@ -143,8 +143,10 @@ def _own_model(model: MooringModel) -> MooringModel:
     if not np.any(loaded):
         return model
     keep = ~point
-    return MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
+    own = MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
         "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}), model.water)
+    own.sea = model.sea  # the irregular sea's grid of the run
+    return own
 
 
 def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
