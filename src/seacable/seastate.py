@@ -343,6 +343,27 @@ def cutoff_depth(sea: SeaComponents, fraction=CUTOFF) -> float:
     return -top if below.size == 0 else float(z[below[0]])
 
 
+def significant(sea: SeaComponents, z_top: float, fraction=CUTOFF) -> SeaComponents:
+    """The components that matter at and below depth ``z_top`` [m] (<= 0): the shortest ones are dropped
+    while their velocity variance at ``z_top`` (``(a w C(z_top))^2 / 2`` each) adds up to less than
+    ``fraction^2`` of the sea's there (a velocity error under ``fraction`` of its standard deviation).
+
+    A model whose nodes all stay below ``z_top`` needs neither their kinematics (they decay as exp(k z)) nor
+    their elevation (no node comes near the surface; with Wheeler stretching they shift the stretched depth
+    by their few centimetres of amplitude), and the grid's steps follow the shortest component kept.
+    """
+    ch, _ = sea.profiles(np.array([min(z_top, 0.0)]))
+    var = (sea.amplitude * sea.omega * ch[0]) ** 2
+    order = np.argsort(sea.wave_number)[::-1]           # shortest first
+    dropped = np.cumsum(var[order]) < fraction ** 2 * np.sum(var)
+    keep = np.sort(order[~dropped])
+    if keep.size == sea.omega.size:
+        return sea
+    return SeaComponents(amplitude=sea.amplitude[keep], omega=sea.omega[keep], wave_number=sea.wave_number[keep],
+                         heading=sea.heading[keep], phase=sea.phase[keep], depth=sea.depth, gravity=sea.gravity,
+                         mean_heading=sea.mean_heading, band=sea.band, scale=sea.scale)
+
+
 def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10):
     """Grid counts (nt, nx, ny, nz) and steps of :func:`kinematics_grid` (for a size check first)."""
     wmax = float(np.max(sea.omega))

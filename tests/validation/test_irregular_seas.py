@@ -205,7 +205,7 @@ def test_grid_interpolation_error_is_within_its_bound():
 def _fluid(env, sea, x, t):
     u, a = np.zeros(3), np.zeros(3)
     K._fluid(np.asarray(x, float), t, env, np.zeros(1), np.zeros(1), True, sea, u, a)
-    return u, a
+    return np.r_[u, a] if sea[0] > 0 else (u, a)
 
 
 @pytest.mark.parametrize("t", [0.0, 4.0])   # crest at x = 0, then trough
@@ -388,3 +388,48 @@ def test_the_mooring_system_model_refuses_an_irregular_sea():
     env = SystemEnvironment(depth=100.0, waves={"spectrum": "jonswap", "hs": 2.0, "tp": 8.0})
     with pytest.raises(InputError, match=r"environment\.waves: an irregular sea \(spectrum 'jonswap'\) .* Suggested fix"):
         _water(env, None)
+
+
+def test_only_the_components_that_matter_at_the_highest_node_are_gridded():
+    """At the surface every component of a JONSWAP sea is kept (the velocity spectrum's tail, w^-3, is far
+    above 1e-6 of the total); 70 m down the dropped (shortest) ones hold under 1e-6 of the velocity variance
+    there (the 1e-3 standard-deviation criterion, recomputed here from exp(k z) in deep water), and they
+    are many (the grid's steps follow the shortest component kept)."""
+    from seacable.seastate import significant
+
+    sea = _sea(n=200).components(None)
+    assert significant(sea, 0.0) is sea
+    kept = significant(sea, -70.0)
+    gone = ~np.isin(sea.omega, kept.omega)
+    var = (sea.amplitude * sea.omega * np.exp(sea.wave_number * -70.0)) ** 2
+    assert np.sum(var[gone]) < 1e-6 * np.sum(var)
+    assert gone.sum() > 100 and np.all(sea.wave_number[gone] > kept.wave_number.max())
+
+
+def test_the_models_grid_gives_the_seas_kinematics_at_the_fairlead():
+    """The OC3 case's model, its grid prepared for the run (components that matter at its highest node,
+    the nodes' box, the cutoff depth): the compiled kernel's water velocity and acceleration at the fairlead
+    (70 m deep) and at a node 150 m deep, at 40 random times, against the direct sum of all the sea's
+    components. Tolerance 5 % of the velocity (acceleration) standard deviation there: the interpolation's
+    bound is 7.2 % of the shortest kept component's amplitude (test_grid_interpolation_error_is_within_its_bound),
+    a small part of the standard deviation, and the dropped components hold under 0.1 % of it."""
+    from seacable.io.case_file import load_case
+    from seacable.mooring.run import prepare_mooring_dynamic
+
+    case = load_case(HERE / "data" / "seastate" / "oc3_jonswap.yaml")
+    setup = prepare_mooring_dynamic(case)
+    model = setup.model
+    X = model.network.position
+    model.prepare_sea(case.analysis.duration, X)
+    sea = model.water.sea
+    rng = np.random.default_rng(2)
+    for node in (X.shape[0] - 1, int(np.argmin(np.abs(X[:, 2] + 150.0)))):
+        p = X[node]
+        times = rng.uniform(0.0, case.analysis.duration, 40)
+        vel, acc, _ = sea.kinematics(times, p[0], p[1], p[2])
+        got = np.array([_fluid(model.env, model.sea, p, t) for t in times])
+        ch, _ = sea.profiles(np.array([p[2]]))
+        sd_u = math.sqrt(np.sum((sea.amplitude * sea.omega * ch[0]) ** 2) / 2)
+        sd_a = math.sqrt(np.sum((sea.amplitude * sea.omega**2 * ch[0]) ** 2) / 2)
+        assert np.max(np.abs(got[:, 0] - vel[:, 0])) < 0.05 * sd_u
+        assert np.max(np.abs(got[:, 3] - acc[:, 0])) < 0.05 * sd_a

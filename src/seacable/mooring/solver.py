@@ -162,15 +162,17 @@ class MooringModel:
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
 
     def _sea_grid(self, duration: float, positions):
-        """(box, z_min, grid counts) of the irregular sea's grid over ``positions``, size-checked."""
+        """(box, z_min, components) of the irregular sea's grid over ``positions``, size-checked."""
         from .._limits import check_run_size
-        from ..seastate import cutoff_depth, grid_size
+        from ..seastate import cutoff_depth, grid_size, significant
 
         sea = self.water.sea
         P = np.asarray(positions, float).reshape(-1, 3)
         # only the points above the depth where the waves die out need the grid (below it: no kinematics)
         zcut = cutoff_depth(sea)
         P = P[P[:, 2] >= zcut] if np.any(P[:, 2] >= zcut) else P[np.argmax(P[:, 2])][None]
+        # the components that matter below the highest point (all of them when it is near the surface)
+        sea = significant(sea, float(P[:, 2].max()) + 4.0 * math.sqrt(sea.m0))
         cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
         xi = P[:, 0] * cb + P[:, 1] * sb
         ze = -P[:, 0] * sb + P[:, 1] * cb
@@ -185,7 +187,7 @@ class MooringModel:
                        stored_values=float(nt) * nx * ny * (6 * nz + 1),
                        fix=f"shorten analysis.duration or narrow environment.waves.frequency_range (a grid of {nt} "
                            f"times x {nx} x {ny} horizontal x {nz} depth points)")
-        return box, zmin
+        return box, zmin, sea
 
     def check_sea(self, duration: float, positions) -> None:
         """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
@@ -200,7 +202,10 @@ class MooringModel:
         above the depth where the waves die out (:func:`seacable.seastate.cutoff_depth`: their velocity
         standard deviation under 0.1 % of the surface's; below it the kinematics are neglected), widened
         by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water down to the deepest
-        of them (or that depth, or the seabed). A point outside the box gets the values at its edge. Its size is checked
+        of them (or that depth, or the seabed). A point outside the box gets the values at its edge. Only
+        the components that matter below the highest of them (plus 4 sqrt(m0)) are gridded
+        (:func:`seacable.seastate.significant`): deep lines need no short waves, and a coarser
+        grid. Its size is checked
         against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
         to do.
         """
@@ -208,8 +213,8 @@ class MooringModel:
             return
         from ..seastate import kinematics_grid
 
-        box, zmin = self._sea_grid(duration, positions)
-        self.sea = kinematics_grid(self.water.sea, duration, box, zmin, stretching=self.water.stretching)
+        box, zmin, sea = self._sea_grid(duration, positions)
+        self.sea = kinematics_grid(sea, duration, box, zmin, stretching=self.water.stretching)
 
     def element_args(self):
         n = self.network
