@@ -382,11 +382,12 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
     return (nt, nx, ny, nz), (dt, dx, zc, zh)
 
 
-def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, stretching="none", per_period=20, per_wavelength=10,
-                    chunk=256):
+def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
+                    per_wavelength=10, chunk=256):
     """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`).
 
-    Time from 0 to ``t_end`` [s] (step: the shortest component period / ``per_period``); along and
+    Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``; a
+    long run takes its grid in windows of time, :meth:`seacable.mooring.solver.MooringModel.ensure_sea`); along and
     across the mean heading over ``box`` ((xi0, xi1), (zeta0, zeta1)) [m] in the rotated coordinates
     ``xi = x cos b + y sin b``, ``zeta = -x sin b + y cos b`` (step: the shortest wavelength /
     ``per_period``; one point across for a long-crested sea, whose field does not vary across); in
@@ -394,18 +395,18 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, stretching="none",
     the surface, 10 % more at each level). Linear interpolation between grid points errs by at most
     ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
     """
-    (nt, nx, ny, nz), (dt, dx, zc, zh) = grid_size(sea, t_end, box, z_min, per_period, per_wavelength)
+    (nt, nx, ny, nz), (dt, dx, zc, zh) = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength)
     (x0, _), (y0, _) = box
     dy = dx
     cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
-    head = np.array([1.0, 0.0, 0.0, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min])
+    head = np.array([1.0, 0.0, t_start, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min])
     head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
     xi = x0 + dx * np.arange(nx)
     ze = y0 + dy * np.arange(ny)
     zl = np.maximum(-zc * np.expm1(zh * np.arange(nz)), -sea.depth)
     XI, ZE = np.meshgrid(xi, ze, indexing="ij")
     gx, gy = XI * cb - ZE * sb, XI * sb + ZE * cb              # global coordinates of the grid columns
-    t = dt * np.arange(nt)
+    t = t_start + dt * np.arange(nt)
     eta = np.empty((nt, nx, ny))
     kin = np.empty((nt, nx, ny, nz, 6))
     for c0 in range(0, nt, chunk):

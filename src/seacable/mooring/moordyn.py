@@ -169,7 +169,7 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
                    element_syrope=None if net.element_syrope is None else net.element_syrope[els])
     line = MooringModel(view, model.water)
-    line.sea = model.sea  # an irregular sea's grid, when the run has one
+    line.sea, line._sea_spec = model.sea, model._sea_spec  # an irregular sea's grid, when the run has one
     return line
 
 

@@ -145,7 +145,7 @@ def _own_model(model: MooringModel) -> MooringModel:
     keep = ~point
     own = MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
         "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}), model.water)
-    own.sea = model.sea  # the irregular sea's grid of the run
+    own.sea, own._sea_spec = model.sea, model._sea_spec  # the irregular sea's grid of the run
     return own
 
 

@@ -18,6 +18,9 @@ import numpy as np
 
 from ..errors import ConvergenceError, SeacableWarning
 from ..seastate import no_sea
+
+#: Largest irregular-sea grid held at once (values, 8 bytes each); a longer run takes it in time windows.
+SEA_WINDOW_VALUES = 2.5e7
 from . import kernel as K
 from .checks import check_network
 from .network import FREE, PRESCRIBED, Network
@@ -145,6 +148,7 @@ class MooringModel:
             ramp = 1e-3
         self.env = self.water.env_vector(max(ramp, 1e-9))
         self.sea = no_sea(self.water.stretching)  # the kernel's packed irregular sea (prepare_sea fills it)
+        self._sea_spec = None
         self.cur_depth = np.asarray(self.water.current_depths, float)
         self.cur_speed = np.asarray(self.water.current_speeds, float)
         # strain-tension tables (lo, hi, strain, tension) of the elements that have one
@@ -162,7 +166,7 @@ class MooringModel:
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
 
     def _sea_grid(self, duration: float, positions):
-        """(box, z_min, components) of the irregular sea's grid over ``positions``, size-checked."""
+        """(box, z_min, components, window [s]) of the irregular sea's grid over ``positions``, size-checked."""
         from .._limits import check_run_size
         from ..seastate import cutoff_depth, grid_size, significant
 
@@ -182,12 +186,15 @@ class MooringModel:
         zmin = max(float(P[:, 2].min()) - pad, zcut)
         if self.water.depth is not None:
             zmin = max(zmin, -float(self.water.depth))
-        (nt, nx, ny, nz), _ = grid_size(sea, duration, box, zmin)
-        check_run_size("the irregular sea's kinematics grid", steps=0.0,
-                       stored_values=float(nt) * nx * ny * (6 * nz + 1),
-                       fix=f"shorten analysis.duration or narrow environment.waves.frequency_range (a grid of {nt} "
-                           f"times x {nx} x {ny} horizontal x {nz} depth points)")
-        return box, zmin, sea
+        (nt, nx, ny, nz), (dt, _, _, _) = grid_size(sea, duration, box, zmin)
+        per_time = float(nx) * ny * (6 * nz + 1)
+        # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
+        window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
+        nw = min(nt, math.ceil(window / dt) + 2)
+        check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time,
+                       fix=f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid "
+                           f"of {nx} x {ny} horizontal x {nz} depth points at each of {nw} times)")
+        return box, zmin, sea, window
 
     def check_sea(self, duration: float, positions) -> None:
         """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
@@ -211,10 +218,29 @@ class MooringModel:
         """
         if self.water.sea is None:
             return
-        from ..seastate import kinematics_grid
+        self._sea_spec = (*self._sea_grid(duration, positions), duration)
+        self.sea = no_sea(self.water.stretching)
+        self.ensure_sea(0.0, 0.0)
 
-        box, zmin, sea = self._sea_grid(duration, positions)
-        self.sea = kinematics_grid(sea, duration, box, zmin, stretching=self.water.stretching)
+    def ensure_sea(self, t0: float, t1: float) -> None:
+        """Make the irregular sea's grid cover the times [t0, t1] [s] (see :meth:`prepare_sea`).
+
+        A run whose grid is larger than ``SEA_WINDOW_VALUES`` values takes it in windows of time: the
+        window starting at ``t0`` is computed when [t0, t1] leaves the current one (a time loop calls this
+        once per output interval, results once per stored time, in increasing time). Nothing to do
+        without an irregular sea or before :meth:`prepare_sea`.
+        """
+        spec = self._sea_spec
+        if spec is None:
+            return
+        from ..seastate import S_DT, S_MODE, S_NT, S_T0, kinematics_grid
+
+        s = self.sea
+        if s[S_MODE] > 0 and s[S_T0] <= t0 and t1 <= s[S_T0] + s[S_DT] * (s[S_NT] - 1):
+            return
+        box, zmin, sea, window, duration = spec
+        end = max(t1, min(t0 + window, duration))
+        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching)
 
     def element_args(self):
         n = self.network
@@ -235,6 +261,8 @@ class MooringModel:
         F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
         tension = np.zeros(self.network.n_elements)
         env = self.env
+        if waves:
+            self.ensure_sea(t, t)
         if settled and self.visco.shape[0]:
             env = env.copy()
             env[K.E_VDT] = 0.0
@@ -448,6 +476,8 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     start = _time.perf_counter()
     try:
         for k in range(n_out):
+            model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
+
             def newmark(t, dtk, px, pv, pa):
                 return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
                                        model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
