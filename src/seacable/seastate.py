@@ -27,10 +27,13 @@ the sea is ergodic (no phase locking as with a double sum).
 
 Kinematics are the linear (Airy) superposition of the components (:mod:`seacable.waves` for each:
 dispersion relation, ``cosh(k (z + d)) / sinh(k d)`` profiles). For the time loop they are
-precomputed once on a grid (:func:`kinematics_grid`): in time, along and across the mean heading,
+precomputed on a grid (:func:`kinematics_grid`): in time, along and across the mean heading,
 and in depth below the still-water level (levels closer near the surface), and interpolated
 (multi-)linearly in the compiled kernel (:func:`grid_point`), so that a step costs the same as with a
-regular wave. Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
+regular wave. The grid covers the nodes above the depth where the waves die out (:func:`cutoff_depth`;
+below it no wave kinematics), holds only the components that matter at the highest of them
+(:func:`significant`), and a long run takes it in windows of time
+(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
 or Wheeler-stretched [2]_ (``z' = (z - eta) d / (d + eta)``, ``z' = z - eta`` in deep water): the
 stretched point ``z'`` is where the linear-theory kinematics are taken, so that the crest's
 kinematics are those of z = 0 and the seabed stays at the seabed.
@@ -59,11 +62,15 @@ __all__ = [
     "GRID_HEADER",
     "SeaComponents",
     "cos2s_spreading",
+    "cutoff_depth",
     "frequency_range",
+    "grid_eta",
     "grid_point",
     "jonswap",
     "kinematics_grid",
+    "no_sea",
     "pierson_moskowitz",
+    "significant",
     "synthesise",
     "table_spectrum",
 ]
