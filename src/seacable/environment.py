@@ -9,14 +9,15 @@ from __future__ import annotations
 
 import math
 import warnings
+from typing import Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ._model import Model, quantity
 from .errors import SeacableWarning
 
-__all__ = ["Current", "Environment", "Seabed", "SystemEnvironment", "Waves"]
+__all__ = ["Current", "Environment", "IrregularWaves", "Seabed", "SystemEnvironment", "Waves"]
 
 
 def _warn_if_degrees(name: str, value: float, limit: float) -> None:
@@ -48,7 +49,7 @@ class Current(Model):
     speeds: tuple[float, ...] | None = Field(None, description="Profile speeds. [m/s]")
 
     @model_validator(mode="after")
-    def _check(self) -> "Current":
+    def _check(self) -> Current:
         _warn_if_degrees("current.heading", self.heading, 2 * math.pi)
         if (self.depths is None) != (self.speeds is None):
             raise ValueError("needs both 'depths' and 'speeds' for a profile, or neither. "
@@ -68,12 +69,12 @@ class Current(Model):
         return self
 
     @classmethod
-    def uniform(cls, speed: float, heading: float = 0.0) -> "Current":
+    def uniform(cls, speed: float, heading: float = 0.0) -> Current:
         """A current of one ``speed`` [m/s] at every depth, towards ``heading`` [rad]."""
         return cls(speed=speed, heading=heading)
 
     @classmethod
-    def profile(cls, depths, speeds, heading: float = 0.0) -> "Current":
+    def profile(cls, depths, speeds, heading: float = 0.0) -> Current:
         """A depth profile: ``speeds`` [m/s] at ``depths`` [m] below the surface."""
         return cls(depths=tuple(float(d) for d in depths), speeds=tuple(float(v) for v in speeds),
                    heading=heading)
@@ -110,7 +111,7 @@ class Seabed(Model):
         0.0, description="Coulomb friction coefficient. [-]")
 
     @model_validator(mode="after")
-    def _check(self) -> "Seabed":
+    def _check(self) -> Seabed:
         _warn_if_degrees("seabed.slope", self.slope, math.radians(45))
         return self
 
@@ -128,6 +129,9 @@ class Waves(Model):
         Direction the waves travel towards, from +X towards +Y. [rad]
     phase
         Phase of the elevation at the origin at t = 0. [rad]
+    stretching
+        Kinematics above the still-water level: "none" (the z = 0 values up to the instantaneous
+        surface, the default) or "wheeler" (Wheeler stretching, see :func:`seacable.mooring.kernel._fluid`).
     """
 
     height: quantity("m", ge=0, fix="give the crest-to-trough height in metres.") = Field(
@@ -136,11 +140,131 @@ class Waves(Model):
         description="Wave period. [s]")
     heading: quantity("rad") = Field(0.0, description="Direction of travel. [rad]")
     phase: quantity("rad") = Field(0.0, description="Phase at the origin at t = 0. [rad]")
+    stretching: Literal["none", "wheeler"] = Field(
+        "none", description="Kinematics above z = 0: 'none' (constant) or 'wheeler' (Wheeler stretching).")
 
     @model_validator(mode="after")
-    def _check(self) -> "Waves":
+    def _check(self) -> Waves:
         _warn_if_degrees("waves.heading", self.heading, 2 * math.pi)
         return self
+
+
+class IrregularWaves(Model):
+    """An irregular sea from a spectrum, by random-phase linear superposition (see :mod:`seacable.seastate`).
+
+    Parameters
+    ----------
+    spectrum
+        "jonswap" (DNV-RP-C205 3.5.5.2, with hs, tp, gamma), "pierson_moskowitz" (hs, tp) or "table"
+        (``frequencies`` and ``density``).
+    hs
+        Significant wave height Hs = 4 sqrt(m0); the generated sea has exactly this m0. [m]
+    tp
+        Peak period. [s]
+    gamma
+        JONSWAP peak enhancement factor (>= 1; 1 is Pierson-Moskowitz). [-]
+    frequencies
+        A table spectrum's angular frequencies, strictly increasing (> 0). [rad/s]
+    density
+        A table spectrum's one-sided spectral density at ``frequencies`` (>= 0). [m^2 s/rad]
+    heading
+        Mean direction the waves travel towards, from +X towards +Y. [rad]
+    spreading
+        Exponent s of DNV's cos-2s directional spreading (> 0); left out for a long-crested sea. [-]
+    seed
+        Seed of the random phases, frequencies and directions (the same seed, the same sea).
+    n_components
+        Number of wave components (equal frequency bands, a random frequency in each).
+    frequency_range
+        [lowest, highest] angular frequency of the components; default the band holding all but 1 %
+        of the spectrum's energy. [rad/s]
+    stretching
+        Kinematics above the still-water level: "none" (the z = 0 values) or "wheeler".
+    """
+
+    spectrum: Literal["jonswap", "pierson_moskowitz", "table"] = Field(description="Spectrum shape.")
+    hs: quantity("m", gt=0, fix="give the significant wave height in metres, e.g. 4.") | None = Field(
+        None, description="Significant wave height. [m]")
+    tp: quantity("s", gt=0, fix="give the peak period in seconds, e.g. 10.") | None = Field(
+        None, description="Peak period. [s]")
+    gamma: quantity("-", ge=1, fix="give a peak enhancement factor between 1 (Pierson-Moskowitz) and 7; "
+                                   "3.3 is the JONSWAP mean.") = Field(3.3, description="Peak enhancement. [-]")
+    frequencies: tuple[float, ...] | None = Field(None, description="Table frequencies. [rad/s]")
+    density: tuple[float, ...] | None = Field(None, description="Table spectral density. [m^2 s/rad]")
+    heading: quantity("rad") = Field(0.0, description="Mean direction of travel. [rad]")
+    spreading: quantity("-", gt=0, fix="give the cos-2s exponent s, e.g. 15 for wind sea, or leave it out for "
+                                       "a long-crested sea.") | None = Field(
+        None, description="cos-2s spreading exponent s; None: long-crested. [-]")
+    seed: int = Field(0, ge=0, description="Random seed.")
+    n_components: int = Field(200, ge=1, le=100000, description="Number of wave components.")
+    frequency_range: tuple[float, float] | None = Field(None, description="Component frequency band. [rad/s]")
+    stretching: Literal["none", "wheeler"] = Field(
+        "none", description="Kinematics above z = 0: 'none' (constant) or 'wheeler' (Wheeler stretching).")
+
+    @model_validator(mode="after")
+    def _check(self) -> IrregularWaves:
+        _warn_if_degrees("waves.heading", self.heading, 2 * math.pi)
+        if self.spectrum == "table":
+            if self.frequencies is None or self.density is None:
+                raise ValueError("spectrum 'table' needs 'frequencies' [rad/s] and 'density' [m^2 s/rad]. "
+                                 "Suggested fix: give both lists, of equal length.")
+            if self.hs is not None or self.tp is not None:
+                raise ValueError("spectrum 'table' takes its Hs and Tp from the table; 'hs' and 'tp' must be "
+                                 "left out. Suggested fix: drop them, or scale the table's density.")
+            w = np.asarray(self.frequencies, float)
+            s = np.asarray(self.density, float)
+            if w.size != s.size or w.size < 2:
+                raise ValueError(f"frequencies and density must have the same length (>= 2), got {w.size} and "
+                                 f"{s.size}. Suggested fix: one density per frequency.")
+            if not (np.all(np.isfinite(w)) and np.all(np.isfinite(s))):
+                raise ValueError("frequencies and density must be finite numbers [rad/s, m^2 s/rad].")
+            if w[0] <= 0 or np.any(np.diff(w) <= 0):
+                raise ValueError(f"frequencies must be > 0 rad/s and strictly increasing, got {[float(x) for x in w]} rad/s. "
+                                 "Suggested fix: sort the table by frequency (angular, rad/s = 2 pi Hz).")
+            if np.any(s < 0) or not np.any(s > 0):
+                raise ValueError(f"density must be >= 0 m^2 s/rad with some positive value, got {[float(x) for x in s]}.")
+        else:
+            if self.frequencies is not None or self.density is not None:
+                raise ValueError(f"'frequencies' and 'density' belong to spectrum 'table', not '{self.spectrum}'. "
+                                 "Suggested fix: drop them, or set spectrum: table.")
+            missing = [k for k in ("hs", "tp") if getattr(self, k) is None]
+            if missing:
+                raise ValueError(f"spectrum '{self.spectrum}' needs {' and '.join(missing)}. Suggested fix: "
+                                 "give hs [m] and tp [s].")
+            if self.spectrum == "jonswap" and self.gamma > 7.0:
+                warnings.warn(f"waves.gamma = {self.gamma:g} is outside DNV's 1-7 range of JONSWAP peak factors "
+                              "(A_gamma = 1 - 0.287 ln gamma is fitted there).", SeacableWarning, stacklevel=3)
+        if self.frequency_range is not None:
+            lo, hi = self.frequency_range
+            if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
+                raise ValueError(f"frequency_range must be [lowest, highest] with 0 < lowest < highest [rad/s], "
+                                 f"got {list(self.frequency_range)}. Suggested fix: e.g. [0.3, 2.5] rad/s.")
+        return self
+
+    def spectral_density(self, omega):
+        """The target one-sided spectrum S(omega) [m^2 s/rad] at angular frequencies ``omega`` [rad/s]."""
+        from . import seastate as ss
+
+        if self.spectrum == "table":
+            return ss.table_spectrum(omega, self.frequencies, self.density)
+        if self.spectrum == "pierson_moskowitz":
+            return ss.pierson_moskowitz(omega, self.hs, self.tp)
+        return ss.jonswap(omega, self.hs, self.tp, self.gamma)
+
+    def peak_frequency(self) -> float:
+        """Angular frequency of the spectrum's peak. [rad/s]"""
+        if self.spectrum == "table":
+            return float(self.frequencies[int(np.argmax(self.density))])
+        return 2.0 * math.pi / self.tp
+
+    def components(self, depth=None, gravity=9.80665):
+        """The sea's components (:func:`seacable.seastate.synthesise`) in water of ``depth`` [m]."""
+        from . import seastate as ss
+
+        band = self.frequency_range or ss.frequency_range(self.spectral_density, self.peak_frequency())
+        return ss.synthesise(self.spectral_density, n_components=self.n_components, omega_range=band,
+                             seed=self.seed, heading=self.heading, spreading=self.spreading, depth=depth,
+                             gravity=gravity, hs=self.hs)
 
 
 class Environment(Model):
@@ -159,7 +283,8 @@ class Environment(Model):
     seabed
         The seabed.
     waves
-        Regular waves, used by the mooring dynamics; ``None`` for calm water.
+        Regular waves (:class:`Waves`) or an irregular sea (:class:`IrregularWaves`, a mapping with a
+        ``spectrum`` key), used by the mooring dynamics; ``None`` for calm water.
     """
 
     water_density: quantity("kg/m^3", gt=0, fix="sea water is about 1025 kg/m^3.") = Field(
@@ -169,10 +294,18 @@ class Environment(Model):
         None, description="Water depth; left out for deep water. [m]")
     current: Current = Current()
     seabed: Seabed = Seabed()
-    waves: Waves | None = None
+    waves: Waves | IrregularWaves | None = None
+
+    @field_validator("waves", mode="before")
+    @classmethod
+    def _which_waves(cls, value):
+        # a mapping with 'spectrum' is an irregular sea, any other mapping regular waves
+        if isinstance(value, dict):
+            return IrregularWaves(**value) if "spectrum" in value else Waves(**value)
+        return value
 
     @model_validator(mode="after")
-    def _check(self) -> "Environment":
+    def _check(self) -> Environment:
         if not 900.0 <= self.water_density <= 1100.0:
             warnings.warn(f"environment.water_density = {self.water_density:g} kg/m^3 is far from "
                           "water's ~1000-1030 kg/m^3.", SeacableWarning, stacklevel=3)

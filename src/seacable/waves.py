@@ -23,8 +23,9 @@ hyperbolic ratios are evaluated in exponential form, so deep water (``depth = in
 C = S = exp(k z) and nothing overflows.
 
 Linear theory is valid only below z = 0. Here the kinematics above the still-water level are
-the z = 0 values held constant up to the instantaneous surface (constant extrapolation; no
-Wheeler stretching), points above the surface (z > eta) get zero, and points below the seabed
+the z = 0 values held constant up to the instantaneous surface (constant extrapolation; Wheeler
+stretching is an option of the mooring kernel, :func:`seacable.mooring.kernel._fluid`, through
+:func:`airy_linear`), points above the surface (z > eta) get zero, and points below the seabed
 (a node pressed into a soft seabed) get the seabed values. The accelerations are local
 (d/dt at a fixed point); the convective terms are second order in H and dropped, consistently
 with linear theory.
@@ -54,7 +55,7 @@ from numba import njit
 from . import _validate as v
 from .errors import ConvergenceError, InputError, SeacableWarning
 
-__all__ = ["WaveKinematics", "airy_kinematics", "airy_kinematics_array", "wave_number"]
+__all__ = ["WaveKinematics", "airy_kinematics", "airy_kinematics_array", "airy_linear", "wave_number"]
 
 STANDARD_GRAVITY = 9.80665
 #: Above this k d the hyperbolic ratios are taken in exponential form (cosh would overflow at ~710).
@@ -197,15 +198,29 @@ def airy_kinematics(x, y, z, t, height, period, wave_number, depth, heading, pha
     .. [2] DNV-RP-C205, 2021. Environmental conditions and environmental loads, table 3-1.
     """
     omega = 2.0 * math.pi / period
+    theta = wave_number * (x * math.cos(heading) + y * math.sin(heading)) - omega * t + phase
+    eta = 0.5 * height * math.cos(theta)
+    if z > eta:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, eta
+    r = airy_linear(x, y, min(z, 0.0), t, height, period, wave_number, depth, heading, phase, gravity)
+    return r[0], r[1], r[2], r[3], r[4], r[5], eta
+
+
+@njit(cache=True)
+def airy_linear(x, y, z, t, height, period, wave_number, depth, heading, phase, gravity):
+    """Linear-theory (Airy) kinematics at depth ``z`` <= 0, with no cut at the instantaneous surface.
+
+    As :func:`airy_kinematics` but ``z`` is taken as given (clamped to [-depth, 0]): the point where a
+    stretching rule (Wheeler) maps a point of the wetted column. Returns ``(u, v, w, ax, ay, az)``
+    [m/s], [m/s^2].
+    """
+    omega = 2.0 * math.pi / period
     cb = math.cos(heading)
     sb = math.sin(heading)
     theta = wave_number * (x * cb + y * sb) - omega * t + phase
     c = math.cos(theta)
     s = math.sin(theta)
     amp = 0.5 * height
-    eta = amp * c
-    if z > eta:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, eta
     zz = min(z, 0.0)                      # constant extrapolation above the still-water level
     zz = max(zz, -depth)                       # below the seabed: seabed values
     kd = wave_number * depth
@@ -224,7 +239,7 @@ def airy_kinematics(x, y, z, t, height, period, wave_number, depth, heading, pha
     w = a * sh * s
     ah = a * omega * ch * s
     az = -a * omega * sh * c
-    return uh * cb, uh * sb, w, ah * cb, ah * sb, az, eta
+    return uh * cb, uh * sb, w, ah * cb, ah * sb, az
 
 
 @njit(cache=True)

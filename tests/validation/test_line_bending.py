@@ -107,7 +107,7 @@ def _stiffness_and_mass(model, X, V=None):
     nd, bw = 3 * model.nfree, model.bw
     band = np.zeros((nd, 2 * bw + 1))
     K.loads(X, np.zeros_like(X) if V is None else V, 0.0, *model.element_args(), model.fidx, model.env,
-            model.cur_depth, model.cur_speed, False, F, M, tension, band, bw, 0.0, 0.0)
+            model.cur_depth, model.cur_speed, False, model.sea, F, M, tension, band, bw, 0.0, 0.0)
     Kd = np.zeros((nd, nd))
     for i in range(nd):
         for j in range(max(0, i - bw), min(nd, i + bw + 1)):

@@ -105,7 +105,7 @@ def _full_tangent(model, X):
     band = np.zeros((nd, 2 * model.bw + 1))
     F, M, T = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros(model.network.n_elements)
     K.loads(X, np.zeros_like(X), 0.0, *model.element_args(), model.fidx, model.env, model.cur_depth,
-            model.cur_speed, False, F, M, T, band, model.bw, 0.0, 0.0)
+            model.cur_speed, False, model.sea, F, M, T, band, model.bw, 0.0, 0.0)
     full = np.zeros((nd, nd))
     for r in range(nd):
         for c in range(max(0, r - model.bw), min(nd, r + model.bw + 1)):

@@ -268,7 +268,7 @@ def test_slack_rounding_is_the_elastic_elements():
         env[K.E_VDT] = dt
         F, M, T = np.zeros((2, 3)), np.zeros((2, 3, 3)), np.zeros(1)
         K.loads(X, np.zeros_like(X), 0.0, *model.element_args(), model.fidx, env, model.cur_depth,
-                model.cur_speed, False, F, M, T, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
+                model.cur_speed, False, model.sea, F, M, T, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
         return T[0]
 
     for f in (-0.5, 0.0, 0.5, 2.0):

@@ -113,16 +113,30 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from .. import _limits, _validate
 from pydantic import ValidationError
 
+from .. import _limits, _validate
 from .._model import format_validation_error, suggest
 from ..errors import InputError, SeacableWarning
 
-__all__ = ["MoorDynBody", "MoorDynCase", "MoorDynFailure", "MoorDynInput", "MoorDynLine", "MoorDynLineType",
-           "MoorDynExternalLoad", "MoorDynPoint", "MoorDynRod", "MoorDynRodType", "is_moordyn_file", "load_moordyn_case",
-           "moordyn_axial_damping", "moordyn_system", "read_moordyn"]
+__all__ = [
+    "MoorDynBody",
+    "MoorDynCase",
+    "MoorDynExternalLoad",
+    "MoorDynFailure",
+    "MoorDynInput",
+    "MoorDynLine",
+    "MoorDynLineType",
+    "MoorDynPoint",
+    "MoorDynRod",
+    "MoorDynRodType",
+    "check_water_kinematics",
+    "is_moordyn_file",
+    "load_moordyn_case",
+    "moordyn_axial_damping",
+    "moordyn_system",
+    "read_moordyn",
+]
 
 
 @dataclass(frozen=True)
@@ -1290,13 +1304,14 @@ def _option_notes(rd, options: dict, depth: float | None, depth_source: str) -> 
     wave_kin = _lookup(options, ("WaveKin",))
     if wave_kin:
         notes.append(f"{rd.at('WaveKin')}option WaveKin = {wave_kin:g} asks MoorDyn for wave kinematics (from its wave files or "
-                     "a coupled code); seacable runs this file in still water. Suggested fix: for regular waves "
-                     "write the mooring as a YAML case with environment.waves.")
+                     "a coupled code); seacable runs this file in still water for its statics (as MoorDyn finds its "
+                     "initial conditions) and refuses a dynamic run of it. Suggested fix: for waves (regular, or "
+                     "an irregular sea from a spectrum) write the mooring as a YAML case with environment.waves.")
     currents = _lookup(options, ("Currents",))
     if currents:
         notes.append(f"{rd.at('Currents')}option Currents = {currents:g} asks MoorDyn for a current read from its current files; "
-                     "seacable runs this file without current. Suggested fix: for a current profile write the "
-                     "mooring as a YAML case with environment.current.")
+                     "seacable runs this file without current for its statics and refuses a dynamic run of it. "
+                     "Suggested fix: for a current profile write the mooring as a YAML case with environment.current.")
     water_kin = _lookup(options, ("WaterKin",))
     if water_kin is not None and str(water_kin).strip("\"'").lower() not in ("", "unused", "none", "0"):
         notes.append(f"{rd.at('WaterKin')}option WaterKin = {_fmt_value(water_kin)} (MoorDyn-F water kinematics) is not read; "
@@ -1506,6 +1521,33 @@ def is_moordyn_file(path) -> bool:
     return any("MoorDyn" in ln and not ln.lstrip().startswith("#") for ln in lines[:5])
 
 
+def check_water_kinematics(md: MoorDynInput, what: str = "a dynamic run") -> None:
+    """Refuse a time-domain run of a deck that asks MoorDyn for wave or current kinematics.
+
+    Non-zero ``WaveKin`` and ``Currents`` make MoorDyn take the water kinematics from its own input files
+    (wave elevation series, frequency components, a current profile on a grid) or from a coupled code
+    through its API; seacable reads none of them. Statics does not need them (MoorDyn's initial
+    conditions are found in still water), so only a dynamic run is refused.
+
+    Raises
+    ------
+    InputError
+        Naming the file, the option and its value, and how to give the sea to seacable instead.
+    """
+    label = md.path or "MoorDyn file"
+    for name, fix in (("WaveKin", "give the waves in a YAML case, environment.waves: regular (height, period) or "
+                                  "irregular (spectrum: jonswap, hs, tp, gamma, seed), or set WaveKin to 0 to run "
+                                  "the deck in still water"),
+                      ("Currents", "give the current in a YAML case (environment.current: speed or depths and "
+                                   "speeds), or set Currents to 0 to run the deck without current")):
+        value = _lookup(md.options, (name,))
+        if value not in (None, 0, 0.0):
+            raise InputError(f"{label}: option {name} = {_fmt_value(value)} asks MoorDyn for "
+                             f"{'wave' if name == 'WaveKin' else 'current'} kinematics from its own input files or "
+                             f"a coupled code, which seacable does not read, so {what} of this file cannot honour "
+                             f"it. Suggested fix: {fix}.")
+
+
 @dataclass(frozen=True)
 class MoorDynCase:
     """A MoorDyn input file as a case: the file's network and how to run it.
@@ -1620,6 +1662,8 @@ class MoorDynCase:
             analysis = SystemStaticAnalysis(max_strain=_DECK_MAX_STRAIN)
         else:
             from ..system.run import check_bodies_without_lines
+
+            check_water_kinematics(self.data, "a system_dynamic run")
 
             try:  # a free body nothing holds has no static start: released where the deck puts it, as MoorDyn
                 check_bodies_without_lines(system)

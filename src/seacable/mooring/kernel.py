@@ -21,11 +21,16 @@ so that the tangent of the pair is ``[[K_e, -K_e], [-K_e, K_e]]``. A line with b
 adds MoorDyn v2's nodal bending moments at its inner nodes (:func:`bending_loads`, with their exact
 tangent, which couples a node's two neighbours: the band is widened for it only when a line bends).
 Half of each element's mass and
-weight in water goes to each end; the part of a half element above the still water level (straight
-from the node to the element's middle) gets its buoyancy back (weight in air), and an attachment's
-buoyancy scales with its immersed fraction across the waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
-``P_n = I - t t^T`` and ``P_t = t t^T``. Morison loads on each half element use the node's velocity
-relative to the water ``u = u_w - v`` (current plus regular Airy waves)::
+weight in water goes to each end; the part of a half element above the water surface (straight
+from the node to the element's middle, the surface taken linear between them: the still-water level,
+or with waves the instantaneous elevation eta at the node and over the middle, :func:`_surface`) gets its
+buoyancy back (weight in air), and an attachment's buoyancy scales with its immersed fraction across the
+instantaneous waterline; the added mass is ``rho A L/2 (C_an P_n + C_at P_t)`` with
+``P_n = I - t t^T`` and ``P_t = t t^T``. A node above the instantaneous surface gets no water load.
+Morison loads on each half element use the node's velocity relative to the water ``u = u_w - v``
+(current plus regular Airy waves or an irregular sea interpolated from its precomputed grid, the
+argument ``sea`` of :mod:`seacable.seastate`; above z = 0 the z = 0 kinematics or Wheeler stretching,
+:func:`_fluid`)::
 
     F = 1/2 rho d L/2 (C_dn |u_n| u_n + pi C_dt |u_t| u_t) + rho A L/2 ((1 + C_an) P_n + (1 + C_at) P_t) a_w
 
@@ -60,7 +65,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ..waves import airy_kinematics
+from ..seastate import GRID_HEADER, S_MODE, S_STRETCH, grid_eta, grid_point
+from ..waves import airy_linear
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_solve", "bending_loads", "commit_viscoelastic",
            "loads", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension", "table_tension",
@@ -87,11 +93,36 @@ V_SIZE = 12
 
 
 @njit(cache=True)
-def _fluid(x, t, env, cur_depth, cur_speed, with_waves, u, acc):
-    """Water velocity ``u`` and acceleration ``acc`` at point ``x`` and time ``t`` (current plus Airy waves)."""
+def _surface(x, y, t, env, with_waves, sea):
+    """Instantaneous water surface eta [m] above (x, y) at time ``t``: the regular Airy wave's plus the
+    irregular sea's (grid, :func:`seacable.seastate.grid_eta`); 0 (still water) without waves."""
+    if not with_waves:
+        return 0.0
+    eta = 0.0
+    if env[E_WH] > 0.0:
+        theta = (env[E_WK] * (x * math.cos(env[E_WHEAD]) + y * math.sin(env[E_WHEAD]))
+                 - 2.0 * math.pi / env[E_WT] * t + env[E_WPHASE])
+        eta = 0.5 * env[E_WH] * math.cos(theta)
+    if sea[S_MODE] > 0.0:
+        eta += grid_eta(sea, x, y, t)
+    return eta
+
+
+@njit(cache=True)
+def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
+    """Water velocity ``u`` and acceleration ``acc`` at point ``x`` and time ``t`` (current plus waves).
+
+    Nothing above the instantaneous surface eta (:func:`_surface`). Below it, the current at the point's
+    depth (its top value above z = 0) and the waves' linear kinematics (regular Airy, and an irregular sea
+    from its grid ``sea``) at the linear-theory depth z' of the point: ``min(z, 0)`` (constant
+    extrapolation above the still-water level, the default) or, with Wheeler stretching
+    (``sea[S_STRETCH]``), ``z' = (z - eta) d / (d + eta)`` (``z - eta`` in deep water), which puts the
+    surface at z' = 0 and keeps the seabed at -d.
+    """
     u[0] = u[1] = u[2] = 0.0
     acc[0] = acc[1] = acc[2] = 0.0
-    if x[2] > 0.0:
+    eta = _surface(x[0], x[1], t, env, with_waves, sea)
+    if x[2] > eta:
         return
     if cur_depth.size == 1:
         speed = cur_speed[0]
@@ -100,20 +131,40 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, u, acc):
     if speed != 0.0:
         u[0] = speed * math.cos(env[E_CHEAD])
         u[1] = speed * math.sin(env[E_CHEAD])
-    if with_waves and env[E_WH] > 0.0:
-        wu, wv, ww, wax, way, waz, _ = airy_kinematics(x[0], x[1], x[2], t, env[E_WH], env[E_WT], env[E_WK],
-                                                       env[E_WDEPTH], env[E_WHEAD], env[E_WPHASE], env[E_G])
+    if not with_waves or (env[E_WH] <= 0.0 and sea[S_MODE] <= 0.0):
+        return
+    d = env[E_WDEPTH]
+    if sea[S_STRETCH] > 0.0:
+        zs = (x[2] - eta) * d / (d + eta) if math.isfinite(d) else x[2] - eta
+    else:
+        zs = min(x[2], 0.0)
+    zs = max(min(zs, 0.0), -d)
+    if env[E_WH] > 0.0:
+        wu, wv, ww, wax, way, waz = airy_linear(x[0], x[1], zs, t, env[E_WH], env[E_WT], env[E_WK], d,
+                                                env[E_WHEAD], env[E_WPHASE], env[E_G])
         u[0] += wu
         u[1] += wv
         u[2] += ww
-        acc[0] = wax
-        acc[1] = way
-        acc[2] = waz
+        acc[0] += wax
+        acc[1] += way
+        acc[2] += waz
+    if sea[S_MODE] > 0.0:
+        wu, wv, ww, wax, way, waz = grid_point(sea, x[0], x[1], zs, t)
+        u[0] += wu
+        u[1] += wv
+        u[2] += ww
+        acc[0] += wax
+        acc[1] += way
+        acc[2] += waz
 
 
 @njit(cache=True)
 def _dry_fraction(z0, z1):
-    """Fraction of the straight piece from height z0 to z1 that lies above the still water level."""
+    """Fraction of the straight piece from height z0 to z1 above the water surface that lies above it.
+
+    The heights are taken from the instantaneous surface (``z - eta`` at each end, the surface taken
+    linear between them; still water: eta = 0).
+    """
     lo, hi = min(z0, z1), max(z0, z1)
     if hi <= 0.0:
         return 0.0
@@ -502,7 +553,7 @@ def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, 
 @njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
           weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
-          fidx, env, cur_depth, cur_speed, with_waves,
+          fidx, env, cur_depth, cur_speed, with_waves, sea,
           F, M, tension, band, bw, cm, cc):
     """Forces on the nodes (all but inertia and supports), node masses, and the Newton matrix.
 
@@ -586,17 +637,21 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         area = 0.25 * math.pi * dia[e] ** 2
         half = 0.5 * L
         zmid = 0.5 * (X[a, 2] + X[b, 2])
+        # the water surface over the element's middle (0: still water; with waves the instantaneous eta)
+        emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea)
         for k in (a, b):
             for r in range(3):
                 M[k, r, r] += mpl[e] * half
-            # ``weight`` holds the weight in water; the part of this half element above the surface
-            # (straight from the node to the element's middle) loses its buoyancy
-            dry = _dry_fraction(X[k, 2], zmid)
+            # ``weight`` holds the weight in water; the part of this half element above the instantaneous
+            # surface (straight from the node to the element's middle, the surface linear between) loses its
+            # buoyancy
+            ek = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea)
+            dry = _dry_fraction(X[k, 2] - ek, zmid - emid)
             if dry > 0.0:
                 F[k, 2] -= dry * buoy[e] * half
-            if X[k, 2] > 0.0:
+            if X[k, 2] > ek:
                 continue  # out of the water: no hydrodynamic load
-            _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, uw, aw)
+            _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
             for r in range(3):
                 ur[r] = uw[r] - V[k, r]
             ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
@@ -638,14 +693,16 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     alpha = env[E_ALPHA]
     for i in range(n):
         F[i, 2] -= weight[i]
-        if pbuoy[i] != 0.0 and X[i, 2] > -0.5 * pdia[i]:
+        wet = pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0
+        ei = _surface(X[i, 0], X[i, 1], t, env, with_waves, sea) if pbuoy[i] != 0.0 or wet else 0.0
+        if pbuoy[i] != 0.0 and X[i, 2] - ei > -0.5 * pdia[i]:
             # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
             # height pdia (its volume's sphere diameter), linear across the waterline
-            F[i, 2] -= pbuoy[i] * min(X[i, 2] / pdia[i] + 0.5, 1.0) if pdia[i] > 0.0 else pbuoy[i]
+            F[i, 2] -= pbuoy[i] * min((X[i, 2] - ei) / pdia[i] + 0.5, 1.0) if pdia[i] > 0.0 else pbuoy[i]
         for r in range(3):
             M[i, r, r] += pmass[i] + padd[i]
-        if (pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0) and X[i, 2] <= 0.0:
-            _fluid(X[i], t, env, cur_depth, cur_speed, with_waves, uw, aw)
+        if wet and X[i, 2] <= ei:
+            _fluid(X[i], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
             for r in range(3):
                 ur[r] = uw[r] - V[i, r]
             mag = math.sqrt(ur[0] ** 2 + ur[1] ** 2 + ur[2] ** 2)
@@ -846,7 +903,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                   cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx,
                   nfree, bw,
                   env, cur_depth,
-                  cur_speed, with_waves, beta, gamma, alpha_m, alpha_f, G, tol, max_iter, F, M, tension, stats):
+                  cur_speed, with_waves, sea, beta, gamma, alpha_m, alpha_f, G, tol, max_iter, F, M, tension, stats):
     """Advance ``px.shape[0]`` generalised-alpha steps in place; ``px/pv/pa[k, channel]`` are the
     prescribed positions, velocities and accelerations at the end of step k.
 
@@ -896,7 +953,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
             band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-                  with_waves, F, M, tension,
+                  with_waves, sea, F, M, tension,
                   band, bw, cm, c1)
             if galpha:
                 res = _residual_alpha(F, M, A, G, wm, wg, fidx, R)
@@ -977,8 +1034,9 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     Xt = X.copy()
     env = env.copy()
     env[E_VDT] = math.inf  # statics: viscoelastic elements at their static stiffness
+    sea = np.zeros(GRID_HEADER)  # statics: still water
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F, M, tension,
+          bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, sea, F, M, tension,
           band, bw, 0.0, 0.0)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
@@ -1003,7 +1061,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
             band[:] = 0.0
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False,
+                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, sea,
                   F, M, tension, band, bw, 0.0, 0.0)
             res = _residual(F, M, A, fidx, R)
             continue
@@ -1018,7 +1076,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                 for r in range(3):
                     Xt[i, r] += shrink * R[3 * f + r]
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F,
+              pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, sea, F,
               M, tension, empty, bw, 0.0, 0.0)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
@@ -1030,7 +1088,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             lam *= 10.0
         band[:] = 0.0
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
-              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, F, M,
+              bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, False, sea, F, M,
               tension, band, bw, 0.0, 0.0)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res

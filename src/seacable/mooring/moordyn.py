@@ -28,7 +28,14 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..errors import InputError, SeacableWarning
-from ..io.moordyn import MoorDynCase, MoorDynInput, load_moordyn_case, moordyn_axial_damping, read_moordyn
+from ..io.moordyn import (
+    MoorDynCase,
+    MoorDynInput,
+    check_water_kinematics,
+    load_moordyn_case,
+    moordyn_axial_damping,
+    read_moordyn,
+)
 from ..results import make_dataset, var
 from .motion import bind
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
@@ -161,7 +168,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
                    element_syrope=None if net.element_syrope is None else net.element_syrope[els])
-    return MooringModel(view, model.water)
+    line = MooringModel(view, model.water)
+    line.sea, line._sea_spec = model.sea, model._sea_spec  # an irregular sea's grid, when the run has one
+    return line
 
 
 def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None):
@@ -254,7 +263,8 @@ def prepare_moordyn(case) -> MooringModel:
 
     Warns (:class:`~seacable.errors.SeacableWarning`) with each of the file's ``notes``: an option
     seacable cannot honour (named with its value and what seacable does instead), an unknown
-    option. Refuses (:class:`~seacable.errors.InputError`) a free point without a line, the
+    option. Refuses (:class:`~seacable.errors.InputError`) a dynamic run of a deck with non-zero WaveKin or
+    Currents (:func:`seacable.io.moordyn.check_water_kinematics`), a free point without a line, the
     geometry :func:`seacable.mooring.checks.check_network` refuses for every mooring model, and a dynamic run whose steps or stored results exceed the limits of
     :mod:`seacable._limits`.
 
@@ -279,6 +289,7 @@ def prepare_moordyn(case) -> MooringModel:
     except InputError as err:  # the network's own checks: say which file
         raise InputError(f"{md.path or 'MoorDyn file'}: {err}") from None
     if case.duration is not None:
+        check_water_kinematics(md, "a mooring_dynamic run")
         net = model.network
         stored = (math.floor(case.duration / case.output_interval) + 1) * (10 * net.n_nodes + 2 * net.n_elements)
         check_run_size(f"the mooring_dynamic run of {case.name}", steps=case.duration / case.time_step,

@@ -9,6 +9,7 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..environment import IrregularWaves
 from ..extremes import snap_loads
 from ..results import make_dataset, var
 from ..statics.run import line_arrays
@@ -23,6 +24,7 @@ __all__ = [
     "MooringDynamicSetup",
     "case_model",
     "contact_length",
+    "elevation_variables",
     "line_end_forces",
     "network_variables",
     "point_variables",
@@ -33,6 +35,7 @@ __all__ = [
     "run_mooring_pushover",
     "run_mooring_static",
     "water_of",
+    "wave_elevation",
 ]
 
 REFERENCES = (
@@ -53,12 +56,15 @@ def water_of(case: Case) -> Water:
     w = env.waves
     contact = a.seabed_contact
     alpha = a.rayleigh[0] if isinstance(a, MooringDynamicAnalysis) else 0.0
+    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
+    w_reg = None if sea is not None else w
     return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
                  seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
                  friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
                  current_speeds=tuple(speeds), current_heading=cur.heading,
-                 wave_height=w.height if w else 0.0, wave_period=w.period if w else 10.0,
-                 wave_heading=w.heading if w else 0.0, wave_phase=w.phase if w else 0.0, rayleigh_mass=alpha)
+                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
+                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
+                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none")
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:
@@ -137,8 +143,10 @@ def _own_model(model: MooringModel) -> MooringModel:
     if not np.any(loaded):
         return model
     keep = ~point
-    return MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
+    own = MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
         "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}), model.water)
+    own.sea, own._sea_spec = model.sea, model._sea_spec  # the irregular sea's grid of the run
+    return own
 
 
 def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
@@ -300,9 +308,12 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
     # now (a time series too short fails here) and check it at the output times
     motion = bind(a.motion, net.channel_positions(), a.duration)
+    times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
-        times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
         check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
+    # an irregular sea: the size of its kinematics grid over the nodes and the fairlead's range
+    model.check_sea(a.duration, np.concatenate((net.position, motion(times)[0].reshape(-1, 3)))
+                    if motion is not None else net.position)
     return MooringDynamicSetup(model, start, motion)
 
 
@@ -341,12 +352,38 @@ def run_events(run: MooringRun) -> dict:
             "slack_elements": var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")}
 
 
+def wave_elevation(water: Water, time, x: float = 0.0, y: float = 0.0) -> np.ndarray:
+    """Surface elevation [m] at (x, y) [m] at ``time`` [s]: the regular wave's and the irregular sea's
+    (by direct summation of its components, not from the grid); zeros in calm water."""
+    t = np.asarray(time, float)
+    eta = np.zeros_like(t)
+    if water.wave_height > 0.0:
+        from .solver import wave_number_or_zero
+
+        k = wave_number_or_zero(water)
+        theta = (k * (x * math.cos(water.wave_heading) + y * math.sin(water.wave_heading))
+                 - 2.0 * math.pi / water.wave_period * t + water.wave_phase)
+        eta += 0.5 * water.wave_height * np.cos(theta)
+    if water.sea is not None:
+        eta += water.sea.elevation(t, x, y)
+    return eta
+
+
+def elevation_variables(water: Water, time) -> dict:
+    """The ``wave_elevation`` at the origin (x = y = 0) of a run with waves (nothing in calm water)."""
+    if water.wave_height <= 0.0 and water.sea is None:
+        return {}
+    return {"wave_elevation": var("time", wave_elevation(water, time), "m",
+                                  "water surface elevation at x = y = 0 (0 at the still-water level)")}
+
+
 def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="mooring_dynamic", settings=None):
     """A Dataset of a time-domain run of a single-line network."""
     net = model.network
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
                              velocity=run.velocity, acceleration=run.acceleration, time=run.time)
     data.update(run_events(run))
+    data.update(elevation_variables(model.water, run.time))
     coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
     ds = make_dataset(data, coords, analysis=analysis, case=case, references=REFERENCES,
                       settings=_settings(model, time_step=run.time_step, steps=run.steps,

@@ -19,6 +19,10 @@ import numpy as np
 
 from .. import _validate
 from ..errors import ConvergenceError, InputError, SeacableWarning
+from ..seastate import no_sea
+
+#: Largest irregular-sea grid held at once (values, 8 bytes each); a longer run takes it in time windows.
+SEA_WINDOW_VALUES = 2.5e7
 from . import kernel as K
 from .checks import check_network
 from .network import FREE, PRESCRIBED, Network
@@ -45,7 +49,10 @@ class Water:
     per unit of projected area (diameter times length); ``friction`` is Coulomb's coefficient,
     regularised below ``friction_velocity`` [m/s]. ``current_depths`` (>= 0, increasing) and
     ``current_speeds`` give a profile towards ``current_heading``. Waves: ``wave_height`` (crest to
-    trough), ``wave_period``, ``wave_heading``, ``wave_phase``. ``rayleigh_mass`` is the
+    trough), ``wave_period``, ``wave_heading``, ``wave_phase``; an irregular sea ``sea``
+    (:class:`seacable.seastate.SeaComponents`, its kinematics precomputed on a grid by
+    :meth:`MooringModel.prepare_sea`); ``stretching`` the kinematics above the still-water level
+    ("none": the z = 0 values, "wheeler": Wheeler stretching). ``rayleigh_mass`` is the
     mass-proportional Rayleigh coefficient [1/s].
     """
 
@@ -65,6 +72,8 @@ class Water:
     wave_heading: float = 0.0
     wave_phase: float = 0.0
     rayleigh_mass: float = 0.0
+    sea: object = field(default=None, compare=False)  # an irregular sea (seastate.SeaComponents) or None
+    stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         env = np.zeros(K.ENV_SIZE)
@@ -141,6 +150,8 @@ class MooringModel:
         else:
             ramp = 1e-3
         self.env = self.water.env_vector(max(ramp, 1e-9))
+        self.sea = no_sea(self.water.stretching)  # the kernel's packed irregular sea (prepare_sea fills it)
+        self._sea_spec = None
         self.cur_depth = np.asarray(self.water.current_depths, float)
         self.cur_speed = np.asarray(self.water.current_speeds, float)
         # strain-tension tables (lo, hi, strain, tension) of the elements that have one
@@ -156,6 +167,83 @@ class MooringModel:
         if syrope is not None:
             self.visco[:, [K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = syrope
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
+
+    def _sea_grid(self, duration: float, positions):
+        """(box, z_min, components, window [s]) of the irregular sea's grid over ``positions``, size-checked."""
+        from .._limits import check_run_size
+        from ..seastate import cutoff_depth, grid_size, significant
+
+        sea = self.water.sea
+        P = np.asarray(positions, float).reshape(-1, 3)
+        # only the points above the depth where the waves die out need the grid (below it: no kinematics)
+        zcut = cutoff_depth(sea)
+        P = P[P[:, 2] >= zcut] if np.any(P[:, 2] >= zcut) else P[np.argmax(P[:, 2])][None]
+        # the components that matter below the highest point (all of them when it is near the surface)
+        sea = significant(sea, float(P[:, 2].max()) + 4.0 * math.sqrt(sea.m0))
+        cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
+        xi = P[:, 0] * cb + P[:, 1] * sb
+        ze = -P[:, 0] * sb + P[:, 1] * cb
+        _, (_, dx, _, _) = grid_size(sea, duration, ((0.0, 0.0), (0.0, 0.0)), 0.0)
+        pad = 4.0 * math.sqrt(sea.m0) + 2.0 * dx
+        box = ((float(xi.min()) - pad, float(xi.max()) + pad), (float(ze.min()) - pad, float(ze.max()) + pad))
+        zmin = max(float(P[:, 2].min()) - pad, zcut)
+        if self.water.depth is not None:
+            zmin = max(zmin, -float(self.water.depth))
+        (nt, nx, ny, nz), (dt, _, _, _) = grid_size(sea, duration, box, zmin)
+        per_time = float(nx) * ny * (6 * nz + 1)
+        # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
+        window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
+        nw = min(nt, math.ceil(window / dt) + 2)
+        check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time,
+                       fix=f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid "
+                           f"of {nx} x {ny} horizontal x {nz} depth points at each of {nw} times)")
+        return box, zmin, sea, window
+
+    def check_sea(self, duration: float, positions) -> None:
+        """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
+        if self.water.sea is not None:
+            self._sea_grid(duration, positions)
+
+    def prepare_sea(self, duration: float, positions) -> None:
+        """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
+
+        The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
+        the box of those ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) that lie
+        above the depth where the waves die out (:func:`seacable.seastate.cutoff_depth`: their velocity
+        standard deviation under 0.1 % of the surface's; below it the kinematics are neglected), widened
+        by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water down to the deepest
+        of them (or that depth, or the seabed). A point outside the box gets the values at its edge. Only
+        the components that matter below the highest of them (plus 4 sqrt(m0)) are gridded
+        (:func:`seacable.seastate.significant`): deep lines need no short waves, and a coarser
+        grid. Its size is checked
+        against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
+        to do.
+        """
+        if self.water.sea is None:
+            return
+        self._sea_spec = (*self._sea_grid(duration, positions), duration)
+        self.sea = no_sea(self.water.stretching)
+        self.ensure_sea(0.0, 0.0)
+
+    def ensure_sea(self, t0: float, t1: float) -> None:
+        """Make the irregular sea's grid cover the times [t0, t1] [s] (see :meth:`prepare_sea`).
+
+        A run whose grid is larger than ``SEA_WINDOW_VALUES`` values takes it in windows of time: the
+        window starting at ``t0`` is computed when [t0, t1] leaves the current one (a time loop calls this
+        once per output interval, results once per stored time, in increasing time). Nothing to do
+        without an irregular sea or before :meth:`prepare_sea`.
+        """
+        spec = self._sea_spec
+        if spec is None:
+            return
+        from ..seastate import S_DT, S_MODE, S_NT, S_T0, kinematics_grid
+
+        s = self.sea
+        if s[S_MODE] > 0 and s[S_T0] <= t0 and t1 <= s[S_T0] + s[S_DT] * (s[S_NT] - 1):
+            return
+        box, zmin, sea, window, duration = spec
+        end = max(t1, min(t0 + window, duration))
+        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching)
 
     def element_args(self):
         n = self.network
@@ -176,10 +264,12 @@ class MooringModel:
         F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
         tension = np.zeros(self.network.n_elements)
         env = self.env
+        if waves:
+            self.ensure_sea(t, t)
         if settled and self.visco.shape[0]:
             env = env.copy()
             env[K.E_VDT] = 0.0
-        K.loads(X, V, t, *self.element_args(), self.fidx, env, self.cur_depth, self.cur_speed, waves,
+        K.loads(X, V, t, *self.element_args(), self.fidx, env, self.cur_depth, self.cur_speed, waves, self.sea,
                 F, M, tension, np.zeros((0, 2 * self.bw + 1)), self.bw, 0.0, 0.0)
         support = F - np.einsum("nij,nj->ni", M, A)
         return F, M, tension, support
@@ -415,6 +505,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     pres = np.flatnonzero(net.channel >= 0)
     X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
     model.settle_viscoelastic(X, np.zeros_like(V))
+    # an irregular sea: its kinematics on a grid over the nodes and the fairleads' range
+    t_out = np.linspace(0.0, duration, n_out + 1)
+    model.prepare_sea(duration, np.concatenate((X, channels(t_out)[0].reshape(-1, 3))))
     Fi, Mi, _, _ = model.evaluate(X, V, A, settled=True)
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
@@ -437,10 +530,13 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     start = _time.perf_counter()
     try:
         for k in range(n_out):
+            model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
+
             def newmark(t, dtk, px, pv, pa):
                 return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
                                        model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
-                                       beta, gamma, alpha_m, alpha_f, hist, tol, max_iter, F, M, tension, stats)
+                                       model.sea, beta, gamma, alpha_m, alpha_f, hist, tol, max_iter, F, M, tension,
+                                       stats)
 
             done, spent = advance_interval(k * output_interval, h, sub, channels, newmark, stats, max_halvings,
                                            max_iter, "mooring", "smaller time_step, more elements, or check the "

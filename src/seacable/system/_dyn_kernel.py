@@ -49,7 +49,15 @@ import math
 import numpy as np
 from numba import njit
 
-from ..mooring.kernel import E_VDT, _fluid, _force_tolerance, commit_viscoelastic, loads, predict_nodes
+from ..mooring.kernel import (
+    E_VDT,
+    GRID_HEADER,
+    _fluid,
+    _force_tolerance,
+    commit_viscoelastic,
+    loads,
+    predict_nodes,
+)
 from ._stat_kernel import _skew
 
 # body parameter layout (one row per body in ``bpar``)
@@ -227,7 +235,7 @@ def _body_current(q, env, cur_depth, cur_speed, uc):
         return
     x = np.array([q[0], q[1], min(q[2], 0.0)])
     acc = np.empty(3)
-    _fluid(x, 0.0, env, cur_depth, cur_speed, False, uc, acc)
+    _fluid(x, 0.0, env, cur_depth, cur_speed, False, np.zeros(GRID_HEADER), uc, acc)
 
 
 @njit(cache=True)
@@ -650,7 +658,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     bnd[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
           buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-          with_waves, F, M, tension, bnd, bw, cm, cc)
+          with_waves, np.zeros(GRID_HEADER), F, M, tension, bnd, bw, cm, cc)  # no irregular sea
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]

@@ -311,6 +311,10 @@ def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
     cur = env.current
     depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
     w = env.waves
+    if w is not None and not hasattr(w, "height"):
+        raise InputError(f"environment.waves: an irregular sea (spectrum '{w.spectrum}') is not supported by the "
+                         "mooring-system model yet; it runs regular waves only. Suggested fix: give regular waves "
+                         "(height, period), or run each line as a mooring_dynamic case.")
     contact = analysis.seabed_contact if analysis is not None else SeabedContact()
     alpha = analysis.rayleigh[0] if analysis is not None else 0.0
     return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,

@@ -1,0 +1,533 @@
+"""Irregular seas: wave spectra, random-phase synthesis and linear kinematics on a grid.
+
+Spectra (one-sided, in angular frequency omega [rad/s], S [m^2 s/rad]; DNV-RP-C205 [1]_ 3.5.5):
+
+- Pierson-Moskowitz: ``S_PM = 5/16 Hs^2 wp^4 w^-5 exp(-5/4 (w / wp)^-4)``, ``wp = 2 pi / Tp``.
+- JONSWAP: ``S_J = A_gamma S_PM gamma^exp(-(w - wp)^2 / (2 sigma^2 wp^2))`` with sigma = 0.07 for
+  w <= wp and 0.09 above, and DNV's normalising factor ``A_gamma = 1 - 0.287 ln(gamma)`` (eq. 3.5.5.2;
+  gamma = 1 is Pierson-Moskowitz exactly).
+- A user table (omega [rad/s], S [m^2 s/rad]), linear between its points, zero outside.
+
+Synthesis (linear random-phase model): ``n`` components on equal bands of width ``dw`` over the
+frequency range (default: where the spectrum holds all but 1 % of its energy, see
+:func:`frequency_range`), each at a frequency drawn uniformly inside its band (so the record has
+no repeat period; equally spaced frequencies would repeat after ``2 pi / dw``), with amplitude
+``a_j = sqrt(2 S(w_j) dw)`` and a phase uniform on [0, 2 pi) from a seeded
+:class:`numpy.random.Generator`. The amplitudes are scaled by a common factor (close to 1, the
+energy of the truncated tails and DNV's approximate A_gamma) so that ``sum a_j^2 / 2 = Hs^2 / 16``:
+the generated sea has the significant wave height asked for (``Hs = 4 sqrt(m0)``).
+
+Directional spreading (short-crested seas): DNV's cos-2s function [1]_ (3.5.8.4)
+
+    D(b) = Gamma(s + 1) / (2 sqrt(pi) Gamma(s + 1/2)) cos^(2s)((b - b0) / 2),   |b - b0| <= pi,
+
+applied by giving each frequency component one direction drawn from D (the single-direction-
+per-frequency method, Jefferys [3]_): the point spectrum of the elevation stays the target one and
+the sea is ergodic (no phase locking as with a double sum).
+
+Kinematics are the linear (Airy) superposition of the components (:mod:`seacable.waves` for each:
+dispersion relation, ``cosh(k (z + d)) / sinh(k d)`` profiles). For the time loop they are
+precomputed on a grid (:func:`kinematics_grid`): in time, along and across the mean heading,
+and in depth below the still-water level (levels closer near the surface), and interpolated
+(multi-)linearly in the compiled kernel (:func:`grid_point`), so that a step costs the same as with a
+regular wave. The grid covers the nodes above the depth where the waves die out (:func:`cutoff_depth`;
+below it no wave kinematics), holds only the components that matter at the highest of them
+(:func:`significant`), and a long run takes it in windows of time
+(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
+or Wheeler-stretched [2]_ (``z' = (z - eta) d / (d + eta)``, ``z' = z - eta`` in deep water): the
+stretched point ``z'`` is where the linear-theory kinematics are taken, so that the crest's
+kinematics are those of z = 0 and the seabed stays at the seabed.
+
+References
+----------
+.. [1] DNV-RP-C205, 2021. Environmental conditions and environmental loads, sections 3.5.5 and 3.5.8.
+.. [2] Wheeler, J. D., 1970. Method for calculating forces produced by irregular waves. Journal of
+   Petroleum Technology 22(3), 359-367.
+.. [3] Jefferys, E. R., 1987. Directional seas should be ergodic. Applied Ocean Research 9(4), 186-191.
+.. [4] Bendat, J. S. & Piersol, A. G., 2010. Random Data, 4th ed. Wiley, section 8.2 (sampling
+   error of a variance estimate).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+
+from .waves import STANDARD_GRAVITY, wave_number
+
+__all__ = [
+    "GRID_HEADER",
+    "SeaComponents",
+    "cos2s_spreading",
+    "cutoff_depth",
+    "frequency_range",
+    "grid_eta",
+    "grid_point",
+    "jonswap",
+    "kinematics_grid",
+    "no_sea",
+    "pierson_moskowitz",
+    "significant",
+    "synthesise",
+    "table_spectrum",
+]
+
+#: Energy fraction left out of the default frequency range (half below, half above). [-]
+TAIL_ENERGY = 1e-2
+
+# Packed sea array (the kernel's ``sea`` argument): header, then the grid.
+S_MODE, S_STRETCH = 0, 1          # mode: 0 no irregular sea, 1 grid; stretching: 0 constant, 1 Wheeler
+S_T0, S_DT, S_NT = 2, 3, 4        # time grid
+S_X0, S_DX, S_NX = 5, 6, 7        # along the mean heading (xi = x cos b + y sin b)
+S_Y0, S_DY, S_NY = 8, 9, 10       # across it (zeta = -x sin b + y cos b)
+S_COS, S_SIN = 11, 12             # cos b, sin b of the mean heading
+S_ZC, S_ZH, S_NZ = 13, 14, 15     # depth levels z = -c (exp(i h) - 1), i = 0 .. nz - 1
+S_DEPTH = 16                      # water depth (inf: deep) [m]
+S_ZMIN = 17                       # the grid's deepest point: no wave kinematics below [m]
+GRID_HEADER = 18
+
+#: Below the depth where the sea's horizontal velocity standard deviation falls under this fraction of its
+#: value at z = 0 the kinematics grid stops and the waves' kinematics are neglected (:func:`cutoff_depth`). [-]
+CUTOFF = 1e-3
+
+
+def pierson_moskowitz(omega, hs, tp):
+    """Pierson-Moskowitz spectrum (DNV-RP-C205 eq. 3.5.5.1).
+
+    Parameters
+    ----------
+    omega : array_like
+        Angular frequency (> 0). [rad/s]
+    hs : float
+        Significant wave height. [m]
+    tp : float
+        Peak period. [s]
+
+    Returns
+    -------
+    numpy.ndarray
+        Spectral density. [m^2 s/rad]
+    """
+    w = np.asarray(omega, float)
+    wp = 2.0 * math.pi / tp
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+        s = 5.0 / 16.0 * hs ** 2 * wp ** 4 * w ** -5.0 * np.exp(-1.25 * (w / wp) ** -4.0)
+    return np.where(w > 0, s, 0.0)
+
+
+def jonswap(omega, hs, tp, gamma=3.3):
+    """JONSWAP spectrum with DNV's normalisation ``A_gamma = 1 - 0.287 ln(gamma)`` (DNV-RP-C205 3.5.5.2).
+
+    Peak shape width sigma = 0.07 for omega <= omega_p, 0.09 above. ``gamma`` = 1 is
+    :func:`pierson_moskowitz`. A_gamma makes m0 = Hs^2/16 to about 1 % for 1 <= gamma <= 7.
+
+    Parameters
+    ----------
+    omega : array_like
+        Angular frequency (> 0). [rad/s]
+    hs : float
+        Significant wave height. [m]
+    tp : float
+        Peak period. [s]
+    gamma : float, optional
+        Peak enhancement factor (>= 1). [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        Spectral density. [m^2 s/rad]
+    """
+    w = np.asarray(omega, float)
+    wp = 2.0 * math.pi / tp
+    sigma = np.where(w <= wp, 0.07, 0.09)
+    peak = gamma ** np.exp(-0.5 * ((w - wp) / (sigma * wp)) ** 2)
+    return (1.0 - 0.287 * math.log(gamma)) * pierson_moskowitz(w, hs, tp) * peak
+
+
+def table_spectrum(omega, table_omega, table_density):
+    """A user spectrum: linear between the table's points, zero outside. [m^2 s/rad]"""
+    return np.interp(np.asarray(omega, float), table_omega, table_density, left=0.0, right=0.0)
+
+
+def cos2s_spreading(theta, s):
+    """DNV's cos-2s directional spreading function D(theta - theta_0) (DNV-RP-C205 3.5.8.4). [1/rad]
+
+    ``D = Gamma(s+1) / (2 sqrt(pi) Gamma(s+1/2)) cos^(2s)(theta / 2)`` for |theta| <= pi; integrates to 1.
+    """
+    th = np.asarray(theta, float)
+    norm = math.exp(math.lgamma(s + 1.0) - math.lgamma(s + 0.5)) / (2.0 * math.sqrt(math.pi))
+    return np.where(np.abs(th) <= math.pi, norm * np.abs(np.cos(0.5 * th)) ** (2.0 * s), 0.0)
+
+
+def frequency_range(spectrum, wp, tail=TAIL_ENERGY):
+    """The band [w_lo, w_hi] holding all but ``tail`` of a spectrum's energy (half each side). [rad/s]
+
+    Found on a fine grid from 0.05 wp to 20 wp (Pierson-Moskowitz-like tails: the energy above w
+    falls as w^-4).
+    """
+    w = np.linspace(0.05 * wp, 20.0 * wp, 40001)
+    s = spectrum(w)
+    c = np.concatenate(([0.0], np.cumsum(0.5 * (s[1:] + s[:-1]) * np.diff(w))))
+    c /= c[-1]
+    lo = float(np.interp(0.5 * tail, c, w))
+    hi = float(np.interp(1.0 - 0.5 * tail, c, w))
+    return lo, hi
+
+
+@dataclass(frozen=True)
+class SeaComponents:
+    """The components of an irregular sea (linear superposition of Airy waves).
+
+    ``eta(x, y, t) = sum_j a_j cos(k_j (x cos b_j + y sin b_j) - w_j t + p_j)``.
+
+    Attributes
+    ----------
+    amplitude : numpy.ndarray
+        Component amplitudes a_j. [m]
+    omega : numpy.ndarray
+        Angular frequencies w_j, increasing. [rad/s]
+    wave_number : numpy.ndarray
+        Wave numbers k_j from the dispersion relation. [rad/m]
+    heading : numpy.ndarray
+        Direction each component travels towards, from +X towards +Y. [rad]
+    phase : numpy.ndarray
+        Phases p_j. [rad]
+    depth : float
+        Water depth (inf: deep water). [m]
+    gravity : float
+        Acceleration of gravity. [m/s^2]
+    mean_heading : float
+        Mean direction of travel. [rad]
+    band : float
+        Width of the frequency bands dw. [rad/s]
+    scale : float
+        Factor applied to the amplitudes for sum a^2/2 = Hs^2/16 (1 for a table spectrum). [-]
+    """
+
+    amplitude: np.ndarray
+    omega: np.ndarray
+    wave_number: np.ndarray
+    heading: np.ndarray
+    phase: np.ndarray
+    depth: float
+    gravity: float
+    mean_heading: float = 0.0
+    band: float = 0.0
+    scale: float = 1.0
+
+    @property
+    def m0(self) -> float:
+        """Variance of the elevation, sum a_j^2 / 2. [m^2]"""
+        return float(0.5 * np.sum(self.amplitude ** 2))
+
+    def _spatial(self, x, y):
+        kx = self.wave_number * np.cos(self.heading)
+        ky = self.wave_number * np.sin(self.heading)
+        return np.exp(1j * (np.multiply.outer(np.asarray(x, float), kx) + np.multiply.outer(np.asarray(y, float), ky)
+                            + self.phase))
+
+    def elevation(self, t, x=0.0, y=0.0):
+        """Surface elevation at one point (x, y) at times ``t``, by direct summation. [m]"""
+        t = np.asarray(t, float)
+        e = self._spatial(x, y) * self.amplitude
+        return np.real(np.exp(-1j * np.multiply.outer(t, self.omega)) @ e)
+
+    def profiles(self, z):
+        """Linear-theory depth profiles C = cosh(k (z + d)) / sinh(k d) ... as in :mod:`seacable.waves`.
+
+        Returns ``(ch, sh)``, shape ``z.shape + (n,)``: ``g k / w^2 cosh(k (z + d)) / cosh(k d)`` and
+        the same with sinh, ``z`` clamped to [-d, 0]. [-]
+        """
+        z = np.clip(np.asarray(z, float), -self.depth, 0.0)[..., None]
+        k = self.wave_number
+        d = self.depth
+        kd = k * d
+        deep = kd > 20.0
+        with np.errstate(over="ignore", invalid="ignore"):
+            e1 = np.exp(-2.0 * k * (z + d)) if math.isfinite(d) else np.zeros_like(z * k)
+            ez = np.exp(k * z) / (1.0 + (np.exp(-2.0 * kd) if math.isfinite(d) else 0.0))
+            ch_deep, sh_deep = ez * (1.0 + e1), ez * (1.0 - e1)
+            kdf = np.where(deep, 1.0, kd)
+            ckd = np.cosh(kdf)
+            zz = z + (d if math.isfinite(d) else 0.0)
+            ch_fin = np.cosh(k * np.where(deep, 0.0, zz)) / ckd
+            sh_fin = np.sinh(k * np.where(deep, 0.0, zz)) / ckd
+        ch = np.where(deep, ch_deep, ch_fin)
+        sh = np.where(deep, sh_deep, sh_fin)
+        f = self.gravity * k / self.omega ** 2
+        return f * ch, f * sh
+
+    def kinematics(self, t, x, y, z):
+        """Velocity, local acceleration and elevation at points (x, y, z) at times ``t`` (direct sum).
+
+        ``x, y, z`` broadcast together (points, shape P); ``t`` is 1-D (nt). ``z`` is taken in
+        [-d, 0] (the caller stretches or clamps). Returns ``(vel, acc, eta)`` of shapes
+        (nt, *P, 3), (nt, *P, 3) and (nt, *P). [m/s], [m/s^2], [m]
+        """
+        x, y, z = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(z, float))
+        shape = x.shape
+        x, y, z = x.ravel(), y.ravel(), z.ravel()
+        t = np.atleast_1d(np.asarray(t, float))
+        qr, qi = self.phasors(x, y, z)
+        wt = np.multiply.outer(t, self.omega)
+        out = (np.cos(wt) @ qr + np.sin(wt) @ qi).reshape(t.size, 7, -1)
+        vel = np.moveaxis(out[:, :3], 1, -1).reshape((t.size, *shape, 3))
+        acc = np.moveaxis(out[:, 3:6], 1, -1).reshape((t.size, *shape, 3))
+        return vel, acc, out[:, 6].reshape((t.size, *shape))
+
+    def phasors(self, x, y, z):
+        """Real and imaginary parts ``(qr, qi)``, shape (n, 7 P), of the seven quantities' phasors at P points.
+
+        For points (x, y, z) (1-D, z in [-d, 0]) the quantities (u, v, w, ax, ay, az, eta) at time t are
+        ``cos(w t) @ qr + sin(w t) @ qi`` (``Re(Q exp(-i w t))``), with ``u_h = a w C cos(theta)``,
+        ``w = a w S sin(theta)``, ``a_h = a w^2 C sin(theta)``, ``a_z = -a w^2 S cos(theta)``.
+        """
+        E = self._spatial(x, y) * self.amplitude                      # (P, n)
+        ch, sh = self.profiles(z)                                      # (P, n)
+        w = self.omega
+        cb, sb = np.cos(self.heading), np.sin(self.heading)
+        uh = E * w * ch
+        ah = -1j * E * w * w * ch
+        Q = np.concatenate((uh * cb, uh * sb, -1j * E * w * sh, ah * cb, ah * sb, -E * w * w * sh, E)).T
+        return np.ascontiguousarray(Q.real), np.ascontiguousarray(Q.imag)
+
+
+def synthesise(spectrum, *, n_components, omega_range, seed, heading=0.0, spreading=None, depth=None,
+               gravity=STANDARD_GRAVITY, hs=None) -> SeaComponents:
+    """Random-phase components of a spectrum (see the module docstring).
+
+    Parameters
+    ----------
+    spectrum : callable
+        ``S(omega)`` [m^2 s/rad].
+    n_components : int
+        Number of components (frequency bands).
+    omega_range : tuple of float
+        Band [w_lo, w_hi] divided into ``n_components`` equal bands. [rad/s]
+    seed : int
+        Seed of the random generator (frequencies in their bands, phases, directions).
+    heading : float, optional
+        Mean direction of travel. [rad]
+    spreading : float or None, optional
+        Exponent s of the cos-2s spreading; None for a long-crested sea. [-]
+    depth : float or None, optional
+        Water depth; None for deep water. [m]
+    gravity : float, optional
+        [m/s^2]
+    hs : float or None, optional
+        Scale the amplitudes so that sum a^2/2 = hs^2/16; None keeps the spectrum's level. [m]
+    """
+    rng = np.random.default_rng(seed)
+    lo, hi = omega_range
+    dw = (hi - lo) / n_components
+    omega = lo + dw * (np.arange(n_components) + rng.uniform(0.0, 1.0, n_components))
+    amp = np.sqrt(2.0 * spectrum(omega) * dw)
+    phase = rng.uniform(0.0, 2.0 * math.pi, n_components)
+    if spreading is None:
+        head = np.full(n_components, float(heading))
+    else:
+        th = np.linspace(-math.pi, math.pi, 20001)
+        cdf = np.concatenate(([0.0], np.cumsum(0.5 * (cos2s_spreading(th[1:], spreading)
+                                                      + cos2s_spreading(th[:-1], spreading)) * np.diff(th))))
+        cdf /= cdf[-1]
+        head = heading + np.interp(rng.uniform(0.0, 1.0, n_components), cdf, th)
+    scale = 1.0
+    if hs is not None:
+        m0 = 0.5 * float(np.sum(amp ** 2))
+        scale = math.sqrt(hs ** 2 / 16.0 / m0) if m0 > 0 else 1.0
+        amp = amp * scale
+    d = math.inf if depth is None else float(depth)
+    k = np.asarray(wave_number(2.0 * math.pi / omega, d, gravity), float)
+    return SeaComponents(amplitude=amp, omega=omega, wave_number=k, heading=head, phase=phase, depth=d,
+                         gravity=float(gravity), mean_heading=float(heading), band=dw, scale=scale)
+
+
+def cutoff_depth(sea: SeaComponents, fraction=CUTOFF) -> float:
+    """The depth below which the sea's horizontal velocity standard deviation ``sqrt(sum (a w C(z))^2 / 2)``
+    is under ``fraction`` of its value at z = 0 (the seabed, -d, when it never is). [m]"""
+    top = 60.0 / float(np.min(sea.wave_number))     # exp(-60): far below any fraction asked
+    if math.isfinite(sea.depth):
+        top = min(top, sea.depth)
+    z = -np.linspace(0.0, top, 2001)
+    ch, _ = sea.profiles(z)
+    sd = np.sqrt(np.sum((sea.amplitude * sea.omega * ch) ** 2, axis=-1))
+    below = np.flatnonzero(sd < fraction * sd[0])
+    return -top if below.size == 0 else float(z[below[0]])
+
+
+def significant(sea: SeaComponents, z_top: float, fraction=CUTOFF) -> SeaComponents:
+    """The components that matter at and below depth ``z_top`` [m] (<= 0): the shortest ones are dropped
+    while their velocity variance at ``z_top`` (``(a w C(z_top))^2 / 2`` each) adds up to less than
+    ``fraction^2`` of the sea's there (a velocity error under ``fraction`` of its standard deviation).
+
+    A model whose nodes all stay below ``z_top`` needs neither their kinematics (they decay as exp(k z)) nor
+    their elevation (no node comes near the surface; with Wheeler stretching they shift the stretched depth
+    by their few centimetres of amplitude), and the grid's steps follow the shortest component kept.
+    """
+    ch, _ = sea.profiles(np.array([min(z_top, 0.0)]))
+    var = (sea.amplitude * sea.omega * ch[0]) ** 2
+    order = np.argsort(sea.wave_number)[::-1]           # shortest first
+    dropped = np.cumsum(var[order]) < fraction ** 2 * np.sum(var)
+    keep = np.sort(order[~dropped])
+    if keep.size == sea.omega.size:
+        return sea
+    return SeaComponents(amplitude=sea.amplitude[keep], omega=sea.omega[keep], wave_number=sea.wave_number[keep],
+                         heading=sea.heading[keep], phase=sea.phase[keep], depth=sea.depth, gravity=sea.gravity,
+                         mean_heading=sea.mean_heading, band=sea.band, scale=sea.scale)
+
+
+def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10):
+    """Grid counts (nt, nx, ny, nz) and steps of :func:`kinematics_grid` (for a size check first)."""
+    wmax = float(np.max(sea.omega))
+    kmax = float(np.max(sea.wave_number))
+    dt = 2.0 * math.pi / wmax / per_period
+    nt = math.ceil(t_end / dt) + 2
+    dx = 2.0 * math.pi / kmax / per_wavelength
+    (x0, x1), (y0, y1) = box
+    nx = max(math.ceil((x1 - x0) / dx) + 1, 1) if x1 > x0 else 1
+    long_crested = bool(np.all(sea.heading == sea.mean_heading))
+    ny = 1 if long_crested or y1 <= y0 else max(math.ceil((y1 - y0) / dx) + 1, 1)
+    zc = 3.0 / kmax                         # top level spacing about 0.3 / k_max
+    zh = 0.1                                # levels 10 % further apart each
+    depth_span = max(-z_min, 0.0)
+    nz = math.ceil(math.log1p(depth_span / zc) / zh) + 2
+    return (nt, nx, ny, nz), (dt, dx, zc, zh)
+
+
+def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
+                    per_wavelength=10, chunk=2048):
+    """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`).
+
+    Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``; a
+    long run takes its grid in windows of time, :meth:`seacable.mooring.solver.MooringModel.ensure_sea`); along and
+    across the mean heading over ``box`` ((xi0, xi1), (zeta0, zeta1)) [m] in the rotated coordinates
+    ``xi = x cos b + y sin b``, ``zeta = -x sin b + y cos b`` (step: the shortest wavelength /
+    ``per_period``; one point across for a long-crested sea, whose field does not vary across); in
+    depth from z = 0 down to ``z_min`` [m] on levels ``z = -c (exp(i h) - 1)`` (spacing 0.3 / k_max at
+    the surface, 10 % more at each level). Linear interpolation between grid points errs by at most
+    ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
+    """
+    (nt, nx, ny, nz), (dt, dx, zc, zh) = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength)
+    (x0, _), (y0, _) = box
+    dy = dx
+    cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
+    head = np.array([1.0, 0.0, t_start, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min])
+    head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
+    xi = x0 + dx * np.arange(nx)
+    ze = y0 + dy * np.arange(ny)
+    zl = np.maximum(-zc * np.expm1(zh * np.arange(nz)), -sea.depth)
+    XI, ZE = np.meshgrid(xi, ze, indexing="ij")
+    gx, gy = XI * cb - ZE * sb, XI * sb + ZE * cb              # global coordinates of the grid columns
+    t = t_start + dt * np.arange(nt)
+    eta = np.empty((nt, nx, ny))
+    kin = np.empty((nt, nx, ny, nz, 6))
+    # the points' phasors once per chunk of points, times all at once (two real products per chunk)
+    wt = np.multiply.outer(t, sea.omega)
+    cw, sw = np.cos(wt), np.sin(wt)
+    px, py, pz = (np.broadcast_to(a, (nx, ny, nz)).ravel() for a in (gx[..., None], gy[..., None], zl))
+    kin = kin.reshape(nt, -1, 6)
+    for c0 in range(0, px.size, chunk):
+        sl = slice(c0, c0 + chunk)
+        qr, qi = sea.phasors(px[sl], py[sl], pz[sl])
+        out = (cw @ qr + sw @ qi).reshape(nt, 7, -1)
+        kin[:, sl] = np.moveaxis(out[:, :6], 1, -1)
+    qr, qi = sea.phasors(gx.ravel(), gy.ravel(), np.zeros(gx.size))
+    eta[:] = (cw @ qr[:, 6 * gx.size:] + sw @ qi[:, 6 * gx.size:]).reshape(nt, nx, ny)
+    return np.concatenate((head, eta.ravel(), kin.ravel()))
+
+
+def no_sea(stretching="none"):
+    """The packed sea array without an irregular sea (the regular wave's stretching flag only)."""
+    head = np.zeros(GRID_HEADER)
+    head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
+    return head
+
+
+@njit(cache=True)
+def _cell(v, v0, h, n):
+    """Index and weight of v on a uniform axis v0 + i h (i < n), clamped to its ends."""
+    if n <= 1:
+        return 0, 0.0
+    s = (v - v0) / h
+    if s <= 0.0:
+        return 0, 0.0
+    if s >= n - 1:
+        return n - 2, 1.0
+    i = int(s)
+    return i, s - i
+
+
+@njit(cache=True)
+def grid_eta(sea, x, y, t):
+    """Surface elevation of the packed grid at (x, y, t) (multilinear; clamped at the grid's edges). [m]"""
+    cb, sb = sea[S_COS], sea[S_SIN]
+    nt, nx, ny = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY])
+    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
+    ix, fx = _cell(x * cb + y * sb, sea[S_X0], sea[S_DX], nx)
+    iy, fy = _cell(-x * sb + y * cb, sea[S_Y0], sea[S_DY], ny)
+    o = GRID_HEADER
+    s = 0.0
+    for a in range(2):
+        wa = ft if a else 1.0 - ft
+        if wa == 0.0:
+            continue
+        for b in range(2):
+            wb = fx if b else 1.0 - fx
+            if wb == 0.0:
+                continue
+            for c in range(2):
+                wc = fy if c else 1.0 - fy
+                if wc == 0.0:
+                    continue
+                s += wa * wb * wc * sea[o + ((it + a) * nx + ix + b) * ny + iy + c]
+    return s
+
+
+@njit(cache=True)
+def grid_point(sea, x, y, zs, t):
+    """Kinematics of the packed grid at (x, y) and linear-theory depth ``zs`` (<= 0) at time ``t``.
+
+    Returns ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2]: multilinear in t, xi, zeta and the depth
+    level's index; clamped at the grid's horizontal and time edges. Below the grid's deepest point
+    (``sea[S_ZMIN]``, :func:`cutoff_depth` or the seabed) the waves' kinematics are neglected: zeros.
+    """
+    if zs < sea[S_ZMIN]:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    cb, sb = sea[S_COS], sea[S_SIN]
+    nt, nx, ny, nz = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NZ])
+    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
+    ix, fx = _cell(x * cb + y * sb, sea[S_X0], sea[S_DX], nx)
+    iy, fy = _cell(-x * sb + y * cb, sea[S_Y0], sea[S_DY], ny)
+    # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h
+    zlev = math.log1p(max(-zs, 0.0) / sea[S_ZC]) / sea[S_ZH]
+    iz, fz = _cell(zlev, 0.0, 1.0, nz)
+    o = GRID_HEADER + nt * nx * ny
+    u = v = w = ax = ay = az = 0.0
+    for a in range(2):
+        wa = ft if a else 1.0 - ft
+        if wa == 0.0:
+            continue
+        for b in range(2):
+            wb = fx if b else 1.0 - fx
+            if wb == 0.0:
+                continue
+            for c in range(2):
+                wc = fy if c else 1.0 - fy
+                if wc == 0.0:
+                    continue
+                for d in range(2):
+                    wd = fz if d else 1.0 - fz
+                    if wd == 0.0:
+                        continue
+                    f = wa * wb * wc * wd
+                    base = o + ((((it + a) * nx + ix + b) * ny + iy + c) * nz + iz + d) * 6
+                    u += f * sea[base]
+                    v += f * sea[base + 1]
+                    w += f * sea[base + 2]
+                    ax += f * sea[base + 3]
+                    ay += f * sea[base + 4]
+                    az += f * sea[base + 5]
+    return u, v, w, ax, ay, az
