@@ -280,13 +280,15 @@ def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: fl
 MotionFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 
-def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix):
+def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix, *, failed_at=None):
     """Advance the state one output interval: ``sub`` steps of ``h`` from ``t0``, each failed step halved.
 
     ``steps(t, dt, px, pv, pa)`` runs the compiled time loop over the motion channels sampled at the
     steps' end times, filling ``stats`` (iterations, residual, tolerance), and returns how many steps
     converged; from the first that did not, the rest of the interval is redone at half the step, up to
-    ``max_halvings`` times. Returns (steps taken, Newton iterations).
+    ``max_halvings`` times. ``failed_at`` resumes an interval whose first ``failed_at`` steps of ``h``
+    converged and whose next did not (``stats`` holding that failure). Returns (steps taken, Newton
+    iterations), those of ``failed_at`` not included.
 
     Raises
     ------
@@ -294,6 +296,18 @@ def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter,
         A step that does not converge at the smallest step, with the time, step and residual.
     """
     done, level, taken, spent = 0, 0, 0, 0
+
+    def fail(dtk):
+        raise ConvergenceError(
+            f"the {what} time step did not converge at t = {t0 + done * dtk:.6g} s with dt = {dtk:.3g} s "
+            f"after {max_halvings} halvings: force residual {stats[1]:.3g} N (tolerance {stats[2]:.3g} N). "
+            f"Suggested fix: {fix}.", time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+
+    if failed_at is not None:
+        done = failed_at
+        if max_halvings == 0:
+            fail(h)
+        done, level = 2 * failed_at, 1
     while done < sub * 2 ** level:
         dtk = h / 2 ** level
         m = sub * 2 ** level - done
@@ -305,10 +319,7 @@ def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter,
         done += got
         if got < m:
             if level == max_halvings:
-                raise ConvergenceError(
-                    f"the {what} time step did not converge at t = {t0 + done * dtk:.6g} s with dt = {dtk:.3g} s "
-                    f"after {max_halvings} halvings: force residual {stats[1]:.3g} N (tolerance {stats[2]:.3g} N). "
-                    f"Suggested fix: {fix}.", time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+                fail(dtk)
             done *= 2
             level += 1
     return taken, spent
@@ -333,14 +344,22 @@ class MooringRun:
 
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
              *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30, beta: float = 0.25,
-             gamma: float = 0.5, progress=None, max_halvings: int = 6) -> MooringRun:
+             gamma: float = 0.5, progress=None, max_halvings: int = 6, chunk_seconds: float = 0.25) -> MooringRun:
     """Newmark time stepping from rest at ``initial`` positions (default a static equilibrium).
 
     ``motion(times)`` returns positions, velocities and accelerations of the motion channels,
     shape (len(times), n_channels, 3). A step that does not converge is retried with half the time
     step, six times at most; then :class:`~seacable.errors.ConvergenceError` reports the time and the
     residual. Ctrl-C stops the run and returns what was computed (``interrupted``).
+
+    The time loop is compiled (:func:`seacable.mooring.loop.run_outputs`): it runs output interval
+    after output interval into preallocated arrays, in chunks of about ``chunk_seconds`` of computing
+    [s] between which Python samples the motion on the chunk's step grid (once for each step) and calls
+    ``progress(t, duration)`` for each output of the chunk; an interval with a failed step is finished
+    here at the halved steps.
     """
+    from . import loop as LP
+
     net = model.network
     n = net.n_nodes
     X = (static_equilibrium(model).position if initial is None else np.array(initial, float)).copy()
@@ -367,44 +386,66 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
 
-    times = [0.0]
-    pos, vel, acc = [X.copy()], [V.copy()], [A.copy()]
-    ten, sup = [], []
+    times = np.zeros(n_out + 1)
+    pos, vel, acc = (np.zeros((n_out + 1, n, 3)) for _ in range(3))
+    ten, sup = np.zeros((n_out + 1, net.n_elements)), np.zeros((n_out + 1, n, 3))
+    env_rec = model.env
+    if model.visco.shape[0]:
+        env_rec = env_rec.copy()
+        env_rec[K.E_VDT] = 0.0  # outputs: viscoelastic elements at the last converged step's slow stretch
+    args = model.element_args()
+    store = (times, pos, vel, acc, ten, sup)
 
-    def record():
-        _, _, t_e, s_n = model.evaluate(X, V, A, times[-1], settled=True)
-        ten.append(t_e)
-        sup.append(s_n)
+    def record(k):
+        LP.record_output(k, k * output_interval, X, V, A, *args, model.fidx, model.bw, env_rec, model.cur_depth,
+                         model.cur_speed, F, M, tension, *store)
 
-    record()
+    record(0)
     stats = np.zeros(3)
-    iterations = steps = 0
+    count = np.zeros(4, np.int64)  # outputs stored, steps, Newton iterations, steps of a failed interval
+    fix = "smaller time_step, more elements, or check the motion for a jump"
     interrupted = False
     start = _time.perf_counter()
-    try:
-        for k in range(n_out):
-            def newmark(t, dtk, px, pv, pa):
-                return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
-                                       model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
-                                       beta, gamma, tol, max_iter, F, M, tension, stats)
+    reported, reporting = 0, False
 
-            done, spent = advance_interval(k * output_interval, h, sub, channels, newmark, stats, max_halvings,
-                                           max_iter, "mooring", "smaller time_step, more elements, or check the "
-                                                                "motion for a jump")
-            steps += done
-            iterations += spent
-            times.append((k + 1) * output_interval)
-            pos.append(X.copy())
-            vel.append(V.copy())
-            acc.append(A.copy())
-            record()
+    def newmark(t, dtk, px, pv, pa):
+        return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *args, model.fidx, model.nfree, model.bw,
+                               model.env, model.cur_depth, model.cur_speed, True, beta, gamma, tol, max_iter, F, M,
+                               tension, stats)
+
+    try:
+        k, size = 0, 1
+        while k < n_out:
+            k1 = min(n_out, k + size)
+            # the motion on the chunk's step grid, once for each step (the same floats as interval by interval)
+            grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
+            px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
+            tick = _time.perf_counter()
+            got = LP.run_outputs(k, k1, output_interval, h, sub, px, pv, pa, X, V, A, net.channel, *args, model.fidx,
+                                 model.nfree, model.bw, model.env, env_rec, model.cur_depth, model.cur_speed, beta,
+                                 gamma, tol, max_iter, F, M, tension, stats, count, *store)
+            if got < k1:  # a step failed: the rest of that interval at halved steps, then on
+                done, spent = advance_interval(got * output_interval, h, sub, channels, newmark, stats,
+                                               max_halvings, max_iter, "mooring", fix, failed_at=int(count[3]))
+                count[1] += done
+                count[2] += spent
+                record(got + 1)
+                count[0] = got + 1
+            took = _time.perf_counter() - tick
+            k = int(count[0])
+            # the next chunk: about chunk_seconds of computing, at most 100 000 steps of motion samples
+            size = max(1, min(int(size * chunk_seconds / max(took, 1e-6)), 2 * size + 8, 100_000 // sub))
             if progress is not None:
-                progress(times[-1], duration)
+                reporting = True
+                while reported < k:
+                    reported += 1
+                    progress(times[reported], duration)
+                reporting = False
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - start
-    nt = min(len(times), len(pos), len(vel), len(acc), len(ten), len(sup))  # an interrupt may fall between appends
-    times, pos, vel, acc, ten, sup = times[:nt], pos[:nt], vel[:nt], acc[:nt], ten[:nt], sup[:nt]
-    return MooringRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
-                      tension=np.array(ten), support=np.array(sup), time_step=h, iterations=iterations,
-                      steps=steps, interrupted=interrupted, wall_time=wall, acceleration=np.array(acc))
+    # an interrupt in the progress callback keeps the outputs reported (as when it ran after each output)
+    nt = reported + 1 if interrupted and reporting else int(count[0]) + 1
+    return MooringRun(time=times[:nt].copy(), position=pos[:nt], velocity=vel[:nt], tension=ten[:nt],
+                      support=sup[:nt], time_step=h, iterations=int(count[2]), steps=int(count[1]),
+                      interrupted=interrupted, wall_time=wall, acceleration=acc[:nt])
