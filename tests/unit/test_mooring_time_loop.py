@@ -1,0 +1,166 @@
+"""The compiled time loop of the mooring model (issue 19): the same numbers as the loop it replaced.
+
+The reference is the former time loop, written out here: one compiled call of
+:func:`seacable.mooring.kernel.newmark_steps` per output interval from Python (with the motion evaluated for
+that interval, halved steps on a failed step), and the output state evaluated from Python. The compiled
+loop runs the same floating-point operations in the same order, so the agreement is to round-off.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.interpolate import CubicSpline
+
+import seacable as sc
+from seacable.errors import ConvergenceError
+from seacable.mooring import kernel as K
+from seacable.mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion, bind
+from seacable.mooring.network import network_from_line
+from seacable.mooring.solver import MooringModel, Water, advance_interval, simulate, static_equilibrium
+
+CHAIN = sc.LineType(diameter=0.09, mass_per_length=77.7066, weight_in_water=698.094, axial_stiffness=384.243e6)
+
+
+def _model(n=20):
+    net = network_from_line(sc.Line.single(CHAIN, 902.2), (0, 0, -320), (848.67, 0, -70), water_density=1025,
+                            gravity=9.81, n_elements=n, damping_ratio=0.5)
+    return MooringModel(net, Water(depth=320.0, seabed_stiffness=1e5, seabed_damping=1e4, wave_height=3.0,
+                                   wave_period=9.0))
+
+
+def _old_simulate(model, motion, duration, dt, output_interval, *, initial, tol, max_iter, max_halvings=6):
+    """The time loop as it was before the compiled one (Python for each output interval)."""
+    net = model.network
+    n = net.n_nodes
+    X = np.array(initial, float)
+    V, A = np.zeros_like(X), np.zeros_like(X)
+    n_out = round(duration / output_interval)
+    sub = max(1, math.ceil(output_interval / dt - 1e-9))
+    h = output_interval / sub
+    F, M, tension = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros(net.n_elements)
+    x0, v0, a0 = motion(np.zeros(1))
+    pres = np.flatnonzero(net.channel >= 0)
+    X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
+    Fi, Mi, _, _ = model.evaluate(X, V, A, settled=True)
+    free = model.fidx >= 0
+    A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
+    ten = [model.evaluate(X, V, A, 0.0, settled=True)[2]]
+    sup = [model.evaluate(X, V, A, 0.0, settled=True)[3]]
+    stats = np.zeros(3)
+    steps = 0
+    for k in range(n_out):
+        def newmark(t, dtk, px, pv, pa):
+            return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
+                                   model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True, 0.25,
+                                   0.5, tol, max_iter, F, M, tension, stats)
+
+        done, _ = advance_interval(k * output_interval, h, sub, motion, newmark, stats, max_halvings, max_iter,
+                                   "mooring", "fix")
+        steps += done
+        _, _, t_e, s_n = model.evaluate(X, V, A, (k + 1) * output_interval, settled=True)
+        ten.append(t_e)
+        sup.append(s_n)
+    return np.array(ten), np.array(sup), steps
+
+
+@pytest.mark.parametrize("dt, max_iter", [(0.1, 30), (0.25, 3)])
+def test_compiled_loop_reproduces_the_former_loop(dt, max_iter):
+    """Tensions and support forces of 30 s of 3 m waves and a 4 m surge at the fairlead, to 1e-10 relative.
+
+    With ``max_iter = 3`` at 0.25 s steps the Newton iteration fails now and then and those intervals are
+    finished at halved steps (more steps than 4 per second): that path is compared too.
+    """
+    model = _model()
+    st = static_equilibrium(model)
+    motion = bind(_harmonic(), model.network.channel_positions(), 30.0)
+    old_t, old_s, old_steps = _old_simulate(model, motion, 30.0, dt, 0.5, initial=st.position, tol=1e-7,
+                                            max_iter=max_iter)
+    run = simulate(model, motion, 30.0, dt, 0.5, initial=st.position, tol=1e-7, max_iter=max_iter)
+    assert run.steps == old_steps
+    if max_iter == 3:
+        assert run.steps > round(30.0 / dt)  # some intervals were halved
+    # round-off only: the same operations in the same order (1e-10 of the largest tension)
+    scale = np.abs(old_t).max()
+    assert np.abs(run.tension - old_t).max() <= 1e-10 * scale
+    assert np.abs(run.support - old_s).max() <= 1e-10 * scale
+    assert run.time == pytest.approx(np.arange(61) * 0.5, abs=1e-12)
+
+
+def _harmonic():
+    return HarmonicMotion(amplitude=(4.0, 0.0, 1.0), period=12.0, ramp=6.0)
+
+
+def test_failed_step_at_the_smallest_step_names_time_and_residual():
+    model = _model()
+    st = static_equilibrium(model)
+    motion = bind(_harmonic(), model.network.channel_positions(), 5.0)
+    # two Newton iterations never reach the tolerance from the predictor (the first is never accepted)
+    with pytest.raises(ConvergenceError, match=r"did not converge at t = 0 s with dt = 0\.25 s after 0 halvings") \
+            as err:
+        simulate(model, motion, 5.0, 0.25, 0.5, initial=st.position, max_iter=1, max_halvings=0)
+    assert err.value.residual > 0
+
+
+def test_interrupt_inside_a_chunk_keeps_every_stored_output():
+    """Ctrl-C arriving in the middle of the compiled chunk: the outputs it stored are kept (the progress
+    callback sees the chunk's outputs one by one and raises at the 7th)."""
+    model = _model()
+    st = static_equilibrium(model)
+    seen = []
+
+    def progress(t, duration):
+        seen.append(t)
+        if len(seen) == 7:
+            raise KeyboardInterrupt
+
+    run = simulate(model, None, 20.0, 0.1, 0.5, initial=st.position, progress=progress)
+    assert run.interrupted and run.time.size == 8 and run.time[-1] == pytest.approx(3.5)
+    assert seen == pytest.approx(list(np.arange(1, 8) * 0.5))
+
+
+def test_csv_motion_sampled_equals_the_spline_of_its_table(tmp_path):
+    """A time-series motion sampled on a step grid equals the natural cubic spline of its table evaluated
+    directly (position, velocity, acceleration), and the file is read once."""
+    t = np.linspace(0.0, 20.0, 41)
+    table = np.column_stack([t, 2 * np.sin(t / 3), 0 * t, 0.5 * np.cos(t / 2)])
+    path = tmp_path / "m.csv"
+    np.savetxt(path, table, delimiter=",", header="time,x,y,z", comments="")
+    base = np.array([[100.0, 0.0, -20.0]])
+    motion = TimeSeriesMotion(file=str(path))
+    grid = np.arange(1, 191) * 0.1
+    x, v, a = motion.channels(grid, base)
+    cs = CubicSpline(t, table[:, 1:], bc_type="natural")
+    assert np.array_equal(x[:, 0], base[0] + cs(grid))
+    assert np.array_equal(v[:, 0], cs(grid, 1))
+    assert np.array_equal(a[:, 0], cs(grid, 2))
+    from seacable.mooring import motion as mo
+
+    hits = mo._fitted_table.cache_info().hits
+    motion.channels(grid[:5], base)
+    assert mo._fitted_table.cache_info().hits == hits + 1  # not read nor fitted again
+    # a changed file is read again
+    np.savetxt(path, table * [1, 2, 1, 1], delimiter=",", header="time,x,y,z", comments="")
+    x2, _, _ = motion.channels(grid, base)
+    assert np.allclose(x2[:, 0, 0] - base[0, 0], 2 * cs(grid)[:, 0], atol=1e-12)
+
+
+def test_platform_motion_from_csv_equals_its_harmonic_twin(tmp_path):
+    """A platform CSV sampled finely equals the harmonic platform motion it tabulates (spline error only)."""
+    amp, period = (1.0, 0.5, 0.8, 0.02, 0.03, 0.05), 10.0
+    harm = PlatformMotion(amplitude=amp, period=period, reference=(0.0, 0.0, 0.0))
+    t = np.arange(0.0, 40.001, 0.01)
+    q = np.asarray(amp) * np.sin(2 * np.pi * t[:, None] / period)
+    path = tmp_path / "p.csv"
+    np.savetxt(path, np.column_stack([t, q]), delimiter=",", header="time,surge,sway,heave,roll,pitch,yaw",
+               comments="")
+    csv = PlatformMotion(file=str(path))
+    base = np.array([[40.0, 10.0, -5.0], [-20.0, 30.0, -5.0]])
+    grid = np.linspace(5.0, 35.0, 301)
+    for got, want in zip(csv.channels(grid, base), harm.channels(grid, base), strict=True):
+        # a cubic spline of samples h = 0.01 s apart: its second derivative is off by about q'''' h^2 / 12
+        # = w^4 A h^2 / 12 = 1.3e-6 A (w = 2 pi / 10 s); A up to 2 m at the fairleads (a 40 m arm turning
+        # 0.05 rad): 3e-6 m/s^2, well under 1e-5; positions and velocities are closer
+        assert got == pytest.approx(want, abs=1e-5)
