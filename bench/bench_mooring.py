@@ -1,90 +1,143 @@
-"""Speed race on MoorDyn's quasi-static chain cases: seacable's implicit truss FE vs MoorDyn v2.
+"""Speed race on MoorDyn's WD0200 chain: seacable's implicit truss FE vs MoorDyn v2, at equal accuracy.
 
-Same input files (``../shared/peers/moordyn/WD{0050,0200,0600}_Chain.txt``, equal segment
-counts), same heave motion (2 m or 5 m at 10 s, no ramp), 100 s simulated after the statics. The
-accuracy of both is measured against the OrcaFlex fairlead-tension series over its 20 s, as the
-largest error of the swing about each code's static value in % of OrcaFlex's peak-to-peak range
-(MoorDyn's test accepts 15 %). Wall times are for the time stepping alone, best of ``repeat``;
-the statics (seacable's Newton, MoorDyn's IC) are listed separately.
+The case (issue 19): MoorDyn's ``../shared/peers/moordyn/WD0200_Chain.txt`` (a 760 m studless chain in
+200 m of water) with its line cut into 20, 50, 100 and 200 segments, the fairlead moved 2 m in heave
+at 10 s (no ramp), 100 s simulated, the fairlead tension stored every 0.1 s.
 
-Run: ``python bench/bench_mooring.py [A1|A2]`` (needs ``pip install moordyn``; a bench-only
-dependency).
+Equal accuracy, found per code and per mesh: each code runs at a ladder of steps (seacable: Newmark
+steps 0.1, 0.05, 0.025 s; MoorDyn: CFL 0.8, 0.4, 0.2, 0.14, 0.1, its dtM = CFL 2 pi L sqrt(m / EA)); its
+converged peak fairlead tension is that of a run at a step 8 (seacable, 0.0125 s) or 2 (MoorDyn, CFL
+0.05) times finer than the finest of its ladder; the step it is timed at is the largest of the
+ladder whose peak tension is within 1 % of that converged peak (a run that blows up does not count).
+Each code is compared with itself: the two models differ (MoorDyn's peak is higher, by its seabed
+and lumping), which is the accuracy race of ``bench/moordyn_peer.py``, not this one.
+
+Timing: seacable's is the whole user path, ``run_moordyn_case``: reading the file, the model, the
+statics, the time loop and the result Dataset (``wall total``). MoorDyn's is ``Create + Init`` (its
+initial-condition solve, a dynamic relaxation) plus the stepping (``wall total``), and the stepping
+alone; the ratio is given against both. Best of ``repeat`` runs in one process (the machine is shared).
+
+Run: ``python bench/bench_mooring.py [repeat]`` (needs ``pip install moordyn``; a bench-only dependency).
 """
 
 from __future__ import annotations
 
+import re
 import sys
+import tempfile
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 sys.path.insert(0, str(Path(__file__).parent))
 import moordyn_peer as md
 
-from seacable.mooring.moordyn import moordyn_model
-from seacable.mooring.network import PRESCRIBED
-from seacable.mooring.solver import simulate, static_equilibrium
+from seacable.errors import ConvergenceError
+from seacable.io.moordyn import load_moordyn_case
+from seacable.mooring.moordyn import run_moordyn_case
+from seacable.mooring.motion import HarmonicMotion
+
+SEGMENTS = (20, 50, 100, 200)
+DURATION, AMPLITUDE, PERIOD, OUTPUT = 100.0, 2.0, 10.0, 0.1
+SEACABLE_STEPS = (0.1, 0.05, 0.025)
+SEACABLE_CONVERGED = 0.0125
+MOORDYN_CFL = (0.8, 0.4, 0.2, 0.14, 0.1)
+MOORDYN_CONVERGED = 0.05
+TOLERANCE = 0.01  # each code within 1 % of its own converged peak tension
 
 
-def _motion_fn(base, motion):
-    t0 = motion["time"][0]
-    spline = CubicSpline(motion["time"] - t0, np.column_stack([motion["x"], motion["y"], motion["z"]]))
+def deck(segments: int, cfl: float = 0.1, folder=None) -> Path:
+    """WD0200_Chain.txt with ``segments`` segments and MoorDyn's ``cfl``, without its saved IC (written to a
+    temporary folder; the original is read only)."""
+    text = (md.PEER_DIR / "WD0200_Chain.txt").read_text()
+    text = re.sub(r"^(1\s+chain\s+1\s+2\s+760\s+)\d+", lambda m: m.group(1) + str(segments), text, flags=re.M)
+    text = re.sub(r"^.*fileIC.*$", "", text, flags=re.M)
+    text = re.sub(r"^\S+(\s+cfl\b)", lambda m: f"{cfl:g}" + m.group(1), text, flags=re.M)
+    path = Path(folder or tempfile.mkdtemp(prefix="bench_mooring_")) / f"WD0200_{segments}_{cfl:g}.txt"
+    path.write_text(text)
+    return path
 
-    def fn(t):
-        t = np.asarray(t, float)
-        return base[None] + spline(t)[:, None, :], spline(t, 1)[:, None, :], spline(t, 2)[:, None, :]
 
-    return fn
-
-
-def run_seacable(case: Path, motion: dict, duration: float, dt: float):
-    """Statics then ``duration`` s of the motion; dict in the layout of ``moordyn_peer.run_moordyn``."""
+def run_seacable(segments: int, dt: float) -> dict:
+    """The whole user path: file -> model -> statics -> time loop -> Dataset; the fairlead tension."""
+    path = deck(segments)
     start = time.perf_counter()
-    model = moordyn_model(case)
-    st = static_equilibrium(model)
-    t_static = time.perf_counter() - start
-    base = model.network.position[model.network.kind == PRESCRIBED]
-    start = time.perf_counter()
-    run = simulate(model, _motion_fn(base, motion), duration, dt, 0.1, initial=st.position, tol=1e-6)
+    case = load_moordyn_case(path).with_run(duration=DURATION, time_step=dt, output_interval=OUTPUT,
+                                            motion=HarmonicMotion(amplitude=(0.0, 0.0, AMPLITUDE), period=PERIOD))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the deck's MoorDyn-only options (writeLog, ...)
+        ds = run_moordyn_case(case)
     wall = time.perf_counter() - start
-    fair = model.network.line_nodes[0][-1]
-    return {"time": run.time + motion["time"][0],
-            "fairlead_tension": np.linalg.norm(run.support[:, fair], axis=1),
-            "anchor_tension": np.linalg.norm(run.support[:, 0], axis=1),
-            "static_fairlead_tension": float(np.linalg.norm(st.support[fair])),
-            "static_anchor_tension": float(np.linalg.norm(st.support[0])),
-            "wall_time": wall, "wall_time_init": t_static, "steps": run.steps, "iterations": run.iterations,
-            "n_segments": model.network.n_elements}
+    fair = np.asarray(ds["fairlead_tension"]).reshape(-1)
+    return {"peak": float(np.max(fair)), "wall": wall, "loop": float(ds.attrs.get("wall_time", np.nan)),
+            "recommended": float(ds.attrs.get("recommended_time_step", np.nan))}
 
 
-def main(amplitude_tag: str = "A1", duration: float = 100.0, repeat: int = 3, dts=(0.1, 0.05)):
-    print(f"MoorDyn chain cases, heave {amplitude_tag} (10 s), {duration:g} s simulated; "
-          "error = max |swing - OrcaFlex swing| / OrcaFlex peak-to-peak")
-    print(f"{'case':7s} {'code':14s} {'segs':>4s} {'dt [s]':>9s} {'static [s]':>10s} {'100 s [s]':>9s} "
-          f"{'ratio':>6s} {'T0 [kN]':>8s} {'T0 Orca':>8s} {'dyn err %':>9s} {'anchor %':>8s}")
-    for tag in md.STATIC_REFERENCE:
-        ref = md.load_reference(tag, amplitude_tag)
-        case = md.PEER_DIR / f"{tag}_Chain.txt"
-        span = ref["motion"]["time"][-1] - ref["motion"]["time"][0]
-        long_motion = md.heave_motion(ref["amplitude"], duration=duration + 1.0)
-        acc_md = md.accuracy(md.run_moordyn(case, ref["motion"], duration=span), ref)
-        runs = [md.run_moordyn(case, long_motion, duration=duration) for _ in range(repeat)]
-        t_md = min(r["wall_time"] for r in runs)
-        print(f"{tag:7s} {'MoorDyn ' + runs[0]['version']:14s} {runs[0]['n_segments']:4d} {runs[0]['dt']:9.2e} "
-              f"{min(r['wall_time_init'] for r in runs):10.3f} {t_md:9.3f} {1.0:6.2f} "
-              f"{acc_md['static_fairlead_tension'] / 1e3:8.1f} {acc_md['static_fairlead_tension_ref'] / 1e3:8.1f} "
-              f"{acc_md['fairlead_max_error_pct']:9.2f} {acc_md['anchor_max_error_pct']:8.2f}")
-        for dt in dts:
-            acc = md.accuracy(run_seacable(case, ref["motion"], span, dt), ref)
-            runs = [run_seacable(case, long_motion, duration, dt) for _ in range(repeat)]
-            t_sc = min(r["wall_time"] for r in runs)
-            print(f"{tag:7s} {'seacable':14s} {runs[0]['n_segments']:4d} {dt:9.2e} "
-                  f"{min(r['wall_time_init'] for r in runs):10.3f} {t_sc:9.3f} {t_sc / t_md:6.2f} "
-                  f"{acc['static_fairlead_tension'] / 1e3:8.1f} {acc['static_fairlead_tension_ref'] / 1e3:8.1f} "
-                  f"{acc['fairlead_max_error_pct']:9.2f} {acc['anchor_max_error_pct']:8.2f}")
+def run_moordyn(segments: int, cfl: float) -> dict | None:
+    """MoorDyn from Create to the last step; None when it blows up."""
+    motion = md.heave_motion(AMPLITUDE, PERIOD, duration=DURATION + 1.0)
+    try:
+        with md._quiet():  # its messages when a step blows up
+            r = md.run_moordyn(deck(segments, cfl), motion, duration=DURATION, use_ic_file=False)
+    except (ConvergenceError, RuntimeError):  # MoorDyn's step error: the step is unstable
+        return None
+    if not np.all(np.isfinite(r["fairlead_tension"])):
+        return None
+    return {"peak": float(np.max(r["fairlead_tension"])), "wall": r["wall_time"] + r["wall_time_init"],
+            "loop": r["wall_time"], "dt": r["dt"]}
+
+
+def _largest_accurate(ladder, run, converged):
+    """(step, result) of the largest step of ``ladder`` within TOLERANCE of ``converged``'s peak, and the
+    errors [%] of every step."""
+    errors = {}
+    for step in ladder:
+        r = run(step)
+        errors[step] = np.nan if r is None else 100.0 * abs(r["peak"] / converged["peak"] - 1.0)
+    ok = [s for s in ladder if errors[s] <= 100.0 * TOLERANCE]
+    return (max(ok) if ok else None), errors
+
+
+def _best(run, step, repeat):
+    runs = [run(step) for _ in range(repeat)]
+    return min(runs, key=lambda r: r["wall"])
+
+
+def main(repeat: int = 3, segments=SEGMENTS):
+    print(f"WD0200 chain, {AMPLITUDE:g} m heave at {PERIOD:g} s, {DURATION:g} s, fairlead tension every {OUTPUT:g} s; "
+          f"each code at its largest step within {100 * TOLERANCE:g} % of its own converged peak tension")
+    run_seacable(20, 0.1)  # compile once
+    rows = []
+    for n in segments:
+        sc_ref = run_seacable(n, SEACABLE_CONVERGED)
+        sc_dt, sc_err = _largest_accurate(SEACABLE_STEPS, lambda s: run_seacable(n, s), sc_ref)
+        md_ref = run_moordyn(n, MOORDYN_CONVERGED)
+        md_cfl, md_err = _largest_accurate(MOORDYN_CFL, lambda c: run_moordyn(n, c), md_ref)
+        sc = _best(lambda s: run_seacable(n, s), sc_dt, repeat)
+        mdr = _best(lambda c: run_moordyn(n, c), md_cfl, repeat)
+        rows.append((n, sc_dt, sc, sc_err, md_cfl, mdr, md_err, sc_ref, md_ref))
+        print(f"\n{n} segments")
+        print(f"  {'code':9s} {'step [s]':>9s} {'peak [kN]':>9s} {'conv. [kN]':>10s} {'err %':>6s} "
+              f"{'wall total [s]':>14s} {'loop [s]':>9s}  errors % along the ladder")
+        print(f"  {'seacable':9s} {sc_dt:9.3g} {sc['peak'] / 1e3:9.1f} {sc_ref['peak'] / 1e3:10.1f} "
+              f"{sc_err[sc_dt]:6.2f} {sc['wall']:14.3f} {sc['loop']:9.3f}  "
+              + ", ".join(f"{s:g} s: {e:.2f}" for s, e in sc_err.items()))
+        print(f"  {'MoorDyn':9s} {mdr['dt']:9.3g} {mdr['peak'] / 1e3:9.1f} {md_ref['peak'] / 1e3:10.1f} "
+              f"{md_err[md_cfl]:6.2f} {mdr['wall']:14.3f} {mdr['loop']:9.3f}  "
+              + ", ".join(f"CFL {c:g}: {e:.2f}" for c, e in md_err.items()))
+        print(f"  seacable / MoorDyn: {sc['wall'] / mdr['wall']:.2f} (totals), {sc['wall'] / mdr['loop']:.2f} "
+              f"(seacable's total against MoorDyn's stepping alone); seacable's recommended step "
+              f"{sc['recommended']:.3g} s")
+    print("\nsummary: segments | seacable dt | MoorDyn CFL (dtM) | seacable total | MoorDyn total | MoorDyn stepping "
+          "| ratio totals | ratio vs stepping")
+    for n, sc_dt, sc, _, md_cfl, mdr, _, _, _ in rows:
+        print(f"| {n} | {sc_dt:g} s | {md_cfl:g} ({mdr['dt']:.3g} s) | {sc['wall']:.3f} s | {mdr['wall']:.3f} s | "
+              f"{mdr['loop']:.3f} s | {sc['wall'] / mdr['wall']:.2f} | {sc['wall'] / mdr['loop']:.2f} |")
+    return rows
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "A1")
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 3,
+         tuple(int(a) for a in sys.argv[2:]) or SEGMENTS)

@@ -19,7 +19,14 @@ from seacable.errors import ConvergenceError
 from seacable.mooring import kernel as K
 from seacable.mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion, bind
 from seacable.mooring.network import network_from_line
-from seacable.mooring.solver import MooringModel, Water, advance_interval, simulate, static_equilibrium
+from seacable.mooring.solver import (
+    MooringModel,
+    Water,
+    advance_interval,
+    recommended_time_step,
+    simulate,
+    static_equilibrium,
+)
 
 CHAIN = sc.LineType(diameter=0.09, mass_per_length=77.7066, weight_in_water=698.094, axial_stiffness=384.243e6)
 
@@ -164,3 +171,30 @@ def test_platform_motion_from_csv_equals_its_harmonic_twin(tmp_path):
         # = w^4 A h^2 / 12 = 1.3e-6 A (w = 2 pi / 10 s); A up to 2 m at the fairleads (a 40 m arm turning
         # 0.05 rad): 3e-6 m/s^2, well under 1e-5; positions and velocities are closer
         assert got == pytest.approx(want, abs=1e-5)
+
+
+def test_recommended_time_step_from_the_axial_wave_speed_and_the_forcing():
+    """Closed forms: the first axial period of a uniform line held at both ends is 2 L / sqrt(EA / m)."""
+    model = _model()
+    c = math.sqrt(CHAIN.axial_stiffness / CHAIN.mass_per_length)  # 2223.7 m/s
+    axial = 2 * 902.2 / c                                         # 0.811 s
+    dt, why = recommended_time_step(model, 12.0)
+    assert dt == pytest.approx(axial / 10, rel=1e-12)  # 0.0811 s < 12 s / 50
+    assert "axial period" in why and f"{c:.4g} m/s" in why
+    assert recommended_time_step(model, 2.0)[0] == pytest.approx(2.0 / 50, rel=1e-12)  # the forcing decides
+    assert recommended_time_step(model)[0] == pytest.approx(axial / 10, rel=1e-12)
+
+
+def test_a_mooring_run_records_and_prints_its_time_step(capsys):
+    case = sc.parse_case({"line_types": {"c": {"diameter": 0.09, "mass_per_length": 77.7066,
+                                               "weight_in_water": 698.094, "axial_stiffness": 384.243e6}},
+                          "line": {"line_type": "c", "length": 902.2},
+                          "environment": {"depth": 320.0},
+                          "analysis": {"type": "mooring_dynamic", "anchor": [0.0, -320.0], "fairlead": [848.67, -70.0],
+                                       "duration": 2.0, "time_step": 0.1, "output_interval": 0.5, "n_elements": 10,
+                                       "motion": {"type": "harmonic", "amplitude": [1.0, 0.0, 0.0], "period": 4.0}}})
+    ds = sc.run(case, progress=lambda t, d: None)
+    assert ds.attrs["time_step"] == pytest.approx(0.1)
+    assert ds.attrs["recommended_time_step"] == pytest.approx(4.0 / 50)  # 0.08 s < the axial 0.0811 s
+    err = capsys.readouterr().err
+    assert "time step 0.1 s; recommended 0.08 s (1/50 of the forcing period 4 s" in err

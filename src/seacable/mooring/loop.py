@@ -14,7 +14,7 @@ from numba import njit
 
 from . import kernel as K
 
-__all__ = ["record_output", "run_outputs"]
+__all__ = ["evaluate_states", "record_output", "run_outputs"]
 
 
 @njit(cache=True)
@@ -70,3 +70,30 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, channel, elements
                       visco, fidx, bw, env_rec, cur_depth, cur_speed, F, M, tension, times, pos, vel, acc, ten, sup)
         count[0] = k + 1
     return k1
+
+
+@njit(cache=True)
+def evaluate_states(Xs, Vs, As, ts, with_waves, nodes, elems, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+                    weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
+                    visco, fidx, bw, env, cur_depth, cur_speed):
+    """The support forces ``F - M a`` at ``nodes`` and the tensions of ``elems`` at many states (``Xs``, ``Vs``,
+    ``As`` (nt, n, 3) at times ``ts``), as :meth:`seacable.mooring.solver.MooringModel.evaluate` gives them
+    one by one. Returns ``support`` (nt, len(nodes), 3) [N] and ``tension`` (nt, len(elems)) [N]."""
+    n = Xs.shape[1]
+    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+    tension = np.zeros(elements.shape[0])
+    empty = np.zeros((0, 2 * bw + 1))
+    support = np.zeros((Xs.shape[0], nodes.size, 3))
+    out_t = np.zeros((Xs.shape[0], elems.size))
+    for s in range(Xs.shape[0]):
+        K.loads(Xs[s], Vs[s], ts[s], elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd,
+                pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth,
+                cur_speed, with_waves, F, M, tension, empty, bw, 0.0, 0.0)
+        for j in range(nodes.size):
+            i = nodes[j]
+            for r in range(3):
+                support[s, j, r] = F[i, r] - (M[i, r, 0] * As[s, i, 0] + M[i, r, 1] * As[s, i, 1]
+                                              + M[i, r, 2] * As[s, i, 2])
+        for j in range(elems.size):
+            out_t[s, j] = tension[elems[j]]
+    return support, out_t

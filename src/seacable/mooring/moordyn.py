@@ -30,7 +30,7 @@ from .._limits import check_run_size
 from ..errors import InputError, SeacableWarning
 from ..io.moordyn import MoorDynCase, MoorDynInput, load_moordyn_case, moordyn_axial_damping, read_moordyn
 from ..results import make_dataset, var
-from .motion import bind
+from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
 from .run import REFERENCES, network_variables, point_variables, run_events
 from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
@@ -306,12 +306,14 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
         return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
     run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
-                               tol=tolerance * 10, progress=progress)
+                               tol=tolerance * 10, progress=progress, forcing_period=forcing_period(case.motion))
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
                   settings={**settings, "time_step": run.time_step, "steps": run.steps}, velocity=run.velocity,
                   acceleration=run.acceleration)
     ds.update(run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
+    ds.attrs["time_step"] = run.time_step  # the step used (before any halving) [s]
+    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
     return ds
 
 

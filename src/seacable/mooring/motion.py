@@ -20,7 +20,7 @@ from .._model import UNION_TAGS, Model, quantity
 from .._ramp import smooth_ramp
 from ..errors import InputError
 
-__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "rotation_matrix"]
+__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "forcing_period", "rotation_matrix"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -248,6 +248,17 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
 UNION_TAGS.update(("harmonic", "time_series", "platform"))
+
+
+def forcing_period(motion, wave_period: float | None = None) -> float | None:
+    """The shortest period forcing a run: a harmonic motion's (fairlead or platform) and the waves'. [s]
+
+    None when neither is periodic (no motion, or a time series, in still water).
+    """
+    periods = [wave_period] if wave_period is not None and wave_period > 0 else []
+    if isinstance(motion, HarmonicMotion) or (isinstance(motion, PlatformMotion) and motion.period is not None):
+        periods.append(float(motion.period))
+    return min(periods, default=None)
 
 
 def bind(motion, base, duration: float):

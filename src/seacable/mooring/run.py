@@ -14,7 +14,8 @@ from ..results import make_dataset, var
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
-from .motion import bind
+from .loop import evaluate_states
+from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium
 
@@ -160,20 +161,24 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
     V = np.zeros_like(X) if V is None else np.asarray(V, float)
     A = np.zeros_like(X) if A is None else np.asarray(A, float)
     lead = X.shape[:-2]
-    out = np.zeros(lead + (2, 3))
-    times = None if time is None else np.broadcast_to(np.asarray(time, float), lead)
-    for idx in np.ndindex(*lead):
-        t = 0.0 if times is None else float(times[idx])
-        _, _, tension, support = own.evaluate(X[idx], V[idx], A[idx], t, waves=times is not None)
-        out[idx] = support[ends]
-        if model.water.depth is not None:
-            # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
-            # along its end element only (the catenary's H at a grounded anchor)
-            for j in (0, 1):
-                if _clearance(model.water, X[idx][ends[j]]) <= ramp:
-                    d = X[idx][nbrs[j]] - X[idx][ends[j]]
-                    out[idx][j] = tension[end_el[j]] * d / max(np.linalg.norm(d), 1e-300)
-    return out
+    nt = int(np.prod(lead, dtype=np.int64))
+    Xs, Vs, As = (np.ascontiguousarray(np.broadcast_to(a, X.shape).reshape((nt,) + X.shape[-2:])) for a in (X, V, A))
+    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
+                                                                 float).reshape(nt)
+    # every state in one compiled call (what own.evaluate gives state by state)
+    out, tension = evaluate_states(Xs, Vs, As, ts, time is not None, np.array(ends, np.int64),
+                                   np.array(end_el, np.int64), *own.element_args(), own.fidx, own.bw, own.env,
+                                   own.cur_depth, own.cur_speed)
+    if model.water.depth is not None:
+        # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
+        # along its end element only (the catenary's H at a grounded anchor)
+        for j in (0, 1):
+            grounded = _clearance(model.water, Xs[:, ends[j]]) <= ramp
+            if np.any(grounded):
+                d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
+                norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
+                out[grounded, j] = tension[grounded, j, None] * d / norm[:, None]
+    return out.reshape(lead + (2, 3))
 
 
 def _fairlead_end(net: Network) -> tuple[int, int]:
@@ -353,6 +358,8 @@ def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="moo
                                          newton_iterations=run.iterations, **(settings or {})))
     ds.attrs["interrupted"] = int(run.interrupted)
     ds.attrs["wall_time"] = run.wall_time
+    ds.attrs["time_step"] = run.time_step  # the Newmark step used (before any halving) [s]
+    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
     return ds
 
 
@@ -362,8 +369,10 @@ def run_mooring_dynamic(case: Case, progress=None):
     setup = prepare_mooring_dynamic(case)
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
+    waves = case.environment.waves
     run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
-                   tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress)
+                   tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
+                   forcing_period=forcing_period(a.motion, getattr(waves, "period", None)))
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
                                                        "rayleigh": list(a.rayleigh)})
 
