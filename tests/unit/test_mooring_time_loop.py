@@ -198,3 +198,86 @@ def test_a_mooring_run_records_and_prints_its_time_step(capsys):
     assert ds.attrs["recommended_time_step"] == pytest.approx(4.0 / 50)  # 0.08 s < the axial 0.0811 s
     err = capsys.readouterr().err
     assert "time step 0.1 s; recommended 0.08 s (1/50 of the forcing period 4 s" in err
+
+
+THREE_LINES = """--------------------- MoorDyn Input File ------------------------------------
+three 40-segment chains to a platform
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain      0.252   390        1.674e9    -1.0        0          1.37   1.0    0.64    0.0
+---------------------- POINT PROPERTIES --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     720     0.0     -200.0  0      0       0      0
+2     Vessel    20      0.0     0.0     0      0       0      0
+3     Fixed     -360    623.5   -200.0  0      0       0      0
+4     Vessel    -10     17.32   0.0     0      0       0      0
+5     Fixed     -360    -623.5  -200.0  0      0       0      0
+6     Vessel    -10     -17.32  0.0     0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         760       40      -
+2     chain      3        4         760       40      -
+3     chain      5        6         760       40      -
+---------------------- OPTIONS -----------------------------------------
+200                  WtrDpth              water depth (m)
+1.0e5                kBot                 bottom stiffness (Pa/m)
+1.0e4                cBot                 bottom damping (Pa-s/m)
+------------------------- need this line --------------------------------------
+"""
+
+
+def test_three_hour_run_of_three_40_element_lines_fits_in_one_gigabyte(tmp_path, monkeypatch):
+    """Issue 19: 3 h of three 40-element lines, output every 0.1 s. Stored per output: positions and support
+    forces of the 123 nodes (2 x 369), 120 tensions, velocities and accelerations of the 12 end nodes and
+    their neighbours (2 x 36): 930 values, x 108 001 outputs x 8 bytes = 0.804 GB (before: positions,
+    velocities, accelerations and supports of every node, 1596 values, 1.38 GB)."""
+    from seacable.io.moordyn import load_moordyn_case
+    from seacable.mooring.moordyn import prepare_moordyn
+    from seacable.mooring.run import stored_per_output
+
+    path = tmp_path / "three.txt"
+    path.write_text(THREE_LINES)
+    case = load_moordyn_case(path).with_run(duration=3 * 3600.0, time_step=0.1, output_interval=0.1,
+                                            motion=HarmonicMotion(amplitude=(2.0, 0.0, 0.0), period=10.0))
+    monkeypatch.setenv("SEACABLE_MAX_MEMORY", "1e9")
+    model = prepare_moordyn(case)  # refused above 1 GB
+    net = model.network
+    assert (net.n_nodes, net.n_elements) == (123, 120)
+    assert stored_per_output(net) == 930
+    assert 108_001 * 930 * 8 == pytest.approx(0.804e9, rel=1e-3)
+
+
+def test_end_forces_from_the_line_ends_kinematics_equal_those_from_every_node(tmp_path):
+    """Storing the velocities and accelerations of the lines' end nodes and their neighbours only gives the
+    same fairlead and anchor tensions as storing every node's (the others do not enter the end nodes'
+    loads): to round-off, on three lines moved 2 m in surge at 10 s."""
+    from seacable.mooring.moordyn import _dataset, moordyn_model
+    from seacable.mooring.solver import line_end_nodes
+
+    path = tmp_path / "three.txt"
+    path.write_text(THREE_LINES)
+    model = moordyn_model(path)
+    st = static_equilibrium(model)
+    motion = bind(HarmonicMotion(amplitude=(2.0, 0.0, 0.0), period=10.0, ramp=2.0),
+                  model.network.channel_positions(st.position), 6.0)
+    full = simulate(model, motion, 6.0, 0.1, 0.5, initial=st.position)
+    ends = line_end_nodes(model.network)
+    assert ends.size == 12
+    part = simulate(model, motion, 6.0, 0.1, 0.5, initial=st.position, kinematics=ends)
+    assert part.velocity.shape == (13, 12, 3)
+    assert np.array_equal(part.position, full.position)
+    kw = {"title": "t", "settings": {}}
+    a = _dataset(model, full.position, full.tension, full.support, full.time, velocity=full.velocity,
+                 acceleration=full.acceleration, **kw)
+    b = _dataset(model, part.position, part.tension, part.support, part.time, velocity=part.velocity,
+                 acceleration=part.acceleration, kinematic_nodes=part.kinematic_nodes, **kw)
+    for name in ("fairlead_tension", "anchor_tension"):
+        ref = a[name].values
+        assert np.abs(b[name].values - ref).max() <= 1e-12 * np.abs(ref).max()
+    # and the velocities matter: the end forces without them differ (drag and damping at the fairlead)
+    c = _dataset(model, part.position, part.tension, part.support, part.time, velocity=0 * part.velocity,
+                 acceleration=0 * part.acceleration, kinematic_nodes=part.kinematic_nodes, **kw)
+    assert np.abs(c["fairlead_tension"].values[:, 1:] - a["fairlead_tension"].values[:, 1:]).max() > 1.0

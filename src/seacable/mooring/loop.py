@@ -18,12 +18,12 @@ __all__ = ["evaluate_states", "record_output", "run_outputs"]
 
 
 @njit(cache=True)
-def record_output(k, t, X, V, A, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+def record_output(k, t, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, bw, env_rec,
                   cur_depth, cur_speed, F, M, tension, times, pos, vel, acc, ten, sup):
-    """Store the state as output ``k`` at time ``t``: positions, velocities, accelerations, element tensions
-    and the force each node applies to its support, ``F - M a`` (what
-    :meth:`seacable.mooring.solver.MooringModel.evaluate` gives, with ``env_rec`` its environment)."""
+    """Store the state as output ``k`` at time ``t``: positions, element tensions, the force each node applies
+    to its support, ``F - M a`` (what :meth:`seacable.mooring.solver.MooringModel.evaluate` gives, with
+    ``env_rec`` its environment), and the velocities and accelerations of the nodes ``knodes``."""
     empty = np.zeros((0, 2 * bw + 1))
     K.loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
             buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env_rec, cur_depth, cur_speed, True,
@@ -32,15 +32,17 @@ def record_output(k, t, X, V, A, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, ca
     for i in range(X.shape[0]):
         for r in range(3):
             pos[k, i, r] = X[i, r]
-            vel[k, i, r] = V[i, r]
-            acc[k, i, r] = A[i, r]
             sup[k, i, r] = F[i, r] - (M[i, r, 0] * A[i, 0] + M[i, r, 1] * A[i, 1] + M[i, r, 2] * A[i, 2])
+    for j in range(knodes.size):
+        for r in range(3):
+            vel[k, j, r] = V[knodes[j], r]
+            acc[k, j, r] = A[knodes[j], r]
     for e in range(tension.size):
         ten[k, e] = tension[e]
 
 
 @njit(cache=True)
-def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, channel, elements, L0, EA, cdamp, mpl, dia, cdn,
+def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, elements, L0, EA, cdamp, mpl, dia, cdn,
                 cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges,
                 hinge_ei, visco, fidx, nfree, bw, env, env_rec, cur_depth, cur_speed, beta, gamma, tol, max_iter, F, M,
                 tension, stats, count, times, pos, vel, acc, ten, sup):
@@ -65,7 +67,7 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, channel, elements
         if got < sub:
             count[3] = got
             return k
-        record_output(k + 1, (k + 1) * interval, X, V, A, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+        record_output(k + 1, (k + 1) * interval, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                       weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
                       visco, fidx, bw, env_rec, cur_depth, cur_speed, F, M, tension, times, pos, vel, acc, ten, sup)
         count[0] = k + 1
@@ -73,27 +75,33 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, channel, elements
 
 
 @njit(cache=True)
-def evaluate_states(Xs, Vs, As, ts, with_waves, nodes, elems, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+def evaluate_states(Xs, Vs, As, knodes, ts, with_waves, nodes, elems, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
                     visco, fidx, bw, env, cur_depth, cur_speed):
-    """The support forces ``F - M a`` at ``nodes`` and the tensions of ``elems`` at many states (``Xs``, ``Vs``,
-    ``As`` (nt, n, 3) at times ``ts``), as :meth:`seacable.mooring.solver.MooringModel.evaluate` gives them
-    one by one. Returns ``support`` (nt, len(nodes), 3) [N] and ``tension`` (nt, len(elems)) [N]."""
+    """The support forces ``F - M a`` at ``nodes`` and the tensions of ``elems`` at many states (positions ``Xs``
+    (nt, n, 3) at times ``ts``, velocities ``Vs`` and accelerations ``As`` (nt, k, 3) of the nodes ``knodes``,
+    the others' taken as 0), as :meth:`seacable.mooring.solver.MooringModel.evaluate` gives them one by one:
+    exact when ``knodes`` holds ``nodes`` and their neighbours. Returns ``support`` (nt, len(nodes), 3) [N]
+    and ``tension`` (nt, len(elems)) [N]."""
     n = Xs.shape[1]
+    V, A = np.zeros((n, 3)), np.zeros((n, 3))
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(elements.shape[0])
     empty = np.zeros((0, 2 * bw + 1))
     support = np.zeros((Xs.shape[0], nodes.size, 3))
     out_t = np.zeros((Xs.shape[0], elems.size))
     for s in range(Xs.shape[0]):
-        K.loads(Xs[s], Vs[s], ts[s], elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd,
+        for j in range(knodes.size):
+            for r in range(3):
+                V[knodes[j], r] = Vs[s, j, r]
+                A[knodes[j], r] = As[s, j, r]
+        K.loads(Xs[s], V, ts[s], elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd,
                 pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth,
                 cur_speed, with_waves, F, M, tension, empty, bw, 0.0, 0.0)
         for j in range(nodes.size):
             i = nodes[j]
             for r in range(3):
-                support[s, j, r] = F[i, r] - (M[i, r, 0] * As[s, i, 0] + M[i, r, 1] * As[s, i, 1]
-                                              + M[i, r, 2] * As[s, i, 2])
+                support[s, j, r] = F[i, r] - (M[i, r, 0] * A[i, 0] + M[i, r, 1] * A[i, 1] + M[i, r, 2] * A[i, 2])
         for j in range(elems.size):
             out_t[s, j] = tension[elems[j]]
     return support, out_t

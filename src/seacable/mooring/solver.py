@@ -27,6 +27,7 @@ __all__ = [
     "MooringRun",
     "StaticState",
     "Water",
+    "line_end_nodes",
     "pushover",
     "recommended_time_step",
     "simulate",
@@ -389,12 +390,13 @@ class MooringRun:
     wall_time: float
     acceleration: np.ndarray | None = None  # (nt, n, 3)
     recommended_time_step: float = math.nan  # :func:`recommended_time_step` [s]
+    kinematic_nodes: np.ndarray | None = None  # the nodes of velocity and acceleration (nt, k, 3); None: all
 
 
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
              *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30, beta: float = 0.25,
              gamma: float = 0.5, progress=None, max_halvings: int = 6, chunk_seconds: float = 0.25,
-             forcing_period: float | None = None) -> MooringRun:
+             forcing_period: float | None = None, kinematics=None) -> MooringRun:
     """Newmark time stepping from rest at ``initial`` positions (default a static equilibrium).
 
     ``motion(times)`` returns positions, velocities and accelerations of the motion channels,
@@ -409,7 +411,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     here at the halved steps.
 
     The step used and the one :func:`recommended_time_step` gives for ``forcing_period`` [s] are in the
-    result; with ``progress`` (an interactive run) they are also printed on stderr.
+    result; with ``progress`` (an interactive run) they are also printed on stderr. ``kinematics`` (node
+    indices) stores the velocities and accelerations of those nodes only (None: of every node), e.g.
+    :func:`line_end_nodes` for the end forces of the lines: a long run's stored results shrink by half.
     """
     from . import loop as LP
 
@@ -442,8 +446,10 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]
 
+    knodes = np.arange(n) if kinematics is None else np.asarray(kinematics, np.int64)
     times = np.zeros(n_out + 1)
-    pos, vel, acc = (np.zeros((n_out + 1, n, 3)) for _ in range(3))
+    pos = np.zeros((n_out + 1, n, 3))
+    vel, acc = np.zeros((n_out + 1, knodes.size, 3)), np.zeros((n_out + 1, knodes.size, 3))
     ten, sup = np.zeros((n_out + 1, net.n_elements)), np.zeros((n_out + 1, n, 3))
     env_rec = model.env
     if model.visco.shape[0]:
@@ -453,7 +459,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     store = (times, pos, vel, acc, ten, sup)
 
     def record(k):
-        LP.record_output(k, k * output_interval, X, V, A, *args, model.fidx, model.bw, env_rec, model.cur_depth,
+        LP.record_output(k, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec, model.cur_depth,
                          model.cur_speed, F, M, tension, *store)
 
     record(0)
@@ -477,9 +483,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
             px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
             tick = _time.perf_counter()
-            got = LP.run_outputs(k, k1, output_interval, h, sub, px, pv, pa, X, V, A, net.channel, *args, model.fidx,
-                                 model.nfree, model.bw, model.env, env_rec, model.cur_depth, model.cur_speed, beta,
-                                 gamma, tol, max_iter, F, M, tension, stats, count, *store)
+            got = LP.run_outputs(k, k1, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
+                                 model.fidx, model.nfree, model.bw, model.env, env_rec, model.cur_depth,
+                                 model.cur_speed, beta, gamma, tol, max_iter, F, M, tension, stats, count, *store)
             if got < k1:  # a step failed: the rest of that interval at halved steps, then on
                 done, spent = advance_interval(got * output_interval, h, sub, channels, newmark, stats,
                                                max_halvings, max_iter, "mooring", fix, failed_at=int(count[3]))
@@ -504,4 +510,12 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     nt = reported + 1 if interrupted and reporting else int(count[0]) + 1
     return MooringRun(time=times[:nt].copy(), position=pos[:nt], velocity=vel[:nt], tension=ten[:nt],
                       support=sup[:nt], time_step=h, iterations=int(count[2]), steps=int(count[1]),
-                      interrupted=interrupted, wall_time=wall, acceleration=acc[:nt], recommended_time_step=dt_rec)
+                      interrupted=interrupted, wall_time=wall, acceleration=acc[:nt], recommended_time_step=dt_rec,
+                      kinematic_nodes=None if kinematics is None else knodes)
+
+
+def line_end_nodes(network: Network) -> np.ndarray:
+    """The nodes whose velocity and acceleration the end forces of the lines need: each line's two end nodes
+    and their neighbours (:func:`seacable.mooring.run.line_end_forces`), sorted."""
+    return np.unique(np.concatenate([np.asarray(nodes)[[0, 1, -2, -1]] if len(nodes) > 1 else np.asarray(nodes)
+                                     for nodes in network.line_nodes] or [np.zeros(0, np.int64)])).astype(np.int64)
