@@ -15,7 +15,8 @@ and lumping), which is the accuracy race of ``bench/moordyn_peer.py``, not this 
 Timing: seacable's is the whole user path, ``run_moordyn_case``: reading the file, the model, the
 statics, the time loop and the result Dataset (``wall total``). MoorDyn's is ``Create + Init`` (its
 initial-condition solve, a dynamic relaxation) plus the stepping (``wall total``), and the stepping
-alone; the ratio is given against both. Best of ``repeat`` runs in one process (the machine is shared).
+alone; the ratio is given against both. The two codes run in turn, ``repeat`` pairs in one process (the
+machine is shared): medians of wall and CPU time, and of the ratios pair by pair.
 
 Run: ``python bench/bench_mooring.py [repeat]`` (needs ``pip install moordyn``; a bench-only dependency).
 """
@@ -52,9 +53,9 @@ def deck(segments: int, cfl: float = 0.1, folder=None) -> Path:
     """WD0200_Chain.txt with ``segments`` segments and MoorDyn's ``cfl``, without its saved IC (written to a
     temporary folder; the original is read only)."""
     text = (md.PEER_DIR / "WD0200_Chain.txt").read_text()
-    text = re.sub(r"^(1\s+chain\s+1\s+2\s+760\s+)\d+", lambda m: m.group(1) + str(segments), text, flags=re.M)
-    text = re.sub(r"^.*fileIC.*$", "", text, flags=re.M)
-    text = re.sub(r"^\S+(\s+cfl\b)", lambda m: f"{cfl:g}" + m.group(1), text, flags=re.M)
+    text = re.sub(r"^(1\s+chain\s+1\s+2\s+760\s+)\d+", lambda m: m.group(1) + str(segments), text, flags=re.MULTILINE)
+    text = re.sub(r"^.*fileIC.*$", "", text, flags=re.MULTILINE)
+    text = re.sub(r"^\S+(\s+cfl\b)", lambda m: f"{cfl:g}" + m.group(1), text, flags=re.MULTILINE)
     path = Path(folder or tempfile.mkdtemp(prefix="bench_mooring_")) / f"WD0200_{segments}_{cfl:g}.txt"
     path.write_text(text)
     return path
@@ -63,20 +64,22 @@ def deck(segments: int, cfl: float = 0.1, folder=None) -> Path:
 def run_seacable(segments: int, dt: float) -> dict:
     """The whole user path: file -> model -> statics -> time loop -> Dataset; the fairlead tension."""
     path = deck(segments)
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     case = load_moordyn_case(path).with_run(duration=DURATION, time_step=dt, output_interval=OUTPUT,
                                             motion=HarmonicMotion(amplitude=(0.0, 0.0, AMPLITUDE), period=PERIOD))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the deck's MoorDyn-only options (writeLog, ...)
         ds = run_moordyn_case(case)
-    wall = time.perf_counter() - start
+    wall, cpu = time.perf_counter() - start, time.process_time() - cpu
     fair = np.asarray(ds["fairlead_tension"]).reshape(-1)
-    return {"peak": float(np.max(fair)), "wall": wall, "recommended": float(ds.attrs["recommended_time_step"])}
+    return {"peak": float(np.max(fair)), "wall": wall, "cpu": cpu,
+            "recommended": float(ds.attrs["recommended_time_step"])}
 
 
 def run_moordyn(segments: int, cfl: float) -> dict | None:
     """MoorDyn from Create to the last step; None when it blows up."""
     motion = md.heave_motion(AMPLITUDE, PERIOD, duration=DURATION + 1.0)
+    cpu = time.process_time()
     try:
         with md._quiet():  # its messages when a step blows up
             r = md.run_moordyn(deck(segments, cfl), motion, duration=DURATION, use_ic_file=False)
@@ -85,7 +88,7 @@ def run_moordyn(segments: int, cfl: float) -> dict | None:
     if not np.all(np.isfinite(r["fairlead_tension"])):
         return None
     return {"peak": float(np.max(r["fairlead_tension"])), "wall": r["wall_time"] + r["wall_time_init"],
-            "loop": r["wall_time"], "dt": r["dt"]}
+            "cpu": time.process_time() - cpu, "loop": r["wall_time"], "dt": r["dt"]}
 
 
 def _largest_accurate(ladder, run, converged):
@@ -99,44 +102,53 @@ def _largest_accurate(ladder, run, converged):
     return (max(ok) if ok else None), errors
 
 
-def _best(run, step, repeat):
-    runs = [run(step) for _ in range(repeat)]
-    return min(runs, key=lambda r: r["wall"])
+def _race(n, sc_dt, md_cfl, repeat):
+    """seacable and MoorDyn in turn, ``repeat`` pairs (so that both see the same machine load): the median
+    of each figure, and the median of the ratios pair by pair."""
+    pairs = [(run_seacable(n, sc_dt), run_moordyn(n, md_cfl)) for _ in range(repeat)]
+    med = {}
+    for key in ("wall", "cpu"):
+        med[f"sc_{key}"] = float(np.median([a[key] for a, _ in pairs]))
+        med[f"md_{key}"] = float(np.median([b[key] for _, b in pairs]))
+        med[f"ratio_{key}"] = float(np.median([a[key] / b[key] for a, b in pairs]))
+    med["md_loop"] = float(np.median([b["loop"] for _, b in pairs]))
+    med["ratio_loop"] = float(np.median([a["wall"] / b["loop"] for a, b in pairs]))
+    return pairs[0][0], pairs[0][1], med
 
 
-def main(repeat: int = 3, segments=SEGMENTS):
+def main(repeat: int = 5, segments=SEGMENTS):
     print(f"WD0200 chain, {AMPLITUDE:g} m heave at {PERIOD:g} s, {DURATION:g} s, fairlead tension every {OUTPUT:g} s; "
           f"each code at its largest step within {100 * TOLERANCE:g} % of its own converged peak tension")
     run_seacable(20, 0.1)  # compile once
     rows = []
     for n in segments:
         sc_ref = run_seacable(n, SEACABLE_CONVERGED)
-        sc_dt, sc_err = _largest_accurate(SEACABLE_STEPS, lambda s: run_seacable(n, s), sc_ref)
+        sc_dt, sc_err = _largest_accurate(SEACABLE_STEPS, lambda s, n=n: run_seacable(n, s), sc_ref)
         md_ref = run_moordyn(n, MOORDYN_CONVERGED)
-        md_cfl, md_err = _largest_accurate(MOORDYN_CFL, lambda c: run_moordyn(n, c), md_ref)
-        sc = _best(lambda s: run_seacable(n, s), sc_dt, repeat)
-        mdr = _best(lambda c: run_moordyn(n, c), md_cfl, repeat)
-        rows.append((n, sc_dt, sc, sc_err, md_cfl, mdr, md_err, sc_ref, md_ref))
+        md_cfl, md_err = _largest_accurate(MOORDYN_CFL, lambda c, n=n: run_moordyn(n, c), md_ref)
+        sc, mdr, m = _race(n, sc_dt, md_cfl, repeat)
+        rows.append((n, sc_dt, md_cfl, mdr["dt"], m))
         print(f"\n{n} segments")
         print(f"  {'code':9s} {'step [s]':>9s} {'peak [kN]':>9s} {'conv. [kN]':>10s} {'err %':>6s} "
-              f"{'wall total [s]':>14s} {'stepping [s]':>12s}  errors % along the ladder (nan: blew up)")
+              f"{'wall [s]':>9s} {'cpu [s]':>8s} {'stepping [s]':>12s}  errors % along the ladder (nan: blew up)")
         print(f"  {'seacable':9s} {sc_dt:9.3g} {sc['peak'] / 1e3:9.1f} {sc_ref['peak'] / 1e3:10.1f} "
-              f"{sc_err[sc_dt]:6.2f} {sc['wall']:14.3f} {'':>12s}  "
+              f"{sc_err[sc_dt]:6.2f} {m['sc_wall']:9.3f} {m['sc_cpu']:8.3f} {'':>12s}  "
               + ", ".join(f"{s:g} s: {e:.2f}" for s, e in sc_err.items()))
         print(f"  {'MoorDyn':9s} {mdr['dt']:9.3g} {mdr['peak'] / 1e3:9.1f} {md_ref['peak'] / 1e3:10.1f} "
-              f"{md_err[md_cfl]:6.2f} {mdr['wall']:14.3f} {mdr['loop']:12.3f}  "
+              f"{md_err[md_cfl]:6.2f} {m['md_wall']:9.3f} {m['md_cpu']:8.3f} {m['md_loop']:12.3f}  "
               + ", ".join(f"CFL {c:g}: {e:.2f}" for c, e in md_err.items()))
-        print(f"  seacable / MoorDyn: {sc['wall'] / mdr['wall']:.2f} (totals), {sc['wall'] / mdr['loop']:.2f} "
-              f"(seacable's total against MoorDyn's stepping alone); seacable's recommended step "
-              f"{sc['recommended']:.3g} s")
-    print("\nsummary: segments | seacable dt | MoorDyn CFL (dtM) | seacable total | MoorDyn total | MoorDyn stepping "
-          "| ratio totals | ratio vs stepping")
-    for n, sc_dt, sc, _, md_cfl, mdr, _, _, _ in rows:
-        print(f"| {n} | {sc_dt:g} s | {md_cfl:g} ({mdr['dt']:.3g} s) | {sc['wall']:.3f} s | {mdr['wall']:.3f} s | "
-              f"{mdr['loop']:.3f} s | {sc['wall'] / mdr['wall']:.2f} | {sc['wall'] / mdr['loop']:.2f} |")
+        print(f"  seacable / MoorDyn (median of {repeat} pairs): wall {m['ratio_wall']:.2f}, cpu {m['ratio_cpu']:.2f}, "
+              f"seacable's whole wall against MoorDyn's stepping alone {m['ratio_loop']:.2f}; seacable's "
+              f"recommended step {sc['recommended']:.3g} s")
+    print("\n| segments | seacable dt | MoorDyn CFL (dtM) | seacable wall | MoorDyn wall (stepping) | ratio wall | "
+          "ratio cpu | ratio vs MoorDyn stepping |")
+    print("|---|---|---|---|---|---|---|---|")
+    for n, sc_dt, md_cfl, md_dt, m in rows:
+        print(f"| {n} | {sc_dt:g} s | {md_cfl:g} ({md_dt:.3g} s) | {m['sc_wall']:.3f} s | {m['md_wall']:.3f} s "
+              f"({m['md_loop']:.3f} s) | {m['ratio_wall']:.2f} | {m['ratio_cpu']:.2f} | {m['ratio_loop']:.2f} |")
     return rows
 
 
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 3,
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 5,
          tuple(int(a) for a in sys.argv[2:]) or SEGMENTS)
