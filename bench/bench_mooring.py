@@ -18,7 +18,11 @@ initial-condition solve, a dynamic relaxation) plus the stepping (``wall total``
 alone; the ratio is given against both. The two codes run in turn, ``repeat`` pairs in one process (the
 machine is shared): medians of wall and CPU time, and of the ratios pair by pair.
 
-Run: ``python bench/bench_mooring.py [repeat]`` (needs ``pip install moordyn``; a bench-only dependency).
+The snap-load case (``python bench/bench_mooring.py snap``): a 33 m tank-scale chain of 83 segments whose
+fairlead moves on a 0.2 m circle every 1.25 s, the same ladders and 1 % rule (see :func:`snap`).
+
+Run: ``python bench/bench_mooring.py [repeat [segments ...]]`` or ``... snap`` (needs ``pip install
+moordyn``; a bench-only dependency).
 """
 
 from __future__ import annotations
@@ -38,7 +42,7 @@ import moordyn_peer as md
 from seacable.errors import ConvergenceError
 from seacable.io.moordyn import load_moordyn_case
 from seacable.mooring.moordyn import run_moordyn_case
-from seacable.mooring.motion import HarmonicMotion
+from seacable.mooring.motion import HarmonicMotion, PlatformMotion
 
 SEGMENTS = (20, 50, 100, 200)
 DURATION, AMPLITUDE, PERIOD, OUTPUT = 100.0, 2.0, 10.0, 0.1
@@ -116,6 +120,108 @@ def _race(n, sc_dt, md_cfl, repeat):
     return pairs[0][0], pairs[0][1], med
 
 
+SNAP_DECK = """--------------------- MoorDyn Input File ------------------------------------
+tank-scale chain, fairlead on a circle (snap loads; written for this bench)
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain      0.0054  0.0948     3.0e5      -0.8        0          1.2    1.0    0.2     0.0
+---------------------- POINT PROPERTIES --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     0.0     0.0     -2.5    0      0       0      0
+2     Vessel    32.0    0.0     -0.3    0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         33.0      83      -
+---------------------- OPTIONS -----------------------------------------
+{cfl}                cfl                  CFL to determine the simulation timestep
+3.0e6                kBot                 bottom stiffness (Pa/m)
+1.0e4                cBot                 bottom damping (Pa-s/m)
+1000.0               WtrDnsty             water density (kg/m^3)
+2.5                  WtrDpth              water depth (m)
+------------------------- need this line --------------------------------------
+"""
+SNAP_FAIRLEAD = (32.0, 0.0, -0.3)
+SNAP_RADIUS, SNAP_PERIOD, SNAP_RAMP, SNAP_DURATION, SNAP_OUTPUT = 0.2, 1.25, 2.5, 10.0, 0.01
+
+
+def snap_motion():
+    """The fairlead on a 0.2 m radius circle in the x-z plane every 1.25 s, ramped in over 2.5 s."""
+    return PlatformMotion(amplitude=(SNAP_RADIUS, 0.0, SNAP_RADIUS, 0.0, 0.0, 0.0),
+                          phase=(np.pi / 2, 0.0, 0.0, 0.0, 0.0, 0.0), period=SNAP_PERIOD, reference=SNAP_FAIRLEAD,
+                          ramp=SNAP_RAMP)
+
+
+def snap_deck(cfl: float = 0.1) -> Path:
+    path = Path(tempfile.mkdtemp(prefix="bench_snap_")) / f"snap_{cfl:g}.txt"
+    path.write_text(SNAP_DECK.format(cfl=f"{cfl:g}"))
+    return path
+
+
+def run_snap_seacable(dt: float) -> dict | None:
+    """The snap case through ``run_moordyn_case``; None when a step does not converge."""
+    start, cpu = time.perf_counter(), time.process_time()
+    case = load_moordyn_case(snap_deck()).with_run(duration=SNAP_DURATION, time_step=dt, output_interval=SNAP_OUTPUT,
+                                                   motion=snap_motion())
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            ds = run_moordyn_case(case)
+    except ConvergenceError as err:
+        print(f"  seacable dt {dt:g} s: {str(err)[:160]}")
+        return None
+    fair = np.asarray(ds["fairlead_tension"]).reshape(-1)
+    return {"peak": float(np.max(fair)), "wall": time.perf_counter() - start, "cpu": time.process_time() - cpu}
+
+
+def run_snap_moordyn(cfl: float) -> dict | None:
+    """MoorDyn on the same deck, its coupled point on the same (ramped) circle sampled every output."""
+    t = np.arange(0.0, SNAP_DURATION + 1.0 + 1e-9, SNAP_OUTPUT)
+    x = snap_motion().channels(t, np.array([SNAP_FAIRLEAD]))[0][:, 0]
+    motion = {"time": t, "x": x[:, 0], "y": x[:, 1], "z": x[:, 2]}  # run_moordyn's Init takes them absolute
+    cpu = time.process_time()
+    try:
+        with md._quiet():
+            r = md.run_moordyn(snap_deck(cfl), motion, duration=SNAP_DURATION, dt_out=SNAP_OUTPUT,
+                               use_ic_file=False)
+    except (ConvergenceError, RuntimeError):
+        return None
+    return {"peak": float(np.max(r["fairlead_tension"])), "wall": r["wall_time"] + r["wall_time_init"],
+            "cpu": time.process_time() - cpu, "loop": r["wall_time"], "dt": r["dt"]}
+
+
+def _peak(r) -> str:
+    return "failed" if r is None else f"{r['peak']:.2f} N"
+
+
+def snap(repeat: int = 3):
+    """The snap-load case (issue 19: a 33 m tank-scale chain, 83 segments, its fairlead on a 0.2 m circle
+    every 1.25 s; the chain and seabed written here, MoorDyn's cBot lowered to 1e4 Pa s/m, which its CFL
+    step does not resolve at 3e5): each code's peak fairlead tension along its ladder of steps, and the
+    race at equal accuracy when both have a step within 1 % of their own converged peak."""
+    print(f"snap case: 33 m chain, 83 segments, fairlead on a {SNAP_RADIUS:g} m circle every {SNAP_PERIOD:g} s, "
+          f"{SNAP_DURATION:g} s, output every {SNAP_OUTPUT:g} s")
+    codes = {"seacable": ((0.01, 0.005, 0.0025), run_snap_seacable, run_snap_seacable(0.00125)),
+             "MoorDyn": ((0.14, 0.1, 0.07), run_snap_moordyn, run_snap_moordyn(0.035))}
+    chosen = {}
+    for name, (ladder, run, ref) in codes.items():
+        runs = {step: run(step) for step in ladder}
+        ok = [st for st, r in runs.items() if r is not None and ref is not None
+              and abs(r["peak"] / ref["peak"] - 1.0) <= TOLERANCE]
+        chosen[name] = max(ok) if ok else None
+        print(f"  {name}: converged peak {_peak(ref)}; along the ladder "
+              + ", ".join(f"{st:g}: {_peak(r)}" for st, r in runs.items())
+              + f"; largest step within 1 %: {chosen[name]}")
+    if None in chosen.values():
+        print("  no race at equal accuracy: a code has no step of its ladder within 1 % of its converged peak")
+        return
+    pairs = [(run_snap_seacable(chosen["seacable"]), run_snap_moordyn(chosen["MoorDyn"])) for _ in range(repeat)]
+    print(f"  seacable / MoorDyn wall (median of {repeat} pairs): "
+          f"{float(np.median([a['wall'] / b['wall'] for a, b in pairs])):.2f}")
+
+
 def main(repeat: int = 5, segments=SEGMENTS):
     print(f"WD0200 chain, {AMPLITUDE:g} m heave at {PERIOD:g} s, {DURATION:g} s, fairlead tension every {OUTPUT:g} s; "
           f"each code at its largest step within {100 * TOLERANCE:g} % of its own converged peak tension")
@@ -149,6 +255,8 @@ def main(repeat: int = 5, segments=SEGMENTS):
     return rows
 
 
-if __name__ == "__main__":
+if __name__ == "__main__" and sys.argv[1:2] == ["snap"]:
+    snap()
+elif __name__ == "__main__":
     main(int(sys.argv[1]) if len(sys.argv) > 1 else 5,
          tuple(int(a) for a in sys.argv[2:]) or SEGMENTS)
