@@ -1,90 +1,262 @@
-"""Speed race on MoorDyn's quasi-static chain cases: seacable's implicit truss FE vs MoorDyn v2.
+"""Speed race on MoorDyn's WD0200 chain: seacable's implicit truss FE vs MoorDyn v2, at equal accuracy.
 
-Same input files (``../shared/peers/moordyn/WD{0050,0200,0600}_Chain.txt``, equal segment
-counts), same heave motion (2 m or 5 m at 10 s, no ramp), 100 s simulated after the statics. The
-accuracy of both is measured against the OrcaFlex fairlead-tension series over its 20 s, as the
-largest error of the swing about each code's static value in % of OrcaFlex's peak-to-peak range
-(MoorDyn's test accepts 15 %). Wall times are for the time stepping alone, best of ``repeat``;
-the statics (seacable's Newton, MoorDyn's IC) are listed separately.
+The case (issue 19): MoorDyn's ``../shared/peers/moordyn/WD0200_Chain.txt`` (a 760 m studless chain in
+200 m of water) with its line cut into 20, 50, 100 and 200 segments, the fairlead moved 2 m in heave
+at 10 s (no ramp), 100 s simulated, the fairlead tension stored every 0.1 s.
 
-Run: ``python bench/bench_mooring.py [A1|A2]`` (needs ``pip install moordyn``; a bench-only
-dependency).
+Equal accuracy, found per code and per mesh: each code runs at a ladder of steps (seacable: Newmark
+steps 0.1, 0.05, 0.025 s; MoorDyn: CFL 0.4, 0.2, 0.17, 0.14, 0.12, 0.1, its dtM = CFL 2 pi L sqrt(m / EA)); its
+converged peak fairlead tension is that of a run at a step 8 (seacable, 0.0125 s) or 2 (MoorDyn, CFL
+0.05) times finer than the finest of its ladder; the step it is timed at is the largest of the
+ladder whose peak tension is within 1 % of that converged peak (a run that blows up does not count).
+Each code is compared with itself: the two models differ (MoorDyn's peak is higher, by its seabed
+and lumping), which is the accuracy race of ``bench/moordyn_peer.py``, not this one.
+
+Timing: seacable's is the whole user path, ``run_moordyn_case``: reading the file, the model, the
+statics, the time loop and the result Dataset (``wall total``). MoorDyn's is ``Create + Init`` (its
+initial-condition solve, a dynamic relaxation) plus the stepping (``wall total``), and the stepping
+alone; the ratio is given against both. The two codes run in turn, ``repeat`` pairs in one process (the
+machine is shared): medians of wall and CPU time, and of the ratios pair by pair.
+
+The snap-load case (``python bench/bench_mooring.py snap``): a 33 m tank-scale chain of 83 segments whose
+fairlead moves on a 0.2 m circle every 1.25 s, the same ladders and 1 % rule (see :func:`snap`).
+
+Run: ``python bench/bench_mooring.py [repeat [segments ...]]`` or ``... snap`` (needs ``pip install
+moordyn``; a bench-only dependency).
 """
 
 from __future__ import annotations
 
+import re
 import sys
+import tempfile
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 sys.path.insert(0, str(Path(__file__).parent))
 import moordyn_peer as md
 
-from seacable.mooring.moordyn import moordyn_model
-from seacable.mooring.network import PRESCRIBED
-from seacable.mooring.solver import simulate, static_equilibrium
+from seacable.errors import ConvergenceError
+from seacable.io.moordyn import load_moordyn_case
+from seacable.mooring.moordyn import run_moordyn_case
+from seacable.mooring.motion import HarmonicMotion, PlatformMotion
+
+SEGMENTS = (20, 50, 100, 200)
+DURATION, AMPLITUDE, PERIOD, OUTPUT = 100.0, 2.0, 10.0, 0.1
+SEACABLE_STEPS = (0.1, 0.05, 0.025)
+SEACABLE_CONVERGED = 0.0125
+MOORDYN_CFL = (0.4, 0.2, 0.17, 0.14, 0.12, 0.1)
+MOORDYN_CONVERGED = 0.05
+TOLERANCE = 0.01  # each code within 1 % of its own converged peak tension
 
 
-def _motion_fn(base, motion):
-    t0 = motion["time"][0]
-    spline = CubicSpline(motion["time"] - t0, np.column_stack([motion["x"], motion["y"], motion["z"]]))
-
-    def fn(t):
-        t = np.asarray(t, float)
-        return base[None] + spline(t)[:, None, :], spline(t, 1)[:, None, :], spline(t, 2)[:, None, :]
-
-    return fn
-
-
-def run_seacable(case: Path, motion: dict, duration: float, dt: float):
-    """Statics then ``duration`` s of the motion; dict in the layout of ``moordyn_peer.run_moordyn``."""
-    start = time.perf_counter()
-    model = moordyn_model(case)
-    st = static_equilibrium(model)
-    t_static = time.perf_counter() - start
-    base = model.network.position[model.network.kind == PRESCRIBED]
-    start = time.perf_counter()
-    run = simulate(model, _motion_fn(base, motion), duration, dt, 0.1, initial=st.position, tol=1e-6)
-    wall = time.perf_counter() - start
-    fair = model.network.line_nodes[0][-1]
-    return {"time": run.time + motion["time"][0],
-            "fairlead_tension": np.linalg.norm(run.support[:, fair], axis=1),
-            "anchor_tension": np.linalg.norm(run.support[:, 0], axis=1),
-            "static_fairlead_tension": float(np.linalg.norm(st.support[fair])),
-            "static_anchor_tension": float(np.linalg.norm(st.support[0])),
-            "wall_time": wall, "wall_time_init": t_static, "steps": run.steps, "iterations": run.iterations,
-            "n_segments": model.network.n_elements}
+def deck(segments: int, cfl: float = 0.1, folder=None) -> Path:
+    """WD0200_Chain.txt with ``segments`` segments and MoorDyn's ``cfl``, without its saved IC (written to a
+    temporary folder; the original is read only)."""
+    text = (md.PEER_DIR / "WD0200_Chain.txt").read_text()
+    text = re.sub(r"^(1\s+chain\s+1\s+2\s+760\s+)\d+", lambda m: m.group(1) + str(segments), text, flags=re.MULTILINE)
+    text = re.sub(r"^.*fileIC.*$", "", text, flags=re.MULTILINE)
+    text = re.sub(r"^\S+(\s+cfl\b)", lambda m: f"{cfl:g}" + m.group(1), text, flags=re.MULTILINE)
+    path = Path(folder or tempfile.mkdtemp(prefix="bench_mooring_")) / f"WD0200_{segments}_{cfl:g}.txt"
+    path.write_text(text)
+    return path
 
 
-def main(amplitude_tag: str = "A1", duration: float = 100.0, repeat: int = 3, dts=(0.1, 0.05)):
-    print(f"MoorDyn chain cases, heave {amplitude_tag} (10 s), {duration:g} s simulated; "
-          "error = max |swing - OrcaFlex swing| / OrcaFlex peak-to-peak")
-    print(f"{'case':7s} {'code':14s} {'segs':>4s} {'dt [s]':>9s} {'static [s]':>10s} {'100 s [s]':>9s} "
-          f"{'ratio':>6s} {'T0 [kN]':>8s} {'T0 Orca':>8s} {'dyn err %':>9s} {'anchor %':>8s}")
-    for tag in md.STATIC_REFERENCE:
-        ref = md.load_reference(tag, amplitude_tag)
-        case = md.PEER_DIR / f"{tag}_Chain.txt"
-        span = ref["motion"]["time"][-1] - ref["motion"]["time"][0]
-        long_motion = md.heave_motion(ref["amplitude"], duration=duration + 1.0)
-        acc_md = md.accuracy(md.run_moordyn(case, ref["motion"], duration=span), ref)
-        runs = [md.run_moordyn(case, long_motion, duration=duration) for _ in range(repeat)]
-        t_md = min(r["wall_time"] for r in runs)
-        print(f"{tag:7s} {'MoorDyn ' + runs[0]['version']:14s} {runs[0]['n_segments']:4d} {runs[0]['dt']:9.2e} "
-              f"{min(r['wall_time_init'] for r in runs):10.3f} {t_md:9.3f} {1.0:6.2f} "
-              f"{acc_md['static_fairlead_tension'] / 1e3:8.1f} {acc_md['static_fairlead_tension_ref'] / 1e3:8.1f} "
-              f"{acc_md['fairlead_max_error_pct']:9.2f} {acc_md['anchor_max_error_pct']:8.2f}")
-        for dt in dts:
-            acc = md.accuracy(run_seacable(case, ref["motion"], span, dt), ref)
-            runs = [run_seacable(case, long_motion, duration, dt) for _ in range(repeat)]
-            t_sc = min(r["wall_time"] for r in runs)
-            print(f"{tag:7s} {'seacable':14s} {runs[0]['n_segments']:4d} {dt:9.2e} "
-                  f"{min(r['wall_time_init'] for r in runs):10.3f} {t_sc:9.3f} {t_sc / t_md:6.2f} "
-                  f"{acc['static_fairlead_tension'] / 1e3:8.1f} {acc['static_fairlead_tension_ref'] / 1e3:8.1f} "
-                  f"{acc['fairlead_max_error_pct']:9.2f} {acc['anchor_max_error_pct']:8.2f}")
+def run_seacable(segments: int, dt: float) -> dict:
+    """The whole user path: file -> model -> statics -> time loop -> Dataset; the fairlead tension."""
+    path = deck(segments)
+    start, cpu = time.perf_counter(), time.process_time()
+    case = load_moordyn_case(path).with_run(duration=DURATION, time_step=dt, output_interval=OUTPUT,
+                                            motion=HarmonicMotion(amplitude=(0.0, 0.0, AMPLITUDE), period=PERIOD))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the deck's MoorDyn-only options (writeLog, ...)
+        ds = run_moordyn_case(case)
+    wall, cpu = time.perf_counter() - start, time.process_time() - cpu
+    fair = np.asarray(ds["fairlead_tension"]).reshape(-1)
+    return {"peak": float(np.max(fair)), "wall": wall, "cpu": cpu,
+            "recommended": float(ds.attrs["recommended_time_step"])}
 
 
-if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "A1")
+def run_moordyn(segments: int, cfl: float) -> dict | None:
+    """MoorDyn from Create to the last step; None when it blows up."""
+    motion = md.heave_motion(AMPLITUDE, PERIOD, duration=DURATION + 1.0)
+    cpu = time.process_time()
+    try:
+        with md._quiet():  # its messages when a step blows up
+            r = md.run_moordyn(deck(segments, cfl), motion, duration=DURATION, use_ic_file=False)
+    except (ConvergenceError, RuntimeError):  # MoorDyn's step error: the step is unstable
+        return None
+    if not np.all(np.isfinite(r["fairlead_tension"])):
+        return None
+    return {"peak": float(np.max(r["fairlead_tension"])), "wall": r["wall_time"] + r["wall_time_init"],
+            "cpu": time.process_time() - cpu, "loop": r["wall_time"], "dt": r["dt"]}
+
+
+def _largest_accurate(ladder, run, converged):
+    """(step, result) of the largest step of ``ladder`` within TOLERANCE of ``converged``'s peak, and the
+    errors [%] of every step."""
+    errors = {}
+    for step in ladder:
+        r = run(step)
+        errors[step] = np.nan if r is None else 100.0 * abs(r["peak"] / converged["peak"] - 1.0)
+    ok = [s for s in ladder if errors[s] <= 100.0 * TOLERANCE]
+    return (max(ok) if ok else None), errors
+
+
+def _race(n, sc_dt, md_cfl, repeat):
+    """seacable and MoorDyn in turn, ``repeat`` pairs (so that both see the same machine load): the median
+    of each figure, and the median of the ratios pair by pair."""
+    pairs = [(run_seacable(n, sc_dt), run_moordyn(n, md_cfl)) for _ in range(repeat)]
+    med = {}
+    for key in ("wall", "cpu"):
+        med[f"sc_{key}"] = float(np.median([a[key] for a, _ in pairs]))
+        med[f"md_{key}"] = float(np.median([b[key] for _, b in pairs]))
+        med[f"ratio_{key}"] = float(np.median([a[key] / b[key] for a, b in pairs]))
+    med["md_loop"] = float(np.median([b["loop"] for _, b in pairs]))
+    med["ratio_loop"] = float(np.median([a["wall"] / b["loop"] for a, b in pairs]))
+    return pairs[0][0], pairs[0][1], med
+
+
+SNAP_DECK = """--------------------- MoorDyn Input File ------------------------------------
+tank-scale chain, fairlead on a circle (snap loads; written for this bench)
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+chain      0.0054  0.0948     3.0e5      -0.8        0          1.2    1.0    0.2     0.0
+---------------------- POINT PROPERTIES --------------------------------
+ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
+(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
+1     Fixed     0.0     0.0     -2.5    0      0       0      0
+2     Vessel    32.0    0.0     -0.3    0      0       0      0
+---------------------- LINES ----------------------------------------
+ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)   (name)     (#)      (#)       (m)       (-)     (-)
+1     chain      1        2         33.0      83      -
+---------------------- OPTIONS -----------------------------------------
+{cfl}                cfl                  CFL to determine the simulation timestep
+3.0e6                kBot                 bottom stiffness (Pa/m)
+1.0e4                cBot                 bottom damping (Pa-s/m)
+1000.0               WtrDnsty             water density (kg/m^3)
+2.5                  WtrDpth              water depth (m)
+------------------------- need this line --------------------------------------
+"""
+SNAP_FAIRLEAD = (32.0, 0.0, -0.3)
+SNAP_RADIUS, SNAP_PERIOD, SNAP_RAMP, SNAP_DURATION, SNAP_OUTPUT = 0.2, 1.25, 2.5, 10.0, 0.01
+
+
+def snap_motion():
+    """The fairlead on a 0.2 m radius circle in the x-z plane every 1.25 s, ramped in over 2.5 s."""
+    return PlatformMotion(amplitude=(SNAP_RADIUS, 0.0, SNAP_RADIUS, 0.0, 0.0, 0.0),
+                          phase=(np.pi / 2, 0.0, 0.0, 0.0, 0.0, 0.0), period=SNAP_PERIOD, reference=SNAP_FAIRLEAD,
+                          ramp=SNAP_RAMP)
+
+
+def snap_deck(cfl: float = 0.1) -> Path:
+    path = Path(tempfile.mkdtemp(prefix="bench_snap_")) / f"snap_{cfl:g}.txt"
+    path.write_text(SNAP_DECK.format(cfl=f"{cfl:g}"))
+    return path
+
+
+def run_snap_seacable(dt: float) -> dict | None:
+    """The snap case through ``run_moordyn_case``; None when a step does not converge."""
+    start, cpu = time.perf_counter(), time.process_time()
+    case = load_moordyn_case(snap_deck()).with_run(duration=SNAP_DURATION, time_step=dt, output_interval=SNAP_OUTPUT,
+                                                   motion=snap_motion())
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            ds = run_moordyn_case(case)
+    except ConvergenceError as err:
+        print(f"  seacable dt {dt:g} s: {str(err)[:160]}")
+        return None
+    fair = np.asarray(ds["fairlead_tension"]).reshape(-1)
+    return {"peak": float(np.max(fair)), "wall": time.perf_counter() - start, "cpu": time.process_time() - cpu}
+
+
+def run_snap_moordyn(cfl: float) -> dict | None:
+    """MoorDyn on the same deck, its coupled point on the same (ramped) circle sampled every output."""
+    t = np.arange(0.0, SNAP_DURATION + 1.0 + 1e-9, SNAP_OUTPUT)
+    x = snap_motion().channels(t, np.array([SNAP_FAIRLEAD]))[0][:, 0]
+    motion = {"time": t, "x": x[:, 0], "y": x[:, 1], "z": x[:, 2]}  # run_moordyn's Init takes them absolute
+    cpu = time.process_time()
+    try:
+        with md._quiet():
+            r = md.run_moordyn(snap_deck(cfl), motion, duration=SNAP_DURATION, dt_out=SNAP_OUTPUT,
+                               use_ic_file=False)
+    except (ConvergenceError, RuntimeError):
+        return None
+    return {"peak": float(np.max(r["fairlead_tension"])), "wall": r["wall_time"] + r["wall_time_init"],
+            "cpu": time.process_time() - cpu, "loop": r["wall_time"], "dt": r["dt"]}
+
+
+def _peak(r) -> str:
+    return "failed" if r is None else f"{r['peak']:.2f} N"
+
+
+def snap(repeat: int = 3):
+    """The snap-load case (issue 19: a 33 m tank-scale chain, 83 segments, its fairlead on a 0.2 m circle
+    every 1.25 s; the chain and seabed written here, MoorDyn's cBot lowered to 1e4 Pa s/m, which its CFL
+    step does not resolve at 3e5): each code's peak fairlead tension along its ladder of steps, and the
+    race at equal accuracy when both have a step within 1 % of their own converged peak."""
+    print(f"snap case: 33 m chain, 83 segments, fairlead on a {SNAP_RADIUS:g} m circle every {SNAP_PERIOD:g} s, "
+          f"{SNAP_DURATION:g} s, output every {SNAP_OUTPUT:g} s")
+    codes = {"seacable": ((0.01, 0.005, 0.0025), run_snap_seacable, run_snap_seacable(0.00125)),
+             "MoorDyn": ((0.14, 0.1, 0.07), run_snap_moordyn, run_snap_moordyn(0.035))}
+    chosen = {}
+    for name, (ladder, run, ref) in codes.items():
+        runs = {step: run(step) for step in ladder}
+        ok = [st for st, r in runs.items() if r is not None and ref is not None
+              and abs(r["peak"] / ref["peak"] - 1.0) <= TOLERANCE]
+        chosen[name] = max(ok) if ok else None
+        print(f"  {name}: converged peak {_peak(ref)}; along the ladder "
+              + ", ".join(f"{st:g}: {_peak(r)}" for st, r in runs.items())
+              + f"; largest step within 1 %: {chosen[name]}")
+    if None in chosen.values():
+        print("  no race at equal accuracy: a code has no step of its ladder within 1 % of its converged peak")
+        return
+    pairs = [(run_snap_seacable(chosen["seacable"]), run_snap_moordyn(chosen["MoorDyn"])) for _ in range(repeat)]
+    print(f"  seacable / MoorDyn wall (median of {repeat} pairs): "
+          f"{float(np.median([a['wall'] / b['wall'] for a, b in pairs])):.2f}")
+
+
+def main(repeat: int = 5, segments=SEGMENTS):
+    print(f"WD0200 chain, {AMPLITUDE:g} m heave at {PERIOD:g} s, {DURATION:g} s, fairlead tension every {OUTPUT:g} s; "
+          f"each code at its largest step within {100 * TOLERANCE:g} % of its own converged peak tension")
+    run_seacable(20, 0.1)  # compile once
+    rows = []
+    for n in segments:
+        sc_ref = run_seacable(n, SEACABLE_CONVERGED)
+        sc_dt, sc_err = _largest_accurate(SEACABLE_STEPS, lambda s, n=n: run_seacable(n, s), sc_ref)
+        md_ref = run_moordyn(n, MOORDYN_CONVERGED)
+        md_cfl, md_err = _largest_accurate(MOORDYN_CFL, lambda c, n=n: run_moordyn(n, c), md_ref)
+        sc, mdr, m = _race(n, sc_dt, md_cfl, repeat)
+        rows.append((n, sc_dt, md_cfl, mdr["dt"], m))
+        print(f"\n{n} segments")
+        print(f"  {'code':9s} {'step [s]':>9s} {'peak [kN]':>9s} {'conv. [kN]':>10s} {'err %':>6s} "
+              f"{'wall [s]':>9s} {'cpu [s]':>8s} {'stepping [s]':>12s}  errors % along the ladder (nan: blew up)")
+        print(f"  {'seacable':9s} {sc_dt:9.3g} {sc['peak'] / 1e3:9.1f} {sc_ref['peak'] / 1e3:10.1f} "
+              f"{sc_err[sc_dt]:6.2f} {m['sc_wall']:9.3f} {m['sc_cpu']:8.3f} {'':>12s}  "
+              + ", ".join(f"{s:g} s: {e:.2f}" for s, e in sc_err.items()))
+        print(f"  {'MoorDyn':9s} {mdr['dt']:9.3g} {mdr['peak'] / 1e3:9.1f} {md_ref['peak'] / 1e3:10.1f} "
+              f"{md_err[md_cfl]:6.2f} {m['md_wall']:9.3f} {m['md_cpu']:8.3f} {m['md_loop']:12.3f}  "
+              + ", ".join(f"CFL {c:g}: {e:.2f}" for c, e in md_err.items()))
+        print(f"  seacable / MoorDyn (median of {repeat} pairs): wall {m['ratio_wall']:.2f}, cpu {m['ratio_cpu']:.2f}, "
+              f"seacable's whole wall against MoorDyn's stepping alone {m['ratio_loop']:.2f}; seacable's "
+              f"recommended step {sc['recommended']:.3g} s")
+    print("\n| segments | seacable dt | MoorDyn CFL (dtM) | seacable wall | MoorDyn wall (stepping) | ratio wall | "
+          "ratio cpu | ratio vs MoorDyn stepping |")
+    print("|---|---|---|---|---|---|---|---|")
+    for n, sc_dt, md_cfl, md_dt, m in rows:
+        print(f"| {n} | {sc_dt:g} s | {md_cfl:g} ({md_dt:.3g} s) | {m['sc_wall']:.3f} s | {m['md_wall']:.3f} s "
+              f"({m['md_loop']:.3f} s) | {m['ratio_wall']:.2f} | {m['ratio_cpu']:.2f} | {m['ratio_loop']:.2f} |")
+    return rows
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["snap"]:
+    snap()
+elif __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 5,
+         tuple(int(a) for a in sys.argv[2:]) or SEGMENTS)

@@ -568,7 +568,11 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     vstatic = math.isinf(env[E_VDT])
     n = X.shape[0]
     rho = env[E_RHO]
-    pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
+    pdia = pvol  # the attachments' sphere diameters, needed (and computed) only when one has a buoyancy
+    for i in range(n):
+        if pbuoy[i] != 0.0:
+            pdia = (6.0 / math.pi * pvol) ** (1.0 / 3.0)
+            break
     F[:] = 0.0
     M[:] = 0.0
     tension[:] = 0.0
@@ -625,15 +629,22 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             if jac and T > 0.0:
                 # axial stiffness plus damper: the table's slope, or EA (the same operations as before tables)
                 kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
+                ka = (kax + cdamp[e] * ldot / L * ddpsi) / L
+                kg = T / l
+                fa, fb = fidx[a], fidx[b]
+                # the pair's tangent [[K_e, -K_e], [-K_e, K_e]] straight into the band (rows of the free nodes)
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        blk[r, c] = (kax + cdamp[e] * ldot / L * ddpsi) / L * tt + T / l * (eye[r, c] - tt)
-                fa, fb = fidx[a], fidx[b]
-                _add_block(band, bw, fa, fa, 1.0, blk)
-                _add_block(band, bw, fb, fb, 1.0, blk)
-                _add_block(band, bw, fa, fb, -1.0, blk)
-                _add_block(band, bw, fb, fa, -1.0, blk)
+                        kv = ka * tt + kg * (eye[r, c] - tt)
+                        if fa >= 0:
+                            band[3 * fa + r, bw + c - r] += kv
+                            if fb >= 0:
+                                band[3 * fa + r, bw + 3 * (fb - fa) + c - r] -= kv
+                        if fb >= 0:
+                            band[3 * fb + r, bw + c - r] += kv
+                            if fa >= 0:
+                                band[3 * fb + r, bw + 3 * (fa - fb) + c - r] -= kv
         area = 0.25 * math.pi * dia[e] ** 2
         half = 0.5 * L
         zmid = 0.5 * (X[a, 2] + X[b, 2])
@@ -671,13 +682,17 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     tt = tv[r] * tv[c]
                     M[k, r, c] += ma * (can[e] * (eye[r, c] - tt) + cat[e] * tt)
             if jac and fidx[k] >= 0 and cc != 0.0:
+                # the drag's tangent -dF/dv = qd (C_dn (|u_n| P_n + u_n u_n^T / |u_n|) + 2 pi C_dt |u_t| t t^T)
+                # (d(|u| u)/du in the normal plane and along the tangent), straight into the node's block
+                cn = cc * qd * cdn[e]
+                cnm = cn * mn
+                cun = cn / mn if mn > 0.0 else 0.0
+                ct2 = cc * qd * 2.0 * math.pi * cdt[e] * mt
+                row0 = 3 * fidx[k]
                 for r in range(3):
                     for c in range(3):
                         tt = tv[r] * tv[c]
-                        hb[r, c] = qd * (cdn[e] * mn * (eye[r, c] - tt) + math.pi * cdt[e] * mt * tt)
-                _drag_tangent(un, cdn[e], hb, qd)
-                _drag_tangent(ut, math.pi * cdt[e], hb, qd)
-                _add_block(band, bw, fidx[k], fidx[k], cc, hb)
+                        band[row0 + r, bw + c - r] += (cnm * (eye[r, c] - tt) + cun * un[r] * un[c]) + ct2 * tt
     if nvis > 0:
         viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc, mpl,
                            env[E_G])
@@ -766,13 +781,15 @@ def band_solve(band, bw, rhs):
         piv = band[k, bw]
         if piv == 0.0 or not math.isfinite(piv):
             return False
-        for i in range(k + 1, min(n, k + bw + 1)):
+        end = min(n, k + bw + 1)
+        for i in range(k + 1, end):
             f = band[i, bw + k - i] / piv
             if f == 0.0:
                 continue
             band[i, bw + k - i] = f
-            for j in range(k + 1, min(n, k + bw + 1)):
-                band[i, bw + j - i] -= f * band[k, bw + j - k]
+            o = bw + k - i  # row i's column j is at o + (j - k) of its band row, row k's at bw + (j - k)
+            for j in range(1, end - k):
+                band[i, o + j] -= f * band[k, bw + j]
             rhs[i] -= f * rhs[k]
     for k in range(n - 1, -1, -1):
         s = rhs[k]

@@ -37,10 +37,10 @@ from ..io.moordyn import (
     read_moordyn,
 )
 from ..results import make_dataset, var
-from .motion import bind
+from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
-from .run import REFERENCES, network_variables, point_variables, run_events
-from .solver import MooringModel, MooringRun, Water, simulate, static_equilibrium
+from .run import REFERENCES, network_variables, point_variables, run_events, stored_per_output
+from .solver import MooringModel, MooringRun, Water, line_end_nodes, simulate, static_equilibrium
 
 __all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
 
@@ -173,11 +173,13 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
     return line
 
 
-def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None):
+def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None,
+             kinematic_nodes=None):
     """Variables per line, a ``line`` dimension (NaN padded) when there are several lines; the points' forces.
 
     ``velocity`` and ``acceleration`` (time-domain runs) let each line's end tensions include its half end
-    element's water loads and inertia (:func:`seacable.mooring.run.network_variables`)."""
+    element's water loads and inertia (:func:`seacable.mooring.run.network_variables`); ``kinematic_nodes``
+    the nodes they hold (None: all)."""
     net = model.network
     per_line = []
     for li in range(len(net.line_nodes)):
@@ -185,8 +187,16 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, veloci
         nodes = net.line_nodes[li]
         els = np.flatnonzero(net.element_line == li)
         dims = ("node",) if time is None else ("time", "node")
-        moving = {} if time is None else {"velocity": velocity[..., nodes, :], "acceleration": acceleration[..., nodes, :],
-                                          "time": time}
+        if time is None:
+            moving = {}
+        elif kinematic_nodes is None:
+            moving = {"velocity": velocity[..., nodes, :], "acceleration": acceleration[..., nodes, :], "time": time}
+        else:  # the kinematics of some nodes only (simulate's ``kinematics``): those of this line, renumbered
+            local = np.full(net.n_nodes, -1)
+            local[nodes] = np.arange(len(nodes))
+            mine = np.flatnonzero(local[kinematic_nodes] >= 0)
+            moving = {"velocity": velocity[..., mine, :], "acceleration": acceleration[..., mine, :], "time": time,
+                      "kinematic_nodes": local[kinematic_nodes[mine]]}
         per_line.append((view, network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
                                                   **moving)))
     if len(per_line) == 1:
@@ -291,7 +301,7 @@ def prepare_moordyn(case) -> MooringModel:
     if case.duration is not None:
         check_water_kinematics(md, "a mooring_dynamic run")
         net = model.network
-        stored = (math.floor(case.duration / case.output_interval) + 1) * (10 * net.n_nodes + 2 * net.n_elements)
+        stored = (math.floor(case.duration / case.output_interval) + 1) * stored_per_output(net)
         check_run_size(f"the mooring_dynamic run of {case.name}", steps=case.duration / case.time_step,
                        stored_values=stored, fix="shorten the duration, or lengthen the time step or the output "
                                                  "interval")
@@ -317,13 +327,16 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
         return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
     run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
-                               tol=tolerance * 10, progress=progress, spectral_radius=case.spectral_radius)
+                               tol=tolerance * 10, progress=progress, spectral_radius=case.spectral_radius,
+                               forcing_period=forcing_period(case.motion), kinematics=line_end_nodes(model.network))
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
                   settings={**settings, "time_step": run.time_step, "steps": run.steps,
                             "spectral_radius": run.spectral_radius}, velocity=run.velocity,
-                  acceleration=run.acceleration)
+                  acceleration=run.acceleration, kinematic_nodes=run.kinematic_nodes)
     ds.update(run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
+    ds.attrs["time_step"] = run.time_step  # the step used (before any halving) [s]
+    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
     return ds
 
 

@@ -8,6 +8,7 @@ multiplied by a smooth ramp ``r(t) = (1 - cos(pi t / T_ramp)) / 2`` over ``ramp`
 
 from __future__ import annotations
 
+import functools
 import math
 from pathlib import Path
 from typing import Annotated, Literal
@@ -19,7 +20,7 @@ from .._model import UNION_TAGS, Model, quantity
 from .._ramp import smooth_ramp
 from ..errors import InputError
 
-__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "rotation_matrix"]
+__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "forcing_period", "rotation_matrix"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -81,16 +82,30 @@ def _read_table(path: Path, names: tuple[str, ...]) -> np.ndarray:
     return table
 
 
-def _spline(table, times, path):
-    """Cubic spline of the columns 1: of ``table`` against its time column, with two derivatives."""
+@functools.lru_cache(maxsize=16)
+def _fitted_table(path: str, stamp: tuple, names: tuple[str, ...]):
+    """The table of a motion file and its natural cubic spline, read and fitted once for each version of the
+    file (``stamp``: its modification time and size)."""
     from scipy.interpolate import CubicSpline
 
+    table = _read_table(Path(path), names)
+    return table[0, 0], table[-1, 0], CubicSpline(table[:, 0], table[:, 1:], bc_type="natural")
+
+
+def _spline(path: Path, names: tuple[str, ...], times):
+    """The columns ``names[1:]`` of a motion file at ``times`` (a natural cubic spline against its time
+    column), with two derivatives. The file is read and fitted once (:func:`_fitted_table`)."""
     t = np.asarray(times, float)
-    t0, t1 = table[0, 0], table[-1, 0]
+    try:
+        st = path.stat()
+    except OSError:
+        st = None
+    if st is None:
+        _read_table(path, names)  # its message: the file does not exist
+    t0, t1, cs = _fitted_table(str(path.resolve()), (st.st_mtime_ns, st.st_size), names)
     if t.size and (t.min() < t0 - 1e-9 or t.max() > t1 + 1e-9):
         raise InputError(f"motion file '{path}' covers {t0:g} to {t1:g} s, the run needs {t.min():g} to "
                          f"{t.max():g} s. Suggested fix: extend the table or shorten 'duration'.")
-    cs = CubicSpline(table[:, 0], table[:, 1:], bc_type="natural")
     return cs(t), cs(t, 1), cs(t, 2)
 
 
@@ -104,9 +119,8 @@ class TimeSeriesMotion(Model):
     ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start. [s]")
 
     def channels(self, times, base):
-        path = Path(self.file)
-        table = _read_table(path, ("time", "x", "y", "z"))
-        off, doff, ddoff = _ramped(*_spline(table, times, path), np.asarray(times, float), self.ramp)
+        off, doff, ddoff = _ramped(*_spline(Path(self.file), ("time", "x", "y", "z"), times),
+                                   np.asarray(times, float), self.ramp)
         return _apply(base, off, doff, ddoff)
 
 
@@ -156,9 +170,7 @@ class PlatformMotion(Model):
         """The six motions (nt, 6) and their time derivatives."""
         t = np.asarray(times, float)
         if self.file is not None:
-            path = Path(self.file)
-            table = _read_table(path, ("time", "surge", "sway", "heave", "roll", "pitch", "yaw"))
-            q, dq, ddq = _spline(table, t, path)
+            q, dq, ddq = _spline(Path(self.file), ("time", "surge", "sway", "heave", "roll", "pitch", "yaw"), t)
         else:
             w = 2 * math.pi / self.period
             arg = w * t[:, None] + np.asarray(self.phase)
@@ -236,6 +248,17 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
 
 Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
 UNION_TAGS.update(("harmonic", "time_series", "platform"))
+
+
+def forcing_period(motion, wave_period: float | None = None) -> float | None:
+    """The shortest period forcing a run: a harmonic motion's (fairlead or platform) and the waves'. [s]
+
+    None when neither is periodic (no motion, or a time series, in still water).
+    """
+    periods = [wave_period] if wave_period is not None and wave_period > 0 else []
+    if isinstance(motion, HarmonicMotion) or (isinstance(motion, PlatformMotion) and motion.period is not None):
+        periods.append(float(motion.period))
+    return min(periods, default=None)
 
 
 def bind(motion, base, duration: float):

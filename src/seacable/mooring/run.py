@@ -15,9 +15,10 @@ from ..results import make_dataset, var
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
-from .motion import bind
+from .loop import evaluate_states
+from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
-from .solver import MooringModel, MooringRun, Water, pushover, simulate, static_equilibrium
+from .solver import MooringModel, MooringRun, Water, line_end_nodes, pushover, simulate, static_equilibrium
 
 __all__ = [
     "REFERENCES",
@@ -34,6 +35,7 @@ __all__ = [
     "run_mooring_dynamic",
     "run_mooring_pushover",
     "run_mooring_static",
+    "stored_per_output",
     "water_of",
     "wave_elevation",
 ]
@@ -149,13 +151,15 @@ def _own_model(model: MooringModel) -> MooringModel:
     return own
 
 
-def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
+def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None):
     """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
 
     The pull of the end element plus the loads lumped at the end node from that line's half element
     (weight, seabed, water, inertia): the line's own end tension, as MoorDyn reports it from the end
     segment. A point's attachments and the other lines meeting there are left out (see
     :func:`point_variables` for the force on a point). ``time`` None: a static state (no waves).
+    ``kinematic_nodes``: ``V`` and ``A`` hold those nodes only (the others at rest; exact when they hold the
+    line's end nodes and their neighbours, :func:`seacable.mooring.solver.line_end_nodes`).
     """
     own = _own_model(model)
     net = own.network
@@ -165,23 +169,33 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None):
     end_el = [int(np.flatnonzero((net.elements == k).any(axis=1))[0]) for k in ends]
     ramp = float(own.env[K_BEDRAMP])
     X = np.asarray(X, float)
-    V = np.zeros_like(X) if V is None else np.asarray(V, float)
-    A = np.zeros_like(X) if A is None else np.asarray(A, float)
+    knodes = np.arange(X.shape[-2]) if kinematic_nodes is None else np.asarray(kinematic_nodes, np.int64)
+    kshape = X.shape[:-2] + (knodes.size, 3)
+    V = np.zeros(kshape) if V is None else np.asarray(V, float)
+    A = np.zeros(kshape) if A is None else np.asarray(A, float)
     lead = X.shape[:-2]
-    out = np.zeros(lead + (2, 3))
-    times = None if time is None else np.broadcast_to(np.asarray(time, float), lead)
-    for idx in np.ndindex(*lead):
-        t = 0.0 if times is None else float(times[idx])
-        _, _, tension, support = own.evaluate(X[idx], V[idx], A[idx], t, waves=times is not None)
-        out[idx] = support[ends]
-        if model.water.depth is not None:
-            # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
-            # along its end element only (the catenary's H at a grounded anchor)
-            for j in (0, 1):
-                if _clearance(model.water, X[idx][ends[j]]) <= ramp:
-                    d = X[idx][nbrs[j]] - X[idx][ends[j]]
-                    out[idx][j] = tension[end_el[j]] * d / max(np.linalg.norm(d), 1e-300)
-    return out
+    nt = int(np.prod(lead, dtype=np.int64))
+    Xs = np.ascontiguousarray(X.reshape((nt,) + X.shape[-2:]))
+    Vs, As = (np.ascontiguousarray(np.broadcast_to(a, kshape).reshape((nt,) + kshape[-2:])) for a in (V, A))
+    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
+                                                                 float).reshape(nt)
+    # every state in one compiled call (what own.evaluate gives state by state)
+    out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
+    for i0, i1 in own.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
+        out[i0:i1], tension[i0:i1] = evaluate_states(
+            Xs[i0:i1], Vs[i0:i1], As[i0:i1], knodes, ts[i0:i1], time is not None, np.array(ends, np.int64),
+            np.array(end_el, np.int64), *own.element_args(), own.fidx, own.bw, own.env, own.cur_depth,
+            own.cur_speed, own.sea)
+    if model.water.depth is not None:
+        # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
+        # along its end element only (the catenary's H at a grounded anchor)
+        for j in (0, 1):
+            grounded = _clearance(model.water, Xs[:, ends[j]]) <= ramp
+            if np.any(grounded):
+                d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
+                norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
+                out[grounded, j] = tension[grounded, j, None] * d / norm[:, None]
+    return out.reshape(lead + (2, 3))
 
 
 def _fairlead_end(net: Network) -> tuple[int, int]:
@@ -193,17 +207,18 @@ def _fairlead_end(net: Network) -> tuple[int, int]:
 
 
 def network_variables(model: MooringModel, X, tension, support, dims=("node",), *, velocity=None,
-                      acceleration=None, time=None):
+                      acceleration=None, time=None, kinematic_nodes=None):
     """Shape, tensions and end forces of one line at one or more states.
 
     ``fairlead_tension`` and ``anchor_tension`` are the line's own end tensions
     (:func:`line_end_forces`); ``support`` (the force on each node's support, every line and
     attachment there) is not used for them. Give ``velocity``, ``acceleration`` and ``time`` of a
-    time-domain run so that the end forces include the half element's water loads and inertia.
+    time-domain run so that the end forces include the half element's water loads and inertia
+    (``kinematic_nodes``: the nodes they hold, None for all).
     """
     net = model.network
     lead = tuple(dims[:-1])
-    ends = line_end_forces(model, X, velocity, acceleration, time)
+    ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes)
     anchor, fair = _fairlead_end(net)
     data = {
         "x": var(dims, X[..., 0], "m", "x position"),
@@ -287,13 +302,20 @@ class MooringDynamicSetup:
     motion: object = None      # the bound fairlead motion: times -> positions, velocities, accelerations
 
 
+def stored_per_output(net: Network) -> int:
+    """Values a time-domain run stores per output (:func:`seacable.mooring.solver.simulate` with the
+    kinematics of :func:`~seacable.mooring.solver.line_end_nodes`): positions and support forces of every
+    node, element tensions, velocities and accelerations of the lines' end nodes and their neighbours. [1]"""
+    return 2 * 3 * net.n_nodes + net.n_elements + 2 * 3 * line_end_nodes(net).size
+
+
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """Every check of a ``mooring_dynamic`` case that can be made before the time loop.
 
     The geometric checks of the network (:func:`seacable.mooring.checks.check_network`) at the start
     and along the fairlead motion at the output times (:func:`seacable.mooring.checks.check_motion`),
     and the size of the run (:func:`seacable._limits.check_run_size`: time steps, and the stored
-    positions, velocities, accelerations, tensions and support forces).
+    positions, tensions, support forces, and the kinematics of the line ends: :func:`stored_per_output`).
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
@@ -302,7 +324,7 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     steps = a.duration / min(a.time_step, a.output_interval)
     outputs = a.duration / a.output_interval + 1
     check_run_size(f"mooring_dynamic case '{case.name}'", steps=steps,
-                   stored_values=outputs * (4 * 3 * net.n_nodes + net.n_elements),
+                   stored_values=outputs * stored_per_output(net),
                    fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
     start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
     # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
@@ -381,7 +403,8 @@ def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="moo
     """A Dataset of a time-domain run of a single-line network."""
     net = model.network
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
-                             velocity=run.velocity, acceleration=run.acceleration, time=run.time)
+                             velocity=run.velocity, acceleration=run.acceleration, time=run.time,
+                             kinematic_nodes=run.kinematic_nodes)
     data.update(run_events(run))
     data.update(elevation_variables(model.water, run.time))
     coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
@@ -391,6 +414,8 @@ def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="moo
                                          **(settings or {})))
     ds.attrs["interrupted"] = int(run.interrupted)
     ds.attrs["wall_time"] = run.wall_time
+    ds.attrs["time_step"] = run.time_step  # the Newmark step used (before any halving) [s]
+    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
     return ds
 
 
@@ -400,9 +425,12 @@ def run_mooring_dynamic(case: Case, progress=None):
     setup = prepare_mooring_dynamic(case)
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
+    waves = case.environment.waves
     run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
                    tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
-                   spectral_radius=a.spectral_radius)
+                   spectral_radius=a.spectral_radius,
+                   forcing_period=forcing_period(a.motion, getattr(waves, "period", None) or getattr(waves, "tp", None)),
+                   kinematics=line_end_nodes(model.network))
     return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
                                                        "rayleigh": list(a.rayleigh)})
 

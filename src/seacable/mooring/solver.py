@@ -10,6 +10,7 @@ special case without numerical damping, Newmark's average acceleration, beta 1/4
 from __future__ import annotations
 
 import math
+import sys
 import time as _time
 import warnings
 from collections.abc import Callable
@@ -33,7 +34,9 @@ __all__ = [
     "StaticState",
     "Water",
     "generalized_alpha",
+    "line_end_nodes",
     "pushover",
+    "recommended_time_step",
     "simulate",
     "static_equilibrium",
     "wave_number_or_zero",
@@ -225,6 +228,31 @@ class MooringModel:
         self.sea = no_sea(self.water.stretching)
         self.ensure_sea(0.0, 0.0)
 
+    def sea_end(self) -> float:
+        """The last time the irregular sea's grid window covers [s] (inf without an irregular sea)."""
+        from ..seastate import S_DT, S_MODE, S_NT, S_T0
+
+        s = self.sea
+        if self._sea_spec is None or s[S_MODE] <= 0:
+            return math.inf
+        return float(s[S_T0] + s[S_DT] * (s[S_NT] - 1))
+
+    def sea_spans(self, ts, waves: bool = True):
+        """``(i0, i1)`` runs of the times ``ts`` [s] (increasing) that one window of the irregular sea's grid
+        covers, each made current before it is yielded; one run of all without an irregular sea."""
+        i, n = 0, len(ts)
+        while i < n:
+            if not waves or self._sea_spec is None:
+                yield i, n
+                return
+            self.ensure_sea(float(ts[i]), float(ts[i]))
+            end = self.sea_end()
+            j = i + 1
+            while j < n and float(ts[i]) <= ts[j] <= end:
+                j += 1
+            yield i, j
+            i = j
+
     def ensure_sea(self, t0: float, t1: float) -> None:
         """Make the irregular sea's grid cover the times [t0, t1] [s] (see :meth:`prepare_sea`).
 
@@ -373,13 +401,15 @@ def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: fl
 MotionFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
 
-def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix):
+def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix, *, failed_at=None):
     """Advance the state one output interval: ``sub`` steps of ``h`` from ``t0``, each failed step halved.
 
     ``steps(t, dt, px, pv, pa)`` runs the compiled time loop over the motion channels sampled at the
     steps' end times, filling ``stats`` (iterations, residual, tolerance), and returns how many steps
     converged; from the first that did not, the rest of the interval is redone at half the step, up to
-    ``max_halvings`` times. Returns (steps taken, Newton iterations).
+    ``max_halvings`` times. ``failed_at`` resumes an interval whose first ``failed_at`` steps of ``h``
+    converged and whose next did not (``stats`` holding that failure). Returns (steps taken, Newton
+    iterations), those of ``failed_at`` not included.
 
     Raises
     ------
@@ -387,6 +417,18 @@ def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter,
         A step that does not converge at the smallest step, with the time, step and residual.
     """
     done, level, taken, spent = 0, 0, 0, 0
+
+    def fail(dtk):
+        raise ConvergenceError(
+            f"the {what} time step did not converge at t = {t0 + done * dtk:.6g} s with dt = {dtk:.3g} s "
+            f"after {max_halvings} halvings: force residual {stats[1]:.3g} N (tolerance {stats[2]:.3g} N). "
+            f"Suggested fix: {fix}.", time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+
+    if failed_at is not None:
+        done = failed_at
+        if max_halvings == 0:
+            fail(h)
+        done, level = 2 * failed_at, 1
     while done < sub * 2 ** level:
         dtk = h / 2 ** level
         m = sub * 2 ** level - done
@@ -398,10 +440,7 @@ def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter,
         done += got
         if got < m:
             if level == max_halvings:
-                raise ConvergenceError(
-                    f"the {what} time step did not converge at t = {t0 + done * dtk:.6g} s with dt = {dtk:.3g} s "
-                    f"after {max_halvings} halvings: force residual {stats[1]:.3g} N (tolerance {stats[2]:.3g} N). "
-                    f"Suggested fix: {fix}.", time=t0 + done * dtk, iterations=max_iter, residual=float(stats[1]))
+                fail(dtk)
             done *= 2
             level += 1
     return taken, spent
@@ -444,6 +483,52 @@ def generalized_alpha(spectral_radius: float = 1.0) -> tuple[float, float, float
     return alpha_m, alpha_f, beta, gamma
 
 
+def recommended_time_step(model: MooringModel, forcing_period: float | None = None, *,
+                          steps_per_period: int = 50, steps_per_axial_period: int = 10) -> tuple[float, str]:
+    """A time step for the Newmark integration of ``model`` and why: the smaller of the forcing period
+    over ``steps_per_period`` and the line's first axial period over ``steps_per_axial_period``.
+
+    The axial wave speed of element ``e`` is ``c_e = sqrt(EA_e / m_e)`` (mass per length in air); a wave
+    crosses it in ``L_e / c_e`` and runs along a line in ``tau = sum L_e / c_e``; the first axial period
+    of a line held at both ends is ``2 tau``. Fifty steps per forcing period keep the average-acceleration
+    scheme's period error ``(w dt)^2 / 12`` below 0.15 %; ten per axial period keep the axial (snatch)
+    response of a taut line. A slack line that snaps taut sends an axial wave front across each element
+    in ``L_e / c_e``: its peak tension needs steps about that long (said in the returned text).
+
+    Parameters
+    ----------
+    model
+        The mooring model.
+    forcing_period
+        The period of the motion or the waves [s]; None when unknown (a time series).
+    steps_per_period, steps_per_axial_period
+        Steps per forcing period and per first axial period. [1]
+
+    Returns
+    -------
+    (float, str)
+        The recommended step [s] and a one-line explanation.
+    """
+    net = model.network
+    c = np.sqrt(net.axial_stiffness / np.maximum(net.mass_per_length, 1e-300))
+    cross = net.length / c
+    tau = max((float(np.sum(cross[net.element_line == k])) for k in range(len(net.line_nodes))), default=0.0)
+    options = []
+    if tau > 0.0:
+        options.append((2.0 * tau / steps_per_axial_period,
+                        f"1/{steps_per_axial_period} of the first axial period 2 sum(L/c) = {2 * tau:.3g} s"))
+    if forcing_period is not None and forcing_period > 0:
+        options.append((forcing_period / steps_per_period,
+                        f"1/{steps_per_period} of the forcing period {forcing_period:.3g} s"))
+    if not options:
+        return math.inf, "no elements and no forcing period"
+    dt, why = min(options)
+    k = int(np.argmax(c)) if c.size else 0
+    why += (f"; axial wave speed sqrt(EA/m) up to {c[k]:.4g} m/s crosses an element in {float(np.min(cross)):.3g} s "
+            "(the step to resolve snap loads of a line going slack)") if c.size else ""
+    return dt, why
+
+
 @dataclass(frozen=True)
 class MooringRun:
     """Stored states of a time-domain run (``output`` times)."""
@@ -460,12 +545,15 @@ class MooringRun:
     wall_time: float
     acceleration: np.ndarray | None = None  # (nt, n, 3)
     spectral_radius: float = 1.0  # of the generalised-alpha scheme (1: average acceleration)
+    recommended_time_step: float = math.nan  # :func:`recommended_time_step` [s]
+    kinematic_nodes: np.ndarray | None = None  # the nodes of velocity and acceleration (nt, k, 3); None: all
 
 
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
              *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30,
              beta: float | None = None, gamma: float | None = None, spectral_radius: float = 1.0, progress=None,
-             max_halvings: int = 6) -> MooringRun:
+             max_halvings: int = 6, chunk_seconds: float = 0.25, forcing_period: float | None = None,
+             kinematics=None) -> MooringRun:
     """Generalised-alpha time stepping from rest at ``initial`` positions (default a static equilibrium).
 
     ``motion(times)`` returns positions, velocities and accelerations of the motion channels,
@@ -476,7 +564,20 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     step's end; only with ``spectral_radius`` 1). A step that does not converge is retried with
     half the time step, six times at most; then :class:`~seacable.errors.ConvergenceError` reports
     the time and the residual. Ctrl-C stops the run and returns what was computed (``interrupted``).
+
+    The time loop is compiled (:func:`seacable.mooring.loop.run_outputs`): it runs output interval
+    after output interval into preallocated arrays, in chunks of about ``chunk_seconds`` of computing
+    [s] between which Python samples the motion on the chunk's step grid (once for each step), moves an
+    irregular sea's grid window on (a chunk stays inside one window) and calls ``progress(t, duration)``
+    for each output of the chunk; an interval with a failed step is finished here at the halved steps.
+
+    The step used and the one :func:`recommended_time_step` gives for ``forcing_period`` [s] are in the
+    result; with ``progress`` (an interactive run) they are also printed on stderr. ``kinematics`` (node
+    indices) stores the velocities and accelerations of those nodes only (None: of every node), e.g.
+    :func:`line_end_nodes` for the end forces of the lines: a long run's stored results shrink by half.
     """
+    from . import loop as LP
+
     alpha_m, alpha_f, beta_g, gamma_g = generalized_alpha(spectral_radius)
     if (beta is not None or gamma is not None) and float(spectral_radius) != 1.0:
         raise InputError(f"beta/gamma ({beta}, {gamma}) and spectral_radius {spectral_radius} both set the time "
@@ -490,6 +591,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     n_out = int(round(duration / output_interval))  # noqa: RUF046 (a numpy float rounds to a float)
     sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
+    dt_rec, why = recommended_time_step(model, forcing_period)
+    if progress is not None:
+        print(f"seacable: time step {h:.4g} s; recommended {dt_rec:.4g} s ({why})", file=sys.stderr, flush=True)
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
     nch = max(net.n_channels, 1)
@@ -514,48 +618,81 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     hist = np.zeros_like(X)  # the step start's share of the generalised-alpha equilibrium
     K.alpha_history(Fi, Mi, A, hist, alpha_m, alpha_f, model.fidx)
 
-    times = [0.0]
-    pos, vel, acc = [X.copy()], [V.copy()], [A.copy()]
-    ten, sup = [], []
+    knodes = np.arange(n) if kinematics is None else np.asarray(kinematics, np.int64)
+    times = np.zeros(n_out + 1)
+    pos = np.zeros((n_out + 1, n, 3))
+    vel, acc = np.zeros((n_out + 1, knodes.size, 3)), np.zeros((n_out + 1, knodes.size, 3))
+    ten, sup = np.zeros((n_out + 1, net.n_elements)), np.zeros((n_out + 1, n, 3))
+    env_rec = model.env
+    if model.visco.shape[0]:
+        env_rec = env_rec.copy()
+        env_rec[K.E_VDT] = 0.0  # outputs: viscoelastic elements at the last converged step's slow stretch
+    args = model.element_args()
+    store = (times, pos, vel, acc, ten, sup)
 
-    def record():
-        _, _, t_e, s_n = model.evaluate(X, V, A, times[-1], settled=True)
-        ten.append(t_e)
-        sup.append(s_n)
+    def record(k):
+        LP.record_output(k, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec, model.cur_depth,
+                         model.cur_speed, model.sea, F, M, tension, *store)
 
-    record()
+    record(0)
     stats = np.zeros(3)
-    iterations = steps = 0
+    count = np.zeros(4, np.int64)  # outputs stored, steps, Newton iterations, steps of a failed interval
+    fix = "smaller time_step, more elements, or check the motion for a jump"
     interrupted = False
     start = _time.perf_counter()
+    reported, reporting = 0, False
+
+    def newmark(t, dtk, px, pv, pa):
+        return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *args, model.fidx, model.nfree, model.bw,
+                               model.env, model.cur_depth, model.cur_speed, True, model.sea, beta, gamma, alpha_m,
+                               alpha_f, hist, tol, max_iter, F, M, tension, stats)
+
     try:
-        for k in range(n_out):
+        k, size = 0, 1
+        while k < n_out:
+            k1 = min(n_out, k + size)
             model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
-
-            def newmark(t, dtk, px, pv, pa):
-                return K.newmark_steps(X, V, A, t, dtk, px, pv, pa, net.channel, *model.element_args(), model.fidx,
-                                       model.nfree, model.bw, model.env, model.cur_depth, model.cur_speed, True,
-                                       model.sea, beta, gamma, alpha_m, alpha_f, hist, tol, max_iter, F, M, tension,
-                                       stats)
-
-            done, spent = advance_interval(k * output_interval, h, sub, channels, newmark, stats, max_halvings,
-                                           max_iter, "mooring", "smaller time_step, more elements, or check the "
-                                                                "motion for a jump")
-            steps += done
-            iterations += spent
-            times.append((k + 1) * output_interval)
-            pos.append(X.copy())
-            vel.append(V.copy())
-            acc.append(A.copy())
-            record()
+            if math.isfinite(model.sea_end()):  # the chunk inside the window
+                k1 = min(k1, max(k + 1, math.floor(model.sea_end() / output_interval + 1e-9)))
+            # the motion on the chunk's step grid, once for each step (the same floats as interval by interval)
+            grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
+            px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
+            tick = _time.perf_counter()
+            got = LP.run_outputs(k, k1, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
+                                 model.fidx, model.nfree, model.bw, model.env, env_rec, model.cur_depth,
+                                 model.cur_speed, model.sea, beta, gamma, alpha_m, alpha_f, hist, tol, max_iter, F, M,
+                                 tension, stats, count, *store)
+            if got < k1:  # a step failed: the rest of that interval at halved steps, then on
+                done, spent = advance_interval(got * output_interval, h, sub, channels, newmark, stats,
+                                               max_halvings, max_iter, "mooring", fix, failed_at=int(count[3]))
+                count[1] += done
+                count[2] += spent
+                record(got + 1)
+                count[0] = got + 1
+            took = _time.perf_counter() - tick
+            k = int(count[0])
+            # the next chunk: about chunk_seconds of computing, at most 100 000 steps of motion samples
+            size = max(1, min(int(size * chunk_seconds / max(took, 1e-6)), 2 * size + 8, 100_000 // sub))
             if progress is not None:
-                progress(times[-1], duration)
+                reporting = True
+                while reported < k:
+                    reported += 1
+                    progress(times[reported], duration)
+                reporting = False
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - start
-    nt = min(len(times), len(pos), len(vel), len(acc), len(ten), len(sup))  # an interrupt may fall between appends
-    times, pos, vel, acc, ten, sup = times[:nt], pos[:nt], vel[:nt], acc[:nt], ten[:nt], sup[:nt]
-    return MooringRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
-                      tension=np.array(ten), support=np.array(sup), time_step=h, iterations=iterations,
-                      steps=steps, interrupted=interrupted, wall_time=wall, acceleration=np.array(acc),
-                      spectral_radius=float(spectral_radius))
+    # an interrupt in the progress callback keeps the outputs reported (as when it ran after each output)
+    nt = reported + 1 if interrupted and reporting else int(count[0]) + 1
+    return MooringRun(time=times[:nt].copy(), position=pos[:nt], velocity=vel[:nt], tension=ten[:nt],
+                      support=sup[:nt], time_step=h, iterations=int(count[2]), steps=int(count[1]),
+                      interrupted=interrupted, wall_time=wall, acceleration=acc[:nt],
+                      spectral_radius=float(spectral_radius), recommended_time_step=dt_rec,
+                      kinematic_nodes=None if kinematics is None else knodes)
+
+
+def line_end_nodes(network: Network) -> np.ndarray:
+    """The nodes whose velocity and acceleration the end forces of the lines need: each line's two end nodes
+    and their neighbours (:func:`seacable.mooring.run.line_end_forces`), sorted."""
+    return np.unique(np.concatenate([np.asarray(nodes)[[0, 1, -2, -1]] if len(nodes) > 1 else np.asarray(nodes)
+                                     for nodes in network.line_nodes] or [np.zeros(0, np.int64)])).astype(np.int64)
