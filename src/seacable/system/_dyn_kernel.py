@@ -194,6 +194,15 @@ def rechart(q, qd, qdd, fr, limit):
 
 
 @njit(cache=True)
+def track_frame(q, qd, qdd, fr, gq, limit):
+    """After a step: the body's global angles into ``fr`` (``gq`` a work array), then :func:`rechart` past
+    ``limit`` [rad]."""
+    global_angles(q, fr, gq)
+    fr[F_GLOB:F_GLOB + 3] = gq
+    rechart(q, qd, qdd, fr, limit)
+
+
+@njit(cache=True)
 def _add_point_force(f6, arm, fx, fy, fz):
     """f6 += (F, arm x F)."""
     f6[0] += fx
@@ -1035,13 +1044,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             qdd[:] = qddn
             return step
         commit_viscoelastic(args[-1])
-        for b in range(nb):
-            if frame[b, F_ON] != 0.0:
-                global_angles(q[b], frame[b], gq)
-                frame[b, F_GLOB:F_GLOB + 3] = gq
-            else:
-                frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
-            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT if frame[b, F_ON] == 0.0 else 0.0)
+        for b in range(nb):  # once re-charted, a body is re-charted after every step
+            track_frame(q[b], qd[b], qdd[b], frame[b], gq, CHART_LIMIT if frame[b, F_ON] == 0.0 else 0.0)
         for j in range(con_node.size):
             if con_active[j] == 0:
                 continue
@@ -1132,11 +1136,6 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
         framep[:] = frame
         _apply(X, q, du, dq, fidx, shrink)
         for b in range(nb):
-            if frame[b, F_ON] != 0.0:
-                global_angles(q[b], frame[b], gq)
-                frame[b, F_GLOB:F_GLOB + 3] = gq
-            else:
-                frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
-            rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT)
+            track_frame(q[b], qd[b], qdd[b], frame[b], gq, CHART_LIMIT)
         place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     return False

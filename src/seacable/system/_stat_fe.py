@@ -90,19 +90,6 @@ class FEEquilibrium(EquilibriumFields):
     stiffness_method: str = STIFFNESS_FD
     statics: str = "finite_element"
 
-    def body_stiffness(self, name: str, hydrostatics: bool = False) -> np.ndarray:
-        """6x6 stiffness of one free body, other free bodies held. [N/m, N/rad, N m/m, N m/rad]"""
-        k = self.free_body_names.index(name)
-        K = self.stiffness[6 * k:6 * k + 6, 6 * k:6 * k + 6].copy()
-        if hydrostatics:
-            K += self.hydrostatic[6 * k:6 * k + 6, 6 * k:6 * k + 6]
-        return K
-
-    def body_offset(self, name: str) -> np.ndarray:
-        """Position of a body minus the position given in the system. [m, rad]"""
-        i = self.body_names.index(name)
-        return self.body_position[i] - np.asarray(self.system.bodies[name].position, float)
-
     def line_nodes(self, line_name: str):
         """Unstretched arc length (k,) [m], node positions (k, 3) [m] and element tensions (k - 1,) [N]."""
         fe = self.fe

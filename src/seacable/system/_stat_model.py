@@ -75,6 +75,40 @@ class EquilibriumFields:
     iterations: int
     residual: float
 
+    def _free_body(self, name: str) -> int:
+        if name not in self.free_body_names:
+            from .._model import suggest
+
+            raise InputError(f"body '{name}' is not a free body of this system (free bodies: "
+                             f"{', '.join(self.free_body_names) or 'none'}).{suggest(name, self.free_body_names)}")
+        return self.free_body_names.index(name)
+
+    def body_stiffness(self, name: str, hydrostatics: bool = False) -> np.ndarray:
+        """6x6 stiffness of one free body, other free bodies held, free points equilibrated.
+
+        Parameters
+        ----------
+        name : str
+            A free body.
+        hydrostatics : bool
+            Add the body's hydrostatic (weight, buoyancy, waterplane) restoring.
+
+        Returns
+        -------
+        ndarray, shape (6, 6)
+            [N/m, N/rad, N m/m, N m/rad]
+        """
+        k = self._free_body(name)
+        K = self.stiffness[6 * k:6 * k + 6, 6 * k:6 * k + 6].copy()
+        if hydrostatics:
+            K += self.hydrostatic[6 * k:6 * k + 6, 6 * k:6 * k + 6]
+        return K
+
+    def body_offset(self, name: str) -> np.ndarray:
+        """Position of a body minus the position given in the system. [m, rad]"""
+        i = self.body_names.index(name)
+        return self.body_position[i] - np.asarray(self.system.bodies[name].position, float)
+
 
 @dataclass
 class Assembly:
