@@ -72,7 +72,7 @@ def _moordyn_case(args):
                          "e.g. '--duration 100'.")
     motion = None if args.motion is None else motion_from_csv(args.motion)
     return load_case(args.case).with_run(duration=args.duration, motion=motion, time_step=args.time_step,
-                                         output_interval=args.output_interval)
+                                         output_interval=args.output_interval, spectral_radius=args.spectral_radius)
 
 
 def _result_path(args, name: str) -> Path:
@@ -103,10 +103,12 @@ def _cmd_run(args) -> int:
     else:
         given = [opt for opt, value in (("--duration", args.duration), ("--motion", args.motion),
                                         ("--time-step", args.time_step),
+                                        ("--spectral-radius", args.spectral_radius),
                                         ("--output-interval", args.output_interval)) if value is not None]
         if given:
             raise InputError(f"{', '.join(given)} apply to MoorDyn input files; a YAML case gives them in its "
-                             "'analysis' (duration, motion, time_step, output_interval). Suggested fix: leave "
+                             "'analysis' (duration, motion, time_step, output_interval, spectral_radius). Suggested "
+                             "fix: leave "
                              f"out {', '.join(given)} and set them in {args.case}.")
         case = load_case(args.case)
     out = _result_path(args, case.name)
@@ -429,6 +431,9 @@ def build_parser() -> argparse.ArgumentParser:
                                     "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]")
     p.add_argument("--time-step", type=_number, help="MoorDyn file: Newmark time step [s] (0.1)")
     p.add_argument("--output-interval", type=_number, help="MoorDyn file: time between stored states [s] (0.5)")
+    p.add_argument("--spectral-radius", type=_number,
+                   help="MoorDyn file: generalised-alpha spectral radius in [0, 1] (1: average acceleration, the "
+                        "default; 0.7-0.9 damps the ringing of stiff modes at a coarse step)")
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
     _add_limits(p)

@@ -265,3 +265,38 @@ def test_a_lumped_clump_sinking_into_a_soft_seabed_is_warned():
     static_equilibrium(MooringModel(net, Water(depth=300.0)))  # the suite turns warnings into errors
     with pytest.warns(sc.SeacableWarning, match=r"node 6 \(s = 90 m\) sinks 0\.\d+ m into the seabed"):
         static_equilibrium(MooringModel(net, Water(depth=300.0, seabed_stiffness=3e5)))
+
+
+def test_cli_takes_the_spectral_radius_of_a_moordyn_file(tmp_path, capsys):
+    """--spectral-radius reaches the generalised-alpha step of a line-only deck (recorded in the result, and
+    the tensions differ from average acceleration's: the scheme damps); outside [0, 1] it is refused with
+    the range; a YAML case takes it in its analysis; a deck with a body (the system dynamics, average
+    acceleration only) refuses it."""
+    import xarray as xr
+
+    f = tmp_path / "three.txt"
+    f.write_text(THREE_LINES.replace("4     Free        0       0       -50     100    30      1.0    1.0",
+                                     "4     Vessel      0       0       -50     0      0       0      0"))
+    t = np.linspace(0.0, 4.0, 41)
+    csv = tmp_path / "m.csv"
+    np.savetxt(csv, np.column_stack([t, 2.0 * np.sin(3 * t), 0 * t, 0 * t]), delimiter=",", header="time,x,y,z",
+               comments="")
+    runs = {}
+    for rho in ("1", "0.5"):
+        out = tmp_path / f"r{rho}.nc"
+        assert main(["run", str(f), "--duration", "3", "--motion", str(csv), "--time-step", "0.1",
+                     "--spectral-radius", rho, "-o", str(out), "--no-plots"]) == 0
+        runs[rho] = xr.open_dataset(out)
+    assert '"spectral_radius": 0.5' in runs["0.5"].attrs["settings"]
+    assert '"spectral_radius": 1.0' in runs["1"].attrs["settings"]
+    assert not np.allclose(runs["1"].fairlead_tension.values, runs["0.5"].fairlead_tension.values, rtol=1e-6)
+    capsys.readouterr()
+    assert main(["run", str(f), "--duration", "3", "--spectral-radius", "1.5", "--no-plots"]) == 2
+    err = capsys.readouterr().err
+    assert "spectral radius" in err and "1.5" in err and "Suggested fix" in err and "Traceback" not in err
+    assert main(["run", str(EXAMPLES / "oc3_hywind_line.yaml"), "--spectral-radius", "0.8", "--no-plots"]) == 2
+    assert "set them in" in capsys.readouterr().err
+    body = Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "MoorDyn" / "example" / "body.txt"
+    assert main(["run", str(body), "--duration", "1", "--spectral-radius", "0.8", "--no-plots",
+                 "-o", str(tmp_path / "b.nc")]) == 2
+    assert "average acceleration only" in capsys.readouterr().err

@@ -1657,6 +1657,11 @@ class MoorDynCase:
                              "taken from the command line. Suggested fix: write the system as a YAML case "
                              "(seacable.io.dump_case(case.system_case())) and give 'body_motions' or "
                              "'point_motions' in its system_dynamic analysis.")
+        if self.duration is not None and self.spectral_radius != 1.0:
+            raise InputError(f"{label}: spectral radius {self.spectral_radius:g}: a deck with bodies, rods or points "
+                             "on a body runs as a mooring system, whose dynamics step by average acceleration only "
+                             "(spectral radius 1). Suggested fix: leave out the spectral radius (--spectral-radius) "
+                             "for this deck.")
         system, environment = self.system()
         if self.duration is None:
             analysis = SystemStaticAnalysis(max_strain=_DECK_MAX_STRAIN)
