@@ -121,7 +121,8 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
     """
     u[0] = u[1] = u[2] = 0.0
     acc[0] = acc[1] = acc[2] = 0.0
-    eta = _surface(x[0], x[1], t, env, with_waves, sea)
+    wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)
+    eta = _surface(x[0], x[1], t, env, with_waves, sea) if wavy else 0.0
     if x[2] > eta:
         return
     if cur_depth.size == 1:
@@ -131,7 +132,7 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
     if speed != 0.0:
         u[0] = speed * math.cos(env[E_CHEAD])
         u[1] = speed * math.sin(env[E_CHEAD])
-    if not with_waves or (env[E_WH] <= 0.0 and sea[S_MODE] <= 0.0):
+    if not wavy:
         return
     d = env[E_WDEPTH]
     if sea[S_STRETCH] > 0.0:
@@ -564,6 +565,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     (:func:`bending_loads`; none: a truss); ``visco`` (e, V_SIZE) the viscoelastic elements
     (:func:`viscoelastic_tension`, advanced over ``env[E_VDT]``; no rows: none).
     """
+    wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)  # else the surface is z = 0 everywhere
     nvis = visco.shape[0]
     vstatic = math.isinf(env[E_VDT])
     n = X.shape[0]
@@ -649,14 +651,15 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         half = 0.5 * L
         zmid = 0.5 * (X[a, 2] + X[b, 2])
         # the water surface over the element's middle (0: still water; with waves the instantaneous eta)
-        emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea)
+        emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea) if wavy \
+            else 0.0
         for k in (a, b):
             for r in range(3):
                 M[k, r, r] += mpl[e] * half
             # ``weight`` holds the weight in water; the part of this half element above the instantaneous
             # surface (straight from the node to the element's middle, the surface linear between) loses its
             # buoyancy
-            ek = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea)
+            ek = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy else 0.0
             dry = _dry_fraction(X[k, 2] - ek, zmid - emid)
             if dry > 0.0:
                 F[k, 2] -= dry * buoy[e] * half
@@ -709,7 +712,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     for i in range(n):
         F[i, 2] -= weight[i]
         wet = pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0
-        ei = _surface(X[i, 0], X[i, 1], t, env, with_waves, sea) if pbuoy[i] != 0.0 or wet else 0.0
+        ei = _surface(X[i, 0], X[i, 1], t, env, with_waves, sea) if wavy and (pbuoy[i] != 0.0 or wet) else 0.0
         if pbuoy[i] != 0.0 and X[i, 2] - ei > -0.5 * pdia[i]:
             # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
             # height pdia (its volume's sphere diameter), linear across the waterline
