@@ -1,0 +1,87 @@
+"""The snap deck of ``bench_mooring.py snap``: the peak fairlead tension against the step, with and without
+MoorDyn's slack-segment damping, and MoorDyn's own.
+
+MoorDyn damps every segment with ``BA (dl/dt) / l`` whatever its strain; seacable's truss damps taut
+elements only unless ``Water.slack_damping`` (set for MoorDyn decks since issue 19). For each step the
+largest fairlead tension over 5 s (the 2.5 s ramp and two cycles) read at every step, and read from
+outputs every 0.01 s (the bench's output interval); "failed": a ConvergenceError.
+
+Run: ``python bench/bench_snap_deck.py`` (about 3 minutes on one core).
+
+Measured (2026-11-24, shared 2-core machine):
+
+    MoorDyn 2.7.2, CFL 0.1 (dtM 1.4e-4 s) and 0.035 (4.9e-5 s), coupled every 5e-4 s: 57.29 and 57.31 N
+
+    dt [s]     taut-only damper (before)           MoorDyn's rule (after)
+               every step   0.01 s outputs         every step   0.01 s outputs
+    see the table printed by the run (copied into the issue 19 report)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+import bench_mooring as B
+import moordyn_peer as md
+
+import seacable.mooring.moordyn as SM
+from seacable.errors import ConvergenceError
+from seacable.io.moordyn import load_moordyn_case
+
+DURATION = 5.0
+STEPS = (0.01, 0.005, 0.0025, 0.00125, 5e-4, 2.5e-4, 1.25e-4)
+
+
+def seacable_peaks(dt: float, slack_damping: bool):
+    """(peak at every step, peak of the 0.01 s outputs) [N], or None on a ConvergenceError."""
+    original = SM.moordyn_model
+
+    def model(data):
+        m = original(data)
+        return type(m)(m.network, dataclasses.replace(m.water, slack_damping=slack_damping))
+
+    SM.moordyn_model = model
+    try:
+        case = load_moordyn_case(B.snap_deck()).with_run(duration=DURATION, time_step=dt, output_interval=dt,
+                                                         motion=B.snap_motion())
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            ds = SM.run_moordyn_case(case)
+    except ConvergenceError:
+        return None
+    finally:
+        SM.moordyn_model = original
+    f = np.asarray(ds["fairlead_tension"]).reshape(-1)
+    return float(f.max()), float(f[::round(B.SNAP_OUTPUT / dt)].max())
+
+
+def moordyn_peak(cfl: float, out: float = 5e-4) -> float:
+    t = np.arange(0.0, DURATION + 1.0 + 1e-9, out)
+    x = B.snap_motion().channels(t, np.array([B.SNAP_FAIRLEAD]))[0][:, 0]
+    with md._quiet():
+        r = md.run_moordyn(B.snap_deck(cfl), {"time": t, "x": x[:, 0], "y": x[:, 1], "z": x[:, 2]},
+                           duration=DURATION, dt_out=out, use_ic_file=False)
+    return float(np.max(r["fairlead_tension"]))
+
+
+def main():
+    print("MoorDyn 2.7.2, coupled every 5e-4 s: " + ", ".join(f"CFL {c:g}: {moordyn_peak(c):.2f} N" for c in (0.1, 0.035)))
+    print("| dt [s] | before: every step | before: 0.01 s outputs | after: every step | after: 0.01 s outputs |")
+    print("|---|---|---|---|---|")
+
+    def cell(r, k):
+        return "failed" if r is None else f"{r[k]:.2f} N"
+
+    for dt in STEPS:
+        before, after = seacable_peaks(dt, False), seacable_peaks(dt, True)
+        print(f"| {dt:g} | {cell(before, 0)} | {cell(before, 1)} | {cell(after, 0)} | {cell(after, 1)} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
