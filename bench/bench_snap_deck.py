@@ -3,8 +3,10 @@ MoorDyn's slack-segment damping, and MoorDyn's own.
 
 MoorDyn damps every segment with ``BA (dl/dt) / l`` whatever its strain; seacable's truss damps taut
 elements only unless ``Water.slack_damping`` (set for MoorDyn decks since issue 19). For each step the
-largest fairlead tension over 5 s (the 2.5 s ramp and two cycles) read at every step, and read from
-outputs every 0.01 s (the bench's output interval); "failed": a ConvergenceError.
+largest fairlead tension over 10 s read at every step, and read from outputs every 0.01 s (the bench's
+output interval); "failed": a ConvergenceError. MoorDyn's peak: over its cycles 5 to 7 (t >= 6.25 s),
+after its start from its own initial state (0.33 N at the fairlead, against the 2.76 N of the
+catenary seacable starts from) has settled: its cycle maxima are 26.8, 24.0, 17.3, then 57.0-57.3 N.
 
 Run: ``python bench/bench_snap_deck.py`` (about 3 minutes on one core).
 
@@ -34,8 +36,9 @@ import seacable.mooring.moordyn as SM
 from seacable.errors import ConvergenceError
 from seacable.io.moordyn import load_moordyn_case
 
-DURATION = 5.0
-STEPS = (0.01, 0.005, 0.0025, 0.00125, 5e-4, 2.5e-4, 1.25e-4)
+DURATION = 10.0
+STEPS = (0.01, 0.005, 0.0025, 0.00125, 5e-4, 2.5e-4)
+SETTLED = 6.25  # [s]: MoorDyn's own initial state (its dynamic relaxation) settles by the 5th cycle
 
 
 def seacable_peaks(dt: float, slack_damping: bool):
@@ -67,11 +70,11 @@ def moordyn_peak(cfl: float, out: float = 5e-4) -> float:
     with md._quiet():
         r = md.run_moordyn(B.snap_deck(cfl), {"time": t, "x": x[:, 0], "y": x[:, 1], "z": x[:, 2]},
                            duration=DURATION, dt_out=out, use_ic_file=False)
-    return float(np.max(r["fairlead_tension"]))
+    return float(np.max(np.asarray(r["fairlead_tension"])[np.asarray(r["time"]) >= SETTLED]))
 
 
 def main():
-    print("MoorDyn 2.7.2, coupled every 5e-4 s: " + ", ".join(f"CFL {c:g}: {moordyn_peak(c):.2f} N" for c in (0.1, 0.035)))
+    print(f"MoorDyn 2.7.2, coupled every 5e-4 s, peak over t >= {SETTLED:g} s: " + ", ".join(f"CFL {c:g}: {moordyn_peak(c):.2f} N" for c in (0.1, 0.035)))
     print("| dt [s] | before: every step | before: 0.01 s outputs | after: every step | after: 0.01 s outputs |")
     print("|---|---|---|---|---|")
 
