@@ -27,9 +27,9 @@ read MoorDyn decks before issue 19; "after": MoorDyn's rule):
 (after, every step: 57.21 N at 1.25e-4 s and 57.20 N at 6.25e-5 s; before, every step, 160-170 N at
 1.25e-4 to 3.1e-5 s: a 2.3 ms spike of about m c v = 0.0948 kg/m * 1779 m/s * 1 m/s, which outputs every
 0.01 s miss, so that their maximum, 73.8, 87.8 and 85.5 N at 1.25e-4, 6.25e-5 and 3.1e-5 s, never
-converges.) With the rule the snap rises over about 10 ms (8.5 ms above half its peak; MoorDyn the same) and the peak converges monotonically from
-below; 1 % needs dt <= 1.25e-3 s. Spectral radius 0.8 (after): 44.1, 50.6, 56.6, 57.4 N at 5e-3 to
-5e-4 s, the same as average acceleration.
+converges.) With the rule the snap rises over about 10 ms (8.5 ms above half its peak; MoorDyn the same)
+and the peak converges monotonically from below; 1 % needs dt <= 1.25e-3 s. Spectral radius 0.8 (after):
+44.1, 50.6, 56.6, 57.4 N at 5e-3 to 5e-4 s, the same as average acceleration.
 """
 
 from __future__ import annotations

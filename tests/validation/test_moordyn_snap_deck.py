@@ -6,12 +6,13 @@ fairlead 32 m away at 0.3 m depth moved on a 0.2 m circle in the x-z plane every
 2.5 s), seabed kBot 3e6 Pa/m, cBot 1e4 Pa s/m. The line goes slack as the fairlead comes towards the
 anchor and is jerked taut as it moves away.
 
-MoorDyn damps every segment with ``Td = BA (dl/dt) / l`` whatever its strain (Line.cpp: the tension
-is zeroed in a slack segment, the damping is not), so a slack stretch of chain resists its rate of
-extension and the snap builds up over about 10 ms (8.5 ms above half its 57 N peak). Without that rule (the damper in taut elements only)
-seacable gave a 2.3 ms spike of about 164 N at dt <= 1.25e-4 s, and at the steps of the issue
-(1e-2 to 1.25e-3 s, omega dt = 11 to 90 for the highest axial mode) ringing maxima of 57-220 N and a
-ConvergenceError at 1e-2 s, with the peak read from outputs every 0.01 s that miss the spike.
+MoorDyn damps every segment with ``Td = BA (dl/dt) / l`` whatever its strain (Line.cpp: the tension is
+zeroed in a slack segment, the damping is not), so a slack stretch of chain resists its rate of
+extension and the snap builds up over about 10 ms (8.5 ms above half its 57 N peak). Without that rule
+(the damper in taut elements only) seacable gave a 2.3 ms spike of about 164 N at dt <= 1.25e-4 s, and
+at the steps of the issue (1e-2 to 1.25e-3 s, omega dt = 11 to 90 for the highest axial mode) ringing
+maxima of 57-220 N and a ConvergenceError at 1e-2 s, with the peak read from outputs every 0.01 s that
+miss the spike.
 
 Peaks below are of the fairlead tension at every step (output interval = time step). Measured with this
 rule over 10 s (largest cycle maximum; bench/bench_snap_deck.py): dt 1e-2: 38.4 N, 5e-3: 44.2,
