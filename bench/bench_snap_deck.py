@@ -87,7 +87,8 @@ def moordyn_peak(cfl: float, out: float = 5e-4) -> float:
 
 
 def main():
-    print(f"MoorDyn 2.7.2, coupled every 5e-4 s, peak over t >= {SETTLED:g} s: " + ", ".join(f"CFL {c:g}: {moordyn_peak(c):.2f} N" for c in (0.1, 0.035)))
+    print(f"MoorDyn 2.7.2, coupled every 5e-4 s, peak over t >= {SETTLED:g} s: "
+          + ", ".join(f"CFL {c:g}: {moordyn_peak(c):.2f} N" for c in (0.1, 0.035)))
     print("| dt [s] | before: every step | before: 0.01 s outputs | after: every step | after: 0.01 s outputs |")
     print("|---|---|---|---|---|")
 
