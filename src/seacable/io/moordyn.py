@@ -57,7 +57,8 @@ Physics MoorDyn attaches to these inputs (``source/Line.cpp``, ``Line::initializ
 in ``source/MoorDyn2.cpp``), for models that convert a MoorDyn file:
 
 - Internal damping: a segment of unstretched length ``l`` carries the axial damping force
-  ``BA * (dl_str/dt) / l`` along the segment. ``BA >= 0`` is used as written [N s]; ``BA < 0``
+  ``BA * (dl_str/dt) / l`` along the segment, whatever its strain (a slack segment, which carries
+  no elastic tension, is still damped; MoorDyn's ``Line.cpp``). ``BA >= 0`` is used as written [N s]; ``BA < 0``
   means ``zeta = -BA`` and MoorDyn sets ``BA = zeta * l * sqrt(EA * m)`` with ``l = L / N``
   (``c = -BAin * UnstrLen / N * sqrt(E * rho)`` per unit area). ``zeta`` is the damping ratio of
   the highest axial mode of the lumped-mass line (adjacent nodes out of phase):

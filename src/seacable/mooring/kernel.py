@@ -77,7 +77,8 @@ E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 
 E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 12, 13, 14, 15
 E_BEDRAMP = 16
 E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
-ENV_SIZE = 18
+E_SLACKDAMP = 18  # 1: the axial damper acts in slack elements too (MoorDyn's rule), 0: only in taut ones
+ENV_SIZE = 19
 
 # Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
 # dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the
@@ -568,6 +569,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)  # else the surface is z = 0 everywhere
     nvis = visco.shape[0]
     vstatic = math.isinf(env[E_VDT])
+    sdamp = env[E_SLACKDAMP] > 0.0
     n = X.shape[0]
     rho = env[E_RHO]
     pdia = pvol  # the attachments' sphere diameters, needed (and computed) only when one has a buoyancy
@@ -617,21 +619,31 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             else:
                 tb, _ = table_tension(sband, ts_lo[e], ts_hi[e], ts_x, ts_y)
                 tel, kel = tb / sband * psi, tb / sband * dpsi
-        if dpsi > 0.0 and not (nvis > 0 and (visco[e, V_EAD] > 0.0 and not vstatic or visco[e, V_WC] > 0.0)):
+        if (dpsi > 0.0 or sdamp and l > 0.0) and not (nvis > 0 and (visco[e, V_EAD] > 0.0 and not vstatic
+                                                                   or visco[e, V_WC] > 0.0)):
             ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+            # the damper: rounded with the spring (0 in a slack element), or with ``sdamp`` (MoorDyn's rule)
+            # the whole ``cdamp ldot / L`` whatever the strain, so that a slack element resists its rate of
+            # shortening (an axial force that may be compressive)
+            cd = cdamp[e] if sdamp else cdamp[e] * dpsi
             if tab:
-                T = tel + cdamp[e] * ldot / L * dpsi
+                T = tel + cd * ldot / L
             else:
-                T = EA[e] * psi + cdamp[e] * ldot / L * dpsi
-            T = max(T, 0.0)
+                T = EA[e] * psi + cd * ldot / L
+            if not sdamp:
+                T = max(T, 0.0)
             tension[e] = T
             for r in range(3):
                 F[a, r] += T * tv[r]
                 F[b, r] -= T * tv[r]
-            if jac and T > 0.0:
+            if jac and T != 0.0:
                 # axial stiffness plus damper: the table's slope, or EA (the same operations as before tables)
-                kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
-                ka = (kax + cdamp[e] * ldot / L * ddpsi) / L
+                if sdamp:
+                    kax = kel + cc * cd if tab else EA[e] * dpsi + cc * cd
+                    ka = kax / L
+                else:
+                    kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
+                    ka = (kax + cdamp[e] * ldot / L * ddpsi) / L
                 kg = T / l
                 fa, fb = fidx[a], fidx[b]
                 # the pair's tangent [[K_e, -K_e], [-K_e, K_e]] straight into the band (rows of the free nodes)

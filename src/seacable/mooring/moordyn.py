@@ -4,7 +4,8 @@ Each MoorDyn point is a node (Fixed: an anchor; Vessel/Coupled: a fairlead moved
 motion, one channel each; Free: a connection point with its mass, volume, C_D A and C_a). Each line
 gets ``NumSegs`` truss elements between its two points, with MoorDyn's line-type data: weight in
 water ``(m - rho pi d^2 / 4) g``, axial damping ``BA`` (a negative BA is a damping ratio, MoorDyn's
-rule, see :func:`seacable.io.moordyn.moordyn_axial_damping`), normal and axial drag and added mass.
+rule, see :func:`seacable.io.moordyn.moordyn_axial_damping`; as in MoorDyn it acts in slack segments
+too, ``Water.slack_damping``), normal and axial drag and added mass.
 The seabed is MoorDyn's: flat at ``WtrDpth`` (without it, at the deepest point, as MoorDyn-C sets it),
 ``kBot`` and ``cBot`` per projected area, friction coefficient ``FrictionCoefficient`` (regularised;
 MoorDyn's own friction law differs in detail). Options seacable cannot honour (waves, currents,
@@ -145,7 +146,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
                                                                if p.attachment == "vessel"))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
-                  friction=md.friction)
+                  friction=md.friction, slack_damping=True)  # MoorDyn's damper acts in slack segments too
     return MooringModel(net, water)
 
 

@@ -56,7 +56,9 @@ class Water:
     (:class:`seacable.seastate.SeaComponents`, its kinematics precomputed on a grid by
     :meth:`MooringModel.prepare_sea`); ``stretching`` the kinematics above the still-water level
     ("none": the z = 0 values, "wheeler": Wheeler stretching). ``rayleigh_mass`` is the
-    mass-proportional Rayleigh coefficient [1/s].
+    mass-proportional Rayleigh coefficient [1/s]. ``slack_damping``: the elements' axial damper
+    ``c dl/dt / L`` also acts when they are slack (MoorDyn's rule, set for MoorDyn decks; False: only
+    in taut elements, with the tension-only spring).
     """
 
     density: float = 1025.0
@@ -77,6 +79,7 @@ class Water:
     rayleigh_mass: float = 0.0
     sea: object = field(default=None, compare=False)  # an irregular sea (seastate.SeaComponents) or None
     stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
+    slack_damping: bool = False   # the axial damper acts in slack elements too (MoorDyn's rule)
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         env = np.zeros(K.ENV_SIZE)
@@ -89,6 +92,7 @@ class Water:
         env[[K.E_CHEAD, K.E_ALPHA, K.E_WDEPTH]] = self.current_heading, self.rayleigh_mass, depth
         env[K.E_BEDRAMP] = bed_ramp
         env[K.E_VDT] = math.inf  # viscoelastic elements at their static stiffness unless a time step says
+        env[K.E_SLACKDAMP] = float(bool(self.slack_damping))
         return env
 
     def seabed_z(self, x) -> np.ndarray:
