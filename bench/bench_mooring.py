@@ -120,29 +120,10 @@ def _race(n, sc_dt, md_cfl, repeat):
     return pairs[0][0], pairs[0][1], med
 
 
-SNAP_DECK = """--------------------- MoorDyn Input File ------------------------------------
-tank-scale chain, fairlead on a circle (snap loads; written for this bench)
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      0.0054  0.0948     3.0e5      -0.8        0          1.2    1.0    0.2     0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     0.0     0.0     -2.5    0      0       0      0
-2     Vessel    32.0    0.0     -0.3    0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     chain      1        2         33.0      83      -
----------------------- OPTIONS -----------------------------------------
-{cfl}                cfl                  CFL to determine the simulation timestep
-3.0e6                kBot                 bottom stiffness (Pa/m)
-1.0e4                cBot                 bottom damping (Pa-s/m)
-1000.0               WtrDnsty             water density (kg/m^3)
-2.5                  WtrDpth              water depth (m)
-------------------------- need this line --------------------------------------
-"""
+# the snap deck of tests/validation/test_moordyn_snap_deck.py, its CFL set per run
+SNAP_DECK = re.sub(r"^\S+(\s+cfl\s)", r"{cfl}\1",
+                   (Path(__file__).parents[1] / "tests" / "validation" / "data" / "snap_deck.txt").read_text(),
+                   count=1, flags=re.MULTILINE)
 SNAP_FAIRLEAD = (32.0, 0.0, -0.3)
 SNAP_RADIUS, SNAP_PERIOD, SNAP_RAMP, SNAP_DURATION, SNAP_OUTPUT = 0.2, 1.25, 2.5, 10.0, 0.01
 

@@ -25,6 +25,8 @@ then 57.1, 57.1, 57.3 N in cycles 5 to 7 (CFL 0.1: 57.0, 57.1, 57.3 N).
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -32,29 +34,7 @@ from seacable.io.moordyn import load_moordyn_case
 from seacable.mooring.moordyn import run_moordyn_case
 from seacable.mooring.motion import PlatformMotion
 
-DECK = """--------------------- MoorDyn Input File ------------------------------------
-tank-scale chain, fairlead on a circle (snap loads)
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      0.0054  0.0948     3.0e5      -0.8        0          1.2    1.0    0.2     0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     0.0     0.0     -2.5    0      0       0      0
-2     Vessel    32.0    0.0     -0.3    0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     chain      1        2         33.0      83      -
----------------------- OPTIONS -----------------------------------------
-0.1                  cfl                  CFL to determine the simulation timestep
-3.0e6                kBot                 bottom stiffness (Pa/m)
-1.0e4                cBot                 bottom damping (Pa-s/m)
-1000.0               WtrDnsty             water density (kg/m^3)
-2.5                  WtrDpth              water depth (m)
-------------------------- need this line --------------------------------------
-"""
+DECK = (Path(__file__).parent / "data" / "snap_deck.txt").read_text()  # a 33 m chain, 83 segments
 MOORDYN_PEAK = 57.3  # [N], MoorDyn 2.7.2 on DECK, CFL 0.035, largest of cycles 5-7 (57.3 N at CFL 0.1 too)
 SETTLED = 6.25  # [s], the start of cycle 5
 
