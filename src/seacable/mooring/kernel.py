@@ -385,6 +385,16 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
 
 
 @njit(cache=True)
+def _chord(X, a, b, tv):
+    """tv <- X[b] - X[a]; returns its length. [m]"""
+    l = 0.0
+    for r in range(3):
+        tv[r] = X[b, r] - X[a, r]
+        l += tv[r] * tv[r]
+    return math.sqrt(l)
+
+
+@njit(cache=True)
 def viscoelastic_tension(dl, ldot, L, ea_s, ba, row, dt):
     """Tension [N] of a viscoelastic element and its slopes dT/d(dl) [N/m] and dT/d(dl/dt) [N s/m].
 
@@ -457,11 +467,7 @@ def viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, dt, fidx, F, tensio
             continue
         a = elements[e, 0]
         b = elements[e, 1]
-        l = 0.0
-        for r in range(3):
-            tv[r] = X[b, r] - X[a, r]
-            l += tv[r] * tv[r]
-        l = math.sqrt(l)
+        l = _chord(X, a, b, tv)
         L = L0[e]
         if static:
             viscoelastic_tension(l - L, 0.0, L, EA[e], cdamp[e], visco[e], math.inf)
@@ -511,11 +517,7 @@ def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, 
             continue
         a = elements[e, 0]
         b = elements[e, 1]
-        l = 0.0
-        for r in range(3):
-            tv[r] = X[b, r] - X[a, r]
-            l += tv[r] * tv[r]
-        l = math.sqrt(l)
+        l = _chord(X, a, b, tv)
         if l > 0.0:
             for r in range(3):
                 tv[r] /= l
