@@ -952,6 +952,7 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     n = X.shape[0]
     nd = 3 * nfree
     band = np.zeros((nd, 2 * bw + 1))
+    none = np.zeros((0, 2 * bw + 1))  # no Newton matrix
     R = np.zeros(nd)
     D = np.zeros(nd)
     Xn = np.empty_like(X)
@@ -978,17 +979,20 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
         res_prev = np.inf
         cuts = 0
         scale = 1.0
+        jac = True  # assemble the Newton matrix with the loads (not when this evaluation should converge)
         for it in range(max_iter):
             for i in range(n):
                 if fidx[i] >= 0:
                     for r in range(3):
                         A[i, r] = c0 * (X[i, r] - Xn[i, r]) - Vn[i, r] / (beta * dt) - (0.5 / beta - 1.0) * An[i, r]
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
-            band[:] = 0.0
+            mat = band if jac else none
+            if jac:
+                band[:] = 0.0
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
                   with_waves, sea, F, M, tension,
-                  band, bw, cm, c1)
+                  mat, bw, cm, c1)
             if galpha:
                 res = _residual_alpha(F, M, A, G, wm, wg, fidx, R)
             else:
@@ -1007,9 +1011,20 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
                         for r in range(3):
                             D[3 * f + r] *= 0.5
                             X[i, r] -= D[3 * f + r]
+                jac = True
                 continue
             if not math.isfinite(res):
                 break
+            if not jac:
+                # the evaluation expected to converge did not: the same state again, with the Newton matrix
+                band[:] = 0.0
+                loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+                      pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth,
+                      cur_speed, with_waves, sea, F, M, tension, band, bw, cm, c1)
+                stats[0] += 1
+            # the next residual from this iteration's rate of decrease (Newton's is faster than that): below
+            # half the tolerance, the next evaluation is expected to be the last and skips the matrix
+            jac = not (it > 0 and res * (res / res_prev) <= 0.5 * scale)
             res_prev = res
             cuts = 0
             for k in range(nd):

@@ -20,14 +20,18 @@ __all__ = ["evaluate_states", "record_output", "run_outputs"]
 @njit(cache=True)
 def record_output(k, t, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, bw, env_rec,
-                  cur_depth, cur_speed, sea, F, M, tension, times, pos, vel, acc, ten, sup):
+                  cur_depth, cur_speed, sea, F, M, tension, times, pos, vel, acc, ten, sup, evaluated=False):
     """Store the state as output ``k`` at time ``t``: positions, element tensions, the force each node applies
     to its support, ``F - M a`` (what :meth:`seacable.mooring.solver.MooringModel.evaluate` gives, with
-    ``env_rec`` its environment), and the velocities and accelerations of the nodes ``knodes``."""
-    empty = np.zeros((0, 2 * bw + 1))
-    K.loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
-            buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env_rec, cur_depth, cur_speed, True,
-            sea, F, M, tension, empty, bw, 0.0, 0.0)
+    ``env_rec`` its environment), and the velocities and accelerations of the nodes ``knodes``.
+
+    ``evaluated``: ``F``, ``M`` and ``tension`` already hold the loads of this state with ``env_rec`` (the
+    last evaluation of a converged step), and are not evaluated again."""
+    if not evaluated:
+        empty = np.zeros((0, 2 * bw + 1))
+        K.loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
+                buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env_rec, cur_depth, cur_speed,
+                True, sea, F, M, tension, empty, bw, 0.0, 0.0)
     times[k] = t
     for i in range(X.shape[0]):
         for r in range(3):
@@ -54,7 +58,12 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, 
     updated as the loop goes; ``stats`` the last (iterations, residual, tolerance) of
     :func:`~seacable.mooring.kernel.newmark_steps`. Returns the interval that failed (its state at the failed
     step's start), or ``k1`` when all converged.
+
+    An output's loads are those of the interval's last Newton evaluation (the converged state, at the time
+    ``k interval + sub h``, equal to ``(k + 1) interval`` but for rounding), unless viscoelastic elements
+    make the output's environment differ from the step's (their slow stretch held at the last step's).
     """
+    same = visco.shape[0] == 0
     for k in range(k0, k1):
         j0 = (k - k0) * sub
         stats[0] = 0.0
@@ -71,7 +80,7 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, 
         record_output(k + 1, (k + 1) * interval, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                       weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
                       visco, fidx, bw, env_rec, cur_depth, cur_speed, sea, F, M, tension, times, pos, vel, acc, ten,
-                      sup)
+                      sup, same)
         count[0] = k + 1
     return k1
 

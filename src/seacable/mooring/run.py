@@ -151,6 +151,33 @@ def _own_model(model: MooringModel) -> MooringModel:
     return own
 
 
+def _end_part(model: MooringModel, ends, end_elements):
+    """The part of ``model``'s network whose loads reach the nodes ``ends``: the elements and bending hinges
+    holding one of them, and their nodes.
+
+    Returns the nodes kept (sorted), :meth:`~seacable.mooring.solver.MooringModel.element_args` and ``fidx``
+    of that part (node and element indices renumbered), and ``ends`` and ``end_elements`` renumbered. The
+    loads of :func:`seacable.mooring.kernel.loads` at ``ends`` are those of the whole network (every term that
+    reaches a node comes from its elements, its hinges and the node itself), for a fraction of the work.
+    """
+    net = model.network
+    ends = np.asarray(ends, np.int64)
+    elements = np.flatnonzero(np.isin(net.elements, ends).any(axis=1))
+    hinges = np.flatnonzero(np.isin(model.hinges, ends).any(axis=1)) if model.hinges.size else np.zeros(0, np.int64)
+    sub = np.unique(np.concatenate([ends, net.elements[elements].ravel(), model.hinges[hinges].ravel()]))
+    (elem, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo,
+     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, visco) = model.element_args()
+    renum = np.searchsorted(sub, elem[elements]).astype(elem.dtype)
+    args = (renum, *(a[elements] for a in (L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat)),
+            *(a[sub] for a in (weight, pmass, padd, pvol, pcda, bedc)), buoy[elements], pbuoy[sub],
+            ts_lo[elements], ts_hi[elements], ts_x, ts_y,
+            np.searchsorted(sub, hinge_nodes[hinges]).astype(hinge_nodes.dtype).reshape(-1, 3), hinge_ei[hinges],
+            visco[elements] if visco.shape[0] else visco)
+    args = tuple(np.ascontiguousarray(a) for a in args)
+    return (sub, args, np.ascontiguousarray(model.fidx[sub]), np.searchsorted(sub, ends).astype(np.int64),
+            np.searchsorted(elements, np.asarray(end_elements)).astype(np.int64))
+
+
 def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None):
     """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
 
@@ -179,13 +206,18 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
     Vs, As = (np.ascontiguousarray(np.broadcast_to(a, kshape).reshape((nt,) + kshape[-2:])) for a in (V, A))
     ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
                                                                  float).reshape(nt)
-    # every state in one compiled call (what own.evaluate gives state by state)
+    # every state in one compiled call (what own.evaluate gives state by state), on the part of the network
+    # that loads the two end nodes
+    sub, args, fidx, ends_sub, el_sub = _end_part(own, ends, end_el)
+    Xp = np.ascontiguousarray(Xs[:, sub])
+    kin = np.flatnonzero(np.isin(knodes, sub))
+    Vp, Ap = np.ascontiguousarray(Vs[:, kin]), np.ascontiguousarray(As[:, kin])
+    ksub = np.searchsorted(sub, knodes[kin]).astype(np.int64)
     out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
     for i0, i1 in own.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
         out[i0:i1], tension[i0:i1] = evaluate_states(
-            Xs[i0:i1], Vs[i0:i1], As[i0:i1], knodes, ts[i0:i1], time is not None, np.array(ends, np.int64),
-            np.array(end_el, np.int64), *own.element_args(), own.fidx, own.bw, own.env, own.cur_depth,
-            own.cur_speed, own.sea)
+            Xp[i0:i1], Vp[i0:i1], Ap[i0:i1], ksub, ts[i0:i1], time is not None, ends_sub, el_sub, *args, fidx,
+            own.bw, own.env, own.cur_depth, own.cur_speed, own.sea)
     if model.water.depth is not None:
         # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
         # along its end element only (the catenary's H at a grounded anchor)
