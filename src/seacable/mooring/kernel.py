@@ -588,6 +588,10 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     hb = np.zeros((3, 3))
     tv, uw, aw, ur, ut, un, an, vt = (np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3),
                                       np.zeros(3), np.zeros(3), np.zeros(3))
+    # still water and a current uniform over depth: the same water velocity at every immersed point
+    uniform = not wavy and cur_depth.size == 1
+    if uniform:
+        _fluid(np.zeros(3), t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
@@ -679,22 +683,25 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 F[k, 2] -= dry * buoy[e] * half
             if X[k, 2] > ek:
                 continue  # out of the water: no hydrodynamic load
-            _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
+            if not uniform:
+                _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
             for r in range(3):
                 ur[r] = uw[r] - V[k, r]
             ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
-            at_s = aw[0] * tv[0] + aw[1] * tv[1] + aw[2] * tv[2]
             for r in range(3):
                 ut[r] = ut_s * tv[r]
                 un[r] = ur[r] - ut[r]
-                an[r] = aw[r] - at_s * tv[r]
             mn = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
             mt = abs(ut_s)
             qd = 0.5 * rho * dia[e] * half
             ma = rho * area * half
+            if wavy:  # the water's acceleration (Froude-Krylov and added mass); none in still water
+                at_s = aw[0] * tv[0] + aw[1] * tv[1] + aw[2] * tv[2]
+                for r in range(3):
+                    an[r] = aw[r] - at_s * tv[r]
+                    F[k, r] += ma * ((1.0 + can[e]) * an[r] + (1.0 + cat[e]) * at_s * tv[r])
             for r in range(3):
                 F[k, r] += qd * (cdn[e] * mn * un[r] + math.pi * cdt[e] * mt * ut[r])
-                F[k, r] += ma * ((1.0 + can[e]) * an[r] + (1.0 + cat[e]) * at_s * tv[r])
                 for c in range(3):
                     tt = tv[r] * tv[c]
                     M[k, r, c] += ma * (can[e] * (eye[r, c] - tt) + cat[e] * tt)
@@ -791,8 +798,50 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
 
 
 @njit(cache=True)
+def _eliminate5(band, rhs, k, m):
+    """Row ``k``'s elimination from the ``m - 1`` rows below it (half-bandwidth 5, :func:`band_solve`)."""
+    piv = band[k, 5]
+    for i in range(1, m):
+        o = 5 - i
+        f = band[k + i, o] / piv
+        if f == 0.0:
+            continue
+        band[k + i, o] = f
+        for j in range(1, m):
+            band[k + i, o + j] -= f * band[k, 5 + j]
+        rhs[k + i] -= f * rhs[k]
+
+
+@njit(cache=True)
+def _band_solve5(band, rhs):
+    """:func:`band_solve` of half-bandwidth 5 (a single line: 3 x 3 blocks, each node coupled to the next),
+    the same operations with constant loop bounds away from the last rows (about twice as fast)."""
+    n = rhs.size
+    for k in range(n):
+        piv = band[k, 5]
+        if piv == 0.0 or not math.isfinite(piv):
+            return False
+        if k + 6 <= n:
+            _eliminate5(band, rhs, k, 6)
+        else:
+            _eliminate5(band, rhs, k, n - k)
+    for k in range(n - 1, -1, -1):
+        s = rhs[k]
+        if k + 6 <= n:
+            for j in range(1, 6):
+                s -= band[k, 5 + j] * rhs[k + j]
+        else:
+            for j in range(1, n - k):
+                s -= band[k, 5 + j] * rhs[k + j]
+        rhs[k] = s / band[k, 5]
+    return True
+
+
+@njit(cache=True)
 def band_solve(band, bw, rhs):
     """Solve the banded system in place (LU without pivoting); returns False on a zero pivot."""
+    if bw == 5:
+        return _band_solve5(band, rhs)
     n = rhs.size
     for k in range(n):
         piv = band[k, bw]
