@@ -1,11 +1,13 @@
-"""MoorDyn side of the mooring speed race: MoorDyn v2's quasi-static chain cases.
+"""MoorDyn 2.7.2 and seacable on MoorDyn v2's quasi-static chain cases, against OrcaFlex.
 
-Bench-only helper (imported by ``bench/bench_mooring.py``). It runs MoorDyn (python wrapper,
-``pip install moordyn``) on the three single-chain cases of MoorDyn's public test suite,
-``../shared/peers/moordyn/WD{0050,0200,0600}_Chain.txt``, with the 'Vessel' point moved in
-heave as in ``QuasiStatic/ZZP1_A{1,2}.txt``, times it, and measures its error against the
-OrcaFlex series ``QuasiStatic/WDxxxx_Chain_ZZP1_Ax.txt`` the way MoorDyn's own test
-(``tests/quasi_static_chain.cpp``) does. Run ``python bench/moordyn_peer.py`` for the table.
+Shared by the validation test ``tests/validation/test_moordyn_chain_rms.py`` and the speed race
+(``bench/moordyn_peer.py``, ``bench/bench_mooring.py``, which put this folder on ``sys.path``). It
+runs MoorDyn (python wrapper, ``pip install moordyn``) on the three single-chain cases of MoorDyn's
+public test suite, ``../shared/peers/moordyn/WD{0050,0200,0600}_Chain.txt``, with the 'Vessel'
+point moved in heave as in ``QuasiStatic/ZZP1_A{1,2}.txt`` (:func:`run_moordyn`), runs seacable on
+the same deck and motion (:func:`run_seacable`), and measures either's error against the OrcaFlex
+series ``QuasiStatic/WDxxxx_Chain_ZZP1_Ax.txt`` (:func:`accuracy`), by default on the same times
+and optionally the way MoorDyn's own test (``tests/quasi_static_chain.cpp``) does.
 
 What MoorDyn's test does (``tests/quasi_static_chain.cpp``, FloatingArrayDesign/MoorDyn)
 ----------------------------------------------------------------------------------------
@@ -82,12 +84,14 @@ __all__ = [
     "accuracy",
     "heave_motion",
     "load_reference",
-    "main",
     "run_moordyn",
+    "run_seacable",
 ]
 
-#: Where the shared MoorDyn cases live (read-only).
-PEER_DIR = Path(__file__).resolve().parents[2] / "shared" / "peers" / "moordyn"
+#: Where the shared MoorDyn cases live (read-only): ``shared/`` beside the checkout (CI's layout), else
+#: the workplace's copy (for a checkout elsewhere); None when neither is there (the tests skip).
+PEER_DIR = next((p for p in (Path(__file__).resolve().parents[3] / "shared" / "peers" / "moordyn",
+                             Path("/work/shared/peers/moordyn")) if p.is_dir()), None)
 
 #: OrcaFlex static (fairlead, anchor) tension [N], from MoorDyn's test and the README.
 STATIC_REFERENCE = {
@@ -143,6 +147,9 @@ def load_reference(depth_tag: str, amplitude_tag: str = "A1", *, peer_dir=None) 
     """
     _check_tags(depth_tag, amplitude_tag)
     folder = Path(peer_dir) if peer_dir is not None else PEER_DIR
+    if folder is None:
+        raise InputError("peer_dir must be given: ../shared/peers/moordyn is not there. Suggested fix: "
+                         "pass peer_dir= the folder that holds MoorDyn's chain decks and QuasiStatic/.")
     qs = folder / "QuasiStatic"
     ref_file = qs / f"{depth_tag}_Chain_ZZP1_{amplitude_tag}.txt"
     mot_file = qs / f"ZZP1_{amplitude_tag}.txt"
@@ -314,7 +321,7 @@ def run_moordyn(input_file, motion: dict, duration: float = 100.0, *, dt_out: fl
         MoorDyn's Init or Step returned an error code, or a tension is not finite.
     """
     import cmoordyn
-    import moordyn  # bench-only dependency
+    import moordyn  # the test extra's peer code (skipped without it)
 
     input_file = Path(input_file)
     if not input_file.is_file():
@@ -391,6 +398,67 @@ def run_moordyn(input_file, motion: dict, duration: float = 100.0, *, dt_out: fl
             "n_segments": n_seg, "n_steps": n_steps, "version": _moordyn_version()}
 
 
+def run_seacable(input_file, motion: dict, duration: float = 30.0, *, dt: float = 0.1,
+                 spectral_radius: float = 1.0, tol: float = 1e-6) -> dict:
+    """Run seacable's mooring model of a MoorDyn deck from its static state under ``motion``.
+
+    The model is :func:`seacable.mooring.moordyn.moordyn_model` of the deck; the coupled point
+    follows the cubic spline through the motion samples (positions, and the spline's first and
+    second derivatives as velocity and acceleration) from ``motion['time'][0]`` on, time step and
+    output interval ``dt``.
+
+    Parameters
+    ----------
+    input_file : path-like
+        MoorDyn v2 input file with one coupled ('Vessel') point and one line.
+    motion : dict
+        ``time`` [s] and ``x``, ``y``, ``z`` [m]: offsets of the vessel point from its position in
+        the input file (:func:`load_reference`'s ``motion`` or :func:`heave_motion`).
+    duration : float, default 30.0
+        Simulated time after ``motion['time'][0]``. [s]
+    dt : float, default 0.1
+        Time step and output interval. [s]
+    spectral_radius : float, default 1.0
+        The generalised-alpha step's high-frequency amplification (1: average acceleration).
+    tol : float, default 1e-6
+        Newton tolerance of :func:`seacable.mooring.solver.simulate`.
+
+    Returns
+    -------
+    dict
+        ``time`` [s] (in the motion's time frame), ``fairlead_tension``, ``anchor_tension`` [N]
+        (magnitude of the support force at the line's last and first node),
+        ``static_fairlead_tension``, ``static_anchor_tension`` [N] (static equilibrium),
+        ``wall_time`` [s] (static solve and time stepping).
+    """
+    from scipy.interpolate import CubicSpline
+
+    from seacable.mooring.moordyn import moordyn_model
+    from seacable.mooring.network import PRESCRIBED
+    from seacable.mooring.solver import simulate, static_equilibrium
+
+    tm = np.asarray(motion["time"], dtype=float)
+    offsets = np.column_stack([np.asarray(motion.get(k, np.zeros_like(tm)), dtype=float) for k in "xyz"])
+    spline = CubicSpline(tm - tm[0], offsets)
+    t0 = _time.perf_counter()
+    model = moordyn_model(Path(input_file))
+    st = static_equilibrium(model)
+    base = model.network.position[model.network.kind == PRESCRIBED]
+
+    def moved(t):
+        t = np.asarray(t, float)
+        return base[None] + spline(t)[:, None, :], spline(t, 1)[:, None, :], spline(t, 2)[:, None, :]
+
+    run = simulate(model, moved, duration, dt, dt, initial=st.position, tol=tol,
+                   spectral_radius=spectral_radius)
+    wall = _time.perf_counter() - t0
+    anchor, fair = model.network.line_nodes[0][0], model.network.line_nodes[0][-1]
+    return {"time": tm[0] + run.time, "fairlead_tension": np.linalg.norm(run.support[:, fair], axis=1),
+            "anchor_tension": np.linalg.norm(run.support[:, anchor], axis=1),
+            "static_fairlead_tension": float(np.linalg.norm(st.support[fair])),
+            "static_anchor_tension": float(np.linalg.norm(st.support[anchor])), "wall_time": wall}
+
+
 def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False) -> dict:
     """Static and dynamic tension errors of a run against an OrcaFlex reference series.
 
@@ -400,7 +468,7 @@ def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False
     Parameters
     ----------
     result : dict
-        Output of :func:`run_moordyn` (or any dict with the same keys).
+        Output of :func:`run_moordyn` or :func:`run_seacable` (or any dict with their keys).
     reference : dict
         Output of :func:`load_reference`.
     mirror_moordyn_test : bool, default False
@@ -416,7 +484,9 @@ def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False
         ``static_fairlead_error_pct``, ``static_anchor_error_pct`` (signed, [%]);
         ``fairlead_max_error_pct``, ``anchor_max_error_pct`` [%] and the times where they
         occur ``fairlead_max_error_time``, ``anchor_max_error_time`` [s];
-        ``fairlead_max_error`` [N]; ``n_compared``; ``passes``: ``|static fairlead error|``
+        ``fairlead_max_error``, ``anchor_max_error`` [N]; the root-mean-square differences
+        ``fairlead_rms_error``, ``anchor_rms_error`` [N] and ``..._rms_error_pct`` [%] (of the
+        same range); ``fairlead_range_ref``, ``anchor_range_ref`` [N]; ``n_compared``; ``passes``: ``|static fairlead error|``
         <= 10 % and dynamic fairlead error <= 15 % (MoorDyn's acceptance; the anchor dynamic
         error is not checked there either).
     """
@@ -447,6 +517,9 @@ def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False
         scale = 2.0 * np.abs(dyn_ref).max() if mirror_moordyn_test else np.ptp(dyn_ref)
         k = int(np.argmax(diff))
         worst[name] = 100.0 * diff[k] / scale
+        rms = float(np.sqrt(np.mean(diff**2)))
+        out[f"{name}_rms_error"] = rms
+        out[f"{name}_rms_error_pct"] = 100.0 * rms / scale
         out[f"{name}_max_error"] = float(diff[k])
         out[f"{name}_max_error_pct"] = float(worst[name])
         out[f"{name}_max_error_time"] = float(tk[k])
@@ -454,44 +527,3 @@ def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False
     out["passes"] = bool(abs(out["static_fairlead_error_pct"]) <= 10.0
                          and worst["fairlead"] <= 15.0)
     return out
-
-
-def main(amplitude_tag: str = "A1", duration: float = 100.0, repeat: int = 3) -> list[dict]:
-    """Print MoorDyn's speed and accuracy on the three depths; return the rows.
-
-    Accuracy comes from one run over the motion file (-10 ... 20 s); the wall times are the
-    best of ``repeat`` runs of ``duration`` seconds of :func:`heave_motion` (same motion,
-    extended), since the machine is shared.
-    """
-    rows = []
-    print(f"MoorDyn quasi-static chain cases, heave {amplitude_tag}, period 10 s")
-    print(f"{'case':7s} {'segs':>4s} {'dtM [s]':>9s} {'init [s]':>8s} {'100 s [s]':>9s} "
-          f"{'T0 MD [kN]':>10s} {'T0 Orca':>8s} {'err %':>6s} {'dyn % (ours)':>12s} "
-          f"{'dyn % (MD test)':>15s} {'anchor dyn %':>12s} pass")
-    for tag in STATIC_REFERENCE:
-        ref = load_reference(tag, amplitude_tag)
-        case = PEER_DIR / f"{tag}_Chain.txt"
-        span = ref["motion"]["time"][-1] - ref["motion"]["time"][0]
-        acc_run = run_moordyn(case, ref["motion"], duration=span)
-        motion = heave_motion(ref["amplitude"], duration=duration)
-        runs = [run_moordyn(case, motion, duration=duration) for _ in range(max(1, repeat))]
-        long = min(runs, key=lambda r: r["wall_time"])
-        long["wall_time_init"] = min(r["wall_time_init"] for r in runs)
-        acc = accuracy(acc_run, ref)
-        acc_md = accuracy(acc_run, ref, mirror_moordyn_test=True)
-        row = {"case": tag, "n_segments": long["n_segments"], "dt": long["dt"],
-               "wall_time_init": long["wall_time_init"], "wall_time": long["wall_time"],
-               **acc, "fairlead_max_error_pct_moordyn_test": acc_md["fairlead_max_error_pct"],
-               "passes_moordyn_test": acc_md["passes"]}
-        rows.append(row)
-        print(f"{tag:7s} {row['n_segments']:4d} {row['dt']:9.3e} {row['wall_time_init']:8.3f} "
-              f"{row['wall_time']:9.3f} {acc['static_fairlead_tension'] / 1e3:10.1f} "
-              f"{acc['static_fairlead_tension_ref'] / 1e3:8.1f} "
-              f"{acc['static_fairlead_error_pct']:6.2f} {acc['fairlead_max_error_pct']:12.2f} "
-              f"{acc_md['fairlead_max_error_pct']:15.2f} {acc['anchor_max_error_pct']:12.2f} "
-              f"{acc['passes'] and acc_md['passes']}")
-    return rows
-
-
-if __name__ == "__main__":  # pragma: no cover
-    main(sys.argv[1] if len(sys.argv) > 1 else "A1")
