@@ -13,7 +13,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "validation"))
-from _moordyn_peer import (  # noqa: E402
+from _moordyn_peer import (  # noqa: F401
     PEER_DIR,
     STATIC_REFERENCE,
     _quiet,
@@ -23,17 +23,6 @@ from _moordyn_peer import (  # noqa: E402
     run_moordyn,
     run_seacable,
 )
-
-__all__ = [
-    "PEER_DIR",
-    "STATIC_REFERENCE",
-    "accuracy",
-    "heave_motion",
-    "load_reference",
-    "main",
-    "run_moordyn",
-    "run_seacable",
-]
 
 
 def main(amplitude_tag: str = "A1", duration: float = 100.0, repeat: int = 3) -> list[dict]:

@@ -48,7 +48,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-import _moordyn_peer as peer  # noqa: E402
+import _moordyn_peer as peer
 
 needs_peers = pytest.mark.skipif(peer.PEER_DIR is None, reason="../shared/peers/moordyn not present")
 DURATION = 30.0  # [s]: the motion tables' whole span, -10 ... 20 s, as test_paper004_mooring_dynamics
