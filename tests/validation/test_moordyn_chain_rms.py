@@ -31,7 +31,10 @@ seacable's low-frequency error is 28.8 kN RMS against MoorDyn's 42.1 kN; the res
 2-2.4 Hz (near the line's first axial mode, 2 L / c = 0.4 s) while the fairlead falls through the
 tension trough (t = 4.5-6.5 s and 14.5-16.5 s, the chain laying down on the seabed), 37.7 kN RMS in
 seacable, 18.4 kN in MoorDyn and 7.0 kN in OrcaFlex. It is tied to the seabed contact: without the
-seabed damper (cBot 0, and no friction) it grows to 69 kN in seacable and 30 kN in MoorDyn. It is not
+seabed damper (cBot 0, and no friction) it grows to 69 kN in seacable and 30 kN in MoorDyn, and the two
+codes' own series (friction 0) differ by 57 kN RMS on the seabed but by 25 kN with the seabed moved out
+of reach (WtrDpth 1000 m, the chain hanging from its anchor), so the two seabed contacts (the same
+spring-damper law on paper) excite or damp that mode differently: not found further here. It is not
 the step (dt 0.1 ... 0.01 s: 47.0-47.5 kN; rho 0.8: 46.5 kN), not the motion table's 3-decimal rounding
 (the exact sine: 46.8 kN), not a static offset (the mean of the difference is -1.8 kN, MoorDyn's
 -1.5 kN), not the first rows after the 10 s run-in (0-4 s: 23 kN, MoorDyn 42 kN), and not seabed
