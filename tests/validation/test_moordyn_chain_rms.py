@@ -41,8 +41,8 @@ the step (dt 0.1 ... 0.01 s: 47.0-47.5 kN; rho 0.8: 46.5 kN), not the motion tab
 friction (MoorDyn's FricDamp law makes its friction negligible here: FrictionCoefficient 0 changes its
 error by 0.03 kN; seacable's Coulomb friction damps the ringing: without it 45 kN of ringing, 54 kN of
 error). OrcaFlex's own fairlead record lags the ZZP1 motion by a constant 0.029 s; driving both codes
-0.029 s late is not used: it helps seacable on WD0050 (A2: 44.7 kN, MoorDyn 50.6 kN) but worsens both codes on WD0200 and
-WD0600, so it is not the alignment of the tension series.
+0.029 s late is not used: it helps seacable on WD0050 (A2: 44.7 kN, MoorDyn 50.6 kN) but worsens both
+codes on WD0200 and WD0600, so it is not the alignment of the tension series.
 
 What the bound sees: halving seacable's normal drag coefficient fails all 12 (WD0050 A1 26.1 kN against
 MoorDyn's 13.0, WD0600 A1 100.0 against 92.2). Dropping the lines' added mass (Ca 1 -> 0) is not an error
