@@ -486,9 +486,9 @@ def accuracy(result: dict, reference: dict, *, mirror_moordyn_test: bool = False
         occur ``fairlead_max_error_time``, ``anchor_max_error_time`` [s];
         ``fairlead_max_error``, ``anchor_max_error`` [N]; the root-mean-square differences
         ``fairlead_rms_error``, ``anchor_rms_error`` [N] and ``..._rms_error_pct`` [%] (of the
-        same range); ``fairlead_range_ref``, ``anchor_range_ref`` [N]; ``n_compared``; ``passes``: ``|static fairlead error|``
-        <= 10 % and dynamic fairlead error <= 15 % (MoorDyn's acceptance; the anchor dynamic
-        error is not checked there either).
+        same range); ``fairlead_range_ref``, ``anchor_range_ref`` [N]; ``n_compared``;
+        ``passes``: ``|static fairlead error|`` <= 10 % and dynamic fairlead error <= 15 %
+        (MoorDyn's acceptance; the anchor dynamic error is not checked there either).
     """
     t_run = np.asarray(result["time"], dtype=float)
     t_ref = np.asarray(reference["time"], dtype=float)
