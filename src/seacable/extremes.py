@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import xarray as xr
+from numba import njit
 
 from .results import var
 
@@ -78,15 +79,26 @@ def snap_loads(time, tension, threshold: float = 0.0, window: float = 2.0):
     tension = np.asarray(tension)
     slack = tension <= threshold
     taut = tension > threshold   # NaN (no element) is neither
-    t_out, e_out, p_out = [], [], []
     rises = np.argwhere(slack[:-1] & taut[1:])
-    for k, e in rises:
-        stop = np.searchsorted(time, time[k + 1] + window, side="right")
-        j = k + 1 + int(np.nanargmax(tension[k + 1:stop, e]))
-        t_out.append(time[j])
-        e_out.append(e)
-        p_out.append(tension[j, e])
-    return np.array(t_out, float), np.array(e_out, int), np.array(p_out, float)
+    k, e = rises[:, 0] + 1, rises[:, 1]
+    stop = np.searchsorted(time, time[k] + window, side="right")
+    j = _window_peaks(np.asarray(tension, float), k, stop, e)
+    return np.asarray(time[j], float), e.astype(int), np.asarray(tension[j, e], float)
+
+
+@njit(cache=True)
+def _window_peaks(tension, start, stop, column):
+    """The row of the largest value of ``tension[start[i]:stop[i], column[i]]`` for each i, NaN skipped (the
+    first of equal values, as :func:`numpy.nanargmax`; ``tension[start[i], column[i]]`` is a number)."""
+    out = np.empty(start.size, np.int64)
+    for i in range(start.size):
+        c = column[i]
+        best = start[i]
+        for j in range(start[i] + 1, stop[i]):
+            if tension[j, c] > tension[best, c]:
+                best = j
+        out[i] = best
+    return out
 
 
 def _end_mean(da: xr.DataArray) -> float:
