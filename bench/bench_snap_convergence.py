@@ -7,7 +7,8 @@ against the finest run (83 segments, rho_inf 1) and the wall time of the time lo
 and 166 segments at fine steps. The test ``tests/validation/test_mooring_snap_loads.py`` runs a part.
 
 Run: ``python bench/bench_snap_convergence.py [cycles]`` (default 2 cycles after the 1.25 s ramp; about
-5 minutes on one core, with the reference run).
+5 minutes on one core, with the reference run); ``python bench/bench_snap_convergence.py deck [taut]``: the
+mesh study of the MoorDyn snap deck (below, about 10 minutes; ``taut``: the damper in taut elements only).
 
 Measured (2 cycles; two runs in parallel on a shared 2-core machine, so wall times are indicative; spread is
 max - min of the cycle maxima and err the largest error, both in % of the reference):
@@ -52,6 +53,7 @@ not give the converged peak: at 1e-3 and 5e-4 s every radius is 1-18 % off (the 
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 import time
 from pathlib import Path
@@ -59,6 +61,9 @@ from pathlib import Path
 import numpy as np
 
 import seacable as sc
+from seacable.io.moordyn import load_moordyn_case
+from seacable.mooring.moordyn import prepare_moordyn
+from seacable.mooring.motion import PlatformMotion, bind
 from seacable.mooring.run import prepare_mooring_dynamic
 from seacable.mooring.solver import simulate, static_equilibrium
 
@@ -99,5 +104,67 @@ def main(cycles: int = 2):
               f"{np.ptp(m) / np.mean(ref) * 100:8.1f} {err[np.argmax(np.abs(err))]:9.1f} {wall:8.2f}", flush=True)
 
 
+DECK = (Path(__file__).resolve().parents[1] / "tests" / "validation" / "data" / "snap_deck.txt").read_text()
+CHAIN = "chain      0.0054  0.0948     3.0e5      -0.8        0 "
+SEGMENTS = "33.0      83 "
+BA_83 = 0.8 * (33.0 / 83) * float(np.sqrt(3.0e5 * 0.0948))  # [N s], the deck's BA = -0.8 at 83 segments
+
+
+def deck_maxima(segments: int, dt: float, ba: float, ei: float, tmp: Path, slack_damping: bool = True):
+    """The snap deck (tests/validation/data/snap_deck.txt) with ``segments`` segments, axial damping column
+    ``ba`` [N s, or -zeta] and EI ``ei`` [N m^2], 1.25 s ramp: the largest fairlead tension in each of the
+    periods 1.875-3.125 s and 3.125-4.375 s (around the snaps at about 2.5 and 3.8 s), read every
+    max(dt, 2.5e-4 s) [N], the number of slack elements at each and the wall time of the time loop [s].
+    ``slack_damping`` False: the damper in taut elements only (seacable's rule for its own cases)."""
+    path = tmp / f"snap_{segments}.txt"
+    path.write_text(DECK.replace(CHAIN, f"chain      0.0054  0.0948     3.0e5      {ba!r}  {ei!r} ")
+                    .replace(SEGMENTS, f"33.0      {segments} "))
+    motion = PlatformMotion(amplitude=(0.2, 0.0, 0.2, 0.0, 0.0, 0.0), phase=(np.pi / 2, 0.0, 0.0, 0.0, 0.0, 0.0),
+                            period=PERIOD, reference=(32.0, 0.0, -0.3), ramp=1.25)
+    out = max(dt, 2.5e-4)
+    case = load_moordyn_case(path).with_run(duration=4.375, time_step=dt, output_interval=out, motion=motion)
+    model = prepare_moordyn(case)
+    model = type(model)(model.network, dataclasses.replace(model.water, slack_damping=slack_damping))
+    st = static_equilibrium(model, tol=1e-8)
+    fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
+    t0 = time.perf_counter()
+    run = simulate(model, fn, case.duration, dt, out, initial=st.position, tol=1e-7)
+    wall = time.perf_counter() - t0
+    tension = np.linalg.norm(run.support[:, model.network.line_nodes[0][-1]], axis=1)
+    window = np.floor((run.time - 1.875) / PERIOD - 1e-9)
+    peaks = [np.flatnonzero(window == k)[np.argmax(tension[window == k])] for k in (0, 1)]
+    return tension[peaks], np.sum(run.tension[peaks] <= 0.0, axis=1), wall
+
+
+def deck_mesh(taut_only: bool = False):
+    """The snap deck's cycle maxima against the mesh: with its damping ratio per segment (BA = -0.8) or the
+    same damper as a coefficient on every mesh (BA = 53.64 N s, its value at 83 segments), without and with
+    a bending stiffness EI of 0.5 N m^2; ``taut_only``: the coefficient and EI with the damper in taut
+    elements only."""
+    import tempfile
+    tmp = Path(tempfile.mkdtemp())
+    print(f"{'BA':>8s} {'EI':>4s} {'segs':>4s} {'dt [s]':>9s} {'maxima [N]':>16s} {'slack':>9s} "
+          f"{'vs previous %':>14s} {'wall [s]':>8s}")
+    rows = [(BA_83, 0.5, n, dt) for n, dt in ((83, 5e-4), (83, 1.25e-4), (166, 2.5e-4), (166, 1.25e-4),
+                                               (332, 1.25e-4), (664, 1.25e-4), (664, 6.25e-5))]
+    rows += [(-0.8, 0.5, n, dt) for n, dt in ((83, 1.25e-4), (166, 1.25e-4), (332, 1.25e-4))]
+    rows += [(ba, 0.0, n, dt) for ba in (BA_83, -0.8) for n, dt in ((83, 1.25e-4), (166, 1.25e-4), (332, 1.25e-4),
+                                                                     (664, 6.25e-5))]
+    if taut_only:
+        rows = [(BA_83, 0.5, n, dt) for n, dt in ((83, 2.5e-4), (83, 1.25e-4), (166, 2.5e-4), (166, 1.25e-4),
+                                                   (332, 1.25e-4))]
+    last = {}
+    for ba, ei, n, dt in rows:
+        m, slack, wall = deck_maxima(n, dt, ba, ei, tmp, slack_damping=not taut_only)
+        prev = last.get((ba, ei, dt))
+        diff = np.array2string(np.round((m - prev) / prev * 100, 2)) if prev is not None else ""
+        last[(ba, ei, dt)] = m
+        print(f"{ba:8.3g} {ei:4.2g} {n:4d} {dt:9.3g} {np.array2string(np.round(m, 2)):>16s} "
+              f"{np.array2string(slack):>9s} {diff:>14s} {wall:8.1f}", flush=True)
+
+
 if __name__ == "__main__":
-    main(int(sys.argv[1]) if len(sys.argv) > 1 else 2)
+    if len(sys.argv) > 1 and sys.argv[1] == "deck":
+        deck_mesh(taut_only=sys.argv[2:] == ["taut"])
+    else:
+        main(int(sys.argv[1]) if len(sys.argv) > 1 else 2)
