@@ -49,6 +49,49 @@ amplification at omega dt = 7 is still 0.99 a step, does not help) but does
 not give the converged peak: at 1e-3 and 5e-4 s every radius is 1-18 % off (the 1.1 % of rho_inf 0.6 at
 1e-3 s is not systematic: 11 % at 5e-4 s). The mesh: 41 segments are 9-11 % low; 166 segments are within
 2.3 % of 83 per cycle and 0.6 % in the mean of the two cycles (the finer mesh's cycles differ by 3-4 %).
+332 segments (3.125e-5 s; 6.25e-5 s: 47.6 and 46.1 N) give [47.5 46.9] N: the example's maxima do not
+converge with the mesh. Its chain has no axial damper and no EI, and the maximum comes while nearly all of
+it is slack (78 of 83, 151 of 166 elements): a 1-2 ms jerk of a slack stretch coming taut.
+
+The MoorDyn snap deck (``deck``; 1.25 s ramp, maxima over 1.875-3.125 s and 3.125-4.375 s, around the
+snaps; "slack": slack elements at each maximum; "vs previous": against the mesh above at the same step):
+
+          BA   EI segs    dt [s]       maxima [N]     slack  vs previous % wall [s]
+        53.6  0.5   83    0.0005    [55.94 53.93]     [0 0]                     2.1
+        53.6  0.5   83  0.000125    [55.81 53.63]     [0 0]                     6.0
+        53.6  0.5  166   0.00025    [55.62 53.45]     [0 0]                     7.4
+        53.6  0.5  166  0.000125    [55.51 53.36]     [0 0]  [-0.52 -0.5 ]     12.1
+        53.6  0.5  332  0.000125    [55.45 53.24]     [0 0]  [-0.12 -0.21]     24.6
+        53.6  0.5  664  0.000125    [55.43 53.23]     [0 0]  [-0.03 -0.03]     52.8
+        53.6  0.5  664  6.25e-05    [55.42 53.21]     [0 0]                   114.2
+        -0.8  0.5   83  0.000125    [55.81 53.63]     [0 0]                     9.1
+        -0.8  0.5  166  0.000125    [65.94 63.44]     [0 0]  [18.16 18.31]     16.0
+        -0.8  0.5  332  0.000125    [74.66 72.72]     [0 0]  [13.21 14.62]     27.2
+        53.6    0   83  0.000125    [57.29 57.04]     [0 0]                     3.3
+        53.6    0  166  0.000125    [55.46 55.12]     [0 0]  [-3.19 -3.38]      8.9
+        53.6    0  332  0.000125    [71.73 81.16] [286 295]  [29.33 47.26]     15.5
+        53.6    0  664  6.25e-05    [52.63 50.33]     [0 0]                    64.6
+        -0.8    0   83  0.000125    [57.29 57.04]     [0 0]                     4.5
+        -0.8    0  166  0.000125    [65.41 64.96]     [0 0]  [14.18 13.88]      7.5
+        -0.8    0  332  0.000125    [73.12 73.82]     [0 0]  [11.78 13.65]     14.7
+        -0.8    0  664  6.25e-05    [76.45 76.76]     [0 0]                    62.9
+
+    and with the damper in taut elements only (``deck taut``; BA 53.6 N s, EI 0.5 N m^2):
+
+        53.6  0.5   83   0.00025  [168.62 169.14]   [81 80]                     6.1
+        53.6  0.5   83  0.000125  [134.98 135.21]   [81 82]                     9.8
+        53.6  0.5  166   0.00025  [271.13 225.38] [165 162]  [60.79 33.25]     12.5
+        53.6  0.5  166  0.000125  [156.66 130.46] [163 141]  [16.06 -3.51]     21.3
+        53.6  0.5  332  0.000125  [152.17 229.08] [297 270]  [-2.87 75.6 ]     93.4
+
+The maxima converge with the mesh only for the same physical line on every mesh, a damper coefficient
+(BA in N s: the deck's -0.8 of a segment's critical damping is 0.8 l sqrt(EA m), halved with l), with a
+bending stiffness (without it a slack stretch folds on the segment's scale: at 332 segments a jerk of the
+slack line, 0.25 s before the snap, is the maximum, and 664 segments are 4-9 % below 332) and MoorDyn's
+damper in slack segments too (in taut ones only, slack elements come taut as impacts, spikes of 130-270 N
+with nearly every element slack, converged in neither step nor mesh). Then 55.81, 55.51, 55.45, 55.43 N
+(53.63, 53.36, 53.24, 53.23 N), a Richardson limit of 55.42 (53.22) N: 83 segments within 0.8 %, 166
+within 0.3 % (tests/validation/test_moordyn_snap_deck.py).
 """
 
 from __future__ import annotations
