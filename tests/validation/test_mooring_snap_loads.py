@@ -12,7 +12,13 @@ highest axial frequency 2 c / h = 3500 rad/s), so its peak needs a step that res
 omega dt <~ 1. The full study (steps 2e-3 to 6.25e-5 s, 41, 83 and 166 segments, several spectral radii)
 is ``bench/bench_snap_convergence.py``; measured there with 6.25e-5 s: cycle maxima 86.95 and 87.22 N
 (rho_inf 1), 86.9 and 87.3 N (0.8); with 166 segments 88.7 and 85.4 N (2.3 % per cycle, 0.6 % in the
-mean of the two: the mesh study is too slow for a test), with 41 segments 80.2 and 79.5 N (9 % low).
+mean of the two), with 41 segments 80.2 and 79.5 N (9 % low), with 332 segments (dt 3.1e-5 and 6.25e-5 s)
+47.5 and 46.9 N, 47.6 and 46.1 N: these maxima do not converge with the mesh. The example's chain has no
+axial damper (damping_ratio 0, taut-only), no bending stiffness, and its maximum comes while most of the
+line is slack (78 of 83, 151 of 166 elements at the peak): a 1-2 ms jerk of a slack stretch coming taut,
+whose folds have no length scale but the segment's. The mesh convergence of snap maxima is tested where
+it holds, on the MoorDyn snap deck with a physical damper (a coefficient, the same on every mesh) and a
+bending stiffness (``test_moordyn_snap_deck.py::test_snap_maxima_converge_with_the_mesh_for_a_physical_damper``).
 """
 
 from __future__ import annotations
