@@ -31,23 +31,34 @@ applies ``cBot`` in full on every penetrating node (``Line::getStateDeriv``), an
 too (``Water.full_seabed_damping``, :mod:`tests.unit.test_moordyn_seabed_damping`). The margin is smaller
 than seacable's own step dependence on this case (dt 0.1 / 0.05 / 0.02 s: 45.6 / 45.4 / 45.9 kN at rho 1).
 What remains is a ringing at 2-2.4 Hz (near the line's first axial mode, 2 L / c = 0.4 s) while the
-fairlead falls through the tension trough (t = 4.5-6.5 s and 14.5-16.5 s): the chain lays down, each
-node lands on the seabed at 3-4 m/s and bounces at about 2 Hz; seacable's landing nodes rebound more
-than MoorDyn's (with the gradual damper: node 28 of 41 reaches the seabed level again at 6.05 s in seacable, stays 0.1 m in it in
-MoorDyn), and the ringing above 1.5 Hz is 33.1 kN RMS in seacable, 16.7 kN in MoorDyn and 5.1 kN in
-OrcaFlex. It is not the rest of the contact law: MoorDyn's linear, unrounded spring as well changes
-WD0050 A2 by +0.5 kN (46.08 kN at rho 1), the rounding band 0.01-2 times its width (with
-the gradual damper) by < 1 kN, and
-MoorDyn's friction law (``mu FricDamp |v|`` capped at ``mu |B_z|``, FricDamp 200 N s/m: negligible
-here) makes all but WD0050 A1 worse (WD0050 A2 51.1 kN, WD0600 A1 84.6 kN), since seacable's
-Coulomb friction damps the ringing (without friction: 54 kN). The two codes' series (the same static
-state to 1 mm) still differ by 57 kN RMS on the seabed and by 25 kN with the seabed out of reach
-(WtrDpth 1000 m, ringing 7.5 kN in seacable, 1.8 in MoorDyn), so the excess ringing is not the seabed's
-alone: not found further here. It is not the step, not the motion table's 3-decimal rounding
-(the exact sine: 46.8 kN before the damper rule), not a static offset, not the first rows after the
-10 s run-in. OrcaFlex's own fairlead record lags the ZZP1 motion by a constant 0.029 s; driving both
-codes 0.029 s late is not used: it helps seacable on WD0050 but worsens both codes on WD0200 and WD0600,
-so it is not the alignment of the tension series.
+fairlead falls through the tension trough (t = 4.5-6.5 s and 14.5-16.5 s), as the chain lays down (each
+node lands on the seabed at 3-4 m/s): above 1.5 Hz 33.1 kN RMS in seacable, 16.7 kN in MoorDyn, 5.1 kN
+in OrcaFlex. Its cause is the seabed friction law. The deck's FrictionCoefficient 0.5 is, in MoorDyn,
+``min(mu FricDamp |v_t|, mu |B_z|)`` with FricDamp 200 N s/m per node: for a node pressed in by 33 kN it
+saturates only above 165 m/s, so MoorDyn's laid chain slides axially without friction, while seacable's
+Coulomb friction (regularised below 1 cm/s) holds it. The axial wave the landings excite then reflects at
+the touchdown point instead of running into the laid chain: band 1.5-3.5 Hz, 0-20 s, seacable at dt 0.01
+s, the segment tension rings 1.8 kN RMS on the seabed (segment 5 of 41) against MoorDyn's 26.9, and 31.9
+at the fairlead (segment 40) against MoorDyn's 15.6; without friction seacable's ring 26.8 / 15.3 / 7.1
+/ 11.9 / 14.9 / 16.0 kN in segments 5 / 15 / 25 / 30 / 35 / 40 against MoorDyn's 26.9 / 15.4 / 7.0 /
+11.7 / 14.6 / 15.6, and its fairlead tension differs from MoorDyn's (driven by the exact sine every 0.01
+s) by 5.8 kN RMS (7.4 kN with the gradual damper; 42.7 kN with seacable's friction). Following MoorDyn's
+friction law is not done here: the frictionless ringing needs a finer step than the test's 0.1 s
+(WD0050 A2, MoorDyn's friction law and cBot in full: 49.9 / 36.8 kN at dt 0.1 / 0.02 s, rho 1; friction
+off: 50.1 / 38.8 / 36.8 / 36.5 kN at dt 0.1 / 0.05 / 0.02 / 0.01 s), and it moves the deeper cases away
+from OrcaFlex (WD0600 A1 84.6 kN, WD0200 A1 21.2 kN at dt 0.1, still below MoorDyn's 92.2 and 26.7), so
+OrcaFlex's chain seems to feel friction. MoorDyn's own error on WD0050 A2 falls to 36.3 kN when it is
+driven by the exact sine every 0.01 s instead of the 0.1 s table (piecewise linear, velocity jumps).
+It is not the contact spring: MoorDyn's linear, unrounded spring changes WD0050 A2 by +0.5 kN (46.08 kN
+at rho 1), the rounding band 0.01-2 times its width (with the gradual damper) by < 1 kN; nor the drag
+and added mass taken with each half element's tangent (MoorDyn takes the node's, the chord of its two
+neighbours: 45.57 kN). With the seabed out of reach (WtrDpth 1000 m) the two codes differ by 24 kN RMS
+at any step of seacable's, but by 4.1 kN (dt 0.01 s) when MoorDyn is driven by the exact sine every
+0.01 s: the rest is MoorDyn's response to the table's piecewise-linear drive. Not a static offset
+(both static states agree to 1 mm), not the first rows after the 10 s run-in. OrcaFlex's own fairlead
+record lags the ZZP1 motion by a constant 0.029 s; driving both codes 0.029 s late is not used: it helps
+seacable on WD0050 but worsens both codes on WD0200 and WD0600, so it is not the alignment of the tension
+series.
 
 What the bound sees: halving seacable's normal drag coefficient fails all 12 (WD0050 A1 26.1 kN against
 MoorDyn's 13.0, WD0600 A1 100.0 against 92.2). Dropping the lines' added mass (Ca 1 -> 0) is not an error
