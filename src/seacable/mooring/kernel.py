@@ -37,8 +37,9 @@ argument ``sea`` of :mod:`seacable.seastate`; above z = 0 the z = 0 kinematics o
 (the tangential drag on the wetted perimeter ``pi d``, as MoorDyn). Attachments add mass, isotropic
 added mass, drag ``1/2 rho C_D A |u| u`` and the Froude-Krylov force of their volume. The seabed
 is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
-over a small band of penetration so that the contact stiffness is continuous, with ``d_n`` the sum of ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m,
-Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
+over a small band of penetration so that the contact stiffness is continuous (the damper engaging
+gradually, or for MoorDyn decks in full beyond the band, ``E_BEDFULL``), with ``d_n`` the sum of
+``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m, Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
 
 Time integration: the generalised-alpha method (Chung and Hulbert 1993) with Newton iterations at
 each step on the equilibrium of the free nodes at the intermediate times,
@@ -78,7 +79,8 @@ E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 
 E_BEDRAMP = 16
 E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
 E_SLACKDAMP = 18  # 1: the axial damper acts in slack elements too (MoorDyn's rule), 0: only in taut ones
-ENV_SIZE = 19
+E_BEDFULL = 19  # 1: the seabed damper acts in full wherever the spring is linear (MoorDyn's rule), 0: ramped
+ENV_SIZE = 20
 
 # Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
 # dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the
@@ -731,6 +733,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     nrm[0], nrm[1], nrm[2] = -math.sin(sl), 0.0, math.cos(sl)
     depth = env[E_DEPTH]
     kb, cb, mu, vf = env[E_KBOT], env[E_CBOT], env[E_MU], env[E_VFRIC]
+    bedfull = env[E_BEDFULL] > 0.0
     alpha = env[E_ALPHA]
     for i in range(n):
         F[i, 2] -= weight[i]
@@ -767,7 +770,9 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             dl = env[E_BEDRAMP]
             if pen > -dl:
                 # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,
-                # so that Newton does not cycle at lift-off); the damper engages as r = q / (q + dl)
+                # so that Newton does not cycle at lift-off); the damper engages as r = q / (q + dl), or with
+                # ``bedfull`` (MoorDyn's rule: c_b in full on every penetrating node) as the spring's slope
+                # r = dq: c_b in full once pen >= dl, where the spring is k pen, rounded with it below
                 if pen < dl:
                     q = (pen + dl) ** 2 / (4.0 * dl)
                     dq = (pen + dl) / (2.0 * dl)
@@ -775,8 +780,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     q = pen
                     dq = 1.0
                 vn = nrm[0] * V[i, 0] + nrm[1] * V[i, 1] + nrm[2] * V[i, 2]
-                ramp = q / (q + dl)
-                dramp = dl / (q + dl) ** 2 * dq
+                if bedfull:
+                    ramp = dq
+                    dramp = 0.5 / dl if pen < dl else 0.0
+                else:
+                    ramp = q / (q + dl)
+                    dramp = dl / (q + dl) ** 2 * dq
                 fn = kb * bedc[i] * q - cb * bedc[i] * ramp * vn
                 for r in range(3):
                     F[i, r] += fn * nrm[r]

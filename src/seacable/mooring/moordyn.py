@@ -7,7 +7,8 @@ water ``(m - rho pi d^2 / 4) g``, axial damping ``BA`` (a negative BA is a dampi
 rule, see :func:`seacable.io.moordyn.moordyn_axial_damping`; as in MoorDyn it acts in slack segments
 too, ``Water.slack_damping``), normal and axial drag and added mass.
 The seabed is MoorDyn's: flat at ``WtrDpth`` (without it, at the deepest point, as MoorDyn-C sets it),
-``kBot`` and ``cBot`` per projected area, friction coefficient ``FrictionCoefficient`` (regularised;
+``kBot`` and ``cBot`` per projected area (``cBot`` in full on a node pressed in, MoorDyn's rule,
+``Water.full_seabed_damping``), friction coefficient ``FrictionCoefficient`` (regularised;
 MoorDyn's own friction law differs in detail). Options seacable cannot honour (waves, currents,
 bathymetry files, ...) are warned by :func:`prepare_moordyn`, each with what seacable does instead.
 A line type's bending stiffness ``EI`` acts at the inner nodes of its lines (MoorDyn v2's nodal
@@ -146,7 +147,8 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
                                                                if p.attachment == "vessel"))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
-                  friction=md.friction, slack_damping=True)  # MoorDyn's damper acts in slack segments too
+                  friction=md.friction, slack_damping=True,  # MoorDyn's damper acts in slack segments too
+                  full_seabed_damping=True)  # and cBot in full on a penetrating node
     return MooringModel(net, water)
 
 

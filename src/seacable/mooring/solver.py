@@ -58,7 +58,11 @@ class Water:
     ("none": the z = 0 values, "wheeler": Wheeler stretching). ``rayleigh_mass`` is the
     mass-proportional Rayleigh coefficient [1/s]. ``slack_damping``: the elements' axial damper
     ``c dl/dt / L`` also acts when they are slack (MoorDyn's rule, set for MoorDyn decks; False: only
-    in taut elements, with the tension-only spring).
+    in taut elements, with the tension-only spring). ``full_seabed_damping``: the seabed damper acts with
+    the whole ``seabed_damping`` on a node pressed into the seabed beyond the contact spring's rounding
+    band (where the spring is linear), rounded with the spring's slope inside it (MoorDyn's rule, set for
+    MoorDyn decks: ``(kBot pen - cBot v_n) d l``); False: it engages gradually, as ``q / (q + b)`` of the
+    rounded penetration ``q`` and the band ``b`` (two thirds of it at a node's static penetration ``2 b``).
     """
 
     density: float = 1025.0
@@ -80,6 +84,7 @@ class Water:
     sea: object = field(default=None, compare=False)  # an irregular sea (seastate.SeaComponents) or None
     stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
     slack_damping: bool = False   # the axial damper acts in slack elements too (MoorDyn's rule)
+    full_seabed_damping: bool = False  # the seabed damper in full on a node pressed in (MoorDyn's rule)
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         env = np.zeros(K.ENV_SIZE)
@@ -93,6 +98,7 @@ class Water:
         env[K.E_BEDRAMP] = bed_ramp
         env[K.E_VDT] = math.inf  # viscoelastic elements at their static stiffness unless a time step says
         env[K.E_SLACKDAMP] = float(bool(self.slack_damping))
+        env[K.E_BEDFULL] = float(bool(self.full_seabed_damping))
         return env
 
     def seabed_z(self, x) -> np.ndarray:
