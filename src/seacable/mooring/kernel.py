@@ -1009,15 +1009,27 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     state (and ``G``) at its start. ``stats`` receives (iterations, last residual, absolute force
     tolerance [N]).
     """
+    nd = 3 * nfree
+    work = (np.zeros((nd, 2 * bw + 1)), np.zeros(nd), np.zeros(nd), np.empty_like(X), np.empty_like(V),
+            np.empty_like(A), env.copy())
+    return newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+                        weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
+                        visco, fidx, nfree, bw, env, cur_depth, cur_speed, with_waves, sea, beta, gamma, alpha_m,
+                        alpha_f, G, tol, max_iter, F, M, tension, stats, *work)
+
+
+@njit(cache=True)
+def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
+                  cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx,
+                  nfree, bw,
+                  env, cur_depth,
+                  cur_speed, with_waves, sea, beta, gamma, alpha_m, alpha_f, G, tol, max_iter, F, M, tension, stats, band, R, D, Xn, Vn, An, envw):
+    """:func:`newmark_steps` with its work arrays given, so that a caller stepping output interval after output
+    interval allocates them once: ``band`` (3 nfree, 2 bw + 1), ``R`` and ``D`` (3 nfree,), ``Xn``, ``Vn``, ``An``
+    (n, 3) and ``envw`` (a copy of ``env``, its ``E_VDT`` set here)."""
     n = X.shape[0]
     nd = 3 * nfree
-    band = np.zeros((nd, 2 * bw + 1))
     none = np.zeros((0, 2 * bw + 1))  # no Newton matrix
-    R = np.zeros(nd)
-    D = np.zeros(nd)
-    Xn = np.empty_like(X)
-    Vn = np.empty_like(V)
-    An = np.empty_like(A)
     c0 = 1.0 / (beta * dt * dt)
     c1 = gamma / (beta * dt)
     # generalised alpha: the equilibrium divided by 1 - alpha_f, so that the Newton matrix is
@@ -1026,8 +1038,9 @@ def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp,
     wm = (1.0 - alpha_m) / (1.0 - alpha_f)
     wg = 1.0 / (1.0 - alpha_f)
     cm = wm * c0
-    env = env.copy()
-    env[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
+    envw[:] = env
+    envw[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
+    env = envw
     for step in range(px.shape[0]):
         Xn[:] = X
         Vn[:] = V

@@ -64,14 +64,17 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, 
     make the output's environment differ from the step's (their slow stretch held at the last step's).
     """
     same = visco.shape[0] == 0
+    nd = 3 * nfree
+    work = (np.zeros((nd, 2 * bw + 1)), np.zeros(nd), np.zeros(nd), np.empty_like(X), np.empty_like(V),
+            np.empty_like(A), env.copy())
     for k in range(k0, k1):
         j0 = (k - k0) * sub
         stats[0] = 0.0
-        got = K.newmark_steps(X, V, A, k * interval, h, px[j0:j0 + sub], pv[j0:j0 + sub], pa[j0:j0 + sub], channel,
+        got = K.newmark_work(X, V, A, k * interval, h, px[j0:j0 + sub], pv[j0:j0 + sub], pa[j0:j0 + sub], channel,
                               elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
                               bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, nfree, bw,
                               env, cur_depth, cur_speed, True, sea, beta, gamma, alpha_m, alpha_f, G, tol, max_iter,
-                              F, M, tension, stats)
+                              F, M, tension, stats, *work)
         count[1] += got
         count[2] += np.int64(stats[0])
         if got < sub:

@@ -177,12 +177,12 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
 
 
 def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None,
-             kinematic_nodes=None):
+             kinematic_nodes=None, extra=None):
     """Variables per line, a ``line`` dimension (NaN padded) when there are several lines; the points' forces.
 
     ``velocity`` and ``acceleration`` (time-domain runs) let each line's end tensions include its half end
     element's water loads and inertia (:func:`seacable.mooring.run.network_variables`); ``kinematic_nodes``
-    the nodes they hold (None: all)."""
+    the nodes they hold (None: all); ``extra`` more variables (the run's events)."""
     net = model.network
     per_line = []
     for li in range(len(net.line_nodes)):
@@ -227,6 +227,7 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, veloci
         coords = {"line": var("line", list(net.line_names), "1", "line"),
                   "node": var("node", np.arange(n_max), "1", "node index, 0 at end A")}
     data.update(point_variables(model, S, dims=("node",) if time is None else ("time", "node")))
+    data.update(extra or {})
     if time is not None:
         coords["time"] = var("time", time, "s", "time")
     analysis = "mooring_static" if time is None else "mooring_dynamic"
@@ -335,8 +336,7 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
     ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
                   settings={**settings, "time_step": run.time_step, "steps": run.steps,
                             "spectral_radius": run.spectral_radius}, velocity=run.velocity,
-                  acceleration=run.acceleration, kinematic_nodes=run.kinematic_nodes)
-    ds.update(run_events(run))
+                  acceleration=run.acceleration, kinematic_nodes=run.kinematic_nodes, extra=run_events(run))
     ds.attrs["interrupted"] = int(run.interrupted)
     ds.attrs["time_step"] = run.time_step  # the step used (before any halving) [s]
     ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
