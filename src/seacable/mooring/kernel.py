@@ -849,6 +849,21 @@ def _band_solve5(band, rhs):
 
 
 @njit(cache=True)
+def lu_solve(band, bw, rhs):
+    """Solve in place with the factors :func:`band_solve` left in ``band`` (its multipliers below the
+    diagonal, U on and above it)."""
+    n = rhs.size
+    for k in range(n):
+        for i in range(k + 1, min(n, k + bw + 1)):
+            rhs[i] -= band[i, bw + k - i] * rhs[k]
+    for k in range(n - 1, -1, -1):
+        s = rhs[k]
+        for j in range(k + 1, min(n, k + bw + 1)):
+            s -= band[k, bw + j - k] * rhs[j]
+        rhs[k] = s / band[k, bw]
+
+
+@njit(cache=True)
 def band_solve(band, bw, rhs):
     """Solve the banded system in place (LU without pivoting); returns False on a zero pivot."""
     if bw == 5:
@@ -1052,7 +1067,8 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
         res_prev = np.inf
         cuts = 0
         scale = 1.0
-        jac = True  # assemble the Newton matrix with the loads (not when this evaluation should converge)
+        jac = True  # assemble the Newton matrix with the loads
+        lu_step = False  # ``band`` holds the factors of a Newton matrix of this step
         for it in range(max_iter):
             for i in range(n):
                 if fidx[i] >= 0:
@@ -1062,6 +1078,7 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
             mat = band if jac else none
             if jac:
                 band[:] = 0.0
+                lu_step = False
             loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
                   with_waves, sea, F, M, tension,
@@ -1088,22 +1105,26 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
                 continue
             if not math.isfinite(res):
                 break
-            if not jac:
-                # the evaluation expected to converge did not: the same state again, with the Newton matrix
+            # the correction: with this step's factors again while the last correction cut the residual at least
+            # tenfold (a modified Newton iteration, its rate that of the tangent's change), else a fresh matrix
+            modified = lu_step and res <= 0.1 * res_prev
+            if not jac and not modified:
                 band[:] = 0.0
                 loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                       pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth,
                       cur_speed, with_waves, sea, F, M, tension, band, bw, cm, c1)
                 stats[0] += 1
-            # the next residual from this iteration's rate of decrease (Newton's is faster than that): below
-            # half the tolerance, the next evaluation is expected to be the last and skips the matrix
-            jac = not (it > 0 and res * (res / res_prev) <= 0.5 * scale)
             res_prev = res
             cuts = 0
             for k in range(nd):
                 R[k] = -R[k]
-            if not band_solve(band, bw, R):
+            if modified:
+                lu_solve(band, bw, R)
+            elif band_solve(band, bw, R):
+                lu_step = True
+            else:
                 break
+            jac = not lu_step
             for i in range(n):
                 f = fidx[i]
                 if f >= 0:

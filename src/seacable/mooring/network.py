@@ -237,8 +237,7 @@ def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_load
                               seabed=on_seabed, seabed_slope=slope if on_seabed else 0.0)
     except SeacableError:
         return fallback
-    # four samples per node at least (the shape between them linear: far below the statics' first correction)
-    prof = eq.profile(points_per_segment=min(400, max(50, 4 * s.size)))
+    prof = eq.profile(points_per_segment=400)
     keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
     x = np.interp(s, prof.s[keep], prof.x[keep])
     z = np.interp(s, prof.s[keep], prof.z[keep])
