@@ -1,7 +1,7 @@
 """Memory and wall time of a long mooring run: three 40-element lines, 3 hours, output every 0.1 s (issue 19).
 
 The case: a three-line spread of MoorDyn's WD0200 chain (760 m of 390 kg/m studless chain in 200 m of water,
-anchors 700 m from a fairlead point at 120 degrees), each line cut into 40 segments, the three fairleads
+anchors 700 m from their fairleads at 120 degrees), each line cut into 40 segments, the three fairleads
 moved together in heave (2 m at 10 s), 3 h at dt = 0.1 s with the state stored every 0.1 s (108 001
 outputs), read and run through the user path (``run_moordyn_case``: file, model, statics, time loop,
 Dataset).
@@ -29,38 +29,12 @@ from seacable.io.moordyn import load_moordyn_case
 from seacable.mooring.moordyn import run_moordyn_case
 from seacable.mooring.motion import HarmonicMotion
 
-DECK = """--------------------- MoorDyn Input File ------------------------------------
-three-line spread of MoorDyn's WD0200 chain, 40 segments a line (seacable bench_memory)
------------------------ LINE TYPES ------------------------------------------
-TypeName   Diam    Mass/m     EA         BA/-zeta    EI         Cd     Ca     CdAx    CaAx
-(name)     (m)     (kg/m)     (N)        (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
-chain      0.252   390        1.674e9    -1.0        0          1.37   1.0    0.64    0.0
----------------------- POINT PROPERTIES --------------------------------
-ID    Type      X       Y       Z       Mass   Volume  CdA    Ca
-(#)   (-)       (m)     (m)     (m)     (kg)   (m^3)   (m^2)  (-)
-1     Fixed     700.0     0.0      -200.0  0      0       0      0
-2     Fixed    -350.0   606.218    -200.0  0      0       0      0
-3     Fixed    -350.0  -606.218    -200.0  0      0       0      0
-4     Vessel     0.0      0.0        0.0   0      0       0      0
-5     Vessel     0.0      0.0        0.0   0      0       0      0
-6     Vessel     0.0      0.0        0.0   0      0       0      0
----------------------- LINES ----------------------------------------
-ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
-(#)   (name)     (#)      (#)       (m)       (-)     (-)
-1     chain      1        4         760       40      -
-2     chain      2        5         760       40      -
-3     chain      3        6         760       40      -
----------------------- OPTIONS -----------------------------------------
-1.0e5                kBot                 bottom stiffness (Pa/m)
-1.0e4                cBot                 bottom damping (Pa-s/m)
-1025.0               WtrDnsty             water density (kg/m^3)
-200                  WtrDpth              water depth (m)
-------------------------- need this line --------------------------------------
-"""
+# three 40-segment chains to a platform, the deck of tests/unit/test_mooring_time_loop.py
+DECK = (Path(__file__).parents[1] / "tests" / "validation" / "data" / "three_chains_deck.txt").read_text()
 
 
 def main(hours: float = 3.0) -> dict:
-    path = Path(tempfile.mkdtemp(prefix="bench_memory_")) / "spread.txt"
+    path = Path(tempfile.mkdtemp(prefix="bench_memory_")) / "three_chains.txt"
     path.write_text(DECK)
     duration = 3600.0 * hours
     case = load_moordyn_case(path).with_run(duration=duration, time_step=0.1, output_interval=0.1,

@@ -50,7 +50,7 @@ def test_cable_buoy_lag_is_transverse_wave_travel(cable_buoy):
     amp = case.analysis.motion.amplitude[2]
     arrival = []
     for frac in (0.75, 0.5, 0.25):
-        i = int(round(frac * n))
+        i = round(frac * n)
         moved = np.abs(z[:, i] - z[0, i]) > 0.02 * amp
         arrival.append(float(ds.time.values[np.argmax(moved)]))
     span = case.analysis.fairlead[0] - case.anchor_position()[0]
