@@ -184,8 +184,13 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, veloci
     element's water loads and inertia (:func:`seacable.mooring.run.network_variables`); ``kinematic_nodes``
     the nodes they hold (None: all); ``extra`` more variables (the run's events)."""
     net = model.network
-    per_line = []
-    for li in range(len(net.line_nodes)):
+    n_lines = len(net.line_nodes)
+    # several lines: each variable in one (line, ...) array, NaN-padded to the longest line, filled line by line
+    # (a line's own variables dropped once copied: the peak memory of a long run is the run plus one line)
+    width = {"node": max(len(nodes) for nodes in net.line_nodes),
+             "element": int(np.max(np.bincount(net.element_line, minlength=n_lines)))}
+    filled = {}
+    for li in range(n_lines):
         view = _line_view(model, li)
         nodes = net.line_nodes[li]
         els = np.flatnonzero(net.element_line == li)
@@ -200,32 +205,23 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, veloci
             mine = np.flatnonzero(local[kinematic_nodes] >= 0)
             moving = {"velocity": velocity[..., mine, :], "acceleration": acceleration[..., mine, :], "time": time,
                       "kinematic_nodes": local[kinematic_nodes[mine]]}
-        per_line.append((view, network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
-                                                  **moving)))
-    if len(per_line) == 1:
-        view, data = per_line[0]
-        coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
-                  "s": var("node", _arc(view.network), "m", "unstretched arc length from end A")}
-    else:
-        n_max = max(v.network.n_nodes for v, _ in per_line)
-        e_max = max(v.network.n_elements for v, _ in per_line)
-        data = {}
-        for name in per_line[0][1]:
-            rows = []
-            for v, d in per_line:
-                a = np.asarray(d[name].values, float)
-                dims = d[name].dims
-                width = {"node": n_max, "element": e_max}
-                for ax, dim in enumerate(dims):
-                    if dim in width and a.shape[ax] < width[dim]:
-                        padw = [(0, 0)] * a.ndim
-                        padw[ax] = (0, width[dim] - a.shape[ax])
-                        a = np.pad(a, padw, constant_values=np.nan)
-                rows.append(a)
-            d0 = per_line[0][1][name]
-            data[name] = var(("line",) + d0.dims, np.array(rows), d0.attrs["units"], d0.attrs["long_name"])
+        line = network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims, **moving)
+        if n_lines == 1:
+            data = line
+            coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
+                      "s": var("node", _arc(view.network), "m", "unstretched arc length from end A")}
+            break
+        for name, v in line.items():
+            a = np.asarray(v.values, float)
+            if name not in filled:
+                filled[name] = (np.full((n_lines,) + tuple(width.get(d, k) for d, k in zip(v.dims, a.shape)), np.nan),
+                                ("line",) + v.dims, v.attrs["units"], v.attrs["long_name"])
+            filled[name][0][(li,) + tuple(slice(0, k) for k in a.shape)] = a
+        del line
+    if n_lines > 1:
+        data = {name: var(dims, values, units, long_name) for name, (values, dims, units, long_name) in filled.items()}
         coords = {"line": var("line", list(net.line_names), "1", "line"),
-                  "node": var("node", np.arange(n_max), "1", "node index, 0 at end A")}
+                  "node": var("node", np.arange(width["node"]), "1", "node index, 0 at end A")}
     data.update(point_variables(model, S, dims=("node",) if time is None else ("time", "node")))
     data.update(extra or {})
     if time is not None:
