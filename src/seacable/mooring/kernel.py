@@ -54,6 +54,8 @@ coupling terms to the right-hand side (the partitioned equations of paper 004 se
 Jacobian ``(1 - alpha_m) M / (beta dt^2) + (1 - alpha_f) (C gamma / (beta dt) + K)`` (divided by
 ``1 - alpha_f``) is assembled in band storage (nodes ordered
 for a small bandwidth) and factored without pivoting: it is diagonally dominated by the mass term.
+A step's first correction is a full Newton one; the next reuse its factors (modified Newton) while each
+cuts the residual at least tenfold, a fresh matrix otherwise; every step ends on the same force tolerance.
 Statics drops the inertia and solves ``(K + lam M) dx = -R`` with ``lam`` following the residual
 (pseudo-transient continuation, switched evolution relaxation), so that it starts from
 a straight line.
