@@ -461,13 +461,21 @@ def _cell(v, v0, h, n):
 
 
 @njit(cache=True)
-def grid_eta(sea, x, y, t):
-    """Surface elevation of the packed grid at (x, y, t) (multilinear; clamped at the grid's edges). [m]"""
+def _plan_cells(sea, x, y, t):
+    """The grid's sizes (nt, nx, ny) and the cells and fractions of time ``t`` and of the point (x, y) in the
+    grid's axes along and across the sea's heading: ``(nt, nx, ny, it, ft, ix, fx, iy, fy)``."""
     cb, sb = sea[S_COS], sea[S_SIN]
     nt, nx, ny = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY])
     it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
     ix, fx = _cell(x * cb + y * sb, sea[S_X0], sea[S_DX], nx)
     iy, fy = _cell(-x * sb + y * cb, sea[S_Y0], sea[S_DY], ny)
+    return nt, nx, ny, it, ft, ix, fx, iy, fy
+
+
+@njit(cache=True)
+def grid_eta(sea, x, y, t):
+    """Surface elevation of the packed grid at (x, y, t) (multilinear; clamped at the grid's edges). [m]"""
+    _, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
     o = GRID_HEADER
     s = 0.0
     for a in range(2):
@@ -496,11 +504,8 @@ def grid_point(sea, x, y, zs, t):
     """
     if zs < sea[S_ZMIN]:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    cb, sb = sea[S_COS], sea[S_SIN]
-    nt, nx, ny, nz = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NZ])
-    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
-    ix, fx = _cell(x * cb + y * sb, sea[S_X0], sea[S_DX], nx)
-    iy, fy = _cell(-x * sb + y * cb, sea[S_Y0], sea[S_DY], ny)
+    nt, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
+    nz = int(sea[S_NZ])
     # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h
     zlev = math.log1p(max(-zs, 0.0) / sea[S_ZC]) / sea[S_ZH]
     iz, fz = _cell(zlev, 0.0, 1.0, nz)

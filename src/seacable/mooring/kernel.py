@@ -146,22 +146,18 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
         zs = min(x[2], 0.0)
     zs = max(min(zs, 0.0), -d)
     if env[E_WH] > 0.0:
-        wu, wv, ww, wax, way, waz = airy_linear(x[0], x[1], zs, t, env[E_WH], env[E_WT], env[E_WK], d,
-                                                env[E_WHEAD], env[E_WPHASE], env[E_G])
-        u[0] += wu
-        u[1] += wv
-        u[2] += ww
-        acc[0] += wax
-        acc[1] += way
-        acc[2] += waz
+        _add_kinematics(u, acc, airy_linear(x[0], x[1], zs, t, env[E_WH], env[E_WT], env[E_WK], d, env[E_WHEAD],
+                                            env[E_WPHASE], env[E_G]))
     if sea[S_MODE] > 0.0:
-        wu, wv, ww, wax, way, waz = grid_point(sea, x[0], x[1], zs, t)
-        u[0] += wu
-        u[1] += wv
-        u[2] += ww
-        acc[0] += wax
-        acc[1] += way
-        acc[2] += waz
+        _add_kinematics(u, acc, grid_point(sea, x[0], x[1], zs, t))
+
+
+@njit(cache=True)
+def _add_kinematics(u, acc, k):
+    """Add a wave's ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2] to the velocity ``u`` and acceleration ``acc``."""
+    for r in range(3):
+        u[r] += k[r]
+        acc[r] += k[3 + r]
 
 
 @njit(cache=True)
