@@ -92,7 +92,7 @@ def _cmd_run(args) -> int:
     from .io import load_case
     from .io.moordyn import is_moordyn_file
     from .results import write_netcdf
-    from .simulate import run
+    from .simulate import run, streams
     from .sweeps import is_sweep_file
 
     if is_sweep_file(args.case):
@@ -115,9 +115,10 @@ def _cmd_run(args) -> int:
     _check_run_paths(args, out)
     _GUARD.update(armed=True, holding=False, held=[])
     try:
-        ds = run(case, progress=_Progress())
+        streamed = streams(case)  # a long mooring run writes its outputs into the file as it goes
+        ds = run(case, progress=_Progress(), out=out if streamed else None)
         _computation_done()
-        path = write_netcdf(ds, out)
+        path = out if streamed else write_netcdf(ds, out)
         print(f"wrote {path}")
     finally:
         _GUARD.update(armed=False, holding=False)

@@ -16,7 +16,7 @@ from numba import njit
 
 from .results import var
 
-__all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads"]
+__all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads", "snap_rows"]
 
 #: The variable holding the tension at the top end (fairlead, ship, tow point, tug), by analysis.
 TOP_TENSION = {
@@ -77,13 +77,20 @@ def snap_loads(time, tension, threshold: float = 0.0, window: float = 2.0):
     """
     time = np.asarray(time)
     tension = np.asarray(tension)
+    _, j, e = snap_rows(time, tension, threshold, window)
+    return np.asarray(time[j], float), e, np.asarray(tension[j, e], float)
+
+
+def snap_rows(time, tension, threshold: float = 0.0, window: float = 2.0):
+    """The rows of the snap events of :func:`snap_loads`: for each event (in the order of the rows where the
+    elements pull taut, then of the elements) that row, the row of its peak and its element. [-]"""
     slack = tension <= threshold
     taut = tension > threshold   # NaN (no element) is neither
     rises = np.argwhere(slack[:-1] & taut[1:])
     k, e = rises[:, 0] + 1, rises[:, 1]
     stop = np.searchsorted(time, time[k] + window, side="right")
     j = _window_peaks(np.asarray(tension, float), k, stop, e)
-    return np.asarray(time[j], float), e.astype(int), np.asarray(tension[j, e], float)
+    return k, j, e.astype(int)
 
 
 @njit(cache=True)

@@ -16,7 +16,7 @@ from .errors import InputError
 from .io.moordyn import MoorDynCase
 from .system.case import SystemCase
 
-__all__ = ["check", "run"]
+__all__ = ["STREAMED", "check", "run", "streams"]
 
 #: analysis type -> (module, runner, pre-time-loop check or None when the run is itself cheap)
 _ANALYSES = {
@@ -45,6 +45,19 @@ TIME_DOMAIN = tuple(name for name, (_, _, prepare) in _ANALYSES.items()
 """The analyses with a time loop: they take a ``progress`` callback and can be interrupted."""
 
 
+STREAMED = ("mooring_dynamic",)
+"""The analyses that write their outputs into the result file as they are computed (:mod:`seacable.sink`),
+as MoorDyn decks of lines and points do."""
+
+
+def streams(case) -> bool:
+    """Whether :func:`run` writes ``case``'s outputs into its ``out`` file as they are computed: a case of
+    :data:`STREAMED`, or a MoorDyn deck of lines and points with a duration."""
+    if isinstance(case, MoorDynCase):
+        return not case.has_structures and case.duration is not None
+    return isinstance(case, Case) and case.analysis.type in STREAMED
+
+
 def _case(case) -> Case | SystemCase:
     if not isinstance(case, (Case, SystemCase)):
         raise InputError(f"run() takes a seacable.Case or a seacable.SystemCase, got {type(case).__name__}. "
@@ -52,7 +65,7 @@ def _case(case) -> Case | SystemCase:
     return case
 
 
-def run(case: Case, progress=None):
+def run(case: Case, progress=None, out=None):
     """Run a case and return its result.
 
     Parameters
@@ -62,6 +75,12 @@ def run(case: Case, progress=None):
     progress
         Optional ``progress(t, duration)`` callback of time-domain analyses, called as the
         simulation advances (the CLI prints a progress line with it). [s]
+    out
+        Optional NetCDF file (``.nc``) the result is written to (atomically: a temporary file renamed
+        into place). The analyses of :data:`STREAMED` write their outputs into it as they are
+        computed, so that a long run needs the memory of a block of outputs, not of the whole result,
+        and return the Dataset read lazily from the file; the others write their result once it is
+        complete (:func:`seacable.results.write_netcdf`).
 
     Returns
     -------
@@ -74,12 +93,19 @@ def run(case: Case, progress=None):
     elif isinstance(case, MoorDynCase):  # a MoorDyn network of lines and points
         from .mooring.moordyn import run_moordyn_case
 
-        return run_moordyn_case(case, progress=progress)
-    module, runner, _ = _ANALYSES[_case(case).analysis.type]
+        return run_moordyn_case(case, progress=progress, out=out)
+    kind = _case(case).analysis.type
+    module, runner, _ = _ANALYSES[kind]
     runner = getattr(import_module(module), runner)
-    if progress is not None and case.analysis.type in TIME_DOMAIN:
-        return runner(case, progress=progress)
-    return runner(case)
+    options = {"progress": progress} if progress is not None and kind in TIME_DOMAIN else {}
+    if out is not None and kind in STREAMED:
+        return runner(case, out=out, **options)
+    ds = runner(case, **options)
+    if out is not None:
+        from .results import write_netcdf
+
+        write_netcdf(ds, out)
+    return ds
 
 
 def check(case: Case) -> None:

@@ -175,7 +175,7 @@ def test_huge_grid_is_refused_at_once(tmp_path, capsys):
 
 def test_output_paths_are_checked_before_the_run(tmp_path, monkeypatch, capsys):
     ran = []
-    monkeypatch.setattr("seacable.simulate.run", lambda case, progress=None: ran.append(case))
+    monkeypatch.setattr("seacable.simulate.run", lambda case, progress=None, out=None: ran.append(case))
     blocker = tmp_path / "a"
     blocker.write_text("")
     static = str(EXAMPLES / "oc3_hywind_static.yaml")
@@ -187,7 +187,7 @@ def test_output_paths_are_checked_before_the_run(tmp_path, monkeypatch, capsys):
 
 
 def test_a_bug_exits_3_with_a_short_message(monkeypatch, capsys):
-    def broken(case, progress=None):
+    def broken(case, progress=None, out=None):
         raise ZeroDivisionError("float division by zero")
 
     monkeypatch.setattr("seacable.simulate.run", broken)

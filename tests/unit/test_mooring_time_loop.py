@@ -212,33 +212,11 @@ def test_a_mooring_run_records_and_prints_its_time_step(capsys):
 THREE_LINES = (Path(__file__).parents[1] / "validation" / "data" / "three_chains_deck.txt").read_text()
 
 
-def test_three_hour_run_of_three_40_element_lines_stores_0_8_gigabytes(tmp_path, monkeypatch):
-    """Issue 19: 3 h of three 40-element lines, output every 0.1 s. Stored per output: positions and support
-    forces of the 123 nodes (2 x 369), 120 tensions, velocities and accelerations of the 12 end nodes and
-    their neighbours (2 x 36): 930 values, x 108 001 outputs x 8 bytes = 0.804 GB (before: positions,
-    velocities, accelerations and supports of every node, 1596 values, 1.38 GB). The run as a whole (its
-    Dataset built from these) peaks higher: bench/bench_memory.py measures the process."""
-    from seacable.io.moordyn import load_moordyn_case
-    from seacable.mooring.moordyn import prepare_moordyn
-    from seacable.mooring.run import stored_per_output
-
-    path = tmp_path / "three.txt"
-    path.write_text(THREE_LINES)
-    case = load_moordyn_case(path).with_run(duration=3 * 3600.0, time_step=0.1, output_interval=0.1,
-                                            motion=HarmonicMotion(amplitude=(2.0, 0.0, 0.0), period=10.0))
-    monkeypatch.setenv("SEACABLE_MAX_MEMORY", "1e9")
-    model = prepare_moordyn(case)  # refused above 1 GB
-    net = model.network
-    assert (net.n_nodes, net.n_elements) == (123, 120)
-    assert stored_per_output(net) == 930
-    assert 108_001 * 930 * 8 == pytest.approx(0.804e9, rel=1e-3)
-
-
 def test_end_forces_from_the_line_ends_kinematics_equal_those_from_every_node(tmp_path):
     """Storing the velocities and accelerations of the lines' end nodes and their neighbours only gives the
     same fairlead and anchor tensions as storing every node's (the others do not enter the end nodes'
     loads): to round-off, on three lines moved 2 m in surge at 10 s."""
-    from seacable.mooring.moordyn import _dataset, moordyn_model
+    from seacable.mooring.moordyn import _variables, moordyn_model
     from seacable.mooring.solver import line_end_nodes
 
     path = tmp_path / "three.txt"
@@ -253,15 +231,14 @@ def test_end_forces_from_the_line_ends_kinematics_equal_those_from_every_node(tm
     part = simulate(model, motion, 6.0, 0.1, 0.5, initial=st.position, kinematics=ends)
     assert part.velocity.shape == (13, 12, 3)
     assert np.array_equal(part.position, full.position)
-    kw = {"title": "t", "settings": {}}
-    a = _dataset(model, full.position, full.tension, full.support, full.time, velocity=full.velocity,
-                 acceleration=full.acceleration, **kw)
-    b = _dataset(model, part.position, part.tension, part.support, part.time, velocity=part.velocity,
-                 acceleration=part.acceleration, kinematic_nodes=part.kinematic_nodes, **kw)
+    a = _variables(model, full.position, full.tension, full.support, full.time, velocity=full.velocity,
+                   acceleration=full.acceleration)[0]
+    b = _variables(model, part.position, part.tension, part.support, part.time, velocity=part.velocity,
+                   acceleration=part.acceleration, kinematic_nodes=part.kinematic_nodes)[0]
     for name in ("fairlead_tension", "anchor_tension"):
         ref = a[name].values
         assert np.abs(b[name].values - ref).max() <= 1e-12 * np.abs(ref).max()
     # and the velocities matter: the end forces without them differ (drag and damping at the fairlead)
-    c = _dataset(model, part.position, part.tension, part.support, part.time, velocity=0 * part.velocity,
-                 acceleration=0 * part.acceleration, kinematic_nodes=part.kinematic_nodes, **kw)
+    c = _variables(model, part.position, part.tension, part.support, part.time, velocity=0 * part.velocity,
+                   acceleration=0 * part.acceleration, kinematic_nodes=part.kinematic_nodes)[0]
     assert np.abs(c["fairlead_tension"].values[:, 1:] - a["fairlead_tension"].values[:, 1:]).max() > 1.0

@@ -21,7 +21,7 @@ __all__ = ["evaluate_states", "record_output", "run_outputs"]
 def record_output(k, t, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, bw, env_rec,
                   cur_depth, cur_speed, sea, F, M, tension, times, pos, vel, acc, ten, sup, evaluated=False):
-    """Store the state as output ``k`` at time ``t``: positions, element tensions, the force each node applies
+    """Store the state at time ``t`` in row ``k`` of the stored arrays: positions, element tensions, the force each node applies
     to its support, ``F - M a`` (what :meth:`seacable.mooring.solver.MooringModel.evaluate` gives, with
     ``env_rec`` its environment), and the velocities and accelerations of the nodes ``knodes``.
 
@@ -46,12 +46,13 @@ def record_output(k, t, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn,
 
 
 @njit(cache=True)
-def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, elements, L0, EA, cdamp, mpl, dia, cdn,
-                cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges,
+def run_outputs(k0, k1, base, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, elements, L0, EA, cdamp, mpl,
+                dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges,
                 hinge_ei, visco, fidx, nfree, bw, env, env_rec, cur_depth, cur_speed, sea, beta, gamma, alpha_m, alpha_f,
                 G, tol, max_iter, F, M, tension, stats, count, times, pos, vel, acc, ten, sup):
     """Advance outputs ``k0`` to ``k1``: each interval ``sub`` Newmark steps of ``h`` from ``k interval``, its
-    end state stored as output ``k + 1``.
+    end state stored as output ``k + 1`` in row ``k + 1 - base`` of the stored arrays (``base``: the output in
+    their row 0, so that a long run can go out in blocks through arrays of a few outputs).
 
     ``px/pv/pa[(k - k0) sub + j]`` are the prescribed channels at ``k interval + (j + 1) h``. ``count``
     receives (outputs stored, steps taken, Newton iterations, steps of the failed interval that converged),
@@ -80,8 +81,8 @@ def run_outputs(k0, k1, interval, h, sub, px, pv, pa, X, V, A, knodes, channel, 
         if got < sub:
             count[3] = got
             return k
-        record_output(k + 1, (k + 1) * interval, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
-                      weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
+        record_output(k + 1 - base, (k + 1) * interval, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn, cdt,
+                      can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei,
                       visco, fidx, bw, env_rec, cur_depth, cur_speed, sea, F, M, tension, times, pos, vel, acc, ten,
                       sup, same)
         count[0] = k + 1

@@ -38,10 +38,20 @@ from ..io.moordyn import (
     moordyn_axial_damping,
     read_moordyn,
 )
-from ..results import make_dataset, var
+from ..results import make_dataset, var, write_netcdf
+from ..sink import open_sink
 from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
-from .run import REFERENCES, network_variables, point_variables, run_events, stored_per_output
+from .run import (
+    REFERENCES,
+    network_variables,
+    output_count,
+    point_variables,
+    run_attributes,
+    slack_variables,
+    snap_variables,
+    stored_per_output,
+)
 from .solver import MooringModel, MooringRun, Water, line_end_nodes, simulate, static_equilibrium
 
 __all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
@@ -176,13 +186,32 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
     return line
 
 
-def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, velocity=None, acceleration=None,
-             kinematic_nodes=None, extra=None):
+def _dataset(model: MooringModel, X, T, S, *, title, settings):
+    """The static result of a deck (:func:`_variables`)."""
+    data, coords = _variables(model, X, T, S)
+    ds = make_dataset(data, coords, **_provenance(model, title, settings, static=True))
+    ds.attrs.update(_depth(model))
+    return ds
+
+
+def _depth(model: MooringModel) -> dict:
+    return {} if model.water.depth is None else {"depth": float(model.water.depth)}
+
+
+def _provenance(model: MooringModel, title, settings, static=False) -> dict:
+    """The keywords of :func:`seacable.results.make_dataset` for a deck's result."""
+    return {"analysis": "mooring_static" if static else "mooring_dynamic", "references": REFERENCES, "title": title,
+            "settings": settings}
+
+
+def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, acceleration=None, kinematic_nodes=None,
+               extra=None):
     """Variables per line, a ``line`` dimension (NaN padded) when there are several lines; the points' forces.
+    Returns the variables and the coordinates.
 
     ``velocity`` and ``acceleration`` (time-domain runs) let each line's end tensions include its half end
     element's water loads and inertia (:func:`seacable.mooring.run.network_variables`); ``kinematic_nodes``
-    the nodes they hold (None: all); ``extra`` more variables (the run's events)."""
+    the nodes they hold (None: all); ``extra`` more variables."""
     net = model.network
     n_lines = len(net.line_nodes)
     # several lines: each variable in one (line, ...) array, NaN-padded to the longest line, filled line by line
@@ -226,10 +255,13 @@ def _dataset(model: MooringModel, X, T, S, time=None, *, title, settings, veloci
     data.update(extra or {})
     if time is not None:
         coords["time"] = var("time", time, "s", "time")
-    analysis = "mooring_static" if time is None else "mooring_dynamic"
-    ds = make_dataset(data, coords, analysis=analysis, references=REFERENCES, title=title, settings=settings)
-    if model.water.depth is not None:
-        ds.attrs["depth"] = float(model.water.depth)
+    return data, coords
+
+
+def _written(ds, out):
+    """``ds``, written to the NetCDF file ``out`` first when one is given."""
+    if out is not None:
+        write_netcdf(ds, out)
     return ds
 
 
@@ -308,12 +340,15 @@ def prepare_moordyn(case) -> MooringModel:
     return model
 
 
-def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
+def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
     """Run a :class:`~seacable.io.moordyn.MoorDynCase`: the static equilibrium and, with a duration, the response.
 
     ``case.motion`` (:mod:`seacable.mooring.motion`) moves every vessel point; None holds them still. Returns a
     Dataset with the names of the ``mooring_static`` / ``mooring_dynamic`` analyses (a ``line`` dimension with
-    several lines). ``progress(t, duration)`` is called as a dynamic run advances.
+    several lines). ``progress(t, duration)`` is called as a dynamic run advances. ``out``: a NetCDF file the
+    result is written to; a dynamic run writes its outputs into it as they are computed
+    (:class:`seacable.sink.NetcdfSink`: its memory is that of a block of outputs, whatever its length), and the
+    Dataset returned reads from the file.
     """
     if not isinstance(case, MoorDynCase):
         raise InputError(f"run_moordyn_case takes a MoorDynCase, got {type(case).__name__}. Suggested fix: "
@@ -324,19 +359,27 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None):
     title = md.title or str(md.path)
     settings = {"source": str(md.path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
     if case.duration is None:
-        return _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
+        return _written(_dataset(model, st.position, st.tension, st.support, title=title, settings=settings), out)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
-    run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval, initial=st.position,
-                               tol=tolerance * 10, progress=progress, spectral_radius=case.spectral_radius,
-                               forcing_period=forcing_period(case.motion), kinematics=line_end_nodes(model.network))
-    ds = _dataset(model, run.position, run.tension, run.support, run.time, title=title,
-                  settings={**settings, "time_step": run.time_step, "steps": run.steps,
-                            "spectral_radius": run.spectral_radius}, velocity=run.velocity,
-                  acceleration=run.acceleration, kinematic_nodes=run.kinematic_nodes, extra=run_events(run))
-    ds.attrs["interrupted"] = int(run.interrupted)
-    ds.attrs["time_step"] = run.time_step  # the step used (before any halving) [s]
-    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
-    return ds
+    sink = open_sink(output_count(case.duration, case.output_interval), out)
+
+    def outputs(block: MooringRun):
+        sink.append(*_variables(model, block.position, block.tension, block.support, block.time,
+                                velocity=block.velocity, acceleration=block.acceleration,
+                                kinematic_nodes=block.kinematic_nodes, extra=slack_variables(block)))
+
+    try:
+        run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval,
+                                   initial=st.position, tol=tolerance * 10, progress=progress,
+                                   spectral_radius=case.spectral_radius, forcing_period=forcing_period(case.motion),
+                                   kinematics=line_end_nodes(model.network), on_outputs=outputs)
+        events = snap_variables(sink, model.network)
+    except BaseException:
+        sink.abort()
+        raise
+    settings = {**settings, "time_step": run.time_step, "steps": run.steps, "spectral_radius": run.spectral_radius}
+    return sink.finish(events, attrs={**_depth(model), **run_attributes(run)},
+                       **_provenance(model, title, settings))
 
 
 def run_moordyn_file(path, *, duration: float | None = None, motion=None, time_step: float = 0.1,

@@ -10,8 +10,9 @@ import numpy as np
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..environment import IrregularWaves
-from ..extremes import snap_loads
+from ..extremes import snap_rows
 from ..results import make_dataset, var
+from ..sink import open_sink
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
@@ -28,13 +29,18 @@ __all__ = [
     "elevation_variables",
     "line_end_forces",
     "network_variables",
+    "output_count",
     "point_variables",
     "prepare_mooring_dynamic",
     "prepare_mooring_pushover",
     "prepare_mooring_static",
+    "run_attributes",
     "run_mooring_dynamic",
     "run_mooring_pushover",
     "run_mooring_static",
+    "run_variables",
+    "slack_variables",
+    "snap_variables",
     "stored_per_output",
     "water_of",
     "wave_elevation",
@@ -335,10 +341,19 @@ class MooringDynamicSetup:
 
 
 def stored_per_output(net: Network) -> int:
-    """Values a time-domain run stores per output (:func:`seacable.mooring.solver.simulate` with the
-    kinematics of :func:`~seacable.mooring.solver.line_end_nodes`): positions and support forces of every
-    node, element tensions, velocities and accelerations of the lines' end nodes and their neighbours. [1]"""
-    return 2 * 3 * net.n_nodes + net.n_elements + 2 * 3 * line_end_nodes(net).size
+    """Values the result of a time-domain run holds per output: per line (each padded to the longest, as in a
+    MoorDyn deck's result) the positions and tensions of its nodes, its element tensions, its end tensions,
+    fairlead force and grounded length; the forces on the points; the time, the count of slack elements and
+    the wave elevation. [1]
+
+    The run itself holds a block of outputs at a time (:func:`seacable.mooring.solver.simulate`,
+    ``on_outputs``), and a run written to a file as it goes (:class:`seacable.sink.NetcdfSink`) holds
+    no more than that: this is the size of a result in memory, or of the file before compression."""
+    lines = len(net.line_nodes)
+    nodes = max(len(n) for n in net.line_nodes)
+    elements = int(np.max(np.bincount(net.element_line, minlength=lines)))
+    points = int(np.count_nonzero((net.kind != FREE) | ~np.isfinite(net.arc_length)))
+    return lines * (4 * nodes + elements + 6) + 4 * points + 3
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
@@ -346,8 +361,8 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
 
     The geometric checks of the network (:func:`seacable.mooring.checks.check_network`) at the start
     and along the fairlead motion at the output times (:func:`seacable.mooring.checks.check_motion`),
-    and the size of the run (:func:`seacable._limits.check_run_size`: time steps, and the stored
-    positions, tensions, support forces, and the kinematics of the line ends: :func:`stored_per_output`).
+    and the size of the run (:func:`seacable._limits.check_run_size`: time steps, and the values of the
+    result, :func:`stored_per_output`).
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
@@ -397,13 +412,47 @@ def run_mooring_pushover(case: Case):
                         settings=_settings(model))
 
 
-def run_events(run: MooringRun) -> dict:
-    """Snap loads and the count of slack elements of a time-domain run, as result variables."""
-    ts, es, ps = snap_loads(run.time, run.tension)
-    return {"snap_time": var("snap", ts, "s", "time of the peak after an element pulled taut from slack"),
-            "snap_element": var("snap", es, "1", "element of the snap load (index in the network)"),
-            "snap_tension": var("snap", ps, "N", "snap load (peak tension after slack)"),
-            "slack_elements": var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")}
+def output_count(duration: float, output_interval: float) -> int:
+    """The outputs of a time-domain run, t = 0 included (:func:`seacable.mooring.solver.simulate`). [1]"""
+    return int(round(duration / output_interval)) + 1  # noqa: RUF046 (a numpy float rounds to a float)
+
+
+def slack_variables(run: MooringRun) -> dict:
+    """The count of slack elements at each output of a time-domain run (or a block of its outputs)."""
+    return {"slack_elements": var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")}
+
+
+def snap_variables(sink, network: Network) -> dict:
+    """Snap loads of a time-domain run (:func:`seacable.extremes.snap_loads`), from the element tensions
+    ``segment_tension`` stored in ``sink`` (:mod:`seacable.sink`), read line by line: (line, time, element),
+    or (time, element) for a single line. Events are in the order of the times the elements pulled taut, then
+    of the elements (network indices)."""
+    time = sink.read("time")
+    n_lines = len(network.line_nodes)
+    rise, peak_time, element, peak = [], [], [], []
+    for li in range(n_lines):
+        els = np.flatnonzero(network.element_line == li)
+        tension = sink.read("segment_tension", (li,) if n_lines > 1 else ())[:, :els.size]
+        k, j, e = snap_rows(time, tension)
+        rise.append(k)
+        peak_time.append(time[j])
+        element.append(els[e])
+        peak.append(tension[j, e])
+    rise, peak_time, element, peak = (np.concatenate(a) for a in (rise, peak_time, element, peak))
+    order = np.lexsort((element, rise))
+    return {"snap_time": var("snap", peak_time[order].astype(float), "s",
+                             "time of the peak after an element pulled taut from slack"),
+            "snap_element": var("snap", element[order].astype(int), "1",
+                                "element of the snap load (index in the network)"),
+            "snap_tension": var("snap", peak[order].astype(float), "N", "snap load (peak tension after slack)")}
+
+
+def run_attributes(run: MooringRun) -> dict:
+    """The attributes of a time-domain result: interrupted or not, the wall time, the time step used and the
+    recommended one."""
+    return {"interrupted": int(run.interrupted), "wall_time": run.wall_time,
+            "time_step": run.time_step,  # the Newmark step used (before any halving) [s]
+            "recommended_time_step": run.recommended_time_step}  # solver.recommended_time_step [s]
 
 
 def wave_elevation(water: Water, time, x: float = 0.0, y: float = 0.0) -> np.ndarray:
@@ -431,40 +480,45 @@ def elevation_variables(water: Water, time) -> dict:
                                   "water surface elevation at x = y = 0 (0 at the still-water level)")}
 
 
-def run_result(model: MooringModel, run: MooringRun, *, case=None, analysis="mooring_dynamic", settings=None):
-    """A Dataset of a time-domain run of a single-line network."""
-    net = model.network
+def run_variables(model: MooringModel, run: MooringRun):
+    """The variables and coordinates of (a block of outputs of) a time-domain run of a single-line network:
+    everything but the snap loads, which take the whole run (:func:`snap_variables`)."""
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
                              velocity=run.velocity, acceleration=run.acceleration, time=run.time,
                              kinematic_nodes=run.kinematic_nodes)
-    data.update(run_events(run))
+    data.update(slack_variables(run))
     data.update(elevation_variables(model.water, run.time))
-    coords = {**_coords(net), "time": var("time", run.time, "s", "time")}
-    ds = make_dataset(data, coords, analysis=analysis, case=case, references=REFERENCES,
-                      settings=_settings(model, time_step=run.time_step, steps=run.steps,
-                                         newton_iterations=run.iterations, spectral_radius=run.spectral_radius,
-                                         **(settings or {})))
-    ds.attrs["interrupted"] = int(run.interrupted)
-    ds.attrs["wall_time"] = run.wall_time
-    ds.attrs["time_step"] = run.time_step  # the Newmark step used (before any halving) [s]
-    ds.attrs["recommended_time_step"] = run.recommended_time_step  # solver.recommended_time_step [s]
-    return ds
+    return data, {**_coords(model.network), "time": var("time", run.time, "s", "time")}
 
 
-def run_mooring_dynamic(case: Case, progress=None):
-    """Time-domain response of the finite-element model (analysis ``mooring_dynamic``)."""
+def run_mooring_dynamic(case: Case, progress=None, out=None):
+    """Time-domain response of the finite-element model (analysis ``mooring_dynamic``).
+
+    ``out``: a NetCDF file the outputs are written into as they are computed (:class:`seacable.sink.NetcdfSink`);
+    the Dataset returned then reads from it. Without it the result is in memory, filled block by block."""
     a: MooringDynamicAnalysis = case.analysis
     setup = prepare_mooring_dynamic(case)
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
     waves = case.environment.waves
-    run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
-                   tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
-                   spectral_radius=a.spectral_radius,
-                   forcing_period=forcing_period(a.motion, getattr(waves, "period", None) or getattr(waves, "tp", None)),
-                   kinematics=line_end_nodes(model.network))
-    return run_result(model, run, case=case, settings={"damping_ratio": a.damping_ratio,
-                                                       "rayleigh": list(a.rayleigh)})
+    sink = open_sink(output_count(a.duration, a.output_interval), out)
+    try:
+        run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
+                       tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
+                       spectral_radius=a.spectral_radius,
+                       forcing_period=forcing_period(a.motion, getattr(waves, "period", None)
+                                                     or getattr(waves, "tp", None)),
+                       kinematics=line_end_nodes(model.network),
+                       on_outputs=lambda block: sink.append(*run_variables(model, block)))
+        events = snap_variables(sink, model.network)
+    except BaseException:
+        sink.abort()
+        raise
+    settings = _settings(model, time_step=run.time_step, steps=run.steps, newton_iterations=run.iterations,
+                         spectral_radius=run.spectral_radius, damping_ratio=a.damping_ratio,
+                         rayleigh=list(a.rayleigh))
+    return sink.finish(events, attrs=run_attributes(run), analysis="mooring_dynamic", case=case,
+                       references=REFERENCES, settings=settings)
 
 
 def _held(net: Network):

@@ -14,16 +14,19 @@ import sys
 import time as _time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from .. import _validate
+from .._atomic import deferred_interrupts
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..seastate import no_sea
 
 #: Largest irregular-sea grid held at once (values, 8 bytes each); a longer run takes it in time windows.
 SEA_WINDOW_VALUES = 2.5e7
+#: Values (16 MB) of a block of outputs of :func:`simulate` given ``on_outputs`` (see there).
+BLOCK_VALUES = 2**21
 from . import kernel as K
 from .checks import check_network
 from .network import FREE, PRESCRIBED, Network
@@ -563,7 +566,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
              *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30,
              beta: float | None = None, gamma: float | None = None, spectral_radius: float = 1.0, progress=None,
              max_halvings: int = 6, chunk_seconds: float = 0.25, forcing_period: float | None = None,
-             kinematics=None) -> MooringRun:
+             kinematics=None, on_outputs=None, block_outputs: int | None = None) -> MooringRun:
     """Generalised-alpha time stepping from rest at ``initial`` positions (default a static equilibrium).
 
     ``motion(times)`` returns positions, velocities and accelerations of the motion channels,
@@ -585,6 +588,13 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     result; with ``progress`` (an interactive run) they are also printed on stderr. ``kinematics`` (node
     indices) stores the velocities and accelerations of those nodes only (None: of every node), e.g.
     :func:`line_end_nodes` for the end forces of the lines: a long run's stored results shrink by half.
+
+    ``on_outputs(block)``: the outputs go out in blocks as the run goes, each a :class:`MooringRun` of at
+    most ``block_outputs`` consecutive outputs (from t = 0 on, each once, the last one when the run ends
+    or is interrupted), instead of being kept: a run's memory is then that of one block whatever its
+    length. By default a block is the largest power of two of outputs within :data:`BLOCK_VALUES` values. A block also goes out before an irregular sea's grid window moves on, so that the block's
+    states lie in the window of ``model.sea``. The run returned then holds no outputs (its arrays have
+    0 rows), only its counts and times.
     """
     from . import loop as LP
 
@@ -629,20 +639,44 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     K.alpha_history(Fi, Mi, A, hist, alpha_m, alpha_f, model.fidx)
 
     knodes = np.arange(n) if kinematics is None else np.asarray(kinematics, np.int64)
-    times = np.zeros(n_out + 1)
-    pos = np.zeros((n_out + 1, n, 3))
-    vel, acc = np.zeros((n_out + 1, knodes.size, 3)), np.zeros((n_out + 1, knodes.size, 3))
-    ten, sup = np.zeros((n_out + 1, net.n_elements)), np.zeros((n_out + 1, n, 3))
+    if block_outputs is None:  # a power of two of outputs within BLOCK_VALUES values
+        per_output = 1 + 6 * n + net.n_elements + 6 * knodes.size  # times, positions, support, tension, kinematics
+        block_outputs = 2 ** max(1, (BLOCK_VALUES // per_output).bit_length() - 1)
+    rows = n_out + 1 if on_outputs is None else max(2, min(int(block_outputs), n_out + 1))
+    times = np.zeros(rows)
+    pos = np.zeros((rows, n, 3))
+    vel, acc = np.zeros((rows, knodes.size, 3)), np.zeros((rows, knodes.size, 3))
+    ten, sup = np.zeros((rows, net.n_elements)), np.zeros((rows, n, 3))
     env_rec = model.env
     if model.visco.shape[0]:
         env_rec = env_rec.copy()
         env_rec[K.E_VDT] = 0.0  # outputs: viscoelastic elements at the last converged step's slow stretch
     args = model.element_args()
     store = (times, pos, vel, acc, ten, sup)
+    base = 0  # the output in row 0 of the stored arrays
 
     def record(k):
-        LP.record_output(k, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec, model.cur_depth,
-                         model.cur_speed, model.sea, F, M, tension, *store)
+        LP.record_output(k - base, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec,
+                         model.cur_depth, model.cur_speed, model.sea, F, M, tension, *store)
+
+    def block(stop):
+        """The stored outputs ``base`` to ``stop - 1`` as a run (copies: the rows are used again)."""
+        m = stop - base
+        return MooringRun(time=times[:m].copy(), position=pos[:m].copy(), velocity=vel[:m].copy(),
+                          tension=ten[:m].copy(), support=sup[:m].copy(), time_step=h, iterations=int(count[2]),
+                          steps=int(count[1]), interrupted=interrupted, wall_time=_time.perf_counter() - start,
+                          acceleration=acc[:m].copy(),
+                          spectral_radius=float(spectral_radius), recommended_time_step=dt_rec,
+                          kinematic_nodes=None if kinematics is None else knodes)
+
+    def send(stop):
+        """Hand the outputs ``base`` to ``stop - 1`` to ``on_outputs``; their rows are free again. Ctrl-C and
+        SIGTERM wait for the end (then raise): a block goes out whole, once."""
+        nonlocal base
+        if on_outputs is not None and stop > base:
+            with deferred_interrupts():
+                on_outputs(block(stop))
+                base = stop
 
     record(0)
     stats = np.zeros(3)
@@ -660,7 +694,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     try:
         k, size = 0, 1
         while k < n_out:
-            k1 = min(n_out, k + size)
+            if k + 1 - base >= rows or (model.sea_end() < (k + 1) * output_interval):
+                send(k + 1)  # the arrays are full, or the sea's window moves on: the outputs so far go out
+            k1 = min(n_out, k + size, base + rows - 1)
             model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
             if math.isfinite(model.sea_end()):  # the chunk inside the window
                 k1 = min(k1, max(k + 1, math.floor(model.sea_end() / output_interval + 1e-9)))
@@ -668,7 +704,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
             px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
             tick = _time.perf_counter()
-            got = LP.run_outputs(k, k1, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
+            got = LP.run_outputs(k, k1, base, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
                                  model.fidx, model.nfree, model.bw, model.env, env_rec, model.cur_depth,
                                  model.cur_speed, model.sea, beta, gamma, alpha_m, alpha_f, hist, tol, max_iter, F, M,
                                  tension, stats, count, *store)
@@ -687,13 +723,16 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
                 reporting = True
                 while reported < k:
                     reported += 1
-                    progress(times[reported], duration)
+                    progress(times[reported - base], duration)
                 reporting = False
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - start
     # an interrupt in the progress callback keeps the outputs reported (as when it ran after each output)
     nt = reported + 1 if interrupted and reporting else int(count[0]) + 1
+    if on_outputs is not None:
+        send(max(nt, base))
+        return replace(block(base), wall_time=wall)
     return MooringRun(time=times[:nt].copy(), position=pos[:nt], velocity=vel[:nt], tension=ten[:nt],
                       support=sup[:nt], time_step=h, iterations=int(count[2]), steps=int(count[1]),
                       interrupted=interrupted, wall_time=wall, acceleration=acc[:nt],

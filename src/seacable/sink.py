@@ -1,0 +1,213 @@
+"""Where a time-domain run's outputs go as they are computed: into memory, or into a NetCDF file.
+
+A long run's result can outgrow memory: a 3-hour run of three 40-element lines with an output every
+0.1 s is 0.57 GB of results. The mooring time loop hands its outputs over in blocks
+(:func:`seacable.mooring.solver.simulate`, ``on_outputs``); the result variables of each block go to a
+sink, through :meth:`~MemorySink.append`:
+
+- :class:`MemorySink` allocates each variable once at the run's full length and fills it block by
+  block. No copy of the whole run is ever made, so the process holds the result and one block.
+- :class:`NetcdfSink` writes each block into a NetCDF-4 file as it comes (``time`` an unlimited
+  dimension), so that the process holds one block whatever the run's length. The file is written
+  under a temporary name beside the target and renamed into place when the run is finished
+  (:mod:`seacable._atomic`). An interrupted run's file holds every output computed.
+
+:meth:`~MemorySink.finish` adds the variables without time (events found over the whole run, read back
+with :meth:`~MemorySink.read`) and the attributes, and gives the result Dataset.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+import xarray as xr
+
+from .errors import InputError
+from .results import _NETCDF_SUFFIXES, _make_folder, check_schema, make_dataset
+
+__all__ = ["MemorySink", "NetcdfSink", "open_sink"]
+
+#: values of a variable's NetCDF chunk (1 MB of float64): a block of outputs is written in whole chunks
+CHUNK_VALUES = 2**17
+
+
+def _time_axis(v: xr.Variable) -> int | None:
+    return v.dims.index("time") if "time" in v.dims else None
+
+
+def _at(axis: int, start: int, stop: int) -> tuple:
+    return (slice(None),) * axis + (slice(start, stop),)
+
+
+class MemorySink:
+    """A run's result in memory: each variable along ``time`` allocated at ``n_time`` outputs on the first
+    block, then filled block by block.
+
+    Parameters
+    ----------
+    n_time
+        The number of outputs of the whole run (a run interrupted before its end keeps those it made).
+    """
+
+    def __init__(self, n_time: int):
+        self.n_time = int(n_time)
+        self.filled = 0
+        self._vars: dict[str, xr.Variable] = {}
+        self._coords: dict[str, xr.Variable] = {}
+
+    def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
+        """Store one block: ``data`` and ``coords`` with their ``time`` dimension the block's outputs (the
+        ``time`` coordinate among them), the others the same for every block (kept from the first)."""
+        n = coords["time"].size
+        if self.filled + n > self.n_time:
+            raise AssertionError(f"{self.filled + n} outputs given to a sink of {self.n_time}")
+        for store, given in ((self._vars, data), (self._coords, coords)):
+            for name, v in given.items():
+                axis = _time_axis(v)
+                if name not in store:
+                    if axis is None:
+                        store[name] = v
+                        continue
+                    shape = v.shape[:axis] + (self.n_time,) + v.shape[axis + 1:]
+                    store[name] = xr.Variable(v.dims, np.empty(shape, v.dtype), attrs=v.attrs)
+                if axis is not None:
+                    store[name].values[_at(axis, self.filled, self.filled + n)] = v.values
+        self.filled += n
+
+    def read(self, name: str, index: tuple = ()) -> np.ndarray:
+        """The stored values of ``name`` (the outputs so far), ``index`` taken on its leading axes."""
+        v = self._vars[name] if name in self._vars else self._coords[name]
+        axis = _time_axis(v)
+        values = v.values if axis is None else v.values[_at(axis, 0, self.filled)]
+        return values[index]
+
+    def finish(self, data: dict[str, xr.Variable], attrs: dict | None = None, **provenance) -> xr.Dataset:
+        """The result: the blocks (their outputs so far), ``data`` (variables without ``time``), the
+        attributes of :func:`seacable.results.make_dataset` (``provenance``: its keywords) and ``attrs``."""
+        cut = {"time": slice(0, self.filled)}
+        ds = make_dataset({**{k: v.isel(cut, missing_dims="ignore") for k, v in self._vars.items()}, **data},
+                          {k: v.isel(cut, missing_dims="ignore") for k, v in self._coords.items()}, **provenance)
+        ds.attrs.update(attrs or {})
+        return ds
+
+    def abort(self) -> None:
+        """Drop what was stored (a run that failed)."""
+        self._vars, self._coords = {}, {}
+
+
+class NetcdfSink(MemorySink):
+    """A run's result written into the NetCDF-4 file ``path`` block by block (compressed, as
+    :func:`seacable.results.write_netcdf` writes it); :meth:`finish` returns the Dataset read lazily from the
+    finished file (its variables are read when used).
+
+    Raises
+    ------
+    InputError
+        If the suffix is not ``.nc``, or the file cannot be written (a read-only folder, a full disk).
+    """
+
+    def __init__(self, n_time: int, path: str | Path):
+        super().__init__(n_time)
+        from ._atomic import _temporary
+
+        path = Path(path)
+        if path.suffix.lower() not in _NETCDF_SUFFIXES:
+            raise InputError(f"output file '{path}' must end in .nc. Suggested fix: -o {path.with_suffix('.nc')}")
+        if path.is_dir():
+            raise InputError(f"output file '{path}' is a folder. Suggested fix: -o {path / 'result.nc'}")
+        _make_folder(path.parent, f"the result '{path.name}'")
+        self.path, self.tmp = path, _temporary(path)
+        self._nc = None
+        self._timed: dict[str, int] = {}  # name -> time axis of the variables along time
+
+    def _failed(self, err: OSError):
+        self.abort()
+        return InputError(f"cannot write the result '{self.path}': {err.strerror or err}. Suggested fix: free "
+                          "disk space, or give -o a file in a folder you can write to.")
+
+    def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
+        n = coords["time"].size
+        try:
+            if self._nc is None:
+                self._create(data, coords)
+            else:
+                for name, axis in self._timed.items():
+                    v = data[name] if name in data else coords[name]
+                    self._nc[name][_at(axis, self.filled, self.filled + n)] = v.values
+        except OSError as err:
+            raise self._failed(err) from None
+        self.filled += n
+
+    def _create(self, data, coords) -> None:
+        import netCDF4
+
+        ds = xr.Dataset(data, coords)
+        check_schema(ds)
+        encoding = {}
+        for name, v in ds.variables.items():
+            axis = _time_axis(v)
+            enc = {"zlib": True, "complevel": 4} if name in ds.data_vars and v.dtype.kind in "fiu" and v.ndim else {}
+            if axis is not None:
+                self._timed[name] = axis
+                # a power of two of outputs, so that blocks of a power of two fill whole chunks
+                other = math.prod(v.shape[:axis] + v.shape[axis + 1:])
+                rows = 2 ** max(0, (CHUNK_VALUES // max(other, 1)).bit_length() - 1)
+                enc["chunksizes"] = v.shape[:axis] + (rows,) + v.shape[axis + 1:]
+            encoding[name] = enc
+        ds.to_netcdf(self.tmp, engine="netcdf4", encoding=encoding, unlimited_dims=["time"])
+        self._nc = netCDF4.Dataset(self.tmp, "a")
+        self._nc.set_auto_mask(False)
+        for name in self._timed:  # a chunk or two cached per variable, not the library's 64 MB
+            out = self._nc[name]
+            out.set_var_chunk_cache(size=2 * math.prod(out.chunking()) * out.dtype.itemsize, nelems=61,
+                                    preemption=1.0)
+
+    def read(self, name: str, index: tuple = ()) -> np.ndarray:
+        v = self._nc[name]
+        axis = self._timed.get(name)
+        full = tuple(index) + (slice(None),) * (v.ndim - len(index))
+        if axis is not None:
+            full = full[:axis] + (slice(0, self.filled),) + full[axis + 1:]
+        return np.asarray(v[full])
+
+    def finish(self, data: dict[str, xr.Variable], attrs: dict | None = None, **provenance) -> xr.Dataset:
+        from ._atomic import deferred_interrupts
+        from .results import _attr_value
+
+        header = make_dataset(data, {}, **provenance)
+        try:
+            with deferred_interrupts():
+                nc = self._nc
+                for dim, size in header.sizes.items():
+                    if dim not in nc.dimensions:
+                        nc.createDimension(dim, size)
+                for name, v in header.data_vars.items():
+                    fill = np.nan if v.dtype.kind == "f" else None
+                    out = nc.createVariable(name, v.dtype, v.dims, zlib=v.ndim > 0, complevel=4, fill_value=fill)
+                    out.setncatts(v.attrs)
+                    out[...] = v.values
+                nc.setncatts({k: _attr_value(val) for k, val in {**header.attrs, **(attrs or {})}.items()})
+                nc.close()
+                self._nc = None
+                os.replace(self.tmp, self.path)
+        except OSError as err:
+            raise self._failed(err) from None
+        return xr.open_dataset(self.path, engine="netcdf4")
+
+    def abort(self) -> None:
+        """Close and delete the temporary file (a run that failed)."""
+        if self._nc is not None:
+            with contextlib.suppress(Exception):
+                self._nc.close()
+            self._nc = None
+        with contextlib.suppress(OSError):
+            self.tmp.unlink()
+
+
+def open_sink(n_time: int, out: str | Path | None = None) -> MemorySink:
+    """A :class:`NetcdfSink` writing ``out``, or a :class:`MemorySink` without it."""
+    return MemorySink(n_time) if out is None else NetcdfSink(n_time, out)
