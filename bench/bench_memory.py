@@ -7,8 +7,11 @@ outputs), read and run through the user path (``run_moordyn_case``: file, model,
 result), two ways:
 
 - ``memory``: the result Dataset in memory (0.57 GB of it), filled block by block as the run goes;
-- ``file``: the result written into a NetCDF file as the run goes (``out=``, what ``seacable run -o``
-  does), the Dataset returned read lazily from it.
+- ``file``: the result written into a NetCDF file as the run goes (``out=``), the Dataset returned read
+  lazily from it;
+- ``cli``: ``seacable run deck.txt --duration 10800 --output-interval 0.1 --motion heave.csv -o
+  three_chains.nc`` (in the process, :func:`seacable.cli.main`; the heave as a table every 0.25 s): the file
+  written as the run goes, then its two figures.
 
 Each runs in a fresh process, after a short run in another process has put numba's compiled kernels in
 its cache (a first run after an install compiles them, about 0.2 GB more for a minute). Printed: the peak
@@ -42,7 +45,7 @@ def _resident() -> float:
 
 
 def child(mode: str, hours: float) -> dict:
-    """One run in this process: ``mode`` 'memory' or 'file' (with 'warm', a 36 s run only)."""
+    """One run in this process: ``mode`` 'memory', 'file' or 'cli' (with 'warm', a 36 s run only)."""
     from seacable.io.moordyn import load_moordyn_case
     from seacable.mooring.moordyn import run_moordyn_case
     from seacable.mooring.motion import HarmonicMotion
@@ -61,7 +64,26 @@ def child(mode: str, hours: float) -> dict:
     if mode == "warm":
         return {}
     start = time.perf_counter()
-    ds = run(3600.0 * hours, folder / "three_chains.nc" if mode == "file" else None)
+    out = folder / "three_chains.nc"
+    if mode == "cli":
+        from seacable.cli import main
+
+        deck = folder / "three_chains.txt"
+        deck.write_text(DECK.read_text())
+        # the same heave, as a table every 0.25 s (the motion file of the command line: a cubic spline)
+        t = np.arange(0.0, 3600.0 * hours + 1.0, 0.25)
+        offsets = HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0).channels(t, np.zeros((1, 3)))[0][:, 0]
+        motion = folder / "heave.csv"
+        np.savetxt(motion, np.column_stack([t, offsets]), delimiter=",", header="time,x,y,z", comments="")
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            main(["run", str(deck), "--duration", str(3600.0 * hours), "--time-step", "0.1", "--output-interval",
+                  "0.1", "--motion", str(motion), "-o", str(out)])
+        import xarray as xr
+
+        ds = xr.open_dataset(out)
+    else:
+        ds = run(3600.0 * hours, out if mode == "file" else None)
     wall = time.perf_counter() - start
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # kB on Linux
     return {"mode": mode, "outputs": int(ds.sizes["time"]), "peak_rss_bytes": int(peak), "loaded_bytes": loaded,
@@ -76,9 +98,9 @@ def _in_process(mode: str, hours: float) -> dict:
 
 def main(hours: float = 3.0) -> list[dict]:
     _in_process("warm", 0.01)
-    rows = [_in_process(mode, hours) for mode in ("memory", "file")]
+    rows = [_in_process(mode, hours) for mode in ("memory", "file", "cli")]
     print(f"three 40-segment lines, {hours:g} h at dt 0.1 s, output every 0.1 s: {rows[0]['outputs']} outputs")
-    print("| result | peak resident memory | after a 36 s run | wall (file, statics, loop, result) | "
+    print("| result | peak resident memory | after a 36 s run | wall (deck, statics, loop, result) | "
           "max fairlead tension |")
     print("|---|---|---|---|---|")
     for r in rows:

@@ -240,12 +240,17 @@ def test_sweep_summary_and_records_written_whole(tmp_path, monkeypatch):
 
 # --- SIGTERM in a real run (subprocess) ----------------------------------------------------------
 
-def _sigterm_run(tmp_path, case: dict, when: bytes):
-    """``seacable run`` of ``case`` sent SIGTERM once ``when`` appears on its stderr: (exit, stderr, result)."""
-    path = tmp_path / "lay.yaml"
-    path.write_text(yaml.safe_dump(case))
+def _sigterm_run(tmp_path, case, when: bytes, options=()):
+    """``seacable run`` of ``case`` (a dict, written as YAML, or a file) with ``options``, sent SIGTERM once
+    ``when`` appears on its stderr: the result."""
+    if isinstance(case, dict):
+        path = tmp_path / "lay.yaml"
+        path.write_text(yaml.safe_dump(case))
+    else:
+        path = case
     out = tmp_path / "lay.nc"
-    proc = subprocess.Popen([sys.executable, "-m", "seacable", "run", str(path), "-o", str(out), "--no-plots"],
+    proc = subprocess.Popen([sys.executable, "-m", "seacable", "run", str(path), "-o", str(out), "--no-plots",
+                             *options],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path, env=seacable_env())
     os.set_blocking(proc.stderr.fileno(), False)
     seen, t0 = b"", time.monotonic()
@@ -272,6 +277,21 @@ def test_sigterm_keeps_what_was_computed(tmp_path):
     ds = _sigterm_run(tmp_path, case, b"seacable: t = ")
     assert int(ds.attrs["interrupted"]) == 1
     assert 0.0 < float(ds.time[-1]) < case["analysis"]["duration"]
+
+
+def test_sigterm_keeps_what_a_run_written_as_it_goes_computed(tmp_path):
+    """Three chains run for an hour, written into the result file as they go (a MoorDyn deck with a duration
+    streams, :mod:`seacable.sink`), get SIGTERM at the first progress line: exit 130, the file is in place,
+    no temporary file beside it, and it holds the outputs up to then, every 0.1 s from 0, flagged
+    interrupted, with the snap loads (none) of those outputs."""
+    deck = tmp_path / "three.txt"
+    deck.write_text((Path(__file__).parents[1] / "validation" / "data" / "three_chains_deck.txt").read_text())
+    ds = _sigterm_run(tmp_path, deck, b"seacable: t = ", ("--duration", "3600", "--output-interval", "0.1"))
+    assert int(ds.attrs["interrupted"]) == 1
+    n = ds.sizes["time"]
+    assert 1 < n < 36001
+    assert np.allclose(ds.time, 0.1 * np.arange(n), rtol=0, atol=1e-9)
+    assert np.all(np.isfinite(ds.fairlead_tension)) and ds.sizes["snap"] == 0
 
 
 def test_sigterm_after_the_last_step_still_writes_the_whole_result(tmp_path):

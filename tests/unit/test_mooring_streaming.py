@@ -238,3 +238,35 @@ def test_a_run_written_as_it_goes_holds_a_block_not_the_run(tmp_path, monkeypatc
     grown_file = peak(240.0, tmp_path / "b.nc") - peak(60.0, tmp_path / "a.nc")
     assert grown_memory >= 1800 * 656 * 8  # the result, at least
     assert grown_file <= 0.15 * grown_memory
+
+
+def test_a_write_that_fails_midway_says_why_and_leaves_no_file(tmp_path, monkeypatch):
+    """The disk fills while a run is written (the library raises OSError at the third block): an InputError
+    naming the file, the reason and a fix; neither the file nor its temporary is left."""
+    from seacable.sink import NetcdfSink
+
+    append, calls = NetcdfSink.append, []
+
+    def full_at_third(self, data, coords):
+        calls.append(1)
+        if len(calls) == 3:
+            class Full:
+                def __getitem__(self, name):
+                    return self
+
+                def __setitem__(self, index, value):
+                    raise OSError(28, "No space left on device")
+
+                def close(self):
+                    pass
+            self._nc.close()
+            self._nc = Full()
+        return append(self, data, coords)
+
+    monkeypatch.setattr(NetcdfSink, "append", full_at_third)
+    monkeypatch.setattr(S, "BLOCK_VALUES", 2**14)
+    out = tmp_path / "three.nc"
+    with pytest.raises(sc.InputError, match=r"cannot write the result .*three\.nc': No space left on device\. "
+                                            r"Suggested fix: free disk space"):
+        _run(_three_case(5.0), out)
+    assert list(tmp_path.iterdir()) == []

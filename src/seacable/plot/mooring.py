@@ -250,24 +250,25 @@ def _mooring_dynamic(ds, plt):
     from matplotlib import colormaps
 
     lines = _lines(ds)
-    planar = _in_xz_plane(ds)
     time = np.asarray(ds.time.values, dtype=float)
     unit_t = ds.time.attrs.get("units", "s")
     note = _note(ds, time)
     step, snaps = _snapshot_times(time, _N_SNAPSHOTS)
-    idx = np.searchsorted(time, snaps)  # the snapshots are output times
+    # the shapes drawn: the snapshots' rows only (a long result read from its file is not read whole)
+    shots = ds.isel(time=np.searchsorted(time, snaps))  # the snapshots are output times
+    planar = _in_xz_plane(shots)
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, snaps.size))
     every = (f"every {step:g} {unit_t}" if step else
              f"at t = {snaps[0]:g} {unit_t}" if snaps.size == 1 else f"at {snaps.size} times")
     figs = {}
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.5))
-    t_scale, t_unit = _tension_scale(ds.tension.values)
+    t_scale, t_unit = _tension_scale(shots.tension.values)
     xs = []
-    for k, (name, line) in enumerate(lines):
+    for k, (name, line) in enumerate(_lines(shots)):
         h_all = _horizontal(line, planar)
         s_all, s_label = _arc_length(line)
-        for i, t, c in zip(idx, snaps, colours):
+        for i, (t, c) in enumerate(zip(snaps, colours)):
             label = f"t = {t:g} {unit_t}" if k == 0 else None
             h, z = _finite(h_all[i], line.z.values[i])
             xs.append(h)
