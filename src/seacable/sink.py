@@ -89,8 +89,12 @@ class MemorySink:
         """The result: the blocks (their outputs so far), ``data`` (variables without ``time``), the
         attributes of :func:`seacable.results.make_dataset` (``provenance``: its keywords) and ``attrs``."""
         cut = {"time": slice(0, self.filled)}
-        ds = make_dataset({**{k: v.isel(cut, missing_dims="ignore") for k, v in self._vars.items()}, **data},
-                          {k: v.isel(cut, missing_dims="ignore") for k, v in self._coords.items()}, **provenance)
+
+        def done(v):  # an interrupted run: its outputs so far
+            return v if self.filled == self.n_time else v.isel(cut, missing_dims="ignore")
+
+        ds = make_dataset({**{k: done(v) for k, v in self._vars.items()}, **data},
+                          {k: done(v) for k, v in self._coords.items()}, **provenance)
         ds.attrs.update(attrs or {})
         return ds
 
