@@ -20,7 +20,7 @@ from ._version import __version__
 from .errors import InputError
 
 __all__ = ["ANALYSIS_VARIABLES", "check_output_file", "check_output_folder", "check_result", "check_schema",
-           "make_dataset", "read_netcdf", "var", "write_netcdf"]
+           "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
 #: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file
@@ -245,21 +245,42 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     """
     from ._atomic import atomic_path, deferred_interrupts
 
+    path = result_file(path)
+    encoding = {name: compression(v) for name, v in ds.data_vars.items()}
+    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
+        with deferred_interrupts(), atomic_path(path) as tmp:
+            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
+    except OSError as err:
+        raise write_error(path, err) from None
+    return path
+
+
+def result_file(path: str | Path) -> Path:
+    """``path`` as a result file to be written: checked (a ``.nc`` name, not a folder) and its folder made.
+
+    Raises
+    ------
+    InputError
+        If the suffix is not ``.nc``, ``path`` is a folder, or its folder cannot be made.
+    """
     path = Path(path)
     if path.suffix.lower() not in _NETCDF_SUFFIXES:
         raise InputError(f"output file '{path}' must end in .nc. Suggested fix: -o {path.with_suffix('.nc')}")
     if path.is_dir():
         raise InputError(f"output file '{path}' is a folder. Suggested fix: -o {path / 'result.nc'}")
     _make_folder(path.parent, f"the result '{path.name}'")
-    encoding = {name: {"zlib": True, "complevel": 4} for name, v in ds.data_vars.items()
-                if v.dtype.kind in "fiu" and v.ndim > 0}
-    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
-        with deferred_interrupts(), atomic_path(path) as tmp:
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-    except OSError as err:
-        raise InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk "
-                         "space, or give -o a file in a folder you can write to.") from None
     return path
+
+
+def compression(v) -> dict:
+    """The NetCDF encoding of a data variable: zlib level 4 for numbers with dimensions, none otherwise."""
+    return {"zlib": True, "complevel": 4} if v.dtype.kind in "fiu" and v.ndim > 0 else {}
+
+
+def write_error(path: Path, err: OSError) -> InputError:
+    """What to tell when the result ``path`` cannot be written."""
+    return InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk space, "
+                      "or give -o a file in a folder you can write to.")
 
 
 def read_netcdf(path: str | Path) -> xr.Dataset:

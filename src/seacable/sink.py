@@ -13,7 +13,8 @@ sink, through :meth:`~MemorySink.append`:
   (:mod:`seacable._atomic`). An interrupted run's file holds every output computed.
 
 :meth:`~MemorySink.finish` adds the variables without time (events found over the whole run, read back
-with :meth:`~MemorySink.read`) and the attributes, and gives the result Dataset.
+with :meth:`~MemorySink.read`) and the attributes, and gives the result Dataset. Used as a context manager,
+a sink whose run raises is dropped (:meth:`~MemorySink.abort`: a file's temporary deleted).
 """
 
 from __future__ import annotations
@@ -26,8 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .errors import InputError
-from .results import _NETCDF_SUFFIXES, _make_folder, check_schema, make_dataset
+from .results import check_schema, compression, make_dataset, result_file, write_error
 
 __all__ = ["MemorySink", "NetcdfSink", "open_sink"]
 
@@ -102,6 +102,14 @@ class MemorySink:
         """Drop what was stored (a run that failed)."""
         self._vars, self._coords = {}, {}
 
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, error, trace) -> None:
+        """A run that raised (an error, a second Ctrl-C) leaves nothing behind: :meth:`abort`."""
+        if kind is not None:
+            self.abort()
+
 
 class NetcdfSink(MemorySink):
     """A run's result written into the NetCDF-4 file ``path`` block by block (compressed, as
@@ -111,27 +119,22 @@ class NetcdfSink(MemorySink):
     Raises
     ------
     InputError
-        If the suffix is not ``.nc``, or the file cannot be written (a read-only folder, a full disk).
+        If the suffix is not ``.nc``, or the file cannot be written (a read-only folder, a full disk):
+        :func:`seacable.results.result_file`, :func:`seacable.results.write_error`.
     """
 
     def __init__(self, n_time: int, path: str | Path):
         super().__init__(n_time)
         from ._atomic import _temporary
 
-        path = Path(path)
-        if path.suffix.lower() not in _NETCDF_SUFFIXES:
-            raise InputError(f"output file '{path}' must end in .nc. Suggested fix: -o {path.with_suffix('.nc')}")
-        if path.is_dir():
-            raise InputError(f"output file '{path}' is a folder. Suggested fix: -o {path / 'result.nc'}")
-        _make_folder(path.parent, f"the result '{path.name}'")
+        path = result_file(path)
         self.path, self.tmp = path, _temporary(path)
         self._nc = None
         self._timed: dict[str, int] = {}  # name -> time axis of the variables along time
 
     def _failed(self, err: OSError):
         self.abort()
-        return InputError(f"cannot write the result '{self.path}': {err.strerror or err}. Suggested fix: free "
-                          "disk space, or give -o a file in a folder you can write to.")
+        return write_error(self.path, err)
 
     def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
         n = coords["time"].size
@@ -154,7 +157,7 @@ class NetcdfSink(MemorySink):
         encoding = {}
         for name, v in ds.variables.items():
             axis = _time_axis(v)
-            enc = {"zlib": True, "complevel": 4} if name in ds.data_vars and v.dtype.kind in "fiu" and v.ndim else {}
+            enc = compression(v) if name in ds.data_vars else {}
             if axis is not None:
                 self._timed[name] = axis
                 # a power of two of outputs, so that blocks of a power of two fill whole chunks
@@ -191,7 +194,7 @@ class NetcdfSink(MemorySink):
                         nc.createDimension(dim, size)
                 for name, v in header.data_vars.items():
                     fill = np.nan if v.dtype.kind == "f" else None
-                    out = nc.createVariable(name, v.dtype, v.dims, zlib=v.ndim > 0, complevel=4, fill_value=fill)
+                    out = nc.createVariable(name, v.dtype, v.dims, fill_value=fill, **compression(v))
                     out.setncatts(v.attrs)
                     out[...] = v.values
                 nc.setncatts({k: _attr_value(val) for k, val in {**header.attrs, **(attrs or {})}.items()})

@@ -361,22 +361,18 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
     if case.duration is None:
         return _written(_dataset(model, st.position, st.tension, st.support, title=title, settings=settings), out)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
-    sink = open_sink(output_count(case.duration, case.output_interval), out)
+    with open_sink(output_count(case.duration, case.output_interval), out) as sink:
 
-    def outputs(block: MooringRun):
-        sink.append(*_variables(model, block.position, block.tension, block.support, block.time,
-                                velocity=block.velocity, acceleration=block.acceleration,
-                                kinematic_nodes=block.kinematic_nodes, extra=slack_variables(block)))
+        def outputs(block: MooringRun):
+            sink.append(*_variables(model, block.position, block.tension, block.support, block.time,
+                                    velocity=block.velocity, acceleration=block.acceleration,
+                                    kinematic_nodes=block.kinematic_nodes, extra=slack_variables(block)))
 
-    try:
         run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval,
                                    initial=st.position, tol=tolerance * 10, progress=progress,
                                    spectral_radius=case.spectral_radius, forcing_period=forcing_period(case.motion),
                                    kinematics=line_end_nodes(model.network), on_outputs=outputs)
         events = snap_variables(sink, model.network)
-    except BaseException:
-        sink.abort()
-        raise
     settings = {**settings, "time_step": run.time_step, "steps": run.steps, "spectral_radius": run.spectral_radius}
     return sink.finish(events, attrs={**_depth(model), **run_attributes(run)},
                        **_provenance(model, title, settings))

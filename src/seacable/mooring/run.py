@@ -501,8 +501,7 @@ def run_mooring_dynamic(case: Case, progress=None, out=None):
     model = setup.model
     start = static_equilibrium(setup.start_model, tol=a.tolerance).position
     waves = case.environment.waves
-    sink = open_sink(output_count(a.duration, a.output_interval), out)
-    try:
+    with open_sink(output_count(a.duration, a.output_interval), out) as sink:
         run = simulate(model, setup.motion, a.duration, a.time_step, a.output_interval, initial=start,
                        tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
                        spectral_radius=a.spectral_radius,
@@ -511,9 +510,6 @@ def run_mooring_dynamic(case: Case, progress=None, out=None):
                        kinematics=line_end_nodes(model.network),
                        on_outputs=lambda block: sink.append(*run_variables(model, block)))
         events = snap_variables(sink, model.network)
-    except BaseException:
-        sink.abort()
-        raise
     settings = _settings(model, time_step=run.time_step, steps=run.steps, newton_iterations=run.iterations,
                          spectral_radius=run.spectral_radius, damping_ratio=a.damping_ratio,
                          rayleigh=list(a.rayleigh))
