@@ -1,0 +1,104 @@
+"""Fatigue of mooring lines (issue 20): rainflow counting, the T-N curves of DNV-OS-E301, Miner's sum and the
+life over a scatter diagram."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.signal import hilbert
+
+from seacable.design import (
+    TN_CURVES,
+    fatigue_damage,
+    fatigue_life,
+    narrow_band_damage,
+    nominal_area,
+    tension_cycles,
+)
+from seacable.design.fatigue import SECONDS_PER_YEAR
+from seacable.errors import InputError
+
+
+def test_rainflow_count_of_the_astm_e1049_example():
+    """ASTM E1049-85 (2017), Fig. 6 and its table: the history -2, 1, -3, 5, -1, 3, -4, 4, -2 holds half
+    cycles of range 3, 6 and 9, one and a half of range 4, and one full cycle of range 8."""
+    ranges, counts = tension_cycles([-2, 1, -3, 5, -1, 3, -4, 4, -2])
+    got = {}
+    for r, c in zip(ranges, counts, strict=True):
+        got[r] = got.get(r, 0.0) + c
+    assert got == {3.0: 0.5, 4.0: 1.5, 6.0: 0.5, 8.0: 1.0, 9.0: 0.5}
+
+
+def test_damage_of_constant_amplitude_cycles_is_the_t_n_curve():
+    """1000 cycles of 4 MN on a 0.1 m studless chain (area 2 pi 0.05^2 = 0.0157 m^2: 254.6 MPa): damage
+    1000 s^3 / 6.0e10 = 0.275; the same range on a 0.1 m spiral strand rope (127.3 MPa, a_D 1.7e17, m 4.8)."""
+    tension = np.tile([1e6, 5e6], 1000)
+    tension = np.r_[tension, 1e6]
+    s = 4e6 / (2 * math.pi * 0.05**2) / 1e6
+    assert nominal_area("studless_chain", 0.1) == pytest.approx(2 * math.pi * 0.05**2, rel=1e-15)
+    assert fatigue_damage(tension, diameter=0.1) == pytest.approx(1000 * s**3 / 6.0e10, rel=1e-12)
+    rope = 4e6 / (math.pi * 0.05**2) / 1e6
+    assert fatigue_damage(tension, "spiral_strand_rope", diameter=0.1) == pytest.approx(
+        1000 * rope**4.8 / 1.7e17, rel=1e-12)
+    # the curves of DNV-OS-E301 (2010) Table D1
+    assert [(c.a_d, c.m) for c in TN_CURVES.values()] == [(1.2e11, 3.0), (6.0e10, 3.0), (1.2e10, 3.0),
+                                                          (3.4e14, 4.0), (1.7e17, 4.8)]
+
+
+def _narrow_band_turning_points(seed, cycles=100_000, f0=0.1, delta=0.03, per_cycle=8):
+    """A Gaussian process with a flat spectrum over f0 (1 +- delta) (random phases), its turning points read
+    from its analytic signal (envelope at each half turn of its phase, alternating sign); its m0 and nu0."""
+    rng = np.random.default_rng(seed)
+    fs = per_cycle * f0
+    n = cycles * per_cycle
+    f = np.fft.rfftfreq(n, 1 / fs)
+    df = f[1] - f[0]
+    spectrum = np.where(np.abs(f - f0) <= delta * f0, 1e10, 0.0)  # [N^2 s]: sigma about 1.6e4 N
+    x = np.fft.irfft(np.sqrt(2 * spectrum * df) * np.exp(1j * rng.uniform(0, 2 * np.pi, f.size)) * n / 2, n)
+    m0 = float(np.sum(spectrum * df))
+    nu0 = math.sqrt(float(np.sum(spectrum * df * (2 * np.pi * f) ** 2)) / m0) / (2 * np.pi)
+    z = hilbert(x)
+    phase = np.unwrap(np.angle(z))
+    t = np.arange(n) / fs
+    k = np.arange(np.ceil(phase[0] / np.pi), np.floor(phase[-1] / np.pi))
+    tk = np.interp(k * np.pi, phase, t)
+    return 5e5 + np.interp(tk, t, np.abs(z)) * np.cos(k * np.pi), m0, nu0, n / fs
+
+
+@pytest.mark.parametrize("curve, bound", [("studless_chain", 0.02), ("spiral_strand_rope", 0.05)])
+def test_damage_of_a_narrow_band_gaussian_record_is_the_closed_form(curve, bound):
+    """100 000 cycles of a narrow-band Gaussian tension (band 0.1 Hz +- 3 %, about a 500 kN mean) on a 0.1 m
+    line: the rainflow damage is the closed form nu0 T / a_D (2 sqrt(2 m0))^m Gamma(1 + m/2).
+
+    The record's own sampling error grows with m: a cycle's S^m has a relative variance
+    Gamma(1 + m)/Gamma(1 + m/2)^2 - 1, 2.4 for m = 3 and 8.6 for m = 4.8 (1.9 times the scatter). Eight seeds
+    gave 0.996-1.005 of the closed form for m = 3 and 0.979-1.033 for m = 4.8: bounds 2 % and 5 %."""
+    tension, m0, nu0, duration = _narrow_band_turning_points(seed=3)
+    got = fatigue_damage(tension, curve, diameter=0.1)
+    assert got == pytest.approx(narrow_band_damage(m0, nu0, duration, curve, diameter=0.1), rel=bound)
+
+
+def test_fatigue_life_over_a_scatter_diagram():
+    """Two sea states, 3 h records: damages 1e-4 and 4e-4, probabilities 0.75 and 0.25: damage per year
+    (0.75e-4 + 1e-4) / 10800 s x 1 year, life its inverse (1/3 of it with a design fatigue factor of 3)."""
+    per_year = (0.75 * 1e-4 + 0.25 * 4e-4) / 10800.0 * SECONDS_PER_YEAR
+    assert fatigue_life([1e-4, 4e-4], 10800.0, [0.75, 0.25]) == pytest.approx(1 / per_year, rel=1e-12)
+    assert fatigue_life([1e-4, 4e-4], 10800.0, [0.75, 0.25], design_fatigue_factor=3) == pytest.approx(
+        1 / per_year / 3, rel=1e-12)
+    assert fatigue_life([0.0], 10800.0, [1.0]) == math.inf
+
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: fatigue_life([1e-4, 4e-4], 10800.0, [0.5, 0.25]), r"sum to 1, got a sum of 0\.75 \(2 sea states\)"),
+    (lambda: fatigue_life([1e-4, -1.0], 10800.0, [0.5, 0.5]), "damage must be finite and >= 0"),
+    (lambda: fatigue_life([1e-4], 0.0, [1.0]), "duration must be > 0 s"),
+    (lambda: fatigue_damage([1.0, 2.0], "chain", diameter=0.1), "T-N curve 'chain' is not one of stud_chain"),
+    (lambda: fatigue_damage([1.0, 2.0]), "either the nominal diameter .* or the nominal area .* not neither"),
+    (lambda: fatigue_damage([1.0, np.nan, 2.0], diameter=0.1), "non-finite value at sample 1"),
+    (lambda: nominal_area("studless_chain", -0.1), "diameter must be > 0 m"),
+])
+def test_bad_fatigue_input_is_refused_clearly(call, match):
+    with pytest.raises(InputError, match=match):
+        call()
