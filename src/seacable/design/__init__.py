@@ -1,4 +1,5 @@
-"""The design layer on the models' results: fatigue (issue 20); extremes, code checks and the report to come."""
+"""The design layer on the models' results (issue 20): fatigue, extreme statistics; code checks and the report
+to come."""
 
 from .fatigue import (
     TN_CURVES,
@@ -9,6 +10,7 @@ from .fatigue import (
     nominal_area,
     tension_cycles,
 )
+from .statistics import StormMaximum, gumbel_maximum, mean_and_dynamic, peaks, weibull_maximum
 
-__all__ = ["TN_CURVES", "TNCurve", "fatigue_damage", "fatigue_life", "narrow_band_damage", "nominal_area",
-           "tension_cycles"]
+__all__ = ["TN_CURVES", "StormMaximum", "TNCurve", "fatigue_damage", "fatigue_life", "gumbel_maximum",
+           "mean_and_dynamic", "narrow_band_damage", "nominal_area", "peaks", "tension_cycles", "weibull_maximum"]

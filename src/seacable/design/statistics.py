@@ -1,0 +1,104 @@
+"""Extreme statistics of a response (issue 20): the storm maximum from the maxima of several seeds (a
+Gumbel fit) or from the peaks of one record (a Weibull fit), and the mean and dynamic parts.
+
+- Over seeds: the maxima of independent realisations of one sea state follow, for many cycles, the Gumbel
+  (type I extreme value) distribution F(x) = exp(-exp(-(x - mu)/beta)), fitted by maximum likelihood
+  (``scipy.stats.gumbel_r``). The most probable maximum (MPM) is its mode ``mu``; the quantile q of the storm
+  maximum is ``mu - beta ln(-ln q)`` (DNV-OS-E301 (2010) Ch.2 Sec.2 B; DNV-RP-C205 (2021) 3.5.8).
+- In one record: its peaks (the largest value between consecutive mean up-crossings) are fitted by a
+  three-parameter Weibull distribution (``scipy.stats.weibull_min``); the largest of the ``N`` peaks of the
+  storm (``N`` = peaks per second x the storm's duration) has the distribution F(x)^N: its mode, near
+  F(x) = 1 - 1/N, is the MPM, and its quantile q is F^-1(q^(1/N)) (Naess & Moan 2013, Stochastic Dynamics
+  of Marine Structures, ch. 6).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import optimize, stats
+
+from ..errors import InputError
+
+__all__ = ["StormMaximum", "gumbel_maximum", "mean_and_dynamic", "peaks", "weibull_maximum"]
+
+
+@dataclass(frozen=True)
+class StormMaximum:
+    """The most probable maximum and a quantile of a storm's maximum, with the fit behind them."""
+
+    most_probable: float
+    quantile: float
+    probability: float  # the quantile's non-exceedance probability
+    method: str
+    parameters: dict
+
+
+def _finite(name: str, x, at_least: int) -> np.ndarray:
+    a = np.asarray(x, float).ravel()
+    if a.size < at_least or not np.all(np.isfinite(a)):
+        raise InputError(f"{name} must hold at least {at_least} finite values, got {a.size} "
+                         f"({int(np.sum(~np.isfinite(a)))} not finite). Suggested fix: run more seeds, or give "
+                         "the records of completed runs.")
+    return a
+
+
+def _probability(q: float) -> float:
+    if not 0.0 < q < 1.0:
+        raise InputError(f"the quantile's probability must lie between 0 and 1, got {q}. Suggested fix: 0.9 for "
+                         "the 90 % quantile of the storm maximum.")
+    return float(q)
+
+
+def gumbel_maximum(maxima, quantile: float = 0.9) -> StormMaximum:
+    """The storm maximum from the maxima of several seeds (at least 5): a Gumbel fit by maximum likelihood;
+    its mode (the MPM) and its ``quantile``."""
+    x = _finite("the seeds' maxima", maxima, 5)
+    q = _probability(quantile)
+    mu, beta = stats.gumbel_r.fit(x)
+    return StormMaximum(float(mu), float(mu - beta * math.log(-math.log(q))), q,
+                        f"Gumbel fit (maximum likelihood) to the maxima of {x.size} seeds",
+                        {"location": float(mu), "scale": float(beta), "seeds": int(x.size)})
+
+
+def peaks(record) -> np.ndarray:
+    """The peaks of a record: its largest value between consecutive up-crossings of its mean."""
+    r = _finite("the record", record, 3)
+    up = np.flatnonzero((r[:-1] < r.mean()) & (r[1:] >= r.mean())) + 1
+    return np.maximum.reduceat(r, up)[:-1] if up.size > 1 else np.zeros(0)
+
+
+def weibull_maximum(record, duration: float, storm: float | None = None, quantile: float = 0.9) -> StormMaximum:
+    """The maximum of a storm of ``storm`` seconds (default: the record's ``duration`` [s]) from the peaks of
+    one record: a three-parameter Weibull fit, raised to the storm's number of peaks."""
+    p = peaks(record)
+    if p.size < 20:
+        raise InputError(f"the record has {p.size} peaks (mean up-crossings), too few for a Weibull fit (20 at "
+                         "least). Suggested fix: a longer record, or the maxima of several seeds (gumbel_maximum).")
+    if not duration > 0:
+        raise InputError(f"the record's duration must be > 0 s, got {duration}. Suggested fix: give it in s.")
+    q = _probability(quantile)
+    n = p.size * (duration if storm is None else storm) / duration
+    shape, loc, scale = stats.weibull_min.fit(p, loc=float(p.min()) - 1e-6 * float(np.ptp(p) or 1.0))
+    dist = stats.weibull_min(shape, loc, scale)
+
+    def density_of_max(x):  # d/dx F(x)^n, in logs
+        return -(math.log(n) + (n - 1) * dist.logcdf(x) + dist.logpdf(x))
+
+    mode = float(dist.ppf(1.0 - 1.0 / n))  # the mode of F^n, for many peaks
+    if n > 10:  # the mode itself, between the values F reaches at 1 - 10/n and 1 - 0.1/n
+        lo, hi = (float(dist.ppf(1.0 - k / n)) for k in (10.0, 0.1))
+        mode = float(optimize.minimize_scalar(density_of_max, bounds=(lo, hi), method="bounded",
+                                              options={"xatol": 1e-10 * (abs(hi) + 1.0)}).x)
+    return StormMaximum(mode, float(dist.ppf(q ** (1.0 / n))), q,
+                        f"3-parameter Weibull fit to {p.size} peaks, {n:.4g} peaks in the storm",
+                        {"shape": float(shape), "location": float(loc), "scale": float(scale), "peaks": int(p.size),
+                         "storm_peaks": float(n)})
+
+
+def mean_and_dynamic(record) -> tuple[float, float]:
+    """The mean of a record and the standard deviation of its dynamic part."""
+    r = _finite("the record", record, 2)
+    return float(r.mean()), float(r.std())
