@@ -592,8 +592,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     ``on_outputs(block)``: the outputs go out in blocks as the run goes, each a :class:`MooringRun` of at
     most ``block_outputs`` consecutive outputs (from t = 0 on, each once, the last one when the run ends
     or is interrupted), instead of being kept: a run's memory is then that of one block whatever its
-    length. By default a block is the largest power of two of outputs within :data:`BLOCK_VALUES` values. A block also goes out before an irregular sea's grid window moves on, so that the block's
-    states lie in the window of ``model.sea``. The run returned then holds no outputs (its arrays have
+    length. By default a block is the largest power of two of outputs within :data:`BLOCK_VALUES` values.
+    A block also goes out before an irregular sea's grid window moves on, so that the block's states lie
+    in the window of ``model.sea``. The run returned then holds no outputs (its arrays have
     0 rows), only its counts and times.
     """
     from . import loop as LP
