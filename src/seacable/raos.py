@@ -1,0 +1,176 @@
+"""Vessel motions from response amplitude operators (RAOs) in an irregular sea (issue 20).
+
+An RAO table gives, for each degree of freedom (surge, sway, heave [m/m]; roll, pitch, yaw [rad/m]), wave
+frequency [rad/s] and wave heading [rad, the direction the waves travel towards, from +X towards +Y], the
+complex response to a unit-amplitude wave whose elevation at the origin is ``cos(w t)``: the motion is
+``|H| cos(w t + phase)``. In seacable's complex convention (``e^(-i w t)``, :class:`seacable.seastate.SeaComponents`)
+that is ``H = |H| e^(-i phase)``, and a sea of components ``a_k cos(k_k . x - w_k t + p_k)`` moves the vessel by
+
+    x_j(t) = sum_k a_k Re{ H_j(w_k, b_k) e^(i (p_k - w_k t)) }                                  (:func:`rao_motion`)
+
+with H interpolated linearly (real and imaginary parts) in frequency and in heading (periodic over 2 pi).
+
+Tables are read from WAMIT's option-4 output (``.4``: PER, BETA, I, |xi|, phase, Re, Im per line; period [s],
+heading and phase [deg], rotations made dimensional by 1/ULEN; WAMIT's phase is the same lead on the incident
+elevation at the origin, WAMIT User Manual v7, section 4.9) and from CSV tables in SI units
+(:func:`read_rao_csv`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError
+
+__all__ = ["DOFS", "RAOTable", "rao_motion", "read_rao_csv", "read_wamit4"]
+
+DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+
+
+@dataclass(frozen=True)
+class RAOTable:
+    """RAOs: ``values[j, h, f]`` the complex response of DOF ``j`` (:data:`DOFS`) at ``heading[h]`` [rad] and
+    ``omega[f]`` [rad/s] ([m/m] for translations, [rad/m] for rotations; convention of the module)."""
+
+    omega: np.ndarray
+    heading: np.ndarray
+    values: np.ndarray
+    source: str = "RAO table"
+
+    def __post_init__(self):
+        w, b, v = (np.asarray(a) for a in (self.omega, self.heading, self.values))
+        if w.ndim != 1 or w.size < 2 or not np.all(np.diff(w) > 0) or w[0] <= 0:
+            raise InputError(f"{self.source}: the frequencies must be at least two, positive and increasing, got "
+                             f"{w.tolist()[:8]}. Suggested fix: list each frequency once, in rad/s.")
+        if b.ndim != 1 or b.size < 1 or np.unique(np.mod(b, 2 * math.pi)).size != b.size:
+            raise InputError(f"{self.source}: each heading must be given once, got {np.degrees(b).tolist()} deg. "
+                             "Suggested fix: remove the repeated headings.")
+        if v.shape != (6, b.size, w.size):
+            raise InputError(f"{self.source}: the RAOs must have the shape (6 DOFs, {b.size} headings, {w.size} "
+                             f"frequencies), got {v.shape}.")
+
+    def at(self, omega, heading) -> np.ndarray:
+        """The RAOs at frequencies ``omega`` [rad/s] and headings ``heading`` [rad] (arrays of one shape):
+        (6, ...) complex. Frequencies outside the table are refused (:func:`rao_motion` says which)."""
+        w = np.asarray(omega, float)
+        b = np.mod(np.asarray(heading, float), 2 * math.pi)
+        order = np.argsort(np.mod(self.heading, 2 * math.pi))
+        hs = np.mod(self.heading, 2 * math.pi)[order]
+        vals = self.values[:, order]
+        if hs.size == 1:
+            lo = hi = np.zeros(b.shape, int)
+            frac = np.zeros(b.shape)
+        else:  # periodic: the heading after the last is the first plus 2 pi
+            ext = np.r_[hs, hs[0] + 2 * math.pi]
+            b2 = np.where(b < hs[0], b + 2 * math.pi, b)
+            lo = np.clip(np.searchsorted(ext, b2, side="right") - 1, 0, hs.size - 1)
+            frac = (b2 - ext[lo]) / (ext[lo + 1] - ext[lo])
+            hi = (lo + 1) % hs.size
+        out = np.empty((6,) + w.shape, complex)
+        for j in range(6):
+            re = [np.interp(w, self.omega, vals[j, h].real) for h in range(hs.size)]
+            im = [np.interp(w, self.omega, vals[j, h].imag) for h in range(hs.size)]
+            f = np.array(re) + 1j * np.array(im)  # (nh, ...)
+            idx = np.indices(w.shape)
+            out[j] = (1 - frac) * f[(lo, *idx)] + frac * f[(hi, *idx)]
+        return out
+
+
+def rao_motion(table: RAOTable, sea, times, *, energy_outside: float = 1e-3) -> np.ndarray:
+    """The 6 motions (:data:`DOFS`) of a vessel at ``times`` [s] in the sea ``sea``
+    (:class:`seacable.seastate.SeaComponents`): (6, len(times)) [m, rad].
+
+    The table must cover the frequencies of the sea's components: components outside it that carry more than
+    ``energy_outside`` of the sea's variance are refused (named); the others are left out, and their share
+    is reported in the message of a refusal. A table of one heading applies to waves of that heading only."""
+    w = np.asarray(sea.omega, float)
+    a = np.asarray(sea.amplitude, float)
+    b = np.broadcast_to(np.asarray(sea.heading, float), w.shape)
+    outside = (w < table.omega[0]) | (w > table.omega[-1])
+    share = float(np.sum(a[outside] ** 2) / max(np.sum(a**2), 1e-300))
+    if share > energy_outside:
+        missing = np.unique(np.round(w[outside], 4))
+        raise InputError(f"{table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s, but the sea has "
+                         f"{share:.1%} of its variance at {missing.size} frequencies outside it (e.g. "
+                         f"{', '.join(f'{x:g}' for x in missing[:4])} rad/s). Suggested fix: extend the RAO "
+                         "table over the spectrum, or narrow the sea's frequency_range.")
+    if table.heading.size == 1:
+        off = np.abs(np.angle(np.exp(1j * (b - table.heading[0]))))
+        if np.any(off > 1e-9):
+            raise InputError(f"{table.source} has the single heading {math.degrees(table.heading[0]):g} deg, but "
+                             f"the sea's components travel towards up to {math.degrees(float(off.max())):g} deg "
+                             "from it. Suggested fix: give RAOs for the sea's headings (its heading and spreading).")
+    keep = ~outside
+    h = table.at(w[keep], b[keep])  # (6, n)
+    t = np.asarray(times, float)
+    phase = np.exp(1j * (np.asarray(sea.phase, float)[keep][None, :] - np.multiply.outer(t, w[keep])))  # (nt, n)
+    return np.real((phase * a[keep]) @ h.T).T
+
+
+def _table(dof_of: np.ndarray, source: str, omega_of, heading_of, value_of) -> RAOTable:
+    """An RAOTable from rows, each a DOF (1-6), a frequency, a heading and a complex value."""
+    w = np.unique(omega_of)
+    b = np.unique(heading_of)
+    v = np.full((6, b.size, w.size), np.nan + 0j)
+    dof = np.asarray(dof_of).astype(int)
+    if np.any((dof < 1) | (dof > 6)):
+        wrong = sorted(set(dof.tolist()) - set(range(1, 7)))
+        raise InputError(f"{source}: degrees of freedom must be 1-6 (surge to yaw), got {wrong}. Suggested fix: "
+                         "number them 1 surge, 2 sway, 3 heave, 4 roll, 5 pitch, 6 yaw.")
+    v[dof - 1, np.searchsorted(b, heading_of), np.searchsorted(w, omega_of)] = value_of
+    hole = np.argwhere(np.isnan(v.real))
+    if hole.size:
+        j, h, f = hole[0]
+        raise InputError(f"{source}: {len(hole)} (DOF, heading, frequency) entries are missing, e.g. {DOFS[j]} at "
+                         f"heading {math.degrees(b[h]):g} deg and {w[f]:.4g} rad/s. Suggested fix: give every DOF at "
+                         "every heading and frequency of the table.")
+    return RAOTable(w, b, v, source)
+
+
+def read_wamit4(path, ulen: float = 1.0) -> RAOTable:
+    """The RAOs of a WAMIT option-4 file (``.4``): lines ``PER BETA I MOD PHS RE IM`` (period [s], heading [deg],
+    DOF 1-6, |xi|, phase [deg], ...); rotations divided by ``ulen`` [m], WAMIT's length scale. Lines of zero or
+    negative period (WAMIT's infinite and zero frequency limits) are skipped."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
+    if not ulen > 0:
+        raise InputError(f"ulen must be > 0 m (WAMIT's ULEN), got {ulen}. Suggested fix: the ULEN of the .gdf file.")
+    try:
+        data = np.loadtxt(path, ndmin=2)
+    except ValueError as err:
+        raise InputError(f"RAO file '{path}' is not a WAMIT .4 table of numbers: {err}. Suggested fix: give the "
+                         "option-4 output (PER BETA I MOD PHS RE IM on each line).") from None
+    if data.shape[1] < 5:
+        raise InputError(f"RAO file '{path}' has {data.shape[1]} columns, expected 7 (PER BETA I MOD PHS RE IM).")
+    data = data[data[:, 0] > 0]
+    dof = data[:, 2]
+    scale = np.where(dof >= 4, 1.0 / ulen, 1.0)
+    value = data[:, 3] * scale * np.exp(-1j * np.radians(data[:, 4]))
+    return _table(dof, f"RAO file '{path.name}'", 2 * math.pi / data[:, 0], np.radians(data[:, 1]), value)
+
+
+def read_rao_csv(path) -> RAOTable:
+    """The RAOs of a CSV table in SI units, header ``frequency,heading,dof,amplitude,phase``: frequency [rad/s],
+    heading [rad], dof 1-6 (surge to yaw), amplitude [m/m or rad/m], phase [rad] (the motion is
+    ``amplitude cos(w t + phase)`` for the elevation ``cos(w t)`` at the origin)."""
+    path = Path(path)
+    if not path.is_file():
+        raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
+    names = ("frequency", "heading", "dof", "amplitude", "phase")
+    try:
+        table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
+    except ValueError as err:
+        raise InputError(f"RAO file '{path}' is not a CSV table: {err}.") from None
+    if table.dtype.names is None or any(n not in table.dtype.names for n in names):
+        raise InputError(f"RAO file '{path}' needs the columns {', '.join(names)}, got "
+                         f"{', '.join(table.dtype.names or ())}. Suggested fix: a header row '{','.join(names)}'.")
+    table = np.atleast_1d(table)
+    if not all(np.all(np.isfinite(table[n])) for n in names):
+        raise InputError(f"RAO file '{path}' has empty or non-numeric values. Suggested fix: one number per cell.")
+    value = table["amplitude"] * np.exp(-1j * table["phase"])
+    return _table(table["dof"], f"RAO file '{path.name}'", table["frequency"], table["heading"], value)
