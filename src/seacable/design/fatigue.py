@@ -107,8 +107,8 @@ def fatigue_damage(tension, curve="studless_chain", *, diameter: float | None = 
     c = _curve(curve)
     a = _area(c, diameter, area)
     ranges, counts = tension_cycles(tension)
-    stress = ranges / a / 1e6  # [MPa]
-    return float(np.sum(counts * stress**c.m) / c.a_d)
+    with np.errstate(divide="ignore"):  # a zero range: infinitely many cycles to failure, no damage
+        return float(np.sum(counts / c.cycles_to_failure(ranges / a / 1e6)))  # stress ranges [MPa]
 
 
 def narrow_band_damage(m0: float, zero_upcrossing_rate: float, duration: float, curve="studless_chain", *,
