@@ -37,7 +37,7 @@ from .errors import (
 )
 from .io import load_case, parse_case
 from .laying.inputs import Bathymetry, PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion
-from .mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
+from .mooring.motion import HarmonicMotion, PlatformMotion, RAOMotion, TimeSeriesMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
 from .simulate import check, run
@@ -79,6 +79,7 @@ __all__ = [
     "HarmonicMotion",
     "TimeSeriesMotion",
     "PlatformMotion",
+    "RAOMotion",
     # mooring systems
     "SystemCase",
     "MooringSystem",

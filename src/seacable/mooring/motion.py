@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
 
@@ -20,7 +21,8 @@ from .._model import UNION_TAGS, Model, quantity
 from .._ramp import smooth_ramp
 from ..errors import InputError
 
-__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "TimeSeriesMotion", "forcing_period", "rotation_matrix"]
+__all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "RAOMotion", "SeaRAOMotion", "TimeSeriesMotion", "bind",
+           "forcing_period", "rotation_matrix", "sea_of"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -179,24 +181,116 @@ class PlatformMotion(Model):
         return _ramped(q, dq, ddq, t, self.ramp)
 
     def channels(self, times, base):
+        return _rigid_channels(self.reference, base, *self.dofs(times))
+
+
+def _rigid_channels(reference, base, q, dq, ddq):
+    """Positions, velocities and accelerations (nt, k, 3) of points at ``base`` (k, 3) at rest on a platform
+    moving by the six motions ``q`` (nt, 6) about ``reference``, with the motions' derivatives."""
+    base = np.asarray(base, float)
+    ref = np.asarray(reference, float)
+    arm = base - ref
+
+    def position(q):
+        R = rotation_matrix(q[:, 3], q[:, 4], q[:, 5])
+        return ref + q[:, None, :3] + np.einsum("tij,kj->tki", R, arm)
+
+    # velocity and acceleration of the rotating arm by central differences in the motions (not in time,
+    # so a time series is never read outside its table): v = P'(q) q', a = P'(q) q'' + q'^T P''(q) q'
+    h = 1e-4
+    x = position(q)
+    xp, xm = position(q + h * dq), position(q - h * dq)
+    v = (xp - xm) / (2 * h)
+    a = (xp - 2 * x + xm) / (h * h) + (position(q + h * ddq) - position(q - h * ddq)) / (2 * h)
+    return x, v, a
+
+
+@functools.lru_cache(maxsize=8)
+def _rao_table(path: str, stamp: tuple, form: str, ulen: float):
+    """The RAO table of a file, read once for each version of the file (``stamp``: its modification time and
+    size)."""
+    from ..raos import read_rao_csv, read_wamit4
+
+    return read_rao_csv(path) if form == "csv" else read_wamit4(path, ulen)
+
+
+class RAOMotion(Model):
+    """Rigid-body motion of a platform from its response amplitude operators in the case's waves (issue 20).
+
+    The six motions (surge, sway, heave [m]; roll, pitch, yaw [rad], about ``reference``, R = Rz Ry Rx) are
+    the platform's mean position ``mean_offset`` (under steady wind, current and drift loads: from the system
+    statics, or given) plus its first-order response to the environment's irregular sea or regular waves
+    through the RAO table of ``file`` (:func:`seacable.raos.rao_motion`; the RAO phases are referred to the
+    wave elevation at the reference point's horizontal position, at rest). The wave response starts with
+    the smooth ramp; the mean offset is there from the start, where the static start puts the lines. A
+    fairlead at rest at ``p`` moves to ``reference + d + R (p - reference)`` as with :class:`PlatformMotion`.
+    """
+
+    type: Literal["rao"] = "rao"
+    file: str = Field(description="RAO table: WAMIT option-4 output ('.4'), or a CSV in SI units (frequency "
+                                  "[rad/s], heading [rad], dof, amplitude, phase [rad]); relative to the case file.")
+    format: Literal["auto", "wamit", "csv"] = Field(
+        "auto", description="Format of 'file': 'auto' reads a '.csv' as CSV and anything else as WAMIT '.4'.")
+    ulen: quantity("m", gt=0, fix="give WAMIT's length scale ULEN in metres (1 when the file is dimensional).") = \
+        Field(1.0, description="WAMIT's length scale ULEN: rotations in the file are per ULEN. [m]")
+    reference: _XYZ = Field((0.0, 0.0, 0.0), description="RAO reference point (centre of rotation) at rest. [m]")
+    mean_offset: _SIX = Field((0.0,) * 6, description="Mean position about which the platform moves: surge, "
+                                                      "sway, heave [m], roll, pitch, yaw [rad].")
+    ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start of the wave response. [s]")
+
+    def table(self):
+        """The RAO table of ``file`` (:class:`seacable.raos.RAOTable`)."""
+        path = Path(self.file)
+        if not path.is_file():
+            raise InputError(f"motion.file: RAO file '{path}' does not exist or is not a file. Suggested fix: give "
+                             "its path relative to the case file.")
+        form = self.format if self.format != "auto" else ("csv" if path.suffix.lower() == ".csv" else "wamit")
+        st = path.stat()
+        return _rao_table(str(path.resolve()), (st.st_mtime_ns, st.st_size), form, float(self.ulen))
+
+    def in_sea(self, sea) -> SeaRAOMotion:
+        """This motion in the sea ``sea`` (:class:`seacable.seastate.SeaComponents`, None in calm water)."""
+        if sea is None:
+            raise InputError("a motion of type 'rao' moves the platform in waves, but the environment has none. "
+                             "Suggested fix: give environment.waves (an irregular sea with 'spectrum', or regular "
+                             "waves), or use a 'platform' motion.")
+        table = self.table()
+        wave_dofs = functools.partial(_rao_dofs, table, sea, self.reference[:2])
+        wave_dofs(np.zeros(1))  # frequencies and headings outside the table are refused here
+        return SeaRAOMotion(self, wave_dofs)
+
+    def channels(self, times, base):
+        raise InputError("a motion of type 'rao' needs the case's waves: it is bound to them when the run is "
+                         "prepared (seacable.mooring.motion.bind). Suggested fix: run the case, or call "
+                         "motion.in_sea(sea).channels(times, base).")
+
+
+def _rao_dofs(table, sea, at, times):
+    from ..raos import rao_motion
+
+    return tuple(m.T for m in rao_motion(table, sea, times, at=at, derivatives=True))
+
+
+@dataclass(frozen=True)
+class SeaRAOMotion:
+    """An :class:`RAOMotion` in a given sea: the six motions and the fairleads' channels at any times."""
+
+    motion: RAOMotion
+    wave_dofs: object  # times -> the wave response (nt, 6) and its two derivatives
+
+    @property
+    def reference(self):
+        return self.motion.reference
+
+    def dofs(self, times):
+        """The six motions (nt, 6) [m, rad] and their time derivatives: the mean offset plus the ramped wave
+        response."""
         t = np.asarray(times, float)
-        base = np.asarray(base, float)
-        ref = np.asarray(self.reference, float)
-        arm = base - ref
+        q, dq, ddq = _ramped(*self.wave_dofs(t), t, self.motion.ramp)
+        return q + np.asarray(self.motion.mean_offset, float), dq, ddq
 
-        def position(q):
-            R = rotation_matrix(q[:, 3], q[:, 4], q[:, 5])
-            return ref + q[:, None, :3] + np.einsum("tij,kj->tki", R, arm)
-
-        # velocity and acceleration of the rotating arm by central differences in the motions (not in time,
-        # so a time series is never read outside its table): v = P'(q) q', a = P'(q) q'' + q'^T P''(q) q'
-        q, dq, ddq = self.dofs(t)
-        h = 1e-4
-        x = position(q)
-        xp, xm = position(q + h * dq), position(q - h * dq)
-        v = (xp - xm) / (2 * h)
-        a = (xp - 2 * x + xm) / (h * h) + (position(q + h * ddq) - position(q - h * ddq)) / (2 * h)
-        return x, v, a
+    def channels(self, times, base):
+        return _rigid_channels(self.motion.reference, base, *self.dofs(times))
 
 
 def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
@@ -246,8 +340,8 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     return PlatformMotion(file=str(path)) if platform else TimeSeriesMotion(file=str(path))
 
 
-Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion, Field(discriminator="type")]
-UNION_TAGS.update(("harmonic", "time_series", "platform"))
+Motion = Annotated[HarmonicMotion | TimeSeriesMotion | PlatformMotion | RAOMotion, Field(discriminator="type")]
+UNION_TAGS.update(("harmonic", "time_series", "platform", "rao"))
 
 
 def forcing_period(motion, wave_period: float | None = None) -> float | None:
@@ -261,14 +355,36 @@ def forcing_period(motion, wave_period: float | None = None) -> float | None:
     return min(periods, default=None)
 
 
-def bind(motion, base, duration: float):
+def sea_of(water):
+    """The waves of a :class:`~seacable.mooring.solver.Water` as sea components
+    (:class:`seacable.seastate.SeaComponents`): its irregular sea, its regular wave as one component, or None
+    in calm water."""
+    if water.sea is not None:
+        return water.sea
+    if water.wave_height <= 0.0:
+        return None
+    from ..seastate import SeaComponents
+    from ..waves import wave_number
+
+    depth = math.inf if water.depth is None else float(water.depth)
+    k = float(wave_number(water.wave_period, water.depth, water.gravity))
+    return SeaComponents(amplitude=np.array([0.5 * water.wave_height]), omega=np.array([2 * math.pi /
+                         water.wave_period]), wave_number=np.array([k]), heading=np.array([water.wave_heading]),
+                         phase=np.array([water.wave_phase]), depth=depth, gravity=water.gravity,
+                         mean_heading=water.wave_heading)
+
+
+def bind(motion, base, duration: float, sea=None):
     """``motion`` applied to the points at ``base`` (n, 3) as a function of time, or None for no motion.
 
     The function returns positions, velocities and accelerations (len(times), n, 3). It is evaluated once
-    at 0 and ``duration`` here, so that a time series too short fails before a run starts.
+    at 0 and ``duration`` here, so that a time series too short fails before a run starts. An RAO motion
+    (:class:`RAOMotion`) moves in the sea ``sea`` (:func:`sea_of`).
     """
     if motion is None:
         return None
+    if isinstance(motion, RAOMotion):
+        motion = motion.in_sea(sea)
     base = np.asarray(base, float)
 
     def channels(times):

@@ -17,7 +17,7 @@ from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .loop import evaluate_states
-from .motion import bind, forcing_period
+from .motion import RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .solver import MooringModel, MooringRun, Water, line_end_nodes, pushover, simulate, static_equilibrium
 
@@ -376,7 +376,10 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
     # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
     # now (a time series too short fails here) and check it at the output times
-    motion = bind(a.motion, net.channel_positions(), a.duration)
+    motion = bind(a.motion, net.channel_positions(), a.duration, sea=sea_of(model.water))
+    if isinstance(a.motion, RAOMotion):  # the platform's mean offset: the static start is there
+        model, start = (at_motion_start(m, motion) for m in (model, start))
+        net = model.network
     times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
         check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
@@ -384,6 +387,16 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     model.check_sea(a.duration, np.concatenate((net.position, motion(times)[0].reshape(-1, 3)))
                     if motion is not None else net.position)
     return MooringDynamicSetup(model, start, motion)
+
+
+def at_motion_start(model: MooringModel, motion) -> MooringModel:
+    """``model`` with its prescribed nodes where ``motion`` puts them at t = 0 (a platform's mean offset, where
+    a run's static start is solved)."""
+    net = model.network
+    pres = np.flatnonzero(net.channel >= 0)
+    X = net.position.copy()
+    X[pres] = motion(np.zeros(1))[0][0, net.channel[pres]]
+    return MooringModel(net.replace(position=X), model.water)
 
 
 def run_mooring_static(case: Case):
