@@ -81,18 +81,20 @@ import time as _time
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Literal
+from typing import Annotated, Literal, Union
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Discriminator, Field, Tag, model_validator
 
 from .._limits import check_run_size
 from .._model import Model, quantity, suggest
 from ..case import SeabedContact
 from ..errors import ConvergenceError, InputError, SeacableWarning
-from ..mooring.motion import Motion, PlatformMotion, rotation_matrix
+from ..environment import IrregularWaves
+from ..mooring.motion import Motion, PlatformMotion, RAOMotion, rotation_matrix, sea_of
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from ..mooring.solver import MooringModel, Water, advance_interval
+from ..mooring.solver import simulate as simulate_lines
 from ..results import make_dataset, var
 from . import _dyn_kernel as DK
 from ._stat_model import euler_rate_map
@@ -179,6 +181,15 @@ class LineFailure(Model):
         return self
 
 
+def _motion_type(value) -> str:
+    return value.get("type", "platform") if isinstance(value, dict) else getattr(value, "type", "platform")
+
+
+#: A prescribed body's motion: 'platform' (harmonic or a time series; the default) or 'rao' (RAOs in the waves).
+BodyMotion = Annotated[Union[Annotated[PlatformMotion, Tag("platform")], Annotated[RAOMotion, Tag("rao")]],  # noqa: UP007
+                       Discriminator(_motion_type)]
+
+
 class SystemDynamicAnalysis(Model):
     """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
 
@@ -197,8 +208,9 @@ class SystemDynamicAnalysis(Model):
     output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
     n_elements: int | None = Field(None, ge=1, le=100_000,
                                    description="Elements per line for every line (default: each line's own).")
-    body_motions: dict[str, PlatformMotion] = Field(
-        default_factory=dict, description="6-DOF motion of each prescribed body, about its reference point.")
+    body_motions: dict[str, BodyMotion] = Field(
+        default_factory=dict, description="6-DOF motion of each prescribed body, about its reference point: "
+                                          "'platform' (harmonic or a time series) or 'rao' (its RAOs in the waves).")
     point_motions: dict[str, Motion] = Field(default_factory=dict, description="Motion of each coupled point.")
     external_forces: dict[str, ExternalForceSeries] = Field(
         default_factory=dict, description="External force time series per free body.")
@@ -288,6 +300,7 @@ class SystemFE:
     ext_f: np.ndarray = None
     ext_n: np.ndarray = None
     spin: np.ndarray = None  # (nb, 3) body axes: the axis turning about which moves nothing (a rod's), or zeros
+    body_motions: dict = field(default_factory=dict)  # prescribed body -> its motion bound to the run (dofs(times))
 
     def kernel_args(self):
         m = self.model
@@ -311,18 +324,17 @@ def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
     cur = env.current
     depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
     w = env.waves
-    if w is not None and not hasattr(w, "height"):
-        raise InputError(f"environment.waves: an irregular sea (spectrum '{w.spectrum}') is not supported by the "
-                         "mooring-system model yet; it runs regular waves only. Suggested fix: give regular waves "
-                         "(height, period), or run each line as a mooring_dynamic case.")
+    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
+    w_reg = None if sea is not None else w
     contact = analysis.seabed_contact if analysis is not None else SeabedContact()
     alpha = analysis.rayleigh[0] if analysis is not None else 0.0
     return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
                  seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
                  friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
                  current_speeds=tuple(speeds), current_heading=cur.heading,
-                 wave_height=w.height if w else 0.0, wave_period=w.period if w else 10.0,
-                 wave_heading=w.heading if w else 0.0, wave_phase=w.phase if w else 0.0, rayleigh_mass=alpha)
+                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
+                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
+                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none")
 
 
 def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicAnalysis | None = None, *,
@@ -686,6 +698,9 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
                 mot = analysis.body_motions.get(name)
                 if mot is not None:
                     mot = mot.model_copy(update={"reference": tuple(fe.system.bodies[name].position[:3])})
+                    if isinstance(mot, RAOMotion):
+                        mot = mot.in_sea(sea_of(fe.model.water))
+                    fe.body_motions[name] = mot
         if mot is not None:
             mot.channels(np.array([0.0, duration]), base[chans])  # a time series too short fails here
             motions.append((mot, np.array(chans)))
@@ -791,6 +806,22 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
                      body_angular_velocity=np.array(bw[:nt]).reshape(nt, nb, 3))
 
 
+def _simulate_lines(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
+                    analysis: SystemDynamicAnalysis | None = None, tol: float = 1e-7, max_iter: int = 30,
+                    beta: float = 0.25, gamma: float = 0.5, progress=None) -> SystemRun:
+    """:func:`simulate_system` for a system whose lines are all it solves for (:func:`lines_only`): the mooring
+    model's compiled time loop (:func:`seacable.mooring.solver.simulate`), the same Newmark scheme."""
+    run = simulate_lines(fe.model, _channels_fn(fe, analysis, duration), duration, dt, output_interval,
+                         initial=start.position, tol=tol, max_iter=max_iter, progress=progress, beta=beta,
+                         gamma=gamma)
+    nt = len(run.time)
+    return SystemRun(time=run.time, position=run.position, velocity=run.velocity, tension=run.tension,
+                     body_position=np.zeros((nt, 0, 6)), body_velocity=np.zeros((nt, 0, 6)),
+                     failure_time=np.zeros(0), time_step=run.time_step, steps=run.steps, iterations=run.iterations,
+                     wall_time=run.wall_time, interrupted=run.interrupted,
+                     body_angular_velocity=np.zeros((nt, 0, 3)))
+
+
 def _global_pose(q, frame) -> np.ndarray:
     """The bodies' poses (nb, 6) with the global (roll, pitch, yaw) of their charts' ``R0 R(angles)``."""
     out = np.array(q, float).reshape(-1, 6)
@@ -872,6 +903,7 @@ class SystemDynamicSetup:
 
     fe: SystemFE
     analysis: SystemDynamicAnalysis
+    start_fe: SystemFE  # the system of the static start: ``fe``, or with the fairleads where the motions start
 
 
 def prepare_system_dynamic(case) -> SystemDynamicSetup:
@@ -941,8 +973,41 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     check_run_size(f"system_dynamic case '{getattr(case, 'name', 'system')}'", steps=steps,
                    stored_values=outputs * (2 * 3 * net.n_nodes + net.n_elements + 12 * len(fe.free_bodies)),
                    fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
-    _channels_fn(fe, a, a.duration)
-    return SystemDynamicSetup(fe, a)
+    channels = _channels_fn(fe, a, a.duration)
+    start_fe = fe
+    if any(isinstance(m, RAOMotion) for m in a.body_motions.values()):
+        # a platform's mean offset: the static start is solved where the motions put the fairleads at t = 0
+        # (the run's motions move the nodes from where the case puts them)
+        from ..mooring.run import at_motion_start
+
+        start_fe = dataclasses.replace(fe, model=at_motion_start(fe.model, channels))
+    if fe.model.water.sea is not None:
+        if not lines_only(fe):
+            raise InputError(f"environment.waves: an irregular sea (spectrum '{env.waves.spectrum}') loads the lines of "
+                             "a system whose bodies and points all move as prescribed (or are fixed); this one has "
+                             f"{_coupled_parts(fe)}. Suggested fix: make the bodies 'prescribed' (a 'rao' motion moves "
+                             "one in the sea), drop the failures, or give regular waves (height, period).")
+        t_out = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
+        fe.model.check_sea(a.duration, np.concatenate((fe.model.network.position, channels(t_out)[0].reshape(-1, 3))))
+    return SystemDynamicSetup(fe, a, start_fe)
+
+
+def lines_only(fe: SystemFE) -> bool:
+    """True when the system's lines are all it solves for: no free bodies, no node tied to a body or a point
+    (failing line ends are), no external force on a node. Such a run is the mooring model's
+    (:func:`seacable.mooring.solver.simulate`: its compiled time loop, irregular seas)."""
+    return not fe.free_bodies and len(fe.con_node) == 0 and not np.any(fe.node_fext)
+
+
+def _coupled_parts(fe: SystemFE) -> str:
+    parts = [f"free bodies ({', '.join(fe.free_bodies)})"] if fe.free_bodies else []
+    if np.any(fe.con_line >= 0):
+        parts.append("line failures")
+    elif len(fe.con_node):
+        parts.append("line ends tied to free points")
+    if np.any(fe.node_fext):
+        parts.append("points with external forces")
+    return ", ".join(parts) or "nothing coupled"
 
 
 def _padded(per_line, width, fill=np.nan, lead=()):
@@ -998,7 +1063,7 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
         else:
             bp[:, k] = body.position
             a = getattr(case, "analysis", None)
-            mot = a.body_motions.get(name) if a is not None and body.kind == "prescribed" else None
+            mot = fe.body_motions.get(name) if body.kind == "prescribed" else None
             if mot is not None:
                 d, dd, _ = mot.dofs(run.time)
                 bp[:, k] += d
@@ -1088,10 +1153,11 @@ def run_system_dynamic(case, progress=None):
     setup = prepare_system_dynamic(case)
     a = setup.analysis
     fe = setup.fe
-    start = start_state(fe, a, case.environment)
+    start = start_state(setup.start_fe, a, case.environment)
     nd = a.numerical_damping
-    run = simulate_system(fe, start, a.duration, a.time_step, a.output_interval, analysis=a,
-                          tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations, progress=progress,
-                          beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
+    # an irregular sea: the mooring model's loop (the coupled solver takes regular waves only)
+    run = (_simulate_lines if fe.model.water.sea is not None else simulate_system)(
+        fe, start, a.duration, a.time_step, a.output_interval, analysis=a, tol=min(a.tolerance * 10, 1e-4),
+        max_iter=a.max_iterations, progress=progress, beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
     return system_result(fe, run, case=case, settings={"damping_ratio": a.damping_ratio, "rayleigh": list(a.rayleigh),
                                                        "start": start.start})
