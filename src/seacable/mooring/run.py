@@ -460,6 +460,14 @@ def snap_variables(sink, network: Network) -> dict:
             "snap_tension": var("snap", peak[order].astype(float), "N", "snap load (peak tension after slack)")}
 
 
+def strength_variables(network: Network) -> dict:
+    """The line's ``breaking_load``: the least minimum breaking load of its line types [N] (NaN when one has
+    none), what the design checks compare its tension with (:mod:`seacable.design.checks`)."""
+    mbl = network.breaking_load
+    value = float(np.min(mbl)) if mbl is not None and mbl.size and np.all(np.isfinite(mbl)) else math.nan
+    return {"breaking_load": var((), value, "N", "minimum breaking load of the line (its weakest segment)")}
+
+
 def run_attributes(run: MooringRun) -> dict:
     """The attributes of a time-domain result: interrupted or not, the wall time, the time step used and the
     recommended one."""
@@ -522,7 +530,7 @@ def run_mooring_dynamic(case: Case, progress=None, out=None):
                                                      or getattr(waves, "tp", None)),
                        kinematics=line_end_nodes(model.network),
                        on_outputs=lambda block: sink.append(*run_variables(model, block)))
-        events = snap_variables(sink, model.network)
+        events = {**snap_variables(sink, model.network), **strength_variables(model.network)}
     settings = _settings(model, time_step=run.time_step, steps=run.steps, newton_iterations=run.iterations,
                          spectral_radius=run.spectral_radius, damping_ratio=a.damping_ratio,
                          rayleigh=list(a.rayleigh))

@@ -1049,6 +1049,9 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
         if li >= 0 and np.isfinite(run.failure_time[j]):
             ft[li] = np.nanmin([ft[li], run.failure_time[j]])
     data["failure_time"] = var("line", ft, "s", "time the line failed (NaN: intact)")
+    mbl = [[seg.line_type.breaking_load for seg in sysm.lines[name].line.segments] for name in fe.line_names]
+    data["breaking_load"] = var("line", np.array([min(m) if None not in m else np.nan for m in mbl], float), "N",
+                                "minimum breaking load of the line (its weakest segment; NaN: not given)")
     bodies = list(sysm.bodies)
     bp = np.zeros((nt, len(bodies), 6))
     bv = np.zeros((nt, len(bodies), 6))
