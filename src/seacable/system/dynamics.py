@@ -89,8 +89,8 @@ from pydantic import Discriminator, Field, Tag, model_validator
 from .._limits import check_run_size
 from .._model import Model, quantity, suggest
 from ..case import SeabedContact
-from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..environment import IrregularWaves
+from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion, rotation_matrix, sea_of
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from ..mooring.solver import MooringModel, Water, advance_interval
@@ -1065,7 +1065,6 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 bw[:, k] = run.body_angular_velocity[:, j]
         else:
             bp[:, k] = body.position
-            a = getattr(case, "analysis", None)
             mot = fe.body_motions.get(name) if body.kind == "prescribed" else None
             if mot is not None:
                 d, dd, _ = mot.dofs(run.time)
