@@ -442,7 +442,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
     a run of the runs' duration; the Weibull fit of each seed's peaks
     (:func:`~seacable.design.statistics.weibull_maximum`) is raised to the storm's duration, and the table holds
     the mean of the seeds' estimates. The design maximum is the Gumbel MPM where it is fitted and the storm is
-    the runs' duration, else the mean Weibull MPM, else the largest maximum of the seeds; the dynamic part of
+    the runs' duration, else the mean Weibull MPM, else the Gumbel MPM, else the largest maximum of the seeds (the
+    basis says when that is the maximum of a run shorter than the storm); the dynamic part of
     the tension is the design maximum less the mean (DNV-OS-E301 Ch.2 Sec.2 B: T_c = T_c,mean + T_c,dyn).
 
     Parameters
@@ -482,12 +483,15 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())
         same_storm = math.isclose(storm, duration, rel_tol=1e-6)
+        short = "" if same_storm else f" of {duration:.4g} s runs, NOT of the {storm:.4g} s storm (no Weibull fit)"
         if math.isfinite(g_mpm) and same_storm:
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds"
         elif math.isfinite(w_mpm):
             design, basis = w_mpm, f"Weibull MPM, mean over {int(fitted.sum())} seed(s)"
+        elif math.isfinite(g_mpm):
+            design, basis = g_mpm, f"Gumbel MPM over {n} seeds{short}"
         else:
-            design, basis = float(g["maximum"].max()), f"largest simulated maximum of {n} seed(s)"
+            design, basis = float(g["maximum"].max()), f"largest simulated maximum of {n} seed(s){short}"
         method = (f"Gumbel (max. likelihood) over seeds' maxima of {duration:.4g} s runs, {GUMBEL_REFERENCE}; "
                   f"3-parameter Weibull of each seed's peaks raised to a {storm:.4g} s storm, {WEIBULL_REFERENCE}")
         rows.append({"load_case": load_case, "line": line, "end": end, "seeds": n, "duration": duration,
