@@ -326,7 +326,8 @@ def _cmd_report(args) -> int:
 
     options = ReportOptions(storm_duration=args.storm_duration, quantile=args.quantile,
                             consequence_class=args.consequence_class, offset_limit=args.offset_limit,
-                            scatter=args.scatter, tn_curve=args.tn_curve, nominal_diameter=args.nominal_diameter)
+                            scatter=args.scatter, tn_curve=args.tn_curve, nominal_diameter=args.nominal_diameter,
+                            allowed_uplift=args.allowed_uplift)
     for path in make_report(args.source, args.output, options):
         print(f"wrote {path}")
     return 0
@@ -506,6 +507,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="DNV-OS-E301 consequence class (default 1)")
     p.add_argument("--offset-limit", type=_number, help="allowed horizontal offset of the bodies [m] (default: "
                                                         "not checked)")
+    p.add_argument("--allowed-uplift", type=_number, default=0.0,
+                   help="allowed vertical force on an anchor [N] (default 0: a drag anchor takes no uplift)")
     p.add_argument("--scatter", help="scatter diagram, CSV with columns hs [m], tp [s], probability [-] (and "
                                      "optionally heading [rad]), matched to the load cases' sea states: the "
                                      "fatigue life")

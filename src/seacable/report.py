@@ -86,6 +86,10 @@ def _with_units(table: pd.DataFrame) -> pd.DataFrame:
 
 # ------------------------------------------------------------------------------------------------- figures
 
+#: The colour of the data in the figures (Okabe & Ito's blue), apart from the page's own blue.
+_SERIES = "#0072b2"
+
+
 def _png(fig) -> str:
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110, bbox_inches="tight", facecolor="white")
@@ -115,7 +119,7 @@ def _figure_time_series(runs, seeds: pd.DataFrame) -> tuple[str, str] | None:
         y = ds_.line_series(ds, "fairlead_tension", top["line"]) / 1e3
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(10.4, 3.4))
-    ax.plot(t, y, color="#1f4e79", lw=0.9, label="fairlead tension")
+    ax.plot(t, y, color=_SERIES, lw=0.9, label="fairlead tension")
     ax.axhline(float(np.mean(y)), color="#7f7f7f", lw=0.8, ls="--", label=f"mean {_plain(np.mean(y))} kN")
     k = int(np.argmax(y))
     ax.plot(t[k], y[k], "o", color="#c00000", ms=6, label=f"maximum {_plain(y[k])} kN at t = {_plain(t[k])} s")
@@ -144,7 +148,7 @@ def _figure_maxima(seeds: pd.DataFrame, extremes: pd.DataFrame) -> tuple[str, st
     for k, (_, e) in enumerate(shown.iterrows()):
         g = fair[(fair["load_case"] == e["load_case"]) & (fair["line"] == e["line"])]
         jitter = np.linspace(-0.15, 0.15, len(g)) if len(g) > 1 else np.zeros(1)
-        ax.plot(k + jitter, g["maximum"] / 1e3, "o", color="#1f4e79", ms=4, alpha=0.75,
+        ax.plot(k + jitter, g["maximum"] / 1e3, "o", color=_SERIES, ms=4,
                 label="maximum of a seed" if k == 0 else None)
         ax.plot([k - 0.3, k + 0.3], [e["design_maximum"] / 1e3] * 2, color="#c00000", lw=2,
                 label="design maximum" if k == 0 else None)
