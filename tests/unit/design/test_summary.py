@@ -268,3 +268,24 @@ def test_results_of_other_analyses_are_refused(synth):
     ds = synth.result({"L1": np.ones(5)}, analysis="mooring_static")
     with pytest.raises(InputError, match="analysis 'mooring_static'.*mooring_dynamic or system_dynamic"):
         summary.read_results(ds)
+
+
+def test_a_sea_state_of_several_headings_shares_its_probability(synth, tmp_path):
+    """One sea state of the diagram (probability 1) and two headings in the sweep: each heading gets 1/2, and
+    the life is 1 / (year (D_0/T + D_1/T) / 2)."""
+    runs = []
+    for heading, r in ((0.0, 1.0e6), (1.5, 2.0e6)):
+        case = synth.case(hs=2.0, tp=8.0, seed=1, lines=("L1",))
+        case["environment"]["waves"]["heading"] = heading
+        ds = synth.result({"L1": _cycles(1.0e6, r, 100)}, dt=DT, case=case)
+        runs.append(({"environment.waves.heading": heading}, ds))
+    found = summary.read_results(synth.sweep(tmp_path / "sw", runs))
+    assert [r.load_case for r in found] == ["heading = 0", "heading = 1.5"]
+    scatter = tmp_path / "scatter.csv"
+    scatter.write_text("hs,tp,probability\n2.0,8.0,1.0\n")
+    fat = summary.fatigue_table(found, scatter=scatter)
+    assert list(fat["probability"]) == [0.5, 0.5]
+    area = 2 * math.pi * (0.171 / 1.8) ** 2 / 4
+    damage = [100 * (r / area / 1e6) ** 3 / 6.0e10 for r in (1.0e6, 2.0e6)]
+    want = 1.0 / (SECONDS_PER_YEAR * 0.5 * (damage[0] + damage[1]) / (200 * DT))
+    assert summary.fatigue_life_table(fat)["life"].iloc[0] == pytest.approx(want, rel=1e-12)
