@@ -28,9 +28,15 @@ def _record(seed: int, n: int = 1200, mean: float = 2.0e6) -> np.ndarray:
 
 @pytest.fixture
 def storm(synth):
-    """One load case of 6 seeds, two lines."""
-    return {"storm": [synth.result({"L1": _record(k), "L2": 0.5 * _record(100 + k)}, dt=DT,
-                                   case=synth.case(hs=6.0, tp=10.0, seed=k)) for k in range(6)]}
+    """One load case of 6 seeds, two lines; seed 0's L1 peaks at its last sample, seed 1's at its first."""
+    out = []
+    for k in range(6):
+        l1 = _record(k)
+        if k < 2:
+            l1[-1 if k == 0 else 0] = l1.max() + 1e5
+        out.append(synth.result({"L1": l1, "L2": 0.5 * _record(100 + k)}, dt=DT,
+                                case=synth.case(hs=6.0, tp=10.0, seed=k)))
+    return {"storm": out}
 
 
 def test_seed_maxima_mean_and_std_are_those_of_each_series(storm):
