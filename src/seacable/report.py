@@ -370,7 +370,7 @@ def _first_attrs(runs) -> dict:
 
 
 def _sweep_info(source) -> dict:
-    path = Path(source) if not isinstance(source, (dict,)) else None
+    path = Path(source) if isinstance(source, (str, Path)) else None
     if path is None or not path.is_dir():
         return {}
     import xarray as xr
@@ -561,8 +561,8 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     tables = {"extremes": ext, "seeds": seeds, "checks": chk, "fatigue": fat, "fatigue_life": life}
     figures = {"series": _figure_time_series(runs, seeds), "maxima": _figure_maxima(seeds, ext),
                "utilisation": _figure_utilisation(chk)}
-    page = _html(source if not isinstance(source, (dict,)) and not hasattr(source, "attrs") else "Datasets",
-                 runs, tables, figures, opts)
+    page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
+                 opts)
     output.parent.mkdir(parents=True, exist_ok=True)
     written = [atomic_write(output, lambda tmp: tmp.write_text(page, encoding="utf-8"))]
     for key, table in tables.items():

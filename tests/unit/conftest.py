@@ -71,9 +71,11 @@ def chain_case(name="storm", *, hs=None, tp=None, seed=None, breaking_load=7.3e6
             "lines": system_lines, "analysis": {"type": "system_dynamic"}}
 
 
-def write_sweep(folder, runs: list[tuple[dict, object]], name="storm"):
+def write_sweep(folder, runs: list[tuple[dict, object]], name="storm", failed: dict | None = None):
     """A folder as 'seacable sweep' writes it: ``summary.nc`` (one row per case, the swept parameters as
-    coordinates named by their key path) and ``cases/NNNN.nc``. ``runs``: (parameters, result Dataset)."""
+    coordinates named by their key path) and ``cases/NNNN.nc``. ``runs``: (parameters, result Dataset);
+    ``failed``: case index -> error message of the cases that failed (no result file)."""
+    failed = failed or {}
     import json
 
     from seacable.results import write_netcdf
@@ -85,14 +87,17 @@ def write_sweep(folder, runs: list[tuple[dict, object]], name="storm"):
     units = {"environment.waves.hs": "m", "environment.waves.tp": "s", "environment.waves.seed": ""}
     for p in params:
         coords[p] = var("case", np.array([r[0][p] for r in runs], float), units.get(p, ""), p)
-    data = {"status": var("case", np.array(["done"] * len(runs), dtype=object), "1", "status"),
-            "error": var("case", np.array([""] * len(runs), dtype=object), "1", "error")}
+    data = {"status": var("case", np.array(["failed" if k in failed else "done" for k in range(len(runs))],
+                                           dtype=object), "1", "status"),
+            "error": var("case", np.array([failed.get(k, "") for k in range(len(runs))], dtype=object), "1",
+                         "error")}
     summary = make_dataset(data, coords, analysis="sweep", title=name, references=())
     summary.attrs.update(parameters=json.dumps(params), case_analysis=runs[0][1].attrs["analysis"], cases=len(runs),
-                         done=len(runs), failed=0, not_run=0, sweep=f"name: {name}\n")
+                         done=len(runs) - len(failed), failed=len(failed), not_run=0, sweep=f"name: {name}\n")
     write_netcdf(summary, folder / "summary.nc")
     for k, (_, ds) in enumerate(runs):
-        write_netcdf(ds, folder / "cases" / f"{k:04d}.nc")
+        if k not in failed:
+            write_netcdf(ds, folder / "cases" / f"{k:04d}.nc")
     return folder
 
 

@@ -305,3 +305,37 @@ def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
     assert _near(rgb, (0x00, 0x72, 0xB2)) > 1_500
     assert _near(rgb, (0x2E, 0x7D, 0x32)) > 10_000
     assert _near(rgb, (0xC6, 0x28, 0x28)) > 4_000
+
+
+def test_failed_cases_are_listed_and_left_out(synth, tmp_path):
+    runs = [({"environment.waves.seed": float(k)},
+             synth.result({"L1": _record(k)}, case=synth.case(hs=4.0, tp=9.0, seed=k, lines=("L1",))))
+            for k in range(3)]
+    folder = synth.sweep(tmp_path / "sw", runs, failed={1: "ConvergenceError: no convergence at t = 12 s\nmore"})
+    assert [r.seed for r in summary.read_results(folder)] == [0, 2]
+    out = tmp_path / "r.html"
+    assert main(["report", str(folder), "-o", str(out)]) == 0
+    page = _page(out)
+    assert ["storm_0001", "ConvergenceError: no convergence at t = 12 s"] in page.tables[""]
+    seeds = pd.read_csv(tmp_path / "r_seeds.csv")
+    assert sorted(set(seeds["seed"])) == [0, 2]
+
+
+def test_the_report_of_datasets_from_python(synth, tmp_path):
+    """The library call: make_report on Datasets, a platform following a prescribed motion checked for offset
+    (its horizontal distance from the origin, the largest: |(6, 8)| = 10 m)."""
+    from seacable.report import ReportOptions, make_report
+    from seacable.results import var
+
+    ds = synth.result({"L1": _record(1)}, case=synth.case(lines=("L1",)))
+    xy = np.zeros((ds.sizes["time"], 6))
+    xy[30, :2] = [6.0, 8.0]
+    ds["platform_position"] = var(("time", "dof"), xy, "m or rad", "platform motion")
+    ds = ds.assign_coords(dof=["x", "y", "z", "roll", "pitch", "yaw"])
+    written = make_report({"storm": [ds]}, tmp_path / "lib.html", ReportOptions(offset_limit=20.0))
+    assert [p.name for p in written] == ["lib.html", "lib_extremes.csv", "lib_seeds.csv", "lib_checks.csv",
+                                         "lib_fatigue.csv"]
+    chk = pd.read_csv(tmp_path / "lib_checks.csv")
+    row = chk[chk["check"] == "offset"].iloc[0]
+    assert row["item"] == "platform" and row["demand [N or m]"] == 10.0 and row["utilisation [-]"] == 0.5
+    assert "result Datasets (Python)" in written[0].read_text(encoding="utf-8")
