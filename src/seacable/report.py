@@ -123,6 +123,9 @@ def _figure_time_series(runs, seeds: pd.DataFrame) -> tuple[str, str] | None:
     ax.axhline(float(np.mean(y)), color="#7f7f7f", lw=0.8, ls="--", label=f"mean {_plain(np.mean(y))} kN")
     k = int(np.argmax(y))
     ax.plot(t[k], y[k], "o", color="#c00000", ms=6, label=f"maximum {_plain(y[k])} kN at t = {_plain(t[k])} s")
+    ax.yaxis.get_major_formatter().set_useOffset(False)
+    if np.ptp(y) < 1e-3 * abs(float(np.mean(y))):  # a quasi-static record: its noise is not the message
+        ax.set_ylim(float(np.mean(y)) * 0.99, float(np.mean(y)) * 1.01)
     ax.set_xlabel("time [s]")
     ax.set_ylabel("fairlead tension [kN]")
     ax.set_xlim(t[0], t[-1])
@@ -157,6 +160,7 @@ def _figure_maxima(seeds: pd.DataFrame, extremes: pd.DataFrame) -> tuple[str, st
     ax.set_xticks(range(len(labels)), labels, fontsize=7 if crowded else 8.5, rotation=35 if crowded else 0,
                   ha="right" if crowded else "center")
     ax.set_ylabel("fairlead tension maximum [kN]")
+    ax.yaxis.get_major_formatter().set_useOffset(False)
     ax.set_xlim(-0.6, len(labels) - 0.4)
     ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8, frameon=False, ncol=2)
     caption = "Maximum fairlead tension of each seed, per line" + (" and load case" if many else "") + \
@@ -205,7 +209,12 @@ def _plain(x) -> str:
 
 # -------------------------------------------------------------------------------------------------- tables
 
-def _table(headers: list[str], rows: list[list[str]], classes: list[str] | None = None, cls: str = "") -> str:
+def _table(headers: list[str], rows: list[list[str]], classes: list[str] | None = None, cls: str = "",
+           single: bool = False) -> str:
+    """An HTML table; ``single``: the first column (the load case) is the same in every row and left out."""
+    if single and headers and headers[0] == "Load case":
+        headers, rows = headers[1:], [r[1:] for r in rows]
+        cls = f"{cls} single".strip()
     head = "".join(f"<th>{h}</th>" for h in headers)
     body = []
     for k, row in enumerate(rows):
@@ -245,7 +254,7 @@ def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
                      _num(r["weibull_mpm"], scale=1e3) + _mark(notes, r["weibull_note"]),
                      _num(r["weibull_quantile"], scale=1e3), f"<b>{_num(r['design_maximum'], scale=1e3)}</b>",
                      _e(r["design_basis"])])
-    return _table(headers, rows, cls="num extremes") + _notes_block(notes)
+    return _table(headers, rows, cls="num extremes", single=ext["load_case"].nunique() == 1) + _notes_block(notes)
 
 
 def _checks_html(chk: pd.DataFrame) -> str:
@@ -264,7 +273,7 @@ def _checks_html(chk: pd.DataFrame) -> str:
                      _num(r["capacity"], scale=scale), unit if pd.notna(r["demand"]) else "",
                      _num(r["utilisation"], sig=3), _num(r["margin"], sig=3), status])
         classes.append(cls)
-    return _table(headers, rows, classes, cls="num checks")
+    return _table(headers, rows, classes, cls="num checks", single=chk["load_case"].nunique() == 1)
 
 
 def _basis_html(chk: pd.DataFrame) -> str:
@@ -286,7 +295,7 @@ def _fatigue_html(fat: pd.DataFrame) -> str:
                      _num(r["nominal_diameter"], sig=3, scale=1e-3), str(int(r["seeds"])), _num(r["duration"]),
                      _num(r["damage"], sig=3), _num(r["damage_per_year"], sig=3), _num(r["life_alone"], sig=3),
                      _num(r["probability"], sig=3)])
-    return _table(headers, rows, cls="num fatigue") + _notes_block(notes)
+    return _table(headers, rows, cls="num fatigue", single=fat["load_case"].nunique() == 1) + _notes_block(notes)
 
 
 def _life_html(life: pd.DataFrame) -> str:
@@ -325,10 +334,11 @@ th { background: var(--head); text-align: left; font-weight: 600; padding: 6px 8
      vertical-align: bottom; }
 td { padding: 4px 8px; border-bottom: 1px solid #e8ecf0; vertical-align: top; }
 tbody tr:nth-child(even) td { background: #f8fafb; }
-table.num td { font-variant-numeric: tabular-nums; }
-table.num td:nth-child(n+4) { text-align: right; white-space: nowrap; }
-table.checks td:nth-child(n+4) { text-align: right; }
-table.checks td:last-child, table.extremes td:last-child { text-align: left; white-space: normal; }
+table.num td { font-variant-numeric: tabular-nums; white-space: nowrap; }
+table.num td:nth-child(n+4) { text-align: right; }
+table.num.single td:nth-child(n+3) { text-align: right; }
+table.num:not(.single) td:first-child { white-space: normal; min-width: 120px; }
+table.num.checks td:last-child, table.num.extremes td:last-child { text-align: left; white-space: normal; }
 table.kv { width: auto; min-width: 480px; } table.kv th { width: 240px; background: none; font-weight: 600;
      border-bottom: 1px solid #e8ecf0; padding: 4px 8px; vertical-align: top; }
 table.kv tbody tr:nth-child(even) td { background: none; }
