@@ -80,6 +80,14 @@ def test_gumbel_and_weibull_columns_are_those_of_the_statistics_module(storm):
     assert "Naess & Moan" in row["method"] and "DNV-OS-E301" in row["method"]
 
 
+def test_a_bad_quantile_or_storm_is_refused_not_noted(storm):
+    runs = summary.read_results(storm)
+    with pytest.raises(InputError, match="between 0 and 1, got 1.5"):
+        summary.seed_table(runs, quantile=1.5)
+    with pytest.raises(InputError, match="storm duration must be > 0 s, got -1"):
+        summary.extremes_table(runs, storm_duration=-1.0)
+
+
 def test_too_few_seeds_for_gumbel_says_so_and_uses_the_weibull_fit(storm):
     runs = summary.read_results({"storm": storm["storm"][:3]})
     ext = summary.extremes_table(runs)
