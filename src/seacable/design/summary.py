@@ -407,6 +407,7 @@ def seed_table(runs: Sequence[Run], *, storm_duration: float | None = None, quan
         ``weibull_note``, where the record has too few peaks.
     """
     _check_storm(storm_duration)
+    statistics._probability(quantile)  # refused here, not taken for a record's failed fit below
     rows = []
     for run in runs:
         with run.open() as ds:
