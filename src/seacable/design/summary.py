@@ -626,6 +626,9 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
         for line, force in f["uplift"].items():
             if lines is None or line in lines:
                 results.append(checks.anchor_uplift(f"anchor of {line}", force if force > 0 else 0.0, allowed_uplift))
+        if offset_limit is not None and not f["offsets"]:
+            rows.append(_skipped(load_case, "offset", "-", "not checked: the results hold no body or platform "
+                                                          "motion (body_position, platform_position)"))
         if offset_limit is not None:
             for body, (offset, where) in f["offsets"].items():
                 r = checks.offset_check(body, offset, offset_limit)

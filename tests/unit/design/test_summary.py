@@ -202,6 +202,10 @@ def test_offset_is_the_largest_horizontal_distance_from_the_case_position(synth)
     row = table[table["check"] == "offset"].iloc[0]
     assert row["item"] == "hull" and row["utilisation"] == pytest.approx(math.hypot(2.0, 4.0) / 10.0, rel=1e-15)
     assert "from its position in the case" in row["formula"]
+    # no body: the limit given, the check said not made
+    table = summary.checks_table(summary.read_results(synth.result({"L1": _record(1, n=20)})), offset_limit=10.0)
+    assert list(table.loc[table["check"] == "offset", "status"]) == [
+        "not checked: the results hold no body or platform motion (body_position, platform_position)"]
 
 
 def _cycles(low, tension_range, n):
