@@ -1,4 +1,4 @@
-"""The ``seacable`` command line: run, sweep, validate, plot, animate, schema.
+"""The ``seacable`` command line: run, sweep, validate, plot, animate, report, schema.
 
 User errors (bad files, bad values or options, paths that cannot be written, no
 solution, no convergence) print one clear message and exit with status 2, before
@@ -321,6 +321,18 @@ def _cmd_animate(args) -> int:
     return 0
 
 
+def _cmd_report(args) -> int:
+    from .report import ReportOptions, make_report
+
+    options = ReportOptions(storm_duration=args.storm_duration, quantile=args.quantile,
+                            consequence_class=args.consequence_class, offset_limit=args.offset_limit,
+                            scatter=args.scatter, tn_curve=args.tn_curve, nominal_diameter=args.nominal_diameter,
+                            allowed_uplift=args.allowed_uplift)
+    for path in make_report(args.source, args.output, options):
+        print(f"wrote {path}")
+    return 0
+
+
 def _cmd_schema(args) -> int:
     from .io import case_schema
 
@@ -364,6 +376,10 @@ _NUMERIC = {
     "max_memory": ("--max-memory", "bytes", None,
                    "give the largest result memory in bytes, e.g. --max-memory 16e9"),
     "max_cases": ("--max-cases", "", 1, "give the largest number of sweep cases, e.g. --max-cases 1e6"),
+    "storm_duration": ("--storm-duration", "s", None, "give the storm's duration in seconds, e.g. 10800 for 3 h"),
+    "offset_limit": ("--offset-limit", "m", None, "give the allowed horizontal offset in metres, e.g. 30"),
+    "nominal_diameter": ("--nominal-diameter", "m", None,
+                         "give the chain's bar diameter or the rope's nominal diameter in metres, e.g. 0.095"),
 }
 
 
@@ -474,6 +490,34 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-frames", type=_whole, default=200,
                    help="largest number of frames; output times are subsampled evenly (default 200)")
     p.set_defaults(func=_cmd_animate)
+
+    p = sub.add_parser("report", parents=[common],
+                       help="design report (HTML and CSV) of a mooring_dynamic or system_dynamic result or sweep: "
+                            "extremes, DNV-OS-E301 and API RP 2SK checks, fatigue")
+    p.add_argument("source", help="result file (.nc) of a time-domain mooring run, or a folder written by "
+                                  "'seacable sweep' (its cases differing only in environment.waves.seed are seeds "
+                                  "of one load case)")
+    p.add_argument("-o", "--output", required=True,
+                   help="the HTML report (.html); the tables go beside it as CSV (REPORT_extremes.csv, ...)")
+    p.add_argument("--storm-duration", type=_number,
+                   help="duration of the storm the extremes are raised to [s] (default: the runs' duration)")
+    p.add_argument("--quantile", type=_number, default=0.9,
+                   help="non-exceedance probability of the quantile of the storm maximum (default 0.9)")
+    p.add_argument("--consequence-class", type=int, choices=(1, 2), default=1,
+                   help="DNV-OS-E301 consequence class (default 1)")
+    p.add_argument("--offset-limit", type=_number, help="allowed horizontal offset of the bodies [m] (default: "
+                                                        "not checked)")
+    p.add_argument("--allowed-uplift", type=_number, default=0.0,
+                   help="allowed vertical force on an anchor [N] (default 0: a drag anchor takes no uplift)")
+    p.add_argument("--scatter", help="scatter diagram, CSV with columns hs [m], tp [s], probability [-] (and "
+                                     "optionally heading [rad]), matched to the load cases' sea states: the "
+                                     "fatigue life")
+    p.add_argument("--tn-curve", help="T-N curve of DNV-OS-E301 Table D1: studless, stud, connecting, six_strand "
+                                      "or spiral_strand (default: by the line type's name)")
+    p.add_argument("--nominal-diameter", type=_number,
+                   help="nominal diameter for the fatigue stress [m] (default: the line type's diameter over "
+                        "its volume-equivalent ratio, 1.8 for studless chain)")
+    p.set_defaults(func=_cmd_report)
 
     p = sub.add_parser("schema", parents=[common], help="print the JSON schema of case files")
     p.add_argument("--system", action="store_true",

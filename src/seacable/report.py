@@ -1,0 +1,584 @@
+"""The design report of a time-domain mooring result or a sweep of them (issue 20): one self-contained HTML page
+and the same tables as CSV files beside it.
+
+``seacable report RESULT.nc|SWEEP_DIR -o report.html`` (or :func:`make_report`) reads the results
+(:func:`seacable.design.summary.read_results`), makes the design tables of :mod:`seacable.design.summary`
+(extremes, code checks, fatigue) and writes:
+
+- ``report.html``: the inputs, the model and its references, the tables (tensions in kN, four significant
+  digits) and the figures (matplotlib, inline base64 PNG); inline CSS, no script, nothing fetched;
+- ``report_extremes.csv``, ``report_seeds.csv``, ``report_checks.csv``, ``report_fatigue.csv`` (and
+  ``report_fatigue_life.csv`` with a scatter diagram): the same tables in SI units (N, m, s), full precision,
+  the unit of each column in its header.
+
+Every file is written whole (:mod:`seacable._atomic`).
+"""
+
+from __future__ import annotations
+
+import base64
+import datetime
+import html
+import io
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from ._atomic import atomic_write
+from ._version import __version__
+from .design import summary as ds_
+
+__all__ = ["CSV_UNITS", "ReportOptions", "make_report"]
+
+#: The unit of each column of the CSV tables, appended to its header.
+CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": "N", "weibull_mpm": "N",
+             "weibull_quantile": "N", "maximum_largest": "N", "maximum_mean": "N", "gumbel_mpm": "N",
+             "gumbel_quantile": "N", "design_maximum": "N", "dynamic": "N", "demand": "N or m",
+             "capacity": "N or m", "utilisation": "-", "margin": "-", "nominal_diameter": "m", "damage": "-",
+             "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years"}
+
+
+@dataclass
+class ReportOptions:
+    """The choices of a report (see ``seacable report --help``)."""
+
+    storm_duration: float | None = None   #: the storm's duration [s]; None: the runs' duration
+    quantile: float = 0.9                 #: non-exceedance probability of the storm maximum's quantile [-]
+    consequence_class: int = 1            #: DNV-OS-E301 consequence class, 1 or 2
+    offset_limit: float | None = None     #: allowed horizontal offset of the bodies [m]; None: not checked
+    scatter: str | Path | None = None     #: scatter diagram CSV (hs, tp, probability)
+    tn_curve: str | None = None           #: T-N curve; None: by the line type
+    nominal_diameter: float | None = None  #: nominal diameter for fatigue [m]; None: from the line type
+    allowed_uplift: float = 0.0           #: allowed vertical force on the anchors [N]
+    design_fatigue_factor: float = 1.0    #: DNV-OS-E301 design fatigue factor [-]
+    extra: dict = field(default_factory=dict)
+
+
+# ------------------------------------------------------------------------------------------------- numbers
+
+def _num(value, sig: int = 4, scale: float = 1.0) -> str:
+    """A number for a table: ``sig`` significant digits, scientific below 1e-3 and from 1e7."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "&ndash;"
+    x = float(value) / scale
+    if math.isinf(x):
+        return "&infin;" if x > 0 else "&minus;&infin;"
+    if x == 0:
+        return "0"
+    if abs(x) < 1e-3 or abs(x) >= 1e7:
+        m, e = f"{x:.{sig - 1}e}".split("e")
+        return f"{m}&times;10<sup>{int(e)}</sup>"
+    digits = max(sig - 1 - math.floor(math.log10(abs(x))), 0)
+    return f"{x:.{digits}f}".replace("-", "&minus;")
+
+
+def _e(text) -> str:
+    return html.escape(str(text))
+
+
+def _with_units(table: pd.DataFrame) -> pd.DataFrame:
+    return table.rename(columns={c: f"{c} [{CSV_UNITS[c]}]" for c in table.columns if c in CSV_UNITS})
+
+
+# ------------------------------------------------------------------------------------------------- figures
+
+#: The colour of the data in the figures (Okabe & Ito's blue), apart from the page's own blue.
+_SERIES = "#0072b2"
+
+
+def _png(fig) -> str:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight", facecolor="white")
+    return base64.b64encode(buf.getvalue()).decode("ascii")
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    plt.rcParams.update({"font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9, "axes.spines.top": False,
+                         "axes.spines.right": False, "axes.grid": True, "grid.color": "#dddddd",
+                         "grid.linewidth": 0.6, "font.family": "DejaVu Sans"})
+    return plt
+
+
+def _figure_time_series(runs, seeds: pd.DataFrame) -> tuple[str, str] | None:
+    fair = seeds[seeds["end"] == "fairlead"]
+    if fair.empty:
+        return None
+    top = fair.loc[fair["maximum"].idxmax()]
+    run = next(r for r in runs if r.name == top["case"] and r.load_case == top["load_case"])
+    with run.open() as ds:
+        t = np.asarray(ds["time"].values, float)
+        y = ds_.line_series(ds, "fairlead_tension", top["line"]) / 1e3
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(10.4, 3.4))
+    ax.plot(t, y, color=_SERIES, lw=0.9, label="fairlead tension")
+    ax.axhline(float(np.mean(y)), color="#7f7f7f", lw=0.8, ls="--", label=f"mean {_plain(np.mean(y))} kN")
+    k = int(np.argmax(y))
+    ax.plot(t[k], y[k], "o", color="#c00000", ms=6, label=f"maximum {_plain(y[k])} kN at t = {_plain(t[k])} s")
+    ax.yaxis.get_major_formatter().set_useOffset(False)
+    if np.ptp(y) < 1e-3 * abs(float(np.mean(y))):  # a quasi-static record: its noise is not the message
+        ax.set_ylim(float(np.mean(y)) * 0.99, float(np.mean(y)) * 1.01)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("fairlead tension [kN]")
+    ax.set_xlim(t[0], t[-1])
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8, frameon=False, ncol=3)
+    seed = "" if pd.isna(top["seed"]) else f", seed {int(top['seed'])}"
+    caption = (f"Fairlead tension of the most loaded line, {top['line']} ({top['load_case']}{seed}; case "
+               f"{top['case']}), its maximum marked.")
+    img = _png(fig)
+    plt.close(fig)
+    return img, caption
+
+
+def _figure_maxima(seeds: pd.DataFrame, extremes: pd.DataFrame) -> tuple[str, str] | None:
+    fair = seeds[seeds["end"] == "fairlead"]
+    ext = extremes[extremes["end"] == "fairlead"].sort_values("design_maximum", ascending=False)
+    if fair.empty or fair.groupby(["load_case", "line"]).size().max() < 2:
+        return None  # one seed each: the table says it all
+    shown = ext.head(40)
+    many = ext["load_case"].nunique() > 1
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(10.4, 3.6))
+    labels = []
+    for k, (_, e) in enumerate(shown.iterrows()):
+        g = fair[(fair["load_case"] == e["load_case"]) & (fair["line"] == e["line"])]
+        jitter = np.linspace(-0.15, 0.15, len(g)) if len(g) > 1 else np.zeros(1)
+        ax.plot(k + jitter, g["maximum"] / 1e3, "o", color=_SERIES, ms=4,
+                label="maximum of a seed" if k == 0 else None)
+        ax.plot([k - 0.3, k + 0.3], [e["design_maximum"] / 1e3] * 2, color="#c00000", lw=2,
+                label="design maximum" if k == 0 else None)
+        labels.append(f"{e['line']}\n{e['load_case']}" if many else str(e["line"]))
+    crowded = len(labels) > 8
+    ax.set_xticks(range(len(labels)), labels, fontsize=7 if crowded else 8.5, rotation=35 if crowded else 0,
+                  ha="right" if crowded else "center")
+    ax.set_ylabel("fairlead tension maximum [kN]")
+    ax.yaxis.get_major_formatter().set_useOffset(False)
+    ax.set_xlim(-0.6, len(labels) - 0.4)
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8, frameon=False, ncol=2)
+    caption = "Maximum fairlead tension of each seed, per line" + (" and load case" if many else "") + \
+              ", and the design maximum (red)."
+    if len(ext) > len(shown):
+        caption += f" The {len(shown)} most loaded of {len(ext)} are shown."
+    img = _png(fig)
+    plt.close(fig)
+    return img, caption
+
+
+def _figure_utilisation(checks: pd.DataFrame) -> tuple[str, str] | None:
+    rows = checks[checks["utilisation"].notna()].sort_values("utilisation", ascending=False)
+    if rows.empty:
+        return None
+    shown = rows.head(30).iloc[::-1]
+    many = checks["load_case"].nunique() > 1
+    u = shown["utilisation"].to_numpy(float)
+    top = float(np.nanmax(np.where(np.isfinite(u), u, 0.0)))
+    limit = max(1.2, top * 1.1)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(10.4, 0.9 + 0.28 * len(shown)))
+    colours = ["#2e7d32" if p else "#c62828" for p in shown["passed"]]
+    ax.barh(range(len(shown)), np.minimum(u, limit), color=colours, height=0.65)
+    for k, value in enumerate(u):
+        ax.text(min(value, limit) + limit * 0.01, k, "\u221e" if math.isinf(value) else f"{value:.3f}",
+                va="center", fontsize=7.5)
+    ax.axvline(1.0, color="#333333", lw=1.0, ls="--")
+    labels = [f"{r['check']} \u2013 {r['item']}" + (f" ({r['load_case']})" if many else "")
+              for _, r in shown.iterrows()]
+    ax.set_yticks(range(len(shown)), labels, fontsize=7.5)
+    ax.set_xlim(0, limit * 1.08)
+    ax.set_xlabel("utilisation [-] (1 = the capacity)")
+    ax.grid(axis="y", visible=False)
+    caption = "Utilisation of each check: green passes, red fails; the dashed line is the capacity."
+    if len(rows) > len(shown):
+        caption += f" The {len(shown)} highest of {len(rows)} are shown."
+    img = _png(fig)
+    plt.close(fig)
+    return img, caption
+
+
+def _plain(x) -> str:
+    return html.unescape(_num(float(x))).replace("\u2212", "-")
+
+
+# -------------------------------------------------------------------------------------------------- tables
+
+def _table(headers: list[str], rows: list[list[str]], classes: list[str] | None = None, cls: str = "",
+           single: bool = False) -> str:
+    """An HTML table; ``single``: the first column (the load case) is the same in every row and left out."""
+    if single and headers and headers[0] == "Load case":
+        headers, rows = headers[1:], [r[1:] for r in rows]
+        cls = f"{cls} single".strip()
+    head = "".join(f"<th>{h}</th>" for h in headers)
+    body = []
+    for k, row in enumerate(rows):
+        rc = f' class="{classes[k]}"' if classes and classes[k] else ""
+        body.append(f"<tr{rc}>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>")
+    return (f'<table class="{cls}"><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table>')
+
+
+def _notes_block(notes: dict[str, str]) -> str:
+    if not notes:
+        return ""
+    items = "".join(f"<li><sup>{k}</sup> {_e(v)}</li>" for v, k in notes.items())
+    return f'<ol class="notes">{items}</ol>'
+
+
+def _mark(notes: dict[str, str], text: str) -> str:
+    if not text:
+        return ""
+    if text not in notes:
+        notes[text] = chr(ord("a") + len(notes)) if len(notes) < 26 else str(len(notes) + 1)
+    return f"<sup>{notes[text]}</sup>"
+
+
+def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
+    q = f"q{round(quantile * 100):d}"
+    headers = ["Load case", "Line", "End", "Seeds", "Mean [kN]", "Std. dev. [kN]", "Largest max. [kN]",
+               "Mean of maxima [kN]", "Gumbel MPM [kN]", f"Gumbel {q} [kN]", "Weibull MPM [kN]",
+               f"Weibull {q} [kN]", "Design max. [kN]", "Basis"]
+    notes: dict[str, str] = {}
+    rows = []
+    for _, r in ext.iterrows():
+        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["end"]), str(int(r["seeds"])), _num(r["mean"], scale=1e3),
+                     _num(r["std"], scale=1e3), _num(r["maximum_largest"], scale=1e3),
+                     _num(r["maximum_mean"], scale=1e3),
+                     _num(r["gumbel_mpm"], scale=1e3) + _mark(notes, r["gumbel_note"]),
+                     _num(r["gumbel_quantile"], scale=1e3),
+                     _num(r["weibull_mpm"], scale=1e3) + _mark(notes, r["weibull_note"]),
+                     _num(r["weibull_quantile"], scale=1e3), f"<b>{_num(r['design_maximum'], scale=1e3)}</b>",
+                     _e(r["design_basis"])])
+    return _table(headers, rows, cls="num extremes", single=ext["load_case"].nunique() == 1) + _notes_block(notes)
+
+
+def _checks_html(chk: pd.DataFrame) -> str:
+    headers = ["Load case", "Check", "Item", "Demand", "Capacity", "Unit", "Utilisation [-]", "Margin [-]", "Status"]
+    rows, classes = [], []
+    for _, r in chk.iterrows():
+        offset = r["check"] == "offset"
+        scale, unit = (1.0, "m") if offset else (1e3, "kN")
+        if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
+            status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
+        elif bool(r["passed"]):
+            status, cls = '<span class="pass">PASS</span>', "passed"
+        else:
+            status, cls = '<span class="fail">FAIL</span>', "failed"
+        rows.append([_e(r["load_case"]), _e(r["check"]), _e(r["item"]), _num(r["demand"], scale=scale),
+                     _num(r["capacity"], scale=scale), unit if pd.notna(r["demand"]) else "",
+                     _num(r["utilisation"], sig=3), _num(r["margin"], sig=3), status])
+        classes.append(cls)
+    return _table(headers, rows, classes, cls="num checks", single=chk["load_case"].nunique() == 1)
+
+
+def _basis_html(chk: pd.DataFrame) -> str:
+    done = chk[chk["formula"].astype(str) != ""].drop_duplicates(["check", "formula"])
+    if done.empty:
+        return ""
+    rows = [[_e(r["check"]), f"<code>{_e(r['formula'])}</code>", _e(r["reference"])] for _, r in done.iterrows()]
+    return "<h3>Basis of the checks</h3>" + _table(["Check", "Formula", "Reference"], rows, cls="basis")
+
+
+def _fatigue_html(fat: pd.DataFrame) -> str:
+    headers = ["Load case", "Line", "T-N curve", "Nominal diameter [mm]", "Seeds", "Duration [s]", "Damage [-]",
+               "Damage per year if permanent [1/yr]", "Life if permanent [years]", "Probability [-]"]
+    notes: dict[str, str] = {}
+    rows = []
+    for _, r in fat.iterrows():
+        curve = str(r["tn_curve"]).replace("_", " ") if r["tn_curve"] else "&ndash;"
+        rows.append([_e(r["load_case"]), _e(r["line"]) + _mark(notes, r["note"]), curve,
+                     _num(r["nominal_diameter"], sig=3, scale=1e-3), str(int(r["seeds"])), _num(r["duration"]),
+                     _num(r["damage"], sig=3), _num(r["damage_per_year"], sig=3), _num(r["life_alone"], sig=3),
+                     _num(r["probability"], sig=3)])
+    return _table(headers, rows, cls="num fatigue", single=fat["load_case"].nunique() == 1) + _notes_block(notes)
+
+
+def _life_html(life: pd.DataFrame) -> str:
+    rows = []
+    notes: dict[str, str] = {}
+    for _, r in life.iterrows():
+        rows.append([_e(r["line"]) + _mark(notes, r["note"]), _e(str(r["tn_curve"]).replace("_", " ")),
+                     str(int(r["load_cases"])), _num(r["damage_per_year"], sig=3),
+                     f"<b>{_num(r['life'], sig=3)}</b>", _num(r["design_fatigue_factor"], sig=3)])
+    return _table(["Line", "T-N curve", "Sea states", "Damage per year [1/yr]", "Fatigue life [years]",
+                   "Design fatigue factor [-]"], rows, cls="num life") + _notes_block(notes)
+
+
+# ----------------------------------------------------------------------------------------------------- page
+
+_CSS = """
+:root { --ink: #1d2733; --muted: #5b6673; --rule: #d5dbe1; --head: #eef2f6; --accent: #1f4e79; }
+* { box-sizing: border-box; }
+body { margin: 0; background: #ffffff; color: var(--ink);
+       font: 14px/1.5 "Segoe UI", "Helvetica Neue", Helvetica, Arial, "DejaVu Sans", sans-serif; }
+main { max-width: 1180px; margin: 0 auto; padding: 32px 40px 64px; }
+header.top { border-bottom: 3px solid var(--accent); padding-bottom: 12px; margin-bottom: 24px; }
+header.top h1 { margin: 0 0 4px; font-size: 26px; font-weight: 600; color: var(--accent); }
+header.top .meta { color: var(--muted); font-size: 13px; }
+h2 { font-size: 19px; font-weight: 600; margin: 36px 0 10px; padding-bottom: 4px; border-bottom: 1px solid var(--rule);
+     color: var(--accent); }
+h3 { font-size: 15px; font-weight: 600; margin: 20px 0 8px; }
+p { margin: 6px 0 10px; }
+.verdict { display: flex; flex-wrap: wrap; gap: 12px; margin: 8px 0 4px; }
+.card { flex: 1 1 200px; border: 1px solid var(--rule); border-radius: 6px; padding: 10px 14px; background: #fafbfc; }
+.card .k { color: var(--muted); font-size: 12px; text-transform: uppercase; letter-spacing: .04em; }
+.card .v { font-size: 20px; font-weight: 600; margin-top: 2px; }
+.card.ok .v { color: #2e7d32; } .card.bad .v { color: #c62828; } .card.warn .v { color: #8a6d00; }
+table { border-collapse: collapse; margin: 6px 0 8px; font-size: 12.5px; width: 100%; }
+th { background: var(--head); text-align: left; font-weight: 600; padding: 6px 8px; border-bottom: 2px solid var(--rule);
+     vertical-align: bottom; }
+td { padding: 4px 8px; border-bottom: 1px solid #e8ecf0; vertical-align: top; }
+tbody tr:nth-child(even) td { background: #f8fafb; }
+table.num td { font-variant-numeric: tabular-nums; white-space: nowrap; }
+table.num td:nth-child(n+4) { text-align: right; }
+table.num.single td:nth-child(n+3) { text-align: right; }
+table.num:not(.single) td:first-child { white-space: normal; min-width: 120px; }
+table.num.checks td:last-child, table.num.extremes td:last-child { text-align: left; white-space: normal; }
+table.kv { width: auto; min-width: 480px; } table.kv th { width: 240px; background: none; font-weight: 600;
+     border-bottom: 1px solid #e8ecf0; padding: 4px 8px; vertical-align: top; }
+table.kv tbody tr:nth-child(even) td { background: none; }
+table.basis td:nth-child(2) { white-space: nowrap; }
+tr.failed td { background: #fdecea !important; }
+span.pass { color: #1b5e20; background: #e3f1e4; padding: 1px 8px; border-radius: 10px; font-weight: 600; }
+span.fail { color: #ffffff; background: #c62828; padding: 1px 8px; border-radius: 10px; font-weight: 600; }
+span.skip { color: var(--muted); font-style: italic; }
+ol.notes { font-size: 12px; color: var(--muted); margin: 2px 0 12px; padding-left: 18px; list-style: none; }
+ol.notes li sup { font-weight: 600; margin-right: 4px; }
+figure { margin: 14px 0 20px; } figure img { max-width: 100%; height: auto; border: 1px solid #eef0f2; }
+figcaption { color: var(--muted); font-size: 12.5px; margin-top: 4px; }
+details { margin: 8px 0; border: 1px solid var(--rule); border-radius: 6px; padding: 6px 12px; background: #fafbfc; }
+details summary { cursor: pointer; font-weight: 600; }
+pre { font: 12px/1.45 "DejaVu Sans Mono", Menlo, Consolas, monospace; white-space: pre-wrap; margin: 8px 0; }
+code { font: 12px "DejaVu Sans Mono", Menlo, Consolas, monospace; }
+.method { color: var(--muted); font-size: 12.5px; }
+footer { margin-top: 48px; color: var(--muted); font-size: 12px; border-top: 1px solid var(--rule); padding-top: 8px; }
+@media print { main { padding: 0; } h2 { break-after: avoid; } figure, table { break-inside: avoid; } }
+"""
+
+
+def _figure(fig) -> str:
+    if fig is None:
+        return ""
+    img, caption = fig
+    return (f'<figure><img alt="{_e(caption)}" src="data:image/png;base64,{img}">'
+            f"<figcaption>{_e(caption)}</figcaption></figure>")
+
+
+def _kv(pairs: list[tuple[str, str]]) -> str:
+    return '<table class="kv"><tbody>' + "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in pairs) + \
+        "</tbody></table>"
+
+
+def _first_attrs(runs) -> dict:
+    with runs[0].open() as ds:
+        return dict(ds.attrs)
+
+
+def _sweep_info(source) -> dict:
+    path = Path(source) if isinstance(source, (str, Path)) else None
+    if path is None or not path.is_dir():
+        return {}
+    import xarray as xr
+
+    with xr.open_dataset(path / "summary.nc", engine="netcdf4") as s:
+        s = s.load()
+    failed = [(str(n), str(e).splitlines()[0] if str(e) else "") for n, st, e in
+              zip(s["name"].values, s["status"].values, s["error"].values) if str(st) != "done"]
+    return {"sweep": s.attrs.get("sweep", ""), "name": s.attrs.get("title", path.name),
+            "description": s.attrs.get("comment", ""), "parameters": json.loads(s.attrs.get("parameters", "[]")),
+            "failed": failed, "cases": int(s.attrs.get("cases", s.sizes["case"]))}
+
+
+def _settings_html(settings: str) -> str:
+    try:
+        data = json.loads(settings) if settings else {}
+    except ValueError:
+        return f"<pre>{_e(settings)}</pre>"
+    if not isinstance(data, dict) or not data:
+        return "<p>none recorded</p>"
+    return _kv([(_e(k), _e(json.dumps(v) if not isinstance(v, str) else v)) for k, v in data.items()])
+
+
+def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) -> str:
+    checked = chk[chk["utilisation"].notna()]
+    failed = checked[~checked["passed"].astype(bool)]
+    skipped = chk[chk["utilisation"].isna()]
+    cards = []
+    if checked.empty:
+        cards.append(("warn", "Code checks", "none made"))
+    elif failed.empty:
+        cards.append(("ok", "Code checks", f"all {len(checked)} pass"))
+    else:
+        cards.append(("bad", "Code checks", f"{len(failed)} of {len(checked)} fail"))
+    if not checked.empty:
+        top = checked.loc[checked["utilisation"].idxmax()]
+        u = float(top["utilisation"])
+        cards.append(("bad" if u > 1 else "ok", f"Largest utilisation ({_e(top['check'])}, {_e(top['item'])})",
+                      _num(u, sig=3)))
+    if not skipped.empty:
+        cards.append(("warn", "Not checked", f"{len(skipped)} check(s)"))
+    fair = ext[ext["end"] == "fairlead"]
+    if not fair.empty:
+        top = fair.loc[fair["design_maximum"].idxmax()]
+        cards.append(("", f"Design max. fairlead tension ({_e(top['line'])})",
+                      f"{_num(top['design_maximum'], scale=1e3)} kN"))
+    if life is not None and not life.empty and life["life"].notna().any():
+        top = life.loc[life["life"].idxmin()]
+        cards.append(("", f"Shortest fatigue life ({_e(top['line'])})", f"{_num(top['life'], sig=3)} years"))
+    return '<div class="verdict">' + "".join(
+        f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
+
+
+def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str:
+    attrs = _first_attrs(runs)
+    sweep = _sweep_info(source)
+    name = sweep.get("name") or attrs.get("case_name") or attrs.get("title") or "result"
+    description = sweep.get("description") or attrs.get("comment", "")
+    now = datetime.datetime.now(datetime.UTC).strftime("%d %B %Y, %H:%M UTC")
+    ext, chk, fat, life, seeds = (tables[k] for k in ("extremes", "checks", "fatigue", "fatigue_life", "seeds"))
+    load_cases = list(dict.fromkeys(r.load_case for r in runs))
+    durations = sorted({float(x) for x in seeds["duration"]})
+    storm = "the runs' duration" if opts.storm_duration is None else f"{_num(opts.storm_duration)} s"
+    inputs = [("Source", f"<code>{_e(source)}</code>"), ("Analysis", _e(attrs.get("analysis", ""))),
+              ("Runs (seeds)", str(len(runs))), ("Load cases", str(len(load_cases))),
+              ("Simulated duration of a run", ", ".join(f"{_num(d)} s" for d in durations)),
+              ("Storm duration", storm), ("Quantile of the storm maximum", _num(opts.quantile, sig=3)),
+              ("DNV-OS-E301 consequence class", str(opts.consequence_class)),
+              ("Offset limit", "not checked" if opts.offset_limit is None else f"{_num(opts.offset_limit)} m"),
+              ("Allowed anchor uplift", f"{_num(opts.allowed_uplift, scale=1e3)} kN"),
+              ("T-N curve", _e(opts.tn_curve) if opts.tn_curve else "by the line type"),
+              ("Scatter diagram", f"<code>{_e(opts.scatter)}</code>" if opts.scatter else "none")]
+    if sweep.get("failed"):
+        inputs.append(("Cases not in the report", f"{len(sweep['failed'])} of {sweep['cases']} (failed or not run)"))
+    parts = [(f"<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
+             f"<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+             f"<title>Mooring design report &ndash; {_e(name)}</title><style>{_CSS}</style></head><body><main>"),
+             (f'<header class="top"><h1>Mooring design report &ndash; {_e(name)}</h1>'
+             f'<div class="meta">{_e(now)} &middot; seacable {_e(__version__)}'
+             f"{' &middot; ' + _e(description) if description else ''}</div></header>"),
+             "<h2>Summary</h2>", _verdict(chk, ext, life if not life.empty else None)]
+    parts += ["<h2>1. Inputs</h2>", _kv(inputs)]
+    if sweep.get("parameters"):
+        params = [p for p in sweep["parameters"]]
+        rows = []
+        for lc in load_cases:
+            members = [r for r in runs if r.load_case == lc]
+            seeds_ = [str(r.seed) for r in members if r.seed is not None]
+            rows.append([_e(lc), str(len(members)), _e(", ".join(seeds_) or "–")])
+        parts += [f"<h3>Load cases of the sweep (swept: {_e(', '.join(params))})</h3>",
+                  _table(["Load case", "Runs", "Seeds"], rows)]
+    if sweep.get("failed"):
+        rows = [[_e(n), _e(e)] for n, e in sweep["failed"]]
+        parts += ["<h3>Cases left out (failed or not run)</h3>", _table(["Case", "Error"], rows)]
+    if attrs.get("case"):
+        parts.append(f"<details><summary>Case file (YAML) of {_e(runs[0].name)}</summary>"
+                     f"<pre>{_e(attrs['case'])}</pre></details>")
+    if sweep.get("sweep"):
+        parts.append(f"<details><summary>Sweep file (YAML)</summary><pre>{_e(sweep['sweep'])}</pre></details>")
+    refs = [r for r in str(attrs.get("references", "")).splitlines() if r.strip()]
+    parts += ["<h2>2. Model and references</h2>",
+              f"<p>{_e(attrs.get('analysis', ''))} analysis by seacable {_e(attrs.get('seacable_version', '?'))}.</p>",
+              "<h3>Settings</h3>", _settings_html(attrs.get("settings", "")), "<h3>References of the model</h3>",
+              "<ol>" + "".join(f"<li>{_e(r)}</li>" for r in refs) + "</ol>" if refs else "<p>none recorded</p>",
+              ("<h3>References of the design methods</h3><ol>"
+              "<li>DNV-OS-E301 Position mooring (October 2010): Ch.2 Sec.2 B (ULS and ALS partial safety factors), "
+              "D (fatigue, T-N curves of Table D1).</li>"
+              "<li>API RP 2SK Design and analysis of stationkeeping systems for floating structures: factors of "
+              "safety of line tension.</li>"
+              f"<li>Extremes: {_e(ds_.GUMBEL_REFERENCE)} (Gumbel fit over seeds); {_e(ds_.WEIBULL_REFERENCE)} "
+              "(Weibull fit of peaks).</li>"
+              "<li>Rainflow counting: ASTM E1049-85, section 5.4.4 (the <code>rainflow</code> package).</li></ol>")]
+    method = ext["method"].iloc[0] if not ext.empty else ""
+    parts += ["<h2>3. Extreme tensions</h2>",
+              (f'<p class="method">Method: {_e(method)}. MPM: most probable maximum; q: the quantile of the storm '
+              f"maximum of non-exceedance probability {_num(opts.quantile, sig=3)}. The dynamic part used by the "
+              "checks is the design maximum less the mean.</p>"),
+              _extremes_html(ext, opts.quantile), _figure(figures.get("series")), _figure(figures.get("maxima"))]
+    parts += ["<h2>4. Code checks</h2>",
+              ('<p class="method">Line tensions from the design maximum of the fairlead tension; DNV-OS-E301 ULS for '
+              "intact load cases, ALS where a line failed or was removed (the failed line itself is not checked); "
+              "API RP 2SK dynamic analysis, intact or damaged; anchor uplift from the first element at the anchor, "
+              "T<sub>anchor</sub> (z<sub>1</sub> &minus; z<sub>0</sub>)/|x<sub>1</sub> &minus; x<sub>0</sub>|, the "
+              "largest upward pull over the seeds. Margin = 1 &minus; utilisation.</p>"),
+              _checks_html(chk), _figure(figures.get("utilisation")), _basis_html(chk)]
+    parts += ["<h2>5. Fatigue</h2>",
+              ('<p class="method">Miner\'s damage from the rainflow-counted fairlead tension ranges over the nominal '
+              "cross-section (DNV-OS-E301 (2010) Ch.2 Sec.2 D, Table D1), the mean over a load case's seeds. "
+              "&ldquo;If permanent&rdquo;: were the load case to last the whole year.</p>"),
+              _fatigue_html(fat)]
+    if not life.empty:
+        parts += ["<h3>Fatigue life over the scatter diagram</h3>", _life_html(life)]
+    else:
+        parts.append('<p class="method">No scatter diagram given (<code>--scatter hs,tp,probability CSV</code>): no '
+                     "fatigue life over the year.</p>")
+    rows = [[_e(r["load_case"]), _e(r["case"]), "&ndash;" if pd.isna(r["seed"]) else str(int(r["seed"])),
+             _e(r["line"]), _e(r["end"]), _num(r["maximum"], scale=1e3), _num(r["mean"], scale=1e3),
+             _num(r["std"], scale=1e3), _num(r["weibull_mpm"], scale=1e3), _num(r["weibull_quantile"], scale=1e3)]
+            for _, r in seeds.iterrows()]
+    q = f"q{round(opts.quantile * 100):d}"
+    parts += ["<h2>Appendix: every seed</h2>",
+              f"<details><summary>Tensions of each run ({len(seeds)} rows)</summary>"
+              + _table(["Load case", "Case", "Seed", "Line", "End", "Maximum [kN]", "Mean [kN]", "Std. dev. [kN]",
+                        "Weibull MPM [kN]", f"Weibull {q} [kN]"], rows, cls="num seeds") + "</details>",
+              (f"<footer>Generated by seacable {_e(__version__)} on {_e(now)}. The tables are also in CSV files beside "
+              "this page, in SI units (N, m, s).</footer></main></body></html>")]
+    return "\n".join(parts)
+
+
+# ------------------------------------------------------------------------------------------------- the report
+
+def make_report(source, output: str | Path, options: ReportOptions | None = None) -> list[Path]:
+    """Write the design report of a result file, a sweep folder (or Datasets) and its CSV tables.
+
+    Parameters
+    ----------
+    source
+        What :func:`seacable.design.summary.read_results` reads.
+    output
+        The HTML file (``.html``); the CSV files go beside it, ``STEM_extremes.csv`` and so on.
+    options
+        The report's choices (:class:`ReportOptions`).
+
+    Returns
+    -------
+    list of Path
+        The files written, the HTML page first.
+
+    Raises
+    ------
+    InputError
+        Bad input: see :mod:`seacable.design.summary`; an output that is not ``.html`` or cannot be written.
+    """
+    from .results import check_output_file
+
+    opts = options or ReportOptions()
+    output = check_output_file(output, "-o", (".html", ".htm"))
+    runs = ds_.read_results(source)
+    seeds = ds_.seed_table(runs, storm_duration=opts.storm_duration, quantile=opts.quantile)
+    ext = ds_.extremes_table(seeds, storm_duration=opts.storm_duration, quantile=opts.quantile)
+    chk = ds_.checks_table(runs, ext, consequence_class=opts.consequence_class, offset_limit=opts.offset_limit,
+                           allowed_uplift=opts.allowed_uplift)
+    fat = ds_.fatigue_table(runs, tn_curve=opts.tn_curve, nominal_diameter=opts.nominal_diameter,
+                            scatter=opts.scatter)
+    life = ds_.fatigue_life_table(fat, design_fatigue_factor=opts.design_fatigue_factor) if opts.scatter else \
+        pd.DataFrame(columns=["line", "tn_curve", "load_cases", "damage_per_year", "life", "design_fatigue_factor",
+                              "note"])
+    tables = {"extremes": ext, "seeds": seeds, "checks": chk, "fatigue": fat, "fatigue_life": life}
+    figures = {"series": _figure_time_series(runs, seeds), "maxima": _figure_maxima(seeds, ext),
+               "utilisation": _figure_utilisation(chk)}
+    page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
+                 opts)
+    output.parent.mkdir(parents=True, exist_ok=True)
+    written = [atomic_write(output, lambda tmp: tmp.write_text(page, encoding="utf-8"))]
+    for key, table in tables.items():
+        if key == "fatigue_life" and not opts.scatter:
+            continue
+        path = output.with_name(f"{output.stem}_{key}.csv")
+        written.append(atomic_write(path, lambda tmp, t=table: _with_units(t).to_csv(tmp, index=False)))
+    return written
+

@@ -1,0 +1,107 @@
+"""Small synthetic results of time-domain mooring runs, for the design tables and the report."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+import yaml
+
+from seacable.results import make_dataset, var
+
+#: Nodes of every synthetic line (constant in time): the anchor (node 0) on the seabed, the first element
+#: rising 3 m over its 5 m (4 m horizontally), the fairlead (node 2) near the surface. [m]
+NODES = np.array([[0.0, 0.0, -100.0], [4.0, 0.0, -97.0], [50.0, 0.0, -10.0]])
+
+
+def synthetic_result(fairlead: dict, *, dt: float = 0.5, anchor: dict | None = None, case: dict | None = None,
+                     breaking_load: dict | None = None, failure_time: dict | None = None, body_xy=None,
+                     analysis: str = "mooring_dynamic", nodes=NODES):
+    """A result Dataset of a time-domain mooring run: per line its fairlead tension (and anchor tension,
+    default 0.8 of it) [N] at steps of ``dt`` [s]; nodes ``nodes`` [m] (line, time, node); optionally the
+    case (a mapping, stored as YAML), ``breaking_load`` [N] and ``failure_time`` [s] per line, and one body's
+    horizontal track ``body_xy`` (time, 2) [m]."""
+    lines = list(fairlead)
+    ft = np.array([np.asarray(fairlead[k], float) for k in lines])
+    at = np.array([np.asarray((anchor or {}).get(k, 0.8 * ft[i]), float) for i, k in enumerate(lines)])
+    nt = ft.shape[1]
+    nodes = np.asarray(nodes, float)
+    pos = np.broadcast_to(nodes, (len(lines), nt) + nodes.shape)
+    data = {"fairlead_tension": var(("line", "time"), ft, "N", "fairlead tension"),
+            "anchor_tension": var(("line", "time"), at, "N", "anchor tension")}
+    for k, name in enumerate("xyz"):
+        data[name] = var(("line", "time", "node"), pos[..., k].copy(), "m", f"{name} position")
+    coords = {"line": var("line", lines, "1", "line"), "time": var("time", np.arange(nt) * dt, "s", "time"),
+              "node": var("node", np.arange(nodes.shape[0]), "1", "node")}
+    if breaking_load is not None:
+        data["breaking_load"] = var("line", [breaking_load.get(k, np.nan) for k in lines], "N",
+                                    "minimum breaking load")
+    if failure_time is not None:
+        data["failure_time"] = var("line", [failure_time.get(k, np.nan) for k in lines], "s", "failure time")
+    if body_xy is not None:
+        bp = np.zeros((nt, 1, 6))
+        bp[:, 0, :2] = body_xy
+        coords["body"] = var("body", ["hull"], "1", "body")
+        coords["dof"] = var("dof", ["x", "y", "z", "roll", "pitch", "yaw"], "1", "degree of freedom")
+        data["body_position"] = var(("time", "body", "dof"), bp, "m or rad", "body position")
+    ds = make_dataset(data, coords, analysis=analysis, settings={"time_step": dt},
+                      references=["A reference of the model."], title=(case or {}).get("name", "synthetic"))
+    if case is not None:
+        ds.attrs["case"] = yaml.safe_dump(case, sort_keys=False)
+        ds.attrs["case_name"] = case.get("name", "synthetic")
+    return ds
+
+
+def chain_case(name="storm", *, hs=None, tp=None, seed=None, breaking_load=7.3e6, diameter=0.171,
+               type_name="studless_chain", lines=("L1", "L2")):
+    """A system case (as stored with a result) of lines of one chain type from fixed anchors (end A) to a
+    body's fairleads (end B), with an irregular sea when ``hs`` is given."""
+    lt = {"diameter": diameter, "mass_per_length": 180.0, "breaking_load": breaking_load, "name": None}
+    waves = None if hs is None else {"spectrum": "jonswap", "hs": hs, "tp": tp, "seed": seed}
+    points = {}
+    system_lines = {}
+    for k, line in enumerate(lines):
+        points[f"a{k}"] = {"kind": "fixed", "position": [0.0, 0.0, -100.0]}
+        points[f"f{k}"] = {"kind": "body", "body": "hull", "position": [50.0, 0.0, -10.0]}
+        system_lines[line] = {"line": {"segments": [{"line_type": dict(lt), "length": 120.0}]},
+                              "end_a": f"a{k}", "end_b": f"f{k}"}
+    return {"name": name, "line_types": {type_name: dict(lt)}, "environment": {"depth": 100.0, "waves": waves},
+            "bodies": {"hull": {"position": [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]}}, "points": points,
+            "lines": system_lines, "analysis": {"type": "system_dynamic"}}
+
+
+def write_sweep(folder, runs: list[tuple[dict, object]], name="storm", failed: dict | None = None):
+    """A folder as 'seacable sweep' writes it: ``summary.nc`` (one row per case, the swept parameters as
+    coordinates named by their key path) and ``cases/NNNN.nc``. ``runs``: (parameters, result Dataset);
+    ``failed``: case index -> error message of the cases that failed (no result file)."""
+    failed = failed or {}
+    import json
+
+    from seacable.results import write_netcdf
+
+    params = list(runs[0][0])
+    coords = {"case": var("case", np.arange(len(runs)), "1", "case index"),
+              "name": var("case", np.array([f"{name}_{k:04d}" for k in range(len(runs))], dtype=object), "1",
+                          "case name")}
+    units = {"environment.waves.hs": "m", "environment.waves.tp": "s", "environment.waves.seed": ""}
+    for p in params:
+        coords[p] = var("case", np.array([r[0][p] for r in runs], float), units.get(p, ""), p)
+    data = {"status": var("case", np.array(["failed" if k in failed else "done" for k in range(len(runs))],
+                                           dtype=object), "1", "status"),
+            "error": var("case", np.array([failed.get(k, "") for k in range(len(runs))], dtype=object), "1",
+                         "error")}
+    summary = make_dataset(data, coords, analysis="sweep", title=name, references=())
+    summary.attrs.update(parameters=json.dumps(params), case_analysis=runs[0][1].attrs["analysis"], cases=len(runs),
+                         done=len(runs) - len(failed), failed=len(failed), not_run=0, sweep=f"name: {name}\n")
+    write_netcdf(summary, folder / "summary.nc")
+    for k, (_, ds) in enumerate(runs):
+        if k not in failed:
+            write_netcdf(ds, folder / "cases" / f"{k:04d}.nc")
+    return folder
+
+
+@pytest.fixture
+def synth():
+    """The builders of this module: ``result``, ``case``, ``sweep`` and the ``nodes`` of every line."""
+    return SimpleNamespace(result=synthetic_result, case=chain_case, sweep=write_sweep, nodes=NODES)

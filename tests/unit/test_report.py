@@ -1,0 +1,341 @@
+"""The design report (seacable.report, ``seacable report``, issue 20): one self-contained HTML page and the same
+tables as CSV; the tables' numbers, the command's errors, a real run, and the page in a real browser (headless
+Chromium, Debian's package)."""
+
+from __future__ import annotations
+
+import base64
+import math
+import re
+import shutil
+import subprocess
+from html.parser import HTMLParser
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from seacable.cli import main
+from seacable.design import summary
+
+DT = 0.5
+CHROMIUM = "/usr/bin/chromium"
+DECK = Path(__file__).resolve().parents[1] / "validation" / "data" / "three_chains_deck.txt"
+
+
+class _Page(HTMLParser):
+    """The tables of a page (by class: rows of cell texts, <sup> written as '^'), its images and tags."""
+
+    def __init__(self):
+        super().__init__()
+        self.tables: dict[str, list[list[str]]] = {}
+        self.images: list[str] = []
+        self.tags: list[tuple[str, dict]] = []
+        self._table = None
+        self._cell = None
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        self.tags.append((tag, a))
+        if tag == "table":
+            self._table = self.tables.setdefault(a.get("class", ""), [])
+        elif tag == "tr" and self._table is not None:
+            self._table.append([])
+        elif tag in ("td", "th") and self._table is not None:
+            self._cell = []
+        elif tag == "sup" and self._cell is not None:
+            self._cell.append("^")
+        elif tag == "img":
+            self.images.append(a.get("src", ""))
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._cell is not None:
+            self._table[-1].append("".join(self._cell).strip())
+            self._cell = None
+        elif tag == "table":
+            self._table = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+def _page(path) -> _Page:
+    p = _Page()
+    p.feed(Path(path).read_text(encoding="utf-8"))
+    return p
+
+
+def _value(text: str) -> float:
+    """A number as the page shows it: '1388', '−0.5', '3.03×10^-5', '–' (none), '∞', a footnote mark '^a'."""
+    text = re.sub(r"\^[a-z]+$", "", text.replace("\u2212", "-")).strip()
+    if text in ("\u2013", ""):
+        return math.nan
+    if text == "\u221e":
+        return math.inf
+    m = re.fullmatch(r"(-?[\d.]+)\u00d710\^(-?\d+)", text)
+    return float(m[1]) * 10.0 ** int(m[2]) if m else float(text)
+
+
+def _shown(html_value: float, si_value: float, scale: float, sig: int) -> bool:
+    """The page shows ``si_value / scale`` to ``sig`` significant digits: within half a unit of its last digit."""
+    x = si_value / scale
+    if math.isnan(x) or math.isinf(x):
+        return (math.isnan(x) and math.isnan(html_value)) or x == html_value
+    if x == 0:
+        return html_value == 0
+    half = 0.5 * 10.0 ** (math.floor(math.log10(abs(x))) - (sig - 1))
+    return abs(html_value - x) <= half * (1 + 1e-9)
+
+
+def _record(seed: int, n: int = 600, mean: float = 2.0e6, amplitude: float = 4e4) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    t = np.arange(n) * DT
+    f = np.linspace(0.07, 0.15, 30)
+    amp = rng.rayleigh(amplitude, f.size)
+    phase = rng.uniform(0, 2 * np.pi, f.size)
+    return mean + np.sum(amp[:, None] * np.cos(2 * np.pi * f[:, None] * t + phase[:, None]), axis=0)
+
+
+@pytest.fixture
+def sweep_dir(synth, tmp_path):
+    """Two sea states x five seeds of a two-line chain mooring (MBS 7.3 MN); in the 8 m sea line L1's tension
+    reaches 4.6 MN, over the API RP 2SK intact allowable 7.3 / 1.67 = 4.37 MN: a check that fails. The anchors
+    take an uplift of 0.8 T 3/5 (under 2.3 MN)."""
+    runs = []
+    for hs, tp, mean in ((4.0, 9.0, 2.0e6), (8.0, 11.0, 4.2e6)):
+        for seed in range(5):
+            case = synth.case(name=f"spread_{hs:g}_{seed}", hs=hs, tp=tp, seed=seed)
+            track = np.c_[np.linspace(0.0, 3.0 + seed, 600), np.zeros(600)]  # the hull drifts 3 to 7 m in x
+            ds = synth.result({"L1": _record(seed, mean=mean), "L2": _record(50 + seed, mean=0.6 * mean)},
+                              dt=DT, case=case, body_xy=track)
+            runs.append(({"environment.waves.hs": hs, "environment.waves.tp": tp,
+                          "environment.waves.seed": float(seed)}, ds))
+    folder = synth.sweep(tmp_path / "sweep", runs, name="spread_storm")
+    scatter = tmp_path / "scatter.csv"
+    scatter.write_text("hs,tp,probability\n4.0,9.0,0.8\n8.0,11.0,0.2\n", encoding="utf-8")
+    return folder, scatter
+
+
+def _report(sweep_dir, tmp_path, *extra) -> Path:
+    folder, scatter = sweep_dir
+    out = tmp_path / "out" / "report.html"
+    assert main(["report", str(folder), "-o", str(out), "--scatter", str(scatter), "--allowed-uplift", "2.5e6",
+                 *extra]) == 0
+    return out
+
+
+def test_the_csv_tables_are_the_html_tables(sweep_dir, tmp_path, capsys):
+    out = _report(sweep_dir, tmp_path, "--storm-duration", "10800", "--offset-limit", "30")
+    printed = capsys.readouterr().out
+    names = ["report.html", "report_extremes.csv", "report_seeds.csv", "report_checks.csv", "report_fatigue.csv",
+             "report_fatigue_life.csv"]
+    assert sorted(p.name for p in out.parent.iterdir()) == sorted(names)  # nothing else beside the page
+    assert all(f"wrote {out.parent / n}" in printed for n in names)
+    page = _page(out)
+
+    ext = pd.read_csv(out.parent / "report_extremes.csv")
+    rows = page.tables["num extremes"][1:]
+    assert len(rows) == len(ext) == 2 * 2 * 2  # load cases x lines x ends
+    columns = {4: "mean [N]", 5: "std [N]", 6: "maximum_largest [N]", 7: "maximum_mean [N]", 8: "gumbel_mpm [N]",
+               9: "gumbel_quantile [N]", 10: "weibull_mpm [N]", 11: "weibull_quantile [N]", 12: "design_maximum [N]"}
+    for row, (_, csv) in zip(rows, ext.iterrows(), strict=True):
+        assert row[:4] == [csv["load_case"], csv["line"], csv["end"], str(csv["seeds"])]
+        for k, col in columns.items():
+            assert _shown(_value(row[k]), csv[col], 1e3, 4), (row, col)  # kN, 4 significant digits
+        assert row[13] == csv["design_basis"]
+
+    chk = pd.read_csv(out.parent / "report_checks.csv", keep_default_na=False, na_values=[""])
+    rows = page.tables["num checks"][1:]
+    assert len(rows) == len(chk) and len(chk) == 2 * (2 * 2 + 2 + 1)  # per load case: 2 lines x 2, 2 anchors, hull
+    for row, (_, csv) in zip(rows, chk.iterrows(), strict=True):
+        assert row[:3] == [csv["load_case"], csv["check"], csv["item"]]
+        scale = 1.0 if csv["check"] == "offset" else 1e3
+        assert _shown(_value(row[3]), csv["demand [N or m]"], scale, 4)
+        assert _shown(_value(row[4]), csv["capacity [N or m]"], scale, 4)
+        assert _shown(_value(row[6]), csv["utilisation [-]"], 1.0, 3) and _shown(_value(row[7]), csv["margin [-]"],
+                                                                                1.0, 3)
+        assert row[8] == {"pass": "PASS", "FAIL": "FAIL"}.get(csv["status"], csv["status"])
+    assert (chk["status"] == "FAIL").sum() == 1  # API RP 2SK intact, L1, in the 8 m sea
+    failed = chk[chk["status"] == "FAIL"].iloc[0]
+    assert (failed["check"], failed["item"], failed["load_case"]) == ("API RP 2SK intact dynamic", "L1",
+                                                                     "hs = 8 m, tp = 11 s")
+
+    fat = pd.read_csv(out.parent / "report_fatigue.csv")
+    rows = page.tables["num fatigue"][1:]
+    for row, (_, csv) in zip(rows, fat.iterrows(), strict=True):
+        assert _shown(_value(row[3]), csv["nominal_diameter [m]"], 1e-3, 3)
+        assert _shown(_value(row[6]), csv["damage [-]"], 1.0, 3)
+        assert _shown(_value(row[8]), csv["life_alone [years]"], 1.0, 3)
+        assert _shown(_value(row[9]), csv["probability [-]"], 1.0, 3)
+    life = pd.read_csv(out.parent / "report_fatigue_life.csv")
+    rows = page.tables["num life"][1:]
+    assert [r[0] for r in rows] == list(life["line"]) == ["L1", "L2"]
+    for row, (_, csv) in zip(rows, life.iterrows(), strict=True):
+        assert _shown(_value(row[4]), csv["life [years]"], 1.0, 3)
+
+    # the CSV holds the library's tables, in SI units
+    runs = summary.read_results(sweep_dir[0])
+    want = summary.extremes_table(runs, storm_duration=10800.0)
+    assert np.allclose(ext["design_maximum [N]"], want["design_maximum"], rtol=1e-15, atol=0)
+
+
+def test_the_page_is_self_contained_and_has_its_sections(sweep_dir, tmp_path):
+    out = _report(sweep_dir, tmp_path)
+    text = out.read_text(encoding="utf-8")
+    page = _page(out)
+    tags = {t for t, _ in page.tags}
+    assert "script" not in tags and "link" not in tags and "iframe" not in tags
+    for _, attrs in page.tags:
+        for key in ("src", "href"):
+            assert not str(attrs.get(key, "")).startswith(("http:", "https:", "//", "file:")), attrs
+    assert "http://" not in text and "https://" not in text
+    assert len(page.images) == 3  # the time series, the seeds' maxima, the utilisations
+    for src in page.images:
+        assert src.startswith("data:image/png;base64,")
+        png = base64.b64decode(src.split(",", 1)[1])
+        assert png[:8] == b"\x89PNG\r\n\x1a\n" and len(png) > 10_000
+    for title in ("Summary", "1. Inputs", "2. Model and references", "3. Extreme tensions", "4. Code checks",
+                  "5. Fatigue"):
+        assert f"<h2>{title}</h2>" in text
+    assert "<details><summary>Case file (YAML) of spread_storm_0000</summary>" in text
+    assert "A reference of the model." in text and "DNV-OS-E301" in text and "API RP 2SK" in text
+    assert "1 of 12 fail" in text  # the summary's verdict: no offset limit, no offset check
+
+
+def test_a_short_real_run_of_the_three_chain_deck(tmp_path):
+    """A few seconds of the three-chain MoorDyn deck: the report's seed maxima are the stored series' maxima; the
+    deck has no breaking load, so the checks say so instead of failing."""
+    nc = tmp_path / "three.nc"
+    assert main(["run", str(DECK), "--duration", "3", "--output-interval", "0.1", "--no-plots", "-o", str(nc)]) == 0
+    out = tmp_path / "three.html"
+    assert main(["report", str(nc), "-o", str(out), "--tn-curve", "studless", "--nominal-diameter", "0.14"]) == 0
+    seeds = pd.read_csv(tmp_path / "three_seeds.csv")
+    with xr.open_dataset(nc) as ds:
+        for line in ds["line"].values:
+            row = seeds[(seeds["line"] == line) & (seeds["end"] == "fairlead")].iloc[0]
+            assert row["maximum [N]"] == float(ds["fairlead_tension"].sel(line=line).max())
+    chk = pd.read_csv(tmp_path / "three_checks.csv", keep_default_na=False)
+    tension = chk[chk["check"].str.startswith(("DNV", "API"))]
+    assert list(tension["status"]) == [f"not checked: no breaking_load for line 'line {k}'" for k in (1, 1, 2, 2, 3, 3)]
+    fat = pd.read_csv(tmp_path / "three_fatigue.csv")
+    assert list(fat["tn_curve"]) == ["studless_chain"] * 3 and (fat["damage [-]"] >= 0).all()
+    assert "not checked: no breaking_load for line &#x27;line 1&#x27;" in out.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["-o", "{out}", "--tn-curve", "polyester"], "T-N curve 'polyester' is not one of"),
+    (["-o", "{out}", "--quantile", "1.5"], "quantile's probability must lie between 0 and 1"),
+    (["-o", "{out}", "--storm-duration", "-3"], "--storm-duration must be"),
+    (["-o", "{out}", "--consequence-class", "3"], "invalid choice"),
+    (["-o", "{dir}/report.txt"], "must end in .html"),
+    ([], "the following arguments are required: -o"),
+    (["-o", "{out}", "--scatter", "{dir}/missing.csv"], "scatter diagram"),
+])
+def test_bad_options_are_one_line_errors(sweep_dir, tmp_path, capsys, args, message):
+    folder, _ = sweep_dir
+    args = [a.format(out=tmp_path / "r.html", dir=tmp_path) for a in args]
+    assert main(["report", str(folder), *args]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err and err.count("\n") == 1, err
+    assert not (tmp_path / "r.html").exists()
+
+
+def test_a_missing_source_or_another_analysis_is_refused(synth, tmp_path, capsys):
+    assert main(["report", str(tmp_path / "nothing.nc"), "-o", str(tmp_path / "r.html")]) == 2
+    assert "does not exist" in capsys.readouterr().err
+    from seacable.results import write_netcdf
+
+    static = write_netcdf(synth.result({"L1": np.ones(4)}, analysis="mooring_static"), tmp_path / "static.nc")
+    assert main(["report", str(static), "-o", str(tmp_path / "r.html")]) == 2
+    assert "analysis 'mooring_static'" in capsys.readouterr().err
+
+
+# ------------------------------------------------------------------------------------------ in a real browser
+
+def _chromium(page: Path, png: Path, profile: Path, size=(1280, 4000)) -> list[str]:
+    """Open ``page`` in headless Chromium, write its screenshot; the console lines it logged."""
+    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+           "--disable-background-networking", "--disable-component-update", "--disable-sync",
+           f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
+           f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
+    done = subprocess.run(cmd, check=False, capture_output=True, text=True, timeout=180)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return [line for line in done.stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
+
+
+def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
+    return int(np.sum(np.all(np.abs(rgb - np.array(colour)) <= tol, axis=-1)))
+
+
+@pytest.mark.skipif(shutil.which(CHROMIUM) is None,
+                    reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
+def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
+    from PIL import Image
+
+    out = _report(sweep_dir, tmp_path, "--offset-limit", "30")
+    # the console is read: a page with an error in its console is caught
+    planted = tmp_path / "planted.html"
+    planted.write_text("<html><body><script>console.error('planted'); missing();</script></body></html>")
+    lines = _chromium(planted, tmp_path / "planted.png", tmp_path / "profile0", (400, 300))
+    assert any("planted" in line for line in lines) and any("Uncaught" in line for line in lines)
+
+    png = tmp_path / "report.png"
+    assert _chromium(out, png, tmp_path / "profile") == []  # no console message at all
+    rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
+    assert rgb.shape == (4000, 1280, 3)
+    blank = tmp_path / "blank.png"
+    empty = tmp_path / "empty.html"
+    empty.write_text("<html><body></body></html>")
+    _chromium(empty, blank, tmp_path / "profile1")
+    # non-background pixels: any channel 10 levels off white. A blank page has none; a page of text alone
+    # (the same tables unstyled) under 5 %. This page, with its shaded table headers, zebra rows and three
+    # figures in its first 4000 px, is over 8 % (11.6 % when this was written; the same page without its CSS
+    # and figures 4.2 %, with its CSS but no figures 10.2 %: the colours below tell the figures).
+    share = float(np.mean(np.any(rgb < 245, axis=-1)))
+    assert float(np.mean(np.any(np.asarray(Image.open(blank).convert("RGB"), dtype=int) < 245, axis=-1))) == 0.0
+    assert share > 0.08, share
+    # the tables and figures are drawn: the table headers' shade (#eef2f6; 146 000 px when this was written),
+    # the figures' blue data (#0072b2, the time series and the seeds' maxima: 4 000 px), the passing bars'
+    # green (#2e7d32: 60 000 px) and the failing bar's red (#c62828, also the FAIL badge: 11 000 px). The same
+    # page without its figures has 65 px of that green, 950 px of that red and none of that blue.
+    assert _near(rgb, (0xEE, 0xF2, 0xF6), 2) > 20_000
+    assert _near(rgb, (0x00, 0x72, 0xB2)) > 1_500
+    assert _near(rgb, (0x2E, 0x7D, 0x32)) > 10_000
+    assert _near(rgb, (0xC6, 0x28, 0x28)) > 4_000
+
+
+def test_failed_cases_are_listed_and_left_out(synth, tmp_path):
+    runs = [({"environment.waves.seed": float(k)},
+             synth.result({"L1": _record(k)}, case=synth.case(hs=4.0, tp=9.0, seed=k, lines=("L1",))))
+            for k in range(3)]
+    folder = synth.sweep(tmp_path / "sw", runs, failed={1: "ConvergenceError: no convergence at t = 12 s\nmore"})
+    assert [r.seed for r in summary.read_results(folder)] == [0, 2]
+    out = tmp_path / "r.html"
+    assert main(["report", str(folder), "-o", str(out)]) == 0
+    page = _page(out)
+    assert ["storm_0001", "ConvergenceError: no convergence at t = 12 s"] in page.tables[""]
+    seeds = pd.read_csv(tmp_path / "r_seeds.csv")
+    assert sorted(set(seeds["seed"])) == [0, 2]
+
+
+def test_the_report_of_datasets_from_python(synth, tmp_path):
+    """The library call: make_report on Datasets, a platform following a prescribed motion checked for offset
+    (its horizontal distance from the origin, the largest: |(6, 8)| = 10 m)."""
+    from seacable.report import ReportOptions, make_report
+    from seacable.results import var
+
+    ds = synth.result({"L1": _record(1)}, case=synth.case(lines=("L1",)))
+    xy = np.zeros((ds.sizes["time"], 6))
+    xy[30, :2] = [6.0, 8.0]
+    ds["platform_position"] = var(("time", "dof"), xy, "m or rad", "platform motion")
+    ds = ds.assign_coords(dof=["x", "y", "z", "roll", "pitch", "yaw"])
+    written = make_report({"storm": [ds]}, tmp_path / "lib.html", ReportOptions(offset_limit=20.0))
+    assert [p.name for p in written] == ["lib.html", "lib_extremes.csv", "lib_seeds.csv", "lib_checks.csv",
+                                         "lib_fatigue.csv"]
+    chk = pd.read_csv(tmp_path / "lib_checks.csv")
+    row = chk[chk["check"] == "offset"].iloc[0]
+    assert row["item"] == "platform" and row["demand [N or m]"] == 10.0 and row["utilisation [-]"] == 0.5
+    assert "result Datasets (Python)" in written[0].read_text(encoding="utf-8")
