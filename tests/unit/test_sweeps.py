@@ -41,7 +41,7 @@ SLACKS = [0.03, 0.05]   # 12 cases
 
 def write_sweep(folder: Path, **spec) -> Path:
     path = folder / "sweep.yaml"
-    path.write_text(yaml.safe_dump({"name": "t", "base": BASE, **spec}), encoding="utf-8")
+    path.write_text(yaml.safe_dump({"name": "t", "base": BASE, **spec}, sort_keys=False), encoding="utf-8")
     return path
 
 
@@ -69,6 +69,22 @@ def test_grid_is_the_product_last_parameter_fastest():
     assert [c.name for c in cases[:2]] == ["t_0000", "t_0001"]
     # the base is not changed by the sweep
     assert BASE["analysis"]["ship"]["speed"] == 2.0
+
+
+def test_a_table_with_a_grid_runs_each_row_at_every_combination(tmp_path):
+    """Sea states x seeds, say: the table's rows (its columns together) each at every value of the grid, the
+    grid fastest; the table written in the file or as a CSV gives the same cases."""
+    (tmp_path / "rows.csv").write_text("analysis.ship.speed,analysis.payout.slack\n0.75,0.03\n1.5,0.05\n")
+    inline = sc.load_sweep(write_sweep(tmp_path, table={"analysis.ship.speed": [0.75, 1.5],
+                                                        "analysis.payout.slack": [0.03, 0.05]},
+                                       grid={"analysis.duration": [10.0, 20.0, 30.0]}))
+    from_csv = sc.load_sweep(write_sweep(tmp_path, table="rows.csv", grid={"analysis.duration": [10.0, 20.0, 30.0]}))
+    for s in (inline, from_csv):
+        assert s.kind == "table x grid" and len(s) == 6
+        assert s.parameters == ("analysis.ship.speed", "analysis.payout.slack", "analysis.duration")
+        assert [c.values for c in s.cases()] == [(0.75, 0.03, 10.0), (0.75, 0.03, 20.0), (0.75, 0.03, 30.0),
+                                                (1.5, 0.05, 10.0), (1.5, 0.05, 20.0), (1.5, 0.05, 30.0)]
+        assert s.cases()[4].case.analysis.ship.speed == 1.5 and s.cases()[4].case.analysis.duration == 20.0
 
 
 def test_range_values():
@@ -111,8 +127,14 @@ def test_unknown_path_fails_before_anything_runs(tmp_path, path, hint):
 
 
 def test_sweep_file_errors(tmp_path):
-    with pytest.raises(CaseFileError, match="exactly one of 'grid'"):
-        sc.load_sweep(write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0]}, table="x.csv"))
+    with pytest.raises(CaseFileError, match="needs 'grid'.*'table'.*or both"):
+        sc.load_sweep(write_sweep(tmp_path, name="no_cases"))
+    with pytest.raises(CaseFileError, match="analysis.ship.speed is in both the grid and the table"):
+        sc.load_sweep(write_sweep(tmp_path, grid={"analysis.ship.speed": [1.0]},
+                                  table={"analysis.ship.speed": [2.0]}))
+    with pytest.raises(CaseFileError, match=r"columns have different lengths \[1, 2\]"):
+        sc.load_sweep(write_sweep(tmp_path, table={"analysis.ship.speed": [2.0],
+                                                   "analysis.payout.slack": [0.03, 0.05]}))
     with pytest.raises(CaseFileError, match="unknown key 'gird'. Did you mean 'grid'"):
         sc.load_sweep(write_sweep(tmp_path, gird={"analysis.ship.speed": [1.0]}))
     with pytest.raises(CaseFileError, match="has no values"):

@@ -83,3 +83,21 @@ def test_an_irregular_sea_needs_a_lines_only_system():
     with pytest.raises(InputError, match=r"irregular sea.*free bodies \(buoy\).*Suggested fix"), \
             pytest.warns(SeacableWarning, match="waves act on the lines only"):
         sc.check(case)
+
+
+def test_a_damaged_condition_leaves_its_lines_out_from_the_start():
+    """analysis.damaged_lines runs the system without them: the same result, bit for bit, as the case file with
+    the line deleted (the report's ALS condition); an unknown line is refused by name."""
+    motion = {"buoy": {"type": "platform", "amplitude": [1.0, 0, 0, 0, 0, 0], "period": 10.0, "ramp": 5.0}}
+    damaged = _spread({"duration": 3.0, "body_motions": motion, "damaged_lines": ["line1"]}, None)
+    data = yaml.safe_load(SPREAD.read_text())
+    data["bodies"]["buoy"]["kind"] = "prescribed"
+    data["bodies"]["buoy"].pop("external_force")
+    del data["lines"]["line1"], data["points"]["anchor1"], data["points"]["fairlead1"]
+    data["analysis"] = {"type": "system_dynamic", "output_interval": 0.5, "n_elements": 20, "duration": 3.0,
+                        "body_motions": motion}
+    a, b = sc.run(damaged), sc.run(sc.parse_case(data))
+    assert list(a.line.values) == ["line2", "line3"]
+    np.testing.assert_array_equal(a.fairlead_tension.values, b.fairlead_tension.values)
+    with pytest.raises(InputError, match=r"damaged_lines\[0\]: line 'line9' is not defined"):
+        _spread({"duration": 3.0, "body_motions": motion, "damaged_lines": ["line9"]}, None)

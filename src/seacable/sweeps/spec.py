@@ -8,7 +8,10 @@ A sweep file is YAML::
       analysis.ship.speed: [0.75, 1.0, 1.5]
       environment.current.speed: {start: 0.0, stop: 0.5, step: 0.25}
 
-or, instead of ``grid``, ``table: cases.csv``: one case per row, one parameter path per column.
+or, instead of ``grid``, ``table: cases.csv``: one case per row, one parameter path per column (or the
+columns written in the file: ``table: {environment.waves.hs: [4.0, 8.0], environment.waves.tp: [9.0, 12.0]}``).
+With both, each row of the table is run at every combination of the grid: sea states x headings x seeds,
+for instance.
 A parameter is addressed by its key path in the case file, dots between keys and ``[i]`` (or
 ``.i``) for list items: ``line_types.cable.diameter``, ``line.segments[1].length``. Every path is
 checked against the case's schema before anything runs; an unknown one gets a did-you-mean.
@@ -79,14 +82,16 @@ class SweepFile(Model):
                                                    "file) or the case's keys.")
     grid: dict[str, list[Any] | Range] | None = Field(
         None, description="Parameter path -> list of values (or a range); the sweep is every combination.")
-    table: str | None = Field(None, description="CSV file of cases (path relative to the sweep file): a header "
-                                                "of parameter paths, one case per row.")
+    table: str | dict[str, list[Any]] | None = Field(
+        None, description="Cases row by row: a CSV file (path relative to the sweep file; a header of parameter "
+                          "paths, one case per row) or its columns (parameter path -> values, all of one length); "
+                          "with a grid, each row at every combination of the grid.")
 
     @model_validator(mode="after")
     def _one_of(self):
-        if (self.grid is None) == (self.table is None):
-            raise ValueError("needs exactly one of 'grid' (parameter lists, every combination) or 'table' "
-                             "(a CSV file, one case per row).")
+        if self.grid is None and self.table is None:
+            raise ValueError("needs 'grid' (parameter lists, every combination), 'table' (a CSV file or columns, "
+                             "one case per row) or both (each row at every combination).")
         if self.grid is not None:
             if not self.grid:
                 raise ValueError("grid is empty. Suggested fix: add e.g. 'analysis.ship.speed: [1.0, 2.0]'.")
@@ -202,7 +207,8 @@ class Sweep:
     grid
         Parameter path -> values; the sweep is every combination, the last parameter varying fastest.
     table
-        Parameter path -> values, all the same length: one case per position (a CSV file's columns).
+        Parameter path -> values, all the same length: one case per position (a CSV file's columns). With a
+        grid too, each row of the table at every combination of the grid (the table's parameters first).
     name, description
         Name of the sweep (cases are ``NAME_0000``, ...) and free text.
     source
@@ -216,11 +222,17 @@ class Sweep:
 
     def __init__(self, base, *, grid: dict | None = None, table: dict | None = None, name: str = "sweep",
                  description: str = "", source: str = "sweep", text: str | None = None):
-        if (grid is None) == (table is None):
-            raise InputError("a sweep needs exactly one of 'grid' or 'table'.")
+        if grid is None and table is None:
+            raise InputError("a sweep needs 'grid', 'table' or both.")
         self.name, self.description, self.source = name, description, source
         self.base = _base_data(base)
-        spec = grid if grid is not None else table
+        if grid is not None and table is not None:
+            twice = sorted(set(map(str, grid)) & set(map(str, table)))
+            if twice:
+                raise InputError(f"{source}: {', '.join(twice)} is in both the grid and the table. Suggested fix: "
+                                 "give each parameter once.")
+        spec = {**(table or {}), **(grid or {})}
+        n_table = len(table or {})
         self.parameters = tuple(str(p) for p in spec)
         for path, values in spec.items():
             if not isinstance(values, Range) and (isinstance(values, (str, bytes, dict))
@@ -229,24 +241,32 @@ class Sweep:
                                  f"{values!r}. Suggested fix: write e.g. [{values!r}].")
         spec = {p: v if isinstance(v, Range) or hasattr(v, "__len__") else list(v) for p, v in spec.items()}
         sizes = [_count(v) for v in spec.values()]
-        if grid is not None:   # counted before the grid is expanded: 5000 x 5000 is refused at once
-            check_case_count(f"{source}: the grid ({' x '.join(str(n) for n in sizes)})", math.prod(sizes),
-                             "sweep fewer values, or split the sweep into several")
         columns = [[_plain(x) for x in (v.values() if isinstance(v, Range) else v)] for v in spec.values()]
+        rows = [()]
         if table is not None:
-            sizes = {len(c) for c in columns}
-            if len(sizes) != 1:
-                raise InputError(f"{source}: the table's columns have different lengths {sorted(sizes)}.")
-            check_case_count(f"{source}: the table", max(sizes), "split the table into several")
-            self.rows = list(zip(*columns))
+            lengths = {len(c) for c in columns[:n_table]}
+            if len(lengths) != 1:
+                raise InputError(f"{source}: the table's columns have different lengths {sorted(lengths)}. "
+                                 "Suggested fix: give every column one value per case.")
+            rows = list(zip(*columns[:n_table]))
+        if grid is not None:   # counted before the grid is expanded: 5000 x 5000 is refused at once
+            counts = [len(rows)] * (table is not None) + sizes[n_table:]
+            check_case_count(f"{source}: the {'table x grid' if table is not None else 'grid'} "
+                             f"({' x '.join(str(n) for n in counts)})", math.prod(counts),
+                             "sweep fewer values, or split the sweep into several")
+            self.rows = [r + g for r in rows for g in itertools.product(*columns[n_table:])]
         else:
-            self.rows = list(itertools.product(*columns))
+            check_case_count(f"{source}: the table", len(rows), "split the table into several")
+            self.rows = rows
         if not self.rows:
             raise InputError(f"{source}: the sweep has no cases. Suggested fix: give each parameter a value.")
-        self.kind = "grid" if grid is not None else "table"
+        self.kind = "table x grid" if grid is not None and table is not None else ("grid" if grid is not None
+                                                                                    else "table")
+        parts = {"table": dict(zip(self.parameters[:n_table], columns[:n_table])) if table is not None else None,
+                 "grid": dict(zip(self.parameters[n_table:], columns[n_table:])) if grid is not None else None}
         self.text = text if text is not None else yaml.safe_dump(
-            {"name": name, "description": description, "base": self.base, self.kind: {
-                p: list(c) for p, c in zip(self.parameters, columns)}}, sort_keys=False)
+            {"name": name, "description": description, "base": self.base,
+             **{k: {p: list(c) for p, c in v.items()} for k, v in parts.items() if v is not None}}, sort_keys=False)
         self._parts = [parse_path(p) for p in self.parameters]
         self._check_paths()
         self._cases = None
@@ -439,11 +459,11 @@ def load_sweep(path: str | Path) -> Sweep:
         base = copy.deepcopy(base)
         resolve_files(base, path.parent)
     try:
-        if spec.grid is not None:
-            return Sweep(base, grid=spec.grid, name=spec.name, description=spec.description, source=source,
-                         text=text)
-        return Sweep(base, table=_read_table(path.parent / spec.table, source), name=spec.name,
-                     description=spec.description, source=source, text=text)
+        table = spec.table
+        if isinstance(table, str):
+            table = _read_table(path.parent / table, source)
+        return Sweep(base, grid=spec.grid, table=table, name=spec.name, description=spec.description,
+                     source=source, text=text)
     except CaseFileError:
         raise
     except InputError as err:

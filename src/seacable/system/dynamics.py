@@ -215,6 +215,9 @@ class SystemDynamicAnalysis(Model):
     external_forces: dict[str, ExternalForceSeries] = Field(
         default_factory=dict, description="External force time series per free body.")
     failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
+    damaged_lines: tuple[str, ...] = Field(
+        (), description="Lines left out from the start: the damaged condition (a sweep over [[], [line1]] runs "
+                        "intact and damaged).")
     start: Literal["equilibrium", "held", "auto"] = Field(
         "equilibrium", description="Static start of the whole system, or with free bodies held at their position, "
                                    "or 'auto': the static start when it converges, else held (with a warning).")
@@ -240,6 +243,9 @@ class SystemDynamicAnalysis(Model):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
+        if len(set(self.damaged_lines)) != len(self.damaged_lines):
+            raise ValueError(f"damaged_lines names a line twice: {list(self.damaged_lines)}. Suggested fix: name each "
+                             "once.")
         if self.release_offsets and self.start != "equilibrium":
             raise ValueError("release_offsets start from the equilibrium: they need 'start: equilibrium'.")
         if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
@@ -859,6 +865,9 @@ def _global_state(q, qd, frame):
 
 def _system_of(case) -> MooringSystem:
     """The MooringSystem of a case: ``case.system()`` or ``case.system``, or its points/bodies/lines."""
+    damaged = getattr(case, "damaged_system", None)
+    if callable(damaged) and getattr(case.analysis, "damaged_lines", ()):
+        return damaged()
     sys_ = getattr(case, "system", None)
     if callable(sys_):
         sys_ = sys_()
