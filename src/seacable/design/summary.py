@@ -714,7 +714,9 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
     tells ("chain": studless chain); the stress range is the tension range over the nominal cross-section of
     the ``nominal_diameter`` [m], else of the line type's volume-equivalent diameter over
     :data:`VOLUME_EQUIVALENT_RATIO` (1.8 for studless chain). A load case's damage is the mean over its seeds
-    of :func:`~seacable.design.fatigue.fatigue_damage`, over their mean duration.
+    of :func:`~seacable.design.fatigue.fatigue_damage`, over their mean duration. Fatigue is a limit state of
+    the intact system (DNV-OS-E301 Ch.2 Sec.2 D): runs with a failed or removed line (:func:`failed_lines`)
+    are left out.
 
     Parameters
     ----------
@@ -734,8 +736,12 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
         raise InputError(f"the nominal diameter must be > 0 m, got {nominal_diameter} m. Suggested fix: give the "
                          "chain's bar diameter or the rope's nominal diameter in m, e.g. 0.095.")
     acc: dict[tuple[str, str], dict] = {}
+    intact = []
     for run in runs:
         with run.open() as ds:
+            if failed_lines(ds):
+                continue
+            intact.append(run)
             duration = _duration(ds)
             info = line_info(ds)
             for line in line_names(ds):
@@ -758,7 +764,7 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
                                                           diameter=d))
                 a["duration"].append(duration)
                 a["curve"], a["diameter"] = curve, d
-    probability = _scatter_probabilities(runs, scatter) if scatter is not None else {}
+    probability = _scatter_probabilities(intact, scatter) if scatter is not None else {}
     rows = []
     for (load_case, line), a in acc.items():
         n = len(a["damage"])

@@ -218,8 +218,9 @@ class RAOMotion(Model):
     """Rigid-body motion of a platform from its response amplitude operators in the case's waves (issue 20).
 
     The six motions (surge, sway, heave [m]; roll, pitch, yaw [rad], about ``reference``, R = Rz Ry Rx) are
-    the platform's mean position ``mean_offset`` (under steady wind, current and drift loads: from the system
-    statics, or given) plus its first-order response to the environment's irregular sea or regular waves
+    the platform's mean position ``mean_offset`` (under steady wind, current and drift loads: given, or for a
+    body of a mooring system ``equilibrium``, the body's static equilibrium under its ``external_force`` with the
+    lines of the run, intact or damaged, :mod:`seacable.system.statics`) plus its first-order response to the environment's irregular sea or regular waves
     through the RAO table of ``file`` (:func:`seacable.raos.rao_motion`; the RAO phases are referred to the
     wave elevation at the reference point's horizontal position, at rest). The wave response starts with
     the smooth ramp; the mean offset is there from the start, where the static start puts the lines. A
@@ -234,8 +235,10 @@ class RAOMotion(Model):
     ulen: quantity("m", gt=0, fix="give WAMIT's length scale ULEN in metres (1 when the file is dimensional).") = \
         Field(1.0, description="WAMIT's length scale ULEN: rotations in the file are per ULEN. [m]")
     reference: _XYZ = Field((0.0, 0.0, 0.0), description="RAO reference point (centre of rotation) at rest. [m]")
-    mean_offset: _SIX = Field((0.0,) * 6, description="Mean position about which the platform moves: surge, "
-                                                      "sway, heave [m], roll, pitch, yaw [rad].")
+    mean_offset: _SIX | Literal["equilibrium"] = Field(
+        (0.0,) * 6, description="Mean position about which the platform moves: surge, sway, heave [m], roll, pitch, "
+                                "yaw [rad]; or, for a body of a system, 'equilibrium': its static equilibrium under "
+                                "its steady external_force with the run's lines.")
     ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start of the wave response. [s]")
 
     def table(self):
@@ -250,6 +253,10 @@ class RAOMotion(Model):
 
     def in_sea(self, sea) -> SeaRAOMotion:
         """This motion in the sea ``sea`` (:class:`seacable.seastate.SeaComponents`, None in calm water)."""
+        if self.mean_offset == "equilibrium":
+            raise InputError("motion.mean_offset 'equilibrium' is the static position of a body of a mooring system "
+                             "(a system_dynamic case's body_motions); this motion moves the fairlead of a single line. "
+                             "Suggested fix: give the mean offset [surge, sway, heave, roll, pitch, yaw] in m and rad.")
         if sea is None:
             raise InputError("a motion of type 'rao' moves the platform in waves, but the environment has none. "
                              "Suggested fix: give environment.waves (an irregular sea with 'spectrum', or regular "

@@ -975,6 +975,7 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if t[0] > 1e-9 or t[-1] < a.duration - 1e-9:
             raise InputError(f"{where}.external_forces.{name}: the series covers {t[0]:g} to {t[-1]:g} s, the run "
                              f"needs 0 to {a.duration:g} s. Suggested fix: extend the table.")
+    a = _mean_offsets(case, system, a)
     fe = build_system_fe(system, case.environment, a)
     net = fe.model.network
     steps = a.duration / min(a.time_step, a.output_interval)
@@ -999,6 +1000,32 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         t_out = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
         fe.model.check_sea(a.duration, np.concatenate((fe.model.network.position, channels(t_out)[0].reshape(-1, 3))))
     return SystemDynamicSetup(fe, a, start_fe)
+
+
+def _mean_offsets(case, system: MooringSystem, a: SystemDynamicAnalysis) -> SystemDynamicAnalysis:
+    """The analysis with each RAO motion's ``mean_offset: equilibrium`` resolved: the body's static equilibrium,
+    free under its weight, buoyancy, hydrostatics, steady ``external_force`` and the lines of the run (the damaged
+    system's when lines are left out), less its given position (:func:`seacable.system.statics.solve_equilibrium`)."""
+    names = [n for n, m in a.body_motions.items() if isinstance(m, RAOMotion) and m.mean_offset == "equilibrium"]
+    if not names:
+        return a
+    from ..errors import NoSolutionError
+    from .statics import solve_equilibrium
+
+    bodies = {n: b.model_copy(update={"kind": "free"}) if n in names else b for n, b in system.bodies.items()}
+    where = f"analysis.body_motions ({', '.join(names)}: mean_offset 'equilibrium')"
+    try:
+        free = MooringSystem(points=system.points, bodies=bodies, lines=system.lines)
+        eq = solve_equilibrium(free, case.environment)
+    except (InputError, NoSolutionError, ConvergenceError) as err:
+        raise InputError(f"{where}: the static equilibrium of the free body could not be found: {err} Suggested fix: "
+                         "give the body's mass, volume, centres and waterplane (it floats), or the mean offset "
+                         "itself.") from None
+    motions = dict(a.body_motions)
+    for n in names:
+        pose = np.asarray(eq.body_position[eq.body_names.index(n)], float) - np.asarray(system.bodies[n].position)
+        motions[n] = motions[n].model_copy(update={"mean_offset": tuple(float(v) for v in pose)})
+    return a.model_copy(update={"body_motions": motions})
 
 
 def lines_only(fe: SystemFE) -> bool:
