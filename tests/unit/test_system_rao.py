@@ -101,3 +101,31 @@ def test_a_damaged_condition_leaves_its_lines_out_from_the_start():
     np.testing.assert_array_equal(a.fairlead_tension.values, b.fairlead_tension.values)
     with pytest.raises(InputError, match=r"damaged_lines\[0\]: line 'line9' is not defined"):
         _spread({"duration": 3.0, "body_motions": motion, "damaged_lines": ["line9"]}, None)
+
+
+def test_the_mean_offset_is_the_bodys_static_equilibrium_under_its_steady_loads(tmp_path):
+    """mean_offset 'equilibrium': the buoy, made free, in static equilibrium under its 500 kN steady load with the
+    run's lines: the pose system_static finds for the same system (examples/spread_mooring.yaml), to the statics'
+    tolerance; with line1 left out (damaged), the damaged equilibrium. A single line's fairlead motion has no
+    body to take it from: refused."""
+    data = yaml.safe_load(SPREAD.read_text())
+    static = sc.run(sc.parse_case(data))
+    body = data["bodies"]["buoy"]
+    data["bodies"]["buoy"] = {**body, "kind": "prescribed"}
+    data["environment"]["waves"] = SEA
+    motion = {"buoy": {"type": "rao", "file": str(_csv(tmp_path)), "mean_offset": "equilibrium"}}
+    for condition, damaged in (("intact", []), ("damaged", ["line1"])):
+        data["analysis"] = {"type": "system_dynamic", "duration": 1.0, "n_elements": 20, "body_motions": motion,
+                            "damaged_lines": damaged}
+        setup = D.prepare_system_dynamic(sc.parse_case(data))
+        got = setup.analysis.body_motions["buoy"].mean_offset
+        want = [float(static[f"body_{k}"].sel(condition=condition, body="buoy"))
+                for k in ("x", "y", "z", "roll", "pitch", "yaw")]
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-6)  # the statics' tolerance (1e-8 of the loads)
+    assert abs(want[0]) > 1.0  # the load moves it metres
+    line = {"type": "rao", "file": str(_csv(tmp_path)), "mean_offset": "equilibrium"}
+    from .test_rao_motion import SEA as LINE_SEA
+    from .test_rao_motion import _line_case
+
+    with pytest.raises(InputError, match="mean_offset 'equilibrium' is the static position of a body"):
+        sc.check(_line_case(tmp_path, line, LINE_SEA))

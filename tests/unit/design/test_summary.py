@@ -307,3 +307,22 @@ def test_a_sea_state_of_several_headings_shares_its_probability(synth, tmp_path)
     damage = [100 * (r / area / 1e6) ** 3 / 6.0e10 for r in (1.0e6, 2.0e6)]
     want = 1.0 / (SECONDS_PER_YEAR * 0.5 * (damage[0] + damage[1]) / (200 * DT))
     assert summary.fatigue_life_table(fat)["life"].iloc[0] == pytest.approx(want, rel=1e-12)
+
+
+def test_fatigue_counts_the_intact_runs_only(synth, tmp_path):
+    """Fatigue is a limit state of the intact system (DNV-OS-E301 Ch.2 Sec.2 D): a damaged load case of the same
+    sea state (a line failed) adds nothing to the damage nor takes a share of the scatter diagram's probability."""
+    runs = []
+    for damaged in (False, True):
+        ds = synth.result({"L1": _cycles(1.0e6, 1.0e6, 200), "L2": _cycles(1.0e6, 3.0e6, 200)}, dt=DT,
+                          failure_time={"L2": 1.0} if damaged else None,
+                          case=synth.case(hs=2.0, tp=8.0, seed=1))
+        runs.append(({"environment.waves.hs": 2.0, "environment.waves.tp": 8.0, "environment.waves.seed": 1.0,
+                      "analysis.duration": 100.0 + damaged}, ds))
+    scatter = tmp_path / "scatter.csv"
+    scatter.write_text("hs,tp,probability\n2.0,8.0,1.0\n")
+    fat = summary.fatigue_table(summary.read_results(synth.sweep(tmp_path / "sw", runs)), scatter=scatter)
+    area = 2 * math.pi * (0.171 / 1.8) ** 2 / 4
+    assert list(fat["line"]) == ["L1", "L2"] and list(fat["probability"]) == [1.0, 1.0]
+    assert list(fat["damage"]) == pytest.approx([200 * (r / area / 1e6) ** 3 / 6.0e10 for r in (1e6, 3e6)],
+                                                rel=1e-12)
