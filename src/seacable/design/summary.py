@@ -229,7 +229,11 @@ def _sweep_runs(folder: Path) -> list[Run]:
                          f"need time-domain mooring results ({' or '.join(DYNAMIC_ANALYSES)}). Suggested fix: "
                          "sweep a mooring_dynamic or system_dynamic case.")
     units = {p: summary[p].attrs.get("units", "") for p in params}
-    others = [p for p in params if p != SEED_PATH]
+    # a load case is named by its sea state and the parameters that tell it from the others: not the seed,
+    # nor one value for all (a run's duration, say)
+    done = summary["status"].values.astype(str) == "done"
+    others = [p for p in params if p != SEED_PATH and (p in (HS_PATH, TP_PATH, HEADING_PATH) or len(
+        {json.dumps(_plain(v), default=str) for v in summary[p].values[done]}) > 1)]
     runs = []
     for k in range(summary.sizes["case"]):
         if str(summary["status"].values[k]) != "done":

@@ -1126,10 +1126,8 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
         data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
                                             "body angular velocity, global axes")
     title = getattr(case, "name", None) or "system_dynamic"
-    from .case import SystemCase
-
     ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
-                      case=case if isinstance(case, SystemCase) else None,  # stored as YAML (a deck's is its file)
+                      case=case if hasattr(case, "model_dump") else None,  # a case file's, as YAML (a deck: its file)
                       settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
                                 "time_step": run.time_step, "steps": run.steps, "newton_iterations": run.iterations,
                                 **(settings or {})})

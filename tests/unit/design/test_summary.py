@@ -103,8 +103,9 @@ def test_a_sweep_folder_groups_seeds_into_load_cases(synth, tmp_path):
             ds = synth.result({"L1": _record(seed, n=200) * hs}, case=synth.case(hs=hs, tp=8.0, seed=seed,
                                                                                  lines=("L1",)))
             runs.append(({"environment.waves.hs": hs, "environment.waves.tp": 8.0,
-                          "environment.waves.seed": float(seed)}, ds))
+                          "environment.waves.seed": float(seed), "analysis.duration": 100.0}, ds))
     found = summary.read_results(synth.sweep(tmp_path / "sw", runs))
+    # named by the sea state; the seed and a parameter of one value for all (the duration) left out
     assert [r.load_case for r in found] == ["hs = 2 m, tp = 8 s"] * 2 + ["hs = 4 m, tp = 8 s"] * 2
     assert [r.seed for r in found] == [1, 2, 1, 2]
     assert [r.name for r in found] == [f"storm_{k:04d}" for k in range(4)]
