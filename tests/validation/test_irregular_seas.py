@@ -380,14 +380,16 @@ ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  Outputs
         prepare_moordyn(load_moordyn_case(path).with_run(duration=10.0, time_step=0.1, output_interval=0.5))
 
 
-def test_the_mooring_system_model_refuses_an_irregular_sea():
-    """The system model (bodies, several lines) runs regular waves only: an irregular sea is refused by name."""
+def test_the_mooring_system_model_takes_an_irregular_sea_to_its_lines():
+    """The system model's water carries the irregular sea (its components: m0 = Hs^2 / 16 exactly) for a system
+    whose lines are all it solves for; one with free bodies refuses it by name (tests/unit/test_system_rao.py)."""
     from seacable.environment import SystemEnvironment
     from seacable.system.dynamics import _water
 
     env = SystemEnvironment(depth=100.0, waves={"spectrum": "jonswap", "hs": 2.0, "tp": 8.0})
-    with pytest.raises(InputError, match=r"environment\.waves: an irregular sea \(spectrum 'jonswap'\) .* Suggested fix"):
-        _water(env, None)
+    water = _water(env, None)
+    assert water.sea is not None and water.wave_height == 0.0
+    assert water.sea.m0 == pytest.approx(2.0**2 / 16, rel=1e-12)
 
 
 def test_only_the_components_that_matter_at_the_highest_node_are_gridded():
