@@ -124,10 +124,16 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
     (``sea[S_STRETCH]``), ``z' = (z - eta) d / (d + eta)`` (``z - eta`` in deep water), which puts the
     surface at z' = 0 and keeps the seabed at -d.
     """
-    u[0] = u[1] = u[2] = 0.0
-    acc[0] = acc[1] = acc[2] = 0.0
     wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)
     eta = _surface(x[0], x[1], t, env, with_waves, sea) if wavy else 0.0
+    _fluid_below(x, t, env, cur_depth, cur_speed, wavy, sea, eta, u, acc)
+
+
+@njit(cache=True)
+def _fluid_below(x, t, env, cur_depth, cur_speed, wavy, sea, eta, u, acc):
+    """:func:`_fluid` with the surface ``eta`` [m] above the point known (``wavy``: there are waves)."""
+    u[0] = u[1] = u[2] = 0.0
+    acc[0] = acc[1] = acc[2] = 0.0
     if x[2] > eta:
         return
     if cur_depth.size == 1:
@@ -594,6 +600,12 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     uniform = not wavy and cur_depth.size == 1
     if uniform:
         _fluid(origin, t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
+    # otherwise the surface over each node and the water's velocity and acceleration there, once per node (the
+    # two elements of a node see the same): columns eta, u (3), a (3)
+    water = np.zeros((0 if uniform else n, 7))
+    for k in range(water.shape[0]):
+        water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy else 0.0
+        _fluid_below(X[k], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0], water[k, 1:4], water[k, 4:7])
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
@@ -679,14 +691,16 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             # ``weight`` holds the weight in water; the part of this half element above the instantaneous
             # surface (straight from the node to the element's middle, the surface linear between) loses its
             # buoyancy
-            ek = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy else 0.0
+            ek = water[k, 0] if wavy else 0.0
             dry = _dry_fraction(X[k, 2] - ek, zmid - emid)
             if dry > 0.0:
                 F[k, 2] -= dry * buoy[e] * half
             if X[k, 2] > ek:
                 continue  # out of the water: no hydrodynamic load
             if not uniform:
-                _fluid(X[k], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
+                for r in range(3):
+                    uw[r] = water[k, 1 + r]
+                    aw[r] = water[k, 4 + r]
             for r in range(3):
                 ur[r] = uw[r] - V[k, r]
             ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
