@@ -84,10 +84,11 @@ S_T0, S_DT, S_NT = 2, 3, 4        # time grid
 S_X0, S_DX, S_NX = 5, 6, 7        # along the mean heading (xi = x cos b + y sin b)
 S_Y0, S_DY, S_NY = 8, 9, 10       # across it (zeta = -x sin b + y cos b)
 S_COS, S_SIN = 11, 12             # cos b, sin b of the mean heading
-S_ZC, S_ZH, S_NZ = 13, 14, 15     # depth levels z = -c (exp(i h) - 1), i = 0 .. nz - 1
+S_ZC, S_ZH, S_NZ = 13, 14, 15     # depth levels z = -c (exp(i h) - 1), i = i0 .. i0 + nz - 1
 S_DEPTH = 16                      # water depth (inf: deep) [m]
 S_ZMIN = 17                       # the grid's deepest point: no wave kinematics below [m]
-GRID_HEADER = 18
+S_I0 = 18                         # the index i0 of the grid's top level (0: z = 0)
+GRID_HEADER = 19
 
 #: Below the depth where the sea's horizontal velocity standard deviation falls under this fraction of its
 #: value at z = 0 the kinematics grid stops and the waves' kinematics are neglected (:func:`cutoff_depth`). [-]
@@ -379,8 +380,9 @@ def significant(sea: SeaComponents, z_top: float, fraction=CUTOFF) -> SeaCompone
                          mean_heading=sea.mean_heading, band=sea.band, scale=sea.scale)
 
 
-def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10):
-    """Grid counts (nt, nx, ny, nz) and steps of :func:`kinematics_grid` (for a size check first)."""
+def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10, z_max=0.0):
+    """Grid counts (nt, nx, ny, nz) and steps (dt, dx, zc, zh) of :func:`kinematics_grid` (for a size check
+    first), and the index i0 of its top level."""
     wmax = float(np.max(sea.omega))
     kmax = float(np.max(sea.wave_number))
     dt = 2.0 * math.pi / wmax / per_period
@@ -394,11 +396,13 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
     zh = 0.1                                # levels 10 % further apart each
     depth_span = max(-z_min, 0.0)
     nz = math.ceil(math.log1p(depth_span / zc) / zh) + 2
-    return (nt, nx, ny, nz), (dt, dx, zc, zh)
+    # the levels above z_max are left out: the level at or just above it is the top one
+    i0 = min(math.floor(math.log1p(max(-z_max, 0.0) / zc) / zh), nz - 2)
+    return (nt, nx, ny, nz - i0), (dt, dx, zc, zh), i0
 
 
 def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
-                    per_wavelength=10, chunk=2048):
+                    per_wavelength=10, chunk=2048, z_max=0.0):
     """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`).
 
     Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``; a
@@ -406,19 +410,22 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
     across the mean heading over ``box`` ((xi0, xi1), (zeta0, zeta1)) [m] in the rotated coordinates
     ``xi = x cos b + y sin b``, ``zeta = -x sin b + y cos b`` (step: the shortest wavelength /
     ``per_period``; one point across for a long-crested sea, whose field does not vary across); in
-    depth from z = 0 down to ``z_min`` [m] on levels ``z = -c (exp(i h) - 1)`` (spacing 0.3 / k_max at
-    the surface, 10 % more at each level). Linear interpolation between grid points errs by at most
+    depth from z = 0 (or the level at or just above ``z_max`` [m], when the points all lie below it) down to
+    ``z_min`` [m] on levels ``z = -c (exp(i h) - 1)`` (spacing 0.3 / k_max at the surface, 10 % more at each
+    level; a point above the top level gets its values, as a point beyond the horizontal edges gets the
+    edge's). Linear interpolation between grid points errs by at most
     ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
     """
-    (nt, nx, ny, nz), (dt, dx, zc, zh) = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength)
+    (nt, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength,
+                                                       z_max)
     (x0, _), (y0, _) = box
     dy = dx
     cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
-    head = np.array([1.0, 0.0, t_start, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min])
+    head = np.array([1.0, 0.0, t_start, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min, i0])
     head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
     xi = x0 + dx * np.arange(nx)
     ze = y0 + dy * np.arange(ny)
-    zl = np.maximum(-zc * np.expm1(zh * np.arange(nz)), -sea.depth)
+    zl = np.maximum(-zc * np.expm1(zh * (i0 + np.arange(nz))), -sea.depth)
     XI, ZE = np.meshgrid(xi, ze, indexing="ij")
     gx, gy = XI * cb - ZE * sb, XI * sb + ZE * cb              # global coordinates of the grid columns
     t = t_start + dt * np.arange(nt)
@@ -506,9 +513,9 @@ def grid_point(sea, x, y, zs, t):
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     nt, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
     nz = int(sea[S_NZ])
-    # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h
+    # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h, counted from the top level's i0
     zlev = math.log1p(max(-zs, 0.0) / sea[S_ZC]) / sea[S_ZH]
-    iz, fz = _cell(zlev, 0.0, 1.0, nz)
+    iz, fz = _cell(zlev, sea[S_I0], 1.0, nz)
     o = GRID_HEADER + nt * nx * ny
     u = v = w = ax = ay = az = 0.0
     for a in range(2):

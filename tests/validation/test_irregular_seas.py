@@ -183,6 +183,29 @@ def test_the_grid_stops_where_the_waves_die_out():
     assert np.any(np.array(grid_point(arr, 0.0, 0.0, -49.9, 1.0)) != 0.0)
 
 
+def test_a_grid_below_a_depth_leaves_out_the_levels_above_it():
+    """A grid for points below z_max = -30 m holds the same levels as the whole grid from level i0 (the one at or
+    just above -30 m) down: the same kinematics at any point below its top level (to the round-off of the level
+    fraction, counted from i0: 1e-14 relative), fewer values;
+    a point above the top level gets that level's values (as a point beyond a horizontal edge gets the edge's)."""
+    sea = _one_component(None)
+    box = ((-10.0, 10.0), (0.0, 0.0))
+    full = kinematics_grid(sea, 5.0, box, -50.0)
+    deep = kinematics_grid(sea, 5.0, box, -50.0, z_max=-30.0)
+    zc, zh = full[13], full[14]
+    i0 = int(deep[18])
+    top = -zc * math.expm1(zh * i0)
+    assert i0 > 0 and top >= -30.0 > -zc * math.expm1(zh * (i0 + 1))
+    assert deep[15] == full[15] - i0 and deep.size < full.size
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        x, z, t = rng.uniform(-9, 9), rng.uniform(-49.9, top), rng.uniform(0, 5)
+        np.testing.assert_allclose(grid_point(deep, x, 0.0, z, t), grid_point(full, x, 0.0, z, t), rtol=1e-14,
+                                   atol=1e-14 * float(np.max(np.abs(full[19:]))))
+    np.testing.assert_allclose(grid_point(deep, 1.0, 0.0, -1.0, 2.0), grid_point(full, 1.0, 0.0, top, 2.0),
+                               rtol=1e-14, atol=1e-14 * float(np.max(np.abs(full[19:]))))
+
+
 def test_grid_interpolation_error_is_within_its_bound():
     """Between grid points the multilinear interpolation errs by at most (2 pi / n)^2 / 8 of the amplitude
     for n points a period (20: 1.2 %) or a wavelength (10: 4.9 %) plus the depth levels' spacing 0.3 / k
@@ -438,7 +461,7 @@ def test_the_models_grid_gives_the_seas_kinematics_at_the_fairlead():
 
 
 def test_a_long_run_takes_its_grid_in_windows_of_time(monkeypatch):
-    """With the grid held in windows of time (here forced: 2e5 values, a few seconds each) the run gives what
+    """With the grid held in windows of time (here forced: 5e4 values, a few seconds each) the run gives what
     the whole-run grid gives: both interpolate the same field, at times sampled differently, each within
     0.7 % of the kinematics' standard deviation (the fairlead test above), so the wave-driven part of the
     fairlead tension may differ by at most about twice that: 1.4 % of its range (measured: 0.07 %)."""
@@ -448,7 +471,7 @@ def test_a_long_run_takes_its_grid_in_windows_of_time(monkeypatch):
 
     case = load_case(HERE / "data" / "seastate" / "oc3_jonswap.yaml")
     whole = run_mooring_dynamic(case)["fairlead_tension"].values
-    monkeypatch.setattr(solver, "SEA_WINDOW_VALUES", 2e5)
+    monkeypatch.setattr(solver, "SEA_WINDOW_VALUES", 5e4)
     windows = []
     real = solver.MooringModel.ensure_sea
 

@@ -199,13 +199,15 @@ class MooringModel:
         cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
         xi = P[:, 0] * cb + P[:, 1] * sb
         ze = -P[:, 0] * sb + P[:, 1] * cb
-        _, (_, dx, _, _) = grid_size(sea, duration, ((0.0, 0.0), (0.0, 0.0)), 0.0)
+        _, (_, dx, _, _), _ = grid_size(sea, duration, ((0.0, 0.0), (0.0, 0.0)), 0.0)
         pad = 4.0 * math.sqrt(sea.m0) + 2.0 * dx
         box = ((float(xi.min()) - pad, float(xi.max()) + pad), (float(ze.min()) - pad, float(ze.max()) + pad))
         zmin = max(float(P[:, 2].min()) - pad, zcut)
         if self.water.depth is not None:
             zmin = max(zmin, -float(self.water.depth))
-        (nt, nx, ny, nz), (dt, _, _, _) = grid_size(sea, duration, box, zmin)
+        # the levels above the highest point (plus the pad) are left out: a deep line needs no surface layer
+        zmax = min(float(P[:, 2].max()) + pad, 0.0)
+        (nt, nx, ny, nz), (dt, _, _, _), _ = grid_size(sea, duration, box, zmin, z_max=zmax)
         per_time = float(nx) * ny * (6 * nz + 1)
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
         window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
@@ -213,7 +215,7 @@ class MooringModel:
         check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time,
                        fix=f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid "
                            f"of {nx} x {ny} horizontal x {nz} depth points at each of {nw} times)")
-        return box, zmin, sea, window
+        return box, (zmin, zmax), sea, window
 
     def check_sea(self, duration: float, positions) -> None:
         """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
@@ -227,8 +229,8 @@ class MooringModel:
         the box of those ``positions`` (n, 3) [m] (the nodes' start and the prescribed nodes' range) that lie
         above the depth where the waves die out (:func:`seacable.seastate.cutoff_depth`: their velocity
         standard deviation under 0.1 % of the surface's; below it the kinematics are neglected), widened
-        by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water down to the deepest
-        of them (or that depth, or the seabed). A point outside the box gets the values at its edge. Only
+        by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water from the highest of them
+        (so widened; the surface when it reaches it) down to the deepest (or that depth, or the seabed). A point outside the box gets the values at its edge. Only
         the components that matter below the highest of them (plus 4 sqrt(m0)) are gridded
         (:func:`seacable.seastate.significant`): deep lines need no short waves, and a coarser
         grid. Its size is checked
@@ -282,9 +284,9 @@ class MooringModel:
         s = self.sea
         if s[S_MODE] > 0 and s[S_T0] <= t0 and t1 <= s[S_T0] + s[S_DT] * (s[S_NT] - 1):
             return
-        box, zmin, sea, window, duration = spec
+        box, (zmin, zmax), sea, window, duration = spec
         end = max(t1, min(t0 + window, duration))
-        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching)
+        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching, z_max=zmax)
 
     def element_args(self):
         n = self.network
