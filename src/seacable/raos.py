@@ -26,7 +26,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["DOFS", "RAOTable", "rao_motion", "read_rao_csv", "read_wamit4"]
+__all__ = ["DOFS", "RAOTable", "outside_table", "rao_motion", "read_rao_csv", "read_wamit4"]
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 
@@ -94,8 +94,7 @@ def rao_motion(table: RAOTable, sea, times, *, at=(0.0, 0.0), derivatives: bool 
     w = np.asarray(sea.omega, float)
     a = np.asarray(sea.amplitude, float)
     b = np.broadcast_to(np.asarray(sea.heading, float), w.shape)
-    outside = (w < table.omega[0]) | (w > table.omega[-1])
-    share = float(np.sum(a[outside] ** 2) / max(np.sum(a**2), 1e-300))
+    outside, share = outside_table(table, sea)
     if share > energy_outside:
         missing = np.unique(np.round(w[outside], 4))
         raise InputError(f"{table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s, but the sea has "
@@ -123,6 +122,15 @@ def rao_motion(table: RAOTable, sea, times, *, at=(0.0, 0.0), derivatives: bool 
         for o, g in zip(out, gains):
             o[:, lo:lo + _CHUNK] = np.real(e @ g).T
     return tuple(out) if derivatives else out[0]
+
+
+def outside_table(table: RAOTable, sea):
+    """The sea's components outside the table's frequencies (a boolean per component) and their share of the
+    sea's variance [-] (:func:`rao_motion` leaves them out, or refuses the sea when the share is too large)."""
+    w = np.asarray(sea.omega, float)
+    a = np.asarray(sea.amplitude, float)
+    outside = (w < table.omega[0]) | (w > table.omega[-1])
+    return outside, float(np.sum(a[outside] ** 2) / max(np.sum(a**2), 1e-300))
 
 
 _CHUNK = 4096  # times per block of rao_motion: 4096 x 200 components x 16 bytes = 13 MB

@@ -133,3 +133,20 @@ def test_rao_motions_are_refused_without_waves_or_outside_their_table(tmp_path):
         sc.check(_line_case(tmp_path, {"type": "rao", "file": str(narrow)}, SEA))
     with pytest.raises(InputError, match="does not exist"):
         sc.check(_line_case(tmp_path, {"type": "rao", "file": str(tmp_path / "none.4")}, SEA))
+
+
+def test_components_outside_the_table_are_left_out_and_said_so(tmp_path):
+    """A sea wider than the table (its components outside hold 0.08 % < 0.1 % of the variance here): they are
+    left out of the motion, with a warning naming how many, their band and their share; the motion is that of
+    the components inside (rao_motion drops the same ones)."""
+    sea = {**SEA, "frequency_range": [0.02, 4.0]}
+    table = _csv(tmp_path, frequencies=(0.05, 0.5, 1.0, 3.0))
+    case = _line_case(tmp_path, {"type": "rao", "file": str(table), "reference": [853.87, 0.0, 0.0]}, sea)
+    with pytest.warns(sc.SeacableWarning, match=r"covers 0.05-3 rad/s; \d+ components of the sea .*% of its variance\) "
+                                                r"lie outside"):
+        sc.check(case)
+    components = case.environment.waves.components(DEPTH, 9.80665)
+    from seacable.raos import outside_table
+
+    outside, share = outside_table(read_rao_csv(table), components)
+    assert outside.sum() > 0 and 0 < share < 1e-3

@@ -264,6 +264,20 @@ class RAOMotion(Model):
         table = self.table()
         wave_dofs = functools.partial(_rao_dofs, table, sea, self.reference[:2])
         wave_dofs(np.zeros(1))  # frequencies and headings outside the table are refused here
+        from ..raos import outside_table
+
+        outside, share = outside_table(table, sea)
+        if outside.any():  # left out, and said so
+            import warnings
+
+            from ..errors import SeacableWarning
+
+            w = np.asarray(sea.omega)[outside]
+            warnings.warn(f"motion.file: {table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s; "
+                          f"{int(outside.sum())} components of the sea ({w.min():.4g}-{w.max():.4g} rad/s, {share:.2%} "
+                          "of its variance) lie outside and move the platform by nothing (the table is not "
+                          "extended). Suggested fix: extend the table, or narrow environment.waves.frequency_range.",
+                          SeacableWarning, stacklevel=2)
         return SeaRAOMotion(self, wave_dofs)
 
     def channels(self, times, base):
