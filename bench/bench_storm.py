@@ -13,6 +13,11 @@ compiles the kernels, about a minute: run twice).
 
 from __future__ import annotations
 
+import os
+
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS", "NUMBA_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")  # one core, as the target says (set before numpy and numba load)
+
 import sys
 import time
 from pathlib import Path
