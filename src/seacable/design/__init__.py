@@ -1,5 +1,6 @@
 """The design layer on the models' results (issue 20): fatigue, extreme statistics, code checks (DNV-OS-E301,
-API RP 2SK, anchor uplift, offset); the report to come."""
+API RP 2SK, anchor uplift, offset) and the design tables of results and sweeps (:mod:`.summary`), which
+:mod:`seacable.report` writes as an HTML page and CSV files."""
 
 from .checks import (
     API_FACTORS_OF_SAFETY,
