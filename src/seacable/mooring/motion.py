@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import math
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Literal
@@ -19,7 +20,7 @@ from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, quantity
 from .._ramp import smooth_ramp
-from ..errors import InputError
+from ..errors import InputError, SeacableWarning
 
 __all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "RAOMotion", "SeaRAOMotion", "TimeSeriesMotion", "bind",
            "forcing_period", "rotation_matrix", "sea_of"]
@@ -219,9 +220,9 @@ class RAOMotion(Model):
 
     The six motions (surge, sway, heave [m]; roll, pitch, yaw [rad], about ``reference``, R = Rz Ry Rx) are
     the platform's mean position ``mean_offset`` (under steady wind, current and drift loads: given, or for a
-    body of a mooring system ``equilibrium``, the body's static equilibrium under its ``external_force`` with the
-    lines of the run, intact or damaged, :mod:`seacable.system.statics`) plus its first-order response to the environment's irregular sea or regular waves
-    through the RAO table of ``file`` (:func:`seacable.raos.rao_motion`; the RAO phases are referred to the
+    body of a mooring system ``equilibrium``, the body's static equilibrium under its ``external_force`` with
+    the lines of the run, intact or damaged, :mod:`seacable.system.statics`) plus its first-order response to
+    the environment's irregular sea or regular waves through the RAO table of ``file`` (:func:`seacable.raos.rao_motion`; the RAO phases are referred to the
     wave elevation at the reference point's horizontal position, at rest). The wave response starts with
     the smooth ramp; the mean offset is there from the start, where the static start puts the lines. A
     fairlead at rest at ``p`` moves to ``reference + d + R (p - reference)`` as with :class:`PlatformMotion`.
@@ -268,10 +269,6 @@ class RAOMotion(Model):
 
         outside, share = outside_table(table, sea)
         if outside.any():  # left out, and said so
-            import warnings
-
-            from ..errors import SeacableWarning
-
             w = np.asarray(sea.omega)[outside]
             warnings.warn(f"motion.file: {table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s; "
                           f"{int(outside.sum())} components of the sea ({w.min():.4g}-{w.max():.4g} rad/s, {share:.2%} "
