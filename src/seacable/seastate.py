@@ -402,7 +402,7 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
 
 
 def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
-                    per_wavelength=10, chunk=2048, z_max=0.0):
+                    per_wavelength=10, chunk=2048, z_max=0.0, columns=None):
     """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`).
 
     Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``; a
@@ -413,7 +413,9 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
     depth from z = 0 (or the level at or just above ``z_max`` [m], when the points all lie below it) down to
     ``z_min`` [m] on levels ``z = -c (exp(i h) - 1)`` (spacing 0.3 / k_max at the surface, 10 % more at each
     level; a point above the top level gets its values, as a point beyond the horizontal edges gets the
-    edge's). Linear interpolation between grid points errs by at most
+    edge's). ``columns`` (nx, ny, 2), when given, holds for each column of the grid the first and last of its
+    levels (indices from the top one, inclusive) that points can reach: only those are computed, and the
+    levels above and below take the values of the first and last (the band's edges, as the box's). Linear interpolation between grid points errs by at most
     ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
     """
     (nt, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength,
@@ -429,21 +431,37 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
     XI, ZE = np.meshgrid(xi, ze, indexing="ij")
     gx, gy = XI * cb - ZE * sb, XI * sb + ZE * cb              # global coordinates of the grid columns
     t = t_start + dt * np.arange(nt)
-    eta = np.empty((nt, nx, ny))
-    kin = np.empty((nt, nx, ny, nz, 6))
+    # the packed array, filled in place: header, elevation (nt, nx, ny), kinematics (nt, nx, ny, nz, 6)
+    packed = np.empty(GRID_HEADER + nt * nx * ny * (1 + 6 * nz))
+    packed[:GRID_HEADER] = head
+    eta = packed[GRID_HEADER:GRID_HEADER + nt * nx * ny].reshape(nt, nx, ny)
+    kin = packed[GRID_HEADER + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
     # the points' phasors once per chunk of points, times all at once (two real products per chunk)
     wt = np.multiply.outer(t, sea.omega)
     cw, sw = np.cos(wt), np.sin(wt)
     px, py, pz = (np.broadcast_to(a, (nx, ny, nz)).ravel() for a in (gx[..., None], gy[..., None], zl))
+    grid = kin
     kin = kin.reshape(nt, -1, 6)
-    for c0 in range(0, px.size, chunk):
-        sl = slice(c0, c0 + chunk)
+    level = np.broadcast_to(np.arange(nz), (nx, ny, nz))
+    if columns is None:
+        lo, hi = np.zeros((nx, ny, 1), int), np.full((nx, ny, 1), nz - 1)
+    else:
+        cols = np.asarray(columns, int).reshape(nx, ny, 2)
+        lo, hi = np.clip(cols[..., :1], 0, nz - 1), np.clip(cols[..., 1:], 0, nz - 1)
+    points = np.flatnonzero(((level >= lo) & (level <= hi)).ravel())  # the cells computed
+    for c0 in range(0, points.size, chunk):
+        sl = points[c0:c0 + chunk]
         qr, qi = sea.phasors(px[sl], py[sl], pz[sl])
         out = (cw @ qr + sw @ qi).reshape(nt, 7, -1)
         kin[:, sl] = np.moveaxis(out[:, :6], 1, -1)
+    if points.size < px.size:  # the levels outside a column's band: its edges' values
+        for ix, iy in zip(*np.nonzero((lo[..., 0] > 0) | (hi[..., 0] < nz - 1))):
+            a, b = lo[ix, iy, 0], hi[ix, iy, 0]
+            grid[:, ix, iy, :a] = grid[:, ix, iy, a:a + 1]
+            grid[:, ix, iy, b + 1:] = grid[:, ix, iy, b:b + 1]
     qr, qi = sea.phasors(gx.ravel(), gy.ravel(), np.zeros(gx.size))
     eta[:] = (cw @ qr[:, 6 * gx.size:] + sw @ qi[:, 6 * gx.size:]).reshape(nt, nx, ny)
-    return np.concatenate((head, eta.ravel(), kin.ravel()))
+    return packed
 
 
 def no_sea(stretching="none"):

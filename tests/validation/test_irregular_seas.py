@@ -27,6 +27,7 @@ from seacable.seastate import (
     cos2s_spreading,
     frequency_range,
     grid_eta,
+    grid_size,
     grid_point,
     jonswap,
     kinematics_grid,
@@ -204,6 +205,39 @@ def test_a_grid_below_a_depth_leaves_out_the_levels_above_it():
                                    atol=1e-14 * float(np.max(np.abs(full[19:]))))
     np.testing.assert_allclose(grid_point(deep, 1.0, 0.0, -1.0, 2.0), grid_point(full, 1.0, 0.0, top, 2.0),
                                rtol=1e-14, atol=1e-14 * float(np.max(np.abs(full[19:]))))
+
+
+def test_a_grid_computes_only_the_levels_its_points_can_reach():
+    """Per column of the grid only the band of levels that points within the pad of it can reach (their depths
+    widened by the pad, and the cells their interpolation takes) is computed: inside the band the same values as
+    the whole grid, bit for bit; above and below it the band's edge values. A line's nodes, anywhere in the
+    box, read the same kinematics from both grids."""
+    from seacable.mooring.solver import _sea_columns
+
+    sea = _one_component(None)
+    box = ((-10.0, 60.0), (0.0, 0.0))
+    full = kinematics_grid(sea, 5.0, box, -50.0)
+    (nt, nx, ny, nz), (_, dx, zc, zh), i0 = grid_size(sea, 5.0, box, -50.0)
+    # a sloping line from (0, -5) to (50, -45), its points every metre
+    xs = np.linspace(0.0, 50.0, 51)
+    zs = -5.0 - 0.8 * xs
+    pad = 3.0
+    cols = _sea_columns(xs, np.zeros_like(xs), zs, box, dx, (nx, ny, nz), (zc, zh, i0), pad)
+    band = kinematics_grid(sea, 5.0, box, -50.0, columns=cols)
+    assert (cols[..., 0] > 0).any() and (cols[..., 1] < nz - 1).any()  # levels are left out above and below
+    kf = full[19 + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
+    kb = band[19 + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
+    for ix in range(nx):
+        lo, hi = cols[ix, 0]
+        np.testing.assert_array_equal(kb[:, ix, 0, lo:hi + 1], kf[:, ix, 0, lo:hi + 1])
+        np.testing.assert_array_equal(kb[:, ix, 0, :lo], np.broadcast_to(kf[:, ix, 0, lo:lo + 1], kb[:, ix, 0, :lo].shape))
+        np.testing.assert_array_equal(kb[:, ix, 0, hi + 1:],
+                                      np.broadcast_to(kf[:, ix, 0, hi:hi + 1], kb[:, ix, 0, hi + 1:].shape))
+    rng = np.random.default_rng(5)
+    for _ in range(200):  # points of the line moved by less than the pad
+        k = rng.integers(51)
+        x, z, t = xs[k] + rng.uniform(-pad, pad), zs[k] + rng.uniform(-pad, pad), rng.uniform(0, 5)
+        assert grid_point(band, x, 0.0, z, t) == grid_point(full, x, 0.0, z, t)
 
 
 def test_grid_interpolation_error_is_within_its_bound():

@@ -112,6 +112,36 @@ class Water:
         return -self.depth + np.tan(self.slope) * x
 
 
+def _sea_columns(xi, ze, z, box, dx, sizes, levels, pad):
+    """The band of levels (first, last; from the grid's top level, inclusive) of each column of the sea's grid
+    (nx, ny, 2) that the points (``xi``, ``ze`` along and across the heading, ``z`` [m]) can reach: from the
+    highest to the lowest of the points within ``pad`` [m] of the column horizontally, widened by ``pad`` up and
+    down (the box's own margin, :meth:`MooringModel.prepare_sea`); one level where no point comes near."""
+    from scipy.ndimage import maximum_filter, minimum_filter
+
+    (x0, _), (y0, _) = box
+    nx, ny, nz = sizes
+    zc, zh, i0 = levels
+    ix = np.clip(np.rint((xi - x0) / dx).astype(int), 0, nx - 1)
+    iy = np.clip(np.rint((ze - y0) / dx).astype(int), 0, ny - 1) if ny > 1 else np.zeros(xi.size, int)
+    high, low = np.full((nx, ny), -np.inf), np.full((nx, ny), np.inf)
+    np.maximum.at(high, (ix, iy), z)
+    np.minimum.at(low, (ix, iy), z)
+    reach = 2 * math.ceil(pad / dx) + 3  # the columns within pad (and the cell's own width) each side
+    size = (reach, reach if ny > 1 else 1)
+    high = maximum_filter(high, size=size, mode="constant", cval=-np.inf)
+    low = minimum_filter(low, size=size, mode="constant", cval=np.inf)
+
+    def level(zv):
+        return np.log1p(np.maximum(-zv, 0.0) / zc) / zh - i0
+
+    near = np.isfinite(high)
+    # a point between levels s and s + 1 interpolates between them: the band holds both of its ends' cells
+    first = np.where(near, np.floor(level(np.minimum(np.where(near, high, 0.0) + pad, 0.0))) - 1, 0)
+    last = np.where(near, np.ceil(level(np.where(near, low, 0.0) - pad)) + 1, 0)
+    return np.clip(np.stack((first, last), axis=-1), 0, nz - 1).astype(int)
+
+
 def wave_number_or_zero(water: Water) -> float:
     if water.wave_height <= 0.0:
         return 0.0
@@ -190,7 +220,9 @@ class MooringModel:
         from ..seastate import cutoff_depth, grid_size, significant
 
         sea = self.water.sea
-        P = np.asarray(positions, float).reshape(-1, 3)
+        P = np.array(positions, float).reshape(-1, 3)
+        if self.water.depth is not None:  # the kernel reads a node pressed into the seabed at the seabed
+            P[:, 2] = np.maximum(P[:, 2], -float(self.water.depth))
         # only the points above the depth where the waves die out need the grid (below it: no kinematics)
         zcut = cutoff_depth(sea)
         P = P[P[:, 2] >= zcut] if np.any(P[:, 2] >= zcut) else P[np.argmax(P[:, 2])][None]
@@ -207,7 +239,9 @@ class MooringModel:
             zmin = max(zmin, -float(self.water.depth))
         # the levels above the highest point (plus the pad) are left out: a deep line needs no surface layer
         zmax = min(float(P[:, 2].max()) + pad, 0.0)
-        (nt, nx, ny, nz), (dt, _, _, _), _ = grid_size(sea, duration, box, zmin, z_max=zmax)
+        (nt, nx, ny, nz), (dt, gdx, zc, zh), i0 = grid_size(sea, duration, box, zmin, z_max=zmax)
+        # in each column, only the levels that the points near it (within the pad) can reach
+        columns = _sea_columns(xi, ze, P[:, 2], box, gdx, (nx, ny, nz), (zc, zh, i0), pad)
         per_time = float(nx) * ny * (6 * nz + 1)
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
         window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
@@ -215,7 +249,7 @@ class MooringModel:
         check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time,
                        fix=f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid "
                            f"of {nx} x {ny} horizontal x {nz} depth points at each of {nw} times)")
-        return box, (zmin, zmax), sea, window
+        return box, (zmin, zmax, columns), sea, window
 
     def check_sea(self, duration: float, positions) -> None:
         """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
@@ -284,9 +318,10 @@ class MooringModel:
         s = self.sea
         if s[S_MODE] > 0 and s[S_T0] <= t0 and t1 <= s[S_T0] + s[S_DT] * (s[S_NT] - 1):
             return
-        box, (zmin, zmax), sea, window, duration = spec
+        box, (zmin, zmax, columns), sea, window, duration = spec
         end = max(t1, min(t0 + window, duration))
-        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching, z_max=zmax)
+        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching, z_max=zmax,
+                                   columns=columns)
 
     def element_args(self):
         n = self.network
