@@ -279,19 +279,24 @@ class SeaComponents:
         acc = np.moveaxis(out[:, 3:6], 1, -1).reshape((t.size, *shape, 3))
         return vel, acc, out[:, 6].reshape((t.size, *shape))
 
-    def phasors(self, x, y, z):
+    def phasors(self, x, y, z, planar: bool = False):
         """Real and imaginary parts ``(qr, qi)``, shape (n, 7 P), of the seven quantities' phasors at P points.
 
         For points (x, y, z) (1-D, z in [-d, 0]) the quantities (u, v, w, ax, ay, az, eta) at time t are
         ``cos(w t) @ qr + sin(w t) @ qi`` (``Re(Q exp(-i w t))``), with ``u_h = a w C cos(theta)``,
-        ``w = a w S sin(theta)``, ``a_h = a w^2 C sin(theta)``, ``a_z = -a w^2 S cos(theta)``.
+        ``w = a w S sin(theta)``, ``a_h = a w^2 C sin(theta)``, ``a_z = -a w^2 S cos(theta)``. With ``planar``
+        (a long-crested sea, every component along one heading b): the four (u_h, w, a_h, a_z), shape (n, 4 P),
+        of which u, v = u_h (cos b, sin b) and ax, ay = a_h (cos b, sin b).
         """
         E = self._spatial(x, y) * self.amplitude                      # (P, n)
         ch, sh = self.profiles(z)                                      # (P, n)
         w = self.omega
-        cb, sb = np.cos(self.heading), np.sin(self.heading)
         uh = E * w * ch
         ah = -1j * E * w * w * ch
+        if planar:
+            Q = np.concatenate((uh, -1j * E * w * sh, ah, -E * w * w * sh)).T
+            return np.ascontiguousarray(Q.real), np.ascontiguousarray(Q.imag)
+        cb, sb = np.cos(self.heading), np.sin(self.heading)
         Q = np.concatenate((uh * cb, uh * sb, -1j * E * w * sh, ah * cb, ah * sb, -E * w * w * sh, E)).T
         return np.ascontiguousarray(Q.real), np.ascontiguousarray(Q.imag)
 
@@ -449,11 +454,19 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
         cols = np.asarray(columns, int).reshape(nx, ny, 2)
         lo, hi = np.clip(cols[..., :1], 0, nz - 1), np.clip(cols[..., 1:], 0, nz - 1)
     points = np.flatnonzero(((level >= lo) & (level <= hi)).ravel())  # the cells computed
+    # a long-crested sea: the horizontal velocity and acceleration along its heading, then their components (four
+    # products a point instead of seven)
+    planar = bool(np.all(sea.heading == sea.mean_heading))
     for c0 in range(0, points.size, chunk):
         sl = points[c0:c0 + chunk]
-        qr, qi = sea.phasors(px[sl], py[sl], pz[sl])
-        out = (cw @ qr + sw @ qi).reshape(nt, 7, -1)
-        kin[:, sl] = np.moveaxis(out[:, :6], 1, -1)
+        qr, qi = sea.phasors(px[sl], py[sl], pz[sl], planar=planar)
+        if planar:
+            out = (cw @ qr + sw @ qi).reshape(nt, 4, -1)
+            kin[:, sl] = np.stack((out[:, 0] * cb, out[:, 0] * sb, out[:, 1], out[:, 2] * cb, out[:, 2] * sb,
+                                   out[:, 3]), axis=-1)
+        else:
+            out = (cw @ qr + sw @ qi).reshape(nt, 7, -1)
+            kin[:, sl] = np.moveaxis(out[:, :6], 1, -1)
     if points.size < px.size:  # the levels outside a column's band: its edges' values
         for ix, iy in zip(*np.nonzero((lo[..., 0] > 0) | (hi[..., 0] < nz - 1))):
             a, b = lo[ix, iy, 0], hi[ix, iy, 0]
