@@ -420,7 +420,8 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
     level; a point above the top level gets its values, as a point beyond the horizontal edges gets the
     edge's). ``columns`` (nx, ny, 2), when given, holds for each column of the grid the first and last of its
     levels (indices from the top one, inclusive) that points can reach: only those are computed, and the
-    levels above and below take the values of the first and last (the band's edges, as the box's). Linear interpolation between grid points errs by at most
+    levels above and below take the values of the first and last (the band's edges, as the box's). Linear
+    interpolation between grid points errs by at most
     ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
     """
     (nt, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength,
@@ -440,13 +441,12 @@ def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stret
     packed = np.empty(GRID_HEADER + nt * nx * ny * (1 + 6 * nz))
     packed[:GRID_HEADER] = head
     eta = packed[GRID_HEADER:GRID_HEADER + nt * nx * ny].reshape(nt, nx, ny)
-    kin = packed[GRID_HEADER + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
+    grid = packed[GRID_HEADER + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
     # the points' phasors once per chunk of points, times all at once (two real products per chunk)
     wt = np.multiply.outer(t, sea.omega)
     cw, sw = np.cos(wt), np.sin(wt)
     px, py, pz = (np.broadcast_to(a, (nx, ny, nz)).ravel() for a in (gx[..., None], gy[..., None], zl))
-    grid = kin
-    kin = kin.reshape(nt, -1, 6)
+    kin = grid.reshape(nt, -1, 6)  # the same values, one row per point
     level = np.broadcast_to(np.arange(nz), (nx, ny, nz))
     if columns is None:
         lo, hi = np.zeros((nx, ny, 1), int), np.full((nx, ny, 1), nz - 1)

@@ -264,7 +264,9 @@ class MooringModel:
         above the depth where the waves die out (:func:`seacable.seastate.cutoff_depth`: their velocity
         standard deviation under 0.1 % of the surface's; below it the kinematics are neglected), widened
         by 4 sqrt(m0) (about Hs) and two grid steps each side, and in depth the water from the highest of them
-        (so widened; the surface when it reaches it) down to the deepest (or that depth, or the seabed). A point outside the box gets the values at its edge. Only
+        (so widened; the surface when it reaches it) down to the deepest (or that depth, or the seabed), in each
+        column only the levels the points near it reach (:func:`_sea_columns`). A point outside the box gets
+        the values at its edge. Only
         the components that matter below the highest of them (plus 4 sqrt(m0)) are gridded
         (:func:`seacable.seastate.significant`): deep lines need no short waves, and a coarser
         grid. Its size is checked
