@@ -41,7 +41,8 @@ def timed(fn, box):
 
 def main(durations):
     grid, loop = [0.0], [0.0]
-    SS.kinematics_grid = timed(SS.kinematics_grid, grid)
+    SS.SeaGrid.__init__ = timed(SS.SeaGrid.__init__, grid)
+    SS.SeaGrid.window = timed(SS.SeaGrid.window, grid)
     S.simulate = timed(S.simulate, loop)
     import seacable.system.dynamics as D
 

@@ -26,7 +26,7 @@ import numpy as np
 
 from .errors import InputError
 
-__all__ = ["DOFS", "RAOTable", "outside_table", "rao_motion", "read_rao_csv", "read_wamit4"]
+__all__ = ["DOFS", "RAOResponse", "RAOTable", "outside_table", "rao_motion", "read_rao_csv", "read_wamit4"]
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 
@@ -80,48 +80,66 @@ class RAOTable:
         return out
 
 
-def rao_motion(table: RAOTable, sea, times, *, at=(0.0, 0.0), derivatives: bool = False,
-               energy_outside: float = 1e-3):
-    """The 6 motions (:data:`DOFS`) of a vessel at ``times`` [s] in the sea ``sea``
-    (:class:`seacable.seastate.SeaComponents`): (6, len(times)) [m, rad]; with ``derivatives``, the motions,
-    their velocities and their accelerations, each (6, len(times)).
+class RAOResponse:
+    """The six motions (:data:`DOFS`) of a vessel in the sea ``sea`` (:class:`seacable.seastate.SeaComponents`)
+    through the RAO ``table``, with their velocities and accelerations, at any times: the table is read at the
+    sea's components once, and each call is one product ``[cos(w t), sin(w t)] @ G`` (G: 2 n x 18).
 
     The RAO phases are referred to the wave elevation at ``at`` = (x, y) [m] (the vessel's reference point):
     a component of wave number k and heading b reaches it with the phase ``p + k (x cos b + y sin b)``.
     The table must cover the frequencies of the sea's components: components outside it that carry more than
     ``energy_outside`` of the sea's variance are refused (named); the others are left out, and their share
     is reported in the message of a refusal. A table of one heading applies to waves of that heading only."""
-    w = np.asarray(sea.omega, float)
-    a = np.asarray(sea.amplitude, float)
-    b = np.broadcast_to(np.asarray(sea.heading, float), w.shape)
-    outside, share = outside_table(table, sea)
-    if share > energy_outside:
-        missing = np.unique(np.round(w[outside], 4))
-        raise InputError(f"{table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s, but the sea has "
-                         f"{share:.1%} of its variance at {missing.size} frequencies outside it (e.g. "
-                         f"{', '.join(f'{x:g}' for x in missing[:4])} rad/s). Suggested fix: extend the RAO "
-                         "table over the spectrum, or narrow the sea's frequency_range.")
-    if table.heading.size == 1:
-        off = np.abs(np.angle(np.exp(1j * (b - table.heading[0]))))
-        if np.any(off > 1e-9):
-            raise InputError(f"{table.source} has the single heading {math.degrees(table.heading[0]):g} deg, but "
-                             f"the sea's components travel towards up to {math.degrees(float(off.max())):g} deg "
-                             "from it. Suggested fix: give RAOs for the sea's headings (its heading and spreading).")
-    keep = ~outside
-    w, b = w[keep], b[keep]
-    h = table.at(w, b)  # (6, n)
-    k = np.broadcast_to(np.asarray(sea.wave_number, float), outside.shape)[keep]
-    reach = np.asarray(sea.phase, float)[keep] + k * (at[0] * np.cos(b) + at[1] * np.sin(b))
-    c = a[keep] * np.exp(1j * reach)
-    # d/dt e^(-i w t) = -i w e^(-i w t)
-    gains = [h.T] + ([(h * (-1j * w)).T, (h * (-(w**2))).T] if derivatives else [])
-    t = np.asarray(times, float).ravel()
-    out = [np.empty((6, t.size)) for _ in gains]
-    for lo in range(0, t.size, _CHUNK):  # (times, components) in chunks: bounded memory for any run
-        e = np.exp(-1j * np.multiply.outer(t[lo:lo + _CHUNK], w)) * c
-        for o, g in zip(out, gains):
-            o[:, lo:lo + _CHUNK] = np.real(e @ g).T
-    return tuple(out) if derivatives else out[0]
+
+    def __init__(self, table: RAOTable, sea, *, at=(0.0, 0.0), energy_outside: float = 1e-3):
+        w = np.asarray(sea.omega, float)
+        a = np.asarray(sea.amplitude, float)
+        b = np.broadcast_to(np.asarray(sea.heading, float), w.shape)
+        outside, share = outside_table(table, sea)
+        if share > energy_outside:
+            missing = np.unique(np.round(w[outside], 4))
+            raise InputError(f"{table.source} covers {table.omega[0]:.4g}-{table.omega[-1]:.4g} rad/s, but the sea "
+                             f"has {share:.1%} of its variance at {missing.size} frequencies outside it (e.g. "
+                             f"{', '.join(f'{x:g}' for x in missing[:4])} rad/s). Suggested fix: extend the RAO "
+                             "table over the spectrum, or narrow the sea's frequency_range.")
+        if table.heading.size == 1:
+            off = np.abs(np.angle(np.exp(1j * (b - table.heading[0]))))
+            if np.any(off > 1e-9):
+                raise InputError(f"{table.source} has the single heading {math.degrees(table.heading[0]):g} deg, "
+                                 f"but the sea's components travel towards up to {math.degrees(float(off.max())):g} "
+                                 "deg from it. Suggested fix: give RAOs for the sea's headings (its heading and "
+                                 "spreading).")
+        keep = ~outside
+        w, b = w[keep], b[keep]
+        h = table.at(w, b)  # (6, n)
+        k = np.broadcast_to(np.asarray(sea.wave_number, float), outside.shape)[keep]
+        reach = np.asarray(sea.phase, float)[keep] + k * (at[0] * np.cos(b) + at[1] * np.sin(b))
+        # x(t) = Re(sum c H e^(-i w t)) = cos(w t) Re(c H) + sin(w t) Im(c H); d/dt e^(-i w t) = -i w e^(-i w t)
+        z = (a[keep] * np.exp(1j * reach)) * np.concatenate((h, h * (-1j * w), h * (-(w ** 2))))  # (18, n)
+        self.omega = w
+        self.gain = np.ascontiguousarray(np.concatenate((z.real, z.imag), axis=1).T)  # (2 n, 18)
+
+    def __call__(self, times, derivatives: bool = False):
+        """The motions (6, len(times)) [m, rad] at ``times`` [s]; with ``derivatives``, the motions, their
+        velocities and their accelerations, each (6, len(times))."""
+        t = np.asarray(times, float).ravel()
+        out = np.empty((t.size, 18))
+        g = self.gain if derivatives else self.gain[:, :6]
+        for lo in range(0, t.size, _CHUNK):  # (times, components) in chunks: bounded memory for any run
+            wt = np.multiply.outer(t[lo:lo + _CHUNK], self.omega)
+            out[lo:lo + _CHUNK, :g.shape[1]] = np.concatenate((np.cos(wt), np.sin(wt)), axis=1) @ g
+        if not derivatives:
+            return out[:, :6].T.copy()
+        return tuple(out[:, 6 * j:6 * j + 6].T.copy() for j in range(3))
+
+
+def rao_motion(table: RAOTable, sea, times, *, at=(0.0, 0.0), derivatives: bool = False,
+               energy_outside: float = 1e-3):
+    """The 6 motions (:data:`DOFS`) of a vessel at ``times`` [s] in the sea ``sea``
+    (:class:`seacable.seastate.SeaComponents`): (6, len(times)) [m, rad]; with ``derivatives``, the motions,
+    their velocities and their accelerations, each (6, len(times)). See :class:`RAOResponse` (which a run
+    keeps, to evaluate the table once)."""
+    return RAOResponse(table, sea, at=at, energy_outside=energy_outside)(times, derivatives)
 
 
 def outside_table(table: RAOTable, sea):
@@ -133,7 +151,7 @@ def outside_table(table: RAOTable, sea):
     return outside, float(np.sum(a[outside] ** 2) / max(np.sum(a**2), 1e-300))
 
 
-_CHUNK = 4096  # times per block of rao_motion: 4096 x 200 components x 16 bytes = 13 MB
+_CHUNK = 4096  # times per block of RAOResponse: 4096 x 2 x 200 components x 8 bytes = 13 MB
 
 
 def _table(dof_of: np.ndarray, source: str, omega_of, heading_of, value_of) -> RAOTable:

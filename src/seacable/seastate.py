@@ -61,6 +61,7 @@ from .waves import STANDARD_GRAVITY, wave_number
 __all__ = [
     "GRID_HEADER",
     "SeaComponents",
+    "SeaGrid",
     "cos2s_spreading",
     "cutoff_depth",
     "frequency_range",
@@ -88,7 +89,9 @@ S_ZC, S_ZH, S_NZ = 13, 14, 15     # depth levels z = -c (exp(i h) - 1), i = i0 .
 S_DEPTH = 16                      # water depth (inf: deep) [m]
 S_ZMIN = 17                       # the grid's deepest point: no wave kinematics below [m]
 S_I0 = 18                         # the index i0 of the grid's top level (0: z = 0)
-GRID_HEADER = 19
+S_NQ, S_NP = 19, 20               # values a point (4: long-crested, along its heading; 6) and points a time
+S_ETAMAX = 21                     # the largest |elevation| of the grid's window [m]
+GRID_HEADER = 22
 
 #: Below the depth where the sea's horizontal velocity standard deviation falls under this fraction of its
 #: value at z = 0 the kinematics grid stops and the waves' kinematics are neglected (:func:`cutoff_depth`). [-]
@@ -406,75 +409,129 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
     return (nt, nx, ny, nz - i0), (dt, dx, zc, zh), i0
 
 
+class SeaGrid:
+    """The plan of an irregular sea's kinematics grid (see :func:`kinematics_grid`): its points and their
+    phasors, computed once; :meth:`window` gives the packed array of the compiled kernel for a window of time.
+
+    The packed array: the header (``GRID_HEADER`` values, ``S_*``), the column table (three values a column of
+    the grid, columns ordered along then across the heading: the first and last of its levels that are computed,
+    and the offset of its points, so that level l of the column is point ``offset + l``), the elevation
+    (nt, nx, ny), and the kinematics (nt, points, nq): per point (u_h, w, a_h, a_z) along the heading b of a
+    long-crested sea (nq = 4; u, v = u_h (cos b, sin b), and so the accelerations) or (u, v, w, ax, ay, az)
+    (nq = 6). A level outside its column's band reads the band's edge value, as a point beyond the box reads
+    the box's edge.
+    """
+
+    #: Values of the phasor matrices kept for the next window (beyond: computed again each window).
+    KEEP_VALUES = 2 ** 23
+
+    def __init__(self, sea: SeaComponents, box, z_min, *, stretching="none", per_period=20, per_wavelength=10,
+                 z_max=0.0, columns=None, chunk=2048):
+        (_, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, 0.0, box, z_min, per_period, per_wavelength, z_max)
+        self.sea, self.sizes, self.steps, self.chunk = sea, (nx, ny, nz), (dt, dx, zc, zh), chunk
+        (x0, _), (y0, _) = box
+        cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
+        self.planar = bool(np.all(sea.heading == sea.mean_heading))
+        self.nq = 4 if self.planar else 6
+        head = np.zeros(GRID_HEADER)
+        head[[S_MODE, S_DT, S_X0, S_DX, S_NX, S_Y0, S_DY, S_NY, S_COS, S_SIN, S_ZC, S_ZH, S_NZ, S_DEPTH, S_ZMIN,
+              S_I0, S_NQ]] = (1.0, dt, x0, dx, nx, y0, dx, ny, cb, sb, zc, zh, nz, sea.depth, z_min, i0, self.nq)
+        head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
+        if columns is None:
+            lo, hi = np.zeros(nx * ny, int), np.full(nx * ny, nz - 1)
+        else:
+            cols = np.asarray(columns, int).reshape(nx * ny, 2)
+            lo, hi = np.clip(cols[:, 0], 0, nz - 1), np.clip(cols[:, 1], 0, nz - 1)
+            hi = np.maximum(hi, lo)
+        count = hi - lo + 1
+        start = np.concatenate(([0], np.cumsum(count)[:-1]))
+        self.n_points = int(count.sum())
+        head[S_NP] = self.n_points
+        self.head = head
+        self.table = np.stack((lo, hi, start - lo), axis=-1).astype(float).ravel()
+        # the points, column after column, each column's levels lo..hi
+        xi = x0 + dx * np.arange(nx)
+        ze = y0 + dx * np.arange(ny)
+        XI, ZE = np.meshgrid(xi, ze, indexing="ij")
+        self.gx, self.gy = (XI * cb - ZE * sb).ravel(), (XI * sb + ZE * cb).ravel()  # columns' global x, y
+        col = np.repeat(np.arange(nx * ny), count)
+        lev = np.arange(self.n_points) - np.repeat(start, count) + np.repeat(lo, count)
+        self.px, self.py = self.gx[col], self.gy[col]
+        self.pz = np.maximum(-zc * np.expm1(zh * (i0 + lev)), -sea.depth)
+        self._q = None
+        self._buffer = np.empty(0)
+
+    def _phasors(self, c0, c1):
+        """Phasor matrix [qr; qi] (2 n, (c1 - c0) nq) of the points c0..c1 - 1, point after point."""
+        sl = slice(c0, c1)
+        qr, qi = self.sea.phasors(self.px[sl], self.py[sl], self.pz[sl], planar=self.planar)
+        m = c1 - c0
+        if not self.planar:
+            qr, qi = qr[:, :6 * m], qi[:, :6 * m]  # the elevation's block is the columns' own
+        n = qr.shape[0]
+        q = np.concatenate((qr, qi)).reshape(2 * n, self.nq, m).transpose(0, 2, 1)
+        return np.ascontiguousarray(q.reshape(2 * n, m * self.nq))
+
+    def window(self, t_start, t_end) -> np.ndarray:
+        """The packed array of the times ``t_start`` to ``t_end`` [s] (the grid's step; one more sample each
+        side of the interval when it falls between samples). It lies in the memory of the last window, which it
+        replaces: a window is valid until the next one is asked for."""
+        nx, ny, _ = self.sizes
+        dt = self.steps[0]
+        nt = math.ceil((t_end - t_start) / dt) + 2
+        ncol, npt, nq = nx * ny, self.n_points, self.nq
+        o_eta = GRID_HEADER + 3 * ncol
+        o_kin = o_eta + nt * ncol
+        size = o_kin + nt * npt * nq
+        if self._buffer.size < size:
+            self._buffer = np.empty(size)
+        packed = self._buffer[:size]  # the last window's memory: no fresh pages to fault in each window
+        packed[:GRID_HEADER] = self.head
+        packed[S_T0], packed[S_NT] = t_start, nt
+        packed[GRID_HEADER:o_eta] = self.table
+        wt = np.multiply.outer(t_start + dt * np.arange(nt), self.sea.omega)
+        W = np.concatenate((np.cos(wt), np.sin(wt)), axis=1)       # (nt, 2 n): Re(Q exp(-i w t)) = W @ [qr; qi]
+        kin = packed[o_kin:].reshape(nt, npt * nq)
+        chunk = max(int(self.chunk), 1)
+        if npt <= chunk:
+            if self._q is None:
+                q = self._phasors(0, npt)
+                if q.size <= self.KEEP_VALUES:
+                    self._q = q
+            else:
+                q = self._q
+            np.matmul(W, q, out=kin)
+        else:
+            for c0 in range(0, npt, chunk):
+                c1 = min(c0 + chunk, npt)
+                kin[:, c0 * nq:c1 * nq] = W @ self._phasors(c0, c1)
+        E = self.sea._spatial(self.gx, self.gy) * self.sea.amplitude  # elevation phasors of the columns (P, n)
+        np.matmul(W, np.concatenate((E.real.T, E.imag.T)), out=packed[o_eta:o_kin].reshape(nt, ncol))
+        packed[S_ETAMAX] = float(np.max(np.abs(packed[o_eta:o_kin]))) if ncol else 0.0
+        return packed
+
+
 def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
                     per_wavelength=10, chunk=2048, z_max=0.0, columns=None):
-    """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`).
+    """The packed sea array of the compiled kernel: kinematics of ``sea`` on a grid (see :func:`grid_point`
+    and :class:`SeaGrid`, which keeps the points' phasors for the windows of a long run).
 
-    Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``; a
-    long run takes its grid in windows of time, :meth:`seacable.mooring.solver.MooringModel.ensure_sea`); along and
+    Time from ``t_start`` to ``t_end`` [s] (step: the shortest component period / ``per_period``); along and
     across the mean heading over ``box`` ((xi0, xi1), (zeta0, zeta1)) [m] in the rotated coordinates
     ``xi = x cos b + y sin b``, ``zeta = -x sin b + y cos b`` (step: the shortest wavelength /
-    ``per_period``; one point across for a long-crested sea, whose field does not vary across); in
+    ``per_wavelength``; one point across for a long-crested sea, whose field does not vary across); in
     depth from z = 0 (or the level at or just above ``z_max`` [m], when the points all lie below it) down to
     ``z_min`` [m] on levels ``z = -c (exp(i h) - 1)`` (spacing 0.3 / k_max at the surface, 10 % more at each
     level; a point above the top level gets its values, as a point beyond the horizontal edges gets the
     edge's). ``columns`` (nx, ny, 2), when given, holds for each column of the grid the first and last of its
-    levels (indices from the top one, inclusive) that points can reach: only those are computed, and the
-    levels above and below take the values of the first and last (the band's edges, as the box's). Linear
-    interpolation between grid points errs by at most
-    ``(2 pi / per_period)^2 / 8`` (1.2 % at 20 points a period) of the shortest component.
+    levels (indices from the top one, inclusive) that points can reach: only those are computed and stored,
+    and the levels above and below read the values of the first and last (the band's edges, as the box's).
+    Linear interpolation between grid points errs by at most ``(2 pi / per_period)^2 / 8`` (1.2 % at 20
+    points a period) of the shortest component.
     """
-    (nt, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, t_end - t_start, box, z_min, per_period, per_wavelength,
-                                                       z_max)
-    (x0, _), (y0, _) = box
-    dy = dx
-    cb, sb = math.cos(sea.mean_heading), math.sin(sea.mean_heading)
-    head = np.array([1.0, 0.0, t_start, dt, nt, x0, dx, nx, y0, dy, ny, cb, sb, zc, zh, nz, sea.depth, z_min, i0])
-    head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
-    xi = x0 + dx * np.arange(nx)
-    ze = y0 + dy * np.arange(ny)
-    zl = np.maximum(-zc * np.expm1(zh * (i0 + np.arange(nz))), -sea.depth)
-    XI, ZE = np.meshgrid(xi, ze, indexing="ij")
-    gx, gy = XI * cb - ZE * sb, XI * sb + ZE * cb              # global coordinates of the grid columns
-    t = t_start + dt * np.arange(nt)
-    # the packed array, filled in place: header, elevation (nt, nx, ny), kinematics (nt, nx, ny, nz, 6)
-    packed = np.empty(GRID_HEADER + nt * nx * ny * (1 + 6 * nz))
-    packed[:GRID_HEADER] = head
-    eta = packed[GRID_HEADER:GRID_HEADER + nt * nx * ny].reshape(nt, nx, ny)
-    grid = packed[GRID_HEADER + nt * nx * ny:].reshape(nt, nx, ny, nz, 6)
-    # the points' phasors once per chunk of points, times all at once (two real products per chunk)
-    wt = np.multiply.outer(t, sea.omega)
-    cw, sw = np.cos(wt), np.sin(wt)
-    px, py, pz = (np.broadcast_to(a, (nx, ny, nz)).ravel() for a in (gx[..., None], gy[..., None], zl))
-    kin = grid.reshape(nt, -1, 6)  # the same values, one row per point
-    level = np.broadcast_to(np.arange(nz), (nx, ny, nz))
-    if columns is None:
-        lo, hi = np.zeros((nx, ny, 1), int), np.full((nx, ny, 1), nz - 1)
-    else:
-        cols = np.asarray(columns, int).reshape(nx, ny, 2)
-        lo, hi = np.clip(cols[..., :1], 0, nz - 1), np.clip(cols[..., 1:], 0, nz - 1)
-    points = np.flatnonzero(((level >= lo) & (level <= hi)).ravel())  # the cells computed
-    # a long-crested sea: the horizontal velocity and acceleration along its heading, then their components (four
-    # products a point instead of seven)
-    planar = bool(np.all(sea.heading == sea.mean_heading))
-    for c0 in range(0, points.size, chunk):
-        sl = points[c0:c0 + chunk]
-        qr, qi = sea.phasors(px[sl], py[sl], pz[sl], planar=planar)
-        if planar:
-            out = (cw @ qr + sw @ qi).reshape(nt, 4, -1)
-            kin[:, sl] = np.stack((out[:, 0] * cb, out[:, 0] * sb, out[:, 1], out[:, 2] * cb, out[:, 2] * sb,
-                                   out[:, 3]), axis=-1)
-        else:
-            out = (cw @ qr + sw @ qi).reshape(nt, 7, -1)
-            kin[:, sl] = np.moveaxis(out[:, :6], 1, -1)
-    if points.size < px.size:  # the levels outside a column's band: its edges' values
-        for ix, iy in zip(*np.nonzero((lo[..., 0] > 0) | (hi[..., 0] < nz - 1))):
-            a, b = lo[ix, iy, 0], hi[ix, iy, 0]
-            grid[:, ix, iy, :a] = grid[:, ix, iy, a:a + 1]
-            grid[:, ix, iy, b + 1:] = grid[:, ix, iy, b:b + 1]
-    qr, qi = sea.phasors(gx.ravel(), gy.ravel(), np.zeros(gx.size))
-    eta[:] = (cw @ qr[:, 6 * gx.size:] + sw @ qi[:, 6 * gx.size:]).reshape(nt, nx, ny)
-    return packed
+    plan = SeaGrid(sea, box, z_min, stretching=stretching, per_period=per_period,
+                   per_wavelength=per_wavelength, z_max=z_max, columns=columns, chunk=chunk)
+    return plan.window(t_start, t_end)
 
 
 def no_sea(stretching="none"):
@@ -514,7 +571,7 @@ def _plan_cells(sea, x, y, t):
 def grid_eta(sea, x, y, t):
     """Surface elevation of the packed grid at (x, y, t) (multilinear; clamped at the grid's edges). [m]"""
     _, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
-    o = GRID_HEADER
+    o = GRID_HEADER + 3 * nx * ny
     s = 0.0
     for a in range(2):
         wa = ft if a else 1.0 - ft
@@ -537,17 +594,21 @@ def grid_point(sea, x, y, zs, t):
     """Kinematics of the packed grid at (x, y) and linear-theory depth ``zs`` (<= 0) at time ``t``.
 
     Returns ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2]: multilinear in t, xi, zeta and the depth
-    level's index; clamped at the grid's horizontal and time edges. Below the grid's deepest point
-    (``sea[S_ZMIN]``, :func:`cutoff_depth` or the seabed) the waves' kinematics are neglected: zeros.
+    level's index; clamped at the grid's horizontal and time edges and at each column's band of levels
+    (:class:`SeaGrid`). Below the grid's deepest point (``sea[S_ZMIN]``, :func:`cutoff_depth` or the seabed)
+    the waves' kinematics are neglected: zeros.
     """
     if zs < sea[S_ZMIN]:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     nt, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
     nz = int(sea[S_NZ])
+    nq = int(sea[S_NQ])
+    npt = int(sea[S_NP])
     # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h, counted from the top level's i0
     zlev = math.log1p(max(-zs, 0.0) / sea[S_ZC]) / sea[S_ZH]
     iz, fz = _cell(zlev, sea[S_I0], 1.0, nz)
-    o = GRID_HEADER + nt * nx * ny
+    oc = GRID_HEADER
+    o = GRID_HEADER + 3 * nx * ny + nt * nx * ny
     u = v = w = ax = ay = az = 0.0
     for a in range(2):
         wa = ft if a else 1.0 - ft
@@ -561,16 +622,27 @@ def grid_point(sea, x, y, zs, t):
                 wc = fy if c else 1.0 - fy
                 if wc == 0.0:
                     continue
+                col = oc + 3 * ((ix + b) * ny + iy + c)
+                lo, hi, off = int(sea[col]), int(sea[col + 1]), int(sea[col + 2])
                 for d in range(2):
                     wd = fz if d else 1.0 - fz
                     if wd == 0.0:
                         continue
                     f = wa * wb * wc * wd
-                    base = o + ((((it + a) * nx + ix + b) * ny + iy + c) * nz + iz + d) * 6
-                    u += f * sea[base]
-                    v += f * sea[base + 1]
-                    w += f * sea[base + 2]
-                    ax += f * sea[base + 3]
-                    ay += f * sea[base + 4]
-                    az += f * sea[base + 5]
+                    base = o + ((it + a) * npt + off + min(max(iz + d, lo), hi)) * nq
+                    if nq == 4:
+                        u += f * sea[base]
+                        w += f * sea[base + 1]
+                        ax += f * sea[base + 2]
+                        az += f * sea[base + 3]
+                    else:
+                        u += f * sea[base]
+                        v += f * sea[base + 1]
+                        w += f * sea[base + 2]
+                        ax += f * sea[base + 3]
+                        ay += f * sea[base + 4]
+                        az += f * sea[base + 5]
+    if nq == 4:  # along the heading: its components
+        cb, sb = sea[S_COS], sea[S_SIN]
+        return u * cb, u * sb, w, ax * cb, ax * sb, az
     return u, v, w, ax, ay, az

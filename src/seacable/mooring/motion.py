@@ -263,8 +263,10 @@ class RAOMotion(Model):
                              "Suggested fix: give environment.waves (an irregular sea with 'spectrum', or regular "
                              "waves), or use a 'platform' motion.")
         table = self.table()
-        wave_dofs = functools.partial(_rao_dofs, table, sea, self.reference[:2])
-        wave_dofs(np.zeros(1))  # frequencies and headings outside the table are refused here
+        from ..raos import RAOResponse
+
+        response = RAOResponse(table, sea, at=self.reference[:2])  # frequencies and headings outside it: refused
+        wave_dofs = functools.partial(_rao_dofs, response)
         from ..raos import outside_table
 
         outside, share = outside_table(table, sea)
@@ -283,10 +285,8 @@ class RAOMotion(Model):
                          "motion.in_sea(sea).channels(times, base).")
 
 
-def _rao_dofs(table, sea, at, times):
-    from ..raos import rao_motion
-
-    return tuple(m.T for m in rao_motion(table, sea, times, at=at, derivatives=True))
+def _rao_dofs(response, times):
+    return tuple(m.T for m in response(times, derivatives=True))
 
 
 @dataclass(frozen=True)

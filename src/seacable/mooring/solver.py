@@ -21,7 +21,7 @@ import numpy as np
 from .. import _validate
 from .._atomic import deferred_interrupts
 from ..errors import ConvergenceError, InputError, SeacableWarning
-from ..seastate import no_sea
+from ..seastate import SeaGrid, no_sea
 
 #: Largest irregular-sea grid held at once (values, 8 bytes each); a longer run takes it in time windows.
 SEA_WINDOW_VALUES = 2.5e7
@@ -242,7 +242,9 @@ class MooringModel:
         (nt, nx, ny, nz), (dt, gdx, zc, zh), i0 = grid_size(sea, duration, box, zmin, z_max=zmax)
         # in each column, only the levels that the points near it (within the pad) can reach
         columns = _sea_columns(xi, ze, P[:, 2], box, gdx, (nx, ny, nz), (zc, zh, i0), pad)
-        per_time = float(nx) * ny * (6 * nz + 1)
+        per_column = np.clip(columns[..., 1], 0, nz - 1) - np.clip(columns[..., 0], 0, nz - 1) + 1
+        nq = 4 if bool(np.all(sea.heading == sea.mean_heading)) else 6
+        per_time = float(nq * np.sum(np.maximum(per_column, 1)) + nx * ny)
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
         window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
         nw = min(nt, math.ceil(window / dt) + 2)
@@ -275,7 +277,9 @@ class MooringModel:
         """
         if self.water.sea is None:
             return
-        self._sea_spec = (*self._sea_grid(duration, positions), duration)
+        box, (zmin, zmax, columns), sea, window = self._sea_grid(duration, positions)
+        plan = SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns)
+        self._sea_spec = (plan, window, duration)
         self.sea = no_sea(self.water.stretching)
         self.ensure_sea(0.0, 0.0)
 
@@ -315,15 +319,13 @@ class MooringModel:
         spec = self._sea_spec
         if spec is None:
             return
-        from ..seastate import S_DT, S_MODE, S_NT, S_T0, kinematics_grid
+        from ..seastate import S_DT, S_MODE, S_NT, S_T0
 
         s = self.sea
         if s[S_MODE] > 0 and s[S_T0] <= t0 and t1 <= s[S_T0] + s[S_DT] * (s[S_NT] - 1):
             return
-        box, (zmin, zmax, columns), sea, window, duration = spec
-        end = max(t1, min(t0 + window, duration))
-        self.sea = kinematics_grid(sea, end, box, zmin, t_start=t0, stretching=self.water.stretching, z_max=zmax,
-                                   columns=columns)
+        plan, window, duration = spec
+        self.sea = plan.window(t0, max(t1, min(t0 + window, duration)))
 
     def element_args(self):
         n = self.network
@@ -731,6 +733,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
                                model.env, model.cur_depth, model.cur_speed, True, model.sea, beta, gamma, alpha_m,
                                alpha_f, hist, tol, max_iter, F, M, tension, stats)
 
+    sampled = (0, 0, ())  # the last chunk's outputs (k0, k1) and its motion samples
     try:
         k, size = 0, 1
         while k < n_out:
@@ -740,9 +743,15 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
             if math.isfinite(model.sea_end()):  # the chunk inside the window
                 k1 = min(k1, max(k + 1, math.floor(model.sea_end() / output_interval + 1e-9)))
-            # the motion on the chunk's step grid, once for each step (the same floats as interval by interval)
-            grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
-            px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
+            if sampled[0] <= k < sampled[1]:  # the rest of a chunk a failed step cut short: its samples again
+                k1 = min(k1, sampled[1])
+                j0, j1 = (k - sampled[0]) * sub, (k1 - sampled[0]) * sub
+                px, pv, pa = (c[j0:j1] for c in sampled[2])
+            else:
+                # the motion on the chunk's step grid, once for each step (the same floats as interval by interval)
+                grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
+                px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
+                sampled = (k, k1, (px, pv, pa))
             tick = _time.perf_counter()
             got = LP.run_outputs(k, k1, base, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
                                  model.fidx, model.nfree, model.bw, model.env, env_rec, model.cur_depth,
