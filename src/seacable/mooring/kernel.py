@@ -68,11 +68,11 @@ import math
 import numpy as np
 from numba import njit
 
-from ..seastate import GRID_HEADER, S_MODE, S_STRETCH, grid_eta, grid_point
+from ..seastate import GRID_HEADER, S_ETAMAX, S_MODE, S_STRETCH, grid_eta, grid_point
 from ..waves import airy_linear
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_solve", "bending_loads", "commit_viscoelastic",
-           "loads", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension", "table_tension",
+           "loads", "loads_water", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension", "table_tension",
            "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
@@ -574,6 +574,28 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     (:func:`bending_loads`; none: a truss); ``visco`` (e, V_SIZE) the viscoelastic elements
     (:func:`viscoelastic_tension`, advanced over ``env[E_VDT]``; no rows: none).
     """
+    water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))
+    loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
+                buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
+                with_waves, sea, F, M, tension, band, bw, cm, cc, water, True)
+
+
+@njit(cache=True)
+def n_water(X, env, cur_depth, with_waves, sea):
+    """Rows of the water array of :func:`loads_water`: one a node, or none in still water with a current
+    uniform over depth (the same water velocity at every immersed point)."""
+    wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)
+    return 0 if not wavy and cur_depth.size == 1 else X.shape[0]
+
+
+@njit(cache=True)
+def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
+                weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
+                fidx, env, cur_depth, cur_speed, with_waves, sea,
+                F, M, tension, band, bw, cm, cc, water, fresh):
+    """:func:`loads` with the water over each node in ``water`` (:func:`n_water` rows: the surface eta, the
+    velocity (3) and the acceleration (3) of the water at the node), computed here when ``fresh``, else those
+    it holds (of the same time, at nearby positions: a Newton iteration's start)."""
     wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)  # else the surface is z = 0 everywhere
     nvis = visco.shape[0]
     vstatic = math.isinf(env[E_VDT])
@@ -602,9 +624,13 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         _fluid(origin, t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
     # otherwise the surface over each node and the water's velocity and acceleration there, once per node (the
     # two elements of a node see the same): columns eta, u (3), a (3)
-    water = np.zeros((0 if uniform else n, 7))
-    for k in range(water.shape[0]):
-        water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy else 0.0
+    # an irregular sea alone without stretching: below its lowest trough (-S_ETAMAX) the surface tells nothing
+    # (a point there is wet, its kinematics those of its depth) and is not looked up
+    below = -math.inf
+    if wavy and env[E_WH] <= 0.0 and sea[S_STRETCH] <= 0.0:
+        below = -sea[S_ETAMAX]
+    for k in range(water.shape[0] if fresh else 0):
+        water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy and X[k, 2] >= below else 0.0
         _fluid_below(X[k], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0], water[k, 1:4], water[k, 4:7])
     for e in range(elements.shape[0]):
         a = elements[e, 0]
@@ -683,8 +709,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         half = 0.5 * L
         zmid = 0.5 * (X[a, 2] + X[b, 2])
         # the water surface over the element's middle (0: still water; with waves the instantaneous eta)
-        emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea) if wavy \
-            else 0.0
+        emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea) \
+            if wavy and max(X[a, 2], X[b, 2]) >= below else 0.0
         for k in (a, b):
             for r in range(3):
                 M[k, r, r] += mpl[e] * half
@@ -1068,6 +1094,12 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
     envw[:] = env
     envw[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
     env = envw
+    # an irregular sea: the water's kinematics of a step are looked up at its predicted positions and held over
+    # its Newton iterations, whose corrections move the nodes by millimetres (the kinematics change over them by
+    # about k dx, 1e-4 of themselves, far below the grid's interpolation error); else evaluated at each iterate
+    held = sea[S_MODE] > 0.0 and with_waves
+    unheld = not held
+    water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))
     for step in range(px.shape[0]):
         Xn[:] = X
         Vn[:] = V
@@ -1088,13 +1120,13 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
                         A[i, r] = c0 * (X[i, r] - Xn[i, r]) - Vn[i, r] / (beta * dt) - (0.5 / beta - 1.0) * An[i, r]
                         V[i, r] = Vn[i, r] + dt * ((1.0 - gamma) * An[i, r] + gamma * A[i, r])
             mat = band if jac else none
+            fresh = it == 0 or not held
             if jac:
                 band[:] = 0.0
                 lu_step = False
-            loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                  pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-                  with_waves, sea, F, M, tension,
-                  mat, bw, cm, c1)
+            loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
+                        pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env,
+                        cur_depth, cur_speed, with_waves, sea, F, M, tension, mat, bw, cm, c1, water, fresh)
             if galpha:
                 res = _residual_alpha(F, M, A, G, wm, wg, fidx, R)
             else:
@@ -1122,9 +1154,9 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
             modified = lu_step and res <= 0.1 * res_prev
             if not jac and not modified:
                 band[:] = 0.0
-                loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
-                      pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth,
-                      cur_speed, with_waves, sea, F, M, tension, band, bw, cm, c1)
+                loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd,
+                            pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env,
+                            cur_depth, cur_speed, with_waves, sea, F, M, tension, band, bw, cm, c1, water, unheld)
                 stats[0] += 1
             res_prev = res
             cuts = 0
