@@ -614,6 +614,7 @@ def grid_point(sea, x, y, zs, t):
         wa = ft if a else 1.0 - ft
         if wa == 0.0:
             continue
+        row = o + (it + a) * npt * nq
         for b in range(2):
             wb = fx if b else 1.0 - fx
             if wb == 0.0:
@@ -624,24 +625,23 @@ def grid_point(sea, x, y, zs, t):
                     continue
                 col = oc + 3 * ((ix + b) * ny + iy + c)
                 lo, hi, off = int(sea[col]), int(sea[col + 1]), int(sea[col + 2])
-                for d in range(2):
-                    wd = fz if d else 1.0 - fz
-                    if wd == 0.0:
-                        continue
-                    f = wa * wb * wc * wd
-                    base = o + ((it + a) * npt + off + min(max(iz + d, lo), hi)) * nq
-                    if nq == 4:
-                        u += f * sea[base]
-                        w += f * sea[base + 1]
-                        ax += f * sea[base + 2]
-                        az += f * sea[base + 3]
-                    else:
-                        u += f * sea[base]
-                        v += f * sea[base + 1]
-                        w += f * sea[base + 2]
-                        ax += f * sea[base + 3]
-                        ay += f * sea[base + 4]
-                        az += f * sea[base + 5]
+                # the two levels around the point, each clamped to the column's band
+                p0 = row + (off + min(max(iz, lo), hi)) * nq
+                p1 = row + (off + min(max(iz + 1, lo), hi)) * nq
+                f = wa * wb * wc
+                f0, f1 = f * (1.0 - fz), f * fz
+                if nq == 4:
+                    u += f0 * sea[p0] + f1 * sea[p1]
+                    w += f0 * sea[p0 + 1] + f1 * sea[p1 + 1]
+                    ax += f0 * sea[p0 + 2] + f1 * sea[p1 + 2]
+                    az += f0 * sea[p0 + 3] + f1 * sea[p1 + 3]
+                else:
+                    u += f0 * sea[p0] + f1 * sea[p1]
+                    v += f0 * sea[p0 + 1] + f1 * sea[p1 + 1]
+                    w += f0 * sea[p0 + 2] + f1 * sea[p1 + 2]
+                    ax += f0 * sea[p0 + 3] + f1 * sea[p1 + 3]
+                    ay += f0 * sea[p0 + 4] + f1 * sea[p1 + 4]
+                    az += f0 * sea[p0 + 5] + f1 * sea[p1 + 5]
     if nq == 4:  # along the heading: its components
         cb, sb = sea[S_COS], sea[S_SIN]
         return u * cb, u * sb, w, ax * cb, ax * sb, az

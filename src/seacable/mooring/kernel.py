@@ -126,44 +126,40 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
     """
     wavy = with_waves and (env[E_WH] > 0.0 or sea[S_MODE] > 0.0)
     eta = _surface(x[0], x[1], t, env, with_waves, sea) if wavy else 0.0
-    _fluid_below(x, t, env, cur_depth, cur_speed, wavy, sea, eta, u, acc)
+    u[0], u[1], u[2], acc[0], acc[1], acc[2] = _fluid_below(x[0], x[1], x[2], t, env, cur_depth, cur_speed, wavy, sea,
+                                                            eta)
 
 
 @njit(cache=True)
-def _fluid_below(x, t, env, cur_depth, cur_speed, wavy, sea, eta, u, acc):
-    """:func:`_fluid` with the surface ``eta`` [m] above the point known (``wavy``: there are waves)."""
-    u[0] = u[1] = u[2] = 0.0
-    acc[0] = acc[1] = acc[2] = 0.0
-    if x[2] > eta:
-        return
+def _fluid_below(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
+    """:func:`_fluid` at the point (x, y, z) with the surface ``eta`` [m] above it known (``wavy``: there are
+    waves): the velocity and acceleration ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2]."""
+    if z > eta:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
     if cur_depth.size == 1:
         speed = cur_speed[0]
     else:
-        speed = np.interp(-x[2], cur_depth, cur_speed)
+        speed = np.interp(-z, cur_depth, cur_speed)
+    u0 = u1 = u2 = a0 = a1 = a2 = 0.0
     if speed != 0.0:
-        u[0] = speed * math.cos(env[E_CHEAD])
-        u[1] = speed * math.sin(env[E_CHEAD])
+        u0 = speed * math.cos(env[E_CHEAD])
+        u1 = speed * math.sin(env[E_CHEAD])
     if not wavy:
-        return
+        return u0, u1, u2, a0, a1, a2
     d = env[E_WDEPTH]
     if sea[S_STRETCH] > 0.0:
-        zs = (x[2] - eta) * d / (d + eta) if math.isfinite(d) else x[2] - eta
+        zs = (z - eta) * d / (d + eta) if math.isfinite(d) else z - eta
     else:
-        zs = min(x[2], 0.0)
+        zs = min(z, 0.0)
     zs = max(min(zs, 0.0), -d)
     if env[E_WH] > 0.0:
-        _add_kinematics(u, acc, airy_linear(x[0], x[1], zs, t, env[E_WH], env[E_WT], env[E_WK], d, env[E_WHEAD],
-                                            env[E_WPHASE], env[E_G]))
+        k0, k1, k2, k3, k4, k5 = airy_linear(x, y, zs, t, env[E_WH], env[E_WT], env[E_WK], d, env[E_WHEAD],
+                                             env[E_WPHASE], env[E_G])
+        u0, u1, u2, a0, a1, a2 = u0 + k0, u1 + k1, u2 + k2, a0 + k3, a1 + k4, a2 + k5
     if sea[S_MODE] > 0.0:
-        _add_kinematics(u, acc, grid_point(sea, x[0], x[1], zs, t))
-
-
-@njit(cache=True)
-def _add_kinematics(u, acc, k):
-    """Add a wave's ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2] to the velocity ``u`` and acceleration ``acc``."""
-    for r in range(3):
-        u[r] += k[r]
-        acc[r] += k[3 + r]
+        k0, k1, k2, k3, k4, k5 = grid_point(sea, x, y, zs, t)
+        u0, u1, u2, a0, a1, a2 = u0 + k0, u1 + k1, u2 + k2, a0 + k3, a1 + k4, a2 + k5
+    return u0, u1, u2, a0, a1, a2
 
 
 @njit(cache=True)
@@ -631,7 +627,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         below = -sea[S_ETAMAX]
     for k in range(water.shape[0] if fresh else 0):
         water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy and X[k, 2] >= below else 0.0
-        _fluid_below(X[k], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0], water[k, 1:4], water[k, 4:7])
+        water[k, 1], water[k, 2], water[k, 3], water[k, 4], water[k, 5], water[k, 6] = _fluid_below(
+            X[k, 0], X[k, 1], X[k, 2], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0])
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
