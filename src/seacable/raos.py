@@ -23,9 +23,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from numba import njit
 
 from .errors import InputError
+from .seastate import cos_sin
 
 __all__ = ["DOFS", "RAOResponse", "RAOTable", "outside_table", "rao_motion", "read_rao_csv", "read_wamit4"]
 
@@ -127,40 +127,10 @@ class RAOResponse:
         out = np.empty((t.size, 18))
         g = self.gain if derivatives else self.gain[:, :6]
         for lo in range(0, t.size, _CHUNK):  # (times, components) in chunks: bounded memory for any run
-            out[lo:lo + _CHUNK, :g.shape[1]] = _cos_sin(self.omega, np.ascontiguousarray(t[lo:lo + _CHUNK])) @ g
+            out[lo:lo + _CHUNK, :g.shape[1]] = cos_sin(self.omega, np.ascontiguousarray(t[lo:lo + _CHUNK])) @ g
         if not derivatives:
             return out[:, :6].T.copy()
         return tuple(out[:, 6 * j:6 * j + 6].T.copy() for j in range(3))
-
-
-@njit(cache=True)
-def _cos_sin(omega, t):
-    """``[cos(w t), sin(w t)]`` (len(t), 2 len(w)). Times a constant step apart (a run's step grid) rotate the
-    last row's pairs by ``w h`` (a product instead of a sine and a cosine of a large argument, a fifth of the
-    cost), computed afresh every 32 rows and wherever the step changes. The step is taken from the times, whose
-    rounding (ulp(t), 2e-12 s at 3 h) the 31 rotations accumulate: the phases err by at most 31 w ulp(t),
-    1e-10 rad at 3 h (a motion's relative error of 1e-10)."""
-    n, m = omega.size, t.size
-    out = np.empty((m, 2 * n))
-    ch, sh = np.empty(n), np.empty(n)
-    h = math.nan
-    for j in range(m):
-        step = t[j] - t[j - 1] if j > 0 else math.nan
-        if j % 32 == 0 or not abs(step - h) <= 1e-12 * max(abs(t[j]), 1.0):
-            for k in range(n):
-                out[j, k] = math.cos(omega[k] * t[j])
-                out[j, n + k] = math.sin(omega[k] * t[j])
-            if j > 0 and step != h:
-                h = step
-                for k in range(n):
-                    ch[k] = math.cos(omega[k] * h)
-                    sh[k] = math.sin(omega[k] * h)
-        else:
-            for k in range(n):
-                c, s = out[j - 1, k], out[j - 1, n + k]
-                out[j, k] = c * ch[k] - s * sh[k]
-                out[j, n + k] = s * ch[k] + c * sh[k]
-    return out
 
 
 def rao_motion(table: RAOTable, sea, times, *, at=(0.0, 0.0), derivatives: bool = False,

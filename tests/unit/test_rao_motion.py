@@ -153,11 +153,11 @@ def test_components_outside_the_table_are_left_out_and_said_so(tmp_path):
 
 
 def test_the_motions_sines_and_cosines_on_a_step_grid_are_those_of_numpy_to_the_times_rounding():
-    """RAOResponse evaluates cos(w t) and sin(w t) of times a constant step apart by rotating the last row by
-    w h (fresh every 32 rows and where the step changes): against numpy's, on a 3-hour run's step grid, within
-    31 w ulp(t) (the step's rounding accumulated over the rotations, the stated bound), and exactly at times
-    with no common step."""
-    from seacable.raos import _cos_sin
+    """RAOResponse and the sea grid evaluate cos(w t) and sin(w t) of times a constant step apart by rotating the
+    last row by w h (fresh every 32 rows and where the step changes): against numpy's, on a 3-hour run's step
+    grid, within 31 w ulp(t) (the step's rounding accumulated over the rotations, the stated bound), and exactly
+    at times with no common step."""
+    from seacable.seastate import cos_sin
 
     w = np.linspace(0.2, 2.0, 50)
     grid = 10000.0 + 0.1 * np.arange(1, 4001)
@@ -166,4 +166,4 @@ def test_the_motions_sines_and_cosines_on_a_step_grid_are_those_of_numpy_to_the_
     for t in (grid, rand):
         ref = np.concatenate((np.cos(np.multiply.outer(t, w)), np.sin(np.multiply.outer(t, w))), axis=1)
         bound = 31 * w.max() * np.spacing(t.max()) if t is grid else 0.0
-        assert np.max(np.abs(_cos_sin(w, t) - ref)) <= bound + 1e-15
+        assert np.max(np.abs(cos_sin(w, t) - ref)) <= bound + 1e-15

@@ -255,8 +255,9 @@ def test_a_grid_computes_only_the_levels_its_points_can_reach():
 def test_a_short_crested_grid_holds_the_direct_sum_at_its_points():
     """Components from three headings (a short-crested sea: six values a grid point, not four): the grid at its
     own points equals the direct superposition (:meth:`SeaComponents.kinematics`) to round-off (1e-12 of the
-    velocity scale), in a band of levels as in the whole grid; between points the interpolation holds its
-    bound (the 7.2 % of test_grid_interpolation_error_is_within_its_bound, of the largest amplitude)."""
+    velocity scale), in a band of levels as in the whole grid, and computed in chunks of points as at once;
+    between points the interpolation holds its bound (the 7.2 % of
+    test_grid_interpolation_error_is_within_its_bound, of the largest amplitude)."""
     from seacable.mooring.solver import _sea_columns
 
     k = wave_number(np.array([8.0, 6.0, 11.0]), None)
@@ -270,6 +271,9 @@ def test_a_short_crested_grid_holds_the_direct_sum_at_its_points():
     cols = _sea_columns(xs * 0.8, xs * 0.3, -3.0 - 0.5 * np.abs(xs), box, dx, (nx, ny, nz), (zc, zh, i0), 2.0)
     arrays = (kinematics_grid(sea, 6.0, box, -30.0), kinematics_grid(sea, 6.0, box, -30.0, columns=cols))
     assert arrays[0][S_NQ] == 6 and arrays[1][S_NP] < arrays[0][S_NP]
+    # in chunks of 7 points (a large grid's products): the same array to round-off
+    np.testing.assert_allclose(kinematics_grid(sea, 6.0, box, -30.0, chunk=7), arrays[0], rtol=0,
+                               atol=1e-14 * float(np.max(np.abs(arrays[0][GRID_HEADER:]))))
     cb, sb = math.cos(0.2), math.sin(0.2)
     scale = float(np.max(sea.amplitude * sea.omega))
     rng = np.random.default_rng(11)
