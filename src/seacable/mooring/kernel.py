@@ -72,8 +72,8 @@ from ..seastate import GRID_HEADER, S_ETAMAX, S_MODE, S_STRETCH, grid_eta, grid_
 from ..waves import airy_linear
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_solve", "bending_loads", "commit_viscoelastic",
-           "loads", "loads_water", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension", "table_tension",
-           "viscoelastic_loads", "viscoelastic_tension"]
+           "loads", "loads_water", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
+           "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
 E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7

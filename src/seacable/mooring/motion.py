@@ -263,12 +263,10 @@ class RAOMotion(Model):
                              "Suggested fix: give environment.waves (an irregular sea with 'spectrum', or regular "
                              "waves), or use a 'platform' motion.")
         table = self.table()
-        from ..raos import RAOResponse
+        from ..raos import RAOResponse, outside_table
 
         response = RAOResponse(table, sea, at=self.reference[:2])  # frequencies and headings outside it: refused
         wave_dofs = functools.partial(_rao_dofs, response)
-        from ..raos import outside_table
-
         outside, share = outside_table(table, sea)
         if outside.any():  # left out, and said so
             w = np.asarray(sea.omega)[outside]
