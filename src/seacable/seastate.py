@@ -491,6 +491,8 @@ class SeaGrid:
         self.pz = np.maximum(-zc * np.expm1(zh * (i0 + lev)), -sea.depth)
         self._q = None
         self._buffer = np.empty(0)
+        E = sea._spatial(self.gx, self.gy) * sea.amplitude  # the columns' elevation phasors (columns, n)
+        self._eta_q = np.ascontiguousarray(np.concatenate((E.real.T, E.imag.T)))  # [Re; Im] (2 n, columns)
 
     def _phasors(self, c0, c1):
         """Phasor matrix [qr; qi] (2 n, (c1 - c0) nq) of the points c0..c1 - 1, point after point."""
@@ -533,8 +535,7 @@ class SeaGrid:
                 np.matmul(W, q, out=kin)
             else:
                 kin[:, c0 * nq:c1 * nq] = W @ q
-        E = self.sea._spatial(self.gx, self.gy) * self.sea.amplitude  # elevation phasors of the columns (P, n)
-        np.matmul(W, np.concatenate((E.real.T, E.imag.T)), out=packed[o_eta:o_kin].reshape(nt, ncol))
+        np.matmul(W, self._eta_q, out=packed[o_eta:o_kin].reshape(nt, ncol))
         packed[S_ETAMAX] = float(np.max(np.abs(packed[o_eta:o_kin]))) if ncol else 0.0
         return packed
 
