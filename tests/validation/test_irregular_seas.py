@@ -618,11 +618,11 @@ def test_the_surface_is_looked_up_only_above_the_lowest_trough_of_the_grids_wind
     forces, masses and tensions are bit for bit those of the kernel told that the surface may reach any depth
     (S_ETAMAX = inf); told it stays at z = 0 (S_ETAMAX = 0, wrong in a 10 m sea), the raised lines' loads
     change (the fairleads, above the trough, are wet)."""
-    from seacable.seastate import S_ETAMAX
+    from seacable.seastate import S_ETAMAX, S_NT, S_NX, S_NY
 
     model, _, X0 = _oc3_storm(monkeypatch)
     sea = model.sea
-    nx, ny, nt = int(sea[7]), int(sea[10]), int(sea[4])
+    nx, ny, nt = int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NT])
     o = GRID_HEADER + 3 * nx * ny
     assert sea[S_ETAMAX] == np.max(np.abs(sea[o:o + nt * nx * ny])) > 1.0  # Hs 10 m: metres of elevation
     rng = np.random.default_rng(4)
