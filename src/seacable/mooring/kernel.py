@@ -71,8 +71,8 @@ from numba import njit
 from ..seastate import GRID_HEADER, S_ETAMAX, S_MODE, S_STRETCH, grid_eta, grid_point
 from ..waves import airy_linear
 
-__all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_solve", "bending_loads", "commit_viscoelastic",
-           "loads", "loads_water", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
+__all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
+           "loads", "loads_water", "lu_solve", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
            "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 # Environment vector layout.
@@ -844,85 +844,138 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
 
 
 @njit(cache=True)
-def _eliminate5(band, rhs, k, m):
-    """Row ``k``'s elimination from the ``m - 1`` rows below it (half-bandwidth 5, :func:`band_solve`)."""
-    piv = band[k, 5]
-    for i in range(1, m):
-        o = 5 - i
-        f = band[k + i, o] / piv
-        if f == 0.0:
-            continue
-        band[k + i, o] = f
-        for j in range(1, m):
-            band[k + i, o + j] -= f * band[k, 5 + j]
-        rhs[k + i] -= f * rhs[k]
+def _eliminate5(band, r, o, inv, u1, u2, u3, u4, u5):
+    """Row ``r``'s elimination by the pivot row whose reciprocal pivot is ``inv`` and whose U entries right of
+    the diagonal are ``u1`` .. ``u5``, the multiplier at column ``o`` of its band row."""
+    f = band[r, o] * inv
+    band[r, o] = f
+    band[r, o + 1] -= f * u1
+    band[r, o + 2] -= f * u2
+    band[r, o + 3] -= f * u3
+    band[r, o + 4] -= f * u4
+    band[r, o + 5] -= f * u5
 
 
 @njit(cache=True)
-def _band_solve5(band, rhs):
-    """:func:`band_solve` of half-bandwidth 5 (a single line: 3 x 3 blocks, each node coupled to the next),
-    the same operations with constant loop bounds away from the last rows (about twice as fast)."""
-    n = rhs.size
+def _factor5(band):
+    """:func:`band_factor` of half-bandwidth 5 (a single line: 3 x 3 blocks, each node coupled to the next):
+    each pivot row's U entries held in registers over its eliminations (the rows it updates cannot be
+    assumed apart from it otherwise), with constant bounds away from the last rows."""
+    n = band.shape[0]
     for k in range(n):
         piv = band[k, 5]
         if piv == 0.0 or not math.isfinite(piv):
             return False
-        if k + 6 <= n:
-            _eliminate5(band, rhs, k, 6)
+        inv = 1.0 / piv
+        band[k, 5] = inv
+        if k + 5 < n:
+            u1, u2, u3, u4, u5 = band[k, 6], band[k, 7], band[k, 8], band[k, 9], band[k, 10]
+            _eliminate5(band, k + 1, 4, inv, u1, u2, u3, u4, u5)
+            _eliminate5(band, k + 2, 3, inv, u1, u2, u3, u4, u5)
+            _eliminate5(band, k + 3, 2, inv, u1, u2, u3, u4, u5)
+            _eliminate5(band, k + 4, 1, inv, u1, u2, u3, u4, u5)
+            _eliminate5(band, k + 5, 0, inv, u1, u2, u3, u4, u5)
         else:
-            _eliminate5(band, rhs, k, n - k)
+            m = n - k
+            for i in range(1, m):
+                o = 5 - i
+                f = band[k + i, o] * inv
+                band[k + i, o] = f
+                for j in range(1, m):
+                    band[k + i, o + j] -= f * band[k, 5 + j]
+    return True
+
+
+@njit(cache=True)
+def band_factor(band, bw):
+    """Factor the banded matrix in place (LU without pivoting): the multipliers below the diagonal, U above it,
+    and the reciprocals of U's pivots on it (a product, not a division, on the solves' critical path). Returns
+    False on a zero or non-finite pivot."""
+    if bw == 5:
+        return _factor5(band)
+    n = band.shape[0]
+    for k in range(n):
+        piv = band[k, bw]
+        if piv == 0.0 or not math.isfinite(piv):
+            return False
+        inv = 1.0 / piv
+        band[k, bw] = inv
+        end = min(n, k + bw + 1)
+        for i in range(k + 1, end):
+            o = bw + k - i  # row i's column j is at o + (j - k) of its band row, row k's at bw + (j - k)
+            f = band[i, o] * inv
+            band[i, o] = f
+            for j in range(1, end - k):
+                band[i, o + j] -= f * band[k, bw + j]
+    return True
+
+
+@njit(cache=True)
+def _lu_solve5(band, rhs):
+    """:func:`lu_solve` of half-bandwidth 5: the last five values carried in registers, and each row's sum taken
+    farthest term first, so that a row waits on the one before it for a single product."""
+    n = rhs.size
+    if n < 12:
+        return _lu_solve_any(band, 5, rhs)
+    for i in range(1, 5):
+        s = 0.0
+        for k in range(i):
+            s += band[i, 5 + k - i] * rhs[k]
+        rhs[i] -= s
+    y5, y4, y3, y2, y1 = rhs[0], rhs[1], rhs[2], rhs[3], rhs[4]
+    for i in range(5, n):
+        s = band[i, 0] * y5 + band[i, 1] * y4 + band[i, 2] * y3 + band[i, 3] * y2
+        yi = rhs[i] - s - band[i, 4] * y1
+        rhs[i] = yi
+        y5, y4, y3, y2, y1 = y4, y3, y2, y1, yi
+    for k in range(n - 1, n - 6, -1):
+        s = 0.0
+        for j in range(n - 1, k, -1):
+            s += band[k, 5 + j - k] * rhs[j]
+        rhs[k] = (rhs[k] - s) * band[k, 5]
+    x1, x2, x3, x4, x5 = rhs[n - 5], rhs[n - 4], rhs[n - 3], rhs[n - 2], rhs[n - 1]
+    for k in range(n - 6, -1, -1):
+        s = band[k, 10] * x5 + band[k, 9] * x4 + band[k, 8] * x3 + band[k, 7] * x2
+        xk = (rhs[k] - s - band[k, 6] * x1) * band[k, 5]
+        rhs[k] = xk
+        x5, x4, x3, x2, x1 = x4, x3, x2, x1, xk
+    return True
+
+
+@njit(cache=True)
+def _lu_solve_any(band, bw, rhs):
+    """:func:`lu_solve` of any half-bandwidth: forward by rows, then back, each row's sum farthest term first."""
+    n = rhs.size
+    for i in range(1, n):
+        s = 0.0
+        for k in range(max(0, i - bw), i):
+            s += band[i, bw + k - i] * rhs[k]
+        rhs[i] -= s
     for k in range(n - 1, -1, -1):
-        s = rhs[k]
-        if k + 6 <= n:
-            for j in range(1, 6):
-                s -= band[k, 5 + j] * rhs[k + j]
-        else:
-            for j in range(1, n - k):
-                s -= band[k, 5 + j] * rhs[k + j]
-        rhs[k] = s / band[k, 5]
+        s = 0.0
+        for j in range(min(n - 1, k + bw), k, -1):
+            s += band[k, bw + j - k] * rhs[j]
+        rhs[k] = (rhs[k] - s) * band[k, bw]
     return True
 
 
 @njit(cache=True)
 def lu_solve(band, bw, rhs):
-    """Solve in place with the factors :func:`band_solve` left in ``band`` (its multipliers below the
-    diagonal, U on and above it)."""
-    n = rhs.size
-    for k in range(n):
-        for i in range(k + 1, min(n, k + bw + 1)):
-            rhs[i] -= band[i, bw + k - i] * rhs[k]
-    for k in range(n - 1, -1, -1):
-        s = rhs[k]
-        for j in range(k + 1, min(n, k + bw + 1)):
-            s -= band[k, bw + j - k] * rhs[j]
-        rhs[k] = s / band[k, bw]
+    """Solve in place with the factors :func:`band_factor` left in ``band`` (its multipliers below the
+    diagonal, U above it, U's reciprocal pivots on it)."""
+    if bw == 5:
+        _lu_solve5(band, rhs)
+    else:
+        _lu_solve_any(band, bw, rhs)
 
 
 @njit(cache=True)
 def band_solve(band, bw, rhs):
-    """Solve the banded system in place (LU without pivoting); returns False on a zero pivot."""
-    if bw == 5:
-        return _band_solve5(band, rhs)
-    n = rhs.size
-    for k in range(n):
-        piv = band[k, bw]
-        if piv == 0.0 or not math.isfinite(piv):
-            return False
-        end = min(n, k + bw + 1)
-        for i in range(k + 1, end):
-            f = band[i, bw + k - i] / piv
-            if f == 0.0:
-                continue
-            band[i, bw + k - i] = f
-            o = bw + k - i  # row i's column j is at o + (j - k) of its band row, row k's at bw + (j - k)
-            for j in range(1, end - k):
-                band[i, o + j] -= f * band[k, bw + j]
-            rhs[i] -= f * rhs[k]
-    for k in range(n - 1, -1, -1):
-        s = rhs[k]
-        for j in range(k + 1, min(n, k + bw + 1)):
-            s -= band[k, bw + j - k] * rhs[j]
-        rhs[k] = s / band[k, bw]
+    """Solve the banded system in place (LU without pivoting, :func:`band_factor`, whose factors ``band`` keeps
+    for :func:`lu_solve`); returns False on a zero or non-finite pivot."""
+    if not band_factor(band, bw):
+        return False
+    lu_solve(band, bw, rhs)
     return True
 
 
