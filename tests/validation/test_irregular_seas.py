@@ -27,6 +27,7 @@ from seacable.seastate import (
     S_DT,
     S_NP,
     S_NQ,
+    S_SINGLE,
     SeaComponents,
     cos2s_spreading,
     frequency_range,
@@ -295,6 +296,42 @@ def test_a_short_crested_grid_holds_the_direct_sum_at_its_points():
         vel, acc, _ = sea.kinematics([t], x, y, z)
         got = np.array(grid_point(arrays[0], x, y, z, t))
         assert np.max(np.abs(got[:3] - vel[0])) < 0.072 * float(np.sum(sea.amplitude * sea.omega))
+
+
+@pytest.mark.parametrize("headings", [(0.2,), (0.2, 0.9, -0.4)])
+def test_a_single_precision_grid_errs_by_its_rounding_bound_only(headings):
+    """The kinematics in single precision (what a run stores): at 2000 random points and times, in a band of
+    levels, a long-crested (4 values a point) and a short-crested sea (6), the double grid's values to within
+    the rounding bound of a sum of 2n products in float32, (2n + 2) 2^-24 times the sum of the terms'
+    magnitudes (Higham's gamma_{2n+2}; a term at most sqrt(2) a w^j coth(k d)). A stored value in the wrong
+    place (a layout error) is off by the values themselves, orders above. The elevation is the double grid's."""
+    from seacable.mooring.solver import _sea_columns
+
+    n = 60
+    heads = np.resize(np.array(headings), n)
+    T = np.linspace(6.0, 18.0, n)
+    rng = np.random.default_rng(5)
+    sea = SeaComponents(amplitude=rng.uniform(0.1, 1.0, n), omega=2 * math.pi / T,
+                        wave_number=np.asarray(wave_number(T, 80.0), float), heading=heads,
+                        phase=rng.uniform(0, 2 * math.pi, n), depth=80.0, gravity=9.80665, mean_heading=0.2)
+    box = ((-60.0, 60.0), (-20.0, 20.0))
+    (_, nx, ny, nz), (_, dx, zc, zh), i0 = grid_size(sea, 8.0, box, -80.0)
+    xs = np.linspace(-50.0, 50.0, 41)
+    cols = _sea_columns(xs * 0.98, xs * 0.2, -10.0 - 0.6 * np.abs(xs), box, dx, (nx, ny, nz), (zc, zh, i0), 3.0)
+    double = kinematics_grid(sea, 8.0, box, -80.0, columns=cols)
+    single = kinematics_grid(sea, 8.0, box, -80.0, columns=cols, single=True)
+    assert single[S_SINGLE] == 1 and double[S_SINGLE] == 0
+    assert single.size < 0.55 * double.size  # half the kinematics' memory
+    term = math.sqrt(2) * sea.amplitude / np.tanh(sea.wave_number * sea.depth)
+    bound = (2 * n + 2) * 2.0**-24 * np.array([np.sum(term * sea.omega)] * 3 + [np.sum(term * sea.omega**2)] * 3)
+    worst = 0.0
+    for _ in range(2000):
+        x, y, z, t = rng.uniform(-70, 70), rng.uniform(-25, 25), rng.uniform(-80.0, 0.0), rng.uniform(0.0, 8.0)
+        got, want = np.array(grid_point(single, x, y, z, t)), np.array(grid_point(double, x, y, z, t))
+        worst = max(worst, float(np.max(np.abs(got - want) / bound)))
+        assert grid_eta(single, x, y, t) == grid_eta(double, x, y, t)
+    assert worst < 1.0
+    assert worst > 0.0  # the two differ: the single grid is not the double one
 
 
 def test_grid_interpolation_error_is_within_its_bound():

@@ -271,14 +271,15 @@ class MooringModel:
         the values at its edge. Only
         the components that matter below the highest of them (plus 4 sqrt(m0)) are gridded
         (:func:`seacable.seastate.significant`): deep lines need no short waves, and a coarser
-        grid. Its size is checked
+        grid. The kinematics are stored in single precision (:class:`seacable.seastate.SeaGrid`: their rounding,
+        about 1e-6 of the values, is far below the grid's interpolation error). Its size is checked
         against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
         to do.
         """
         if self.water.sea is None:
             return
         box, (zmin, zmax, columns), sea, window = self._sea_grid(duration, positions)
-        plan = SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns)
+        plan = SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns, single=True)
         self._sea_spec = (plan, window, duration)
         self.sea = no_sea(self.water.stretching)
         self.ensure_sea(0.0, 0.0)
