@@ -68,6 +68,7 @@ __all__ = [
     "frequency_range",
     "grid_eta",
     "grid_point",
+    "grid_points",
     "jonswap",
     "kinematics_grid",
     "no_sea",
@@ -629,6 +630,60 @@ def grid_eta(sea, x, y, t):
                     continue
                 s += wa * wb * wc * sea[o + ((it + a) * nx + ix + b) * ny + iy + c]
     return s
+
+
+@njit(cache=True)
+def _trilinear(data, r, q, ft, fx, fz, a00, a01, a10, a11, j):
+    """Value ``j`` of a point, multilinear in time (rows ``r`` and ``r + q`` of ``data``), along the heading
+    (columns at offsets ``a0*`` and ``a1*``) and in depth (levels ``a*0`` and ``a*1``)."""
+    return ((1.0 - ft) * ((1.0 - fx) * ((1.0 - fz) * data[r + a00 + j] + fz * data[r + a01 + j])
+                          + fx * ((1.0 - fz) * data[r + a10 + j] + fz * data[r + a11 + j]))
+            + ft * ((1.0 - fx) * ((1.0 - fz) * data[r + q + a00 + j] + fz * data[r + q + a01 + j])
+                    + fx * ((1.0 - fz) * data[r + q + a10 + j] + fz * data[r + q + a11 + j])))
+
+
+@njit(cache=True)
+def grid_points(sea, X, zs, t, out):
+    """:func:`grid_point` at the points ``(X[k, 0], X[k, 1])`` and linear-theory depths ``zs[k]`` (NaN: none,
+    zeros) at time ``t``, into ``out[k, 0:6]``: the same values. A long-crested sea in single precision (a run's
+    grid) takes its own loop: the time's cell found once, each point's eight corners read without branches."""
+    nt, nx, ny, nq = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NQ])
+    if ny != 1 or nq != 4 or sea[S_SINGLE] <= 0.0:
+        for k in range(zs.size):
+            if math.isnan(zs[k]):
+                out[k, 0] = out[k, 1] = out[k, 2] = out[k, 3] = out[k, 4] = out[k, 5] = 0.0
+            else:
+                out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4], out[k, 5] = grid_point(
+                    sea, X[k, 0], X[k, 1], zs[k], t)
+        return
+    cb, sb = sea[S_COS], sea[S_SIN]
+    nz, npt = int(sea[S_NZ]), int(sea[S_NP])
+    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
+    data = sea.view(np.float32)
+    q = 4 * npt  # floats a time
+    r = 2 * (GRID_HEADER + 3 * nx + nt * nx) + it * q
+    zmin, x0, dx, zc, zh, i0 = sea[S_ZMIN], sea[S_X0], sea[S_DX], sea[S_ZC], sea[S_ZH], sea[S_I0]
+    for k in range(zs.size):
+        z = zs[k]
+        if not z >= zmin:  # below the grid (no waves) or NaN
+            out[k, 0] = out[k, 1] = out[k, 2] = out[k, 3] = out[k, 4] = out[k, 5] = 0.0
+            continue
+        ix, fx = _cell(X[k, 0] * cb + X[k, 1] * sb, x0, dx, nx)
+        iz, fz = _cell(math.log1p(max(-z, 0.0) / zc) / zh, i0, 1.0, nz)
+        c0 = GRID_HEADER + 3 * ix
+        c1 = GRID_HEADER + 3 * min(ix + 1, nx - 1)
+        lo0, hi0, off0 = int(sea[c0]), int(sea[c0 + 1]), int(sea[c0 + 2])
+        lo1, hi1, off1 = int(sea[c1]), int(sea[c1 + 1]), int(sea[c1 + 2])
+        a00 = 4 * (off0 + min(max(iz, lo0), hi0))
+        a01 = 4 * (off0 + min(max(iz + 1, lo0), hi0))
+        a10 = 4 * (off1 + min(max(iz, lo1), hi1))
+        a11 = 4 * (off1 + min(max(iz + 1, lo1), hi1))
+        uh = _trilinear(data, r, q, ft, fx, fz, a00, a01, a10, a11, 0)
+        ah = _trilinear(data, r, q, ft, fx, fz, a00, a01, a10, a11, 2)
+        out[k, 0], out[k, 1] = uh * cb, uh * sb
+        out[k, 2] = _trilinear(data, r, q, ft, fx, fz, a00, a01, a10, a11, 1)
+        out[k, 3], out[k, 4] = ah * cb, ah * sb
+        out[k, 5] = _trilinear(data, r, q, ft, fx, fz, a00, a01, a10, a11, 3)
 
 
 @njit(cache=True)

@@ -33,6 +33,7 @@ from seacable.seastate import (
     frequency_range,
     grid_eta,
     grid_point,
+    grid_points,
     grid_size,
     jonswap,
     kinematics_grid,
@@ -332,6 +333,38 @@ def test_a_single_precision_grid_errs_by_its_rounding_bound_only(headings):
         assert grid_eta(single, x, y, t) == grid_eta(double, x, y, t)
     assert worst < 1.0
     assert worst > 0.0  # the two differ: the single grid is not the double one
+
+
+@pytest.mark.parametrize(("headings", "single"), [((0.2,), True), ((0.2,), False), ((0.2, 0.9, -0.4), True)])
+def test_the_grids_lookup_of_many_points_gives_each_points_values(headings, single):
+    """grid_points (the kernel's look-up of all nodes at once; its own loop for a long-crested sea in single
+    precision) gives grid_point's values at each point to round-off (the same products summed in another
+    order: 1e-14 of the largest value), zeros for a NaN depth and below the grid, and the edges' values beyond
+    the box and the band."""
+    from seacable.mooring.solver import _sea_columns
+
+    n = 30
+    rng = np.random.default_rng(8)
+    T = np.linspace(6.0, 18.0, n)
+    sea = SeaComponents(amplitude=rng.uniform(0.1, 1.0, n), omega=2 * math.pi / T,
+                        wave_number=np.asarray(wave_number(T, 80.0), float), heading=np.resize(headings, n),
+                        phase=rng.uniform(0, 2 * math.pi, n), depth=80.0, gravity=9.80665, mean_heading=0.2)
+    box = ((-60.0, 60.0), (-20.0, 20.0))
+    _, (_, dx, zc, zh), i0 = grid_size(sea, 8.0, box, -70.0)
+    (_, nx, ny, nz), _, _ = grid_size(sea, 8.0, box, -70.0)
+    xs = np.linspace(-50.0, 50.0, 41)
+    cols = _sea_columns(xs * 0.98, xs * 0.2, -10.0 - 0.6 * np.abs(xs), box, dx, (nx, ny, nz), (zc, zh, i0), 3.0)
+    arr = kinematics_grid(sea, 8.0, box, -70.0, columns=cols, single=single)
+    m = 500
+    X = np.column_stack((rng.uniform(-80, 80, m), rng.uniform(-30, 30, m), np.zeros(m)))
+    zs = rng.uniform(-75.0, 0.0, m)
+    zs[::50] = np.nan
+    for t in (0.0, 3.3, 8.5):
+        out = np.full((m, 6), 9.0)
+        grid_points(arr, X, zs, t, out)
+        want = np.array([(0.0,) * 6 if np.isnan(z) else grid_point(arr, x, y, z, t) for (x, y, _), z in zip(X, zs)])
+        assert np.all(out[np.isnan(zs)] == 0.0) and np.all(out[zs < -70.0] == 0.0)
+        assert np.max(np.abs(out - want)) <= 1e-14 * np.max(np.abs(want))
 
 
 def test_grid_interpolation_error_is_within_its_bound():
@@ -685,6 +718,30 @@ def test_the_surface_is_looked_up_only_above_the_lowest_trough_of_the_grids_wind
             out.append(np.concatenate((F.ravel(), M.ravel(), ten)))
         np.testing.assert_array_equal(out[0], out[1])
         assert np.any(out[2] != out[0]) == changes
+
+
+def test_the_kernels_plain_sea_path_gives_the_general_paths_loads(monkeypatch):
+    """An irregular sea alone with a uniform current takes the kernel's short path to the water over the nodes
+    (no call per node); the same water given as a current profile (two depths, the same speed) takes the
+    general one. The OC3 storm's lines, raised until the fairleads are 0.5 m above the still water (out of
+    the water in the troughs, wet above z = 0 under the crests), moving, in a 0.7 m/s current: the same forces,
+    masses and tensions to round-off (the current interpolated: 1e-12 of the largest force)."""
+    model, _, X0 = _oc3_storm(monkeypatch)
+    X = X0 + [0.0, 0.0, 70.5]
+    model.prepare_sea(60.0, X)
+    V = np.random.default_rng(6).normal(0.0, 0.3, X.shape)
+    out = []
+    for depths, speeds in (([0.0], [0.7]), ([0.0, 400.0], [0.7, 0.7])):
+        env = model.env.copy()
+        env[K.E_CHEAD] = 0.4
+        F, M, ten = np.zeros_like(X), np.zeros((X.shape[0], 3, 3)), np.zeros(model.network.n_elements)
+        for t in np.linspace(0.0, 59.0, 60):
+            K.loads(X, V, t, *model.element_args(), model.fidx, env, np.array(depths), np.array(speeds), True,
+                    model.sea, F, M, ten, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
+            out.append(np.concatenate((F.ravel(), M.ravel(), ten)))
+    out = np.array(out).reshape(2, 60, -1)
+    assert np.max(np.abs(out[0] - out[1])) < 1e-12 * np.max(np.abs(out))
+    assert np.max(np.abs(out[0, :, :X.size])) > 0
 
 
 def test_a_steps_water_kinematics_held_over_its_newton_iterations_err_by_far_less_than_the_grid(monkeypatch):

@@ -68,7 +68,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..seastate import GRID_HEADER, S_ETAMAX, S_MODE, S_STRETCH, grid_eta, grid_point
+from ..seastate import GRID_HEADER, S_ETAMAX, S_MODE, S_STRETCH, grid_eta, grid_point, grid_points
 from ..waves import airy_linear
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
@@ -134,8 +134,20 @@ def _fluid(x, t, env, cur_depth, cur_speed, with_waves, sea, u, acc):
 def _fluid_below(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
     """:func:`_fluid` at the point (x, y, z) with the surface ``eta`` [m] above it known (``wavy``: there are
     waves): the velocity and acceleration ``(u, v, w, ax, ay, az)`` [m/s], [m/s^2]."""
+    u0, u1, u2, a0, a1, a2, zs = _water_local(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta)
+    if not math.isnan(zs):
+        k0, k1, k2, k3, k4, k5 = grid_point(sea, x, y, zs, t)
+        u0, u1, u2, a0, a1, a2 = u0 + k0, u1 + k1, u2 + k2, a0 + k3, a1 + k4, a2 + k5
+    return u0, u1, u2, a0, a1, a2
+
+
+@njit(cache=True)
+def _water_local(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
+    """:func:`_fluid_below` but for the irregular sea's grid: the current's and the regular wave's velocity and
+    acceleration, and the linear-theory depth at which to look the grid up (NaN: no look-up, the point above
+    the surface or no irregular sea): ``(u, v, w, ax, ay, az, zs)``."""
     if z > eta:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, math.nan
     if cur_depth.size == 1:
         speed = cur_speed[0]
     else:
@@ -145,7 +157,7 @@ def _fluid_below(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
         u0 = speed * math.cos(env[E_CHEAD])
         u1 = speed * math.sin(env[E_CHEAD])
     if not wavy:
-        return u0, u1, u2, a0, a1, a2
+        return u0, u1, u2, a0, a1, a2, math.nan
     d = env[E_WDEPTH]
     if sea[S_STRETCH] > 0.0:
         zs = (z - eta) * d / (d + eta) if math.isfinite(d) else z - eta
@@ -156,10 +168,7 @@ def _fluid_below(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
         k0, k1, k2, k3, k4, k5 = airy_linear(x, y, zs, t, env[E_WH], env[E_WT], env[E_WK], d, env[E_WHEAD],
                                              env[E_WPHASE], env[E_G])
         u0, u1, u2, a0, a1, a2 = u0 + k0, u1 + k1, u2 + k2, a0 + k3, a1 + k4, a2 + k5
-    if sea[S_MODE] > 0.0:
-        k0, k1, k2, k3, k4, k5 = grid_point(sea, x, y, zs, t)
-        u0, u1, u2, a0, a1, a2 = u0 + k0, u1 + k1, u2 + k2, a0 + k3, a1 + k4, a2 + k5
-    return u0, u1, u2, a0, a1, a2
+    return u0, u1, u2, a0, a1, a2, zs if sea[S_MODE] > 0.0 else math.nan
 
 
 @njit(cache=True)
@@ -625,10 +634,32 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     below = -math.inf
     if wavy and env[E_WH] <= 0.0 and sea[S_STRETCH] <= 0.0:
         below = -sea[S_ETAMAX]
-    for k in range(water.shape[0] if fresh else 0):
-        water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy and X[k, 2] >= below else 0.0
-        water[k, 1], water[k, 2], water[k, 3], water[k, 4], water[k, 5], water[k, 6] = _fluid_below(
-            X[k, 0], X[k, 1], X[k, 2], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0])
+    if fresh and water.shape[0] > 0:
+        # the current's and a regular wave's part node by node, then the irregular sea's grid at all nodes at once
+        nw = water.shape[0]
+        zs = np.empty(nw)
+        # an irregular sea alone (no regular wave, no stretching) and a uniform current: _water_local's few lines
+        # here (its call, with its arrays, cost as much as the grid's look-up)
+        plain = wavy and env[E_WH] <= 0.0 and sea[S_STRETCH] <= 0.0 and cur_depth.size == 1
+        cu, cv = cur_speed[0] * math.cos(env[E_CHEAD]), cur_speed[0] * math.sin(env[E_CHEAD])
+        for k in range(nw):
+            water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy and X[k, 2] >= below else 0.0
+            if not plain:
+                water[k, 1], water[k, 2], water[k, 3], water[k, 4], water[k, 5], water[k, 6], zs[k] = _water_local(
+                    X[k, 0], X[k, 1], X[k, 2], t, env, cur_depth, cur_speed, wavy, sea, water[k, 0])
+            elif X[k, 2] > water[k, 0]:  # out of the water
+                water[k, 1] = water[k, 2] = water[k, 3] = water[k, 4] = water[k, 5] = water[k, 6] = 0.0
+                zs[k] = math.nan
+            else:
+                water[k, 1], water[k, 2] = cu, cv
+                water[k, 3] = water[k, 4] = water[k, 5] = water[k, 6] = 0.0
+                zs[k] = max(min(X[k, 2], 0.0), -env[E_WDEPTH])
+        if wavy and sea[S_MODE] > 0.0:
+            kin = np.empty((nw, 6))
+            grid_points(sea, X, zs, t, kin)
+            for k in range(nw):
+                for r in range(6):
+                    water[k, 1 + r] += kin[k, r]
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
