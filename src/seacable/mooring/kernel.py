@@ -197,6 +197,37 @@ def _add_block(band, bw, fi, fj, coef, blk):
 
 
 @njit(cache=True)
+def _add_block_sym(band, bw, i, j, sign, k00, k01, k02, k11, k12, k22):
+    """``sign`` times the symmetric 3 x 3 block (k00 k01 k02 / . k11 k12 / . . k22) added to the band at the
+    rows of free node ``i`` and the columns of free node ``j``."""
+    r = 3 * i
+    o = bw + 3 * (j - i)
+    band[r, o] += sign * k00
+    band[r, o + 1] += sign * k01
+    band[r, o + 2] += sign * k02
+    band[r + 1, o - 1] += sign * k01
+    band[r + 1, o] += sign * k11
+    band[r + 1, o + 1] += sign * k12
+    band[r + 2, o - 2] += sign * k02
+    band[r + 2, o - 1] += sign * k12
+    band[r + 2, o] += sign * k22
+
+
+@njit(cache=True)
+def _add_pair(band, bw, fa, fb, k00, k01, k02, k11, k12, k22):
+    """An element's tangent [[K, -K], [-K, K]] (K symmetric, its upper entries given) added to the band at the
+    rows of its free nodes ``fa`` and ``fb`` (-1: not free)."""
+    if fa >= 0:
+        _add_block_sym(band, bw, fa, fa, 1.0, k00, k01, k02, k11, k12, k22)
+        if fb >= 0:
+            _add_block_sym(band, bw, fa, fb, -1.0, k00, k01, k02, k11, k12, k22)
+    if fb >= 0:
+        _add_block_sym(band, bw, fb, fb, 1.0, k00, k01, k02, k11, k12, k22)
+        if fa >= 0:
+            _add_block_sym(band, bw, fb, fa, -1.0, k00, k01, k02, k11, k12, k22)
+
+
+@njit(cache=True)
 def _drag_tangent(un, cd, out, coef):
     """out += coef * cd * d(|u| u)/du restricted to the subspace of ``un`` (out is 3x3)."""
     mag = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
@@ -620,9 +651,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     mats = np.zeros((3, 3, 3))
     eye, blk, hb = mats[0], mats[1], mats[2]
     eye[0, 0] = eye[1, 1] = eye[2, 2] = 1.0
-    vecs = np.zeros((10, 3))
-    tv, uw, aw, ur, ut, un, an, vt, nrm, origin = (vecs[0], vecs[1], vecs[2], vecs[3], vecs[4], vecs[5], vecs[6],
-                                                   vecs[7], vecs[8], vecs[9])
+    vecs = np.zeros((6, 3))
+    uw, aw, ur, vt, nrm, origin = vecs[0], vecs[1], vecs[2], vecs[3], vecs[4], vecs[5]
     # still water and a current uniform over depth: the same water velocity at every immersed point
     uniform = not wavy and cur_depth.size == 1
     if uniform:
@@ -666,9 +696,9 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         d0, d1, d2 = X[b, 0] - X[a, 0], X[b, 1] - X[a, 1], X[b, 2] - X[a, 2]
         l = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
         if l > 0.0:
-            tv[0], tv[1], tv[2] = d0 / l, d1 / l, d2 / l
+            t0, t1, t2 = d0 / l, d1 / l, d2 / l  # the unit tangent, in scalars (see the half elements below)
         else:
-            tv[0] = tv[1] = tv[2] = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
+            t0 = t1 = t2 = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
         L = L0[e]
         eps = l / L - 1.0
         # tension-only law rounded over |eps| < sband (C1, so that Newton does not cycle between slack and
@@ -695,7 +725,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 tel, kel = tb / sband * psi, tb / sband * dpsi
         if (dpsi > 0.0 or sdamp and l > 0.0) and not (nvis > 0 and (visco[e, V_EAD] > 0.0 and not vstatic
                                                                    or visco[e, V_WC] > 0.0)):
-            ldot = tv[0] * (V[b, 0] - V[a, 0]) + tv[1] * (V[b, 1] - V[a, 1]) + tv[2] * (V[b, 2] - V[a, 2])
+            ldot = t0 * (V[b, 0] - V[a, 0]) + t1 * (V[b, 1] - V[a, 1]) + t2 * (V[b, 2] - V[a, 2])
             # the damper: rounded with the spring (0 in a slack element), or with ``sdamp`` (MoorDyn's rule)
             # the whole ``cdamp ldot / L`` whatever the strain, so that a slack element resists its rate of
             # shortening (an axial force that may be compressive)
@@ -707,9 +737,12 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             if not sdamp:
                 T = max(T, 0.0)
             tension[e] = T
-            for r in range(3):
-                F[a, r] += T * tv[r]
-                F[b, r] -= T * tv[r]
+            F[a, 0] += T * t0
+            F[a, 1] += T * t1
+            F[a, 2] += T * t2
+            F[b, 0] -= T * t0
+            F[b, 1] -= T * t1
+            F[b, 2] -= T * t2
             if jac and T != 0.0:
                 # axial stiffness plus damper: the table's slope, or EA (the same operations as before tables)
                 if sdamp:
@@ -719,29 +752,26 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     kax = kel + cc * cdamp[e] * dpsi if tab else (EA[e] + cc * cdamp[e]) * dpsi
                     ka = (kax + cdamp[e] * ldot / L * ddpsi) / L
                 kg = T / l
-                fa, fb = fidx[a], fidx[b]
-                # the pair's tangent [[K_e, -K_e], [-K_e, K_e]] straight into the band (rows of the free nodes)
-                for r in range(3):
-                    for c in range(3):
-                        tt = tv[r] * tv[c]
-                        kv = ka * tt + kg * (eye[r, c] - tt)
-                        if fa >= 0:
-                            band[3 * fa + r, bw + c - r] += kv
-                            if fb >= 0:
-                                band[3 * fa + r, bw + 3 * (fb - fa) + c - r] -= kv
-                        if fb >= 0:
-                            band[3 * fb + r, bw + c - r] += kv
-                            if fa >= 0:
-                                band[3 * fb + r, bw + 3 * (fa - fb) + c - r] -= kv
+                # the pair's tangent [[K_e, -K_e], [-K_e, K_e]], K_e = ka t t^T + kg (I - t t^T), into the band
+                g = ka - kg
+                _add_pair(band, bw, fidx[a], fidx[b], kg + g * t0 * t0, g * t0 * t1, g * t0 * t2, kg + g * t1 * t1,
+                          g * t1 * t2, kg + g * t2 * t2)
         area = 0.25 * math.pi * dia[e] ** 2
         half = 0.5 * L
         zmid = 0.5 * (X[a, 2] + X[b, 2])
         # the water surface over the element's middle (0: still water; with waves the instantaneous eta)
         emid = _surface(0.5 * (X[a, 0] + X[b, 0]), 0.5 * (X[a, 1] + X[b, 1]), t, env, with_waves, sea) \
             if wavy and max(X[a, 2], X[b, 2]) >= below else 0.0
+        # the half elements' loads in scalars (work vectors would be arrays, which stores into F, M and the band
+        # could alias: each would be read again after every store)
+        qd = 0.5 * rho * dia[e] * half
+        ma = rho * area * half
+        mh = mpl[e] * half
+        mc, md = ma * can[e], ma * (cat[e] - can[e])  # added mass ma (C_an P_n + C_at P_t) = mc I + md t t^T
         for k in (a, b):
-            for r in range(3):
-                M[k, r, r] += mpl[e] * half
+            M[k, 0, 0] += mh
+            M[k, 1, 1] += mh
+            M[k, 2, 2] += mh
             # ``weight`` holds the weight in water; the part of this half element above the instantaneous
             # surface (straight from the node to the element's middle, the surface linear between) loses its
             # buoyancy
@@ -751,42 +781,52 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 F[k, 2] -= dry * buoy[e] * half
             if X[k, 2] > ek:
                 continue  # out of the water: no hydrodynamic load
-            if not uniform:
-                for r in range(3):
-                    uw[r] = water[k, 1 + r]
-                    aw[r] = water[k, 4 + r]
-            for r in range(3):
-                ur[r] = uw[r] - V[k, r]
-            ut_s = ur[0] * tv[0] + ur[1] * tv[1] + ur[2] * tv[2]
-            for r in range(3):
-                ut[r] = ut_s * tv[r]
-                un[r] = ur[r] - ut[r]
-            mn = math.sqrt(un[0] ** 2 + un[1] ** 2 + un[2] ** 2)
+            if uniform:
+                w0, w1, w2, b0, b1, b2 = uw[0], uw[1], uw[2], aw[0], aw[1], aw[2]
+            else:
+                w0, w1, w2, b0, b1, b2 = water[k, 1], water[k, 2], water[k, 3], water[k, 4], water[k, 5], water[k, 6]
+            r0, r1, r2 = w0 - V[k, 0], w1 - V[k, 1], w2 - V[k, 2]  # the water's velocity relative to the node
+            ut_s = r0 * t0 + r1 * t1 + r2 * t2
+            n0, n1, n2 = r0 - ut_s * t0, r1 - ut_s * t1, r2 - ut_s * t2  # its normal part
+            mn = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
             mt = abs(ut_s)
-            qd = 0.5 * rho * dia[e] * half
-            ma = rho * area * half
             if wavy:  # the water's acceleration (Froude-Krylov and added mass); none in still water
-                at_s = aw[0] * tv[0] + aw[1] * tv[1] + aw[2] * tv[2]
-                for r in range(3):
-                    an[r] = aw[r] - at_s * tv[r]
-                    F[k, r] += ma * ((1.0 + can[e]) * an[r] + (1.0 + cat[e]) * at_s * tv[r])
-            for r in range(3):
-                F[k, r] += qd * (cdn[e] * mn * un[r] + math.pi * cdt[e] * mt * ut[r])
-                for c in range(3):
-                    tt = tv[r] * tv[c]
-                    M[k, r, c] += ma * (can[e] * (eye[r, c] - tt) + cat[e] * tt)
+                at_s = b0 * t0 + b1 * t1 + b2 * t2
+                fn_, ft_ = ma * (1.0 + can[e]), ma * (1.0 + cat[e]) * at_s
+                F[k, 0] += fn_ * (b0 - at_s * t0) + ft_ * t0
+                F[k, 1] += fn_ * (b1 - at_s * t1) + ft_ * t1
+                F[k, 2] += fn_ * (b2 - at_s * t2) + ft_ * t2
+            dn, dt_ = qd * cdn[e] * mn, qd * math.pi * cdt[e] * mt * ut_s
+            F[k, 0] += dn * n0 + dt_ * t0
+            F[k, 1] += dn * n1 + dt_ * t1
+            F[k, 2] += dn * n2 + dt_ * t2
+            M[k, 0, 0] += mc + md * t0 * t0
+            M[k, 0, 1] += md * t0 * t1
+            M[k, 0, 2] += md * t0 * t2
+            M[k, 1, 0] += md * t1 * t0
+            M[k, 1, 1] += mc + md * t1 * t1
+            M[k, 1, 2] += md * t1 * t2
+            M[k, 2, 0] += md * t2 * t0
+            M[k, 2, 1] += md * t2 * t1
+            M[k, 2, 2] += mc + md * t2 * t2
             if jac and fidx[k] >= 0 and cc != 0.0:
                 # the drag's tangent -dF/dv = qd (C_dn (|u_n| P_n + u_n u_n^T / |u_n|) + 2 pi C_dt |u_t| t t^T)
-                # (d(|u| u)/du in the normal plane and along the tangent), straight into the node's block
+                # (d(|u| u)/du in the normal plane and along the tangent), straight into the node's block:
+                # cnm I + (ct2 - cnm) t t^T + cun u_n u_n^T
                 cn = cc * qd * cdn[e]
                 cnm = cn * mn
                 cun = cn / mn if mn > 0.0 else 0.0
-                ct2 = cc * qd * 2.0 * math.pi * cdt[e] * mt
+                ctt = cc * qd * 2.0 * math.pi * cdt[e] * mt - cnm
                 row0 = 3 * fidx[k]
-                for r in range(3):
-                    for c in range(3):
-                        tt = tv[r] * tv[c]
-                        band[row0 + r, bw + c - r] += (cnm * (eye[r, c] - tt) + cun * un[r] * un[c]) + ct2 * tt
+                band[row0, bw] += cnm + ctt * t0 * t0 + cun * n0 * n0
+                band[row0, bw + 1] += ctt * t0 * t1 + cun * n0 * n1
+                band[row0, bw + 2] += ctt * t0 * t2 + cun * n0 * n2
+                band[row0 + 1, bw - 1] += ctt * t1 * t0 + cun * n1 * n0
+                band[row0 + 1, bw] += cnm + ctt * t1 * t1 + cun * n1 * n1
+                band[row0 + 1, bw + 1] += ctt * t1 * t2 + cun * n1 * n2
+                band[row0 + 2, bw - 2] += ctt * t2 * t0 + cun * n2 * n0
+                band[row0 + 2, bw - 1] += ctt * t2 * t1 + cun * n2 * n1
+                band[row0 + 2, bw] += cnm + ctt * t2 * t2 + cun * n2 * n2
     if nvis > 0:
         viscoelastic_loads(X, V, elements, L0, EA, cdamp, visco, env[E_VDT], fidx, F, tension, band, bw, cc, mpl,
                            env[E_G])
