@@ -1,6 +1,7 @@
 """One closed form per physics term of the mooring model, each with a tolerance far below the term.
 
-Issue 17 (tests that catch wrong physics): the mooring model's added mass, its Morison drag magnitude
+Issue 17 (tests that catch wrong physics): the mooring model's added mass, the force of the water's acceleration
+(Froude-Krylov and added mass, normal and tangential), its Morison drag magnitude
 (without the peer data), the direction of a current, and the direction of a platform's yaw and pitch,
 each against a value derived by hand, not by the model's own code.
 
@@ -90,6 +91,37 @@ def test_morison_drag_of_a_line_across_a_current_is_half_rho_cd_d_u2(heading, ax
     else:
         assert abs(total[1]) < 1e-6 * 0.5 * RHO * cd * D * u**2 * length
         assert np.max(np.abs(st.position[:, 1])) < 1e-9
+
+
+@pytest.mark.parametrize(("along", "can", "cat"), [((0.0, 1.0, 0.0), 1.0, 0.3), ((1.0, 0.0, 0.0), 1.0, 0.3),
+                                                 ((0.0, 1.0, 0.0), 0.0, 0.0)])
+def test_the_waters_acceleration_pushes_a_line_by_rho_a_one_plus_ca(along, can, cat):
+    """A horizontal line 10 m deep at rest in a regular deep-water wave (H = 2 m, T = 8 s, towards +x) at the
+    instant its horizontal acceleration peaks at x = 0 (velocity and vertical acceleration zero there): each node
+    inside the line gets the Froude-Krylov and added-mass force of its two half elements, rho A L/n (1 + C_a)
+    a_x(node) (L/n an element's length), with C_an
+    for a line across the wave (along y) and C_at along it (along x; a_x is then tangential), a_x from Airy
+    theory at the node. No drag (C_d = 0). 1e-9 relative (round-off). A wrong factor (C_a for 1 + C_a, or the
+    normal coefficient on the tangent) is off by a third or more."""
+    from seacable.waves import airy_kinematics_array
+
+    H, T, n, length = 2.0, 8.0, 4, 12.0
+    lt = sc.LineType(diameter=D, mass_per_length=30.0, weight_in_water=10.0, axial_stiffness=1e9, drag_normal=0.0,
+                     drag_tangential=0.0, added_mass_normal=can, added_mass_tangential=cat)
+    a = np.array([0.0, 0.0, -10.0]) - 0.5 * length * np.array(along)
+    net = network_from_line(sc.Line.single(lt, length), tuple(a), tuple(a + length * np.array(along)),
+                            water_density=RHO, gravity=G, n_elements=n)
+    model = MooringModel(net, Water(depth=None, density=RHO, gravity=G, wave_height=H, wave_period=T))
+    X = net.position
+    t = -T / 4  # theta = k x - w t = pi / 2 at x = 0: u = 0, a_x = a w^2 at its peak, a_z = 0
+    F, _, _, _ = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), t=t, waves=True)
+    ax = np.array([airy_kinematics_array(x, y, z, t, height=H, period=T, depth=None, gravity=G).acceleration[0]
+                   for x, y, z in X])
+    w = 2 * math.pi / T
+    assert ax[n // 2] == pytest.approx(H / 2 * w**2 * math.exp(-10.0 * w**2 / G), rel=1e-12)  # the peak, 10 m down
+    # the inner nodes (two half elements, length / n; the ends also hold the tension, along x for the second line)
+    ca = can if along[1] else cat
+    np.testing.assert_allclose(F[1:-1, 0], RHO * AREA * length / n * (1 + ca) * ax[1:-1], rtol=1e-9)
 
 
 def test_a_current_towards_plus_y_in_a_case_pushes_the_line_to_plus_y():

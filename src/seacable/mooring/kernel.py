@@ -1124,22 +1124,33 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
     is small (``c0`` the mass coefficient of the Newton matrix, ``1 / (beta dt^2)`` for Newmark,
     ``(1 - alpha_m) / ((1 - alpha_f) beta dt^2)`` for the generalised alpha).
     """
+    return _residual_tolerance(F, M, A, fidx, np.empty(0), tol, weight, tension, X, EA, bedc, env, c0)[1]
+
+
+@njit(cache=True)
+def _residual_tolerance(F, M, A, fidx, R, tol, weight, tension, X, EA, bedc, env, c0):
+    """:func:`_residual` (into ``R`` unless it is empty) and :func:`_force_tolerance` in one pass over the nodes:
+    ``(max |R|, the tolerance [N])``."""
+    res = 0.0
     s = 0.0
     total = 0.0
     big = 0.0
+    keep = R.size > 0
     kb = env[E_KBOT]
     depth = env[E_DEPTH] if math.isfinite(env[E_DEPTH]) else 0.0
     for i in range(weight.size):
         total += abs(weight[i])
-        if fidx[i] < 0:
+        f = fidx[i]
+        if f < 0:
             continue
         xm = max(abs(X[i, 0]), abs(X[i, 1]), abs(X[i, 2]))
         for r in range(3):
-            s = max(s, abs(F[i, r]))
-            ma = 0.0
-            for c in range(3):
-                ma += M[i, r, c] * A[i, c]
-            s = max(s, abs(ma))
+            ma = M[i, r, 0] * A[i, 0] + M[i, r, 1] * A[i, 1] + M[i, r, 2] * A[i, 2]
+            v = ma - F[i, r]
+            if keep:
+                R[3 * f + r] = v
+            res = max(res, abs(v))
+            s = max(s, abs(F[i, r]), abs(ma))
             big = max(big, M[i, r, r] * c0 * xm)
         big = max(big, kb * bedc[i] * (xm + depth))
     s = max(s, total)
@@ -1148,7 +1159,7 @@ def _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, c0):
         big = max(big, EA[e])
     if s <= 0.0:
         s = 1.0
-    return tol * s + 1024.0 * 2.220446049250313e-16 * big
+    return res, tol * s + 1024.0 * 2.220446049250313e-16 * big
 
 
 @njit(cache=True)
@@ -1250,9 +1261,9 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
                         cur_depth, cur_speed, with_waves, sea, F, M, tension, mat, bw, cm, c1, water, fresh)
             if galpha:
                 res = _residual_alpha(F, M, A, G, wm, wg, fidx, R)
+                scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm)
             else:
-                res = _residual(F, M, A, fidx, R)
-            scale = _force_tolerance(tol, weight, tension, F, M, A, X, fidx, EA, bedc, env, cm)
+                res, scale = _residual_tolerance(F, M, A, fidx, R, tol, weight, tension, X, EA, bedc, env, cm)
             stats[0] += 1
             if res <= scale and it > 0:
                 ok = True
