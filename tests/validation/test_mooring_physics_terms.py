@@ -93,6 +93,26 @@ def test_morison_drag_of_a_line_across_a_current_is_half_rho_cd_d_u2(heading, ax
         assert np.max(np.abs(st.position[:, 1])) < 1e-9
 
 
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_tangential_drag_of_a_line_along_a_current_is_half_rho_pi_cdt_d_u2(sign):
+    """A taut weightless line along x under 1 MN in a uniform 1.5 m/s current along it (+x, or -x): the
+    supports hold the skin friction of the wetted perimeter, 1/2 rho pi C_dt d U^2 L = 1/2 1025 pi 0.4 0.1
+    2.25 100 = 14 491 N, the way the current flows (MoorDyn's tangential drag), and nothing across (the normal
+    drag vanishes). 1e-8 relative: the static solve leaves 1e-12 of the 1 MN tension at each node, 2e-5 N in
+    all (the line stays straight: no normal component)."""
+    ea, tension, length, n, u, cdt = 1e10, 1e6, 100.0, 20, 1.5, 0.4
+    lt = sc.LineType(diameter=D, mass_per_length=RHO * AREA, weight_in_water=0.0, axial_stiffness=ea,
+                     drag_normal=1.2, drag_tangential=cdt)
+    net, _ = _taut_line(lt, length, n, tension, ea)
+    water = Water(depth=None, density=RHO, gravity=G, current_speeds=(u,), current_heading=0.0 if sign > 0 else math.pi)
+    st = static_equilibrium(MooringModel(net, water), tol=1e-12)
+    total = st.support[0] + st.support[-1]
+    expected = 0.5 * RHO * math.pi * cdt * D * u**2 * length
+    assert expected == pytest.approx(14490.6, rel=1e-5)
+    assert total[0] == pytest.approx(sign * expected, rel=1e-8)
+    assert abs(total[1]) < 1e-8 * expected and abs(total[2]) < 1e-8 * expected
+
+
 @pytest.mark.parametrize(("along", "can", "cat"), [((0.0, 1.0, 0.0), 1.0, 0.3), ((1.0, 0.0, 0.0), 1.0, 0.3),
                                                  ((0.0, 1.0, 0.0), 0.0, 0.0)])
 def test_the_waters_acceleration_pushes_a_line_by_rho_a_one_plus_ca(along, can, cat):

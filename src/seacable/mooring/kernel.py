@@ -902,13 +902,18 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     for r in range(3):
                         F[i, r] -= fr * vt[r]
                 if jac and fidx[i] >= 0:
+                    # -dfn/dx = dk n^T (pen = -n . x + ...), -dfn/dv = cb d_n ramp n^T; the friction -mu fn v_t / s
+                    # follows fn (its row: mu v_t / s times fn's derivatives, negated) and v_t
                     dk = kb * bedc[i] * dq - cb * bedc[i] * vn * dramp
+                    dn = dk + cc * cb * bedc[i] * ramp
+                    mus = mu / s if fr > 0.0 else 0.0
                     for r in range(3):
                         for c in range(3):
                             nn = nrm[r] * nrm[c]
-                            blk[r, c] = dk * nn + cc * cb * bedc[i] * ramp * nn
+                            blk[r, c] = dn * nn
                             if fr > 0.0:
-                                blk[r, c] += cc * fr * ((eye[r, c] - nn) - vt[r] * vt[c] / (s * s))
+                                blk[r, c] += cc * fr * ((eye[r, c] - nn) - vt[r] * vt[c] / (s * s)) \
+                                    - mus * vt[r] * dn * nrm[c]
                     _add_block(band, bw, fidx[i], fidx[i], 1.0, blk)
         if jac and fidx[i] >= 0 and cm != 0.0:
             _add_block(band, bw, fidx[i], fidx[i], cm, M[i])

@@ -1,0 +1,100 @@
+"""The mooring kernel's Newton matrix: the derivatives of its forces, against central differences.
+
+:func:`seacable.mooring.kernel.loads` adds ``cm M + cc C + K`` to the band, with ``K = -dF/dx`` and
+``C = -dF/dv`` of the forces it returns. A line in a current lying partly on the seabed (the contact spring
+in its linear range, its damper ramping, Coulomb friction regularised), slack and taut elements, moving
+nodes: each block of K and C against central differences of F (steps 1e-7 m, 1e-7 m/s; their error is
+round-off, 1e-16 F / 1e-7, about 1e-3 in these units).
+
+The Newton matrix leaves out on purpose the change of the drag and of the axial damper with the elements'
+direction (``d(drag)/dx`` through the tangent, at most the drag over an element's length, about 30 N/m here;
+the damper's rate ``t . dv`` turning with t, at most ``c |dv| / (L l)``, a few 1e3 N/m with these random
+velocities, computed below), against stiffnesses of 1e5 to 1e7 N/m: Newton converges as fast without them.
+K is compared to 1e4 N/m, C (nothing left out) to its round-off, 1e-2 N s/m. A dropped or wrong term of
+either (the drag tangent's u_n u_n^T part, about 1e3 N s/m; the geometric stiffness T / l, 1e5 N/m; the
+friction's change with the normal force, mu k_b d_n, 3e6 N/m; a block's sign) is far above those.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import seacable as sc
+from seacable.mooring import kernel as K
+from seacable.mooring.network import network_from_line
+from seacable.mooring.solver import MooringModel, Water, static_equilibrium
+
+CHAIN = sc.LineType(diameter=0.09, mass_per_length=77.7, weight_in_water=698.0, axial_stiffness=3.84e8,
+                    drag_normal=1.6, drag_tangential=0.1, added_mass_normal=1.0, added_mass_tangential=0.5)
+
+
+def _state():
+    net = network_from_line(sc.Line.single(CHAIN, 400.0), (0, 0, -120.0), (330.0, 0, -20.0), water_density=1025.0,
+                            gravity=9.80665, n_elements=20, damping_ratio=0.5)
+    model = MooringModel(net, Water(depth=120.0, friction=0.6, current_depths=(0.0,), current_speeds=(0.8,),
+                                    current_heading=0.5, rayleigh_mass=0.05))
+    X = static_equilibrium(model).position.copy()
+    rng = np.random.default_rng(2)
+    grounded = X[:, 2] < -119.99
+    assert 3 <= grounded.sum() <= 15  # a touchdown in the middle of the line
+    X[~grounded] += rng.normal(0.0, 0.05, (int((~grounded).sum()), 3))
+    X[grounded, :2] += rng.normal(0.0, 0.05, (int(grounded.sum()), 2))  # pressed in as at rest: linear spring
+    V = rng.normal(0.0, 0.15, X.shape)
+    return model, X, V
+
+
+def _forces(model, X, V, band=None, cc=0.0):
+    n = X.shape[0]
+    F, M, ten = np.zeros((n, 3)), np.zeros((n, 3, 3)), np.zeros(model.network.n_elements)
+    mat = np.zeros((0, 2 * model.bw + 1)) if band is None else band
+    K.loads(X, V, 0.0, *model.element_args(), model.fidx, model.env, model.cur_depth, model.cur_speed, False,
+            model.sea, F, M, ten, mat, model.bw, 0.0, cc)
+    return F, ten
+
+
+def _dense(model, band):
+    """The band (rows of the free nodes' coordinates) as a dense matrix."""
+    nd, bw = band.shape[0], model.bw
+    out = np.zeros((nd, nd))
+    for r in range(nd):
+        for c in range(max(0, r - bw), min(nd, r + bw + 1)):
+            out[r, c] = band[r, bw + c - r]
+    return out
+
+
+@pytest.mark.parametrize(("which", "atol"), [("K", 1e4), ("C", 1e-2)])
+def test_the_newton_matrix_is_the_derivative_of_the_forces(which, atol):
+    model, X, V = _state()
+    nd = 3 * model.nfree
+    band = np.zeros((nd, 2 * model.bw + 1))
+    _, ten = _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
+    if which == "C":  # C alone: the matrix with cc = 1 less the one with cc = 0
+        k_only = np.zeros_like(band)
+        _forces(model, X, V, k_only, cc=0.0)
+        band = band - k_only
+    assert np.any(ten == 0.0) and np.any(ten > 1e4)  # slack elements on the seabed, taut ones above
+    net = model.network
+    ia, ib = net.elements[:, 0], net.elements[:, 1]
+    chord = np.linalg.norm(X[ib] - X[ia], axis=1)
+    turning = net.axial_damping * np.linalg.norm(V[ib] - V[ia], axis=1) / (net.length * chord)
+    assert turning.max() < 0.5 * atol or which == "C"  # the damper's turning, left out of K, under the tolerance
+    got = _dense(model, band)
+    free = np.flatnonzero(model.fidx >= 0)
+    want = np.zeros((nd, nd))
+    h = 1e-7
+    for i in free:
+        for r in range(3):
+            Xp, Xm, Vp, Vm = X.copy(), X.copy(), V.copy(), V.copy()
+            if which == "K":
+                Xp[i, r] += h
+                Xm[i, r] -= h
+            else:
+                Vp[i, r] += h
+                Vm[i, r] -= h
+            dF = (_forces(model, Xp, Vp)[0] - _forces(model, Xm, Vm)[0]) / (2 * h)
+            for j in free:  # the band's rows and columns: the free nodes in their order for a small bandwidth
+                want[3 * model.fidx[j]:3 * model.fidx[j] + 3, 3 * model.fidx[i] + r] = -dF[j]
+    scale = np.abs(want).max()
+    assert scale > (1e6 if which == "K" else 1e5)
+    np.testing.assert_allclose(got, want, rtol=0, atol=atol)
