@@ -812,7 +812,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             if jac and fidx[k] >= 0 and cc != 0.0:
                 # the drag's tangent -dF/dv = qd (C_dn (|u_n| P_n + u_n u_n^T / |u_n|) + 2 pi C_dt |u_t| t t^T)
                 # (d(|u| u)/du in the normal plane and along the tangent), straight into the node's block:
-                # cnm I + (ct2 - cnm) t t^T + cun u_n u_n^T
+                # cnm I + ctt t t^T + cun u_n u_n^T, ctt the tangential part 2 pi C_dt |u_t| less the normal one
                 cn = cc * qd * cdn[e]
                 cnm = cn * mn
                 cun = cn / mn if mn > 0.0 else 0.0
