@@ -395,26 +395,36 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
                        max_step: float | None = None) -> StaticState:
     """Static equilibrium by damped Newton from ``initial`` positions (default the network's).
 
-    Raises :class:`~seacable.errors.ConvergenceError` with the residual when it does not converge.
+    The Newton steps move a node by at most ``max_step`` [m] (default half the mean element length). A solve
+    that does not converge is started again from ``initial`` with the limit cut to a quarter, twice: a slack
+    chain lying on the seabed can wander for hundreds of steps at the full limit (its grounded nodes have no
+    stiffness across, and each step throws some through the seabed) and converge in a few tens at a smaller
+    one. Raises :class:`~seacable.errors.ConvergenceError` with the residual when none converges.
     """
     net = model.network
-    X = np.array(net.position if initial is None else initial, float)
+    X0 = np.array(net.position if initial is None else initial, float)
     n = net.n_nodes
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
     stats = np.zeros(3)
     step = max_step if max_step is not None else (0.5 * float(np.mean(net.length)) if net.n_elements else 1.0)
-    ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env, model.cur_depth,
-                        model.cur_speed, tol, max_iter, step, F, M, tension, stats)
+    spent = 0
+    for cut in (1.0, 0.25, 0.0625):
+        X = X0.copy()
+        ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env,
+                            model.cur_depth, model.cur_speed, tol, max_iter, step * cut, F, M, tension, stats)
+        spent += int(stats[0])
+        if ok:
+            break
     if not ok:
         raise ConvergenceError(
-            f"the static equilibrium of the mooring did not converge in {max_iter} iterations: force residual "
-            f"{stats[1]:.3g} N against a tolerance of {stats[2]:.3g} N. Suggested fix: check that the "
-            "line is long enough to reach its fairlead and that buoys cannot lift it out of the water.",
-            iterations=int(stats[0]), residual=float(stats[1]))
+            f"the static equilibrium of the mooring did not converge in {max_iter} iterations, nor with the step "
+            f"limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
+            f"tolerance of {stats[2]:.3g} N. Suggested fix: check that the line is long enough to reach its "
+            "fairlead and that buoys cannot lift it out of the water.", iterations=spent, residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     _warn_sinking(model, X)
-    return StaticState(X, tension, support, int(stats[0]), float(stats[1]))
+    return StaticState(X, tension, support, spent, float(stats[1]))
 
 
 def _warn_sinking(model: MooringModel, X) -> None:
