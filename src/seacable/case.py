@@ -136,7 +136,10 @@ class TowedBody(Model):
 
 
 class TowedSteadyAnalysis(Model):
-    """Steady state of a cable towed in a uniform current (free end or towed body)."""
+    """Steady state of a cable towed in a uniform current (free end or towed body).
+
+    The line may be composite: its end A is the towed end, its segments and attachments (clumps, floats) run
+    from there up to the tow point (:func:`seacable.statics.towed.towed_line_steady`)."""
 
     type: Literal["towed_steady"] = "towed_steady"
     vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
@@ -511,7 +514,7 @@ class Case(Model):
                     a.anchor is None and not getattr(a, "free_end", False))):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
-        if isinstance(a, (TowedSteadyAnalysis, LayingTheoryAnalysis, VerticalModesAnalysis)):
+        if isinstance(a, (LayingTheoryAnalysis, VerticalModesAnalysis)):
             if len(self.line.segments) != 1 or self.line.attachments:
                 raise ValueError(f"analysis '{a.type}' takes a homogeneous line of one segment and no "
                                  f"attachments, got {len(self.line.segments)} segments and "

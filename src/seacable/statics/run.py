@@ -132,20 +132,19 @@ def run_pushover(case: Case):
 
 
 def run_towed_steady(case: Case):
-    from .towed import towed_cable_steady
+    from .towed import towed_line_steady
 
     a: TowedSteadyAnalysis = case.analysis
     env = case.environment
-    lt = case.line.segments[0].line_type
     cur = env.current
     speed = a.vessel_speed - cur.speed * math.cos(cur.heading)
     body = a.body
-    res = towed_cable_steady(case.line.length, lt.submerged_weight(env.water_density, env.gravity),
-                             lt.diameter, speed, lt.drag_normal, lt.drag_tangential,
-                             water_density=env.water_density, axial_stiffness=lt.axial_stiffness,
-                             body_weight=body.weight_in_water if body else 0.0,
-                             body_drag_area=body.drag_area if body else 0.0,
-                             tangential_drag=a.tangential_drag, n_points=a.n_nodes)
+    # the line's end A is the towed end: its segments and attachments from the body up to the tow point
+    res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
+                                    body_weight=body.weight_in_water if body else 0.0,
+                                    body_drag_area=body.drag_area if body else 0.0,
+                                    tangential_drag=a.tangential_drag, n_points=a.n_nodes)
+    at = [i for _, i in points]
     data = {
         "x": var("node", res.x, "m", "position relative to the tow point, positive astern"),
         "z": var("node", res.z, "m", "elevation relative to the tow point"),
@@ -154,10 +153,15 @@ def run_towed_steady(case: Case):
         "top_tension": var((), res.top_tension, "N", "tension at the tow point"),
         "layback": var((), res.layback, "m", "layback of the lower end"),
         "lower_end_depth": var((), res.depth_of_lower_end, "m", "depth of the lower end below the tow point"),
-        "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle"),
+        "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle of the lowest segment"),
         "relative_speed": var((), speed, "m s-1", "flow speed relative to the cable"),
+        "point_layback": var("point", res.x[at], "m",
+                             "layback of each segment joint and attachment above the lower end"),
+        "point_depth": var("point", -res.z[at], "m", "depth of each segment joint and attachment below the tow point"),
     }
-    coords = {"s": var("node", res.s, "m", "unstretched arc length from the lower end")}
+    coords = {"s": var("node", res.s, "m", "unstretched arc length from the lower end (a joint's twice)"),
+              "point_s": var("point", np.array([p for p, _ in points], float), "m",
+                             "arc length of each joint and attachment from the lower end")}
     return make_dataset(data, coords, analysis="towed_steady", case=case, references=(REF_000,),
                         settings={"tangential_drag": a.tangential_drag})
 

@@ -42,6 +42,7 @@ References
 
 from __future__ import annotations
 
+import itertools
 import warnings
 from dataclasses import dataclass
 from typing import Literal
@@ -52,7 +53,7 @@ from scipy.integrate import solve_ivp
 from .. import _validate as v
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 
-__all__ = ["TangentialDragForm", "TowedCableSteady", "critical_angle", "towed_cable_steady"]
+__all__ = ["TangentialDragForm", "TowedCableSteady", "critical_angle", "towed_cable_steady", "towed_line_steady"]
 
 TangentialDragForm = Literal["paper000", "common", "diameter"]
 """Form of the tangential drag per unstretched length.
@@ -169,6 +170,131 @@ class TowedCableSteady:
     critical_angle: float
 
 
+@dataclass(frozen=True)
+class _Piece:
+    """A stretch of uniform cable between two points where forces act: its length [m], weight in water w
+    [N/m], normal and tangential drag scales qn, qt [N/m], EA [N] (None: inextensible) and whether the drags
+    carry paper 000's stretch factor."""
+
+    length: float
+    w: float
+    qn: float
+    qt: float
+    ea: float | None
+    stretch_drag: bool
+
+
+def _piece(length, w, d, cdn, cdt, ea, u, rho, tangential_drag) -> _Piece:
+    perimeter = d if tangential_drag == "diameter" else np.pi * d
+    return _Piece(float(length), float(w), 0.5 * rho * cdn * d * u * u, 0.5 * rho * cdt * perimeter * u * u, ea,
+                  tangential_drag == "paper000" and ea is not None)
+
+
+def _steady(pieces, joints, tail, s_out, rtol, what):
+    """Integrate the steady equations piece after piece from the lower end (module docstring).
+
+    ``pieces`` from the lower end up; ``joints[k]`` the (drag astern, net weight down) [N] of the point between
+    piece k and k + 1, ``tail`` that of the lower end's body ((0, 0): a free end). The tension's horizontal and
+    vertical parts step by a joint's forces (its force balance). ``s_out``: the unstretched arc lengths to
+    report (from the lower end, increasing, from 0 to the whole length); a joint's s is reported twice, below
+    and above it. ``what``: the
+    lower end's body, for the slack message. Returns a :class:`TowedCableSteady` (``critical_angle`` of the
+    lowest piece) and the indices of the points just above each joint in its arrays."""
+    total = sum(p.length for p in pieces)
+    scale = max(sum(abs(p.w) * p.length for p in pieces), 1e-300)
+    t_small = 1e-9 * scale
+    h, vv = tail
+    x0 = z0 = s0 = 0.0
+    ss, ys, above = [], [], []
+    phi_c = float(np.arccos(np.clip(_critical_cos(pieces[0].w, pieces[0].qn), 0.0, 1.0)))
+    nfev = 0
+    for k, p in enumerate(pieces):
+        t0 = float(np.hypot(h, vv))
+        free_end = k == 0 and t0 <= 1e-12 * scale
+
+        def strain(t, p=p):
+            return 0.0 if p.ea is None else t / p.ea
+
+        def factor(t, p=p):
+            return np.sqrt(1.0 + strain(t)) if p.stretch_drag else 1.0
+
+        def g_normal(phi, t, p=p):  # w cos(phi) - D_n  [N/m]
+            sp = np.sin(phi)
+            return p.w * np.cos(phi) - p.qn * sp * abs(sp) * factor(t)
+
+        def dtds(phi, t, p=p):
+            cp = np.cos(phi)
+            return p.w * np.sin(phi) + p.qt * cp * abs(cp) * factor(t)
+
+        if free_end:
+            t0, phi0 = 0.0, phi_c
+            # limit of dphi/ds = g/T as T -> 0 along the regular solution: with psi = phi - phi_c,
+            # T ~ a s, g ~ g_phi psi + g_T T, the regular solution psi = k s gives
+            # k = g_T / (1 - g_phi / a).
+            a = dtds(phi0, 0.0)
+            g_phi = -p.w * np.sin(phi0) - 2.0 * p.qn * np.sin(phi0) * np.cos(phi0)
+            g_t = -p.qn * np.sin(phi0) ** 2 * 0.5 / p.ea if p.stretch_drag else 0.0
+            k_lim = g_t / (1.0 - g_phi / a) if a > 0 else 0.0
+        elif t0 <= t_small:
+            raise NoSolutionError(
+                f"the cable tension vanishes at s = {s0:.6g} m (the point there cancels the load below it): no "
+                "taut steady shape exists. Suggested fix: make the points below heavier than their lift or buoyancy.")
+        else:
+            phi0 = float(np.arctan2(vv, h))
+            k_lim = 0.0
+
+        def rhs(_s, y, free_end=free_end, k_lim=k_lim, strain=strain, g_normal=g_normal, dtds=dtds):
+            t, phi = y[0], y[1]
+            one_e = 1.0 + strain(t)
+            dphi = k_lim if (free_end and t <= t_small) else g_normal(phi, t) / t
+            return [dtds(phi, t), dphi, -one_e * np.cos(phi), one_e * np.sin(phi)]
+
+        def slack_event(_s, y):  # tension falls to (almost) zero
+            return y[0] - t_small
+
+        slack_event.terminal = True
+        slack_event.direction = -1
+        s1 = s0 + p.length if k < len(pieces) - 1 else total
+        inner = s_out[(s_out > s0) & (s_out < s1)]
+        t_eval = np.concatenate(([s0], inner, [s1]))
+        sol = solve_ivp(rhs, (s0, s1), [t0, phi0, x0, z0], method="Radau", t_eval=t_eval, rtol=rtol,
+                        atol=[rtol * max(scale, t0, 1.0), rtol, rtol * total, rtol * total],
+                        events=None if free_end else slack_event)
+        nfev += sol.nfev
+        if sol.status == 1:
+            raise NoSolutionError(
+                f"the cable tension vanishes at s = {sol.t_events[0][0]:.6g} m above the towed body ({what}): no "
+                "taut steady shape exists. Suggested fix: make the body heavier than its lift, add drag, or tow "
+                "faster.")
+        if not sol.success:
+            raise ConvergenceError(
+                f"towed_cable_steady: the integrator failed ({sol.message}) after {nfev} evaluations. "
+                "Suggested fix: loosen rtol or check the inputs for extreme values.", iterations=int(nfev))
+        if not np.all(np.isfinite(sol.y)):
+            raise ConvergenceError("towed_cable_steady: the integration produced non-finite values. "
+                                   "Suggested fix: check the body forces and cable properties.",
+                                   iterations=int(nfev))
+        above.append(len(ss))
+        ss.extend(sol.t)
+        ys.extend(sol.y.T)
+        t1, phi1, x0, z0 = sol.y[:, -1]
+        s0 = s1
+        if k < len(joints):
+            h, vv = t1 * np.cos(phi1) + joints[k][0], t1 * np.sin(phi1) + joints[k][1]
+    y = np.array(ys)
+    tension, angle = y[:, 0], y[:, 1]
+    x = y[:, 2] - y[-1, 2]
+    z = y[:, 3] - y[-1, 3]
+    if np.any(z > 1e-9 * total):
+        warnings.warn(f"part of the towed cable lies up to {z.max():.3g} m above the tow point; the "
+                      "free surface is not modelled. Check the body weight and lift.",
+                      SeacableWarning, stacklevel=3)
+    res = TowedCableSteady(s=np.array(ss), x=x, z=z, tension=tension, angle=angle,
+                           top_tension=float(tension[-1]), top_angle=float(angle[-1]),
+                           layback=float(x[0]), depth_of_lower_end=float(-z[0]), critical_angle=phi_c)
+    return res, above[1:]
+
+
 def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, drag_tangential=0.0,
                        *, water_density=1025.0, axial_stiffness=None, body_weight=0.0,
                        body_drag_area=0.0, body_drag_force=0.0, body_lift=0.0,
@@ -264,82 +390,94 @@ def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, 
                              f"{np.shape(val)}. Suggested fix: loop over the cases.")
     v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
 
-    qn = 0.5 * rho * cdn * d * u * u                       # normal drag scale [N/m]
-    perimeter = d if tangential_drag == "diameter" else np.pi * d
-    qt = 0.5 * rho * cdt * perimeter * u * u               # tangential drag scale [N/m]
-    stretch_drag = tangential_drag == "paper000" and ea is not None
-
-    def strain(t):
-        return 0.0 if ea is None else t / ea
-
-    def drag_factor(t):
-        return np.sqrt(1.0 + strain(t)) if stretch_drag else 1.0
-
-    def g_normal(phi, t):  # w cos(phi) - D_n  [N/m]
-        sp = np.sin(phi)
-        return w * np.cos(phi) - qn * sp * abs(sp) * drag_factor(t)
-
-    def dtds(phi, t):
-        cp = np.cos(phi)
-        return w * np.sin(phi) + qt * cp * abs(cp) * drag_factor(t)
-
-    # lower-end conditions ------------------------------------------------------------------
+    piece = _piece(length, w, d, cdn, cdt, ea, u, rho, tangential_drag)
     body_drag = 0.5 * rho * cda * u * u + fdb
-    body_up = wb - lift                                    # net downward force on the body [N]
-    t0 = float(np.hypot(body_drag, body_up))
-    phi_c = float(np.arccos(np.clip(_critical_cos(w, qn), 0.0, 1.0)))
-    free_end = t0 <= 1e-12 * w * length
-    if free_end:
-        t0, phi0 = 0.0, phi_c
-        # limit of dphi/ds = g/T as T -> 0 along the regular solution: with psi = phi - phi_c,
-        # T ~ a s, g ~ g_phi psi + g_T T, the regular solution psi = k s gives
-        # k = g_T / (1 - g_phi / a).
-        a = dtds(phi0, 0.0)
-        g_phi = -w * np.sin(phi0) - 2.0 * qn * np.sin(phi0) * np.cos(phi0)
-        g_t = -qn * np.sin(phi0) ** 2 * 0.5 / ea if stretch_drag else 0.0
-        k_lim = g_t / (1.0 - g_phi / a) if a > 0 else 0.0
-    else:
-        phi0 = float(np.arctan2(body_up, body_drag))
-        k_lim = 0.0
-    t_small = 1e-9 * w * length
+    return _steady([piece], [], (body_drag, wb - lift), np.linspace(0.0, length, n_points), rtol,
+                   f"body weight {wb:.6g} N, lift {lift:.6g} N")[0]
 
-    def rhs(_s, y):
-        t, phi = y[0], y[1]
-        one_e = 1.0 + strain(t)
-        dphi = k_lim if (free_end and t <= t_small) else g_normal(phi, t) / t
-        return [dtds(phi, t), dphi, -one_e * np.cos(phi), one_e * np.sin(phi)]
 
-    def slack_event(_s, y):  # tension falls to (almost) zero above a towed body
-        return y[0] - t_small
+def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, body_weight=0.0, body_drag_area=0.0,
+                      body_drag_force=0.0, body_lift=0.0, tangential_drag: TangentialDragForm = "paper000",
+                      n_points=101, rtol=1e-10):
+    """Steady 2-D shape and tension of a composite towed cable (:func:`towed_cable_steady` segment by segment).
 
-    slack_event.terminal = True
-    slack_event.direction = -1
-    s_out = np.linspace(0.0, length, n_points)
-    sol = solve_ivp(rhs, (0.0, length), [t0, phi0, 0.0, 0.0], method="Radau", t_eval=s_out,
-                    rtol=rtol, atol=[rtol * max(w * length, t0, 1.0), rtol, rtol * length, rtol * length],
-                    events=None if free_end else slack_event)
-    if sol.status == 1:
-        raise NoSolutionError(
-            f"the cable tension vanishes at s = {sol.t_events[0][0]:.6g} m above the towed body (body "
-            f"weight {wb:.6g} N, lift {lift:.6g} N): no taut steady shape exists. Suggested fix: make "
-            "the body heavier than its lift, add drag, or tow faster.")
-    if not sol.success:
-        raise ConvergenceError(
-            f"towed_cable_steady: the integrator failed ({sol.message}) after {sol.nfev} evaluations. "
-            "Suggested fix: loosen rtol or check the inputs for extreme values.",
-            iterations=int(sol.nfev))
-    tension, angle = sol.y[0].copy(), sol.y[1].copy()
-    if not np.all(np.isfinite(sol.y)):
-        raise ConvergenceError("towed_cable_steady: the integration produced non-finite values. "
-                               "Suggested fix: check the body forces and cable properties.",
-                               iterations=int(sol.nfev))
-    x = sol.y[2] - sol.y[2][-1]
-    z = sol.y[3] - sol.y[3][-1]
-    if np.any(z > 1e-9 * length):
-        warnings.warn(f"part of the towed cable lies up to {z.max():.3g} m above the tow point; the "
-                      "free surface is not modelled. Check the body weight and lift.",
-                      SeacableWarning, stacklevel=2)
-    return TowedCableSteady(s=s_out, x=x, z=z, tension=tension, angle=angle,
-                            top_tension=float(tension[-1]), top_angle=float(angle[-1]),
-                            layback=float(x[0]), depth_of_lower_end=float(-z[0]),
-                            critical_angle=phi_c)
+    The line's end A is the lower (towed) end, end B the tow point: its segments (each line type's weight in
+    water, diameter, drag coefficients and EA) follow each other from the towed body up, and each attachment
+    (:class:`seacable.line.PointMass`: a clump, a depressor's weight, a float) acts at its arc length from the
+    lower end with its net weight in water and its drag ``1/2 rho C_D A U^2`` astern. At a point where forces
+    act the tension's horizontal and vertical parts step by them (its force balance); between, the steady
+    equations of the module docstring hold with that segment's properties. An attachment at the lower end adds
+    to the body; one at the tow point acts on the vessel, not on the cable.
+
+    Parameters
+    ----------
+    line : seacable.line.Line
+        The cable, end A at the towed end.
+    speed : float
+        Relative flow speed (vessel minus current along the tow). [m/s]
+    water_density, gravity : float
+        [kg/m^3], [m/s^2]
+    body_weight, body_drag_area, body_drag_force, body_lift
+        The body at the lower end, as in :func:`towed_cable_steady`. [N], [m^2], [N], [N]
+    tangential_drag : {"paper000", "common", "diameter"}
+        Form of the tangential drag, see :data:`TangentialDragForm`.
+    n_points : int
+        Equally spaced output points along the whole line (>= 2); each segment joint and attachment is
+        reported too, twice (below and above it). [-]
+    rtol : float
+        Relative tolerance of the integrator. [-]
+
+    Returns
+    -------
+    tuple
+        The :class:`TowedCableSteady` (arrays from the lower end to the tow point) and, for each point where
+        forces act above the lower end (joints and attachments, in order up the line), ``(s, index)``: its arc
+        length and the index of the array entry just above it.
+    """
+    from ..line import Line
+
+    if not isinstance(line, Line):
+        raise InputError(f"line must be a seacable.Line, got {type(line).__name__}. Suggested fix: build it "
+                         "with Line(segments=...) or Line.single(line_type, length).")
+    u = v.nonnegative("speed", speed, "m/s", "give the relative flow speed (vessel minus current)")
+    rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
+    g = v.positive("gravity", gravity, "m/s^2", "use 9.80665")
+    wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
+    cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
+    fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
+    lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
+    rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
+    n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
+    v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
+    total = float(line.length)
+    tol_s = 1e-9 * total
+    # the points where forces act: segment joints (none) and attachments, merged where they coincide
+    ends = np.cumsum([sg.length for sg in line.segments])
+    cuts = {}
+    for s in ends[:-1]:
+        cuts.setdefault(round(float(s) / tol_s), [float(s), 0.0, 0.0])
+    tail = [0.5 * rho * cda * u * u + fdb, wb - lift]
+    for att in line.attachments:
+        drag, down = 0.5 * rho * att.drag_area * u * u, att.net_weight(rho, g)
+        if att.s <= tol_s:
+            tail[0] += drag
+            tail[1] += down
+        elif att.s < total - tol_s:
+            c = cuts.setdefault(round(float(att.s) / tol_s), [float(att.s), 0.0, 0.0])
+            c[1] += drag
+            c[2] += down
+    joints = sorted(cuts.values())
+    bounds = [0.0] + [j[0] for j in joints] + [total]
+    pieces = []
+    for s0, s1 in itertools.pairwise(bounds):
+        k = min(int(np.searchsorted(ends, 0.5 * (s0 + s1))), len(ends) - 1)
+        lt = line.segments[k].line_type
+        pieces.append(_piece(s1 - s0, lt.submerged_weight(rho, g), lt.diameter, lt.drag_normal, lt.drag_tangential,
+                             lt.axial_stiffness, u, rho, tangential_drag))
+    if pieces[0].w <= 0.0 and tail[0] == 0.0 and tail[1] == 0.0:
+        raise InputError(f"the lowest segment of the towed line floats (weight in water {pieces[0].w:.6g} N/m) and "
+                         "has no body at its end: it has no steady shape below the tow point. Suggested fix: add a "
+                         "body (body_weight) or a heavier line type.")
+    res, above = _steady(pieces, [(j[1], j[2]) for j in joints], tuple(tail), np.linspace(0.0, total, n_points),
+                         rtol, f"body weight {wb:.6g} N, lift {lift:.6g} N")
+    return res, [(j[0], i) for j, i in zip(joints, above, strict=True)]
