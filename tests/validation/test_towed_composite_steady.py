@@ -98,6 +98,8 @@ def test_a_composite_line_in_a_towed_steady_case_reports_each_point():
     assert ds.point_s.values.tolist() == [200.0]
     assert float(ds.point_depth[0]) == pytest.approx(-res.z[points[0][1]], rel=1e-12)
     assert 0 < float(ds.point_depth[0]) < float(ds.lower_end_depth)
+    assert float(ds.top_angle) == pytest.approx(res.top_angle, rel=1e-12)
+    assert 0 < float(ds.top_angle) < np.pi / 2
 
 
 def test_bad_composite_tows_are_refused_clearly():

@@ -151,6 +151,7 @@ def run_towed_steady(case: Case):
         "tension": var("node", res.tension, "N", "effective tension"),
         "angle": var("node", np.degrees(res.angle), "degree", "cable angle to the horizontal"),
         "top_tension": var((), res.top_tension, "N", "tension at the tow point"),
+        "top_angle": var((), res.top_angle, "rad", "cable angle below the horizontal at the tow point"),
         "layback": var((), res.layback, "m", "layback of the lower end"),
         "lower_end_depth": var((), res.depth_of_lower_end, "m", "depth of the lower end below the tow point"),
         "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle of the lowest segment"),
