@@ -136,10 +136,11 @@ class TowedBody(Model):
 
 
 class TowedSteadyAnalysis(Model):
-    """Steady state of a cable towed in a uniform current (free end or towed body).
+    """Steady state of a cable towed in a current, uniform or varying with depth (free end or towed body).
 
     The line may be composite: its end A is the towed end, its segments and attachments (clumps, floats) run
-    from there up to the tow point (:func:`seacable.statics.towed.towed_line_steady`)."""
+    from there up to the tow point, at the surface (:func:`seacable.statics.towed.towed_line_steady`). The
+    current's part along the tow is taken (the steady tow is 2-D)."""
 
     type: Literal["towed_steady"] = "towed_steady"
     vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
@@ -540,9 +541,6 @@ class Case(Model):
                 raise ValueError("analysis 'towline_dynamic' needs the line's stiffness: an axial_stiffness (N) on "
                                  "the line type, or its breaking_load (N) with the analysis's elongation_at_break "
                                  "(paper 003: 16 t = 156906 N and 0.15).")
-        if isinstance(a, TowedSteadyAnalysis) and self.environment.current.depths is not None:
-            raise ValueError("analysis 'towed_steady' takes a uniform current, got a depth profile. "
-                             "Suggested fix: give 'current: {speed: ...}' or use a dynamic towed model.")
         return self
 
     def anchor_position(self) -> tuple[float, float]:

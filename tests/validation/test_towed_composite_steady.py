@@ -109,3 +109,57 @@ def test_bad_composite_tows_are_refused_clearly():
         towed_line_steady(line, U)
     with pytest.raises(InputError, match="line must be a seacable.Line"):
         towed_line_steady("cable", U)
+
+
+PROFILE = ((0.0, 100.0, 300.0), (2.0, 1.6, 1.0))  # relative flow [m/s] at depths below the tow point [m]
+
+
+def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_current():
+    """The composite tow in a relative flow falling from 2.0 m/s at the surface to 1.0 m/s at 300 m (each drag
+    at its depth; the lower end's depth found so that the top meets the tow point) against the mooring model's
+    statics in the same current profile: the top tension converges at second order (error ratios 3.5-4.7 as
+    the elements halve; the profile's kinks at 100 and 300 m make the positions' ratios irregular), within
+    5e-6 of the tension and 5 mm of the body's position at 200 elements. The slower flow at depth lets the
+    body hang deeper than in the uniform 2 m/s."""
+    res, _ = towed_line_steady(_composite(), PROFILE, water_density=RHO, gravity=G, body_weight=3000.0,
+                               body_drag_area=0.5, tangential_drag="common")
+    uniform, _ = towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0,
+                                   body_drag_area=0.5, tangential_drag="common")
+    assert res.depth_of_lower_end > uniform.depth_of_lower_end + 100.0
+    assert abs(res.z[-1]) < 1e-12 and abs(res.x[-1]) < 1e-12  # the top at the tow point
+    want = np.array([res.top_tension, res.layback, res.depth_of_lower_end])
+    rev = sc.Line(segments=[sc.Segment(line_type=LIGHT, length=300.0), sc.Segment(line_type=HEAVY, length=200.0)],
+                  attachments=[sc.PointMass(s=300.0, weight_in_water=2000.0, drag_area=0.3, mass=250.0),
+                               sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
+    errors = []
+    for n in (50, 100, 200):
+        net = network_from_line(rev, (0.0, 0.0, 0.0), (res.layback, 0.0, -res.depth_of_lower_end),
+                                water_density=RHO, gravity=G, n_elements=n, end_b="free")
+        model = MooringModel(net, Water(depth=None, density=RHO, gravity=G, current_depths=PROFILE[0],
+                                        current_speeds=PROFILE[1]))
+        st = static_equilibrium(model, tol=1e-10)
+        errors.append(np.abs([np.linalg.norm(st.support[0]), st.position[-1, 0], -st.position[-1, 2]] - want))
+    errors = np.array(errors)
+    ratios = errors[:-1, 0] / errors[1:, 0]
+    assert np.all((ratios > 3.5) & (ratios < 4.7)), ratios
+    assert errors[-1, 0] < 5e-6 * res.top_tension and np.all(errors[-1, 1:] < 0.005)
+
+
+def test_a_towed_steady_case_takes_a_current_profile():
+    """The case's current profile (flowing against the tow at 0, 0.4 and 1.0 m/s at 0, 100 and 300 m, vessel
+    at 1 m/s ahead, heading pi: the relative flow 1.0 + ...) runs as the function with the relative profile; a
+    current outrunning the vessel at depth is refused with the speed named."""
+    base = {"name": "towprof", "line_types": {"heavy": HEAVY.model_dump(exclude_none=True),
+                                              "light": LIGHT.model_dump(exclude_none=True)},
+            "line": {"segments": [{"line_type": "heavy", "length": 200.0}, {"line_type": "light", "length": 300.0}]},
+            "analysis": {"type": "towed_steady", "vessel_speed": 2.0, "body": {"weight_in_water": 3000.0}}}
+    env = {"water_density": RHO, "gravity": G,
+           "current": {"heading": 0.0, "depths": [0.0, 100.0, 300.0], "speeds": [0.0, 0.4, 1.0]}}
+    ds = sc.run(sc.Case(**base, environment=env))
+    line = sc.Line(segments=[sc.Segment(line_type=HEAVY, length=200.0), sc.Segment(line_type=LIGHT, length=300.0)])
+    res, _ = towed_line_steady(line, PROFILE, water_density=RHO, gravity=G, body_weight=3000.0, n_points=7)
+    assert float(ds.layback) == pytest.approx(res.layback, rel=1e-9)
+    assert float(ds.lower_end_depth) == pytest.approx(res.depth_of_lower_end, rel=1e-9)
+    env["current"]["speeds"] = [0.0, 0.4, 2.5]
+    with pytest.raises(InputError, match="relative flow speed at 300 m depth is -0.5 m/s"):
+        sc.run(sc.Case(**base, environment=env))

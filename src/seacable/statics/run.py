@@ -137,7 +137,11 @@ def run_towed_steady(case: Case):
     a: TowedSteadyAnalysis = case.analysis
     env = case.environment
     cur = env.current
-    speed = a.vessel_speed - cur.speed * math.cos(cur.heading)
+    along = math.cos(cur.heading)  # the current's part along the tow (the steady tow is 2-D)
+    if cur.depths is None:
+        speed = a.vessel_speed - cur.speed * along
+    else:  # the relative flow at the profile's depths (the tow point at the surface)
+        speed = (np.asarray(cur.depths, float), a.vessel_speed - np.asarray(cur.speeds, float) * along)
     body = a.body
     # the line's end A is the towed end: its segments and attachments from the body up to the tow point
     res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
@@ -155,7 +159,8 @@ def run_towed_steady(case: Case):
         "layback": var((), res.layback, "m", "layback of the lower end"),
         "lower_end_depth": var((), res.depth_of_lower_end, "m", "depth of the lower end below the tow point"),
         "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle of the lowest segment"),
-        "relative_speed": var((), speed, "m s-1", "flow speed relative to the cable"),
+        "relative_speed": var((), speed if np.ndim(speed) == 0 else float(np.interp(0.0, *speed)), "m s-1",
+                              "flow speed relative to the cable (at the tow point's depth with a current profile)"),
         "point_layback": var("point", res.x[at], "m",
                              "layback of each segment joint and attachment above the lower end"),
         "point_depth": var("point", -res.z[at], "m", "depth of each segment joint and attachment below the tow point"),

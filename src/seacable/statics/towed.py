@@ -1,4 +1,5 @@
-"""Steady state of a cable towed in a uniform current (2-D).
+"""Steady state of a cable towed in a current (2-D): uniform cables (:func:`towed_cable_steady`), composite
+ones with points in line and current profiles (:func:`towed_line_steady`).
 
 A cable is towed at a relative flow speed ``U`` (vessel speed over ground minus the current
 component along the tow direction; paper 000's Table 1 case, vessel 1.0 m/s into a current of
@@ -49,6 +50,7 @@ from typing import Literal
 
 import numpy as np
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
 from .. import _validate as v
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
@@ -190,12 +192,14 @@ def _piece(length, w, d, cdn, cdt, ea, u, rho, tangential_drag) -> _Piece:
                   tangential_drag == "paper000" and ea is not None)
 
 
-def _steady(pieces, joints, tail, s_out, rtol, what):
+def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
     """Integrate the steady equations piece after piece from the lower end (module docstring).
 
-    ``pieces`` from the lower end up; ``joints[k]`` the (drag astern, net weight down) [N] of the point between
-    piece k and k + 1, ``tail`` that of the lower end's body ((0, 0): a free end). The tension's horizontal and
-    vertical parts step by a joint's forces (its force balance). ``s_out``: the unstretched arc lengths to
+    ``pieces`` from the lower end up; ``joints[k]`` the (drag astern at the pieces' flow speed, drag that does
+    not follow the flow, net weight down) [N] of the point between piece k and k + 1, ``tail`` that of the
+    lower end's body (zeros: a free end). The tension's horizontal and vertical parts step by a joint's forces
+    (its force balance). ``flow(z)``: the square of the flow speed at height z above the lower end relative to
+    the pieces' (a current varying with depth; None: uniform), scaling every drag that follows the flow. ``s_out``: the unstretched arc lengths to
     report (from the lower end, increasing, from 0 to the whole length); a joint's s is reported twice, below
     and above it. ``what``: the
     lower end's body, for the slack message. Returns a :class:`TowedCableSteady` (``critical_angle`` of the
@@ -203,10 +207,13 @@ def _steady(pieces, joints, tail, s_out, rtol, what):
     total = sum(p.length for p in pieces)
     scale = max(sum(abs(p.w) * p.length for p in pieces), 1e-300)
     t_small = 1e-9 * scale
-    h, vv = tail
+    if flow is None:
+        def flow(_z):
+            return 1.0
+    h, vv = tail[0] * flow(0.0) + tail[1], tail[2]
     x0 = z0 = s0 = 0.0
     ss, ys, above = [], [], []
-    phi_c = float(np.arccos(np.clip(_critical_cos(pieces[0].w, pieces[0].qn), 0.0, 1.0)))
+    phi_c = float(np.arccos(np.clip(_critical_cos(pieces[0].w, pieces[0].qn * flow(0.0)), 0.0, 1.0)))
     nfev = 0
     for k, p in enumerate(pieces):
         t0 = float(np.hypot(h, vv))
@@ -218,23 +225,27 @@ def _steady(pieces, joints, tail, s_out, rtol, what):
         def factor(t, p=p):
             return np.sqrt(1.0 + strain(t)) if p.stretch_drag else 1.0
 
-        def g_normal(phi, t, p=p):  # w cos(phi) - D_n  [N/m]
+        def g_normal(phi, t, z=0.0, p=p):  # w cos(phi) - D_n  [N/m]
             sp = np.sin(phi)
-            return p.w * np.cos(phi) - p.qn * sp * abs(sp) * factor(t)
+            return p.w * np.cos(phi) - p.qn * flow(z) * sp * abs(sp) * factor(t)
 
-        def dtds(phi, t, p=p):
+        def dtds(phi, t, z=0.0, p=p):
             cp = np.cos(phi)
-            return p.w * np.sin(phi) + p.qt * cp * abs(cp) * factor(t)
+            return p.w * np.sin(phi) + p.qt * flow(z) * cp * abs(cp) * factor(t)
 
         if free_end:
             t0, phi0 = 0.0, phi_c
             # limit of dphi/ds = g/T as T -> 0 along the regular solution: with psi = phi - phi_c,
             # T ~ a s, g ~ g_phi psi + g_T T, the regular solution psi = k s gives
             # k = g_T / (1 - g_phi / a).
+            # (and with a flow varying in height, the term g_z dz/ds = g_z sin(phi_c) beside g_T a)
             a = dtds(phi0, 0.0)
-            g_phi = -p.w * np.sin(phi0) - 2.0 * p.qn * np.sin(phi0) * np.cos(phi0)
-            g_t = -p.qn * np.sin(phi0) ** 2 * 0.5 / p.ea if p.stretch_drag else 0.0
-            k_lim = g_t / (1.0 - g_phi / a) if a > 0 else 0.0
+            qn = p.qn * flow(0.0)
+            g_phi = -p.w * np.sin(phi0) - 2.0 * qn * np.sin(phi0) * np.cos(phi0)
+            g_t = -qn * np.sin(phi0) ** 2 * 0.5 / p.ea if p.stretch_drag else 0.0
+            dz = 1e-6 * total
+            g_z = -p.qn * (flow(dz) - flow(-dz)) / (2 * dz) * np.sin(phi0) ** 2
+            k_lim = (g_t * a + g_z * np.sin(phi0)) / (a - g_phi) if a > 0 else 0.0
         elif t0 <= t_small:
             raise NoSolutionError(
                 f"the cable tension vanishes at s = {s0:.6g} m (the point there cancels the load below it): no "
@@ -246,8 +257,8 @@ def _steady(pieces, joints, tail, s_out, rtol, what):
         def rhs(_s, y, free_end=free_end, k_lim=k_lim, strain=strain, g_normal=g_normal, dtds=dtds):
             t, phi = y[0], y[1]
             one_e = 1.0 + strain(t)
-            dphi = k_lim if (free_end and t <= t_small) else g_normal(phi, t) / t
-            return [dtds(phi, t), dphi, -one_e * np.cos(phi), one_e * np.sin(phi)]
+            dphi = k_lim if (free_end and t <= t_small) else g_normal(phi, t, y[3]) / t
+            return [dtds(phi, t, y[3]), dphi, -one_e * np.cos(phi), one_e * np.sin(phi)]
 
         def slack_event(_s, y):  # tension falls to (almost) zero
             return y[0] - t_small
@@ -280,7 +291,8 @@ def _steady(pieces, joints, tail, s_out, rtol, what):
         t1, phi1, x0, z0 = sol.y[:, -1]
         s0 = s1
         if k < len(joints):
-            h, vv = t1 * np.cos(phi1) + joints[k][0], t1 * np.sin(phi1) + joints[k][1]
+            qd, fd, down = joints[k]
+            h, vv = t1 * np.cos(phi1) + qd * flow(z0) + fd, t1 * np.sin(phi1) + down
     y = np.array(ys)
     tension, angle = y[:, 0], y[:, 1]
     x = y[:, 2] - y[-1, 2]
@@ -391,9 +403,8 @@ def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, 
     v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
 
     piece = _piece(length, w, d, cdn, cdt, ea, u, rho, tangential_drag)
-    body_drag = 0.5 * rho * cda * u * u + fdb
-    return _steady([piece], [], (body_drag, wb - lift), np.linspace(0.0, length, n_points), rtol,
-                   f"body weight {wb:.6g} N, lift {lift:.6g} N")[0]
+    return _steady([piece], [], (0.5 * rho * cda * u * u, fdb, wb - lift), np.linspace(0.0, length, n_points),
+                   rtol, f"body weight {wb:.6g} N, lift {lift:.6g} N")[0]
 
 
 def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, body_weight=0.0, body_drag_area=0.0,
@@ -413,8 +424,12 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     ----------
     line : seacable.line.Line
         The cable, end A at the towed end.
-    speed : float
-        Relative flow speed (vessel minus current along the tow). [m/s]
+    speed : float or (depths, speeds)
+        Relative flow speed (vessel minus current along the tow) [m/s], or its profile: depths below the tow
+        point [m] (increasing) and the relative speeds there (>= 0), linear between, constant beyond. With a
+        profile each drag (the cable's, a point's, the body's) takes the flow at its depth, and the lower end's
+        depth is found so that the top comes to the tow point (a root in one variable, Brent's method, each
+        trial a whole integration).
     water_density, gravity : float
         [kg/m^3], [m/s^2]
     body_weight, body_drag_area, body_drag_force, body_lift
@@ -439,7 +454,26 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     if not isinstance(line, Line):
         raise InputError(f"line must be a seacable.Line, got {type(line).__name__}. Suggested fix: build it "
                          "with Line(segments=...) or Line.single(line_type, length).")
-    u = v.nonnegative("speed", speed, "m/s", "give the relative flow speed (vessel minus current)")
+    profile = None
+    if np.ndim(speed) == 0:
+        u = v.nonnegative("speed", speed, "m/s", "give the relative flow speed (vessel minus current)")
+    else:
+        try:
+            zd, us = (np.asarray(a, float).ravel() for a in speed)
+        except (TypeError, ValueError):
+            raise InputError("speed must be a relative flow speed in m/s or a pair (depths [m], speeds [m/s]), got "
+                             f"{speed!r}. Suggested fix: give the profile as two lists of the same length.") from None
+        if zd.size == 0 or zd.size != us.size or not np.all(np.isfinite(zd)) or np.any(np.diff(zd) <= 0):
+            raise InputError(f"the flow profile's depths {zd.tolist()} m must be increasing, finite and as many as its "
+                             f"speeds ({us.size}). Suggested fix: list depths below the tow point from the top down.")
+        bad = np.flatnonzero(~(us >= 0.0))
+        if bad.size:
+            raise InputError(f"the relative flow speed at {zd[bad[0]]:g} m depth is {us[bad[0]]:g} m/s, expected >= 0: "
+                             "the current outruns the vessel there, and the steady 2-D tow assumes the flow passes "
+                             "the cable astern at every depth. Suggested fix: tow faster than the current, or run "
+                             "towed_dynamic.")
+        u = float(us.max())
+        profile = (zd, us)
     rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
     g = v.positive("gravity", gravity, "m/s^2", "use 9.80665")
     wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
@@ -456,12 +490,12 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     cuts = {}
     for s in ends[:-1]:
         cuts.setdefault(round(float(s) / tol_s), [float(s), 0.0, 0.0])
-    tail = [0.5 * rho * cda * u * u + fdb, wb - lift]
+    tail = [0.5 * rho * cda * u * u, fdb, wb - lift]  # drag at the speed u (scaled by the flow), fixed drag, down
     for att in line.attachments:
         drag, down = 0.5 * rho * att.drag_area * u * u, att.net_weight(rho, g)
         if att.s <= tol_s:
             tail[0] += drag
-            tail[1] += down
+            tail[2] += down
         elif att.s < total - tol_s:
             c = cuts.setdefault(round(float(att.s) / tol_s), [float(att.s), 0.0, 0.0])
             c[1] += drag
@@ -474,10 +508,33 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         lt = line.segments[k].line_type
         pieces.append(_piece(s1 - s0, lt.submerged_weight(rho, g), lt.diameter, lt.drag_normal, lt.drag_tangential,
                              lt.axial_stiffness, u, rho, tangential_drag))
-    if pieces[0].w <= 0.0 and tail[0] == 0.0 and tail[1] == 0.0:
+    if pieces[0].w <= 0.0 and tail[0] == 0.0 and tail[1] == 0.0 and tail[2] == 0.0:
         raise InputError(f"the lowest segment of the towed line floats (weight in water {pieces[0].w:.6g} N/m) and "
                          "has no body at its end: it has no steady shape below the tow point. Suggested fix: add a "
                          "body (body_weight) or a heavier line type.")
-    res, above = _steady(pieces, [(j[1], j[2]) for j in joints], tuple(tail), np.linspace(0.0, total, n_points),
-                         rtol, f"body weight {wb:.6g} N, lift {lift:.6g} N")
+    knots = [(j[1], 0.0, j[2]) for j in joints]
+    s_out = np.linspace(0.0, total, n_points)
+    what = f"body weight {wb:.6g} N, lift {lift:.6g} N"
+    if profile is None or u == 0.0:
+        res, above = _steady(pieces, knots, tuple(tail), s_out, rtol, what)
+        return res, [(j[0], i) for j, i in zip(joints, above, strict=True)]
+
+    def solve(z_base):
+        """The tow with its lower end at height z_base [m] (<= 0) relative to the tow point."""
+        def flow(z):
+            return (np.interp(-(z_base + z), profile[0], profile[1]) / u) ** 2
+        return _steady(pieces, knots, tuple(tail), s_out, rtol, what, flow)
+
+    def miss(z_base):  # how far above the tow point the top comes
+        return z_base + solve(z_base)[0].depth_of_lower_end
+
+    reach = total * (1.0 + max((0.0 if p.ea is None else 1.0) for p in pieces))  # bracket: the cable's length
+    lo, hi = -reach, 0.0
+    f_lo, f_hi = miss(lo), miss(hi)
+    if f_lo > 0.0 or f_hi < 0.0:
+        raise NoSolutionError(f"no depth of the lower end brings the towed line's top to the tow point in the flow "
+                              f"profile (misses {f_lo:.6g} m and {f_hi:.6g} m at the bracket's ends). Suggested fix: "
+                              "check the profile and the line's weight.")
+    z_base = brentq(miss, lo, hi, xtol=1e-10 * total, rtol=4 * np.finfo(float).eps)
+    res, above = solve(z_base)
     return res, [(j[0], i) for j, i in zip(joints, above, strict=True)]
