@@ -127,12 +127,28 @@ class ModalAnalysis(_Moored):
 
 
 class TowedBody(Model):
-    """A body at the lower end of a towed cable."""
+    """A body at the lower end of a towed cable: its weight, drag and (a depressor's, a towfish's wing) lift
+    ``1/2 rho C_L A U^2``, positive up (a depressor's is negative), at the flow speed U past it."""
 
     weight_in_water: quantity("N") = Field(0.0, description="Net weight in water (negative floats). [N]")
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
     mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air; needed (> 0) by towed_dynamic. [kg]")
     added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass (isotropic). [kg]")
+    lift_coefficient: quantity("-") = Field(0.0, description="Lift coefficient C_L, positive up. [-]")
+    reference_area: quantity("m^2", ge=0) | None = Field(
+        None, description="Area the lift coefficient refers to (a wing's planform area). [m^2]")
+
+    @model_validator(mode="after")
+    def _lift_needs_area(self):
+        if self.lift_coefficient != 0.0 and not self.reference_area:
+            raise ValueError(f"body.lift_coefficient {self.lift_coefficient:g} needs body.reference_area (m^2), the area "
+                             f"it refers to, got {self.reference_area}. Suggested fix: give the wing's planform "
+                             "area, e.g. 'reference_area: 0.8'.")
+        return self
+
+    def lift_area(self) -> float:
+        """C_L times its reference area (0 without lift). [m^2]"""
+        return self.lift_coefficient * self.reference_area if self.lift_coefficient else 0.0
 
 
 class TowedSteadyAnalysis(Model):
@@ -184,6 +200,10 @@ class TowedDynamicAnalysis(Model):
             raise ValueError("body.mass must be > 0 kg for towed_dynamic: the body's inertia enters its "
                              "equation of motion. Suggested fix: give the mass in air, e.g. weight/9.81 "
                              "plus the mass of the displaced water.")
+        if self.body is not None and self.body.lift_coefficient != 0.0:
+            raise ValueError(f"body.lift_coefficient {self.body.lift_coefficient:g}: towed_dynamic does not model a "
+                             "body's lift yet (towed_steady does). Suggested fix: leave the lift out of the dynamic "
+                             "run, or run towed_steady.")
         return self
 
 

@@ -163,3 +163,35 @@ def test_a_towed_steady_case_takes_a_current_profile():
     env["current"]["speeds"] = [0.0, 0.4, 2.5]
     with pytest.raises(InputError, match="relative flow speed at 300 m depth is -0.5 m/s"):
         sc.run(sc.Case(**base, environment=env))
+
+
+def test_a_depressors_lift_pulls_the_body_down_by_its_force_balance():
+    """A body of 3 kN in water, C_D A 0.5 m^2, with a depressor wing (C_L -0.6 on 1.2 m^2) at 2 m/s: at the lower
+    end the cable holds the body's drag D = 1/2 rho C_D A U^2 and its weight less its lift, W - L with
+    L = 1/2 rho C_L A U^2 (negative: down), so its tension is hypot(D, W - L) and its angle atan2(W - L, D)
+    (the force balance, 1e-12), and the body goes deeper than without the wing."""
+    body = {"weight_in_water": 3000.0, "drag_area": 0.5}
+    base = {"name": "depressor", "line_types": {"light": LIGHT.model_dump(exclude_none=True)},
+            "line": {"line_type": "light", "length": 500.0}, "environment": {"water_density": RHO, "gravity": G}}
+    plain = sc.run(sc.Case(**base, analysis={"type": "towed_steady", "vessel_speed": U, "body": body}))
+    winged = sc.run(sc.Case(**base, analysis={"type": "towed_steady", "vessel_speed": U, "body": {
+        **body, "lift_coefficient": -0.6, "reference_area": 1.2}}))
+    drag = 0.5 * RHO * 0.5 * U**2
+    lift = 0.5 * RHO * -0.6 * 1.2 * U**2
+    assert float(winged.tension[0]) == pytest.approx(np.hypot(drag, 3000.0 - lift), rel=1e-12)
+    assert float(winged.angle[0]) == pytest.approx(np.degrees(np.arctan2(3000.0 - lift, drag)), rel=1e-12)
+    assert float(winged.lower_end_depth) > float(plain.lower_end_depth) + 10.0
+
+
+def test_a_lift_without_its_area_and_a_lifting_body_in_the_dynamics_are_refused():
+    with pytest.raises(InputError, match="lift_coefficient -0.6 needs body.reference_area"):
+        sc.Case(name="x", line_types={"light": LIGHT.model_dump(exclude_none=True)},
+                line={"line_type": "light", "length": 500.0},
+                analysis={"type": "towed_steady", "vessel_speed": U,
+                          "body": {"weight_in_water": 3000.0, "lift_coefficient": -0.6}})
+    with pytest.raises(InputError, match="towed_dynamic does not model a body's lift yet"):
+        sc.Case(name="x", line_types={"light": {**LIGHT.model_dump(exclude_none=True), "bending_stiffness": 1.0}},
+                line={"line_type": "light", "length": 500.0},
+                analysis={"type": "towed_dynamic", "duration": 10.0, "vessel": {"type": "straight", "speed": 2.0},
+                          "body": {"weight_in_water": 3000.0, "mass": 400.0, "lift_coefficient": -0.6,
+                                   "reference_area": 1.2}})

@@ -147,6 +147,7 @@ def run_towed_steady(case: Case):
     res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
                                     body_weight=body.weight_in_water if body else 0.0,
                                     body_drag_area=body.drag_area if body else 0.0,
+                                    body_lift_area=body.lift_area() if body else 0.0,
                                     tangential_drag=a.tangential_drag, n_points=a.n_nodes)
     at = [i for _, i in points]
     data = {

@@ -197,7 +197,7 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
 
     ``pieces`` from the lower end up; ``joints[k]`` the (drag astern at the pieces' flow speed, drag that does
     not follow the flow, net weight down) [N] of the point between piece k and k + 1, ``tail`` that of the
-    lower end's body (zeros: a free end). The tension's horizontal and vertical parts step by a joint's forces
+    lower end's body and its lift up at the pieces' flow speed (zeros: a free end). The tension's horizontal and vertical parts step by a joint's forces
     (its force balance). ``flow(z)``: the square of the flow speed at height z above the lower end relative to
     the pieces' (a current varying with depth; None: uniform), scaling every drag that follows the flow. ``s_out``: the unstretched arc lengths to
     report (from the lower end, increasing, from 0 to the whole length); a joint's s is reported twice, below
@@ -210,7 +210,7 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
     if flow is None:
         def flow(_z):
             return 1.0
-    h, vv = tail[0] * flow(0.0) + tail[1], tail[2]
+    h, vv = tail[0] * flow(0.0) + tail[1], tail[2] - tail[3] * flow(0.0)
     x0 = z0 = s0 = 0.0
     ss, ys, above = [], [], []
     phi_c = float(np.arccos(np.clip(_critical_cos(pieces[0].w, pieces[0].qn * flow(0.0)), 0.0, 1.0)))
@@ -403,13 +403,13 @@ def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, 
     v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
 
     piece = _piece(length, w, d, cdn, cdt, ea, u, rho, tangential_drag)
-    return _steady([piece], [], (0.5 * rho * cda * u * u, fdb, wb - lift), np.linspace(0.0, length, n_points),
+    return _steady([piece], [], (0.5 * rho * cda * u * u, fdb, wb - lift, 0.0), np.linspace(0.0, length, n_points),
                    rtol, f"body weight {wb:.6g} N, lift {lift:.6g} N")[0]
 
 
 def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, body_weight=0.0, body_drag_area=0.0,
-                      body_drag_force=0.0, body_lift=0.0, tangential_drag: TangentialDragForm = "paper000",
-                      n_points=101, rtol=1e-10):
+                      body_drag_force=0.0, body_lift=0.0, body_lift_area=0.0,
+                      tangential_drag: TangentialDragForm = "paper000", n_points=101, rtol=1e-10):
     """Steady 2-D shape and tension of a composite towed cable (:func:`towed_cable_steady` segment by segment).
 
     The line's end A is the lower (towed) end, end B the tow point: its segments (each line type's weight in
@@ -434,6 +434,9 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         [kg/m^3], [m/s^2]
     body_weight, body_drag_area, body_drag_force, body_lift
         The body at the lower end, as in :func:`towed_cable_steady`. [N], [m^2], [N], [N]
+    body_lift_area
+        The body's lift coefficient times its reference area, C_L A, positive up: a lift
+        ``1/2 rho C_L A U^2`` at the flow past it (a depressor's is negative). [m^2]
     tangential_drag : {"paper000", "common", "diameter"}
         Form of the tangential drag, see :data:`TangentialDragForm`.
     n_points : int
@@ -480,6 +483,7 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
     fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
     lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
+    cla = v.finite("body_lift_area", body_lift_area, "m^2", "give C_L times its reference area, positive up")
     rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
     n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
     v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
@@ -490,7 +494,8 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     cuts = {}
     for s in ends[:-1]:
         cuts.setdefault(round(float(s) / tol_s), [float(s), 0.0, 0.0])
-    tail = [0.5 * rho * cda * u * u, fdb, wb - lift]  # drag at the speed u (scaled by the flow), fixed drag, down
+    # drag at the speed u (scaled by the flow), fixed drag, net weight down, lift up at the speed u
+    tail = [0.5 * rho * cda * u * u, fdb, wb - lift, 0.5 * rho * cla * u * u]
     for att in line.attachments:
         drag, down = 0.5 * rho * att.drag_area * u * u, att.net_weight(rho, g)
         if att.s <= tol_s:
@@ -508,7 +513,7 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         lt = line.segments[k].line_type
         pieces.append(_piece(s1 - s0, lt.submerged_weight(rho, g), lt.diameter, lt.drag_normal, lt.drag_tangential,
                              lt.axial_stiffness, u, rho, tangential_drag))
-    if pieces[0].w <= 0.0 and tail[0] == 0.0 and tail[1] == 0.0 and tail[2] == 0.0:
+    if pieces[0].w <= 0.0 and not any(tail):
         raise InputError(f"the lowest segment of the towed line floats (weight in water {pieces[0].w:.6g} N/m) and "
                          "has no body at its end: it has no steady shape below the tow point. Suggested fix: add a "
                          "body (body_weight) or a heavier line type.")
