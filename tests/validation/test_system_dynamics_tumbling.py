@@ -265,8 +265,8 @@ def test_md_linefail_rod_falls_and_turns_over_at_the_default_time_step():
     - the finite-element static start converges (no warning: it stalled before, the rod's free spin about
       its own axis taking the steps) and puts the rod where the catenary statics do: z within 1e-3 m
       (measured 3e-6 m) and plumb within 1e-3 rad (1.7e-4: the chains' lumped FE weights);
-    - the failures at the deck's times; the rod falls and turns over: its pitch passes 90 deg near 6.4 s and
-      ends near 180 deg (the output angles continuous), z below -25 m;
+    - the failures at the deck's times; the rod tilts as it falls (whether it turns over before line 1 fails is
+      a knife edge: see below) and ends axis vertical (the output angles continuous), z below -25 m;
     - after the last failure the rod falls alone, axis vertical, against its axial quadratic drag B (44.6 N
       s^2/m^2) with its added mass a (1.98 kg): v(t) = v_t tanh(atanh(v15 / v_t) + (t - 15) / tau), v_t =
       sqrt(W / B) = 36.18 m/s (W its wet weight), tau = (m + a) v_t / W = 4.24 s. At 30 s: 1e-3 (measured
@@ -297,7 +297,12 @@ def test_md_linefail_rod_falls_and_turns_over_at_the_default_time_step():
     assert ft == pytest.approx({"line1": 11.0, "line2": 15.0, "line3": 0.1, "line4": 5.0})
     t = ds.time.values
     assert q[-1, 2] < -25.0
-    assert q[:, 4].max() > math.pi / 2 and abs(q[-1, 4] - math.pi) < 0.1
+    # line 4's failure leaves the rod on its bottom lines, an inverted pendulum whose tilt grows from the static
+    # start's 1e-4 rad: whether it passes 90 deg before line 1 fails at 11 s depends on that seed, and a 1e-7
+    # change of the step flips it (measured, 10 s: the largest pitch 1.49 rad at dt = 0.1 s, 0.57 and 0.59 rad at
+    # 0.1 (1 -+ 1e-7) s; so too round-off changes of the kernel). Asked: the tilt grows, and the free-falling rod
+    # ends axis vertical, either way up
+    assert np.abs(q[:, 4]).max() > 0.3 and abs(math.sin(q[-1, 4])) < 0.1
     assert np.max(np.abs(np.diff(q[:, 3:], axis=0))) < math.pi  # no branch or 2 pi jumps
     rod = system.bodies["rod1"]
     wet = (rod.mass - env.water_density * rod.volume) * env.gravity
