@@ -50,6 +50,13 @@ def _composite():
                    attachments=[sc.PointMass(s=200.0, weight_in_water=2000.0, drag_area=0.3, mass=250.0)])
 
 
+def _from_the_tow_point():
+    """The composite tow as the mooring model's line: end A at the tow point, the body an attachment at end B."""
+    return sc.Line(segments=[sc.Segment(line_type=LIGHT, length=300.0), sc.Segment(line_type=HEAVY, length=200.0)],
+                   attachments=[sc.PointMass(s=300.0, weight_in_water=2000.0, drag_area=0.3, mass=250.0),
+                                sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
+
+
 def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system():
     """The composite tow against the mooring model's statics of the same line hung from the tow point in a
     2 m/s current (end B free: the body an attachment), both with the common drag form: the top tension, the
@@ -62,9 +69,7 @@ def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system():
     assert s_clump == 200.0
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end, res.x[i_clump], -res.z[i_clump]])
     # the same system from the tow point down (end A fixed at the tow point, end B free at the body)
-    rev = sc.Line(segments=[sc.Segment(line_type=LIGHT, length=300.0), sc.Segment(line_type=HEAVY, length=200.0)],
-                  attachments=[sc.PointMass(s=300.0, weight_in_water=2000.0, drag_area=0.3, mass=250.0),
-                               sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
+    rev = _from_the_tow_point()
     errors = []
     for n in (50, 100, 200):
         net = network_from_line(rev, (0.0, 0.0, 0.0), (res.layback, 0.0, -res.depth_of_lower_end),
@@ -128,9 +133,7 @@ def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_curren
     assert res.depth_of_lower_end > uniform.depth_of_lower_end + 100.0
     assert abs(res.z[-1]) < 1e-12 and abs(res.x[-1]) < 1e-12  # the top at the tow point
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end])
-    rev = sc.Line(segments=[sc.Segment(line_type=LIGHT, length=300.0), sc.Segment(line_type=HEAVY, length=200.0)],
-                  attachments=[sc.PointMass(s=300.0, weight_in_water=2000.0, drag_area=0.3, mass=250.0),
-                               sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
+    rev = _from_the_tow_point()
     errors = []
     for n in (50, 100, 200):
         net = network_from_line(rev, (0.0, 0.0, 0.0), (res.layback, 0.0, -res.depth_of_lower_end),

@@ -307,6 +307,18 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
     return res, above[1:]
 
 
+def _checked_body(body_weight, body_drag_area, body_drag_force, body_lift, rtol, n_points):
+    """The towed body's forces and the solution's settings, checked: (W [N], C_D A [m^2], drag [N], lift [N],
+    rtol, n_points)."""
+    wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
+    cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
+    fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
+    lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
+    rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
+    n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
+    return wb, cda, fdb, lift, rtol, n_points
+
+
 def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, drag_tangential=0.0,
                        *, water_density=1025.0, axial_stiffness=None, body_weight=0.0,
                        body_drag_area=0.0, body_drag_force=0.0, body_lift=0.0,
@@ -390,12 +402,8 @@ def towed_cable_steady(length, weight_per_length, diameter, speed, drag_normal, 
     rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
     ea = None if axial_stiffness is None else v.positive(
         "axial_stiffness", axial_stiffness, "N", "give EA in newtons, or None for an inextensible cable")
-    wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
-    cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
-    fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
-    lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
-    rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
-    n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
+    wb, cda, fdb, lift, rtol, n_points = _checked_body(body_weight, body_drag_area, body_drag_force, body_lift, rtol,
+                                                       n_points)
     for name, val in (("length", length), ("weight_per_length", w), ("diameter", d), ("speed", u)):
         if np.ndim(val):
             raise InputError(f"{name} must be a scalar for towed_cable_steady, got an array of shape "
@@ -479,13 +487,9 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         profile = (zd, us)
     rho = v.positive("water_density", water_density, "kg/m^3", "sea water is about 1025 kg/m^3")
     g = v.positive("gravity", gravity, "m/s^2", "use 9.80665")
-    wb = v.finite("body_weight", body_weight, "N", "give the body's weight in water in newtons")
-    cda = v.nonnegative("body_drag_area", body_drag_area, "m^2", "give C_D times the reference area")
-    fdb = v.nonnegative("body_drag_force", body_drag_force, "N", "give the body's drag in newtons")
-    lift = v.finite("body_lift", body_lift, "N", "give the vertical force in newtons, positive up")
+    wb, cda, fdb, lift, rtol, n_points = _checked_body(body_weight, body_drag_area, body_drag_force, body_lift, rtol,
+                                                       n_points)
     cla = v.finite("body_lift_area", body_lift_area, "m^2", "give C_L times its reference area, positive up")
-    rtol = v.in_range("rtol", rtol, 1e-13, 1e-3, "", "use a relative tolerance such as 1e-10")
-    n_points = int(v.at_least("n_points", n_points, 2, "", "ask for at least the two ends"))
     v.one_of("tangential_drag", tangential_drag, _TANGENTIAL_FORMS)
     total = float(line.length)
     tol_s = 1e-9 * total
