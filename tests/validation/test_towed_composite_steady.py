@@ -198,3 +198,22 @@ def test_a_lift_without_its_area_and_a_lifting_body_in_the_dynamics_are_refused(
                 analysis={"type": "towed_dynamic", "duration": 10.0, "vessel": {"type": "straight", "speed": 2.0},
                           "body": {"weight_in_water": 3000.0, "mass": 400.0, "lift_coefficient": -0.6,
                                    "reference_area": 1.2}})
+
+
+def test_a_steady_tow_through_the_seabed_is_warned_with_its_depth():
+    """The 500 m tow hangs about 297 m deep at 2 m/s: in 400 m of water the result's seabed clearance is the
+    depth less the lowest point's (the lower end); in 250 m of water that is negative and a warning names the
+    depth, the seabed and the fix."""
+    def case(depth):
+        return sc.Case(name="deep", line_types={"heavy": HEAVY.model_dump(exclude_none=True),
+                                                "light": LIGHT.model_dump(exclude_none=True)},
+                       line={"segments": [{"line_type": "heavy", "length": 200.0},
+                                          {"line_type": "light", "length": 300.0}]},
+                       environment={"water_density": RHO, "gravity": G, "depth": depth},
+                       analysis={"type": "towed_steady", "vessel_speed": U,
+                                 "body": {"weight_in_water": 3000.0, "drag_area": 0.5}})
+    ds = sc.run(case(400.0))
+    assert float(ds.seabed_clearance) == pytest.approx(400.0 - float(ds.lower_end_depth), rel=1e-12)
+    with pytest.warns(sc.errors.SeacableWarning, match=r"m deep, below the seabed at 250 m"):
+        shallow = sc.run(case(250.0))
+    assert float(shallow.seabed_clearance) < 0

@@ -150,6 +150,17 @@ def run_towed_steady(case: Case):
                                     body_lift_area=body.lift_area() if body else 0.0,
                                     tangential_drag=a.tangential_drag, n_points=a.n_nodes)
     at = [i for _, i in points]
+    extra = {}
+    if env.depth is not None:  # the tow point at the surface: z is the depth; the steady tow has no seabed
+        k = int(np.argmin(res.z))
+        clearance = float(res.z[k]) + float(env.depth)
+        extra["seabed_clearance"] = var((), clearance, "m", "lowest point's height above the seabed (negative: "
+                                        "through it; the steady tow has no seabed contact)")
+        if clearance < 0:
+            warnings.warn(f"towed_steady: the cable at s = {res.s[k]:g} m from the lower end is {-res.z[k]:g} m deep, "
+                          f"below the seabed at {env.depth:g} m (environment.depth); the steady tow has no seabed "
+                          "contact, so this shape goes through it. Suggested fix: tow faster, shorten the cable or "
+                          "lighten the body.", SeacableWarning, stacklevel=2)
     data = {
         "x": var("node", res.x, "m", "position relative to the tow point, positive astern"),
         "z": var("node", res.z, "m", "elevation relative to the tow point"),
@@ -165,6 +176,7 @@ def run_towed_steady(case: Case):
         "point_layback": var("point", res.x[at], "m",
                              "layback of each segment joint and attachment above the lower end"),
         "point_depth": var("point", -res.z[at], "m", "depth of each segment joint and attachment below the tow point"),
+        **extra,
     }
     coords = {"s": var("node", res.s, "m", "unstretched arc length from the lower end (a joint's twice)"),
               "point_s": var("point", np.array([p for p, _ in points], float), "m",
