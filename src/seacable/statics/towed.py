@@ -537,8 +537,7 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     def miss(z_base):  # how far above the tow point the top comes
         return z_base + solve(z_base)[0].depth_of_lower_end
 
-    reach = total * (1.0 + max((0.0 if p.ea is None else 1.0) for p in pieces))  # bracket: the cable's length
-    lo, hi = -reach, 0.0
+    lo, hi = -2.0 * total, 0.0  # the lower end lies within the stretched length (under twice the length) below
     f_lo, f_hi = miss(lo), miss(hi)
     if f_lo > 0.0 or f_hi < 0.0:
         raise NoSolutionError(f"no depth of the lower end brings the towed line's top to the tow point in the flow "
