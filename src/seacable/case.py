@@ -20,12 +20,13 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal, Union
 
+import numpy as np
 from pydantic import Field, model_validator
 
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest
 from .environment import Environment
 from .errors import InputError
-from .line import Line, LineType
+from .line import Lifting, Line, LineType
 from .statics.towed import TangentialDragForm
 from .laying.inputs import Bathymetry, Payout, PayoutBottomTension, PayoutSlack, ShipMotion
 from .mooring.motion import Motion
@@ -126,7 +127,7 @@ class ModalAnalysis(_Moored):
         return self
 
 
-class TowedBody(Model):
+class TowedBody(Lifting):
     """A body at the lower end of a towed cable: its weight, drag and (a depressor's, a towfish's wing) lift
     ``1/2 rho C_L A U^2``, positive up (a depressor's is negative), at the flow speed U past it."""
 
@@ -134,21 +135,6 @@ class TowedBody(Model):
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
     mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air; needed (> 0) by towed_dynamic. [kg]")
     added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass (isotropic). [kg]")
-    lift_coefficient: quantity("-") = Field(0.0, description="Lift coefficient C_L, positive up. [-]")
-    reference_area: quantity("m^2", ge=0) | None = Field(
-        None, description="Area the lift coefficient refers to (a wing's planform area). [m^2]")
-
-    @model_validator(mode="after")
-    def _lift_needs_area(self):
-        if self.lift_coefficient != 0.0 and not self.reference_area:
-            raise ValueError(f"body.lift_coefficient {self.lift_coefficient:g} needs body.reference_area (m^2), the area "
-                             f"it refers to, got {self.reference_area}. Suggested fix: give the wing's planform "
-                             "area, e.g. 'reference_area: 0.8'.")
-        return self
-
-    def lift_area(self) -> float:
-        """C_L times its reference area (0 without lift). [m^2]"""
-        return self.lift_coefficient * self.reference_area if self.lift_coefficient else 0.0
 
 
 class TowedSteadyAnalysis(Model):
@@ -167,10 +153,88 @@ class TowedSteadyAnalysis(Model):
     n_nodes: int = Field(7, ge=2, le=100_000, description="Nodes at which the result is reported.")
 
 
+class SeabedContact(Model):
+    """Seabed contact of the mooring finite-element model: penalty springs and dampers on the nodes.
+
+    The force per unit length of line is ``stiffness d p - damping d v_n`` (never pulling), with ``d``
+    the diameter, ``p`` the penetration and ``v_n`` the velocity normal to the seabed (MoorDyn's kBot
+    and cBot); the friction coefficient is ``environment.seabed.friction``, regularised below
+    ``friction_velocity``.
+    """
+
+    stiffness: quantity("Pa/m", ge=0, fix="MoorDyn's default is 3e6 Pa/m.") = Field(
+        3.0e6, description="Penalty stiffness per unit of projected area. [Pa/m]")
+    damping: quantity("Pa s/m", ge=0) = Field(3.0e5, description="Damping per unit of projected area. [Pa s/m]")
+    friction_velocity: quantity("m/s", gt=0) = Field(
+        0.01, description="Sliding speed below which friction is regularised. [m/s]")
+
+
+class Winch(Model):
+    """Pay-out (the deployed length growing) or haul-in of the cable at the tow point.
+
+    Either a ``rate`` [m/s] (positive pays out, negative hauls in) from ``start_time`` until the deployed
+    length reaches ``length`` (or the run ends), or a table of deployed ``lengths`` at ``times``, linear in
+    between and constant beyond its ends. The cable paid out is the line's last segment (end B's line type)."""
+
+    rate: quantity("m/s") | None = Field(None, description="Pay-out rate, negative hauls in. [m/s]")
+    start_time: quantity("s", ge=0) = Field(0.0, description="When the rate starts. [s]")
+    length: quantity("m", gt=0) | None = Field(None, description="Deployed length at which the rate stops. [m]")
+    times: tuple[float, ...] | None = Field(None, description="Times of a length table. [s]")
+    lengths: tuple[float, ...] | None = Field(None, description="Deployed lengths at those times. [m]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        table = self.times is not None or self.lengths is not None
+        if table == (self.rate is not None):
+            raise ValueError("give either 'rate' (m/s, positive pays out) or a table of 'times' (s) and 'lengths' "
+                             "(m). Suggested fix: e.g. 'rate: 0.5' or 'times: [0, 600]' with 'lengths: [1000, 1300]'.")
+        if table:
+            if self.times is None or self.lengths is None or len(self.times) != len(self.lengths) \
+                    or len(self.times) < 2:
+                raise ValueError("the pay-out table needs 'times' and 'lengths' of the same length, at least 2. "
+                                 "Suggested fix: give the deployed length at two or more times.")
+            t, length = np.asarray(self.times, float), np.asarray(self.lengths, float)
+            if not (np.all(np.isfinite(t)) and np.all(np.isfinite(length))):
+                raise ValueError("the pay-out table's times (s) and lengths (m) must be finite numbers.")
+            bad = np.flatnonzero(np.diff(t) <= 0)
+            if bad.size:
+                k = int(bad[0])
+                raise ValueError(f"the pay-out table's times must increase, but times[{k + 1}] = {t[k + 1]:g} s follows "
+                                 f"times[{k}] = {t[k]:g} s. Suggested fix: sort the table by time and give each "
+                                 "time once.")
+            if np.any(length <= 0):
+                k = int(np.argmax(length <= 0))
+                raise ValueError(f"the pay-out table's lengths must be > 0 m, got lengths[{k}] = {length[k]:g} m.")
+        elif self.rate == 0.0:
+            raise ValueError("winch.rate is 0 m/s: nothing is paid out. Suggested fix: leave 'winch' out, or give "
+                             "a rate (m/s, positive pays out, negative hauls in).")
+        return self
+
+    def deployed(self, times, length0: float) -> np.ndarray:
+        """The deployed length [m] at ``times`` [s] of a cable ``length0`` [m] long at t = 0."""
+        t = np.asarray(times, float)
+        if self.rate is None:
+            return np.interp(t, self.times, self.lengths)
+        run = np.clip(t - self.start_time, 0.0, None) * self.rate
+        if self.length is not None:
+            run = np.clip(run, *sorted((0.0, self.length - length0)))
+        return length0 + run
+
+
 class TowedDynamicAnalysis(Model):
-    """Time-domain dynamics of a towed cable behind a vessel path (paper 000 box scheme)."""
+    """Time-domain dynamics of a towed system behind a vessel path.
+
+    ``formulation``: ``finite_element`` (the default) is the mooring model's (paper 004: lumped masses on
+    elastic elements with bending where the line types give EI, Morison loads, seabed contact) with the
+    vessel's tow point moving the top node: composite cables, bodies in line, lift, pay-out and haul-in
+    (``winch``), seabed contact and a start from rest; ``box`` is paper 000's implicit finite-difference box
+    scheme with bending stiffness (one uniform cable, a body at its end, a moving vessel)."""
 
     type: Literal["towed_dynamic"] = "towed_dynamic"
+    formulation: Literal["finite_element", "box"] = Field(
+        "finite_element", description="finite_element (paper 004's model) or box (paper 000's scheme).")
+    winch: Winch | None = Field(None, description="Pay-out or haul-in at the tow point (finite_element).")
+    seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
     vessel: VesselPath = Field(description="Tow-point motion: straight, speed_schedule, turn or table.")
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     time_step: quantity("s", gt=0) = Field(0.5, description="Time step (halved locally where Newton fails). [s]")
@@ -178,8 +242,9 @@ class TowedDynamicAnalysis(Model):
         None, description="Time between stored states, a multiple of time_step (default: time_step). [s]")
     n_nodes: int = Field(7, ge=3, le=100_000, description="Nodes from the lower end to the vessel.")
     body: TowedBody | None = None
-    tangential_drag: TangentialDragForm = Field(
-        "paper000", description="Form of the tangential drag (seacable.statics.towed.TangentialDragForm).")
+    tangential_drag: TangentialDragForm | None = Field(
+        None, description="Form of the tangential drag (seacable.statics.towed.TangentialDragForm); default "
+                          "paper000 in the box formulation, common in the finite-element one.")
     current_follows_vessel: bool = Field(
         False, description="Turn the current with the vessel's course (heading measured from the course).")
     tolerance: quantity("-", gt=0, lt=1e-2) = Field(1e-8, description="Newton tolerance, scaled. [-]")
@@ -200,10 +265,13 @@ class TowedDynamicAnalysis(Model):
             raise ValueError("body.mass must be > 0 kg for towed_dynamic: the body's inertia enters its "
                              "equation of motion. Suggested fix: give the mass in air, e.g. weight/9.81 "
                              "plus the mass of the displaced water.")
-        if self.body is not None and self.body.lift_coefficient != 0.0:
-            raise ValueError(f"body.lift_coefficient {self.body.lift_coefficient:g}: towed_dynamic does not model a "
-                             "body's lift yet (towed_steady does). Suggested fix: leave the lift out of the dynamic "
-                             "run, or run towed_steady.")
+        if self.formulation == "box":
+            if self.body is not None and self.body.lift_coefficient != 0.0:
+                raise ValueError(f"body.lift_coefficient {self.body.lift_coefficient:g}: the box formulation does not "
+                                 "model a body's lift. Suggested fix: use formulation: finite_element.")
+            if self.winch is not None:
+                raise ValueError("winch: the box formulation has a fixed cable length. Suggested fix: use "
+                                 "formulation: finite_element for pay-out and haul-in.")
         return self
 
 
@@ -301,22 +369,6 @@ class VerticalModesAnalysis(Model):
         if self.methods is not None:
             return tuple(self.methods)
         return ("string", "exact", "wave") if self.bottom_tension > 0 else ("exact", "wave")
-
-
-class SeabedContact(Model):
-    """Seabed contact of the mooring finite-element model: penalty springs and dampers on the nodes.
-
-    The force per unit length of line is ``stiffness d p - damping d v_n`` (never pulling), with ``d``
-    the diameter, ``p`` the penetration and ``v_n`` the velocity normal to the seabed (MoorDyn's kBot
-    and cBot); the friction coefficient is ``environment.seabed.friction``, regularised below
-    ``friction_velocity``.
-    """
-
-    stiffness: quantity("Pa/m", ge=0, fix="MoorDyn's default is 3e6 Pa/m.") = Field(
-        3.0e6, description="Penalty stiffness per unit of projected area. [Pa/m]")
-    damping: quantity("Pa s/m", ge=0) = Field(3.0e5, description="Damping per unit of projected area. [Pa s/m]")
-    friction_velocity: quantity("m/s", gt=0) = Field(
-        0.01, description="Sliding speed below which friction is regularised. [m/s]")
 
 
 class _Mooring(_Moored):

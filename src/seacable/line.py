@@ -189,7 +189,28 @@ class Segment(Model):
     n_elements: int | None = Field(None, ge=1, description="Elements a discretised model uses here.")
 
 
-class PointMass(Model):
+class Lifting(Model):
+    """A lift coefficient and the area it refers to: the lift ``1/2 rho C_L A U^2``, positive up (a depressor's
+    is negative), at the flow speed U past the body (across the flow, in the vertical plane through it)."""
+
+    lift_coefficient: quantity("-") = Field(0.0, description="Lift coefficient C_L, positive up. [-]")
+    reference_area: quantity("m^2", ge=0) | None = Field(
+        None, description="Area the lift coefficient refers to (a wing's planform area). [m^2]")
+
+    @model_validator(mode="after")
+    def _lift_needs_area(self):
+        if self.lift_coefficient != 0.0 and not self.reference_area:
+            raise ValueError(f"lift_coefficient {self.lift_coefficient:g} needs reference_area (m^2), the area "
+                             f"it refers to, got {self.reference_area}. Suggested fix: give the wing's planform "
+                             "area, e.g. 'reference_area: 0.8'.")
+        return self
+
+    def lift_area(self) -> float:
+        """C_L times its reference area (0 without lift). [m^2]"""
+        return self.lift_coefficient * self.reference_area if self.lift_coefficient else 0.0
+
+
+class PointMass(Lifting):
     """A clump weight, repeater, buoy or float attached at one point of a line.
 
     Its net weight in water is ``weight_in_water`` if given, else
@@ -206,7 +227,12 @@ class PointMass(Model):
     weight_in_water
         Net weight in water, overriding mass and volume (negative: buoyant). [N]
     drag_area
-        Drag coefficient times frontal area, C_D A. [m^2]
+        Drag coefficient times frontal area, C_D A: across the line when ``axial_drag_area`` is given,
+        else in every direction. [m^2]
+    axial_drag_area
+        C_D A along the line (a body in line: its axial drag); None: the drag is isotropic. [m^2]
+    lift_coefficient, reference_area
+        Lift ``1/2 rho C_L A U^2``, positive up, at the flow speed U past it (a depressor's wing). [-], [m^2]
     added_mass
         Added mass. [kg]
     kind
@@ -221,8 +247,10 @@ class PointMass(Model):
     volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume. [m^3]")
     weight_in_water: quantity("N") | None = Field(None, description="Net weight in water. [N]")
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times area. [m^2]")
+    axial_drag_area: quantity("m^2", ge=0) | None = Field(
+        None, description="Drag coefficient times area along the line; default: isotropic drag. [m^2]")
     added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass. [kg]")
-    kind: Literal["clump", "buoy", "repeater", "float", "point"] = "point"
+    kind: Literal["clump", "buoy", "repeater", "float", "point", "depressor", "body"] = "point"
     name: str | None = None
 
     def net_weight(self, water_density: float = _RHO, gravity: float = _G) -> float:

@@ -82,7 +82,15 @@ E_BEDRAMP = 16
 E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
 E_SLACKDAMP = 18  # 1: the axial damper acts in slack elements too (MoorDyn's rule), 0: only in taut ones
 E_BEDFULL = 19  # 1: the seabed damper acts in full wherever the spring is linear (MoorDyn's rule), 0: ramped
-ENV_SIZE = 20
+# velocity of the frame the nodes are seen in [m/s]: the water moves past them at (its velocity) - (this); 0 but in
+# the statics of a towed system, whose steady state is a static equilibrium in the frame moving with the vessel
+E_FRAMEX, E_FRAMEY, E_FRAMEZ = 20, 21, 22
+ENV_SIZE = 23
+
+# Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
+# a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift
+# 1/2 rho C_L A (|u|^2 e_z - (u . e_z) u) at the water's velocity u relative to the point (:func:`point_lift`)
+P_CDA, P_CDA_AXIAL, P_CLA = 0, 1, 2
 
 # Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
 # dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the
@@ -156,6 +164,7 @@ def _water_local(x, y, z, t, env, cur_depth, cur_speed, wavy, sea, eta):
     if speed != 0.0:
         u0 = speed * math.cos(env[E_CHEAD])
         u1 = speed * math.sin(env[E_CHEAD])
+    u0, u1, u2 = u0 - env[E_FRAMEX], u1 - env[E_FRAMEY], u2 - env[E_FRAMEZ]
     if not wavy:
         return u0, u1, u2, a0, a1, a2, math.nan
     d = env[E_WDEPTH]
@@ -597,6 +606,53 @@ def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, 
 
 
 @njit(cache=True)
+def _point_drag_split(u, qn, qa, tsum, f, out):
+    """Drag of an attachment across and along the line, ``qn |u_n| u_n + qa |u_t| u_t`` (``qn``, ``qa``: 1/2 rho
+    C_D A of each), added to ``f`` (3,); ``u`` the water's velocity relative to the point, ``tsum`` the sum of its
+    elements' unit tangents (zero: no direction, the isotropic drag at ``qn``). ``out`` (3, 3) receives the
+    tangent -df/dv = qn (|u_n| P_n + u_n u_n^T / |u_n|) + 2 qa |u_t| t t^T."""
+    m = math.sqrt(tsum[0] ** 2 + tsum[1] ** 2 + tsum[2] ** 2)
+    out[:] = 0.0
+    if m <= 0.0:
+        mag = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
+        for r in range(3):
+            f[r] += qn * mag * u[r]
+            out[r, r] += qn * mag
+        _drag_tangent(u, 1.0, out, qn)
+        return
+    t0, t1, t2 = tsum[0] / m, tsum[1] / m, tsum[2] / m
+    ut = u[0] * t0 + u[1] * t1 + u[2] * t2
+    n0, n1, n2 = u[0] - ut * t0, u[1] - ut * t1, u[2] - ut * t2
+    mn = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
+    f[0] += qn * mn * n0 + qa * abs(ut) * ut * t0
+    f[1] += qn * mn * n1 + qa * abs(ut) * ut * t1
+    f[2] += qn * mn * n2 + qa * abs(ut) * ut * t2
+    tv = (t0, t1, t2)
+    nv = (n0, n1, n2)
+    cun = qn / mn if mn > 0.0 else 0.0
+    for r in range(3):
+        for c in range(3):
+            pn = (1.0 if r == c else 0.0) - tv[r] * tv[c]
+            out[r, c] = qn * mn * pn + cun * nv[r] * nv[c] + 2.0 * qa * abs(ut) * tv[r] * tv[c]
+
+
+@njit(cache=True)
+def point_lift(u, ql, f, out):
+    """Lift ``ql (|u|^2 e_z - u_z u)`` of an attachment (``ql`` = 1/2 rho C_L A, positive up) added to ``f`` (3,),
+    at the water's velocity ``u`` relative to it: across the flow, in the vertical plane through it, of size
+    ``ql |u| |u_h|`` (``ql U^2`` in a horizontal flow, none in a vertical one, smoothly: no direction is singular).
+    ``out`` (3, 3) receives -df/dv = df/du = ql (2 e_z u^T - u_z I - u e_z^T)."""
+    uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2]
+    uz = u[2]
+    f[0] -= ql * uz * u[0]
+    f[1] -= ql * uz * u[1]
+    f[2] += ql * (uu - uz * uz)
+    for r in range(3):
+        for c in range(3):
+            out[r, c] = ql * ((2.0 * u[c] if r == 2 else 0.0) - (uz if r == c else 0.0) - (u[r] if c == 2 else 0.0))
+
+
+@njit(cache=True)
 def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
           weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco,
           fidx, env, cur_depth, cur_speed, with_waves, sea,
@@ -671,7 +727,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         # an irregular sea alone (no regular wave, no stretching) and a uniform current: _water_local's few lines
         # here (its call, with its arrays, cost as much as the grid's look-up)
         plain = wavy and env[E_WH] <= 0.0 and sea[S_STRETCH] <= 0.0 and cur_depth.size == 1
-        cu, cv = cur_speed[0] * math.cos(env[E_CHEAD]), cur_speed[0] * math.sin(env[E_CHEAD])
+        cu = cur_speed[0] * math.cos(env[E_CHEAD]) - env[E_FRAMEX]
+        cv = cur_speed[0] * math.sin(env[E_CHEAD]) - env[E_FRAMEY]
         for k in range(nw):
             water[k, 0] = _surface(X[k, 0], X[k, 1], t, env, with_waves, sea) if wavy and X[k, 2] >= below else 0.0
             if not plain:
@@ -681,8 +738,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 water[k, 1] = water[k, 2] = water[k, 3] = water[k, 4] = water[k, 5] = water[k, 6] = 0.0
                 zs[k] = math.nan
             else:
-                water[k, 1], water[k, 2] = cu, cv
-                water[k, 3] = water[k, 4] = water[k, 5] = water[k, 6] = 0.0
+                water[k, 1], water[k, 2], water[k, 3] = cu, cv, -env[E_FRAMEZ]
+                water[k, 4] = water[k, 5] = water[k, 6] = 0.0
                 zs[k] = max(min(X[k, 2], 0.0), -env[E_WDEPTH])
         if wavy and sea[S_MODE] > 0.0:
             kin = np.empty((nw, 6))
@@ -690,6 +747,12 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             for k in range(nw):
                 for r in range(6):
                     water[k, 1 + r] += kin[k, r]
+    # an attachment whose drag along the line differs from its drag across: the line's direction at its node
+    split = False
+    for i in range(n):
+        if pcda[i, P_CDA_AXIAL] != pcda[i, P_CDA]:
+            split = True
+    tnode = np.zeros((n if split else 0, 3))
     for e in range(elements.shape[0]):
         a = elements[e, 0]
         b = elements[e, 1]
@@ -699,6 +762,11 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             t0, t1, t2 = d0 / l, d1 / l, d2 / l  # the unit tangent, in scalars (see the half elements below)
         else:
             t0 = t1 = t2 = 0.0  # coincident nodes: no direction, no tension (a folded slack line)
+        if split:
+            for k in (a, b):
+                tnode[k, 0] += t0
+                tnode[k, 1] += t1
+                tnode[k, 2] += t2
         L = L0[e]
         eps = l / L - 1.0
         # tension-only law rounded over |eps| < sband (C1, so that Newton does not cycle between slack and
@@ -843,7 +911,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     alpha = env[E_ALPHA]
     for i in range(n):
         F[i, 2] -= weight[i]
-        wet = pcda[i] > 0.0 or pvol[i] > 0.0 or padd[i] > 0.0
+        qn, qa, ql = 0.5 * rho * pcda[i, P_CDA], 0.5 * rho * pcda[i, P_CDA_AXIAL], 0.5 * rho * pcda[i, P_CLA]
+        wet = qn > 0.0 or qa > 0.0 or ql != 0.0 or pvol[i] > 0.0 or padd[i] > 0.0
         ei = _surface(X[i, 0], X[i, 1], t, env, with_waves, sea) if wavy and (pbuoy[i] != 0.0 or wet) else 0.0
         if pbuoy[i] != 0.0 and X[i, 2] - ei > -0.5 * pdia[i]:
             # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
@@ -856,15 +925,25 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             for r in range(3):
                 ur[r] = uw[r] - V[i, r]
             mag = math.sqrt(ur[0] ** 2 + ur[1] ** 2 + ur[2] ** 2)
-            q = 0.5 * rho * pcda[i]
             for r in range(3):
-                F[i, r] += q * mag * ur[r] + (rho * pvol[i] + padd[i]) * aw[r]
-            if jac and fidx[i] >= 0 and cc != 0.0 and q > 0.0:
+                F[i, r] += (rho * pvol[i] + padd[i]) * aw[r]
+            if qa == qn:  # the same drag in every direction: 1/2 rho C_D A |u| u
                 for r in range(3):
-                    for c in range(3):
-                        hb[r, c] = q * mag * eye[r, c]
-                _drag_tangent(ur, 1.0, hb, q)
-                _add_block(band, bw, fidx[i], fidx[i], cc, hb)
+                    F[i, r] += qn * mag * ur[r]
+                if jac and fidx[i] >= 0 and cc != 0.0 and qn > 0.0:
+                    for r in range(3):
+                        for c in range(3):
+                            hb[r, c] = qn * mag * eye[r, c]
+                    _drag_tangent(ur, 1.0, hb, qn)
+                    _add_block(band, bw, fidx[i], fidx[i], cc, hb)
+            else:  # across and along the line's direction at the node (the mean of its elements' tangents)
+                _point_drag_split(ur, qn, qa, tnode[i], F[i], hb)
+                if jac and fidx[i] >= 0 and cc != 0.0:
+                    _add_block(band, bw, fidx[i], fidx[i], cc, hb)
+            if ql != 0.0:
+                point_lift(ur, ql, F[i], hb)
+                if jac and fidx[i] >= 0 and cc != 0.0:
+                    _add_block(band, bw, fidx[i], fidx[i], cc, hb)
         if alpha > 0.0:
             for r in range(3):
                 for c in range(3):

@@ -49,7 +49,11 @@ class Network:
     point_mass, point_added_mass : (n,) mass and isotropic added mass of attachments. [kg]
     point_weight : (n,) net weight in water of attachments, negative when buoyant. [N]
     point_volume : (n,) displaced volume of attachments (Froude-Krylov force). [m^3]
-    point_drag_area : (n,) C_D A of attachments. [m^2]
+    point_drag_area : (n,) C_D A of attachments (across the line when ``point_axial_drag_area`` differs). [m^2]
+    point_axial_drag_area : (n,) C_D A of attachments along the line; None: the same as across (an isotropic
+        drag ``1/2 rho C_D A |u| u``). [m^2]
+    point_lift_area : (n,) C_L A of attachments, lift positive up (:func:`seacable.mooring.kernel.point_lift`);
+        None: no lift. [m^2]
     elements : (e, 2) node indices of each element, end A first.
     length : (e,) unstretched length. [m]
     axial_stiffness : (e,) EA; for an element with a strain-tension table (``element_tension_strain``)
@@ -112,6 +116,8 @@ class Network:
     bending_stiffness: np.ndarray | None = None
     element_viscoelastic: np.ndarray | None = None
     element_syrope: np.ndarray | None = None
+    point_axial_drag_area: np.ndarray | None = None
+    point_lift_area: np.ndarray | None = None
 
     def hinge_arrays(self):
         """The inner nodes of the lines with bending stiffness as the kernel takes them.
@@ -181,6 +187,16 @@ class Network:
 
     def replace(self, **changes) -> Network:
         return dataclasses.replace(self, **changes)
+
+    def point_hydrodynamics(self) -> np.ndarray:
+        """The attachments' drag and lift areas (n, 3) as the kernel takes them (``kernel.P_CDA``,
+        ``P_CDA_AXIAL``, ``P_CLA``): C_D A across the line, along it (that across when not given) and C_L A. [m^2]"""
+        out = np.zeros((self.n_nodes, 3))
+        out[:, 0] = self.point_drag_area
+        out[:, 1] = self.point_drag_area if self.point_axial_drag_area is None else self.point_axial_drag_area
+        if self.point_lift_area is not None:
+            out[:, 2] = self.point_lift_area
+        return out
 
     def channel_positions(self, X=None) -> np.ndarray:
         """Positions (n_channels, 3) of the prescribed nodes in channel order, from ``X`` or at rest. [m]"""
@@ -358,7 +374,7 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         kind[-1] = PRESCRIBED
         channel[-1] = 0
     zeros = np.zeros(n)
-    pm, pa, pw, pv, pd = (zeros.copy() for _ in range(5))
+    pm, pa, pw, pv, pd, pda, pla = (zeros.copy() for _ in range(7))
     for att in line.attachments:
         i = int(np.argmin(np.abs(s - att.s)))
         pm[i] += att.mass
@@ -366,6 +382,8 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         pw[i] += att.net_weight(water_density, gravity)
         pv[i] += att.volume
         pd[i] += att.drag_area
+        pda[i] += att.drag_area if att.axial_drag_area is None else att.axial_drag_area
+        pla[i] += att.lift_area()
     return Network(
         position=position, kind=kind, channel=channel, point_mass=pm, point_added_mass=pa, point_weight=pw,
         point_volume=pv, point_drag_area=pd,
@@ -383,7 +401,8 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
-        bending_stiffness=line_bending(types), element_viscoelastic=line_viscoelastic(types))
+        bending_stiffness=line_bending(types), element_viscoelastic=line_viscoelastic(types),
+        point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None)
 
 
 def line_bending(types) -> np.ndarray | None:

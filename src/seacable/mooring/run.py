@@ -147,12 +147,13 @@ def _own_model(model: MooringModel) -> MooringModel:
     net = model.network
     point = ~np.isfinite(net.arc_length)
     loaded = point & ((net.point_mass != 0) | (net.point_weight != 0) | (net.point_volume != 0)
-                      | (net.point_drag_area != 0) | (net.point_added_mass != 0))
+                      | np.any(net.point_hydrodynamics() != 0, axis=1) | (net.point_added_mass != 0))
     if not np.any(loaded):
         return model
     keep = ~point
     own = MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
-        "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}), model.water)
+        "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area", "point_axial_drag_area",
+        "point_lift_area") if getattr(net, f) is not None}), model.water)
     own.sea, own._sea_spec = model.sea, model._sea_spec  # the irregular sea's grid of the run
     return own
 

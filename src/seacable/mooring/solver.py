@@ -332,7 +332,7 @@ class MooringModel:
         n = self.network
         return (n.elements, n.length, n.axial_stiffness, n.axial_damping, n.mass_per_length, n.diameter, n.cdn,
                 n.cdt, n.can, n.cat, self.weight, n.point_mass, n.point_added_mass, n.point_volume,
-                n.point_drag_area, self.bedc, self.buoyancy, self.point_buoyancy, *self.tension_strain,
+                n.point_hydrodynamics(), self.bedc, self.buoyancy, self.point_buoyancy, *self.tension_strain,
                 self.hinges, self.hinge_ei, self.visco)
 
     def evaluate(self, X, V, A, t=0.0, waves=True, settled=False):

@@ -196,7 +196,7 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
     """Integrate the steady equations piece after piece from the lower end (module docstring).
 
     ``pieces`` from the lower end up; ``joints[k]`` the (drag astern at the pieces' flow speed, drag that does
-    not follow the flow, net weight down) [N] of the point between piece k and k + 1, ``tail`` that of the
+    not follow the flow, net weight down, lift up at the pieces' flow speed) [N] of the point between piece k and k + 1, ``tail`` that of the
     lower end's body and its lift up at the pieces' flow speed (zeros: a free end). The tension's horizontal and vertical parts step by a joint's forces
     (its force balance). ``flow(z)``: the square of the flow speed at height z above the lower end relative to
     the pieces' (a current varying with depth; None: uniform), scaling every drag that follows the flow. ``s_out``: the unstretched arc lengths to
@@ -291,8 +291,8 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
         t1, phi1, x0, z0 = sol.y[:, -1]
         s0 = s1
         if k < len(joints):
-            qd, fd, down = joints[k]
-            h, vv = t1 * np.cos(phi1) + qd * flow(z0) + fd, t1 * np.sin(phi1) + down
+            qd, fd, down, up = joints[k]
+            h, vv = t1 * np.cos(phi1) + qd * flow(z0) + fd, t1 * np.sin(phi1) + down - up * flow(z0)
     y = np.array(ys)
     tension, angle = y[:, 0], y[:, 1]
     x = y[:, 2] - y[-1, 2]
@@ -497,18 +497,25 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     ends = np.cumsum([sg.length for sg in line.segments])
     cuts = {}
     for s in ends[:-1]:
-        cuts.setdefault(round(float(s) / tol_s), [float(s), 0.0, 0.0])
+        cuts.setdefault(round(float(s) / tol_s), [float(s), 0.0, 0.0, 0.0])
     # drag at the speed u (scaled by the flow), fixed drag, net weight down, lift up at the speed u
     tail = [0.5 * rho * cda * u * u, fdb, wb - lift, 0.5 * rho * cla * u * u]
-    for att in line.attachments:
-        drag, down = 0.5 * rho * att.drag_area * u * u, att.net_weight(rho, g)
+    for k, att in enumerate(line.attachments):
+        if att.axial_drag_area is not None and att.axial_drag_area != att.drag_area:
+            raise InputError(f"line.attachments[{k}] has a drag along the line ({att.axial_drag_area:g} m^2) other than "
+                             f"across it ({att.drag_area:g} m^2): the steady tow takes an attachment's drag along the "
+                             "flow. Suggested fix: give its drag in the flow as drag_area alone, or run towed_dynamic "
+                             "(its finite-element formulation takes both).")
+        drag, down, up = 0.5 * rho * att.drag_area * u * u, att.net_weight(rho, g), 0.5 * rho * att.lift_area() * u * u
         if att.s <= tol_s:
             tail[0] += drag
             tail[2] += down
+            tail[3] += 0.5 * rho * att.lift_area() * u * u
         elif att.s < total - tol_s:
-            c = cuts.setdefault(round(float(att.s) / tol_s), [float(att.s), 0.0, 0.0])
+            c = cuts.setdefault(round(float(att.s) / tol_s), [float(att.s), 0.0, 0.0, 0.0])
             c[1] += drag
             c[2] += down
+            c[3] += up
     joints = sorted(cuts.values())
     bounds = [0.0] + [j[0] for j in joints] + [total]
     pieces = []
@@ -521,7 +528,7 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         raise InputError(f"the lowest segment of the towed line floats (weight in water {pieces[0].w:.6g} N/m) and "
                          "has no body at its end: it has no steady shape below the tow point. Suggested fix: add a "
                          "body (body_weight) or a heavier line type.")
-    knots = [(j[1], 0.0, j[2]) for j in joints]
+    knots = [(j[1], 0.0, j[2], j[3]) for j in joints]
     s_out = np.linspace(0.0, total, n_points)
     what = f"body weight {wb:.6g} N, lift {lift:.6g} N"
     if profile is None or u == 0.0:

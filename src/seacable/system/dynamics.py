@@ -313,7 +313,7 @@ class SystemFE:
         net = m.network
         args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
                 net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
-                net.point_drag_area, m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain, m.hinges, m.hinge_ei,
+                net.point_hydrodynamics(), m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain, m.hinges, m.hinge_ei,
                 m.visco)
         return args
 

@@ -38,14 +38,17 @@ REFERENCES = (
 
 
 def case_setup(case: Case):
-    """Parameter vector, node count, vessel path (callable), body and solver keywords of a case."""
+    """Parameter vector, node count, vessel path (callable), body and solver keywords of a box-scheme case."""
     a: TowedDynamicAnalysis = case.analysis
     env = case.environment
     if len(case.line.segments) != 1 or case.line.attachments:
         raise InputError(
-            f"towed_dynamic models a uniform cable, but the line has {len(case.line.segments)} segment(s) "
-            f"and {len(case.line.attachments)} attachment(s). Suggested fix: give one line type and put a "
-            "weight at the lower end as 'analysis.body'.")
+            f"the box formulation of towed_dynamic models a uniform cable, but the line has "
+            f"{len(case.line.segments)} segment(s) and {len(case.line.attachments)} attachment(s). Suggested fix: "
+            "use formulation: finite_element (composite cables and bodies in line), or give one line type and put "
+            "a weight at the lower end as 'analysis.body'.")
+    if a.tangential_drag is None:
+        a = a.model_copy(update={"tangential_drag": "paper000"})
     lt = case.line.segments[0].line_type
     ei = lt.bending_stiffness
     if not (ei is not None and math.isfinite(ei) and ei > 0):
@@ -102,8 +105,21 @@ def _check_start_direction(a: TowedDynamicAnalysis, path, length: float) -> None
             SeacableWarning, stacklevel=3)
 
 
-def prepare_towed_dynamic(case: Case) -> PreparedTowed:
-    """Every check of a ``towed_dynamic`` case that can be made before its time loop.
+def prepare_towed_dynamic(case: Case):
+    """Every check of a ``towed_dynamic`` case that can be made before its time loop: the box scheme's
+    (:func:`prepare_towed_box`) or the finite-element formulation's
+    (:func:`seacable.towed.fe_run.prepare_towed_fe`)."""
+    in_range("line.length", case.line.length, 0.0, MAX_CABLE_LENGTH, "m",
+             "give the cable length in metres (the longest towed cables are about 12 km).")
+    if case.analysis.formulation == "finite_element":
+        from .fe_run import prepare_towed_fe
+
+        return prepare_towed_fe(case)
+    return prepare_towed_box(case)
+
+
+def prepare_towed_box(case: Case) -> PreparedTowed:
+    """Every check of a box-scheme ``towed_dynamic`` case that can be made before its time loop.
 
     The cable (one uniform segment, plausible length, bending stiffness > 0), the body, the vessel
     path over the whole run (a table must cover it; a velocity at t = 0 pointing against the path's
@@ -118,8 +134,6 @@ def prepare_towed_dynamic(case: Case) -> PreparedTowed:
         As :func:`run_towed_dynamic` would before its first step.
     """
     a: TowedDynamicAnalysis = case.analysis
-    in_range("line.length", case.line.length, 0.0, MAX_CABLE_LENGTH, "m",
-             "give the cable length in metres (the longest towed cables are about 12 km).")
     par, n, path, kwargs = case_setup(case)
     out = a.output_interval or a.time_step
     n_out = math.floor(a.duration / out + 1e-9)
@@ -132,12 +146,28 @@ def prepare_towed_dynamic(case: Case) -> PreparedTowed:
     body = kwargs["body"]
     h0 = steady_tow(par, n, vel0[0], kwargs["current"], body, water_density=kwargs["water_density"],
                     current_follows_vessel=kwargs["current_follows_vessel"])
-    warn_depth_not_modelled("towed_dynamic", case.environment.depth)
+    depth = case.environment.depth
+    if depth is not None:
+        from .equations import integrate_positions
+
+        pos = np.zeros((n, 3))
+        integrate_positions(h0, np.asarray(path(np.array([0.0]))[0][0], float), par, pos)
+        j = int(np.argmin(pos[:, 2]))
+        if pos[j, 2] < -depth:
+            raise InputError(
+                f"the steady tow that starts the run puts node {j}{' (the towed body)' if j == 0 and body else ''} "
+                f"{-pos[j, 2]:.4g} m deep, below the seabed at {depth:g} m (environment.depth), and the box "
+                "formulation has no seabed contact. Suggested fix: formulation: finite_element (seabed contact), "
+                "a shorter cable or a faster tow.")
+    warn_depth_not_modelled("towed_dynamic (box formulation)", depth)
     return PreparedTowed(par, n, path, kwargs, h0)
 
 
 def run_towed_dynamic(case: Case, progress=None):
     """Run a ``towed_dynamic`` case; see :func:`seacable.run`.
+
+    ``analysis.formulation``: ``finite_element`` (the default, :func:`seacable.towed.fe_run.run_towed_fe`) or
+    ``box`` (paper 000's scheme, below).
 
     The Dataset has dims ``time`` and ``node`` (node 0 at the lower end, the last at the vessel),
     coordinate ``s`` (unstretched arc length from the lower end) and the positions, forces,
@@ -145,6 +175,10 @@ def run_towed_dynamic(case: Case, progress=None):
     An interrupted run (Ctrl-C) returns what it computed, with the attribute ``interrupted = 1``.
     """
     a: TowedDynamicAnalysis = case.analysis
+    if a.formulation == "finite_element":
+        from .fe_run import run_towed_fe
+
+        return run_towed_fe(case, progress=progress)
     prep = prepare_towed_dynamic(case)
     n = prep.n_nodes
     res = simulate(prep.parameters, n, prep.path, a.duration, a.time_step, progress=progress,
@@ -196,7 +230,8 @@ def run_towed_dynamic(case: Case, progress=None):
     settings = dict(res.settings)
     settings.update({"n_nodes": n, "newton_iterations": res.iterations, "steps": res.steps,
                      "halved_steps": res.halvings, "wall_time_s": round(res.wall_time, 4),
-                     "interrupted": int(res.interrupted), "tangential_drag": a.tangential_drag,
+                     "interrupted": int(res.interrupted), "tangential_drag": a.tangential_drag or "paper000",
+                     "formulation": "box",
                      "current_follows_vessel": int(a.current_follows_vessel),
                      "scheme": "box (centred in s and t), Newton-Raphson, block tri-diagonal solve"})
     ds = make_dataset(data, coords, analysis="towed_dynamic", case=case, references=REFERENCES,

@@ -1,6 +1,6 @@
-"""Issue 17 items 5, 6 and 7 for towed_dynamic: the seabed it does not model is warned about and
-measured, the checks before the time loop are made by prepare_towed_dynamic, and the result carries
-the layback."""
+"""Issue 17 items 5, 6 and 7 for towed_dynamic's box formulation: the seabed it does not model is warned
+about and measured, the checks before the time loop are made by prepare_towed_dynamic, and the result
+carries the layback (the finite-element formulation's seabed contact: tests/validation/test_towed_fe.py)."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ DEPTH = 100.0
 def _sled(depth=DEPTH, **analysis):
     """Paper 000's cable with a 2 kN sled, towed at 2 m/s, slowing to 0.5 m/s from t = 5 s to 15 s:
     the sled sinks from about 45 m to more than 150 m below the surface."""
-    spec = dict(type="towed_dynamic",
+    spec = dict(type="towed_dynamic", formulation="box",
                 vessel=dict(type="speed_schedule", times=[0.0, 5.0, 15.0], speeds=[2.0, 2.0, 0.5]),
                 duration=60.0, time_step=0.5, output_interval=1.0, n_nodes=7,
                 body=dict(weight_in_water=2000.0, mass=250.0, added_mass=50.0, drag_area=0.5))
@@ -87,8 +87,8 @@ def test_layback_is_the_horizontal_distance_from_the_tow_point_to_the_sled(sled)
 def test_zero_bending_stiffness_is_refused_before_the_run():
     case = sc.Case.parse(dict(name="c", line_types={"c": {**CABLE, "bending_stiffness": 0.0}},
                               line={"line_type": "c", "length": 170.0},
-                              analysis=dict(type="towed_dynamic", vessel=dict(type="straight", speed=1.0),
-                                            duration=10.0)))
+                              analysis=dict(type="towed_dynamic", formulation="box",
+                                            vessel=dict(type="straight", speed=1.0), duration=10.0)))
     with pytest.raises(InputError, match=r"line.segments\[0\].line_type.bending_stiffness .*must be > 0 N m\^2 "
                                          r"for towed_dynamic, got 0.0 N m\^2"):
         sc.simulate.check(case)
