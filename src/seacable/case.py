@@ -178,6 +178,8 @@ class Winch(Model):
 
     rate: quantity("m/s") | None = Field(None, description="Pay-out rate, negative hauls in. [m/s]")
     start_time: quantity("s", ge=0) = Field(0.0, description="When the rate starts. [s]")
+    ramp: quantity("s", ge=0) = Field(0.0, description="Time over which the rate builds up from 0 (and, with a "
+                                                       "'length', falls back to 0 before it). [s]")
     length: quantity("m", gt=0) | None = Field(None, description="Deployed length at which the rate stops. [m]")
     times: tuple[float, ...] | None = Field(None, description="Times of a length table. [s]")
     lengths: tuple[float, ...] | None = Field(None, description="Deployed lengths at those times. [m]")
@@ -215,10 +217,32 @@ class Winch(Model):
         t = np.asarray(times, float)
         if self.rate is None:
             return np.interp(t, self.times, self.lengths)
-        run = np.clip(t - self.start_time, 0.0, None) * self.rate
+        tau = np.clip(t - self.start_time, 0.0, None)
+        r, ramp = abs(self.rate), self.ramp
+        # the rate's trapezoid: up over the ramp, constant, and (to a length) down over the ramp before it
+        run = r * (tau - 0.5 * ramp) if ramp == 0.0 else np.where(tau < ramp, 0.5 * r / ramp * tau ** 2,
+                                                                   r * (tau - 0.5 * ramp))
         if self.length is not None:
-            run = np.clip(run, *sorted((0.0, self.length - length0)))
-        return length0 + run
+            total = abs(self.length - length0)
+            end = total / r + ramp
+            if ramp > 0.0:
+                run = np.where(tau > end - ramp, total - 0.5 * r / ramp * np.clip(end - tau, 0.0, None) ** 2, run)
+            run = np.minimum(run, total)
+        return length0 + np.sign(self.rate) * run
+
+    def check_against(self, length0: float) -> None:
+        """Refuse a rate and a target length that do not fit the line's ``length0`` [m] at t = 0."""
+        if self.rate is None or self.length is None:
+            return
+        if (self.length - length0) * self.rate < 0:
+            raise InputError(f"analysis.winch: rate {self.rate:g} m/s {'pays out' if self.rate > 0 else 'hauls in'} "
+                             f"but the target length {self.length:g} m is {'shorter' if self.rate > 0 else 'longer'} "
+                             f"than the line's {length0:g} m. Suggested fix: give the rate the sign that reaches the "
+                             "length (positive pays out).")
+        if abs(self.length - length0) < abs(self.rate) * self.ramp:
+            raise InputError(f"analysis.winch: {abs(self.length - length0):g} m to go at {abs(self.rate):g} m/s is "
+                             f"shorter than the ramps up and down ({self.ramp:g} s each) take. Suggested fix: a "
+                             "shorter ramp or a smaller rate.")
 
 
 class TowedDynamicAnalysis(Model):
@@ -234,6 +258,10 @@ class TowedDynamicAnalysis(Model):
     formulation: Literal["finite_element", "box"] = Field(
         "finite_element", description="finite_element (paper 004's model) or box (paper 000's scheme).")
     winch: Winch | None = Field(None, description="Pay-out or haul-in at the tow point (finite_element).")
+    spectral_radius: quantity("-", ge=0, le=1, fix="use 0.7 (the default) or 1 for no numerical damping.") = Field(
+        0.7, description="finite_element: the generalised-alpha amplification per step of the modes far above "
+                         "1 / time_step (the axial modes a towed line's step does not resolve; 1: average "
+                         "acceleration, no numerical damping). [-]")
     seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
     vessel: VesselPath = Field(description="Tow-point motion: straight, speed_schedule, turn or table.")
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")

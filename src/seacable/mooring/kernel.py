@@ -82,10 +82,14 @@ E_BEDRAMP = 16
 E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
 E_SLACKDAMP = 18  # 1: the axial damper acts in slack elements too (MoorDyn's rule), 0: only in taut ones
 E_BEDFULL = 19  # 1: the seabed damper acts in full wherever the spring is linear (MoorDyn's rule), 0: ramped
-# velocity of the frame the nodes are seen in [m/s]: the water moves past them at (its velocity) - (this); 0 but in
-# the statics of a towed system, whose steady state is a static equilibrium in the frame moving with the vessel
+# velocity of the frame the nodes are seen in [m/s]: the water moves past them at (its velocity) - (this), the seabed
+# at -(this); 0 but in the statics of a towed system, whose steady state is a static equilibrium in the frame moving
+# with the vessel
 E_FRAMEX, E_FRAMEY, E_FRAMEZ = 20, 21, 22
-ENV_SIZE = 23
+# 1: the Newton matrix holds the drag's change with the elements' direction (:func:`_drag_turn`; a towed line, whose
+# shape the drag sets), 0: not (a mooring line, whose shape its weight and tension set: the terms cost time)
+E_DRAGTURN = 23
+ENV_SIZE = 24
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift
@@ -637,6 +641,47 @@ def _point_drag_split(u, qn, qa, tsum, f, out):
 
 
 @njit(cache=True)
+def _drag_turn(band, bw, fk, fa, fb, qn, qt, r0, r1, r2, t0, t1, t2, l, jt, blk):
+    """The Newton matrix's terms of a half element's drag turning with the element: K += -dF/dx at node k's row
+    (free index ``fk``), the columns of the element's ends a and b (``fa``, ``fb``; -1: prescribed).
+
+    With the water's relative velocity u, ``a = u . t``, ``u_n = u - a t``, the drag
+    ``F = qn |u_n| u_n + qt |a| a t`` (qn = 1/2 rho d L/2 C_dn, qt = the same with pi C_dt) changes with t as
+    ``dF/dt = -qn (|u_n| I + u_n u_n^T / |u_n|) (t u^T + a I) + qt |a| (2 t u^T + a I)``, and t with the ends as
+    ``dt/dx_b = -dt/dx_a = (I - t t^T) / l``."""
+    if fk < 0 or l <= 0.0:
+        return
+    a = r0 * t0 + r1 * t1 + r2 * t2
+    n0, n1, n2 = r0 - a * t0, r1 - a * t1, r2 - a * t2
+    mn = math.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
+    tv = (t0, t1, t2)
+    uv = (r0, r1, r2)
+    nv = (n0, n1, n2)
+    cun = qn / mn if mn > 0.0 else 0.0
+    for r in range(3):
+        for c in range(3):
+            blk[r, c] = 0.0
+    for r in range(3):
+        for m in range(3):
+            dn = qn * mn * (1.0 if r == m else 0.0) + cun * nv[r] * nv[m]
+            for c in range(3):
+                blk[r, c] -= dn * (tv[m] * uv[c] + (a if m == c else 0.0))
+        for c in range(3):
+            blk[r, c] += qt * abs(a) * (2.0 * tv[r] * uv[c] + (a if r == c else 0.0))
+    # jt = dF/dt (I - t t^T) / l
+    for r in range(3):
+        for c in range(3):
+            v = 0.0
+            for m in range(3):
+                v += blk[r, m] * ((1.0 if m == c else 0.0) - tv[m] * tv[c])
+            jt[r, c] = v / l
+    if fb >= 0:
+        _add_block(band, bw, fk, fb, -1.0, jt)
+    if fa >= 0:
+        _add_block(band, bw, fk, fa, 1.0, jt)
+
+
+@njit(cache=True)
 def point_lift(u, ql, f, out):
     """Lift ``ql (|u|^2 e_z - u_z u)`` of an attachment (``ql`` = 1/2 rho C_L A, positive up) added to ``f`` (3,),
     at the water's velocity ``u`` relative to it: across the flow, in the vertical plane through it, of size
@@ -703,6 +748,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     M[:] = 0.0
     tension[:] = 0.0
     jac = band.shape[0] > 0
+    turn = env[E_DRAGTURN] > 0.0
     # the small work arrays in two allocations (a call's fixed cost: 14 allocations were about 1 us)
     mats = np.zeros((3, 3, 3))
     eye, blk, hb = mats[0], mats[1], mats[2]
@@ -868,6 +914,9 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             F[k, 0] += dn * n0 + dt_ * t0
             F[k, 1] += dn * n1 + dt_ * t1
             F[k, 2] += dn * n2 + dt_ * t2
+            if jac and turn:
+                _drag_turn(band, bw, fidx[k], fidx[a], fidx[b], qd * cdn[e], qd * math.pi * cdt[e], r0, r1, r2, t0,
+                           t1, t2, l, blk, hb)
             M[k, 0, 0] += mc + md * t0 * t0
             M[k, 0, 1] += md * t0 * t1
             M[k, 0, 2] += md * t0 * t2
@@ -964,7 +1013,9 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 else:
                     q = pen
                     dq = 1.0
-                vn = nrm[0] * V[i, 0] + nrm[1] * V[i, 1] + nrm[2] * V[i, 2]
+                # the node's velocity over the seabed (which moves at -frame in a moving frame)
+                g0, g1, g2 = V[i, 0] + env[E_FRAMEX], V[i, 1] + env[E_FRAMEY], V[i, 2] + env[E_FRAMEZ]
+                vn = nrm[0] * g0 + nrm[1] * g1 + nrm[2] * g2
                 if bedfull:
                     ramp = dq
                     dramp = 0.5 / dl if pen < dl else 0.0
@@ -974,7 +1025,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 fn = kb * bedc[i] * q - cb * bedc[i] * ramp * vn
                 for r in range(3):
                     F[i, r] += fn * nrm[r]
-                    vt[r] = V[i, r] - vn * nrm[r]
+                    vt[r] = (g0 if r == 0 else g1 if r == 1 else g2) - vn * nrm[r]
                 s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
                 fr = mu * max(fn, 0.0) / s
                 if fr > 0.0:

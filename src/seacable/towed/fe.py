@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from ..mooring import kernel as K
 from ..mooring.network import FREE, Network, network_from_line
-from ..mooring.solver import MooringModel, Water, advance_interval, static_equilibrium
+from ..mooring.solver import MooringModel, Water, advance_interval, generalized_alpha, static_equilibrium
 from . import fe_kernel as FK
 
 __all__ = ["TowedFERun", "TowedSystem", "hanging_tension", "simulate_towed", "steady_start", "towed_system"]
@@ -56,7 +56,9 @@ class TowedSystem:
     model: MooringModel
     element_length: float
     lock: float
-    body_node: int = 0
+    line: object = None
+    body: object = None
+    tangential_drag: str = "common"
 
 
 def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tangential_drag: str = "common",
@@ -101,18 +103,49 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
     # the paid-out type's element length: the top segment's (its elements are equal between break points)
     seg_top = net.arc_length >= lock - 1e-9 * L
     top_ds = float(np.max(np.diff(net.arc_length[seg_top]))) if np.count_nonzero(seg_top) > 1 else top_ds
-    return TowedSystem(MooringModel(net, water), top_ds, float(lock))
+    model = MooringModel(net, water)
+    model.env[K.E_DRAGTURN] = 1.0  # the drag sets a towed line's shape: its turning terms in the Newton matrix
+    return TowedSystem(model, top_ds, float(lock), line, body, tangential_drag)
 
 
-def _guess(net: Network, top, flow, depth) -> np.ndarray:
-    """Node positions to start the static solve from: a straight line astern of the flow ``flow`` (the water's
-    velocity past the tow point in the moving frame) at 45 degrees down, or hanging straight down in still
-    water; held above a seabed at ``depth`` [m]."""
-    s_up = net.arc_length[-1] - net.arc_length  # arc length below the tow point
-    u = np.array([flow[0], flow[1], 0.0])
-    speed = float(np.hypot(u[0], u[1]))
-    direction = np.array([0.0, 0.0, -1.0]) if speed < 1e-9 else (u / speed + np.array([0.0, 0.0, -1.0])) / math.sqrt(2)
-    X = np.asarray(top, float) + np.outer(s_up, direction)
+def _steady_guess(system: TowedSystem, top, flow):
+    """Node positions of the 2-D steady tow (:func:`seacable.statics.towed_line_steady`) in the flow ``flow(z)``
+    -> the water's velocity (3,) past the tow point's frame at depth z, laid out astern along the flow at the
+    surface; None where that solution does not apply (the flow turning with depth, against the tow at some
+    depth, a line that floats, an attachment's drag along the line)."""
+    from ..errors import SeacableError
+    from ..statics.towed import towed_line_steady
+
+    net = system.model.network
+    water = system.model.water
+    f0 = flow(0.0)
+    speed0 = float(np.hypot(f0[0], f0[1]))
+    if speed0 < 1e-6 or system.line is None:
+        return None
+    e = np.array([f0[0], f0[1], 0.0]) / speed0
+    depths = np.asarray(water.current_depths, float)
+    along = np.array([float(np.dot(flow(-d), e)) for d in depths])
+    across = np.array([abs(float(np.cross(flow(-d), e)[2])) for d in depths])
+    if np.any(across > 1e-9 * speed0):
+        return None
+    speed = speed0 if len(depths) == 1 else (tuple(depths), tuple(along))
+    b = system.body
+    try:
+        res, _ = towed_line_steady(
+            system.line, speed, water_density=water.density, gravity=water.gravity,
+            body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.drag_area if b else 0.0,
+            body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag, n_points=401)
+    except (SeacableError, ValueError):
+        return None
+    s = net.arc_length
+    x = np.interp(s, res.s, res.x)
+    z = np.interp(s, res.s, res.z)
+    return np.asarray(top, float) + x[:, None] * e[None, :] + z[:, None] * np.array([0.0, 0.0, 1.0])
+
+
+def _hanging(net: Network, top, depth):
+    """Node positions hanging straight down from ``top``, held above a seabed at ``depth`` [m]."""
+    X = np.asarray(top, float) + np.outer(net.arc_length[-1] - net.arc_length, (0.0, 0.0, -1.0))
     if depth is not None:
         X[:, 2] = np.maximum(X[:, 2], -float(depth) + 1e-3)
     return X
@@ -122,6 +155,9 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
     """The steady tow behind the tow point at ``top`` moving at ``velocity`` (3,) [m/s]: the static equilibrium
     in the frame moving with it (module docstring). Returns the node positions (n, 3) [m].
 
+    The static solve starts from the 2-D steady tow's shape where that applies (:func:`_steady_guess`), else
+    from the cable hanging at rest, its frame's speed raised in steps (each solve starting from the last).
+
     Raises
     ------
     ConvergenceError
@@ -129,23 +165,36 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
     """
     model = system.model
     net = model.network
-    X0 = net.position.copy()
-    X0[-1] = top
-    v = np.asarray(velocity, float)
     water = model.water
-    cur = water.current_speeds[0] if len(water.current_speeds) == 1 else 0.0
-    flow = np.array([cur * math.cos(water.current_heading), cur * math.sin(water.current_heading), 0.0]) - v
-    X0 = _guess(net, top, flow, water.depth)
-    moving = MooringModel(net.replace(position=X0), water)
-    moving.env[[K.E_FRAMEX, K.E_FRAMEY, K.E_FRAMEZ]] = v
+    v = np.asarray(velocity, float)
+    heading = np.array([math.cos(water.current_heading), math.sin(water.current_heading), 0.0])
+
+    def flow(z):
+        c = float(np.interp(-z, water.current_depths, water.current_speeds))
+        return c * heading - v
+
+    def solve(X0, frame):
+        moving = MooringModel(net.replace(position=X0), water)
+        moving.env[[K.E_FRAMEX, K.E_FRAMEY, K.E_FRAMEZ]] = frame
+        moving.env[K.E_DRAGTURN] = 1.0
+        return static_equilibrium(moving, X0).position
+
     try:
-        st = static_equilibrium(moving, X0)
+        guess = _steady_guess(system, top, flow)
+        if guess is not None:
+            try:
+                return solve(guess, v)
+            except ConvergenceError:
+                pass
+        X = _hanging(net, top, water.depth)
+        for f in (0.0, 0.25, 0.5, 0.75, 1.0) if np.any(v) else (1.0,):
+            X = solve(X, f * v)
+        return X
     except ConvergenceError as err:
         raise ConvergenceError(
             f"the steady tow that starts the towed_dynamic run did not converge (tow point moving at "
             f"({v[0]:.4g}, {v[1]:.4g}, {v[2]:.4g}) m/s): {err}", iterations=err.iterations,
             residual=err.residual) from None
-    return st.position
 
 
 def hanging_tension(system: TowedSystem, X) -> np.ndarray:
@@ -191,7 +240,7 @@ def _grown(a, rows, fill=0.0):
 
 def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output_interval: float, *,
                    deployed=None, initial=None, tol: float = TOLERANCE, max_iter: int = 30, max_halvings: int = 6,
-                   progress=None, chunk_seconds: float = 0.25) -> TowedFERun:
+                   spectral_radius: float = 1.0, progress=None, chunk_seconds: float = 0.25) -> TowedFERun:
     """Newmark (average acceleration) time stepping of ``system`` behind the tow point ``path(times)`` ->
     (positions, velocities) (n, 3), from the steady tow (``initial`` positions, default :func:`steady_start`).
 
@@ -281,12 +330,14 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
               top, nact, arc)
     stats = np.zeros(3)
     count = np.zeros(3, np.int64)
-    beta, gamma = 0.25, 0.5
+    alpha_m, alpha_f, beta, gamma = generalized_alpha(spectral_radius)
+    # the step start's share of the generalised-alpha equilibrium, from the loads record() left in F and M
+    K.alpha_history(F[:n0], M[:n0], Ac[:n0], G[:n0], alpha_m, alpha_f, fidx[:n0])
 
     def steps(t, dtk, px, pv, pa):
         ls = lengths(t + dtk * np.arange(1, px.shape[0] + 1))
         return FK.towed_steps(ia, Xc, Vc, Ac, G, t, dtk, px, pv, pa, ls, system.element_length, system.lock, s_node,
-                              wpl, pw, args, fidx, channel, bw, env, cd, cs, sea, beta, gamma, 0.0, 0.0, tol,
+                              wpl, pw, args, fidx, channel, bw, env, cd, cs, sea, beta, gamma, alpha_m, alpha_f, tol,
                               max_iter, F, M, tension, stats, band, R, D, Xn, Vn, An, envw)
 
     fix = "a smaller time_step, more nodes, or a smoother vessel path or winch schedule"
@@ -303,7 +354,8 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
             tick = _time.perf_counter()
             got = FK.towed_outputs(k, k1, output_interval, h, sub, px, pv, pa, ls, ia, Xc, Vc, Ac, G,
                                    system.element_length, system.lock, s_node, wpl, pw, args, fidx, channel, bw, env,
-                                   env, cd, cs, sea, beta, gamma, 0.0, 0.0, tol, max_iter, F, M, tension, stats, count,
+                                   env, cd, cs, sea, beta, gamma, alpha_m, alpha_f, tol, max_iter, F, M, tension, stats,
+                                   count,
                                    band, R, D, Xn, Vn, An, envw, times[k:], pos[k:], vel[k:], ten[k:], top[k:],
                                    nact[k:], arc[k:])
             if got < k1:  # a step failed: the rest of that interval at halved steps

@@ -64,17 +64,25 @@ def _copy_element(src, dst, arrays, ts_lo, ts_hi, visco):
 
 
 @njit(cache=True)
-def _birth(ia, X, V, A, G, L0, ds, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node):
-    """A node born ``ds`` above node n - 2 (module docstring); the tow point moves to the next slot."""
+def _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node):
+    """A node born ``ds`` above node n - 2 (module docstring); the tow point moves to the next slot.
+
+    The top element's unstretched length is still the step start's: the new node goes on its chord at the
+    fraction ``ds / ell`` (both pieces keep the element's strain), with the velocity and acceleration of the
+    material there, linear between node n - 2's and the material's at the tow point (the tow point's plus the
+    pay-out ``rate`` [m/s] down the chord)."""
     n = ia[I_N]
     j = n - 1  # the new node's slot, the tow point's until now
     below = n - 2
     ell = L0[below]
-    f = ds / ell
+    f = min(ds / ell, 1.0) if ell > 0.0 else 1.0
+    d0, d1, d2 = X[below, 0] - X[j, 0], X[below, 1] - X[j, 1], X[below, 2] - X[j, 2]
+    chord = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    down = (d0 / chord, d1 / chord, d2 / chord) if chord > 0.0 else (0.0, 0.0, -1.0)
     for r in range(3):
         X[n, r], V[n, r], A[n, r], G[n, r] = X[j, r], V[j, r], A[j, r], 0.0
         X[j, r] = X[below, r] + f * (X[n, r] - X[below, r])
-        V[j, r] = V[below, r] + f * (V[n, r] - V[below, r])
+        V[j, r] = V[below, r] + f * (V[n, r] + rate * down[r] - V[below, r])
         A[j, r] = A[below, r] + f * (A[n, r] - A[below, r])
         G[j, r] = G[below, r]
     _copy_element(below, j, elems, ts_lo, ts_hi, visco)
@@ -115,16 +123,16 @@ def _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node):
 
 
 @njit(cache=True)
-def _set_length(ia, length, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei,
-                s_node, wpl, dia, pw, weight, bedc):
-    """The top element to the deployed ``length`` [m], with the node births and retirements it calls for."""
-    n = ia[I_N]
-    L0[n - 2] = length - s_node[n - 2]
-    while L0[ia[I_N] - 2] > SPLIT * ds and ia[I_N] < X.shape[0]:
-        _birth(ia, X, V, A, G, L0, ds, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node)
-    while L0[ia[I_N] - 2] < MERGE * ds and s_node[ia[I_N] - 2] > s_lock and ia[I_N] > 2:
+def _set_length(ia, length, rate, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
+                hinge_ei, s_node, wpl, dia, pw, weight, bedc):
+    """The top element to the deployed ``length`` [m] at the step's end, with the node births and retirements it
+    calls for (made on the state at the step's start), ``rate`` [m/s] the pay-out over the step."""
+    while length - s_node[ia[I_N] - 2] > SPLIT * ds and ia[I_N] < X.shape[0]:
+        _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node)
+    while length - s_node[ia[I_N] - 2] < MERGE * ds and s_node[ia[I_N] - 2] > s_lock and ia[I_N] > 2:
         _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node)
     n = ia[I_N]
+    L0[n - 2] = length - s_node[n - 2]
     s_node[n - 1] = length
     for i in range(max(n - 3, 0), n):
         refresh_node(i, n, L0, wpl, dia, pw, weight, bedc)
@@ -142,7 +150,7 @@ def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node,
     elems = (EA, cdamp, mpl, dia, cdn, cdt, can, cat, buoy, wpl)
     for k in range(px.shape[0]):
         if not math.isnan(lengths[k]):
-            _set_length(ia, lengths[k], ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
+            _set_length(ia, lengths[k], (lengths[k] - s_node[ia[I_N] - 1]) / dt, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
                         hinge_ei, s_node, wpl, dia, pw, weight, bedc)
         n = ia[I_N]
         ne = n - 1

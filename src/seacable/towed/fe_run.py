@@ -57,10 +57,7 @@ def _checked_winch(a: TowedDynamicAnalysis, system: TowedSystem, length: float):
         raise InputError(f"analysis.winch: the pay-out table starts at t = {w.times[0]:g} s with {w.lengths[0]:g} m "
                          f"deployed, but the line is {length:g} m long before it. Suggested fix: start the table "
                          "at t = 0 with the line's length.")
-    if w.rate is not None and w.length is not None and (w.length - length) * w.rate < 0:
-        raise InputError(f"analysis.winch: rate {w.rate:g} m/s {'pays out' if w.rate > 0 else 'hauls in'} but the "
-                         f"target length {w.length:g} m is {'shorter' if w.rate > 0 else 'longer'} than the line's "
-                         f"{length:g} m. Suggested fix: give the rate's sign to reach the length (positive pays out).")
+    w.check_against(length)
     times = np.linspace(0.0, a.duration, max(2, math.ceil(a.duration / a.time_step) + 1))
     if w.times is not None:
         times = np.union1d(times, np.clip(w.times, 0.0, a.duration))
@@ -149,7 +146,8 @@ def run_towed_fe(case: Case, progress=None):
     prep = prepare_towed_dynamic(case)
     out = a.output_interval or a.time_step
     res = simulate_towed(prep.system, prep.path, a.duration, a.time_step, out, deployed=prep.deployed,
-                         initial=prep.initial, tol=TOLERANCE, max_iter=a.max_iterations, progress=progress)
+                         initial=prep.initial, tol=TOLERANCE, max_iter=a.max_iterations,
+                         spectral_radius=a.spectral_radius, progress=progress)
     pos, vel = res.position, res.velocity
     tow = res.vessel_position
     td = ("time", "node")
@@ -209,7 +207,7 @@ def run_towed_fe(case: Case, progress=None):
                 "newton_iterations": res.iterations, "steps": res.steps, "node_births": res.births,
                 "node_retirements": res.retirements, "wall_time_s": round(res.wall_time, 4),
                 "interrupted": int(res.interrupted), "tangential_drag": a.tangential_drag or "common",
-                "element_length_m": prep.system.element_length,
+                "element_length_m": prep.system.element_length, "spectral_radius": a.spectral_radius,
                 "scheme": "lumped masses on elastic elements (paper 004), Newmark average acceleration, Newton, "
                           "banded LU"}
     ds = make_dataset(data, coords, analysis="towed_dynamic", case=case, references=REFERENCES, settings=settings)
