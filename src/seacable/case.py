@@ -135,6 +135,9 @@ class TowedBody(Lifting):
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
     mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air; needed (> 0) by towed_dynamic. [kg]")
     added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass (isotropic). [kg]")
+    seabed_area: quantity("m^2", ge=0) = Field(
+        1.0, description="Area the body bears on the seabed with (towed_dynamic, finite_element): its contact "
+                         "force is seabed_contact.stiffness times this times its penetration. [m^2]")
 
 
 class TowedSteadyAnalysis(Model):

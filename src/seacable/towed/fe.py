@@ -28,6 +28,7 @@ References
 
 from __future__ import annotations
 
+import copy
 import math
 import time as _time
 from dataclasses import dataclass
@@ -59,6 +60,7 @@ class TowedSystem:
     line: object = None
     body: object = None
     tangential_drag: str = "common"
+    point_contact: np.ndarray | None = None  # (n,) seabed contact area of the body [m^2]
 
 
 def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tangential_drag: str = "common",
@@ -105,7 +107,11 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
     top_ds = float(np.max(np.diff(net.arc_length[seg_top]))) if np.count_nonzero(seg_top) > 1 else top_ds
     model = MooringModel(net, water)
     model.env[K.E_DRAGTURN] = 1.0  # the drag sets a towed line's shape: its turning terms in the Newton matrix
-    return TowedSystem(model, top_ds, float(lock), line, body, tangential_drag)
+    contact = np.zeros(net.n_nodes)
+    if body is not None:
+        contact[0] = body.seabed_area
+        model.bedc[0] += contact[0]
+    return TowedSystem(model, top_ds, float(lock), line, body, tangential_drag, contact)
 
 
 def _steady_guess(system: TowedSystem, top, flow):
@@ -131,11 +137,14 @@ def _steady_guess(system: TowedSystem, top, flow):
     speed = speed0 if len(depths) == 1 else (tuple(depths), tuple(along))
     b = system.body
     try:
-        res, _ = towed_line_steady(
-            system.line, speed, water_density=water.density, gravity=water.gravity,
-            body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.drag_area if b else 0.0,
-            body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag, n_points=401)
+        with np.errstate(all="ignore"):  # a weightless line: no 2-D solution (the static solve starts otherwise)
+            res, _ = towed_line_steady(
+                system.line, speed, water_density=water.density, gravity=water.gravity,
+                body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.drag_area if b else 0.0,
+                body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag, n_points=401)
     except (SeacableError, ValueError):
+        return None
+    if not (np.all(np.isfinite(res.x)) and np.all(np.isfinite(res.z))):
         return None
     s = net.arc_length
     x = np.interp(s, res.s, res.x)
@@ -143,12 +152,14 @@ def _steady_guess(system: TowedSystem, top, flow):
     return np.asarray(top, float) + x[:, None] * e[None, :] + z[:, None] * np.array([0.0, 0.0, 1.0])
 
 
-def _hanging(net: Network, top, depth):
-    """Node positions hanging straight down from ``top``, held above a seabed at ``depth`` [m]."""
-    X = np.asarray(top, float) + np.outer(net.arc_length[-1] - net.arc_length, (0.0, 0.0, -1.0))
-    if depth is not None:
-        X[:, 2] = np.maximum(X[:, 2], -float(depth) + 1e-3)
-    return X
+def _hanging(net: Network, top, depth, astern):
+    """Node positions hanging straight down from ``top`` and, on a seabed at ``depth`` [m], laid along it in the
+    horizontal direction ``astern`` (3,)."""
+    below = net.arc_length[-1] - net.arc_length  # arc length below the tow point
+    top = np.asarray(top, float)
+    drop = below if depth is None else np.minimum(below, max(top[2] + float(depth) - 1e-3, 0.0))
+    X = top + np.outer(drop, (0.0, 0.0, -1.0))
+    return X + np.outer(below - drop, astern)
 
 
 def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
@@ -174,10 +185,11 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
         return c * heading - v
 
     def solve(X0, frame):
-        moving = MooringModel(net.replace(position=X0), water)
+        moving = copy.copy(model)  # the same arrays (the body's seabed area among them), its own environment
+        moving.env = model.env.copy()
         moving.env[[K.E_FRAMEX, K.E_FRAMEY, K.E_FRAMEZ]] = frame
-        moving.env[K.E_DRAGTURN] = 1.0
-        return static_equilibrium(moving, X0).position
+        # the steps may move a node by 2 % of the line (the shape changes over tens of metres from the start)
+        return static_equilibrium(moving, X0, max_step=0.02 * float(net.arc_length[-1])).position
 
     try:
         guess = _steady_guess(system, top, flow)
@@ -186,8 +198,11 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
                 return solve(guess, v)
             except ConvergenceError:
                 pass
-        X = _hanging(net, top, water.depth)
-        for f in (0.0, 0.25, 0.5, 0.75, 1.0) if np.any(v) else (1.0,):
+        f0 = flow(0.0)
+        speed = float(np.hypot(f0[0], f0[1]))
+        astern = np.array([f0[0] / speed, f0[1] / speed, 0.0]) if speed > 0.0 else np.array([1.0, 0.0, 0.0])
+        X = _hanging(net, top, water.depth, astern)
+        for f in (0.25, 0.5, 0.75, 1.0) if np.any(v) else (1.0,):
             X = solve(X, f * v)
         return X
     except ConvergenceError as err:
@@ -305,6 +320,7 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
     wpl = _grown(net.weight_per_length, cap - 1)
     wpl[ne:] = net.weight_per_length[-1]
     pw = _grown(net.point_weight, cap)
+    pc = _grown(system.point_contact, cap)
     s_node = _grown(net.arc_length, cap, np.nan)
     fidx = np.full(cap, -1, np.int64)
     fidx[:n0 - 1] = np.arange(n0 - 1)
@@ -337,7 +353,7 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
     def steps(t, dtk, px, pv, pa):
         ls = lengths(t + dtk * np.arange(1, px.shape[0] + 1))
         return FK.towed_steps(ia, Xc, Vc, Ac, G, t, dtk, px, pv, pa, ls, system.element_length, system.lock, s_node,
-                              wpl, pw, args, fidx, channel, bw, env, cd, cs, sea, beta, gamma, alpha_m, alpha_f, tol,
+                              wpl, pw, pc, args, fidx, channel, bw, env, cd, cs, sea, beta, gamma, alpha_m, alpha_f, tol,
                               max_iter, F, M, tension, stats, band, R, D, Xn, Vn, An, envw)
 
     fix = "a smaller time_step, more nodes, or a smoother vessel path or winch schedule"
@@ -353,7 +369,7 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
             ls = lengths(tg.ravel())
             tick = _time.perf_counter()
             got = FK.towed_outputs(k, k1, output_interval, h, sub, px, pv, pa, ls, ia, Xc, Vc, Ac, G,
-                                   system.element_length, system.lock, s_node, wpl, pw, args, fidx, channel, bw, env,
+                                   system.element_length, system.lock, s_node, wpl, pw, pc, args, fidx, channel, bw, env,
                                    env, cd, cs, sea, beta, gamma, alpha_m, alpha_f, tol, max_iter, F, M, tension, stats,
                                    count,
                                    band, R, D, Xn, Vn, An, envw, times[k:], pos[k:], vel[k:], ten[k:], top[k:],

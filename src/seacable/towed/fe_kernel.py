@@ -38,10 +38,11 @@ I_N, I_NFREE, I_BORN, I_GONE = 0, 1, 2, 3
 
 
 @njit(cache=True)
-def refresh_node(i, n, L0, wpl, dia, pw, weight, bedc):
-    """Weight in water [N] and seabed contact area [m^2] of node ``i`` of ``n`` from its elements' lengths."""
+def refresh_node(i, n, L0, wpl, dia, pw, pc, weight, bedc):
+    """Weight in water [N] and seabed contact area [m^2] of node ``i`` of ``n`` from its elements' lengths, its
+    attachments' weight ``pw`` and contact area ``pc`` (a body's)."""
     w = pw[i]
-    c = 0.0
+    c = pc[i]
     if i > 0:
         w += 0.5 * wpl[i - 1] * L0[i - 1]
         c += 0.5 * dia[i - 1] * L0[i - 1]
@@ -124,7 +125,7 @@ def _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node):
 
 @njit(cache=True)
 def _set_length(ia, length, rate, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
-                hinge_ei, s_node, wpl, dia, pw, weight, bedc):
+                hinge_ei, s_node, wpl, dia, pw, pc, weight, bedc):
     """The top element to the deployed ``length`` [m] at the step's end, with the node births and retirements it
     calls for (made on the state at the step's start), ``rate`` [m/s] the pay-out over the step."""
     while length - s_node[ia[I_N] - 2] > SPLIT * ds and ia[I_N] < X.shape[0]:
@@ -135,11 +136,11 @@ def _set_length(ia, length, rate, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_h
     L0[n - 2] = length - s_node[n - 2]
     s_node[n - 1] = length
     for i in range(max(n - 3, 0), n):
-        refresh_node(i, n, L0, wpl, dia, pw, weight, bedc)
+        refresh_node(i, n, L0, wpl, dia, pw, pc, weight, bedc)
 
 
 @njit(cache=True)
-def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node, wpl, pw, args, fidx, channel, bw,
+def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node, wpl, pw, pc, args, fidx, channel, bw,
                 env, cur_depth, cur_speed, sea, beta, gamma, alpha_m, alpha_f, tol, max_iter, F, M, tension, stats,
                 band, R, D, Xn, Vn, An, envw):
     """Advance ``px.shape[0]`` steps of ``dt`` from ``t0`` (:func:`seacable.mooring.kernel.newmark_work`, one
@@ -151,7 +152,7 @@ def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node,
     for k in range(px.shape[0]):
         if not math.isnan(lengths[k]):
             _set_length(ia, lengths[k], (lengths[k] - s_node[ia[I_N] - 1]) / dt, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
-                        hinge_ei, s_node, wpl, dia, pw, weight, bedc)
+                        hinge_ei, s_node, wpl, dia, pw, pc, weight, bedc)
         n = ia[I_N]
         ne = n - 1
         nf = ia[I_NFREE]
@@ -202,7 +203,7 @@ def record(row, t, ia, X, V, A, args, fidx, bw, env, cur_depth, cur_speed, sea, 
 
 
 @njit(cache=True)
-def towed_outputs(k0, k1, interval, h, sub, px, pv, pa, lengths, ia, X, V, A, G, ds, s_lock, s_node, wpl, pw, args,
+def towed_outputs(k0, k1, interval, h, sub, px, pv, pa, lengths, ia, X, V, A, G, ds, s_lock, s_node, wpl, pw, pc, args,
                   fidx, channel, bw, env, env_rec, cur_depth, cur_speed, sea, beta, gamma, alpha_m, alpha_f, tol,
                   max_iter, F, M, tension, stats, count, band, R, D, Xn, Vn, An, envw, times, pos, vel, ten, top, nact,
                   arc):
@@ -213,7 +214,7 @@ def towed_outputs(k0, k1, interval, h, sub, px, pv, pa, lengths, ia, X, V, A, G,
         j0 = (k - k0) * sub
         stats[0] = 0.0
         got = towed_steps(ia, X, V, A, G, k * interval, h, px[j0:j0 + sub], pv[j0:j0 + sub], pa[j0:j0 + sub],
-                          lengths[j0:j0 + sub], ds, s_lock, s_node, wpl, pw, args, fidx, channel, bw, env, cur_depth,
+                          lengths[j0:j0 + sub], ds, s_lock, s_node, wpl, pw, pc, args, fidx, channel, bw, env, cur_depth,
                           cur_speed, sea, beta, gamma, alpha_m, alpha_f, tol, max_iter, F, M, tension, stats, band, R,
                           D, Xn, Vn, An, envw)
         count[0] += got
