@@ -98,3 +98,64 @@ def test_the_newton_matrix_is_the_derivative_of_the_forces(which, atol):
     scale = np.abs(want).max()
     assert scale > (1e6 if which == "K" else 1e5)
     np.testing.assert_allclose(got, want, rtol=0, atol=atol)
+
+
+def _towed_state():
+    """A towed line in a 2 m/s flow (the frame moving with the vessel), with the drag's turning terms on: a body
+    with lift at the end, a lifting clump in line, moving nodes."""
+    from seacable.case import TowedBody
+    from seacable.towed.fe import steady_start, towed_system
+
+    cable = sc.LineType(diameter=0.03, mass_per_length=2.0, axial_stiffness=4e6, drag_normal=1.5,
+                        drag_tangential=0.02)
+    clump = sc.PointMass(s=60.0, mass=200.0, weight_in_water=1500.0, drag_area=0.3, lift_coefficient=-0.5,
+                         reference_area=0.4)
+    body = TowedBody(mass=300.0, weight_in_water=2000.0, drag_area=0.4, lift_coefficient=0.6, reference_area=1.0)
+    system = towed_system(sc.Line.single(cable, 200.0, attachments=(clump,)), (0.0, 0.0, 0.0),
+                          Water(depth=None, current_speeds=(0.3,), current_heading=0.4), n_nodes=21, body=body)
+    X = steady_start(system, (0.0, 0.0, 0.0), (2.0, 0.0, 0.0))
+    model = system.model
+    model.env[[K.E_FRAMEX, K.E_FRAMEY, K.E_FRAMEZ]] = (2.0, 0.0, 0.0)
+    rng = np.random.default_rng(3)
+    X[:-1] += rng.normal(0.0, 0.05, X[:-1].shape)
+    V = rng.normal(0.0, 0.3, X.shape)
+    return model, X, V
+
+
+@pytest.mark.parametrize(("which", "atol"), [("K", 1e-2), ("C", 1e-2)])
+def test_a_towed_lines_newton_matrix_is_the_derivative_of_its_forces(which, atol):
+    """The same check on a towed line, whose shape the drag sets: with ``E_DRAGTURN`` the drag's change with the
+    elements' direction is in K (about 10-100 N/m here, against geometric stiffnesses T / l of a few 100 N/m),
+    and the lift of the body and of a clump in line (1/2 rho C_L A (|u|^2 e_z - u_z u)) is in C. Nothing is left
+    out: both to their round-off, 1e-2 (a dropped turning term or a lift tangent of the wrong sign is 1 to 1e3)."""
+    model, X, V = _towed_state()
+    nd = 3 * model.nfree
+    band = np.zeros((nd, 2 * model.bw + 1))
+    _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
+    if which == "C":
+        k_only = np.zeros_like(band)
+        _forces(model, X, V, k_only, cc=0.0)
+        band = band - k_only
+    got = _dense(model, band)
+    free = np.flatnonzero(model.fidx >= 0)
+    want = np.zeros((nd, nd))
+    h = 1e-6
+    for i in free:
+        for r in range(3):
+            Xp, Xm, Vp, Vm = X.copy(), X.copy(), V.copy(), V.copy()
+            if which == "K":
+                Xp[i, r] += h
+                Xm[i, r] -= h
+            else:
+                Vp[i, r] += h
+                Vm[i, r] -= h
+            dF = (_forces(model, Xp, Vp)[0] - _forces(model, Xm, Vm)[0]) / (2 * h)
+            for j in free:
+                want[3 * model.fidx[j]:3 * model.fidx[j] + 3, 3 * model.fidx[i] + r] = -dF[j]
+    np.testing.assert_allclose(got, want, rtol=0, atol=atol)
+    # the terms under test are there: the turning terms without E_DRAGTURN, the lift's without lift, differ
+    model.env[K.E_DRAGTURN] = 0.0
+    bare = np.zeros_like(band)
+    _forces(model, X, V, bare, cc=1.0 if which == "C" else 0.0)
+    if which == "K":
+        assert np.abs(_dense(model, bare) - got).max() > 10.0

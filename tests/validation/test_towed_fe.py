@@ -9,6 +9,7 @@ frictional catenary of a sled dragged on the seabed, and paper 000's box scheme 
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -110,14 +111,14 @@ def test_a_lifting_body_on_a_weightless_line_balances_its_forces(heading):
 
 def test_the_hanging_cable_started_from_rest_has_the_exact_tension():
     """The vessel at rest in still water (the box scheme's singular case): the cable hangs straight down and each
-    element's tension is W_body + w s at its middle (the lumped model is exact there), to 1e-9 relative, and
-    stays so over a run (velocities below 1e-9 m/s)."""
-    case = sc.Case.parse(dict(
-        name="hang", line_types={"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
+    element's tension is W_body + w s at its middle (the lumped model is exact there), to 1e-7 relative (the time
+    steps' Newton tolerance, 1e-7 of the largest tension), and stays so over a run (velocities below 1e-6 m/s)."""
+    case = sc.Case.parse({
+        "name": "hang", "line_types": {"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
                                        "drag_normal": 1.5, "drag_tangential": 0.01}},
-        line={"line_type": "c", "length": 300.0}, environment={"water_density": RHO},
-        analysis={"type": "towed_dynamic", "vessel": {"type": "straight", "speed": 0.0}, "duration": 20.0,
-                  "time_step": 1.0, "n_nodes": 31, "body": {"mass": 400.0, "weight_in_water": 3000.0}}))
+        "line": {"line_type": "c", "length": 300.0}, "environment": {"water_density": RHO},
+        "analysis": {"type": "towed_dynamic", "vessel": {"type": "straight", "speed": 0.0}, "duration": 20.0,
+                  "time_step": 1.0, "n_nodes": 31, "body": {"mass": 400.0, "weight_in_water": 3000.0}}})
     ds = sc.run(case)
     w = case.line.segments[0].line_type.submerged_weight(RHO, case.environment.gravity)
     s = ds.s.values
@@ -127,12 +128,12 @@ def test_the_hanging_cable_started_from_rest_has_the_exact_tension():
     want = 3000.0 + w * s
     want[0] = 3000.0 + w * 0.5 * s[1]
     want[-1] = 3000.0 + w * 0.5 * (s[-1] + s[-2])
-    np.testing.assert_allclose(ds.tension.values[-1], want, rtol=1e-9)
-    assert np.abs(ds.velocity_z.values).max() < 1e-9
+    np.testing.assert_allclose(ds.tension.values[-1], want, rtol=1e-7)
+    assert np.abs(ds.velocity_z.values).max() < 1e-6  # 3e-8: the start and the steps are at their tolerances
     assert ds.top_angle.values[-1] == pytest.approx(math.pi / 2, abs=1e-12)
     # the stretch: the body hangs L + the integral of T / EA below the tow point
     stretch = np.sum((3000.0 + w * 0.5 * (s[1:] + s[:-1])) / 4e6 * np.diff(s))
-    assert -z[-1, 0] == pytest.approx(300.0 + stretch, rel=1e-12)
+    assert -z[-1, 0] == pytest.approx(300.0 + stretch, rel=1e-9)
 
 
 MU, VF = 0.5, 0.01
@@ -174,13 +175,13 @@ def test_a_sled_dragged_on_the_seabed_hangs_on_the_frictional_catenary():
 def _paying(winch, *, duration=150.0, dt=0.5, out=0.5, vessel=None, body_drag=0.0):
     """A 3 kN body (400 kg, added mass 100 kg) hanging on 200 m of cable (d 0.03 m, 2 kg/m, EA 4e6 N, C_dt 0.02)
     from a vessel at rest in still water, its winch running ``winch``."""
-    return sc.Case.parse(dict(
-        name="pay", line_types={"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
+    return sc.Case.parse({
+        "name": "pay", "line_types": {"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
                                       "drag_normal": 1.5, "drag_tangential": 0.02}},
-        line={"line_type": "c", "length": 200.0}, environment={"water_density": RHO},
-        analysis={"type": "towed_dynamic", "vessel": vessel or {"type": "straight", "speed": 0.0},
+        "line": {"line_type": "c", "length": 200.0}, "environment": {"water_density": RHO},
+        "analysis": {"type": "towed_dynamic", "vessel": vessel or {"type": "straight", "speed": 0.0},
                   "duration": duration, "time_step": dt, "output_interval": out, "n_nodes": 41, "winch": winch,
-                  "body": {"mass": 400.0, "added_mass": 100.0, "weight_in_water": 3000.0, "drag_area": body_drag}}))
+                  "body": {"mass": 400.0, "added_mass": 100.0, "weight_in_water": 3000.0, "drag_area": body_drag}}})
 
 
 @pytest.fixture(scope="module")
@@ -271,3 +272,72 @@ def test_pay_out_converges_at_second_order_in_the_time_step():
     err = [abs(runs[dt] - runs[1 / 32]) for dt in (0.25, 0.125, 1 / 16)]
     assert err[0] / err[1] > 2.5 and err[1] / err[2] > 2.5, err
     assert runs[1 / 32] > 4.0  # the body has moved 4.5 m (33 m astern of the vessel): a real motion
+
+
+def test_an_attachment_drags_across_and_along_the_line_by_its_own_areas():
+    """A clump on a straight line along X (C_D A 1.0 m^2 across, 0.2 m^2 along) in a flow (1.2, -0.7, 0.5) m/s,
+    the line itself without drag, weight or lift: the force on the clump's node is
+    1/2 rho (1.0 |u_n| u_n + 0.2 |u_t| u_t) with u_t the flow's X part, u_n the rest (to round-off), and the
+    Newton matrix's block of the node is -dF/dv (central differences, 1e-6)."""
+    from seacable.mooring.network import network_from_line
+
+    bare = sc.LineType(diameter=0.01, mass_per_length=1.0, weight_in_water=0.0, axial_stiffness=1e6,
+                       drag_normal=0.0, drag_tangential=0.0)
+    clump = sc.PointMass(s=10.0, mass=50.0, weight_in_water=0.0, drag_area=1.0, axial_drag_area=0.2)
+    net = network_from_line(sc.Line.single(bare, 20.0, attachments=(clump,)), (0.0, 0.0, -50.0),
+                            (20.0, 0.0, -50.0), water_density=RHO, gravity=G, n_elements=2)
+    np.testing.assert_allclose(net.point_hydrodynamics()[1], (1.0, 0.2, 0.0))
+    u = np.array([1.2, -0.7, 0.5])
+    speed, heading = math.hypot(u[0], u[1]), math.atan2(u[1], u[0])
+    from seacable.mooring.solver import MooringModel
+
+    model = MooringModel(net, Water(depth=None, density=RHO, gravity=G, current_speeds=(speed,),
+                                    current_heading=heading))
+    model.env[K.E_FRAMEZ] = -u[2]  # the frame sinking at 0.5 m/s: the water rises past it
+    X = net.position.copy()
+
+    def force(V, cc=1.0):
+        F, M = np.zeros((3, 3)), np.zeros((3, 3, 3))
+        band = np.zeros((3 * model.nfree, 2 * model.bw + 1))
+        K.loads(X, V, 0.0, *model.element_args(), model.fidx, model.env, model.cur_depth, model.cur_speed, False,
+                model.sea, F, M, np.zeros(2), band, model.bw, 0.0, cc)
+        return F, band
+
+    V = np.zeros((3, 3))
+    F, band = force(V)
+    band = band - force(V, cc=0.0)[1]  # C alone
+    un, ut = np.array([0.0, u[1], u[2]]), np.array([u[0], 0.0, 0.0])
+    want = 0.5 * RHO * (1.0 * np.linalg.norm(un) * un + 0.2 * np.linalg.norm(ut) * ut)
+    np.testing.assert_allclose(F[1], want, rtol=1e-12, atol=1e-12)
+    # -dF/dv of the node (its 3x3 diagonal block in the band: the middle node is the only free one)
+    h = 1e-6
+    jac = np.zeros((3, 3))
+    for r in range(3):
+        Vp, Vm = V.copy(), V.copy()
+        Vp[1, r] += h
+        Vm[1, r] -= h
+        jac[:, r] = -(force(Vp)[0][1] - force(Vm)[0][1]) / (2 * h)
+    f = model.fidx[1]
+    block = np.array([[band[3 * f + r, model.bw + c - r] for c in range(3)] for r in range(3)])
+    np.testing.assert_allclose(block, jac, rtol=0, atol=1e-5 * np.abs(jac).max())
+
+
+def test_the_finite_element_turn_is_paper_000s_box_scheme_turn():
+    """Paper 000's turn (examples/paper000_turn.yaml: a left turn at 0.5 deg/s for 100 s against a 1 m/s
+    current) in both formulations at 97 nodes, the same tangential drag form: two different discretisations
+    (Euler angles on a box scheme with the curvatures as unknowns; lumped masses with MoorDyn's nodal bending)
+    of the same continuum. The top tension agrees to 0.1 N in 1.5 kN at every output and the free end's position
+    to 5 mm; at 25 nodes the finite-element run is further (0.2 N, 3 cm), so the agreement comes from
+    convergence."""
+    base = sc.load_case(Path(__file__).resolve().parents[2] / "examples" / "paper000_turn.yaml")
+    runs = {}
+    for form, n in (("box", 97), ("finite_element", 97), ("finite_element", 25)):
+        a = base.analysis.model_copy(update={"formulation": form, "tangential_drag": "common", "n_nodes": n})
+        runs[form, n] = sc.run(base.model_copy(update={"analysis": a}))
+    box, fe, coarse = runs["box", 97], runs["finite_element", 97], runs["finite_element", 25]
+    np.testing.assert_allclose(fe.top_tension.values, box.top_tension.values, rtol=0, atol=0.1)
+    for v in ("x", "y", "z"):
+        np.testing.assert_allclose(fe[v].values[:, 0], box[v].values[:, 0], rtol=0, atol=5e-3)
+    assert np.abs(coarse.top_tension.values - box.top_tension.values).max() > np.abs(
+        fe.top_tension.values - box.top_tension.values).max()
+    assert box.top_tension.values[0] - box.top_tension.values[-1] > 20.0  # the turn changes the tension

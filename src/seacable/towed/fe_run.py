@@ -22,10 +22,10 @@ __all__ = ["PreparedTowedFE", "prepare_towed_fe", "run_towed_fe"]
 
 REFERENCES = (
     "Paper 004 (seeds/004): truss finite elements, Newmark's method, Morison loads, seabed contact.",
-    "Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind semisubmersible "
-    "model test data. Ocean Eng. 104, 590-603.",
-    "Buckham, B., Driscoll, F. R. & Nahon, M. (2004). Development of a finite element cable model for use in "
-    "low-tension dynamics simulation. J. Appl. Mech. 71, 476-485.",
+    ("Hall, M. & Goupee, A. (2015). Validation of a lumped-mass mooring line model with DeepCwind semisubmersible "
+     "model test data. Ocean Eng. 104, 590-603."),
+    ("Buckham, B., Driscoll, F. R. & Nahon, M. (2004). Development of a finite element cable model for use in "
+     "low-tension dynamics simulation. J. Appl. Mech. 71, 476-485."),
 )
 
 #: Values stored per node slot and output: positions, velocities, tensions (twice), arc length.
