@@ -1,7 +1,7 @@
 """Speed of the towed-cable dynamics (seacable.towed.solver.simulate) on paper 000's turn.
 
-Run: ``python bench/bench_towed.py`` (about 1.5 min), ``--quick`` (7 and 50 nodes only, no cold
-compilation), ``--no-cold`` (skip the cold numba compilation in a subprocess), ``--full-dense``
+Run: ``python bench/bench_towed.py`` (about 2.5 min), ``--quick`` (7 and 50 nodes only, no cold
+compilation), ``--survey`` (only section 5, about 1 min), ``--no-cold`` (skip the cold numba compilation in a subprocess), ``--full-dense``
 (run the dense LU over the whole 100 s at 200 nodes, about 2 min more, instead of timing a short
 part of it and extrapolating).
 
@@ -19,7 +19,10 @@ vessel at 1 m/s turning left at 0.5 deg/s, 100 s with a 0.5 s step. The script p
    on one Newton system of each size;
 3. the block solver's wall time, time per step and per Newton iteration at 7, 50, 200 and 800
    nodes, the fitted exponent of time against nodes and the issue's targets;
-4. whether the solvers agree (top tension at the end of the run, 1e-6 relative).
+4. whether the solvers agree (top tension at the end of the run, 1e-6 relative);
+5. issue 21's towed system (:func:`survey_case`: 1000 m of cable and a body, 100 nodes, a 3-D turn, 1200 s at
+   1 s, ``seacable.run`` with its result): the box scheme against the finite-element formulation, the
+   finite element with 200 m paid out, and its cost against nodes.
 
 Wall times are medians of repeated runs after a warm-up run, with ``time.perf_counter``. This is a
 benchmark, not a test: it prints, it does not assert.
@@ -383,6 +386,79 @@ def print_agreement(records):
 
 
 # ------------------------------------------------------------------------------------------
+# 5. the towed system of issue 21: a 1000 m cable and a body in a 3-D turn, box and finite element
+# ------------------------------------------------------------------------------------------
+
+SURVEY_DURATION = 1200.0   # s
+SURVEY_STEP = 1.0          # s
+SURVEY_NODES = 100
+
+
+def survey_case(formulation, n_nodes=SURVEY_NODES, winch=None):
+    """1000 m of paper 000's cable and a 2 kN body (C_D A 0.5 m^2) behind a vessel at 2 m/s that turns left at
+    0.15 deg/s from t = 200 s for 600 s (a 3-D turn through 90 degrees), 1200 s at 1 s, outputs every 1 s."""
+    import seacable as sc
+
+    analysis = {"type": "towed_dynamic", "formulation": formulation, "n_nodes": n_nodes,
+                "duration": SURVEY_DURATION, "time_step": SURVEY_STEP, "output_interval": SURVEY_STEP,
+                "tangential_drag": "common",
+                "vessel": {"type": "turn", "speed": 2.0, "heading": 0.0, "start_time": 200.0,
+                           "turn_rate": math.radians(0.15), "end_time": 800.0},
+                "body": {"mass": 300.0, "added_mass": 100.0, "weight_in_water": 2000.0, "drag_area": 0.5}}
+    if winch is not None:
+        analysis["winch"] = winch
+    return sc.Case.parse({
+        "name": f"survey_{formulation}", "environment": {"water_density": 1025.0},
+        "line_types": {"c": {"diameter": 0.035, "mass_per_length": 2.7904, "weight_in_water": 17.7,
+                             "axial_stiffness": 4.2333e5, "bending_stiffness": 32.41, "drag_normal": 1.5,
+                             "drag_tangential": 0.01, "added_mass_normal": 1.0}},
+        "line": {"line_type": "c", "length": 1000.0}, "analysis": analysis})
+
+
+#: The winch of the pay-out run: 200 m paid out at 0.5 m/s (ramped over 10 s) from t = 300 s.
+SURVEY_WINCH = {"rate": 0.5, "start_time": 300.0, "ramp": 10.0, "length": 1200.0}
+
+
+def time_survey(formulation, n_nodes=SURVEY_NODES, winch=None, repeats=3):
+    """Median wall time [s] of seacable.run on the survey case (the result Dataset included), after a warm-up,
+    and the last result."""
+    import seacable as sc
+
+    case = survey_case(formulation, n_nodes, winch)
+    sc.run(case)
+    times, ds = [], None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        ds = sc.run(case)
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times), ds
+
+
+def print_survey(quick=False):
+    print(f"5. Issue 21's towed system: 1000 m cable and a body, a 90 deg turn, {SURVEY_DURATION:g} s at "
+          f"{SURVEY_STEP:g} s, {SURVEY_NODES} nodes, seacable.run including the result (median of 3)")
+    box, ds_box = time_survey("box")
+    fe, ds_fe = time_survey("finite_element")
+    pay, ds_pay = time_survey("finite_element", winch=SURVEY_WINCH)
+    print(f"   box scheme (paper 000, the code before issue 21)   {box:7.3f} s")
+    print(f"   finite element                                      {fe:7.3f} s   {box / fe:5.1f}x faster "
+          "(target >= 3.5x)")
+    print(f"   finite element, 200 m paid out at 0.5 m/s           {pay:7.3f} s   {100 * (pay / fe - 1):+5.1f} % "
+          "(target <= +20 %)")
+    dT = float(abs(ds_fe.top_tension[-1] - ds_box.top_tension[-1]) / ds_box.top_tension[-1])
+    dL = float(abs(ds_fe.layback[-1] - ds_box.layback[-1]))
+    print(f"   agreement at the end: top tension {float(ds_box.top_tension[-1]):.1f} (box) vs "
+          f"{float(ds_fe.top_tension[-1]):.1f} N (FE), {100 * dT:.2f} %; layback differs by {dL:.2f} m; with pay-out "
+          f"{float(ds_pay.top_tension[-1]):.1f} N, {int(ds_pay.nodes_in_water[-1])} nodes")
+    sizes = (50, 100, 200) if quick else (50, 100, 200, 400)
+    walls = [time_survey("finite_element", n, repeats=1)[0] for n in sizes]
+    slope = np.polyfit(np.log(sizes), np.log(walls), 1)[0]
+    print("   finite element against nodes: " + ", ".join(f"{n}: {w:.3f} s" for n, w in zip(sizes, walls))
+          + f"; time ~ nodes^{slope:.2f}")
+    print()
+
+
+# ------------------------------------------------------------------------------------------
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -390,10 +466,14 @@ def main(argv=None):
     ap.add_argument("--no-cold", action="store_true", help="skip the cold compilation subprocess")
     ap.add_argument("--full-dense", action="store_true",
                     help="run the dense LU over the whole run at 200 nodes (about 2 min)")
+    ap.add_argument("--survey", action="store_true", help="only section 5, issue 21's towed system (about 1 min)")
     ap.add_argument("--_first-call", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args._first_call:
         print(json.dumps(first_call()))
+        return
+    if args.survey:
+        print_survey()
         return
     t_start = time.perf_counter()
     import numba
@@ -439,6 +519,7 @@ def main(argv=None):
     print_comparison(records, solves, skipped)
     print_scaling(blocks)
     print_agreement(records)
+    print_survey(quick=args.quick)
     for note in notes:
         print(f"note: {note}")
     print(f"total benchmark time {time.perf_counter() - t_start:.0f} s")

@@ -47,7 +47,20 @@ class LineType(Model):
     bending_stiffness
         Bending stiffness EI. [N m^2]
     drag_normal, drag_tangential
-        Drag coefficients normal and tangential to the line, on the diameter. [-]
+        Drag coefficients normal and tangential to the line, on the diameter (a faired cable: on the fairing's
+        chord and on its wetted perimeter, ``drag_law``). [-]
+    drag_law
+        ``"morison"``: the normal and tangential drag of a bare cable, ``1/2 rho C_dn d |u_n| u_n`` and
+        ``1/2 rho C_dt pi d |u_t| u_t`` (the independence principle). ``"faired"``: a faired cable, the same
+        independence principle on the fairing, ``1/2 rho C_dn c |u_n| u_n`` on its chord ``fairing_chord`` and
+        the skin friction ``1/2 rho C_dt 2.1 c |u_t| u_t`` on its wetted perimeter, about 2.1 c (Packwood 1990,
+        who found this crossflow model to predict swept fairings' drag better than the loading functions fitted
+        to bare cables).
+    fairing_chord
+        Chord of the fairing of a faired cable. [m]
+    strumming_amplitude
+        Root-mean-square cross-flow vibration amplitude over the diameter, A_rms / d, of a strumming cable: its
+        normal drag is amplified by Vandiver's (1983) factor ``1 + 1.043 (2 A_rms / d)^0.65``; 0: none. [-]
     added_mass_normal, added_mass_tangential
         Added-mass coefficients on the displaced mass. [-]
     breaking_load
@@ -80,6 +93,11 @@ class LineType(Model):
     bending_stiffness: quantity("N m^2", ge=0) = Field(0.0, description="Bending stiffness EI. [N m^2]")
     drag_normal: quantity("-", ge=0) = Field(1.2, description="Normal drag coefficient. [-]")
     drag_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential drag coefficient. [-]")
+    drag_law: Literal["morison", "faired"] = Field(
+        "morison", description="Drag law: morison (bare cable) or faired (on fairing_chord).")
+    fairing_chord: quantity("m", gt=0) | None = Field(None, description="Fairing chord of a faired cable. [m]")
+    strumming_amplitude: quantity("-", ge=0, le=5, fix="give A_rms / d, e.g. 0.3 for a strongly strumming cable.") = Field(
+        0.0, description="Strumming rms amplitude over diameter; amplifies the normal drag (Vandiver 1983). [-]")
     added_mass_normal: quantity("-", ge=0) = Field(1.0, description="Normal added-mass coefficient. [-]")
     added_mass_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential added-mass coefficient. [-]")
     breaking_load: quantity("N", gt=0) | None = Field(None, description="Minimum breaking load. [N]")
@@ -90,6 +108,32 @@ class LineType(Model):
         None, description="Viscoelastic dynamic stiffness (EA_Dc [N], EA_D_Lm [-]); statics use axial_stiffness.")
     dynamic_axial_damping: quantity("N s", ge=0) | None = Field(
         None, description="Viscoelastic fast damper BA_D, in parallel with the dynamic spring. [N s]")
+
+    @model_validator(mode="after")
+    def _drag_law(self):
+        if self.drag_law == "faired" and self.fairing_chord is None:
+            raise ValueError("drag_law 'faired' needs fairing_chord (m), the chord its drag coefficients refer to. "
+                             "Suggested fix: give the fairing's chord, e.g. 'fairing_chord: 0.1'.")
+        if self.drag_law != "faired" and self.fairing_chord is not None:
+            raise ValueError(f"fairing_chord {self.fairing_chord:g} m is given but drag_law is '{self.drag_law}'. "
+                             "Suggested fix: set drag_law: faired, or leave fairing_chord out.")
+        return self
+
+    def drag_amplification(self) -> float:
+        """Vandiver's (1983) drag amplification of a strumming cable, ``1 + 1.043 (2 A_rms / d)^0.65`` (1 without
+        strumming). [-]"""
+        a = self.strumming_amplitude
+        return 1.0 + 1.043 * (2.0 * a) ** 0.65 if a > 0 else 1.0
+
+    def effective_drag(self) -> tuple[float, float]:
+        """``(C_dn, C_dt)`` referred to the diameter d and the perimeter pi d, as every model takes them: the drag
+        law's (``drag_law``: a faired cable's on its chord c and wetted perimeter 2.1 c, so ``C_dn c / d`` and
+        ``C_dt 2.1 c / (pi d)``) with the normal one amplified by strumming (:meth:`drag_amplification`). [-]"""
+        cdn, cdt = self.drag_normal, self.drag_tangential
+        if self.drag_law == "faired":
+            c = self.fairing_chord
+            cdn, cdt = cdn * c / self.diameter, cdt * 2.1 * c / (math.pi * self.diameter)
+        return cdn * self.drag_amplification(), cdt
 
     @field_validator("tension_strain")
     @classmethod

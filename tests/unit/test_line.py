@@ -81,3 +81,10 @@ def test_attachment_beyond_the_line_is_rejected():
 def test_empty_line_is_rejected():
     with pytest.raises(sc.InputError, match="segments"):
         sc.Line(segments=[])
+
+
+def test_a_faired_line_type_needs_its_chord_and_a_chord_needs_the_faired_law():
+    with pytest.raises(ValueError, match="drag_law 'faired' needs fairing_chord"):
+        sc.LineType(diameter=0.03, mass_per_length=1.0, drag_law="faired")
+    with pytest.raises(ValueError, match="fairing_chord 0.1 m is given but drag_law is 'morison'"):
+        sc.LineType(diameter=0.03, mass_per_length=1.0, fairing_chord=0.1)

@@ -341,3 +341,28 @@ def test_the_finite_element_turn_is_paper_000s_box_scheme_turn():
     assert np.abs(coarse.top_tension.values - box.top_tension.values).max() > np.abs(
         fe.top_tension.values - box.top_tension.values).max()
     assert box.top_tension.values[0] - box.top_tension.values[-1] > 20.0  # the turn changes the tension
+
+
+@pytest.mark.parametrize(("law", "normal", "along"), [
+    # bare: 1/2 rho C_dn d U^2 and 1/2 rho C_dt pi d U^2 per metre
+    ({}, 0.5 * RHO * 1.5 * 0.03, 0.5 * RHO * 0.01 * math.pi * 0.03),
+    # faired (Packwood 1990): on the chord 0.12 m, skin friction on the wetted perimeter 2.1 x 0.12 m
+    ({"drag_law": "faired", "fairing_chord": 0.12}, 0.5 * RHO * 1.5 * 0.12, 0.5 * RHO * 0.01 * 2.1 * 0.12),
+    # strumming at A_rms / d = 0.5: Vandiver's factor 1 + 1.043 (2 x 0.5)^0.65 = 2.043 on the normal drag
+    ({"strumming_amplitude": 0.5}, 0.5 * RHO * 1.5 * 0.03 * 2.043, 0.5 * RHO * 0.01 * math.pi * 0.03),
+])
+def test_the_drag_laws_load_the_line_as_their_formulas_say(law, normal, along):
+    """A straight horizontal 100 m line (no weight) in a 1.2 m/s current across it, then along it: the water's
+    force on it, summed over the nodes, is the drag law's per-metre drag times the length, to round-off."""
+    from seacable.mooring.network import network_from_line
+    from seacable.mooring.solver import MooringModel
+
+    lt = sc.LineType(diameter=0.03, mass_per_length=1.0, weight_in_water=0.0, axial_stiffness=1e7, drag_normal=1.5,
+                     drag_tangential=0.01, **law)
+    net = network_from_line(sc.Line.single(lt, 100.0), (0.0, 0.0, -50.0), (100.0, 0.0, -50.0), water_density=RHO,
+                            gravity=G, n_elements=10)
+    for heading, per_metre, axis in ((math.pi / 2, normal, 1), (0.0, along, 0)):
+        model = MooringModel(net, Water(depth=None, density=RHO, gravity=G, current_speeds=(1.2,),
+                                        current_heading=heading))
+        F, _, _, _ = model.evaluate(net.position, np.zeros((11, 3)), np.zeros((11, 3)), waves=False)
+        assert F[:, axis].sum() == pytest.approx(per_metre * 1.2**2 * 100.0, rel=1e-12)

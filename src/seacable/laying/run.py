@@ -45,7 +45,7 @@ def lay_parameters(case: Case) -> LayParameters:
                              "(weight in water > 0). Suggested fix: check mass_per_length, diameter and "
                              "weight_in_water.")
         ea = lt.effective_axial_stiffness() if a.extensible else math.inf
-        rows.append(props_row(lt.mass_per_length, w, lt.diameter, lt.drag_normal, lt.drag_tangential,
+        rows.append(props_row(lt.mass_per_length, w, lt.diameter, *lt.effective_drag(),
                               lt.added_mass_normal * rho * lt.area, lt.added_mass_tangential * rho * lt.area,
                               0.0 if math.isinf(ea) else 1.0 / ea))
     repeaters = tuple(Repeater(s=p.s, mass=p.mass, added_mass=p.added_mass, weight=p.net_weight(rho, g),

@@ -194,7 +194,7 @@ def run_laying_theory(case: Case):
     speeds = np.asarray(a.ship_speeds, float)
     common = dict(water_depth=env.depth, ship_speed=speeds,
                   weight_per_length=lt.submerged_weight(env.water_density, env.gravity),
-                  diameter=lt.diameter, drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
+                  diameter=lt.diameter, drag_normal=lt.effective_drag()[0], drag_tangential=lt.effective_drag()[1],
                   payout_speed=speeds * (1.0 + a.slack), bottom_tension=a.bottom_tension,
                   water_density=env.water_density)
     exact = straight_line_lay(**common, method="exact")

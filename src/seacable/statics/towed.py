@@ -522,7 +522,7 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
     for s0, s1 in itertools.pairwise(bounds):
         k = min(int(np.searchsorted(ends, 0.5 * (s0 + s1))), len(ends) - 1)
         lt = line.segments[k].line_type
-        pieces.append(_piece(s1 - s0, lt.submerged_weight(rho, g), lt.diameter, lt.drag_normal, lt.drag_tangential,
+        pieces.append(_piece(s1 - s0, lt.submerged_weight(rho, g), lt.diameter, *lt.effective_drag(),
                              lt.axial_stiffness, u, rho, tangential_drag))
     if pieces[0].w <= 0.0 and not any(tail):
         raise InputError(f"the lowest segment of the towed line floats (weight in water {pieces[0].w:.6g} N/m) and "

@@ -158,7 +158,7 @@ def work_estimate(case) -> float:
             env, lt = case.environment, case.line.segments[0].line_type
             speed = max([a.ship.speed or 0.0, *(a.ship.speeds or ())]) or 1.0
             alpha = float(laying_angle(speed, lt.submerged_weight(env.water_density, env.gravity), lt.diameter,
-                                       lt.drag_normal, env.water_density))
+                                       lt.effective_drag()[0], env.water_density))
             nodes = (env.depth or 100.0) / math.sin(alpha) / a.segment_length
             return a.duration * a.steps_per_segment * speed / a.segment_length * nodes
         if kind == "towed_dynamic":

@@ -138,6 +138,21 @@ def _node_tension(tension, n_nodes):
     return out
 
 
+def _material_arc(res) -> np.ndarray:
+    """The arc length of each node slot while it holds cable (not the tow point, whose arc length is the deployed
+    length): a slot keeps its arc length from birth to retirement. [m]"""
+    slots = res.arc_length.shape[1]
+    cable = np.arange(slots)[None, :] < (res.n_nodes[:, None] - 1)
+    arc = np.where(cable, res.arc_length, np.nan)
+    out = np.full(slots, np.nan)
+    held = cable.any(axis=0)
+    out[held] = np.nanmax(arc[:, held], axis=0)
+    tow = res.n_nodes[0] - 1  # a run without a winch: the tow point's slot too
+    if np.all(res.n_nodes == res.n_nodes[0]):
+        out[tow] = res.arc_length[0, tow]
+    return out
+
+
 def run_towed_fe(case: Case, progress=None):
     """Run a finite-element ``towed_dynamic`` case; see :func:`seacable.towed.run.run_towed_dynamic`."""
     from .run import prepare_towed_dynamic
@@ -178,12 +193,13 @@ def run_towed_fe(case: Case, progress=None):
         "paid_out_length": var("time", res.deployed - case.line.length, "m",
                                "cable paid out since t = 0 (negative: hauled in)"),
     }
-    coords = {"time": var("time", res.time, "s", "time")}
+    coords = {"time": var("time", res.time, "s", "time"),
+              "s": var("node", _material_arc(res), "m", "unstretched arc length from the lower end (NaN: a node "
+                                                         "slot that never held cable in the water)")}
     if prep.deployed is not None:
-        data["arc_length"] = var(td, res.arc_length, "m", "unstretched arc length of the node from the lower end")
+        data["arc_length"] = var(td, res.arc_length, "m", "unstretched arc length of the node from the lower end "
+                                                          "(the tow point's: the deployed length)")
         data["nodes_in_water"] = var("time", res.n_nodes, "1", "nodes from the lower end to the tow point")
-    else:
-        coords["s"] = var("node", res.arc_length[0], "m", "unstretched arc length from the lower end")
     if prep.points:
         idx = np.array([p[2] for p in prep.points])
         pts = pos[:, idx]

@@ -61,7 +61,8 @@ def case_setup(case: Case):
     par = cable_parameters(
         case.line.length, a.n_nodes, lt.mass_per_length, lt.submerged_weight(env.water_density, env.gravity),
         lt.diameter, axial_stiffness=lt.effective_axial_stiffness(), bending_stiffness=lt.bending_stiffness,
-        drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential, added_mass_normal=lt.added_mass_normal,
+        drag_normal=lt.effective_drag()[0], drag_tangential=lt.effective_drag()[1],
+        added_mass_normal=lt.added_mass_normal,
         added_mass_tangential=lt.added_mass_tangential, water_density=env.water_density,
         tangential_drag=a.tangential_drag)
     body = None

@@ -52,7 +52,7 @@ def case_model(case: Case) -> TowlineModel:
     env = case.environment
     return TowlineModel(
         n_elements=a.n_elements, length=case.line.length, diameter=lt.diameter, mass_per_length=lt.mass_per_length,
-        axial_stiffness=ea, drag_normal=lt.drag_normal, drag_tangential=lt.drag_tangential,
+        axial_stiffness=ea, drag_normal=lt.effective_drag()[0], drag_tangential=lt.effective_drag()[1],
         added_mass=lt.added_mass_normal, damping_ratio=a.damping_ratio, bending_damping_ratio=a.bending_damping_ratio,
         transverse_damping_fraction=a.transverse_damping_fraction, water_density=env.water_density,
         gravity=env.gravity, brake_tension=a.brake_tension, impact=a.impact,
