@@ -634,6 +634,12 @@ class Case(Model):
             if missing:
                 raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
                                  f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
+        profile = self.environment.seabed.profile
+        if profile is not None and not (isinstance(a, TowedDynamicAnalysis) and a.formulation == "finite_element"):
+            raise ValueError(f"environment.seabed.profile is taken by analysis 'towed_dynamic' (finite_element) only, "
+                             f"not by '{a.type}'. Suggested fix: give the seabed as environment.depth and "
+                             "seabed.slope" + (", or a laying_dynamic bathymetry table" if a.type == "laying_dynamic"
+                                               else "") + ".")
         if isinstance(a, TowlineDynamicAnalysis):
             lt = self.line.segments[0].line_type
             if len(self.line.segments) != 1 or self.line.attachments:

@@ -93,8 +93,23 @@ class Current(Model):
                          np.zeros_like(speed)], axis=-1)
 
 
+class SeabedProfile(Model):
+    """Water depths at distances along X: the seabed's elevation is linear between the points and level beyond
+    them, the same across Y."""
+
+    distance: tuple[float, ...] = Field(description="Distances along X, increasing. [m]")
+    depth: tuple[float, ...] = Field(description="Water depths there, > 0. [m]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        from .laying.inputs import _check_table
+
+        _check_table(self.distance, self.depth, "seabed.profile")
+        return self
+
+
 class Seabed(Model):
-    """A plane seabed.
+    """A plane seabed, or a profile along X.
 
     Parameters
     ----------
@@ -102,6 +117,8 @@ class Seabed(Model):
         Slope angle, positive when the seabed rises towards +X. [rad]
     friction
         Coulomb friction coefficient of the line on the seabed. [-]
+    profile
+        Depths along X instead of the plane (towed_dynamic's finite-element formulation).
     """
 
     slope: quantity("rad", gt=-math.pi / 2, lt=math.pi / 2,
@@ -109,10 +126,14 @@ class Seabed(Model):
         0.0, description="Slope, positive rising towards +X. [rad]")
     friction: quantity("-", ge=0, fix="give a friction coefficient such as 0.5 (chain on clay ~ 1).") = Field(
         0.0, description="Coulomb friction coefficient. [-]")
+    profile: SeabedProfile | None = Field(None, description="Depths along X instead of the plane.")
 
     @model_validator(mode="after")
     def _check(self) -> Seabed:
         _warn_if_degrees("seabed.slope", self.slope, math.radians(45))
+        if self.profile is not None and self.slope != 0.0:
+            raise ValueError(f"seabed.slope {self.slope:g} rad and seabed.profile both give the seabed. Suggested "
+                             "fix: give the slope in the profile's depths, and leave slope out.")
         return self
 
 

@@ -366,3 +366,43 @@ def test_the_drag_laws_load_the_line_as_their_formulas_say(law, normal, along):
                                         current_heading=heading))
         F, _, _, _ = model.evaluate(net.position, np.zeros((11, 3)), np.zeros((11, 3)), waves=False)
         assert F[:, axis].sum() == pytest.approx(per_metre * 1.2**2 * 100.0, rel=1e-12)
+
+
+def test_a_seabed_profile_presses_each_node_along_its_segments_normal():
+    """Nodes pressed 1 cm (measured along the vertical) into a seabed profile (100 m deep at x = 0, 60 m at
+    x = 100 m, 60 m beyond): the contact force is k d_n times the penetration normal to the segment under the node,
+    ``(z_b - z) cos(theta)``, along that segment's normal, and a two-point profile is the same plane as depth and
+    slope give (to round-off)."""
+    from seacable.mooring.network import network_from_line
+    from seacable.mooring.solver import MooringModel
+
+    bare = sc.LineType(diameter=0.05, mass_per_length=1.0, weight_in_water=0.0, axial_stiffness=1e6,
+                       drag_normal=0.0)
+    xs = np.array([20.0, 50.0, 80.0, 130.0])
+    zb = np.interp(xs, (0.0, 100.0), (-100.0, -60.0))
+    net = network_from_line(sc.Line.single(bare, 120.0), (0.0, 0.0, 0.0), (120.0, 0.0, 0.0), water_density=RHO,
+                            gravity=G, n_elements=3)
+    X = np.column_stack([xs, np.zeros(4), zb - 0.01])
+    kind = net.kind.copy()
+    kind[0] = 0  # free (the anchor's check would refuse it under the seabed)
+    net = net.replace(position=X, kind=kind, length=np.linalg.norm(np.diff(X, axis=0), axis=1) * 1.001)  # slack
+    kb = 3e6
+    profile = Water(depth=None, density=RHO, gravity=G, seabed_stiffness=kb, seabed_damping=0.0,
+                    profile=((0.0, 100.0), (100.0, 60.0)))
+    F, _, _, _ = MooringModel(net, profile).evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
+    theta = math.atan(0.4)
+    bedc = MooringModel(net, profile).bedc
+    for i in range(3):  # on the slope: 1 cm vertical is 1 cm cos(theta) along the normal (-sin, 0, cos)
+        want = kb * bedc[i] * 0.01 * math.cos(theta) * np.array([-math.sin(theta), 0.0, math.cos(theta)])
+        np.testing.assert_allclose(F[i], want, rtol=1e-9)
+    # beyond the profile's end (x = 130 m) the seabed is level at -60 m: straight up, the full 1 cm
+    zb[3] = -60.0
+    X[3, 2] = zb[3] - 0.01
+    F, _, _, _ = MooringModel(net, profile).evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
+    np.testing.assert_allclose(F[3], [0.0, 0.0, kb * bedc[3] * 0.01], rtol=1e-9, atol=1e-9)
+    plane = Water(depth=100.0, slope=theta, density=RHO, gravity=G, seabed_stiffness=kb, seabed_damping=0.0)
+    X[3, 2] = -40.0  # above the plane's continuation (the elements stay slack: node 3 loads no other)
+    Fp, _, _, _ = MooringModel(net.replace(position=X), plane).evaluate(X, np.zeros_like(X), np.zeros_like(X),
+                                                                        waves=False)
+    F, _, _, _ = MooringModel(net, profile).evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
+    np.testing.assert_allclose(Fp[:3], F[:3], rtol=1e-9)

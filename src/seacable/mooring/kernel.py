@@ -89,7 +89,10 @@ E_FRAMEX, E_FRAMEY, E_FRAMEZ = 20, 21, 22
 # 1: the Newton matrix holds the drag's change with the elements' direction (:func:`_drag_turn`; a towed line, whose
 # shape the drag sets), 0: not (a mooring line, whose shape its weight and tension set: the terms cost time)
 E_DRAGTURN = 23
-ENV_SIZE = 24
+# a seabed profile: its number of points m (0: the plane of E_DEPTH and E_SLOPE); the points follow the vector's
+# ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond)
+E_BEDTAB = 24
+ENV_SIZE = 25
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift
@@ -610,6 +613,31 @@ def syrope_loads(X, V, elements, L0, EA, cdamp, mpl, visco, ts_lo, ts_hi, ts_x, 
 
 
 @njit(cache=True)
+def seabed_at(env, x):
+    """Seabed elevation [m] and slope dz/dx [-] at distance ``x`` along X of the profile held in ``env``
+    (``E_BEDTAB`` points; level beyond its ends), or of the plane (``E_DEPTH``, ``E_SLOPE``) without one."""
+    m = int(env[E_BEDTAB])
+    if m == 0:
+        t = math.tan(env[E_SLOPE])
+        return -env[E_DEPTH] + t * x, t
+    x0 = ENV_SIZE
+    z0 = ENV_SIZE + m
+    if x <= env[x0]:
+        return env[z0], 0.0
+    if x >= env[x0 + m - 1]:
+        return env[z0 + m - 1], 0.0
+    lo, hi = 0, m - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if env[x0 + mid] <= x:
+            lo = mid
+        else:
+            hi = mid
+    slope = (env[z0 + hi] - env[z0 + lo]) / (env[x0 + hi] - env[x0 + lo])
+    return env[z0 + lo] + slope * (x - env[x0 + lo]), slope
+
+
+@njit(cache=True)
 def _point_drag_split(u, qn, qa, tsum, f, out):
     """Drag of an attachment across and along the line, ``qn |u_n| u_n + qa |u_t| u_t`` (``qn``, ``qa``: 1/2 rho
     C_D A of each), added to ``f`` (3,); ``u`` the water's velocity relative to the point, ``tsum`` the sum of its
@@ -958,6 +986,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     kb, cb, mu, vf = env[E_KBOT], env[E_CBOT], env[E_MU], env[E_VFRIC]
     bedfull = env[E_BEDFULL] > 0.0
     alpha = env[E_ALPHA]
+    profile = env[E_BEDTAB] > 0.0
     for i in range(n):
         F[i, 2] -= weight[i]
         qn, qa, ql = 0.5 * rho * pcda[i, P_CDA], 0.5 * rho * pcda[i, P_CDA_AXIAL], 0.5 * rho * pcda[i, P_CLA]
@@ -999,8 +1028,14 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     F[i, r] -= alpha * M[i, r, c] * V[i, c]
             if jac and fidx[i] >= 0:
                 _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
-        if kb > 0.0 and bedc[i] > 0.0 and math.isfinite(depth):
-            pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
+        if kb > 0.0 and bedc[i] > 0.0 and (profile or math.isfinite(depth)):
+            if profile:  # the profile's segment under the node: its elevation and normal
+                zb, slope = seabed_at(env, X[i, 0])
+                cs = 1.0 / math.sqrt(1.0 + slope * slope)
+                nrm[0], nrm[2] = -slope * cs, cs
+                pen = (zb - X[i, 2]) * cs
+            else:
+                pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
             dl = env[E_BEDRAMP]
             if pen > -dl:
                 # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,

@@ -72,7 +72,9 @@ def water_of(case: Case) -> Water:
                  current_speeds=tuple(speeds), current_heading=cur.heading,
                  wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
                  wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
-                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none")
+                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none",
+                 profile=None if env.seabed.profile is None else (env.seabed.profile.distance,
+                                                                  env.seabed.profile.depth))
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:

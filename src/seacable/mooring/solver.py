@@ -88,9 +88,16 @@ class Water:
     stretching: str = "none"      # kinematics above z = 0: "none" (constant) or "wheeler"
     slack_damping: bool = False   # the axial damper acts in slack elements too (MoorDyn's rule)
     full_seabed_damping: bool = False  # the seabed damper in full on a node pressed in (MoorDyn's rule)
+    # a seabed profile along X instead of the plane: (distances [m], depths [m]), linear between, level beyond
+    profile: tuple | None = None
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
-        env = np.zeros(K.ENV_SIZE)
+        m = 0 if self.profile is None else len(self.profile[0])
+        env = np.zeros(K.ENV_SIZE + 2 * m)
+        if m:
+            env[K.E_BEDTAB] = m
+            env[K.ENV_SIZE:K.ENV_SIZE + m] = self.profile[0]
+            env[K.ENV_SIZE + m:] = -np.asarray(self.profile[1], float)
         depth = math.inf if self.depth is None else float(self.depth)
         env[[K.E_RHO, K.E_G, K.E_DEPTH, K.E_SLOPE]] = self.density, self.gravity, depth, self.slope
         env[[K.E_KBOT, K.E_CBOT, K.E_MU, K.E_VFRIC]] = (self.seabed_stiffness, self.seabed_damping, self.friction,
@@ -107,6 +114,8 @@ class Water:
     def seabed_z(self, x) -> np.ndarray:
         """Seabed elevation under ``x`` (NaN without a seabed). [m]"""
         x = np.asarray(x, float)
+        if self.profile is not None:
+            return -np.interp(x, self.profile[0], self.profile[1])
         if self.depth is None:
             return np.full_like(x, np.nan)
         return -self.depth + np.tan(self.slope) * x

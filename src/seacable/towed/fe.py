@@ -149,15 +149,18 @@ def _steady_guess(system: TowedSystem, top, flow):
     s = net.arc_length
     x = np.interp(s, res.s, res.x)
     z = np.interp(s, res.s, res.z)
-    return np.asarray(top, float) + x[:, None] * e[None, :] + z[:, None] * np.array([0.0, 0.0, 1.0])
+    X = np.asarray(top, float) + x[:, None] * e[None, :] + z[:, None] * np.array([0.0, 0.0, 1.0])
+    if water.depth is not None or water.profile is not None:  # the shape without the seabed: held above it
+        X[:, 2] = np.maximum(X[:, 2], water.seabed_z(X[:, 0]) + 1e-3)
+    return X
 
 
-def _hanging(net: Network, top, depth, astern):
-    """Node positions hanging straight down from ``top`` and, on a seabed at ``depth`` [m], laid along it in the
-    horizontal direction ``astern`` (3,)."""
+def _hanging(net: Network, top, floor, astern):
+    """Node positions hanging straight down from ``top`` and, on a seabed at elevation ``floor`` [m] (NaN: none),
+    laid along it in the horizontal direction ``astern`` (3,)."""
     below = net.arc_length[-1] - net.arc_length  # arc length below the tow point
     top = np.asarray(top, float)
-    drop = below if depth is None else np.minimum(below, max(top[2] + float(depth) - 1e-3, 0.0))
+    drop = below if not np.isfinite(floor) else np.minimum(below, max(top[2] - floor - 1e-3, 0.0))
     X = top + np.outer(drop, (0.0, 0.0, -1.0))
     return X + np.outer(below - drop, astern)
 
@@ -201,7 +204,7 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
         f0 = flow(0.0)
         speed = float(np.hypot(f0[0], f0[1]))
         astern = np.array([f0[0] / speed, f0[1] / speed, 0.0]) if speed > 0.0 else np.array([1.0, 0.0, 0.0])
-        X = _hanging(net, top, water.depth, astern)
+        X = _hanging(net, top, float(water.seabed_z(np.asarray(top, float)[0])), astern)
         for f in (0.25, 0.5, 0.75, 1.0) if np.any(v) else (1.0,):
             X = solve(X, f * v)
         return X

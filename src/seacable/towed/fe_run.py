@@ -93,10 +93,13 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     path = functools.partial(sample_path, a.vessel)
     p0, v0 = path(np.array([0.0]))  # a table too short fails below, before the run
     path(np.array([0.0, a.duration]))
-    if env.depth is not None and p0[0, 2] < -env.depth:
-        raise InputError(f"the tow point starts {-p0[0, 2]:g} m deep, below the seabed at {env.depth:g} m "
-                         "(environment.depth). Suggested fix: check the vessel path's z and the depth.")
-    system = towed_system(case.line, p0[0], water_of(case), n_nodes=a.n_nodes, body=a.body,
+    water = water_of(case)
+    floor = float(water.seabed_z(p0[0, 0]))
+    if p0[0, 2] < floor:
+        raise InputError(f"the tow point starts {-p0[0, 2]:g} m deep, below the seabed at {-floor:g} m "
+                         "(environment.depth or seabed.profile). Suggested fix: check the vessel path's z and the "
+                         "depth.")
+    system = towed_system(case.line, p0[0], water, n_nodes=a.n_nodes, body=a.body,
                           tangential_drag=a.tangential_drag or "common")
     deployed = _checked_winch(a, system, case.line.length)
     net = system.model.network
@@ -109,14 +112,13 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
                    fix="shorten analysis.duration, lengthen analysis.time_step or analysis.output_interval, or use "
                        "fewer nodes")
     X0 = steady_start(system, p0[0], v0[0])
-    if env.depth is not None:
-        k = int(np.argmin(X0[:, 2]))
-        sink = -env.depth - X0[k, 2]
-        thick = float(np.max(net.diameter))
-        if sink > max(thick, 0.05):
-            raise InputError(f"the steady start puts node {k} (s = {net.arc_length[k]:g} m) {sink:g} m into the "
-                             f"seabed at {env.depth:g} m: the seabed contact cannot carry it. Suggested fix: a stiffer "
-                             "analysis.seabed_contact, or check the weights.")
+    if env.depth is not None or water.profile is not None:
+        into = water.seabed_z(X0[:, 0]) - X0[:, 2]
+        k = int(np.argmax(into))
+        if into[k] > max(float(np.max(net.diameter)), 0.05):
+            raise InputError(f"the steady start puts node {k} (s = {net.arc_length[k]:g} m) {into[k]:g} m into the "
+                             "seabed: the seabed contact cannot carry it. Suggested fix: a stiffer "
+                             "analysis.seabed_contact (or the body's seabed_area), or check the weights.")
     points = []
     if a.body is not None:
         points.append(("body", 0.0, 0))
@@ -212,10 +214,13 @@ def run_towed_fe(case: Case, progress=None):
                                 "unstretched arc length of the body and each attachment from the lower end")
         coords["point"] = var("point", np.array([p[0] for p in prep.points]), "",
                               "the body and the attachments")
+    water = prep.system.model.water
     depth = case.environment.depth
-    if depth is not None:
-        water = prep.system.model.water
-        height = (-math.sin(water.slope) * pos[..., 0] + math.cos(water.slope) * (pos[..., 2] + depth))
+    if depth is not None or water.profile is not None:
+        if water.profile is not None:  # the height above the profile under the node
+            height = pos[..., 2] - water.seabed_z(pos[..., 0])
+        else:
+            height = -math.sin(water.slope) * pos[..., 0] + math.cos(water.slope) * (pos[..., 2] + depth)
         data["seabed_clearance"] = var("time", np.nanmin(height, axis=1), "m",
                                        "least height of a node above the seabed (contact modelled: a node on it "
                                        "is pressed in by its weight over the contact stiffness)")

@@ -136,3 +136,36 @@ def test_the_result_names_each_body_its_layback_and_depth_and_the_length_paid_ou
     assert np.all((top > 0.0) & (top < math.pi / 2))
     assert ds.top_angle.attrs["units"] == "rad" and ds.point_layback.attrs["units"] == "m"
     assert '"formulation": "finite_element"' in ds.attrs["settings"]
+
+
+def test_a_seabed_profile_is_for_the_finite_element_tow_only():
+    spec = _spec()
+    spec["environment"]["seabed"] = {"profile": {"distance": [0.0, 500.0], "depth": [150.0, 130.0]}}
+    ds = sc.run(sc.Case.parse(spec))  # the towfish at 2 kN on 200 m at 1.5 m/s flies clear of it
+    assert ds.seabed_clearance.values.min() > 0.0
+    box = _spec(formulation="box")
+    box["environment"]["seabed"] = spec["environment"]["seabed"]
+    with pytest.raises(InputError, match=r"environment.seabed.profile is taken by analysis 'towed_dynamic' "
+                                         r"\(finite_element\) only, not by 'towed_dynamic'"):
+        sc.Case.parse(box)
+    both = _spec()
+    both["environment"]["seabed"] = {"slope": 0.05, "profile": spec["environment"]["seabed"]["profile"]}
+    with pytest.raises(InputError, match="seabed.slope 0.05 rad and seabed.profile both give the seabed"):
+        sc.Case.parse(both)
+
+
+def test_a_sled_on_a_rising_seabed_profile_rides_on_it():
+    """A heavy sled on 300 m of cable in 100 m of water rising to 70 m: it stays on the seabed (pressed in by
+    millimetres) as the seabed rises under it, and the clearance is the lowest node's height above the profile."""
+    spec = _spec(body=dict(mass=600.0, weight_in_water=5000.0, drag_area=0.2, seabed_area=2.0),
+                 vessel=dict(type="straight", speed=1.0), duration=150.0, time_step=1.0, n_nodes=31)
+    spec["line"]["length"] = 300.0
+    spec["environment"]["seabed"] = {"profile": {"distance": [-400.0, -260.0, 0.0], "depth": [100.0, 100.0, 70.0]},
+                                     "friction": 0.3}
+    ds = sc.run(sc.Case.parse(spec))
+    x, z = ds.x.values[:, 0], ds.z.values[:, 0]
+    floor = -np.interp(x, [-400.0, -260.0, 0.0], [100.0, 100.0, 70.0])
+    assert np.all(np.abs(z - floor) < 0.01)  # on the seabed as it rises (penetration W / (k A) < 1 mm)
+    assert floor[-1] - floor[0] > 5.0  # it has climbed
+    np.testing.assert_allclose(ds.seabed_clearance.values, np.nanmin(ds.z.values - (-np.interp(
+        ds.x.values, [-400.0, -260.0, 0.0], [100.0, 100.0, 70.0])), axis=1), atol=1e-12)
