@@ -503,6 +503,7 @@ class TowlineDynamicAnalysis(Model):
     output_interval: quantity("s", gt=0) = Field(1.0, description="Time between stored states. [s]")
     time_step: quantity("s", gt=0) | None = Field(
         None, description="Explicit step; default from the stability bound of the elements. [s]")
+    seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
 
     @model_validator(mode="after")
     def _check(self):
@@ -641,6 +642,9 @@ class Case(Model):
                              "seabed.slope" + (", or a laying_dynamic bathymetry table" if a.type == "laying_dynamic"
                                                else "") + ".")
         if isinstance(a, TowlineDynamicAnalysis):
+            if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
+                raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "
+                                 f"{self.environment.seabed.slope:g} rad. Suggested fix: leave the slope out.")
             lt = self.line.segments[0].line_type
             if len(self.line.segments) != 1 or self.line.attachments:
                 raise ValueError("analysis 'towline_dynamic' takes a towline of one segment and no attachments, "

@@ -38,6 +38,9 @@ Forces (F, body components; moments ``(M_q, M_r) = (-s F_z, s F_y)`` of a force 
   moment: a force at the centre's velocity pumps energy into an element that rotates through the
   surface (its end entering the water while its centre rises), which made 100-element runs blow up;
   per point, the impact's power ``-(dm_a/dt)_+ |v_p|^2`` is never positive;
+- the seabed (``P_DEPTH`` finite): at each Gauss point below it, a penalty force ``k_b d w_l p - c_b d w_l v_z``
+  up (``p`` the point's depth below the seabed, ``w_l`` its share of the length; never pulling) and Coulomb
+  friction ``-mu N v_h / sqrt(|v_h|^2 + v_f^2)`` against its horizontal velocity, as the mooring model's;
 - joint tension: the connection points of neighbours (``b_{j-1}`` and ``a_j``; the tug's and the
   barge's tow points at the ends) are joined by a spring and a damper. Along the joint's axis (the
   mean direction of its two elements) the spring has the line's stiffness ``k`` (from the breaking
@@ -97,7 +100,10 @@ __all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points
 # Line parameters (flat vector).
 P_L, P_M, P_I, P_D, P_AREA, P_CA, P_CD, P_CF, P_K, P_CX, P_CT, P_ZM = range(12)
 P_RHO, P_G, P_BRAKE, P_IMPACT, P_DRAG, P_KT = 12, 13, 14, 15, 16, 17
-P_SIZE = 18
+# seabed: depth (inf: none), penalty stiffness and damper per projected area [Pa/m, Pa s/m], Coulomb friction and
+# its regularising speed [m/s]
+P_DEPTH, P_KBOT, P_CBOT, P_MU, P_VFRIC = 18, 19, 20, 21, 22
+P_SIZE = 23
 
 # Barge state: x, y, heading, u, v, r (barge frame velocities).
 B_X, B_Y, B_PSI, B_U, B_V, B_R = range(6)
@@ -294,6 +300,20 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
             px -= qd * math.pi * P[P_CF] * abs(u) * u
             py -= qd * P[P_CD] * vn * vp
             pz -= qd * P[P_CD] * vn * wp
+        # the seabed: a penalty spring and damper on the point's share of the projected area d wl (pressing, never
+        # pulling) and Coulomb friction against its horizontal velocity, regularised (as the mooring model's)
+        pen = -P[P_DEPTH] - z
+        if pen > 0.0:
+            gx = E[k, 0, 0] * u + E[k, 0, 1] * vp + E[k, 0, 2] * wp
+            gy = E[k, 1, 0] * u + E[k, 1, 1] * vp + E[k, 1, 2] * wp
+            gz = E[k, 2, 0] * u + E[k, 2, 1] * vp + E[k, 2, 2] * wp
+            area_b = d * wl
+            fn = max(P[P_KBOT] * area_b * pen - P[P_CBOT] * area_b * gz, 0.0)
+            sl = math.sqrt(gx * gx + gy * gy + P[P_VFRIC] * P[P_VFRIC])
+            tx, ty = -P[P_MU] * fn * gx / sl, -P[P_MU] * fn * gy / sl
+            px += E[k, 0, 0] * tx + E[k, 1, 0] * ty + E[k, 2, 0] * fn
+            py += E[k, 0, 1] * tx + E[k, 1, 1] * ty + E[k, 2, 1] * fn
+            pz += E[k, 0, 2] * tx + E[k, 1, 2] * ty + E[k, 2, 2] * fn
         # water entry: the momentum given to the point's growing added mass, at the point's velocity
         if grow > 0.0:
             py -= grow * vp

@@ -12,7 +12,6 @@ from .._validate import in_range
 from ..case import Case, TowlineDynamicAnalysis
 from ..errors import InputError
 from ..results import make_dataset, var
-from ..towed.seabed import seabed_clearance, warn_depth_not_modelled
 from ..towed.vessel import initial_heading, sample_path
 from .solver import (
     State,
@@ -56,7 +55,9 @@ def case_model(case: Case) -> TowlineModel:
         added_mass=lt.added_mass_normal, damping_ratio=a.damping_ratio, bending_damping_ratio=a.bending_damping_ratio,
         transverse_damping_fraction=a.transverse_damping_fraction, water_density=env.water_density,
         gravity=env.gravity, brake_tension=a.brake_tension, impact=a.impact,
-        barge=a.barge, held=a.barge_held)
+        barge=a.barge, held=a.barge_held, depth=env.depth, seabed_stiffness=a.seabed_contact.stiffness,
+        seabed_damping=a.seabed_contact.damping, friction=env.seabed.friction,
+        friction_velocity=a.seabed_contact.friction_velocity)
 
 
 def _tug(case: Case):
@@ -117,8 +118,8 @@ def prepare_towline_dynamic(case: Case) -> PreparedTowline:
     stability bound), the tug's track over the whole run (a table must cover it), the initial
     heading (from the tug's displacement, :func:`seacable.towed.vessel.initial_heading`), the
     initial state (the tow points' heights against the line's length) and the size of the run
-    (:func:`seacable._limits.check_run_size`). A given ``environment.depth`` is warned about: this
-    model has no seabed contact.
+    (:func:`seacable._limits.check_run_size`). With ``environment.depth`` the line has seabed contact (flat,
+    ``environment.seabed.slope`` is refused).
 
     Raises
     ------
@@ -143,7 +144,6 @@ def prepare_towline_dynamic(case: Case) -> PreparedTowline:
     heading = initial_heading(a.tug, a.duration, distance=1e-3 * model.length)
     p0, _ = tug(np.array([0.0]))
     state = initial_state(model, p0[0], start=a.start, heading=heading, drop_height=a.drop_height)
-    warn_depth_not_modelled("towline_dynamic", case.environment.depth)
     return PreparedTowline(model, tug, heading, state, dt)
 
 
@@ -176,14 +176,9 @@ def run_result(model: TowlineModel, run: TowlineRun, *, case=None, settings=None
               "element": var("element", np.arange(n), "1", "element")}
     depth = None if case is None else case.environment.depth
     if depth is not None:
-        def joint(j):
-            where = "the tug tow point" if j == 0 else "the barge tow point" if j == n else f"{j} of {n} from the tug"
-            return f"joint {j} ({where})"
-
-        data["seabed_clearance"] = var(t, seabed_clearance(run.time, run.nodes[..., 2], depth,
-                                                           analysis="towline_dynamic", node_name=joint),
-                                       "m", "least height of a joint above the seabed (negative: below it; "
-                                            "no seabed contact modelled)")
+        data["seabed_clearance"] = var(t, np.nanmin(run.nodes[..., 2], axis=1) + depth,
+                                       "m", "least height of a joint above the seabed (contact modelled: a joint on "
+                                            "it is pressed in by the line's weight over the contact stiffness)")
     ds = make_dataset(data, coords, analysis="towline_dynamic", case=case, references=REFERENCES,
                       settings={"time_step": run.time_step, "steps": run.steps,
                                 "element_period": model.element_period, **(settings or {})})

@@ -60,6 +60,11 @@ class TowlineModel:
     barge: Barge | None = None
     held: bool = False
     held_tow_point_height: float = 1.0
+    depth: float | None = None
+    seabed_stiffness: float = 3.0e6
+    seabed_damping: float = 3.0e5
+    friction: float = 0.0
+    friction_velocity: float = 0.01
     params: np.ndarray = field(init=False, repr=False)
     barge_params: np.ndarray = field(init=False, repr=False)
 
@@ -87,6 +92,9 @@ class TowlineModel:
         P[K.P_BRAKE] = self.brake_tension
         P[K.P_IMPACT] = float(self.impact)
         P[K.P_DRAG] = float(self.drag)
+        P[K.P_DEPTH] = math.inf if self.depth is None else float(self.depth)
+        P[K.P_KBOT], P[K.P_CBOT] = self.seabed_stiffness, self.seabed_damping
+        P[K.P_MU], P[K.P_VFRIC] = self.friction, self.friction_velocity
         self.params = P
         self.barge_params = (barge_parameters(self.barge, self.water_density) if self.barge is not None
                              else np.zeros(1))
@@ -116,11 +124,21 @@ def stable_time_step(model: TowlineModel, safety: float = 0.8) -> float:
     (no added mass): neighbours moving against each other along the line, ``omega^2 = 4 k / m``, and
     all elements turning the same way about their centres, which opens every joint across the line
     by ``l theta`` against the pin stiffness ``k_t``: ``omega^2 = k_t l^2 / I = 12 k_t / m``. With
-    ``k_t = k / 3`` both give ``dt < sqrt(m / k)`` (= T_n / 2 pi). The dampers are taken implicitly in
-    each element's own velocities and do not bound the step.
+    ``k_t = k / 3`` both give ``dt < sqrt(m / k)`` (= T_n / 2 pi). The joint dampers are taken implicitly in
+    each element's own velocities and do not bound the step; the seabed's spring and damper (explicit) do,
+    where there is a seabed.
     """
     P = model.params
-    return safety * min(math.sqrt(P[K.P_M] / P[K.P_K]), math.sqrt(P[K.P_M] / (3.0 * P[K.P_KT])))
+    bound = min(math.sqrt(P[K.P_M] / P[K.P_K]), math.sqrt(P[K.P_M] / (3.0 * P[K.P_KT])))
+    if math.isfinite(P[K.P_DEPTH]):
+        # an element on the seabed: its spring k_b d l (omega dt < 2, with the rocking mode's factor 3 as the pins')
+        # and its explicit damper c_b d l (dt < m / c, inside the damped oscillator's bound)
+        kb, cb = P[K.P_KBOT] * P[K.P_D] * P[K.P_L], P[K.P_CBOT] * P[K.P_D] * P[K.P_L]
+        if kb > 0.0:
+            bound = min(bound, math.sqrt(P[K.P_M] / (3.0 * kb)))
+        if cb > 0.0:
+            bound = min(bound, P[K.P_M] / cb)
+    return safety * bound
 
 
 def check_time_step(model: TowlineModel, time_step: float | None) -> float:
