@@ -37,6 +37,16 @@ CASES = {
         f"{float(ds.laid_length[-1]):.0f} m laid"),
     "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
                                      f"{float(ds.top_tension.min()):.1f} N while stopped"),
+    "towed_stop_and_go_from_rest": lambda ds: (
+        f"from rest (hanging, top tension {float(ds.top_tension[0]):.1f} N = w L) to 2 m/s and back: layback up to "
+        f"{float(ds.layback.max()):.0f} m, {float(ds.layback.sel(time=250.0)):.0f} m after 150 s stopped "
+        "(finite elements)"),
+    "towed_depressor_survey": lambda ds: (
+        f"depressor two-part tow from rest, {float(ds.paid_out_length[-1]):.0f} m paid out: towfish "
+        f"{float(ds.point_depth.sel(time=500.0, point='body')):.0f} m deep and "
+        f"{float(ds.point_layback.sel(time=500.0, point='body')):.0f} m astern at 2 m/s, depressor "
+        f"{float(ds.point_depth.sel(time=500.0, point='depressor')):.0f} m deep; top tension "
+        f"{float(ds.top_tension.sel(time=500.0)) / 1e3:.1f} kN at {float(ds.top_angle.sel(time=500.0)):.2f} rad"),
     "oc3_hywind_static": lambda ds: (f"fairlead tension {float(ds.fairlead_tension) / 1e3:.1f} kN, "
                                    f"{float(ds.grounded_length):.1f} m on the seabed"),
     "oc3_hywind_line": lambda ds: (f"5 m surge at 20 s in 6 m waves: fairlead tension "

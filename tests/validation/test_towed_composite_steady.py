@@ -186,16 +186,17 @@ def test_a_depressors_lift_pulls_the_body_down_by_its_force_balance():
     assert float(winged.lower_end_depth) > float(plain.lower_end_depth) + 10.0
 
 
-def test_a_lift_without_its_area_and_a_lifting_body_in_the_dynamics_are_refused():
-    with pytest.raises(InputError, match="lift_coefficient -0.6 needs body.reference_area"):
+def test_a_lift_without_its_area_and_a_lifting_body_in_the_box_dynamics_are_refused():
+    with pytest.raises(InputError, match=r"analysis.body lift_coefficient -0.6 needs reference_area"):
         sc.Case(name="x", line_types={"light": LIGHT.model_dump(exclude_none=True)},
                 line={"line_type": "light", "length": 500.0},
                 analysis={"type": "towed_steady", "vessel_speed": U,
                           "body": {"weight_in_water": 3000.0, "lift_coefficient": -0.6}})
-    with pytest.raises(InputError, match="towed_dynamic does not model a body's lift yet"):
+    with pytest.raises(InputError, match="the box formulation does not model a body's lift"):
         sc.Case(name="x", line_types={"light": {**LIGHT.model_dump(exclude_none=True), "bending_stiffness": 1.0}},
                 line={"line_type": "light", "length": 500.0},
-                analysis={"type": "towed_dynamic", "duration": 10.0, "vessel": {"type": "straight", "speed": 2.0},
+                analysis={"type": "towed_dynamic", "formulation": "box", "duration": 10.0,
+                          "vessel": {"type": "straight", "speed": 2.0},
                           "body": {"weight_in_water": 3000.0, "mass": 400.0, "lift_coefficient": -0.6,
                                    "reference_area": 1.2}})
 

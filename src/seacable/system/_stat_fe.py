@@ -129,7 +129,8 @@ def _end_force(model, X, e: int, node: int) -> np.ndarray:
     tension = np.zeros(1)
     MK.loads(X, np.zeros_like(X), 0.0, net.elements[sl], net.length[sl], net.axial_stiffness[sl],
              net.axial_damping[sl], net.mass_per_length[sl], net.diameter[sl], net.cdn[sl], net.cdt[sl], net.can[sl],
-             net.cat[sl], weight, zeros, zeros, zeros, zeros, bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl], tx, ty,
+             net.cat[sl], weight, zeros, zeros, zeros, np.zeros((n, 3)), bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl],
+             tx, ty,
              np.zeros((0, 3), np.int64), np.zeros(0), visco, model.fidx, model.env, model.cur_depth, model.cur_speed,
              False, model.sea, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
     f = F[node]

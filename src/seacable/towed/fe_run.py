@@ -155,12 +155,10 @@ def _material_arc(res) -> np.ndarray:
     return out
 
 
-def run_towed_fe(case: Case, progress=None):
-    """Run a finite-element ``towed_dynamic`` case; see :func:`seacable.towed.run.run_towed_dynamic`."""
-    from .run import prepare_towed_dynamic
-
+def run_towed_fe(case: Case, prep: PreparedTowedFE, progress=None):
+    """Run a finite-element ``towed_dynamic`` case from its checks' result ``prep`` (:func:`prepare_towed_fe`); see
+    :func:`seacable.towed.run.run_towed_dynamic`."""
     a: TowedDynamicAnalysis = case.analysis
-    prep = prepare_towed_dynamic(case)
     out = a.output_interval or a.time_step
     res = simulate_towed(prep.system, prep.path, a.duration, a.time_step, out, deployed=prep.deployed,
                          initial=prep.initial, tol=TOLERANCE, max_iter=a.max_iterations,
@@ -176,7 +174,7 @@ def run_towed_fe(case: Case, progress=None):
         "y": var(td, pos[..., 1], "m", "node position Y"),
         "z": var(td, pos[..., 2], "m", "node elevation (Z up, 0 at the sea surface)"),
         "tension": var(td, _node_tension(res.tension, res.n_nodes), "N",
-                       "effective tension at the node (the mean of its two elements')"),
+                       "effective tension"),
         "velocity_x": var(td, vel[..., 0], "m s-1", "node velocity X"),
         "velocity_y": var(td, vel[..., 1], "m s-1", "node velocity Y"),
         "velocity_z": var(td, vel[..., 2], "m s-1", "node velocity Z"),
@@ -196,8 +194,7 @@ def run_towed_fe(case: Case, progress=None):
                                "cable paid out since t = 0 (negative: hauled in)"),
     }
     coords = {"time": var("time", res.time, "s", "time"),
-              "s": var("node", _material_arc(res), "m", "unstretched arc length from the lower end (NaN: a node "
-                                                         "slot that never held cable in the water)")}
+              "s": var("node", _material_arc(res), "m", "unstretched arc length from the lower end")}
     if prep.deployed is not None:
         data["arc_length"] = var(td, res.arc_length, "m", "unstretched arc length of the node from the lower end "
                                                           "(the tow point's: the deployed length)")

@@ -179,7 +179,7 @@ def run_towed_dynamic(case: Case, progress=None):
     if a.formulation == "finite_element":
         from .fe_run import run_towed_fe
 
-        return run_towed_fe(case, progress=progress)
+        return run_towed_fe(case, prepare_towed_dynamic(case), progress=progress)
     prep = prepare_towed_dynamic(case)
     n = prep.n_nodes
     res = simulate(prep.parameters, n, prep.path, a.duration, a.time_step, progress=progress,
