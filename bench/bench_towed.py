@@ -419,7 +419,7 @@ def survey_case(formulation, n_nodes=SURVEY_NODES, winch=None):
 SURVEY_WINCH = {"rate": 0.5, "start_time": 300.0, "ramp": 10.0, "length": 1200.0}
 
 
-def time_survey(formulation, n_nodes=SURVEY_NODES, winch=None, repeats=3):
+def time_survey(formulation, n_nodes=SURVEY_NODES, winch=None, repeats=5):
     """Median wall time [s] of seacable.run on the survey case (the result Dataset included), after a warm-up,
     and the last result."""
     import seacable as sc
@@ -436,7 +436,7 @@ def time_survey(formulation, n_nodes=SURVEY_NODES, winch=None, repeats=3):
 
 def print_survey(quick=False):
     print(f"5. Issue 21's towed system: 1000 m cable and a body, a 90 deg turn, {SURVEY_DURATION:g} s at "
-          f"{SURVEY_STEP:g} s, {SURVEY_NODES} nodes, seacable.run including the result (median of 3)")
+          f"{SURVEY_STEP:g} s, {SURVEY_NODES} nodes, seacable.run including the result (median of 5)")
     box, ds_box = time_survey("box")
     fe, ds_fe = time_survey("finite_element")
     pay, ds_pay = time_survey("finite_element", winch=SURVEY_WINCH)

@@ -141,7 +141,8 @@ def _steady_guess(system: TowedSystem, top, flow):
             res, _ = towed_line_steady(
                 system.line, speed, water_density=water.density, gravity=water.gravity,
                 body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.drag_area if b else 0.0,
-                body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag, n_points=401)
+                body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag,
+                n_points=max(net.n_nodes, 11), rtol=1e-6)  # a start for the static solve, which makes it exact
     except (SeacableError, ValueError):
         return None
     if not (np.all(np.isfinite(res.x)) and np.all(np.isfinite(res.z))):
