@@ -63,6 +63,26 @@ def _dense(model, band):
     return out
 
 
+def _differences(model, X, V, which, h):
+    """-dF/dx ("K") or -dF/dv ("C") by central differences of step ``h``, in the band's order of the free nodes."""
+    free = np.flatnonzero(model.fidx >= 0)
+    nd = 3 * model.nfree
+    want = np.zeros((nd, nd))
+    for i in free:
+        for r in range(3):
+            Xp, Xm, Vp, Vm = X.copy(), X.copy(), V.copy(), V.copy()
+            if which == "K":
+                Xp[i, r] += h
+                Xm[i, r] -= h
+            else:
+                Vp[i, r] += h
+                Vm[i, r] -= h
+            dF = (_forces(model, Xp, Vp)[0] - _forces(model, Xm, Vm)[0]) / (2 * h)
+            for j in free:  # the band's rows and columns: the free nodes in their order for a small bandwidth
+                want[3 * model.fidx[j]:3 * model.fidx[j] + 3, 3 * model.fidx[i] + r] = -dF[j]
+    return want
+
+
 @pytest.mark.parametrize(("which", "atol"), [("K", 1e4), ("C", 1e-2)])
 def test_the_newton_matrix_is_the_derivative_of_the_forces(which, atol):
     model, X, V = _state()
@@ -80,21 +100,7 @@ def test_the_newton_matrix_is_the_derivative_of_the_forces(which, atol):
     turning = net.axial_damping * np.linalg.norm(V[ib] - V[ia], axis=1) / (net.length * chord)
     assert turning.max() < 0.5 * atol or which == "C"  # the damper's turning, left out of K, under the tolerance
     got = _dense(model, band)
-    free = np.flatnonzero(model.fidx >= 0)
-    want = np.zeros((nd, nd))
-    h = 1e-7
-    for i in free:
-        for r in range(3):
-            Xp, Xm, Vp, Vm = X.copy(), X.copy(), V.copy(), V.copy()
-            if which == "K":
-                Xp[i, r] += h
-                Xm[i, r] -= h
-            else:
-                Vp[i, r] += h
-                Vm[i, r] -= h
-            dF = (_forces(model, Xp, Vp)[0] - _forces(model, Xm, Vm)[0]) / (2 * h)
-            for j in free:  # the band's rows and columns: the free nodes in their order for a small bandwidth
-                want[3 * model.fidx[j]:3 * model.fidx[j] + 3, 3 * model.fidx[i] + r] = -dF[j]
+    want = _differences(model, X, V, which, 1e-7)
     scale = np.abs(want).max()
     assert scale > (1e6 if which == "K" else 1e5)
     np.testing.assert_allclose(got, want, rtol=0, atol=atol)
@@ -137,21 +143,7 @@ def test_a_towed_lines_newton_matrix_is_the_derivative_of_its_forces(which, atol
         _forces(model, X, V, k_only, cc=0.0)
         band = band - k_only
     got = _dense(model, band)
-    free = np.flatnonzero(model.fidx >= 0)
-    want = np.zeros((nd, nd))
-    h = 1e-6
-    for i in free:
-        for r in range(3):
-            Xp, Xm, Vp, Vm = X.copy(), X.copy(), V.copy(), V.copy()
-            if which == "K":
-                Xp[i, r] += h
-                Xm[i, r] -= h
-            else:
-                Vp[i, r] += h
-                Vm[i, r] -= h
-            dF = (_forces(model, Xp, Vp)[0] - _forces(model, Xm, Vm)[0]) / (2 * h)
-            for j in free:
-                want[3 * model.fidx[j]:3 * model.fidx[j] + 3, 3 * model.fidx[i] + r] = -dF[j]
+    want = _differences(model, X, V, which, 1e-6)
     np.testing.assert_allclose(got, want, rtol=0, atol=atol)
     # the terms under test are there: the turning terms without E_DRAGTURN, the lift's without lift, differ
     model.env[K.E_DRAGTURN] = 0.0

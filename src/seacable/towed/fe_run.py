@@ -18,7 +18,7 @@ from .fe import TOLERANCE, TowedSystem, simulate_towed, steady_start, towed_syst
 from .fe_kernel import MERGE
 from .vessel import sample_path
 
-__all__ = ["PreparedTowedFE", "prepare_towed_fe", "run_towed_fe"]
+__all__ = ["PreparedTowedFE", "check_towed_size", "prepare_towed_fe", "run_towed_fe"]
 
 REFERENCES = (
     "Paper 004 (seeds/004): truss finite elements, Newmark's method, Morison loads, seabed contact.",
@@ -73,6 +73,17 @@ def _checked_winch(a: TowedDynamicAnalysis, system: TowedSystem, length: float):
     return deployed
 
 
+def check_towed_size(case: Case, nodes: int, per_node: int) -> None:
+    """Refuse a ``towed_dynamic`` run whose steps or stored values (``per_node`` a node and output) exceed the
+    limits (:func:`seacable._limits.check_run_size`), either formulation."""
+    a: TowedDynamicAnalysis = case.analysis
+    n_out = math.floor(a.duration / (a.output_interval or a.time_step) + 1e-9)
+    check_run_size(f"towed_dynamic case '{case.name}'", steps=a.duration / a.time_step,
+                   stored_values=(n_out + 1) * nodes * per_node,
+                   fix="shorten analysis.duration, lengthen analysis.time_step or analysis.output_interval, or use "
+                       "fewer nodes")
+
+
 def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     """Every check of a finite-element ``towed_dynamic`` case that can be made before its time loop, and the
     steady start (:func:`seacable.towed.fe.steady_start`).
@@ -105,12 +116,7 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     net = system.model.network
     longest = float(np.max(deployed(np.linspace(0.0, a.duration, 64)))) if deployed else case.line.length
     slots = net.n_nodes + math.ceil(max(0.0, longest - case.line.length) / system.element_length) + 2
-    out = a.output_interval or a.time_step
-    n_out = math.floor(a.duration / out + 1e-9)
-    check_run_size(f"towed_dynamic case '{case.name}'", steps=a.duration / a.time_step,
-                   stored_values=(n_out + 1) * slots * _PER_NODE,
-                   fix="shorten analysis.duration, lengthen analysis.time_step or analysis.output_interval, or use "
-                       "fewer nodes")
+    check_towed_size(case, slots, _PER_NODE)
     X0 = steady_start(system, p0[0], v0[0])
     if env.depth is not None or water.profile is not None:
         into = water.seabed_z(X0[:, 0]) - X0[:, 2]

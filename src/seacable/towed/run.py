@@ -9,12 +9,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._limits import check_run_size
 from .._validate import in_range
 from ..case import Case, TowedDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV
+from .fe_run import check_towed_size
 from .seabed import seabed_clearance, warn_depth_not_modelled
 from .solver import TowedBodyParameters, cable_parameters, simulate, steady_tow
 from .vessel import initial_heading, sample_path
@@ -136,12 +136,7 @@ def prepare_towed_box(case: Case) -> PreparedTowed:
     """
     a: TowedDynamicAnalysis = case.analysis
     par, n, path, kwargs = case_setup(case)
-    out = a.output_interval or a.time_step
-    n_out = math.floor(a.duration / out + 1e-9)
-    check_run_size(f"towed_dynamic case '{case.name}'", steps=a.duration / a.time_step,
-                   stored_values=(n_out + 1) * n * _PER_NODE,
-                   fix="shorten analysis.duration, lengthen analysis.time_step or analysis.output_interval, or "
-                       "use fewer nodes")
+    check_towed_size(case, n, _PER_NODE)
     _check_start_direction(a, path, case.line.length)
     _, vel0 = path(np.array([0.0]))
     body = kwargs["body"]
