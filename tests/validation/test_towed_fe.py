@@ -406,3 +406,23 @@ def test_a_seabed_profile_presses_each_node_along_its_segments_normal():
                                                                         waves=False)
     F, _, _, _ = MooringModel(net, profile).evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     np.testing.assert_allclose(Fp[:3], F[:3], rtol=1e-9)
+
+
+def test_the_two_part_tow_run_in_time_holds_its_steady_state():
+    """The depressor two-part tow run for 60 s behind a vessel at a steady 2 m/s: the dynamics start from the
+    steady state and stay there (the depressor's and the body's layback and depth within 1 mm, the top tension
+    within 0.5 N of their start): the static equilibrium in the moving frame is the time integration's
+    equilibrium too (no start-up transient)."""
+    spec = {
+        "name": "two_part", "environment": {"water_density": RHO, "gravity": G},
+        "line_types": {"heavy": HEAVY.model_dump(exclude_none=True), "light": LIGHT.model_dump(exclude_none=True)},
+        "line": {"segments": [{"line_type": "light", "length": 100.0}, {"line_type": "heavy", "length": 400.0}],
+                 "attachments": [_two_part().attachments[0].model_dump(exclude_none=True)]},
+        "analysis": {"type": "towed_dynamic", "vessel": {"type": "straight", "speed": 2.0}, "duration": 60.0,
+                     "time_step": 1.0, "n_nodes": 51, "body": BODY.model_dump(exclude_none=True)}}
+    ds = sc.run(sc.Case.parse(spec))
+    for name in ("point_layback", "point_depth"):
+        values = ds[name].values
+        np.testing.assert_allclose(values, np.broadcast_to(values[:1], values.shape), rtol=0, atol=1e-3)
+    np.testing.assert_allclose(ds.top_tension.values, ds.top_tension.values[0], rtol=0, atol=0.5)
+    assert list(ds.point.values) == ["body", "attachments[0] (depressor)"]
