@@ -68,10 +68,11 @@ def _copy_element(src, dst, arrays, ts_lo, ts_hi, visco):
 def _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node):
     """A node born ``ds`` above node n - 2 (module docstring); the tow point moves to the next slot.
 
-    The top element's unstretched length is still the step start's: the new node goes on its chord at the
-    fraction ``ds / ell`` (both pieces keep the element's strain), with the velocity and acceleration of the
-    material there, linear between node n - 2's and the material's at the tow point (the tow point's plus the
-    pay-out ``rate`` [m/s] down the chord)."""
+    The top element's unstretched length is still the step start's: the new node goes where its pieces'
+    tensions balance its weight along the chord (at the fraction ``ds / ell`` of it without weight: both pieces
+    keep the element's strain), lifted off the chord by the cable's sag (a quadratic leaving node n - 2 along its
+    tangent), with the velocity and acceleration of the material there, linear between node n - 2's and the
+    material's at the tow point (the tow point's plus the pay-out ``rate`` [m/s] down the chord)."""
     n = ia[I_N]
     j = n - 1  # the new node's slot, the tow point's until now
     below = n - 2
@@ -80,9 +81,30 @@ def _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, chann
     d0, d1, d2 = X[below, 0] - X[j, 0], X[below, 1] - X[j, 1], X[below, 2] - X[j, 2]
     chord = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
     down = (d0 / chord, d1 / chord, d2 / chord) if chord > 0.0 else (0.0, 0.0, -1.0)
+    if 0.0 < f < 1.0 and chord > 0.0:
+        # where on the chord the new node's weight W (half of each piece) is balanced along it: the upper piece's
+        # tension exceeds the lower's by W (-down . e_z), EA (c - a) / L_u - EA a / L_l = that, for the distance a
+        # from node n - 2 (the chord's fraction ds / ell when weightless); else the weight the node takes from
+        # the tow point unbalances it and starts an axial wave
+        ea, lu = elems[0][below], ell - ds
+        dT = elems[9][below] * 0.5 * ell * (-down[2])
+        a = (chord / lu - dT / ea) / (1.0 / lu + 1.0 / ds)
+        f = min(max(a / chord, 0.0), 1.0)
+    # the cable's tangent at node n - 2, the mean of the element below's direction and the chord's (up the line)
+    tb = np.zeros(3)
+    if below > 0 and chord > 0.0:
+        e0, e1, e2 = X[below, 0] - X[below - 1, 0], X[below, 1] - X[below - 1, 1], X[below, 2] - X[below - 1, 2]
+        le = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+        if le > 0.0:
+            tb[0], tb[1], tb[2] = e0 / le - down[0], e1 / le - down[1], e2 / le - down[2]
+            lt = math.sqrt(tb[0] ** 2 + tb[1] ** 2 + tb[2] ** 2)
+            tb *= 0.5 * chord / lt if lt > 0.0 else 0.0
     for r in range(3):
         X[n, r], V[n, r], A[n, r], G[n, r] = X[j, r], V[j, r], A[j, r], 0.0
-        X[j, r] = X[below, r] + f * (X[n, r] - X[below, r])
+        # on the quadratic from node n - 2 (leaving it along its tangent) to the tow point: the cable's sag
+        # between them, not its chord (a node put on the chord starts a transverse wave)
+        chord_r = X[below, r] + f * (X[n, r] - X[below, r])
+        X[j, r] = chord_r + 2.0 * f * (1.0 - f) * (X[below, r] + tb[r] - 0.5 * (X[below, r] + X[n, r]))
         V[j, r] = V[below, r] + f * (V[n, r] + rate * down[r] - V[below, r])
         A[j, r] = A[below, r] + f * (A[n, r] - A[below, r])
         G[j, r] = G[below, r]
