@@ -41,7 +41,7 @@ from ..mooring.network import FREE, Network, network_from_line
 from ..mooring.solver import MooringModel, Water, advance_interval, generalized_alpha, static_equilibrium
 from . import fe_kernel as FK
 
-__all__ = ["TowedFERun", "TowedSystem", "hanging_tension", "simulate_towed", "steady_start", "towed_system"]
+__all__ = ["TowedFERun", "TowedSystem", "simulate_towed", "steady_start", "towed_system"]
 
 #: Newton tolerance of the time steps, relative to the largest tension or node weight (as mooring_dynamic's).
 TOLERANCE = 1e-7
@@ -214,12 +214,6 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
             f"the steady tow that starts the towed_dynamic run did not converge (tow point moving at "
             f"({v[0]:.4g}, {v[1]:.4g}, {v[2]:.4g}) m/s): {err}", iterations=err.iterations,
             residual=err.residual) from None
-
-
-def hanging_tension(system: TowedSystem, X) -> np.ndarray:
-    """Element tensions [N] of the state ``X`` at rest (a check of the static start)."""
-    _, _, tension, _ = system.model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
-    return tension
 
 
 @dataclass(frozen=True)

@@ -173,8 +173,9 @@ def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node,
     elems = (EA, cdamp, mpl, dia, cdn, cdt, can, cat, buoy, wpl)
     for k in range(px.shape[0]):
         if not math.isnan(lengths[k]):
-            _set_length(ia, lengths[k], (lengths[k] - s_node[ia[I_N] - 1]) / dt, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel, hinges,
-                        hinge_ei, s_node, wpl, dia, pw, pc, weight, bedc)
+            rate = (lengths[k] - s_node[ia[I_N] - 1]) / dt
+            _set_length(ia, lengths[k], rate, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_hi, visco, fidx, channel,
+                        hinges, hinge_ei, s_node, wpl, dia, pw, pc, weight, bedc)
         n = ia[I_N]
         ne = n - 1
         nf = ia[I_NFREE]
