@@ -101,10 +101,9 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
     net = net.replace(**changes)
     ends = line.segment_ends
     lock = max([ends[-2]] + [a.s for a in line.attachments])
-    top_ds = float(net.length[-1]) if net.n_elements else ds
-    # the paid-out type's element length: the top segment's (its elements are equal between break points)
-    seg_top = net.arc_length >= lock - 1e-9 * L
-    top_ds = float(np.max(np.diff(net.arc_length[seg_top]))) if np.count_nonzero(seg_top) > 1 else top_ds
+    # the paid-out type's element length: that of the top piece (from the last joint or attachment, at least one
+    # element long: its elements are equal)
+    top_ds = float(np.max(np.diff(net.arc_length[net.arc_length >= lock - 1e-9 * L])))
     model = MooringModel(net, water)
     model.env[K.E_DRAGTURN] = 1.0  # the drag sets a towed line's shape: its turning terms in the Newton matrix
     contact = np.zeros(net.n_nodes)
@@ -254,8 +253,9 @@ def _grown(a, rows, fill=0.0):
 def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output_interval: float, *,
                    deployed=None, initial=None, tol: float = TOLERANCE, max_iter: int = 30, max_halvings: int = 6,
                    spectral_radius: float = 1.0, progress=None, chunk_seconds: float = 0.25) -> TowedFERun:
-    """Newmark (average acceleration) time stepping of ``system`` behind the tow point ``path(times)`` ->
-    (positions, velocities) (n, 3), from the steady tow (``initial`` positions, default :func:`steady_start`).
+    """Generalised-alpha time stepping (``spectral_radius``; 1: Newmark's average acceleration) of ``system``
+    behind the tow point ``path(times)`` -> (positions, velocities) (n, 3), from the steady tow (``initial``
+    positions, default :func:`steady_start`).
 
     ``deployed(times)`` -> the deployed length [m] (None: fixed). A step whose Newton iteration fails is redone
     at half the step, six times at most, then :class:`~seacable.errors.ConvergenceError` gives the time and

@@ -126,7 +126,7 @@ def _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, chann
 
 
 @njit(cache=True)
-def _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node):
+def _retire(ia, X, V, A, G, L0, fidx, channel, s_node):
     """Node n - 2 goes onto the winch: the element below it runs to the tow point (module docstring)."""
     n = ia[I_N]
     gone = n - 2
@@ -138,8 +138,7 @@ def _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node):
     fidx[n - 1] = -1
     channel[gone] = 0
     channel[n - 1] = -1
-    if hinges.shape[0] > 0 and n - 3 >= 1:
-        hinges[n - 4, 2] = gone  # the last hinge's upper neighbour is now the tow point
+    # bending: the hinge of node n - 2 goes with it; the next one down already ends at slot n - 2, the tow point's
     ia[I_N] = n - 1
     ia[I_NFREE] -= 1
     ia[I_GONE] += 1
@@ -153,7 +152,7 @@ def _set_length(ia, length, rate, ds, s_lock, X, V, A, G, L0, elems, ts_lo, ts_h
     while length - s_node[ia[I_N] - 2] > SPLIT * ds and ia[I_N] < X.shape[0]:
         _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, channel, hinges, hinge_ei, s_node)
     while length - s_node[ia[I_N] - 2] < MERGE * ds and s_node[ia[I_N] - 2] > s_lock and ia[I_N] > 2:
-        _retire(ia, X, V, A, G, L0, fidx, channel, hinges, s_node)
+        _retire(ia, X, V, A, G, L0, fidx, channel, s_node)
     n = ia[I_N]
     L0[n - 2] = length - s_node[n - 2]
     s_node[n - 1] = length

@@ -232,8 +232,7 @@ def run_towed_fe(case: Case, prep: PreparedTowedFE, progress=None):
                 "node_retirements": res.retirements, "wall_time_s": round(res.wall_time, 4),
                 "interrupted": int(res.interrupted), "tangential_drag": a.tangential_drag or "common",
                 "element_length_m": prep.system.element_length, "spectral_radius": a.spectral_radius,
-                "scheme": "lumped masses on elastic elements (paper 004), Newmark average acceleration, Newton, "
-                          "banded LU"}
+                "scheme": "lumped masses on elastic elements (paper 004), generalised alpha, Newton, banded LU"}
     ds = make_dataset(data, coords, analysis="towed_dynamic", case=case, references=REFERENCES, settings=settings)
     ds.attrs["interrupted"] = int(res.interrupted)
     return ds
