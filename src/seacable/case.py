@@ -28,7 +28,9 @@ from .environment import Environment
 from .errors import InputError
 from .line import Lifting, Line, LineType
 from .statics.towed import TangentialDragForm
-from .laying.inputs import Bathymetry, Payout, PayoutBottomTension, PayoutSlack, ShipMotion
+from .laying.bathymetry import BathymetryGrid
+from .laying.inputs import Bathymetry, LayTarget, Payout, PayoutBottomTension, PayoutSlack, PlanShip, ShipMotion
+from .laying.route import Route
 from .mooring.motion import Motion
 from .towed.vessel import VesselPath
 from .towline.barge import Barge
@@ -41,6 +43,7 @@ __all__ = [
     "TowedBody",
     "LayingTheoryAnalysis",
     "LayingDynamicAnalysis",
+    "LayPlanAnalysis",
     "VerticalModesAnalysis",
     "SeabedContact",
     "MooringStaticAnalysis",
@@ -365,6 +368,36 @@ class LayingDynamicAnalysis(Model):
         return self
 
 
+class LayPlanAnalysis(Model):
+    """The lay table along a route, KP by KP, from a quasi-static model of the lay (:mod:`seacable.laying.plan`).
+
+    The line is the cable on board, end A laid first at the start of the table; ``line.attachments``
+    are the repeaters and in-line bodies at their cable lengths ``s``. The current is the environment's
+    (its ``heading`` is in the route's x, y frame: from +x, east, towards +y, north).
+    """
+
+    type: Literal["lay_plan"] = "lay_plan"
+    route: Route = Field(description="Waypoints (alter-course positions) in x, y [m] or latitude, longitude.")
+    ship: PlanShip = Field(description="Ship speed over ground (constant or by KP) and the repeater slow-down.")
+    target: LayTarget = Field(description="Slack or bottom tension to hold on the seabed (constant or by KP).")
+    bathymetry: Bathymetry | None = Field(
+        None, description="Depth along the route: 'distance' (or a CSV column 'kp') is the KP. [m]")
+    bathymetry_grid: BathymetryGrid | None = Field(None, description="Depth on an x, y (or lon, lat) grid.")
+    kp_step: quantity("m", gt=0, fix="a lay table is usually given every 100 m of KP.") = Field(
+        100.0, description="KP interval of the table's rows. [m]")
+    kp_start: quantity("m") | None = Field(None, description="First ship KP of the table; default the route's "
+                                                             "start. [m]")
+    kp_end: quantity("m") | None = Field(None, description="Last ship KP of the table; default the route's end. [m]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.bathymetry is not None and self.bathymetry_grid is not None:
+            raise ValueError("give the depth once: 'bathymetry' (a table along the route) or 'bathymetry_grid'.")
+        if self.kp_start is not None and self.kp_end is not None and not self.kp_end > self.kp_start:
+            raise ValueError(f"kp_end ({self.kp_end:g} m) must be beyond kp_start ({self.kp_start:g} m).")
+        return self
+
+
 VerticalModeMethod = Literal["string", "exact", "wave"]
 
 
@@ -516,7 +549,7 @@ class TowlineDynamicAnalysis(Model):
 
 
 ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis, TowedDynamicAnalysis,
-            LayingTheoryAnalysis, LayingDynamicAnalysis,
+            LayingTheoryAnalysis, LayingDynamicAnalysis, LayPlanAnalysis,
             VerticalModesAnalysis, MooringStaticAnalysis, MooringPushoverAnalysis, MooringDynamicAnalysis,
             TowlineDynamicAnalysis)
 Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
@@ -630,6 +663,10 @@ class Case(Model):
                                  "table. Suggested fix: add 'depth:' under 'environment'.")
             if a.extensible and any(seg.line_type.axial_stiffness is None for seg in self.line.segments):
                 raise ValueError("'extensible: true' needs an axial_stiffness (N) on every line type.")
+        if isinstance(a, LayPlanAnalysis) and a.bathymetry is None and a.bathymetry_grid is None \
+                and self.environment.depth is None:
+            raise ValueError("analysis 'lay_plan' needs the depth: a 'bathymetry' table along the route (KP, depth), "
+                             "a 'bathymetry_grid', or environment.depth (m) for a flat seabed.")
         if isinstance(a, _Mooring):
             missing = [i for i, seg in enumerate(self.line.segments) if seg.line_type.axial_stiffness is None]
             if missing:

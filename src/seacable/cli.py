@@ -120,6 +120,12 @@ def _cmd_run(args) -> int:
         _computation_done()
         path = out if streamed else write_netcdf(ds, out)
         print(f"wrote {path}")
+        if ds.attrs.get("analysis") == "lay_plan":      # the lay table, as the ship's crew reads it
+            from .laying.plan_run import write_lay_table
+
+            table = path.with_name(f"{path.stem}_lay_table.csv")
+            write_lay_table(ds, table)
+            print(f"wrote {table}")
     finally:
         _GUARD.update(armed=False, holding=False)
     if _GUARD["held"]:

@@ -30,6 +30,7 @@ _ANALYSES = {
     "mooring_pushover": ("seacable.mooring.run", "run_mooring_pushover", None),
     "towed_dynamic": ("seacable.towed.run", "run_towed_dynamic", "prepare_towed_dynamic"),
     "laying_dynamic": ("seacable.laying.run", "run_laying_dynamic", "prepare_laying_dynamic"),
+    "lay_plan": ("seacable.laying.plan_run", "run_lay_plan", None),
     "mooring_dynamic": ("seacable.mooring.run", "run_mooring_dynamic", "prepare_mooring_dynamic"),
     "towline_dynamic": ("seacable.towline.run", "run_towline_dynamic", "prepare_towline_dynamic"),
     "system_static": ("seacable.system.run", "run_system_static", "prepare_system_static"),

@@ -121,7 +121,7 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
 def load_case_data(path: str | Path) -> dict:
     """Read a YAML case file into plain data, not yet validated.
 
-    Relative ``file`` entries (vessel, tug, motion and bathymetry tables) are made relative to
+    Relative ``file`` entries (vessel, tug, motion, route and bathymetry tables) are made relative to
     the file's folder.
 
     Raises
@@ -159,12 +159,12 @@ def load_case(path: str | Path) -> Case | SystemCase | MoorDynCase:
 
 
 def resolve_files(data, folder: Path) -> None:
-    """Make the relative ``file`` of a vessel, tug, motion, bathymetry or force table relative to the
+    """Make the relative ``file`` of a vessel, tug, motion, route, bathymetry or force table relative to the
     case file's folder."""
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
         return
-    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "motion", "tug")]
+    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "motion", "tug")]
     for key in ("body_motions", "point_motions", "external_forces"):  # system_dynamic: one table per name
         named = analysis.get(key)
         if isinstance(named, dict):

@@ -18,6 +18,8 @@ from ..errors import InputError
 
 __all__ = [
     "Bathymetry",
+    "LayTarget",
+    "PlanShip",
     "Payout",
     "PayoutBottomTension",
     "PayoutRate",
@@ -187,6 +189,119 @@ def _check_table(distance, depth, where: str) -> None:
                          "below the surface as positive numbers.")
 
 
+def _kp_table(kp, values, name: str, unit: str, where: str) -> None:
+    """A table by KP: equal lengths >= 1, KP strictly increasing, values finite and >= 0."""
+    k, v = np.asarray(kp, float), np.asarray(values, float)
+    if k.size != v.size or k.size < 1:
+        raise ValueError(f"{where}: kp and {name} must have the same non-zero length, got {k.size} and {v.size}.")
+    if not np.all(np.isfinite(k)) or np.any(np.diff(k) <= 0):
+        raise ValueError(f"{where}: kp must be finite and strictly increasing, got {list(k)} m. Suggested fix: sort "
+                         "the table by KP.")
+    bad = ~np.isfinite(v) | (v < 0)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError(f"{where}: {name}[{i}] must be a finite number >= 0 {unit}, got {v[i]:g} {unit}.")
+
+
+class PlanShip(Model):
+    """The ship of a lay plan: its speed over ground, constant or by KP, and the repeater slow-down.
+
+    Parameters
+    ----------
+    speed
+        Constant speed. [m/s]
+    kp, speeds
+        Speed by ship KP instead, linear between the points and constant beyond. [m], [m/s]
+    repeater_speed
+        Speed while a repeater descends (water entry to touchdown); ``None``: no slow-down. [m/s]
+    acceleration
+        Rate of the speed changes for repeaters. [m/s^2]
+    """
+
+    speed: quantity("m/s", gt=0, fix="give the ship speed over ground, e.g. 1.5 m/s.") | None = Field(
+        None, description="Constant ship speed. [m/s]")
+    kp: tuple[float, ...] | None = Field(None, description="Ship KPs of the speed table. [m]")
+    speeds: tuple[float, ...] | None = Field(None, description="Ship speeds of the table. [m/s]")
+    repeater_speed: quantity("m/s", gt=0, fix="a cable ship slows to about 0.3-0.8 m/s for a repeater.") | None = \
+        Field(None, description="Ship speed while a repeater descends. [m/s]")
+    acceleration: quantity("m/s^2", gt=0, fix="a cable ship changes speed at about 0.01-0.1 m/s^2.") = Field(
+        0.02, description="Rate of the speed change for repeaters. [m/s^2]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if (self.speed is None) == (self.kp is None and self.speeds is None):
+            raise ValueError("give either 'speed' (m/s) or a table 'kp' (m) and 'speeds' (m/s). Suggested fix: "
+                             "'ship: {speed: 1.5}'.")
+        if self.speed is None:
+            if self.kp is None or self.speeds is None:
+                raise ValueError("a speed table needs both 'kp' (m) and 'speeds' (m/s).")
+            _kp_table(self.kp, self.speeds, "speeds", "m/s", "ship")
+            if min(self.speeds) <= 0:
+                raise ValueError(f"ship.speeds must be > 0 m/s, got {min(self.speeds):g} m/s: a lay plan needs a "
+                                 "moving ship. Suggested fix: give the speed over ground of each stretch.")
+        return self
+
+    def at(self, kp) -> np.ndarray:
+        """Scheduled speed at ship KPs. [m/s]"""
+        kp = np.asarray(kp, float)
+        if self.speed is not None:
+            return np.full(kp.shape, float(self.speed))
+        return np.interp(kp, self.kp, self.speeds)
+
+
+class LayTarget(Model):
+    """What the lay holds on the seabed: a slack or a bottom tension, constant or by touchdown KP.
+
+    Parameters
+    ----------
+    slack
+        Laid cable length over the seabed distance, minus one (0.03: 3 % slack). [-]
+    bottom_tension
+        Tension at the touchdown instead. [N]
+    kp
+        KPs of a table of either (the values then are lists), linear between and constant beyond. [m]
+    """
+
+    slack: float | tuple[float, ...] | None = Field(None, description="Target slack, >= 0. [-]")
+    bottom_tension: float | tuple[float, ...] | None = Field(None, description="Target bottom tension. [N]")
+    kp: tuple[float, ...] | None = Field(None, description="KPs of a target table. [m]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if (self.slack is None) == (self.bottom_tension is None):
+            raise ValueError("give one target: 'slack' (e.g. 0.03 for 3 %) or 'bottom_tension' (N).")
+        name, unit = ("slack", "(a ratio)") if self.slack is not None else ("bottom_tension", "N")
+        value = getattr(self, name)
+        if self.kp is None:
+            if isinstance(value, tuple):
+                raise ValueError(f"target.{name} is a list: give its KPs in target.kp (m), or one number.")
+            values = (value,)
+        else:
+            if not isinstance(value, tuple):
+                raise ValueError(f"target.kp is given: target.{name} must be a list of the same length.")
+            values = value
+            _kp_table(self.kp, [abs(v) for v in value], name, unit, "target")
+        for i, v in enumerate(values):
+            if not math.isfinite(v) or v < 0:
+                what = ("a slack below zero is a cable under tension on the seabed; Suggested fix: give slack >= 0 "
+                        "(0.03 for 3 %), or a bottom_tension (N) for a lay under tension"
+                        if name == "slack" else "Suggested fix: give the touchdown tension in N, >= 0")
+                raise ValueError(f"target.{name}{f'[{i}]' if self.kp is not None else ''} must be a finite number >= 0 "
+                                 f"{unit}, got {v:g}: {what}.")
+            if name == "slack" and v > 1.0:
+                raise ValueError(f"target.slack {v:g} is {100 * v:g} %: slack is a ratio (0.03 for 3 %). Suggested "
+                                 "fix: give it as a fraction.")
+        return self
+
+    def at(self, kp) -> np.ndarray:
+        """The target at KPs. [-] or [N]"""
+        value = self.slack if self.slack is not None else self.bottom_tension
+        kp = np.asarray(kp, float)
+        if self.kp is None:
+            return np.full(kp.shape, float(value))
+        return np.interp(kp, self.kp, value)
+
+
 def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:
     path = Path(file)
     try:
@@ -196,10 +311,11 @@ def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:
         raise InputError(f"bathymetry file '{path}' cannot be read ({err.strerror or err}). Suggested fix: "
                          "check the path (relative to the case file's folder).") from None
     header = [c.lower() for c in rows[0]] if rows else []
-    if "distance" not in header or "depth" not in header:
-        raise InputError(f"bathymetry file '{path}' needs a header row with columns 'distance' and 'depth', "
-                         f"got {', '.join(header) or 'an empty file'}.")
-    i, j = header.index("distance"), header.index("depth")
+    along = "distance" if "distance" in header else "kp"
+    if along not in header or "depth" not in header:
+        raise InputError(f"bathymetry file '{path}' needs a header row with columns 'distance' (or 'kp') and "
+                         f"'depth', got {', '.join(header) or 'an empty file'}.")
+    i, j = header.index(along), header.index("depth")
     try:
         values = np.array([[float(r[i]), float(r[j])] for r in rows[1:]], dtype=float).reshape(-1, 2)
     except (ValueError, IndexError):

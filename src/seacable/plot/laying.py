@@ -186,4 +186,61 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
     return path
 
 
-LAYING_FIGURES = {"laying_dynamic": _laying_dynamic}
+def _lay_plan(ds, plt):
+    """The lay table along KP (depth and touchdown, speeds, tensions, layback and offset) and the plan view."""
+    kp = ds.kp.values / 1e3
+    figs = {}
+    fig, axes = plt.subplots(4, 1, figsize=(9, 10), sharex=True)
+    ax = axes[0]
+    ax.fill_between(kp, -ds.water_depth.values, np.nanmin(-ds.water_depth.values) * 1.05, color="0.85",
+                    label="seabed at the ship")
+    ax.plot(ds.touchdown_kp.values / 1e3, -ds.touchdown_depth.values, "C1-", lw=1.2, label="touchdown")
+    if "repeater_touchdown_kp" in ds:
+        for name, k0, k1 in zip(ds.repeater_name.values, ds.repeater_entry_kp.values, ds.repeater_touchdown_kp.values):
+            ax.axvspan(k0 / 1e3, k1 / 1e3, color="C3", alpha=0.12)
+            ax.annotate(str(name), (k0 / 1e3, 0.0), fontsize=7, color="C3", va="top")
+    ax.set(ylabel="elevation [m]", title=f"Lay table along the route: {ds.attrs.get('title', '')}")
+    ax.legend(fontsize=7, loc="lower left")
+    ax = axes[1]
+    ax.plot(kp, ds.ship_speed, label="ship")
+    ax.plot(kp, ds.payout_speed, label="payout")
+    ax.set_ylabel("speed [m/s]")
+    twin = ax.twinx()
+    twin.plot(kp, 100.0 * ds.route_slack.values, "C2--", lw=1, label="slack on route KP")
+    twin.set_ylabel("route slack [%]")
+    lines = ax.get_lines() + twin.get_lines()
+    ax.legend(lines, [ln.get_label() for ln in lines], fontsize=7)
+    ax = axes[2]
+    big = np.nanmax(np.abs(ds.top_tension.values)) >= 1e4
+    scale, unit = (1e3, "kN") if big else (1.0, "N")
+    ax.plot(kp, ds.top_tension / scale, label="top (ship)")
+    ax.plot(kp, ds.bottom_tension / scale, label="bottom (touchdown)")
+    ax.set_ylabel(f"tension [{unit}]")
+    twin = ax.twinx()
+    twin.plot(kp, ds.entry_angle, "C4--", lw=1, label="entry angle")
+    twin.set_ylabel(_label(ds.entry_angle))
+    lines = ax.get_lines() + twin.get_lines()
+    ax.legend(lines, [ln.get_label() for ln in lines], fontsize=7)
+    ax = axes[3]
+    ax.plot(kp, ds.layback, label="layback")
+    ax.plot(kp, ds.touchdown_offset, label="touchdown offset (+ port)")
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set(xlabel="ship KP [km]", ylabel="distance [m]")
+    ax.legend(fontsize=7)
+    figs["table"] = fig
+
+    fig, ax = plt.subplots(figsize=(8, 6))
+    ax.plot(ds.waypoint_x / 1e3, ds.waypoint_y / 1e3, "k--", lw=0.8, marker="o", ms=3, label="route")
+    ax.plot(ds.ship_x / 1e3, ds.ship_y / 1e3, "C0-", lw=1.0, label="ship")
+    ax.plot(ds.touchdown_x / 1e3, ds.touchdown_y / 1e3, "C1-", lw=1.2, label="touchdown (laid cable)")
+    if "repeater_landing_kp" in ds:
+        i = np.searchsorted(ds.kp.values, ds.repeater_touchdown_kp.values).clip(0, kp.size - 1)
+        ax.plot(ds.touchdown_x.values[i] / 1e3, ds.touchdown_y.values[i] / 1e3, "D", color="C3", ms=5,
+                label="repeaters landed")
+    ax.set(xlabel="x [km]", ylabel="y [km]", title="Plan view", aspect="equal")
+    ax.legend(fontsize=7)
+    figs["plan"] = fig
+    return figs
+
+
+LAYING_FIGURES = {"laying_dynamic": _laying_dynamic, "lay_plan": _lay_plan}

@@ -1,0 +1,485 @@
+"""Lay planning along a route: the lay table, KP by KP, from a quasi-static model of the lay.
+
+The model
+---------
+At each ship KP the suspended cable is taken in its steady state in the frame of the ship, moving
+at the ship's speed ``V_s`` along the route's leg at that KP. The cable's material flows along it
+at the payout speed ``V_c``, so a material point moves over the ground at ``v = V_s e_1 - V_c t``
+(``t`` the unit tangent pointing up towards the ship) and the water passes it at ``u = c(z) - v``.
+Per unit length the cable carries its weight in water ``w``, the normal drag
+``1/2 rho C_dn d |u_n| u_n`` and the tangential drag ``1/2 rho C_dt pi d |u_t| u_t``; the material
+turning along the curve needs the centripetal force ``(m + m_a) V_c^2 dt/ds``. The steady balance
+of an element, integrated from the touchdown up to the surface, is::
+
+    dT/ds = -f . t,    (T - (m + m_a) V_c^2) dt/ds = -(f - (f . t) t),    dr/ds = (1 + T/EA) t.
+
+* **Slack target** (zero bottom tension): the cable leaves the seabed straight, in the direction
+  where the normal drag balances the normal weight. Projecting the balance on the normal plane of a
+  straight cable (derived in :func:`straight_direction`), the horizontal part of ``t`` points along
+  the ship's velocity through the water ``W = V_s e_1 - c`` and its angle to the horizontal solves
+  Zajac's ``w cos(alpha) = 1/2 rho C_dn d |W|^2 sin^2(alpha)`` with ``|W|`` for ``V_s``. A
+  cross-current ``c_2`` therefore turns the cable's vertical plane off the route by
+  ``atan(c_2 / (V_s - c_1))`` and the touchdown sits down-current of the route by
+  ``h cot(alpha) sin(that angle)``. In a uniform current the cable is straight and this is exact
+  (paper 001 section 2); in a current profile the direction is followed up the depth while the
+  tangent's relaxation length is below half a step, and the equations above are integrated beyond.
+* **Bottom-tension target** ``T_0``: the cable leaves the seabed along the ship's heading, tangent to
+  the seabed's slope, with the tension ``T_0``: the catenary with drag.
+
+The touchdown is where the span from the ship meets the seabed: its depth is iterated on (a grid
+gives a different depth off the route). The laid cable follows the touchdown's path over the
+seabed: per metre of it, ``1 + slack`` of cable (or ``1 / (1 + T_0/EA)`` under a bottom tension).
+The cable paid out at a ship KP is the cable laid up to the touchdown plus the suspended length, and
+the payout speed is ``V_s d(paid out)/dKP``; the time is the integral of ``dKP / V_s``. A change of the ship's
+velocity (speed or heading) reaches the span through a first-order lag of the time the straight
+span takes to pay out, ``h / (V_s sin(alpha))`` (about the time a cable element takes to sink to the
+touchdown): the span is computed for the lagged velocity, so the touchdown runs on
+smoothly through a slow-down or an alter-course instead of jumping to the new steady span. A repeater
+(``line.attachments``) slows the ship to ``repeater_speed`` from its water entry (cable paid out =
+its ``s``) to its touchdown (cable laid = its ``s``), at the ship's ``acceleration`` (v dv/dKP = a);
+the ship speed, the spans and the repeaters' KPs are iterated to agreement.
+
+Limits: the span is in steady state at each KP for the lagged velocity (the lag is a model of the
+transient, not its solution; the dynamic model gives it), and in a vertical plane; the seabed's cross slope, a repeater's own weight and drag and the cable's
+bending stiffness are left out, and so is a span that touches a ridge between touchdown and ship
+(flagged: ``span_clearance < 0``). A touchdown that would move backwards (the seabed falling away
+faster than the layback grows) is flagged too. The dynamic model (``laying_dynamic``) has none of
+these limits.
+
+References
+----------
+.. [1] Zajac, E. E., 1957. Dynamics and kinematics of the laying and recovery of submarine cable.
+   Bell System Technical Journal 36(5), 1129-1207.
+.. [2] Paper 001 (seeds/001), section 2, eq. (1)-(11).
+"""
+
+from __future__ import annotations
+
+import math
+import time as _time
+import warnings
+
+import numpy as np
+from numba import njit
+
+from ..errors import InputError, SeacableWarning
+
+__all__ = ["LayPlan", "plan_lay", "solve_spans", "straight_direction"]
+
+# columns of the per-station property table
+S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE = range(6)
+N_STATION_PROPS = 6
+_STEPS = 80          # RK4 steps over the straight cable's length at most
+_MAX_STEP = 50.0     # m, longest RK4 step
+
+
+@njit(cache=True)
+def _current(z, depths, speeds):
+    if depths.size == 1:
+        return speeds[0]
+    return np.interp(-z, depths, speeds)
+
+
+@njit(cache=True)
+def straight_direction(w, kn, vs, c1, c2):
+    """Unit tangent (up, towards the ship) of a straight cable under zero tension.
+
+    Derivation: on a straight cable of direction ``t`` the tension has no normal component, so the
+    normal drag balances the normal weight: ``k_n |u_n| u_n = w (e_z - (e_z . t) t)``, where
+    ``u_n = (c - V_s e_1)_n = -W_n`` (the payout moves the material along ``t`` and drops out).
+    Write ``t = (cos(alpha) h, sin(alpha))`` with ``h`` a horizontal unit vector. The horizontal part
+    of the balance, ``-(W - (W.t) t)_h = lambda (e_z - sin(alpha) t)_h = -lambda sin(alpha) cos(alpha) h``,
+    leaves ``W`` parallel to ``h``; the vertical part then gives ``lambda = |W| tan(alpha) > 0`` only
+    for ``h = +W/|W|`` (the cable rises towards where the ship moves through the water), and
+    ``|u_n| = |W| sin(alpha)``, so ``k_n |W|^2 sin^2(alpha) = w cos(alpha)``: Zajac's angle with the
+    relative speed ``|W|``. Its root: ``cos(alpha) = 2 q / (w + sqrt(w^2 + 4 q^2))``, ``q = k_n |W|^2``.
+
+    Parameters: weight ``w`` [N/m], ``k_n = 1/2 rho C_dn d`` [kg/m^2], ship speed ``vs`` along e_1 and
+    the current ``(c1, c2)`` in the ship's frame [m/s]. Returns ``(t1, t2, t3)``.
+    """
+    w1, w2 = vs - c1, -c2
+    speed = math.sqrt(w1 * w1 + w2 * w2)
+    if speed < 1e-12:
+        return 0.0, 0.0, 1.0
+    q = kn * speed * speed
+    ca = 2.0 * q / (w + math.sqrt(w * w + 4.0 * q * q))
+    sa = math.sqrt(max(1.0 - ca * ca, 0.0))
+    return ca * w1 / speed, ca * w2 / speed, sa
+
+
+@njit(cache=True)
+def _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, out):
+    """d/ds of (r1, r2, r3, t1, t2, t3, T); returns the normal-force scale |df/dt| for the step control."""
+    w, d, cdn, cdt, meff, comp = p[S_W], p[S_D], p[S_CDN], p[S_CDT], p[S_MEFF], p[S_COMPLIANCE]
+    kn = 0.5 * rho * cdn * d
+    kt = 0.5 * rho * cdt * math.pi * d
+    t1, t2, t3, T = y[3], y[4], y[5], y[6]
+    c = _current(-h + y[2], depths, speeds)
+    u1 = c * cos_c - (vs - vc * t1)
+    u2 = c * sin_c + vc * t2
+    u3 = vc * t3
+    ut = u1 * t1 + u2 * t2 + u3 * t3
+    n1, n2, n3 = u1 - ut * t1, u2 - ut * t2, u3 - ut * t3
+    un = math.sqrt(n1 * n1 + n2 * n2 + n3 * n3)
+    f1 = kn * un * n1 + kt * abs(ut) * ut * t1
+    f2 = kn * un * n2 + kt * abs(ut) * ut * t2
+    f3 = -w + kn * un * n3 + kt * abs(ut) * ut * t3
+    ft = f1 * t1 + f2 * t2 + f3 * t3
+    teff = T - meff * vc * vc
+    if teff == 0.0:                       # (a frozen step, whose direction is not integrated)
+        teff = 1e-300
+    stretch = 1.0 + T * comp
+    out[0], out[1], out[2] = stretch * t1, stretch * t2, stretch * t3
+    out[3] = -(f1 - ft * t1) / teff
+    out[4] = -(f2 - ft * t2) / teff
+    out[5] = -(f3 - ft * t3) / teff
+    out[6] = -ft
+    return w + 2.0 * kn * (un * un + ut * ut) + 2.0 * kt * ut * ut
+
+
+@njit(cache=True)
+def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
+    """One suspended span from the touchdown (depth ``h``) up to the surface; fills ``out`` with
+    (ship - touchdown along e_1, along e_2, suspended length, top tension, entry angle); NaN if the
+    cable does not reach the surface.
+
+    The tangent relaxes to the straight cable's direction over the length ``ell = (T - (m + m_a) V_c^2) /
+    |df/dt|`` (the effective tension over the normal force's gradient). Where ``ell`` is shorter than
+    half the step ``ds`` (1/80 of the straight cable's length, at most 50 m) the tangent is taken there (:func:`straight_direction`,
+    exact in a uniform current, where one step reaches the surface: the forces are constant along a
+    straight cable) and only the tension and the position advance; beyond, RK4 with the
+    step ``min(ds, ell)``, inside its stability bound. A bend at the touchdown shorter than half a
+    step (a light bottom tension under strong drag) is not resolved.
+    """
+    w = p[S_W]
+    kn = 0.5 * rho * p[S_CDN] * p[S_D]
+    y = np.zeros(7)
+    y[6] = t0
+    c = _current(-h, depths, speeds)
+    y[3], y[4], y[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
+    # the step: 1/80 of the straight cable's length from the seabed to the surface
+    ds_max = min(h / max(y[5], 0.05) / _STEPS, _MAX_STEP)
+    if t0 > 0.0:
+        y[3], y[4], y[5] = math.cos(beta), 0.0, math.sin(beta)
+    k1, k2, k3, k4, tmp = np.empty(7), np.empty(7), np.empty(7), np.empty(7), np.empty(7)
+    s = 0.0
+    meff_v2 = p[S_MEFF] * vc * vc
+    uniform = depths.size == 1
+    for _ in range(100000):
+        if y[2] >= h:
+            break
+        scale = _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k1)
+        relax = (y[6] - meff_v2) / scale      # length over which the tangent relaxes to its equilibrium [m]
+        frozen = relax < 0.5 * ds_max
+        if frozen:
+            # shorter than the step: the tangent is the straight cable's (exact in a uniform current); the
+            # tension and the position advance along it
+            ds = ds_max
+            if uniform and k1[2] > 0.0:
+                ds = (h - y[2]) / k1[2]      # straight, with forces constant along it: one step to the surface
+            for j in range(3, 6):
+                k1[j] = 0.0
+            for j in range(7):
+                tmp[j] = y[j] + ds * k1[j]
+        else:
+            ds = min(ds_max, relax)
+            for j in range(7):
+                tmp[j] = y[j] + 0.5 * ds * k1[j]
+            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k2)
+            for j in range(7):
+                tmp[j] = y[j] + 0.5 * ds * k2[j]
+            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k3)
+            for j in range(7):
+                tmp[j] = y[j] + ds * k3[j]
+            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k4)
+            for j in range(7):
+                tmp[j] = y[j] + ds / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
+        if tmp[2] >= h:                       # the surface within the step: linear back to it
+            f = (h - y[2]) / (tmp[2] - y[2])
+            for j in range(7):
+                tmp[j] = y[j] + f * (tmp[j] - y[j])
+            ds *= f
+        norm = math.sqrt(tmp[3] * tmp[3] + tmp[4] * tmp[4] + tmp[5] * tmp[5])
+        tmp[3] /= norm
+        tmp[4] /= norm
+        tmp[5] /= norm
+        if frozen:
+            c = _current(-h + tmp[2], depths, speeds)
+            tmp[3], tmp[4], tmp[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
+        for j in range(7):
+            y[j] = tmp[j]
+        s += ds
+        if y[2] < -h:                         # turned down: no span reaches the surface
+            out[:] = np.nan
+            return
+    if y[2] < h:
+        out[:] = np.nan
+        return
+    out[0], out[1], out[2], out[3] = y[0], y[1], s, y[6]
+    out[4] = math.asin(min(max(y[5], -1.0), 1.0))
+
+
+@njit(cache=True)
+def solve_spans(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
+    """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
+    for i in range(h.size):
+        if active[i]:
+            _span(h[i], beta[i], vs[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i])
+
+
+class LayPlan:
+    """The lay table: arrays by ship KP (``columns``), the repeaters' events, and flags."""
+
+    def __init__(self, columns: dict, repeaters: dict, notes: list[str], iterations: int, wall_time: float):
+        self.columns, self.repeaters, self.notes = columns, repeaters, notes
+        self.iterations, self.wall_time = iterations, wall_time
+
+
+def _speed_profile(kp, scheduled, windows, repeater_speed, acceleration):
+    """Ship speed at the stations: the schedule, slowed to ``repeater_speed`` inside ``windows`` (KP ranges),
+    every change at the ``acceleration`` (``v dv/dKP = a``), starting where the window starts."""
+    v = np.array(scheduled, float)
+    if repeater_speed is None or not windows:
+        return v
+    target = v.copy()
+    for a, b in windows:
+        inside = (kp >= a) & (kp <= b)
+        target[inside] = np.minimum(target[inside], repeater_speed)
+    out = np.empty_like(v)
+    out[0] = target[0]
+    for i in range(1, kp.size):
+        reach = 2.0 * acceleration * (kp[i] - kp[i - 1])
+        prev2 = out[i - 1] ** 2
+        if target[i] < out[i - 1]:
+            out[i] = max(target[i], math.sqrt(max(prev2 - reach, 0.0)))
+        else:
+            out[i] = min(target[i], math.sqrt(prev2 + reach))
+    return out
+
+
+def _crossing(kp, values, level):
+    """First KP where an increasing-ish series reaches ``level`` (linear between stations); NaN if never."""
+    above = np.flatnonzero(values >= level)
+    if above.size == 0:
+        return math.nan
+    i = int(above[0])
+    if i == 0:
+        return float(kp[0])
+    f = (level - values[i - 1]) / (values[i] - values[i - 1])
+    return float(kp[i - 1] + f * (kp[i] - kp[i - 1]))
+
+
+def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=None, props_at, current,
+             water_density, repeaters=(), repeater_speed=None, acceleration=0.02, max_iterations=30) -> LayPlan:
+    """The lay table at the ship KPs ``kp`` (see the module's description of the model).
+
+    Parameters
+    ----------
+    route : RouteGeometry
+    seabed : SeabedMap
+    kp : (n,) array
+        Ship KPs of the table, increasing. [m]
+    scheduled_speed : (n,) array
+        Ship speed over the ground at them, before repeater slow-downs. [m/s]
+    slack, bottom_tension : (n,) arrays or None
+        The target at each station's touchdown: one of the two (slack >= 0 [-], or a tension [N]).
+    props_at : callable
+        ``props_at(s)`` -> (n, 6) station properties (``S_*`` columns) of the cable at material coordinates s.
+    current : seacable.environment.Current
+    water_density : float
+    repeaters : sequence of (name, s)
+        In-line bodies at cable coordinates ``s`` from the start of the lay. [m]
+    repeater_speed, acceleration : float
+        Ship speed while a repeater descends [m/s] (None: no slow-down) and the rate of the change. [m/s^2]
+
+    Returns
+    -------
+    LayPlan
+    """
+    wall0 = _time.perf_counter()
+    n = kp.size
+    ship_xy = route.point(kp)
+    psi = route.heading(kp)
+    if current.depths is None:
+        depths, speeds = np.zeros(1), np.array([current.speed])
+    else:
+        depths, speeds = np.asarray(current.depths, float), np.asarray(current.speeds, float)
+    tension_mode = bottom_tension is not None
+    t0 = np.asarray(bottom_tension if tension_mode else np.zeros(n), float)
+    seabed.check_covers(ship_xy, "route", kp)
+    h_ship = seabed.depth(ship_xy)
+    vs = np.array(scheduled_speed, float)
+    s_td = np.zeros(n)
+    vc = vs * (1.0 + (np.zeros(n) if tension_mode else np.asarray(slack, float)))
+    out = np.full((n, 5), np.nan)
+    h = h_ship.copy()
+    td_xy = ship_xy.copy()
+    rep_rows, windows, hold = [], [], False
+    tau = np.zeros(n)
+    solved = np.full((n, 4), np.nan)             # the inputs each station's span was last solved with
+    delta = 5.0                                  # m, half-base of the seabed slope's central difference
+    total = 0
+    for outer in range(max_iterations):
+        props = props_at(s_td)
+        v_eff = _lagged_velocity(kp, vs, psi, tau)
+        speed_eff = np.hypot(v_eff[:, 0], v_eff[:, 1])
+        psi_eff = np.arctan2(v_eff[:, 1], v_eff[:, 0])
+        e1 = np.column_stack([np.cos(psi_eff), np.sin(psi_eff)])
+        e2 = np.column_stack([-e1[:, 1], e1[:, 0]])
+        cos_c, sin_c = np.cos(current.heading - psi_eff), np.sin(current.heading - psi_eff)
+        inputs = np.column_stack([speed_eff, psi_eff, vc, props[:, S_W]])
+        # (a payout speed right to 1e-6 changes the tension by far less than the planner's own accuracy)
+        active = ~np.all(np.abs(inputs - solved) <= 1e-6 * np.abs(inputs) + 1e-12, axis=1)
+        solved = inputs
+        h_prev = g_prev = None
+        for inner in range(50):               # the touchdown's depth h = g(h), by the secant method per station
+            if not active.any():
+                break
+            fwd = seabed.depth(td_xy + delta * e1)
+            back = seabed.depth(td_xy - delta * e1)
+            beta = np.arctan(np.nan_to_num((back - fwd) / (2.0 * delta)))
+            solve_spans(h, beta, speed_eff, vc, cos_c, sin_c, t0, depths, speeds, water_density, props, active, out)
+            total += 1
+            if np.isnan(out[active]).any():
+                i = int(np.flatnonzero(active & np.isnan(out[:, 0]))[0])
+                raise InputError(f"lay plan at KP {kp[i]:.1f} m: the cable from the touchdown (depth {h[i]:.1f} m) "
+                                 "does not reach the surface (it turns down on the way). Suggested fix: check the "
+                                 "current against the ship speed, or use the dynamic model (laying_dynamic).")
+            new_xy = ship_xy - out[:, 0:1] * e1 - out[:, 1:2] * e2
+            seabed.check_covers(new_xy[active], "touchdown", kp[active])
+            g = np.where(active, seabed.depth(new_xy), h)
+            td_xy = np.where(active[:, None], new_xy, td_xy)
+            step = g - h
+            if h_prev is not None:
+                # secant on r(h) = g(h) - h; a fixed-point step where the secant is flat or would go far
+                r_prev = g_prev - h_prev
+                slope = np.where(np.abs(h - h_prev) > 0, (step - r_prev) / np.where(h != h_prev, h - h_prev, 1.0), 0.0)
+                newton = np.where(slope < -0.05, -step / np.where(slope < -0.05, slope, -1.0), step)
+                step = np.where(np.abs(newton) <= 2.0 * np.abs(step), newton, step)
+            h_prev, g_prev = h.copy(), g
+            active = active & (np.abs(g - h) > 1e-6 * np.maximum(h, 1.0))
+            h = np.where(active, h + step, h)
+        td_z = -seabed.depth(td_xy)
+        path = np.concatenate([[0.0], np.cumsum(np.sqrt(np.sum(np.diff(td_xy, axis=0) ** 2, axis=1)
+                                                        + np.diff(td_z) ** 2))])
+        if tension_mode:
+            per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE])
+        else:
+            per_metre = 1.0 + np.asarray(slack, float)
+        s_new = np.concatenate([[0.0], np.cumsum(0.5 * (per_metre[1:] + per_metre[:-1]) * np.diff(path))])
+        paid = s_new + out[:, 2]
+        vc_new = np.maximum(vs * np.gradient(paid, kp), 0.0)
+        rep_rows = [(name, s, _crossing(kp, paid, s), _crossing(kp, s_new, s)) for name, s in repeaters]
+        found = [(a if math.isfinite(a) else kp[0], b if math.isfinite(b) else kp[-1])
+                 for _, _, a, b in rep_rows if math.isfinite(a) or math.isfinite(b)]
+        if outer >= 2 and len(found) == len(windows):
+            # a slow-down that ends later lays the repeater earlier (the span flattens as the ship speeds up), so
+            # the plain iteration can swing between two ends: halfway, and once the ends move by less than a
+            # station (the speeds are taken at the stations) the later of the two, held
+            swing = max(max(abs(a - c), abs(b - d)) for (a, b), (c, d) in zip(found, windows)) if found else 0.0
+            if hold or (outer >= 6 and swing < np.max(np.diff(kp))):
+                hold = True
+                found = [(min(a, c), max(b, d)) for (a, b), (c, d) in zip(found, windows)]
+            else:
+                found = [(0.5 * (a + c), 0.5 * (b + d)) for (a, b), (c, d) in zip(found, windows)]
+        windows = found
+        vs_new = _speed_profile(kp, scheduled_speed, windows, repeater_speed, acceleration)
+        # the lag: the time to pay out the straight span at the scheduled speed (of the span's own length the
+        # iteration settles slowly, and of V_c not at all)
+        q = 0.5 * water_density * props[:, S_CDN] * props[:, S_D] * vs_new ** 2
+        sin_a = np.sqrt(1.0 - (2.0 * q / (props[:, S_W] + np.sqrt(props[:, S_W] ** 2 + 4.0 * q * q))) ** 2)
+        tau_new = h / (vs_new * np.maximum(sin_a, 1e-3))
+        # settled: speeds to 1e-7 of the ship's, lengths and the lag to 1e-7 (1 mm in 10 km)
+        settled = (np.max(np.abs(vc_new - vc)) <= 1e-7 * np.max(vs) and np.max(np.abs(vs_new - vs)) <= 1e-7 * np.max(vs)
+                   and np.max(np.abs(s_new - s_td)) <= 1e-7 * max(float(s_new[-1]), 1.0)
+                   and np.max(np.abs(tau_new - tau)) <= 1e-7 * np.max(tau_new))
+        vc, vs, s_td, tau = vc_new, vs_new, s_new, tau_new
+        if settled:
+            break
+    else:
+        warnings.warn(f"lay plan: the ship speed, payout and repeater positions did not settle in {max_iterations} "
+                      "iterations; the table is the last iterate.", SeacableWarning, stacklevel=2)
+    td_kp, td_off = route.locate(td_xy)
+    time = np.concatenate([[0.0], np.cumsum(np.diff(kp) * 0.5 * (1.0 / vs[1:] + 1.0 / vs[:-1]))])
+    td_rate = np.gradient(td_kp, kp)
+    moving = td_rate > 0.05
+    route_slack = np.where(moving, np.gradient(s_td, kp) / np.where(moving, td_rate, 1.0) - 1.0, np.nan)
+    clearance = _span_clearance(seabed, ship_xy, td_xy, td_z)
+    notes = _flags(kp, td_rate, clearance)
+    props = props_at(s_td)
+    columns = {
+        "ship_x": ship_xy[:, 0], "ship_y": ship_xy[:, 1], "ship_heading": psi, "ship_speed": vs,
+        "payout_speed": vc, "paid_out": s_td + out[:, 2], "time": time,
+        "touchdown_kp": td_kp, "touchdown_offset": td_off, "touchdown_x": td_xy[:, 0], "touchdown_y": td_xy[:, 1],
+        "touchdown_depth": -td_z, "touchdown_speed": vs * np.gradient(path, kp), "water_depth": h_ship,
+        "layback": np.hypot(out[:, 0], out[:, 1]), "layback_along": out[:, 0] * np.cos(psi_eff - psi)
+        - out[:, 1] * np.sin(psi_eff - psi), "layback_across": out[:, 0] * np.sin(psi_eff - psi)
+        + out[:, 1] * np.cos(psi_eff - psi),
+        "suspended_length": out[:, 2], "laid_length": s_td, "top_tension": out[:, 3],
+        "bottom_tension": t0.copy(), "entry_angle": np.degrees(out[:, 4]),
+        "slack": (np.asarray(slack, float) if not tension_mode else per_metre - 1.0),
+        "route_slack": route_slack, "span_clearance": clearance, "span_speed": speed_eff,
+    }
+    reps = {"name": [r[0] for r in rep_rows], "s": np.array([r[1] for r in rep_rows], float),
+            "entry_kp": np.array([r[2] for r in rep_rows], float),
+            "touchdown_kp": np.array([r[3] for r in rep_rows], float)}
+    reps["entry_time"] = np.interp(reps["entry_kp"], kp, time, left=np.nan, right=np.nan)
+    reps["touchdown_time"] = np.interp(reps["touchdown_kp"], kp, time, left=np.nan, right=np.nan)
+    # where the repeater lands: the touchdown point at the ship KP it lands
+    reps["landing_kp"] = np.interp(reps["touchdown_kp"], kp, td_kp, left=np.nan, right=np.nan)
+    reps["landing_offset"] = np.interp(reps["touchdown_kp"], kp, td_off, left=np.nan, right=np.nan)
+    return LayPlan(columns, reps, notes, outer + 1, _time.perf_counter() - wall0)
+
+
+def _lagged_velocity(kp, speed, heading, tau) -> np.ndarray:
+    """The ship's velocity over the ground as the span sees it: a first-order lag of time constant ``tau``
+    (the time the straight span takes to pay out, h / (V_s sin(alpha))) behind the ship's (speed, heading). [m/s]
+
+    Exact for a velocity held constant between stations: ``v_i = V_i + (v_{i-1} - V_i) exp(-dt / tau_i)``
+    with ``dt`` the time between the stations; with ``tau = 0`` the ship's velocity itself.
+    """
+    ship = speed[:, None] * np.column_stack([np.cos(heading), np.sin(heading)])
+    dt = np.diff(kp) * 0.5 * (1.0 / speed[1:] + 1.0 / speed[:-1])
+    keep = np.exp(-dt / np.maximum(tau[1:], 1e-300))
+    out = ship.copy()
+    for i in range(1, kp.size):
+        out[i] = ship[i] + (out[i - 1] - ship[i]) * keep[i - 1]
+    return out
+
+
+def _span_clearance(seabed, ship_xy, td_xy, td_z, samples: int = 9) -> np.ndarray:
+    """Smallest height of the chord from touchdown to ship above the seabed under it (inner points). [m]"""
+    lam = np.linspace(0.0, 1.0, samples + 2)[1:-1]
+    pts = td_xy[:, None, :] + lam[None, :, None] * (ship_xy - td_xy)[:, None, :]
+    z_chord = td_z[:, None] * (1.0 - lam[None, :])
+    zb = -seabed.depth(pts)
+    return np.nanmin(z_chord - zb, axis=1)
+
+
+def _ranges(kp, mask) -> str:
+    """'KP a-b, c-d m' of the runs of ``mask``."""
+    idx = np.flatnonzero(mask)
+    runs, start = [], idx[0]
+    for a, b in zip(idx[:-1], idx[1:]):
+        if b != a + 1:
+            runs.append((start, a))
+            start = b
+    runs.append((start, idx[-1]))
+    text = ", ".join(f"{kp[a]:.0f}-{kp[b]:.0f}" if b > a else f"{kp[a]:.0f}" for a, b in runs[:8])
+    return f"KP {text}{' ...' if len(runs) > 8 else ''} m"
+
+
+def _flags(kp, td_rate, clearance) -> list[str]:
+    notes = []
+    back = td_rate <= 0.05
+    if back.any():
+        notes.append(f"the touchdown stalls or moves backwards at {_ranges(kp, back)} (the seabed falls away faster "
+                     "than the layback grows): the quasi-static plan does not hold there; run the dynamic model "
+                     "(laying_dynamic) over that stretch")
+    ridge = clearance < 0.0
+    if ridge.any():
+        notes.append(f"the span from touchdown to ship crosses the seabed at {_ranges(kp, ridge)} (a ridge under "
+                     "the suspended cable): the plan's touchdown is beyond it")
+    for note in notes:
+        warnings.warn(f"lay plan: {note}.", SeacableWarning, stacklevel=3)
+    return notes

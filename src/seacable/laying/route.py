@@ -1,0 +1,260 @@
+"""A cable route: waypoints (alter-course positions), KP along them, and a local projection.
+
+A route is a polyline of waypoints in local x, y [m] or in latitude and longitude [degree, WGS84].
+Geographic waypoints are projected to x (east) and y (north) in metres by an azimuthal equidistant
+projection centred at the first waypoint (pyproj / PROJ): distances and directions from the centre
+are true on the ellipsoid, and the scale error a few hundred kilometres away is below 1e-3, so the
+KP of a 100 km route is right to about a metre. Another projection (a UTM zone) is given as a PROJ
+string or an EPSG code.
+
+KP (kilometre point, here in metres as everything at the interfaces) is the distance along the
+route from its first waypoint, plus ``kp_start``. The lateral offset of a point from the route is
+positive to port (to the left looking along increasing KP).
+"""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+from pydantic import Field, model_validator
+
+from .._model import Model, quantity
+from ..errors import InputError
+
+__all__ = ["Route", "RouteGeometry"]
+
+
+class Route(Model):
+    """The planned route: waypoints in x, y [m] or latitude, longitude [degree], or a CSV file of them.
+
+    Parameters
+    ----------
+    waypoints
+        (x, y) of each waypoint, in order along the route. [m]
+    latitude, longitude
+        Geographic waypoints instead (WGS84). [degree]
+    file
+        CSV file with columns ``x`` and ``y``, or ``latitude`` and ``longitude`` (relative to the case file).
+    kp_start
+        KP of the first waypoint. [m]
+    projection
+        Projection of geographic waypoints to metres: a PROJ string or ``"EPSG:32631"``-style code; default
+        azimuthal equidistant centred at the first waypoint.
+    """
+
+    waypoints: tuple[tuple[float, float], ...] | None = Field(None, description="Waypoints (x, y). [m]")
+    latitude: tuple[float, ...] | None = Field(None, description="Waypoint latitudes (WGS84). [degree]")
+    longitude: tuple[float, ...] | None = Field(None, description="Waypoint longitudes (WGS84). [degree]")
+    file: str | None = Field(None, description="CSV of waypoints: columns x, y or latitude, longitude.")
+    kp_start: quantity("m") = Field(0.0, description="KP of the first waypoint. [m]")
+    projection: str | None = Field(None, description="PROJ string or EPSG code for geographic waypoints.")
+
+    @model_validator(mode="after")
+    def _check(self):
+        given = [name for name, value in (("waypoints", self.waypoints), ("latitude/longitude", self.latitude
+                                          or self.longitude), ("file", self.file)) if value]
+        if len(given) != 1:
+            raise ValueError(f"give the route's waypoints one way: 'waypoints' [[x, y], ...] in m, 'latitude' and "
+                             f"'longitude' lists in degrees, or a CSV 'file'; got {', '.join(given) or 'none'}.")
+        if (self.latitude is None) != (self.longitude is None):
+            raise ValueError("needs both 'latitude' and 'longitude' (degrees), of equal length.")
+        if self.latitude is not None:
+            _check_geographic(self.latitude, self.longitude, "route")
+        elif self.waypoints is not None:
+            _check_points(np.asarray(self.waypoints, float), "route.waypoints", "m")
+        if self.projection is not None and self.latitude is None and self.file is None:
+            raise ValueError("route.projection applies to geographic waypoints (latitude, longitude). Suggested "
+                             "fix: leave it out for waypoints in x, y [m].")
+        return self
+
+    def geometry(self) -> RouteGeometry:
+        """The route in metres (reading and projecting the waypoints)."""
+        if self.waypoints is not None:
+            return RouteGeometry(np.asarray(self.waypoints, float), self.kp_start)
+        if self.latitude is not None:
+            lat, lon = np.asarray(self.latitude, float), np.asarray(self.longitude, float)
+        else:
+            table = _read_waypoints(self.file)
+            if "x" in table:
+                xy = np.column_stack([table["x"], table["y"]])
+                _check_points_input(xy, f"route file '{self.file}'", "m")
+                if self.projection is not None:
+                    raise InputError(f"route.projection applies to geographic waypoints, but '{self.file}' gives "
+                                     "x and y [m]. Suggested fix: leave projection out.")
+                return RouteGeometry(xy, self.kp_start)
+            lat, lon = table["latitude"], table["longitude"]
+            try:
+                _check_geographic(lat, lon, f"route file '{self.file}'")
+            except ValueError as err:
+                raise InputError(str(err)) from None
+        return RouteGeometry.geographic(lat, lon, self.kp_start, self.projection)
+
+
+def _check_geographic(lat, lon, where: str) -> None:
+    lat, lon = np.asarray(lat, float), np.asarray(lon, float)
+    if lat.size != lon.size:
+        raise ValueError(f"{where}: latitude and longitude must have the same length, got {lat.size} and {lon.size}.")
+    if not (np.all(np.isfinite(lat)) and np.all(np.isfinite(lon))):
+        raise ValueError(f"{where}: latitudes and longitudes must be finite numbers [degree].")
+    if np.any(np.abs(lat) > 90.0) or np.any(lon < -180.0) or np.any(lon > 360.0):
+        raise ValueError(f"{where}: latitudes must lie in -90..90 and longitudes in -180..360 degrees, got "
+                         f"{list(lat)} and {list(lon)}. Suggested fix: check that they are not swapped.")
+    _check_points(np.column_stack([lon * 111e3 * np.cos(np.radians(lat)), lat * 111e3]), where, "m")
+
+
+def _check_points(xy: np.ndarray, where: str, unit: str) -> None:
+    """At least two waypoints, finite, none repeating the one before it (a leg of zero length)."""
+    if xy.ndim != 2 or xy.shape[1] != 2:
+        raise ValueError(f"{where}: each waypoint needs two numbers (x, y) [{unit}].")
+    if xy.shape[0] < 2:
+        raise ValueError(f"{where}: a route needs at least two waypoints, got {xy.shape[0]}. Suggested fix: give "
+                         "the start and the end of the route, and the alter-course positions between them.")
+    if not np.all(np.isfinite(xy)):
+        raise ValueError(f"{where}: waypoints must be finite numbers.")
+    legs = np.hypot(*np.diff(xy, axis=0).T)
+    if np.any(legs < 1e-3):
+        i = int(np.argmax(legs < 1e-3))
+        raise ValueError(f"{where}: waypoints {i} and {i + 1} are the same point (a leg of {legs[i]:.3g} m): a "
+                         "route's KP needs legs of non-zero length. Suggested fix: remove the repeated waypoint.")
+
+
+def _check_points_input(xy: np.ndarray, where: str, unit: str) -> None:
+    try:
+        _check_points(xy, where, unit)
+    except ValueError as err:
+        raise InputError(str(err)) from None
+
+
+def _read_waypoints(file: str) -> dict[str, np.ndarray]:
+    path = Path(file)
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as handle:
+            rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
+    except OSError as err:
+        raise InputError(f"route file '{path}' cannot be read ({err.strerror or err}). Suggested fix: check the "
+                         "path (relative to the case file's folder).") from None
+    header = [c.lower() for c in rows[0]] if rows else []
+    for names in (("x", "y"), ("latitude", "longitude"), ("lat", "lon")):
+        if all(n in header for n in names):
+            idx = [header.index(n) for n in names]
+            try:
+                values = np.array([[float(r[i]) for i in idx] for r in rows[1:]], float).reshape(-1, 2)
+            except (ValueError, IndexError):
+                raise InputError(f"route file '{path}': every row needs numbers in the columns "
+                                 f"{' and '.join(names)}.") from None
+            keys = ("x", "y") if names == ("x", "y") else ("latitude", "longitude")
+            return {keys[0]: values[:, 0], keys[1]: values[:, 1]}
+    raise InputError(f"route file '{path}' needs a header row with columns 'x' and 'y' (m) or 'latitude' and "
+                     f"'longitude' (degrees), got {', '.join(header) or 'an empty file'}.")
+
+
+class RouteGeometry:
+    """A route in metres: legs between the waypoints, KP along them.
+
+    Parameters
+    ----------
+    xy : (n, 2) array
+        Waypoints. [m]
+    kp_start : float
+        KP of the first waypoint. [m]
+    transformer : pyproj.Transformer, optional
+        Geographic to x, y, for routes given in latitude and longitude.
+    """
+
+    def __init__(self, xy: np.ndarray, kp_start: float = 0.0, transformer=None):
+        self.xy = np.asarray(xy, float)
+        _check_points_input(self.xy, "route", "m")
+        d = np.diff(self.xy, axis=0)
+        self.length = np.hypot(d[:, 0], d[:, 1])              # of each leg [m]
+        self.direction = d / self.length[:, None]              # unit vector of each leg
+        self.kp = kp_start + np.concatenate([[0.0], np.cumsum(self.length)])   # of each waypoint [m]
+        self.transformer = transformer
+
+    @classmethod
+    def geographic(cls, latitude, longitude, kp_start: float = 0.0, projection: str | None = None) -> RouteGeometry:
+        """A route from WGS84 waypoints, projected (default: azimuthal equidistant at the first waypoint)."""
+        from pyproj import CRS, Transformer
+        from pyproj.exceptions import CRSError
+
+        lat, lon = np.asarray(latitude, float), np.asarray(longitude, float)
+        proj = projection or f"+proj=aeqd +lat_0={lat[0]!r} +lon_0={lon[0]!r} +datum=WGS84 +units=m +no_defs"
+        try:
+            crs = CRS.from_user_input(proj)
+        except CRSError as err:
+            raise InputError(f"route.projection '{projection}' is not a projection PROJ knows ({err}). Suggested "
+                             "fix: an EPSG code such as 'EPSG:32631' (UTM 31N) or leave it out.") from None
+        if not crs.is_projected:
+            raise InputError(f"route.projection '{projection}' is not a projected system (its units are not "
+                             "metres). Suggested fix: a UTM zone, e.g. 'EPSG:32631', or leave it out.")
+        transformer = Transformer.from_crs("EPSG:4326", crs, always_xy=True)
+        x, y = transformer.transform(lon, lat)
+        return cls(np.column_stack([x, y]), kp_start, transformer)
+
+    @property
+    def kp_end(self) -> float:
+        return float(self.kp[-1])
+
+    def leg(self, kp) -> np.ndarray:
+        """Index of the leg holding each KP (the first or last leg beyond the ends)."""
+        k = np.searchsorted(self.kp, np.asarray(kp, float), side="right") - 1
+        return np.clip(k, 0, len(self.length) - 1)
+
+    def point(self, kp) -> np.ndarray:
+        """(x, y) of the route at ``kp`` (along the first or last leg beyond the ends); shape ``kp.shape + (2,)``."""
+        kp = np.asarray(kp, float)
+        k = self.leg(kp)
+        return self.xy[k] + (kp - self.kp[k])[..., None] * self.direction[k]
+
+    def heading(self, kp) -> np.ndarray:
+        """Direction of the route at ``kp``, from +x towards +y (of the leg after a waypoint). [rad]"""
+        d = self.direction[self.leg(kp)]
+        return np.arctan2(d[..., 1], d[..., 0])
+
+    def turns(self) -> np.ndarray:
+        """Alter-course at each inner waypoint, positive to port (counter-clockwise). [rad]"""
+        a = np.arctan2(self.direction[:, 1], self.direction[:, 0])
+        return np.angle(np.exp(1j * np.diff(a)))
+
+    def locate(self, xy, *, chunk: int = 2048) -> tuple[np.ndarray, np.ndarray]:
+        """KP of the nearest point of the route to each point, and the lateral offset (+ to port). [m]
+
+        Beyond the route's ends the first and last legs are extended, so a point before the start has a
+        KP below ``kp_start``.
+        """
+        p = np.asarray(xy, float).reshape(-1, 2)
+        shape = np.asarray(xy).shape[:-1]
+        kp = np.empty(len(p))
+        off = np.empty(len(p))
+        n_leg = len(self.length)
+        for a in range(0, len(p), chunk):
+            q = p[a:a + chunk]
+            rel = q[:, None, :] - self.xy[None, :-1, :]                    # (m, legs, 2)
+            along = np.einsum("mlk,lk->ml", rel, self.direction)
+            lo = np.where(np.arange(n_leg) == 0, -np.inf, 0.0)
+            hi = np.where(np.arange(n_leg) == n_leg - 1, np.inf, self.length)
+            t = np.clip(along, lo, hi)
+            foot = self.xy[None, :-1, :] + t[..., None] * self.direction[None]
+            dist = np.hypot(*(q[:, None, :] - foot).transpose(2, 0, 1))
+            best = np.argmin(dist, axis=1)
+            rows = np.arange(len(q))
+            kp[a:a + chunk] = self.kp[best] + t[rows, best]
+            d = self.direction[best]
+            r = rel[rows, best]
+            side = d[:, 0] * r[:, 1] - d[:, 1] * r[:, 0]
+            off[a:a + chunk] = np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
+        return kp.reshape(shape), off.reshape(shape)
+
+    def to_geographic(self, xy) -> tuple[np.ndarray, np.ndarray] | None:
+        """(latitude, longitude) [degree] of points in x, y, for a geographic route; else ``None``."""
+        if self.transformer is None:
+            return None
+        xy = np.asarray(xy, float)
+        lon, lat = self.transformer.transform(xy[..., 0], xy[..., 1], direction="INVERSE")
+        return np.asarray(lat), np.asarray(lon)
+
+    def from_geographic(self, latitude, longitude) -> np.ndarray:
+        """x, y [m] of geographic points, in this route's projection."""
+        x, y = self.transformer.transform(np.asarray(longitude, float), np.asarray(latitude, float))
+        return np.stack([np.asarray(x), np.asarray(y)], axis=-1)
