@@ -35,6 +35,11 @@ CASES = {
         f"entry angle {float(ds.entry_angle[-1]):.3f} deg (paper 001 Table 1: 13.053), ship tension "
         f"{float(ds.top_tension[-20:].mean()):.1f} N (w h = 224.5 N), slack {float(ds.slack[-1]):.4f}; "
         f"{float(ds.laid_length[-1]):.0f} m laid"),
+    "lay_plan_route": lambda ds: (
+        f"lay table, {ds.kp.size} rows over {float(ds.kp[-1]) / 1e3:g} km: layback up to {float(ds.layback.max()):.0f} m, "
+        f"touchdown up to {float(abs(ds.touchdown_offset).max()):.0f} m off the route in the cross-current, repeater "
+        f"R1 in the water KP {float(ds.repeater_entry_kp[0]):.0f}-{float(ds.repeater_touchdown_kp[0]):.0f} m at "
+        f"{float(ds.ship_speed.min()):g} m/s; {float(ds.time[-1]) / 3600:.1f} h (quasi-static planner)"),
     "towed_stop_and_go": lambda ds: (f"top tension {float(ds.top_tension[0]):.0f} N, down to "
                                      f"{float(ds.top_tension.min()):.1f} N while stopped"),
     "towed_stop_and_go_from_rest": lambda ds: (

@@ -25,7 +25,8 @@ G = 9.81            # the Environment default
 
 
 def _cable(**kw):
-    base = dict(diameter=0.035, mass_per_length=1.4, drag_normal=1.2, drag_tangential=0.01, added_mass_normal=1.0)
+    base = {"diameter": 0.035, "mass_per_length": 1.4, "drag_normal": 1.2, "drag_tangential": 0.01,
+            "added_mass_normal": 1.0}
     return sc.LineType(**{**base, **kw}, name="tel35")
 
 

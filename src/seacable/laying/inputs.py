@@ -19,11 +19,11 @@ from ..errors import InputError
 __all__ = [
     "Bathymetry",
     "LayTarget",
-    "PlanShip",
     "Payout",
     "PayoutBottomTension",
     "PayoutRate",
     "PayoutSlack",
+    "PlanShip",
     "ShipMotion",
     "schedule_value",
 ]

@@ -30,7 +30,8 @@ The touchdown is where the span from the ship meets the seabed: its depth is ite
 gives a different depth off the route). The laid cable follows the touchdown's path over the
 seabed: per metre of it, ``1 + slack`` of cable (or ``1 / (1 + T_0/EA)`` under a bottom tension).
 The cable paid out at a ship KP is the cable laid up to the touchdown plus the suspended length, and
-the payout speed is ``V_s d(paid out)/dKP``; the time is the integral of ``dKP / V_s``. A change of the ship's
+the payout speed is ``V_s d(paid out)/dKP`` (in the span itself the steady lay's, ``1 + slack`` or
+``1 / (1 + T_0/EA)`` times the span's speed); the time is the integral of ``dKP / V_s``. A change of the ship's
 velocity (speed or heading) reaches the span through a first-order lag of the time the straight
 span takes to pay out, ``h / (V_s sin(alpha))`` (about the time a cable element takes to sink to the
 touchdown): the span is computed for the lagged velocity, so the touchdown runs on
@@ -58,6 +59,7 @@ from __future__ import annotations
 import math
 import time as _time
 import warnings
+from itertools import pairwise
 
 import numpy as np
 from numba import njit
@@ -321,24 +323,31 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     total = 0
     for outer in range(max_iterations):
         props = props_at(s_td)
+        per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
         v_eff = _lagged_velocity(kp, vs, psi, tau)
         speed_eff = np.hypot(v_eff[:, 0], v_eff[:, 1])
         psi_eff = np.arctan2(v_eff[:, 1], v_eff[:, 0])
         e1 = np.column_stack([np.cos(psi_eff), np.sin(psi_eff)])
         e2 = np.column_stack([-e1[:, 1], e1[:, 0]])
         cos_c, sin_c = np.cos(current.heading - psi_eff), np.sin(current.heading - psi_eff)
-        inputs = np.column_stack([speed_eff, psi_eff, vc, props[:, S_W]])
+        # the payout through the span (its tangential drag and turning): the steady lay's, the laid length per metre
+        # run times the span's speed (the payout iterate itself, a difference between stations, feeds back
+        # through the tangential drag and does not settle where the span changes fast)
+        vc_span = speed_eff * per_metre
+        inputs = np.column_stack([speed_eff, psi_eff, vc_span, props[:, S_W]])
         # (a payout speed right to 1e-6 changes the tension by far less than the planner's own accuracy)
         active = ~np.all(np.abs(inputs - solved) <= 1e-6 * np.abs(inputs) + 1e-12, axis=1)
         solved = inputs
         h_prev = g_prev = None
-        for inner in range(50):               # the touchdown's depth h = g(h), by the secant method per station
+        lo, hi = np.full(n, -np.inf), np.full(n, np.inf)
+        for inner in range(60):               # the touchdown's depth h = g(h), by the secant method per station
             if not active.any():
                 break
             fwd = seabed.depth(td_xy + delta * e1)
             back = seabed.depth(td_xy - delta * e1)
             beta = np.arctan(np.nan_to_num((back - fwd) / (2.0 * delta)))
-            solve_spans(h, beta, speed_eff, vc, cos_c, sin_c, t0, depths, speeds, water_density, props, active, out)
+            solve_spans(h, beta, speed_eff, vc_span, cos_c, sin_c, t0, depths, speeds, water_density, props, active,
+                        out)
             total += 1
             if np.isnan(out[active]).any():
                 i = int(np.flatnonzero(active & np.isnan(out[:, 0]))[0])
@@ -350,22 +359,25 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
             g = np.where(active, seabed.depth(new_xy), h)
             td_xy = np.where(active[:, None], new_xy, td_xy)
             step = g - h
-            if h_prev is not None:
+            lo = np.where(step > 0.0, np.maximum(lo, h), lo)     # the bracket of r(h) = g(h) - h: > 0 below lo,
+            hi = np.where(step < 0.0, np.minimum(hi, h), hi)     # < 0 above hi (g is nearly flat in h)
+            if inner >= 8:
+                # still moving: bisection in the bracket (where g jumps, at a seabed edge the touchdown rests on,
+                # the secant and the fixed point swing across it)
+                both = np.isfinite(lo) & np.isfinite(hi)
+                step = np.where(both, 0.5 * (lo + hi) - h, step)
+            elif h_prev is not None:
                 # secant on r(h) = g(h) - h; a fixed-point step where the secant is flat or would go far
                 r_prev = g_prev - h_prev
                 slope = np.where(np.abs(h - h_prev) > 0, (step - r_prev) / np.where(h != h_prev, h - h_prev, 1.0), 0.0)
                 newton = np.where(slope < -0.05, -step / np.where(slope < -0.05, slope, -1.0), step)
                 step = np.where(np.abs(newton) <= 2.0 * np.abs(step), newton, step)
             h_prev, g_prev = h.copy(), g
-            active = active & (np.abs(g - h) > 1e-6 * np.maximum(h, 1.0))
+            active = active & (np.abs(g - h) > 1e-6 * np.maximum(h, 1.0)) & ~(hi - lo < 1e-6 * np.maximum(h, 1.0))
             h = np.where(active, h + step, h)
         td_z = -seabed.depth(td_xy)
         path = np.concatenate([[0.0], np.cumsum(np.sqrt(np.sum(np.diff(td_xy, axis=0) ** 2, axis=1)
                                                         + np.diff(td_z) ** 2))])
-        if tension_mode:
-            per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE])
-        else:
-            per_metre = 1.0 + np.asarray(slack, float)
         s_new = np.concatenate([[0.0], np.cumsum(0.5 * (per_metre[1:] + per_metre[:-1]) * np.diff(path))])
         paid = s_new + out[:, 2]
         vc_new = np.maximum(vs * np.gradient(paid, kp), 0.0)
@@ -375,9 +387,11 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         if outer >= 2 and len(found) == len(windows):
             # a slow-down that ends later lays the repeater earlier (the span flattens as the ship speeds up), so
             # the plain iteration can swing between two ends: halfway, and once the ends move by less than a
-            # station (the speeds are taken at the stations) the later of the two, held
+            # station (the speeds are taken at the stations) the wider of the two windows, held from then on
             swing = max(max(abs(a - c), abs(b - d)) for (a, b), (c, d) in zip(found, windows)) if found else 0.0
-            if hold or (outer >= 6 and swing < np.max(np.diff(kp))):
+            if hold:
+                found = windows
+            elif outer >= 6 and swing < np.max(np.diff(kp)):
                 hold = True
                 found = [(min(a, c), max(b, d)) for (a, b), (c, d) in zip(found, windows)]
             else:
@@ -460,7 +474,7 @@ def _ranges(kp, mask) -> str:
     """'KP a-b, c-d m' of the runs of ``mask``."""
     idx = np.flatnonzero(mask)
     runs, start = [], idx[0]
-    for a, b in zip(idx[:-1], idx[1:]):
+    for a, b in pairwise(idx):
         if b != a + 1:
             runs.append((start, a))
             start = b

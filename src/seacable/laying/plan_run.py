@@ -15,8 +15,8 @@ from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_W,
 __all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table"]
 
 REFERENCES = (
-    "Zajac, E. E. (1957). Dynamics and kinematics of the laying and recovery of submarine cable. Bell System "
-    "Technical Journal 36(5), 1129-1207.",
+    ("Zajac, E. E. (1957). Dynamics and kinematics of the laying and recovery of submarine cable. Bell System "
+     "Technical Journal 36(5), 1129-1207."),
     "Paper 001 (seeds/001), section 2: straight-line laying theory, eq. (1)-(11).",
 )
 
@@ -95,7 +95,7 @@ def run_lay_plan(case: Case):
         if value is not None and not route.kp[0] - 1e-6 <= value <= route.kp[-1] + 1e-6:
             raise InputError(f"analysis.{name} = {value:g} m lies outside the route (KP {route.kp[0]:g} to "
                              f"{route.kp[-1]:g} m). Suggested fix: a KP on the route, or leave it out.")
-    n = max(int(math.ceil((hi - lo) / a.kp_step - 1e-9)), 1)
+    n = max(math.ceil((hi - lo) / a.kp_step - 1e-9), 1)
     inner = route.kp[(route.kp > lo + 1e-6) & (route.kp < hi - 1e-6)]
     kp = np.unique(np.concatenate([np.linspace(lo, hi, n + 1), inner]))
     target = a.target.at(kp)

@@ -179,7 +179,7 @@ class RouteGeometry:
         from pyproj.exceptions import CRSError
 
         lat, lon = np.asarray(latitude, float), np.asarray(longitude, float)
-        proj = projection or f"+proj=aeqd +lat_0={lat[0]!r} +lon_0={lon[0]!r} +datum=WGS84 +units=m +no_defs"
+        proj = projection or f"+proj=aeqd +lat_0={float(lat[0])!r} +lon_0={float(lon[0])!r} +datum=WGS84 +units=m +no_defs"
         try:
             crs = CRS.from_user_input(proj)
         except CRSError as err:

@@ -1,0 +1,166 @@
+"""The lay plan's inputs: the route (KP, offsets, projection), the bathymetry grid, the target, bad input,
+and the lay table as CSV and figures."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from seacable.cli import main
+from seacable.errors import InputError
+from seacable.laying.bathymetry import BathymetryGrid, seabed_map
+from seacable.laying.route import Route, RouteGeometry
+from seacable.results import read_netcdf
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lay_plan_route.yaml"
+
+
+def test_kp_and_offsets_along_a_route_with_alter_courses():
+    """KP is the distance along the legs; a point's KP is that of its nearest route point and its offset is
+    the distance to it, + to port (left looking along increasing KP)."""
+    r = RouteGeometry(np.array([[0.0, 0.0], [3000.0, 0.0], [3000.0, 4000.0]]), kp_start=1000.0)
+    np.testing.assert_allclose(r.kp, [1000.0, 4000.0, 8000.0])
+    np.testing.assert_allclose(r.point([2500.0, 6000.0]), [[1500.0, 0.0], [3000.0, 2000.0]])
+    np.testing.assert_allclose(r.turns(), [math.pi / 2])                    # a left turn: + (port)
+    kp, off = r.locate(np.array([[1500.0, 20.0], [1500.0, -20.0], [3100.0, 2000.0], [-100.0, 5.0]]))
+    np.testing.assert_allclose(kp, [2500.0, 2500.0, 6000.0, 900.0])
+    np.testing.assert_allclose(off, [20.0, -20.0, -100.0, 5.0])
+    kp, off = r.locate(np.array([[3010.0, -10.0]]))                       # outside the corner: to the waypoint
+    assert kp[0] == pytest.approx(4000.0) and off[0] == pytest.approx(-math.hypot(10.0, 10.0))
+    np.testing.assert_allclose(r.heading([2000.0, 4000.0, 5000.0]), [0.0, math.pi / 2, math.pi / 2])
+
+
+def test_geographic_route_kp_is_the_geodesic_length():
+    """Latitude/longitude waypoints are projected (azimuthal equidistant at the first waypoint): the KP of
+    each waypoint equals the sum of the WGS84 geodesic leg lengths to 1e-4 (the projection's scale error
+    100 km from its centre is about (d/R)^2 / 6 = 4e-5) and the first leg from the centre is exact to 1e-9."""
+    from pyproj import Geod
+
+    lat, lon = [50.0, 50.3, 50.6, 50.7], [1.0, 1.4, 1.5, 2.2]
+    r = Route(latitude=lat, longitude=lon).geometry()
+    _, _, legs = Geod(ellps="WGS84").inv(lon[:-1], lat[:-1], lon[1:], lat[1:])
+    np.testing.assert_allclose(np.diff(r.kp), legs, rtol=1e-4)
+    assert r.kp[1] == pytest.approx(legs[0], rel=1e-9)
+    back = r.to_geographic(r.xy)
+    np.testing.assert_allclose(back[0], lat, atol=1e-9)
+    np.testing.assert_allclose(back[1], lon, atol=1e-9)
+
+
+def _plane(x, y):
+    """A plane seabed: bilinear and Delaunay interpolation are exact on it. [m]"""
+    return 500.0 + 0.01 * x - 0.02 * y
+
+
+def test_grids_from_csv_netcdf_and_lonlat_interpolate_a_plane_exactly(tmp_path):
+    route = RouteGeometry(np.array([[0.0, 0.0], [1000.0, 500.0]]))
+    xs, ys = np.linspace(-200.0, 1200.0, 8), np.linspace(-300.0, 800.0, 6)
+    X, Y = np.meshgrid(xs, ys)
+    pts = np.array([[130.0, 40.0], [777.0, 333.0], [1000.0, 500.0]])
+    # a regular grid as CSV (rows in any order), as NetCDF, and scattered points
+    rows = np.column_stack([X.ravel(), Y.ravel(), _plane(X, Y).ravel()])[::-1]
+    np.savetxt(tmp_path / "g.csv", rows, delimiter=",", header="x,y,depth", comments="")
+    xr.Dataset({"elevation": (("y", "x"), -_plane(X, Y))}, coords={"x": xs, "y": ys}).to_netcdf(tmp_path / "g.nc")
+    rng = np.random.default_rng(1)
+    sx, sy = rng.uniform(-300, 1300, 400), rng.uniform(-400, 900, 400)
+    np.savetxt(tmp_path / "s.csv", np.column_stack([sx, sy, _plane(sx, sy)]), delimiter=",", header="x,y,depth",
+               comments="")
+    for name in ("g.csv", "g.nc", "s.csv"):
+        m = seabed_map(route, None, BathymetryGrid(file=str(tmp_path / name)), math.nan)
+        np.testing.assert_allclose(m.depth(pts), _plane(pts[:, 0], pts[:, 1]), rtol=1e-12, err_msg=name)
+    inline = BathymetryGrid(x=tuple(xs), y=tuple(ys), depth=tuple(map(tuple, _plane(X, Y))))
+    np.testing.assert_allclose(seabed_map(route, None, inline, math.nan).depth(pts), _plane(*pts.T), rtol=1e-12)
+    # a grid in longitude and latitude, for a geographic route: a plane in lon/lat is interpolated exactly there
+    geo = Route(latitude=[50.0, 50.05], longitude=[1.0, 1.1]).geometry()
+    lon, lat = np.linspace(0.9, 1.2, 7), np.linspace(49.9, 50.2, 7)
+    LON, LAT = np.meshgrid(lon, lat)
+    xr.Dataset({"depth": (("lat", "lon"), 100.0 + 50.0 * (LON - 1.0) + 80.0 * (LAT - 50.0))},
+               coords={"lon": lon, "lat": lat}).to_netcdf(tmp_path / "ll.nc")
+    m = seabed_map(geo, None, BathymetryGrid(file=str(tmp_path / "ll.nc")), math.nan)
+    q = geo.point(np.array([100.0, 5000.0]))
+    qlat, qlon = geo.to_geographic(q)
+    np.testing.assert_allclose(m.depth(q), 100.0 + 50.0 * (qlon - 1.0) + 80.0 * (qlat - 50.0), rtol=1e-10)
+
+
+def _yaml(tmp_path, edit) -> Path:
+    data = yaml.safe_load(EXAMPLE.read_text())
+    edit(data)
+    path = tmp_path / "case.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return path
+
+
+def _set(path, value):
+    def edit(data):
+        node = data
+        for key in path[:-1]:
+            node = node[key]
+        if value is None:
+            node.pop(path[-1])
+        else:
+            node[path[-1]] = value
+    return edit
+
+
+@pytest.mark.parametrize("edit, expected", [
+    (_set(("analysis", "route", "waypoints"), [[0.0, 0.0]]), "at least two waypoints"),
+    (_set(("analysis", "route", "waypoints"), [[0.0, 0.0], [10.0, 0.0], [10.0, 0.0], [20.0, 0.0]]),
+     "waypoints 1 and 2 are the same point"),
+    (_set(("analysis", "route", "waypoints"), [[0.0, 0.0], [20000.0, 0.0]]), "bathymetry covers KP 0 to 14000 m"),
+    (_set(("analysis", "target"), {"slack": -0.01}), "slack below zero"),
+    (_set(("analysis", "target"), {"slack": 3.0}), "slack is a ratio"),
+    (_set(("analysis", "target"), {"slack": 0.03, "bottom_tension": 100.0}), "give one target"),
+    (_set(("analysis", "route"), {"latitude": [50.0, 95.0], "longitude": [1.0, 1.1]}), "latitudes must lie"),
+    (_set(("analysis", "ship"), {"kp": [0.0, 1000.0], "speeds": [1.5, 0.0]}), "must be > 0 m/s"),
+    (_set(("analysis", "kp_start"), 20000.0), "lies outside the route"),
+])
+def test_bad_lay_plan_input_one_message(tmp_path, capsys, edit, expected):
+    """Each bad input: exit 2 from validate and from run, one message naming it."""
+    path = _yaml(tmp_path, edit)
+    for command in ("validate", "run"):
+        assert main([command, str(path), "-o", str(tmp_path / "out.nc")] if command == "run"
+                    else [command, str(path)]) == 2
+        err = capsys.readouterr().err
+        assert expected in err, err
+        assert "Traceback" not in err
+
+
+def test_grid_that_does_not_cover_the_route(tmp_path, capsys):
+    xs, ys = np.array([-500.0, 8000.0]), np.array([-2000.0, 4000.0])
+    xr.Dataset({"depth": (("y", "x"), np.full((2, 2), 300.0))}, coords={"x": xs, "y": ys}).to_netcdf(
+        tmp_path / "grid.nc")
+
+    def edit(data):
+        data["analysis"].pop("bathymetry")
+        data["analysis"]["bathymetry_grid"] = {"file": "grid.nc"}
+    path = _yaml(tmp_path, edit)
+    assert main(["validate", str(path)]) == 2
+    err = capsys.readouterr().err
+    assert "does not cover the route at KP 8" in err and "x = 8" in err, err
+
+
+def test_lonlat_grid_needs_a_geographic_route(tmp_path):
+    xr.Dataset({"depth": (("lat", "lon"), np.full((2, 2), 300.0))},
+               coords={"lon": [0.0, 1.0], "lat": [50.0, 51.0]}).to_netcdf(tmp_path / "ll.nc")
+    route = RouteGeometry(np.array([[0.0, 0.0], [10.0, 0.0]]))
+    with pytest.raises(InputError, match="needs a route in latitude and longitude"):
+        seabed_map(route, None, BathymetryGrid(file=str(tmp_path / "ll.nc")), math.nan)
+
+
+def test_cli_writes_the_lay_table_as_csv_and_the_figures(tmp_path):
+    """`seacable run` on a lay_plan case: the NetCDF result, the lay table as CSV with units in its header (the
+    same numbers as the result) and the two figures."""
+    out = tmp_path / "plan.nc"
+    assert main(["run", str(EXAMPLE), "-o", str(out)]) == 0
+    ds = read_netcdf(out)
+    table = np.genfromtxt(tmp_path / "plan_lay_table.csv", delimiter=",", names=True)
+    header = (tmp_path / "plan_lay_table.csv").read_text().splitlines()[0]
+    assert header.startswith("kp [m],time [s],ship_speed [m s-1],payout_speed [m s-1]")
+    np.testing.assert_allclose(table["kp_m"], ds.kp.values)
+    np.testing.assert_allclose(table["top_tension_N"], ds.top_tension.values, rtol=1e-5)
+    assert (tmp_path / "plan_table.png").stat().st_size > 10_000
+    assert (tmp_path / "plan_plan.png").stat().st_size > 10_000
