@@ -10,7 +10,6 @@ needs a geographic route: points are taken back to degrees with the route's proj
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
 import numpy as np
@@ -18,7 +17,7 @@ from pydantic import Field, model_validator
 
 from .._model import Model
 from ..errors import InputError
-from .inputs import Bathymetry
+from .inputs import Bathymetry, csv_rows
 from .route import RouteGeometry
 
 __all__ = ["BathymetryGrid", "SeabedMap", "seabed_map"]
@@ -95,14 +94,7 @@ def _check_grid(x: np.ndarray, y: np.ndarray, depth: np.ndarray, where: str) -> 
 
 
 def _read_csv_grid(file: str):
-    path = Path(file)
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
-    except OSError as err:
-        raise InputError(f"bathymetry grid '{path}' cannot be read ({err.strerror or err}). Suggested fix: check "
-                         "the path (relative to the case file's folder).") from None
-    header = [c.lower() for c in rows[0]] if rows else []
+    path, header, rows = csv_rows(file, "bathymetry grid")
     kind = "xy" if "x" in header and "y" in header else "lonlat" if "longitude" in header and "latitude" in \
         header else None
     value = next((n for n in _DEPTH_NAMES + _ELEVATION_NAMES if n in header), None)

@@ -302,15 +302,21 @@ class LayTarget(Model):
         return np.interp(kp, self.kp, value)
 
 
-def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:
+def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
+    """``(path, header, rows)`` of a CSV file: the header in lower case, blank rows dropped; a file that cannot
+    be read is an InputError naming ``what`` it is."""
     path = Path(file)
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
             rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
     except OSError as err:
-        raise InputError(f"bathymetry file '{path}' cannot be read ({err.strerror or err}). Suggested fix: "
-                         "check the path (relative to the case file's folder).") from None
-    header = [c.lower() for c in rows[0]] if rows else []
+        raise InputError(f"{what} '{path}' cannot be read ({err.strerror or err}). Suggested fix: check the path "
+                         "(relative to the case file's folder).") from None
+    return path, [c.lower() for c in rows[0]] if rows else [], rows
+
+
+def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:
+    path, header, rows = csv_rows(file, "bathymetry file")
     along = "distance" if "distance" in header else "kp"
     if along not in header or "depth" not in header:
         raise InputError(f"bathymetry file '{path}' needs a header row with columns 'distance' (or 'kp') and "

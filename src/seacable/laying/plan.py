@@ -65,6 +65,7 @@ import numpy as np
 from numba import njit
 
 from ..errors import InputError, SeacableWarning
+from .kernel import current_at
 
 __all__ = ["LayPlan", "plan_lay", "solve_spans", "straight_direction"]
 
@@ -73,13 +74,6 @@ S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE = range(6)
 N_STATION_PROPS = 6
 _STEPS = 80          # RK4 steps over the straight cable's length at most
 _MAX_STEP = 50.0     # m, longest RK4 step
-
-
-@njit(cache=True)
-def _current(z, depths, speeds):
-    if depths.size == 1:
-        return speeds[0]
-    return np.interp(-z, depths, speeds)
 
 
 @njit(cache=True)
@@ -116,7 +110,7 @@ def _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, out):
     kn = 0.5 * rho * cdn * d
     kt = 0.5 * rho * cdt * math.pi * d
     t1, t2, t3, T = y[3], y[4], y[5], y[6]
-    c = _current(-h + y[2], depths, speeds)
+    c = current_at(-h + y[2], depths, speeds)
     u1 = c * cos_c - (vs - vc * t1)
     u2 = c * sin_c + vc * t2
     u3 = vc * t3
@@ -157,7 +151,7 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
     kn = 0.5 * rho * p[S_CDN] * p[S_D]
     y = np.zeros(7)
     y[6] = t0
-    c = _current(-h, depths, speeds)
+    c = current_at(-h, depths, speeds)
     y[3], y[4], y[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
     # the step: 1/80 of the straight cable's length from the seabed to the surface
     ds_max = min(h / max(y[5], 0.05) / _STEPS, _MAX_STEP)
@@ -206,7 +200,7 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
         tmp[4] /= norm
         tmp[5] /= norm
         if frozen:
-            c = _current(-h + tmp[2], depths, speeds)
+            c = current_at(-h + tmp[2], depths, speeds)
             tmp[3], tmp[4], tmp[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
         for j in range(7):
             y[j] = tmp[j]

@@ -14,14 +14,12 @@ positive to port (to the left looking along increasing KP).
 
 from __future__ import annotations
 
-import csv
-from pathlib import Path
-
 import numpy as np
 from pydantic import Field, model_validator
 
 from .._model import Model, quantity
 from ..errors import InputError
+from .inputs import csv_rows
 
 __all__ = ["Route", "RouteGeometry"]
 
@@ -128,14 +126,7 @@ def _check_points_input(xy: np.ndarray, where: str, unit: str) -> None:
 
 
 def _read_waypoints(file: str) -> dict[str, np.ndarray]:
-    path = Path(file)
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
-    except OSError as err:
-        raise InputError(f"route file '{path}' cannot be read ({err.strerror or err}). Suggested fix: check the "
-                         "path (relative to the case file's folder).") from None
-    header = [c.lower() for c in rows[0]] if rows else []
+    path, header, rows = csv_rows(file, "route file")
     for names in (("x", "y"), ("latitude", "longitude"), ("lat", "lon")):
         if all(n in header for n in names):
             idx = [header.index(n) for n in names]
