@@ -302,6 +302,19 @@ class LayTarget(Model):
         return np.interp(kp, self.kp, value)
 
 
+def sinking_weights(line, water_density: float, gravity: float) -> list[float]:
+    """Weight in water per length of each segment of a cable to be laid; an InputError for one that does not
+    sink. [N/m]"""
+    weights = []
+    for k, seg in enumerate(line.segments):
+        w = seg.line_type.submerged_weight(water_density, gravity)
+        if not w > 0:
+            raise InputError(f"line.segments[{k}] weighs {w:.6g} N/m in water: a laid cable must sink (weight in "
+                             "water > 0). Suggested fix: check mass_per_length, diameter and weight_in_water.")
+        weights.append(w)
+    return weights
+
+
 def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
     """``(path, header, rows)`` of a CSV file: the header in lower case, blank rows dropped; a file that cannot
     be read is an InputError naming ``what`` it is."""

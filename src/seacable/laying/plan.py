@@ -216,6 +216,17 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
 
 
 @njit(cache=True)
+def _pay_out_time(h, vs, props, rho):
+    """Time to pay out the straight span in still water, ``h / (V_s sin(alpha))``, at each station. [s]"""
+    out = np.empty(h.size)
+    for i in range(h.size):
+        p = props[i]
+        sin_a = straight_direction(p[S_W], 0.5 * rho * p[S_CDN] * p[S_D], vs[i], 0.0, 0.0)[2]
+        out[i] = h[i] / (vs[i] * max(sin_a, 1e-3))
+    return out
+
+
+@njit(cache=True)
 def solve_spans(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
     """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
     for i in range(h.size):
@@ -394,9 +405,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         vs_new = _speed_profile(kp, scheduled_speed, windows, repeater_speed, acceleration)
         # the lag: the time to pay out the straight span at the scheduled speed (of the span's own length the
         # iteration settles slowly, and of V_c not at all)
-        q = 0.5 * water_density * props[:, S_CDN] * props[:, S_D] * vs_new ** 2
-        sin_a = np.sqrt(1.0 - (2.0 * q / (props[:, S_W] + np.sqrt(props[:, S_W] ** 2 + 4.0 * q * q))) ** 2)
-        tau_new = h / (vs_new * np.maximum(sin_a, 1e-3))
+        tau_new = _pay_out_time(h, vs_new, props, water_density)
         # settled: speeds to 1e-7 of the ship's, lengths and the lag to 1e-7 (1 mm in 10 km)
         settled = (np.max(np.abs(vc_new - vc)) <= 1e-7 * np.max(vs) and np.max(np.abs(vs_new - vs)) <= 1e-7 * np.max(vs)
                    and np.max(np.abs(s_new - s_td)) <= 1e-7 * max(float(s_new[-1]), 1.0)

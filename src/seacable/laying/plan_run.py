@@ -10,6 +10,7 @@ from ..case import Case, LayPlanAnalysis
 from ..errors import InputError
 from ..results import make_dataset, var
 from .bathymetry import seabed_map
+from .inputs import sinking_weights
 from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_W, plan_lay
 
 __all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table"]
@@ -57,12 +58,8 @@ def _station_props(case: Case):
     env, line = case.environment, case.line
     rho, g = env.water_density, env.gravity
     rows, ends = [], np.cumsum([seg.length for seg in line.segments])
-    for k, seg in enumerate(line.segments):
+    for seg, w in zip(line.segments, sinking_weights(line, rho, g), strict=True):
         lt = seg.line_type
-        w = lt.submerged_weight(rho, g)
-        if not w > 0:
-            raise InputError(f"line.segments[{k}] weighs {w:.6g} N/m in water: a laid cable must sink (weight in "
-                             "water > 0). Suggested fix: check mass_per_length, diameter and weight_in_water.")
         cdn, cdt = lt.effective_drag()
         ea = lt.effective_axial_stiffness()
         row = np.zeros(N_STATION_PROPS)

@@ -13,7 +13,7 @@ from ..case import Case, LayingDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from ..statics.laying import laying_angle
-from .inputs import PayoutRate, PayoutSlack, Seabed2D
+from .inputs import PayoutRate, PayoutSlack, Seabed2D, sinking_weights
 from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
 from .solver import _MIN_SPEED, LayParameters, Repeater, props_row, simulate
 
@@ -37,13 +37,8 @@ def lay_parameters(case: Case) -> LayParameters:
     env, line = case.environment, case.line
     rho, g = env.water_density, env.gravity
     rows = []
-    for k, seg in enumerate(line.segments):
+    for seg, w in zip(line.segments, sinking_weights(line, rho, g), strict=True):
         lt = seg.line_type
-        w = lt.submerged_weight(rho, g)
-        if not w > 0:
-            raise InputError(f"line.segments[{k}] weighs {w:.6g} N/m in water: a laid cable must sink "
-                             "(weight in water > 0). Suggested fix: check mass_per_length, diameter and "
-                             "weight_in_water.")
         ea = lt.effective_axial_stiffness() if a.extensible else math.inf
         rows.append(props_row(lt.mass_per_length, w, lt.diameter, *lt.effective_drag(),
                               lt.added_mass_normal * rho * lt.area, lt.added_mass_tangential * rho * lt.area,
