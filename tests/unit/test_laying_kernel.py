@@ -73,7 +73,7 @@ def test_single_node_sinks_at_the_backward_euler_rate():
     new_pos, new_vel = np.zeros_like(pos), np.zeros_like(vel)
     dt = 0.1
     status, _, _ = K.implicit_step(pos, vel, pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
-                               np.zeros((3, 4)), np.zeros(1), np.zeros(1), 1025.0, dt, T, act, 0.0,
+                               np.zeros((3, 4)), np.zeros(1), np.zeros((1, 2)), 1025.0, dt, T, act, 0.0,
                                1e-12, 20, 5, new_pos, new_vel)
     assert status == K.STEP_OK
     accel = weight / mass                          # net weight over mass, per unit length

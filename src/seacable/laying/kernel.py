@@ -1,6 +1,7 @@
-"""One implicit time step of the 2-D lumped-mass laying model (paper 001 section 3), compiled.
+"""One implicit time step of the lumped-mass laying model (paper 001 section 3), in 2-D or 3-D, compiled.
 
-The suspended cable is a chain of points ``r_0 .. r_N`` in the vertical (x, z) plane: ``r_0`` is the
+The suspended cable is a chain of points ``r_0 .. r_N``, in the vertical (x, z) plane of paper 001 or in
+(x, y, z) (the same equations in three dimensions; the last coordinate is up): ``r_0`` is the
 touchdown node (landed, fixed), ``r_N`` the water entry at the ship (prescribed), and the nodes in
 between are free lumped masses. Segment ``j`` joins ``r_j`` and ``r_{j+1}`` and has the unstretched
 length ``L_j`` and the tension ``T_j``.
@@ -8,13 +9,13 @@ length ``L_j`` and the tension ``T_j``.
 Equations of a free node (paper eq. (12)-(14), corrected as in SPEC: ``K_i`` carries
 ``cos(theta)`` in both terms and ``J_i`` is ``m_i +`` the added-mass sum)::
 
-    (m_i I + sum_j 1/2 L_j (e_n n_j n_j^T + e_t t_j t_j^T)) a_i = T_i t_i - T_{i-1} t_{i-1} + D_i + W_i
+    (m_i I + sum_j 1/2 L_j (e_n (I - t_j t_j^T) + e_t t_j t_j^T)) a_i = T_i t_i - T_{i-1} t_{i-1} + D_i + W_i
 
-with ``t_j`` the unit tangent of segment j, ``n_j`` its normal, ``e_n`` / ``e_t`` the added mass per
+with ``t_j`` the unit tangent of segment j (``I - t t^T`` is ``n n^T`` in 2-D), ``e_n`` / ``e_t`` the added mass per
 length normal / along the cable, ``W_i`` the weight of half of each adjacent segment, and the
 Morison drag of each half segment evaluated with the node's velocity relative to the water ``u``::
 
-    D = 1/2 rho C_dn d (u.n)|u.n| n (1/2 L_j) + 1/2 rho C_dt pi d (u.t)|u.t| t (1/2 L_j),
+    D = 1/2 rho C_dn d |u_n| u_n (1/2 L_j) + 1/2 rho C_dt pi d (u.t)|u.t| t (1/2 L_j),   u_n = u - (u.t) t,
 
 (the tangential term carries the diameter, which the printed eq. (14) drops).
 
@@ -31,7 +32,7 @@ old tangents and the primes are the new time level. The constraint of each segme
 and a cable takes no compression: a segment whose tension would be negative goes slack (``T_j = 0``,
 chord shorter than ``L_j``) and is taut again once stretched (an active set, updated as Newton goes).
 Positions and tensions are solved together by Newton's method; ordered node by node the Jacobian is
-3x3 block tri-diagonal (Walton & Polachek's "tentative step and improvement" in modern form). It
+block tri-diagonal (3x3 blocks in 2-D, 4x4 in 3-D) (Walton & Polachek's "tentative step and improvement" in modern form). It
 includes the geometric stiffness ``T (I - t t^T) / l``: holding the tangents fixed and iterating on
 them instead diverges once ``T dt^2 / (m l)`` exceeds about one, which a 1 m segment under 200 N
 does at dt = 0.1 s.
@@ -91,83 +92,134 @@ def current_at(z, depths, speeds):
 
 
 @njit(cache=True)
-def _node_matrices(pos, vel, L, seg_type, props, point, depths, speeds, rho, dt, G, b):
-    """Fill ``G_i = dt^2 A_i^-1`` and the free-motion positions ``b_i`` of the free nodes."""
-    npt = pos.shape[0]
-    for i in range(1, npt - 1):
-        vx, vz = vel[i, 0], vel[i, 1]
-        ux = current_at(pos[i, 1], depths, speeds) - vx
-        uz = -vz
-        m = point[i, Q_MASS]
-        a11 = m + point[i, Q_ADDED]
-        a22 = a11
-        a12 = 0.0
-        c11 = 0.0
-        c12 = 0.0
-        c22 = 0.0
-        fx = 0.0
-        fz = -point[i, Q_WEIGHT]
-        for j in (i - 1, i):
-            p = props[seg_type[j]]
-            half = 0.5 * L[j]
-            dx = pos[j + 1, 0] - pos[j, 0]
-            dz = pos[j + 1, 1] - pos[j, 1]
-            ln = math.sqrt(dx * dx + dz * dz)
-            tx, tz = dx / ln, dz / ln
-            nx, nz = -tz, tx
-            mass = p[P_MASS] * half
-            en = p[P_EN] * half
-            et = p[P_ET] * half
-            a11 += mass + en * nx * nx + et * tx * tx
-            a22 += mass + en * nz * nz + et * tz * tz
-            a12 += en * nx * nz + et * tx * tz
-            fz -= p[P_WEIGHT] * half
-            un = ux * nx + uz * nz
-            ut = ux * tx + uz * tz
-            kn = 0.5 * rho * p[P_CDN] * p[P_DIAMETER] * half
-            kt = 0.5 * rho * p[P_CDT] * math.pi * p[P_DIAMETER] * half
-            fx += kn * abs(un) * un * nx + kt * abs(ut) * ut * tx
-            fz += kn * abs(un) * un * nz + kt * abs(ut) * ut * tz
-            # -dD/dv = dD/du: 2 k |u.n| n n^T (+ the same along t)
-            cn = 2.0 * kn * abs(un)
-            ct = 2.0 * kt * abs(ut)
-            c11 += cn * nx * nx + ct * tx * tx
-            c22 += cn * nz * nz + ct * tz * tz
-            c12 += cn * nx * nz + ct * tx * tz
-        cda = point[i, Q_CDA]
-        if cda > 0.0:
-            k = 0.5 * rho * cda
-            speed = math.sqrt(ux * ux + uz * uz)
-            fx += k * speed * ux
-            fz += k * speed * uz
-            if speed > 0.0:
-                c11 += k * (speed + ux * ux / speed)
-                c22 += k * (speed + uz * uz / speed)
-                c12 += k * ux * uz / speed
-        a11 += dt * c11
-        a22 += dt * c22
-        a12 += dt * c12
-        det = a11 * a22 - a12 * a12
-        s = dt * dt / det
-        G[i, 0, 0] = s * a22
-        G[i, 1, 1] = s * a11
-        G[i, 0, 1] = -s * a12
-        G[i, 1, 0] = -s * a12
-        b[i, 0] = pos[i, 0] + dt * vx + G[i, 0, 0] * fx + G[i, 0, 1] * fz
-        b[i, 1] = pos[i, 1] + dt * vz + G[i, 1, 0] * fx + G[i, 1, 1] * fz
+def _water_velocity(z, depths, current, dim, out):
+    """Current velocity at elevation ``z`` (the last coordinate) from a profile table: ``current[k]`` at
+    ``depths[k]`` below the surface, linear between, constant beyond."""
+    n = depths.size
+    if n == 1 or -z <= depths[0]:
+        for d in range(dim):
+            out[d] = current[0, d]
+        return
+    if -z >= depths[n - 1]:
+        for d in range(dim):
+            out[d] = current[n - 1, d]
+        return
+    k = np.searchsorted(depths, -z) - 1
+    f = (-z - depths[k]) / (depths[k + 1] - depths[k])
+    for d in range(dim):
+        out[d] = current[k, d] + f * (current[k + 1, d] - current[k, d])
 
 
 @njit(cache=True)
-def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rho, dt, T, active,
+def _invert_sym(a, dim, out):
+    """Inverse of a symmetric positive-definite 2x2 or 3x3 matrix (its adjugate over its determinant)."""
+    if dim == 2:
+        det = a[0, 0] * a[1, 1] - a[0, 1] * a[0, 1]
+        out[0, 0], out[1, 1] = a[1, 1] / det, a[0, 0] / det
+        out[0, 1] = out[1, 0] = -a[0, 1] / det
+        return
+    c00 = a[1, 1] * a[2, 2] - a[1, 2] * a[1, 2]
+    c01 = a[0, 2] * a[1, 2] - a[0, 1] * a[2, 2]
+    c02 = a[0, 1] * a[1, 2] - a[0, 2] * a[1, 1]
+    det = a[0, 0] * c00 + a[0, 1] * c01 + a[0, 2] * c02
+    out[0, 0] = c00 / det
+    out[0, 1] = out[1, 0] = c01 / det
+    out[0, 2] = out[2, 0] = c02 / det
+    out[1, 1] = (a[0, 0] * a[2, 2] - a[0, 2] * a[0, 2]) / det
+    out[1, 2] = out[2, 1] = (a[0, 2] * a[0, 1] - a[0, 0] * a[1, 2]) / det
+    out[2, 2] = (a[0, 0] * a[1, 1] - a[0, 1] * a[0, 1]) / det
+
+
+@njit(cache=True)
+def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, G, b):
+    """Fill ``G_i = dt^2 A_i^-1`` and the free-motion positions ``b_i`` of the free nodes.
+
+    ``A_i = M_i + dt C_i``: the node's mass, the added mass ``e_n (I - t t^T) + e_t t t^T`` of each half
+    segment, and ``C_i = dD/du`` the drag's linearisation about the old velocity: for the normal drag
+    ``k_n |u_n| u_n`` it is ``k_n (|u_n| (I - t t^T) + u_n u_n^T / |u_n|)`` (in 2-D ``2 k_n |u_n| n n^T``).
+    """
+    npt, dim = pos.shape
+    up = dim - 1                                  # the vertical coordinate
+    a = np.empty((dim, dim))
+    u = np.empty(dim)
+    t = np.empty(dim)
+    un = np.empty(dim)
+    f = np.empty(dim)
+    ainv = np.empty((dim, dim))
+    for i in range(1, npt - 1):
+        _water_velocity(pos[i, up], depths, current, dim, u)
+        for d in range(dim):
+            u[d] -= vel[i, d]
+            f[d] = 0.0
+            for e in range(dim):
+                a[d, e] = 0.0
+            a[d, d] = point[i, Q_MASS] + point[i, Q_ADDED]
+        f[up] = -point[i, Q_WEIGHT]
+        for j in (i - 1, i):
+            p = props[seg_type[j]]
+            half = 0.5 * L[j]
+            ln = 0.0
+            for d in range(dim):
+                t[d] = pos[j + 1, d] - pos[j, d]
+                ln += t[d] * t[d]
+            ln = math.sqrt(ln)
+            ut = 0.0
+            for d in range(dim):
+                t[d] /= ln
+                ut += u[d] * t[d]
+            size = 0.0
+            for d in range(dim):
+                un[d] = u[d] - ut * t[d]
+                size += un[d] * un[d]
+            size = math.sqrt(size)
+            mass = p[P_MASS] * half
+            en = p[P_EN] * half
+            et = p[P_ET] * half
+            kn = 0.5 * rho * p[P_CDN] * p[P_DIAMETER] * half
+            kt = 0.5 * rho * p[P_CDT] * math.pi * p[P_DIAMETER] * half
+            f[up] -= p[P_WEIGHT] * half
+            ct = 2.0 * kt * abs(ut)
+            for d in range(dim):
+                f[d] += kn * size * un[d] + kt * abs(ut) * ut * t[d]
+                a[d, d] += mass + en + dt * kn * size
+                for e in range(dim):
+                    tt = t[d] * t[e]
+                    a[d, e] += (et - en) * tt + dt * (ct - kn * size) * tt
+                    if size > 0.0:
+                        a[d, e] += dt * kn * un[d] * un[e] / size
+        cda = point[i, Q_CDA]
+        if cda > 0.0:
+            k = 0.5 * rho * cda
+            speed = 0.0
+            for d in range(dim):
+                speed += u[d] * u[d]
+            speed = math.sqrt(speed)
+            for d in range(dim):
+                f[d] += k * speed * u[d]
+                if speed > 0.0:
+                    a[d, d] += dt * k * speed
+                    for e in range(dim):
+                        a[d, e] += dt * k * u[d] * u[e] / speed
+        _invert_sym(a, dim, ainv)
+        for d in range(dim):
+            acc = 0.0
+            for e in range(dim):
+                G[i, d, e] = dt * dt * ainv[d, e]
+                acc += G[i, d, e] * f[e]
+            b[i, d] = pos[i, d] + dt * vel[i, d] + acc
+
+
+@njit(cache=True)
+def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, rho, dt, T, active,
                   compliance_floor, tol, max_iter, max_rounds, new_pos, new_vel):
     """Advance the suspended cable by ``dt``; returns ``(status, iterations, residual)``.
 
     Parameters
     ----------
-    pos, vel : (N+1, 2) float arrays
-        Node positions (x, z) and velocities at the old time; row 0 is the touchdown node, row N the
-        water entry at the old time. [m], [m/s]
-    chute : (2,) float array
+    pos, vel : (N+1, D) float arrays
+        Node positions and velocities at the old time, in 2-D (x, z) or 3-D (x, y, z), the last coordinate
+        up; row 0 is the touchdown node, row N the water entry at the old time. [m], [m/s]
+    chute : (D,) float array
         Water-entry point at the new time. [m]
     L : (N,) float array
         Unstretched segment lengths at the new time. [m]
@@ -175,8 +227,8 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
         Line type of each segment and the per-length properties of each type.
     point : (N+1, 4) float array
         Point masses at the nodes: mass, added mass [kg], weight in water [N], C_D A [m^2].
-    depths, speeds : float arrays
-        In-line current profile. [m], [m/s]
+    depths, current : (K,) and (K, D) float arrays
+        Current profile: the water's velocity at each depth below the surface (vertical part 0). [m], [m/s]
     rho, dt : float
         Water density [kg/m^3] and time step [s].
     T, active : (N,) float and int arrays
@@ -188,7 +240,7 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
         Tolerance on the constraint residual relative to the segment length. [-]
     max_iter, max_rounds : int
         Newton iterations per active set, and active-set updates (slack <-> taut).
-    new_pos, new_vel : (N+1, 2) float arrays
+    new_pos, new_vel : (N+1, D) float arrays
         Output: positions and velocities at the new time.
 
     Returns
@@ -204,32 +256,38 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
         The quantity compared with ``tol``: largest ``|chord - L (1 + T/EA)| / L`` over the taut
         segments and ``|r_i - b_i - G_i F_i| / L`` over the free nodes, in the last iteration. [-]
     """
-    npt = pos.shape[0]
+    npt, dim = pos.shape
     nseg = npt - 1
-    G = np.zeros((npt, 2, 2))
-    b = np.zeros((npt, 2))
-    _node_matrices(pos, vel, L, seg_type, props, point, depths, speeds, rho, dt, G, b)
+    m = dim + 1                                   # block size: a tension and a node's position
+    G = np.zeros((npt, dim, dim))
+    b = np.zeros((npt, dim))
+    _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, G, b)
     comp = np.empty(nseg)
     for j in range(nseg):
         comp[j] = max(props[seg_type[j], P_COMPLIANCE], compliance_floor)
     # predictor: the old tangents carry the old tensions
     r = new_pos
-    c = np.empty((nseg, 2))
+    c = np.empty((nseg, dim))
     ell = np.empty(nseg)
     _chords(pos, c, ell)
-    r[0, 0], r[0, 1] = pos[0, 0], pos[0, 1]
-    r[npt - 1, 0], r[npt - 1, 1] = chute[0], chute[1]
+    fk = np.empty(dim)
+    for d in range(dim):
+        r[0, d] = pos[0, d]
+        r[npt - 1, d] = chute[d]
     for i in range(1, npt - 1):
-        fx = T[i] * c[i, 0] - T[i - 1] * c[i - 1, 0]
-        fz = T[i] * c[i, 1] - T[i - 1] * c[i - 1, 1]
-        r[i, 0] = b[i, 0] + G[i, 0, 0] * fx + G[i, 0, 1] * fz
-        r[i, 1] = b[i, 1] + G[i, 1, 0] * fx + G[i, 1, 1] * fz
-    lower = np.zeros((nseg, 3, 3))
-    diag = np.zeros((nseg, 3, 3))
-    upper = np.zeros((nseg, 3, 3))
-    rhs = np.zeros((nseg, 3))
-    x = np.zeros((nseg, 3))
-    gamma, lu, piv, scale = np.empty((nseg, 3, 3)), np.empty((3, 3)), np.empty(3, dtype=np.int64), np.empty((3, 3))
+        for d in range(dim):
+            fk[d] = T[i] * c[i, d] - T[i - 1] * c[i - 1, d]
+        for d in range(dim):
+            acc = b[i, d]
+            for e in range(dim):
+                acc += G[i, d, e] * fk[e]
+            r[i, d] = acc
+    lower = np.zeros((nseg, m, m))
+    diag = np.zeros((nseg, m, m))
+    upper = np.zeros((nseg, m, m))
+    rhs = np.zeros((nseg, m))
+    x = np.zeros((nseg, m))
+    gamma, lu, piv, scale = np.empty((nseg, m, m)), np.empty((m, m)), np.empty(m, dtype=np.int64), np.empty((3, m))
     shortest = L.min()
     residual = np.inf
     total = 0
@@ -249,7 +307,10 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
             # damped update: no node moves more than a quarter of the shortest segment per iteration
             move = 0.0
             for k in range(nseg - 1):
-                move = max(move, abs(x[k, 1]) + abs(x[k, 2]))
+                size = 0.0
+                for d in range(dim):
+                    size += abs(x[k, 1 + d])
+                move = max(move, size)
             scale_step = min(1.0, 0.25 * shortest / move) if move > 0.0 else 1.0
             for k in range(nseg):
                 T[k] += scale_step * x[k, 0]
@@ -257,8 +318,8 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
                     T[k] = 0.0
                     active[k] = 0      # projected Newton: a segment in compression goes slack at once
                 if k + 1 < npt - 1:
-                    r[k + 1, 0] += scale_step * x[k, 1]
-                    r[k + 1, 1] += scale_step * x[k, 2]
+                    for d in range(dim):
+                        r[k + 1, d] += scale_step * x[k, 1 + d]
         total += it
         if not converged:
             return STEP_NOT_CONVERGED, total, residual
@@ -271,10 +332,9 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
                 changed = True
         if not changed:
             for i in range(npt):
-                new_vel[i, 0] = (r[i, 0] - pos[i, 0]) / dt
-                new_vel[i, 1] = (r[i, 1] - pos[i, 1]) / dt
-            new_vel[0, 0] = 0.0
-            new_vel[0, 1] = 0.0
+                for d in range(dim):
+                    new_vel[i, d] = (r[i, d] - pos[i, d]) / dt
+            new_vel[0, :] = 0.0
             return STEP_OK, total, residual
     return STEP_ACTIVE_SET, total, residual
 
@@ -282,21 +342,24 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, speeds, rh
 @njit(cache=True)
 def _chords(r, c, ell):
     """Unit chords ``c`` and lengths ``ell`` of the segments of ``r``."""
+    dim = r.shape[1]
     for j in range(c.shape[0]):
-        dx = r[j + 1, 0] - r[j, 0]
-        dz = r[j + 1, 1] - r[j, 1]
-        ln = max(math.sqrt(dx * dx + dz * dz), 1e-12)
+        ln = 0.0
+        for d in range(dim):
+            c[j, d] = r[j + 1, d] - r[j, d]
+            ln += c[j, d] * c[j, d]
+        ln = max(math.sqrt(ln), 1e-12)
         ell[j] = ln
-        c[j, 0] = dx / ln
-        c[j, 1] = dz / ln
+        for d in range(dim):
+            c[j, d] /= ln
 
 
 @njit(cache=True)
 def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
     """Newton system of the step in block tri-diagonal form; returns the scaled residual.
 
-    Block ``k`` holds the unknowns ``(T_k, x_{k+1}, z_{k+1})`` (the last block only ``T_{N-1}``) and
-    the equations ``g_k`` (constraint of segment k) and ``F_{k+1}`` (motion of node k+1)::
+    Block ``k`` holds the unknowns ``(T_k, r_{k+1})`` (the last block only ``T_{N-1}``) and the equations
+    ``g_k`` (constraint of segment k) and ``F_{k+1}`` (motion of node k+1)::
 
         g_k = |r_{k+1} - r_k| - L_k (1 + T_k / EA)
         F_i = r_i - b_i - G_i (T_i c_i - T_{i-1} c_{i-1}),   c_j = (r_{j+1} - r_j) / |r_{j+1} - r_j|
@@ -304,12 +367,15 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
     with ``dc_j / dr_{j+1} = (I - c_j c_j^T) / |r_{j+1} - r_j|`` (the geometric stiffness). The right
     side is minus the residual.
     """
-    nseg = c.shape[0]
+    nseg, dim = c.shape
     nfree = nseg - 1
     lower[:] = 0.0
     diag[:] = 0.0
     upper[:] = 0.0
     res = 0.0
+    f = np.empty(dim)
+    kk = np.empty((dim, dim))
+    ki = np.empty((dim, dim))
     for k in range(nseg):
         # constraint row
         if active[k]:
@@ -317,49 +383,59 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
             res = max(res, abs(g) / L[k])
             rhs[k, 0] = -g
             diag[k, 0, 0] = -L[k] * comp[k]
-            if k + 1 <= nfree:
-                diag[k, 0, 1] = c[k, 0]
-                diag[k, 0, 2] = c[k, 1]
-            if k >= 1:
-                lower[k, 0, 1] = -c[k, 0]
-                lower[k, 0, 2] = -c[k, 1]
+            for d in range(dim):
+                if k + 1 <= nfree:
+                    diag[k, 0, 1 + d] = c[k, d]
+                if k >= 1:
+                    lower[k, 0, 1 + d] = -c[k, d]
         else:
             rhs[k, 0] = -T[k]
             diag[k, 0, 0] = 1.0
         if k + 1 > nfree:
-            diag[k, 1, 1] = 1.0
-            diag[k, 2, 2] = 1.0
-            rhs[k, 1] = 0.0
-            rhs[k, 2] = 0.0
+            for d in range(dim):
+                diag[k, 1 + d, 1 + d] = 1.0
+                rhs[k, 1 + d] = 0.0
             continue
         # motion rows of node i = k + 1
         i = k + 1
-        fx = T[i] * c[i, 0] - T[k] * c[k, 0]
-        fz = T[i] * c[i, 1] - T[k] * c[k, 1]
-        rx = r[i, 0] - b[i, 0] - (G[i, 0, 0] * fx + G[i, 0, 1] * fz)
-        rz = r[i, 1] - b[i, 1] - (G[i, 1, 0] * fx + G[i, 1, 1] * fz)
-        res = max(res, (abs(rx) + abs(rz)) / L[k])
-        rhs[k, 1] = -rx
-        rhs[k, 2] = -rz
+        for d in range(dim):
+            f[d] = T[i] * c[i, d] - T[k] * c[k, d]
+        size = 0.0
+        for d in range(dim):
+            rd = r[i, d] - b[i, d]
+            for e in range(dim):
+                rd -= G[i, d, e] * f[e]
+            size += abs(rd)
+            rhs[k, 1 + d] = -rd
+        res = max(res, size / L[k])
         # K = T_i P_i + T_k P_k (geometric stiffness at node i), P_j = (I - c c^T) / ell
         # (tension only: a compressive iterate would make the matrix indefinite and Newton wander)
         pk = max(T[k], 0.0) / ell[k]
         pi_ = max(T[i], 0.0) / ell[i]
-        kk11, kk12, kk22 = pk * (1.0 - c[k, 0] ** 2), -pk * c[k, 0] * c[k, 1], pk * (1.0 - c[k, 1] ** 2)
-        ki11, ki12, ki22 = pi_ * (1.0 - c[i, 0] ** 2), -pi_ * c[i, 0] * c[i, 1], pi_ * (1.0 - c[i, 1] ** 2)
-        for a in range(2):
-            ga0, ga1 = G[i, a, 0], G[i, a, 1]
+        for d in range(dim):
+            for e in range(dim):
+                eye = 1.0 if d == e else 0.0
+                kk[d, e] = pk * (eye - c[k, d] * c[k, e])
+                ki[d, e] = pi_ * (eye - c[i, d] * c[i, e])
+        for a in range(dim):
+            gc_k = 0.0
+            gc_i = 0.0
+            for e in range(dim):
+                gc_k += G[i, a, e] * c[k, e]
+                gc_i += G[i, a, e] * c[i, e]
             # d F / d T_k = +G c_k, d F / d T_i = -G c_i
-            diag[k, 1 + a, 0] = ga0 * c[k, 0] + ga1 * c[k, 1]
-            upper[k, 1 + a, 0] = -(ga0 * c[i, 0] + ga1 * c[i, 1])
-            # d F / d r_i = I + G (K_k + K_i)
-            diag[k, 1 + a, 1] = (1.0 if a == 0 else 0.0) + ga0 * (kk11 + ki11) + ga1 * (kk12 + ki12)
-            diag[k, 1 + a, 2] = (1.0 if a == 1 else 0.0) + ga0 * (kk12 + ki12) + ga1 * (kk22 + ki22)
-            # d F / d r_{i-1} = -G K_k, d F / d r_{i+1} = -G K_i
-            if k >= 1:
-                lower[k, 1 + a, 1] = -(ga0 * kk11 + ga1 * kk12)
-                lower[k, 1 + a, 2] = -(ga0 * kk12 + ga1 * kk22)
-            if i + 1 <= nfree:
-                upper[k, 1 + a, 1] = -(ga0 * ki11 + ga1 * ki12)
-                upper[k, 1 + a, 2] = -(ga0 * ki12 + ga1 * ki22)
+            diag[k, 1 + a, 0] = gc_k
+            upper[k, 1 + a, 0] = -gc_i
+            for d in range(dim):
+                gk = 0.0
+                gi = 0.0
+                for e in range(dim):
+                    gk += G[i, a, e] * kk[e, d]
+                    gi += G[i, a, e] * ki[e, d]
+                # d F / d r_i = I + G (K_k + K_i), d F / d r_{i-1} = -G K_k, d F / d r_{i+1} = -G K_i
+                diag[k, 1 + a, 1 + d] = (1.0 if a == d else 0.0) + gk + gi
+                if k >= 1:
+                    lower[k, 1 + a, 1 + d] = -gk
+                if i + 1 <= nfree:
+                    upper[k, 1 + a, 1 + d] = -gi
     return res

@@ -724,7 +724,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
     wall0 = _time.perf_counter()
     lay = _Lay(par, ship, payout, seabed, initial_angle)
     c, ctl, props = lay.c, lay.ctl, par.props
-    kernel_args = (props, par.current_depths, par.current_speeds, par.water_density, tol, max_iter)
+    current = np.column_stack([par.current_speeds, np.zeros_like(par.current_speeds)])   # (along x, vertical)
+    kernel_args = (props, par.current_depths, current, par.water_density, tol, max_iter)
     out_t, series, snaps, rep_out = [], {k: [] for k in _SERIES}, [], []
 
     def record(t: float) -> None:
