@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, Seabed2D, ShipMotion, schedule_value
+from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion, schedule_value
 from .kernel import P_COMPLIANCE, P_WEIGHT
 
 __all__ = ["Control"]
@@ -14,9 +14,9 @@ __all__ = ["Control"]
 class Control:
     """Ship speed and payout speed as the run goes."""
 
-    def __init__(self, ship: ShipMotion, payout, par, seabed: Seabed2D):
+    def __init__(self, ship: ShipMotion, payout, par):
         """``par``: the run's :class:`~seacable.laying.solver.LayParameters`."""
-        self.ship, self.payout, self.par, self.seabed = ship, payout, par, seabed
+        self.ship, self.payout, self.par = ship, payout, par
         self.speed = ship.scheduled(0.0)
         self.off_schedule = False
         # the filter starts at the target: the payout starts at the feed-forward and follows the
@@ -43,7 +43,8 @@ class Control:
 
     def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float,
                      commit: bool = True) -> float:
-        """Payout speed for ship speed ``vs`` and the present touchdown geometry. [m/s]
+        """Payout speed for ship speed ``vs`` and the present touchdown ``geometry``: the seabed's slope along
+        the ship's heading there, the depth there [m] and the cot of the span's chord angle. [m/s]
 
         In bottom-tension mode ``bottom_tension`` is the bottom tension at the end of the step of
         length ``dt`` [s] (the filter is advanced by backward Euler); ``commit=False`` evaluates the
@@ -52,8 +53,7 @@ class Control:
         p = self.payout
         if isinstance(p, PayoutRate):
             return schedule_value(t, p.speed, p.times, p.speeds)
-        x_td, h_td, cot_alpha = geometry
-        slope = self.seabed.slope(x_td)
+        slope, h_td, cot_alpha = geometry
         compensate = isinstance(p, PayoutBottomTension) or p.slope_compensation
         if not compensate:
             return (1.0 + p.slack) * vs

@@ -15,6 +15,7 @@ from ..results import make_dataset, var
 from ..statics.laying import laying_angle
 from .inputs import PayoutRate, PayoutSlack, Seabed2D, sinking_weights
 from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
+from .track import Track2D
 from .solver import _MIN_SPEED, LayParameters, Repeater, props_row, simulate
 
 __all__ = ["LayingSetup", "lay_parameters", "lay_seabed", "prepare_laying_dynamic", "run_laying_dynamic"]
@@ -55,9 +56,10 @@ def lay_parameters(case: Case) -> LayParameters:
         depths, speeds = np.zeros(1), np.array([cur.speed * along])
     else:
         depths, speeds = np.asarray(cur.depths, float), np.asarray(cur.speeds, float) * along
+    velocity = np.column_stack([speeds, np.zeros_like(speeds)])          # (along x, vertical)
     return LayParameters(props=np.array(rows), type_ends=np.cumsum([seg.length for seg in line.segments]),
                          segment_length=a.segment_length, cable_length=line.length, repeaters=repeaters,
-                         water_density=rho, current_depths=depths, current_speeds=speeds)
+                         water_density=rho, current_depths=depths, current_velocity=velocity)
 
 
 def lay_seabed(case: Case) -> Seabed2D:
@@ -187,15 +189,15 @@ def run_laying_dynamic(case: Case, progress=None):
     a: LayingDynamicAnalysis = case.analysis
     setup = prepare_laying_dynamic(case)
     par, seabed = setup.parameters, setup.seabed
-    res = simulate(par, a.ship, a.payout, seabed, a.duration, output_interval=a.output_interval,
+    res = simulate(par, a.ship, a.payout, Track2D(seabed), a.duration, output_interval=a.output_interval,
                    steps_per_segment=a.steps_per_segment, max_time_step=a.max_time_step,
                    initial_angle=a.initial_angle, slack_window=a.slack_window, tol=a.tolerance,
                    max_iter=a.max_iterations, progress=progress)
     s = res.series
     t1 = "time"
     data = {
-        "x": var(("time", "node"), res.x, "m", "node x along the track"),
-        "z": var(("time", "node"), res.z, "m", "node elevation (z up, 0 at the sea surface)"),
+        "x": var(("time", "node"), res.pos[..., 0], "m", "node x along the track"),
+        "z": var(("time", "node"), res.pos[..., -1], "m", "node elevation (z up, 0 at the sea surface)"),
         "tension": var(("time", "segment"), res.tension, "N", "segment tension (0: slack)"),
         "ship_x": var(t1, s["ship_x"], "m", "water-entry point x"),
         "ship_speed": var(t1, s["ship_speed"], "m s-1", "ship speed"),
@@ -211,27 +213,27 @@ def run_laying_dynamic(case: Case, progress=None):
                      "(NaN until 3 nodes have landed in the window)"),
         "suspended_length": var(t1, s["suspended_length"], "m", "cable length between touchdown and water entry"),
         "laid_length": var(t1, s["laid_length"], "m", "cable laid since t = 0"),
-        "laid_x": var("laid", res.laid["x"], "m", "x of the laid nodes"),
-        "laid_z": var("laid", res.laid["z"], "m", "elevation of the laid nodes"),
+        "laid_x": var("laid", res.laid["p"][:, 0], "m", "x of the laid nodes"),
+        "laid_z": var("laid", res.laid["p"][:, -1], "m", "elevation of the laid nodes"),
         "laid_s": var("laid", res.laid["s"], "m", "arc length of the laid nodes from end A"),
         "laid_time": var("laid", res.laid["time"], "s", "time of touchdown (0: on the seabed at the start)"),
     }
-    lo = min(float(np.nanmin(res.x)), float(res.laid["x"][0]))
+    lo = min(float(np.nanmin(res.pos[..., 0])), float(res.laid["p"][0, 0]))
     hi = float(np.nanmax(s["ship_x"]))
     inner = seabed.x[(seabed.x > lo) & (seabed.x < hi)]
     sx = np.concatenate([[lo], inner, [hi]])
     data["seabed_x"] = var("seabed_point", sx, "m", "seabed profile x")
     data["seabed_z"] = var("seabed_point", seabed.z(sx), "m", "seabed profile elevation")
     if par.repeaters:
-        data["repeater_x"] = var(("time", "repeater"), res.repeater_xz[..., 0], "m", "repeater x")
-        data["repeater_z"] = var(("time", "repeater"), res.repeater_xz[..., 1], "m", "repeater elevation")
+        data["repeater_x"] = var(("time", "repeater"), res.repeater_pos[..., 0], "m", "repeater x")
+        data["repeater_z"] = var(("time", "repeater"), res.repeater_pos[..., -1], "m", "repeater elevation")
         data["repeater_s"] = var("repeater", np.array([r.s for r in sorted(par.repeaters, key=lambda r: r.s)]),
                                  "m", "repeater arc length from end A")
     coords = {"time": var("time", res.time, "s", "time")}
     settings = {"segment_length": a.segment_length, "steps_per_segment": a.steps_per_segment,
                 "extensible": int(a.extensible), "payout": a.payout.type, "steps": res.steps,
                 "newton_iterations": res.iterations, "halved_steps": res.halvings, "lifted_nodes": res.lifts,
-                "max_nodes": int(res.x.shape[1]), "wall_time_s": round(res.wall_time, 4),
+                "max_nodes": int(res.pos.shape[1]), "wall_time_s": round(res.wall_time, 4),
                 "interrupted": int(res.interrupted), "stop_reason": res.stop_reason,
                 "scheme": "lumped mass, backward Euler with implicit drag, Newton on positions and tensions "
                           "(3x3 block tri-diagonal), slack segments by an active set"}

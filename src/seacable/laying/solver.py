@@ -44,9 +44,8 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import ConvergenceError, InputError, SeacableWarning
-from ..statics.laying import laying_angle
 from .control import Control
-from .inputs import PayoutBottomTension, Seabed2D, ShipMotion
+from .inputs import PayoutBottomTension, ShipMotion
 from .kernel import (
     N_PROPS,
     P_CDN,
@@ -85,7 +84,9 @@ class LayParameters:
     """Cable and water data of a laying simulation (SI units).
 
     ``props`` holds one row per line type (columns ``seacable.laying.kernel.P_*``) and
-    ``type_ends`` the material coordinate at which each type ends.
+    ``type_ends`` the material coordinate at which each type ends. The current is the water's velocity
+    at ``current_depths`` below the surface, one row of ``dim`` components per depth (2-D: along x and
+    0; 3-D: x, y and 0).
     """
 
     props: np.ndarray
@@ -95,7 +96,7 @@ class LayParameters:
     repeaters: tuple[Repeater, ...] = ()
     water_density: float = 1025.0
     current_depths: np.ndarray = field(default_factory=lambda: np.zeros(1))
-    current_speeds: np.ndarray = field(default_factory=lambda: np.zeros(1))
+    current_velocity: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))   # (K, dim), vertical 0
 
     def type_at(self, s: float) -> int:
         return min(int(np.searchsorted(self.type_ends, s, side="right")), len(self.type_ends) - 1)
@@ -107,11 +108,12 @@ class LayRun:
 
     time: np.ndarray
     series: dict                 # name -> (n_out,) array
-    x: np.ndarray                # (n_out, n_max) suspended nodes, NaN padded [m]
-    z: np.ndarray
+    pos: np.ndarray              # (n_out, n_max, dim) suspended nodes, NaN padded [m]
     tension: np.ndarray          # (n_out, n_max - 1) [N]
-    laid: dict                   # x, z, s, time of the landed nodes
-    repeater_xz: np.ndarray      # (n_out, n_rep, 2)
+    laid: dict                   # "p" (n, dim), "s", "time" of the landed nodes
+    repeater_pos: np.ndarray     # (n_out, n_rep, dim)
+    ship: np.ndarray             # (n_out, dim) water entry [m]
+    touchdown: np.ndarray        # (n_out, dim) touchdown point [m]
     steps: int = 0
     iterations: int = 0
     halvings: int = 0
@@ -124,9 +126,9 @@ class LayRun:
 class _Cable:
     """Node storage: rows ``lo .. hi`` of fixed-capacity arrays are the suspended cable."""
 
-    def __init__(self, capacity: int):
-        self.pos = np.zeros((capacity, 2))
-        self.vel = np.zeros((capacity, 2))
+    def __init__(self, capacity: int, dim: int):
+        self.pos = np.zeros((capacity, dim))
+        self.vel = np.zeros((capacity, dim))
         self.s = np.zeros(capacity)
         self.point = np.zeros((capacity, 4))
         self.rep = np.full(capacity, -1, dtype=np.int64)
@@ -134,8 +136,8 @@ class _Cable:
         self.T = np.zeros(capacity)
         self.active = np.ones(capacity, dtype=np.int64)
         self.seg_type = np.zeros(capacity, dtype=np.int64)
-        self.new_pos = np.zeros((capacity, 2))
-        self.new_vel = np.zeros((capacity, 2))
+        self.new_pos = np.zeros((capacity, dim))
+        self.new_vel = np.zeros((capacity, dim))
         self.lo = 0
         self.hi = 0
 
@@ -197,26 +199,40 @@ def _step_error(status: int, t: float, dt: float, res: float, tol: float, max_it
     return ConvergenceError(head + why + fix, time=t, iterations=max_iter, residual=res)
 
 
-def _initial_angle(par: LayParameters, speed: float, depth: float) -> float:
-    """Straight-line laying angle at a relative speed (paper 001 eq. (7)), 90 deg at rest. [rad]"""
+def _initial_tangent(par: LayParameters, track, d: float, speed: float, depth: float,
+                     initial_angle: float | None) -> np.ndarray:
+    """Unit tangent of the initial straight cable, up towards the ship (``dim`` components).
+
+    Default: the straight lay's direction (paper 001 eq. (7)) for the ship's velocity through the water
+    at mid-depth, in the vertical plane of that velocity (:func:`seacable.laying.plan.straight_direction`:
+    a cross-current turns the plane), vertical at rest. ``initial_angle`` [rad] instead: that angle to the
+    horizontal, in the plane of the ship's heading.
+    """
+    from .plan import straight_direction
+
+    e = track.direction(d)
+    if initial_angle is not None:
+        return np.concatenate([math.cos(initial_angle) * e, [math.sin(initial_angle)]])
     p = par.props[par.type_at(0.0)]
-    u = float(np.interp(0.5 * depth, par.current_depths, par.current_speeds)) if par.current_depths.size > 1 \
-        else float(par.current_speeds[0])
-    rel = speed - u
-    if abs(rel) < 1e-6:
-        return 0.5 * math.pi
-    alpha = float(laying_angle(abs(rel), p[P_WEIGHT], p[P_DIAMETER], p[P_CDN], par.water_density, method="exact"))
-    return alpha if rel > 0 else math.pi - alpha
+    c = np.array([np.interp(0.5 * depth, par.current_depths, par.current_velocity[:, k])
+                  for k in range(track.dim - 1)])
+    across = np.array([-e[1], e[0]]) if track.dim == 3 else np.zeros(1)
+    kn = 0.5 * par.water_density * p[P_CDN] * p[P_DIAMETER]
+    t1, t2, t3 = straight_direction(p[P_WEIGHT], kn, speed, float(c @ e), float(c @ across) if track.dim == 3 else 0.0)
+    h = t1 * e + (t2 * across if track.dim == 3 else 0.0)
+    return np.concatenate([h, [t3]])
 
 
-def _touchdown_distance(seabed: Seabed2D, x0: float, alpha: float, step: float) -> float:
-    """Length along the straight line from the water entry at ``x0`` at ``alpha`` to the seabed. [m]"""
+def _touchdown_distance(track, chute: np.ndarray, t: np.ndarray, step: float) -> float:
+    """Length along the straight line from the water entry ``chute`` down along ``-t`` to the seabed. [m]"""
     def f(ell):
-        return -ell * math.sin(alpha) - float(seabed.z(x0 - ell * math.cos(alpha)))
+        p = chute - ell * t
+        return p[-1] - float(track.zb(p[:-1]))
     a, fa = 0.0, f(0.0)
     if fa <= 0.0:
-        raise InputError(f"the seabed at the water entry x = {x0:g} m is at or above the sea surface "
-                         f"(z = {float(seabed.z(x0)):g} m). Suggested fix: check the depth or bathymetry.")
+        raise InputError(f"the seabed at the water entry {tuple(round(float(v), 3) for v in chute[:-1])} m is at or "
+                         f"above the sea surface (z = {float(track.zb(chute[:-1])):g} m). Suggested fix: check the "
+                         "depth or bathymetry.")
     for _ in range(10**6):
         b = a + step
         if f(b) <= 0.0:
@@ -250,10 +266,10 @@ def _end_tensions(c: _Cable, props, f_td: float = 0.0) -> tuple[float, float, fl
     """
     hi = c.hi
     d_top = c.pos[hi] - c.pos[hi - 1]
-    ln_top = math.hypot(*d_top)
-    top = c.T[hi - 1] * c.active[hi - 1] + 0.5 * props[c.seg_type[hi - 1], P_WEIGHT] * c.L[hi - 1] * d_top[1] / ln_top
+    ln_top = float(np.linalg.norm(d_top))
+    top = c.T[hi - 1] * c.active[hi - 1] + 0.5 * props[c.seg_type[hi - 1], P_WEIGHT] * c.L[hi - 1] * d_top[-1] / ln_top
     bottom = _bottom_tension(c, props, c.pos, c.lo, f_td)
-    angle = math.atan2(d_top[1], d_top[0])
+    angle = math.atan2(d_top[-1], float(np.linalg.norm(d_top[:-1])))
     return top, bottom, angle
 
 
@@ -264,62 +280,63 @@ def _bottom_tension(c: _Cable, props, pos: np.ndarray, lo: int, f_td: float) -> 
     if not c.active[lo]:
         return 0.0
     d_bot = pos[lo + 1] - pos[lo]
-    return max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[1] / math.hypot(*d_bot),
-               0.0)
+    return max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[-1]
+               / float(np.linalg.norm(d_bot)), 0.0)
 
 
 class _Lay:
     """State of a laying run and the events between steps."""
 
-    def __init__(self, par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D,
-                 initial_angle: float | None):
-        self.par, self.seabed = par, seabed
+    def __init__(self, par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None):
+        self.par, self.track = par, track
         seg = par.segment_length
         props = par.props
-        self.ctl = ctl = Control(ship, payout, par, seabed)
-        self.x_ship = ship.start_x
-        depth0 = -float(seabed.z(self.x_ship))
-        alpha = _initial_angle(par, ctl.speed, depth0) if initial_angle is None else float(initial_angle)
-        ell = _touchdown_distance(seabed, self.x_ship, alpha, 0.25 * seg)
+        self.ctl = ctl = Control(ship, payout, par)
+        self.x_ship = ship.start_x         # distance run along the track (its KP in 3-D) [m]
+        chute = track.point(self.x_ship)
+        depth0 = -float(track.zb(chute[:-1]))
+        t = _initial_tangent(par, track, self.x_ship, ctl.speed, depth0, initial_angle)
+        ell = _touchdown_distance(track, chute, t, 0.25 * seg)
         if ell > par.cable_length:
             raise InputError(f"the initial suspended cable needs {ell:.6g} m but the line is "
                              f"{par.cable_length:.6g} m long. Suggested fix: make the line (the cable on board) "
                              "longer.")
         self.reps = reps = sorted(par.repeaters, key=lambda r: r.s)
         self.rep_state = np.zeros(len(reps), dtype=np.int64)      # 0 on board, 1 in the water, 2 landed
-        self.rep_landed = np.full((len(reps), 2), np.nan)
-        # cable already on the seabed behind the touchdown (as long as the suspended part, whole segments):
-        # the run starts in the middle of a lay, and tension can pick laid cable up again
-        cos_a, sin_a = math.cos(alpha), math.sin(alpha)
-        x_td = self.x_ship - ell * cos_a
+        self.rep_landed = np.full((len(reps), track.dim), np.nan)
+        # cable already on the seabed behind the touchdown (as long as the suspended part, whole segments), along
+        # the ship's heading: the run starts in the middle of a lay, and tension can pick laid cable up again
+        td = chute - ell * t
+        back = track.direction(self.x_ship)
         n_laid = max(int(math.ceil(ell / seg)), 2)
-        laid_x = [x_td]
+        laid_h = [td[:-1]]
         for _ in range(n_laid):
-            slope = seabed.slope(laid_x[-1] - 0.5 * seg)
-            laid_x.append(laid_x[-1] - seg / math.sqrt(1.0 + slope * slope))
-        laid_x = laid_x[::-1]
+            slope = float(track.gradient(laid_h[-1] - 0.5 * seg * back) @ back)
+            laid_h.append(laid_h[-1] - seg / math.sqrt(1.0 + slope * slope) * back)
+        laid_h = laid_h[::-1]
         pre = n_laid * seg
         if pre + ell > par.cable_length:
             raise InputError(f"the run starts with {pre:.6g} m of cable on the seabed and {ell:.6g} m suspended, "
                              f"but the line is {par.cable_length:.6g} m long. Suggested fix: make the line (the "
                              "cable on board) longer.")
-        self.laid = {"x": laid_x, "z": [float(seabed.z(x)) for x in laid_x], "s": [k * seg for k in range(n_laid + 1)],
-                     "time": [0.0] * (n_laid + 1)}
+        self.laid = {"p": [np.append(h, float(track.zb(h))) for h in laid_h],
+                     "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1)}
         for r, rep in enumerate(reps):
             if rep.s <= pre:
                 self.rep_state[r] = 2
                 k = int(np.argmin(np.abs(np.asarray(self.laid["s"]) - rep.s)))
-                self.rep_landed[r] = (self.laid["x"][k], self.laid["z"][k])
+                self.rep_landed[r] = self.laid["p"][k]
         s_nodes = [pre + v for v in _node_coordinates(ell, seg, [r.s - pre for r in reps])]
-        self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (x_td, depth0, cos_a / max(sin_a, 1e-9)), 0.0, 0.0)
-        self.c = c = _Cable(max(64, 4 * len(s_nodes)))
+        cot = float(np.linalg.norm(t[:-1])) / max(t[-1], 1e-9)
+        self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (self.slope_at(td[:-1]), depth0, cot), 0.0, 0.0)
+        self.c = c = _Cable(max(64, 4 * len(s_nodes)), track.dim)
         n0 = len(s_nodes)
         c.lo, c.hi = _MARGIN, _MARGIN + n0 - 1
+        ship_v = self.ship_velocity(ctl.speed)
         for k, s in enumerate(s_nodes):
             row = c.lo + k
-            back = pre + ell - s
-            c.pos[row] = (self.x_ship - back * cos_a, -back * sin_a)
-            c.vel[row] = (ctl.speed - vc * cos_a, -vc * sin_a)
+            c.pos[row] = chute - (pre + ell - s) * t
+            c.vel[row] = ship_v - vc * t
             c.s[row] = s
             if 0 < k < n0 - 1:
                 self.attach(row)
@@ -327,10 +344,10 @@ class _Lay:
                 c.L[row] = s_nodes[k + 1] - s
                 c.seg_type[row] = par.type_at(0.5 * (s + s_nodes[k + 1]))
                 # the straight steady lay's tension (weight along the cable) as the first guess
-                c.T[row] = props[c.seg_type[row], P_WEIGHT] * sin_a * 0.5 * (s + s_nodes[k + 1] - 2 * pre)
-        c.pos[c.lo] = (laid_x[-1], self.laid["z"][-1])
+                c.T[row] = props[c.seg_type[row], P_WEIGHT] * t[-1] * 0.5 * (s + s_nodes[k + 1] - 2 * pre)
+        c.pos[c.lo] = self.laid["p"][-1]
         c.vel[c.lo] = 0.0
-        c.vel[c.hi] = (ctl.speed, 0.0)
+        c.vel[c.hi] = ship_v
         c.active[c.lo], c.T[c.lo] = 0, 0.0    # zero tension at the touchdown: the straight lay's bottom is slack
         self.s_paid = pre + ell
         self.s_start = pre                 # material coordinate of the touchdown at t = 0 [m]
@@ -338,6 +355,14 @@ class _Lay:
         # an inextensible cable gets the compliance of a 1e-5 strain under the weight of the initial suspended
         # length: immaterial for the shape, it keeps the matrix of a straight taut cable regular
         self.floor = _STRAIN_FLOOR / (float(np.max(props[:, P_WEIGHT])) * max(ell, seg))
+
+    def ship_velocity(self, speed: float) -> np.ndarray:
+        """The water entry's velocity at ``speed`` along the track where the ship is. [m/s]"""
+        return np.append(speed * self.track.direction(self.x_ship), 0.0)
+
+    def slope_at(self, ph) -> float:
+        """The seabed's slope along the ship's heading under the horizontal point ``ph``. [-]"""
+        return float(self.track.gradient(ph) @ self.track.direction(self.x_ship))
 
     def attach(self, row: int) -> None:
         """Put the repeater whose coordinate is ``s[row]`` (if any) on node ``row``."""
@@ -357,10 +382,10 @@ class _Lay:
         x_new = self.x_ship + 0.5 * (ctl.speed + vs_new) * dt
         lo, hi = c.lo, c.hi
         c.L[hi - 1] = self.s_paid + vc_new * dt - c.s[hi - 1]
-        props, cur_d, cur_s, rho, tol, max_iter = kernel_args
+        props, cur_d, cur_v, rho, tol, max_iter = kernel_args
         status, it, res = implicit_step(
-            c.pos[lo:hi + 1], c.vel[lo:hi + 1], np.array([x_new, 0.0]), c.L[lo:hi], c.seg_type[lo:hi], props,
-            c.point[lo:hi + 1], cur_d, cur_s, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, tol, max_iter,
+            c.pos[lo:hi + 1], c.vel[lo:hi + 1], self.track.point(x_new), c.L[lo:hi], c.seg_type[lo:hi], props,
+            c.point[lo:hi + 1], cur_d, cur_v, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, tol, max_iter,
             _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
         return status, it, res, vs_new, x_new
 
@@ -461,9 +486,9 @@ class _Lay:
         if len(self.laid["s"]) < 2 or not c.active[lo] or c.hi - lo < 2:
             return False
         d = c.new_pos[lo + 1] - c.new_pos[lo]
-        slope = self.seabed.slope(0.5 * (c.new_pos[lo, 0] + c.new_pos[lo + 1, 0]))
-        cos_b = 1.0 / math.sqrt(1.0 + slope * slope)          # normal to the seabed: (-slope, 1) cos_b
-        up = c.T[lo] * (d[1] - slope * d[0]) * cos_b / math.hypot(*d)
+        grad = self.track.gradient(0.5 * (c.new_pos[lo, :-1] + c.new_pos[lo + 1, :-1]))
+        cos_b = 1.0 / math.sqrt(1.0 + float(grad @ grad))     # normal to the seabed: (-grad, 1) cos_b
+        up = c.T[lo] * (d[-1] - float(grad @ d[:-1])) * cos_b / float(np.linalg.norm(d))
         w = self.par.props[c.seg_type[lo], P_WEIGHT]
         behind = self.laid["s"][-1] - self.laid["s"][-2]
         return up > (0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]) * cos_b
@@ -476,7 +501,7 @@ class _Lay:
         for key in laid:
             laid[key].pop()
         new = lo - 1
-        c.pos[new] = (laid["x"][-1], laid["z"][-1])
+        c.pos[new] = laid["p"][-1]
         c.new_pos[new] = c.pos[new]
         c.vel[new] = 0.0
         c.s[new] = laid["s"][-1]
@@ -496,8 +521,8 @@ class _Lay:
         lo, hi = c.lo, c.hi
         c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
         c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
-        c.vel[hi] = (vs_new, 0.0)
         self.x_ship, self.vc = x_new, vc_new
+        c.vel[hi] = self.ship_velocity(vs_new)
         self.s_paid += vc_new * dt
         c.s[hi] = self.s_paid
 
@@ -517,7 +542,7 @@ class _Lay:
             a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
             va = c.vel[hi - 1].copy()
             chord = b - a
-            v_exit = np.array([self.ctl.speed, 0.0]) - self.vc * chord / math.hypot(*chord)
+            v_exit = self.ship_velocity(self.ctl.speed) - self.vc * chord / float(np.linalg.norm(chord))
             f = (nxt - s_last) / (self.s_paid - s_last)
             for arr in (c.pos, c.vel, c.s, c.point, c.rep):
                 arr[hi + 1] = arr[hi]
@@ -543,20 +568,21 @@ class _Lay:
         touchdown behind for good once the cable bridges a hollow while the rest of it rests on the
         seabed further on.
         """
-        c, seabed = self.c, self.seabed
+        c, track = self.c, self.track
         rows = slice(c.lo + 2, c.hi)           # a seabed rising under the cable holds it up
-        zb = seabed.z(c.pos[rows, 0])
-        under = c.pos[rows, 1] < zb
-        c.pos[rows, 1] = np.where(under, zb, c.pos[rows, 1])
-        c.vel[rows, 1] = np.where(under, np.maximum(c.vel[rows, 1], 0.0), c.vel[rows, 1])
+        zb = track.zb(c.pos[rows, :-1])
+        under = c.pos[rows, -1] < zb
+        c.pos[rows, -1] = np.where(under, zb, c.pos[rows, -1])
+        c.vel[rows, -1] = np.where(under, np.maximum(c.vel[rows, -1], 0.0), c.vel[rows, -1])
         first = self.landing_row(c.pos)
         arrived_slack = not c.active[c.lo]
         for k in range(c.lo + 1, first + 1):
-            zb = float(seabed.z(c.pos[k, 0]))
-            c.pos[k, 1] = max(c.pos[k, 1], zb) if k < first else zb
+            zb = float(track.zb(c.pos[k, :-1]))
+            c.pos[k, -1] = max(c.pos[k, -1], zb) if k < first else zb
             c.vel[k] = 0.0
-            for key, val in (("x", c.pos[k, 0]), ("z", c.pos[k, 1]), ("s", c.s[k]), ("time", t)):
-                self.laid[key].append(float(val))
+            self.laid["p"].append(c.pos[k].copy())
+            self.laid["s"].append(float(c.s[k]))
+            self.laid["time"].append(float(t))
             if c.rep[k] >= 0:
                 self.rep_state[c.rep[k]] = 2
                 self.rep_landed[c.rep[k]] = c.pos[k]
@@ -574,7 +600,7 @@ class _Lay:
         """
         c = self.c
         rows = pos[c.lo + 1:c.hi - 1]
-        on = np.flatnonzero(rows[:, 1] <= self.seabed.z(rows[:, 0]) + 1e-9)
+        on = np.flatnonzero(rows[:, -1] <= self.track.zb(rows[:, :-1]) + 1e-9)
         return c.lo + 1 + int(on[-1]) if on.size else c.lo
 
     def trial_bottom_tension(self) -> float:
@@ -589,11 +615,11 @@ class _Lay:
         if lo > c.lo:
             if not c.active[c.lo]:
                 return 0.0          # arrived slack: the new bottom segment starts slack (touchdowns)
-            pos[lo, 1] = float(self.seabed.z(pos[lo, 0]))
-        f = self.touchdown(pos, lo)[3]
+            pos[lo, -1] = float(self.track.zb(pos[lo, :-1]))
+        f = self.touchdown(pos, lo)[2]
         return _bottom_tension(c, self.par.props, pos, lo, f)
 
-    def touchdown(self, pos: np.ndarray | None = None, lo: int | None = None) -> tuple[float, float, float, float]:
+    def touchdown(self, pos: np.ndarray | None = None, lo: int | None = None) -> tuple[np.ndarray, float, float]:
         """The touchdown point between the touchdown node and the lowest free node.
 
         The clearance above the seabed of the three lowest free nodes, as a function of the arc
@@ -611,14 +637,14 @@ class _Lay:
 
         Returns
         -------
-        x, z : float
+        p : (dim,) array
             Touchdown point (on the bottom segment's chord). [m]
         s : float
             Its material coordinate. [m]
         f : float
             Its fraction of the bottom segment from the touchdown node. [-]
         """
-        c, seabed = self.c, self.seabed
+        c, track = self.c, self.track
         pos = c.pos if pos is None else pos
         lo = c.lo if lo is None else lo
         n_free = min(c.hi - lo - 1, 3)
@@ -626,7 +652,7 @@ class _Lay:
         f = 0.0
         if n_free >= 2:
             ss = c.s[lo + 1:lo + 1 + n_free] - c.s[lo + 1]
-            hh = pos[lo + 1:lo + 1 + n_free, 1] - seabed.z(pos[lo + 1:lo + 1 + n_free, 0])
+            hh = pos[lo + 1:lo + 1 + n_free, -1] - track.zb(pos[lo + 1:lo + 1 + n_free, :-1])
             u_lo = s_lo - c.s[lo + 1]
             b1 = (hh[1] - hh[0]) / ss[1]
             curv = 0.0
@@ -648,18 +674,19 @@ class _Lay:
             u = min(max(u, u_lo), 0.0)
             f = 1.0 - u / u_lo if u_lo < 0.0 else 0.0
         p = pos[lo] + f * (pos[lo + 1] - pos[lo])
-        return float(p[0]), float(p[1]), float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
+        return p, float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
 
     def geometry(self):
-        """Touchdown x, depth there and cot of the chord angle, for the payout control."""
+        """The seabed's slope along the heading at the touchdown, the depth there and the cot of the chord's
+        angle, for the payout control."""
         c = self.c
-        x_td, z_td, _, _ = self.touchdown()
-        chord = c.pos[c.hi] - (x_td, z_td)
-        return x_td, -z_td, chord[0] / max(chord[1], 1e-9)
+        p, _, _ = self.touchdown()
+        chord = c.pos[c.hi] - p
+        return self.slope_at(p[:-1]), -float(p[-1]), float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9)
 
     def repeater_positions(self) -> np.ndarray:
         c = self.c
-        xz = np.full((len(self.reps), 2), np.nan)
+        xz = np.full((len(self.reps), self.track.dim), np.nan)
         for r in range(len(self.reps)):
             if self.rep_state[r] == 2:
                 xz[r] = self.rep_landed[r]
@@ -670,11 +697,11 @@ class _Lay:
 
     def slack(self, t: float, window: float) -> float:
         """Laid length over seabed distance minus one, over the nodes landed in the last ``window`` s."""
-        lx, ls, lt = self.laid["x"], self.laid["s"], self.laid["time"]
+        lp, ls, lt = self.laid["p"], self.laid["s"], self.laid["time"]
         k0 = int(np.searchsorted(lt, max(t - window, 0.0), side="right"))   # landed during the run
         if len(lt) - k0 < 3:
             return np.nan
-        run = float(self.seabed.arc(lx[-1]) - self.seabed.arc(lx[k0]))
+        run = self.track.run(lp[k0:])
         return (ls[-1] - ls[k0]) / run - 1.0 if run > 0 else np.nan
 
 
@@ -682,7 +709,7 @@ _SERIES = ("ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "b
            "touchdown_x", "touchdown_z", "layback", "slack", "suspended_length", "laid_length")
 
 
-def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, duration: float, *,
+def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: float, *,
              output_interval: float = 1.0, steps_per_segment: float = 4.0, max_time_step: float = 1.0,
              initial_angle: float | None = None, slack_window: float = 60.0, tol: float = 1e-9,
              max_iter: int = 50, progress=None) -> LayRun:
@@ -694,8 +721,9 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
         Cable and water data.
     ship, payout
         Ship motion and payout control (see :mod:`seacable.laying.inputs`).
-    seabed
-        Seabed elevation along the track.
+    track
+        The ship's track and the seabed: :class:`~seacable.laying.track.Track2D` (paper 001's plane) or
+        :class:`~seacable.laying.track.Track3D` (a route).
     duration, output_interval
         Simulated time and the interval of the stored states. [s]
     steps_per_segment
@@ -722,18 +750,20 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
         When a step fails after ``6`` halvings, with the time and the residual.
     """
     wall0 = _time.perf_counter()
-    lay = _Lay(par, ship, payout, seabed, initial_angle)
+    lay = _Lay(par, ship, payout, track, initial_angle)
     c, ctl, props = lay.c, lay.ctl, par.props
-    current = np.column_stack([par.current_speeds, np.zeros_like(par.current_speeds)])   # (along x, vertical)
-    kernel_args = (props, par.current_depths, current, par.water_density, tol, max_iter)
-    out_t, series, snaps, rep_out = [], {k: [] for k in _SERIES}, [], []
+    kernel_args = (props, par.current_depths, par.current_velocity, par.water_density, tol, max_iter)
+    out_t, series, snaps, rep_out, points = [], {k: [] for k in _SERIES}, [], [], []
 
     def record(t: float) -> None:
-        x_td, z_td, s_td, f_td = lay.touchdown()
+        p_td, s_td, f_td = lay.touchdown()
         top, bottom, angle = _end_tensions(c, props, f_td)
         out_t.append(t)
-        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), x_td,
-                  z_td, lay.x_ship - x_td, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
+        ship_p = c.pos[c.hi]
+        layback = float((ship_p[:-1] - p_td[:-1]) @ track.direction(lay.x_ship))
+        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), p_td[0],
+                  p_td[-1], layback, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
+        points.append((ship_p.copy(), p_td.copy()))
         for k, val in zip(_SERIES, values):
             series[k].append(float(val))
         snaps.append((c.pos[c.lo:c.hi + 1].copy(), (c.T[c.lo:c.hi] * c.active[c.lo:c.hi]).copy()))
@@ -749,7 +779,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
     try:
         while next_out <= n_out:
             t_out = min(next_out * output_interval, duration)
-            _, bottom, _ = _end_tensions(c, props, lay.touchdown()[3])
+            _, bottom, _ = _end_tensions(c, props, lay.touchdown()[2])
             in_water = bool(np.any(lay.rep_state == 1))
             # equal steps to the next output, none longer than l / (n V): a sliver of a step to meet the output
             # time would report its own tensions, those of an impulse (the momentum of a node that has just
@@ -809,16 +839,15 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, seabed: Seabed2D, dur
     except KeyboardInterrupt:
         interrupted = True
     n_max = max(len(p) for p, _ in snaps)
-    x = np.full((len(snaps), n_max), np.nan)
-    z = np.full((len(snaps), n_max), np.nan)
+    pos = np.full((len(snaps), n_max, track.dim), np.nan)
     ten = np.full((len(snaps), n_max - 1), np.nan)
     for k, (p, tension) in enumerate(snaps):
-        x[k, :len(p)] = p[:, 0]
-        z[k, :len(p)] = p[:, 1]
+        pos[k, :len(p)] = p
         ten[k, :len(tension)] = tension
-    return LayRun(time=np.array(out_t), series={k: np.array(v) for k, v in series.items()}, x=x, z=z,
+    return LayRun(time=np.array(out_t), series={k: np.array(v) for k, v in series.items()}, pos=pos,
                   tension=ten, laid={k: np.array(v) for k, v in lay.laid.items()},
-                  repeater_xz=np.array(rep_out).reshape(len(out_t), len(lay.reps), 2), steps=steps,
+                  ship=np.array([a for a, _ in points]), touchdown=np.array([b for _, b in points]),
+                  repeater_pos=np.array(rep_out).reshape(len(out_t), len(lay.reps), track.dim), steps=steps,
                   iterations=iterations, halvings=halvings, lifts=lifts, wall_time=_time.perf_counter() - wall0,
                   interrupted=interrupted, stop_reason=stop_reason)
 

@@ -1,0 +1,80 @@
+"""Where the laying ship goes and the seabed under it, for the time loop in 2-D or 3-D.
+
+The time loop (:mod:`seacable.laying.solver`) works with node positions of ``dim`` coordinates, the
+last one up. A track gives it the ship's water entry at a distance run ``d`` (its KP in 3-D), the
+ship's horizontal direction there, and the seabed: its elevation and gradient at horizontal points
+and the distance along it between laid points.
+
+``Track2D``: paper 001's vertical plane, x along the track (the distance run is x), the seabed a
+profile (:class:`~seacable.laying.inputs.Seabed2D`). ``Track3D``: a route
+(:class:`~seacable.laying.route.RouteGeometry`) over a seabed map
+(:class:`~seacable.laying.bathymetry.SeabedMap`): the ship runs along the route's legs and turns at
+the waypoints.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["Track2D", "Track3D"]
+
+
+class Track2D:
+    """Paper 001's plane: positions (x, z), the ship on z = 0 moving towards +x."""
+
+    dim = 2
+
+    def __init__(self, seabed):
+        self.seabed = seabed
+
+    def point(self, d: float) -> np.ndarray:
+        return np.array([d, 0.0])
+
+    def direction(self, d: float) -> np.ndarray:
+        return np.array([1.0])
+
+    def zb(self, ph) -> np.ndarray:
+        """Seabed elevation under horizontal points ``ph`` (shape (..., 1)). [m]"""
+        return self.seabed.z(np.asarray(ph, float)[..., 0])
+
+    def gradient(self, ph) -> np.ndarray:
+        """Seabed gradient at a horizontal point, shape (1,). [-]"""
+        return np.array([self.seabed.slope(float(ph[0]))])
+
+    def run(self, points) -> float:
+        """Distance along the seabed from the first to the last of laid points (dim columns). [m]"""
+        return float(self.seabed.arc(points[-1][0]) - self.seabed.arc(points[0][0]))
+
+
+class Track3D:
+    """A route over a seabed map: positions (x, y, z); the ship follows the route's legs at z = 0.
+
+    ``gradient`` is the central difference of the depth over ``delta`` either side (1 m), and ``run`` the
+    length of the laid cable's polyline of points on the seabed.
+    """
+
+    dim = 3
+
+    def __init__(self, route, seabed, delta: float = 1.0):
+        self.route, self.seabed, self.delta = route, seabed, delta
+
+    def point(self, d: float) -> np.ndarray:
+        x, y = self.route.point(d)
+        return np.array([x, y, 0.0])
+
+    def direction(self, d: float) -> np.ndarray:
+        h = float(self.route.heading(d))
+        return np.array([np.cos(h), np.sin(h)])
+
+    def zb(self, ph) -> np.ndarray:
+        return -self.seabed.depth(np.asarray(ph, float))
+
+    def gradient(self, ph) -> np.ndarray:
+        p = np.asarray(ph, float)
+        e = self.delta * np.eye(2)
+        z = self.zb(np.stack([p + e[0], p - e[0], p + e[1], p - e[1]]))
+        return np.array([z[0] - z[1], z[2] - z[3]]) / (2.0 * self.delta)
+
+    def run(self, points) -> float:
+        p = np.asarray(points, float)
+        return float(np.sum(np.sqrt(np.sum(np.diff(p, axis=0) ** 2, axis=1))))
