@@ -26,32 +26,40 @@ from pydantic import Field, model_validator
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest
 from .environment import Environment
 from .errors import InputError
-from .line import Lifting, Line, LineType
-from .statics.towed import TangentialDragForm
 from .laying.bathymetry import BathymetryGrid
-from .laying.inputs import Bathymetry, LayTarget, Payout, PayoutBottomTension, PayoutSlack, PlanShip, ShipMotion
+from .laying.inputs import (
+    Bathymetry,
+    LayTarget,
+    Payout,
+    PayoutBottomTension,
+    PayoutSlack,
+    PlanShip,
+    ShipMotion,
+)
 from .laying.route import Route
+from .line import Lifting, Line, LineType
 from .mooring.motion import Motion
+from .statics.towed import TangentialDragForm
 from .towed.vessel import VesselPath
 from .towline.barge import Barge
 
 __all__ = [
-    "StaticAnalysis",
-    "PushoverAnalysis",
-    "ModalAnalysis",
-    "TowedSteadyAnalysis",
-    "TowedBody",
-    "LayingTheoryAnalysis",
-    "LayingDynamicAnalysis",
-    "LayPlanAnalysis",
-    "VerticalModesAnalysis",
-    "SeabedContact",
-    "MooringStaticAnalysis",
-    "MooringPushoverAnalysis",
-    "MooringDynamicAnalysis",
-    "TowlineDynamicAnalysis",
     "Analysis",
     "Case",
+    "LayPlanAnalysis",
+    "LayingDynamicAnalysis",
+    "LayingTheoryAnalysis",
+    "ModalAnalysis",
+    "MooringDynamicAnalysis",
+    "MooringPushoverAnalysis",
+    "MooringStaticAnalysis",
+    "PushoverAnalysis",
+    "SeabedContact",
+    "StaticAnalysis",
+    "TowedBody",
+    "TowedSteadyAnalysis",
+    "TowlineDynamicAnalysis",
+    "VerticalModesAnalysis",
 ]
 
 _XZ = tuple[float, float]
@@ -327,11 +335,15 @@ class LayingTheoryAnalysis(Model):
 
 
 class LayingDynamicAnalysis(Model):
-    """Time-domain laying from a moving ship: paper 001's 2-D lumped-mass model with payout.
+    """Time-domain laying from a moving ship: paper 001's lumped-mass model with payout, in 2-D or along a route
+    in 3-D.
 
-    x runs along the ship's track, z up from the sea surface. The line is the cable on board, end A
-    first: the run starts with cable on the seabed behind the touchdown (as long as the suspended
-    part) and ``line.attachments`` are the repeaters (point masses) at their arc lengths.
+    Without a ``route``: paper 001's vertical plane, x along the ship's track, z up from the sea surface
+    (the current's component along x). With a ``route``: the same model in x, y, z, the ship following the
+    route's legs from KP ``ship.start_x``, the seabed from ``bathymetry`` (by KP) or ``bathymetry_grid``,
+    the current with its heading. The line is the cable on board, end A first: the run starts with cable
+    on the seabed behind the touchdown (as long as the suspended part) and ``line.attachments`` are the
+    repeaters (point masses) at their arc lengths.
     """
 
     type: Literal["laying_dynamic"] = "laying_dynamic"
@@ -339,7 +351,10 @@ class LayingDynamicAnalysis(Model):
     payout: Payout = Field(default_factory=PayoutSlack,
                            description="Payout control: 'rate', 'slack' or 'bottom_tension'.")
     bathymetry: Bathymetry | None = Field(
-        None, description="Depth along the track; default environment.depth and seabed.slope.")
+        None, description="Depth along the track (by KP along a route); default environment.depth and seabed.slope.")
+    route: Route | None = Field(None, description="A route to lay along, in 3-D (waypoints in x, y or "
+                                                  "latitude, longitude); default paper 001's 2-D plane.")
+    bathymetry_grid: BathymetryGrid | None = Field(None, description="Depth on a grid (with a route).")
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     segment_length: quantity("m", gt=0, fix="use about 1/50 of the water depth or less.") = Field(
         1.0, description="Length of the cable between nodes. [m]")
@@ -360,6 +375,9 @@ class LayingDynamicAnalysis(Model):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
+        if self.bathymetry_grid is not None and (self.route is None or self.bathymetry is not None):
+            raise ValueError("bathymetry_grid needs a route (it is a map in x, y) and takes the place of "
+                             "'bathymetry'. Suggested fix: add 'route' with the waypoints, and give the depth once.")
         if isinstance(self.payout, PayoutBottomTension) and not self.extensible:
             raise ValueError("payout 'bottom_tension' needs 'extensible: true' and an axial_stiffness: for an "
                              "inextensible cable every bottom tension gives the same straight steady lay "
@@ -552,7 +570,7 @@ ANALYSES = (StaticAnalysis, PushoverAnalysis, ModalAnalysis, TowedSteadyAnalysis
             LayingTheoryAnalysis, LayingDynamicAnalysis, LayPlanAnalysis,
             VerticalModesAnalysis, MooringStaticAnalysis, MooringPushoverAnalysis, MooringDynamicAnalysis,
             TowlineDynamicAnalysis)
-Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]
+Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
@@ -645,7 +663,7 @@ class Case(Model):
         return data
 
     @model_validator(mode="after")
-    def _needs(self) -> "Case":
+    def _needs(self) -> Case:
         a = self.analysis
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or (
@@ -658,9 +676,13 @@ class Case(Model):
                                  f"attachments, got {len(self.line.segments)} segments and "
                                  f"{len(self.line.attachments)} attachments.")
         if isinstance(a, LayingDynamicAnalysis):
-            if a.bathymetry is None and self.environment.depth is None:
+            if a.bathymetry is None and a.bathymetry_grid is None and self.environment.depth is None:
                 raise ValueError("analysis 'laying_dynamic' needs environment.depth (m) or a bathymetry "
                                  "table. Suggested fix: add 'depth:' under 'environment'.")
+            if a.route is not None and self.environment.seabed.slope != 0.0:
+                raise ValueError(f"environment.seabed.slope {self.environment.seabed.slope:g} rad: along a route the "
+                                 "seabed is the bathymetry (by KP or a grid). Suggested fix: give the depths in "
+                                 "analysis.bathymetry, and leave slope out.")
             if a.extensible and any(seg.line_type.axial_stiffness is None for seg in self.line.segments):
                 raise ValueError("'extensible: true' needs an axial_stiffness (N) on every line type.")
         if isinstance(a, LayPlanAnalysis) and a.bathymetry is None and a.bathymetry_grid is None \

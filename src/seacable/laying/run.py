@@ -13,10 +13,11 @@ from ..case import Case, LayingDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from ..statics.laying import laying_angle
+from .bathymetry import seabed_map
 from .inputs import PayoutRate, PayoutSlack, Seabed2D, sinking_weights
 from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
-from .track import Track2D
 from .solver import _MIN_SPEED, LayParameters, Repeater, props_row, simulate
+from .track import Track2D, Track3D
 
 __all__ = ["LayingSetup", "lay_parameters", "lay_seabed", "prepare_laying_dynamic", "run_laying_dynamic"]
 
@@ -49,21 +50,36 @@ def lay_parameters(case: Case) -> LayParameters:
                       for i, p in enumerate(line.attachments))
     cur = env.current
     along = math.cos(cur.heading)
-    if abs(math.sin(cur.heading)) > 1e-6 and (cur.speed != 0.0 or cur.speeds is not None):
-        warnings.warn("laying_dynamic is 2-D: only the current component along the track (x) is used, "
-                      f"{along:.3g} of its speed.", SeacableWarning, stacklevel=3)
+    if a.route is None and abs(math.sin(cur.heading)) > 1e-6 and (cur.speed != 0.0 or cur.speeds is not None):
+        warnings.warn("laying_dynamic is 2-D without a route: only the current component along the track (x) is "
+                      f"used, {along:.3g} of its speed. Suggested fix: give analysis.route to lay in 3-D.",
+                      SeacableWarning, stacklevel=3)
     if cur.depths is None:
-        depths, speeds = np.zeros(1), np.array([cur.speed * along])
+        depths, speeds = np.zeros(1), np.array([cur.speed])
     else:
-        depths, speeds = np.asarray(cur.depths, float), np.asarray(cur.speeds, float) * along
-    velocity = np.column_stack([speeds, np.zeros_like(speeds)])          # (along x, vertical)
+        depths, speeds = np.asarray(cur.depths, float), np.asarray(cur.speeds, float)
+    if a.route is None:
+        velocity = np.column_stack([speeds * along, np.zeros_like(speeds)])               # (along x, vertical)
+    else:
+        velocity = np.column_stack([speeds * along, speeds * math.sin(cur.heading), np.zeros_like(speeds)])
     return LayParameters(props=np.array(rows), type_ends=np.cumsum([seg.length for seg in line.segments]),
                          segment_length=a.segment_length, cable_length=line.length, repeaters=repeaters,
                          water_density=rho, current_depths=depths, current_velocity=velocity)
 
 
+def lay_track(case: Case) -> Track2D | Track3D:
+    """Where the ship goes and the seabed: 2-D (:func:`lay_seabed`) or, with a route, 3-D over the bathymetry
+    by KP, the grid, or a flat environment.depth."""
+    a: LayingDynamicAnalysis = case.analysis
+    if a.route is None:
+        return Track2D(lay_seabed(case))
+    route = a.route.geometry()
+    depth = case.environment.depth if case.environment.depth is not None else math.nan
+    return Track3D(route, seabed_map(route, a.bathymetry, a.bathymetry_grid, depth))
+
+
 def lay_seabed(case: Case) -> Seabed2D:
-    """The seabed along the track: the bathymetry table, or the environment's depth and slope."""
+    """The seabed along the 2-D track: the bathymetry table, or the environment's depth and slope."""
     a: LayingDynamicAnalysis = case.analysis
     if a.bathymetry is not None:
         x, h = a.bathymetry.table()
@@ -78,7 +94,7 @@ class LayingSetup:
     """What the time loop of a ``laying_dynamic`` case needs, checked (see :func:`prepare_laying_dynamic`)."""
 
     parameters: LayParameters
-    seabed: Seabed2D
+    track: Track2D | Track3D
     steps: float            # estimated time steps [1]
     stored_values: float    # estimated values kept for the result [1]
 
@@ -145,7 +161,7 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     a: LayingDynamicAnalysis = case.analysis
     _check_moving_ship(case)
     par = lay_parameters(case)
-    seabed = lay_seabed(case)
+    track = lay_track(case)
     # time steps: dt = l / (n max(V_s, V_c)), at most max_time_step (seacable.laying.solver.simulate)
     _, v_ship = _ship_speed_range(case)
     p = a.payout
@@ -160,8 +176,17 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     # suspended nodes: the straight lay over the deepest seabed at the largest speed (smallest angle),
     # twice that for the curvature under bottom tension, at most the whole cable
     x0, x1 = a.ship.start_x - par.cable_length, a.ship.start_x + v_ship * a.duration
-    xs = np.concatenate([[x0, x1], seabed.x[(seabed.x > x0) & (seabed.x < x1)]])
-    depth = max(float(np.max(-seabed.z(xs))), 0.0)
+    if isinstance(track, Track2D):
+        seabed = track.seabed
+        xs = np.concatenate([[x0, x1], seabed.x[(seabed.x > x0) & (seabed.x < x1)]])
+        depth = max(float(np.max(-seabed.z(xs))), 0.0)
+    else:
+        # along the ship's path, every segment length and at the waypoints; a grid must cover it
+        route = track.route
+        kp = np.unique(np.concatenate([np.arange(a.ship.start_x, x1, a.segment_length), [x1],
+                                       route.kp[(route.kp > a.ship.start_x) & (route.kp < x1)]]))
+        track.seabed.check_covers(route.point(kp), "ship's path", kp)
+        depth = max(float(np.max(track.seabed.depth(route.point(kp)))), 0.0)
     row = par.props[0]
     alpha = float(laying_angle(max(v_ship, _MIN_SPEED), row[P_WEIGHT], row[P_DIAMETER], row[P_CDN],
                                par.water_density))
@@ -173,7 +198,7 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     check_run_size(f"laying_dynamic case {case.name!r}", steps=steps, stored_values=stored,
                    fix="shorten analysis.duration, lengthen analysis.output_interval or analysis.segment_length, "
                        "or lower analysis.steps_per_segment")
-    return LayingSetup(parameters=par, seabed=seabed, steps=steps, stored_values=stored)
+    return LayingSetup(parameters=par, track=track, steps=steps, stored_values=stored)
 
 
 def run_laying_dynamic(case: Case, progress=None):
@@ -188,27 +213,29 @@ def run_laying_dynamic(case: Case, progress=None):
     """
     a: LayingDynamicAnalysis = case.analysis
     setup = prepare_laying_dynamic(case)
-    par, seabed = setup.parameters, setup.seabed
-    res = simulate(par, a.ship, a.payout, Track2D(seabed), a.duration, output_interval=a.output_interval,
+    par, track = setup.parameters, setup.track
+    res = simulate(par, a.ship, a.payout, track, a.duration, output_interval=a.output_interval,
                    steps_per_segment=a.steps_per_segment, max_time_step=a.max_time_step,
                    initial_angle=a.initial_angle, slack_window=a.slack_window, tol=a.tolerance,
                    max_iter=a.max_iterations, progress=progress)
     s = res.series
     t1 = "time"
+    three = track.dim == 3
     data = {
-        "x": var(("time", "node"), res.pos[..., 0], "m", "node x along the track"),
+        "x": var(("time", "node"), res.pos[..., 0], "m", "node x" + ("" if three else " along the track")),
         "z": var(("time", "node"), res.pos[..., -1], "m", "node elevation (z up, 0 at the sea surface)"),
         "tension": var(("time", "segment"), res.tension, "N", "segment tension (0: slack)"),
-        "ship_x": var(t1, s["ship_x"], "m", "water-entry point x"),
+        "ship_x": var(t1, res.ship[:, 0], "m", "water-entry point x"),
         "ship_speed": var(t1, s["ship_speed"], "m s-1", "ship speed"),
         "payout_speed": var(t1, s["payout_speed"], "m s-1", "payout speed"),
         "paid_out": var(t1, s["paid_out"], "m", "cable paid out since t = 0"),
         "top_tension": var(t1, s["top_tension"], "N", "tension at the water entry"),
         "bottom_tension": var(t1, s["bottom_tension"], "N", "tension at the touchdown"),
         "entry_angle": var(t1, s["entry_angle"], "degree", "cable angle to the sea surface at the water entry"),
-        "touchdown_x": var(t1, s["touchdown_x"], "m", "touchdown x (interpolated between nodes)"),
-        "touchdown_z": var(t1, s["touchdown_z"], "m", "touchdown elevation"),
-        "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"),
+        "touchdown_x": var(t1, res.touchdown[:, 0], "m", "touchdown x (interpolated between nodes)"),
+        "touchdown_z": var(t1, res.touchdown[:, -1], "m", "touchdown elevation"),
+        "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"
+                       + (" along the ship's heading" if three else "")),
         "slack": var(t1, s["slack"], "1", "laid length / seabed distance - 1 over the slack window "
                      "(NaN until 3 nodes have landed in the window)"),
         "suspended_length": var(t1, s["suspended_length"], "m", "cable length between touchdown and water entry"),
@@ -218,14 +245,39 @@ def run_laying_dynamic(case: Case, progress=None):
         "laid_s": var("laid", res.laid["s"], "m", "arc length of the laid nodes from end A"),
         "laid_time": var("laid", res.laid["time"], "s", "time of touchdown (0: on the seabed at the start)"),
     }
-    lo = min(float(np.nanmin(res.pos[..., 0])), float(res.laid["p"][0, 0]))
-    hi = float(np.nanmax(s["ship_x"]))
-    inner = seabed.x[(seabed.x > lo) & (seabed.x < hi)]
-    sx = np.concatenate([[lo], inner, [hi]])
-    data["seabed_x"] = var("seabed_point", sx, "m", "seabed profile x")
-    data["seabed_z"] = var("seabed_point", seabed.z(sx), "m", "seabed profile elevation")
+    if three:
+        route = track.route
+        td_kp, td_off = route.locate(res.touchdown[:, :2])
+        laid_kp, laid_off = route.locate(res.laid["p"][:, :2])
+        data.update({
+            "y": var(("time", "node"), res.pos[..., 1], "m", "node y"),
+            "ship_y": var(t1, res.ship[:, 1], "m", "water-entry point y"),
+            "ship_kp": var(t1, s["ship_x"], "m", "ship KP (distance run along the route)"),
+            "touchdown_y": var(t1, res.touchdown[:, 1], "m", "touchdown y"),
+            "touchdown_kp": var(t1, td_kp, "m", "touchdown KP"),
+            "touchdown_offset": var(t1, td_off, "m", "touchdown offset from the route (+ to port)"),
+            "laid_y": var("laid", res.laid["p"][:, 1], "m", "y of the laid nodes"),
+            "laid_kp": var("laid", laid_kp, "m", "KP of the laid nodes"),
+            "laid_offset": var("laid", laid_off, "m", "offset of the laid nodes from the route (+ to port)"),
+            "waypoint_x": var("waypoint", route.xy[:, 0], "m", "route waypoint x"),
+            "waypoint_y": var("waypoint", route.xy[:, 1], "m", "route waypoint y"),
+            "waypoint_kp": var("waypoint", route.kp, "m", "KP of the route waypoint"),
+        })
+        kp = np.linspace(min(float(np.nanmin(laid_kp)), float(s["ship_x"][0])), float(np.nanmax(s["ship_x"])), 200)
+        data["seabed_kp"] = var("seabed_point", kp, "m", "seabed profile KP (along the route)")
+        data["seabed_z"] = var("seabed_point", track.zb(route.point(kp)), "m", "seabed elevation on the route")
+    else:
+        seabed = track.seabed
+        lo = min(float(np.nanmin(res.pos[..., 0])), float(res.laid["p"][0, 0]))
+        hi = float(np.nanmax(s["ship_x"]))
+        inner = seabed.x[(seabed.x > lo) & (seabed.x < hi)]
+        sx = np.concatenate([[lo], inner, [hi]])
+        data["seabed_x"] = var("seabed_point", sx, "m", "seabed profile x")
+        data["seabed_z"] = var("seabed_point", seabed.z(sx), "m", "seabed profile elevation")
     if par.repeaters:
         data["repeater_x"] = var(("time", "repeater"), res.repeater_pos[..., 0], "m", "repeater x")
+        if three:
+            data["repeater_y"] = var(("time", "repeater"), res.repeater_pos[..., 1], "m", "repeater y")
         data["repeater_z"] = var(("time", "repeater"), res.repeater_pos[..., -1], "m", "repeater elevation")
         data["repeater_s"] = var("repeater", np.array([r.s for r in sorted(par.repeaters, key=lambda r: r.s)]),
                                  "m", "repeater arc length from end A")
@@ -235,8 +287,9 @@ def run_laying_dynamic(case: Case, progress=None):
                 "newton_iterations": res.iterations, "halved_steps": res.halvings, "lifted_nodes": res.lifts,
                 "max_nodes": int(res.pos.shape[1]), "wall_time_s": round(res.wall_time, 4),
                 "interrupted": int(res.interrupted), "stop_reason": res.stop_reason,
+                "dimensions": track.dim,
                 "scheme": "lumped mass, backward Euler with implicit drag, Newton on positions and tensions "
-                          "(3x3 block tri-diagonal), slack segments by an active set"}
+                          f"({track.dim + 1}x{track.dim + 1} block tri-diagonal), slack segments by an active set"}
     ds = make_dataset(data, coords, analysis="laying_dynamic", case=case, references=REFERENCES,
                       settings=settings)
     ds.attrs["interrupted"] = int(res.interrupted)
