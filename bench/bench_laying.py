@@ -1,7 +1,9 @@
 """Speed of the cable-laying dynamics (the ``laying_dynamic`` analysis, issue 4).
 
 Run: ``python bench/bench_laying.py`` (about 30 s), ``--repeat N`` (best of N counted runs per
-case, default 3), ``--duration T`` (simulated time per run, default 1000 s).
+case, default 3), ``--duration T`` (simulated time per run, default 1000 s); ``--route`` adds issue 22's
+3-D lay along a 100 km route in 1000 m of water with 5 m segments (``--route-duration``, default 3600 s of
+it; target at least 200 x real time), see :func:`route_case`.
 
 The issue's measurement: the wall time to lay 1 km of cable in 100 m of water at 1 m/s ship speed
 with 1 m segments; target: faster than real time by a factor of at least 100 on this machine. The
@@ -151,6 +153,9 @@ def main(argv=None):
                     help="counted runs per case, the best is reported (default 3)")
     ap.add_argument("--duration", type=float, default=DURATION, metavar="T",
                     help=f"simulated time per run [s] (default {DURATION:g})")
+    ap.add_argument("--route", action="store_true", help="also the 3-D lay along a 100 km route (issue 22)")
+    ap.add_argument("--route-duration", type=float, default=3600.0, metavar="T",
+                    help="simulated time of the 3-D lay [s] (default 3600)")
     args = ap.parse_args(argv)
     if args.repeat < 1:
         ap.error(f"--repeat must be >= 1, got {args.repeat}")
@@ -171,7 +176,50 @@ def main(argv=None):
           f"{w['first'] - w['later']:.2f} s (on-disk cache {state})\n")
     rows = [bench(label, ds_, v, args.duration, args.repeat) for label, ds_, v in CASES]
     print_table(rows, args.repeat)
+    if args.route:
+        route_bench(args.route_duration, args.repeat)
     print(f"total benchmark time {time.perf_counter() - t_start:.0f} s")
+
+
+ROUTE_TARGET = 200.0    # issue 22: a 100 km route at 1000 m, 5 m segments, in 3-D: >= 200 x real time
+
+
+def route_case(duration):
+    """Issue 22's 3-D lay: a telecom cable (35 mm, 4.1 N/m in water) along a 100 km route of two legs (an
+    alter-course of 22 degrees at KP 50 km), 1000 m of water, 0.2 m/s of current at 57 degrees to the first
+    leg, 3 % slack, 1.5 m/s, 5 m segments (about 660 suspended nodes), output every 100 s."""
+    import seacable
+    from seacable.laying.route import Route
+
+    cable = seacable.LineType(diameter=0.035, mass_per_length=1.4, axial_stiffness=3e7, drag_normal=1.2,
+                              drag_tangential=0.01, added_mass_normal=1.0, name="tel35")
+    return seacable.Case(
+        name="bench_lay_route", line=seacable.Line.single(cable, 200e3),
+        environment=seacable.Environment(depth=1000.0, current=seacable.Current(speed=0.2, heading=1.0)),
+        analysis=seacable.LayingDynamicAnalysis(
+            ship=seacable.ShipMotion(speed=1.5), payout=seacable.PayoutSlack(slack=0.03), duration=duration,
+            segment_length=5.0, output_interval=100.0,
+            route=Route(waypoints=((-10e3, 0.0), (50e3, 0.0), (96e3, 18.6e3)), kp_start=-10e3)))
+
+
+def route_bench(duration, repeat):
+    """The 3-D lay: ``duration`` s of it (the whole 100 km at 1.5 m/s is 18.5 h), best of ``repeat``."""
+    import seacable
+
+    seacable.run(route_case(100.0))                   # warm-up: compile or load the 3-D kernel
+    runs = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        ds = seacable.run(route_case(duration))
+        runs.append((time.perf_counter() - t0, ds))
+    wall, ds = min(runs, key=lambda r: r[0])
+    st = json.loads(ds.attrs["settings"])
+    factor = duration / wall
+    print(f"\n3-D lay along a route (issue 22): 1000 m of water, 5 m segments, {st['max_nodes']} suspended nodes, "
+          f"{duration:g} s simulated (best of {repeat})")
+    print(f"  wall {wall:.2f} s (loop {st['wall_time_s']:.2f} s), {st['steps']} steps, {st['newton_iterations']} Newton "
+          f"iterations: {factor:.0f} x real time; target >= {ROUTE_TARGET:g} x: {'met' if factor >= ROUTE_TARGET else 'MISSED'}"
+          f" (the whole 100 km, {100e3 / 1.5 / 3600:.1f} h, would take about {100e3 / 1.5 / factor / 60:.0f} min)")
 
 
 if __name__ == "__main__":

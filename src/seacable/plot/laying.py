@@ -106,6 +106,32 @@ def _laying_dynamic(ds, plt):
     ax3.set(xlabel=_label(ds.time), ylabel="speed [m/s]")
     ax3.legend(fontsize=8)
     figs["tension"] = fig
+    if "laid_kp" in ds:                    # along a route, in 3-D
+        figs.update(_route_figures(ds, plt, idx, snaps, colours, t_unit))
+    return figs
+
+
+def _route_figures(ds, plt, idx, snaps, colours, t_unit):
+    """A 3-D lay along a route: the plan view, and the laid cable's offset from the route by KP."""
+    fig, ax = plt.subplots(figsize=(9, 6))
+    ax.plot(ds.waypoint_x, ds.waypoint_y, "k--", lw=0.8, marker="o", ms=3, label="route")
+    ax.plot(ds.ship_x, ds.ship_y, "C0-", lw=1.0, label="ship")
+    ax.plot(ds.laid_x, ds.laid_y, "-", color="sienna", lw=1.4, label="laid cable")
+    for i, t, c in zip(idx, snaps, colours):
+        x, y = _finite_xz(ds.x.values[i], ds.y.values[i])
+        ax.plot(x, y, "-", color=c, lw=1.0, label=f"suspended, t = {t:g} {t_unit}")
+    pad = 0.05 * max(float(np.ptp(np.r_[ds.ship_x, ds.laid_x])), float(np.ptp(np.r_[ds.ship_y, ds.laid_y])), 1.0)
+    ax.set(xlim=(float(np.nanmin(np.r_[ds.ship_x, ds.laid_x])) - pad, float(np.nanmax(np.r_[ds.ship_x, ds.laid_x])) + pad),
+           xlabel=_label(ds.laid_x), ylabel=_label(ds.laid_y), title="Plan view", aspect="equal")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    figs = {"plan": fig}
+    fig, ax = plt.subplots(figsize=(9, 3.5))
+    ax.plot(ds.laid_kp, ds.laid_offset, "-", color="sienna", label="laid cable")
+    ax.plot(ds.touchdown_kp, ds.touchdown_offset, ".", color="C1", ms=3, label="touchdown at the outputs")
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.set(xlabel="KP [m]", ylabel="offset, + to port [m]", title="Laid cable's offset from the route")
+    ax.legend(fontsize=7)
+    figs["offset"] = fig
     return figs
 
 
