@@ -35,6 +35,10 @@ CASES = {
         f"entry angle {float(ds.entry_angle[-1]):.3f} deg (paper 001 Table 1: 13.053), ship tension "
         f"{float(ds.top_tension[-20:].mean()):.1f} N (w h = 224.5 N), slack {float(ds.slack[-1]):.4f}; "
         f"{float(ds.laid_length[-1]):.0f} m laid"),
+    "lay_route_3d": lambda ds: (
+        f"3-D lay along a route: touchdown {float(ds.touchdown_offset.sel(time=200.0)):.1f} m off the route in the "
+        f"cross-current, the laid cable up to {float(ds.laid_offset.max()):.1f} m inside the alter-course; slack "
+        f"{float(ds.slack[-1]):.4f}, top tension {float(ds.top_tension[-1]):.1f} N"),
     "lay_plan_route": lambda ds: (
         f"lay table, {ds.kp.size} rows over {float(ds.kp[-1]) / 1e3:g} km: layback up to {float(ds.layback.max()):.0f} m, "
         f"touchdown up to {float(abs(ds.touchdown_offset).max()):.0f} m off the route in the cross-current, repeater "
