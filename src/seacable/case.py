@@ -29,12 +29,14 @@ from .errors import InputError
 from .laying.bathymetry import BathymetryGrid
 from .laying.inputs import (
     Bathymetry,
+    LayTableFile,
     LayTarget,
     Payout,
     PayoutBottomTension,
     PayoutSlack,
     PlanShip,
     ShipMotion,
+    read_lay_table,
 )
 from .laying.route import Route
 from .line import Lifting, Line, LineType
@@ -347,6 +349,8 @@ class LayingDynamicAnalysis(Model):
     """
 
     type: Literal["laying_dynamic"] = "laying_dynamic"
+    lay_table: LayTableFile | None = Field(
+        None, description="Follow a lay plan: the ship and payout speeds by time of a lay_plan's table (CSV).")
     ship: ShipMotion = Field(description="Ship speed (constant or a schedule) and repeater slow-downs.")
     payout: Payout = Field(default_factory=PayoutSlack,
                            description="Payout control: 'rate', 'slack' or 'bottom_tension'.")
@@ -369,6 +373,29 @@ class LayingDynamicAnalysis(Model):
     slack_window: quantity("s", gt=0) = Field(60.0, description="Time over which slack is measured. [s]")
     tolerance: quantity("-", gt=0, lt=1e-3) = Field(1e-9, description="Newton tolerance, relative. [-]")
     max_iterations: int = Field(50, ge=2, le=1000, description="Newton iterations per step.")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _follow_the_plan(cls, data):
+        """A lay table gives the ship (its speeds by time, from the table's first KP) and the payout (a rate by
+        time): the control mode that follows the plan."""
+        if not isinstance(data, dict) or not isinstance(data.get("lay_table"), dict):
+            return data
+        given = [k for k in ("ship", "payout") if data.get(k) is not None]
+        if given:
+            raise ValueError(f"lay_table gives the ship's and the payout's speeds; {' and '.join(given)} too. Suggested "
+                             f"fix: leave {' and '.join(given)} out, or the lay_table.")
+        file = data["lay_table"].get("file")
+        if not isinstance(file, str):
+            return data                    # the field's own validation says what is missing
+        try:
+            cols = read_lay_table(file)
+        except InputError as err:
+            raise ValueError(str(err)) from None
+        times = tuple(float(t - cols["time"][0]) for t in cols["time"])
+        return {**data, "ship": {"times": times, "speeds": tuple(map(float, cols["ship_speed"])),
+                                 "start_x": float(cols["kp"][0])},
+                "payout": {"type": "rate", "times": times, "speeds": tuple(map(float, cols["payout_speed"]))}}
 
     @model_validator(mode="after")
     def _check(self):

@@ -164,3 +164,28 @@ def test_cli_writes_the_lay_table_as_csv_and_the_figures(tmp_path):
     np.testing.assert_allclose(table["top_tension_N"], ds.top_tension.values, rtol=1e-5)
     assert (tmp_path / "plan_table.png").stat().st_size > 10_000
     assert (tmp_path / "plan_plan.png").stat().st_size > 10_000
+
+
+def test_following_a_lay_table_bad_input(tmp_path, capsys):
+    """A 3-D lay that follows a lay table: the table gives the ship and the payout, so giving them too is refused;
+    a table without the columns, or with a ship at rest, is refused with the file named."""
+    base = yaml.safe_load((EXAMPLE.parent / "lay_route_3d.yaml").read_text())
+    (tmp_path / "t.csv").write_text("kp [m],time [s],ship_speed [m s-1],payout_speed [m s-1]\n0,0,1.0,1.05\n"
+                                    "100,100,1.0,1.05\n")
+    (tmp_path / "bad.csv").write_text("kp,time,ship_speed\n0,0,1.0\n")
+    (tmp_path / "stop.csv").write_text("kp,time,ship_speed,payout_speed\n0,0,1.0,1.0\n10,10,0.0,0.0\n")
+    cases = [({"lay_table": {"file": "t.csv"}}, "lay_table gives the ship's and the payout's speeds; ship and payout"),
+             ({"lay_table": {"file": "bad.csv"}, "ship": None, "payout": None}, "payout_speed missing"),
+             ({"lay_table": {"file": "stop.csv"}, "ship": None, "payout": None}, "ship_speed in row 2 is 0 m/s")]
+    for edit, expected in cases:
+        data = {**base, "analysis": {**base["analysis"], **edit}}
+        data["analysis"] = {k: v for k, v in data["analysis"].items() if v is not None}
+        path = tmp_path / "case.yaml"
+        path.write_text(yaml.safe_dump(data))
+        assert main(["validate", str(path)]) == 2
+        err = capsys.readouterr().err
+        assert expected in err and "Traceback" not in err, err
+    data = {**base, "analysis": {k: v for k, v in base["analysis"].items() if k not in ("ship", "payout")}}
+    data["analysis"]["lay_table"] = {"file": "t.csv"}
+    (tmp_path / "case.yaml").write_text(yaml.safe_dump(data))
+    assert main(["validate", str(tmp_path / "case.yaml")]) == 0

@@ -66,7 +66,9 @@ def test_cross_current_turns_the_span_and_offsets_the_laid_cable():
     late = ds.time >= 1000.0
     assert float(ds.entry_angle.where(late).mean()) == pytest.approx(math.degrees(alpha), rel=1e-8)
     np.testing.assert_allclose(ds.touchdown_offset.where(late, drop=True), reach * math.sin(turn), atol=0.1)
-    np.testing.assert_allclose(ds.layback.where(late, drop=True), reach * math.cos(turn), atol=0.1)
+    np.testing.assert_allclose(ds.layback.where(late, drop=True), reach, atol=0.1)   # horizontal, in the turned plane
+    np.testing.assert_allclose(ds.touchdown_kp.where(late, drop=True), ds.ship_kp.where(late, drop=True)
+                               - reach * math.cos(turn), atol=0.1)
     recent = ds.laid_time >= 1000.0
     np.testing.assert_allclose(ds.laid_offset.where(recent, drop=True), reach * math.sin(turn), atol=0.2)
 
@@ -93,3 +95,47 @@ def test_route_grid_must_cover_the_ship_path(tmp_path):
     analysis = case.analysis.model_copy(update={"bathymetry_grid": sc.case.BathymetryGrid(file=str(tmp_path / "g.nc"))})
     with warnings.catch_warnings(), pytest.raises(sc.InputError, match="does not cover the ship's path at KP 5"):
         sc.check(case.model_copy(update={"analysis": analysis}))
+
+
+_COMMON = """
+line_types:
+  c: {diameter: 0.0225, mass_per_length: 0.867, weight_in_water: 4.49, drag_normal: 1.85, drag_tangential: 0.01,
+      added_mass_normal: 1.0}
+line: {line_type: c, length: 8000.0}
+environment: {water_density: 1030.0, current: {speed: 0.2, heading: 1.5708}}
+"""
+_ROUTE = """
+  route: {waypoints: [[-1000.0, 0.0], [600.0, 0.0], [4000.0, 1000.0]], kp_start: -1000.0}
+  bathymetry: {distance: [-1000, 200, 1200, 5000], depth: [100, 100, 160, 160]}
+"""
+
+
+def test_dynamic_lay_following_the_plan_lands_where_the_plan_says(tmp_path):
+    """The planner's lay table (an alter-course of 16 deg to port at KP 600, the seabed falling from 100 to 160 m,
+    a 0.2 m/s cross-current, 5 % slack) followed by the 3-D dynamic model (`lay_table`: the plan's ship and
+    payout speeds by time): once the turn and the slope's transients have passed (the last 600 s of 3600 s,
+    1.9 km beyond the turn), the touchdown, layback, entry angle and slack are the plan's. Tolerances: the
+    touchdown interpolated between 2 m nodes (0.2 m); the slack measured over 60 s of landed nodes (1e-3);
+    measured: touchdown KP 0.07 m, offset 0.16 m, layback 0.05 m, entry angle 4e-4 deg, slack 5e-5."""
+    from seacable.cli import main
+    from seacable.results import read_netcdf
+
+    (tmp_path / "plan.yaml").write_text("name: plan" + _COMMON + "analysis:\n  type: lay_plan" + _ROUTE
+                                        + "  ship: {speed: 1.0}\n  target: {slack: 0.05}\n  kp_step: 10.0\n"
+                                        "  kp_start: 0.0\n")
+    (tmp_path / "lay.yaml").write_text("name: lay" + _COMMON + "analysis:\n  type: laying_dynamic" + _ROUTE
+                                       + "  lay_table: {file: plan_lay_table.csv}\n  duration: 3600.0\n"
+                                       "  segment_length: 2.0\n  output_interval: 10.0\n")
+    assert main(["run", str(tmp_path / "plan.yaml"), "-o", str(tmp_path / "plan.nc"), "--no-plots"]) == 0
+    assert main(["run", str(tmp_path / "lay.yaml"), "-o", str(tmp_path / "lay.nc"), "--no-plots"]) == 0
+    plan, lay = read_netcdf(tmp_path / "plan.nc"), read_netcdf(tmp_path / "lay.nc")
+    late = lay.time.values >= 3000.0
+    kp = lay.ship_kp.values[late]
+
+    def planned(name):
+        return np.interp(kp, plan.kp.values, plan[name].values)
+
+    for name, tol in (("touchdown_kp", 0.2), ("touchdown_offset", 0.2), ("layback", 0.2), ("entry_angle", 1e-3),
+                      ("slack", 1e-3)):
+        np.testing.assert_allclose(lay[name].values[late], planned(name), rtol=0, atol=tol, err_msg=name)
+    np.testing.assert_allclose(lay.ship_speed.values[late], planned("ship_speed"), rtol=1e-12)

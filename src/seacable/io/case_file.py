@@ -164,7 +164,8 @@ def resolve_files(data, folder: Path) -> None:
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
         return
-    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "motion", "tug")]
+    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "lay_table", "motion",
+                                            "tug")]
     for key in ("body_motions", "point_motions", "external_forces"):  # system_dynamic: one table per name
         named = analysis.get(key)
         if isinstance(named, dict):

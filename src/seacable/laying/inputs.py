@@ -18,6 +18,7 @@ from ..errors import InputError
 
 __all__ = [
     "Bathymetry",
+    "LayTableFile",
     "LayTarget",
     "Payout",
     "PayoutBottomTension",
@@ -249,6 +250,12 @@ class PlanShip(Model):
         return np.interp(kp, self.kp, self.speeds)
 
 
+class LayTableFile(Model):
+    """A lay plan's table to follow: the CSV ``seacable run`` writes for a ``lay_plan`` (``NAME_lay_table.csv``)."""
+
+    file: str = Field(description="The lay table CSV (relative to the case file).")
+
+
 class LayTarget(Model):
     """What the lay holds on the seabed: a slack or a bottom tension, constant or by touchdown KP.
 
@@ -300,6 +307,32 @@ class LayTarget(Model):
         if self.kp is None:
             return np.full(kp.shape, float(value))
         return np.interp(kp, self.kp, value)
+
+
+def read_lay_table(file: str) -> dict[str, np.ndarray]:
+    """The columns of a lay table CSV (``seacable run`` of a ``lay_plan`` writes one): ``kp``, ``time``,
+    ``ship_speed`` and ``payout_speed`` (headers may carry their units in brackets, ``time [s]``). The
+    times must increase and the speeds be > 0."""
+    path, header, rows = csv_rows(file, "lay table")
+    names = [h.split("[")[0].strip() for h in header]
+    need = ("kp", "time", "ship_speed", "payout_speed")
+    missing = [n for n in need if n not in names]
+    if missing:
+        raise InputError(f"lay table '{path}' needs the columns {', '.join(need)} (a lay_plan's NAME_lay_table.csv); "
+                         f"{', '.join(missing)} missing. Suggested fix: give the table seacable run wrote for the plan.")
+    try:
+        cols = {n: np.array([float(r[names.index(n)]) for r in rows[1:]]) for n in need}
+    except (ValueError, IndexError):
+        raise InputError(f"lay table '{path}': every row needs numbers in {', '.join(need)}.") from None
+    t, v, c = cols["time"], cols["ship_speed"], cols["payout_speed"]
+    if t.size < 1 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
+        raise InputError(f"lay table '{path}': the times must be finite and increase row by row (s).")
+    for name, values in (("ship_speed", v), ("payout_speed", c)):
+        if not np.all(np.isfinite(values)) or np.any(values < 0) or (name == "ship_speed" and np.any(values <= 0)):
+            i = int(np.argmax(~np.isfinite(values) | (values <= (0 if name == "ship_speed" else -1e-300))))
+            raise InputError(f"lay table '{path}': {name} in row {i + 1} is {values[i]:g} m/s, must be a finite number "
+                             f"{'> 0' if name == 'ship_speed' else '>= 0'} m/s.")
+    return cols
 
 
 def sinking_weights(line, water_density: float, gravity: float) -> list[float]:

@@ -370,7 +370,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
                 # still moving: bisection in the bracket (where g jumps, at a seabed edge the touchdown rests on,
                 # the secant and the fixed point swing across it)
                 both = np.isfinite(lo) & np.isfinite(hi)
-                step = np.where(both, 0.5 * (lo + hi) - h, step)
+                step = np.where(both, 0.5 * (np.where(both, lo, h) + np.where(both, hi, h)) - h, step)
             elif h_prev is not None:
                 # secant on r(h) = g(h) - h; a fixed-point step where the secant is flat or would go far
                 r_prev = g_prev - h_prev

@@ -234,8 +234,7 @@ def run_laying_dynamic(case: Case, progress=None):
         "entry_angle": var(t1, s["entry_angle"], "degree", "cable angle to the sea surface at the water entry"),
         "touchdown_x": var(t1, res.touchdown[:, 0], "m", "touchdown x (interpolated between nodes)"),
         "touchdown_z": var(t1, res.touchdown[:, -1], "m", "touchdown elevation"),
-        "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"
-                       + (" along the ship's heading" if three else "")),
+        "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"),
         "slack": var(t1, s["slack"], "1", "laid length / seabed distance - 1 over the slack window "
                      "(NaN until 3 nodes have landed in the window)"),
         "suspended_length": var(t1, s["suspended_length"], "m", "cable length between touchdown and water entry"),

@@ -760,7 +760,9 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         top, bottom, angle = _end_tensions(c, props, f_td)
         out_t.append(t)
         ship_p = c.pos[c.hi]
-        layback = float((ship_p[:-1] - p_td[:-1]) @ track.direction(lay.x_ship))
+        # the horizontal distance, negative when the touchdown is ahead of the ship (in 2-D: x_ship - x_td)
+        reach = ship_p[:-1] - p_td[:-1]
+        layback = math.copysign(float(np.linalg.norm(reach)), float(reach @ track.direction(lay.x_ship)))
         values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), p_td[0],
                   p_td[-1], layback, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
         points.append((ship_p.copy(), p_td.copy()))
