@@ -66,7 +66,7 @@ class ShipMotion(Model):
     times, speeds
         Speed schedule, linear between the points and constant beyond. [s], [m/s]
     start_x
-        Water-entry point at t = 0. [m]
+        Water-entry point at t = 0: its x, or its KP along a route. [m]
     repeater_speed
         Speed while a repeater descends (from its water entry to its touchdown); ``None`` keeps the
         scheduled speed. [m/s]
@@ -78,7 +78,7 @@ class ShipMotion(Model):
         None, description="Constant ship speed. [m/s]")
     times: tuple[float, ...] | None = Field(None, description="Times of the speed schedule. [s]")
     speeds: tuple[float, ...] | None = Field(None, description="Speeds of the schedule. [m/s]")
-    start_x: quantity("m") = Field(0.0, description="Water-entry x at t = 0. [m]")
+    start_x: quantity("m") = Field(0.0, description="Water-entry x at t = 0 (its KP along a route). [m]")
     repeater_speed: quantity("m/s", ge=0) | None = Field(
         None, description="Ship speed while a repeater descends. [m/s]")
     acceleration: quantity("m/s^2", gt=0, fix="a cable ship changes speed at about 0.01-0.1 m/s^2.") = Field(

@@ -186,6 +186,10 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
         kp = np.unique(np.concatenate([np.arange(a.ship.start_x, x1, a.segment_length), [x1],
                                        route.kp[(route.kp > a.ship.start_x) & (route.kp < x1)]]))
         track.seabed.check_covers(route.point(kp), "ship's path", kp)
+        if x1 > route.kp_end + 1e-6:
+            warnings.warn(f"the ship runs past the route's last waypoint (KP {route.kp_end:.6g} m) to KP {x1:.6g} m at its "
+                          "largest speed; beyond it, it goes on along the last leg. Suggested fix: shorten "
+                          "analysis.duration, or extend the route.", SeacableWarning, stacklevel=3)
         depth = max(float(np.max(track.seabed.depth(route.point(kp)))), 0.0)
     row = par.props[0]
     alpha = float(laying_angle(max(v_ship, _MIN_SPEED), row[P_WEIGHT], row[P_DIAMETER], row[P_CDN],
