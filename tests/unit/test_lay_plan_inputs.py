@@ -189,3 +189,25 @@ def test_following_a_lay_table_bad_input(tmp_path, capsys):
     data["analysis"]["lay_table"] = {"file": "t.csv"}
     (tmp_path / "case.yaml").write_text(yaml.safe_dump(data))
     assert main(["validate", str(tmp_path / "case.yaml")]) == 0
+
+
+def test_locate_on_a_long_route_is_the_every_leg_answer():
+    """A route of 500 legs is searched through a k-d tree; KP and offset equal the comparison with every leg,
+    for points near the route, far from it and beyond its ends."""
+    rng = np.random.default_rng(3)
+    kp = np.linspace(0.0, 100e3, 501)
+    route = RouteGeometry(np.column_stack([kp, 300.0 * np.sin(kp / 3000.0) + rng.normal(0.0, 20.0, kp.size)]))
+    near = route.point(rng.uniform(-500.0, 100.5e3, 3000)) + rng.normal(0.0, 150.0, (3000, 2))
+    q = np.vstack([near, rng.uniform(-5e3, 105e3, (200, 2)) * [1.0, 0.02]])
+    kp_fast, off_fast = route.locate(q)
+    every = np.broadcast_to(np.arange(len(route.length)), (len(q), len(route.length)))
+    kp_all, off_all = route._nearest(q, every)
+    np.testing.assert_array_equal(kp_fast, kp_all)
+    np.testing.assert_array_equal(off_fast, off_all)
+    # a point whose nearest tree points lie on a short leg 100.06 m away, while a long leg passes 100 m away
+    # between its tree points: with 2 tree points it is not sure, and the every-leg comparison finds the long leg
+    trap = RouteGeometry(np.array([[-5000.0, -3000.0], [-1003.0, 0.0], [1003.0, 0.0], [1003.0, 1500.0], [3.0, 200.06],
+                                   [-3.0, 200.06], [-3.0, 1500.0], [-3000.0, 3000.0], [-6000.0, 3000.0]]))
+    trap._K = 2
+    t_kp, t_off = trap.locate(np.array([[0.0, 100.0]]))
+    assert t_off[0] == pytest.approx(100.0) and t_kp[0] == pytest.approx(trap.kp[1] + 1003.0)

@@ -212,30 +212,69 @@ class RouteGeometry:
         """KP of the nearest point of the route to each point, and the lateral offset (+ to port). [m]
 
         Beyond the route's ends the first and last legs are extended, so a point before the start has a
-        KP below ``kp_start``.
+        KP below ``kp_start``. A route of many legs is searched through a k-d tree of points every
+        ``_SAMPLE`` m along it (:meth:`_candidates`); the answer is the same as comparing every leg.
         """
         p = np.asarray(xy, float).reshape(-1, 2)
         shape = np.asarray(xy).shape[:-1]
         kp = np.empty(len(p))
         off = np.empty(len(p))
-        n_leg = len(self.length)
         for a in range(0, len(p), chunk):
             q = p[a:a + chunk]
-            rel = q[:, None, :] - self.xy[None, :-1, :]                    # (m, legs, 2)
-            along = np.einsum("mlk,lk->ml", rel, self.direction)
-            lo = np.where(np.arange(n_leg) == 0, -np.inf, 0.0)
-            hi = np.where(np.arange(n_leg) == n_leg - 1, np.inf, self.length)
-            t = np.clip(along, lo, hi)
-            foot = self.xy[None, :-1, :] + t[..., None] * self.direction[None]
-            dist = np.hypot(*(q[:, None, :] - foot).transpose(2, 0, 1))
-            best = np.argmin(dist, axis=1)
-            rows = np.arange(len(q))
-            kp[a:a + chunk] = self.kp[best] + t[rows, best]
-            d = self.direction[best]
-            r = rel[rows, best]
-            side = d[:, 0] * r[:, 1] - d[:, 1] * r[:, 0]
-            off[a:a + chunk] = np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
+            kp[a:a + chunk], off[a:a + chunk] = self._nearest(q, self._candidates(q))
         return kp.reshape(shape), off.reshape(shape)
+
+    _SAMPLE = 10.0         # m between the points of the k-d tree
+    _K = 16                # nearest tree points whose legs are compared
+
+    def _candidates(self, q: np.ndarray) -> np.ndarray:
+        """Legs to compare for each point, (m, c): all of them for a route of few legs; else the legs of the
+        ``_K`` nearest tree points and the two end legs. That holds the nearest leg whenever every tree point
+        closer than the nearest one plus ``_SAMPLE`` is among the ``_K`` (a leg's foot of perpendicular has a
+        tree point of its leg within ``_SAMPLE / 2``); the other points get every leg."""
+        n_leg = len(self.length)
+        every = np.broadcast_to(np.arange(n_leg), (len(q), n_leg))
+        if n_leg <= self._K:
+            return every
+        if getattr(self, "_tree", None) is None:
+            from scipy.spatial import cKDTree
+
+            pts, legs = [], []
+            for k in range(n_leg):
+                n = max(int(np.ceil(self.length[k] / self._SAMPLE)), 1)
+                u = np.linspace(0.0, self.length[k], n + 1)
+                pts.append(self.xy[k] + u[:, None] * self.direction[k])
+                legs.append(np.full(n + 1, k))
+            self._tree, self._tree_leg = cKDTree(np.vstack(pts)), np.concatenate(legs)
+        dist, idx = self._tree.query(q, k=self._K)
+        cand = np.column_stack([self._tree_leg[idx], np.zeros(len(q), int), np.full(len(q), n_leg - 1)])
+        unsure = dist[:, -1] < dist[:, 0] + self._SAMPLE
+        if unsure.any():
+            return _Ragged(cand, unsure, n_leg)
+        return cand
+
+    def _nearest(self, q: np.ndarray, cand) -> tuple[np.ndarray, np.ndarray]:
+        """KP and offset of each point's nearest point on its candidate legs."""
+        if isinstance(cand, _Ragged):
+            kp, off = self._nearest(q, cand.sure)
+            every = np.broadcast_to(np.arange(cand.n_leg), (int(cand.unsure.sum()), cand.n_leg))
+            kp[cand.unsure], off[cand.unsure] = self._nearest(q[cand.unsure], every)
+            return kp, off
+        n_leg = len(self.length)
+        start, d, length = self.xy[cand], self.direction[cand], self.length[cand]
+        rel = q[:, None, :] - start                                          # (m, c, 2)
+        along = np.einsum("mck,mck->mc", rel, d)
+        lo = np.where(cand == 0, -np.inf, 0.0)
+        hi = np.where(cand == n_leg - 1, np.inf, length)
+        t = np.clip(along, lo, hi)
+        foot = start + t[..., None] * d
+        dist = np.hypot(*(q[:, None, :] - foot).transpose(2, 0, 1))
+        best = np.argmin(dist, axis=1)
+        rows = np.arange(len(q))
+        leg = cand[rows, best]
+        r, db = rel[rows, best], d[rows, best]
+        side = db[:, 0] * r[:, 1] - db[:, 1] * r[:, 0]
+        return self.kp[leg] + t[rows, best], np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
 
     def to_geographic(self, xy) -> tuple[np.ndarray, np.ndarray] | None:
         """(latitude, longitude) [degree] of points in x, y, for a geographic route; else ``None``."""
@@ -249,3 +288,10 @@ class RouteGeometry:
         """x, y [m] of geographic points, in this route's projection."""
         x, y = self.transformer.transform(np.asarray(longitude, float), np.asarray(latitude, float))
         return np.stack([np.asarray(x), np.asarray(y)], axis=-1)
+
+
+class _Ragged:
+    """Candidates of :meth:`RouteGeometry._candidates` where some points need every leg."""
+
+    def __init__(self, sure: np.ndarray, unsure: np.ndarray, n_leg: int):
+        self.sure, self.unsure, self.n_leg = sure, unsure, n_leg
