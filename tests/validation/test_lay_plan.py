@@ -187,3 +187,40 @@ def test_plan_against_the_dynamic_model_under_bottom_tension(dynamic_and_plan):
     assert float(d.top_tension.where(late).mean()) == pytest.approx(float(mid.top_tension), rel=1e-4)
     assert float(d.entry_angle.where(late).mean()) == pytest.approx(float(mid.entry_angle), rel=1e-6)
     assert float(d.payout_speed.where(late).mean()) == pytest.approx(float(mid.payout_speed), rel=1e-4)
+
+
+def _station(lt):
+    from seacable.laying.plan import N_STATION_PROPS
+
+    p = np.zeros(N_STATION_PROPS)
+    p[:] = (lt.submerged_weight(RHO, G), lt.diameter, lt.drag_normal, lt.drag_tangential,
+            lt.mass_per_length + lt.added_mass_per_length(RHO), 0.0, lt.mass_per_length)
+    return p
+
+
+def test_steady_turn_tends_to_the_straight_lay_and_is_symmetric():
+    """`steady_turn` (the span in the frame turning with the ship): on a circle of 1e7 m it is paper 001's
+    straight line (angle, layback, length, top tension; tolerance 1e-6: the turn itself changes the layback by
+    about 0.15 L^2 / 2R = 3e-4 m of 2800 m); the cut is the same to port and starboard (1e-9 m: mirror
+    images), and on wide circles it goes as 1/R (the lateral drag is linear in the small lateral velocity
+    about the span's own sinking speed; 1e-3 between R = 20 and 40 km), under a rigid span's tractrix cut
+    R - sqrt(R^2 - L^2)."""
+    from seacable.laying.plan import steady_turn
+
+    lt = _cable()
+    p = _station(lt)
+    ref = straight_line_lay(1000.0, 1.5, p[0], lt.diameter, lt.drag_normal, lt.drag_tangential,
+                            payout_speed=1.05 * 1.5, water_density=RHO)
+    far = steady_turn(p, 1000.0, 1.5, 1e7, water_density=RHO, slack=0.05)
+    assert far["entry_angle"] == pytest.approx(ref.angle, rel=1e-6)
+    assert far["layback"] == pytest.approx(ref.layback, rel=1e-6)
+    assert far["suspended_length"] == pytest.approx(ref.suspended_length, rel=1e-6)
+    assert far["top_tension"] == pytest.approx(ref.top_tension, rel=1e-6)
+    port = steady_turn(p, 1000.0, 1.5, 20000.0, water_density=RHO, slack=0.05)
+    starboard = steady_turn(p, 1000.0, 1.5, -20000.0, water_density=RHO, slack=0.05)
+    assert starboard["cut"] == pytest.approx(port["cut"], abs=1e-9)
+    assert starboard["angle"] == pytest.approx(port["angle"], abs=1e-12)
+    wider = steady_turn(p, 1000.0, 1.5, 40000.0, water_density=RHO, slack=0.05)
+    assert 2.0 * wider["cut"] == pytest.approx(port["cut"], rel=1e-3)
+    tractrix = 20000.0 - math.sqrt(20000.0**2 - port["layback"] ** 2)
+    assert 0.0 < port["cut"] < tractrix

@@ -67,11 +67,11 @@ from numba import njit
 from ..errors import InputError, SeacableWarning
 from .kernel import current_at
 
-__all__ = ["LayPlan", "plan_lay", "solve_spans", "straight_direction"]
+__all__ = ["LayPlan", "plan_lay", "solve_spans", "steady_turn", "straight_direction"]
 
 # columns of the per-station property table
-S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE = range(6)
-N_STATION_PROPS = 6
+S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT = range(7)
+N_STATION_PROPS = 7
 _STEPS = 80          # RK4 steps over the straight cable's length at most
 _MAX_STEP = 50.0     # m, longest RK4 step
 
@@ -104,15 +104,21 @@ def straight_direction(w, kn, vs, c1, c2):
 
 
 @njit(cache=True)
-def _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, out):
-    """d/ds of (r1, r2, r3, t1, t2, t3, T); returns the normal-force scale |df/dt| for the step control."""
-    w, d, cdn, cdt, meff, comp = p[S_W], p[S_D], p[S_CDN], p[S_CDT], p[S_MEFF], p[S_COMPLIANCE]
+def _rhs(y, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, out):
+    """d/ds of (r1, r2, r3, t1, t2, t3, T); returns the normal-force scale |df/dt| for the step control.
+
+    The frame turns at ``om`` about the vertical through ``(0, vs/om)`` (``om = 0``: it moves at ``vs`` along e1),
+    so the frame point at ``r`` moves at ``(vs - om r2, om r1, 0)``; a material point moves at that minus
+    ``vc t`` and accelerates at the centripetal ``om^2 ((0, vs/om) - r)``, Coriolis ``2 om e3 x (-vc t)`` and
+    ``vc^2 dt/ds`` (the last in the effective tension).
+    """
+    w, d, cdn, cdt, meff, comp, mt = p[S_W], p[S_D], p[S_CDN], p[S_CDT], p[S_MEFF], p[S_COMPLIANCE], p[S_MT]
     kn = 0.5 * rho * cdn * d
     kt = 0.5 * rho * cdt * math.pi * d
     t1, t2, t3, T = y[3], y[4], y[5], y[6]
     c = current_at(-h + y[2], depths, speeds)
-    u1 = c * cos_c - (vs - vc * t1)
-    u2 = c * sin_c + vc * t2
+    u1 = c * cos_c - (vs - om * y[1] - vc * t1)
+    u2 = c * sin_c - (om * y[0] - vc * t2)
     u3 = vc * t3
     ut = u1 * t1 + u2 * t2 + u3 * t3
     n1, n2, n3 = u1 - ut * t1, u2 - ut * t2, u3 - ut * t3
@@ -120,6 +126,14 @@ def _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, out):
     f1 = kn * un * n1 + kt * abs(ut) * ut * t1
     f2 = kn * un * n2 + kt * abs(ut) * ut * t2
     f3 = -w + kn * un * n3 + kt * abs(ut) * ut * t3
+    if om != 0.0:
+        # the inertia of the turn: -(m + m_a) a_n - (m + m_at) a_t
+        a1 = -om * om * y[0] + 2.0 * om * vc * t2
+        a2 = om * vs - om * om * y[1] - 2.0 * om * vc * t1
+        at = a1 * t1 + a2 * t2
+        f1 -= meff * (a1 - at * t1) + mt * at * t1
+        f2 -= meff * (a2 - at * t2) + mt * at * t2
+        f3 -= -meff * at * t3 + mt * at * t3
     ft = f1 * t1 + f2 * t2 + f3 * t3
     teff = T - meff * vc * vc
     if teff == 0.0:                       # (a frozen step, whose direction is not integrated)
@@ -134,7 +148,7 @@ def _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, out):
 
 
 @njit(cache=True)
-def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
+def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
     """One suspended span from the touchdown (depth ``h``) up to the surface; fills ``out`` with
     (ship - touchdown along e_1, along e_2, suspended length, top tension, entry angle); NaN if the
     cable does not reach the surface.
@@ -160,11 +174,11 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
     k1, k2, k3, k4, tmp = np.empty(7), np.empty(7), np.empty(7), np.empty(7), np.empty(7)
     s = 0.0
     meff_v2 = p[S_MEFF] * vc * vc
-    uniform = depths.size == 1
+    uniform = depths.size == 1 and om == 0.0
     for _ in range(100000):
         if y[2] >= h:
             break
-        scale = _rhs(y, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k1)
+        scale = _rhs(y, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k1)
         relax = (y[6] - meff_v2) / scale      # length over which the tangent relaxes to its equilibrium [m]
         frozen = relax < 0.5 * ds_max
         if frozen:
@@ -181,13 +195,13 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
             ds = min(ds_max, relax)
             for j in range(7):
                 tmp[j] = y[j] + 0.5 * ds * k1[j]
-            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k2)
+            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k2)
             for j in range(7):
                 tmp[j] = y[j] + 0.5 * ds * k2[j]
-            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k3)
+            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k3)
             for j in range(7):
                 tmp[j] = y[j] + ds * k3[j]
-            _rhs(tmp, h, vs, vc, cos_c, sin_c, depths, speeds, rho, p, k4)
+            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k4)
             for j in range(7):
                 tmp[j] = y[j] + ds / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
         if tmp[2] >= h:                       # the surface within the step: linear back to it
@@ -201,7 +215,7 @@ def _span(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
         tmp[5] /= norm
         if frozen:
             c = current_at(-h + tmp[2], depths, speeds)
-            tmp[3], tmp[4], tmp[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
+            tmp[3], tmp[4], tmp[5] = straight_direction(w, kn, vs - om * tmp[1], c * cos_c, c * sin_c - om * tmp[0])
         for j in range(7):
             y[j] = tmp[j]
         s += ds
@@ -227,11 +241,11 @@ def _pay_out_time(h, vs, props, rho):
 
 
 @njit(cache=True)
-def solve_spans(h, beta, vs, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
+def solve_spans(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
     """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
     for i in range(h.size):
         if active[i]:
-            _span(h[i], beta[i], vs[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i])
+            _span(h[i], beta[i], vs[i], om[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i])
 
 
 class LayPlan:
@@ -326,6 +340,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     solved = np.full((n, 4), np.nan)             # the inputs each station's span was last solved with
     delta = 5.0                                  # m, half-base of the seabed slope's central difference
     total = 0
+    omega = np.zeros(n)
     for outer in range(max_iterations):
         props = props_at(s_td)
         per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
@@ -351,7 +366,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
             fwd = seabed.depth(td_xy + delta * e1)
             back = seabed.depth(td_xy - delta * e1)
             beta = np.arctan(np.nan_to_num((back - fwd) / (2.0 * delta)))
-            solve_spans(h, beta, speed_eff, vc_span, cos_c, sin_c, t0, depths, speeds, water_density, props, active,
+            solve_spans(h, beta, speed_eff, omega, vc_span, cos_c, sin_c, t0, depths, speeds, water_density, props, active,
                         out)
             total += 1
             if np.isnan(out[active]).any():
@@ -500,3 +515,68 @@ def _flags(kp, td_rate, clearance) -> list[str]:
     for note in notes:
         warnings.warn(f"lay plan: {note}.", SeacableWarning, stacklevel=3)
     return notes
+
+
+def steady_turn(props, depth, ship_speed, radius, *, water_density, slack=None, bottom_tension=None):
+    """The steady lay of a ship sailing a circle: where the touchdown runs, inside the ship's track.
+
+    In the frame turning with the ship (rate ``Omega = V_s / R``) the suspended span is steady, and the
+    touchdown runs on a circle of its own radius ``rho``; the laid cable lies on that circle, ``R - rho`` inside
+    the ship's. The span is :func:`_span` in the turning frame (the frame point at ``r`` moves at
+    ``Omega e_3 x (r - centre)``; the material also feels the centripetal and Coriolis accelerations), from
+    the touchdown, tangent to its circle and moving at ``Omega rho``, up to the surface; ``rho`` is the root
+    of ``|ship - centre| = R`` (Brent). Still water and a flat seabed (a current turns with respect to the frame,
+    so it has no steady turn).
+
+    Limits: ``Omega -> 0`` is the straight lay (:func:`plan_lay`'s span); a rigid span of layback ``L`` would
+    cut ``R - sqrt(R^2 - L^2)`` (a tractrix's limit circle); a cable without tension follows the track.
+
+    Parameters
+    ----------
+    props : (N_STATION_PROPS,) array
+        The cable (``S_*`` columns).
+    depth, ship_speed, radius : float
+        Water depth [m], ship speed over ground [m/s] and the radius of its circle [m] (> 0: turning to port).
+    water_density : float
+        [kg/m^3]
+    slack, bottom_tension : float
+        The target: one of the two ([-] or [N]).
+
+    Returns
+    -------
+    dict
+        ``touchdown_radius`` [m], ``cut`` = R - rho [m], ``layback`` (horizontal ship - touchdown) [m],
+        ``angle`` (of the touchdown behind the ship, seen from the centre) [rad], ``suspended_length`` [m],
+        ``top_tension`` [N], ``entry_angle`` [rad].
+    """
+    from scipy.optimize import brentq
+
+    p = np.asarray(props, float)
+    t0 = 0.0 if bottom_tension is None else float(bottom_tension)
+    per_metre = 1.0 + slack if bottom_tension is None else 1.0 / (1.0 + t0 * p[S_COMPLIANCE])
+    om = ship_speed / radius
+    zero = np.zeros(1)
+    out = np.empty(5)
+
+    def span(rho):
+        vs = abs(om) * rho
+        _span(depth, 0.0, vs, om, per_metre * vs, 1.0, 0.0, t0, zero, zero, water_density, p, out)
+        return out[0], out[1] - rho * math.copysign(1.0, radius)   # the ship from the centre
+
+    def miss(rho):
+        a, b = span(rho)
+        return math.hypot(a, b) - abs(radius)
+
+    r_abs = abs(radius)
+    lo = r_abs
+    while miss(lo) >= 0.0:
+        lo *= 0.5
+        if lo < 1e-6 * r_abs:
+            raise InputError(f"steady turn: no touchdown circle inside the ship's circle of radius {r_abs:g} m")
+    rho = brentq(miss, lo, r_abs, xtol=1e-10 * r_abs, rtol=1e-14)
+    a, b = span(rho)
+    s_len, top, entry = out[2], out[3], out[4]
+    # the ship's bearing from the centre minus the touchdown's (at (0, -rho) from the centre)
+    angle = math.atan2(a, -b if radius > 0 else b)
+    return {"touchdown_radius": rho, "cut": r_abs - rho, "layback": math.hypot(out[0], out[1]), "angle": angle,
+            "suspended_length": s_len, "top_tension": top, "entry_angle": entry}

@@ -11,7 +11,7 @@ from ..errors import InputError
 from ..results import make_dataset, var
 from .bathymetry import seabed_map
 from .inputs import sinking_weights
-from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_W, plan_lay
+from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_MT, S_W, plan_lay
 
 __all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table"]
 
@@ -63,9 +63,9 @@ def _station_props(case: Case):
         cdn, cdt = lt.effective_drag()
         ea = lt.effective_axial_stiffness()
         row = np.zeros(N_STATION_PROPS)
-        row[[S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE]] = (
+        row[[S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT]] = (
             w, lt.diameter, cdn, cdt, lt.mass_per_length + lt.added_mass_per_length(rho),
-            0.0 if math.isinf(ea) else 1.0 / ea)
+            0.0 if math.isinf(ea) else 1.0 / ea, lt.mass_per_length + lt.added_mass_tangential * rho * lt.area)
         rows.append(row)
     table = np.array(rows)
 
