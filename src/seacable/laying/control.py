@@ -44,7 +44,8 @@ class Control:
     def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float,
                      commit: bool = True) -> float:
         """Payout speed for ship speed ``vs`` and the present touchdown ``geometry``: the seabed's slope along
-        the ship's heading there, the depth there [m] and the cot of the span's chord angle. [m/s]
+        the ship's heading there, the depth there [m], the cot of the span's chord angle and the touchdown's
+        speed over the ship's from a turn (1 on a straight track). [m/s]
 
         In bottom-tension mode ``bottom_tension`` is the bottom tension at the end of the step of
         length ``dt`` [s] (the filter is advanced by backward Euler); ``commit=False`` evaluates the
@@ -53,12 +54,12 @@ class Control:
         p = self.payout
         if isinstance(p, PayoutRate):
             return schedule_value(t, p.speed, p.times, p.speeds)
-        slope, h_td, cot_alpha = geometry
+        slope, h_td, cot_alpha, turn = geometry
         compensate = isinstance(p, PayoutBottomTension) or p.slope_compensation
         if not compensate:
             return (1.0 + p.slack) * vs
         # CPRATE: touchdown speed, laid length per metre run and change of the suspended length
-        td_speed = vs / max(1.0 - slope * cot_alpha, 0.1)
+        td_speed = vs * turn / max(1.0 - slope * cot_alpha, 0.1)
         sin_alpha = 1.0 / math.sqrt(1.0 + cot_alpha * cot_alpha)
         arc = math.sqrt(1.0 + slope * slope)
         if isinstance(p, PayoutSlack):

@@ -328,7 +328,7 @@ class _Lay:
                 self.rep_landed[r] = self.laid["p"][k]
         s_nodes = [pre + v for v in _node_coordinates(ell, seg, [r.s - pre for r in reps])]
         cot = float(np.linalg.norm(t[:-1])) / max(t[-1], 1e-9)
-        self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (self.slope_at(td[:-1]), depth0, cot), 0.0, 0.0)
+        self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (self.slope_at(td[:-1]), depth0, cot, 1.0), 0.0, 0.0)
         self.c = c = _Cable(max(64, 4 * len(s_nodes)), track.dim)
         n0 = len(s_nodes)
         c.lo, c.hi = _MARGIN, _MARGIN + n0 - 1
@@ -677,12 +677,33 @@ class _Lay:
         return p, float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
 
     def geometry(self):
-        """The seabed's slope along the heading at the touchdown, the depth there and the cot of the chord's
-        angle, for the payout control."""
+        """The seabed's slope along the heading at the touchdown, the depth there, the cot of the chord's
+        angle and the touchdown's speed over the ship's in a turn (:meth:`turn_factor`), for the payout control."""
         c = self.c
         p, _, _ = self.touchdown()
         chord = c.pos[c.hi] - p
-        return self.slope_at(p[:-1]), -float(p[-1]), float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9)
+        return (self.slope_at(p[:-1]), -float(p[-1]), float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9),
+                self.turn_factor(chord))
+
+    def turn_factor(self, chord: np.ndarray) -> float:
+        """Touchdown speed over ship speed while the ship turns (1 on a straight track).
+
+        In a steady turn at the rate ``Omega`` the span is steady in the turning frame, so the touchdown moves
+        as a point of a rigid body: ``v_td = v_s + Omega e_3 x (r_td - r_s)`` (inside a turn it is slower than
+        the ship). ``Omega / V_s`` is taken as the track's change of heading over the chord's horizontal length
+        behind the ship (the distance the ship sails while the span is paid out), which on a circle of radius
+        R is 1/R exactly.
+        """
+        if self.track.dim == 2:
+            return 1.0
+        back = float(np.linalg.norm(chord[:-1]))
+        ahead = self.track.direction(self.x_ship)
+        behind = self.track.direction(self.x_ship - back)
+        turn = math.atan2(behind[0] * ahead[1] - behind[1] * ahead[0], float(behind @ ahead))
+        if turn == 0.0:
+            return 1.0
+        rate = turn / back                              # Omega / V_s [1/m]
+        return float(math.hypot(ahead[0] + rate * chord[1], ahead[1] - rate * chord[0]))
 
     def repeater_positions(self) -> np.ndarray:
         c = self.c
