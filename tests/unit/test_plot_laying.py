@@ -7,8 +7,12 @@ suspended cable a straight line at 13 deg down from the ship to the touchdown po
 nodes behind the touchdown point laid in landing order, and one repeater entering the water at
 about t = 47 s. Each test checks something that can fail: file names, the PNG signature, the
 number of GIF frames, what each curve of the figures holds, and the errors.
+
+The animation of a lay along a route in 3-D is checked on a short real run (100 s, 5 m segments,
+100 m of water, an alter-course at KP 50 m and a cross-current): plan view and profile by KP.
 """
 
+import math
 import struct
 from pathlib import Path
 
@@ -20,6 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from PIL import Image
 
+import seacable as sc
 from seacable.cli import main
 from seacable.errors import InputError
 from seacable.plot import FIGURES, animate_laying, plot_result
@@ -34,6 +39,7 @@ H = 20e3  # horizontal tension [N]
 W = 200.0  # submerged weight [N/m]
 S_REPEATER = 400.0  # arc length of the repeater [m]
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+DEPTH_3D = 100.0  # water depth of the 3-D lay [m]
 
 
 def _touchdown_x(t):
@@ -288,3 +294,53 @@ def test_cli_animate_user_errors_exit_2(tmp_path, capsys, case, expected):
     err = capsys.readouterr().err
     assert err.startswith("seacable: error: ") and expected in err
     assert "Traceback" not in err
+
+
+def _short_route_lay():
+    """A 100 s lay of paper 001's cable along a route turning 20 deg to port at KP 50 m, in 100 m of water
+    with 0.2 m/s of cross-current: the ship passes the waypoint, the span is turned off the route."""
+    from seacable.laying.route import Route
+
+    cable = sc.LineType(diameter=0.0225, mass_per_length=0.867, weight_in_water=4.49, drag_normal=1.85,
+                        drag_tangential=0.01, name="paper001")
+    route = Route(waypoints=((-1000.0, 0.0), (50.0, 0.0), (600.0, 200.0)), kp_start=-1000.0)
+    return sc.Case(name="lay3d", line=sc.Line.single(cable, 2000.0),
+                   environment=sc.Environment(water_density=1030.0, depth=DEPTH_3D,
+                                              current=sc.Current(speed=0.2, heading=math.pi / 2)),
+                   analysis=sc.LayingDynamicAnalysis(ship=sc.ShipMotion(speed=1.0), payout=sc.PayoutSlack(slack=0.05),
+                                                     duration=100.0, segment_length=5.0, output_interval=10.0,
+                                                     route=route))
+
+
+def test_cli_animate_route_lay_plan_and_profile(tmp_path, monkeypatch):
+    """A 3-D lay animates as two panels, plan view (x, y) and profile by KP; the last frame's suspended
+    cable runs from the ship, at its KP on the surface, down to the touchdown on the seabed."""
+    nc = write_netcdf(sc.run(_short_route_lay()), tmp_path / "lay3d.nc")
+    ds = read_netcdf(nc)
+    figures = []
+    close = plt.close
+    monkeypatch.setattr(plt, "close", lambda fig=None: figures.append(fig))   # keep the frame to look at
+    out = tmp_path / "lay3d.gif"
+    assert main(["animate", str(nc), "-o", str(out), "--max-frames", "3"]) == 0
+    monkeypatch.setattr(plt, "close", close)
+    with Image.open(out) as gif:
+        assert gif.format == "GIF" and gif.n_frames == 3
+    (fig,) = figures
+    plan, side = fig.axes[:2]
+    assert len(fig.axes) == 2
+    assert (plan.get_xlabel(), plan.get_ylabel()) == ("x [m]", "y [m]")
+    assert (side.get_xlabel(), side.get_ylabel()) == ("KP [m]", "elevation (0 at the sea surface) [m]")
+    lines = {ln.get_label(): ln for ln in side.get_lines()}
+    kp, z = lines["suspended cable"].get_data()      # the last frame: t = 100 s
+    assert kp[-1] == pytest.approx(float(ds.ship_kp[-1]), abs=1e-6) and z[-1] == pytest.approx(0.0, abs=1e-9)
+    assert z[0] == pytest.approx(-DEPTH_3D, abs=1e-6)
+    # node 0 is the first node on the seabed: within a segment (5 m) behind the touchdown
+    assert float(ds.touchdown_kp[-1]) - 5.0 - 1e-6 <= kp[0] <= float(ds.touchdown_kp[-1]) + 1e-6
+    np.testing.assert_allclose(lines["ship"].get_data(), [[float(ds.ship_kp[-1])], [0.0]])
+    x, y = {ln.get_label(): ln for ln in plan.get_lines()}["suspended cable"].get_data()
+    n = int(np.isfinite(ds.x.values[-1]).sum())
+    np.testing.assert_array_equal(np.c_[x, y], np.c_[ds.x.values[-1, :n], ds.y.values[-1, :n]])
+    # the limits cover the whole run: from the first laid node to the ship's last position
+    assert side.get_xlim()[0] < float(ds.laid_kp.min()) and side.get_xlim()[1] > float(ds.ship_kp[-1])
+    assert plan.get_xlim()[0] < float(ds.laid_x.min()) and plan.get_xlim()[1] > float(ds.ship_x[-1])
+    close(fig)

@@ -12,26 +12,47 @@ __all__ = ["animate_laying"]
 
 
 def _lay_scene(ax, ds) -> None:
-    """Seabed (filled below), sea surface and axis limits covering the cable and the ship.
+    """Seabed (filled below), sea surface and axis limits covering the cable and the ship, in x.
 
     The limits cover every suspended node at every time, the laid cable and the ship track, so
-    that snapshots and animation frames share one frame of reference. The aspect ratio is left
-    free: a lay is typically tens of metres deep over hundreds of metres or kilometres long.
+    that snapshots and animation frames share one frame of reference (see :func:`_profile_scene`).
     """
-    xs = [ds.x.values.ravel(), ds.ship_x.values.ravel()]
+    along = [ds.x.values.ravel(), ds.ship_x.values.ravel()]
     zs = [ds.z.values.ravel(), np.zeros(1)]
     if "laid_x" in ds:
-        xs.append(ds.laid_x.values.ravel())
+        along.append(ds.laid_x.values.ravel())
         zs.append(ds.laid_z.values.ravel())
-    xs, zs = np.concatenate(xs), np.concatenate(zs)
+    seabed = (ds.seabed_x.values, ds.seabed_z.values) if "seabed_x" in ds else None
+    _profile_scene(ax, along, zs, seabed, _label(ds.x), _label(ds.z))
+
+
+def _profile_scene(ax, along, zs, seabed, xlabel: str, zlabel: str) -> None:
+    """Seabed (filled below), sea surface and axis limits of a vertical profile.
+
+    Parameters
+    ----------
+    ax
+        The axes.
+    along, zs
+        Lists of arrays of the horizontal positions and of the elevations to keep in the frame (the
+        cable at every time, the ship, the laid cable), NaN where undefined. [m]
+    seabed
+        (horizontal position, elevation) of the seabed profile, or ``None``. [m]
+    xlabel, zlabel
+        Axis labels, with their units.
+
+    The aspect ratio is left free: a lay is typically tens of metres deep over hundreds of metres
+    or kilometres long.
+    """
+    xs, zs = np.concatenate(along), np.concatenate(zs)
     xs, zs = xs[np.isfinite(xs)], zs[np.isfinite(zs)]
     x0, x1 = (float(xs.min()), float(xs.max())) if xs.size else (0.0, 1.0)
     pad = 0.03 * (x1 - x0) or 1.0
     x0, x1 = x0 - pad, x1 + pad
     bottom = float(zs.min()) if zs.size else -1.0
     bx = bz = np.empty(0)
-    if "seabed_x" in ds:
-        bx, bz = _finite_xz(ds.seabed_x.values, ds.seabed_z.values)
+    if seabed is not None:
+        bx, bz = _finite_xz(*seabed)
         order = np.argsort(bx)
         bx, bz = bx[order], bz[order]
         seen = (bx >= x0) & (bx <= x1)
@@ -45,7 +66,64 @@ def _lay_scene(ax, ds) -> None:
         ax.fill_between(bx, bz, y0 - depth, color="tan", alpha=0.7, lw=0, zorder=0)
         ax.plot(bx, bz, color="sienna", lw=1.2, label="seabed", zorder=1)
     ax.axhline(0.0, color="steelblue", lw=0.8, ls="--", label="sea surface", zorder=1)
-    ax.set(xlim=(x0, x1), ylim=(y0, y1), xlabel=_label(ds.x), ylabel=_label(ds.z))
+    ax.set(xlim=(x0, x1), ylim=(y0, y1), xlabel=xlabel, ylabel=zlabel)
+
+
+def _plan_scene(ax, ds) -> None:
+    """The route (legs and waypoints) and the axes of the plan view of a 3-D lay: x, y at one scale.
+
+    The limits cover the ship's track, the laid cable and every suspended node at every time, not the
+    whole route (which may run far beyond the lay), so that snapshots and animation frames share one
+    frame of reference; the frame is at least a quarter as tall as it is wide, so that a lay along a
+    straight route is not a sliver.
+    """
+    ax.plot(ds.waypoint_x, ds.waypoint_y, "k--", lw=0.8, marker="o", ms=3, label="route", zorder=1)
+    xs, ys = _finite_xz(np.concatenate([ds.ship_x.values.ravel(), ds.laid_x.values.ravel(), ds.x.values.ravel()]),
+                        np.concatenate([ds.ship_y.values.ravel(), ds.laid_y.values.ravel(), ds.y.values.ravel()]))
+    if not xs.size:
+        xs, ys = ds.waypoint_x.values, ds.waypoint_y.values
+    x0, x1, y0, y1 = float(xs.min()), float(xs.max()), float(ys.min()), float(ys.max())
+    pad = 0.05 * max(x1 - x0, y1 - y0, 1.0)
+    width = x1 - x0 + 2.0 * pad
+    height = max(y1 - y0 + 2.0 * pad, 0.25 * width)
+    middle = 0.5 * (y0 + y1)
+    ax.set(xlim=(x0 - pad, x1 + pad), ylim=(middle - 0.5 * height, middle + 0.5 * height), xlabel="x [m]",
+           ylabel="y [m]", aspect="equal")
+
+
+def _fill_box(ax) -> None:
+    """Widen the x or the y limits of an axes, about their middle, so that one metre is as long on both
+    axes in the axes' present box, and fix that equal aspect (a plan view shows more of the map rather than
+    shrinking its box). Called once the layout is made, with the aspect left free until then."""
+    pos = ax.get_position()
+    width, height = ax.figure.get_size_inches() * (pos.width, pos.height)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    dx, dy = x1 - x0, y1 - y0
+    if dy / dx < height / width:
+        dy = dx * height / width
+    else:
+        dx = dy * width / height
+    xm, ym = 0.5 * (x0 + x1), 0.5 * (y0 + y1)
+    ax.set(xlim=(xm - 0.5 * dx, xm + 0.5 * dx), ylim=(ym - 0.5 * dy, ym + 0.5 * dy), aspect="equal")
+
+
+def _route_of(ds):
+    """The route of a 3-D lay result, rebuilt from its waypoints (for the KP of points)."""
+    from ..laying.route import RouteGeometry
+
+    return RouteGeometry(np.column_stack([ds.waypoint_x.values, ds.waypoint_y.values]),
+                         float(ds.waypoint_kp.values[0]))
+
+
+def _kp_of(route, x, y) -> np.ndarray:
+    """KP along ``route`` of the points (x, y) (the nearest point of the route, as ``laid_kp``); NaN where
+    x or y is NaN. [m]"""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    kp = np.full(x.shape, np.nan)
+    keep = np.isfinite(x) & np.isfinite(y)
+    if keep.any():
+        kp[keep] = route.locate(np.column_stack([x[keep], y[keep]]))[0]
+    return kp
 
 
 def _repeaters_at(ds, i: int):
@@ -114,15 +192,13 @@ def _laying_dynamic(ds, plt):
 def _route_figures(ds, plt, idx, snaps, colours, t_unit):
     """A 3-D lay along a route: the plan view, and the laid cable's offset from the route by KP."""
     fig, ax = plt.subplots(figsize=(9, 6))
-    ax.plot(ds.waypoint_x, ds.waypoint_y, "k--", lw=0.8, marker="o", ms=3, label="route")
+    _plan_scene(ax, ds)
     ax.plot(ds.ship_x, ds.ship_y, "C0-", lw=1.0, label="ship")
     ax.plot(ds.laid_x, ds.laid_y, "-", color="sienna", lw=1.4, label="laid cable")
     for i, t, c in zip(idx, snaps, colours):
         x, y = _finite_xz(ds.x.values[i], ds.y.values[i])
         ax.plot(x, y, "-", color=c, lw=1.0, label=f"suspended, t = {t:g} {t_unit}")
-    pad = 0.05 * max(float(np.ptp(np.r_[ds.ship_x, ds.laid_x])), float(np.ptp(np.r_[ds.ship_y, ds.laid_y])), 1.0)
-    ax.set(xlim=(float(np.nanmin(np.r_[ds.ship_x, ds.laid_x])) - pad, float(np.nanmax(np.r_[ds.ship_x, ds.laid_x])) + pad),
-           xlabel=_label(ds.laid_x), ylabel=_label(ds.laid_y), title="Plan view", aspect="equal")
+    ax.set_title("Plan view")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     figs = {"plan": fig}
     fig, ax = plt.subplots(figsize=(9, 3.5))
@@ -144,6 +220,13 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
     water and the time. The output times are subsampled evenly, first and last kept, to at most
     ``max_frames`` frames.
 
+    A lay along a route in 3-D (a result with ``y`` and the route's waypoints) has two panels per
+    frame: the plan view (x, y: the route, the ship's track and the laid cable so far, the
+    suspended cable, the ship and the touchdown) and the profile along the route (elevation by KP:
+    the seabed on the route, the laid and the suspended cable, the ship at (``ship_kp``, 0) and the
+    touchdown at (``touchdown_kp``, ``touchdown_z``)); the KP of a suspended node is that of the
+    nearest point of the route, as for ``laid_kp``. Both panels keep the limits of the whole run.
+
     Parameters
     ----------
     ds
@@ -156,7 +239,7 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
     max_frames
         Largest number of frames; the animation has min(max_frames, number of output times).
     dpi
-        Resolution of the frames (the figure is 10 x 4.5 in). [1/in]
+        Resolution of the frames (the figure is 10 x 4.5 in, 10 x 8 in in 3-D). [1/in]
 
     Returns
     -------
@@ -178,6 +261,8 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
                          "'seacable plot' for the figures of this result.")
     time = ds.time.values.astype(float)
     path, writer, frames, plt = animation_writer(path, fps, max_frames, dpi, time.size)
+    if "y" in ds and "waypoint_x" in ds:      # along a route, in 3-D
+        return _animate_route(ds, path, writer, frames, plt, dpi)
     t_unit = ds.time.attrs.get("units", "s")
     has_laid = "laid_x" in ds and ds.laid_x.size > 0
     if has_laid:
@@ -206,6 +291,85 @@ def animate_laying(ds, path, *, fps: int = 10, max_frames: int = 200, dpi: int =
                 ship.set_data([float(ds.ship_x.values[i])], [0.0])
                 reps.set_data(*_repeaters_at(ds, i))
                 label.set_text(f"t = {t:.1f} {t_unit}")
+                writer.grab_frame()
+    finally:
+        plt.close(fig)
+    return path
+
+
+_ROUTE_VARIABLES = ("ship_y", "ship_kp", "touchdown_x", "touchdown_y", "touchdown_z", "touchdown_kp", "laid_x",
+                    "laid_y", "laid_z", "laid_kp", "laid_time", "waypoint_y", "waypoint_kp", "seabed_kp", "seabed_z")
+
+
+def _animate_route(ds, path, writer, frames, plt, dpi) -> Path:
+    """The frames of a 3-D lay along a route: plan view above, profile along the route below
+    (see :func:`animate_laying`)."""
+    from ..errors import InputError
+
+    missing = [name for name in _ROUTE_VARIABLES if name not in ds]
+    if missing:
+        raise InputError(f"the 3-D lay result (it has y and the route's waypoints) lacks {', '.join(missing)}, which "
+                         "the animation along the route draws. Suggested fix: rerun the case with 'seacable run' "
+                         "to write a complete result.")
+    time = ds.time.values.astype(float)
+    t_unit = ds.time.attrs.get("units", "s")
+    route = _route_of(ds)
+    node_kp = _kp_of(route, ds.x.values, ds.y.values)
+    laid_x, laid_y, laid_z = (ds[name].values.astype(float) for name in ("laid_x", "laid_y", "laid_z"))
+    laid_kp, laid_t = ds.laid_kp.values.astype(float), ds.laid_time.values.astype(float)
+    ship_x, ship_y, ship_kp = (ds[name].values.astype(float) for name in ("ship_x", "ship_y", "ship_kp"))
+    td_x, td_y = ds.touchdown_x.values.astype(float), ds.touchdown_y.values.astype(float)
+    td_kp, td_z = ds.touchdown_kp.values.astype(float), ds.touchdown_z.values.astype(float)
+    has_reps = "repeater_y" in ds and ds.repeater_x.size > 0
+    if has_reps:
+        rep_x, rep_y, rep_z = (ds[name].values.astype(float) for name in ("repeater_x", "repeater_y", "repeater_z"))
+        rep_kp = _kp_of(route, rep_x, rep_y)
+
+    fig, (plan, side) = plt.subplots(2, 1, figsize=(10, 8), gridspec_kw={"height_ratios": (3, 2)})
+    _plan_scene(plan, ds)
+    plan.set_aspect("auto")                 # the layout first, with the panel filling its place (see _fill_box)
+    track, = plan.plot([], [], "-", color="C1", lw=3.0, alpha=0.45, zorder=0.5, label="ship's track")
+    laid, = plan.plot([], [], "k-", lw=1.2, label="laid cable")
+    hanging, = plan.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")
+    ship, = plan.plot([], [], "v", color="C1", ms=9, label="ship")
+    touchdown, = plan.plot([], [], "o", color="C2", ms=6, label="touchdown")
+    reps, = plan.plot([], [], "D", color="C3", ms=6, label="repeater" if has_reps else "_repeater")
+    plan.set_title("Plan view", fontsize=10)
+    plan.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    clock = plan.text(0.01, 0.97, "", transform=plan.transAxes, va="top", fontsize=10)
+
+    _profile_scene(side, [node_kp.ravel(), ship_kp, laid_kp, td_kp], [ds.z.values.ravel(), np.zeros(1), laid_z, td_z],
+                   (ds.seabed_kp.values, ds.seabed_z.values), "KP [m]", "elevation (0 at the sea surface) [m]")
+    side_laid, = side.plot([], [], "k-", lw=1.2, label="laid cable")
+    side_hanging, = side.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")
+    side_ship, = side.plot([], [], "v", color="C1", ms=9, label="ship")
+    side_td, = side.plot([], [], "o", color="C2", ms=6, label="touchdown")
+    side_reps, = side.plot([], [], "D", color="C3", ms=6, label="repeater" if has_reps else "_repeater")
+    side.set_title("Profile along the route (seabed on the route)", fontsize=10)
+    side.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.suptitle(ds.attrs.get("title", "Cable laying"), fontsize=10)
+    fig.tight_layout()
+    _fill_box(plan)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        with writer.saving(fig, str(path), dpi):
+            for i in frames:
+                t = time[i]
+                landed = laid_t <= t + 1e-9 * max(1.0, abs(t))
+                laid.set_data(*_finite_xz(laid_x[landed], laid_y[landed]))
+                side_laid.set_data(*_finite_xz(laid_kp[landed], laid_z[landed]))
+                track.set_data(*_finite_xz(ship_x[:i + 1], ship_y[:i + 1]))
+                hanging.set_data(*_finite_xz(ds.x.values[i], ds.y.values[i]))
+                side_hanging.set_data(*_finite_xz(node_kp[i], ds.z.values[i]))
+                ship.set_data([ship_x[i]], [ship_y[i]])
+                side_ship.set_data([ship_kp[i]], [0.0])
+                touchdown.set_data([td_x[i]], [td_y[i]])
+                side_td.set_data([td_kp[i]], [td_z[i]])
+                if has_reps:
+                    wet = np.isfinite(rep_x[i]) & np.isfinite(rep_y[i]) & np.isfinite(rep_z[i])
+                    reps.set_data(rep_x[i][wet], rep_y[i][wet])
+                    side_reps.set_data(rep_kp[i][wet], rep_z[i][wet])
+                clock.set_text(f"t = {t:.1f} {t_unit}")
                 writer.grab_frame()
     finally:
         plt.close(fig)
