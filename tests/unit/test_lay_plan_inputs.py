@@ -211,3 +211,35 @@ def test_locate_on_a_long_route_is_the_every_leg_answer():
     trap._K = 2
     t_kp, t_off = trap.locate(np.array([[0.0, 100.0]]))
     assert t_off[0] == pytest.approx(100.0) and t_kp[0] == pytest.approx(trap.kp[1] + 1003.0)
+
+
+def test_route_turn_radius_sails_arcs():
+    """`turn_radius`: each alter-course on an arc tangent to both legs, starting R tan(|turn|/2) before the
+    waypoint; the KP runs along the arcs (a square's three quarter-turns at 300 m: legs minus 6 R plus
+    3 (pi/2) R, to the chords' shortfall, under 1 mm per quarter turn); a point on an arc has its arc length as
+    KP and lies on the route (the chords within 1 mm of the circle); the waypoint KPs are the route's nearest
+    points (an arc's middle) and turn_kp the arcs' ends."""
+    r = Route(waypoints=((0.0, 0.0), (1000.0, 0.0), (1000.0, 1000.0), (0.0, 1000.0), (0.0, 0.0)),
+              turn_radius=300.0).geometry()
+    assert r.kp_end == pytest.approx(4000.0 - 6 * 300.0 + 3 * (math.pi / 2) * 300.0, abs=3e-3)
+    np.testing.assert_allclose(r.turn_kp[:3], [0.0, 700.0, 700.0 + math.pi / 2 * 300.0], atol=1e-3)
+    phi = 0.3
+    kp, off = r.locate(np.array([[700.0 + 300.0 * math.sin(phi), 300.0 - 300.0 * math.cos(phi)]]))
+    assert float(kp[0]) == pytest.approx(700.0 + 300.0 * phi, abs=1e-3)
+    assert abs(float(off[0])) < 1e-3
+    assert r.waypoint_kp[1] == pytest.approx(700.0 + math.pi / 4 * 300.0, abs=1e-3)
+    np.testing.assert_allclose(r.turns(), [math.pi / 2] * 3)          # the alter-courses, as without arcs
+    # one radius per inner waypoint; 0 for a sharp one
+    sharp = Route(waypoints=((0.0, 0.0), (1000.0, 0.0), (1000.0, 1000.0), (0.0, 1000.0)),
+                  turn_radius=(0.0, 300.0)).geometry()
+    assert 1000.0 in sharp.turn_kp
+
+
+@pytest.mark.parametrize("waypoints, radius, match", [
+    (((0.0, 0.0), (1000.0, 0.0), (1000.0, 500.0), (0.0, 500.0)), 300.0, "need 600 m of it"),
+    (((0.0, 0.0), (1000.0, 0.0), (1000.0, 500.0)), (100.0, 200.0), "2 values but the route has 1 inner"),
+    (((0.0, 0.0), (1000.0, 0.0), (1000.0, 500.0)), -5.0, "turn_radius"),
+])
+def test_route_turn_radius_bad_input(waypoints, radius, match):
+    with pytest.raises(InputError, match=match):
+        Route(waypoints=waypoints, turn_radius=radius).geometry()

@@ -202,8 +202,10 @@ class SeabedMap:
                 self._interp = lambda p, f=lnd: f(p[..., 0], p[..., 1])
                 self.bounds = (a.min(), a.max(), b.min(), b.max())
 
-    def depth(self, xy) -> np.ndarray:
-        """Water depth at points (x, y); NaN outside a grid. [m]"""
+    def depth(self, xy, kp=None) -> np.ndarray:
+        """Water depth at points (x, y); NaN outside a grid. [m]
+
+        ``kp``: the points' KPs where the caller knows them (a KP table then skips locating the points)."""
         xy = np.asarray(xy, float)
         if self._interp is not None:
             if self.kind == "lonlat":
@@ -211,7 +213,8 @@ class SeabedMap:
                 xy = np.stack([lon, lat], axis=-1)
             return np.asarray(self._interp(xy), float)
         if self.table is not None:
-            kp, _ = self.route.locate(xy)
+            if kp is None:
+                kp, _ = self.route.locate(xy)
             return np.interp(kp, *self.table)
         return np.full(xy.shape[:-1], float(self._flat))
 

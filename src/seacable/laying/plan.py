@@ -26,22 +26,37 @@ of an element, integrated from the touchdown up to the surface, is::
 * **Bottom-tension target** ``T_0``: the cable leaves the seabed along the ship's heading, tangent to
   the seabed's slope, with the tension ``T_0``: the catenary with drag.
 
+Turns. In a steady turn (the ship on a circle of radius ``R``) the span is steady in the frame turning at
+``Omega = V_s / R``; the frame's velocity ``Omega e_3 x (r - centre)`` replaces ``V_s e_1`` in the drag, and
+the centripetal and Coriolis accelerations join ``V_c^2 dt/ds`` (:func:`steady_turn`). The touchdown then runs
+on its own circle, inside the ship's by the cut ``R - rho`` (slower than the ship by ``rho / R``). At each
+station the span is solved in that frame with the route's curvature near its touchdown, the route's changes of
+heading spread over an alter-course's transient (:func:`_curvature`: two exponentials of 0.7 and 0.4 times the
+depth after and before a waypoint, fitted to the dynamic model; on an arc longer than that, the arc's own
+curvature), and the touchdown is placed on the route moved across by the span's steady offset (the cut, and a
+cross-current's ``h cot(alpha) sin(...)``), at the span's horizontal reach from the ship. On an arc this is
+exact; at a sharp alter-course and at the ends of an arc the dynamic model's laid offset is within 0.7 m of the
+plan's (20 deg, 100 m, 1 m/s, 5 % slack), where the tractrix of the layback would cut 26 m.
+
 The touchdown is where the span from the ship meets the seabed: its depth is iterated on (a grid
 gives a different depth off the route). The laid cable follows the touchdown's path over the
 seabed: per metre of it, ``1 + slack`` of cable (or ``1 / (1 + T_0/EA)`` under a bottom tension).
 The cable paid out at a ship KP is the cable laid up to the touchdown plus the suspended length, and
 the payout speed is ``V_s d(paid out)/dKP`` (in the span itself the steady lay's, ``1 + slack`` or
-``1 / (1 + T_0/EA)`` times the span's speed); the time is the integral of ``dKP / V_s``. A change of the ship's
-velocity (speed or heading) reaches the span through a first-order lag of the time the straight
-span takes to pay out, ``h / (V_s sin(alpha))`` (about the time a cable element takes to sink to the
-touchdown): the span is computed for the lagged velocity, so the touchdown runs on
-smoothly through a slow-down or an alter-course instead of jumping to the new steady span. A repeater
+``1 / (1 + T_0/EA)`` times the touchdown's speed); the time is the integral of ``dKP / V_s``. A change of the
+ship's speed reaches the span through a first-order lag of the time the straight span takes to pay out,
+``h / (V_s sin(alpha))`` (about the time a cable element takes to sink to the touchdown), so the touchdown runs
+on smoothly through a slow-down. A repeater
 (``line.attachments``) slows the ship to ``repeater_speed`` from its water entry (cable paid out =
 its ``s``) to its touchdown (cable laid = its ``s``), at the ship's ``acceleration`` (v dv/dKP = a);
-the ship speed, the spans and the repeaters' KPs are iterated to agreement.
+the ship speed, the spans and the repeaters' KPs are iterated to agreement. A station whose touchdown
+swings between two steady positions as the iteration goes (two spans meet a falling seabed) is held
+after a few iterations and flagged.
 
-Limits: the span is in steady state at each KP for the lagged velocity (the lag is a model of the
-transient, not its solution; the dynamic model gives it), and in a vertical plane; the seabed's cross slope, a repeater's own weight and drag and the cable's
+Limits: the span is in steady state at each KP for the lagged speed and the spread turn (the lag and the
+spread are models of the transient, not its solution; the dynamic model gives it); the spread's lengths are
+fitted at 1 m/s and 5 % slack (at 0.5 and 2 m/s and under 200 N the dynamic model's peak cut at a sharp
+alter-course is 1.49, 0.88 and 0.70 times the plan's); the seabed's cross slope, a repeater's own weight and drag and the cable's
 bending stiffness are left out, and so is a span that touches a ridge between touchdown and ship
 (flagged: ``span_clearance < 0``). A touchdown that would move backwards (the seabed falling away
 faster than the layback grows) is flagged too. The dynamic model (``laying_dynamic``) has none of
@@ -74,6 +89,7 @@ S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT = range(7)
 N_STATION_PROPS = 7
 _STEPS = 80          # RK4 steps over the straight cable's length at most
 _MAX_STEP = 50.0     # m, longest RK4 step
+_SWING_AFTER = 8     # outer iterations after which a station whose span still changes is held (and flagged)
 
 
 @njit(cache=True)
@@ -240,6 +256,15 @@ def _pay_out_time(h, vs, props, rho):
     return out
 
 
+def _straight_layback(h, vs, props, rho) -> np.ndarray:
+    """The straight span's layback in still water, ``h cot(alpha)`` (Zajac's angle at ``vs``). [m]"""
+    kn = 0.5 * rho * props[:, S_CDN] * props[:, S_D]
+    q = kn * vs * vs
+    w = props[:, S_W]
+    ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
+    return h * ca / np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
+
+
 @njit(cache=True)
 def solve_spans(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
     """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
@@ -337,36 +362,50 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     td_xy = ship_xy.copy()
     rep_rows, windows, hold = [], [], False
     tau = np.zeros(n)
-    solved = np.full((n, 4), np.nan)             # the inputs each station's span was last solved with
+    solved = np.full((n, 5), np.nan)             # the inputs each station's span was last solved with
     delta = 5.0                                  # m, half-base of the seabed slope's central difference
     total = 0
-    omega = np.zeros(n)
+    # the route's changes of heading (at its vertices: the sharp waypoints and the arcs' chords), for the turn
+    turn_kp, turn = _vertex_turns(route)
+    vs_td = vs.copy()                            # the touchdown's speed (slower inside a turn) [m/s]
+    laid_off = np.zeros(n)                       # the touchdown's steady offset from the route (+ port) [m]
+    td_kp = kp.copy()                            # the touchdown's KP [m]
+    frozen = np.zeros(n, bool)                   # stations held where the iteration swings (see _SWING_AFTER)
+    step_h = step_prev = np.zeros(n)             # the touchdown depth's last two changes per outer iteration [m]
+    swings = np.zeros(n, int)                    # ... how many times running it went back as far
+    h_outer = h.copy()
     for outer in range(max_iterations):
         props = props_at(s_td)
         per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
-        v_eff = _lagged_velocity(kp, vs, psi, tau)
-        speed_eff = np.hypot(v_eff[:, 0], v_eff[:, 1])
-        psi_eff = np.arctan2(v_eff[:, 1], v_eff[:, 0])
-        e1 = np.column_stack([np.cos(psi_eff), np.sin(psi_eff)])
-        e2 = np.column_stack([-e1[:, 1], e1[:, 0]])
-        cos_c, sin_c = np.cos(current.heading - psi_eff), np.sin(current.heading - psi_eff)
+        # the span's speed (the ship's, lagged by the pay-out time tau) and its turn rate (the route's curvature
+        # under the touchdown, spread over the alter-course's transient, :func:`_turn_rate`)
+        speed_eff = _lag(kp, vs, vs, tau)
+        # (at the straight span's touchdown over the depth under the ship: kept off the iterated touchdown, whose
+        # depth can have two roots where the seabed falls away)
+        reach = _straight_layback(h_ship, speed_eff, props, water_density)
+        omega = speed_eff * _curvature(kp - reach, turn_kp, turn, h_ship)
+        omega[np.abs(omega) * reach**2 < 1e-9 * speed_eff] = 0.0     # a turn moving the touchdown by under a um
+        # the span's direction (for the current across it and the seabed's slope): the route's heading there, spread
+        psi_td = _smooth_heading(kp - reach, 0.5 * (_AFTER + _BEFORE) * h_ship, turn_kp, turn, route.heading(kp - reach))
+        e1 = np.column_stack([np.cos(psi_td), np.sin(psi_td)])
+        cos_c, sin_c = np.cos(current.heading - psi_td), np.sin(current.heading - psi_td)
         # the payout through the span (its tangential drag and turning): the steady lay's, the laid length per metre
-        # run times the span's speed (the payout iterate itself, a difference between stations, feeds back
+        # run times the touchdown's speed (the payout iterate itself, a difference between stations, feeds back
         # through the tangential drag and does not settle where the span changes fast)
-        vc_span = speed_eff * per_metre
-        inputs = np.column_stack([speed_eff, psi_eff, vc_span, props[:, S_W]])
+        vc_span = vs_td * per_metre
+        inputs = np.column_stack([vs_td, omega, psi_td, vc_span, props[:, S_W]])
         # (a payout speed right to 1e-6 changes the tension by far less than the planner's own accuracy)
-        active = ~np.all(np.abs(inputs - solved) <= 1e-6 * np.abs(inputs) + 1e-12, axis=1)
+        active = ~np.all(np.abs(inputs - solved) <= 1e-6 * np.abs(inputs) + 1e-12, axis=1) & ~frozen
         solved = inputs
         h_prev = g_prev = None
         lo, hi = np.full(n, -np.inf), np.full(n, np.inf)
         for inner in range(60):               # the touchdown's depth h = g(h), by the secant method per station
             if not active.any():
                 break
-            fwd = seabed.depth(td_xy + delta * e1)
-            back = seabed.depth(td_xy - delta * e1)
+            fwd = seabed.depth(td_xy + delta * e1, kp=td_kp + delta)
+            back = seabed.depth(td_xy - delta * e1, kp=td_kp - delta)
             beta = np.arctan(np.nan_to_num((back - fwd) / (2.0 * delta)))
-            solve_spans(h, beta, speed_eff, omega, vc_span, cos_c, sin_c, t0, depths, speeds, water_density, props, active,
+            solve_spans(h, beta, vs_td, omega, vc_span, cos_c, sin_c, t0, depths, speeds, water_density, props, active,
                         out)
             total += 1
             if np.isnan(out[active]).any():
@@ -374,10 +413,13 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
                 raise InputError(f"lay plan at KP {kp[i]:.1f} m: the cable from the touchdown (depth {h[i]:.1f} m) "
                                  "does not reach the surface (it turns down on the way). Suggested fix: check the "
                                  "current against the ship speed, or use the dynamic model (laying_dynamic).")
-            new_xy = ship_xy - out[:, 0:1] * e1 - out[:, 1:2] * e2
+            laid_off = np.where(active, _steady_offset(out, vs_td, omega), laid_off)
+            new_kp = _on_offset_line(route, ship_xy, kp, np.hypot(out[:, 0], out[:, 1]), laid_off, (turn_kp, turn))
+            new_xy = _offset_point(route, new_kp, laid_off, (turn_kp, turn))
             seabed.check_covers(new_xy[active], "touchdown", kp[active])
-            g = np.where(active, seabed.depth(new_xy), h)
+            g = np.where(active, seabed.depth(new_xy, kp=new_kp), h)
             td_xy = np.where(active[:, None], new_xy, td_xy)
+            td_kp = np.where(active, new_kp, td_kp)
             step = g - h
             lo = np.where(step > 0.0, np.maximum(lo, h), lo)     # the bracket of r(h) = g(h) - h: > 0 below lo,
             hi = np.where(step < 0.0, np.minimum(hi, h), hi)     # < 0 above hi (g is nearly flat in h)
@@ -396,6 +438,12 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
             active = active & (np.abs(g - h) > 1e-6 * np.maximum(h, 1.0)) & ~(hi - lo < 1e-6 * np.maximum(h, 1.0))
             h = np.where(active, h + step, h)
         td_z = -seabed.depth(td_xy)
+        step_prev, step_h, h_outer = step_h, h - h_outer, h.copy()
+        # the turning frame: the touchdown's speed for which the ship's is the lagged speed; the laid path's
+        # steady offset from the route (:func:`_steady_offset`), where the touchdown is; the span's direction
+        # (the frame's velocity at the ship, (vs_td - omega o2, omega o1), has the ship's speed)
+        top = np.hypot(vs_td - omega * out[:, 1], omega * out[:, 0])
+        vs_td_new = vs_td * speed_eff / top
         path = np.concatenate([[0.0], np.cumsum(np.sqrt(np.sum(np.diff(td_xy, axis=0) ** 2, axis=1)
                                                         + np.diff(td_z) ** 2))])
         s_new = np.concatenate([[0.0], np.cumsum(0.5 * (per_metre[1:] + per_metre[:-1]) * np.diff(path))])
@@ -421,11 +469,22 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         # the lag: the time to pay out the straight span at the scheduled speed (of the span's own length the
         # iteration settles slowly, and of V_c not at all)
         tau_new = _pay_out_time(h, vs_new, props, water_density)
+        if outer >= _SWING_AFTER:
+            # a station still swinging: its span has two steady touchdowns (where the seabed falls away, at an
+            # alter-course) and the iteration hops between them; it is held at the last and flagged
+            # (a change back by at least 0.95 of the one before, twice running: not a settling one)
+            back = (step_h * step_prev < 0.0) & (np.abs(step_h) > 0.95 * np.abs(step_prev)) & (np.abs(step_h) > 1e-9 * h)
+            swings = np.where(back, swings + 1, 0)
+            frozen |= swings >= 2
+            vs_td_new = np.where(frozen, vs_td, vs_td_new)
+            tau_new = np.where(frozen, tau, tau_new)
         # settled: speeds to 1e-7 of the ship's, lengths and the lag to 1e-7 (1 mm in 10 km)
         settled = (np.max(np.abs(vc_new - vc)) <= 1e-7 * np.max(vs) and np.max(np.abs(vs_new - vs)) <= 1e-7 * np.max(vs)
                    and np.max(np.abs(s_new - s_td)) <= 1e-7 * max(float(s_new[-1]), 1.0)
-                   and np.max(np.abs(tau_new - tau)) <= 1e-7 * np.max(tau_new))
+                   and np.max(np.abs(tau_new - tau)) <= 1e-7 * np.max(tau_new)
+                   and np.max(np.abs(vs_td_new - vs_td)) <= 1e-6 * np.max(vs))
         vc, vs, s_td, tau = vc_new, vs_new, s_new, tau_new
+        vs_td = vs_td_new
         if settled:
             break
     else:
@@ -437,20 +496,20 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     moving = td_rate > 0.05
     route_slack = np.where(moving, np.gradient(s_td, kp) / np.where(moving, td_rate, 1.0) - 1.0, np.nan)
     clearance = _span_clearance(seabed, ship_xy, td_xy, td_z)
-    notes = _flags(kp, td_rate, clearance)
+    notes = _flags(kp, td_rate, clearance, frozen)
     props = props_at(s_td)
     columns = {
         "ship_x": ship_xy[:, 0], "ship_y": ship_xy[:, 1], "ship_heading": psi, "ship_speed": vs,
         "payout_speed": vc, "paid_out": s_td + out[:, 2], "time": time,
         "touchdown_kp": td_kp, "touchdown_offset": td_off, "touchdown_x": td_xy[:, 0], "touchdown_y": td_xy[:, 1],
         "touchdown_depth": -td_z, "touchdown_speed": vs * np.gradient(path, kp), "water_depth": h_ship,
-        "layback": np.hypot(out[:, 0], out[:, 1]), "layback_along": out[:, 0] * np.cos(psi_eff - psi)
-        - out[:, 1] * np.sin(psi_eff - psi), "layback_across": out[:, 0] * np.sin(psi_eff - psi)
-        + out[:, 1] * np.cos(psi_eff - psi),
+        "layback": np.hypot(out[:, 0], out[:, 1]),
+        "layback_along": np.cos(psi) * (ship_xy - td_xy)[:, 0] + np.sin(psi) * (ship_xy - td_xy)[:, 1],
+        "layback_across": -np.sin(psi) * (ship_xy - td_xy)[:, 0] + np.cos(psi) * (ship_xy - td_xy)[:, 1],
         "suspended_length": out[:, 2], "laid_length": s_td, "top_tension": out[:, 3],
         "bottom_tension": t0.copy(), "entry_angle": np.degrees(out[:, 4]),
         "slack": (np.asarray(slack, float) if not tension_mode else per_metre - 1.0),
-        "route_slack": route_slack, "span_clearance": clearance, "span_speed": speed_eff,
+        "route_slack": route_slack, "span_clearance": clearance, "span_speed": speed_eff, "turn_rate": omega,
     }
     reps = {"name": [r[0] for r in rep_rows], "s": np.array([r[1] for r in rep_rows], float),
             "entry_kp": np.array([r[2] for r in rep_rows], float),
@@ -463,20 +522,110 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     return LayPlan(columns, reps, notes, outer + 1, _time.perf_counter() - wall0)
 
 
-def _lagged_velocity(kp, speed, heading, tau) -> np.ndarray:
-    """The ship's velocity over the ground as the span sees it: a first-order lag of time constant ``tau``
-    (the time the straight span takes to pay out, h / (V_s sin(alpha))) behind the ship's (speed, heading). [m/s]
+def _lag(kp, speed, value, tau) -> np.ndarray:
+    """A first-order lag of time constant ``tau`` behind ``value`` over the time the ship takes between the
+    stations at ``speed`` (the span sees the ship's speed so).
 
-    Exact for a velocity held constant between stations: ``v_i = V_i + (v_{i-1} - V_i) exp(-dt / tau_i)``
-    with ``dt`` the time between the stations; with ``tau = 0`` the ship's velocity itself.
+    Exact for a value held constant between stations: ``l_i = v_i + (l_{i-1} - v_i) exp(-dt / tau_i)``
+    with ``dt`` the time between the stations; with ``tau = 0`` the value itself.
     """
-    ship = speed[:, None] * np.column_stack([np.cos(heading), np.sin(heading)])
     dt = np.diff(kp) * 0.5 * (1.0 / speed[1:] + 1.0 / speed[:-1])
     keep = np.exp(-dt / np.maximum(tau[1:], 1e-300))
-    out = ship.copy()
+    out = np.array(value, float)
     for i in range(1, kp.size):
-        out[i] = ship[i] + (out[i - 1] - ship[i]) * keep[i - 1]
+        out[i] = value[i] + (out[i - 1] - value[i]) * keep[i - 1]
     return out
+
+
+def _vertex_turns(route):
+    """KPs of the route's inner vertices and the change of heading at each (+ to port). [m], [rad]"""
+    a = np.arctan2(route.direction[:, 1], route.direction[:, 0])
+    turn = np.angle(np.exp(1j * np.diff(a)))
+    keep = turn != 0.0
+    return route.kp[1:-1][keep], turn[keep]
+
+
+# lengths of the turn's spread after and before a vertex (:func:`_curvature`), over the depth [-]: fitted to the
+# dynamic model at 1 m/s and 5 % slack (20 deg in 100 and 200 m: the peak offset within 5 %); at 0.5 and 2 m/s
+# and under a 200 N bottom tension the dynamic model's peak offset is 1.49, 0.88 and 0.70 times the spread's
+_AFTER, _BEFORE = 0.7, 0.4
+
+
+@njit(cache=True)
+def _curvature(kp, turn_kp, turn, depth):
+    """The route's curvature spread over an alter-course's transient, at the KPs ``kp``. [1/m]
+
+    Each change of heading ``d`` at a vertex ``k_j`` is spread as ``d K(k - k_j)`` with the two-sided
+    exponential ``K(x) = exp(-x / a) / (a + b)`` after the vertex and ``exp(x / b) / (a + b)`` before it
+    (unit area: an arc longer than the spread has its own curvature, and the laid path's offset summed over
+    KP is the steady turn's ``c_1 d``, as the dynamic model gives to 1.5 %). ``a = 0.7 h`` and ``b = 0.4 h``
+    (``h`` the depth at the touchdown) are fitted to the dynamic model's laid offset at a 20 deg
+    alter-course in 100 and 200 m of water at 1 m/s, 5 % slack; the spread is not derived (see
+    :data:`_AFTER`).
+    """
+    out = np.zeros(kp.size)
+    for i in range(kp.size):
+        a, b = _AFTER * depth[i], _BEFORE * depth[i]
+        lo = np.searchsorted(turn_kp, kp[i] - 40.0 * b)
+        hi = np.searchsorted(turn_kp, kp[i] + 40.0 * a)
+        acc = 0.0
+        for j in range(lo, hi):
+            x = kp[i] - turn_kp[j]
+            acc += turn[j] * (math.exp(-x / a) if x >= 0.0 else math.exp(x / b))
+        out[i] = acc / (a + b)
+    return out
+
+
+def _steady_offset(out, vs_td, omega) -> np.ndarray:
+    """The touchdown's offset from the ship's track (+ to port) in the span's steady state: in a turn, the
+    ship's radius minus the touchdown's (``|ship - centre| - |vs_td / omega|``, on the inside); on a straight
+    track ``-o2`` (a cross-current's offset). ``out`` holds the span ``(o1, o2)`` in the touchdown's frame. [m]"""
+    side = np.where(omega < 0.0, -1.0, 1.0)                    # the centre's side, (0, c) in the touchdown's frame
+    inv = omega / vs_td                                         # 1 / c (0 on a straight track)
+    # |ship - centre| - |c| = (o1^2 + o2^2 - 2 o2 c) / (|ship - centre| + |c|), without the cancellation; over |c|:
+    lead = np.hypot(out[:, 0] * inv, out[:, 1] * inv - 1.0) + 1.0
+    return side * ((out[:, 0] ** 2 + out[:, 1] ** 2) * np.abs(inv) - 2.0 * out[:, 1] * side) / lead
+
+
+def _offset_point(route, k, offset, turns) -> np.ndarray:
+    """The route's points at KPs ``k`` moved by ``offset`` to port, across the route's heading smoothed over
+    ``|offset|`` either side (continuous through a sharp waypoint, where the legs' normals jump). [m]"""
+    turn_kp, turn = turns
+    psi = _smooth_heading(np.asarray(k, float), np.maximum(np.abs(offset), 1.0), turn_kp, turn, route.heading(k))
+    return route.point(k) + offset[:, None] * np.column_stack([-np.sin(psi), np.cos(psi)])
+
+
+@njit(cache=True)
+def _smooth_heading(k, width, turn_kp, turn, heading):
+    """``heading`` (the legs') with each change of heading spread as ``1/2 exp(-|x| / width)`` either side. [rad]"""
+    out = heading.copy()
+    for i in range(k.size):
+        lo = np.searchsorted(turn_kp, k[i] - 40.0 * width[i])
+        hi = np.searchsorted(turn_kp, k[i] + 40.0 * width[i])
+        for j in range(lo, hi):
+            x = (k[i] - turn_kp[j]) / width[i]
+            out[i] += turn[j] * (-0.5 * math.exp(-x) if x >= 0.0 else 0.5 * math.exp(x))
+    return out
+
+
+def _on_offset_line(route, ship_xy, ship_kp, reach, offset, turns) -> np.ndarray:
+    """The KP of the touchdown: on the route moved by its ``offset`` to port, at the horizontal distance ``reach``
+    behind the ship (secant from the straight route's answers). [m]"""
+    k0 = ship_kp - np.sqrt(np.maximum(reach * reach - offset * offset, 0.25 * reach * reach))
+    k1 = k0 - 1.0
+
+    def miss(k):
+        return np.hypot(*(ship_xy - _offset_point(route, k, offset, turns)).T) - reach
+
+    f0, f1 = miss(k0), miss(k1)
+    for _ in range(30):
+        slope = np.where(f1 != f0, (f1 - f0) / np.where(k1 != k0, k1 - k0, 1.0), -1.0)
+        k2 = k1 - f1 / np.where(slope < -0.1, slope, -1.0)
+        k0, f0, k1 = k1, f1, k2
+        f1 = miss(k1)
+        if np.max(np.abs(f1)) < 1e-13 * max(float(np.max(reach)), 1.0):
+            break
+    return k1
 
 
 def _span_clearance(seabed, ship_xy, td_xy, td_z, samples: int = 9) -> np.ndarray:
@@ -501,8 +650,12 @@ def _ranges(kp, mask) -> str:
     return f"KP {text}{' ...' if len(runs) > 8 else ''} m"
 
 
-def _flags(kp, td_rate, clearance) -> list[str]:
+def _flags(kp, td_rate, clearance, frozen) -> list[str]:
     notes = []
+    if frozen.any():
+        notes.append(f"the touchdown swings between two steady positions at {_ranges(kp, frozen)} (two spans meet "
+                     "the seabed there): the plan holds one of them; run the dynamic model (laying_dynamic) over "
+                     "that stretch")
     back = td_rate <= 0.05
     if back.any():
         notes.append(f"the touchdown stalls or moves backwards at {_ranges(kp, back)} (the seabed falls away faster "

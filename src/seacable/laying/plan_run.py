@@ -48,7 +48,9 @@ LAY_TABLE_COLUMNS = (
     ("touchdown_speed", "m s-1", "touchdown speed over the seabed"),
     ("layback_along", "m", "layback along the ship's heading"),
     ("layback_across", "m", "layback across the ship's heading (+ to port)"),
-    ("span_speed", "m s-1", "ship speed over ground the span is in steady state for (the lagged velocity)"),
+    ("span_speed", "m s-1", "ship speed over ground the span is in steady state for (the lagged speed)"),
+    ("turn_rate", "rad s-1", "turn rate the span is in steady state for (+ to port: the route's curvature, spread "
+                             "over the alter-course, times the speed)"),
     ("span_clearance", "m", "smallest height of the span's chord above the seabed (< 0: a ridge under it)"),
 )
 
@@ -93,7 +95,7 @@ def run_lay_plan(case: Case):
             raise InputError(f"analysis.{name} = {value:g} m lies outside the route (KP {route.kp[0]:g} to "
                              f"{route.kp[-1]:g} m). Suggested fix: a KP on the route, or leave it out.")
     n = max(math.ceil((hi - lo) / a.kp_step - 1e-9), 1)
-    inner = route.kp[(route.kp > lo + 1e-6) & (route.kp < hi - 1e-6)]
+    inner = route.turn_kp[(route.turn_kp > lo + 1e-6) & (route.turn_kp < hi - 1e-6)]
     kp = np.unique(np.concatenate([np.linspace(lo, hi, n + 1), inner]))
     target = a.target.at(kp)
     plan = plan_lay(route, seabed, kp, scheduled_speed=a.ship.at(kp),
@@ -116,9 +118,7 @@ def run_lay_plan(case: Case):
         for who, (lat, lon) in (("ship", geo), ("touchdown", td)):
             data[f"{who}_latitude"] = var("kp", lat, "degree_north", f"{who} latitude (WGS84)")
             data[f"{who}_longitude"] = var("kp", lon, "degree_east", f"{who} longitude (WGS84)")
-    data["waypoint_x"] = var("waypoint", route.xy[:, 0], "m", "route waypoint x")
-    data["waypoint_y"] = var("waypoint", route.xy[:, 1], "m", "route waypoint y")
-    data["waypoint_kp"] = var("waypoint", route.kp, "m", "KP of the route waypoint")
+    data.update(route.variables())
     r = plan.repeaters
     if r["name"]:
         data["repeater_name"] = var("repeater", np.array(r["name"], dtype=object), "", "repeater name")

@@ -10,6 +10,11 @@ string or an EPSG code.
 KP (kilometre point, here in metres as everything at the interfaces) is the distance along the
 route from its first waypoint, plus ``kp_start``. The lateral offset of a point from the route is
 positive to port (to the left looking along increasing KP).
+
+With a ``turn_radius`` the ship sails each alter-course on a circular arc tangent to both legs (the
+arc starts ``R tan(|turn|/2)`` before the waypoint), and the KP runs along the arcs. An arc is held as
+a polyline of chords within 1 mm of the circle (its KP is short of the arc's length by ``R theta^3 /
+(24 m^2)`` for ``m`` chords: under 1 mm for a quarter turn at 1 km).
 """
 
 from __future__ import annotations
@@ -37,6 +42,9 @@ class Route(Model):
         CSV file with columns ``x`` and ``y``, or ``latitude`` and ``longitude`` (relative to the case file).
     kp_start
         KP of the first waypoint. [m]
+    turn_radius
+        Radius of the arc the ship sails at each alter-course, tangent to both legs: one value, or one per
+        inner waypoint (0 for a sharp turn). [m]
     projection
         Projection of geographic waypoints to metres: a PROJ string or ``"EPSG:32631"``-style code; default
         azimuthal equidistant centred at the first waypoint.
@@ -47,6 +55,9 @@ class Route(Model):
     longitude: tuple[float, ...] | None = Field(None, description="Waypoint longitudes (WGS84). [degree]")
     file: str | None = Field(None, description="CSV of waypoints: columns x, y or latitude, longitude.")
     kp_start: quantity("m") = Field(0.0, description="KP of the first waypoint. [m]")
+    turn_radius: quantity("m", ge=0.0) | tuple[quantity("m", ge=0.0), ...] | None = Field(
+        None, description="Radius of the arc sailed at each alter-course: one for all, or one per inner "
+                          "waypoint (0: a sharp turn). [m]")
     projection: str | None = Field(None, description="PROJ string or EPSG code for geographic waypoints.")
 
     @model_validator(mode="after")
@@ -62,6 +73,12 @@ class Route(Model):
             _check_geographic(self.latitude, self.longitude, "route")
         elif self.waypoints is not None:
             _check_points(np.asarray(self.waypoints, float), "route.waypoints", "m")
+        if isinstance(self.turn_radius, tuple) and (self.waypoints is not None or self.latitude is not None):
+            n_inner = len(self.waypoints or self.latitude) - 2
+            if len(self.turn_radius) != n_inner:
+                raise ValueError(f"turn_radius has {len(self.turn_radius)} values but the route has {n_inner} inner "
+                                 "waypoints (alter-courses). Suggested fix: one radius per inner waypoint, or one "
+                                 "value for all.")
         if self.projection is not None and self.latitude is None and self.file is None:
             raise ValueError("route.projection applies to geographic waypoints (latitude, longitude). Suggested "
                              "fix: leave it out for waypoints in x, y [m].")
@@ -70,7 +87,7 @@ class Route(Model):
     def geometry(self) -> RouteGeometry:
         """The route in metres (reading and projecting the waypoints)."""
         if self.waypoints is not None:
-            return RouteGeometry(np.asarray(self.waypoints, float), self.kp_start)
+            return RouteGeometry(np.asarray(self.waypoints, float), self.kp_start, turn_radius=self.turn_radius)
         if self.latitude is not None:
             lat, lon = np.asarray(self.latitude, float), np.asarray(self.longitude, float)
         else:
@@ -81,13 +98,13 @@ class Route(Model):
                 if self.projection is not None:
                     raise InputError(f"route.projection applies to geographic waypoints, but '{self.file}' gives "
                                      "x and y [m]. Suggested fix: leave projection out.")
-                return RouteGeometry(xy, self.kp_start)
+                return RouteGeometry(xy, self.kp_start, turn_radius=self.turn_radius)
             lat, lon = table["latitude"], table["longitude"]
             try:
                 _check_geographic(lat, lon, f"route file '{self.file}'")
             except ValueError as err:
                 raise InputError(str(err)) from None
-        return RouteGeometry.geographic(lat, lon, self.kp_start, self.projection)
+        return RouteGeometry.geographic(lat, lon, self.kp_start, self.projection, turn_radius=self.turn_radius)
 
 
 def _check_geographic(lat, lon, where: str) -> None:
@@ -142,7 +159,7 @@ def _read_waypoints(file: str) -> dict[str, np.ndarray]:
 
 
 class RouteGeometry:
-    """A route in metres: legs between the waypoints, KP along them.
+    """A route in metres: legs between the waypoints (and arcs at the alter-courses), KP along them.
 
     Parameters
     ----------
@@ -152,19 +169,30 @@ class RouteGeometry:
         KP of the first waypoint. [m]
     transformer : pyproj.Transformer, optional
         Geographic to x, y, for routes given in latitude and longitude.
+    turn_radius : float or sequence of float, optional
+        Radius of the arc at each alter-course (one for all or one per inner waypoint; 0: sharp). [m]
+
+    Attributes: ``waypoints`` (the given points), ``xy`` and ``kp`` (the track's vertices: the waypoints, or
+    the chords of the arcs), ``waypoint_kp`` (KP of the route's point nearest each waypoint) and ``turn_kp``
+    (where the heading starts or stops changing: the sharp waypoints and the ends of the arcs).
     """
 
-    def __init__(self, xy: np.ndarray, kp_start: float = 0.0, transformer=None):
-        self.xy = np.asarray(xy, float)
-        _check_points_input(self.xy, "route", "m")
-        d = np.diff(self.xy, axis=0)
+    def __init__(self, xy: np.ndarray, kp_start: float = 0.0, transformer=None, turn_radius=None):
+        self.waypoints = np.asarray(xy, float)
+        _check_points_input(self.waypoints, "route", "m")
+        self.transformer = transformer
+        track, kinks = _arcs(self.waypoints, turn_radius)
+        d = np.diff(track, axis=0)
+        self.xy = track
         self.length = np.hypot(d[:, 0], d[:, 1])              # of each leg [m]
         self.direction = d / self.length[:, None]              # unit vector of each leg
-        self.kp = kp_start + np.concatenate([[0.0], np.cumsum(self.length)])   # of each waypoint [m]
-        self.transformer = transformer
+        self.kp = kp_start + np.concatenate([[0.0], np.cumsum(self.length)])   # of each vertex [m]
+        self.turn_kp = self.kp[kinks]
+        self.waypoint_kp = self.locate(self.waypoints)[0] if turn_radius is not None else self.kp.copy()
 
     @classmethod
-    def geographic(cls, latitude, longitude, kp_start: float = 0.0, projection: str | None = None) -> RouteGeometry:
+    def geographic(cls, latitude, longitude, kp_start: float = 0.0, projection: str | None = None,
+                   turn_radius=None) -> RouteGeometry:
         """A route from WGS84 waypoints, projected (default: azimuthal equidistant at the first waypoint)."""
         from pyproj import CRS, Transformer
         from pyproj.exceptions import CRSError
@@ -181,7 +209,7 @@ class RouteGeometry:
                              "metres). Suggested fix: a UTM zone, e.g. 'EPSG:32631', or leave it out.")
         transformer = Transformer.from_crs("EPSG:4326", crs, always_xy=True)
         x, y = transformer.transform(lon, lat)
-        return cls(np.column_stack([x, y]), kp_start, transformer)
+        return cls(np.column_stack([x, y]), kp_start, transformer, turn_radius)
 
     @property
     def kp_end(self) -> float:
@@ -205,8 +233,7 @@ class RouteGeometry:
 
     def turns(self) -> np.ndarray:
         """Alter-course at each inner waypoint, positive to port (counter-clockwise). [rad]"""
-        a = np.arctan2(self.direction[:, 1], self.direction[:, 0])
-        return np.angle(np.exp(1j * np.diff(a)))
+        return _turns(self.waypoints)
 
     def locate(self, xy, *, chunk: int = 2048) -> tuple[np.ndarray, np.ndarray]:
         """KP of the nearest point of the route to each point, and the lateral offset (+ to port). [m]
@@ -276,6 +303,17 @@ class RouteGeometry:
         side = db[:, 0] * r[:, 1] - db[:, 1] * r[:, 0]
         return self.kp[leg] + t[rows, best], np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
 
+    def variables(self) -> dict:
+        """The route for a result: ``waypoint_x/y/kp`` (as given) and ``route_x/y`` (the track's vertices, with
+        the arcs), as :func:`seacable.results.var` variables."""
+        from ..results import var
+
+        return {"waypoint_x": var("waypoint", self.waypoints[:, 0], "m", "route waypoint x"),
+                "waypoint_y": var("waypoint", self.waypoints[:, 1], "m", "route waypoint y"),
+                "waypoint_kp": var("waypoint", self.waypoint_kp, "m", "KP of the route's point nearest the waypoint"),
+                "route_x": var("route_point", self.xy[:, 0], "m", "x of the route's track (arcs as chords)"),
+                "route_y": var("route_point", self.xy[:, 1], "m", "y of the route's track (arcs as chords)")}
+
     def to_geographic(self, xy) -> tuple[np.ndarray, np.ndarray] | None:
         """(latitude, longitude) [degree] of points in x, y, for a geographic route; else ``None``."""
         if self.transformer is None:
@@ -288,6 +326,63 @@ class RouteGeometry:
         """x, y [m] of geographic points, in this route's projection."""
         x, y = self.transformer.transform(np.asarray(longitude, float), np.asarray(latitude, float))
         return np.stack([np.asarray(x), np.asarray(y)], axis=-1)
+
+
+def _turns(xy: np.ndarray) -> np.ndarray:
+    d = np.diff(xy, axis=0)
+    return np.angle(np.exp(1j * np.diff(np.arctan2(d[:, 1], d[:, 0]))))
+
+
+_ARC_TOLERANCE = 1e-3    # m, largest distance of an arc's chord from the circle
+
+
+def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The track's vertices with each alter-course sailed on an arc tangent to both legs, and the indices of
+    the kinks (sharp waypoints, arc ends)."""
+    n = len(xy)
+    inner = n - 2
+    radii = np.zeros(inner) if turn_radius is None else np.asarray(turn_radius, float)
+    if radii.ndim == 0:
+        radii = np.full(inner, float(radii))
+    elif radii.shape != (inner,):
+        raise InputError(f"route.turn_radius has {radii.size} values but the route has {inner} inner waypoints "
+                         "(alter-courses). Suggested fix: one radius per inner waypoint, or one value for all.")
+    theta = _turns(xy)
+    d = np.diff(xy, axis=0)
+    legs = np.hypot(d[:, 0], d[:, 1])
+    u = d / legs[:, None]
+    tangent = radii * np.tan(0.5 * np.abs(theta))
+    cut = np.concatenate([[0.0], tangent, [0.0]])       # taken off each end of each leg: cut[i] at waypoint i
+    over = cut[:-1] + cut[1:] > legs * (1.0 + 1e-12)
+    if over.any():
+        k = int(np.argmax(over))
+        raise InputError(f"route.turn_radius: the arcs at the ends of the leg from waypoint {k + 1} to {k + 2} ("
+                         f"{legs[k]:.6g} m) need {cut[k] + cut[k + 1]:.6g} m of it (R tan(turn/2) at each "
+                         "alter-course). Suggested fix: a smaller turn radius there, or waypoints further apart.")
+    pts, kinks = [xy[0]], [0]
+    for i in range(1, n - 1):
+        r, th = radii[i - 1], theta[i - 1]
+        if r == 0.0 or th == 0.0:
+            kinks.append(len(pts))
+            pts.append(xy[i])
+            continue
+        a = xy[i] - tangent[i - 1] * u[i - 1]
+        side = np.sign(th)
+        centre = a + side * r * np.array([-u[i - 1][1], u[i - 1][0]])
+        start = np.arctan2(*(a - centre)[::-1])
+        m = max(int(np.ceil(abs(th) / (2.0 * np.arccos(max(1.0 - _ARC_TOLERANCE / r, -1.0))))), 1)
+        phi = start + th * np.arange(m + 1) / m
+        arc = centre + r * np.column_stack([np.cos(phi), np.sin(phi)])
+        kinks.append(len(pts))
+        pts.extend(arc)
+        kinks.append(len(pts) - 1)
+    kinks.append(len(pts))
+    pts.append(xy[-1])
+    track = np.array(pts)
+    # drop a vertex repeating the one before (an arc ending where the next begins)
+    keep = np.concatenate([[True], np.hypot(*np.diff(track, axis=0).T) > 1e-9])
+    index = np.cumsum(keep) - 1
+    return track[keep], np.unique(index[kinks])
 
 
 class _Ragged:

@@ -262,9 +262,7 @@ def run_laying_dynamic(case: Case, progress=None):
             "laid_y": var("laid", res.laid["p"][:, 1], "m", "y of the laid nodes"),
             "laid_kp": var("laid", laid_kp, "m", "KP of the laid nodes"),
             "laid_offset": var("laid", laid_off, "m", "offset of the laid nodes from the route (+ to port)"),
-            "waypoint_x": var("waypoint", route.xy[:, 0], "m", "route waypoint x"),
-            "waypoint_y": var("waypoint", route.xy[:, 1], "m", "route waypoint y"),
-            "waypoint_kp": var("waypoint", route.kp, "m", "KP of the route waypoint"),
+            **route.variables(),
         })
         kp = np.linspace(min(float(np.nanmin(laid_kp)), float(s["ship_x"][0])), float(np.nanmax(s["ship_x"])), 200)
         data["seabed_kp"] = var("seabed_point", kp, "m", "seabed profile KP (along the route)")

@@ -77,7 +77,7 @@ def _plan_scene(ax, ds) -> None:
     frame of reference; the frame is at least a quarter as tall as it is wide, so that a lay along a
     straight route is not a sliver.
     """
-    ax.plot(ds.waypoint_x, ds.waypoint_y, "k--", lw=0.8, marker="o", ms=3, label="route", zorder=1)
+    _route_line(ax, ds, 1.0)
     xs, ys = _finite_xz(np.concatenate([ds.ship_x.values.ravel(), ds.laid_x.values.ravel(), ds.x.values.ravel()]),
                         np.concatenate([ds.ship_y.values.ravel(), ds.laid_y.values.ravel(), ds.y.values.ravel()]))
     if not xs.size:
@@ -108,9 +108,12 @@ def _fill_box(ax) -> None:
 
 
 def _route_of(ds):
-    """The route of a 3-D lay result, rebuilt from its waypoints (for the KP of points)."""
+    """The route of a 3-D lay result, rebuilt from its track (``route_x/y``, with the arcs) or, in older
+    results, its waypoints (for the KP of points)."""
     from ..laying.route import RouteGeometry
 
+    if "route_x" in ds:
+        return RouteGeometry(np.column_stack([ds.route_x.values, ds.route_y.values]), float(ds.waypoint_kp.values[0]))
     return RouteGeometry(np.column_stack([ds.waypoint_x.values, ds.waypoint_y.values]),
                          float(ds.waypoint_kp.values[0]))
 
@@ -420,7 +423,7 @@ def _lay_plan(ds, plt):
     figs["table"] = fig
 
     fig, ax = plt.subplots(figsize=(8, 6))
-    ax.plot(ds.waypoint_x / 1e3, ds.waypoint_y / 1e3, "k--", lw=0.8, marker="o", ms=3, label="route")
+    _route_line(ax, ds, 1e-3)
     ax.plot(ds.ship_x / 1e3, ds.ship_y / 1e3, "C0-", lw=1.0, label="ship")
     ax.plot(ds.touchdown_x / 1e3, ds.touchdown_y / 1e3, "C1-", lw=1.2, label="touchdown (laid cable)")
     if "repeater_landing_kp" in ds:
@@ -434,3 +437,12 @@ def _lay_plan(ds, plt):
 
 
 LAYING_FIGURES = {"laying_dynamic": _laying_dynamic, "lay_plan": _lay_plan}
+
+
+def _route_line(ax, ds, scale: float) -> None:
+    """The route (its track with the arcs, where the result has it) and its waypoints, scaled (1e-3: km)."""
+    if "route_x" in ds:
+        ax.plot(ds.route_x * scale, ds.route_y * scale, "k--", lw=0.8, label="route", zorder=1)
+        ax.plot(ds.waypoint_x * scale, ds.waypoint_y * scale, "ko", ms=3, zorder=1)
+    else:
+        ax.plot(ds.waypoint_x * scale, ds.waypoint_y * scale, "k--", lw=0.8, marker="o", ms=3, label="route", zorder=1)
