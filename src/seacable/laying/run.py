@@ -205,6 +205,15 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     return LayingSetup(parameters=par, track=track, steps=steps, stored_values=stored)
 
 
+def _laid_slack(laid) -> np.ndarray:
+    """Slack of each laid segment: its cable length over the seabed distance between its nodes, minus one."""
+    p, length = laid["p"], np.diff(laid["s"])
+    out = np.full(len(length) + 1, np.nan)
+    chord = np.sqrt(np.sum(np.diff(p, axis=0) ** 2, axis=1))
+    out[1:] = length / np.where(chord > 0.0, chord, np.nan) - 1.0
+    return out
+
+
 def run_laying_dynamic(case: Case, progress=None):
     """Run a ``laying_dynamic`` case; see :func:`seacable.run`.
 
@@ -247,6 +256,11 @@ def run_laying_dynamic(case: Case, progress=None):
         "laid_z": var("laid", res.laid["p"][:, -1], "m", "elevation of the laid nodes"),
         "laid_s": var("laid", res.laid["s"], "m", "arc length of the laid nodes from end A"),
         "laid_time": var("laid", res.laid["time"], "s", "time of touchdown (0: on the seabed at the start)"),
+        "laid_slack": var("laid", _laid_slack(res.laid), "1", "cable length over seabed distance minus one, of "
+                          "the segment ending at the laid node (NaN for the first)"),
+        "laid_tension": var("laid", np.where(res.laid["time"] > 0.0, np.interp(res.laid["time"], res.time,
+                                                                              s["bottom_tension"]), np.nan),
+                            "N", "bottom tension when the node landed (NaN: on the seabed at the start)"),
     }
     if three:
         route = track.route

@@ -204,12 +204,23 @@ def _route_figures(ds, plt, idx, snaps, colours, t_unit):
     ax.set_title("Plan view")
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     figs = {"plan": fig}
-    fig, ax = plt.subplots(figsize=(9, 3.5))
+    panels = 3 if "laid_slack" in ds else 1
+    fig, axes = plt.subplots(panels, 1, figsize=(9, 3.0 * panels), sharex=True, squeeze=False)
+    ax = axes[0, 0]
     ax.plot(ds.laid_kp, ds.laid_offset, "-", color="sienna", label="laid cable")
     ax.plot(ds.touchdown_kp, ds.touchdown_offset, ".", color="C1", ms=3, label="touchdown at the outputs")
     ax.axhline(0.0, color="0.6", lw=0.6)
-    ax.set(xlabel="KP [m]", ylabel="offset, + to port [m]", title="Laid cable's offset from the route")
+    ax.set(ylabel="offset, + to port [m]", title="Laid cable by KP")
     ax.legend(fontsize=7)
+    if panels == 3:
+        landed = ds.laid_time.values > 0.0
+        kp = ds.laid_kp.values[landed]
+        axes[1, 0].plot(kp, ds.laid_slack.values[landed], "-", color="C2", lw=0.8)
+        axes[1, 0].set(ylabel="slack [-]")
+        axes[2, 0].plot(kp, ds.laid_tension.values[landed], "-", color="C3", lw=0.8)
+        axes[2, 0].set(ylabel="bottom tension\nat landing [N]")
+    axes[-1, 0].set(xlabel="KP [m]")
+    fig.tight_layout()
     figs["offset"] = fig
     return figs
 
