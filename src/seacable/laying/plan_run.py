@@ -94,9 +94,10 @@ def run_lay_plan(case: Case):
         if value is not None and not route.kp[0] - 1e-6 <= value <= route.kp[-1] + 1e-6:
             raise InputError(f"analysis.{name} = {value:g} m lies outside the route (KP {route.kp[0]:g} to "
                              f"{route.kp[-1]:g} m). Suggested fix: a KP on the route, or leave it out.")
-    n = max(math.ceil((hi - lo) / a.kp_step - 1e-9), 1)
+    # rows every kp_step from the first (round KPs), the last, and where an alter-course starts or ends
     inner = route.turn_kp[(route.turn_kp > lo + 1e-6) & (route.turn_kp < hi - 1e-6)]
-    kp = np.unique(np.concatenate([np.linspace(lo, hi, n + 1), inner]))
+    kp = np.unique(np.concatenate([lo + a.kp_step * np.arange(math.ceil((hi - lo) / a.kp_step - 1e-9)), [hi], inner]))
+    kp = kp[np.concatenate([[True], np.diff(kp) > 1e-3])]         # (an arc's end within 1 mm of a row: one row)
     target = a.target.at(kp)
     plan = plan_lay(route, seabed, kp, scheduled_speed=a.ship.at(kp),
                     slack=None if a.target.slack is None else target,
@@ -148,4 +149,4 @@ def write_lay_table(ds, path) -> None:
     names = [name for name, _, _ in LAY_TABLE_COLUMNS]
     extra = [n for n in ("ship_latitude", "ship_longitude", "touchdown_latitude", "touchdown_longitude") if n in ds]
     table = pd.DataFrame({f"{n} [{ds[n].attrs.get('units', '')}]": np.asarray(ds[n]) for n in names + extra})
-    atomic_write(path, lambda tmp: table.to_csv(tmp, index=False, float_format="%.6g"))
+    atomic_write(path, lambda tmp: table.to_csv(tmp, index=False, float_format="%.10g"))
