@@ -343,22 +343,14 @@ def _animate_route(ds, path, writer, frames, plt, dpi) -> Path:
     _plan_scene(plan, ds)
     plan.set_aspect("auto")                 # the layout first, with the panel filling its place (see _fill_box)
     track, = plan.plot([], [], "-", color="C1", lw=3.0, alpha=0.45, zorder=0.5, label="ship's track")
-    laid, = plan.plot([], [], "k-", lw=1.2, label="laid cable")
-    hanging, = plan.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")
-    ship, = plan.plot([], [], "v", color="C1", ms=9, label="ship")
-    touchdown, = plan.plot([], [], "o", color="C2", ms=6, label="touchdown")
-    reps, = plan.plot([], [], "D", color="C3", ms=6, label="repeater" if has_reps else "_repeater")
+    laid, hanging, ship, touchdown, reps = _frame_artists(plan, has_reps)
     plan.set_title("Plan view", fontsize=10)
     plan.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     clock = plan.text(0.01, 0.97, "", transform=plan.transAxes, va="top", fontsize=10)
 
     _profile_scene(side, [node_kp.ravel(), ship_kp, laid_kp, td_kp], [ds.z.values.ravel(), np.zeros(1), laid_z, td_z],
                    (ds.seabed_kp.values, ds.seabed_z.values), "KP [m]", "elevation (0 at the sea surface) [m]")
-    side_laid, = side.plot([], [], "k-", lw=1.2, label="laid cable")
-    side_hanging, = side.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")
-    side_ship, = side.plot([], [], "v", color="C1", ms=9, label="ship")
-    side_td, = side.plot([], [], "o", color="C2", ms=6, label="touchdown")
-    side_reps, = side.plot([], [], "D", color="C3", ms=6, label="repeater" if has_reps else "_repeater")
+    side_laid, side_hanging, side_ship, side_td, side_reps = _frame_artists(side, has_reps)
     side.set_title("Profile along the route (seabed on the route)", fontsize=10)
     side.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.suptitle(ds.attrs.get("title", "Cable laying"), fontsize=10)
@@ -448,6 +440,15 @@ def _lay_plan(ds, plt):
 
 
 LAYING_FIGURES = {"laying_dynamic": _laying_dynamic, "lay_plan": _lay_plan}
+
+
+def _frame_artists(ax, has_reps: bool):
+    """The empty lines an animation frame fills: laid cable, suspended cable, ship, touchdown, repeaters."""
+    return (ax.plot([], [], "k-", lw=1.2, label="laid cable")[0],
+            ax.plot([], [], "-", color="C0", lw=1.5, label="suspended cable")[0],
+            ax.plot([], [], "v", color="C1", ms=9, label="ship")[0],
+            ax.plot([], [], "o", color="C2", ms=6, label="touchdown")[0],
+            ax.plot([], [], "D", color="C3", ms=6, label="repeater" if has_reps else "_repeater")[0])
 
 
 def _route_line(ax, ds, scale: float) -> None:
