@@ -3,7 +3,9 @@
 Run: ``python bench/bench_laying.py`` (about 30 s), ``--repeat N`` (best of N counted runs per
 case, default 3), ``--duration T`` (simulated time per run, default 1000 s); ``--route`` adds issue 22's
 3-D lay along a 100 km route in 1000 m of water with 5 m segments (``--route-duration``, default 3600 s of
-it; target at least 200 x real time), see :func:`route_case`.
+it; target at least 200 x real time), see :func:`route_case`, and a table of the same lay along routes of
+many waypoints over a KP bathymetry table (:func:`long_route_case`: 10 and 500 waypoints, 1000 s each), where
+every seabed look-up locates points on the route.
 
 The issue's measurement: the wall time to lay 1 km of cable in 100 m of water at 1 m/s ship speed
 with 1 m segments; target: faster than real time by a factor of at least 100 on this machine. The
@@ -178,19 +180,22 @@ def main(argv=None):
     print_table(rows, args.repeat)
     if args.route:
         route_bench(args.route_duration, args.repeat)
+        long_route_bench(args.repeat)
     print(f"total benchmark time {time.perf_counter() - t_start:.0f} s")
 
 
 ROUTE_TARGET = 200.0    # issue 22: a 100 km route at 1000 m, 5 m segments, in 3-D: >= 200 x real time
 
 
-def route_case(duration):
+def route_case(duration, route=None, bathymetry=None):
     """Issue 22's 3-D lay: a telecom cable (35 mm, 4.1 N/m in water) along a 100 km route of two legs (an
     alter-course of 22 degrees at KP 50 km), 1000 m of water, 0.2 m/s of current at 57 degrees to the first
-    leg, 3 % slack, 1.5 m/s, 5 m segments (about 660 suspended nodes), output every 100 s."""
+    leg, 3 % slack, 1.5 m/s, 5 m segments (about 660 suspended nodes), output every 100 s; or along another
+    ``route`` over a ``bathymetry`` table by KP."""
     import seacable
     from seacable.laying.route import Route
 
+    route = route or Route(waypoints=((-10e3, 0.0), (50e3, 0.0), (96e3, 18.6e3)), kp_start=-10e3)
     cable = seacable.LineType(diameter=0.035, mass_per_length=1.4, axial_stiffness=3e7, drag_normal=1.2,
                               drag_tangential=0.01, added_mass_normal=1.0, name="tel35")
     return seacable.Case(
@@ -198,8 +203,7 @@ def route_case(duration):
         environment=seacable.Environment(depth=1000.0, current=seacable.Current(speed=0.2, heading=1.0)),
         analysis=seacable.LayingDynamicAnalysis(
             ship=seacable.ShipMotion(speed=1.5), payout=seacable.PayoutSlack(slack=0.03), duration=duration,
-            segment_length=5.0, output_interval=100.0,
-            route=Route(waypoints=((-10e3, 0.0), (50e3, 0.0), (96e3, 18.6e3)), kp_start=-10e3)))
+            segment_length=5.0, output_interval=min(100.0, duration), route=route, bathymetry=bathymetry))
 
 
 def route_bench(duration, repeat):
@@ -220,6 +224,60 @@ def route_bench(duration, repeat):
     print(f"  wall {wall:.2f} s (loop {st['wall_time_s']:.2f} s), {st['steps']} steps, {st['newton_iterations']} Newton "
           f"iterations: {factor:.0f} x real time; target >= {ROUTE_TARGET:g} x: {'met' if factor >= ROUTE_TARGET else 'MISSED'}"
           f" (the whole 100 km, {100e3 / 1.5 / 3600:.1f} h, would take about {100e3 / 1.5 / factor / 60:.0f} min)")
+
+
+LONG_ROUTE_DURATION = 1000.0    # s simulated per long-route row
+LONG_ROUTES = (                 # (waypoints, seabed: "kp" a bathymetry table by KP, "flat" environment.depth)
+    (10, "flat"),
+    (10, "kp"),
+    (500, "kp"),
+)
+
+
+def long_route_case(n_waypoints, seabed, duration):
+    """Issue 22's lay (:func:`route_case`: cable, 1000 m, current, slack, speed, 5 m segments) along a route of
+    ``n_waypoints`` from x = -10 km to 90 km (KP -10 km at the first), y = 300 sin(x / 3 km) m, and for more than
+    20 waypoints a seeded random 20 m (1 sigma) across at each (500 waypoints: 200 m legs that all turn); the
+    current pushes the suspended nodes up to 650 m off the route. ``seabed="kp"``: the depth by KP, a table of
+    1301 rows, 1000 m +- 60 m (period 25 km) +- 20 m (period 4.4 km); ``"flat"``: 1000 m everywhere."""
+    from seacable.laying.inputs import Bathymetry
+    from seacable.laying.route import Route
+
+    x = np.linspace(-10e3, 90e3, n_waypoints)
+    y = 300.0 * np.sin(x / 3000.0)
+    if n_waypoints > 20:
+        y = y + np.random.default_rng(7).normal(0.0, 20.0, n_waypoints)
+    bathymetry = None
+    if seabed == "kp":
+        kp = np.linspace(-10e3, 120e3, 1301)
+        depth = 1000.0 + 60.0 * np.sin(kp / 4000.0) + 20.0 * np.sin(kp / 700.0)
+        bathymetry = Bathymetry(distance=tuple(kp), depth=tuple(depth))
+    return route_case(duration, Route(waypoints=tuple(zip(x.tolist(), y.tolist())), kp_start=-10e3), bathymetry)
+
+
+def long_route_bench(repeat):
+    """The 3-D lay along routes of many waypoints (:data:`LONG_ROUTES`), best of ``repeat`` runs each."""
+    import seacable
+
+    print(f"\n3-D lay along long routes: {LONG_ROUTE_DURATION:g} s simulated each, best of {repeat}; target >= "
+          f"{ROUTE_TARGET:g} x real time")
+    head = (f"{'waypoints':>9} {'seabed':>9} {'nodes':>6} {'steps':>6} {'Newton iterations':>18} {'wall s':>7} "
+            f"{'loop s':>7} {'real-time factor':>17}")
+    print(head)
+    print("-" * len(head))
+    for n, seabed in LONG_ROUTES:
+        seacable.run(long_route_case(n, seabed, 20.0))                 # warm-up (the k-d tree, imports)
+        runs = []
+        for _ in range(repeat):
+            case = long_route_case(n, seabed, LONG_ROUTE_DURATION)
+            t0 = time.perf_counter()
+            ds = seacable.run(case)
+            runs.append((time.perf_counter() - t0, ds))
+        wall, ds = min(runs, key=lambda r: r[0])
+        st = json.loads(ds.attrs["settings"])
+        table = "KP table" if seabed == "kp" else "flat"
+        print(f"{n:>9} {table:>9} {st['max_nodes']:>6} {st['steps']:>6} {st['newton_iterations']:>18} {wall:>7.2f} "
+              f"{st['wall_time_s']:>7.2f} {LONG_ROUTE_DURATION / wall:>17.0f}")
 
 
 if __name__ == "__main__":

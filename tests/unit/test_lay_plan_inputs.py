@@ -191,26 +191,48 @@ def test_following_a_lay_table_bad_input(tmp_path, capsys):
     assert main(["validate", str(tmp_path / "case.yaml")]) == 0
 
 
+def _every_leg(route, q):
+    """KP and offset of the nearest point of every leg, the first of equal distances (numpy.hypot's)."""
+    start, d = route.xy[:-1], route.direction
+    rel = q[:, None, :] - start                                              # (m, legs, 2)
+    lo = np.where(np.arange(len(d)) == 0, -np.inf, 0.0)
+    hi = np.where(np.arange(len(d)) == len(d) - 1, np.inf, route.length)
+    t = np.clip(rel[..., 0] * d[:, 0] + rel[..., 1] * d[:, 1], lo, hi)
+    dist = np.hypot(q[:, None, 0] - (start[:, 0] + t * d[:, 0]), q[:, None, 1] - (start[:, 1] + t * d[:, 1]))
+    best = np.argmin(dist, axis=1)
+    rows = np.arange(len(q))
+    side = d[best, 0] * rel[rows, best, 1] - d[best, 1] * rel[rows, best, 0]
+    return route.kp[best] + t[rows, best], np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
+
+
 def test_locate_on_a_long_route_is_the_every_leg_answer():
-    """A route of 500 legs is searched through a k-d tree; KP and offset equal the comparison with every leg,
-    for points near the route, far from it and beyond its ends."""
+    """A route of 500 legs is searched through the legs near groups of points or a k-d tree; KP and offset equal
+    the comparison with every leg bit for bit, for points near the route, far from it and beyond its ends, in
+    any order or in a row like a cable's nodes, and on the waypoints (as far from two legs: the first)."""
     rng = np.random.default_rng(3)
     kp = np.linspace(0.0, 100e3, 501)
     route = RouteGeometry(np.column_stack([kp, 300.0 * np.sin(kp / 3000.0) + rng.normal(0.0, 20.0, kp.size)]))
     near = route.point(rng.uniform(-500.0, 100.5e3, 3000)) + rng.normal(0.0, 150.0, (3000, 2))
-    q = np.vstack([near, rng.uniform(-5e3, 105e3, (200, 2)) * [1.0, 0.02]])
-    kp_fast, off_fast = route.locate(q)
-    every = np.broadcast_to(np.arange(len(route.length)), (len(q), len(route.length)))
-    kp_all, off_all = route._nearest(q, every)
-    np.testing.assert_array_equal(kp_fast, kp_all)
-    np.testing.assert_array_equal(off_fast, off_all)
+    s = np.arange(700) * 5.0
+    cables = [route.point(k0 + s) + np.column_stack([np.zeros(700), off + 0.05 * s])
+              for k0, off in ((-1000.0, 30.0), (20e3, -650.0), (60e3, 2.0), (98e3, 400.0))]
+    q = np.vstack([near, rng.uniform(-5e3, 105e3, (200, 2)) * [1.0, 0.02], route.xy[::7], *cables])
+    for part in (q, *cables, q[:5]):
+        kp_fast, off_fast = route.locate(part)
+        kp_all, off_all = _every_leg(route, part)
+        np.testing.assert_array_equal(kp_fast, kp_all)
+        np.testing.assert_array_equal(off_fast, off_all)
+    assert route._nearby(cables[1]) is not None and route._nearby(near) is None     # both ways were taken
     # a point whose nearest tree points lie on a short leg 100.06 m away, while a long leg passes 100 m away
     # between its tree points: with 2 tree points it is not sure, and the every-leg comparison finds the long leg
     trap = RouteGeometry(np.array([[-5000.0, -3000.0], [-1003.0, 0.0], [1003.0, 0.0], [1003.0, 1500.0], [3.0, 200.06],
                                    [-3.0, 200.06], [-3.0, 1500.0], [-3000.0, 3000.0], [-6000.0, 3000.0]]))
-    trap._K = 2
-    t_kp, t_off = trap.locate(np.array([[0.0, 100.0]]))
-    assert t_off[0] == pytest.approx(100.0) and t_kp[0] == pytest.approx(trap.kp[1] + 1003.0)
+    trap._K, trap._PAIRS = 2, 0
+    for wide in (64, 0):                          # the legs near the point; the k-d tree (no group is narrow)
+        trap._WIDE = wide
+        t_kp, t_off = trap.locate(np.array([[0.0, 100.0]]))
+        assert t_off[0] == pytest.approx(100.0) and t_kp[0] == pytest.approx(trap.kp[1] + 1003.0)
+
 
 
 def test_route_turn_radius_sails_arcs():
@@ -243,3 +265,33 @@ def test_route_turn_radius_sails_arcs():
 def test_route_turn_radius_bad_input(waypoints, radius, match):
     with pytest.raises(InputError, match=match):
         Route(waypoints=waypoints, turn_radius=radius).geometry()
+
+def test_seabed_under_a_route_is_remembered_bit_for_bit():
+    """Track3D.zb remembers the points it was asked for: the same points again, some of them, or new ones
+    mixed in give the seabed map's depths exactly; so does the gradient. ``highest`` bounds the seabed."""
+    from seacable.laying.inputs import Bathymetry
+    from seacable.laying.track import Track3D
+
+    rng = np.random.default_rng(4)
+    kp = np.linspace(0.0, 20e3, 101)
+    route = RouteGeometry(np.column_stack([kp, 200.0 * np.sin(kp / 2000.0) + rng.normal(0.0, 10.0, kp.size)]))
+    table = np.linspace(-1e3, 21e3, 500)
+    seabed = seabed_map(route, Bathymetry(distance=tuple(table), depth=tuple(1000.0 + 50.0 * np.sin(table / 900.0))),
+                        None, math.nan)
+    track = Track3D(route, seabed)
+    cable = route.point(5e3 + 5.0 * np.arange(600)) + [0.0, 120.0]
+    for p in (cable, cable[3:200], cable[100], np.vstack([cable[::5], cable[::3] + 0.5]), cable + 1.0,
+              cable[:, None, :], np.empty((0, 2))):
+        np.testing.assert_array_equal(track.zb(p), -seabed.depth(p))
+    g = track.gradient(cable[50])
+    e = np.eye(2)
+    np.testing.assert_array_equal(g, [(-seabed.depth(cable[50] + e[k]) + seabed.depth(cable[50] - e[k])) / 2.0
+                                      for k in range(2)])
+    assert Track3D(route, seabed_map(route, None, None, 1000.0))._memo is None        # flat: nothing to remember
+    assert track.highest == -float(np.min(seabed.table[1]))      # nodes above it are not looked up
+    # over a regular grid a single point gives a single elevation (the 3-D lay's start takes float() of it)
+    x, y = np.linspace(-1e3, 21e3, 12), np.linspace(-1e3, 1e3, 5)
+    grid = seabed_map(route, None, BathymetryGrid(x=tuple(x), y=tuple(y), depth=tuple(
+        tuple(900.0 + 0.01 * x + yi * 0.02) for yi in y)), math.nan)
+    z = Track3D(route, grid).zb(cable[7])
+    assert z.shape == () and z == -grid.depth(cable[7])[0] and Track3D(route, grid).highest == -870.0

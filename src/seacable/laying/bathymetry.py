@@ -10,6 +10,7 @@ needs a geographic route: points are taken back to degrees with the route's proj
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -176,6 +177,7 @@ class SeabedMap:
     """Water depth at any (x, y) near a route: from a KP table along it, or from a grid.
 
     ``depth(xy)`` returns NaN outside a grid; :meth:`check_covers` says where the route leaves it.
+    ``shallowest`` is the least depth anywhere [m] (NaN when none is known).
     """
 
     def __init__(self, route: RouteGeometry, *, table: tuple[np.ndarray, np.ndarray] | None = None,
@@ -184,6 +186,9 @@ class SeabedMap:
         self._flat = depth
         self._interp = None
         self.kind = "xy"
+        # the least depth anywhere, as linear interpolation stays within the values it interpolates [m]
+        self.shallowest = float(np.min(table[1])) if table is not None else float(depth) if depth is not None \
+            else math.nan
         if grid is not None:
             from scipy.interpolate import LinearNDInterpolator, RegularGridInterpolator
 
@@ -192,6 +197,8 @@ class SeabedMap:
                 raise InputError(f"{source}: a grid in longitude and latitude needs a route in latitude and "
                                  "longitude (to project between them). Suggested fix: give the route's waypoints "
                                  "as latitude and longitude, or the grid in x and y [m].")
+            known = d[np.isfinite(d)]
+            self.shallowest = float(np.min(known)) if known.size else math.nan
             if d.ndim == 2:
                 d = np.where(np.isinf(d), np.nan, d)
                 rgi = RegularGridInterpolator((b, a), d, bounds_error=False, fill_value=np.nan)
@@ -201,6 +208,11 @@ class SeabedMap:
                 lnd = LinearNDInterpolator(np.column_stack([a, b]), d)
                 self._interp = lambda p, f=lnd: f(p[..., 0], p[..., 1])
                 self.bounds = (a.min(), a.max(), b.min(), b.max())
+
+    @property
+    def flat(self) -> bool:
+        """Whether the depth is the same everywhere (no KP table, no grid)."""
+        return self._interp is None and self.table is None
 
     def depth(self, xy, kp=None) -> np.ndarray:
         """Water depth at points (x, y); NaN outside a grid. [m]

@@ -187,6 +187,14 @@ class RouteGeometry:
         self.length = np.hypot(d[:, 0], d[:, 1])              # of each leg [m]
         self.direction = d / self.length[:, None]              # unit vector of each leg
         self.kp = kp_start + np.concatenate([[0.0], np.cumsum(self.length)])   # of each vertex [m]
+        # each leg for locate: start, direction, and the bounds of the distance along it (the end legs extended)
+        lo, hi = np.zeros(len(self.length)), self.length.copy()
+        lo[0], hi[-1] = -np.inf, np.inf
+        self._legs = (self.xy[:-1, 0].copy(), self.xy[:-1, 1].copy(), self.direction[:, 0].copy(),
+                      self.direction[:, 1].copy(), lo, hi)
+        x, y = self.xy[:, 0], self.xy[:, 1]
+        self._boxes = (np.minimum(x[:-1], x[1:]), np.maximum(x[:-1], x[1:]), np.minimum(y[:-1], y[1:]),
+                       np.maximum(y[:-1], y[1:]))           # bounding box of each leg
         self.turn_kp = self.kp[kinks]
         self.waypoint_kp = self.locate(self.waypoints)[0] if turn_radius is not None else self.kp.copy()
 
@@ -239,8 +247,9 @@ class RouteGeometry:
         """KP of the nearest point of the route to each point, and the lateral offset (+ to port). [m]
 
         Beyond the route's ends the first and last legs are extended, so a point before the start has a
-        KP below ``kp_start``. A route of many legs is searched through a k-d tree of points every
-        ``_SAMPLE`` m along it (:meth:`_candidates`); the answer is the same as comparing every leg.
+        KP below ``kp_start``. A route of many legs compares each point with the legs near it only
+        (:meth:`_candidates`); the answer is the same as comparing every leg, bit for bit (a point as far from
+        two legs, as past the outside of an alter-course, goes to the first of them).
         """
         p = np.asarray(xy, float).reshape(-1, 2)
         shape = np.asarray(xy).shape[:-1]
@@ -253,55 +262,107 @@ class RouteGeometry:
 
     _SAMPLE = 10.0         # m between the points of the k-d tree
     _K = 16                # nearest tree points whose legs are compared
+    _PAIRS = 4096          # points x legs compared directly, at most
+    _GROUP = 32            # consecutive points given the same legs by _nearby
+    _WIDE = 64             # legs of a group, at most (else the k-d tree, point by point)
 
-    def _candidates(self, q: np.ndarray) -> np.ndarray:
-        """Legs to compare for each point, (m, c): all of them for a route of few legs; else the legs of the
-        ``_K`` nearest tree points and the two end legs. That holds the nearest leg whenever every tree point
-        closer than the nearest one plus ``_SAMPLE`` is among the ``_K`` (a leg's foot of perpendicular has a
-        tree point of its leg within ``_SAMPLE / 2``); the other points get every leg."""
+    def _candidates(self, q: np.ndarray) -> np.ndarray | _Ragged | None:
+        """Legs to compare for each point, (m, c) in order of leg, or ``None`` for every leg.
+
+        Every leg for a route of at most ``_K`` legs or a call of few points (at most ``_PAIRS`` point-leg
+        pairs); else the legs near groups of consecutive points (:meth:`_nearby`), as a cable's nodes come; else,
+        for points far apart, the legs of each point's ``_K`` nearest tree points and the two end legs.
+
+        That last holds the nearest leg whenever every tree point within ``sqrt(d0^2 + _SAMPLE^2)`` of the point
+        is among the ``_K``, ``d0`` the distance of the nearest tree point: the nearest leg, at ``d <= d0``, has a
+        tree point within ``_SAMPLE / 2`` of the foot of the perpendicular, at ``sqrt(d^2 + _SAMPLE^2 / 4)`` from
+        the point (a margin of 3/4 ``_SAMPLE^2`` over that). The other points get every leg. (The bound
+        ``d0 + _SAMPLE`` holds too, but a point a few hundred metres off the route has about 20 tree points
+        within it: more than ``_K``, so it was compared with every leg.)"""
         n_leg = len(self.length)
-        every = np.broadcast_to(np.arange(n_leg), (len(q), n_leg))
-        if n_leg <= self._K:
-            return every
+        if n_leg <= self._K or len(q) * n_leg <= self._PAIRS:
+            return None
+        cand = self._nearby(q)
+        if cand is not None:
+            return cand
+        dist, idx = self._sample_tree().query(q, k=self._K)
+        cand = np.sort(np.column_stack([self._tree_leg[idx], np.zeros(len(q), int), np.full(len(q), n_leg - 1)]),
+                       axis=1)
+        unsure = dist[:, -1] ** 2 <= dist[:, 0] ** 2 + self._SAMPLE ** 2
+        if unsure.any():
+            return _Ragged(cand, unsure)
+        return cand
+
+    def _sample_tree(self):
+        """The k-d tree of points every ``_SAMPLE`` m along the legs (``_tree_leg``: the leg of each)."""
         if getattr(self, "_tree", None) is None:
             from scipy.spatial import cKDTree
 
             pts, legs = [], []
-            for k in range(n_leg):
+            for k in range(len(self.length)):
                 n = max(int(np.ceil(self.length[k] / self._SAMPLE)), 1)
                 u = np.linspace(0.0, self.length[k], n + 1)
                 pts.append(self.xy[k] + u[:, None] * self.direction[k])
                 legs.append(np.full(n + 1, k))
             self._tree, self._tree_leg = cKDTree(np.vstack(pts)), np.concatenate(legs)
-        dist, idx = self._tree.query(q, k=self._K)
-        cand = np.column_stack([self._tree_leg[idx], np.zeros(len(q), int), np.full(len(q), n_leg - 1)])
-        unsure = dist[:, -1] < dist[:, 0] + self._SAMPLE
-        if unsure.any():
-            return _Ragged(cand, unsure, n_leg)
-        return cand
+        return self._tree
+
+    def _nearby(self, q: np.ndarray) -> np.ndarray | None:
+        """Legs near each group of ``_GROUP`` consecutive points, (m, c) in order of leg; ``None`` when a group
+        has more than ``_WIDE`` legs near it (points far apart).
+
+        A group's points lie in a box of half-diagonal ``R`` whose centre is ``d0`` from the nearest tree point,
+        so each of them is within ``M = d0 + R`` of the route. A leg whose bounding box stays more than ``M``
+        (plus a metre for rounding) from the group's box is farther than that from all of its points: it can be
+        neither the nearest leg nor tie with it. The end legs, extended beyond the route's ends, are always in.
+        """
+        m, g = len(q), self._GROUP
+        n = -(-m // g)
+        fill = np.minimum(np.arange(n * g), m - 1)          # the last group filled up with its last point
+        gx, gy = q[fill, 0].reshape(n, g), q[fill, 1].reshape(n, g)
+        x0, x1, y0, y1 = gx.min(axis=1), gx.max(axis=1), gy.min(axis=1), gy.max(axis=1)
+        d0, _ = self._sample_tree().query(np.column_stack([0.5 * (x0 + x1), 0.5 * (y0 + y1)]))
+        reach = d0 + 0.5 * np.hypot(x1 - x0, y1 - y0) + 1.0
+        x_lo, x_hi, y_lo, y_hi = self._boxes
+        near = ((x_lo <= (x1 + reach)[:, None]) & (x_hi >= (x0 - reach)[:, None]) & (y_lo <= (y1 + reach)[:, None])
+                & (y_hi >= (y0 - reach)[:, None]))
+        near[:, 0] = near[:, -1] = True
+        group, leg = np.nonzero(near)
+        count = np.bincount(group, minlength=n)
+        if count.max() > self._WIDE:
+            return None
+        cand = np.zeros((n, count.max()), int)      # short rows padded with leg 0, their first: ties go to it
+        cand[group, np.arange(len(leg)) - (np.cumsum(count) - count)[group]] = leg
+        return np.repeat(cand, g, axis=0)[:m]
 
     def _nearest(self, q: np.ndarray, cand) -> tuple[np.ndarray, np.ndarray]:
-        """KP and offset of each point's nearest point on its candidate legs."""
+        """KP and offset of each point's nearest point on its candidate legs, (m, c) leg numbers or ``None`` for
+        every leg."""
         if isinstance(cand, _Ragged):
             kp, off = self._nearest(q, cand.sure)
-            every = np.broadcast_to(np.arange(cand.n_leg), (int(cand.unsure.sum()), cand.n_leg))
-            kp[cand.unsure], off[cand.unsure] = self._nearest(q[cand.unsure], every)
+            kp[cand.unsure], off[cand.unsure] = self._nearest(q[cand.unsure], None)
             return kp, off
-        n_leg = len(self.length)
-        start, d, length = self.xy[cand], self.direction[cand], self.length[cand]
-        rel = q[:, None, :] - start                                          # (m, c, 2)
-        along = np.einsum("mck,mck->mc", rel, d)
-        lo = np.where(cand == 0, -np.inf, 0.0)
-        hi = np.where(cand == n_leg - 1, np.inf, length)
-        t = np.clip(along, lo, hi)
-        foot = start + t[..., None] * d
-        dist = np.hypot(*(q[:, None, :] - foot).transpose(2, 0, 1))
+        legs = self._legs                                   # x0, y0, ux, uy, lower and upper bound of t
+        if cand is not None:
+            legs = [a[cand] for a in legs]                  # (m, c) each; else (n_leg,), broadcast on (m, n_leg)
+        x0, y0, ux, uy, lo, hi = legs
+        qx, qy = q[:, :1], q[:, 1:]
+        rx, ry = qx - x0, qy - y0
+        t = np.clip(rx * ux + ry * uy, lo, hi)              # along the leg from its start, clipped to it
+        ex, ey = qx - (x0 + t * ux), qy - (y0 + t * uy)      # from the foot to the point
+        # the first leg of least distance as numpy.hypot has it, hypot (slow) taken only where the square is
+        # within 1e-9 of the least (hypot and the square, both within an ulp or two, order the others alike)
+        sq = ex * ex + ey * ey
+        close = sq <= sq.min(axis=1, keepdims=True) * (1.0 + 1e-9)
+        dist = np.full(sq.shape, np.inf)
+        dist[close] = np.hypot(ex[close], ey[close])
         best = np.argmin(dist, axis=1)
         rows = np.arange(len(q))
-        leg = cand[rows, best]
-        r, db = rel[rows, best], d[rows, best]
-        side = db[:, 0] * r[:, 1] - db[:, 1] * r[:, 0]
-        return self.kp[leg] + t[rows, best], np.where(side < 0.0, -1.0, 1.0) * dist[rows, best]
+        leg = best if cand is None else cand[rows, best]
+        ub, vb = self._legs[2][leg], self._legs[3][leg]
+        side = ub * ry[rows, best] - vb * rx[rows, best]
+        return (self.kp[leg] + t[rows, best],
+                np.where(side < 0.0, -1.0, 1.0) * np.hypot(ex[rows, best], ey[rows, best]))
 
     def variables(self) -> dict:
         """The route for a result: ``waypoint_x/y/kp`` (as given) and ``route_x/y`` (the track's vertices, with
@@ -388,5 +449,5 @@ def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarr
 class _Ragged:
     """Candidates of :meth:`RouteGeometry._candidates` where some points need every leg."""
 
-    def __init__(self, sure: np.ndarray, unsure: np.ndarray, n_leg: int):
-        self.sure, self.unsure, self.n_leg = sure, unsure, n_leg
+    def __init__(self, sure: np.ndarray, unsure: np.ndarray):
+        self.sure, self.unsure = sure, unsure

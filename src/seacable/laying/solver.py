@@ -233,11 +233,20 @@ def _touchdown_distance(track, chute: np.ndarray, t: np.ndarray, step: float) ->
         raise InputError(f"the seabed at the water entry {tuple(round(float(v), 3) for v in chute[:-1])} m is at or "
                          f"above the sea surface (z = {float(track.zb(chute[:-1])):g} m). Suggested fix: check the "
                          "depth or bathymetry.")
-    for _ in range(10**6):
-        b = a + step
-        if f(b) <= 0.0:
-            return brentq(f, a, b, xtol=1e-12)
-        a = b
+    # the first step down the line that reaches the seabed, looked for in blocks of steps (a seabed look-up each)
+    done, block = 0, 64
+    while done < 10**6:
+        ends = [a]
+        for _ in range(min(block, 10**6 - done)):
+            ends.append(ends[-1] + step)
+        p = chute - np.array(ends[1:])[:, None] * t
+        below = np.flatnonzero(p[:, -1] - track.zb(p[:, :-1]) <= 0.0)
+        if below.size:
+            k = int(below[0])
+            return brentq(f, ends[k], ends[k + 1], xtol=1e-12)
+        a = ends[-1]
+        done += len(ends) - 1
+        block = min(2 * block, 4096)
     raise InputError("the cable from the ship does not reach the seabed within 1e6 segments. "
                      "Suggested fix: check the depth (m) and the segment length (m).")
 
@@ -319,7 +328,7 @@ class _Lay:
             raise InputError(f"the run starts with {pre:.6g} m of cable on the seabed and {ell:.6g} m suspended, "
                              f"but the line is {par.cable_length:.6g} m long. Suggested fix: make the line (the "
                              "cable on board) longer.")
-        self.laid = {"p": [np.append(h, float(track.zb(h))) for h in laid_h],
+        self.laid = {"p": [np.append(h, float(z)) for h, z in zip(laid_h, track.zb(np.array(laid_h)))],
                      "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1)}
         for r, rep in enumerate(reps):
             if rep.s <= pre:
@@ -568,16 +577,17 @@ class _Lay:
         touchdown behind for good once the cable bridges a hollow while the rest of it rests on the
         seabed further on.
         """
-        c, track = self.c, self.track
+        c = self.c
+        free = self.seabed_under(c.pos[c.lo + 1:c.hi])     # under the free nodes, in one look-up
         rows = slice(c.lo + 2, c.hi)           # a seabed rising under the cable holds it up
-        zb = track.zb(c.pos[rows, :-1])
+        zb = free[1:]
         under = c.pos[rows, -1] < zb
         c.pos[rows, -1] = np.where(under, zb, c.pos[rows, -1])
         c.vel[rows, -1] = np.where(under, np.maximum(c.vel[rows, -1], 0.0), c.vel[rows, -1])
-        first = self.landing_row(c.pos)
+        first = self.landing_row(c.pos, free[:-1])
         arrived_slack = not c.active[c.lo]
         for k in range(c.lo + 1, first + 1):
-            zb = float(track.zb(c.pos[k, :-1]))
+            zb = float(free[k - c.lo - 1])
             c.pos[k, -1] = max(c.pos[k, -1], zb) if k < first else zb
             c.vel[k] = 0.0
             self.laid["p"].append(c.pos[k].copy())
@@ -593,15 +603,26 @@ class _Lay:
                 # chain between fixed ends has no well-defined tension)
                 c.active[first], c.T[first] = 0, 0.0
 
-    def landing_row(self, pos: np.ndarray) -> int:
+    def landing_row(self, pos: np.ndarray, zb: np.ndarray | None = None) -> int:
         """Row of the first node on the seabed counting from the ship side (``c.lo`` if none).
 
-        One free node is always kept below the water entry.
+        One free node is always kept below the water entry. ``zb``: the seabed under rows ``c.lo + 1`` to
+        ``c.hi - 2`` of ``pos`` when known.
         """
         c = self.c
         rows = pos[c.lo + 1:c.hi - 1]
-        on = np.flatnonzero(rows[:, -1] <= self.track.zb(rows[:, :-1]) + 1e-9)
+        zb = self.seabed_under(rows) if zb is None else zb
+        on = np.flatnonzero(rows[:, -1] <= zb + 1e-9)
         return c.lo + 1 + int(on[-1]) if on.size else c.lo
+
+    def seabed_under(self, pos: np.ndarray) -> np.ndarray:
+        """Seabed elevation under nodes ``pos`` (rows of ``dim`` coordinates); ``-inf`` under those more than a
+        metre above the highest seabed anywhere (``track.highest``), which are neither on nor under it. [m]"""
+        zb = np.full(len(pos), -np.inf)
+        low = pos[:, -1] <= getattr(self.track, "highest", math.inf) + 1.0
+        if low.any():
+            zb[low] = self.track.zb(pos[low, :-1])
+        return zb
 
     def trial_bottom_tension(self) -> float:
         """Bottom tension of the step just solved (``c.new_pos``, ``c.T``), not committed. [N]

@@ -14,6 +14,8 @@ the waypoints.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["Track2D", "Track3D"]
@@ -26,6 +28,7 @@ class Track2D:
 
     def __init__(self, seabed):
         self.seabed = seabed
+        self.highest = float(np.max(seabed.zb))     # the seabed's highest elevation anywhere [m]
 
     def point(self, d: float) -> np.ndarray:
         return np.array([d, 0.0])
@@ -51,12 +54,19 @@ class Track3D:
 
     ``gradient`` is the central difference of the depth over ``delta`` either side (1 m), and ``run`` the
     length of the laid cable's polyline of points on the seabed.
+
+    The time loop asks for the seabed under the same nodes several times a step (landing, the touchdown point,
+    the output), and a KP table locates every point on the route: ``zb`` remembers the points it was last asked
+    for (:class:`_Memo`), and looks up only the others.
     """
 
     dim = 3
 
     def __init__(self, route, seabed, delta: float = 1.0):
         self.route, self.seabed, self.delta = route, seabed, delta
+        shallowest = getattr(seabed, "shallowest", math.nan)
+        self.highest = -shallowest if math.isfinite(shallowest) else math.inf   # highest seabed elevation [m]
+        self._memo = None if getattr(seabed, "flat", False) else _Memo()
 
     def point(self, d: float) -> np.ndarray:
         x, y = self.route.point(d)
@@ -67,7 +77,10 @@ class Track3D:
         return np.array([np.cos(h), np.sin(h)])
 
     def zb(self, ph) -> np.ndarray:
-        return -self.seabed.depth(np.asarray(ph, float))
+        p = np.asarray(ph, float)
+        if self._memo is None:
+            return -self.seabed.depth(p)
+        return self._memo.get(p, lambda q: -self.seabed.depth(q))
 
     def gradient(self, ph) -> np.ndarray:
         p = np.asarray(ph, float)
@@ -78,3 +91,43 @@ class Track3D:
     def run(self, points) -> float:
         p = np.asarray(points, float)
         return float(np.sum(np.sqrt(np.sum(np.diff(p, axis=0) ** 2, axis=1))))
+
+
+class _Memo:
+    """Values of a function of horizontal points (x, y), remembered by the points' exact coordinates.
+
+    The points are kept as complex numbers ``x + iy`` (the same bits), sorted, and found by
+    ``numpy.searchsorted``: a point asked for again gets the value computed for it, bit for bit. A call where
+    most of more than a few points are new (the cable after a time step) starts the memory afresh from its
+    points, so it holds the last state of the cable and the few points asked for since; others add their new
+    points.
+    """
+
+    _FEW = 4              # new points a call may add to the memory, whatever its size
+    _CAP = 4096           # points remembered, at most (then a call starts afresh)
+
+    def __init__(self):
+        self.keys = np.empty(0, complex)
+        self.values = np.empty(0)
+
+    def get(self, p: np.ndarray, f) -> np.ndarray:
+        """``f(p)`` for points ``p`` (shape (..., 2)), from memory where it holds them."""
+        key = np.ascontiguousarray(p).reshape(-1, 2).view(complex)[:, 0]
+        out = np.empty(key.size)
+        if self.keys.size:
+            i = np.minimum(np.searchsorted(self.keys, key), self.keys.size - 1)
+            hit = self.keys[i] == key
+            out[hit] = self.values[i[hit]]
+            new = np.flatnonzero(~hit)
+        else:
+            new = np.arange(key.size)
+        if new.size:
+            out[new] = f(p.reshape(-1, 2)[new])
+            if (new.size > self._FEW and 2 * new.size > key.size) or self.keys.size + new.size > self._CAP:
+                order = np.argsort(key)
+                self.keys, self.values = key[order], out[order]
+            else:
+                order = new[np.argsort(key[new])]
+                at = np.searchsorted(self.keys, key[order])
+                self.keys, self.values = np.insert(self.keys, at, key[order]), np.insert(self.values, at, out[order])
+        return out.reshape(p.shape[:-1])
