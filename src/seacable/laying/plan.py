@@ -384,7 +384,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         # depth can have two roots where the seabed falls away)
         reach = _straight_layback(h_ship, speed_eff, props, water_density)
         omega = speed_eff * _curvature(kp - reach, turn_kp, turn, h_ship)
-        omega[np.abs(omega) * reach**2 < 1e-9 * speed_eff] = 0.0     # a turn moving the touchdown by under a um
+        omega[np.abs(omega) * reach**2 < 1e-4 * speed_eff] = 0.0     # a turn moving the touchdown by under 0.01 mm (cut ~ 0.08 L^2 Omega / V)
         # the span's direction (for the current across it and the seabed's slope): the route's heading there, spread
         psi_td = _smooth_heading(kp - reach, 0.5 * (_AFTER + _BEFORE) * h_ship, turn_kp, turn, route.heading(kp - reach))
         e1 = np.column_stack([np.cos(psi_td), np.sin(psi_td)])
