@@ -378,13 +378,14 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         props = props_at(s_td)
         per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
         # the span's speed (the ship's, lagged by the pay-out time tau) and its turn rate (the route's curvature
-        # under the touchdown, spread over the alter-course's transient, :func:`_turn_rate`)
+        # near the touchdown, spread over the alter-course's transient: :func:`_curvature`)
         speed_eff = _lag(kp, vs, vs, tau)
         # (at the straight span's touchdown over the depth under the ship: kept off the iterated touchdown, whose
         # depth can have two roots where the seabed falls away)
         reach = _straight_layback(h_ship, speed_eff, props, water_density)
         omega = speed_eff * _curvature(kp - reach, turn_kp, turn, h_ship)
-        omega[np.abs(omega) * reach**2 < 1e-4 * speed_eff] = 0.0     # a turn moving the touchdown by under 0.01 mm (cut ~ 0.08 L^2 Omega / V)
+        # (a turn that would move the touchdown by under 0.01 mm, the cut being about 0.08 L^2 Omega / V: none)
+        omega[np.abs(omega) * reach**2 < 1e-4 * speed_eff] = 0.0
         # the span's direction (for the current across it and the seabed's slope): the route's heading there, spread
         psi_td = _smooth_heading(kp - reach, 0.5 * (_AFTER + _BEFORE) * h_ship, turn_kp, turn, route.heading(kp - reach))
         e1 = np.column_stack([np.cos(psi_td), np.sin(psi_td)])
