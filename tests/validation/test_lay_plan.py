@@ -189,13 +189,11 @@ def test_plan_against_the_dynamic_model_under_bottom_tension(dynamic_and_plan):
     assert float(d.payout_speed.where(late).mean()) == pytest.approx(float(mid.payout_speed), rel=1e-4)
 
 
-def _station(lt):
-    from seacable.laying.plan import N_STATION_PROPS
+def _station(case):
+    """The case's cable as the planner sees it (its station properties)."""
+    from seacable.laying.plan_run import _station_props
 
-    p = np.zeros(N_STATION_PROPS)
-    p[:] = (lt.submerged_weight(RHO, G), lt.diameter, lt.drag_normal, lt.drag_tangential,
-            lt.mass_per_length + lt.added_mass_per_length(RHO), 0.0, lt.mass_per_length)
-    return p
+    return _station_props(case)(np.zeros(1))[0]
 
 
 def test_steady_turn_tends_to_the_straight_lay_and_is_symmetric():
@@ -208,7 +206,7 @@ def test_steady_turn_tends_to_the_straight_lay_and_is_symmetric():
     from seacable.laying.plan import steady_turn
 
     lt = _cable()
-    p = _station(lt)
+    p = _station(_case(depth=1000.0, line_type=lt))
     ref = straight_line_lay(1000.0, 1.5, p[0], lt.diameter, lt.drag_normal, lt.drag_tangential,
                             payout_speed=1.05 * 1.5, water_density=RHO)
     far = steady_turn(p, 1000.0, 1.5, 1e7, water_density=RHO, slack=0.05)
@@ -239,7 +237,7 @@ def test_plan_through_alter_courses_matches_the_dynamic_lay():
       transient (`_curvature`, fitted to the dynamic model at 1 m/s); peak to 0.2 m.
     * Everywhere, including the transients into and out of the arcs: within 1 m (measured 0.67 m, where the
       touchdown reaches the sharp alter-course)."""
-    from seacable.laying.plan import N_STATION_PROPS, steady_turn
+    from seacable.laying.plan import steady_turn
 
     a = math.radians(20.0)
     b, c = a - math.pi / 2.0, a - math.pi
@@ -252,8 +250,9 @@ def test_plan_through_alter_courses_matches_the_dynamic_lay():
                         drag_tangential=0.01, name="paper001")
     env = sc.Environment(water_density=1030.0, depth=100.0)
     line = sc.Line.single(cable, 20000.0)
-    plan = sc.run(sc.Case(name="plan", line=line, environment=env, analysis=LayPlanAnalysis(
-        route=route, ship=PlanShip(speed=1.0), target=LayTarget(slack=0.05), kp_step=5.0)))
+    plan_case = sc.Case(name="plan", line=line, environment=env, analysis=LayPlanAnalysis(
+        route=route, ship=PlanShip(speed=1.0), target=LayTarget(slack=0.05), kp_step=5.0))
+    plan = sc.run(plan_case)
     lay = sc.run(sc.Case(name="lay", line=line, environment=env, analysis=sc.LayingDynamicAnalysis(
         ship=sc.ShipMotion(speed=1.0, start_x=600.0), payout=sc.PayoutSlack(slack=0.05), duration=3900.0,
         segment_length=2.0, output_interval=5.0, route=route)))
@@ -264,9 +263,7 @@ def test_plan_through_alter_courses_matches_the_dynamic_lay():
     np.testing.assert_allclose(planned[after], dynamic[after], rtol=0, atol=1.0)
     corner = (kp > 1000.0) & (kp < 1500.0)
     assert float(planned[corner].max()) == pytest.approx(float(dynamic[corner].max()), abs=0.2)
-    props = np.zeros(N_STATION_PROPS)
-    props[:] = (4.49, 0.0225, 1.85, 0.01, 0.867 + 1030.0 * math.pi * 0.0225**2 / 4.0, 0.0, 0.867)
-    cut = steady_turn(props, 100.0, 1.0, -300.0, water_density=1030.0, slack=0.05)["cut"]
+    cut = steady_turn(_station(plan_case), 100.0, 1.0, -300.0, water_density=1030.0, slack=0.05)["cut"]
     steady = (kp > 3900.0) & (kp < 4100.0)
     np.testing.assert_allclose(planned[steady], -cut, rtol=0, atol=0.01)
     np.testing.assert_allclose(dynamic[steady], -cut, rtol=0, atol=0.05)

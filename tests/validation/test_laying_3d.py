@@ -114,14 +114,14 @@ def test_turning_ship_lays_the_cable_inside_its_track_as_the_turning_span_predic
     average (measured 100.3 N; tolerance 1 N) and within 10 N as the 2 m nodes land (measured 91.5-106.5 N),
     and the layback of a catenary meeting the seabed tangentially is found to a node's landing (measured 0.4-1.2
     m short; tolerance 1.5 m)."""
-    from seacable.laying.plan import N_STATION_PROPS, steady_turn
+    from seacable.laying.plan import steady_turn
+    from seacable.laying.plan_run import _station_props
 
     payout = sc.PayoutSlack(slack=0.05) if bottom is None else sc.PayoutBottomTension(tension=bottom)
-    ds = sc.run(_case(route=_circle(radius), duration=1600.0, mass=mass, start=150.0, payout=payout,
-                      extensible=bottom is not None))
-    props = np.zeros(N_STATION_PROPS)
-    props[:] = (W, 0.0225, 1.85, 0.01, mass + RHO * math.pi * 0.0225**2 / 4.0, 0.0 if bottom is None else 1 / 3e7,
-                mass)
+    case = _case(route=_circle(radius), duration=1600.0, mass=mass, start=150.0, payout=payout,
+                 extensible=bottom is not None)
+    ds = sc.run(case)
+    props = _station_props(case)(np.zeros(1))[0]          # the same cable, as the planner sees it
     target = {"slack": 0.05} if bottom is None else {"bottom_tension": bottom}
     ref = steady_turn(props, 100.0, 1.0, radius, water_density=RHO, **target)
     side = math.copysign(1.0, radius)             # the offset is + to port: inside a port turn
