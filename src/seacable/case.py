@@ -370,6 +370,13 @@ class LayingDynamicAnalysis(Model):
         None, description="Angle of the initial straight cable; default the steady laying angle. [rad]")
     extensible: bool = Field(False, description="Elastic cable with the line type's axial_stiffness; "
                                                 "default inextensible (paper eq. (15)).")
+    laid_cable: Literal["held", "sliding"] = Field(
+        "held", description="'held': laid cable stays where it lands (friction without limit); 'sliding': the "
+                            "laid cable near the touchdown slides on the seabed against Coulomb friction "
+                            "(environment.seabed.friction), pulled by the cable's tension and its weight on a slope.")
+    friction_distance: quantity("m", gt=0) = Field(
+        1e-3, description="With laid_cable 'sliding': the slip at which the friction reaches its limit; below it the "
+                          "laid cable is held by a spring of stiffness mu R / friction_distance. [m]")
     slack_window: quantity("s", gt=0) = Field(60.0, description="Time over which slack is measured. [s]")
     tolerance: quantity("-", gt=0, lt=1e-3) = Field(1e-9, description="Newton tolerance, relative. [-]")
     max_iterations: int = Field(50, ge=2, le=1000, description="Newton iterations per step.")

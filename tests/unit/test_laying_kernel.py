@@ -19,7 +19,7 @@ def _residual_and_blocks(r, T, b, G, act, L, comp):
     K._chords(r, c, ell)
     lo, di, up = np.zeros((nseg, 3, 3)), np.zeros((nseg, 3, 3)), np.zeros((nseg, 3, 3))
     rhs = np.zeros((nseg, 3))
-    K._assemble(r, b, G, T, act, c, ell, L, comp, lo, di, up, rhs)
+    K._assemble(r, b, G, T, act, c, ell, L, comp, lo, di, up, rhs, K.no_contact(r.shape[0], 2))
     return -rhs, lo, di, up
 
 
@@ -74,7 +74,7 @@ def test_single_node_sinks_at_the_backward_euler_rate():
     dt = 0.1
     status, _, _ = K.implicit_step(pos, vel, pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
                                np.zeros((3, 4)), np.zeros(1), np.zeros((1, 2)), 1025.0, dt, T, act, 0.0,
-                               1e-12, 20, 5, new_pos, new_vel)
+                               K.no_contact(3, 2), 1e-12, 20, 5, new_pos, new_vel)
     assert status == K.STEP_OK
     accel = weight / mass                          # net weight over mass, per unit length
     # the free node's backward-Euler step, to round-off
@@ -82,3 +82,62 @@ def test_single_node_sinks_at_the_backward_euler_rate():
     assert math.isclose(new_pos[1, 1], -5.0 - accel * dt * dt, rel_tol=1e-13)
     assert new_vel[1, 0] == 0.0
     assert np.all(T == 0.0)
+
+
+def test_jacobian_with_nodes_sliding_on_the_seabed_matches_finite_differences():
+    """3-D, three nodes on the seabed (each in its tangent plane, ``_on_plane``): two sliding (farther from their
+    anchors than the friction's slip distance, Coulomb's branch) and one holding (the spring's branch); the
+    friction's derivative in the diagonal blocks against central differences (h = 1e-6 m against a kink 2e-3 m
+    away)."""
+    rng = np.random.default_rng(2)
+    n, dim = 6, 3
+    r = np.array([[k * 0.9, 0.3 * k, k * 0.5 + 0.1 * rng.standard_normal()] for k in range(n + 1)])
+    old = r + 0.01 * rng.standard_normal(r.shape)
+    anchor = r + 0.02 * rng.standard_normal(r.shape)
+    anchor[4] = r[4] + 1e-3                     # 1.7e-3 m from it, within the 5e-3 m slip distance
+    b = r + 0.01 * rng.standard_normal(r.shape)
+    G = np.zeros((n + 1, dim, dim))
+    normal = rng.standard_normal((n + 1, dim))
+    normal /= np.linalg.norm(normal, axis=1)[:, None]
+    contact = np.array([0, 1, 1, 0, 1, 0, 0])
+    for i in range(n + 1):
+        a = rng.standard_normal((dim, dim))
+        G[i] = 0.01 * (a @ a.T + np.eye(dim))
+        if contact[i]:
+            K._on_plane(G[i], b[i], old[i], normal[i], dim)
+    seabed = (contact, normal, rng.uniform(1.0, 3.0, n + 1), anchor, 5e-3)
+    T = rng.uniform(1.0, 5.0, n)
+    act = np.ones(n, dtype=np.int64)
+    L, comp = np.ones(n), np.full(n, 1e-3)
+    m = dim + 1
+
+    def residual_and_blocks(r2, T2):
+        c, ell = np.zeros((n, dim)), np.zeros(n)
+        K._chords(r2, c, ell)
+        lo, di, up, rhs = np.zeros((n, m, m)), np.zeros((n, m, m)), np.zeros((n, m, m)), np.zeros((n, m))
+        K._assemble(r2, b, G, T2, act, c, ell, L, comp, lo, di, up, rhs, seabed)
+        return -rhs, lo, di, up
+
+    _, lo, di, up = residual_and_blocks(r, T)
+    J = np.zeros((m * n, m * n))
+    for k in range(n):
+        J[m * k:m * k + m, m * k:m * k + m] = di[k]
+        if k > 0:
+            J[m * k:m * k + m, m * k - m:m * k] = lo[k]
+        if k < n - 1:
+            J[m * k:m * k + m, m * k + m:m * k + 2 * m] = up[k]
+
+    def shifted(u):
+        r2, T2 = r.copy(), T.copy()
+        for k in range(n):
+            T2[k] += u[m * k]
+            if k + 1 < n:
+                r2[k + 1] += u[m * k + 1:m * k + m]
+        return residual_and_blocks(r2, T2)[0].ravel()
+
+    h = 1e-6
+    Jfd = np.column_stack([(shifted(h * e) - shifted(-h * e)) / (2 * h) for e in np.eye(m * n)])
+    keep = np.ones(m * n, bool)
+    keep[-dim:] = False                          # the last block's padding rows/columns
+    # the friction's second derivative ~ grip / slip^2 = 1e5 makes the h^2 truncation ~1e-7
+    np.testing.assert_allclose(J[np.ix_(keep, keep)], Jfd[np.ix_(keep, keep)], atol=1e-6)

@@ -66,7 +66,8 @@ def test_added_mass_sets_the_acceleration_of_a_falling_node(theta_deg):
     new_pos, new_vel = np.zeros_like(pos), np.zeros_like(pos)
     dt = 0.05
     status, _, _ = K.implicit_step(pos, np.zeros_like(pos), pos[-1].copy(), L, np.zeros(2, dtype=np.int64), props,
-                                   np.zeros((3, 4)), np.zeros(1), np.zeros((1, 2)), 1025.0, dt, T, act, 0.0, 1e-12, 20, 5,
+                                   np.zeros((3, 4)), np.zeros(1), np.zeros((1, 2)), 1025.0, dt, T, act, 0.0,
+                                   K.no_contact(3, 2), 1e-12, 20, 5,
                                    new_pos, new_vel)
     assert status == K.STEP_OK and np.all(T == 0.0)
     g = np.array([0.0, -weight / mass])                    # weight over mass per metre (the node carries 6 m)

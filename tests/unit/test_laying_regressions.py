@@ -226,7 +226,7 @@ def test_a_slack_chain_pulled_taut_converges():
         new_pos, new_vel = np.zeros_like(pos), np.zeros_like(pos)
         status, _, res = K.implicit_step(pos, np.zeros_like(pos), chute, np.full(n, seg), np.zeros(n, dtype=np.int64),
                                          props, np.zeros((n + 1, 4)), np.zeros(1), np.zeros((1, 2)), 1025.0, dt, T, act,
-                                         1e-6, tol, 50, rounds, new_pos, new_vel)
+                                         1e-6, K.no_contact(n + 1, 2), tol, 50, rounds, new_pos, new_vel)
         return status, res, T, act, new_vel
 
     status, res, _, _, _ = step(20)

@@ -68,7 +68,9 @@ __all__ = [
     "STEP_OK",
     "STEP_SINGULAR",
     "current_at",
+    "drag_anchors",
     "implicit_step",
+    "no_contact",
 ]
 
 # Columns of the per-type property table (per unit unstretched length).
@@ -81,6 +83,11 @@ STEP_ACTIVE_SET = 2       # converged each time, but segments kept going slack /
 STEP_SINGULAR = 3         # the Newton matrix was singular
 # Columns of the per-node point-mass table (repeaters).
 Q_MASS, Q_ADDED, Q_WEIGHT, Q_CDA = range(4)
+
+
+def no_contact(npt: int, dim: int) -> tuple:
+    """The ``seabed`` argument of :func:`implicit_step` for a cable with no node sliding on the seabed."""
+    return np.zeros(npt, dtype=np.int64), np.zeros((npt, dim)), np.zeros(npt), np.zeros((npt, dim)), 1.0
 
 
 @njit(cache=True)
@@ -131,12 +138,20 @@ def _invert_sym(a, dim, out):
 
 
 @njit(cache=True)
-def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, G, b):
+def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b):
     """Fill ``G_i = dt^2 A_i^-1`` and the free-motion positions ``b_i`` of the free nodes.
 
     ``A_i = M_i + dt C_i``: the node's mass, the added mass ``e_n (I - t t^T) + e_t t t^T`` of each half
     segment, and ``C_i = dD/du`` the drag's linearisation about the old velocity: for the normal drag
     ``k_n |u_n| u_n`` it is ``k_n (|u_n| (I - t t^T) + u_n u_n^T / |u_n|)`` (in 2-D ``2 k_n |u_n| n n^T``).
+
+    A node on the seabed (``contact[i]``) moves in the seabed's tangent plane through its old position (unit
+    normal ``normal[i]``): the seabed's reaction ``R n`` is the multiplier of ``n . (r - r_old) = 0``, and
+    eliminating it from ``A (r - b) / dt^2 = F + R n`` leaves the free node's form with
+
+        G' = G - G n n^T G / (n^T G n),    b' = b - G n (n . (b - r_old)) / (n^T G n),
+
+    so the Newton system keeps its blocks (``G'`` is singular along ``n``, and ``I + G' K`` is not).
     """
     npt, dim = pos.shape
     up = dim - 1                                  # the vertical coordinate
@@ -207,11 +222,31 @@ def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt
                 G[i, d, e] = dt * dt * ainv[d, e]
                 acc += G[i, d, e] * f[e]
             b[i, d] = pos[i, d] + dt * vel[i, d] + acc
+        if contact[i]:
+            _on_plane(G[i], b[i], pos[i], normal[i], dim)
+
+
+@njit(cache=True)
+def _on_plane(g, b, p0, n, dim):
+    """Restrict the node form ``r = b + g F`` to the plane through ``p0`` normal to the unit ``n`` (in place)."""
+    gn = np.empty(dim)
+    ngn = 0.0
+    gap = 0.0
+    for d in range(dim):
+        gn[d] = 0.0
+        for e in range(dim):
+            gn[d] += g[d, e] * n[e]
+        ngn += n[d] * gn[d]
+        gap += n[d] * (b[d] - p0[d])
+    for d in range(dim):
+        b[d] -= gn[d] * gap / ngn
+        for e in range(dim):
+            g[d, e] -= gn[d] * gn[e] / ngn
 
 
 @njit(cache=True)
 def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, rho, dt, T, active,
-                  compliance_floor, tol, max_iter, max_rounds, new_pos, new_vel):
+                  compliance_floor, seabed, tol, max_iter, max_rounds, new_pos, new_vel):
     """Advance the suspended cable by ``dt``; returns ``(status, iterations, residual)``.
 
     Parameters
@@ -236,6 +271,14 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
     compliance_floor : float
         Smallest compliance 1/EA used: a strain far below any cable's elastic strain that keeps the
         Newton matrix regular when a taut inextensible cable is straight between its ends. [1/N]
+    seabed : tuple (contact, normal, grip, anchor, slip)
+        Nodes resting on the seabed (laid cable free to slide, :func:`no_contact` for none): ``contact`` (N+1,)
+        int, 1 for a node that moves in the seabed's tangent plane through its old position; ``normal``
+        (N+1, D) that plane's unit normal; ``grip`` (N+1,) the friction limit ``mu R`` of each node [N];
+        ``anchor`` (N+1, D) the point each node sticks to [m], and ``slip`` the distance from it at which the
+        friction reaches its limit [m]: the friction is ``-grip d / max(|d|, slip)`` for the node's
+        distance ``d`` from its anchor in the plane (a stiff spring that holds, Coulomb's law once it slides;
+        implicit, in the Newton system). The caller moves the anchors after a step (:func:`drag_anchors`).
     tol : float
         Tolerance on the constraint residual relative to the segment length. [-]
     max_iter, max_rounds : int
@@ -261,7 +304,8 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
     m = dim + 1                                   # block size: a tension and a node's position
     G = np.zeros((npt, dim, dim))
     b = np.zeros((npt, dim))
-    _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, G, b)
+    contact, normal, grip, anchor, slip = seabed
+    _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b)
     comp = np.empty(nseg)
     for j in range(nseg):
         comp[j] = max(props[seg_type[j], P_COMPLIANCE], compliance_floor)
@@ -274,9 +318,13 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
     for d in range(dim):
         r[0, d] = pos[0, d]
         r[npt - 1, d] = chute[d]
+    vp = np.empty(dim)
+    dfric = np.empty((dim, dim))
     for i in range(1, npt - 1):
         for d in range(dim):
             fk[d] = T[i] * c[i, d] - T[i - 1] * c[i - 1, d]
+        if contact[i] and grip[i] > 0.0:      # the friction that held the old tensions
+            _friction(pos[i], anchor[i], normal[i], grip[i], slip, fk, vp, dfric)
         for d in range(dim):
             acc = b[i, d]
             for e in range(dim):
@@ -295,7 +343,7 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
         converged = False
         for it in range(max_iter + 1):
             _chords(r, c, ell)
-            residual = _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs)
+            residual = _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed)
             if residual <= tol:
                 converged = True
                 break
@@ -318,8 +366,25 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
                     T[k] = 0.0
                     active[k] = 0      # projected Newton: a segment in compression goes slack at once
                 if k + 1 < npt - 1:
+                    i = k + 1
+                    sliding = contact[i] and grip[i] > 0.0
+                    if sliding:
+                        before = _plane_offset(r[i], anchor[i], normal[i], vp)
+                        for d in range(dim):
+                            dfric[0, d] = vp[d]
                     for d in range(dim):
-                        r[k + 1, d] += scale_step * x[k, 1 + d]
+                        r[i, d] += scale_step * x[k, 1 + d]
+                    if sliding and before > slip:
+                        _plane_offset(r[i], anchor[i], normal[i], vp)
+                        turn = 0.0
+                        for d in range(dim):
+                            turn += vp[d] * dfric[0, d]
+                        if turn < 0.0:
+                            # a sliding node whose update sends it past its anchor goes back to the anchor
+                            # instead: Newton across the friction's jump from +grip to -grip would go back and
+                            # forth, where sticking (the stiff spring) is the answer or the way to the other side
+                            for d in range(dim):
+                                r[i, d] -= vp[d]
         total += it
         if not converged:
             return STEP_NOT_CONVERGED, total, residual
@@ -340,6 +405,75 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
 
 
 @njit(cache=True)
+def _plane_offset(r, p0, n, v):
+    """Offset ``v`` of ``r`` from ``p0`` in the seabed plane (normal ``n``); returns its size."""
+    dim = r.shape[0]
+    vn = 0.0
+    for d in range(dim):
+        v[d] = r[d] - p0[d]
+        vn += v[d] * n[d]
+    vv = 0.0
+    for d in range(dim):
+        v[d] -= vn * n[d]
+        vv += v[d] * v[d]
+    return math.sqrt(vv)
+
+
+@njit(cache=True)
+def _friction(r, anchor, n, grip, slip, f, v, dfric):
+    """Add a seabed node's Coulomb friction to the force ``f`` and set ``dfric = -dPhi / dr``.
+
+    ``Phi = -grip v / max(|v|, slip)``, with ``v = (I - n n^T)(r - anchor)`` the node's offset from its anchor
+    in the seabed plane: a spring of stiffness ``grip / slip`` while it holds, Coulomb's law once it slides
+    (elastic-perfectly plastic, OrcaFlex's model of seabed friction). Its derivative is
+    ``grip (I - n n^T) / slip`` holding and ``grip (I - n n^T - e e^T) / |v|`` sliding (``e = v / |v|``).
+    """
+    dim = r.shape[0]
+    dist = _plane_offset(r, anchor, n, v)
+    s = max(dist, slip)
+    for d in range(dim):
+        f[d] -= grip * v[d] / s
+        for e in range(dim):
+            p = (1.0 if d == e else 0.0) - n[d] * n[e]
+            if dist > slip:
+                p -= v[d] * v[e] / (dist * dist)
+            dfric[d, e] = grip * p / s
+
+
+@njit(cache=True)
+def drag_anchors(pos, contact, normal, anchor, slip):
+    """Move the anchor of each sliding node to ``slip`` behind it, along its offset in the seabed plane
+    (after a step: the friction's plastic part). Returns the largest distance slid. [m]"""
+    npt, dim = pos.shape
+    v = np.empty(dim)
+    most = 0.0
+    for i in range(npt):
+        if not contact[i]:
+            continue
+        dist = _plane_offset(pos[i], anchor[i], normal[i], v)
+        if dist > slip:
+            for d in range(dim):
+                anchor[i, d] += v[d] * (1.0 - slip / dist)
+            most = max(most, dist - slip)
+    return most
+
+
+@njit(cache=True)
+def _norm_g_d(g, dfric, dim):
+    """Largest absolute row sum of ``g dfric`` (the friction's part of a seabed node's diagonal block)."""
+    big = 0.0
+    for a in range(dim):
+        row = 0.0
+        for d in range(dim):
+            acc = 0.0
+            for e in range(dim):
+                acc += g[a, e] * dfric[e, d]
+            row += abs(acc)
+        big = max(big, row)
+    return big
+
+
+@njit(cache=True)
 def _chords(r, c, ell):
     """Unit chords ``c`` and lengths ``ell`` of the segments of ``r``."""
     dim = r.shape[1]
@@ -355,7 +489,7 @@ def _chords(r, c, ell):
 
 
 @njit(cache=True)
-def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
+def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed):
     """Newton system of the step in block tri-diagonal form; returns the scaled residual.
 
     Block ``k`` holds the unknowns ``(T_k, r_{k+1})`` (the last block only ``T_{N-1}``) and the equations
@@ -364,10 +498,13 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
         g_k = |r_{k+1} - r_k| - L_k (1 + T_k / EA)
         F_i = r_i - b_i - G_i (T_i c_i - T_{i-1} c_{i-1}),   c_j = (r_{j+1} - r_j) / |r_{j+1} - r_j|
 
-    with ``dc_j / dr_{j+1} = (I - c_j c_j^T) / |r_{j+1} - r_j|`` (the geometric stiffness). The right
-    side is minus the residual.
+    with ``dc_j / dr_{j+1} = (I - c_j c_j^T) / |r_{j+1} - r_j|`` (the geometric stiffness). A node on the
+    seabed adds its friction (:func:`_friction`) to the force. The right side is minus the residual.
     """
+    contact, normal, grip, anchor, slip = seabed
     nseg, dim = c.shape
+    vp = np.empty(dim)
+    dfric = np.zeros((dim, dim))
     nfree = nseg - 1
     lower[:] = 0.0
     diag[:] = 0.0
@@ -400,6 +537,9 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
         i = k + 1
         for d in range(dim):
             f[d] = T[i] * c[i, d] - T[k] * c[k, d]
+        sliding = contact[i] and grip[i] > 0.0
+        if sliding:
+            _friction(r[i], anchor[i], normal[i], grip[i], slip, f, vp, dfric)
         size = 0.0
         for d in range(dim):
             rd = r[i, d] - b[i, d]
@@ -407,6 +547,10 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
                 rd -= G[i, d, e] * f[e]
             size += abs(rd)
             rhs[k, 1 + d] = -rd
+        if sliding:
+            # measured as the move that would cancel it: the friction's stiffness grip / slip while it holds
+            # magnifies the round-off of r (1e-14 m) to 1e-10 of the residual
+            size /= 1.0 + _norm_g_d(G[i], dfric, dim)
         res = max(res, size / L[k])
         # K = T_i P_i + T_k P_k (geometric stiffness at node i), P_j = (I - c c^T) / ell
         # (tension only: a compressive iterate would make the matrix indefinite and Newton wander)
@@ -429,11 +573,15 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs):
             for d in range(dim):
                 gk = 0.0
                 gi = 0.0
+                gf = 0.0
                 for e in range(dim):
                     gk += G[i, a, e] * kk[e, d]
                     gi += G[i, a, e] * ki[e, d]
-                # d F / d r_i = I + G (K_k + K_i), d F / d r_{i-1} = -G K_k, d F / d r_{i+1} = -G K_i
-                diag[k, 1 + a, 1 + d] = (1.0 if a == d else 0.0) + gk + gi
+                    if sliding:
+                        gf += G[i, a, e] * dfric[e, d]
+                # d F / d r_i = I + G (K_k + K_i + D), d F / d r_{i-1} = -G K_k, d F / d r_{i+1} = -G K_i
+                # (D = -dPhi / dr_i, the friction's)
+                diag[k, 1 + a, 1 + d] = (1.0 if a == d else 0.0) + gk + gi + gf
                 if k >= 1:
                     lower[k, 1 + a, 1 + d] = -gk
                 if i + 1 <= nfree:

@@ -64,7 +64,9 @@ def lay_parameters(case: Case) -> LayParameters:
         velocity = np.column_stack([speeds * along, speeds * math.sin(cur.heading), np.zeros_like(speeds)])
     return LayParameters(props=np.array(rows), type_ends=np.cumsum([seg.length for seg in line.segments]),
                          segment_length=a.segment_length, cable_length=line.length, repeaters=repeaters,
-                         water_density=rho, current_depths=depths, current_velocity=velocity)
+                         water_density=rho, current_depths=depths, current_velocity=velocity,
+                         friction=env.seabed.friction if a.laid_cable == "sliding" else None,
+                         friction_distance=a.friction_distance)
 
 
 def lay_track(case: Case) -> Track2D | Track3D:
@@ -160,6 +162,12 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     """
     a: LayingDynamicAnalysis = case.analysis
     _check_moving_ship(case)
+    if a.laid_cable == "sliding" and not case.environment.seabed.friction > 0.0:
+        raise InputError(
+            f"analysis.laid_cable 'sliding' needs a friction coefficient > 0, got environment.seabed.friction = "
+            f"{case.environment.seabed.friction:g}: without friction nothing holds the laid cable, and the bottom "
+            "tension would drag all of it. Suggested fix: give environment.seabed.friction (0.3-1 for cables on sand "
+            "and clay), or laid_cable: held.")
     par = lay_parameters(case)
     track = lay_track(case)
     # time steps: dt = l / (n max(V_s, V_c)), at most max_time_step (seacable.laying.solver.simulate)
@@ -261,6 +269,10 @@ def run_laying_dynamic(case: Case, progress=None):
         "laid_tension": var("laid", np.where(res.laid["time"] > 0.0, np.interp(res.laid["time"], res.time,
                                                                               s["bottom_tension"]), np.nan),
                             "N", "bottom tension when the node landed (NaN: on the seabed at the start)"),
+        "laid_residual_tension": var("laid", res.laid["T"], "N",
+                                     "tension left at the end of the run in the laid segment ending at the node: "
+                                     "the tension it landed with, or (laid_cable 'sliding') what the friction holds; "
+                                     "0 for the cable on the seabed at the start"),
     }
     if three:
         route = track.route

@@ -54,10 +54,11 @@ from .kernel import (
     STEP_ACTIVE_SET,
     STEP_NOT_CONVERGED,
     STEP_OK,
+    drag_anchors,
     implicit_step,
 )
 
-__all__ = ["LayParameters", "LayRun", "Repeater", "simulate"]
+__all__ = ["LayParameters", "LayRun", "Repeater", "seabed_reaction", "simulate"]
 
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
 _HALVINGS = 6         # a failing step is retried with dt/2, dt/4, ...
@@ -97,6 +98,8 @@ class LayParameters:
     water_density: float = 1025.0
     current_depths: np.ndarray = field(default_factory=lambda: np.zeros(1))
     current_velocity: np.ndarray = field(default_factory=lambda: np.zeros((1, 2)))   # (K, dim), vertical 0
+    friction: float | None = None      # Coulomb coefficient of the laid cable on the seabed; None: held where laid
+    friction_distance: float = 1e-3    # slip at which the friction reaches its limit (a spring below) [m]
 
     def type_at(self, s: float) -> int:
         return min(int(np.searchsorted(self.type_ends, s, side="right")), len(self.type_ends) - 1)
@@ -138,14 +141,20 @@ class _Cable:
         self.seg_type = np.zeros(capacity, dtype=np.int64)
         self.new_pos = np.zeros((capacity, dim))
         self.new_vel = np.zeros((capacity, dim))
+        self.contact = np.zeros(capacity, dtype=np.int64)
+        self.normal = np.zeros((capacity, dim))
+        self.grip = np.zeros(capacity)
+        self.anchor = np.zeros((capacity, dim))
+        self.lb = 0
         self.lo = 0
         self.hi = 0
 
-    _NAMES = ("pos", "vel", "s", "point", "rep", "L", "T", "active", "seg_type", "new_pos", "new_vel")
+    _NAMES = ("pos", "vel", "s", "point", "rep", "L", "T", "active", "seg_type", "new_pos", "new_vel", "contact",
+              "normal", "grip", "anchor")
 
     def _move(self, start: int) -> None:
-        """Move rows ``lo .. hi`` to begin at ``start``, doubling the capacity if they do not fit."""
-        n = self.hi - self.lo + 1
+        """Move rows ``lb .. hi`` to begin at ``start``, doubling the capacity if they do not fit."""
+        n = self.hi - self.lb + 1
         cap = self.pos.shape[0]
         new_cap = cap if start + n + 2 * _MARGIN < cap else 2 * (start + n + 2 * _MARGIN)
         for name in self._NAMES:
@@ -153,9 +162,9 @@ class _Cable:
             b = np.zeros((new_cap,) + a.shape[1:], dtype=a.dtype)
             if name == "rep":
                 b[:] = -1
-            b[start:start + n] = a[self.lo:self.hi + 1]
+            b[start:start + n] = a[self.lb:self.hi + 1]
             setattr(self, name, b)
-        self.lo, self.hi = start, start + n - 1
+        self.lb, self.lo, self.hi = start, start + self.lo - self.lb, start + n - 1
 
     def make_room(self) -> None:
         """Room for a row above ``hi`` (a birth)."""
@@ -163,8 +172,8 @@ class _Cable:
             self._move(_MARGIN)
 
     def make_room_below(self) -> None:
-        """Room for a row below ``lo`` (a node picked up off the seabed)."""
-        if self.lo < 1:
+        """Room for a row below ``lb`` (a node picked up off the seabed, or laid cable free to slide again)."""
+        if self.lb < 1:
             self._move(_MARGIN)
 
 
@@ -293,6 +302,19 @@ def _bottom_tension(c: _Cable, props, pos: np.ndarray, lo: int, f_td: float) -> 
                / float(np.linalg.norm(d_bot)), 0.0)
 
 
+def seabed_reaction(below: np.ndarray, at: np.ndarray, above: np.ndarray, t_below: np.ndarray, t_above: np.ndarray,
+                    weight: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """The seabed's normal reaction on nodes ``at`` resting on it, between the nodes ``below`` and ``above``.
+
+    What the node's weight in water ``weight`` [N] and the tensions of its two segments ``t_below``,
+    ``t_above`` [N] press into the seabed, whose upward unit normal is ``normal``: ``W n_z - F_T . n``,
+    ``F_T`` the tensions' pull along the chords; clipped at 0 (a node pulled off the seabed). Rows are nodes. [N]
+    """
+    up, down = above - at, at - below
+    pull = (t_above / np.linalg.norm(up, axis=1))[:, None] * up - (t_below / np.linalg.norm(down, axis=1))[:, None] * down
+    return np.maximum(weight * normal[:, -1] - np.einsum("ij,ij->i", pull, normal), 0.0)
+
+
 class _Lay:
     """State of a laying run and the events between steps."""
 
@@ -302,6 +324,7 @@ class _Lay:
         props = par.props
         self.ctl = ctl = Control(ship, payout, par)
         self.x_ship = ship.start_x         # distance run along the track (its KP in 3-D) [m]
+        self.dt = 0.0                      # the last time step [s]
         chute = track.point(self.x_ship)
         depth0 = -float(track.zb(chute[:-1]))
         t = _initial_tangent(par, track, self.x_ship, ctl.speed, depth0, initial_angle)
@@ -329,7 +352,8 @@ class _Lay:
                              f"but the line is {par.cable_length:.6g} m long. Suggested fix: make the line (the "
                              "cable on board) longer.")
         self.laid = {"p": [np.append(h, float(z)) for h, z in zip(laid_h, track.zb(np.array(laid_h)))],
-                     "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1)}
+                     "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1),
+                     "T": [0.0] * (n_laid + 1)}
         for r, rep in enumerate(reps):
             if rep.s <= pre:
                 self.rep_state[r] = 2
@@ -340,7 +364,8 @@ class _Lay:
         self.vc = vc = ctl.payout_speed(0.0, ctl.speed, (self.slope_at(td[:-1]), depth0, cot, 1.0), 0.0, 0.0)
         self.c = c = _Cable(max(64, 4 * len(s_nodes)), track.dim)
         n0 = len(s_nodes)
-        c.lo, c.hi = _MARGIN, _MARGIN + n0 - 1
+        c.lb = c.lo = _MARGIN
+        c.hi = _MARGIN + n0 - 1
         ship_v = self.ship_velocity(ctl.speed)
         for k, s in enumerate(s_nodes):
             row = c.lo + k
@@ -389,13 +414,15 @@ class _Lay:
         c, ctl = self.c, self.ctl
         vs_new = ctl.ship_speed(t + dt, dt, in_water)
         x_new = self.x_ship + 0.5 * (ctl.speed + vs_new) * dt
-        lo, hi = c.lo, c.hi
+        lo, hi = c.lb, c.hi
         c.L[hi - 1] = self.s_paid + vc_new * dt - c.s[hi - 1]
         props, cur_d, cur_v, rho, tol, max_iter = kernel_args
+        seabed = (c.contact[lo:hi + 1], c.normal[lo:hi + 1], c.grip[lo:hi + 1], c.anchor[lo:hi + 1],
+                  self.par.friction_distance)
         status, it, res = implicit_step(
             c.pos[lo:hi + 1], c.vel[lo:hi + 1], self.track.point(x_new), c.L[lo:hi], c.seg_type[lo:hi], props,
-            c.point[lo:hi + 1], cur_d, cur_v, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, tol, max_iter,
-            _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
+            c.point[lo:hi + 1], cur_d, cur_v, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, seabed, tol,
+            max_iter, _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
         return status, it, res, vs_new, x_new
 
     def implicit_payout(self, t: float, dt: float, in_water: bool, first, vc0: float, kernel_args, saved):
@@ -422,7 +449,7 @@ class _Lay:
             Payout speed of the step. [m/s]
         """
         c, ctl = self.c, self.ctl
-        lo, hi = c.lo, c.hi
+        lo, hi = c.lb, c.hi
         geometry = self.geometry()
         total = 0
         last = {"v": vc0, "out": first}
@@ -505,10 +532,15 @@ class _Lay:
     def lift(self) -> None:
         """Pick the touchdown node up off the seabed: the node laid before it becomes the touchdown."""
         c, laid = self.c, self.laid
-        c.make_room_below()
-        lo = c.lo
         for key in laid:
             laid[key].pop()
+        if c.lo - 1 > c.lb:                  # laid cable free to slide: the node is in the step already
+            if c.rep[c.lo] >= 0:
+                self.rep_state[c.rep[c.lo]] = 1
+            c.lo -= 1
+            return
+        c.make_room_below()
+        lo = c.lo
         new = lo - 1
         c.pos[new] = laid["p"][-1]
         c.new_pos[new] = c.pos[new]
@@ -523,14 +555,22 @@ class _Lay:
         c.T[new] = c.T[lo]
         c.active[new] = 1
         c.seg_type[new] = self.par.type_at(0.5 * (c.s[new] + c.s[lo]))
-        c.lo = new
+        c.lb = c.lo = new
 
     def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
         c = self.c
-        lo, hi = c.lo, c.hi
+        lo, hi = c.lb, c.hi
         c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
         c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
-        self.x_ship, self.vc = x_new, vc_new
+        if c.lo > c.lb:                      # laid cable that slides: back onto the seabed (the step kept it on
+            rows = slice(c.lb + 1, c.lo + 1)  # the tangent plane), and its record follows it
+            drag_anchors(c.pos[rows], c.contact[rows], c.normal[rows], c.anchor[rows], self.par.friction_distance)
+            c.pos[rows, -1] = self.track.zb(c.pos[rows, :-1])
+            n = c.lo - c.lb
+            for k in range(n):
+                self.laid["p"][-n + k] = c.pos[c.lb + 1 + k].copy()
+                self.laid["T"][-n + k] = float(c.T[c.lb + k] * c.active[c.lb + k])
+        self.x_ship, self.vc, self.dt = x_new, vc_new, dt
         c.vel[hi] = self.ship_velocity(vs_new)
         self.s_paid += vc_new * dt
         c.s[hi] = self.s_paid
@@ -590,18 +630,80 @@ class _Lay:
             zb = float(free[k - c.lo - 1])
             c.pos[k, -1] = max(c.pos[k, -1], zb) if k < first else zb
             c.vel[k] = 0.0
+            c.anchor[k] = c.pos[k]
             self.laid["p"].append(c.pos[k].copy())
             self.laid["s"].append(float(c.s[k]))
             self.laid["time"].append(float(t))
+            self.laid["T"].append(float(c.T[k - 1] * c.active[k - 1]))
             if c.rep[k] >= 0:
                 self.rep_state[c.rep[k]] = 2
                 self.rep_landed[c.rep[k]] = c.pos[k]
         if first > c.lo:
+            if self.par.friction is None:
+                c.lb = first
             c.lo = first
             if arrived_slack:
                 # the cable arrived slack: its new lowest segment starts slack too (a straight, taut
                 # chain between fixed ends has no well-defined tension)
                 c.active[first], c.T[first] = 0, 0.0
+        if self.par.friction is not None:
+            self.sliding_zone()
+
+    def sliding_zone(self) -> None:
+        """Keep the laid cable that friction may let slide in the step (rows ``lb + 1 .. lo``).
+
+        The laid cable takes the bottom tension ``T_b`` off by friction, at most ``mu w`` per metre, so
+        beyond ``T_b / (mu w)`` behind the touchdown it carries no tension and lies still. The rows kept
+        reach twice that and four segments more; laid cable beyond is fixed (the row ``lb``) once it holds
+        (it moved less than the friction's slip distance in the last step), and laid cable is freed again
+        when the bottom tension grows.
+        """
+        c, laid, par = self.c, self.laid, self.par
+        w = float(par.props[c.seg_type[c.lo], P_WEIGHT])
+        reach = 4.0 * par.segment_length + 2.0 * _bottom_tension(c, par.props, c.pos, c.lo, 0.0) / (par.friction * w)
+        # free again: laid cable behind the anchor, while the rows kept are short of the reach
+        while c.s[c.lo] - c.s[c.lb] < reach and len(laid["s"]) - 1 - (c.lo - c.lb) > 0:
+            c.make_room_below()
+            k = len(laid["s"]) - 2 - (c.lo - c.lb)          # the laid node below the anchor
+            new = c.lb - 1
+            c.pos[new] = c.anchor[new] = laid["p"][k]
+            c.vel[new] = 0.0
+            c.s[new] = laid["s"][k]
+            self.attach(new)
+            if c.rep[new] >= 0:
+                self.rep_state[c.rep[new]] = 2
+            c.L[new] = c.s[c.lb] - c.s[new]
+            c.T[new] = 0.0
+            c.active[new] = int(np.linalg.norm(c.pos[c.lb] - c.pos[new]) >= c.L[new])
+            c.seg_type[new] = par.type_at(0.5 * (c.s[new] + c.s[c.lb]))
+            c.lb = new
+        # fixed: the laid cable beyond the reach that holds (moved less than the friction's slip in the last step)
+        while c.lb + 1 < c.lo and c.s[c.lo] - c.s[c.lb + 1] > reach and \
+                float(np.linalg.norm(c.vel[c.lb + 1])) * self.dt < par.friction_distance:
+            c.lb += 1
+            c.vel[c.lb] = 0.0
+
+    def contact_forces(self) -> None:
+        """The seabed's normal and friction limit at the laid cable free to slide (rows ``lb + 1 .. lo``).
+
+        The normal ``n`` is the seabed's, under each node; the reaction is what the node's weight (half of
+        each adjacent segment and a repeater's) and the tensions of the old time step press along ``-n``
+        (clipped at 0: a node pulled off carries no friction); the friction limit is ``mu`` times it.
+        """
+        c, par = self.c, self.par
+        c.contact[c.lb:c.hi + 1] = 0
+        if c.lo == c.lb:
+            return
+        rows = np.arange(c.lb + 1, c.lo + 1)
+        c.contact[rows] = 1
+        n = np.concatenate([-self.track.gradients(c.pos[rows, :-1]), np.ones((len(rows), 1))], axis=1)
+        n /= np.linalg.norm(n, axis=1)[:, None]
+        c.normal[rows] = n
+        w = par.props[:, P_WEIGHT]
+        weight = 0.5 * (w[c.seg_type[rows]] * c.L[rows] + w[c.seg_type[rows - 1]] * c.L[rows - 1]) + c.point[rows, 2]
+        reaction = seabed_reaction(c.pos[rows - 1], c.pos[rows], c.pos[rows + 1], c.T[rows - 1] * c.active[rows - 1],
+                                   c.T[rows] * c.active[rows], weight, n)
+        c.grip[rows] = par.friction * reaction
 
     def landing_row(self, pos: np.ndarray, zb: np.ndarray | None = None) -> int:
         """Row of the first node on the seabed counting from the ship side (``c.lo`` if none).
@@ -837,7 +939,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
                                       commit=not implicit)
             attempt, lifted = 0, 0
             while True:
-                lo, hi = c.lo, c.hi
+                lay.contact_forces()
+                lo, hi = c.lb, c.hi
                 saved = (c.L[hi - 1], c.T[lo:hi].copy(), c.active[lo:hi].copy())
                 status, it, res, vs_new, x_new = lay.step(t, dt, in_water, vc_new, kernel_args)
                 iterations += it

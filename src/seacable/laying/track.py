@@ -44,6 +44,10 @@ class Track2D:
         """Seabed gradient at a horizontal point, shape (1,). [-]"""
         return np.array([self.seabed.slope(float(ph[0]))])
 
+    def gradients(self, ph) -> np.ndarray:
+        """Seabed gradients at horizontal points ``ph`` (shape (n, 1)), shape (n, 1). [-]"""
+        return np.array([[self.seabed.slope(float(x))] for x in np.asarray(ph, float)[:, 0]]).reshape(-1, 1)
+
     def run(self, points) -> float:
         """Distance along the seabed from the first to the last of laid points (dim columns). [m]"""
         return float(self.seabed.arc(points[-1][0]) - self.seabed.arc(points[0][0]))
@@ -87,6 +91,13 @@ class Track3D:
         e = self.delta * np.eye(2)
         z = self.zb(np.stack([p + e[0], p - e[0], p + e[1], p - e[1]]))
         return np.array([z[0] - z[1], z[2] - z[3]]) / (2.0 * self.delta)
+
+    def gradients(self, ph) -> np.ndarray:
+        """Seabed gradients at horizontal points ``ph`` (shape (n, 2)), shape (n, 2), as :meth:`gradient`. [-]"""
+        p = np.asarray(ph, float)
+        e = self.delta * np.eye(2)
+        z = self.zb(np.concatenate([p + e[0], p - e[0], p + e[1], p - e[1]])).reshape(4, len(p))
+        return np.stack([z[0] - z[1], z[2] - z[3]], axis=1) / (2.0 * self.delta)
 
     def run(self, points) -> float:
         p = np.asarray(points, float)
