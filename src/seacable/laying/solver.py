@@ -653,14 +653,15 @@ class _Lay:
         """Keep the laid cable that friction may let slide in the step (rows ``lb + 1 .. lo``).
 
         The laid cable takes the bottom tension ``T_b`` off by friction, at most ``mu w`` per metre, so
-        beyond ``T_b / (mu w)`` behind the touchdown it carries no tension and lies still. The rows kept
-        reach twice that and four segments more; laid cable beyond is fixed (the row ``lb``) once it holds
+        beyond ``T_b / (mu w)`` behind the touchdown it carries no tension and lies still (a cable that slides
+        across keeps its tension, and stays in the step while it slides). The rows kept reach 1.25 times that
+        and four segments more; laid cable beyond is fixed (the row ``lb``) once it holds
         (it moved less than the friction's slip distance in the last step), and laid cable is freed again
         when the bottom tension grows.
         """
         c, laid, par = self.c, self.laid, self.par
         w = float(par.props[c.seg_type[c.lo], P_WEIGHT])
-        reach = 4.0 * par.segment_length + 2.0 * _bottom_tension(c, par.props, c.pos, c.lo, 0.0) / (par.friction * w)
+        reach = 4.0 * par.segment_length + 1.25 * _bottom_tension(c, par.props, c.pos, c.lo, 0.0) / (par.friction * w)
         # free again: laid cable behind the anchor, while the rows kept are short of the reach
         while c.s[c.lo] - c.s[c.lb] < reach and len(laid["s"]) - 1 - (c.lo - c.lb) > 0:
             c.make_room_below()
