@@ -15,6 +15,7 @@ import seacable as sc
 from seacable.cli import main
 from seacable.errors import CaseFileError, InputError
 from seacable.laying.inputs import Seabed2D
+from seacable.simulate import check
 from seacable.statics.laying import laying_angle
 
 CABLE = sc.LineType(diameter=0.0225, mass_per_length=0.867, weight_in_water=4.49, drag_normal=1.85,
@@ -201,3 +202,49 @@ def test_current_along_the_track_sets_the_relative_speed(current):
     expected = math.degrees(float(laying_angle(1.5, 4.49, 0.0225, 1.85, 1030.0)))
     # the steady straight lay is exact in the lumped model; 1e-3 deg is the decayed start-up
     assert float(ds.entry_angle[-1]) == pytest.approx(expected, abs=1e-3)
+
+
+def _sliding(friction: float, **analysis):
+    env = sc.Environment(water_density=1030.0, depth=50.0, seabed=sc.Seabed(friction=friction))
+    return case(env=env, laid_cable="sliding", **analysis)
+
+
+def test_sliding_laid_cable_needs_a_friction(tmp_path):
+    """Nothing would hold a laid cable free to slide on a frictionless seabed: refused by run and validate (exit 2),
+    with the input and a fix; a friction given for a held cable is said to be unused."""
+    with pytest.raises(InputError, match=r"friction coefficient > 0, got environment.seabed.friction = 0\b.*fix"):
+        sc.run(_sliding(0.0))
+    path = tmp_path / "lay.yaml"
+    path.write_text(textwrap.dedent("""\
+        name: lay
+        line_types: {c: {diameter: 0.0225, mass_per_length: 0.867, weight_in_water: 4.49, drag_normal: 1.85}}
+        line: {line_type: c, length: 3000.0}
+        environment: {water_density: 1030.0, depth: 50.0}
+        analysis: {type: laying_dynamic, ship: {speed: 2.0}, duration: 20.0, segment_length: 2.0,
+                   laid_cable: sliding}
+        """))
+    assert main(["validate", str(path)]) == 2
+    assert main(["run", str(path), "-o", str(tmp_path / "out.nc")]) == 2
+    with pytest.warns(sc.SeacableWarning, match="friction = 0.5 is not used"):
+        check(case(env=sc.Environment(water_density=1030.0, depth=50.0, seabed=sc.Seabed(friction=0.5))))
+
+
+def test_straight_lay_of_a_sliding_cable_is_the_held_lay():
+    """A straight 2-D lay under 100 N of bottom tension: the laid cable lies straight with its tension uniform,
+    so friction has nothing to hold and the sliding lay is the held one. Tolerances: the friction's spring lets a
+    laid node move up to its slip distance, 1 mm (measured: touchdown 1.4 mm, bottom tension 0.016 N of 100 N,
+    top tension 0.015 N of 327 N). The tension left in the laid cable is the target bottom tension, uniform along
+    it, to the ripple of the 1 m nodes landing every fourth step: the laid cable, held by the friction's spring,
+    carries that ripple some 100 m back (98.05 to 101.47 N there, 1.8 N either side of 100 N). The cable fixed
+    beyond keeps the value of the step it was fixed at (measured 98.36 N), the 60 m free to slide 100.49-100.56 N."""
+    elastic = sc.Line.single(CABLE.replace(axial_stiffness=3e7), 3000.0)
+    kwargs = dict(line=elastic, ship=sc.ShipMotion(speed=1.0), duration=400.0, segment_length=1.0,
+                  output_interval=10.0, extensible=True, payout=sc.PayoutBottomTension(tension=100.0))
+    held = sc.run(case(**kwargs))
+    env = sc.Environment(water_density=1030.0, depth=50.0, seabed=sc.Seabed(friction=0.5))
+    sliding = sc.run(case(env=env, laid_cable="sliding", **kwargs))
+    np.testing.assert_allclose(sliding.touchdown_x, held.touchdown_x, rtol=0, atol=5e-3)
+    np.testing.assert_allclose(sliding.bottom_tension, held.bottom_tension, rtol=0, atol=0.05)
+    np.testing.assert_allclose(sliding.top_tension, held.top_tension, rtol=0, atol=0.05)
+    recent = sliding.laid_time.values > 200.0
+    np.testing.assert_allclose(sliding.laid_residual_tension.values[recent], 100.0, rtol=0, atol=1.8)

@@ -162,6 +162,10 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     """
     a: LayingDynamicAnalysis = case.analysis
     _check_moving_ship(case)
+    if a.laid_cable == "held" and case.environment.seabed.friction > 0.0:
+        warnings.warn(f"environment.seabed.friction = {case.environment.seabed.friction:g} is not used: the laid cable is "
+                      "held where it lands (analysis.laid_cable 'held', the default). Suggested fix: give laid_cable: "
+                      "sliding to let it slide against that friction.", SeacableWarning, stacklevel=3)
     if a.laid_cable == "sliding" and not case.environment.seabed.friction > 0.0:
         raise InputError(
             f"analysis.laid_cable 'sliding' needs a friction coefficient > 0, got environment.seabed.friction = "

@@ -634,7 +634,10 @@ class _Lay:
             self.laid["p"].append(c.pos[k].copy())
             self.laid["s"].append(float(c.s[k]))
             self.laid["time"].append(float(t))
-            self.laid["T"].append(float(c.T[k - 1] * c.active[k - 1]))
+            # the tension at the segment's lower end (its mid-segment value less the weight of its lower half)
+            d = c.pos[k] - c.pos[k - 1]
+            end = c.T[k - 1] - 0.5 * self.par.props[c.seg_type[k - 1], P_WEIGHT] * c.L[k - 1] * d[-1] / np.linalg.norm(d)
+            self.laid["T"].append(max(float(end), 0.0) * float(c.active[k - 1]))
             if c.rep[k] >= 0:
                 self.rep_state[c.rep[k]] = 2
                 self.rep_landed[c.rep[k]] = c.pos[k]

@@ -217,8 +217,12 @@ def _route_figures(ds, plt, idx, snaps, colours, t_unit):
         kp = ds.laid_kp.values[landed]
         axes[1, 0].plot(kp, ds.laid_slack.values[landed], "-", color="C2", lw=0.8)
         axes[1, 0].set(ylabel="slack [-]")
-        axes[2, 0].plot(kp, ds.laid_tension.values[landed], "-", color="C3", lw=0.8)
-        axes[2, 0].set(ylabel="bottom tension\nat landing [N]")
+        axes[2, 0].plot(kp, ds.laid_tension.values[landed], "-", color="C3", lw=0.8, label="bottom tension at landing")
+        if "laid_residual_tension" in ds:
+            axes[2, 0].plot(kp, ds.laid_residual_tension.values[landed], "--", color="C4", lw=0.8,
+                            label="left in the laid cable at the end")
+            axes[2, 0].legend(fontsize=7)
+        axes[2, 0].set(ylabel="tension [N]")
     axes[-1, 0].set(xlabel="KP [m]")
     fig.tight_layout()
     figs["offset"] = fig
