@@ -5,7 +5,8 @@ case, default 3), ``--duration T`` (simulated time per run, default 1000 s); ``-
 3-D lay along a 100 km route in 1000 m of water with 5 m segments (``--route-duration``, default 3600 s of
 it; target at least 200 x real time), see :func:`route_case`, and a table of the same lay along routes of
 many waypoints over a KP bathymetry table (:func:`long_route_case`: 10 and 500 waypoints, 1000 s each), where
-every seabed look-up locates points on the route.
+every seabed look-up locates points on the route. ``--sliding`` times the 3-D lay under 500 N of bottom tension with
+the laid cable held and free to slide (``laid_cable: sliding``) at two frictions (:func:`sliding_bench`).
 
 The issue's measurement: the wall time to lay 1 km of cable in 100 m of water at 1 m/s ship speed
 with 1 m segments; target: faster than real time by a factor of at least 100 on this machine. The
@@ -158,6 +159,8 @@ def main(argv=None):
     ap.add_argument("--route", action="store_true", help="also the 3-D lay along a 100 km route (issue 22)")
     ap.add_argument("--route-duration", type=float, default=3600.0, metavar="T",
                     help="simulated time of the 3-D lay [s] (default 3600)")
+    ap.add_argument("--sliding", action="store_true",
+                    help="also the 3-D lay under a bottom tension, its laid cable held and sliding")
     args = ap.parse_args(argv)
     if args.repeat < 1:
         ap.error(f"--repeat must be >= 1, got {args.repeat}")
@@ -181,6 +184,8 @@ def main(argv=None):
     if args.route:
         route_bench(args.route_duration, args.repeat)
         long_route_bench(args.repeat)
+    if args.sliding:
+        sliding_bench(args.repeat)
     print(f"total benchmark time {time.perf_counter() - t_start:.0f} s")
 
 
@@ -280,5 +285,35 @@ def long_route_bench(repeat):
               f"{st['wall_time_s']:>7.2f} {LONG_ROUTE_DURATION / wall:>17.0f}")
 
 
+def sliding_bench(repeat, duration=1200.0):
+    """:func:`route_case` (1000 m of water, 5 m segments) under 500 N of bottom tension, elastic, for ``duration``
+    s through its alter-course region's approach: the laid cable held where it lands, and free to slide against
+    a friction of 0.5 and 0.2 (the laid cable kept in the step reaches 1.25 T_b / (mu w), 300 m and 760 m)."""
+    import seacable
+
+    base = route_case(duration)
+    base = base.replace(analysis=base.analysis.replace(payout=seacable.PayoutBottomTension(tension=500.0),
+                                                       extensible=True))
+    print(f"\n3-D lay under 500 N of bottom tension, 1000 m of water, 5 m segments, {duration:g} s "
+          f"(best of {repeat})")
+    head = f"{'laid cable':<22} {'steps':>7} {'Newton iterations':>18} {'wall s':>8} {'real-time factor':>17}"
+    print(head)
+    print("-" * len(head))
+    for label, friction in (("held", None), ("sliding, mu = 0.5", 0.5), ("sliding, mu = 0.2", 0.2)):
+        case = base if friction is None else base.replace(
+            environment=base.environment.replace(seabed=seacable.Seabed(friction=friction)),
+            analysis=base.analysis.replace(laid_cable="sliding"))
+        seacable.run(case.replace(analysis=case.analysis.replace(duration=20.0, output_interval=20.0)))  # warm
+        walls, ds = [], None
+        for _ in range(repeat):
+            t0 = time.perf_counter()
+            ds = seacable.run(case)
+            walls.append(time.perf_counter() - t0)
+        settings = json.loads(ds.attrs["settings"])
+        print(f"{label:<22} {int(settings['steps']):>7} {int(settings['newton_iterations']):>18} {min(walls):>8.2f} "
+              f"{duration / min(walls):>17.0f}")
+
+
 if __name__ == "__main__":
     main()
+

@@ -31,6 +31,11 @@ old tangents and the primes are the new time level. The constraint of each segme
 
 and a cable takes no compression: a segment whose tension would be negative goes slack (``T_j = 0``,
 chord shorter than ``L_j``) and is taut again once stretched (an active set, updated as Newton goes).
+Laid cable free to slide (``laid_cable: sliding``) joins the step as nodes on the seabed: each moves in the
+seabed's tangent plane (the normal reaction eliminated from the node's form, :func:`_node_matrices`) against
+Coulomb's friction ``mu R``, elastic-perfectly plastic: a spring ``mu R / slip`` from the point it sticks to, up to
+``mu R`` once it slides (:func:`_friction`, and :func:`drag_anchors` after the step).
+
 Positions and tensions are solved together by Newton's method; ordered node by node the Jacobian is
 block tri-diagonal (3x3 blocks in 2-D, 4x4 in 3-D) (Walton & Polachek's "tentative step and improvement" in modern form). It
 includes the geometric stiffness ``T (I - t t^T) / l``: holding the tangents fixed and iterating on

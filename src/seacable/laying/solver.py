@@ -20,6 +20,10 @@ Events after each step:
   where the clearance of the lowest free nodes extrapolates to zero (:meth:`_Lay.touchdown`); the
   layback, the suspended and laid lengths and the bottom tension are taken there. Mass is conserved:
   paid-out length = laid + suspended length.
+* **sliding laid cable** (``LayParameters.friction``; default held where it lands) - the laid nodes within
+  ``1.25 T_b / (mu w)`` and four segments of the touchdown stay in the step, on the seabed against friction
+  (:meth:`_Lay.contact_forces`, :meth:`_Lay.sliding_zone`); their record (``laid``, with the tension of each laid
+  segment) follows them, and beyond that reach the laid cable is fixed once it holds.
 
 Controls: the ship speed follows its schedule, slowed to ``repeater_speed`` while a repeater is in
 the water and brought back at the given acceleration after its touchdown; the payout speed follows a
@@ -677,8 +681,10 @@ class _Lay:
             if c.rep[new] >= 0:
                 self.rep_state[c.rep[new]] = 2
             c.L[new] = c.s[c.lb] - c.s[new]
-            c.T[new] = 0.0
             c.active[new] = int(np.linalg.norm(c.pos[c.lb] - c.pos[new]) >= c.L[new])
+            # the tension it was fixed with, as the first guess (0 would leave its node's predictor out of balance
+            # by the whole tension, tens of metres off, and Newton crawling back a quarter segment at a time)
+            c.T[new] = laid["T"][k + 1] * c.active[new]
             c.seg_type[new] = par.type_at(0.5 * (c.s[new] + c.s[c.lb]))
             c.lb = new
         # fixed: the laid cable beyond the reach that holds (moved less than the friction's slip in the last step)
