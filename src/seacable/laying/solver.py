@@ -70,6 +70,7 @@ _ROUNDS = 20          # active-set updates (segments going slack or taut) per st
 _STRAIN_FLOOR = 1e-5  # strain of an 'inextensible' cable at the weight of its suspended length
 _MAX_LIFTS = 50       # touchdown nodes picked up off the seabed in one step
 _MARGIN = 16          # free rows kept below the touchdown node for nodes picked up again
+_MAX_SLIDING = 2000   # laid nodes kept free to slide, at most (or twice the suspended ones, if more)
 
 
 @dataclass(frozen=True)
@@ -329,6 +330,7 @@ class _Lay:
         self.ctl = ctl = Control(ship, payout, par)
         self.x_ship = ship.start_x         # distance run along the track (its KP in 3-D) [m]
         self.dt = 0.0                      # the last time step [s]
+        self.warned_sliding = False
         chute = track.point(self.x_ship)
         depth0 = -float(track.zb(chute[:-1]))
         t = _initial_tangent(par, track, self.x_ship, ctl.speed, depth0, initial_angle)
@@ -687,9 +689,22 @@ class _Lay:
             c.T[new] = laid["T"][k + 1] * c.active[new]
             c.seg_type[new] = par.type_at(0.5 * (c.s[new] + c.s[c.lb]))
             c.lb = new
-        # fixed: the laid cable beyond the reach that holds (moved less than the friction's slip in the last step)
-        while c.lb + 1 < c.lo and c.s[c.lo] - c.s[c.lb + 1] > reach and \
-                float(np.linalg.norm(c.vel[c.lb + 1])) * self.dt < par.friction_distance:
+        # fixed: the laid cable beyond the reach that holds (moved less than the friction's slip in the last step),
+        # and, at most _MAX_SLIDING nodes being kept, the oldest even if it slides
+        most = max(_MAX_SLIDING, 2 * (c.hi - c.lo))
+        while c.lb + 1 < c.lo and c.s[c.lo] - c.s[c.lb + 1] > reach:
+            if float(np.linalg.norm(c.vel[c.lb + 1])) * self.dt >= par.friction_distance:
+                if c.lo - c.lb <= most:
+                    break
+                if not self.warned_sliding:
+                    self.warned_sliding = True
+                    warnings.warn(
+                        f"laid cable more than {c.s[c.lo] - c.s[c.lb + 1]:.6g} m behind the touchdown is still sliding "
+                        f"(at {float(np.linalg.norm(c.vel[c.lb + 1])):.3g} m/s) and is fixed where it is: at most "
+                        f"{most} laid nodes are kept free to slide. The friction (environment.seabed.friction = "
+                        f"{par.friction:g}) does not hold the laid cable: a seabed steeper than atan(mu) across the "
+                        "route, or a tension round a turn above mu w times its radius. Suggested fix: check the "
+                        "friction and the seabed, or use laid_cable: held.", SeacableWarning, stacklevel=4)
             c.lb += 1
             c.vel[c.lb] = 0.0
 
