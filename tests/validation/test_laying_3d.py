@@ -293,3 +293,18 @@ def test_laid_cable_that_never_stops_sliding_is_fixed_with_a_warning(monkeypatch
     with pytest.warns(sc.SeacableWarning, match=r"still sliding .*seabed.friction = 0.1\) does not hold .*Suggested fix"):
         ds = sc.run(case.replace(analysis=case.analysis.replace(bathymetry_grid=grid)))
     assert float(ds.time[-1]) == 600.0
+
+
+def test_integral_control_holds_the_bottom_tension_over_sliding_laid_cable():
+    """Over laid cable that slides inside a tight turn (R = 150 m, mu = 0.12) the payout's feed-forward misjudges
+    the cable the lay takes, and the proportional control holds the bottom tension 16 % under its 100 N target
+    (measured mean 84.1 N from 300 s to 800 s). With an integral time of 100 s it holds the target on average:
+    to 2 N (measured 99.85 N; the nodes landing and the turn's transient swing it 88-125 N)."""
+    mean = {}
+    for integral_time in (None, 100.0):
+        payout = sc.PayoutBottomTension(tension=100.0, integral_time=integral_time)
+        ds = sc.run(_case(route=_circle(150.0), duration=800.0, start=150.0, extensible=True, friction=0.12,
+                          payout=payout))
+        mean[integral_time] = float(np.mean(ds.bottom_tension.values[ds.time.values >= 300.0]))
+    assert mean[None] < 90.0
+    assert mean[100.0] == pytest.approx(100.0, abs=2.0)

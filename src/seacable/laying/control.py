@@ -22,6 +22,7 @@ class Control:
         # the filter starts at the target: the payout starts at the feed-forward and follows the
         # measured bottom tension over the filter time, without a jerk
         self.bottom_filtered = payout.tension if isinstance(payout, PayoutBottomTension) else 0.0
+        self.integral = 0.0                # integral of the bottom tension's error over time [s]
         p = par.props[par.type_at(0.0)]
         self.weight, self.compliance = p[P_WEIGHT], p[P_COMPLIANCE]
 
@@ -69,4 +70,12 @@ class Control:
             self.bottom_filtered = filtered
         feed = td_speed * (arc / (1.0 + p.tension * self.compliance) - slope / sin_alpha)
         error = (filtered - p.tension) / (self.weight * max(h_td, 1e-9))
-        return feed * min(max(1.0 + p.gain * error, 0.0), 2.0)
+        correction = error
+        if p.integral_time is not None:
+            # backward Euler, and no wind-up: the integral term alone stays within the speed's bounds (0 .. 2 x)
+            bound = p.integral_time / p.gain
+            integral = min(max(self.integral + dt * error, -bound), bound)
+            if commit:
+                self.integral = integral
+            correction += integral / p.integral_time
+        return feed * min(max(1.0 + p.gain * correction, 0.0), 2.0)

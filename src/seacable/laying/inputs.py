@@ -131,8 +131,8 @@ class PayoutBottomTension(Model):
     """Payout controlled to hold a target tension at the touchdown point.
 
     The payout speed is the slack-free feed-forward ``V_s / cos(beta) / (1 + T_0/EA)`` corrected by
-    ``gain (T_b - T_0) / (w h)`` times the ship speed, ``T_b`` being the bottom tension low-pass
-    filtered with ``time_constant``.
+    ``gain (e + integral(e dt) / integral_time)`` times it, ``e = (T_b - T_0) / (w h)``, ``T_b`` being the bottom
+    tension low-pass filtered with ``time_constant`` (no integral term without an ``integral_time``).
     """
 
     type: Literal["bottom_tension"] = "bottom_tension"
@@ -140,6 +140,10 @@ class PayoutBottomTension(Model):
         description="Target bottom tension. [N]")
     gain: quantity("-", gt=0) = Field(1.0, description="Proportional gain on (T_b - T_0) / (w h). [-]")
     time_constant: quantity("s", gt=0) = Field(10.0, description="Filter time of the bottom tension. [s]")
+    integral_time: quantity("s", gt=0) | None = Field(
+        None, description="Integral time of the control (PI): without it the proportional control holds the bottom "
+                          "tension off its target wherever the feed-forward misjudges the payout, as over laid cable "
+                          "that slides. [s]")
 
 
 Payout = Annotated[PayoutRate | PayoutSlack | PayoutBottomTension, Field(discriminator="type")]
