@@ -238,11 +238,10 @@ def test_straight_lay_of_a_sliding_cable_is_the_held_lay():
     carries that ripple some 100 m back (98.05 to 101.47 N there, 1.8 N either side of 100 N). The cable fixed
     beyond keeps the value of the step it was fixed at (measured 98.36 N), the 60 m free to slide 100.49-100.56 N."""
     elastic = sc.Line.single(CABLE.replace(axial_stiffness=3e7), 3000.0)
-    kwargs = dict(line=elastic, ship=sc.ShipMotion(speed=1.0), duration=400.0, segment_length=1.0,
-                  output_interval=10.0, extensible=True, payout=sc.PayoutBottomTension(tension=100.0))
+    kwargs = {"line": elastic, "ship": sc.ShipMotion(speed=1.0), "duration": 400.0, "segment_length": 1.0,
+              "output_interval": 10.0, "extensible": True, "payout": sc.PayoutBottomTension(tension=100.0)}
     held = sc.run(case(**kwargs))
-    env = sc.Environment(water_density=1030.0, depth=50.0, seabed=sc.Seabed(friction=0.5))
-    sliding = sc.run(case(env=env, laid_cable="sliding", **kwargs))
+    sliding = sc.run(_sliding(0.5, **kwargs))
     np.testing.assert_allclose(sliding.touchdown_x, held.touchdown_x, rtol=0, atol=5e-3)
     np.testing.assert_allclose(sliding.bottom_tension, held.bottom_tension, rtol=0, atol=0.05)
     np.testing.assert_allclose(sliding.top_tension, held.top_tension, rtol=0, atol=0.05)

@@ -251,6 +251,16 @@ def test_laid_cable_slides_inside_a_tight_turn_until_the_friction_holds_it():
     assert float(np.min(ds.laid_offset.values[late])) > 34.0
 
 
+SIDE_SLOPE = 0.15      # tan(beta) of the seabed across the straight route, deeper to port
+
+
+def _on_side_slope(case):
+    """The case over a plane seabed 100 m deep under the straight route, sloping across it at SIDE_SLOPE."""
+    grid = sc.case.BathymetryGrid(x=(-3000.0, 10000.0), y=(-500.0, 500.0),
+                                  depth=((100.0 - 500.0 * SIDE_SLOPE,) * 2, (100.0 + 500.0 * SIDE_SLOPE,) * 2))
+    return case.replace(analysis=case.analysis.replace(bathymetry_grid=grid))
+
+
 @pytest.mark.parametrize("friction", [0.5, 0.1])
 def test_laid_cable_on_a_side_slope_slides_down_it_only_beyond_the_friction_angle(friction):
     """A straight route along a seabed sloping across it at 1:6.7 (tan(beta) = 0.15: 100 m deep under the route,
@@ -263,11 +273,8 @@ def test_laid_cable_on_a_side_slope_slides_down_it_only_beyond_the_friction_angl
     10 %: the laid cable lies 6 deg oblique to the slope and slips a little along its axis too, where only the
     friction holds it, so it slides 1.5 % faster than straight across (0.1021 m/s measured in the nodes without
     tension), and the older cable, pulled by what was laid before the run, faster still (measured fit 0.1052 m/s)."""
-    tan_b = 0.15
-    grid = sc.case.BathymetryGrid(x=(-3000.0, 10000.0), y=(-500.0, 500.0),
-                                  depth=((100.0 - 500.0 * tan_b,) * 2, (100.0 + 500.0 * tan_b,) * 2))
-    case = _case(route=STRAIGHT, duration=600.0, friction=friction)
-    ds = sc.run(case.replace(analysis=case.analysis.replace(bathymetry_grid=grid)))
+    tan_b = SIDE_SLOPE
+    ds = sc.run(_on_side_slope(_case(route=STRAIGHT, duration=600.0, friction=friction)))
     landed, offset = ds.laid_time.values, ds.laid_offset.values
     if tan_b <= friction:
         assert float(np.max(np.abs(offset[landed > 0.0]))) < 0.01
@@ -286,12 +293,9 @@ def test_laid_cable_that_never_stops_sliding_is_fixed_with_a_warning(monkeypatch
     from seacable.laying import solver
 
     monkeypatch.setattr(solver, "_MAX_SLIDING", 40)
-    tan_b = 0.15
-    grid = sc.case.BathymetryGrid(x=(-3000.0, 10000.0), y=(-500.0, 500.0),
-                                  depth=((100.0 - 500.0 * tan_b,) * 2, (100.0 + 500.0 * tan_b,) * 2))
-    case = _case(route=STRAIGHT, duration=600.0, friction=0.1)
+    case = _on_side_slope(_case(route=STRAIGHT, duration=600.0, friction=0.1))
     with pytest.warns(sc.SeacableWarning, match=r"still sliding .*seabed.friction = 0.1\) does not hold .*Suggested fix"):
-        ds = sc.run(case.replace(analysis=case.analysis.replace(bathymetry_grid=grid)))
+        ds = sc.run(case)
     assert float(ds.time[-1]) == 600.0
 
 
