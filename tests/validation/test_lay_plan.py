@@ -267,3 +267,7 @@ def test_plan_through_alter_courses_matches_the_dynamic_lay():
     steady = (kp > 3900.0) & (kp < 4100.0)
     np.testing.assert_allclose(planned[steady], -cut, rtol=0, atol=0.01)
     np.testing.assert_allclose(dynamic[steady], -cut, rtol=0, atol=0.05)
+    # on the arc the laid cable runs R - cut from the centre: per metre of route KP it lays 1.05 (R - cut) / R
+    # (measured to 1e-5)
+    on_arc = (plan.kp.values > 3900.0) & (plan.kp.values < 4100.0)
+    np.testing.assert_allclose(plan.route_slack.values[on_arc], 1.05 * (300.0 - cut) / 300.0 - 1.0, rtol=0, atol=1e-4)
