@@ -31,12 +31,13 @@ Turns. In a steady turn (the ship on a circle of radius ``R``) the span is stead
 the centripetal and Coriolis accelerations join ``V_c^2 dt/ds`` (:func:`steady_turn`). The touchdown then runs
 on its own circle, inside the ship's by the cut ``R - rho`` (slower than the ship by ``rho / R``). At each
 station the span is solved in that frame with the route's curvature near its touchdown, the route's changes of
-heading spread over an alter-course's transient (:func:`_curvature`: two exponentials of 0.7 and 0.4 times the
-depth after and before a waypoint, fitted to the dynamic model; on an arc longer than that, the arc's own
-curvature), and the touchdown is placed on the route moved across by the span's steady offset (the cut, and a
-cross-current's ``h cot(alpha) sin(...)``), at the span's horizontal reach from the ship. On an arc this is
-exact; at a sharp alter-course and at the ends of an arc the dynamic model's laid offset is within 0.7 m of the
-plan's (20 deg, 100 m, 1 m/s, 5 % slack), where the tractrix of the layback would cut 26 m.
+heading spread over the span's transient by the kernel of its linearised lateral balance (:mod:`.lateral`:
+the laid path is the ship's track filtered by the span's lateral response, derived, not fitted; its length is
+the layback and its shape depends on the span's angle and bottom tension), and the touchdown is placed on the
+route moved across by the span's steady offset (the cut, and a cross-current's ``h cot(alpha) sin(...)``), at the
+span's horizontal reach from the ship. On an arc this is exact; at a sharp 20 deg alter-course in 100 m of water
+the plan's largest cut is within 6 % of the dynamic model's from 0.5 to 2 m/s and under 200 N of bottom
+tension (the tractrix of the layback would cut 26 m at 1 m/s, where both cut 10.5 m).
 
 The touchdown is where the span from the ship meets the seabed: its depth is iterated on (a grid
 gives a different depth off the route). The laid cable follows the touchdown's path over the
@@ -53,10 +54,9 @@ the ship speed, the spans and the repeaters' KPs are iterated to agreement. A st
 swings between two steady positions as the iteration goes (two spans meet a falling seabed) is held
 after a few iterations and flagged.
 
-Limits: the span is in steady state at each KP for the lagged speed and the spread turn (the lag and the
-spread are models of the transient, not its solution; the dynamic model gives it); the spread's lengths are
-fitted at 1 m/s and 5 % slack (at 0.5 and 2 m/s and under 200 N the dynamic model's peak cut at a sharp
-alter-course is 1.49, 0.88 and 0.70 times the plan's); the seabed's cross slope, a repeater's own weight and drag and the cable's
+Limits: the span is in steady state at each KP for the lagged speed and the spread turn (the lag is a model of
+the transient, not its solution, and the spread is the linear theory's, without the span's lateral inertia, for the
+span in still water on a flat seabed: the dynamic model gives the rest); the seabed's cross slope, a repeater's own weight and drag and the cable's
 bending stiffness are left out, and so is a span that touches a ridge between touchdown and ship
 (flagged: ``span_clearance < 0``). A touchdown that would move backwards (the seabed falling away
 faster than the layback grows) is flagged too. The dynamic model (``laying_dynamic``) has none of
@@ -74,20 +74,23 @@ from __future__ import annotations
 import math
 import time as _time
 import warnings
+from functools import lru_cache
 from itertools import pairwise
 
 import numpy as np
 from numba import njit
 
 from ..errors import InputError, SeacableWarning
+from . import lateral
 from .kernel import current_at
 
-__all__ = ["LayPlan", "plan_lay", "solve_spans", "steady_turn", "straight_direction"]
+__all__ = ["LayPlan", "plan_lay", "solve_spans", "span_spread", "steady_turn", "straight_direction"]
 
 # columns of the per-station property table
 S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT = range(7)
 N_STATION_PROPS = 7
-_STEPS = 80          # RK4 steps over the straight cable's length at most
+_STEPS = 80          # RK4 steps over the straight cable's length at most (in a turn at 2 m/s the cut is then 1.5 %
+                     # long, and 0.1 % with 400 steps, at 3 times the planner's time)
 _MAX_STEP = 50.0     # m, longest RK4 step
 _SWING_AFTER = 8     # outer iterations after which a station whose span still changes is held (and flagged)
 
@@ -164,10 +167,11 @@ def _rhs(y, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, out):
 
 
 @njit(cache=True)
-def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
+def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out, rec):
     """One suspended span from the touchdown (depth ``h``) up to the surface; fills ``out`` with
     (ship - touchdown along e_1, along e_2, suspended length, top tension, entry angle); NaN if the
-    cable does not reach the surface.
+    cable does not reach the surface. ``rec`` (m, 4), if it has rows, takes the profile (arc length, tension,
+    t_1, t_3) at the start and after each step; returns the number of rows written.
 
     The tangent relaxes to the straight cable's direction over the length ``ell = (T - (m + m_a) V_c^2) /
     |df/dt|`` (the effective tension over the normal force's gradient). Where ``ell`` is shorter than
@@ -191,6 +195,10 @@ def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
     s = 0.0
     meff_v2 = p[S_MEFF] * vc * vc
     uniform = depths.size == 1 and om == 0.0
+    n_rec = 0
+    if rec.shape[0] > 0:
+        rec[0, 0], rec[0, 1], rec[0, 2], rec[0, 3] = 0.0, y[6], y[3], y[5]
+        n_rec = 1
     for _ in range(100000):
         if y[2] >= h:
             break
@@ -235,14 +243,18 @@ def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out):
         for j in range(7):
             y[j] = tmp[j]
         s += ds
+        if n_rec < rec.shape[0]:
+            rec[n_rec, 0], rec[n_rec, 1], rec[n_rec, 2], rec[n_rec, 3] = s, y[6], y[3], y[5]
+            n_rec += 1
         if y[2] < -h:                         # turned down: no span reaches the surface
             out[:] = np.nan
-            return
+            return n_rec
     if y[2] < h:
         out[:] = np.nan
-        return
+        return n_rec
     out[0], out[1], out[2], out[3] = y[0], y[1], s, y[6]
     out[4] = math.asin(min(max(y[5], -1.0), 1.0))
+    return n_rec
 
 
 @njit(cache=True)
@@ -268,9 +280,11 @@ def _straight_layback(h, vs, props, rho) -> np.ndarray:
 @njit(cache=True)
 def solve_spans(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
     """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
+    none = np.empty((0, 4))
     for i in range(h.size):
         if active[i]:
-            _span(h[i], beta[i], vs[i], om[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i])
+            _span(h[i], beta[i], vs[i], om[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i],
+                  none)
 
 
 class LayPlan:
@@ -367,6 +381,8 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     total = 0
     # the route's changes of heading (at its vertices: the sharp waypoints and the arcs' chords), for the turn
     turn_kp, turn = _vertex_turns(route)
+    sharp_turns = (route.kp[1:-1][route.sharp], route.vertex_turn[route.sharp])
+    spread = _Spread(water_density)
     vs_td = vs.copy()                            # the touchdown's speed (slower inside a turn) [m/s]
     laid_off = np.zeros(n)                       # the touchdown's steady offset from the route (+ port) [m]
     td_kp = kp.copy()                            # the touchdown's KP [m]
@@ -378,16 +394,18 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         props = props_at(s_td)
         per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
         # the span's speed (the ship's, lagged by the pay-out time tau) and its turn rate (the route's curvature
-        # near the touchdown, spread over the alter-course's transient: :func:`_curvature`)
+        # near the touchdown, spread over the span's transient: :class:`_Spread`)
         speed_eff = _lag(kp, vs, vs, tau)
         # (at the straight span's touchdown over the depth under the ship: kept off the iterated touchdown, whose
         # depth can have two roots where the seabed falls away)
         reach = _straight_layback(h_ship, speed_eff, props, water_density)
-        omega = speed_eff * _curvature(kp - reach, turn_kp, turn, h_ship)
+        curvature, spread_heading, reach = spread.turns(kp, h_ship, speed_eff, t0, per_metre * np.ones(n), props,
+                                                        turn_kp, turn, reach)
+        omega = speed_eff * curvature
         # (a turn that would move the touchdown by under 0.01 mm, the cut being about 0.08 L^2 Omega / V: none)
         omega[np.abs(omega) * reach**2 < 1e-4 * speed_eff] = 0.0
         # the span's direction (for the current across it and the seabed's slope): the route's heading there, spread
-        psi_td = _smooth_heading(kp - reach, 0.5 * (_AFTER + _BEFORE) * h_ship, turn_kp, turn, route.heading(kp - reach))
+        psi_td = route.heading(kp - reach) + spread_heading
         e1 = np.column_stack([np.cos(psi_td), np.sin(psi_td)])
         cos_c, sin_c = np.cos(current.heading - psi_td), np.sin(current.heading - psi_td)
         # the payout through the span (its tangential drag and turning): the steady lay's, the laid length per metre
@@ -415,8 +433,8 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
                                  "does not reach the surface (it turns down on the way). Suggested fix: check the "
                                  "current against the ship speed, or use the dynamic model (laying_dynamic).")
             laid_off = np.where(active, _steady_offset(out, vs_td, omega), laid_off)
-            new_kp = _on_offset_line(route, ship_xy, kp, np.hypot(out[:, 0], out[:, 1]), laid_off, (turn_kp, turn))
-            new_xy = _offset_point(route, new_kp, laid_off, (turn_kp, turn))
+            new_kp = _on_offset_line(route, ship_xy, kp, np.hypot(out[:, 0], out[:, 1]), laid_off, sharp_turns)
+            new_xy = _offset_point(route, new_kp, laid_off, sharp_turns)
             seabed.check_covers(new_xy[active], "touchdown", kp[active])
             g = np.where(active, seabed.depth(new_xy, kp=new_kp), h)
             td_xy = np.where(active[:, None], new_xy, td_xy)
@@ -543,43 +561,249 @@ def _lag(kp, speed, value, tau) -> np.ndarray:
 
 def _vertex_turns(route):
     """KPs of the route's inner vertices and the change of heading at each (+ to port). [m], [rad]"""
-    a = np.arctan2(route.direction[:, 1], route.direction[:, 0])
-    turn = np.angle(np.exp(1j * np.diff(a)))
-    keep = turn != 0.0
-    return route.kp[1:-1][keep], turn[keep]
+    keep = route.vertex_turn != 0.0
+    return route.kp[1:-1][keep], route.vertex_turn[keep]
 
 
-# lengths of the turn's spread after and before a vertex (:func:`_curvature`), over the depth [-]: fitted to the
-# dynamic model at 1 m/s and 5 % slack (20 deg in 100 and 200 m: the peak offset within 5 %); at 0.5 and 2 m/s
-# and under a 200 N bottom tension the dynamic model's peak offset is 1.54, 0.87 and 0.72 times the spread's.
-# Over the layback instead of the depth (the same at one speed and slack) the ratios go to 0.72 and 1.80 at 0.5
-# and 2 m/s, and the 200 N case is unchanged: neither length scale is the transient's own
-_AFTER, _BEFORE = 0.7, 0.4
+# the spread kernels' grid (in laybacks, :func:`.lateral.spread_kernel`) and the steps of their cache: the span's
+# angle [deg] and, under a bottom tension, the log of T_0 / (w h)
+_SPREAD_EXTENT, _SPREAD_SAMPLES = (-1.5, 10.5), 1024
+_ANGLE_STEP, _TENSION_STEP = 0.5, 0.1
+_CATENARY_NODES = 51       # the catenary's samples in the lateral balance's finite differences (g_2 to 1e-3)
+
+
+@lru_cache(maxsize=4096)
+def _straight_kernel(angle_level, tangential_level):
+    """The spread kernel of Zajac's straight span (no bottom tension), in laybacks: ``(K l, int K)`` on the common
+    grid. Its shape depends on the angle ``alpha`` and the tangential drag's share ``eps`` of ``w sin(alpha)``
+    only: ``G = exp(i k l) / 0F1(1 / (cos(alpha) D); i k l / (cos(alpha) D))``, ``cos(alpha) D = (1 - eps)
+    sin^2(alpha)`` (:func:`.lateral.straight_span_transfer` with Zajac's ``w / (k_n V^2) = sin^2 / cos``)."""
+    alpha = math.radians(angle_level * _ANGLE_STEP)
+    ca, sa = math.cos(alpha), math.sin(alpha)
+    # the span of unit layback at unit speed with k_n = 1, so w = sin^2 / cos (Zajac)
+    w = sa * sa / ca
+
+    def transfer(k):
+        return lateral.straight_span_transfer(k, angle=alpha, suspended_length=1.0 / ca, speed=1.0, weight=w, kn=1.0,
+                                              tension_gradient=(1.0 - 0.01 * tangential_level) * w * sa)
+
+    _, kernel, integral, _ = lateral.spread_kernel(transfer, 1.0, extent=_SPREAD_EXTENT, samples=_SPREAD_SAMPLES)
+    return kernel, integral
+
+
+def span_spread(props, depth, ship_speed, *, water_density, slack=None, bottom_tension=None,
+                extent=_SPREAD_EXTENT, samples=_SPREAD_SAMPLES):
+    """How a station's span spreads a change of the route's heading: the kernel of its linearised lateral balance.
+
+    The span is the steady lay in still water on a straight track over a flat seabed: Zajac's straight span without
+    bottom tension (the closed form, :func:`.lateral.straight_span_transfer`), the catenary with drag under one
+    (:func:`_span`'s profile and :func:`.lateral.span_transfer`). See :mod:`.lateral` for the model.
+
+    Parameters
+    ----------
+    props : (N_STATION_PROPS,) array
+        The cable (``S_*`` columns).
+    depth, ship_speed : float
+        Water depth [m] and ship speed over the ground [m/s].
+    water_density : float
+        [kg/m^3]
+    slack, bottom_tension : float
+        The target: one of the two ([-] or [N]).
+    extent, samples
+        The kernel's range in laybacks and the transform's points (:func:`.lateral.spread_kernel`).
+
+    Returns
+    -------
+    dict or None
+        ``x`` (the touchdown's KP minus the change of heading's) [m], ``kernel`` [1/m], ``integral`` [-], ``g2``
+        (the steady turn's cut on a circle of radius R is ``g2 / R``) [m^2], ``layback`` [m]; None if no span reaches
+        the surface.
+    """
+    p = np.asarray(props, float)
+    w, d = p[S_W], p[S_D]
+    kn, kt = 0.5 * water_density * p[S_CDN] * d, 0.5 * water_density * p[S_CDT] * math.pi * d
+    if not bottom_tension:
+        ca, _, sa = straight_direction(w, kn, ship_speed, 0.0, 0.0)
+        ut = (1.0 + (slack or 0.0)) * ship_speed - ship_speed * ca     # the water along the cable [m/s]
+        layback = depth * ca / sa
+
+        def transfer(k):
+            return lateral.straight_span_transfer(k, angle=math.atan2(sa, ca), suspended_length=depth / sa,
+                                                  speed=ship_speed, weight=w, kn=kn,
+                                                  tension_gradient=w * sa - kt * abs(ut) * ut)
+    else:
+        out, rec = np.empty(5), np.empty((4000, 4))
+        zero = np.zeros(1)
+        payout = ship_speed / (1.0 + bottom_tension * p[S_COMPLIANCE])
+        m = _span(depth, 0.0, ship_speed, 0.0, payout, 1.0, 0.0, bottom_tension, zero, zero, water_density, p, out, rec)
+        if not np.isfinite(out[0]) or m >= rec.shape[0]:
+            return None
+        layback = out[0]
+        s = np.linspace(0.0, out[2], _CATENARY_NODES)
+        r = rec[:m]
+        t1, t3 = np.interp(s, r[:, 0], r[:, 2]), np.interp(s, r[:, 0], r[:, 3])
+        norm = np.hypot(t1, t3)
+        tension = np.interp(s, r[:, 0], r[:, 1])
+
+        def transfer(k):
+            return lateral.span_transfer(k, s, tension, t3 / norm, t1 / norm, speed=ship_speed, weight=w, kn=kn,
+                                         layback=layback)
+
+    x, kernel, integral, g2 = lateral.spread_kernel(transfer, layback, extent=extent, samples=samples)
+    return {"x": x, "kernel": kernel, "integral": integral, "g2": g2, "layback": layback}
+
+
+@lru_cache(maxsize=4096)
+def _catenary_kernel(angle_level, tension_level, props, water_density):
+    """The spread kernel of the catenary with drag under a bottom tension, in laybacks ``(K l, int K)``, and its
+    layback over its depth: :func:`span_spread` at the speed whose Zajac angle is the level's and the depth where
+    ``T_0 / (w h)`` is; its shape, in laybacks, depends on those two numbers (and, by under 1 %, on the payout's
+    inertia, the stretch and the tangential drag)."""
+    p = np.array(props)
+    w, kn = p[S_W], 0.5 * water_density * p[S_CDN] * p[S_D]
+    alpha = math.radians(angle_level * _ANGLE_STEP)
+    speed = math.sqrt(w * math.cos(alpha) / (kn * math.sin(alpha) ** 2))
+    depth = 100.0
+    spread = span_spread(p, depth, speed, water_density=water_density,
+                         bottom_tension=math.exp(tension_level * _TENSION_STEP) * w * depth, extent=_SPREAD_EXTENT,
+                         samples=_SPREAD_SAMPLES)
+    if spread is None:
+        return None
+    return spread["kernel"] * spread["layback"], spread["integral"], spread["layback"] / depth
+
+
+def clear_spread_cache() -> None:
+    """Forget the spread kernels computed so far in this process (they are kept by angle and tension level)."""
+    _straight_kernel.cache_clear()
+    _catenary_kernel.cache_clear()
+
+
+class _Spread:
+    """Each station's spread of the route's changes of heading over its span's transient (:mod:`.lateral`).
+
+    A station's kernel is that of its span in still water on a straight track at the span's speed: Zajac's
+    straight span in closed form without bottom tension, the catenary with drag under a bottom tension (its
+    lateral balance by finite differences). The kernels are computed at levels of the numbers their shape
+    depends on (the angle every 0.5 deg, the log of ``T_0 / (w h)`` every 0.1) and interpolated linearly between them, so
+    that the plan's iteration sees a spread that changes smoothly with the speed and the depth. They share one
+    grid in laybacks, ``u0 + j du``.
+    """
+
+    def __init__(self, water_density):
+        self.rho = water_density
+        self.rows, self.kernels, self.integrals = {}, [], []
+        self.du = 2.0 * (_SPREAD_EXTENT[1] - _SPREAD_EXTENT[0]) / _SPREAD_SAMPLES
+        self.u0 = math.ceil(_SPREAD_EXTENT[0] / self.du - 1e-9) * self.du     # the first point of any kernel
+
+    def _row(self, key, tables):
+        if key not in self.rows:
+            self.rows[key] = len(self.kernels)
+            self.kernels.append(tables[0])
+            self.integrals.append(tables[1])
+        return self.rows[key]
+
+    def groups(self, h, vs, t0, per_metre, props):
+        """The kernels' rows and weights (four a station; row -1 where no span reaches the surface) and the spans'
+        laybacks at stations of depth ``h``, span speed ``vs``, bottom tension ``t0``, laid length per metre run
+        ``per_metre`` and cable ``props``. [-], [-], [m]"""
+        n = h.size
+        rows, weights = np.full((n, 4), -1), np.zeros((n, 4))
+        w, d = props[:, S_W], props[:, S_D]
+        kn, kt = 0.5 * self.rho * props[:, S_CDN] * d, 0.5 * self.rho * props[:, S_CDT] * math.pi * d
+        q = kn * vs * vs                                     # Zajac's angle (:func:`straight_direction`)
+        ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
+        sa = np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
+        angle = np.degrees(np.arctan2(sa, ca)) / _ANGLE_STEP
+        a0 = np.floor(angle).astype(int)
+        fa = angle - a0
+        layback = h * ca / sa
+        # (a span that falls almost straight down, within 0.06 deg of the vertical, lays the track itself: no spread)
+        steep = layback < 1e-3 * h
+        a0 = np.where(steep, 0, a0)
+        slack = (t0 <= 0.0) & ~steep
+        if slack.any():
+            ut = per_metre * vs - vs * ca                    # the water along the cable, past the material [m/s]
+            tangential = np.rint(100.0 * kt * np.abs(ut) * ut / (w * sa)).astype(int)
+            for j, (level, weight) in enumerate(((a0, 1.0 - fa), (a0 + 1, fa))):
+                keys = np.column_stack([level, tangential])[slack]
+                unique, back = np.unique(keys, axis=0, return_inverse=True)
+                found = np.array([self._row((0, *key), _straight_kernel(*key)) for key in map(tuple, unique)])
+                rows[slack, j], weights[slack, j] = found[back.ravel()], weight[slack]
+        taut = (t0 > 0.0) & ~steep
+        if taut.any():
+            ratio = np.log(np.where(taut, t0, 1.0) / (w * h)) / _TENSION_STEP
+            b0 = np.floor(ratio).astype(int)
+            fb = ratio - b0
+            cable, which = np.unique(props[taut], axis=0, return_inverse=True)
+            which = which.ravel()
+            layback[taut] = 0.0
+            for j, (la, lb, weight) in enumerate(((a0, b0, (1 - fa) * (1 - fb)), (a0 + 1, b0, fa * (1 - fb)),
+                                                  (a0, b0 + 1, (1 - fa) * fb), (a0 + 1, b0 + 1, fa * fb))):
+                keys = np.column_stack([la[taut], lb[taut], which])
+                unique, back = np.unique(keys, axis=0, return_inverse=True)
+                found, scale = [], []
+                for key in map(tuple, unique):
+                    c = tuple(cable[key[2]].tolist())
+                    tables = _catenary_kernel(key[0], key[1], c, self.rho)
+                    found.append(-1 if tables is None else self._row((1, key[0], key[1], c), tables))
+                    scale.append(np.nan if tables is None else tables[2])
+                back = back.ravel()
+                rows[taut, j], weights[taut, j] = np.array(found)[back], weight[taut]
+                layback[taut] += weight[taut] * np.array(scale)[back] * h[taut]
+            lost = taut & (np.any(rows < 0, axis=1) | ~np.isfinite(layback))
+            rows[lost], weights[lost], layback[lost] = -1, 0.0, (h * ca / sa)[lost]
+        return rows, weights, layback
+
+    def turns(self, kp, h, vs, t0, per_metre, props, turn_kp, turn, reach):
+        """The route's curvature at the stations' touchdowns (``layback`` behind the ship KPs ``kp``) spread over
+        the span's transient [1/m], the change of the spread heading from the legs' there [rad], and the
+        layback [m] (``reach``, Zajac's, where no change of heading is near)."""
+        n = kp.size
+        rows, weights, layback = np.full((n, 4), -1), np.zeros((n, 4)), np.array(reach, float)
+        # the stations whose window (the kernel's, over twice Zajac's layback) holds a change of heading
+        lo = np.searchsorted(turn_kp, kp - reach - 2.0 * _SPREAD_EXTENT[1] * reach)
+        hi = np.searchsorted(turn_kp, kp - reach - 2.0 * _SPREAD_EXTENT[0] * reach, side="right")
+        near = hi > lo
+        if not near.any():
+            return np.zeros(n), np.zeros(n), layback
+        rows[near], weights[near], layback[near] = self.groups(h[near], vs[near], t0[near], per_metre[near],
+                                                               props[near])
+        if not self.kernels:
+            return np.zeros(n), np.zeros(n), layback
+        curvature, heading = _spread_turns(kp - layback, layback, rows, weights, self.u0, self.du,
+                                           np.array(self.kernels), np.array(self.integrals), turn_kp, turn)
+        return curvature, heading, layback
 
 
 @njit(cache=True)
-def _curvature(kp, turn_kp, turn, depth):
-    """The route's curvature spread over an alter-course's transient, at the KPs ``kp``. [1/m]
-
-    Each change of heading ``d`` at a vertex ``k_j`` is spread as ``d K(k - k_j)`` with the two-sided
-    exponential ``K(x) = exp(-x / a) / (a + b)`` after the vertex and ``exp(x / b) / (a + b)`` before it
-    (unit area: an arc longer than the spread has its own curvature, and the laid path's offset summed over
-    KP is the steady turn's ``c_1 d``, as the dynamic model gives to 1.5 %). ``a = 0.7 h`` and ``b = 0.4 h``
-    (``h`` the depth at the touchdown) are fitted to the dynamic model's laid offset at a 20 deg
-    alter-course in 100 and 200 m of water at 1 m/s, 5 % slack; the spread is not derived (see
-    :data:`_AFTER`).
-    """
-    out = np.zeros(kp.size)
-    for i in range(kp.size):
-        a, b = _AFTER * depth[i], _BEFORE * depth[i]
-        lo = np.searchsorted(turn_kp, kp[i] - 40.0 * b)
-        hi = np.searchsorted(turn_kp, kp[i] + 40.0 * a)
-        acc = 0.0
+def _spread_turns(x_td, layback, rows, weights, u0, du, kernels, integrals, turn_kp, turn):
+    """Each change of heading ``d_j`` at KP ``k_j`` spread as ``d_j K((x - k_j) / l) / l`` (curvature) and
+    ``d_j (I - H)((x - k_j) / l)`` (the heading's change from the legs', ``I`` the kernel's integral and ``H``
+    the step of the sharp turn), at the stations' touchdown KPs ``x``; a station's ``K`` is the weighted sum of
+    its kernels' ``rows`` (none where the first is -1)."""
+    n, m = x_td.size, kernels.shape[1]
+    curvature, heading = np.zeros(n), np.zeros(n)
+    u1 = u0 + (m - 1) * du
+    for i in range(n):
+        ell = layback[i]
+        if rows[i, 0] < 0:
+            continue
+        lo = np.searchsorted(turn_kp, x_td[i] - u1 * ell)
+        hi = np.searchsorted(turn_kp, x_td[i] - u0 * ell, side="right")
         for j in range(lo, hi):
-            x = kp[i] - turn_kp[j]
-            acc += turn[j] * (math.exp(-x / a) if x >= 0.0 else math.exp(x / b))
-        out[i] = acc / (a + b)
-    return out
+            u = (x_td[i] - turn_kp[j]) / ell
+            f = (u - u0) / du
+            a = min(max(int(f), 0), m - 2)
+            r = f - a
+            kv, iv = 0.0, 0.0
+            for c in range(rows.shape[1]):
+                g, wt = rows[i, c], weights[i, c]
+                if g >= 0 and wt != 0.0:
+                    kv += wt * (kernels[g, a] * (1.0 - r) + kernels[g, a + 1] * r)
+                    iv += wt * (integrals[g, a] * (1.0 - r) + integrals[g, a + 1] * r)
+            curvature[i] += turn[j] * kv / ell
+            heading[i] += turn[j] * (iv - (1.0 if u >= 0.0 else 0.0))
+    return curvature, heading
 
 
 def _steady_offset(out, vs_td, omega) -> np.ndarray:
@@ -594,10 +818,12 @@ def _steady_offset(out, vs_td, omega) -> np.ndarray:
 
 
 def _offset_point(route, k, offset, turns) -> np.ndarray:
-    """The route's points at KPs ``k`` moved by ``offset`` to port, across the route's heading smoothed over
-    ``|offset|`` either side (continuous through a sharp waypoint, where the legs' normals jump). [m]"""
+    """The route's points at KPs ``k`` moved by ``offset`` to port, across the route's heading: continuous along the
+    arcs (:meth:`RouteGeometry.smooth_heading`), and smoothed over ``|offset|`` either side of a sharp waypoint
+    (``turns``: their KPs and changes of heading), where the legs' normals jump. [m]"""
     turn_kp, turn = turns
-    psi = _smooth_heading(np.asarray(k, float), np.maximum(np.abs(offset), 1.0), turn_kp, turn, route.heading(k))
+    psi = _smooth_heading(np.asarray(k, float), np.maximum(np.abs(offset), 1.0), turn_kp, turn,
+                          route.smooth_heading(k))
     return route.point(k) + offset[:, None] * np.column_stack([-np.sin(psi), np.cos(psi)])
 
 
@@ -719,7 +945,7 @@ def steady_turn(props, depth, ship_speed, radius, *, water_density, slack=None, 
 
     def span(rho):
         vs = abs(om) * rho
-        _span(depth, 0.0, vs, om, per_metre * vs, 1.0, 0.0, t0, zero, zero, water_density, p, out)
+        _span(depth, 0.0, vs, om, per_metre * vs, 1.0, 0.0, t0, zero, zero, water_density, p, out, np.empty((0, 4)))
         return out[0], out[1] - rho * math.copysign(1.0, radius)   # the ship from the centre
 
     def miss(rho):

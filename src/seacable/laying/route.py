@@ -181,7 +181,7 @@ class RouteGeometry:
         self.waypoints = np.asarray(xy, float)
         _check_points_input(self.waypoints, "route", "m")
         self.transformer = transformer
-        track, kinks = _arcs(self.waypoints, turn_radius)
+        track, kinks, sharp = _arcs(self.waypoints, turn_radius)
         d = np.diff(track, axis=0)
         self.xy = track
         self.length = np.hypot(d[:, 0], d[:, 1])              # of each leg [m]
@@ -196,6 +196,11 @@ class RouteGeometry:
         self._boxes = (np.minimum(x[:-1], x[1:]), np.maximum(x[:-1], x[1:]), np.minimum(y[:-1], y[1:]),
                        np.maximum(y[:-1], y[1:]))           # bounding box of each leg
         self.turn_kp = self.kp[kinks]
+        # the change of heading at each inner vertex (+ to port), and which are sharp (not an arc's chords)
+        a = np.arctan2(self.direction[:, 1], self.direction[:, 0])
+        self.vertex_turn = np.angle(np.exp(1j * np.diff(a)))
+        self.sharp = np.zeros(self.vertex_turn.size, bool)
+        self.sharp[sharp - 1] = True
         self.waypoint_kp = self.locate(self.waypoints)[0] if turn_radius is not None else self.kp.copy()
 
     @classmethod
@@ -238,6 +243,18 @@ class RouteGeometry:
         """Direction of the route at ``kp``, from +x towards +y (of the leg after a waypoint). [rad]"""
         d = self.direction[self.leg(kp)]
         return np.arctan2(d[..., 1], d[..., 0])
+
+    def smooth_heading(self, kp) -> np.ndarray:
+        """Direction of the route at ``kp`` with the arcs' headings continuous: across each chord of an arc the
+        heading runs linearly from the circle's at one end to the circle's at the other (half the vertices' turns
+        either side), so that only the sharp waypoints change it in a step. [rad]"""
+        kp = np.asarray(kp, float)
+        k = self.leg(kp)
+        soft = np.where(self.sharp, 0.0, self.vertex_turn)        # of the inner vertices 1 .. n-2
+        before = np.concatenate([[0.0], soft])[k]                 # at the leg's start vertex
+        after = np.concatenate([soft, [0.0]])[k]                  # at its end vertex
+        f = np.clip((kp - self.kp[k]) / self.length[k], 0.0, 1.0)
+        return self.heading(kp) - 0.5 * before * (1.0 - f) + 0.5 * after * f
 
     def turns(self) -> np.ndarray:
         """Alter-course at each inner waypoint, positive to port (counter-clockwise). [rad]"""
@@ -398,8 +415,8 @@ _ARC_TOLERANCE = 1e-3    # m, largest distance of an arc's chord from the circle
 
 
 def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The track's vertices with each alter-course sailed on an arc tangent to both legs, and the indices of
-    the kinks (sharp waypoints, arc ends)."""
+    """The track's vertices with each alter-course sailed on an arc tangent to both legs, the indices of the kinks
+    (sharp waypoints, arc ends) and of the sharp waypoints among them."""
     n = len(xy)
     inner = n - 2
     radii = np.zeros(inner) if turn_radius is None else np.asarray(turn_radius, float)
@@ -420,11 +437,12 @@ def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarr
         raise InputError(f"route.turn_radius: the arcs at the ends of the leg from waypoint {k + 1} to {k + 2} ("
                          f"{legs[k]:.6g} m) need {cut[k] + cut[k + 1]:.6g} m of it (R tan(turn/2) at each "
                          "alter-course). Suggested fix: a smaller turn radius there, or waypoints further apart.")
-    pts, kinks = [xy[0]], [0]
+    pts, kinks, sharp = [xy[0]], [0], []
     for i in range(1, n - 1):
         r, th = radii[i - 1], theta[i - 1]
         if r == 0.0 or th == 0.0:
             kinks.append(len(pts))
+            sharp.append(len(pts))
             pts.append(xy[i])
             continue
         a = xy[i] - tangent[i - 1] * u[i - 1]
@@ -443,7 +461,7 @@ def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarr
     # drop a vertex repeating the one before (an arc ending where the next begins)
     keep = np.concatenate([[True], np.hypot(*np.diff(track, axis=0).T) > 1e-9])
     index = np.cumsum(keep) - 1
-    return track[keep], np.unique(index[kinks])
+    return track[keep], np.unique(index[kinks]), np.unique(index[np.array(sharp, int)])
 
 
 class _Ragged:
