@@ -73,7 +73,10 @@ UNION_TAGS: set[str] = set()
 def _path(loc) -> str:
     parts: list[str] = []
     for i, item in enumerate(loc):
-        if i > 0 and isinstance(item, str) and item in UNION_TAGS:
+        # a union's tag stands before the member's own field (a field of the same name, as payout 'slack''s
+        # 'slack', comes after it, or last, or before an index)
+        if (i > 0 and isinstance(item, str) and item in UNION_TAGS and i + 1 < len(loc)
+                and isinstance(loc[i + 1], str)):
             continue
         if isinstance(item, int):
             parts.append(f"[{item}]")

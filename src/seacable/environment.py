@@ -63,7 +63,7 @@ class Current(Model):
             if not (np.all(np.isfinite(d)) and np.all(np.isfinite(v))):
                 raise ValueError("depths and speeds must be finite numbers [m, m/s].")
             if np.any(d < 0) or np.any(np.diff(d) <= 0):
-                raise ValueError(f"depths must be >= 0 m and strictly increasing, got {list(d)} m. "
+                raise ValueError(f"depths must be >= 0 m and strictly increasing, got {[float(v) for v in d]} m. "
                                  "Suggested fix: give depths below the surface as positive numbers, "
                                  "top first.")
         return self

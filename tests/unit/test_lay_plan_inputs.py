@@ -117,6 +117,10 @@ def _set(path, value):
     (_set(("analysis", "route"), {"latitude": [50.0, 95.0], "longitude": [1.0, 1.1]}), "latitudes must lie"),
     (_set(("analysis", "ship"), {"kp": [0.0, 1000.0], "speeds": [1.5, 0.0]}), "must be > 0 m/s"),
     (_set(("analysis", "kp_start"), 20000.0), "lies outside the route"),
+    (lambda data: data["analysis"].update(route={"waypoints": [[0.0, 0.0], [6000.0, 0.0], [3000.0, 0.0]]}),
+     "the route turns back on itself at waypoint 2 (an alter-course of 180.0 deg"),
+    (_set(("analysis", "bathymetry", "distance"), [0, 5000, 1000, 6000, 10000, 14000]),
+     "distances must be strictly increasing, got [0.0, 5000.0, 1000.0,"),
 ])
 def test_bad_lay_plan_input_one_message(tmp_path, capsys, edit, expected):
     """Each bad input: exit 2 from validate and from run, one message naming it."""
@@ -189,6 +193,35 @@ def test_following_a_lay_table_bad_input(tmp_path, capsys):
     data["analysis"]["lay_table"] = {"file": "t.csv"}
     (tmp_path / "case.yaml").write_text(yaml.safe_dump(data))
     assert main(["validate", str(tmp_path / "case.yaml")]) == 0
+
+
+@pytest.mark.parametrize("edit, expected", [
+    ({"payout": {"type": "slack", "slack": -0.05}}, "analysis.payout.slack must be >= 0, got -0.05"),
+    ({"payout": {"type": "slack", "slack": 5.0}}, "analysis.payout.slack must be <= 1, got 5"),
+    ({"ship": {"speed": 1.0, "start_x": 5000.0}}, "start_x = 5000 m lies outside the route, which runs from KP -1000"),
+    ({"bathymetry_grid": {"x": [-300.0, 1500.0], "y": [-200.0, 600.0], "depth": [[100.0, 100.0], [100.0, 100.0]]}},
+     ("the seabed does not cover the cable already on the seabed at the start: no depth behind x = -299.8 m, "
+      "y = 41.6 m")),
+    ({"bathymetry_grid": {"x": [-100.0, 1500.0], "y": [-200.0, 600.0], "depth": [[100.0, 100.0], [100.0, 100.0]]}},
+     "the seabed grid does not cover the cable: no depth at x = -100"),
+    ({"line_length": 400.0}, "the run starts with 236 m of cable on the seabed and 234.317 m suspended"),
+])
+def test_laying_dynamic_bad_input_one_message(tmp_path, capsys, edit, expected):
+    """A 3-D lay (examples/lay_route_3d.yaml) with a negative or a percent slack, a start off the route, a grid that
+    covers the ship's path but not the cable on the seabed behind the start (it gave NaN positions), a line too
+    short for the starting lay: validate and run refuse it before the time loop, exit 2, one message. (A grid that
+    ends under the span, x from -100 m, is met where the starting span's touchdown is looked for.)"""
+    data = yaml.safe_load((EXAMPLE.parent / "lay_route_3d.yaml").read_text())
+    if "line_length" in edit:
+        data["line"]["length"] = edit.pop("line_length")
+    data["analysis"].update(edit)
+    path = tmp_path / "case.yaml"
+    path.write_text(yaml.safe_dump(data))
+    for argv in (["validate", str(path)], ["run", str(path), "-o", str(tmp_path / "out.nc")]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert expected in err and "Traceback" not in err, err
+    assert not (tmp_path / "out.nc").exists()
 
 
 def _every_leg(route, q):

@@ -139,6 +139,21 @@ def test_repeater_slows_the_ship_between_entry_and_touchdown():
     assert float(ds.repeater_touchdown_time[0]) > float(ds.repeater_entry_time[0])
 
 
+def test_target_table_is_taken_at_the_touchdown_kp():
+    """A slack target by KP (2 % at KP 0, 6 % at 5 km, 2 % at 10 km) is where the cable lands: each row's slack is
+    the table at that row's touchdown KP, which lies a layback (2.9 km in 1000 m of water) behind the ship (to
+    1e-6: the touchdown KP of the last iteration against the one the target was taken at; measured 5e-7), and
+    the cable laid per metre of route there is 1 + that slack."""
+    table = LayTarget(kp=(0.0, 5000.0, 10000.0), slack=(0.02, 0.06, 0.02))
+    ds = sc.run(_case(depth=1000.0, target=table))
+    expected = np.interp(ds.touchdown_kp.values, table.kp, table.slack)
+    np.testing.assert_allclose(ds.slack.values, expected, rtol=0, atol=1e-6)
+    at_ship = np.interp(ds.kp.values, table.kp, table.slack)
+    assert float(np.max(np.abs(ds.slack.values - at_ship))) > 0.02        # the ship's KP would be a layback early
+    steady = (ds.touchdown_kp.values > 500.0) & (ds.kp.values < 9000.0)
+    np.testing.assert_allclose(ds.route_slack.values[steady], ds.slack.values[steady], rtol=0, atol=2e-3)
+
+
 def test_span_follows_a_slow_down_smoothly():
     """The lag: the span sees the ship's velocity through a first-order lag of h / (V_s sin(alpha)), so through a slow-down the
     touchdown KP keeps increasing (no jump to the slow span's shorter layback) and the payout stays >= 0."""

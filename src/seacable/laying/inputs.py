@@ -13,7 +13,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from .._model import Model, quantity
+from .._model import UNION_TAGS, Model, quantity
 from ..errors import InputError
 
 __all__ = [
@@ -45,7 +45,7 @@ def _check_schedule(times, values, name: str, unit: str) -> None:
         i = int(np.argmax(bad))
         raise ValueError(f"{name}[{i}] must be a finite number >= 0 {unit}, got {v[i]:g} {unit}.")
     if not np.all(np.isfinite(t)) or np.any(t < 0) or np.any(np.diff(t) <= 0):
-        raise ValueError(f"times must be finite, >= 0 s and strictly increasing, got {list(t)} s. "
+        raise ValueError(f"times must be finite, >= 0 s and strictly increasing, got {[float(v) for v in t]} s. "
                          "Suggested fix: sort the table by time and drop repeated times.")
 
 
@@ -122,8 +122,9 @@ class PayoutSlack(Model):
     """
 
     type: Literal["slack"] = "slack"
-    slack: quantity("-", ge=-0.5, le=10.0, fix="slack is a ratio: 0.05 for 5 % slack.") = Field(
-        0.0, description="Target slack, laid length over seabed distance minus one. [-]")
+    slack: quantity("-", ge=0.0, le=1.0, fix="slack is a ratio, 0.05 for 5 % slack; a lay under tension on the "
+                    "seabed (slack below zero) is the payout type 'bottom_tension'.") = Field(
+        0.0, description="Target slack, laid length over seabed distance minus one, 0 to 1. [-]")
     slope_compensation: bool = Field(True, description="Adjust the payout to the seabed slope (CPRATE).")
 
 
@@ -147,6 +148,7 @@ class PayoutBottomTension(Model):
 
 
 Payout = Annotated[PayoutRate | PayoutSlack | PayoutBottomTension, Field(discriminator="type")]
+UNION_TAGS.update(cls.model_fields["type"].default for cls in (PayoutRate, PayoutSlack, PayoutBottomTension))
 
 
 class Bathymetry(Model):
@@ -186,7 +188,7 @@ def _check_table(distance, depth, where: str) -> None:
     if not (np.all(np.isfinite(x)) and np.all(np.isfinite(h))):
         raise ValueError(f"{where}: distances and depths must be finite numbers [m].")
     if np.any(np.diff(x) <= 0):
-        raise ValueError(f"{where}: distances must be strictly increasing, got {list(x)} m. "
+        raise ValueError(f"{where}: distances must be strictly increasing, got {[float(v) for v in x]} m. "
                          "Suggested fix: sort the table by distance.")
     if np.any(h <= 0):
         i = int(np.argmax(h <= 0))
@@ -200,7 +202,7 @@ def _kp_table(kp, values, name: str, unit: str, where: str) -> None:
     if k.size != v.size or k.size < 1:
         raise ValueError(f"{where}: kp and {name} must have the same non-zero length, got {k.size} and {v.size}.")
     if not np.all(np.isfinite(k)) or np.any(np.diff(k) <= 0):
-        raise ValueError(f"{where}: kp must be finite and strictly increasing, got {list(k)} m. Suggested fix: sort "
+        raise ValueError(f"{where}: kp must be finite and strictly increasing, got {[float(v) for v in k]} m. Suggested fix: sort "
                          "the table by KP.")
     bad = ~np.isfinite(v) | (v < 0)
     if bad.any():

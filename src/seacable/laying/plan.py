@@ -341,8 +341,10 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         Ship KPs of the table, increasing. [m]
     scheduled_speed : (n,) array
         Ship speed over the ground at them, before repeater slow-downs. [m/s]
-    slack, bottom_tension : (n,) arrays or None
-        The target at each station's touchdown: one of the two (slack >= 0 [-], or a tension [N]).
+    slack, bottom_tension : (n,) arrays, callables or None
+        The target at each station's touchdown: one of the two (slack >= 0 [-], or a tension [N]); a callable
+        gives it by the touchdown's KP (``f(kp)`` for an array of KPs), taken where the iteration puts the
+        touchdown.
     props_at : callable
         ``props_at(s)`` -> (n, 6) station properties (``S_*`` columns) of the cable at material coordinates s.
     current : seacable.environment.Current
@@ -365,12 +367,14 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     else:
         depths, speeds = np.asarray(current.depths, float), np.asarray(current.speeds, float)
     tension_mode = bottom_tension is not None
-    t0 = np.asarray(bottom_tension if tension_mode else np.zeros(n), float)
+    target_at = bottom_tension if tension_mode else slack         # by the touchdown's KP, where callable
+    t0 = np.asarray((target_at(kp) if callable(target_at) else target_at) if tension_mode else np.zeros(n), float)
+    slack = None if tension_mode else np.asarray(target_at(kp) if callable(target_at) else target_at, float)
     seabed.check_covers(ship_xy, "route", kp)
     h_ship = seabed.depth(ship_xy)
     vs = np.array(scheduled_speed, float)
     s_td = np.zeros(n)
-    vc = vs * (1.0 + (np.zeros(n) if tension_mode else np.asarray(slack, float)))
+    vc = vs * (1.0 + (np.zeros(n) if tension_mode else slack))
     out = np.full((n, 5), np.nan)
     h = h_ship.copy()
     td_xy = ship_xy.copy()
@@ -391,8 +395,13 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     swings = np.zeros(n, int)                    # ... how many times running it went back as far
     h_outer = h.copy()
     for outer in range(max_iterations):
+        if callable(target_at) and outer > 0:              # the target where the touchdown now is
+            if tension_mode:
+                t0 = np.asarray(target_at(td_kp), float)
+            else:
+                slack = np.asarray(target_at(td_kp), float)
         props = props_at(s_td)
-        per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + np.asarray(slack, float)
+        per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + slack
         # the span's speed (the ship's, lagged by the pay-out time tau) and its turn rate (the route's curvature
         # near the touchdown, spread over the span's transient: :class:`_Spread`)
         speed_eff = _lag(kp, vs, vs, tau)
@@ -530,7 +539,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         "layback_across": -np.sin(psi) * (ship_xy - td_xy)[:, 0] + np.cos(psi) * (ship_xy - td_xy)[:, 1],
         "suspended_length": out[:, 2], "laid_length": s_td, "top_tension": out[:, 3],
         "bottom_tension": t0.copy(), "entry_angle": np.degrees(out[:, 4]),
-        "slack": (np.asarray(slack, float) if not tension_mode else per_metre - 1.0),
+        "slack": (slack if not tension_mode else per_metre - 1.0),
         "route_slack": route_slack, "span_clearance": clearance, "span_speed": speed_eff, "turn_rate": omega,
     }
     reps = {"name": [r[0] for r in rep_rows], "s": np.array([r[1] for r in rep_rows], float),

@@ -98,7 +98,7 @@ def run_lay_plan(case: Case):
     inner = route.turn_kp[(route.turn_kp > lo + 1e-6) & (route.turn_kp < hi - 1e-6)]
     kp = np.unique(np.concatenate([lo + a.kp_step * np.arange(math.ceil((hi - lo) / a.kp_step - 1e-9)), [hi], inner]))
     kp = kp[np.concatenate([[True], np.diff(kp) > 1e-3])]         # (an arc's end within 1 mm of a row: one row)
-    target = a.target.at(kp)
+    target = a.target.at          # by the touchdown's KP
     plan = plan_lay(route, seabed, kp, scheduled_speed=a.ship.at(kp),
                     slack=None if a.target.slack is None else target,
                     bottom_tension=None if a.target.bottom_tension is None else target,

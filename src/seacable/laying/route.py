@@ -412,6 +412,7 @@ def _turns(xy: np.ndarray) -> np.ndarray:
 
 
 _ARC_TOLERANCE = 1e-3    # m, largest distance of an arc's chord from the circle
+_MAX_SHARP_TURN = 170.0  # deg, the largest alter-course at a waypoint without an arc (beyond: nearly back on itself)
 
 
 def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -440,6 +441,11 @@ def _arcs(xy: np.ndarray, turn_radius) -> tuple[np.ndarray, np.ndarray, np.ndarr
     pts, kinks, sharp = [xy[0]], [0], []
     for i in range(1, n - 1):
         r, th = radii[i - 1], theta[i - 1]
+        if r == 0.0 and abs(th) > np.radians(_MAX_SHARP_TURN):
+            raise InputError(f"route: the route turns back on itself at waypoint {i + 1} (an alter-course of "
+                             f"{np.degrees(abs(th)):.1f} deg, more than {_MAX_SHARP_TURN:g}): the cable would be laid "
+                             "back over itself. Suggested fix: sail the turn on an arc (route.turn_radius), or add "
+                             "waypoints that take the route round.")
         if r == 0.0 or th == 0.0:
             kinks.append(len(pts))
             sharp.append(len(pts))

@@ -16,7 +16,7 @@ from ..statics.laying import laying_angle
 from .bathymetry import seabed_map
 from .inputs import PayoutRate, PayoutSlack, Seabed2D, sinking_weights
 from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
-from .solver import _MIN_SPEED, LayParameters, Repeater, props_row, simulate
+from .solver import _MIN_SPEED, LayParameters, Repeater, initial_state, props_row, simulate
 from .track import Track2D, Track3D
 
 __all__ = ["LayingSetup", "lay_parameters", "lay_seabed", "prepare_laying_dynamic", "run_laying_dynamic"]
@@ -195,6 +195,10 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     else:
         # along the ship's path, every segment length and at the waypoints; a grid must cover it
         route = track.route
+        if not route.kp[0] <= a.ship.start_x <= route.kp_end:
+            raise InputError(f"analysis.ship.start_x = {a.ship.start_x:.6g} m lies outside the route, which runs from "
+                             f"KP {route.kp[0]:.6g} to {route.kp_end:.6g} m (start_x is the ship's KP on a route). "
+                             "Suggested fix: a start_x on the route, or route.kp_start for the first waypoint's KP.")
         kp = np.unique(np.concatenate([np.arange(a.ship.start_x, x1, a.segment_length), [x1],
                                        route.kp[(route.kp > a.ship.start_x) & (route.kp < x1)]]))
         track.seabed.check_covers(route.point(kp), "ship's path", kp)
@@ -211,6 +215,8 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     outputs = a.duration / a.output_interval + 1.0
     laid = (par.cable_length / a.segment_length + len(par.repeaters)) * 4.0
     stored = outputs * (3.0 * nodes + _N_SERIES + 2.0 * len(par.repeaters)) + laid
+    # the starting lay (the straight span and the cable already on the seabed behind it): its line and seabed
+    initial_state(par, a.ship, a.payout, track, a.initial_angle)
     check_run_size(f"laying_dynamic case {case.name!r}", steps=steps, stored_values=stored,
                    fix="shorten analysis.duration, lengthen analysis.output_interval or analysis.segment_length, "
                        "or lower analysis.steps_per_segment")

@@ -62,7 +62,7 @@ from .kernel import (
     implicit_step,
 )
 
-__all__ = ["LayParameters", "LayRun", "Repeater", "seabed_reaction", "simulate"]
+__all__ = ["LayParameters", "LayRun", "Repeater", "initial_state", "seabed_reaction", "simulate"]
 
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
 _HALVINGS = 6         # a failing step is retried with dt/2, dt/4, ...
@@ -254,7 +254,9 @@ def _touchdown_distance(track, chute: np.ndarray, t: np.ndarray, step: float) ->
         for _ in range(min(block, 10**6 - done)):
             ends.append(ends[-1] + step)
         p = chute - np.array(ends[1:])[:, None] * t
-        below = np.flatnonzero(p[:, -1] - track.zb(p[:, :-1]) <= 0.0)
+        # (past the seabed the line may leave a grid: looked up without the grid's check, which comes with f)
+        height = p[:, -1] - track.zb(p[:, :-1], strict=False)
+        below = np.flatnonzero(~(height > 0.0))
         if below.size:
             k = int(below[0])
             return brentq(f, ends[k], ends[k + 1], xtol=1e-12)
@@ -347,17 +349,26 @@ class _Lay:
         td = chute - ell * t
         back = track.direction(self.x_ship)
         n_laid = max(int(math.ceil(ell / seg)), 2)
-        laid_h = [td[:-1]]
-        for _ in range(n_laid):
-            slope = float(track.gradient(laid_h[-1] - 0.5 * seg * back) @ back)
-            laid_h.append(laid_h[-1] - seg / math.sqrt(1.0 + slope * slope) * back)
-        laid_h = laid_h[::-1]
         pre = n_laid * seg
         if pre + ell > par.cable_length:
             raise InputError(f"the run starts with {pre:.6g} m of cable on the seabed and {ell:.6g} m suspended, "
                              f"but the line is {par.cable_length:.6g} m long. Suggested fix: make the line (the "
                              "cable on board) longer.")
-        self.laid = {"p": [np.append(h, float(z)) for h, z in zip(laid_h, track.zb(np.array(laid_h)))],
+        laid_h = [td[:-1]]
+        try:
+            for _ in range(n_laid):
+                slope = float(track.gradient(laid_h[-1] - 0.5 * seg * back) @ back)
+                laid_h.append(laid_h[-1] - seg / math.sqrt(1.0 + slope * slope) * back)
+            laid_h = laid_h[::-1]
+            laid_z = track.zb(np.array(laid_h))
+        except InputError:                       # a grid that gives no depth there
+            p = laid_h[-1]
+            raise InputError(f"the seabed does not cover the cable already on the seabed at the start: no depth "
+                             f"behind x = {p[0]:.1f} m" + (f", y = {p[1]:.1f} m" if len(p) > 1 else "")
+                             + f" ({pre:.6g} m of cable laid behind the touchdown, {ell:.6g} m from the ship). "
+                             "Suggested fix: extend the seabed grid behind the start by twice the layback, or start "
+                             "the ship further along the route (analysis.ship.start_x).") from None
+        self.laid = {"p": [np.append(h, float(z)) for h, z in zip(laid_h, laid_z)],
                      "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1),
                      "T": [0.0] * (n_laid + 1)}
         for r, rep in enumerate(reps):
@@ -876,6 +887,13 @@ class _Lay:
 
 _SERIES = ("ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "bottom_tension", "entry_angle",
            "touchdown_x", "touchdown_z", "layback", "slack", "suspended_length", "laid_length")
+
+
+def initial_state(par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None = None) -> None:
+    """Build the run's starting lay (the straight span and the cable already on the seabed behind it) and raise
+    the InputError :func:`simulate` would (a line too short for it, a seabed that does not cover it): the checks of
+    ``validate`` before the time loop."""
+    _Lay(par, ship, payout, track, initial_angle)
 
 
 def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: float, *,

@@ -36,7 +36,7 @@ class Track2D:
     def direction(self, d: float) -> np.ndarray:
         return np.array([1.0])
 
-    def zb(self, ph) -> np.ndarray:
+    def zb(self, ph, strict: bool = True) -> np.ndarray:
         """Seabed elevation under horizontal points ``ph`` (shape (..., 1)). [m]"""
         return self.seabed.z(np.asarray(ph, float)[..., 0])
 
@@ -80,11 +80,25 @@ class Track3D:
         h = float(self.route.heading(d))
         return np.array([np.cos(h), np.sin(h)])
 
-    def zb(self, ph) -> np.ndarray:
+    def zb(self, ph, strict: bool = True) -> np.ndarray:
+        """The seabed's elevation at horizontal points (..., 2); where a grid gives none, an InputError, or NaN if
+        not ``strict``. [m]"""
         p = np.asarray(ph, float)
-        if self._memo is None:
+        if not strict:
             return -self.seabed.depth(p)
-        return self._memo.get(p, lambda q: -self.seabed.depth(q))
+        if self._memo is None:
+            return self._elevation(p)
+        return self._memo.get(p, self._elevation)
+
+    def _elevation(self, p: np.ndarray) -> np.ndarray:
+        """The seabed's elevation at horizontal points; an InputError where a grid gives none (the cable has gone
+        off it: a NaN would run on silently through the time loop)."""
+        z = -self.seabed.depth(p)
+        bad = np.isnan(z) & np.all(np.isfinite(p), axis=-1)
+        if bad.any():
+            q = p[np.unravel_index(np.argmax(bad), bad.shape)]
+            self.seabed.check_covers(q[None, :], "cable")
+        return z
 
     def gradient(self, ph) -> np.ndarray:
         p = np.asarray(ph, float)
