@@ -147,6 +147,34 @@ def test_grid_that_does_not_cover_the_route(tmp_path, capsys):
     assert "does not cover the route at KP 8" in err and "x = 8" in err, err
 
 
+@pytest.mark.parametrize("island_y, expected", [(7000.0, None), (0.0, "the route at KP 1500.0 m")])
+def test_grid_with_land_is_used_where_the_lay_is_at_sea(tmp_path, capsys, island_y, expected):
+    """A GEBCO-style grid (elevation, up) holding an island: away from the route (y = 7 km) the plan runs, with the
+    depths the island does not touch; on the route (y = 0) it is refused, the KP and point named, as land (from
+    x = 1500 m, where the grid's cell reaches the island's first point). A grid all land is a sign error, said so."""
+    xs, ys = np.arange(-2000.0, 16001.0, 500.0), np.arange(-3000.0, 9001.0, 500.0)
+    elevation = np.full((ys.size, xs.size), -300.0)
+    elevation[np.abs(ys - island_y) <= 500.0, 8:12] = 15.0            # x = 2000 .. 3500 m
+    xr.Dataset({"elevation": (("y", "x"), elevation)}, coords={"x": xs, "y": ys}).to_netcdf(tmp_path / "grid.nc")
+    xr.Dataset({"elevation": (("y", "x"), np.full((2, 2), 5.0))}, coords={"x": xs[[0, -1]], "y": ys[[0, -1]]}
+               ).to_netcdf(tmp_path / "land.nc")
+
+    def edit(data, file="grid.nc"):
+        data["analysis"].pop("bathymetry")
+        data["analysis"]["bathymetry_grid"] = {"file": file}
+    path = _yaml(tmp_path, edit)
+    out = tmp_path / "out.nc"
+    if expected is None:
+        assert main(["run", str(path), "-o", str(out)]) == 0
+        np.testing.assert_allclose(read_netcdf(out).water_depth.values, 300.0, rtol=1e-12)
+    else:
+        assert main(["validate", str(path)]) == 2
+        err = capsys.readouterr().err
+        assert expected in err and "reaches land or a hole in the seabed grid" in err and "x = 1500.0" in err, err
+    assert main(["validate", str(_yaml(tmp_path, lambda d: edit(d, "land.nc")))]) == 2
+    assert "no point of it is under water" in capsys.readouterr().err
+
+
 def test_lonlat_grid_needs_a_geographic_route(tmp_path):
     xr.Dataset({"depth": (("lat", "lon"), np.full((2, 2), 300.0))},
                coords={"lon": [0.0, 1.0], "lat": [50.0, 51.0]}).to_netcdf(tmp_path / "ll.nc")

@@ -122,16 +122,19 @@ def _read_csv_grid(file: str):
 
 
 def _checked(kind, a, b, depth, path) -> np.ndarray:
-    bad = ~(depth > 0)
-    if bad.any():
-        k = tuple(np.argwhere(bad)[0])
+    """The grid's depths with land (and zero depth) marked +inf, as a hole: a file cut from GEBCO or EMODnet holds
+    land, and only the cable's way over it matters (:meth:`SeabedMap.check_covers` names a point on land). A grid
+    all land, or all at or above the surface, is refused: a sign error."""
+    water = depth > 0
+    if not water.any():
+        k = tuple(np.argwhere(~water)[0]) if (~water).any() else (0,) * depth.ndim
         at = (a[k[-1]], b[k[0]]) if depth.ndim == 2 else (a[k[0]], b[k[0]])
         unit = "m" if kind == "xy" else "degree"
-        raise InputError(f"bathymetry grid '{path}': the water depth at ({at[0]:g}, {at[1]:g}) {unit} is "
-                         f"{depth[k]:g} m, must be > 0 m (land or a sign error: elevations are up, depths down). "
-                         "Suggested fix: name the column 'elevation' if the values are heights, or clip the grid "
-                         "to the sea.")
-    return depth
+        raise InputError(f"bathymetry grid '{path}': no point of it is under water (at ({at[0]:g}, {at[1]:g}) {unit} "
+                         f"the depth is {depth[k]:g} m): land, or a sign error (elevations are up, depths down). "
+                         "Suggested fix: name the column or variable 'elevation' if the values are heights above the "
+                         "sea, 'depth' if they are depths below it.")
+    return np.where(water | np.isinf(depth), depth, np.inf)
 
 
 def _read_netcdf_grid(file: str, variable: str | None):
@@ -167,7 +170,7 @@ def _read_netcdf_grid(file: str, variable: str | None):
         b, values = b[::-1], values[::-1]
     depth = -values if elevation else values
     try:
-        _check_grid(a, b, np.where(np.isnan(depth), 1.0, depth), f"bathymetry grid '{path}'")
+        _check_grid(a, b, np.ones(depth.shape), f"bathymetry grid '{path}'")     # its lines (land: below)
     except ValueError as err:
         raise InputError(str(err)) from None
     return kind, a, b, _checked(kind, a, b, np.where(np.isnan(depth), np.inf, depth), path)
@@ -231,13 +234,21 @@ class SeabedMap:
         return np.full(xy.shape[:-1], float(self._flat))
 
     def check_covers(self, xy, what: str, kp=None) -> None:
-        """Raise an InputError naming the first point (and its KP) where the grid gives no depth."""
+        """Raise an InputError naming the first point (and its KP) where the grid gives no depth: outside the
+        grid, or inside it on land or in a hole (next to a grid point without a water depth)."""
         d = self.depth(xy)
         bad = ~np.isfinite(d)
         if bad.any():
             i = np.unravel_index(np.argmax(bad), bad.shape)
             p = np.asarray(xy, float)[i]
             where = f" at KP {float(np.asarray(kp)[i]):.1f} m" if kp is not None else ""
+            q = p if self.kind == "xy" else np.array([v[0] for v in self.route.to_geographic(p[None, :])[::-1]])
+            x0, x1, y0, y1 = self.bounds
+            if x0 <= q[0] <= x1 and y0 <= q[1] <= y1:
+                raise InputError(f"{self.source}: the {what}{where} reaches land or a hole in the seabed grid: no "
+                                 f"water depth at x = {p[0]:.1f} m, y = {p[1]:.1f} m (next to a grid point at or "
+                                 "above the surface, or without a value). Suggested fix: move the route off the land "
+                                 "there, or fill the grid's hole.")
             raise InputError(f"{self.source}: the seabed grid does not cover the {what}{where}: no depth at x = "
                              f"{p[0]:.1f} m, y = {p[1]:.1f} m (grid bounds {self._bounds_text()}). Suggested fix: "
                              "extend the grid over the whole route and a margin either side for the touchdown's "
