@@ -175,6 +175,27 @@ def test_grid_with_land_is_used_where_the_lay_is_at_sea(tmp_path, capsys, island
     assert "no point of it is under water" in capsys.readouterr().err
 
 
+def test_row_spacing_does_not_change_the_plan(tmp_path):
+    """The plan is computed on stations 100 m apart at most, whatever the rows asked for: with rows every 1 km the
+    example's lay (a repeater slowing the ship for 50 m ramps, alter-courses on 1 km arcs) takes the same time and
+    lands its repeater at the same KP as with rows every 100 m, and the common rows are equal (to 1e-9 of their
+    scale: the same stations, the same iteration). Before, 1 km rows gave a lay 10 % longer (12191 s for 11036 s)
+    and the repeater 190 m further on."""
+    import seacable as sc
+
+    result = {}
+    for step in (100.0, 1000.0):
+        case = sc.load_case(_yaml(tmp_path, _set(("analysis", "kp_step"), step)))
+        result[step] = sc.run(case)
+    fine, coarse = result[100.0], result[1000.0]
+    assert coarse.kp.size < fine.kp.size / 5
+    common = fine.sel(kp=coarse.kp.values)
+    for name in ("time", "paid_out", "touchdown_kp", "touchdown_offset", "ship_speed", "top_tension"):
+        scale = max(float(np.max(np.abs(fine[name]))), 1.0)
+        np.testing.assert_allclose(coarse[name].values, common[name].values, rtol=0, atol=1e-9 * scale, err_msg=name)
+    np.testing.assert_allclose(coarse.repeater_landing_kp.values, fine.repeater_landing_kp.values, rtol=0, atol=1e-6)
+
+
 def test_lonlat_grid_needs_a_geographic_route(tmp_path):
     xr.Dataset({"depth": (("lat", "lon"), np.full((2, 2), 300.0))},
                coords={"lon": [0.0, 1.0], "lat": [50.0, 51.0]}).to_netcdf(tmp_path / "ll.nc")
