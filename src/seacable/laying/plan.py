@@ -438,9 +438,14 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
             total += 1
             if np.isnan(out[active]).any():
                 i = int(np.flatnonzero(active & np.isnan(out[:, 0]))[0])
+                cause = (f"under the bottom tension of {t0[i]:g} N it leaves the seabed along its slope "
+                         f"({math.degrees(beta[i]):+.1f} deg; + rises towards the ship) and, that taut, runs down "
+                         "into the seabed before its weight can turn it up" if t0[i] > 0.0 else
+                         "the current against the ship turns it down")
                 raise InputError(f"lay plan at KP {kp[i]:.1f} m: the cable from the touchdown (depth {h[i]:.1f} m) "
-                                 "does not reach the surface (it turns down on the way). Suggested fix: check the "
-                                 "current against the ship speed, or use the dynamic model (laying_dynamic).")
+                                 f"does not reach the surface: {cause}. Suggested fix: a lower bottom tension or a "
+                                 "slack target there, a check of the current against the ship speed, or the dynamic "
+                                 "model (laying_dynamic).")
             laid_off = np.where(active, _steady_offset(out, vs_td, omega), laid_off)
             new_kp = _on_offset_line(route, ship_xy, kp, np.hypot(out[:, 0], out[:, 1]), laid_off, sharp_turns)
             new_xy = _offset_point(route, new_kp, laid_off, sharp_turns)
