@@ -399,7 +399,7 @@ def _lay_plan(ds, plt):
         for name, k0, k1 in zip(ds.repeater_name.values, ds.repeater_entry_kp.values, ds.repeater_touchdown_kp.values):
             ax.axvspan(k0 / 1e3, k1 / 1e3, color="C3", alpha=0.12)
             ax.annotate(str(name), (k0 / 1e3, 0.0), fontsize=7, color="C3", va="top")
-    ax.set(ylabel="elevation [m]", title=f"Lay table along the route: {ds.attrs.get('title', '')}")
+    ax.set(ylabel="elevation [m]", title="Lay table along the route")
     ax.legend(fontsize=7, loc="lower left")
     ax = axes[1]
     ax.plot(kp, ds.ship_speed, label="ship")
@@ -418,7 +418,7 @@ def _lay_plan(ds, plt):
     ax.set_ylabel(f"tension [{unit}]")
     twin = ax.twinx()
     twin.plot(kp, ds.entry_angle, "C4--", lw=1, label="entry angle")
-    twin.set_ylabel(_label(ds.entry_angle))
+    twin.set_ylabel("entry angle [deg]")      # (the variable's long name runs into the panel above)
     lines = ax.get_lines() + twin.get_lines()
     ax.legend(lines, [ln.get_label() for ln in lines], fontsize=7)
     ax = axes[3]
