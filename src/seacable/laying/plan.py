@@ -698,9 +698,9 @@ class _Spread:
     A station's kernel is that of its span in still water on a straight track at the span's speed: Zajac's
     straight span in closed form without bottom tension, the catenary with drag under a bottom tension (its
     lateral balance by finite differences). The kernels are computed at levels of the numbers their shape
-    depends on (the angle every 0.5 deg, the log of ``T_0 / (w h)`` every 0.1) and interpolated linearly between them, so
-    that the plan's iteration sees a spread that changes smoothly with the speed and the depth. They share one
-    grid in laybacks, ``u0 + j du``.
+    depends on (the angle every 0.5 deg, the log of ``T_0 / (w h)`` every 0.1) and interpolated linearly between
+    them, so that the plan's iteration sees a spread that changes smoothly with the speed and the depth. They
+    share one grid in laybacks, ``u0 + j du``.
     """
 
     def __init__(self, water_density):
@@ -727,13 +727,13 @@ class _Spread:
         q = kn * vs * vs                                     # Zajac's angle (:func:`straight_direction`)
         ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
         sa = np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
-        angle = np.degrees(np.arctan2(sa, ca)) / _ANGLE_STEP
-        a0 = np.floor(angle).astype(int)
+        # the angle's levels, between 0.5 deg and 89 deg
+        angle = np.clip(np.degrees(np.arctan2(sa, ca)), _ANGLE_STEP, 89.0) / _ANGLE_STEP
+        a0 = np.minimum(np.floor(angle).astype(int), round(89.0 / _ANGLE_STEP) - 1)
         fa = angle - a0
         layback = h * ca / sa
-        # (a span that falls almost straight down, within 0.06 deg of the vertical, lays the track itself: no spread)
-        steep = layback < 1e-3 * h
-        a0 = np.where(steep, 0, a0)
+        # (a span within 1.15 deg of the vertical lays the track itself, spread over 2 % of the depth: no spread)
+        steep = layback < 0.02 * h
         slack = (t0 <= 0.0) & ~steep
         if slack.any():
             ut = per_metre * vs - vs * ca                    # the water along the cable, past the material [m/s]
