@@ -148,21 +148,31 @@ def _laying_dynamic(ds, plt):
     figs = {}
 
     fig, ax = plt.subplots(figsize=(11, 4.5))
-    _lay_scene(ax, ds)
-    if "laid_x" in ds and ds.laid_x.size:
-        lx, lz = _finite_xz(ds.laid_x.values, ds.laid_z.values)
+    along_route = "y" in ds and all(name in ds for name in _ROUTE_VARIABLES)
+    if along_route:
+        # a 3-D lay: the profile along the route by KP (x would fold the cable back on itself after a turn)
+        route = _route_of(ds)
+        node_x = _kp_of(route, ds.x.values[idx], ds.y.values[idx])
+        laid_along, ship_along = ds.laid_kp.values, ds.ship_kp.values
+        _profile_scene(ax, [node_x.ravel(), ship_along[idx], laid_along], [ds.z.values[idx].ravel(), np.zeros(1),
+                       ds.laid_z.values], (ds.seabed_kp.values, ds.seabed_z.values), "KP [m]", _label(ds.z))
+    else:
+        _lay_scene(ax, ds)
+        node_x, laid_along, ship_along = ds.x.values[idx], ds.laid_x.values if "laid_x" in ds else None, ds.ship_x.values
+    if laid_along is not None and laid_along.size:
+        lx, lz = _finite_xz(laid_along, ds.laid_z.values)
         ax.plot(lx, lz, "k-", lw=0.8, label="laid cable")
-    for i, t, c in zip(idx, snaps, colours):
-        x, z = _finite_xz(ds.x.values[i], ds.z.values[i])
+    for k, (i, t, c) in enumerate(zip(idx, snaps, colours)):
+        x, z = _finite_xz(node_x[k], ds.z.values[i])
         ax.plot(x, z, "-", color=c, lw=1.5, label=f"t = {t:g} {t_unit}")
-        ax.plot(float(ds.ship_x.values[i]), 0.0, "v", color=c, ms=7)
-    rx, rz = _repeaters_at(ds, idx[-1])
+        ax.plot(float(ship_along[i]), 0.0, "v", color=c, ms=7)
+    rx, rz = (np.empty(0), np.empty(0)) if along_route else _repeaters_at(ds, idx[-1])
     if rx.size:
         ax.plot(rx, rz, "D", color="C3", ms=6, label=f"repeater (t = {snaps[-1]:g} {t_unit})")
     ax.plot([], [], "kv", ms=7, label="ship")
     every = (f"every {step:g} {t_unit}" if step else
              f"at t = {snaps[0]:g} {t_unit}" if snaps.size == 1 else f"at {snaps.size} times")
-    ax.set_title(f"Laying shape {every}" + note)
+    ax.set_title(f"Laying shape {every}" + (" along the route" if along_route else "") + note)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside: the cable fills the frame
     figs["shape"] = fig
 
