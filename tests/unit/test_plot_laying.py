@@ -344,3 +344,22 @@ def test_cli_animate_route_lay_plan_and_profile(tmp_path, monkeypatch):
     assert side.get_xlim()[0] < float(ds.laid_kp.min()) and side.get_xlim()[1] > float(ds.ship_kp[-1])
     assert plan.get_xlim()[0] < float(ds.laid_x.min()) and plan.get_xlim()[1] > float(ds.ship_x[-1])
     close(fig)
+
+
+def test_route_lay_shape_is_the_profile_by_kp():
+    """A 3-D lay's shape figure draws each snapshot along the route by KP (by x it would fold back on itself after
+    an alter-course): the last snapshot runs from the ship's KP on the surface down to the seabed, and the laid
+    cable is drawn at its KPs."""
+    from seacable.plot.laying import _laying_dynamic
+
+    ds = sc.run(_short_route_lay())
+    fig = _laying_dynamic(ds, plt)["shape"]
+    (ax,) = fig.axes
+    assert ax.get_xlabel() == "KP [m]" and "along the route" in ax.get_title()
+    lines = {ln.get_label(): ln for ln in ax.get_lines()}
+    kp, z = lines[f"t = {float(ds.time[-1]):g} s"].get_data()
+    assert kp[-1] == pytest.approx(float(ds.ship_kp[-1]), abs=1e-6) and z[-1] == pytest.approx(0.0, abs=1e-9)
+    assert z[0] == pytest.approx(-DEPTH_3D, abs=1e-6)
+    laid_kp, _ = lines["laid cable"].get_data()
+    np.testing.assert_allclose(np.sort(laid_kp), np.sort(ds.laid_kp.values[np.isfinite(ds.laid_kp.values)]))
+    plt.close(fig)
