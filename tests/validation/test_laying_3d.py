@@ -312,3 +312,16 @@ def test_integral_control_holds_the_bottom_tension_over_sliding_laid_cable():
         mean[integral_time] = float(np.mean(ds.bottom_tension.values[ds.time.values >= 300.0]))
     assert mean[None] < 90.0
     assert mean[100.0] == pytest.approx(100.0, abs=2.0)
+
+
+def test_geographic_route_lay_gives_latitude_and_longitude():
+    """Along a route in latitude and longitude the ship, the touchdown and the laid cable come with their WGS84
+    positions too: projected back they are the x, y of the run (to 1 mm: PROJ's round trip is far better)."""
+    route = Route(latitude=(50.0, 50.0, 50.05), longitude=(-1.0, -0.9, -0.85))
+    ds = sc.run(_case(route=route, duration=200.0))
+    geometry = route.geometry()
+    for who, x, y in (("ship", ds.ship_x, ds.ship_y), ("touchdown", ds.touchdown_x, ds.touchdown_y),
+                      ("laid", ds.laid_x, ds.laid_y)):
+        xy = geometry.from_geographic(ds[f"{who}_latitude"].values, ds[f"{who}_longitude"].values)
+        np.testing.assert_allclose(xy, np.column_stack([x.values, y.values]), rtol=0, atol=1e-3, err_msg=who)
+        assert ds[f"{who}_latitude"].attrs["units"] == "degree_north"

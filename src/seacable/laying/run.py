@@ -300,6 +300,12 @@ def run_laying_dynamic(case: Case, progress=None):
             "laid_offset": var("laid", laid_off, "m", "offset of the laid nodes from the route (+ to port)"),
             **route.variables(),
         })
+        for who, dim, xy in (("ship", t1, res.ship[:, :2]), ("touchdown", t1, res.touchdown[:, :2]),
+                             ("laid", "laid", res.laid["p"][:, :2])):
+            geo = route.to_geographic(xy)           # a route in latitude and longitude: the positions so too
+            if geo is not None:
+                data[f"{who}_latitude"] = var(dim, geo[0], "degree_north", f"{who} latitude (WGS84)")
+                data[f"{who}_longitude"] = var(dim, geo[1], "degree_east", f"{who} longitude (WGS84)")
         kp = np.linspace(min(float(np.nanmin(laid_kp)), float(s["ship_x"][0])), float(np.nanmax(s["ship_x"])), 200)
         data["seabed_kp"] = var("seabed_point", kp, "m", "seabed profile KP (along the route)")
         data["seabed_z"] = var("seabed_point", track.zb(route.point(kp)), "m", "seabed elevation on the route")
