@@ -860,17 +860,24 @@ def _on_offset_line(route, ship_xy, ship_kp, reach, offset, turns) -> np.ndarray
     k0 = ship_kp - np.sqrt(np.maximum(reach * reach - offset * offset, 0.25 * reach * reach))
     k1 = k0 - 1.0
 
-    def miss(k):
-        return np.hypot(*(ship_xy - _offset_point(route, k, offset, turns)).T) - reach
+    def miss(k, i):
+        return np.hypot(*(ship_xy[i] - _offset_point(route, k, offset[i], turns)).T) - reach[i]
 
-    f0, f1 = miss(k0), miss(k1)
-    for _ in range(30):
-        slope = np.where(f1 != f0, (f1 - f0) / np.where(k1 != k0, k1 - k0, 1.0), -1.0)
-        k2 = k1 - f1 / np.where(slope < -0.1, slope, -1.0)
-        k0, f0, k1 = k1, f1, k2
-        f1 = miss(k1)
-        if np.max(np.abs(f1)) < 1e-13 * max(float(np.max(reach)), 1.0):
+    every = np.arange(k0.size)
+    f0, f1 = miss(k0, every), miss(k1, every)
+    # to 1e-9 of the reach (a micrometre a kilometre); a station whose offset line folds (an offset wider than the
+    # arc's radius inside a turn) has no clean root, and after 15 steps keeps its last
+    tol = 1e-9 * max(float(np.max(reach)), 1.0)
+    going = every[np.abs(f1) >= tol]
+    for _ in range(15):                          # (on the stations not there yet)
+        if not going.size:
             break
+        a0, b0, a1, b1 = k0[going], f0[going], k1[going], f1[going]
+        slope = np.where(b1 != b0, (b1 - b0) / np.where(a1 != a0, a1 - a0, 1.0), -1.0)
+        a2 = a1 - b1 / np.where(slope < -0.1, slope, -1.0)
+        k0[going], f0[going], k1[going] = a1, b1, a2
+        f1[going] = miss(a2, going)
+        going = going[np.abs(f1[going]) >= tol]
     return k1
 
 
