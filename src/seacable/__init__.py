@@ -14,6 +14,7 @@ from .case import (
     Case,
     LayingDynamicAnalysis,
     LayingTheoryAnalysis,
+    LayPlanAnalysis,
     ModalAnalysis,
     PushoverAnalysis,
     StaticAnalysis,
@@ -36,7 +37,18 @@ from .errors import (
     SeacableWarning,
 )
 from .io import load_case, parse_case
-from .laying.inputs import Bathymetry, PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion
+from .laying.bathymetry import BathymetryGrid
+from .laying.inputs import (
+    Bathymetry,
+    LayTableFile,
+    LayTarget,
+    PayoutBottomTension,
+    PayoutRate,
+    PayoutSlack,
+    PlanShip,
+    ShipMotion,
+)
+from .laying.route import Route
 from .mooring.motion import HarmonicMotion, PlatformMotion, RAOMotion, TimeSeriesMotion
 from .line import Line, LineType, PointMass, Segment
 from .results import read_netcdf, write_netcdf
@@ -65,7 +77,13 @@ __all__ = [
     "TowedBody",
     "LayingTheoryAnalysis",
     "LayingDynamicAnalysis",
+    "LayPlanAnalysis",
     "ShipMotion",
+    "PlanShip",
+    "LayTarget",
+    "LayTableFile",
+    "Route",
+    "BathymetryGrid",
     "PayoutRate",
     "PayoutSlack",
     "PayoutBottomTension",

@@ -119,6 +119,8 @@ def _set(path, value):
     (_set(("analysis", "kp_start"), 20000.0), "lies outside the route"),
     (lambda data: data["analysis"].update(route={"waypoints": [[0.0, 0.0], [6000.0, 0.0], [3000.0, 0.0]]}),
      "the route turns back on itself at waypoint 2 (an alter-course of 180.0 deg"),
+    (_set(("analysis", "ship"), {"speed": 1.5, "repeater_speed": 3.0}),
+     "ship.repeater_speed 3 m/s is above the ship's speed (1.5 m/s)"),
     (_set(("analysis", "target"), {"bottom_tension": 20000.0}),
      "does not reach the surface: under the bottom tension of 20000 N it leaves the seabed along its slope (-10."),
     (_set(("analysis", "bathymetry", "distance"), [0, 5000, 1000, 6000, 10000, 14000]),

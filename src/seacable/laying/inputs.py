@@ -246,6 +246,12 @@ class PlanShip(Model):
             if min(self.speeds) <= 0:
                 raise ValueError(f"ship.speeds must be > 0 m/s, got {min(self.speeds):g} m/s: a lay plan needs a "
                                  "moving ship. Suggested fix: give the speed over ground of each stretch.")
+        fastest = self.speed if self.speed is not None else max(self.speeds)
+        if self.repeater_speed is not None and self.repeater_speed > fastest:
+            raise ValueError(f"ship.repeater_speed {self.repeater_speed:g} m/s is above the ship's speed "
+                             f"({fastest:g} m/s{' at its fastest' if self.speed is None else ''}): it is the speed "
+                             "the ship slows to while a repeater descends. Suggested fix: a repeater_speed below "
+                             "the ship speed (0.3-0.8 m/s is usual), or leave it out for no slow-down.")
         return self
 
     def at(self, kp) -> np.ndarray:
