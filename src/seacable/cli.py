@@ -121,11 +121,14 @@ def _cmd_run(args) -> int:
         path = out if streamed else write_netcdf(ds, out)
         print(f"wrote {path}")
         if ds.attrs.get("analysis") == "lay_plan":      # the lay table, as the ship's crew reads it
-            from .laying.plan_run import write_lay_table
+            from .laying.plan_run import write_lay_table, write_repeater_table
 
             table = path.with_name(f"{path.stem}_lay_table.csv")
             write_lay_table(ds, table)
             print(f"wrote {table}")
+            events = path.with_name(f"{path.stem}_repeaters.csv")
+            if write_repeater_table(ds, events):
+                print(f"wrote {events}")
     finally:
         _GUARD.update(armed=False, holding=False)
     if _GUARD["held"]:

@@ -221,6 +221,17 @@ def test_cli_writes_the_lay_table_as_csv_and_the_figures(tmp_path):
     np.testing.assert_allclose(table["top_tension_N"], ds.top_tension.values, rtol=1e-5)
     assert (tmp_path / "plan_table.png").stat().st_size > 10_000
     assert (tmp_path / "plan_plan.png").stat().st_size > 10_000
+    # the repeaters' events beside it: the example's one repeater, its numbers the result's
+    events = (tmp_path / "plan_repeaters.csv").read_text().splitlines()
+    assert events[0] == ("name [],s [m],entry_kp [m],entry_time [s],touchdown_kp [m],touchdown_time [s],"
+                         "landing_kp [m],landing_offset [m]")
+    assert len(events) == 1 + ds.repeater.size
+    row = events[1].split(",")
+    assert row[0] == str(ds.repeater_name.values[0])
+    np.testing.assert_allclose([float(v) for v in row[1:]],
+                               [float(ds[f"repeater_{k}"][0]) for k in ("s", "entry_kp", "entry_time", "touchdown_kp",
+                                                                        "touchdown_time", "landing_kp", "landing_offset")],
+                               rtol=1e-9)
 
 
 def test_following_a_lay_table_bad_input(tmp_path, capsys):

@@ -13,7 +13,7 @@ from .bathymetry import seabed_map
 from .inputs import sinking_weights
 from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_MT, S_W, plan_lay
 
-__all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table"]
+__all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table", "write_repeater_table"]
 
 _STATION_STEP = 100.0     # m, the longest step between the plan's stations (rows may be further apart)
 
@@ -163,3 +163,21 @@ def write_lay_table(ds, path) -> None:
     extra = [n for n in ("ship_latitude", "ship_longitude", "touchdown_latitude", "touchdown_longitude") if n in ds]
     table = pd.DataFrame({f"{n} [{ds[n].attrs.get('units', '')}]": np.asarray(ds[n]) for n in names + extra})
     atomic_write(path, lambda tmp: table.to_csv(tmp, index=False, float_format="%.10g"))
+
+
+def write_repeater_table(ds, path) -> bool:
+    """Write the repeaters' events of a ``lay_plan`` result as CSV (atomically): name, cable length, water entry
+    and touchdown by ship KP and time, where each lands. False (nothing written) without repeaters."""
+    import pandas as pd
+
+    from .._atomic import atomic_write
+
+    if "repeater_name" not in ds:
+        return False
+    columns = {"name []": [str(v) for v in ds.repeater_name.values]}
+    for key in ("s", "entry_kp", "entry_time", "touchdown_kp", "touchdown_time", "landing_kp", "landing_offset"):
+        da = ds[f"repeater_{key}"]
+        columns[f"{key} [{da.attrs.get('units', '')}]"] = np.asarray(da)
+    table = pd.DataFrame(columns)
+    atomic_write(path, lambda tmp: table.to_csv(tmp, index=False, float_format="%.10g"))
+    return True
