@@ -119,6 +119,8 @@ def _set(path, value):
     (_set(("analysis", "kp_start"), 20000.0), "lies outside the route"),
     (lambda data: data["analysis"].update(route={"waypoints": [[0.0, 0.0], [6000.0, 0.0], [3000.0, 0.0]]}),
      "the route turns back on itself at waypoint 2 (an alter-course of 180.0 deg"),
+    (_set(("analysis", "route"), {"waypoints": [[50.0, -1.0], [50.0, -0.9], [50.05, -0.85]]}),
+     "the route is 0.171 m long, waypoints [[50.0, -1.0], [50.0, -0.9]] ...: they look like degrees"),
     (_set(("analysis", "ship"), {"speed": 1.5, "repeater_speed": 3.0}),
      "ship.repeater_speed 3 m/s is above the ship's speed (1.5 m/s)"),
     (_set(("analysis", "target"), {"bottom_tension": 20000.0}),

@@ -133,6 +133,10 @@ def _check_points(xy: np.ndarray, where: str, unit: str) -> None:
         i = int(np.argmax(legs < 1e-3))
         raise ValueError(f"{where}: waypoints {i} and {i + 1} are the same point (a leg of {legs[i]:.3g} m): a "
                          "route's KP needs legs of non-zero length. Suggested fix: remove the repeated waypoint.")
+    if unit == "m" and legs.sum() < 10.0 and np.all(np.abs(xy) <= 180.0):
+        raise ValueError(f"{where}: the route is {legs.sum():.3g} m long, waypoints {xy[:2].tolist()} ...: they look "
+                         "like degrees typed as x, y in metres. Suggested fix: give them as route.latitude and "
+                         "route.longitude [deg], or the waypoints in metres.")
 
 
 def _check_points_input(xy: np.ndarray, where: str, unit: str) -> None:
