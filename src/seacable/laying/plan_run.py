@@ -16,6 +16,7 @@ from .plan import N_STATION_PROPS, S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_MT
 __all__ = ["LAY_TABLE_COLUMNS", "run_lay_plan", "write_lay_table", "write_repeater_table"]
 
 _STATION_STEP = 100.0     # m, the longest step between the plan's stations (rows may be further apart)
+_MIN_STATION_STEP = 5.0   # m, the shortest (rows closer together are interpolated between stations)
 
 REFERENCES = (
     ("Zajac, E. E. (1957). Dynamics and kinematics of the laying and recovery of submarine cable. Bell System "
@@ -103,11 +104,17 @@ def run_lay_plan(case: Case):
     # the plan is computed on stations every _STATION_STEP at most (rows further apart among them): a repeater's
     # slow-down, the span's lag and the turns' spread are shorter than a kilometre, and rows 1 km apart gave a lay
     # 10 % longer in time than rows 100 m apart
+    # 10 % longer in time than rows 100 m apart; and _MIN_STATION_STEP apart at least (rows closer than that are
+    # interpolated: a quasi-static plan has nothing to say between them, and rows every 0.5 m took 10 minutes)
+    base = kp
+    if a.kp_step < _MIN_STATION_STEP:
+        base = np.unique(np.concatenate([lo + _MIN_STATION_STEP * np.arange(math.ceil((hi - lo) / _MIN_STATION_STEP
+                                                                                      - 1e-9)), [hi], inner]))
+        base = base[np.concatenate([[True], np.diff(base) > 1e-3])]
     fine = lo + _STATION_STEP * np.arange(math.ceil((hi - lo) / _STATION_STEP))
-    i = np.clip(np.searchsorted(kp, fine), 1, kp.size - 1)
-    fine = fine[np.minimum(np.abs(fine - kp[i - 1]), np.abs(fine - kp[i])) > 1e-3]     # (not within 1 mm of a row)
-    stations = np.union1d(kp, fine)
-    rows = np.isin(stations, kp)
+    i = np.clip(np.searchsorted(base, fine), 1, base.size - 1)
+    fine = fine[np.minimum(np.abs(fine - base[i - 1]), np.abs(fine - base[i])) > 1e-3]   # (not within 1 mm of one)
+    stations = np.union1d(base, fine)
     kp_rows, kp = kp, stations
     target = a.target.at          # by the touchdown's KP
     plan = plan_lay(route, seabed, kp, scheduled_speed=a.ship.at(kp),
@@ -123,8 +130,12 @@ def run_lay_plan(case: Case):
         raise InputError(f"the lay needs {float(np.max(cols['paid_out'])):.6g} m of cable but the line is "
                          f"{case.line.length:.6g} m long: it runs out at ship KP {kp[i]:.1f} m. Suggested fix: "
                          "make the line (the cable on board) longer, or end the table earlier (kp_end).")
-    cols = {name: np.asarray(value)[rows] for name, value in cols.items()}
-    kp = kp_rows
+    if a.kp_step < _MIN_STATION_STEP:
+        cols = {name: np.interp(kp_rows, kp, value) for name, value in cols.items()}
+    else:
+        rows = np.isin(kp, kp_rows)
+        cols = {name: np.asarray(value)[rows] for name, value in cols.items()}
+    n_stations, kp = kp.size, kp_rows
     data = {name: var("kp", cols[name], units, long) for name, units, long in LAY_TABLE_COLUMNS if name != "kp"}
     geo = route.to_geographic(np.column_stack([cols["ship_x"], cols["ship_y"]]))
     if geo is not None:
@@ -145,7 +156,7 @@ def run_lay_plan(case: Case):
                                  ("landing_offset", "m", "offset from the route where it lands (+ to port)")):
             data[f"repeater_{key}"] = var("repeater", r[key], units, long)
     coords = {"kp": var("kp", kp, "m", "ship KP")}
-    settings = {"kp_step": a.kp_step, "stations": int(rows.size), "iterations": plan.iterations,
+    settings = {"kp_step": a.kp_step, "stations": int(n_stations), "iterations": plan.iterations,
                 "wall_time_s": round(plan.wall_time, 4), "target": "slack" if a.target.slack is not None else
                 "bottom_tension", "notes": "; ".join(plan.notes) or "none",
                 "model": "quasi-static: the steady span at each KP (straight-line theory for zero bottom tension, "
