@@ -399,6 +399,17 @@ class LayingDynamicAnalysis(Model):
             cols = read_lay_table(file)
         except InputError as err:
             raise ValueError(str(err)) from None
+        start = data["lay_table"].get("start_kp")
+        if start is not None:
+            # from a ship KP on: the row there (interpolated) and the rows after it
+            kp = cols["kp"]
+            if not (isinstance(start, (int, float)) and kp[0] <= start < kp[-1]):
+                raise ValueError(f"lay_table.start_kp = {start!r} m lies outside the table's ship KPs ({kp[0]:g} to "
+                                 f"{kp[-1]:g} m). Suggested fix: a KP within the table, or leave it out to start at "
+                                 "its first row.")
+            after = kp > start
+            cols = {name: np.concatenate([[np.interp(start, kp, values)], values[after]])
+                    for name, values in cols.items()}
         times = tuple(float(t - cols["time"][0]) for t in cols["time"])
         return {**data, "ship": {"times": times, "speeds": tuple(map(float, cols["ship_speed"])),
                                  "start_x": float(cols["kp"][0])},

@@ -268,7 +268,9 @@ def test_following_a_lay_table_bad_input(tmp_path, capsys):
     (tmp_path / "stop.csv").write_text("kp,time,ship_speed,payout_speed\n0,0,1.0,1.0\n10,10,0.0,0.0\n")
     cases = [({"lay_table": {"file": "t.csv"}}, "lay_table gives the ship's and the payout's speeds; ship and payout"),
              ({"lay_table": {"file": "bad.csv"}, "ship": None, "payout": None}, "payout_speed missing"),
-             ({"lay_table": {"file": "stop.csv"}, "ship": None, "payout": None}, "ship_speed in row 2 is 0 m/s")]
+             ({"lay_table": {"file": "stop.csv"}, "ship": None, "payout": None}, "ship_speed in row 2 is 0 m/s"),
+             ({"lay_table": {"file": "t.csv", "start_kp": 500.0}, "ship": None, "payout": None},
+              "lay_table.start_kp = 500.0 m lies outside the table's ship KPs (0 to 100 m)")]
     for edit, expected in cases:
         data = {**base, "analysis": {**base["analysis"], **edit}}
         data["analysis"] = {k: v for k, v in data["analysis"].items() if v is not None}

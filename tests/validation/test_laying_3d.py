@@ -180,7 +180,8 @@ def test_dynamic_lay_following_the_plan_lands_where_the_plan_says(tmp_path):
     payout speeds by time): once the turn and the slope's transients have passed (the last 600 s of 3600 s,
     1.9 km beyond the turn), the touchdown, layback, entry angle and slack are the plan's. Tolerances: the
     touchdown interpolated between 2 m nodes (0.2 m); the slack measured over 60 s of landed nodes (1e-3);
-    measured: touchdown KP 0.07 m, offset 0.16 m, layback 0.05 m, entry angle 4e-4 deg, slack 5e-5."""
+    measured: touchdown KP 0.07 m, offset 0.16 m, layback 0.05 m, entry angle 4e-4 deg, slack 5e-5. The same table
+    taken up at ship KP 1500 m lays the same cable past its start's transient."""
     from seacable.cli import main
     from seacable.results import read_netcdf
 
@@ -203,6 +204,18 @@ def test_dynamic_lay_following_the_plan_lands_where_the_plan_says(tmp_path):
                       ("slack", 1e-3)):
         np.testing.assert_allclose(lay[name].values[late], planned(name), rtol=0, atol=tol, err_msg=name)
     np.testing.assert_allclose(lay.ship_speed.values[late], planned("ship_speed"), rtol=1e-12)
+    # taken up mid-route (lay_table.start_kp: the table from ship KP 1500 m, its clock from there): 2100 s later the
+    # ship is where the whole run's is at 3600 s, and past the start's transient the lay is the same (0.2 m)
+    (tmp_path / "mid.yaml").write_text((tmp_path / "lay.yaml").read_text().replace(
+        "{file: plan_lay_table.csv}", "{file: plan_lay_table.csv, start_kp: 1500.0}").replace("3600.0", "2100.0"))
+    assert main(["run", str(tmp_path / "mid.yaml"), "-o", str(tmp_path / "mid.nc"), "--no-plots"]) == 0
+    mid = read_netcdf(tmp_path / "mid.nc")
+    assert float(mid.ship_kp[0]) == pytest.approx(1500.0, abs=1e-9)
+    assert float(mid.ship_kp[-1]) == pytest.approx(float(lay.ship_kp[-1]), abs=1e-6)
+    same = mid.time.values >= 1500.0
+    for name in ("touchdown_kp", "touchdown_offset", "layback"):
+        np.testing.assert_allclose(mid[name].values[same], lay[name].values[-int(same.sum()):], rtol=0, atol=0.2,
+                                   err_msg=name)
 
 
 def test_laid_cable_by_kp_has_the_slack_and_bottom_tension_it_landed_with():

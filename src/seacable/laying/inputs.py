@@ -263,9 +263,11 @@ class PlanShip(Model):
 
 
 class LayTableFile(Model):
-    """A lay plan's table to follow: the CSV ``seacable run`` writes for a ``lay_plan`` (``NAME_lay_table.csv``)."""
+    """A lay plan's table to follow: the CSV ``seacable run`` writes for a ``lay_plan`` (``NAME_lay_table.csv``),
+    from its first row or from the ship KP ``start_kp`` (a lay taken up mid-route)."""
 
     file: str = Field(description="The lay table CSV (relative to the case file).")
+    start_kp: float | None = Field(None, description="Ship KP to follow the table from (default its first). [m]")
 
 
 class LayTarget(Model):
