@@ -224,6 +224,21 @@ def test_rows_closer_than_5_m_are_interpolated_between_stations(tmp_path):
     assert np.all((mid > five.time.values[:-1]) & (mid < five.time.values[1:]))
 
 
+def test_plan_over_the_breaking_load_says_so(tmp_path):
+    """A cable whose minimum breaking load (2 kN here) is below the planned top tension (3.24 kN in 800 m of
+    water): the plan warns, with the tension, the load and the ship KPs, and keeps the note in the result."""
+    import json
+
+    import seacable as sc
+
+    def edit(data):
+        next(iter(data["line_types"].values()))["breaking_load"] = 2000.0
+    with pytest.warns(sc.SeacableWarning, match=r"the top tension reaches 32\d\d\.\d+ N, over the cable's minimum "
+                                                 r"breaking load of 2000 N, at ship KP \d+\.0 to \d+\.0 m"):
+        ds = sc.run(sc.load_case(_yaml(tmp_path, edit)))
+    assert "over the cable's minimum breaking load" in json.loads(ds.attrs["settings"])["notes"]
+
+
 def test_lonlat_grid_needs_a_geographic_route(tmp_path):
     xr.Dataset({"depth": (("lat", "lon"), np.full((2, 2), 300.0))},
                coords={"lon": [0.0, 1.0], "lat": [50.0, 51.0]}).to_netcdf(tmp_path / "ll.nc")

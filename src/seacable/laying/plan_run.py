@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from ..case import Case, LayPlanAnalysis
-from ..errors import InputError
+from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from .bathymetry import seabed_map
 from .inputs import sinking_weights
@@ -130,6 +131,15 @@ def run_lay_plan(case: Case):
         raise InputError(f"the lay needs {float(np.max(cols['paid_out'])):.6g} m of cable but the line is "
                          f"{case.line.length:.6g} m long: it runs out at ship KP {kp[i]:.1f} m. Suggested fix: "
                          "make the line (the cable on board) longer, or end the table earlier (kp_end).")
+    notes = list(plan.notes)
+    loads = [seg.line_type.breaking_load for seg in case.line.segments if seg.line_type.breaking_load]
+    if loads and float(np.nanmax(cols["top_tension"])) > min(loads):
+        over = cols["top_tension"] > min(loads)
+        note = (f"the top tension reaches {float(np.nanmax(cols['top_tension'])):.6g} N, over the cable's minimum "
+                f"breaking load of {min(loads):.6g} N, at ship KP {kp[over][0]:.1f} to {kp[over][-1]:.1f} m: the lay "
+                "as planned would break it. Suggested fix: a lower bottom tension, or a check of the line type")
+        warnings.warn(f"lay plan: {note}.", SeacableWarning, stacklevel=2)
+        notes.append(note)
     if a.kp_step < _MIN_STATION_STEP:
         cols = {name: np.interp(kp_rows, kp, value) for name, value in cols.items()}
     else:
@@ -158,7 +168,7 @@ def run_lay_plan(case: Case):
     coords = {"kp": var("kp", kp, "m", "ship KP")}
     settings = {"kp_step": a.kp_step, "stations": int(n_stations), "iterations": plan.iterations,
                 "wall_time_s": round(plan.wall_time, 4), "target": "slack" if a.target.slack is not None else
-                "bottom_tension", "notes": "; ".join(plan.notes) or "none",
+                "bottom_tension", "notes": "; ".join(notes) or "none",
                 "model": "quasi-static: the steady span at each KP (straight-line theory for zero bottom tension, "
                          "the catenary with drag under a bottom tension), in the plane of the ship's leg"}
     return make_dataset(data, coords, analysis="lay_plan", case=case, references=REFERENCES, settings=settings)
