@@ -363,3 +363,19 @@ def test_route_lay_shape_is_the_profile_by_kp():
     laid_kp, _ = lines["laid cable"].get_data()
     np.testing.assert_allclose(np.sort(laid_kp), np.sort(ds.laid_kp.values[np.isfinite(ds.laid_kp.values)]))
     plt.close(fig)
+
+
+def test_plan_view_of_a_long_route_is_stretched_and_says_so():
+    """A plan view at true scale of a route 100 km long and 2.2 km wide is a strip a few pixels high: it is drawn
+    stretched across, the title giving the stretch (the axes' pixels per metre across over along; for this panel,
+    2.8 by 4.6 inches, about 75); a compact route keeps the true scale."""
+    from seacable.plot.laying import _plan_aspect
+
+    fig, (long, compact) = plt.subplots(1, 2, figsize=(8, 6))
+    _plan_aspect(long, np.array([0.0, 100.0]), np.array([0.0, 2.2]), "Plan view")
+    _plan_aspect(compact, np.array([0.0, 10.0]), np.array([0.0, 3.0]), "Plan view")
+    factor = float(long.get_title().split("about ")[1].split(" x")[0])
+    assert 50.0 < factor < 100.0
+    assert "y stretched" in long.get_title() and long.get_aspect() == "auto"
+    assert compact.get_title() == "Plan view" and compact.get_aspect() == 1.0
+    plt.close(fig)

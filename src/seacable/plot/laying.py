@@ -447,10 +447,29 @@ def _lay_plan(ds, plt):
         i = np.searchsorted(ds.kp.values, ds.repeater_touchdown_kp.values).clip(0, kp.size - 1)
         ax.plot(ds.touchdown_x.values[i] / 1e3, ds.touchdown_y.values[i] / 1e3, "D", color="C3", ms=5,
                 label="repeaters landed")
-    ax.set(xlabel="x [km]", ylabel="y [km]", title="Plan view", aspect="equal")
+    ax.set(xlabel="x [km]", ylabel="y [km]")
+    _plan_aspect(ax, np.concatenate([ds.ship_x.values, ds.touchdown_x.values]),
+                 np.concatenate([ds.ship_y.values, ds.touchdown_y.values]), "Plan view")
     ax.legend(fontsize=7)
     figs["plan"] = fig
     return figs
+
+
+def _plan_aspect(ax, x, y, title: str) -> None:
+    """True scale for a plan view, unless the route is over 5 times longer one way than the other (a long straight
+    route at true scale is a strip a few pixels high): then the narrow way is stretched, and the title says by
+    how much."""
+    x, y = x[np.isfinite(x)], y[np.isfinite(y)]
+    wide, high = float(np.ptp(x)) if x.size else 0.0, float(np.ptp(y)) if y.size else 0.0
+    if min(wide, high) > 0.0 and max(wide, high) > 5.0 * min(wide, high):
+        box = ax.get_position()                               # (figure fractions: the scale is about this)
+        w_in, h_in = ax.figure.get_size_inches()
+        factor = (box.height * h_in / high) / (box.width * w_in / wide)
+        factor = factor if wide > high else 1.0 / factor
+        ax.set_title(f"{title} ({'y' if wide > high else 'x'} stretched about {factor:.0f} x)")
+    else:
+        ax.set_aspect("equal")
+        ax.set_title(title)
 
 
 LAYING_FIGURES = {"laying_dynamic": _laying_dynamic, "lay_plan": _lay_plan}
