@@ -250,9 +250,9 @@ def test_linear_spread_gives_the_steady_turn_cut(speed, tension):
     """The spread's linear theory (:mod:`seacable.laying.lateral`, the span's lateral balance linearised about the
     straight lay) predicts the cut on a wide circle, ``g_2 / R``: against `steady_turn` (the full span in the
     turning frame, integrated) on R = 30 km, 100 m of water, paper 001's cable, 5 % slack or a bottom tension.
-    Tolerance 0.5 % (measured 0.03-0.3 %: what the linear theory leaves out, the lateral inertia, which the massless
-    cable's cut shows at 0.02-0.27 %), and 2 % at 2 m/s, where `steady_turn`'s 80 RK4 steps over the span make its
-    cut 1.5 % long (0.13 % with 800 steps; measured 1.6 %)."""
+    Tolerance 0.5 % (measured 0.08-0.3 %: the lateral inertia, which the linear theory leaves out, and
+    `steady_turn`'s 80 RK4 steps over the span; a massless cable's steady cut with 800 steps is the linear one to
+    0.015 % at 2 m/s), and 2 % at 2 m/s, where the 80 steps make the cut 1.5 % long (measured 1.6 %)."""
     from seacable.laying.plan import span_spread, steady_turn
 
     cable = _paper001_cable(tension)
