@@ -69,24 +69,15 @@ def test_a_straight_track_at_an_angle_is_laid_on_itself(transfer):
     lateral drag is advected at ``V cos(alpha)`` (the tilt of the tangent cancels the payout's ``V_c``): with
     ``V_c`` instead, delta would be the layback times 0.05 (5 % slack) = 10 m. Checked at ``k l = 1e-3``:
     ``|Im G| / (k l) < 1e-4`` (measured 1.4e-8, the ``k^3`` term)."""
-    from seacable.laying.plan import S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_MT, S_W, span_spread
+    from seacable.laying.plan import S_CDN, S_CDT, S_COMPLIANCE, S_D, S_MEFF, S_MT, S_W, catenary_profile
 
     _, _, layback = _zajac()
     if transfer == "catenary":
         p = np.zeros(7)
         p[[S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT]] = W, D, CDN, 0.01, 1.28, 1.0 / 3e7, 0.867
-        spread = span_spread(p, H, V, water_density=RHO, bottom_tension=200.0)
-        layback = spread["layback"]
+        s, tension, sin_a, cos_a, layback = catenary_profile(p, H, V, 200.0, water_density=RHO, nodes=201)
         k = np.array([1e-3 / layback])
-        from seacable.laying import plan
-
-        out, rec = np.empty(5), np.empty((4000, 4))
-        m = plan._span(H, 0.0, V, 0.0, V / (1 + 200.0 / 3e7), 1.0, 0.0, 200.0, np.zeros(1), np.zeros(1), RHO, p, out,
-                       rec)
-        s = np.linspace(0.0, out[2], 201)
-        t1, t3 = np.interp(s, rec[:m, 0], rec[:m, 2]), np.interp(s, rec[:m, 0], rec[:m, 3])
-        g = lateral.span_transfer(k, s, np.interp(s, rec[:m, 0], rec[:m, 1]), t3 / np.hypot(t1, t3),
-                                  t1 / np.hypot(t1, t3), speed=V, weight=W, kn=KN, layback=out[0])
+        g = lateral.span_transfer(k, s, tension, sin_a, cos_a, speed=V, weight=W, kn=KN, layback=layback)
     else:
         k = np.array([1e-3 / layback])
         g = _closed(k) if transfer == "closed" else _finite(k, 201)

@@ -202,8 +202,8 @@ def _kp_table(kp, values, name: str, unit: str, where: str) -> None:
     if k.size != v.size or k.size < 1:
         raise ValueError(f"{where}: kp and {name} must have the same non-zero length, got {k.size} and {v.size}.")
     if not np.all(np.isfinite(k)) or np.any(np.diff(k) <= 0):
-        raise ValueError(f"{where}: kp must be finite and strictly increasing, got {[float(v) for v in k]} m. Suggested fix: sort "
-                         "the table by KP.")
+        raise ValueError(f"{where}: kp must be finite and strictly increasing, got {[float(v) for v in k]} m. "
+                         "Suggested fix: sort the table by KP.")
     bad = ~np.isfinite(v) | (v < 0)
     if bad.any():
         i = int(np.argmax(bad))

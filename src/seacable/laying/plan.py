@@ -56,8 +56,8 @@ after a few iterations and flagged.
 
 Limits: the span is in steady state at each KP for the lagged speed and the spread turn (the lag is a model of
 the transient, not its solution, and the spread is the linear theory's, without the span's lateral inertia, for the
-span in still water on a flat seabed: the dynamic model gives the rest); the seabed's cross slope, a repeater's own weight and drag and the cable's
-bending stiffness are left out, and so is a span that touches a ridge between touchdown and ship
+span in still water on a flat seabed: the dynamic model gives the rest); the seabed's cross slope, a repeater's
+own weight and drag and the cable's bending stiffness are left out, and so is a span that touches a ridge between touchdown and ship
 (flagged: ``span_clearance < 0``). A touchdown that would move backwards (the seabed falling away
 faster than the layback grows) is flagged too. The dynamic model (``laying_dynamic``) has none of
 these limits.
@@ -84,7 +84,8 @@ from ..errors import InputError, SeacableWarning
 from . import lateral
 from .kernel import current_at
 
-__all__ = ["LayPlan", "plan_lay", "solve_spans", "span_spread", "steady_turn", "straight_direction"]
+__all__ = ["LayPlan", "catenary_profile", "plan_lay", "solve_spans", "span_spread", "steady_turn",
+           "straight_direction"]
 
 # columns of the per-station property table
 S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT = range(7)
@@ -268,13 +269,19 @@ def _pay_out_time(h, vs, props, rho):
     return out
 
 
-def _straight_layback(h, vs, props, rho) -> np.ndarray:
-    """The straight span's layback in still water, ``h cot(alpha)`` (Zajac's angle at ``vs``). [m]"""
-    kn = 0.5 * rho * props[:, S_CDN] * props[:, S_D]
-    q = kn * vs * vs
+def _zajac_angle(vs, props, rho) -> tuple[np.ndarray, np.ndarray]:
+    """``(cos, sin)`` of Zajac's angle in still water at the speeds ``vs``, for the stations' cables
+    (:func:`straight_direction`, vectorised)."""
+    q = 0.5 * rho * props[:, S_CDN] * props[:, S_D] * vs * vs
     w = props[:, S_W]
     ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
-    return h * ca / np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
+    return ca, np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
+
+
+def _straight_layback(h, vs, props, rho) -> np.ndarray:
+    """The straight span's layback in still water, ``h cot(alpha)`` (Zajac's angle at ``vs``). [m]"""
+    ca, sa = _zajac_angle(vs, props, rho)
+    return h * ca / sa
 
 
 @njit(cache=True)
@@ -368,8 +375,8 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         depths, speeds = np.asarray(current.depths, float), np.asarray(current.speeds, float)
     tension_mode = bottom_tension is not None
     target_at = bottom_tension if tension_mode else slack         # by the touchdown's KP, where callable
-    t0 = np.asarray((target_at(kp) if callable(target_at) else target_at) if tension_mode else np.zeros(n), float)
-    slack = None if tension_mode else np.asarray(target_at(kp) if callable(target_at) else target_at, float)
+    target = np.broadcast_to(np.asarray(target_at(kp) if callable(target_at) else target_at, float), (n,)).copy()
+    t0, slack = (target, None) if tension_mode else (np.zeros(n), target)
     seabed.check_covers(ship_xy, "route", kp)
     h_ship = seabed.depth(ship_xy)
     vs = np.array(scheduled_speed, float)
@@ -396,10 +403,8 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
     h_outer = h.copy()
     for outer in range(max_iterations):
         if callable(target_at) and outer > 0:              # the target where the touchdown now is
-            if tension_mode:
-                t0 = np.asarray(target_at(td_kp), float)
-            else:
-                slack = np.asarray(target_at(td_kp), float)
+            target = np.asarray(target_at(td_kp), float)
+            t0, slack = (target, None) if tension_mode else (t0, target)
         props = props_at(s_td)
         per_metre = 1.0 / (1.0 + t0 * props[:, S_COMPLIANCE]) if tension_mode else 1.0 + slack
         # the span's speed (the ship's, lagged by the pay-out time tau) and its turn rate (the route's curvature
@@ -408,8 +413,8 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         # (at the straight span's touchdown over the depth under the ship: kept off the iterated touchdown, whose
         # depth can have two roots where the seabed falls away)
         reach = _straight_layback(h_ship, speed_eff, props, water_density)
-        curvature, spread_heading, reach = spread.turns(kp, h_ship, speed_eff, t0, per_metre * np.ones(n), props,
-                                                        turn_kp, turn, reach)
+        curvature, spread_heading, reach = spread.turns(kp, h_ship, speed_eff, t0, per_metre, props, turn_kp, turn,
+                                                        reach)
         omega = speed_eff * curvature
         # (a turn that would move the touchdown by under 0.01 mm, the cut being about 0.08 L^2 Omega / V: none)
         omega[np.abs(omega) * reach**2 < 1e-4 * speed_eff] = 0.0
@@ -646,25 +651,36 @@ def span_spread(props, depth, ship_speed, *, water_density, slack=None, bottom_t
                                                   speed=ship_speed, weight=w, kn=kn,
                                                   tension_gradient=w * sa - kt * abs(ut) * ut)
     else:
-        out, rec = np.empty(5), np.empty((4000, 4))
-        zero = np.zeros(1)
-        payout = ship_speed / (1.0 + bottom_tension * p[S_COMPLIANCE])
-        m = _span(depth, 0.0, ship_speed, 0.0, payout, 1.0, 0.0, bottom_tension, zero, zero, water_density, p, out, rec)
-        if not np.isfinite(out[0]) or m >= rec.shape[0]:
+        profile = catenary_profile(p, depth, ship_speed, bottom_tension, water_density=water_density)
+        if profile is None:
             return None
-        layback = out[0]
-        s = np.linspace(0.0, out[2], _CATENARY_NODES)
-        r = rec[:m]
-        t1, t3 = np.interp(s, r[:, 0], r[:, 2]), np.interp(s, r[:, 0], r[:, 3])
-        norm = np.hypot(t1, t3)
-        tension = np.interp(s, r[:, 0], r[:, 1])
+        s, tension, sin_a, cos_a, layback = profile
 
         def transfer(k):
-            return lateral.span_transfer(k, s, tension, t3 / norm, t1 / norm, speed=ship_speed, weight=w, kn=kn,
+            return lateral.span_transfer(k, s, tension, sin_a, cos_a, speed=ship_speed, weight=w, kn=kn,
                                          layback=layback)
 
     x, kernel, integral, g2 = lateral.spread_kernel(transfer, layback, extent=extent, samples=samples)
     return {"x": x, "kernel": kernel, "integral": integral, "g2": g2, "layback": layback}
+
+
+def catenary_profile(props, depth, ship_speed, bottom_tension, *, water_density, nodes=_CATENARY_NODES):
+    """The steady lay's span under a bottom tension (the catenary with drag, :func:`_span`, in still water on a
+    straight track over a flat seabed) at ``nodes`` equally spaced points from the touchdown: arc length [m],
+    tension [N], sine and cosine of the angle to the horizontal [-], and the layback [m]; None if the span does not
+    reach the surface."""
+    p = np.asarray(props, float)
+    out, rec = np.empty(5), np.empty((4000, 4))
+    zero = np.zeros(1)
+    payout = ship_speed / (1.0 + bottom_tension * p[S_COMPLIANCE])
+    m = _span(depth, 0.0, ship_speed, 0.0, payout, 1.0, 0.0, bottom_tension, zero, zero, water_density, p, out, rec)
+    if not np.isfinite(out[0]) or m >= rec.shape[0]:
+        return None
+    s = np.linspace(0.0, out[2], nodes)
+    r = rec[:m]
+    t1, t3 = np.interp(s, r[:, 0], r[:, 2]), np.interp(s, r[:, 0], r[:, 3])
+    norm = np.hypot(t1, t3)
+    return s, np.interp(s, r[:, 0], r[:, 1]), t3 / norm, t1 / norm, float(out[0])
 
 
 @lru_cache(maxsize=4096)
@@ -722,11 +738,8 @@ class _Spread:
         ``per_metre`` and cable ``props``. [-], [-], [m]"""
         n = h.size
         rows, weights = np.full((n, 4), -1), np.zeros((n, 4))
-        w, d = props[:, S_W], props[:, S_D]
-        kn, kt = 0.5 * self.rho * props[:, S_CDN] * d, 0.5 * self.rho * props[:, S_CDT] * math.pi * d
-        q = kn * vs * vs                                     # Zajac's angle (:func:`straight_direction`)
-        ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
-        sa = np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
+        w, kt = props[:, S_W], 0.5 * self.rho * props[:, S_CDT] * math.pi * props[:, S_D]
+        ca, sa = _zajac_angle(vs, props, self.rho)
         # the angle's levels, between 0.5 deg and 89 deg
         angle = np.clip(np.degrees(np.arctan2(sa, ca)), _ANGLE_STEP, 89.0) / _ANGLE_STEP
         a0 = np.minimum(np.floor(angle).astype(int), round(89.0 / _ANGLE_STEP) - 1)

@@ -104,7 +104,6 @@ def run_lay_plan(case: Case):
     kp = kp[np.concatenate([[True], np.diff(kp) > 1e-3])]         # (an arc's end within 1 mm of a row: one row)
     # the plan is computed on stations every _STATION_STEP at most (rows further apart among them): a repeater's
     # slow-down, the span's lag and the turns' spread are shorter than a kilometre, and rows 1 km apart gave a lay
-    # 10 % longer in time than rows 100 m apart
     # 10 % longer in time than rows 100 m apart; and _MIN_STATION_STEP apart at least (rows closer than that are
     # interpolated: a quasi-static plan has nothing to say between them, and rows every 0.5 m took 10 minutes)
     base = kp

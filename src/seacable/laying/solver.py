@@ -359,15 +359,15 @@ class _Lay:
             for _ in range(n_laid):
                 slope = float(track.gradient(laid_h[-1] - 0.5 * seg * back) @ back)
                 laid_h.append(laid_h[-1] - seg / math.sqrt(1.0 + slope * slope) * back)
-            laid_h = laid_h[::-1]
             laid_z = track.zb(np.array(laid_h))
-        except InputError:                       # a grid that gives no depth there
+        except InputError:                       # a grid that gives no depth there (at the farthest point reached)
             p = laid_h[-1]
             raise InputError(f"the seabed does not cover the cable already on the seabed at the start: no depth "
                              f"behind x = {p[0]:.1f} m" + (f", y = {p[1]:.1f} m" if len(p) > 1 else "")
                              + f" ({pre:.6g} m of cable laid behind the touchdown, {ell:.6g} m from the ship). "
                              "Suggested fix: extend the seabed grid behind the start by twice the layback, or start "
                              "the ship further along the route (analysis.ship.start_x).") from None
+        laid_h, laid_z = laid_h[::-1], laid_z[::-1]          # from the far end to the touchdown
         self.laid = {"p": [np.append(h, float(z)) for h, z in zip(laid_h, laid_z)],
                      "s": [k * seg for k in range(n_laid + 1)], "time": [0.0] * (n_laid + 1),
                      "T": [0.0] * (n_laid + 1)}
