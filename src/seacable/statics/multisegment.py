@@ -616,7 +616,7 @@ def _slack_result(line: _Line, X, Z, V_A) -> LineEquilibrium:
 
 
 def pushover(lengths, weights, axial_stiffness, horizontal_span, vertical_span, offsets,
-             **options) -> Pushover:
+             check=None, **options) -> Pushover:
     """Force-excursion curve: :func:`line_equilibrium` at each offset, each started from the
     previous solution (continuation; give the offsets in a monotone order).
 
@@ -626,6 +626,8 @@ def pushover(lengths, weights, axial_stiffness, horizontal_span, vertical_span, 
         As for :func:`line_equilibrium`. [m], [N/m], [N], [m], [m]
     offsets : array_like
         Horizontal fairlead offsets added to ``horizontal_span``. [m]
+    check : callable, optional
+        ``check(equilibrium, offset)``, called on each solution (it may raise to refuse one).
     **options
         Keyword options of :func:`line_equilibrium` (point_loads, seabed, seabed_friction, ...).
 
@@ -639,6 +641,8 @@ def pushover(lengths, weights, axial_stiffness, horizontal_span, vertical_span, 
     for off in offsets:
         eq = line_equilibrium(lengths, weights, axial_stiffness, horizontal_span + off, vertical_span,
                               initial_guess=guess, **options)
+        if check is not None:
+            check(eq, float(off))
         guess = (eq.H_fairlead, eq._V_A) if eq.H_fairlead > 0 else None
         rows.append(eq)
     return Pushover(offsets, *(np.array([getattr(e, k) for e in rows]) for k in (

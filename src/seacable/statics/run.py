@@ -12,7 +12,7 @@ import warnings
 import numpy as np
 
 from ..case import Case, LayingTheoryAnalysis, PushoverAnalysis, StaticAnalysis, TowedSteadyAnalysis
-from ..errors import InputError, SeacableWarning
+from ..errors import InputError, NoSolutionError, SeacableWarning
 from ..results import make_dataset, var
 
 __all__ = ["line_arrays", "run_laying_theory", "run_pushover", "run_static", "run_towed_steady"]
@@ -65,7 +65,57 @@ def equilibrium(case: Case, fairlead):
     eq = line_equilibrium(lengths, weights, ea, h, v, point_loads=loads, seabed=on_seabed,
                           seabed_friction=seabed.friction if on_seabed else 0.0,
                           seabed_slope=seabed.slope if on_seabed else 0.0)
+    check_in_water(case, eq, ax, az, on_seabed)
     return eq, ax, az, on_seabed
+
+
+def _seabed_z(env, x):
+    """Seabed elevation under ``x`` (the plane through -depth at x = 0 with its slope, or the profile),
+    NaN without a seabed. [m]"""
+    x = np.asarray(x, float)
+    if env.seabed.profile is not None:
+        return -np.interp(x, env.seabed.profile.distance, env.seabed.profile.depth)
+    if env.depth is None:
+        return np.full_like(x, np.nan)
+    return -env.depth + math.tan(env.seabed.slope) * x
+
+
+def check_in_water(case: Case, eq, ax: float, az: float, on_seabed: bool, where: str = "") -> None:
+    """Refuse an equilibrium of the single-line statics that leaves the water.
+
+    The multi-segment catenary weighs every part of the line at its weight in water, and meets the
+    seabed only under a line anchored on it. A solution that rises above the sea surface (z = 0), or
+    that passes below the seabed where the line has no contact with it, is not the line's equilibrium:
+    it is refused (:class:`NoSolutionError`) with where it leaves the water, rather than returned.
+    """
+    prof = eq.profile(points_per_segment=16)   # the sag and hog bends are among the samples: the extremes
+    x, z, s = np.asarray(prof.x) + ax, np.asarray(prof.z) + az, np.asarray(prof.s)
+    lengths, weights = line_arrays(case)[:2]
+    tol = 1e-6 * max(float(lengths.sum()), abs(az), 1.0)
+    k = int(np.argmax(z))
+    if z[k] > tol:
+        seg = int(prof.segment[k])
+        at_end = k in (0, z.size - 1)
+        fix = ("run the line as a mooring system (system_static), which weighs the part above the water at its "
+               "dry weight; or put the end under water." if at_end else
+               "a buoyant part arching above the water would float along the surface, partly immersed, which no "
+               "statics here models: keep it under water (less or shorter buoyancy, a shorter line, a deeper "
+               "fairlead).")
+        raise NoSolutionError(
+            f"{where}the line's equilibrium rises {z[k]:.4g} m above the sea surface at s = {s[k]:.6g} m from the "
+            f"anchor (segment {seg + 1}, {weights[seg]:.4g} N/m in water), but the single-line statics weighs "
+            f"every part of the line at its weight in water, which is wrong in the air. Suggested fix: {fix}")
+    if on_seabed:
+        return
+    bed = _seabed_z(case.environment, x)
+    below = bed - z
+    if np.any(below > tol):
+        k = int(np.nanargmax(below))
+        raise NoSolutionError(
+            f"{where}the line's equilibrium passes {below[k]:.4g} m below the seabed at s = {s[k]:.6g} m from the "
+            f"anchor (x = {x[k]:.6g} m, seabed at z = {bed[k]:.6g} m), but its anchor (z = {az:.6g} m) is above "
+            "the seabed, so the single-line statics gives it no contact with the seabed. Suggested fix: put the "
+            "anchor on the seabed (z = -depth) so that the line may lie on it, or shorten the line.")
 
 
 _END_FORCES = {
@@ -114,7 +164,10 @@ def run_pushover(case: Case):
         raise InputError(f"offsets must keep the fairlead at x >= the anchor's, got a smallest offset "
                          f"of {offsets.min():g} m with a span of {h:g} m.")
     seabed = case.environment.seabed
-    po = pushover(lengths, weights, ea, h, v, offsets, point_loads=loads, seabed=on_seabed,
+    def in_water(eq, offset):
+        check_in_water(case, eq, ax, az, on_seabed, where=f"at offset {offset:g} m: ")
+
+    po = pushover(lengths, weights, ea, h, v, offsets, check=in_water, point_loads=loads, seabed=on_seabed,
                   seabed_friction=seabed.friction if on_seabed else 0.0,
                   seabed_slope=seabed.slope if on_seabed else 0.0)
     data = {
@@ -144,12 +197,21 @@ def run_towed_steady(case: Case):
         speed = (np.asarray(cur.depths, float), a.vessel_speed - np.asarray(cur.speeds, float) * along)
     body = a.body
     # the line's end A is the towed end: its segments and attachments from the body up to the tow point
-    res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
-                                    body_weight=body.weight_in_water if body else 0.0,
-                                    body_drag_area=body.drag_area if body else 0.0,
-                                    body_lift_area=body.lift_area() if body else 0.0,
-                                    tangential_drag=a.tangential_drag, n_points=a.n_nodes)
+    with warnings.catch_warnings():   # a shape above the tow point is refused below, not warned of
+        warnings.filterwarnings("ignore", "part of the towed cable lies", SeacableWarning)
+        res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
+                                        body_weight=body.weight_in_water if body else 0.0,
+                                        body_drag_area=body.drag_area if body else 0.0,
+                                        body_lift_area=body.lift_area() if body else 0.0,
+                                        tangential_drag=a.tangential_drag, n_points=a.n_nodes)
     at = [i for _, i in points]
+    k = int(np.argmax(res.z))
+    if res.z[k] > 1e-6 * max(case.line.length, 1.0):   # the tow point is at the surface: z = 0
+        raise NoSolutionError(
+            f"towed_steady: the cable at s = {res.s[k]:.6g} m from the lower end rises {res.z[k]:.4g} m above the "
+            "tow point, which is at the sea surface, but the steady tow weighs every part at its weight in "
+            "water, which is wrong in the air. Suggested fix: less buoyancy in line (floats), a heavier body or "
+            "lower end, or a slower tow.")
     extra = {}
     if env.depth is not None:  # the tow point at the surface: z is the depth; the steady tow has no seabed
         k = int(np.argmin(res.z))

@@ -785,9 +785,11 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             continue
         # parts of lines above the water weigh their dry weight: a node where a line crosses the
         # surface, moved to where the last solution crosses it until it stays (a fixed point)
-        if ok and surf_rounds < _SURFACE_ROUNDS:
+        if ok:
             new_surf, new_air = _surface(prob, st, ev, cuts)
             if not _same_split(new_surf, surf, new_air, air, prob.asm):
+                if surf_rounds == _SURFACE_ROUNDS:
+                    raise NoSolutionError(_floating(prob, new_air or air))
                 surf, air = new_surf, new_air
                 surf_rounds += 1
                 continue
@@ -855,7 +857,9 @@ def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
     asm = prob.asm
     P = node_positions(asm, st.X, st.R, st.P)
     eps = 1e-9 * max(1.0, float(np.abs(P[:, 2]).max(initial=0.0)))
-    up = (P[asm.sub_a, 2] > eps) | (P[asm.sub_b, 2] > eps)
+    # a heavy catenary is highest at an end; a buoyant one (w < 0) arches up between its ends, which may
+    # both be under water while its middle is above it
+    up = (P[asm.sub_a, 2] > eps) | (P[asm.sub_b, 2] > eps) | (asm.sub_w < 0)
     cross: dict = {}
     air: dict = {}
     for k in np.flatnonzero(up):
@@ -900,6 +904,26 @@ def _surface(prob: _Problem, st: State, ev: Evaluation, sag_cuts: dict):
 
 _MERGE_S = 1e-6         # crossings moved less than this (x line length) stay where they are
 _SURFACE_GAP = 1e-3     # no surface node nearer than this (x line length) to a line end or another node
+
+
+def _floating(prob: _Problem, air: dict) -> str:
+    """The message for lines whose surface crossings do not settle: a part buoyant in water and heavy in
+    air, which would float along the surface, partly immersed."""
+    def spans(v):
+        merged = []
+        for a, b in sorted(v):     # the pieces in air of one line, joined where they touch
+            if merged and a - merged[-1][1] <= 1e-9 * max(1.0, abs(b)):
+                merged[-1][1] = b
+            else:
+                merged.append([a, b])
+        return ", ".join(f"{a:.6g}-{b:.6g}" for a, b in merged)
+
+    names = ", ".join(f"lines.{n} (s = {spans(v)} m)" for n, v in sorted(air.items()))
+    return (f"no static equilibrium this model can represent: {names or 'a line'} rises above the sea "
+            "surface while immersed and sinks under its dry weight once above it, so it would float along the "
+            "surface, partly immersed, which the catenary statics does not model (a line's buoyancy is all or "
+            "nothing at z = 0). Suggested fix: less buoyancy on the lines (smaller or fewer buoyancy modules), "
+            "more length or depth under them, or a buoy as a point, which may float at the surface.")
 
 
 def _same_split(surf, old_surf, air, old_air, asm) -> bool:
