@@ -15,7 +15,7 @@ from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV
 from .fe_run import check_towed_size
-from .seabed import seabed_clearance, warn_depth_not_modelled
+from .seabed import seabed_clearance, surface_excursion, warn_depth_not_modelled
 from .solver import TowedBodyParameters, cable_parameters, simulate, steady_tow
 from .vessel import initial_heading, sample_path
 
@@ -143,11 +143,18 @@ def prepare_towed_box(case: Case) -> PreparedTowed:
     h0 = steady_tow(par, n, vel0[0], kwargs["current"], body, water_density=kwargs["water_density"],
                     current_follows_vessel=kwargs["current_follows_vessel"])
     depth = case.environment.depth
-    if depth is not None:
-        from .equations import integrate_positions
+    from .equations import integrate_positions
 
-        pos = np.zeros((n, 3))
-        integrate_positions(h0, np.asarray(path(np.array([0.0]))[0][0], float), par, pos)
+    pos = np.zeros((n, 3))
+    integrate_positions(h0, np.asarray(path(np.array([0.0]))[0][0], float), par, pos)
+    j = int(np.argmax(pos[:-1, 2]))
+    if pos[j, 2] > 1e-6 * max(1.0, case.line.length):
+        raise InputError(
+            f"the steady tow that starts the run puts node {j}{' (the towed body)' if j == 0 and body else ''} "
+            f"{pos[j, 2]:.4g} m above the sea surface, and the box formulation weighs every node as immersed. "
+            "Suggested fix: a heavier body or cable (less buoyancy), or formulation: finite_element, which weighs "
+            "a node above the water at its dry weight.")
+    if depth is not None:
         j = int(np.argmin(pos[:, 2]))
         if pos[j, 2] < -depth:
             raise InputError(
@@ -215,6 +222,9 @@ def run_towed_dynamic(case: Case, progress=None):
     if not at_surface:
         data["depth_below_ship"] = var("time", tow[:, 2] - pos[:, 0, 2], "m",
                                        "depth of the lower end below the tow point")
+    data["surface_excursion"] = var("time", surface_excursion(res.time, pos[..., 2], analysis="towed_dynamic (box)"),
+                                    "m", "highest node (the tow point left out) above the still water level "
+                                    "(positive: out of the water, where the box scheme still weighs it as immersed)")
     depth = case.environment.depth
     if depth is not None:
         data["seabed_clearance"] = var("time", seabed_clearance(

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..errors import SeacableWarning
 
-__all__ = ["seabed_clearance", "warn_depth_not_modelled"]
+__all__ = ["seabed_clearance", "surface_excursion", "warn_depth_not_modelled"]
 
 
 def warn_depth_not_modelled(analysis: str, depth: float | None) -> None:
@@ -80,3 +80,44 @@ def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None) ->
             "a shorter or lighter line, a faster tow, or a model with seabed contact (mooring_dynamic).",
             SeacableWarning, stacklevel=3)
     return clearance
+
+
+def surface_excursion(time, z, *, analysis: str, skip_last: bool = True) -> np.ndarray:
+    """Highest elevation of the nodes above the still water level at each output time; warns if positive.
+
+    For a model that weighs every node in water (the towed-cable box scheme): a node above the surface is
+    weighed and loaded as if immersed, so the result there is not the cable's.
+
+    Parameters
+    ----------
+    time
+        Output times, shape (nt,). [s]
+    z
+        Node elevations (Z up, 0 at the surface), shape (nt, nodes). [m]
+    analysis
+        The analysis type, for the message.
+    skip_last
+        Leave out the last node (the tow point, held by the vessel wherever it is). [-]
+
+    Returns
+    -------
+    numpy.ndarray
+        ``max over nodes z`` at each time, shape (nt,); positive where a node is above the water. [m]
+    """
+    z = np.asarray(z, float)
+    free = z[:, :-1] if skip_last else z
+    height = np.nanmax(free, axis=1)
+    tol = 1e-6 * max(1.0, float(np.nanmax(np.abs(free), initial=0.0)))
+    above = np.flatnonzero(height > tol)
+    if above.size:
+        i = int(above[0])
+        j = int(np.nanargmax(free[i]))
+        worst = int(np.nanargmax(height))
+        warnings.warn(
+            f"{analysis}: at t = {float(time[i]):g} s node {j} is {float(free[i, j]):.4g} m above the sea surface, "
+            "but this model weighs and loads every node as immersed, so the cable's shape and tensions there are "
+            f"not right (highest: {float(height[worst]):.4g} m at t = {float(time[worst]):g} s). The result's "
+            "'surface_excursion' is positive where a node is above the water. Suggested fix: a heavier cable or "
+            "body (less buoyancy), a tow point at the surface, or formulation: finite_element, which weighs a "
+            "node above the water at its dry weight.", SeacableWarning, stacklevel=3)
+    return height

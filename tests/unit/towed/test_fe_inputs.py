@@ -7,6 +7,7 @@ Each bad input gets one clear message (what, the value with units, what was expe
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -169,3 +170,27 @@ def test_a_sled_on_a_rising_seabed_profile_rides_on_it():
     assert floor[-1] - floor[0] > 5.0  # it has climbed
     np.testing.assert_allclose(ds.seabed_clearance.values, np.nanmin(ds.z.values - (-np.interp(
         ds.x.values, [-400.0, -260.0, 0.0], [100.0, 100.0, 70.0])), axis=1), atol=1e-12)
+
+
+def test_a_box_run_whose_steady_start_is_above_the_surface_is_refused():
+    """The box scheme weighs every node in water (issue 37, item 1): a body buoyant by 5 kN (the 200 m cable
+    weighs 2.5 kN in water) floats the lower end up past the tow point at the surface; refused before the run
+    (by validate too), naming the node."""
+    spec = _spec(formulation="box", body={"mass": 300.0, "weight_in_water": -5000.0, "drag_area": 0.3})
+    spec["line_types"]["c"]["bending_stiffness"] = 30.0
+    with warnings.catch_warnings():   # the steady tow's own warning of a shape above the tow point
+        warnings.simplefilter("ignore", sc.SeacableWarning)
+        with pytest.raises(InputError, match=r"puts node 0 \(the towed body\) [0-9.]+ m above the sea surface"):
+            sc.simulate.check(sc.Case.parse(spec))
+
+
+def test_surface_excursion_is_the_highest_node_but_the_tow_point_and_warns_when_out_of_the_water():
+    """Three output times of three nodes (the last the tow point, 2 m up on a deck): the highest of the others,
+    and a warning naming the first time and node out of the water."""
+    from seacable.towed.seabed import surface_excursion
+
+    z = np.array([[-5.0, -1.0, 2.0], [-5.0, 0.5, 2.0], [0.25, -1.0, 2.0]])
+    with pytest.warns(sc.SeacableWarning, match=r"at t = 1 s node 1 is 0.5 m above the sea surface"):
+        h = surface_excursion([0.0, 1.0, 2.0], z, analysis="test")
+    np.testing.assert_array_equal(h, [-1.0, 0.5, 0.25])
+    np.testing.assert_array_equal(surface_excursion([0.0], z[:1, :2], analysis="test", skip_last=False), [-1.0])
