@@ -44,3 +44,34 @@ def coupled_and_mooring(line_type, *, n=20, duration=10.0, dt=0.1):
 def two_kernels():
     """:func:`coupled_and_mooring`: the same line run by the coupled body-line kernel and the mooring kernel."""
     return coupled_and_mooring
+
+
+def system_and_mooring_cases(duration=10.0, n=20):
+    """One 600 m chain with a 5 t clump (drag, added mass) from an anchor 200 m deep to a fairlead moved
+    harmonically (4 m surge, 1 m heave at 15 s, ramped over 15 s), in 4 m / 9 s waves and a 0.5 m/s current, about
+    300 m of it on a seabed with friction 0.5: every load of the lines' kernel at once. Run as a ``system_dynamic``
+    case (coupled body-line kernel) and as a ``mooring_dynamic`` case (mooring kernel); their Datasets."""
+    lt = {"diameter": 0.09, "mass_per_length": 77.7, "axial_stiffness": 3.8e8, "drag_normal": 1.6,
+          "added_mass_normal": 1.0, "drag_tangential": 0.1}
+    line = {"segments": [{"line_type": "c", "length": 600.0}],
+            "attachments": [{"s": 300.0, "mass": 5000.0, "volume": 0.3, "drag_area": 1.0, "added_mass": 300.0,
+                             "kind": "clump"}]}
+    env = {"water_density": 1025.0, "gravity": 9.81, "depth": 200.0, "waves": {"height": 4.0, "period": 9.0},
+           "current": {"speed": 0.5}, "seabed": {"friction": 0.5}}
+    motion = {"type": "harmonic", "amplitude": [4.0, 0.0, 1.0], "period": 15.0, "ramp": 15.0}
+    run = {"duration": duration, "time_step": 0.1, "output_interval": 0.5, "n_elements": n}
+    mooring = sc.parse_case({"name": "m", "line_types": {"c": lt}, "line": line, "environment": env,
+                             "analysis": {"type": "mooring_dynamic", "fairlead": [520.0, -20.0], "motion": motion,
+                                          **run}})
+    system = sc.parse_case({"name": "s", "line_types": {"c": lt}, "environment": env,
+                            "points": {"anchor": {"kind": "fixed", "position": [0.0, 0.0, -200.0]},
+                                       "fair": {"kind": "coupled", "position": [520.0, 0.0, -20.0]}},
+                            "lines": {"l": {**line, "end_a": "anchor", "end_b": "fair"}},
+                            "analysis": {"type": "system_dynamic", "point_motions": {"fair": motion}, **run}})
+    return sc.run(system), sc.run(mooring)
+
+
+@pytest.fixture
+def two_kernel_cases():
+    """:func:`system_and_mooring_cases`: a line in waves, current and on the seabed, run by both kernels."""
+    return system_and_mooring_cases

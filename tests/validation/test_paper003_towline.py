@@ -78,13 +78,15 @@ def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
     prof = res.profile(n + 1)
     z_cat = z[-1] + prof.z[::-1] - prof.z[0]
     assert z.min() > 0.3  # clear of the water
-    # tensions at both ends within 1e-5 (measured 1.4e-6, 5e-6 with earlier kernels: the settling of the
-    # steady tow; 1e-5 is a few times that, and far below any error of the weight or the stiffness) and
+    # tensions at both ends within 1e-4: the chain of rigid links settles 3.6e-5 below the continuous catenary
+    # (measured at 500-800 s, with the joint dampers implicit along the line and with them point-implicit
+    # alike; at 400 s 4.1e-5, and the point-implicit dampers' slower settling crossed the catenary's value
+    # there, 1.4e-6, after -1.1e-4 at 300 s), far below any error of the weight or the stiffness; and
     # the joints on the catenary within 1 cm of a 0.9 m sag (measured 5.5 mm): rigid elements carry
     # their weight at their centres, the catenary continuously, so the joints of a chain of rigid links
     # lie on it to O(l^2); and each pin gives by its shear over its stiffness k / 3 (some 2 mm here)
-    assert float(last.barge_tension) == pytest.approx(float(res.anchor_tension), rel=1e-5)
-    assert float(last.top_tension) == pytest.approx(float(res.fairlead_tension), rel=1e-5)
+    assert float(last.barge_tension) == pytest.approx(float(res.anchor_tension), rel=1e-4)
+    assert float(last.top_tension) == pytest.approx(float(res.fairlead_tension), rel=1e-4)
     assert np.max(np.abs(z - z_cat)) < 1e-2
 
 

@@ -93,6 +93,7 @@ from ..environment import IrregularWaves
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion, rotation_matrix, sea_of
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
+from ..mooring.run import elevation_variables
 from ..mooring.solver import MooringModel, Water, advance_interval
 from ..mooring.solver import simulate as simulate_lines
 from ..results import make_dataset, var
@@ -722,6 +723,82 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
     return channels
 
 
+def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> None:
+    """The accelerations at t = 0 that satisfy the equations of motion there, in place: ``A`` of the lines'
+    nodes and ``qdd`` of the free bodies (and ``V`` of the nodes tied to a body, its velocity there), with the waves at t = 0 and the start's velocities (the bodies'
+    ``qd``; the lines at rest), as the mooring model starts (:func:`seacable.mooring.solver.simulate`).
+
+    A free node: ``M a = F``. A node tied to a free body moves with it, ``a_j = a + alpha x r_j + w x (w x
+    r_j)``, and its inertia and forces join the body's: ``(M6 + sum T_j^T M_j T_j) (a, alpha) = f6 + sum T_j^T
+    (F_j - M_j w x (w x r_j))``, ``T_j = [I, -skew(r_j)]``. A line end tied to a free point's node moves with it:
+    the pair's masses and forces together. A tied end held at a point follows it (``v0``, ``a0``: the channels'
+    velocities and accelerations at t = 0, (n_channels, 3)).
+
+    Newmark's average acceleration carries an error in the start's acceleration through the whole run (half a
+    step of it in every later velocity, undamped): a static start is not at equilibrium once the waves act
+    at t = 0, and a start at rest (zero acceleration) put 2.8 kN (3.5 % of the tension range) into 100 s of a
+    line in waves that the mooring model, which starts here, does not have.
+    """
+    m = fe.model
+    F, M, _, _ = m.evaluate(X, V, A, 0.0, settled=True)
+    F = F + fe.node_fext
+    free = m.fidx >= 0
+    tied = np.zeros(len(X), bool)
+    tied[fe.con_node] = True
+    own = free & ~tied
+    # free nodes and the line ends tied to them (a failing end at a free point): one mass, one force
+    Mg, Fg = M.copy(), F.copy()
+    for j in range(len(fe.con_node)):
+        b = fe.con_body[j]
+        if b <= -2:
+            Mg[-2 - b] += M[fe.con_node[j]]
+            Fg[-2 - b] += F[fe.con_node[j]]
+    A[own] = np.linalg.solve(Mg[own], Fg[own][..., None])[..., 0]
+    nb = q.shape[0]
+    R = np.zeros((3, 3))
+    rows = [[] for _ in range(nb)]
+    for j in range(len(fe.con_node)):
+        i, b = fe.con_node[j], fe.con_body[j]
+        if b <= -2:
+            A[i] = A[-2 - b]
+        elif b == -1:
+            ch = fe.con_chan[j]
+            if ch >= 0:
+                V[i], A[i] = v0[ch], a0[ch]
+            else:
+                A[i] = 0.0
+        else:
+            rows[b].append(j)
+    for b in range(nb):
+        E, ed = np.zeros((3, 3)), np.zeros(3)
+        DK.angular_map(q[b], qd[b], E, ed, frame[b])
+        w = E @ qd[b, 3:]
+        f6, M6 = np.zeros(6), np.zeros((6, 6))
+        uc = np.zeros(3)
+        DK._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
+        DK.body_load(q[b], np.r_[qd[b, :3], w], uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b],
+                     fe.ext_t[b], fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6, frame[b])
+        DK.body_rotation(q[b], frame[b], R)
+        arms = {}
+        for j in rows[b]:
+            i = fe.con_node[j]
+            r = R @ fe.con_arm[j]
+            arms[j] = r
+            T = np.hstack((np.eye(3), -_cross_matrix(r)))
+            M6 += T.T @ M[i] @ T
+            f6 += T.T @ (F[i] - M[i] @ np.cross(w, np.cross(w, r)))
+        acc = np.linalg.solve(M6, f6)
+        qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
+        for j, r in arms.items():
+            V[fe.con_node[j]] = qd[b, :3] + np.cross(w, r)
+            A[fe.con_node[j]] = acc[:3] + np.cross(acc[3:], r) + np.cross(w, np.cross(w, r))
+
+
+def _cross_matrix(r) -> np.ndarray:
+    """skew(r): skew(r) v = r x v."""
+    return np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
+
+
 def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
                     analysis: SystemDynamicAnalysis | None = None, tol: float = 1e-7, max_iter: int = 30,
                     beta: float = 0.25, gamma: float = 0.5, progress=None, max_halvings: int = 6,
@@ -749,19 +826,6 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     frame[:, DK.F_GLOB:DK.F_GLOB + 3] = q[:, 3:]
     for b in range(nb):
         DK.rechart(q[b], qd[b], qdd[b], frame[b], DK.CHART_LIMIT)
-    # the bodies' initial acceleration (zero at an equilibrium; a held start is released here)
-    if nb:
-        fl = body_line_force(fe, X, _global_pose(q, frame))
-        for b in range(nb):
-            f6, M6, E, ed = np.zeros(6), np.zeros((6, 6)), np.zeros((3, 3)), np.zeros(3)
-            DK.angular_map(q[b], qd[b], E, ed, frame[b])
-            u = np.r_[qd[b, :3], E @ qd[b, 3:]]
-            uc = np.zeros(3)
-            DK._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
-            DK.body_load(q[b], u, uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b], fe.ext_t[b],
-                         fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6, frame[b])
-            acc = np.linalg.solve(M6, f6 + fl[b])
-            qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
     n_out = int(round(duration / output_interval))  # noqa: RUF046
     sub = max(1, math.ceil(output_interval / dt - 1e-9))
     h = output_interval / sub
@@ -769,6 +833,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     tension = np.zeros(net.n_elements)
     m.settle_viscoelastic(X, np.zeros_like(X))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
+    initial_accelerations(fe, X, V, A, q, qd, qdd, frame, v0[0], a0[0])
     g = _global_state(q, qd, frame)
     times, pos, vel, ten, bq, bqd, bw = [0.0], [X.copy()], [V.copy()], [t0_tension], [g[0]], [g[1]], [g[2]]
     stats = np.zeros(3)
@@ -1125,6 +1190,8 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
         coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
         data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
                                             "body angular velocity, global axes")
+    # the sea that drove the run: its surface at x = y = 0, as a mooring_dynamic result holds it
+    data.update(elevation_variables(fe.model.water, run.time))
     title = getattr(case, "name", None) or "system_dynamic"
     ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
                       case=case if hasattr(case, "model_dump") else None,  # a case file's, as YAML (a deck: its file)

@@ -78,12 +78,17 @@ act on the relative motion at the joints, which is what a material damping is.
 Time stepping is explicit (symplectic Euler: velocities first, then positions with the new
 velocities; the frame turns by the exact rotation of ``omega dt``), with no iteration, and a step
 bounded by the element's axial natural period: ``dt < sqrt(m / k) = T_n / 2 pi`` (``stable_time_step``).
-The dampers' terms in each element's own velocities (the diagonal ``d`` of the damping matrix in
-``u, v, w, q, r``) are taken implicitly, ``x += dt a / (1 + dt d / mass)``, their coupling to the
-neighbours explicitly: explicit, the paper's zeta = 0.5 bounded the step more tightly than the
-springs (0.41 against 0.53 sqrt(m / k) with ``k_t = k``), and on a folded joint, where the damper
-pushes the other element's end sideways, it broke that bound. Each element takes its step as soon as
-both its joints are known, in one pass along the line.
+The joint dampers and the bending dampers are taken implicitly along the whole line (backward Euler in
+them): the new velocities of all elements solve ``(M + dt D) dx = dt f``, with ``M`` the elements'
+masses and inertias, ``f`` all loads at the step's start and ``D`` the dampers' matrix, block
+tri-diagonal with 5x5 blocks (a joint couples its two elements), by one forward elimination along the
+line as the loads are computed and one back substitution that moves the elements (:func:`_eliminate`,
+:func:`_back_substitute`). Elements that move together carry no damper force and feel no inertia from
+it. Explicit, the paper's zeta = 0.5 bounded the step more tightly than the springs (0.41 against 0.53
+sqrt(m / k) with ``k_t = k``); implicit in each element's own velocities only (each joint on its own, the
+neighbour's velocity from the step's start), the damper of a joint whose two elements accelerate
+together pulled ``c dt a`` back on each: a false inertia of ``c dt`` per joint, with which a line
+falling in water at zeta = 0.5 fell 8.7 % slower than its weight, buoyancy and added mass give.
 """
 
 from __future__ import annotations
@@ -352,26 +357,100 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _advance(k, E, nu, om, R, P, ld, dt):
-    """Element k's explicit step on its loads ``ld`` (``_element``'s tuple, bending damping added):
-    Kirchhoff's equations for the new velocities, the dampers' own-velocity terms taken implicitly
-    (``x += dt a / (1 + dt d / mass)``), then position and frame with the new velocities."""
-    m = P[P_M]
-    u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
-    my, ik = ld[10], ld[11]
-    u2 = u + dt * (ld[0] - q * my * w + r * my * v) / (m + dt * ld[5])
-    v2 = v + dt * (ld[1] - r * m * u) / (my + dt * ld[6])
-    w2 = w + dt * (ld[2] + q * m * u) / (my + dt * ld[7])
-    q2 = q + dt * (ld[3] - (m - my) * u * w) / (ik + dt * ld[8])
-    r2 = r + dt * (ld[4] - (my - m) * u * v) / (ik + dt * ld[9])
-    nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1] = u2, v2, w2, q2, r2
-    for i in range(3):
-        R[k, i] += dt * (E[k, i, 0] * u2 + E[k, i, 1] * v2 + E[k, i, 2] * w2)
-    _rotate(E[k], q2, r2, dt)
+def _damper_block(E, k, l, sk, sl, jt, coef, out):
+    """out += coef B(sk)^T (E_k^T C E_l) B(sl): the damper of joint ``jt`` (``_joint``'s tuple: its axis a and
+    coefficients c_x along it and c_t across, ``C = c_t I + (c_x - c_t) a a^T``) between the point ``sk e1`` of
+    element k and ``sl e1`` of element l, in their velocities ``(u, v, w, q, r)``; ``B(s)`` maps them to the
+    point's body velocity ``(u, v + s r, w - s q)``."""
+    ct, cd = coef * jt[10], coef * (jt[9] - jt[10])
+    ak0 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
+    ak1 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
+    ak2 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
+    if k == l:  # E_k^T E_k = I
+        al0, al1, al2 = ak0, ak1, ak2
+        g00, g01, g02 = ct + cd * ak0 * ak0, cd * ak0 * ak1, cd * ak0 * ak2
+        g10, g11, g12 = g01, ct + cd * ak1 * ak1, cd * ak1 * ak2
+        g20, g21, g22 = g02, g12, ct + cd * ak2 * ak2
+    else:
+        al0 = E[l, 0, 0] * jt[6] + E[l, 1, 0] * jt[7] + E[l, 2, 0] * jt[8]
+        al1 = E[l, 0, 1] * jt[6] + E[l, 1, 1] * jt[7] + E[l, 2, 1] * jt[8]
+        al2 = E[l, 0, 2] * jt[6] + E[l, 1, 2] * jt[7] + E[l, 2, 2] * jt[8]
+
+        def ee(r, c):
+            return E[k, 0, r] * E[l, 0, c] + E[k, 1, r] * E[l, 1, c] + E[k, 2, r] * E[l, 2, c]
+
+        g00, g01, g02 = ct * ee(0, 0) + cd * ak0 * al0, ct * ee(0, 1) + cd * ak0 * al1, ct * ee(0, 2) + cd * ak0 * al2
+        g10, g11, g12 = ct * ee(1, 0) + cd * ak1 * al0, ct * ee(1, 1) + cd * ak1 * al1, ct * ee(1, 2) + cd * ak1 * al2
+        g20, g21, g22 = ct * ee(2, 0) + cd * ak2 * al0, ct * ee(2, 1) + cd * ak2 * al1, ct * ee(2, 2) + cd * ak2 * al2
+    # H = G B(sl) (rows r: (g_r0, g_r1, g_r2, -sl g_r2, sl g_r1)), out += B(sk)^T H (rows 0-2: H, 3: -sk H_2, 4: sk H_1)
+    out[0, 0] += g00
+    out[0, 1] += g01
+    out[0, 2] += g02
+    out[0, 3] -= sl * g02
+    out[0, 4] += sl * g01
+    out[1, 0] += g10
+    out[1, 1] += g11
+    out[1, 2] += g12
+    out[1, 3] -= sl * g12
+    out[1, 4] += sl * g11
+    out[2, 0] += g20
+    out[2, 1] += g21
+    out[2, 2] += g22
+    out[2, 3] -= sl * g22
+    out[2, 4] += sl * g21
+    out[3, 0] -= sk * g20
+    out[3, 1] -= sk * g21
+    out[3, 2] -= sk * g22
+    out[3, 3] += sk * sl * g22
+    out[3, 4] -= sk * sl * g21
+    out[4, 0] += sk * g10
+    out[4, 1] += sk * g11
+    out[4, 2] += sk * g12
+    out[4, 3] -= sk * sl * g12
+    out[4, 4] += sk * sl * g11
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _bending_block(E, k, l, coef, out):
+    """out[3:, 3:] += coef P_k^T P_l, ``P_k = [e2 e3]`` of element k: the bending damper's moment on k per
+    rotation rate (q, r) of l."""
+    for r in range(2):
+        for c in range(2):
+            out[3 + r, 3 + c] += coef * (E[k, 0, 1 + r] * E[l, 0, 1 + c] + E[k, 1, 1 + r] * E[l, 1, 1 + c]
+                                         + E[k, 2, 1 + r] * E[l, 2, 1 + c])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _solve5(S, U, y, W, z, with_u):
+    """W = S^-1 U (when ``with_u``) and z = S^-1 y for the symmetric positive definite 5x5 ``S`` (Gaussian
+    elimination without pivoting; S and U are overwritten)."""
+    for p in range(5):
+        inv = 1.0 / S[p, p]
+        for i in range(p + 1, 5):
+            f = S[i, p] * inv
+            if f != 0.0:
+                for c in range(p + 1, 5):
+                    S[i, c] -= f * S[p, c]
+                y[i] -= f * y[p]
+                if with_u:
+                    for c in range(5):
+                        U[i, c] -= f * U[p, c]
+    for i in range(4, -1, -1):
+        s = y[i]
+        for c in range(i + 1, 5):
+            s -= S[i, c] * z[c]
+        z[i] = s / S[i, i]
+        if with_u:
+            for cc in range(5):
+                s = U[i, cc]
+                for c in range(i + 1, 5):
+                    s -= S[i, c] * W[c, cc]
+                W[i, cc] = s / S[i, i]
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
-def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma_now, ma_prev, dt, work):
+def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma_now, ma_prev, dt, work,
+          Wb, zb, blk):
     """One explicit step of the line (``dt = 0``: the joints' tensions and the wetted inertias only);
     returns the barge joint's force on the line ahead (x, y) and whether the new state is finite.
 
@@ -385,11 +464,16 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
 
     Material damping of bending at a taut joint j: the moment ``c_m (omega_j - omega_{j-1})``,
     ``c_m = 2 zeta_m sqrt(T (l/2) I)`` with ``I`` the mean wetted inertia of the two elements (element
-    j's from the previous step: it has not been loaded yet); its own-velocity terms are implicit too.
+    j's from the previous step: it has not been loaded yet).
+
+    The dampers (joints' and bending) are implicit along the line: each element's row of the block
+    tri-diagonal velocity update is eliminated as soon as its loads are known (:func:`_eliminate`), and the
+    elements move in a back substitution after the pass (:func:`_back_substitute`).
 
     ``inert`` (N) holds the wetted inertias, in and out; ``ma_now`` (N, 3) receives the added mass of
     each Gauss point's share of the element; with ``dt > 0`` its growth since ``ma_prev`` gives the
-    water-entry impact. ``work`` is (2, 3) scratch.
+    water-entry impact. ``work`` is (2, 3) scratch; ``Wb`` (N, 5, 5), ``zb`` (N, 5) and ``blk`` (5, 5, 5)
+    the implicit update's (unused when ``dt = 0``).
     """
     n = R.shape[0]
     half = 0.5 * P[P_L]
@@ -402,7 +486,10 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
     prev = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     cur = prev
     bq = br = bd = 0.0  # bending damping of the previous joint on the element being finished
+    cm_front = cm_aft = 0.0
     finite = True
+    blk[1, :, :] = 0.0  # nothing eliminated before the first element
+    blk[2, 0, :] = 0.0
     for j in range(first, n + 1):
         # the next body's front point (q, w), and the axis sum s of the joint's elements
         sx = sy = sz = 0.0
@@ -440,8 +527,8 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
         if j > first:
             k = j - 1
             ld = _element(k, R, E, nu, om, P, prev, cur, inv_dt, ma_now, ma_prev)
-            mq, mr, dq = ld[3] + bq, ld[4] + br, ld[8] + bd
-            dr = ld[9] + bd
+            mq, mr = ld[3] + bq, ld[4] + br
+            cm_front, cm_aft = bd, 0.0
             bq = br = bd = 0.0
             if j < n and cz > 0.0 and cur[11] > 0.0:
                 # bending damping at joint j, on element k now and on element j when it is finished
@@ -451,18 +538,113 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
                 rz = om[j, 0] * E[j, 2, 1] + om[j, 1] * E[j, 2, 2] - om[k, 0] * E[k, 2, 1] - om[k, 1] * E[k, 2, 2]
                 mq += cm * (rx * E[k, 0, 1] + ry * E[k, 1, 1] + rz * E[k, 2, 1])
                 mr += cm * (rx * E[k, 0, 2] + ry * E[k, 1, 2] + rz * E[k, 2, 2])
-                dq += cm
-                dr += cm
+                cm_aft = cm
                 bq = -cm * (rx * E[j, 0, 1] + ry * E[j, 1, 1] + rz * E[j, 2, 1])
                 br = -cm * (rx * E[j, 0, 2] + ry * E[j, 1, 2] + rz * E[j, 2, 2])
                 bd = cm
             inert[k] = ld[11]
-            _advance(k, E, nu, om, R, P, (ld[0], ld[1], ld[2], mq, mr, ld[5], ld[6], ld[7], dq, dr, ld[10], ld[11]),
-                     dt)
-            finite = finite and math.isfinite(R[k, 0] + nu[k, 0] + om[k, 1])
+            if dt > 0.0:
+                _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, prev, cur, cm_front, cm_aft, dt, Wb, zb, blk)
         prev = cur
         px, py, pz, vx, vy, vz = ax_, ay_, az_, bvx, bvy, bvz
+    if dt > 0.0:
+        finite = _back_substitute(first, n, R, E, nu, om, dt, Wb, zb, blk)
     return cur[0], cur[1], finite
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, dt, Wb, zb, blk):
+    """Element k's row of the dampers' implicit velocity update, eliminated forward along the line.
+
+    The step solves ``(M + dt D) dx = dt f`` for the velocity increments ``dx = (du, dv, dw, dq, dr)`` of all
+    elements at once: ``M`` the elements' (wetted) masses and inertias, ``f`` their loads and Coriolis terms at
+    the step's start, ``D`` the joint dampers' and bending dampers' matrix, block tri-diagonal (5x5 blocks: a
+    joint couples its two elements). Backward Euler in the dampers along the whole line, so that elements moving
+    together (no relative velocity at a joint) feel no damper and no inertia from it. Forward elimination: with
+    ``T_k = U_{k-1}^T W_{k-1}``, ``t_k = U_{k-1}^T z_{k-1}`` from element k - 1 (``blk[1]``, ``blk[2, 0]``),
+    ``W_k = (A_k - T_k)^-1 U_k`` and ``z_k = (A_k - T_k)^-1 (dt f_k - t_k)``, ``U_k`` the coupling to element k + 1
+    through joint j = k + 1 (none at the barge's joint); :func:`_back_substitute` finishes the step."""
+    half = 0.5 * P[P_L]
+    m = P[P_M]
+    u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
+    my, ik = ld[10], ld[11]
+    S, U, T = blk[0], blk[3], blk[1]
+    y = blk[2, 1]
+    for a in range(5):
+        for c in range(5):
+            S[a, c] = -T[a, c]
+            U[a, c] = 0.0
+    S[0, 0] += m
+    S[1, 1] += my
+    S[2, 2] += my
+    S[3, 3] += ik
+    S[4, 4] += ik
+    if front[9] != 0.0 or front[10] != 0.0:
+        _damper_block(E, k, k, -half, -half, front, dt, S)
+    if aft[9] != 0.0 or aft[10] != 0.0:
+        _damper_block(E, k, k, half, half, aft, dt, S)
+    S[3, 3] += dt * (cm_front + cm_aft)
+    S[4, 4] += dt * (cm_front + cm_aft)
+    y[0] = dt * (ld[0] - q * my * w + r * my * v) - blk[2, 0, 0]
+    y[1] = dt * (ld[1] - r * m * u) - blk[2, 0, 1]
+    y[2] = dt * (ld[2] + q * m * u) - blk[2, 0, 2]
+    y[3] = dt * (mq - (m - my) * u * w) - blk[2, 0, 3]
+    y[4] = dt * (mr - (my - m) * u * v) - blk[2, 0, 4]
+    inner = j < n
+    if inner:
+        if aft[9] != 0.0 or aft[10] != 0.0:
+            _damper_block(E, k, j, half, -half, aft, -dt, U)
+        if cm_aft != 0.0:
+            _bending_block(E, k, j, -dt * cm_aft, U)
+    # keep U (for T of the next element), as the solve overwrites it
+    for a in range(5):
+        for c in range(5):
+            T[a, c] = U[a, c]
+    _solve5(S, U, y, Wb[k], zb[k], inner)
+    # the next element's share: T = U^T W, t = U^T z (zero after the last)
+    for a in range(5):
+        s = 0.0
+        for c in range(5):
+            s += T[c, a] * zb[k, c]
+        blk[2, 0, a] = s if inner else 0.0
+    for a in range(5):
+        for b in range(5):
+            s = 0.0
+            if inner:
+                for c in range(5):
+                    s += T[c, a] * Wb[k, c, b]
+            blk[4, a, b] = s
+    for a in range(5):
+        for b in range(5):
+            T[a, b] = blk[4, a, b]
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _back_substitute(first, n, R, E, nu, om, dt, Wb, zb, blk):
+    """The velocity increments ``dx_k = z_k - W_k dx_{k+1}`` from the barge's end back to the first element off
+    the bitt, each element's new velocities, then its position and frame with them (symplectic Euler). Returns
+    whether the new state is finite."""
+    x = blk[2, 1]
+    for a in range(5):
+        x[a] = 0.0
+    finite = True
+    for k in range(n - 1, first - 1, -1):
+        for a in range(5):
+            s = zb[k, a]
+            if k < n - 1:
+                for c in range(5):
+                    s -= Wb[k, a, c] * x[c]
+            blk[2, 2, a] = s
+        for a in range(5):
+            x[a] = blk[2, 2, a]
+        u2, v2, w2 = nu[k, 0] + x[0], nu[k, 1] + x[1], nu[k, 2] + x[2]
+        q2, r2 = om[k, 0] + x[3], om[k, 1] + x[4]
+        nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1] = u2, v2, w2, q2, r2
+        for i in range(3):
+            R[k, i] += dt * (E[k, i, 0] * u2 + E[k, i, 1] * v2 + E[k, i, 2] * w2)
+        _rotate(E[k], q2, r2, dt)
+        finite = finite and math.isfinite(R[k, 0] + nu[k, 0] + om[k, 1])
+    return finite
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -501,7 +683,8 @@ def _release(R, E, nu, om, k, P, tug_p, tug_v, bs, bxt, bzt):
 def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma):
     """Joint tensions, slack flags, the wetted inertias ``inert`` (N) and the added masses ``ma`` (N, 3)
     of the Gauss points' shares, for the state as it is (a step of zero length)."""
-    _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma, ma, 0.0, np.zeros((2, 3)))
+    _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma, ma, 0.0, np.zeros((2, 3)),
+          np.zeros((0, 5, 5)), np.zeros((0, 5)), np.zeros((5, 5, 5)))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -515,13 +698,14 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     n = R.shape[0]
     ma_prev, ma_now = ma, np.zeros((n, 3))  # swapped after each step
     work = np.zeros((2, 3))
+    Wb, zb, blk = np.zeros((n, 5, 5)), np.zeros((n, 5)), np.zeros((5, 5, 5))  # the dampers' implicit solve
     qb, wb = np.zeros(3), np.zeros(3)
     half = 0.5 * P[P_L]
     nstep = tug_p.shape[0] - 1
     for step in range(nstep):
         first = first_arr[0]
         fbx, fby, finite = _step(R, E, nu, om, first, P, tug_p[step], tug_v[step], bs, bxt, bzt, inert, tension,
-                                 slack, ma_now, ma_prev, dt, work)
+                                 slack, ma_now, ma_prev, dt, work, Wb, zb, blk)
         ma_prev, ma_now = ma_now, ma_prev
         # the barge: towline force at its tow point (minus joint n's force on the previous body)
         if not held:

@@ -13,11 +13,9 @@ velocity is ``a t`` to round-off; what is left is that spreading (relative 2e-10
 middle of 161 elements; 1e-4 on 41 elements at 0.1 s), far below the added mass's effect (a is 1.67
 times smaller with C_a = 1 than without added mass; 1 % of C_a moves it by 0.4 %).
 
-The joint dampers are off here (``damping_ratio = 0``): the kernel takes a damper's own-velocity term
-implicitly and its neighbour's explicitly, so when neighbours accelerate together each joint adds
-``c dt`` to an element's inertia; with the default zeta = 0.5 and the default step that is 0.16 zeta m
-per element across the line (the middle element falls 8.7 % slower with C_a = 1; 2.3 % at a quarter of
-the step). That is a time-step error of the damping, not of the added mass, and is reported separately.
+The joint dampers are off here (``damping_ratio = 0``); with them on, the same fall is checked in
+:mod:`test_damped_fall` (the dampers, implicit along the line, carry no force while the elements fall
+together).
 """
 
 from __future__ import annotations
