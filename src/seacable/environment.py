@@ -16,7 +16,7 @@ from pydantic import Field, field_validator, model_validator
 
 from ._model import Model, input_error, quantity
 from .errors import SeacableWarning
-from .waves import check_sea_state
+from .waves import MIN_WAVELENGTH, STANDARD_GRAVITY, check_sea_state
 
 __all__ = ["Current", "Environment", "IrregularWaves", "Seabed", "SystemEnvironment", "Waves"]
 
@@ -265,6 +265,12 @@ class IrregularWaves(Model):
             if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
                 raise ValueError(f"frequency_range must be [lowest, highest] with 0 < lowest < highest [rad/s], "
                                  f"got {list(self.frequency_range)}. Suggested fix: e.g. [0.3, 2.5] rad/s.")
+            shortest = 2.0 * math.pi * STANDARD_GRAVITY / hi ** 2  # deep water's, the longest at hi
+            if shortest < MIN_WAVELENGTH:
+                raise ValueError(f"frequency_range's highest frequency {hi:g} rad/s gives components {shortest:.3g} m "
+                                 f"long, under {MIN_WAVELENGTH:g} m: capillary ripples, not gravity waves (and a "
+                                 "kinematics grid a tenth of that apart). Suggested fix: a highest frequency of a few "
+                                 "rad/s (frequencies in rad/s = 2 pi Hz), or leave frequency_range out.")
             share = self.energy_share(lo, hi)
             if share < MIN_ENERGY_SHARE:
                 raise ValueError(f"frequency_range [{lo:g}, {hi:g}] rad/s holds {share:.3g} of the spectrum's energy "
