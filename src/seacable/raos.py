@@ -162,13 +162,15 @@ _CHUNK = 4096  # times per block of RAOResponse: 4096 x 2 x 200 components x 8 b
 MAX_RAO = (100.0, math.pi)
 
 
-def _row_of(i: int, line_of) -> str:
-    return f"line {line_of[i]}" if line_of is not None else f"row {i + 1}"
+def _row_of(i: int, row_of) -> str:
+    """The data row (numbers, after the header) of the table's i-th entry, counted from 1."""
+    return f"row {row_of[i] if row_of is not None else i + 1}"
 
 
 def _table(dof_of: np.ndarray, source: str, omega_of, heading_of, value_of, line_of=None) -> RAOTable:
     """An RAOTable from rows, each a DOF (1-6), a frequency [rad/s], a heading [rad] and a complex value; every
-    row checked here, whichever file it came from (``line_of``: each row's line in the file, for messages)."""
+    row checked here, whichever file it came from (``line_of``: each entry's data row in the file, for messages;
+    default the entries' order)."""
     dof_f = np.asarray(dof_of, float)
     omega_of, heading_of = np.asarray(omega_of, float), np.asarray(heading_of, float)
     value_of = np.asarray(value_of, complex)
@@ -250,7 +252,7 @@ def read_wamit4(path, ulen: float = 1.0) -> RAOTable:
     scale = np.where(dof >= 4, 1.0 / ulen, 1.0)
     value = data[:, 3] * scale * np.exp(-1j * np.radians(data[:, 4]))
     return _table(dof, f"RAO file '{path.name}'", 2 * math.pi / data[:, 0], np.radians(data[:, 1]), value,
-                  line_of=None)
+                  line_of=rows + 1)
 
 
 def read_rao_csv(path) -> RAOTable:
