@@ -18,7 +18,7 @@ Each analysis type is a class with a literal ``type`` (the key a case file uses)
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, ClassVar, Literal, Union
 
 import numpy as np
 from pydantic import Field, model_validator
@@ -66,6 +66,21 @@ __all__ = [
 
 _XZ = tuple[float, float]
 
+#: The environment's optional inputs (key paths under ``environment``) whose use depends on the analysis; each
+#: analysis declares those it takes (:meth:`uses`), and a case that gives one its analysis does not use is
+#: refused (:meth:`Case._unused_inputs`): a silently ignored input is a result of something other than asked.
+ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "waves")
+_SEABED = frozenset({"depth", "seabed.slope", "seabed.friction"})
+
+
+def given_environment_inputs(env: Environment) -> tuple[str, ...]:
+    """The :data:`ENVIRONMENT_INPUTS` an environment gives (away from their defaults)."""
+    cur, bed = env.current, env.seabed
+    given = {"depth": env.depth is not None, "current": cur.speed != 0.0 or cur.depths is not None,
+             "seabed.slope": bed.slope != 0.0, "seabed.friction": bed.friction != 0.0,
+             "seabed.profile": bed.profile is not None, "waves": env.waves is not None}
+    return tuple(k for k in ENVIRONMENT_INPUTS if given[k])
+
 
 class _Moored(Model):
     """Geometry shared by the analyses of a line between an anchor and a fairlead."""
@@ -88,6 +103,7 @@ class StaticAnalysis(_Moored):
     """Static equilibrium of a (multi-segment) line between anchor and fairlead."""
 
     type: Literal["static"] = "static"
+    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
     points_per_segment: int = Field(50, ge=2, le=100_000, description="Profile points per segment.")
 
 
@@ -118,6 +134,7 @@ class PushoverAnalysis(_Offsets, _Moored):
     """Force-excursion curve: the fairlead moved horizontally by ``offsets``."""
 
     type: Literal["pushover"] = "pushover"
+    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
 
 
 class ModalAnalysis(_Moored):
@@ -128,6 +145,7 @@ class ModalAnalysis(_Moored):
     """
 
     type: Literal["modal"] = "modal"
+    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
     n_modes: int = Field(10, ge=1, le=1000, description="Modes to report per plane.")
     n_elements: int = Field(100, ge=2, le=20_000, description="Elements of the linearised model.")
     free_end: bool = Field(False, description="End A (the lower end) free: the line hangs from the fairlead.")
@@ -161,6 +179,7 @@ class TowedSteadyAnalysis(Model):
     current's part along the tow is taken (the steady tow is 2-D)."""
 
     type: Literal["towed_steady"] = "towed_steady"
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current"})
     vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
     body: TowedBody | None = None
     tangential_drag: TangentialDragForm = Field(
@@ -271,6 +290,16 @@ class TowedDynamicAnalysis(Model):
     scheme with bending stiffness (one uniform cable, a body at its end, a moving vessel)."""
 
     type: Literal["towed_dynamic"] = "towed_dynamic"
+    USES: ClassVar[frozenset[str]] = frozenset(ENVIRONMENT_INPUTS)
+
+    def uses(self, env: Environment) -> frozenset[str]:
+        """The environment inputs of this analysis in ``env``: a seabed profile in the finite-element formulation
+        only; beside a profile (the seabed) the depth sets only the waves' dispersion."""
+        if self.formulation != "finite_element":
+            return self.USES - {"seabed.profile"}
+        if env.seabed.profile is not None and env.waves is None:
+            return self.USES - {"depth"}
+        return self.USES
     formulation: Literal["finite_element", "box"] = Field(
         "finite_element", description="finite_element (paper 004's model) or box (paper 000's scheme).")
     winch: Winch | None = Field(None, description="Pay-out or haul-in at the tow point (finite_element).")
@@ -323,6 +352,7 @@ class LayingTheoryAnalysis(Model):
     """Straight-line laying theory (paper 001 section 2) over a list of ship speeds."""
 
     type: Literal["laying_theory"] = "laying_theory"
+    USES: ClassVar[frozenset[str]] = frozenset({"depth"})
     ship_speeds: tuple[float, ...] = Field(min_length=1, description="Ship speeds. [m/s]")
     bottom_tension: quantity("N", ge=0) = Field(0.0, description="Tension at the touchdown. [N]")
     slack: quantity("-", ge=-0.5, le=10.0) = Field(
@@ -349,6 +379,7 @@ class LayingDynamicAnalysis(Model):
     """
 
     type: Literal["laying_dynamic"] = "laying_dynamic"
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current"}
     lay_table: LayTableFile | None = Field(
         None, description="Follow a lay plan: the ship and payout speeds by time of a lay_plan's table (CSV).")
     ship: ShipMotion = Field(description="Ship speed (constant or a schedule) and repeater slow-downs.")
@@ -440,6 +471,7 @@ class LayPlanAnalysis(Model):
     """
 
     type: Literal["lay_plan"] = "lay_plan"
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current"})
     route: Route = Field(description="Waypoints (alter-course positions) in x, y [m] or latitude, longitude.")
     ship: PlanShip = Field(description="Ship speed over ground (constant or by KP) and the repeater slow-down.")
     target: LayTarget = Field(description="Slack or bottom tension to hold on the seabed (constant or by KP).")
@@ -475,6 +507,7 @@ class VerticalModesAnalysis(Model):
     """
 
     type: Literal["vertical_modes"] = "vertical_modes"
+    USES: ClassVar[frozenset[str]] = frozenset()
     bottom_tension: quantity("N", ge=0) = Field(description="Tension at the lower end (0: a free end). [N]")
     n_modes: int = Field(5, ge=1, le=100)
     methods: tuple[VerticalModeMethod, ...] | None = Field(
@@ -516,12 +549,14 @@ class MooringStaticAnalysis(_Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current"}
 
 
 class MooringPushoverAnalysis(_Offsets, _Mooring):
     """Quasi-static force-excursion curve of the finite-element model: the fairlead moved along x."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current"}
 
 
 class MooringDynamicAnalysis(_Mooring):
@@ -536,6 +571,7 @@ class MooringDynamicAnalysis(_Mooring):
     """
 
     type: Literal["mooring_dynamic"] = "mooring_dynamic"
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves"}
     motion: Motion | None = Field(None, description="Fairlead motion: harmonic, time_series or platform.")
     end_b: Literal["fairlead", "free"] = Field("fairlead", description="End B moved by 'motion', or free.")
     release_from: _XZ | None = Field(None, description="Where a free end B is held before release (x, z). [m]")
@@ -580,6 +616,7 @@ class TowlineDynamicAnalysis(Model):
     """
 
     type: Literal["towline_dynamic"] = "towline_dynamic"
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "seabed.friction"})
     tug: VesselPath = Field(description="Tug tow-point track: straight, speed_schedule, turn, zigzag or table.")
     tug_tow_point_height: quantity("m") = Field(2.0, description="Tug tow point above the water. [m]")
     barge: Barge = Field(description="The towed barge.")
@@ -739,12 +776,7 @@ class Case(Model):
             if missing:
                 raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
                                  f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
-        profile = self.environment.seabed.profile
-        if profile is not None and not (isinstance(a, TowedDynamicAnalysis) and a.formulation == "finite_element"):
-            raise ValueError(f"environment.seabed.profile is taken by analysis 'towed_dynamic' (finite_element) only, "
-                             f"not by '{a.type}'. Suggested fix: give the seabed as environment.depth and "
-                             "seabed.slope" + (", or a laying_dynamic bathymetry table" if a.type == "laying_dynamic"
-                                               else "") + ".")
+        self._unused_inputs()
         if isinstance(a, TowlineDynamicAnalysis):
             if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
                 raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "
@@ -759,6 +791,33 @@ class Case(Model):
                                  "the line type, or its breaking_load (N) with the analysis's elongation_at_break "
                                  "(paper 003: 16 t = 156906 N and 0.15).")
         return self
+
+    def _unused_inputs(self) -> None:
+        """Refuse environment inputs the analysis does not use (its :meth:`uses` against
+        :func:`given_environment_inputs`): one check for every analysis and input, not one per key."""
+        a = self.analysis
+        uses = a.uses(self.environment) if hasattr(a, "uses") else a.USES
+        unused = [k for k in given_environment_inputs(self.environment) if k not in uses]
+        if not unused:
+            return
+        takers = sorted({cls.model_fields["type"].default for cls in ANALYSES
+                         if all(k in cls.USES for k in unused)})
+        where = f"analyses that use {'it' if len(unused) == 1 else 'them'}: {', '.join(takers)}" if takers else \
+            "no single analysis uses them all"
+        extra = ""
+        if "seabed.profile" in unused and a.type == "laying_dynamic":
+            extra = " (a laying_dynamic case takes its seabed as analysis.bathymetry)"
+        if "seabed.profile" in unused and a.type == "towed_dynamic":
+            extra = " (the profile is taken by towed_dynamic's finite_element formulation only)"
+        if "depth" in unused and self.environment.seabed.profile is not None:
+            extra = " (environment.seabed.profile gives the seabed; the depth would set only the waves' dispersion)"
+        keys = ", ".join(f"environment.{k}" for k in unused)
+        raise ValueError(f"{keys} {'is' if len(unused) == 1 else 'are'} given, but analysis '{a.type}' does not use "
+                         f"{'it' if len(unused) == 1 else 'them'}{extra}: the result would not hold "
+                         f"{'its' if len(unused) == 1 else 'their'} effect. It uses "
+                         f"{', '.join(f'environment.{k}' for k in sorted(uses)) or 'none of them'} ({where}). "
+                         f"Suggested fix: remove {keys}, or choose an analysis that models "
+                         f"{'it' if len(unused) == 1 else 'them'}.")
 
     def anchor_position(self) -> tuple[float, float]:
         """Anchor (x, z): the analysis's, or on the seabed under the origin. [m]"""

@@ -14,8 +14,9 @@ from typing import Literal
 import numpy as np
 from pydantic import Field, field_validator, model_validator
 
-from ._model import Model, quantity
+from ._model import Model, input_error, quantity
 from .errors import SeacableWarning
+from .waves import MIN_WAVELENGTH, STANDARD_GRAVITY, check_sea_state
 
 __all__ = ["Current", "Environment", "IrregularWaves", "Seabed", "SystemEnvironment", "Waves"]
 
@@ -170,6 +171,10 @@ class Waves(Model):
         return self
 
 
+#: Least share of a spectrum's energy a given frequency_range must hold (:meth:`IrregularWaves.energy_share`). [-]
+MIN_ENERGY_SHARE = 0.5
+
+
 class IrregularWaves(Model):
     """An irregular sea from a spectrum, by random-phase linear superposition (see :mod:`seacable.seastate`).
 
@@ -260,7 +265,41 @@ class IrregularWaves(Model):
             if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
                 raise ValueError(f"frequency_range must be [lowest, highest] with 0 < lowest < highest [rad/s], "
                                  f"got {list(self.frequency_range)}. Suggested fix: e.g. [0.3, 2.5] rad/s.")
+            shortest = 2.0 * math.pi * STANDARD_GRAVITY / hi ** 2  # deep water's, the longest at hi
+            if shortest < MIN_WAVELENGTH:
+                raise ValueError(f"frequency_range's highest frequency {hi:g} rad/s gives components {shortest:.3g} m "
+                                 f"long, under {MIN_WAVELENGTH:g} m: capillary ripples, not gravity waves (and a "
+                                 "kinematics grid a tenth of that apart). Suggested fix: a highest frequency of a few "
+                                 "rad/s (frequencies in rad/s = 2 pi Hz), or leave frequency_range out.")
+            share = self.energy_share(lo, hi)
+            if share < MIN_ENERGY_SHARE:
+                raise ValueError(f"frequency_range [{lo:g}, {hi:g}] rad/s holds {share:.3g} of the spectrum's energy "
+                                 f"(less than {MIN_ENERGY_SHARE:g}); the components are scaled to the sea's Hs, so the "
+                                 "sea would be made of these frequencies alone, not of the spectrum asked for. "
+                                 "Suggested fix: a band around the peak (2 pi / tp rad/s), or leave frequency_range "
+                                 "out (the band holding 99 % of the energy).")
         return self
+
+    def energy_share(self, lo: float, hi: float) -> float:
+        """The fraction of the spectrum's variance m0 between ``lo`` and ``hi`` [rad/s]. [-]"""
+        wp = self.peak_frequency()
+        if self.spectrum == "table":
+            w = np.union1d(np.asarray(self.frequencies, float), [lo, hi])
+        else:
+            w = np.union1d(np.linspace(0.05 * wp, 20.0 * wp, 40001), [lo, hi])
+        s = self.spectral_density(w)
+        inside = (w >= lo) & (w <= hi)
+        total = float(np.trapezoid(s, w))
+        return float(np.trapezoid(s[inside], w[inside])) / total if total > 0 else 0.0
+
+    def sea_state(self) -> tuple[float, float, str]:
+        """``(Hs [m], Tp [s], how)``: the given ones, or a table spectrum's ``Hs = 4 sqrt(m0)`` (``m0`` the
+        table's integral, linear between its points) and peak period, ``how`` saying so for messages."""
+        if self.spectrum != "table":
+            return float(self.hs), float(self.tp), ""
+        m0 = float(np.trapezoid(np.asarray(self.density, float), np.asarray(self.frequencies, float)))
+        tp = 2.0 * math.pi / self.peak_frequency()
+        return 4.0 * math.sqrt(m0), tp, f" (Hs = 4 sqrt(m0), m0 = {m0:.4g} m^2 the table's integral)"
 
     def spectral_density(self, omega):
         """The target one-sided spectrum S(omega) [m^2 s/rad] at angular frequencies ``omega`` [rad/s]."""
@@ -324,6 +363,27 @@ class Environment(Model):
         if isinstance(value, dict):
             return IrregularWaves(**value) if "spectrum" in value else Waves(**value)
         return value
+
+    @model_validator(mode="after")
+    def _sea_state(self) -> Environment:
+        """The one breaking and steepness check of the waves, regular or irregular
+        (:func:`seacable.waves.check_sea_state`): refuse the impossible, warn the suspicious."""
+        w = self.waves
+        if w is None or not self.gravity > 0:
+            return self
+        if isinstance(w, IrregularWaves):
+            hs, tp, how = w.sea_state()
+            keys = ("hs", "tp") if w.spectrum != "table" else ("density's Hs", "frequencies' peak period Tp")
+            found = check_sea_state(hs, tp, self.depth, self.gravity, irregular=True, how=how,
+                                    height_key=keys[0], period_key=keys[1])
+        else:
+            found = check_sea_state(w.height, w.period, self.depth, self.gravity, irregular=False,
+                                    height_key="height", period_key="period")
+        if found.refused:  # each message starts with its key: "environment.waves" + ".hs = ..."
+            raise input_error([(("waves",), "." + m) for m in found.refused])
+        for message in found.warned:
+            warnings.warn(f"environment.waves.{message}", SeacableWarning, stacklevel=3)
+        return self
 
     @model_validator(mode="after")
     def _check(self) -> Environment:

@@ -19,6 +19,7 @@ elevation at the origin, WAMIT User Manual v7, section 4.9) and from CSV tables 
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -154,17 +155,68 @@ def outside_table(table: RAOTable, sea):
 _CHUNK = 4096  # times per block of RAOResponse: 4096 x 2 x 200 components x 8 bytes = 13 MB
 
 
-def _table(dof_of: np.ndarray, source: str, omega_of, heading_of, value_of) -> RAOTable:
-    """An RAOTable from rows, each a DOF (1-6), a frequency, a heading and a complex value."""
+#: Largest plausible RAO amplitudes: translations [m/m] and rotations [rad/m]. A linear response of more than
+#: 100 m of motion, or half a turn, per metre of wave amplitude is no damped floating body's (moored platforms
+#: and ships peak at a few m/m and a few tenths of a rad/m at resonance): such a table holds a unit error
+#: (mm for m, degrees for radians) or an undamped resonance, and would drive the lines by kilometres.
+MAX_RAO = (100.0, math.pi)
+
+
+def _row_of(i: int, row_of) -> str:
+    """The data row (numbers, after the header) of the table's i-th entry, counted from 1."""
+    return f"row {row_of[i] if row_of is not None else i + 1}"
+
+
+def _table(dof_of: np.ndarray, source: str, omega_of, heading_of, value_of, line_of=None) -> RAOTable:
+    """An RAOTable from rows, each a DOF (1-6), a frequency [rad/s], a heading [rad] and a complex value; every
+    row checked here, whichever file it came from (``line_of``: each entry's data row in the file, for messages;
+    default the entries' order)."""
+    dof_f = np.asarray(dof_of, float)
+    omega_of, heading_of = np.asarray(omega_of, float), np.asarray(heading_of, float)
+    value_of = np.asarray(value_of, complex)
+    if dof_f.size == 0:
+        raise InputError(f"{source} holds no RAO rows. Suggested fix: one row per DOF, heading and frequency.")
+    frac = np.flatnonzero(dof_f != np.round(dof_f))
+    if frac.size:
+        i = int(frac[0])
+        raise InputError(f"{source} {_row_of(i, line_of)}: dof = {dof_f[i]:g} is not a whole number; degrees of "
+                         "freedom are 1 surge, 2 sway, 3 heave, 4 roll, 5 pitch, 6 yaw. Suggested fix: check the "
+                         "column order (frequency, heading, dof, amplitude, phase).")
+    far = np.flatnonzero(np.abs(heading_of) > 2.0 * math.pi)
+    if far.size:
+        i = int(far[0])
+        raise InputError(f"{source} {_row_of(i, line_of)}: heading = {heading_of[i]:g} rad is beyond 2 pi: it looks "
+                         f"like degrees ({math.radians(heading_of[i]):.4g} rad if it was meant as {heading_of[i]:g} "
+                         "deg). Suggested fix: give the headings in radians (WAMIT .4 files are read in degrees).")
     w = np.unique(omega_of)
     b = np.unique(heading_of)
     v = np.full((6, b.size, w.size), np.nan + 0j)
-    dof = np.asarray(dof_of).astype(int)
+    dof = np.round(dof_f).astype(int)
     if np.any((dof < 1) | (dof > 6)):
         wrong = sorted(set(dof.tolist()) - set(range(1, 7)))
         raise InputError(f"{source}: degrees of freedom must be 1-6 (surge to yaw), got {wrong}. Suggested fix: "
                          "number them 1 surge, 2 sway, 3 heave, 4 roll, 5 pitch, 6 yaw.")
-    v[dof - 1, np.searchsorted(b, heading_of), np.searchsorted(w, omega_of)] = value_of
+    amp = np.abs(value_of)
+    bound = np.where(dof <= 3, MAX_RAO[0], MAX_RAO[1])
+    big = np.flatnonzero(amp > bound)
+    if big.size:
+        i = int(big[0])
+        unit = "m/m" if dof[i] <= 3 else "rad/m"
+        raise InputError(f"{source} {_row_of(i, line_of)}: the {DOFS[dof[i] - 1]} RAO amplitude is {amp[i]:.6g} {unit} "
+                         f"at {omega_of[i]:.4g} rad/s, above the plausible {bound[i]:.3g} {unit} (100 m of motion or "
+                         "half a turn per metre of wave amplitude: no damped floating body responds so). Suggested "
+                         "fix: check the units (m and rad per m of wave amplitude, not mm or deg) or the resonance's "
+                         "damping.")
+    hi, fi = np.searchsorted(b, heading_of), np.searchsorted(w, omega_of)
+    key = (dof - 1) * (b.size * w.size) + hi * w.size + fi
+    _, first, counts = np.unique(key, return_index=True, return_counts=True)
+    if np.any(counts > 1):
+        twice = np.flatnonzero(key == key[first[np.argmax(counts > 1)]])
+        i, j = int(twice[0]), int(twice[1])
+        raise InputError(f"{source} {_row_of(i, line_of)} and {_row_of(j, line_of)} both give the {DOFS[dof[i] - 1]} RAO "
+                         f"at heading {heading_of[i]:g} rad and {omega_of[i]:.4g} rad/s (the last would be kept "
+                         "silently). Suggested fix: give each DOF, heading and frequency once.")
+    v[dof - 1, hi, fi] = value_of
     hole = np.argwhere(np.isnan(v.real))
     if hole.size:
         j, h, f = hole[0]
@@ -190,11 +242,17 @@ def read_wamit4(path, ulen: float = 1.0) -> RAOTable:
                          "option-4 output (PER BETA I MOD PHS RE IM on each line).") from None
     if data.shape[1] < 5:
         raise InputError(f"RAO file '{path}' has {data.shape[1]} columns, expected 7 (PER BETA I MOD PHS RE IM).")
-    data = data[data[:, 0] > 0]
+    if not np.all(np.isfinite(data)):
+        i = int(np.argwhere(~np.isfinite(data))[0, 0])
+        raise InputError(f"RAO file '{path}' row {i + 1} holds a NaN or an infinity: {data[i].tolist()}. Suggested "
+                         "fix: one finite number per column.")
+    rows = np.flatnonzero(data[:, 0] > 0)
+    data = data[rows]
     dof = data[:, 2]
     scale = np.where(dof >= 4, 1.0 / ulen, 1.0)
     value = data[:, 3] * scale * np.exp(-1j * np.radians(data[:, 4]))
-    return _table(dof, f"RAO file '{path.name}'", 2 * math.pi / data[:, 0], np.radians(data[:, 1]), value)
+    return _table(dof, f"RAO file '{path.name}'", 2 * math.pi / data[:, 0], np.radians(data[:, 1]), value,
+                  line_of=rows + 1)
 
 
 def read_rao_csv(path) -> RAOTable:
@@ -206,14 +264,34 @@ def read_rao_csv(path) -> RAOTable:
         raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
     names = ("frequency", "heading", "dof", "amplitude", "phase")
     try:
-        table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
-    except ValueError as err:
-        raise InputError(f"RAO file '{path}' is not a CSV table: {err}.") from None
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as err:
+        raise InputError(f"RAO file '{path}' cannot be read as UTF-8 text: {err}. Suggested fix: a CSV text file "
+                         f"with the header '{','.join(names)}'.") from None
+    if not text.strip():
+        raise InputError(f"RAO file '{path}' is empty. Suggested fix: a header row '{','.join(names)}' and one row "
+                         "per DOF, heading and frequency (SI units: rad/s, rad, m/m or rad/m, rad).")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # numpy's own warnings on odd rows: the checks below say what is wrong
+            table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
+    except (ValueError, IndexError) as err:
+        raise InputError(f"RAO file '{path}' is not a CSV table: {err}. Suggested fix: a header row "
+                         f"'{','.join(names)}' and rows of numbers.") from None
     if table.dtype.names is None or any(n not in table.dtype.names for n in names):
         raise InputError(f"RAO file '{path}' needs the columns {', '.join(names)}, got "
                          f"{', '.join(table.dtype.names or ())}. Suggested fix: a header row '{','.join(names)}'.")
     table = np.atleast_1d(table)
-    if not all(np.all(np.isfinite(table[n])) for n in names):
-        raise InputError(f"RAO file '{path}' has empty or non-numeric values. Suggested fix: one number per cell.")
+    for n in names:
+        bad = np.flatnonzero(~np.isfinite(table[n]))
+        if bad.size:
+            raise InputError(f"RAO file '{path}' row {int(bad[0]) + 1}: column {n} is empty or not a number. Suggested "
+                             "fix: one number per cell.")
+    neg = np.flatnonzero(table["amplitude"] < 0)
+    if neg.size:
+        i = int(neg[0])
+        raise InputError(f"RAO file '{path}' row {i + 1}: amplitude = {table['amplitude'][i]:g} is negative; an "
+                         "amplitude is >= 0 (its sign belongs to the phase). Suggested fix: give |amplitude| and add "
+                         "pi rad to the phase.")
     value = table["amplitude"] * np.exp(-1j * table["phase"])
     return _table(table["dof"], f"RAO file '{path.name}'", table["frequency"], table["heading"], value)

@@ -17,9 +17,9 @@ import numpy as np
 import xarray as xr
 
 from ._version import __version__
-from .errors import InputError
+from .errors import ConvergenceError, InputError
 
-__all__ = ["ANALYSIS_VARIABLES", "check_output_file", "check_output_folder", "check_result", "check_schema",
+__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result", "check_schema",
            "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
@@ -79,6 +79,68 @@ def _attr_value(value: Any):
     return json.dumps(value, default=str)
 
 
+#: The state variables of a time-domain result: never NaN at every node of an output (padding, as nodes not yet
+#: paid out or lines of fewer nodes, leaves some of them finite).
+STATE_VARIABLES = ("x", "y", "z")
+
+
+class FiniteGuard:
+    """The check, before a time-domain result is written, that no result variable holds a non-finite number
+    silently: every result passes it (:func:`make_dataset`, and each block of a streamed run,
+    :mod:`seacable.sink`).
+
+    A float variable along ``time`` is refused (:class:`~seacable.errors.ConvergenceError`, naming the variable
+    and the time) when it holds an infinity; when it is NaN throughout an output after an output at which it had
+    finite values (the solution diverged); or, for the state (:data:`STATE_VARIABLES`), when it is NaN throughout
+    any output. NaN in part of an output is the results' own padding (nodes not yet paid out, lines of fewer
+    nodes, a slack not yet measured) and passes. The time coordinate must be finite."""
+
+    def __init__(self):
+        self.seen: set[str] = set()  # variables finite somewhere in an earlier output
+
+    def check(self, data_vars: dict, coords: dict) -> None:
+        """Check one block of outputs (or a whole result); raise on the first non-finite value found."""
+        time = coords.get("time")
+        if time is None:
+            return
+        t = np.asarray(getattr(time, "values", time), float).ravel()
+        if t.size and not np.all(np.isfinite(t)):
+            k = int(np.flatnonzero(~np.isfinite(t))[0])
+            raise ConvergenceError(f"the result's time {k} is {t[k]}: the time loop produced a non-finite time. "
+                                   "Suggested fix: check analysis.time_step and duration.")
+        for name, v in data_vars.items():
+            dims = tuple(getattr(v, "dims", ()))
+            if "time" not in dims or np.asarray(v.values).dtype.kind != "f":
+                continue
+            a = np.moveaxis(np.asarray(v.values), dims.index("time"), 0).reshape(len(t), -1)
+            if a.shape[1] == 0:
+                continue
+            unit = v.attrs.get("units", "")
+            inf = np.isinf(a)
+            if inf.any():
+                k, j = (int(x) for x in np.argwhere(inf)[0])
+                self._fail(name, t[k], f"is {a[k, j]} {unit} at entry {j}".rstrip())
+            finite = np.isfinite(a).any(axis=1)
+            lost = ~finite
+            if name in STATE_VARIABLES and lost.any():
+                self._fail(name, t[int(np.flatnonzero(lost)[0])], "is NaN at every node")
+            before = np.cumsum(finite) > 0
+            if name in self.seen:
+                before[:] = True
+            late = lost & np.concatenate(([name in self.seen], before[:-1]))
+            if late.any():
+                self._fail(name, t[int(np.flatnonzero(late)[0])], "is NaN throughout, after finite values before")
+            if finite.any():
+                self.seen.add(name)
+
+    @staticmethod
+    def _fail(name: str, time: float, what: str):
+        raise ConvergenceError(f"the result variable '{name}' {what} at t = {time:.6g} s: the solution is not a "
+                               "number there (diverged or undefined), and is not written. Suggested fix: a smaller "
+                               "time step, or check the inputs for values far outside their physical range (a line's "
+                               "stiffness, its segments, the waves).", time=float(time))
+
+
 def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], *,
                  analysis: str, case=None, settings: dict | None = None,
                  references: Iterable[str] = (), title: str | None = None) -> xr.Dataset:
@@ -99,7 +161,13 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         Citations of the methods used.
     title
         A title for plots; the case name by default.
+
+    Raises
+    ------
+    ConvergenceError
+        A time-domain variable holding a non-finite value that is not padding (:class:`FiniteGuard`).
     """
+    FiniteGuard().check(data_vars, coords)  # no non-finite result written silently
     ds = xr.Dataset(data_vars=data_vars, coords=coords)
     attrs = {
         "title": title or (case.name if case is not None else analysis),

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .results import check_schema, compression, make_dataset, result_file, write_error
+from .results import FiniteGuard, check_schema, compression, make_dataset, result_file, write_error
 
 __all__ = ["MemorySink", "NetcdfSink", "open_sink"]
 
@@ -58,6 +58,7 @@ class MemorySink:
         self.filled = 0
         self._vars: dict[str, xr.Variable] = {}
         self._coords: dict[str, xr.Variable] = {}
+        self._guard = FiniteGuard()  # each block checked before it is stored or written
 
     def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
         """Store one block: ``data`` and ``coords`` with their ``time`` dimension the block's outputs (the
@@ -65,6 +66,7 @@ class MemorySink:
         n = coords["time"].size
         if self.filled + n > self.n_time:
             raise AssertionError(f"{self.filled + n} outputs given to a sink of {self.n_time}")
+        self._guard.check(data, coords)
         for store, given in ((self._vars, data), (self._coords, coords)):
             for name, v in given.items():
                 axis = _time_axis(v)
@@ -138,6 +140,7 @@ class NetcdfSink(MemorySink):
 
     def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
         n = coords["time"].size
+        self._guard.check(data, coords)
         try:
             if self._nc is None:
                 self._create(data, coords)

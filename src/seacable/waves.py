@@ -41,6 +41,10 @@ References
    Annales des Ponts et Chaussées 114.
 .. [5] Hedges, T. S., 1995. Regions of validity of analytical wave theories. Proc. ICE Water,
    Maritime and Energy 112, 111-114.
+.. [6] McCowan, J., 1894. On the highest wave of permanent type. Philosophical Magazine 38, 351-358
+   (the depth-limited breaking height H_b = 0.78 d).
+.. [7] Lighthill, J., 1978. Waves in Fluids. Cambridge University Press, section 3.2 (capillary-gravity
+   waves: omega^2 = g k (1 + sigma k^2 / (rho g))).
 """
 
 from __future__ import annotations
@@ -55,7 +59,8 @@ from numba import njit
 from . import _validate as v
 from .errors import ConvergenceError, InputError, SeacableWarning
 
-__all__ = ["WaveKinematics", "airy_kinematics", "airy_kinematics_array", "airy_linear", "wave_number"]
+__all__ = ["SeaStateCheck", "WaveKinematics", "airy_kinematics", "airy_kinematics_array", "airy_linear",
+           "check_sea_state", "wave_number"]
 
 STANDARD_GRAVITY = 9.80665
 #: Above this k d the hyperbolic ratios are taken in exponential form (cosh would overflow at ~710).
@@ -64,6 +69,15 @@ _DEEP_KD = 20.0
 URSELL_LIMIT = 26.0
 #: Limiting steepness H/L of a deep-water wave (Miche: 1/7 tanh(k d) in finite depth) [4]_.
 BREAKING_STEEPNESS = 1.0 / 7.0
+#: Depth-limited breaking: no wave higher than this fraction of the water depth (McCowan [6]_). [-]
+BREAKING_DEPTH_RATIO = 0.78
+#: Shortest wavelength of gravity-wave theory: below it surface tension changes omega^2 by more than 3 %
+#: (sigma k^2 / (rho g) = 0.029 at 0.1 m for sea water, Lighthill [7]_), and the kinematics grid of an
+#: irregular sea (a tenth of a wavelength apart) explodes. [m]
+MIN_WAVELENGTH = 0.1
+#: DNV-RP-C205 section 3.5.5's limits of the average steepness Sp = 2 pi Hs / (g Tp^2) of a sea state
+#: "in the absence of other information": 1/15 for Tp <= 8 s, 1/25 for Tp >= 15 s, linear in between.
+DNV_STEEPNESS = ((8.0, 1.0 / 15.0), (15.0, 1.0 / 25.0))
 
 _MAX_NEWTON = 50
 _NEWTON_RTOL = 1e-14
@@ -387,3 +401,84 @@ def _check_wave_validity(height, k, depth):
                           "where linear (Airy) theory is poor. Suggested fix: use a cnoidal or "
                           "stream-function wave theory for these kinematics.",
                           SeacableWarning, stacklevel=3)
+
+
+@dataclass(frozen=True)
+class SeaStateCheck:
+    """What :func:`check_sea_state` found: ``refused`` (physically impossible) and ``warned`` (suspicious)
+    messages, each naming the keys."""
+
+    refused: tuple[str, ...]
+    warned: tuple[str, ...]
+
+
+def check_sea_state(height, period, depth=None, gravity=STANDARD_GRAVITY, *, irregular=False,
+                    height_key="waves.height", period_key="waves.period", how="") -> SeaStateCheck:
+    """The one breaking and steepness check of a sea state, regular or irregular.
+
+    A regular wave of height H and period T (an irregular sea: its significant height Hs and peak period Tp,
+    whose wave stands for its largest waves) with the linear wavelength L (:func:`wave_number`) is
+
+    - refused (physically impossible, no wave of permanent form exists): when ``L < MIN_WAVELENGTH`` (0.1 m:
+      a capillary ripple, not a gravity wave, Lighthill [7]_), ``H > 0.78 d`` (depth-limited breaking,
+      McCowan [6]_; DNV-RP-C205 3.2), or ``H / L > tanh(k d) / 7`` (Miche's limit of steepness [4]_; in deep
+      water 1/7);
+    - warned (suspicious) for an irregular sea whose average steepness ``Sp = 2 pi Hs / (g Tp^2)`` exceeds
+      DNV-RP-C205 3.5.5's limits (1/15 for Tp <= 8 s to 1/25 for Tp >= 15 s, :data:`DNV_STEEPNESS`).
+
+    Parameters
+    ----------
+    height, period : float
+        H or Hs [m] and T or Tp [s].
+    depth : float or None
+        Water depth; None for deep water. [m]
+    gravity : float
+        [m/s^2]
+    irregular : bool
+        An irregular sea (Hs, Tp): the DNV steepness warning applies.
+    height_key, period_key : str
+        The keys (or a description of where the values come from) the messages name.
+    how : str
+        How the values were obtained (e.g. a table spectrum's Hs from its m0), added to each message.
+
+    Returns
+    -------
+    SeaStateCheck
+    """
+    H, T, g = float(height), float(period), float(gravity)
+    d = math.inf if depth is None else float(depth)
+    refused, warned = [], []
+    if not (T > 0 and g > 0 and math.isfinite(T)):
+        return SeaStateCheck((), ())
+    k = float(wave_number(T, d, g))
+    L = 2.0 * math.pi / k
+    h_sym, t_sym = ("Hs", "Tp") if irregular else ("H", "T")
+    if L < MIN_WAVELENGTH:
+        refused.append(f"{period_key} = {T:.6g} s gives a wavelength of {L:.3g} m, under {MIN_WAVELENGTH:g} m: "
+                       "a capillary ripple whose dispersion surface tension governs, not a gravity wave (and "
+                       "whose kinematics grid would explode). Suggested fix: give the "
+                       f"{'peak ' if irregular else ''}period in seconds (ocean waves: 3-25 s).")
+        return SeaStateCheck(tuple(refused), ())
+    if H <= 0.0:
+        return SeaStateCheck((), ())
+    if math.isfinite(d) and H > BREAKING_DEPTH_RATIO * d:
+        refused.append(f"{height_key} = {H:.6g} m{how} exceeds {BREAKING_DEPTH_RATIO:g} times the water depth "
+                       f"{d:g} m ({BREAKING_DEPTH_RATIO * d:.4g} m): no wave that high exists in that depth "
+                       "(depth-limited breaking, McCowan 1894; DNV-RP-C205 3.2). Suggested fix: check the "
+                       f"{'significant ' if irregular else ''}wave height (m) and environment.depth (m).")
+    limit = BREAKING_STEEPNESS * (1.0 if math.isinf(d) else math.tanh(k * d))
+    if H / L > limit:
+        refused.append(f"{height_key} = {H:.6g} m{how} with {period_key} = {T:.6g} s: steepness {h_sym}/L = "
+                       f"{H / L:.4g} (L = {L:.4g} m, the linear wavelength at {t_sym}) exceeds the breaking limit "
+                       f"{limit:.4g} (Miche: tanh(k d)/7; DNV-RP-C205 3.2): such a wave breaks. Suggested fix: "
+                       f"lower {h_sym} or lengthen {t_sym} (a storm sea: Hs 10 m, Tp 14 s).")
+    if irregular and not refused:
+        (t1, s1), (t2, s2) = DNV_STEEPNESS
+        s_lim = float(np.interp(T, (t1, t2), (s1, s2)))
+        sp = 2.0 * math.pi * H / (g * T * T)
+        if sp > s_lim:
+            warned.append(f"{height_key} = {H:.6g} m{how} with {period_key} = {T:.6g} s: average steepness Sp = "
+                          f"2 pi Hs/(g Tp^2) = {sp:.4g} exceeds DNV-RP-C205 3.5.5's limit 1/{1 / s_lim:.3g} at this "
+                          "Tp (1/15 for Tp <= 8 s to 1/25 for Tp >= 15 s): a sea this steep is not observed. "
+                          "Suggested fix: check Hs and Tp.")
+    return SeaStateCheck(tuple(refused), tuple(warned))

@@ -112,3 +112,57 @@ def test_tables_that_do_not_cover_the_sea_are_refused(tmp_path):
     bad.write_text("frequency,heading,amplitude\n1,0,1\n")
     with pytest.raises(InputError, match="needs the columns frequency, heading, dof, amplitude, phase"):
         read_rao_csv(bad)
+
+
+_HEADER = "frequency,heading,dof,amplitude,phase\n"
+_GOOD = [(w, 0.0, d, 1.0 if d == 3 else 0.1, 0.2) for w in (0.2, 0.5, 1.0) for d in range(1, 7)]
+
+
+def _csv(tmp_path, rows, name="r.csv"):
+    path = tmp_path / name
+    path.write_text(_HEADER + "".join(",".join(str(x) for x in r) + "\n" for r in rows))
+    return path
+
+
+def test_a_good_csv_table_reads_its_numbers(tmp_path):
+    # the reference for the refusals below: the same rows, each read back as amplitude e^(-i phase)
+    t = read_rao_csv(_csv(tmp_path, _GOOD))
+    assert t.values[2, 0, 1] == pytest.approx(1.0 * np.exp(-0.2j), rel=1e-15)
+    assert t.values[0, 0, 2] == pytest.approx(0.1 * np.exp(-0.2j), rel=1e-15)
+
+
+@pytest.mark.parametrize("rows, text, match", [
+    (None, "", r"is empty"),                                                          # before: IndexError (exit 3)
+    (None, _HEADER, r"holds no RAO rows"),
+    ([(w, 90.0, d, a, p) for (w, _, d, a, p) in _GOOD], None, r"row 1: heading = 90 rad is beyond 2 pi: it looks "
+                                                                r"like degrees \(1.571 rad"),  # before: read as rad
+    ([(w, b, d, 1e9 if d == 1 else a, p) for (w, b, d, a, p) in _GOOD], None,
+     r"row 1: the surge RAO amplitude is 1e\+09 m/m at 0.2 rad/s, above the plausible 100 m/m"),
+    ([(w, b, d, 20.0 if d == 4 else a, p) for (w, b, d, a, p) in _GOOD], None,
+     r"row 4: the roll RAO amplitude is 20 rad/m .* above the plausible 3.14 rad/m"),
+    ([(w, b, 2.5 if d == 2 else d, a, p) for (w, b, d, a, p) in _GOOD], None,
+     r"row 2: dof = 2.5 is not a whole number"),                                       # before: truncated to sway
+    ([(w, b, d, -a, p) for (w, b, d, a, p) in _GOOD], None, r"row 1: amplitude = -0.1 is negative"),
+    (_GOOD + [_GOOD[4]], None, r"row 5 and row 19 both give the pitch RAO"),            # before: last kept silently
+])
+def test_a_bad_csv_table_is_refused_naming_its_row(tmp_path, rows, text, match):
+    path = tmp_path / "bad.csv"
+    if rows is not None:
+        path = _csv(tmp_path, rows, "bad.csv")
+    else:
+        path.write_text(text)
+    with pytest.raises(InputError, match=match):
+        read_rao_csv(path)
+
+
+def test_a_bad_wamit_table_is_refused(tmp_path):
+    rows = [(2 * math.pi / w, 0.0, d, a, 0.0, a, 0.0) for (w, _, d, a, _) in _GOOD]
+    path = tmp_path / "bad.4"
+    path.write_text("".join(" ".join(f"{x:g}" for x in (T, b, 3.5 if d == 3 else d, *r)) + "\n"
+                            for (T, b, d, *r) in rows))
+    with pytest.raises(InputError, match=r"dof = 3.5 is not a whole number"):
+        read_wamit4(path)
+    path.write_text("".join(" ".join(f"{x:g}" for x in (T, b, d, 5e3 if d == 3 else a, *r)) + "\n"
+                            for (T, b, d, a, *r) in rows))
+    with pytest.raises(InputError, match=r"the heave RAO amplitude is 5000 m/m"):
+        read_wamit4(path)

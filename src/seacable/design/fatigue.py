@@ -125,6 +125,27 @@ def narrow_band_damage(m0: float, zero_upcrossing_rate: float, duration: float, 
     return nu0 * duration / c.a_d * (2.0 * math.sqrt(2.0) * sigma) ** c.m * math.gamma(1.0 + c.m / 2.0)
 
 
+#: How far the probabilities of a scatter diagram may sum from 1 (rounding of the values written). [-]
+PROBABILITY_TOLERANCE = 1e-6
+
+
+def check_probabilities(probability, where: str = "the scatter diagram") -> None:
+    """Refuse probabilities of occurrence that are not finite numbers >= 0 summing to 1 (to
+    :data:`PROBABILITY_TOLERANCE`), naming the first bad one (``where``: the diagram, for messages)."""
+    p = np.atleast_1d(np.asarray(probability, float))
+    bad = np.flatnonzero(~np.isfinite(p) | (p < 0))
+    if bad.size:
+        i = int(bad[0])
+        raise InputError(f"{where}: the probability of sea state {i + 1} is {p[i]:g}; a probability of occurrence "
+                         "must be a finite number >= 0. Suggested fix: give every sea state's probability (0 for "
+                         "one that never occurs).")
+    total = float(np.sum(p))
+    if abs(total - 1.0) > PROBABILITY_TOLERANCE:
+        raise InputError(f"{where}: the probabilities must sum to 1, got a sum of {total:.6g} ({p.size} sea states). "
+                         "Suggested fix: normalise them (divide by their sum), write them as fractions not per cent, "
+                         "or add the missing sea states.")
+
+
 def fatigue_life(damage, duration, probability, *, design_fatigue_factor: float = 1.0) -> float:
     """Fatigue life [years] over a scatter diagram: each sea state's ``damage`` [1] over its simulated
     ``duration`` [s], weighted by its ``probability`` of occurrence (they sum to 1), gives the damage per
@@ -139,10 +160,7 @@ def fatigue_life(damage, duration, probability, *, design_fatigue_factor: float 
     if not np.all(t > 0):
         raise InputError(f"each sea state's duration must be > 0 s, got {t.tolist()}. Suggested fix: give the "
                          "simulated time of each record in s.")
-    if not (np.all(p >= 0) and abs(float(np.sum(p)) - 1.0) <= 1e-6):
-        raise InputError(f"the scatter diagram's probabilities must be >= 0 and sum to 1, got a sum of "
-                         f"{float(np.sum(p)):.6g} ({p.size} sea states). Suggested fix: normalise them (divide by "
-                         "their sum) or add the missing sea states.")
+    check_probabilities(p)
     dff = float(v.at_least("design_fatigue_factor", design_fatigue_factor, 1.0, "", "give 1 or more (DNV: 3 to 10)"))
     per_year = float(np.sum(p * d / t)) * SECONDS_PER_YEAR
     return math.inf if per_year == 0.0 else 1.0 / (per_year * dff)

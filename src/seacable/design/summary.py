@@ -818,8 +818,9 @@ def fatigue_life_table(fatigue_rows: pd.DataFrame, *, design_fatigue_factor: flo
 
 def read_scatter(path: str | Path) -> pd.DataFrame:
     """A scatter diagram: a CSV with columns ``hs`` [m], ``tp`` [s] and ``probability`` [-] (and optionally
-    ``heading`` [rad]), one sea state a row. The probabilities are checked (they sum to 1) where the life is
-    computed (:func:`~seacable.design.fatigue.fatigue_life`)."""
+    ``heading`` [rad]), one sea state a row, checked as it is read: hs and tp finite and > 0, headings finite,
+    the probabilities finite, >= 0 and summing to 1 (:func:`~seacable.design.fatigue.check_probabilities`, as
+    :func:`~seacable.design.fatigue.fatigue_life` checks them again)."""
     path = Path(path)
     try:
         with path.open(newline="", encoding="utf-8") as f:
@@ -842,7 +843,20 @@ def read_scatter(path: str | Path) -> pd.DataFrame:
         except (ValueError, IndexError):
             raise InputError(f"scatter diagram '{path}' line {k}: expected numbers in columns {', '.join(cols)}, got "
                              f"{row}. Suggested fix: one sea state a row, SI units (m, s, rad).") from None
-    return pd.DataFrame(out, columns=cols)
+    table = pd.DataFrame(out, columns=cols)
+    for col, unit in (("hs", "m"), ("tp", "s")):
+        bad = np.flatnonzero(~(np.isfinite(table[col].to_numpy()) & (table[col].to_numpy() > 0)))
+        if bad.size:
+            raise InputError(f"scatter diagram '{path}' line {int(bad[0]) + 2}: {col} = {table[col].iloc[bad[0]]:g} "
+                             f"{unit}; it must be a finite number > 0 {unit}. Suggested fix: one sea state a row, SI "
+                             "units (m, s, rad).")
+    if "heading" in table:
+        bad = np.flatnonzero(~np.isfinite(table["heading"].to_numpy()))
+        if bad.size:
+            raise InputError(f"scatter diagram '{path}' line {int(bad[0]) + 2}: heading is not a finite number (rad). "
+                             "Suggested fix: give the heading in radians.")
+    fatigue.check_probabilities(table["probability"].to_numpy(), f"scatter diagram '{path}'")
+    return table
 
 
 def _scatter_probabilities(runs: Sequence[Run], scatter) -> dict[str, float]:

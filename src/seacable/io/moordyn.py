@@ -743,7 +743,20 @@ def _tension_strain_table(rd, lineno, type_name, token):
     if rows[0][1] < 0 or rows[0][2] < 0:
         raise InputError(f"{path}:{rows[0][0]}: the strain-tension table must start at strain >= 0 and tension "
                          f">= 0, got ({rows[0][1]:g}, {rows[0][2]:g} N). Suggested fix: start the table at (0, 0).")
+    for k, strain, _ in rows:
+        if strain > MAX_TABLE_STRAIN:
+            raise InputError(f"{path}:{k}: strain {strain:g} ({100 * strain:g} %) in a strain-tension table: no mooring "
+                             f"line stretches beyond {MAX_TABLE_STRAIN:g} (nylon breaks near 0.3-0.4, steel near "
+                             "0.05). Suggested fix: give strain as a fraction (0.02 for 2 %), not in per cent.")
+    if rows[-1][2] <= 0:
+        raise InputError(f"{path}:{rows[-1][0]}: the strain-tension table's tension stays 0 N up to strain "
+                         f"{rows[-1][1]:g}: the line has no axial stiffness. Suggested fix: give the tension (N) at "
+                         "each strain.")
     return tuple((e, t) for _, e, t in rows)
+
+
+#: Largest strain of a strain-tension table: a line stretched to twice its length. [-]
+MAX_TABLE_STRAIN = 1.0
 
 
 def _empty(rd, section, header, row):
@@ -1127,6 +1140,10 @@ def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[i
         if rod.length == 0 and nseg > 0:
             raise rd.error(lineno, f"rod {rid} has its two ends at the same place {tuple(ends[:3])} m but {nseg} "
                                    "segment(s). Suggested fix: give the rod a length, or NumSegs 0.")
+        if rod.length > 0 and nseg == 0:  # MoorDyn takes a rod of no segments as point-like, of zero length
+            raise rd.error(lineno, f"rod {rid} NumSegs = 0 but its ends are {rod.length:.6g} m apart: a rod of 0 "
+                                   "segments is point-like (no length, no nodes along it), so its length would be "
+                                   "lost. Suggested fix: give NumSegs >= 1, or put both ends at the same place.")
         rods.append(rod)
         where[rid] = lineno
     return rods, where

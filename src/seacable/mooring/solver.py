@@ -249,17 +249,21 @@ class MooringModel:
         # the levels above the highest point (plus the pad) are left out: a deep line needs no surface layer
         zmax = min(float(P[:, 2].max()) + pad, 0.0)
         (nt, nx, ny, nz), (dt, gdx, zc, zh), i0 = grid_size(sea, duration, box, zmin, z_max=zmax)
+        nq = 4 if bool(np.all(sea.heading == sea.mean_heading)) else 6
+        fix = (f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid of {nx} x {ny} "
+               f"horizontal x {nz} depth points at each of {nt} times)")
+        # first a bound from below, before the columns' own tables (nx ny each) are made: a column holds at least
+        # one level, and a window at least 8 times; its times count as steps (each one a product over components)
+        check_run_size("the irregular sea's kinematics grid", steps=nt,
+                       stored_values=min(nt, 10) * (nq + 1) * float(nx) * ny + 8.0 * nx * ny, fix=fix)
         # in each column, only the levels that the points near it (within the pad) can reach
         columns = _sea_columns(xi, ze, P[:, 2], box, gdx, (nx, ny, nz), (zc, zh, i0), pad)
         per_column = np.clip(columns[..., 1], 0, nz - 1) - np.clip(columns[..., 0], 0, nz - 1) + 1
-        nq = 4 if bool(np.all(sea.heading == sea.mean_heading)) else 6
         per_time = float(nq * np.sum(np.maximum(per_column, 1)) + nx * ny)
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
         window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
         nw = min(nt, math.ceil(window / dt) + 2)
-        check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time,
-                       fix=f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid "
-                           f"of {nx} x {ny} horizontal x {nz} depth points at each of {nw} times)")
+        check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time, fix=fix)
         return box, (zmin, zmax, columns), sea, window
 
     def check_sea(self, duration: float, positions) -> None:

@@ -102,3 +102,25 @@ def test_fatigue_life_over_a_scatter_diagram():
 def test_bad_fatigue_input_is_refused_clearly(call, match):
     with pytest.raises(InputError, match=match):
         call()
+
+
+@pytest.mark.parametrize("probabilities, match", [
+    ("0.5\n4.0,9.0,0.4", r"sum to 1, got a sum of 0.9 \(2 sea states\)"),
+    ("50\n4.0,9.0,50", r"sum to 1, got a sum of 100 .*not per cent"),
+    ("nan\n4.0,9.0,1.0", r"probability of sea state 1 is nan"),
+    ("-0.2\n4.0,9.0,1.2", r"probability of sea state 1 is -0.2"),
+])
+def test_a_scatter_diagram_is_checked_when_read(tmp_path, probabilities, match):
+    """Issue 37: a scatter diagram's probabilities (finite, >= 0, summing to 1 to 1e-6) are checked as it is read,
+    not only when a fatigue life is computed (a report whose lines had no T-N curve exited 0 on a bad diagram)."""
+    from seacable.design.summary import read_scatter
+
+    path = tmp_path / "scatter.csv"
+    path.write_text("hs,tp,probability\n2.0,8.0," + probabilities + "\n")
+    with pytest.raises(InputError, match=match):
+        read_scatter(path)
+    path.write_text("hs,tp,probability\n2.0,8.0,0.6\n4.0,9.0,0.4\n")
+    assert list(read_scatter(path)["probability"]) == [0.6, 0.4]
+    path.write_text("hs,tp,probability\n2.0,0.0,0.6\n4.0,9.0,0.4\n")
+    with pytest.raises(InputError, match=r"line 2: tp = 0 s; it must be a finite number > 0 s"):
+        read_scatter(path)

@@ -146,8 +146,9 @@ def test_a_seabed_profile_is_for_the_finite_element_tow_only():
     assert ds.seabed_clearance.values.min() > 0.0
     box = _spec(formulation="box")
     box["environment"]["seabed"] = spec["environment"]["seabed"]
-    with pytest.raises(InputError, match=r"environment.seabed.profile is taken by analysis 'towed_dynamic' "
-                                         r"\(finite_element\) only, not by 'towed_dynamic'"):
+    with pytest.raises(InputError, match=r"environment.seabed.profile is given, but analysis 'towed_dynamic' does "
+                                         r"not use it \(the profile is taken by towed_dynamic's finite_element "
+                                         r"formulation only\)"):
         sc.Case.parse(box)
     both = _spec()
     both["environment"]["seabed"] = {"slope": 0.05, "profile": spec["environment"]["seabed"]["profile"]}
