@@ -207,7 +207,8 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | s
     the model MoorPy solves, agreeing with it to 1e-4 on the vendored decks) and each line end's tension compared.
     Lines the catenary does not model as the network does are left out: a Syrope rope (the network follows its
     working curve from SYROPE IC's Tmax), and a line whose bending stiffness matters (bending length
-    ``sqrt(EI / T)`` over 1 % of a segment).
+    ``sqrt(EI / T)`` over 5 % of the line: MoorDyn's BeamSimplySupported, 74 %; its VIV decks, 1.7 %, and the
+    Lowe and Langley jumper, 0.9 %, agree with the catenary to 0.4 %).
 
     Parameters
     ----------
@@ -249,7 +250,7 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | s
         cat = (float(eq.end_a_tension[k]), float(eq.end_b_tension[k]))
         seg = float(np.sum(net.length[net.element_line == k])) / line.n_segments
         bending = math.sqrt(lt.bending_stiffness / max(max(cat), 1e-300))
-        if getattr(lt, "syrope", None) is not None or bending > 0.01 * seg:
+        if getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg:
             skipped.append(line.id)
             continue
         ends = line_end_forces(_line_view(model, k), X[net.line_nodes[k]])
