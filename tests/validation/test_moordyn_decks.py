@@ -68,6 +68,22 @@ MAX_STRAIN = 20.0
 MOORPY_WRONG = {"MoorDyn/tests/Mooring/lifting.txt", "MoorDyn/tests/Mooring/3D_seafloor/hanging_lines.txt"}
 
 
+# Decks whose LINE TYPES column names are MoorDyn v1's coefficients (Can Cat Cdn Cdt, two with an extra 'tbd' before them)
+# over MoorDyn v2's columns (with EI: Cd Ca CdAx CaAx): read by position as MoorDyn reads them, with a warning
+# (test_column_names_out_of_moordyn_order_are_warned). Every other deck's headers are in MoorDyn's order.
+HEADER_OUT_OF_ORDER = {
+    "MoorDyn/tests/Mooring/body_tests/bodyDrag.txt", "MoorDyn/tests/Mooring/body_tests/pinnedBody.txt",
+    "MoorDyn/tests/Mooring/body_tests/rotatingBody.txt", "MoorDyn/tests/Mooring/local_euler/complex_system.txt",
+    "MoorDyn/tests/Mooring/riser/riser.txt", "MoorDyn/tests/Mooring/syrope/exp_wc/line.txt",
+    "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt", "MoorDyn/tests/Mooring/syrope/quadratic_wc/line.txt",
+    "MoorDyn/tests/Mooring/syrope/slow_loading.txt", "r-test/modules/moordyn/5MW_OC4/moordyn.dat",
+    "r-test/modules/moordyn/5MW_OC4_simple/moordyn.dat", "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat",
+    "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat", "r-test/modules/moordyn/md_bodyDrag/moordyn.dat",
+    "r-test/modules/moordyn/md_float/moordyn.dat", "r-test/modules/moordyn/md_horizontal/moordyn.dat",
+    "r-test/modules/moordyn/md_no_line/moordyn.dat", "r-test/modules/moordyn/md_vertical/moordyn.dat",
+}
+
+
 def _quiet(fn, *args, **kwargs):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # each deck's notes (options seacable does not honour) are tested elsewhere
@@ -432,3 +448,19 @@ def test_shared_mooring_agrees_with_fast_farm_where_its_moordyn_had_settled():
     fair = (2.7090642e6, 2.5200678e6, 2.7176622e6, 3.0598970e6, 3.0300605e6)
     assert np.allclose(eq.end_a_tension[:4], anchor, rtol=1e-2)
     assert np.allclose(eq.end_b_tension[:5], fair, rtol=1e-2)
+
+
+def test_column_names_out_of_moordyn_order_are_warned():
+    """Reading every deck: the 18 of HEADER_OUT_OF_ORDER warn about their LINE TYPES column names (and nothing else about
+    column order), every other deck reads without a column-order warning."""
+    warned = set()
+    for deck in DECKS:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            read_moordyn(HERE / deck)
+        order = [str(w.message) for w in caught if "not in the order MoorDyn reads" in str(w.message)]
+        if order:
+            warned.add(deck)
+            assert len(order) == 1 and "the LINE TYPES column names" in order[0], (deck, order)
+            assert "(Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx Cl dF cF)" in order[0]
+    assert warned == HEADER_OUT_OF_ORDER

@@ -496,6 +496,7 @@ class _Reader:
         self.syrope_types: dict[str, int] = {}  # Syrope line types and their line
         self.notes: list[str] = []
         self.option_lines: dict[str, int] = {}
+        self.names_line: dict[int, int] = {}  # a table's header line -> the line of its column names
 
     def at(self, name: str) -> str:
         """``file:line: `` of the option ``name`` (any case), for the notes."""
@@ -628,6 +629,8 @@ def _table(rd: _Reader, section):
         body = body[1:]
         rd.v1_counts = True
     names = body[0][1].split() if body else []
+    if body:
+        rd.names_line[header_no] = body[0][0]
     rows = []
     for index, (lineno, line) in enumerate(body):
         tokens = line.split()
@@ -649,6 +652,97 @@ def _table(rd: _Reader, section):
                                    f"but the section has {len(rows)} row(s). Suggested fix: write {len(rows)}, or "
                                    "add the missing rows (MoorDyn v1 reads exactly that many).")
     return names, rows
+
+
+# MoorDyn's column order of each table section (it reads every row by position and never the column names), each
+# column with the names decks write for it (compared without case, spaces and punctuation: 'BA/-zeta' is 'bazeta').
+# The first name is the one the warning shows.
+_COLUMNS = {
+    "line_types": (("Name", "LineType", "TypeName", "Type", "ID"), ("Diam", "D", "Diameter", "d_vol"),
+                   ("MassDen", "MassDenInAir", "Mass/m", "MassDensity", "Mass", "m", "w"), ("EA", "EAs"),
+                   ("BA/-zeta", "BA", "BA/zeta", "c", "zeta"), ("EI",),
+                   ("Cd", "Cdn", "CdN"), ("Ca", "Can", "CaN"), ("CdAx", "Cdt", "CdT", "CdA_x"), ("CaAx", "Cat", "CaT"),
+                   ("Cl", "CL"), ("dF",), ("cF",)),
+    # MoorDyn v1 (no EI column): the coefficients in another order
+    "line_types_v1": (("Name", "LineType", "TypeName", "Type", "ID"), ("Diam", "D", "Diameter"),
+                      ("MassDen", "MassDenInAir", "Mass/m", "MassDensity", "Mass", "m", "w"), ("EA",),
+                      ("BA/-zeta", "BA", "BA/zeta", "c", "zeta"), ("Can", "Ca", "CaN"), ("Cat", "CaAx", "CaT"),
+                      ("Cdn", "Cd", "CdN"), ("Cdt", "CdAx", "CdT")),
+    "rod_types": (("TypeName", "Name", "RodType", "Type", "ID"), ("Diam", "D", "Diameter"),
+                  ("Mass/m", "MassDen", "MassDenInAir", "Mass", "m"), ("Cd", "Cdn"), ("Ca", "Can"),
+                  ("CdEnd", "CdE"), ("CaEnd", "CaE")),
+    "points": (("ID", "Node", "Point", "Connection", "Num", "Number", "Name"),
+               ("Attachment", "Type", "Attach"), ("X",), ("Y",), ("Z",), ("Mass", "M"), ("Volume", "V", "Vol"),
+               ("CdA",), ("Ca", "CA")),
+    "points_forces": (("ID", "Node", "Point", "Connection", "Num", "Number", "Name"),
+                      ("Attachment", "Type", "Attach"), ("X",), ("Y",), ("Z",), ("Mass", "M"),
+                      ("Volume", "V", "Vol"), ("FX",), ("FY",), ("FZ",), ("CdA",), ("Ca", "CA")),
+    "lines": (("ID", "Line", "Name", "Num", "Number"), ("LineType", "Type", "TypeName"),
+              ("AttachA", "NodeA", "EndA", "NodeAnch", "Anchor", "ConnectionA", "PointA"),
+              ("AttachB", "NodeB", "EndB", "NodeFair", "Fairlead", "ConnectionB", "PointB"),
+              ("UnstrLen", "UnstrLength", "Length", "L"), ("NumSegs", "NSegs", "Segments", "N"),
+              ("Outputs", "LineOutputs", "Flags/Outputs", "Flags", "Output")),
+    "lines_v1": (("ID", "Line", "Name", "Num", "Number"), ("LineType", "Type", "TypeName"),
+                 ("UnstrLen", "UnstrLength", "Length", "L"), ("NumSegs", "NSegs", "Segments", "N"),
+                 ("NodeAnch", "AttachA", "NodeA", "EndA", "Anchor"), ("NodeFair", "AttachB", "NodeB", "EndB", "Fairlead"),
+                 ("Flags/Outputs", "Flags", "Outputs", "LineOutputs", "Output")),
+    "bodies": (("ID", "BodyID", "Body", "Name"), ("Attachment", "Type", "Attach"), ("X0", "X"), ("Y0", "Y"),
+               ("Z0", "Z"), ("r0", "Roll", "Roll0"), ("p0", "Pitch", "Pitch0"), ("y0", "Yaw", "Yaw0"),
+               ("Mass", "M"), ("CG", "CG*", "CoG", "Xcg"), ("I", "I*", "Inertia"), ("Volume", "V", "Vol"),
+               ("CdA", "CdA*"), ("Ca", "Ca*", "CA")),
+    # the early MoorDyn-F v2 layout (ID and attachment in one column), rewritten into today's by _read_bodies
+    "bodies_v2alpha": (("BodyID", "ID", "Body"), ("X0", "X"), ("Y0", "Y"), ("Z0", "Z"), ("r0", "Roll"),
+                       ("p0", "Pitch"), ("y0", "Yaw"), ("Xcg",), ("Ycg",), ("Zcg",), ("M", "Mass"),
+                       ("V", "Volume", "Vol"), ("IX",), ("IY",), ("IZ",), ("CdA",), ("Ca", "CA")),
+    "rods": (("ID", "Rod", "Name", "Num", "Number"), ("RodType", "Type", "TypeName"), ("Attachment", "Attach"),
+             ("Xa",), ("Ya",), ("Za",), ("Xb",), ("Yb",), ("Zb",), ("NumSegs", "NSegs", "Segments", "N"),
+             ("RodOutputs", "Outputs", "Flags", "Output")),
+    "failure": (("FailureID", "ID"), ("Point", "Attachment", "Attach", "Object", "Node"),
+                ("Line(s)", "Lines", "Line", "LineIDs"), ("FailTime", "Time", "T"), ("FailTen", "Tension", "Ten")),
+    "external_loads": (("ID",), ("Object", "Obj"), ("Fext", "Force", "F"), ("Blin",), ("Bquad",),
+                       ("CSys", "Frame")),
+    "syrope_ic": (("Line", "Lines", "Line(s)", "ID", "LineIDs"), ("Tmax0", "Tmax"), ("Tmean0", "Tmean")),
+    "syrope_wc": (("LineType", "Name", "Type", "TypeName"), ("WCType", "Type"), ("k1",), ("k2",)),
+}
+_COLUMNS["failure_no_id"] = _COLUMNS["failure"][1:]  # the ID column is optional
+_SECTION_TITLES = {"line_types": "LINE TYPES", "rod_types": "ROD TYPES", "points": "POINTS", "lines": "LINES",
+                   "bodies": "BODIES", "rods": "RODS", "failure": "FAILURE", "external_loads": "EXTERNAL LOADS",
+                   "syrope_ic": "SYROPE IC", "syrope_wc": "SYROPE WORKING CURVES"}
+
+
+def _key(name: str) -> str:
+    return re.sub(r"[^a-z0-9]", "", name.lower())
+
+
+def _check_column_order(rd: _Reader, section, names, layout: str) -> None:
+    """Warn when a table's column names put a column MoorDyn reads elsewhere (it reads rows by position only).
+
+    ``layout`` is a key of ``_COLUMNS``: MoorDyn's order of the section, as seacable reads it. A name that is one
+    of MoorDyn's columns but stands at another column's place (``Can Cat Cdn Cdt`` written over the v2 line
+    types' ``Cd Ca CdAx CaAx``; a column name missing or added, shifting the rest) is reported; names seacable does
+    not know (``tbd``, units) are not. The rows are still read by position, as MoorDyn reads them.
+    """
+    columns = _COLUMNS[layout]
+    keys = [{_key(a) for a in aliases} for aliases in columns]
+    wrong = []
+    for index, name in enumerate(names):
+        key = _key(name)
+        if not key or (index < len(keys) and key in keys[index]):
+            continue
+        meant = next((j for j, ks in enumerate(keys) if key in ks), None)
+        if meant is not None and meant != index:
+            at = f"reads it as {columns[index][0]}" if index < len(columns) else "has no column there"
+            wrong.append(f"column {index + 1} is named {name!r} (MoorDyn's {columns[meant][0]}, its column {meant + 1}) "
+                         f"but MoorDyn {at}")
+    if not wrong:
+        return
+    kind, header_no = section[0], section[1]
+    title = _SECTION_TITLES.get(kind, kind.upper())
+    lineno = rd.names_line.get(header_no, header_no)
+    warnings.warn(f"{rd.label}:{lineno}: the {title} column names ({' '.join(names)}) are not in the order MoorDyn "
+                  f"reads the section ({' '.join(c[0] for c in columns)}): {'; '.join(wrong)}. MoorDyn reads the rows "
+                  "by position and never the names, and so does seacable. Suggested fix: check that each row's values "
+                  "are in MoorDyn's order, and write the column names in that order.", SeacableWarning, stacklevel=4)
 
 
 def _coefficient(rd, lineno, type_name, token, column, unit):
@@ -771,6 +865,7 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
     v1 = "ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(names) == 9)
     layout = ("name d m EA BA/-zeta Can Cat Cdn Cdt" if v1
               else "name d m EA BA/-zeta EI Cd Ca CdAx CaAx")
+    _check_column_order(rd, section, names, "line_types_v1" if v1 else "line_types")
     if not rows:
         raise _empty(rd, section, "LINE TYPES", layout)
     out: dict[str, MoorDynLineType] = {}
@@ -860,7 +955,9 @@ def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
 
 
 def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
-    _, rows = _table(rd, section)
+    names, rows = _table(rd, section)
+    forces = any(len(t) >= 12 for _, t in rows) or "fx" in {_key(n) for n in names}
+    _check_column_order(rd, section, names, "points_forces" if forces else "points")
     points, where, written = [], {}, []
     layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
     if not rows:
@@ -955,6 +1052,7 @@ def _read_lines(rd, section, types, points, rods=None) -> list[MoorDynLine]:
     v1 = len(names) > 2 and "len" in names[2].lower()
     layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
               else "ID type AttachA AttachB UnstrLen NumSegs outputs")
+    _check_column_order(rd, section, names, "lines_v1" if v1 else "lines")
     if not rows:
         raise _empty(rd, section, "LINES", layout)
     cols = (4, 5, 2, 3) if v1 else (2, 3, 4, 5)  # attach A, attach B, length, segments
@@ -1019,7 +1117,8 @@ def _bar_list(rd, lineno, token, what, unit, counts):
 
 
 def _read_rod_types(rd, section) -> dict[str, MoorDynRodType]:
-    _, rows = _table(rd, section)
+    names, rows = _table(rd, section)
+    _check_column_order(rd, section, names, "rod_types")
     layout = "TypeName Diam Mass/m Cd Ca CdEnd CaEnd"
     out: dict[str, MoorDynRodType] = {}
     for lineno, t in rows:
@@ -1043,7 +1142,9 @@ def _read_rod_types(rd, section) -> dict[str, MoorDynRodType]:
 def _read_bodies(rd, section) -> tuple[list[MoorDynBody], dict[int, int]]:
     names, rows = _table(rd, section)
     layout = "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca"
-    if any(n.lower() == "xcg" for n in names):
+    early = any(n.lower() == "xcg" for n in names)
+    _check_column_order(rd, section, names, "bodies_v2alpha" if early else "bodies")
+    if early:
         # the early MoorDyn-F v2 layout (OpenFAST r-test 5MW_OC4): 'BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ
         # CdA Ca', the ID and attachment written together ('1coupled'): rewritten into today's columns
         old = "BodyID X0 Y0 Z0 r0 p0 y0 Xcg Ycg Zcg M V IX IY IZ CdA Ca"
@@ -1101,7 +1202,8 @@ def _read_bodies(rd, section) -> tuple[list[MoorDynBody], dict[int, int]]:
 
 
 def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[int, int]]:
-    _, rows = _table(rd, section)
+    names, rows = _table(rd, section)
+    _check_column_order(rd, section, names, "rods")
     layout = "ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs"
     rods, where = [], {}
     for lineno, t in rows:
@@ -1151,6 +1253,7 @@ def _read_rods(rd, section, rod_types, bodies) -> tuple[list[MoorDynRod], dict[i
 
 def _read_failures(rd, section, points, rods, lines) -> list[MoorDynFailure]:
     names, rows = _table(rd, section)
+    _check_column_order(rd, section, names, "failure" if rows and len(rows[0][1]) >= 5 else "failure_no_id")
     out = []
     line_ids = {ln.id: ln for ln in lines}
     for index, (lineno, t) in enumerate(rows, start=1):
@@ -1195,7 +1298,8 @@ def _read_failures(rd, section, points, rods, lines) -> list[MoorDynFailure]:
 
 
 def _read_external_loads(rd, section, points, bodies, rods) -> list[MoorDynExternalLoad]:
-    _, rows = _table(rd, section)
+    names, rows = _table(rd, section)
+    _check_column_order(rd, section, names, "external_loads")
     out = []
     for lineno, t in rows:
         rd.columns(lineno, t, 5, "EXTERNAL LOADS", "ID Object Fext Blin Bquad [CSys]")
@@ -1238,6 +1342,12 @@ def _read_options(rd, section) -> dict[str, float | str]:
                                    f"{line.strip()!r}. Suggested fix: write the value, then the option "
                                    "name (e.g. '100 WtrDpth').")
         value = _as_float(tokens[0])
+        if value is None and _as_float(tokens[1]) is not None:
+            # the OPTIONS rows' order is 'value name': MoorDyn reads the first word as the value, whatever it is
+            warnings.warn(f"{rd.label}:{lineno}: the OPTIONS row {line.strip()!r} gives a name then a number, but "
+                          f"MoorDyn reads options as 'value name': it takes {tokens[0]!r} as the value of an option "
+                          f"named {tokens[1]!r}, and so does seacable (an option it does not know: ignored). Suggested "
+                          f"fix: write '{tokens[1]} {tokens[0]}'.", SeacableWarning, stacklevel=4)
         _check_option(rd, lineno, tokens[1], tokens[0], value)
         options[tokens[1]] = tokens[0] if value is None else value
         rd.option_lines[tokens[1]] = lineno
@@ -1459,7 +1569,9 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
              if "external_loads" in sections else [])
     if "syrope_wc" in sections:
-        for lineno, t in _table(rd, sections["syrope_wc"])[1]:
+        names, rows = _table(rd, sections["syrope_wc"])
+        _check_column_order(rd, sections["syrope_wc"], names, "syrope_wc")
+        for lineno, t in rows:
             rd.columns(lineno, t, 4, "SYROPE WORKING CURVES", "LineType WCType k1 k2")
             if t[0] not in types:
                 raise rd.error(lineno, f"SYROPE WORKING CURVES names line type {t[0]!r}, which is not in LINE TYPES."
@@ -1476,7 +1588,9 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
                                    f"'{name} LINEAR k1 k2' to a SYROPE WORKING CURVES section.")
     syrope_ic = {}
     if "syrope_ic" in sections:
-        for lineno, t in _table(rd, sections["syrope_ic"])[1]:
+        names, rows = _table(rd, sections["syrope_ic"])
+        _check_column_order(rd, sections["syrope_ic"], names, "syrope_ic")
+        for lineno, t in rows:
             rd.columns(lineno, t, 3, "SYROPE IC", "Line(s) Tmax0 Tmean0")
             tmax, tmean = (rd.number(lineno, v, f"SYROPE IC {c}", "N") for v, c in zip(t[1:3], ("Tmax0", "Tmean0")))
             for token in t[0].split(","):

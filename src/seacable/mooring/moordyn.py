@@ -29,21 +29,25 @@ import warnings
 import numpy as np
 
 from .._limits import check_run_size
-from ..errors import InputError, SeacableWarning
+from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
 from ..io.moordyn import (
+    _DECK_MAX_STRAIN,
     MoorDynCase,
     MoorDynInput,
     check_water_kinematics,
     load_moordyn_case,
     moordyn_axial_damping,
+    moordyn_system,
     read_moordyn,
 )
 from ..results import make_dataset, var, write_netcdf
 from ..sink import open_sink
+from ..system.statics import solve_equilibrium
 from .motion import bind, forcing_period
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions
 from .run import (
     REFERENCES,
+    line_end_forces,
     network_variables,
     output_count,
     point_variables,
@@ -54,7 +58,12 @@ from .run import (
 )
 from .solver import MooringModel, MooringRun, Water, line_end_nodes, simulate, static_equilibrium
 
-__all__ = ["moordyn_model", "prepare_moordyn", "run_moordyn_case", "run_moordyn_file"]
+__all__ = ["CATENARY_TOLERANCE", "catenary_check", "moordyn_model", "prepare_moordyn", "run_moordyn_case",
+           "run_moordyn_file"]
+
+#: the relative difference [-] between a line end's tension in the lumped-mass network (the deck's NumSegs) and in
+#: the exact elastic catenary above which a deck's run warns (the level of the deck comparisons with MoorPy)
+CATENARY_TOLERANCE = 0.01
 
 _KIND = {"fixed": FIXED, "vessel": PRESCRIBED, "free": FREE}
 
@@ -184,6 +193,100 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
     line = MooringModel(view, model.water)
     line.sea, line._sea_spec = model.sea, model._sea_spec  # an irregular sea's grid, when the run has one
     return line
+
+
+def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | str:
+    """Compare the network's static end tensions with the exact elastic catenaries of the same deck; warn if they differ.
+
+    The lumped-mass network has the deck's ``NumSegs`` per line. Where a line bends more sharply than its segments
+    can follow (at a touchdown point the radius of curvature of a catenary is ``H / w``, horizontal tension over
+    wet weight per length, 2.3 m for the r-test MHK_RM1 chains on 5 m segments), the network's horizontal
+    tension, and with it the anchor and fairlead tensions, is off by up to tens of percent (13 % there), shrinking
+    as the segments are refined. The deck is solved again as a mooring system of exact elastic catenaries on a flat
+    frictionless seabed (:func:`seacable.io.moordyn.moordyn_system`, :func:`seacable.system.statics.solve_equilibrium`:
+    the model MoorPy solves, agreeing with it to 1e-4 on the vendored decks) and each line end's tension compared.
+    Lines the catenary does not model as the network does are left out: a Syrope rope (the network follows its
+    working curve from SYROPE IC's Tmax), and a line whose bending stiffness matters (bending length
+    ``sqrt(EI / T)`` over 5 % of the line: MoorDyn's BeamSimplySupported, 74 %; its VIV decks, 1.7 %, and the
+    Lowe and Langley jumper, 0.9 %, agree with the catenary to 0.4 %).
+
+    Parameters
+    ----------
+    md : MoorDynInput
+        The deck.
+    model : MooringModel
+        Its network (:func:`moordyn_model`).
+    position : ndarray
+        The network's static node positions (``static_equilibrium(model).position``). [m]
+
+    Returns
+    -------
+    float or str
+        The largest relative difference of a compared line end's tension [-] (its denominator the catenary's
+        tension, at least 1e-3 of the line's larger end tension; an end the catenary leaves slack, under 1e-3 of the
+        line's wet weight, is not compared), or why nothing was compared.
+
+    Warns
+    -----
+    SeacableWarning
+        When an end differs by more than :data:`CATENARY_TOLERANCE`, naming each such end with the two tensions,
+        the line's segment length and its catenary's ``H / w``, and the fix (more segments).
+    """
+    label = md.path or "MoorDyn file"
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the deck's own notes are warned by prepare_moordyn
+            system, env = moordyn_system(md)
+            env = env.model_copy(update={"seabed": env.seabed.model_copy(update={"friction": 0.0})})
+            eq = solve_equilibrium(system, env, max_strain=_DECK_MAX_STRAIN)
+    except (InputError, NoSolutionError, ConvergenceError) as exc:
+        return f"not checked: the exact catenaries of the deck were not solved ({str(exc).splitlines()[0][:200]})"
+    X = np.asarray(position, float)
+    net = model.network
+    rho, g = md.water_density, md.gravity
+    worst, flagged, skipped = 0.0, [], []
+    for k, line in enumerate(md.lines):
+        lt = md.line_types[line.line_type]
+        cat = (float(eq.end_a_tension[k]), float(eq.end_b_tension[k]))
+        seg = float(np.sum(net.length[net.element_line == k])) / line.n_segments
+        bending = math.sqrt(lt.bending_stiffness / max(max(cat), 1e-300))
+        if getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg:
+            skipped.append(line.id)
+            continue
+        ends = line_end_forces(_line_view(model, k), X[net.line_nodes[k]])
+        w = (lt.mass_per_length - rho * math.pi * lt.diameter**2 / 4) * g
+        floor = max(1e-3 * max(cat), 1e-9)
+        # an end the catenary leaves slack (under 1e-3 of the line's wet weight) is not compared: the network's
+        # compliant seabed (kBot) stretches it (a chain lying straight between two anchors on the seabed, sunk 5 mm
+        # into it, carries 0.3 % of its weight; the rigid seabed of the catenary, nothing)
+        slack = 1e-3 * abs(w) * float(np.sum(net.length[net.element_line == k]))
+        for j, end in enumerate("AB"):
+            ours = float(np.linalg.norm(ends[j]))
+            if cat[j] < slack:
+                continue
+            diff = abs(ours - cat[j]) / max(cat[j], floor)
+            worst = max(worst, diff)
+            if diff > CATENARY_TOLERANCE:
+                force = eq.end_a_force[k] if j == 0 else eq.end_b_force[k]
+                bend = (f", its catenary's H / w {math.hypot(force[0], force[1]) / w:.3g} m" if w > 0 else "")
+                flagged.append((diff, f"line {line.id} end {end}: {ours:.6g} N in the network, {cat[j]:.6g} N in the "
+                                      f"exact catenary ({100 * (ours / cat[j] - 1) if cat[j] > 0 else 100:+.3g} %; "
+                                      f"{line.n_segments} segments of {seg:.3g} m{bend})"))
+    if flagged:
+        flagged.sort(key=lambda item: -item[0])
+        shown = "; ".join(text for _, text in flagged[:6]) + (f"; and {len(flagged) - 6} more" if len(flagged) > 6
+                                                              else "")
+        warnings.warn(f"{label}: the static end tensions of the lumped-mass network (the deck's NumSegs) differ from "
+                      f"the exact elastic catenaries of the same lines by up to {100 * flagged[0][0]:.3g} % (more than "
+                      f"{100 * CATENARY_TOLERANCE:g} %): {shown}. The segments are too long for where the line bends "
+                      "most (at a touchdown point the catenary's radius of curvature is H / w); the difference shrinks "
+                      "as the segments are refined (MoorDyn's lumped-mass line is discretised the same way). Suggested "
+                      "fix: raise NumSegs of those lines (until the segments are well under H / w), or take the "
+                      "statics from the exact catenaries (MoorDynCase.system() and system_static).",
+                      SeacableWarning, stacklevel=3)
+    if skipped and worst == 0.0 and not flagged and len(skipped) == len(md.lines):
+        return "not checked: every line is a Syrope rope or has a bending stiffness the catenary does not model"
+    return worst
 
 
 def _dataset(model: MooringModel, X, T, S, *, title, settings):
@@ -358,8 +461,11 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
     st = static_equilibrium(model, tol=tolerance)
     title = md.title or str(md.path)
     settings = {"source": str(md.path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
+    checked = catenary_check(md, model, st.position)
     if case.duration is None:
-        return _written(_dataset(model, st.position, st.tension, st.support, title=title, settings=settings), out)
+        ds = _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
+        ds.attrs["catenary_difference"] = checked
+        return _written(ds, out)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
     with open_sink(output_count(case.duration, case.output_interval), out) as sink:
 
@@ -374,7 +480,7 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
                                    kinematics=line_end_nodes(model.network), on_outputs=outputs)
         events = snap_variables(sink, model.network)
     settings = {**settings, "time_step": run.time_step, "steps": run.steps, "spectral_radius": run.spectral_radius}
-    return sink.finish(events, attrs={**_depth(model), **run_attributes(run)},
+    return sink.finish(events, attrs={**_depth(model), **run_attributes(run), "catenary_difference": checked},
                        **_provenance(model, title, settings))
 
 

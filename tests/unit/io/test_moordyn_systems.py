@@ -44,6 +44,8 @@ Line    LineType  UnstrLen  NumSegs   NodeAnch  NodeFair  Flags/Outputs
 """
 
 
+# the r-test and MoorDyn decks read here whose LINE TYPES names are out of MoorDyn's order warn so (tested in
+# test_moordyn_column_order.py and test_moordyn_decks.py); read quietly where a test is about something else
 def _quiet(fn, *args, **kwargs):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SeacableWarning)
@@ -64,7 +66,7 @@ def test_v1_layout_with_count_lines():
 
 
 def test_bodies_rods_and_rod_ends():
-    md = read_moordyn(DECKS / "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat")
+    md = _quiet(read_moordyn, DECKS / "r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat")
     (body,) = md.bodies
     assert (body.attachment, body.position, body.mass, body.inertia) == ("free", (0, 0, 0, 0, 0, 0), 1e6,
                                                                          (1e10, 1e10, 1e10))
@@ -80,7 +82,7 @@ def test_bodies_rods_and_rod_ends():
     assert coupled.center_of_gravity == (0.0, 0.0, -35.0)  # one CG value: along the body's z axis (MoorDyn docs)
     floating = read_moordyn(DECKS / "MoorDyn/tests/Mooring/body_tests/floatingBodies.txt")
     assert floating.bodies[1].center_of_gravity == (0.0, -10.0, 0.0)  # 0|-10|0
-    drag = read_moordyn(DECKS / "MoorDyn/tests/Mooring/body_tests/bodyDrag.txt").bodies[0]
+    drag = _quiet(read_moordyn, DECKS / "MoorDyn/tests/Mooring/body_tests/bodyDrag.txt").bodies[0]
     assert drag.drag_area == (0.1,) * 6 and drag.position[4] == pytest.approx(-math.pi / 2, rel=1e-15)
     fail = read_moordyn(DECKS / "r-test/modules/moordyn/md_lineFail/moordyn.dat")
     assert fail.lines[1].rod_b == (1, "A") and fail.lines[1].point_b is None and fail.lines[3].rod_a == (1, "B")
@@ -149,12 +151,12 @@ def test_free_rod_becomes_a_body_along_its_axis():
 def test_rods_on_a_body_add_their_mass_and_submerged_volume():
     """md_float: a body at z = -1 pitched 45 deg carries a 5 m can (d 2 m, 100 kg/m) from z_b = -1 to 4 and a
     1 m weight (d 4 m, 2.15e4 kg/m); the can pierces the surface at 1/5 of its length (body z = 1)."""
-    md = read_moordyn(DECKS / "r-test/modules/moordyn/md_float/moordyn.dat")
+    md = _quiet(read_moordyn, DECKS / "r-test/modules/moordyn/md_float/moordyn.dat")
     unmoored, _ = _quiet(moordyn_system, md)  # the body no line ends on is a body all the same
     # the same deck with the body moored by its line: end the line on a point on the body
     text = (DECKS / "r-test/modules/moordyn/md_float/moordyn.dat").read_text().replace(
         "1         Fixed      3        0        -4", "1         Body1      0        0        -2")
-    system, _ = _quiet(moordyn_system, read_moordyn(text))
+    system, _ = _quiet(moordyn_system, _quiet(read_moordyn, text))
     body = system.bodies["body1"]
     assert body == unmoored.bodies["body1"]
     assert body.mass == pytest.approx(100.0 * 5 + 2.15e4 * 1, rel=1e-12)
@@ -202,7 +204,7 @@ def test_case_exposes_the_system():
 
 
 def test_external_loads_are_read_and_refused_when_wrong():
-    md = read_moordyn(DECKS / "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat")
+    md = _quiet(read_moordyn, DECKS / "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat")
     (load,) = md.external_loads
     assert (load.kind, load.target, load.force, load.linear_damping, load.quadratic_damping, load.frame) == (
         "body", 1, (1.0417e5, 0.5e5, -1.0e4), (1.0e3, 0.7e3, 0.6e2), (3.0e3, 2.1e3, 1.0e4), "G")
@@ -212,11 +214,11 @@ def test_external_loads_are_read_and_refused_when_wrong():
     assert body.matrix("linear_damping")[2, 2] == 60.0 and body.matrix("quadratic_damping")[1, 1] == 2.1e3
     text = (DECKS / "r-test/modules/moordyn/md_BdyExtLdDmpg/moordyn.dat").read_text()
     with pytest.raises(InputError, match=r"external load 1 Object must name a body, point or rod .* got 'Body2'"):
-        read_moordyn(text.replace(" 1     Body1  1.0417e5", " 1     Body2  1.0417e5"))
+        _quiet(read_moordyn, text.replace(" 1     Body1  1.0417e5", " 1     Body2  1.0417e5"))
     with pytest.raises(InputError, match=r"external load 1 Fext must be 3 value\(s\)"):
-        read_moordyn(text.replace("1.0417e5|0.5e5|-1.0e4", "1.0417e5|0.5e5"))
+        _quiet(read_moordyn, text.replace("1.0417e5|0.5e5|-1.0e4", "1.0417e5|0.5e5"))
     with pytest.raises(InputError, match=r"external load 1 CSys must be G \(global\) or L"):
-        read_moordyn(text.replace("1.0e4       G", "1.0e4       Q"))
+        _quiet(read_moordyn, text.replace("1.0e4       G", "1.0e4       Q"))
 
 
 def test_syrope_line_type():

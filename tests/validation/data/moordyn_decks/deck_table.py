@@ -77,6 +77,57 @@ NOTES = {  # what the table cannot see: the test that checks the deck instead, o
 NO_COMPARISON: set[str] = set()
 
 
+FOOTER = """
+## The line network's statics against MoorPy (issue 37)
+
+The table compares seacable's system statics (exact elastic catenaries). A plain line-and-point deck run as
+`seacable run deck` (`mooring_static`) is solved as a lumped-mass network with the deck's NumSegs instead. Four
+plain decks differed there from MoorPy by more than 1 %; for each, which code is right:
+
+- r-test MHK_RM1_Floating (`glue-codes/openfast/MHK_RM1_Floating/MHK_RM1_Floating_MoorDyn.dat`, OpenFAST/r-test
+  e4f825bd; not vendored here, its line 2 is written out in `test_moordyn_network_statics.py`): the network's
+  anchor tension of lines 2 and 5 is 14110 N, MoorPy's 12467 N (+13.2 %; lines 1, 3, 4, 6 -4.2 %). **MoorPy is
+  right**: the closed-form elastic catenary on a frictionless seabed (Jonkman 2007, friction 0) gives H =
+  12467.19 N at the anchor and 232247.09 N at the fairlead, MoorPy the same to 1e-6, seacable's system statics
+  to 1e-9; the network converges to it as its segments are refined (240 segments: 0.18 %). Cause: the chain's
+  5.07 m segments are longer than its catenary's radius of curvature at touchdown, H / w = 2.27 m, so the network
+  misplaces the touchdown and its H. MoorDyn 2.7.2's own relaxation of the deck does not settle (it stops after 60 s
+  with 0.13 m/s^2 left, given TmaxIC 200 s and threshIC 1e-4), so it is no reference here.
+- MoorPy/tests/case6.dat: the network's line 3 end A (at the sinker on the seabed, the line lifting off 2.35 m
+  from it) is 141161 N, MoorPy's 133288 N (+5.9 %), line 2's end there -2.4 %. **MoorPy is right** (the system
+  statics agree with it to 1e-7): 33 m segments against H / w = 29 m.
+- MoorDyn/tests/Mooring/seafloor.txt: **MoorPy is wrong**: it stalls (1999 iterations, its free point left with
+  a residual force of -98.07 N, its whole weight), and its tension is wherever it stopped (101.07 N with its g
+  = 9.81, 108.85 N with the deck's 9.80665). The network and the system statics give m g = 98.0665 N, the closed
+  form of a point hanging on a line as dense as the water (`test_seafloor_pendulum_network_hangs_by_its_weight`,
+  `test_a_pendulum_on_a_stiff_slack_line_swings_down_plumb`). The deck's SeafloorFile (a seabed z = -30 + 0.1 x
+  that the pendulum was meant to hit) is read by neither code: seacable warns and takes the flat seabed at
+  WtrDpth 500 m.
+
+The run of a plain deck now compares every line end of the network with the exact catenaries of the same deck
+(`seacable.mooring.moordyn.catenary_check`) and warns, with both tensions, the segment length and H / w, when
+they differ by more than 1 %; the largest difference is the result's `catenary_difference` attribute. Of the
+vendored plain decks only case6 warns (5.9 %); the next are md_case5 (0.96 %) and the ITI barge (0.93 %), the
+rest 0.5 % or less. Not compared: Syrope ropes (exp_wc, linear_wc, quadratic_wc, slow_loading: the network follows
+the working curve from SYROPE IC's Tmax) and lines whose bending stiffness matters (bending length sqrt(EI / T)
+over 5 % of the line: BeamSimplySupported). stability/springs.txt, tripod.txt and md_viscoelastic do not solve as
+a network (they solve as systems; table above).
+
+## Column names out of MoorDyn's order
+
+MoorDyn reads every table row by position and never its column names; seacable reads them the same way and warns
+(file and line, section, the names seen and MoorDyn's order) when a name that is one of MoorDyn's columns stands at
+another column's place (one check for every table section: line types, rod types, bodies, rods, points, lines,
+failures, external loads, Syrope sections; an OPTIONS row written 'name value' is warned too). 18 of the 84 decks
+warn, all for their LINE TYPES: MoorDyn v1's coefficient names `Can Cat Cdn Cdt` written over MoorDyn v2's columns
+(with EI), which hold `Cd Ca CdAx CaAx` (two, bodyDrag and rotatingBody, with an extra `tbd` name before them):
+body_tests/bodyDrag, pinnedBody, rotatingBody, local_euler/complex_system, riser/riser, syrope/exp_wc/line,
+syrope/linear_wc/line, syrope/quadratic_wc/line, syrope/slow_loading, and r-test modules/moordyn 5MW_OC4,
+5MW_OC4_simple, md_BdyExtLdDmpg, md_BodiesAndRods, md_bodyDrag, md_float, md_horizontal, md_no_line, md_vertical
+(`HEADER_OUT_OF_ORDER` in test_moordyn_decks.py). Every other deck reads without a column-order warning.
+"""
+
+
 def turbine_positions(entry: dict) -> dict | None:
     """The turbine poses ``reference.json`` records for a deck on FAST.Farm turbines (None for others)."""
     poses = entry.get("turbine_positions")
@@ -180,7 +231,7 @@ def main():
                f"run in time; compared with MoorPy {counts['moorpy']}, with a converged MoorDyn "
                f"{counts['moordyn']}; within 1 % of at least one of them: {counts['agree']}.")
     (HERE / "DECKS.md").write_text("# The vendored MoorDyn decks in seacable\n\nWritten by `deck_table.py`. "
-                                   + summary + "\n\n" + "\n".join(rows) + "\n")
+                                   + summary + "\n\n" + "\n".join(rows) + "\n" + FOOTER)
     print(summary)
 
 
