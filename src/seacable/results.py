@@ -250,11 +250,10 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
 
     path = result_file(path)
     encoding = {name: compression(v) for name, v in ds.data_vars.items()}
-    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
-        with deferred_interrupts(), atomic_path(path) as tmp:
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-    except OSError as err:
-        raise write_error(path, err) from None
+    # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock;
+    # a failed write (full disk, no permission, the NetCDF library's HDF error) is an InputError naming the file
+    with deferred_interrupts(), atomic_path(path, "the result") as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
 
 
@@ -280,10 +279,11 @@ def compression(v) -> dict:
     return {"zlib": True, "complevel": 4} if v.dtype.kind in "fiu" and v.ndim > 0 else {}
 
 
-def write_error(path: Path, err: OSError) -> InputError:
-    """What to tell when the result ``path`` cannot be written."""
-    return InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk space, "
-                      "or give -o a file in a folder you can write to.")
+def write_error(path: Path, err: BaseException) -> InputError:
+    """What to tell when the result ``path`` cannot be written: :func:`seacable._atomic.write_failure`."""
+    from ._atomic import write_failure
+
+    return write_failure(path, err, "the result")
 
 
 def read_netcdf(path: str | Path) -> xr.Dataset:
