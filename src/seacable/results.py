@@ -20,6 +20,7 @@ from ._version import __version__
 from .errors import InputError
 
 __all__ = ["ANALYSIS_VARIABLES", "check_output_file", "check_output_folder", "check_result", "check_schema",
+           "check_time",
            "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
@@ -161,7 +162,40 @@ def check_result(ds: xr.Dataset, source: str = "the result") -> str:
         raise InputError(f"{source} is a '{analysis}' result without the variable(s) {', '.join(missing)} that "
                          f"its figures need. Suggested fix: rerun the case with seacable {__version__} "
                          "('seacable run CASE.yaml'), or give the file written by that run.")
+    check_time(ds, source)
     return analysis
+
+
+def check_time(ds: xr.Dataset, source: str = "the result") -> None:
+    """Check a result's ``time`` coordinate, if it has one: finite and increasing.
+
+    A run writes its output times finite and increasing; a file whose times are not (edited, damaged, or
+    written by something else) would give figures without axes and statistics of NaN.
+
+    Raises
+    ------
+    InputError
+        Naming the first time that is not finite, or the first that does not increase.
+    """
+    if "time" not in ds.variables:
+        return
+    t = np.asarray(ds["time"].values)
+    if t.dtype.kind not in "fiu":
+        raise InputError(f"{source}: its 'time' is not a number (dtype {t.dtype}). Suggested fix: give the file "
+                         "written by 'seacable run' or 'seacable sweep', or run the case again.")
+    t = t.astype(float).ravel()
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        k = int(bad[0])
+        raise InputError(f"{source}: time[{k}] is {t[k]} s, expected finite times ({bad.size} of {t.size} are not). "
+                         "Suggested fix: give the file written by 'seacable run' or 'seacable sweep', or run the "
+                         "case again.")
+    back = np.flatnonzero(np.diff(t) <= 0)
+    if back.size:
+        k = int(back[0]) + 1
+        raise InputError(f"{source}: time[{k}] = {t[k]:g} s does not come after time[{k - 1}] = {t[k - 1]:g} s, "
+                         "expected increasing times. Suggested fix: give the file written by 'seacable run' or "
+                         "'seacable sweep', or run the case again.")
 
 
 _NETCDF_SUFFIXES = (".nc", ".nc4", ".netcdf")

@@ -16,6 +16,7 @@ worker died is always run again.
 
 from __future__ import annotations
 
+import contextlib
 import datetime
 import json
 import logging
@@ -306,6 +307,7 @@ class _Store:
         clean_folder_once(self.cases)   # the temporary files of a sweep killed outright (SIGKILL)
         for stale in self.cases.glob(".sweep-*.token"):
             stale.unlink(missing_ok=True)
+        self.damaged: list[str] = []   # the cases recorded done whose result file is damaged (earlier())
         self.token = f".sweep-{uuid.uuid4().hex}.token"
         (self.cases / self.token).touch()
 
@@ -330,10 +332,49 @@ class _Store:
             return None
         if record.get("key") != sc.key:
             return None
-        if record.get("status") == "done" and self.result_path(sc).exists():
-            return record
+        if record.get("status") == "done":
+            problem = self.damage(sc, record)
+            if problem is None:
+                return record
+            self.damaged.append(f"case {sc.index} ({self.result_path(sc)}: {problem})")
+            return None
         if record.get("status") == "failed" and not retry_failed and not record.get("retry"):
             return record
+        return None
+
+    def damage(self, sc: SweepCase, record: dict) -> str | None:
+        """What is wrong with the result file of a case recorded as done; None if it is whole.
+
+        The record is not trusted: the file must exist, have the size recorded when it was written,
+        open as NetCDF, belong to this case (its ``sweep_key``) and hold the variables of its analysis
+        (:data:`seacable.results.ANALYSIS_VARIABLES`). Its data are not read: a sweep of thousands of
+        cases resumes in seconds.
+        """
+        import netCDF4
+
+        from ..results import ANALYSIS_VARIABLES
+
+        path = self.result_path(sc)
+        try:
+            size = path.stat().st_size
+        except OSError:
+            return "missing"
+        if record.get("result_bytes") is not None and size != record["result_bytes"]:
+            return f"{size} bytes, {record['result_bytes']} when it was written"
+        try:
+            with netCDF4.Dataset(path, "r") as nc:
+                names = set(nc.variables) | set(nc.dimensions)
+                attrs = {k: nc.getncattr(k) for k in ("analysis", "sweep_key") if k in nc.ncattrs()}
+        except Exception as err:  # noqa: BLE001  (whatever the library says of a damaged file)
+            return f"not a readable NetCDF file ({err})"
+        if attrs.get("sweep_key", sc.key) != sc.key:
+            return "the result of another case"
+        analysis = attrs.get("analysis")
+        if analysis is None:
+            return "no 'analysis' attribute"
+        missing = [n for n in ANALYSIS_VARIABLES.get(analysis, ()) if n not in names]
+        if missing:
+            return f"without the variable(s) {', '.join(missing)} of a '{analysis}' result"
         return None
 
     def write(self, sc: SweepCase, outcome: dict) -> dict:
@@ -348,6 +389,10 @@ class _Store:
             if outcome.get("result") is not None:
                 target = self.target(sc)
                 write_result(outcome["result"], self.cases, sc.stem, target.attrs)
+            if record["status"] == "done":   # the size the result has whole: see damage()
+                with contextlib.suppress(OSError):
+                    record["result_bytes"] = self.result_path(sc).stat().st_size
+                text = json.dumps(record, indent=1, default=str)
             atomic_write(self.record_path(sc), lambda tmp: tmp.write_text(text, encoding="utf-8"))
         return record
 
@@ -421,6 +466,11 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         if earlier is not None:
             records[sc.index] = earlier
             reused.add(sc.index)
+    if store.damaged:
+        shown = "; ".join(store.damaged[:10]) + (f"; and {len(store.damaged) - 10} more" if len(store.damaged) > 10
+                                                  else "")
+        warnings.warn(f"{len(store.damaged)} case result(s) recorded as done in '{store.cases}' are damaged or "
+                      f"missing, and are run again: {shown}.", SeacableWarning, stacklevel=2)
     report(None)
     for sc in cases:
         if sc.case is None and sc.index not in records:
