@@ -466,8 +466,8 @@ def _load_table(resolved: str, kind: str) -> tuple[np.ndarray, np.ndarray]:
     unit = "m" if kind == "position" else "m/s"
     from .._text import read_text_file
 
-    text = read_text_file(resolved, "path table", "give a UTF-8 CSV file, its path relative to the case file's "
-                                                  "folder")
+    text = read_text_file(resolved, "vessel table file", "give a UTF-8 CSV file, its path relative to the case "
+                                                         "file's folder")
     rows = list(csv.reader(io.StringIO(text, newline="")))
     numbered = [(i + 1, row) for i, row in enumerate(rows) if any(cell.strip() for cell in row)]
     if not numbered:
