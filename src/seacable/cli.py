@@ -208,9 +208,11 @@ def _print_summary(summary) -> None:
 def _cmd_sweep(args) -> int:
     from .results import check_output_folder
     from .sweeps import load_sweep, sweep
-    from .sweeps.engine import check_scheduler
+    from .sweeps.engine import check_scheduler, check_workers
 
     check_scheduler(args.scheduler)
+    if args.workers is not None:
+        check_workers(args.workers, "--workers")
     spec = load_sweep(args.sweep)
     outdir = Path(args.output) if args.output else Path(spec.name)
     check_output_folder(outdir, "-o" if args.output else "the default output folder (-o)")
@@ -473,7 +475,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", help="address of an existing Dask scheduler (tcp://host:8786), whose workers "
                                        "have seacable; default a local cluster on this machine's cores; "
                                        "'synchronous' runs the cases one by one in this process")
-    p.add_argument("--workers", type=_whole, help="workers of the local cluster (default: one per core)")
+    p.add_argument("--workers", type=_whole, help="workers of the local cluster (default: one per core; at most 4 per core)")
     p.add_argument("--retry-failed", action="store_true", help="run again the cases that failed before")
     p.add_argument("--no-plots", action="store_true", help="write the results only")
     _add_limits(p)

@@ -230,7 +230,8 @@ class Segment(Model):
     line_type: LineType
     length: quantity("m", gt=0, fix="give the unstretched segment length in metres.") = Field(
         description="Unstretched length. [m]")
-    n_elements: int | None = Field(None, ge=1, description="Elements a discretised model uses here.")
+    n_elements: int | None = Field(None, ge=1, le=100_000,
+                                     description="Elements a discretised model uses here (at most 100 000).")
 
 
 class Lifting(Model):

@@ -18,6 +18,7 @@ elevation at the origin, WAMIT User Manual v7, section 4.9) and from CSV tables 
 
 from __future__ import annotations
 
+import io
 import math
 import warnings
 from dataclasses import dataclass
@@ -25,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ._text import read_text_file
 from .errors import InputError
 from .seastate import cos_sin
 
@@ -235,8 +237,9 @@ def read_wamit4(path, ulen: float = 1.0) -> RAOTable:
         raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
     if not ulen > 0:
         raise InputError(f"ulen must be > 0 m (WAMIT's ULEN), got {ulen}. Suggested fix: the ULEN of the .gdf file.")
+    text = read_text_file(path, "RAO file", "give the WAMIT option-4 output (.4)")
     try:
-        data = np.loadtxt(path, ndmin=2)
+        data = np.loadtxt(io.StringIO(text), ndmin=2)
     except ValueError as err:
         raise InputError(f"RAO file '{path}' is not a WAMIT .4 table of numbers: {err}. Suggested fix: give the "
                          "option-4 output (PER BETA I MOD PHS RE IM on each line).") from None
@@ -263,18 +266,14 @@ def read_rao_csv(path) -> RAOTable:
     if not path.is_file():
         raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
     names = ("frequency", "heading", "dof", "amplitude", "phase")
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as err:
-        raise InputError(f"RAO file '{path}' cannot be read as UTF-8 text: {err}. Suggested fix: a CSV text file "
-                         f"with the header '{','.join(names)}'.") from None
+    text = read_text_file(path, "RAO file", f"a CSV with the header '{','.join(names)}'")
     if not text.strip():
         raise InputError(f"RAO file '{path}' is empty. Suggested fix: a header row '{','.join(names)}' and one row "
                          "per DOF, heading and frequency (SI units: rad/s, rad, m/m or rad/m, rad).")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # numpy's own warnings on odd rows: the checks below say what is wrong
-            table = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
+            table = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, dtype=float)
     except (ValueError, IndexError) as err:
         raise InputError(f"RAO file '{path}' is not a CSV table: {err}. Suggested fix: a header row "
                          f"'{','.join(names)}' and rows of numbers.") from None

@@ -19,7 +19,8 @@ import xarray as xr
 from ._version import __version__
 from .errors import ConvergenceError, InputError
 
-__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result", "check_schema",
+__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result",
+           "check_schema", "check_time",
            "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
@@ -229,7 +230,40 @@ def check_result(ds: xr.Dataset, source: str = "the result") -> str:
         raise InputError(f"{source} is a '{analysis}' result without the variable(s) {', '.join(missing)} that "
                          f"its figures need. Suggested fix: rerun the case with seacable {__version__} "
                          "('seacable run CASE.yaml'), or give the file written by that run.")
+    check_time(ds, source)
     return analysis
+
+
+def check_time(ds: xr.Dataset, source: str = "the result") -> None:
+    """Check a result's ``time`` coordinate, if it has one: finite and increasing.
+
+    A run writes its output times finite and increasing; a file whose times are not (edited, damaged, or
+    written by something else) would give figures without axes and statistics of NaN.
+
+    Raises
+    ------
+    InputError
+        Naming the first time that is not finite, or the first that does not increase.
+    """
+    if "time" not in ds.variables:
+        return
+    t = np.asarray(ds["time"].values)
+    if t.dtype.kind not in "fiu":
+        raise InputError(f"{source}: its 'time' is not a number (dtype {t.dtype}). Suggested fix: give the file "
+                         "written by 'seacable run' or 'seacable sweep', or run the case again.")
+    t = t.astype(float).ravel()
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        k = int(bad[0])
+        raise InputError(f"{source}: time[{k}] is {t[k]} s, expected finite times ({bad.size} of {t.size} are not). "
+                         "Suggested fix: give the file written by 'seacable run' or 'seacable sweep', or run the "
+                         "case again.")
+    back = np.flatnonzero(np.diff(t) <= 0)
+    if back.size:
+        k = int(back[0]) + 1
+        raise InputError(f"{source}: time[{k}] = {t[k]:g} s does not come after time[{k - 1}] = {t[k - 1]:g} s, "
+                         "expected increasing times. Suggested fix: give the file written by 'seacable run' or "
+                         "'seacable sweep', or run the case again.")
 
 
 _NETCDF_SUFFIXES = (".nc", ".nc4", ".netcdf")
@@ -318,11 +352,10 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
 
     path = result_file(path)
     encoding = {name: compression(v) for name, v in ds.data_vars.items()}
-    try:  # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock
-        with deferred_interrupts(), atomic_path(path) as tmp:
-            ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
-    except OSError as err:
-        raise write_error(path, err) from None
+    # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock;
+    # a failed write (full disk, no permission, the NetCDF library's HDF error) is an InputError naming the file
+    with deferred_interrupts(), atomic_path(path, "the result") as tmp:
+        ds.to_netcdf(tmp, engine="netcdf4", encoding=encoding)
     return path
 
 
@@ -348,10 +381,11 @@ def compression(v) -> dict:
     return {"zlib": True, "complevel": 4} if v.dtype.kind in "fiu" and v.ndim > 0 else {}
 
 
-def write_error(path: Path, err: OSError) -> InputError:
-    """What to tell when the result ``path`` cannot be written."""
-    return InputError(f"cannot write the result '{path}': {err.strerror or err}. Suggested fix: free disk space, "
-                      "or give -o a file in a folder you can write to.")
+def write_error(path: Path, err: BaseException) -> InputError:
+    """What to tell when the result ``path`` cannot be written: :func:`seacable._atomic.write_failure`."""
+    from ._atomic import write_failure
+
+    return write_failure(path, err, "the result")
 
 
 def read_netcdf(path: str | Path) -> xr.Dataset:

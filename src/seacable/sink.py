@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from ._atomic import is_write_failure
 from .results import FiniteGuard, check_schema, compression, make_dataset, result_file, write_error
 
 __all__ = ["MemorySink", "NetcdfSink", "open_sink"]
@@ -127,16 +128,18 @@ class NetcdfSink(MemorySink):
 
     def __init__(self, n_time: int, path: str | Path):
         super().__init__(n_time)
-        from ._atomic import _temporary
+        from ._atomic import clean_folder_once, temporary_path
 
         path = result_file(path)
-        self.path, self.tmp = path, _temporary(path)
+        clean_folder_once(path.parent)   # the temporaries of runs killed outright (SIGKILL) go
+        self.path, self.tmp = path, temporary_path(path)
         self._nc = None
         self._timed: dict[str, int] = {}  # name -> time axis of the variables along time
 
-    def _failed(self, err: OSError):
+    def _failed(self, err: BaseException):
+        error = write_error(self.path, err)   # before the temporary goes: a full disk is seen full
         self.abort()
-        return write_error(self.path, err)
+        return error
 
     def append(self, data: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> None:
         n = coords["time"].size
@@ -148,7 +151,9 @@ class NetcdfSink(MemorySink):
                 for name, axis in self._timed.items():
                     v = data[name] if name in data else coords[name]
                     self._nc[name][_at(axis, self.filled, self.filled + n)] = v.values
-        except OSError as err:
+        except Exception as err:
+            if not is_write_failure(err):
+                raise
             raise self._failed(err) from None
         self.filled += n
 
@@ -204,7 +209,9 @@ class NetcdfSink(MemorySink):
                 nc.close()
                 self._nc = None
                 os.replace(self.tmp, self.path)
-        except OSError as err:
+        except Exception as err:
+            if not is_write_failure(err):
+                raise
             raise self._failed(err) from None
         return xr.open_dataset(self.path, engine="netcdf4")
 

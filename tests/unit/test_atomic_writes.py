@@ -44,7 +44,7 @@ def _result(value: float):
 
 
 def _leftovers(folder: Path) -> list[str]:
-    return sorted(p.name for p in folder.iterdir() if ".partial" in p.name or p.name.startswith(".seacable"))
+    return sorted(p.name for p in folder.iterdir() if ".partial" in p.name or "seacable-tmp" in p.name or p.name.startswith(".seacable"))
 
 
 class Boom(Exception):

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import copy
 import math
+import time
 from pathlib import Path
 
 import numpy as np
@@ -203,6 +204,10 @@ def _option_corpus() -> list[Bad]:
         out.append(Bad(f"sweep--scheduler={value!r}", ["sweep", "{sweep}", "--scheduler", value], ["--scheduler"]))
     out.append(Bad("sweep-scheduler-unreachable", ["sweep", "{sweep}", "--scheduler", "tcp://127.0.0.1:9"],
                    ["scheduler", "127.0.0.1:9"]))
+    # a local cluster of 100 000 processes never starts: refused with the bound (4 per core)
+    for value in ("100000", "1e9"):
+        out.append(Bad(f"sweep--workers={value}-too-many", ["sweep", "{sweep}", "--workers", value],
+                       ["--workers", "at most", "per core"]))
     out.append(Bad("sweep-workers-and-scheduler", ["sweep", "{sweep}", "--workers", "2", "--scheduler",
                                                   "synchronous"], ["workers"]))
     for command, target in (("run", STATIC), ("validate", STATIC), ("plot", "{nc_static}"), ("animate", "{nc_lay}"),
@@ -425,7 +430,35 @@ def _system_corpus() -> list[Bad]:
     return out
 
 
-CORPUS = (_case_corpus() + _other_corpus() + _system_corpus() + _option_corpus() + _path_corpus() + _motion_corpus() + _netcdf_corpus()
+# --- the corpus of bad input files (tests/unit/bad_inputs/) -------------------------------------
+
+BAD_INPUTS = Path(__file__).resolve().parent / "bad_inputs"
+"""One bad input file a file (its data files, if any, in ``data/``). Its first line is a comment
+``# expect: PHRASE``: what the message must hold (the key, the option or the file at fault). A sweep file
+is given to ``seacable validate`` and ``seacable sweep``, any other file (a case, a MoorDyn deck) to
+``seacable validate`` and ``seacable run``. A new bad input is a new file there, nothing else."""
+
+
+def _expected(path: Path) -> str:
+    first = path.read_bytes().split(b"\n", 1)[0].decode("ascii").strip()
+    assert first.startswith("# expect:"), f"{path.name}: its first line must be '# expect: PHRASE', got {first!r}"
+    return first.removeprefix("# expect:").strip()
+
+
+def _file_corpus() -> list[Bad]:
+    from seacable.sweeps import is_sweep_file
+
+    out = []
+    for path in sorted(p for p in BAD_INPUTS.iterdir() if p.is_file()):
+        phrase = _expected(path)
+        second = ["sweep", str(path), "-o", "{tmp_out}", "--no-plots"] if is_sweep_file(path) else \
+            ["run", str(path), "--no-plots"]
+        for argv in (["validate", str(path)], second):
+            out.append(Bad(f"file-{path.name}-{argv[0]}", argv, [phrase]))
+    return out
+
+
+CORPUS = (_file_corpus() + _case_corpus() + _other_corpus() + _system_corpus() + _option_corpus() + _path_corpus() + _motion_corpus() + _netcdf_corpus()
           + _sweep_corpus() + _size_corpus())
 
 
@@ -545,9 +578,18 @@ def test_bad_input_gets_one_clear_message(bad, shared, tmp_path, capsys, monkeyp
     for key, content in bad.files.items():
         suffix = ".txt" if key == "md" else ".yaml"   # a MoorDyn file is found by its text, not its suffix
         files[key] = _write(tmp_path / f"{key}{suffix}", content)
+    files["tmp_out"] = str(tmp_path / "out")
     argv = [_fill(a, files) for a in bad.argv]
+    t0 = time.monotonic()
     status = main(argv)
+    elapsed = time.monotonic() - t0
     out, err = capsys.readouterr()
+    if bad.id.startswith("file-"):
+        # refused as it is read, before a kernel is compiled or a step computed: a second or two, even on a
+        # loaded machine; a bad size that is not refused (a billion elements) runs for hours
+        assert elapsed < 60, (elapsed, err)
+    # nothing written where the command was run: no result (and so no NaN or inf in one)
+    assert not [p for p in tmp_path.rglob("*") if p.suffix in (".nc", ".png", ".csv")], list(tmp_path.rglob("*"))
     assert status not in (0, 3), (status, err)
     assert status == 2, (status, err)
     assert "Traceback" not in out + err

@@ -181,7 +181,7 @@ def test_case_file_with_bathymetry_file(tmp_path):
 
 def test_missing_bathymetry_file_is_a_clear_error(tmp_path, capsys):
     bathy = sc.Bathymetry(file=str(tmp_path / "nope.csv"))
-    with pytest.raises(InputError, match="cannot be read"):
+    with pytest.raises(InputError, match="nope.csv. does not exist"):
         sc.run(case(bathymetry=bathy))
 
 

@@ -267,7 +267,7 @@ def test_a_write_that_fails_midway_says_why_and_leaves_no_file(tmp_path, monkeyp
     monkeypatch.setattr(NetcdfSink, "append", full_at_third)
     monkeypatch.setattr(S, "BLOCK_VALUES", 2**14)
     out = tmp_path / "three.nc"
-    with pytest.raises(sc.InputError, match=r"cannot write the result .*three\.nc': No space left on device\. "
-                                            r"Suggested fix: free disk space"):
+    with pytest.raises(sc.InputError, match=r"cannot write the result .*three\.nc': the disk is full \(No space left "
+                                            r"on device\)\..*Suggested fix: free disk space"):
         _run(_three_case(5.0), out)
     assert list(tmp_path.iterdir()) == []

@@ -339,3 +339,44 @@ def test_the_report_of_datasets_from_python(synth, tmp_path):
     row = chk[chk["check"] == "offset"].iloc[0]
     assert row["item"] == "platform" and row["demand [N or m]"] == 10.0 and row["utilisation [-]"] == 0.5
     assert "result Datasets (Python)" in written[0].read_text(encoding="utf-8")
+
+
+# ------------------------------------------------------------------------------------------ bad inputs (issue 37)
+
+@pytest.mark.parametrize(("where", "value", "message"), [
+    (-1, math.inf, "time[599] is inf s"),
+    (-1, math.nan, "time[599] is nan s"),
+    (0, -math.inf, "time[0] is -inf s"),
+    (slice(None), math.nan, "time[0] is nan s, expected finite times (600 of 600"),
+    (300, math.nan, "time[300] is nan s"),
+    (300, 0.0, "time[300] = 0 s does not come after time[299] = 149.5 s"),
+])
+def test_a_result_with_a_bad_time_is_refused(synth, tmp_path, capsys, where, value, message):
+    """A result file whose time is not finite and increasing (edited, damaged, written by another tool): exit 2
+    naming the file and the time, no report written (it was an internal error, 'Axis limits cannot be NaN or
+    Inf', or, for one NaN inside, a report of NaN statistics)."""
+    from seacable.results import write_netcdf
+
+    ds = synth.result({"L1": _record(1)}, case=synth.case(lines=("L1",)))
+    t = ds["time"].values.copy()
+    t[where] = value
+    nc = write_netcdf(ds.assign_coords(time=("time", t, ds["time"].attrs)), tmp_path / "bad_time.nc")
+    out = tmp_path / "r.html"
+    assert main(["report", str(nc), "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and str(nc) in err and "Traceback" not in err and err.count("\n") == 1, err
+    assert list(tmp_path.glob("r*")) == []
+
+
+@pytest.mark.parametrize("content", [b"hs,tp,probability\n4.0,9.0,0.8\n8.0,11.0,0.2 # \xe9t\xe9\n",   # Latin-1
+                                     b"\xff\xfeh\x00s\x00"])                                             # UTF-16
+def test_a_scatter_diagram_not_in_utf8_is_refused(sweep_dir, tmp_path, capsys, content):
+    folder, _ = sweep_dir
+    scatter = tmp_path / "scatter_latin1.csv"
+    scatter.write_bytes(content)
+    out = tmp_path / "r.html"
+    assert main(["report", str(folder), "-o", str(out), "--scatter", str(scatter)]) == 2
+    err = capsys.readouterr().err
+    assert f"scatter diagram '{scatter}'" in err and ("not UTF-8" in err or "binary" in err), err
+    assert "Traceback" not in err and err.count("\n") == 1, err
+    assert not out.exists()

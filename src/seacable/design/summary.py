@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 import csv
+import io
 import json
 import math
 from collections.abc import Iterator, Mapping, Sequence
@@ -37,6 +38,7 @@ import xarray as xr
 import yaml
 
 from ..errors import InputError
+from ..results import check_time
 from . import fatigue, statistics
 
 __all__ = ["DYNAMIC_ANALYSES", "HEADING_PATH", "HS_PATH", "SEED_PATH", "TP_PATH", "LineInfo", "Run",
@@ -116,6 +118,7 @@ def _check_dynamic(ds: xr.Dataset, where: str) -> None:
         if name not in ds.variables:
             raise InputError(f"{where} is a '{analysis}' result without '{name}'. Suggested fix: give the file "
                              "written by 'seacable run' or 'seacable sweep'.")
+    check_time(ds, where)
 
 
 def case_data(ds: xr.Dataset) -> dict | None:
@@ -821,13 +824,11 @@ def read_scatter(path: str | Path) -> pd.DataFrame:
     ``heading`` [rad]), one sea state a row, checked as it is read: hs and tp finite and > 0, headings finite,
     the probabilities finite, >= 0 and summing to 1 (:func:`~seacable.design.fatigue.check_probabilities`, as
     :func:`~seacable.design.fatigue.fatigue_life` checks them again)."""
+    from .._text import read_text_file
+
     path = Path(path)
-    try:
-        with path.open(newline="", encoding="utf-8") as f:
-            rows = [r for r in csv.reader(f) if any(c.strip() for c in r)]
-    except OSError as err:
-        raise InputError(f"scatter diagram '{path}' cannot be read: {err.strerror or err}. Suggested fix: give a CSV "
-                         "file with columns hs, tp, probability.") from None
+    text = read_text_file(path, "scatter diagram", "give a CSV file with columns hs, tp, probability")
+    rows = [r for r in csv.reader(io.StringIO(text, newline="")) if any(c.strip() for c in r)]
     header = [h.strip().lower() for h in rows[0]] if rows else []
     need = ["hs", "tp", "probability"]
     missing = [c for c in need if c not in header]

@@ -95,14 +95,13 @@ def read_yaml(path: str | Path, what: str = "case file") -> tuple[Any, str]:
         If the file cannot be read or is not YAML, or if a mapping gives the same key twice
         (named with both line numbers); ``what`` names the file in the message.
     """
+    from .._text import read_text_file
+
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise CaseFileError(f"{what} '{path}' does not exist. Suggested fix: check the path; "
-                            "examples/ holds ready-made ones.") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise CaseFileError(f"{what} '{path}' cannot be read: {err}.") from None
+        text = read_text_file(path, what, "give a YAML file; examples/ holds ready-made ones")
+    except InputError as err:
+        raise CaseFileError(str(err)) from None
     try:
         return _safe_load(text), text
     except _DuplicateKey as err:

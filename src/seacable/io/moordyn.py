@@ -118,6 +118,7 @@ from pydantic import ValidationError
 
 from .. import _limits, _validate
 from .._model import format_validation_error, suggest
+from .._text import read_text_file
 from ..errors import InputError, SeacableWarning
 
 __all__ = [
@@ -536,14 +537,7 @@ def _load(path_or_text, name):
         if not path.is_file():
             raise InputError(f"MoorDyn file {str(path)!r} not found. Suggested fix: check the path, "
                              "or pass the file's text (with its newlines) instead of a path.")
-        data = path.read_bytes()
-        if b"\x00" in data[:4096]:
-            raise InputError(f"{label}: this is a binary file, not a MoorDyn text input file "
-                             "(a MoorDyn .ic state file?). Suggested fix: pass the MoorDyn .txt input.")
-        try:
-            text = data.decode("utf-8")
-        except UnicodeDecodeError:
-            text = data.decode("latin-1")
+        text = read_text_file(path, "MoorDyn file", "pass the MoorDyn .txt input (not a binary .ic state file)")
         return text, str(path), label
     if isinstance(path_or_text, str):
         return path_or_text, None, name or "<MoorDyn text>"
@@ -778,7 +772,7 @@ def _syrope(rd, lineno, type_name, token):
                                f"{'' if rd.folder is None else f' (looked for {rd.folder / token})'}. Suggested fix: "
                                "put it next to the deck and read the deck from its file.")
     values, numeric = {}, 0
-    for line in (rd.folder / token).read_text(errors="replace").splitlines():
+    for line in read_text_file(rd.folder / token, "Syrope file").splitlines():
         tokens = _strip_comment(line).split()
         if len(tokens) >= 2:
             values[tokens[1].upper()] = tokens[0]
@@ -816,7 +810,7 @@ def _tension_strain_table(rd, lineno, type_name, token):
                                f"not a file (looked for {path}). Suggested fix: put the table next to the deck, "
                                "or write a constant EA in N.")
     rows = []
-    for k, line in enumerate(path.read_text(errors="replace").splitlines(), start=1):
+    for k, line in enumerate(read_text_file(path, "strain-tension table").splitlines(), start=1):
         tokens = _strip_comment(line).split()
         if len(tokens) < 2 or _as_float(tokens[0]) is None:
             continue

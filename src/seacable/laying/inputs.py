@@ -6,6 +6,7 @@ x runs along the ship's track (the ship moves towards +x), z is up with 0 at the
 from __future__ import annotations
 
 import csv
+import io
 import math
 from pathlib import Path
 from typing import Annotated, Literal
@@ -365,13 +366,13 @@ def sinking_weights(line, water_density: float, gravity: float) -> list[float]:
 def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
     """``(path, header, rows)`` of a CSV file: the header in lower case, blank rows dropped; a file that cannot
     be read is an InputError naming ``what`` it is."""
+    from .._text import read_text_file
+
     path = Path(file)
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as handle:
-            rows = [[c.strip() for c in row] for row in csv.reader(handle) if any(c.strip() for c in row)]
-    except OSError as err:
-        raise InputError(f"{what} '{path}' cannot be read ({err.strerror or err}). Suggested fix: check the path "
-                         "(relative to the case file's folder).") from None
+    text = read_text_file(path, what, f"give a CSV text file with a header row (its path relative to the case "
+                                      "file's folder)")
+    rows = [[c.strip() for c in row] for row in csv.reader(io.StringIO(text, newline=""))
+            if any(c.strip() for c in row)]
     return path, [c.lower() for c in rows[0]] if rows else [], rows
 
 

@@ -9,6 +9,7 @@ multiplied by a smooth ramp ``r(t) = (1 - cos(pi t / T_ramp)) / 2`` over ``ramp`
 from __future__ import annotations
 
 import functools
+import io
 import math
 import warnings
 from dataclasses import dataclass
@@ -20,6 +21,7 @@ from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, quantity
 from .._ramp import smooth_ramp
+from .._text import read_text_file
 from ..errors import InputError, SeacableWarning
 
 __all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "RAOMotion", "SeaRAOMotion", "TimeSeriesMotion", "bind",
@@ -64,11 +66,9 @@ def _apply(base, off, doff, ddoff):
 
 def _read_table(path: Path, names: tuple[str, ...]) -> np.ndarray:
     """A CSV of named columns (a header row; '#' comments) -> array with the columns of ``names``."""
-    if not path.exists():
-        raise InputError(f"motion file '{path}' does not exist. Suggested fix: give its path relative to the case "
-                         "file.")
+    text = read_text_file(path, "motion file", "give its path relative to the case file")
     try:
-        data = np.genfromtxt(path, delimiter=",", names=True, comments="#", dtype=float, encoding="utf-8")
+        data = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, comments="#", dtype=float)
     except ValueError as err:
         raise InputError(f"motion file '{path}' is not a CSV table of numbers: {err}.") from None
     have = data.dtype.names or ()
@@ -323,23 +323,7 @@ def motion_from_csv(path) -> TimeSeriesMotion | PlatformMotion:
     """
     path = Path(path)
     fix = "give a CSV text file with a header row, e.g. 'time,x,y,z', and one row of numbers per time"
-    if not path.exists():
-        raise InputError(f"motion file '{path}' does not exist. Suggested fix: check the path.")
-    if path.is_dir():
-        raise InputError(f"motion file '{path}' is a folder, not a file. Suggested fix: {fix}.")
-    try:
-        raw = path.read_bytes()
-    except OSError as err:
-        raise InputError(f"motion file '{path}' cannot be read: {err.strerror or err}. Suggested fix: check its "
-                         "permissions.") from None
-    if b"\0" in raw:
-        raise InputError(f"motion file '{path}' is not a text (CSV) file: it holds binary data. Suggested fix: "
-                         f"{fix}.")
-    try:
-        text = raw.decode("utf-8-sig")
-    except UnicodeDecodeError as err:
-        raise InputError(f"motion file '{path}' is not UTF-8 text: byte {err.start} cannot be read. Suggested "
-                         f"fix: save it as UTF-8 (plain ASCII numbers and column names).") from None
+    text = read_text_file(path, "motion file", fix)
     header = next((ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")), "")
     if not header:
         raise InputError(f"motion file '{path}' is empty (no header row). Suggested fix: {fix}.")

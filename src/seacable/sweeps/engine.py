@@ -16,6 +16,7 @@ worker died is always run again.
 
 from __future__ import annotations
 
+import contextlib
 import datetime
 import json
 import logging
@@ -34,7 +35,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
-from .._atomic import PARTIAL, atomic_write, deferred_interrupts, interrupt_requested
+from .._atomic import atomic_write, clean_folder_once, deferred_interrupts, interrupt_requested
 from .._version import __version__
 from ..errors import InputError, SeacableError, SeacableWarning
 from ..extremes import case_extremes
@@ -42,7 +43,7 @@ from ..line import LineType, Segment
 from ..results import make_dataset, var, write_netcdf
 from .spec import Sweep, SweepCase, load_sweep, parse_path
 
-__all__ = ["SweepProgress", "run_case", "summary_dataset", "sweep", "work_estimate"]
+__all__ = ["SweepProgress", "check_workers", "run_case", "summary_dataset", "sweep", "work_estimate"]
 
 #: ``scheduler`` value that runs the cases in this process, one after another, without Dask.
 SYNCHRONOUS = "synchronous"
@@ -205,6 +206,38 @@ def check_scheduler(scheduler) -> None:
                          "out --scheduler to run on this machine's cores.")
 
 
+def _cores() -> int:
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+
+#: most worker processes of a local cluster per core: more only wait (each case runs on one core) and each
+#: costs a Python process (about 100 MB and a second or two to start)
+WORKERS_PER_CORE = 4
+
+
+def check_workers(workers, option: str = "workers") -> int:
+    """Check the size of a local cluster: a whole number from 1 to :data:`WORKERS_PER_CORE` per core.
+
+    Raises
+    ------
+    InputError
+        Naming ``option``, the value, the bound and this machine's cores. 100 000 workers would not
+        start before the machine ran out of memory and processes, and the sweep would seem to hang.
+    """
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise InputError(f"{option} must be a whole number >= 1, got {workers!r}. Suggested fix: leave it "
+                         "out for one worker per core.")
+    cores = _cores()
+    most = WORKERS_PER_CORE * cores
+    if workers > most:
+        raise InputError(f"{option} must be at most {most} ({WORKERS_PER_CORE} per core of this machine's {cores}), "
+                         f"got {workers}: each worker is a process of its own (about 100 MB), and the cases run "
+                         f"one per core whatever their number. Suggested fix: leave out {option} (one worker per "
+                         f"core), or give {option} {cores}; for more cores, start a Dask cluster and give its "
+                         "address with --scheduler.")
+    return int(workers)
+
+
 def _reachable(scheduler: str, timeout: float = 5.0) -> None:
     """Open (and close) a TCP connection to the scheduler, so that a wrong address fails in seconds.
 
@@ -233,7 +266,7 @@ def _connect(stack: ExitStack, scheduler, workers: int | None):
     if isinstance(scheduler, Client):
         return scheduler
     if scheduler is None:
-        n = workers or (len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1)
+        n = workers or _cores()
         cluster = stack.enter_context(LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                                    dashboard_address=None, silence_logs=logging.ERROR))
         return stack.enter_context(Client(cluster, set_as_default=False))
@@ -270,8 +303,11 @@ class _Store:
         except OSError as err:
             raise InputError(f"cannot create the output folder '{self.cases}': {err}. Suggested fix: give -o "
                              "a folder you can write to.") from None
-        for stale in [*self.cases.glob(f".*{PARTIAL}.*"), *self.cases.glob(".sweep-*.token")]:
+        clean_folder_once(self.root)
+        clean_folder_once(self.cases)   # the temporary files of a sweep killed outright (SIGKILL)
+        for stale in self.cases.glob(".sweep-*.token"):
             stale.unlink(missing_ok=True)
+        self.damaged: list[str] = []   # the cases recorded done whose result file is damaged (earlier())
         self.token = f".sweep-{uuid.uuid4().hex}.token"
         (self.cases / self.token).touch()
 
@@ -296,10 +332,49 @@ class _Store:
             return None
         if record.get("key") != sc.key:
             return None
-        if record.get("status") == "done" and self.result_path(sc).exists():
-            return record
+        if record.get("status") == "done":
+            problem = self.damage(sc, record)
+            if problem is None:
+                return record
+            self.damaged.append(f"case {sc.index} ({self.result_path(sc)}: {problem})")
+            return None
         if record.get("status") == "failed" and not retry_failed and not record.get("retry"):
             return record
+        return None
+
+    def damage(self, sc: SweepCase, record: dict) -> str | None:
+        """What is wrong with the result file of a case recorded as done; None if it is whole.
+
+        The record is not trusted: the file must exist, have the size recorded when it was written,
+        open as NetCDF, belong to this case (its ``sweep_key``) and hold the variables of its analysis
+        (:data:`seacable.results.ANALYSIS_VARIABLES`). Its data are not read: a sweep of thousands of
+        cases resumes in seconds.
+        """
+        import netCDF4
+
+        from ..results import ANALYSIS_VARIABLES
+
+        path = self.result_path(sc)
+        try:
+            size = path.stat().st_size
+        except OSError:
+            return "missing"
+        if record.get("result_bytes") is not None and size != record["result_bytes"]:
+            return f"{size} bytes, {record['result_bytes']} when it was written"
+        try:
+            with netCDF4.Dataset(path, "r") as nc:
+                names = set(nc.variables) | set(nc.dimensions)
+                attrs = {k: nc.getncattr(k) for k in ("analysis", "sweep_key") if k in nc.ncattrs()}
+        except Exception as err:  # noqa: BLE001  (whatever the library says of a damaged file)
+            return f"not a readable NetCDF file ({err})"
+        if attrs.get("sweep_key", sc.key) != sc.key:
+            return "the result of another case"
+        analysis = attrs.get("analysis")
+        if analysis is None:
+            return "no 'analysis' attribute"
+        missing = [n for n in ANALYSIS_VARIABLES.get(analysis, ()) if n not in names]
+        if missing:
+            return f"without the variable(s) {', '.join(missing)} of a '{analysis}' result"
         return None
 
     def write(self, sc: SweepCase, outcome: dict) -> dict:
@@ -314,6 +389,10 @@ class _Store:
             if outcome.get("result") is not None:
                 target = self.target(sc)
                 write_result(outcome["result"], self.cases, sc.stem, target.attrs)
+            if record["status"] == "done":   # the size the result has whole: see damage()
+                with contextlib.suppress(OSError):
+                    record["result_bytes"] = self.result_path(sc).stat().st_size
+                text = json.dumps(record, indent=1, default=str)
             atomic_write(self.record_path(sc), lambda tmp: tmp.write_text(text, encoding="utf-8"))
         return record
 
@@ -361,9 +440,7 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
     """
     sweep_ = spec if isinstance(spec, Sweep) else load_sweep(spec)
     if workers is not None:
-        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
-            raise InputError(f"workers must be a whole number >= 1, got {workers!r}. Suggested fix: leave it "
-                             "out for one worker per core.")
+        check_workers(workers)
         if scheduler is not None:
             raise InputError(f"workers ({workers}) sizes the local cluster seacable starts; with scheduler "
                              f"{scheduler!r} it has no meaning. Suggested fix: leave out one of the two.")
@@ -389,6 +466,11 @@ def sweep(spec: Sweep | str | Path, outdir: str | Path, *, scheduler=None, worke
         if earlier is not None:
             records[sc.index] = earlier
             reused.add(sc.index)
+    if store.damaged:
+        shown = "; ".join(store.damaged[:10]) + (f"; and {len(store.damaged) - 10} more" if len(store.damaged) > 10
+                                                  else "")
+        warnings.warn(f"{len(store.damaged)} case result(s) recorded as done in '{store.cases}' are damaged or "
+                      f"missing, and are run again: {shown}.", SeacableWarning, stacklevel=2)
     report(None)
     for sc in cases:
         if sc.case is None and sc.index not in records:

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import copy
 import csv
+import io
 import difflib
 import hashlib
 import itertools
@@ -389,13 +390,15 @@ def _base_data(base) -> dict:
 
 def _read_table(path: Path, source: str) -> dict[str, list]:
     """Columns of a CSV table of cases, each cell read as a YAML scalar (numbers, true/false, text)."""
+    from .._text import read_text_file
+
     try:
-        with path.open(newline="", encoding="utf-8") as f:
-            rows = list(csv.reader(f))
-    except FileNotFoundError:
-        raise CaseFileError(f"{source}: table '{path}' does not exist. Suggested fix: give its path relative "
-                            "to the sweep file.") from None
-    except (OSError, UnicodeDecodeError, csv.Error) as err:
+        text = read_text_file(path, f"{source}: table", "give a CSV file of parameter paths and values, its path "
+                                                        "relative to the sweep file")
+        rows = list(csv.reader(io.StringIO(text, newline="")))
+    except InputError as err:
+        raise CaseFileError(str(err)) from None
+    except csv.Error as err:
         raise CaseFileError(f"{source}: table '{path}' cannot be read: {err}.") from None
     rows = [r for r in rows if any(cell.strip() for cell in r)]
     if len(rows) < 2:

@@ -50,6 +50,7 @@ References
 from __future__ import annotations
 
 import csv
+import io
 import functools
 import math
 import os
@@ -463,14 +464,11 @@ def _load_table(resolved: str, kind: str) -> tuple[np.ndarray, np.ndarray]:
     """Read and check a path table: time (n,) and the 2 or 3 value columns (n, k)."""
     columns = ("x", "y", "z") if kind == "position" else ("u", "v", "w")
     unit = "m" if kind == "position" else "m/s"
-    try:
-        with open(resolved, newline="", encoding="utf-8-sig") as handle:
-            rows = [row for row in csv.reader(handle)]
-    except (OSError, UnicodeDecodeError) as err:
-        reason = getattr(err, "strerror", None) or str(err)
-        raise _table_error(resolved, f"cannot be read ({type(err).__name__}: {reason}).",
-                           "check the path (relative to the case file's folder) and that it is a "
-                           "UTF-8 text CSV file.") from None
+    from .._text import read_text_file
+
+    text = read_text_file(resolved, "vessel table file", "give a UTF-8 CSV file, its path relative to the case "
+                                                         "file's folder")
+    rows = list(csv.reader(io.StringIO(text, newline="")))
     numbered = [(i + 1, row) for i, row in enumerate(rows) if any(cell.strip() for cell in row)]
     if not numbered:
         raise _table_error(resolved, "is empty.", f"write a header row 'time,{columns[0]},{columns[1]}' "

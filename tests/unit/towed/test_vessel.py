@@ -364,7 +364,7 @@ def test_degree_warnings():
 
 
 @pytest.mark.parametrize("content, kind, match", [
-    (None, "position", "cannot be read.*FileNotFoundError"),
+    (None, "position", "vessel table file .*bad.csv' does not exist"),
     ("", "position", "is empty"),
     ("time,x\n0,0\n1,1\n", "position", r"no column 'y' for a position table.*or set 'kind'"),
     ("time,x,y\n0,0,0\n1,1,1\n", "velocity", r"no column 'u', 'v' for a velocity table"),
@@ -386,7 +386,7 @@ def test_table_errors(tmp_path, content, kind, match):
 
 def test_table_unreadable(tmp_path):
     (tmp_path / "folder.csv").mkdir()
-    with pytest.raises(InputError, match="folder.csv': cannot be read .IsADirectoryError"):
+    with pytest.raises(InputError, match="folder.csv' is a folder, not a file"):
         sample_path(TablePath(file="folder.csv", kind="position"), [0.0], base_dir=tmp_path)
 
 
