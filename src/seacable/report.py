@@ -73,12 +73,16 @@ def _scientific(x: float, sig: int) -> str:
     return f"{m.replace('-', '&minus;')}&times;10<sup>{int(e)}</sup>"
 
 
-def _column(values, scale: float = 1.0, sig: int = 4) -> list[str]:
+def _column(values, scale: float = 1.0, sig: int = 4, like=None) -> list[str]:
     """The numbers of one table column in one format: fixed decimals, those that give the largest magnitude
     ``sig`` significant digits, when every other nonzero value still shows two; else all scientific with
-    ``sig`` significant digits. None or NaN is a dash, 0 is "0" (and "0.00" in a column of two decimals)."""
-    xs = [math.nan if v is None or (isinstance(v, float) and math.isnan(v)) else float(v) / scale for v in values]
-    finite = [abs(x) for x in xs if math.isfinite(x) and x != 0.0]
+    ``sig`` significant digits. None or NaN is a dash, 0 is "0" (and "0.00" in a column of two decimals).
+    ``like``: more values [SI] the format is chosen over too (columns of one quantity shown alike)."""
+    def scaled(vs):
+        return [math.nan if v is None or (isinstance(v, float) and math.isnan(v)) else float(v) / scale for v in vs]
+
+    xs = scaled(values)
+    finite = [abs(x) for x in xs + scaled(like if like is not None else []) if math.isfinite(x) and x != 0.0]
     if finite:
         hi, lo = max(finite), min(finite)
         decimals = max(sig - 1 - math.floor(math.log10(hi)), 0)
@@ -100,9 +104,11 @@ def _column(values, scale: float = 1.0, sig: int = 4) -> list[str]:
     return out
 
 
-def _columns(table: pd.DataFrame, spec: dict[str, tuple[float, int]]) -> dict[str, list[str]]:
-    """The formatted columns of a table: column -> (scale, significant digits)."""
-    return {c: _column(list(table[c]), scale, sig) for c, (scale, sig) in spec.items()}
+def _columns(table: pd.DataFrame, spec: dict[str, tuple[float, int]], alike: tuple[str, ...] = ()) -> dict[str, list[str]]:
+    """The formatted columns of a table: column -> (scale, significant digits); the columns ``alike`` (one
+    quantity: a demand, its capacity and margin) in one format chosen over all of them."""
+    pool = [v for c in alike for v in table[c]]
+    return {c: _column(list(table[c]), scale, sig, pool if c in alike else None) for c, (scale, sig) in spec.items()}
 
 
 def _e(text) -> str:
@@ -114,15 +120,17 @@ _ABSOLUTE = re.compile(r"(?<![\w.~/:])(/(?:[^\s'\"<>|,;()\[\]{}]+/)+[^\s'\"<>|,;
 
 def _relative(text, base: Path | None) -> str:
     """``text`` with each absolute path in it shown relative to ``base`` (the report's folder), or by its file name
-    alone where that path is on another drive: a report shows no absolute path of the machine it was made on."""
+    alone where the two share no folder but the root (or a drive): a report shows no absolute path of the
+    machine it was made on."""
     def one(m):
         path = m.group(1)
-        if base is None:
-            return Path(path).name
         try:
-            return os.path.relpath(path, base)
-        except ValueError:
+            common = os.path.commonpath([path, str(base)]) if base is not None else ""
+        except ValueError:  # another drive
+            common = ""
+        if not common or Path(common) == Path(common).parent:  # only the root in common
             return Path(path).name
+        return os.path.relpath(path, base)
 
     return _ABSOLUTE.sub(one, str(text))
 
@@ -322,8 +330,9 @@ def _checks_html(chk: pd.DataFrame) -> str:
             continue
         headers = ["Load case", "Check", "Item", f"Demand [{shown}]", f"Capacity [{shown}]", f"Margin [{shown}]",
                    "Utilisation [-]", "Status"]
-        col = _columns(group, {"demand": (scale, 4), "capacity": (scale, 4), "margin": (scale, 4),
-                               "utilisation": (1.0, 3)})
+        col = _columns(group, {"demand": (scale, 4), "capacity": (scale, 4), "margin": (scale, 4)},
+                       alike=("demand", "capacity", "margin"))
+        col["utilisation"] = _column(list(group["utilisation"]), 1.0, 4, like=[1.0])  # three decimals (below 10)
         rows, classes = [], []
         for k, (_, r) in enumerate(group.iterrows()):
             if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
@@ -486,11 +495,13 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) ->
         top = ratio.loc[ratio["utilisation"].idxmax()]
         u = float(top["utilisation"])
         cards.append(("bad" if u > 1 else "ok", f"Largest utilisation ({_e(top['check'])}, {_e(top['item'])})",
-                      _num(u, sig=3)))
-    for _, r in failed[failed["utilisation"].isna()].iterrows():  # a zero capacity exceeded: its margin says it
-        scale, unit = (1.0, "m") if r["unit"] == "m" else (1e3, "kN")
-        cards.append(("bad", f"{_e(r['check'])} ({_e(r['item'])}, capacity 0)",
-                      f"margin {_num(r['margin'], scale=scale)} {unit}"))
+                      _column([u], sig=4, like=[1.0])[0]))  # as the table shows it
+    zero = failed[failed["utilisation"].isna()]  # a zero capacity exceeded: no ratio, the margin says it
+    for check, g in zero.groupby("check", sort=False):
+        worst = g.loc[g["margin"].idxmin()]
+        scale, unit = (1.0, "m") if worst["unit"] == "m" else (1e3, "kN")
+        cards.append(("bad", f"{_e(check)}: capacity 0, {len(g)} fail (worst: {_e(worst['item'])})",
+                      f"margin {_num(worst['margin'], scale=scale)} {unit}"))
     if not skipped.empty:
         cards.append(("warn", "Not checked", f"{len(skipped)} check(s)"))
     fair = ext[ext["end"] == "fairlead"]

@@ -495,7 +495,7 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())
         same_storm = math.isclose(storm, duration, rel_tol=1e-6)
-        short = "" if same_storm else f" of {duration:.4g} s runs, NOT of the {storm:.4g} s storm (no Weibull fit)"
+        short = "" if same_storm else f" of {duration:.6g} s runs, NOT of the {storm:.6g} s storm (no Weibull fit)"
         if math.isfinite(g_mpm) and same_storm:
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds"
         elif math.isfinite(w_mpm):
@@ -504,8 +504,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds{short}"
         else:
             design, basis = float(g["maximum"].max()), f"largest simulated maximum of {n} seed(s){short}"
-        method = (f"Gumbel (max. likelihood) over seeds' maxima of {duration:.4g} s runs, {GUMBEL_REFERENCE}; "
-                  f"3-parameter Weibull of each seed's peaks raised to a {storm:.4g} s storm, {WEIBULL_REFERENCE}")
+        method = (f"Gumbel (max. likelihood) over seeds' maxima of {duration:.6g} s runs, {GUMBEL_REFERENCE}; "
+                  f"3-parameter Weibull of each seed's peaks raised to a {storm:.6g} s storm, {WEIBULL_REFERENCE}")
         rows.append({"load_case": load_case, "line": line, "end": end, "seeds": n, "duration": duration,
                      "storm": storm, "maximum_largest": float(g["maximum"].max()),
                      "maximum_mean": float(g["maximum"].mean()), "mean": mean, "std": float(g["std"].mean()),
