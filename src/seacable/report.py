@@ -75,7 +75,7 @@ def _scientific(x: float, sig: int) -> str:
 
 def _column(values, scale: float = 1.0, sig: int = 4, like=None) -> list[str]:
     """The numbers of one table column in one format: fixed decimals, those that give the largest magnitude
-    ``sig`` significant digits, when every other nonzero value still shows two; else all scientific with
+    ``sig`` significant digits, when every other nonzero value still shows one; else all scientific with
     ``sig`` significant digits. None or NaN is a dash, 0 is "0" (and "0.00" in a column of two decimals).
     ``like``: more values [SI] the format is chosen over too (columns of one quantity shown alike)."""
     def scaled(vs):
@@ -86,7 +86,7 @@ def _column(values, scale: float = 1.0, sig: int = 4, like=None) -> list[str]:
     if finite:
         hi, lo = max(finite), min(finite)
         decimals = max(sig - 1 - math.floor(math.log10(hi)), 0)
-        fixed = hi < 1e7 and lo >= 10.0 ** (1 - decimals) and decimals <= 6
+        fixed = hi < 1e7 and lo >= 10.0 ** -decimals and decimals <= 6
     else:
         decimals, fixed = 0, True
     out = []
@@ -316,16 +316,19 @@ def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
     return _table(headers, rows, cls="num extremes", single=ext["load_case"].nunique() == 1) + _notes_block(notes)
 
 
-#: The checks' tables of the page, one per unit: (unit of the rows, what they check, unit shown, scale).
-_CHECK_GROUPS = (("N", "Line tensions and anchor uplift", "kN", 1e3), ("m", "Offsets", "m", 1.0))
+#: The checks' tables of the page, one per quantity: (rows, title, unit shown, scale, class).
+_CHECK_GROUPS = ((lambda c: (c["unit"] == "N") & (c["check"] != "anchor uplift"), "Line tensions", "kN", 1e3, "kN"),
+                 (lambda c: c["check"] == "anchor uplift", "Anchor uplift", "kN", 1e3, "uplift"),
+                 (lambda c: c["unit"] == "m", "Offsets", "m", 1.0, "m"))
 
 
 def _checks_html(chk: pd.DataFrame) -> str:
-    """The checks, one table per unit (kN, m): demand, capacity and margin in the header's unit, utilisation
+    """The checks, one table per quantity (line tensions and anchor uplift in kN, offsets in m): demand,
+    capacity and margin in the header's unit, utilisation
     only where the capacity is positive (a dash where it is zero: the margin says it)."""
     parts = []
-    for unit, title, shown, scale in _CHECK_GROUPS:
-        group = chk[chk["unit"] == unit]
+    for rows_of, title, shown, scale, name in _CHECK_GROUPS:
+        group = chk[rows_of(chk)]
         if group.empty:
             continue
         headers = ["Load case", "Check", "Item", f"Demand [{shown}]", f"Capacity [{shown}]", f"Margin [{shown}]",
@@ -344,7 +347,7 @@ def _checks_html(chk: pd.DataFrame) -> str:
             rows.append([_e(r["load_case"]), _e(r["check"]), _e(r["item"]), col["demand"][k], col["capacity"][k],
                          col["margin"][k], col["utilisation"][k], status])
             classes.append(cls)
-        parts.append(f"<h3>{title}</h3>" + _table(headers, rows, classes, cls=f"num checks {shown}",
+        parts.append(f"<h3>{title}</h3>" + _table(headers, rows, classes, cls=f"num checks {name}",
                                                   single=chk["load_case"].nunique() == 1))
     return "".join(parts)
 

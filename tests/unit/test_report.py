@@ -192,11 +192,12 @@ def test_the_csv_tables_are_the_html_tables(sweep_dir, tmp_path, capsys):
     chk = pd.read_csv(out.parent / "report_checks.csv", keep_default_na=False, na_values=[""])
     # one table per unit: tensions and uplift in kN, offsets in m; demand, capacity and margin in the header's unit
     assert len(chk) == 2 * (2 * 2 + 2 + 1)  # per load case: 2 lines x 2, 2 anchors, hull
-    for cls, unit, scale in (("num checks kN", "N", 1e3), ("num checks m", "m", 1.0)):
+    uplift = chk["check"] == "anchor uplift"
+    for cls, part, shown, scale in (("num checks kN", chk[(chk["unit"] == "N") & ~uplift], "kN", 1e3),
+                                    ("num checks uplift", chk[uplift], "kN", 1e3),
+                                    ("num checks m", chk[chk["unit"] == "m"], "m", 1.0)):
         rows = page.tables[cls]
-        shown = "kN" if unit == "N" else "m"
         assert rows[0][3:7] == [f"Demand [{shown}]", f"Capacity [{shown}]", f"Margin [{shown}]", "Utilisation [-]"]
-        part = chk[chk["unit"] == unit]
         assert len(rows) - 1 == len(part) > 0
         for row, (_, csv) in zip(rows[1:], part.iterrows(), strict=True):
             assert row[:3] == [csv["load_case"], csv["check"], csv["item"]]
@@ -423,10 +424,10 @@ def test_no_table_holds_a_non_finite_utilisation_or_margin(sweep_dir, tmp_path):
     np.testing.assert_array_equal(uplift["margin [N or m, see unit]"], -uplift["demand [N or m, see unit]"])
     page = _page(out)
     _one_format_per_column(page)  # no infinite or NaN number in any numeric table, one format per column
-    rows = page.tables["num checks kN"]
+    rows = page.tables["num checks uplift"]
+    assert len(rows) == 1 + 4
     for row in rows[1:]:
-        if row[1] == "anchor uplift":
-            assert row[6] == "\u2013" and _value(row[5]) < -500  # no utilisation; a margin under -500 kN
+        assert row[1] == "anchor uplift" and row[6] == "\u2013" and _value(row[5]) < -500  # no utilisation; margin
     text = out.read_text(encoding="utf-8")
     assert "&infin;" not in text and "\u221e" not in text
     # the summary says it by the margin: one card for the four drag anchors, the worst of them
