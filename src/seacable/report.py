@@ -22,6 +22,8 @@ import html
 import io
 import json
 import math
+import os
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,6 +32,7 @@ import pandas as pd
 
 from ._atomic import atomic_write
 from ._version import __version__
+from .design import checks as checks_
 from .design import summary as ds_
 
 __all__ = ["CSV_UNITS", "ReportOptions", "make_report"]
@@ -37,8 +40,8 @@ __all__ = ["CSV_UNITS", "ReportOptions", "make_report"]
 #: The unit of each column of the CSV tables, appended to its header.
 CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": "N", "weibull_mpm": "N",
              "weibull_quantile": "N", "maximum_largest": "N", "maximum_mean": "N", "gumbel_mpm": "N",
-             "gumbel_quantile": "N", "design_maximum": "N", "dynamic": "N", "demand": "N or m",
-             "capacity": "N or m", "utilisation": "-", "margin": "-", "nominal_diameter": "m", "damage": "-",
+             "gumbel_quantile": "N", "design_maximum": "N", "dynamic": "N", "demand": "N or m, see unit",
+             "capacity": "N or m, see unit", "utilisation": "-", "margin": "N or m, see unit", "nominal_diameter": "m", "damage": "-",
              "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years"}
 
 
@@ -61,23 +64,75 @@ class ReportOptions:
 # ------------------------------------------------------------------------------------------------- numbers
 
 def _num(value, sig: int = 4, scale: float = 1.0) -> str:
-    """A number for a table: ``sig`` significant digits, scientific below 1e-3 and from 1e7."""
-    if value is None or (isinstance(value, float) and math.isnan(value)):
-        return "&ndash;"
-    x = float(value) / scale
-    if math.isinf(x):
-        return "&infin;" if x > 0 else "&minus;&infin;"
-    if x == 0:
-        return "0"
-    if abs(x) < 1e-3 or abs(x) >= 1e7:
-        m, e = f"{x:.{sig - 1}e}".split("e")
-        return f"{m}&times;10<sup>{int(e)}</sup>"
-    digits = max(sig - 1 - math.floor(math.log10(abs(x))), 0)
-    return f"{x:.{digits}f}".replace("-", "&minus;")
+    """One number alone (not in a table column): ``sig`` significant digits, scientific below 1e-3 and from 1e7."""
+    return _column([value], scale=scale, sig=sig)[0]
+
+
+def _scientific(x: float, sig: int) -> str:
+    m, e = f"{x:.{sig - 1}e}".split("e")
+    return f"{m.replace('-', '&minus;')}&times;10<sup>{int(e)}</sup>"
+
+
+def _column(values, scale: float = 1.0, sig: int = 4, like=None) -> list[str]:
+    """The numbers of one table column in one format: fixed decimals, those that give the largest magnitude
+    ``sig`` significant digits, when every other nonzero value still shows one; else all scientific with
+    ``sig`` significant digits. None or NaN is a dash, 0 is "0" (and "0.00" in a column of two decimals).
+    ``like``: more values [SI] the format is chosen over too (columns of one quantity shown alike)."""
+    def scaled(vs):
+        return [math.nan if v is None or (isinstance(v, float) and math.isnan(v)) else float(v) / scale for v in vs]
+
+    xs = scaled(values)
+    finite = [abs(x) for x in xs + scaled(like if like is not None else []) if math.isfinite(x) and x != 0.0]
+    if finite:
+        hi, lo = max(finite), min(finite)
+        decimals = max(sig - 1 - math.floor(math.log10(hi)), 0)
+        fixed = hi < 1e7 and lo >= 10.0 ** -decimals and decimals <= 6
+    else:
+        decimals, fixed = 0, True
+    out = []
+    for x in xs:
+        if math.isnan(x):
+            out.append("&ndash;")
+        elif math.isinf(x):
+            out.append("&infin;" if x > 0 else "&minus;&infin;")
+        elif fixed:
+            out.append(f"{x:.{decimals}f}".replace("-", "&minus;"))
+        elif x == 0:
+            out.append("0")
+        else:
+            out.append(_scientific(x, sig))
+    return out
+
+
+def _columns(table: pd.DataFrame, spec: dict[str, tuple[float, int]], alike: tuple[str, ...] = ()) -> dict[str, list[str]]:
+    """The formatted columns of a table: column -> (scale, significant digits); the columns ``alike`` (one
+    quantity: a demand, its capacity and margin) in one format chosen over all of them."""
+    pool = [v for c in alike for v in table[c]]
+    return {c: _column(list(table[c]), scale, sig, pool if c in alike else None) for c, (scale, sig) in spec.items()}
 
 
 def _e(text) -> str:
     return html.escape(str(text))
+
+
+_ABSOLUTE = re.compile(r"(?<![\w.~/:])(/(?:[^\s'\"<>|,;()\[\]{}]+/)+[^\s'\"<>|,;()\[\]{}]*)")
+
+
+def _relative(text, base: Path | None) -> str:
+    """``text`` with each absolute path in it shown relative to ``base`` (the report's folder), or by its file name
+    alone where the two share no folder but the root (or a drive): a report shows no absolute path of the
+    machine it was made on."""
+    def one(m):
+        path = m.group(1)
+        try:
+            common = os.path.commonpath([path, str(base)]) if base is not None else ""
+        except ValueError:  # another drive
+            common = ""
+        if not common or Path(common) == Path(common).parent:  # only the root in common
+            return Path(path).name
+        return os.path.relpath(path, base)
+
+    return _ABSOLUTE.sub(one, str(text))
 
 
 def _with_units(table: pd.DataFrame) -> pd.DataFrame:
@@ -173,21 +228,20 @@ def _figure_maxima(seeds: pd.DataFrame, extremes: pd.DataFrame) -> tuple[str, st
 
 
 def _figure_utilisation(checks: pd.DataFrame) -> tuple[str, str] | None:
-    rows = checks[checks["utilisation"].notna()].sort_values("utilisation", ascending=False)
+    rows = checks[np.isfinite(checks["utilisation"].astype(float))].sort_values("utilisation", ascending=False)
     if rows.empty:
         return None
     shown = rows.head(30).iloc[::-1]
     many = checks["load_case"].nunique() > 1
     u = shown["utilisation"].to_numpy(float)
-    top = float(np.nanmax(np.where(np.isfinite(u), u, 0.0)))
+    top = float(np.max(u))
     limit = max(1.2, top * 1.1)
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(10.4, 0.9 + 0.28 * len(shown)))
     colours = ["#2e7d32" if p else "#c62828" for p in shown["passed"]]
     ax.barh(range(len(shown)), np.minimum(u, limit), color=colours, height=0.65)
     for k, value in enumerate(u):
-        ax.text(min(value, limit) + limit * 0.01, k, "\u221e" if math.isinf(value) else f"{value:.3f}",
-                va="center", fontsize=7.5)
+        ax.text(min(value, limit) + limit * 0.01, k, f"{value:.3f}", va="center", fontsize=7.5)
     ax.axvline(1.0, color="#333333", lw=1.0, ls="--")
     labels = [f"{r['check']} \u2013 {r['item']}" + (f" ({r['load_case']})" if many else "")
               for _, r in shown.iterrows()]
@@ -196,6 +250,10 @@ def _figure_utilisation(checks: pd.DataFrame) -> tuple[str, str] | None:
     ax.set_xlabel("utilisation [-] (1 = the capacity)")
     ax.grid(axis="y", visible=False)
     caption = "Utilisation of each check: green passes, red fails; the dashed line is the capacity."
+    zero = int(checks["passed"].notna().sum()) - len(rows)
+    if zero:
+        caption += (f" {zero} check(s) against a zero capacity (a drag anchor's uplift) have no utilisation: "
+                    "their margin is in the table.")
     if len(rows) > len(shown):
         caption += f" The {len(shown)} highest of {len(rows)} are shown."
     img = _png(fig)
@@ -204,7 +262,8 @@ def _figure_utilisation(checks: pd.DataFrame) -> tuple[str, str] | None:
 
 
 def _plain(x) -> str:
-    return html.unescape(_num(float(x))).replace("\u2212", "-")
+    text = re.sub(r"<sup>(.*?)</sup>", r"^\1", _num(float(x)))
+    return html.unescape(text).replace("\u2212", "-")
 
 
 # -------------------------------------------------------------------------------------------------- tables
@@ -243,37 +302,54 @@ def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
     headers = ["Load case", "Line", "End", "Seeds", "Mean [kN]", "Std. dev. [kN]", "Largest max. [kN]",
                "Mean of maxima [kN]", "Gumbel MPM [kN]", f"Gumbel {q} [kN]", "Weibull MPM [kN]",
                f"Weibull {q} [kN]", "Design max. [kN]", "Basis"]
+    kn = ("mean", "std", "maximum_largest", "maximum_mean", "gumbel_mpm", "gumbel_quantile", "weibull_mpm",
+          "weibull_quantile", "design_maximum")
+    col = _columns(ext, {c: (1e3, 4) for c in kn})
     notes: dict[str, str] = {}
     rows = []
-    for _, r in ext.iterrows():
-        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["end"]), str(int(r["seeds"])), _num(r["mean"], scale=1e3),
-                     _num(r["std"], scale=1e3), _num(r["maximum_largest"], scale=1e3),
-                     _num(r["maximum_mean"], scale=1e3),
-                     _num(r["gumbel_mpm"], scale=1e3) + _mark(notes, r["gumbel_note"]),
-                     _num(r["gumbel_quantile"], scale=1e3),
-                     _num(r["weibull_mpm"], scale=1e3) + _mark(notes, r["weibull_note"]),
-                     _num(r["weibull_quantile"], scale=1e3), f"<b>{_num(r['design_maximum'], scale=1e3)}</b>",
-                     _e(r["design_basis"])])
+    for k, (_, r) in enumerate(ext.iterrows()):
+        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["end"]), str(int(r["seeds"])), col["mean"][k],
+                     col["std"][k], col["maximum_largest"][k], col["maximum_mean"][k],
+                     col["gumbel_mpm"][k] + _mark(notes, r["gumbel_note"]), col["gumbel_quantile"][k],
+                     col["weibull_mpm"][k] + _mark(notes, r["weibull_note"]), col["weibull_quantile"][k],
+                     f"<b>{col['design_maximum'][k]}</b>", _e(r["design_basis"])])
     return _table(headers, rows, cls="num extremes", single=ext["load_case"].nunique() == 1) + _notes_block(notes)
 
 
+#: The checks' tables of the page, one per quantity: (rows, title, unit shown, scale, class).
+_CHECK_GROUPS = ((lambda c: (c["unit"] == "N") & (c["check"] != "anchor uplift"), "Line tensions", "kN", 1e3, "kN"),
+                 (lambda c: c["check"] == "anchor uplift", "Anchor uplift", "kN", 1e3, "uplift"),
+                 (lambda c: c["unit"] == "m", "Offsets", "m", 1.0, "m"))
+
+
 def _checks_html(chk: pd.DataFrame) -> str:
-    headers = ["Load case", "Check", "Item", "Demand", "Capacity", "Unit", "Utilisation [-]", "Margin [-]", "Status"]
-    rows, classes = [], []
-    for _, r in chk.iterrows():
-        offset = r["check"] == "offset"
-        scale, unit = (1.0, "m") if offset else (1e3, "kN")
-        if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
-            status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
-        elif bool(r["passed"]):
-            status, cls = '<span class="pass">PASS</span>', "passed"
-        else:
-            status, cls = '<span class="fail">FAIL</span>', "failed"
-        rows.append([_e(r["load_case"]), _e(r["check"]), _e(r["item"]), _num(r["demand"], scale=scale),
-                     _num(r["capacity"], scale=scale), unit if pd.notna(r["demand"]) else "",
-                     _num(r["utilisation"], sig=3), _num(r["margin"], sig=3), status])
-        classes.append(cls)
-    return _table(headers, rows, classes, cls="num checks", single=chk["load_case"].nunique() == 1)
+    """The checks, one table per quantity (line tensions and anchor uplift in kN, offsets in m): demand,
+    capacity and margin in the header's unit, utilisation
+    only where the capacity is positive (a dash where it is zero: the margin says it)."""
+    parts = []
+    for rows_of, title, shown, scale, name in _CHECK_GROUPS:
+        group = chk[rows_of(chk)]
+        if group.empty:
+            continue
+        headers = ["Load case", "Check", "Item", f"Demand [{shown}]", f"Capacity [{shown}]", f"Margin [{shown}]",
+                   "Utilisation [-]", "Status"]
+        col = _columns(group, {"demand": (scale, 4), "capacity": (scale, 4), "margin": (scale, 4)},
+                       alike=("demand", "capacity", "margin"))
+        col["utilisation"] = _column(list(group["utilisation"]), 1.0, 4, like=[1.0])  # three decimals (below 10)
+        rows, classes = [], []
+        for k, (_, r) in enumerate(group.iterrows()):
+            if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
+                status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
+            elif bool(r["passed"]):
+                status, cls = '<span class="pass">PASS</span>', "passed"
+            else:
+                status, cls = '<span class="fail">FAIL</span>', "failed"
+            rows.append([_e(r["load_case"]), _e(r["check"]), _e(r["item"]), col["demand"][k], col["capacity"][k],
+                         col["margin"][k], col["utilisation"][k], status])
+            classes.append(cls)
+        parts.append(f"<h3>{title}</h3>" + _table(headers, rows, classes, cls=f"num checks {name}",
+                                                  single=chk["load_case"].nunique() == 1))
+    return "".join(parts)
 
 
 def _basis_html(chk: pd.DataFrame) -> str:
@@ -287,24 +363,26 @@ def _basis_html(chk: pd.DataFrame) -> str:
 def _fatigue_html(fat: pd.DataFrame) -> str:
     headers = ["Load case", "Line", "T-N curve", "Nominal diameter [mm]", "Seeds", "Duration [s]", "Damage [-]",
                "Damage per year if permanent [1/yr]", "Life if permanent [years]", "Probability [-]"]
+    col = _columns(fat, {"nominal_diameter": (1e-3, 3), "duration": (1.0, 4), "damage": (1.0, 3),
+                         "damage_per_year": (1.0, 3), "life_alone": (1.0, 3), "probability": (1.0, 3)})
     notes: dict[str, str] = {}
     rows = []
-    for _, r in fat.iterrows():
+    for k, (_, r) in enumerate(fat.iterrows()):
         curve = str(r["tn_curve"]).replace("_", " ") if r["tn_curve"] else "&ndash;"
         rows.append([_e(r["load_case"]), _e(r["line"]) + _mark(notes, r["note"]), curve,
-                     _num(r["nominal_diameter"], sig=3, scale=1e-3), str(int(r["seeds"])), _num(r["duration"]),
-                     _num(r["damage"], sig=3), _num(r["damage_per_year"], sig=3), _num(r["life_alone"], sig=3),
-                     _num(r["probability"], sig=3)])
+                     col["nominal_diameter"][k], str(int(r["seeds"])), col["duration"][k], col["damage"][k],
+                     col["damage_per_year"][k], col["life_alone"][k], col["probability"][k]])
     return _table(headers, rows, cls="num fatigue", single=fat["load_case"].nunique() == 1) + _notes_block(notes)
 
 
 def _life_html(life: pd.DataFrame) -> str:
+    col = _columns(life, {"damage_per_year": (1.0, 3), "life": (1.0, 3), "design_fatigue_factor": (1.0, 3)})
     rows = []
     notes: dict[str, str] = {}
-    for _, r in life.iterrows():
+    for k, (_, r) in enumerate(life.iterrows()):
         rows.append([_e(r["line"]) + _mark(notes, r["note"]), _e(str(r["tn_curve"]).replace("_", " ")),
-                     str(int(r["load_cases"])), _num(r["damage_per_year"], sig=3),
-                     f"<b>{_num(r['life'], sig=3)}</b>", _num(r["design_fatigue_factor"], sig=3)])
+                     str(int(r["load_cases"])), col["damage_per_year"][k], f"<b>{col['life'][k]}</b>",
+                     col["design_fatigue_factor"][k]])
     return _table(["Line", "T-N curve", "Sea states", "Damage per year [1/yr]", "Fatigue life [years]",
                    "Design fatigue factor [-]"], rows, cls="num life") + _notes_block(notes)
 
@@ -405,9 +483,9 @@ def _settings_html(settings: str) -> str:
 
 
 def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) -> str:
-    checked = chk[chk["utilisation"].notna()]
+    checked = chk[chk["passed"].notna()]
     failed = checked[~checked["passed"].astype(bool)]
-    skipped = chk[chk["utilisation"].isna()]
+    skipped = chk[chk["passed"].isna()]
     cards = []
     if checked.empty:
         cards.append(("warn", "Code checks", "none made"))
@@ -415,11 +493,18 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) ->
         cards.append(("ok", "Code checks", f"all {len(checked)} pass"))
     else:
         cards.append(("bad", "Code checks", f"{len(failed)} of {len(checked)} fail"))
-    if not checked.empty:
-        top = checked.loc[checked["utilisation"].idxmax()]
+    ratio = checked[checked["utilisation"].notna()]
+    if not ratio.empty:
+        top = ratio.loc[ratio["utilisation"].idxmax()]
         u = float(top["utilisation"])
         cards.append(("bad" if u > 1 else "ok", f"Largest utilisation ({_e(top['check'])}, {_e(top['item'])})",
-                      _num(u, sig=3)))
+                      _column([u], sig=4, like=[1.0])[0]))  # as the table shows it
+    zero = failed[failed["utilisation"].isna()]  # a zero capacity exceeded: no ratio, the margin says it
+    for check, g in zero.groupby("check", sort=False):
+        worst = g.loc[g["margin"].idxmin()]
+        scale, unit = (1.0, "m") if worst["unit"] == "m" else (1e3, "kN")
+        cards.append(("bad", f"{_e(check)}: capacity 0, {len(g)} fail (worst: {_e(worst['item'])})",
+                      f"margin {_num(worst['margin'], scale=scale)} {unit}"))
     if not skipped.empty:
         cards.append(("warn", "Not checked", f"{len(skipped)} check(s)"))
     fair = ext[ext["end"] == "fairlead"]
@@ -434,9 +519,14 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) ->
         f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
 
 
-def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str:
+def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: Path | None = None) -> str:
+    """The page; ``base``: its folder, which the paths it shows are relative to."""
     attrs = _first_attrs(runs)
     sweep = _sweep_info(source)
+
+    def path(p) -> str:
+        return _e(_relative(Path(p).resolve(), base)) if isinstance(p, (str, Path)) else _e(p)
+
     name = sweep.get("name") or attrs.get("case_name") or attrs.get("title") or "result"
     description = sweep.get("description") or attrs.get("comment", "")
     now = datetime.datetime.now(datetime.UTC).strftime("%d %B %Y, %H:%M UTC")
@@ -444,7 +534,7 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str
     load_cases = list(dict.fromkeys(r.load_case for r in runs))
     durations = sorted({float(x) for x in seeds["duration"]})
     storm = "the runs' duration" if opts.storm_duration is None else f"{_num(opts.storm_duration)} s"
-    inputs = [("Source", f"<code>{_e(source)}</code>"), ("Analysis", _e(attrs.get("analysis", ""))),
+    inputs = [("Source", f"<code>{path(source)}</code>"), ("Analysis", _e(attrs.get("analysis", ""))),
               ("Runs (seeds)", str(len(runs))), ("Load cases", str(len(load_cases))),
               ("Simulated duration of a run", ", ".join(f"{_num(d)} s" for d in durations)),
               ("Storm duration", storm), ("Quantile of the storm maximum", _num(opts.quantile, sig=3)),
@@ -452,7 +542,7 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str
               ("Offset limit", "not checked" if opts.offset_limit is None else f"{_num(opts.offset_limit)} m"),
               ("Allowed anchor uplift", f"{_num(opts.allowed_uplift, scale=1e3)} kN"),
               ("T-N curve", _e(opts.tn_curve) if opts.tn_curve else "by the line type"),
-              ("Scatter diagram", f"<code>{_e(opts.scatter)}</code>" if opts.scatter else "none")]
+              ("Scatter diagram", f"<code>{path(opts.scatter)}</code>" if opts.scatter else "none")]
     if sweep.get("failed"):
         inputs.append(("Cases not in the report", f"{len(sweep['failed'])} of {sweep['cases']} (failed or not run)"))
     parts = [(f"<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">"
@@ -473,13 +563,13 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str
         parts += [f"<h3>Load cases of the sweep (swept: {_e(', '.join(params))})</h3>",
                   _table(["Load case", "Runs", "Seeds"], rows)]
     if sweep.get("failed"):
-        rows = [[_e(n), _e(e)] for n, e in sweep["failed"]]
+        rows = [[_e(n), _e(_relative(e, base))] for n, e in sweep["failed"]]
         parts += ["<h3>Cases left out (failed or not run)</h3>", _table(["Case", "Error"], rows)]
     if attrs.get("case"):
         parts.append(f"<details><summary>Case file (YAML) of {_e(runs[0].name)}</summary>"
-                     f"<pre>{_e(attrs['case'])}</pre></details>")
+                     f"<pre>{_e(_relative(attrs['case'], base))}</pre></details>")
     if sweep.get("sweep"):
-        parts.append(f"<details><summary>Sweep file (YAML)</summary><pre>{_e(sweep['sweep'])}</pre></details>")
+        parts.append(f"<details><summary>Sweep file (YAML)</summary><pre>{_e(_relative(sweep['sweep'], base))}</pre></details>")
     refs = [r for r in str(attrs.get("references", "")).splitlines() if r.strip()]
     parts += ["<h2>2. Model and references</h2>",
               f"<p>{_e(attrs.get('analysis', ''))} analysis by seacable {_e(attrs.get('seacable_version', '?'))}.</p>",
@@ -504,7 +594,10 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str
               "intact load cases, ALS where a line failed or was removed (the failed line itself is not checked); "
               "API RP 2SK dynamic analysis, intact or damaged; anchor uplift from the first element at the anchor, "
               "T<sub>anchor</sub> (z<sub>1</sub> &minus; z<sub>0</sub>)/|x<sub>1</sub> &minus; x<sub>0</sub>|, the "
-              "largest upward pull over the seeds. Margin = 1 &minus; utilisation.</p>"),
+              "largest upward pull over the seeds, less round-off (an upward pull up to "
+              f"{checks_.UPLIFT_ROUND_OFF:g} of the anchor tension, the line within "
+              f"{math.degrees(checks_.UPLIFT_ROUND_OFF):.2f}&deg; of flat, is none). Margin = capacity &minus; "
+              "demand, in the check's unit; utilisation = demand / capacity, where the capacity is not zero.</p>"),
               _checks_html(chk), _figure(figures.get("utilisation")), _basis_html(chk)]
     parts += ["<h2>5. Fatigue</h2>",
               ('<p class="method">Miner\'s damage from the rainflow-counted fairlead tension ranges over the nominal '
@@ -516,10 +609,10 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions) -> str
     else:
         parts.append('<p class="method">No scatter diagram given (<code>--scatter hs,tp,probability CSV</code>): no '
                      "fatigue life over the year.</p>")
+    col = _columns(seeds, {c: (1e3, 4) for c in ("maximum", "mean", "std", "weibull_mpm", "weibull_quantile")})
     rows = [[_e(r["load_case"]), _e(r["case"]), "&ndash;" if pd.isna(r["seed"]) else str(int(r["seed"])),
-             _e(r["line"]), _e(r["end"]), _num(r["maximum"], scale=1e3), _num(r["mean"], scale=1e3),
-             _num(r["std"], scale=1e3), _num(r["weibull_mpm"], scale=1e3), _num(r["weibull_quantile"], scale=1e3)]
-            for _, r in seeds.iterrows()]
+             _e(r["line"]), _e(r["end"]), col["maximum"][k], col["mean"][k], col["std"][k], col["weibull_mpm"][k],
+             col["weibull_quantile"][k]] for k, (_, r) in enumerate(seeds.iterrows())]
     q = f"q{round(opts.quantile * 100):d}"
     parts += ["<h2>Appendix: every seed</h2>",
               f"<details><summary>Tensions of each run ({len(seeds)} rows)</summary>"
@@ -574,7 +667,7 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     figures = {"series": _figure_time_series(runs, seeds), "maxima": _figure_maxima(seeds, ext),
                "utilisation": _figure_utilisation(chk)}
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
-                 opts)
+                 opts, output.resolve().parent)
     output.parent.mkdir(parents=True, exist_ok=True)
     written = [atomic_write(output, lambda tmp: tmp.write_text(page, encoding="utf-8"))]
     for key, table in tables.items():

@@ -79,6 +79,48 @@ def _value(text: str) -> float:
     return float(m[1]) * 10.0 ** int(m[2]) if m else float(text)
 
 
+def _format(text: str) -> tuple | None:
+    """The number format of a cell: ('fixed', decimals), ('sci', mantissa decimals), or None (no number: a dash,
+    a zero shown as '0' in a scientific column)."""
+    text = re.sub(r"\^[a-z]+$", "", text.replace("\u2212", "-")).strip()
+    m = re.fullmatch(r"-?\d+(?:\.(\d+))?\u00d710\^-?\d+", text)
+    if m:
+        return ("sci", len(m[1] or ""))
+    m = re.fullmatch(r"-?\d+(?:\.(\d+))?", text)
+    if m and not (text == "0"):
+        return ("fixed", len(m[1] or ""))
+    return None
+
+
+def _one_format_per_column(page: _Page) -> None:
+    """Every numeric table of the page shows each column in one format (fixed with one number of decimals, or
+    scientific), and never an infinite or NaN number."""
+    for cls, rows in page.tables.items():
+        if not cls.startswith("num"):
+            continue
+        for c in range(len(rows[0])):
+            cells = [r[c] for r in rows[1:] if c < len(r)]
+            assert not any(x in cell.lower() for cell in cells for x in ("\u221e", "inf", "nan")), (cls, rows[0][c])
+            formats = {_format(cell) for cell in cells} - {None}
+            numeric = [cell for cell in cells if _format(cell)]
+            if len(numeric) == len(cells) or rows[0][c].endswith("]"):  # a number column (its header has a unit)
+                assert len(formats) <= 1, (cls, rows[0][c], formats, cells)
+
+
+def _within_last_digit(text: str, si_value: float, scale: float) -> bool:
+    """The cell ``text`` shows ``si_value / scale`` rounded to its last shown digit (fixed or scientific)."""
+    value = _value(text)
+    x = si_value / scale
+    if math.isnan(x):
+        return math.isnan(value)
+    f = _format(text)
+    if f is None:
+        return value == x == 0 or (value == 0 and f is None and abs(x) < 1e-300)
+    kind, decimals = f
+    unit = 10.0 ** -decimals if kind == "fixed" else 10.0 ** (math.floor(math.log10(abs(value))) - decimals)
+    return abs(value - x) <= 0.5 * unit * (1 + 1e-9)
+
+
 def _shown(html_value: float, si_value: float, scale: float, sig: int) -> bool:
     """The page shows ``si_value / scale`` to ``sig`` significant digits: within half a unit of its last digit."""
     x = si_value / scale
@@ -148,16 +190,25 @@ def test_the_csv_tables_are_the_html_tables(sweep_dir, tmp_path, capsys):
         assert row[13] == csv["design_basis"]
 
     chk = pd.read_csv(out.parent / "report_checks.csv", keep_default_na=False, na_values=[""])
-    rows = page.tables["num checks"][1:]
-    assert len(rows) == len(chk) and len(chk) == 2 * (2 * 2 + 2 + 1)  # per load case: 2 lines x 2, 2 anchors, hull
-    for row, (_, csv) in zip(rows, chk.iterrows(), strict=True):
-        assert row[:3] == [csv["load_case"], csv["check"], csv["item"]]
-        scale = 1.0 if csv["check"] == "offset" else 1e3
-        assert _shown(_value(row[3]), csv["demand [N or m]"], scale, 4)
-        assert _shown(_value(row[4]), csv["capacity [N or m]"], scale, 4)
-        assert _shown(_value(row[6]), csv["utilisation [-]"], 1.0, 3) and _shown(_value(row[7]), csv["margin [-]"],
-                                                                                1.0, 3)
-        assert row[8] == {"pass": "PASS", "FAIL": "FAIL"}.get(csv["status"], csv["status"])
+    # one table per unit: tensions and uplift in kN, offsets in m; demand, capacity and margin in the header's unit
+    assert len(chk) == 2 * (2 * 2 + 2 + 1)  # per load case: 2 lines x 2, 2 anchors, hull
+    uplift = chk["check"] == "anchor uplift"
+    for cls, part, shown, scale in (("num checks kN", chk[(chk["unit"] == "N") & ~uplift], "kN", 1e3),
+                                    ("num checks uplift", chk[uplift], "kN", 1e3),
+                                    ("num checks m", chk[chk["unit"] == "m"], "m", 1.0)):
+        rows = page.tables[cls]
+        assert rows[0][3:7] == [f"Demand [{shown}]", f"Capacity [{shown}]", f"Margin [{shown}]", "Utilisation [-]"]
+        assert len(rows) - 1 == len(part) > 0
+        for row, (_, csv) in zip(rows[1:], part.iterrows(), strict=True):
+            assert row[:3] == [csv["load_case"], csv["check"], csv["item"]]
+            for k, name in ((3, "demand [N or m, see unit]"), (4, "capacity [N or m, see unit]"),
+                            (5, "margin [N or m, see unit]")):
+                assert _within_last_digit(row[k], csv[name], scale), (row, name)
+            assert csv["margin [N or m, see unit]"] == csv["capacity [N or m, see unit]"] - csv[
+                "demand [N or m, see unit]"]
+            assert _within_last_digit(row[6], csv["utilisation [-]"], 1.0)
+            assert row[7] == {"pass": "PASS", "FAIL": "FAIL"}.get(csv["status"], csv["status"])
+    _one_format_per_column(page)
     assert (chk["status"] == "FAIL").sum() == 1  # API RP 2SK intact, L1, in the 8 m sea
     failed = chk[chk["status"] == "FAIL"].iloc[0]
     assert (failed["check"], failed["item"], failed["load_case"]) == ("API RP 2SK intact dynamic", "L1",
@@ -203,6 +254,8 @@ def test_the_page_is_self_contained_and_has_its_sections(sweep_dir, tmp_path):
     assert "<details><summary>Case file (YAML) of spread_storm_0000</summary>" in text
     assert "A reference of the model." in text and "DNV-OS-E301" in text and "API RP 2SK" in text
     assert "1 of 12 fail" in text  # the summary's verdict: no offset limit, no offset check
+    assert str(tmp_path) not in text  # no absolute path: the source is shown relative to the page
+    assert "<code>../sweep</code>" in text  # out/report.html and sweep/ side by side
 
 
 def test_a_short_real_run_of_the_three_chain_deck(tmp_path):
@@ -337,7 +390,8 @@ def test_the_report_of_datasets_from_python(synth, tmp_path):
                                          "lib_fatigue.csv"]
     chk = pd.read_csv(tmp_path / "lib_checks.csv")
     row = chk[chk["check"] == "offset"].iloc[0]
-    assert row["item"] == "platform" and row["demand [N or m]"] == 10.0 and row["utilisation [-]"] == 0.5
+    assert row["item"] == "platform" and row["demand [N or m, see unit]"] == 10.0 and row["unit"] == "m"
+    assert row["utilisation [-]"] == 0.5 and row["margin [N or m, see unit]"] == 10.0
     assert "result Datasets (Python)" in written[0].read_text(encoding="utf-8")
 
 
@@ -380,3 +434,43 @@ def test_a_scatter_diagram_not_in_utf8_is_refused(sweep_dir, tmp_path, capsys, c
     assert f"scatter diagram '{scatter}'" in err and ("not UTF-8" in err or "binary" in err), err
     assert "Traceback" not in err and err.count("\n") == 1, err
     assert not out.exists()
+
+
+def test_no_table_holds_a_non_finite_utilisation_or_margin(sweep_dir, tmp_path):
+    """Issue 37: a drag anchor (allowed uplift 0 N, the default) under a real uplift was reported with utilisation
+    inf, at the top of the page and as inf in the CSV. Now every check of every kind (tension, uplift, offset)
+    has a finite margin in its own unit and a utilisation only where its capacity is positive: no cell of a
+    utilisation or margin column, in the HTML tables or the CSV files, is inf, -inf or nan. The sweep's anchors
+    lift by 0.8 T 3/5 (about 1 MN): they fail by that margin, in kN."""
+    import csv
+
+    folder, scatter = sweep_dir
+    out = tmp_path / "out" / "report.html"
+    assert main(["report", str(folder), "-o", str(out), "--scatter", str(scatter), "--offset-limit", "30"]) == 0
+    checked = 0
+    for path in sorted(out.parent.glob("*.csv")):
+        with path.open(newline="", encoding="utf-8") as f:
+            rows = list(csv.reader(f))
+        for c, name in enumerate(rows[0]):
+            if not name.startswith(("utilisation", "margin")):
+                continue
+            for row in rows[1:]:
+                cell = row[c].strip().lower()
+                assert cell == "" or math.isfinite(float(cell)), (path.name, name, cell)
+                checked += cell != ""
+    assert checked == 14 + 10  # 14 checks with a margin each; utilisations for all but the 4 drag anchors
+    chk = pd.read_csv(out.parent / "report_checks.csv")
+    uplift = chk[chk["check"] == "anchor uplift"]
+    assert len(uplift) == 4 and (uplift["status"] == "FAIL").all() and uplift["utilisation [-]"].isna().all()
+    np.testing.assert_array_equal(uplift["margin [N or m, see unit]"], -uplift["demand [N or m, see unit]"])
+    page = _page(out)
+    _one_format_per_column(page)  # no infinite or NaN number in any numeric table, one format per column
+    rows = page.tables["num checks uplift"]
+    assert len(rows) == 1 + 4
+    for row in rows[1:]:
+        assert row[1] == "anchor uplift" and row[6] == "\u2013" and _value(row[5]) < -500  # no utilisation; margin
+    text = out.read_text(encoding="utf-8")
+    assert "&infin;" not in text and "\u221e" not in text
+    # the summary says it by the margin: one card for the four drag anchors, the worst of them
+    assert re.search(r"anchor uplift: capacity 0, 4 fail \(worst: anchor of L\d\)</div><div class=\"v\">margin "
+                     r"&minus;\d+ kN</div>", text)

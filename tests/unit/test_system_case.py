@@ -9,6 +9,7 @@ against the inverse of the reported stiffness.
 
 from __future__ import annotations
 
+import json
 import math
 import pickle
 import re
@@ -59,7 +60,7 @@ def test_a_file_with_lines_and_no_line_is_a_system_case_and_single_line_cases_ar
     assert isinstance(case, SystemCase)
     assert set(case.lines) == {"line1", "line2", "line3"}
     assert case.lines["line1"].line.segments[0].line_type.axial_stiffness == 7.7e8
-    assert case.analysis.damaged_lines == ("line1",)
+    assert case.analysis.damaged_lines == "most_loaded"  # line1 under its load (the damaged tests below)
     assert isinstance(sc.load_case(EXAMPLES / "oc3_hywind_static.yaml"), sc.Case)
 
 
@@ -684,3 +685,94 @@ def test_a_free_body_without_lines_held_by_its_hydrostatic_matrix_has_an_equilib
     assert ds.sizes["line"] == 0
     assert ds["body_x"].item() == pytest.approx(1.0e5 / k[0], rel=1e-9)
     assert ds["body_z"].item() == pytest.approx((1025.0 * 1000.0 - 1.0e6) * 9.81 / k[2], rel=1e-9)
+
+
+# --- damaged_lines: most_loaded (issue 37) ---------------------------------------------------------
+
+def _spread_loaded_towards(heading: float, damaged="most_loaded") -> SystemCase:
+    """spread_mooring.yaml with its 500 kN load turned to ``heading`` [rad]."""
+    data = _data()
+    data["bodies"]["buoy"]["external_force"] = [LOAD * math.cos(heading), LOAD * math.sin(heading), 0, 0, 0, 0]
+    data["analysis"]["damaged_lines"] = damaged
+    return parse_case(data)
+
+
+def test_most_loaded_removes_the_line_of_the_largest_intact_tension_and_the_body_drifts_further():
+    """ALS is the system after the failure of its most loaded line. With the 500 kN load turned to 240 deg, away
+    from line2's anchor (at 60 deg), line2 holds the most in the intact equilibrium (921 kN against 427 kN for
+    the two others), so 'most_loaded' removes line2, not the first line; without it the buoy drifts further
+    (622 m against 17 m). Removing the least loaded line instead (line1 or line3) would move the buoy less far
+    than removing line2: the check below compares with both."""
+    ds = sc.run(_spread_loaded_towards(math.radians(240.0)))
+    intact = ds.fairlead_tension.sel(condition="intact")
+    assert str(intact.idxmax("line").values) == "line2"
+    assert float(intact.sel(line="line2")) > 2.0 * float(intact.sel(line="line1"))  # clearly the most loaded
+    assert ds.line_present.sel(condition="damaged").values.tolist() == [1, 0, 1]
+    assert json.loads(ds.attrs["settings"])["damaged_lines"] == ["line2"]
+    off = ds.body_offset.sel(body="buoy")
+    assert float(off.sel(condition="damaged")) > 10.0 * float(off.sel(condition="intact"))
+    # the same case with line2 named gives the same damaged equilibrium; with the least loaded line removed
+    # the buoy moves less than with line2 removed
+    named = sc.run(_spread_loaded_towards(math.radians(240.0), ["line2"]))
+    np.testing.assert_allclose(named.body_x.values, ds.body_x.values, rtol=1e-12)
+    least = sc.run(_spread_loaded_towards(math.radians(240.0), ["line1"]))
+    assert float(least.body_offset.sel(condition="damaged", body="buoy")) < float(off.sel(condition="damaged"))
+
+
+def test_most_loaded_in_a_watch_circle_is_chosen_heading_by_heading():
+    """The watch circle's damaged condition removes at each heading the line most loaded by that heading's
+    largest load: a load towards 0, 120 and 240 deg pulls away from the anchors of line1 (180 deg), line3 (300
+    deg) and line2 (60 deg). Each heading's damaged offset along the load exceeds the intact one."""
+    case = sc.load_case(WATCH)
+    case = case.replace(analysis=SystemOffsetsAnalysis(body="buoy", loads=(0.0, 5.0e5), damaged_lines="most_loaded",
+                                                       headings=(0.0, 2 * math.pi / 3, 4 * math.pi / 3)))
+    ds = sc.run(case)
+    assert ds.damaged_line.values.tolist() == ["line1", "line3", "line2"]
+    assert ds.line_present.dims == ("condition", "heading", "line")
+    assert ds.line_present.sel(condition="damaged").values.tolist() == [[0, 1, 1], [1, 1, 0], [1, 0, 1]]
+    at = ds.sel(applied_load=5.0e5)
+    for h in ds.heading.values:
+        t = at.fairlead_tension.sel(condition="intact", heading=h)
+        assert str(t.idxmax("line").values) == str(ds.damaged_line.sel(heading=h).values)
+        assert float(at.offset.sel(condition="damaged", heading=h)) > float(at.offset.sel(condition="intact",
+                                                                                          heading=h))
+
+
+def test_most_loaded_ties_go_to_the_first_line_and_the_word_is_checked():
+    """Under a load along +x the spread is symmetric about the x axis: turned to 180 deg (towards line1's anchor),
+    line2 and line3 carry the same tension to the solver's tolerance: the first of them, line2, is taken."""
+    from seacable.system.damaged import most_loaded_line
+
+    ds = sc.run(_spread_loaded_towards(math.pi))
+    t = ds.fairlead_tension.sel(condition="intact")
+    assert float(t.sel(line="line2")) == pytest.approx(float(t.sel(line="line3")), rel=1e-6)
+    assert json.loads(ds.attrs["settings"])["damaged_lines"] == ["line2"]
+    assert most_loaded_line(("a", "b", "c"), [1.0, 2.0, 2.0 * (1 + 1e-7)]) == "b"  # within 1e-6: a tie
+    assert most_loaded_line(("a", "b", "c"), [1.0, 2.0, 2.0 * (1 + 1e-5)]) == "c"
+    with pytest.raises(sc.CaseFileError, match="damaged_lines"):
+        _spread_loaded_towards(0.0, "most_loded")
+
+
+def test_most_loaded_of_a_design_run_is_a_weather_line_and_the_spar_drifts_further():
+    """The OC3-Hywind design runs (oc3_hywind_storm.yaml, 600 kN along +x): line1 is the lee line (606 kN at the
+    mean position, against 1178 kN for each weather line), lines 2 and 3 tie by symmetry, so 'most_loaded'
+    removes line2 (the first of the tie). Its mean position is the damaged static equilibrium: the spar drifts
+    762 m (420.7 m in x, -635.4 m in y) against 20.2 m intact; removing the lee line instead (the demo's old
+    choice) moved it back, to 7.8 m. The result records the removed line, which the design tables read."""
+    from seacable.design import summary
+    from seacable.system.dynamics import most_loaded_at_start
+
+    case = sc.load_case(EXAMPLES / "oc3_hywind_storm.yaml")
+    runs = {}
+    for damaged in ((), "most_loaded"):
+        c = case.replace(analysis=case.analysis.model_copy(update={"duration": 1.0, "damaged_lines": damaged}))
+        runs[damaged] = sc.run(c)
+    assert most_loaded_at_start(c) == "line2"
+    ds = runs["most_loaded"]
+    assert ds.line.values.tolist() == ["line1", "line3"]
+    assert json.loads(ds.attrs["settings"])["damaged_lines"] == ["line2"]
+    assert summary.failed_lines(ds) == {"line2": 0.0}
+    assert summary.failed_lines(runs[()]) == {}
+    start = {k: np.hypot(*v.body_position.isel(time=0, body=0).values[:2]) for k, v in runs.items()}
+    # the static equilibria solved alone gave 20.24 m and 762.0 m; the run starts there (1e-3 m)
+    assert start[()] == pytest.approx(20.24, abs=0.01) and start["most_loaded"] == pytest.approx(762.0, abs=0.1)

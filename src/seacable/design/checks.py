@@ -1,7 +1,9 @@
 """Design checks of a mooring (issue 20): line tension against the breaking strength by DNV-OS-E301 and by
-API RP 2SK, anchor uplift and offset, each one :class:`CheckResult` with its demand, capacity, utilisation
-(demand / capacity), pass (utilisation <= 1) and margin (1 - utilisation); :func:`check_table` puts them in
-a table.
+API RP 2SK, anchor uplift and offset, each one :class:`CheckResult` with its demand, capacity, margin
+(capacity - demand, in the check's own unit: N or m), pass (margin >= 0) and utilisation (demand / capacity,
+only where the capacity is positive: a zero capacity, a drag anchor's allowed uplift, has no ratio);
+:func:`check_table` puts them in a table. Every number of a check is finite: a check is made by one function,
+:func:`_result`, for every kind.
 
 - DNV-OS-E301 *Position mooring* (October 2010), Ch.2 Sec.2 (the design of mooring lines; the edition of
   the T-N curves in :mod:`seacable.design.fatigue`). The characteristic capacity of a line of new chain or
@@ -38,7 +40,9 @@ a table.
   "damaged" is the system with one line broken, "transient" the motion that follows the break.
 - Anchor uplift: a drag anchor takes no upward pull in the intact condition (API RP 2SK 3rd ed., anchor
   design; DNV-OS-E301 (2010) Ch.2 Sec.4, fluke anchors), so the default allowed uplift is 0 N; another anchor (a pile, a
-  suction anchor) takes the allowed uplift of its design.
+  suction anchor) takes the allowed uplift of its design. A computed upward pull no larger than
+  :data:`UPLIFT_ROUND_OFF` (1e-3) times the line's tension at the anchor, a line meeting the seabed within
+  0.057 deg of flat, is round-off, not uplift (:func:`uplift_demand`).
 - Offset: the largest horizontal offset of a body against the limit set by its risers, gangway or
   umbilicals (a project value, not a code's).
 
@@ -64,8 +68,9 @@ import numpy as np
 from .. import _validate as v
 from ..errors import InputError
 
-__all__ = ["API_FACTORS_OF_SAFETY", "DNV_PARTIAL_SAFETY_FACTORS", "DNV_STRENGTH_FACTOR", "CheckResult",
-           "anchor_uplift", "api_tension", "check_table", "dnv_als", "dnv_uls", "offset_check"]
+__all__ = ["API_FACTORS_OF_SAFETY", "DNV_PARTIAL_SAFETY_FACTORS", "DNV_STRENGTH_FACTOR", "UPLIFT_ROUND_OFF",
+           "CheckResult", "anchor_uplift", "api_tension", "check_table", "dnv_als", "dnv_uls", "offset_check",
+           "uplift_demand"]
 
 DNV_EDITION = "DNV-OS-E301 (October 2010)"
 API_EDITION = "API RP 2SK 3rd edition (October 2005)"
@@ -97,9 +102,20 @@ _METHODS = ("dynamic", "quasi_static")
 _LIMIT_STATE = {"ULS": "ULS, intact system, dynamic analysis", "ALS": "ALS, one line failed"}
 
 
+#: A computed upward pull on an anchor no larger than this share of the line's tension there is round-off,
+#: not uplift: the pull of a line meeting the seabed within 1e-3 rad (0.057 deg) of flat. Below it the sign of
+#: the first element's slope is set by the seabed contact's penetration and the solver's tolerance, not by the
+#: mooring (the OC3-Hywind demo's grounded lines show 35 N under several hundred kN, a few 1e-5 of the
+#: tension); a line that lifts off its anchor pulls up with the weight of the lifted length, kN per metre of
+#: chain, far above it. [-]
+UPLIFT_ROUND_OFF = 1e-3
+
+_UNITS = ("N", "m")
+
+
 @dataclass(frozen=True)
 class CheckResult:
-    """One design check: a demand against a capacity.
+    """One design check: a demand against a capacity, in one unit.
 
     Attributes
     ----------
@@ -108,14 +124,19 @@ class CheckResult:
         ``"offset"``.
     item
         What is checked: a line, an anchor, a body.
+    unit
+        The unit of demand, capacity and margin: ``"N"`` or ``"m"``.
     demand
         The design value compared with the capacity: design tension [N], uplift force [N] or offset [m].
     capacity
         The capacity: ``S_C`` [N], ``MBS / FoS`` [N], the allowed uplift [N] or the offset limit [m].
+    margin
+        ``capacity - demand``, in ``unit``: what is left, negative when the check fails. Finite.
     utilisation
-        ``demand / capacity``. [-]
+        ``demand / capacity`` [-] where the capacity is positive; None where it is zero (a drag anchor's
+        allowed uplift: no ratio, the margin says it).
     passed
-        ``utilisation <= 1``.
+        ``demand <= capacity`` (margin >= 0).
     formula
         The check's formula with its factors, one line.
     reference
@@ -124,23 +145,28 @@ class CheckResult:
 
     check: str
     item: str
+    unit: str
     demand: float
     capacity: float
-    utilisation: float
+    margin: float
+    utilisation: float | None
     passed: bool
     formula: str
     reference: str
 
-    @property
-    def margin(self) -> float:
-        """``1 - utilisation``: the share of the capacity left, negative when the check fails. [-]"""
-        return 1.0 - self.utilisation
 
-
-def _result(check, item, demand, capacity, utilisation, formula, reference) -> CheckResult:
-    return CheckResult(check=check, item=str(item), demand=float(demand), capacity=float(capacity),
-                       utilisation=float(utilisation), passed=bool(utilisation <= 1.0), formula=formula,
-                       reference=reference)
+def _result(check, item, demand, capacity, unit, formula, reference) -> CheckResult:
+    """The one way a check is made: margin ``capacity - demand`` in the check's unit, pass ``margin >= 0``,
+    utilisation ``demand / capacity`` only for a positive capacity; every number finite."""
+    demand, capacity = float(demand), float(capacity)
+    if unit not in _UNITS or not (math.isfinite(demand) and math.isfinite(capacity)) or capacity < 0.0:
+        raise InputError(f"check '{check}' of '{item}': demand {demand!r} {unit} and capacity {capacity!r} {unit} must "
+                         f"be finite numbers in {' or '.join(_UNITS)}, the capacity >= 0. Suggested fix: check the "
+                         "inputs of the check (tensions, breaking load, limits).")
+    margin = capacity - demand
+    return CheckResult(check=check, item=str(item), unit=unit, demand=demand, capacity=capacity, margin=margin,
+                       utilisation=demand / capacity if capacity > 0.0 else None, passed=bool(margin >= 0.0),
+                       formula=formula, reference=reference)
 
 
 def _scalar(name: str, value, unit: str, fix: str, *, check) -> float:
@@ -192,7 +218,7 @@ def _dnv(limit: str, line, mean_tension, dynamic_tension, mbs, consequence_class
     formula = (f"T_d = {g_mean:.2f} T_c,mean + {g_dyn:.2f} T_c,dyn <= S_C = {DNV_STRENGTH_FACTOR:.2f} MBS")
     reference = (f"{DNV_EDITION} Ch.2 Sec.2: partial safety factors for the {_LIMIT_STATE[limit]}, consequence "
                  f"class {cc}; S_C = 0.95 S_mbs (new chain or steel wire rope)")
-    return _result(f"DNV-OS-E301 {limit} CC{cc}", line, t_d, s_c, t_d / s_c, formula, reference)
+    return _result(f"DNV-OS-E301 {limit} CC{cc}", line, t_d, s_c, "N", formula, reference)
 
 
 def dnv_uls(line, mean_tension, dynamic_tension, mbs, consequence_class=1) -> CheckResult:
@@ -299,20 +325,37 @@ def api_tension(line, max_tension, mbs, condition: Literal["intact", "damaged", 
     fos = API_FACTORS_OF_SAFETY[(condition, method)]
     capacity = s_mbs / fos
     words = method.replace("_", "-")
-    return _result(f"API RP 2SK {condition} {words}", line, t_max, capacity, t_max / capacity,
+    return _result(f"API RP 2SK {condition} {words}", line, t_max, capacity, "N",
                    f"T_max <= MBS / {fos:.2f} ({100.0 / fos:.0f} % of MBS)",
                    f"{API_EDITION} Table 2: line tension limits and factors of safety, {condition} "
                    f"condition, {words} analysis (FoS {fos:.2f})")
 
 
-def anchor_uplift(anchor, vertical_force, allowed=0.0) -> CheckResult:
+def uplift_demand(vertical_force, tension):
+    """The uplift a vertical force on an anchor is: ``F_z`` where ``F_z > UPLIFT_ROUND_OFF * T``, else 0 (a
+    downward pull, or an upward one of round-off size: :data:`UPLIFT_ROUND_OFF`). Vectorised. [N]
+
+    Parameters
+    ----------
+    vertical_force
+        Vertical force of the line on its anchor, upward positive. [N]
+    tension
+        The line's tension at the anchor at the same instant (NaN or missing: 0, no tolerance). [N]
+    """
+    f_z = np.asarray(vertical_force, float)
+    t = np.nan_to_num(np.abs(np.asarray(tension, float)), nan=0.0)
+    return np.where(f_z > UPLIFT_ROUND_OFF * t, f_z, 0.0)
+
+
+def anchor_uplift(anchor, vertical_force, allowed=0.0, tension=0.0) -> CheckResult:
     """Anchor uplift: the largest upward pull on the anchor against the allowed uplift.
 
-    ``F_up = max(F_z, 0) <= F_allowed``. With ``F_allowed > 0`` the utilisation is ``F_up / F_allowed``. With
-    ``F_allowed = 0`` (the default: a drag anchor takes no uplift in the intact condition, API RP 2SK 3rd ed.,
-    DNV-OS-E301 (2010) Ch.2 Sec.4) the check passes only when there is no upward pull at all, and the
-    utilisation is 0 without uplift and ``inf`` with any (there is no finite ratio to a zero capacity); to
-    absorb a solver's noise give a small ``allowed`` instead.
+    ``F_up <= F_allowed``, ``F_up`` the upward vertical force ``F_z`` less round-off (:func:`uplift_demand`: an
+    ``F_z`` no larger than ``UPLIFT_ROUND_OFF = 1e-3`` times the anchor tension ``T`` is none), the margin
+    ``F_allowed - F_up`` [N]. With ``F_allowed = 0`` (the default: a drag anchor takes no uplift in the intact
+    condition, API RP 2SK 3rd ed., DNV-OS-E301 (2010) Ch.2 Sec.4) the check passes only without uplift, with a
+    margin of 0 N, and has no utilisation (no ratio to a zero capacity); with ``F_allowed > 0`` the utilisation
+    is ``F_up / F_allowed``.
 
     Parameters
     ----------
@@ -323,27 +366,32 @@ def anchor_uplift(anchor, vertical_force, allowed=0.0) -> CheckResult:
         uplift. [N]
     allowed
         The uplift the anchor may take, >= 0. [N]
+    tension
+        The line's tension at the anchor when ``vertical_force`` acts, >= 0 (0: no round-off tolerance). [N]
 
     Returns
     -------
     CheckResult
-        Demand ``F_up`` [N], capacity ``F_allowed`` [N].
+        Demand ``F_up`` [N], capacity ``F_allowed`` [N], margin [N].
 
     Raises
     ------
     InputError
-        A NaN force, a negative or NaN allowed uplift.
+        A NaN force, a negative or NaN allowed uplift or tension.
     """
     f_z = _scalar(f"anchor '{anchor}' vertical_force", vertical_force, "N",
                   "give the largest upward vertical force of the line on the anchor [N].", check=v.finite)
     cap = _scalar(f"anchor '{anchor}' allowed uplift", allowed, "N",
                   "0 N for a drag anchor; the design uplift capacity of a pile or suction anchor [N].",
                   check=v.nonnegative)
-    up = max(f_z, 0.0)
-    utilisation = up / cap if cap > 0.0 else (0.0 if up == 0.0 else math.inf)
+    t = _scalar(f"anchor '{anchor}' tension", tension, "N",
+                "give the line's tension at the anchor [N], >= 0 N (0: no round-off tolerance).", check=v.nonnegative)
+    up = float(uplift_demand(f_z, t))
     reference = (f"{API_EDITION} (anchor design) and {DNV_EDITION} Ch.2 Sec.4: no uplift on a drag anchor in the intact "
                  "condition" if cap == 0.0 else "the anchor's design uplift capacity")
-    return _result("anchor uplift", anchor, up, cap, utilisation, f"F_up = max(F_z, 0) <= {cap:.6g} N", reference)
+    return _result("anchor uplift", anchor, up, cap, "N",
+                   f"F_up <= {cap:.6g} N (F_up = F_z where F_z > {UPLIFT_ROUND_OFF:g} T_anchor: less is round-off)",
+                   reference)
 
 
 def offset_check(body, offset, limit) -> CheckResult:
@@ -373,11 +421,12 @@ def offset_check(body, offset, limit) -> CheckResult:
     lim = _scalar(f"body '{body}' offset limit", limit, "m",
                   "give the allowed offset [m] (from the risers', umbilicals' or gangway's design), > 0 m.",
                   check=v.positive)
-    return _result("offset", body, off, lim, off / lim, f"offset <= {lim:.6g} m",
+    return _result("offset", body, off, lim, "m", f"offset <= {lim:.6g} m",
                    "project offset limit (risers, umbilicals, gangway)")
 
 
-_COLUMNS = ("check", "item", "demand", "capacity", "utilisation", "margin", "passed", "formula", "reference")
+_COLUMNS = ("check", "item", "unit", "demand", "capacity", "margin", "utilisation", "passed", "formula",
+            "reference")
 
 
 def check_table(results: Iterable[CheckResult]):
@@ -391,8 +440,8 @@ def check_table(results: Iterable[CheckResult]):
     Returns
     -------
     pandas.DataFrame
-        Columns check, item, demand, capacity, utilisation, margin, passed, formula, reference (demand and
-        capacity in the check's units: N or m).
+        Columns check, item, unit, demand, capacity, margin (in the row's unit: N or m), utilisation (NaN where
+        the capacity is zero), passed, formula, reference.
 
     Raises
     ------
@@ -407,6 +456,6 @@ def check_table(results: Iterable[CheckResult]):
             raise InputError(f"results[{i}] must be a CheckResult, got {type(r).__name__}. Suggested fix: pass "
                              "what dnv_uls, dnv_als, api_tension, anchor_uplift or offset_check return.")
         row = {f.name: getattr(r, f.name) for f in fields(r)}
-        row["margin"] = r.margin
+        row["utilisation"] = math.nan if r.utilisation is None else r.utilisation
         rows.append(row)
     return pd.DataFrame(rows, columns=list(_COLUMNS))

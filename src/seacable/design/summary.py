@@ -363,8 +363,8 @@ def line_info(ds: xr.Dataset) -> dict[str, LineInfo]:
 
 
 def failed_lines(ds: xr.Dataset) -> dict[str, float]:
-    """The lines of a run that failed (line -> time [s]; 0 for a line removed from the start: the case's
-    ``damaged_lines``)."""
+    """The lines of a run that failed (line -> time [s]; 0 for a line removed from the start: the run's
+    ``damaged_lines``, as its settings record them, the line ``most_loaded`` resolved to included)."""
     out: dict[str, float] = {}
     if "failure_time" in ds.variables:
         ft = ds["failure_time"]
@@ -373,7 +373,14 @@ def failed_lines(ds: xr.Dataset) -> dict[str, float]:
             if math.isfinite(t):
                 out[name] = t
     analysis = (case_data(ds) or {}).get("analysis") or {}
-    for name in analysis.get("damaged_lines") or ():
+    try:
+        settings = json.loads(ds.attrs.get("settings") or "{}")
+    except ValueError:
+        settings = {}
+    removed = settings.get("damaged_lines") if isinstance(settings, dict) else None
+    if not isinstance(removed, list):  # a result without the lines its run removed: those its case names
+        removed = analysis.get("damaged_lines")
+    for name in removed if isinstance(removed, (list, tuple)) else ():  # 'most_loaded' unresolved: none known
         out[str(name)] = 0.0
     for f in analysis.get("failures") or ():
         if isinstance(f, dict) and f.get("line") is not None:
@@ -491,7 +498,7 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())
         same_storm = math.isclose(storm, duration, rel_tol=1e-6)
-        short = "" if same_storm else f" of {duration:.4g} s runs, NOT of the {storm:.4g} s storm (no Weibull fit)"
+        short = "" if same_storm else f" of {duration:.6g} s runs, NOT of the {storm:.6g} s storm (no Weibull fit)"
         if math.isfinite(g_mpm) and same_storm:
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds"
         elif math.isfinite(w_mpm):
@@ -500,8 +507,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds{short}"
         else:
             design, basis = float(g["maximum"].max()), f"largest simulated maximum of {n} seed(s){short}"
-        method = (f"Gumbel (max. likelihood) over seeds' maxima of {duration:.4g} s runs, {GUMBEL_REFERENCE}; "
-                  f"3-parameter Weibull of each seed's peaks raised to a {storm:.4g} s storm, {WEIBULL_REFERENCE}")
+        method = (f"Gumbel (max. likelihood) over seeds' maxima of {duration:.6g} s runs, {GUMBEL_REFERENCE}; "
+                  f"3-parameter Weibull of each seed's peaks raised to a {storm:.6g} s storm, {WEIBULL_REFERENCE}")
         rows.append({"load_case": load_case, "line": line, "end": end, "seeds": n, "duration": duration,
                      "storm": storm, "maximum_largest": float(g["maximum"].max()),
                      "maximum_mean": float(g["maximum"].mean()), "mean": mean, "std": float(g["std"].mean()),
@@ -523,6 +530,23 @@ def anchor_uplift_force(ds: xr.Dataset, line: str, info: LineInfo | None = None)
     The anchor is the end the case ties to a fixed point (end A of a single-line case); where the case does
     not say (a MoorDyn network), the lower end of the line at the start.
     """
+    vertical, _ = _anchor_vertical(ds, line, info)
+    return float(np.nanmax(vertical))
+
+
+def anchor_uplift_state(ds: xr.Dataset, line: str, info: LineInfo | None = None) -> tuple[float, float]:
+    """The instant of a run that the anchor uplift check takes: its vertical force [N] and the anchor tension
+    then [N]; the instant of the largest uplift (:func:`seacable.design.checks.uplift_demand`: round-off left
+    out), or of the largest vertical force when there is none."""
+    from .checks import uplift_demand
+
+    vertical, tension = _anchor_vertical(ds, line, info)
+    demand = uplift_demand(np.nan_to_num(vertical, nan=-np.inf), tension)
+    k = int(np.argmax(demand)) if np.any(demand > 0) else int(np.nanargmax(vertical))
+    return float(vertical[k]), float(tension[k])
+
+
+def _anchor_vertical(ds: xr.Dataset, line: str, info: LineInfo | None) -> tuple[np.ndarray, np.ndarray]:
     pos = _node_positions(ds, line)
     end = None if info is None else info.anchor_end
     if end is None:
@@ -532,7 +556,7 @@ def anchor_uplift_force(ds: xr.Dataset, line: str, info: LineInfo | None = None)
     tension = line_series(ds, "anchor_tension", line)
     with np.errstate(invalid="ignore", divide="ignore"):
         vertical = np.where(length > 0, tension * (b[:, 2] - a[:, 2]) / length, 0.0)
-    return float(np.nanmax(vertical))
+    return vertical, tension
 
 
 def body_offsets(ds: xr.Dataset) -> dict[str, tuple[float, str]]:
@@ -558,8 +582,8 @@ def body_offsets(ds: xr.Dataset) -> dict[str, tuple[float, str]]:
     return out
 
 
-_CHECK_COLUMNS = ["load_case", "check", "item", "demand", "capacity", "utilisation", "margin", "passed", "status",
-                  "formula", "reference"]
+_CHECK_COLUMNS = ["load_case", "check", "item", "unit", "demand", "capacity", "margin", "utilisation", "passed",
+                  "status", "formula", "reference"]
 
 
 def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, consequence_class: int = 1,
@@ -572,8 +596,9 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
       failed or was removed: ``T_c,mean`` the mean fairlead tension, ``T_c,dyn`` the design maximum less it
       (:func:`extremes_table`); failed lines themselves are not checked.
     - API RP 2SK, dynamic analysis: the design maximum against MBS / FoS, intact or damaged.
-    - Anchor uplift: the largest upward pull over the seeds (:func:`anchor_uplift_force`) against
-      ``allowed_uplift`` [N] (0: a drag anchor takes none).
+    - Anchor uplift: the largest upward pull over the seeds (:func:`anchor_uplift_state`; round-off, up to
+      :data:`~seacable.design.checks.UPLIFT_ROUND_OFF` of the anchor tension, is none) against ``allowed_uplift``
+      [N] (0: a drag anchor takes none).
     - Offset: each body's largest horizontal offset over the seeds (:func:`body_offsets`) against
       ``offset_limit`` [m], when one is given.
 
@@ -583,8 +608,10 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
     Returns
     -------
     pandas.DataFrame
-        Columns ``load_case, check, item, demand, capacity, utilisation, margin, passed, status, formula,
-        reference`` (demand and capacity in N, or m for offsets).
+        Columns ``load_case, check, item, unit, demand, capacity, margin, utilisation, passed, status, formula,
+        reference``: demand, capacity and margin (capacity - demand) in the row's unit (N, or m for offsets),
+        utilisation [-] only where the capacity is positive (NaN: a zero capacity, or not checked); never an
+        infinite number.
 
     Raises
     ------
@@ -630,9 +657,9 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
             fn = checks.dnv_als if damaged else checks.dnv_uls
             results.append(fn(line, e["mean"], max(e["dynamic"], 0.0), mbs, consequence_class))
             results.append(checks.api_tension(line, e["design_maximum"], mbs, api, "dynamic"))
-        for line, force in f["uplift"].items():
+        for line, (force, tension) in f["uplift"].items():
             if lines is None or line in lines:
-                results.append(checks.anchor_uplift(f"anchor of {line}", force if force > 0 else 0.0, allowed_uplift))
+                results.append(checks.anchor_uplift(f"anchor of {line}", force, allowed_uplift, tension))
         if offset_limit is not None and not f["offsets"]:
             rows.append(_skipped(load_case, "offset", "-", "not checked: the results hold no body or platform "
                                                           "motion (body_position, platform_position)"))
@@ -653,9 +680,16 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
 
 
 def _skipped(load_case, check, item, why) -> dict:
-    return {"load_case": load_case, "check": check, "item": item, "demand": math.nan, "capacity": math.nan,
-            "utilisation": math.nan, "margin": math.nan, "passed": None, "status": why, "formula": "",
-            "reference": ""}
+    return {"load_case": load_case, "check": check, "item": item, "unit": "m" if check == "offset" else "N",
+            "demand": math.nan, "capacity": math.nan, "margin": math.nan, "utilisation": math.nan, "passed": None,
+            "status": why, "formula": "", "reference": ""}
+
+
+def _uplift_key(state: tuple[float, float]) -> tuple[float, float]:
+    """Order of two seeds' anchor states: by uplift (round-off left out), then by vertical force."""
+    from .checks import uplift_demand
+
+    return float(uplift_demand(*state)), state[0]
 
 
 def _check_facts(runs: Sequence[Run]) -> dict[str, dict]:
@@ -669,8 +703,9 @@ def _check_facts(runs: Sequence[Run]) -> dict[str, dict]:
             for line, t in failed_lines(ds).items():
                 f["failed"][line] = min(t, f["failed"].get(line, math.inf))
             for line in line_names(ds):
-                force = anchor_uplift_force(ds, line, info.get(line))
-                f["uplift"][line] = max(force, f["uplift"].get(line, -math.inf))
+                state = anchor_uplift_state(ds, line, info.get(line))
+                if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
+                    f["uplift"][line] = state
             for body, (offset, where) in body_offsets(ds).items():
                 if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
                     f["offsets"][body] = (offset, where)

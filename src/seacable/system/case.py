@@ -51,8 +51,10 @@ __all__ = ["SYSTEM_ANALYSES", "SystemAnalysis", "SystemCase", "SystemOffsetsAnal
 class _Solve(Model):
     """Options of the system equilibrium shared by the system analyses."""
 
-    damaged_lines: tuple[str, ...] = Field(
-        (), description="Lines removed in the damaged condition, solved beside the intact one (none: intact only).")
+    damaged_lines: tuple[str, ...] | Literal["most_loaded"] = Field(
+        (), description="Lines removed in the damaged condition, solved beside the intact one (none: intact only); "
+                        "'most_loaded': the line of the largest tension in the intact equilibrium "
+                        "(seacable.system.damaged; in system_offsets, at each heading's largest load).")
     tolerance: quantity("-", gt=0, lt=1e-2) = Field(
         1e-8, description="Equilibrium tolerance on the force residual, relative. [-]")
     max_iterations: int = Field(200, ge=1, le=100_000, description="Newton iterations of one equilibrium.")
@@ -70,7 +72,7 @@ class _Solve(Model):
     @model_validator(mode="after")
     def _damaged(self):
         d = self.damaged_lines
-        if len(set(d)) != len(d):
+        if not isinstance(d, str) and len(set(d)) != len(d):
             raise ValueError(f"damaged_lines names a line twice: {list(d)}. Suggested fix: name each once.")
         return self
 
@@ -260,7 +262,8 @@ class SystemCase(Model):
                                  f"line type; segment(s) {missing} have none. Suggested fix: add 'axial_stiffness'"
                                  " to the line type.")
         a = self.analysis
-        for i, ref in enumerate(getattr(a, "damaged_lines", ())):
+        named = getattr(a, "damaged_lines", ())
+        for i, ref in enumerate(() if isinstance(named, str) else named):
             if ref not in self.lines:
                 raise ValueError(f"analysis.damaged_lines[{i}]: line '{ref}' is not defined (lines: "
                                  f"{', '.join(self.lines)}).{suggest(ref, self.lines)}")
@@ -278,16 +281,24 @@ class SystemCase(Model):
         """The mooring system of the case (points, bodies, lines)."""
         return MooringSystem(points=self.points, bodies=self.bodies, lines=self.lines)
 
-    def damaged_system(self) -> MooringSystem | None:
-        """The system without the analysis's ``damaged_lines``, or None when it names none (or has none).
+    def damaged_system(self, names: tuple[str, ...] | None = None) -> MooringSystem | None:
+        """The system without the analysis's ``damaged_lines`` (or without ``names``, the lines that
+        ``damaged_lines: most_loaded`` resolved to), or None when it names none (or has none).
 
         Raises
         ------
         InputError
             If it removes every line (a body left with none is refused by the statics when nothing
-            else holds it: :func:`seacable.system.run.check_bodies_without_lines`).
+            else holds it: :func:`seacable.system.run.check_bodies_without_lines`), or if the analysis asks for
+            the most loaded line and ``names`` does not say which it is.
         """
-        names = getattr(self.analysis, "damaged_lines", ())
+        if names is None:
+            names = getattr(self.analysis, "damaged_lines", ())
+            if isinstance(names, str):
+                raise InputError("analysis.damaged_lines 'most_loaded' is known once the intact equilibrium is "
+                                 "solved. Suggested fix: call damaged_system(names) with the line that "
+                                 "seacable.system.damaged.most_loaded_line finds.")
+        names = tuple(names)
         if not names:
             return None
         if set(names) >= set(self.lines):

@@ -99,6 +99,7 @@ from ..mooring.solver import simulate as simulate_lines
 from ..results import make_dataset, var
 from . import _dyn_kernel as DK
 from ._stat_model import euler_rate_map
+from .damaged import is_most_loaded, line_tensions, most_loaded_line
 from .model import MooringSystem
 
 __all__ = [
@@ -216,9 +217,10 @@ class SystemDynamicAnalysis(Model):
     external_forces: dict[str, ExternalForceSeries] = Field(
         default_factory=dict, description="External force time series per free body.")
     failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
-    damaged_lines: tuple[str, ...] = Field(
+    damaged_lines: tuple[str, ...] | Literal["most_loaded"] = Field(
         (), description="Lines left out from the start: the damaged condition (a sweep over [[], [line1]] runs "
-                        "intact and damaged).")
+                        "intact and damaged); 'most_loaded': the line of the largest tension in the static "
+                        "equilibrium the run starts from (seacable.system.damaged).")
     start: Literal["equilibrium", "held", "auto"] = Field(
         "equilibrium", description="Static start of the whole system, or with free bodies held at their position, "
                                    "or 'auto': the static start when it converges, else held (with a warning).")
@@ -244,7 +246,7 @@ class SystemDynamicAnalysis(Model):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
-        if len(set(self.damaged_lines)) != len(self.damaged_lines):
+        if not isinstance(self.damaged_lines, str) and len(set(self.damaged_lines)) != len(self.damaged_lines):
             raise ValueError(f"damaged_lines names a line twice: {list(self.damaged_lines)}. Suggested fix: name each "
                              "once.")
         if self.release_offsets and self.start != "equilibrium":
@@ -931,8 +933,9 @@ def _global_state(q, qd, frame):
 def _system_of(case) -> MooringSystem:
     """The MooringSystem of a case: ``case.system()`` or ``case.system``, or its points/bodies/lines."""
     damaged = getattr(case, "damaged_system", None)
-    if callable(damaged) and getattr(case.analysis, "damaged_lines", ()):
-        return damaged()
+    named = getattr(case.analysis, "damaged_lines", ())
+    if callable(damaged) and named:
+        return damaged((most_loaded_at_start(case),)) if is_most_loaded(named) else damaged()
     sys_ = getattr(case, "system", None)
     if callable(sys_):
         sys_ = sys_()
@@ -1091,6 +1094,31 @@ def _mean_offsets(case, system: MooringSystem, a: SystemDynamicAnalysis) -> Syst
         pose = np.asarray(eq.body_position[eq.body_names.index(n)], float) - np.asarray(system.bodies[n].position)
         motions[n] = motions[n].model_copy(update={"mean_offset": tuple(float(v) for v in pose)})
     return a.model_copy(update={"body_motions": motions})
+
+
+def most_loaded_at_start(case) -> str:
+    """The line ``damaged_lines: most_loaded`` removes from a ``system_dynamic`` case: the line of the largest
+    tension in the intact static equilibrium the run starts from (the bodies under their steady
+    ``external_force``, a body of a ``rao`` motion with ``mean_offset: equilibrium`` free;
+    :func:`seacable.system.statics.solve_equilibrium`, :mod:`seacable.system.damaged`)."""
+    from ..errors import NoSolutionError
+    from .statics import solve_equilibrium
+
+    system = case.system()
+    a = case.analysis
+    names = [n for n, m in a.body_motions.items() if isinstance(m, RAOMotion) and m.mean_offset == "equilibrium"]
+    bodies = {n: b.model_copy(update={"kind": "free"}) if n in names else b for n, b in system.bodies.items()}
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SeacableWarning)  # the run itself warns of what the statics see
+            eq = solve_equilibrium(MooringSystem(points=system.points, bodies=bodies, lines=system.lines),
+                                   case.environment)
+    except (InputError, NoSolutionError, ConvergenceError) as err:
+        raise InputError(f"analysis.damaged_lines 'most_loaded': the intact static equilibrium that tells the most "
+                         f"loaded line could not be found: {err} Suggested fix: name the line to remove "
+                         "(damaged_lines: [NAME]).") from None
+    lines = tuple(system.lines)
+    return most_loaded_line(lines, line_tensions(eq, lines), "")
 
 
 def lines_only(fe: SystemFE) -> bool:
@@ -1265,5 +1293,6 @@ def run_system_dynamic(case, progress=None):
     run = (_simulate_lines if fe.model.water.sea is not None else simulate_system)(
         fe, start, a.duration, a.time_step, a.output_interval, analysis=a, tol=min(a.tolerance * 10, 1e-4),
         max_iter=a.max_iterations, progress=progress, beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
+    removed = [n for n in getattr(case, "lines", None) or () if n not in fe.system.lines]
     return system_result(fe, run, case=case, settings={"damping_ratio": a.damping_ratio, "rayleigh": list(a.rayleigh),
-                                                       "start": start.start})
+                                                       "start": start.start, "damaged_lines": removed})

@@ -20,6 +20,7 @@ Every check that can be made before solving is in :func:`prepare_system_static` 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass
@@ -30,6 +31,7 @@ from .._limits import check_run_size
 from ..errors import ConvergenceError, InputError, NoSolutionError
 from ..results import make_dataset, var
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+from .damaged import is_most_loaded, line_tensions, most_loaded_line
 from .model import MooringSystem
 
 __all__ = ["DOFS", "REFERENCES", "SystemSetup", "check_bodies_without_lines", "equilibrium_variables",
@@ -89,7 +91,8 @@ class SystemSetup:
     """What the solves of a system analysis need (see :func:`prepare_system_static`).
 
     ``conditions`` names the conditions (``intact``, ``damaged``) and ``systems`` holds their
-    systems; ``lines``, ``bodies`` and ``points`` are the names along the result's dimensions
+    systems (the damaged one None while ``damaged_lines: most_loaded`` waits for the intact equilibrium:
+    :mod:`seacable.system.damaged`); ``lines``, ``bodies`` and ``points`` are the names along the result's dimensions
     (those of the intact system). ``headings`` [rad] and ``loads`` [N] are the sweep of
     ``system_offsets`` (empty for ``system_static``).
     """
@@ -141,22 +144,32 @@ def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
                          f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
     mode = statics_used(case, statics)
     intact = case.system()
-    damaged = case.damaged_system()
-    systems = (intact,) if damaged is None else (intact, damaged)
-    for condition, system in zip(("intact", "damaged"), systems):
-        _check_free_points(system, condition)
-        check_bodies_without_lines(system, "" if condition == "intact" else
-                                   f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} "
-                                   "removed): ")
-        where = "" if condition == "intact" else \
-            f"damaged condition (analysis.damaged_lines {list(case.analysis.damaged_lines)} removed): "
-        if mode == "finite_element":
-            _fe_checks(system, case.environment, where)
-        else:
-            _start_checks(system, case.environment, where, case.analysis.max_strain)
-    return SystemSetup(case=case, conditions=("intact", "damaged")[:len(systems)], systems=systems,
+    named = case.analysis.damaged_lines
+    if is_most_loaded(named):
+        # the line is known once the intact condition is solved: each one it may be is checked here
+        for line in intact.lines:
+            _check_condition(case, case.damaged_system((line,)), (line,), mode)
+        damaged = None
+    else:
+        damaged = case.damaged_system()
+    _check_condition(case, intact, None, mode)
+    if damaged is not None:
+        _check_condition(case, damaged, named, mode)
+    several = damaged is not None or (is_most_loaded(named) and len(intact.lines) > 0)
+    return SystemSetup(case=case, conditions=("intact", "damaged")[:1 + several], systems=(intact, damaged)[:1 + several],
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points),
                        statics=mode)
+
+
+def _check_condition(case, system: MooringSystem, removed, mode: str) -> None:
+    """The checks of one condition's system before solving (``removed``: the lines it lacks; None: intact)."""
+    _check_free_points(system, "intact" if removed is None else "damaged")
+    where = "" if removed is None else f"damaged condition (analysis.damaged_lines {list(removed)} removed): "
+    check_bodies_without_lines(system, where)
+    if mode == "finite_element":
+        _fe_checks(system, case.environment, where)
+    else:
+        _start_checks(system, case.environment, where, case.analysis.max_strain)
 
 
 def _fe_checks(system: MooringSystem, environment, where: str) -> None:
@@ -483,10 +496,16 @@ def _variables(values: dict, lead: tuple[str, ...], table: dict) -> dict:
 
 
 def _settings(case: SystemCase, setup: SystemSetup, **more) -> dict:
+    """The run's settings; ``damaged_lines`` the lines the damaged condition removed (for ``most_loaded``, the
+    line it resolved to; per heading in ``system_offsets``: the result's ``damaged_line``)."""
     a = case.analysis
+    damaged = setup.systems[1] if len(setup.systems) > 1 else None
+    removed = [n for n in setup.lines if damaged is not None and n not in damaged.lines] if damaged is not None \
+        else ("most_loaded" if is_most_loaded(a.damaged_lines) else list(a.damaged_lines))
     return {"tolerance": a.tolerance, "max_iterations": a.max_iterations, "load_steps": a.load_steps,
-            "max_strain": a.max_strain,
-            "damaged_lines": list(a.damaged_lines), "depth": case.environment.depth, **more}
+            "max_strain": a.max_strain, "damaged_lines": removed,
+            **({"damaged_lines_rule": "most_loaded"} if is_most_loaded(a.damaged_lines) else {}),
+            "depth": case.environment.depth, **more}
 
 
 def run_system_static(case: SystemCase, statics: str | None = None):
@@ -510,12 +529,18 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_static case '{case.name}', {condition} condition"
+        if system is None:  # damaged_lines: most_loaded, the line of the largest tension in the intact equilibrium
+            line = most_loaded_line(setup.lines, line_tensions(intact_eq, setup.lines), f"{where}: ")
+            system = case.damaged_system((line,))
+            setup = dataclasses.replace(setup, systems=(setup.systems[0], system))
+            where += f" ({line}, the most loaded line, removed)"
         eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
         _check_stable(system, eq, where)
         if eq.pin_reaction is not None:
             for k, name in enumerate(eq.free_body_names):
                 pins[c, setup.bodies.index(name)] = eq.pin_reaction[k]
         held += [f"{condition}: {what}" for what in eq.indeterminate]
+        intact_eq = eq if c == 0 else intact_eq
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
         coupled.append(np.asarray(eq.stiffness, float))
@@ -559,28 +584,51 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     return ds
 
 
-def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, restoring: list) -> None:
+def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, restoring: list,
+                   chosen: list | None = None) -> None:
     """Solve the swept loads of each condition and heading in order, appending each equilibrium's
-    variables to ``records`` and its restoring force to ``restoring`` (so that an interrupt keeps them)."""
+    variables to ``records`` and its restoring force to ``restoring`` (so that an interrupt keeps them).
+
+    A damaged condition of ``damaged_lines: most_loaded`` (its system None) removes, at each heading, the line
+    of the largest tension in the intact equilibrium under that heading's largest load; ``chosen`` gets those
+    lines, heading by heading."""
     a: SystemOffsetsAnalysis = case.analysis
     for condition, system in zip(setup.conditions, setup.systems):
         where = f"system_offsets case '{case.name}', {condition} condition"
-        base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
-        _check_stable(system, base, f"{where}, at no load")
-        for h in headings:
+        per_heading = system is None
+        bases: dict[str, tuple] = {}
+        if not per_heading:
+            base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
+            _check_stable(system, base, f"{where}, at no load")
+        for k, h in enumerate(headings):
+            at = where
+            if per_heading:
+                last = records[(k + 1) * len(loads) - 1]  # the intact equilibrium under this heading's largest load
+                tension = np.fmax(last["fairlead_tension"], last["anchor_tension"])
+                line = most_loaded_line(setup.lines, tension, f"{where}, heading {h:.6g} rad: ")
+                if chosen is not None:
+                    chosen.append(line)
+                at = f"{where} ({line}, the most loaded line at heading {h:.6g} rad, removed)"
+                if line not in bases:
+                    damaged = case.damaged_system((line,))
+                    eq0 = _solve_path(case, damaged, _ramp(damaged, a.load_steps), None, at, _static_fix(a),
+                                      setup.statics)
+                    _check_stable(damaged, eq0, f"{at}, at no load")
+                    bases[line] = (damaged, eq0)
+                system, base = bases[line]
             direction = np.array([math.cos(h), math.sin(h), 0.0, 0.0, 0.0, 0.0])
             eq, last = base, 0.0
             for load in loads:
                 if load > 0.0:
                     steps = []
-                    for k in range(1, a.load_steps + 1):
-                        f = last + (load - last) * k / a.load_steps
+                    for k2 in range(1, a.load_steps + 1):
+                        f = last + (load - last) * k2 / a.load_steps
                         steps.append((f"{f:.6g} N at heading {h:.6g} rad", {a.body: tuple(f * direction)}))
                     fix = (f"add intermediate loads between {last:g} N and {load:g} N (a finer ramp in "
                            f"analysis.loads, or analysis.load_steps: {max(10, 2 * a.load_steps)}), raise "
                            f"analysis.max_iterations ({a.max_iterations}), or lower the largest load if the lines "
                            "cannot hold it")
-                    eq = _solve_path(case, system, steps, eq, where, fix, setup.statics, stiffness=False)
+                    eq = _solve_path(case, system, steps, eq, at, fix, setup.statics, stiffness=False)
                     last = load
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
@@ -599,9 +647,9 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     a: SystemOffsetsAnalysis = case.analysis
     setup = prepare_system_offsets(case, statics)
     loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
-    records, restoring = [], []
+    records, restoring, chosen = [], [], []
     try:
-        _sweep_offsets(case, setup, loads, headings, records, restoring)
+        _sweep_offsets(case, setup, loads, headings, records, restoring, chosen)
         interrupted = False
     except KeyboardInterrupt:  # Ctrl-C or SIGTERM: keep the equilibria found, NaN for the rest
         if not records:
@@ -623,8 +671,20 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     restoring = np.swapaxes(np.reshape(restoring, (lead[0], lead[2], lead[1])), 1, 2)
     data["restoring_force"] = var(dims, restoring, "N",
                                   f"horizontal force of the lines on body '{a.body}' against the load's heading")
-    data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
-                               "1 where the line is in the condition, 0 where it is removed (its values NaN)")
+    if is_most_loaded(a.damaged_lines):  # the line removed depends on the heading
+        chosen += [""] * (headings.size - len(chosen))  # an interrupted sweep: none for the headings not reached
+        present = np.ones((len(setup.conditions), headings.size, len(setup.lines)), dtype=np.int8)
+        for k, line in enumerate(chosen):
+            if line:
+                present[1, k, setup.lines.index(line)] = 0
+        data["line_present"] = var(("condition", "heading", "line"), present, "1",
+                                   "1 where the line is in the condition, 0 where it is removed (its values NaN)")
+        data["damaged_line"] = var("heading", np.array(chosen, dtype=object), "1",
+                                   "the line the damaged condition removes at this heading: the most loaded in "
+                                   "the intact equilibrium under the heading's largest load")
+    else:
+        data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
+                                   "1 where the line is in the condition, 0 where it is removed (its values NaN)")
     coords = _coords(setup)
     coords.update({"applied_load": var("applied_load", loads, "N", f"external horizontal load on body '{a.body}'"),
                    "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})

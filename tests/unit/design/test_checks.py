@@ -37,7 +37,7 @@ def test_dnv_uls_cc1_worked_example():
     assert r.capacity == pytest.approx(6.935e6, rel=REL)
     assert r.utilisation == pytest.approx(3.7 / 6.935, rel=REL)
     assert r.utilisation == pytest.approx(0.5335255948, rel=1e-9)
-    assert r.passed and r.margin == pytest.approx(1 - 3.7 / 6.935, rel=REL)
+    assert r.passed and r.margin == pytest.approx(6.935e6 - 3.7e6, rel=REL) and r.unit == "N"  # S_C - T_d [N]
     assert r.formula == "T_d = 1.10 T_c,mean + 1.50 T_c,dyn <= S_C = 0.95 MBS"
     assert "DNV-OS-E301 (October 2010) Ch.2 Sec.2" in r.reference and "consequence class 1" in r.reference
 
@@ -94,7 +94,7 @@ def test_api_defaults_are_intact_dynamic():
     r = api_tension("L", 4.5e6, MBS)
     assert r.check == "API RP 2SK intact dynamic" and r.capacity == pytest.approx(MBS / 1.67, rel=REL)
     assert r.utilisation == pytest.approx(1.0294520548, rel=1e-9)
-    assert not r.passed and r.margin == pytest.approx(-0.0294520548, rel=1e-8)
+    assert not r.passed and r.margin == pytest.approx(7.3e6 / 1.67 - 4.5e6, rel=REL) and r.margin < 0  # [N]
 
 
 def test_pass_flips_exactly_at_utilisation_one():
@@ -114,15 +114,34 @@ def test_pass_flips_exactly_at_utilisation_one():
 
 
 def test_anchor_uplift_on_a_drag_anchor():
-    """Allowed uplift 0 N (drag anchor, intact): no pull passes with utilisation 0, a downward pull is no uplift,
-    any upward pull fails with utilisation inf."""
+    """Allowed uplift 0 N (drag anchor, intact): no pull passes with a margin of 0 N, a downward pull is no uplift,
+    an upward pull fails with its margin in N; a zero capacity has no utilisation (None, never inf)."""
     none = anchor_uplift("A1", 0.0)
-    assert none.passed and none.utilisation == 0.0 and none.demand == 0.0 and none.capacity == 0.0
+    assert none.passed and none.utilisation is None and none.demand == 0.0 and none.capacity == 0.0
+    assert none.margin == 0.0 and none.unit == "N"
     down = anchor_uplift("A1", -5.0e3)
-    assert down.passed and down.demand == 0.0 and down.utilisation == 0.0
+    assert down.passed and down.demand == 0.0 and down.utilisation is None and down.margin == 0.0
     up = anchor_uplift("A1", 1.0)
-    assert not up.passed and up.utilisation == math.inf and up.margin == -math.inf and up.demand == 1.0
+    assert not up.passed and up.utilisation is None and up.margin == -1.0 and up.demand == 1.0
     assert up.check == "anchor uplift" and "drag anchor" in up.reference
+
+
+def test_anchor_uplift_round_off_is_a_thousandth_of_the_tension():
+    """The OC3-Hywind demo's 35 N of computed pull on a grounded anchor under 700 kN of tension is round-off (5e-5
+    of the tension, under UPLIFT_ROUND_OFF = 1e-3): no uplift, a pass with a margin of 0 N. The limit is exact:
+    700 N under 700 kN (1e-3) is round-off, the next float above is uplift and fails by its own size."""
+    t = 7.0e5
+    r = anchor_uplift("A1", 35.0, tension=t)
+    assert r.passed and r.demand == 0.0 and r.margin == 0.0 and r.utilisation is None
+    assert anchor_uplift("A1", 700.0, tension=t).passed
+    above = anchor_uplift("A1", np.nextafter(700.0, math.inf), tension=t)
+    assert not above.passed and above.margin == -np.nextafter(700.0, math.inf)
+    assert "1e-3" not in above.formula and "0.001 T_anchor" in above.formula
+    # with an allowed uplift (a pile) the round-off is left out as well: 35 N of 100 kN is no use of it
+    assert anchor_uplift("P1", 35.0, allowed=1.0e5, tension=t).utilisation == 0.0
+    # a real lift-off: 60 kN up under 700 kN (4.9 deg) is uplift: against a 100 kN pile capacity 0.6, margin 40 kN
+    pile = anchor_uplift("P1", 6.0e4, allowed=1.0e5, tension=t)
+    assert pile.utilisation == pytest.approx(0.6, rel=REL) and pile.margin == pytest.approx(4.0e4, rel=REL)
 
 
 def test_anchor_uplift_with_an_allowed_pull():
@@ -134,10 +153,10 @@ def test_anchor_uplift_with_an_allowed_pull():
 
 
 def test_offset_check():
-    """12 m against a 30 m limit: utilisation 0.4, margin 0.6."""
+    """12 m against a 30 m limit: utilisation 0.4, margin 18 m."""
     r = offset_check("FPSO", 12.0, 30.0)
-    assert (r.check, r.item, r.demand, r.capacity) == ("offset", "FPSO", 12.0, 30.0)
-    assert r.utilisation == pytest.approx(0.4, rel=REL) and r.margin == pytest.approx(0.6, rel=REL) and r.passed
+    assert (r.check, r.item, r.unit, r.demand, r.capacity) == ("offset", "FPSO", "m", 12.0, 30.0)
+    assert r.utilisation == pytest.approx(0.4, rel=REL) and r.margin == 18.0 and r.passed
 
 
 def test_check_result_is_frozen():
@@ -148,18 +167,22 @@ def test_check_result_is_frozen():
 
 
 def test_check_table():
-    """One row per check, in order, with the API's columns; margin = 1 - utilisation."""
+    """One row per check, in order, with the API's columns; margin = capacity - demand in the row's unit; the
+    drag anchor's utilisation NaN (no ratio to a zero capacity), no number of the table infinite."""
     results = [dnv_uls("L1", MEAN, DYN, MBS), api_tension("L1", 4.5e6, MBS), anchor_uplift("A1", 1.0),
                offset_check("FPSO", 12.0, 30.0)]
     table = check_table(results)
-    assert list(table.columns) == ["check", "item", "demand", "capacity", "utilisation", "margin", "passed",
+    assert list(table.columns) == ["check", "item", "unit", "demand", "capacity", "margin", "utilisation", "passed",
                                    "formula", "reference"]
     assert list(table["check"]) == ["DNV-OS-E301 ULS CC1", "API RP 2SK intact dynamic", "anchor uplift", "offset"]
+    assert list(table["unit"]) == ["N", "N", "N", "m"]
     assert list(table["passed"]) == [True, False, False, True]
     assert table["demand"].iloc[0] == pytest.approx(3.7e6, rel=REL)
     assert table["capacity"].iloc[0] == pytest.approx(6.935e6, rel=REL)
-    np.testing.assert_array_equal(table["margin"], 1.0 - table["utilisation"])
-    assert table["utilisation"].iloc[2] == math.inf
+    np.testing.assert_array_equal(table["margin"], table["capacity"] - table["demand"])
+    assert math.isnan(table["utilisation"].iloc[2]) and table["margin"].iloc[2] == -1.0
+    numbers = table[["demand", "capacity", "margin"]].to_numpy(float)
+    assert np.isfinite(numbers).all() and not np.isinf(table["utilisation"].to_numpy(float)).any()
     empty = check_table([])
     assert empty.empty and list(empty.columns) == list(table.columns)
 

@@ -190,6 +190,27 @@ def test_anchor_uplift_is_the_vertical_component_along_the_first_element(synth):
                                                     nodes=synth.nodes[::-1]), "L1") == pytest.approx(9.0e5, rel=1e-14)
 
 
+def test_anchor_round_off_is_no_uplift(synth):
+    """A grounded line whose first element rises 5e-5 of its length (the solver's round-off at the seabed): 35 N
+    up under 700 kN of anchor tension is no uplift (under UPLIFT_ROUND_OFF = 1e-3 of the tension): the drag
+    anchor passes with a margin of 0 N and no utilisation. With a real 4.9 deg lift at one instant (60 kN up)
+    that instant is taken, and the check fails by 60 kN."""
+    nodes = synth.nodes.copy()
+    nodes[1] = [4.0, 0.0, -100.0 + 4.0 * 5e-5]
+    anchor = np.full(40, 7.0e5)
+    ds = synth.result({"L1": np.full(40, 2e6)}, anchor={"L1": anchor}, breaking_load={"L1": 7.3e6}, nodes=nodes)
+    assert summary.anchor_uplift_force(ds, "L1") == pytest.approx(35.0, rel=1e-6)
+    row = summary.checks_table(summary.read_results(ds)).query("check == 'anchor uplift'").iloc[0]
+    assert row["status"] == "pass" and row["demand"] == 0.0 and row["margin"] == 0.0
+    assert math.isnan(row["utilisation"]) and row["unit"] == "N"
+    z = np.broadcast_to(nodes[:, 2], (40, 3)).copy()
+    z[25, 1] = -100.0 + 4.0 * 6e4 / math.sqrt(7.0e5 ** 2 - 6e4 ** 2)  # F_z = 60 kN of 700 kN at step 25
+    ds["z"] = (("line", "time", "node"), z[None])
+    assert summary.anchor_uplift_state(ds, "L1") == pytest.approx((6e4, 7.0e5), rel=1e-9)
+    row = summary.checks_table(summary.read_results(ds)).query("check == 'anchor uplift'").iloc[0]
+    assert row["status"] == "FAIL" and row["margin"] == pytest.approx(-6e4, rel=1e-9)
+
+
 def test_offset_is_the_largest_horizontal_distance_from_the_case_position(synth):
     xy = np.zeros((20, 2))
     xy[7] = [3.0, 4.0]
