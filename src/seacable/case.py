@@ -71,6 +71,9 @@ _XZ = tuple[float, float]
 #: refused (:meth:`Case._unused_inputs`): a silently ignored input is a result of something other than asked.
 ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "waves")
 _SEABED = frozenset({"depth", "seabed.slope", "seabed.friction"})
+#: A static analysis is the still-water equilibrium: waves (a zero-mean load in linear theory) are taken, so that one
+#: environment serves a line's statics and its dynamics, and have no part in it.
+_STILL_WATER = frozenset({"waves"})
 
 
 def given_environment_inputs(env: Environment) -> tuple[str, ...]:
@@ -103,7 +106,7 @@ class StaticAnalysis(_Moored):
     """Static equilibrium of a (multi-segment) line between anchor and fairlead."""
 
     type: Literal["static"] = "static"
-    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER  # the environment inputs it takes (Case._unused_inputs)
     points_per_segment: int = Field(50, ge=2, le=100_000, description="Profile points per segment.")
 
 
@@ -134,7 +137,7 @@ class PushoverAnalysis(_Offsets, _Moored):
     """Force-excursion curve: the fairlead moved horizontally by ``offsets``."""
 
     type: Literal["pushover"] = "pushover"
-    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER  # the environment inputs it takes (Case._unused_inputs)
 
 
 class ModalAnalysis(_Moored):
@@ -145,7 +148,7 @@ class ModalAnalysis(_Moored):
     """
 
     type: Literal["modal"] = "modal"
-    USES: ClassVar[frozenset[str]] = _SEABED  # the environment inputs it takes (Case._unused_inputs)
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER  # the environment inputs it takes (Case._unused_inputs)
     n_modes: int = Field(10, ge=1, le=1000, description="Modes to report per plane.")
     n_elements: int = Field(100, ge=2, le=20_000, description="Elements of the linearised model.")
     free_end: bool = Field(False, description="End A (the lower end) free: the line hangs from the fairlead.")
@@ -179,7 +182,7 @@ class TowedSteadyAnalysis(Model):
     current's part along the tow is taken (the steady tow is 2-D)."""
 
     type: Literal["towed_steady"] = "towed_steady"
-    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current"})
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current"}) | _STILL_WATER
     vessel_speed: quantity("m/s") = Field(description="Vessel speed along +X. [m/s]")
     body: TowedBody | None = None
     tangential_drag: TangentialDragForm = Field(
@@ -549,14 +552,14 @@ class MooringStaticAnalysis(_Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
-    USES: ClassVar[frozenset[str]] = _SEABED | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
 
 
 class MooringPushoverAnalysis(_Offsets, _Mooring):
     """Quasi-static force-excursion curve of the finite-element model: the fairlead moved along x."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
-    USES: ClassVar[frozenset[str]] = _SEABED | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
 
 
 class MooringDynamicAnalysis(_Mooring):

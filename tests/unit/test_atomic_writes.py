@@ -25,7 +25,7 @@ import yaml
 import seacable as sc
 from seacable._atomic import atomic_path, atomic_write, deferred_interrupts, interrupt_requested
 from seacable.cli import main
-from seacable.errors import InputError
+from seacable.errors import InputError, SeacableWarning
 from seacable.results import make_dataset, read_netcdf, var, write_netcdf
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -231,7 +231,7 @@ def test_sweep_summary_and_records_written_whole(tmp_path, monkeypatch):
         raise Boom
 
     monkeypatch.setattr(Path, "write_text", write_text)
-    with pytest.raises(Boom):
+    with pytest.raises(Boom), pytest.warns(SeacableWarning, match="recorded as done .* are run again: case 0"):
         sweep(_sweep(tmp_path), out, scheduler="synchronous")
     monkeypatch.undo()
     assert record.read_bytes() == good_record

@@ -470,7 +470,7 @@ def test_the_corpus_is_large_and_each_id_unique():
 def test_each_file_of_the_corpus_is_a_distinct_bad_input():
     # one file per bad input (issue 37's second corpus: tests/unit/bad_inputs/), none a copy of another
     files = [p for p in BAD_INPUTS.iterdir() if p.is_file()]
-    assert len(files) >= 70
+    assert len(files) >= 60
     assert len({p.read_bytes() for p in files}) == len(files)
 
 

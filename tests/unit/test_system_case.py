@@ -124,7 +124,7 @@ def test_a_free_body_with_no_lines_and_no_horizontal_restoring_is_refused_before
     assert main(["validate", str(path)]) == 2
     err = capsys.readouterr().err
     assert err.count("seacable: error:") == 1 and "Traceback" not in err
-    assert ("bodies.spare: a free body that no line ends on has no horizontal restoring (surge 0 N/m, sway 0 N/m"
+    assert ("bodies.spare: a free body that no line of 'lines' ends on has no horizontal restoring (surge 0 N/m, sway 0 N/m"
             in err and "Suggested fix:" in err and "system_dynamic" in err)
 
 
@@ -142,7 +142,7 @@ def test_a_held_body_with_no_lines_is_part_of_the_system(change):
 
 @pytest.mark.parametrize("damaged, expected", [
     (["line4"], ("damaged condition (analysis.damaged_lines ['line4'] removed): bodies.marker: a free body that no "
-                 "line ends on has no horizontal restoring")),
+                 "line of 'lines' ends on has no horizontal restoring")),
     (["line1", "line2", "line3", "line4"], "removes every line"),
 ])
 def test_a_damaged_system_that_leaves_a_body_without_lines_is_refused_before_solving(tmp_path, capsys, damaged,

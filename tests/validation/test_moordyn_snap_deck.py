@@ -27,11 +27,13 @@ then 57.1, 57.1, 57.3 N in cycles 5 to 7 (CFL 0.1: 57.0, 57.1, 57.3 N).
 from __future__ import annotations
 
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from seacable.errors import SeacableWarning
 from seacable.io.moordyn import load_moordyn_case
 from seacable.mooring.moordyn import run_moordyn_case
 from seacable.mooring.motion import PlatformMotion
@@ -88,7 +90,10 @@ def mesh_maxima(tmp_path, segments, dt, ba, ei=EI):
     motion = PlatformMotion(amplitude=(0.2, 0.0, 0.2, 0.0, 0.0, 0.0), phase=(np.pi / 2, 0.0, 0.0, 0.0, 0.0, 0.0),
                             period=1.25, reference=(32.0, 0.0, -0.3), ramp=1.25)
     case = load_moordyn_case(path).with_run(duration=4.375, time_step=dt, output_interval=dt, motion=motion)
-    ds = run_moordyn_case(case)
+    with warnings.catch_warnings():  # the slack tank line's static start is off the exact catenary by a segment's
+        # weight at its touchdown (19 % at 83 segments): said by catenary_check, not what this test is about
+        warnings.filterwarnings("ignore", ".*the static end tensions of the lumped-mass network", SeacableWarning)
+        ds = run_moordyn_case(case)
     tension = np.asarray(ds["fairlead_tension"]).reshape(-1)
     window = np.floor((np.asarray(ds["time"]) - 1.875) / 1.25 - 1e-9)
     return np.array([tension[window == k].max() for k in (0, 1)])

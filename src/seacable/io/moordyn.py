@@ -716,6 +716,8 @@ def _check_column_order(rd: _Reader, section, names, layout: str) -> None:
     types' ``Cd Ca CdAx CaAx``; a column name missing or added, shifting the rest) is reported; names seacable does
     not know (``tbd``, units) are not. The rows are still read by position, as MoorDyn reads them.
     """
+    if len(section[3]) <= 2:   # the names and units lines, no row: an empty section reads nothing by them
+        return
     columns = _COLUMNS[layout]
     keys = [{_key(a) for a in aliases} for aliases in columns]
     wrong = []
@@ -951,7 +953,10 @@ def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
 def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
     names, rows = _table(rd, section)
     forces = any(len(t) >= 12 for _, t in rows) or "fx" in {_key(n) for n in names}
-    _check_column_order(rd, section, names, "points_forces" if forces else "points")
+    # the names are checked against the layout they can name: the forces' only where they name FX or every row
+    # holds them (rows of both kinds under MoorDyn's nine names are read by their own length)
+    named_forces = "fx" in {_key(n) for n in names} or bool(rows) and all(len(t) >= 12 for _, t in rows)
+    _check_column_order(rd, section, names, "points_forces" if named_forces else "points")
     points, where, written = [], {}, []
     layout = "ID type X Y Z mass volume CdA Ca, or ID type X Y Z mass volume FX FY FZ CdA Ca"
     if not rows:

@@ -220,7 +220,7 @@ def check_bodies_without_lines(system: MooringSystem, where: str = "") -> None:
         if k[0, 0] > 0 and k[1, 1] > 0:
             continue
         raise InputError(
-            f"{where}bodies.{name}: a free body that no line ends on has no horizontal restoring (surge "
+            f"{where}bodies.{name}: a free body that no line of 'lines' ends on has no horizontal restoring (surge "
             f"{k[0, 0]:g} N/m, sway {k[1, 1]:g} N/m: no line and no hydrostatic_stiffness holds it), so it has no "
             "static equilibrium: it drifts under any horizontal load. Suggested fix: end a line on it (a point of "
             "kind 'body'), make it 'fixed' or 'prescribed', pin it (pinned: true, only its rotations free), give a "

@@ -21,7 +21,7 @@ TYPES = ("Name Diam MassDen EA BA/-zeta EI Cd Ca CdAx CaAx", "main 0.1 20.0 1e8 
 ROD_TYPES = ("TypeName Diam Mass/m Cd Ca CdEnd CaEnd", "buoy 1.0 100 0.6 1.0 0.7 0.3")
 BODIES = ("ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca",
           "1 Free 0 0 -20 0 0 0 1000 0 100 2.0 0 0")
-RODS = ("ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs", "1 buoy Body1 0 0 0 0 0 2 0 -")
+RODS = ("ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs", "1 buoy Body1 0 0 0 0 0 2 1 -")
 POINTS = ("ID Attachment X Y Z Mass Volume CdA Ca",
           "1 Fixed -100 0 -50 0 0 0 0", "2 Body1 0 0 0 0 0 0 0", "3 Free -50 0 -30 50 0.01 0 0")
 LINES = ("ID LineType AttachA AttachB UnstrLen NumSegs Outputs", "1 main 1 3 60 10 -", "2 main 3 2 60 10 -")
