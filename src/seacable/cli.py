@@ -622,6 +622,13 @@ def main(argv: list[str] | None = None) -> int:
             print("seacable: interrupted", file=sys.stderr)
             return EXIT_INTERRUPTED
         except Exception as err:
+            from ._atomic import interrupt_requested
+
+            if interrupt_requested.is_set():
+                # Ctrl-C or SIGTERM that a library turned into another error (numba interrupted while it compiles
+                # leaves "no compiled object yet"): an interrupt, not a bug
+                print("seacable: interrupted", file=sys.stderr)
+                return EXIT_INTERRUPTED
             if args.debug:
                 raise
             print(f"seacable: internal error, a bug in seacable {__version__}: {type(err).__name__}: {err}. "

@@ -155,6 +155,32 @@ def test_limit_options_set_the_limits_for_the_command_only(tmp_path, monkeypatch
     assert "SEACABLE_MAX_STEPS" not in os.environ and os.environ["SEACABLE_MAX_CASES"] == "7"
 
 
+def test_an_interrupt_a_library_turns_into_another_error_exits_130(monkeypatch, capsys):
+    """Issue 37: Ctrl-C while numba compiles a kernel surfaced as numba's own error ('no compiled object yet') and
+    exit 3, an internal error. The command's signal handler records the request, so the error that follows is
+    taken for the interrupt it is: exit 130. The same error with no interrupt is still a bug: exit 3."""
+
+    def compiling(args):
+        try:
+            os.kill(os.getpid(), signal.SIGINT)   # the CLI's handler raises KeyboardInterrupt here
+            time.sleep(5.0)
+        except KeyboardInterrupt:
+            raise RuntimeError("no compiled object yet") from None
+        return 0
+
+    monkeypatch.setattr("seacable.cli._cmd_validate", compiling)
+    assert main(["validate", "x.yaml"]) == 130
+    err = capsys.readouterr().err
+    assert "interrupted" in err and "internal error" not in err
+
+    def broken(args):
+        raise RuntimeError("no compiled object yet")
+
+    monkeypatch.setattr("seacable.cli._cmd_validate", broken)
+    assert main(["validate", "x.yaml"]) == 3
+    assert "internal error" in capsys.readouterr().err
+
+
 def test_max_cases_refuses_a_sweep_before_running(tmp_path, capsys):
     sweep = _sweep_file(tmp_path, {"environment.depth": [320.0, 330.0, 340.0]})
     out = tmp_path / "out"
