@@ -796,31 +796,8 @@ class Case(Model):
         return self
 
     def _unused_inputs(self) -> None:
-        """Refuse environment inputs the analysis does not use (its :meth:`uses` against
-        :func:`given_environment_inputs`): one check for every analysis and input, not one per key."""
-        a = self.analysis
-        uses = a.uses(self.environment) if hasattr(a, "uses") else a.USES
-        unused = [k for k in given_environment_inputs(self.environment) if k not in uses]
-        if not unused:
-            return
-        takers = sorted({cls.model_fields["type"].default for cls in ANALYSES
-                         if all(k in cls.USES for k in unused)})
-        where = f"analyses that use {'it' if len(unused) == 1 else 'them'}: {', '.join(takers)}" if takers else \
-            "no single analysis uses them all"
-        extra = ""
-        if "seabed.profile" in unused and a.type == "laying_dynamic":
-            extra = " (a laying_dynamic case takes its seabed as analysis.bathymetry)"
-        if "seabed.profile" in unused and a.type == "towed_dynamic":
-            extra = " (the profile is taken by towed_dynamic's finite_element formulation only)"
-        if "depth" in unused and self.environment.seabed.profile is not None:
-            extra = " (environment.seabed.profile gives the seabed; the depth would set only the waves' dispersion)"
-        keys = ", ".join(f"environment.{k}" for k in unused)
-        raise ValueError(f"{keys} {'is' if len(unused) == 1 else 'are'} given, but analysis '{a.type}' does not use "
-                         f"{'it' if len(unused) == 1 else 'them'}{extra}: the result would not hold "
-                         f"{'its' if len(unused) == 1 else 'their'} effect. It uses "
-                         f"{', '.join(f'environment.{k}' for k in sorted(uses)) or 'none of them'} ({where}). "
-                         f"Suggested fix: remove {keys}, or choose an analysis that models "
-                         f"{'it' if len(unused) == 1 else 'them'}.")
+        """Refuse environment inputs the analysis does not use (:func:`check_unused_inputs`)."""
+        check_unused_inputs(self.analysis, self.environment, ANALYSES)
 
     def anchor_position(self) -> tuple[float, float]:
         """Anchor (x, z): the analysis's, or on the seabed under the origin. [m]"""
@@ -828,3 +805,35 @@ class Case(Model):
         if getattr(a, "anchor", None) is not None:
             return a.anchor
         return (0.0, -float(self.environment.depth))
+
+
+def check_unused_inputs(analysis, environment: Environment, analyses) -> None:
+    """Refuse environment inputs ``analysis`` does not use: its ``uses(environment)`` (or ``USES``) against
+    :func:`given_environment_inputs`; one check for every analysis and input, not one per key.
+
+    ``analyses`` are the analysis classes a case of this kind may choose, to name those that use the inputs.
+    Raises ValueError (a model validator's error).
+    """
+    a = analysis
+    uses = a.uses(environment) if hasattr(a, "uses") else a.USES
+    unused = [k for k in given_environment_inputs(environment) if k not in uses]
+    if not unused:
+        return
+    takers = sorted({cls.model_fields["type"].default for cls in analyses if all(k in cls.USES for k in unused)})
+    it = "it" if len(unused) == 1 else "them"
+    where = f"analyses that use {it}: {', '.join(takers)}" if takers else \
+        f"no analysis of this kind of case uses {it}{'' if len(unused) == 1 else ' all'}"
+    extra = ""
+    if "seabed.profile" in unused and a.type == "laying_dynamic":
+        extra = " (a laying_dynamic case takes its seabed as analysis.bathymetry)"
+    if "seabed.profile" in unused and a.type == "towed_dynamic":
+        extra = " (the profile is taken by towed_dynamic's finite_element formulation only)"
+    if "depth" in unused and environment.seabed.profile is not None:
+        extra = " (environment.seabed.profile gives the seabed; the depth would set only the waves' dispersion)"
+    keys = ", ".join(f"environment.{k}" for k in unused)
+    raise ValueError(f"{keys} {'is' if len(unused) == 1 else 'are'} given, but analysis '{a.type}' does not use "
+                     f"{'it' if len(unused) == 1 else 'them'}{extra}: the result would not hold "
+                     f"{'its' if len(unused) == 1 else 'their'} effect. It uses "
+                     f"{', '.join(f'environment.{k}' for k in sorted(uses)) or 'none of them'} ({where}). "
+                     f"Suggested fix: remove {keys}, or choose an analysis that models "
+                     f"{'it' if len(unused) == 1 else 'them'}.")

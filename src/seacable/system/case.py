@@ -32,12 +32,12 @@ new one is one more entry there.
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, ClassVar, Literal, Union
 
 from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest
-from ..case import _STAND_IN
+from ..case import _STAND_IN, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import LineType
@@ -81,6 +81,8 @@ class SystemStaticAnalysis(_Solve):
     """Static equilibrium and stiffness of the system, intact and (with ``damaged_lines``) damaged."""
 
     type: Literal["system_static"] = "system_static"
+    #: environment inputs taken (seacable.case.check_unused_inputs): waves, as every static analysis (still water)
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves"})
     profile_points: int = Field(41, ge=2, le=10_000, description="Points of each line's stored profile.")
 
 
@@ -94,6 +96,7 @@ class SystemOffsetsAnalysis(_Solve):
     """
 
     type: Literal["system_offsets"] = "system_offsets"
+    USES: ClassVar[frozenset[str]] = SystemStaticAnalysis.USES
     body: str = Field(min_length=1, description="The free body the load acts on.")
     loads: tuple[float, ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
     headings: tuple[float, ...] | None = Field(None, min_length=1,
@@ -238,6 +241,7 @@ class SystemCase(Model):
 
     @model_validator(mode="after")
     def _system(self):
+        check_unused_inputs(self.analysis, self.environment, SYSTEM_ANALYSES)
         if self.environment.depth is None:
             raise ValueError(f"analysis '{self.analysis.type}' needs environment.depth (m): the seabed the lines "
                              "rest on. Suggested fix: add 'depth:' under 'environment'.")

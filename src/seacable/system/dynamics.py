@@ -81,7 +81,7 @@ import time as _time
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Annotated, Literal, Union
+from typing import Annotated, ClassVar, Literal, Union
 
 import numpy as np
 from pydantic import Discriminator, Field, Tag, model_validator
@@ -205,6 +205,8 @@ class SystemDynamicAnalysis(Model):
     """
 
     type: Literal["system_dynamic"] = "system_dynamic"
+    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane seabed)
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves"})
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
     output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
