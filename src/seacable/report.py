@@ -534,7 +534,9 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
     load_cases = list(dict.fromkeys(r.load_case for r in runs))
     durations = sorted({float(x) for x in seeds["duration"]})
     storm = "the runs' duration" if opts.storm_duration is None else f"{_num(opts.storm_duration)} s"
-    inputs = [("Source", f"<code>{path(source)}</code>"), ("Analysis", _e(attrs.get("analysis", ""))),
+    shown = path(source)
+    source_cell = "the report's own folder" if shown == "." else f"<code>{shown}</code>"
+    inputs = [("Source", source_cell), ("Analysis", _e(attrs.get("analysis", ""))),
               ("Runs (seeds)", str(len(runs))), ("Load cases", str(len(load_cases))),
               ("Simulated duration of a run", ", ".join(f"{_num(d)} s" for d in durations)),
               ("Storm duration", storm), ("Quantile of the storm maximum", _num(opts.quantile, sig=3)),

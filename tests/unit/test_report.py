@@ -474,3 +474,13 @@ def test_no_table_holds_a_non_finite_utilisation_or_margin(sweep_dir, tmp_path):
     # the summary says it by the margin: one card for the four drag anchors, the worst of them
     assert re.search(r"anchor uplift: capacity 0, 4 fail \(worst: anchor of L\d\)</div><div class=\"v\">margin "
                      r"&minus;\d+ kN</div>", text)
+
+
+def test_a_report_inside_its_sweep_folder_names_the_folder_in_words(sweep_dir):
+    """Written into the sweep's own folder (as the demo does), the source relative to the page is '.': the
+    Inputs table says "the report's own folder" rather than a bare dot."""
+    folder, _ = sweep_dir
+    out = folder / "report_here.html"
+    assert main(["report", str(folder), "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    assert "<td>the report's own folder</td>" in text and "<code>.</code>" not in text
