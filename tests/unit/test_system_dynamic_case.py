@@ -11,7 +11,6 @@ system statics of the deck) and with a duration as ``system_dynamic``, their FAI
 
 from __future__ import annotations
 
-import copy
 import math
 from pathlib import Path
 

@@ -369,7 +369,7 @@ def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
     from .._text import read_text_file
 
     path = Path(file)
-    text = read_text_file(path, what, f"give a CSV text file with a header row (its path relative to the case "
+    text = read_text_file(path, what, "give a CSV text file with a header row (its path relative to the case "
                                       "file's folder)")
     rows = [[c.strip() for c in row] for row in csv.reader(io.StringIO(text, newline=""))
             if any(c.strip() for c in row)]

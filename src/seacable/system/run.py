@@ -527,6 +527,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     setup = prepare_system_static(case, statics)
     records, profiles, coupled, iterations, residuals = [], [], [], [], []
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
+    intact_eq = None   # the intact equilibrium (the first condition), that most_loaded chooses its line by
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_static case '{case.name}', {condition} condition"
         if system is None:  # damaged_lines: most_loaded, the line of the largest tension in the intact equilibrium
@@ -540,7 +541,8 @@ def run_system_static(case: SystemCase, statics: str | None = None):
             for k, name in enumerate(eq.free_body_names):
                 pins[c, setup.bodies.index(name)] = eq.pin_reaction[k]
         held += [f"{condition}: {what}" for what in eq.indeterminate]
-        intact_eq = eq if c == 0 else intact_eq
+        if c == 0:
+            intact_eq = eq
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
         coupled.append(np.asarray(eq.stiffness, float))
