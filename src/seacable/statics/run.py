@@ -90,11 +90,11 @@ def check_in_water(case: Case, eq, ax: float, az: float, on_seabed: bool, where:
     """
     prof = eq.profile(points_per_segment=16)   # the sag and hog bends are among the samples: the extremes
     x, z, s = np.asarray(prof.x) + ax, np.asarray(prof.z) + az, np.asarray(prof.s)
-    lengths, weights = line_arrays(case)[:2]
-    tol = 1e-6 * max(float(lengths.sum()), abs(az), 1.0)
+    tol = 1e-6 * max(case.line.length, abs(az), 1.0)
     k = int(np.argmax(z))
     if z[k] > tol:
         seg = int(prof.segment[k])
+        weights = line_arrays(case)[1]   # for the message only
         at_end = k in (0, z.size - 1)
         fix = ("run the line as a mooring system (system_static), which weighs the part above the water at its "
                "dry weight; or put the end under water." if at_end else
