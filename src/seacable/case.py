@@ -750,6 +750,9 @@ class Case(Model):
     @model_validator(mode="after")
     def _needs(self) -> Case:
         a = self.analysis
+        # an input the analysis does not take first: a seabed profile given for an analysis that takes a depth
+        # is named as the input not taken, not as a missing depth
+        self._unused_inputs()
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or (
                     a.anchor is None and not getattr(a, "free_end", False))):
@@ -779,7 +782,6 @@ class Case(Model):
             if missing:
                 raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
                                  f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
-        self._unused_inputs()
         if isinstance(a, TowlineDynamicAnalysis):
             if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
                 raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "
