@@ -35,8 +35,8 @@ def read_text_file(path: str | Path, what: str, fix: str | None = None) -> str:
     Raises
     ------
     InputError
-        If the file does not exist, is a folder, cannot be read, holds binary data (a NUL byte), or is
-        not UTF-8 (the line and column of the first byte that is not, and its value).
+        If the file does not exist, is a folder, cannot be read, holds binary data (a NUL byte), is
+        not UTF-8 (the line and column of the first byte that is not, and its value), or is empty (blank).
     """
     path = Path(path)
     fix = fix or f"give the path of the {what}, a UTF-8 text file"
@@ -54,7 +54,7 @@ def read_text_file(path: str | Path, what: str, fix: str | None = None) -> str:
         raise InputError(f"{what} '{path}' is a binary file, not a text file (a NUL byte at byte {nul}). "
                          f"Suggested fix: {fix}.")
     try:
-        return raw.decode("utf-8-sig")
+        text = raw.decode("utf-8-sig")
     except UnicodeDecodeError as err:
         line = raw.count(b"\n", 0, err.start) + 1
         column = err.start - (raw.rfind(b"\n", 0, err.start) + 1) + 1
@@ -62,3 +62,8 @@ def read_text_file(path: str | Path, what: str, fix: str | None = None) -> str:
                          f"{column} is not UTF-8 (a Latin-1 or Windows-1252 file?). Suggested fix: save it as "
                          "UTF-8 (in most editors: Save as, encoding UTF-8), or write that character in plain "
                          "ASCII.") from None
+    if not text.strip():
+        # no input of any kind is blank; said here once, not left to each parser (numpy's genfromtxt raised an
+        # IndexError on an empty CSV)
+        raise InputError(f"{what} '{path}' is empty. Suggested fix: {fix}.")
+    return text

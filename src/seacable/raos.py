@@ -266,10 +266,8 @@ def read_rao_csv(path) -> RAOTable:
     if not path.is_file():
         raise InputError(f"RAO file '{path}' does not exist or is not a file. Suggested fix: check the path.")
     names = ("frequency", "heading", "dof", "amplitude", "phase")
-    text = read_text_file(path, "RAO file", f"a CSV with the header '{','.join(names)}'")
-    if not text.strip():
-        raise InputError(f"RAO file '{path}' is empty. Suggested fix: a header row '{','.join(names)}' and one row "
-                         "per DOF, heading and frequency (SI units: rad/s, rad, m/m or rad/m, rad).")
+    text = read_text_file(path, "RAO file", f"a header row '{','.join(names)}' and one row per DOF, heading and "
+                                            "frequency (SI units: rad/s, rad, m/m or rad/m, rad)")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # numpy's own warnings on odd rows: the checks below say what is wrong

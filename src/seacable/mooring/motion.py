@@ -64,24 +64,32 @@ def _apply(base, off, doff, ddoff):
     return x, v, a
 
 
-def _read_table(path: Path, names: tuple[str, ...]) -> np.ndarray:
-    """A CSV of named columns (a header row; '#' comments) -> array with the columns of ``names``."""
-    text = read_text_file(path, "motion file", "give its path relative to the case file")
+def _read_table(path: Path, names: tuple[str, ...], what: str = "motion file") -> np.ndarray:
+    """A CSV of named columns (a header row; '#' comments) -> array with the columns of ``names``; ``what`` the
+    file is, for messages (a motion file, a force series)."""
+    text = read_text_file(path, what, "give its path relative to the case file")
     try:
-        data = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, comments="#", dtype=float)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # numpy's own warnings on odd rows: the checks below say what is wrong
+            data = np.genfromtxt(io.StringIO(text), delimiter=",", names=True, comments="#", dtype=float)
     except ValueError as err:
-        raise InputError(f"motion file '{path}' is not a CSV table of numbers: {err}.") from None
+        raise InputError(f"{what} '{path}' is not a CSV table of numbers: {err}.") from None
     have = data.dtype.names or ()
     missing = [n for n in names if n not in have]
     if "time" in missing or len(missing) == len(names):
-        raise InputError(f"motion file '{path}' needs a header with columns 'time' and some of "
+        raise InputError(f"{what} '{path}' needs a header with columns 'time' and some of "
                          f"{', '.join(names[1:])}; found {', '.join(have) or 'none'}.")
     cols = [np.atleast_1d(data[n]) if n in have else np.zeros(np.atleast_1d(data["time"]).size) for n in names]
     table = np.column_stack(cols)
-    if table.shape[0] < 2 or not np.all(np.isfinite(table)):
-        raise InputError(f"motion file '{path}' needs at least two rows of finite numbers.")
+    if table.shape[0] < 2:
+        raise InputError(f"{what} '{path}' needs at least two rows of numbers, got {table.shape[0]}. Suggested fix: "
+                         "one row per time, the first at or before the run's start and the last at or after its end.")
+    rows, columns = np.nonzero(~np.isfinite(table))
+    if rows.size:
+        raise InputError(f"{what} '{path}': the value of '{names[columns[0]]}' in data row {rows[0] + 1} is not a "
+                         "finite number (empty, a word, nan or inf). Suggested fix: one number per cell, SI units.")
     if np.any(np.diff(table[:, 0]) <= 0):
-        raise InputError(f"motion file '{path}': time must increase strictly from row to row.")
+        raise InputError(f"{what} '{path}': time must increase strictly from row to row.")
     return table
 
 

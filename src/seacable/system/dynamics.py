@@ -162,7 +162,7 @@ class ExternalForceSeries(Model):
             return np.asarray(self.times, float), np.asarray(self.values, float)
         from ..mooring.motion import _read_table
 
-        t = _read_table(Path(self.file), ("time", "fx", "fy", "fz", "mx", "my", "mz"))
+        t = _read_table(Path(self.file), ("time", "fx", "fy", "fz", "mx", "my", "mz"), "force series")
         return t[:, 0], t[:, 1:]
 
 
