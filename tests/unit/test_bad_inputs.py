@@ -433,10 +433,11 @@ def _system_corpus() -> list[Bad]:
 # --- the corpus of bad input files (tests/unit/bad_inputs/) -------------------------------------
 
 BAD_INPUTS = Path(__file__).resolve().parent / "bad_inputs"
-"""One bad input file a file (its data files, if any, in ``data/``). Its first line is a comment
+"""One bad input a file (its data files, if any, in ``data/`` and ``data_sea/``). Its first line is a comment
 ``# expect: PHRASE``: what the message must hold (the key, the option or the file at fault). A sweep file
-is given to ``seacable validate`` and ``seacable sweep``, any other file (a case, a MoorDyn deck) to
-``seacable validate`` and ``seacable run``. A new bad input is a new file there, nothing else."""
+is given to ``seacable validate`` and ``seacable sweep``; a scatter diagram (``scatter_*.csv``) to
+``seacable report RESULT --scatter FILE``; any other file (a case, a MoorDyn deck) to ``seacable validate`` and
+``seacable run``. A new bad input is a new file there, nothing else."""
 
 
 def _expected(path: Path) -> str:
@@ -451,9 +452,15 @@ def _file_corpus() -> list[Bad]:
     out = []
     for path in sorted(p for p in BAD_INPUTS.iterdir() if p.is_file()):
         phrase = _expected(path)
-        second = ["sweep", str(path), "-o", "{tmp_out}", "--no-plots"] if is_sweep_file(path) else \
-            ["run", str(path), "--no-plots"]
-        for argv in (["validate", str(path)], second):
+        if path.name.startswith("scatter_"):
+            # read before the results (a mooring_dynamic result of the shared fixture) whether or not a life is
+            # computed
+            commands = [["report", "{nc_mooring_dynamic}", "--scatter", str(path), "-o", "{tmp_out}/report.html"]]
+        elif is_sweep_file(path):
+            commands = [["validate", str(path)], ["sweep", str(path), "-o", "{tmp_out}", "--no-plots"]]
+        else:
+            commands = [["validate", str(path)], ["run", str(path), "--no-plots"]]
+        for argv in commands:
             out.append(Bad(f"file-{path.name}-{argv[0]}", argv, [phrase]))
     return out
 
@@ -470,7 +477,7 @@ def test_the_corpus_is_large_and_each_id_unique():
 def test_each_file_of_the_corpus_is_a_distinct_bad_input():
     # one file per bad input (issue 37's second corpus: tests/unit/bad_inputs/), none a copy of another
     files = [p for p in BAD_INPUTS.iterdir() if p.is_file()]
-    assert len(files) >= 60
+    assert len(files) >= 300
     assert len({p.read_bytes() for p in files}) == len(files)
 
 
@@ -596,7 +603,7 @@ def test_bad_input_gets_one_clear_message(bad, shared, tmp_path, capsys, monkeyp
         # loaded machine; a bad size that is not refused (a billion elements) runs for hours
         assert elapsed < 60, (elapsed, err)
     # nothing written where the command was run: no result (and so no NaN or inf in one)
-    assert not [p for p in tmp_path.rglob("*") if p.suffix in (".nc", ".png", ".csv")], list(tmp_path.rglob("*"))
+    assert not [p for p in tmp_path.rglob("*") if p.suffix in (".nc", ".png", ".csv", ".html", ".gif", ".mp4")], list(tmp_path.rglob("*"))
     assert status not in (0, 3), (status, err)
     assert status == 2, (status, err)
     assert "Traceback" not in out + err

@@ -856,41 +856,54 @@ def fatigue_life_table(fatigue_rows: pd.DataFrame, *, design_fatigue_factor: flo
 
 def read_scatter(path: str | Path) -> pd.DataFrame:
     """A scatter diagram: a CSV with columns ``hs`` [m], ``tp`` [s] and ``probability`` [-] (and optionally
-    ``heading`` [rad]), one sea state a row, checked as it is read: hs and tp finite and > 0, headings finite,
-    the probabilities finite, >= 0 and summing to 1 (:func:`~seacable.design.fatigue.check_probabilities`, as
-    :func:`~seacable.design.fatigue.fatigue_life` checks them again)."""
+    ``heading`` [rad]), one sea state a row ('#' starts a comment line, as in RAO tables), checked as it is read:
+    hs and tp finite and > 0, headings finite and in radians, the probabilities finite, >= 0 and summing to 1
+    (:func:`~seacable.design.fatigue.check_probabilities`, as :func:`~seacable.design.fatigue.fatigue_life` checks
+    them again). Messages name the file's own line numbers."""
     from .._text import read_text_file
 
     path = Path(path)
     text = read_text_file(path, "scatter diagram", "give a CSV file with columns hs, tp, probability")
-    rows = [r for r in csv.reader(io.StringIO(text, newline="")) if any(c.strip() for c in r)]
-    header = [h.strip().lower() for h in rows[0]] if rows else []
+    reader = csv.reader(io.StringIO(text, newline=""))
+    numbered = [(reader.line_num, r) for r in reader
+                if any(c.strip() for c in r) and not r[0].lstrip().startswith("#")]
+    header = [h.strip().lower() for h in numbered[0][1]] if numbered else []
     need = ["hs", "tp", "probability"]
     missing = [c for c in need if c not in header]
-    if missing or len(rows) < 2:
+    if missing or len(numbered) < 2:
+        semicolons = bool(numbered) and len(numbered[0][1]) == 1 and ";" in numbered[0][1][0]
         raise InputError(f"scatter diagram '{path}' needs a header with columns hs [m], tp [s], probability [-] "
                          f"and one sea state a row; {'it lacks ' + ', '.join(missing) if missing else 'it has no row'}"
-                         ". Suggested fix: e.g. 'hs,tp,probability' then '2.0,8.0,0.6'.")
+                         f"{' (its columns are separated by semicolons)' if semicolons else ''}. Suggested fix: e.g. "
+                         "'hs,tp,probability' then '2.0,8.0,0.6' (commas between columns, a point for decimals).")
     cols = [c for c in ("hs", "tp", "heading", "probability") if c in header]
-    out = []
-    for k, row in enumerate(rows[1:], start=2):
+    out, lines = [], []
+    for k, row in numbered[1:]:
         try:
             out.append([float(row[header.index(c)]) for c in cols])
         except (ValueError, IndexError):
             raise InputError(f"scatter diagram '{path}' line {k}: expected numbers in columns {', '.join(cols)}, got "
                              f"{row}. Suggested fix: one sea state a row, SI units (m, s, rad).") from None
+        lines.append(k)
     table = pd.DataFrame(out, columns=cols)
     for col, unit in (("hs", "m"), ("tp", "s")):
         bad = np.flatnonzero(~(np.isfinite(table[col].to_numpy()) & (table[col].to_numpy() > 0)))
         if bad.size:
-            raise InputError(f"scatter diagram '{path}' line {int(bad[0]) + 2}: {col} = {table[col].iloc[bad[0]]:g} "
+            raise InputError(f"scatter diagram '{path}' line {lines[bad[0]]}: {col} = {table[col].iloc[bad[0]]:g} "
                              f"{unit}; it must be a finite number > 0 {unit}. Suggested fix: one sea state a row, SI "
                              "units (m, s, rad).")
     if "heading" in table:
-        bad = np.flatnonzero(~np.isfinite(table["heading"].to_numpy()))
+        heading = table["heading"].to_numpy()
+        bad = np.flatnonzero(~np.isfinite(heading))
         if bad.size:
-            raise InputError(f"scatter diagram '{path}' line {int(bad[0]) + 2}: heading is not a finite number (rad). "
+            raise InputError(f"scatter diagram '{path}' line {lines[bad[0]]}: heading is not a finite number (rad). "
                              "Suggested fix: give the heading in radians.")
+        if np.any(np.abs(heading) > 2 * np.pi):
+            # the same rule as an RAO table's headings: beyond a full turn they are degrees
+            k = int(np.argmax(np.abs(heading) > 2 * np.pi))
+            raise InputError(f"scatter diagram '{path}' line {lines[k]}: heading = {heading[k]:g} rad, more than a "
+                             "full turn (2 pi rad): it looks like degrees. Suggested fix: give the headings in radians "
+                             "(180 deg = 3.1416 rad).")
     fatigue.check_probabilities(table["probability"].to_numpy(), f"scatter diagram '{path}'")
     return table
 

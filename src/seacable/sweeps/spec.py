@@ -33,7 +33,7 @@ from pathlib import Path
 from typing import Any
 
 import yaml
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from .._limits import check_case_count
 from .._model import Model
@@ -55,6 +55,9 @@ class Range(Model):
 
     @model_validator(mode="after")
     def _one_of(self):
+        if not (math.isfinite(self.start) and math.isfinite(self.stop)):
+            raise ValueError(f"start {self.start:g} and stop {self.stop:g} must be finite numbers. Suggested fix: "
+                             "e.g. {start: 0.5, stop: 5.0, step: 0.25}.")
         if (self.step is None) == (self.num is None):
             raise ValueError("needs exactly one of 'step' or 'num'. Suggested fix: e.g. "
                              "{start: 0.5, stop: 5.0, step: 0.25}.")
@@ -81,12 +84,33 @@ class SweepFile(Model):
     description: str = Field("", description="Free text, kept in the summary.")
     base: str | dict[str, Any] = Field(description="The base case: a case file (path relative to the sweep "
                                                    "file) or the case's keys.")
-    grid: dict[str, list[Any] | Range] | None = Field(
-        None, description="Parameter path -> list of values (or a range); the sweep is every combination.")
+    grid: dict[str, Any] | None = Field(
+        None, description="Parameter path -> list of values (or a range {start, stop, step or num}); the sweep is "
+                          "every combination.")
     table: str | dict[str, list[Any]] | None = Field(
         None, description="Cases row by row: a CSV file (path relative to the sweep file; a header of parameter "
                           "paths, one case per row) or its columns (parameter path -> values, all of one length); "
                           "with a grid, each row at every combination of the grid.")
+
+    @field_validator("grid", mode="after")
+    @classmethod
+    def _grid_values(cls, grid):
+        # a list of values or a range, said in one message (a union type reported both branches' errors)
+        if grid is None:
+            return grid
+        out = {}
+        for path, values in grid.items():
+            if isinstance(values, dict):
+                try:
+                    out[path] = Range.parse(values)
+                except InputError as err:
+                    raise ValueError(f"parameter '{path}', a range {values}: {err}") from None
+            elif isinstance(values, list):
+                out[path] = values
+            else:
+                raise ValueError(f"parameter '{path}' must be a list of values or a range {{start, stop, step or "
+                                 f"num}}, got {values!r}. Suggested fix: e.g. '{path}: [1.0, 2.0]'.")
+        return out
 
     @model_validator(mode="after")
     def _one_of(self):
@@ -458,6 +482,9 @@ def load_sweep(path: str | Path) -> Sweep:
     base = spec.base
     if isinstance(base, str):
         base = path.parent / base
+        if base.is_file() and is_sweep_file(base):
+            raise CaseFileError(f"{path}: base '{spec.base}' is a sweep file, not a case: a sweep varies one case. "
+                                "Suggested fix: give the case file its sweep is based on, and merge the two grids.")
     else:
         base = copy.deepcopy(base)
         resolve_files(base, path.parent)
