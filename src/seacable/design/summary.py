@@ -524,8 +524,9 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
 # ----------------------------------------------------------------------------------------------- code checks
 
 def anchor_uplift_force(ds: xr.Dataset, line: str, info: LineInfo | None = None) -> float:
-    """The largest upward pull of a line on its anchor over a run: the vertical component of the anchor tension
-    along the first element from the anchor, ``T_anchor (z1 - z0) / |x1 - x0|`` (> 0 upward). [N]
+    """The largest upward pull of a line on its anchor over a run: the result's ``anchor_vertical_force``, or
+    in a result without it (written before it was) the vertical component of the anchor tension along the first
+    element from the anchor, ``T_anchor (z1 - z0) / |x1 - x0|`` (> 0 upward). [N]
 
     The anchor is the end the case ties to a fixed point (end A of a single-line case); where the case does
     not say (a MoorDyn network), the lower end of the line at the start.
@@ -547,6 +548,11 @@ def anchor_uplift_state(ds: xr.Dataset, line: str, info: LineInfo | None = None)
 
 
 def _anchor_vertical(ds: xr.Dataset, line: str, info: LineInfo | None) -> tuple[np.ndarray, np.ndarray]:
+    if "anchor_vertical_force" in ds:
+        # the model's own: the end element's pull less the half element's weight the seabed carries
+        # (seacable.mooring.run.grounded_end_force); the pull alone showed half an element's weight of uplift at an
+        # anchor whose touchdown lies within its first element
+        return line_series(ds, "anchor_vertical_force", line), line_series(ds, "anchor_tension", line)
     pos = _node_positions(ds, line)
     end = None if info is None else info.anchor_end
     if end is None:

@@ -27,6 +27,7 @@ __all__ = [
     "case_model",
     "contact_length",
     "elevation_variables",
+    "grounded_end_force",
     "line_end_forces",
     "network_variables",
     "output_count",
@@ -109,6 +110,34 @@ def _clearance(water: Water, X):
     """Height of points above the seabed plane, normal to it (negative inside it), (..., n). [m]"""
     sl = water.slope
     return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
+
+
+def grounded_end_force(pull, half_weight, slope: float = 0.0):
+    """Force of a line on an end held on the seabed (an anchor), (..., 3). [N]
+
+    The end element pulls along its chord with its tension, ``pull = T d / |d|``; that direction is the line's
+    at the element's middle, not at its end: between them the half element's weight in water turns the line
+    (the catenary's slope changes by ``w ds / T``). Its weight normal to the seabed is taken off the pull's normal
+    component, as far as that does not press the end into the seabed, which carries the rest. A line lying
+    along the seabed then pulls along it (the catenary's H, the seabed carrying the weight), a line rising from
+    the end pulls up with ``T sin(theta_0)`` to second order, and a line whose touchdown lies within its first
+    element (the node beyond it lifted a little off the seabed) shows no uplift: with the pull alone it showed
+    up to half the element's weight (1.4 kN on the OC3-Hywind demo's intact anchors, 22.6 m elements).
+
+    Parameters
+    ----------
+    pull
+        The end element's pull on the end, ``T d / |d|``, (..., 3). [N]
+    half_weight
+        The half end element's weight in water, (...,) or scalar (negative: buoyant). [N]
+    slope
+        The seabed's slope, rising towards +x. [rad]
+    """
+    pull = np.asarray(pull, float)
+    n = np.array([-math.sin(slope), 0.0, math.cos(slope)])
+    normal = pull @ n
+    kept = np.maximum(normal - np.asarray(half_weight, float) * math.cos(slope), 0.0)
+    return pull + (kept - normal)[..., None] * n
 
 
 def contact_length(model: MooringModel, X):
@@ -228,14 +257,16 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
             Xp[i0:i1], Vp[i0:i1], Ap[i0:i1], ksub, ts[i0:i1], time is not None, ends_sub, el_sub, *args, fidx,
             own.bw, own.env, own.cur_depth, own.cur_speed, own.sea)
     if model.water.depth is not None:
-        # an end resting on the seabed: the seabed carries its half element's weight, the line pulls
-        # along its end element only (the catenary's H at a grounded anchor)
+        # an end resting on the seabed: the seabed carries its half element's weight as far as the line lies
+        # there; the line pulls along its end element, its end slope to second order (grounded_end_force)
         for j in (0, 1):
             grounded = _clearance(model.water, Xs[:, ends[j]]) <= ramp
             if np.any(grounded):
                 d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
                 norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
-                out[grounded, j] = tension[grounded, j, None] * d / norm[:, None]
+                half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
+                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half,
+                                                      model.water.slope)
     return out.reshape(lead + (2, 3))
 
 
@@ -271,6 +302,9 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
                                 "tension at the fairlead end of the line (its end element and half-element loads)"),
         "anchor_tension": var(lead, np.linalg.norm(ends[..., anchor, :], axis=-1), "N",
                               "tension at the anchor end of the line (its end element and half-element loads)"),
+        "anchor_vertical_force": var(lead, ends[..., anchor, 2], "N",
+                                     "vertical force of the line on its anchor, upward positive (its end element "
+                                     "and half-element loads)"),
         "seabed_contact_length": var(lead, contact_length(model, X), "m",
                                      "length of line on the seabed"),
     }

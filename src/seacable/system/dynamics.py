@@ -93,7 +93,8 @@ from ..environment import IrregularWaves
 from ..errors import ConvergenceError, InputError, SeacableWarning
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion, rotation_matrix, sea_of
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
-from ..mooring.run import elevation_variables
+from ..mooring.kernel import E_BEDRAMP as K_BEDRAMP
+from ..mooring.run import _clearance, elevation_variables, grounded_end_force
 from ..mooring.solver import MooringModel, Water, advance_interval
 from ..mooring.solver import simulate as simulate_lines
 from ..results import make_dataset, var
@@ -1153,6 +1154,27 @@ def _padded(per_line, width, fill=np.nan, lead=()):
     return np.stack(out, axis=-2)
 
 
+def _anchor_vertical_force(fe: SystemFE, run: SystemRun) -> np.ndarray:
+    """Vertical force of each line on its anchor end (the end away from the fairlead), (time, line), upward
+    positive [N]: the end element's pull less the half element's weight in water, which the seabed carries at an
+    end resting on it (:func:`seacable.mooring.run.grounded_end_force`, the single-line analyses' rule)."""
+    net, water = fe.model.network, fe.model.water
+    ramp = float(fe.model.env[K_BEDRAMP])
+    out = np.zeros((len(run.time), len(fe.line_names)))
+    for j, (nodes, els) in enumerate(zip(fe.line_nodes, fe.line_elements)):
+        at_a = fe.fairlead_end[j] == 1
+        a, b, e = (nodes[0], nodes[1], els[0]) if at_a else (nodes[-1], nodes[-2], els[-1])
+        d = run.position[:, b] - run.position[:, a]
+        pull = run.tension[:, e, None] * d / np.maximum(np.linalg.norm(d, axis=-1), 1e-300)[:, None]
+        half = 0.5 * net.weight_per_length[e] * net.length[e]
+        force = pull[:, 2] - half
+        if water.depth is not None:
+            grounded = _clearance(water, run.position[:, a]) <= ramp
+            force[grounded] = grounded_end_force(pull[grounded], half, water.slope)[:, 2]
+        out[:, j] = force
+    return out
+
+
 def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     """The Dataset of a coupled run."""
     sysm = fe.system
@@ -1175,6 +1197,9 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                                    "tension at the fairlead end of the line (its end element)")
     data["anchor_tension"] = var(("time", "line"), end_t[:, np.arange(nl), 1 - fair], "N",
                                  "tension at the anchor end of the line (its end element)")
+    data["anchor_vertical_force"] = var(("time", "line"), _anchor_vertical_force(fe, run), "N",
+                                        "vertical force of the line on its anchor, upward positive (its end element "
+                                        "and half element's weight)")
     ft = np.full(nl, np.nan)
     for j, li in enumerate(fe.con_line):
         if li >= 0 and np.isfinite(run.failure_time[j]):
