@@ -129,3 +129,23 @@ def test_the_mean_offset_is_the_bodys_static_equilibrium_under_its_steady_loads(
 
     with pytest.raises(InputError, match="mean_offset 'equilibrium' is the static position of a body"):
         sc.check(_line_case(tmp_path, line, LINE_SEA))
+
+
+def test_a_bad_rao_file_is_refused_before_the_mean_offset_is_solved(tmp_path, monkeypatch):
+    """A bad RAO file behind ``mean_offset: equilibrium`` is refused as it is read, before the statics of the
+    mean offset are solved (on a fresh machine their kernels compiled first: tens of seconds before the message)."""
+    import seacable.system.statics as S
+
+    def solved(*args, **kwargs):
+        raise AssertionError("the mean offset's statics were solved before the RAO file was read")
+
+    monkeypatch.setattr(S, "solve_equilibrium", solved)
+    bad = tmp_path / "raos.csv"
+    bad.write_text("frequency,heading,dof,amplitude,phase\n0.5,0.0,1,1.0,0.0\n0.6,180.0,1,1.0,0.0\n")
+    data = yaml.safe_load(SPREAD.read_text())
+    data["bodies"]["buoy"]["kind"] = "prescribed"
+    data["environment"]["waves"] = SEA
+    data["analysis"] = {"type": "system_dynamic", "duration": 1.0, "n_elements": 20,
+                        "body_motions": {"buoy": {"type": "rao", "file": str(bad), "mean_offset": "equilibrium"}}}
+    with pytest.raises(InputError, match="heading = 180 rad is beyond 2 pi: it looks like degrees"):
+        D.prepare_system_dynamic(sc.parse_case(data))

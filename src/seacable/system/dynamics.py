@@ -1046,6 +1046,9 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if t[0] > 1e-9 or t[-1] < a.duration - 1e-9:
             raise InputError(f"{where}.external_forces.{name}: the series covers {t[0]:g} to {t[-1]:g} s, the run "
                              f"needs 0 to {a.duration:g} s. Suggested fix: extend the table.")
+    for motion in a.body_motions.values():
+        if isinstance(motion, RAOMotion):
+            motion.table()   # the RAO file read and checked before the statics of a mean offset are solved
     a = _mean_offsets(case, system, a)
     fe = build_system_fe(system, case.environment, a)
     net = fe.model.network
