@@ -115,6 +115,7 @@ B_X, B_Y, B_PSI, B_U, B_V, B_R = range(6)
 
 # fast floating point short of assuming finite values: the steps check that the state stays finite
 _FAST = {"arcp", "contract", "reassoc"}
+_NO_FRAME = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)  # E_k^T E_l where there is no element l
 
 _GP = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GW = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
@@ -357,15 +358,35 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _damper_own(E, k, s, jt, coef):
+def _in_frame(E, k, jt):
+    """The axis of joint ``jt`` (``_joint``'s tuple) in element k's frame, ``E_k^T a``."""
+    return (E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8],
+            E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8],
+            E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _relative_frame(E, k, l):
+    """``E_k^T E_l`` row by row (9 values): entry (r, c) is column r of ``E_k`` dotted with column c of ``E_l``."""
+    return (E[k, 0, 0] * E[l, 0, 0] + E[k, 1, 0] * E[l, 1, 0] + E[k, 2, 0] * E[l, 2, 0],
+            E[k, 0, 0] * E[l, 0, 1] + E[k, 1, 0] * E[l, 1, 1] + E[k, 2, 0] * E[l, 2, 1],
+            E[k, 0, 0] * E[l, 0, 2] + E[k, 1, 0] * E[l, 1, 2] + E[k, 2, 0] * E[l, 2, 2],
+            E[k, 0, 1] * E[l, 0, 0] + E[k, 1, 1] * E[l, 1, 0] + E[k, 2, 1] * E[l, 2, 0],
+            E[k, 0, 1] * E[l, 0, 1] + E[k, 1, 1] * E[l, 1, 1] + E[k, 2, 1] * E[l, 2, 1],
+            E[k, 0, 1] * E[l, 0, 2] + E[k, 1, 1] * E[l, 1, 2] + E[k, 2, 1] * E[l, 2, 2],
+            E[k, 0, 2] * E[l, 0, 0] + E[k, 1, 2] * E[l, 1, 0] + E[k, 2, 2] * E[l, 2, 0],
+            E[k, 0, 2] * E[l, 0, 1] + E[k, 1, 2] * E[l, 1, 1] + E[k, 2, 2] * E[l, 2, 1],
+            E[k, 0, 2] * E[l, 0, 2] + E[k, 1, 2] * E[l, 1, 2] + E[k, 2, 2] * E[l, 2, 2])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _damper_own(s, jt, coef, a):
     """``coef B(s)^T (E_k^T C E_k) B(s)``, the lower triangle row by row (15 values): the damper of joint ``jt``
-    (``_joint``'s tuple: its axis a and coefficients c_x along it and c_t across, ``C = c_t I + (c_x - c_t) a a^T``)
-    at the point ``s e1`` of element k, in its velocities ``(u, v, w, q, r)``; ``B(s)`` maps them to the point's
-    body velocity ``(u, v + s r, w - s q)``."""
+    (``_joint``'s tuple: its coefficients c_x along its axis and c_t across, ``C = c_t I + (c_x - c_t) a a^T``) at
+    the point ``s e1`` of element k, in its velocities ``(u, v, w, q, r)``, with ``a`` the axis in k's frame
+    (:func:`_in_frame`); ``B(s)`` maps the velocities to the point's body velocity ``(u, v + s r, w - s q)``."""
     ct, cd = coef * jt[10], coef * (jt[9] - jt[10])
-    a0 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
-    a1 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
-    a2 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
+    a0, a1, a2 = a
     g00, g11, g22 = ct + cd * a0 * a0, ct + cd * a1 * a1, ct + cd * a2 * a2
     g10, g20, g21 = cd * a1 * a0, cd * a2 * a0, cd * a2 * a1
     s2 = s * s
@@ -377,27 +398,15 @@ def _damper_own(E, k, s, jt, coef):
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _damper_coupling(E, k, l, sk, sl, jt, coef, cb):
+def _damper_coupling(sk, sl, jt, coef, cb, ak, al, ee):
     """``coef B(sk)^T (E_k^T C E_l) B(sl)`` (:func:`_damper_own`) between the point ``sk e1`` of element k and
     ``sl e1`` of element l, plus the bending damper's ``cb P_k^T P_l`` (``P = [e2 e3]``: its moment on k per
-    rotation rate (q, r) of l) in the rotations' block: the 5x5 block row by row (25 values)."""
+    rotation rate (q, r) of l) in the rotations' block: the 5x5 block row by row (25 values). ``ak``, ``al``:
+    the joint's axis in the frames of k and l; ``ee``: ``E_k^T E_l`` row by row (:func:`_relative_frame`)."""
     ct, cd = coef * jt[10], coef * (jt[9] - jt[10])
-    ak0 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
-    ak1 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
-    ak2 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
-    al0 = E[l, 0, 0] * jt[6] + E[l, 1, 0] * jt[7] + E[l, 2, 0] * jt[8]
-    al1 = E[l, 0, 1] * jt[6] + E[l, 1, 1] * jt[7] + E[l, 2, 1] * jt[8]
-    al2 = E[l, 0, 2] * jt[6] + E[l, 1, 2] * jt[7] + E[l, 2, 2] * jt[8]
-    # E_k^T E_l: e_rc = (column r of E_k) . (column c of E_l)
-    e00 = E[k, 0, 0] * E[l, 0, 0] + E[k, 1, 0] * E[l, 1, 0] + E[k, 2, 0] * E[l, 2, 0]
-    e01 = E[k, 0, 0] * E[l, 0, 1] + E[k, 1, 0] * E[l, 1, 1] + E[k, 2, 0] * E[l, 2, 1]
-    e02 = E[k, 0, 0] * E[l, 0, 2] + E[k, 1, 0] * E[l, 1, 2] + E[k, 2, 0] * E[l, 2, 2]
-    e10 = E[k, 0, 1] * E[l, 0, 0] + E[k, 1, 1] * E[l, 1, 0] + E[k, 2, 1] * E[l, 2, 0]
-    e11 = E[k, 0, 1] * E[l, 0, 1] + E[k, 1, 1] * E[l, 1, 1] + E[k, 2, 1] * E[l, 2, 1]
-    e12 = E[k, 0, 1] * E[l, 0, 2] + E[k, 1, 1] * E[l, 1, 2] + E[k, 2, 1] * E[l, 2, 2]
-    e20 = E[k, 0, 2] * E[l, 0, 0] + E[k, 1, 2] * E[l, 1, 0] + E[k, 2, 2] * E[l, 2, 0]
-    e21 = E[k, 0, 2] * E[l, 0, 1] + E[k, 1, 2] * E[l, 1, 1] + E[k, 2, 2] * E[l, 2, 1]
-    e22 = E[k, 0, 2] * E[l, 0, 2] + E[k, 1, 2] * E[l, 1, 2] + E[k, 2, 2] * E[l, 2, 2]
+    ak0, ak1, ak2 = ak
+    al0, al1, al2 = al
+    e00, e01, e02, e10, e11, e12, e20, e21, e22 = ee
     g00, g01, g02 = ct * e00 + cd * ak0 * al0, ct * e01 + cd * ak0 * al1, ct * e02 + cd * ak0 * al2
     g10, g11, g12 = ct * e10 + cd * ak1 * al0, ct * e11 + cd * ak1 * al1, ct * e12 + cd * ak1 * al2
     g20, g21, g22 = ct * e20 + cd * ak2 * al0, ct * e21 + cd * ak2 * al1, ct * e22 + cd * ak2 * al2
@@ -449,6 +458,7 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
     cur = prev
     bq = br = bd = 0.0  # bending damping of the previous joint on the element being finished
     cm_front = cm_aft = 0.0
+    pf = (0.0, 0.0, 0.0)  # the front joint's axis in the frame of the element being finished
     finite = True
     blk[:, :] = 0.0  # nothing eliminated before the first element
     for j in range(first, n + 1):
@@ -491,21 +501,24 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
             mq, mr = ld[3] + bq, ld[4] + br
             cm_front, cm_aft = bd, 0.0
             bq = br = bd = 0.0
-            if j < n and cz > 0.0 and cur[11] > 0.0:
-                # bending damping at joint j, on element k now and on element j when it is finished
+            inner = j < n
+            ee = _relative_frame(E, k, j) if inner else _NO_FRAME
+            if inner and cz > 0.0 and cur[11] > 0.0:
+                # bending damping at joint j, the moment cm (Omega_j - Omega_k) (Omega = q e2 + r e3), on element k
+                # now and (minus) on element j when it is finished, each in its own frame through E_k^T E_j
                 cm = cz * math.sqrt(cur[11] * (ld[11] + inert[j]))
-                rx = om[j, 0] * E[j, 0, 1] + om[j, 1] * E[j, 0, 2] - om[k, 0] * E[k, 0, 1] - om[k, 1] * E[k, 0, 2]
-                ry = om[j, 0] * E[j, 1, 1] + om[j, 1] * E[j, 1, 2] - om[k, 0] * E[k, 1, 1] - om[k, 1] * E[k, 1, 2]
-                rz = om[j, 0] * E[j, 2, 1] + om[j, 1] * E[j, 2, 2] - om[k, 0] * E[k, 2, 1] - om[k, 1] * E[k, 2, 2]
-                mq += cm * (rx * E[k, 0, 1] + ry * E[k, 1, 1] + rz * E[k, 2, 1])
-                mr += cm * (rx * E[k, 0, 2] + ry * E[k, 1, 2] + rz * E[k, 2, 2])
+                qk, rk, qj, rj = om[k, 0], om[k, 1], om[j, 0], om[j, 1]
+                mq += cm * (ee[4] * qj + ee[5] * rj - qk)
+                mr += cm * (ee[7] * qj + ee[8] * rj - rk)
                 cm_aft = cm
-                bq = -cm * (rx * E[j, 0, 1] + ry * E[j, 1, 1] + rz * E[j, 2, 1])
-                br = -cm * (rx * E[j, 0, 2] + ry * E[j, 1, 2] + rz * E[j, 2, 2])
+                bq = -cm * (qj - ee[4] * qk - ee[7] * rk)
+                br = -cm * (rj - ee[5] * qk - ee[8] * rk)
                 bd = cm
             inert[k] = ld[11]
             if dt > 0.0:
-                _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, prev, cur, cm_front, cm_aft, dt, Wz, blk)
+                if k == first:
+                    pf = _in_frame(E, k, prev)
+                pf = _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, prev, cur, pf, cm_front, cm_aft, ee, dt, Wz, blk)
         prev = cur
         px, py, pz, vx, vy, vz = ax_, ay_, az_, bvx, bvy, bvz
     if dt > 0.0:
@@ -514,7 +527,7 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, dt, Wz, blk):
+def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, pf, cm_front, cm_aft, ee, dt, Wz, blk):
     """Element k's row of the dampers' implicit velocity update, eliminated forward along the line.
 
     The step solves ``(M + dt D) dx = dt f`` for the velocity increments ``dx = (du, dv, dw, dq, dr)`` of all
@@ -528,15 +541,20 @@ def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, 
     through joint j = k + 1 (none at the barge's joint) and ``y_k = dt f_k - t_k`` its right-hand side,
     ``Y = L^-1 [U_k | y_k]`` gives what passes on, ``[T_{k+1} | t_{k+1}] = U_k^T S_k^-1 [U_k | y_k] = Y^T D^-1 Y``
     (its lower triangle and last column), and ``Wz[k] = [W_k | z_k] = L^-T D^-1 Y`` is kept for
-    :func:`_back_substitute`. ``blk`` (5, 6) carries ``[T | t]`` from element to element."""
+    :func:`_back_substitute`. ``blk`` (5, 6) carries ``[T | t]`` from element to element.
+
+    ``front``, ``aft``: the joints at the element's ends (``_joint``'s tuples), ``pf`` the front joint's axis in
+    the element's frame, ``cm_front``, ``cm_aft`` the bending dampers there, ``ee`` ``E_k^T E_j``. Returns the aft
+    joint's axis in element j's frame, its ``pf`` (zeros after the last element)."""
     half = 0.5 * P[P_L]
     m = P[P_M]
     u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
     my, ik = ld[10], ld[11]
     T, X = blk, Wz[k]
     # the diagonal block: masses, the dampers of the two joints at the element's ends and the bending dampers
-    f = _damper_own(E, k, -half, front, dt)
-    a = _damper_own(E, k, half, aft, dt)
+    pa = _in_frame(E, k, aft)
+    f = _damper_own(-half, front, dt, pf)
+    a = _damper_own(half, aft, dt, pa)
     cb = ik + dt * (cm_front + cm_aft)
     s00 = m + f[0] + a[0] - T[0, 0]
     s10, s11 = f[1] + a[1] - T[1, 0], my + f[2] + a[2] - T[1, 1]
@@ -553,8 +571,10 @@ def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, 
     x45 = dt * (mr - (my - m) * u * v) - T[4, 5]
     # the coupling to element j = k + 1 through joint j (none at the barge's joint)
     if j < n:
-        c = _damper_coupling(E, k, j, half, -half, aft, -dt, -dt * cm_aft)
+        pl = _in_frame(E, j, aft)
+        c = _damper_coupling(half, -half, aft, -dt, -dt * cm_aft, pa, pl, ee)
     else:
+        pl = (0.0, 0.0, 0.0)
         c = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
              0.0, 0.0, 0.0, 0.0, 0.0)
     x00, x01, x02, x03, x04 = c[0], c[1], c[2], c[3], c[4]
@@ -666,6 +686,7 @@ def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, 
     h04 -= l10 * h14 + l20 * h24 + l30 * h34 + l40 * h44
     h05 -= l10 * h15 + l20 * h25 + l30 * h35 + l40 * h45
     X[0, 0], X[0, 1], X[0, 2], X[0, 3], X[0, 4], X[0, 5] = h00, h01, h02, h03, h04, h05
+    return pl
 
 
 
