@@ -266,8 +266,8 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
     and its two joints (``front``, ``aft``: ``_joint``'s tuples; the front joint's force acts on
     this element with the opposite sign).
 
-    Returns ``(F_x, F_y, F_z, M_q, M_r, D_u, D_v, D_w, D_q, D_r, M_y, I)``: force, moment, the joint
-    dampers' diagonal in the element's own velocities, its transverse mass and inertia (wetted).
+    Returns ``(F_x, F_y, F_z, M_q, M_r, M_y, I)``: force, moment, its transverse mass and inertia (wetted). The
+    joints' dampers here are their forces at the step's start; their implicit part is :func:`_eliminate`'s.
     """
     half = 0.5 * P[P_L]
     rho, g, m, d, area = P[P_RHO], P[P_G], P[P_M], P[P_D], P[P_AREA]
@@ -329,9 +329,8 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
         fz += pz
         mq -= s * pz
         mr += s * py
-    # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, the torque of the
-    # joint's turning axis, and the diagonal of the joint dampers in (u, v, w, q, r)
-    du = dv = dw = 0.0
+    # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, and the torque of the joint's
+    # turning axis
     for side in range(2):
         jt = front if side == 0 else aft
         sgn = -1.0 if side == 0 else 1.0
@@ -341,20 +340,12 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
         bzz = E[k, 0, 2] * gx + E[k, 1, 2] * gy + E[k, 2, 2] * gz
         h2 = E[k, 0, 1] * jt[3] + E[k, 1, 1] * jt[4] + E[k, 2, 1] * jt[5]
         h3 = E[k, 0, 2] * jt[3] + E[k, 1, 2] * jt[4] + E[k, 2, 2] * jt[5]
-        a1 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
-        a2 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
-        a3 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
         fx += bx
         fy += by
         fz += bzz
         mq += h3 - sgn * half * bzz
         mr += sgn * half * by - h2
-        cd = jt[9] - jt[10]
-        du += jt[10] + cd * a1 * a1
-        dv += jt[10] + cd * a2 * a2
-        dw += jt[10] + cd * a3 * a3
-    return (fx, fy, fz, mq, mr, du, dv, dw, half * half * dw, half * half * dv,
-            m + P[P_CA] * rho * area * wet, P[P_I] + P[P_CA] * rho * area * wet2)
+    return fx, fy, fz, mq, mr, m + P[P_CA] * rho * area * wet, P[P_I] + P[P_CA] * rho * area * wet2
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
@@ -419,7 +410,7 @@ def _damper_coupling(sk, sl, jt, coef, cb, ak, al, ee):
             sk * g10, sk * g11, sk * g12, -ss * g12 + cb * e21, ss * g11 + cb * e22)
 
 
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
 def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma_now, ma_prev, dt, work,
           Wz, blk):
     """One explicit step of the line (``dt = 0``: the joints' tensions and the wetted inertias only);
@@ -506,7 +497,7 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
             if inner and cz > 0.0 and cur[11] > 0.0:
                 # bending damping at joint j, the moment cm (Omega_j - Omega_k) (Omega = q e2 + r e3), on element k
                 # now and (minus) on element j when it is finished, each in its own frame through E_k^T E_j
-                cm = cz * math.sqrt(cur[11] * (ld[11] + inert[j]))
+                cm = cz * math.sqrt(cur[11] * (ld[6] + inert[j]))
                 qk, rk, qj, rj = om[k, 0], om[k, 1], om[j, 0], om[j, 1]
                 mq += cm * (ee[4] * qj + ee[5] * rj - qk)
                 mr += cm * (ee[7] * qj + ee[8] * rj - rk)
@@ -514,7 +505,7 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
                 bq = -cm * (qj - ee[4] * qk - ee[7] * rk)
                 br = -cm * (rj - ee[5] * qk - ee[8] * rk)
                 bd = cm
-            inert[k] = ld[11]
+            inert[k] = ld[6]
             if dt > 0.0:
                 if k == first:
                     pf = _in_frame(E, k, prev)
@@ -549,7 +540,7 @@ def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, pf, cm_front, cm_a
     half = 0.5 * P[P_L]
     m = P[P_M]
     u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
-    my, ik = ld[10], ld[11]
+    my, ik = ld[5], ld[6]
     T, X = blk, Wz[k]
     # the diagonal block: masses, the dampers of the two joints at the element's ends and the bending dampers
     pa = _in_frame(E, k, aft)

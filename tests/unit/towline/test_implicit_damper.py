@@ -64,7 +64,7 @@ def test_the_line_implicit_dampers_are_the_dense_solve(seed):
     Wz, blk = np.zeros((n, 5, 6)), np.zeros((5, 6))
     pf = K._in_frame(Ek, 0, joints[0])
     for k in range(n):
-        ld = (loads[k, 0], loads[k, 1], loads[k, 2], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, my[k], ik[k])
+        ld = (loads[k, 0], loads[k, 1], loads[k, 2], 0.0, 0.0, my[k], ik[k])
         ee = K._relative_frame(Ek, k, k + 1) if k + 1 < n else K._NO_FRAME
         pf = K._eliminate(k, k + 1, n, Ek, nuk, omk, P, ld, loads[k, 3], loads[k, 4], joints[k], joints[k + 1],
                           pf, cm[k], cm[k + 1], ee, dt, Wz, blk)
