@@ -575,8 +575,8 @@ def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, pf, cm_front, cm_a
     x40, x41, x42, x43, x44 = c[20], c[21], c[22], c[23], c[24]
     # S - T = L D L^T (s_ij its lower triangle, l_ij = L's, i_p = 1 / D_p), right-looking, and Y = L^-1 X with it
     # (x_ic); then h = D^-1 Y; [T | t] = Y^T h for element k + 1; [W | z] = L^-T h into X. Unrolled into
-    # scalars: as loops over arrays the elimination waited on memory (see tests/unit/towline/test_implicit_damper.py
-    # for the loop form it equals)
+    # scalars: as loops over arrays every operation went through memory (tests/unit/towline/test_implicit_damper.py
+    # checks the result against a dense solve of the whole line's system)
     i0 = 1.0 / s00
     l10 = s10 * i0
     s11 = s11 - l10 * s10
