@@ -115,6 +115,7 @@ B_X, B_Y, B_PSI, B_U, B_V, B_R = range(6)
 
 # fast floating point short of assuming finite values: the steps check that the state stays finite
 _FAST = {"arcp", "contract", "reassoc"}
+_NO_FRAME = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)  # E_k^T E_l where there is no element l
 
 _GP = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GW = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
@@ -265,8 +266,8 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
     and its two joints (``front``, ``aft``: ``_joint``'s tuples; the front joint's force acts on
     this element with the opposite sign).
 
-    Returns ``(F_x, F_y, F_z, M_q, M_r, D_u, D_v, D_w, D_q, D_r, M_y, I)``: force, moment, the joint
-    dampers' diagonal in the element's own velocities, its transverse mass and inertia (wetted).
+    Returns ``(F_x, F_y, F_z, M_q, M_r, M_y, I)``: force, moment, its transverse mass and inertia (wetted). The
+    joints' dampers here are their forces at the step's start; their implicit part is :func:`_eliminate`'s.
     """
     half = 0.5 * P[P_L]
     rho, g, m, d, area = P[P_RHO], P[P_G], P[P_M], P[P_D], P[P_AREA]
@@ -328,9 +329,8 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
         fz += pz
         mq -= s * pz
         mr += s * py
-    # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, the torque of the
-    # joint's turning axis, and the diagonal of the joint dampers in (u, v, w, q, r)
-    du = dv = dw = 0.0
+    # the joints: force (minus the front joint's, plus the aft's) at s = -+l/2, and the torque of the joint's
+    # turning axis
     for side in range(2):
         jt = front if side == 0 else aft
         sgn = -1.0 if side == 0 else 1.0
@@ -340,117 +340,79 @@ def _element(k, R, E, nu, om, P, front, aft, inv_dt, ma_now, ma_prev):
         bzz = E[k, 0, 2] * gx + E[k, 1, 2] * gy + E[k, 2, 2] * gz
         h2 = E[k, 0, 1] * jt[3] + E[k, 1, 1] * jt[4] + E[k, 2, 1] * jt[5]
         h3 = E[k, 0, 2] * jt[3] + E[k, 1, 2] * jt[4] + E[k, 2, 2] * jt[5]
-        a1 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
-        a2 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
-        a3 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
         fx += bx
         fy += by
         fz += bzz
         mq += h3 - sgn * half * bzz
         mr += sgn * half * by - h2
-        cd = jt[9] - jt[10]
-        du += jt[10] + cd * a1 * a1
-        dv += jt[10] + cd * a2 * a2
-        dw += jt[10] + cd * a3 * a3
-    return (fx, fy, fz, mq, mr, du, dv, dw, half * half * dw, half * half * dv,
-            m + P[P_CA] * rho * area * wet, P[P_I] + P[P_CA] * rho * area * wet2)
+    return fx, fy, fz, mq, mr, m + P[P_CA] * rho * area * wet, P[P_I] + P[P_CA] * rho * area * wet2
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _damper_block(E, k, l, sk, sl, jt, coef, out):
-    """out += coef B(sk)^T (E_k^T C E_l) B(sl): the damper of joint ``jt`` (``_joint``'s tuple: its axis a and
-    coefficients c_x along it and c_t across, ``C = c_t I + (c_x - c_t) a a^T``) between the point ``sk e1`` of
-    element k and ``sl e1`` of element l, in their velocities ``(u, v, w, q, r)``; ``B(s)`` maps them to the
-    point's body velocity ``(u, v + s r, w - s q)``."""
+def _in_frame(E, k, jt):
+    """The axis of joint ``jt`` (``_joint``'s tuple) in element k's frame, ``E_k^T a``."""
+    return (E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8],
+            E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8],
+            E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _relative_frame(E, k, l):
+    """``E_k^T E_l`` row by row (9 values): entry (r, c) is column r of ``E_k`` dotted with column c of ``E_l``."""
+    return (E[k, 0, 0] * E[l, 0, 0] + E[k, 1, 0] * E[l, 1, 0] + E[k, 2, 0] * E[l, 2, 0],
+            E[k, 0, 0] * E[l, 0, 1] + E[k, 1, 0] * E[l, 1, 1] + E[k, 2, 0] * E[l, 2, 1],
+            E[k, 0, 0] * E[l, 0, 2] + E[k, 1, 0] * E[l, 1, 2] + E[k, 2, 0] * E[l, 2, 2],
+            E[k, 0, 1] * E[l, 0, 0] + E[k, 1, 1] * E[l, 1, 0] + E[k, 2, 1] * E[l, 2, 0],
+            E[k, 0, 1] * E[l, 0, 1] + E[k, 1, 1] * E[l, 1, 1] + E[k, 2, 1] * E[l, 2, 1],
+            E[k, 0, 1] * E[l, 0, 2] + E[k, 1, 1] * E[l, 1, 2] + E[k, 2, 1] * E[l, 2, 2],
+            E[k, 0, 2] * E[l, 0, 0] + E[k, 1, 2] * E[l, 1, 0] + E[k, 2, 2] * E[l, 2, 0],
+            E[k, 0, 2] * E[l, 0, 1] + E[k, 1, 2] * E[l, 1, 1] + E[k, 2, 2] * E[l, 2, 1],
+            E[k, 0, 2] * E[l, 0, 2] + E[k, 1, 2] * E[l, 1, 2] + E[k, 2, 2] * E[l, 2, 2])
+
+
+@njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
+def _damper_own(s, jt, coef, a):
+    """``coef B(s)^T (E_k^T C E_k) B(s)``, the lower triangle row by row (15 values): the damper of joint ``jt``
+    (``_joint``'s tuple: its coefficients c_x along its axis and c_t across, ``C = c_t I + (c_x - c_t) a a^T``) at
+    the point ``s e1`` of element k, in its velocities ``(u, v, w, q, r)``, with ``a`` the axis in k's frame
+    (:func:`_in_frame`); ``B(s)`` maps the velocities to the point's body velocity ``(u, v + s r, w - s q)``."""
     ct, cd = coef * jt[10], coef * (jt[9] - jt[10])
-    ak0 = E[k, 0, 0] * jt[6] + E[k, 1, 0] * jt[7] + E[k, 2, 0] * jt[8]
-    ak1 = E[k, 0, 1] * jt[6] + E[k, 1, 1] * jt[7] + E[k, 2, 1] * jt[8]
-    ak2 = E[k, 0, 2] * jt[6] + E[k, 1, 2] * jt[7] + E[k, 2, 2] * jt[8]
-    if k == l:  # E_k^T E_k = I
-        al0, al1, al2 = ak0, ak1, ak2
-        g00, g01, g02 = ct + cd * ak0 * ak0, cd * ak0 * ak1, cd * ak0 * ak2
-        g10, g11, g12 = g01, ct + cd * ak1 * ak1, cd * ak1 * ak2
-        g20, g21, g22 = g02, g12, ct + cd * ak2 * ak2
-    else:
-        al0 = E[l, 0, 0] * jt[6] + E[l, 1, 0] * jt[7] + E[l, 2, 0] * jt[8]
-        al1 = E[l, 0, 1] * jt[6] + E[l, 1, 1] * jt[7] + E[l, 2, 1] * jt[8]
-        al2 = E[l, 0, 2] * jt[6] + E[l, 1, 2] * jt[7] + E[l, 2, 2] * jt[8]
-
-        def ee(r, c):
-            return E[k, 0, r] * E[l, 0, c] + E[k, 1, r] * E[l, 1, c] + E[k, 2, r] * E[l, 2, c]
-
-        g00, g01, g02 = ct * ee(0, 0) + cd * ak0 * al0, ct * ee(0, 1) + cd * ak0 * al1, ct * ee(0, 2) + cd * ak0 * al2
-        g10, g11, g12 = ct * ee(1, 0) + cd * ak1 * al0, ct * ee(1, 1) + cd * ak1 * al1, ct * ee(1, 2) + cd * ak1 * al2
-        g20, g21, g22 = ct * ee(2, 0) + cd * ak2 * al0, ct * ee(2, 1) + cd * ak2 * al1, ct * ee(2, 2) + cd * ak2 * al2
-    # H = G B(sl) (rows r: (g_r0, g_r1, g_r2, -sl g_r2, sl g_r1)), out += B(sk)^T H (rows 0-2: H, 3: -sk H_2, 4: sk H_1)
-    out[0, 0] += g00
-    out[0, 1] += g01
-    out[0, 2] += g02
-    out[0, 3] -= sl * g02
-    out[0, 4] += sl * g01
-    out[1, 0] += g10
-    out[1, 1] += g11
-    out[1, 2] += g12
-    out[1, 3] -= sl * g12
-    out[1, 4] += sl * g11
-    out[2, 0] += g20
-    out[2, 1] += g21
-    out[2, 2] += g22
-    out[2, 3] -= sl * g22
-    out[2, 4] += sl * g21
-    out[3, 0] -= sk * g20
-    out[3, 1] -= sk * g21
-    out[3, 2] -= sk * g22
-    out[3, 3] += sk * sl * g22
-    out[3, 4] -= sk * sl * g21
-    out[4, 0] += sk * g10
-    out[4, 1] += sk * g11
-    out[4, 2] += sk * g12
-    out[4, 3] -= sk * sl * g12
-    out[4, 4] += sk * sl * g11
+    a0, a1, a2 = a
+    g00, g11, g22 = ct + cd * a0 * a0, ct + cd * a1 * a1, ct + cd * a2 * a2
+    g10, g20, g21 = cd * a1 * a0, cd * a2 * a0, cd * a2 * a1
+    s2 = s * s
+    return (g00,
+            g10, g11,
+            g20, g21, g22,
+            -s * g20, -s * g21, -s * g22, s2 * g22,
+            s * g10, s * g11, s * g21, -s2 * g21, s2 * g11)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _bending_block(E, k, l, coef, out):
-    """out[3:, 3:] += coef P_k^T P_l, ``P_k = [e2 e3]`` of element k: the bending damper's moment on k per
-    rotation rate (q, r) of l."""
-    for r in range(2):
-        for c in range(2):
-            out[3 + r, 3 + c] += coef * (E[k, 0, 1 + r] * E[l, 0, 1 + c] + E[k, 1, 1 + r] * E[l, 1, 1 + c]
-                                         + E[k, 2, 1 + r] * E[l, 2, 1 + c])
+def _damper_coupling(sk, sl, jt, coef, cb, ak, al, ee):
+    """``coef B(sk)^T (E_k^T C E_l) B(sl)`` (:func:`_damper_own`) between the point ``sk e1`` of element k and
+    ``sl e1`` of element l, plus the bending damper's ``cb P_k^T P_l`` (``P = [e2 e3]``: its moment on k per
+    rotation rate (q, r) of l) in the rotations' block: the 5x5 block row by row (25 values). ``ak``, ``al``:
+    the joint's axis in the frames of k and l; ``ee``: ``E_k^T E_l`` row by row (:func:`_relative_frame`)."""
+    ct, cd = coef * jt[10], coef * (jt[9] - jt[10])
+    ak0, ak1, ak2 = ak
+    al0, al1, al2 = al
+    e00, e01, e02, e10, e11, e12, e20, e21, e22 = ee
+    g00, g01, g02 = ct * e00 + cd * ak0 * al0, ct * e01 + cd * ak0 * al1, ct * e02 + cd * ak0 * al2
+    g10, g11, g12 = ct * e10 + cd * ak1 * al0, ct * e11 + cd * ak1 * al1, ct * e12 + cd * ak1 * al2
+    g20, g21, g22 = ct * e20 + cd * ak2 * al0, ct * e21 + cd * ak2 * al1, ct * e22 + cd * ak2 * al2
+    # G B(sl) has the rows (g_r0, g_r1, g_r2, -sl g_r2, sl g_r1); B(sk)^T adds the rows -sk (row 2), sk (row 1)
+    ss = sk * sl
+    return (g00, g01, g02, -sl * g02, sl * g01,
+            g10, g11, g12, -sl * g12, sl * g11,
+            g20, g21, g22, -sl * g22, sl * g21,
+            -sk * g20, -sk * g21, -sk * g22, ss * g22 + cb * e11, -ss * g21 + cb * e12,
+            sk * g10, sk * g11, sk * g12, -ss * g12 + cb * e21, ss * g11 + cb * e22)
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _solve5(S, U, y, W, z, with_u):
-    """W = S^-1 U (when ``with_u``) and z = S^-1 y for the symmetric positive definite 5x5 ``S`` (Gaussian
-    elimination without pivoting; S and U are overwritten)."""
-    for p in range(5):
-        inv = 1.0 / S[p, p]
-        for i in range(p + 1, 5):
-            f = S[i, p] * inv
-            if f != 0.0:
-                for c in range(p + 1, 5):
-                    S[i, c] -= f * S[p, c]
-                y[i] -= f * y[p]
-                if with_u:
-                    for c in range(5):
-                        U[i, c] -= f * U[p, c]
-    for i in range(4, -1, -1):
-        s = y[i]
-        for c in range(i + 1, 5):
-            s -= S[i, c] * z[c]
-        z[i] = s / S[i, i]
-        if with_u:
-            for cc in range(5):
-                s = U[i, cc]
-                for c in range(i + 1, 5):
-                    s -= S[i, c] * W[c, cc]
-                W[i, cc] = s / S[i, i]
-
-
-@njit(cache=True, error_model="numpy", fastmath=_FAST)
 def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma_now, ma_prev, dt, work,
-          Wb, zb, blk):
+          Wz, blk):
     """One explicit step of the line (``dt = 0``: the joints' tensions and the wetted inertias only);
     returns the barge joint's force on the line ahead (x, y) and whether the new state is finite.
 
@@ -472,8 +434,8 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
 
     ``inert`` (N) holds the wetted inertias, in and out; ``ma_now`` (N, 3) receives the added mass of
     each Gauss point's share of the element; with ``dt > 0`` its growth since ``ma_prev`` gives the
-    water-entry impact. ``work`` is (2, 3) scratch; ``Wb`` (N, 5, 5), ``zb`` (N, 5) and ``blk`` (5, 5, 5)
-    the implicit update's (unused when ``dt = 0``).
+    water-entry impact. ``work`` is (2, 3) scratch; ``Wz`` (N, 5, 6) and ``blk`` (5, 6) the implicit
+    update's (:func:`_eliminate`; unused when ``dt = 0``).
     """
     n = R.shape[0]
     half = 0.5 * P[P_L]
@@ -487,9 +449,9 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
     cur = prev
     bq = br = bd = 0.0  # bending damping of the previous joint on the element being finished
     cm_front = cm_aft = 0.0
+    pf = (0.0, 0.0, 0.0)  # the front joint's axis in the frame of the element being finished
     finite = True
-    blk[1, :, :] = 0.0  # nothing eliminated before the first element
-    blk[2, 0, :] = 0.0
+    blk[:, :] = 0.0  # nothing eliminated before the first element
     for j in range(first, n + 1):
         # the next body's front point (q, w), and the axis sum s of the joint's elements
         sx = sy = sz = 0.0
@@ -530,115 +492,212 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
             mq, mr = ld[3] + bq, ld[4] + br
             cm_front, cm_aft = bd, 0.0
             bq = br = bd = 0.0
-            if j < n and cz > 0.0 and cur[11] > 0.0:
-                # bending damping at joint j, on element k now and on element j when it is finished
-                cm = cz * math.sqrt(cur[11] * (ld[11] + inert[j]))
-                rx = om[j, 0] * E[j, 0, 1] + om[j, 1] * E[j, 0, 2] - om[k, 0] * E[k, 0, 1] - om[k, 1] * E[k, 0, 2]
-                ry = om[j, 0] * E[j, 1, 1] + om[j, 1] * E[j, 1, 2] - om[k, 0] * E[k, 1, 1] - om[k, 1] * E[k, 1, 2]
-                rz = om[j, 0] * E[j, 2, 1] + om[j, 1] * E[j, 2, 2] - om[k, 0] * E[k, 2, 1] - om[k, 1] * E[k, 2, 2]
-                mq += cm * (rx * E[k, 0, 1] + ry * E[k, 1, 1] + rz * E[k, 2, 1])
-                mr += cm * (rx * E[k, 0, 2] + ry * E[k, 1, 2] + rz * E[k, 2, 2])
+            inner = j < n
+            ee = _relative_frame(E, k, j) if inner else _NO_FRAME
+            if inner and cz > 0.0 and cur[11] > 0.0:
+                # bending damping at joint j, the moment cm (Omega_j - Omega_k) (Omega = q e2 + r e3), on element k
+                # now and (minus) on element j when it is finished, each in its own frame through E_k^T E_j
+                cm = cz * math.sqrt(cur[11] * (ld[6] + inert[j]))
+                qk, rk, qj, rj = om[k, 0], om[k, 1], om[j, 0], om[j, 1]
+                mq += cm * (ee[4] * qj + ee[5] * rj - qk)
+                mr += cm * (ee[7] * qj + ee[8] * rj - rk)
                 cm_aft = cm
-                bq = -cm * (rx * E[j, 0, 1] + ry * E[j, 1, 1] + rz * E[j, 2, 1])
-                br = -cm * (rx * E[j, 0, 2] + ry * E[j, 1, 2] + rz * E[j, 2, 2])
+                bq = -cm * (qj - ee[4] * qk - ee[7] * rk)
+                br = -cm * (rj - ee[5] * qk - ee[8] * rk)
                 bd = cm
-            inert[k] = ld[11]
+            inert[k] = ld[6]
             if dt > 0.0:
-                _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, prev, cur, cm_front, cm_aft, dt, Wb, zb, blk)
+                if k == first:
+                    pf = _in_frame(E, k, prev)
+                pf = _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, prev, cur, pf, cm_front, cm_aft, ee, dt, Wz, blk)
         prev = cur
         px, py, pz, vx, vy, vz = ax_, ay_, az_, bvx, bvy, bvz
     if dt > 0.0:
-        finite = _back_substitute(first, n, R, E, nu, om, dt, Wb, zb, blk)
+        finite = _back_substitute(first, n, R, E, nu, om, dt, Wz)
     return cur[0], cur[1], finite
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, cm_front, cm_aft, dt, Wb, zb, blk):
+def _eliminate(k, j, n, E, nu, om, P, ld, mq, mr, front, aft, pf, cm_front, cm_aft, ee, dt, Wz, blk):
     """Element k's row of the dampers' implicit velocity update, eliminated forward along the line.
 
     The step solves ``(M + dt D) dx = dt f`` for the velocity increments ``dx = (du, dv, dw, dq, dr)`` of all
     elements at once: ``M`` the elements' (wetted) masses and inertias, ``f`` their loads and Coriolis terms at
     the step's start, ``D`` the joint dampers' and bending dampers' matrix, block tri-diagonal (5x5 blocks: a
     joint couples its two elements). Backward Euler in the dampers along the whole line, so that elements moving
-    together (no relative velocity at a joint) feel no damper and no inertia from it. Forward elimination: with
-    ``T_k = U_{k-1}^T W_{k-1}``, ``t_k = U_{k-1}^T z_{k-1}`` from element k - 1 (``blk[1]``, ``blk[2, 0]``),
-    ``W_k = (A_k - T_k)^-1 U_k`` and ``z_k = (A_k - T_k)^-1 (dt f_k - t_k)``, ``U_k`` the coupling to element k + 1
-    through joint j = k + 1 (none at the barge's joint); :func:`_back_substitute` finishes the step."""
+    together (no relative velocity at a joint) feel no damper and no inertia from it.
+
+    Forward elimination: element k's diagonal block less what element k - 1 passed on, ``S_k = A_k - T_k``
+    (symmetric positive definite), is factored ``S_k = L D L^T``; with ``U_k`` its coupling to element k + 1
+    through joint j = k + 1 (none at the barge's joint) and ``y_k = dt f_k - t_k`` its right-hand side,
+    ``Y = L^-1 [U_k | y_k]`` gives what passes on, ``[T_{k+1} | t_{k+1}] = U_k^T S_k^-1 [U_k | y_k] = Y^T D^-1 Y``
+    (its lower triangle and last column), and ``Wz[k] = [W_k | z_k] = L^-T D^-1 Y`` is kept for
+    :func:`_back_substitute`. ``blk`` (5, 6) carries ``[T | t]`` from element to element.
+
+    ``front``, ``aft``: the joints at the element's ends (``_joint``'s tuples), ``pf`` the front joint's axis in
+    the element's frame, ``cm_front``, ``cm_aft`` the bending dampers there, ``ee`` ``E_k^T E_j``. Returns the aft
+    joint's axis in element j's frame, its ``pf`` (zeros after the last element)."""
     half = 0.5 * P[P_L]
     m = P[P_M]
     u, v, w, q, r = nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1]
-    my, ik = ld[10], ld[11]
-    S, U, T = blk[0], blk[3], blk[1]
-    y = blk[2, 1]
-    for a in range(5):
-        for c in range(5):
-            S[a, c] = -T[a, c]
-            U[a, c] = 0.0
-    S[0, 0] += m
-    S[1, 1] += my
-    S[2, 2] += my
-    S[3, 3] += ik
-    S[4, 4] += ik
-    if front[9] != 0.0 or front[10] != 0.0:
-        _damper_block(E, k, k, -half, -half, front, dt, S)
-    if aft[9] != 0.0 or aft[10] != 0.0:
-        _damper_block(E, k, k, half, half, aft, dt, S)
-    S[3, 3] += dt * (cm_front + cm_aft)
-    S[4, 4] += dt * (cm_front + cm_aft)
-    y[0] = dt * (ld[0] - q * my * w + r * my * v) - blk[2, 0, 0]
-    y[1] = dt * (ld[1] - r * m * u) - blk[2, 0, 1]
-    y[2] = dt * (ld[2] + q * m * u) - blk[2, 0, 2]
-    y[3] = dt * (mq - (m - my) * u * w) - blk[2, 0, 3]
-    y[4] = dt * (mr - (my - m) * u * v) - blk[2, 0, 4]
-    inner = j < n
-    if inner:
-        if aft[9] != 0.0 or aft[10] != 0.0:
-            _damper_block(E, k, j, half, -half, aft, -dt, U)
-        if cm_aft != 0.0:
-            _bending_block(E, k, j, -dt * cm_aft, U)
-    # keep U (for T of the next element), as the solve overwrites it
-    for a in range(5):
-        for c in range(5):
-            T[a, c] = U[a, c]
-    _solve5(S, U, y, Wb[k], zb[k], inner)
-    # the next element's share: T = U^T W, t = U^T z (zero after the last)
-    for a in range(5):
-        s = 0.0
-        for c in range(5):
-            s += T[c, a] * zb[k, c]
-        blk[2, 0, a] = s if inner else 0.0
-    for a in range(5):
-        for b in range(5):
-            s = 0.0
-            if inner:
-                for c in range(5):
-                    s += T[c, a] * Wb[k, c, b]
-            blk[4, a, b] = s
-    for a in range(5):
-        for b in range(5):
-            T[a, b] = blk[4, a, b]
+    my, ik = ld[5], ld[6]
+    T, X = blk, Wz[k]
+    # the diagonal block: masses, the dampers of the two joints at the element's ends and the bending dampers
+    pa = _in_frame(E, k, aft)
+    f = _damper_own(-half, front, dt, pf)
+    a = _damper_own(half, aft, dt, pa)
+    cb = ik + dt * (cm_front + cm_aft)
+    s00 = m + f[0] + a[0] - T[0, 0]
+    s10, s11 = f[1] + a[1] - T[1, 0], my + f[2] + a[2] - T[1, 1]
+    s20, s21, s22 = f[3] + a[3] - T[2, 0], f[4] + a[4] - T[2, 1], my + f[5] + a[5] - T[2, 2]
+    s30, s31, s32 = f[6] + a[6] - T[3, 0], f[7] + a[7] - T[3, 1], f[8] + a[8] - T[3, 2]
+    s33 = cb + f[9] + a[9] - T[3, 3]
+    s40, s41, s42 = f[10] + a[10] - T[4, 0], f[11] + a[11] - T[4, 1], f[12] + a[12] - T[4, 2]
+    s43, s44 = f[13] + a[13] - T[4, 3], cb + f[14] + a[14] - T[4, 4]
+    # the right-hand side, dt f - t
+    x05 = dt * (ld[0] - q * my * w + r * my * v) - T[0, 5]
+    x15 = dt * (ld[1] - r * m * u) - T[1, 5]
+    x25 = dt * (ld[2] + q * m * u) - T[2, 5]
+    x35 = dt * (mq - (m - my) * u * w) - T[3, 5]
+    x45 = dt * (mr - (my - m) * u * v) - T[4, 5]
+    # the coupling to element j = k + 1 through joint j (none at the barge's joint)
+    if j < n:
+        pl = _in_frame(E, j, aft)
+        c = _damper_coupling(half, -half, aft, -dt, -dt * cm_aft, pa, pl, ee)
+    else:
+        pl = (0.0, 0.0, 0.0)
+        c = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+             0.0, 0.0, 0.0, 0.0, 0.0)
+    x00, x01, x02, x03, x04 = c[0], c[1], c[2], c[3], c[4]
+    x10, x11, x12, x13, x14 = c[5], c[6], c[7], c[8], c[9]
+    x20, x21, x22, x23, x24 = c[10], c[11], c[12], c[13], c[14]
+    x30, x31, x32, x33, x34 = c[15], c[16], c[17], c[18], c[19]
+    x40, x41, x42, x43, x44 = c[20], c[21], c[22], c[23], c[24]
+    # S - T = L D L^T (s_ij its lower triangle, l_ij = L's, i_p = 1 / D_p), right-looking, and Y = L^-1 X with it
+    # (x_ic); then h = D^-1 Y; [T | t] = Y^T h for element k + 1; [W | z] = L^-T h into X. Unrolled into
+    # scalars: as loops over arrays every operation went through memory (tests/unit/towline/test_implicit_damper.py
+    # checks the result against a dense solve of the whole line's system)
+    i0 = 1.0 / s00
+    l10 = s10 * i0
+    s11 = s11 - l10 * s10
+    x10, x11, x12 = x10 - l10 * x00, x11 - l10 * x01, x12 - l10 * x02
+    x13, x14, x15 = x13 - l10 * x03, x14 - l10 * x04, x15 - l10 * x05
+    l20 = s20 * i0
+    s21, s22 = s21 - l20 * s10, s22 - l20 * s20
+    x20, x21, x22 = x20 - l20 * x00, x21 - l20 * x01, x22 - l20 * x02
+    x23, x24, x25 = x23 - l20 * x03, x24 - l20 * x04, x25 - l20 * x05
+    l30 = s30 * i0
+    s31, s32, s33 = s31 - l30 * s10, s32 - l30 * s20, s33 - l30 * s30
+    x30, x31, x32 = x30 - l30 * x00, x31 - l30 * x01, x32 - l30 * x02
+    x33, x34, x35 = x33 - l30 * x03, x34 - l30 * x04, x35 - l30 * x05
+    l40 = s40 * i0
+    s41, s42, s43 = s41 - l40 * s10, s42 - l40 * s20, s43 - l40 * s30
+    s44 = s44 - l40 * s40
+    x40, x41, x42 = x40 - l40 * x00, x41 - l40 * x01, x42 - l40 * x02
+    x43, x44, x45 = x43 - l40 * x03, x44 - l40 * x04, x45 - l40 * x05
+    i1 = 1.0 / s11
+    l21 = s21 * i1
+    s22 = s22 - l21 * s21
+    x20, x21, x22 = x20 - l21 * x10, x21 - l21 * x11, x22 - l21 * x12
+    x23, x24, x25 = x23 - l21 * x13, x24 - l21 * x14, x25 - l21 * x15
+    l31 = s31 * i1
+    s32, s33 = s32 - l31 * s21, s33 - l31 * s31
+    x30, x31, x32 = x30 - l31 * x10, x31 - l31 * x11, x32 - l31 * x12
+    x33, x34, x35 = x33 - l31 * x13, x34 - l31 * x14, x35 - l31 * x15
+    l41 = s41 * i1
+    s42, s43, s44 = s42 - l41 * s21, s43 - l41 * s31, s44 - l41 * s41
+    x40, x41, x42 = x40 - l41 * x10, x41 - l41 * x11, x42 - l41 * x12
+    x43, x44, x45 = x43 - l41 * x13, x44 - l41 * x14, x45 - l41 * x15
+    i2 = 1.0 / s22
+    l32 = s32 * i2
+    s33 = s33 - l32 * s32
+    x30, x31, x32 = x30 - l32 * x20, x31 - l32 * x21, x32 - l32 * x22
+    x33, x34, x35 = x33 - l32 * x23, x34 - l32 * x24, x35 - l32 * x25
+    l42 = s42 * i2
+    s43, s44 = s43 - l42 * s32, s44 - l42 * s42
+    x40, x41, x42 = x40 - l42 * x20, x41 - l42 * x21, x42 - l42 * x22
+    x43, x44, x45 = x43 - l42 * x23, x44 - l42 * x24, x45 - l42 * x25
+    i3 = 1.0 / s33
+    l43 = s43 * i3
+    s44 = s44 - l43 * s43
+    x40, x41, x42 = x40 - l43 * x30, x41 - l43 * x31, x42 - l43 * x32
+    x43, x44, x45 = x43 - l43 * x33, x44 - l43 * x34, x45 - l43 * x35
+    i4 = 1.0 / s44
+    h00, h01, h02, h03, h04, h05 = x00 * i0, x01 * i0, x02 * i0, x03 * i0, x04 * i0, x05 * i0
+    h10, h11, h12, h13, h14, h15 = x10 * i1, x11 * i1, x12 * i1, x13 * i1, x14 * i1, x15 * i1
+    h20, h21, h22, h23, h24, h25 = x20 * i2, x21 * i2, x22 * i2, x23 * i2, x24 * i2, x25 * i2
+    h30, h31, h32, h33, h34, h35 = x30 * i3, x31 * i3, x32 * i3, x33 * i3, x34 * i3, x35 * i3
+    h40, h41, h42, h43, h44, h45 = x40 * i4, x41 * i4, x42 * i4, x43 * i4, x44 * i4, x45 * i4
+    T[0, 0] = x00 * h00 + x10 * h10 + x20 * h20 + x30 * h30 + x40 * h40
+    T[0, 5] = x00 * h05 + x10 * h15 + x20 * h25 + x30 * h35 + x40 * h45
+    T[1, 0] = x01 * h00 + x11 * h10 + x21 * h20 + x31 * h30 + x41 * h40
+    T[1, 1] = x01 * h01 + x11 * h11 + x21 * h21 + x31 * h31 + x41 * h41
+    T[1, 5] = x01 * h05 + x11 * h15 + x21 * h25 + x31 * h35 + x41 * h45
+    T[2, 0] = x02 * h00 + x12 * h10 + x22 * h20 + x32 * h30 + x42 * h40
+    T[2, 1] = x02 * h01 + x12 * h11 + x22 * h21 + x32 * h31 + x42 * h41
+    T[2, 2] = x02 * h02 + x12 * h12 + x22 * h22 + x32 * h32 + x42 * h42
+    T[2, 5] = x02 * h05 + x12 * h15 + x22 * h25 + x32 * h35 + x42 * h45
+    T[3, 0] = x03 * h00 + x13 * h10 + x23 * h20 + x33 * h30 + x43 * h40
+    T[3, 1] = x03 * h01 + x13 * h11 + x23 * h21 + x33 * h31 + x43 * h41
+    T[3, 2] = x03 * h02 + x13 * h12 + x23 * h22 + x33 * h32 + x43 * h42
+    T[3, 3] = x03 * h03 + x13 * h13 + x23 * h23 + x33 * h33 + x43 * h43
+    T[3, 5] = x03 * h05 + x13 * h15 + x23 * h25 + x33 * h35 + x43 * h45
+    T[4, 0] = x04 * h00 + x14 * h10 + x24 * h20 + x34 * h30 + x44 * h40
+    T[4, 1] = x04 * h01 + x14 * h11 + x24 * h21 + x34 * h31 + x44 * h41
+    T[4, 2] = x04 * h02 + x14 * h12 + x24 * h22 + x34 * h32 + x44 * h42
+    T[4, 3] = x04 * h03 + x14 * h13 + x24 * h23 + x34 * h33 + x44 * h43
+    T[4, 4] = x04 * h04 + x14 * h14 + x24 * h24 + x34 * h34 + x44 * h44
+    T[4, 5] = x04 * h05 + x14 * h15 + x24 * h25 + x34 * h35 + x44 * h45
+    X[4, 0], X[4, 1], X[4, 2], X[4, 3], X[4, 4], X[4, 5] = h40, h41, h42, h43, h44, h45
+    h30 -= l43 * h40
+    h31 -= l43 * h41
+    h32 -= l43 * h42
+    h33 -= l43 * h43
+    h34 -= l43 * h44
+    h35 -= l43 * h45
+    X[3, 0], X[3, 1], X[3, 2], X[3, 3], X[3, 4], X[3, 5] = h30, h31, h32, h33, h34, h35
+    h20 -= l32 * h30 + l42 * h40
+    h21 -= l32 * h31 + l42 * h41
+    h22 -= l32 * h32 + l42 * h42
+    h23 -= l32 * h33 + l42 * h43
+    h24 -= l32 * h34 + l42 * h44
+    h25 -= l32 * h35 + l42 * h45
+    X[2, 0], X[2, 1], X[2, 2], X[2, 3], X[2, 4], X[2, 5] = h20, h21, h22, h23, h24, h25
+    h10 -= l21 * h20 + l31 * h30 + l41 * h40
+    h11 -= l21 * h21 + l31 * h31 + l41 * h41
+    h12 -= l21 * h22 + l31 * h32 + l41 * h42
+    h13 -= l21 * h23 + l31 * h33 + l41 * h43
+    h14 -= l21 * h24 + l31 * h34 + l41 * h44
+    h15 -= l21 * h25 + l31 * h35 + l41 * h45
+    X[1, 0], X[1, 1], X[1, 2], X[1, 3], X[1, 4], X[1, 5] = h10, h11, h12, h13, h14, h15
+    h00 -= l10 * h10 + l20 * h20 + l30 * h30 + l40 * h40
+    h01 -= l10 * h11 + l20 * h21 + l30 * h31 + l40 * h41
+    h02 -= l10 * h12 + l20 * h22 + l30 * h32 + l40 * h42
+    h03 -= l10 * h13 + l20 * h23 + l30 * h33 + l40 * h43
+    h04 -= l10 * h14 + l20 * h24 + l30 * h34 + l40 * h44
+    h05 -= l10 * h15 + l20 * h25 + l30 * h35 + l40 * h45
+    X[0, 0], X[0, 1], X[0, 2], X[0, 3], X[0, 4], X[0, 5] = h00, h01, h02, h03, h04, h05
+    return pl
+
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST, inline="always")
-def _back_substitute(first, n, R, E, nu, om, dt, Wb, zb, blk):
+def _back_substitute(first, n, R, E, nu, om, dt, Wz):
     """The velocity increments ``dx_k = z_k - W_k dx_{k+1}`` from the barge's end back to the first element off
     the bitt, each element's new velocities, then its position and frame with them (symplectic Euler). Returns
     whether the new state is finite."""
-    x = blk[2, 1]
-    for a in range(5):
-        x[a] = 0.0
+    x0 = x1 = x2 = x3 = x4 = 0.0  # dx of element k + 1 (none after the last: W of the last element is 0)
     finite = True
     for k in range(n - 1, first - 1, -1):
-        for a in range(5):
-            s = zb[k, a]
-            if k < n - 1:
-                for c in range(5):
-                    s -= Wb[k, a, c] * x[c]
-            blk[2, 2, a] = s
-        for a in range(5):
-            x[a] = blk[2, 2, a]
-        u2, v2, w2 = nu[k, 0] + x[0], nu[k, 1] + x[1], nu[k, 2] + x[2]
-        q2, r2 = om[k, 0] + x[3], om[k, 1] + x[4]
+        X = Wz[k]
+        y0 = X[0, 5] - (X[0, 0] * x0 + X[0, 1] * x1 + X[0, 2] * x2 + X[0, 3] * x3 + X[0, 4] * x4)
+        y1 = X[1, 5] - (X[1, 0] * x0 + X[1, 1] * x1 + X[1, 2] * x2 + X[1, 3] * x3 + X[1, 4] * x4)
+        y2 = X[2, 5] - (X[2, 0] * x0 + X[2, 1] * x1 + X[2, 2] * x2 + X[2, 3] * x3 + X[2, 4] * x4)
+        y3 = X[3, 5] - (X[3, 0] * x0 + X[3, 1] * x1 + X[3, 2] * x2 + X[3, 3] * x3 + X[3, 4] * x4)
+        y4 = X[4, 5] - (X[4, 0] * x0 + X[4, 1] * x1 + X[4, 2] * x2 + X[4, 3] * x3 + X[4, 4] * x4)
+        x0, x1, x2, x3, x4 = y0, y1, y2, y3, y4
+        u2, v2, w2 = nu[k, 0] + x0, nu[k, 1] + x1, nu[k, 2] + x2
+        q2, r2 = om[k, 0] + x3, om[k, 1] + x4
         nu[k, 0], nu[k, 1], nu[k, 2], om[k, 0], om[k, 1] = u2, v2, w2, q2, r2
         for i in range(3):
             R[k, i] += dt * (E[k, i, 0] * u2 + E[k, i, 1] * v2 + E[k, i, 2] * w2)
@@ -684,7 +743,7 @@ def evaluate(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension,
     """Joint tensions, slack flags, the wetted inertias ``inert`` (N) and the added masses ``ma`` (N, 3)
     of the Gauss points' shares, for the state as it is (a step of zero length)."""
     _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, slack, ma, ma, 0.0, np.zeros((2, 3)),
-          np.zeros((0, 5, 5)), np.zeros((0, 5)), np.zeros((5, 5, 5)))
+          np.zeros((0, 5, 6)), np.zeros((5, 6)))
 
 
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
@@ -698,14 +757,14 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
     n = R.shape[0]
     ma_prev, ma_now = ma, np.zeros((n, 3))  # swapped after each step
     work = np.zeros((2, 3))
-    Wb, zb, blk = np.zeros((n, 5, 5)), np.zeros((n, 5)), np.zeros((5, 5, 5))  # the dampers' implicit solve
+    Wz, blk = np.zeros((n, 5, 6)), np.zeros((5, 6))  # the dampers' implicit solve
     qb, wb = np.zeros(3), np.zeros(3)
     half = 0.5 * P[P_L]
     nstep = tug_p.shape[0] - 1
     for step in range(nstep):
         first = first_arr[0]
         fbx, fby, finite = _step(R, E, nu, om, first, P, tug_p[step], tug_v[step], bs, bxt, bzt, inert, tension,
-                                 slack, ma_now, ma_prev, dt, work, Wb, zb, blk)
+                                 slack, ma_now, ma_prev, dt, work, Wz, blk)
         ma_prev, ma_now = ma_now, ma_prev
         # the barge: towline force at its tow point (minus joint n's force on the previous body)
         if not held:

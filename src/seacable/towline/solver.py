@@ -124,8 +124,8 @@ def stable_time_step(model: TowlineModel, safety: float = 0.8) -> float:
     (no added mass): neighbours moving against each other along the line, ``omega^2 = 4 k / m``, and
     all elements turning the same way about their centres, which opens every joint across the line
     by ``l theta`` against the pin stiffness ``k_t``: ``omega^2 = k_t l^2 / I = 12 k_t / m``. With
-    ``k_t = k / 3`` both give ``dt < sqrt(m / k)`` (= T_n / 2 pi). The joint dampers are taken implicitly in
-    each element's own velocities and do not bound the step; the seabed's spring and damper (explicit) do,
+    ``k_t = k / 3`` both give ``dt < sqrt(m / k)`` (= T_n / 2 pi). The joint and bending dampers are taken
+    implicitly along the whole line and do not bound the step; the seabed's spring and damper (explicit) do,
     where there is a seabed.
     """
     P = model.params
