@@ -196,25 +196,25 @@ def test_snap_loads_of_a_result_in_blocks_are_those_of_the_whole_run(tmp_path, m
 
 
 def test_the_size_of_a_result_is_what_the_run_size_check_counts(monkeypatch):
-    """``stored_per_output`` counts the values of the result an output: for three 40-element lines 657
-    (x, y, z and node tension of 3 x 41 nodes, 3 x 40 element tensions, 6 per line, 4 per point for 6 points,
-    time, slack count and wave elevation), 0.568 GB for the issue's 3 hours at 0.1 s, which a 1 GB limit
+    """``stored_per_output`` counts the values of the result an output: for three 40-element lines 660
+    (x, y, z and node tension of 3 x 41 nodes, 3 x 40 element tensions, 7 per line, 4 per point for 6 points,
+    time, slack count and wave elevation), 0.570 GB for the issue's 3 hours at 0.1 s, which a 1 GB limit
     lets through. A 20 s result holds that but the wave elevation (calm water)."""
     from seacable.mooring.moordyn import prepare_moordyn
 
     model = moordyn_model(THREE)
-    assert stored_per_output(model.network) == 4 * 123 + 120 + 18 + 24 + 3
-    assert 108_001 * 657 * 8 == pytest.approx(0.568e9, rel=1e-3)
+    assert stored_per_output(model.network) == 4 * 123 + 120 + 21 + 24 + 3
+    assert 108_001 * 660 * 8 == pytest.approx(0.570e9, rel=1e-3)
     monkeypatch.setenv("SEACABLE_MAX_MEMORY", "1e9")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         prepare_moordyn(_three_case(3 * 3600.0))  # refused above the limit
         monkeypatch.setenv("SEACABLE_MAX_MEMORY", "0.5e9")
-        with pytest.raises(sc.InputError, match="would store about 568 MB of results"):
+        with pytest.raises(sc.InputError, match="would store about 570 MB of results"):
             prepare_moordyn(_three_case(3 * 3600.0))
     ds = _run(_three_case(20.0))
     timed = sum(v.nbytes for v in ds.variables.values() if "time" in v.dims)
-    assert timed == 201 * (657 - 1) * 8
+    assert timed == 201 * (660 - 1) * 8
 
 
 def test_a_run_written_as_it_goes_holds_a_block_not_the_run(tmp_path, monkeypatch):

@@ -380,7 +380,7 @@ class MooringDynamicSetup:
 def stored_per_output(net: Network) -> int:
     """Values the result of a time-domain run holds per output: per line (each padded to the longest, as in a
     MoorDyn deck's result) the positions and tensions of its nodes, its element tensions, its end tensions,
-    fairlead force and grounded length; the forces on the points; the time, the count of slack elements and
+    its anchor's vertical force, fairlead force and grounded length; the forces on the points; the time, the count of slack elements and
     the wave elevation. [1]
 
     The run itself holds a block of outputs at a time (:func:`seacable.mooring.solver.simulate`,
@@ -390,7 +390,7 @@ def stored_per_output(net: Network) -> int:
     nodes = max(len(n) for n in net.line_nodes)
     elements = int(np.max(np.bincount(net.element_line, minlength=lines)))
     points = int(np.count_nonzero((net.kind != FREE) | ~np.isfinite(net.arc_length)))
-    return lines * (4 * nodes + elements + 6) + 4 * points + 3
+    return lines * (4 * nodes + elements + 7) + 4 * points + 3
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
