@@ -478,11 +478,16 @@ def _step(R, E, nu, om, first, P, tug_p, tug_v, bs, bxt, bzt, inert, tension, sl
                 cur = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
                 slack[j] = True
         else:
-            al = math.sqrt(sx * sx + sy * sy + sz * sz)
-            if al < 1e-9:  # folded back on itself: the aft element's direction
-                sx, sy, sz, ia = E[j, 0, 0], E[j, 1, 0], E[j, 2, 0], 1.0
+            if j == first or j == n:
+                # an end joint's axis is its one element's direction, of unit length: al = 1 exactly, not its
+                # round-off (_joint's al >= 1 kept or dropped the turning axis's torque on the last bit of |e1|)
+                al = ia = 1.0
             else:
-                ia = 1.0 / al
+                al = math.sqrt(sx * sx + sy * sy + sz * sz)
+                if al < 1e-9:  # folded back on itself: the aft element's direction
+                    sx, sy, sz, ia = E[j, 0, 0], E[j, 1, 0], E[j, 2, 0], 1.0
+                else:
+                    ia = 1.0 / al
             cur = _joint(P, gx, gy, gz, wx - vx, wy - vy, wz - vz, sx * ia, sy * ia, sz * ia, al)
             slack[j] = (gx * sx + gy * sy + gz * sz) <= 0.0
         tension[j] = cur[11]

@@ -194,3 +194,37 @@ def test_frame_rotation_series_matches_the_exact_rotation():
         _rotate(E, q, r, 0.02)
         # the body rotation by (0, q, r) dt: round-off on both branches
         np.testing.assert_allclose(E, Rotation.from_rotvec([0.0, 0.02 * q, 0.02 * r]).as_matrix(), atol=1e-15)
+
+
+
+@pytest.mark.parametrize("end", [0, 1])
+def test_an_end_joint_keeps_its_turning_axis_torque_whatever_the_last_bit_of_its_axis(end):
+    """An end joint's axis (the tug's, the barge's) is its one element's direction e1, of unit length. The kernel
+    took the torque of a joint's turning axis only where the axis sum's length al >= 1 (a joint bent past 120
+    degrees goes without it), so at an end joint it kept or dropped that torque on the last bit of |e1|: 10 N m
+    on a 2500 N m moment here, and between two runs differing by round-off a jump of 1e-4 in the elements' rates
+    once |e1| rounded the other way. One step of a 2-element line with 1 cm of gap across the tug's joint (end 0)
+    or the held end's (end 1): the end element's axis 2^-52 short of unit length must give the same rates as the
+    unit one, to the round-off that 2^-52 makes (measured: equal; the dropped torque made 4e-3)."""
+    from seacable.towline import kernel as K
+
+    model = TowlineModel(n_elements=2, length=20.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=1e6,
+                         drag=False, impact=False)  # no barge: the line's aft end held at (0, 0, 1 m) + (x, y)_barge
+    P = model.params
+    E0 = np.zeros((3, 3))
+    K.frame_from_axis(np.array([-1.0, 0.0, 0.0]), E0)
+    gap = 0.01  # ahead of element 0's front / beyond element 1's aft, and as much across [m]
+    tug_p = np.array([[20.0 + gap, gap, 1.0] if end == 0 else [20.0, 0.0, 1.0]] * 2)
+    barge = np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0] if end == 0 else [-gap, -gap, 0.0, 0.0, 0.0, 0.0])
+    rates = []
+    for scale in (1.0, 1.0 - 2.0**-52):
+        R = np.array([[15.0, 0.0, 1.0], [5.0, 0.0, 1.0]])
+        E = np.array([E0, E0])
+        E[end, :, 0] *= scale
+        nu, om = np.zeros((2, 3)), np.zeros((2, 2))
+        assert K.run_steps(1e-4, tug_p, np.zeros((2, 3)), R, E, nu, om, np.zeros(1, np.int64), P, barge.copy(),
+                           np.zeros(1), 0.0, 1.0, True, np.zeros((2, 3)), np.full(2, P[K.P_I]), np.zeros(3),
+                           np.zeros(3, np.bool_)) == 1
+        rates.append(om[end].copy())
+    assert abs(rates[0][1]) > 1e-3  # the pin's moment turns the end element about e3 [rad/s]
+    assert np.max(np.abs(rates[1] - rates[0])) < 1e-12 * np.max(np.abs(rates[0]))
