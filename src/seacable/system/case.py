@@ -137,7 +137,8 @@ class SystemOffsetsAnalysis(_Solve):
         return tuple(2 * math.pi * k / self.n_headings for k in range(self.n_headings))
 
 
-#: The analyses of a system case; a new one (``system_dynamic``) is one more entry.
+# The inputs of ``system_dynamic`` (run by :mod:`seacable.system.dynamics`, which re-exports them): here with the
+# other system analyses, so that the case layer does not import the analysis that runs it.
 _SIX = tuple[float, float, float, float, float, float]
 
 
@@ -271,6 +272,7 @@ class SystemDynamicAnalysis(Model):
         return self
 
 
+#: The analyses of a system case; a new one is one more entry.
 SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis, SystemDynamicAnalysis)
 SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
