@@ -14,11 +14,21 @@ import difflib
 import math
 from typing import Annotated, Any
 
+import yaml
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError, model_validator
 
 from .errors import InputError
 
-__all__ = ["Model", "quantity", "format_validation_error", "input_error", "suggest"]
+__all__ = ["Model", "quantity", "dump_yaml", "format_validation_error", "input_error", "suggest"]
+
+
+def dump_yaml(model: BaseModel) -> str:
+    """The model as YAML text, every value explicit (defaults included): a case as a case file holds it.
+
+    Here, below the results and the case-file reader, so that a result records its case
+    (:func:`seacable.results.make_dataset`) without importing the reader (:func:`seacable.io.dump_case`).
+    """
+    return yaml.safe_dump(model.model_dump(mode="json"), sort_keys=False)
 
 
 def suggest(word: str, choices) -> str:

@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from ._model import dump_yaml
 from ._version import __version__
 from .errors import ConvergenceError, InputError
 
@@ -180,10 +181,8 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         "references": "\n".join(references),
     }
     if case is not None:
-        from .io.case_file import dump_case
-
         attrs["case_name"] = case.name
-        attrs["case"] = dump_case(case)
+        attrs["case"] = dump_yaml(case)
         if case.description:
             attrs["comment"] = case.description
     ds.attrs.update(attrs)

@@ -13,6 +13,7 @@ from typing import Any
 
 import yaml
 
+from .._model import dump_yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 from ..system.case import SystemCase, is_system_data
@@ -178,7 +179,7 @@ def resolve_files(data, folder: Path) -> None:
 
 def dump_case(case: Case | SystemCase) -> str:
     """The case as YAML text, every value explicit (defaults included)."""
-    return yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False)
+    return dump_yaml(case)
 
 
 def case_schema(system: bool = False) -> str:

@@ -174,9 +174,10 @@ def work_estimate(case) -> float:
 
 
 def _seacable_version() -> str:
-    import seacable
+    """The version of seacable where this runs (a Dask worker: :func:`check_scheduler`)."""
+    from .._version import __version__ as version
 
-    return seacable.__version__
+    return version
 
 
 _ADDRESS = re.compile(r"^(?:(?P<scheme>[a-z][a-z0-9+]*)://)?(?P<host>\[[0-9a-fA-F:.]+\]|[A-Za-z0-9_.-]+):"

@@ -32,20 +32,22 @@ new one is one more entry there.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from typing import Annotated, Any, ClassVar, Literal, Union
 
-from pydantic import Field, model_validator
+import numpy as np
+from pydantic import Discriminator, Field, Tag, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest
-from ..case import _STAND_IN, check_unused_inputs
+from ..case import _STAND_IN, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import LineType
-from .dynamics import SystemDynamicAnalysis
+from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
-__all__ = ["SYSTEM_ANALYSES", "SystemAnalysis", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis",
-           "is_system_data"]
+__all__ = ["SYSTEM_ANALYSES", "ExternalForceSeries", "LineFailure", "SystemAnalysis", "SystemCase",
+           "SystemDynamicAnalysis", "SystemOffsetsAnalysis", "SystemStaticAnalysis", "is_system_data"]
 
 
 class _Solve(Model):
@@ -135,7 +137,142 @@ class SystemOffsetsAnalysis(_Solve):
         return tuple(2 * math.pi * k / self.n_headings for k in range(self.n_headings))
 
 
-#: The analyses of a system case; a new one (``system_dynamic``) is one more entry.
+# The inputs of ``system_dynamic`` (run by :mod:`seacable.system.dynamics`, which re-exports them): here with the
+# other system analyses, so that the case layer does not import the analysis that runs it.
+_SIX = tuple[float, float, float, float, float, float]
+
+
+class ExternalForceSeries(Model):
+    """A time series of force and moment on a body's reference point, global axes, linear between rows.
+
+    Either ``file``: a CSV with a header row ``time, fx, fy, fz, mx, my, mz`` (any force column may be
+    left out, '#' comments), relative to the case file; or ``times`` and ``values`` inline. Zero outside
+    the table's time span is not assumed: the table must cover the run.
+    """
+
+    file: str | None = Field(None, description="CSV with columns time, fx, fy, fz, mx, my, mz.")
+    times: list[float] | None = Field(None, description="Times, increasing. [s]")
+    values: list[_SIX] | None = Field(None, description="Force and moment at each time. [N, N m]")
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        if (self.file is None) == (self.times is None):
+            raise ValueError("give either 'file' (a CSV with columns time, fx, fy, fz, mx, my, mz) or 'times' and "
+                             "'values', not both or neither.")
+        if self.times is not None:
+            if self.values is None or len(self.values) != len(self.times):
+                raise ValueError(f"'values' needs one row of six numbers per time ({len(self.times)} times). "
+                                 "Suggested fix: give [fx, fy, fz, mx, my, mz] in N and N m for each time.")
+            if len(self.times) < 2 or np.any(np.diff(self.times) <= 0):
+                raise ValueError("'times' needs at least two strictly increasing times in s.")
+            if not np.all(np.isfinite(self.values)) or not np.all(np.isfinite(self.times)):
+                raise ValueError("'times' and 'values' must hold finite numbers.")
+        return self
+
+    def table(self) -> tuple[np.ndarray, np.ndarray]:
+        """Times (nt,) [s] and forces (nt, 6) [N, N m]."""
+        if self.file is None:
+            return np.asarray(self.times, float), np.asarray(self.values, float)
+        from ..mooring.motion import _read_table
+
+        t = _read_table(Path(self.file), ("time", "fx", "fy", "fz", "mx", "my", "mz"), "force series")
+        return t[:, 0], t[:, 1:]
+
+
+class LineFailure(Model):
+    """A line end that detaches: at ``time``, or when its end element's tension first reaches ``tension``
+    (whichever comes first when both are given)."""
+
+    line: str = Field(min_length=1, description="The line that fails.")
+    end: Literal["a", "b"] = Field(description="The end that detaches: a or b.")
+    time: quantity("s", ge=0) | None = Field(None, description="Time of the failure. [s]")
+    tension: quantity("N", gt=0) | None = Field(None, description="Tension at which the end fails. [N]")
+
+    @model_validator(mode="after")
+    def _when(self):
+        if self.time is None and self.tension is None:
+            raise ValueError(f"failure of line '{self.line}' needs 'time' (s) or 'tension' (N). Suggested fix: "
+                             "give e.g. 'time: 10'.")
+        return self
+
+
+def _motion_type(value) -> str:
+    return value.get("type", "platform") if isinstance(value, dict) else getattr(value, "type", "platform")
+
+
+#: A prescribed body's motion: 'platform' (harmonic or a time series; the default) or 'rao' (RAOs in the waves).
+BodyMotion = Annotated[Union[Annotated[PlatformMotion, Tag("platform")], Annotated[RAOMotion, Tag("rao")]],  # noqa: UP007
+                       Discriminator(_motion_type)]
+
+
+class SystemDynamicAnalysis(Model):
+    """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
+
+    Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force
+    series); prescribed bodies and coupled points follow ``body_motions`` / ``point_motions``; line ends
+    may fail (``failures``). Newmark's average acceleration with Newton iterations on the nodes and
+    bodies together, starting from the static equilibrium (``start: equilibrium``), with the free
+    bodies held at their given positions and released at t = 0 (``start: held``), or from the
+    equilibrium when it is found and held otherwise, with a warning (``start: auto``, what a MoorDyn
+    deck run in time uses: a deck's free bodies are placed where the deck puts them).
+    """
+
+    type: Literal["system_dynamic"] = "system_dynamic"
+    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane seabed)
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves"})
+    duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
+    time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
+    output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
+    n_elements: int | None = Field(None, ge=1, le=100_000,
+                                   description="Elements per line for every line (default: each line's own).")
+    body_motions: dict[str, BodyMotion] = Field(
+        default_factory=dict, description="6-DOF motion of each prescribed body, about its reference point: "
+                                          "'platform' (harmonic or a time series) or 'rao' (its RAOs in the waves).")
+    point_motions: dict[str, Motion] = Field(default_factory=dict, description="Motion of each coupled point.")
+    external_forces: dict[str, ExternalForceSeries] = Field(
+        default_factory=dict, description="External force time series per free body.")
+    failures: list[LineFailure] = Field(default_factory=list, description="Line ends that fail.")
+    damaged_lines: tuple[str, ...] | Literal["most_loaded"] = Field(
+        (), description="Lines left out from the start: the damaged condition (a sweep over [[], [line1]] runs "
+                        "intact and damaged); 'most_loaded': the line of the largest tension in the static "
+                        "equilibrium the run starts from (seacable.system.damaged).")
+    start: Literal["equilibrium", "held", "auto"] = Field(
+        "equilibrium", description="Static start of the whole system, or with free bodies held at their position, "
+                                   "or 'auto': the static start when it converges, else held (with a warning).")
+    release_offsets: dict[str, _SIX] = Field(
+        default_factory=dict, description="Free decay: each named free body held at its equilibrium plus this "
+                                          "offset (x, y, z [m], roll, pitch, yaw [rad]) while the lines settle, "
+                                          "then released at t = 0.")
+    seabed_contact: SeabedContact = Field(default_factory=SeabedContact)
+    damping_ratio: quantity("-", ge=0, le=10) = Field(
+        0.0, description="Axial damping ratio of each element's axial mode (MoorDyn's BA = -ratio). [-]")
+    rayleigh: tuple[float, float] = Field((0.0, 0.0), description="Rayleigh damping of the lines (alpha [1/s], "
+                                                                   "beta [s]).")
+    max_iterations: int = Field(30, ge=2, le=1000, description="Newton iterations per step.")
+    numerical_damping: quantity("-", ge=0, le=0.3) = Field(
+        0.0, description="Newmark's gamma = 1/2 + this, beta = (1 + this)^2 / 4: damps the ringing of stiff "
+                         "modes the step cannot resolve (a snapped line end) at a first-order cost for the "
+                         "resolved ones (a damping ratio of about this times w dt / 2). [-]")
+    tolerance: quantity("-", gt=0, lt=1e-2) = Field(
+        1e-8, description="Newton tolerance of the statics on the force residual, relative. [-]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.output_interval > self.duration:
+            raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
+                             f"({self.duration:g} s).")
+        if not isinstance(self.damaged_lines, str) and len(set(self.damaged_lines)) != len(self.damaged_lines):
+            raise ValueError(f"damaged_lines names a line twice: {list(self.damaged_lines)}. Suggested fix: name each "
+                             "once.")
+        if self.release_offsets and self.start != "equilibrium":
+            raise ValueError("release_offsets start from the equilibrium: they need 'start: equilibrium'.")
+        if any(c < 0 or not math.isfinite(c) for c in self.rayleigh):
+            raise ValueError(f"rayleigh must hold two finite numbers >= 0 (alpha [1/s], beta [s]), got "
+                             f"{self.rayleigh}.")
+        return self
+
+
+#: The analyses of a system case; a new one is one more entry.
 SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis, SystemDynamicAnalysis)
 SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
