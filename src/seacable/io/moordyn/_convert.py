@@ -13,7 +13,6 @@ from ..._model import format_validation_error
 from ...errors import InputError, SeacableWarning
 from ._records import MoorDynInput, MoorDynRod, MoorDynRodType
 
-# --------------------------------------------------------------------------- the deck as a MooringSystem
 
 def _rotation(roll, pitch, yaw) -> np.ndarray:
     """``Rz(yaw) Ry(pitch) Rx(roll)`` (the system model's convention, MoorDyn's and MoorPy's)."""

@@ -11,8 +11,6 @@ from pathlib import Path
 from ..._text import read_text_file
 from ...errors import InputError, SeacableWarning
 
-# --------------------------------------------------------------------------- parsing helpers
-
 _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' before 'RODS'
     ("line_types", ("LINE DICTIONARY", "LINE TYPES")),
     ("rod_types", ("ROD DICTIONARY", "ROD TYPES")),
