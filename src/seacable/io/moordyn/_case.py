@@ -114,8 +114,7 @@ class MoorDynCase:
             What :func:`moordyn_system` refuses; a vessel ``motion`` (a deck with structures takes its
             motions in a YAML system case: ``body_motions``, ``point_motions``).
         """
-        from ...system.case import SystemCase, SystemStaticAnalysis
-        from ...system.dynamics import SystemDynamicAnalysis
+        from ...system.case import SystemCase, SystemDynamicAnalysis, SystemStaticAnalysis
 
         label = self.data.path or "MoorDyn file"
         if self.motion is not None:
@@ -164,8 +163,8 @@ _DECK_MAX_STRAIN = 20.0
 
 
 def _line_failures(md: MoorDynInput) -> list:
-    """The deck's ``FAILURE`` rows as :class:`~seacable.system.dynamics.LineFailure` items (one per line end)."""
-    from ...system.dynamics import LineFailure
+    """The deck's ``FAILURE`` rows as :class:`~seacable.system.case.LineFailure` items (one per line end)."""
+    from ...system.case import LineFailure
 
     out = []
     for f in md.failures:
