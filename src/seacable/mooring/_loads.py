@@ -16,9 +16,10 @@ from numba import njit
 from ..seastate import S_ETAMAX, S_MODE, S_STRETCH, grid_points
 from ._band import _add_block, _add_pair
 from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_loads
-from ._indices import (E_ALPHA, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_RHO, E_SLACKDAMP, E_VDT,
-                       E_WDEPTH, E_WH, P_CDA, P_CDA_AXIAL, P_CLA, V_EAD, V_WC)
-from ._seabed import seabed_contact, seabed_normal
+from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DEPTH, E_DRAGTURN, E_FRAMEX,
+                       E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
+                       E_WH, P_CDA, P_CDA_AXIAL, P_CLA, V_EAD, V_WC)
+from ._seabed import seabed_at
 from ._water import (_drag_tangent, _drag_turn, _dry_fraction, _fluid, _point_drag_split, _surface, _water_local,
                      point_lift)
 
@@ -280,8 +281,13 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
-    seabed_normal(env, nrm)
+    sl = env[E_SLOPE]
+    nrm[0], nrm[1], nrm[2] = -math.sin(sl), 0.0, math.cos(sl)
+    depth = env[E_DEPTH]
+    kb, cb, mu, vf = env[E_KBOT], env[E_CBOT], env[E_MU], env[E_VFRIC]
+    bedfull = env[E_BEDFULL] > 0.0
     alpha = env[E_ALPHA]
+    profile = env[E_BEDTAB] > 0.0
     for i in range(n):
         F[i, 2] -= weight[i]
         qn, qa, ql = 0.5 * rho * pcda[i, P_CDA], 0.5 * rho * pcda[i, P_CDA_AXIAL], 0.5 * rho * pcda[i, P_CLA]
@@ -323,7 +329,58 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                     F[i, r] -= alpha * M[i, r, c] * V[i, c]
             if jac and fidx[i] >= 0:
                 _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
-        seabed_contact(i, X, V, env, bedc, F, band, bw, fidx, cc, nrm, vt, blk, eye)
+        if kb > 0.0 and bedc[i] > 0.0 and (profile or math.isfinite(depth)):
+            if profile:  # the profile's segment under the node: its elevation and normal
+                zb, slope = seabed_at(env, X[i, 0])
+                cs = 1.0 / math.sqrt(1.0 + slope * slope)
+                nrm[0], nrm[2] = -slope * cs, cs
+                pen = (zb - X[i, 2]) * cs
+            else:
+                pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
+            dl = env[E_BEDRAMP]
+            if pen > -dl:
+                # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,
+                # so that Newton does not cycle at lift-off); the damper engages as r = q / (q + dl), or with
+                # ``bedfull`` (MoorDyn's rule: c_b in full on every penetrating node) as the spring's slope
+                # r = dq: c_b in full once pen >= dl, where the spring is k pen, rounded with it below
+                if pen < dl:
+                    q = (pen + dl) ** 2 / (4.0 * dl)
+                    dq = (pen + dl) / (2.0 * dl)
+                else:
+                    q = pen
+                    dq = 1.0
+                # the node's velocity over the seabed (which moves at -frame in a moving frame)
+                g0, g1, g2 = V[i, 0] + env[E_FRAMEX], V[i, 1] + env[E_FRAMEY], V[i, 2] + env[E_FRAMEZ]
+                vn = nrm[0] * g0 + nrm[1] * g1 + nrm[2] * g2
+                if bedfull:
+                    ramp = dq
+                    dramp = 0.5 / dl if pen < dl else 0.0
+                else:
+                    ramp = q / (q + dl)
+                    dramp = dl / (q + dl) ** 2 * dq
+                fn = kb * bedc[i] * q - cb * bedc[i] * ramp * vn
+                for r in range(3):
+                    F[i, r] += fn * nrm[r]
+                    vt[r] = (g0 if r == 0 else g1 if r == 1 else g2) - vn * nrm[r]
+                s = math.sqrt(vt[0] ** 2 + vt[1] ** 2 + vt[2] ** 2 + vf * vf)
+                fr = mu * max(fn, 0.0) / s
+                if fr > 0.0:
+                    for r in range(3):
+                        F[i, r] -= fr * vt[r]
+                if jac and fidx[i] >= 0:
+                    # -dfn/dx = dk n^T (pen = -n . x + ...), -dfn/dv = cb d_n ramp n^T; the friction -mu fn v_t / s
+                    # follows fn (its row: mu v_t / s times fn's derivatives, negated) and v_t
+                    dk = kb * bedc[i] * dq - cb * bedc[i] * vn * dramp
+                    dn = dk + cc * cb * bedc[i] * ramp
+                    mus = mu / s if fr > 0.0 else 0.0
+                    for r in range(3):
+                        for c in range(3):
+                            nn = nrm[r] * nrm[c]
+                            blk[r, c] = dn * nn
+                            if fr > 0.0:
+                                blk[r, c] += cc * fr * ((eye[r, c] - nn) - vt[r] * vt[c] / (s * s)) \
+                                    - mus * vt[r] * dn * nrm[c]
+                    _add_block(band, bw, fidx[i], fidx[i], 1.0, blk)
         if jac and fidx[i] >= 0 and cm != 0.0:
             _add_block(band, bw, fidx[i], fidx[i], cm, M[i])
 

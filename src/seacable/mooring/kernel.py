@@ -63,7 +63,7 @@ a straight line.
 The kernel's parts are private modules, their public names re-exported here: :mod:`._indices` (the layouts
 of ``env``, ``pcda`` and ``visco``), :mod:`._water` (the surface, the water's kinematics, the attachments'
 drag and lift), :mod:`._elements` (tension laws, the viscoelastic and Syrope passes, bending),
-:mod:`._seabed` (the seabed's elevation, a node's contact with it), :mod:`._band` (band storage: blocks and
+:mod:`._seabed` (the seabed's elevation under a node), :mod:`._band` (band storage: blocks and
 LU) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
 integration and the statics.
 """
