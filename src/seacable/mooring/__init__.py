@@ -5,7 +5,9 @@ Modules (imported on demand, so that ``import seacable`` does not load numba):
 ``network``
     Nodes and two-node truss elements as flat arrays, built from a case's line.
 ``kernel``
-    Loads, tangents, the Newmark-Newton step and the static Newton solver (numba).
+    Loads, tangents, the Newmark-Newton step and the static Newton solver (numba); its parts, whose
+    public names it re-exports, in private modules: ``_indices`` (the layouts of its flat arrays),
+    ``_water``, ``_elements``, ``_seabed``, ``_band`` and ``_loads`` (the loads pass).
 ``checks``
     The geometric checks every mooring path makes before it solves (nodes under the seabed, ends
     beyond the lines' reach, a fairlead motion that does either).

@@ -1,0 +1,44 @@
+"""The layouts of the mooring kernel's flat arrays, in one place: the environment vector ``env`` (``E_*``), the
+attachments' hydrodynamics ``pcda`` (``P_*``) and the viscoelastic element table ``visco`` (``V_*``).
+
+Read by the parts of :mod:`seacable.mooring.kernel` and filled by :mod:`seacable.mooring.solver` and the coupled
+system kernel; :mod:`seacable.mooring.kernel` re-exports every name.
+"""
+
+from __future__ import annotations
+
+# Environment vector layout.
+E_RHO, E_G, E_DEPTH, E_SLOPE, E_KBOT, E_CBOT, E_MU, E_VFRIC = 0, 1, 2, 3, 4, 5, 6, 7
+E_WH, E_WT, E_WK, E_WHEAD, E_WPHASE, E_CHEAD, E_ALPHA, E_WDEPTH = 8, 9, 10, 11, 12, 13, 14, 15
+E_BEDRAMP = 16
+E_VDT = 17  # the time step over which the viscoelastic elements' slow stretch advances (inf: statics) [s]
+E_SLACKDAMP = 18  # 1: the axial damper acts in slack elements too (MoorDyn's rule), 0: only in taut ones
+E_BEDFULL = 19  # 1: the seabed damper acts in full wherever the spring is linear (MoorDyn's rule), 0: ramped
+# velocity of the frame the nodes are seen in [m/s]: the water moves past them at (its velocity) - (this), the seabed
+# at -(this); 0 but in the statics of a towed system, whose steady state is a static equilibrium in the frame moving
+# with the vessel
+E_FRAMEX, E_FRAMEY, E_FRAMEZ = 20, 21, 22
+# 1: the Newton matrix holds the drag's change with the elements' direction (:func:`_drag_turn`; a towed line, whose
+# shape the drag sets), 0: not (a mooring line, whose shape its weight and tension set: the terms cost time)
+E_DRAGTURN = 23
+# a seabed profile: its number of points m (0: the plane of E_DEPTH and E_SLOPE); the points follow the vector's
+# ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond)
+E_BEDTAB = 24
+ENV_SIZE = 25
+
+# Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
+# a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift
+# 1/2 rho C_L A (|u|^2 e_z - (u . e_z) u) at the water's velocity u relative to the point (:func:`point_lift`)
+P_CDA, P_CDA_AXIAL, P_CLA = 0, 1, 2
+
+# Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
+# dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the
+# fast damper BA_D [N s], and the slow stretch and its input at the start of the step (Y0, U0) and at the
+# state last evaluated (Y, U) [m]
+V_EAD, V_LM, V_BAD, V_Y0, V_U0, V_Y, V_U = 0, 1, 2, 3, 4, 5, 6
+# and, for an element of a Syrope rope (whose strain-tension table is its original working curve), the working
+# curve's form (0: none, 1: linear, 2: quadratic, 3: exponential) and its parameters k1, k2 [-] (k1 [N] for a
+# linear curve with k1 >= 1), and the largest mean tension so far, Tmax, committed (TM0) and at the state last
+# evaluated (TM) [N] (:func:`syrope_tension`)
+V_WC, V_K1, V_K2, V_TM0, V_TM = 7, 8, 9, 10, 11
+V_SIZE = 12

@@ -1,0 +1,39 @@
+"""The seabed under the mooring line: its elevation and slope, a plane or a profile along X
+(:func:`seabed_at`).
+
+Part of :mod:`seacable.mooring.kernel`, which re-exports the public names.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ._indices import E_BEDTAB, E_DEPTH, E_SLOPE, ENV_SIZE
+
+
+@njit(cache=True)
+def seabed_at(env, x):
+    """Seabed elevation [m] and slope dz/dx [-] at distance ``x`` along X of the profile held in ``env``
+    (``E_BEDTAB`` points; level beyond its ends), or of the plane (``E_DEPTH``, ``E_SLOPE``) without one."""
+    m = int(env[E_BEDTAB])
+    if m == 0:
+        t = math.tan(env[E_SLOPE])
+        return -env[E_DEPTH] + t * x, t
+    x0 = ENV_SIZE
+    z0 = ENV_SIZE + m
+    if x <= env[x0]:
+        return env[z0], 0.0
+    if x >= env[x0 + m - 1]:
+        return env[z0 + m - 1], 0.0
+    lo, hi = 0, m - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if env[x0 + mid] <= x:
+            lo = mid
+        else:
+            hi = mid
+    slope = (env[z0 + hi] - env[z0 + lo]) / (env[x0 + hi] - env[x0 + lo])
+    return env[z0 + lo] + slope * (x - env[x0 + lo]), slope
+
