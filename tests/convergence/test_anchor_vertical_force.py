@@ -13,6 +13,7 @@ the single-line finite elements (``mooring_static``) and in a mooring system's t
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -21,7 +22,8 @@ import yaml
 import seacable as sc
 from seacable.mooring.run import grounded_end_force
 
-EXAMPLE = yaml.safe_load(open(__file__.rsplit("/tests/", 1)[0] + "/examples/oc3_hywind_static.yaml", encoding="utf-8"))
+EXAMPLE = yaml.safe_load((Path(__file__).parents[2] / "examples" / "oc3_hywind_static.yaml").read_text(
+    encoding="utf-8"))
 
 
 def _exact(fairlead_x: float):

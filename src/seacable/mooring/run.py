@@ -28,6 +28,7 @@ __all__ = [
     "contact_length",
     "elevation_variables",
     "grounded_end_force",
+    "height_above_seabed",
     "line_end_forces",
     "network_variables",
     "output_count",
@@ -106,7 +107,7 @@ def _node_tension(net: Network, tension):
     return total / np.maximum(count, 1)
 
 
-def _clearance(water: Water, X):
+def height_above_seabed(water: Water, X):
     """Height of points above the seabed plane, normal to it (negative inside it), (..., n). [m]"""
     sl = water.slope
     return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
@@ -158,7 +159,7 @@ def contact_length(model: MooringModel, X):
     np.add.at(share, net.elements[:, 0], 0.5 * net.length)
     np.add.at(share, net.elements[:, 1], 0.5 * net.length)
     dl = float(model.env[K_BEDRAMP])
-    pen = -_clearance(water, X)
+    pen = -height_above_seabed(water, X)
     touching = pen >= -dl
     kb = water.seabed_stiffness
     if kb > 0:
@@ -260,7 +261,7 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
         # an end resting on the seabed: the seabed carries its half element's weight as far as the line lies
         # there; the line pulls along its end element, its end slope to second order (grounded_end_force)
         for j in (0, 1):
-            grounded = _clearance(model.water, Xs[:, ends[j]]) <= ramp
+            grounded = height_above_seabed(model.water, Xs[:, ends[j]]) <= ramp
             if np.any(grounded):
                 d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
                 norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)

@@ -88,10 +88,10 @@ from .._model import suggest
 from ..case import SeabedContact
 from ..environment import IrregularWaves
 from ..errors import ConvergenceError, InputError, SeacableWarning
+from ..mooring.kernel import E_BEDRAMP as K_BEDRAMP
 from ..mooring.motion import RAOMotion, rotation_matrix, sea_of
 from ..mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
-from ..mooring.kernel import E_BEDRAMP as K_BEDRAMP
-from ..mooring.run import _clearance, elevation_variables, grounded_end_force
+from ..mooring.run import elevation_variables, grounded_end_force, height_above_seabed
 from ..mooring.solver import MooringModel, Water, advance_interval
 from ..mooring.solver import simulate as simulate_lines
 from ..results import make_dataset, var
@@ -1039,7 +1039,7 @@ def _anchor_vertical_force(fe: SystemFE, run: SystemRun) -> np.ndarray:
         half = 0.5 * net.weight_per_length[e] * net.length[e]
         force = pull[:, 2] - half
         if water.depth is not None:
-            grounded = _clearance(water, run.position[:, a]) <= ramp
+            grounded = height_above_seabed(water, run.position[:, a]) <= ramp
             force[grounded] = grounded_end_force(pull[grounded], half, water.slope)[:, 2]
         out[:, j] = force
     return out
