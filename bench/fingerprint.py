@@ -1,6 +1,6 @@
 """Fingerprints of every example's result, to show a refactor changes no result by a single bit (issue 38).
 
-Each case of ``examples/*.yaml`` (and the MoorDyn decks named below) is run through :func:`seacable.run`;
+Each case of ``examples/*.yaml`` (and the MoorDyn decks named below; a case refused is fingerprinted by its message) is run through :func:`seacable.run`;
 every variable and coordinate of its Dataset is hashed (SHA-256 of its dtype, shape and bytes), and so is
 every attribute but the ones that name the run (seacable's version, the time of the run). The hashes are
 written to a JSON file; ``--compare`` prints the variables whose hashes differ between two such files.
@@ -30,8 +30,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 DECKS = [
     # MoorDyn input files (kept in the tests' data, with their provenance there): lines and points, and bodies
-    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_horizontal/moordyn.dat",
     "tests/validation/data/moordyn_decks/r-test/modules/moordyn/5MW_OC4_simple/moordyn.dat",
+    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_float/moordyn.dat",
+    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat",
 ]
 # attributes that say when and by which version a result was made, not what it is
 _RUN_ATTRS = {"seacable_version", "version", "created", "date_created", "history", "run_time", "source"}
@@ -72,13 +73,16 @@ def run_all(only: list[str]) -> dict:
         name = str(path.relative_to(ROOT))
         start = time.perf_counter()
         try:
-            case = seacable.load_case(path)
-        except seacable.SeacableError:  # a sweep file, not a case
-            sweep = seacable.load_sweep(path)
-            ds = seacable.sweep(sweep)
+            try:
+                case = seacable.load_case(path)
+            except seacable.SeacableError:  # a sweep file, not a case
+                ds = seacable.sweep(seacable.load_sweep(path))
+            else:
+                ds = seacable.run(case)
+        except seacable.SeacableError as exc:  # a refusal is a result too: the same message before and after
+            result[name] = {"error": f"{type(exc).__name__}: {exc}"}
         else:
-            ds = seacable.run(case)
-        result[name] = fingerprint(ds)
+            result[name] = fingerprint(ds)
         print(f"{name:70s} {len(result[name]):4d} hashes {time.perf_counter() - start:7.1f} s", flush=True)
     return result
 
