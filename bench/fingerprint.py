@@ -31,8 +31,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DECKS = [
     # MoorDyn input files (kept in the tests' data, with their provenance there): lines and points, and bodies
     "tests/validation/data/moordyn_decks/r-test/modules/moordyn/5MW_OC4_simple/moordyn.dat",
-    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_float/moordyn.dat",
-    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_BodiesAndRods/moordyn.dat",
+    "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_lineFail/moordyn.dat",
 ]
 # attributes that say when and by which version a result was made, not what it is
 _RUN_ATTRS = {"seacable_version", "version", "created", "date_created", "history", "run_time", "source"}
