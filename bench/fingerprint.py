@@ -24,6 +24,7 @@ import argparse
 import hashlib
 import json
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -34,7 +35,8 @@ DECKS = [
     "tests/validation/data/moordyn_decks/r-test/modules/moordyn/md_lineFail/moordyn.dat",
 ]
 # attributes that say when and by which version a result was made, not what it is
-_RUN_ATTRS = {"seacable_version", "version", "created", "date_created", "history", "run_time", "source"}
+_RUN_ATTRS = {"seacable_version", "version", "created", "date_created", "history", "run_time", "source", "wall_time"}
+_RUN_SETTINGS = ("wall_time_s",)  # keys of the ``settings`` attribute (JSON) that time the run
 
 
 def _digest(values) -> str:
@@ -54,6 +56,8 @@ def fingerprint(ds) -> dict[str, str]:
         for key, value in sorted(ds[name].attrs.items()):
             out[f"attr:{name}.{key}"] = hashlib.sha256(repr(value).encode()).hexdigest()[:20]
     for key, value in sorted(ds.attrs.items()):
+        if key == "settings" and isinstance(value, str):
+            value = {k: v for k, v in json.loads(value).items() if k not in _RUN_SETTINGS}
         if key not in _RUN_ATTRS:
             out[f"attr:{key}"] = hashlib.sha256(repr(value).encode()).hexdigest()[:20]
     return out
@@ -74,8 +78,9 @@ def run_all(only: list[str]) -> dict:
         try:
             try:
                 case = seacable.load_case(path)
-            except seacable.SeacableError:  # a sweep file, not a case
-                ds = seacable.sweep(seacable.load_sweep(path))
+            except seacable.SeacableError:  # a sweep file, not a case: its summary is its result
+                with tempfile.TemporaryDirectory() as outdir:
+                    ds = seacable.sweep(seacable.load_sweep(path), outdir).load()
             else:
                 ds = seacable.run(case)
         except seacable.SeacableError as exc:  # a refusal is a result too: the same message before and after
