@@ -122,7 +122,7 @@ def main(repeats: int = 7):
             sc.run(fresh)
             t_first = min(t_first, time.perf_counter() - t0)
         rows.append((label, t_ours, t_run, t_first, t_fd))
-    print(f"\nthrough seacable.run (a system_static case, result Dataset included; targets: run / solve <= 2, "
+    print("\nthrough seacable.run (a system_static case, result Dataset included; targets: run / solve <= 2, "
           "MoorPy FD / run >= 30)")
     print(f"{'system':26s} {'solve [ms]':>11s} {'run [ms]':>9s} {'run/solve':>10s} {'first run [ms]':>15s} "
           f"{'MoorPy FD [ms]':>15s} {'MoorPy/run':>11s}")
