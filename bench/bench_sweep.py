@@ -18,12 +18,21 @@ with its NetCDF) on the running cluster: (wall time x workers - the cases' own t
 the worker included) / cases.
 The issue's target: a speed-up of at least 1.7 on 2 cores.
 
-Run: ``python bench/bench_sweep.py``.
+Whether a sweep of small cases keeps both cores busy (issue 38: a sweep of 10 000 three-line system statics
+saturates both cores): ``python bench/bench_sweep.py saturate [N]`` sweeps examples/spread_mooring.yaml (intact
+and its most loaded line broken) over N values of the buoy's steady load (default 10 000, for minutes: each case
+is two equilibria, its Dataset, its NetCDF file and record; ``saturate 1000`` for a quicker look) on a 2-worker cluster
+started beforehand (its start-up not timed), each case's NetCDF and record written. Printed: the wall time,
+the CPU time of the workers and of this process (the client, which writes the records), and the cores kept
+busy: the workers' CPU time / wall time (2.0: both cores saturated).
+
+Run: ``python bench/bench_sweep.py`` or ``python bench/bench_sweep.py saturate [N]``.
 """
 
 from __future__ import annotations
 
 import os
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -119,5 +128,45 @@ def main() -> None:
     print(f"per-task overhead / laying case time: {per_task / mean_case:.2%}")
 
 
-if __name__ == "__main__":
+SYSTEM = Path(__file__).parents[1] / "examples" / "spread_mooring.yaml"
+
+
+def _cpu() -> float:
+    """This process's CPU time, user and system. [s]"""
+    import resource
+
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def saturate(n: int = 10_000) -> None:
+    """Sweep ``n`` system statics on a running 2-worker cluster: the cores the workers keep busy."""
+    from distributed import Client, LocalCluster
+
+    base = str(SYSTEM)  # a sweep takes a system case as its file
+    loads = list(np.linspace(3e5, 6e5, n))
+    spec = sc.Sweep(base, grid={"bodies.buoy.external_force[0]": loads})
+    with tempfile.TemporaryDirectory() as tmp, LocalCluster(
+            n_workers=WORKERS, threads_per_worker=1, processes=True, dashboard_address=None,
+            silence_logs=40) as cluster, Client(cluster) as client:
+        sc.sweep(sc.Sweep(base, grid={"bodies.buoy.external_force[0]": loads[:2 * WORKERS]}), Path(tmp) / "warm",
+                 scheduler=client)  # the workers import seacable and load the kernels
+        before, cpu, start = client.run(_cpu), _cpu(), time.perf_counter()
+        summary = sc.sweep(spec, Path(tmp) / "run", scheduler=client, write_summary=False)
+        wall, cpu = time.perf_counter() - start, _cpu() - cpu
+        after = client.run(_cpu)
+    workers = sum(after[w] - before[w] for w in after)
+    ok = int((summary.status.values == "done").sum())
+    run_time = float(summary.wall_time.sum())
+    print(f"{SYSTEM.name}: {n} system_static cases ({ok} done) on {WORKERS} workers ({os.cpu_count()} cores)")
+    print(f"  wall {wall:.1f} s, {1e3 * wall / n:.2f} ms per case; the cases' own time {run_time:.1f} s "
+          f"({1e3 * run_time / n:.2f} ms each)")
+    print(f"  CPU: workers {workers:.1f} s, this process (client, records) {cpu:.1f} s")
+    print(f"  cores kept busy by the workers: {workers / wall:.2f} of {WORKERS} "
+          f"({100 * workers / wall / WORKERS:.0f} %); with this process: {(workers + cpu) / wall:.2f}")
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["saturate"]:
+    saturate(int(sys.argv[2]) if len(sys.argv) > 2 else 10_000)
+elif __name__ == "__main__":
     main()

@@ -30,6 +30,13 @@ buoy, clumps and floats    6.24 ms      1.7-2.0 ms    3500-5300 ms    >1700  40 
 =========================  ===========  ============  ==============  =====  =============  =====
 
 Same iterations (5, 6, 19) and the same equilibria as before (the validation suites unchanged).
+
+The same systems through ``seacable.run`` (issue 38): each as a ``system_static`` case (its load the body's
+``external_force``), the whole call timed (checks, solve, profiles and the result Dataset with its
+attributes), best of ``repeats`` after a warm-up on the same case object. Printed: ``run`` against
+``solve_equilibrium`` alone (target: at most 2), and MoorPy's solveEquilibrium + getCoupledStiffness against
+``run`` (target: at least 30). A case run again is stamped with the YAML dumped the first time (the case is
+immutable); ``first run`` is the call on a fresh copy of the case, its YAML dumped too.
 """
 
 from __future__ import annotations
@@ -39,6 +46,8 @@ import time
 
 import numpy as np
 
+import seacable as sc
+from seacable.system.case import SystemCase, SystemStaticAnalysis
 from seacable.system.statics import examples as ex
 from seacable.system.statics import solve_equilibrium
 
@@ -60,6 +69,14 @@ def _best(fn, repeats):
     return best, out
 
 
+def as_case(label, system, env, load) -> SystemCase:
+    """The system as a ``system_static`` case, ``load`` [N, N m] on its body (its ``external_force``)."""
+    name = next(iter(system.bodies))
+    bodies = {**system.bodies, name: system.bodies[name].replace(external_force=tuple(load))}
+    return SystemCase(name=label.split()[0].lower(), environment=env.model_dump(), points=system.points,
+                      bodies=bodies, lines=system.lines, analysis=SystemStaticAnalysis())
+
+
 def main(repeats: int = 7):
     try:
         import moorpy
@@ -67,6 +84,7 @@ def main(repeats: int = 7):
         moorpy = None
     print(f"{'system':26s} {'seacable [ms]':>14s} {'MoorPy FD [ms]':>15s} {'ratio':>7s} "
           f"{'MoorPy A [ms]':>14s} {'ratio':>7s} {'iters':>6s}")
+    rows = []
     for label, (build, load) in CASES.items():
         system, env = build()
         body = next(iter(system.bodies))
@@ -94,6 +112,23 @@ def main(repeats: int = 7):
             assert dev < 1e-6, f"{label}: MoorPy and seacable disagree ({dev:.2g})"
         print(f"{label:26s} {1e3 * t_ours:14.2f} {1e3 * t_fd:15.2f} {t_fd / t_ours:7.1f} "
               f"{1e3 * t_a:14.2f} {t_a / t_ours:7.1f} {eq.iterations:6d}")
+        case = as_case(label, system, env, load)
+        t_run, ds = _best(lambda c=case: sc.run(c), repeats)
+        dev = np.abs(ds["body_x"].values[0, 0] - eq.body_position[0][0])
+        assert dev < 1e-6 * max(1.0, abs(eq.body_position[0][0])), f"{label}: run and solve_equilibrium disagree"
+        t_first = np.inf
+        for fresh in [case.model_copy(deep=True) for _ in range(repeats)]:  # copies made outside the timing
+            t0 = time.perf_counter()
+            sc.run(fresh)
+            t_first = min(t_first, time.perf_counter() - t0)
+        rows.append((label, t_ours, t_run, t_first, t_fd))
+    print("\nthrough seacable.run (a system_static case, result Dataset included; targets: run / solve <= 2, "
+          "MoorPy FD / run >= 30)")
+    print(f"{'system':26s} {'solve [ms]':>11s} {'run [ms]':>9s} {'run/solve':>10s} {'first run [ms]':>15s} "
+          f"{'MoorPy FD [ms]':>15s} {'MoorPy/run':>11s}")
+    for label, t_ours, t_run, t_first, t_fd in rows:
+        print(f"{label:26s} {1e3 * t_ours:11.2f} {1e3 * t_run:9.2f} {t_run / t_ours:10.2f} {1e3 * t_first:15.2f} "
+              f"{1e3 * t_fd:15.2f} {t_fd / t_run:11.1f}")
 
 
 if __name__ == "__main__":

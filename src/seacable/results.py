@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import tempfile
+import weakref
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -70,7 +71,12 @@ def var(dims: str | Iterable[str], values, units: str, long_name: str, **attrs) 
         A human-readable name, used as the axis label of plots.
     """
     dims = (dims,) if isinstance(dims, str) else tuple(dims)
-    return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name, **attrs})
+    array = np.asarray(values)
+    # names (an object array of str) taken as they are: xarray's check of object arrays for dates (a round trip
+    # through pandas, 20 times the cost of the variable) leaves them unchanged
+    names = (type(array) is np.ndarray and array.dtype.kind == "O" and array.ndim > 0
+             and all(type(item) is str for item in array.flat))
+    return xr.Variable(dims, array, attrs={"units": units, "long_name": long_name, **attrs}, fastpath=names)
 
 
 def _attr_value(value: Any):
@@ -99,12 +105,14 @@ class FiniteGuard:
 
     def __init__(self):
         self.seen: set[str] = set()  # variables finite somewhere in an earlier output
+        self.checked: set[str] = set()  # variables of the blocks checked so far
 
     def check(self, data_vars: dict, coords: dict) -> None:
         """Check one block of outputs (or a whole result); raise on the first non-finite value found."""
         time = coords.get("time")
         if time is None:
             return
+        self.checked.update(data_vars)
         t = np.asarray(getattr(time, "values", time), float).ravel()
         if t.size and not np.all(np.isfinite(t)):
             k = int(np.flatnonzero(~np.isfinite(t))[0])
@@ -145,7 +153,8 @@ class FiniteGuard:
 
 def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], *,
                  analysis: str, case=None, settings: dict | None = None,
-                 references: Iterable[str] = (), title: str | None = None) -> xr.Dataset:
+                 references: Iterable[str] = (), title: str | None = None,
+                 guard: FiniteGuard | None = None) -> xr.Dataset:
     """Assemble a result Dataset and stamp its provenance.
 
     Parameters
@@ -163,13 +172,19 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         Citations of the methods used.
     title
         A title for plots; the case name by default.
+    guard
+        The :class:`FiniteGuard` that already checked the variables along ``time`` block by block (a streamed
+        run's sink); the variables it has not seen are checked with it. None: every variable is checked here.
 
     Raises
     ------
     ConvergenceError
         A time-domain variable holding a non-finite value that is not padding (:class:`FiniteGuard`).
     """
-    FiniteGuard().check(data_vars, coords)  # no non-finite result written silently
+    if guard is None:  # no non-finite result written silently
+        FiniteGuard().check(data_vars, coords)
+    else:  # the blocks were checked as they came: the variables added at the end only
+        guard.check({k: v for k, v in data_vars.items() if k not in guard.checked}, coords)
     ds = xr.Dataset(data_vars=data_vars, coords=coords)
     attrs = {
         "title": title or (case.name if case is not None else analysis),
@@ -182,7 +197,7 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     }
     if case is not None:
         attrs["case_name"] = case.name
-        attrs["case"] = dump_yaml(case)
+        attrs["case"] = case_yaml(case)
         if case.description:
             attrs["comment"] = case.description
     ds.attrs.update(attrs)
@@ -190,12 +205,35 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     return ds
 
 
+#: id of a case -> its YAML text, while the case lives (:func:`case_yaml`)
+_CASE_YAML: dict[int, str] = {}
+
+
+def case_yaml(case) -> str:
+    """The YAML text of a case (:func:`seacable._model.dump_yaml`), dumped once per case object.
+
+    Cases are immutable (frozen models), so a case run again (a convergence study, a benchmark, the same
+    case under other solver options) is stamped with the text dumped the first time; the text is
+    forgotten when the case is.
+    """
+    key = id(case)
+    text = _CASE_YAML.get(key)
+    if text is None:
+        text = dump_yaml(case)
+        try:
+            weakref.finalize(case, _CASE_YAML.pop, key, None)
+        except TypeError:  # not weakly referenceable: not kept
+            return text
+        _CASE_YAML[key] = text
+    return text
+
+
 def check_schema(ds: xr.Dataset) -> None:
     """Raise if a variable or coordinate lacks ``units`` or ``long_name``.
 
     A guard on seacable's own results, so that every output file is labelled.
     """
-    for name, item in {**ds.data_vars, **ds.coords}.items():
+    for name, item in ds.variables.items():  # the Variables themselves: no DataArray built for each
         missing = [k for k in ("units", "long_name") if k not in item.attrs]
         if missing:
             raise AssertionError(f"result variable '{name}' lacks {missing}")

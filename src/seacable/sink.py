@@ -97,7 +97,7 @@ class MemorySink:
             return v if self.filled == self.n_time else v.isel(cut, missing_dims="ignore")
 
         ds = make_dataset({**{k: done(v) for k, v in self._vars.items()}, **data},
-                          {k: done(v) for k, v in self._coords.items()}, **provenance)
+                          {k: done(v) for k, v in self._coords.items()}, guard=self._guard, **provenance)
         ds.attrs.update(attrs or {})
         return ds
 

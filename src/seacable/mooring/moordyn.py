@@ -195,7 +195,13 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
     return line
 
 
-def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | str:
+def _line_views(model: MooringModel) -> list[MooringModel]:
+    """Every line of the network as its own network (:func:`_line_view`), built once for a run's checks and
+    outputs (each output block refreshes their sea: :func:`_variables`)."""
+    return [_line_view(model, li) for li in range(len(model.network.line_nodes))]
+
+
+def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None) -> float | str:
     """Compare the network's static end tensions with the exact elastic catenaries of the same deck; warn if they differ.
 
     The lumped-mass network has the deck's ``NumSegs`` per line. Where a line bends more sharply than its segments
@@ -218,6 +224,8 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | s
         Its network (:func:`moordyn_model`).
     position : ndarray
         The network's static node positions (``static_equilibrium(model).position``). [m]
+    views : list of MooringModel, optional
+        Each line of the network as its own network (:func:`_line_views`), when the caller has them.
 
     Returns
     -------
@@ -253,7 +261,7 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | s
         if getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg:
             skipped.append(line.id)
             continue
-        ends = line_end_forces(_line_view(model, k), X[net.line_nodes[k]])
+        ends = line_end_forces(_line_view(model, k) if views is None else views[k], X[net.line_nodes[k]])
         w = (lt.mass_per_length - rho * math.pi * lt.diameter**2 / 4) * g
         floor = max(1e-3 * max(cat), 1e-9)
         # an end the catenary leaves slack (under 1e-3 of the line's wet weight) is not compared: the network's
@@ -289,9 +297,9 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position) -> float | s
     return worst
 
 
-def _dataset(model: MooringModel, X, T, S, *, title, settings):
+def _dataset(model: MooringModel, X, T, S, *, title, settings, views=None):
     """The static result of a deck (:func:`_variables`)."""
-    data, coords = _variables(model, X, T, S)
+    data, coords = _variables(model, X, T, S, views=views)
     ds = make_dataset(data, coords, **_provenance(model, title, settings, static=True))
     ds.attrs.update(_depth(model))
     return ds
@@ -308,13 +316,14 @@ def _provenance(model: MooringModel, title, settings, static=False) -> dict:
 
 
 def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, acceleration=None, kinematic_nodes=None,
-               extra=None):
+               extra=None, views=None):
     """Variables per line, a ``line`` dimension (NaN padded) when there are several lines; the points' forces.
     Returns the variables and the coordinates.
 
     ``velocity`` and ``acceleration`` (time-domain runs) let each line's end tensions include its half end
     element's water loads and inertia (:func:`seacable.mooring.run.network_variables`); ``kinematic_nodes``
-    the nodes they hold (None: all); ``extra`` more variables."""
+    the nodes they hold (None: all); ``extra`` more variables; ``views`` the lines as networks (:func:`_line_views`;
+    None: built here)."""
     net = model.network
     n_lines = len(net.line_nodes)
     # several lines: each variable in one (line, ...) array, NaN-padded to the longest line, filled line by line
@@ -323,7 +332,11 @@ def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, accele
              "element": int(np.max(np.bincount(net.element_line, minlength=n_lines)))}
     filled = {}
     for li in range(n_lines):
-        view = _line_view(model, li)
+        if views is None:
+            view = _line_view(model, li)
+        else:  # built before the run: the run's sea, as _line_view gives it
+            view = views[li]
+            view.sea, view._sea_spec = model.sea, model._sea_spec
         nodes = net.line_nodes[li]
         els = np.flatnonzero(net.element_line == li)
         dims = ("node",) if time is None else ("time", "node")
@@ -461,9 +474,11 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
     st = static_equilibrium(model, tol=tolerance)
     title = md.title or str(md.path)
     settings = {"source": str(md.path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
-    checked = catenary_check(md, model, st.position)
+    views = _line_views(model)
+    checked = catenary_check(md, model, st.position, views)
     if case.duration is None:
-        ds = _dataset(model, st.position, st.tension, st.support, title=title, settings=settings)
+        ds = _dataset(model, st.position, st.tension, st.support, title=title, settings=settings,
+                      views=views)
         ds.attrs["catenary_difference"] = checked
         return _written(ds, out)
     fn = bind(case.motion, model.network.channel_positions(st.position), case.duration)
@@ -472,7 +487,8 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
         def outputs(block: MooringRun):
             sink.append(*_variables(model, block.position, block.tension, block.support, block.time,
                                     velocity=block.velocity, acceleration=block.acceleration,
-                                    kinematic_nodes=block.kinematic_nodes, extra=slack_variables(block)))
+                                    kinematic_nodes=block.kinematic_nodes, extra=slack_variables(block),
+                                    views=views))
 
         run: MooringRun = simulate(model, fn, case.duration, case.time_step, case.output_interval,
                                    initial=st.position, tol=tolerance * 10, progress=progress,
