@@ -78,8 +78,8 @@ from functools import lru_cache
 from itertools import pairwise
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..errors import InputError, SeacableWarning
 from . import lateral
 from .kernel import current_at

@@ -47,8 +47,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..mooring.kernel import (
     E_VDT,
     GRID_HEADER,

@@ -4,7 +4,9 @@ Paper 003 tows "a simple drag body": a box barge (L_pp 50 m, beam 15 m, draft 0.
 block coefficient 0.9, yaw radius of gyration 0.25 L) at its bow. This module gives
 its inertia, its hull forces and its 3-DOF equations of motion in the horizontal
 plane, as plain (vectorised) functions of a :class:`Barge`, and the same in a flat
-float array with an ``@njit`` function for the compiled towline kernel.
+float array (:func:`barge_parameters`) for the compiled towline kernel, whose ``@njit``
+functions are in :mod:`seacable.towline.barge_kernel` (so that a case naming a barge
+does not import numba).
 
 Frame: the barge frame has its origin at midship on the waterline, x forward, y to
 port, z up (so that with heading psi measured from global +X towards +Y, the usual
@@ -78,7 +80,6 @@ import warnings
 from typing import Any
 
 import numpy as np
-from numba import njit
 from pydantic import Field, model_validator
 
 from .._model import Model, quantity
@@ -104,10 +105,8 @@ __all__ = [
     "B_XUU",
     "B_YCF",
     "Barge",
-    "barge_accelerations",
     "barge_equations",
     "barge_hull_forces",
-    "barge_hull_forces_flat",
     "barge_mass",
     "barge_parameters",
     "barge_resistance",
@@ -449,42 +448,3 @@ def barge_parameters(barge: Barge, water_density: float = _RHO, n_strips: int = 
     p[B_N_STRIPS], p[B_RHO], p[B_CX], p[B_CY] = n, rho, b.surge_drag, b.cross_flow_drag
     p[B_LIFT] = _lift_per_metre(b, rho)
     return p
-
-
-@njit(cache=True)
-def barge_hull_forces_flat(params, u, v, r):
-    """Hull forces (X [N], Y [N], N [N m]) from the flat ``params``; as :func:`barge_hull_forces`."""
-    L = params[B_LENGTH]
-    n = int(params[B_N_STRIPS])
-    dx = L / n
-    Y = 0.0
-    N = 0.0
-    for k in range(n):
-        x = -0.5 * L + (k + 0.5) * dx
-        w = v + r * x
-        f = abs(w) * w * dx
-        Y += f
-        N += f * x
-    k_cf = params[B_YCF]
-    x_t = -0.5 * L if u > 0.0 else (0.5 * L if u < 0.0 else 0.0)
-    lift = -params[B_LIFT] * abs(u) * (v + r * x_t)
-    return -params[B_XUU] * abs(u) * u, -k_cf * Y + lift, -k_cf * N + x_t * lift
-
-
-@njit(cache=True)
-def barge_accelerations(params, u, v, r, X_ext, Y_ext, N_ext):
-    """(du/dt [m/s^2], dv/dt [m/s^2], dr/dt [rad/s^2]) from the flat ``params``; as :func:`barge_equations`.
-
-    ``u, v`` are the surge and sway velocities relative to the water and ``r`` the yaw rate,
-    all in the barge frame (x forward, y to port); ``X_ext, Y_ext`` [N] and ``N_ext`` [N m, about
-    midship] the external loads, e.g. a towline force (Fx, Fy) at the tow point gives
-    ``N_ext = params[B_TOW_X] * Fy``.
-    """
-    X, Y, N = barge_hull_forces_flat(params, u, v, r)
-    M11 = params[B_M11]
-    M22 = params[B_M22]
-    M66 = params[B_M66]
-    du = (M22 * v * r + X + X_ext) / M11
-    dv = (-M11 * u * r + Y + Y_ext) / M22
-    dr = (-(M22 - M11) * u * v + N + N_ext) / M66
-    return du, dv, dr
