@@ -98,7 +98,7 @@ import math
 import numpy as np
 
 from .._jit import njit
-from .barge_kernel import barge_accelerations
+from .barge import barge_accelerations
 
 __all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points", "run_steps"]
 

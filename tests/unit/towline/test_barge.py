@@ -32,13 +32,14 @@ from seacable.towline.barge import (
     B_XUU,
     B_YCF,
     Barge,
+    barge_accelerations,
     barge_equations,
     barge_hull_forces,
+    barge_hull_forces_flat,
     barge_mass,
     barge_parameters,
     barge_resistance,
 )
-from seacable.towline.barge_kernel import barge_accelerations, barge_hull_forces_flat
 
 RHO = 1025.0
 PAPER003 = {"length": 50.0, "beam": 15.0, "draft": 0.5, "block_coefficient": 0.9}
