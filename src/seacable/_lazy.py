@@ -64,6 +64,6 @@ def lazy_names(package: str, names: Mapping[str, Iterable[str]],
     def __dir__() -> list[str]:
         return sorted(set(vars(sys.modules[package])) | set(where) | subs)
 
-    __getattr__.table = dict(where)  # for the test that the TYPE_CHECKING block says the same
-    __getattr__.submodules = subs
+    __getattr__.table = dict(where)  # type: ignore[attr-defined]  (the test: TYPE_CHECKING says the same)
+    __getattr__.submodules = subs  # type: ignore[attr-defined]
     return __getattr__, __dir__
