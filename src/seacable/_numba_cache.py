@@ -22,7 +22,8 @@ Only functions defined in seacable's own files are affected: numba's other funct
 numba's usual cache locations. The hook is a cache locator placed first in numba's list
 (``numba.core.caching.CacheImpl._locator_classes``, the same in numba 0.59 and 0.68). numba
 picks a function's locator when the function is decorated, so this must run before any kernel
-module is imported, which is why ``seacable/__init__.py`` imports this module first. An
+module is imported, which is why every kernel module takes its ``njit`` from :mod:`seacable._jit`,
+which imports this module first (``import seacable`` alone imports neither, nor numba). An
 explicit ``NUMBA_CACHE_LOCATOR_CLASSES`` (recent numba) replaces that list and wins.
 
 Why not set ``numba.config.CACHE_DIR`` instead: it is read at decoration too, but numba's

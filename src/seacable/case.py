@@ -43,7 +43,7 @@ from .line import Lifting, Line, LineType
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
 from .towed.vessel import VesselPath
-from .towline.barge import Barge
+from .towline.barge_model import Barge
 
 __all__ = [
     "Analysis",

@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 import xarray as xr
-from numba import njit
 
+from ._jit import njit
 from .results import var
 
 __all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads", "snap_rows"]

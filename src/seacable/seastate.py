@@ -54,8 +54,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 
+from ._jit import njit
 from .waves import STANDARD_GRAVITY, wave_number
 
 __all__ = [

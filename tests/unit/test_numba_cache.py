@@ -135,18 +135,19 @@ def test_this_process_caches_in_the_keyed_folder():
 # ---------------------------------------------------------------------------------------------
 # end to end, in subprocesses
 
+# two kernel modules as seacable's are written: their njit from seacable._jit, which keys the cache first
 PROBE_A = """
-import numba
 from seacable import _probe_b
+from seacable._jit import njit
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def f():
     return _probe_b.g()
 """
 PROBE_B = """
-import numba
+from seacable._jit import njit
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def g():
     return {value}
 """

@@ -54,8 +54,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..towed.linalg import block_thomas
 
 __all__ = [

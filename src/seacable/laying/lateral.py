@@ -58,8 +58,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 from scipy.special import hyp0f1
+
+from .._jit import njit
 
 __all__ = ["span_transfer", "spread_kernel", "straight_span_transfer"]
 

@@ -80,8 +80,8 @@ import warnings
 from itertools import pairwise
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..errors import InputError, SeacableWarning
 from .span import (  # noqa: F401  (the station table's columns: public here too)
     N_STATION_PROPS,

@@ -9,8 +9,8 @@ import math
 from functools import lru_cache
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from . import lateral
 from .span import S_CDN, S_CDT, S_COMPLIANCE, S_D, S_W, _span, _zajac_angle, straight_direction
 

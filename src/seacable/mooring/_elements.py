@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ._band import _add_block
 from ._indices import V_BAD, V_EAD, V_K1, V_K2, V_LM, V_TM, V_TM0, V_U, V_U0, V_WC, V_Y, V_Y0
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..seastate import S_ETAMAX, S_MODE, S_STRETCH, grid_points
 from ._band import _add_block, _add_pair
 from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_loads

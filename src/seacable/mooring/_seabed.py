@@ -8,8 +8,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
+from .._jit import njit
 from ._indices import E_BEDTAB, E_DEPTH, E_SLOPE, ENV_SIZE
 
 

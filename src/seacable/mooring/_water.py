@@ -10,10 +10,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
+from .._waves_kernel import airy_linear
 from ..seastate import S_MODE, S_STRETCH, grid_eta, grid_point
-from ..waves import airy_linear
 from ._band import _add_block
 from ._indices import E_CHEAD, E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT
 

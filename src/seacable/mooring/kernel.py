@@ -73,8 +73,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..seastate import GRID_HEADER, S_MODE
 from ._band import band_factor, band_solve, lu_solve
 from ._elements import (bending_loads, syrope_loads, syrope_tension, table_tension, viscoelastic_loads,

@@ -10,8 +10,8 @@ the caller can redo the rest of that interval at a smaller step (:func:`seacable
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from . import kernel as K
 
 __all__ = ["evaluate_states", "record_output", "run_outputs"]

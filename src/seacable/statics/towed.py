@@ -49,8 +49,6 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 
 from .. import _validate as v
 from ..errors import ConvergenceError, InputError, NoSolutionError, SeacableWarning
@@ -204,6 +202,8 @@ def _steady(pieces, joints, tail, s_out, rtol, what, flow=None):
     and above it. ``what``: the
     lower end's body, for the slack message. Returns a :class:`TowedCableSteady` (``critical_angle`` of the
     lowest piece) and the indices of the points just above each joint in its arrays."""
+    from scipy.integrate import solve_ivp
+
     total = sum(p.length for p in pieces)
     scale = max(sum(abs(p.w) * p.length for p in pieces), 1e-300)
     t_small = 1e-9 * scale
@@ -460,6 +460,8 @@ def towed_line_steady(line, speed, *, water_density=1025.0, gravity=9.80665, bod
         forces act above the lower end (joints and attachments, in order up the line), ``(s, index)``: its arc
         length and the index of the array entry just above it.
     """
+    from scipy.optimize import brentq
+
     from ..line import Line
 
     if not isinstance(line, Line):

@@ -1,23 +1,26 @@
 """Mooring systems: points, rigid bodies and lines; their statics, stiffness and dynamics.
 
-The case classes (:mod:`.case`) are loaded on first use, so that importing the data model
+The names are imported on first use (:mod:`seacable._lazy`): importing the data model
 (:mod:`.model`) from a lower layer (the statics, the MoorDyn reader) never imports the case
-layer (:mod:`seacable.case`) with it.
+layer (:mod:`seacable.case`) with it, and reading a case does not import the statics' compiled
+kernels.
 """
 
-from .model import Body, MooringSystem, SystemLine, SystemPoint
-from .statics import SystemEquilibrium, check_statics, solve_equilibrium, system_stiffness
+from typing import TYPE_CHECKING
+
+from .._lazy import lazy_names
+
+if TYPE_CHECKING:
+    from .case import SYSTEM_ANALYSES, SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
+    from .model import Body, MooringSystem, SystemLine, SystemPoint
+    from .statics import SystemEquilibrium, check_statics, solve_equilibrium, system_stiffness
 
 __all__ = ["SYSTEM_ANALYSES", "Body", "MooringSystem", "SystemCase", "SystemEquilibrium", "SystemLine",
            "SystemOffsetsAnalysis", "SystemPoint", "SystemStaticAnalysis", "check_statics", "solve_equilibrium",
            "system_stiffness"]
 
-_CASE_NAMES = ("SYSTEM_ANALYSES", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis")
-
-
-def __getattr__(name):
-    if name in _CASE_NAMES:
-        from . import case
-
-        return getattr(case, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__, __dir__ = lazy_names(__name__, {
+    ".case": ("SYSTEM_ANALYSES", "SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis"),
+    ".model": ("Body", "MooringSystem", "SystemLine", "SystemPoint"),
+    ".statics": ("SystemEquilibrium", "check_statics", "solve_equilibrium", "system_stiffness"),
+})

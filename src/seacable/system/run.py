@@ -29,7 +29,6 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..errors import ConvergenceError, InputError, NoSolutionError
-from ..results import make_dataset, var
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
 from .damaged import is_most_loaded, line_tensions, most_loaded_line
 from .model import MooringSystem
@@ -175,8 +174,8 @@ def _check_condition(case, system: MooringSystem, removed, mode: str) -> None:
 def _fe_checks(system: MooringSystem, environment, where: str) -> None:
     """The finite-element statics' checks without solving: what they cannot model (a pinned body), and the
     finite-element system's geometry (line ends below the seabed, lines that cannot reach: as the dynamics)."""
-    from .statics.fe import check_fe
     from .dynamics import build_system_fe
+    from .statics.fe import check_fe
 
     try:
         check_fe(system, environment, where)
@@ -285,8 +284,8 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     last offsets, the last converged offsets and ``fix``. ``statics``: 'catenary' or 'finite_element'
     (:func:`seacable.system.statics.fe.fe_equilibrium`, its stiffness at the last step when ``stiffness``).
     """
-    from .statics.fe import fe_equilibrium
     from .statics import solve_equilibrium
+    from .statics.fe import fe_equilibrium
 
     a = case.analysis
     eq, last_label = initial, None
@@ -466,6 +465,8 @@ def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
 
 
 def _coords(setup: SystemSetup) -> dict:
+    from ..results import var  # xarray: imported when a result is built, not when a case is checked
+
     case = setup.case
     return {
         "condition": var("condition", np.array(setup.conditions, dtype=object), "1",
@@ -491,6 +492,8 @@ def _line_present(setup: SystemSetup) -> np.ndarray:
 
 
 def _variables(values: dict, lead: tuple[str, ...], table: dict) -> dict:
+    from ..results import var
+
     return {name: var(lead + table[name][0], values[name], table[name][1], table[name][2])
             for name in table if name in values}
 
@@ -523,6 +526,8 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     ``statics`` overrides the analysis option ``statics`` (:func:`statics_used`): ``auto``, ``catenary``,
     ``finite_element``.
     """
+    from ..results import make_dataset, var
+
     a: SystemStaticAnalysis = case.analysis
     setup = prepare_system_static(case, statics)
     records, profiles, coupled, iterations, residuals = [], [], [], [], []
@@ -646,6 +651,8 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
         ``restoring_force`` is the horizontal force of the lines on the loaded body against the load's
         heading; ``offset`` the loaded body's offset along the heading from its given position.
     """
+    from ..results import make_dataset, var
+
     a: SystemOffsetsAnalysis = case.analysis
     setup = prepare_system_offsets(case, statics)
     loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)

@@ -59,7 +59,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+
+from .._jit import njit
 
 __all__ = ["NV", "PARAMETERS", "ORDER", "c_terms", "g_terms", "box_assemble", "frame",
            "current_velocity", "integrate_positions"]

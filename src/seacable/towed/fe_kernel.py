@@ -23,8 +23,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..mooring import kernel as K
 
 __all__ = ["refresh_node", "towed_outputs", "towed_steps"]

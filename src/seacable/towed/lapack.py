@@ -19,10 +19,11 @@ import math
 import numpy as np
 from llvmlite import binding as _llvm
 from llvmlite import ir as _ir
-from numba import njit, types
+from numba import types
 from numba.core import cgutils
 from numba.extending import get_cython_function_address, intrinsic
 
+from .._jit import njit
 from .linalg import _EPS, SINGULAR_RTOL, _condition_check, _first_nonfinite_block, _shapes_ok
 
 __all__ = ["solve_dense", "solve_banded", "assemble_dense", "banded_bandwidths"]

@@ -37,8 +37,8 @@ References
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from ..errors import InputError, NoSolutionError
 
 __all__ = [

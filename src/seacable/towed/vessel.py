@@ -59,7 +59,6 @@ from typing import Annotated, Any, Literal, Union
 
 import numpy as np
 from pydantic import Field, TypeAdapter, ValidationError, model_validator
-from scipy.interpolate import CubicSpline
 
 from .._model import UNION_TAGS, Model, _problems, input_error, quantity
 from .._ramp import smooth_ramp
@@ -520,6 +519,8 @@ def _splines(resolved: Path, kind: str):
 
 @functools.lru_cache(maxsize=32)
 def _table_spline(resolved: str, kind: str, stamp: tuple):  # stamp: part of the cache key
+    from scipy.interpolate import CubicSpline
+
     time, values = _load_table(resolved, kind)
     spline = CubicSpline(time, values, axis=0)
     if kind == "position":

@@ -96,8 +96,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from .._jit import njit
 from .barge import barge_accelerations
 
 __all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points", "run_steps"]

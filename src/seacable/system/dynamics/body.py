@@ -13,8 +13,8 @@ angles' generalised forces ``E^T M``. The Newton matrix leaves out the change of
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
+from ..._jit import njit
 from ...mooring.kernel import GRID_HEADER, _fluid
 from ..statics.kernel import _skew
 from .frames import body_rotation, global_angles, rotation

@@ -30,8 +30,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 
+from ..._jit import njit
 from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads, predict_nodes
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent

@@ -18,8 +18,8 @@ import math
 import re
 
 import numpy as np
-from numba import njit
 
+from ..._jit import njit
 from ...errors import NoSolutionError
 from ...statics.catenary import CatenaryResult, _guess, catenary
 
