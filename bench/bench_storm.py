@@ -44,7 +44,7 @@ def main(durations):
     SS.SeaGrid.__init__ = timed(SS.SeaGrid.__init__, grid)
     SS.SeaGrid.window = timed(SS.SeaGrid.window, grid)
     S.simulate = timed(S.simulate, loop)
-    import seacable.system.dynamics as D
+    import seacable.system.dynamics.loop as D
 
     D.simulate_lines = S.simulate
     print(f"{'simulated [s]':>14} {'wall [s]':>9} {'sim/wall':>9} {'sea grid [s]':>13} {'time loop [s]':>14}")

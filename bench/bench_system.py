@@ -1,7 +1,7 @@
 """Speed of the mooring-system statics (equilibrium + coupled stiffness) against MoorPy 1.3.0.
 
 Run: ``python bench/bench_system.py [repeats]``. On the three reference systems of
-``seacable.system._stat_examples`` (OC3-Hywind spar, OC4-DeepCwind semi, a buoy on lines with
+``seacable.system.statics.examples`` (OC3-Hywind spar, OC4-DeepCwind semi, a buoy on lines with
 clumps, floats and a junction point), each under a constant external load, times
 
 * seacable: ``solve_equilibrium`` (which returns the analytic coupled stiffness with it), from the
@@ -39,7 +39,7 @@ import time
 
 import numpy as np
 
-from seacable.system import _stat_examples as ex
+from seacable.system.statics import examples as ex
 from seacable.system.statics import solve_equilibrium
 
 CASES = {

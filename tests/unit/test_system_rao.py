@@ -15,6 +15,7 @@ import seacable as sc
 import seacable.system.dynamics as D
 from seacable.errors import InputError, SeacableWarning
 from seacable.raos import rao_motion, read_rao_csv
+from seacable.system.dynamics.loop import _simulate_lines
 
 from .test_rao_motion import _csv
 
@@ -34,7 +35,7 @@ def _spread(analysis, waves, kind="prescribed"):
 
 def test_a_lines_only_system_runs_as_in_the_coupled_solver(monkeypatch):
     """A prescribed buoy (surge, heave, pitch at 10 s) in calm water: the mooring model's compiled loop (what
-    runs a system in an irregular sea, :func:`seacable.system.dynamics._simulate_lines`) and the coupled system
+    runs a system in an irregular sea, :func:`seacable.system.dynamics.loop._simulate_lines`) and the coupled system
     solver take the same Newmark steps of the same equations: node positions agree to 1e-6 m and tensions to
     1e-6 of the mean fairlead tension over 50 steps (each step converged to the Newton tolerance: measured
     1.4e-8 m; the chains' axial ringing amplifies such differences over longer runs)."""
@@ -45,7 +46,7 @@ def test_a_lines_only_system_runs_as_in_the_coupled_solver(monkeypatch):
     coupled = sc.run(case)
     a = case.analysis
     start = D.start_state(setup.start_fe, a, case.environment)
-    run = D._simulate_lines(setup.fe, start, a.duration, a.time_step, a.output_interval, analysis=a,
+    run = _simulate_lines(setup.fe, start, a.duration, a.time_step, a.output_interval, analysis=a,
                             tol=min(a.tolerance * 10, 1e-4), max_iter=a.max_iterations)
     fast = D.system_result(setup.fe, run, case=case)
     for k in "xyz":

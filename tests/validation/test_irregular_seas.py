@@ -568,7 +568,7 @@ def test_the_mooring_system_model_takes_an_irregular_sea_to_its_lines():
     """The system model's water carries the irregular sea (its components: m0 = Hs^2 / 16 exactly) for a system
     whose lines are all it solves for; one with free bodies refuses it by name (tests/unit/test_system_rao.py)."""
     from seacable.environment import SystemEnvironment
-    from seacable.system.dynamics import _water
+    from seacable.system.dynamics.fe import _water
 
     env = SystemEnvironment(depth=100.0, waves={"spectrum": "jonswap", "hs": 2.0, "tp": 8.0})
     water = _water(env, None)
@@ -651,7 +651,7 @@ def _oc3_storm(monkeypatch, duration=1.0):
     (the sea's grid prepared for the run), the motion of its fairleads and the static start."""
     from seacable.io.case_file import load_case
     from seacable.mooring import solver
-    from seacable.system import dynamics
+    from seacable.system.dynamics import loop as dynamics
 
     got = {}
 

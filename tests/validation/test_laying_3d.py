@@ -303,9 +303,9 @@ def test_laid_cable_that_never_stops_sliding_is_fixed_with_a_warning(monkeypatch
     """The side slope steeper than the friction angle: the laid cable keeps sliding, and the step would grow with
     it. Past the limit of nodes kept free to slide (lowered here to 40, so twice the 116 suspended nodes rule) the
     oldest is fixed, and the run says why once, with the friction and a fix."""
-    from seacable.laying import solver
+    from seacable.laying import events
 
-    monkeypatch.setattr(solver, "_MAX_SLIDING", 40)
+    monkeypatch.setattr(events, "_MAX_SLIDING", 40)
     case = _on_side_slope(_case(route=STRAIGHT, duration=600.0, friction=0.1))
     with pytest.warns(sc.SeacableWarning, match=r"still sliding .*seabed.friction = 0.1\) does not hold .*Suggested fix"):
         ds = sc.run(case)

@@ -29,10 +29,10 @@ from scipy.special import ellipk
 from seacable.environment import SystemEnvironment
 from seacable.line import Line, LineType
 from seacable.mooring.motion import rotation_matrix
-from seacable.system import _dyn_kernel as DK
-from seacable.system._stat_model import euler, euler_rate_map, rotation
 from seacable.system.dynamics import SystemDynamicAnalysis, build_system_fe, simulate_system, static_system
+from seacable.system.dynamics import frames as DF
 from seacable.system.model import MooringSystem
+from seacable.system.statics.model import euler, euler_rate_map, rotation
 
 HERE = Path(__file__).parent
 G = 9.81
@@ -55,37 +55,37 @@ def test_recharting_keeps_the_rotation_its_velocity_and_acceleration(seed):
     angles')`` are those before to round-off (1e-13 of their size); the global angles it records give the
     same ``R``. Re-charting without re-expressing the rates leaves ``w`` wrong by its full size."""
     rng = np.random.default_rng(seed)
-    fr = np.zeros(DK.F_SIZE)
+    fr = np.zeros(DF.F_SIZE)
     if seed % 2:  # a body charted before
-        fr[DK.F_ON] = 1.0
-        fr[DK.F_R0:DK.F_R0 + 9] = rotation(rng.uniform(-3, 3, 3)).ravel()
-        fr[DK.F_GLOB:DK.F_GLOB + 3] = euler(fr[DK.F_R0:DK.F_R0 + 9].reshape(3, 3))
+        fr[DF.F_ON] = 1.0
+        fr[DF.F_R0:DF.F_R0 + 9] = rotation(rng.uniform(-3, 3, 3)).ravel()
+        fr[DF.F_GLOB:DF.F_GLOB + 3] = euler(fr[DF.F_R0:DF.F_R0 + 9].reshape(3, 3))
     q = np.r_[rng.normal(size=3), rng.uniform(-1, 1), rng.choice([-1, 1]) * rng.uniform(1.05, 1.5), rng.uniform(-3, 3)]
     qd, qdd = rng.normal(size=6), rng.normal(size=6)
 
     def state(q, qd, qdd, fr):
         R, E, ed = np.empty((3, 3)), np.empty((3, 3)), np.empty(3)
-        DK.body_rotation(q, fr, R)
-        DK.angular_map(q, qd, E, ed, fr)
+        DF.body_rotation(q, fr, R)
+        DF.angular_map(q, qd, E, ed, fr)
         return R, E @ qd[3:], E @ qdd[3:] + ed
 
     R, w, al = state(q, qd, qdd, fr)
     q1, qd1, qdd1, fr1 = q.copy(), qd.copy(), qdd.copy(), fr.copy()
-    assert DK.rechart(q1, qd1, qdd1, fr1, DK.CHART_LIMIT)
+    assert DF.rechart(q1, qd1, qdd1, fr1, DF.CHART_LIMIT)
     assert np.all(q1[3:] == 0.0) and np.all(q1[:3] == q[:3]) and np.all(qd1[:3] == qd[:3])
     R1, w1, al1 = state(q1, qd1, qdd1, fr1)
     np.testing.assert_allclose(R1, R, atol=1e-13)
     np.testing.assert_allclose(w1, w, atol=1e-13 * np.linalg.norm(w))
     np.testing.assert_allclose(al1, al, atol=1e-13 * (np.linalg.norm(al) + np.linalg.norm(w) ** 2))
-    np.testing.assert_allclose(rotation(fr1[DK.F_GLOB:DK.F_GLOB + 3]), R, atol=1e-13)
+    np.testing.assert_allclose(rotation(fr1[DF.F_GLOB:DF.F_GLOB + 3]), R, atol=1e-13)
     # not re-expressed: the old chart's rates read in the new one
     _, w_bad, _ = state(q1, qd, qdd, fr1)
     assert np.linalg.norm(w_bad - w) > 0.1 * np.linalg.norm(w)
     # below the limit nothing changes
     q2 = q.copy()
-    q2[4] = 0.99 * DK.CHART_LIMIT
+    q2[4] = 0.99 * DF.CHART_LIMIT
     fr2 = fr.copy()
-    assert not DK.rechart(q2, qd.copy(), qdd.copy(), fr2, DK.CHART_LIMIT) and np.all(fr2 == fr)
+    assert not DF.rechart(q2, qd.copy(), qdd.copy(), fr2, DF.CHART_LIMIT) and np.all(fr2 == fr)
 
 
 # ------------------------------------------------------------------------------------------ the pendulum
@@ -173,7 +173,7 @@ def test_a_rigid_pendulum_swings_through_the_horizontal_at_its_closed_form_perio
     and 3.7e-6. Without charts the near-singular period is 5.8e-4 off; re-charting without re-expressing
     the rates puts energy errors of 2e-2 and a larger swing. Newton takes 4.3 to 4.5 iterations a step and
     no step is halved (asserted: < 5, none); without the velocity part of the angular acceleration in a
-    re-charted body's Newton matrix (:func:`~seacable.system._dyn_kernel.rate_tangent`) the swing 0.1 rad
+    re-charted body's Newton matrix (:func:`~seacable.system.dynamics.frames.rate_tangent`) the swing 0.1 rad
     off takes 7.5 and halves 206 steps at dt = 0.01 s (a 10 m rod's spin inertia is 1/300 of its swing's)."""
     closed = 4 * math.sqrt(I_PIN / (MASS * G * ARM)) * ellipk(math.sin(THETA0 / 2) ** 2)
     errors = {}

@@ -5,7 +5,7 @@ References
 - M. Hall et al., MoorPy 1.3.0 (NREL): ``System.solveEquilibrium``, ``System.getCoupledStiffnessA``
   (``moorpy/system.py``), ``Body.getForces``/``getStiffnessA`` (``moorpy/body.py``). Run side by side
   here on the same systems, built from seacable's own split into sub-lines
-  (``seacable.system._stat_examples.to_moorpy``): free bodies map to MoorPy bodies with the metacentre
+  (``seacable.system.statics.examples.to_moorpy``): free bodies map to MoorPy bodies with the metacentre
   ``rM = r_CB + (0, 0, I/V)``, attachments to free MoorPy points with the same net weight.
 - J. Jonkman, "Definition of the Floating System for Phase IV of OC3", NREL/TP-500-47535, 2010,
   eq. (5-3) (linearised mooring stiffness of the three lines, delta connection left out; the
@@ -23,7 +23,7 @@ import pytest
 from seacable.environment import Environment, Seabed
 from seacable.line import Line
 from seacable.statics.catenary import catenary
-from seacable.system import _stat_examples as ex
+from seacable.system.statics import examples as ex
 from seacable.system.model import MooringSystem, SystemLine, SystemPoint
 from seacable.system.statics import solve_equilibrium
 

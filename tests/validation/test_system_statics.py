@@ -17,10 +17,11 @@ from seacable.environment import Current, Environment
 from seacable.errors import ConvergenceError, InputError, SeacableWarning
 from seacable.line import Line
 from seacable.statics.catenary import catenary
-from seacable.system import _stat_examples as ex
-from seacable.system._stat_model import euler, rotation
 from seacable.system.model import MooringSystem, SystemLine, SystemPoint
-from seacable.system.statics import _rotvec, solve_equilibrium, system_stiffness
+from seacable.system.statics import examples as ex
+from seacable.system.statics import solve_equilibrium, system_stiffness
+from seacable.system.statics.model import euler, rotation
+from seacable.system.statics.problem import _rotvec
 
 
 def _line_load_on_body(eq, body):
@@ -316,7 +317,7 @@ def test_a_line_sagging_into_the_seabed_lands_there(monkeypatch):
     point, which lands: by symmetry each half is the touchdown catenary from the seabed to a point 10 m up
     and 100 m across, 150 m long (seacable's single-line catenary; 1e-7: the Newton tolerance is 1e-8 of
     the force scale). Without the split (no rounds) the statics warn that the line passes the seabed."""
-    from seacable.system import statics
+    from seacable.system.statics import solve as statics
 
     env = Environment(depth=100.0)
     system = MooringSystem(
@@ -359,7 +360,7 @@ def test_newton_jacobian_equals_central_differences_with_friction(build):
     # including the anchor-end terms of grounded sub-lines with Coulomb friction
     # (dH_A = dH_F + mu dV_F) at a free point resting on the seabed, against central
     # differences of the residual (steps 1e-5 m / 1e-7 rad, catenaries to round-off): 1e-6.
-    from seacable.system.statics import _Problem
+    from seacable.system.statics.problem import _Problem
 
     system, env = build()
     ext = {b: np.array([2e4, 1e4, 0, 0, 0, 1e3]) for b in system.bodies}

@@ -1,4 +1,4 @@
-"""The finite-element statics of a mooring system (seacable.system._stat_fe): the fallback of
+"""The finite-element statics of a mooring system (seacable.system.statics.fe): the fallback of
 ``system_static`` for a current or a sloping seabed.
 
 Asserted:
@@ -28,8 +28,8 @@ import yaml
 import seacable as sc
 from seacable.environment import Current
 from seacable.io import parse_case
-from seacable.system._stat_fe import fe_equilibrium
-from seacable.system._stat_model import rotation
+from seacable.system.statics.fe import fe_equilibrium
+from seacable.system.statics.model import rotation
 from seacable.system.run import run_system_static
 from seacable.system.statics import solve_equilibrium
 

@@ -16,7 +16,7 @@ import pytest
 
 from seacable.environment import Environment
 from seacable.line import Line
-from seacable.system import _stat_examples as ex
+from seacable.system.statics import examples as ex
 from seacable.system.model import Body, MooringSystem, SystemLine, SystemPoint
 from seacable.system.statics import solve_equilibrium
 

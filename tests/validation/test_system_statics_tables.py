@@ -30,8 +30,8 @@ from seacable.mooring.network import network_from_line
 from seacable.mooring.run import line_end_forces
 from seacable.mooring.solver import MooringModel, Water, static_equilibrium
 from seacable.statics.catenary import CatenaryProfile
-from seacable.system import _stat_examples as ex
-from seacable.system._stat_cat import sub_profile
+from seacable.system.statics import examples as ex
+from seacable.system.statics.catenary import sub_profile
 from seacable.system.model import MooringSystem, SystemLine, SystemPoint
 from seacable.system.statics import solve_equilibrium
 

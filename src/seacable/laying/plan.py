@@ -67,6 +67,9 @@ References
 .. [1] Zajac, E. E., 1957. Dynamics and kinematics of the laying and recovery of submarine cable.
    Bell System Technical Journal 36(5), 1129-1207.
 .. [2] Paper 001 (seeds/001), section 2, eq. (1)-(11).
+
+The span's steady state (the RK4 integration, compiled) is in :mod:`.span`, the spread of the route's turns
+over the span (:mod:`.lateral`'s kernels) in :mod:`.spread`; this module builds the lay table.
 """
 
 from __future__ import annotations
@@ -74,224 +77,34 @@ from __future__ import annotations
 import math
 import time as _time
 import warnings
-from functools import lru_cache
 from itertools import pairwise
 
 import numpy as np
 from numba import njit
 
 from ..errors import InputError, SeacableWarning
-from . import lateral
-from .kernel import current_at
+from .span import (  # noqa: F401  (the station table's columns: public here too)
+    N_STATION_PROPS,
+    S_CDN,
+    S_CDT,
+    S_COMPLIANCE,
+    S_D,
+    S_MEFF,
+    S_MT,
+    S_W,
+    _pay_out_time,
+    _span,
+    _straight_layback,
+    solve_spans,
+    straight_direction,
+)
+from .spread import _Spread, catenary_profile, clear_spread_cache, span_spread  # noqa: F401  (public here too)
 
 __all__ = ["LayPlan", "catenary_profile", "plan_lay", "solve_spans", "span_spread", "steady_turn",
            "straight_direction"]
 
-# columns of the per-station property table
-S_W, S_D, S_CDN, S_CDT, S_MEFF, S_COMPLIANCE, S_MT = range(7)
-N_STATION_PROPS = 7
-_STEPS = 80          # RK4 steps over the straight cable's length at most (in a turn at 2 m/s the cut is then 1.5 %
-                     # long, and 0.1 % with 400 steps, at 3 times the planner's time)
-_MAX_STEP = 50.0     # m, longest RK4 step
+
 _SWING_AFTER = 8     # outer iterations after which a station whose span still changes is held (and flagged)
-
-
-@njit(cache=True)
-def straight_direction(w, kn, vs, c1, c2):
-    """Unit tangent (up, towards the ship) of a straight cable under zero tension.
-
-    Derivation: on a straight cable of direction ``t`` the tension has no normal component, so the
-    normal drag balances the normal weight: ``k_n |u_n| u_n = w (e_z - (e_z . t) t)``, where
-    ``u_n = (c - V_s e_1)_n = -W_n`` (the payout moves the material along ``t`` and drops out).
-    Write ``t = (cos(alpha) h, sin(alpha))`` with ``h`` a horizontal unit vector. The horizontal part
-    of the balance, ``-(W - (W.t) t)_h = lambda (e_z - sin(alpha) t)_h = -lambda sin(alpha) cos(alpha) h``,
-    leaves ``W`` parallel to ``h``; the vertical part then gives ``lambda = |W| tan(alpha) > 0`` only
-    for ``h = +W/|W|`` (the cable rises towards where the ship moves through the water), and
-    ``|u_n| = |W| sin(alpha)``, so ``k_n |W|^2 sin^2(alpha) = w cos(alpha)``: Zajac's angle with the
-    relative speed ``|W|``. Its root: ``cos(alpha) = 2 q / (w + sqrt(w^2 + 4 q^2))``, ``q = k_n |W|^2``.
-
-    Parameters: weight ``w`` [N/m], ``k_n = 1/2 rho C_dn d`` [kg/m^2], ship speed ``vs`` along e_1 and
-    the current ``(c1, c2)`` in the ship's frame [m/s]. Returns ``(t1, t2, t3)``.
-    """
-    w1, w2 = vs - c1, -c2
-    speed = math.sqrt(w1 * w1 + w2 * w2)
-    if speed < 1e-12:
-        return 0.0, 0.0, 1.0
-    q = kn * speed * speed
-    ca = 2.0 * q / (w + math.sqrt(w * w + 4.0 * q * q))
-    sa = math.sqrt(max(1.0 - ca * ca, 0.0))
-    return ca * w1 / speed, ca * w2 / speed, sa
-
-
-@njit(cache=True)
-def _rhs(y, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, out):
-    """d/ds of (r1, r2, r3, t1, t2, t3, T); returns the normal-force scale |df/dt| for the step control.
-
-    The frame turns at ``om`` about the vertical through ``(0, vs/om)`` (``om = 0``: it moves at ``vs`` along e1),
-    so the frame point at ``r`` moves at ``(vs - om r2, om r1, 0)``; a material point moves at that minus
-    ``vc t`` and accelerates at the centripetal ``om^2 ((0, vs/om) - r)``, Coriolis ``2 om e3 x (-vc t)`` and
-    ``vc^2 dt/ds`` (the last in the effective tension).
-    """
-    w, d, cdn, cdt, meff, comp, mt = p[S_W], p[S_D], p[S_CDN], p[S_CDT], p[S_MEFF], p[S_COMPLIANCE], p[S_MT]
-    kn = 0.5 * rho * cdn * d
-    kt = 0.5 * rho * cdt * math.pi * d
-    t1, t2, t3, T = y[3], y[4], y[5], y[6]
-    c = current_at(-h + y[2], depths, speeds)
-    u1 = c * cos_c - (vs - om * y[1] - vc * t1)
-    u2 = c * sin_c - (om * y[0] - vc * t2)
-    u3 = vc * t3
-    ut = u1 * t1 + u2 * t2 + u3 * t3
-    n1, n2, n3 = u1 - ut * t1, u2 - ut * t2, u3 - ut * t3
-    un = math.sqrt(n1 * n1 + n2 * n2 + n3 * n3)
-    f1 = kn * un * n1 + kt * abs(ut) * ut * t1
-    f2 = kn * un * n2 + kt * abs(ut) * ut * t2
-    f3 = -w + kn * un * n3 + kt * abs(ut) * ut * t3
-    if om != 0.0:
-        # the inertia of the turn: -(m + m_a) a_n - (m + m_at) a_t
-        a1 = -om * om * y[0] + 2.0 * om * vc * t2
-        a2 = om * vs - om * om * y[1] - 2.0 * om * vc * t1
-        at = a1 * t1 + a2 * t2
-        f1 -= meff * (a1 - at * t1) + mt * at * t1
-        f2 -= meff * (a2 - at * t2) + mt * at * t2
-        f3 -= -meff * at * t3 + mt * at * t3
-    ft = f1 * t1 + f2 * t2 + f3 * t3
-    teff = T - meff * vc * vc
-    if teff == 0.0:                       # (a frozen step, whose direction is not integrated)
-        teff = 1e-300
-    stretch = 1.0 + T * comp
-    out[0], out[1], out[2] = stretch * t1, stretch * t2, stretch * t3
-    out[3] = -(f1 - ft * t1) / teff
-    out[4] = -(f2 - ft * t2) / teff
-    out[5] = -(f3 - ft * t3) / teff
-    out[6] = -ft
-    return w + 2.0 * kn * (un * un + ut * ut) + 2.0 * kt * ut * ut
-
-
-@njit(cache=True)
-def _span(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, p, out, rec):
-    """One suspended span from the touchdown (depth ``h``) up to the surface; fills ``out`` with
-    (ship - touchdown along e_1, along e_2, suspended length, top tension, entry angle); NaN if the
-    cable does not reach the surface. ``rec`` (m, 4), if it has rows, takes the profile (arc length, tension,
-    t_1, t_3) at the start and after each step; returns the number of rows written.
-
-    The tangent relaxes to the straight cable's direction over the length ``ell = (T - (m + m_a) V_c^2) /
-    |df/dt|`` (the effective tension over the normal force's gradient). Where ``ell`` is shorter than
-    half the step ``ds`` (1/80 of the straight cable's length, at most 50 m) the tangent is taken there (:func:`straight_direction`,
-    exact in a uniform current, where one step reaches the surface: the forces are constant along a
-    straight cable) and only the tension and the position advance; beyond, RK4 with the
-    step ``min(ds, ell)``, inside its stability bound. A bend at the touchdown shorter than half a
-    step (a light bottom tension under strong drag) is not resolved.
-    """
-    w = p[S_W]
-    kn = 0.5 * rho * p[S_CDN] * p[S_D]
-    y = np.zeros(7)
-    y[6] = t0
-    c = current_at(-h, depths, speeds)
-    y[3], y[4], y[5] = straight_direction(w, kn, vs, c * cos_c, c * sin_c)
-    # the step: 1/80 of the straight cable's length from the seabed to the surface
-    ds_max = min(h / max(y[5], 0.05) / _STEPS, _MAX_STEP)
-    if t0 > 0.0:
-        y[3], y[4], y[5] = math.cos(beta), 0.0, math.sin(beta)
-    k1, k2, k3, k4, tmp = np.empty(7), np.empty(7), np.empty(7), np.empty(7), np.empty(7)
-    s = 0.0
-    meff_v2 = p[S_MEFF] * vc * vc
-    uniform = depths.size == 1 and om == 0.0
-    n_rec = 0
-    if rec.shape[0] > 0:
-        rec[0, 0], rec[0, 1], rec[0, 2], rec[0, 3] = 0.0, y[6], y[3], y[5]
-        n_rec = 1
-    for _ in range(100000):
-        if y[2] >= h:
-            break
-        scale = _rhs(y, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k1)
-        relax = (y[6] - meff_v2) / scale      # length over which the tangent relaxes to its equilibrium [m]
-        frozen = relax < 0.5 * ds_max
-        if frozen:
-            # shorter than the step: the tangent is the straight cable's (exact in a uniform current); the
-            # tension and the position advance along it
-            ds = ds_max
-            if uniform and k1[2] > 0.0:
-                ds = (h - y[2]) / k1[2]      # straight, with forces constant along it: one step to the surface
-            for j in range(3, 6):
-                k1[j] = 0.0
-            for j in range(7):
-                tmp[j] = y[j] + ds * k1[j]
-        else:
-            ds = min(ds_max, relax)
-            for j in range(7):
-                tmp[j] = y[j] + 0.5 * ds * k1[j]
-            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k2)
-            for j in range(7):
-                tmp[j] = y[j] + 0.5 * ds * k2[j]
-            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k3)
-            for j in range(7):
-                tmp[j] = y[j] + ds * k3[j]
-            _rhs(tmp, h, vs, om, vc, cos_c, sin_c, depths, speeds, rho, p, k4)
-            for j in range(7):
-                tmp[j] = y[j] + ds / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j])
-        if tmp[2] >= h:                       # the surface within the step: linear back to it
-            f = (h - y[2]) / (tmp[2] - y[2])
-            for j in range(7):
-                tmp[j] = y[j] + f * (tmp[j] - y[j])
-            ds *= f
-        norm = math.sqrt(tmp[3] * tmp[3] + tmp[4] * tmp[4] + tmp[5] * tmp[5])
-        tmp[3] /= norm
-        tmp[4] /= norm
-        tmp[5] /= norm
-        if frozen:
-            c = current_at(-h + tmp[2], depths, speeds)
-            tmp[3], tmp[4], tmp[5] = straight_direction(w, kn, vs - om * tmp[1], c * cos_c, c * sin_c - om * tmp[0])
-        for j in range(7):
-            y[j] = tmp[j]
-        s += ds
-        if n_rec < rec.shape[0]:
-            rec[n_rec, 0], rec[n_rec, 1], rec[n_rec, 2], rec[n_rec, 3] = s, y[6], y[3], y[5]
-            n_rec += 1
-        if y[2] < -h:                         # turned down: no span reaches the surface
-            out[:] = np.nan
-            return n_rec
-    if y[2] < h:
-        out[:] = np.nan
-        return n_rec
-    out[0], out[1], out[2], out[3] = y[0], y[1], s, y[6]
-    out[4] = math.asin(min(max(y[5], -1.0), 1.0))
-    return n_rec
-
-
-@njit(cache=True)
-def _pay_out_time(h, vs, props, rho):
-    """Time to pay out the straight span in still water, ``h / (V_s sin(alpha))``, at each station. [s]"""
-    out = np.empty(h.size)
-    for i in range(h.size):
-        p = props[i]
-        sin_a = straight_direction(p[S_W], 0.5 * rho * p[S_CDN] * p[S_D], vs[i], 0.0, 0.0)[2]
-        out[i] = h[i] / (vs[i] * max(sin_a, 1e-3))
-    return out
-
-
-def _zajac_angle(vs, props, rho) -> tuple[np.ndarray, np.ndarray]:
-    """``(cos, sin)`` of Zajac's angle in still water at the speeds ``vs``, for the stations' cables
-    (:func:`straight_direction`, vectorised)."""
-    q = 0.5 * rho * props[:, S_CDN] * props[:, S_D] * vs * vs
-    w = props[:, S_W]
-    ca = 2.0 * q / (w + np.sqrt(w * w + 4.0 * q * q))
-    return ca, np.sqrt(np.maximum(1.0 - ca * ca, 1e-300))
-
-
-def _straight_layback(h, vs, props, rho) -> np.ndarray:
-    """The straight span's layback in still water, ``h cot(alpha)`` (Zajac's angle at ``vs``). [m]"""
-    ca, sa = _zajac_angle(vs, props, rho)
-    return h * ca / sa
-
-
-@njit(cache=True)
-def solve_spans(h, beta, vs, om, vc, cos_c, sin_c, t0, depths, speeds, rho, props, active, out):
-    """:func:`_span` for the stations with ``active`` set; ``out`` is (n, 5)."""
-    none = np.empty((0, 4))
-    for i in range(h.size):
-        if active[i]:
-            _span(h[i], beta[i], vs[i], om[i], vc[i], cos_c[i], sin_c[i], t0[i], depths, speeds, rho, props[i], out[i],
-                  none)
 
 
 class LayPlan:
@@ -582,255 +395,6 @@ def _vertex_turns(route):
     """KPs of the route's inner vertices and the change of heading at each (+ to port). [m], [rad]"""
     keep = route.vertex_turn != 0.0
     return route.kp[1:-1][keep], route.vertex_turn[keep]
-
-
-# the spread kernels' grid (in laybacks, :func:`.lateral.spread_kernel`) and the steps of their cache: the span's
-# angle [deg] and, under a bottom tension, the log of T_0 / (w h)
-_SPREAD_EXTENT, _SPREAD_SAMPLES = (-1.5, 10.5), 1024
-_ANGLE_STEP, _TENSION_STEP = 0.5, 0.1
-_CATENARY_NODES = 51       # the catenary's samples in the lateral balance's finite differences (g_2 to 1e-3)
-
-
-@lru_cache(maxsize=4096)
-def _straight_kernel(angle_level, tangential_level):
-    """The spread kernel of Zajac's straight span (no bottom tension), in laybacks: ``(K l, int K)`` on the common
-    grid. Its shape depends on the angle ``alpha`` and the tangential drag's share ``eps`` of ``w sin(alpha)``
-    only: ``G = exp(i k l) / 0F1(1 / (cos(alpha) D); i k l / (cos(alpha) D))``, ``cos(alpha) D = (1 - eps)
-    sin^2(alpha)`` (:func:`.lateral.straight_span_transfer` with Zajac's ``w / (k_n V^2) = sin^2 / cos``)."""
-    alpha = math.radians(angle_level * _ANGLE_STEP)
-    ca, sa = math.cos(alpha), math.sin(alpha)
-    # the span of unit layback at unit speed with k_n = 1, so w = sin^2 / cos (Zajac)
-    w = sa * sa / ca
-
-    def transfer(k):
-        return lateral.straight_span_transfer(k, angle=alpha, suspended_length=1.0 / ca, speed=1.0, weight=w, kn=1.0,
-                                              tension_gradient=(1.0 - 0.01 * tangential_level) * w * sa)
-
-    _, kernel, integral, _ = lateral.spread_kernel(transfer, 1.0, extent=_SPREAD_EXTENT, samples=_SPREAD_SAMPLES)
-    return kernel, integral
-
-
-def span_spread(props, depth, ship_speed, *, water_density, slack=None, bottom_tension=None,
-                extent=_SPREAD_EXTENT, samples=_SPREAD_SAMPLES):
-    """How a station's span spreads a change of the route's heading: the kernel of its linearised lateral balance.
-
-    The span is the steady lay in still water on a straight track over a flat seabed: Zajac's straight span without
-    bottom tension (the closed form, :func:`.lateral.straight_span_transfer`), the catenary with drag under one
-    (:func:`_span`'s profile and :func:`.lateral.span_transfer`). See :mod:`.lateral` for the model.
-
-    Parameters
-    ----------
-    props : (N_STATION_PROPS,) array
-        The cable (``S_*`` columns).
-    depth, ship_speed : float
-        Water depth [m] and ship speed over the ground [m/s].
-    water_density : float
-        [kg/m^3]
-    slack, bottom_tension : float
-        The target: one of the two ([-] or [N]).
-    extent, samples
-        The kernel's range in laybacks and the transform's points (:func:`.lateral.spread_kernel`).
-
-    Returns
-    -------
-    dict or None
-        ``x`` (the touchdown's KP minus the change of heading's) [m], ``kernel`` [1/m], ``integral`` [-], ``g2``
-        (the steady turn's cut on a circle of radius R is ``g2 / R``) [m^2], ``layback`` [m]; None if no span reaches
-        the surface.
-    """
-    p = np.asarray(props, float)
-    w, d = p[S_W], p[S_D]
-    kn, kt = 0.5 * water_density * p[S_CDN] * d, 0.5 * water_density * p[S_CDT] * math.pi * d
-    if not bottom_tension:
-        ca, _, sa = straight_direction(w, kn, ship_speed, 0.0, 0.0)
-        ut = (1.0 + (slack or 0.0)) * ship_speed - ship_speed * ca     # the water along the cable [m/s]
-        layback = depth * ca / sa
-
-        def transfer(k):
-            return lateral.straight_span_transfer(k, angle=math.atan2(sa, ca), suspended_length=depth / sa,
-                                                  speed=ship_speed, weight=w, kn=kn,
-                                                  tension_gradient=w * sa - kt * abs(ut) * ut)
-    else:
-        profile = catenary_profile(p, depth, ship_speed, bottom_tension, water_density=water_density)
-        if profile is None:
-            return None
-        s, tension, sin_a, cos_a, layback = profile
-
-        def transfer(k):
-            return lateral.span_transfer(k, s, tension, sin_a, cos_a, speed=ship_speed, weight=w, kn=kn,
-                                         layback=layback)
-
-    x, kernel, integral, g2 = lateral.spread_kernel(transfer, layback, extent=extent, samples=samples)
-    return {"x": x, "kernel": kernel, "integral": integral, "g2": g2, "layback": layback}
-
-
-def catenary_profile(props, depth, ship_speed, bottom_tension, *, water_density, nodes=_CATENARY_NODES):
-    """The steady lay's span under a bottom tension (the catenary with drag, :func:`_span`, in still water on a
-    straight track over a flat seabed) at ``nodes`` equally spaced points from the touchdown: arc length [m],
-    tension [N], sine and cosine of the angle to the horizontal [-], and the layback [m]; None if the span does not
-    reach the surface."""
-    p = np.asarray(props, float)
-    out, rec = np.empty(5), np.empty((4000, 4))
-    zero = np.zeros(1)
-    payout = ship_speed / (1.0 + bottom_tension * p[S_COMPLIANCE])
-    m = _span(depth, 0.0, ship_speed, 0.0, payout, 1.0, 0.0, bottom_tension, zero, zero, water_density, p, out, rec)
-    if not np.isfinite(out[0]) or m >= rec.shape[0]:
-        return None
-    s = np.linspace(0.0, out[2], nodes)
-    r = rec[:m]
-    t1, t3 = np.interp(s, r[:, 0], r[:, 2]), np.interp(s, r[:, 0], r[:, 3])
-    norm = np.hypot(t1, t3)
-    return s, np.interp(s, r[:, 0], r[:, 1]), t3 / norm, t1 / norm, float(out[0])
-
-
-@lru_cache(maxsize=4096)
-def _catenary_kernel(angle_level, tension_level, props, water_density):
-    """The spread kernel of the catenary with drag under a bottom tension, in laybacks ``(K l, int K)``, and its
-    layback over its depth: :func:`span_spread` at the speed whose Zajac angle is the level's and the depth where
-    ``T_0 / (w h)`` is; its shape, in laybacks, depends on those two numbers (and, by under 1 %, on the payout's
-    inertia, the stretch and the tangential drag)."""
-    p = np.array(props)
-    w, kn = p[S_W], 0.5 * water_density * p[S_CDN] * p[S_D]
-    alpha = math.radians(angle_level * _ANGLE_STEP)
-    speed = math.sqrt(w * math.cos(alpha) / (kn * math.sin(alpha) ** 2))
-    depth = 100.0
-    spread = span_spread(p, depth, speed, water_density=water_density,
-                         bottom_tension=math.exp(tension_level * _TENSION_STEP) * w * depth, extent=_SPREAD_EXTENT,
-                         samples=_SPREAD_SAMPLES)
-    if spread is None:
-        return None
-    return spread["kernel"] * spread["layback"], spread["integral"], spread["layback"] / depth
-
-
-def clear_spread_cache() -> None:
-    """Forget the spread kernels computed so far in this process (they are kept by angle and tension level)."""
-    _straight_kernel.cache_clear()
-    _catenary_kernel.cache_clear()
-
-
-class _Spread:
-    """Each station's spread of the route's changes of heading over its span's transient (:mod:`.lateral`).
-
-    A station's kernel is that of its span in still water on a straight track at the span's speed: Zajac's
-    straight span in closed form without bottom tension, the catenary with drag under a bottom tension (its
-    lateral balance by finite differences). The kernels are computed at levels of the numbers their shape
-    depends on (the angle every 0.5 deg, the log of ``T_0 / (w h)`` every 0.1) and interpolated linearly between
-    them, so that the plan's iteration sees a spread that changes smoothly with the speed and the depth. They
-    share one grid in laybacks, ``u0 + j du``.
-    """
-
-    def __init__(self, water_density):
-        self.rho = water_density
-        self.rows, self.kernels, self.integrals = {}, [], []
-        self.du = 2.0 * (_SPREAD_EXTENT[1] - _SPREAD_EXTENT[0]) / _SPREAD_SAMPLES
-        self.u0 = math.ceil(_SPREAD_EXTENT[0] / self.du - 1e-9) * self.du     # the first point of any kernel
-
-    def _row(self, key, tables):
-        if key not in self.rows:
-            self.rows[key] = len(self.kernels)
-            self.kernels.append(tables[0])
-            self.integrals.append(tables[1])
-        return self.rows[key]
-
-    def groups(self, h, vs, t0, per_metre, props):
-        """The kernels' rows and weights (four a station; row -1 where no span reaches the surface) and the spans'
-        laybacks at stations of depth ``h``, span speed ``vs``, bottom tension ``t0``, laid length per metre run
-        ``per_metre`` and cable ``props``. [-], [-], [m]"""
-        n = h.size
-        rows, weights = np.full((n, 4), -1), np.zeros((n, 4))
-        w, kt = props[:, S_W], 0.5 * self.rho * props[:, S_CDT] * math.pi * props[:, S_D]
-        ca, sa = _zajac_angle(vs, props, self.rho)
-        # the angle's levels, between 0.5 deg and 89 deg
-        angle = np.clip(np.degrees(np.arctan2(sa, ca)), _ANGLE_STEP, 89.0) / _ANGLE_STEP
-        a0 = np.minimum(np.floor(angle).astype(int), round(89.0 / _ANGLE_STEP) - 1)
-        fa = angle - a0
-        layback = h * ca / sa
-        # (a span within 1.15 deg of the vertical lays the track itself, spread over 2 % of the depth: no spread)
-        steep = layback < 0.02 * h
-        slack = (t0 <= 0.0) & ~steep
-        if slack.any():
-            ut = per_metre * vs - vs * ca                    # the water along the cable, past the material [m/s]
-            tangential = np.rint(100.0 * kt * np.abs(ut) * ut / (w * sa)).astype(int)
-            for j, (level, weight) in enumerate(((a0, 1.0 - fa), (a0 + 1, fa))):
-                keys = np.column_stack([level, tangential])[slack]
-                unique, back = np.unique(keys, axis=0, return_inverse=True)
-                found = np.array([self._row((0, *key), _straight_kernel(*key)) for key in map(tuple, unique)])
-                rows[slack, j], weights[slack, j] = found[back.ravel()], weight[slack]
-        taut = (t0 > 0.0) & ~steep
-        if taut.any():
-            ratio = np.log(np.where(taut, t0, 1.0) / (w * h)) / _TENSION_STEP
-            b0 = np.floor(ratio).astype(int)
-            fb = ratio - b0
-            cable, which = np.unique(props[taut], axis=0, return_inverse=True)
-            which = which.ravel()
-            layback[taut] = 0.0
-            for j, (la, lb, weight) in enumerate(((a0, b0, (1 - fa) * (1 - fb)), (a0 + 1, b0, fa * (1 - fb)),
-                                                  (a0, b0 + 1, (1 - fa) * fb), (a0 + 1, b0 + 1, fa * fb))):
-                keys = np.column_stack([la[taut], lb[taut], which])
-                unique, back = np.unique(keys, axis=0, return_inverse=True)
-                found, scale = [], []
-                for key in map(tuple, unique):
-                    c = tuple(cable[key[2]].tolist())
-                    tables = _catenary_kernel(key[0], key[1], c, self.rho)
-                    found.append(-1 if tables is None else self._row((1, key[0], key[1], c), tables))
-                    scale.append(np.nan if tables is None else tables[2])
-                back = back.ravel()
-                rows[taut, j], weights[taut, j] = np.array(found)[back], weight[taut]
-                layback[taut] += weight[taut] * np.array(scale)[back] * h[taut]
-            lost = taut & (np.any(rows < 0, axis=1) | ~np.isfinite(layback))
-            rows[lost], weights[lost], layback[lost] = -1, 0.0, (h * ca / sa)[lost]
-        return rows, weights, layback
-
-    def turns(self, kp, h, vs, t0, per_metre, props, turn_kp, turn, reach):
-        """The route's curvature at the stations' touchdowns (``layback`` behind the ship KPs ``kp``) spread over
-        the span's transient [1/m], the change of the spread heading from the legs' there [rad], and the
-        layback [m] (``reach``, Zajac's, where no change of heading is near)."""
-        n = kp.size
-        rows, weights, layback = np.full((n, 4), -1), np.zeros((n, 4)), np.array(reach, float)
-        # the stations whose window (the kernel's, over twice Zajac's layback) holds a change of heading
-        lo = np.searchsorted(turn_kp, kp - reach - 2.0 * _SPREAD_EXTENT[1] * reach)
-        hi = np.searchsorted(turn_kp, kp - reach - 2.0 * _SPREAD_EXTENT[0] * reach, side="right")
-        near = hi > lo
-        if not near.any():
-            return np.zeros(n), np.zeros(n), layback
-        rows[near], weights[near], layback[near] = self.groups(h[near], vs[near], t0[near], per_metre[near],
-                                                               props[near])
-        if not self.kernels:
-            return np.zeros(n), np.zeros(n), layback
-        curvature, heading = _spread_turns(kp - layback, layback, rows, weights, self.u0, self.du,
-                                           np.array(self.kernels), np.array(self.integrals), turn_kp, turn)
-        return curvature, heading, layback
-
-
-@njit(cache=True)
-def _spread_turns(x_td, layback, rows, weights, u0, du, kernels, integrals, turn_kp, turn):
-    """Each change of heading ``d_j`` at KP ``k_j`` spread as ``d_j K((x - k_j) / l) / l`` (curvature) and
-    ``d_j (I - H)((x - k_j) / l)`` (the heading's change from the legs', ``I`` the kernel's integral and ``H``
-    the step of the sharp turn), at the stations' touchdown KPs ``x``; a station's ``K`` is the weighted sum of
-    its kernels' ``rows`` (none where the first is -1)."""
-    n, m = x_td.size, kernels.shape[1]
-    curvature, heading = np.zeros(n), np.zeros(n)
-    u1 = u0 + (m - 1) * du
-    for i in range(n):
-        ell = layback[i]
-        if rows[i, 0] < 0:
-            continue
-        lo = np.searchsorted(turn_kp, x_td[i] - u1 * ell)
-        hi = np.searchsorted(turn_kp, x_td[i] - u0 * ell, side="right")
-        for j in range(lo, hi):
-            u = (x_td[i] - turn_kp[j]) / ell
-            f = (u - u0) / du
-            a = min(max(int(f), 0), m - 2)
-            r = f - a
-            kv, iv = 0.0, 0.0
-            for c in range(rows.shape[1]):
-                g, wt = rows[i, c], weights[i, c]
-                if g >= 0 and wt != 0.0:
-                    kv += wt * (kernels[g, a] * (1.0 - r) + kernels[g, a + 1] * r)
-                    iv += wt * (integrals[g, a] * (1.0 - r) + integrals[g, a + 1] * r)
-            curvature[i] += turn[j] * kv / ell
-            heading[i] += turn[j] * (iv - (1.0 if u >= 0.0 else 0.0))
-    return curvature, heading
 
 
 def _steady_offset(out, vs_td, omega) -> np.ndarray:

@@ -8,7 +8,7 @@ in the damaged condition has NaN there, and ``line_present`` says which lines ea
 
 Which statics: lines of one homogeneous catenary and the FE statics for the rest
 (:func:`seacable.system.statics.solve_equilibrium`) when the water has no current and the seabed is
-flat; otherwise the finite-element statics of the whole system (:mod:`seacable.system._stat_fe`: the
+flat; otherwise the finite-element statics of the whole system (:mod:`seacable.system.statics.fe`: the
 coupled finite-element lines and bodies of ``system_dynamic`` at rest, with the current's drag and the
 sloping seabed, their stiffness by central differences of equilibria). The analysis option ``statics``
 (``auto``, ``catenary``, ``finite_element``; default ``auto``) forces one; the Dataset's attributes
@@ -125,9 +125,9 @@ def statics_used(case, statics: str | None = None) -> str:
 
     ``statics`` (default the analysis option ``statics``, else ``auto``): ``auto`` takes the catenary
     statics unless the environment has what they cannot model (a current, a sloping seabed:
-    :func:`seacable.system._stat_fe.needs_fe`); ``catenary`` then refuses those.
+    :func:`seacable.system.statics.fe.needs_fe`); ``catenary`` then refuses those.
     """
-    from ._stat_fe import needs_fe
+    from .statics.fe import needs_fe
 
     mode = statics if statics is not None else getattr(case.analysis, "statics", "auto")
     if mode not in STATICS:
@@ -175,7 +175,7 @@ def _check_condition(case, system: MooringSystem, removed, mode: str) -> None:
 def _fe_checks(system: MooringSystem, environment, where: str) -> None:
     """The finite-element statics' checks without solving: what they cannot model (a pinned body), and the
     finite-element system's geometry (line ends below the seabed, lines that cannot reach: as the dynamics)."""
-    from ._stat_fe import check_fe
+    from .statics.fe import check_fe
     from .dynamics import build_system_fe
 
     try:
@@ -283,9 +283,9 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
 
     A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
     last offsets, the last converged offsets and ``fix``. ``statics``: 'catenary' or 'finite_element'
-    (:func:`seacable.system._stat_fe.fe_equilibrium`, its stiffness at the last step when ``stiffness``).
+    (:func:`seacable.system.statics.fe.fe_equilibrium`, its stiffness at the last step when ``stiffness``).
     """
-    from ._stat_fe import fe_equilibrium
+    from .statics.fe import fe_equilibrium
     from .statics import solve_equilibrium
 
     a = case.analysis
@@ -701,7 +701,7 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
 
 def _statics_attrs(ds, setup: SystemSetup) -> None:
     """Say which statics and which stiffness the Dataset holds."""
-    from ._stat_fe import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
+    from .statics.fe import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 
     ds.attrs["statics"] = setup.statics
     ds.attrs["stiffness_method"] = STIFFNESS_FD if setup.fe else STIFFNESS_ANALYTIC

@@ -18,9 +18,9 @@ import math
 
 import numpy as np
 
-from ..environment import Environment
-from ..line import Line, LineType, PointMass, Segment
-from .model import Body, MooringSystem, SystemLine, SystemPoint
+from ...environment import Environment
+from ...line import Line, LineType, PointMass, Segment
+from ..model import Body, MooringSystem, SystemLine, SystemPoint
 
 G = 9.80665
 RHO = 1025.0
@@ -131,7 +131,7 @@ def to_moorpy(system: MooringSystem, env: Environment, external: dict | None = N
     """
     import moorpy as mp
 
-    from ._stat_model import BODY, FIXED, assemble
+    from .model import BODY, FIXED, assemble
 
     asm = assemble(system, env)
     ms = mp.System(depth=env.depth, rho=env.water_density, g=env.gravity)

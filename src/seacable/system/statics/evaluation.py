@@ -1,4 +1,4 @@
-"""Forces and analytic Jacobian of a flattened mooring system (private to :mod:`.statics`).
+"""Forces and analytic Jacobian of a flattened mooring system (private to :mod:`seacable.system.statics`).
 
 State: each free body's reference point X and rotation matrix R, each free node's position.
 Degrees of freedom of an increment: per free body (dx, dy, dz, th_x, th_y, th_z) with th a small
@@ -28,11 +28,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import NoSolutionError
-from ..statics.catenary import CatenaryRegime
-from . import _stat_kernel as _k
-from ._stat_cat import frame_and_catenaries
-from ._stat_model import Assembly, rotation
+from ...errors import NoSolutionError
+from ...statics.catenary import CatenaryRegime
+from . import kernel as _k
+from .catenary import frame_and_catenaries
+from .model import Assembly, rotation
 
 _GROUNDED = np.zeros(max(CatenaryRegime) + 1, bool)        # regime code -> lies on the seabed
 _GROUNDED[[CatenaryRegime.ON_SEABED, CatenaryRegime.TOUCHDOWN, CatenaryRegime.TOUCHDOWN_SLACK_ANCHOR,
@@ -192,7 +192,7 @@ def _own_terms(asm, bd: BodyData, X, R):
                       own, own_jac)
         for k in range(nb):
             if bd.khs[k] is not None:
-                from ._stat_model import euler, euler_rate_map
+                from .model import euler, euler_rate_map
                 ang = euler(R[k])
                 dq = np.concatenate([X[k] - bd.q0[k, :3], ang - bd.q0[k, 3:]])
                 own[k] = bd.f0[k] - bd.khs[k] @ dq

@@ -1,6 +1,6 @@
-"""Compiled assembly of the system's residual and Jacobian (private to :mod:`._stat_eval`).
+"""Compiled assembly of the system's residual and Jacobian (private to :mod:`.evaluation`).
 
-The same equations as the module docstring of :mod:`._stat_eval`, in loops: sub-line end
+The same equations as the module docstring of :mod:`.evaluation`, in loops: sub-line end
 forces and their 3x3 derivative blocks, node forces, the residual of every DOF and its
 Jacobian ``J = G^T D G`` plus the moment arms' rotation ``[f]x [r]x`` (G maps DOF increments
 to node displacements: identity for a free node, ``[I, -[r]x]`` for a node on a body), and the

@@ -1,4 +1,4 @@
-"""Warm-started elastic catenaries of many sub-lines, compiled (private to :mod:`.statics`).
+"""Warm-started elastic catenaries of many sub-lines, compiled (private to :mod:`seacable.system.statics`).
 
 Inside the system's Newton iteration the sub-lines move a little between evaluations, so each
 catenary restarts from its previous end forces and converges in one or two steps. This kernel
@@ -20,8 +20,8 @@ import re
 import numpy as np
 from numba import njit
 
-from ..errors import NoSolutionError
-from ..statics.catenary import CatenaryResult, _guess, catenary
+from ...errors import NoSolutionError
+from ...statics.catenary import CatenaryResult, _guess, catenary
 
 
 @njit(cache=True, error_model="numpy")

@@ -37,10 +37,10 @@ import warnings
 
 import numpy as np
 
-from ..errors import InputError, SeacableWarning
-from ..mooring import kernel as MK
-from ..mooring.network import FREE
-from ._stat_model import EquilibriumFields, euler, rotation
+from ...errors import InputError, SeacableWarning
+from ...mooring import kernel as MK
+from ...mooring.network import FREE
+from .model import EquilibriumFields, euler, rotation
 
 __all__ = ["FEEquilibrium", "fe_equilibrium", "needs_fe"]
 
@@ -163,12 +163,12 @@ def _with_loads(fe, external: dict | None):
     """``fe`` with ``external`` ({free body: 6 loads}) added to its bodies' constant external force."""
     if not external:
         return fe
-    from . import _dyn_kernel as DK
+    from ..dynamics import body as DB
 
     bpar = fe.bpar.copy()
     for name, load in external.items():
         k = fe.free_bodies.index(name)
-        bpar[k, DK.B_FEXT:DK.B_FEXT + 6] += np.asarray(load, float)
+        bpar[k, DB.B_FEXT:DB.B_FEXT + 6] += np.asarray(load, float)
     return dataclasses.replace(fe, bpar=bpar)
 
 
@@ -186,7 +186,7 @@ def _rotated(q, axis: int, th: float) -> np.ndarray:
 def fd_stiffness(fe, state, tol: float, delta: float, delta_r: float) -> np.ndarray:
     """Coupled mooring stiffness (6 nb, 6 nb) of the free bodies by central differences of equilibria with
     the bodies held (free points and line nodes equilibrated). [N/m, N/rad, N m/m, N m/rad]"""
-    from .dynamics import body_line_force, static_system
+    from ..dynamics import body_line_force, static_system
 
     q0 = state.body_position.reshape(-1, 6)
     nb = q0.shape[0]
@@ -232,7 +232,7 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
     -------
     FEEquilibrium
     """
-    from .dynamics import build_system_fe, static_system
+    from ..dynamics import build_system_fe, static_system
 
     check_fe(system, env)
     if initial is not None and n_elements is None:
@@ -283,7 +283,7 @@ def hydrostatic(system, env, free: list, q: np.ndarray) -> np.ndarray:
     analytic one of the catenary statics (weight, buoyancy, waterplane, or the user's matrix)."""
     from types import SimpleNamespace
 
-    from ._stat_eval import body_own
+    from .evaluation import body_own
 
     nb = len(free)
     if not nb:

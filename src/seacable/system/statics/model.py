@@ -1,4 +1,4 @@
-"""The assembled arrays of a mooring system for its statics (private to :mod:`.statics`).
+"""The assembled arrays of a mooring system for its statics (private to :mod:`seacable.system.statics`).
 
 A :class:`~seacable.system.model.MooringSystem` is flattened once into *nodes* and *sub-lines*:
 
@@ -20,10 +20,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..environment import Environment
-from ..errors import InputError
-from ..mooring.network import table_secant
-from .model import MooringSystem
+from ...environment import Environment
+from ...errors import InputError
+from ...mooring.network import table_secant
+from ..model import MooringSystem
 
 FIXED, BODY, FREE = 0, 1, 2
 _MERGE = 1e-9          # arc lengths closer than this fraction of the line length are one node
@@ -55,7 +55,7 @@ def euler_rate_map(angles) -> np.ndarray:
 class EquilibriumFields:
     """What every static equilibrium of a system holds, whichever statics found it (the catenary's
     :class:`~seacable.system.statics.SystemEquilibrium`, the finite elements'
-    :class:`~seacable.system._stat_fe.FEEquilibrium`); the attributes are documented there."""
+    :class:`~seacable.system.statics.fe.FEEquilibrium`); the attributes are documented there."""
 
     system: MooringSystem
     environment: Environment
@@ -77,7 +77,7 @@ class EquilibriumFields:
 
     def _free_body(self, name: str) -> int:
         if name not in self.free_body_names:
-            from .._model import suggest
+            from ..._model import suggest
 
             raise InputError(f"body '{name}' is not a free body of this system (free bodies: "
                              f"{', '.join(self.free_body_names) or 'none'}).{suggest(name, self.free_body_names)}")
@@ -159,7 +159,7 @@ def check_environment(env: Environment) -> None:
                          "vertical plane through its ends, which has no drag load. Suggested fix: set the "
                          "current speed to 0 for the catenary statics, or leave analysis.statics at 'auto' (the "
                          "system analyses then use the finite-element statics: "
-                         "seacable.system._stat_fe.fe_equilibrium).")
+                         "seacable.system.statics.fe.fe_equilibrium).")
     if env.seabed.slope != 0:
         raise InputError(f"environment.seabed.slope = {env.seabed.slope:g} rad is not supported by the system "
                          "catenary statics: their seabed is horizontal. Suggested fix: use slope 0, or leave "
@@ -306,7 +306,7 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
 
 def inverse_table(table) -> tuple[list, list]:
     """A strain-tension table ``((strain, tension), ...)`` as its inverse, tension points from 0 and
-    their strains (for :mod:`._stat_cat`: strain linear in tension between the points).
+    their strains (for :mod:`.catenary`: strain linear in tension between the points).
 
     MoorDyn's tension is linear in strain between the points and held flat beyond the last; a
     table whose first point is not at the origin is joined to it by a straight line here (MoorDyn
@@ -338,7 +338,7 @@ def _start_positions(line, pa, pb, cut_s, rho, g, depth):
     h = float(np.hypot(d[0], d[1]))
     seabed = depth is not None and low[2] <= -depth + 1e-6 * depth
     try:
-        from ..statics.catenary import catenary
+        from ...statics.catenary import catenary
 
         res = catenary(h, max(float(d[2]), 0.0), total, float(np.dot(lengths, ea) / total), w, 0.0, seabed)
         prof = res.profile(400)

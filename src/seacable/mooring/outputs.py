@@ -1,0 +1,84 @@
+"""What the single-line and the system time-domain runs share around the solver: the height of points above
+the seabed and the force of a line on an anchor resting on it, the surface elevation output, and a model with
+its prescribed nodes where a motion starts.
+
+Below both runners (:mod:`seacable.mooring.run`, :mod:`seacable.system.dynamics`), which import these from here.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..results import var
+from .solver import MooringModel, Water, wave_number_or_zero
+
+__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "wave_elevation"]
+
+
+def height_above_seabed(water: Water, X):
+    """Height of points above the seabed plane, normal to it (negative inside it), (..., n). [m]"""
+    sl = water.slope
+    return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
+
+
+def grounded_end_force(pull, half_weight, slope: float = 0.0):
+    """Force of a line on an end held on the seabed (an anchor), (..., 3). [N]
+
+    The end element pulls along its chord with its tension, ``pull = T d / |d|``; that direction is the line's
+    at the element's middle, not at its end: between them the half element's weight in water turns the line
+    (the catenary's slope changes by ``w ds / T``). Its weight normal to the seabed is taken off the pull's normal
+    component, as far as that does not press the end into the seabed, which carries the rest. A line lying
+    along the seabed then pulls along it (the catenary's H, the seabed carrying the weight), a line rising from
+    the end pulls up with ``T sin(theta_0)`` to second order, and a line whose touchdown lies within its first
+    element (the node beyond it lifted a little off the seabed) shows no uplift: with the pull alone it showed
+    up to half the element's weight (1.4 kN on the OC3-Hywind demo's intact anchors, 22.6 m elements).
+
+    Parameters
+    ----------
+    pull
+        The end element's pull on the end, ``T d / |d|``, (..., 3). [N]
+    half_weight
+        The half end element's weight in water, (...,) or scalar (negative: buoyant). [N]
+    slope
+        The seabed's slope, rising towards +x. [rad]
+    """
+    pull = np.asarray(pull, float)
+    n = np.array([-math.sin(slope), 0.0, math.cos(slope)])
+    normal = pull @ n
+    kept = np.maximum(normal - np.asarray(half_weight, float) * math.cos(slope), 0.0)
+    return pull + (kept - normal)[..., None] * n
+
+
+def wave_elevation(water: Water, time, x: float = 0.0, y: float = 0.0) -> np.ndarray:
+    """Surface elevation [m] at (x, y) [m] at ``time`` [s]: the regular wave's and the irregular sea's
+    (by direct summation of its components, not from the grid); zeros in calm water."""
+    t = np.asarray(time, float)
+    eta = np.zeros_like(t)
+    if water.wave_height > 0.0:
+        k = wave_number_or_zero(water)
+        theta = (k * (x * math.cos(water.wave_heading) + y * math.sin(water.wave_heading))
+                 - 2.0 * math.pi / water.wave_period * t + water.wave_phase)
+        eta += 0.5 * water.wave_height * np.cos(theta)
+    if water.sea is not None:
+        eta += water.sea.elevation(t, x, y)
+    return eta
+
+
+def elevation_variables(water: Water, time) -> dict:
+    """The ``wave_elevation`` at the origin (x = y = 0) of a run with waves (nothing in calm water)."""
+    if water.wave_height <= 0.0 and water.sea is None:
+        return {}
+    return {"wave_elevation": var("time", wave_elevation(water, time), "m",
+                                  "water surface elevation at x = y = 0 (0 at the still-water level)")}
+
+
+def at_motion_start(model: MooringModel, motion) -> MooringModel:
+    """``model`` with its prescribed nodes where ``motion`` puts them at t = 0 (a platform's mean offset, where
+    a run's static start is solved)."""
+    net = model.network
+    pres = np.flatnonzero(net.channel >= 0)
+    X = net.position.copy()
+    X[pres] = motion(np.zeros(1))[0][0, net.channel[pres]]
+    return MooringModel(net.replace(position=X), model.water)

@@ -1,0 +1,362 @@
+"""The finite-element system of a mooring system's coupled dynamics: its lines' network, the bodies'
+parameters and what ties nodes to bodies and points (:func:`build_system_fe`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ...case import SeabedContact
+from ...environment import IrregularWaves
+from ...mooring.motion import rotation_matrix
+from ...mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
+from ...mooring.solver import MooringModel, Water
+from ..case import SystemDynamicAnalysis
+from ..model import MooringSystem
+from . import body as DB
+
+
+@dataclass
+class SystemFE:
+    """The finite-element system of a :class:`MooringSystem`: the network and what ties nodes to bodies.
+
+    Attributes
+    ----------
+    model : the lines' network in its water (band nodes: free nodes, nodes on free bodies, ends that may
+        fail).
+    system : the mooring system.
+    free_bodies : names of the free bodies (rows of ``q``).
+    q0 : (nb, 6) the free bodies' given positions.
+    point_node : node of each point.
+    line_names, line_nodes, line_elements : per line, its nodes (end A to B) and elements.
+    fairlead_end : per line, 1 when end B is the fairlead (on a body or coupled point), 0 for end A.
+    con_* : one row per tied node: node, free body (-1: held at ``con_target``; -2 - k: tied to the free node k,
+        a failing line end at a free point), arm (body axes) or held position, channel.
+    fail_time, fail_tension, fail_elem : failure of each tied node (inf / -1 when none).
+    con_line : line of each tied node with a failure (-1 otherwise).
+    """
+
+    model: MooringModel
+    system: MooringSystem
+    free_bodies: tuple[str, ...]
+    q0: np.ndarray
+    point_node: dict[str, int]
+    line_names: tuple[str, ...]
+    line_nodes: tuple[np.ndarray, ...]
+    line_elements: tuple[np.ndarray, ...]
+    fairlead_end: np.ndarray
+    node_fext: np.ndarray
+    con_node: np.ndarray
+    con_body: np.ndarray
+    con_arm: np.ndarray
+    con_target: np.ndarray
+    con_chan: np.ndarray
+    fail_time: np.ndarray
+    fail_tension: np.ndarray
+    fail_elem: np.ndarray
+    con_line: np.ndarray
+    channel_source: list = field(default_factory=list)  # per channel: ("point", name) or ("body", name, arm)
+    bpar: np.ndarray = None
+    bkhs: np.ndarray = None
+    badd: np.ndarray = None
+    blin: np.ndarray = None
+    bquad: np.ndarray = None
+    ext_t: np.ndarray = None
+    ext_f: np.ndarray = None
+    ext_n: np.ndarray = None
+    spin: np.ndarray = None  # (nb, 3) body axes: the axis turning about which moves nothing (a rod's), or zeros
+    body_motions: dict = field(default_factory=dict)  # prescribed body -> its motion bound to the run (dofs(times))
+
+    def kernel_args(self):
+        m = self.model
+        net = m.network
+        args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
+                net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
+                net.point_hydrodynamics(), m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain, m.hinges, m.hinge_ei,
+                m.visco)
+        return args
+
+    def body_args(self):
+        return (self.bpar, self.bkhs, self.badd, self.blin, self.bquad, self.ext_t, self.ext_f, self.ext_n)
+
+
+def _rot(six) -> np.ndarray:
+    return rotation_matrix(six[3], six[4], six[5])
+
+
+def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
+    env = environment
+    cur = env.current
+    depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
+    w = env.waves
+    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
+    w_reg = None if sea is not None else w
+    contact = analysis.seabed_contact if analysis is not None else SeabedContact()
+    alpha = analysis.rayleigh[0] if analysis is not None else 0.0
+    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
+                 seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
+                 friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
+                 current_speeds=tuple(speeds), current_heading=cur.heading,
+                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
+                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
+                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none")
+
+
+def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicAnalysis | None = None, *,
+                    n_elements: int | None = None) -> SystemFE:
+    """The finite-element system of ``system`` in ``environment`` (nodes at the given positions, lines on
+    their catenary start shapes). ``analysis`` gives the element count, damping, failures and external
+    force series; ``n_elements`` overrides every line's element count."""
+    rho, g = environment.water_density, environment.gravity
+    depth = environment.depth
+    slope = environment.seabed.slope
+    a = analysis
+    n_el = n_elements if n_elements is not None else (a.n_elements if a is not None else None)
+    ratio, beta = (a.damping_ratio, a.rayleigh[1]) if a is not None else (0.0, 0.0)
+    failures = {(f.line, f.end): f for f in (a.failures if a is not None else [])}
+    free_bodies = tuple(n for n, b in system.bodies.items() if b.kind == "free")
+    bindex = {n: k for k, n in enumerate(free_bodies)}
+
+    # points: one node each
+    names = list(system.points)
+    pos, kind, chan = [], [], []
+    channel_source = []
+    for name in names:
+        p = system.points[name]
+        if p.kind == "body":
+            body = system.bodies[p.body]
+            x = np.asarray(body.position[:3]) + _rot(body.position) @ np.asarray(p.position)
+            if body.kind == "free":
+                k = FREE
+            elif body.kind == "fixed":
+                k = FIXED
+            else:
+                k = PRESCRIBED
+        else:
+            x = np.asarray(p.position, float)
+            k = {"fixed": FIXED, "free": FREE, "coupled": PRESCRIBED}[p.kind]
+        pos.append(x)
+        kind.append(k)
+        if k == PRESCRIBED:
+            chan.append(len(channel_source))
+            channel_source.append(("body", p.body, np.asarray(p.position, float)) if p.kind == "body"
+                                  else ("point", name))
+        else:
+            chan.append(-1)
+    point_node = {n: k for k, n in enumerate(names)}
+    pm = np.array([system.points[n].mass for n in names], float)
+    pa = np.array([system.points[n].added_mass for n in names], float)
+    pv = np.array([system.points[n].volume for n in names], float)
+    pd = np.array([system.points[n].drag_area for n in names], float)
+    pw = np.array([system.points[n].net_weight(rho, g) for n in names], float)
+    fext = [np.asarray(system.points[n].external_force, float) for n in names]
+    # tied nodes: points on free bodies
+    con = []  # (node, body, arm, target, chan, fail_time, fail_tension, fail_elem, line)
+    for name in names:
+        p = system.points[name]
+        if p.kind == "body" and system.bodies[p.body].kind == "free":
+            con.append([point_node[name], bindex[p.body], np.asarray(p.position, float), np.zeros(3), -1, math.inf,
+                        math.inf, -1, -1])
+
+    elements, props, element_line, line_nodes, line_elements = [], [], [], [], []
+    arc = [np.nan] * len(names)
+    fields = ("length", "axial_stiffness", "axial_damping", "mass_per_length", "weight_per_length", "diameter",
+              "cdn", "cdt", "can", "cat", "breaking_load")
+    extra = {f: [] for f in ("point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area")}
+    fairlead_end = []
+    tables = []  # per element: its line type's strain-tension table or None
+    bending, visco = [], []  # per line: its elements' EI and viscoelastic parameters
+    line_names = tuple(system.lines)
+    for li, (lname, sl) in enumerate(system.lines.items()):
+        ends = [sl.end_a, sl.end_b]
+        xa, xb = pos[point_node[ends[0]]], pos[point_node[ends[1]]]
+        sub = network_from_line(sl.line, xa, xb, water_density=rho, gravity=g,
+                                n_elements=n_el if n_el is not None else sl.n_elements, damping_ratio=ratio,
+                                stiffness_proportional=beta, end_b="free")
+        s = sub.arc_length
+        n = len(s)
+        # start shape: the catenary, solved from the lower end up
+        lengths = np.array([seg.length for seg in sl.line.segments])
+        weights = np.array(sl.line.weights(rho, g))
+        ea = np.array([seg.line_type.effective_axial_stiffness() for seg in sl.line.segments])
+        if xa[2] <= xb[2]:
+            shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=sl.line.point_loads(rho, g),
+                                       depth=depth, slope=slope)
+        else:
+            L = s[-1]
+            rev = [(L - ps, w) for ps, w in sl.line.point_loads(rho, g)][::-1]
+            shape = catenary_positions(xb, xa, L - s, lengths[::-1], weights[::-1], ea[::-1], point_loads=rev,
+                                       depth=depth, slope=slope)
+        ids = np.empty(n, np.int64)
+        for j, (end, at) in enumerate(((0, 0), (1, n - 1))):
+            pname = ends[end]
+            f = failures.get((lname, "ab"[end]))
+            if f is None:
+                ids[at] = point_node[pname]
+                continue
+            p = system.points[pname]
+            node = len(pos)
+            pos.append(pos[point_node[pname]].copy())
+            kind.append(FREE)
+            chan.append(-1)
+            arc.append(s[at])
+            fext.append(np.zeros(3))
+            for values in extra.values():
+                values.append(0.0)
+            ids[at] = node
+            body = system.bodies[p.body] if p.kind == "body" else None
+            b = bindex[p.body] if body is not None and body.kind == "free" else -1
+            if p.kind == "free":
+                b = -2 - point_node[pname]  # tied to the free point's node
+            ch = chan[point_node[pname]]
+            arm = np.asarray(p.position, float) if b >= 0 else np.zeros(3)
+            elem = len(elements) + (0 if at == 0 else n - 2)
+            con.append([node, b, arm, pos[point_node[pname]].copy(), ch, math.inf if f.time is None else f.time,
+                        math.inf if f.tension is None else f.tension, elem, li])
+        first = len(pos)
+        ids[1:-1] = np.arange(first, first + n - 2)
+        pos.extend(shape[1:-1])
+        kind.extend([FREE] * (n - 2))
+        chan.extend([-1] * (n - 2))
+        arc.extend(s[1:-1])
+        fext.extend([np.zeros(3)] * (n - 2))
+        for k, values in extra.items():
+            vals = getattr(sub, k)
+            values.extend(vals[1:-1])
+            # attachments at the line's ends sit on the end nodes
+            for at in (0, n - 1):
+                node = ids[at]
+                if node < len(names):
+                    {"point_mass": pm, "point_added_mass": pa, "point_weight": pw, "point_volume": pv,
+                     "point_drag_area": pd}[k][node] += vals[at]
+                else:
+                    extra[k][node - len(names)] += vals[at]
+        el0 = len(elements)
+        elements.extend(ids[sub.elements])
+        props.append(np.column_stack([getattr(sub, f) for f in fields]))
+        tables.extend(sub.element_tension_strain or [None] * (n - 1))
+        bending.append(np.zeros(n - 1) if sub.bending_stiffness is None else sub.bending_stiffness)
+        visco.append(np.zeros((n - 1, 3)) if sub.element_viscoelastic is None else sub.element_viscoelastic)
+        element_line.extend([li] * (n - 1))
+        line_nodes.append(ids)
+        line_elements.append(np.arange(el0, el0 + n - 1))
+        moved = [system.points[e].kind in ("body", "coupled") for e in ends]
+        fairlead_end.append(0 if moved[0] and not moved[1] else 1)
+    P = np.vstack(props) if props else np.zeros((0, len(fields)))  # no lines: bodies (and points) alone
+    nn = len(pos)
+    # a point no line ends at any more (its line fails there: the line's end has its own node) carries
+    # nothing: held, and not tied
+    used = np.zeros(nn, bool)
+    used[np.asarray(elements, np.int64).ravel()] = True
+    for k in np.flatnonzero(~used):
+        kind[k] = FIXED
+    con = [c for c in con if used[c[0]]]
+    for c in con:
+        if c[1] <= -2 and not used[-2 - c[1]]:
+            c[1] = -1  # a free point no other line ends at: its line's end is held there until it fails
+
+    def full(point_values, key):
+        return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
+
+    net = Network(
+        position=np.array(pos, float).reshape(-1, 3), kind=np.array(kind, np.int64), channel=np.array(chan, np.int64),
+        point_mass=full(pm, "point_mass"), point_added_mass=full(pa, "point_added_mass"),
+        point_weight=full(pw, "point_weight"), point_volume=full(pv, "point_volume"),
+        point_drag_area=full(pd, "point_drag_area"), elements=np.array(elements, np.int64).reshape(-1, 2),
+        length=P[:, 0], axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
+        weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
+        element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes), line_names=line_names,
+        arc_length=np.array(arc, float), n_channels=len(channel_source),
+        channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
+        breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
+        bending_stiffness=np.concatenate(bending) if bending else np.zeros(0),
+            element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None)
+    model = MooringModel(net, _water(environment, analysis))
+    nb = len(free_bodies)
+    bpar = np.zeros((nb, DB.B_SIZE))
+    bkhs, badd, blin, bquad = (np.zeros((nb, 6, 6)) for _ in range(4))
+    series = {}
+    if a is not None:
+        for name, ser in a.external_forces.items():
+            series[name] = ser.table()
+    nt = max([len(t) for t, _ in series.values()], default=1)
+    ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
+    for k, name in enumerate(free_bodies):
+        b = system.bodies[name]
+        bpar[k, DB.B_MASS], bpar[k, DB.B_VOL], bpar[k, DB.B_AWP] = b.mass, b.volume, b.waterplane_area
+        bpar[k, DB.B_IXX], bpar[k, DB.B_IYY] = b.waterplane_moments
+        bpar[k, DB.B_HASK] = 1.0 if b.hydrostatic_stiffness is not None else 0.0
+        bpar[k, DB.B_CG:DB.B_CG + 3] = b.center_of_gravity
+        bpar[k, DB.B_CB:DB.B_CB + 3] = b.center_of_buoyancy
+        bpar[k, DB.B_INERT:DB.B_INERT + 3] = b.dynamic_inertia()  # a point mass's free spin: its own inertia
+        bpar[k, DB.B_Q0:DB.B_Q0 + 6] = b.position
+        bpar[k, DB.B_FEXT:DB.B_FEXT + 6] = b.external_force
+        bkhs[k], badd[k] = b.matrix("hydrostatic_stiffness"), b.matrix("added_mass")
+        blin[k], bquad[k] = b.matrix("linear_damping"), b.matrix("quadratic_damping")
+        if name in series:
+            t, f = series[name]
+            ext_t[k, :len(t)], ext_f[k, :len(t)], ext_n[k] = t, f, len(t)
+    spin = np.zeros((nb, 3))
+    cur_still = not np.any(model.cur_speed)
+    for k, name in enumerate(free_bodies):
+        arms = [c[2] for c in con if c[1] == k]
+        spin[k] = _free_spin_axis(system.bodies[name], arms, cur_still)
+    C = list(zip(*con, strict=True)) if con else [[]] * 9
+    fe = SystemFE(
+        model=model, system=system, free_bodies=free_bodies,
+        q0=np.array([system.bodies[n].position for n in free_bodies], float).reshape(nb, 6),
+        point_node=point_node, line_names=line_names, line_nodes=tuple(line_nodes),
+        line_elements=tuple(line_elements), fairlead_end=np.array(fairlead_end, np.int64),
+        node_fext=np.array(fext, float).reshape(nn, 3),
+        con_node=np.array(C[0], np.int64), con_body=np.array(C[1], np.int64),
+        con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
+        con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
+        fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
+        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin)
+    return fe
+
+
+def _free_spin_axis(body, arms, still_water: bool) -> np.ndarray:
+    """The body-axes unit axis about which turning the body changes none of its static loads, or zeros.
+
+    That is the line through the reference point on which its tied points (``arms``), centre of gravity
+    and centre of buoyancy all lie (a rod with its lines at its ends), when its hydrostatics do not turn
+    with it (no 6x6 matrix; waterplane moments only about a vertical axis) and no current drags it (its
+    damping matrices then act on the velocity only). The statics leave the turn about it out of their
+    Newton steps: it has no stiffness at all. Zeros when there is no such line, or when every arm is zero
+    (a point-like body: no axis is singled out).
+    """
+    vecs = [np.asarray(v, float) for v in (*arms, body.center_of_gravity, body.center_of_buoyancy)]
+    size = max((float(np.linalg.norm(v)) for v in vecs), default=0.0)
+    if size == 0.0 or body.hydrostatic_stiffness is not None:
+        return np.zeros(3)
+    n = max(vecs, key=lambda v: float(np.linalg.norm(v)))
+    n = n / np.linalg.norm(n)
+    if any(float(np.linalg.norm(np.cross(v, n))) > 1e-9 * size for v in vecs):
+        return np.zeros(3)
+    if any(body.waterplane_moments) and abs(n[2]) < 1.0 - 1e-12:
+        return np.zeros(3)
+    if not still_water and (np.any(body.matrix("linear_damping")) or np.any(body.matrix("quadratic_damping"))):
+        return np.zeros(3)
+    return n
+
+
+def lines_only(fe: SystemFE) -> bool:
+    """True when the system's lines are all it solves for: no free bodies, no node tied to a body or a point
+    (failing line ends are), no external force on a node. Such a run is the mooring model's
+    (:func:`seacable.mooring.solver.simulate`: its compiled time loop, irregular seas)."""
+    return not fe.free_bodies and len(fe.con_node) == 0 and not np.any(fe.node_fext)
+
+
+def _coupled_parts(fe: SystemFE) -> str:
+    parts = [f"free bodies ({', '.join(fe.free_bodies)})"] if fe.free_bodies else []
+    if np.any(fe.con_line >= 0):
+        parts.append("line failures")
+    elif len(fe.con_node):
+        parts.append("line ends tied to free points")
+    if np.any(fe.node_fext):
+        parts.append("points with external forces")
+    return ", ".join(parts) or "nothing coupled"

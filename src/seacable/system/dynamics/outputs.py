@@ -1,0 +1,144 @@
+"""The result of a coupled system run as a Dataset: lines, bodies, points, anchors and failures
+(:func:`system_result`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...mooring.kernel import E_BEDRAMP as K_BEDRAMP
+from ...mooring.outputs import elevation_variables, grounded_end_force, height_above_seabed
+from ...results import make_dataset, var
+from ..statics.model import euler_rate_map
+from .fe import SystemFE
+from .loop import SystemRun
+
+DOFS = ("x", "y", "z", "roll", "pitch", "yaw")
+
+REFERENCES = (
+    ("Paper 004: finite-element analysis of guyed-tower mooring lines (seeds/004): truss elements with "
+     "geometric nonlinearity, Newmark-beta with Newton-Raphson."),
+    "Bathe, K.-J. (1996). Finite Element Procedures. Prentice Hall, sections 6.3 and 9.2.4.",
+    ("Hall, M. (2020). MoorDyn V2: new capabilities in mooring system components and load cases. "
+     "ASME OMAE 2020 (rigid bodies coupled with lumped-mass lines)."),
+    ("Hall, M. et al. (2021). MoorPy: quasi-static mooring analysis in Python. NREL/TP (Body hydrostatics: "
+     "weight at the CG, buoyancy, waterplane heave stiffness)."),
+)
+
+
+def _padded(per_line, width, fill=np.nan, lead=()):
+    """Stack per-line arrays (..., k_i) into (..., line, width), NaN padded (``lead`` + (0, width): no lines)."""
+    if not per_line:
+        return np.full(tuple(lead) + (0, width), fill)
+    out = []
+    for a in per_line:
+        a = np.asarray(a, float)
+        padw = [(0, 0)] * (a.ndim - 1) + [(0, width - a.shape[-1])]
+        out.append(np.pad(a, padw, constant_values=fill))
+    return np.stack(out, axis=-2)
+
+
+def _anchor_vertical_force(fe: SystemFE, run: SystemRun) -> np.ndarray:
+    """Vertical force of each line on its anchor end (the end away from the fairlead), (time, line), upward
+    positive [N]: the end element's pull less the half element's weight in water, which the seabed carries at an
+    end resting on it (:func:`seacable.mooring.outputs.grounded_end_force`, the single-line analyses' rule)."""
+    net, water = fe.model.network, fe.model.water
+    ramp = float(fe.model.env[K_BEDRAMP])
+    out = np.zeros((len(run.time), len(fe.line_names)))
+    for j, (nodes, els) in enumerate(zip(fe.line_nodes, fe.line_elements)):
+        at_a = fe.fairlead_end[j] == 1
+        a, b, e = (nodes[0], nodes[1], els[0]) if at_a else (nodes[-1], nodes[-2], els[-1])
+        d = run.position[:, b] - run.position[:, a]
+        pull = run.tension[:, e, None] * d / np.maximum(np.linalg.norm(d, axis=-1), 1e-300)[:, None]
+        half = 0.5 * net.weight_per_length[e] * net.length[e]
+        force = pull[:, 2] - half
+        if water.depth is not None:
+            grounded = height_above_seabed(water, run.position[:, a]) <= ramp
+            force[grounded] = grounded_end_force(pull[grounded], half, water.slope)[:, 2]
+        out[:, j] = force
+    return out
+
+
+def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
+    """The Dataset of a coupled run."""
+    sysm = fe.system
+    nl = len(fe.line_names)
+    nmax = max((len(n) for n in fe.line_nodes), default=0)
+    emax = max((len(e) for e in fe.line_elements), default=0)
+    nt = len(run.time)
+    data = {}
+    for k, name in enumerate("xyz"):
+        data[name] = var(("time", "line", "node"), _padded([run.position[:, nodes, k] for nodes in fe.line_nodes], nmax, lead=(nt,)),
+                         "m", {"x": "x position", "y": "y position",
+                               "z": "elevation (0 at the still water level)"}[name])
+    data["segment_tension"] = var(("time", "line", "element"),
+                                  _padded([run.tension[:, els] for els in fe.line_elements], emax, lead=(nt,)), "N",
+                                  "element effective tension")
+    end_t = np.stack([np.stack([run.tension[:, els[0]], run.tension[:, els[-1]]], axis=-1)
+                      for els in fe.line_elements], axis=1) if nl else np.zeros((nt, 0, 2))  # (nt, line, 2)
+    fair = fe.fairlead_end
+    data["fairlead_tension"] = var(("time", "line"), end_t[:, np.arange(nl), fair], "N",
+                                   "tension at the fairlead end of the line (its end element)")
+    data["anchor_tension"] = var(("time", "line"), end_t[:, np.arange(nl), 1 - fair], "N",
+                                 "tension at the anchor end of the line (its end element)")
+    data["anchor_vertical_force"] = var(("time", "line"), _anchor_vertical_force(fe, run), "N",
+                                        "vertical force of the line on its anchor, upward positive (its end element "
+                                        "and half element's weight)")
+    ft = np.full(nl, np.nan)
+    for j, li in enumerate(fe.con_line):
+        if li >= 0 and np.isfinite(run.failure_time[j]):
+            ft[li] = np.nanmin([ft[li], run.failure_time[j]])
+    data["failure_time"] = var("line", ft, "s", "time the line failed (NaN: intact)")
+    mbl = [[seg.line_type.breaking_load for seg in sysm.lines[name].line.segments] for name in fe.line_names]
+    data["breaking_load"] = var("line", np.array([min(m) if None not in m else np.nan for m in mbl], float), "N",
+                                "minimum breaking load of the line (its weakest segment; NaN: not given)")
+    bodies = list(sysm.bodies)
+    bp = np.zeros((nt, len(bodies), 6))
+    bv = np.zeros((nt, len(bodies), 6))
+    bw = np.zeros((nt, len(bodies), 3))
+    for k, name in enumerate(bodies):
+        body = sysm.bodies[name]
+        if name in fe.free_bodies:
+            j = fe.free_bodies.index(name)
+            bp[:, k], bv[:, k] = run.body_position[:, j], run.body_velocity[:, j]
+            if run.body_angular_velocity is not None:
+                bw[:, k] = run.body_angular_velocity[:, j]
+        else:
+            bp[:, k] = body.position
+            mot = fe.body_motions.get(name) if body.kind == "prescribed" else None
+            if mot is not None:
+                d, dd, _ = mot.dofs(run.time)
+                bp[:, k] += d
+                bv[:, k] = dd
+                for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
+                    bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
+    coords = {"time": var("time", run.time, "s", "time"),
+              "line": var("line", list(fe.line_names), "1", "line"),
+              "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),
+              "element": var("element", np.arange(emax), "1", "element index along the line, 0 at end A"),
+              "s": var(("line", "node"), _padded([np.r_[0.0, np.cumsum(fe.model.network.length[e])]
+                                                  for e in fe.line_elements], nmax), "m",
+                       "unstretched arc length from end A")}
+    if bodies:
+        coords["body"] = var("body", bodies, "1", "body")
+        coords["dof"] = var("dof", list(DOFS), "1", "degree of freedom: x, y, z [m], roll, pitch, yaw [rad]")
+        data["body_position"] = var(("time", "body", "dof"), bp, "m or rad",
+                                    "body reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]")
+        data["body_velocity"] = var(("time", "body", "dof"), bv, "m/s or rad/s",
+                                    "body velocity (x, y, z) [m/s] and rotation rates [rad/s]")
+        coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
+        data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
+                                            "body angular velocity, global axes")
+    # the sea that drove the run: its surface at x = y = 0, as a mooring_dynamic result holds it
+    data.update(elevation_variables(fe.model.water, run.time))
+    title = getattr(case, "name", None) or "system_dynamic"
+    ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
+                      case=case if hasattr(case, "model_dump") else None,  # a case file's, as YAML (a deck: its file)
+                      settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
+                                "time_step": run.time_step, "steps": run.steps, "newton_iterations": run.iterations,
+                                **(settings or {})})
+    ds.attrs["interrupted"] = int(run.interrupted)
+    ds.attrs["wall_time"] = run.wall_time
+    if fe.model.water.depth is not None:
+        ds.attrs["depth"] = float(fe.model.water.depth)
+    return ds
