@@ -43,7 +43,7 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))
     loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
                 buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-                with_waves, sea, F, M, tension, band, bw, cm, cc, water, True)
+                with_waves, sea, F, M, tension, band, bw, cm, cc, water, np.bool_(True))
 
 
 @njit(cache=True)

@@ -31,7 +31,7 @@ def record_output(k, t, X, V, A, knodes, elements, L0, EA, cdamp, mpl, dia, cdn,
         empty = np.zeros((0, 2 * bw + 1))
         K.loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
                 buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env_rec, cur_depth, cur_speed,
-                True, sea, F, M, tension, empty, bw, 0.0, 0.0)
+                np.bool_(True), sea, F, M, tension, empty, bw, 0.0, 0.0)
     times[k] = t
     for i in range(X.shape[0]):
         for r in range(3):
@@ -74,7 +74,7 @@ def run_outputs(k0, k1, base, interval, h, sub, px, pv, pa, X, V, A, knodes, cha
         got = K.newmark_work(X, V, A, k * interval, h, px[j0:j0 + sub], pv[j0:j0 + sub], pa[j0:j0 + sub], channel,
                               elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
                               bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, nfree, bw,
-                              env, cur_depth, cur_speed, True, sea, beta, gamma, alpha_m, alpha_f, G, tol, max_iter,
+                              env, cur_depth, cur_speed, np.bool_(True), sea, beta, gamma, alpha_m, alpha_f, G, tol, max_iter,
                               F, M, tension, stats, *work)
         count[1] += got
         count[2] += np.int64(stats[0])

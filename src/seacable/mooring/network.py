@@ -13,7 +13,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
@@ -118,6 +118,14 @@ class Network:
     element_syrope: np.ndarray | None = None
     point_axial_drag_area: np.ndarray | None = None
     point_lift_area: np.ndarray | None = None
+
+    def __post_init__(self):
+        # the kernels are compiled for C-contiguous arrays: a column of a table (``P[:, 1]``) would make numba
+        # compile every kernel again for a strided layout, at seconds a copy of the loads pass
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if isinstance(value, np.ndarray) and not value.flags.c_contiguous:
+                object.__setattr__(self, f.name, np.ascontiguousarray(value))
 
     def hinge_arrays(self):
         """The inner nodes of the lines with bending stiffness as the kernel takes them.

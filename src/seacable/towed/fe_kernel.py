@@ -184,7 +184,7 @@ def towed_steps(ia, X, V, A, G, t0, dt, px, pv, pa, lengths, ds, s_lock, s_node,
             X[:n], V[:n], A[:n], t0 + k * dt, dt, px[k:k + 1], pv[k:k + 1], pa[k:k + 1], channel[:n], elements[:ne],
             L0[:ne], EA[:ne], cdamp[:ne], mpl[:ne], dia[:ne], cdn[:ne], cdt[:ne], can[:ne], cat[:ne], weight[:n],
             pmass[:n], padd[:n], pvol[:n], pcda[:n], bedc[:n], buoy[:ne], pbuoy[:n], ts_lo[:ne], ts_hi[:ne], ts_x,
-            ts_y, hinges[:nh], hinge_ei[:nh], visco[:nv], fidx[:n], nf, bw, env, cur_depth, cur_speed, True, sea,
+            ts_y, hinges[:nh], hinge_ei[:nh], visco[:nv], fidx[:n], nf, bw, env, cur_depth, cur_speed, np.bool_(True), sea,
             beta, gamma, alpha_m, alpha_f, G[:n], tol, max_iter, F[:n], M[:n], tension[:ne], stats, band[:3 * nf],
             R[:3 * nf], D[:3 * nf], Xn[:n], Vn[:n], An[:n], envw)
         if got < 1:
@@ -206,7 +206,7 @@ def record(row, t, ia, X, V, A, args, fidx, bw, env, cur_depth, cur_speed, sea, 
     K.loads(X[:n], V[:n], t, elements[:ne], L0[:ne], EA[:ne], cdamp[:ne], mpl[:ne], dia[:ne], cdn[:ne], cdt[:ne],
             can[:ne], cat[:ne], weight[:n], pmass[:n], padd[:n], pvol[:n], pcda[:n], bedc[:n], buoy[:ne], pbuoy[:n],
             ts_lo[:ne], ts_hi[:ne], ts_x, ts_y, hinges[:nh], hinge_ei[:nh], visco[:nv], fidx[:n], env, cur_depth,
-            cur_speed, True, sea, F[:n], M[:n], tension[:ne], np.zeros((0, 2 * bw + 1)), bw, 0.0, 0.0)
+            cur_speed, np.bool_(True), sea, F[:n], M[:n], tension[:ne], np.zeros((0, 2 * bw + 1)), bw, 0.0, 0.0)
     times[row] = t
     pos[row] = np.nan
     vel[row] = np.nan

@@ -160,7 +160,7 @@ def _assemble(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, w):
     n = hn.shape[0]
     cn, dcn, gm, dgm, bm, res, jl, jr, lower, diag, upper, rhs, r5, j5, mid, rate = w[:16]
     for j in range(n):
-        c_terms(hn[j], un[j], par, cn[j], dcn[j], True)
+        c_terms(hn[j], un[j], par, cn[j], dcn[j], np.bool_(True))
         if not steady:
             for r in range(NV):
                 mid[r] = 0.5 * (hn[j, r] + ho[j, r])
@@ -222,9 +222,9 @@ def newton_step(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, scal
         if solver == 0:
             status = block_thomas(lower, diag, upper, rhs, dx, w[17], w[18], w[19], w[20])
         elif solver == 1:
-            status = solve_dense(lower, diag, upper, rhs, dx, False)
+            status = solve_dense(lower, diag, upper, rhs, dx, np.bool_(False))
         else:
-            status = solve_banded(lower, diag, upper, rhs, dx, False)
+            status = solve_banded(lower, diag, upper, rhs, dx, np.bool_(False))
         if status != 0:
             return 3, it, err
         err = 0.0
@@ -292,7 +292,7 @@ def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale,
     saved = 0
     for i in range(nsteps):
         for j in range(n):
-            c_terms(h[j], uo[j], par, co[j], dummy, False)
+            c_terms(h[j], uo[j], par, co[j], dummy, np.bool_(False))
         node_currents(pos, vel, dt, cur, vessel_vel[i + 1], un)
         if dt_prev > 0.0:
             for j in range(n):
@@ -300,7 +300,7 @@ def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale,
                     hn[j, r] = h[j, r] + dt * (h[j, r] - h_prev[j, r]) / dt_prev
         else:
             hn[:, :] = h
-        status, its, err = newton_step(hn, h, co, un, uo, vessel_vel[i + 1], dt, par, bpar, False,
+        status, its, err = newton_step(hn, h, co, un, uo, vessel_vel[i + 1], dt, par, bpar, np.bool_(False),
                                        scale, tol, max_iter, w, solver)
         total += its
         if status != 0:
