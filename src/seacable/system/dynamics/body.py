@@ -67,7 +67,7 @@ def _body_current(q, env, cur_depth, cur_speed, uc):
         return
     x = np.array([q[0], q[1], min(q[2], 0.0)])
     acc = np.empty(3)
-    _fluid(x, 0.0, env, cur_depth, cur_speed, False, np.zeros(GRID_HEADER), uc, acc)
+    _fluid(x, 0.0, env, cur_depth, cur_speed, np.bool_(False), np.zeros(GRID_HEADER), uc, acc)
 
 
 @njit(cache=True)
@@ -95,7 +95,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     # rigid-body mass matrix about the reference point (I_g = R diag(I) R^T), plus the added mass R6 A R6^T
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
     Ma = wk[15:51].reshape((6, 6))
-    _rot6(R, add, Ma, False)
+    _rot6(R, add, Ma, np.bool_(False))
     M6[:] = Ma
     for r in range(3):
         M6[r, r] += m
@@ -217,7 +217,7 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C, fr):
     for k in range(6):
         for j in range(6):
             D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
-    _rot6(R, D, C, False)
+    _rot6(R, D, C, np.bool_(False))
     # the velocity tangent of the gyroscopic and centripetal terms: d(w x I_r w)/dw = skew(w) I_r - skew(I_r w),
     # d(m w x (w x c))/dw = m ((w.c) I + w c^T - 2 c w^T)
     Ir = wk[51:60].reshape((3, 3))

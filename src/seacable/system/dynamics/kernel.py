@@ -284,9 +284,9 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     band_forward(band, bw, z0)
     last = np.empty(2 * nt3, np.int64)
     for k in range(nt3):
-        last[k] = unit_column(band, bw, Yt[k], rows[k], False)
+        last[k] = unit_column(band, bw, Yt[k], rows[k], np.bool_(False))
         if kind == 1:
-            last[nt3 + k] = unit_column(band, bw, Yt[nt3 + k], rows[k], True)
+            last[nt3 + k] = unit_column(band, bw, Yt[nt3 + k], rows[k], np.bool_(True))
         else:
             for a in range(rows[k], last[k] + 1):
                 Yt[nt3 + k, a] = Yt[k, a] / band[a, bw]
@@ -445,8 +445,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
             # the first check of a step, where most steps converge, assembles the residual only
-            for jac in (it != 1, True):
-                solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, True, it > 0, jac, args, weight, fidx, nfree, bw,
+            for jac in (it != 1, np.bool_(True)):
+                solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
                                  env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
                                  tension, band, du, dq, out, Yt, tied, frame, spin)
@@ -537,8 +537,8 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     res_prev = np.inf
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     for it in range(max_iter):
-        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, False, True, True, args, weight, fidx, nfree, bw, env, cur_depth,
-                         cur_speed, False, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
+        solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
+                         cur_speed, np.bool_(False), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
                          spin)
         res, scale = out[0], out[1]

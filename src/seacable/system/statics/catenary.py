@@ -13,7 +13,6 @@ the vectorised public function, which also serves the first evaluation.
 
 from __future__ import annotations
 
-import functools
 import math
 import re
 
@@ -494,11 +493,10 @@ def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e
     return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
 
 
-@functools.lru_cache(maxsize=16)
 def _no_tables(ns):
-    """Table arrays saying "no table" for ``ns`` sub-lines (kept: the evaluation calls this each time)."""
+    """Table arrays saying "no table" for ``ns`` sub-lines (writable, as the tables are: numba compiles its
+    kernels again for read-only arrays)."""
     z = np.zeros(ns, np.int64)
-    z.flags.writeable = False
     return z, z, _NO_TABLE[2], _NO_TABLE[3]
 
 
@@ -601,7 +599,7 @@ def _table_profile(s, H, V, L, w, mu, LB, regime, lo, hi, tT, te, x, z, T):
             T[i] = abs(Vs)
         elif regime == 2 or regime == 3:         # grounded up to LB, then suspended
             if si >= LB:
-                x[i], z[i] = _spans_nl(H, w * (si - LB), si, w, mu, True, lo, hi, tT, te)[:2]
+                x[i], z[i] = _spans_nl(H, w * (si - LB), si, w, mu, np.bool_(True), lo, hi, tT, te)[:2]
                 T[i] = math.hypot(H, w * (si - LB))
             else:
                 if mu > 0:
@@ -616,7 +614,7 @@ def _table_profile(s, H, V, L, w, mu, LB, regime, lo, hi, tT, te, x, z, T):
         else:                                    # suspended
             Vs = VA + w * si
             if si > 0:
-                x[i], z[i] = _spans_nl(H, Vs, si, w, 0.0, False, lo, hi, tT, te)[:2]
+                x[i], z[i] = _spans_nl(H, Vs, si, w, 0.0, np.bool_(False), lo, hi, tT, te)[:2]
             else:
                 x[i], z[i] = 0.0, 0.0
             T[i] = math.hypot(H, Vs)

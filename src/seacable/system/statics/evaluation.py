@@ -22,7 +22,6 @@ negated fairlead columns.
 
 from __future__ import annotations
 
-import functools
 import re
 from dataclasses import dataclass
 
@@ -110,13 +109,6 @@ def body_data(asm: Assembly, system, external: dict | None) -> BodyData:
                     external_scale=float(np.abs(ext).max(initial=0.0)))
 
 
-@functools.lru_cache(maxsize=16)
-def _zeros(n):
-    z = np.zeros(n)
-    z.flags.writeable = False
-    return z
-
-
 def node_positions(asm: Assembly, X, R, P):
     """Global positions of every node; body nodes from their body's X and R."""
     out = np.empty_like(P)
@@ -148,7 +140,11 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     node_force = asm.node_force
     # what sits at a node above the water weighs its dry weight (the buoyancy switches off at z = 0; a
     # step, no term in the Jacobian; a node stopped at the surface counts as immersed): in the kernel
-    node_buoy = asm.node_buoy if asm.node_buoy is not None else _zeros(nn)
+    node_buoy = asm.node_buoy if asm.node_buoy is not None else np.zeros(nn)
+    # the kernels are compiled for C-contiguous arrays: the catenaries' columns (views of one table) would
+    # make numba compile them again for a strided layout, and a read-only array for read-only memory
+    e = np.ascontiguousarray(e)
+    HF, VF, HA, VA = (np.ascontiguousarray(c) for c in (cat.H_fairlead, cat.V_fairlead, cat.H_anchor, cat.V_anchor))
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     force_max = getattr(asm, "_force_max", None)
@@ -158,16 +154,15 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     if not any(k is not None for k in bd.khs):
         # everything in one compiled call
         jac, hydro = np.empty((ndof, ndof)), np.empty((6 * nb, 6 * nb))
-        scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead,
-                                cat.V_fairlead, cat.H_anchor, cat.V_anchor, cat.stiffness, cat.regime, _GROUNDED,
+        scale = _k.assemble_all(P, st.X, st.R, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA,
+                                cat.stiffness, cat.regime, _GROUNDED,
                                 float(asm.friction), node_force, node_buoy, asm.node_kind, asm.node_body,
                                 asm.node_dof, nb, ndof, bd.mass, bd.rcg, bd.volume, bd.rcb, bd.awp, bd.iwp, bd.z0,
                                 asm.rho, asm.g, bd.external, float(load_factor), floor, fa, fb, nf, res, jac_lines, jac, hydro)
         return Evaluation(res, jac, jac_lines, cat, anchor_is_a, fa, fb, e, nf, scale, hydro)
     grounded = _GROUNDED[cat.regime]
     K = cat.stiffness
-    _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, cat.H_fairlead, cat.V_fairlead,
-                cat.H_anchor, cat.V_anchor, K, grounded, float(asm.friction), node_force, node_buoy, asm.node_kind,
+    _k.assemble(P, st.X, asm.sub_a, asm.sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, grounded, float(asm.friction), node_force, node_buoy, asm.node_kind,
                 asm.node_body, asm.node_dof, nb, ndof, fa, fb, nf, res, jac_lines)
     own, own_jac = _own_terms(asm, bd, st.X, st.R)
     jac = jac_lines.copy()
