@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from .._jit import njit
+from ..._jit import njit
 
 
 @njit(cache=True, error_model="numpy")
