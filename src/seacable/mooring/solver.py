@@ -722,8 +722,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     base = 0  # the output in row 0 of the stored arrays
 
     def record(k):
+        # ``evaluated`` given, as run_outputs gives it: one compiled record_output for both
         LP.record_output(k - base, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec,
-                         model.cur_depth, model.cur_speed, model.sea, F, M, tension, *store)
+                         model.cur_depth, model.cur_speed, model.sea, F, M, tension, *store, False)
 
     def block(stop):
         """The stored outputs ``base`` to ``stop - 1`` as a run (copies: the rows are used again)."""

@@ -264,8 +264,9 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
     integrate_positions(h, np.zeros(3), par, pos)
     for _ in range(20):
         u = _currents_at(cur, pos, vel)
+        # every argument given, as march gives them: one compiled newton_step for both
         status, its, err = newton_step(h, h, dummy, u, u, vel, 1.0, par, bpar, True, scale, tol,
-                                       max_iter, w)
+                                       max_iter, w, 0)
         if status != 0:
             raise ConvergenceError(
                 f"steady tow: {STATUS[status]} after {its} iterations (scaled correction {err:.3g}). "
