@@ -5,6 +5,7 @@ same floats, to the last bit, for every result variable."""
 
 from __future__ import annotations
 
+import itertools
 import math
 import types
 
@@ -85,7 +86,7 @@ def test_step_samples_are_those_of_fixed_blocks_whatever_range_is_asked_for():
     for _ in range(5):
         samples = StepSamples(fn, interval, h, sub, n_out * sub, block=64)
         cuts = np.unique(np.concatenate(([0, n_out * sub], sub * rng.integers(1, n_out, 12))))
-        for i0, i1 in zip(cuts[:-1], cuts[1:]):
+        for i0, i1 in itertools.pairwise(cuts):
             got = samples(int(i0), int(i1))
             assert all(g.flags.c_contiguous for g in got)
             assert np.array_equal(got[0], whole[0][i0:i1]) and np.array_equal(got[1], whole[1][i0:i1])

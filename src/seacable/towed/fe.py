@@ -38,8 +38,14 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from ..mooring import kernel as K
 from ..mooring.network import FREE, Network, network_from_line
-from ..mooring.solver import (MooringModel, StepSamples, Water, advance_interval, generalized_alpha,
-                             static_equilibrium)
+from ..mooring.solver import (
+    MooringModel,
+    StepSamples,
+    Water,
+    advance_interval,
+    generalized_alpha,
+    static_equilibrium,
+)
 from . import fe_kernel as FK
 
 __all__ = ["TowedFERun", "TowedSystem", "simulate_towed", "steady_start", "towed_system"]
