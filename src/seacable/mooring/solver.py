@@ -478,6 +478,45 @@ def pushover(model: MooringModel, offsets, direction=(1.0, 0.0, 0.0), *, tol: fl
 
 MotionFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
 
+#: Steps of a run whose prescribed motion is evaluated together (:class:`StepSamples`).
+SAMPLE_BLOCK = 512
+
+
+class StepSamples:
+    """Functions of time (a prescribed motion, a winch schedule) at a run's step times, the same floats however
+    the run is cut into chunks.
+
+    Step ``i`` (from 0) of a run of ``sub`` steps of ``h`` [s] per output interval of ``interval`` [s] ends at
+    ``interval k + h (s + 1)`` with ``k, s = divmod(i, sub)``. ``fn`` (times -> a tuple of arrays, times first)
+    is evaluated on fixed blocks of ``block`` steps aligned to the step index from the run's start (the last one
+    cut at step ``total``), never on a chunk's own range: a value does not depend on the chunk it falls in (an
+    evaluation of many times at once, a matrix product whose kernel and summation order change with the number
+    of rows, the sines of :func:`seacable.seastate.cos_sin` taken afresh every 32 rows from its first, may round
+    a time's value differently by where it stands in the array), and so not on the wall clock that sizes the
+    chunks. Blocks before the last one asked for are dropped."""
+
+    def __init__(self, fn, interval: float, h: float, sub: int, total: int, block: int = SAMPLE_BLOCK):
+        self.fn, self.interval, self.h, self.sub, self.total, self.block = fn, interval, h, sub, total, block
+        self._blocks: dict[int, tuple] = {}
+
+    def _evaluate(self, b: int) -> tuple:
+        i = np.arange(b * self.block, min((b + 1) * self.block, self.total))
+        k, s = np.divmod(i, self.sub)
+        return tuple(np.asarray(c) for c in self.fn(self.interval * k + self.h * (s + 1)))
+
+    def __call__(self, i0: int, i1: int) -> tuple:
+        """The values at steps ``i0`` to ``i1 - 1`` (contiguous arrays)."""
+        b0, b1 = i0 // self.block, (i1 - 1) // self.block
+        self._blocks = {b: v for b, v in self._blocks.items() if b >= b0}
+        for b in range(b0, b1 + 1):
+            if b not in self._blocks:
+                self._blocks[b] = self._evaluate(b)
+        parts = [(self._blocks[b], max(i0 - b * self.block, 0), min(i1 - b * self.block, self.block))
+                 for b in range(b0, b1 + 1)]
+        return tuple(np.ascontiguousarray(np.concatenate([v[j][lo:hi] for v, lo, hi in parts]))
+                     for j in range(len(parts[0][0])))
+
+
 
 def advance_interval(t0, h, sub, channels, steps, stats, max_halvings, max_iter, what, fix, *, failed_at=None):
     """Advance the state one output interval: ``sub`` steps of ``h`` from ``t0``, each failed step halved.
@@ -758,7 +797,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
                                model.env, model.cur_depth, model.cur_speed, True, model.sea, beta, gamma, alpha_m,
                                alpha_f, hist, tol, max_iter, F, M, tension, stats)
 
-    sampled = (0, 0, ())  # the last chunk's outputs (k0, k1) and its motion samples
+    samples = StepSamples(channels, output_interval, h, sub, n_out * sub)
     try:
         k, size = 0, 1
         while k < n_out:
@@ -768,15 +807,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
             model.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
             if math.isfinite(model.sea_end()):  # the chunk inside the window
                 k1 = min(k1, max(k + 1, math.floor(model.sea_end() / output_interval + 1e-9)))
-            if sampled[0] <= k < sampled[1]:  # the rest of a chunk a failed step cut short: its samples again
-                k1 = min(k1, sampled[1])
-                j0, j1 = (k - sampled[0]) * sub, (k1 - sampled[0]) * sub
-                px, pv, pa = (c[j0:j1] for c in sampled[2])
-            else:
-                # the motion on the chunk's step grid, once for each step (the same floats as interval by interval)
-                grid = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
-                px, pv, pa = (np.ascontiguousarray(c) for c in channels(grid.ravel()))
-                sampled = (k, k1, (px, pv, pa))
+            px, pv, pa = samples(k * sub, k1 * sub)  # the motion at the chunk's steps (whatever the chunk)
             tick = _time.perf_counter()
             got = LP.run_outputs(k, k1, base, output_interval, h, sub, px, pv, pa, X, V, A, knodes, net.channel, *args,
                                  model.fidx, model.nfree, model.bw, model.env, env_rec, model.cur_depth,

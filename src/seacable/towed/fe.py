@@ -38,7 +38,14 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from ..mooring import kernel as K
 from ..mooring.network import FREE, Network, network_from_line
-from ..mooring.solver import MooringModel, Water, advance_interval, generalized_alpha, static_equilibrium
+from ..mooring.solver import (
+    MooringModel,
+    StepSamples,
+    Water,
+    advance_interval,
+    generalized_alpha,
+    static_equilibrium,
+)
 from . import fe_kernel as FK
 
 __all__ = ["TowedFERun", "TowedSystem", "simulate_towed", "steady_start", "towed_system"]
@@ -358,13 +365,12 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
     interrupted = False
     start = _time.perf_counter()
     reported = 0
+    samples = StepSamples(lambda t: (*channels(t), lengths(t)), output_interval, h, sub, n_out * sub)
     k, size = 0, 1
     try:
         while k < n_out:
             k1 = min(n_out, k + size)
-            tg = (output_interval * np.arange(k, k1))[:, None] + h * np.arange(1, sub + 1)[None, :]
-            px, pv, pa = (np.ascontiguousarray(c) for c in channels(tg.ravel()))
-            ls = lengths(tg.ravel())
+            px, pv, pa, ls = samples(k * sub, k1 * sub)  # the motion and lengths at the chunk's steps
             tick = _time.perf_counter()
             got = FK.towed_outputs(k, k1, output_interval, h, sub, px, pv, pa, ls, ia, Xc, Vc, Ac, G,
                                    system.element_length, system.lock, s_node, wpl, pw, pc, args, fidx, channel, bw, env,
