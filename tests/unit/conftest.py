@@ -101,7 +101,8 @@ def write_sweep(folder, runs: list[tuple[dict, object]], name="storm", failed: d
     return folder
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def synth():
-    """The builders of this module: ``result``, ``case``, ``sweep`` and the ``nodes`` of every line."""
+    """The builders of this module: ``result``, ``case``, ``sweep`` and the ``nodes`` of every line (pure
+    functions: one namespace serves the session, and module-scoped fixtures)."""
     return SimpleNamespace(result=synthetic_result, case=chain_case, sweep=write_sweep, nodes=NODES)

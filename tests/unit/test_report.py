@@ -141,11 +141,12 @@ def _record(seed: int, n: int = 600, mean: float = 2.0e6, amplitude: float = 4e4
     return mean + np.sum(amp[:, None] * np.cos(2 * np.pi * f[:, None] * t + phase[:, None]), axis=0)
 
 
-@pytest.fixture
-def sweep_dir(synth, tmp_path):
+@pytest.fixture(scope="module")
+def built_sweep(synth, tmp_path_factory):
     """Two sea states x five seeds of a two-line chain mooring (MBS 7.3 MN); in the 8 m sea line L1's tension
     reaches 4.6 MN, over the API RP 2SK intact allowable 7.3 / 1.67 = 4.37 MN: a check that fails. The anchors
-    take an uplift of 0.8 T 3/5 (under 2.3 MN)."""
+    take an uplift of 0.8 T 3/5 (under 2.3 MN). Built once; each test reads its own copy (``sweep_dir``)."""
+    tmp_path = tmp_path_factory.mktemp("built")
     runs = []
     for hs, tp, mean in ((4.0, 9.0, 2.0e6), (8.0, 11.0, 4.2e6)):
         for seed in range(5):
@@ -155,7 +156,13 @@ def sweep_dir(synth, tmp_path):
                               dt=DT, case=case, body_xy=track)
             runs.append(({"environment.waves.hs": hs, "environment.waves.tp": tp,
                           "environment.waves.seed": float(seed)}, ds))
-    folder = synth.sweep(tmp_path / "sweep", runs, name="spread_storm")
+    return synth.sweep(tmp_path / "sweep", runs, name="spread_storm")
+
+
+@pytest.fixture
+def sweep_dir(built_sweep, tmp_path):
+    """A copy of ``built_sweep`` in this test's folder (a test may write beside it), and a scatter diagram."""
+    folder = Path(shutil.copytree(built_sweep, tmp_path / "sweep"))
     scatter = tmp_path / "scatter.csv"
     scatter.write_text("hs,tp,probability\n4.0,9.0,0.8\n8.0,11.0,0.2\n", encoding="utf-8")
     return folder, scatter

@@ -288,7 +288,8 @@ def test_run_case_records_warnings_and_errors():
 
 def test_interrupted_sweep_resumes_with_the_missing_cases_only(tmp_path):
     """Kill a running sweep (the command and its workers), run it again: only the missing cases run."""
-    base = {**BASE, "analysis": {**BASE["analysis"], "segment_length": 2.0, "duration": 300.0}}
+    # 100 s cases (0.2-0.8 s each): the test polls every 0.05 s, so the kill still lands part way through the 12
+    base = {**BASE, "analysis": {**BASE["analysis"], "segment_length": 2.0, "duration": 100.0}}
     spec = tmp_path / "sweep.yaml"
     spec.write_text(yaml.safe_dump({"name": "k", "base": base,
                                     "grid": {"analysis.ship.speed": [1.0 + 0.25 * i for i in range(12)]}}))
