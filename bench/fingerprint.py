@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import os
 import sys
 import tempfile
 import time
@@ -72,8 +73,10 @@ def run_all(only: list[str]) -> dict:
     import seacable
 
     result = {}
+    os.chdir(ROOT)  # cases read by their path in the checkout: a MoorDyn deck's result names its file
     for path in cases(only):
         name = str(path.relative_to(ROOT))
+        path = Path(name)
         start = time.perf_counter()
         try:
             try:
