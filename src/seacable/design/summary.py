@@ -24,7 +24,9 @@ Tensions are in N, durations in s, offsets in m, lives in years.
 from __future__ import annotations
 
 import contextlib
+import copy
 import csv
+import functools
 import io
 import json
 import math
@@ -126,6 +128,14 @@ def case_data(ds: xr.Dataset) -> dict | None:
     text = ds.attrs.get("case")
     if not text:
         return None
+    data = _parsed_case(text)
+    return copy.deepcopy(data) if data is not None else None  # a copy: the caller may change it
+
+
+@functools.lru_cache(maxsize=64)
+def _parsed_case(text: str) -> dict | None:
+    """A case's YAML text as a mapping, parsed once per text (a report reads each result's case for
+    every table and figure); None when it is not a mapping."""
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError:
