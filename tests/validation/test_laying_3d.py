@@ -234,7 +234,24 @@ def test_laid_cable_by_kp_has_the_slack_and_bottom_tension_it_landed_with():
     assert float(np.mean(ds.laid_slack.values[late])) == pytest.approx(-100.0 / 3e7, abs=1e-4)
 
 
-def test_laid_cable_slides_inside_a_tight_turn_until_the_friction_holds_it():
+class _TightTurnLays(dict):
+    """The tight-turn lays by the payout's integral time, each run on first use."""
+
+    def __missing__(self, integral_time):
+        payout = sc.PayoutBottomTension(tension=100.0, integral_time=integral_time)
+        self[integral_time] = sc.run(_case(route=_circle(150.0), duration=800.0, start=150.0, extensible=True,
+                                           friction=0.12, payout=payout))
+        return self[integral_time]
+
+
+@pytest.fixture(scope="module")
+def tight_turn_lay():
+    """The ship on a circle of R = 150 m, 100 N of bottom tension, the laid cable sliding against mu = 0.12: the
+    proportional control's lay (key None) is shared by the sliding test and the integral-control test."""
+    return _TightTurnLays()
+
+
+def test_laid_cable_slides_inside_a_tight_turn_until_the_friction_holds_it(tight_turn_lay):
     """The ship sails a circle of R = 150 m with 100 N of bottom tension. Held where it lands, the laid cable keeps
     about 100 N round a curve of radius 118 m: a pull of T / rho = 0.87 N/m toward the centre of the turn. With
     a friction mu = 0.12 (mu w = 0.539 N/m) it slides inward, shedding tension, until each piece is held:
@@ -248,8 +265,7 @@ def test_laid_cable_slides_inside_a_tight_turn_until_the_friction_holds_it():
     is at 1.42-1.72 mu w there. The cable laid from 500 s to 600 s lies further inside than the held lay's 32.0-33.0 m
     (measured 37.2-38.6 m)."""
     mu, radius = 0.12, 150.0
-    ds = sc.run(_case(route=_circle(radius), duration=800.0, start=150.0, extensible=True, friction=mu,
-                      payout=sc.PayoutBottomTension(tension=100.0)))
+    ds = tight_turn_lay[None]
     p = np.column_stack([ds.laid_x.values, ds.laid_y.values])
     tension = ds.laid_residual_tension.values
     window = np.flatnonzero((ds.laid_time.values >= 300.0) & (ds.laid_time.values < 600.0))
@@ -312,16 +328,14 @@ def test_laid_cable_that_never_stops_sliding_is_fixed_with_a_warning(monkeypatch
     assert float(ds.time[-1]) == 600.0
 
 
-def test_integral_control_holds_the_bottom_tension_over_sliding_laid_cable():
+def test_integral_control_holds_the_bottom_tension_over_sliding_laid_cable(tight_turn_lay):
     """Over laid cable that slides inside a tight turn (R = 150 m, mu = 0.12) the payout's feed-forward misjudges
     the cable the lay takes, and the proportional control holds the bottom tension 16 % under its 100 N target
     (measured mean 84.1 N from 300 s to 800 s). With an integral time of 100 s it holds the target on average:
     to 2 N (measured 99.85 N; the nodes landing and the turn's transient swing it 88-125 N)."""
     mean = {}
     for integral_time in (None, 100.0):
-        payout = sc.PayoutBottomTension(tension=100.0, integral_time=integral_time)
-        ds = sc.run(_case(route=_circle(150.0), duration=800.0, start=150.0, extensible=True, friction=0.12,
-                          payout=payout))
+        ds = tight_turn_lay[integral_time]
         mean[integral_time] = float(np.mean(ds.bottom_tension.values[ds.time.values >= 300.0]))
     assert mean[None] < 90.0
     assert mean[100.0] == pytest.approx(100.0, abs=2.0)
