@@ -126,8 +126,8 @@ def test_turning_ship_lays_the_cable_inside_its_track_as_the_turning_span_predic
     from seacable.laying.plan_run import _station_props
 
     payout = sc.PayoutSlack(slack=0.05) if bottom is None else sc.PayoutBottomTension(tension=bottom)
-    # steady in the turning frame from t = 1000 s: 1300 s gives the same largest offsets, slack and layback errors as
-    # 1600 s did (to 1 mm; 16 outputs and 150 laid nodes, a sixth of the circle)
+    # steady in the turning frame from t = 1000 s: 1300 s gives the same largest offsets, slack and layback
+    # errors as 1600 s did (to 1 mm; 16 outputs and 150 laid nodes, a sixth of the circle)
     case = _case(route=_circle(radius), duration=1300.0, mass=mass, start=150.0, payout=payout,
                  extensible=bottom is not None, friction=friction)
     ds = sc.run(case)
@@ -145,8 +145,8 @@ def test_turning_ship_lays_the_cable_inside_its_track_as_the_turning_span_predic
         np.testing.assert_allclose(ds.layback.values[late], ref["layback"], rtol=0, atol=0.1)
         np.testing.assert_allclose(ds.entry_angle.values[late], math.degrees(ref["entry_angle"]), rtol=0, atol=0.02)
     else:
-        # the ripple of 2 m nodes landing (measured 94.2-106.0 N held, 92.0-107.0 N with the touchdown node on the
-        # friction's spring, its phase shifted; to 1600 s: 91.6-107.0 N and 89.5-107.0 N)
+        # the ripple of 2 m nodes landing (measured 94.2-106.0 N held, 92.0-107.0 N with the touchdown node on
+        # the friction's spring, its phase shifted; to 1600 s: 91.6-107.0 N and 89.5-107.0 N)
         np.testing.assert_allclose(ds.bottom_tension.values[late], bottom, rtol=0, atol=10.0 if friction is None else 12.0)
         assert float(np.mean(ds.bottom_tension.values[late])) == pytest.approx(bottom, abs=1.0)
         np.testing.assert_allclose(ds.layback.values[late], ref["layback"], rtol=0, atol=1.5)
@@ -226,7 +226,7 @@ def test_laid_cable_by_kp_has_the_slack_and_bottom_tension_it_landed_with():
     lands with it: measured to 1e-14; tolerance 1e-9) and, under a 100 N bottom tension, the tension held
     (measured 99.73 N on average; tolerance 2 N, as the controller holds it) and the laid cable taut: its slack is
     the elastic -T/EA = -3e-6 to the nodes' landing (measured +3e-5 from segments of 2 m: 0.06 mm each)."""
-    # the nodes landed from 400 s to 600 s (100) give what those to 900 s gave: slack 1e-13 off, 99.73 N, +2.9e-5
+    # the nodes landed from 400 s to 600 s (100) give what those to 900 s did: slack 1e-13 off, 99.73 N, +2.9e-5
     ds = sc.run(_case(route=STRAIGHT, duration=600.0))
     late = ds.laid_time.values >= 400.0
     np.testing.assert_allclose(ds.laid_slack.values[late], 0.05, rtol=0, atol=1e-9)
@@ -237,20 +237,23 @@ def test_laid_cable_by_kp_has_the_slack_and_bottom_tension_it_landed_with():
     assert float(np.mean(ds.laid_slack.values[late])) == pytest.approx(-100.0 / 3e7, abs=1e-4)
 
 
+TIGHT_RADIUS, TIGHT_MU = 150.0, 0.12      # the tight turn and the friction that lets its laid cable slide
+
+
 class _TightTurnLays(dict):
     """The tight-turn lays by the payout's integral time, each run on first use."""
 
     def __missing__(self, integral_time):
         payout = sc.PayoutBottomTension(tension=100.0, integral_time=integral_time)
-        self[integral_time] = sc.run(_case(route=_circle(150.0), duration=800.0, start=150.0, extensible=True,
-                                           friction=0.12, payout=payout))
+        self[integral_time] = sc.run(_case(route=_circle(TIGHT_RADIUS), duration=800.0, start=150.0,
+                                           extensible=True, friction=TIGHT_MU, payout=payout))
         return self[integral_time]
 
 
 @pytest.fixture(scope="module")
 def tight_turn_lay():
-    """The ship on a circle of R = 150 m, 100 N of bottom tension, the laid cable sliding against mu = 0.12: the
-    proportional control's lay (key None) is shared by the sliding test and the integral-control test."""
+    """The ship on a circle of R = 150 m, 100 N of bottom tension, the laid cable sliding against mu = 0.12:
+    the proportional control's lay (key None) is shared by the sliding test and the integral-control test."""
     return _TightTurnLays()
 
 
@@ -267,7 +270,7 @@ def test_laid_cable_slides_inside_a_tight_turn_until_the_friction_holds_it(tight
     0.9 mu w (measured 0.967): a friction twice too strong holds the cable at half the limit. The held lay
     is at 1.42-1.72 mu w there. The cable laid from 500 s to 600 s lies further inside than the held lay's 32.0-33.0 m
     (measured 37.2-38.6 m)."""
-    mu, radius = 0.12, 150.0
+    mu = TIGHT_MU
     ds = tight_turn_lay[None]
     p = np.column_stack([ds.laid_x.values, ds.laid_y.values])
     tension = ds.laid_residual_tension.values
