@@ -312,10 +312,16 @@ def _short_route_lay():
                                                      route=route))
 
 
-def test_cli_animate_route_lay_plan_and_profile(tmp_path, monkeypatch):
+@pytest.fixture(scope="module")
+def short_route_lay():
+    """The run of `_short_route_lay`, shared by the two tests that draw it (each takes a deep copy)."""
+    return sc.run(_short_route_lay())
+
+
+def test_cli_animate_route_lay_plan_and_profile(tmp_path, monkeypatch, short_route_lay):
     """A 3-D lay animates as two panels, plan view (x, y) and profile by KP; the last frame's suspended
     cable runs from the ship, at its KP on the surface, down to the touchdown on the seabed."""
-    nc = write_netcdf(sc.run(_short_route_lay()), tmp_path / "lay3d.nc")
+    nc = write_netcdf(short_route_lay.copy(deep=True), tmp_path / "lay3d.nc")
     ds = read_netcdf(nc)
     figures = []
     close = plt.close
@@ -346,13 +352,13 @@ def test_cli_animate_route_lay_plan_and_profile(tmp_path, monkeypatch):
     close(fig)
 
 
-def test_route_lay_shape_is_the_profile_by_kp():
+def test_route_lay_shape_is_the_profile_by_kp(short_route_lay):
     """A 3-D lay's shape figure draws each snapshot along the route by KP (by x it would fold back on itself after
     an alter-course): the last snapshot runs from the ship's KP on the surface down to the seabed, and the laid
     cable is drawn at its KPs."""
     from seacable.plot.laying import _laying_dynamic
 
-    ds = sc.run(_short_route_lay())
+    ds = short_route_lay.copy(deep=True)
     fig = _laying_dynamic(ds, plt)["shape"]
     (ax,) = fig.axes
     assert ax.get_xlabel() == "KP [m]" and "along the route" in ax.get_title()

@@ -288,10 +288,15 @@ def test_plan_spreads_a_sharp_alter_course_as_the_dynamic_lay(speed, tension):
     plan = sc.run(sc.Case(name="plan", line=line, environment=env, analysis=LayPlanAnalysis(
         route=route, ship=PlanShip(speed=speed), target=target, kp_step=5.0)))
     payout = sc.PayoutSlack(slack=0.05) if tension is None else sc.PayoutBottomTension(tension=tension)
+    # the ship sails 5 laybacks past the corner (to KP 2400 at most): there both offsets have decayed below
+    # 0.3 % of the largest cut (measured to KP 2400: 0.2 % at 0.5 m/s, 0.05 % under 200 N), so the later KPs
+    # asserted nothing more
+    end_kp = min(2400.0, 1000.0 + 5.0 * float(np.interp(1000.0, plan.kp.values, plan.layback.values)))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         lay = sc.run(sc.Case(name="lay", line=line, environment=env, analysis=sc.LayingDynamicAnalysis(
-            ship=sc.ShipMotion(speed=speed, start_x=600.0), payout=payout, duration=1800.0 / speed,
+            ship=sc.ShipMotion(speed=speed, start_x=600.0), payout=payout,
+            duration=5.0 / speed * math.ceil((end_kp - 600.0) / 5.0),
             segment_length=2.0, output_interval=5.0 / speed, route=route, extensible=tension is not None)))
     kp = lay.ship_kp.values
     after = kp > 1000.0
