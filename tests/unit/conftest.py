@@ -106,3 +106,18 @@ def synth():
     """The builders of this module: ``result``, ``case``, ``sweep`` and the ``nodes`` of every line (pure
     functions: one namespace serves the session, and module-scoped fixtures)."""
     return SimpleNamespace(result=synthetic_result, case=chain_case, sweep=write_sweep, nodes=NODES)
+
+
+def count_colours(pixels) -> int:
+    """The number of distinct RGB colours of an image read by ``plt.imread`` (values k / 255 from the 8-bit PNGs
+    matplotlib writes): ``np.unique(pixels.reshape(-1, 3), axis=0)``'s count, from one integer per pixel
+    (np.unique along an axis took seconds an image). A deeper PNG's near colours would merge: fewer, never
+    more."""
+    q = np.round(np.asarray(pixels)[..., :3] * 255).astype(np.uint32)
+    return int(np.unique((q[..., 0] << 16) | (q[..., 1] << 8) | q[..., 2]).size)
+
+
+@pytest.fixture(scope="session")
+def n_colours():
+    """:func:`count_colours`: the plot tests' check that something was drawn."""
+    return count_colours

@@ -44,15 +44,6 @@ SHAPE_Y = "elevation (0 at the still water level) [m]"  # long_name and units of
 SCENE = {"seabed", "sea surface"}
 
 
-def _n_colours(pixels) -> int:
-    """The number of distinct RGB colours of an image read by ``plt.imread`` (values k / 255 from the 8-bit PNGs
-    matplotlib writes): ``np.unique(pixels.reshape(-1, 3), axis=0)``'s count, from one integer per pixel
-    (np.unique along an axis took seconds an image). A deeper PNG's near colours would merge: fewer, never
-    more."""
-    q = np.round(np.asarray(pixels)[..., :3] * 255).astype(np.uint32)
-    return int(np.unique((q[..., 0] << 16) | (q[..., 1] << 8) | q[..., 2]).size)
-
-
 def _case(**analysis):
     data = yaml.safe_load(EXAMPLE.read_text())
     data["analysis"] = {"fairlead": FAIRLEAD, "n_elements": 20, **analysis}
@@ -315,7 +306,7 @@ def test_nan_padded_lines_without_s(calm):
     ("pushover", ["oc3_pushover.png", "oc3_pushover_shapes.png"]),
     ("dynamic", ["oc3_shape.png", "oc3_tension.png"]),
 ])
-def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names):
+def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names, n_colours):
     ds = request.getfixturevalue(fixture)
     for analysis, function in MOORING_FIGURES.items():  # as the lead registers them in plot.FIGURES
         monkeypatch.setitem(plot_module.FIGURES, analysis, function)
@@ -325,7 +316,7 @@ def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names)
         assert path.read_bytes()[:8] == PNG_SIGNATURE
         pixels = plt.imread(path)[..., :3]
         # more than a handful of colours: curves and text were drawn on the white canvas
-        assert _n_colours(pixels) > 10, path.name
+        assert n_colours(pixels) > 10, path.name
 
 
 def test_figures_of_a_line_dimension_write_to_png(dynamic, calm, tmp_path):

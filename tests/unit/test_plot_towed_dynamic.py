@@ -27,15 +27,6 @@ NAMES = ["top_tension", "plan_view", "end_trajectories", "lower_end_depth", "ten
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
-def _n_colours(pixels) -> int:
-    """The number of distinct RGB colours of an image read by ``plt.imread`` (values k / 255 from the 8-bit PNGs
-    matplotlib writes): ``np.unique(pixels.reshape(-1, 3), axis=0)``'s count, from one integer per pixel
-    (np.unique along an axis took seconds an image). A deeper PNG's near colours would merge: fewer, never
-    more."""
-    q = np.round(np.asarray(pixels)[..., :3] * 255).astype(np.uint32)
-    return int(np.unique((q[..., 0] << 16) | (q[..., 1] << 8) | q[..., 2]).size)
-
-
 @pytest.fixture(scope="module")
 def turn():
     return run(load_case(EXAMPLES / "paper000_turn.yaml"))
@@ -49,7 +40,7 @@ def _png_size(path: Path) -> tuple[int, int]:
     return struct.unpack(">II", head[16:24])
 
 
-def _check_pngs(paths, prefix):
+def _check_pngs(paths, prefix, n_colours):
     assert [p.name for p in paths] == [f"{prefix}_{n}.png" for n in NAMES]
     for path in paths:
         width, height = _png_size(path)
@@ -60,16 +51,16 @@ def _check_pngs(paths, prefix):
         assert path.stat().st_size > 15_000, (path.name, path.stat().st_size)
         pixels = plt.imread(path)[..., :3]
         # more than one colour: something was drawn (a blank canvas is all white)
-        assert _n_colours(pixels) > 10, path.name
+        assert n_colours(pixels) > 10, path.name
 
 
 def test_towed_dynamic_is_registered():
     assert "towed_dynamic" in FIGURES
 
 
-def test_every_figure_is_a_valid_png(turn, tmp_path):
+def test_every_figure_is_a_valid_png(turn, tmp_path, n_colours):
     paths = plot_result(turn, tmp_path / "figs")
-    _check_pngs(paths, "paper000_turn")
+    _check_pngs(paths, "paper000_turn", n_colours)
 
 
 @pytest.mark.parametrize("time, step, expected", [
@@ -134,10 +125,10 @@ def test_interrupted_result_says_so_in_every_title(turn):
             plt.close(fig)
 
 
-def test_single_time_step_still_plots(turn, tmp_path):
+def test_single_time_step_still_plots(turn, tmp_path, n_colours):
     one = turn.isel(time=[0])
     paths = plot_result(one, tmp_path, prefix="one")
-    _check_pngs(paths, "one")
+    _check_pngs(paths, "one", n_colours)
 
 
 def test_unknown_analysis_is_refused(turn, tmp_path):

@@ -47,15 +47,6 @@ TITLE = "Tug-barge towline, synthetic"
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
-def _n_colours(pixels) -> int:
-    """The number of distinct RGB colours of an image read by ``plt.imread`` (values k / 255 from the 8-bit PNGs
-    matplotlib writes): ``np.unique(pixels.reshape(-1, 3), axis=0)``'s count, from one integer per pixel
-    (np.unique along an axis took seconds an image). A deeper PNG's near colours would merge: fewer, never
-    more."""
-    q = np.round(np.asarray(pixels)[..., :3] * 255).astype(np.uint32)
-    return int(np.unique((q[..., 0] << 16) | (q[..., 1] << 8) | q[..., 2]).size)
-
-
 def towline_result(time=None, *, amplitude=AMPLITUDE, speed=2 * KNOT, payout=False,
                    analysis="towline_dynamic"):
     """A towline_dynamic result of the synthetic tow described in the module docstring."""
@@ -310,7 +301,7 @@ def test_payout_figures_skip_joints_on_the_bitt(payout):
     ("zigzag", ["tow_tension.png", "tow_tracks.png", "tow_shape.png", "tow_sway.png"]),
     ("straight", ["tow_tension.png", "tow_tracks.png", "tow_shape.png"]),
 ])
-def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names):
+def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names, n_colours):
     ds = request.getfixturevalue(fixture)
     for analysis, function in TOWLINE_FIGURES.items():  # as the lead registers them in plot.FIGURES
         monkeypatch.setitem(plot_module.FIGURES, analysis, function)
@@ -319,7 +310,7 @@ def test_plot_result_writes_pngs(request, monkeypatch, tmp_path, fixture, names)
     for path in paths:
         assert path.read_bytes()[:8] == PNG_SIGNATURE
         pixels = plt.imread(path)[..., :3]
-        assert _n_colours(pixels) > 10, path.name  # something was drawn
+        assert n_colours(pixels) > 10, path.name  # something was drawn
 
 
 def test_figures_from_a_netcdf_file(tmp_path, payout):
