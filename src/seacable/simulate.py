@@ -18,16 +18,19 @@ from .system.case import SystemCase
 
 __all__ = ["STREAMED", "check", "run", "streams"]
 
-#: analysis type -> (module, runner, pre-time-loop check or None when the run is itself cheap)
+#: analysis type -> (module, runner, check). The check is what the runner calls first: every check of the
+#: inputs and, for an analysis without a time loop that is cheap to solve (the static and modal ones), the
+#: solve itself, without the Dataset (no xarray); for a time-domain or mooring-system analysis, every check
+#: before its time loop or its equilibrium solves.
 _ANALYSES = {
-    "static": ("seacable.statics.run", "run_static", None),
-    "pushover": ("seacable.statics.run", "run_pushover", None),
-    "towed_steady": ("seacable.statics.run", "run_towed_steady", None),
-    "laying_theory": ("seacable.statics.run", "run_laying_theory", None),
-    "modal": ("seacable.modal.run", "run_modal", None),
-    "vertical_modes": ("seacable.modal.run", "run_vertical_modes", None),
-    "mooring_static": ("seacable.mooring.run", "run_mooring_static", None),
-    "mooring_pushover": ("seacable.mooring.run", "run_mooring_pushover", None),
+    "static": ("seacable.statics.run", "run_static", "solve_static"),
+    "pushover": ("seacable.statics.run", "run_pushover", "solve_pushover"),
+    "towed_steady": ("seacable.statics.run", "run_towed_steady", "solve_towed_steady"),
+    "laying_theory": ("seacable.statics.run", "run_laying_theory", "solve_laying_theory"),
+    "modal": ("seacable.modal.run", "run_modal", "solve_modal"),
+    "vertical_modes": ("seacable.modal.run", "run_vertical_modes", "solve_vertical_modes"),
+    "mooring_static": ("seacable.mooring.run", "run_mooring_static", "solve_mooring_static"),
+    "mooring_pushover": ("seacable.mooring.run", "run_mooring_pushover", "solve_mooring_pushover"),
     "towed_dynamic": ("seacable.towed.run", "run_towed_dynamic", "prepare_towed_dynamic"),
     "laying_dynamic": ("seacable.laying.run", "run_laying_dynamic", "prepare_laying_dynamic"),
     "lay_plan": ("seacable.laying.plan_run", "run_lay_plan", None),
@@ -38,11 +41,7 @@ _ANALYSES = {
     "system_dynamic": ("seacable.system.dynamics", "run_system_dynamic", "prepare_system_dynamic"),
 }
 
-#: analyses with a check before solving but no time loop (no progress callback)
-_NO_TIME_LOOP = ("system_static", "system_offsets")
-
-TIME_DOMAIN = tuple(name for name, (_, _, prepare) in _ANALYSES.items()
-                    if prepare is not None and name not in _NO_TIME_LOOP)
+TIME_DOMAIN = ("towed_dynamic", "laying_dynamic", "mooring_dynamic", "towline_dynamic", "system_dynamic")
 """The analyses with a time loop: they take a ``progress`` callback and can be interrupted."""
 
 
@@ -113,7 +112,8 @@ def check(case: Case) -> None:
     """Do everything :func:`run` does before its time loop, and raise what it would raise.
 
     A static or modal analysis is solved (it is cheap, and a line that cannot reach its fairlead
-    is only found by solving); a time-domain analysis builds its model, checks its geometry,
+    is only found by solving) by the very function its runner calls first, which builds no Dataset
+    (``_ANALYSES``); a ``lay_plan`` is run whole; a time-domain analysis builds its model, checks its geometry,
     strains and size, and stops before the first time step; a mooring-system analysis
     (``system_static``, ``system_offsets``) makes every check before its equilibrium solves.
 

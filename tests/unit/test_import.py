@@ -53,6 +53,15 @@ def test_the_command_line_and_reading_a_case_load_only_what_they_need():
         assert _heavy(modules, HEAVY + ("scipy",)) == [], name
 
 
+@pytest.mark.parametrize("name", ["paper002_vertical_cable.yaml", "oc3_hywind_static.yaml", "oc3_hywind_modes.yaml",
+                                  "paper004_lena_pushover.yaml"])
+def test_validate_of_a_static_or_modal_case_builds_no_dataset(name):
+    """``seacable validate`` solves a static or modal case (the runner's own ``solve_*``) but builds no Dataset:
+    no xarray, pandas, Dask or matplotlib (the finite-element statics of a mooring line do load numba)."""
+    code = f"from seacable.cli import main\nassert main(['validate', {str(EXAMPLES / name)!r}]) == 0"
+    assert _heavy(_loaded(code), ("xarray", "pandas", "dask", "matplotlib")) == [], name
+
+
 def test_every_public_name_resolves():
     for name in seacable.__all__:
         assert getattr(seacable, name) is not None, name

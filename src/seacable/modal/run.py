@@ -1,16 +1,22 @@
 """Runners of the modal analyses: ``modal`` (eigen-analysis of a line about its static shape) and
-``vertical_modes`` (paper 002's vertical cable)."""
+``vertical_modes`` (paper 002's vertical cable).
+
+Each runner ``run_X`` calls its ``solve_X``, which makes every check and solve that can refuse the case
+and builds no Dataset (no xarray): :func:`seacable.simulate.check` (``seacable validate``) calls the same
+``solve_X``.
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 
 from ..case import Case, ModalAnalysis, VerticalModesAnalysis
 from ..errors import InputError
-from ..results import make_dataset, var
 from ..statics.run import REF_CATENARY, equilibrium, line_arrays
 
-__all__ = ["run_modal", "run_vertical_modes"]
+__all__ = ["ModalSolution", "run_modal", "run_vertical_modes", "solve_modal", "solve_vertical_modes"]
 
 REF_002 = "Lee, S.-M. & Kim, Y.-C. (1986). A simple technique to predict the natural frequencies of the " \
           "sagged cable structures. J. Soc. Naval Architects of Korea 23(3)."
@@ -65,7 +71,23 @@ def _hanging(case: Case, s_nodes, s_mid):
     return np.full(s_nodes.size, float(fx)), z, tension(s_nodes), t_mid
 
 
-def run_modal(case: Case):
+@dataclass(frozen=True)
+class ModalSolution:
+    """What :func:`solve_modal` finds and :func:`run_modal` reports."""
+
+    modes: object            # the :func:`~seacable.modal.eigen.cable_modes` result
+    s_nodes: np.ndarray      # node arc lengths from end A [m]
+    x: np.ndarray            # static node positions relative to the anchor [m]
+    z: np.ndarray
+    tension: np.ndarray      # static node tensions [N]
+    ax: float                # the anchor's position [m]
+    az: float
+    fixed: list              # the fixed nodes
+    travel: float            # a lateral wave's travel time over the suspended line [s]
+
+
+def solve_modal(case: Case) -> ModalSolution:
+    """The static shape and the modes of a ``modal`` case: every check and solve of :func:`run_modal`."""
     from .eigen import cable_modes
 
     a: ModalAnalysis = case.analysis
@@ -107,6 +129,16 @@ def run_modal(case: Case):
     m_eff = np.array([t.mass_per_length + t.added_mass_per_length(env.water_density) for t in types])
     susp = s_mid > grounded_length
     travel = np.sum(np.diff(s_nodes)[susp] / np.sqrt(np.maximum(t_mid[susp], 1e-300) / m_eff[susp]))
+    return ModalSolution(modes, s_nodes, x, z, tension, ax, az, fixed, travel)
+
+
+def run_modal(case: Case):
+    from ..results import make_dataset, var
+
+    sol = solve_modal(case)
+    modes, s_nodes, x, z, tension, ax, az, fixed, travel = (
+        sol.modes, sol.s_nodes, sol.x, sol.z, sol.tension, sol.ax, sol.az, sol.fixed, sol.travel)
+    a: ModalAnalysis = case.analysis
     data = {
         "frequency": var("mode", modes.frequency, "Hz", "natural frequency"),
         "period": var("mode", modes.period, "s", "natural period"),
@@ -135,7 +167,9 @@ VERTICAL_SOLUTIONS = {
 }
 
 
-def run_vertical_modes(case: Case):
+def solve_vertical_modes(case: Case):
+    """Paper 002's frequencies of a ``vertical_modes`` case: ``(methods, omega)``, the solutions and their
+    angular frequencies [rad/s] (one row a solution, one column a mode)."""
     from .vertical import vertical_cable_frequencies
 
     a: VerticalModesAnalysis = case.analysis
@@ -149,6 +183,14 @@ def run_vertical_modes(case: Case):
             weight_per_length=lt.submerged_weight(env.water_density, env.gravity),
             gravity=env.gravity)).reshape(-1)
         for m in methods])
+    return methods, omega
+
+
+def run_vertical_modes(case: Case):
+    from ..results import make_dataset, var
+
+    a: VerticalModesAnalysis = case.analysis
+    methods, omega = solve_vertical_modes(case)
     data = {"period": var(("solution", "mode"), 2 * np.pi / omega, "s", "natural period"),
             "frequency": var(("solution", "mode"), omega / (2 * np.pi), "Hz", "natural frequency"),
             "description": var("solution", np.array([VERTICAL_SOLUTIONS[m] for m in methods]), "1",

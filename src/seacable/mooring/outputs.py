@@ -11,7 +11,6 @@ import math
 
 import numpy as np
 
-from ..results import var
 from .solver import MooringModel, Water, wave_number_or_zero
 
 __all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "wave_elevation"]
@@ -68,6 +67,8 @@ def wave_elevation(water: Water, time, x: float = 0.0, y: float = 0.0) -> np.nda
 
 def elevation_variables(water: Water, time) -> dict:
     """The ``wave_elevation`` at the origin (x = y = 0) of a run with waves (nothing in calm water)."""
+    from ..results import var
+
     if water.wave_height <= 0.0 and water.sea is None:
         return {}
     return {"wave_elevation": var("time", wave_elevation(water, time), "m",

@@ -10,9 +10,6 @@ import numpy as np
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..environment import IrregularWaves
-from ..extremes import snap_rows
-from ..results import make_dataset, var
-from ..sink import open_sink
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
@@ -50,6 +47,8 @@ __all__ = [
     "run_variables",
     "slack_variables",
     "snap_variables",
+    "solve_mooring_pushover",
+    "solve_mooring_static",
     "stored_per_output",
     "water_of",
     "wave_elevation",
@@ -262,6 +261,8 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     time-domain run so that the end forces include the half element's water loads and inertia
     (``kinematic_nodes``: the nodes they hold, None for all).
     """
+    from ..results import var
+
     net = model.network
     lead = tuple(dims[:-1])
     ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes)
@@ -291,6 +292,8 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
 def point_variables(model: MooringModel, support, dims=("node",)):
     """Force on each point of a network (held nodes and MoorDyn points): every line meeting there and
     the point's attachments, dimension ``point``. [N]"""
+    from ..results import var
+
     net = model.network
     points = np.flatnonzero((net.kind != FREE) | ~np.isfinite(net.arc_length))
     lead = tuple(dims[:-1])
@@ -304,6 +307,8 @@ def point_variables(model: MooringModel, support, dims=("node",)):
 
 
 def _coords(net: Network):
+    from ..results import var
+
     return {"node": var("node", np.arange(net.n_nodes), "1", "node index, 0 at the anchor"),
             "s": var("node", net.arc_length, "m", "unstretched arc length from the anchor"),
             "element": var("element", np.arange(net.n_elements), "1", "element index, 0 at the anchor")}
@@ -400,11 +405,26 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     return MooringDynamicSetup(model, start, motion)
 
 
+def solve_mooring_static(case: Case):
+    """The checks and the static equilibrium of a ``mooring_static`` case: ``(model, state)``, what
+    :func:`run_mooring_static` reports (no Dataset built: :func:`seacable.simulate.check` calls it)."""
+    model = prepare_mooring_static(case)
+    return model, static_equilibrium(model, tol=case.analysis.tolerance)
+
+
+def solve_mooring_pushover(case: Case):
+    """The checks and the equilibria of a ``mooring_pushover`` case: ``(model, offsets, states)``, what
+    :func:`run_mooring_pushover` reports (no Dataset built: :func:`seacable.simulate.check` calls it)."""
+    a: MooringPushoverAnalysis = case.analysis
+    model, offsets = prepare_mooring_pushover(case)
+    return model, offsets, pushover(model, offsets, tol=a.tolerance)
+
+
 def run_mooring_static(case: Case):
     """Static equilibrium of the finite-element model (analysis ``mooring_static``)."""
-    a = case.analysis
-    model = prepare_mooring_static(case)
-    st = static_equilibrium(model, tol=a.tolerance)
+    from ..results import make_dataset
+
+    model, st = solve_mooring_static(case)
     data = network_variables(model, st.position, st.tension, st.support)
     return make_dataset(data, _coords(model.network), analysis="mooring_static", case=case, references=REFERENCES,
                         settings=_settings(model, iterations=st.iterations, residual=st.residual))
@@ -412,9 +432,9 @@ def run_mooring_static(case: Case):
 
 def run_mooring_pushover(case: Case):
     """Quasi-static force-excursion curve of the finite-element model (analysis ``mooring_pushover``)."""
-    a: MooringPushoverAnalysis = case.analysis
-    model, offsets = prepare_mooring_pushover(case)
-    states = pushover(model, offsets, tol=a.tolerance)
+    from ..results import make_dataset, var
+
+    model, offsets, states = solve_mooring_pushover(case)
     X = np.array([st.position for st in states])
     T = np.array([st.tension for st in states])
     S = np.array([st.support for st in states])
@@ -433,6 +453,8 @@ def output_count(duration: float, output_interval: float) -> int:
 
 def slack_variables(run: MooringRun) -> dict:
     """The count of slack elements at each output of a time-domain run (or a block of its outputs)."""
+    from ..results import var
+
     return {"slack_elements": var("time", np.sum(run.tension <= 0.0, axis=1), "1", "number of slack elements")}
 
 
@@ -441,6 +463,9 @@ def snap_variables(sink, network: Network) -> dict:
     ``segment_tension`` stored in ``sink`` (:mod:`seacable.sink`), read line by line: (line, time, element),
     or (time, element) for a single line. Events are in the order of the times the elements pulled taut, then
     of the elements (network indices)."""
+    from ..extremes import snap_rows
+    from ..results import var
+
     time = sink.read("time")
     n_lines = len(network.line_nodes)
     rise, peak_time, element, peak = [], [], [], []
@@ -464,6 +489,8 @@ def snap_variables(sink, network: Network) -> dict:
 def strength_variables(network: Network) -> dict:
     """The line's ``breaking_load``: the least minimum breaking load of its line types [N] (NaN when one has
     none), what the design checks compare its tension with (:mod:`seacable.design.checks`)."""
+    from ..results import var
+
     mbl = network.breaking_load
     value = float(np.min(mbl)) if mbl is not None and mbl.size and np.all(np.isfinite(mbl)) else math.nan
     return {"breaking_load": var((), value, "N", "minimum breaking load of the line (its weakest segment)")}
@@ -480,6 +507,8 @@ def run_attributes(run: MooringRun) -> dict:
 def run_variables(model: MooringModel, run: MooringRun):
     """The variables and coordinates of (a block of outputs of) a time-domain run of a single-line network:
     everything but the snap loads, which take the whole run (:func:`snap_variables`)."""
+    from ..results import var
+
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
                              velocity=run.velocity, acceleration=run.acceleration, time=run.time,
                              kinematic_nodes=run.kinematic_nodes)
@@ -493,6 +522,8 @@ def run_mooring_dynamic(case: Case, progress=None, out=None):
 
     ``out``: a NetCDF file the outputs are written into as they are computed (:class:`seacable.sink.NetcdfSink`);
     the Dataset returned then reads from it. Without it the result is in memory, filled block by block."""
+    from ..sink import open_sink
+
     a: MooringDynamicAnalysis = case.analysis
     setup = prepare_mooring_dynamic(case)
     model = setup.model

@@ -1,5 +1,9 @@
 """Runners of the static analyses: a case in, a labelled Dataset out.
 
+Each runner ``run_X`` calls its ``solve_X``, which makes every check and solve that can refuse the case
+and builds no Dataset (no xarray): :func:`seacable.simulate.check` (``seacable validate``) calls the same
+``solve_X``.
+
 ``static`` and ``pushover`` (multi-segment elastic catenary), ``towed_steady`` (paper 000's
 steady tow) and ``laying_theory`` (paper 001's straight-line theory).
 """
@@ -13,9 +17,9 @@ import numpy as np
 
 from ..case import Case, LayingTheoryAnalysis, PushoverAnalysis, StaticAnalysis, TowedSteadyAnalysis
 from ..errors import InputError, NoSolutionError, SeacableWarning
-from ..results import make_dataset, var
 
-__all__ = ["line_arrays", "run_laying_theory", "run_pushover", "run_static", "run_towed_steady"]
+__all__ = ["line_arrays", "run_laying_theory", "run_pushover", "run_static", "run_towed_steady",
+           "solve_laying_theory", "solve_pushover", "solve_static", "solve_towed_steady"]
 
 REF_CATENARY = ("Irvine, H. M. (1981). Cable Structures. MIT Press.",
                 "Jonkman, J. M. (2007). Dynamics modeling and loads analysis of an offshore floating wind "
@@ -129,10 +133,23 @@ _END_FORCES = {
 }
 
 
-def run_static(case: Case):
+def solve_static(case: Case):
+    """The equilibrium of a ``static`` case and its profile: what :func:`run_static` reports.
+
+    Returns
+    -------
+    eq, ax, az, on_seabed, prof
+        As :func:`equilibrium`, and ``eq.profile`` at the analysis' points per segment.
+    """
     a: StaticAnalysis = case.analysis
     eq, ax, az, on_seabed = equilibrium(case, a.fairlead)
-    prof = eq.profile(points_per_segment=a.points_per_segment)
+    return eq, ax, az, on_seabed, eq.profile(points_per_segment=a.points_per_segment)
+
+
+def run_static(case: Case):
+    from ..results import make_dataset, var
+
+    eq, ax, az, on_seabed, prof = solve_static(case)
     data = {
         "x": var("point", np.asarray(prof.x) + ax, "m", "horizontal position"),
         "z": var("point", np.asarray(prof.z) + az, "m", "elevation (0 at the sea surface)"),
@@ -153,7 +170,9 @@ def run_static(case: Case):
                         settings={"solver": "multi-segment elastic catenary, Newton", "seabed": on_seabed})
 
 
-def run_pushover(case: Case):
+def solve_pushover(case: Case):
+    """The force-excursion curve of a ``pushover`` case: ``(po, offsets, ax)``, the
+    :func:`~seacable.statics.multisegment.pushover` result, the offsets [m] and the anchor's x [m]."""
     from .multisegment import pushover
 
     a: PushoverAnalysis = case.analysis
@@ -170,6 +189,13 @@ def run_pushover(case: Case):
     po = pushover(lengths, weights, ea, h, v, offsets, check=in_water, point_loads=loads, seabed=on_seabed,
                   seabed_friction=seabed.friction if on_seabed else 0.0,
                   seabed_slope=seabed.slope if on_seabed else 0.0)
+    return po, offsets, ax
+
+
+def run_pushover(case: Case):
+    from ..results import make_dataset, var
+
+    po, offsets, ax = solve_pushover(case)
     data = {
         "H_fairlead": var("offset", po.H_fairlead, "N", "horizontal tension at the fairlead"),
         "V_fairlead": var("offset", po.V_fairlead, "N", "vertical tension at the fairlead"),
@@ -184,7 +210,10 @@ def run_pushover(case: Case):
                         settings={"solver": "multi-segment elastic catenary, Newton with continuation"})
 
 
-def run_towed_steady(case: Case):
+def solve_towed_steady(case: Case):
+    """The steady tow of a ``towed_steady`` case: ``(res, points, speed, clearance)``, the
+    :func:`~seacable.statics.towed.towed_line_steady` result and points, the relative flow speed [m/s]
+    (or its profile) and the lowest point's height above the seabed [m] (None without a depth)."""
     from .towed import towed_line_steady
 
     a: TowedSteadyAnalysis = case.analysis
@@ -204,7 +233,6 @@ def run_towed_steady(case: Case):
                                         body_drag_area=body.drag_area if body else 0.0,
                                         body_lift_area=body.lift_area() if body else 0.0,
                                         tangential_drag=a.tangential_drag, n_points=a.n_nodes)
-    at = [i for _, i in points]
     k = int(np.argmax(res.z))
     if res.z[k] > 1e-6 * max(case.line.length, 1.0):   # the tow point is at the surface: z = 0
         raise NoSolutionError(
@@ -212,17 +240,28 @@ def run_towed_steady(case: Case):
             "tow point, which is at the sea surface, but the steady tow weighs every part at its weight in "
             "water, which is wrong in the air. Suggested fix: less buoyancy in line (floats), a heavier body or "
             "lower end, or a slower tow.")
-    extra = {}
+    clearance = None
     if env.depth is not None:  # the tow point at the surface: z is the depth; the steady tow has no seabed
         k = int(np.argmin(res.z))
         clearance = float(res.z[k]) + float(env.depth)
-        extra["seabed_clearance"] = var((), clearance, "m", "lowest point's height above the seabed (negative: "
-                                        "through it; the steady tow has no seabed contact)")
         if clearance < 0:
             warnings.warn(f"towed_steady: the cable at s = {res.s[k]:g} m from the lower end is {-res.z[k]:g} m deep, "
                           f"below the seabed at {env.depth:g} m (environment.depth); the steady tow has no seabed "
                           "contact, so this shape goes through it. Suggested fix: tow faster, shorten the cable or "
-                          "lighten the body.", SeacableWarning, stacklevel=2)
+                          "lighten the body.", SeacableWarning, stacklevel=3)
+    return res, points, speed, clearance
+
+
+def run_towed_steady(case: Case):
+    from ..results import make_dataset, var
+
+    a: TowedSteadyAnalysis = case.analysis
+    res, points, speed, clearance = solve_towed_steady(case)
+    at = [i for _, i in points]
+    extra = {}
+    if clearance is not None:
+        extra["seabed_clearance"] = var((), clearance, "m", "lowest point's height above the seabed (negative: "
+                                        "through it; the steady tow has no seabed contact)")
     data = {
         "x": var("node", res.x, "m", "position relative to the tow point, positive astern"),
         "z": var("node", res.z, "m", "elevation relative to the tow point"),
@@ -247,7 +286,9 @@ def run_towed_steady(case: Case):
                         settings={"tangential_drag": a.tangential_drag})
 
 
-def run_laying_theory(case: Case):
+def solve_laying_theory(case: Case):
+    """Paper 001's straight-line lay of a ``laying_theory`` case: ``(speeds, exact, small)``, the ship
+    speeds [m/s] and the exact and small-angle :func:`~seacable.statics.laying.straight_line_lay` results."""
     from .laying import straight_line_lay
 
     a: LayingTheoryAnalysis = case.analysis
@@ -263,6 +304,14 @@ def run_laying_theory(case: Case):
     with warnings.catch_warnings():  # the small-angle column is reported beside the exact one on purpose
         warnings.simplefilter("ignore", SeacableWarning)
         small = straight_line_lay(**common, method="small_angle")
+    return speeds, exact, small
+
+
+def run_laying_theory(case: Case):
+    from ..results import make_dataset, var
+
+    a: LayingTheoryAnalysis = case.analysis
+    speeds, exact, small = solve_laying_theory(case)
     data = {
         "angle": var("ship_speed", np.degrees(exact.angle), "degree", "entry angle (exact root)"),
         "angle_small": var("ship_speed", np.degrees(small.angle), "degree", "entry angle (H/V small-angle)"),

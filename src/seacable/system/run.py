@@ -32,6 +32,7 @@ from ..errors import ConvergenceError, InputError, NoSolutionError
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
 from .damaged import is_most_loaded, line_tensions, most_loaded_line
 from .model import MooringSystem
+from .statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 
 __all__ = ["DOFS", "REFERENCES", "SystemSetup", "check_bodies_without_lines", "equilibrium_variables",
            "prepare_system_offsets", "prepare_system_static", "run_system_offsets", "run_system_static"]
@@ -124,10 +125,8 @@ def statics_used(case, statics: str | None = None) -> str:
 
     ``statics`` (default the analysis option ``statics``, else ``auto``): ``auto`` takes the catenary
     statics unless the environment has what they cannot model (a current, a sloping seabed:
-    :func:`seacable.system.statics.fe.needs_fe`); ``catenary`` then refuses those.
+    :func:`seacable.system.statics_mode.needs_fe`); ``catenary`` then refuses those.
     """
-    from .statics.fe import needs_fe
-
     mode = statics if statics is not None else getattr(case.analysis, "statics", "auto")
     if mode not in STATICS:
         raise InputError(f"analysis.statics: '{mode}' is not one of {', '.join(STATICS)}. Suggested fix: use "
@@ -708,7 +707,6 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
 
 def _statics_attrs(ds, setup: SystemSetup) -> None:
     """Say which statics and which stiffness the Dataset holds."""
-    from .statics.fe import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 
     ds.attrs["statics"] = setup.statics
     ds.attrs["stiffness_method"] = STIFFNESS_FD if setup.fe else STIFFNESS_ANALYTIC

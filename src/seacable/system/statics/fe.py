@@ -40,24 +40,10 @@ import numpy as np
 from ...errors import InputError, SeacableWarning
 from ...mooring import kernel as MK
 from ...mooring.network import FREE
+from ..statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 from .model import EquilibriumFields, euler, rotation
 
-__all__ = ["FEEquilibrium", "fe_equilibrium", "needs_fe"]
-
-STIFFNESS_FD = "central differences of the finite-element statics"
-STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
-
-
-def needs_fe(env) -> str:
-    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed."""
-    cur = env.current
-    speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
-    why = []
-    if any(abs(v) > 0 for v in speeds):
-        why.append(f"a current of {max(abs(v) for v in speeds):g} m/s")
-    if env.seabed.slope != 0:
-        why.append(f"a seabed sloping at {env.seabed.slope:g} rad")
-    return " and ".join(why)
+__all__ = ["STIFFNESS_ANALYTIC", "STIFFNESS_FD", "FEEquilibrium", "fe_equilibrium", "needs_fe"]
 
 
 def check_fe(system, env, where: str = "") -> None:
