@@ -27,7 +27,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 def _run(env: dict, args: list[str]) -> tuple[float, int, str]:
     start = time.perf_counter()
-    proc = subprocess.run([sys.executable, "-m", "pytest", "-q", *args], cwd=ROOT, env=env, capture_output=True,
+    proc = subprocess.run([sys.executable, "-m", "pytest", "-q", "-rfE", *args], cwd=ROOT, env=env, capture_output=True,
                           text=True, check=False)
     return time.perf_counter() - start, proc.returncode, proc.stdout
 
@@ -44,6 +44,9 @@ def main(args: list[str]) -> None:
             load = os.getloadavg()[0]
             wall, code, out = _run(env, args)
             print(f"{label:>6} {load:13.2f} {wall:9.1f} {wall / 60:11.2f} {code:5d}")
+            failed = [s for s in out.splitlines() if s.startswith(("FAILED", "ERROR"))]
+            if code != 0:  # say what failed: a timing of a failing suite is no timing
+                print("\n".join(failed or out.splitlines()[-15:]))
             if label == "cold":
                 lines = out.splitlines()
                 start = next((k for k, s in enumerate(lines) if "slowest" in s and "durations" in s), None)
