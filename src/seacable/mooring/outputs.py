@@ -11,9 +11,33 @@ import math
 
 import numpy as np
 
+from ..environment import IrregularWaves
 from .solver import MooringModel, Water, wave_number_or_zero
 
-__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "wave_elevation"]
+__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "wave_elevation",
+           "water_of_environment"]
+
+
+def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0) -> Water:
+    """The :class:`~seacable.mooring.solver.Water` of an environment (a line's or a system's): density, gravity,
+    depth, the seabed (plane, or its profile when the environment has one) with ``seabed_contact``'s stiffness,
+    damping and friction velocity, the current profile, regular waves or an irregular sea's components, and
+    the mass-proportional Rayleigh damping ``rayleigh_mass``. [1/s]"""
+    env = environment
+    cur = env.current
+    depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
+    w = env.waves
+    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
+    w_reg = None if sea is not None else w
+    profile = env.seabed.profile
+    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
+                 seabed_stiffness=seabed_contact.stiffness, seabed_damping=seabed_contact.damping,
+                 friction=env.seabed.friction, friction_velocity=seabed_contact.friction_velocity,
+                 current_depths=tuple(depths), current_speeds=tuple(speeds), current_heading=cur.heading,
+                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
+                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
+                 rayleigh_mass=rayleigh_mass, sea=sea, stretching=w.stretching if w else "none",
+                 profile=None if profile is None else (profile.distance, profile.depth))
 
 
 def height_above_seabed(water: Water, X):

@@ -9,7 +9,6 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
-from ..environment import IrregularWaves
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
@@ -21,6 +20,7 @@ from .outputs import (
     elevation_variables,
     grounded_end_force,
     height_above_seabed,
+    water_of_environment,
     wave_elevation,
 )
 from .solver import MooringModel, MooringRun, Water, line_end_nodes, pushover, simulate, static_equilibrium
@@ -65,24 +65,9 @@ REFERENCES = (
 
 def water_of(case: Case) -> Water:
     """The :class:`~seacable.mooring.solver.Water` of a case's environment and seabed contact."""
-    env = case.environment
     a = case.analysis
-    cur = env.current
-    depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
-    w = env.waves
-    contact = a.seabed_contact
     alpha = a.rayleigh[0] if isinstance(a, MooringDynamicAnalysis) else 0.0
-    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
-    w_reg = None if sea is not None else w
-    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
-                 seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
-                 friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
-                 current_speeds=tuple(speeds), current_heading=cur.heading,
-                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
-                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
-                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none",
-                 profile=None if env.seabed.profile is None else (env.seabed.profile.distance,
-                                                                  env.seabed.profile.depth))
+    return water_of_environment(case.environment, a.seabed_contact, alpha)
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:

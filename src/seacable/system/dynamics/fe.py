@@ -10,9 +10,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...case import SeabedContact
-from ...environment import IrregularWaves
 from ...mooring.motion import rotation_matrix
 from ...mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
+from ...mooring.outputs import water_of_environment
 from ...mooring.solver import MooringModel, Water
 from ..case import SystemDynamicAnalysis
 from ..model import MooringSystem
@@ -88,21 +88,9 @@ def _rot(six) -> np.ndarray:
 
 
 def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
-    env = environment
-    cur = env.current
-    depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
-    w = env.waves
-    sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
-    w_reg = None if sea is not None else w
     contact = analysis.seabed_contact if analysis is not None else SeabedContact()
     alpha = analysis.rayleigh[0] if analysis is not None else 0.0
-    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
-                 seabed_stiffness=contact.stiffness, seabed_damping=contact.damping, friction=env.seabed.friction,
-                 friction_velocity=contact.friction_velocity, current_depths=tuple(depths),
-                 current_speeds=tuple(speeds), current_heading=cur.heading,
-                 wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
-                 wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
-                 rayleigh_mass=alpha, sea=sea, stretching=w.stretching if w else "none")
+    return water_of_environment(environment, contact, alpha)  # a plane seabed: a system refuses a profile
 
 
 def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicAnalysis | None = None, *,

@@ -490,7 +490,7 @@ def frame_and_catenaries(P, sub_a, sub_b, L, EA, w, mu, depth, warm=None, tol=1e
                        H0, V0, have, tol, *tables, float(max_strain), geom, seabed, anchor_is_a, out)
     h, v = geom[:, 0], geom[:, 1]
     cat = _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain, tables)
-    return cat, anchor_is_a, geom[:, 2:4], geom[:, 4] > 0
+    return cat, anchor_is_a, np.ascontiguousarray(geom[:, 2:4]), geom[:, 4] > 0
 
 
 def _no_tables(ns):
@@ -504,6 +504,12 @@ def table_strain(T, k, tables):
     """Strain of sub-line ``k`` at tension(s) ``T`` from its table. [-]"""
     lo, hi, tT, te = int(tables[0][k]), int(tables[1][k]), tables[2], tables[3]
     return np.array([table_eps(float(t), lo, hi, tT, te)[0] for t in np.atleast_1d(T)])
+
+
+def _columns(out):
+    """H, V, HA, VA and LB of the kernel's table ``out`` as contiguous copies, not its columns: the kernels they go
+    to are compiled for C-contiguous arrays (a strided column would make numba compile them again)."""
+    return tuple(np.ascontiguousarray(out[:, k]) for k in range(5))
 
 
 def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=None) -> CatenaryResult:
@@ -523,7 +529,7 @@ def _finish(out, h, v, L, EA, w, mu_arr, seabed, tol, max_strain=1.0, tables=Non
         err.sub_line = k
         raise err
     bad = flags == 0.0
-    H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
+    H, V, HA, VA, LB = _columns(out)
     K = out[:, 5:9].reshape(n, 2, 2).copy()
     reg = out[:, 9].astype(np.int8)
     iters = 0
@@ -569,7 +575,7 @@ def catenaries(h, v, L, EA, w, mu, seabed, warm=None, tol=1e-12) -> CatenaryResu
     zero = np.zeros(n, np.int64)
     solve_warm(h, v, L, EA, w, mu_arr, seabed, warm[0], warm[1], tol, zero, zero, _NO_TABLE[2], _NO_TABLE[3], 1.0, out)
     bad = out[:, 10] == 0.0
-    H, V, HA, VA, LB = out[:, 0], out[:, 1], out[:, 2], out[:, 3], out[:, 4]
+    H, V, HA, VA, LB = _columns(out)
     K = out[:, 5:9].reshape(n, 2, 2).copy()
     reg = out[:, 9].astype(np.int8)
     iters = 0

@@ -141,10 +141,7 @@ def evaluate(asm: Assembly, bd: BodyData, st: State, *, load_factor=1.0, warm=No
     # what sits at a node above the water weighs its dry weight (the buoyancy switches off at z = 0; a
     # step, no term in the Jacobian; a node stopped at the surface counts as immersed): in the kernel
     node_buoy = asm.node_buoy if asm.node_buoy is not None else np.zeros(nn)
-    # the kernels are compiled for C-contiguous arrays: the catenaries' columns (views of one table) would
-    # make numba compile them again for a strided layout, and a read-only array for read-only memory
-    e = np.ascontiguousarray(e)
-    HF, VF, HA, VA = (np.ascontiguousarray(c) for c in (cat.H_fairlead, cat.V_fairlead, cat.H_anchor, cat.V_anchor))
+    HF, VF, HA, VA = cat.H_fairlead, cat.V_fairlead, cat.H_anchor, cat.V_anchor
     fa, fb, nf = np.empty((ns, 3)), np.empty((ns, 3)), np.empty((nn, 3))
     res, jac_lines = np.empty(ndof), np.empty((ndof, ndof))
     force_max = getattr(asm, "_force_max", None)

@@ -37,17 +37,22 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
     max_strain = _check_max_strain(max_strain)
     prob = _Problem(system, environment, external, 1e-8, 1, max_strain=max_strain)
     st0 = prob.initial_state(None)
-    try:
-        ev0 = prob.eval(st0, 1.0)
-    except NoSolutionError as err:
-        raise NoSolutionError(f"at the starting positions: {err} (Or start the bodies and free points where "
-                              "every line can reach.)") from None
+    ev0 = _eval_at_start(prob, st0)
     try:
         _check_stability(prob, st0, ev0)
     except InputError:
         # a body unstable where it starts may be restored once the lines take load (a rod hanging from
         # a line that is unloaded at the start): the solve decides, as solve_equilibrium does
         solve_equilibrium(system, environment, external=external, max_strain=max_strain)
+
+
+def _eval_at_start(prob, st0):
+    """The evaluation at the starting state, a line that cannot reach there said to be at the start."""
+    try:
+        return prob.eval(st0, 1.0)
+    except NoSolutionError as err:
+        raise NoSolutionError(f"at the starting positions: {err} (Or start the bodies and free points where "
+                              "every line can reach.)") from None
 
 
 def _check_max_strain(max_strain) -> float:
@@ -117,11 +122,7 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     while True:
         prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
         st0 = prob.initial_state(initial)
-        try:
-            ev0 = prob.eval(st0, 1.0)
-        except NoSolutionError as err:
-            raise NoSolutionError(f"at the starting positions: {err} (Or start the bodies and free points where "
-                                  "every line can reach.)") from None
+        ev0 = _eval_at_start(prob, st0)
         more = _sag_cuts(prob, st0, ev0) if sag_rounds < _SAG_ROUNDS else {}
         if more:
             cuts = _merge_cuts(cuts, more)
