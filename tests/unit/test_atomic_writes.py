@@ -149,8 +149,11 @@ def test_atomic_write_replaces_whole(tmp_path):
 
 @pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
 def test_deferred_interrupts_finish_the_block_then_interrupt(sig):
-    # from Python's own handlers, whatever an earlier test of this worker left (a fresh-home run of the suite
-    # failed here twice, passing alone: the handlers found are named in the message)
+    # The signals are raised in this (the main) thread: os.kill(os.getpid(), sig) lets the kernel hand a
+    # process-wide signal to any thread, and on a loaded machine (a fresh-home run of the suite, compiling)
+    # that thread may not run its C handler before the block ends; the Python handler then ran after the
+    # handlers were restored (the test failed twice so, passing alone). raise_signal delivers before returning.
+    # From Python's own handlers, whatever an earlier test of this worker left; the handlers found in the message.
     found = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
     signal.signal(signal.SIGINT, signal.default_int_handler)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
@@ -158,14 +161,14 @@ def test_deferred_interrupts_finish_the_block_then_interrupt(sig):
     try:
         done = []
         with pytest.raises(KeyboardInterrupt), deferred_interrupts():
-            os.kill(os.getpid(), sig)
+            signal.raise_signal(sig)
             time.sleep(0.05)
             done.append(1)
         assert done == [1] and interrupt_requested.is_set(), found
         interrupt_requested.clear()
         # handlers restored: SIGINT raises KeyboardInterrupt again at once
         with pytest.raises(KeyboardInterrupt):
-            os.kill(os.getpid(), signal.SIGINT)
+            signal.raise_signal(signal.SIGINT)
             time.sleep(0.5)
     finally:
         for s, handler in found.items():
@@ -177,7 +180,7 @@ def test_ctrl_c_while_the_result_is_written_still_writes_it(tmp_path, monkeypatc
     original = xr.Dataset.to_netcdf
 
     def slow_to_netcdf(self, path, *args, **kwargs):
-        os.kill(os.getpid(), signal.SIGINT)   # the user presses Ctrl-C during the write
+        signal.raise_signal(signal.SIGINT)   # the user presses Ctrl-C during the write
         time.sleep(0.05)
         return original(self, path, *args, **kwargs)
 
@@ -317,7 +320,7 @@ def test_nested_deferrals_raise_once_after_the_outermost():
     steps = []
     with pytest.raises(KeyboardInterrupt), deferred_interrupts():
         with deferred_interrupts():
-            os.kill(os.getpid(), signal.SIGTERM)
+            signal.raise_signal(signal.SIGTERM)
             time.sleep(0.05)
             steps.append("inner done")
         steps.append("outer done")   # the inner block does not interrupt the outer one

@@ -162,7 +162,7 @@ def test_an_interrupt_a_library_turns_into_another_error_exits_130(monkeypatch, 
 
     def compiling(args):
         try:
-            os.kill(os.getpid(), signal.SIGINT)   # the CLI's handler raises KeyboardInterrupt here
+            signal.raise_signal(signal.SIGINT)   # the CLI's handler raises KeyboardInterrupt here
             time.sleep(5.0)
         except KeyboardInterrupt:
             raise RuntimeError("no compiled object yet") from None
