@@ -1,0 +1,72 @@
+"""Suite-wide set-up: on a parallel run of the whole suite, each worker compiles its own share of the kernels first.
+
+numba compiles a kernel the first time a process calls it and writes it to the cache folder that every
+process shares (``seacable._numba_cache``); a process that needs it later loads it from there in a fraction
+of a second. From an empty cache (a fresh install) the two workers of a 2-core run used to reach the same
+big kernels within seconds of each other and both compiled them: about 130 CPU-seconds of a cold run went to
+compiling the mooring, towline and system-statics kernels twice. Here, on a run of more than
+``_MIN_TESTS`` tests with two or more pytest-xdist workers, each worker first runs a short example case of
+each of its kernel families (``_FAMILIES``, shared out by their compile time), so that each family is
+compiled once, by one worker, at the same time as the other worker compiles others; a family's later users
+load it from the cache. With a warm cache the runs cost a few seconds a worker. Nothing is asserted here:
+the same examples are run and checked by the tests.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+#: A parallel run of at least this many tests shares the compilation out (a run of a few files does not).
+_MIN_TESTS = 1000
+
+#: Kernel families: (the example cases that compile them, analysis keys overridden to make each run short),
+#: and the CPU-seconds their compilation took from an empty cache on a 2-core machine (2026-11-29), by which
+#: the families are shared out among the workers. The system dynamics call the mooring element loads, so the
+#: two are one family (compiled by one worker, in that order).
+_FAMILIES = (
+    ((("paper004_buoy_relaxation", {"duration": 0.2}), ("spread_mooring_line_break", {"duration": 0.5})), 140.0),
+    ((("paper003_drop", {"duration": 1.0}),), 48.0),
+    ((("paper000_turn", {"duration": 2.0, "output_interval": 1.0}),), 44.0),
+    ((("towed_depressor_survey", {"duration": 4.0}),), 42.0),
+    ((("spread_mooring", {}),), 34.0),
+    ((("paper001_lay_2ms_50m", {"duration": 4.0}), ("lay_plan_route", {})), 15.0),
+)
+
+
+def _share(n_workers: int) -> list[list[int]]:
+    """The families of each worker: largest first, each to the worker with the least compile time so far."""
+    load, share = [0.0] * n_workers, [[] for _ in range(n_workers)]
+    for k in sorted(range(len(_FAMILIES)), key=lambda k: -_FAMILIES[k][1]):
+        w = load.index(min(load))
+        share[w].append(k)
+        load[w] += _FAMILIES[k][1]
+    return share
+
+
+def _run_example(name: str, analysis: dict) -> None:
+    import seacable as sc
+    from seacable.io.case_file import load_case_data, parse_case
+
+    data = load_case_data(EXAMPLES / f"{name}.yaml")
+    data["analysis"].update(analysis)
+    sc.run(parse_case(data, source=name))
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _compile_this_workers_kernels(request):
+    """On a parallel run of the whole suite, compile this worker's share of the kernel families first."""
+    worker = os.environ.get("PYTEST_XDIST_WORKER", "")
+    n_workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
+    if n_workers < 2 or not worker.startswith("gw") or len(request.session.items) < _MIN_TESTS:
+        return
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")   # the examples' own warnings are the tests' business
+        for k in _share(n_workers)[int(worker[2:]) % n_workers]:
+            for name, analysis in _FAMILIES[k][0]:
+                _run_example(name, analysis)
