@@ -230,7 +230,7 @@ def _piece(H, V0, w, l, ea):
 def _span(H, V0, w, l, ea):
     """The span (dx, dz) of :func:`_piece` alone, by the same operations."""
     V1 = V0 + w * l
-    T0, T1 = np.hypot(H, V0), np.hypot(H, V1)
+    T0, T1 = float(np.hypot(H, V0)), float(np.hypot(H, V1))
     Vs = V0 + V1
     if V0 * V1 >= 0.0:
         D = V1 * T0 + V0 * T1
@@ -238,10 +238,10 @@ def _span(H, V0, w, l, ea):
             dx, dz = l, 0.0
         else:
             y = w * l * Vs / D
-            dx = H * l * Vs / D * _asinhc(y)
+            dx = H * l * Vs / D * float(_asinhc(y))
             dz = l * Vs / (T0 + T1)
     else:                                                    # V changes sign: no cancellation
-        dx = H / w * (np.arcsinh(V1 / H) - np.arcsinh(V0 / H))
+        dx = H / w * float(np.arcsinh(V1 / H) - np.arcsinh(V0 / H))
         dz = (T1 - T0) / w
     dx += H * l / ea
     dz += Vs * l / (2.0 * ea)
@@ -325,6 +325,17 @@ def _hang(line: _Line, V_A: float):
     return Z, dZ, s_td
 
 
+def _touchdown_bound(line: _Line, Z: float) -> float:
+    """An upper bound of the touchdown's arc length of the line hanging vertically to height ``Z`` from the
+    seabed (:func:`_slack_touchdown`), so that a span beyond it skips that search (its line is not slack); inf
+    with buoyancy. The hanging part is ``L - s_td`` long unstretched, stretched by at most the whole weight over
+    the least EA: ``Z <= (L - s_td) (1 + W / EA_min)``."""
+    if np.any(line.w < 0.0) or np.any(line.jump < 0.0) or Z <= 0.0:
+        return np.inf
+    bound = line.length - Z / (1.0 + line.w_total / float(np.min(line.ea)))
+    return bound * (1.0 + 1e-9) + 1e-9 * line.length
+
+
 def _slack_touchdown(line: _Line, Z: float):
     """V_A at which the line hangs vertically to height Z from a flat seabed, or None."""
     w_max = max(np.max(line.c_start), np.max(line.c_start + line.w * np.diff(line.nodes)))
@@ -366,11 +377,14 @@ def _profile(line: _Line, H: float, V_A: float, n_per_seg: int, x_slack=0.0, at=
     S, XX, ZZ, TT, GG = [], [], [], [], []
     x0 = z0 = x_td = 0.0
     first = 0  # index of the piece's first sample among all
+    # Python floats (the same values and operations as numpy's scalars, a few times faster)
+    H, V_A, s_td = float(H), float(V_A), float(s_td)
+    nodes, ws, eas, starts = line.nodes.tolist(), line.w.tolist(), line.ea.tolist(), line.c_start.tolist()
     for j, ts in enumerate(grids):
-        a, w, ea = line.nodes[j], line.w[j], line.ea[j]
+        a, w, ea = nodes[j], ws[j], eas[j]
         td_here = kind == "piece" and j == itd
-        c0 = H + line.mu * (V_A + line.c_start[j])
-        for s in ts if need is None else ts[need[first:first + ts.size]]:
+        c0 = H + line.mu * (V_A + starts[j])
+        for s in (ts if need is None else ts[need[first:first + ts.size]]).tolist():
             if kind != "none" and (j < itd or (td_here and s <= s_td)):
                 integ = _clip_integral(c0, line.mu * w, s - a)[0]
                 x, z, t = x0 + (s - a) + integ / ea, 0.0, max(c0 + line.mu * w * (s - a), 0.0)
@@ -379,12 +393,12 @@ def _profile(line: _Line, H: float, V_A: float, n_per_seg: int, x_slack=0.0, at=
                 if td_here and s == s_td:
                     x_td = x
             elif H == 0.0:                                   # slack: vertical hanging part
-                lo, Vlo, zl = (s_td, 0.0, 0.0) if td_here else (a, V_A + line.c_start[j], z0)
+                lo, Vlo, zl = (s_td, 0.0, 0.0) if td_here else (a, V_A + starts[j], z0)
                 V1 = Vlo + w * (s - lo)
                 x, z, t = x_slack, zl + (s - lo) + (Vlo + V1) * (s - lo) / (2 * ea), V1
             else:
                 lo, Vlo, xl, zl = ((s_td, 0.0, x_td, 0.0) if td_here
-                                   else (a, V_A + line.c_start[j], x0, z0))
+                                   else (a, V_A + starts[j], x0, z0))
                 dx, dz = _span(H, Vlo, w, s - lo, ea)
                 x, z, t = xl + dx, zl + dz, float(np.hypot(H, Vlo + w * (s - lo)))
             S.append(s), XX.append(x), ZZ.append(z), TT.append(t), GG.append(line.seg[j])
@@ -599,7 +613,7 @@ def line_equilibrium(lengths, weights, axial_stiffness, horizontal_span, vertica
         raise NoSolutionError(f"vertical_span must be > 0 m with a seabed (fairlead must be above the "
                               f"seabed), got {Z:.6g} m. Suggested fix: use seabed=False or raise it.")
     slack_err = None
-    if seabed:
+    if seabed and not X > _touchdown_bound(line, Z):
         VA_slack = _slack_touchdown(line, Z)
         if VA_slack is not None and X <= _touchdown(line, VA_slack)[2]:
             try:
