@@ -24,7 +24,13 @@ fairlead moves on a 0.2 m circle every 1.25 s, the same ladders and 1 % rule (se
 The overhead around seacable's time loop (issue 38): seacable's ``stepping`` is the compiled time loop alone
 (``seacable.mooring.loop.run_outputs``, timed from outside); the rest of the whole call is the file, the model,
 the statics, the checks and the Dataset. Target of issue 38: at 20 segments, seacable's whole call at most 0.5
-times MoorDyn's stepping (``python bench/bench_mooring.py 5 20``, about a minute).
+times MoorDyn's stepping (``python bench/bench_mooring.py 5 20``, about a minute). Last measured (7 pairs, a shared
+2-core machine, the two sources in turn, two runs each): 0.68x and 0.68x (66-73 ms whole call, 30-31 ms of it
+stepping, against MoorDyn's 94-102 ms of stepping), against 0.77x and 0.83x before the run path was leaned (the
+catenary start guess evaluating only the samples it reads, the single line's reach summed along its chain, a one-block
+run kept by the sink without a copy, ...); the issue's first figure was 1.09x. The stepping alone is about 0.3x
+MoorDyn's: what is left of the 0.5x is the file, the model, the statics, the exact-catenary check and the Dataset,
+still about as long as the stepping.
 
 Run: ``python bench/bench_mooring.py [repeat [segments ...]]`` or ``... snap`` (needs ``pip install
 moordyn``; a bench-only dependency).

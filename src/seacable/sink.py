@@ -68,11 +68,12 @@ class MemorySink:
         if self.filled + n > self.n_time:
             raise AssertionError(f"{self.filled + n} outputs given to a sink of {self.n_time}")
         self._guard.check(data, coords)
+        whole = self.filled == 0 and n == self.n_time  # the run in one block: its variables kept as they are
         for store, given in ((self._vars, data), (self._coords, coords)):
             for name, v in given.items():
                 axis = _time_axis(v)
                 if name not in store:
-                    if axis is None:
+                    if axis is None or whole:
                         store[name] = v
                         continue
                     shape = v.shape[:axis] + (self.n_time,) + v.shape[axis + 1:]

@@ -187,3 +187,37 @@ def test_point_forces_of_a_network_are_reported_separately(tmp_path):
     assert pv["point_force"].values[2] < 1e-6 * lift
     w_lines = 2 * 320.0 * (60.0 - 1025.0 * math.pi * 0.1**2 / 4) * 9.80665
     assert -np.sum(pv["point_force_z"].values[:2]) == pytest.approx(w_lines - lift, rel=1e-6)
+
+
+def test_a_single_line_is_checked_along_its_chain_without_a_graph_search(monkeypatch):
+    """A network that is one line (each element joining its next two nodes) has one path between its held ends:
+    its reach is summed along it, as the graph search sums it, without building the graph; a shorter reach is
+    refused with the same message."""
+    import scipy.sparse.csgraph as csgraph
+    from scipy.sparse import coo_matrix
+
+    from seacable.mooring.checks import _chain, _chain_distances, check_network
+    from seacable.mooring.network import network_from_line
+
+    line = sc.Case(name="chk", line_types={"chain": CHAIN}, line={"line_type": "chain", "length": 410.0},
+                   environment={"depth": 200.0}, analysis={"type": "mooring_static", "fairlead": [300.0, -15.0]}).line
+    net = network_from_line(line, (0.0, 0.0, -200.0), (300.0, 0.0, -15.0), water_density=1025.0, gravity=9.81,
+                            n_elements=12)
+    reach = net.length * 1.2 + np.linspace(0.0, 1e-3, net.n_elements)  # unequal: the order of the sums shows
+    held = np.flatnonzero(net.kind != 0)
+    graph = coo_matrix((reach, (net.elements[:, 0], net.elements[:, 1])), shape=(net.n_nodes,) * 2).tocsr()
+    expected = csgraph.dijkstra(graph, directed=False, indices=held)
+    place = _chain(net)
+    assert place is not None and _chain_distances(place, held, reach).tobytes() == expected.tobytes()
+    reversed_net = net.replace(line_nodes=(np.asarray(net.line_nodes[0])[::-1],))
+    assert _chain(reversed_net) is None  # its elements do not run along its nodes: the graph search
+
+    def no_search(*args, **kwargs):
+        raise AssertionError("the graph was searched")
+
+    monkeypatch.setattr(csgraph, "dijkstra", no_search)
+    check_network(net, depth=200.0)
+    far = net.position.copy()
+    far[held[-1]] = (600.0, 0.0, -15.0)
+    with pytest.raises(InputError, match=r"'line' \(410 m unstretched\) cannot span"):
+        check_network(net.replace(position=far), depth=200.0)

@@ -80,26 +80,34 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0) 
                 "fix: put anchors on or above the seabed (z >= -depth) and fairleads and points above it.")
     if held.size < 2:
         return
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import dijkstra
-
     reach = network.length * (1.0 + element_stretch_limit(network))
     el = network.elements
-    n = network.n_nodes
-    graph = coo_matrix((reach, (el[:, 0], el[:, 1])), shape=(n, n)).tocsr()
-    dist, pred = dijkstra(graph, directed=False, indices=held, return_predecessors=True)
+    chain = _chain(network)
+    if chain is None:
+        from scipy.sparse import coo_matrix
+        from scipy.sparse.csgraph import dijkstra
+
+        n = network.n_nodes
+        graph = coo_matrix((reach, (el[:, 0], el[:, 1])), shape=(n, n)).tocsr()
+        dist, pred = dijkstra(graph, directed=False, indices=held, return_predecessors=True)
+    else:
+        dist = _chain_distances(chain, held, reach)
     for row, i in enumerate(held):
         for j in held[row + 1:]:
             chord = float(np.linalg.norm(X[j] - X[i]))
             if not np.isfinite(dist[row, j]) or chord <= dist[row, j] * (1.0 + 1e-9):
                 continue
-            path, k = [], int(j)
-            while k != i:
-                p = int(pred[row, k])
-                e = np.flatnonzero(((el[:, 0] == p) & (el[:, 1] == k)) | ((el[:, 0] == k) & (el[:, 1] == p)))[0]
-                path.append(e)
-                k = p
-            path = np.array(path[::-1])
+            if chain is None:
+                path, k = [], int(j)
+                while k != i:
+                    p = int(pred[row, k])
+                    e = np.flatnonzero(((el[:, 0] == p) & (el[:, 1] == k)) | ((el[:, 0] == k) & (el[:, 1] == p)))[0]
+                    path.append(e)
+                    k = p
+                path = np.array(path[::-1])
+            else:  # the elements from i to j along the chain
+                a, b = chain[i], chain[j]
+                path = np.arange(a, b) if a < b else np.arange(a - 1, b - 1, -1)
             lines = list(dict.fromkeys(network.line_names[network.element_line[e]] for e in path))
             unstretched = float(np.sum(network.length[path]))
             mbl = network.breaking_load
@@ -113,6 +121,36 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0) 
                 f"start at a strain of {chord / unstretched - 1:.3g}, and it can stretch to at most "
                 f"{dist[row, j]:.6g} m at its limit strain ({why}). Suggested fix: check the end positions "
                 "(anchor, fairlead or points) and the line length.")
+
+
+def _chain(network: Network) -> np.ndarray | None:
+    """Each node's place along the network's one line when the network is that line alone, its element ``k``
+    joining its nodes ``k`` and ``k + 1`` (element ``k`` then runs from place ``k`` to ``k + 1``); else None."""
+    if len(network.line_nodes) != 1:
+        return None
+    nodes = np.asarray(network.line_nodes[0])
+    el = network.elements
+    if (nodes.size != network.n_nodes or el.shape[0] != nodes.size - 1 or not np.array_equal(el[:, 0], nodes[:-1])
+            or not np.array_equal(el[:, 1], nodes[1:])):
+        return None
+    place = np.empty(nodes.size, np.int64)
+    place[nodes] = np.arange(nodes.size)
+    return place
+
+
+def _chain_distances(place: np.ndarray, held: np.ndarray, reach: np.ndarray) -> np.ndarray:
+    """The distances along a chain (:func:`_chain`) from each held node to every node, as the shortest paths
+    of a graph search give them: summed element after element from the held node outwards."""
+    dist = np.empty((held.size, place.size))
+    order = np.argsort(place)  # the nodes along the chain
+    for row, i in enumerate(held):
+        a = place[i]
+        along = np.empty(place.size)
+        along[a] = 0.0
+        along[a + 1:] = np.cumsum(reach[a:])
+        along[:a] = np.cumsum(reach[:a][::-1])[::-1]
+        dist[row, order] = along
+    return dist
 
 
 def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0) -> None:

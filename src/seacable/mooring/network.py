@@ -252,19 +252,15 @@ def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_load
     total = float(np.sum(lengths))
     d = b - a
     h = math.hypot(d[0], d[1])
-    fallback = slack_positions(a, b, s, total, depth=depth, slope=slope)
     if h <= 1e-6 * total or d[2] <= 0 or min(weights) <= 0:
-        return fallback
+        return slack_positions(a, b, s, total, depth=depth, slope=slope)
     on_seabed = depth is not None and abs(a[2] + depth) < 1e-6 * depth
     try:
         eq = line_equilibrium(lengths, weights, axial_stiffness, h, d[2], point_loads=point_loads,
                               seabed=on_seabed, seabed_slope=slope if on_seabed else 0.0)
     except SeacableError:
-        return fallback
-    prof = eq.profile(points_per_segment=400)
-    keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
-    x = np.interp(s, prof.s[keep], prof.x[keep])
-    z = np.interp(s, prof.s[keep], prof.z[keep])
+        return slack_positions(a, b, s, total, depth=depth, slope=slope)
+    x, z = eq.profile_at(s, points_per_segment=400)
     along, side = np.array([d[0] / h, d[1] / h, 0.0]), np.array([-d[1] / h, d[0] / h, 0.0])
     y = np.zeros_like(s)
     grounded, reach = eq.grounded_length, eq.touchdown_x

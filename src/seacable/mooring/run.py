@@ -93,8 +93,13 @@ def _node_tension(net: Network, tension):
     total = np.zeros(tension.shape[:-1] + (net.n_nodes,))
     count = np.zeros(net.n_nodes)
     for end in (0, 1):
-        np.add.at(total, (..., net.elements[:, end]), tension)
-        np.add.at(count, net.elements[:, end], 1)
+        nodes = net.elements[:, end]
+        if np.unique(nodes).size == nodes.size:  # each node once (a line): the same additions, without add.at
+            total[..., nodes] += tension
+            count[nodes] += 1
+        else:
+            np.add.at(total, (..., nodes), tension)
+            np.add.at(count, nodes, 1)
     return total / np.maximum(count, 1)
 
 

@@ -735,8 +735,9 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     X[pres], V[pres], A[pres] = x0[0, net.channel[pres]], v0[0, net.channel[pres]], a0[0, net.channel[pres]]
     model.settle_viscoelastic(X, np.zeros_like(V))
     # an irregular sea: its kinematics on a grid over the nodes and the fairleads' range
-    t_out = np.linspace(0.0, duration, n_out + 1)
-    model.prepare_sea(duration, np.concatenate((X, channels(t_out)[0].reshape(-1, 3))))
+    if model.water.sea is not None:
+        t_out = np.linspace(0.0, duration, n_out + 1)
+        model.prepare_sea(duration, np.concatenate((X, channels(t_out)[0].reshape(-1, 3))))
     Fi, Mi, _, _ = model.evaluate(X, V, A, settled=True)
     free = model.fidx >= 0
     A[free] = np.linalg.solve(Mi[free], Fi[free][..., None])[..., 0]

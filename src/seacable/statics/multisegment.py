@@ -102,6 +102,17 @@ class LineEquilibrium:
                            "give at least 2 points per segment"))
         return _profile(self._line, self.H_fairlead, self._V_A, n, self.touchdown_x)
 
+    def profile_at(self, s, points_per_segment: int = 50) -> tuple[np.ndarray, np.ndarray]:
+        """The line's position ``(x, z)`` at unstretched arc lengths ``s`` [m] from the anchor, linear between the
+        samples of :meth:`profile` (``points_per_segment``; at a point load, its first sample), the end values
+        beyond the ends; only the samples read are evaluated. [m]"""
+        n = int(v.at_least("points_per_segment", points_per_segment, 2, "",
+                           "give at least 2 points per segment"))
+        s = np.asarray(s, float)
+        prof = _profile(self._line, self.H_fairlead, self._V_A, n, self.touchdown_x, at=s)
+        keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
+        return np.interp(s, prof.s[keep], prof.x[keep]), np.interp(s, prof.s[keep], prof.z[keep])
+
 
 @dataclass(frozen=True)
 class Pushover:
@@ -216,6 +227,27 @@ def _piece(H, V0, w, l, ea):
             H / T1 + H / ea, V1 / T1 + V1 / ea)
 
 
+def _span(H, V0, w, l, ea):
+    """The span (dx, dz) of :func:`_piece` alone, by the same operations."""
+    V1 = V0 + w * l
+    T0, T1 = float(np.hypot(H, V0)), float(np.hypot(H, V1))
+    Vs = V0 + V1
+    if V0 * V1 >= 0.0:
+        D = V1 * T0 + V0 * T1
+        if D == 0.0:                                         # weightless horizontal piece
+            dx, dz = l, 0.0
+        else:
+            y = w * l * Vs / D
+            dx = H * l * Vs / D * float(_asinhc(y))
+            dz = l * Vs / (T0 + T1)
+    else:                                                    # V changes sign: no cancellation
+        dx = H / w * float(np.arcsinh(V1 / H) - np.arcsinh(V0 / H))
+        dz = (T1 - T0) / w
+    dx += H * l / ea
+    dz += Vs * l / (2.0 * ea)
+    return dx, dz
+
+
 def _clip_integral(c0, c1, length):
     """Integral over t in [0, length] of max(c0 + c1 t, 0) and the measure where it is > 0."""
     c_end = c0 + c1 * length
@@ -293,6 +325,17 @@ def _hang(line: _Line, V_A: float):
     return Z, dZ, s_td
 
 
+def _touchdown_bound(line: _Line, Z: float) -> float:
+    """An upper bound of the touchdown's arc length of the line hanging vertically to height ``Z`` from the
+    seabed (:func:`_slack_touchdown`), so that a span beyond it skips that search (its line is not slack); inf
+    with buoyancy. The hanging part is ``L - s_td`` long unstretched, stretched by at most the whole weight over
+    the least EA: ``Z <= (L - s_td) (1 + W / EA_min)``."""
+    if np.any(line.w < 0.0) or np.any(line.jump < 0.0) or Z <= 0.0:
+        return np.inf
+    bound = line.length - Z / (1.0 + line.w_total / float(np.min(line.ea)))
+    return bound * (1.0 + 1e-9) + 1e-9 * line.length
+
+
 def _slack_touchdown(line: _Line, Z: float):
     """V_A at which the line hangs vertically to height Z from a flat seabed, or None."""
     w_max = max(np.max(line.c_start), np.max(line.c_start + line.w * np.diff(line.nodes)))
@@ -308,26 +351,40 @@ def _slack_touchdown(line: _Line, Z: float):
 
 
 # --- profile and post-processing ---
-def _profile(line: _Line, H: float, V_A: float, n_per_seg: int, x_slack=0.0) -> LineProfile:
-    """Sample the line; with H = 0 the grounded part runs straight to ``x_slack`` and piles there."""
+def _profile(line: _Line, H: float, V_A: float, n_per_seg: int, x_slack=0.0, at=None) -> LineProfile:
+    """Sample the line; with H = 0 the grounded part runs straight to ``x_slack`` and piles there.
+
+    ``at``: the arc lengths [m] at which the caller interpolates the profile linearly (``np.interp`` on the samples
+    of distinct ``s``, :meth:`LineEquilibrium.profile_at`): only the samples that interpolation reads are evaluated
+    (with each piece's last, where the next piece starts, and the touchdown), the same values as in the whole
+    profile, which holds those samples only."""
     kind, itd, s_td = _touchdown(line, V_A)
     seg_len = np.bincount(line.seg, weights=np.diff(line.nodes), minlength=line.n_segments)
-    S, XX, ZZ, TT, GG = [], [], [], [], []
-    x0 = z0 = x_td = 0.0
+    grids = []
     for j in range(line.w.size):
-        a, b, w, ea = line.nodes[j], line.nodes[j + 1], line.w[j], line.ea[j]
+        a, b, w = line.nodes[j], line.nodes[j + 1], line.w[j]
         nseg = max(int(np.ceil(n_per_seg * (b - a) / seg_len[line.seg[j]])), 1)
         ts = np.linspace(a, b, nseg + 1)
-        td_here = kind == "piece" and j == itd
         V0 = V_A + line.c_start[j]
-        if td_here:
+        if kind == "piece" and j == itd:
             ts = np.unique(np.append(ts, s_td))
         elif V0 * (V0 + w * (b - a)) < 0.0 and (kind == "none" or j > itd):
             ts = np.unique(np.append(ts, a - V0 / w))       # sag/hog bend extremum of z
         if j > 0 and line.jump[j] == 0.0:
             ts = ts[1:]                                      # shared end already sampled
-        c0 = H + line.mu * (V_A + line.c_start[j])
-        for s in ts:
+        grids.append(ts)
+    need = None if at is None else _needed(grids, at, s_td if kind == "piece" else None)
+    S, XX, ZZ, TT, GG = [], [], [], [], []
+    x0 = z0 = x_td = 0.0
+    first = 0  # index of the piece's first sample among all
+    # Python floats (the same values and operations as numpy's scalars, a few times faster)
+    H, V_A, s_td = float(H), float(V_A), float(s_td)
+    nodes, ws, eas, starts = line.nodes.tolist(), line.w.tolist(), line.ea.tolist(), line.c_start.tolist()
+    for j, ts in enumerate(grids):
+        a, w, ea = nodes[j], ws[j], eas[j]
+        td_here = kind == "piece" and j == itd
+        c0 = H + line.mu * (V_A + starts[j])
+        for s in (ts if need is None else ts[need[first:first + ts.size]]).tolist():
             if kind != "none" and (j < itd or (td_here and s <= s_td)):
                 integ = _clip_integral(c0, line.mu * w, s - a)[0]
                 x, z, t = x0 + (s - a) + integ / ea, 0.0, max(c0 + line.mu * w * (s - a), 0.0)
@@ -336,17 +393,33 @@ def _profile(line: _Line, H: float, V_A: float, n_per_seg: int, x_slack=0.0) -> 
                 if td_here and s == s_td:
                     x_td = x
             elif H == 0.0:                                   # slack: vertical hanging part
-                lo, Vlo, zl = (s_td, 0.0, 0.0) if td_here else (a, V_A + line.c_start[j], z0)
+                lo, Vlo, zl = (s_td, 0.0, 0.0) if td_here else (a, V_A + starts[j], z0)
                 V1 = Vlo + w * (s - lo)
                 x, z, t = x_slack, zl + (s - lo) + (Vlo + V1) * (s - lo) / (2 * ea), V1
             else:
                 lo, Vlo, xl, zl = ((s_td, 0.0, x_td, 0.0) if td_here
-                                   else (a, V_A + line.c_start[j], x0, z0))
-                dx, dz = _piece(H, Vlo, w, s - lo, ea)[:2]
+                                   else (a, V_A + starts[j], x0, z0))
+                dx, dz = _span(H, Vlo, w, s - lo, ea)
                 x, z, t = xl + dx, zl + dz, float(np.hypot(H, Vlo + w * (s - lo)))
             S.append(s), XX.append(x), ZZ.append(z), TT.append(t), GG.append(line.seg[j])
         x0, z0 = XX[-1], ZZ[-1]
+        first += ts.size
     return LineProfile(np.array(S), np.array(XX), np.array(ZZ), np.array(TT), np.array(GG, int))
+
+
+def _needed(grids, at, s_td) -> np.ndarray:
+    """Which samples of the pieces' grids (:func:`_profile`) a linear interpolation at ``at`` over the samples of
+    distinct ``s`` reads (the two around each point, the first and the last), with each piece's last sample and
+    the touchdown ``s_td`` (None: none), which the samples after them start from."""
+    S = np.concatenate(grids)
+    distinct = np.flatnonzero(np.r_[True, np.diff(S) > 0])  # the first of samples sharing an s (a point load)
+    j = np.searchsorted(S[distinct], np.asarray(at, float).ravel(), side="right") - 1
+    need = np.zeros(S.size, bool)
+    need[distinct[np.clip(np.r_[j, j + 1, 0, distinct.size - 1], 0, distinct.size - 1)]] = True
+    need[np.cumsum([ts.size for ts in grids]) - 1] = True
+    if s_td is not None:
+        need[S == s_td] = True
+    return need
 
 
 def _check_representable(line: _Line, H, V_A, kind, itd, s_td, L):
@@ -540,7 +613,7 @@ def line_equilibrium(lengths, weights, axial_stiffness, horizontal_span, vertica
         raise NoSolutionError(f"vertical_span must be > 0 m with a seabed (fairlead must be above the "
                               f"seabed), got {Z:.6g} m. Suggested fix: use seabed=False or raise it.")
     slack_err = None
-    if seabed:
+    if seabed and not X > _touchdown_bound(line, Z):
         VA_slack = _slack_touchdown(line, Z)
         if VA_slack is not None and X <= _touchdown(line, VA_slack)[2]:
             try:

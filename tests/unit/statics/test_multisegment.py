@@ -266,3 +266,23 @@ def test_convergence_error_reports_iterations():
     with pytest.raises(ConvergenceError, match="did not converge in 2 iterations") as exc:
         line_equilibrium(1000.0, 700.0, 5e8, 800.0, 250.0, max_iter=2)
     assert exc.value.iterations == 2 and exc.value.residual > 0
+
+
+@pytest.mark.parametrize("args, kw", [
+    (([760.0], 1107.0, 7.5e8, 700.0, 190.0), {}),                                    # grounded, a touchdown
+    (([760.0], 1107.0, 7.5e8, 600.0, 190.0), {}),                                    # slack: H = 0
+    (([400.0], 500.0, 1e8, 300.0, 140.0), dict(seabed=False)),                       # suspended, a sag bend
+    (([100.0, 200.0, 100.0], [800.0, 300.0, 800.0], [1e8, 2e8, 1e8], 300.0, 90.0),
+     dict(point_loads=[(150.0, 2e4), (300.0, 5e3)])),                               # point loads: repeated s
+])
+def test_profile_at_is_the_interpolated_whole_profile_to_the_bit(args, kw):
+    """profile_at evaluates only the samples its interpolation reads: the same floats as interpolating the whole
+    profile (the first sample of a point load's two), at samples, between them and beyond the ends."""
+    eq = line_equilibrium(*args, **kw)
+    total = float(np.sum(args[0]))
+    s = np.r_[-1.0, np.linspace(0.0, total, 37), 150.0, 300.0, 0.3 * total, total + 1.0]
+    prof = eq.profile(points_per_segment=400)
+    keep = np.r_[True, np.diff(prof.s) > 0]
+    x, z = eq.profile_at(s, points_per_segment=400)
+    assert x.tobytes() == np.interp(s, prof.s[keep], prof.x[keep]).tobytes()
+    assert z.tobytes() == np.interp(s, prof.s[keep], prof.z[keep]).tobytes()

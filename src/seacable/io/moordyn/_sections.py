@@ -3,6 +3,7 @@ column names and rows, and the check of the column names against the order MoorD
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import warnings
@@ -116,7 +117,10 @@ def _is_end(line: str) -> bool:
     stripped = line.strip().upper()
     if stripped == "END" or stripped.startswith("END "):
         return True
-    return "---" in line and ("NEED THIS LINE" in stripped or re.search(r"\bEND\b", stripped) is not None)
+    return "---" in line and ("NEED THIS LINE" in stripped or _END.search(stripped) is not None)
+
+
+_END = re.compile(r"\bEND\b")
 
 
 _COMMENT = re.compile(r"[!#%]")
@@ -263,8 +267,17 @@ _SECTION_TITLES = {"line_types": "LINE TYPES", "rod_types": "ROD TYPES", "points
                    "syrope_ic": "SYROPE IC", "syrope_wc": "SYROPE WORKING CURVES"}
 
 
+_NOT_KEY = re.compile(r"[^a-z0-9]")
+
+
 def _key(name: str) -> str:
-    return re.sub(r"[^a-z0-9]", "", name.lower())
+    return _NOT_KEY.sub("", name.lower())
+
+
+@functools.cache
+def _layout_keys(layout: str) -> tuple[frozenset[str], ...]:
+    """The keys (:func:`_key`) of each column's names of a ``_COLUMNS`` layout."""
+    return tuple(frozenset(_key(a) for a in aliases) for aliases in _COLUMNS[layout])
 
 
 def _check_column_order(rd: _Reader, section, names, layout: str) -> None:
@@ -278,7 +291,7 @@ def _check_column_order(rd: _Reader, section, names, layout: str) -> None:
     if len(section[3]) <= 2:   # the names and units lines, no row: an empty section reads nothing by them
         return
     columns = _COLUMNS[layout]
-    keys = [{_key(a) for a in aliases} for aliases in columns]
+    keys = _layout_keys(layout)
     wrong = []
     for index, name in enumerate(names):
         key = _key(name)
