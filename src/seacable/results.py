@@ -23,7 +23,7 @@ from .errors import ConvergenceError, InputError
 
 __all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result",
            "check_schema", "check_time",
-           "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
+           "compression", "dataset", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
 #: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file
@@ -185,7 +185,7 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         FiniteGuard().check(data_vars, coords)
     else:  # the blocks were checked as they came: the variables added at the end only
         guard.check({k: v for k, v in data_vars.items() if k not in guard.checked}, coords)
-    ds = xr.Dataset(data_vars=data_vars, coords=coords)
+    ds = dataset(data_vars, coords)
     attrs = {
         "title": title or (case.name if case is not None else analysis),
         "analysis": analysis,
@@ -203,6 +203,77 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     ds.attrs.update(attrs)
     check_schema(ds)
     return ds
+
+
+#: (name, dtype, shape, values) -> the default index xarray makes of a dimension coordinate (:func:`dataset`)
+_INDEXES: dict[tuple, Any] = {}
+_INDEXES_KEPT = 256     # indexes kept (the oldest forgotten first)
+_INDEX_CACHED = 1000    # largest coordinate whose index is kept
+
+
+def _default_index(name, v: xr.Variable):
+    """The index ``xarray.Dataset`` makes of the dimension coordinate ``name`` (``PandasIndex.from_variables``),
+    kept for a coordinate of text or numbers of at most :data:`_INDEX_CACHED` values: the same names (lines,
+    bodies, degrees of freedom, conditions) come back run after run, and making a pandas index of them costs more
+    than the Dataset around it. xarray treats indexes as immutable and shares them between Datasets itself."""
+    from xarray.indexes import PandasIndex
+
+    array = v.values
+    key = None
+    if array.size <= _INDEX_CACHED:
+        if array.dtype.kind in "iu" or (array.dtype.kind == "f" and array.dtype.itemsize >= 4):
+            key = (name, array.dtype.str, array.shape, array.tobytes())
+        elif array.dtype.kind == "O" and all(type(item) is str for item in array.flat):
+            key = (name, "O", array.shape, tuple(array.tolist()))
+    index = _INDEXES.get(key) if key is not None else None
+    if index is None:
+        index = PandasIndex.from_variables({name: v}, options={})
+        if key is not None:
+            if len(_INDEXES) >= _INDEXES_KEPT:
+                _INDEXES.pop(next(iter(_INDEXES)))
+            _INDEXES[key] = index
+    return index
+
+
+def dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable]) -> xr.Dataset:
+    """``xarray.Dataset(data_vars=data_vars, coords=coords)``, the same Dataset built without xarray's merge.
+
+    The constructor merges and aligns its arguments (it takes DataArrays, tuples, pandas objects): for a
+    result of a few dozen :func:`var` variables that is most of a small run's time. Here, when every
+    argument is an ``xarray.Variable`` and the names leave nothing to merge (no name both a variable and a
+    coordinate, no variable named after a dimension, every coordinate named after a dimension one-dimensional
+    along it, indexes of numbers or text), the Dataset is put together directly: each variable a shallow copy
+    as the constructor makes, each dimension coordinate with the default index the constructor makes
+    (:func:`_default_index`), in the constructor's order (the variables, then the coordinates). Anything else
+    goes to the constructor. tests/unit/test_results_lean.py checks the two give identical Datasets (values,
+    attributes, order, dimensions, indexes).
+    """
+    construct = getattr(xr.Dataset, "_construct_direct", None)
+    if construct is None or not _direct(data_vars, coords):
+        return xr.Dataset(data_vars=data_vars, coords=coords)
+    variables = {name: v.copy(deep=False) for name, v in data_vars.items()}
+    indexes = {}
+    for name, v in coords.items():
+        if v.dims == (name,):
+            index = indexes[name] = _default_index(name, v)
+            variables.update(index.create_variables({name: v}))
+        else:
+            variables[name] = v.copy(deep=False)
+    return construct(variables, set(coords), indexes=indexes)
+
+
+def _direct(data_vars: dict, coords: dict) -> bool:
+    """Whether :func:`dataset` can build the Dataset itself (see there)."""
+    both = (*data_vars.values(), *coords.values())
+    if any(type(v) is not xr.Variable for v in both) or not data_vars.keys().isdisjoint(coords):
+        return False
+    dims = {d for v in both for d in v.dims}
+    if not dims.isdisjoint(data_vars):
+        return False
+    for name, v in coords.items():
+        if name in dims and (v.dims != (name,) or v.dtype.kind not in "iufO" or v.dtype == np.float16):
+            return False
+    return True
 
 
 #: id of a case -> its YAML text, while the case lives (:func:`case_yaml`)

@@ -50,3 +50,73 @@ def test_a_variable_the_blocks_did_not_hold_is_still_checked_at_the_end():
         make_dataset(late, {"time": t}, analysis="towed_dynamic", guard=guard)
     ds = make_dataset(block, {"time": t}, analysis="towed_dynamic", guard=guard)
     assert ds.x.shape == (2, 3)
+
+
+def _same_dataset(fast: xr.Dataset, slow: xr.Dataset) -> None:
+    """The Dataset :func:`results.dataset` built is the one ``xarray.Dataset`` builds: values, attributes, the
+    order of the variables and dimensions, which are coordinates, the variables' types and the indexes."""
+    assert fast.identical(slow)
+    assert list(fast.variables) == list(slow.variables)
+    assert list(fast.sizes.items()) == list(slow.sizes.items())
+    assert set(fast.coords) == set(slow.coords)
+    for name, v in slow.variables.items():
+        w = fast.variables[name]
+        assert type(w) is type(v) and w.dtype == v.dtype and w.encoding == v.encoding, name
+    assert list(fast.xindexes) == list(slow.xindexes)
+    for name, index in slow.xindexes.items():
+        other = fast.xindexes[name]
+        assert type(other) is type(index) and other.equals(index), name
+        assert other.coord_dtype == index.coord_dtype and type(other.index) is type(index.index), name
+        assert other.index.dtype == index.index.dtype and other.index.name == index.index.name, name
+
+
+@pytest.mark.parametrize("name", ["spread_mooring.yaml", "spread_mooring_watch_circle.yaml", "oc3_hywind_static.yaml",
+                                  "oc3_hywind_modes.yaml", "paper004_lena_pushover.yaml"])
+def test_a_result_is_the_dataset_xarray_would_make(name, monkeypatch):
+    seen = []
+    build = results.dataset
+
+    def spy(data_vars, coords):
+        seen.append((data_vars, coords))
+        return build(data_vars, coords)
+
+    monkeypatch.setattr(results, "dataset", spy)
+    sc.run(sc.load_case(EXAMPLES / name))
+    assert seen
+    for data_vars, coords in seen:
+        _same_dataset(build(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+
+
+def test_the_direct_dataset_in_every_case_it_takes_and_the_constructor_for_the_rest():
+    names = np.array(["a", "b"], dtype=object)
+    cases = [
+        ({"x": var(("line", "node"), np.ones((2, 3)), "m", "x"), "n": var((), 3, "1", "a scalar")},
+         {"line": var("line", names, "1", "line"), "node": var("node", np.arange(3), "1", "node"),
+          "s": var(("line", "node"), np.zeros((2, 3)), "m", "s")}),
+        ({"x": var(("line", "node"), np.ones((0, 3)), "m", "x")},  # no lines
+         {"line": var("line", np.array([], dtype=object), "1", "line"), "node": var("node", [0.5, 1.0, 2.0], "m", "n")}),
+        ({"x": var("t", [1.0, 2.0], "m", "x")}, {"t": var("t", np.array([0.0, 1.0], np.float32), "s", "t")}),
+        ({"x": var("k", [1.0, 2.0], "m", "x")}, {"k": var("k", np.array(["a", None], dtype=object), "1", "k")}),
+        ({"x": var("k", [1.0, 2.0], "m", "x")}, {}),  # a dimension without a coordinate
+        ({"x": var("t", [1.0, 2.0], "m", "x")},
+         {"t": var("t", np.array(["2000-01-01", "2000-01-02"], dtype="datetime64[ns]"), "1", "t")}),  # constructor
+        ({"x": xr.DataArray([1.0, 2.0], dims="k")}, {"k": var("k", [0, 1], "1", "k")}),                 # constructor
+        ({"k": var("k", [1.0, 2.0], "m", "a variable named after its dimension")}, {}),                  # constructor
+    ]
+    for data_vars, coords in cases:
+        _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+    with pytest.raises(ValueError, match="conflicting sizes"):
+        results.dataset({"x": var("line", [1.0], "m", "x")}, {"line": var("line", names, "1", "line")})
+
+
+def test_the_index_of_the_same_names_is_made_once_and_the_datasets_stay_apart():
+    def build():
+        return results.dataset({"x": var("line", [1.0, 2.0], "m", "x")},
+                               {"line": var("line", np.array(["l1", "l2"], dtype=object), "1", "line name")})
+
+    first, second = build(), build()
+    assert first.xindexes["line"] is second.xindexes["line"]  # kept: xarray shares indexes itself
+    first["line"].attrs["long_name"] = "changed"
+    first["x"].attrs["units"] = "km"
+    assert second["line"].attrs["long_name"] == "line name" and second["x"].attrs["units"] == "m"
+    assert build()["line"].attrs["long_name"] == "line name"

@@ -23,6 +23,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -106,6 +107,9 @@ class SystemSetup:
     loads: tuple[float, ...] = ()
     headings: tuple[float, ...] = ()
     statics: str = "catenary"
+    #: per condition, the start the checks evaluated (:class:`~seacable.system.statics.solve.CheckedStart`, or
+    #: None), which the condition's first solve iterates from
+    starts: tuple = dataclasses.field(default=(), repr=False, compare=False)
 
     @property
     def fe(self) -> bool:
@@ -141,7 +145,7 @@ def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
         raise InputError(f"{analysis_type} takes a system case (seacable.system.SystemCase with analysis type "
                          f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
     mode = statics_used(case, statics)
-    intact = case.system()
+    intact = _intact_system(case)
     named = case.analysis.damaged_lines
     if is_most_loaded(named):
         # the line is known once the intact condition is solved: each one it may be is checked here
@@ -150,24 +154,46 @@ def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
         damaged = None
     else:
         damaged = case.damaged_system()
-    _check_condition(case, intact, None, mode)
+    starts = [_check_condition(case, intact, None, mode)]
     if damaged is not None:
-        _check_condition(case, damaged, named, mode)
+        starts.append(_check_condition(case, damaged, named, mode))
     several = damaged is not None or (is_most_loaded(named) and len(intact.lines) > 0)
     return SystemSetup(case=case, conditions=("intact", "damaged")[:1 + several], systems=(intact, damaged)[:1 + several],
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points),
-                       statics=mode)
+                       statics=mode, starts=tuple(starts))
 
 
-def _check_condition(case, system: MooringSystem, removed, mode: str) -> None:
-    """The checks of one condition's system before solving (``removed``: the lines it lacks; None: intact)."""
+#: id of a case -> its intact system, while the case lives (:func:`_intact_system`)
+_SYSTEMS: dict[int, MooringSystem] = {}
+
+
+def _intact_system(case: SystemCase) -> MooringSystem:
+    """``case.system()``, built once per case object: cases and systems are immutable (frozen models), so a case
+    run again (a benchmark, a convergence study, the same case under other options) solves the same system
+    object, whose assembly the statics keep (as the case's YAML is kept: :func:`seacable.results.case_yaml`);
+    it is forgotten when the case is."""
+    key = id(case)
+    system = _SYSTEMS.get(key)
+    if system is None:
+        system = case.system()
+        try:
+            weakref.finalize(case, _SYSTEMS.pop, key, None)
+        except TypeError:  # not weakly referenceable: not kept
+            return system
+        _SYSTEMS[key] = system
+    return system
+
+
+def _check_condition(case, system: MooringSystem, removed, mode: str):
+    """The checks of one condition's system before solving (``removed``: the lines it lacks; None: intact);
+    returns the start the catenary statics' checks evaluated (None for the finite-element statics)."""
     _check_free_points(system, "intact" if removed is None else "damaged")
     where = "" if removed is None else f"damaged condition (analysis.damaged_lines {list(removed)} removed): "
     check_bodies_without_lines(system, where)
     if mode == "finite_element":
         _fe_checks(system, case.environment, where)
-    else:
-        _start_checks(system, case.environment, where, case.analysis.max_strain)
+        return None
+    return _start_checks(system, case.environment, where, case.analysis.max_strain)
 
 
 def _fe_checks(system: MooringSystem, environment, where: str) -> None:
@@ -275,9 +301,11 @@ def _offsets_text(system: MooringSystem, eq) -> str:
 
 
 def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str,
-                statics: str = "catenary", stiffness: bool = True):
+                statics: str = "catenary", stiffness: bool = True, start=None):
     """Solve the equilibrium of ``system`` under each external load of ``steps`` (a list of (label,
-    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium.
+    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium. ``start``: the start the
+    checks evaluated (:class:`~seacable.system.statics.solve.CheckedStart`), which the first step takes if it
+    is its start.
 
     A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
     last offsets, the last converged offsets and ``fix``. ``statics``: 'catenary' or 'finite_element'
@@ -302,7 +330,8 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
                                         stiffness=stiffness and last)
                 else:
                     eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
-                                           max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
+                                           max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain,
+                                           start=start if eq is None else None)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""
@@ -317,14 +346,14 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     return eq
 
 
-def _start_checks(system: MooringSystem, environment, where: str, max_strain: float = 1.0) -> None:
+def _start_checks(system: MooringSystem, environment, where: str, max_strain: float = 1.0):
     """The solver's checks at the given positions, without solving (:func:`~seacable.system.statics.check_statics`):
     what its catenaries cannot model, a line that cannot reach between its ends, a body that nothing
-    restores (unstable hydrostatics and no mooring restoring)."""
+    restores (unstable hydrostatics and no mooring restoring). Returns the start they evaluated."""
     from .statics import check_statics
 
     try:
-        check_statics(system, environment, max_strain=max_strain)
+        return check_statics(system, environment, max_strain=max_strain)
     except InputError as err:
         raise type(err)(f"{where}{err}") from None
 
@@ -539,7 +568,9 @@ def run_system_static(case: SystemCase, statics: str | None = None):
             system = case.damaged_system((line,))
             setup = dataclasses.replace(setup, systems=(setup.systems[0], system))
             where += f" ({line}, the most loaded line, removed)"
-        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
+        start = setup.starts[c] if c < len(setup.starts) else None
+        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
+                         start=start)
         _check_stable(system, eq, where)
         if eq.pin_reaction is not None:
             for k, name in enumerate(eq.free_body_names):
@@ -599,12 +630,13 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
     of the largest tension in the intact equilibrium under that heading's largest load; ``chosen`` gets those
     lines, heading by heading."""
     a: SystemOffsetsAnalysis = case.analysis
-    for condition, system in zip(setup.conditions, setup.systems):
+    for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_offsets case '{case.name}', {condition} condition"
         per_heading = system is None
         bases: dict[str, tuple] = {}
         if not per_heading:
-            base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
+            base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
+                               start=setup.starts[c] if c < len(setup.starts) else None)
             _check_stable(system, base, f"{where}, at no load")
         for k, h in enumerate(headings):
             at = where
