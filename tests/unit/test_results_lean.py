@@ -76,14 +76,14 @@ def test_a_result_is_the_dataset_xarray_would_make(name, monkeypatch):
     seen = []
     build = results.dataset
 
-    def spy(data_vars, coords):
-        seen.append((data_vars, coords))
-        return build(data_vars, coords)
+    def spy(data_vars, coords, owned=False):
+        seen.append((data_vars, coords, owned))
+        return build(data_vars, coords)  # not owned: the variables are built into a Dataset again below
 
     monkeypatch.setattr(results, "dataset", spy)
     sc.run(sc.load_case(EXAMPLES / name))
     assert seen
-    for data_vars, coords in seen:
+    for data_vars, coords, owned in seen:
         _same_dataset(build(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
 
 
@@ -105,6 +105,8 @@ def test_the_direct_dataset_in_every_case_it_takes_and_the_constructor_for_the_r
     ]
     for data_vars, coords in cases:
         _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+        _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))  # kept
+        _same_dataset(results.dataset(data_vars, coords, owned=True), xr.Dataset(data_vars=data_vars, coords=coords))
     with pytest.raises(ValueError, match="conflicting sizes"):
         results.dataset({"x": var("line", [1.0], "m", "x")}, {"line": var("line", names, "1", "line")})
 
@@ -116,6 +118,7 @@ def test_the_index_of_the_same_names_is_made_once_and_the_datasets_stay_apart():
 
     first, second = build(), build()
     assert first.xindexes["line"] is second.xindexes["line"]  # kept: xarray shares indexes itself
+    assert first["line"].variable is not second["line"].variable
     first["line"].attrs["long_name"] = "changed"
     first["x"].attrs["units"] = "km"
     assert second["line"].attrs["long_name"] == "line name" and second["x"].attrs["units"] == "m"

@@ -489,6 +489,8 @@ def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
 
 
 def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
+    if len(records) == 1:  # one equilibrium (system_static intact): its arrays, with the leading axes
+        return {k: np.asarray(v).reshape(lead + np.shape(v)) for k, v in records[0].items()}
     return {k: np.stack([r[k] for r in records]).reshape(lead + np.shape(records[0][k])) for k in records[0]}
 
 
@@ -613,7 +615,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         "body_dof2": var("body_dof2", labels, "1", "free body and degree of freedom (displacement or rotation)"),
     })
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
-                      settings=_settings(case, setup))
+                      settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)
     _statics_attrs(ds, setup)
     if held:
@@ -729,7 +731,7 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     coords.update({"applied_load": var("applied_load", loads, "N", f"external horizontal load on body '{a.body}'"),
                    "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})
     ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
-                      settings=_settings(case, setup, body=a.body))
+                      settings=_settings(case, setup, body=a.body), owned=True)
     ds.attrs["loaded_body"] = a.body
     ds.attrs["depth"] = float(case.environment.depth)
     ds.attrs["interrupted"] = int(interrupted)
