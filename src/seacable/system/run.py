@@ -107,9 +107,9 @@ class SystemSetup:
     loads: tuple[float, ...] = ()
     headings: tuple[float, ...] = ()
     statics: str = "catenary"
-    #: per condition, the start the checks evaluated (:class:`~seacable.system.statics.solve.CheckedStart`, or
-    #: None), which the condition's first solve iterates from
-    starts: tuple = dataclasses.field(default=(), repr=False, compare=False)
+    #: the lines a condition removes (None: intact) -> the start its checks evaluated
+    #: (:class:`~seacable.system.statics.solve.CheckedStart`, or None), which its first solve iterates from
+    starts: dict = dataclasses.field(default_factory=dict, repr=False, compare=False)
 
     @property
     def fe(self) -> bool:
@@ -145,42 +145,49 @@ def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
         raise InputError(f"{analysis_type} takes a system case (seacable.system.SystemCase with analysis type "
                          f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
     mode = statics_used(case, statics)
-    intact = _intact_system(case)
+    intact = _condition_system(case)
     named = case.analysis.damaged_lines
+    starts = {}
     if is_most_loaded(named):
         # the line is known once the intact condition is solved: each one it may be is checked here
         for line in intact.lines:
-            _check_condition(case, case.damaged_system((line,)), (line,), mode)
+            starts[(line,)] = _check_condition(case, _condition_system(case, (line,)), (line,), mode)
         damaged = None
     else:
-        damaged = case.damaged_system()
-    starts = [_check_condition(case, intact, None, mode)]
+        damaged = _condition_system(case, tuple(named)) if named else None
+    starts[None] = _check_condition(case, intact, None, mode)
     if damaged is not None:
-        starts.append(_check_condition(case, damaged, named, mode))
+        starts[tuple(named)] = _check_condition(case, damaged, named, mode)
     several = damaged is not None or (is_most_loaded(named) and len(intact.lines) > 0)
     return SystemSetup(case=case, conditions=("intact", "damaged")[:1 + several], systems=(intact, damaged)[:1 + several],
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points),
-                       statics=mode, starts=tuple(starts))
+                       statics=mode, starts=starts)
 
 
-#: id of a case -> its intact system, while the case lives (:func:`_intact_system`)
-_SYSTEMS: dict[int, MooringSystem] = {}
+#: id of a case -> {the lines removed (None: none) -> the system}, while the case lives (:func:`_condition_system`)
+_SYSTEMS: dict[int, dict] = {}
 
 
-def _intact_system(case: SystemCase) -> MooringSystem:
-    """``case.system()``, built once per case object: cases and systems are immutable (frozen models), so a case
-    run again (a benchmark, a convergence study, the same case under other options) solves the same system
-    object, whose assembly the statics keep (as the case's YAML is kept: :func:`seacable.results.case_yaml`);
-    it is forgotten when the case is."""
+def _condition_system(case: SystemCase, removed: tuple[str, ...] | None = None) -> MooringSystem:
+    """``case.system()`` (``removed`` None) or ``case.damaged_system(removed)``, built once per case object.
+
+    Cases and systems are immutable (frozen models): the checks and the solves of a run (a damaged condition of
+    ``damaged_lines: most_loaded`` is checked for each line it may remove, then solved for the one it does), and a
+    case run again (a benchmark, a convergence study), solve the same system object, whose assembly the statics
+    keep (as the case's YAML is kept: :func:`seacable.results.case_yaml`); they are forgotten with the case.
+    """
     key = id(case)
-    system = _SYSTEMS.get(key)
-    if system is None:
-        system = case.system()
+    kept = _SYSTEMS.get(key)
+    if kept is not None and removed in kept:
+        return kept[removed]
+    system = case.system() if removed is None else case.damaged_system(tuple(removed))
+    if kept is None:
         try:
             weakref.finalize(case, _SYSTEMS.pop, key, None)
         except TypeError:  # not weakly referenceable: not kept
             return system
-        _SYSTEMS[key] = system
+        kept = _SYSTEMS[key] = {}
+    kept[removed] = system
     return system
 
 
@@ -567,12 +574,14 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         where = f"system_static case '{case.name}', {condition} condition"
         if system is None:  # damaged_lines: most_loaded, the line of the largest tension in the intact equilibrium
             line = most_loaded_line(setup.lines, line_tensions(intact_eq, setup.lines), f"{where}: ")
-            system = case.damaged_system((line,))
+            system = _condition_system(case, (line,))
             setup = dataclasses.replace(setup, systems=(setup.systems[0], system))
             where += f" ({line}, the most loaded line, removed)"
-        start = setup.starts[c] if c < len(setup.starts) else None
+            removed = (line,)
+        else:
+            removed = None if c == 0 else tuple(a.damaged_lines)
         eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
-                         start=start)
+                         start=setup.starts.get(removed))
         _check_stable(system, eq, where)
         if eq.pin_reaction is not None:
             for k, name in enumerate(eq.free_body_names):
@@ -638,7 +647,7 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
         bases: dict[str, tuple] = {}
         if not per_heading:
             base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
-                               start=setup.starts[c] if c < len(setup.starts) else None)
+                               start=setup.starts.get(None if c == 0 else tuple(a.damaged_lines)))
             _check_stable(system, base, f"{where}, at no load")
         for k, h in enumerate(headings):
             at = where
@@ -650,9 +659,9 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
                     chosen.append(line)
                 at = f"{where} ({line}, the most loaded line at heading {h:.6g} rad, removed)"
                 if line not in bases:
-                    damaged = case.damaged_system((line,))
+                    damaged = _condition_system(case, (line,))
                     eq0 = _solve_path(case, damaged, _ramp(damaged, a.load_steps), None, at, _static_fix(a),
-                                      setup.statics)
+                                      setup.statics, start=setup.starts.get((line,)))
                     _check_stable(damaged, eq0, f"{at}, at no load")
                     bases[line] = (damaged, eq0)
                 system, base = bases[line]
