@@ -37,6 +37,28 @@ attributes), best of ``repeats`` after a warm-up on the same case object. Printe
 ``solve_equilibrium`` alone (target: at most 2), and MoorPy's solveEquilibrium + getCoupledStiffness against
 ``run`` (target: at least 30). A case run again is stamped with the YAML dumped the first time (the case is
 immutable); ``first run`` is the call on a fresh copy of the case, its YAML dumped too.
+
+Measured through ``run`` (2-core machine shared with three other jobs, load average 6-8, 2026-11-29, best of 15;
+MoorPy's figures that day were 3-4 times its quiet ones above, so its ratios are inflated alike). "before" is
+commit ede2d76; "after" builds the Dataset directly (``seacable.results.dataset``: no merge nor alignment, the
+default indexes of the names kept; identical Datasets), hands the start ``check_statics`` evaluated to the first
+solve instead of building the problem and evaluating it twice, builds each condition's system once per case
+(the damaged ones of ``most_loaded`` too) and takes the variables made for the Dataset without copies:
+
+=========================  ==========  ====================  ====================  =================================
+system                     solve [ms]  run [ms] before/after  run/solve bef./aft.  first run [ms] before/after
+=========================  ==========  ====================  ====================  =================================
+OC3-Hywind spar            0.87        10.0 / 2.43           11.6 / 2.77           12.6 / 5.1
+OC4-DeepCwind semi         0.98        6.4 / 3.11            6.5 / 3.2             13.0 / 5.8
+buoy, clumps and floats    3.7-4.9     34.5 / 9.4            7.1 / 2.6             37.1 / 33.8
+=========================  ==========  ====================  ====================  =================================
+
+MoorPy FD / run the same day: OC3 15.4 before, 73 after; OC4 15.4 before, 30 after (against MoorPy's quiet
+45 ms and 27 ms: about 18 and 9). Again later that day, with the case's YAML dumped from nodes built directly
+(``seacable._model.dump_yaml``): run 2.75, 2.84, 6.8 ms (run/solve 3.2, 2.8, 2.1), first run 5.4, 5.6, 21.9 ms,
+MoorPy FD / run 42 and 43 (MoorPy 115 and 122 ms that hour). What is left of a run around its solve (OC3, about 1.5 ms): the line profiles
+(``SystemEquilibrium.line_profile``, 0.5 ms: a few dozen small NumPy calls per sub-line), the checks at the start
+(0.2 ms), the result's variables and Dataset (0.35 ms).
 """
 
 from __future__ import annotations

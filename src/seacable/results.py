@@ -23,7 +23,7 @@ from .errors import ConvergenceError, InputError
 
 __all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result",
            "check_schema", "check_time",
-           "compression", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
+           "compression", "dataset", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
 #: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file
@@ -157,7 +157,7 @@ class FiniteGuard:
 def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], *,
                  analysis: str, case=None, settings: dict | None = None,
                  references: Iterable[str] = (), title: str | None = None,
-                 guard: FiniteGuard | None = None) -> xr.Dataset:
+                 guard: FiniteGuard | None = None, owned: bool = False) -> xr.Dataset:
     """Assemble a result Dataset and stamp its provenance.
 
     Parameters
@@ -178,6 +178,9 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     guard
         The :class:`FiniteGuard` that already checked the variables along ``time`` block by block (a streamed
         run's sink); the variables it has not seen are checked with it. None: every variable is checked here.
+    owned
+        The variables were made for this result and nothing else holds them: the Dataset takes them as they are
+        instead of shallow copies (:func:`dataset`).
 
     Raises
     ------
@@ -188,7 +191,7 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         FiniteGuard().check(data_vars, coords)
     else:  # the blocks were checked as they came: the variables added at the end only
         guard.check({k: v for k, v in data_vars.items() if k not in guard.checked}, coords)
-    ds = xr.Dataset(data_vars=data_vars, coords=coords)
+    ds = dataset(data_vars, coords, owned)
     attrs = {
         "title": title or (case.name if case is not None else analysis),
         "analysis": analysis,
@@ -206,6 +209,85 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     ds.attrs.update(attrs)
     check_schema(ds)
     return ds
+
+
+#: (name, dtype, shape, values) -> the default index xarray makes of a dimension coordinate and the data of its
+#: coordinate variable (:func:`dataset`)
+_INDEXES: dict[tuple, tuple] = {}
+_INDEXES_KEPT = 256     # indexes kept (the oldest forgotten first)
+_INDEX_CACHED = 1000    # largest coordinate whose index is kept
+
+
+def _default_index(name, v: xr.Variable):
+    """The index ``xarray.Dataset`` makes of the dimension coordinate ``name`` (``PandasIndex.from_variables``)
+    and its coordinate variable (``create_variables``), the index and the variable's data (the index wrapped)
+    kept for a coordinate of text or numbers of at most :data:`_INDEX_CACHED` values: the same names (lines,
+    bodies, degrees of freedom, conditions) come back run after run, and making a pandas index of them costs more
+    than the Dataset around it. xarray treats both as immutable and shares them between Datasets itself (a
+    shallow copy of a Dataset shares them); the variable, with its own attributes, is made each time."""
+    from xarray.indexes import PandasIndex
+
+    array = v.values
+    key = None
+    if array.size <= _INDEX_CACHED:
+        if array.dtype.kind in "iu" or (array.dtype.kind == "f" and array.dtype.itemsize >= 4):
+            key = (name, array.dtype.str, array.shape, array.tobytes())
+        elif array.dtype.kind == "O" and all(type(item) is str for item in array.flat):
+            key = (name, "O", array.shape, tuple(array.tolist()))
+    kept = _INDEXES.get(key) if key is not None else None
+    if kept is None:
+        index = PandasIndex.from_variables({name: v}, options={})
+        variable = index.create_variables({name: v})[name]
+        if key is not None:
+            if len(_INDEXES) >= _INDEXES_KEPT:
+                _INDEXES.pop(next(iter(_INDEXES)))
+            _INDEXES[key] = (index, variable._data)
+        return index, variable
+    index, data = kept
+    return index, xr.IndexVariable(v.dims, data, attrs=v.attrs, encoding=v.encoding, fastpath=True)
+
+
+def dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], owned: bool = False) -> xr.Dataset:
+    """``xarray.Dataset(data_vars=data_vars, coords=coords)``, the same Dataset built without xarray's merge.
+
+    The constructor merges and aligns its arguments (it takes DataArrays, tuples, pandas objects): for a
+    result of a few dozen :func:`var` variables that is most of a small run's time. Here, when every
+    argument is an ``xarray.Variable`` and the names leave nothing to merge (no name both a variable and a
+    coordinate, no variable named after a dimension, every coordinate named after a dimension one-dimensional
+    along it, indexes of numbers or text), the Dataset is put together directly: each variable a shallow copy
+    as the constructor makes, each dimension coordinate with the default index the constructor makes
+    (:func:`_default_index`), in the constructor's order (the variables, then the coordinates). Anything else
+    goes to the constructor. tests/unit/test_results_lean.py checks the two give identical Datasets (values,
+    attributes, order, dimensions, indexes).
+
+    ``owned``: the variables were made for this Dataset and nothing else holds them, so they are taken as they
+    are rather than copied (shallow copies, as the constructor makes, cost as much as the variables).
+    """
+    construct = getattr(xr.Dataset, "_construct_direct", None)
+    if construct is None or not _direct(data_vars, coords):
+        return xr.Dataset(data_vars=data_vars, coords=coords)
+    variables = dict(data_vars) if owned else {name: v.copy(deep=False) for name, v in data_vars.items()}
+    indexes = {}
+    for name, v in coords.items():
+        if v.dims == (name,):
+            indexes[name], variables[name] = _default_index(name, v)
+        else:
+            variables[name] = v if owned else v.copy(deep=False)
+    return construct(variables, set(coords), indexes=indexes)
+
+
+def _direct(data_vars: dict, coords: dict) -> bool:
+    """Whether :func:`dataset` can build the Dataset itself (see there)."""
+    both = (*data_vars.values(), *coords.values())
+    if any(type(v) is not xr.Variable for v in both) or not data_vars.keys().isdisjoint(coords):
+        return False
+    dims = {d for v in both for d in v.dims}
+    if not dims.isdisjoint(data_vars):
+        return False
+    for name, v in coords.items():
+        if name in dims and (v.dims != (name,) or v.dtype.kind not in "iufO" or v.dtype == np.float16):
+            return False
+    return True
 
 
 #: id of a case -> its YAML text, while the case lives (:func:`case_yaml`)

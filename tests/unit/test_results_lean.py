@@ -31,6 +31,46 @@ def test_the_case_yaml_is_pyyamls_safe_dump_dumped_once_per_case(name):
     assert key not in results._CASE_YAML  # forgotten with its case
 
 
+def _cases():
+    for path in sorted(EXAMPLES.glob("*.yaml")):
+        try:
+            yield sc.load_case(path)
+        except sc.SeacableError:  # a sweep file
+            continue
+
+
+def test_every_example_case_dumps_the_text_pyyamls_representer_gives():
+    """dump_yaml builds the YAML nodes itself (issue 38: most of a case's dump was PyYAML's representer): the
+    same text as yaml.safe_dump, for every example case and a system of the benches (floats of every form)."""
+    from seacable._model import dump_yaml
+    from seacable.system.case import SystemCase, SystemStaticAnalysis
+    from seacable.system.statics import examples as ex
+
+    system, env = ex.moored_buoy()
+    body = next(iter(system.bodies))
+    bodies = {**system.bodies, body: system.bodies[body].replace(external_force=(2e4, 1e-310, -0.0, 1e22, 0.1, 3.0))}
+    cases = [*_cases(), SystemCase(name="buoy", environment=env.model_dump(), points=system.points, bodies=bodies,
+                                   lines=system.lines, analysis=SystemStaticAnalysis())]
+    assert len(cases) > 20
+    for case in cases:
+        assert dump_yaml(case) == yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False), case.name
+
+
+def test_data_that_is_not_plain_json_is_left_to_pyyamls_representer():
+    from seacable._model import dump_yaml
+
+    class Data:
+        def __init__(self, data):
+            self.data = data
+
+        def model_dump(self, mode):
+            return self.data
+
+    shared = [1.0, float("nan"), float("-inf"), 1e16, True, None]
+    for data in ({"a": shared, "b": shared}, {"a": (1, 2)}, {"x": [{"y": "text: with a colon"}, [], {}]}):
+        assert dump_yaml(Data(data)) == yaml.safe_dump(data, sort_keys=False)
+
+
 def test_names_are_the_variable_xarray_would_make():
     names = np.array(["line1", "line2", "line 3"], dtype=object)
     fast = var("line", names, "1", "line name")
@@ -50,3 +90,76 @@ def test_a_variable_the_blocks_did_not_hold_is_still_checked_at_the_end():
         make_dataset(late, {"time": t}, analysis="towed_dynamic", guard=guard)
     ds = make_dataset(block, {"time": t}, analysis="towed_dynamic", guard=guard)
     assert ds.x.shape == (2, 3)
+
+
+def _same_dataset(fast: xr.Dataset, slow: xr.Dataset) -> None:
+    """The Dataset :func:`results.dataset` built is the one ``xarray.Dataset`` builds: values, attributes, the
+    order of the variables and dimensions, which are coordinates, the variables' types and the indexes."""
+    assert fast.identical(slow)
+    assert list(fast.variables) == list(slow.variables)
+    assert list(fast.sizes.items()) == list(slow.sizes.items())
+    assert set(fast.coords) == set(slow.coords)
+    for name, v in slow.variables.items():
+        w = fast.variables[name]
+        assert type(w) is type(v) and w.dtype == v.dtype and w.encoding == v.encoding, name
+    assert list(fast.xindexes) == list(slow.xindexes)
+    for name, index in slow.xindexes.items():
+        other = fast.xindexes[name]
+        assert type(other) is type(index) and other.equals(index), name
+        assert other.coord_dtype == index.coord_dtype and type(other.index) is type(index.index), name
+        assert other.index.dtype == index.index.dtype and other.index.name == index.index.name, name
+
+
+@pytest.mark.parametrize("name", ["spread_mooring.yaml", "spread_mooring_watch_circle.yaml", "oc3_hywind_static.yaml",
+                                  "oc3_hywind_modes.yaml", "paper004_lena_pushover.yaml"])
+def test_a_result_is_the_dataset_xarray_would_make(name, monkeypatch):
+    seen = []
+    build = results.dataset
+
+    def spy(data_vars, coords, owned=False):
+        seen.append((data_vars, coords, owned))
+        return build(data_vars, coords)  # not owned: the variables are built into a Dataset again below
+
+    monkeypatch.setattr(results, "dataset", spy)
+    sc.run(sc.load_case(EXAMPLES / name))
+    assert seen
+    for data_vars, coords, owned in seen:
+        _same_dataset(build(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+
+
+def test_the_direct_dataset_in_every_case_it_takes_and_the_constructor_for_the_rest():
+    names = np.array(["a", "b"], dtype=object)
+    cases = [
+        ({"x": var(("line", "node"), np.ones((2, 3)), "m", "x"), "n": var((), 3, "1", "a scalar")},
+         {"line": var("line", names, "1", "line"), "node": var("node", np.arange(3), "1", "node"),
+          "s": var(("line", "node"), np.zeros((2, 3)), "m", "s")}),
+        ({"x": var(("line", "node"), np.ones((0, 3)), "m", "x")},  # no lines
+         {"line": var("line", np.array([], dtype=object), "1", "line"), "node": var("node", [0.5, 1.0, 2.0], "m", "n")}),
+        ({"x": var("t", [1.0, 2.0], "m", "x")}, {"t": var("t", np.array([0.0, 1.0], np.float32), "s", "t")}),
+        ({"x": var("k", [1.0, 2.0], "m", "x")}, {"k": var("k", np.array(["a", None], dtype=object), "1", "k")}),
+        ({"x": var("k", [1.0, 2.0], "m", "x")}, {}),  # a dimension without a coordinate
+        ({"x": var("t", [1.0, 2.0], "m", "x")},
+         {"t": var("t", np.array(["2000-01-01", "2000-01-02"], dtype="datetime64[ns]"), "1", "t")}),  # constructor
+        ({"x": xr.DataArray([1.0, 2.0], dims="k")}, {"k": var("k", [0, 1], "1", "k")}),                 # constructor
+        ({"k": var("k", [1.0, 2.0], "m", "a variable named after its dimension")}, {}),                  # constructor
+    ]
+    for data_vars, coords in cases:
+        _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+        _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))  # kept
+        _same_dataset(results.dataset(data_vars, coords, owned=True), xr.Dataset(data_vars=data_vars, coords=coords))
+    with pytest.raises(ValueError, match="conflicting sizes"):
+        results.dataset({"x": var("line", [1.0], "m", "x")}, {"line": var("line", names, "1", "line")})
+
+
+def test_the_index_of_the_same_names_is_made_once_and_the_datasets_stay_apart():
+    def build():
+        return results.dataset({"x": var("line", [1.0, 2.0], "m", "x")},
+                               {"line": var("line", np.array(["l1", "l2"], dtype=object), "1", "line name")})
+
+    first, second = build(), build()
+    assert first.xindexes["line"] is second.xindexes["line"]  # kept: xarray shares indexes itself
+    assert first["line"].variable is not second["line"].variable
+    first["line"].attrs["long_name"] = "changed"
+    first["x"].attrs["units"] = "km"
+    assert second["line"].attrs["long_name"] == "line name" and second["x"].attrs["units"] == "m"
+    assert build()["line"].attrs["long_name"] == "line name"

@@ -55,10 +55,10 @@ References
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 import numpy as np
-from scipy.optimize import brentq
 from scipy.special import j0, jn_zeros, y0
 
 from .. import _validate
@@ -134,6 +134,64 @@ def _cross(x, rho_minus_1):
     return j0(a) * y0(b) - j0(b) * y0(a)
 
 
+def _brentq(f, xa, xb, args=(), xtol=2e-12, rtol=8.881784197001252e-16, maxiter=100):
+    """A root of ``f(x, *args)`` between ``xa`` and ``xb`` (of opposite signs): Brent's method as SciPy's
+    ``scipy.optimize.brentq`` (its C code, ``scipy/optimize/Zeros/brentq.c``, step for step, so the same root
+    to the bit: tests/unit/modal/test_vertical.py), without importing ``scipy.optimize`` (and with it
+    ``scipy.linalg``: most of the time of ``seacable validate`` of a vertical cable).
+
+    Raises
+    ------
+    ConvergenceError
+        The ends do not bracket a root, ``f`` is NaN, or no root within ``maxiter`` iterations.
+    """
+    def call(x):
+        fx = float(f(x, *args))
+        if math.isnan(fx):
+            raise ConvergenceError(f"the function is NaN at x = {x}: no root found", iterations=0)
+        return fx
+
+    xpre, xcur = float(xa), float(xb)
+    xblk = fblk = spre = scur = 0.0
+    fpre, fcur = call(xpre), call(xcur)
+    if fpre == 0.0:
+        return xpre
+    if fcur == 0.0:
+        return xcur
+    if math.copysign(1.0, fpre) == math.copysign(1.0, fcur):
+        raise ConvergenceError(f"f({xpre}) = {fpre} and f({xcur}) = {fcur} have the same sign: no root bracketed",
+                               iterations=0, residual=min(abs(fpre), abs(fcur)))
+    for _ in range(maxiter):
+        if fpre != 0.0 and fcur != 0.0 and math.copysign(1.0, fpre) != math.copysign(1.0, fcur):
+            xblk, fblk = xpre, fpre
+            spre = scur = xcur - xpre
+        if abs(fblk) < abs(fcur):
+            xpre, xcur, xblk = xcur, xblk, xcur
+            fpre, fcur, fblk = fcur, fblk, fcur
+        delta = (xtol + rtol * abs(xcur)) / 2
+        sbis = (xblk - xcur) / 2
+        if fcur == 0.0 or abs(sbis) < delta:
+            return xcur
+        if abs(spre) > delta and abs(fcur) < abs(fpre):
+            if xpre == xblk:  # interpolate
+                stry = -fcur * (xcur - xpre) / (fcur - fpre)
+            else:  # extrapolate
+                dpre = (fpre - fcur) / (xpre - xcur)
+                dblk = (fblk - fcur) / (xblk - xcur)
+                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+            if 2 * abs(stry) < min(abs(spre), 3 * abs(sbis) - delta):  # a good short step
+                spre, scur = scur, stry
+            else:  # bisect
+                spre = scur = sbis
+        else:  # bisect
+            spre = scur = sbis
+        xpre, fpre = xcur, fcur
+        xcur += scur if abs(scur) > delta else (delta if sbis > 0 else -delta)
+        fcur = call(xcur)
+    raise ConvergenceError(f"no root within {maxiter} iterations of Brent's method (last x = {xcur})",
+                           iterations=maxiter, residual=abs(fcur))
+
+
 def _mcmahon(eps, n_modes):
     """Roots x_s = (rho - 1) a_s of the cross product, A&S 9.5.28 with nu = 0 (mu = 0)."""
     rho = np.sqrt(1.0 + eps)
@@ -165,7 +223,7 @@ def _exact_roots(eps: float, n_modes: int) -> np.ndarray:
         if f_lo == 0.0:
             roots.append(x_lo)
         elif f_lo * f_hi < 0.0:
-            roots.append(brentq(_cross, x_lo, x_hi, args=(rm1,), xtol=1e-14, rtol=1e-14))
+            roots.append(_brentq(_cross, x_lo, x_hi, (rm1,), xtol=1e-14, rtol=1e-14))
         x_lo, f_lo = x_hi, f_hi
         if x_lo > x_max:
             # The roots satisfy (s - 1/4) pi < x_s <= s pi (between the free-end and the

@@ -23,6 +23,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -106,6 +107,9 @@ class SystemSetup:
     loads: tuple[float, ...] = ()
     headings: tuple[float, ...] = ()
     statics: str = "catenary"
+    #: the lines a condition removes (None: intact) -> the start its checks evaluated
+    #: (:class:`~seacable.system.statics.solve.CheckedStart`, or None), which its first solve iterates from
+    starts: dict = dataclasses.field(default_factory=dict, repr=False, compare=False)
 
     @property
     def fe(self) -> bool:
@@ -141,33 +145,62 @@ def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
         raise InputError(f"{analysis_type} takes a system case (seacable.system.SystemCase with analysis type "
                          f"'{analysis_type}'), got {type(case).__name__}. Suggested fix: seacable.load_case('file.yaml').")
     mode = statics_used(case, statics)
-    intact = case.system()
+    intact = _condition_system(case)
     named = case.analysis.damaged_lines
+    starts = {}
     if is_most_loaded(named):
         # the line is known once the intact condition is solved: each one it may be is checked here
         for line in intact.lines:
-            _check_condition(case, case.damaged_system((line,)), (line,), mode)
+            starts[(line,)] = _check_condition(case, _condition_system(case, (line,)), (line,), mode)
         damaged = None
     else:
-        damaged = case.damaged_system()
-    _check_condition(case, intact, None, mode)
+        damaged = _condition_system(case, tuple(named)) if named else None
+    starts[None] = _check_condition(case, intact, None, mode)
     if damaged is not None:
-        _check_condition(case, damaged, named, mode)
+        starts[tuple(named)] = _check_condition(case, damaged, named, mode)
     several = damaged is not None or (is_most_loaded(named) and len(intact.lines) > 0)
     return SystemSetup(case=case, conditions=("intact", "damaged")[:1 + several], systems=(intact, damaged)[:1 + several],
                        lines=tuple(intact.lines), bodies=tuple(intact.bodies), points=tuple(intact.points),
-                       statics=mode)
+                       statics=mode, starts=starts)
 
 
-def _check_condition(case, system: MooringSystem, removed, mode: str) -> None:
-    """The checks of one condition's system before solving (``removed``: the lines it lacks; None: intact)."""
+#: id of a case -> {the lines removed (None: none) -> the system}, while the case lives (:func:`_condition_system`)
+_SYSTEMS: dict[int, dict] = {}
+
+
+def _condition_system(case: SystemCase, removed: tuple[str, ...] | None = None) -> MooringSystem:
+    """``case.system()`` (``removed`` None) or ``case.damaged_system(removed)``, built once per case object.
+
+    Cases and systems are immutable (frozen models): the checks and the solves of a run (a damaged condition of
+    ``damaged_lines: most_loaded`` is checked for each line it may remove, then solved for the one it does), and a
+    case run again (a benchmark, a convergence study), solve the same system object, whose assembly the statics
+    keep (as the case's YAML is kept: :func:`seacable.results.case_yaml`); they are forgotten with the case.
+    """
+    key = id(case)
+    kept = _SYSTEMS.get(key)
+    if kept is not None and removed in kept:
+        return kept[removed]
+    system = case.system() if removed is None else case.damaged_system(tuple(removed))
+    if kept is None:
+        try:
+            weakref.finalize(case, _SYSTEMS.pop, key, None)
+        except TypeError:  # not weakly referenceable: not kept
+            return system
+        kept = _SYSTEMS[key] = {}
+    kept[removed] = system
+    return system
+
+
+def _check_condition(case, system: MooringSystem, removed, mode: str):
+    """The checks of one condition's system before solving (``removed``: the lines it lacks; None: intact);
+    returns the start the catenary statics' checks evaluated (None for the finite-element statics)."""
     _check_free_points(system, "intact" if removed is None else "damaged")
     where = "" if removed is None else f"damaged condition (analysis.damaged_lines {list(removed)} removed): "
     check_bodies_without_lines(system, where)
     if mode == "finite_element":
         _fe_checks(system, case.environment, where)
-    else:
-        _start_checks(system, case.environment, where, case.analysis.max_strain)
+        return None
+    return _start_checks(system, case.environment, where, case.analysis.max_strain)
 
 
 def _fe_checks(system: MooringSystem, environment, where: str) -> None:
@@ -275,9 +308,11 @@ def _offsets_text(system: MooringSystem, eq) -> str:
 
 
 def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: str, fix: str,
-                statics: str = "catenary", stiffness: bool = True):
+                statics: str = "catenary", stiffness: bool = True, start=None):
     """Solve the equilibrium of ``system`` under each external load of ``steps`` (a list of (label,
-    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium.
+    ``{body: 6 loads}`` or None)), each from the last; returns the last equilibrium. ``start``: the start the
+    checks evaluated (:class:`~seacable.system.statics.solve.CheckedStart`), which the first step takes if it
+    is its start.
 
     A failure raises the solver's error type naming ``where``, the step, the residual, the solver's
     last offsets, the last converged offsets and ``fix``. ``statics``: 'catenary' or 'finite_element'
@@ -302,7 +337,8 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
                                         stiffness=stiffness and last)
                 else:
                     eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
-                                           max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain)
+                                           max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain,
+                                           start=start if eq is None else None)
         except (ConvergenceError, NoSolutionError) as err:
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""
@@ -317,14 +353,14 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
     return eq
 
 
-def _start_checks(system: MooringSystem, environment, where: str, max_strain: float = 1.0) -> None:
+def _start_checks(system: MooringSystem, environment, where: str, max_strain: float = 1.0):
     """The solver's checks at the given positions, without solving (:func:`~seacable.system.statics.check_statics`):
     what its catenaries cannot model, a line that cannot reach between its ends, a body that nothing
-    restores (unstable hydrostatics and no mooring restoring)."""
+    restores (unstable hydrostatics and no mooring restoring). Returns the start they evaluated."""
     from .statics import check_statics
 
     try:
-        check_statics(system, environment, max_strain=max_strain)
+        return check_statics(system, environment, max_strain=max_strain)
     except InputError as err:
         raise type(err)(f"{where}{err}") from None
 
@@ -460,6 +496,8 @@ def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
 
 
 def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
+    if len(records) == 1:  # one equilibrium (system_static intact): its arrays, with the leading axes
+        return {k: np.asarray(v).reshape(lead + np.shape(v)) for k, v in records[0].items()}
     return {k: np.stack([r[k] for r in records]).reshape(lead + np.shape(records[0][k])) for k in records[0]}
 
 
@@ -536,10 +574,14 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         where = f"system_static case '{case.name}', {condition} condition"
         if system is None:  # damaged_lines: most_loaded, the line of the largest tension in the intact equilibrium
             line = most_loaded_line(setup.lines, line_tensions(intact_eq, setup.lines), f"{where}: ")
-            system = case.damaged_system((line,))
+            system = _condition_system(case, (line,))
             setup = dataclasses.replace(setup, systems=(setup.systems[0], system))
             where += f" ({line}, the most loaded line, removed)"
-        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
+            removed = (line,)
+        else:
+            removed = None if c == 0 else tuple(a.damaged_lines)
+        eq = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
+                         start=setup.starts.get(removed))
         _check_stable(system, eq, where)
         if eq.pin_reaction is not None:
             for k, name in enumerate(eq.free_body_names):
@@ -582,7 +624,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         "body_dof2": var("body_dof2", labels, "1", "free body and degree of freedom (displacement or rotation)"),
     })
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
-                      settings=_settings(case, setup))
+                      settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)
     _statics_attrs(ds, setup)
     if held:
@@ -599,12 +641,13 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
     of the largest tension in the intact equilibrium under that heading's largest load; ``chosen`` gets those
     lines, heading by heading."""
     a: SystemOffsetsAnalysis = case.analysis
-    for condition, system in zip(setup.conditions, setup.systems):
+    for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_offsets case '{case.name}', {condition} condition"
         per_heading = system is None
         bases: dict[str, tuple] = {}
         if not per_heading:
-            base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics)
+            base = _solve_path(case, system, _ramp(system, a.load_steps), None, where, _static_fix(a), setup.statics,
+                               start=setup.starts.get(None if c == 0 else tuple(a.damaged_lines)))
             _check_stable(system, base, f"{where}, at no load")
         for k, h in enumerate(headings):
             at = where
@@ -616,9 +659,9 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
                     chosen.append(line)
                 at = f"{where} ({line}, the most loaded line at heading {h:.6g} rad, removed)"
                 if line not in bases:
-                    damaged = case.damaged_system((line,))
+                    damaged = _condition_system(case, (line,))
                     eq0 = _solve_path(case, damaged, _ramp(damaged, a.load_steps), None, at, _static_fix(a),
-                                      setup.statics)
+                                      setup.statics, start=setup.starts.get((line,)))
                     _check_stable(damaged, eq0, f"{at}, at no load")
                     bases[line] = (damaged, eq0)
                 system, base = bases[line]
@@ -697,7 +740,7 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     coords.update({"applied_load": var("applied_load", loads, "N", f"external horizontal load on body '{a.body}'"),
                    "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})
     ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
-                      settings=_settings(case, setup, body=a.body))
+                      settings=_settings(case, setup, body=a.body), owned=True)
     ds.attrs["loaded_body"] = a.body
     ds.attrs["depth"] = float(case.environment.depth)
     ds.attrs["interrupted"] = int(interrupted)

@@ -148,3 +148,55 @@ def test_root_bracketing_failure_raises(monkeypatch):
     with pytest.raises(ConvergenceError, match="found 0 of 1 roots") as info:
         vertical_cable_period(100.0, 10.0, 1.0, method="exact")
     assert info.value.iterations == 0 and info.value.residual == 1.0
+
+
+@pytest.mark.parametrize("eps", [0.3, 1.0, 4.7, 25.0, 1e3])
+def test_the_roots_are_scipys_brentq_to_the_bit(eps):
+    """vertical._brentq is SciPy's brentq step for step (its C code), so the exact roots are the same numbers
+    as before it replaced ``scipy.optimize.brentq`` (whose import was most of ``seacable validate``'s time)."""
+    from scipy.optimize import brentq
+
+    rm1 = eps / (np.sqrt(1.0 + eps) + 1.0)
+    roots = vertical._exact_roots(eps, 6)
+    step = np.pi / 64.0
+    for x in roots:
+        lo = 1e-9 + step * np.floor((x - 1e-9) / step)
+        ours = vertical._brentq(vertical._cross, lo, lo + step, (rm1,), xtol=1e-14, rtol=1e-14)
+        assert ours == brentq(vertical._cross, lo, lo + step, args=(rm1,), xtol=1e-14, rtol=1e-14)
+    def outcome(solve, f, a, b, **tol):
+        try:
+            return solve(f, a, b, **tol)
+        except (RuntimeError, ConvergenceError) as err:  # no root in 100 iterations: SciPy's RuntimeError, ours
+            return "no root" if "100 iterations" in str(err) else str(err)
+
+    for f, a, b in [(lambda x: x ** 3 - 2.0, 0.0, 2.0), (lambda x: np.cos(x) - x, -1.0, 3.0),
+                    (lambda x: np.exp(x) - 10.0, -5.0, 7.0), (lambda x: (x - 0.3) ** 3, 0.0, 1.0),
+                    (lambda x: (x - 0.3) ** 5, 0.0, 1.0)]:
+        for tol in ({}, {"xtol": 1e-15, "rtol": 1e-15}, {"xtol": 1e-6}):
+            assert outcome(vertical._brentq, f, a, b, **tol) == outcome(brentq, f, a, b, **tol)
+    assert outcome(brentq, lambda x: (x - 0.3) ** 5, 0.0, 1.0) == "no root"  # the failure is compared too
+    with pytest.raises(ConvergenceError, match="same sign"):
+        vertical._brentq(lambda x: x * x + 1.0, -1.0, 1.0)
+
+
+def test_validate_of_a_vertical_cable_imports_no_scipy_optimize():
+    """``seacable validate`` of paper 002's vertical cable solves its exact modes without ``scipy.optimize`` (nor
+    the ``scipy.linalg`` it imports): their import was most of the command's time (issue 38)."""
+    import json
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    import seacable
+
+    src = Path(seacable.__file__).parents[1]
+    case = src.parent / "examples" / "paper002_vertical_cable.yaml"
+    probe = (f"from seacable.cli import main\nassert main(['validate', {str(case)!r}]) == 0\n"
+             "import json, sys\nprint(json.dumps(sorted(sys.modules)))")
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=False,
+                         env={**os.environ, "PYTHONPATH": str(src)})
+    assert out.returncode == 0, out.stderr
+    loaded = set(json.loads(out.stdout.splitlines()[-1]))
+    assert "seacable.modal.vertical" in loaded
+    assert sorted(m for m in ("scipy.optimize", "scipy.linalg", "numba") if m in loaded) == []

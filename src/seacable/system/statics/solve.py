@@ -20,14 +20,43 @@ from .result import SystemEquilibrium
 from .splits import _SUSPENDED, _floating, _merge_cuts, _sag_cuts, _same_split, _surface
 
 
+class CheckedStart:
+    """The starting state :func:`check_statics` evaluated, which :func:`solve_equilibrium` (``start=``) takes
+    instead of evaluating it again: the Newton problem, the state and the evaluation there, for one
+    system, environment, external load and ``max_strain``. A solve uses it once (it iterates from it)."""
+
+    __slots__ = ("system", "environment", "external", "max_strain", "prob", "st0", "ev0")
+
+    def __init__(self, system, environment, external, max_strain, prob, st0, ev0):
+        self.system, self.environment, self.external, self.max_strain = system, environment, external, max_strain
+        self.prob, self.st0, self.ev0 = prob, st0, ev0
+
+    def take(self, system, environment, external, max_strain):
+        """(problem, state, evaluation) if this is the start of that solve and unused, else None."""
+        if (self.prob is None or self.system is not system or self.environment is not environment
+                or self.external is not external or self.max_strain != max_strain):
+            return None
+        out = (self.prob, self.st0, self.ev0)
+        self.prob = self.st0 = self.ev0 = None
+        return out
+
+
 def check_statics(system: MooringSystem, environment: Environment, *, external: dict | None = None,
-                  max_strain: float = 1.0) -> None:
+                  max_strain: float = 1.0) -> CheckedStart | None:
     """Every check :func:`solve_equilibrium` makes before iterating, without solving.
 
     For a ``prepare_<analysis>`` step (``seacable validate``): what the catenary lines cannot
     model (current, sloping seabed, no EA), points below the seabed, unknown bodies in
     ``external``, lines that cannot reach at the starting positions, and bodies that are
     hydrostatically unstable with no mooring restoring (or loaded in a DOF nothing restores).
+
+    Returns
+    -------
+    CheckedStart or None
+        The start evaluated for these checks, which ``solve_equilibrium(..., start=)`` of the same
+        system, environment, ``external`` (the same object) and ``max_strain`` iterates from rather
+        than evaluate it again (the same equilibrium to the bit); None when the checks solved the
+        system (a body unstable where it starts).
 
     Raises
     ------
@@ -44,6 +73,8 @@ def check_statics(system: MooringSystem, environment: Environment, *, external: 
         # a body unstable where it starts may be restored once the lines take load (a rod hanging from
         # a line that is unloaded at the start): the solve decides, as solve_equilibrium does
         solve_equilibrium(system, environment, external=external, max_strain=max_strain)
+        return None
+    return CheckedStart(system, environment, external, max_strain, prob, st0, ev0)
 
 
 def _eval_at_start(prob, st0):
@@ -65,7 +96,8 @@ def _check_max_strain(max_strain) -> float:
 
 def solve_equilibrium(system: MooringSystem, environment: Environment, *, external: dict | None = None,
                       tol: float = 1e-8, max_iter: int = 200,
-                      initial: SystemEquilibrium | None = None, max_strain: float = 1.0) -> SystemEquilibrium:
+                      initial: SystemEquilibrium | None = None, max_strain: float = 1.0,
+                      start: CheckedStart | None = None) -> SystemEquilibrium:
     """Static equilibrium of every free body and free point of a mooring system.
 
     Parameters
@@ -87,6 +119,10 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     max_strain : float
         Largest strain T/EA a line may take; a line that would need more cannot reach
         (``NoSolutionError``). Raise it for a soft spring line (a line above 10 % warns). [-]
+    start : CheckedStart, optional
+        What :func:`check_statics` of this system, environment, ``external`` and ``max_strain`` returned:
+        the solve starts from the state it evaluated instead of evaluating it again (ignored with
+        ``initial``, or when it is of another solve or was used).
 
     Returns
     -------
@@ -119,10 +155,16 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     # the start, and after solving if it sags at the equilibrium, at most _SAG_ROUNDS times
     cuts, surf, air = initial._rounds if initial is not None else ({}, {}, {})
     sag_rounds = surf_rounds = 0
+    checked = start.take(system, environment, external, max_strain) if start is not None and initial is None \
+        else None
     while True:
-        prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
-        st0 = prob.initial_state(initial)
-        ev0 = _eval_at_start(prob, st0)
+        if checked is not None:  # the first round's start, evaluated by check_statics (no cuts yet)
+            (prob, st0, ev0), checked = checked, None
+            prob.tol, prob.max_iter = tol, max_iter
+        else:
+            prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
+            st0 = prob.initial_state(initial)
+            ev0 = _eval_at_start(prob, st0)
         more = _sag_cuts(prob, st0, ev0) if sag_rounds < _SAG_ROUNDS else {}
         if more:
             cuts = _merge_cuts(cuts, more)

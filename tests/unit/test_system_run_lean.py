@@ -1,0 +1,50 @@
+"""Issue 38: a system run builds its systems and its start once (:mod:`seacable.system.run`,
+:func:`seacable.system.statics.check_statics`), and solves the same equilibrium to the bit."""
+
+from __future__ import annotations
+
+import gc
+from pathlib import Path
+
+import numpy as np
+
+import seacable as sc
+from seacable.system import run as system_run
+from seacable.system.statics import check_statics, solve_equilibrium
+from seacable.system.statics import examples as ex
+
+EXAMPLES = Path(__file__).parents[2] / "examples"
+
+
+def _same(a, b):
+    for name in ("body_position", "point_position", "end_a_force", "end_b_force", "stiffness", "hydrostatic"):
+        assert np.array_equal(getattr(a, name), getattr(b, name)), name
+    assert a.iterations == b.iterations and a.residual == b.residual
+
+
+def test_a_solve_from_the_checked_start_is_the_solve_from_nothing():
+    system, env = ex.oc3_hywind()
+    start = check_statics(system, env)
+    from_start = solve_equilibrium(system, env, start=start)
+    assert start.take(system, env, None, 1.0) is None  # used once
+    _same(from_start, solve_equilibrium(system, env))
+    other = check_statics(system, env)  # the start of a solve without a load: not of one with a load
+    load = {next(iter(system.bodies)): (1e5, 0.0, 0.0, 0.0, 0.0, 0.0)}
+    _same(solve_equilibrium(system, env, external=load, start=other), solve_equilibrium(system, env, external=load))
+    assert other.prob is not None  # left unused
+
+
+def test_a_case_solves_one_system_per_condition_and_forgets_it_with_the_case():
+    case = sc.load_case(EXAMPLES / "spread_mooring.yaml")  # damaged_lines: most_loaded
+    setup = system_run.prepare_system_static(case)
+    line = next(iter(case.lines))
+    assert system_run._condition_system(case) is setup.systems[0] is system_run._condition_system(case)
+    assert system_run._condition_system(case, (line,)) is system_run._condition_system(case, (line,))
+    assert set(setup.starts) == {None} | {(name,) for name in case.lines}
+    first = sc.run(case)
+    assert sc.run(case).identical(first)
+    assert sc.run(case.model_copy(deep=True)).identical(first)  # a fresh case: its own systems, the same result
+    key = id(case)
+    del case, setup
+    gc.collect()
+    assert key not in system_run._SYSTEMS
