@@ -28,58 +28,7 @@ def dump_yaml(model: BaseModel) -> str:
     Here, below the results and the case-file reader, so that a result records its case
     (:func:`seacable.results.make_dataset`) without importing the reader (:func:`seacable.io.dump_case`).
     """
-    data = model.model_dump(mode="json")
-    try:
-        node = _node(data, set())
-    except _NotPlain:  # anything but plain JSON data, or a container met twice: PyYAML's representer
-        return yaml.dump(data, Dumper=_DUMPER, sort_keys=False)
-    return yaml.serialize(node, Dumper=_DUMPER)
-
-
-class _NotPlain(Exception):
-    pass
-
-
-_STR, _INT, _FLOAT, _BOOL, _NULL = (f"tag:yaml.org,2002:{t}" for t in ("str", "int", "float", "bool", "null"))
-_MAP, _SEQ = "tag:yaml.org,2002:map", "tag:yaml.org,2002:seq"
-_INF = float("inf")
-
-
-def _node(data, seen: set):
-    """The YAML node PyYAML's safe representer makes of plain JSON data, as ``yaml.dump(..., sort_keys=False)``
-    (block style) does: the same tags, values and styles, so the same text once serialised, without the
-    representer's general machinery (its type dispatch and alias bookkeeping: most of a case's dump, which every
-    result stamps). A dict or list met twice (an alias) or any other type raises :class:`_NotPlain`."""
-    kind = type(data)
-    if kind is str:
-        return yaml.ScalarNode(_STR, data)
-    if kind is float:
-        if data != data:
-            value = ".nan"
-        elif data == _INF:
-            value = ".inf"
-        elif data == -_INF:
-            value = "-.inf"
-        else:
-            value = repr(data).lower()
-            if "." not in value and "e" in value:
-                value = value.replace("e", ".0e", 1)
-        return yaml.ScalarNode(_FLOAT, value)
-    if kind is bool:
-        return yaml.ScalarNode(_BOOL, "true" if data else "false")
-    if kind is int:
-        return yaml.ScalarNode(_INT, str(data))
-    if data is None:
-        return yaml.ScalarNode(_NULL, "null")
-    if kind is dict or kind is list:
-        if id(data) in seen:
-            raise _NotPlain
-        seen.add(id(data))
-        if kind is dict:
-            return yaml.MappingNode(_MAP, [(_node(k, seen), _node(v, seen)) for k, v in data.items()],
-                                    flow_style=False)
-        return yaml.SequenceNode(_SEQ, [_node(v, seen) for v in data], flow_style=False)
-    raise _NotPlain
+    return yaml.dump(model.model_dump(mode="json"), Dumper=_DUMPER, sort_keys=False)
 
 
 #: PyYAML's safe dumper, its C emitter (libyaml) when PyYAML has it: the same text as ``yaml.safe_dump``, in a

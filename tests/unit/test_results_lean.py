@@ -31,46 +31,6 @@ def test_the_case_yaml_is_pyyamls_safe_dump_dumped_once_per_case(name):
     assert key not in results._CASE_YAML  # forgotten with its case
 
 
-def _cases():
-    for path in sorted(EXAMPLES.glob("*.yaml")):
-        try:
-            yield sc.load_case(path)
-        except sc.SeacableError:  # a sweep file
-            continue
-
-
-def test_every_example_case_dumps_the_text_pyyamls_representer_gives():
-    """dump_yaml builds the YAML nodes itself (issue 38: most of a case's dump was PyYAML's representer): the
-    same text as yaml.safe_dump, for every example case and a system of the benches (floats of every form)."""
-    from seacable._model import dump_yaml
-    from seacable.system.case import SystemCase, SystemStaticAnalysis
-    from seacable.system.statics import examples as ex
-
-    system, env = ex.moored_buoy()
-    body = next(iter(system.bodies))
-    bodies = {**system.bodies, body: system.bodies[body].replace(external_force=(2e4, 1e-310, -0.0, 1e22, 0.1, 3.0))}
-    cases = [*_cases(), SystemCase(name="buoy", environment=env.model_dump(), points=system.points, bodies=bodies,
-                                   lines=system.lines, analysis=SystemStaticAnalysis())]
-    assert len(cases) > 20
-    for case in cases:
-        assert dump_yaml(case) == yaml.safe_dump(case.model_dump(mode="json"), sort_keys=False), case.name
-
-
-def test_data_that_is_not_plain_json_is_left_to_pyyamls_representer():
-    from seacable._model import dump_yaml
-
-    class Data:
-        def __init__(self, data):
-            self.data = data
-
-        def model_dump(self, mode):
-            return self.data
-
-    shared = [1.0, float("nan"), float("-inf"), 1e16, True, None]
-    for data in ({"a": shared, "b": shared}, {"a": (1, 2)}, {"x": [{"y": "text: with a colon"}, [], {}]}):
-        assert dump_yaml(Data(data)) == yaml.safe_dump(data, sort_keys=False)
-
-
 def test_names_are_the_variable_xarray_would_make():
     names = np.array(["line1", "line2", "line 3"], dtype=object)
     fast = var("line", names, "1", "line name")
