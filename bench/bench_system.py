@@ -54,8 +54,7 @@ buoy, clumps and floats    3.7-4.9     34.5 / 9.4            7.1 / 2.6          
 =========================  ==========  ====================  ====================  =================================
 
 MoorPy FD / run the same day: OC3 15.4 before, 73 after; OC4 15.4 before, 30 after (against MoorPy's quiet
-45 ms and 27 ms: about 18 and 9). Again later that day, with the case's YAML dumped from nodes built directly
-(``seacable._model.dump_yaml``): run 2.75, 2.84, 6.8 ms (run/solve 3.2, 2.8, 2.1), first run 5.4, 5.6, 21.9 ms,
+45 ms and 27 ms: about 18 and 9). Again later that day: run 2.75, 2.84, 6.8 ms (run/solve 3.2, 2.8, 2.1),
 MoorPy FD / run 42 and 43 (MoorPy 115 and 122 ms that hour). What is left of a run around its solve (OC3, about 1.5 ms): the line profiles
 (``SystemEquilibrium.line_profile``, 0.5 ms: a few dozen small NumPy calls per sub-line), the checks at the start
 (0.2 ms), the result's variables and Dataset (0.35 ms).
