@@ -72,11 +72,12 @@ def var(dims: str | Iterable[str], values, units: str, long_name: str, **attrs) 
     """
     dims = (dims,) if isinstance(dims, str) else tuple(dims)
     array = np.asarray(values)
-    # names (an object array of str) taken as they are: xarray's check of object arrays for dates (a round trip
-    # through pandas, 20 times the cost of the variable) leaves them unchanged
-    names = (type(array) is np.ndarray and array.dtype.kind == "O" and array.ndim > 0
-             and all(type(item) is str for item in array.flat))
-    return xr.Variable(dims, array, attrs={"units": units, "long_name": long_name, **attrs}, fastpath=names)
+    # numbers, booleans and strings taken as they are (xarray's conversions change only dates, object arrays and
+    # pandas or masked data), and names (an object array of str) too: xarray's check of object arrays for dates
+    # (a round trip through pandas, 20 times the cost of the variable) leaves them unchanged
+    plain = type(array) is np.ndarray and (array.dtype.kind in "biufcSU" or (
+        array.dtype.kind == "O" and array.ndim > 0 and all(type(item) is str for item in array.flat)))
+    return xr.Variable(dims, array, attrs={"units": units, "long_name": long_name, **attrs}, fastpath=plain)
 
 
 def _attr_value(value: Any):

@@ -40,6 +40,26 @@ def test_names_are_the_variable_xarray_would_make():
     assert mixed.identical(xr.Variable(("x",), np.array(["a", None], dtype=object), attrs=mixed.attrs))
 
 
+@pytest.mark.parametrize("values", [np.arange(6.0).reshape(2, 3), np.arange(6).reshape(2, 3), np.ones((2, 3), bool),
+                                    np.full((2, 3), 1 + 2j), np.array([["a", "bc", "d"], ["e", "f", "g"]]),
+                                    [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]])
+def test_numbers_and_text_are_the_variable_xarray_would_make(values):
+    """var takes plain numbers, booleans and strings as they are (xarray's fast path): the same Variable, its
+    data the array given, not a copy."""
+    fast = var(("a", "b"), values, "m", "x")
+    slow = xr.Variable(("a", "b"), values, attrs={"units": "m", "long_name": "x"})
+    assert fast.identical(slow) and fast.dtype == slow.dtype and type(fast.data) is np.ndarray
+    if isinstance(values, np.ndarray):
+        assert fast.data is values
+
+
+def test_dates_still_take_xarrays_own_path():
+    t = np.array(["2026-11-29T00:00", "2026-11-29T00:10"], dtype="datetime64[s]")
+    for values in (t, t - t[0], t.astype(object)):  # dates, durations, dates as objects: xarray converts them
+        made = var("time", values, "1", "date")
+        assert made.identical(xr.Variable(("time",), values, attrs={"units": "1", "long_name": "date"}))
+
+
 def test_a_variable_the_blocks_did_not_hold_is_still_checked_at_the_end():
     t = var("time", [0.0, 0.5], "s", "time")
     block = {"x": var(("time", "node"), np.ones((2, 3)), "m", "x")}
