@@ -76,6 +76,7 @@ __all__ = [
     "drag_anchors",
     "implicit_step",
     "no_contact",
+    "settle",
 ]
 
 # Columns of the per-type property table (per unit unstretched length).
@@ -407,6 +408,29 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
             new_vel[0, :] = 0.0
             return STEP_OK, total, residual
     return STEP_ACTIVE_SET, total, residual
+
+
+@njit(cache=True)
+def settle(pos, vel, zb, lo, hi):
+    """Put the free nodes that went below the seabed on it, and find the first node on the seabed from the ship.
+
+    ``zb`` is the seabed's elevation under rows ``lo + 1 .. hi - 1`` of ``pos`` (``-inf`` where it need not be
+    known). Rows ``lo + 2 .. hi - 1`` below it are raised onto it, their vertical velocity clipped at 0 (a seabed
+    rising under the cable holds it up); ``pos`` and ``vel`` are changed in place. Returns the last row of
+    ``lo + 1 .. hi - 2`` on the seabed (within 1e-9 m), or ``lo`` if none is.
+    """
+    up = pos.shape[1] - 1
+    for k in range(lo + 2, hi):
+        z = zb[k - lo - 1]
+        if pos[k, up] < z:
+            pos[k, up] = z
+            v = vel[k, up]
+            if not (v > 0.0 or v != v):      # as numpy.maximum(v, 0.0): -0.0 gives +0.0, NaN stays
+                vel[k, up] = 0.0
+    for k in range(hi - 2, lo, -1):
+        if pos[k, up] <= zb[k - lo - 1] + 1e-9:
+            return k
+    return lo
 
 
 @njit(cache=True)
