@@ -377,6 +377,7 @@ class _Lay:
         c = self.c
         self.changed()
         free = self.seabed_under(c.pos[c.lo + 1:c.hi])     # under the free nodes, in one look-up
+        lo0 = c.lo
         # a seabed rising under the cable holds it up; then the first node on the seabed (landing_row)
         first = settle(c.pos, c.vel, free, c.lo, c.hi)
         arrived_slack = not c.active[c.lo]
@@ -406,6 +407,8 @@ class _Lay:
         if self.par.friction is not None:
             self.sliding_zone()
             self.changed()
+        # the seabed under the free nodes (rows lo + 1 .. hi - 1; -inf where not looked up), for touchdown()
+        self._now = {"free": free[first - lo0:]}
 
     def sliding_zone(self) -> None:
         """Keep the laid cable that friction may let slide in the step (rows ``lb + 1 .. lo``).
@@ -552,12 +555,19 @@ class _Lay:
         pos = c.pos if pos is None else pos
         lo = c.lo if lo is None else lo
         n_free = min(c.hi - lo - 1, 3)
-        s_lo = c.s[lo]
+        s_lo = float(c.s[lo])
         f = 0.0
         if n_free >= 2:
-            ss = c.s[lo + 1:lo + 1 + n_free] - c.s[lo + 1]
-            hh = pos[lo + 1:lo + 1 + n_free, -1] - track.zb(pos[lo + 1:lo + 1 + n_free, :-1])
-            u_lo = s_lo - c.s[lo + 1]
+            # (in Python floats: the same arithmetic as numpy's float64, quicker on scalars)
+            rows = slice(lo + 1, lo + 1 + n_free)
+            s1 = float(c.s[lo + 1])
+            ss = [v - s1 for v in c.s[rows].tolist()]
+            known = self._now.get("free") if pos is c.pos and lo == c.lo and self._now is not None else None
+            zb = known[:n_free].tolist() if known is not None else [-math.inf]
+            if not all(map(math.isfinite, zb)):      # (else: as touchdowns() looked them up)
+                zb = track.zb(pos[rows, :-1]).tolist()
+            hh = [z - b for z, b in zip(pos[rows, -1].tolist(), zb)]
+            u_lo = s_lo - s1
             b1 = (hh[1] - hh[0]) / ss[1]
             curv = 0.0
             if n_free == 3:
