@@ -320,8 +320,8 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
     npt, dim = pos.shape
     nseg = npt - 1
     m = dim + 1                                   # block size: a tension and a node's position
-    G = np.zeros((npt, dim, dim))
-    b = np.zeros((npt, dim))
+    G = np.empty((npt, dim, dim))                 # (rows 1 .. npt - 2 filled and used)
+    b = np.empty((npt, dim))
     contact, normal, grip, anchor, slip = seabed
     _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b)
     comp = np.empty(nseg)
@@ -348,11 +348,11 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
             for e in range(dim):
                 acc += G[i, d, e] * fk[e]
             r[i, d] = acc
-    lower = np.zeros((nseg, m, m))
-    diag = np.zeros((nseg, m, m))
-    upper = np.zeros((nseg, m, m))
-    rhs = np.zeros((nseg, m))
-    x = np.zeros((nseg, m))
+    lower = np.empty((nseg, m, m))                # (zeroed by _assemble, and rhs and x filled)
+    diag = np.empty((nseg, m, m))
+    upper = np.empty((nseg, m, m))
+    rhs = np.empty((nseg, m))
+    x = np.empty((nseg, m))
     gamma, lu, piv, scale = np.empty((nseg, m, m)), np.empty((m, m)), np.empty(m, dtype=np.int64), np.empty((3, m))
     shortest = L.min()
     residual = np.inf
@@ -437,7 +437,7 @@ def settle(pos, vel, zb, lo, hi):
         if pos[k, up] < z:
             pos[k, up] = z
             v = vel[k, up]
-            if not (v > 0.0 or v != v):      # as numpy.maximum(v, 0.0): -0.0 gives +0.0, NaN stays
+            if not (v > 0.0 or math.isnan(v)):      # as numpy.maximum(v, 0.0): -0.0 gives +0.0, NaN stays
                 vel[k, up] = 0.0
     for k in range(hi - 2, lo, -1):
         if pos[k, up] <= zb[k - lo - 1] + 1e-9:
@@ -492,13 +492,13 @@ def _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m):
                 x[k, i] = s
         if _lu_factor(lu, piv, scale, m) != 0:
             return k + 1
-        _lu_solve(lu, piv, x[k], m)
+        _lu_solve(lu, piv, x[k], m, scale[2])
         if k < n - 1:
             g = gamma[k]
             for i in range(m):
                 for j in range(m):
                     g[i, j] = upper[k, i, j]
-            _lu_solve_columns(lu, piv, g, m)
+            _lu_solve_columns(lu, piv, g, m, scale[2])
     # back substitution x_k = y_k - gamma_k x_{k+1}
     for k in range(n - 2, -1, -1):
         for i in range(m):
@@ -511,7 +511,8 @@ def _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m):
 
 @njit(cache=True, inline="always")
 def _lu_factor(a, piv, scale, m):
-    """``seacable.towed.linalg._lu_factor`` (LU with scaled partial pivoting, in place) of the ``m x m`` ``a``."""
+    """``seacable.towed.linalg._lu_factor`` (LU with scaled partial pivoting, in place) of the ``m x m`` ``a``;
+    ``scale[2]`` receives the reciprocals of U's diagonal, for :func:`_lu_solve` and :func:`_lu_solve_columns`."""
     for i in range(m):
         s = 0.0
         for j in range(m):
@@ -541,6 +542,7 @@ def _lu_factor(a, piv, scale, m):
             for r in range(2):
                 scale[r, j], scale[r, p] = scale[r, p], scale[r, j]
         inv = 1.0 / a[j, j]
+        scale[2, j] = inv
         for i in range(j + 1, m):
             f = a[i, j] * inv
             a[i, j] = f
@@ -551,8 +553,9 @@ def _lu_factor(a, piv, scale, m):
 
 
 @njit(cache=True, inline="always")
-def _lu_solve(a, piv, b, m):
-    """Overwrite the vector ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat`` of one column)."""
+def _lu_solve(a, piv, b, m, inv):
+    """Overwrite the vector ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat`` of one column; ``inv``
+    the reciprocals of U's diagonal)."""
     for j in range(m):
         p = piv[j]
         if p != j:
@@ -567,12 +570,13 @@ def _lu_solve(a, piv, b, m):
             f = a[i, j]
             if f != 0.0:
                 b[i] -= f * b[j]
-        b[i] *= 1.0 / a[i, i]
+        b[i] *= inv[i]
 
 
 @njit(cache=True, inline="always")
-def _lu_solve_columns(a, piv, b, m):
-    """Overwrite the ``m x m`` matrix ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat``)."""
+def _lu_solve_columns(a, piv, b, m, inv):
+    """Overwrite the ``m x m`` matrix ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat``; ``inv`` the
+    reciprocals of U's diagonal)."""
     for j in range(m):
         p = piv[j]
         if p != j:
@@ -590,9 +594,8 @@ def _lu_solve_columns(a, piv, b, m):
             if f != 0.0:
                 for c in range(m):
                     b[i, c] -= f * b[j, c]
-        inv = 1.0 / a[i, i]
         for c in range(m):
-            b[i, c] *= inv
+            b[i, c] *= inv[i]
 
 
 @njit(cache=True)
