@@ -32,8 +32,8 @@ it does not assert.
 Measured (issue 38: the time loop's work between steps done once a step, in fewer numpy calls, and the step's
 block solve, node matrices and Newton system compiled for their block size; the same results to the bit), on
 the shared 2-core machine under load, best of 3, wall s (real-time factor) before -> after:
-1 m segments at 1 m/s 4.49 s (223 x) -> 2.12 s (472 x); 2 m segments at 1 m/s 1.58 s (632 x) -> 1.06 s
-(944 x); 1 m segments at 2 m/s 15.7 s (64 x) -> 6.07 s (165 x).
+1 m segments at 1 m/s 5.34 s (187 x) -> 2.39 s (418 x); 2 m segments at 1 m/s 2.16 s (463 x) -> 0.95 s
+(1055 x); 1 m segments at 2 m/s 13.2 s (75 x) -> 4.61 s (217 x).
 """
 
 from __future__ import annotations
