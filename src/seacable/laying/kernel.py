@@ -147,16 +147,6 @@ def _invert_sym(a, dim, out):
 
 @njit(cache=True)
 def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b):
-    """:func:`_node_matrices_dim` in 2-D or 3-D (the dimension a constant of the compiled code: the small loops
-    unrolled)."""
-    if pos.shape[1] == 2:
-        _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, 2)
-    else:
-        _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, 3)
-
-
-@njit(cache=True, inline="always")
-def _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, dim):
     """Fill ``G_i = dt^2 A_i^-1`` and the free-motion positions ``b_i`` of the free nodes.
 
     ``A_i = M_i + dt C_i``: the node's mass, the added mass ``e_n (I - t t^T) + e_t t t^T`` of each half
@@ -171,7 +161,7 @@ def _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho
 
     so the Newton system keeps its blocks (``G'`` is singular along ``n``, and ``I + G' K`` is not).
     """
-    npt = pos.shape[0]
+    npt, dim = pos.shape
     up = dim - 1                                  # the vertical coordinate
     a = np.empty((dim, dim))
     u = np.empty(dim)
@@ -684,15 +674,6 @@ def _chords(r, c, ell):
 
 @njit(cache=True)
 def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed):
-    """:func:`_assemble_dim` in 2-D or 3-D (the dimension a constant of the compiled code: the small loops
-    unrolled)."""
-    if c.shape[1] == 2:
-        return _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, 2)
-    return _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, 3)
-
-
-@njit(cache=True, inline="always")
-def _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, dim):
     """Newton system of the step in block tri-diagonal form; returns the scaled residual.
 
     Block ``k`` holds the unknowns ``(T_k, r_{k+1})`` (the last block only ``T_{N-1}``) and the equations
@@ -705,7 +686,7 @@ def _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, 
     seabed adds its friction (:func:`_friction`) to the force. The right side is minus the residual.
     """
     contact, normal, grip, anchor, slip = seabed
-    nseg = c.shape[0]
+    nseg, dim = c.shape
     vp = np.empty(dim)
     dfric = np.zeros((dim, dim))
     nfree = nseg - 1
