@@ -30,10 +30,9 @@ excluded; that one-time cost is printed separately. This is a benchmark, not a t
 it does not assert.
 
 Measured (issue 38: the time loop's work between steps done once a step, in fewer numpy calls, and the step's
-block solve, node matrices and Newton system compiled for their block size; the same results to the bit), on
-the shared 2-core machine under load, best of 3, wall s (real-time factor) before -> after:
-1 m segments at 1 m/s 5.34 s (187 x) -> 2.39 s (418 x); 2 m segments at 1 m/s 2.16 s (463 x) -> 0.95 s
-(1055 x); 1 m segments at 2 m/s 13.2 s (75 x) -> 4.61 s (217 x).
+block solve compiled for its block size; the same results to the bit), on the shared 2-core machine, best of 3,
+wall s (real-time factor) before -> after: 1 m segments at 1 m/s 1.85 s (541 x) -> 1.10 s (911 x); 2 m segments
+at 1 m/s 0.66 s (1512 x) -> 0.42 s (2378 x); 1 m segments at 2 m/s 5.55 s (180 x) -> 3.55 s (282 x).
 """
 
 from __future__ import annotations
