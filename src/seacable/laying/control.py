@@ -25,6 +25,9 @@ class Control:
         self.integral = 0.0                # integral of the bottom tension's error over time [s]
         p = par.props[par.type_at(0.0)]
         self.weight, self.compliance = p[P_WEIGHT], p[P_COMPLIANCE]
+        #: whether :meth:`payout_speed` uses the touchdown's geometry (and the bottom tension, in bottom-tension mode)
+        self.uses_geometry = isinstance(payout, PayoutBottomTension) or (
+            isinstance(payout, PayoutSlack) and payout.slope_compensation)
 
     def ship_speed(self, t_new: float, dt: float, repeater_in_water: bool) -> float:
         """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration
@@ -46,7 +49,8 @@ class Control:
                      commit: bool = True) -> float:
         """Payout speed for ship speed ``vs`` and the present touchdown ``geometry``: the seabed's slope along
         the ship's heading there, the depth there [m], the cot of the span's chord angle and the touchdown's
-        speed over the ship's from a turn (1 on a straight track). [m/s]
+        speed over the ship's from a turn (1 on a straight track), or None where the control does not use them
+        (:attr:`uses_geometry`). [m/s]
 
         In bottom-tension mode ``bottom_tension`` is the bottom tension at the end of the step of
         length ``dt`` [s] (the filter is advanced by backward Euler); ``commit=False`` evaluates the
@@ -55,10 +59,9 @@ class Control:
         p = self.payout
         if isinstance(p, PayoutRate):
             return schedule_value(t, p.speed, p.times, p.speeds)
-        slope, h_td, cot_alpha, turn = geometry
-        compensate = isinstance(p, PayoutBottomTension) or p.slope_compensation
-        if not compensate:
+        if not self.uses_geometry:
             return (1.0 + p.slack) * vs
+        slope, h_td, cot_alpha, turn = geometry
         # CPRATE: touchdown speed, laid length per metre run and change of the suspended length
         td_speed = vs * turn / max(1.0 - slope * cot_alpha, 0.1)
         sin_alpha = 1.0 / math.sqrt(1.0 + cot_alpha * cot_alpha)

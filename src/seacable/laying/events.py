@@ -21,7 +21,7 @@ from .cable import (
 )
 from .control import Control
 from .inputs import ShipMotion
-from .kernel import P_WEIGHT, STEP_OK, drag_anchors, implicit_step
+from .kernel import P_WEIGHT, STEP_OK, drag_anchors, implicit_step, settle
 from .parameters import LayParameters
 
 _MIN_SPEED = 0.05     # floor of the speed that sets the time step [m/s]
@@ -59,6 +59,8 @@ class _Lay:
         self.x_ship = ship.start_x         # distance run along the track (its KP in 3-D) [m]
         self.dt = 0.0                      # the last time step [s]
         self.warned_sliding = False
+        self._now = None                   # the touchdown and the geometry of the state as it is (see changed())
+        self._above = getattr(track, "highest", math.inf) + 1.0   # nodes higher are neither on nor under the seabed
         chute = track.point(self.x_ship)
         depth0 = -float(track.zb(chute[:-1]))
         t = _initial_tangent(par, track, self.x_ship, ctl.speed, depth0, initial_angle)
@@ -135,7 +137,15 @@ class _Lay:
 
     def ship_velocity(self, speed: float) -> np.ndarray:
         """The water entry's velocity at ``speed`` along the track where the ship is. [m/s]"""
-        return np.append(speed * self.track.direction(self.x_ship), 0.0)
+        v = np.empty(self.track.dim)
+        v[:-1] = speed * self.track.direction(self.x_ship)
+        v[-1] = 0.0
+        return v
+
+    def changed(self) -> None:
+        """Forget the touchdown and the geometry worked out for the state (:meth:`touchdown`, :meth:`geometry`):
+        called by whatever moves the nodes, the ship or the rows of the suspended cable."""
+        self._now = None
 
     def slope_at(self, ph) -> float:
         """The seabed's slope along the ship's heading under the horizontal point ``ph``. [-]"""
@@ -275,6 +285,7 @@ class _Lay:
     def lift(self) -> None:
         """Pick the touchdown node up off the seabed: the node laid before it becomes the touchdown."""
         c, laid = self.c, self.laid
+        self.changed()
         for key in laid:
             laid[key].pop()
         if c.lo - 1 > c.lb:                  # laid cable free to slide: the node is in the step already
@@ -302,6 +313,7 @@ class _Lay:
 
     def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
         c = self.c
+        self.changed()
         lo, hi = c.lb, c.hi
         c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
         c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
@@ -324,11 +336,13 @@ class _Lay:
         while True:
             s_last = c.s[c.hi - 1]
             nxt = s_last + seg
-            pending = [r.s for r, st in zip(self.reps, self.rep_state) if st == 0 and r.s > s_last + 1e-9]
-            if pending and pending[0] - nxt < 0.5 * seg:
-                nxt = pending[0]
+            if self.reps:
+                pending = [r.s for r, st in zip(self.reps, self.rep_state) if st == 0 and r.s > s_last + 1e-9]
+                if pending and pending[0] - nxt < 0.5 * seg:
+                    nxt = pending[0]
             if self.s_paid - nxt < 0.5 * seg or nxt > self.par.cable_length:
                 return
+            self.changed()
             c.make_room()
             hi = c.hi
             a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
@@ -361,13 +375,11 @@ class _Lay:
         seabed further on.
         """
         c = self.c
+        self.changed()
         free = self.seabed_under(c.pos[c.lo + 1:c.hi])     # under the free nodes, in one look-up
-        rows = slice(c.lo + 2, c.hi)           # a seabed rising under the cable holds it up
-        zb = free[1:]
-        under = c.pos[rows, -1] < zb
-        c.pos[rows, -1] = np.where(under, zb, c.pos[rows, -1])
-        c.vel[rows, -1] = np.where(under, np.maximum(c.vel[rows, -1], 0.0), c.vel[rows, -1])
-        first = self.landing_row(c.pos, free[:-1])
+        lo0 = c.lo
+        # a seabed rising under the cable holds it up; then the first node on the seabed (landing_row)
+        first = settle(c.pos, c.vel, free, c.lo, c.hi)
         arrived_slack = not c.active[c.lo]
         for k in range(c.lo + 1, first + 1):
             zb = float(free[k - c.lo - 1])
@@ -394,6 +406,9 @@ class _Lay:
                 c.active[first], c.T[first] = 0, 0.0
         if self.par.friction is not None:
             self.sliding_zone()
+            self.changed()
+        # the seabed under the free nodes (rows lo + 1 .. hi - 1; -inf where not looked up), for touchdown()
+        self._now = {"free": free[first - lo0:]}
 
     def sliding_zone(self) -> None:
         """Keep the laid cable that friction may let slide in the step (rows ``lb + 1 .. lo``).
@@ -483,7 +498,7 @@ class _Lay:
         """Seabed elevation under nodes ``pos`` (rows of ``dim`` coordinates); ``-inf`` under those more than a
         metre above the highest seabed anywhere (``track.highest``), which are neither on nor under it. [m]"""
         zb = np.full(len(pos), -np.inf)
-        low = pos[:, -1] <= getattr(self.track, "highest", math.inf) + 1.0
+        low = pos[:, -1] <= self._above
         if low.any():
             zb[low] = self.track.zb(pos[low, :-1])
         return zb
@@ -530,15 +545,29 @@ class _Lay:
             Its fraction of the bottom segment from the touchdown node. [-]
         """
         c, track = self.c, self.track
+        if pos is None and lo is None:
+            if self._now is None:
+                self._now = {}
+            now = self._now.get("touchdown")
+            if now is None:
+                now = self._now["touchdown"] = self.touchdown(c.pos, c.lo)
+            return now
         pos = c.pos if pos is None else pos
         lo = c.lo if lo is None else lo
         n_free = min(c.hi - lo - 1, 3)
-        s_lo = c.s[lo]
+        s_lo = float(c.s[lo])
         f = 0.0
         if n_free >= 2:
-            ss = c.s[lo + 1:lo + 1 + n_free] - c.s[lo + 1]
-            hh = pos[lo + 1:lo + 1 + n_free, -1] - track.zb(pos[lo + 1:lo + 1 + n_free, :-1])
-            u_lo = s_lo - c.s[lo + 1]
+            # (in Python floats: the same arithmetic as numpy's float64, quicker on scalars)
+            rows = slice(lo + 1, lo + 1 + n_free)
+            s1 = float(c.s[lo + 1])
+            ss = [v - s1 for v in c.s[rows].tolist()]
+            known = self._now.get("free") if pos is c.pos and lo == c.lo and self._now is not None else None
+            zb = known[:n_free].tolist() if known is not None else [-math.inf]
+            if not all(map(math.isfinite, zb)):      # (else: as touchdowns() looked them up)
+                zb = track.zb(pos[rows, :-1]).tolist()
+            hh = [z - b for z, b in zip(pos[rows, -1].tolist(), zb)]
+            u_lo = s_lo - s1
             b1 = (hh[1] - hh[0]) / ss[1]
             curv = 0.0
             if n_free == 3:
@@ -566,9 +595,18 @@ class _Lay:
         angle and the touchdown's speed over the ship's in a turn (:meth:`turn_factor`), for the payout control."""
         c = self.c
         p, _, _ = self.touchdown()
-        chord = c.pos[c.hi] - p
-        return (self.slope_at(p[:-1]), -float(p[-1]), float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9),
-                self.turn_factor(chord))
+        now = self._now.get("geometry")
+        if now is None:
+            chord = c.pos[c.hi] - p
+            now = self._now["geometry"] = (self.slope_at(p[:-1]), -float(p[-1]),
+                                           float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9),
+                                           self.turn_factor(chord))
+        return now
+
+    def bottom_tension(self) -> float:
+        """The bottom tension of the state (as :func:`_end_tensions` gives it). [N]"""
+        c = self.c
+        return _bottom_tension(c, self.par.props, c.pos, c.lo, self.touchdown()[2])
 
     def turn_factor(self, chord: np.ndarray) -> float:
         """Touchdown speed over ship speed while the ship turns (1 on a straight track).

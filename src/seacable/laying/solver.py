@@ -164,8 +164,9 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
     try:
         while next_out <= n_out:
             t_out = min(next_out * output_interval, duration)
-            _, bottom, _ = _end_tensions(c, props, lay.touchdown()[2])
-            in_water = bool(np.any(lay.rep_state == 1))
+            # (the bottom tension and the geometry: for the payout controls that use them)
+            bottom = lay.bottom_tension() if implicit else 0.0
+            in_water = bool(lay.reps) and bool(np.any(lay.rep_state == 1))
             # equal steps to the next output, none longer than l / (n V): a sliver of a step to meet the output
             # time would report its own tensions, those of an impulse (the momentum of a node that has just
             # landed, stopped within the sliver: a slack bottom segment at 500 N of bottom tension)
@@ -174,8 +175,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
             # of a bottom-tension lay flickers about the ship speed)
             dt = (t_out - t) / max(math.ceil((t_out - t) / dt_max - 0.01), 1)
             # bottom-tension mode: the explicit speed is the first guess of the implicit one (Lay.implicit_payout)
-            vc_new = ctl.payout_speed(t + dt, ctl.ship_speed(t + dt, dt, in_water), lay.geometry(), bottom, dt,
-                                      commit=not implicit)
+            vc_new = ctl.payout_speed(t + dt, ctl.ship_speed(t + dt, dt, in_water),
+                                      lay.geometry() if ctl.uses_geometry else None, bottom, dt, commit=not implicit)
             attempt, lifted = 0, 0
             while True:
                 lay.contact_forces()

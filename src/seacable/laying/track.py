@@ -61,7 +61,8 @@ class Track3D:
 
     The time loop asks for the seabed under the same nodes several times a step (landing, the touchdown point,
     the output), and a KP table locates every point on the route: ``zb`` remembers the points it was last asked
-    for (:class:`_Memo`), and looks up only the others.
+    for (:class:`_Memo`), and looks up only the others. ``point`` and ``direction`` remember the last distance
+    run asked for (the ship's, several times a step).
     """
 
     dim = 3
@@ -71,14 +72,21 @@ class Track3D:
         shallowest = getattr(seabed, "shallowest", math.nan)
         self.highest = -shallowest if math.isfinite(shallowest) else math.inf   # highest seabed elevation [m]
         self._memo = None if getattr(seabed, "flat", False) else _Memo()
+        self._last = {}                   # the last distance run asked for, by what was asked: (d, value)
 
     def point(self, d: float) -> np.ndarray:
-        x, y = self.route.point(d)
-        return np.array([x, y, 0.0])
+        last = self._last.get("point")
+        if last is None or last[0] != d or d == 0.0:       # (0.0: not to take -0.0 for it)
+            x, y = self.route.point(d)
+            last = self._last["point"] = (d, np.array([x, y, 0.0]))
+        return last[1].copy()
 
     def direction(self, d: float) -> np.ndarray:
-        h = float(self.route.heading(d))
-        return np.array([np.cos(h), np.sin(h)])
+        last = self._last.get("direction")
+        if last is None or last[0] != d or d == 0.0:       # (asked for several times a step at the ship)
+            h = float(self.route.heading(d))
+            last = self._last["direction"] = (d, np.array([np.cos(h), np.sin(h)]))
+        return last[1].copy()
 
     def zb(self, ph, strict: bool = True) -> np.ndarray:
         """The seabed's elevation at horizontal points (..., 2); where a grid gives none, an InputError, or NaN if
@@ -94,6 +102,8 @@ class Track3D:
         """The seabed's elevation at horizontal points; an InputError where a grid gives none (the cable has gone
         off it: a NaN would run on silently through the time loop)."""
         z = -self.seabed.depth(p)
+        if not np.isnan(z).any():
+            return z
         bad = np.isnan(z) & np.all(np.isfinite(p), axis=-1)
         if bad.any():
             q = p[np.unravel_index(np.argmax(bad), bad.shape)]
