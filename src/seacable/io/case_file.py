@@ -8,6 +8,7 @@ check and complete case files.
 from __future__ import annotations
 
 import json
+from os import PathLike
 from pathlib import Path
 from typing import Any
 
@@ -129,6 +130,7 @@ def load_case_data(path: str | Path) -> dict:
     CaseFileError
         If the file cannot be read or is not YAML.
     """
+    _check_path(path)
     path = Path(path)
     data, _ = read_yaml(path)
     if not isinstance(data, dict):
@@ -153,9 +155,19 @@ def load_case(path: str | Path) -> Case | SystemCase | MoorDynCase:
         The validated, immutable case (a system case when the file has ``lines``, ``points`` or
         ``bodies`` and no ``line``); :func:`seacable.run` runs any of them.
     """
+    _check_path(path)
     if is_moordyn_file(path):
         return load_moordyn_case(path)
     return parse_case(load_case_data(path), source=str(path))
+
+
+def _check_path(path) -> None:
+    """Refuse what is not a file path (a mapping of a case given where its file is expected, say)."""
+    if not isinstance(path, (str, PathLike)):
+        fix = ("give a mapping of a case to seacable.io.parse_case, or a case object to seacable.run"
+               if isinstance(path, dict) else "give the path of a YAML case file or a MoorDyn input file")
+        raise InputError(f"a case file's path must be a str or a path, got {type(path).__name__}. "
+                         f"Suggested fix: {fix}.")
 
 
 def resolve_files(data, folder: Path) -> None:

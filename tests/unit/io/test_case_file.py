@@ -80,6 +80,18 @@ def test_missing_file_and_bad_yaml(tmp_path):
         sc.load_case(write(tmp_path, "- just\n- a list\n"))
 
 
+@pytest.mark.parametrize("given, fix", [({"name": "a case"}, "parse_case"), (None, "the path of a YAML case file"),
+                                        (3.0, "the path of a YAML case file")])
+def test_a_case_given_where_its_path_goes_is_a_clear_error(given, fix):
+    """load_case (and load_case_data) given a mapping or nothing: one InputError naming the type and the fix,
+    not pathlib's TypeError."""
+    from seacable.io.case_file import load_case_data
+
+    for load in (sc.load_case, load_case_data):
+        with pytest.raises(sc.InputError, match=f"must be a str or a path, got {type(given).__name__}.*{fix}"):
+            load(given)
+
+
 def test_several_problems_are_all_reported(tmp_path):
     text = GOOD.replace("diameter: 0.09", "diameter: -1").replace("length: 902.2", "length: -5")
     with pytest.raises(sc.CaseFileError, match="2 problems") as info:
