@@ -274,7 +274,10 @@ def dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], o
             indexes[name], variables[name] = _default_index(name, v)
         else:
             variables[name] = v if owned else v.copy(deep=False)
-    return construct(variables, set(coords), indexes=indexes)
+    try:
+        return construct(variables, set(coords), indexes=indexes)
+    except TypeError:  # xarray's private constructor changed its signature: the public one, slower
+        return xr.Dataset(data_vars=data_vars, coords=coords)
 
 
 def _direct(data_vars: dict, coords: dict) -> bool:

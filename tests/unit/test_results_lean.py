@@ -131,6 +131,24 @@ def test_the_direct_dataset_in_every_case_it_takes_and_the_constructor_for_the_r
         results.dataset({"x": var("line", [1.0], "m", "x")}, {"line": var("line", names, "1", "line")})
 
 
+def test_a_changed_private_constructor_falls_back_to_the_public_one(monkeypatch):
+    """results.dataset uses xarray's private Dataset._construct_direct: if a later xarray changes its signature,
+    the result is still the constructor's Dataset, not an error."""
+    import sys
+
+    original = xr.Dataset.__dict__["_construct_direct"].__func__
+
+    def changed(cls, *args, **kwargs):  # refuses seacable's call only (xarray's own calls go through)
+        if sys._getframe(1).f_globals.get("__name__") == "seacable.results":
+            raise TypeError("_construct_direct() got an unexpected keyword argument 'indexes'")
+        return original(cls, *args, **kwargs)
+
+    data_vars = {"x": var(("line",), [1.0, 2.0], "m", "x")}
+    coords = {"line": var("line", np.array(["a", "b"], dtype=object), "1", "line")}
+    monkeypatch.setattr(xr.Dataset, "_construct_direct", classmethod(changed))
+    _same_dataset(results.dataset(data_vars, coords), xr.Dataset(data_vars=data_vars, coords=coords))
+
+
 def test_the_index_of_the_same_names_is_made_once_and_the_datasets_stay_apart():
     def build():
         return results.dataset({"x": var("line", [1.0, 2.0], "m", "x")},
