@@ -105,6 +105,41 @@ def test_interrupted_run_keeps_its_result():
     assert calls[0] == pytest.approx(2.0)
 
 
+@pytest.mark.parametrize("where", ["record", "touchdown"])
+def test_an_interrupt_inside_the_bookkeeping_keeps_the_outputs_all_lists_hold(monkeypatch, where):
+    """SIGTERM landing inside an output's recording (between its lists' appends) or a touchdown's bookkeeping
+    (between the laid points' lists): the run still returns its result, flagged interrupted, the outputs and
+    laid points up to the last whole one (the lists were left of different lengths, and the result was lost)."""
+    from seacable.laying import events
+
+    calls = []
+    if where == "record":
+        original = events._Lay.repeater_positions   # the last append of an output
+
+        def interrupted(self):
+            calls.append(1)
+            if len(calls) == 4:
+                raise KeyboardInterrupt
+            return original(self)
+
+        monkeypatch.setattr(events._Lay, "repeater_positions", interrupted)
+    else:
+        original = events._Lay.touchdowns
+
+        def interrupted(self, t):
+            calls.append(t)
+            if t > 12.0:   # part way through: the laid points of one list appended, not of the others
+                self.laid["p"].append(self.laid["p"][-1])
+                raise KeyboardInterrupt
+            return original(self, t)
+
+        monkeypatch.setattr(events._Lay, "touchdowns", interrupted)
+    ds = sc.run(case(duration=30.0, output_interval=2.0))
+    assert ds.attrs["interrupted"] == 1
+    assert float(ds.time[-1]) == pytest.approx(4.0 if where == "record" else 12.0)
+    assert np.all(np.isfinite(ds.top_tension.values))
+
+
 def test_floating_cable_is_refused():
     floater = CABLE.replace(weight_in_water=-1.0)
     with pytest.raises(InputError, match="must sink"):

@@ -225,6 +225,14 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
                 break
     except KeyboardInterrupt:
         interrupted = True
+        # an interrupt inside record (or a touchdown's bookkeeping) leaves one list a row longer than the
+        # others: keep the outputs (and laid points) that all of them hold
+        n = min(len(out_t), len(points), len(snaps), len(rep_out), *(len(v) for v in series.values()))
+        for rows in (out_t, points, snaps, rep_out, *series.values()):
+            del rows[n:]
+        n_laid = min(len(v) for v in lay.laid.values())
+        for rows in lay.laid.values():
+            del rows[n_laid:]
     n_max = max(len(p) for p, _ in snaps)
     pos = np.full((len(snaps), n_max, track.dim), np.nan)
     ten = np.full((len(snaps), n_max - 1), np.nan)
