@@ -446,6 +446,9 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
                 progress(ts[-1], duration)
     except KeyboardInterrupt:
         run.interrupted = True
+        # an interrupt between an output's appends: keep the outputs all four lists hold
+        n_kept = min(len(times), len(states), len(positions), len(vessel))
+        del times[n_kept:], states[n_kept:], positions[n_kept:], vessel[n_kept:]
     run.wall_time = _time.perf_counter() - t0
     run.time = np.asarray(times)
     run.state = np.asarray(states)

@@ -358,6 +358,9 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
                 progress(tt[-1], duration)
     except KeyboardInterrupt:
         interrupted = True
+        # an interrupt between an output's appends: keep the outputs all three lists hold
+        n_kept = min(len(times), len(tugs), len(records))
+        del times[n_kept:], tugs[n_kept:], records[n_kept:]
     cols = list(zip(*records))
     return TowlineRun(np.array(times), *(np.array(c) for c in cols[:6]), np.array(tugs), np.array(cols[6]),
                       dt, steps, interrupted, _time.perf_counter() - start,

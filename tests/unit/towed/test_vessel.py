@@ -400,3 +400,31 @@ def test_table_time_outside(tmp_path):
         sample_path(path, [0.0], base_dir=tmp_path)
     # Times a hair past the end (n * dt round-off) are accepted.
     sample_path(path, [50.0 * (1 + 1e-13)], base_dir=tmp_path)
+
+
+def test_an_interrupt_between_an_outputs_appends_keeps_the_whole_outputs(monkeypatch):
+    """SIGTERM landing while a box-scheme output is recorded (its positions started, its time not kept): the run
+    returns the outputs every list holds, flagged interrupted, instead of failing to build its result."""
+    import warnings
+    from pathlib import Path
+
+    import seacable as sc
+    from seacable.io.case_file import load_case_data, parse_case
+    from seacable.towed import solver
+
+    data = load_case_data(Path(__file__).resolve().parents[3] / "examples" / "towed_stop_and_go.yaml")
+    data["analysis"].update(duration=10.0, output_interval=1.0)
+    calls, original = [], solver.integrate_positions
+
+    def interrupted(*args):
+        calls.append(1)
+        if len(calls) == 4:
+            raise KeyboardInterrupt
+        return original(*args)
+
+    monkeypatch.setattr(solver, "integrate_positions", interrupted)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = sc.run(parse_case(data))
+    assert ds.attrs["interrupted"] == 1
+    assert 0.0 < float(ds.time[-1]) < 10.0 and np.all(np.isfinite(ds.x.values))

@@ -64,6 +64,33 @@ def test_interrupted_towline_run_keeps_what_it_computed():
     assert run.interrupted and run.time[-1] == pytest.approx(2.0) and run.nodes.shape[0] == 3
 
 
+def test_an_interrupt_between_an_outputs_appends_keeps_the_whole_outputs(monkeypatch):
+    """SIGTERM landing while an output is recorded (its time kept, its snapshot not): the run keeps the
+    outputs every list holds, instead of arrays of different lengths."""
+    from seacable.towline import solver
+
+    model = TowlineModel(n_elements=5, length=50.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=1e6,
+                         held_tow_point_height=2.0)
+    tug = np.array([0.0, 0.0, 2.0])
+
+    def still(t):
+        t = np.atleast_1d(t)
+        return np.broadcast_to(tug, (t.size, 3)).copy(), np.zeros((t.size, 3))
+
+    calls, original = [], solver.joint_positions
+
+    def interrupted(*args):
+        calls.append(1)
+        if len(calls) == 4:   # the snapshot of the third output
+            raise KeyboardInterrupt
+        return original(*args)
+
+    monkeypatch.setattr(solver, "joint_positions", interrupted)
+    run = solver.simulate(model, still, 10.0, 1.0, initial_state(model, tug, start="dropped", drop_height=1.0))
+    assert run.interrupted and run.time[-1] == pytest.approx(2.0)
+    assert run.time.size == run.nodes.shape[0] == run.tug.shape[0] == 3
+
+
 def test_cli_runs_a_towline_case(tmp_path):
     data = _data()
     data["analysis"].update(duration=20.0)
