@@ -46,7 +46,8 @@ def test_initial_lines_have_closed_joints_and_the_right_length():
     assert coiled.first == 11 and np.all(np.isnan(joint_positions(model, coiled, tug)[1:-1]))
 
 
-def test_interrupted_towline_run_keeps_what_it_computed():
+def _held_line():
+    """A 50 m line of 5 elements dropped 1 m below a tug that stays put: the model, the tug point, its motion."""
     model = TowlineModel(n_elements=5, length=50.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=1e6,
                          held_tow_point_height=2.0)
     tug = np.array([0.0, 0.0, 2.0])
@@ -54,6 +55,12 @@ def test_interrupted_towline_run_keeps_what_it_computed():
     def still(t):
         t = np.atleast_1d(t)
         return np.broadcast_to(tug, (t.size, 3)).copy(), np.zeros((t.size, 3))
+
+    return model, tug, still
+
+
+def test_interrupted_towline_run_keeps_what_it_computed():
+    model, tug, still = _held_line()
 
     def progress(t, duration):
         if t >= 2.0:
@@ -69,13 +76,7 @@ def test_an_interrupt_between_an_outputs_appends_keeps_the_whole_outputs(monkeyp
     outputs every list holds, instead of arrays of different lengths."""
     from seacable.towline import solver
 
-    model = TowlineModel(n_elements=5, length=50.0, diameter=0.05, mass_per_length=1.725, axial_stiffness=1e6,
-                         held_tow_point_height=2.0)
-    tug = np.array([0.0, 0.0, 2.0])
-
-    def still(t):
-        t = np.atleast_1d(t)
-        return np.broadcast_to(tug, (t.size, 3)).copy(), np.zeros((t.size, 3))
+    model, tug, still = _held_line()
 
     calls, original = [], solver.joint_positions
 
