@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import functools
 import math
 import os
 import signal
@@ -437,6 +438,13 @@ def _add_limits(p) -> None:
                                                      "SEACABLE_MAX_CASES)")
 
 
+@functools.cache
+def _parser() -> argparse.ArgumentParser:
+    """The command line's parser, built once per process (a parser is not changed by parsing; a test suite or a
+    script calls :func:`main` thousands of times)."""
+    return build_parser()
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="seacable",
@@ -598,7 +606,7 @@ def main(argv: list[str] | None = None) -> int:
     3: an internal error (a bug; ``--debug`` shows the traceback); 130: interrupted (Ctrl-C or
     SIGTERM), with what was computed written.
     """
-    parser = build_parser()
+    parser = _parser()
     try:
         args = parser.parse_args(argv)
     except _UsageError as err:

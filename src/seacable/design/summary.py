@@ -39,6 +39,7 @@ import pandas as pd
 import xarray as xr
 import yaml
 
+from .._model import load_yaml
 from ..errors import InputError
 from ..results import check_time
 from . import fatigue, statistics
@@ -137,7 +138,7 @@ def _parsed_case(text: str) -> dict | None:
     """A case's YAML text as a mapping, parsed once per text (a report reads each result's case for
     every table and figure); None when it is not a mapping."""
     try:
-        data = yaml.safe_load(text)
+        data = load_yaml(text)
     except yaml.YAMLError:
         return None
     return data if isinstance(data, dict) else None

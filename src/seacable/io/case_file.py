@@ -14,7 +14,7 @@ from typing import Any
 
 import yaml
 
-from .._model import dump_yaml
+from .._model import YAML_LOADER, dump_yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 from ..system.case import SystemCase, is_system_data
@@ -31,8 +31,8 @@ class _DuplicateKey(yaml.YAMLError):
         self.key, self.first, self.second = key, first, second
 
 
-class _StrictLoader(yaml.SafeLoader):
-    """``yaml.SafeLoader`` that refuses a key given twice in the same mapping.
+class _StrictLoader(YAML_LOADER):
+    """``yaml.SafeLoader`` (libyaml's parser when PyYAML has it) that refuses a key given twice in the same mapping.
 
     YAML 1.2 requires the keys of a mapping to be unique, but PyYAML keeps the last value
     silently: two ``analysis:`` blocks would run the second and drop the first. Keys brought

@@ -100,8 +100,10 @@ def _seabed(ds) -> tuple[float, float] | None:
         return None
     import yaml
 
+    from .._model import load_yaml
+
     try:
-        env = (yaml.safe_load(text) or {}).get("environment") or {}
+        env = (load_yaml(text) or {}).get("environment") or {}
         depth = env.get("depth")
         if depth is None:
             return None

@@ -36,7 +36,7 @@ import yaml
 from pydantic import Field, field_validator, model_validator
 
 from .._limits import check_case_count
-from .._model import Model
+from .._model import Model, load_yaml
 from ..case import Case
 from ..errors import CaseFileError, InputError
 from ..io.case_file import dump_case, load_case_data, parse_case, read_yaml, resolve_files
@@ -442,7 +442,7 @@ def _read_table(path: Path, source: str) -> dict[str, list]:
                 raise CaseFileError(f"{source}: table '{path}' line {line}, column '{h}' is empty. Suggested "
                                     "fix: give every case a value.")
             try:
-                columns[h].append(yaml.safe_load(cell))
+                columns[h].append(load_yaml(cell))
             except yaml.YAMLError:
                 columns[h].append(cell.strip())
     return columns
@@ -451,7 +451,7 @@ def _read_table(path: Path, source: str) -> dict[str, list]:
 def is_sweep_file(path: str | Path) -> bool:
     """Whether a YAML file is a sweep (top-level 'base' and 'grid' or 'table') rather than a case."""
     try:
-        data = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
+        data = load_yaml(Path(path).read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, yaml.YAMLError):
         return False
     return isinstance(data, dict) and "base" in data and ("grid" in data or "table" in data)
