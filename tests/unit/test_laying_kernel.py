@@ -143,11 +143,11 @@ def test_jacobian_with_nodes_sliding_on_the_seabed_matches_finite_differences():
     np.testing.assert_allclose(J[np.ix_(keep, keep)], Jfd[np.ix_(keep, keep)], atol=1e-6)
 
 
-def test_block_solve_gives_the_bits_of_block_thomas():
-    """The step's block solver (block size 3 or 4, unrolled) is towed.linalg.block_thomas operation for operation:
+def test_block_thomas_small_gives_the_bits_of_block_thomas():
+    """The step's block solver (block size 3 or 4 a compile-time constant, unrolled) is block_thomas operation for operation:
     the same solution to the last bit, pivot swaps and zero blocks included, and the same status of a singular
     system."""
-    from seacable.towed.linalg import block_thomas
+    from seacable.towed.linalg import block_thomas, block_thomas_small
 
     rng = np.random.default_rng(7)
     for m in (3, 4):
@@ -158,7 +158,7 @@ def test_block_solve_gives_the_bits_of_block_thomas():
             diag[:, 0, 0] = 1e-3 * rng.standard_normal(n)    # small leading entries: rows swapped
             rhs = rng.standard_normal((n, m))
             out = []
-            for solve in (block_thomas, K.block_solve):
+            for solve in (block_thomas, block_thomas_small):
                 x = np.zeros((n, m))
                 work = (np.empty((n, m, m)), np.empty((m, m)), np.empty(m, dtype=np.int64), np.empty((3, m)))
                 out.append((solve(lower, diag, upper, rhs, x, *work), x.tobytes()))
@@ -167,5 +167,5 @@ def test_block_solve_gives_the_bits_of_block_thomas():
         diag[n // 2] = 0.0                               # singular at that block row
         lower[n // 2] = 0.0
         status = [solve(lower, diag, upper, rhs, np.zeros((n, m)), np.empty((n, m, m)), np.empty((m, m)),
-                        np.empty(m, dtype=np.int64), np.empty((3, m))) for solve in (block_thomas, K.block_solve)]
+                        np.empty(m, dtype=np.int64), np.empty((3, m))) for solve in (block_thomas, block_thomas_small)]
         assert status[0] == status[1] == n // 2 + 1

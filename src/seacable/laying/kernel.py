@@ -56,7 +56,7 @@ import math
 import numpy as np
 
 from .._jit import njit
-from ..towed.linalg import SINGULAR_RTOL
+from ..towed.linalg import block_thomas_small
 
 __all__ = [
     "N_PROPS",
@@ -72,7 +72,6 @@ __all__ = [
     "STEP_NOT_CONVERGED",
     "STEP_OK",
     "STEP_SINGULAR",
-    "block_solve",
     "current_at",
     "drag_anchors",
     "implicit_step",
@@ -80,7 +79,6 @@ __all__ = [
     "settle",
 ]
 
-_EPS = float(np.finfo(np.float64).eps)
 # Columns of the per-type property table (per unit unstretched length).
 P_MASS, P_WEIGHT, P_DIAMETER, P_CDN, P_CDT, P_EN, P_ET, P_COMPLIANCE = range(8)
 N_PROPS = 8
@@ -357,7 +355,7 @@ def implicit_step(pos, vel, chute, L, seg_type, props, point, depths, current, r
                 break
             if it == max_iter:
                 break
-            if block_solve(lower, diag, upper, rhs, x, gamma, lu, piv, scale) != 0:
+            if block_thomas_small(lower, diag, upper, rhs, x, gamma, lu, piv, scale) != 0:
                 total += it
                 return STEP_SINGULAR, total, residual
             # damped update: no node moves more than a quarter of the shortest segment per iteration
@@ -433,159 +431,6 @@ def settle(pos, vel, zb, lo, hi):
         if pos[k, up] <= zb[k - lo - 1] + 1e-9:
             return k
     return lo
-
-
-@njit(cache=True)
-def block_solve(lower, diag, upper, rhs, x, gamma, lu, piv, scale):
-    """:func:`seacable.towed.linalg.block_thomas` for the step's blocks of 3 (2-D) or 4 (3-D): the same arithmetic,
-    operation for operation (the same pivots, the same bits of ``x``, the same status), with the block size a
-    constant of the compiled code, which unrolls the small loops (about twice as fast)."""
-    if rhs.shape[1] == 3:
-        return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 3)
-    return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 4)
-
-
-@njit(cache=True, inline="always")
-def _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m):
-    """The block Thomas elimination of :func:`seacable.towed.linalg.block_thomas` for blocks of size ``m``."""
-    n = rhs.shape[0]
-    for k in range(n):
-        # Schur complement S_k = diag[k] - lower[k] gamma[k-1] and y_k = rhs[k] - lower[k] y[k-1]; the noise scale
-        # of each row of S_k: max|diag[k]| + sum_j |lower[k]_ij| max_c |gamma_jc|
-        for i in range(m):
-            s = 0.0
-            for j in range(m):
-                v = diag[k, i, j]
-                lu[i, j] = v
-                s = max(s, abs(v))
-            x[k, i] = rhs[k, i]
-            scale[1, i] = s
-        if k > 0:
-            for j in range(m):
-                s = 0.0
-                for c in range(m):
-                    s = max(s, abs(gamma[k - 1, j, c]))
-                scale[2, j] = s
-            for i in range(m):
-                s = 0.0
-                for j in range(m):
-                    s += abs(lower[k, i, j]) * scale[2, j]
-                scale[1, i] += s
-            for i in range(m):
-                s = x[k, i]
-                for j in range(m):
-                    f = lower[k, i, j]
-                    if f != 0.0:
-                        s -= f * x[k - 1, j]
-                        for c in range(m):
-                            lu[i, c] -= f * gamma[k - 1, j, c]
-                x[k, i] = s
-        if _lu_factor(lu, piv, scale, m) != 0:
-            return k + 1
-        _lu_solve(lu, piv, x[k], m, scale[2])
-        if k < n - 1:
-            g = gamma[k]
-            for i in range(m):
-                for j in range(m):
-                    g[i, j] = upper[k, i, j]
-            _lu_solve_columns(lu, piv, g, m, scale[2])
-    # back substitution x_k = y_k - gamma_k x_{k+1}
-    for k in range(n - 2, -1, -1):
-        for i in range(m):
-            s = x[k, i]
-            for j in range(m):
-                s -= gamma[k, i, j] * x[k + 1, j]
-            x[k, i] = s
-    return 0
-
-
-@njit(cache=True, inline="always")
-def _lu_factor(a, piv, scale, m):
-    """``seacable.towed.linalg._lu_factor`` (LU with scaled partial pivoting, in place) of the ``m x m`` ``a``;
-    ``scale[2]`` receives the reciprocals of U's diagonal, for :func:`_lu_solve` and :func:`_lu_solve_columns`."""
-    for i in range(m):
-        s = 0.0
-        for j in range(m):
-            v = abs(a[i, j])
-            if not (v <= 1.0e308):  # NaN or inf
-                return 1
-            s = max(s, v)
-        if s == 0.0:
-            return 1
-        scale[0, i] = s
-        scale[1, i] = max(scale[1, i], s)
-    tol = SINGULAR_RTOL * m * _EPS
-    for j in range(m):
-        p = j
-        best = -1.0
-        for i in range(j, m):
-            r = abs(a[i, j]) / scale[0, i]
-            if r > best:
-                best = r
-                p = i
-        if not (abs(a[p, j]) > tol * scale[1, p]):  # also catches NaN
-            return j + 1
-        piv[j] = p
-        if p != j:
-            for c in range(m):
-                a[j, c], a[p, c] = a[p, c], a[j, c]
-            for r in range(2):
-                scale[r, j], scale[r, p] = scale[r, p], scale[r, j]
-        inv = 1.0 / a[j, j]
-        scale[2, j] = inv
-        for i in range(j + 1, m):
-            f = a[i, j] * inv
-            a[i, j] = f
-            if f != 0.0:
-                for c in range(j + 1, m):
-                    a[i, c] -= f * a[j, c]
-    return 0
-
-
-@njit(cache=True, inline="always")
-def _lu_solve(a, piv, b, m, inv):
-    """Overwrite the vector ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat`` of one column; ``inv``
-    the reciprocals of U's diagonal)."""
-    for j in range(m):
-        p = piv[j]
-        if p != j:
-            b[j], b[p] = b[p], b[j]
-    for i in range(1, m):
-        for j in range(i):
-            f = a[i, j]
-            if f != 0.0:
-                b[i] -= f * b[j]
-    for i in range(m - 1, -1, -1):
-        for j in range(i + 1, m):
-            f = a[i, j]
-            if f != 0.0:
-                b[i] -= f * b[j]
-        b[i] *= inv[i]
-
-
-@njit(cache=True, inline="always")
-def _lu_solve_columns(a, piv, b, m, inv):
-    """Overwrite the ``m x m`` matrix ``b`` with ``A^-1 b`` (``seacable.towed.linalg._lu_solve_mat``; ``inv`` the
-    reciprocals of U's diagonal)."""
-    for j in range(m):
-        p = piv[j]
-        if p != j:
-            for c in range(m):
-                b[j, c], b[p, c] = b[p, c], b[j, c]
-    for i in range(1, m):
-        for j in range(i):
-            f = a[i, j]
-            if f != 0.0:
-                for c in range(m):
-                    b[i, c] -= f * b[j, c]
-    for i in range(m - 1, -1, -1):
-        for j in range(i + 1, m):
-            f = a[i, j]
-            if f != 0.0:
-                for c in range(m):
-                    b[i, c] -= f * b[j, c]
-        for c in range(m):
-            b[i, c] *= inv[i]
 
 
 @njit(cache=True)

@@ -46,6 +46,7 @@ __all__ = [
     "ERROR_LIMIT",
     "solve_block_tridiagonal",
     "block_thomas",
+    "block_thomas_small",
     "solve_block_tridiagonal_work",
     "block_tridiagonal_workspace",
     "check_block_tridiagonal",
@@ -98,17 +99,18 @@ def _first_nonfinite_block(x):
     return 0
 
 
-@njit(cache=True)
-def _lu_factor(a, piv, scale):
-    """In-place LU of the small square ``a`` with scaled (implicit) partial pivoting [1]_.
+@njit(cache=True, inline="always")
+def _lu_factor(a, piv, scale, m):
+    """In-place LU of the small square ``a (m, m)`` with scaled (implicit) partial pivoting [1]_.
 
     ``piv[j]`` is the row swapped with row ``j`` at step ``j``. ``scale (3, m)``: on entry
     ``scale[1, i]`` is the magnitude of the terms that formed row ``i`` (its rounding-noise
-    scale, at least the row's largest entry); ``scale[0]`` receives the row maxima. Returns 0,
-    or ``j + 1`` when the pivot of step ``j`` is at most ``SINGULAR_RTOL * m * eps`` times the
-    noise scale of its row, or non-finite.
+    scale, at least the row's largest entry); ``scale[0]`` receives the row maxima and
+    ``scale[2]`` the reciprocals of U's diagonal (for :func:`_lu_solve` and
+    :func:`_lu_solve_columns`). Returns 0, or ``j + 1`` when the pivot of step ``j`` is at most
+    ``SINGULAR_RTOL * m * eps`` times the noise scale of its row, or non-finite. Inlined, so that
+    a caller passing a constant ``m`` gets the small loops unrolled.
     """
-    m = a.shape[0]
     for i in range(m):
         s = 0.0
         for j in range(m):
@@ -138,6 +140,7 @@ def _lu_factor(a, piv, scale):
             for r in range(2):
                 scale[r, j], scale[r, p] = scale[r, p], scale[r, j]
         inv = 1.0 / a[j, j]
+        scale[2, j] = inv
         for i in range(j + 1, m):
             f = a[i, j] * inv
             a[i, j] = f
@@ -147,33 +150,50 @@ def _lu_factor(a, piv, scale):
     return 0
 
 
-@njit(cache=True)
-def _lu_solve_mat(a, piv, b):
-    """Overwrite the matrix ``b (m, p)`` with ``A^-1 b``, row-oriented (contiguous inner loop)."""
-    m = a.shape[0]
-    ncol = b.shape[1]
+@njit(cache=True, inline="always")
+def _lu_solve(a, piv, b, m, inv):
+    """Overwrite the vector ``b (m,)`` with ``A^-1 b`` from :func:`_lu_factor`'s ``a`` and ``piv``
+    (``inv`` the reciprocals of U's diagonal)."""
     for j in range(m):
         p = piv[j]
         if p != j:
-            for c in range(ncol):
-                t = b[j, c]
-                b[j, c] = b[p, c]
-                b[p, c] = t
+            b[j], b[p] = b[p], b[j]
     for i in range(1, m):
         for j in range(i):
             f = a[i, j]
             if f != 0.0:
-                for c in range(ncol):
+                b[i] -= f * b[j]
+    for i in range(m - 1, -1, -1):
+        for j in range(i + 1, m):
+            f = a[i, j]
+            if f != 0.0:
+                b[i] -= f * b[j]
+        b[i] *= inv[i]
+
+
+@njit(cache=True, inline="always")
+def _lu_solve_columns(a, piv, b, m, inv):
+    """Overwrite the matrix ``b (m, m)`` with ``A^-1 b``, row-oriented (contiguous inner loop);
+    :func:`_lu_solve` column by column, operation for operation."""
+    for j in range(m):
+        p = piv[j]
+        if p != j:
+            for c in range(m):
+                b[j, c], b[p, c] = b[p, c], b[j, c]
+    for i in range(1, m):
+        for j in range(i):
+            f = a[i, j]
+            if f != 0.0:
+                for c in range(m):
                     b[i, c] -= f * b[j, c]
     for i in range(m - 1, -1, -1):
         for j in range(i + 1, m):
             f = a[i, j]
             if f != 0.0:
-                for c in range(ncol):
+                for c in range(m):
                     b[i, c] -= f * b[j, c]
-        inv = 1.0 / a[i, i]
-        for c in range(ncol):
-            b[i, c] *= inv
+        for c in range(m):
+            b[i, c] *= inv[i]
 
 
 @njit(cache=True)
@@ -261,17 +281,40 @@ def block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale):
             or lu.shape[0] != m or lu.shape[1] != m or piv.shape[0] != m or scale.shape[1] != m \
             or scale.shape[0] != 3:
         return -1
+    return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m)
+
+
+@njit(cache=True)
+def block_thomas_small(lower, diag, upper, rhs, x, gamma, lu, piv, scale):
+    """:func:`block_thomas` without its shape checks, for the blocks of 3 or 4 of the laying step.
+
+    The same arithmetic, operation for operation (the same pivots, the same bits of ``x``, the
+    same status), with the block size a constant of the compiled code for ``m = 3`` and ``m = 4``,
+    which unrolls the small loops (about twice as fast); other sizes take the general loop. The
+    caller guarantees the shapes of :func:`block_tridiagonal_workspace`.
+    """
+    m = rhs.shape[1]
+    if m == 3:
+        return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 3)
+    if m == 4:
+        return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 4)
+    return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m)
+
+
+@njit(cache=True, inline="always")
+def _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m):
+    """The block Thomas elimination of :func:`block_thomas` for blocks of size ``m``."""
+    n = rhs.shape[0]
     for k in range(n):
-        # Schur complement S_k = diag[k] - lower[k] gamma[k-1] and y_k = rhs[k] - lower[k] y[k-1]
-        for i in range(m):
-            for j in range(m):
-                lu[i, j] = diag[k, i, j]
-            x[k, i] = rhs[k, i]
-        # noise scale of each row of S_k: max|diag[k]| + sum_j |lower[k]_ij| max_c |gamma_jc|
+        # Schur complement S_k = diag[k] - lower[k] gamma[k-1] and y_k = rhs[k] - lower[k] y[k-1]; the noise scale
+        # of each row of S_k: max|diag[k]| + sum_j |lower[k]_ij| max_c |gamma_jc|
         for i in range(m):
             s = 0.0
             for j in range(m):
-                s = max(s, abs(diag[k, i, j]))
+                v = diag[k, i, j]
+                lu[i, j] = v
+                s = max(s, abs(v))
+            x[k, i] = rhs[k, i]
             scale[1, i] = s
         if k > 0:
             for j in range(m):
@@ -293,14 +336,15 @@ def block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale):
                         for c in range(m):
                             lu[i, c] -= f * gamma[k - 1, j, c]
                 x[k, i] = s
-        if _lu_factor(lu, piv, scale) != 0:
+        if _lu_factor(lu, piv, scale, m) != 0:
             return k + 1
-        _lu_solve_mat(lu, piv, x[k].reshape((m, 1)))
+        _lu_solve(lu, piv, x[k], m, scale[2])
         if k < n - 1:
+            g = gamma[k]
             for i in range(m):
                 for j in range(m):
-                    gamma[k, i, j] = upper[k, i, j]
-            _lu_solve_mat(lu, piv, gamma[k])
+                    g[i, j] = upper[k, i, j]
+            _lu_solve_columns(lu, piv, g, m, scale[2])
     # back substitution x_k = y_k - gamma_k x_{k+1}
     for k in range(n - 2, -1, -1):
         for i in range(m):
