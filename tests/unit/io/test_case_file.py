@@ -50,6 +50,22 @@ def test_every_example_is_valid(path):
         sc.load_case(path)
 
 
+@pytest.mark.parametrize("text, sweep", [
+    ("base: case.yaml\ngrid:\n  line.length: [900, 910]\n", True),
+    ("base: case.yaml\ntable: cases.csv\n", True),
+    ("{base: case.yaml, grid: {line.length: [900, 910]}}\n", True),          # flow style
+    ("'base': case.yaml\n\"grid\": {line.length: [900]}\n", True),           # quoted keys
+    ("base: case.yaml\n", False),                                             # no grid nor table
+    ("grid: {line.length: [900]}\n", False),
+    ("name: t\nline: {base: x, grid: y}\n", False),                         # not at the top level
+    ("- base\n- grid\n", False),                                             # a list
+    ("base: [\n", False),                                                     # not YAML
+    ("", False),
+])
+def test_a_sweep_file_is_told_from_a_case_by_its_top_level_keys(tmp_path, text, sweep):
+    assert is_sweep_file(write(tmp_path, text, "f.yaml")) is sweep
+
+
 @pytest.mark.parametrize("edit, expected", [
     (("diameter: 0.09", "diamter: 0.09"), "line_types.chain has an unknown key 'diamter'. Did you mean 'diameter'?"),
     (("diameter: 0.09", "diameter: -0.09"), "line_types.chain.diameter must be > 0 m, got -0.09 m"),
