@@ -10,15 +10,25 @@ each of its kernel families (``_FAMILIES``, shared out by their compile time), s
 compiled once, by one worker, at the same time as the other worker compiles others; a family's later users
 load it from the cache. With a warm cache the runs cost a few seconds a worker. Nothing is asserted here:
 the same examples are run and checked by the tests.
+
+Bytecode is cached even where ``PYTHONDONTWRITEBYTECODE`` is set (as on the machines this suite was timed on):
+without it each worker compiled and re-wrote the asserts of 220 test modules at every run (8 of its 15
+CPU-seconds of collection), and every process a test starts (the command line, a sweep's workers) compiled
+seacable's sources again. The files go to the ``__pycache__`` folders git ignores; where they cannot be
+written, Python goes on without them.
 """
 
 from __future__ import annotations
 
 import os
+import sys
 import warnings
 from pathlib import Path
 
 import pytest
+
+sys.dont_write_bytecode = False                  # this process: the test modules pytest rewrites, seacable
+os.environ.pop("PYTHONDONTWRITEBYTECODE", None)  # the xdist workers and the processes the tests start
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
