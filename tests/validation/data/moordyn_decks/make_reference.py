@@ -44,22 +44,13 @@ TURBINES = {
     },
 }
 
+# the child imports MoorDyn only: the coupled DOFs come from the parent (_coupled_dofs) as JSON, whose floats
+# read back bit for bit, so that a child costs MoorDyn's run and not seacable's import too
 _CHILD = r"""
 import json, sys, math
 import moordyn
-from seacable.io.moordyn import read_moordyn
 path = sys.argv[1]
-md = read_moordyn(path)
-x = []
-for b in md.bodies:
-    if b.attachment == "coupled":
-        x += list(b.position[:3]) + list(b.position[3:])
-for r in md.rods:
-    if r.attachment == "coupled":
-        x += list(r.end_a) + ([0.0, 0.0, 0.0] if r.pinned else list(r.end_b))
-for p in md.points:
-    if p.attachment == "vessel":
-        x += list(p.position)
+x = json.loads(sys.argv[2])
 s = moordyn.Create(path)
 n = moordyn.NCoupledDOF(s)
 if n != len(x):
@@ -108,10 +99,33 @@ def decks():
     return sorted(p for p in HERE.rglob("*") if p.suffix in (".txt", ".dat") and is_moordyn_file(p))
 
 
-def _child(code: str, deck: Path, env: dict) -> tuple[dict | None, str, float]:
+def _coupled_dofs(deck: Path) -> list[float]:
+    """The deck's coupled degrees of freedom where the deck puts them, in MoorDyn's order (coupled bodies' 6, coupled
+    rods' ends (a pinned rod's second end 0, 0, 0), vessel points' 3): what ``moordyn.Init`` takes."""
+    import warnings
+
+    from seacable.io.moordyn import read_moordyn
+
+    with warnings.catch_warnings():  # the child read the deck with -W ignore
+        warnings.simplefilter("ignore")
+        md = read_moordyn(deck)
+    x = []
+    for b in md.bodies:
+        if b.attachment == "coupled":
+            x += list(b.position[:3]) + list(b.position[3:])
+    for r in md.rods:
+        if r.attachment == "coupled":
+            x += list(r.end_a) + ([0.0, 0.0, 0.0] if r.pinned else list(r.end_b))
+    for p in md.points:
+        if p.attachment == "vessel":
+            x += list(p.position)
+    return [float(v) for v in x]
+
+
+def _child(code: str, deck: Path, env: dict, *args: str) -> tuple[dict | None, str, float]:
     t0 = time.time()
     try:
-        proc = subprocess.run([sys.executable, "-W", "ignore", "-c", code, str(deck)], capture_output=True,
+        proc = subprocess.run([sys.executable, "-W", "ignore", "-c", code, str(deck), *args], capture_output=True,
                               text=True, timeout=TIMEOUT, cwd=deck.parent, env=env)
     except subprocess.TimeoutExpired:
         return None, f"did not finish in {TIMEOUT:g} s", TIMEOUT
@@ -175,7 +189,12 @@ def _place_turbines(path: Path, poses: dict) -> None:
 def _run(deck: Path, moorpy: bool = True) -> dict:
     src = str(HERE.parents[3] / "src")  # this checkout's seacable, whatever the working folder
     env = {**os.environ, "PYTHONPATH": src + os.pathsep + os.environ.get("PYTHONPATH", "")}
-    result, text, seconds = _child(_CHILD, deck, env)
+    try:
+        x = _coupled_dofs(deck)
+    except Exception as err:  # recorded as the child recorded a deck it could not read
+        result, text, seconds = None, f"{type(err).__name__}: {err}", 0.0
+    else:
+        result, text, seconds = _child(_CHILD, deck, env, json.dumps(x))
     if result is None:
         out = {"error": "MoorDyn: " + text, "seconds": seconds}
     else:
