@@ -473,7 +473,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
     _add_limits(p)
-    p.set_defaults(func=_cmd_run)
+    p.set_defaults(func="_cmd_run")
 
     p = sub.add_parser("sweep", parents=[common],
                        help="run a sweep: a base case over a grid or a table of parameters, on Dask")
@@ -487,18 +487,18 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--retry-failed", action="store_true", help="run again the cases that failed before")
     p.add_argument("--no-plots", action="store_true", help="write the results only")
     _add_limits(p)
-    p.set_defaults(func=_cmd_sweep)
+    p.set_defaults(func="_cmd_sweep")
 
     p = sub.add_parser("validate", parents=[common],
                        help="check case and sweep files as 'run' would before computing, without running them")
     p.add_argument("cases", nargs="+", help="YAML case or sweep files")
     _add_limits(p)
-    p.set_defaults(func=_cmd_validate)
+    p.set_defaults(func="_cmd_validate")
 
     p = sub.add_parser("plot", parents=[common], help="make the standard figures (PNG) of a result file")
     p.add_argument("result", help="result file (.nc) written by 'seacable run'")
     p.add_argument("-o", "--output", help="folder for the PNG files; default beside the result")
-    p.set_defaults(func=_cmd_plot)
+    p.set_defaults(func="_cmd_plot")
 
     p = sub.add_parser("animate", parents=[common],
                        help="animate a cable lay (laying_dynamic) or a tow (towline_dynamic) as GIF or MP4")
@@ -508,7 +508,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--fps", type=_whole, default=10, help="frames per second (default 10)")
     p.add_argument("--max-frames", type=_whole, default=200,
                    help="largest number of frames; output times are subsampled evenly (default 200)")
-    p.set_defaults(func=_cmd_animate)
+    p.set_defaults(func="_cmd_animate")
 
     p = sub.add_parser("report", parents=[common],
                        help="design report (HTML and CSV) of a mooring_dynamic or system_dynamic result or sweep: "
@@ -536,12 +536,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--nominal-diameter", type=_number,
                    help="nominal diameter for the fatigue stress [m] (default: the line type's diameter over "
                         "its volume-equivalent ratio, 1.8 for studless chain)")
-    p.set_defaults(func=_cmd_report)
+    p.set_defaults(func="_cmd_report")
 
     p = sub.add_parser("schema", parents=[common], help="print the JSON schema of case files")
     p.add_argument("--system", action="store_true",
                    help="the schema of mooring-system cases (points, bodies, lines) instead of single-line ones")
-    p.set_defaults(func=_cmd_schema)
+    p.set_defaults(func="_cmd_schema")
     return parser
 
 
@@ -622,7 +622,9 @@ def main(argv: list[str] | None = None) -> int:
         try:
             _check_options(args)
             with _limits(args):
-                return args.func(args)
+                # the command's function is looked up by name when it runs, not bound in the parser that is built
+                # once per process: a function replaced after the first call (a test's monkeypatch) is the one run
+                return globals()[args.func](args)
         except SeacableError as err:
             print(f"seacable: error: {err}", file=sys.stderr)
             return EXIT_USER_ERROR

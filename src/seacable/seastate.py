@@ -364,10 +364,21 @@ def cutoff_depth(sea: SeaComponents, fraction=CUTOFF) -> float:
     if math.isfinite(sea.depth):
         top = min(top, sea.depth)
     z = -np.linspace(0.0, top, 2001)
-    ch, _ = sea.profiles(z)
-    sd = np.sqrt(np.sum((sea.amplitude * sea.omega * ch) ** 2, axis=-1))
-    below = np.flatnonzero(sd < fraction * sd[0])
-    return -top if below.size == 0 else float(z[below[0]])
+    # the levels from the top down, in blocks of 128, 256, ... levels, until one is below the fraction: the same
+    # numbers as all 2001 levels at once (each level's profiles and sum are its own), a part of the work when the
+    # waves die out part way down (the profiles were most of a mooring run's set-up and of validating a sweep)
+    a_w = sea.amplitude * sea.omega
+    start, size, sd0 = 0, 128, None
+    while start < z.size:
+        ch, _ = sea.profiles(z[start:start + size])
+        sd = np.sqrt(np.sum((a_w * ch) ** 2, axis=-1))
+        if sd0 is None:
+            sd0 = sd[0]
+        below = np.flatnonzero(sd < fraction * sd0)
+        if below.size:
+            return float(z[start + below[0]])
+        start, size = start + size, 2 * size
+    return -top
 
 
 def significant(sea: SeaComponents, z_top: float, fraction=CUTOFF) -> SeaComponents:

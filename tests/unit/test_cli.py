@@ -155,6 +155,15 @@ def test_limit_options_set_the_limits_for_the_command_only(tmp_path, monkeypatch
     assert "SEACABLE_MAX_STEPS" not in os.environ and os.environ["SEACABLE_MAX_CASES"] == "7"
 
 
+def test_a_command_replaced_after_the_parser_was_built_is_the_one_run(monkeypatch, capsys):
+    """The parser is built once per process; the command's function is looked up by name when it runs, so a
+    function replaced after an earlier call (as the tests here patch them) is the one that runs."""
+    assert main(["schema"]) == 0   # the parser built
+    capsys.readouterr()
+    monkeypatch.setattr("seacable.cli._cmd_validate", lambda args: 0)
+    assert main(["validate", "no_such_case.yaml"]) == 0   # the real one: exit 2, the file does not exist
+
+
 def test_an_interrupt_a_library_turns_into_another_error_exits_130(monkeypatch, capsys):
     """Issue 37: Ctrl-C while numba compiles a kernel surfaced as numba's own error ('no compiled object yet') and
     exit 3, an internal error. The command's signal handler records the request, so the error that follows is

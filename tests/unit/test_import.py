@@ -34,6 +34,22 @@ def _loaded(code: str) -> set[str]:
     return set(json.loads(out.stdout.splitlines()[-1]))
 
 
+def _loaded_after_each(codes: list[str]) -> list[set[str]]:
+    """The modules one fresh interpreter has loaded after each of ``codes``, run one after another.
+
+    One interpreter for several probes: a module that a probe needs is in the set after it whether or not an
+    earlier probe loaded it first (``sys.modules`` only grows), so "no heavy module after probe k" holds for
+    probe k run alone too; a failing probe fails the probes after it as well."""
+    marker = "seacable-probe-modules:"
+    steps = [f"{code}\nprint({marker!r} + json.dumps(sorted(sys.modules)), flush=True)" for code in codes]
+    probe = "import json, sys\n" + "\n".join(f"exec({step!r})" for step in steps)
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=False,
+                         cwd=ROOT.parents[1], env={**os.environ, "PYTHONPATH": str(ROOT.parent)})
+    found = [set(json.loads(line[len(marker):])) for line in out.stdout.splitlines() if line.startswith(marker)]
+    assert out.returncode == 0 and len(found) == len(codes), out.stderr
+    return found  # with the probe's json, imported before the first code (no library of HEAVY)
+
+
 def _heavy(modules: set[str], heavy=HEAVY) -> list[str]:
     return sorted(m for m in heavy if m in modules)
 
@@ -45,21 +61,36 @@ def test_import_seacable_loads_none_of_the_heavy_libraries():
 
 
 def test_the_command_line_and_reading_a_case_load_only_what_they_need():
+    # one fresh interpreter for the four probes, one after another (was one each: a fresh interpreter's start
+    # is most of the time): the parser first, then the cases, each checked on what is loaded after it
+    names = ("paper002_vertical_cable.yaml", "spread_mooring.yaml", "paper003_zigzag.yaml")
+    after = _loaded_after_each(["import seacable.cli"] + [f"import seacable; seacable.load_case({str(EXAMPLES / name)!r})"
+                                                          for name in names])
     # the command's parser (seacable --help) needs none of them, not even NumPy
-    assert _heavy(_loaded("import seacable.cli"), HEAVY + ("scipy", "numpy")) == []
+    assert _heavy(after[0], HEAVY + ("scipy", "numpy")) == []
     # a case and its checks are pydantic models: no compiled kernels, no Dataset, no solver
-    for name in ("paper002_vertical_cable.yaml", "spread_mooring.yaml", "paper003_zigzag.yaml"):
-        modules = _loaded(f"import seacable; seacable.load_case({str(EXAMPLES / name)!r})")
+    for name, modules in zip(names, after[1:], strict=True):
         assert _heavy(modules, HEAVY + ("scipy",)) == [], name
 
 
-@pytest.mark.parametrize("name", ["paper002_vertical_cable.yaml", "oc3_hywind_static.yaml", "oc3_hywind_modes.yaml",
-                                  "paper004_lena_pushover.yaml"])
-def test_validate_of_a_static_or_modal_case_builds_no_dataset(name):
+VALIDATED = ["paper002_vertical_cable.yaml", "oc3_hywind_static.yaml", "oc3_hywind_modes.yaml",
+             "paper004_lena_pushover.yaml"]
+
+
+@pytest.fixture(scope="module")
+def loaded_after_validate() -> dict[str, set[str]]:
+    """The modules loaded after ``seacable validate`` of each of :data:`VALIDATED`, in one fresh interpreter, one
+    after another (was one interpreter each: its start and imports were most of each test's time)."""
+    codes = [f"from seacable.cli import main\nassert main(['validate', {str(EXAMPLES / name)!r}]) == 0"
+             for name in VALIDATED]
+    return dict(zip(VALIDATED, _loaded_after_each(codes), strict=True))
+
+
+@pytest.mark.parametrize("name", VALIDATED)
+def test_validate_of_a_static_or_modal_case_builds_no_dataset(name, loaded_after_validate):
     """``seacable validate`` solves a static or modal case (the runner's own ``solve_*``) but builds no Dataset:
     no xarray, pandas, Dask or matplotlib (the finite-element statics of a mooring line do load numba)."""
-    code = f"from seacable.cli import main\nassert main(['validate', {str(EXAMPLES / name)!r}]) == 0"
-    assert _heavy(_loaded(code), ("xarray", "pandas", "dask", "matplotlib")) == [], name
+    assert _heavy(loaded_after_validate[name], ("xarray", "pandas", "dask", "matplotlib")) == [], name
 
 
 def test_every_public_name_resolves():

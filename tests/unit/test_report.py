@@ -315,15 +315,23 @@ def test_a_missing_source_or_another_analysis_is_refused(synth, tmp_path, capsys
 
 # ------------------------------------------------------------------------------------------ in a real browser
 
-def _chromium(page: Path, png: Path, profile: Path, size=(1280, 4000)) -> list[str]:
-    """Open ``page`` in headless Chromium, write its screenshot; the console lines it logged."""
+def _start_chromium(page: Path, png: Path, profile: Path, size=(1280, 4000)) -> subprocess.Popen:
+    """Start headless Chromium on ``page``, to write its screenshot (:func:`_console` waits for it)."""
     cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
            "--disable-background-networking", "--disable-component-update", "--disable-sync",
            f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
            f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
-    done = subprocess.run(cmd, check=False, capture_output=True, text=True, timeout=180)
-    assert done.returncode == 0, done.stderr[-2000:]
-    return [line for line in done.stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
+    return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def _console(browser: subprocess.Popen) -> list[str]:
+    """Wait for a Chromium of :func:`_start_chromium`, its screenshot written; the console lines it logged."""
+    try:
+        _, stderr = browser.communicate(timeout=180)
+    finally:
+        browser.kill()
+    assert browser.returncode == 0, stderr[-2000:]
+    return [line for line in stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
 
 
 def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
@@ -335,21 +343,26 @@ def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
 def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
     from PIL import Image
 
-    out = _report(sweep_dir, tmp_path, "--offset-limit", "30")
-    # the console is read: a page with an error in its console is caught
+    # the two reference pages (each a browser of its own profile) open while the report is built: the three
+    # browsers' start-ups overlap the build and each other instead of following it one after another
     planted = tmp_path / "planted.html"
     planted.write_text("<html><body><script>console.error('planted'); missing();</script></body></html>")
-    lines = _chromium(planted, tmp_path / "planted.png", tmp_path / "profile0", (400, 300))
-    assert any("planted" in line for line in lines) and any("Uncaught" in line for line in lines)
-
-    png = tmp_path / "report.png"
-    assert _chromium(out, png, tmp_path / "profile") == []  # no console message at all
-    rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
-    assert rgb.shape == (4000, 1280, 3)
+    planted_browser = _start_chromium(planted, tmp_path / "planted.png", tmp_path / "profile0", (400, 300))
     blank = tmp_path / "blank.png"
     empty = tmp_path / "empty.html"
     empty.write_text("<html><body></body></html>")
-    _chromium(empty, blank, tmp_path / "profile1")
+    blank_browser = _start_chromium(empty, blank, tmp_path / "profile1")
+    out = _report(sweep_dir, tmp_path, "--offset-limit", "30")
+    png = tmp_path / "report.png"
+    report_browser = _start_chromium(out, png, tmp_path / "profile")
+    # the console is read: a page with an error in its console is caught
+    lines = _console(planted_browser)
+    assert any("planted" in line for line in lines) and any("Uncaught" in line for line in lines)
+
+    assert _console(report_browser) == []  # no console message at all
+    rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
+    assert rgb.shape == (4000, 1280, 3)
+    _console(blank_browser)
     # non-background pixels: any channel 10 levels off white. A blank page has none; a page of text alone
     # (the same tables unstyled) under 5 %. This page, with its shaded table headers, zebra rows and three
     # figures in its first 4000 px, is over 8 % (11.6 % when this was written; the same page without its CSS
