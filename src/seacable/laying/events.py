@@ -15,6 +15,7 @@ from .cable import (
     _bottom_tension,
     _Cable,
     _initial_tangent,
+    _length,
     _node_coordinates,
     _touchdown_distance,
     seabed_reaction,
@@ -277,7 +278,7 @@ class _Lay:
         d = c.new_pos[lo + 1] - c.new_pos[lo]
         grad = self.track.gradient(0.5 * (c.new_pos[lo, :-1] + c.new_pos[lo + 1, :-1]))
         cos_b = 1.0 / math.sqrt(1.0 + float(grad @ grad))     # normal to the seabed: (-grad, 1) cos_b
-        up = c.T[lo] * (d[-1] - float(grad @ d[:-1])) * cos_b / float(np.linalg.norm(d))
+        up = c.T[lo] * (d[-1] - float(grad @ d[:-1])) * cos_b / _length(d)
         w = self.par.props[c.seg_type[lo], P_WEIGHT]
         behind = self.laid["s"][-1] - self.laid["s"][-2]
         return up > (0.5 * w * (c.L[lo] + behind) + c.point[lo, 2]) * cos_b
@@ -322,9 +323,8 @@ class _Lay:
             drag_anchors(c.pos[rows], c.contact[rows], c.normal[rows], c.anchor[rows], self.par.friction_distance)
             c.pos[rows, -1] = self.track.zb(c.pos[rows, :-1])
             n = c.lo - c.lb
-            for k in range(n):
-                self.laid["p"][-n + k] = c.pos[c.lb + 1 + k].copy()
-                self.laid["T"][-n + k] = float(c.T[c.lb + k] * c.active[c.lb + k])
+            self.laid["p"][-n:] = [row.copy() for row in c.pos[rows]]     # (a copy each: a row of one block would
+            self.laid["T"][-n:] = (c.T[c.lb:c.lo] * c.active[c.lb:c.lo]).tolist()   # keep the whole block alive)
         self.x_ship, self.vc, self.dt = x_new, vc_new, dt
         c.vel[hi] = self.ship_velocity(vs_new)
         self.s_paid += vc_new * dt
@@ -348,7 +348,7 @@ class _Lay:
             a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
             va = c.vel[hi - 1].copy()
             chord = b - a
-            v_exit = self.ship_velocity(self.ctl.speed) - self.vc * chord / float(np.linalg.norm(chord))
+            v_exit = self.ship_velocity(self.ctl.speed) - self.vc * chord / _length(chord)
             f = (nxt - s_last) / (self.s_paid - s_last)
             for arr in (c.pos, c.vel, c.s, c.point, c.rep):
                 arr[hi + 1] = arr[hi]
@@ -391,7 +391,7 @@ class _Lay:
             self.laid["time"].append(float(t))
             # the tension at the segment's lower end (its mid-segment value less the weight of its lower half)
             d = c.pos[k] - c.pos[k - 1]
-            end = c.T[k - 1] - 0.5 * self.par.props[c.seg_type[k - 1], P_WEIGHT] * c.L[k - 1] * d[-1] / np.linalg.norm(d)
+            end = c.T[k - 1] - 0.5 * self.par.props[c.seg_type[k - 1], P_WEIGHT] * c.L[k - 1] * d[-1] / _length(d)
             self.laid["T"].append(max(float(end), 0.0) * float(c.active[k - 1]))
             if c.rep[k] >= 0:
                 self.rep_state[c.rep[k]] = 2
@@ -497,8 +497,10 @@ class _Lay:
     def seabed_under(self, pos: np.ndarray) -> np.ndarray:
         """Seabed elevation under nodes ``pos`` (rows of ``dim`` coordinates); ``-inf`` under those more than a
         metre above the highest seabed anywhere (``track.highest``), which are neither on nor under it. [m]"""
-        zb = np.full(len(pos), -np.inf)
         low = pos[:, -1] <= self._above
+        if low.all():                    # (as a rule: the seabed under every node)
+            return self.track.zb(pos[:, :-1])
+        zb = np.full(len(pos), -np.inf)
         if low.any():
             zb[low] = self.track.zb(pos[low, :-1])
         return zb
@@ -510,11 +512,12 @@ class _Lay:
         seabed landed (:meth:`touchdowns`): the landing is done on a copy of the positions.
         """
         c = self.c
-        pos = c.new_pos.copy()
+        pos = c.new_pos
         lo = self.landing_row(pos)
         if lo > c.lo:
             if not c.active[c.lo]:
                 return 0.0          # arrived slack: the new bottom segment starts slack (touchdowns)
+            pos = pos[:c.hi + 1].copy()           # (the rows the touchdown reads, not the whole store)
             pos[lo, -1] = float(self.track.zb(pos[lo, :-1]))
         f = self.touchdown(pos, lo)[2]
         return _bottom_tension(c, self.par.props, pos, lo, f)
@@ -599,7 +602,7 @@ class _Lay:
         if now is None:
             chord = c.pos[c.hi] - p
             now = self._now["geometry"] = (self.slope_at(p[:-1]), -float(p[-1]),
-                                           float(np.linalg.norm(chord[:-1])) / max(chord[-1], 1e-9),
+                                           _length(chord[:-1]) / max(chord[-1], 1e-9),
                                            self.turn_factor(chord))
         return now
 
@@ -619,7 +622,7 @@ class _Lay:
         """
         if self.track.dim == 2:
             return 1.0
-        back = float(np.linalg.norm(chord[:-1]))
+        back = _length(chord[:-1])
         ahead = self.track.direction(self.x_ship)
         behind = self.track.direction(self.x_ship - back)
         turn = math.atan2(behind[0] * ahead[1] - behind[1] * ahead[0], float(behind @ ahead))

@@ -234,7 +234,10 @@ class RouteGeometry:
 
     def leg(self, kp) -> np.ndarray:
         """Index of the leg holding each KP (the first or last leg beyond the ends)."""
-        k = np.searchsorted(self.kp, np.asarray(kp, float), side="right") - 1
+        kp = np.asarray(kp, float)
+        k = np.searchsorted(self.kp, kp, side="right") - 1
+        if kp.ndim == 0:                  # (the ship's KP, several times a step: numpy.clip is slow on a scalar)
+            return min(max(int(k), 0), len(self.length) - 1)
         return np.clip(k, 0, len(self.length) - 1)
 
     def point(self, kp) -> np.ndarray:

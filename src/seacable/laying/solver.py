@@ -49,7 +49,7 @@ import warnings
 import numpy as np
 
 from ..errors import ConvergenceError, SeacableWarning
-from .cable import _end_tensions, seabed_reaction
+from .cable import _end_tensions, _length, seabed_reaction
 from .events import _MIN_SPEED, _Lay, _rounds
 from .inputs import PayoutBottomTension, ShipMotion
 from .kernel import STEP_ACTIVE_SET, STEP_NOT_CONVERGED, STEP_OK
@@ -145,7 +145,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         ship_p = c.pos[c.hi]
         # the horizontal distance, negative when the touchdown is ahead of the ship (in 2-D: x_ship - x_td)
         reach = ship_p[:-1] - p_td[:-1]
-        layback = math.copysign(float(np.linalg.norm(reach)), float(reach @ track.direction(lay.x_ship)))
+        layback = math.copysign(_length(reach), float(reach @ track.direction(lay.x_ship)))
         values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), p_td[0],
                   p_td[-1], layback, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
         points.append((ship_p.copy(), p_td.copy()))

@@ -69,6 +69,7 @@ class Track3D:
 
     def __init__(self, route, seabed, delta: float = 1.0):
         self.route, self.seabed, self.delta = route, seabed, delta
+        self._steps = delta * np.eye(2)   # the central differences' steps along x and y
         shallowest = getattr(seabed, "shallowest", math.nan)
         self.highest = -shallowest if math.isfinite(shallowest) else math.inf   # highest seabed elevation [m]
         self._memo = None if getattr(seabed, "flat", False) else _Memo()
@@ -112,14 +113,17 @@ class Track3D:
 
     def gradient(self, ph) -> np.ndarray:
         p = np.asarray(ph, float)
-        e = self.delta * np.eye(2)
-        z = self.zb(np.stack([p + e[0], p - e[0], p + e[1], p - e[1]]))
+        e = self._steps
+        q = np.empty((4, 2))             # p + e[0], p - e[0], p + e[1], p - e[1]
+        q[0::2] = p + e
+        q[1::2] = p - e
+        z = self.zb(q)
         return np.array([z[0] - z[1], z[2] - z[3]]) / (2.0 * self.delta)
 
     def gradients(self, ph) -> np.ndarray:
         """Seabed gradients at horizontal points ``ph`` (shape (n, 2)), shape (n, 2), as :meth:`gradient`. [-]"""
         p = np.asarray(ph, float)
-        e = self.delta * np.eye(2)
+        e = self._steps
         z = self.zb(np.concatenate([p + e[0], p - e[0], p + e[1], p - e[1]])).reshape(4, len(p))
         return np.stack([z[0] - z[1], z[2] - z[3]], axis=1) / (2.0 * self.delta)
 
