@@ -169,3 +169,8 @@ def test_block_thomas_small_gives_the_bits_of_block_thomas():
         status = [solve(lower, diag, upper, rhs, np.zeros((n, m)), np.empty((n, m, m)), np.empty((m, m)),
                         np.empty(m, dtype=np.int64), np.empty((3, m))) for solve in (block_thomas, block_thomas_small)]
         assert status[0] == status[1] == n // 2 + 1
+    # blocks of another size are not its job: refused with block_thomas's shape status, not solved wrongly
+    lower, diag, upper = (rng.standard_normal((4, 5, 5)) for _ in range(3))
+    assert block_thomas_small(lower, diag, upper, rng.standard_normal((4, 5)), np.zeros((4, 5)),
+                              np.empty((4, 5, 5)), np.empty((5, 5)), np.empty(5, dtype=np.int64),
+                              np.empty((3, 5))) == -1

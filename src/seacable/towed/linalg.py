@@ -289,16 +289,17 @@ def block_thomas_small(lower, diag, upper, rhs, x, gamma, lu, piv, scale):
     """:func:`block_thomas` without its shape checks, for the blocks of 3 or 4 of the laying step.
 
     The same arithmetic, operation for operation (the same pivots, the same bits of ``x``, the
-    same status), with the block size a constant of the compiled code for ``m = 3`` and ``m = 4``,
-    which unrolls the small loops (about twice as fast); other sizes take the general loop. The
-    caller guarantees the shapes of :func:`block_tridiagonal_workspace`.
+    same status), with the block size a constant of the compiled code, which unrolls the small
+    loops (about twice as fast). Blocks of other sizes return -1 (use :func:`block_thomas`): a
+    general copy here would add a third of this function's compile time for no caller. The caller
+    guarantees the shapes of :func:`block_tridiagonal_workspace`.
     """
     m = rhs.shape[1]
     if m == 3:
         return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 3)
     if m == 4:
         return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, 4)
-    return _block_thomas(lower, diag, upper, rhs, x, gamma, lu, piv, scale, m)
+    return -1
 
 
 @njit(cache=True, inline="always")
