@@ -13,4 +13,22 @@ from __future__ import annotations
 from . import _numba_cache  # noqa: F401  isort: skip  (installs the cache locator, before any kernel)
 from numba import njit
 
-__all__ = ["njit"]
+__all__ = ["copy_1d", "copy_2d", "njit"]
+
+
+# A slice assignment from an array (``a[:] = b``) makes numba compile the message of its shape check (str, repr
+# and join of the shape tuples) for each kernel and shapes: seconds of compile each, 13.5 CPU-s over the kernel
+# families (bench/bench_compile.py). Kernels copy arrays of known equal shapes with these loops instead.
+@njit(cache=True)
+def copy_1d(dst, src):
+    """``dst[:] = src`` for 1-D arrays of the same length, element by element."""
+    for i in range(src.shape[0]):
+        dst[i] = src[i]
+
+
+@njit(cache=True)
+def copy_2d(dst, src):
+    """``dst[:, :] = src`` for 2-D arrays of the same shape, element by element."""
+    for i in range(src.shape[0]):
+        for j in range(src.shape[1]):
+            dst[i, j] = src[i, j]

@@ -74,7 +74,7 @@ import math
 
 import numpy as np
 
-from .._jit import njit
+from .._jit import copy_1d, copy_2d, njit
 from ..seastate import GRID_HEADER, S_MODE
 from ._band import band_factor, band_solve, lu_solve
 from ._elements import (bending_loads, syrope_loads, syrope_tension, table_tension, viscoelastic_loads,
@@ -269,7 +269,7 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
     wm = (1.0 - alpha_m) / (1.0 - alpha_f)
     wg = 1.0 / (1.0 - alpha_f)
     cm = wm * c0
-    envw[:] = env
+    copy_1d(envw, env)
     envw[E_VDT] = dt  # the viscoelastic elements' slow stretch advances over the step
     env = envw
     # an irregular sea: the water's kinematics of a step are looked up at its predicted positions and held over
@@ -279,9 +279,9 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
     unheld = not held
     water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))
     for step in range(px.shape[0]):
-        Xn[:] = X
-        Vn[:] = V
-        An[:] = A
+        copy_2d(Xn, X)
+        copy_2d(Vn, V)
+        copy_2d(An, A)
         t = t0 + (step + 1) * dt
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         ok = False
@@ -356,9 +356,9 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
         stats[1] = res
         stats[2] = scale
         if not ok:
-            X[:] = Xn
-            V[:] = Vn
-            A[:] = An
+            copy_2d(X, Xn)
+            copy_2d(V, Vn)
+            copy_2d(A, An)
             return step
         commit_viscoelastic(visco)
         if galpha:
@@ -434,7 +434,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
         for k in range(nd):
             big = max(big, abs(R[k]))
         shrink = 1.0 if big <= max_step else max_step / big
-        Xt[:] = X
+        copy_2d(Xt, X)
         for i in range(n):
             f = fidx[i]
             if f >= 0:
@@ -447,7 +447,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
         if math.isfinite(r_new):
-            X[:] = Xt
+            copy_2d(X, Xt)
             lam *= min(max(r_new / r_old, 0.05), 10.0)
         else:
             lam *= 10.0

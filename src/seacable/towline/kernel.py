@@ -97,7 +97,7 @@ import math
 
 import numpy as np
 
-from .._jit import njit
+from .._jit import copy_2d, njit
 from .barge import barge_accelerations
 
 __all__ = ["P_SIZE", "barge_point", "evaluate", "frame_from_axis", "joint_points", "run_steps"]
@@ -152,7 +152,7 @@ def _immersed(c):
 @njit(cache=True, error_model="numpy", fastmath=_FAST)
 def frame_from_axis(e1, out):
     """A frame (columns e1, e2, e3) with the given unit axis; e2 horizontal unless e1 is vertical."""
-    out[:, 0] = e1
+    out[0, 0], out[1, 0], out[2, 0] = e1[0], e1[1], e1[2]
     hx, hy = -e1[1], e1[0]
     n = math.sqrt(hx * hx + hy * hy)
     if n < 1e-9:
@@ -802,8 +802,8 @@ def run_steps(dt, tug_p, tug_v, R, E, nu, om, first_arr, P, bs, bpar, bxt, bzt, 
                 first_arr[0] = first - 1
         if not finite:
             if step % 2 == 0:
-                ma[:] = ma_prev
+                copy_2d(ma, ma_prev)
             return step
     if nstep % 2 == 1:
-        ma[:] = ma_prev
+        copy_2d(ma, ma_prev)
     return nstep

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..._jit import njit
+from ..._jit import copy_2d, njit
 from ...mooring.kernel import GRID_HEADER, _fluid
 from ..statics.kernel import _skew
 from .frames import body_rotation, global_angles, rotation
@@ -96,7 +96,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     cc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2]
     Ma = wk[15:51].reshape((6, 6))
     _rot6(R, add, Ma, np.bool_(False))
-    M6[:] = Ma
+    copy_2d(M6, Ma)
     for r in range(3):
         M6[r, r] += m
         for k in range(3):
@@ -136,7 +136,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
         _add_point_force(f6, c, 0.0, 0.0, -m * g)
         _add_point_force(f6, cb, 0.0, 0.0, rho * g * par[B_VOL])
         qg = wk[87:93]  # the pose with the global angles (the chart's own when never re-charted)
-        qg[:3] = q[:3]
+        qg[0], qg[1], qg[2] = q[0], q[1], q[2]
         global_angles(q, fr, qg[3:])
         for r in range(6):
             for k in range(6):
@@ -161,7 +161,7 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     vr = wk[81:87]
     _mv(R.T, qd[3:], vb[3:])
     _mv(R.T, qd[:3] - uc, vr[:3])
-    vr[3:] = vb[3:]
+    vr[3], vr[4], vr[5] = vb[3], vb[4], vb[5]
     _mv(R.T, qd[:3], vb[:3])
     for k in range(6):
         s = 0.0
@@ -190,7 +190,7 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C, fr):
     K[:] = 0.0
     m = par[B_MASS]
     if par[B_HASK] > 0.0:
-        K[:] = khs
+        copy_2d(K, khs)
     else:
         # -skew(F) skew(c) for a vertical force F = (0, 0, f) at c: [[f c_z, 0, -f c_x], [0, f c_z, -f c_y], [0, 0, 0]]
         for off, f in ((B_CG, -m * g), (B_CB, rho * g * par[B_VOL])):

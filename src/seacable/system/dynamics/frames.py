@@ -139,7 +139,7 @@ def rechart(q, qd, qdd, fr, limit):
         for c in range(3):
             fr[F_R0 + 3 * r + c] = R[r, c]
     fr[F_ON] = 1.0
-    fr[F_GLOB:F_GLOB + 3] = g
+    fr[F_GLOB], fr[F_GLOB + 1], fr[F_GLOB + 2] = g[0], g[1], g[2]
     q[3], q[4], q[5] = 0.0, 0.0, 0.0
     _premul_t(fr, w)
     _premul_t(fr, al)

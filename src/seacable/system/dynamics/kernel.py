@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from ..._jit import njit
+from ..._jit import copy_1d, njit
 from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads, predict_nodes
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent
@@ -207,7 +207,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                     Jq[6 * b + k, 6 * b + 3 + c] += cc * (M6[k, 3] * P[0, c] + M6[k, 4] * P[1, c] + M6[k, 5] * P[2, c])
         if check:
             scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
-    Rr[:] = Rq
+    copy_1d(Rr, Rq)
     for j in range(con_node.size):
         b = con_body[j]
         if con_active[j] == 0 or b < 0:

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..._jit import njit
+from ..._jit import copy_2d, njit
 
 
 @njit(cache=True, error_model="numpy")
@@ -48,7 +48,7 @@ def assemble(P, X, sub_a, sub_b, anchor_is_a, e, tiny, HF, VF, HA, VA, K, ground
     loads: ``node_force``, less the buoyancy ``node_buoy`` of nodes above the water)."""
     ns = sub_a.size
     nn = P.shape[0]
-    nf[:, :] = node_force
+    copy_2d(nf, node_force)
     for n in range(nn):
         if node_buoy[n] != 0.0 and P[n, 2] > 0.0:
             nf[n, 2] -= node_buoy[n]           # above the water: dry weight (a step, no Jacobian term)
