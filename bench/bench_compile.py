@@ -16,7 +16,8 @@ own compiles ``towline.kernel.run_steps`` 20.2, ``towline.kernel.evaluate`` 14.6
 ``system.dynamics.kernel.iterate`` 11.4, ``mooring._loads.loads_water`` 10.6, ``coupled_steps`` 10.5,
 ``towed.linalg.block_thomas_small`` 8.8 CPU-s (12.1 with its general copy); slice-assignment messages 13.5
 CPU-s (``mooring.kernel.static_solve``, ``newmark_work``, ``towline.kernel.frame_from_axis`` and ``run_steps``,
-``system.statics.kernel.assemble``, numba's own ``np.linalg.solve``).
+``system.statics.kernel.assemble``, numba's own ``np.linalg.solve``), 4.9 after those copies became loops
+(``seacable._jit.copy_1d``, ``copy_2d``; left: ``system.dynamics.kernel.iterate`` and ``coupled_static``).
 
 Run: ``python bench/bench_compile.py [TOP]`` (about 5 minutes of one core).
 """
