@@ -35,7 +35,8 @@ from pathlib import Path
 from .errors import InputError
 
 __all__ = ["TEMPORARY", "atomic_path", "atomic_write", "clean_folder_once", "deferred_interrupts",
-           "interrupt_requested", "is_write_failure", "remove_stale_temporaries", "temporary_path", "write_failure"]
+           "interrupt_requested", "is_write_failure", "keep_whole_outputs", "remove_stale_temporaries",
+           "temporary_path", "write_failure"]
 
 interrupt_requested = threading.Event()
 """Set by the command line's SIGINT and SIGTERM handler: the user asked to stop. A case that fails
@@ -283,3 +284,15 @@ def deferred_interrupts() -> Iterator[None]:
             outer(caught[0], None)   # an enclosing block raises when it is done
         else:
             raise KeyboardInterrupt
+
+
+def keep_whole_outputs(*records: list) -> int:
+    """Cut the lists a time loop appends to, output by output, to the shortest one's length, in place; return it.
+
+    An interrupt (Ctrl-C or SIGTERM) between an output's appends leaves some lists one item longer than the
+    others: the outputs that every list holds are kept, so that an interrupted run still returns its result.
+    """
+    n = min(len(rows) for rows in records)
+    for rows in records:
+        del rows[n:]
+    return n

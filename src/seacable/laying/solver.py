@@ -48,6 +48,7 @@ import warnings
 
 import numpy as np
 
+from .._atomic import keep_whole_outputs
 from ..errors import ConvergenceError, SeacableWarning
 from .cable import _end_tensions, _length, seabed_reaction
 from .events import _MIN_SPEED, _Lay, _rounds
@@ -227,12 +228,8 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         interrupted = True
         # an interrupt inside record (or a touchdown's bookkeeping) leaves one list a row longer than the
         # others: keep the outputs (and laid points) that all of them hold
-        n = min(len(out_t), len(points), len(snaps), len(rep_out), *(len(v) for v in series.values()))
-        for rows in (out_t, points, snaps, rep_out, *series.values()):
-            del rows[n:]
-        n_laid = min(len(v) for v in lay.laid.values())
-        for rows in lay.laid.values():
-            del rows[n_laid:]
+        keep_whole_outputs(out_t, points, snaps, rep_out, *series.values())
+        keep_whole_outputs(*lay.laid.values())
     n_max = max(len(p) for p, _ in snaps)
     pos = np.full((len(snaps), n_max, track.dim), np.nan)
     ten = np.full((len(snaps), n_max - 1), np.nan)

@@ -26,6 +26,7 @@ from typing import Callable
 import numpy as np
 
 from .. import _validate as v
+from .._atomic import keep_whole_outputs
 from ..errors import ConvergenceError, InputError
 from ..statics.towed import TangentialDragForm, towed_cable_steady
 from .equations import (
@@ -447,8 +448,7 @@ def simulate(par, n_nodes, path: Callable, duration, time_step, *, output_interv
     except KeyboardInterrupt:
         run.interrupted = True
         # an interrupt between an output's appends: keep the outputs all four lists hold
-        n_kept = min(len(times), len(states), len(positions), len(vessel))
-        del times[n_kept:], states[n_kept:], positions[n_kept:], vessel[n_kept:]
+        keep_whole_outputs(times, states, positions, vessel)
     run.wall_time = _time.perf_counter() - t0
     run.time = np.asarray(times)
     run.state = np.asarray(states)

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._atomic import keep_whole_outputs
 from .._validate import positive
 from ..errors import ConvergenceError, InputError
 from . import kernel as K
@@ -359,8 +360,7 @@ def simulate(model: TowlineModel, tug: TugFn, duration: float, output_interval: 
     except KeyboardInterrupt:
         interrupted = True
         # an interrupt between an output's appends: keep the outputs all three lists hold
-        n_kept = min(len(times), len(tugs), len(records))
-        del times[n_kept:], tugs[n_kept:], records[n_kept:]
+        keep_whole_outputs(times, tugs, records)
     cols = list(zip(*records))
     return TowlineRun(np.array(times), *(np.array(c) for c in cols[:6]), np.array(tugs), np.array(cols[6]),
                       dt, steps, interrupted, _time.perf_counter() - start,

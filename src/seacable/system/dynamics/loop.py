@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..._atomic import keep_whole_outputs
 from ...errors import ConvergenceError
 from ...mooring.motion import RAOMotion, sea_of
 from ...mooring.solver import advance_interval
@@ -305,12 +306,12 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - begin
-    nt = min(len(times), len(pos), len(vel), len(ten), len(bq), len(bqd), len(bw))
-    return SystemRun(time=np.array(times[:nt]), position=np.array(pos[:nt]), velocity=np.array(vel[:nt]),
-                     tension=np.array(ten[:nt]), body_position=np.array(bq[:nt]).reshape(nt, nb, 6),
-                     body_velocity=np.array(bqd[:nt]).reshape(nt, nb, 6), failure_time=fail_at, time_step=h,
+    nt = keep_whole_outputs(times, pos, vel, ten, bq, bqd, bw)
+    return SystemRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
+                     tension=np.array(ten), body_position=np.array(bq).reshape(nt, nb, 6),
+                     body_velocity=np.array(bqd).reshape(nt, nb, 6), failure_time=fail_at, time_step=h,
                      steps=steps, iterations=iterations, wall_time=wall, interrupted=interrupted,
-                     body_angular_velocity=np.array(bw[:nt]).reshape(nt, nb, 3))
+                     body_angular_velocity=np.array(bw).reshape(nt, nb, 3))
 
 
 def _simulate_lines(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
