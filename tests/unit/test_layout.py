@@ -11,6 +11,8 @@ from __future__ import annotations
 import ast
 from pathlib import Path
 
+import pytest
+
 import seacable
 
 ROOT = Path(seacable.__file__).parent
@@ -102,14 +104,20 @@ def _cycle(graph: dict[str, set[str]], component: list[str]) -> list[str]:
     raise AssertionError(f"no circle through {start}")
 
 
+@pytest.fixture(scope="module")
+def package_graph():
+    """The import graph of the installed package, read once for the tests of this file (a second each)."""
+    return _graph()
+
+
 def _circles(graph: dict[str, set[str]]) -> list[str]:
     """One line per import circle: its size, its modules and one circle through them."""
     return [f"{len(c)} modules {c}: " + " -> ".join(_cycle(graph, c))
             for c in _components(graph) if len(c) > 1]
 
 
-def test_no_import_circle():
-    circles = _circles(_graph())
+def test_no_import_circle(package_graph):
+    circles = _circles(package_graph)
     assert not circles, "import circles (cut one import of each):\n" + "\n".join(circles)
 
 
@@ -124,8 +132,8 @@ def _reach(graph: dict[str, set[str]], start: str) -> set[str]:
     return seen
 
 
-def test_lower_layers_do_not_import_higher_ones():
-    graph = _graph()
+def test_lower_layers_do_not_import_higher_ones(package_graph):
+    graph = package_graph
     low = ["seacable.line", "seacable.environment", "seacable.waves", "seacable.statics.catenary",
            "seacable.statics.multisegment", "seacable.statics.towed", "seacable.statics.laying",
            "seacable.modal.eigen", "seacable.modal.vertical", "seacable.modal.wave_speed"]
@@ -144,11 +152,11 @@ def _runs(module: str) -> bool:
                               "seacable.system.dynamics", "seacable.system.statics")))
 
 
-def test_the_inputs_and_the_result_format_do_not_import_the_analyses():
+def test_the_inputs_and_the_result_format_do_not_import_the_analyses(package_graph):
     """The cases (single line and system) and the result format sit below every analysis: an analysis
     imports its case and writes a result, never the other way round; the result format is below the cases
     too (it records a case it is given)."""
-    graph = _graph()
+    graph = package_graph
     below = {"seacable.case": (), "seacable.system.case": (),
              "seacable.results": ("seacable.case", "seacable.system.case")}
     bad = {m: sorted(d for d in _reach(graph, m) if _runs(d) or d in above) for m, above in below.items()}
