@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from ..._jit import copy_1d, njit
+from ..._jit import copy_1d, copy_2d, njit
 from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads, predict_nodes
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent
@@ -413,12 +413,12 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     env = env.copy()
     env[E_VDT] = dt  # viscoelastic lines: the slow stretch advances over the step
     for step in range(px.shape[0]):
-        Xn[:] = X
-        Vn[:] = V
-        An[:] = A
-        qn[:] = q
-        qdn[:] = qd
-        qddn[:] = qdd
+        copy_2d(Xn, X)
+        copy_2d(Vn, V)
+        copy_2d(An, A)
+        copy_2d(qn, q)
+        copy_2d(qdn, qd)
+        copy_2d(qddn, qdd)
         t = t0 + (step + 1) * dt
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         for j in range(con_node.size):
@@ -469,19 +469,19 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 break
             res_prev = res
             cuts = 0
-            Du[:] = du
-            Dq[:] = dq
+            copy_1d(Du, du)
+            copy_1d(Dq, dq)
             _apply(X, q, du, dq, fidx, 1.0)
             place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
         stats[1] = res
         stats[2] = scale
         if not ok:
-            X[:] = Xn
-            V[:] = Vn
-            A[:] = An
-            q[:] = qn
-            qd[:] = qdn
-            qdd[:] = qddn
+            copy_2d(X, Xn)
+            copy_2d(V, Vn)
+            copy_2d(A, An)
+            copy_2d(q, qn)
+            copy_2d(qd, qdn)
+            copy_2d(qdd, qddn)
             return step
         commit_viscoelastic(args[-1])
         for b in range(nb):  # once re-charted, a body is re-charted after every step
@@ -527,7 +527,8 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     gq = np.empty(3)
     for b in range(nb):
         if frame[b, F_ON] == 0.0:
-            frame[b, F_GLOB:F_GLOB + 3] = q[b, 3:]
+            for k in range(3):
+                frame[b, F_GLOB + k] = q[b, 3 + k]
         rechart(q[b], qd[b], qdd[b], frame[b], CHART_LIMIT)
     Xp = X.copy()
     qp = q.copy()
@@ -549,9 +550,9 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
             return True
         if not math.isfinite(res) or not solved or res > 1e3 * res_prev:
             # back to the last state, more inertia
-            X[:] = Xp
-            q[:] = qp
-            frame[:] = framep
+            copy_2d(X, Xp)
+            copy_2d(q, qp)
+            copy_2d(frame, framep)
             lam *= 10.0
             res_prev = np.inf
             continue
@@ -571,9 +572,9 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
             shrink = max_step / big
         if rot * shrink > 0.1:
             shrink = 0.1 / rot
-        Xp[:] = X
-        qp[:] = q
-        framep[:] = frame
+        copy_2d(Xp, X)
+        copy_2d(qp, q)
+        copy_2d(framep, frame)
         _apply(X, q, du, dq, fidx, shrink)
         for b in range(nb):
             track_frame(q[b], qd[b], qdd[b], frame[b], gq, CHART_LIMIT)
