@@ -101,27 +101,30 @@ def _rectangle_added_mass(half_normal, half_along, n_side=400):
     t = d / length[:, None]
     n = np.stack([t[:, 1], -t[:, 0]], axis=1)  # outward: the polygon runs counter-clockwise
     mid = nodes + 0.5 * d
-    rel = mid[:, None, :] - nodes[None, :, :]
-    x = np.einsum("ijk,jk->ij", rel, t)
-    y = np.einsum("ijk,jk->ij", rel, n)
-    Lp = length[None, :]
+    rx = mid[:, 0, None] - nodes[None, :, 0]   # panel i's midpoint from panel j's start, in j's frame (x, y)
+    ry = mid[:, 1, None] - nodes[None, :, 1]
+    x = rx * t[None, :, 0] + ry * t[None, :, 1]
+    y = rx * n[None, :, 0] + ry * n[None, :, 1]
+    xl = x - length[None, :]
+    r2, r2l = x * x + y * y, xl * xl + y * y
     eye = np.eye(len(length), dtype=bool)
     with np.errstate(divide="ignore", invalid="ignore"):
-        ux = np.where(eye, 0.0, -np.log(np.hypot(x - Lp, y) / np.hypot(x, y)) / (2 * np.pi))
-    uy = np.where(eye, 0.5, (np.arctan2(y, x - Lp) - np.arctan2(y, x)) / (2 * np.pi))
-    vel = ux[..., None] * t[None, :, :] + uy[..., None] * n[None, :, :]
-    A = np.einsum("ijk,ik->ij", vel, n)
+        ux = -np.log(r2l / r2) / (4 * np.pi)
+        uy = (np.arctan2(y, xl) - np.arctan2(y, x)) / (2 * np.pi)
+    ux[eye], uy[eye] = 0.0, 0.5
+    # normal velocity at i induced by panel j: (ux t_j + uy n_j) . n_i
+    A = ux * (n[:, None, 0] * t[None, :, 0] + n[:, None, 1] * t[None, :, 1]) \
+        + uy * (n[:, None, 0] * n[None, :, 0] + n[:, None, 1] * n[None, :, 1])
     rhs = n[:, 0]
     sigma = np.linalg.solve(A, rhs)
 
-    def prim(X, Y):  # antiderivative of ln sqrt(X^2 + Y^2) in X
-        r2 = X**2 + Y**2
+    def prim(X, Y, R2):  # antiderivative of ln sqrt(X^2 + Y^2) in X, R2 = X^2 + Y^2
         with np.errstate(divide="ignore", invalid="ignore"):
-            log_term = np.where(r2 > 0, 0.5 * X * np.log(np.where(r2 > 0, r2, 1.0)), 0.0)
+            log_term = np.where(R2 > 0, 0.5 * X * np.log(np.where(R2 > 0, R2, 1.0)), 0.0)
             atan_term = np.where(Y != 0, Y * np.arctan(X / np.where(Y != 0, Y, 1.0)), 0.0)
         return log_term - X + atan_term
 
-    G = (prim(x, y) - prim(x - Lp, y)) / (2 * np.pi)
+    G = (prim(x, y, r2) - prim(xl, y, r2l)) / (2 * np.pi)
     G[eye] = (length * np.log(length / 2) - length) / (2 * np.pi)
     phi = G @ sigma
     return -np.sum(phi * rhs * length) / (np.pi * a**2)
