@@ -626,15 +626,132 @@ def _table_profile(s, H, V, L, w, mu, LB, regime, lo, hi, tT, te, x, z, T):
             T[i] = math.hypot(H, Vs)
 
 
+# The closed-form profile of one sub-line, point by point: ``seacable.statics.catenary._profile`` (NumPy, for a
+# single line, where no kernel is loaded) in compiled form for the system's line profiles (a few dozen NumPy calls a
+# sub-line were most of the time of a small system's run around its solve). Each point is computed with the same
+# operations in the same order as there (the branch np.where keeps, libm's asinh, hypot and pow as NumPy calls
+# them; error_model "numpy": a division by zero gives inf or NaN, as there), so the two give the same bits:
+# tests/unit/statics/test_system_profile_kernel.py checks every regime.
+@njit(cache=True)
+def _np_max(a, b):
+    """``np.maximum(a, b)`` of two floats (a where a >= b or a is NaN)."""
+    return a if (a >= b or a != a) else b
+
+
+@njit(cache=True)
+def _np_min(a, b):
+    """``np.minimum(a, b)`` of two floats (a where a <= b or a is NaN)."""
+    return a if (a <= b or a != a) else b
+
+
+@njit(cache=True, error_model="numpy")
+def _arc_point(s, H, VA, V, w, EA):
+    """x, z, T at unstretched distance ``s`` from a point of vertical tension ``VA`` (``_suspended_arc``)."""
+    a = V / H
+    b = VA / H
+    Ra = math.hypot(1.0, a)
+    Rb = math.hypot(1.0, b)
+    if a * b > 0:
+        c = (a + b) / (a * Rb + b * Ra)
+        q = (a - b) * c
+        if abs(q) < 1e-3:
+            g = (1.0 - q * q / 6.0 + 0.075 * math.pow(q, 4.0)) * c
+        else:
+            g = math.asinh(q) / q * c
+    elif a - b == 0:
+        g = 1.0
+    else:
+        g = (math.asinh(a) - math.asinh(b)) / (a - b)
+    return s * g + H * s / EA, s * (a + b) / (Ra + Rb) + (VA * s + 0.5 * w * s * s) / EA, math.hypot(H, V)
+
+
+@njit(cache=True, error_model="numpy")
+def _grounded_point(s, H, LB, mu, w, EA):
+    """x and T at ``s`` (<= LB) along a grounded length LB of touchdown tension H (``_grounded``)."""
+    if mu <= 0:
+        return s + H * s / EA, H
+    xB = LB - H / (mu * w)
+    if 0.0 > xB:
+        xB = 0.0
+    u = _np_max(s, xB)
+    stretch = ((H - mu * w * LB) * (u - xB) + 0.5 * mu * w * (u * u - xB * xB)) / EA
+    return s + stretch, _np_max(H - mu * w * (LB - s), 0.0)
+
+
+@njit(cache=True, error_model="numpy")
+def closed_form_profile(s, xF, zF, L, EA, w, mu, H, VF, LB, regime, x, z, T):
+    """x, z, T at arc lengths ``s`` of one solved line (``seacable.statics.catenary._profile``, the same bits)."""
+    n = s.size
+    sg = -1.0 if w < 0 else 1.0
+    w, zF, VF = abs(w), sg * zF, sg * VF
+    if regime == 7:                                   # weightless
+        Th = math.hypot(H, VF)
+        for i in range(n):
+            x[i], z[i], T[i] = xF * s[i] / L, zF * s[i] / L, Th
+    elif regime == 6:                                 # vertical
+        VA = VF - w * L
+        sign = 1.0 if zF > 0 else (-1.0 if zF < 0 else (0.0 if zF == 0 else zF))
+        for i in range(n):
+            V = VA + w * s[i]
+            x[i], z[i], T[i] = xF, sign * s[i] + (VA * s[i] + 0.5 * w * s[i] * s[i]) / EA, abs(V)
+    elif regime == 5:                                 # slack U
+        L1 = L - VF / w
+        d1 = L1 + 0.5 * w * L1 * L1 / EA
+        for i in range(n):
+            si = s[i]
+            T[i] = w * abs(si - L1)
+            if si <= L1:
+                z[i] = -(si + w / EA * (L1 * si - 0.5 * si * si))
+            else:
+                z[i] = -d1 + (si - L1) + 0.5 * w * ((si - L1) * (si - L1)) / EA
+            x[i] = xF
+    elif regime == 1:                                 # suspended
+        VA = VF - w * L
+        for i in range(n):
+            x[i], z[i], T[i] = _arc_point(s[i], H, VA, VA + w * s[i], w, EA)
+    else:                                             # on the seabed for s <= LB, then suspended from the touchdown
+        slack = regime == 4 or H == 0
+        if slack:
+            xTD = LB if LB < xF else xF
+            scale = xTD / LB if LB > 0 else 0.0
+        else:
+            xTD = _grounded_point(_np_min(LB, LB), H, LB, mu, w, EA)[0]
+        for i in range(n):
+            si = s[i]
+            if si <= LB:
+                if slack:
+                    x[i], T[i] = _np_min(si, LB) * scale, 0.0
+                else:
+                    x[i], T[i] = _grounded_point(_np_min(si, LB), H, LB, mu, w, EA)
+                z[i] = 0.0
+            else:
+                u = _np_max(si - LB, 0.0)
+                if regime == 0:
+                    x[i], z[i] = xTD + 0.0, 0.0
+                    T[i] = _grounded_point(_np_min(si, LB), H, LB, mu, w, EA)[1] if not slack else 0.0
+                elif regime == 4:
+                    x[i], z[i], T[i] = xTD + 0.0, u + 0.5 * w * u * u / EA, w * u
+                else:
+                    xa, z[i], T[i] = _arc_point(u, H, 0.0, w * u, w, EA)
+                    x[i] = xTD + xa
+    for i in range(n):
+        z[i] = sg * z[i]
+
+
 def sub_profile(cat, k, n, tables, profile_cls):
     """Profile of sub-line ``k`` at ``n`` points: exact for a tabled sub-line solved here (regimes
-    suspended, grounded, vertical), else ``cat.profile``."""
+    suspended, grounded, vertical), else the closed forms of ``cat.profile`` (:func:`closed_form_profile`)."""
+    L = float(cat.length[k])
+    s = np.linspace(0.0, L, n)
+    x, z, T = np.empty(n), np.empty(n), np.empty(n)
     if tables is not None and tables[1][k] > tables[0][k] and int(cat.regime[k]) in (1, 2, 3, 5, 6) \
             and float(cat.weight_per_length[k]) > 0:
-        s = np.linspace(0.0, float(cat.length[k]), n)
-        x, z, T = np.empty(n), np.empty(n), np.empty(n)
-        _table_profile(s, float(cat.H_fairlead[k]), float(cat.V_fairlead[k]), float(cat.length[k]),
+        _table_profile(s, float(cat.H_fairlead[k]), float(cat.V_fairlead[k]), L,
                        float(cat.weight_per_length[k]), float(cat.seabed_friction[k]), float(cat.grounded_length[k]),
                        int(cat.regime[k]), int(tables[0][k]), int(tables[1][k]), tables[2], tables[3], x, z, T)
-        return profile_cls(s, x, z, T)
-    return cat.profile(n, index=k)
+    else:
+        closed_form_profile(s, float(cat.horizontal_span[k]), float(cat.vertical_span[k]), L,
+                            float(cat.axial_stiffness[k]), float(cat.weight_per_length[k]),
+                            float(cat.seabed_friction[k]), float(cat.H_fairlead[k]), float(cat.V_fairlead[k]),
+                            float(cat.grounded_length[k]), int(cat.regime[k]), x, z, T)
+    return profile_cls(s, x, z, T)

@@ -124,15 +124,21 @@ class SystemEquilibrium(EquilibriumFields):
             a_is = self._anchor_is_a[k]
             pA = self._node_position[asm.sub_a[k] if a_is else asm.sub_b[k]]
             e = self._e[k]
-            pos = pA + np.column_stack([prof.x * e[0], prof.x * e[1], prof.z])
             s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
             order = np.argsort(s, kind="stable")
+            pos = np.empty((3, m))   # rows x, y, z: pA + (x e_x, x e_y, z)
+            pos[0], pos[1], pos[2] = pA[0] + prof.x * e[0], pA[1] + prof.x * e[1], pA[2] + prof.z
             S.append(s[order])
-            X.append(pos[order])
+            X.append(pos[:, order])
             T.append(prof.tension[order])
-        S, X, T = np.concatenate(S), np.concatenate(X), np.concatenate(T)
+        if len(S) > 1:
+            S, X, T = np.concatenate(S), np.concatenate(X, axis=1), np.concatenate(T)
+        else:
+            S, X, T = S[0], X[0], T[0]
         s = np.linspace(0.0, total, n)
-        pos = np.column_stack([np.interp(s, S, X[:, j]) for j in range(3)])
+        pos = np.empty((n, 3))
+        for j in range(3):
+            pos[:, j] = np.interp(s, S, X[j])
         return pos, np.interp(s, S, T)
 
 
