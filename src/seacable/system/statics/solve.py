@@ -158,9 +158,11 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
     checked = start.take(system, environment, external, max_strain) if start is not None and initial is None \
         else None
     while True:
+        stable_at_start = False
         if checked is not None:  # the first round's start, evaluated by check_statics (no cuts yet)
             (prob, st0, ev0), checked = checked, None
             prob.tol, prob.max_iter = tol, max_iter
+            stable_at_start = True  # check_statics found it stable there (else it returns no start)
         else:
             prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
             st0 = prob.initial_state(initial)
@@ -171,7 +173,8 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
             sag_rounds += 1
             continue
         try:
-            _check_stability(prob, st0, ev0)
+            if not stable_at_start:
+                _check_stability(prob, st0, ev0)
             unstable_start = None
         except InputError as err:
             # unstable where it starts, maybe not at equilibrium (lines unloaded at the start): solve, then
