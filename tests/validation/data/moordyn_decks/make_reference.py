@@ -207,8 +207,8 @@ def _run(deck: Path, moorpy: bool = True) -> dict:
         loaded = any(any(v != 0 for v in ln["end_b_force"]) for ln in result["lines"].values())
         out = {**result, "seconds": seconds, "ic_residual": residual,
                "ic_converged": bool(loaded and (residual is None or residual < 0.098))}
-        # the dynamic relaxation (ICgenDynamic 1) prints its own measure instead: the largest relative change of
-        # a fairlead tension over its last convergence checks (dtIC apart), in per cent
+        # the dynamic relaxation (ICgenDynamic 1) prints its own measure instead: the largest relative
+        # change of a fairlead tension over its last convergence checks (dtIC apart), in per cent
         changed = re.findall(r"Remaining error after [\d.eE+-]+ s = ([\d.eE+-]+)% on line", text)
         if changed:
             out["ic_tension_change"] = float(changed[-1]) / 100
