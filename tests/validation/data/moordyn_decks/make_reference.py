@@ -139,7 +139,9 @@ def _child(code: str, deck: Path, env: dict, *args: str) -> tuple[dict | None, s
 
 def run(deck: Path, moorpy: bool = True) -> dict:
     """MoorDyn's state (``error`` if it fails; ``ic_residual``: the last 'Remaining error' MoorDyn prints, in
-    m/s^2, and ``ic_converged``: below 1 % of g and a line carrying tension) and, unless ``moorpy`` is false
+    m/s^2, and ``ic_converged``: below 1 % of g and a line carrying tension; for a deck relaxed dynamically
+    (``ICgenDynamic 1``) ``ic_tension_change``, MoorDyn's measure then: the largest relative change of a
+    fairlead tension over its last convergence checks) and, unless ``moorpy`` is false
     (the tests that check MoorDyn's numbers alone), MoorPy's (``moorpy``).
 
     MoorDyn writes its .out and .log files beside the deck, so both codes read a copy of the deck's folder
@@ -205,6 +207,11 @@ def _run(deck: Path, moorpy: bool = True) -> dict:
         loaded = any(any(v != 0 for v in ln["end_b_force"]) for ln in result["lines"].values())
         out = {**result, "seconds": seconds, "ic_residual": residual,
                "ic_converged": bool(loaded and (residual is None or residual < 0.098))}
+        # the dynamic relaxation (ICgenDynamic 1) prints its own measure instead: the largest relative
+        # change of a fairlead tension over its last convergence checks (dtIC apart), in per cent
+        changed = re.findall(r"Remaining error after [\d.eE+-]+ s = ([\d.eE+-]+)% on line", text)
+        if changed:
+            out["ic_tension_change"] = float(changed[-1]) / 100
     if moorpy:
         mp_result, mp_text, _ = _child(_MOORPY, deck, env)
         out["moorpy"] = mp_result if mp_result is not None else {"error": "MoorPy: " + mp_text}
