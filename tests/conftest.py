@@ -5,11 +5,14 @@ process shares (``seacable._numba_cache``); a process that needs it later loads 
 of a second. From an empty cache (a fresh install) the two workers of a 2-core run used to reach the same
 big kernels within seconds of each other and both compiled them: about 130 CPU-seconds of a cold run went to
 compiling the mooring, towline and system-statics kernels twice. Here, on a run of more than
-``_MIN_TESTS`` tests with two or more pytest-xdist workers, each worker first runs a short example case of
-each of its kernel families (``_FAMILIES``, shared out by their compile time), so that each family is
-compiled once, by one worker, at the same time as the other worker compiles others; a family's later users
-load it from the cache. With a warm cache the runs cost a few seconds a worker. Nothing is asserted here:
-the same examples are run and checked by the tests.
+``_MIN_TESTS`` tests with two or more pytest-xdist workers, each worker first compiles kernel families
+(``_FAMILIES``) by running a short example case of each, so that each family is compiled once, by one worker,
+at the same time as the other worker compiles others; a family's later users load it from the cache. The
+workers take the families one at a time, largest first, each claiming the next one nobody has claimed (a
+file created exclusively in the run's temporary folder), so that they finish together whatever the machine
+(a fixed share by measured compile times left one worker 40 CPU-seconds behind the other). With a warm cache
+the runs cost a few seconds a worker. Nothing is asserted here: the same examples are run and checked by the
+tests.
 
 Bytecode is cached even where ``PYTHONDONTWRITEBYTECODE`` is set (as on the machines this suite was timed on):
 without it each worker compiled and re-wrote the asserts of 220 test modules at every run (8 of its 15
@@ -37,7 +40,7 @@ _MIN_TESTS = 1000
 
 #: Kernel families: (the example cases that compile them, analysis keys overridden to make each run short),
 #: and the CPU-seconds their compilation took from an empty cache on a 2-core machine (2026-11-29), by which
-#: the families are shared out among the workers. The system dynamics call the mooring element loads, so the
+#: the workers take them, largest first. The system dynamics call the mooring element loads, so the
 #: two are one family (compiled by one worker, in that order).
 _FAMILIES = (
     ((("paper004_buoy_relaxation", {"duration": 0.2}), ("spread_mooring_line_break", {"duration": 0.5})), 140.0),
@@ -49,14 +52,13 @@ _FAMILIES = (
 )
 
 
-def _share(n_workers: int) -> list[list[int]]:
-    """The families of each worker: largest first, each to the worker with the least compile time so far."""
-    load, share = [0.0] * n_workers, [[] for _ in range(n_workers)]
-    for k in sorted(range(len(_FAMILIES)), key=lambda k: -_FAMILIES[k][1]):
-        w = load.index(min(load))
-        share[w].append(k)
-        load[w] += _FAMILIES[k][1]
-    return share
+def _claim(folder: Path, k: int) -> bool:
+    """Claim family ``k`` for this worker: True if no worker had (the claim file is created exclusively)."""
+    try:
+        os.close(os.open(folder / f"family-{k}", os.O_CREAT | os.O_EXCL | os.O_WRONLY))
+    except FileExistsError:
+        return False
+    return True
 
 
 def _run_example(name: str, analysis: dict) -> None:
@@ -69,14 +71,17 @@ def _run_example(name: str, analysis: dict) -> None:
 
 
 @pytest.fixture(scope="session", autouse=True)
-def _compile_this_workers_kernels(request):
-    """On a parallel run of the whole suite, compile this worker's share of the kernel families first."""
+def _compile_this_workers_kernels(request, tmp_path_factory):
+    """On a parallel run of the whole suite, compile the kernel families no other worker has taken, first."""
     worker = os.environ.get("PYTEST_XDIST_WORKER", "")
     n_workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
     if n_workers < 2 or not worker.startswith("gw") or len(request.session.items) < _MIN_TESTS:
         return
+    folder = tmp_path_factory.getbasetemp().parent / "kernel-families"  # shared by the run's workers
+    folder.mkdir(exist_ok=True)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")   # the examples' own warnings are the tests' business
-        for k in _share(n_workers)[int(worker[2:]) % n_workers]:
-            for name, analysis in _FAMILIES[k][0]:
-                _run_example(name, analysis)
+        for k in sorted(range(len(_FAMILIES)), key=lambda k: -_FAMILIES[k][1]):
+            if _claim(folder, k):
+                for name, analysis in _FAMILIES[k][0]:
+                    _run_example(name, analysis)
