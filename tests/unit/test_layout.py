@@ -199,3 +199,13 @@ def test_the_check_sees_a_long_circle_and_names_a_path_through_it(tmp_path):
         ("4 modules ['seacable.a', 'seacable.b', 'seacable.d', 'seacable.sub.c']: "
          "seacable.a -> seacable.b -> seacable.sub.c -> seacable.d -> seacable.a"),
         "2 modules ['seacable.p', 'seacable.p.q']: seacable.p -> seacable.p.q -> seacable.p"]
+
+
+#: The longest a source module may be (issue 38): a longer one is split by responsibility.
+MAX_MODULE_LINES = 1000
+
+
+def test_no_source_module_is_over_a_thousand_lines():
+    long = {str(p.relative_to(ROOT.parent)): n for p in sorted(ROOT.rglob("*.py"))
+            if (n := len(p.read_text(encoding="utf-8").splitlines())) > MAX_MODULE_LINES}
+    assert not long, f"modules over {MAX_MODULE_LINES} lines (split them by responsibility): {long}"
