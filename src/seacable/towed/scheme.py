@@ -21,7 +21,7 @@ import math
 
 import numpy as np
 
-from .._jit import njit
+from .._jit import copy_1d, copy_2d, njit
 from .equations import (
     I_OB,
     I_ON,
@@ -80,7 +80,8 @@ def _bc_lower(hn, ho, un, uo, bpar, dt, steady, res, jac):
     if steady:
         for d in range(3):
             res[d] = -fn[d]
-            jac[d, :] = -dfn[d, :]
+            for c in range(NV):
+                jac[d, c] = -dfn[d, c]
         return
     fo = np.zeros(3)
     vgo = np.zeros(3)
@@ -88,7 +89,8 @@ def _bc_lower(hn, ho, un, uo, bpar, dt, steady, res, jac):
     mass = bpar[B_MASS]
     for d in range(3):
         res[d] = mass * (vg[d] - vgo[d]) / dt - 0.5 * (fn[d] + fo[d])
-        jac[d, :] = mass * dvg[d, :] / dt - 0.5 * dfn[d, :]
+        for c in range(NV):
+            jac[d, c] = mass * dvg[d, c] / dt - 0.5 * dfn[d, c]
 
 
 @njit(cache=True)
@@ -173,22 +175,22 @@ def _assemble(hn, ho, co, un, uo, vessel_velocity, dt, par, bpar, steady, w):
     _bc_lower(hn[0], ho[0], un[0], uo[0], bpar, dt, steady, r5, j5)
     for r in range(5):
         rhs[0, r] = -r5[r]
-        diag[0, r, :] = j5[r, :]
+        copy_1d(diag[0, r], j5[r])
     for j in range(n - 1):
         for q in range(5):
             top, bot = ORDER[q], ORDER[q + 5]
             # rows closing the block of the left node j
             rhs[j, 5 + q] = -res[j, top]
-            diag[j, 5 + q, :] = jl[j, top, :]
-            upper[j, 5 + q, :] = jr[j, top, :]
+            copy_1d(diag[j, 5 + q], jl[j, top])
+            copy_1d(upper[j, 5 + q], jr[j, top])
             # rows opening the block of the right node j+1
             rhs[j + 1, q] = -res[j, bot]
-            lower[j + 1, q, :] = jl[j, bot, :]
-            diag[j + 1, q, :] = jr[j, bot, :]
+            copy_1d(lower[j + 1, q], jl[j, bot])
+            copy_1d(diag[j + 1, q], jr[j, bot])
     _bc_top(hn[n - 1], vessel_velocity, r5, j5)
     for r in range(5):
         rhs[n - 1, 5 + r] = -r5[r]
-        diag[n - 1, 5 + r, :] = j5[r, :]
+        copy_1d(diag[n - 1, 5 + r], j5[r])
 
 
 def workspace(n):
@@ -299,20 +301,20 @@ def march(h, h_prev, dt_prev, dt, vessel_pos, vessel_vel, cur, par, bpar, scale,
                 for r in range(NV):
                     hn[j, r] = h[j, r] + dt * (h[j, r] - h_prev[j, r]) / dt_prev
         else:
-            hn[:, :] = h
+            copy_2d(hn, h)
         status, its, err = newton_step(hn, h, co, un, uo, vessel_vel[i + 1], dt, par, bpar, np.bool_(False),
                                        scale, tol, max_iter, w, solver)
         total += its
         if status != 0:
             return status, i, total, its, err
-        h_prev[:, :] = h
-        h[:, :] = hn
+        copy_2d(h_prev, h)
+        copy_2d(h, hn)
         dt_prev = dt
         integrate_positions(h, vessel_pos[i + 1], par, pos)
         velocity_global(h, vel)
-        uo[:, :] = un
+        copy_2d(uo, un)
         if (i + 1) % save_every == 0 and saved < out_h.shape[0]:
-            out_h[saved] = h
-            out_pos[saved] = pos
+            copy_2d(out_h[saved], h)
+            copy_2d(out_pos[saved], pos)
             saved += 1
     return 0, nsteps, total, 0, 0.0

@@ -216,7 +216,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         f = fidx[i]
         body_rotation(q[b], frame[b], R)
         _mv(R, con_arm[j], arm)
-        arms[j] = arm
+        copy_1d(arms[j], arm)
         m0, m1, m2 = -Ru[3 * f], -Ru[3 * f + 1], -Ru[3 * f + 2]
         # the residual of the body: R_q - T^T mu, force mu and moment arm x mu
         Rr[6 * b + 0] -= m0
