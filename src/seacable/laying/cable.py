@@ -166,7 +166,9 @@ def _end_tensions(c: _Cable, props, f_td: float = 0.0) -> tuple[float, float, fl
     hi = c.hi
     d_top = c.pos[hi] - c.pos[hi - 1]
     ln_top = _length(d_top)
-    top = c.T[hi - 1] * c.active[hi - 1] + 0.5 * props[c.seg_type[hi - 1], P_WEIGHT] * c.L[hi - 1] * d_top[-1] / ln_top
+    # (in Python floats: numpy's float64 arithmetic, to the bit)
+    top = (float(c.T[hi - 1]) * int(c.active[hi - 1]) + 0.5 * float(props[c.seg_type[hi - 1], P_WEIGHT])
+           * float(c.L[hi - 1]) * float(d_top[-1]) / ln_top)
     bottom = _bottom_tension(c, props, c.pos, c.lo, f_td)
     angle = math.atan2(d_top[-1], _length(d_top[:-1]))
     return top, bottom, angle

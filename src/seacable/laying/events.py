@@ -329,9 +329,10 @@ class _Lay:
     def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
         c = self.c
         self._now = None                     # (changed())
-        lo, hi = c.lb, c.hi
-        c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
-        c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
+        hi = c.hi
+        pos, vel, _, new_pos, new_vel = c.window()[:5]
+        pos[:] = new_pos
+        vel[:] = new_vel
         if c.lo > c.lb:                      # laid cable that slides: back onto the seabed (the step kept it on
             rows = slice(c.lb + 1, c.lo + 1)  # the tangent plane), and its record follows it
             drag_anchors(c.pos[rows], c.contact[rows], c.normal[rows], c.anchor[rows], self.par.friction_distance)
