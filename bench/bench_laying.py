@@ -33,6 +33,11 @@ Measured (issue 38: the time loop's work between steps done once a step, in fewe
 block solve compiled for its block size; the same results to the bit), on the shared 2-core machine, best of 3,
 wall s (real-time factor) before -> after: 1 m segments at 1 m/s 1.85 s (541 x) -> 1.10 s (911 x); 2 m segments
 at 1 m/s 0.66 s (1512 x) -> 0.42 s (2378 x); 1 m segments at 2 m/s 5.55 s (180 x) -> 3.55 s (282 x).
+Then (issue 38: the events between steps on Python floats, the heading and the step's array views kept, the
+same results to the bit), CPU s of ``seacable.run`` (time.process_time, best of 5, the range of two runs each on
+the shared machine, whose wall times varied twofold), before -> after: 1 m segments at 1 m/s 1.54-1.83 ->
+1.10-1.27; 2 m segments at 1 m/s 0.52-0.66 -> 0.40-0.47; 1 m segments at 2 m/s 4.09-4.86 -> 4.03-4.21 (445 nodes:
+the kernel's time); the whole benchmark process 0.74 of the CPU time before (median of 3 pairs).
 """
 
 from __future__ import annotations

@@ -433,3 +433,52 @@ def test_seabed_under_a_route_is_remembered_bit_for_bit():
         tuple(900.0 + 0.01 * x + yi * 0.02) for yi in y)), math.nan)
     z = Track3D(route, grid).zb(cable[7])
     assert z.shape == () and z == -grid.depth(cable[7])[0] and Track3D(route, grid).highest == -870.0
+
+
+def test_time_loop_shortcuts_of_the_tracks_are_their_array_arithmetic_to_the_bit():
+    """The look-ups the laying time loop makes every step without arrays or numpy scalars give what the array
+    arithmetic gives, bit for bit (signed zeros too): a track's ``slope_along`` is ``gradient @ direction``, its
+    ``zb_under`` the seabed under the nodes (-inf above ``above`` where the map leaves them out), a profile's
+    ``slope`` its table segment's by numpy.searchsorted, and ``LayParameters.type_at`` numpy.searchsorted's."""
+    from seacable.laying.inputs import Bathymetry, Seabed2D
+    from seacable.laying.parameters import LayParameters
+    from seacable.laying.track import Track2D, Track3D
+
+    def bits(a):
+        return np.asarray(a, float).tobytes()
+
+    profile = Seabed2D(np.array([-500.0, 0.0, 200.0, 800.0, 1100.0]), np.array([50.0, 50.0, 200.0, 200.0, 100.0]))
+    flat, plane = Track2D(profile), Track2D(Seabed2D.plane(80.0, -0.1, -1e3, 1e3))
+    xs = [-600.0, -500.0, -1e-9, -0.0, 0.0, 1e-300, 100.0, 200.0, 500.0, 800.0, 1000.0, 1100.0, 1200.0]
+    for track in (flat, plane):
+        sx, sz = track.seabed.x, track.seabed.zb
+        for x in xs:
+            k = int(np.searchsorted(sx, x, side="right")) - 1
+            slope = 0.0 if x <= sx[0] or x >= sx[-1] else float((sz[k + 1] - sz[k]) / (sx[k + 1] - sx[k]))
+            assert bits(track.seabed.slope(x)) == bits(slope)
+            ph = np.array([x])
+            assert bits(track.slope_along(ph, x)) == bits(float(track.gradient(ph) @ track.direction(x)))
+        nodes = np.array([[x, z] for x in xs for z in (-300.0, -60.0, -10.0, np.nan)])
+        zb = track.zb_under(nodes, -49.0)
+        np.testing.assert_array_equal(zb, track.zb(nodes[:, :-1]))
+    rng = np.random.default_rng(5)
+    kp = np.linspace(0.0, 5e3, 51)
+    route = RouteGeometry(np.column_stack([kp, 300.0 * np.sin(kp / 1500.0)]))
+    table = np.linspace(-1e3, 6e3, 200)
+    seabed = seabed_map(route, Bathymetry(distance=tuple(table), depth=tuple(300.0 + 40.0 * np.sin(table / 700.0))),
+                        None, math.nan)
+    track = Track3D(route, seabed)
+    for d in rng.uniform(0.0, 5e3, 20):
+        ph = route.point(d) + rng.normal(0.0, 30.0, 2)
+        assert bits(track.slope_along(ph, d)) == bits(float(track.gradient(ph) @ track.direction(d)))
+    nodes = np.column_stack([route.point(rng.uniform(0.0, 5e3, 40)), rng.uniform(-400.0, 0.0, 40)])
+    above = track.highest + 1.0
+    low = nodes[:, -1] <= above
+    assert 0 < low.sum() < len(nodes)
+    zb = track.zb_under(nodes, above)
+    np.testing.assert_array_equal(zb[low], -seabed.depth(nodes[low, :-1]))
+    assert np.all(zb[~low] == -np.inf)
+    ends = np.array([100.0, 250.0, 1000.0])
+    par = LayParameters(props=np.zeros((3, 8)), type_ends=ends, segment_length=1.0, cable_length=1000.0)
+    for s in (-1.0, 0.0, 99.999, 100.0, 100.001, 250.0, 999.0, 1000.0, 2000.0, np.float64(250.0)):
+        assert par.type_at(s) == min(int(np.searchsorted(ends, s, side="right")), 2)

@@ -39,6 +39,8 @@ class _Cable:
         self.lb = 0
         self.lo = 0
         self.hi = 0
+        self._moves = 0                   # how often the arrays were made anew (_move): see window()
+        self._window = (None, None)       # (key, views) of window()
 
     _NAMES = ("pos", "vel", "s", "point", "rep", "L", "T", "active", "seg_type", "new_pos", "new_vel", "contact",
               "normal", "grip", "anchor")
@@ -56,6 +58,19 @@ class _Cable:
             b[start:start + n] = a[self.lb:self.hi + 1]
             setattr(self, name, b)
         self.lb, self.lo, self.hi = start, start + self.lo - self.lb, start + n - 1
+        self._moves += 1
+
+    def window(self) -> tuple[np.ndarray, ...]:
+        """Views of the rows ``lb .. hi`` that a step reads and writes: ``pos, vel, point, new_pos, new_vel, contact,
+        normal, grip, anchor`` (nodes) and ``L, seg_type, T, active`` (segments), made again only when those rows or
+        the arrays change (a step is solved several times over the same rows)."""
+        key = (self.lb, self.hi, self._moves)
+        if self._window[0] != key:
+            n, m = slice(self.lb, self.hi + 1), slice(self.lb, self.hi)
+            self._window = (key, (self.pos[n], self.vel[n], self.point[n], self.new_pos[n], self.new_vel[n],
+                                  self.contact[n], self.normal[n], self.grip[n], self.anchor[n],
+                                  self.L[m], self.seg_type[m], self.T[m], self.active[m]))
+        return self._window[1]
 
     def make_room(self) -> None:
         """Room for a row above ``hi`` (a birth)."""
@@ -151,7 +166,9 @@ def _end_tensions(c: _Cable, props, f_td: float = 0.0) -> tuple[float, float, fl
     hi = c.hi
     d_top = c.pos[hi] - c.pos[hi - 1]
     ln_top = _length(d_top)
-    top = c.T[hi - 1] * c.active[hi - 1] + 0.5 * props[c.seg_type[hi - 1], P_WEIGHT] * c.L[hi - 1] * d_top[-1] / ln_top
+    # (in Python floats: numpy's float64 arithmetic, to the bit)
+    top = (float(c.T[hi - 1]) * int(c.active[hi - 1]) + 0.5 * float(props[c.seg_type[hi - 1], P_WEIGHT])
+           * float(c.L[hi - 1]) * float(d_top[-1]) / ln_top)
     bottom = _bottom_tension(c, props, c.pos, c.lo, f_td)
     angle = math.atan2(d_top[-1], _length(d_top[:-1]))
     return top, bottom, angle
@@ -164,8 +181,9 @@ def _bottom_tension(c: _Cable, props, pos: np.ndarray, lo: int, f_td: float) -> 
     if not c.active[lo]:
         return 0.0
     d_bot = pos[lo + 1] - pos[lo]
-    return max(c.T[lo] - (0.5 - f_td) * props[c.seg_type[lo], P_WEIGHT] * c.L[lo] * d_bot[-1]
-               / _length(d_bot), 0.0)
+    # (in Python floats: numpy's float64 arithmetic, to the bit)
+    return max(float(c.T[lo]) - (0.5 - f_td) * float(props[c.seg_type[lo], P_WEIGHT]) * float(c.L[lo])
+               * float(d_bot[-1]) / _length(d_bot), 0.0)
 
 
 def seabed_reaction(below: np.ndarray, at: np.ndarray, above: np.ndarray, t_below: np.ndarray, t_above: np.ndarray,

@@ -17,7 +17,9 @@ class Control:
     def __init__(self, ship: ShipMotion, payout, par):
         """``par``: the run's :class:`~seacable.laying.solver.LayParameters`."""
         self.ship, self.payout, self.par = ship, payout, par
-        self.speed = ship.scheduled(0.0)
+        # a constant speed as ShipMotion.scheduled gives it (asked for three times a step)
+        self._constant = None if ship.times is not None else float(ship.speed)
+        self.speed = self.scheduled(0.0)
         self.off_schedule = False
         # the filter starts at the target: the payout starts at the feed-forward and follows the
         # measured bottom tension over the filter time, without a jerk
@@ -28,11 +30,16 @@ class Control:
         #: whether :meth:`payout_speed` uses the touchdown's geometry (and the bottom tension, in bottom-tension mode)
         self.uses_geometry = isinstance(payout, PayoutBottomTension) or (
             isinstance(payout, PayoutSlack) and payout.slope_compensation)
+        self._rate, self._slack = isinstance(payout, PayoutRate), isinstance(payout, PayoutSlack)
+
+    def scheduled(self, t: float) -> float:
+        """The ship's scheduled speed at ``t`` (:meth:`ShipMotion.scheduled`). [m/s]"""
+        return self._constant if self._constant is not None else self.ship.scheduled(t)
 
     def ship_speed(self, t_new: float, dt: float, repeater_in_water: bool) -> float:
         """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration
         (and the schedule regained at the acceleration after the repeater's touchdown)."""
-        sched = self.ship.scheduled(t_new)
+        sched = self.scheduled(t_new)
         slow = repeater_in_water and self.ship.repeater_speed is not None and self.ship.repeater_speed < sched
         if not slow and not self.off_schedule:
             return sched
@@ -43,7 +50,7 @@ class Control:
     def update(self, speed: float, t: float) -> None:
         """Accept the ship speed of a step ending at ``t``."""
         self.speed = speed
-        self.off_schedule = abs(speed - self.ship.scheduled(t)) > 1e-12
+        self.off_schedule = abs(speed - self.scheduled(t)) > 1e-12
 
     def payout_speed(self, t: float, vs: float, geometry, bottom_tension: float, dt: float,
                      commit: bool = True) -> float:
@@ -57,7 +64,7 @@ class Control:
         speed for a trial value without advancing the filter.
         """
         p = self.payout
-        if isinstance(p, PayoutRate):
+        if self._rate:
             return schedule_value(t, p.speed, p.times, p.speeds)
         if not self.uses_geometry:
             return (1.0 + p.slack) * vs
@@ -66,7 +73,7 @@ class Control:
         td_speed = vs * turn / max(1.0 - slope * cot_alpha, 0.1)
         sin_alpha = 1.0 / math.sqrt(1.0 + cot_alpha * cot_alpha)
         arc = math.sqrt(1.0 + slope * slope)
-        if isinstance(p, PayoutSlack):
+        if self._slack:
             return max(td_speed * ((1.0 + p.slack) * arc - slope / sin_alpha), 0.0)
         filtered = self.bottom_filtered + min(dt / p.time_constant, 1.0) * (bottom_tension - self.bottom_filtered)
         if commit:

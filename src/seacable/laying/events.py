@@ -4,6 +4,7 @@ water entry, touchdown and lift-off, the sliding laid cable, the controls; see :
 
 from __future__ import annotations
 
+import bisect
 import math
 import warnings
 
@@ -61,6 +62,8 @@ class _Lay:
         self.dt = 0.0                      # the last time step [s]
         self.warned_sliding = False
         self._now = None                   # the touchdown and the geometry of the state as it is (see changed())
+        self._heading = None               # (x_ship, direction there, its components as floats): see heading()
+        self._contact = par.friction is not None   # whether rows of c.contact may be 1 (see contact_forces())
         self._above = getattr(track, "highest", math.inf) + 1.0   # nodes higher are neither on nor under the seabed
         chute = track.point(self.x_ship)
         depth0 = -float(track.zb(chute[:-1]))
@@ -136,11 +139,23 @@ class _Lay:
         # length: immaterial for the shape, it keeps the matrix of a straight taut cable regular
         self.floor = _STRAIN_FLOOR / (float(np.max(props[:, P_WEIGHT])) * max(ell, seg))
 
+    def heading(self) -> tuple[np.ndarray, list[float]]:
+        """The track's direction where the ship is (``track.direction(x_ship)``), as an array and as floats: looked
+        up once for each position of the ship (several times a step). Not to be changed in place."""
+        h = self._heading
+        if h is None or h[0] is not self.x_ship:
+            e = self.track.direction(self.x_ship)
+            h = self._heading = (self.x_ship, e, e.tolist())
+        return h[1], h[2]
+
     def ship_velocity(self, speed: float) -> np.ndarray:
         """The water entry's velocity at ``speed`` along the track where the ship is. [m/s]"""
-        v = np.empty(self.track.dim)
-        v[:-1] = speed * self.track.direction(self.x_ship)
-        v[-1] = 0.0
+        return np.array(self._ship_velocity(speed))
+
+    def _ship_velocity(self, speed: float) -> list[float]:
+        """:meth:`ship_velocity` as a list: ``speed`` times the direction, and 0 up (the same products). [m/s]"""
+        v = [speed * e for e in self.heading()[1]]
+        v.append(0.0)
         return v
 
     def changed(self) -> None:
@@ -150,7 +165,7 @@ class _Lay:
 
     def slope_at(self, ph) -> float:
         """The seabed's slope along the ship's heading under the horizontal point ``ph``. [-]"""
-        return float(self.track.gradient(ph) @ self.track.direction(self.x_ship))
+        return self.track.slope_along(ph, self.x_ship)
 
     def attach(self, row: int) -> None:
         """Put the repeater whose coordinate is ``s[row]`` (if any) on node ``row``."""
@@ -168,15 +183,14 @@ class _Lay:
         c, ctl = self.c, self.ctl
         vs_new = ctl.ship_speed(t + dt, dt, in_water)
         x_new = self.x_ship + 0.5 * (ctl.speed + vs_new) * dt
-        lo, hi = c.lb, c.hi
+        hi = c.hi
         c.L[hi - 1] = self.s_paid + vc_new * dt - c.s[hi - 1]
         props, cur_d, cur_v, rho, tol, max_iter = kernel_args
-        seabed = (c.contact[lo:hi + 1], c.normal[lo:hi + 1], c.grip[lo:hi + 1], c.anchor[lo:hi + 1],
-                  self.par.friction_distance)
+        pos, vel, point, new_pos, new_vel, contact, normal, grip, anchor, L, seg_type, T, active = c.window()
+        seabed = (contact, normal, grip, anchor, self.par.friction_distance)
         status, it, res = implicit_step(
-            c.pos[lo:hi + 1], c.vel[lo:hi + 1], self.track.point(x_new), c.L[lo:hi], c.seg_type[lo:hi], props,
-            c.point[lo:hi + 1], cur_d, cur_v, rho, dt, c.T[lo:hi], c.active[lo:hi], self.floor, seabed, tol,
-            max_iter, _rounds(hi - lo), c.new_pos[lo:hi + 1], c.new_vel[lo:hi + 1])
+            pos, vel, self.track.point(x_new), L, seg_type, props, point, cur_d, cur_v, rho, dt, T, active,
+            self.floor, seabed, tol, max_iter, _rounds(hi - c.lb), new_pos, new_vel)
         return status, it, res, vs_new, x_new
 
     def implicit_payout(self, t: float, dt: float, in_water: bool, first, vc0: float, kernel_args, saved):
@@ -314,10 +328,11 @@ class _Lay:
 
     def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
         c = self.c
-        self.changed()
-        lo, hi = c.lb, c.hi
-        c.pos[lo:hi + 1] = c.new_pos[lo:hi + 1]
-        c.vel[lo:hi + 1] = c.new_vel[lo:hi + 1]
+        self._now = None                     # (changed())
+        hi = c.hi
+        pos, vel, _, new_pos, new_vel = c.window()[:5]
+        pos[:] = new_pos
+        vel[:] = new_vel
         if c.lo > c.lb:                      # laid cable that slides: back onto the seabed (the step kept it on
             rows = slice(c.lb + 1, c.lo + 1)  # the tangent plane), and its record follows it
             drag_anchors(c.pos[rows], c.contact[rows], c.normal[rows], c.anchor[rows], self.par.friction_distance)
@@ -326,42 +341,44 @@ class _Lay:
             self.laid["p"][-n:] = [row.copy() for row in c.pos[rows]]     # (a copy each: a row of one block would
             self.laid["T"][-n:] = (c.T[c.lb:c.lo] * c.active[c.lb:c.lo]).tolist()   # keep the whole block alive)
         self.x_ship, self.vc, self.dt = x_new, vc_new, dt
-        c.vel[hi] = self.ship_velocity(vs_new)
+        c.vel[hi] = self._ship_velocity(vs_new)
         self.s_paid += vc_new * dt
         c.s[hi] = self.s_paid
 
     def births(self) -> None:
         """Nodes born on the top segment, one segment length apart (repeaters at their own s)."""
-        c, seg = self.c, self.par.segment_length
+        c, par = self.c, self.par
+        seg = par.segment_length
         while True:
-            s_last = c.s[c.hi - 1]
+            s_last = float(c.s[c.hi - 1])      # (Python floats here and below: numpy's arithmetic, to the bit)
             nxt = s_last + seg
             if self.reps:
                 pending = [r.s for r, st in zip(self.reps, self.rep_state) if st == 0 and r.s > s_last + 1e-9]
                 if pending and pending[0] - nxt < 0.5 * seg:
                     nxt = pending[0]
-            if self.s_paid - nxt < 0.5 * seg or nxt > self.par.cable_length:
+            if self.s_paid - nxt < 0.5 * seg or nxt > par.cable_length:
                 return
             self.changed()
             c.make_room()
             hi = c.hi
-            a, b = c.pos[hi - 1].copy(), c.pos[hi].copy()
-            va = c.vel[hi - 1].copy()
-            chord = b - a
-            v_exit = self.ship_velocity(self.ctl.speed) - self.vc * chord / _length(chord)
+            a, va = c.pos[hi - 1].tolist(), c.vel[hi - 1].tolist()
+            chord = c.pos[hi] - c.pos[hi - 1]
+            ln, vc = _length(chord), self.vc
+            chord = chord.tolist()
+            v_exit = [v - vc * d / ln for v, d in zip(self._ship_velocity(self.ctl.speed), chord)]
             f = (nxt - s_last) / (self.s_paid - s_last)
             for arr in (c.pos, c.vel, c.s, c.point, c.rep):
                 arr[hi + 1] = arr[hi]
-            c.pos[hi] = a + f * chord
-            c.vel[hi] = va + f * (v_exit - va)
+            c.pos[hi] = [x + f * d for x, d in zip(a, chord)]
+            c.vel[hi] = [v + f * (e - v) for v, e in zip(va, v_exit)]
             c.s[hi] = nxt
             self.attach(hi)
             c.L[hi - 1] = nxt - s_last
             c.L[hi] = self.s_paid - nxt
             c.T[hi] = c.T[hi - 1]
             c.active[hi - 1] = c.active[hi] = 1
-            c.seg_type[hi - 1] = self.par.type_at(0.5 * (s_last + nxt))
-            c.seg_type[hi] = self.par.type_at(min(nxt + 0.5 * seg, self.par.cable_length))
+            c.seg_type[hi - 1] = par.type_at(0.5 * (s_last + nxt))
+            c.seg_type[hi] = par.type_at(min(nxt + 0.5 * seg, par.cable_length))
             c.hi = hi + 1
 
     def touchdowns(self, t: float) -> None:
@@ -375,24 +392,26 @@ class _Lay:
         seabed further on.
         """
         c = self.c
-        self.changed()
-        free = self.seabed_under(c.pos[c.lo + 1:c.hi])     # under the free nodes, in one look-up
+        self._now = None                     # (changed())
         lo0 = c.lo
+        free = self.seabed_under(c.pos[lo0 + 1:c.hi])     # under the free nodes, in one look-up
         # a seabed rising under the cable holds it up; then the first node on the seabed (landing_row)
-        first = settle(c.pos, c.vel, free, c.lo, c.hi)
-        arrived_slack = not c.active[c.lo]
-        for k in range(c.lo + 1, first + 1):
-            zb = float(free[k - c.lo - 1])
+        first = settle(c.pos, c.vel, free, lo0, c.hi)
+        arrived_slack = not c.active[lo0]
+        laid, props = self.laid, self.par.props
+        for k in range(lo0 + 1, first + 1):
+            zb = float(free[k - lo0 - 1])
             c.pos[k, -1] = max(c.pos[k, -1], zb) if k < first else zb
             c.vel[k] = 0.0
             c.anchor[k] = c.pos[k]
-            self.laid["p"].append(c.pos[k].copy())
-            self.laid["s"].append(float(c.s[k]))
-            self.laid["time"].append(float(t))
+            laid["p"].append(c.pos[k].copy())
+            laid["s"].append(float(c.s[k]))
+            laid["time"].append(float(t))
             # the tension at the segment's lower end (its mid-segment value less the weight of its lower half)
             d = c.pos[k] - c.pos[k - 1]
-            end = c.T[k - 1] - 0.5 * self.par.props[c.seg_type[k - 1], P_WEIGHT] * c.L[k - 1] * d[-1] / _length(d)
-            self.laid["T"].append(max(float(end), 0.0) * float(c.active[k - 1]))
+            end = (float(c.T[k - 1]) - 0.5 * float(props[c.seg_type[k - 1], P_WEIGHT]) * float(c.L[k - 1])
+                   * float(d[-1]) / _length(d))
+            laid["T"].append(max(end, 0.0) * float(c.active[k - 1]))
             if c.rep[k] >= 0:
                 self.rep_state[c.rep[k]] = 2
                 self.rep_landed[c.rep[k]] = c.pos[k]
@@ -468,9 +487,11 @@ class _Lay:
         (clipped at 0: a node pulled off carries no friction); the friction limit is ``mu`` times it.
         """
         c, par = self.c, self.par
-        c.contact[c.lb:c.hi + 1] = 0
+        if self._contact:                # (with the laid cable held, no row is ever in contact: nothing to clear)
+            c.contact[c.lb:c.hi + 1] = 0
         if c.lo == c.lb:
             return
+        self._contact = True
         rows = np.arange(c.lb + 1, c.lo + 1)
         c.contact[rows] = 1
         n = np.concatenate([-self.track.gradients(c.pos[rows, :-1]), np.ones((len(rows), 1))], axis=1)
@@ -491,19 +512,14 @@ class _Lay:
         c = self.c
         rows = pos[c.lo + 1:c.hi - 1]
         zb = self.seabed_under(rows) if zb is None else zb
-        on = np.flatnonzero(rows[:, -1] <= zb + 1e-9)
+        on = (rows[:, -1] <= zb + 1e-9).nonzero()[0]
         return c.lo + 1 + int(on[-1]) if on.size else c.lo
 
     def seabed_under(self, pos: np.ndarray) -> np.ndarray:
-        """Seabed elevation under nodes ``pos`` (rows of ``dim`` coordinates); ``-inf`` under those more than a
-        metre above the highest seabed anywhere (``track.highest``), which are neither on nor under it. [m]"""
-        low = pos[:, -1] <= self._above
-        if low.all():                    # (as a rule: the seabed under every node)
-            return self.track.zb(pos[:, :-1])
-        zb = np.full(len(pos), -np.inf)
-        if low.any():
-            zb[low] = self.track.zb(pos[low, :-1])
-        return zb
+        """Seabed elevation under nodes ``pos`` (rows of ``dim`` coordinates); ``-inf`` (or the elevation) under
+        those more than a metre above the highest seabed anywhere (``track.highest``), which are neither on nor
+        under it. [m]"""
+        return self.track.zb_under(pos, self._above)
 
     def trial_bottom_tension(self) -> float:
         """Bottom tension of the step just solved (``c.new_pos``, ``c.T``), not committed. [N]
@@ -513,16 +529,18 @@ class _Lay:
         """
         c = self.c
         pos = c.new_pos
-        lo = self.landing_row(pos)
+        zb = self.seabed_under(pos[c.lo + 1:c.hi - 1])      # (looked up once for the landing and the touchdown)
+        lo = self.landing_row(pos, zb)
         if lo > c.lo:
             if not c.active[c.lo]:
                 return 0.0          # arrived slack: the new bottom segment starts slack (touchdowns)
             pos = pos[:c.hi + 1].copy()           # (the rows the touchdown reads, not the whole store)
-            pos[lo, -1] = float(self.track.zb(pos[lo, :-1]))
-        f = self.touchdown(pos, lo)[2]
+            pos[lo, -1] = float(zb[lo - c.lo - 1])
+        f = self.touchdown(pos, lo, zb[lo - c.lo:])[2]
         return _bottom_tension(c, self.par.props, pos, lo, f)
 
-    def touchdown(self, pos: np.ndarray | None = None, lo: int | None = None) -> tuple[np.ndarray, float, float]:
+    def touchdown(self, pos: np.ndarray | None = None, lo: int | None = None,
+                  zb: np.ndarray | None = None) -> tuple[np.ndarray, float, float]:
         """The touchdown point between the touchdown node and the lowest free node.
 
         The clearance above the seabed of the three lowest free nodes, as a function of the arc
@@ -537,6 +555,9 @@ class _Lay:
         pos, lo
             Node positions and the touchdown node's row; default the committed state
             (``c.pos``, ``c.lo``).
+        zb
+            The seabed under the rows from ``lo + 1`` up, where known (as :meth:`seabed_under` gives it: looked up
+            again where it is short or not finite).
 
         Returns
         -------
@@ -558,18 +579,20 @@ class _Lay:
         pos = c.pos if pos is None else pos
         lo = c.lo if lo is None else lo
         n_free = min(c.hi - lo - 1, 3)
-        s_lo = float(c.s[lo])
+        # (in Python floats: the same arithmetic as numpy's float64, quicker on scalars) the rows and the material
+        # coordinates of the touchdown node and the lowest free nodes (at least the bottom segment's ends)
+        m = max(n_free, 1) + 1
+        rows, s_rows = pos[lo:lo + m].tolist(), c.s[lo:lo + m].tolist()
+        s_lo, s1 = s_rows[0], s_rows[1]
         f = 0.0
         if n_free >= 2:
-            # (in Python floats: the same arithmetic as numpy's float64, quicker on scalars)
-            rows = slice(lo + 1, lo + 1 + n_free)
-            s1 = float(c.s[lo + 1])
-            ss = [v - s1 for v in c.s[rows].tolist()]
-            known = self._now.get("free") if pos is c.pos and lo == c.lo and self._now is not None else None
-            zb = known[:n_free].tolist() if known is not None else [-math.inf]
-            if not all(map(math.isfinite, zb)):      # (else: as touchdowns() looked them up)
-                zb = track.zb(pos[rows, :-1]).tolist()
-            hh = [z - b for z, b in zip(pos[rows, -1].tolist(), zb)]
+            ss = [v - s1 for v in s_rows[1:]]
+            if zb is None and pos is c.pos and lo == c.lo and self._now is not None:
+                zb = self._now.get("free")           # (as touchdowns() looked them up)
+            zb = zb[:n_free].tolist() if zb is not None else []
+            if len(zb) < n_free or not all(map(math.isfinite, zb)):
+                zb = track.zb(pos[lo + 1:lo + 1 + n_free, :-1]).tolist()
+            hh = [r[-1] - b for r, b in zip(rows[1:], zb)]
             u_lo = s_lo - s1
             b1 = (hh[1] - hh[0]) / ss[1]
             curv = 0.0
@@ -590,8 +613,8 @@ class _Lay:
                     u = max(below) if below else u_lo
             u = min(max(u, u_lo), 0.0)
             f = 1.0 - u / u_lo if u_lo < 0.0 else 0.0
-        p = pos[lo] + f * (pos[lo + 1] - pos[lo])
-        return p, float(s_lo + f * (c.s[lo + 1] - s_lo)), float(f)
+        p = np.array([a + f * (b - a) for a, b in zip(rows[0], rows[1])])
+        return p, s_lo + f * (s1 - s_lo), f
 
     def geometry(self):
         """The seabed's slope along the heading at the touchdown, the depth there, the cot of the chord's
@@ -601,8 +624,11 @@ class _Lay:
         now = self._now.get("geometry")
         if now is None:
             chord = c.pos[c.hi] - p
-            now = self._now["geometry"] = (self.slope_at(p[:-1]), -float(p[-1]),
-                                           _length(chord[:-1]) / max(chord[-1], 1e-9),
+            rise = float(chord[-1])
+            # (the chord's horizontal length: in 2-D the one term of _length's dot product, 0.0 + x * x)
+            h = float(chord[0])
+            run = math.sqrt(0.0 + h * h) if len(chord) == 2 else _length(chord[:-1])
+            now = self._now["geometry"] = (self.slope_at(p[:-1]), -float(p[-1]), run / max(rise, 1e-9),
                                            self.turn_factor(chord))
         return now
 
@@ -623,7 +649,7 @@ class _Lay:
         if self.track.dim == 2:
             return 1.0
         back = _length(chord[:-1])
-        ahead = self.track.direction(self.x_ship)
+        ahead = self.heading()[0]
         behind = self.track.direction(self.x_ship - back)
         turn = math.atan2(behind[0] * ahead[1] - behind[1] * ahead[0], float(behind @ ahead))
         if turn == 0.0:
@@ -634,6 +660,8 @@ class _Lay:
     def repeater_positions(self) -> np.ndarray:
         c = self.c
         xz = np.full((len(self.reps), self.track.dim), np.nan)
+        if not self.reps:
+            return xz
         for r in range(len(self.reps)):
             if self.rep_state[r] == 2:
                 xz[r] = self.rep_landed[r]
@@ -645,7 +673,7 @@ class _Lay:
     def slack(self, t: float, window: float) -> float:
         """Laid length over seabed distance minus one, over the nodes landed in the last ``window`` s."""
         lp, ls, lt = self.laid["p"], self.laid["s"], self.laid["time"]
-        k0 = int(np.searchsorted(lt, max(t - window, 0.0), side="right"))   # landed during the run
+        k0 = bisect.bisect_right(lt, max(t - window, 0.0))   # landed during the run (lt: sorted)
         if len(lt) - k0 < 3:
             return np.nan
         run = self.track.run(lp[k0:])

@@ -5,6 +5,7 @@ x runs along the ship's track (the ship moves towards +x), z is up with 0 at the
 
 from __future__ import annotations
 
+import bisect
 import csv
 import io
 import math
@@ -407,6 +408,8 @@ class Seabed2D:
         self.zb = -np.asarray(depth, float)
         seg = np.hypot(np.diff(self.x), np.diff(self.zb))
         self._arc = np.concatenate([[0.0], np.cumsum(seg)])
+        # the table as Python floats, for slope() at one point a time step (the same values and arithmetic)
+        self._xl, self._zl = self.x.tolist(), self.zb.tolist()
 
     @classmethod
     def plane(cls, depth: float, slope: float, x0: float, x1: float) -> Seabed2D:
@@ -419,10 +422,11 @@ class Seabed2D:
 
     def slope(self, x) -> float:
         """dz/dx at ``x`` (of the table segment holding x; 0 beyond the ends)."""
-        if x <= self.x[0] or x >= self.x[-1]:
+        xs, zs = self._xl, self._zl
+        if x <= xs[0] or x >= xs[-1]:
             return 0.0
-        k = int(np.searchsorted(self.x, x, side="right")) - 1
-        return float((self.zb[k + 1] - self.zb[k]) / (self.x[k + 1] - self.x[k]))
+        k = bisect.bisect_right(xs, x) - 1          # (numpy.searchsorted(..., side="right") - 1 on the sorted x)
+        return (zs[k + 1] - zs[k]) / (xs[k + 1] - xs[k])
 
     def arc(self, x):
         """Distance along the seabed from the table's first point (straight beyond the ends). [m]"""

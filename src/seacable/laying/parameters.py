@@ -5,6 +5,7 @@ the run's time series (:class:`LayRun`).
 
 from __future__ import annotations
 
+import bisect
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -45,8 +46,14 @@ class LayParameters:
     friction: float | None = None      # Coulomb coefficient of the laid cable on the seabed; None: held where laid
     friction_distance: float = 1e-3    # slip at which the friction reaches its limit (a spring below) [m]
 
+    def __post_init__(self):
+        # the type ends as Python floats, for type_at at every node born (bisect_right on them is
+        # numpy.searchsorted(type_ends, s, side="right"), without its conversions)
+        object.__setattr__(self, "_ends", np.asarray(self.type_ends, float).tolist())
+
     def type_at(self, s: float) -> int:
-        return min(int(np.searchsorted(self.type_ends, s, side="right")), len(self.type_ends) - 1)
+        ends = self._ends
+        return min(bisect.bisect_right(ends, s), len(ends) - 1)
 
 
 @dataclass

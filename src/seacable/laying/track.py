@@ -48,6 +48,17 @@ class Track2D:
         """Seabed gradients at horizontal points ``ph`` (shape (n, 1)), shape (n, 1). [-]"""
         return np.array([[self.seabed.slope(float(x))] for x in np.asarray(ph, float)[:, 0]]).reshape(-1, 1)
 
+    def slope_along(self, ph, d: float) -> float:
+        """The seabed's slope under the horizontal point ``ph`` along the ship's direction at ``d``: ``gradient(ph)
+        @ direction(d)``, to the bit (numpy's product of one term is ``0.0 + g * 1.0``: +0.0 for -0.0), without the
+        arrays. [-]"""
+        return 0.0 + self.seabed.slope(float(ph[0]))
+
+    def zb_under(self, pos: np.ndarray, above: float) -> np.ndarray:
+        """The seabed's elevation under nodes ``pos`` (rows of x, z). (A profile is interpolated under every node at
+        once, also under those higher than ``above``, which a map may leave out: see :meth:`Track3D.zb_under`.) [m]"""
+        return self.seabed.z(pos[:, 0])
+
     def run(self, points) -> float:
         """Distance along the seabed from the first to the last of laid points (dim columns). [m]"""
         return float(self.seabed.arc(points[-1][0]) - self.seabed.arc(points[0][0]))
@@ -126,6 +137,21 @@ class Track3D:
         e = self._steps
         z = self.zb(np.concatenate([p + e[0], p - e[0], p + e[1], p - e[1]])).reshape(4, len(p))
         return np.stack([z[0] - z[1], z[2] - z[3]], axis=1) / (2.0 * self.delta)
+
+    def slope_along(self, ph, d: float) -> float:
+        """The seabed's slope under the horizontal point ``ph`` along the ship's direction at ``d``. [-]"""
+        return float(self.gradient(ph) @ self.direction(d))
+
+    def zb_under(self, pos: np.ndarray, above: float) -> np.ndarray:
+        """The seabed's elevation under nodes ``pos`` (rows of x, y, z), ``-inf`` under those higher than ``above``
+        (or NaN): those are neither on nor under the seabed, and are not looked up, as they may be off a grid. [m]"""
+        low = pos[:, -1] <= above
+        if low.all():                    # (as a rule: the seabed under every node)
+            return self.zb(pos[:, :-1])
+        zb = np.full(len(pos), -np.inf)
+        if low.any():
+            zb[low] = self.zb(pos[low, :-1])
+        return zb
 
     def run(self, points) -> float:
         p = np.asarray(points, float)
