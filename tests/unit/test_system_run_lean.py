@@ -34,6 +34,24 @@ def test_a_solve_from_the_checked_start_is_the_solve_from_nothing():
     assert other.prob is not None  # left unused
 
 
+def test_a_solve_from_the_checked_start_checks_its_stability_again_only_at_a_tighter_tolerance(monkeypatch):
+    """check_statics checked the start's stability at its tolerance (1e-8): a solve from that start at the same or
+    a looser one does not check it again (every bound grows with the tolerance); at a tighter one it does."""
+    from seacable.system.statics import solve as solve_module
+
+    calls = []
+    real = solve_module._check_stability
+    monkeypatch.setattr(solve_module, "_check_stability", lambda *a: calls.append(a[0].tol) or real(*a))
+    system, env = ex.oc3_hywind()
+    for tol, checks in ((1e-8, []), (1e-6, []), (1e-10, [1e-10])):
+        start = check_statics(system, env)
+        calls.clear()
+        from_start = solve_equilibrium(system, env, tol=tol, start=start)
+        assert calls == checks, (tol, calls)
+        _same(from_start, solve_equilibrium(system, env, tol=tol))
+        assert calls == checks + [tol]  # from nothing: checked
+
+
 def test_a_case_solves_one_system_per_condition_and_forgets_it_with_the_case():
     case = sc.load_case(EXAMPLES / "spread_mooring.yaml")  # damaged_lines: most_loaded
     setup = system_run.prepare_system_static(case)

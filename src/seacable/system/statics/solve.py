@@ -161,8 +161,10 @@ def solve_equilibrium(system: MooringSystem, environment: Environment, *, extern
         stable_at_start = False
         if checked is not None:  # the first round's start, evaluated by check_statics (no cuts yet)
             (prob, st0, ev0), checked = checked, None
+            # check_statics found the start stable at its tolerance (else it returns no start): so it is at any
+            # larger one (every bound of _check_stability grows with the tolerance)
+            stable_at_start = tol >= prob.tol
             prob.tol, prob.max_iter = tol, max_iter
-            stable_at_start = True  # check_statics found it stable there (else it returns no start)
         else:
             prob = _Problem(system, environment, external, tol, max_iter, _merge_cuts(cuts, surf), max_strain, air)
             st0 = prob.initial_state(initial)
