@@ -655,6 +655,8 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     output = check_output_file(output, "-o", (".html", ".htm"))
     if opts.scatter is not None and not isinstance(opts.scatter, pd.DataFrame):
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
+    if opts.tn_curve is not None:
+        ds_.resolve_tn_curve(opts.tn_curve)  # so is the curve: a misspelt name fails before minutes of fits
     runs = ds_.read_results(source)
     seeds = ds_.seed_table(runs, storm_duration=opts.storm_duration, quantile=opts.quantile)
     ext = ds_.extremes_table(seeds, storm_duration=opts.storm_duration, quantile=opts.quantile)

@@ -5,6 +5,8 @@ Chromium, Debian's package)."""
 from __future__ import annotations
 
 import base64
+import contextlib
+import io
 import math
 import re
 import shutil
@@ -176,9 +178,22 @@ def _report(sweep_dir, tmp_path, *extra) -> Path:
     return out
 
 
-def test_the_csv_tables_are_the_html_tables(sweep_dir, tmp_path, capsys):
-    out = _report(sweep_dir, tmp_path, "--storm-duration", "10800", "--offset-limit", "30")
-    printed = capsys.readouterr().out
+@pytest.fixture(scope="module")
+def storm_report(built_sweep, tmp_path_factory) -> tuple[Path, str]:
+    """The report of ``built_sweep`` for a 3-hour storm with an offset limit (the page and its CSV files in a
+    folder of their own) and what the command printed: built once, read by the CSV test and rendered by the
+    browser test (each built the same page, 3 s a build)."""
+    tmp_path = tmp_path_factory.mktemp("storm_report")
+    scatter = tmp_path / "scatter.csv"
+    scatter.write_text("hs,tp,probability\n4.0,9.0,0.8\n8.0,11.0,0.2\n", encoding="utf-8")
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        out = _report((built_sweep, scatter), tmp_path, "--storm-duration", "10800", "--offset-limit", "30")
+    return out, printed.getvalue()
+
+
+def test_the_csv_tables_are_the_html_tables(storm_report, built_sweep):
+    out, printed = storm_report
     names = ["report.html", "report_extremes.csv", "report_seeds.csv", "report_checks.csv", "report_fatigue.csv",
              "report_fatigue_life.csv"]
     assert sorted(p.name for p in out.parent.iterdir()) == sorted(names)  # nothing else beside the page
@@ -235,7 +250,7 @@ def test_the_csv_tables_are_the_html_tables(sweep_dir, tmp_path, capsys):
         assert _shown(_value(row[4]), csv["life [years]"], 1.0, 3)
 
     # the CSV holds the library's tables, in SI units
-    runs = summary.read_results(sweep_dir[0])
+    runs = summary.read_results(built_sweep)
     want = summary.extremes_table(runs, storm_duration=10800.0)
     assert np.allclose(ext["design_maximum [N]"], want["design_maximum"], rtol=1e-15, atol=0)
 
@@ -303,6 +318,21 @@ def test_bad_options_are_one_line_errors(sweep_dir, tmp_path, capsys, args, mess
     assert not (tmp_path / "r.html").exists()
 
 
+def test_a_bad_tn_curve_is_refused_before_the_results_are_read(sweep_dir, tmp_path, monkeypatch, capsys):
+    """As the scatter diagram: a misspelt T-N curve is an error before the results of a sweep are read and fitted
+    (it came after the seeds' Weibull fits, seconds here and minutes for a sweep of hundreds of runs)."""
+    folder, _ = sweep_dir
+
+    def read_results(*args, **kwargs):
+        raise AssertionError("the results were read")
+
+    monkeypatch.setattr(summary, "read_results", read_results)
+    assert main(["report", str(folder), "-o", str(tmp_path / "r.html"), "--tn-curve", "polyester"]) == 2
+    err = capsys.readouterr().err
+    assert "T-N curve 'polyester' is not one of" in err and "Traceback" not in err and err.count("\n") == 1, err
+    assert not (tmp_path / "r.html").exists()
+
+
 def test_a_missing_source_or_another_analysis_is_refused(synth, tmp_path, capsys):
     assert main(["report", str(tmp_path / "nothing.nc"), "-o", str(tmp_path / "r.html")]) == 2
     assert "does not exist" in capsys.readouterr().err
@@ -340,11 +370,15 @@ def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
 
 @pytest.mark.skipif(shutil.which(CHROMIUM) is None,
                     reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
-def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
+def test_the_report_renders_in_headless_chromium(storm_report, tmp_path):
     from PIL import Image
 
-    # the two reference pages (each a browser of its own profile) open while the report is built: the three
-    # browsers' start-ups overlap the build and each other instead of following it one after another
+    # the page of the CSV test (built once for both; this test built its own for the runs' duration, the same page
+    # but for the 3-hour storm's figures), and two reference pages; the three browsers (each of its own profile)
+    # start together: their start-ups overlap each other instead of following one another
+    out, _ = storm_report
+    png = tmp_path / "report.png"
+    report_browser = _start_chromium(out, png, tmp_path / "profile")
     planted = tmp_path / "planted.html"
     planted.write_text("<html><body><script>console.error('planted'); missing();</script></body></html>")
     planted_browser = _start_chromium(planted, tmp_path / "planted.png", tmp_path / "profile0", (400, 300))
@@ -352,9 +386,6 @@ def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
     empty = tmp_path / "empty.html"
     empty.write_text("<html><body></body></html>")
     blank_browser = _start_chromium(empty, blank, tmp_path / "profile1")
-    out = _report(sweep_dir, tmp_path, "--offset-limit", "30")
-    png = tmp_path / "report.png"
-    report_browser = _start_chromium(out, png, tmp_path / "profile")
     # the console is read: a page with an error in its console is caught
     lines = _console(planted_browser)
     assert any("planted" in line for line in lines) and any("Uncaught" in line for line in lines)
@@ -365,15 +396,17 @@ def test_the_report_renders_in_headless_chromium(sweep_dir, tmp_path):
     _console(blank_browser)
     # non-background pixels: any channel 10 levels off white. A blank page has none; a page of text alone
     # (the same tables unstyled) under 5 %. This page, with its shaded table headers, zebra rows and three
-    # figures in its first 4000 px, is over 8 % (11.6 % when this was written; the same page without its CSS
-    # and figures 4.2 %, with its CSS but no figures 10.2 %: the colours below tell the figures).
+    # figures in its first 4000 px, is over 8 % (11.6 % when this was written, 11.8 % for the 3-hour storm's page;
+    # the same page without its CSS and figures 4.2 %, with its CSS but no figures 10.2 %: the colours below tell
+    # the figures).
     share = float(np.mean(np.any(rgb < 245, axis=-1)))
     assert float(np.mean(np.any(np.asarray(Image.open(blank).convert("RGB"), dtype=int) < 245, axis=-1))) == 0.0
     assert share > 0.08, share
     # the tables and figures are drawn: the table headers' shade (#eef2f6; 146 000 px when this was written),
     # the figures' blue data (#0072b2, the time series and the seeds' maxima: 4 000 px), the passing bars'
     # green (#2e7d32: 60 000 px) and the failing bar's red (#c62828, also the FAIL badge: 11 000 px). The same
-    # page without its figures has 65 px of that green, 950 px of that red and none of that blue.
+    # page without its figures has 65 px of that green, 950 px of that red and none of that blue. The 3-hour
+    # storm's page: 195 000, 4 300, 50 000 and 10 900 px.
     assert _near(rgb, (0xEE, 0xF2, 0xF6), 2) > 20_000
     assert _near(rgb, (0x00, 0x72, 0xB2)) > 1_500
     assert _near(rgb, (0x2E, 0x7D, 0x32)) > 10_000
@@ -496,10 +529,14 @@ def test_no_table_holds_a_non_finite_utilisation_or_margin(sweep_dir, tmp_path):
                      r"&minus;\d+ kN</div>", text)
 
 
-def test_a_report_inside_its_sweep_folder_names_the_folder_in_words(sweep_dir):
+def test_a_report_inside_its_sweep_folder_names_the_folder_in_words(synth, tmp_path):
     """Written into the sweep's own folder (as the demo does), the source relative to the page is '.': the
-    Inputs table says "the report's own folder" rather than a bare dot."""
-    folder, _ = sweep_dir
+    Inputs table says "the report's own folder" rather than a bare dot. (A sweep of two runs of one line: the
+    words are the folder's, whatever the sweep; the 20 records of ``built_sweep`` took 2 s more to report.)"""
+    runs = [({"environment.waves.seed": float(k)},
+             synth.result({"L1": _record(k)}, case=synth.case(hs=4.0, tp=9.0, seed=k, lines=("L1",))))
+            for k in range(2)]
+    folder = synth.sweep(tmp_path / "sw", runs)
     out = folder / "report_here.html"
     assert main(["report", str(folder), "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")

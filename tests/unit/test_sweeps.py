@@ -288,13 +288,16 @@ def test_run_case_records_warnings_and_errors():
 
 def test_interrupted_sweep_resumes_with_the_missing_cases_only(tmp_path, scheduler, capsys):
     """Kill a running sweep (the command and its workers), run it again: only the missing cases run."""
-    # 100 s cases (0.2-0.8 s each): the test polls every 0.05 s, so the kill still lands part way through the 12
-    base = {**BASE, "analysis": {**BASE["analysis"], "segment_length": 2.0, "duration": 100.0}}
+    # 50 s cases (0.1-0.2 s each, one after another on the command's one worker): the test polls every 0.05 s, so
+    # the kill still lands part way through the 12. One worker (its nanny and worker processes killed with the
+    # command as two would be): each worker process imports seacable and loads the laying kernels before its first
+    # case (3 to 4 CPU-seconds); the 100 s cases of two workers took twice as long, here and in the run again
+    base = {**BASE, "analysis": {**BASE["analysis"], "segment_length": 2.0, "duration": 50.0}}
     spec = tmp_path / "sweep.yaml"
     spec.write_text(yaml.safe_dump({"name": "k", "base": base,
                                     "grid": {"analysis.ship.speed": [1.0 + 0.25 * i for i in range(12)]}}))
     out = tmp_path / "out"
-    cmd = [sys.executable, "-m", "seacable", "sweep", str(spec), "-o", str(out), "--workers", "2", "--no-plots"]
+    cmd = [sys.executable, "-m", "seacable", "sweep", str(spec), "-o", str(out), "--workers", "1", "--no-plots"]
     proc = subprocess.Popen(cmd, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     records = out / "cases"
     deadline = time.monotonic() + 300
