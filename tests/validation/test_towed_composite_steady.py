@@ -57,14 +57,20 @@ def _from_the_tow_point():
                                 sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
 
 
-def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system():
+@pytest.fixture(scope="module")
+def uniform_tow():
+    """The composite tow in the uniform 2 m/s flow, common drag form, and its in-line points."""
+    return towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0, body_drag_area=0.5,
+                             tangential_drag="common")
+
+
+def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system(uniform_tow):
     """The composite tow against the mooring model's statics of the same line hung from the tow point in a
     2 m/s current (end B free: the body an attachment), both with the common drag form: the top tension, the
     body's layback and depth and the clump's position converge to the ODE's at second order (errors falling
     3.5-4.5 times as the elements halve, 50 -> 100 -> 200), the 200-element error below 3e-5 of the tension
     and 1 cm of position."""
-    res, points = towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0,
-                                    body_drag_area=0.5, tangential_drag="common")
+    res, points = uniform_tow
     (s_clump, i_clump), = points
     assert s_clump == 200.0
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end, res.x[i_clump], -res.z[i_clump]])
@@ -127,7 +133,7 @@ def in_profile():
                              body_drag_area=0.5, tangential_drag="common")[0]
 
 
-def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_current(in_profile):
+def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_current(in_profile, uniform_tow):
     """The composite tow in a relative flow falling from 2.0 m/s at the surface to 1.0 m/s at 300 m (each drag
     at its depth; the lower end's depth found so that the top meets the tow point) against the mooring model's
     statics in the same current profile: the top tension converges at second order (error ratios 3.5-4.7 as
@@ -135,8 +141,7 @@ def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_curren
     5e-6 of the tension and 5 mm of the body's position at 200 elements. The slower flow at depth lets the
     body hang deeper than in the uniform 2 m/s."""
     res = in_profile
-    uniform, _ = towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0,
-                                   body_drag_area=0.5, tangential_drag="common")
+    uniform, _ = uniform_tow
     assert res.depth_of_lower_end > uniform.depth_of_lower_end + 100.0
     assert abs(res.z[-1]) < 1e-12 and abs(res.x[-1]) < 1e-12  # the top at the tow point
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end])
