@@ -20,7 +20,7 @@ QUICK = ("oc3_hywind_static", "oc3_hywind_pushover", "oc3_hywind_modes", "spread
          "spread_mooring_watch_circle")
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _result(name):
     """The example's result, run once for the module (the summaries only read it)."""
     return sc.run(sc.load_case(EXAMPLES / f"{name}.yaml"))

@@ -48,7 +48,7 @@ def test_damage_of_constant_amplitude_cycles_is_the_t_n_curve():
                                                           (3.4e14, 4.0), (1.7e17, 4.8)]
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _narrow_band_turning_points(seed, cycles=100_000, f0=0.1, delta=0.03, per_cycle=8):
     """A Gaussian process with a flat spectrum over f0 (1 +- delta) (random phases), its turning points read
     from its analytic signal (envelope at each half turn of its phase, alternating sign); its m0 and nu0.
