@@ -2,6 +2,7 @@
 broke the demo once without any test failing). The quick cases run here; each summary is also
 checked for the number it quotes, against the result it was made from."""
 
+import functools
 import sys
 from pathlib import Path
 
@@ -19,16 +20,22 @@ QUICK = ("oc3_hywind_static", "oc3_hywind_pushover", "oc3_hywind_modes", "spread
          "spread_mooring_watch_circle")
 
 
+@functools.cache
+def _result(name):
+    """The example's result, run once for the module (the summaries only read it)."""
+    return sc.run(sc.load_case(EXAMPLES / f"{name}.yaml"))
+
+
 @pytest.mark.parametrize("name", QUICK)
 def test_the_demo_summary_reads_its_result(name):
     assert name in demo.CASES, f"{name} left the demo: update QUICK"
-    ds = sc.run(sc.load_case(EXAMPLES / f"{name}.yaml"))
+    ds = _result(name)
     line = demo.CASES[name](ds)
     assert isinstance(line, str) and line
 
 
 def test_the_spread_mooring_summary_quotes_the_result():
-    ds = sc.run(sc.load_case(EXAMPLES / "spread_mooring_watch_circle.yaml"))
+    ds = _result("spread_mooring_watch_circle")
     largest = float(ds.fairlead_tension.sel(condition="intact").max()) / 1e3
     # the summary rounds the largest intact fairlead tension to a whole kN
     assert f"largest fairlead tension {largest:.0f} kN" in demo.CASES["spread_mooring_watch_circle"](ds)

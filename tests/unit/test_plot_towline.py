@@ -297,6 +297,11 @@ def test_payout_figures_skip_joints_on_the_bitt(payout):
 
 # ----------------------------------------------------------------------------- plot_result and files
 
+def test_towline_dynamic_is_registered():
+    # plot_result (and so 'seacable run' and 'seacable plot') draws a towline result with these figures
+    assert plot_module.FIGURES["towline_dynamic"] is TOWLINE_FIGURES["towline_dynamic"]
+
+
 @pytest.mark.parametrize("fixture, names", [
     ("zigzag", ["tow_tension.png", "tow_tracks.png", "tow_shape.png", "tow_sway.png"]),
     ("straight", ["tow_tension.png", "tow_tracks.png", "tow_shape.png"]),

@@ -57,14 +57,20 @@ def _from_the_tow_point():
                                 sc.PointMass(s=500.0, weight_in_water=3000.0, drag_area=0.5, mass=400.0)])
 
 
-def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system():
+@pytest.fixture(scope="module")
+def uniform_tow():
+    """The composite tow in the uniform 2 m/s flow, common drag form, and its in-line points."""
+    return towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0, body_drag_area=0.5,
+                             tangential_drag="common")
+
+
+def test_a_composite_tow_is_the_finite_element_statics_of_the_same_system(uniform_tow):
     """The composite tow against the mooring model's statics of the same line hung from the tow point in a
     2 m/s current (end B free: the body an attachment), both with the common drag form: the top tension, the
     body's layback and depth and the clump's position converge to the ODE's at second order (errors falling
     3.5-4.5 times as the elements halve, 50 -> 100 -> 200), the 200-element error below 3e-5 of the tension
     and 1 cm of position."""
-    res, points = towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0,
-                                    body_drag_area=0.5, tangential_drag="common")
+    res, points = uniform_tow
     (s_clump, i_clump), = points
     assert s_clump == 200.0
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end, res.x[i_clump], -res.z[i_clump]])
@@ -119,17 +125,23 @@ def test_bad_composite_tows_are_refused_clearly():
 PROFILE = ((0.0, 100.0, 300.0), (2.0, 1.6, 1.0))  # relative flow [m/s] at depths below the tow point [m]
 
 
-def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_current():
+@pytest.fixture(scope="module")
+def in_profile():
+    """The composite tow in the relative flow PROFILE, common drag form (each a whole integration per trial depth
+    of the lower end: computed once for the module)."""
+    return towed_line_steady(_composite(), PROFILE, water_density=RHO, gravity=G, body_weight=3000.0,
+                             body_drag_area=0.5, tangential_drag="common")[0]
+
+
+def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_current(in_profile, uniform_tow):
     """The composite tow in a relative flow falling from 2.0 m/s at the surface to 1.0 m/s at 300 m (each drag
     at its depth; the lower end's depth found so that the top meets the tow point) against the mooring model's
     statics in the same current profile: the top tension converges at second order (error ratios 3.5-4.7 as
     the elements halve; the profile's kinks at 100 and 300 m make the positions' ratios irregular), within
     5e-6 of the tension and 5 mm of the body's position at 200 elements. The slower flow at depth lets the
     body hang deeper than in the uniform 2 m/s."""
-    res, _ = towed_line_steady(_composite(), PROFILE, water_density=RHO, gravity=G, body_weight=3000.0,
-                               body_drag_area=0.5, tangential_drag="common")
-    uniform, _ = towed_line_steady(_composite(), U, water_density=RHO, gravity=G, body_weight=3000.0,
-                                   body_drag_area=0.5, tangential_drag="common")
+    res = in_profile
+    uniform, _ = uniform_tow
     assert res.depth_of_lower_end > uniform.depth_of_lower_end + 100.0
     assert abs(res.z[-1]) < 1e-12 and abs(res.x[-1]) < 1e-12  # the top at the tow point
     want = np.array([res.top_tension, res.layback, res.depth_of_lower_end])
@@ -148,19 +160,21 @@ def test_a_tow_in_a_current_profile_is_the_finite_element_statics_in_that_curren
     assert errors[-1, 0] < 5e-6 * res.top_tension and np.all(errors[-1, 1:] < 0.005)
 
 
-def test_a_towed_steady_case_takes_a_current_profile():
+def test_a_towed_steady_case_takes_a_current_profile(in_profile):
     """The case's current profile (flowing against the tow at 0, 0.4 and 1.0 m/s at 0, 100 and 300 m, vessel
-    at 1 m/s ahead, heading pi: the relative flow 1.0 + ...) runs as the function with the relative profile; a
-    current outrunning the vessel at depth is refused with the speed named."""
+    at 2 m/s ahead, heading 0: the relative flow 2.0, 1.6 and 1.0 m/s, PROFILE) runs as the function with the
+    relative profile (the composite tow of the test above); a current outrunning the vessel at depth is refused
+    with the speed named."""
     base = {"name": "towprof", "line_types": {"heavy": HEAVY.model_dump(exclude_none=True),
                                               "light": LIGHT.model_dump(exclude_none=True)},
-            "line": {"segments": [{"line_type": "heavy", "length": 200.0}, {"line_type": "light", "length": 300.0}]},
-            "analysis": {"type": "towed_steady", "vessel_speed": 2.0, "body": {"weight_in_water": 3000.0}}}
+            "line": {"segments": [{"line_type": "heavy", "length": 200.0}, {"line_type": "light", "length": 300.0}],
+                     "attachments": [{"s": 200.0, "weight_in_water": 2000.0, "drag_area": 0.3}]},
+            "analysis": {"type": "towed_steady", "vessel_speed": 2.0, "tangential_drag": "common",
+                         "body": {"weight_in_water": 3000.0, "drag_area": 0.5}, "n_nodes": 101}}
     env = {"water_density": RHO, "gravity": G,
            "current": {"heading": 0.0, "depths": [0.0, 100.0, 300.0], "speeds": [0.0, 0.4, 1.0]}}
     ds = sc.run(sc.Case(**base, environment=env))
-    line = sc.Line(segments=[sc.Segment(line_type=HEAVY, length=200.0), sc.Segment(line_type=LIGHT, length=300.0)])
-    res, _ = towed_line_steady(line, PROFILE, water_density=RHO, gravity=G, body_weight=3000.0, n_points=7)
+    res = in_profile
     assert float(ds.layback) == pytest.approx(res.layback, rel=1e-9)
     assert float(ds.lower_end_depth) == pytest.approx(res.depth_of_lower_end, rel=1e-9)
     env["current"]["speeds"] = [0.0, 0.4, 2.5]

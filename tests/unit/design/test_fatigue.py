@@ -3,6 +3,7 @@ life over a scatter diagram."""
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -47,9 +48,11 @@ def test_damage_of_constant_amplitude_cycles_is_the_t_n_curve():
                                                           (3.4e14, 4.0), (1.7e17, 4.8)]
 
 
+@functools.cache
 def _narrow_band_turning_points(seed, cycles=100_000, f0=0.1, delta=0.03, per_cycle=8):
     """A Gaussian process with a flat spectrum over f0 (1 +- delta) (random phases), its turning points read
-    from its analytic signal (envelope at each half turn of its phase, alternating sign); its m0 and nu0."""
+    from its analytic signal (envelope at each half turn of its phase, alternating sign); its m0 and nu0.
+    Made once per seed for the module (the T-N curves share it), the turning points read-only."""
     rng = np.random.default_rng(seed)
     fs = per_cycle * f0
     n = cycles * per_cycle
@@ -64,7 +67,9 @@ def _narrow_band_turning_points(seed, cycles=100_000, f0=0.1, delta=0.03, per_cy
     t = np.arange(n) / fs
     k = np.arange(np.ceil(phase[0] / np.pi), np.floor(phase[-1] / np.pi))
     tk = np.interp(k * np.pi, phase, t)
-    return 5e5 + np.interp(tk, t, np.abs(z)) * np.cos(k * np.pi), m0, nu0, n / fs
+    points = 5e5 + np.interp(tk, t, np.abs(z)) * np.cos(k * np.pi)
+    points.flags.writeable = False
+    return points, m0, nu0, n / fs
 
 
 @pytest.mark.parametrize("curve, bound", [("studless_chain", 0.02), ("spiral_strand_rope", 0.05)])

@@ -161,7 +161,7 @@ def test_implausible_sizes_are_refused_before_the_run(where, value, message):
         warnings.simplefilter("ignore", SeacableWarning)
         case = _case(dict(type="straight", speed=1.0), depth=None, **spec)
     with pytest.raises(InputError, match=message):
-        sc.simulate.check(case)
+        sc.check(case)
 
 
 def test_a_time_step_above_the_stability_bound_is_refused_before_the_run():

@@ -98,7 +98,8 @@ def test_cli_runs_a_towline_case(tmp_path):
     f = tmp_path / "tow.yaml"
     f.write_text(yaml.safe_dump(data))
     out = tmp_path / "tow.nc"
-    assert main(["run", str(f), "-o", str(out)]) == 0
+    # the result and the animation; the figures of 'run' are those of plot_result, tested in test_plot_towline
+    assert main(["run", str(f), "-o", str(out), "--no-plots"]) == 0
     ds = sc.read_netcdf(out)
     assert ds.attrs["analysis"] == "towline_dynamic" and ds.sizes["node"] == 12
     assert main(["animate", str(out), "--max-frames", "3"]) == 0
