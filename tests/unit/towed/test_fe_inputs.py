@@ -45,14 +45,14 @@ def test_haul_in_past_the_cable_is_refused_with_the_time_and_length():
     case = _case(winch={"rate": -10.0, "length": 2.0})
     with pytest.raises(InputError, match=r"hauls the cable in to 2 m deployed at t = [0-9.]+ s, past its length: "
                                          r"the lower end is at s = 0 m .* least length the model keeps is 5 m"):
-        sc.simulate.check(case)
+        sc.check(case)
 
 
 def test_haul_in_past_a_depressor_in_line_is_refused():
     case = _two_part(winch={"rate": -10.0, "length": 40.0})
     with pytest.raises(InputError, match=r"hauls the cable in to 40 m deployed .* the top segment starts at "
                                          r"s = 50 m \(a joint, an attachment or the body cannot pass the sheave\)"):
-        sc.simulate.check(case)
+        sc.check(case)
 
 
 def test_a_pay_out_table_not_increasing_in_time_is_refused():
@@ -63,13 +63,13 @@ def test_a_pay_out_table_not_increasing_in_time_is_refused():
 
 def test_a_pay_out_table_that_does_not_start_at_the_lines_length_is_refused():
     with pytest.raises(InputError, match=r"starts at 250 m deployed, but the line is 200 m long"):
-        sc.simulate.check(_case(winch={"times": [0.0, 10.0], "lengths": [250.0, 260.0]}))
+        sc.check(_case(winch={"times": [0.0, 10.0], "lengths": [250.0, 260.0]}))
 
 
 def test_a_rate_that_runs_away_from_its_target_length_is_refused():
     with pytest.raises(InputError, match=r"rate 1 m/s pays out but the target length 150 m is shorter than the "
                                          r"line's 200 m"):
-        sc.simulate.check(_case(winch={"rate": 1.0, "length": 150.0}))
+        sc.check(_case(winch={"rate": 1.0, "length": 150.0}))
 
 
 @pytest.mark.parametrize("where", ["body", "attachment"])
@@ -90,7 +90,7 @@ def test_a_box_run_whose_steady_start_is_below_the_seabed_is_refused():
     spec["environment"]["depth"] = 40.0
     with pytest.raises(InputError, match=r"puts node 0 \(the towed body\) [0-9.]+ m deep, below the seabed at 40 m "
                                          r".* Suggested fix: formulation: finite_element"):
-        sc.simulate.check(sc.Case.parse(spec))
+        sc.check(sc.Case.parse(spec))
 
 
 def test_a_tow_point_below_the_seabed_is_refused(tmp_path):
@@ -99,7 +99,7 @@ def test_a_tow_point_below_the_seabed_is_refused(tmp_path):
     spec = _spec(vessel={"type": "table", "file": str(table), "kind": "position"})
     spec["environment"]["depth"] = 40.0
     with pytest.raises(InputError, match=r"the tow point starts 50 m deep, below the seabed at 40 m"):
-        sc.simulate.check(sc.Case.parse(spec))
+        sc.check(sc.Case.parse(spec))
 
 
 def test_the_box_formulation_refuses_what_it_does_not_model():
@@ -109,7 +109,7 @@ def test_the_box_formulation_refuses_what_it_does_not_model():
         _case(formulation="box", body={"mass": 1.0, "lift_coefficient": -0.5, "reference_area": 1.0})
     two = _two_part(formulation="box")
     with pytest.raises(InputError, match="use formulation: finite_element"):
-        sc.simulate.check(two)
+        sc.check(two)
 
 
 def test_validate_exits_non_zero_with_the_message(tmp_path, capsys):
@@ -182,7 +182,7 @@ def test_a_box_run_whose_steady_start_is_above_the_surface_is_refused():
     with warnings.catch_warnings():   # the steady tow's own warning of a shape above the tow point
         warnings.simplefilter("ignore", sc.SeacableWarning)
         with pytest.raises(InputError, match=r"puts node 0 \(the towed body\) [0-9.]+ m above the sea surface"):
-            sc.simulate.check(sc.Case.parse(spec))
+            sc.check(sc.Case.parse(spec))
 
 
 def test_surface_excursion_is_the_highest_node_but_the_tow_point_and_warns_when_out_of_the_water():

@@ -91,7 +91,7 @@ def test_zero_bending_stiffness_is_refused_before_the_run():
                                             vessel=dict(type="straight", speed=1.0), duration=10.0)))
     with pytest.raises(InputError, match=r"line.segments\[0\].line_type.bending_stiffness .*must be > 0 N m\^2 "
                                          r"for towed_dynamic, got 0.0 N m\^2"):
-        sc.simulate.check(case)
+        sc.check(case)
 
 
 def test_a_run_too_long_is_refused_with_the_estimate(monkeypatch):
