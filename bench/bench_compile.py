@@ -18,6 +18,10 @@ own compiles ``towline.kernel.run_steps`` 20.2, ``towline.kernel.evaluate`` 14.6
 CPU-s (``mooring.kernel.static_solve``, ``newmark_work``, ``towline.kernel.frame_from_axis`` and ``run_steps``,
 ``system.statics.kernel.assemble``, numba's own ``np.linalg.solve``), 4.9 after those copies became loops
 (``seacable._jit.copy_1d``, ``copy_2d``; left: ``system.dynamics.kernel.iterate`` and ``coupled_static``).
+After those became copy loops too (and the towed box scheme's rows), the same 5.4-5.6 CPU-s moved to the next
+functions with one (``system.dynamics.frames.track_frame``, ``towed.fe_kernel.record``): numba compiles the
+message once per pair of shapes, for whichever function asks first, so it goes only when the last one does
+(2026-11-29 23:55, loaded machine: families 134, 48, 40, 24, 29, 36 CPU-s).
 
 Run: ``python bench/bench_compile.py [TOP]`` (about 5 minutes of one core).
 """
