@@ -58,10 +58,18 @@ MoorPy FD / run the same day: OC3 15.4 before, 73 after; OC4 15.4 before, 30 aft
 MoorPy FD / run 42 and 43 (MoorPy 115 and 122 ms that hour). What is left of a run around its solve (OC3, about 1.5 ms): the line profiles
 (``SystemEquilibrium.line_profile``, 0.5 ms: a few dozen small NumPy calls per sub-line), the checks at the start
 (0.2 ms), the result's variables and Dataset (0.35 ms).
+
+Then (2026-11-30, shared machine, MoorPy 2-3 times its quiet figures that hour): the line profiles compiled
+(``closed_form_profile``, the same bits; 2.4x faster), the start's stability checked once, and this bench freeing
+MoorPy's systems before timing ``run`` (kept alive, they made every garbage collection during the runs slower:
+run/solve read 3.7 with them). run / solve, two runs of ``python bench/bench_system.py 15``: OC3 1.93 and 1.97,
+OC4 2.23 and 3.12, buoy 1.43 and 1.39; MoorPy FD / run: OC3 43 and 37, OC4 29 and 14. Alternating solve and run
+400 times in one process (the best of each): OC3 2.01, OC4 1.96.
 """
 
 from __future__ import annotations
 
+import gc
 import sys
 import time
 
@@ -131,6 +139,8 @@ def main(repeats: int = 7):
             r6 = runs[0][1].bodyList[0].r6
             dev = np.abs(eq.body_position[0][:3] - r6[:3]).max() / np.abs(eq.body_position[0][:3]).max()
             assert dev < 1e-6, f"{label}: MoorPy and seacable disagree ({dev:.2g})"
+            del runs   # MoorPy's systems, kept alive, made every garbage collection during the runs below slower
+            gc.collect()
         print(f"{label:26s} {1e3 * t_ours:14.2f} {1e3 * t_fd:15.2f} {t_fd / t_ours:7.1f} "
               f"{1e3 * t_a:14.2f} {t_a / t_ours:7.1f} {eq.iterations:6d}")
         case = as_case(label, system, env, load)
