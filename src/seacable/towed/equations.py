@@ -337,7 +337,8 @@ def integrate_positions(h, top, par, out):
     the trapezoidal rule down from the tow point ``top (3)`` (node n-1)."""
     n = h.shape[0]
     ds, iea = par[P_DS], par[P_IEA]
-    out[n - 1, :] = top
+    for k in range(3):
+        out[n - 1, k] = top[k]
     tp = frame(h[n - 1, I_PH], h[n - 1, I_TH])[0] * (1.0 + h[n - 1, I_T] * iea)
     for j in range(n - 2, -1, -1):
         tj = frame(h[j, I_PH], h[j, I_TH])[0] * (1.0 + h[j, I_T] * iea)

@@ -24,7 +24,7 @@ import math
 
 import numpy as np
 
-from .._jit import njit
+from .._jit import copy_1d, copy_2d, njit
 from ..mooring import kernel as K
 
 __all__ = ["refresh_node", "towed_outputs", "towed_steps"]
@@ -212,10 +212,10 @@ def record(row, t, ia, X, V, A, args, fidx, bw, env, cur_depth, cur_speed, sea, 
     vel[row] = np.nan
     ten[row] = np.nan
     arc[row] = np.nan
-    pos[row, :n] = X[:n]
-    vel[row, :n] = V[:n]
-    ten[row, :ne] = tension[:ne]
-    arc[row, :n] = s_node[:n]
+    copy_2d(pos[row, :n], X[:n])
+    copy_2d(vel[row, :n], V[:n])
+    copy_1d(ten[row, :ne], tension[:ne])
+    copy_1d(arc[row, :n], s_node[:n])
     for r in range(3):
         f = F[n - 1, r]
         for c in range(3):

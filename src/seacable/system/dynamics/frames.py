@@ -154,7 +154,8 @@ def track_frame(q, qd, qdd, fr, gq, limit):
     """After a step: the body's global angles into ``fr`` (``gq`` a work array), then :func:`rechart` past
     ``limit`` [rad]."""
     global_angles(q, fr, gq)
-    fr[F_GLOB:F_GLOB + 3] = gq
+    for k in range(3):
+        fr[F_GLOB + k] = gq[k]
     rechart(q, qd, qdd, fr, limit)
 
 
