@@ -21,7 +21,8 @@ CPU-s (``mooring.kernel.static_solve``, ``newmark_work``, ``towline.kernel.frame
 After those became copy loops too (and the towed box scheme's rows), the same 5.4-5.6 CPU-s moved to the next
 functions with one (``system.dynamics.frames.track_frame``, ``towed.fe_kernel.record``): numba compiles the
 message once per pair of shapes, for whichever function asks first, so it goes only when the last one does
-(2026-11-29 23:55, loaded machine: families 134, 48, 40, 24, 29, 36 CPU-s).
+(2026-11-29 23:55, loaded machine: families 134, 48, 40, 24, 29, 36 CPU-s). With those loops too: 2.9 CPU-s,
+asked by ``towed.scheme._body_force`` and numba's own ``np.linalg.solve`` (2026-11-30 00:44).
 
 Run: ``python bench/bench_compile.py [TOP]`` (about 5 minutes of one core).
 """
