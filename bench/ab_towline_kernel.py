@@ -35,8 +35,9 @@ WORK = Path(tempfile.gettempdir()) / "seacable_ab_towline"
 
 
 def _load(path: str, tag: str):
-    """The kernel file as its own module (its numba cache beside the copy), the barge from the installed package."""
+    """The kernel file as its own module (its numba cache beside the copy), the barge and ``_jit`` from the package."""
     text = Path(path).read_text().replace("from .barge import", "from seacable.towline.barge import")
+    text = text.replace("from .._jit import", "from seacable._jit import")
     name = f"kernel_{tag}_{hashlib.sha1(text.encode()).hexdigest()[:10]}"
     dst = WORK / f"{name}.py"
     if not dst.exists():

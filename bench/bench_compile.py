@@ -22,7 +22,16 @@ After those became copy loops too (and the towed box scheme's rows), the same 5.
 functions with one (``system.dynamics.frames.track_frame``, ``towed.fe_kernel.record``): numba compiles the
 message once per pair of shapes, for whichever function asks first, so it goes only when the last one does
 (2026-11-29 23:55, loaded machine: families 134, 48, 40, 24, 29, 36 CPU-s). With those loops too: 2.9 CPU-s,
-asked by ``towed.scheme._body_force`` and numba's own ``np.linalg.solve`` (2026-11-30 00:44).
+asked by ``towed.scheme._body_force`` and numba's own ``np.linalg.solve`` (2026-11-30 00:44); after
+``_body_force``'s in-place row update (``df[d, :] -= ...``) became a loop, numba's ``np.linalg.solve`` alone.
+
+Tried and not kept (2026-11-30, loaded machine, one example a family from an empty cache, CPU-s): numba's own
+compile dominates, not LLVM's (``NUMBA_OPT=0``: 115 instead of 136 CPU-s for the mooring family, 48 and 48 for
+the towline), and its cost is per function as much as per line: ``mooring._loads.loads_water`` split into three
+kernels (water, elements, nodes) compiled in 21.3 CPU-s instead of 15.9. The towline without numba's IR
+inlining (``inline="always"``, which types each helper once per caller) compiles in 21-24 CPU-s instead of 47,
+but its steps are 5 % slower and its results move by round-off (1e-10 relative after 1000 steps; its fastmath
+lets LLVM reorder across the call), against the issue's same-bits rule: kept inlined.
 
 Run: ``python bench/bench_compile.py [TOP]`` (about 5 minutes of one core).
 """

@@ -126,7 +126,8 @@ def _body_force(h, u, bpar, f, df, vg, dvg):
             for d in range(3):
                 for e in range(3):
                     dd = kd * (speed * (1.0 if d == e else 0.0) + vr[d] * vr[e] / speed)
-                    df[d, :] -= dd * dvg[e, :]
+                    for c in range(df.shape[1]):  # a loop: numba's slice assignment compiles its error message
+                        df[d, c] -= dd * dvg[e, c]
 
 
 @njit(cache=True)
