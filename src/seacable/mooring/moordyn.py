@@ -190,7 +190,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
                    element_syrope=None if net.element_syrope is None else net.element_syrope[els])
-    line = MooringModel(view, model.water)
+    # a network of one line: the view is that line renumbered, which the model's own check covered (the same
+    # nodes, positions and elements)
+    line = MooringModel(view, model.water, checked=len(net.line_nodes) == 1)
     line.sea, line._sea_spec = model.sea, model._sea_spec  # an irregular sea's grid, when the run has one
     return line
 

@@ -14,7 +14,7 @@ import sys
 import time as _time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import InitVar, dataclass, field, replace
 
 import numpy as np
 
@@ -161,17 +161,22 @@ def wave_number_or_zero(water: Water) -> float:
 
 @dataclass
 class MooringModel:
-    """A network in its water, with the kernel's arrays (free nodes ordered for a narrow band)."""
+    """A network in its water, with the kernel's arrays (free nodes ordered for a narrow band).
+
+    ``checked`` (keyword): the network's start was checked already (:func:`seacable.mooring.checks.check_network`,
+    which the model otherwise runs), as when it is a checked network's only line renumbered."""
 
     network: Network
     water: Water
     fidx: np.ndarray = field(init=False)
     nfree: int = field(init=False)
     bw: int = field(init=False)
+    checked: InitVar[bool] = False
 
-    def __post_init__(self):
+    def __post_init__(self, checked=False):
         net = self.network
-        check_network(net, depth=self.water.depth, slope=self.water.slope)
+        if not checked:
+            check_network(net, depth=self.water.depth, slope=self.water.slope)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
