@@ -150,9 +150,10 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     P = np.array(props, float)
 
     def pad(a):
-        return np.r_[a, np.zeros(extra)]
+        return np.concatenate((a, np.zeros(extra)))
 
-    net = Network(position=np.array(pos), kind=np.array(kind, np.int64), channel=np.r_[channel, -np.ones(extra, int)],
+    net = Network(position=np.array(pos), kind=np.array(kind, np.int64),
+                  channel=np.concatenate((channel, -np.ones(extra, int))),
                   point_mass=pad(pm), point_added_mass=pad(pa), point_weight=pad(pw), point_volume=pad(pv),
                   point_drag_area=pad(pd), elements=np.array(elements, np.int64), length=P[:, 0],
                   axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
@@ -402,7 +403,7 @@ def _written(ds, out):
 
 
 def _arc(net: Network):
-    return np.r_[0.0, np.cumsum(net.length)]
+    return np.concatenate(([0.0], np.cumsum(net.length)))
 
 
 def _check_network_only(md: MoorDynInput) -> None:

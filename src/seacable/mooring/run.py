@@ -9,9 +9,9 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..seastate import S_MODE
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
-from ..seastate import S_MODE
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
 from .loop import evaluate_states
@@ -171,7 +171,7 @@ def _end_part(model: MooringModel, ends, end_elements):
     hinges = np.flatnonzero(np.isin(model.hinges, ends).any(axis=1)) if model.hinges.size else np.zeros(0, np.int64)
     sub = np.unique(np.concatenate([ends, net.elements[elements].ravel(), model.hinges[hinges].ravel()]))
     (elem, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo,
-     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, visco) = model.element_args()
+     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, _visco) = model.element_args()
     renum = np.searchsorted(sub, elem[elements]).astype(elem.dtype)
     args = (renum, *(a[elements] for a in (L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat)),
             *(a[sub] for a in (weight, pmass, padd, pvol, pcda, bedc)), buoy[elements], pbuoy[sub],
