@@ -24,13 +24,20 @@ fairlead moves on a 0.2 m circle every 1.25 s, the same ladders and 1 % rule (se
 The overhead around seacable's time loop (issue 38): seacable's ``stepping`` is the compiled time loop alone
 (``seacable.mooring.loop.run_outputs``, timed from outside); the rest of the whole call is the file, the model,
 the statics, the checks and the Dataset. Target of issue 38: at 20 segments, seacable's whole call at most 0.5
-times MoorDyn's stepping (``python bench/bench_mooring.py 5 20``, about a minute). Last measured (7 pairs, a shared
-2-core machine, the two sources in turn, two runs each): 0.68x and 0.68x (66-73 ms whole call, 30-31 ms of it
-stepping, against MoorDyn's 94-102 ms of stepping), against 0.77x and 0.83x before the run path was leaned (the
-catenary start guess evaluating only the samples it reads, the single line's reach summed along its chain, a one-block
-run kept by the sink without a copy, ...); the issue's first figure was 1.09x. The stepping alone is about 0.3x
-MoorDyn's: what is left of the 0.5x is the file, the model, the statics, the exact-catenary check and the Dataset,
-still about as long as the stepping.
+times MoorDyn's stepping (``python bench/bench_mooring.py 5 20``, about a minute). Last measured (7 pairs, a
+shared and heavily loaded 2-core machine, main's source and this one in turn, two runs each): 0.61x and 0.60x
+before, 0.63x and 0.59x after the overhead was cut again; the wall ratio moves with MoorDyn's own stepping (98-148
+ms in those runs, 60 ms on a quieter machine), while the time around seacable's stepping fell from 0.93-1.02 to
+0.75-0.78 times the stepping (in thread CPU time, 30 calls of each source three times in turn: from 1.05 to 0.87
+times it, 21.8 to 19.7 ms around 21 ms of stepping). That cut: a single line's end forces read from the run's
+stored support forces (the same floats) instead of evaluating the 1001 outputs again, the end part of a line's
+network built once per model, a single line's view not checked again, the last block of outputs handed over
+without copies, the sink's variables taken by the Dataset without copies, the finite check without reshaped
+copies, plain floats checked without numpy. Before it: 0.68x and 0.68x (the round before), 0.77x and 0.83x before
+the run path was first leaned; the issue's first figure was 1.09x. The stepping alone is about 0.3x MoorDyn's:
+what is left of the 0.5x is the file (about 1 ms of CPU), the model with its catenary start (3 ms), the statics,
+the exact-catenary check (2 ms: the deck solved as a system) and the outputs and Dataset (6 ms), still nearly as
+long as the stepping.
 
 Run: ``python bench/bench_mooring.py [repeat [segments ...]]`` or ``... snap`` (needs ``pip install
 moordyn``; a bench-only dependency).

@@ -8,6 +8,7 @@ They accept scalars or arrays; for arrays the first offending element is named.
 from __future__ import annotations
 
 import difflib
+import math
 
 import numpy as np
 
@@ -38,6 +39,8 @@ def _fail(name, values, bad, unit, expected, fix):
 
 def finite(name: str, value, unit: str = "", fix: str | None = None):
     """Return ``value`` as float array/scalar; raise if any element is NaN or infinite."""
+    if type(value) is float and math.isfinite(value):  # a plain finite float: itself, as below, without numpy
+        return value
     try:
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -51,6 +54,8 @@ def finite(name: str, value, unit: str = "", fix: str | None = None):
 
 def positive(name: str, value, unit: str = "", fix: str | None = None):
     """Check ``value > 0`` (and finite)."""
+    if type(value) is float and math.isfinite(value) and value > 0:
+        return value
     arr = np.asarray(finite(name, value, unit, fix))
     bad = arr <= 0
     if bad.any():
@@ -60,6 +65,8 @@ def positive(name: str, value, unit: str = "", fix: str | None = None):
 
 def nonnegative(name: str, value, unit: str = "", fix: str | None = None):
     """Check ``value >= 0`` (and finite)."""
+    if type(value) is float and math.isfinite(value) and value >= 0:
+        return value
     arr = np.asarray(finite(name, value, unit, fix))
     bad = arr < 0
     if bad.any():

@@ -97,8 +97,12 @@ class MemorySink:
         def done(v):  # an interrupted run: its outputs so far
             return v if self.filled == self.n_time else v.isel(cut, missing_dims="ignore")
 
-        ds = make_dataset({**{k: done(v) for k, v in self._vars.items()}, **data},
-                          {k: done(v) for k, v in self._coords.items()}, guard=self._guard, **provenance)
+        # the stored variables were made for this result, and the sink lets go of them: taken as they are (owned);
+        # ``data``, the caller's, as shallow copies (what make_dataset makes of variables it does not own)
+        ds = make_dataset({**{k: done(v) for k, v in self._vars.items()},
+                           **{k: v.copy(deep=False) for k, v in data.items()}},
+                          {k: done(v) for k, v in self._coords.items()}, guard=self._guard, owned=True, **provenance)
+        self._vars, self._coords = {}, {}
         ds.attrs.update(attrs or {})
         return ds
 

@@ -4,6 +4,7 @@ tolerance with a floor, the pre-time-loop preparation, and each line's own end t
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -221,3 +222,49 @@ def test_a_single_line_is_checked_along_its_chain_without_a_graph_search(monkeyp
     far[held[-1]] = (600.0, 0.0, -15.0)
     with pytest.raises(InputError, match=r"'line' \(410 m unstretched\) cannot span"):
         check_network(net.replace(position=far), depth=200.0)
+
+
+def test_a_single_line_view_is_not_checked_again_and_refuses_what_its_network_refuses(tmp_path, monkeypatch):
+    """The view of a network's only line (its own network, renumbered: the same nodes, positions and elements)
+    skips the start check its network passed (issue 38: the overhead of a run); a network of several lines
+    checks each view; a model made with ``checked`` skips it, one made without refuses a bad start."""
+    import seacable.mooring.solver as S
+    from seacable.mooring.moordyn import _line_views, moordyn_model
+    from seacable.mooring.solver import MooringModel
+
+    deck = Path(__file__).parents[1] / "validation" / "data" / "three_chains_deck.txt"
+    wd = (Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "MoorDyn" / "tests" / "Mooring"
+          / "WD0200_Chain.txt")
+    single, three = moordyn_model(wd), moordyn_model(deck)
+    calls = []
+    real = S.check_network
+    monkeypatch.setattr(S, "check_network", lambda *a, **k: calls.append(a) or real(*a, **k))
+    _line_views(single)
+    assert not calls
+    _line_views(three)
+    assert len(calls) == 3
+    net = single.network
+    sunk = net.replace(position=net.position - [0.0, 0.0, 50.0])  # the anchor 50 m under the seabed
+    with pytest.raises(InputError, match="under the seabed"):
+        MooringModel(sunk, single.water)
+    assert MooringModel(sunk, single.water, checked=True).nfree == single.nfree
+
+
+def test_plain_float_arguments_are_checked_as_arrays_are():
+    """The checks take a plain float without numpy (issue 38): the same value back, the same refusals."""
+    from seacable import _validate as v
+
+    for check in (v.finite, v.positive, v.nonnegative):
+        for x in (2.5, 1e-300, 1e300):
+            got = check("x", x)
+            assert type(got) is float and got == x
+            assert check("x", np.float64(x)) == got
+    assert math.copysign(1.0, v.nonnegative("x", -0.0)) == -1.0
+    for bad in (math.nan, math.inf, -math.inf):
+        for check in (v.finite, v.positive, v.nonnegative):
+            with pytest.raises(InputError, match="finite number"):
+                check("x", bad)
+    with pytest.raises(InputError, match="> 0"):
+        v.positive("x", 0.0)
+    with pytest.raises(InputError, match=">= 0"):
+        v.nonnegative("x", -1.0)

@@ -242,3 +242,48 @@ def test_end_forces_from_the_line_ends_kinematics_equal_those_from_every_node(tm
     c = _variables(model, part.position, part.tension, part.support, part.time, velocity=0 * part.velocity,
                    acceleration=0 * part.acceleration, kinematic_nodes=part.kinematic_nodes)[0]
     assert np.abs(c["fairlead_tension"].values[:, 1:] - a["fairlead_tension"].values[:, 1:]).max() > 1.0
+
+
+WD0200 = Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "MoorDyn" / "tests" / "Mooring" \
+    / "WD0200_Chain.txt"
+
+
+def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_ones(tmp_path, monkeypatch):
+    """A single line without attachments at its ends: its end forces at the static equilibrium and at each output
+    of a run are the network's stored support forces at its end nodes (and its end elements' tensions for an end
+    on the seabed), read instead of evaluated again, the same floats to the last bit; and a run of such a deck
+    evaluates no state for them (issue 38: the overhead around the time loop)."""
+    import seacable.mooring.run as R
+    from seacable.io.moordyn import load_moordyn_case
+    from seacable.mooring.moordyn import _line_views, moordyn_model, run_moordyn_case
+    from seacable.mooring.solver import line_end_nodes
+
+    path = tmp_path / "wd0200.txt"
+    path.write_text(WD0200.read_text().replace("760       82", "760       20"))
+    model = moordyn_model(path)
+    view = _line_views(model)[0]
+    nodes, els = model.network.line_nodes[0], np.flatnonzero(model.network.element_line == 0)
+    st = static_equilibrium(model)
+    X = st.position[nodes]
+    read = R.line_end_forces(view, X, support=st.support[nodes], tension=st.tension[els])
+    assert np.array_equal(read, R.line_end_forces(view, X))
+    motion = bind(HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0), model.network.channel_positions(st.position),
+                  20.0)
+    run = simulate(model, motion, 20.0, 0.1, 0.1, initial=st.position, kinematics=line_end_nodes(model.network))
+    local = np.full(model.network.n_nodes, -1)
+    local[nodes] = np.arange(nodes.size)
+    mine = np.flatnonzero(local[run.kinematic_nodes] >= 0)
+    args = (view, run.position[:, nodes], run.velocity[:, mine], run.acceleration[:, mine], run.time,
+            local[run.kinematic_nodes[mine]])
+    evaluated = R.line_end_forces(*args)
+    read = R.line_end_forces(*args, support=run.support[:, nodes], tension=run.tension[:, els])
+    assert np.array_equal(read, evaluated)
+    grounded = R.height_above_seabed(model.water, run.position[:, nodes[0]]) <= float(view.env[R.K_BEDRAMP])
+    assert grounded.all()  # the anchor end lies on the seabed: its force comes from the end element's tension
+    # and the whole run reads them: no state evaluated for the end forces
+    calls = []
+    monkeypatch.setattr(R, "evaluate_states", lambda *a: calls.append(a) or (_ for _ in ()).throw(AssertionError))
+    case = load_moordyn_case(path).with_run(duration=2.0, time_step=0.1, output_interval=0.1,
+                                            motion=HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0))
+    ds = run_moordyn_case(case)
+    assert not calls and ds["fairlead_tension"].size == 21

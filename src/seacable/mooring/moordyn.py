@@ -150,9 +150,10 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     P = np.array(props, float)
 
     def pad(a):
-        return np.r_[a, np.zeros(extra)]
+        return np.concatenate((a, np.zeros(extra)))
 
-    net = Network(position=np.array(pos), kind=np.array(kind, np.int64), channel=np.r_[channel, -np.ones(extra, int)],
+    net = Network(position=np.array(pos), kind=np.array(kind, np.int64),
+                  channel=np.concatenate((channel, -np.ones(extra, int))),
                   point_mass=pad(pm), point_added_mass=pad(pa), point_weight=pad(pw), point_volume=pad(pv),
                   point_drag_area=pad(pd), elements=np.array(elements, np.int64), length=P[:, 0],
                   axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
@@ -190,7 +191,9 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
                    element_syrope=None if net.element_syrope is None else net.element_syrope[els])
-    line = MooringModel(view, model.water)
+    # a network of one line: the view is that line renumbered, which the model's own check covered (the same
+    # nodes, positions and elements)
+    line = MooringModel(view, model.water, checked=len(net.line_nodes) == 1)
     line.sea, line._sea_spec = model.sea, model._sea_spec  # an irregular sea's grid, when the run has one
     return line
 
@@ -201,7 +204,15 @@ def _line_views(model: MooringModel) -> list[MooringModel]:
     return [_line_view(model, li) for li in range(len(model.network.line_nodes))]
 
 
-def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None) -> float | str:
+def _reads_network(model: MooringModel, view: MooringModel) -> bool:
+    """Whether a line's view (:func:`_line_view`) evaluates its nodes as ``model`` does, so that the network's
+    support forces and tensions hold the line's own end loads where :func:`seacable.mooring.run.line_end_forces`
+    can read them: the network is that one line, in the same environment."""
+    return len(model.network.line_nodes) == 1 and np.array_equal(view.env, model.env)
+
+
+def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None, *, support=None,
+                   tension=None) -> float | str:
     """Compare the network's static end tensions with the exact elastic catenaries of the same deck; warn if they differ.
 
     The lumped-mass network has the deck's ``NumSegs`` per line. Where a line bends more sharply than its segments
@@ -226,6 +237,10 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None) 
         The network's static node positions (``static_equilibrium(model).position``). [m]
     views : list of MooringModel, optional
         Each line of the network as its own network (:func:`_line_views`), when the caller has them.
+    support, tension : ndarray, optional
+        The network's support forces and element tensions at ``position`` (``static_equilibrium(model)``'s):
+        a line's end tensions are read from them where they are its own (:func:`_reads_network`), the same
+        floats as evaluating the line's ends. [N]
 
     Returns
     -------
@@ -261,7 +276,12 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None) 
         if getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg:
             skipped.append(line.id)
             continue
-        ends = line_end_forces(_line_view(model, k) if views is None else views[k], X[net.line_nodes[k]])
+        view = _line_view(model, k) if views is None else views[k]
+        mine = {}
+        if support is not None and tension is not None and _reads_network(model, view):
+            mine = {"support": np.asarray(support)[net.line_nodes[k]],
+                    "tension": np.asarray(tension)[np.flatnonzero(net.element_line == k)]}
+        ends = line_end_forces(view, X[net.line_nodes[k]], **mine)
         w = (lt.mass_per_length - rho * math.pi * lt.diameter**2 / 4) * g
         floor = max(1e-3 * max(cat), 1e-9)
         # an end the catenary leaves slack (under 1e-3 of the line's wet weight) is not compared: the network's
@@ -350,7 +370,8 @@ def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, accele
             mine = np.flatnonzero(local[kinematic_nodes] >= 0)
             moving = {"velocity": velocity[..., mine, :], "acceleration": acceleration[..., mine, :], "time": time,
                       "kinematic_nodes": local[kinematic_nodes[mine]]}
-        line = network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims, **moving)
+        line = network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
+                                 own_support=_reads_network(model, view), **moving)
         if n_lines == 1:
             data = line
             coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
@@ -382,7 +403,7 @@ def _written(ds, out):
 
 
 def _arc(net: Network):
-    return np.r_[0.0, np.cumsum(net.length)]
+    return np.concatenate(([0.0], np.cumsum(net.length)))
 
 
 def _check_network_only(md: MoorDynInput) -> None:
@@ -475,7 +496,7 @@ def run_moordyn_case(case, *, tolerance: float = 1e-8, progress=None, out=None):
     title = md.title or str(md.path)
     settings = {"source": str(md.path), "elements": int(model.network.n_elements), "format": "MoorDyn"}
     views = _line_views(model)
-    checked = catenary_check(md, model, st.position, views)
+    checked = catenary_check(md, model, st.position, views, support=st.support, tension=st.tension)
     if case.duration is None:
         ds = _dataset(model, st.position, st.tension, st.support, title=title, settings=settings,
                       views=views)

@@ -9,9 +9,11 @@ import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..seastate import S_MODE
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
+from .kernel import E_WH as K_WH
 from .loop import evaluate_states
 from .motion import RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
@@ -157,9 +159,11 @@ def _end_part(model: MooringModel, ends, end_elements):
     holding one of them, and their nodes.
 
     Returns the nodes kept (sorted), :meth:`~seacable.mooring.solver.MooringModel.element_args` and ``fidx``
-    of that part (node and element indices renumbered), and ``ends`` and ``end_elements`` renumbered. The
-    loads of :func:`seacable.mooring.kernel.loads` at ``ends`` are those of the whole network (every term that
-    reaches a node comes from its elements, its hinges and the node itself), for a fraction of the work.
+    of that part (node and element indices renumbered) but the viscoelastic state (``model.visco``, which a
+    run advances: :func:`_evaluate_ends` takes it afresh at each call), ``ends`` and ``end_elements``
+    renumbered, and the elements kept. The loads of :func:`seacable.mooring.kernel.loads` at ``ends`` are those of
+    the whole network (every term that reaches a node comes from its elements, its hinges and the node itself),
+    for a fraction of the work.
     """
     net = model.network
     ends = np.asarray(ends, np.int64)
@@ -167,19 +171,55 @@ def _end_part(model: MooringModel, ends, end_elements):
     hinges = np.flatnonzero(np.isin(model.hinges, ends).any(axis=1)) if model.hinges.size else np.zeros(0, np.int64)
     sub = np.unique(np.concatenate([ends, net.elements[elements].ravel(), model.hinges[hinges].ravel()]))
     (elem, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo,
-     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, visco) = model.element_args()
+     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, _visco) = model.element_args()
     renum = np.searchsorted(sub, elem[elements]).astype(elem.dtype)
     args = (renum, *(a[elements] for a in (L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat)),
             *(a[sub] for a in (weight, pmass, padd, pvol, pcda, bedc)), buoy[elements], pbuoy[sub],
             ts_lo[elements], ts_hi[elements], ts_x, ts_y,
-            np.searchsorted(sub, hinge_nodes[hinges]).astype(hinge_nodes.dtype).reshape(-1, 3), hinge_ei[hinges],
-            visco[elements] if visco.shape[0] else visco)
+            np.searchsorted(sub, hinge_nodes[hinges]).astype(hinge_nodes.dtype).reshape(-1, 3), hinge_ei[hinges])
     args = tuple(np.ascontiguousarray(a) for a in args)
     return (sub, args, np.ascontiguousarray(model.fidx[sub]), np.searchsorted(sub, ends).astype(np.int64),
-            np.searchsorted(elements, np.asarray(end_elements)).astype(np.int64))
+            np.searchsorted(elements, np.asarray(end_elements)).astype(np.int64), elements)
 
 
-def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None):
+def _end_setup(model: MooringModel, part: bool = False):
+    """What :func:`line_end_forces` needs of ``model`` whatever the states: its own model (:func:`_own_model`),
+    the line's end nodes, their neighbours and end elements, and with ``part`` the part of the network that
+    loads the ends (:func:`_end_part`; its nodes also as a mask over the network's). Built at the first call
+    that needs it and kept on ``model`` (a run's outputs call it block after block, with the same model), built
+    again if its network, water, environment or hinges were replaced."""
+    key = (model.network, model.water, model.env, model.hinges)
+    kept = model.__dict__.get("_line_ends")
+    if kept is None or not all(a is b for a, b in zip(kept["key"], key)):
+        own = _own_model(model)
+        net = own.network
+        nodes = net.line_nodes[0]
+        ends = [nodes[0], nodes[-1]]
+        kept = {"key": key, "own": own, "ends": ends, "nbrs": [nodes[1], nodes[-2]],
+                "end_el": [int(np.flatnonzero((net.elements == k).any(axis=1))[0]) for k in ends]}
+        model.__dict__["_line_ends"] = kept
+    if part and "part" not in kept:
+        own = kept["own"]
+        sub, args, fidx, ends_sub, el_sub, elements = _end_part(own, kept["ends"], kept["end_el"])
+        inside = np.zeros(own.network.n_nodes, bool)
+        inside[sub] = True
+        kept["part"] = (sub, inside, args, fidx, ends_sub, el_sub, elements)
+    return kept
+
+
+def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
+    """Whether the support forces and element tensions of ``model`` at its states, as a static solve or a time
+    loop stores them, hold the line's end loads as :func:`line_end_forces` evaluates them, the same floats: the
+    line's own model is the model (no attachment at an end point, :func:`_own_model`), no viscoelastic element
+    (a time loop's outputs keep their slow stretch apart), and for time-domain states no waves (a stored state's
+    time is that of its last step, which may round differently from the output time)."""
+    if own is not model or own.visco.shape[0]:
+        return False
+    return time is None or (own.env[K_WH] <= 0.0 and own.sea[S_MODE] <= 0.0)
+
+
+def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None, *, support=None,
+                    tension=None):
     """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
 
     The pull of the end element plus the loads lumped at the end node from that line's half element
@@ -188,37 +228,26 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
     :func:`point_variables` for the force on a point). ``time`` None: a static state (no waves).
     ``kinematic_nodes``: ``V`` and ``A`` hold those nodes only (the others at rest; exact when they hold the
     line's end nodes and their neighbours, :func:`seacable.mooring.solver.line_end_nodes`).
+
+    ``support`` (..., n, 3) and ``tension`` (..., e), optional: ``model``'s own support forces ``F - M a`` and
+    element tensions at these states, as :func:`seacable.mooring.solver.static_equilibrium` or
+    :func:`seacable.mooring.solver.simulate` store them (evaluated with ``model``'s environment). Where they are
+    the line's own end loads (:func:`_reads_support`) the end forces are read from them, the same floats as the
+    evaluation gives, without evaluating the states again.
     """
-    own = _own_model(model)
+    setup = _end_setup(model)
+    own, ends, nbrs, end_el = setup["own"], setup["ends"], setup["nbrs"], setup["end_el"]
     net = own.network
-    nodes = net.line_nodes[0]
-    ends = [nodes[0], nodes[-1]]
-    nbrs = [nodes[1], nodes[-2]]
-    end_el = [int(np.flatnonzero((net.elements == k).any(axis=1))[0]) for k in ends]
     ramp = float(own.env[K_BEDRAMP])
     X = np.asarray(X, float)
-    knodes = np.arange(X.shape[-2]) if kinematic_nodes is None else np.asarray(kinematic_nodes, np.int64)
-    kshape = X.shape[:-2] + (knodes.size, 3)
-    V = np.zeros(kshape) if V is None else np.asarray(V, float)
-    A = np.zeros(kshape) if A is None else np.asarray(A, float)
     lead = X.shape[:-2]
     nt = int(np.prod(lead, dtype=np.int64))
-    Xs = np.ascontiguousarray(X.reshape((nt,) + X.shape[-2:]))
-    Vs, As = (np.ascontiguousarray(np.broadcast_to(a, kshape).reshape((nt,) + kshape[-2:])) for a in (V, A))
-    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
-                                                                 float).reshape(nt)
-    # every state in one compiled call (what own.evaluate gives state by state), on the part of the network
-    # that loads the two end nodes
-    sub, args, fidx, ends_sub, el_sub = _end_part(own, ends, end_el)
-    Xp = np.ascontiguousarray(Xs[:, sub])
-    kin = np.flatnonzero(np.isin(knodes, sub))
-    Vp, Ap = np.ascontiguousarray(Vs[:, kin]), np.ascontiguousarray(As[:, kin])
-    ksub = np.searchsorted(sub, knodes[kin]).astype(np.int64)
-    out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
-    for i0, i1 in own.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
-        out[i0:i1], tension[i0:i1] = evaluate_states(
-            Xp[i0:i1], Vp[i0:i1], Ap[i0:i1], ksub, ts[i0:i1], time is not None, ends_sub, el_sub, *args, fidx,
-            own.bw, own.env, own.cur_depth, own.cur_speed, own.sea)
+    Xs = X.reshape((nt,) + X.shape[-2:])
+    if support is not None and tension is not None and _reads_support(own, model, time):
+        out = np.asarray(support, float).reshape((nt,) + X.shape[-2:])[:, ends]
+        tension = np.asarray(tension, float).reshape((nt, -1))[:, end_el]
+    else:
+        out, tension = _evaluate_ends(model, own, Xs, lead, V, A, time, kinematic_nodes)
     if model.water.depth is not None:
         # an end resting on the seabed: the seabed carries its half element's weight as far as the line lies
         # there; the line pulls along its end element, its end slope to second order (grounded_end_force)
@@ -233,6 +262,40 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
     return out.reshape(lead + (2, 3))
 
 
+def _evaluate_ends(model: MooringModel, own: MooringModel, Xs, lead, V, A, time, kinematic_nodes):
+    """The support forces at the line's two end nodes and the tensions of its end elements at the states ``Xs``
+    (nt, n, 3) (:func:`line_end_forces`; ``lead`` the states' shape), evaluated: ``(nt, 2, 3)``, ``(nt, 2)``."""
+    sub, inside, args, fidx, ends_sub, el_sub, elements = _end_setup(model, part=True)["part"]
+    if own is not model:  # the sea of the run (an irregular sea's grid), as _own_model gives it
+        own.sea, own._sea_spec = model.sea, model._sea_spec
+    # the viscoelastic state as it is now (a run advances it)
+    visco = np.ascontiguousarray(own.visco[elements]) if own.visco.shape[0] else own.visco
+    nt = Xs.shape[0]
+    knodes = np.arange(Xs.shape[-2]) if kinematic_nodes is None else np.asarray(kinematic_nodes, np.int64)
+    kshape = lead + (knodes.size, 3)
+    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
+                                                                 float).reshape(nt)
+    # every state in one compiled call (what own.evaluate gives state by state), on the part of the network
+    # that loads the two end nodes
+    Xp = np.ascontiguousarray(Xs[:, sub])
+    kin = np.flatnonzero(inside[knodes])
+    if V is None:
+        Vp = np.zeros((nt, kin.size, 3))
+    else:
+        Vp = np.ascontiguousarray(np.broadcast_to(np.asarray(V, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
+    if A is None:
+        Ap = np.zeros((nt, kin.size, 3))
+    else:
+        Ap = np.ascontiguousarray(np.broadcast_to(np.asarray(A, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
+    ksub = np.searchsorted(sub, knodes[kin]).astype(np.int64)
+    out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
+    for i0, i1 in own.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
+        out[i0:i1], tension[i0:i1] = evaluate_states(
+            Xp[i0:i1], Vp[i0:i1], Ap[i0:i1], ksub, ts[i0:i1], time is not None, ends_sub, el_sub, *args, visco, fidx,
+            own.bw, own.env, own.cur_depth, own.cur_speed, own.sea)
+    return out, tension
+
+
 def _fairlead_end(net: Network) -> tuple[int, int]:
     """(anchor end, fairlead end) of a single line, 0 = end A, 1 = end B: the fairlead is the moved end,
     end B unless only end A is moved."""
@@ -242,20 +305,23 @@ def _fairlead_end(net: Network) -> tuple[int, int]:
 
 
 def network_variables(model: MooringModel, X, tension, support, dims=("node",), *, velocity=None,
-                      acceleration=None, time=None, kinematic_nodes=None):
+                      acceleration=None, time=None, kinematic_nodes=None, own_support=False):
     """Shape, tensions and end forces of one line at one or more states.
 
     ``fairlead_tension`` and ``anchor_tension`` are the line's own end tensions
     (:func:`line_end_forces`); ``support`` (the force on each node's support, every line and
-    attachment there) is not used for them. Give ``velocity``, ``acceleration`` and ``time`` of a
-    time-domain run so that the end forces include the half element's water loads and inertia
-    (``kinematic_nodes``: the nodes they hold, None for all).
+    attachment there) is not used for them, unless ``own_support``: ``support`` and ``tension`` are then
+    ``model``'s own at these states (a static solve's or a time loop's, evaluated with ``model``'s
+    environment), read where they hold the line's end loads (:func:`line_end_forces`). Give ``velocity``,
+    ``acceleration`` and ``time`` of a time-domain run so that the end forces include the half element's
+    water loads and inertia (``kinematic_nodes``: the nodes they hold, None for all).
     """
     from ..results import var
 
     net = model.network
     lead = tuple(dims[:-1])
-    ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes)
+    ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes,
+                           **({"support": support, "tension": tension} if own_support else {}))
     anchor, fair = _fairlead_end(net)
     data = {
         "x": var(dims, X[..., 0], "m", "x position"),

@@ -14,7 +14,7 @@ import sys
 import time as _time
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import InitVar, dataclass, field, replace
 
 import numpy as np
 
@@ -161,17 +161,22 @@ def wave_number_or_zero(water: Water) -> float:
 
 @dataclass
 class MooringModel:
-    """A network in its water, with the kernel's arrays (free nodes ordered for a narrow band)."""
+    """A network in its water, with the kernel's arrays (free nodes ordered for a narrow band).
+
+    ``checked`` (keyword): the network's start was checked already (:func:`seacable.mooring.checks.check_network`,
+    which the model otherwise runs), as when it is a checked network's only line renumbered."""
 
     network: Network
     water: Water
     fidx: np.ndarray = field(init=False)
     nfree: int = field(init=False)
     bw: int = field(init=False)
+    checked: InitVar[bool] = False
 
-    def __post_init__(self):
+    def __post_init__(self, checked):
         net = self.network
-        check_network(net, depth=self.water.depth, slope=self.water.slope)
+        if not checked:
+            check_network(net, depth=self.water.depth, slope=self.water.slope)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
@@ -766,23 +771,26 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
         LP.record_output(k - base, k * output_interval, X, V, A, knodes, *args, model.fidx, model.bw, env_rec,
                          model.cur_depth, model.cur_speed, model.sea, F, M, tension, *store, False)
 
-    def block(stop):
-        """The stored outputs ``base`` to ``stop - 1`` as a run (copies: the rows are used again)."""
+    def block(stop, last=False):
+        """The stored outputs ``base`` to ``stop - 1`` as a run (copies: the rows are used again; the ``last``
+        block's, not used again, as they are)."""
         m = stop - base
-        return MooringRun(time=times[:m].copy(), position=pos[:m].copy(), velocity=vel[:m].copy(),
-                          tension=ten[:m].copy(), support=sup[:m].copy(), time_step=h, iterations=int(count[2]),
+        take = (lambda a: a[:m]) if last else (lambda a: a[:m].copy())
+        return MooringRun(time=take(times), position=take(pos), velocity=take(vel), tension=take(ten),
+                          support=take(sup), time_step=h, iterations=int(count[2]),
                           steps=int(count[1]), interrupted=interrupted, wall_time=_time.perf_counter() - start,
-                          acceleration=acc[:m].copy(),
+                          acceleration=take(acc),
                           spectral_radius=float(spectral_radius), recommended_time_step=dt_rec,
                           kinematic_nodes=None if kinematics is None else knodes)
 
-    def send(stop):
-        """Hand the outputs ``base`` to ``stop - 1`` to ``on_outputs``; their rows are free again. Ctrl-C and
-        SIGTERM wait for the end (then raise): a block goes out whole, once."""
+    def send(stop, last=False):
+        """Hand the outputs ``base`` to ``stop - 1`` to ``on_outputs``; their rows are free again (``last``: the
+        run's last block, its rows handed over as they are). Ctrl-C and SIGTERM wait for the end (then raise): a
+        block goes out whole, once."""
         nonlocal base
         if on_outputs is not None and stop > base:
             with deferred_interrupts():
-                on_outputs(block(stop))
+                on_outputs(block(stop, last))
                 base = stop
 
     record(0)
@@ -837,7 +845,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     # an interrupt in the progress callback keeps the outputs reported (as when it ran after each output)
     nt = reported + 1 if interrupted and reporting else int(count[0]) + 1
     if on_outputs is not None:
-        send(max(nt, base))
+        send(max(nt, base), last=True)
         return replace(block(base), wall_time=wall)
     return MooringRun(time=times[:nt].copy(), position=pos[:nt], velocity=vel[:nt], tension=ten[:nt],
                       support=sup[:nt], time_step=h, iterations=int(count[2]), steps=int(count[1]),

@@ -110,7 +110,7 @@ class LineEquilibrium:
                            "give at least 2 points per segment"))
         s = np.asarray(s, float)
         prof = _profile(self._line, self.H_fairlead, self._V_A, n, self.touchdown_x, at=s)
-        keep = np.r_[True, np.diff(prof.s) > 0]  # a point load repeats its arc length
+        keep = np.concatenate(([True], np.diff(prof.s) > 0))  # a point load repeats its arc length
         return np.interp(s, prof.s[keep], prof.x[keep]), np.interp(s, prof.s[keep], prof.z[keep])
 
 
@@ -412,10 +412,11 @@ def _needed(grids, at, s_td) -> np.ndarray:
     distinct ``s`` reads (the two around each point, the first and the last), with each piece's last sample and
     the touchdown ``s_td`` (None: none), which the samples after them start from."""
     S = np.concatenate(grids)
-    distinct = np.flatnonzero(np.r_[True, np.diff(S) > 0])  # the first of samples sharing an s (a point load)
+    # the first of samples sharing an s (a point load)
+    distinct = np.flatnonzero(np.concatenate(([True], np.diff(S) > 0)))
     j = np.searchsorted(S[distinct], np.asarray(at, float).ravel(), side="right") - 1
     need = np.zeros(S.size, bool)
-    need[distinct[np.clip(np.r_[j, j + 1, 0, distinct.size - 1], 0, distinct.size - 1)]] = True
+    need[distinct[np.clip(np.concatenate((j, j + 1, [0, distinct.size - 1])), 0, distinct.size - 1)]] = True
     need[np.cumsum([ts.size for ts in grids]) - 1] = True
     if s_td is not None:
         need[S == s_td] = True
