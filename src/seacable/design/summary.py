@@ -17,6 +17,8 @@ folders ``seacable sweep`` writes), never a model's internals:
   status "pass", "FAIL" or "not checked: <why>".
 - :func:`fatigue_table` and :func:`fatigue_life_table`: Miner's damage of each load case from the rainflow
   count of the fairlead tension (:mod:`seacable.design.fatigue`), and the life over a scatter diagram.
+- :func:`design_tables`: the runs and the tables of extremes, checks and fatigue in one pass over the results
+  (each result file opened once: the report's reading).
 
 Tensions are in N, durations in s, offsets in m, lives in years.
 """
@@ -30,7 +32,7 @@ import functools
 import io
 import json
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -45,8 +47,8 @@ from ..results import check_time
 from . import fatigue, statistics
 
 __all__ = ["DYNAMIC_ANALYSES", "HEADING_PATH", "HS_PATH", "SEED_PATH", "TP_PATH", "LineInfo", "Run",
-           "checks_table", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info", "line_names",
-           "line_series", "read_results", "read_scatter", "resolve_tn_curve", "seed_table"]
+           "checks_table", "design_tables", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info",
+           "line_names", "line_series", "read_results", "read_scatter", "resolve_tn_curve", "seed_table"]
 
 #: The analyses whose results the design tables read.
 DYNAMIC_ANALYSES = ("mooring_dynamic", "system_dynamic")
@@ -169,7 +171,7 @@ def _label(parameters: dict, units: dict) -> str:
     return ", ".join(parts)
 
 
-def read_results(source) -> list[Run]:
+def read_results(source, visit: Callable[[Run, xr.Dataset], None] | None = None) -> list[Run]:
     """The runs of a result file, a sweep folder, a Dataset, or load cases of Datasets.
 
     Parameters
@@ -179,6 +181,10 @@ def read_results(source) -> list[Run]:
         (``summary.nc`` and ``cases/``: cases that differ only in ``environment.waves.seed`` are the seeds of
         one load case; failed cases are left out); a result Dataset; or a mapping load case -> Datasets (its
         seeds).
+
+    visit
+        Called as ``visit(run, ds)`` with each run, in order, and its result while it is open: what reads
+        the results once (:func:`design_tables`) does its work there.
 
     Returns
     -------
@@ -192,42 +198,47 @@ def read_results(source) -> list[Run]:
         not of a time-domain mooring analysis.
     """
     if isinstance(source, xr.Dataset):
-        return [_dataset_run(source, None)]
+        return [_dataset_run(source, None, visit)]
     if isinstance(source, Mapping):
         runs = []
         for label, datasets in source.items():
             if isinstance(datasets, xr.Dataset):
                 datasets = [datasets]
-            runs.extend(_dataset_run(ds, str(label)) for ds in datasets)
+            runs.extend(_dataset_run(ds, str(label), visit) for ds in datasets)
         if not runs:
             raise InputError("no result given: the mapping of load cases holds no Dataset. Suggested fix: give "
                              "{'load case': [ds_seed1, ds_seed2, ...]}.")
         return runs
     path = Path(source)
     if path.is_dir():
-        return _sweep_runs(path)
+        return _sweep_runs(path, visit)
     if not path.exists():
         raise InputError(f"'{path}' does not exist. Suggested fix: give a result file (.nc) written by 'seacable "
                          "run' or a folder written by 'seacable sweep'.")
-    run = Run("", "", None, {}, path)
-    with run.open() as ds:
+    with Run("", "", None, {}, path).open() as ds:
         _check_dynamic(ds, f"result file '{path}'")
         data = case_data(ds)
         name = str(ds.attrs.get("case_name") or ds.attrs.get("title") or path.stem)
         sea = _sea_state(data)
-    seed = sea.get(SEED_PATH)
-    return [Run(name, name, None if seed is None else int(seed), sea, path)]
+        seed = sea.get(SEED_PATH)
+        run = Run(name, name, None if seed is None else int(seed), sea, path)
+        if visit is not None:
+            visit(run, ds)
+    return [run]
 
 
-def _dataset_run(ds: xr.Dataset, label: str | None) -> Run:
+def _dataset_run(ds: xr.Dataset, label: str | None, visit=None) -> Run:
     _check_dynamic(ds, f"result '{ds.attrs.get('title', '?')}'")
     sea = _sea_state(case_data(ds))
     name = str(ds.attrs.get("case_name") or ds.attrs.get("title") or "result")
     seed = sea.get(SEED_PATH)
-    return Run(name, label or name, None if seed is None else int(seed), sea, ds)
+    run = Run(name, label or name, None if seed is None else int(seed), sea, ds)
+    if visit is not None:
+        visit(run, ds)
+    return run
 
 
-def _sweep_runs(folder: Path) -> list[Run]:
+def _sweep_runs(folder: Path, visit=None) -> list[Run]:
     summary_path = folder / "summary.nc"
     if not summary_path.exists():
         raise InputError(f"'{folder}' is a folder without summary.nc: not a sweep's output. Suggested fix: give a "
@@ -260,14 +271,14 @@ def _sweep_runs(folder: Path) -> list[Run]:
             raise InputError(f"sweep '{folder}': case {index} ({name}) is done but its result is not in "
                              f"{folder / 'cases'}. Suggested fix: run the sweep again (it runs the missing cases).")
         values = {p: _plain(summary[p].values[k]) for p in params}
-        run = Run(name, "", None, {}, path)
-        with run.open() as ds:
-            _check_dynamic(ds, f"result file '{path}'")
-            sea = _sea_state(case_data(ds))
-        parameters = {**sea, **values}
         label = _label({p: values[p] for p in others}, units) or str(summary.attrs.get("title") or folder.name)
-        seed = parameters.get(SEED_PATH)
-        runs.append(Run(name, label, None if seed is None else int(seed), parameters, path))
+        with Run(name, "", None, {}, path).open() as ds:
+            _check_dynamic(ds, f"result file '{path}'")
+            parameters = {**_sea_state(case_data(ds)), **values}
+            seed = parameters.get(SEED_PATH)
+            runs.append(Run(name, label, None if seed is None else int(seed), parameters, path))
+            if visit is not None:
+                visit(runs[-1], ds)
     if not runs:
         raise InputError(f"sweep '{folder}' holds no completed case ({summary.attrs.get('failed', 0)} failed, "
                          f"{summary.attrs.get('not_run', 0)} not run). Suggested fix: run the sweep to its end, "
@@ -436,19 +447,30 @@ def seed_table(runs: Sequence[Run], *, storm_duration: float | None = None, quan
     rows = []
     for run in runs:
         with run.open() as ds:
-            duration = _duration(ds)
-            for line in line_names(ds):
-                for end in _ENDS:
-                    record = line_series(ds, f"{end}_tension", line)
-                    mean, std = statistics.mean_and_dynamic(record)
-                    try:
-                        w = statistics.weibull_maximum(record, duration, storm_duration, quantile)
-                        mpm, q, note = w.most_probable, w.quantile, ""
-                    except InputError as err:
-                        mpm, q, note = math.nan, math.nan, _note(err)
-                    rows.append({"load_case": run.load_case, "case": run.name, "seed": run.seed, "line": line,
-                                 "end": end, "duration": duration, "maximum": float(np.max(record)), "mean": mean,
-                                 "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note})
+            rows += _seed_rows(run, ds, storm_duration, quantile)
+    return _seed_frame(rows)
+
+
+def _seed_rows(run: Run, ds: xr.Dataset, storm_duration: float | None, quantile: float) -> list[dict]:
+    """The rows of :func:`seed_table` of one run, ``ds`` its result."""
+    rows = []
+    duration = _duration(ds)
+    for line in line_names(ds):
+        for end in _ENDS:
+            record = line_series(ds, f"{end}_tension", line)
+            mean, std = statistics.mean_and_dynamic(record)
+            try:
+                w = statistics.weibull_maximum(record, duration, storm_duration, quantile)
+                mpm, q, note = w.most_probable, w.quantile, ""
+            except InputError as err:
+                mpm, q, note = math.nan, math.nan, _note(err)
+            rows.append({"load_case": run.load_case, "case": run.name, "seed": run.seed, "line": line,
+                         "end": end, "duration": duration, "maximum": float(np.max(record)), "mean": mean,
+                         "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note})
+    return rows
+
+
+def _seed_frame(rows: list[dict]) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["load_case", "case", "seed", "line", "end", "duration", "maximum", "mean",
                                        "std", "weibull_mpm", "weibull_quantile", "weibull_note"])
 
@@ -635,14 +657,23 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
     InputError
         A line of ``lines`` that has no breaking load or is not in the results; a bad consequence class.
     """
-    from . import checks
-
     if extremes is None:
         extremes = extremes_table(runs, storm_duration=storm_duration, quantile=quantile)
+    _check_offset_limit(offset_limit)
+    return _checks_of_facts(_check_facts(runs), extremes, consequence_class, offset_limit, allowed_uplift, lines)
+
+
+def _check_offset_limit(offset_limit: float | None) -> None:
     if offset_limit is not None and not (math.isfinite(offset_limit) and offset_limit > 0):
         raise InputError(f"the offset limit must be > 0 m, got {offset_limit} m. Suggested fix: give the "
                          "allowed horizontal excursion in m, e.g. 30.")
-    facts = _check_facts(runs)
+
+
+def _checks_of_facts(facts: dict[str, dict], extremes: pd.DataFrame, consequence_class: int,
+                     offset_limit: float | None, allowed_uplift: float, lines: Sequence[str] | None) -> pd.DataFrame:
+    """The rows of :func:`checks_table` from the facts of the runs (:func:`_check_facts`) and the extremes."""
+    from . import checks
+
     known = {line for f in facts.values() for line in f["info"]}
     for name in lines or ():
         if name not in known:
@@ -714,19 +745,24 @@ def _check_facts(runs: Sequence[Run]) -> dict[str, dict]:
     facts: dict[str, dict] = {}
     for run in runs:
         with run.open() as ds:
-            f = facts.setdefault(run.load_case, {"info": {}, "failed": {}, "uplift": {}, "offsets": {}, "where": {}})
-            info = line_info(ds)
-            f["info"].update(info)
-            for line, t in failed_lines(ds).items():
-                f["failed"][line] = min(t, f["failed"].get(line, math.inf))
-            for line in line_names(ds):
-                state = anchor_uplift_state(ds, line, info.get(line))
-                if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
-                    f["uplift"][line] = state
-            for body, (offset, where) in body_offsets(ds).items():
-                if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
-                    f["offsets"][body] = (offset, where)
+            _add_check_facts(facts, run, ds)
     return facts
+
+
+def _add_check_facts(facts: dict[str, dict], run: Run, ds: xr.Dataset) -> None:
+    """Add one run (``ds`` its result) to the facts of :func:`_check_facts`."""
+    f = facts.setdefault(run.load_case, {"info": {}, "failed": {}, "uplift": {}, "offsets": {}, "where": {}})
+    info = line_info(ds)
+    f["info"].update(info)
+    for line, t in failed_lines(ds).items():
+        f["failed"][line] = min(t, f["failed"].get(line, math.inf))
+    for line in line_names(ds):
+        state = anchor_uplift_state(ds, line, info.get(line))
+        if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
+            f["uplift"][line] = state
+    for body, (offset, where) in body_offsets(ds).items():
+        if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
+            f["offsets"][body] = (offset, where)
 
 
 # -------------------------------------------------------------------------------------------------- fatigue
@@ -790,39 +826,57 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
         damage_per_year [1/year] (if the load case lasted the whole year), life_alone [years] (its inverse),
         probability [-] (NaN without a scatter diagram), note`` (why a line is not computed).
     """
-    curve_given = None if tn_curve is None else resolve_tn_curve(tn_curve)
-    if nominal_diameter is not None and not (math.isfinite(nominal_diameter) and nominal_diameter > 0):
-        raise InputError(f"the nominal diameter must be > 0 m, got {nominal_diameter} m. Suggested fix: give the "
-                         "chain's bar diameter or the rope's nominal diameter in m, e.g. 0.095.")
+    curve_given = _fatigue_options(tn_curve, nominal_diameter)
     acc: dict[tuple[str, str], dict] = {}
     intact = []
     for run in runs:
         with run.open() as ds:
-            if failed_lines(ds):
-                continue
-            intact.append(run)
-            duration = _duration(ds)
-            info = line_info(ds)
-            for line in line_names(ds):
-                a = acc.setdefault((run.load_case, line), {"damage": [], "duration": [], "note": "", "curve": None,
-                                                          "diameter": None})
-                i = info.get(line)
-                curve = curve_given or _curve_of_type(None if i is None else i.line_type)
-                if curve is None:
-                    a["note"] = (f"not computed: the T-N curve of line '{line}' (line type "
-                                 f"'{getattr(i, 'line_type', None) or 'unknown'}') cannot be told; give --tn-curve")
-                    continue
-                d = nominal_diameter
-                if d is None and i is not None and i.diameter:
-                    d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
-                if d is None:
-                    a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
-                                 "no line type); give --nominal-diameter")
-                    continue
-                a["damage"].append(fatigue.fatigue_damage(line_series(ds, "fairlead_tension", line), curve,
-                                                          diameter=d))
-                a["duration"].append(duration)
-                a["curve"], a["diameter"] = curve, d
+            if _add_fatigue(acc, ds, run, curve_given, nominal_diameter):
+                intact.append(run)
+    return _fatigue_of(acc, intact, scatter)
+
+
+def _fatigue_options(tn_curve: str | None, nominal_diameter: float | None) -> str | None:
+    """The T-N curve given (:func:`resolve_tn_curve`), the nominal diameter checked."""
+    curve_given = None if tn_curve is None else resolve_tn_curve(tn_curve)
+    if nominal_diameter is not None and not (math.isfinite(nominal_diameter) and nominal_diameter > 0):
+        raise InputError(f"the nominal diameter must be > 0 m, got {nominal_diameter} m. Suggested fix: give the "
+                         "chain's bar diameter or the rope's nominal diameter in m, e.g. 0.095.")
+    return curve_given
+
+
+def _add_fatigue(acc: dict, ds: xr.Dataset, run: Run, curve_given: str | None,
+                 nominal_diameter: float | None) -> bool:
+    """Add the damage of one run (``ds`` its result) to ``acc`` of :func:`fatigue_table`; False (nothing added)
+    for a run with a failed line."""
+    if failed_lines(ds):
+        return False
+    duration = _duration(ds)
+    info = line_info(ds)
+    for line in line_names(ds):
+        a = acc.setdefault((run.load_case, line), {"damage": [], "duration": [], "note": "", "curve": None,
+                                                  "diameter": None})
+        i = info.get(line)
+        curve = curve_given or _curve_of_type(None if i is None else i.line_type)
+        if curve is None:
+            a["note"] = (f"not computed: the T-N curve of line '{line}' (line type "
+                         f"'{getattr(i, 'line_type', None) or 'unknown'}') cannot be told; give --tn-curve")
+            continue
+        d = nominal_diameter
+        if d is None and i is not None and i.diameter:
+            d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
+        if d is None:
+            a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
+                         "no line type); give --nominal-diameter")
+            continue
+        a["damage"].append(fatigue.fatigue_damage(line_series(ds, "fairlead_tension", line), curve, diameter=d))
+        a["duration"].append(duration)
+        a["curve"], a["diameter"] = curve, d
+    return True
+
+
+def _fatigue_of(acc: dict, intact: Sequence[Run], scatter) -> pd.DataFrame:
+    """The rows of :func:`fatigue_table` from the damage of its intact runs (:func:`_add_fatigue`)."""
     probability = _scatter_probabilities(intact, scatter) if scatter is not None else {}
     rows = []
     for (load_case, line), a in acc.items():
@@ -869,6 +923,56 @@ def fatigue_life_table(fatigue_rows: pd.DataFrame, *, design_fatigue_factor: flo
                      "note": ""})
     return pd.DataFrame(rows, columns=["line", "tn_curve", "load_cases", "damage_per_year", "life",
                                        "design_fatigue_factor", "note"])
+
+
+def design_tables(source, *, storm_duration: float | None = None, quantile: float = 0.9, consequence_class: int = 1,
+                  offset_limit: float | None = None, allowed_uplift: float = 0.0, tn_curve: str | None = None,
+                  nominal_diameter: float | None = None, scatter: pd.DataFrame | str | Path | None = None,
+                  visit: Callable[[Run, xr.Dataset], None] | None = None) -> tuple[list[Run], dict[str, pd.DataFrame]]:
+    """The runs of ``source`` and their design tables, each result read once.
+
+    :func:`read_results`, then :func:`seed_table`, :func:`extremes_table`, :func:`checks_table` and
+    :func:`fatigue_table` of its runs (the same tables, to the bit) made in one pass over the results: a result
+    file is opened once, not once per table. The options are checked before any result is read.
+
+    Parameters
+    ----------
+    source
+        What :func:`read_results` reads.
+    visit
+        Called as ``visit(run, ds)`` with each run and its result while it is open, after the tables took it.
+    storm_duration, quantile, consequence_class, offset_limit, allowed_uplift, tn_curve, nominal_diameter, scatter
+        As the tables take them.
+
+    Returns
+    -------
+    runs : list of Run
+    tables : dict of pandas.DataFrame
+        ``seeds``, ``extremes``, ``checks`` and ``fatigue``.
+    """
+    _check_storm(storm_duration)
+    statistics._probability(quantile)
+    _check_offset_limit(offset_limit)
+    curve_given = _fatigue_options(tn_curve, nominal_diameter)
+    seed_rows: list[dict] = []
+    facts: dict[str, dict] = {}
+    damage: dict = {}
+    intact: list[Run] = []
+
+    def take(run: Run, ds: xr.Dataset) -> None:
+        seed_rows.extend(_seed_rows(run, ds, storm_duration, quantile))
+        _add_check_facts(facts, run, ds)
+        if _add_fatigue(damage, ds, run, curve_given, nominal_diameter):
+            intact.append(run)
+        if visit is not None:
+            visit(run, ds)
+
+    runs = read_results(source, take)
+    seeds = _seed_frame(seed_rows)
+    extremes = extremes_table(seeds, storm_duration=storm_duration, quantile=quantile)
+    checks = _checks_of_facts(facts, extremes, consequence_class, offset_limit, allowed_uplift, None)
+    return runs, {"seeds": seeds, "extremes": extremes, "checks": checks,
+                  "fatigue": _fatigue_of(damage, intact, scatter)}
 
 
 def read_scatter(path: str | Path) -> pd.DataFrame:
