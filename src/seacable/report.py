@@ -1,9 +1,9 @@
 """The design report of a time-domain mooring result or a sweep of them (issue 20): one self-contained HTML page
 and the same tables as CSV files beside it.
 
-``seacable report RESULT.nc|SWEEP_DIR -o report.html`` (or :func:`make_report`) reads the results
-(:func:`seacable.design.summary.read_results`), makes the design tables of :mod:`seacable.design.summary`
-(extremes, code checks, fatigue) and writes:
+``seacable report RESULT.nc|SWEEP_DIR -o report.html`` (or :func:`make_report`) reads the results and makes the
+design tables of :mod:`seacable.design.summary` (extremes, code checks, fatigue) in one pass over them
+(:func:`seacable.design.summary.design_tables`: each result file is opened once) and writes:
 
 - ``report.html``: the inputs, the model and its references, the tables (tensions in kN, four significant
   digits) and the figures (matplotlib, inline base64 PNG); inline CSS, no script, nothing fetched;
@@ -145,9 +145,13 @@ def _with_units(table: pd.DataFrame) -> pd.DataFrame:
 _SERIES = "#0072b2"
 
 
+#: The resolution of the figures on the page. [dots per inch]
+_DPI = 110
+
+
 def _png(fig) -> str:
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110, bbox_inches="tight", facecolor="white")
+    fig.savefig(buf, format="png", dpi=_DPI, bbox_inches="tight", facecolor="white")
     return base64.b64encode(buf.getvalue()).decode("ascii")
 
 
@@ -163,15 +167,40 @@ def _pyplot():
     return plt
 
 
-def _figure_time_series(runs, seeds: pd.DataFrame) -> tuple[str, str] | None:
+class _MostLoaded:
+    """Kept as the results are read (a ``visit`` of :func:`seacable.design.summary.design_tables`): the first run's
+    attributes, and the time and fairlead tension of the line with the largest fairlead tension so far (the first
+    of equal ones, as the seed table's ``idxmax``), so that the figure reads no result file again."""
+
+    def __init__(self):
+        self.attrs = None
+        self.maximum = -math.inf
+        self.run = self.line = self.time = self.tension = None
+
+    def __call__(self, run, ds) -> None:
+        if self.attrs is None:
+            self.attrs = dict(ds.attrs)
+        for line in ds_.line_names(ds):
+            record = ds_.line_series(ds, "fairlead_tension", line)
+            if float(np.max(record)) > self.maximum:
+                self.maximum = float(np.max(record))
+                self.run, self.line = run, line
+                self.time = np.asarray(ds["time"].values, float)
+                self.tension = record
+
+
+def _figure_time_series(runs, seeds: pd.DataFrame, kept: _MostLoaded | None = None) -> tuple[str, str] | None:
     fair = seeds[seeds["end"] == "fairlead"]
     if fair.empty:
         return None
     top = fair.loc[fair["maximum"].idxmax()]
     run = next(r for r in runs if r.name == top["case"] and r.load_case == top["load_case"])
-    with run.open() as ds:
-        t = np.asarray(ds["time"].values, float)
-        y = ds_.line_series(ds, "fairlead_tension", top["line"]) / 1e3
+    if kept is not None and kept.run is run and kept.line == top["line"]:
+        t, y = kept.time, kept.tension / 1e3
+    else:
+        with run.open() as ds:
+            t = np.asarray(ds["time"].values, float)
+            y = ds_.line_series(ds, "fairlead_tension", top["line"]) / 1e3
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(10.4, 3.4))
     ax.plot(t, y, color=_SERIES, lw=0.9, label="fairlead tension")
@@ -519,9 +548,11 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) ->
         f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
 
 
-def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: Path | None = None) -> str:
-    """The page; ``base``: its folder, which the paths it shows are relative to."""
-    attrs = _first_attrs(runs)
+def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: Path | None = None,
+          attrs: dict | None = None) -> str:
+    """The page; ``base``: its folder, which the paths it shows are relative to; ``attrs``: the first run's
+    attributes (read from it when not given)."""
+    attrs = _first_attrs(runs) if attrs is None else attrs
     sweep = _sweep_info(source)
 
     def path(p) -> str:
@@ -657,21 +688,20 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
     if opts.tn_curve is not None:
         ds_.resolve_tn_curve(opts.tn_curve)  # so is the curve: a misspelt name fails before minutes of fits
-    runs = ds_.read_results(source)
-    seeds = ds_.seed_table(runs, storm_duration=opts.storm_duration, quantile=opts.quantile)
-    ext = ds_.extremes_table(seeds, storm_duration=opts.storm_duration, quantile=opts.quantile)
-    chk = ds_.checks_table(runs, ext, consequence_class=opts.consequence_class, offset_limit=opts.offset_limit,
-                           allowed_uplift=opts.allowed_uplift)
-    fat = ds_.fatigue_table(runs, tn_curve=opts.tn_curve, nominal_diameter=opts.nominal_diameter,
-                            scatter=opts.scatter)
+    kept = _MostLoaded()
+    runs, made = ds_.design_tables(source, storm_duration=opts.storm_duration, quantile=opts.quantile,
+                                   consequence_class=opts.consequence_class, offset_limit=opts.offset_limit,
+                                   allowed_uplift=opts.allowed_uplift, tn_curve=opts.tn_curve,
+                                   nominal_diameter=opts.nominal_diameter, scatter=opts.scatter, visit=kept)
+    seeds, ext, chk, fat = (made[k] for k in ("seeds", "extremes", "checks", "fatigue"))
     life = ds_.fatigue_life_table(fat, design_fatigue_factor=opts.design_fatigue_factor) if opts.scatter else \
         pd.DataFrame(columns=["line", "tn_curve", "load_cases", "damage_per_year", "life", "design_fatigue_factor",
                               "note"])
     tables = {"extremes": ext, "seeds": seeds, "checks": chk, "fatigue": fat, "fatigue_life": life}
-    figures = {"series": _figure_time_series(runs, seeds), "maxima": _figure_maxima(seeds, ext),
+    figures = {"series": _figure_time_series(runs, seeds, kept), "maxima": _figure_maxima(seeds, ext),
                "utilisation": _figure_utilisation(chk)}
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
-                 opts, output.resolve().parent)
+                 opts, output.resolve().parent, kept.attrs)
     output.parent.mkdir(parents=True, exist_ok=True)
     written = [atomic_write(output, lambda tmp: tmp.write_text(page, encoding="utf-8"))]
     for key, table in tables.items():

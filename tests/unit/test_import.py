@@ -25,15 +25,6 @@ EXAMPLES = ROOT.parents[1] / "examples"
 HEAVY = ("numba", "xarray", "pandas", "matplotlib", "dask", "scipy.optimize")
 
 
-def _loaded(code: str) -> set[str]:
-    """The modules a fresh interpreter has loaded after running ``code`` (this process's seacable)."""
-    probe = f"{code}\nimport json, sys\nprint(json.dumps(sorted(sys.modules)))"
-    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=False,
-                         cwd=ROOT.parents[1], env={**os.environ, "PYTHONPATH": str(ROOT.parent)})
-    assert out.returncode == 0, out.stderr
-    return set(json.loads(out.stdout.splitlines()[-1]))
-
-
 def _loaded_after_each(codes: list[str]) -> list[set[str]]:
     """The modules one fresh interpreter has loaded after each of ``codes``, run one after another.
 
@@ -54,43 +45,44 @@ def _heavy(modules: set[str], heavy=HEAVY) -> list[str]:
     return sorted(m for m in heavy if m in modules)
 
 
-def test_import_seacable_loads_none_of_the_heavy_libraries():
-    modules = _loaded("import seacable")
-    assert "seacable" in modules
-    assert _heavy(modules, HEAVY + ("scipy",)) == []
-
-
-def test_the_command_line_and_reading_a_case_load_only_what_they_need():
-    # one fresh interpreter for the four probes, one after another (was one each: a fresh interpreter's start
-    # is most of the time): the parser first, then the cases, each checked on what is loaded after it
-    names = ("paper002_vertical_cable.yaml", "spread_mooring.yaml", "paper003_zigzag.yaml")
-    after = _loaded_after_each(["import seacable.cli"] + [f"import seacable; seacable.load_case({str(EXAMPLES / name)!r})"
-                                                          for name in names])
-    # the command's parser (seacable --help) needs none of them, not even NumPy
-    assert _heavy(after[0], HEAVY + ("scipy", "numpy")) == []
-    # a case and its checks are pydantic models: no compiled kernels, no Dataset, no solver
-    for name, modules in zip(names, after[1:], strict=True):
-        assert _heavy(modules, HEAVY + ("scipy",)) == [], name
-
-
+CASES = ("paper002_vertical_cable.yaml", "spread_mooring.yaml", "paper003_zigzag.yaml")
 VALIDATED = ["paper002_vertical_cable.yaml", "oc3_hywind_static.yaml", "oc3_hywind_modes.yaml",
              "paper004_lena_pushover.yaml"]
 
 
 @pytest.fixture(scope="module")
-def loaded_after_validate() -> dict[str, set[str]]:
-    """The modules loaded after ``seacable validate`` of each of :data:`VALIDATED`, in one fresh interpreter, one
-    after another (was one interpreter each: its start and imports were most of each test's time)."""
-    codes = [f"from seacable.cli import main\nassert main(['validate', {str(EXAMPLES / name)!r}]) == 0"
-             for name in VALIDATED]
-    return dict(zip(VALIDATED, _loaded_after_each(codes), strict=True))
+def loaded_after() -> dict:
+    """The modules one fresh interpreter has loaded after each probe, run one after another: ``import seacable``
+    ("seacable"), the command's parser ("cli"), reading each case of :data:`CASES` (its name), and ``seacable
+    validate`` of each of :data:`VALIDATED` (("validate", its name)). Each probe is checked on what is loaded
+    after it, so the lighter probes come first (was three interpreters, and one per probe before that: a fresh
+    interpreter's start and imports were most of each test's time)."""
+    codes = {"seacable": "import seacable", "cli": "import seacable.cli"}
+    codes.update({name: f"import seacable; seacable.load_case({str(EXAMPLES / name)!r})" for name in CASES})
+    codes.update({("validate", name): f"from seacable.cli import main\nassert main(['validate', "
+                                      f"{str(EXAMPLES / name)!r}]) == 0" for name in VALIDATED})
+    return dict(zip(codes, _loaded_after_each(list(codes.values())), strict=True))
+
+
+def test_import_seacable_loads_none_of_the_heavy_libraries(loaded_after):
+    modules = loaded_after["seacable"]
+    assert "seacable" in modules
+    assert _heavy(modules, HEAVY + ("scipy",)) == []
+
+
+def test_the_command_line_and_reading_a_case_load_only_what_they_need(loaded_after):
+    # the command's parser (seacable --help) needs none of them, not even NumPy
+    assert _heavy(loaded_after["cli"], HEAVY + ("scipy", "numpy")) == []
+    # a case and its checks are pydantic models: no compiled kernels, no Dataset, no solver
+    for name in CASES:
+        assert _heavy(loaded_after[name], HEAVY + ("scipy",)) == [], name
 
 
 @pytest.mark.parametrize("name", VALIDATED)
-def test_validate_of_a_static_or_modal_case_builds_no_dataset(name, loaded_after_validate):
+def test_validate_of_a_static_or_modal_case_builds_no_dataset(name, loaded_after):
     """``seacable validate`` solves a static or modal case (the runner's own ``solve_*``) but builds no Dataset:
     no xarray, pandas, Dask or matplotlib (the finite-element statics of a mooring line do load numba)."""
-    assert _heavy(loaded_after_validate[name], ("xarray", "pandas", "dask", "matplotlib")) == [], name
+    assert _heavy(loaded_after["validate", name], ("xarray", "pandas", "dask", "matplotlib")) == [], name
 
 
 def test_every_public_name_resolves():

@@ -17,6 +17,8 @@ folders ``seacable sweep`` writes), never a model's internals:
   status "pass", "FAIL" or "not checked: <why>".
 - :func:`fatigue_table` and :func:`fatigue_life_table`: Miner's damage of each load case from the rainflow
   count of the fairlead tension (:mod:`seacable.design.fatigue`), and the life over a scatter diagram.
+- :func:`design_tables`: the runs and the tables of extremes, checks and fatigue in one pass over the results
+  (each result file opened once: the report's reading).
 
 Tensions are in N, durations in s, offsets in m, lives in years.
 """
@@ -25,12 +27,10 @@ from __future__ import annotations
 
 import contextlib
 import copy
-import csv
 import functools
-import io
 import json
 import math
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -43,18 +43,14 @@ from .._model import load_yaml
 from ..errors import InputError
 from ..results import check_time
 from . import fatigue, statistics
+from .scatter import HEADING_PATH, HS_PATH, SEED_PATH, TP_PATH, read_scatter, scatter_probabilities
 
 __all__ = ["DYNAMIC_ANALYSES", "HEADING_PATH", "HS_PATH", "SEED_PATH", "TP_PATH", "LineInfo", "Run",
-           "checks_table", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info", "line_names",
-           "line_series", "read_results", "read_scatter", "resolve_tn_curve", "seed_table"]
+           "checks_table", "design_tables", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info",
+           "line_names", "line_series", "read_results", "read_scatter", "resolve_tn_curve", "seed_table"]
 
 #: The analyses whose results the design tables read.
 DYNAMIC_ANALYSES = ("mooring_dynamic", "system_dynamic")
-#: The swept parameters that make a sea state: seeds of a load case differ in SEED_PATH only.
-SEED_PATH = "environment.waves.seed"
-HS_PATH = "environment.waves.hs"
-TP_PATH = "environment.waves.tp"
-HEADING_PATH = "environment.waves.heading"
 _ENDS = ("fairlead", "anchor")
 
 #: Volume-equivalent over nominal diameter of a line type, by T-N curve: MoorPy's default line properties
@@ -169,7 +165,7 @@ def _label(parameters: dict, units: dict) -> str:
     return ", ".join(parts)
 
 
-def read_results(source) -> list[Run]:
+def read_results(source, visit: Callable[[Run, xr.Dataset], None] | None = None) -> list[Run]:
     """The runs of a result file, a sweep folder, a Dataset, or load cases of Datasets.
 
     Parameters
@@ -179,6 +175,10 @@ def read_results(source) -> list[Run]:
         (``summary.nc`` and ``cases/``: cases that differ only in ``environment.waves.seed`` are the seeds of
         one load case; failed cases are left out); a result Dataset; or a mapping load case -> Datasets (its
         seeds).
+
+    visit
+        Called as ``visit(run, ds)`` with each run, in order, and its result while it is open: what reads
+        the results once (:func:`design_tables`) does its work there.
 
     Returns
     -------
@@ -192,42 +192,47 @@ def read_results(source) -> list[Run]:
         not of a time-domain mooring analysis.
     """
     if isinstance(source, xr.Dataset):
-        return [_dataset_run(source, None)]
+        return [_dataset_run(source, None, visit)]
     if isinstance(source, Mapping):
         runs = []
         for label, datasets in source.items():
             if isinstance(datasets, xr.Dataset):
                 datasets = [datasets]
-            runs.extend(_dataset_run(ds, str(label)) for ds in datasets)
+            runs.extend(_dataset_run(ds, str(label), visit) for ds in datasets)
         if not runs:
             raise InputError("no result given: the mapping of load cases holds no Dataset. Suggested fix: give "
                              "{'load case': [ds_seed1, ds_seed2, ...]}.")
         return runs
     path = Path(source)
     if path.is_dir():
-        return _sweep_runs(path)
+        return _sweep_runs(path, visit)
     if not path.exists():
         raise InputError(f"'{path}' does not exist. Suggested fix: give a result file (.nc) written by 'seacable "
                          "run' or a folder written by 'seacable sweep'.")
-    run = Run("", "", None, {}, path)
-    with run.open() as ds:
+    with Run("", "", None, {}, path).open() as ds:
         _check_dynamic(ds, f"result file '{path}'")
         data = case_data(ds)
         name = str(ds.attrs.get("case_name") or ds.attrs.get("title") or path.stem)
         sea = _sea_state(data)
-    seed = sea.get(SEED_PATH)
-    return [Run(name, name, None if seed is None else int(seed), sea, path)]
+        seed = sea.get(SEED_PATH)
+        run = Run(name, name, None if seed is None else int(seed), sea, path)
+        if visit is not None:
+            visit(run, ds)
+    return [run]
 
 
-def _dataset_run(ds: xr.Dataset, label: str | None) -> Run:
+def _dataset_run(ds: xr.Dataset, label: str | None, visit=None) -> Run:
     _check_dynamic(ds, f"result '{ds.attrs.get('title', '?')}'")
     sea = _sea_state(case_data(ds))
     name = str(ds.attrs.get("case_name") or ds.attrs.get("title") or "result")
     seed = sea.get(SEED_PATH)
-    return Run(name, label or name, None if seed is None else int(seed), sea, ds)
+    run = Run(name, label or name, None if seed is None else int(seed), sea, ds)
+    if visit is not None:
+        visit(run, ds)
+    return run
 
 
-def _sweep_runs(folder: Path) -> list[Run]:
+def _sweep_runs(folder: Path, visit=None) -> list[Run]:
     summary_path = folder / "summary.nc"
     if not summary_path.exists():
         raise InputError(f"'{folder}' is a folder without summary.nc: not a sweep's output. Suggested fix: give a "
@@ -260,14 +265,14 @@ def _sweep_runs(folder: Path) -> list[Run]:
             raise InputError(f"sweep '{folder}': case {index} ({name}) is done but its result is not in "
                              f"{folder / 'cases'}. Suggested fix: run the sweep again (it runs the missing cases).")
         values = {p: _plain(summary[p].values[k]) for p in params}
-        run = Run(name, "", None, {}, path)
-        with run.open() as ds:
-            _check_dynamic(ds, f"result file '{path}'")
-            sea = _sea_state(case_data(ds))
-        parameters = {**sea, **values}
         label = _label({p: values[p] for p in others}, units) or str(summary.attrs.get("title") or folder.name)
-        seed = parameters.get(SEED_PATH)
-        runs.append(Run(name, label, None if seed is None else int(seed), parameters, path))
+        with Run(name, "", None, {}, path).open() as ds:
+            _check_dynamic(ds, f"result file '{path}'")
+            parameters = {**_sea_state(case_data(ds)), **values}
+            seed = parameters.get(SEED_PATH)
+            runs.append(Run(name, label, None if seed is None else int(seed), parameters, path))
+            if visit is not None:
+                visit(runs[-1], ds)
     if not runs:
         raise InputError(f"sweep '{folder}' holds no completed case ({summary.attrs.get('failed', 0)} failed, "
                          f"{summary.attrs.get('not_run', 0)} not run). Suggested fix: run the sweep to its end, "
@@ -436,19 +441,30 @@ def seed_table(runs: Sequence[Run], *, storm_duration: float | None = None, quan
     rows = []
     for run in runs:
         with run.open() as ds:
-            duration = _duration(ds)
-            for line in line_names(ds):
-                for end in _ENDS:
-                    record = line_series(ds, f"{end}_tension", line)
-                    mean, std = statistics.mean_and_dynamic(record)
-                    try:
-                        w = statistics.weibull_maximum(record, duration, storm_duration, quantile)
-                        mpm, q, note = w.most_probable, w.quantile, ""
-                    except InputError as err:
-                        mpm, q, note = math.nan, math.nan, _note(err)
-                    rows.append({"load_case": run.load_case, "case": run.name, "seed": run.seed, "line": line,
-                                 "end": end, "duration": duration, "maximum": float(np.max(record)), "mean": mean,
-                                 "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note})
+            rows += _seed_rows(run, ds, storm_duration, quantile)
+    return _seed_frame(rows)
+
+
+def _seed_rows(run: Run, ds: xr.Dataset, storm_duration: float | None, quantile: float) -> list[dict]:
+    """The rows of :func:`seed_table` of one run, ``ds`` its result."""
+    rows = []
+    duration = _duration(ds)
+    for line in line_names(ds):
+        for end in _ENDS:
+            record = line_series(ds, f"{end}_tension", line)
+            mean, std = statistics.mean_and_dynamic(record)
+            try:
+                w = statistics.weibull_maximum(record, duration, storm_duration, quantile)
+                mpm, q, note = w.most_probable, w.quantile, ""
+            except InputError as err:
+                mpm, q, note = math.nan, math.nan, _note(err)
+            rows.append({"load_case": run.load_case, "case": run.name, "seed": run.seed, "line": line,
+                         "end": end, "duration": duration, "maximum": float(np.max(record)), "mean": mean,
+                         "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note})
+    return rows
+
+
+def _seed_frame(rows: list[dict]) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["load_case", "case", "seed", "line", "end", "duration", "maximum", "mean",
                                        "std", "weibull_mpm", "weibull_quantile", "weibull_note"])
 
@@ -635,14 +651,23 @@ def checks_table(runs: Sequence[Run], extremes: pd.DataFrame | None = None, *, c
     InputError
         A line of ``lines`` that has no breaking load or is not in the results; a bad consequence class.
     """
-    from . import checks
-
     if extremes is None:
         extremes = extremes_table(runs, storm_duration=storm_duration, quantile=quantile)
+    _check_offset_limit(offset_limit)
+    return _checks_of_facts(_check_facts(runs), extremes, consequence_class, offset_limit, allowed_uplift, lines)
+
+
+def _check_offset_limit(offset_limit: float | None) -> None:
     if offset_limit is not None and not (math.isfinite(offset_limit) and offset_limit > 0):
         raise InputError(f"the offset limit must be > 0 m, got {offset_limit} m. Suggested fix: give the "
                          "allowed horizontal excursion in m, e.g. 30.")
-    facts = _check_facts(runs)
+
+
+def _checks_of_facts(facts: dict[str, dict], extremes: pd.DataFrame, consequence_class: int,
+                     offset_limit: float | None, allowed_uplift: float, lines: Sequence[str] | None) -> pd.DataFrame:
+    """The rows of :func:`checks_table` from the facts of the runs (:func:`_check_facts`) and the extremes."""
+    from . import checks
+
     known = {line for f in facts.values() for line in f["info"]}
     for name in lines or ():
         if name not in known:
@@ -714,19 +739,24 @@ def _check_facts(runs: Sequence[Run]) -> dict[str, dict]:
     facts: dict[str, dict] = {}
     for run in runs:
         with run.open() as ds:
-            f = facts.setdefault(run.load_case, {"info": {}, "failed": {}, "uplift": {}, "offsets": {}, "where": {}})
-            info = line_info(ds)
-            f["info"].update(info)
-            for line, t in failed_lines(ds).items():
-                f["failed"][line] = min(t, f["failed"].get(line, math.inf))
-            for line in line_names(ds):
-                state = anchor_uplift_state(ds, line, info.get(line))
-                if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
-                    f["uplift"][line] = state
-            for body, (offset, where) in body_offsets(ds).items():
-                if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
-                    f["offsets"][body] = (offset, where)
+            _add_check_facts(facts, run, ds)
     return facts
+
+
+def _add_check_facts(facts: dict[str, dict], run: Run, ds: xr.Dataset) -> None:
+    """Add one run (``ds`` its result) to the facts of :func:`_check_facts`."""
+    f = facts.setdefault(run.load_case, {"info": {}, "failed": {}, "uplift": {}, "offsets": {}, "where": {}})
+    info = line_info(ds)
+    f["info"].update(info)
+    for line, t in failed_lines(ds).items():
+        f["failed"][line] = min(t, f["failed"].get(line, math.inf))
+    for line in line_names(ds):
+        state = anchor_uplift_state(ds, line, info.get(line))
+        if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
+            f["uplift"][line] = state
+    for body, (offset, where) in body_offsets(ds).items():
+        if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
+            f["offsets"][body] = (offset, where)
 
 
 # -------------------------------------------------------------------------------------------------- fatigue
@@ -790,40 +820,58 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
         damage_per_year [1/year] (if the load case lasted the whole year), life_alone [years] (its inverse),
         probability [-] (NaN without a scatter diagram), note`` (why a line is not computed).
     """
-    curve_given = None if tn_curve is None else resolve_tn_curve(tn_curve)
-    if nominal_diameter is not None and not (math.isfinite(nominal_diameter) and nominal_diameter > 0):
-        raise InputError(f"the nominal diameter must be > 0 m, got {nominal_diameter} m. Suggested fix: give the "
-                         "chain's bar diameter or the rope's nominal diameter in m, e.g. 0.095.")
+    curve_given = _fatigue_options(tn_curve, nominal_diameter)
     acc: dict[tuple[str, str], dict] = {}
     intact = []
     for run in runs:
         with run.open() as ds:
-            if failed_lines(ds):
-                continue
-            intact.append(run)
-            duration = _duration(ds)
-            info = line_info(ds)
-            for line in line_names(ds):
-                a = acc.setdefault((run.load_case, line), {"damage": [], "duration": [], "note": "", "curve": None,
-                                                          "diameter": None})
-                i = info.get(line)
-                curve = curve_given or _curve_of_type(None if i is None else i.line_type)
-                if curve is None:
-                    a["note"] = (f"not computed: the T-N curve of line '{line}' (line type "
-                                 f"'{getattr(i, 'line_type', None) or 'unknown'}') cannot be told; give --tn-curve")
-                    continue
-                d = nominal_diameter
-                if d is None and i is not None and i.diameter:
-                    d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
-                if d is None:
-                    a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
-                                 "no line type); give --nominal-diameter")
-                    continue
-                a["damage"].append(fatigue.fatigue_damage(line_series(ds, "fairlead_tension", line), curve,
-                                                          diameter=d))
-                a["duration"].append(duration)
-                a["curve"], a["diameter"] = curve, d
-    probability = _scatter_probabilities(intact, scatter) if scatter is not None else {}
+            if _add_fatigue(acc, ds, run, curve_given, nominal_diameter):
+                intact.append(run)
+    return _fatigue_of(acc, intact, scatter)
+
+
+def _fatigue_options(tn_curve: str | None, nominal_diameter: float | None) -> str | None:
+    """The T-N curve given (:func:`resolve_tn_curve`), the nominal diameter checked."""
+    curve_given = None if tn_curve is None else resolve_tn_curve(tn_curve)
+    if nominal_diameter is not None and not (math.isfinite(nominal_diameter) and nominal_diameter > 0):
+        raise InputError(f"the nominal diameter must be > 0 m, got {nominal_diameter} m. Suggested fix: give the "
+                         "chain's bar diameter or the rope's nominal diameter in m, e.g. 0.095.")
+    return curve_given
+
+
+def _add_fatigue(acc: dict, ds: xr.Dataset, run: Run, curve_given: str | None,
+                 nominal_diameter: float | None) -> bool:
+    """Add the damage of one run (``ds`` its result) to ``acc`` of :func:`fatigue_table`; False (nothing added)
+    for a run with a failed line."""
+    if failed_lines(ds):
+        return False
+    duration = _duration(ds)
+    info = line_info(ds)
+    for line in line_names(ds):
+        a = acc.setdefault((run.load_case, line), {"damage": [], "duration": [], "note": "", "curve": None,
+                                                  "diameter": None})
+        i = info.get(line)
+        curve = curve_given or _curve_of_type(None if i is None else i.line_type)
+        if curve is None:
+            a["note"] = (f"not computed: the T-N curve of line '{line}' (line type "
+                         f"'{getattr(i, 'line_type', None) or 'unknown'}') cannot be told; give --tn-curve")
+            continue
+        d = nominal_diameter
+        if d is None and i is not None and i.diameter:
+            d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
+        if d is None:
+            a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
+                         "no line type); give --nominal-diameter")
+            continue
+        a["damage"].append(fatigue.fatigue_damage(line_series(ds, "fairlead_tension", line), curve, diameter=d))
+        a["duration"].append(duration)
+        a["curve"], a["diameter"] = curve, d
+    return True
+
+
+def _fatigue_of(acc: dict, intact: Sequence[Run], scatter) -> pd.DataFrame:
+    """The rows of :func:`fatigue_table` from the damage of its intact runs (:func:`_add_fatigue`)."""
+    probability = scatter_probabilities(intact, scatter) if scatter is not None else {}
     rows = []
     for (load_case, line), a in acc.items():
         n = len(a["damage"])
@@ -871,95 +919,51 @@ def fatigue_life_table(fatigue_rows: pd.DataFrame, *, design_fatigue_factor: flo
                                        "design_fatigue_factor", "note"])
 
 
-def read_scatter(path: str | Path) -> pd.DataFrame:
-    """A scatter diagram: a CSV with columns ``hs`` [m], ``tp`` [s] and ``probability`` [-] (and optionally
-    ``heading`` [rad]), one sea state a row ('#' starts a comment line, as in RAO tables), checked as it is read:
-    hs and tp finite and > 0, headings finite and in radians, the probabilities finite, >= 0 and summing to 1
-    (:func:`~seacable.design.fatigue.check_probabilities`, as :func:`~seacable.design.fatigue.fatigue_life` checks
-    them again). Messages name the file's own line numbers."""
-    from .._text import read_text_file
+def design_tables(source, *, storm_duration: float | None = None, quantile: float = 0.9, consequence_class: int = 1,
+                  offset_limit: float | None = None, allowed_uplift: float = 0.0, tn_curve: str | None = None,
+                  nominal_diameter: float | None = None, scatter: pd.DataFrame | str | Path | None = None,
+                  visit: Callable[[Run, xr.Dataset], None] | None = None) -> tuple[list[Run], dict[str, pd.DataFrame]]:
+    """The runs of ``source`` and their design tables, each result read once.
 
-    path = Path(path)
-    text = read_text_file(path, "scatter diagram", "give a CSV file with columns hs, tp, probability")
-    reader = csv.reader(io.StringIO(text, newline=""))
-    numbered = [(reader.line_num, r) for r in reader
-                if any(c.strip() for c in r) and not r[0].lstrip().startswith("#")]
-    header = [h.strip().lower() for h in numbered[0][1]] if numbered else []
-    need = ["hs", "tp", "probability"]
-    missing = [c for c in need if c not in header]
-    if missing or len(numbered) < 2:
-        semicolons = bool(numbered) and len(numbered[0][1]) == 1 and ";" in numbered[0][1][0]
-        raise InputError(f"scatter diagram '{path}' needs a header with columns hs [m], tp [s], probability [-] "
-                         f"and one sea state a row; {'it lacks ' + ', '.join(missing) if missing else 'it has no row'}"
-                         f"{' (its columns are separated by semicolons)' if semicolons else ''}. Suggested fix: e.g. "
-                         "'hs,tp,probability' then '2.0,8.0,0.6' (commas between columns, a point for decimals).")
-    cols = [c for c in ("hs", "tp", "heading", "probability") if c in header]
-    out, lines = [], []
-    for k, row in numbered[1:]:
-        try:
-            out.append([float(row[header.index(c)]) for c in cols])
-        except (ValueError, IndexError):
-            raise InputError(f"scatter diagram '{path}' line {k}: expected numbers in columns {', '.join(cols)}, got "
-                             f"{row}. Suggested fix: one sea state a row, SI units (m, s, rad).") from None
-        lines.append(k)
-    table = pd.DataFrame(out, columns=cols)
-    for col, unit in (("hs", "m"), ("tp", "s")):
-        bad = np.flatnonzero(~(np.isfinite(table[col].to_numpy()) & (table[col].to_numpy() > 0)))
-        if bad.size:
-            raise InputError(f"scatter diagram '{path}' line {lines[bad[0]]}: {col} = {table[col].iloc[bad[0]]:g} "
-                             f"{unit}; it must be a finite number > 0 {unit}. Suggested fix: one sea state a row, SI "
-                             "units (m, s, rad).")
-    if "heading" in table:
-        heading = table["heading"].to_numpy()
-        bad = np.flatnonzero(~np.isfinite(heading))
-        if bad.size:
-            raise InputError(f"scatter diagram '{path}' line {lines[bad[0]]}: heading is not a finite number (rad). "
-                             "Suggested fix: give the heading in radians.")
-        if np.any(np.abs(heading) > 2 * np.pi):
-            # the same rule as an RAO table's headings: beyond a full turn they are degrees
-            k = int(np.argmax(np.abs(heading) > 2 * np.pi))
-            raise InputError(f"scatter diagram '{path}' line {lines[k]}: heading = {heading[k]:g} rad, more than a "
-                             "full turn (2 pi rad): it looks like degrees. Suggested fix: give the headings in radians "
-                             "(180 deg = 3.1416 rad).")
-    fatigue.check_probabilities(table["probability"].to_numpy(), f"scatter diagram '{path}'")
-    return table
+    :func:`read_results`, then :func:`seed_table`, :func:`extremes_table`, :func:`checks_table` and
+    :func:`fatigue_table` of its runs (the same tables, to the bit) made in one pass over the results: a result
+    file is opened once, not once per table. The options are checked before any result is read.
 
+    Parameters
+    ----------
+    source
+        What :func:`read_results` reads.
+    visit
+        Called as ``visit(run, ds)`` with each run and its result while it is open, after the tables took it.
+    storm_duration, quantile, consequence_class, offset_limit, allowed_uplift, tn_curve, nominal_diameter, scatter
+        As the tables take them.
 
-def _scatter_probabilities(runs: Sequence[Run], scatter) -> dict[str, float]:
-    """Each load case's share of the scatter diagram's probability, matched on hs and tp (and heading)."""
-    table = scatter if isinstance(scatter, pd.DataFrame) else read_scatter(scatter)
-    keys = [c for c in ("hs", "tp", "heading") if c in table.columns]
-    paths = {"hs": HS_PATH, "tp": TP_PATH, "heading": HEADING_PATH}
-    states: dict[str, tuple] = {}
-    for run in runs:
-        missing = [paths[k] for k in keys if run.parameters.get(paths[k]) is None]
-        if missing:
-            raise InputError(f"load case '{run.load_case}' has no {', '.join(missing)}: it cannot be matched to the "
-                             "scatter diagram. Suggested fix: sweep irregular seas (environment.waves with spectrum, "
-                             "hs and tp), or leave out the scatter diagram.")
-        states.setdefault(run.load_case, tuple(float(run.parameters[paths[k]]) for k in keys))
+    Returns
+    -------
+    runs : list of Run
+    tables : dict of pandas.DataFrame
+        ``seeds``, ``extremes``, ``checks`` and ``fatigue``.
+    """
+    _check_storm(storm_duration)
+    statistics._probability(quantile)
+    _check_offset_limit(offset_limit)
+    curve_given = _fatigue_options(tn_curve, nominal_diameter)
+    seed_rows: list[dict] = []
+    facts: dict[str, dict] = {}
+    damage: dict = {}
+    intact: list[Run] = []
 
-    def same(a, b):
-        return all(math.isclose(x, y, rel_tol=1e-6, abs_tol=1e-9) for x, y in zip(a, b))
+    def take(run: Run, ds: xr.Dataset) -> None:
+        seed_rows.extend(_seed_rows(run, ds, storm_duration, quantile))
+        _add_check_facts(facts, run, ds)
+        if _add_fatigue(damage, ds, run, curve_given, nominal_diameter):
+            intact.append(run)
+        if visit is not None:
+            visit(run, ds)
 
-    def show(values):
-        units = {"hs": "m", "tp": "s", "heading": "rad"}
-        return ", ".join(f"{k} = {v:.4g} {units[k]}" for k, v in zip(keys, values))
-
-    out = {}
-    for _, row in table.iterrows():
-        values = tuple(float(row[k]) for k in keys)
-        matched = [lc for lc, s in states.items() if same(s, values)]
-        if not matched:
-            raise InputError(f"the scatter diagram's sea state {show(values)} (probability {row['probability']:.4g}) "
-                             f"has no case in the results (their sea states: "
-                             f"{'; '.join(sorted({show(s) for s in states.values()}))}). Suggested fix: add it to "
-                             "the sweep, or merge it into a neighbouring sea state of the diagram.")
-        for lc in matched:
-            out[lc] = out.get(lc, 0.0) + float(row["probability"]) / len(matched)
-    lonely = [lc for lc in states if lc not in out]
-    if lonely:
-        raise InputError(f"load case(s) {', '.join(repr(x) for x in lonely)} ({show(states[lonely[0]])}) have no sea "
-                         "state in the scatter diagram. Suggested fix: add the sea state to the diagram (with its "
-                         "probability), or leave the case out of the sweep.")
-    return out
+    runs = read_results(source, take)
+    seeds = _seed_frame(seed_rows)
+    extremes = extremes_table(seeds, storm_duration=storm_duration, quantile=quantile)
+    checks = _checks_of_facts(facts, extremes, consequence_class, offset_limit, allowed_uplift, None)
+    return runs, {"seeds": seeds, "extremes": extremes, "checks": checks,
+                  "fatigue": _fatigue_of(damage, intact, scatter)}

@@ -5,6 +5,7 @@ offsets in closed form, fatigue damage and life over a scatter diagram in closed
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -347,3 +348,53 @@ def test_fatigue_counts_the_intact_runs_only(synth, tmp_path):
     assert list(fat["line"]) == ["L1", "L2"] and list(fat["probability"]) == [1.0, 1.0]
     assert list(fat["damage"]) == pytest.approx([200 * (r / area / 1e6) ** 3 / 6.0e10 for r in (1e6, 3e6)],
                                                 rel=1e-12)
+
+
+def test_design_tables_are_the_tables_made_one_by_one_from_one_read_of_each_file(synth, tmp_path, monkeypatch):
+    """design_tables (the report's reading) gives the tables of seed_table, extremes_table, checks_table and
+    fatigue_table to the bit, and opens each result file once (the four tables read every file again: 44 opens
+    for the report of 10 runs); the visitor sees each run, in order, with its result open."""
+    import pandas as pd
+    import xarray as xr
+
+    runs = []  # two sea states of two seeds, a line failed in one run (16 Weibull fits in all: a second)
+    for hs in (4.0, 8.0):
+        for seed in range(2):
+            track = np.c_[np.linspace(0.0, 3.0 + 3 * seed, 600), np.zeros(600)]
+            ds = synth.result({"L1": _record(seed, n=600, mean=hs * 5e5)}, body_xy=track,
+                              failure_time={"L1": 10.0} if (hs, seed) == (8.0, 1) else None,
+                              case=synth.case(name=f"s{hs:g}_{seed}", hs=hs, tp=10.0, seed=seed, lines=("L1",)))
+            runs.append(({"environment.waves.hs": hs, "environment.waves.tp": 10.0,
+                          "environment.waves.seed": float(seed)}, ds))
+    folder = synth.sweep(tmp_path / "sw", runs)
+    scatter = tmp_path / "scatter.csv"
+    scatter.write_text("hs,tp,probability\n4.0,10.0,0.7\n8.0,10.0,0.3\n")
+    options = {"storm_duration": 10800.0, "quantile": 0.8}
+    found = summary.read_results(folder)
+    seeds = summary.seed_table(found, **options)
+    ext = summary.extremes_table(seeds, **options)
+    want = {"seeds": seeds, "extremes": ext,
+            "checks": summary.checks_table(found, ext, consequence_class=2, offset_limit=5.0, allowed_uplift=1e6),
+            "fatigue": summary.fatigue_table(found, tn_curve="studless", scatter=scatter)}
+
+    opened = []
+    open_dataset = xr.open_dataset
+
+    def counted(path, *args, **kwargs):
+        opened.append(Path(path).name)
+        return open_dataset(path, *args, **kwargs)
+
+    monkeypatch.setattr(xr, "open_dataset", counted)
+    seen = []
+    got_runs, got = summary.design_tables(folder, consequence_class=2, offset_limit=5.0, allowed_uplift=1e6,
+                                          tn_curve="studless", scatter=scatter,
+                                          visit=lambda run, ds: seen.append((run.name, float(ds.time[-1]))), **options)
+    assert sorted(opened) == [f"{k:04d}.nc" for k in range(4)] + ["summary.nc"]
+    assert [(r.name, r.load_case, r.seed, r.parameters) for r in got_runs] == [
+        (r.name, r.load_case, r.seed, r.parameters) for r in found]
+    assert seen == [(r.name, 299.5) for r in found]
+    assert list(got) == list(want)
+    for key, table in want.items():
+        pd.testing.assert_frame_equal(got[key], table, check_exact=True, obj=key)
+    assert set(got["checks"]["status"]) == {"pass", "FAIL", "not checked: line 'L1' failed at t = 10 s"}
+    assert got["fatigue"]["seeds"].tolist() == [2, 1]
