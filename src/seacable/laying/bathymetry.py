@@ -216,6 +216,14 @@ class SeabedMap:
                 self.bounds = (a.min(), a.max(), b.min(), b.max())
 
     @property
+    def compiled(self) -> bool:
+        """Whether the depth is looked up by compiled code (a KP table, the route located by
+        :func:`._lookup_kernel.nearest_on_legs`; a regular grid in x and y, :class:`_Bilinear`): quick enough that a
+        laying run need not remember the points it looked up."""
+        return (self.table is not None and self._interp is None) or (isinstance(self._interp, _Bilinear)
+                                                                      and self.kind == "xy")
+
+    @property
     def flat(self) -> bool:
         """Whether the depth is the same everywhere (no KP table, no grid)."""
         return self._interp is None and self.table is None
