@@ -38,6 +38,12 @@ same results to the bit), CPU s of ``seacable.run`` (time.process_time, best of 
 the shared machine, whose wall times varied twofold), before -> after: 1 m segments at 1 m/s 1.54-1.83 ->
 1.10-1.27; 2 m segments at 1 m/s 0.52-0.66 -> 0.40-0.47; 1 m segments at 2 m/s 4.09-4.86 -> 4.03-4.21 (445 nodes:
 the kernel's time); the whole benchmark process 0.74 of the CPU time before (median of 3 pairs).
+Then (issue 38: the step kernel's node matrices, assembly and chords compiled for the dimension as a constant;
+the seabed's look-ups of a 3-D lay compiled, a KP table's route location and a grid's bilinear depth, without the
+memory of looked-up points; the same results to the bit), best of 3 wall s on the loaded shared machine,
+2026-11-30, one run each, before -> after: 1 m segments at 1 m/s 1.25 -> 0.93; 2 m segments at 1 m/s 0.36 ->
+0.31; 1 m segments at 2 m/s 3.53 -> 2.73; ``--sliding``: held 6.28 -> 5.10, mu = 0.5 13.08 -> 9.91, mu = 0.2
+12.08 -> 11.01.
 """
 
 from __future__ import annotations

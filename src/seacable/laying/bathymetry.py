@@ -205,12 +205,23 @@ class SeabedMap:
             if d.ndim == 2:
                 d = np.where(np.isinf(d), np.nan, d)
                 rgi = RegularGridInterpolator((b, a), d, bounds_error=False, fill_value=np.nan)
-                self._interp = lambda p, f=rgi: f(np.stack([p[..., 1], p[..., 0]], axis=-1))
+                if min(d.shape) > 1:
+                    self._interp = _Bilinear(rgi)
+                else:                  # (a line of points: scipy's own branch for it)
+                    self._interp = lambda p, f=rgi: f(np.stack([p[..., 1], p[..., 0]], axis=-1))
                 self.bounds = (a[0], a[-1], b[0], b[-1])
             else:
                 lnd = LinearNDInterpolator(np.column_stack([a, b]), d)
                 self._interp = lambda p, f=lnd: f(p[..., 0], p[..., 1])
                 self.bounds = (a.min(), a.max(), b.min(), b.max())
+
+    @property
+    def compiled(self) -> bool:
+        """Whether the depth is looked up by compiled code (a KP table, the route located by
+        :func:`._lookup_kernel.nearest_on_legs`; a regular grid in x and y, :class:`_Bilinear`): quick enough that a
+        laying run need not remember the points it looked up."""
+        return (self.table is not None and self._interp is None) or (isinstance(self._interp, _Bilinear)
+                                                                      and self.kind == "xy")
 
     @property
     def flat(self) -> bool:
@@ -258,6 +269,27 @@ class SeabedMap:
         x0, x1, y0, y1 = self.bounds
         unit = "m" if self.kind == "xy" else "degree"
         return f"{x0:g}..{x1:g} x {y0:g}..{y1:g} {unit}"
+
+
+class _Bilinear:
+    """``RegularGridInterpolator((y, x), depth)`` (linear, NaN outside) at points (..., 2) of (x, y), without its
+    per-call checks and dispatch (a grid is looked up several times a time step): compiled, with scipy's arithmetic
+    operation for operation (:func:`._lookup_kernel.bilinear`) on the interpolator's own grid lines and depths (its
+    lines ascending). For grids of at least 2 x 2 points.
+    """
+
+    def __init__(self, rgi):
+        self.gy, self.gx = (np.ascontiguousarray(g, float) for g in rgi.grid)
+        self.values = np.ascontiguousarray(rgi.values, float)
+
+    def __call__(self, p: np.ndarray) -> np.ndarray:
+        from ._lookup_kernel import bilinear
+
+        p = np.asarray(p, float)
+        out = np.empty(p[..., 0].size)
+        bilinear(self.gx, self.gy, self.values, np.ascontiguousarray(p[..., 0]).ravel(),
+                 np.ascontiguousarray(p[..., 1]).ravel(), out)
+        return out.reshape(p.shape[:-1] or (1,))       # (one point: shape (1,), as scipy gives it)
 
 
 def seabed_map(route: RouteGeometry, bathymetry: Bathymetry | None, grid: BathymetryGrid | None,

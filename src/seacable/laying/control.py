@@ -5,10 +5,19 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .inputs import PayoutBottomTension, PayoutRate, PayoutSlack, ShipMotion, schedule_value
 from .kernel import P_COMPLIANCE, P_WEIGHT
 
 __all__ = ["Control"]
+
+
+def _table(times, values) -> tuple:
+    """A schedule's times and values as float arrays (``(None, None)`` for none)."""
+    if times is None:
+        return None, None
+    return np.asarray(times, float), np.asarray(values, float)
 
 
 class Control:
@@ -19,6 +28,10 @@ class Control:
         self.ship, self.payout, self.par = ship, payout, par
         # a constant speed as ShipMotion.scheduled gives it (asked for three times a step)
         self._constant = None if ship.times is not None else float(ship.speed)
+        # the schedules as arrays, made once: numpy.interp converts a tuple on every call (a lay table's hundreds of
+        # rows, several times a step), to the same float64 values
+        self._ship_table = _table(ship.times, ship.speeds)
+        self._payout_table = _table(getattr(payout, "times", None), getattr(payout, "speeds", None))
         self.speed = self.scheduled(0.0)
         self.off_schedule = False
         # the filter starts at the target: the payout starts at the feed-forward and follows the
@@ -34,7 +47,7 @@ class Control:
 
     def scheduled(self, t: float) -> float:
         """The ship's scheduled speed at ``t`` (:meth:`ShipMotion.scheduled`). [m/s]"""
-        return self._constant if self._constant is not None else self.ship.scheduled(t)
+        return self._constant if self._constant is not None else schedule_value(t, None, *self._ship_table)
 
     def ship_speed(self, t_new: float, dt: float, repeater_in_water: bool) -> float:
         """Ship speed at ``t_new``: the schedule, or the repeater speed approached at the acceleration
@@ -65,7 +78,7 @@ class Control:
         """
         p = self.payout
         if self._rate:
-            return schedule_value(t, p.speed, p.times, p.speeds)
+            return schedule_value(t, p.speed, *self._payout_table)
         if not self.uses_geometry:
             return (1.0 + p.slack) * vs
         slope, h_td, cot_alpha, turn = geometry

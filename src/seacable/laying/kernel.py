@@ -104,7 +104,7 @@ def current_at(z, depths, speeds):
     return np.interp(-z, depths, speeds)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _water_velocity(z, depths, current, dim, out):
     """Current velocity at elevation ``z`` (the last coordinate) from a profile table: ``current[k]`` at
     ``depths[k]`` below the surface, linear between, constant beyond."""
@@ -123,7 +123,7 @@ def _water_velocity(z, depths, current, dim, out):
         out[d] = current[k, d] + f * (current[k + 1, d] - current[k, d])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _invert_sym(a, dim, out):
     """Inverse of a symmetric positive-definite 2x2 or 3x3 matrix (its adjugate over its determinant)."""
     if dim == 2:
@@ -145,6 +145,16 @@ def _invert_sym(a, dim, out):
 
 @njit(cache=True)
 def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b):
+    """:func:`_node_matrices_dim` with the dimension (2 or 3) a constant of the compiled code, which unrolls its
+    small loops: the same arithmetic, operation for operation."""
+    if pos.shape[1] == 2:
+        _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, 2)
+    else:
+        _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, 3)
+
+
+@njit(cache=True, inline="always")
+def _node_matrices_dim(pos, vel, L, seg_type, props, point, depths, current, rho, dt, contact, normal, G, b, dim):
     """Fill ``G_i = dt^2 A_i^-1`` and the free-motion positions ``b_i`` of the free nodes.
 
     ``A_i = M_i + dt C_i``: the node's mass, the added mass ``e_n (I - t t^T) + e_t t t^T`` of each half
@@ -159,7 +169,7 @@ def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt
 
     so the Newton system keeps its blocks (``G'`` is singular along ``n``, and ``I + G' K`` is not).
     """
-    npt, dim = pos.shape
+    npt = pos.shape[0]
     up = dim - 1                                  # the vertical coordinate
     a = np.empty((dim, dim))
     u = np.empty(dim)
@@ -232,7 +242,7 @@ def _node_matrices(pos, vel, L, seg_type, props, point, depths, current, rho, dt
             _on_plane(G[i], b[i], pos[i], normal[i], dim)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _on_plane(g, b, p0, n, dim):
     """Restrict the node form ``r = b + g F`` to the plane through ``p0`` normal to the unit ``n`` (in place)."""
     gn = np.empty(dim)
@@ -487,7 +497,7 @@ def drag_anchors(pos, contact, normal, anchor, slip):
     return most
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _norm_g_d(g, dfric, dim):
     """Largest absolute row sum of ``g dfric`` (the friction's part of a seabed node's diagonal block)."""
     big = 0.0
@@ -504,8 +514,17 @@ def _norm_g_d(g, dfric, dim):
 
 @njit(cache=True)
 def _chords(r, c, ell):
-    """Unit chords ``c`` and lengths ``ell`` of the segments of ``r``."""
-    dim = r.shape[1]
+    """Unit chords ``c`` and lengths ``ell`` of the segments of ``r`` (:func:`_chords_dim`, the dimension a
+    constant of the compiled code)."""
+    if r.shape[1] == 2:
+        _chords_dim(r, c, ell, 2)
+    else:
+        _chords_dim(r, c, ell, 3)
+
+
+@njit(cache=True, inline="always")
+def _chords_dim(r, c, ell, dim):
+    """:func:`_chords` in ``dim`` dimensions."""
     for j in range(c.shape[0]):
         ln = 0.0
         for d in range(dim):
@@ -519,6 +538,14 @@ def _chords(r, c, ell):
 
 @njit(cache=True)
 def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed):
+    """:func:`_assemble_dim` with the dimension (2 or 3) a constant of the compiled code (as :func:`_node_matrices`)."""
+    if c.shape[1] == 2:
+        return _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, 2)
+    return _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, 3)
+
+
+@njit(cache=True, inline="always")
+def _assemble_dim(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seabed, dim):
     """Newton system of the step in block tri-diagonal form; returns the scaled residual.
 
     Block ``k`` holds the unknowns ``(T_k, r_{k+1})`` (the last block only ``T_{N-1}``) and the equations
@@ -531,7 +558,7 @@ def _assemble(r, b, G, T, active, c, ell, L, comp, lower, diag, upper, rhs, seab
     seabed adds its friction (:func:`_friction`) to the force. The right side is minus the residual.
     """
     contact, normal, grip, anchor, slip = seabed
-    nseg, dim = c.shape
+    nseg = c.shape[0]
     vp = np.empty(dim)
     dfric = np.zeros((dim, dim))
     nfree = nseg - 1

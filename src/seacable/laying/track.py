@@ -72,7 +72,8 @@ class Track3D:
 
     The time loop asks for the seabed under the same nodes several times a step (landing, the touchdown point,
     the output), and a KP table locates every point on the route: ``zb`` remembers the points it was last asked
-    for (:class:`_Memo`), and looks up only the others. ``point`` and ``direction`` remember the last distance
+    for (:class:`_Memo`), and looks up only the others (not for a seabed looked up by compiled code, a KP table or a
+    regular grid in x and y, ``seabed.compiled``: there the memory costs more than the look-ups). ``point`` and ``direction`` remember the last distance
     run asked for (the ship's, several times a step).
     """
 
@@ -83,7 +84,7 @@ class Track3D:
         self._steps = delta * np.eye(2)   # the central differences' steps along x and y
         shallowest = getattr(seabed, "shallowest", math.nan)
         self.highest = -shallowest if math.isfinite(shallowest) else math.inf   # highest seabed elevation [m]
-        self._memo = None if getattr(seabed, "flat", False) else _Memo()
+        self._memo = None if getattr(seabed, "flat", False) or getattr(seabed, "compiled", False) else _Memo()
         self._last = {}                   # the last distance run asked for, by what was asked: (d, value)
 
     def point(self, d: float) -> np.ndarray:
@@ -106,8 +107,8 @@ class Track3D:
         p = np.asarray(ph, float)
         if not strict:
             return -self.seabed.depth(p)
-        if self._memo is None:
-            return self._elevation(p)
+        if self._memo is None:           # (rows of points, as the memory asks: a grid gives one point's depth as
+            return self._elevation(p.reshape(-1, 2)).reshape(p.shape[:-1])     # shape (1,))
         return self._memo.get(p, self._elevation)
 
     def _elevation(self, p: np.ndarray) -> np.ndarray:
