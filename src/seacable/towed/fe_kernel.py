@@ -61,7 +61,8 @@ def _copy_element(src, dst, arrays, ts_lo, ts_hi, visco):
     ts_lo[dst] = ts_lo[src]
     ts_hi[dst] = ts_hi[src]
     if visco.shape[0] > 0:
-        visco[dst] = visco[src]
+        for c in range(visco.shape[1]):  # a loop: numba's row assignment compiles its error message (4 CPU-s)
+            visco[dst, c] = visco[src, c]
 
 
 @njit(cache=True)
