@@ -23,7 +23,9 @@ functions with one (``system.dynamics.frames.track_frame``, ``towed.fe_kernel.re
 message once per pair of shapes, for whichever function asks first, so it goes only when the last one does
 (2026-11-29 23:55, loaded machine: families 134, 48, 40, 24, 29, 36 CPU-s). With those loops too: 2.9 CPU-s,
 asked by ``towed.scheme._body_force`` and numba's own ``np.linalg.solve`` (2026-11-30 00:44); after
-``_body_force``'s in-place row update (``df[d, :] -= ...``) became a loop, numba's ``np.linalg.solve`` alone.
+``_body_force``'s in-place row update (``df[d, :] -= ...``) became a loop, ``towed.fe_kernel._copy_element`` asked
+first (4.1 CPU-s: a viscoelastic row copied); with that a loop too, numba's own ``np.linalg.solve`` alone (0.3
+CPU-s; every family from an empty cache, 2026-11-30 03:20).
 
 Tried and not kept (2026-11-30, loaded machine, one example a family from an empty cache, CPU-s): numba's own
 compile dominates, not LLVM's (``NUMBA_OPT=0``: 115 instead of 136 CPU-s for the mooring family, 48 and 48 for
