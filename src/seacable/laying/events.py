@@ -328,7 +328,7 @@ class _Lay:
 
     def commit(self, dt: float, vs_new: float, x_new: float, vc_new: float) -> None:
         c = self.c
-        self._now = None                     # (changed())
+        self.changed()
         hi = c.hi
         pos, vel, _, new_pos, new_vel = c.window()[:5]
         pos[:] = new_pos
@@ -392,7 +392,7 @@ class _Lay:
         seabed further on.
         """
         c = self.c
-        self._now = None                     # (changed())
+        self.changed()
         lo0 = c.lo
         free = self.seabed_under(c.pos[lo0 + 1:c.hi])     # under the free nodes, in one look-up
         # a seabed rising under the cable holds it up; then the first node on the seabed (landing_row)
