@@ -370,8 +370,11 @@ def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, accele
             mine = np.flatnonzero(local[kinematic_nodes] >= 0)
             moving = {"velocity": velocity[..., mine, :], "acceleration": acceleration[..., mine, :], "time": time,
                       "kinematic_nodes": local[kinematic_nodes[mine]]}
-        line = network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
-                                 own_support=_reads_network(model, view), **moving)
+        # the line's support forces are read at its two end nodes only, where they are its own end loads (the
+        # element tensions stay a fancy-indexed copy: its memory order, which later sums follow)
+        own = _reads_network(model, view)
+        line = network_variables(view, X[..., nodes, :], T[..., els], None, dims=dims, own_support=own,
+                                 end_support=S[..., nodes[[0, -1]], :] if own else None, **moving)
         if n_lines == 1:
             data = line
             coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),
