@@ -23,6 +23,7 @@ or points on a body or turbine are refused here: they run as a mooring system
 
 from __future__ import annotations
 
+import itertools
 import math
 import warnings
 
@@ -128,7 +129,7 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
         c = moordyn_axial_damping(lt.axial_damping, lt.axial_stiffness, lt.mass_per_length, seg)
         # the line's n elements share their line type's values: each list extended by n copies at once
         dyn = lt.dynamic_stiffness
-        elements.extend(zip(ids[:-1], ids[1:]))
+        elements.extend(itertools.pairwise(ids))
         props.extend([(seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
                        lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential)] * n)
         element_line.extend([li] * n)
