@@ -34,10 +34,23 @@ stored support forces (the same floats) instead of evaluating the 1001 outputs a
 network built once per model, a single line's view not checked again, the last block of outputs handed over
 without copies, the sink's variables taken by the Dataset without copies, the finite check without reshaped
 copies, plain floats checked without numpy. Before it: 0.68x and 0.68x (the round before), 0.77x and 0.83x before
-the run path was first leaned; the issue's first figure was 1.09x. The stepping alone is about 0.3x MoorDyn's:
-what is left of the 0.5x is the file (about 1 ms of CPU), the model with its catenary start (3 ms), the statics,
-the exact-catenary check (2 ms: the deck solved as a system) and the outputs and Dataset (6 ms), still nearly as
-long as the stepping.
+the run path was first leaned; the issue's first figure was 1.09x.
+
+The round after: a line's support forces read at its two end nodes only instead of copied for all its nodes, the
+grounded length and the node tensions without their temporaries (each as large as an output variable: about 230
+fewer page faults a call), no second-touchdown profile in the catenary start of a line without buoyancy, a deck
+line's elements listed at once. Thread CPU time, 40 calls of main's source and this one in turn in two warm
+processes, twice (the machine loaded to 5, then to 1.3, on its 2 cores): around the stepping 17.95 -> 16.50 and
+17.62 -> 14.77 ms (medians; paired differences 1.4 and 1.8 ms, wide quartiles), 0.83 -> 0.76 and 0.83 -> 0.78
+times the stepping (20-22 ms there). The race, each source in turn (5 pairs, load 1.3): 0.58x and 0.58x (around
+seacable's stepping 17.2 and 16.7 ms of wall time; MoorDyn's stepping 69 and 60 ms): not met, and the ratio
+follows MoorDyn's own time as much as seacable's. The stepping alone is about 0.3x MoorDyn's: what is left around it (in a
+warm call, thread CPU on that machine) is the file (about 1 ms), the model with its catenary start (2.5-3.5 ms,
+the start's line solve 1.5-2.3 ms), the statics (0.3 ms), the exact-catenary check (1.5-2.3 ms: the deck built
+and solved as a system, which the system statics' own leaning shortens; reusing the start's catenary instead
+would change the check's figure in its last bits), the run's Python side (the motion samples, the start, 1.5-2
+ms) and the outputs and Dataset (about 5 ms: the line's positions copied in its node order, 0.5 ms, kept so
+for the layout later sums follow; its network variables, 2 ms; the Dataset and its checks, 1 ms).
 
 Run: ``python bench/bench_mooring.py [repeat [segments ...]]`` or ``... snap`` (needs ``pip install
 moordyn``; a bench-only dependency).

@@ -278,6 +278,9 @@ def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_
     evaluated = R.line_end_forces(*args)
     read = R.line_end_forces(*args, support=run.support[:, nodes], tension=run.tension[:, els])
     assert np.array_equal(read, evaluated)
+    # the support forces given at the two end nodes only: the same floats
+    ends = R.line_end_forces(*args, end_support=run.support[:, nodes[[0, -1]]], tension=run.tension[:, els])
+    assert np.array_equal(ends, evaluated)
     grounded = R.height_above_seabed(model.water, run.position[:, nodes[0]]) <= float(view.env[R.K_BEDRAMP])
     assert grounded.all()  # the anchor end lies on the seabed: its force comes from the end element's tension
     # and the whole run reads them: no state evaluated for the end forces
@@ -287,3 +290,45 @@ def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_
                                             motion=HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0))
     ds = run_moordyn_case(case)
     assert not calls and ds["fairlead_tension"].size == 21
+
+
+def test_grounded_length_and_node_tensions_are_their_formulas_to_the_bit(tmp_path):
+    """The grounded length (computed in place) and the node tensions (added on slices for a line numbered from
+    end A) of a run's outputs are the floats of their formulas written plainly, states on, off and within the
+    seabed's ramp alike (issue 38: the outputs without temporaries as large as themselves)."""
+    import seacable.mooring.run as R
+    from seacable.mooring.moordyn import _line_views, moordyn_model
+
+    path = tmp_path / "wd0200.txt"
+    path.write_text(WD0200.read_text().replace("760       82", "760       20"))
+    model = moordyn_model(path)
+    view = _line_views(model)[0]
+    nodes, els = model.network.line_nodes[0], np.flatnonzero(model.network.element_line == 0)
+    st = static_equilibrium(model)
+    motion = bind(HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0), model.network.channel_positions(st.position),
+                  10.0)
+    run = simulate(model, motion, 10.0, 0.1, 0.1, initial=st.position)
+    net, water = view.network, view.water
+    X, T = run.position[:, nodes], run.tension[:, els]
+    # the formulas as written before: every intermediate its own array
+    share = np.zeros(net.n_nodes)
+    np.add.at(share, net.elements[:, 0], 0.5 * net.length)
+    np.add.at(share, net.elements[:, 1], 0.5 * net.length)
+    dl = float(view.env[R.K_BEDRAMP])
+    held = (net.kind != R.FREE) | (view.weight <= 0)
+
+    def plain(X):
+        pen = -R.height_above_seabed(water, X)
+        q = np.where(pen >= dl, pen, np.where(pen > -dl, (pen + dl) ** 2 / (4 * dl), 0.0))
+        carried = np.clip(water.seabed_stiffness * view.bedc * q / np.where(held, 1.0, view.weight), 0.0, 1.0)
+        return np.sum(np.where(held, pen >= -dl, carried) * share, axis=-1)
+
+    pen = -R.height_above_seabed(water, X)
+    assert ((pen > -dl) & (pen < dl)).any() and (pen >= dl).any()  # nodes within the ramp and beyond it
+    assert np.array_equal(R.contact_length(view, X), plain(X))
+    assert np.array_equal(R.contact_length(view, X[3]), plain(X[3]))  # one state
+    total, count = np.zeros(T.shape[:-1] + (net.n_nodes,)), np.zeros(net.n_nodes)
+    for end in (0, 1):
+        np.add.at(total, (..., net.elements[:, end]), T)
+        np.add.at(count, net.elements[:, end], 1)
+    assert np.array_equal(R._node_tension(net, T), total / np.maximum(count, 1))

@@ -23,6 +23,7 @@ or points on a body or turbine are refused here: they run as a mooring system
 
 from __future__ import annotations
 
+import itertools
 import math
 import warnings
 
@@ -126,17 +127,17 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
         line_nodes.append(np.array(ids, np.int64))
         seg = L / n
         c = moordyn_axial_damping(lt.axial_damping, lt.axial_stiffness, lt.mass_per_length, seg)
-        for k in range(n):
-            elements.append((ids[k], ids[k + 1]))
-            props.append((seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
-                          lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential))
-            element_line.append(li)
-            tables.append(lt.tension_strain)
-            bending.append(lt.bending_stiffness)
-            dyn = lt.dynamic_stiffness
-            visco.append((dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
-                         if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0))
-            syrope.append((_WC_FORM[wc[0]], wc[1], wc[2], tmax0) if wc is not None else (0.0, 0.0, 0.0, 0.0))
+        # the line's n elements share their line type's values: each list extended by n copies at once
+        dyn = lt.dynamic_stiffness
+        elements.extend(itertools.pairwise(ids))
+        props.extend([(seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
+                       lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential)] * n)
+        element_line.extend([li] * n)
+        tables.extend([lt.tension_strain] * n)
+        bending.extend([lt.bending_stiffness] * n)
+        visco.extend([(dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
+                      if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0)] * n)
+        syrope.extend([(_WC_FORM[wc[0]], wc[1], wc[2], tmax0) if wc is not None else (0.0, 0.0, 0.0, 0.0)] * n)
     special = [lt.name for lt in md.line_types.values() if getattr(lt, "syrope", None) is not None]
     for name in special:
         warnings.warn(f"line type {name} is a Syrope rope: its tension follows its working curves quasi-statically "
@@ -370,8 +371,11 @@ def _variables(model: MooringModel, X, T, S, time=None, *, velocity=None, accele
             mine = np.flatnonzero(local[kinematic_nodes] >= 0)
             moving = {"velocity": velocity[..., mine, :], "acceleration": acceleration[..., mine, :], "time": time,
                       "kinematic_nodes": local[kinematic_nodes[mine]]}
-        line = network_variables(view, X[..., nodes, :], T[..., els], S[..., nodes, :], dims=dims,
-                                 own_support=_reads_network(model, view), **moving)
+        # the line's support forces are read at its two end nodes only, where they are its own end loads (the
+        # element tensions stay a fancy-indexed copy: its memory order, which later sums follow)
+        own = _reads_network(model, view)
+        line = network_variables(view, X[..., nodes, :], T[..., els], None, dims=dims, own_support=own,
+                                 end_support=S[..., nodes[[0, -1]], :] if own else None, **moving)
         if n_lines == 1:
             data = line
             coords = {"node": var("node", np.arange(view.network.n_nodes), "1", "node index, 0 at end A"),

@@ -96,13 +96,19 @@ def _node_tension(net: Network, tension):
     count = np.zeros(net.n_nodes)
     for end in (0, 1):
         nodes = net.elements[:, end]
-        if np.unique(nodes).size == nodes.size:  # each node once (a line): the same additions, without add.at
+        first = int(nodes[0]) if nodes.size else 0
+        if np.array_equal(nodes, np.arange(first, first + nodes.size)):
+            # consecutive nodes (a line numbered from end A): the same additions on a slice, without the copies of
+            # a fancy index
+            total[..., first:first + nodes.size] += tension
+            count[first:first + nodes.size] += 1
+        elif np.unique(nodes).size == nodes.size:  # each node once (a line): the same additions, without add.at
             total[..., nodes] += tension
             count[nodes] += 1
         else:
             np.add.at(total, (..., nodes), tension)
             np.add.at(count, nodes, 1)
-    return total / np.maximum(count, 1)
+    return np.divide(total, np.maximum(count, 1), out=total)
 
 
 def contact_length(model: MooringModel, X):
@@ -123,18 +129,34 @@ def contact_length(model: MooringModel, X):
     np.add.at(share, net.elements[:, 0], 0.5 * net.length)
     np.add.at(share, net.elements[:, 1], 0.5 * net.length)
     dl = float(model.env[K_BEDRAMP])
-    pen = -height_above_seabed(water, X)
+    # the penetration -height_above_seabed(water, X) by the same operations, in two arrays instead of five (a
+    # run's block of outputs: each temporary is as large as an output variable)
+    sl = water.slope
+    pen = np.multiply(X[..., 0], -math.sin(sl))
+    depth = np.add(X[..., 2], water.depth)
+    np.multiply(depth, math.cos(sl), out=depth)
+    np.add(pen, depth, out=pen)
+    np.negative(pen, out=pen)
     touching = pen >= -dl
     kb = water.seabed_stiffness
     if kb > 0:
-        q = np.where(pen >= dl, pen, np.where(pen > -dl, (pen + dl) ** 2 / (4 * dl), 0.0))
+        # q: the penetration beyond the ramp, the ramp's (pen + dl)^2 / (4 dl) on it, 0 above it; then the
+        # fraction of each node's weight the seabed carries (a held node's: touching), each in place
+        bed = pen >= dl
+        ramp = (pen > -dl) & ~bed
+        q = depth
+        q.fill(0.0)
+        q[bed] = pen[bed]
+        q[ramp] = (pen[ramp] + dl) ** 2 / (4 * dl)
         weight = model.weight
         held = (net.kind != FREE) | (weight <= 0)
-        carried = np.clip(kb * model.bedc * q / np.where(held, 1.0, weight), 0.0, 1.0)
-        frac = np.where(held, touching, carried)
+        np.multiply(kb * model.bedc, q, out=q)
+        np.divide(q, np.where(held, 1.0, weight), out=q)
+        frac = np.clip(q, 0.0, 1.0, out=q)
+        frac[..., held] = touching[..., held]
     else:
         frac = (pen >= 0).astype(float)
-    return np.sum(frac * share, axis=-1)
+    return np.sum(np.multiply(frac, share, out=frac), axis=-1)
 
 
 def _own_model(model: MooringModel) -> MooringModel:
@@ -219,7 +241,7 @@ def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
 
 
 def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None, *, support=None,
-                    tension=None):
+                    tension=None, end_support=None):
     """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
 
     The pull of the end element plus the loads lumped at the end node from that line's half element
@@ -233,7 +255,8 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
     element tensions at these states, as :func:`seacable.mooring.solver.static_equilibrium` or
     :func:`seacable.mooring.solver.simulate` store them (evaluated with ``model``'s environment). Where they are
     the line's own end loads (:func:`_reads_support`) the end forces are read from them, the same floats as the
-    evaluation gives, without evaluating the states again.
+    evaluation gives, without evaluating the states again. ``end_support`` (..., 2, 3), instead of ``support``:
+    those support forces at the line's two end nodes only (end A, end B), all that is read of them.
     """
     setup = _end_setup(model)
     own, ends, nbrs, end_el = setup["own"], setup["ends"], setup["nbrs"], setup["end_el"]
@@ -243,8 +266,10 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
     lead = X.shape[:-2]
     nt = int(np.prod(lead, dtype=np.int64))
     Xs = X.reshape((nt,) + X.shape[-2:])
-    if support is not None and tension is not None and _reads_support(own, model, time):
-        out = np.asarray(support, float).reshape((nt,) + X.shape[-2:])[:, ends]
+    given = support is not None or end_support is not None
+    if given and tension is not None and _reads_support(own, model, time):
+        out = (np.asarray(support, float).reshape((nt,) + X.shape[-2:])[:, ends] if end_support is None
+               else np.array(end_support, float).reshape((nt, 2, 3)))
         tension = np.asarray(tension, float).reshape((nt, -1))[:, end_el]
     else:
         out, tension = _evaluate_ends(model, own, Xs, lead, V, A, time, kinematic_nodes)
@@ -305,14 +330,15 @@ def _fairlead_end(net: Network) -> tuple[int, int]:
 
 
 def network_variables(model: MooringModel, X, tension, support, dims=("node",), *, velocity=None,
-                      acceleration=None, time=None, kinematic_nodes=None, own_support=False):
+                      acceleration=None, time=None, kinematic_nodes=None, own_support=False, end_support=None):
     """Shape, tensions and end forces of one line at one or more states.
 
     ``fairlead_tension`` and ``anchor_tension`` are the line's own end tensions
     (:func:`line_end_forces`); ``support`` (the force on each node's support, every line and
     attachment there) is not used for them, unless ``own_support``: ``support`` and ``tension`` are then
     ``model``'s own at these states (a static solve's or a time loop's, evaluated with ``model``'s
-    environment), read where they hold the line's end loads (:func:`line_end_forces`). Give ``velocity``,
+    environment), read where they hold the line's end loads (:func:`line_end_forces`); ``end_support``
+    (..., 2, 3) gives those support forces at the line's two end nodes only (``support`` then unused). Give ``velocity``,
     ``acceleration`` and ``time`` of a time-domain run so that the end forces include the half element's
     water loads and inertia (``kinematic_nodes``: the nodes they hold, None for all).
     """
@@ -321,7 +347,8 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     net = model.network
     lead = tuple(dims[:-1])
     ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes,
-                           **({"support": support, "tension": tension} if own_support else {}))
+                           **({"support": support, "tension": tension, "end_support": end_support} if own_support
+                              else {}))
     anchor, fair = _fairlead_end(net)
     data = {
         "x": var(dims, X[..., 0], "m", "x position"),

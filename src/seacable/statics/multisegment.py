@@ -437,6 +437,10 @@ def _check_representable(line: _Line, H, V_A, kind, itd, s_td, L):
         if line.jump[k] < 0.0:
             raise NoSolutionError(f"the buoy at s = {line.nodes[k]:.6g} m ({line.jump[k]:.6g} N) lies "
                                   f"on the grounded part; it would lift off in a second span, {fix}")
+    if np.all(line.w >= 0.0) and np.all(line.jump >= 0.0):
+        # no buoyancy: V = V_A + W(s) never falls along the line, so past the touchdown (V > 0) every piece rises
+        # (dz >= 0, its elastic stretch too) and no span can dip below the seabed: the profile is not needed
+        return
     prof = _profile(line, H, V_A, 20)                        # includes every V = 0 point
     susp = prof.s > s_td
     if susp.any() and prof.z[susp].min() < -1e-9 * L:
