@@ -73,6 +73,10 @@ _VARIABLES = {
     "point_y": (("point",), "m", "y of the point"),
     "point_z": (("point",), "m", "z of the point (0 at the still water level)"),
 }
+#: the dimensions of :data:`_VARIABLES` -> their names, and each name's row in the block of its dimensions
+_BY_DIMS = {dims: tuple(n for n, v in _VARIABLES.items() if v[0] == dims)
+            for dims in (("line",), ("body",), ("point",))}
+_ROW = {name: names.index(name) for names in _BY_DIMS.values() for name in names}
 _MATRICES = {
     "stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
                   "mooring stiffness of the free body, lines only, about its reference point (NaN: not free)"),
@@ -441,25 +445,27 @@ def equilibrium_variables(eq, system: MooringSystem, setup: SystemSetup) -> dict
     of the line at end B below the horizontal.
     """
     nl, nb, npt = len(setup.lines), len(setup.bodies), len(setup.points)
-    out = {name: _nan((nl,) if dims == ("line",) else (nb,) if dims == ("body",) else (npt,))
-           for name, (dims, _, _) in _VARIABLES.items()}
+    # the variables of each dimension rows of one block (NaN where the system lacks the item)
+    blocks = {dims: np.full((len(names), size), np.nan)
+              for (dims, names), size in zip(_BY_DIMS.items(), (nl, nb, npt))}
+    out = {name: blocks[dims][_ROW[name]] for name, (dims, _, _) in _VARIABLES.items()}
     out.update({name: _nan((nb, 6, 6)) for name in _MATRICES})
     li = {n: i for i, n in enumerate(eq.line_names)}
-    for j, name in enumerate(setup.lines):
-        if name not in li:
-            continue
-        i = li[name]
-        fa, fb = np.asarray(eq.end_a_force[i], float), np.asarray(eq.end_b_force[i], float)
-        ha, hb = math.hypot(fa[0], fa[1]), math.hypot(fb[0], fb[1])
-        out["anchor_tension"][j] = eq.end_a_tension[i]
-        out["fairlead_tension"][j] = eq.end_b_tension[i]
-        out["anchor_horizontal_force"][j] = ha
-        out["anchor_vertical_force"][j] = fa[2]
-        out["anchor_uplift_angle"][j] = math.atan2(fa[2], ha)
-        out["fairlead_angle"][j] = math.atan2(-fb[2], hb)
+    rows = [j for j, name in enumerate(setup.lines) if name in li]
+    if rows:
+        at = [li[setup.lines[j]] for j in rows]
+        fa, fb = np.asarray(eq.end_a_force, float)[at], np.asarray(eq.end_b_force, float)[at]
+        ha = [math.hypot(f[0], f[1]) for f in fa.tolist()]
+        hb = [math.hypot(f[0], f[1]) for f in fb.tolist()]
+        out["anchor_tension"][rows] = np.asarray(eq.end_a_tension, float)[at]
+        out["fairlead_tension"][rows] = np.asarray(eq.end_b_tension, float)[at]
+        out["anchor_horizontal_force"][rows] = ha
+        out["anchor_vertical_force"][rows] = fa[:, 2]
+        out["anchor_uplift_angle"][rows] = [math.atan2(f[2], h) for f, h in zip(fa.tolist(), ha)]
+        out["fairlead_angle"][rows] = [math.atan2(-f[2], h) for f, h in zip(fb.tolist(), hb)]
         for k, c in enumerate("xyz"):
-            out[f"fairlead_force_{c}"][j] = fb[k]
-        out["grounded_length"][j] = eq.grounded_length[i]
+            out[f"fairlead_force_{c}"][rows] = fb[:, k]
+        out["grounded_length"][rows] = np.asarray(eq.grounded_length, float)[at]
     bi = {n: i for i, n in enumerate(eq.body_names)}
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     for j, name in enumerate(setup.bodies):
@@ -476,22 +482,30 @@ def equilibrium_variables(eq, system: MooringSystem, setup: SystemSetup) -> dict
             out["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
             out["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
     pi = {n: i for i, n in enumerate(eq.point_names)}
-    for j, name in enumerate(setup.points):
-        if name in pi:
-            for k, c in enumerate("xyz"):
-                out[f"point_{c}"][j] = eq.point_position[pi[name]][k]
+    rows = [j for j, name in enumerate(setup.points) if name in pi]
+    if rows:
+        positions = np.asarray(eq.point_position, float)[[pi[setup.points[j]] for j in rows]]
+        for k, c in enumerate("xyz"):
+            out[f"point_{c}"][rows] = positions[:, k]
     return out
 
 
 def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
     nl = len(setup.lines)
     out = {name: _nan((nl, n)) for name in _PROFILE}
-    for j, name in enumerate(setup.lines):
-        if name in eq.line_names:
-            positions, tension = eq.line_profile(name, n)
-            positions = np.asarray(positions, float)
-            out["x"][j], out["y"][j], out["z"][j] = positions.T
-            out["tension"][j] = tension
+    rows = [j for j, name in enumerate(setup.lines) if name in eq.line_names]
+    if not rows:
+        return out
+    names = [setup.lines[j] for j in rows]
+    if hasattr(eq, "line_profiles"):  # the catenary statics: every line in one compiled call
+        positions, tension = eq.line_profiles(names, n)
+    else:
+        got = [eq.line_profile(name, n) for name in names]
+        positions = np.array([np.asarray(p, float) for p, _ in got])
+        tension = np.array([t for _, t in got])
+    for c, name in enumerate("xyz"):
+        out[name][rows] = positions[..., c]
+    out["tension"][rows] = tension
     return out
 
 
