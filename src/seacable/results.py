@@ -341,7 +341,7 @@ def _direct(data_vars: dict, coords: dict):
     for v in (*data_vars.values(), *coords.values()):
         if type(v) is not xr.Variable:
             return None
-        for dim, size in zip(v.dims, v.shape):
+        for dim, size in zip(v._dims, v._data.shape) if _PLAIN_NEW else zip(v.dims, v.shape):
             if sizes.setdefault(dim, size) != size:
                 conflict = True
     if not data_vars.keys().isdisjoint(coords) or not data_vars.keys().isdisjoint(sizes):
