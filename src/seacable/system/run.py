@@ -405,17 +405,26 @@ def _warn_breaking(case: SystemCase, values: dict, where: str) -> None:
 
     from ..errors import SeacableWarning
 
-    for name in case.lines:
-        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
-        if not loads or any(b is None for b in loads):
-            continue
-        mbl = min(loads)
-        j = list(case.lines).index(name)
+    for j, name, mbl in _kept(_BREAKING, case, None, lambda: _breaking_loads(case)):
         peak = np.nanmax(np.stack([values["fairlead_tension"][..., j], values["anchor_tension"][..., j]]))
         if np.isfinite(peak) and peak > mbl:
             warnings.warn(f"{where}: lines.{name} carries {peak:.4g} N, above its breaking_load {mbl:.4g} N: the "
                           "line would break. Suggested fix: check the line's length and the loads, or name the line "
                           "in analysis.damaged_lines.", SeacableWarning, stacklevel=3)
+
+
+#: id of a case -> {None: :func:`_breaking_loads`}, while the case lives
+_BREAKING: dict[int, dict] = {}
+
+
+def _breaking_loads(case: SystemCase) -> list[tuple[int, str, float]]:
+    """(index, name, smallest breaking load [N]) of each line whose segments all give a breaking load."""
+    out = []
+    for j, name in enumerate(case.lines):
+        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
+        if loads and not any(b is None for b in loads):
+            out.append((j, name, min(loads)))
+    return out
 
 
 def _ramp(system: MooringSystem, steps: int):
@@ -451,49 +460,54 @@ def equilibrium_variables(eq, system: MooringSystem, setup: SystemSetup) -> dict
     of the line at end B below the horizontal.
     """
     nl, nb, npt = len(setup.lines), len(setup.bodies), len(setup.points)
-    # the variables of each dimension rows of one block (NaN where the system lacks the item)
-    out = {}
-    for names, size in zip(_BY_DIMS.values(), (nl, nb, npt)):
-        out.update(zip(names, np.full((len(names), size), np.nan)))
-    out.update({name: _nan((nb, 6, 6)) for name in _MATRICES})
+    # the variables of each dimension are the rows of one block, NaN where the system lacks the item, filled by
+    # columns (the items it has) in the order of _BY_DIMS
+    lines, bodies, points = (np.full((len(names), size), np.nan) for names, size in zip(_BY_DIMS.values(),
+                                                                                        (nl, nb, npt)))
+    matrices = {name: _nan((nb, 6, 6)) for name in _MATRICES}
     li = {n: i for i, n in enumerate(eq.line_names)}
     rows = [j for j, name in enumerate(setup.lines) if name in li]
     if rows:
-        at = [li[setup.lines[j]] for j in rows]
+        at = _index([li[setup.lines[j]] for j in rows], len(li))
+        rows = _index(rows, nl)
         fa, fb = np.asarray(eq.end_a_force, float)[at], np.asarray(eq.end_b_force, float)[at]
-        ha = [math.hypot(f[0], f[1]) for f in fa.tolist()]
-        hb = [math.hypot(f[0], f[1]) for f in fb.tolist()]
-        out["anchor_tension"][rows] = np.asarray(eq.end_a_tension, float)[at]
-        out["fairlead_tension"][rows] = np.asarray(eq.end_b_tension, float)[at]
-        out["anchor_horizontal_force"][rows] = ha
-        out["anchor_vertical_force"][rows] = fa[:, 2]
-        out["anchor_uplift_angle"][rows] = [math.atan2(f[2], h) for f, h in zip(fa.tolist(), ha)]
-        out["fairlead_angle"][rows] = [math.atan2(-f[2], h) for f, h in zip(fb.tolist(), hb)]
-        for k, c in enumerate("xyz"):
-            out[f"fairlead_force_{c}"][rows] = fb[:, k]
-        out["grounded_length"][rows] = np.asarray(eq.grounded_length, float)[at]
+        a, b = fa.tolist(), fb.tolist()
+        ha = [math.hypot(f[0], f[1]) for f in a]
+        hb = [math.hypot(f[0], f[1]) for f in b]
+        lines[:, rows] = [np.asarray(eq.end_b_tension, float)[at], np.asarray(eq.end_a_tension, float)[at], ha,
+                          fa[:, 2], [math.atan2(f[2], h) for f, h in zip(a, ha)],
+                          [math.atan2(-f[2], h) for f, h in zip(b, hb)], fb[:, 0], fb[:, 1], fb[:, 2],
+                          np.asarray(eq.grounded_length, float)[at]]
     bi = {n: i for i, n in enumerate(eq.body_names)}
+    rows = [j for j, name in enumerate(setup.bodies) if name in bi]
+    if rows:
+        pose = np.asarray(eq.body_position, float)[_index([bi[setup.bodies[j]] for j in rows], len(bi))]
+        d = pose[:, :2] - np.array([system.bodies[setup.bodies[j]].position[:2] for j in rows], float)
+        rows = _index(rows, nb)
+        bodies[:6, rows] = pose.T  # the rows of _POSE, then the offsets
+        bodies[6:8, rows] = d.T
+        bodies[8, rows] = [math.hypot(x, y) for x, y in d.tolist()]
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     for j, name in enumerate(setup.bodies):
-        if name not in bi:
-            continue
-        pose = np.asarray(eq.body_position[bi[name]], float)
-        for k, (var_name, _, _) in enumerate(_POSE):
-            out[var_name][j] = pose[k]
-        d = pose[:2] - np.asarray(system.bodies[name].position[:2], float)
-        out["body_offset_x"][j], out["body_offset_y"][j] = d
-        out["body_offset"][j] = math.hypot(*d)
-        if name in free:
+        if name in bi and name in free:
             f = free.index(name)
-            out["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
-            out["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
+            matrices["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
+            matrices["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
     pi = {n: i for i, n in enumerate(eq.point_names)}
     rows = [j for j, name in enumerate(setup.points) if name in pi]
     if rows:
-        positions = np.asarray(eq.point_position, float)[[pi[setup.points[j]] for j in rows]]
-        for k, c in enumerate("xyz"):
-            out[f"point_{c}"][rows] = positions[:, k]
+        points[:, _index(rows, npt)] = np.asarray(eq.point_position, float)[
+            _index([pi[setup.points[j]] for j in rows], len(pi))].T
+    out = {}
+    for names, block in zip(_BY_DIMS.values(), (lines, bodies, points)):
+        out.update(zip(names, block))
+    out.update(matrices)
     return out
+
+
+def _index(items: list[int], size: int):
+    """``items`` as an index: all of ``size`` in order, a slice (a view, not a copy by fancy indexing)."""
+    return slice(None) if len(items) == size and items == list(range(size)) else items
 
 
 def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
