@@ -150,3 +150,27 @@ def test_whole_line_profiles_are_the_numpy_assembly_of_their_sub_lines_to_the_bi
                     assert (ours[0].view(np.uint64) == ref_pos.view(np.uint64)).all(), (label, name, n)
                     assert (ours[1].view(np.uint64) == ref_t.view(np.uint64)).all(), (label, name, n)
     assert all(seen.values()), seen
+
+
+def test_the_written_out_sort_and_interpolation_are_numpys():
+    """The line profiles' stable order and interpolation (written out, not numba's np.argsort and np.interp) give
+    NumPy's: ties and NaN in the sort, repeated points of ``xp``, points on, between and outside them."""
+    from seacable.system.statics.catenary import _interp, _stable_order
+
+    rng = np.random.default_rng(3)
+    for _ in range(200):
+        m = int(rng.integers(2, 40))
+        s = np.round(rng.uniform(0.0, 5.0, m))  # many ties
+        s[rng.random(m) < 0.1] = np.nan
+        for values in (s, np.sort(s), np.sort(s)[::-1].copy()):
+            for reverse in (False, True):
+                assert (_stable_order(values, reverse) == np.argsort(values, kind="stable")).all()
+        xp = np.sort(np.round(rng.uniform(0.0, 10.0, m), 1))  # repeated points
+        fp = rng.normal(size=m)
+        fp[rng.random(m) < 0.05] = np.inf
+        x = np.concatenate([rng.uniform(-1.0, 11.0, 30), xp, [np.nan]])
+        out = np.empty(x.size)
+        with np.errstate(all="ignore"):
+            _interp(x, xp, fp, out)
+            ref = np.interp(x, xp, fp)
+        assert ((out.view(np.uint64) == ref.view(np.uint64)) | (np.isnan(out) & np.isnan(ref))).all()

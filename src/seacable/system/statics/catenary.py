@@ -760,8 +760,73 @@ def sub_profile(cat, k, n, tables, profile_cls):
 # The profiles of whole lines in one call (:meth:`SystemEquilibrium.line_profiles`): per sub-line the points of
 # :func:`sub_profile`, placed in the line's frame, ordered by arc length along the line and joined, then
 # interpolated at evenly spaced arc lengths, with the same operations as the NumPy calls they replace (NumPy's
-# linspace formula, a stable sort, NumPy's interp: numba's is its facsimile), so the same bits: a run of a small
-# system built them sub-line by sub-line in a few dozen NumPy calls each, most of its time around the solve.
+# linspace formula, its stable sort's order, its interp's search and formula), so the same bits: a run of a small
+# system built them sub-line by sub-line in a few dozen NumPy calls each, most of its time around the solve. The
+# sort and the interpolation are written out (numba's np.argsort and np.interp took 10 CPU-s to compile).
+@njit(cache=True)
+def _before(a, i, b, j):
+    """Whether (value a, index i) sorts before (b, j) in NumPy's stable sort: by value, NaN last, then index."""
+    if a != a:
+        return b != b and i < j
+    if b != b or a < b:
+        return True
+    return a == b and i < j
+
+
+@njit(cache=True)
+def _stable_order(s, reverse):
+    """``np.argsort(s, kind="stable")``; ``reverse``: ``s`` is (about) non-increasing, so the sort starts from the
+    reversed order (an insertion sort: the few items out of place moved)."""
+    m = s.size
+    order = np.empty(m, np.int64)
+    for i in range(m):
+        order[i] = m - 1 - i if reverse else i
+    for i in range(1, m):
+        o = order[i]
+        k = i
+        while k > 0 and _before(s[o], o, s[order[k - 1]], order[k - 1]):
+            order[k] = order[k - 1]
+            k -= 1
+        order[k] = o
+    return order
+
+
+@njit(cache=True, error_model="numpy")
+def _interp(x, xp, fp, out):
+    """``out[:] = np.interp(x, xp, fp)`` for sorted ``xp`` of at least two points (NumPy's arr_interp: the last
+    ``j`` with ``xp[j] <= x``, ``fp[j]`` at a point of ``xp``, else its slope formula, the other end's if NaN)."""
+    n = xp.size
+    for i in range(x.size):
+        v = x[i]
+        if v != v:
+            out[i] = v
+            continue
+        if v > xp[n - 1]:
+            out[i] = fp[n - 1]
+            continue
+        if v < xp[0]:
+            out[i] = fp[0]
+            continue
+        lo, hi = 0, n                    # the first index with xp > v, by bisection
+        while lo < hi:
+            mid = lo + ((hi - lo) >> 1)
+            if v >= xp[mid]:
+                lo = mid + 1
+            else:
+                hi = mid
+        j = lo - 1
+        if j == n - 1 or xp[j] == v:
+            out[i] = fp[j]
+        else:
+            slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j])
+            r = slope * (v - xp[j]) + fp[j]
+            if r != r:
+                r = slope * (v - xp[j + 1]) + fp[j + 1]
+                if r != r and fp[j] == fp[j + 1]:
+                    r = fp[j]
+            out[i] = r
+
+
 @njit(cache=True, error_model="numpy")
 def _linspace(start, stop, num):
     """``np.linspace(start, stop, num)`` of floats, ``num >= 2`` (NumPy's formula: ``i * step + start``)."""
@@ -805,7 +870,7 @@ def line_profiles(n, lines, line_first, line_last, sub_L, sub_s0, sub_a, sub_b, 
             a_is = anchor_is_a[k]
             pA = node_position[sub_a[k] if a_is else sub_b[k]]
             s = sub_s0[k] + (sp if a_is else sub_L[k] - sp)
-            order = np.argsort(s, kind="mergesort")
+            order = _stable_order(s, not a_is)
             for i in range(m):
                 o = order[i]
                 S[at + i] = s[o]
@@ -815,6 +880,8 @@ def line_profiles(n, lines, line_first, line_last, sub_L, sub_s0, sub_a, sub_b, 
                 T[at + i] = t[o]
             at += m
         s = _linspace(0.0, total, n)
+        out = np.empty(n)
         for c in range(3):
-            pos[j, :, c] = np.interp(s, S, X[c])
-        tension[j] = np.interp(s, S, T)
+            _interp(s, S, X[c], out)
+            pos[j, :, c] = out
+        _interp(s, S, T, tension[j])
