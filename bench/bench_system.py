@@ -65,6 +65,23 @@ MoorPy's systems before timing ``run`` (kept alive, they made every garbage coll
 run/solve read 3.7 with them). run / solve, two runs of ``python bench/bench_system.py 15``: OC3 1.93 and 1.97,
 OC4 2.23 and 3.12, buoy 1.43 and 1.39; MoorPy FD / run: OC3 43 and 37, OC4 29 and 14. Alternating solve and run
 400 times in one process (the best of each): OC3 2.01, OC4 1.96.
+
+Then (2026-11-30, later; shared machine): every line's profile in one compiled call
+(``SystemEquilibrium.line_profiles``), the result's variables built without xarray's argument checks (``var``: their
+four fields, checked against the constructor at import), the Dataset's sizes taken from ``dataset``'s own walk of the
+variables, the equilibrium's variables filled by blocks, and the coordinates and the lines' breaking loads made once
+per case (copied into each result); the Datasets identical to the bit (every variable's bytes, attributes, encoding
+and index; the system examples' fingerprints). run / solve, thread CPU time, ``solve_equilibrium`` and ``run``
+alternated 400 times in one process, the median of each; four processes each, alternating the source before (commit
+accdbef) and after: OC3 1.97-2.12 before, 1.57-1.65 after; OC4 1.92-2.08 before, 1.54-1.57 after.
+Two runs of ``python bench/bench_system.py 15`` after (best of each, so noisier): run / solve OC3 1.53 and 1.86, OC4
+1.68 and 1.85, buoy 2.17 and 1.24; MoorPy FD / run OC3 52 and 51, OC4 30 and 29 (MoorPy 76-82 and 49-51 ms that hour:
+against its quiet 45 and 27 ms, about 30 and 17). What is left
+around the solve (OC4, about 0.35 ms on a quiet machine): the result's ~50 variables and the Dataset (0.15 ms), the
+profiles' own arithmetic (0.03 ms: 2n + 2 points per sub-line, interpolated), the equilibrium's variables (0.05 ms),
+the coordinates' copies (0.04 ms), the checks around the start's evaluation (0.02 ms). The profiles' kernel costs
+about 8 CPU-s to compile from an empty cache (its closed forms and the tabled ones, 1.7 and 2.5 s of it, 1.5 s
+before for the closed forms alone).
 """
 
 from __future__ import annotations

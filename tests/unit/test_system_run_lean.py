@@ -66,3 +66,25 @@ def test_a_case_solves_one_system_per_condition_and_forgets_it_with_the_case():
     del case, setup
     gc.collect()
     assert key not in system_run._SYSTEMS
+
+
+def test_a_case_makes_its_coordinates_once_and_each_result_has_its_own():
+    """The coordinates (names, lengths, kinds, arc lengths, degrees of freedom) are the case's: made on its first
+    run, copied into each result, so that a result changed in place changes no other; forgotten with the case."""
+    case = sc.load_case(EXAMPLES / "spread_mooring.yaml")
+    first = sc.run(case)
+    kept = system_run._COORDS[id(case)][case.analysis.profile_points]
+    second = sc.run(case)
+    assert system_run._COORDS[id(case)][case.analysis.profile_points] is kept  # not made again
+    assert second.identical(first)
+    for name in ("s", "line_length", "end_a", "point_kind"):  # (an index of names is shared: results._default_index)
+        assert not np.shares_memory(first[name].values, second[name].values), name
+        assert not np.shares_memory(first[name].values, kept[name][1]), name
+    first["s"].values[...] = -1.0
+    first["line_length"].values[...] = -1.0
+    third = sc.run(case)
+    assert third.identical(second) and not third.identical(first)
+    key = id(case)
+    del case
+    gc.collect()
+    assert key not in system_run._COORDS

@@ -73,6 +73,9 @@ _VARIABLES = {
     "point_y": (("point",), "m", "y of the point"),
     "point_z": (("point",), "m", "z of the point (0 at the still water level)"),
 }
+#: the dimensions of :data:`_VARIABLES` -> their names (the rows of one block of NaN in equilibrium_variables)
+_BY_DIMS = {dims: tuple(n for n, v in _VARIABLES.items() if v[0] == dims)
+            for dims in (("line",), ("body",), ("point",))}
 _MATRICES = {
     "stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
                   "mooring stiffness of the free body, lines only, about its reference point (NaN: not free)"),
@@ -176,19 +179,26 @@ def _condition_system(case: SystemCase, removed: tuple[str, ...] | None = None) 
     case run again (a benchmark, a convergence study), solve the same system object, whose assembly the statics
     keep (as the case's YAML is kept: :func:`seacable.results.case_yaml`); they are forgotten with the case.
     """
-    key = id(case)
-    kept = _SYSTEMS.get(key)
-    if kept is not None and removed in kept:
-        return kept[removed]
-    system = case.system() if removed is None else case.damaged_system(tuple(removed))
+    return _kept(_SYSTEMS, case, removed,
+                 lambda: case.system() if removed is None else case.damaged_system(tuple(removed)))
+
+
+def _kept(store: dict, case, key, make):
+    """``make()``, kept in ``store`` for the case object under ``key`` while the case lives (cases are immutable:
+    what is made of one alone is the same each time it is asked for)."""
+    ident = id(case)
+    kept = store.get(ident)
+    if kept is not None and key in kept:
+        return kept[key]
+    value = make()
     if kept is None:
         try:
-            weakref.finalize(case, _SYSTEMS.pop, key, None)
+            weakref.finalize(case, store.pop, ident, None)
         except TypeError:  # not weakly referenceable: not kept
-            return system
-        kept = _SYSTEMS[key] = {}
-    kept[removed] = system
-    return system
+            return value
+        kept = store[ident] = {}
+    kept[key] = value
+    return value
 
 
 def _check_condition(case, system: MooringSystem, removed, mode: str):
@@ -395,17 +405,26 @@ def _warn_breaking(case: SystemCase, values: dict, where: str) -> None:
 
     from ..errors import SeacableWarning
 
-    for name in case.lines:
-        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
-        if not loads or any(b is None for b in loads):
-            continue
-        mbl = min(loads)
-        j = list(case.lines).index(name)
+    for j, name, mbl in _kept(_BREAKING, case, None, lambda: _breaking_loads(case)):
         peak = np.nanmax(np.stack([values["fairlead_tension"][..., j], values["anchor_tension"][..., j]]))
         if np.isfinite(peak) and peak > mbl:
             warnings.warn(f"{where}: lines.{name} carries {peak:.4g} N, above its breaking_load {mbl:.4g} N: the "
                           "line would break. Suggested fix: check the line's length and the loads, or name the line "
                           "in analysis.damaged_lines.", SeacableWarning, stacklevel=3)
+
+
+#: id of a case -> {None: :func:`_breaking_loads`}, while the case lives
+_BREAKING: dict[int, dict] = {}
+
+
+def _breaking_loads(case: SystemCase) -> list[tuple[int, str, float]]:
+    """(index, name, smallest breaking load [N]) of each line whose segments all give a breaking load."""
+    out = []
+    for j, name in enumerate(case.lines):
+        loads = [seg.line_type.breaking_load for seg in case.lines[name].line.segments]
+        if loads and not any(b is None for b in loads):
+            out.append((j, name, min(loads)))
+    return out
 
 
 def _ramp(system: MooringSystem, steps: int):
@@ -441,57 +460,72 @@ def equilibrium_variables(eq, system: MooringSystem, setup: SystemSetup) -> dict
     of the line at end B below the horizontal.
     """
     nl, nb, npt = len(setup.lines), len(setup.bodies), len(setup.points)
-    out = {name: _nan((nl,) if dims == ("line",) else (nb,) if dims == ("body",) else (npt,))
-           for name, (dims, _, _) in _VARIABLES.items()}
-    out.update({name: _nan((nb, 6, 6)) for name in _MATRICES})
+    # the variables of each dimension are the rows of one block, NaN where the system lacks the item, filled by
+    # columns (the items it has) in the order of _BY_DIMS
+    lines, bodies, points = (np.full((len(names), size), np.nan) for names, size in zip(_BY_DIMS.values(),
+                                                                                        (nl, nb, npt)))
+    matrices = {name: _nan((nb, 6, 6)) for name in _MATRICES}
     li = {n: i for i, n in enumerate(eq.line_names)}
-    for j, name in enumerate(setup.lines):
-        if name not in li:
-            continue
-        i = li[name]
-        fa, fb = np.asarray(eq.end_a_force[i], float), np.asarray(eq.end_b_force[i], float)
-        ha, hb = math.hypot(fa[0], fa[1]), math.hypot(fb[0], fb[1])
-        out["anchor_tension"][j] = eq.end_a_tension[i]
-        out["fairlead_tension"][j] = eq.end_b_tension[i]
-        out["anchor_horizontal_force"][j] = ha
-        out["anchor_vertical_force"][j] = fa[2]
-        out["anchor_uplift_angle"][j] = math.atan2(fa[2], ha)
-        out["fairlead_angle"][j] = math.atan2(-fb[2], hb)
-        for k, c in enumerate("xyz"):
-            out[f"fairlead_force_{c}"][j] = fb[k]
-        out["grounded_length"][j] = eq.grounded_length[i]
+    rows = [j for j, name in enumerate(setup.lines) if name in li]
+    if rows:
+        at = _index([li[setup.lines[j]] for j in rows], len(li))
+        rows = _index(rows, nl)
+        fa, fb = np.asarray(eq.end_a_force, float)[at], np.asarray(eq.end_b_force, float)[at]
+        a, b = fa.tolist(), fb.tolist()
+        ha = [math.hypot(f[0], f[1]) for f in a]
+        hb = [math.hypot(f[0], f[1]) for f in b]
+        lines[:, rows] = [np.asarray(eq.end_b_tension, float)[at], np.asarray(eq.end_a_tension, float)[at], ha,
+                          fa[:, 2], [math.atan2(f[2], h) for f, h in zip(a, ha)],
+                          [math.atan2(-f[2], h) for f, h in zip(b, hb)], fb[:, 0], fb[:, 1], fb[:, 2],
+                          np.asarray(eq.grounded_length, float)[at]]
     bi = {n: i for i, n in enumerate(eq.body_names)}
+    rows = [j for j, name in enumerate(setup.bodies) if name in bi]
+    if rows:
+        pose = np.asarray(eq.body_position, float)[_index([bi[setup.bodies[j]] for j in rows], len(bi))]
+        d = pose[:, :2] - np.array([system.bodies[setup.bodies[j]].position[:2] for j in rows], float)
+        rows = _index(rows, nb)
+        bodies[:6, rows] = pose.T  # the rows of _POSE, then the offsets
+        bodies[6:8, rows] = d.T
+        bodies[8, rows] = [math.hypot(x, y) for x, y in d.tolist()]
     free = [n for n, b in system.bodies.items() if b.kind == "free"]
     for j, name in enumerate(setup.bodies):
-        if name not in bi:
-            continue
-        pose = np.asarray(eq.body_position[bi[name]], float)
-        for k, (var_name, _, _) in enumerate(_POSE):
-            out[var_name][j] = pose[k]
-        d = pose[:2] - np.asarray(system.bodies[name].position[:2], float)
-        out["body_offset_x"][j], out["body_offset_y"][j] = d
-        out["body_offset"][j] = math.hypot(*d)
-        if name in free:
+        if name in bi and name in free:
             f = free.index(name)
-            out["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
-            out["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
+            matrices["stiffness"][j] = np.asarray(eq.body_stiffness(name), float)
+            matrices["hydrostatic_stiffness"][j] = np.asarray(eq.hydrostatic, float)[6 * f:6 * f + 6, 6 * f:6 * f + 6]
     pi = {n: i for i, n in enumerate(eq.point_names)}
-    for j, name in enumerate(setup.points):
-        if name in pi:
-            for k, c in enumerate("xyz"):
-                out[f"point_{c}"][j] = eq.point_position[pi[name]][k]
+    rows = [j for j, name in enumerate(setup.points) if name in pi]
+    if rows:
+        points[:, _index(rows, npt)] = np.asarray(eq.point_position, float)[
+            _index([pi[setup.points[j]] for j in rows], len(pi))].T
+    out = {}
+    for names, block in zip(_BY_DIMS.values(), (lines, bodies, points)):
+        out.update(zip(names, block))
+    out.update(matrices)
     return out
+
+
+def _index(items: list[int], size: int):
+    """``items`` as an index: all of ``size`` in order, a slice (a view, not a copy by fancy indexing)."""
+    return slice(None) if len(items) == size and items == list(range(size)) else items
 
 
 def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
     nl = len(setup.lines)
     out = {name: _nan((nl, n)) for name in _PROFILE}
-    for j, name in enumerate(setup.lines):
-        if name in eq.line_names:
-            positions, tension = eq.line_profile(name, n)
-            positions = np.asarray(positions, float)
-            out["x"][j], out["y"][j], out["z"][j] = positions.T
-            out["tension"][j] = tension
+    rows = [j for j, name in enumerate(setup.lines) if name in eq.line_names]
+    if not rows:
+        return out
+    names = [setup.lines[j] for j in rows]
+    if hasattr(eq, "line_profiles"):  # the catenary statics: every line in one compiled call
+        positions, tension = eq.line_profiles(names, n)
+    else:
+        got = [eq.line_profile(name, n) for name in names]
+        positions = np.array([np.asarray(p, float) for p, _ in got])
+        tension = np.array([t for _, t in got])
+    for c, name in enumerate("xyz"):
+        out[name][rows] = positions[..., c]
+    out["tension"][rows] = tension
     return out
 
 
@@ -501,27 +535,57 @@ def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
     return {k: np.stack([r[k] for r in records]).reshape(lead + np.shape(records[0][k])) for k in records[0]}
 
 
-def _coords(setup: SystemSetup) -> dict:
+#: id of a case -> {profile points (None: system_offsets) -> its result's coordinates}, while the case lives
+_COORDS: dict[int, dict] = {}
+
+
+def _coords(setup: SystemSetup, profile_points: int | None = None) -> dict:
+    """The result's coordinates: names and constants of the lines, bodies and points, and with ``profile_points``
+    those of ``system_static`` (profile points, arc lengths, degrees of freedom). Made once per case (they are
+    the case's), each result given copies of the arrays."""
     from ..results import var  # xarray: imported when a result is built, not when a case is checked
 
+    table = _kept(_COORDS, setup.case, profile_points, lambda: _coord_arrays(setup, profile_points))
+    return {name: var(dims, values.copy(), units, long_name) for name, (dims, values, units, long_name) in table.items()}
+
+
+def _coord_arrays(setup: SystemSetup, n: int | None) -> dict:
+    """name -> (dimensions, values, units, long name) of :func:`_coords`."""
     case = setup.case
-    return {
-        "condition": var("condition", np.array(setup.conditions, dtype=object), "1",
-                         "condition of the system: intact, or damaged (analysis.damaged_lines removed)"),
-        "line": var("line", np.array(setup.lines, dtype=object), "1", "line name"),
-        "body": var("body", np.array(setup.bodies, dtype=object), "1", "body name"),
-        "point": var("point", np.array(setup.points, dtype=object), "1", "point name"),
-        "line_length": var("line", [case.lines[n].line.length for n in setup.lines], "m",
-                           "unstretched length of the line"),
-        "end_a": var("line", np.array([case.lines[n].end_a for n in setup.lines], dtype=object), "1",
-                     "point at end A of the line (anchor)"),
-        "end_b": var("line", np.array([case.lines[n].end_b for n in setup.lines], dtype=object), "1",
-                     "point at end B of the line (fairlead)"),
-        "point_kind": var("point", np.array([case.points[n].kind for n in setup.points], dtype=object), "1",
-                          "kind of the point: fixed, free, coupled or body"),
-        "body_kind": var("body", np.array([case.bodies[n].kind for n in setup.bodies], dtype=object), "1",
-                         "kind of the body: free, fixed or prescribed"),
+
+    def names(items):
+        return np.array(list(items), dtype=object)
+
+    table = {
+        "condition": ("condition", names(setup.conditions), "1",
+                      "condition of the system: intact, or damaged (analysis.damaged_lines removed)"),
+        "line": ("line", names(setup.lines), "1", "line name"),
+        "body": ("body", names(setup.bodies), "1", "body name"),
+        "point": ("point", names(setup.points), "1", "point name"),
+        "line_length": ("line", np.asarray([case.lines[n].line.length for n in setup.lines]), "m",
+                        "unstretched length of the line"),
+        "end_a": ("line", names(case.lines[n].end_a for n in setup.lines), "1", "point at end A of the line (anchor)"),
+        "end_b": ("line", names(case.lines[n].end_b for n in setup.lines), "1",
+                  "point at end B of the line (fairlead)"),
+        "point_kind": ("point", names(case.points[n].kind for n in setup.points), "1",
+                       "kind of the point: fixed, free, coupled or body"),
+        "body_kind": ("body", names(case.bodies[n].kind for n in setup.bodies), "1",
+                      "kind of the body: free, fixed or prescribed"),
     }
+    if n is None:
+        return table
+    s = np.array([np.linspace(0.0, case.lines[name].line.length, n) for name in setup.lines]).reshape(
+        len(setup.lines), n)  # (0, node) for a system without lines
+    labels = names(f"{b} {d}" for b in setup.free_bodies for d in DOFS)
+    table.update({
+        "node": ("node", np.arange(n), "1", "profile point, 0 at end A"),
+        "s": (("line", "node"), s, "m", "unstretched arc length from end A"),
+        "dof": ("dof", names(DOFS), "1", "degree of freedom (force or moment)"),
+        "dof2": ("dof2", names(DOFS), "1", "degree of freedom (displacement or rotation)"),
+        "body_dof": ("body_dof", labels, "1", "free body and degree of freedom (force or moment)"),
+        "body_dof2": ("body_dof2", labels, "1", "free body and degree of freedom (displacement or rotation)"),
+    })
+    return table
 
 
 def _line_present(setup: SystemSetup) -> np.ndarray:
@@ -602,8 +666,6 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     data.update(_variables(_stack(profiles, (nc,)), ("condition",), _PROFILE))
     data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
                                "1 where the line is in the condition, 0 where it is removed (its values NaN)")
-    free = setup.free_bodies
-    labels = np.array([f"{b} {d}" for b in free for d in DOFS], dtype=object)
     data["coupled_stiffness"] = var(("condition", "body_dof", "body_dof2"), np.stack(coupled), _STIFFNESS_UNITS,
                                     "coupled mooring stiffness of the free bodies, lines only")
     data["iterations"] = var("condition", iterations, "1", "iterations of the equilibrium solve")
@@ -612,17 +674,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         for k, axis in enumerate("xyz"):
             data[f"pin_reaction_{axis}"] = var(("condition", "body"), pins[..., k], "N",
                                                f"force of the pin on a pinned body, {axis} (0: not pinned)")
-    coords = _coords(setup)
-    s = np.array([np.linspace(0.0, case.lines[n].line.length, a.profile_points) for n in setup.lines]).reshape(
-        len(setup.lines), a.profile_points)  # (0, node) for a system without lines
-    coords.update({
-        "node": var("node", np.arange(a.profile_points), "1", "profile point, 0 at end A"),
-        "s": var(("line", "node"), s, "m", "unstretched arc length from end A"),
-        "dof": var("dof", np.array(DOFS, dtype=object), "1", "degree of freedom (force or moment)"),
-        "dof2": var("dof2", np.array(DOFS, dtype=object), "1", "degree of freedom (displacement or rotation)"),
-        "body_dof": var("body_dof", labels, "1", "free body and degree of freedom (force or moment)"),
-        "body_dof2": var("body_dof2", labels, "1", "free body and degree of freedom (displacement or rotation)"),
-    })
+    coords = _coords(setup, a.profile_points)
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)

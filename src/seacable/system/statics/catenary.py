@@ -755,3 +755,133 @@ def sub_profile(cat, k, n, tables, profile_cls):
                             float(cat.seabed_friction[k]), float(cat.H_fairlead[k]), float(cat.V_fairlead[k]),
                             float(cat.grounded_length[k]), int(cat.regime[k]), x, z, T)
     return profile_cls(s, x, z, T)
+
+
+# The profiles of whole lines in one call (:meth:`SystemEquilibrium.line_profiles`): per sub-line the points of
+# :func:`sub_profile`, placed in the line's frame, ordered by arc length along the line and joined, then
+# interpolated at evenly spaced arc lengths, with the same operations as the NumPy calls they replace (NumPy's
+# linspace formula, its stable sort's order, its interp's search and formula), so the same bits: a run of a small
+# system built them sub-line by sub-line in a few dozen NumPy calls each, most of its time around the solve. The
+# sort and the interpolation are written out (numba's np.argsort and np.interp took 10 CPU-s to compile).
+@njit(cache=True)
+def _before(a, i, b, j):
+    """Whether (value a, index i) sorts before (b, j) in NumPy's stable sort: by value, NaN last, then index."""
+    if a != a:
+        return b != b and i < j
+    if b != b or a < b:
+        return True
+    return a == b and i < j
+
+
+@njit(cache=True)
+def _stable_order(s, reverse):
+    """``np.argsort(s, kind="stable")``; ``reverse``: ``s`` is (about) non-increasing, so the sort starts from the
+    reversed order (an insertion sort: the few items out of place moved)."""
+    m = s.size
+    order = np.empty(m, np.int64)
+    for i in range(m):
+        order[i] = m - 1 - i if reverse else i
+    for i in range(1, m):
+        o = order[i]
+        k = i
+        while k > 0 and _before(s[o], o, s[order[k - 1]], order[k - 1]):
+            order[k] = order[k - 1]
+            k -= 1
+        order[k] = o
+    return order
+
+
+@njit(cache=True, error_model="numpy")
+def _interp(x, xp, fp, out):
+    """``out[:] = np.interp(x, xp, fp)`` for sorted ``xp`` of at least two points (NumPy's arr_interp: the last
+    ``j`` with ``xp[j] <= x``, ``fp[j]`` at a point of ``xp``, else its slope formula, the other end's if NaN)."""
+    n = xp.size
+    for i in range(x.size):
+        v = x[i]
+        if v != v:
+            out[i] = v
+            continue
+        if v > xp[n - 1]:
+            out[i] = fp[n - 1]
+            continue
+        if v < xp[0]:
+            out[i] = fp[0]
+            continue
+        lo, hi = 0, n                    # the first index with xp > v, by bisection
+        while lo < hi:
+            mid = lo + ((hi - lo) >> 1)
+            if v >= xp[mid]:
+                lo = mid + 1
+            else:
+                hi = mid
+        j = lo - 1
+        if j == n - 1 or xp[j] == v:
+            out[i] = fp[j]
+        else:
+            slope = (fp[j + 1] - fp[j]) / (xp[j + 1] - xp[j])
+            r = slope * (v - xp[j]) + fp[j]
+            if r != r:
+                r = slope * (v - xp[j + 1]) + fp[j + 1]
+                if r != r and fp[j] == fp[j + 1]:
+                    r = fp[j]
+            out[i] = r
+
+
+@njit(cache=True, error_model="numpy")
+def _linspace(start, stop, num):
+    """``np.linspace(start, stop, num)`` of floats, ``num >= 2`` (NumPy's formula: ``i * step + start``)."""
+    y = np.empty(num)
+    div = num - 1
+    delta = stop - start
+    step = delta / div
+    for i in range(num):
+        y[i] = (i / div * delta if step == 0 else i * step) + start
+    y[num - 1] = stop
+    return y
+
+
+@njit(cache=True, error_model="numpy")
+def line_profiles(n, lines, line_first, line_last, sub_L, sub_s0, sub_a, sub_b, anchor_is_a, node_position, e,
+                  length, hspan, vspan, EA, w, mu, H, V, LB, regime, lo, hi, tT, te, has_tables, pos, tension):
+    """Positions ``pos[j]`` (n, 3) [m] and tension ``tension[j]`` (n,) [N] of line ``lines[j]`` at ``n`` points
+    evenly spaced in unstretched arc length (:meth:`SystemEquilibrium.line_profile`)."""
+    for j in range(lines.size):
+        il = lines[j]
+        k0, k1 = line_first[il], line_last[il] + 1
+        total = 0.0
+        for k in range(k0, k1):
+            total += sub_L[k]
+        size = 0
+        for k in range(k0, k1):
+            size += max(4, int(np.ceil(2 * n * sub_L[k] / total)) + 2)
+        S, X, T = np.empty(size), np.empty((3, size)), np.empty(size)
+        at = 0
+        for k in range(k0, k1):
+            m = max(4, int(np.ceil(2 * n * sub_L[k] / total)) + 2)
+            Lk = length[k]
+            sp = _linspace(0.0, Lk, m)
+            x, z, t = np.empty(m), np.empty(m), np.empty(m)
+            if has_tables and hi[k] > lo[k] and (regime[k] == 1 or regime[k] == 2 or regime[k] == 3
+                                                 or regime[k] == 5 or regime[k] == 6) and w[k] > 0:
+                _table_profile(sp, H[k], V[k], Lk, w[k], mu[k], LB[k], regime[k], lo[k], hi[k], tT, te, x, z, t)
+            else:
+                closed_form_profile(sp, hspan[k], vspan[k], Lk, EA[k], w[k], mu[k], H[k], V[k], LB[k], regime[k],
+                                    x, z, t)
+            a_is = anchor_is_a[k]
+            pA = node_position[sub_a[k] if a_is else sub_b[k]]
+            s = sub_s0[k] + (sp if a_is else sub_L[k] - sp)
+            order = _stable_order(s, not a_is)
+            for i in range(m):
+                o = order[i]
+                S[at + i] = s[o]
+                X[0, at + i] = pA[0] + x[o] * e[k, 0]
+                X[1, at + i] = pA[1] + x[o] * e[k, 1]
+                X[2, at + i] = pA[2] + z[o]
+                T[at + i] = t[o]
+            at += m
+        s = _linspace(0.0, total, n)
+        out = np.empty(n)
+        for c in range(3):
+            _interp(s, S, X[c], out)
+            pos[j, :, c] = out
+        _interp(s, S, T, tension[j])

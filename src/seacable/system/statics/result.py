@@ -9,8 +9,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...errors import InputError
-from ...statics.catenary import CatenaryProfile, CatenaryResult
-from .catenary import sub_profile
+from ...statics.catenary import CatenaryResult
+from .catenary import line_profiles
 from .model import Assembly, EquilibriumFields
 
 
@@ -110,36 +110,45 @@ class SystemEquilibrium(EquilibriumFields):
 
             raise InputError(f"line '{line_name}' is not in this system (lines: {', '.join(self.line_names)})."
                              f"{suggest(line_name, self.line_names)}")
+        pos, tension = self.line_profiles([line_name], n)
+        return pos[0], tension[0]
+
+    def line_profiles(self, line_names=None, n: int = 100):
+        """:meth:`line_profile` of several lines at once (default every line), in one compiled call.
+
+        Returns
+        -------
+        positions : ndarray, shape (len(line_names), n, 3)
+            Global positions. [m]
+        tension : ndarray, shape (len(line_names), n)
+            Effective tension. [N]
+        """
+        names = self.line_names if line_names is None else list(line_names)
+        for name in names:
+            if name not in self.line_names:
+                from ..._model import suggest
+
+                raise InputError(f"line '{name}' is not in this system (lines: {', '.join(self.line_names)})."
+                                 f"{suggest(name, self.line_names)}")
         n = int(n)
         if n < 2:
             raise InputError(f"n must be >= 2, got {n}. Suggested fix: use 100.")
-        asm = self._asm
-        il = self.line_names.index(line_name)
-        subs = range(asm.line_first[il], asm.line_last[il] + 1)
-        total = sum(asm.sub_L[k] for k in subs)
-        S, X, T = [], [], []
-        for k in subs:
-            m = max(4, int(np.ceil(2 * n * asm.sub_L[k] / total)) + 2)
-            prof = sub_profile(self._cat, k, m, asm.tables, CatenaryProfile)
-            a_is = self._anchor_is_a[k]
-            pA = self._node_position[asm.sub_a[k] if a_is else asm.sub_b[k]]
-            e = self._e[k]
-            s = asm.sub_s0[k] + (prof.s if a_is else asm.sub_L[k] - prof.s)
-            order = np.argsort(s, kind="stable")
-            pos = np.empty((3, m))   # rows x, y, z: pA + (x e_x, x e_y, z)
-            pos[0], pos[1], pos[2] = pA[0] + prof.x * e[0], pA[1] + prof.x * e[1], pA[2] + prof.z
-            S.append(s[order])
-            X.append(pos[:, order])
-            T.append(prof.tension[order])
-        if len(S) > 1:
-            S, X, T = np.concatenate(S), np.concatenate(X, axis=1), np.concatenate(T)
-        else:
-            S, X, T = S[0], X[0], T[0]
-        s = np.linspace(0.0, total, n)
-        pos = np.empty((n, 3))
-        for j in range(3):
-            pos[:, j] = np.interp(s, S, X[j])
-        return pos, np.interp(s, S, T)
+        asm, cat = self._asm, self._cat
+        lines = np.array([self.line_names.index(name) for name in names], np.int64)
+        pos, tension = np.empty((lines.size, n, 3)), np.empty((lines.size, n))
+        if lines.size:
+            lo, hi, tT, te = asm.tables if asm.tables is not None else _NO_TABLES
+            c = np.ascontiguousarray
+            line_profiles(n, lines, asm.line_first, asm.line_last, asm.sub_L, asm.sub_s0, asm.sub_a, asm.sub_b,
+                          self._anchor_is_a, self._node_position, c(self._e), c(cat.length), c(cat.horizontal_span),
+                          c(cat.vertical_span), c(cat.axial_stiffness), c(cat.weight_per_length),
+                          c(cat.seabed_friction), c(cat.H_fairlead), c(cat.V_fairlead), c(cat.grounded_length),
+                          c(cat.regime), lo, hi, tT, te, asm.tables is not None, pos, tension)
+        return pos, tension
+
+
+#: the tables' arguments of :func:`~seacable.system.statics.catenary.line_profiles` for a system without tables
+_NO_TABLES = (np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0), np.zeros(0))
 
 
 def system_stiffness(eq: SystemEquilibrium, hydrostatics: bool = False) -> np.ndarray:
