@@ -72,54 +72,12 @@ def var(dims: str | Iterable[str], values, units: str, long_name: str, **attrs) 
     """
     dims = (dims,) if isinstance(dims, str) else tuple(dims)
     array = np.asarray(values)
-    attrs = {"units": units, "long_name": long_name, **attrs}
     # numbers, booleans and strings taken as they are (xarray's conversions change only dates, object arrays and
     # pandas or masked data), and names (an object array of str) too: xarray's check of object arrays for dates
     # (a round trip through pandas, 20 times the cost of the variable) leaves them unchanged
-    kind = array.dtype.kind
-    plain = type(array) is np.ndarray and (kind in "biufcSU" or (
-        kind == "O" and array.ndim > 0 and all(type(item) is str for item in array.flat)))
-    if plain and _PLAIN_NEW and len(dims) == array.ndim and len(set(dims)) == len(dims):
-        return _plain_variable(xr.Variable, dims, array, attrs, None)
-    return xr.Variable(dims, array, attrs=attrs, fastpath=plain)
-
-
-def _plain_variable(cls, dims: tuple, data, attrs: dict, encoding):
-    """``cls(dims, data, attrs=attrs, encoding=encoding, fastpath=True)`` for data the constructor keeps as it is
-    (a NumPy array of numbers, text or names, or an index's adapter), one dimension name per axis, no name twice,
-    ``attrs`` a dict of its own: the object the constructor makes (the same four fields), without its argument
-    checks, a third of its cost (a result holds a few dozen variables, each made once).
-    :data:`_PLAIN_NEW` says whether this xarray's variables are those fields (else :func:`var` calls the
-    constructor)."""
-    v = object.__new__(cls)
-    v._dims, v._data, v._attrs, v._encoding = dims, data, attrs, encoding
-    return v
-
-
-def _plain_new_works() -> bool:
-    """Whether :func:`_plain_variable` makes the variable xarray's constructor makes (its slots are the four
-    fields, set alike), for a variable and a dimension coordinate."""
-    try:
-        array = np.zeros((2, 1))
-        for cls, data, encoding in ((xr.Variable, array, None), (xr.IndexVariable, None, {})):
-            if cls is xr.IndexVariable:
-                data = xr.IndexVariable("a", [1.0, 2.0])._data
-                dims = ("a",)
-            else:
-                dims = ("a", "b")
-            made = cls(dims, data, attrs={"units": "1"}, encoding=encoding, fastpath=True)
-            fast = _plain_variable(cls, dims, data, {"units": "1"}, encoding)
-            slots = {slot for c in cls.__mro__ for slot in getattr(c, "__slots__", ())}
-            if slots != {"_dims", "_data", "_attrs", "_encoding"} or any(
-                    getattr(made, slot) is not getattr(fast, slot) and getattr(made, slot) != getattr(fast, slot)
-                    for slot in slots):
-                return False
-        return True
-    except (AttributeError, TypeError, ValueError):  # pragma: no cover - another xarray
-        return False
-
-
-_PLAIN_NEW = _plain_new_works()
+    plain = type(array) is np.ndarray and (array.dtype.kind in "biufcSU" or (
+        array.dtype.kind == "O" and array.ndim > 0 and all(type(item) is str for item in array.flat)))
+    return xr.Variable(dims, array, attrs={"units": units, "long_name": long_name, **attrs}, fastpath=plain)
 
 
 def _attr_value(value: Any):
@@ -293,8 +251,6 @@ def _default_index(name, v: xr.Variable):
             _INDEXES[key] = (index, variable._data)
         return index, variable
     index, data = kept
-    if _PLAIN_NEW and type(v) is xr.Variable and not v._encoding:  # the constructor's variable (its encoding {})
-        return index, _plain_variable(xr.IndexVariable, v.dims, data, dict(v._attrs) if v._attrs else None, {})
     return index, xr.IndexVariable(v.dims, data, attrs=v.attrs, encoding=v.encoding, fastpath=True)
 
 
@@ -315,8 +271,7 @@ def dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], o
     are rather than copied (shallow copies, as the constructor makes, cost as much as the variables).
     """
     construct = getattr(xr.Dataset, "_construct_direct", None)
-    sizes = _direct(data_vars, coords) if construct is not None else None
-    if sizes is None:
+    if construct is None or not _direct(data_vars, coords):
         return xr.Dataset(data_vars=data_vars, coords=coords)
     variables = dict(data_vars) if owned else {name: v.copy(deep=False) for name, v in data_vars.items()}
     indexes = {}
@@ -326,30 +281,23 @@ def dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variable], o
         else:
             variables[name] = v if owned else v.copy(deep=False)
     try:
-        # the sizes xarray's calculate_dimensions finds (dimensions in order of first use over the variables,
-        # then the coordinates); False: a conflict, which it raises
-        return construct(variables, set(coords), dims=sizes or None, indexes=indexes)
+        return construct(variables, set(coords), indexes=indexes)
     except TypeError:  # xarray's private constructor changed its signature: the public one, slower
         return xr.Dataset(data_vars=data_vars, coords=coords)
 
 
-def _direct(data_vars: dict, coords: dict):
-    """The dimensions' sizes when :func:`dataset` can build the Dataset itself (see there), else None; False
-    when two variables give a dimension different sizes (xarray raises it)."""
-    sizes: dict = {}
-    conflict = False
-    for v in (*data_vars.values(), *coords.values()):
-        if type(v) is not xr.Variable:
-            return None
-        for dim, size in zip(v._dims, v._data.shape) if _PLAIN_NEW else zip(v.dims, v.shape):
-            if sizes.setdefault(dim, size) != size:
-                conflict = True
-    if not data_vars.keys().isdisjoint(coords) or not data_vars.keys().isdisjoint(sizes):
-        return None
+def _direct(data_vars: dict, coords: dict) -> bool:
+    """Whether :func:`dataset` can build the Dataset itself (see there)."""
+    both = (*data_vars.values(), *coords.values())
+    if any(type(v) is not xr.Variable for v in both) or not data_vars.keys().isdisjoint(coords):
+        return False
+    dims = {d for v in both for d in v.dims}
+    if not dims.isdisjoint(data_vars):
+        return False
     for name, v in coords.items():
-        if name in sizes and (v.dims != (name,) or v.dtype.kind not in "iufO" or v.dtype == np.float16):
-            return None
-    return False if conflict else sizes
+        if name in dims and (v.dims != (name,) or v.dtype.kind not in "iufO" or v.dtype == np.float16):
+            return False
+    return True
 
 
 #: id of a case -> its YAML text, while the case lives (:func:`case_yaml`)
@@ -381,9 +329,8 @@ def check_schema(ds: xr.Dataset) -> None:
     A guard on seacable's own results, so that every output file is labelled.
     """
     for name, item in ds.variables.items():  # the Variables themselves: no DataArray built for each
-        attrs = item.attrs
-        if "units" not in attrs or "long_name" not in attrs:
-            missing = [k for k in ("units", "long_name") if k not in attrs]
+        missing = [k for k in ("units", "long_name") if k not in item.attrs]
+        if missing:
             raise AssertionError(f"result variable '{name}' lacks {missing}")
 
 
