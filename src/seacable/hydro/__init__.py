@@ -6,7 +6,8 @@
 """
 
 from .database import HydroDatabase
+from .cummins import CumminsMotion, frequency_response, simulate_cummins
 from .radiation import kernel_check, linear_transforms, ogilvie, retardation_kernel
 from .wamit import read_wamit
 
-__all__ = ["HydroDatabase", "kernel_check", "linear_transforms", "ogilvie", "read_wamit", "retardation_kernel"]
+__all__ = ["CumminsMotion", "HydroDatabase", "frequency_response", "simulate_cummins", "kernel_check", "linear_transforms", "ogilvie", "read_wamit", "retardation_kernel"]
