@@ -68,6 +68,10 @@ class SystemFE:
     ext_f: np.ndarray = None
     ext_n: np.ndarray = None
     spin: np.ndarray = None  # (nb, 3) body axes: the axis turning about which moves nothing (a rod's), or zeros
+    # the bodies' radiation memory (Cummins): kernel (nb, n_k, 6, 6) sampled every ``memory_step`` [s], K(0) first and
+    # the last sample halved (:func:`seacable.system.dynamics.kernel.coupled_steps`); n_k = 1 and zeros: none
+    memory_kernel: np.ndarray = None
+    memory_step: float = 0.0
     body_motions: dict = field(default_factory=dict)  # prescribed body -> its motion bound to the run (dofs(times))
 
     def kernel_args(self):
@@ -303,7 +307,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
-        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin)
+        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
+        memory_kernel=np.zeros((nb, 1, 6, 6)))
     return fe
 
 
