@@ -274,6 +274,25 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     if a is not None:
         for name, ser in a.external_forces.items():
             series[name] = ser.table()
+    memory = np.zeros((nb, 1, 6, 6))
+    step = 0.0
+    if a is not None and any(system.bodies[n].hydrodynamics is not None for n in free_bodies):
+        # bodies with a database: their radiation memory at the run's step and their wave loads as force series
+        from ..hydro import body_wave_loads, memory_kernels
+        from ...mooring.motion import sea_of
+
+        step = a.output_interval / max(1, math.ceil(a.output_interval / a.time_step - 1e-9))
+        rho, g = model.water.density, model.water.gravity
+        memory = memory_kernels(system, free_bodies, rho, g, step)
+        times = step * np.arange(int(math.ceil(a.duration / step)) + 2)
+        for name in free_bodies:
+            waves = body_wave_loads(system.bodies[name], name, sea_of(model.water), rho, g, times)
+            if waves is None:
+                continue
+            if name in series:  # the user's series on the same times, added
+                t_u, f_u = series[name]
+                waves = waves + np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1)
+            series[name] = (times, waves)
     nt = max([len(t) for t, _ in series.values()], default=1)
     ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
     for k, name in enumerate(free_bodies):
@@ -308,7 +327,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
         bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
-        memory_kernel=np.zeros((nb, 1, 6, 6)))
+        memory_kernel=memory, memory_step=step)
     return fe
 
 
