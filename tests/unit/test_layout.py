@@ -136,7 +136,9 @@ def test_lower_layers_do_not_import_higher_ones(package_graph):
     graph = package_graph
     low = ["seacable.line", "seacable.environment", "seacable.waves", "seacable.statics.catenary",
            "seacable.statics.multisegment", "seacable.statics.towed", "seacable.statics.laying",
-           "seacable.modal.eigen", "seacable.modal.vertical", "seacable.modal.wave_speed"]
+           "seacable.modal.eigen", "seacable.modal.vertical", "seacable.modal.wave_speed",
+           "seacable.hydro.database", "seacable.hydro.wamit", "seacable.hydro.radiation",
+           "seacable.hydro.cummins", "seacable.hydro.loads", "seacable.hydro.response", "seacable.wind"]
     high = {"seacable.case", "seacable.simulate", "seacable.results", "seacable.cli", "seacable.io",
             "seacable.sweeps", "seacable.extremes"}
     bad = {m: sorted(d for d in _reach(graph, m) if d in high or d.startswith(("seacable.plot", "seacable.io.")))

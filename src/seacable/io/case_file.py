@@ -171,17 +171,24 @@ def _check_path(path) -> None:
 
 
 def resolve_files(data, folder: Path) -> None:
-    """Make the relative ``file`` of a vessel, tug, motion, route, bathymetry or force table relative to the
-    case file's folder."""
+    """Make the relative ``file`` of a vessel, tug, motion, route, bathymetry or force table, and of a body's
+    hydrodynamic database, relative to the case file's folder."""
+    bodies = data.get("bodies") if isinstance(data, dict) else None
+    hydro = [b.get("hydrodynamics") for b in bodies.values() if isinstance(b, dict)] if isinstance(bodies, dict) else []
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
+        _relative(hydro, folder)
         return
-    tables = [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "lay_table", "motion",
+    tables = hydro + [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "lay_table", "motion",
                                             "tug")]
     for key in ("body_motions", "point_motions", "external_forces"):  # system_dynamic: one table per name
         named = analysis.get(key)
         if isinstance(named, dict):
             tables += list(named.values())
+    _relative(tables, folder)
+
+
+def _relative(tables, folder: Path) -> None:
     for table in tables:
         if isinstance(table, dict) and isinstance(table.get("file"), str):
             f = Path(table["file"])

@@ -382,6 +382,11 @@ class SystemCase(Model):
         if self.environment.depth is None:
             raise ValueError(f"analysis '{self.analysis.type}' needs environment.depth (m): the seabed the lines "
                              "rest on. Suggested fix: add 'depth:' under 'environment'.")
+        for name, body in self.bodies.items():
+            given = body.database_conflicts()
+            if given:
+                raise ValueError(f"bodies.{name}: {', '.join(given)} and hydrodynamics both given: the database gives "
+                                 f"the hydrostatics and the added mass. Suggested fix: leave out {', '.join(given)}.")
         try:
             system = self.system()
         except InputError as err:
@@ -419,8 +424,15 @@ class SystemCase(Model):
         return self
 
     def system(self) -> MooringSystem:
-        """The mooring system of the case (points, bodies, lines)."""
-        return MooringSystem(points=self.points, bodies=self.bodies, lines=self.lines)
+        """The mooring system of the case (points, bodies, lines); a body's ``hydrodynamics`` gives it the
+        database's hydrostatic stiffness and added mass (:func:`seacable.system.hydro.resolve_bodies`)."""
+        system = MooringSystem(points=self.points, bodies=self.bodies, lines=self.lines)
+        if not any(b.hydrodynamics is not None for b in self.bodies.values()):
+            return system
+        from .hydro import resolve_bodies
+
+        env = self.environment
+        return resolve_bodies(system, env.water_density, env.gravity)
 
     def damaged_system(self, names: tuple[str, ...] | None = None) -> MooringSystem | None:
         """The system without the analysis's ``damaged_lines`` (or without ``names``, the lines that

@@ -27,7 +27,7 @@ from pydantic import Field, model_validator
 from .._model import Model, quantity, suggest
 from ..line import Line
 
-__all__ = ["Body", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
+__all__ = ["Body", "BodyHydrodynamics", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -92,6 +92,33 @@ class SystemPoint(Model):
         return (self.mass - water_density * self.volume) * gravity
 
 
+class BodyHydrodynamics(Model):
+    """A body's hydrodynamic database and what the dynamics take from it (issue 39, :mod:`seacable.hydro`).
+
+    The database (WAMIT's files ``FILE.1``, ``.hst``, and ``.3`` and a mean drift file when the run has waves)
+    gives the body its hydrostatic stiffness and infinite-frequency added mass (instead of ``waterplane_*``,
+    ``hydrostatic_stiffness`` and ``added_mass``), and in ``system_dynamic`` its radiation memory (Cummins), the
+    first-order wave force in the case's waves and the mean or slow drift (Newman). The coefficients are about
+    the body's reference point, in its axes; WAMIT's hydrostatics hold the waterplane and the buoyancy's moment,
+    and the weight's moment only when the WAMIT run had the body's centre of gravity (``weight_in_hydrostatics``;
+    otherwise it is added from ``mass`` and ``center_of_gravity``, as OpenFAST does).
+    """
+
+    file: str = Field(description="WAMIT output's root: the path without '.1', '.3', '.hst', relative to the case "
+                                  "file.")
+    ulen: quantity("m", gt=0, fix="give WAMIT's length scale ULEN in metres (HydroDyn's WAMITULEN).") = Field(
+        1.0, description="WAMIT's length scale ULEN. [m]")
+    kernel_length: quantity("s", gt=0) = Field(60.0, description="Length of the radiation memory kept. [s]")
+    weight_in_hydrostatics: bool = Field(False, description="The .hst already holds the weight's moment.")
+    excitation: bool = Field(True, description="First-order wave force from the database in the case's waves.")
+    drift: Literal["none", "mean", "newman"] = Field(
+        "newman", description="Second-order drift: none, the mean drift, or the mean and slow drift by Newman's "
+                              "approximation (needs a .12d, .9 or .8 file).")
+    ramp: quantity("s", ge=0) = Field(
+        0.0, description="Smooth start of the oscillating wave loads (half cosine); the mean drift is there from t = 0, "
+                         "where the static start puts the body. With 0 they start at t = 0 from zero. [s]")
+
+
 class Body(Model):
     """A rigid body with six degrees of freedom.
 
@@ -130,6 +157,9 @@ class Body(Model):
         The reference point is tied where ``position`` puts it (free body) or to the motion
         (prescribed body) by a ball joint: only the three rotations are free (a MoorDyn
         ``Pinned``/``CoupledPinned`` rod or body).
+    hydrodynamics
+        A hydrodynamic database (:class:`BodyHydrodynamics`) for the hydrostatics, added mass, radiation
+        memory and wave loads.
     """
 
     kind: Literal["free", "fixed", "prescribed"] = Field("free", description="free, fixed or prescribed.")
@@ -149,6 +179,8 @@ class Body(Model):
     linear_damping: _MATRIX6 | None = Field(None, description="6x6 linear damping matrix.")
     quadratic_damping: _MATRIX6 | None = Field(None, description="6x6 quadratic damping matrix.")
     pinned: bool = Field(False, description="Reference point tied by a ball joint; only rotations free.")
+    hydrodynamics: BodyHydrodynamics | None = Field(
+        None, description="Hydrodynamic database (WAMIT files): hydrostatics, added mass, radiation memory, waves.")
 
     @model_validator(mode="after")
     def _check(self):
@@ -166,6 +198,14 @@ class Body(Model):
             if m is not None:
                 _finite(key, m, "SI units")
         return self
+
+    def database_conflicts(self) -> list[str]:
+        """The inputs a body's ``hydrodynamics`` gives and that are given too (a case's check; a system resolved
+        from the database holds both)."""
+        if self.hydrodynamics is None:
+            return []
+        given = [k for k in ("hydrostatic_stiffness", "added_mass") if getattr(self, k) is not None]
+        return given + [k for k in ("waterplane_area", "waterplane_moments") if any(np.atleast_1d(getattr(self, k)))]
 
     def matrix(self, key: str) -> np.ndarray:
         """A 6x6 matrix field as an array (zeros when not given)."""

@@ -109,11 +109,14 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         if body.kind == "free":
             body.check_accelerable(name, _moment_sources(system, name, a))  # not a LinAlgError
     env = case.environment
-    free = [n for n, b in system.bodies.items() if b.kind == "free"]
+    # a body with a hydrodynamic database and its excitation feels the waves (seacable.system.hydro); the others not
+    free = [n for n, b in system.bodies.items() if b.kind == "free"
+            and (b.hydrodynamics is None or not b.hydrodynamics.excitation)]
     if free and env.waves is not None:
         warnings.warn(f"the water's waves act on the lines only, not on the free bodies ({', '.join(free)}): their "
                       "wave loads are not modelled (the current acts on them through their quadratic damping). "
-                      "Suggested fix: give the wave loads as analysis.external_forces (a time series).",
+                      "Suggested fix: give the body a hydrodynamic database (bodies.NAME.hydrodynamics), or its wave loads as "
+                      "analysis.external_forces (a time series).",
                       SeacableWarning, stacklevel=2)
     for name in a.point_motions:
         if name not in system.points:

@@ -68,6 +68,10 @@ class SystemFE:
     ext_f: np.ndarray = None
     ext_n: np.ndarray = None
     spin: np.ndarray = None  # (nb, 3) body axes: the axis turning about which moves nothing (a rod's), or zeros
+    # the bodies' radiation memory (Cummins): kernel (nb, n_k, 6, 6) sampled every ``memory_step`` [s], K(0) first and
+    # the last sample halved (:func:`seacable.system.dynamics.kernel.coupled_steps`); n_k = 1 and zeros: none
+    memory_kernel: np.ndarray = None
+    memory_step: float = 0.0
     body_motions: dict = field(default_factory=dict)  # prescribed body -> its motion bound to the run (dofs(times))
 
     def kernel_args(self):
@@ -270,6 +274,25 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     if a is not None:
         for name, ser in a.external_forces.items():
             series[name] = ser.table()
+    memory = np.zeros((nb, 1, 6, 6))
+    step = 0.0
+    if a is not None and any(system.bodies[n].hydrodynamics is not None for n in free_bodies):
+        # bodies with a database: their radiation memory at the run's step and their wave loads as force series
+        from ..hydro import body_wave_loads, memory_kernels
+        from ...mooring.motion import sea_of
+
+        step = a.output_interval / max(1, math.ceil(a.output_interval / a.time_step - 1e-9))
+        rho, g = model.water.density, model.water.gravity
+        memory = memory_kernels(system, free_bodies, rho, g, step)
+        times = step * np.arange(int(math.ceil(a.duration / step)) + 2)
+        for name in free_bodies:
+            waves = body_wave_loads(system.bodies[name], name, sea_of(model.water), rho, g, times)
+            if waves is None:
+                continue
+            if name in series:  # the user's series on the same times, added
+                t_u, f_u = series[name]
+                waves = waves + np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1)
+            series[name] = (times, waves)
     nt = max([len(t) for t, _ in series.values()], default=1)
     ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
     for k, name in enumerate(free_bodies):
@@ -303,7 +326,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
-        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin)
+        bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
+        memory_kernel=memory, memory_step=step)
     return fe
 
 

@@ -83,7 +83,7 @@ def _angle_rows(E, m):
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
-            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin):
+            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
     Newton matrix and no correction.
@@ -96,6 +96,9 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     about which turning the body moves none of its points, centres of gravity and buoyancy nor its
     hydrostatics (a rod's own axis; zeros when none): that part of the rotation step is left out, since it
     has no stiffness and the Newton matrix's unsymmetric turning terms would give it an arbitrary size.
+    ``bmem`` (nb, 6) and ``bk0`` (nb, 6, 6): each body's radiation memory (Cummins), the force of its velocities
+    before this step and the matrix of the current one's share (``dt K_0 / 2``): the force ``-bmem - bk0 u``
+    (global axes, ``u`` the reference point's velocity and the angular velocity); zeros without memory.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco) = args
@@ -189,6 +192,12 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         _body_current(q[b], env, cur_depth, cur_speed, ucb[b])
         body_load(q[b], ub[b], ucb[b], t, par, bkhs[b], badd[b], blin[b], bquad[b], ext_t[b], ext_f[b], ext_n[b], rho, g,
                   f6, M6, frame[b])
+        if dynamic:  # the radiation memory: its past, and the current velocity's share
+            for k in range(6):
+                v = bmem[b, k]
+                for c in range(6):
+                    v += bk0[b, k, c] * ub[b, c]
+                f6[k] -= v
         for k in range(6):
             v = -f6[k]
             if dynamic:
@@ -240,7 +249,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         body_tangent(q[b], ub[b], ucb[b], bpar[b], bkhs[b], blin[b], bquad[b], rho, g, Kb, Cb, frame[b])
         for k in range(6):
             for c in range(6):
-                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * Cb[k, c] if dynamic else 0.0)
+                Jq[6 * b + k, 6 * b + c] += Kb[k, c] + (cc * (Cb[k, c] + bk0[b, k, c]) if dynamic else 0.0)
     nc3 = 3 * nca
     nt3 = nc3 + 3 * npart  # the rows the constraints touch: the tied nodes', then their free nodes'
     rows = np.empty(nt3, np.int64)
@@ -382,7 +391,7 @@ def _apply(X, q, du, dq, fidx, s):
 def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
                   cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
                   fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
-                  beta, gamma, tol, max_iter, F, M, tension, stats, frame):
+                  beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead):
     """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
 
     ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
@@ -392,9 +401,19 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     ``stats`` receives (iterations, last residual, absolute force tolerance [N]). After each converged step a
     body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
     ``frame`` is updated in place, with the continuous global angles of every re-charted body).
+
+    ``rker`` (nb, n_k, 6, 6): each body's radiation kernel sampled every ``dt`` (``rker[b, 0]`` = K(0), the last
+    sample halved: the trapezoidal rule), zeros for a body without memory (n_k 1 when none has any); ``rhist``
+    (nb, n_k, 6) the velocities ``u`` of the past steps, ``rhist[b, (rhead[b] - j + 1) % n_k]`` the one ``j`` steps
+    back, advanced in place. The memory force at a step's end is ``-dt (K_0 u / 2 + sum_{j>=1} K_j u_{-j})``.
     """
     n = X.shape[0]
     nb = q.shape[0]
+    nk = rker.shape[1]
+    bmem = np.zeros((nb, 6))
+    bk0 = np.zeros((nb, 6, 6))
+    Eu = np.empty((3, 3))
+    edu = np.empty(3)
     nd = 3 * nfree
     band = np.zeros((nd, 2 * bw + 1))
     du = np.zeros(nd)
@@ -420,6 +439,17 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
         copy_2d(qdn, qd)
         copy_2d(qddn, qdd)
         t = t0 + (step + 1) * dt
+        if nk > 1:  # the radiation memory of the velocities before this step
+            for b in range(nb):
+                for r in range(6):
+                    v = 0.0
+                    for j in range(1, nk):
+                        h = rhist[b, (rhead[b] - j + 1) % nk]
+                        for c in range(6):
+                            v += rker[b, j, r, c] * h[c]
+                    bmem[b, r] = dt * v
+                    for c in range(6):
+                        bk0[b, r, c] = 0.5 * dt * rker[b, 0, r, c]
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         for j in range(con_node.size):
             if con_chan[j] >= 0:
@@ -449,7 +479,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
                                  env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
-                                 tension, band, du, dq, out, Yt, tied, frame, spin)
+                                 tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
                     break
             res, scale = out[0], out[1]
@@ -484,6 +514,13 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             copy_2d(qdd, qddn)
             return step
         commit_viscoelastic(args[-1])
+        if nk > 1:  # this step's velocities into the memory (before a re-chart changes the angles' map)
+            for b in range(nb):
+                angular_map(q[b], qd[b], Eu, edu, frame[b])
+                rhead[b] = (rhead[b] + 1) % nk
+                for r in range(3):
+                    rhist[b, rhead[b], r] = qd[b, r]
+                    rhist[b, rhead[b], 3 + r] = Eu[r, 0] * qd[b, 3] + Eu[r, 1] * qd[b, 4] + Eu[r, 2] * qd[b, 5]
         for b in range(nb):  # once re-charted, a body is re-charted after every step
             track_frame(q[b], qd[b], qdd[b], frame[b], gq, CHART_LIMIT if frame[b, F_ON] == 0.0 else 0.0)
         for j in range(con_node.size):
@@ -541,7 +578,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, np.bool_(False), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
-                         spin)
+                         spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)))
         res, scale = out[0], out[1]
         stats[0] = it
         stats[1] = res

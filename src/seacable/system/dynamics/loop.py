@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..._atomic import keep_whole_outputs
-from ...errors import ConvergenceError
+from ...errors import ConvergenceError, InputError
 from ...mooring.motion import RAOMotion, sea_of
 from ...mooring.solver import advance_interval
 from ...mooring.solver import simulate as simulate_lines
@@ -278,6 +278,16 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     interrupted = False
     args = fe.kernel_args()
     bargs = fe.body_args()
+    rker = fe.memory_kernel if fe.memory_kernel is not None else np.zeros((nb, 1, 6, 6))
+    memory = rker.shape[1] > 1
+    if memory and abs(fe.memory_step - h) > 1e-9 * fe.memory_step:
+        raise InputError(f"the bodies' radiation kernel is sampled every {fe.memory_step:g} s, and the run steps "
+                         f"{h:g} s. Suggested fix: build the kernel at the run's time step (an "
+                         "output_interval that is a whole number of time steps).")
+    rhist = np.zeros((nb, rker.shape[1], 6))
+    g0 = _global_state(q, qd, frame)
+    rhist[:, 0, :3], rhist[:, 0, 3:] = qd[:, :3], g0[2]  # the start's velocity: one step back at the first step
+    rhead = np.zeros(nb, np.int64)
     begin = _time.perf_counter()
     try:
         for k in range(n_out):
@@ -286,11 +296,14 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
                                         m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
                                         fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
                                         fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma,
-                                        tol, max_iter, F, M, tension, stats, frame)
+                                        tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead)
 
-            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats, max_halvings,
-                                           max_iter, "system", "smaller time_step, more elements, or check the "
-                                                               "motions and external forces for a jump")
+            # the memory's history is kept every time step: a halved step would break it, so it is not halved
+            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats,
+                                           0 if memory else max_halvings, max_iter, "system",
+                                           "smaller time_step, more elements, or check the motions and external "
+                                           "forces for a jump" + (" (a body with radiation memory steps at its "
+                                                                  "kernel's step: it is not halved)" if memory else ""))
             steps += done
             iterations += spent
             times.append((k + 1) * output_interval)

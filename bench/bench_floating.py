@@ -1,0 +1,81 @@
+"""Speed of a coupled storm of a floating platform with its hydrodynamic database (issue 39).
+
+The IEA-15 MW VolturnUS-S on its three chains (the public MoorDyn deck: 850 m of 685 kg/m chain, anchors 837.6 m
+out in 200 m of water, fairleads at 14 m draft), its WAMIT database (radiation memory over 60 s, first-order
+excitation, Newman slow drift from the .12d diagonal), in a 3-hour JONSWAP storm (Hs 8 m, Tp 12 s, heading 0,
+200 components), stepped at 0.1 s with the lines at ``N`` elements. The body's mass properties are the platform's
+and turbine's rounded (mass 2.03e7 kg, centre of gravity 2 m below the water line, inertias 4e10, 4e10, 2.4e10 kg
+m^2): a speed figure, not a validation. Issue 39's target: under 30 s on one core with 40 elements a line.
+
+Reads the full database from ``../shared/peers/iea15_volturnus`` when it is there, else the tests' extract (its
+excitation stops at 1.45 rad/s: the sea is cut there).
+
+Run: ``python bench/bench_floating.py [DURATION_S [ELEMENTS]]`` (default 10800 s, 40).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+SHARED = ROOT.parent / "shared" / "peers" / "iea15_volturnus" / "IEA-15-240-RWT-UMaineSemi"
+EXTRACT = ROOT / "tests" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+
+
+def case(duration: float, elements: int) -> dict:
+    database = SHARED if Path(f"{SHARED}.3").is_file() else EXTRACT
+    top = 1.45 if database == EXTRACT else 3.0
+    fair = [(-58.0, 0.0), (29.0, 50.229), (29.0, -50.229)]
+    anchor = [(-837.6, 0.0), (418.8, 725.383), (418.8, -725.383)]
+    points, lines = {}, {}
+    for k in range(3):
+        points[f"fair{k}"] = {"kind": "body", "body": "hull", "position": [*fair[k], -14.0]}
+        points[f"anchor{k}"] = {"kind": "fixed", "position": [*anchor[k], -200.0]}
+        lines[f"chain{k}"] = {"line_type": "chain", "length": 850.0, "end_a": f"anchor{k}", "end_b": f"fair{k}"}
+    return {
+        "name": "volturnus_storm",
+        "line_types": {"chain": {"diameter": 0.333, "mass_per_length": 685.0, "axial_stiffness": 3.27e9,
+                                 "drag_normal": 2.0, "added_mass_normal": 0.82, "drag_tangential": 0.4}},
+        "environment": {"water_density": 1025.0, "gravity": 9.80665, "depth": 200.0,
+                        "waves": {"spectrum": "jonswap", "hs": 8.0, "tp": 12.0, "seed": 1, "n_components": 200,
+                                  "frequency_range": [0.25, top]}},
+        "bodies": {"hull": {"kind": "free", "mass": 2.03e7, "center_of_gravity": [0.0, 0.0, -2.0],
+                            "inertia": [4e10, 4e10, 2.4e10], "volume": 20206.34889,
+                            "hydrodynamics": {"file": str(database), "kernel_length": 60.0, "drift": "newman",
+                                              "ramp": 60.0}}},
+        "points": points, "lines": lines,
+        "analysis": {"type": "system_dynamic", "duration": duration, "time_step": 0.1, "output_interval": 1.0,
+                     "n_elements": elements},
+    }
+
+
+def main(duration: float = 10800.0, elements: int = 40) -> None:
+    import seacable as sc
+
+    folder = Path(tempfile.mkdtemp(prefix="bench_floating_"))
+    path = folder / "volturnus.yaml"
+    path.write_text(yaml.safe_dump(case(duration, elements), sort_keys=False))
+    print(f"VolturnUS-S, {duration:g} s storm, {elements} elements a line, dt 0.1 s, load {os.getloadavg()[0]:.2f}")
+    loaded = sc.load_case(path)
+    warm = case(2.0, elements)  # the kernels compiled (or loaded from the cache) before the timing
+    (folder / "warm.yaml").write_text(yaml.safe_dump(warm, sort_keys=False))
+    sc.run(sc.load_case(folder / "warm.yaml"))
+    cpu, wall = time.process_time(), time.perf_counter()
+    ds = sc.run(loaded)
+    wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
+    surge = ds["body_position"].values[:, 0, 0]
+    tension = ds["fairlead_tension"].values
+    print(f"{'wall [s]':>9} {'CPU [s]':>8} {'x real time':>12} {'surge mean/max [m]':>19} {'max fairlead [kN]':>18}")
+    print(f"{wall:9.1f} {cpu:8.1f} {duration / wall:12.0f} {surge.mean():9.2f}/{surge.max():<8.2f} "
+          f"{tension.max() / 1e3:18.0f}")
+
+
+if __name__ == "__main__":
+    args = sys.argv[1:]
+    main(float(args[0]) if args else 10800.0, int(args[1]) if len(args) > 1 else 40)

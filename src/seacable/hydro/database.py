@@ -1,0 +1,161 @@
+"""A floating body's hydrodynamic database: the linear potential-flow coefficients a body model runs on (issue 39).
+
+Everything is dimensional and SI, about the database's reference point, in seacable's axes (x, y horizontal, z
+up; DOFs surge, sway, heave, roll, pitch, yaw, :data:`seacable.raos.DOFS`):
+
+- ``added_mass[f]`` and ``damping[f]`` (6, 6) at ``omega[f]`` [rad/s]: [kg], [kg m], [kg m^2] and [N s/m],
+  [N s], [N m s]; ``added_mass_inf`` and ``added_mass_zero`` the limits at infinite and zero frequency;
+- ``excitation[h, f]`` (6,) complex, the first-order wave force per metre of wave amplitude [N/m, N m/m] at
+  ``heading[h]`` (the direction the waves travel towards, from +x towards +y [rad]) and ``omega[f]``, in
+  seacable's convention (:mod:`seacable.raos`): a wave whose elevation at the origin is ``a cos(w t)`` exerts
+  ``a |X| cos(w t + phase)``, ``X = |X| e^(-i phase)``;
+- ``hydrostatics`` (6, 6) the hydrostatic restoring matrix [N/m, N, N m/rad] as the database gives it (WAMIT's
+  ``.hst`` holds the waterplane and the buoyancy's moment, and the weight's moment only where the centre of
+  gravity was given: :func:`seacable.hydro.wamit.read_wamit` says which);
+- ``drift[h, f]`` (6,) the mean wave drift force per square metre of wave amplitude [N/m^2, N m/m^2] at
+  ``drift_heading[h]`` and ``drift_omega[f]``: a regular wave of amplitude ``a`` pushes the body by
+  ``drift a^2`` on average.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError
+
+__all__ = ["HydroDatabase"]
+
+
+def _check_frequencies(omega: np.ndarray, what: str, source: str) -> None:
+    if omega.ndim != 1 or omega.size < 2 or not np.all(np.isfinite(omega)) or omega[0] <= 0 or np.any(np.diff(omega) <= 0):
+        raise InputError(f"{source}: the {what} frequencies must be at least two, positive and increasing, got "
+                         f"{np.round(omega[:8], 6).tolist()} rad/s. Suggested fix: give each frequency once.")
+
+
+def _check_headings(heading: np.ndarray, what: str, source: str) -> None:
+    wrapped = np.mod(heading, 2 * math.pi)
+    if heading.ndim != 1 or heading.size < 1 or not np.all(np.isfinite(heading)) or \
+            np.unique(np.round(wrapped, 9)).size != heading.size:
+        raise InputError(f"{source}: each {what} heading must be given once (modulo 360 deg), got "
+                         f"{np.round(np.degrees(heading), 3).tolist()} deg. Suggested fix: remove the repeated "
+                         "headings (-180 and 180 deg are the same).")
+
+
+@dataclass(frozen=True)
+class HydroDatabase:
+    """A body's linear hydrodynamic coefficients (module docstring for the units and conventions).
+
+    ``excitation`` and ``drift`` may be left out (None) for a body that is only radiated or only excited;
+    ``added_mass_zero`` is None when the source has no zero-frequency limit. ``reference`` is the point the
+    coefficients are about, in the body's axes [m]; ``rho`` [kg/m^3] and ``g`` [m/s^2] are those the
+    dimensional values were made with.
+    """
+
+    omega: np.ndarray
+    added_mass: np.ndarray
+    damping: np.ndarray
+    added_mass_inf: np.ndarray
+    hydrostatics: np.ndarray
+    heading: np.ndarray | None = None
+    excitation_omega: np.ndarray | None = None
+    excitation: np.ndarray | None = None
+    added_mass_zero: np.ndarray | None = None
+    drift_omega: np.ndarray | None = None
+    drift_heading: np.ndarray | None = None
+    drift: np.ndarray | None = None
+    reference: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    rho: float = 1025.0
+    g: float = 9.80665
+    source: str = "hydrodynamic database"
+
+    def __post_init__(self):
+        src = self.source
+        w = np.asarray(self.omega, float)
+        _check_frequencies(w, "radiation", src)
+        for name, shape in (("added_mass", (w.size, 6, 6)), ("damping", (w.size, 6, 6)),
+                            ("added_mass_inf", (6, 6)), ("hydrostatics", (6, 6))):
+            value = np.asarray(getattr(self, name))
+            if value.shape != shape:
+                raise InputError(f"{src}: {name} must have the shape {shape} (frequencies x 6 x 6 DOFs), got "
+                                 f"{value.shape}. Suggested fix: give every DOF pair at every frequency.")
+            if not np.all(np.isfinite(value)):
+                raise InputError(f"{src}: {name} holds a NaN or an infinity. Suggested fix: check the source file.")
+        if (self.excitation is None) != (self.heading is None) or (self.excitation is None) != (self.excitation_omega is None):
+            raise InputError(f"{src}: the excitation needs its headings and frequencies, and they need it.")
+        if self.excitation is not None:
+            b, wx, x = (np.asarray(a) for a in (self.heading, self.excitation_omega, self.excitation))
+            _check_headings(b, "excitation", src)
+            _check_frequencies(wx, "excitation", src)
+            if x.shape != (b.size, wx.size, 6):
+                raise InputError(f"{src}: the excitation must have the shape ({b.size} headings, {wx.size} "
+                                 f"frequencies, 6 DOFs), got {x.shape}. Suggested fix: give every DOF at every "
+                                 "heading and frequency.")
+        if self.drift is not None:
+            b, wd, d = (np.asarray(a) for a in (self.drift_heading, self.drift_omega, self.drift))
+            _check_headings(b, "drift", src)
+            _check_frequencies(wd, "drift", src)
+            if d.shape != (b.size, wd.size, 6):
+                raise InputError(f"{src}: the mean drift must have the shape ({b.size} headings, {wd.size} "
+                                 f"frequencies, 6 DOFs), got {d.shape}.")
+        if not (self.rho > 0 and self.g > 0):
+            raise InputError(f"{src}: rho = {self.rho} kg/m^3 and g = {self.g} m/s^2 must be > 0.")
+
+    @property
+    def omega_range(self) -> tuple[float, float]:
+        """The lowest and highest radiation frequency [rad/s]."""
+        return float(self.omega[0]), float(self.omega[-1])
+
+    def excitation_at(self, omega, heading) -> np.ndarray:
+        """The excitation per metre of amplitude at frequencies ``omega`` [rad/s] and headings ``heading`` [rad]
+        (arrays of one shape): (..., 6) complex, linear in frequency (real and imaginary parts) and in heading
+        (periodic over 2 pi). Frequencies outside the database are refused: no force is made up."""
+        if self.excitation is None:
+            raise InputError(f"{self.source} has no wave excitation. Suggested fix: give the WAMIT .3 file (or a "
+                             "Capytaine dataset with diffraction).")
+        return _interp_heading_frequency(self.heading, self.excitation_omega, self.excitation, omega, heading,
+                                         "wave excitation", self.source)
+
+    def drift_at(self, omega, heading) -> np.ndarray:
+        """The mean drift per square metre of amplitude at ``omega`` [rad/s] and ``heading`` [rad]: (..., 6)."""
+        if self.drift is None:
+            raise InputError(f"{self.source} has no mean drift. Suggested fix: give WAMIT's .8, .9 or .12d file.")
+        return _interp_heading_frequency(self.drift_heading, self.drift_omega, self.drift, omega, heading,
+                                         "mean drift", self.source).real
+
+
+def _interp_heading_frequency(heading, omega_table, table, omega, at_heading, what: str, source: str) -> np.ndarray:
+    """``table[h, f, :]`` at the points (``omega``, ``at_heading``): linear in frequency, periodic-linear in heading."""
+    w = np.asarray(omega, float)
+    b = np.mod(np.asarray(at_heading, float), 2 * math.pi)
+    w, b = np.broadcast_arrays(w, b)
+    lo_w, hi_w = float(omega_table[0]), float(omega_table[-1])
+    outside = (w < lo_w * (1 - 1e-12)) | (w > hi_w * (1 + 1e-12))
+    if np.any(outside):
+        bad = float(w[outside].flat[0])
+        raise InputError(f"{source}: the {what} is asked for at {bad:.4g} rad/s, outside its frequencies "
+                         f"{lo_w:.4g}-{hi_w:.4g} rad/s. Suggested fix: cut the sea's spectrum to the database's "
+                         "frequencies, or give a database that covers the sea.")
+    hs = np.mod(np.asarray(heading, float), 2 * math.pi)
+    order = np.argsort(hs)
+    hs, vals = hs[order], np.asarray(table)[order]
+    # frequency first: (headings, points, 6)
+    re = np.stack([np.stack([np.interp(w.ravel(), omega_table, vals[h, :, j].real) for j in range(6)], axis=-1)
+                   for h in range(hs.size)])
+    im = np.stack([np.stack([np.interp(w.ravel(), omega_table, vals[h, :, j].imag) for j in range(6)], axis=-1)
+                   for h in range(hs.size)]) if np.iscomplexobj(vals) else np.zeros_like(re)
+    at_w = re + 1j * im
+    if hs.size == 1:
+        out = at_w[0]
+    else:
+        ext = np.r_[hs, hs[0] + 2 * math.pi]
+        bb = b.ravel()
+        bb = np.where(bb < hs[0], bb + 2 * math.pi, bb)
+        lo = np.clip(np.searchsorted(ext, bb, side="right") - 1, 0, hs.size - 1)
+        frac = ((bb - ext[lo]) / (ext[lo + 1] - ext[lo]))[:, None]
+        hi = (lo + 1) % hs.size
+        idx = np.arange(bb.size)
+        out = (1 - frac) * at_w[lo, idx] + frac * at_w[hi, idx]
+    return out.reshape(w.shape + (6,))

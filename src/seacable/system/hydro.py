@@ -1,0 +1,137 @@
+"""Bodies with a hydrodynamic database in a mooring system (issue 39): their matrices for the statics and the
+dynamics, and what the coupled time loop adds (radiation memory, wave loads).
+
+:func:`resolve_bodies` gives each body with ``hydrodynamics`` (:class:`~seacable.system.model.BodyHydrodynamics`)
+the database's hydrostatic stiffness, with the weight's moment added unless the database holds it, and its
+infinite-frequency added mass, so that the statics and the dynamics use them as a user's matrices.
+:func:`body_wave_loads` and :func:`memory_kernels` are the time loop's: the first-order force of the case's sea
+at the body's position and its mean or slow drift, as a force series; the retardation kernels at the run's step.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .._ramp import smooth_ramp
+from ..errors import InputError
+from .model import Body, MooringSystem
+
+__all__ = ["body_wave_loads", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
+
+
+@functools.lru_cache(maxsize=8)
+def _read(root: str, stamp: tuple, ulen: float, rho: float, g: float):
+    from ..hydro import read_wamit
+
+    return read_wamit(root, ulen=ulen, rho=rho, g=g)
+
+
+def database(body: Body, rho: float, g: float):
+    """The :class:`~seacable.hydro.HydroDatabase` of a body's ``hydrodynamics`` (read once per version of its files)."""
+    h = body.hydrodynamics
+    root = Path(h.file)
+    one = Path(f"{root}.1")
+    if not one.is_file():
+        raise InputError(f"hydrodynamics.file: WAMIT file '{one}' does not exist. Suggested fix: give the root of "
+                         "the WAMIT files (the path without '.1', '.3', '.hst') relative to the case file.")
+    st = one.stat()
+    return _read(str(root.resolve()), (st.st_mtime_ns, st.st_size), float(h.ulen), float(rho), float(g))
+
+
+def weight_stiffness(body: Body, g: float) -> np.ndarray:
+    """The restoring of the body's weight about its reference point (6, 6), in its axes: ``-skew(F) skew(c)`` for
+    ``F = (0, 0, -m g)`` at the centre of gravity ``c`` (the rows and columns of roll, pitch and yaw)."""
+    k = np.zeros((6, 6))
+    f = -body.mass * g
+    cx, cy, cz = body.center_of_gravity
+    k[3, 3] = k[4, 4] = f * cz
+    k[3, 5] = -f * cx
+    k[4, 5] = -f * cy
+    return k
+
+
+def resolve_bodies(system: MooringSystem, rho: float, g: float) -> MooringSystem:
+    """The system with each body's ``hydrodynamics`` turned into its hydrostatic stiffness and added mass."""
+    if not any(b.hydrodynamics is not None for b in system.bodies.values()):
+        return system
+    bodies = {}
+    for name, b in system.bodies.items():
+        if b.hydrodynamics is None:
+            bodies[name] = b
+            continue
+        db = database(b, rho, g)
+        stiffness = db.hydrostatics.copy()
+        if not b.hydrodynamics.weight_in_hydrostatics:
+            stiffness += weight_stiffness(b, g)
+        if b.volume <= 0:
+            raise InputError(f"bodies.{name}: a body with hydrodynamics needs its displaced volume (volume, m^3: "
+                             "WAMIT's, HydroDyn's PtfmVol0); the database's hydrostatics hold only the restoring.")
+        bodies[name] = b.model_copy(update={"hydrostatic_stiffness": tuple(map(tuple, stiffness)),
+                                            "added_mass": tuple(map(tuple, db.added_mass_inf))})
+    return MooringSystem(points=system.points, bodies=bodies, lines=system.lines)
+
+
+def memory_kernels(system: MooringSystem, free_bodies, rho: float, g: float, dt: float) -> np.ndarray:
+    """The free bodies' retardation kernels at the step ``dt`` (nb, n_k, 6, 6), the last sample halved (the
+    trapezoidal rule), zeros for a body without a database; (nb, 1, 6, 6) zeros when none has one."""
+    from ..hydro import retardation_kernel
+
+    kernels = []
+    for name in free_bodies:
+        b = system.bodies[name]
+        if b.hydrodynamics is None:
+            kernels.append(None)
+            continue
+        _, k = retardation_kernel(database(b, rho, g), dt, float(b.hydrodynamics.kernel_length))
+        k[-1] *= 0.5
+        kernels.append(k)
+    n = max((k.shape[0] for k in kernels if k is not None), default=1)
+    out = np.zeros((len(free_bodies), n, 6, 6))
+    for i, k in enumerate(kernels):
+        if k is not None:
+            out[i, :k.shape[0]] = k
+    return out
+
+
+def body_wave_loads(body: Body, name: str, sea, rho: float, g: float, t: np.ndarray) -> np.ndarray | None:
+    """The first-order wave force and the drift the body's ``hydrodynamics`` asks for, in the sea ``sea``
+    (:class:`~seacable.seastate.SeaComponents`, None: calm) at the times ``t`` (nt, 6) [N, N m], global axes, at
+    the body's position (the sea's phases moved to its reference point); None when there is nothing."""
+    h = body.hydrodynamics
+    if h is None or sea is None or (not h.excitation and h.drift == "none"):
+        return None
+    from ..hydro.loads import first_order_force, mean_drift_force, slow_drift_force
+
+    db = database(body, rho, g)
+    if abs(body.position[5]) > 1e-12 or abs(body.position[3]) > 1e-12 or abs(body.position[4]) > 1e-12:
+        raise InputError(f"bodies.{name}: a body with hydrodynamics starts at zero roll, pitch and yaw (its database's "
+                         f"axes are the global ones), got {body.position[3:]} rad. Suggested fix: give the headings "
+                         "of the sea relative to the body instead.")
+    x0, y0 = body.position[0], body.position[1]
+    local = _moved(sea, x0, y0)
+    oscillating = np.zeros((t.size, 6))
+    try:
+        mean = mean_drift_force(db, local) if h.drift != "none" else np.zeros(6)
+        if h.excitation:
+            oscillating += first_order_force(db, local, t)
+        if h.drift == "newman":
+            oscillating += slow_drift_force(db, local, t) - mean
+    except InputError as err:
+        raise InputError(f"bodies.{name}.hydrodynamics: {err}") from None
+    # the mean from the start (the static start's load), the rest from zero at t = 0 through the ramp
+    r = smooth_ramp(t, float(h.ramp))[0] if h.ramp > 0 else (t > 0).astype(float)
+    return mean + r[:, None] * oscillating
+
+
+def _moved(sea, x0: float, y0: float):
+    """The sea with its phases referred to the point (x0, y0): ``p + k (x0 cos b + y0 sin b)``."""
+    import dataclasses
+
+    if x0 == 0.0 and y0 == 0.0:
+        return sea
+    shift = sea.wave_number * (x0 * np.cos(sea.heading) + y0 * np.sin(sea.heading))
+    return dataclasses.replace(sea, phase=np.mod(np.asarray(sea.phase) + shift, 2 * math.pi))

@@ -1,0 +1,116 @@
+"""A floating body with a hydrodynamic database, from a case file (issue 39): ``bodies.NAME.hydrodynamics`` gives
+the statics its hydrostatics and the dynamics its added mass, radiation memory and wave loads.
+
+The VolturnUS-S hull (tests/data/volturnus, WAMIT; its hydrostatics without the weight's moment, which seacable
+adds from the mass and the centre of gravity 5 m below the reference point) on three light taut ropes, which the
+reference leaves out (their stiffness, about 5 kN/m, is 2e-4 of the hull's inertia w^2 (M + A) in surge at this
+frequency, and less in heave and pitch), with a
+linear damping of 5-20 % of critical, in a 2 m regular wave of 0.85 rad/s (7.4 s) from 0 deg, ramped over 40 s.
+Its steady surge, heave and pitch against the frequency domain with the kernel's A and B and the rigid body's
+mass matrix about the reference point: within 0.5 % and 0.002 rad (measured 0.11-0.14 % and 1.3e-4 rad: the time
+step's error, second order, tests/unit/hydro/test_cummins.py).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+import seacable as sc
+from seacable.errors import InputError
+from seacable.hydro import frequency_response, ogilvie, read_wamit, retardation_kernel
+
+ROOT = Path(__file__).parents[1] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+RHO, G = 1025.0, 9.80665
+VOLUME = 20206.34889
+INERTIA = (1.2507e10, 1.2507e10, 2.3667e10)
+DAMPING = np.diag([6e5, 6e5, 1.4e6, 1.4e9, 1.4e9, 6e8])
+ZG = -5.0  # the centre of gravity 5 m below the reference point: its weight's moment m g 5 stiffens roll and pitch
+OMEGA, HEIGHT = 0.85, 2.0
+
+
+def _case(tmp_path: Path, **changes) -> Path:
+    mass = RHO * VOLUME
+    points, lines = {}, {}
+    for k in range(3):
+        ang = 2 * math.pi * k / 3
+        points[f"anchor{k}"] = {"kind": "fixed", "position": [300 * math.cos(ang), 300 * math.sin(ang), -200.0]}
+        points[f"fair{k}"] = {"kind": "body", "body": "hull", "position": [40 * math.cos(ang), 40 * math.sin(ang), -14.0]}
+        lines[f"rope{k}"] = {"line_type": "rope", "length": 300.0, "end_a": f"anchor{k}", "end_b": f"fair{k}"}
+    body = {"kind": "free", "mass": mass, "inertia": list(INERTIA), "volume": VOLUME, "center_of_gravity": [0, 0, ZG],
+            "linear_damping": DAMPING.tolist(), "hydrodynamics": {"file": str(ROOT), "kernel_length": 60.0, "ramp": 40.0}}
+    body.update(changes.pop("body", {}))
+    data = {
+        "name": "hull",
+        "line_types": {"rope": {"diameter": 0.02, "mass_per_length": 0.5, "axial_stiffness": 1e6, "drag_normal": 0.0,
+                                "added_mass_normal": 0.0}},
+        "environment": {"water_density": RHO, "gravity": G, "depth": 200.0,
+                        "waves": {"height": HEIGHT, "period": 2 * math.pi / OMEGA}},
+        "bodies": {"hull": body}, "points": points, "lines": lines,
+        "analysis": {"type": "system_dynamic", "duration": 600.0, "time_step": 0.1, "output_interval": 0.1,
+                     "n_elements": 10},
+    }
+    data.update(changes)
+    path = tmp_path / "hull.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    return path
+
+
+def test_the_database_gives_the_statics_its_hydrostatics(tmp_path):
+    """The static heave: the ropes' pull down over C33 = rho g A_wp of the database (443 m^2), and no rotation."""
+    case = sc.load_case(_case(tmp_path, analysis={"type": "system_static"}))
+    system = case.system()
+    body = system.bodies["hull"]
+    db = read_wamit(ROOT, rho=RHO, g=G)
+    k = np.asarray(body.hydrostatic_stiffness)
+    assert k[2, 2] == pytest.approx(db.hydrostatics[2, 2], rel=1e-14)
+    # the weight's moment added: -m g z_G in roll and pitch
+    assert k[4, 4] == pytest.approx(db.hydrostatics[4, 4] - RHO * VOLUME * G * ZG, rel=1e-14)
+    np.testing.assert_allclose(np.asarray(body.added_mass), db.added_mass_inf, rtol=1e-14)
+    ds = sc.run(case)
+    # the same body with the database's matrices given by hand: the same equilibrium, to round-off
+    by_hand = sc.load_case(_case(tmp_path, analysis={"type": "system_static"}, body={
+        "hydrodynamics": None, "hydrostatic_stiffness": k.tolist(), "added_mass": db.added_mass_inf.tolist()}))
+    ref = sc.run(by_hand)
+    for key in ("body_z", "body_roll", "body_pitch", "fairlead_tension"):
+        np.testing.assert_allclose(np.asarray(ds[key]), np.asarray(ref[key]), rtol=1e-9, atol=1e-12)
+    assert -0.05 < float(np.asarray(ds["body_z"]).reshape(-1)[0]) < 0.0  # three taut ropes pull it down a few cm
+
+
+def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp_path):
+    case = sc.load_case(_case(tmp_path))
+    ds = sc.run(case)
+    t = np.asarray(ds["time"])
+    q = np.asarray(ds["body_position"]).reshape(t.size, 6)
+    period = 2 * math.pi / OMEGA
+    window = t > t[-1] - 10 * period
+    basis = np.column_stack([np.cos(OMEGA * t[window]), np.sin(OMEGA * t[window]), np.ones(window.sum())])
+    coef = np.linalg.lstsq(basis, q[window], rcond=None)[0]
+    h = (coef[0] + 1j * coef[1]) / (HEIGHT / 2)
+    db = read_wamit(ROOT, rho=RHO, g=G)
+    tk, kernel = retardation_kernel(db, 0.1, 60.0)
+    kernel[-1] *= 0.5
+    a, b = (m[0] for m in ogilvie(tk, kernel, db.added_mass_inf, OMEGA))
+    stiffness = np.asarray(case.system().bodies["hull"].hydrostatic_stiffness)
+    mass = RHO * VOLUME
+    c = np.array([0, 0, ZG])
+    rigid = np.diag([mass, mass, mass, *INERTIA])
+    rigid[0, 4] = rigid[4, 0] = mass * ZG
+    rigid[1, 3] = rigid[3, 1] = -mass * ZG
+    rigid[3, 3] += mass * ZG ** 2
+    rigid[4, 4] += mass * ZG ** 2
+    ref = frequency_response(rigid, a, b + DAMPING, stiffness, db.excitation_at(OMEGA, 0.0), OMEGA)
+    for j in (0, 2, 4):
+        assert abs(h[j]) == pytest.approx(abs(ref[j]), rel=0.005), (j, h[j], ref[j])
+        assert abs(np.angle(h[j] / ref[j])) < 0.002, j
+
+
+def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path):
+    with pytest.raises(InputError, match=r"added_mass and hydrodynamics both given"):
+        sc.load_case(_case(tmp_path, body={"added_mass": np.eye(6).tolist()}))
+    with pytest.raises(InputError, match=r"WAMIT file '.*nothere.1' does not exist"):
+        sc.load_case(_case(tmp_path, body={"hydrodynamics": {"file": "nothere"}}, analysis={"type": "system_static"}))
