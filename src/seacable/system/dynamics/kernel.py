@@ -82,11 +82,13 @@ def _angle_rows(E, m):
 
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
-            with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
+            with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
-    Newton matrix and no correction.
+    Newton matrix and no correction. ``with_waves`` and ``sea``: the waves on the lines, the regular wave of ``env``
+    and the irregular sea's packed grid (:meth:`seacable.mooring.solver.MooringModel.prepare_sea`; its window must
+    cover ``t``), as :func:`seacable.mooring.kernel.loads` takes them.
 
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
@@ -110,7 +112,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     bnd[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
           buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-          with_waves, np.zeros(GRID_HEADER), F, M, tension, bnd, bw, cm, cc)  # no irregular sea
+          with_waves, sea, F, M, tension, bnd, bw, cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -389,14 +391,15 @@ def _apply(X, q, du, dq, fidx, s):
 
 @njit(cache=True)
 def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
-                  cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
+                  cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
                   fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
                   beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead):
     """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
 
     ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
-    step k. After each step a tied line end whose failure time has come, or whose end element's
-    tension reached its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
+    step k; ``sea`` is the irregular sea's packed grid (see :func:`iterate`), its window covering the steps.
+    After each step a tied line end whose failure time has come, or whose end element's tension reached
+    its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
     the number of steps completed; a step whose Newton iteration fails leaves the state at its start.
     ``stats`` receives (iterations, last residual, absolute force tolerance [N]). After each converged step a
     body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
@@ -477,7 +480,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             # the first check of a step, where most steps converge, assembles the residual only
             for jac in (it != 1, np.bool_(True)):
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
-                                 env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
+                                 env, cur_depth, cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
                                  tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
@@ -576,7 +579,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     for it in range(max_iter):
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
-                         cur_speed, np.bool_(False), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
+                         cur_speed, np.bool_(False), np.zeros(GRID_HEADER), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
                          spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)))
         res, scale = out[0], out[1]
