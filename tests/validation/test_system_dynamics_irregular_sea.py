@@ -19,6 +19,7 @@ import yaml
 
 import seacable as sc
 import seacable.system.dynamics as D
+from seacable.system.dynamics import kernel as DK
 from seacable.system.dynamics import loop as DL
 
 SPREAD = Path(__file__).parents[2] / "examples" / "spread_mooring.yaml"
@@ -116,3 +117,32 @@ def test_a_floating_body_with_its_database_runs_in_an_irregular_sea(tmp_path):
     assert 2.0 < float(np.ptp(eta[after])) < 12.0  # the irregular sea stored, about Hs to 2.5 Hs in a minute
     ten = ds.fairlead_tension.values
     assert float(np.ptp(ten[after])) > 1e3
+
+
+def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeypatch):
+    """A step that does not converge is redone at half steps for a body with radiation memory too (its history
+    kept at the full step; a half step takes it as it stands, see
+    :func:`seacable.system.dynamics.kernel.coupled_steps`), where it stopped the run before: the hull in a
+    2 m regular wave (7.4 s) with the interval at 30 s forced to halve keeps its surge, heave and pitch within 1 %
+    of their ranges of the run stepped whole throughout (measured 0.23 % in surge, 0.05 % in heave and pitch):
+    the interval's ten half steps integrate differently (Newmark's error, second order in the step) and their
+    memory force is lagged by at most one step (0.1 s of the kernel's 60 s), a difference the lightly damped
+    surge (5 % of critical) carries on; and the halved interval does change the run."""
+    case = sc.load_case(_hull(tmp_path, {"height": 2.0, "period": 7.4}))
+    ref = sc.run(case).body_position.values[:, 0]
+    orig = DK.coupled_steps
+    forced = []
+
+    def flaky(*args):
+        if not forced and abs(args[6] - 30.0) < 1e-9 and args[7] == 0.1:  # the interval from 30 s: fails
+            forced.append(args[6])
+            return 0
+        return orig(*args)
+
+    monkeypatch.setattr(DK, "coupled_steps", flaky)
+    halved = sc.run(case).body_position.values[:, 0]
+    assert forced == [30.0]
+    span = np.ptp(ref, axis=0)
+    err = np.max(np.abs(halved - ref), axis=0)
+    assert np.all(err[[0, 2, 4]] < 1e-2 * span[[0, 2, 4]]), err / span
+    assert np.any(err > 0.0)

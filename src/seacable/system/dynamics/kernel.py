@@ -393,7 +393,7 @@ def _apply(X, q, du, dq, fidx, s):
 def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
                   cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
                   fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
-                  beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead):
+                  beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead, hk):
     """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
 
     ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
@@ -405,10 +405,14 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
     ``frame`` is updated in place, with the continuous global angles of every re-charted body).
 
-    ``rker`` (nb, n_k, 6, 6): each body's radiation kernel sampled every ``dt`` (``rker[b, 0]`` = K(0), the last
-    sample halved: the trapezoidal rule), zeros for a body without memory (n_k 1 when none has any); ``rhist``
-    (nb, n_k, 6) the velocities ``u`` of the past steps, ``rhist[b, (rhead[b] - j + 1) % n_k]`` the one ``j`` steps
-    back, advanced in place. The memory force at a step's end is ``-dt (K_0 u / 2 + sum_{j>=1} K_j u_{-j})``.
+    ``rker`` (nb, n_k, 6, 6): each body's radiation kernel sampled every ``hk`` [s], the run's time step
+    (``rker[b, 0]`` = K(0), the last sample halved: the trapezoidal rule), zeros for a body without memory (n_k 1
+    when none has any); ``rhist`` (nb, n_k, 6) the velocities ``u`` at the past multiples of ``hk``,
+    ``rhist[b, (rhead[b] - j + 1) % n_k]`` the one ``j`` samples back, advanced in place. The memory force at a
+    step's end is ``-hk (K_0 u / 2 + sum_{j>=1} K_j u_{-j})``. A step shorter than ``hk`` (an interval finished
+    at halved steps) takes that same sum over the history as it stands, its lags short by less than one ``hk``
+    (an approximation for the few halved steps of a run), and adds its velocity to the history only when it
+    ends on a multiple of ``hk``.
     """
     n = X.shape[0]
     nb = q.shape[0]
@@ -450,9 +454,9 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                         h = rhist[b, (rhead[b] - j + 1) % nk]
                         for c in range(6):
                             v += rker[b, j, r, c] * h[c]
-                    bmem[b, r] = dt * v
+                    bmem[b, r] = hk * v
                     for c in range(6):
-                        bk0[b, r, c] = 0.5 * dt * rker[b, 0, r, c]
+                        bk0[b, r, c] = 0.5 * hk * rker[b, 0, r, c]
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         for j in range(con_node.size):
             if con_chan[j] >= 0:
@@ -517,7 +521,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             copy_2d(qdd, qddn)
             return step
         commit_viscoelastic(args[-1])
-        if nk > 1:  # this step's velocities into the memory (before a re-chart changes the angles' map)
+        # this step's velocities into the memory (before a re-chart changes the angles' map), at multiples of hk
+        if nk > 1 and (dt == hk or abs(t / hk - round(t / hk)) < 1e-6):
             for b in range(nb):
                 angular_map(q[b], qd[b], Eu, edu, frame[b])
                 rhead[b] = (rhead[b] + 1) % nk

@@ -326,14 +326,12 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
                                         m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, m.sea, fe.node_fext,
                                         fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
                                         fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma,
-                                        tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead)
+                                        tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead, h)
 
-            # the memory's history is kept every time step: a halved step would break it, so it is not halved
-            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats,
-                                           0 if memory else max_halvings, max_iter, "system",
-                                           "smaller time_step, more elements, or check the motions and external "
-                                           "forces for a jump" + (" (a body with radiation memory steps at its "
-                                                                  "kernel's step: it is not halved)" if memory else ""))
+            # the memory's history is kept every time step h; a halved step uses it as it stands (see coupled_steps)
+            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats, max_halvings,
+                                           max_iter, "system", "smaller time_step, more elements, or check the "
+                                           "motions and external forces for a jump")
             steps += done
             iterations += spent
             times.append((k + 1) * output_interval)
