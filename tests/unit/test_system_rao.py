@@ -1,6 +1,6 @@
 """A mooring system whose platform follows its RAOs in an irregular sea (issue 20): the system's lines-only runs
 take the mooring model's compiled time loop, which converges to the coupled solver's answer; the platform's
-motion and its static start at the mean offset; an irregular sea refused where the coupled solver would need it."""
+motion and its static start at the mean offset; a free body in an irregular sea passes the checks."""
 
 from __future__ import annotations
 
@@ -77,13 +77,16 @@ def test_a_platform_follows_its_raos_in_an_irregular_sea_about_a_mean_offset(tmp
     assert float(ds.fairlead_tension.max()) < 7.3e6  # a sane run: below the chain's breaking load
 
 
-def test_an_irregular_sea_needs_a_lines_only_system():
-    """A free buoy couples the lines to a body, which the coupled solver takes in regular waves only: refused by
-    the checks (`validate`) with what couples it and a fix."""
+def test_an_irregular_sea_loads_the_lines_of_a_free_body_too():
+    """A free buoy couples the lines to a body: the coupled solver runs it in an irregular sea too (its lines given
+    the sea's kinematics on a grid, tests/validation/test_system_dynamics_irregular_sea.py), refused before. The
+    checks (`validate`) pass, and say that the waves act on the lines only (the buoy has no wave loads)."""
     case = _spread({"duration": 10.0}, SEA, kind="free")
-    with pytest.raises(InputError, match=r"irregular sea.*free bodies \(buoy\).*Suggested fix"), \
-            pytest.warns(SeacableWarning, match="waves act on the lines only"):
+    with pytest.warns(SeacableWarning, match="waves act on the lines only"):
         sc.check(case)
+    with pytest.warns(SeacableWarning, match="waves act on the lines only"):
+        setup = D.prepare_system_dynamic(case)
+    assert not D.lines_only(setup.fe)  # the coupled solver's
 
 
 def test_a_damaged_condition_leaves_its_lines_out_from_the_start():

@@ -18,8 +18,8 @@ from ...mooring.outputs import at_motion_start
 from ..case import SystemDynamicAnalysis
 from ..damaged import is_most_loaded, line_tensions, most_loaded_line
 from ..model import MooringSystem
-from .fe import SystemFE, _coupled_parts, build_system_fe, lines_only
-from .loop import SystemState, _channels_fn, _simulate_lines, simulate_system, static_system
+from .fe import SystemFE, build_system_fe, lines_only
+from .loop import SystemState, _channels_fn, _simulate_lines, sea_positions, simulate_system, static_system
 from .outputs import system_result
 
 
@@ -157,14 +157,9 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         # (the run's motions move the nodes from where the case puts them)
         
         start_fe = dataclasses.replace(fe, model=at_motion_start(fe.model, channels))
-    if fe.model.water.sea is not None:
-        if not lines_only(fe):
-            raise InputError(f"environment.waves: an irregular sea (spectrum '{env.waves.spectrum}') loads the lines of "
-                             "a system whose bodies and points all move as prescribed (or are fixed); this one has "
-                             f"{_coupled_parts(fe)}. Suggested fix: make the bodies 'prescribed' (a 'rao' motion moves "
-                             "one in the sea), drop the failures, or give regular waves (height, period).")
-        t_out = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
-        fe.model.check_sea(a.duration, np.concatenate((fe.model.network.position, channels(t_out)[0].reshape(-1, 3))))
+    if fe.model.water.sea is not None:  # the irregular sea's grid over where the lines go, size-checked
+        fe.model.check_sea(a.duration, sea_positions(fe, fe.model.network.position, channels, a.duration,
+                                                     a.output_interval))
     return SystemDynamicSetup(fe, a, start_fe)
 
 
@@ -275,8 +270,8 @@ def run_system_dynamic(case, progress=None):
     fe = setup.fe
     start = start_state(setup.start_fe, a, case.environment)
     nd = a.numerical_damping
-    # an irregular sea: the mooring model's loop (the coupled solver takes regular waves only)
-    run = (_simulate_lines if fe.model.water.sea is not None else simulate_system)(
+    # lines alone in an irregular sea: the mooring model's compiled loop; else the coupled one (any waves)
+    run = (_simulate_lines if fe.model.water.sea is not None and lines_only(fe) else simulate_system)(
         fe, start, a.duration, a.time_step, a.output_interval, analysis=a, tol=min(a.tolerance * 10, 1e-4),
         max_iter=a.max_iterations, progress=progress, beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
     removed = [n for n in getattr(case, "lines", None) or () if n not in fe.system.lines]

@@ -361,14 +361,3 @@ def lines_only(fe: SystemFE) -> bool:
     (failing line ends are), no external force on a node. Such a run is the mooring model's
     (:func:`seacable.mooring.solver.simulate`: its compiled time loop, irregular seas)."""
     return not fe.free_bodies and len(fe.con_node) == 0 and not np.any(fe.node_fext)
-
-
-def _coupled_parts(fe: SystemFE) -> str:
-    parts = [f"free bodies ({', '.join(fe.free_bodies)})"] if fe.free_bodies else []
-    if np.any(fe.con_line >= 0):
-        parts.append("line failures")
-    elif len(fe.con_node):
-        parts.append("line ends tied to free points")
-    if np.any(fe.node_fext):
-        parts.append("points with external forces")
-    return ", ".join(parts) or "nothing coupled"

@@ -82,11 +82,13 @@ def _angle_rows(E, m):
 
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
-            with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
+            with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
-    Newton matrix and no correction.
+    Newton matrix and no correction. ``with_waves`` and ``sea``: the waves on the lines, the regular wave of ``env``
+    and the irregular sea's packed grid (:meth:`seacable.mooring.solver.MooringModel.prepare_sea`; its window must
+    cover ``t``), as :func:`seacable.mooring.kernel.loads` takes them.
 
     ``cm`` multiplies the nodes' masses and ``cmb`` the bodies' in the Newton matrix (the same in a time
     step; statics scales the bodies' pseudo-inertia down to a node's). ``out`` receives (residual of the free nodes and bodies [N], absolute tolerance [N]). Bodies' moments
@@ -110,7 +112,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     bnd[:] = 0.0
     loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
           buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-          with_waves, np.zeros(GRID_HEADER), F, M, tension, bnd, bw, cm, cc)  # no irregular sea
+          with_waves, sea, F, M, tension, bnd, bw, cm, cc)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -389,23 +391,28 @@ def _apply(X, q, du, dq, fidx, s):
 
 @njit(cache=True)
 def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight, fidx, nfree, bw, env, cur_depth,
-                  cur_speed, with_waves, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
+                  cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, con_chan,
                   fail_time, fail_tension, fail_elem, fail_at, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n,
-                  beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead):
+                  beta, gamma, tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead, hk):
     """Advance ``px.shape[0]`` Newmark steps (average acceleration) of the lines and bodies together.
 
     ``px/pv/pa[k, channel]`` are the prescribed positions, velocities and accelerations at the end of
-    step k. After each step a tied line end whose failure time has come, or whose end element's
-    tension reached its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
+    step k; ``sea`` is the irregular sea's packed grid (see :func:`iterate`), its window covering the steps.
+    After each step a tied line end whose failure time has come, or whose end element's tension reached
+    its failure tension, is released (``con_active`` 0, ``fail_at`` the time). Returns
     the number of steps completed; a step whose Newton iteration fails leaves the state at its start.
     ``stats`` receives (iterations, last residual, absolute force tolerance [N]). After each converged step a
     body whose |pitch| exceeds ``CHART_LIMIT``, or that was re-charted before, is re-charted (:func:`rechart`;
     ``frame`` is updated in place, with the continuous global angles of every re-charted body).
 
-    ``rker`` (nb, n_k, 6, 6): each body's radiation kernel sampled every ``dt`` (``rker[b, 0]`` = K(0), the last
-    sample halved: the trapezoidal rule), zeros for a body without memory (n_k 1 when none has any); ``rhist``
-    (nb, n_k, 6) the velocities ``u`` of the past steps, ``rhist[b, (rhead[b] - j + 1) % n_k]`` the one ``j`` steps
-    back, advanced in place. The memory force at a step's end is ``-dt (K_0 u / 2 + sum_{j>=1} K_j u_{-j})``.
+    ``rker`` (nb, n_k, 6, 6): each body's radiation kernel sampled every ``hk`` [s], the run's time step
+    (``rker[b, 0]`` = K(0), the last sample halved: the trapezoidal rule), zeros for a body without memory (n_k 1
+    when none has any); ``rhist`` (nb, n_k, 6) the velocities ``u`` at the past multiples of ``hk``,
+    ``rhist[b, (rhead[b] - j + 1) % n_k]`` the one ``j`` samples back, advanced in place. The memory force at a
+    step's end is ``-hk (K_0 u / 2 + sum_{j>=1} K_j u_{-j})``. A step shorter than ``hk`` (an interval finished
+    at halved steps) takes that same sum over the history as it stands, its lags short by less than one ``hk``
+    (an approximation for the few halved steps of a run), and adds its velocity to the history only when it
+    ends on a multiple of ``hk``.
     """
     n = X.shape[0]
     nb = q.shape[0]
@@ -447,9 +454,9 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                         h = rhist[b, (rhead[b] - j + 1) % nk]
                         for c in range(6):
                             v += rker[b, j, r, c] * h[c]
-                    bmem[b, r] = dt * v
+                    bmem[b, r] = hk * v
                     for c in range(6):
-                        bk0[b, r, c] = 0.5 * dt * rker[b, 0, r, c]
+                        bk0[b, r, c] = 0.5 * hk * rker[b, 0, r, c]
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
         for j in range(con_node.size):
             if con_chan[j] >= 0:
@@ -477,7 +484,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             # the first check of a step, where most steps converge, assembles the residual only
             for jac in (it != 1, np.bool_(True)):
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
-                                 env, cur_depth, cur_speed, with_waves, node_fext, con_node, con_body, con_arm,
+                                 env, cur_depth, cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
                                  tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
@@ -514,7 +521,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             copy_2d(qdd, qddn)
             return step
         commit_viscoelastic(args[-1])
-        if nk > 1:  # this step's velocities into the memory (before a re-chart changes the angles' map)
+        # this step's velocities into the memory (before a re-chart changes the angles' map), at multiples of hk
+        if nk > 1 and (dt == hk or abs(t / hk - round(t / hk)) < 1e-6):
             for b in range(nb):
                 angular_map(q[b], qd[b], Eu, edu, frame[b])
                 rhead[b] = (rhead[b] + 1) % nk
@@ -576,7 +584,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     place_tied(X, q, con_node, con_body, con_arm, con_target, con_active, frame)
     for it in range(max_iter):
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
-                         cur_speed, np.bool_(False), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
+                         cur_speed, np.bool_(False), np.zeros(GRID_HEADER), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
                          spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)))
         res, scale = out[0], out[1]

@@ -1,6 +1,8 @@
 """The coupled dynamics' static start and time loop: the static equilibrium of the finite-element system
 (:func:`static_system`), the lines' forces on the bodies, and the Newmark steps of lines and bodies together
-(:func:`simulate_system`; a system of lines alone runs in the mooring model's compiled loop).
+(:func:`simulate_system`; a system of lines alone in an irregular sea runs in the mooring model's compiled loop,
+:func:`_simulate_lines`). Both give the lines the waves: a regular wave, or an irregular sea precomputed on a grid
+(:meth:`seacable.mooring.solver.MooringModel.prepare_sea`) and taken in windows of time, one per output interval.
 """
 
 from __future__ import annotations
@@ -21,6 +23,12 @@ from . import body as DB
 from . import frames as DF
 from . import kernel as DK
 from .fe import SystemFE, _rot
+
+#: The horizontal excursion, as a fraction of the water depth (of the deepest node without a seabed), that an
+#: irregular sea's grid allows a free body's fairleads on either side of their start (:func:`sea_positions`): a
+#: moored floater's mean and slow-drift offset in a storm is typically 5-10 % of the depth, and the grid's own
+#: margin (about Hs) covers its wave-frequency motion. A node outside the grid gets the kinematics at its edge.
+SEA_EXCURSION = 0.1
 
 
 @dataclass(frozen=True)
@@ -160,6 +168,24 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
     return channels
 
 
+def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: float) -> np.ndarray:
+    """The points (n, 3) [m] an irregular sea's kinematics grid covers for a run
+    (:meth:`seacable.mooring.solver.MooringModel.prepare_sea`): the nodes at ``X``, the prescribed nodes at the
+    output times (``channels``, :func:`_channels_fn`), and the nodes tied to a free body moved horizontally by
+    ``SEA_EXCURSION`` of the depth each way along x and y (a lines-only system: none, as the mooring model's own
+    run takes them)."""
+    t_out = np.linspace(0.0, duration, round(duration / output_interval) + 1)
+    parts = [np.asarray(X, float).reshape(-1, 3), channels(t_out)[0].reshape(-1, 3)]
+    tied = np.asarray(fe.con_node)[np.asarray(fe.con_body) >= 0]
+    if len(tied):
+        depth = fe.model.water.depth
+        reach = SEA_EXCURSION * (float(depth) if depth is not None else float(np.max(-parts[0][:, 2], initial=1.0)))
+        P = parts[0][tied]
+        for dx, dy in ((reach, 0.0), (-reach, 0.0), (0.0, reach), (0.0, -reach)):
+            parts.append(P + np.array([dx, dy, 0.0]))
+    return np.concatenate(parts)
+
+
 def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> None:
     """The accelerations at t = 0 that satisfy the equations of motion there, in place: ``A`` of the lines'
     nodes and ``qdd`` of the free bodies (and ``V`` of the nodes tied to a body, its velocity there), with the waves at t = 0 and the start's velocities (the bodies'
@@ -269,6 +295,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(net.n_elements)
     m.settle_viscoelastic(X, np.zeros_like(X))
+    if m.water.sea is not None:  # an irregular sea: its kinematics on a grid over where the lines go
+        m.prepare_sea(duration, sea_positions(fe, X, channels, duration, output_interval))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
     initial_accelerations(fe, X, V, A, q, qd, qdd, frame, v0[0], a0[0])
     g = _global_state(q, qd, frame)
@@ -291,19 +319,19 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     begin = _time.perf_counter()
     try:
         for k in range(n_out):
+            m.ensure_sea(k * output_interval, (k + 1) * output_interval)  # an irregular sea's grid window
+
             def coupled(t, dtk, px, pv, pa):
                 return DK.coupled_steps(X, V, A, q, qd, qdd, t, dtk, px, pv, pa, net.channel, args, m.weight, m.fidx,
-                                        m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, fe.node_fext,
+                                        m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, True, m.sea, fe.node_fext,
                                         fe.con_node, fe.con_body, fe.con_arm, con_target, active, fe.con_chan,
                                         fe.fail_time, fe.fail_tension, fe.fail_elem, fail_at, *bargs, beta, gamma,
-                                        tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead)
+                                        tol, max_iter, F, M, tension, stats, frame, rker, rhist, rhead, h)
 
-            # the memory's history is kept every time step: a halved step would break it, so it is not halved
-            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats,
-                                           0 if memory else max_halvings, max_iter, "system",
-                                           "smaller time_step, more elements, or check the motions and external "
-                                           "forces for a jump" + (" (a body with radiation memory steps at its "
-                                                                  "kernel's step: it is not halved)" if memory else ""))
+            # the memory's history is kept every time step h; a halved step uses it as it stands (see coupled_steps)
+            done, spent = advance_interval(k * output_interval, h, sub, channels, coupled, stats, max_halvings,
+                                           max_iter, "system", "smaller time_step, more elements, or check the "
+                                           "motions and external forces for a jump")
             steps += done
             iterations += spent
             times.append((k + 1) * output_interval)
