@@ -44,6 +44,21 @@ def _check_headings(heading: np.ndarray, what: str, source: str) -> None:
                          "headings (-180 and 180 deg are the same).")
 
 
+def _check_table(heading, omega, values, what: str, src: str) -> None:
+    """A table by heading and frequency: all three given or none, each heading and frequency once, and the
+    shape (headings, frequencies, 6 DOFs)."""
+    if values is None and heading is None and omega is None:
+        return
+    if values is None or heading is None or omega is None:
+        raise InputError(f"{src}: the {what} needs its headings and frequencies, and they need it.")
+    b, w, v = (np.asarray(a) for a in (heading, omega, values))
+    _check_headings(b, what, src)
+    _check_frequencies(w, what, src)
+    if v.shape != (b.size, w.size, 6):
+        raise InputError(f"{src}: the {what} must have the shape ({b.size} headings, {w.size} frequencies, 6 DOFs), "
+                         f"got {v.shape}. Suggested fix: give every DOF at every heading and frequency.")
+
+
 @dataclass(frozen=True)
 class HydroDatabase:
     """A body's linear hydrodynamic coefficients (module docstring for the units and conventions).
@@ -83,23 +98,8 @@ class HydroDatabase:
                                  f"{value.shape}. Suggested fix: give every DOF pair at every frequency.")
             if not np.all(np.isfinite(value)):
                 raise InputError(f"{src}: {name} holds a NaN or an infinity. Suggested fix: check the source file.")
-        if (self.excitation is None) != (self.heading is None) or (self.excitation is None) != (self.excitation_omega is None):
-            raise InputError(f"{src}: the excitation needs its headings and frequencies, and they need it.")
-        if self.excitation is not None:
-            b, wx, x = (np.asarray(a) for a in (self.heading, self.excitation_omega, self.excitation))
-            _check_headings(b, "excitation", src)
-            _check_frequencies(wx, "excitation", src)
-            if x.shape != (b.size, wx.size, 6):
-                raise InputError(f"{src}: the excitation must have the shape ({b.size} headings, {wx.size} "
-                                 f"frequencies, 6 DOFs), got {x.shape}. Suggested fix: give every DOF at every "
-                                 "heading and frequency.")
-        if self.drift is not None:
-            b, wd, d = (np.asarray(a) for a in (self.drift_heading, self.drift_omega, self.drift))
-            _check_headings(b, "drift", src)
-            _check_frequencies(wd, "drift", src)
-            if d.shape != (b.size, wd.size, 6):
-                raise InputError(f"{src}: the mean drift must have the shape ({b.size} headings, {wd.size} "
-                                 f"frequencies, 6 DOFs), got {d.shape}.")
+        _check_table(self.heading, self.excitation_omega, self.excitation, "excitation", src)
+        _check_table(self.drift_heading, self.drift_omega, self.drift, "mean drift", src)
         if not (self.rho > 0 and self.g > 0):
             raise InputError(f"{src}: rho = {self.rho} kg/m^3 and g = {self.g} m/s^2 must be > 0.")
 

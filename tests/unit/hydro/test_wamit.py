@@ -161,3 +161,17 @@ def test_a_bad_file_gets_one_clear_message(tmp_path, edit, drop, message):
 def test_a_bad_length_scale_is_refused(tmp_path):
     with pytest.raises(InputError, match=r"ulen must be a length > 0 m \(WAMIT's ULEN\), got -1"):
         read_wamit(ROOT, ulen=-1.0)
+
+
+@pytest.mark.parametrize("changes, message", [
+    ({"excitation_omega": None}, r"the excitation needs its headings and frequencies"),
+    ({"drift": np.zeros((1, 3, 6))}, r"the mean drift must have the shape \(1 headings, 46 frequencies, 6 DOFs\), got "
+                                     r"\(1, 3, 6\)"),
+    ({"drift_heading": None}, r"the mean drift needs its headings and frequencies"),
+    ({"heading": np.zeros(36)}, r"each excitation heading must be given once"),
+])
+def test_a_database_with_tables_that_do_not_match_is_refused(db, changes, message):
+    import dataclasses
+
+    with pytest.raises(InputError, match=message):
+        dataclasses.replace(db, **changes)
