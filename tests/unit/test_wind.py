@@ -10,8 +10,15 @@ import pytest
 from scipy import integrate, signal, special
 
 from seacable.errors import InputError
-from seacable.wind import (WindCoefficients, api_profile, api_spectrum, gust_series, npd_profile, npd_spectrum,
-                           npd_turbulence)
+from seacable.wind import (
+    WindCoefficients,
+    api_profile,
+    api_spectrum,
+    gust_series,
+    npd_profile,
+    npd_spectrum,
+    npd_turbulence,
+)
 
 
 def test_npd_profile_and_turbulence_by_hand():
@@ -30,7 +37,7 @@ def test_npd_spectrum_integrates_to_its_closed_form_variance():
     closed = special.gamma(1 / n) * special.gamma(p - 1 / n) / (n * special.gamma(p))
     for u0, z in ((10.0, 10.0), (30.0, 100.0)):
         variance = 320 * (u0 / 10) ** 2 * (z / 10) ** 0.45 / (172 * (z / 10) ** (2 / 3) * (u0 / 10) ** -0.75) * closed
-        numeric = integrate.quad(lambda f: npd_spectrum(f, u0, z), 0, np.inf, limit=200)[0]
+        numeric = integrate.quad(lambda f, u0=u0, z=z: npd_spectrum(f, u0, z), 0, np.inf, limit=200)[0]
         assert numeric == pytest.approx(variance, rel=1e-6)
     # at 10 m and 10 m/s: sigma = 1.02 m/s, a 10 % intensity
     assert math.sqrt(integrate.quad(lambda f: npd_spectrum(f, 10.0), 0, np.inf, limit=200)[0]) == pytest.approx(1.02, abs=0.01)

@@ -75,3 +75,45 @@ def system_and_mooring_cases(duration=10.0, n=20):
 def two_kernel_cases():
     """:func:`system_and_mooring_cases`: a line in waves, current and on the seabed, run by both kernels."""
     return system_and_mooring_cases
+
+
+def volturnus_hull_case(folder, *, waves, rope, body=None, analysis=None):
+    """A case file (its path) of the VolturnUS-S hull with its WAMIT database (tests/data/volturnus: the displaced
+    volume's mass, the platform's inertias, its centre of gravity 5 m below the reference point, a linear damping
+    of 5-20 % of critical) on three ropes of line type ``rope`` from anchors 300 m out in 200 m of water to
+    fairleads 40 m out at 14 m draft, in ``waves``; ``body`` updates the hull, ``analysis`` the analysis (a 600 s
+    ``system_dynamic`` at 0.1 s by default) or, of another type, is the analysis."""
+    import math
+    from pathlib import Path
+
+    import numpy as np
+    import yaml
+
+    root = Path(__file__).parents[1] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+    rho, volume = 1025.0, 20206.34889
+    points, lines = {}, {}
+    for k in range(3):
+        ang = 2 * math.pi * k / 3
+        points[f"anchor{k}"] = {"kind": "fixed", "position": [300 * math.cos(ang), 300 * math.sin(ang), -200.0]}
+        points[f"fair{k}"] = {"kind": "body", "body": "hull", "position": [40 * math.cos(ang), 40 * math.sin(ang), -14.0]}
+        lines[f"rope{k}"] = {"line_type": "rope", "length": 300.0, "end_a": f"anchor{k}", "end_b": f"fair{k}"}
+    hull = {"kind": "free", "mass": rho * volume, "inertia": [1.2507e10, 1.2507e10, 2.3667e10], "volume": volume,
+            "center_of_gravity": [0, 0, -5.0], "linear_damping": np.diag([6e5, 6e5, 1.4e6, 1.4e9, 1.4e9, 6e8]).tolist(),
+            "hydrodynamics": {"file": str(root), "kernel_length": 60.0, "ramp": 40.0}}
+    hull.update(body or {})
+    data = {"name": "hull", "line_types": {"rope": rope},
+            "environment": {"water_density": rho, "gravity": 9.80665, "depth": 200.0, "waves": waves},
+            "bodies": {"hull": hull}, "points": points, "lines": lines,
+            "analysis": {"type": "system_dynamic", "duration": 600.0, "time_step": 0.1, "output_interval": 0.1,
+                         "n_elements": 10, **(analysis or {})}}
+    if (analysis or {}).get("type", "system_dynamic") != "system_dynamic":
+        data["analysis"] = analysis  # another analysis: as given
+    path = Path(folder) / "hull.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    return path
+
+
+@pytest.fixture
+def hull_case():
+    """:func:`volturnus_hull_case`, for the tests of floating bodies with a database."""
+    return volturnus_hull_case

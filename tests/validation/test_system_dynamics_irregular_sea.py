@@ -10,7 +10,6 @@ compiled loop: the same lines, in the same JONSWAP sea, give the same tensions.
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -74,40 +73,24 @@ def test_a_free_body_held_still_gives_its_lines_the_tensions_of_a_fixed_one(monk
     assert float(np.max(np.abs(same - ref))) < tol, float(np.max(np.abs(same - ref))) / mean
 
 
-def _hull(tmp_path: Path, waves) -> Path:
-    """The VolturnUS-S hull of tests/validation/test_system_hydro_body_case.py on three ropes with drag."""
-    rho, volume = 1025.0, 20206.34889
-    points, lines = {}, {}
-    for k in range(3):
-        ang = 2 * math.pi * k / 3
-        points[f"anchor{k}"] = {"kind": "fixed", "position": [300 * math.cos(ang), 300 * math.sin(ang), -200.0]}
-        points[f"fair{k}"] = {"kind": "body", "body": "hull", "position": [40 * math.cos(ang), 40 * math.sin(ang), -14.0]}
-        lines[f"rope{k}"] = {"line_type": "rope", "length": 300.0, "end_a": f"anchor{k}", "end_b": f"fair{k}"}
-    data = {
-        "name": "hull",
-        "line_types": {"rope": {"diameter": 0.1, "mass_per_length": 8.0, "axial_stiffness": 1e8}},
-        "environment": {"water_density": rho, "gravity": 9.80665, "depth": 200.0, "waves": waves},
-        "bodies": {"hull": {"kind": "free", "mass": rho * volume, "inertia": [1.2507e10, 1.2507e10, 2.3667e10],
-                            "volume": volume, "center_of_gravity": [0, 0, -5.0],
-                            "linear_damping": np.diag([6e5, 6e5, 1.4e6, 1.4e9, 1.4e9, 6e8]).tolist(),
-                            "hydrodynamics": {"file": str(VOLTURNUS), "kernel_length": 60.0, "ramp": 20.0}}},
-        "points": points, "lines": lines,
-        "analysis": {"type": "system_dynamic", "duration": 60.0, "time_step": 0.1, "output_interval": 0.5,
-                     "n_elements": 10},
-    }
-    path = tmp_path / "hull.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
-    return path
+ROPE = {"diameter": 0.1, "mass_per_length": 8.0, "axial_stiffness": 1e8}
 
 
-def test_a_floating_body_with_its_database_runs_in_an_irregular_sea(tmp_path):
+def _hull(hull_case, tmp_path: Path, waves) -> Path:
+    """The VolturnUS-S hull of tests/validation/conftest.py on three ropes with drag, 60 s."""
+    return hull_case(tmp_path, waves=waves, rope=ROPE, body={"hydrodynamics": {"file": str(VOLTURNUS), "kernel_length": 60.0,
+                                                                                   "ramp": 20.0}},
+                     analysis={"duration": 60.0, "output_interval": 0.5})
+
+
+def test_a_floating_body_with_its_database_runs_in_an_irregular_sea(tmp_path, hull_case):
     """The hull with its WAMIT database (radiation memory, first-order excitation) in a JONSWAP sea (Hs 4 m, Tp
     10 s, cut at the extract's 1.45 rad/s), refused before as an irregular sea with a free body: the coupled run
     goes through, the body heaves with the sea (a heave range of 0.05 to 4 m in the 40 s after the 20 s ramp:
     the semi-submersible's heave RAO is 0.1-1 below its 20 s heave period, against a surface range of about
     1.5 Hs), and the ropes' tensions move with it."""
     sea = {"spectrum": "jonswap", "hs": 4.0, "tp": 10.0, "seed": 2, "n_components": 80, "frequency_range": [0.3, 1.45]}
-    ds = sc.run(sc.load_case(_hull(tmp_path, sea)))
+    ds = sc.run(sc.load_case(_hull(hull_case, tmp_path, sea)))
     t = ds.time.values
     after = t > 20.0
     heave = ds.body_position.values[:, 0, 2]
@@ -119,7 +102,7 @@ def test_a_floating_body_with_its_database_runs_in_an_irregular_sea(tmp_path):
     assert float(np.ptp(ten[after])) > 1e3
 
 
-def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeypatch):
+def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeypatch, hull_case):
     """A step that does not converge is redone at half steps for a body with radiation memory too (its history
     kept at the full step; a half step takes it as it stands, see
     :func:`seacable.system.dynamics.kernel.coupled_steps`), where it stopped the run before: the hull in a
@@ -128,7 +111,7 @@ def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeyp
     the interval's ten half steps integrate differently (Newmark's error, second order in the step) and their
     memory force is lagged by at most one step (0.1 s of the kernel's 60 s), a difference the lightly damped
     surge (5 % of critical) carries on; and the halved interval does change the run."""
-    case = sc.load_case(_hull(tmp_path, {"height": 2.0, "period": 7.4}))
+    case = sc.load_case(_hull(hull_case, tmp_path, {"height": 2.0, "period": 7.4}))
     ref = sc.run(case).body_position.values[:, 0]
     orig = DK.coupled_steps
     forced = []

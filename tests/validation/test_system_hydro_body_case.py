@@ -18,7 +18,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import yaml
 
 import seacable as sc
 from seacable.errors import InputError
@@ -33,36 +32,13 @@ ZG = -5.0  # the centre of gravity 5 m below the reference point: its weight's m
 OMEGA, HEIGHT = 0.85, 2.0
 
 
-def _case(tmp_path: Path, **changes) -> Path:
-    mass = RHO * VOLUME
-    points, lines = {}, {}
-    for k in range(3):
-        ang = 2 * math.pi * k / 3
-        points[f"anchor{k}"] = {"kind": "fixed", "position": [300 * math.cos(ang), 300 * math.sin(ang), -200.0]}
-        points[f"fair{k}"] = {"kind": "body", "body": "hull", "position": [40 * math.cos(ang), 40 * math.sin(ang), -14.0]}
-        lines[f"rope{k}"] = {"line_type": "rope", "length": 300.0, "end_a": f"anchor{k}", "end_b": f"fair{k}"}
-    body = {"kind": "free", "mass": mass, "inertia": list(INERTIA), "volume": VOLUME, "center_of_gravity": [0, 0, ZG],
-            "linear_damping": DAMPING.tolist(), "hydrodynamics": {"file": str(ROOT), "kernel_length": 60.0, "ramp": 40.0}}
-    body.update(changes.pop("body", {}))
-    data = {
-        "name": "hull",
-        "line_types": {"rope": {"diameter": 0.02, "mass_per_length": 0.5, "axial_stiffness": 1e6, "drag_normal": 0.0,
-                                "added_mass_normal": 0.0}},
-        "environment": {"water_density": RHO, "gravity": G, "depth": 200.0,
-                        "waves": {"height": HEIGHT, "period": 2 * math.pi / OMEGA}},
-        "bodies": {"hull": body}, "points": points, "lines": lines,
-        "analysis": {"type": "system_dynamic", "duration": 600.0, "time_step": 0.1, "output_interval": 0.1,
-                     "n_elements": 10},
-    }
-    data.update(changes)
-    path = tmp_path / "hull.yaml"
-    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
-    return path
+ROPE = {"diameter": 0.02, "mass_per_length": 0.5, "axial_stiffness": 1e6, "drag_normal": 0.0, "added_mass_normal": 0.0}
+WAVES = {"height": HEIGHT, "period": 2 * math.pi / OMEGA}
 
 
-def test_the_database_gives_the_statics_its_hydrostatics(tmp_path):
+def test_the_database_gives_the_statics_its_hydrostatics(tmp_path, hull_case):
     """The static heave: the ropes' pull down over C33 = rho g A_wp of the database (443 m^2), and no rotation."""
-    case = sc.load_case(_case(tmp_path, analysis={"type": "system_static"}))
+    case = sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, analysis={"type": "system_static"}))
     system = case.system()
     body = system.bodies["hull"]
     db = read_wamit(ROOT, rho=RHO, g=G)
@@ -73,7 +49,7 @@ def test_the_database_gives_the_statics_its_hydrostatics(tmp_path):
     np.testing.assert_allclose(np.asarray(body.added_mass), db.added_mass_inf, rtol=1e-14)
     ds = sc.run(case)
     # the same body with the database's matrices given by hand: the same equilibrium, to round-off
-    by_hand = sc.load_case(_case(tmp_path, analysis={"type": "system_static"}, body={
+    by_hand = sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, analysis={"type": "system_static"}, body={
         "hydrodynamics": None, "hydrostatic_stiffness": k.tolist(), "added_mass": db.added_mass_inf.tolist()}))
     ref = sc.run(by_hand)
     for key in ("body_z", "body_roll", "body_pitch", "fairlead_tension"):
@@ -81,8 +57,8 @@ def test_the_database_gives_the_statics_its_hydrostatics(tmp_path):
     assert -0.05 < float(np.asarray(ds["body_z"]).reshape(-1)[0]) < 0.0  # three taut ropes pull it down a few cm
 
 
-def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp_path):
-    case = sc.load_case(_case(tmp_path))
+def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp_path, hull_case):
+    case = sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE))
     ds = sc.run(case)
     t = np.asarray(ds["time"])
     q = np.asarray(ds["body_position"]).reshape(t.size, 6)
@@ -97,7 +73,6 @@ def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp
     a, b = (m[0] for m in ogilvie(tk, kernel, db.added_mass_inf, OMEGA))
     stiffness = np.asarray(case.system().bodies["hull"].hydrostatic_stiffness)
     mass = RHO * VOLUME
-    c = np.array([0, 0, ZG])
     rigid = np.diag([mass, mass, mass, *INERTIA])
     rigid[0, 4] = rigid[4, 0] = mass * ZG
     rigid[1, 3] = rigid[3, 1] = -mass * ZG
@@ -109,8 +84,9 @@ def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp
         assert abs(np.angle(h[j] / ref[j])) < 0.002, j
 
 
-def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path):
+def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path, hull_case):
     with pytest.raises(InputError, match=r"added_mass and hydrodynamics both given"):
-        sc.load_case(_case(tmp_path, body={"added_mass": np.eye(6).tolist()}))
+        sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, body={"added_mass": np.eye(6).tolist()}))
     with pytest.raises(InputError, match=r"WAMIT file '.*nothere.1' does not exist"):
-        sc.load_case(_case(tmp_path, body={"hydrodynamics": {"file": "nothere"}}, analysis={"type": "system_static"}))
+        sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, body={"hydrodynamics": {"file": "nothere"}},
+                               analysis={"type": "system_static"}))

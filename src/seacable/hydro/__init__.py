@@ -5,9 +5,10 @@
 - ``radiation``: Cummins' retardation kernel and Ogilvie's relations back to the frequency domain.
 """
 
-from .database import HydroDatabase
 from .cummins import CumminsMotion, frequency_response, simulate_cummins
+from .database import HydroDatabase
 from .radiation import kernel_check, linear_transforms, ogilvie, retardation_kernel
 from .wamit import read_wamit
 
-__all__ = ["CumminsMotion", "HydroDatabase", "frequency_response", "simulate_cummins", "kernel_check", "linear_transforms", "ogilvie", "read_wamit", "retardation_kernel"]
+__all__ = ["CumminsMotion", "HydroDatabase", "frequency_response", "kernel_check", "linear_transforms", "ogilvie",
+           "read_wamit", "retardation_kernel", "simulate_cummins"]

@@ -13,7 +13,6 @@ the uncoupled route and the reference the coupled one is checked against.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -73,8 +72,7 @@ def simulate_cummins(db: HydroDatabase, mass, force, dt: float, *, stiffness=Non
         raise InputError("force holds a NaN or an infinity. Suggested fix: check the loads' inputs.")
     mass = _matrix(mass, "mass")
     stiffness = db.hydrostatics if stiffness is None else _matrix(stiffness, "stiffness")
-    t, kernel = retardation_kernel(db, dt, kernel_length)
-    kernel = kernel.copy()
+    _, kernel = retardation_kernel(db, dt, kernel_length)
     kernel[-1] *= 0.5  # the trapezoidal rule's end weight
     x = np.zeros(6) if position is None else np.array(position, float)
     v = np.zeros(6) if velocity is None else np.array(velocity, float)

@@ -91,7 +91,7 @@ def retardation_kernel(db: HydroDatabase, dt: float, t_max: float = 60.0):
                          f"(2 x {dt} s). Suggested fix: t_max of 60 s or more for a floating platform.")
     w = np.r_[0.0, db.omega]
     b = np.concatenate([np.zeros((1, 36)), db.damping.reshape(db.omega.size, 36)])
-    t = dt * np.arange(int(round(t_max / dt)) + 1)
+    t = dt * np.arange(round(t_max / dt) + 1)
     kernel = (2.0 / math.pi) * linear_transforms(w, b, t)[0]
     return t, kernel.reshape(t.size, 6, 6)
 

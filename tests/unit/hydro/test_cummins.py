@@ -39,7 +39,7 @@ def _regular(db, mass, stiffness, omega, dt, periods=40):
     """The steady response to a unit regular wave from 0 deg (ramped over five periods), fitted over the last ten
     periods: H with x = Re(H e^(-i w t))."""
     period = 2 * math.pi / omega
-    t = dt * np.arange(int(round(periods * period / dt)) + 1)
+    t = dt * np.arange(round(periods * period / dt) + 1)
     ramp = np.clip(t / (5 * period), 0.0, 1.0)
     ramp = ramp * ramp * (3 - 2 * ramp)
     x = db.excitation_at(omega, 0.0)
@@ -97,7 +97,7 @@ def test_the_memory_is_the_radiation_damping(body):
     with frequency within the decaying motion's band, and a period's peaks are 4 % apart in time)."""
     db, mass, stiffness = body
     dt = 0.05
-    t = dt * np.arange(int(300 / dt) + 1)
+    t = dt * np.arange(round(300 / dt) + 1)
     force = np.zeros((t.size, 6))
     motion = simulate_cummins(db, mass, force, dt, stiffness=stiffness, kernel_length=KERNEL,
                               position=(0, 0, 1.0, 0, 0, 0))
@@ -115,7 +115,7 @@ def test_the_memory_is_the_radiation_damping(body):
 
 
 def test_bad_inputs_are_refused(body):
-    db, mass, stiffness = body
+    db, mass, _ = body
     with pytest.raises(InputError, match=r"force must be \(n >= 2 times, 6 DOFs\)"):
         simulate_cummins(db, mass, np.zeros((10, 3)), 0.1)
     with pytest.raises(InputError, match="force holds a NaN"):

@@ -10,7 +10,14 @@ import numpy as np
 import pytest
 
 from seacable.errors import InputError
-from seacable.hydro import HydroDatabase, kernel_check, linear_transforms, ogilvie, read_wamit, retardation_kernel
+from seacable.hydro import (
+    HydroDatabase,
+    kernel_check,
+    linear_transforms,
+    ogilvie,
+    read_wamit,
+    retardation_kernel,
+)
 
 ROOT = Path(__file__).parents[2] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 ALPHA, BETA = 0.3, 1.0
@@ -29,7 +36,6 @@ def _closed_form_coefficients(w):
 
 
 def _database(omega, b_diag, a_diag, a_inf=1.0):
-    n = omega.size
     eye = np.eye(6)
     return HydroDatabase(omega=omega, added_mass=a_inf * eye + a_diag[:, None, None] * eye,
                          damping=b_diag[:, None, None] * eye, added_mass_inf=a_inf * eye, hydrostatics=np.zeros((6, 6)),

@@ -35,14 +35,14 @@ def _line(ext: str, pred) -> list[float]:
 
 def test_the_values_are_made_dimensional_as_wamit_defines_them(db):
     """One line of each file, by hand: A rho, B rho w, X rho g (conjugated: seacable's e^(-i w t)), C rho g."""
-    per, i, j, a_bar = _line(".1", lambda v: v[0] == 0 and v[1] == 1 and v[2] == 1)
+    a_bar = _line(".1", lambda v: v[0] == 0 and v[1] == 1 and v[2] == 1)[3]
     assert db.added_mass_inf[0, 0] == pytest.approx(a_bar * RHO, rel=1e-15)
-    per, i, j, a_bar, b_bar = _line(".1", lambda v: v[0] > 0 and v[1] == 3 and v[2] == 3)
+    per, _, _, a_bar, b_bar = _line(".1", lambda v: v[0] > 0 and v[1] == 3 and v[2] == 3)
     w = 2 * math.pi / per
     f = int(np.argmin(np.abs(db.omega - w)))
     assert db.added_mass[f, 2, 2] == pytest.approx(a_bar * RHO, rel=1e-15)
     assert db.damping[f, 2, 2] == pytest.approx(b_bar * RHO * w, rel=1e-12)
-    per, beta, i, mod, pha, re, im = _line(".3", lambda v: v[1] == 30 and v[2] == 1)
+    per, _, _, _, pha, re, im = _line(".3", lambda v: v[1] == 30 and v[2] == 1)
     h = int(np.argmin(np.abs(db.heading - math.radians(30))))
     f = int(np.argmin(np.abs(db.excitation_omega - 2 * math.pi / per)))
     assert db.excitation[h, f, 0] == pytest.approx((re - 1j * im) * RHO * G, rel=1e-12)
@@ -165,8 +165,8 @@ def test_a_bad_length_scale_is_refused(tmp_path):
 
 @pytest.mark.parametrize("changes, message", [
     ({"excitation_omega": None}, r"the excitation needs its headings and frequencies"),
-    ({"drift": np.zeros((1, 3, 6))}, r"the mean drift must have the shape \(1 headings, 46 frequencies, 6 DOFs\), got "
-                                     r"\(1, 3, 6\)"),
+    ({"drift": np.zeros((1, 3, 6))},
+     r"the mean drift must have the shape \(1 headings, 46 frequencies, 6 DOFs\), got \(1, 3, 6\)"),
     ({"drift_heading": None}, r"the mean drift needs its headings and frequencies"),
     ({"heading": np.zeros(36)}, r"each excitation heading must be given once"),
 ])
