@@ -248,6 +248,19 @@ WD0200 = Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "
     / "WD0200_Chain.txt"
 
 
+def _wd0200_line(tmp_path):
+    """MoorDyn's WD0200 chain at 20 segments: its deck, model, line view, the line's nodes and elements, and its
+    static equilibrium."""
+    from seacable.mooring.moordyn import _line_views, moordyn_model
+
+    path = tmp_path / "wd0200.txt"
+    path.write_text(WD0200.read_text().replace("760       82", "760       20"))
+    model = moordyn_model(path)
+    view = _line_views(model)[0]
+    nodes, els = model.network.line_nodes[0], np.flatnonzero(model.network.element_line == 0)
+    return path, model, view, nodes, els, static_equilibrium(model)
+
+
 def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_ones(tmp_path, monkeypatch):
     """A single line without attachments at its ends: its end forces at the static equilibrium and at each output
     of a run are the network's stored support forces at its end nodes (and its end elements' tensions for an end
@@ -255,15 +268,10 @@ def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_
     evaluates no state for them (issue 38: the overhead around the time loop)."""
     import seacable.mooring.run as R
     from seacable.io.moordyn import load_moordyn_case
-    from seacable.mooring.moordyn import _line_views, moordyn_model, run_moordyn_case
+    from seacable.mooring.moordyn import run_moordyn_case
     from seacable.mooring.solver import line_end_nodes
 
-    path = tmp_path / "wd0200.txt"
-    path.write_text(WD0200.read_text().replace("760       82", "760       20"))
-    model = moordyn_model(path)
-    view = _line_views(model)[0]
-    nodes, els = model.network.line_nodes[0], np.flatnonzero(model.network.element_line == 0)
-    st = static_equilibrium(model)
+    path, model, view, nodes, els, st = _wd0200_line(tmp_path)
     X = st.position[nodes]
     read = R.line_end_forces(view, X, support=st.support[nodes], tension=st.tension[els])
     assert np.array_equal(read, R.line_end_forces(view, X))
@@ -297,14 +305,8 @@ def test_grounded_length_and_node_tensions_are_their_formulas_to_the_bit(tmp_pat
     end A) of a run's outputs are the floats of their formulas written plainly, states on, off and within the
     seabed's ramp alike (issue 38: the outputs without temporaries as large as themselves)."""
     import seacable.mooring.run as R
-    from seacable.mooring.moordyn import _line_views, moordyn_model
 
-    path = tmp_path / "wd0200.txt"
-    path.write_text(WD0200.read_text().replace("760       82", "760       20"))
-    model = moordyn_model(path)
-    view = _line_views(model)[0]
-    nodes, els = model.network.line_nodes[0], np.flatnonzero(model.network.element_line == 0)
-    st = static_equilibrium(model)
+    _, model, view, nodes, els, st = _wd0200_line(tmp_path)
     motion = bind(HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0), model.network.channel_positions(st.position),
                   10.0)
     run = simulate(model, motion, 10.0, 0.1, 0.1, initial=st.position)
