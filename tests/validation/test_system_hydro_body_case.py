@@ -90,3 +90,24 @@ def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path, hull_case
     with pytest.raises(InputError, match=r"WAMIT file '.*nothere.1' does not exist"):
         sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, body={"hydrodynamics": {"file": "nothere"}},
                                analysis={"type": "system_static"}))
+
+
+@pytest.mark.parametrize("changes, message", [
+    # the memory cut at 20 s, where the VolturnUS-S kernel is still 3.4 % of its peak
+    ({"body": {"hydrodynamics": {"file": str(ROOT), "kernel_length": 20.0}}},
+     (r"bodies.hull.hydrodynamics.kernel_length: the radiation memory is cut at 20 s where it is still 3.4% of its "
+      r"peak \(more than 2%\).*a kernel_length of 40 s or more")),
+    # the centre of gravity 20 m above the water line: roll and pitch restoring -1.9e9 N m/rad, the ropes 6e6
+    ({"body": {"center_of_gravity": [0.0, 0.0, 20.0]}},
+     r"bodies.hull: the hydrostatic stiffness in roll is -1.868e\+09 N m/rad \(unstable.*so the body capsizes"),
+    # a sea beyond the database's excitation (the extract stops at 1.45 rad/s)
+    ({"waves": {"spectrum": "jonswap", "hs": 4.0, "tp": 10.0, "frequency_range": [0.3, 2.0]}},
+     (r"bodies.hull.hydrodynamics: .*wave excitation is asked for at .* rad/s, outside its frequencies 0.05-1.45 "
+      r"rad/s")),
+])
+def test_a_floating_body_that_cannot_run_is_refused_before_the_time_loop(tmp_path, hull_case, changes, message):
+    """One clear message each, from validate as from run (both prepare the run: tests/unit/test_check_run_parity.py)."""
+    waves = changes.pop("waves", WAVES)
+    case = sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, analysis={"duration": 10.0}, **changes))
+    with pytest.raises(InputError, match=message):
+        sc.check(case)

@@ -142,6 +142,12 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     for motion in a.body_motions.values():
         if isinstance(motion, RAOMotion):
             motion.table()   # the RAO file read and checked before the statics of a mean offset are solved
+    if any(b.kind == "free" and b.hydrodynamics is not None for b in system.bodies.values()):
+        # a floating body from a database: its hydrostatics with the lines must restore it (the catenary statics'
+        # checks, at the equilibrium they find), or it would capsize in the first disturbance of the run
+        from ..statics import check_statics
+
+        check_statics(system, case.environment)
     a = _mean_offsets(case, system, a)
     fe = build_system_fe(system, case.environment, a)
     net = fe.model.network
