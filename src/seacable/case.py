@@ -69,7 +69,7 @@ _XZ = tuple[float, float]
 #: The environment's optional inputs (key paths under ``environment``) whose use depends on the analysis; each
 #: analysis declares those it takes (:meth:`uses`), and a case that gives one its analysis does not use is
 #: refused (:meth:`Case._unused_inputs`): a silently ignored input is a result of something other than asked.
-ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "waves")
+ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "waves", "wind")
 _SEABED = frozenset({"depth", "seabed.slope", "seabed.friction"})
 #: A static analysis is the still-water equilibrium: waves (a zero-mean load in linear theory) are taken, so that one
 #: environment serves a line's statics and its dynamics, and have no part in it.
@@ -81,7 +81,7 @@ def given_environment_inputs(env: Environment) -> tuple[str, ...]:
     cur, bed = env.current, env.seabed
     given = {"depth": env.depth is not None, "current": cur.speed != 0.0 or cur.depths is not None,
              "seabed.slope": bed.slope != 0.0, "seabed.friction": bed.friction != 0.0,
-             "seabed.profile": bed.profile is not None, "waves": env.waves is not None}
+             "seabed.profile": bed.profile is not None, "waves": env.waves is not None, "wind": env.wind is not None}
     return tuple(k for k in ENVIRONMENT_INPUTS if given[k])
 
 
@@ -293,7 +293,7 @@ class TowedDynamicAnalysis(Model):
     scheme with bending stiffness (one uniform cable, a body at its end, a moving vessel)."""
 
     type: Literal["towed_dynamic"] = "towed_dynamic"
-    USES: ClassVar[frozenset[str]] = frozenset(ENVIRONMENT_INPUTS)
+    USES: ClassVar[frozenset[str]] = frozenset(ENVIRONMENT_INPUTS) - {"wind"}
 
     def uses(self, env: Environment) -> frozenset[str]:
         """The environment inputs of this analysis in ``env``: a seabed profile in the finite-element formulation

@@ -327,6 +327,35 @@ class IrregularWaves(Model):
                              gravity=gravity, hs=self.hs)
 
 
+class Wind(Model):
+    """Wind over the water (issue 39): a mean speed with its profile and a gust spectrum (DNV-RP-C205 2.3,
+    :mod:`seacable.wind`), loading the bodies that give their wind areas (``bodies.NAME.wind``).
+
+    Parameters
+    ----------
+    speed
+        The 1-hour mean speed at 10 m above the still-water level, U0. [m/s]
+    heading
+        The direction the wind blows towards, from +x towards +y. [rad]
+    spectrum
+        ``npd`` (Froya), ``api`` (API RP 2A / 2SK, peak ``peak``) or ``none`` (a steady wind).
+    peak
+        API's spectral peak f_p. [Hz]
+    seed
+        Seed of the gust record.
+    n_components
+        Components of the gust record (0.001-0.5 Hz).
+    """
+
+    speed: quantity("m/s", ge=0, fix="give the 1-hour mean wind speed at 10 m in m/s.") = Field(
+        description="1-hour mean speed at 10 m, U0. [m/s]")
+    heading: quantity("rad") = Field(0.0, description="Direction the wind blows towards. [rad]")
+    spectrum: Literal["npd", "api", "none"] = Field("npd", description="Gust spectrum: npd, api or none.")
+    peak: quantity("Hz", ge=0.01, le=0.1) = Field(0.025, description="API's spectral peak f_p. [Hz]")
+    seed: int = Field(0, ge=0, description="Seed of the gust record.")
+    n_components: int = Field(1000, ge=1, le=100_000, description="Components of the gust record.")
+
+
 class Environment(Model):
     """Water, gravity, depth, current and seabed.
 
@@ -345,6 +374,8 @@ class Environment(Model):
     waves
         Regular waves (:class:`Waves`) or an irregular sea (:class:`IrregularWaves`, a mapping with a
         ``spectrum`` key), used by the mooring dynamics; ``None`` for calm water.
+    wind
+        The wind (:class:`Wind`) on the bodies of a mooring system's dynamics; ``None`` for no wind.
     """
 
     water_density: quantity("kg/m^3", gt=0, fix="sea water is about 1025 kg/m^3.") = Field(
@@ -355,6 +386,7 @@ class Environment(Model):
     current: Current = Current()
     seabed: Seabed = Seabed()
     waves: Waves | IrregularWaves | None = None
+    wind: Wind | None = None
 
     @field_validator("waves", mode="before")
     @classmethod

@@ -218,8 +218,10 @@ class SystemDynamicAnalysis(Model):
     """
 
     type: Literal["system_dynamic"] = "system_dynamic"
-    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane seabed)
-    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves"})
+    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane seabed); the wind
+    #: on the bodies that give their wind areas
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves",
+                                                "wind"})
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
     output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")

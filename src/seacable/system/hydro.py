@@ -20,7 +20,7 @@ from .._ramp import smooth_ramp
 from ..errors import InputError
 from .model import Body, MooringSystem
 
-__all__ = ["MEMORY_TAIL", "body_wave_loads", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
+__all__ = ["MEMORY_TAIL", "body_wave_loads", "body_wind_loads", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
 
 #: The largest value of a body's retardation kernel at its cut (``kernel_length``), relative to its peak, in any DOF.
 #: The VolturnUS-S kernel is at 0.5 % of its peak at 60 s (HydroDyn's RdtnTMax for it), 0.03 % at 120 s, 2.9 % at 30 s. [-]
@@ -145,3 +145,46 @@ def _moved(sea, x0: float, y0: float):
         return sea
     shift = sea.wave_number * (x0 * np.cos(sea.heading) + y0 * np.sin(sea.heading))
     return dataclasses.replace(sea, phase=np.mod(np.asarray(sea.phase) + shift, 2 * math.pi))
+
+
+def body_wind_loads(body: Body, name: str, wind, t: np.ndarray, rho_air: float | None = None):
+    """The environment's ``wind`` (:class:`seacable.environment.Wind`) on a body with wind areas: the force and
+    moment (nt, 6) [N, N m] of the mean wind and its gusts at the body's centre of pressure, at the times ``t`` (the
+    body at rest at its given position), and the linear damping (6, 6) in the body's axes of the wind relative to
+    its motion, ``-dF/dv`` at the mean wind (``rho_air C A U`` along the wind), which the time loop applies to the
+    body's velocity; ``None`` when the body has no wind areas or there is no wind."""
+    if body.wind is None or wind is None or wind.speed <= 0.0:
+        return None
+    from ..wind import AIR_DENSITY, api_spectrum, gust_series, npd_profile, npd_spectrum
+
+    rho_air = AIR_DENSITY if rho_air is None else rho_air
+    coef = body.wind.coefficients()
+    z = float(body.wind.height)
+    mean = float(npd_profile(wind.speed, z))  # the 1-hour mean at the centre of pressure
+    if wind.spectrum == "none":
+        gust = np.zeros(t.size)
+    else:
+        if wind.spectrum == "npd":
+            spectrum = lambda f: npd_spectrum(f, wind.speed, z)
+        else:
+            spectrum = lambda f: api_spectrum(f, wind.speed, z, wind.peak)
+        gust = gust_series(spectrum, t, seed=wind.seed, n_components=wind.n_components)
+    direction = np.array([math.cos(wind.heading), math.sin(wind.heading)])
+    yaw = float(body.position[5])
+    f3 = coef.force(np.outer(mean + gust, direction), yaw=yaw, rho_air=rho_air)
+    force = np.zeros((t.size, 6))
+    force[:, [0, 1, 5]] = f3
+    # the damping of the relative wind: -dF/dv at the mean wind, by central differences of the force law
+    jac = np.zeros((3, 2))
+    h = 1e-3 * max(mean, 1.0)
+    for k in range(2):
+        dv = np.zeros(2)
+        dv[k] = h
+        jac[:, k] = (coef.force(mean * direction, body_velocity=dv, yaw=yaw, rho_air=rho_air)
+                     - coef.force(mean * direction, body_velocity=-dv, yaw=yaw, rho_air=rho_air)) / (2 * h)
+    damping_global = np.zeros((6, 6))
+    damping_global[np.ix_([0, 1, 5], [0, 1])] = -jac
+    c, s_ = math.cos(yaw), math.sin(yaw)
+    rot = np.eye(6)
+    rot[:2, :2] = [[c, -s_], [s_, c]]
+    return force, rot.T @ damping_global @ rot

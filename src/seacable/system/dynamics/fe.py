@@ -276,23 +276,31 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
             series[name] = ser.table()
     memory = np.zeros((nb, 1, 6, 6))
     step = 0.0
-    if a is not None and any(system.bodies[n].hydrodynamics is not None for n in free_bodies):
-        # bodies with a database: their radiation memory at the run's step and their wave loads as force series
-        from ..hydro import body_wave_loads, memory_kernels
+    wind = getattr(environment, "wind", None)
+    wind_damping = {}
+    if a is not None and any(system.bodies[n].hydrodynamics is not None or (wind is not None and system.bodies[n].wind)
+                             for n in free_bodies):
+        # bodies with a database: their radiation memory at the run's step and their wave loads as force series;
+        # bodies with wind areas: the wind's force series and its damping
         from ...mooring.motion import sea_of
+        from ..hydro import body_wave_loads, body_wind_loads, memory_kernels
 
         step = a.output_interval / max(1, math.ceil(a.output_interval / a.time_step - 1e-9))
         rho, g = model.water.density, model.water.gravity
         memory = memory_kernels(system, free_bodies, rho, g, step)
-        times = step * np.arange(int(math.ceil(a.duration / step)) + 2)
+        times = step * np.arange(math.ceil(a.duration / step) + 2)
         for name in free_bodies:
-            waves = body_wave_loads(system.bodies[name], name, sea_of(model.water), rho, g, times)
-            if waves is None:
+            loads = body_wave_loads(system.bodies[name], name, sea_of(model.water), rho, g, times)
+            blown = body_wind_loads(system.bodies[name], name, wind, times)
+            if blown is not None:
+                loads = blown[0] if loads is None else loads + blown[0]
+                wind_damping[name] = blown[1]
+            if loads is None:
                 continue
             if name in series:  # the user's series on the same times, added
                 t_u, f_u = series[name]
-                waves = waves + np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1)
-            series[name] = (times, waves)
+                loads = loads + np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1)
+            series[name] = (times, loads)
     nt = max([len(t) for t, _ in series.values()], default=1)
     ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
     for k, name in enumerate(free_bodies):
@@ -307,6 +315,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         bpar[k, DB.B_FEXT:DB.B_FEXT + 6] = b.external_force
         bkhs[k], badd[k] = b.matrix("hydrostatic_stiffness"), b.matrix("added_mass")
         blin[k], bquad[k] = b.matrix("linear_damping"), b.matrix("quadratic_damping")
+        if name in wind_damping:  # the wind relative to the body's motion
+            blin[k] += wind_damping[name]
         if name in series:
             t, f = series[name]
             ext_t[k, :len(t)], ext_f[k, :len(t)], ext_n[k] = t, f, len(t)
