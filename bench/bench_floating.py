@@ -13,6 +13,7 @@ process, shared 2-core machine at load 0.7-1.7), 40 elements a line, dt 0.1 s:
   database                             600 s run      3-hour storm                     target
   tests' extract (sea to 1.45 rad/s)     2.8 s (215x)   45.9 s wall, 45.8 s CPU (235x)   1.5x over 30 s
   full (sea to 2.45 rad/s)               6.8 s (88x)    159 s wall, 172 s CPU (68x)      5.3x over 30 s
+  full, the merged main at load 1.8                     109 s wall, 190 s CPU (99x)      3.6x over 30 s
 
 With the full database the time goes to the irregular sea's kinematics grid, not the stepping: profiled over
 1200 s, 16.7 s of 21 s in ``seastate.SeaGrid.window`` (14 windows of 91 s, the short waves' fine grid; 15 % of it
