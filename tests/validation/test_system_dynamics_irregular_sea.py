@@ -129,3 +129,36 @@ def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeyp
     err = np.max(np.abs(halved - ref), axis=0)
     assert np.all(err[[0, 2, 4]] < 1e-2 * span[[0, 2, 4]]), err / span
     assert np.any(err > 0.0)
+
+
+def test_a_body_that_leaves_the_seas_grid_is_said_once(tmp_path, monkeypatch, hull_case):
+    """No silent edge values: when a free body's fairlead is outside the sea's grid after an output interval
+    (:func:`seacable.system.dynamics.loop.outside_sea`, below; here made to say so from the first interval, since
+    the grid spans the anchors and a moored body rarely leaves it) the run says so once, with the time and where,
+    and goes on."""
+    from seacable.errors import SeacableWarning
+
+    sea = {"spectrum": "jonswap", "hs": 2.0, "tp": 10.0, "seed": 2, "n_components": 40, "frequency_range": [0.4, 1.4]}
+    case = sc.load_case(hull_case(tmp_path, waves=sea, rope=ROPE, analysis={"duration": 2.0, "output_interval": 0.5}))
+    seen = []
+    monkeypatch.setattr(DL, "outside_sea", lambda grid, points: seen.append(len(points)) or 0)
+    with pytest.warns(SeacableWarning, match=r"at t = 0.5 s a free body's fairlead \(x = .* m, y = .* m\) has left "
+                                             r"the irregular sea's kinematics grid") as said:
+        ds = sc.run(case)
+    assert len([w for w in said if "left the irregular sea" in str(w.message)]) == 1
+    assert seen == [3] and ds.time.values[-1] == 2.0  # checked until it is said (the three fairleads), then run on
+
+
+def test_outside_the_grid_along_and_across_the_mean_heading():
+    """The grid's horizontal extent, in its own axes: a long-crested sea's only along its heading."""
+    from seacable.seastate import GRID_HEADER, S_COS, S_DX, S_DY, S_MODE, S_NX, S_NY, S_SIN, S_X0, S_Y0
+
+    sea = np.zeros(GRID_HEADER)
+    sea[[S_MODE, S_X0, S_DX, S_NX, S_Y0, S_DY, S_NY, S_COS, S_SIN]] = (1, -10, 1, 21, -5, 1, 11, 0, 1)  # heading +y
+    inside, beyond_along, beyond_across = (0.0, 9.0, 0.0), (0.0, 11.0, 0.0), (6.0, 0.0, 0.0)
+    assert DL.outside_sea(sea, [inside]) is None
+    assert DL.outside_sea(sea, [inside, beyond_along]) == 1
+    assert DL.outside_sea(sea, [beyond_across]) == 0
+    sea[S_NY] = 1  # long-crested: no extent across
+    assert DL.outside_sea(sea, [beyond_across]) is None
+    assert DL.outside_sea(None, [beyond_along]) is None

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import math
 import time as _time
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..._atomic import keep_whole_outputs
-from ...errors import ConvergenceError, InputError
+from ...errors import ConvergenceError, InputError, SeacableWarning
 from ...mooring.motion import RAOMotion, sea_of
 from ...mooring.solver import advance_interval
 from ...mooring.solver import simulate as simulate_lines
@@ -168,6 +169,26 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
     return channels
 
 
+def outside_sea(sea, points) -> int | None:
+    """The first of ``points`` (n, 3) [m] outside an irregular sea's kinematics grid horizontally (the packed
+    grid of :class:`seacable.seastate.SeaGrid`: along and, for a short-crested sea, across its mean heading), or
+    None when all are inside it or there is no grid."""
+    from ...seastate import S_COS, S_DX, S_DY, S_MODE, S_NX, S_NY, S_SIN, S_X0, S_Y0
+
+    if sea is None or len(sea) <= S_Y0 or sea[S_MODE] <= 0 or not len(points):
+        return None
+    p = np.asarray(points, float)
+    cb, sb = sea[S_COS], sea[S_SIN]
+    along = p[:, 0] * cb + p[:, 1] * sb
+    across = -p[:, 0] * sb + p[:, 1] * cb
+    tol = 1e-6 * max(1.0, sea[S_DX])
+    out = (along < sea[S_X0] - tol) | (along > sea[S_X0] + sea[S_DX] * (sea[S_NX] - 1) + tol)
+    if sea[S_NY] > 1:
+        out |= (across < sea[S_Y0] - tol) | (across > sea[S_Y0] + sea[S_DY] * (sea[S_NY] - 1) + tol)
+    hit = np.flatnonzero(out)
+    return int(hit[0]) if hit.size else None
+
+
 def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: float) -> np.ndarray:
     """The points (n, 3) [m] an irregular sea's kinematics grid covers for a run
     (:meth:`seacable.mooring.solver.MooringModel.prepare_sea`): the nodes at ``X``, the prescribed nodes at the
@@ -316,6 +337,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     g0 = _global_state(q, qd, frame)
     rhist[:, 0, :3], rhist[:, 0, 3:] = qd[:, :3], g0[2]  # the start's velocity: one step back at the first step
     rhead = np.zeros(nb, np.int64)
+    body_nodes = np.asarray(fe.con_node)[np.asarray(fe.con_body) >= 0]  # the free bodies' tied nodes
+    left_sea = False  # said once
     begin = _time.perf_counter()
     try:
         for k in range(n_out):
@@ -342,6 +365,17 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
             bq.append(g[0])
             bqd.append(g[1])
             bw.append(g[2])
+            if not left_sea and len(body_nodes):
+                i = outside_sea(m.sea if m.water.sea is not None else None, X[body_nodes])
+                if i is not None:
+                    left_sea = True
+                    x, y = X[body_nodes[i], 0], X[body_nodes[i], 1]
+                    warnings.warn(f"at t = {times[-1]:g} s a free body's fairlead (x = {x:.4g} m, y = {y:.4g} m) has "
+                                  "left the irregular sea's kinematics grid (it allows "
+                                  f"{SEA_EXCURSION:.0%} of the depth of excursion): the lines there take the grid "
+                                  "edge's kinematics from now on. Suggested fix: check that the mooring holds the "
+                                  "body, or raise seacable.system.dynamics.loop.SEA_EXCURSION.",
+                                  SeacableWarning, stacklevel=2)
             if progress is not None:
                 progress(times[-1], duration)
     except KeyboardInterrupt:
