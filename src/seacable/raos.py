@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ._heading import heading_weights
 from ._text import read_text_file
 from .errors import InputError
 from .seastate import cos_sin
@@ -61,23 +62,13 @@ class RAOTable:
         """The RAOs at frequencies ``omega`` [rad/s] and headings ``heading`` [rad] (arrays of one shape):
         (6, ...) complex. Frequencies outside the table are refused (:func:`rao_motion` says which)."""
         w = np.asarray(omega, float)
-        b = np.mod(np.asarray(heading, float), 2 * math.pi)
-        order = np.argsort(np.mod(self.heading, 2 * math.pi))
-        hs = np.mod(self.heading, 2 * math.pi)[order]
+        order, lo, hi, frac = heading_weights(self.heading, heading)
         vals = self.values[:, order]
-        if hs.size == 1:
-            lo = hi = np.zeros(b.shape, int)
-            frac = np.zeros(b.shape)
-        else:  # periodic: the heading after the last is the first plus 2 pi
-            ext = np.r_[hs, hs[0] + 2 * math.pi]
-            b2 = np.where(b < hs[0], b + 2 * math.pi, b)
-            lo = np.clip(np.searchsorted(ext, b2, side="right") - 1, 0, hs.size - 1)
-            frac = (b2 - ext[lo]) / (ext[lo + 1] - ext[lo])
-            hi = (lo + 1) % hs.size
+        nh = order.size
         out = np.empty((6,) + w.shape, complex)
         for j in range(6):
-            re = [np.interp(w, self.omega, vals[j, h].real) for h in range(hs.size)]
-            im = [np.interp(w, self.omega, vals[j, h].imag) for h in range(hs.size)]
+            re = [np.interp(w, self.omega, vals[j, h].real) for h in range(nh)]
+            im = [np.interp(w, self.omega, vals[j, h].imag) for h in range(nh)]
             f = np.array(re) + 1j * np.array(im)  # (nh, ...)
             idx = np.indices(w.shape)
             out[j] = (1 - frac) * f[(lo, *idx)] + frac * f[(hi, *idx)]

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._heading import heading_weights
 from .errors import InputError
 
 __all__ = ["AIR_DENSITY", "WindCoefficients", "api_profile", "api_spectrum", "gust_series", "npd_profile",
@@ -140,18 +141,10 @@ class WindCoefficients:
 
     def at(self, heading) -> np.ndarray:
         """The areas (..., 3) [m^2, m^2, m^3] at the relative wind's directions ``heading`` [rad] (body axes)."""
-        b = np.mod(np.asarray(heading, float), 2 * math.pi)
-        hs = np.mod(np.atleast_1d(np.asarray(self.heading, float)), 2 * math.pi)
-        order = np.argsort(hs)
-        hs = hs[order]
+        order, lo, hi, frac = heading_weights(self.heading, heading)
         table = np.stack([np.atleast_1d(np.asarray(getattr(self, k), float))[order] for k in ("surge", "sway", "yaw")],
                          axis=-1)
-        if hs.size == 1:
-            return np.broadcast_to(table[0], b.shape + (3,)).copy()
-        ext = np.r_[hs, hs[0] + 2 * math.pi]
-        tab = np.concatenate([table, table[:1]])
-        bb = np.where(b < hs[0], b + 2 * math.pi, b)
-        return np.stack([np.interp(bb, ext, tab[:, k]) for k in range(3)], axis=-1)
+        return (1 - frac)[..., None] * table[lo] + frac[..., None] * table[hi]
 
     def force(self, wind, body_velocity=(0.0, 0.0), yaw: float = 0.0, rho_air: float = AIR_DENSITY) -> np.ndarray:
         """The force (fx, fy) [N] and yaw moment [N m] in the global axes from the wind's velocity ``wind`` (..., 2)

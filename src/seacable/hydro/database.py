@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._heading import heading_weights
 from ..errors import InputError
 
 __all__ = ["HydroDatabase"]
@@ -129,8 +130,7 @@ class HydroDatabase:
 def _interp_heading_frequency(heading, omega_table, table, omega, at_heading, what: str, source: str) -> np.ndarray:
     """``table[h, f, :]`` at the points (``omega``, ``at_heading``): linear in frequency, periodic-linear in heading."""
     w = np.asarray(omega, float)
-    b = np.mod(np.asarray(at_heading, float), 2 * math.pi)
-    w, b = np.broadcast_arrays(w, b)
+    w, b = np.broadcast_arrays(w, np.asarray(at_heading, float))
     lo_w, hi_w = float(omega_table[0]), float(omega_table[-1])
     outside = (w < lo_w * (1 - 1e-12)) | (w > hi_w * (1 + 1e-12))
     if np.any(outside):
@@ -138,24 +138,14 @@ def _interp_heading_frequency(heading, omega_table, table, omega, at_heading, wh
         raise InputError(f"{source}: the {what} is asked for at {bad:.4g} rad/s, outside its frequencies "
                          f"{lo_w:.4g}-{hi_w:.4g} rad/s. Suggested fix: cut the sea's spectrum to the database's "
                          "frequencies, or give a database that covers the sea.")
-    hs = np.mod(np.asarray(heading, float), 2 * math.pi)
-    order = np.argsort(hs)
-    hs, vals = hs[order], np.asarray(table)[order]
+    order, lo, hi, frac = heading_weights(heading, b.ravel())
+    vals = np.asarray(table)[order]
     # frequency first: (headings, points, 6)
     re = np.stack([np.stack([np.interp(w.ravel(), omega_table, vals[h, :, j].real) for j in range(6)], axis=-1)
-                   for h in range(hs.size)])
+                   for h in range(order.size)])
     im = np.stack([np.stack([np.interp(w.ravel(), omega_table, vals[h, :, j].imag) for j in range(6)], axis=-1)
-                   for h in range(hs.size)]) if np.iscomplexobj(vals) else np.zeros_like(re)
+                   for h in range(order.size)]) if np.iscomplexobj(vals) else np.zeros_like(re)
     at_w = re + 1j * im
-    if hs.size == 1:
-        out = at_w[0]
-    else:
-        ext = np.r_[hs, hs[0] + 2 * math.pi]
-        bb = b.ravel()
-        bb = np.where(bb < hs[0], bb + 2 * math.pi, bb)
-        lo = np.clip(np.searchsorted(ext, bb, side="right") - 1, 0, hs.size - 1)
-        frac = ((bb - ext[lo]) / (ext[lo + 1] - ext[lo]))[:, None]
-        hi = (lo + 1) % hs.size
-        idx = np.arange(bb.size)
-        out = (1 - frac) * at_w[lo, idx] + frac * at_w[hi, idx]
+    idx = np.arange(w.size)
+    out = (1 - frac)[:, None] * at_w[lo, idx] + frac[:, None] * at_w[hi, idx]
     return out.reshape(w.shape + (6,))
