@@ -4,38 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._jit import njit
-
-
-@njit(cache=True)
-def _solve6(S, r, out):
-    """``out = S^-1 r`` for a 6x6 ``S`` (Gaussian elimination with partial pivoting; ``S`` and ``r`` are copied).
-    Returns False when ``S`` is singular."""
-    a = np.empty((6, 7))
-    for i in range(6):
-        for j in range(6):
-            a[i, j] = S[i, j]
-        a[i, 6] = r[i]
-    for c in range(6):
-        p = c
-        for i in range(c + 1, 6):
-            if abs(a[i, c]) > abs(a[p, c]):
-                p = i
-        if a[p, c] == 0.0:
-            return False
-        if p != c:
-            for j in range(7):
-                a[c, j], a[p, j] = a[p, j], a[c, j]
-        for i in range(c + 1, 6):
-            f = a[i, c] / a[c, c]
-            for j in range(c, 7):
-                a[i, j] -= f * a[c, j]
-    for i in range(5, -1, -1):
-        s = a[i, 6]
-        for j in range(i + 1, 6):
-            s -= a[i, j] * out[j]
-        out[i] = s / a[i, i]
-    return True
+from .._jit import dense_solve, njit
 
 
 @njit(cache=True)
@@ -56,7 +25,6 @@ def cummins_steps(x, v, a, hist, head, kernel, mass, damping, quad, stiffness, f
     mem = np.zeros(6)
     S = np.empty((6, 6))
     r = np.empty(6)
-    da = np.empty(6)
     xp = np.empty(6)
     vp = np.empty(6)
     an = np.empty(6)
@@ -92,13 +60,13 @@ def cummins_steps(x, v, a, hist, head, kernel, mass, damping, quad, stiffness, f
                     S[r0, c] = mass[r0, c] + c_v * (damping[r0, c] + 0.5 * dt * kernel[0, r0, c]
                                                     + 2.0 * quad[r0, c] * abs(vc)) + c_x * stiffness[r0, c]
                 r[r0] = s
-            if not _solve6(S, r, da):
+            if not dense_solve(S, r):  # r becomes the correction
                 return step - 1
             big = 0.0
             size = 0.0
             for k in range(6):
-                an[k] += da[k]
-                big = max(big, abs(da[k]))
+                an[k] += r[k]
+                big = max(big, abs(r[k]))
                 size = max(size, abs(an[k]))
             if big <= tol * max(size, 1e-12):
                 ok = True

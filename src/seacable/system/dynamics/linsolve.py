@@ -6,39 +6,7 @@ from __future__ import annotations
 
 import math
 
-from ..._jit import njit
-
-
-@njit(cache=True)
-def dense_solve(A, b):
-    """Solve the small dense system ``A x = b`` in place (Gaussian elimination, partial pivoting); x in b.
-    False when singular."""
-    m = b.size
-    for k in range(m):
-        p = k
-        big = abs(A[k, k])
-        for i in range(k + 1, m):
-            if abs(A[i, k]) > big:
-                big = abs(A[i, k])
-                p = i
-        if big == 0.0 or not math.isfinite(big):
-            return False
-        if p != k:
-            for c in range(m):
-                A[k, c], A[p, c] = A[p, c], A[k, c]
-            b[k], b[p] = b[p], b[k]
-        for i in range(k + 1, m):
-            f = A[i, k] / A[k, k]
-            if f != 0.0:
-                for c in range(k + 1, m):
-                    A[i, c] -= f * A[k, c]
-                b[i] -= f * b[k]
-    for k in range(m - 1, -1, -1):
-        s = b[k]
-        for c in range(k + 1, m):
-            s -= A[k, c] * b[c]
-        b[k] = s / A[k, k]
-    return True
+from ..._jit import dense_solve, njit  # noqa: F401  (dense_solve: the bodies' and ties' small system)
 
 
 @njit(cache=True)
