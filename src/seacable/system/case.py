@@ -68,7 +68,7 @@ class _Solve(Model):
     statics: Literal["auto", "catenary", "finite_element"] = Field(
         "auto", description="Line statics: exact elastic catenaries with analytic stiffness ('catenary'), or the "
                             "finite-element lines with the stiffness by central differences ('finite_element'); "
-                            "'auto' takes the catenaries unless a current or a sloping seabed needs the "
+                            "'auto' takes the catenaries unless a current, a sloping seabed or a wind needs the "
                             "finite elements.")
 
     @model_validator(mode="after")
@@ -83,8 +83,10 @@ class SystemStaticAnalysis(_Solve):
     """Static equilibrium and stiffness of the system, intact and (with ``damaged_lines``) damaged."""
 
     type: Literal["system_static"] = "system_static"
-    #: environment inputs taken (seacable.case.check_unused_inputs): waves, as every static analysis (still water)
-    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves"})
+    #: environment inputs taken (seacable.case.check_unused_inputs): waves, as every static analysis (still water);
+    #: the mean wind on the bodies that give their wind areas
+    USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves",
+                                                "wind"})
     profile_points: int = Field(41, ge=2, le=10_000, description="Points of each line's stored profile.")
 
 
@@ -389,6 +391,11 @@ class SystemCase(Model):
             if given:
                 raise ValueError(f"bodies.{name}: {', '.join(given)} and hydrodynamics both given: the database gives "
                                  f"the hydrostatics and the added mass. Suggested fix: leave out {', '.join(given)}.")
+        if self.environment.wind is not None and not any(b.kind == "free" and b.wind is not None
+                                                         for b in self.bodies.values()):
+            raise ValueError("environment.wind is given, but no free body gives its wind areas (bodies.NAME.wind), so "
+                             "it would load nothing (the lines take no wind). Suggested fix: give the bodies' wind "
+                             "areas, or remove environment.wind.")
         try:
             system = self.system()
         except InputError as err:

@@ -6,6 +6,8 @@ the database's hydrostatic stiffness, with the weight's moment added unless the 
 infinite-frequency added mass, so that the statics and the dynamics use them as a user's matrices.
 :func:`body_wave_loads` and :func:`memory_kernels` are the time loop's: the first-order force of the case's sea
 at the body's position and its mean or slow drift, as a force series; the retardation kernels at the run's step.
+:func:`body_wind_velocity` and :func:`area_tables`: the wind at a body and its wind and current tables, whose
+forces the coupled step takes with the relative velocity.
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ from .._ramp import smooth_ramp
 from ..errors import InputError
 from .model import Body, MooringSystem
 
-__all__ = ["MEMORY_TAIL", "body_wave_loads", "body_wind_loads", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
+__all__ = ["MEMORY_TAIL", "area_tables", "body_wave_loads", "body_wind_loads", "body_wind_velocity", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
 
 #: The largest value of a body's retardation kernel at its cut (``kernel_length``), relative to its peak, in any DOF.
 #: The VolturnUS-S kernel is at 0.5 % of its peak at 60 s (HydroDyn's RdtnTMax for it), 0.03 % at 120 s, 2.9 % at 30 s. [-]
@@ -147,44 +149,76 @@ def _moved(sea, x0: float, y0: float):
     return dataclasses.replace(sea, phase=np.mod(np.asarray(sea.phase) + shift, 2 * math.pi))
 
 
-def body_wind_loads(body: Body, name: str, wind, t: np.ndarray, rho_air: float | None = None):
-    """The environment's ``wind`` (:class:`seacable.environment.Wind`) on a body with wind areas: the force and
-    moment (nt, 6) [N, N m] of the mean wind and its gusts at the body's centre of pressure, at the times ``t`` (the
-    body at rest at its given position), and the linear damping (6, 6) in the body's axes of the wind relative to
-    its motion, ``-dF/dv`` at the mean wind (``rho_air C A U`` along the wind), which the time loop applies to the
-    body's velocity; ``None`` when the body has no wind areas or there is no wind."""
+def body_wind_velocity(body: Body, wind, t: np.ndarray | None = None) -> np.ndarray | None:
+    """The environment's ``wind`` (:class:`seacable.environment.Wind`) at a body's centre of pressure: its velocity
+    (nt, 2) [m/s] in the global axes at the times ``t`` (the 1-hour mean of the NPD profile at the height, and the
+    gusts of the wind's spectrum); ``t`` None: the mean alone (1, 2). ``None`` when the body has no wind areas or
+    there is no wind."""
     if body.wind is None or wind is None or wind.speed <= 0.0:
         return None
-    from ..wind import AIR_DENSITY, api_spectrum, gust_series, npd_profile, npd_spectrum
+    from ..wind import api_spectrum, gust_series, npd_profile, npd_spectrum
 
-    rho_air = AIR_DENSITY if rho_air is None else rho_air
-    coef = body.wind.coefficients()
     z = float(body.wind.height)
     mean = float(npd_profile(wind.speed, z))  # the 1-hour mean at the centre of pressure
-    if wind.spectrum == "none":
-        gust = np.zeros(t.size)
+    if t is None or wind.spectrum == "none":
+        gust = np.zeros(1 if t is None else t.size)
     else:
         if wind.spectrum == "npd":
             spectrum = lambda f: npd_spectrum(f, wind.speed, z)
         else:
             spectrum = lambda f: api_spectrum(f, wind.speed, z, wind.peak)
         gust = gust_series(spectrum, t, seed=wind.seed, n_components=wind.n_components)
-    direction = np.array([math.cos(wind.heading), math.sin(wind.heading)])
+    return np.outer(mean + gust, [math.cos(wind.heading), math.sin(wind.heading)])
+
+
+def body_wind_loads(body: Body, name: str, wind, t: np.ndarray, rho_air: float | None = None):
+    """The environment's ``wind`` on a body with wind areas, the body held at its given position: the force and
+    moment (nt, 6) [N, N m] of the mean wind and its gusts (:func:`body_wind_velocity`) at the times ``t``, and the
+    linear damping (6, 6) in the body's axes of the wind relative to its motion, ``-dF/dv`` at the mean wind
+    (``rho_air C A U`` along the wind): the linearised loads of a frequency-domain or uncoupled model (the coupled
+    dynamics take the wind's force with the instantaneous relative velocity,
+    :func:`seacable.system.dynamics.body.body_load`); ``None`` when the body has no wind areas or there is no
+    wind."""
+    velocity = body_wind_velocity(body, wind, t)
+    if velocity is None:
+        return None
+    from ..wind import AIR_DENSITY
+
+    rho_air = AIR_DENSITY if rho_air is None else rho_air
+    coef = body.wind.coefficients()
     yaw = float(body.position[5])
-    f3 = coef.force(np.outer(mean + gust, direction), yaw=yaw, rho_air=rho_air)
+    f3 = coef.force(velocity, yaw=yaw, rho_air=rho_air)
     force = np.zeros((t.size, 6))
     force[:, [0, 1, 5]] = f3
     # the damping of the relative wind: -dF/dv at the mean wind, by central differences of the force law
+    mean = body_wind_velocity(body, wind)[0]
     jac = np.zeros((3, 2))
-    h = 1e-3 * max(mean, 1.0)
+    h = 1e-3 * max(float(np.hypot(*mean)), 1.0)
     for k in range(2):
         dv = np.zeros(2)
         dv[k] = h
-        jac[:, k] = (coef.force(mean * direction, body_velocity=dv, yaw=yaw, rho_air=rho_air)
-                     - coef.force(mean * direction, body_velocity=-dv, yaw=yaw, rho_air=rho_air)) / (2 * h)
+        jac[:, k] = (coef.force(mean, body_velocity=dv, yaw=yaw, rho_air=rho_air)
+                     - coef.force(mean, body_velocity=-dv, yaw=yaw, rho_air=rho_air)) / (2 * h)
     damping_global = np.zeros((6, 6))
     damping_global[np.ix_([0, 1, 5], [0, 1])] = -jac
     c, s_ = math.cos(yaw), math.sin(yaw)
     rot = np.eye(6)
     rot[:2, :2] = [[c, -s_], [s_, c]]
     return force, rot.T @ damping_global @ rot
+
+
+def area_tables(body: Body) -> tuple[int, int, np.ndarray]:
+    """A body's current and wind tables as the coupled dynamics take them (:mod:`seacable.system.dynamics.body`,
+    ``B_TAB``): the rows of each and the rows' values (heading in [0, 2 pi) ascending, surge, sway and yaw areas),
+    the current's then the wind's, flattened."""
+    rows = []
+    for table in (body.current, body.wind):
+        if table is None:
+            rows.append(np.zeros((0, 4)))
+            continue
+        c = table.coefficients()
+        b = np.mod(np.atleast_1d(np.asarray(c.heading, float)), 2 * math.pi)
+        order = np.argsort(b)
+        rows.append(np.stack([b[order]] + [np.atleast_1d(np.asarray(getattr(c, k), float))[order]
+                                           for k in ("surge", "sway", "yaw")], axis=1))
+    return len(rows[0]), len(rows[1]), np.concatenate(rows).ravel()

@@ -27,7 +27,7 @@ from pydantic import Field, model_validator
 from .._model import Model, quantity, suggest
 from ..line import Line
 
-__all__ = ["Body", "BodyHydrodynamics", "BodyWind", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
+__all__ = ["Body", "BodyCurrent", "BodyHydrodynamics", "BodyWind", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
 
 _XYZ = tuple[float, float, float]
 _SIX = tuple[float, float, float, float, float, float]
@@ -119,15 +119,12 @@ class BodyHydrodynamics(Model):
                          "where the static start puts the body. With 0 they start at t = 0 from zero. [s]")
 
 
-class BodyWind(Model):
-    """A body's wind areas (issue 39): drag coefficient times area in surge and sway [m^2] and times arm in yaw
-    [m^3] by the direction the relative wind blows towards in the body's axes (linear between ``headings``,
-    periodic; one heading: the same at every direction), at the centre of pressure ``height`` above the still-water
-    level, where the environment's wind is taken (:mod:`seacable.wind`: ``F = 1/2 rho_air |u| u C``)."""
+class _AreaTable(Model):
+    """Force areas by the direction a relative flow blows towards in the body's axes (linear between ``headings``,
+    periodic; one heading: the same at every direction): drag coefficient times area in surge and sway [m^2] and
+    times arm in yaw [m^3], so that the force is ``1/2 rho |u| u C`` (:class:`seacable.wind.WindCoefficients`)."""
 
-    height: quantity("m", gt=0, fix="give the height of the wind's centre of pressure above the water in m.") = Field(
-        description="Centre of pressure above the still-water level. [m]")
-    headings: tuple[float, ...] = Field((0.0,), description="Relative wind directions, body axes. [rad]")
+    headings: tuple[float, ...] = Field((0.0,), description="Relative flow directions, body axes. [rad]")
     surge: tuple[float, ...] = Field(description="Surge force area C A at each heading. [m^2]")
     sway: tuple[float, ...] = Field(description="Sway force area at each heading. [m^2]")
     yaw: tuple[float, ...] = Field(description="Yaw moment area C A L at each heading. [m^3]")
@@ -143,6 +140,23 @@ class BodyWind(Model):
 
         return WindCoefficients(heading=np.asarray(self.headings), surge=np.asarray(self.surge),
                                 sway=np.asarray(self.sway), yaw=np.asarray(self.yaw))
+
+
+class BodyWind(_AreaTable):
+    """A body's wind areas (issue 39), at the centre of pressure ``height`` above the still-water level, where the
+    environment's wind is taken (:mod:`seacable.wind`: ``F = 1/2 rho_air |u| u C``, ``u`` the wind relative to the
+    body's reference point)."""
+
+    height: quantity("m", gt=0, fix="give the height of the wind's centre of pressure above the water in m.") = Field(
+        description="Centre of pressure above the still-water level. [m]")
+
+
+class BodyCurrent(_AreaTable):
+    """A body's current areas (issue 39): ``F = 1/2 rho |u| u C`` of the current at the body's reference point (its
+    depth, or the surface's current when the point is above the water) relative to the reference point's velocity,
+    as OCIMF's or a model test's coefficients give them (``C A`` from ``C_X``, ``C_Y`` and ``C_N`` times the
+    areas and the length). A body's ``quadratic_damping`` acts on the same relative velocity: give the hull's drag
+    in one of them, not both."""
 
 
 class Body(Model):
@@ -187,7 +201,9 @@ class Body(Model):
         A hydrodynamic database (:class:`BodyHydrodynamics`) for the hydrostatics, added mass, radiation
         memory and wave loads.
     wind
-        Its wind areas (:class:`BodyWind`), for the environment's wind in the dynamics.
+        Its wind areas (:class:`BodyWind`), for the environment's wind.
+    current
+        Its current areas (:class:`BodyCurrent`), for the environment's current.
     """
 
     kind: Literal["free", "fixed", "prescribed"] = Field("free", description="free, fixed or prescribed.")
@@ -209,7 +225,8 @@ class Body(Model):
     pinned: bool = Field(False, description="Reference point tied by a ball joint; only rotations free.")
     hydrodynamics: BodyHydrodynamics | None = Field(
         None, description="Hydrodynamic database (WAMIT files): hydrostatics, added mass, radiation memory, waves.")
-    wind: BodyWind | None = Field(None, description="Wind areas by relative wind direction, for the dynamics.")
+    wind: BodyWind | None = Field(None, description="Wind areas by relative wind direction.")
+    current: BodyCurrent | None = Field(None, description="Current areas by relative current direction.")
 
     @model_validator(mode="after")
     def _check(self):

@@ -14,7 +14,8 @@ STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
 
 
 def needs_fe(env) -> str:
-    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed."""
+    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed, a wind (its
+    force on a body turns with the body's heading)."""
     cur = env.current
     speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
     why = []
@@ -22,4 +23,7 @@ def needs_fe(env) -> str:
         why.append(f"a current of {max(abs(v) for v in speeds):g} m/s")
     if env.seabed.slope != 0:
         why.append(f"a seabed sloping at {env.seabed.slope:g} rad")
+    wind = getattr(env, "wind", None)
+    if wind is not None and wind.speed > 0:
+        why.append(f"a wind of {wind.speed:g} m/s on the bodies")
     return " and ".join(why)

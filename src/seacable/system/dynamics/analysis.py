@@ -142,17 +142,14 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     for motion in a.body_motions.values():
         if isinstance(motion, RAOMotion):
             motion.table()   # the RAO file read and checked before the statics of a mean offset are solved
-    if case.environment.wind is not None and not any(b.kind == "free" and b.wind is not None
-                                                     for b in system.bodies.values()):
-        raise InputError("environment.wind is given, but no free body gives its wind areas (bodies.NAME.wind), so "
-                         "it would load nothing (the lines take no wind). Suggested fix: give the bodies' wind "
-                         "areas, or remove environment.wind.")
     if any(b.kind == "free" and b.hydrodynamics is not None for b in system.bodies.values()):
         # a floating body from a database: its hydrostatics with the lines must restore it (the catenary statics'
         # checks, at the equilibrium they find), or it would capsize in the first disturbance of the run
         from ..statics import check_statics
 
-        check_statics(system, case.environment)
+        # (its hydrostatics and lines alone: the catenary statics take no current or wind)
+        env = case.environment
+        check_statics(system, env.model_copy(update={"current": type(env.current)(), "wind": None}))
     a = _mean_offsets(case, system, a)
     fe = build_system_fe(system, case.environment, a)
     net = fe.model.network

@@ -12,6 +12,8 @@ angles' generalised forces ``E^T M``. The Newton matrix leaves out the change of
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..._jit import copy_2d, njit
@@ -22,7 +24,11 @@ from .frames import body_rotation, global_angles, rotation
 # body parameter layout (one row per body in ``bpar``)
 B_MASS, B_VOL, B_AWP, B_IXX, B_IYY, B_HASK = 0, 1, 2, 3, 4, 5
 B_CG, B_CB, B_INERT, B_Q0, B_FEXT = 6, 9, 12, 15, 21
-B_SIZE = 27
+# the current's and the wind's force tables (:func:`_table_force`): their rows, the air's density, and from
+# ``B_TAB`` the rows (heading in [0, 2 pi) ascending, surge, sway, yaw areas), the current's then the wind's
+B_NCUR, B_NWIND, B_RHOAIR = 27, 28, 29
+B_SIZE = 30
+B_TAB = B_SIZE
 
 
 @njit(cache=True)
@@ -71,13 +77,87 @@ def _body_current(q, env, cur_depth, cur_speed, uc):
 
 
 @njit(cache=True)
+def _table_force(par, off, n, ux, uy, psi, density, out):
+    """The force (x, y) and yaw moment ``out`` (3, global axes) of a flow ``(ux, uy)`` [m/s] relative to the body
+    (global axes) on a body heading ``psi`` [rad], from its table of ``n`` rows at ``par[off:]`` (``B_TAB``):
+    ``1/2 density |u|^2`` times the areas at the flow's direction in the body's axes, interpolated linearly and
+    periodically in that direction as :func:`seacable._heading.heading_weights` does."""
+    speed2 = ux * ux + uy * uy
+    out[0] = out[1] = out[2] = 0.0
+    if speed2 == 0.0:
+        return
+    beta = (math.atan2(uy, ux) - psi) % (2.0 * math.pi)
+    lo = n - 1  # before the first heading: between the last and the first plus 2 pi
+    for r in range(n):
+        if par[off + 4 * r] <= beta:
+            lo = r
+    hi = (lo + 1) % n
+    frac = 0.0
+    if n > 1:
+        b0, b1 = par[off + 4 * lo], par[off + 4 * hi]
+        if hi <= lo:
+            b1 += 2.0 * math.pi
+        if beta < b0:
+            beta += 2.0 * math.pi
+        frac = (beta - b0) / (b1 - b0)
+    q = 0.5 * density * speed2
+    cx = q * ((1.0 - frac) * par[off + 4 * lo + 1] + frac * par[off + 4 * hi + 1])
+    cy = q * ((1.0 - frac) * par[off + 4 * lo + 2] + frac * par[off + 4 * hi + 2])
+    out[0] = math.cos(psi) * cx - math.sin(psi) * cy
+    out[1] = math.sin(psi) * cx + math.cos(psi) * cy
+    out[2] = q * ((1.0 - frac) * par[off + 4 * lo + 3] + frac * par[off + 4 * hi + 3])
+
+
+@njit(cache=True)
+def _table_loads(par, qd, uc, psi, rho, f6):
+    """f6 += the current's and the wind's table forces (:func:`_table_force`) on a body moving at ``qd`` (its
+    reference point's velocity, global axes), the current's velocity ``uc[0:2]`` and the wind's ``uc[3:5]`` at the
+    body (global axes)."""
+    f3 = np.empty(3)
+    nc, nw = int(par[B_NCUR]), int(par[B_NWIND])
+    if nc > 0:
+        _table_force(par, B_TAB, nc, uc[0] - qd[0], uc[1] - qd[1], psi, rho, f3)
+        f6[0] += f3[0]
+        f6[1] += f3[1]
+        f6[5] += f3[2]
+    if nw > 0:
+        _table_force(par, B_TAB + 4 * nc, nw, uc[3] - qd[0], uc[4] - qd[1], psi, par[B_RHOAIR], f3)
+        f6[0] += f3[0]
+        f6[1] += f3[1]
+        f6[5] += f3[2]
+
+
+@njit(cache=True)
+def _table_tangent(par, qd, uc, psi, rho, C):
+    """C += -d f6 / d qd of :func:`_table_loads` in the horizontal velocities (central differences; the turning
+    of the tables with the body's yaw left out of the Newton matrix)."""
+    f6 = np.zeros(6)
+    v = np.empty(2)
+    for j in range(2):
+        h = 1e-6 * max(1.0, abs(uc[0] - qd[0]) + abs(uc[1] - qd[1]) + abs(uc[3] - qd[0]) + abs(uc[4] - qd[1]))
+        v[0], v[1] = qd[0], qd[1]
+        f6[:] = 0.0
+        v[j] = qd[j] + h
+        _table_loads(par, v, uc, psi, rho, f6)
+        fx, fy, mz = f6[0], f6[1], f6[5]
+        f6[:] = 0.0
+        v[j] = qd[j] - h
+        _table_loads(par, v, uc, psi, rho, f6)
+        C[0, j] -= (fx - f6[0]) / (2.0 * h)
+        C[1, j] -= (fy - f6[1]) / (2.0 * h)
+        C[5, j] -= (mz - f6[5]) / (2.0 * h)
+
+
+@njit(cache=True)
 def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, g, f6, M6, fr):
     """The body's own forces ``f6`` (weight, buoyancy, hydrostatics, damping, external, and minus the rigid
     body's centripetal and gyroscopic terms; global axes, moments about the reference point) and its mass
     matrix ``M6`` (rigid body about the reference point plus added mass, global axes), at the velocity
     ``u = (v, w)`` (reference point, angular velocity; global axes), so that ``M6 (a, alpha) = f6``. The
-    quadratic damping (drag) acts on the velocity relative to the current ``uc`` (3, global) at the body,
-    the linear damping on the body's own.
+    quadratic damping (drag) and the current's table act on the velocity relative to the current ``uc[0:3]``
+    (global) at the body, the linear damping on the body's own; the wind's table on the wind relative to the
+    body, the wind's velocity (columns 6 and 7 of ``ext_f``, interpolated at ``t``) stored in ``uc[3:5]`` for
+    :func:`body_tangent` (``uc`` has 5 values when the body has a wind table).
 
     The rigid body's inertia forces about the reference point at ``c`` from the CG are ``M6 (a, alpha)`` and
     ``(m w x (w x c), w x (I_r w))``, ``I_r = I_g + m (|c|^2 - c c^T)`` (the moment of ``m c x (w x (w x c))``
@@ -155,12 +235,17 @@ def body_load(q, qd, uc, t, par, khs, add, lin, quad, ext_t, ext_f, ext_n, rho, 
     if ext_n > 0:
         for k in range(6):
             f6[k] += np.interp(t, ext_t[:ext_n], ext_f[:ext_n, k])
+    if par[B_NWIND] > 0.0:  # the wind's velocity at the centre of pressure, for the table (and the tangent)
+        uc[3] = np.interp(t, ext_t[:ext_n], ext_f[:ext_n, 6])
+        uc[4] = np.interp(t, ext_t[:ext_n], ext_f[:ext_n, 7])
+    if par[B_NCUR] > 0.0 or par[B_NWIND] > 0.0:
+        _table_loads(par, qd, uc, math.atan2(R[1, 0], R[0, 0]), rho, f6)
     # damping, in body axes: vb = R6^T qd, vr = R6^T (qd - uc), f6 -= R6 (B1 vb + B2 |vr| vr)
     vb = wk[69:75]
     fb = wk[75:81]
     vr = wk[81:87]
     _mv(R.T, qd[3:], vb[3:])
-    _mv(R.T, qd[:3] - uc, vr[:3])
+    _mv(R.T, qd[:3] - uc[:3], vr[:3])
     vr[3], vr[4], vr[5] = vb[3], vb[4], vb[5]
     _mv(R.T, qd[:3], vb[:3])
     for k in range(6):
@@ -211,13 +296,15 @@ def body_tangent(q, qd, uc, par, khs, lin, quad, rho, g, K, C, fr):
         K[4, 5] -= ky * ay
     # damping: R6 (B1 + 2 B2 |vr|) R6^T, vr relative to the current
     vb = wk[9:15]
-    _mv(R.T, qd[:3] - uc, vb[:3])
+    _mv(R.T, qd[:3] - uc[:3], vb[:3])
     _mv(R.T, qd[3:], vb[3:])
     D = wk[15:51].reshape((6, 6))
     for k in range(6):
         for j in range(6):
             D[k, j] = lin[k, j] + 2.0 * quad[k, j] * abs(vb[j])
     _rot6(R, D, C, np.bool_(False))
+    if par[B_NCUR] > 0.0 or par[B_NWIND] > 0.0:
+        _table_tangent(par, qd, uc, math.atan2(R[1, 0], R[0, 0]), rho, C)
     # the velocity tangent of the gyroscopic and centripetal terms: d(w x I_r w)/dw = skew(w) I_r - skew(I_r w),
     # d(m w x (w x c))/dw = m ((w.c) I + w c^T - 2 c w^T)
     Ir = wk[51:60].reshape((3, 3))

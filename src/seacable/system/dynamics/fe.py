@@ -14,7 +14,9 @@ from ...mooring.motion import rotation_matrix
 from ...mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from ...mooring.outputs import water_of_environment
 from ...mooring.solver import MooringModel, Water
+from ...wind import AIR_DENSITY
 from ..case import SystemDynamicAnalysis
+from ..hydro import area_tables
 from ..model import MooringSystem
 from . import body as DB
 
@@ -268,7 +270,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
             element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None)
     model = MooringModel(net, _water(environment, analysis))
     nb = len(free_bodies)
-    bpar = np.zeros((nb, DB.B_SIZE))
+    tables = {name: area_tables(system.bodies[name]) for name in free_bodies}
+    bpar = np.zeros((nb, DB.B_SIZE + max([t[2].size for t in tables.values()], default=0)))
     bkhs, badd, blin, bquad = (np.zeros((nb, 6, 6)) for _ in range(4))
     series = {}
     if a is not None:
@@ -277,32 +280,44 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     memory = np.zeros((nb, 1, 6, 6))
     step = 0.0
     wind = getattr(environment, "wind", None)
-    wind_damping = {}
-    if a is not None and any(system.bodies[n].hydrodynamics is not None or (wind is not None and system.bodies[n].wind)
-                             for n in free_bodies):
+    winds = {}  # body -> (times, the wind's velocity at its centre of pressure (nt, 2))
+    if a is None:  # statics: the mean wind
+        from ..hydro import body_wind_velocity
+
+        for name in free_bodies:
+            velocity = body_wind_velocity(system.bodies[name], wind)
+            if velocity is not None:
+                winds[name] = (np.zeros(1), velocity)
+    elif any(system.bodies[n].hydrodynamics is not None or (wind is not None and system.bodies[n].wind)
+             for n in free_bodies):
         # bodies with a database: their radiation memory at the run's step and their wave loads as force series;
-        # bodies with wind areas: the wind's force series and its damping
+        # bodies with wind areas: the wind's velocity series at their centre of pressure
         from ...mooring.motion import sea_of
-        from ..hydro import body_wave_loads, body_wind_loads, memory_kernels
+        from ..hydro import body_wave_loads, body_wind_velocity, memory_kernels
 
         step = a.output_interval / max(1, math.ceil(a.output_interval / a.time_step - 1e-9))
         rho, g = model.water.density, model.water.gravity
         memory = memory_kernels(system, free_bodies, rho, g, step)
         times = step * np.arange(math.ceil(a.duration / step) + 2)
         for name in free_bodies:
+            velocity = body_wind_velocity(system.bodies[name], wind, times)
+            if velocity is not None:
+                winds[name] = (times, velocity)
             loads = body_wave_loads(system.bodies[name], name, sea_of(model.water), rho, g, times)
-            blown = body_wind_loads(system.bodies[name], name, wind, times)
-            if blown is not None:
-                loads = blown[0] if loads is None else loads + blown[0]
-                wind_damping[name] = blown[1]
             if loads is None:
                 continue
             if name in series:  # the user's series on the same times, added
                 t_u, f_u = series[name]
                 loads = loads + np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1)
             series[name] = (times, loads)
+    for name, (times, _) in winds.items():  # the wind's times carry the body's force series too
+        if name not in series:
+            series[name] = (times, np.zeros((times.size, 6)))
+        elif series[name][0] is not times:
+            t_u, f_u = series[name]
+            series[name] = (times, np.stack([np.interp(times, t_u, f_u[:, k]) for k in range(6)], axis=1))
     nt = max([len(t) for t, _ in series.values()], default=1)
-    ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 6)), np.zeros(nb, np.int64)
+    ext_t, ext_f, ext_n = np.zeros((nb, nt)), np.zeros((nb, nt, 8)), np.zeros(nb, np.int64)
     for k, name in enumerate(free_bodies):
         b = system.bodies[name]
         bpar[k, DB.B_MASS], bpar[k, DB.B_VOL], bpar[k, DB.B_AWP] = b.mass, b.volume, b.waterplane_area
@@ -313,13 +328,18 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         bpar[k, DB.B_INERT:DB.B_INERT + 3] = b.dynamic_inertia()  # a point mass's free spin: its own inertia
         bpar[k, DB.B_Q0:DB.B_Q0 + 6] = b.position
         bpar[k, DB.B_FEXT:DB.B_FEXT + 6] = b.external_force
+        n_current, n_wind, rows = tables[name]
+        bpar[k, DB.B_NCUR], bpar[k, DB.B_NWIND], bpar[k, DB.B_RHOAIR] = n_current, n_wind, AIR_DENSITY
+        bpar[k, DB.B_TAB:DB.B_TAB + rows.size] = rows
+        if n_wind and name not in winds:
+            bpar[k, DB.B_NWIND] = 0.0  # no wind: its table idle
         bkhs[k], badd[k] = b.matrix("hydrostatic_stiffness"), b.matrix("added_mass")
         blin[k], bquad[k] = b.matrix("linear_damping"), b.matrix("quadratic_damping")
-        if name in wind_damping:  # the wind relative to the body's motion
-            blin[k] += wind_damping[name]
         if name in series:
             t, f = series[name]
-            ext_t[k, :len(t)], ext_f[k, :len(t)], ext_n[k] = t, f, len(t)
+            ext_t[k, :len(t)], ext_f[k, :len(t), :6], ext_n[k] = t, f, len(t)
+        if name in winds:
+            ext_f[k, :len(t), 6:] = winds[name][1]
     spin = np.zeros((nb, 3))
     cur_still = not np.any(model.cur_speed)
     for k, name in enumerate(free_bodies):

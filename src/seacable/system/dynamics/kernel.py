@@ -175,10 +175,10 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     o += 153
     Eb = wk[o:o + 9 * nb].reshape((nb, 3, 3))
     ub = wk[o + 9 * nb:o + 15 * nb].reshape((nb, 6))
-    ucb = wk[o + 15 * nb:o + 18 * nb].reshape((nb, 3))
-    size = wk[o + 18 * nb:o + 19 * nb]
+    ucb = wk[o + 15 * nb:o + 20 * nb].reshape((nb, 5))  # the current (3) and the wind (2) at each body
+    size = wk[o + 20 * nb:o + 21 * nb]
     size[:] = 1.0
-    arms = wk[o + 19 * nb:o + 19 * nb + 3 * con_node.size].reshape((con_node.size, 3))
+    arms = wk[o + 21 * nb:o + 21 * nb + 3 * con_node.size].reshape((con_node.size, 3))
     for j in range(con_node.size):
         b = con_body[j]
         if b >= 0:

@@ -258,7 +258,7 @@ def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> N
         DF.angular_map(q[b], qd[b], E, ed, frame[b])
         w = E @ qd[b, 3:]
         f6, M6 = np.zeros(6), np.zeros((6, 6))
-        uc = np.zeros(3)
+        uc = np.zeros(5)
         DB._body_current(q[b], m.env, m.cur_depth, m.cur_speed, uc)
         DB.body_load(q[b], np.r_[qd[b, :3], w], uc, 0.0, fe.bpar[b], fe.bkhs[b], fe.badd[b], fe.blin[b], fe.bquad[b],
                      fe.ext_t[b], fe.ext_f[b], int(fe.ext_n[b]), m.water.density, m.water.gravity, f6, M6, frame[b])

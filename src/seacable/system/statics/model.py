@@ -150,7 +150,7 @@ class Assembly:
 
 
 def check_environment(env: Environment) -> None:
-    """Refuse what the catenary lines cannot model (current, sloping seabed)."""
+    """Refuse what the catenary lines cannot model (current, sloping seabed, wind)."""
     cur = env.current
     speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
     if any(abs(v) > 0 for v in speeds):
@@ -160,6 +160,12 @@ def check_environment(env: Environment) -> None:
                          "current speed to 0 for the catenary statics, or leave analysis.statics at 'auto' (the "
                          "system analyses then use the finite-element statics: "
                          "seacable.system.statics.fe.fe_equilibrium).")
+    wind = getattr(env, "wind", None)
+    if wind is not None and wind.speed > 0:
+        raise InputError(f"environment.wind: a wind of {wind.speed:g} m/s is not supported by the catenary system "
+                         "statics (its force on a body turns with the body's heading). Suggested fix: leave "
+                         "analysis.statics at 'auto' (the system analyses then use the finite-element statics), or "
+                         "give the wind's force as the body's external_force.")
     if env.seabed.slope != 0:
         raise InputError(f"environment.seabed.slope = {env.seabed.slope:g} rad is not supported by the system "
                          "catenary statics: their seabed is horizontal. Suggested fix: use slope 0, or leave "
