@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._heading import heading_weights
+from ._phasor import phasor_sum
 from .errors import InputError
 
 __all__ = ["AIR_DENSITY", "WindCoefficients", "api_profile", "api_spectrum", "gust_series", "npd_profile",
@@ -108,10 +109,8 @@ def gust_series(spectrum, t, *, seed: int, f_range=(1e-3, 0.5), n_components: in
     amp = np.sqrt(2.0 * np.asarray(spectrum(f), float) * df)
     phase = rng.uniform(0.0, 2.0 * math.pi, n_components)
     t = np.atleast_1d(np.asarray(t, float))
-    out = np.empty(t.size)
-    for k in range(0, t.size, 2048):  # blocks: no (times x components) matrix for a long record
-        out[k:k + 2048] = np.cos(np.multiply.outer(t[k:k + 2048], 2.0 * math.pi * f) + phase) @ amp
-    return out
+    # sum a cos(2 pi f t + phase) = Re sum a e^(-i phase) e^(-i 2 pi f t)
+    return phasor_sum((amp * np.exp(-1j * phase))[:, None], 2.0 * math.pi * f, t)[:, 0].real
 
 
 @dataclass(frozen=True)

@@ -28,6 +28,7 @@ import math
 
 import numpy as np
 
+from .._phasor import phasor_sum
 from ..errors import InputError
 from .database import HydroDatabase
 
@@ -35,7 +36,6 @@ __all__ = ["HEADING_TOLERANCE", "first_order_force", "mean_drift_force", "slow_d
 
 #: How far a component's heading may be from the single heading of a drift table. [rad]
 HEADING_TOLERANCE = math.radians(0.5)
-_BLOCK = 2048  # times per block of the direct sums
 
 
 def _drift(db: HydroDatabase, sea) -> np.ndarray:
@@ -61,21 +61,12 @@ def _times(t) -> np.ndarray:
     return t
 
 
-def _phasor_sum(coef: np.ndarray, omega: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """``sum_j coef[j] e^(-i w_j t)`` for each time (nt, coef.shape[1]), block by block."""
-    out = np.empty((t.size, coef.shape[1]), complex)
-    for lo in range(0, t.size, _BLOCK):
-        wt = np.multiply.outer(t[lo:lo + _BLOCK], omega)
-        out[lo:lo + _BLOCK] = (np.cos(wt) - 1j * np.sin(wt)) @ coef
-    return out
-
-
 def first_order_force(db: HydroDatabase, sea, t) -> np.ndarray:
     """The first-order wave force and moment on the body at times ``t`` [s]: (nt, 6) [N, N m]."""
     t = _times(t)
     x = db.excitation_at(sea.omega, sea.heading)  # (n, 6)
     coef = x * (sea.amplitude * np.exp(1j * sea.phase))[:, None]
-    return _phasor_sum(coef, sea.omega, t).real
+    return phasor_sum(coef, sea.omega, t).real
 
 
 def mean_drift_force(db: HydroDatabase, sea) -> np.ndarray:
@@ -90,7 +81,7 @@ def slow_drift_force(db: HydroDatabase, sea, t) -> np.ndarray:
     d = _drift(db, sea)
     phasor = (sea.amplitude * np.exp(1j * sea.phase))[:, None]
     # both signs in one sum: the columns of the positive parts, then those of the negative parts
-    both = _phasor_sum(phasor * np.sqrt(np.concatenate([np.maximum(d, 0.0), np.maximum(-d, 0.0)], axis=1)),
+    both = phasor_sum(phasor * np.sqrt(np.concatenate([np.maximum(d, 0.0), np.maximum(-d, 0.0)], axis=1)),
                        sea.omega, t)
     power = both.real ** 2 + both.imag ** 2
     return power[:, :6] - power[:, 6:]
