@@ -100,6 +100,11 @@ def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path, hull_case
     # the centre of gravity 20 m above the water line: roll and pitch restoring -1.9e9 N m/rad, the ropes 6e6
     ({"body": {"center_of_gravity": [0.0, 0.0, 20.0]}},
      r"bodies.hull: the hydrostatic stiffness in roll is -1.868e\+09 N m/rad \(unstable.*so the body capsizes"),
+    # a body without its own mass properties: the database holds the water's inertia only
+    ({"body": {"volume": 0.0}}, r"bodies.hull: a body with hydrodynamics needs its displaced volume"),
+    ({"body": {"inertia": [0.0, 0.0, 0.0]}},
+     r"bodies.hull: a free body with hydrodynamics needs its mass \(kg\) and its three moments of inertia.*got mass "
+     r"2.07117e\+07 kg and inertia \[0.0, 0.0, 0.0\] kg m\^2"),
     # a sea beyond the database's excitation (the extract stops at 1.45 rad/s)
     ({"waves": {"spectrum": "jonswap", "hs": 4.0, "tp": 10.0, "frequency_range": [0.3, 2.0]}},
      (r"bodies.hull.hydrodynamics: .*wave excitation is asked for at .* rad/s, outside its frequencies 0.05-1.45 "
@@ -108,6 +113,5 @@ def test_a_body_with_both_a_database_and_matrices_is_refused(tmp_path, hull_case
 def test_a_floating_body_that_cannot_run_is_refused_before_the_time_loop(tmp_path, hull_case, changes, message):
     """One clear message each, from validate as from run (both prepare the run: tests/unit/test_check_run_parity.py)."""
     waves = changes.pop("waves", WAVES)
-    case = sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, analysis={"duration": 10.0}, **changes))
-    with pytest.raises(InputError, match=message):
-        sc.check(case)
+    with pytest.raises(InputError, match=message):  # when the case is read, or when its run is prepared
+        sc.check(sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, analysis={"duration": 10.0}, **changes)))

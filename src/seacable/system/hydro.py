@@ -76,6 +76,12 @@ def resolve_bodies(system: MooringSystem, rho: float, g: float) -> MooringSystem
         if b.volume <= 0:
             raise InputError(f"bodies.{name}: a body with hydrodynamics needs its displaced volume (volume, m^3: "
                              "WAMIT's, HydroDyn's PtfmVol0); the database's hydrostatics hold only the restoring.")
+        if b.kind == "free" and (b.mass <= 0 or min(b.inertia) <= 0):
+            raise InputError(f"bodies.{name}: a free body with hydrodynamics needs its mass (kg) and its three moments "
+                             f"of inertia about the centre of gravity (kg m^2), got mass {b.mass:g} kg and inertia "
+                             f"{list(b.inertia)} kg m^2: the database holds the water's inertia, not the body's. "
+                             "Suggested fix: give the platform's (and turbine's) mass and inertia, as ElastoDyn's "
+                             "PtfmMass and PtfmRIner, PtfmPIner, PtfmYIner.")
         bodies[name] = b.model_copy(update={"hydrostatic_stiffness": tuple(map(tuple, stiffness)),
                                             "added_mass": tuple(map(tuple, db.added_mass_inf))})
     return MooringSystem(points=system.points, bodies=bodies, lines=system.lines)
