@@ -200,3 +200,32 @@ def test_a_qtf_that_is_not_hermitian_is_refused(db):
     with pytest.raises(InputError, match="must be Hermitian"):
         HydroDatabase(omega=db.omega, added_mass=db.added_mass, damping=db.damping, added_mass_inf=db.added_mass_inf,
                       hydrostatics=db.hydrostatics, qtf_omega=db.qtf_omega, qtf_heading=db.qtf_heading, qtf=q)
+
+
+def test_the_frequency_domain_slow_drift_variance_takes_the_full_qtf(db):
+    """``slow_drift_variance(drift="qtf")``: with a QTF that is Newman's matrix (sign-split sqrt(D_i D_j), on the
+    grid's frequencies) it is Newman's variance to round-off; with the VolturnUS-S QTF and a body held by a
+    stiffness of 1e16 (x = F / K to 1e-7: mu^2 (M + A) / K < 1e-7) it is the time-domain variance of
+    :func:`qtf_drift_force` over K^2, exactly so for a sea whose difference frequencies are distinct multiples of
+    0.01 rad/s over 2 pi / 0.01 s (each pair's term its own variance, 2 a_i^2 a_j^2 |T_ij|^2)."""
+    from seacable.hydro.response import slow_drift_variance
+
+    mass, stiffness, damping = np.diag([2e7] * 3 + [1e10] * 3), 1e16 * np.eye(6), np.diag([1e5] * 3 + [1e8] * 3)
+    d = db.drift[0]
+    plus, minus = np.sqrt(np.maximum(d, 0.0)), np.sqrt(np.maximum(-d, 0.0))
+    newman_qtf = (plus[:, None, :] * plus[None, :, :] - minus[:, None, :] * minus[None, :, :])[None] + 0j
+    shaped = HydroDatabase(omega=db.omega, added_mass=db.added_mass, damping=db.damping,
+                           added_mass_inf=db.added_mass_inf, hydrostatics=db.hydrostatics, drift_omega=db.drift_omega,
+                           drift_heading=db.drift_heading, drift=db.drift, qtf_omega=db.qtf_omega,
+                           qtf_heading=db.qtf_heading, qtf=newman_qtf)
+    on_grid = _sea([1.0, 0.7, 1.2, 0.5], db.qtf_omega[[2, 5, 6, 10]], [0.0, 1.0, 2.0, 3.0])
+    np.testing.assert_allclose(slow_drift_variance(shaped, on_grid, mass, stiffness, damping, drift="qtf"),
+                               slow_drift_variance(shaped, on_grid, mass, stiffness, damping), rtol=1e-12)
+    w = np.array([0.40, 0.41, 0.43, 0.47, 0.52, 0.60])  # differences 0.01 to 0.20, all distinct
+    sea = _sea([1.0, 1.4, 0.8, 1.1, 0.9, 1.3], w, [0.3, 1.1, 2.9, 4.0, 5.2, 0.7])
+    t = np.linspace(0.0, 2 * math.pi / 0.01, 400, endpoint=False)
+    force = qtf_drift_force(db, sea, t)
+    var = slow_drift_variance(db, sea, mass, stiffness, damping, drift="qtf")
+    np.testing.assert_allclose(var[[0, 2, 4]], force.var(axis=0)[[0, 2, 4]] / 1e32, rtol=1e-6)
+    with pytest.raises(InputError, match="drift must be 'newman' or 'qtf'"):
+        slow_drift_variance(db, sea, mass, stiffness, damping, drift="full")
