@@ -25,7 +25,7 @@ import pytest
 cpt = pytest.importorskip("capytaine")
 xr = pytest.importorskip("xarray")
 
-from seacable.hydro import read_capytaine  # noqa: E402
+from seacable.hydro import read_capytaine
 
 R, RHO, G = 2.0, 1025.0, 9.81
 MASS = RHO * 2 / 3 * math.pi * R ** 3  # the displaced mass, Hulme's unit of added mass

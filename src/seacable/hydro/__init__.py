@@ -8,8 +8,8 @@
 - ``radiation``: Cummins' retardation kernel and Ogilvie's relations back to the frequency domain.
 """
 
-from .cummins import CumminsMotion, frequency_response, simulate_cummins
 from .capytaine import read_capytaine
+from .cummins import CumminsMotion, frequency_response, simulate_cummins
 from .database import HydroDatabase
 from .radiation import kernel_check, linear_transforms, ogilvie, retardation_kernel
 from .wamit import read_wamit

@@ -68,7 +68,7 @@ def _check_qtf(heading, omega, qtf, src: str) -> None:
     gap = np.abs(q - np.conj(np.swapaxes(q, 1, 2)))
     scale = np.abs(q).max(axis=(0, 1, 2))
     if np.any(gap > 1e-9 * scale + 1e-300):
-        h, i, j, k = np.unravel_index(int(np.argmax(gap / (scale + 1e-300))), gap.shape)
+        _, i, j, k = np.unravel_index(int(np.argmax(gap / (scale + 1e-300))), gap.shape)
         raise InputError(f"{src}: the difference-frequency QTF must be Hermitian, qtf(w2, w1) = conj(qtf(w1, w2)); "
                          f"DOF {k + 1} at {w[i]:.4g} and {w[j]:.4g} rad/s is not. Suggested fix: fill one triangle "
                          "from the other by conjugation.")

@@ -142,7 +142,7 @@ def test_newmans_approximation_against_the_full_qtf_near_the_diagonal(db):
     s = jonswap(x, 8.0, 12.0)
     ratios = []
     for mu in (0.0, 2 * math.pi / 142.0, 0.1):
-        k = int(round(mu / dw))
+        k = round(mu / dw)
         i = np.arange(x.size - k)
         full = np.sum(s[i] * s[i + k] * np.abs(t[i + k, i, 0]) ** 2)
         dp, dm = np.maximum(d[:, 0], 0), np.maximum(-d[:, 0], 0)
