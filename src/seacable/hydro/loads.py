@@ -177,7 +177,8 @@ def qtf_drift_force(db: HydroDatabase, sea, t) -> np.ndarray:
     ``T_ii`` by a constant, ``a_i^2 (D_i - T_ii)``, added. Cost: ``nt n r`` complex products for the ``r <= 6 nf``
     eigenvectors (against ``6 nt n^2`` for the double sum, ``2 nt n`` for Newman's two terms), taken in blocks of
     times: for 200 components on the VolturnUS-S QTF (27 grid frequencies in a 0.3-1.6 rad/s sea) ``r = 162``,
-    and a 3-hour record at 0.1 s took 4.9 s of CPU as a whole process against Newman's 3.6 s (medians of 3).
+    and a 3-hour record at 0.1 s took 2.6 s of CPU as a whole process against Newman's 1.1 s (medians of 5; about
+    0.9 s of each is the imports and the database).
 
     Parameters
     ----------
