@@ -14,7 +14,12 @@ up; DOFs surge, sway, heave, roll, pitch, yaw, :data:`seacable.raos.DOFS`):
   gravity was given: :func:`seacable.hydro.wamit.read_wamit` says which);
 - ``drift[h, f]`` (6,) the mean wave drift force per square metre of wave amplitude [N/m^2, N m/m^2] at
   ``drift_heading[h]`` and ``drift_omega[f]``: a regular wave of amplitude ``a`` pushes the body by
-  ``drift a^2`` on average.
+  ``drift a^2`` on average;
+- ``qtf[h, f1, f2]`` (6,) complex, the full difference-frequency quadratic transfer function [N/m^2, N m/m^2] at
+  ``qtf_heading[h]`` (both waves along it) and the frequencies ``qtf_omega[f1]``, ``qtf_omega[f2]``, in seacable's
+  convention: the waves ``sum_j a_j cos(w_j t - p_j)`` at the reference point (phasors ``c_j = a_j e^(i p_j)``)
+  exert ``F(t) = Re sum_i sum_j c_i conj(c_j) qtf(w_i, w_j) e^(-i (w_i - w_j) t)``, the double sum over every
+  ordered pair, so that ``qtf(w2, w1) = conj(qtf(w1, w2))`` (Hermitian) and its diagonal is the mean drift.
 """
 
 from __future__ import annotations
@@ -45,6 +50,30 @@ def _check_headings(heading: np.ndarray, what: str, source: str) -> None:
                          "headings (-180 and 180 deg are the same).")
 
 
+def _check_qtf(heading, omega, qtf, src: str) -> None:
+    """The difference-frequency QTF: all three given or none, each heading and frequency once, the shape (headings,
+    frequencies, frequencies, 6), finite and Hermitian in its two frequencies."""
+    if qtf is None and heading is None and omega is None:
+        return
+    if qtf is None or heading is None or omega is None:
+        raise InputError(f"{src}: the difference-frequency QTF needs its headings and frequencies, and they need it.")
+    b, w, q = (np.asarray(a) for a in (heading, omega, qtf))
+    _check_headings(b, "QTF", src)
+    _check_frequencies(w, "QTF", src)
+    if q.shape != (b.size, w.size, w.size, 6):
+        raise InputError(f"{src}: the QTF must have the shape ({b.size} headings, {w.size} x {w.size} frequencies, "
+                         f"6 DOFs), got {q.shape}. Suggested fix: give every DOF at every pair of frequencies.")
+    if not np.all(np.isfinite(q)):
+        raise InputError(f"{src}: the QTF holds a NaN or an infinity. Suggested fix: check the source file.")
+    gap = np.abs(q - np.conj(np.swapaxes(q, 1, 2)))
+    scale = np.abs(q).max(axis=(0, 1, 2))
+    if np.any(gap > 1e-9 * scale + 1e-300):
+        _, i, j, k = np.unravel_index(int(np.argmax(gap / (scale + 1e-300))), gap.shape)
+        raise InputError(f"{src}: the difference-frequency QTF must be Hermitian, qtf(w2, w1) = conj(qtf(w1, w2)); "
+                         f"DOF {k + 1} at {w[i]:.4g} and {w[j]:.4g} rad/s is not. Suggested fix: fill one triangle "
+                         "from the other by conjugation.")
+
+
 def _check_table(heading, omega, values, what: str, src: str) -> None:
     """A table by heading and frequency: all three given or none, each heading and frequency once, and the
     shape (headings, frequencies, 6 DOFs)."""
@@ -65,7 +94,9 @@ class HydroDatabase:
     """A body's linear hydrodynamic coefficients (module docstring for the units and conventions).
 
     ``excitation`` and ``drift`` may be left out (None) for a body that is only radiated or only excited;
-    ``added_mass_zero`` is None when the source has no zero-frequency limit. ``reference`` is the point the
+    ``added_mass_zero`` is None when the source has no zero-frequency limit; ``qtf`` (the full difference-frequency
+    QTF) is None when the source has only the mean drift; ``inertia`` is the body's mass matrix (6, 6) [kg, kg m,
+    kg m^2] about the reference point where the source gives it (Capytaine's ``inertia_matrix``), else None. ``reference`` is the point the
     coefficients are about, in the body's axes [m]; ``rho`` [kg/m^3] and ``g`` [m/s^2] are those the
     dimensional values were made with.
     """
@@ -82,6 +113,10 @@ class HydroDatabase:
     drift_omega: np.ndarray | None = None
     drift_heading: np.ndarray | None = None
     drift: np.ndarray | None = None
+    qtf_omega: np.ndarray | None = None
+    qtf_heading: np.ndarray | None = None
+    qtf: np.ndarray | None = None
+    inertia: np.ndarray | None = None
     reference: np.ndarray = field(default_factory=lambda: np.zeros(3))
     rho: float = 1025.0
     g: float = 9.80665
@@ -101,6 +136,10 @@ class HydroDatabase:
                 raise InputError(f"{src}: {name} holds a NaN or an infinity. Suggested fix: check the source file.")
         _check_table(self.heading, self.excitation_omega, self.excitation, "excitation", src)
         _check_table(self.drift_heading, self.drift_omega, self.drift, "mean drift", src)
+        _check_qtf(self.qtf_heading, self.qtf_omega, self.qtf, src)
+        if self.inertia is not None and (np.shape(self.inertia) != (6, 6) or not np.all(np.isfinite(self.inertia))):
+            raise InputError(f"{src}: the inertia (mass matrix) must be a finite 6 x 6 matrix, got the shape "
+                             f"{np.shape(self.inertia)}.")
         if not (self.rho > 0 and self.g > 0):
             raise InputError(f"{src}: rho = {self.rho} kg/m^3 and g = {self.g} m/s^2 must be > 0.")
 

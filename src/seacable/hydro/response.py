@@ -15,7 +15,10 @@ response's variance in a sea of components is
     var x_m = 1/2 sum_{i<j} |(H_LF(mu_ij) c_ij)_m|^2                                              (:func:`slow_drift_variance`)
 
 Pinkster's force spectrum through the transfer function, summed over the sea's own components rather than
-integrated, so that a time-domain run of the same sea is compared with its own expectation.
+integrated, so that a time-domain run of the same sea is compared with its own expectation. With the full
+difference-frequency QTF ``T`` (``drift="qtf"``, :func:`seacable.hydro.loads.qtf_drift_force`) the pair's force
+is ``Re(2 c_i conj(c_j) T_ij e^(-i mu_ij t))`` for ``w_i > w_j``, so ``c_ij = 2 a_i a_j T(w_i, w_j)`` (complex: the
+DOFs' relative phases kept), ``c_i = a_i e^(i p_i)`` contributing a phase common to the DOFs.
 """
 
 from __future__ import annotations
@@ -27,7 +30,7 @@ import numpy as np
 from ..errors import InputError
 from ..raos import RAOTable
 from .database import HydroDatabase
-from .loads import _drift
+from .loads import _drift, _long_crested, qtf_at
 
 __all__ = ["coefficients_at", "natural_periods", "raos", "slow_drift_variance"]
 
@@ -87,16 +90,24 @@ def raos(db: HydroDatabase, mass, stiffness, damping=None) -> RAOTable:
                     source=f"RAOs of {db.source}")
 
 
-def slow_drift_variance(db: HydroDatabase, sea, mass, stiffness, damping=None) -> np.ndarray:
-    """The variance (6,) [m^2, rad^2] of the body's slow-drift response to Newman's slow drift in ``sea`` (module
-    docstring), about its mean offset."""
+def slow_drift_variance(db: HydroDatabase, sea, mass, stiffness, damping=None, *, drift: str = "newman") -> np.ndarray:
+    """The variance (6,) [m^2, rad^2] of the body's slow-drift response in ``sea`` (module docstring), about its
+    mean offset: to Newman's slow drift (``drift="newman"``) or to the full difference-frequency QTF's
+    (``drift="qtf"``, a long-crested sea along one of its headings)."""
     mass, stiffness, damping = _check(mass, stiffness, damping)
-    d = _drift(db, sea)
     a = np.asarray(sea.amplitude, float)
     w = np.asarray(sea.omega, float)
-    plus, minus = np.sqrt(np.maximum(d, 0.0)), np.sqrt(np.maximum(-d, 0.0))
     i, j = np.triu_indices(w.size, 1)
-    c = 2.0 * (a[i] * a[j])[:, None] * (plus[i] * plus[j] - minus[i] * minus[j])  # (pairs, 6)
+    if drift == "newman":
+        d = _drift(db, sea)
+        plus, minus = np.sqrt(np.maximum(d, 0.0)), np.sqrt(np.maximum(-d, 0.0))
+        c = 2.0 * (a[i] * a[j])[:, None] * (plus[i] * plus[j] - minus[i] * minus[j])  # (pairs, 6)
+    elif drift == "qtf":
+        t = qtf_at(db, w, _long_crested(db, sea))
+        hi, lo = np.where(w[i] > w[j], i, j), np.where(w[i] > w[j], j, i)
+        c = 2.0 * (a[i] * a[j])[:, None] * t[hi, lo]  # (pairs, 6) complex
+    else:
+        raise InputError(f"drift must be 'newman' or 'qtf', got {drift!r}.")
     mu = np.abs(w[i] - w[j])
     if mu.size and mu.min() <= 0:
         raise InputError("two components of the sea have one frequency: their difference frequency is zero.")

@@ -19,7 +19,9 @@ without damping. Headings ``BETA`` [deg] are the direction the waves travel towa
 is a lead on the incident elevation at the origin with ``e^(i w t)``, so seacable's complex amplitude
 (``e^(-i w t)``, :mod:`seacable.raos`) is the conjugate of WAMIT's ``Re + i Im``. A heading given twice (-180
 and 180 deg) is kept once. The mean drift is taken from the first of ``.12d`` (its diagonal ``PER1 = PER2``,
-``BETA1 = BETA2``), ``.9`` (pressure integration) and ``.8`` (momentum) that exists, or as ``drift=``.
+``BETA1 = BETA2``), ``.9`` (pressure integration) and ``.8`` (momentum) that exists, or as ``drift=``. A
+``.12d`` file with pairs of different periods also gives the full difference-frequency QTF (``qtf``: its
+conjugate, the other triangle filled by symmetry, the pairs of one heading only; :func:`_read_qtf`).
 
 A missing DOF pair of ``.1`` or ``.hst`` is zero (WAMIT leaves out the negligible ones); a missing DOF of
 ``.3`` at a heading and frequency is refused, as are frequencies that differ between the DOFs.
@@ -164,10 +166,12 @@ def _read_hydrostatics(path: Path, rho: float, g: float, ulen: float) -> np.ndar
 
 
 def _read_drift(path: Path, rho: float, g: float, ulen: float):
-    """The mean drift of a .8/.9 file (``BETA1 = BETA2``) or the diagonal of a .12d file."""
+    """The mean drift of a .8/.9 file (``BETA1 = BETA2``) or the diagonal of a .12d file; for a .12d file with
+    pairs off its diagonal also the full difference-frequency QTF (:func:`_read_qtf`), else None."""
     qtf = path.suffix == ".12d"
     data = _table(path, 9 if qtf else 8, "mean drift")
     col = 1 if qtf else 0  # the heading columns start after one or two periods
+    full = _read_qtf(data, path, rho, g, ulen) if qtf else None
     if qtf:
         data = data[(data[:, 0] == data[:, 1]) & (data[:, 0] > 0)]
     data = data[(data[:, col + 1] == data[:, col + 2]) & (data[:, 0] > 0)]
@@ -182,7 +186,53 @@ def _read_drift(path: Path, rho: float, g: float, ulen: float):
     # the mean of a second-order force is real: WAMIT's Re column (its Im is round-off on the diagonal)
     d[hidx, widx, dof] = data[:, col + 6] * rho * g * ulen ** _length_power(dof, base=1)
     order = np.argsort(heading)
-    return heading[order], omega, d[order]
+    return heading[order], omega, d[order], full
+
+
+def _read_qtf(data: np.ndarray, path: Path, rho: float, g: float, ulen: float):
+    """The full difference-frequency QTF of a .12d file's lines ``PER1 PER2 BETA1 BETA2 I |F| phase Re Im``:
+    ``(heading, omega, qtf)`` with ``qtf[h, i, j]`` at ``omega[i]``, ``omega[j]`` (module docstring of
+    :mod:`seacable.hydro.database`), or None when the file holds its diagonal only.
+
+    WAMIT's ``F(w1, w2)`` multiplies ``A1 conj(A2) e^(i (w1 - w2) t)`` with its ``e^(i w t)`` amplitudes ``A``;
+    seacable's ``qtf(w1, w2)`` is its conjugate. WAMIT writes one triangle (``PER1 <= PER2``); the other is
+    filled by ``qtf(w2, w1) = conj(qtf(w1, w2))``, a pair given both ways is checked against it. Only the pairs of
+    one heading (``BETA1 = BETA2``) are kept; the diagonal is real (WAMIT's Im there is round-off). A DOF the file
+    leaves out is zero; a pair of frequencies missing for a DOF it gives is refused."""
+    data = data[(data[:, 0] > 0) & (data[:, 1] > 0) & (data[:, 2] == data[:, 3])]
+    if not np.any(data[:, 0] != data[:, 1]):
+        return None
+    (dof,) = _dofs(data, (4,), path)
+    heading, hidx = _heading_grid(data[:, 2])
+    omega = np.sort(2 * math.pi / np.unique(data[:, :2]))
+    i = np.searchsorted(omega, 2 * math.pi / data[:, 0])
+    j = np.searchsorted(omega, 2 * math.pi / data[:, 1])
+    value = (data[:, 7] - 1j * np.where(i == j, 0.0, data[:, 8])) * rho * g * ulen ** _length_power(dof, base=1)
+    q = np.full((heading.size, omega.size, omega.size, 6), np.nan + 0j)
+    q[hidx, i, j, dof] = value
+    mirrored = np.full_like(q, np.nan)
+    mirrored[hidx, j, i, dof] = np.conj(value)
+    both = ~np.isnan(q.real) & ~np.isnan(mirrored.real)
+    scale = np.abs(np.nan_to_num(q, nan=0.0)).max(axis=(0, 1, 2))
+    gap = np.where(both, np.abs(q - mirrored), 0.0) / np.where(scale > 0, scale, 1.0)
+    if np.any(gap > 1e-3):  # WAMIT prints 6 significant digits
+        h, a, b, k = np.unravel_index(int(np.argmax(gap)), gap.shape)
+        raise InputError(f"WAMIT file '{path}': the QTF of DOF {k + 1} at the periods {2 * math.pi / omega[a]:.6g} s and "
+                         f"{2 * math.pi / omega[b]:.6g} s, given both ways, is not conjugate-symmetric. Suggested fix: "
+                         "give the unchanged .12d output (WAMIT's difference-frequency QTF).")
+    q = np.where(np.isnan(q.real), mirrored, np.where(both, 0.5 * (q + mirrored), q))
+    present = np.zeros(6, bool)
+    present[dof] = True
+    missing = np.argwhere(np.isnan(q.real) & present)
+    if missing.size:
+        h, a, b, k = missing[0]
+        raise InputError(f"WAMIT file '{path}' has the difference-frequency QTF off its diagonal but not of DOF {k + 1} "
+                         f"at the periods {2 * math.pi / omega[a]:.6g} s and {2 * math.pi / omega[b]:.6g} s, heading "
+                         f"{math.degrees(heading[h]):g} deg ({len(missing)} such gaps). Suggested fix: give the whole "
+                         "triangle of periods WAMIT writes, or only its diagonal for the mean drift.")
+    q = np.nan_to_num(q, nan=0.0)
+    order = np.argsort(heading)
+    return heading[order], omega, q[order]
 
 
 def read_wamit(root, *, ulen: float = 1.0, rho: float = 1025.0, g: float = 9.80665, drift=None,
@@ -228,8 +278,10 @@ def read_wamit(root, *, ulen: float = 1.0, rho: float = 1025.0, g: float = 9.806
         if drift_path.suffix not in _DRIFT_FILES:
             raise InputError(f"WAMIT mean drift file '{drift_path}' is not a .8, .9 or .12d file. Suggested fix: give "
                              "one of those.")
-        dh, dw, d = _read_drift(drift_path, rho, g, ulen)
+        dh, dw, d, full = _read_drift(drift_path, rho, g, ulen)
         kwargs.update(drift_heading=dh, drift_omega=dw, drift=d)
+        if full is not None:
+            kwargs.update(qtf_heading=full[0], qtf_omega=full[1], qtf=full[2])
     return HydroDatabase(omega=omega, added_mass=a, damping=b, added_mass_inf=a_inf, added_mass_zero=a_zero,
                          hydrostatics=_read_hydrostatics(files[".hst"], rho, g, ulen),
                          reference=np.asarray(reference, float), rho=rho, g=g, source=f"WAMIT files '{root}'",

@@ -5,9 +5,9 @@ dynamics, and what the coupled time loop adds (radiation memory, wave loads).
 the database's hydrostatic stiffness, with the weight's moment added unless the database holds it, and its
 infinite-frequency added mass, so that the statics and the dynamics use them as a user's matrices.
 :func:`body_wave_loads` and :func:`memory_kernels` are the time loop's: the first-order force of the case's sea
-at the body's position and its mean or slow drift, as a force series; the retardation kernels at the run's step.
-:func:`body_wind_velocity` and :func:`area_tables`: the wind at a body and its wind and current tables, whose
-forces the coupled step takes with the relative velocity.
+at the body's position and its mean or slow drift (Newman's, or the full QTF's), as a force series; the retardation
+kernels at the run's step. :func:`body_wind_velocity` and :func:`area_tables`: the wind at a body and its wind and
+current tables, whose forces the coupled step takes with the relative velocity.
 """
 
 from __future__ import annotations
@@ -30,22 +30,43 @@ MEMORY_TAIL = 0.02
 
 
 @functools.lru_cache(maxsize=8)
-def _read(root: str, stamp: tuple, ulen: float, rho: float, g: float):
+def _read(root: str, stamp: tuple, fmt: str, ulen: float, rho: float, g: float):
+    if fmt == "capytaine":
+        from ..hydro import read_capytaine
+
+        return read_capytaine(root)
     from ..hydro import read_wamit
 
     return read_wamit(root, ulen=ulen, rho=rho, g=g)
 
 
 def database(body: Body, rho: float, g: float):
-    """The :class:`~seacable.hydro.HydroDatabase` of a body's ``hydrodynamics`` (read once per version of its files)."""
+    """The :class:`~seacable.hydro.HydroDatabase` of a body's ``hydrodynamics`` (read once per version of its files):
+    WAMIT's files made dimensional with the case's ``rho`` and ``g``, or a Capytaine dataset (dimensional already:
+    its ``rho`` and ``g`` must be the case's)."""
     h = body.hydrodynamics
+    fmt = h.database_format
     root = Path(h.file)
+    if fmt == "capytaine":
+        if not root.is_file():
+            raise InputError(f"hydrodynamics.file: Capytaine dataset '{root}' does not exist. Suggested fix: give the "
+                             "NetCDF file Capytaine's save_dataset_as_netcdf wrote, relative to the case file.")
+        st = root.stat()
+        db = _read(str(root.resolve()), (st.st_mtime_ns, st.st_size), fmt, 1.0, 0.0, 0.0)
+        for name, case, data in (("water density", rho, db.rho), ("gravity", g, db.g)):
+            if abs(case - data) > 1e-6 * case:
+                raise InputError(f"hydrodynamics.file: Capytaine dataset '{root}' was solved with the {name} {data:g} "
+                                 f"and the case has {case:g} (SI): its dimensional coefficients would not be the "
+                                 f"case's. Suggested fix: solve with the case's environment, or set its {name} to "
+                                 f"{data:g}.")
+        return db
     one = Path(f"{root}.1")
     if not one.is_file():
         raise InputError(f"hydrodynamics.file: WAMIT file '{one}' does not exist. Suggested fix: give the root of "
-                         "the WAMIT files (the path without '.1', '.3', '.hst') relative to the case file.")
+                         "the WAMIT files (the path without '.1', '.3', '.hst') relative to the case file, or a "
+                         "Capytaine dataset ending in .nc.")
     st = one.stat()
-    return _read(str(root.resolve()), (st.st_mtime_ns, st.st_size), float(h.ulen), float(rho), float(g))
+    return _read(str(root.resolve()), (st.st_mtime_ns, st.st_size), fmt, float(h.ulen), float(rho), float(g))
 
 
 def weight_stiffness(body: Body, g: float) -> np.ndarray:
@@ -71,7 +92,7 @@ def resolve_bodies(system: MooringSystem, rho: float, g: float) -> MooringSystem
             continue
         db = database(b, rho, g)
         stiffness = db.hydrostatics.copy()
-        if not b.hydrodynamics.weight_in_hydrostatics:
+        if not b.hydrodynamics.weight_included:
             stiffness += weight_stiffness(b, g)
         if b.volume <= 0:
             raise InputError(f"bodies.{name}: a body with hydrodynamics needs its displaced volume (volume, m^3: "
@@ -122,7 +143,7 @@ def body_wave_loads(body: Body, name: str, sea, rho: float, g: float, t: np.ndar
     h = body.hydrodynamics
     if h is None or sea is None or (not h.excitation and h.drift == "none"):
         return None
-    from ..hydro.loads import first_order_force, mean_drift_force, slow_drift_force
+    from ..hydro.loads import first_order_force, mean_drift_force, qtf_drift_force, slow_drift_force
 
     db = database(body, rho, g)
     if abs(body.position[5]) > 1e-12 or abs(body.position[3]) > 1e-12 or abs(body.position[4]) > 1e-12:
@@ -138,6 +159,8 @@ def body_wave_loads(body: Body, name: str, sea, rho: float, g: float, t: np.ndar
             oscillating += first_order_force(db, local, t)
         if h.drift == "newman":
             oscillating += slow_drift_force(db, local, t) - mean
+        elif h.drift == "qtf":
+            oscillating += qtf_drift_force(db, local, t) - mean
     except InputError as err:
         raise InputError(f"bodies.{name}.hydrodynamics: {err}") from None
     # the mean from the start (the static start's load), the rest from zero at t = 0 through the ramp

@@ -95,28 +95,58 @@ class SystemPoint(Model):
 class BodyHydrodynamics(Model):
     """A body's hydrodynamic database and what the dynamics take from it (issue 39, :mod:`seacable.hydro`).
 
-    The database (WAMIT's files ``FILE.1``, ``.hst``, and ``.3`` and a mean drift file when the run has waves)
-    gives the body its hydrostatic stiffness and infinite-frequency added mass (instead of ``waterplane_*``,
-    ``hydrostatic_stiffness`` and ``added_mass``), and in ``system_dynamic`` its radiation memory (Cummins), the
-    first-order wave force in the case's waves and the mean or slow drift (Newman). The coefficients are about
-    the body's reference point, in its axes; WAMIT's hydrostatics hold the waterplane and the buoyancy's moment,
-    and the weight's moment only when the WAMIT run had the body's centre of gravity (``weight_in_hydrostatics``;
-    otherwise it is added from ``mass`` and ``center_of_gravity``, as OpenFAST does).
+    The database (WAMIT's files ``FILE.1``, ``.hst``, and ``.3`` and a mean drift file when the run has waves, or
+    a Capytaine dataset ``FILE.nc``) gives the body its hydrostatic stiffness and infinite-frequency added mass
+    (instead of ``waterplane_*``, ``hydrostatic_stiffness`` and ``added_mass``), and in ``system_dynamic`` its
+    radiation memory (Cummins), the first-order wave force in the case's waves and the mean or slow drift (Newman,
+    or the full difference-frequency QTF of WAMIT's ``.12d``). The coefficients are about the body's reference
+    point, in its axes. WAMIT's hydrostatics hold the waterplane and the buoyancy's moment, and the weight's moment
+    only when the WAMIT run had the body's centre of gravity; Capytaine's hold the weight's moment from its centre
+    of mass (``weight_in_hydrostatics``: by default false for WAMIT, true for Capytaine; when false the moment is
+    added from ``mass`` and ``center_of_gravity``, as OpenFAST does).
     """
 
-    file: str = Field(description="WAMIT output's root: the path without '.1', '.3', '.hst', relative to the case "
-                                  "file.")
+    file: str = Field(description="WAMIT output's root (the path without '.1', '.3', '.hst') or a Capytaine NetCDF "
+                                  "dataset (.nc), relative to the case file.")
+    format: Literal["wamit", "capytaine"] | None = Field(
+        None, description="The database's format: wamit or capytaine; by default capytaine for a file ending in .nc, "
+                          "else wamit.")
     ulen: quantity("m", gt=0, fix="give WAMIT's length scale ULEN in metres (HydroDyn's WAMITULEN).") = Field(
         1.0, description="WAMIT's length scale ULEN. [m]")
     kernel_length: quantity("s", gt=0) = Field(60.0, description="Length of the radiation memory kept. [s]")
-    weight_in_hydrostatics: bool = Field(False, description="The .hst already holds the weight's moment.")
+    weight_in_hydrostatics: bool | None = Field(
+        None, description="The database's hydrostatics already hold the weight's moment (default: false for WAMIT, "
+                          "true for Capytaine).")
     excitation: bool = Field(True, description="First-order wave force from the database in the case's waves.")
-    drift: Literal["none", "mean", "newman"] = Field(
-        "newman", description="Second-order drift: none, the mean drift, or the mean and slow drift by Newman's "
-                              "approximation (needs a .12d, .9 or .8 file).")
+    drift: Literal["none", "mean", "newman", "qtf"] = Field(
+        "newman", description="Second-order drift: none, the mean drift, the mean and slow drift by Newman's "
+                              "approximation (needs a .12d, .9 or .8 file), or by the full difference-frequency "
+                              "QTF (needs a .12d file with its pairs of periods; a long-crested sea).")
     ramp: quantity("s", ge=0) = Field(
         0.0, description="Smooth start of the oscillating wave loads (half cosine); the mean drift is there from t = 0, "
                          "where the static start puts the body. With 0 they start at t = 0 from zero. [s]")
+
+    @property
+    def database_format(self) -> str:
+        """``format``, or the format of ``file`` by its extension (``.nc``: capytaine, else wamit)."""
+        if self.format is not None:
+            return self.format
+        return "capytaine" if self.file.lower().endswith(".nc") else "wamit"
+
+    @property
+    def weight_included(self) -> bool:
+        """Whether the database's hydrostatics hold the weight's moment (``weight_in_hydrostatics`` or the
+        format's default)."""
+        if self.weight_in_hydrostatics is not None:
+            return self.weight_in_hydrostatics
+        return self.database_format == "capytaine"
+
+    @model_validator(mode="after")
+    def _format(self):
+        if self.database_format == "capytaine" and "ulen" in self.model_fields_set:
+            raise ValueError("ulen is WAMIT's length scale; a Capytaine dataset is dimensional. Suggested fix: leave "
+                             "out ulen.")
+        return self
 
 
 class _AreaTable(Model):
