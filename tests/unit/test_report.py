@@ -308,7 +308,7 @@ def test_a_short_real_run_of_the_three_chain_deck(tmp_path, files_only):
 
 
 @pytest.mark.parametrize(("args", "message"), [
-    (["-o", "{out}", "--tn-curve", "polyester"], "T-N curve 'polyester' is not one of"),
+    (["-o", "{out}", "--tn-curve", "nylon"], "T-N curve 'nylon' is not one of"),
     (["-o", "{out}", "--quantile", "1.5"], "quantile's probability must lie between 0 and 1"),
     (["-o", "{out}", "--storm-duration", "-3"], "--storm-duration must be"),
     (["-o", "{out}", "--consequence-class", "3"], "invalid choice"),
@@ -334,9 +334,9 @@ def test_a_bad_tn_curve_is_refused_before_the_results_are_read(sweep_dir, tmp_pa
         raise AssertionError("the results were read")
 
     monkeypatch.setattr(summary, "read_results", read_results)
-    assert main(["report", str(folder), "-o", str(tmp_path / "r.html"), "--tn-curve", "polyester"]) == 2
+    assert main(["report", str(folder), "-o", str(tmp_path / "r.html"), "--tn-curve", "nylon"]) == 2
     err = capsys.readouterr().err
-    assert "T-N curve 'polyester' is not one of" in err and "Traceback" not in err and err.count("\n") == 1, err
+    assert "T-N curve 'nylon' is not one of" in err and "Traceback" not in err and err.count("\n") == 1, err
     assert not (tmp_path / "r.html").exists()
 
 
