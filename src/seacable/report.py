@@ -353,11 +353,11 @@ def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
 
 def _components_html(parts: pd.DataFrame) -> str:
     """Which parts of the load each load case modelled (:func:`seacable.design.combination.modelled_components`),
-    the ones left out in red: one table when every load case modelled the same."""
+    the ones left out in red: the first load case's rows alone when every load case has the same statuses."""
     if parts.empty:
         return ""
-    same = parts.groupby("load_case", sort=False)[["component", "status", "how"]].apply(
-        lambda g: tuple(map(tuple, g.values))).nunique() == 1
+    same = parts.groupby("load_case", sort=False)[["component", "status"]].apply(
+        lambda g: tuple(map(tuple, g.values))).nunique() == 1  # the same statuses: the first load case's rows
     shown = parts[parts["load_case"] == parts["load_case"].iloc[0]] if same else parts
     rows = [[_e(r["load_case"]), _e(r["component"]), f"<b>{_e(r['status'])}</b>", _e(r["how"])]
             for _, r in shown.iterrows()]
@@ -639,7 +639,9 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
                   ('<p class="method">Read from each load case\'s case file: the wave-frequency response (waves), the '
                   "low-frequency slow drift, the mean loads of wave drift, wind and current. A component NOT "
                   "MODELLED is missing from the extremes and checks below, which are then not conservative "
-                  "(DNV-OS-E301 Ch.2 Sec.2 and API RP 2SK ask for all of them).</p>"),
+                  "(DNV-OS-E301 Ch.2 Sec.2 and API RP 2SK ask for all of them). Where every load case modelled the "
+                  "same components, the first load case's rows stand for all (its sea shown); the CSV file holds "
+                  "every load case.</p>"),
                   _components_html(tables["components"])]
     if sweep.get("parameters"):
         params = [p for p in sweep["parameters"]]
@@ -677,13 +679,6 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
               f"maximum of non-exceedance probability {_num(opts.quantile, sig=3)}. The dynamic part used by the "
               "checks is the design maximum less the mean.</p>"),
               _extremes_html(ext, opts.quantile), _figure(figures.get("series")), _figure(figures.get("maxima"))]
-    if tables.get("combined") is not None and not tables["combined"].empty:
-        parts += ["<h3>Low- and wave-frequency parts of the fairlead tension</h3>",
-                  (f'<p class="method">Each record split by an ideal filter at {SPLIT_PERIOD:g} s (longer periods: LF), '
-                  f"the seeds' mean of each part's standard deviation and zero up-crossing period T<sub>z</sub>, and "
-                  f"the standards' combinations over the storm: {_e(API_COMBINATION)}; {_e(DNV_COMBINATION)}. "
-                  "Beside the time-domain design maximum above, which holds both parts as the run modelled them.</p>"),
-                  _combined_html(tables["combined"])]
     parts += ["<h2>4. Code checks</h2>",
               ('<p class="method">Line tensions from the design maximum of the fairlead tension; DNV-OS-E301 ULS for '
               "intact load cases, ALS where a line failed or was removed (the failed line itself is not checked); "
@@ -695,6 +690,13 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
               "that is larger, is none). Margin = capacity &minus; "
               "demand, in the check's unit; utilisation = demand / capacity, where the capacity is not zero.</p>"),
               _checks_html(chk), _figure(figures.get("utilisation")), _basis_html(chk)]
+    if tables.get("combined") is not None and not tables["combined"].empty:
+        parts += ["<h3>Low- and wave-frequency parts of the fairlead tension</h3>",
+                  (f'<p class="method">Each record split by an ideal filter at {SPLIT_PERIOD:g} s (longer periods: LF), '
+                  f"the seeds' mean of each part's standard deviation and zero up-crossing period T<sub>z</sub>, and "
+                  f"the standards' combinations over the storm: {_e(API_COMBINATION)}; {_e(DNV_COMBINATION)}. "
+                  "Beside the time-domain design maximum of section 3, which holds both parts as the run modelled them.</p>"),
+                  _combined_html(tables["combined"])]
     parts += ["<h2>5. Fatigue</h2>",
               ('<p class="method">Miner\'s damage from the rainflow-counted fairlead tension ranges over the nominal '
               "cross-section (DNV-OS-E301 (2010) Ch.2 Sec.2 D, Table D1; a polyester rope: over its breaking load), "

@@ -24,6 +24,7 @@ between 708 and 1800 kN).
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,8 +32,8 @@ from scipy import optimize, stats
 
 from ..errors import InputError
 
-__all__ = ["MIN_PEAKS", "RELIABLE_PEAKS", "StormMaximum", "gumbel_maximum", "mean_and_dynamic", "peaks",
-           "weibull_maximum"]
+__all__ = ["MIN_PEAKS", "RELIABLE_PEAKS", "StormMaximum", "gumbel_maximum", "mean_and_dynamic", "merged_notes",
+           "peaks", "weibull_maximum"]
 
 #: Fewest peaks of a record a Weibull fit takes: fewer are refused. [-]
 MIN_PEAKS = 50
@@ -117,6 +118,18 @@ def weibull_maximum(record, duration: float, storm: float | None = None, quantil
                         f"3-parameter Weibull fit to {p.size} peaks, {n:.4g} peaks in the storm",
                         {"shape": float(shape), "location": float(loc), "scale": float(scale), "peaks": int(p.size),
                          "storm_peaks": float(n)}, flag)
+
+
+def merged_notes(texts) -> str:
+    """One note for the seeds' notes of a Weibull fit (refusals or flags) that differ only in their numbers of
+    peaks: "k seed(s): ... the record has 24-30 peaks ..."; other notes joined by "; ", each once."""
+    texts = [str(t) for t in texts if isinstance(t, str) and t]
+    shapes = list(dict.fromkeys(re.sub(r"\b\d+ peaks", "# peaks", t) for t in texts))
+    counts = [int(m.group(1)) for t in texts if (m := re.search(r"\b(\d+) peaks", t))]
+    if len(shapes) == 1 and len(counts) == len(texts) and len(texts) > 1:
+        lo, hi = min(counts), max(counts)
+        return f"{len(texts)} seeds: " + shapes[0].replace("# peaks", f"{lo}-{hi} peaks" if hi > lo else f"{lo} peaks")
+    return "; ".join(dict.fromkeys(texts))
 
 
 def mean_and_dynamic(record) -> tuple[float, float]:

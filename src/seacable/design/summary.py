@@ -535,9 +535,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
         fitted = g["weibull_mpm"].notna()
         w_mpm = float(g.loc[fitted, "weibull_mpm"].mean()) if fitted.any() else math.nan
         w_q = float(g.loc[fitted, "weibull_quantile"].mean()) if fitted.any() else math.nan
-        w_note = "; ".join(dict.fromkeys(x for x in g["weibull_note"] if x))
-        flags = g["weibull_flag"] if "weibull_flag" in g else pd.Series([""] * n)
-        w_flag = "; ".join(dict.fromkeys(x for x in flags.fillna("") if x))
+        w_note = statistics.merged_notes(g["weibull_note"])
+        w_flag = statistics.merged_notes(g["weibull_flag"] if "weibull_flag" in g else ())
         if fitted.any() and not fitted.all():
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())

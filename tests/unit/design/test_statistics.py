@@ -104,3 +104,12 @@ def test_a_weibull_fit_on_few_peaks_is_refused_or_flagged():
     lo, hi, flags = _spread_of_weibull_mpm(250, 25, seed=6)
     assert 0.85 < lo and hi < 1.15, (lo, hi)
     assert not any(flags)
+
+
+def test_the_seeds_notes_of_a_weibull_fit_merge_into_one():
+    """Five seeds refused for 24 to 30 peaks make one note (the report listed five, one per row and seed)."""
+    from seacable.design.statistics import merged_notes
+
+    notes = [f"not fitted: the record has {n} peaks (mean up-crossings), too few" for n in (30, 24, 27)] + [""]
+    assert merged_notes(notes) == "3 seeds: not fitted: the record has 24-30 peaks (mean up-crossings), too few"
+    assert merged_notes(["a", "b", "a", float("nan")]) == "a; b"
