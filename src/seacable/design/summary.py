@@ -536,7 +536,7 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
         w_mpm = float(g.loc[fitted, "weibull_mpm"].mean()) if fitted.any() else math.nan
         w_q = float(g.loc[fitted, "weibull_quantile"].mean()) if fitted.any() else math.nan
         w_note = statistics.merged_notes(g["weibull_note"])
-        w_flag = statistics.merged_notes(g["weibull_flag"] if "weibull_flag" in g else ())
+        w_flag = statistics.merged_notes(g.get("weibull_flag", ()))
         if fitted.any() and not fitted.all():
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())

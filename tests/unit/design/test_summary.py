@@ -96,7 +96,7 @@ def test_too_few_seeds_for_gumbel_says_so_and_uses_the_weibull_fit(storm):
     assert math.isnan(row["gumbel_mpm"]) and "at least 5" in row["gumbel_note"] and "got 3" in row["gumbel_note"]
     # the fixture's records hold fewer than 200 peaks: the basis says the Weibull fits are flagged (issue 39)
     assert row["design_basis"] == "Weibull MPM, mean over 3 seed(s) (FLAGGED: fits on few peaks, uncertain)"
-    assert row["weibull_flag"].startswith("uncertain: a Weibull fit to ")
+    assert row["weibull_flag"].startswith("3 seeds: uncertain: a Weibull fit to ")  # merged over the seeds
 
 
 def test_a_sweep_folder_groups_seeds_into_load_cases(synth, tmp_path):
