@@ -173,3 +173,18 @@ def test_a_scatter_diagram_is_checked_when_read(tmp_path, probabilities, match):
     path.write_text("hs,tp,probability\n2.0,0.0,0.6\n4.0,9.0,0.4\n")
     with pytest.raises(InputError, match=r"line 2: tp = 0 s; it must be a finite number > 0 s"):
         read_scatter(path)
+
+
+def test_the_oc3_demo_line_is_a_studless_chain():
+    """The OC3-Hywind demo's line type says what it is (issue 39: its chain was counted on the spiral strand curve,
+    a life 1.8e5 times too long): studless chain, and its sea takes DNV-RP-C205's peakedness (no gamma given)."""
+    from pathlib import Path
+
+    import seacable as sc
+    from seacable.design.fatigue import curve_of_line_type
+
+    case = sc.load_case(Path(__file__).parents[3] / "examples" / "oc3_hywind_storm.yaml")
+    lt = case.line_types["oc3"]
+    assert curve_of_line_type(lt.material, "oc3") == ("studless_chain", "the line type's material (studless_chain)")
+    assert case.environment.waves.gamma is None
+    assert case.environment.waves.peak_enhancement() == pytest.approx(1.932, abs=5e-4)
