@@ -134,7 +134,7 @@ def main(outdir: str = "demo_out", *extra: str) -> int:
     summary = sc.sweep(HERE / "oc3_hywind_design.yaml", design_out)
     files = make_report(design_out, design_out / "report.html",
                         ReportOptions(storm_duration=10800.0, scatter=HERE / "oc3_hywind_scatter.csv",
-                                      tn_curve="spiral_strand", offset_limit=30.0))
+                                      offset_limit=30.0))
     checks = pd.read_csv(design_out / "report_checks.csv")
     lives = pd.read_csv(design_out / "report_fatigue_life.csv")
     tension = checks[checks["check"].str.startswith(("DNV", "API"))]

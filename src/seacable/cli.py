@@ -339,7 +339,7 @@ def _cmd_report(args) -> int:
     options = ReportOptions(storm_duration=args.storm_duration, quantile=args.quantile,
                             consequence_class=args.consequence_class, offset_limit=args.offset_limit,
                             scatter=args.scatter, tn_curve=args.tn_curve, nominal_diameter=args.nominal_diameter,
-                            allowed_uplift=args.allowed_uplift)
+                            allowed_uplift=args.allowed_uplift, design_fatigue_factor=args.design_fatigue_factor)
     for path in make_report(args.source, args.output, options):
         print(f"wrote {path}")
     return 0
@@ -531,8 +531,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scatter", help="scatter diagram, CSV with columns hs [m], tp [s], probability [-] (and "
                                      "optionally heading [rad]), matched to the load cases' sea states: the "
                                      "fatigue life")
-    p.add_argument("--tn-curve", help="T-N curve of DNV-OS-E301 Table D1: studless, stud, connecting, six_strand "
-                                      "or spiral_strand (default: by the line type's name)")
+    p.add_argument("--tn-curve", help="T-N curve of DNV-OS-E301: studless, stud, connecting, six_strand, "
+                                      "spiral_strand or polyester (default: the line type's material, else its name "
+                                      "where the name is not ambiguous)")
+    p.add_argument("--design-fatigue-factor", type=_number, default=5.0,
+                   help="design fatigue factor on the fatigue life (default 5, DNV-OS-E301 Ch.2 Sec.2 D; API RP 2SK: "
+                        "3 for lines inspected regularly, 10 otherwise)")
     p.add_argument("--nominal-diameter", type=_number,
                    help="nominal diameter for the fatigue stress [m] (default: the line type's diameter over "
                         "its volume-equivalent ratio, 1.8 for studless chain)")

@@ -188,7 +188,9 @@ class IrregularWaves(Model):
     tp
         Peak period. [s]
     gamma
-        JONSWAP peak enhancement factor (>= 1; 1 is Pierson-Moskowitz). [-]
+        JONSWAP peak enhancement factor (>= 1; 1 is Pierson-Moskowitz); left out (None), DNV-RP-C205
+        3.5.5.5's rule from Tp / sqrt(Hs): 5 up to 3.6, ``exp(5.75 - 1.15 Tp / sqrt(Hs))`` between, 1 from 5
+        (:func:`seacable.seastate.jonswap_gamma`; :meth:`peak_enhancement` gives the value used). [-]
     frequencies
         A table spectrum's angular frequencies, strictly increasing (> 0). [rad/s]
     density
@@ -213,8 +215,10 @@ class IrregularWaves(Model):
         None, description="Significant wave height. [m]")
     tp: quantity("s", gt=0, fix="give the peak period in seconds, e.g. 10.") | None = Field(
         None, description="Peak period. [s]")
-    gamma: quantity("-", ge=1, fix="give a peak enhancement factor between 1 (Pierson-Moskowitz) and 7; "
-                                   "3.3 is the JONSWAP mean.") = Field(3.3, description="Peak enhancement. [-]")
+    gamma: quantity("-", ge=1, fix="give a peak enhancement factor between 1 (Pierson-Moskowitz) and 7 (3.3 is "
+                                   "the JONSWAP mean), or leave it out for DNV-RP-C205's rule from "
+                                   "Tp / sqrt(Hs).") | None = Field(
+        None, description="Peak enhancement; None: DNV-RP-C205 3.5.5.5's rule from Tp / sqrt(Hs). [-]")
     frequencies: tuple[float, ...] | None = Field(None, description="Table frequencies. [rad/s]")
     density: tuple[float, ...] | None = Field(None, description="Table spectral density. [m^2 s/rad]")
     heading: quantity("rad") = Field(0.0, description="Mean direction of travel. [rad]")
@@ -257,7 +261,7 @@ class IrregularWaves(Model):
             if missing:
                 raise ValueError(f"spectrum '{self.spectrum}' needs {' and '.join(missing)}. Suggested fix: "
                                  "give hs [m] and tp [s].")
-            if self.spectrum == "jonswap" and self.gamma > 7.0:
+            if self.spectrum == "jonswap" and self.gamma is not None and self.gamma > 7.0:
                 warnings.warn(f"waves.gamma = {self.gamma:g} is outside DNV's 1-7 range of JONSWAP peak factors "
                               "(A_gamma = 1 - 0.287 ln gamma is fitted there).", SeacableWarning, stacklevel=3)
         if self.frequency_range is not None:
@@ -301,6 +305,15 @@ class IrregularWaves(Model):
         tp = 2.0 * math.pi / self.peak_frequency()
         return 4.0 * math.sqrt(m0), tp, f" (Hs = 4 sqrt(m0), m0 = {m0:.4g} m^2 the table's integral)"
 
+    def peak_enhancement(self) -> float | None:
+        """The JONSWAP peak enhancement factor the sea uses: the given ``gamma``, else DNV-RP-C205's rule
+        (:func:`seacable.seastate.jonswap_gamma`); None for another spectrum. [-]"""
+        from . import seastate as ss
+
+        if self.spectrum != "jonswap":
+            return None
+        return float(self.gamma) if self.gamma is not None else ss.jonswap_gamma(self.hs, self.tp)
+
     def spectral_density(self, omega):
         """The target one-sided spectrum S(omega) [m^2 s/rad] at angular frequencies ``omega`` [rad/s]."""
         from . import seastate as ss
@@ -309,7 +322,7 @@ class IrregularWaves(Model):
             return ss.table_spectrum(omega, self.frequencies, self.density)
         if self.spectrum == "pierson_moskowitz":
             return ss.pierson_moskowitz(omega, self.hs, self.tp)
-        return ss.jonswap(omega, self.hs, self.tp, self.gamma)
+        return ss.jonswap(omega, self.hs, self.tp, self.peak_enhancement())
 
     def peak_frequency(self) -> float:
         """Angular frequency of the spectrum's peak. [rad/s]"""

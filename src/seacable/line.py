@@ -79,6 +79,12 @@ class LineType(Model):
     dynamic_axial_damping
         Viscoelastic fast damper BA_D, in parallel with the dynamic spring (MoorDyn v2's ``BA_s|BA_d``);
         the slow damper is the model's ordinary axial damping. ``None`` for none. [N s]
+    material
+        What the line is made of, for its fatigue curve (DNV-OS-E301 Ch.2 Sec.2 D; the design layer,
+        :mod:`seacable.design.fatigue`): ``"studless_chain"``, ``"stud_chain"``, ``"six_strand_rope"``,
+        ``"spiral_strand_rope"``, ``"polyester_rope"`` or ``"other"`` (no curve of the standard: a cable, an
+        umbilical). ``None`` (the default): not said; the design tables then read it from the name where the name
+        is not ambiguous, and compute no fatigue where it is.
     """
 
     diameter: quantity("m", gt=0, fix="give the outer diameter in metres, e.g. 0.035.") = Field(
@@ -102,6 +108,9 @@ class LineType(Model):
     added_mass_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential added-mass coefficient. [-]")
     breaking_load: quantity("N", gt=0) | None = Field(None, description="Minimum breaking load. [N]")
     name: str | None = Field(None, description="Label used in plots and messages.")
+    material: Literal["studless_chain", "stud_chain", "six_strand_rope", "spiral_strand_rope", "polyester_rope",
+                      "other"] | None = Field(
+        None, description="What the line is made of, for its fatigue (T-N) curve; None: not said (the name tells).")
     tension_strain: tuple[tuple[float, float], ...] | None = Field(
         None, description="Nonlinear axial law: (strain [-], tension [N]) pairs, from strain 0.")
     dynamic_axial_stiffness: tuple[float, float] | None = Field(

@@ -34,6 +34,9 @@ from ._atomic import atomic_write
 from ._version import __version__
 from .design import checks as checks_
 from .design import summary as ds_
+from .design.combination import API_COMBINATION, DNV_COMBINATION, SPLIT_PERIOD
+from .design.fatigue import DNV_DESIGN_FATIGUE_FACTOR
+from .errors import InputError
 
 __all__ = ["CSV_UNITS", "ReportOptions", "make_report"]
 
@@ -42,7 +45,9 @@ CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": 
              "weibull_quantile": "N", "maximum_largest": "N", "maximum_mean": "N", "gumbel_mpm": "N",
              "gumbel_quantile": "N", "design_maximum": "N", "dynamic": "N", "demand": "N or m, see unit",
              "capacity": "N or m, see unit", "utilisation": "-", "margin": "N or m, see unit", "nominal_diameter": "m", "damage": "-",
-             "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years"}
+             "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years",
+             "lf_std": "N", "wf_std": "N", "lf_period": "s", "wf_period": "s", "api_maximum": "N", "dnv_dynamic": "N",
+             "dnv_maximum": "N", "time_domain_maximum": "N"}
 
 
 @dataclass
@@ -57,7 +62,7 @@ class ReportOptions:
     tn_curve: str | None = None           #: T-N curve; None: by the line type
     nominal_diameter: float | None = None  #: nominal diameter for fatigue [m]; None: from the line type
     allowed_uplift: float = 0.0           #: allowed vertical force on the anchors [N]
-    design_fatigue_factor: float = 1.0    #: DNV-OS-E301 design fatigue factor [-]
+    design_fatigue_factor: float = DNV_DESIGN_FATIGUE_FACTOR  #: DNV-OS-E301's design fatigue factor, 5 [-]
     extra: dict = field(default_factory=dict)
 
 
@@ -340,9 +345,41 @@ def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
         rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["end"]), str(int(r["seeds"])), col["mean"][k],
                      col["std"][k], col["maximum_largest"][k], col["maximum_mean"][k],
                      col["gumbel_mpm"][k] + _mark(notes, r["gumbel_note"]), col["gumbel_quantile"][k],
-                     col["weibull_mpm"][k] + _mark(notes, r["weibull_note"]), col["weibull_quantile"][k],
+                     col["weibull_mpm"][k] + _mark(notes, r["weibull_note"])
+                     + _mark(notes, r.get("weibull_flag", "") or ""), col["weibull_quantile"][k],
                      f"<b>{col['design_maximum'][k]}</b>", _e(r["design_basis"])])
     return _table(headers, rows, cls="num extremes", single=ext["load_case"].nunique() == 1) + _notes_block(notes)
+
+
+def _components_html(parts: pd.DataFrame) -> str:
+    """Which parts of the load each load case modelled (:func:`seacable.design.combination.modelled_components`),
+    the ones left out in red: the first load case's rows alone when every load case has the same statuses."""
+    if parts.empty:
+        return ""
+    same = parts.groupby("load_case", sort=False)[["component", "status"]].apply(
+        lambda g: tuple(map(tuple, g.values))).nunique() == 1  # the same statuses: the first load case's rows
+    shown = parts[parts["load_case"] == parts["load_case"].iloc[0]] if same else parts
+    rows = [[_e(r["load_case"]), _e(r["component"]), f"<b>{_e(r['status'])}</b>", _e(r["how"])]
+            for _, r in shown.iterrows()]
+    classes = ["failed" if r["status"] == "NOT MODELLED" else "" for _, r in shown.iterrows()]
+    return _table(["Load case", "Component", "Status", "How"], rows, classes, cls="components", single=same)
+
+
+def _combined_html(comb: pd.DataFrame) -> str:
+    """The LF/WF parts of the fairlead tension and the standards' combinations beside the time-domain maximum."""
+    if comb.empty:
+        return ""
+    col = _columns(comb, {**{c: (1e3, 4) for c in ("mean", "lf_std", "wf_std", "api_maximum", "dnv_maximum",
+                                                    "time_domain_maximum")}, "lf_period": (1.0, 3),
+                          "wf_period": (1.0, 3)})
+    notes: dict[str, str] = {}
+    rows = [[_e(r["load_case"]), _e(r["line"]) + _mark(notes, r["note"]), col["mean"][k], col["lf_std"][k],
+             col["lf_period"][k], col["wf_std"][k], col["wf_period"][k], col["api_maximum"][k], col["dnv_maximum"][k],
+             f"<b>{col['time_domain_maximum'][k]}</b>"] for k, (_, r) in enumerate(comb.iterrows())]
+    return _table(["Load case", "Line", "Mean [kN]", "LF std. [kN]", "LF T<sub>z</sub> [s]", "WF std. [kN]",
+                   "WF T<sub>z</sub> [s]", "API RP 2SK T<sub>max</sub> [kN]", "DNV T<sub>c</sub> [kN]",
+                   "Time-domain design max. [kN]"], rows, cls="num combined",
+                  single=comb["load_case"].nunique() == 1) + _notes_block(notes)
 
 
 #: The checks' tables of the page, one per quantity: (rows, title, unit shown, scale, class).
@@ -398,7 +435,8 @@ def _fatigue_html(fat: pd.DataFrame) -> str:
     rows = []
     for k, (_, r) in enumerate(fat.iterrows()):
         curve = str(r["tn_curve"]).replace("_", " ") if r["tn_curve"] else "&ndash;"
-        rows.append([_e(r["load_case"]), _e(r["line"]) + _mark(notes, r["note"]), curve,
+        rows.append([_e(r["load_case"]), _e(r["line"]) + _mark(notes, r["note"]),
+                     curve + _mark(notes, f"T-N curve from {r['tn_basis']}" if r.get("tn_basis") else ""),
                      col["nominal_diameter"][k], str(int(r["seeds"])), col["duration"][k], col["damage"][k],
                      col["damage_per_year"][k], col["life_alone"][k], col["probability"][k]])
     return _table(headers, rows, cls="num fatigue", single=fat["load_case"].nunique() == 1) + _notes_block(notes)
@@ -511,7 +549,8 @@ def _settings_html(settings: str) -> str:
     return _kv([(_e(k), _e(json.dumps(v) if not isinstance(v, str) else v)) for k, v in data.items()])
 
 
-def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) -> str:
+def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None,
+             parts: pd.DataFrame | None = None) -> str:
     checked = chk[chk["passed"].notna()]
     failed = checked[~checked["passed"].astype(bool)]
     skipped = chk[chk["passed"].isna()]
@@ -536,6 +575,13 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None) ->
                       f"margin {_num(worst['margin'], scale=scale)} {unit}"))
     if not skipped.empty:
         cards.append(("warn", "Not checked", f"{len(skipped)} check(s)"))
+    missing = [] if parts is None or parts.empty else list(dict.fromkeys(
+        parts.loc[parts["status"] == "NOT MODELLED", "component"]))
+    if missing:
+        cards.append(("bad", "Not modelled (extremes non-conservative)", _e(", ".join(missing))))
+    flagged = ext[ext["weibull_flag"].fillna("") != ""] if "weibull_flag" in ext else ext.iloc[:0]
+    if not flagged.empty:
+        cards.append(("warn", "Weibull fits on few peaks (uncertain)", f"{len(flagged)} of {len(ext)} rows"))
     fair = ext[ext["end"] == "fairlead"]
     if not fair.empty:
         top = fair.loc[fair["design_maximum"].idxmax()]
@@ -574,7 +620,9 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
               ("DNV-OS-E301 consequence class", str(opts.consequence_class)),
               ("Offset limit", "not checked" if opts.offset_limit is None else f"{_num(opts.offset_limit)} m"),
               ("Allowed anchor uplift", f"{_num(opts.allowed_uplift, scale=1e3)} kN"),
-              ("T-N curve", _e(opts.tn_curve) if opts.tn_curve else "by the line type"),
+              ("T-N curve", _e(opts.tn_curve) if opts.tn_curve else "by the line type (its material, else its name)"),
+              ("Design fatigue factor", _num(opts.design_fatigue_factor, sig=3)
+               + (" (DNV-OS-E301 Ch.2 Sec.2 D)" if opts.design_fatigue_factor == DNV_DESIGN_FATIGUE_FACTOR else "")),
               ("Scatter diagram", f"<code>{path(opts.scatter)}</code>" if opts.scatter else "none")]
     if sweep.get("failed"):
         inputs.append(("Cases not in the report", f"{len(sweep['failed'])} of {sweep['cases']} (failed or not run)"))
@@ -584,8 +632,17 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
              (f'<header class="top"><h1>Mooring design report &ndash; {_e(name)}</h1>'
              f'<div class="meta">{_e(now)} &middot; seacable {_e(__version__)}'
              f"{' &middot; ' + _e(description) if description else ''}</div></header>"),
-             "<h2>Summary</h2>", _verdict(chk, ext, life if not life.empty else None)]
+             "<h2>Summary</h2>", _verdict(chk, ext, life if not life.empty else None, tables.get("components"))]
     parts += ["<h2>1. Inputs</h2>", _kv(inputs)]
+    if tables.get("components") is not None and not tables["components"].empty:
+        parts += ["<h3>Components of the load modelled</h3>",
+                  ('<p class="method">Read from each load case\'s case file: the wave-frequency response (waves), the '
+                  "low-frequency slow drift, the mean loads of wave drift, wind and current. A component NOT "
+                  "MODELLED is missing from the extremes and checks below, which are then not conservative "
+                  "(DNV-OS-E301 Ch.2 Sec.2 and API RP 2SK ask for all of them). Where every load case modelled the "
+                  "same components, the first load case's rows stand for all (its sea shown); the CSV file holds "
+                  "every load case.</p>"),
+                  _components_html(tables["components"])]
     if sweep.get("parameters"):
         params = [p for p in sweep["parameters"]]
         rows = []
@@ -610,7 +667,7 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
               "<ol>" + "".join(f"<li>{_e(r)}</li>" for r in refs) + "</ol>" if refs else "<p>none recorded</p>",
               ("<h3>References of the design methods</h3><ol>"
               "<li>DNV-OS-E301 Position mooring (October 2010): Ch.2 Sec.2 B (ULS and ALS partial safety factors), "
-              "D (fatigue, T-N curves of Table D1).</li>"
+              "D (fatigue: T-N curves of Table D1 and the polyester rope curve; design fatigue factor 5).</li>"
               "<li>API RP 2SK Design and analysis of stationkeeping systems for floating structures: factors of "
               "safety of line tension.</li>"
               f"<li>Extremes: {_e(ds_.GUMBEL_REFERENCE)} (Gumbel fit over seeds); {_e(ds_.WEIBULL_REFERENCE)} "
@@ -629,12 +686,22 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
               "T<sub>anchor</sub> (z<sub>1</sub> &minus; z<sub>0</sub>)/|x<sub>1</sub> &minus; x<sub>0</sub>|, the "
               "largest upward pull over the seeds, less round-off (an upward pull up to "
               f"{checks_.UPLIFT_ROUND_OFF:g} of the anchor tension, the line within "
-              f"{math.degrees(checks_.UPLIFT_ROUND_OFF):.2f}&deg; of flat, is none). Margin = capacity &minus; "
+              f"{math.degrees(checks_.UPLIFT_ROUND_OFF):.2f}&deg; of flat, or of the line's submerged weight where "
+              "that is larger, is none). Margin = capacity &minus; "
               "demand, in the check's unit; utilisation = demand / capacity, where the capacity is not zero.</p>"),
               _checks_html(chk), _figure(figures.get("utilisation")), _basis_html(chk)]
+    if tables.get("combined") is not None and not tables["combined"].empty:
+        parts += ["<h3>Low- and wave-frequency parts of the fairlead tension</h3>",
+                  (f'<p class="method">Each record split by an ideal filter at {SPLIT_PERIOD:g} s (longer periods: LF), '
+                  f"the seeds' mean of each part's standard deviation and zero up-crossing period T<sub>z</sub>, and "
+                  f"the standards' combinations over the storm: {_e(API_COMBINATION)}; {_e(DNV_COMBINATION)}. "
+                  "Beside the time-domain design maximum of section 3, which holds both parts as the run modelled them.</p>"),
+                  _combined_html(tables["combined"])]
     parts += ["<h2>5. Fatigue</h2>",
               ('<p class="method">Miner\'s damage from the rainflow-counted fairlead tension ranges over the nominal '
-              "cross-section (DNV-OS-E301 (2010) Ch.2 Sec.2 D, Table D1), the mean over a load case's seeds. "
+              "cross-section (DNV-OS-E301 (2010) Ch.2 Sec.2 D, Table D1; a polyester rope: over its breaking load), "
+              "the mean over a load case's seeds; the curve from the line type's material, else from a name that "
+              "tells it without ambiguity (a note says which). "
               "&ldquo;If permanent&rdquo;: were the load case to last the whole year.</p>"),
               _fatigue_html(fat)]
     if not life.empty:
@@ -688,6 +755,9 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
     if opts.tn_curve is not None:
         ds_.resolve_tn_curve(opts.tn_curve)  # so is the curve: a misspelt name fails before minutes of fits
+    if not (math.isfinite(opts.design_fatigue_factor) and opts.design_fatigue_factor >= 1.0):
+        raise InputError(f"--design-fatigue-factor must be a number >= 1, got {opts.design_fatigue_factor}. Suggested "
+                         "fix: 5 (DNV-OS-E301), or 3 / 10 (API RP 2SK, inspected / not inspected lines).")
     kept = _MostLoaded()
     runs, made = ds_.design_tables(source, storm_duration=opts.storm_duration, quantile=opts.quantile,
                                    consequence_class=opts.consequence_class, offset_limit=opts.offset_limit,
@@ -697,7 +767,8 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     life = ds_.fatigue_life_table(fat, design_fatigue_factor=opts.design_fatigue_factor) if opts.scatter else \
         pd.DataFrame(columns=["line", "tn_curve", "load_cases", "damage_per_year", "life", "design_fatigue_factor",
                               "note"])
-    tables = {"extremes": ext, "seeds": seeds, "checks": chk, "fatigue": fat, "fatigue_life": life}
+    tables = {"extremes": ext, "seeds": seeds, "checks": chk, "fatigue": fat, "fatigue_life": life,
+              "components": made["components"], "combined": made["combined"]}
     figures = {"series": _figure_time_series(runs, seeds, kept), "maxima": _figure_maxima(seeds, ext),
                "utilisation": _figure_utilisation(chk)}
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,

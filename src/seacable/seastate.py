@@ -70,6 +70,7 @@ __all__ = [
     "grid_point",
     "grid_points",
     "jonswap",
+    "jonswap_gamma",
     "kinematics_grid",
     "no_sea",
     "pierson_moskowitz",
@@ -125,11 +126,27 @@ def pierson_moskowitz(omega, hs, tp):
     return np.where(w > 0, s, 0.0)
 
 
-def jonswap(omega, hs, tp, gamma=3.3):
+def jonswap_gamma(hs, tp) -> float:
+    """JONSWAP's peak enhancement factor when none is given: DNV-RP-C205 (2021) 3.5.5.5's rule from
+    ``r = Tp / sqrt(Hs)`` (Tp in s, Hs in m): 5 for ``r <= 3.6``, ``exp(5.75 - 1.15 r)`` between, 1 (a
+    Pierson-Moskowitz sea) for ``r >= 5``. [-]
+
+    The one place seacable's default gamma is made (:func:`jonswap`, :class:`seacable.environment.IrregularWaves`).
+    """
+    r = float(tp) / math.sqrt(float(hs))
+    if r <= 3.6:
+        return 5.0
+    if r >= 5.0:
+        return 1.0
+    return math.exp(5.75 - 1.15 * r)
+
+
+def jonswap(omega, hs, tp, gamma=None):
     """JONSWAP spectrum with DNV's normalisation ``A_gamma = 1 - 0.287 ln(gamma)`` (DNV-RP-C205 3.5.5.2).
 
     Peak shape width sigma = 0.07 for omega <= omega_p, 0.09 above. ``gamma`` = 1 is
-    :func:`pierson_moskowitz`. A_gamma makes m0 = Hs^2/16 to about 1 % for 1 <= gamma <= 7.
+    :func:`pierson_moskowitz`. A_gamma makes m0 = Hs^2/16 to about 1 % for 1 <= gamma <= 7. ``gamma`` None
+    (the default) is DNV-RP-C205's rule from Tp / sqrt(Hs) (:func:`jonswap_gamma`).
 
     Parameters
     ----------
@@ -140,13 +157,15 @@ def jonswap(omega, hs, tp, gamma=3.3):
     tp : float
         Peak period. [s]
     gamma : float, optional
-        Peak enhancement factor (>= 1). [-]
+        Peak enhancement factor (>= 1); None: :func:`jonswap_gamma` of ``hs`` and ``tp``. [-]
 
     Returns
     -------
     numpy.ndarray
         Spectral density. [m^2 s/rad]
     """
+    if gamma is None:
+        gamma = jonswap_gamma(hs, tp)
     w = np.asarray(omega, float)
     wp = 2.0 * math.pi / tp
     sigma = np.where(w <= wp, 0.07, 0.09)

@@ -55,6 +55,25 @@ def _dnv_jonswap(w, hs, tp, gamma):
     return (1 - 0.287 * math.log(gamma)) * pm * gamma ** np.exp(-0.5 * ((w - wp) / (sigma * wp)) ** 2)
 
 
+
+def test_jonswap_peakedness_left_out_is_dnv_rp_c205s_rule():
+    """DNV-RP-C205 (2021) 3.5.5.5: gamma = 5 for Tp/sqrt(Hs) <= 3.6, exp(5.75 - 1.15 Tp/sqrt(Hs)) up to 5, then 1
+    (continuous at both ends to 1e-3: exp(1.61) = 5.003, exp(0) = 1). It is the default of jonswap() and of a case's
+    sea (IrregularWaves without gamma), which keeps a gamma given; the OC3 storm (Hs 10 m, Tp 14 s) gets 1.932."""
+    from seacable.seastate import jonswap_gamma
+
+    assert [jonswap_gamma(hs, tp) for hs, tp in ((4.0, 7.0), (1.0, 3.6), (1.0, 5.0), (4.0, 24.0))] == pytest.approx(
+        [5.0, 5.0, 1.0, 1.0], rel=0, abs=1e-15)
+    assert jonswap_gamma(10.0, 14.0) == pytest.approx(math.exp(5.75 - 1.15 * 14.0 / math.sqrt(10.0)), rel=1e-15)
+    assert jonswap_gamma(10.0, 14.0) == pytest.approx(1.932, abs=5e-4)
+    w = np.linspace(0.2, 2.0, 50)
+    assert np.array_equal(jonswap(w, 10.0, 14.0), jonswap(w, 10.0, 14.0, jonswap_gamma(10.0, 14.0)))
+    sea = IrregularWaves(spectrum="jonswap", hs=10.0, tp=14.0)
+    assert sea.gamma is None and sea.peak_enhancement() == jonswap_gamma(10.0, 14.0)
+    assert np.array_equal(sea.spectral_density(w), jonswap(w, 10.0, 14.0, jonswap_gamma(10.0, 14.0)))
+    given = IrregularWaves(spectrum="jonswap", hs=10.0, tp=14.0, gamma=3.3)
+    assert np.array_equal(given.spectral_density(w), jonswap(w, 10.0, 14.0, 3.3))
+
 def test_jonswap_with_gamma_one_is_pierson_moskowitz():
     """gamma = 1: A_gamma = 1 and gamma^r = 1, the same numbers to round-off (1e-12 relative)."""
     w = np.linspace(0.2, 4.0, 300)

@@ -41,8 +41,9 @@ only where the capacity is positive: a zero capacity, a drag anchor's allowed up
 - Anchor uplift: a drag anchor takes no upward pull in the intact condition (API RP 2SK 3rd ed., anchor
   design; DNV-OS-E301 (2010) Ch.2 Sec.4, fluke anchors), so the default allowed uplift is 0 N; another anchor (a pile, a
   suction anchor) takes the allowed uplift of its design. A computed upward pull no larger than
-  :data:`UPLIFT_ROUND_OFF` (1e-3) times the line's tension at the anchor, a line meeting the seabed within
-  0.057 deg of flat, is round-off, not uplift (:func:`uplift_demand`).
+  :data:`UPLIFT_ROUND_OFF` (1e-3) times the larger of the line's tension at the anchor (a line meeting the seabed
+  within 0.057 deg of flat) and the line's submerged weight (a slack grounded line, whose anchor tension may be
+  near zero), is round-off, not uplift (:func:`uplift_demand`).
 - Offset: the largest horizontal offset of a body against the limit set by its risers, gangway or
   umbilicals (a project value, not a code's).
 
@@ -331,27 +332,32 @@ def api_tension(line, max_tension, mbs, condition: Literal["intact", "damaged", 
                    f"condition, {words} analysis (FoS {fos:.2f})")
 
 
-def uplift_demand(vertical_force, tension):
-    """The uplift a vertical force on an anchor is: ``F_z`` where ``F_z > UPLIFT_ROUND_OFF * T``, else 0 (a
-    downward pull, or an upward one of round-off size: :data:`UPLIFT_ROUND_OFF`). Vectorised. [N]
+def uplift_demand(vertical_force, tension, weight=0.0):
+    """The uplift a vertical force on an anchor is: ``F_z`` where ``F_z > UPLIFT_ROUND_OFF * max(T, W)``, else 0
+    (a downward pull, or an upward one of round-off size: :data:`UPLIFT_ROUND_OFF`). Vectorised. [N]
 
     Parameters
     ----------
     vertical_force
         Vertical force of the line on its anchor, upward positive. [N]
     tension
-        The line's tension at the anchor at the same instant (NaN or missing: 0, no tolerance). [N]
+        The line's tension at the anchor at the same instant (NaN or missing: 0). [N]
+    weight
+        The line's submerged weight ``W``, its weight in water per metre times its length (0: unknown): the
+        tolerance's scale where the anchor tension is near zero (a slack line lying on the seabed). [N]
     """
     f_z = np.asarray(vertical_force, float)
     t = np.nan_to_num(np.abs(np.asarray(tension, float)), nan=0.0)
-    return np.where(f_z > UPLIFT_ROUND_OFF * t, f_z, 0.0)
+    w = float(np.nan_to_num(abs(float(weight)), nan=0.0))
+    return np.where(f_z > UPLIFT_ROUND_OFF * np.maximum(t, w), f_z, 0.0)
 
 
-def anchor_uplift(anchor, vertical_force, allowed=0.0, tension=0.0) -> CheckResult:
+def anchor_uplift(anchor, vertical_force, allowed=0.0, tension=0.0, weight=0.0) -> CheckResult:
     """Anchor uplift: the largest upward pull on the anchor against the allowed uplift.
 
     ``F_up <= F_allowed``, ``F_up`` the upward vertical force ``F_z`` less round-off (:func:`uplift_demand`: an
-    ``F_z`` no larger than ``UPLIFT_ROUND_OFF = 1e-3`` times the anchor tension ``T`` is none), the margin
+    ``F_z`` no larger than ``UPLIFT_ROUND_OFF = 1e-3`` times the larger of the anchor tension ``T`` and the line's
+    submerged weight ``W`` is none), the margin
     ``F_allowed - F_up`` [N]. With ``F_allowed = 0`` (the default: a drag anchor takes no uplift in the intact
     condition, API RP 2SK 3rd ed., DNV-OS-E301 (2010) Ch.2 Sec.4) the check passes only without uplift, with a
     margin of 0 N, and has no utilisation (no ratio to a zero capacity); with ``F_allowed > 0`` the utilisation
@@ -367,7 +373,9 @@ def anchor_uplift(anchor, vertical_force, allowed=0.0, tension=0.0) -> CheckResu
     allowed
         The uplift the anchor may take, >= 0. [N]
     tension
-        The line's tension at the anchor when ``vertical_force`` acts, >= 0 (0: no round-off tolerance). [N]
+        The line's tension at the anchor when ``vertical_force`` acts, >= 0. [N]
+    weight
+        The line's submerged weight, >= 0 (0: unknown; with ``tension`` 0, no round-off tolerance). [N]
 
     Returns
     -------
@@ -386,11 +394,14 @@ def anchor_uplift(anchor, vertical_force, allowed=0.0, tension=0.0) -> CheckResu
                   check=v.nonnegative)
     t = _scalar(f"anchor '{anchor}' tension", tension, "N",
                 "give the line's tension at the anchor [N], >= 0 N (0: no round-off tolerance).", check=v.nonnegative)
-    up = float(uplift_demand(f_z, t))
+    w = _scalar(f"anchor '{anchor}' line weight", weight, "N",
+                "give the line's submerged weight [N], >= 0 N (0: unknown).", check=v.nonnegative)
+    up = float(uplift_demand(f_z, t, w))
     reference = (f"{API_EDITION} (anchor design) and {DNV_EDITION} Ch.2 Sec.4: no uplift on a drag anchor in the intact "
                  "condition" if cap == 0.0 else "the anchor's design uplift capacity")
     return _result("anchor uplift", anchor, up, cap, "N",
-                   f"F_up <= {cap:.6g} N (F_up = F_z where F_z > {UPLIFT_ROUND_OFF:g} T_anchor: less is round-off)",
+                   f"F_up <= {cap:.6g} N (F_up = F_z where F_z > {UPLIFT_ROUND_OFF:g} T_anchor, or {UPLIFT_ROUND_OFF:g} "
+                   "W_line if larger: less is round-off)",
                    reference)
 
 

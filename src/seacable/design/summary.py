@@ -42,11 +42,12 @@ import yaml
 from .._model import load_yaml
 from ..errors import InputError
 from ..results import check_time
-from . import fatigue, statistics
+from . import combination, fatigue, statistics
+from .fatigue import resolve_tn_curve
 from .scatter import HEADING_PATH, HS_PATH, SEED_PATH, TP_PATH, read_scatter, scatter_probabilities
 
 __all__ = ["DYNAMIC_ANALYSES", "HEADING_PATH", "HS_PATH", "SEED_PATH", "TP_PATH", "LineInfo", "Run",
-           "checks_table", "design_tables", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info",
+           "checks_table", "curve_of_line", "design_tables", "extremes_table", "fatigue_life_table", "fatigue_table", "line_info",
            "line_names", "line_series", "read_results", "read_scatter", "resolve_tn_curve", "seed_table"]
 
 #: The analyses whose results the design tables read.
@@ -319,13 +320,16 @@ def _node_positions(ds: xr.Dataset, line: str) -> np.ndarray:
 class LineInfo:
     """What a result's case tells of a line: its minimum breaking load [N] (None: unknown; the smallest of its
     segments'), the line type at its fairlead (its name, None when the case does not say, and its volume-equivalent
-    diameter [m]), and which end is the anchor (0: end A, node 0; 1: end B; None: not told, the lower end is)."""
+    diameter [m]), and which end is the anchor (0: end A, node 0; 1: end B; None: not told, the lower end is);
+    ``material`` the line type's ``material`` at the fairlead (None: not given)."""
 
     breaking_load: float | None
     line_type: str | None
     diameter: float | None
     anchor_end: int | None
     source: str
+    material: str | None = None
+    weight: float = 0.0  # the line's submerged weight [N] (0: unknown), the scale of anchor round-off
 
 
 def _type_name(lt: dict, types: dict) -> str | None:
@@ -372,8 +376,11 @@ def line_info(ds: xr.Dataset) -> dict[str, LineInfo]:
             breaking = value if math.isfinite(value) and value > 0 else None
             source = "the result's breaking_load" if breaking else ""
         top = seg_types[-1 if fair != 0 else 0] if seg_types else None
+        weight = sum(float(t.get("weight_in_water") or 0.0) * float(sg.get("length") or 0.0)
+                     for sg, t in zip(segments, seg_types, strict=False) if isinstance(t, dict))
         out[name] = LineInfo(breaking, None if top is None else _type_name(top, types),
-                             None if top is None else top.get("diameter"), anchor, source)
+                             None if top is None else top.get("diameter"), anchor, source,
+                             None if top is None else top.get("material"), max(weight, 0.0))
         del k
     return out
 
@@ -433,8 +440,12 @@ def seed_table(runs: Sequence[Run], *, storm_duration: float | None = None, quan
     -------
     pandas.DataFrame
         Columns ``load_case, case, seed, line, end, duration [s], maximum [N], mean [N], std [N],
-        weibull_mpm [N], weibull_quantile [N], weibull_note``; the Weibull columns NaN, with the reason in
-        ``weibull_note``, where the record has too few peaks.
+        weibull_mpm [N], weibull_quantile [N], weibull_note, weibull_flag``, and the low- and wave-frequency parts
+        ``lf_std, wf_std [N], lf_period, wf_period [s]`` (:func:`~seacable.design.combination.split_columns`,
+        NaN for a record too short to split); the Weibull columns NaN, with the
+        reason in ``weibull_note``, where the record has too few peaks
+        (:data:`~seacable.design.statistics.MIN_PEAKS`); ``weibull_flag`` says why a fit made is uncertain
+        (fewer than :data:`~seacable.design.statistics.RELIABLE_PEAKS` peaks), empty where it is not.
     """
     _check_storm(storm_duration)
     statistics._probability(quantile)  # refused here, not taken for a record's failed fit below
@@ -449,24 +460,27 @@ def _seed_rows(run: Run, ds: xr.Dataset, storm_duration: float | None, quantile:
     """The rows of :func:`seed_table` of one run, ``ds`` its result."""
     rows = []
     duration = _duration(ds)
+    time = np.asarray(ds["time"].values, float)
     for line in line_names(ds):
         for end in _ENDS:
             record = line_series(ds, f"{end}_tension", line)
             mean, std = statistics.mean_and_dynamic(record)
             try:
                 w = statistics.weibull_maximum(record, duration, storm_duration, quantile)
-                mpm, q, note = w.most_probable, w.quantile, ""
+                mpm, q, note, flag = w.most_probable, w.quantile, "", w.flag
             except InputError as err:
-                mpm, q, note = math.nan, math.nan, _note(err)
+                mpm, q, note, flag = math.nan, math.nan, _note(err), ""
             rows.append({"load_case": run.load_case, "case": run.name, "seed": run.seed, "line": line,
                          "end": end, "duration": duration, "maximum": float(np.max(record)), "mean": mean,
-                         "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note})
+                         "std": std, "weibull_mpm": mpm, "weibull_quantile": q, "weibull_note": note,
+                         "weibull_flag": flag, **combination.split_columns(record, time)})
     return rows
 
 
 def _seed_frame(rows: list[dict]) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=["load_case", "case", "seed", "line", "end", "duration", "maximum", "mean",
-                                       "std", "weibull_mpm", "weibull_quantile", "weibull_note"])
+                                       "std", "weibull_mpm", "weibull_quantile", "weibull_note", "weibull_flag",
+                                       "lf_std", "wf_std", "lf_period", "wf_period"])
 
 
 def _check_storm(storm_duration) -> None:
@@ -502,7 +516,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
     pandas.DataFrame
         Columns ``load_case, line, end, seeds, duration [s], storm [s], maximum_largest [N],
         maximum_mean [N], mean [N], std [N], gumbel_mpm [N], gumbel_quantile [N], gumbel_note, weibull_mpm [N],
-        weibull_quantile [N], weibull_note, design_maximum [N], dynamic [N], design_basis, method``.
+        weibull_quantile [N], weibull_note, weibull_flag (the seeds' flags: fits on few peaks), design_maximum [N],
+        dynamic [N], design_basis (FLAGGED where it rests on flagged fits), method``.
     """
     seeds = runs if isinstance(runs, pd.DataFrame) else seed_table(runs, storm_duration=storm_duration,
                                                                     quantile=quantile)
@@ -520,7 +535,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
         fitted = g["weibull_mpm"].notna()
         w_mpm = float(g.loc[fitted, "weibull_mpm"].mean()) if fitted.any() else math.nan
         w_q = float(g.loc[fitted, "weibull_quantile"].mean()) if fitted.any() else math.nan
-        w_note = "; ".join(dict.fromkeys(x for x in g["weibull_note"] if x))
+        w_note = statistics.merged_notes(g["weibull_note"])
+        w_flag = statistics.merged_notes(g.get("weibull_flag", ()))
         if fitted.any() and not fitted.all():
             w_note = f"mean of {int(fitted.sum())} of {n} seeds; " + w_note
         mean = float(g["mean"].mean())
@@ -530,6 +546,8 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds"
         elif math.isfinite(w_mpm):
             design, basis = w_mpm, f"Weibull MPM, mean over {int(fitted.sum())} seed(s)"
+            if w_flag:
+                basis += " (FLAGGED: fits on few peaks, uncertain)"
         elif math.isfinite(g_mpm):
             design, basis = g_mpm, f"Gumbel MPM over {n} seeds{short}"
         else:
@@ -540,12 +558,12 @@ def extremes_table(runs: Sequence[Run] | pd.DataFrame, *, storm_duration: float 
                      "storm": storm, "maximum_largest": float(g["maximum"].max()),
                      "maximum_mean": float(g["maximum"].mean()), "mean": mean, "std": float(g["std"].mean()),
                      "gumbel_mpm": g_mpm, "gumbel_quantile": g_q, "gumbel_note": g_note, "weibull_mpm": w_mpm,
-                     "weibull_quantile": w_q, "weibull_note": w_note, "design_maximum": design,
+                     "weibull_quantile": w_q, "weibull_note": w_note, "weibull_flag": w_flag, "design_maximum": design,
                      "dynamic": design - mean, "design_basis": basis, "method": method})
     return pd.DataFrame(rows, columns=["load_case", "line", "end", "seeds", "duration", "storm", "maximum_largest",
                                        "maximum_mean", "mean", "std", "gumbel_mpm", "gumbel_quantile", "gumbel_note",
-                                       "weibull_mpm", "weibull_quantile", "weibull_note", "design_maximum", "dynamic",
-                                       "design_basis", "method"])
+                                       "weibull_mpm", "weibull_quantile", "weibull_note", "weibull_flag",
+                                       "design_maximum", "dynamic", "design_basis", "method"])
 
 
 # ----------------------------------------------------------------------------------------------- code checks
@@ -569,7 +587,7 @@ def anchor_uplift_state(ds: xr.Dataset, line: str, info: LineInfo | None = None)
     from .checks import uplift_demand
 
     vertical, tension = _anchor_vertical(ds, line, info)
-    demand = uplift_demand(np.nan_to_num(vertical, nan=-np.inf), tension)
+    demand = uplift_demand(np.nan_to_num(vertical, nan=-np.inf), tension, 0.0 if info is None else info.weight)
     k = int(np.argmax(demand)) if np.any(demand > 0) else int(np.nanargmax(vertical))
     return float(vertical[k]), float(tension[k])
 
@@ -701,7 +719,9 @@ def _checks_of_facts(facts: dict[str, dict], extremes: pd.DataFrame, consequence
             results.append(checks.api_tension(line, e["design_maximum"], mbs, api, "dynamic"))
         for line, (force, tension) in f["uplift"].items():
             if lines is None or line in lines:
-                results.append(checks.anchor_uplift(f"anchor of {line}", force, allowed_uplift, tension))
+                info = f["info"].get(line)
+                results.append(checks.anchor_uplift(f"anchor of {line}", force, allowed_uplift, tension,
+                                                    0.0 if info is None else info.weight))
         if offset_limit is not None and not f["offsets"]:
             rows.append(_skipped(load_case, "offset", "-", "not checked: the results hold no body or platform "
                                                           "motion (body_position, platform_position)"))
@@ -727,11 +747,11 @@ def _skipped(load_case, check, item, why) -> dict:
             "status": why, "formula": "", "reference": ""}
 
 
-def _uplift_key(state: tuple[float, float]) -> tuple[float, float]:
+def _uplift_key(state: tuple[float, float], weight: float = 0.0) -> tuple[float, float]:
     """Order of two seeds' anchor states: by uplift (round-off left out), then by vertical force."""
     from .checks import uplift_demand
 
-    return float(uplift_demand(*state)), state[0]
+    return float(uplift_demand(*state, weight)), state[0]
 
 
 def _check_facts(runs: Sequence[Run]) -> dict[str, dict]:
@@ -752,7 +772,8 @@ def _add_check_facts(facts: dict[str, dict], run: Run, ds: xr.Dataset) -> None:
         f["failed"][line] = min(t, f["failed"].get(line, math.inf))
     for line in line_names(ds):
         state = anchor_uplift_state(ds, line, info.get(line))
-        if line not in f["uplift"] or _uplift_key(state) > _uplift_key(f["uplift"][line]):
+        w = info[line].weight if line in info else 0.0
+        if line not in f["uplift"] or _uplift_key(state, w) > _uplift_key(f["uplift"][line], w):
             f["uplift"][line] = state
     for body, (offset, where) in body_offsets(ds).items():
         if offset >= f["offsets"].get(body, (-math.inf, ""))[0]:
@@ -761,37 +782,20 @@ def _add_check_facts(facts: dict[str, dict], run: Run, ds: xr.Dataset) -> None:
 
 # -------------------------------------------------------------------------------------------------- fatigue
 
-def resolve_tn_curve(name: str) -> str:
-    """The key of :data:`~seacable.design.fatigue.TN_CURVES` a name stands for: the key itself, its first word
-    ("studless", "stud", "six", "spiral", "connecting") or a prefix of one key ("six_strand")."""
-    text = str(name).strip().lower().replace("-", "_").replace(" ", "_")
-    if text in fatigue.TN_CURVES:
-        return text
-    hits = [k for k in fatigue.TN_CURVES if k.split("_")[0] == text] or [
-        k for k in fatigue.TN_CURVES if k.startswith(text)]
-    if len(hits) != 1:
-        raise InputError(f"T-N curve '{name}' is not one of {', '.join(fatigue.TN_CURVES)} (DNV-OS-E301 (2010) "
-                         "Ch.2 Sec.2 Table D1). Suggested fix: e.g. --tn-curve studless.")
-    return hits[0]
+def curve_of_line(info: LineInfo | None) -> tuple[str | None, str]:
+    """The T-N curve of a line from what its result's case tells (:class:`LineInfo`: the line type's
+    ``material`` and name), and how it was chosen or why none was
+    (:func:`seacable.design.fatigue.curve_of_line_type`)."""
+    return fatigue.curve_of_line_type(None if info is None else info.material,
+                                      None if info is None else info.line_type)
 
 
 def _curve_of_type(line_type: str | None) -> str | None:
-    """The T-N curve a line type's name tells, or None."""
-    name = (line_type or "").lower()
-    if "studless" in name:
-        return "studless_chain"
-    if "stud" in name:
-        return "stud_chain"
-    if "chain" in name:
-        return "studless_chain"
-    if "spiral" in name:
-        return "spiral_strand_rope"
-    if "wire" in name or "six" in name or "strand" in name:
-        return "six_strand_rope"
-    return None
+    """The T-N curve a line type's name tells, or None (:func:`curve_of_line` with no material)."""
+    return curve_of_line(LineInfo(None, line_type, None, None, ""))[0]
 
 
-_FATIGUE_COLUMNS = ["load_case", "line", "seeds", "duration", "tn_curve", "nominal_diameter", "damage",
+_FATIGUE_COLUMNS = ["load_case", "line", "seeds", "duration", "tn_curve", "tn_basis", "nominal_diameter", "damage",
                     "damage_per_year", "life_alone", "probability", "note"]
 
 
@@ -799,10 +803,12 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
                   scatter: pd.DataFrame | str | Path | None = None) -> pd.DataFrame:
     """Miner's damage of each load case and line from the rainflow count of the fairlead tension.
 
-    The T-N curve is ``tn_curve`` (a name :func:`resolve_tn_curve` knows), else the one the line type's name
-    tells ("chain": studless chain); the stress range is the tension range over the nominal cross-section of
-    the ``nominal_diameter`` [m], else of the line type's volume-equivalent diameter over
-    :data:`VOLUME_EQUIVALENT_RATIO` (1.8 for studless chain). A load case's damage is the mean over its seeds
+    The T-N curve is ``tn_curve`` (a name :func:`resolve_tn_curve` knows), else the line type's ``material``,
+    else the one its name tells without ambiguity (:func:`curve_of_line`: "chain" alone is not enough); a line
+    whose curve cannot be told is not computed, with the reason in ``note``. The stress range is the tension
+    range over the nominal cross-section of the ``nominal_diameter`` [m], else of the line type's
+    volume-equivalent diameter over :data:`VOLUME_EQUIVALENT_RATIO` (1.8 for studless chain); a polyester
+    rope's curve is on the tension range over the line's breaking load. A load case's damage is the mean over its seeds
     of :func:`~seacable.design.fatigue.fatigue_damage`, over their mean duration. Fatigue is a limit state of
     the intact system (DNV-OS-E301 Ch.2 Sec.2 D): runs with a failed or removed line (:func:`failed_lines`)
     are left out.
@@ -816,7 +822,8 @@ def fatigue_table(runs: Sequence[Run], *, tn_curve: str | None = None, nominal_d
     Returns
     -------
     pandas.DataFrame
-        Columns ``load_case, line, seeds, duration [s], tn_curve, nominal_diameter [m], damage [-],
+        Columns ``load_case, line, seeds, duration [s], tn_curve, tn_basis (how the curve was chosen),
+        nominal_diameter [m], damage [-],
         damage_per_year [1/year] (if the load case lasted the whole year), life_alone [years] (its inverse),
         probability [-] (NaN without a scatter diagram), note`` (why a line is not computed).
     """
@@ -849,12 +856,22 @@ def _add_fatigue(acc: dict, ds: xr.Dataset, run: Run, curve_given: str | None,
     info = line_info(ds)
     for line in line_names(ds):
         a = acc.setdefault((run.load_case, line), {"damage": [], "duration": [], "note": "", "curve": None,
-                                                  "diameter": None})
+                                                  "diameter": None, "basis": ""})
         i = info.get(line)
-        curve = curve_given or _curve_of_type(None if i is None else i.line_type)
+        curve, basis = (curve_given, "given (--tn-curve)") if curve_given else curve_of_line(i)
         if curve is None:
-            a["note"] = (f"not computed: the T-N curve of line '{line}' (line type "
-                         f"'{getattr(i, 'line_type', None) or 'unknown'}') cannot be told; give --tn-curve")
+            a["note"] = f"not computed: the T-N curve of line '{line}' cannot be told: {basis}"
+            continue
+        record = line_series(ds, "fairlead_tension", line)
+        if fatigue.TN_CURVES[curve].basis == "mbs_ratio":
+            mbs = None if i is None else i.breaking_load
+            if mbs is None:
+                a["note"] = (f"not computed: the {fatigue.TN_CURVES[curve].name} curve of line '{line}' is on the "
+                             "tension range over the breaking load, and the line has no breaking_load")
+                continue
+            a["damage"].append(fatigue.fatigue_damage(record, curve, breaking_load=mbs))
+            a["duration"].append(duration)
+            a["curve"], a["diameter"], a["basis"] = curve, math.nan, basis
             continue
         d = nominal_diameter
         if d is None and i is not None and i.diameter:
@@ -863,9 +880,9 @@ def _add_fatigue(acc: dict, ds: xr.Dataset, run: Run, curve_given: str | None,
             a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
                          "no line type); give --nominal-diameter")
             continue
-        a["damage"].append(fatigue.fatigue_damage(line_series(ds, "fairlead_tension", line), curve, diameter=d))
+        a["damage"].append(fatigue.fatigue_damage(record, curve, diameter=d))
         a["duration"].append(duration)
-        a["curve"], a["diameter"] = curve, d
+        a["curve"], a["diameter"], a["basis"] = curve, d, basis
     return True
 
 
@@ -877,22 +894,24 @@ def _fatigue_of(acc: dict, intact: Sequence[Run], scatter) -> pd.DataFrame:
         n = len(a["damage"])
         if n == 0:
             rows.append({"load_case": load_case, "line": line, "seeds": 0, "duration": math.nan, "tn_curve": "",
-                         "nominal_diameter": math.nan, "damage": math.nan, "damage_per_year": math.nan,
+                         "tn_basis": "", "nominal_diameter": math.nan, "damage": math.nan, "damage_per_year": math.nan,
                          "life_alone": math.nan, "probability": probability.get(load_case, math.nan),
                          "note": a["note"]})
             continue
         damage, duration = float(np.mean(a["damage"])), float(np.mean(a["duration"]))
         per_year = damage / duration * fatigue.SECONDS_PER_YEAR
         rows.append({"load_case": load_case, "line": line, "seeds": n, "duration": duration, "tn_curve": a["curve"],
-                     "nominal_diameter": a["diameter"], "damage": damage, "damage_per_year": per_year,
+                     "tn_basis": a["basis"], "nominal_diameter": a["diameter"], "damage": damage, "damage_per_year": per_year,
                      "life_alone": math.inf if per_year == 0 else 1.0 / per_year,
                      "probability": probability.get(load_case, math.nan), "note": ""})
     return pd.DataFrame(rows, columns=_FATIGUE_COLUMNS)
 
 
-def fatigue_life_table(fatigue_rows: pd.DataFrame, *, design_fatigue_factor: float = 1.0) -> pd.DataFrame:
+def fatigue_life_table(fatigue_rows: pd.DataFrame, *,
+                       design_fatigue_factor: float = fatigue.DNV_DESIGN_FATIGUE_FACTOR) -> pd.DataFrame:
     """The fatigue life of each line over the scatter diagram (:func:`~seacable.design.fatigue.fatigue_life`) from
-    a :func:`fatigue_table` made with one.
+    a :func:`fatigue_table` made with one, over the design fatigue factor (default DNV-OS-E301's 5,
+    :data:`~seacable.design.fatigue.DNV_DESIGN_FATIGUE_FACTOR`).
 
     Returns
     -------
@@ -942,7 +961,9 @@ def design_tables(source, *, storm_duration: float | None = None, quantile: floa
     -------
     runs : list of Run
     tables : dict of pandas.DataFrame
-        ``seeds``, ``extremes``, ``checks`` and ``fatigue``.
+        ``seeds``, ``extremes``, ``checks``, ``fatigue``, ``components`` (per load case, which parts of the load
+        its first run modelled: :func:`~seacable.design.combination.modelled_components`) and ``combined`` (the
+        LF/WF parts and the standards' combined maxima: :func:`~seacable.design.combination.combined_table`).
     """
     _check_storm(storm_duration)
     statistics._probability(quantile)
@@ -953,8 +974,11 @@ def design_tables(source, *, storm_duration: float | None = None, quantile: floa
     damage: dict = {}
     intact: list[Run] = []
 
+    components: dict[str, list[dict]] = {}
+
     def take(run: Run, ds: xr.Dataset) -> None:
         seed_rows.extend(_seed_rows(run, ds, storm_duration, quantile))
+        components.setdefault(run.load_case, combination.modelled_components(case_data(ds)))
         _add_check_facts(facts, run, ds)
         if _add_fatigue(damage, ds, run, curve_given, nominal_diameter):
             intact.append(run)
@@ -965,5 +989,8 @@ def design_tables(source, *, storm_duration: float | None = None, quantile: floa
     seeds = _seed_frame(seed_rows)
     extremes = extremes_table(seeds, storm_duration=storm_duration, quantile=quantile)
     checks = _checks_of_facts(facts, extremes, consequence_class, offset_limit, allowed_uplift, None)
+    parts = pd.DataFrame([{"load_case": lc, **c} for lc, cs in components.items() for c in cs],
+                         columns=["load_case", "component", "status", "how"])
     return runs, {"seeds": seeds, "extremes": extremes, "checks": checks,
-                  "fatigue": _fatigue_of(damage, intact, scatter)}
+                  "fatigue": _fatigue_of(damage, intact, scatter), "components": parts,
+                  "combined": combination.combined_table(seeds, extremes, storm_duration)}

@@ -249,3 +249,18 @@ def test_anchor_and_offset_refuse_bad_input():
         offset_check("B", 2.0, 0.0)
     with pytest.raises(InputError, match=r"body 'B' offset must be a finite number, got nan m"):
         offset_check("B", float("nan"), 30.0)
+
+
+def test_anchor_round_off_of_a_slack_grounded_line_is_scaled_by_its_weight():
+    """A slack line lying on the seabed has an anchor tension near zero: 1e-3 of it is no tolerance, and the
+    solver's round-off of a few newtons up (here 5 N, the contact's residual) would fail a drag anchor. With the
+    line's submerged weight W = 698 N/m x 902 m = 630 kN, anything up to 1e-3 W = 630 N is round-off; a real
+    pull of 5 kN still fails."""
+    from seacable.design.checks import uplift_demand
+
+    weight = 698.094 * 902.2
+    assert anchor_uplift("A1", 5.0, tension=1.0).passed is False  # the tension's tolerance alone: 1 mN
+    ok = anchor_uplift("A1", 5.0, tension=1.0, weight=weight)
+    assert ok.passed and ok.demand == 0.0 and "0.001 W_line if larger" in ok.formula
+    assert uplift_demand([600.0, 640.0], [0.0, 0.0], weight).tolist() == [0.0, 640.0]
+    assert anchor_uplift("A1", 5.0e3, tension=1.0, weight=weight).passed is False

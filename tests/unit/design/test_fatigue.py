@@ -43,9 +43,52 @@ def test_damage_of_constant_amplitude_cycles_is_the_t_n_curve():
     rope = 4e6 / (math.pi * 0.05**2) / 1e6
     assert fatigue_damage(tension, "spiral_strand_rope", diameter=0.1) == pytest.approx(
         1000 * rope**4.8 / 1.7e17, rel=1e-12)
-    # the curves of DNV-OS-E301 (2010) Table D1
+    # the curves of DNV-OS-E301 (2010) Table D1, and its polyester rope curve (on R = range / MBS)
     assert [(c.a_d, c.m) for c in TN_CURVES.values()] == [(1.2e11, 3.0), (6.0e10, 3.0), (1.2e10, 3.0),
-                                                          (3.4e14, 4.0), (1.7e17, 4.8)]
+                                                          (3.4e14, 4.0), (1.7e17, 4.8), (0.259, 13.46)]
+
+
+def test_polyester_damage_is_its_curve_on_the_ratio_to_the_breaking_strength():
+    """1000 cycles of 1.5 MN on a polyester rope of MBS 15 MN: R = 0.1, N = 0.259 R^-13.46 (DNV-OS-E301 (2010)
+    Ch.2 Sec.2 D), damage 1000 / N; the curve needs the breaking strength, not a diameter."""
+    tension = np.r_[np.tile([2e6, 3.5e6], 1000), 2e6]
+    assert fatigue_damage(tension, "polyester_rope", breaking_load=15e6) == pytest.approx(
+        1000 * 0.1**13.46 / 0.259, rel=1e-12)
+    with pytest.raises(InputError, match="on the tension range over the breaking strength: give breaking_load"):
+        fatigue_damage(tension, "polyester_rope", diameter=0.2)
+    with pytest.raises(InputError, match="has no nominal area"):
+        nominal_area("polyester_rope", 0.2)
+
+
+def test_the_line_type_tells_its_curve_and_an_ambiguous_name_is_refused():
+    """The material given wins; a name tells the curve only when it names one (a chain could be studless or
+    stud-link, a wire rope six or spiral strand: refused, not guessed as spiral strand was in the OC3 demo)."""
+    from seacable.design.fatigue import curve_of_line_type
+
+    assert curve_of_line_type("studless_chain", "oc3")[0] == "studless_chain"
+    assert curve_of_line_type(None, "R3 studless chain 76 mm")[0] == "studless_chain"
+    assert curve_of_line_type(None, "stud link chain")[0] == "stud_chain"
+    assert curve_of_line_type(None, "spiral_strand_rope")[0] == "spiral_strand_rope"
+    assert curve_of_line_type(None, "six strand wire")[0] == "six_strand_rope"
+    assert curve_of_line_type(None, "polyester")[0] == "polyester_rope"
+    for name, why in (("chain", "studless or stud-link chain: ambiguous"), ("wire", "six-strand or spiral-strand"),
+                      ("oc3", "says nothing of its material"), ("studless spiral", "ambiguous")):
+        curve, reason = curve_of_line_type(None, name)
+        assert curve is None and why in reason and "material" in reason, reason
+    assert curve_of_line_type("other", "power cable")[0] is None
+
+
+def test_the_design_fatigue_factor_defaults_to_dnv():
+    """DNV-OS-E301 (2010) Ch.2 Sec.2 D: gamma_F = 5 for adjacent lines' damage ratio d_F <= 0.8, 5 + 3 (d_F - 0.8)
+    / 0.2 above (8 at d_F = 1); fatigue_life divides the life by 5 unless told otherwise."""
+    from seacable.design.fatigue import DNV_DESIGN_FATIGUE_FACTOR, dnv_design_fatigue_factor
+
+    assert DNV_DESIGN_FATIGUE_FACTOR == 5.0
+    assert [dnv_design_fatigue_factor(d) for d in (0.0, 0.8, 0.9, 1.0)] == pytest.approx([5.0, 5.0, 6.5, 8.0])
+    per_year = 1e-4 / 10800.0 * SECONDS_PER_YEAR
+    assert fatigue_life([1e-4], 10800.0, [1.0]) == pytest.approx(1 / per_year / 5, rel=1e-12)
+    with pytest.raises(InputError, match="damage_ratio d_F must lie between 0 and 1"):
+        dnv_design_fatigue_factor(1.5)
 
 
 @functools.cache
@@ -89,7 +132,8 @@ def test_fatigue_life_over_a_scatter_diagram():
     """Two sea states, 3 h records: damages 1e-4 and 4e-4, probabilities 0.75 and 0.25: damage per year
     (0.75e-4 + 1e-4) / 10800 s x 1 year, life its inverse (1/3 of it with a design fatigue factor of 3)."""
     per_year = (0.75 * 1e-4 + 0.25 * 4e-4) / 10800.0 * SECONDS_PER_YEAR
-    assert fatigue_life([1e-4, 4e-4], 10800.0, [0.75, 0.25]) == pytest.approx(1 / per_year, rel=1e-12)
+    assert fatigue_life([1e-4, 4e-4], 10800.0, [0.75, 0.25], design_fatigue_factor=1) == pytest.approx(
+        1 / per_year, rel=1e-12)
     assert fatigue_life([1e-4, 4e-4], 10800.0, [0.75, 0.25], design_fatigue_factor=3) == pytest.approx(
         1 / per_year / 3, rel=1e-12)
     assert fatigue_life([0.0], 10800.0, [1.0]) == math.inf
@@ -129,3 +173,18 @@ def test_a_scatter_diagram_is_checked_when_read(tmp_path, probabilities, match):
     path.write_text("hs,tp,probability\n2.0,0.0,0.6\n4.0,9.0,0.4\n")
     with pytest.raises(InputError, match=r"line 2: tp = 0 s; it must be a finite number > 0 s"):
         read_scatter(path)
+
+
+def test_the_oc3_demo_line_is_a_studless_chain():
+    """The OC3-Hywind demo's line type says what it is (issue 39: its chain was counted on the spiral strand curve,
+    a life 1.8e5 times too long): studless chain, and its sea takes DNV-RP-C205's peakedness (no gamma given)."""
+    from pathlib import Path
+
+    import seacable as sc
+    from seacable.design.fatigue import curve_of_line_type
+
+    case = sc.load_case(Path(__file__).parents[3] / "examples" / "oc3_hywind_storm.yaml")
+    lt = case.line_types["oc3"]
+    assert curve_of_line_type(lt.material, "oc3") == ("studless_chain", "the line type's material (studless_chain)")
+    assert case.environment.waves.gamma is None
+    assert case.environment.waves.peak_enhancement() == pytest.approx(1.932, abs=5e-4)

@@ -5,6 +5,7 @@ process of unit standard deviation): F_max(x) = (1 - exp(-x^2/2))^N."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -67,3 +68,48 @@ def test_peaks_are_the_largest_values_between_mean_up_crossings():
 def test_bad_statistics_input_is_refused_clearly(call, match):
     with pytest.raises(InputError, match=match):
         call()
+
+
+def _spread_of_weibull_mpm(n_peaks: int, records: int, seed: int) -> tuple[float, float, list[str]]:
+    """10 % and 90 % quantiles, over ``records`` records of ``n_peaks`` unit Rayleigh peaks, of the Weibull MPM
+    of a 1000-peak storm over the exact mode; the flags of the fits."""
+    rng = np.random.default_rng(seed)
+    mode, _ = exact_maximum(1000)
+    got, flags = [], []
+    for _ in range(records):
+        record = np.ravel(np.column_stack([rng.rayleigh(1.0, n_peaks + 1), -rng.rayleigh(1.0, n_peaks + 1)]))
+        w = weibull_maximum(record, duration=1.0, storm=1000.0 / n_peaks)
+        got.append(w.most_probable / mode)
+        flags.append(w.flag)
+    lo, hi = np.percentile(got, [10, 90])
+    return float(lo), float(hi), flags
+
+
+def test_a_weibull_fit_on_few_peaks_is_refused_or_flagged():
+    """The 3-hour maximum (1000 peaks) from a record of n Rayleigh peaks: its 90 % band over records spans
+    0.73-1.58 of the exact mode from 25 peaks (100 records; the OC3 demo's seeds gave 708-1800 kN), 0.83-1.33
+    from 50, 0.92-1.12 from 200. So fewer than 50 peaks are refused (MIN_PEAKS), fewer than 200 flagged
+    (RELIABLE_PEAKS). Here 25 records of 60 and of 250 peaks (a few seconds of fits): their 10-90 % bands
+    measured 0.79-1.16 and 0.92-1.08 (40 records, three seeds: widths 0.37-0.42 and 0.15-0.18 for 5-95 %);
+    bounds: wider than 0.2 from 60 peaks, inside 0.85-1.15 from 250."""
+    from seacable.design.statistics import MIN_PEAKS, RELIABLE_PEAKS
+
+    assert (MIN_PEAKS, RELIABLE_PEAKS) == (50, 200)
+    few = np.ravel(np.column_stack([np.ones(MIN_PEAKS), -np.ones(MIN_PEAKS)]))  # 49 up-crossings, 48 peaks between them
+    with pytest.raises(InputError, match=r"48 peaks .* too few for a Weibull fit \(50 at least"):
+        weibull_maximum(few, duration=100.0)
+    lo, hi, flags = _spread_of_weibull_mpm(60, 25, seed=5)
+    assert hi - lo > 0.2, (lo, hi)
+    assert all(re.match(r"uncertain: a Weibull fit to \d+ peaks \(fewer than 200\)", f) for f in flags), flags[0]
+    lo, hi, flags = _spread_of_weibull_mpm(250, 25, seed=6)
+    assert 0.85 < lo and hi < 1.15, (lo, hi)
+    assert not any(flags)
+
+
+def test_the_seeds_notes_of_a_weibull_fit_merge_into_one():
+    """Five seeds refused for 24 to 30 peaks make one note (the report listed five, one per row and seed)."""
+    from seacable.design.statistics import merged_notes
+
+    notes = [f"not fitted: the record has {n} peaks (mean up-crossings), too few" for n in (30, 24, 27)] + [""]
+    assert merged_notes(notes) == "3 seeds: not fitted: the record has 24-30 peaks (mean up-crossings), too few"
+    assert merged_notes(["a", "b", "a", float("nan")]) == "a; b"

@@ -94,7 +94,9 @@ def test_too_few_seeds_for_gumbel_says_so_and_uses_the_weibull_fit(storm):
     ext = summary.extremes_table(runs)
     row = ext.iloc[0]
     assert math.isnan(row["gumbel_mpm"]) and "at least 5" in row["gumbel_note"] and "got 3" in row["gumbel_note"]
-    assert row["design_basis"] == "Weibull MPM, mean over 3 seed(s)"
+    # the fixture's records hold fewer than 200 peaks: the basis says the Weibull fits are flagged (issue 39)
+    assert row["design_basis"] == "Weibull MPM, mean over 3 seed(s) (FLAGGED: fits on few peaks, uncertain)"
+    assert row["weibull_flag"].startswith("3 seeds: uncertain: a Weibull fit to ")  # merged over the seeds
 
 
 def test_a_sweep_folder_groups_seeds_into_load_cases(synth, tmp_path):
@@ -260,9 +262,11 @@ def test_fatigue_life_over_a_two_state_scatter_diagram_is_the_closed_form(synth,
     assert list(fat["damage"]) == pytest.approx(damage, rel=1e-12)  # rainflow counts exactly: rounding only
     assert list(fat["probability"]) == [0.75, 0.25]
     assert list(fat["life_alone"]) == pytest.approx([duration / d / SECONDS_PER_YEAR for d in damage], rel=1e-12)
-    life = summary.fatigue_life_table(fat)
+    life = summary.fatigue_life_table(fat, design_fatigue_factor=1.0)
     want = 1.0 / (SECONDS_PER_YEAR * (0.75 * damage[0] / duration + 0.25 * damage[1] / duration))
     assert life["life"].iloc[0] == pytest.approx(want, rel=1e-12)
+    # by default DNV-OS-E301's design fatigue factor, 5
+    assert summary.fatigue_life_table(fat)["life"].iloc[0] == pytest.approx(want / 5, rel=1e-12)
     assert summary.fatigue_life_table(fat, design_fatigue_factor=3.0)["life"].iloc[0] == pytest.approx(want / 3,
                                                                                                       rel=1e-12)
     # the T-N curve and diameter given: a spiral strand rope of 0.1 m, D = n s^4.8 / 1.7e17
@@ -300,8 +304,9 @@ def test_tn_curve_names():
     assert [summary.resolve_tn_curve(n) for n in ("studless", "stud", "six_strand", "spiral", "Studless-Chain",
                                                   "connecting")] == [
         "studless_chain", "stud_chain", "six_strand_rope", "spiral_strand_rope", "studless_chain", "connecting_link"]
-    with pytest.raises(InputError, match="T-N curve 'polyester' is not one of"):
-        summary.resolve_tn_curve("polyester")
+    assert summary.resolve_tn_curve("polyester") == "polyester_rope"  # DNV-OS-E301's fibre rope curve
+    with pytest.raises(InputError, match="T-N curve 'nylon' is not one of"):
+        summary.resolve_tn_curve("nylon")
 
 
 def test_results_of_other_analyses_are_refused(synth):
@@ -328,7 +333,8 @@ def test_a_sea_state_of_several_headings_shares_its_probability(synth, tmp_path)
     area = 2 * math.pi * (0.171 / 1.8) ** 2 / 4
     damage = [100 * (r / area / 1e6) ** 3 / 6.0e10 for r in (1.0e6, 2.0e6)]
     want = 1.0 / (SECONDS_PER_YEAR * 0.5 * (damage[0] + damage[1]) / (200 * DT))
-    assert summary.fatigue_life_table(fat)["life"].iloc[0] == pytest.approx(want, rel=1e-12)
+    assert summary.fatigue_life_table(fat, design_fatigue_factor=1.0)["life"].iloc[0] == pytest.approx(want,
+                                                                                                      rel=1e-12)
 
 
 def test_fatigue_counts_the_intact_runs_only(synth, tmp_path):
@@ -376,6 +382,15 @@ def test_design_tables_are_the_tables_made_one_by_one_from_one_read_of_each_file
     want = {"seeds": seeds, "extremes": ext,
             "checks": summary.checks_table(found, ext, consequence_class=2, offset_limit=5.0, allowed_uplift=1e6),
             "fatigue": summary.fatigue_table(found, tn_curve="studless", scatter=scatter)}
+    # issue 39: the load components each load case modelled, and the LF/WF parts and their combinations
+    from seacable.design.combination import combined_table, modelled_components
+
+    rows = []
+    for lc, first in (("hs = 4 m, tp = 10 s", "0000.nc"), ("hs = 8 m, tp = 10 s", "0002.nc")):
+        with xr.open_dataset(folder / "cases" / first) as ds:
+            rows += [{"load_case": lc, **c} for c in modelled_components(summary.case_data(ds))]
+    want["components"] = pd.DataFrame(rows, columns=["load_case", "component", "status", "how"])
+    want["combined"] = combined_table(seeds, ext, 10800.0)
 
     opened = []
     open_dataset = xr.open_dataset
