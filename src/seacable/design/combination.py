@@ -288,13 +288,15 @@ def modelled_components(case: dict | None) -> list[dict]:
     else:
         out.append({"component": names[0], "status": "NOT MODELLED", "how": "no waves in the case"})
     newman = [k for k, h in hydro.items() if h.get("drift", "newman") == "newman"]
-    mean_drift = [k for k, h in hydro.items() if h.get("drift", "newman") in ("mean", "newman")]
-    if newman and irregular:
-        out.append({"component": names[1], "status": "modelled",
-                    "how": f"Newman's slow drift on {', '.join(newman)} (hydrodynamic database)"})
+    qtf = [k for k, h in hydro.items() if h.get("drift") == "qtf"]
+    mean_drift = [k for k, h in hydro.items() if h.get("drift", "newman") in ("mean", "newman", "qtf")]
+    if (newman or qtf) and irregular:
+        how = "; ".join(([f"Newman's slow drift on {', '.join(newman)}"] if newman else [])
+                        + ([f"the full QTF's slow drift on {', '.join(qtf)}"] if qtf else []))
+        out.append({"component": names[1], "status": "modelled", "how": f"{how} (hydrodynamic database)"})
     else:
         why = ("the bodies follow prescribed (RAO) motions: first order only" if motions and not hydro else
-               "no free body with a hydrodynamic database and drift: newman in an irregular sea")
+               "no free body with a hydrodynamic database and drift: newman or qtf in an irregular sea")
         out.append({"component": names[1], "status": "NOT MODELLED",
                     "how": f"{why}; the slow drift near the surge, sway and yaw periods is missing from the "
                            "extremes (non-conservative)"})
@@ -321,7 +323,8 @@ def modelled_components(case: dict | None) -> list[dict]:
     current = env.get("current") or {}
     flowing = isinstance(current, dict) and (_nonzero([current.get("speed", 0.0)]) or _nonzero(current.get("speeds")))
     if flowing:
-        on = "the lines" + (" and bodies" if any(b.get("current") for b in bodies.values()) else "")
+        hulls = [k for k, b in bodies.items() if b.get("current") or b.get("quadratic_damping")]
+        on = "the lines" + (f" and {', '.join(hulls)} (current areas or quadratic drag)" if hulls else "")
         out.append({"component": names[4], "status": "modelled", "how": f"current drag on {on}"})
     elif steady:
         out.append({"component": names[4], "status": "steady only",

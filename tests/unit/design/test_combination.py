@@ -79,4 +79,9 @@ def test_modelled_components_say_what_the_oc3_demo_leaves_out():
             "bodies": {"hull": {"kind": "free", "hydrodynamics": {"file": "hull", "drift": "newman"},
                                 "wind": {"height": 10.0}}}}
     assert {c["status"] for c in modelled_components(full)} == {"modelled"}
+    full["bodies"]["hull"]["hydrodynamics"]["drift"] = "qtf"  # the full QTF's slow drift
+    full["bodies"]["hull"]["current"] = {"surge": [900.0]}
+    rows = {c["component"]: c for c in modelled_components(full)}
+    assert {r["status"] for r in rows.values()} == {"modelled"}
+    assert "full QTF" in rows["LF slow drift"]["how"] and "hull (current areas" in rows["current"]["how"]
     assert {c["status"] for c in modelled_components(None)} == {"unknown"}
