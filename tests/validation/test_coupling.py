@@ -145,3 +145,10 @@ def test_one_catenary_fairlead_force_and_stiffness_are_irvines():
     assert K == pytest.approx(expect, rel=1e-6, abs=1e-6 * np.abs(K2).max())
     f0 = coupling.init(x)
     assert f0 == pytest.approx([-H, 0.0, -V], rel=1e-3, abs=1e-3 * H)
+
+
+def test_the_example_hulls_surge_stiffness_is_oc3s():
+    """examples/coupling_hull.yaml is OC3-Hywind's mooring: its surge stiffness at rest is the definition's
+    41,180 N/m (Jonkman 2010, NREL/TP-500-47535, Table 5-1, to its four figures: 0.05 %)."""
+    moor = Coupling(Path(__file__).parents[2] / "examples" / "coupling_hull.yaml")
+    assert moor.stiffness(np.zeros(6))[0, 0] == pytest.approx(41180.0, rel=5e-4)

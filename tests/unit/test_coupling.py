@@ -1,0 +1,117 @@
+"""The coupling interface's contract (:mod:`seacable.coupling`): its stiffness is the derivative of its static
+forces, the dataset at close is system_dynamic's, bodies of kind 'coupled' are coupled, and bad inputs get one
+clear error each."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seacable.coupling import Coupling
+from seacable.errors import InputError
+
+BODY_DECK = Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "MoorDyn" / "example" / "body.txt"
+
+
+def _case(kind="coupled", **analysis):
+    from seacable.system.case import SystemCase
+
+    return SystemCase.parse({
+        "line_types": {"chain": {"diameter": 0.09, "mass_per_length": 77.7, "axial_stiffness": 3.84e8}},
+        "environment": {"depth": 300.0},
+        "points": {"a1": {"kind": "fixed", "position": [400.0, 0.0, -300.0]},
+                   "a2": {"kind": "fixed", "position": [-200.0, 346.4, -300.0]},
+                   "f1": {"kind": "body", "body": "hull", "position": [5.0, 0.0, -20.0]},
+                   "f2": {"kind": "body", "body": "hull", "position": [-2.5, 4.33, -20.0]}},
+        "bodies": {"hull": {"kind": kind, "position": [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]}},
+        "lines": {"l1": {"line_type": "chain", "length": 480.0, "end_a": "a1", "end_b": "f1", "n_elements": 12},
+                  "l2": {"line_type": "chain", "length": 480.0, "end_a": "a2", "end_b": "f2", "n_elements": 12}},
+        "analysis": {"type": "system_dynamic", "duration": 1.0, **analysis}})
+
+
+@pytest.fixture(scope="module")
+def hull():
+    return Coupling(_case(), time_step=0.1)
+
+
+def test_a_body_of_kind_coupled_is_a_prescribed_body_and_its_six_dofs_are_coupled(hull):
+    assert hull.system.bodies["hull"].kind == "prescribed"
+    assert hull.dof_names == tuple(f"body hull {d}" for d in ("x", "y", "z", "roll", "pitch", "yaw"))
+    assert hull.n_dof == 6
+
+
+@pytest.mark.parametrize("offset", [np.zeros(6), np.array([8.0, -3.0, 1.0, 0.0, 0.0, 0.0])], ids=["rest", "offset"])
+def test_the_stiffness_is_minus_the_derivative_of_the_static_forces(hull, offset):
+    """K = -dF/dx by central differences of the static forces (1 cm, 1e-4 rad: their truncation error, O(h^2), is
+    ~1e-6 of the entries; 1e-4 of the largest entry of each column is left for the statics' 1e-10 residual divided
+    by h). The rotations at zero angles: the Euler increments are the small rotations of the stiffness."""
+    x = offset.copy()
+    K = hull.stiffness(x)
+    steps = np.array([0.01, 0.01, 0.01, 1e-4, 1e-4, 1e-4])
+    fd = np.zeros((6, 6))
+    for j in range(6):
+        e = np.zeros(6)
+        e[j] = steps[j]
+        fd[:, j] = -(hull.static_forces(x + e) - hull.static_forces(x - e)) / (2 * steps[j])
+    for j in range(6):
+        assert K[:, j] == pytest.approx(fd[:, j], abs=1e-4 * np.abs(fd).max()), j
+    assert K[0, 0] > 0 and K[2, 2] > 0  # restoring in surge and heave
+
+
+def test_init_step_and_close_give_system_dynamics_dataset(hull):
+    """A short surge: the Dataset at close has system_dynamic's variables, the coupled DOFs and forces at every kept
+    time, and the forces at close are those step returned."""
+    f0 = hull.init(np.zeros(6))
+    assert f0 == pytest.approx(hull.static_forces(np.zeros(6)), rel=2e-2, abs=1e-2 * np.abs(f0).max())
+    forces = [f0]
+    for k in range(4):
+        x = np.zeros(6)
+        x[0] = 0.5 * (k + 1)
+        forces.append(hull.step(x, np.r_[2.5, np.zeros(5)], 0.2 * k, 0.2))
+    assert forces[-1][0] < forces[0][0]  # pulled back as it surges
+    assert set(hull.tensions()) == {"l1", "l2"} and hull.fast_tensions().shape == (2, 4)
+    assert hull.node_positions("l1").shape == (13, 3)
+    ds = hull.close()
+    for name in ("x", "y", "z", "segment_tension", "fairlead_tension", "anchor_tension", "body_position",
+                 "coupled_position", "coupled_force"):
+        assert name in ds
+    assert ds.time.values == pytest.approx([0.0, 0.2, 0.4, 0.6, 0.8])
+    assert ds.coupled_force.values == pytest.approx(np.array(forces))
+    assert ds.body_position.sel(body="hull", dof="x").values == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
+
+
+def test_bad_inputs_get_one_clear_error_each():
+    c = Coupling(_case(), time_step=0.1)
+    with pytest.raises(InputError, match="step before init"):
+        c.step(np.zeros(6), np.zeros(6), 0.0, 0.1)
+    with pytest.raises(InputError, match="x must have 6 values .* got 3"):
+        c.init(np.zeros(3))
+    bad = np.zeros(6)
+    bad[4] = math.nan
+    with pytest.raises(InputError, match=r"x\[4\] \(body hull pitch\) must be a finite number"):
+        c.init(bad)
+    c.init(np.zeros(6))
+    c.step(np.zeros(6), np.zeros(6), 0.0, 0.1)
+    with pytest.raises(InputError, match="t = 0 s goes back: the coupling is at t = 0.1 s"):
+        c.step(np.zeros(6), np.zeros(6), 0.0, 0.1)
+    with pytest.raises(InputError, match="skips ahead"):
+        c.step(np.zeros(6), np.zeros(6), 0.5, 0.1)
+    with pytest.raises(InputError, match="dt must be a finite time step > 0 s"):
+        c.step(np.zeros(6), np.zeros(6), 0.1, -0.1)
+    with pytest.raises(InputError, match=r"xd\[0\] .* must be a finite number"):
+        c.step(np.zeros(6), np.r_[math.inf, np.zeros(5)], 0.1, 0.1)
+    with pytest.raises(InputError, match="no coupled object"):
+        Coupling(_case(kind="fixed"))
+    with pytest.raises(InputError, match="line 'l3' is not in the system"):
+        c.node_positions("l3")
+
+
+def test_a_moordyn_deck_with_a_coupled_body_reads_as_a_coupling():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        c = Coupling(BODY_DECK)
+    assert c.dof_names[0] == "body body1 x" and c.n_dof == 6
