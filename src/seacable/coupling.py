@@ -23,6 +23,9 @@ and three per coupled point:
   ``(Fx, Fy, Fz, Mx, My, Mz)`` [N, N m], global axes, the moment about the reference point;
 - a point of kind ``coupled`` is ``(x, y, z)`` [m]; its force ``(Fx, Fy, Fz)`` [N].
 
+MoorDyn 2.7 turns a coupled body by ``Rx(roll) Ry(pitch) Rz(yaw)`` (checked against ``moordyn.GetPointPos``: the
+two agree to first order in the angles only); ``Coupling(..., angles="moordyn")`` takes the angles and their rates
+in MoorDyn's convention and converts them (the forces, moments and stiffness are in global axes either way).
 Bodies come first, in the system's order, then points in theirs (:attr:`Coupling.dof_names` lists them). The
 force is the force the lines put on the coupled object (MoorDyn's sign): each of its nodes' line forces, weight
 and drag of the half elements, less their inertia (``F - M a`` of the node), and the point's own net weight and
@@ -134,6 +137,9 @@ class Coupling:
         is kept); default every step. [s]
     tolerance
         Newton tolerance of the statics and the steps, relative. [-]
+    angles
+        ``"seacable"`` (``R = Rz(yaw) Ry(pitch) Rx(roll)``, MoorPy's) or ``"moordyn"`` (``R = Rx(roll) Ry(pitch)
+        Rz(yaw)``, MoorDyn 2.7's): the convention of the coupled bodies' angles in ``x`` and ``xd``.
 
     Attributes
     ----------
@@ -148,7 +154,7 @@ class Coupling:
     """
 
     def __init__(self, case, *, time_step: float | None = None, n_elements: int | None = None,
-                 output_interval: float | None = None, tolerance: float = 1e-8):
+                 output_interval: float | None = None, tolerance: float = 1e-8, angles: str = "seacable"):
         from . import _validate
         from .system.case import SystemDynamicAnalysis
 
@@ -165,6 +171,10 @@ class Coupling:
             raise InputError(f"n_elements must be a whole number in 1..100000, got {n_elements!r}. Suggested fix: "
                              "give the elements per line, or None for each line's own.")
         self.n_elements = n_elements
+        if angles not in ("seacable", "moordyn"):
+            raise InputError(f"angles must be 'seacable' (Rz Ry Rx) or 'moordyn' (Rx Ry Rz), got {angles!r}. "
+                             "Suggested fix: angles='moordyn' for a code written for MoorDyn's API.")
+        self.angles = angles
         system = self.case.system()
         self.system = system
         bodies = [n for n, b in system.bodies.items() if b.kind == "prescribed"]
@@ -202,6 +212,7 @@ class Coupling:
         self.time = None
         self.forces = None
         self._fe = None
+        self._state = "new"  # 'new', 'running', 'failed' (a step did not converge), 'closed'
 
     # ------------------------------------------------------------------------------------------- inputs
 
@@ -223,6 +234,30 @@ class Coupling:
             raise InputError(f"{name}[{k}] ({self.dof_names[k]}) must be a finite number in {unit}, got {v[k]}. "
                              "Suggested fix: check the coupled code's state before passing it (no NaN or inf).")
         return v
+
+    def _convert(self, x: np.ndarray, xd: np.ndarray | None, near: np.ndarray | None = None):
+        """``x`` and ``xd`` with the bodies' angles in seacable's convention (``angles="moordyn"``: from MoorDyn's
+        ``Rx Ry Rz``; the Euler branch nearest ``near``'s angles), the rates mapped through the angular velocity."""
+        if self.angles == "seacable" or not self.bodies:
+            return x, xd
+        from .system.statics.model import euler, euler_rate_map
+
+        x, xd = x.copy(), None if xd is None else xd.copy()
+        for k in range(0, 6 * len(self.bodies), 6):
+            a, b, c = x[k + 3:k + 6]
+            ca, sa, cb, sb, cc, sc = math.cos(a), math.sin(a), math.cos(b), math.sin(b), math.cos(c), math.sin(c)
+            rx = np.array([[1.0, 0.0, 0.0], [0.0, ca, -sa], [0.0, sa, ca]])
+            ry = np.array([[cb, 0.0, sb], [0.0, 1.0, 0.0], [-sb, 0.0, cb]])
+            rz = np.array([[cc, -sc, 0.0], [sc, cc, 0.0], [0.0, 0.0, 1.0]])
+            ang = euler(rx @ ry @ rz)
+            if near is not None:
+                ref = near[k + 3:k + 6]
+                ang = ref + (ang - ref + np.pi) % (2 * np.pi) - np.pi
+            if xd is not None:  # w = rate_a e_x + rate_b Rx e_y + rate_c Rx Ry e_z
+                E = np.column_stack([np.array([1.0, 0.0, 0.0]), rx[:, 1], (rx @ ry)[:, 2]])
+                xd[k + 3:k + 6] = np.linalg.lstsq(euler_rate_map(ang), E @ xd[k + 3:k + 6], rcond=None)[0]
+            x[k + 3:k + 6] = ang
+        return x, xd
 
     def _system_at(self, x: np.ndarray, free_pose=None):
         """The mooring system with the coupled bodies and points at ``x`` (free bodies at ``free_pose``)."""
@@ -309,8 +344,11 @@ class Coupling:
         from .system.dynamics import frames as DF
         from .system.dynamics.loop import SystemState, initial_accelerations
 
-        x = self._dofs("x", x, "m and rad")
-        xd = self._dofs("xd", xd, "m/s and rad/s", allow_none=True)
+        given = self._dofs("x", x, "m and rad")
+        given_d = self._dofs("xd", xd, "m/s and rad/s", allow_none=True)
+        x, xd = self._convert(given, given_d)
+        if self._state == "closed":
+            raise InputError("init after close: the coupling has ended. Suggested fix: create a new Coupling.")
         if not math.isfinite(t):
             raise InputError(f"t must be a finite time in s, got {t}. Suggested fix: start at t = 0.")
         system = self._system_at(x)
@@ -357,12 +395,14 @@ class Coupling:
         self._rker = np.zeros((nb, 1, 6, 6))
         self._rhist, self._rhead = np.zeros((nb, 1, 6)), np.zeros(nb, np.int64)
         self._x, self._xd = x, xd
+        self._given = (given, given_d)
+        self._state = "running"
         self.time = float(t)
         self._steps = self._iterations = 0
         _, _, tension, _ = m.evaluate(X, V, A, self.time, settled=True)
         self._tension[:] = tension
         self.forces = self._coupled_forces()
-        self._store = {k: [] for k in ("time", "X", "V", "tension", "q", "qd", "w", "x", "xd", "f")}
+        self._store = {k: [] for k in ("time", "X", "V", "tension", "q", "qd", "w", "x", "xd", "xs", "xds", "f")}
         self._next_out = self.time
         self._keep()
         return self.forces.copy()
@@ -390,11 +430,10 @@ class Coupling:
         from .mooring.solver import advance_interval
         from .system.dynamics import kernel as DK
 
-        if self._fe is None:
-            raise InputError("step before init: the lines have no start state. Suggested fix: call "
-                             "Coupling.init(x0) with the coupled DOFs at the start first.")
-        x = self._dofs("x", x, "m and rad")
-        xd = self._dofs("xd", xd, "m/s and rad/s")
+        self._need_init("step")
+        given = self._dofs("x", x, "m and rad")
+        given_d = self._dofs("xd", xd, "m/s and rad/s")
+        x, xd = self._convert(given, given_d, near=self._x)
         if not (isinstance(t, (int, float, np.floating, np.integer)) and math.isfinite(t)):
             raise InputError(f"t must be a finite time in s, got {t!r}. Suggested fix: pass the step's start time.")
         if not (isinstance(dt, (int, float, np.floating, np.integer)) and math.isfinite(dt) and dt > 0):
@@ -431,15 +470,21 @@ class Coupling:
                                     tol, max_iter, self._F, self._M, self._tension, self._stats, self._frame,
                                     self._rker, self._rhist, self._rhead, h)
 
-        done, spent = advance_interval(t0, h, n, channels, coupled, self._stats, 6, max_iter, "coupling",
-                                       "a smaller Coupling time_step, or check the coupled motion for a jump (x and "
-                                       "xd that disagree)")
+        try:
+            done, spent = advance_interval(t0, h, n, channels, coupled, self._stats, 6, max_iter, "coupling",
+                                           "a smaller Coupling time_step, or check the coupled motion for a jump (x "
+                                           "and xd that disagree)")
+        except ConvergenceError:
+            self._state = "failed"  # the lines stand part way through the step: only init can restart them
+            raise
         self._steps += done
         self._iterations += spent
         self._x, self._xd = x, xd
+        self._given = (given, given_d)
         self.time = t0 + dt
         self.forces = self._coupled_forces()
         if not np.all(np.isfinite(self.forces)):
+            self._state = "failed"
             raise ConvergenceError(f"the coupled forces are not finite at t = {self.time:.6g} s. Suggested fix: a "
                                    "smaller time_step.", time=self.time)
         self._keep()
@@ -478,15 +523,23 @@ class Coupling:
         g = _global_state(self._q, self._qd, self._frame)
         s = self._store
         for key, v in (("time", self.time), ("X", self._X), ("V", self._V), ("tension", self._tension),
-                       ("q", g[0]), ("qd", g[1]), ("w", g[2]), ("x", self._x), ("xd", self._xd), ("f", self.forces)):
+                       ("q", g[0]), ("qd", g[1]), ("w", g[2]), ("x", self._given[0]), ("xd", self._given[1]), ("xs", self._x), ("xds", self._xd),
+                       ("f", self.forces)):
             s[key].append(np.array(v, float, copy=True))
 
     # ------------------------------------------------------------------------------------------- outputs
 
     def _need_init(self, what: str) -> None:
-        if self._fe is None:
+        if self._state == "new":
             raise InputError(f"{what} before init: the lines have no state yet. Suggested fix: call "
-                             "Coupling.init(x0) first.")
+                             "Coupling.init(x0) with the coupled DOFs at the start first.")
+        if self._state == "closed":
+            raise InputError(f"{what} after close: the coupling has ended. Suggested fix: create a new Coupling "
+                             "(or call close last).")
+        if self._state == "failed" and what in ("step", "close"):
+            raise InputError(f"{what} after a step that did not converge: the lines stand part way through it. "
+                             "Suggested fix: call init again (a smaller time_step), or catch the ConvergenceError "
+                             "and stop.")
 
     def tensions(self) -> dict:
         """Fairlead and anchor tension of each line (its end elements' effective tension) at :attr:`time`.
@@ -568,7 +621,8 @@ class Coupling:
         if x is None:
             self._need_init("stiffness (with no x)")
             x = self._x
-        x = self._dofs("x", x, "m and rad")
+        else:
+            x = self._convert(self._dofs("x", x, "m and rad"), None)[0]
         env = self.case.environment
         max_strain = getattr(self.case.analysis, "max_strain", 1.0)
         system = self._system_at(x)
@@ -598,9 +652,10 @@ class Coupling:
         if not stiffness:
             return f, None
         # the coupled objects as free bodies of their lines alone, everything else where the equilibrium put it
-        bare = dict(mass=0.0, volume=0.0, waterplane_area=0.0, waterplane_moments=(0.0, 0.0), inertia=(0.0,) * 3,
-                    hydrostatic_stiffness=None, external_force=(0.0,) * 6, added_mass=None, linear_damping=None,
-                    quadratic_damping=None, hydrodynamics=None, wind=None, pinned=False, kind="free")
+        bare = {"mass": 0.0, "volume": 0.0, "waterplane_area": 0.0, "waterplane_moments": (0.0, 0.0),
+                "inertia": (0.0,) * 3, "hydrostatic_stiffness": None, "external_force": (0.0,) * 6, "added_mass": None,
+                "linear_damping": None, "quadratic_damping": None, "hydrodynamics": None, "wind": None,
+                "pinned": False, "kind": "free"}
         bodies = {}
         for n, b in system.bodies.items():
             pose = eq.body_position[eq.body_names.index(n)]
@@ -687,6 +742,7 @@ class Coupling:
                         interrupted=False, body_angular_velocity=np.array(s["w"]).reshape(nt, nb, 3))
         ds = system_result(self._fe, run, case=self.case, settings={"coupling": 1})
         x, xd = np.array(s["x"]), np.array(s["xd"])
+        xs, xds = np.array(s["xs"]), np.array(s["xds"])
         ds = ds.assign_coords(coupled_dof=var("coupled_dof", list(self.dof_names), "1", "coupled degree of freedom"))
         ds["coupled_position"] = var(("time", "coupled_dof"), x, "m or rad", "coupled DOFs given by the coupled code")
         ds["coupled_velocity"] = var(("time", "coupled_dof"), xd, "m/s or rad/s", "their velocities")
@@ -696,10 +752,11 @@ class Coupling:
             names = list(ds["body"].values)
             bp, bv = ds["body_position"].values.copy(), ds["body_velocity"].values.copy()
             for k, n in enumerate(self.bodies):
-                bp[:, names.index(n)] = x[:, 6 * k:6 * k + 6]
-                bv[:, names.index(n)] = xd[:, 6 * k:6 * k + 6]
+                bp[:, names.index(n)] = xs[:, 6 * k:6 * k + 6]  # seacable's angles, as every body's
+                bv[:, names.index(n)] = xds[:, 6 * k:6 * k + 6]
             ds["body_position"].values[:], ds["body_velocity"].values[:] = bp, bv
         self._fe = None
+        self._state = "closed"
         return ds
 
     def __enter__(self):
@@ -707,4 +764,5 @@ class Coupling:
 
     def __exit__(self, *exc):
         self._fe = None
+        self._state = "closed"
         return False

@@ -115,3 +115,57 @@ def test_a_moordyn_deck_with_a_coupled_body_reads_as_a_coupling():
         warnings.simplefilter("ignore")
         c = Coupling(BODY_DECK)
     assert c.dof_names[0] == "body body1 x" and c.n_dof == 6
+
+
+def _clump_case(fairlead_mass=0.0):
+    from seacable.system.case import SystemCase
+
+    return SystemCase.parse({
+        "line_types": {"chain": {"diameter": 0.09, "mass_per_length": 77.7, "axial_stiffness": 3.84e8}},
+        "environment": {"depth": 200.0},
+        "points": {"anchor": {"kind": "fixed", "position": [-400.0, 0.0, -200.0]},
+                   "clump": {"kind": "free", "position": [-150.0, 0.0, -150.0], "mass": 2.0e4, "volume": 1.0},
+                   "fair": {"kind": "coupled", "position": [0.0, 0.0, -10.0], "mass": fairlead_mass}},
+        "lines": {"lower": {"line_type": "chain", "length": 300.0, "end_a": "anchor", "end_b": "clump",
+                            "n_elements": 10},
+                  "upper": {"line_type": "chain", "length": 200.0, "end_a": "clump", "end_b": "fair",
+                            "n_elements": 10}},
+        "analysis": {"type": "system_dynamic", "duration": 1.0}})
+
+
+def test_a_free_clumps_equilibrium_is_condensed_out_of_the_fairlead_stiffness():
+    """A clump weight (a free point) between two chains: the fairlead stiffness is the derivative of the static
+    force with the clump re-found at each offset (the condensed stiffness, MoorPy's coupled stiffness); the clump
+    held would give a stiffer fairlead. Central differences of 1 cm: 1e-4 of the largest entry (see above)."""
+    c = Coupling(_clump_case())
+    x = np.array([0.0, 0.0, -10.0])
+    K = c.stiffness(x)
+    fd = np.column_stack([-(c.static_forces(x + e) - c.static_forces(x - e)) / 0.02 for e in 0.01 * np.eye(3)])
+    assert K == pytest.approx(fd, abs=1e-4 * np.abs(fd).max())
+    assert K[0, 0] > 0 and K[2, 2] > 0
+
+
+def test_the_fairleads_own_mass_is_accelerated_by_the_coupled_object():
+    """A coupled point carrying a 5 t mass (no volume, no drag) moved harmonically: the force on it is the same
+    line's force less ``m a`` and its weight ``m g``, ``a`` the motion's acceleration at the step's end (the cubic's
+    through both ends: ``(6 x0 + 2 dt v0 - 6 x1 + 4 dt v1) / dt^2``). The lines do not see the mass (the node is
+    prescribed), so the difference of the two runs is exactly that: 1e-6 of ``m a`` (the Newton tolerance)."""
+    mass, dt, w, amp = 5.0e3, 0.1, 2 * math.pi / 8.0, 2.0
+    runs = []
+    for m_p in (0.0, mass):
+        c = Coupling(_clump_case(m_p), time_step=dt, tolerance=1e-10)
+        x0 = np.array([0.0, 0.0, -10.0])
+        c.init(x0)
+        f, acc = [], []
+        prev = (x0.copy(), np.zeros(3))
+        for k in range(10):
+            t = (k + 1) * dt
+            x = x0 + [amp * math.sin(w * t) ** 2, 0.0, 0.0]
+            xd = np.array([amp * w * math.sin(2 * w * t), 0.0, 0.0])
+            f.append(c.step(x, xd, k * dt, dt))
+            acc.append((6 * prev[0] + 2 * dt * prev[1] - 6 * x + 4 * dt * xd) / dt ** 2)
+            prev = (x, xd)
+        runs.append((np.array(f), np.array(acc)))
+    (f0, acc), (f1, _) = runs
+    expect = -mass * acc - [0.0, 0.0, mass * c.case.environment.gravity]
+    assert f1 - f0 == pytest.approx(expect, rel=1e-6, abs=1e-6 * mass * np.abs(acc).max())
