@@ -86,21 +86,25 @@ _DOF6 = ("x", "y", "z", "roll", "pitch", "yaw")
 
 
 def _case_of(case):
-    """A :class:`~seacable.system.case.SystemCase` from a path (YAML or MoorDyn deck), a MoorDyn case or itself."""
+    """A :class:`~seacable.system.case.SystemCase` from a path (YAML or MoorDyn deck), a MoorDyn case or itself, and
+    the largest strain its statics admit (the case's; a MoorDyn deck's: MoorDyn has no limit, and its spring decks
+    stretch lines ten times, :data:`seacable.io.moordyn._DECK_MAX_STRAIN`)."""
     from .io import load_case
-    from .io.moordyn import MoorDynCase
+    from .io.moordyn import _DECK_MAX_STRAIN, MoorDynCase
     from .system.case import SystemCase
 
     if isinstance(case, (str, Path)):
         case = load_case(case)
+    max_strain = getattr(getattr(case, "analysis", None), "max_strain", 1.0)
     if isinstance(case, MoorDynCase):
+        max_strain = _DECK_MAX_STRAIN
         # a run's duration gives the deck's failures and checks its water kinematics; the coupling sets its own time
         case = case.with_run(duration=1.0).system_case() if case.has_structures else _deck_points_case(case)
     if not isinstance(case, SystemCase):
         raise InputError(f"Coupling needs a mooring system case (points, bodies, lines) or a MoorDyn deck, got "
                          f"{type(case).__name__}. Suggested fix: give a system case file (top-level 'lines', "
                          "'points', 'bodies') or a MoorDyn input file.")
-    return case
+    return case, max_strain
 
 
 def _deck_points_case(deck):
@@ -158,7 +162,7 @@ class Coupling:
         from . import _validate
         from .system.case import SystemDynamicAnalysis
 
-        self.case = _case_of(case)
+        self.case, self._max_strain = _case_of(case)
         a = self.case.analysis
         self.analysis = a if isinstance(a, SystemDynamicAnalysis) else None
         step = time_step if time_step is not None else (self.analysis.time_step if self.analysis else 0.1)
@@ -624,7 +628,7 @@ class Coupling:
         else:
             x = self._convert(self._dofs("x", x, "m and rad"), None)[0]
         env = self.case.environment
-        max_strain = getattr(self.case.analysis, "max_strain", 1.0)
+        max_strain = self._max_strain
         system = self._system_at(x)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # the statics' notes were given by the case's checks
@@ -651,24 +655,17 @@ class Coupling:
                 f[k + 3:k + 6] += np.cross(eq.point_position[at[n]] - x[k:k + 3], load[n])
         if not stiffness:
             return f, None
-        # the coupled objects as free bodies of their lines alone, everything else where the equilibrium put it
-        bare = {"mass": 0.0, "volume": 0.0, "waterplane_area": 0.0, "waterplane_moments": (0.0, 0.0),
-                "inertia": (0.0,) * 3, "hydrostatic_stiffness": None, "external_force": (0.0,) * 6, "added_mass": None,
-                "linear_damping": None, "quadratic_damping": None, "hydrodynamics": None, "wind": None,
-                "pinned": False, "kind": "free"}
+        # the coupled objects as free bodies of their lines alone (a body of the defaults: no mass, volume, loads),
+        # everything else where the equilibrium put it
         bodies = {}
         for n, b in system.bodies.items():
-            pose = eq.body_position[eq.body_names.index(n)]
-            if n in self.bodies:
-                bodies[n] = b.model_copy(update={**bare, "position": tuple(map(float, pose))})
-            else:
-                bodies[n] = b.model_copy(update={"position": tuple(map(float, pose))})
+            pose = tuple(map(float, eq.body_position[eq.body_names.index(n)]))
+            bodies[n] = Body(kind="free", position=pose) if n in self.bodies else b.model_copy(update={"position": pose})
         points = {}
         for n, p in system.points.items():
             if p.kind == "coupled":
                 holder = f"__coupled_{n}"
-                bodies[holder] = Body(position=(*p.position, 0.0, 0.0, 0.0), **{k: v for k, v in bare.items()
-                                                                                  if k != "inertia"})
+                bodies[holder] = Body(kind="free", position=(*p.position, 0.0, 0.0, 0.0))
                 points[n] = SystemPoint(**{**p.model_dump(), "kind": "body", "body": holder, "position": (0.0,) * 3})
             elif p.kind == "free":
                 points[n] = p.model_copy(update={"position": tuple(map(float, eq.point_position[at[n]]))})

@@ -108,6 +108,19 @@ def test_bad_inputs_get_one_clear_error_each():
         Coupling(_case(kind="fixed"))
     with pytest.raises(InputError, match="line 'l3' is not in the system"):
         c.node_positions("l3")
+    with pytest.raises(InputError, match="angles must be 'seacable'"):
+        Coupling(_case(), angles="degrees")
+    c.close()
+    with pytest.raises(InputError, match="step after close"):
+        c.step(np.zeros(6), np.zeros(6), 0.1, 0.1)
+
+
+def test_output_interval_keeps_the_states_at_its_multiples():
+    c = Coupling(_case(), time_step=0.1, output_interval=0.3)
+    c.init(np.zeros(6))
+    for k in range(7):
+        c.step(np.zeros(6), np.zeros(6), 0.1 * k, 0.1)
+    assert c.close().time.values == pytest.approx([0.0, 0.3, 0.6])
 
 
 def test_a_moordyn_deck_with_a_coupled_body_reads_as_a_coupling():
