@@ -192,8 +192,8 @@ class Body(Model):
         Its wind areas (:class:`BodyWind`), for the environment's wind in the dynamics.
     """
 
-    kind: Literal["free", "fixed", "prescribed"] = Field(
-        "free", description="free, fixed or prescribed (or coupled: prescribed, moved by a coupled code).")
+    kind: Literal["free", "fixed", "prescribed", "coupled"] = Field(
+        "free", description="free, fixed or prescribed ('coupled', moved by a coupled code, is read as prescribed).")
     position: _SIX = Field((0.0,) * 6, description="x, y, z [m], roll, pitch, yaw [rad].")
     mass: quantity("kg", ge=0, fix="give the body's mass in air in kg.") = Field(
         0.0, description="Mass in air. [kg]")
