@@ -182,3 +182,15 @@ def test_the_fairleads_own_mass_is_accelerated_by_the_coupled_object():
     (f0, acc), (f1, _) = runs
     expect = -mass * acc - [0.0, 0.0, mass * c.case.environment.gravity]
     assert f1 - f0 == pytest.approx(expect, rel=1e-6, abs=1e-6 * mass * np.abs(acc).max())
+
+
+def test_init_without_settling_starts_from_the_catenary_shapes():
+    """MoorDyn's Init_NoIC: the lines start on their catenary shapes between their ends (the statics not solved),
+    near the settled start (their ends' forces within 1e-4 of the largest: the elastic catenary is the continuous
+    line's equilibrium, the 12 elements' differs by their discretisation, measured 1e-5), and step from there."""
+    c = Coupling(_case(), time_step=0.1)
+    settled = c.init(np.zeros(6))
+    shape = c.init(np.zeros(6), settle=False)
+    assert np.isfinite(shape).all()
+    assert shape[:3] == pytest.approx(settled[:3], abs=1e-4 * np.abs(settled[:3]).max())
+    assert np.isfinite(c.step(np.zeros(6), np.zeros(6), 0.0, 0.1)).all()
