@@ -55,7 +55,7 @@ MoorDyn                                                seacable
                                                        at ``t + dt``
 ``moordyn.GetFASTtens`` / ``MoorDyn_GetFASTtens``      ``Coupling.fast_tensions()``: (fairlead H, V, anchor H, V)
 ``moordyn.GetLineNodePos``, ``GetLineFairTen``         ``Coupling.node_positions(line)``, ``Coupling.tensions()``
-MoorPy's ``getCoupledStiffness`` (MoorDyn has none)    ``Coupling.stiffness(x)``: the system statics' analytic
+MoorPy's ``getCoupledStiffnessA``                      ``Coupling.stiffness(x)``: the system statics' analytic
                                                        stiffness (:mod:`seacable.system.statics`)
 ``moordyn.Close`` / ``MoorDyn_Close``                  ``Coupling.close()``: the run as a Dataset
 =====================================================  ========================================================
@@ -324,7 +324,7 @@ class Coupling:
         """Start the lines with the coupled DOFs at ``x`` (MoorDyn's ``Init``; ``settle=False``: ``Init_NoIC``).
 
         With ``settle`` the static equilibrium of the finite-element lines, free points and free bodies is solved
-        with the coupled objects held at ``x`` (Newton; MoorDyn relaxes its lines in time to the same state); without,
+        with the coupled objects held at ``x`` (Newton; MoorDyn relaxes its lines in time towards it); without,
         the lines start on their catenary shapes between their ends. The lines start at rest, the coupled objects
         at the velocity ``xd`` (default zero), the accelerations those of the equations of motion at ``t``.
 
