@@ -194,3 +194,30 @@ def test_init_without_settling_starts_from_the_catenary_shapes():
     assert np.isfinite(shape).all()
     assert shape[:3] == pytest.approx(settled[:3], abs=1e-4 * np.abs(settled[:3]).max())
     assert np.isfinite(c.step(np.zeros(6), np.zeros(6), 0.0, 0.1)).all()
+
+
+def test_a_free_bodys_equilibrium_is_condensed_out_of_the_fairlead_stiffness():
+    """A free subsurface buoy (a body, its lines at its ends) between the anchor's chain and the fairlead's: the
+    fairlead stiffness with the buoy re-found at each offset (its six DOFs condensed out) is the central difference
+    of the static force (1e-4 of the largest entry, as above; measured 2e-8), and the lines step with the free buoy."""
+    from seacable.system.case import SystemCase
+
+    case = SystemCase.parse({
+        "line_types": {"chain": {"diameter": 0.09, "mass_per_length": 77.7, "axial_stiffness": 3.84e8}},
+        "environment": {"depth": 200.0},
+        "points": {"anchor": {"kind": "fixed", "position": [-300.0, 0.0, -200.0]},
+                   "low": {"kind": "body", "body": "buoy", "position": [0.0, 0.0, -1.0]},
+                   "high": {"kind": "body", "body": "buoy", "position": [0.0, 0.0, 1.0]},
+                   "fair": {"kind": "coupled", "position": [100.0, 0.0, -10.0]}},
+        "bodies": {"buoy": {"kind": "free", "position": [-100.0, 0.0, -100.0, 0.0, 0.0, 0.0], "mass": 5.0e3,
+                            "volume": 30.0, "inertia": [1e4, 1e4, 1e4]}},
+        "lines": {"lower": {"line_type": "chain", "length": 260.0, "end_a": "anchor", "end_b": "low", "n_elements": 10},
+                  "upper": {"line_type": "chain", "length": 230.0, "end_a": "high", "end_b": "fair", "n_elements": 10}},
+        "analysis": {"type": "system_dynamic", "duration": 1.0}})
+    c = Coupling(case)
+    x = np.array([100.0, 0.0, -10.0])
+    K = c.stiffness(x)
+    fd = np.column_stack([-(c.static_forces(x + e) - c.static_forces(x - e)) / 0.02 for e in 0.01 * np.eye(3)])
+    assert K == pytest.approx(fd, abs=1e-4 * np.abs(fd).max())
+    c.init(x)
+    assert np.isfinite(c.step(x + [0.5, 0.0, 0.0], [1.0, 0.0, 0.0], 0.0, 0.5)).all()
