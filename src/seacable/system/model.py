@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from .._model import Model, quantity, suggest
 from ..line import Line
@@ -196,7 +196,9 @@ class Body(Model):
     ----------
     kind
         ``free`` (finds its equilibrium; moves in the dynamics), ``fixed`` (held at ``position``)
-        or ``prescribed`` (held at ``position`` in statics; moved by ``motion`` in the dynamics).
+        or ``prescribed`` (held at ``position`` in statics; moved by ``motion`` in the dynamics, or by
+        another code through :mod:`seacable.coupling`). ``coupled`` (MoorDyn's word, as a point's) is
+        read as ``prescribed``.
     position
         Reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]; the starting guess of
         a free body.
@@ -236,7 +238,8 @@ class Body(Model):
         Its current areas (:class:`BodyCurrent`), for the environment's current.
     """
 
-    kind: Literal["free", "fixed", "prescribed"] = Field("free", description="free, fixed or prescribed.")
+    kind: Literal["free", "fixed", "prescribed", "coupled"] = Field(
+        "free", description="free, fixed or prescribed ('coupled', moved by a coupled code, is read as prescribed).")
     position: _SIX = Field((0.0,) * 6, description="x, y, z [m], roll, pitch, yaw [rad].")
     mass: quantity("kg", ge=0, fix="give the body's mass in air in kg.") = Field(
         0.0, description="Mass in air. [kg]")
@@ -257,6 +260,11 @@ class Body(Model):
         None, description="Hydrodynamic database (WAMIT files): hydrostatics, added mass, radiation memory, waves.")
     wind: BodyWind | None = Field(None, description="Wind areas by relative wind direction.")
     current: BodyCurrent | None = Field(None, description="Current areas by relative current direction.")
+
+    @field_validator("kind", mode="before")
+    @classmethod
+    def _coupled(cls, value):
+        return "prescribed" if value == "coupled" else value  # MoorDyn's word, as a point's kind
 
     @model_validator(mode="after")
     def _check(self):
