@@ -15,8 +15,8 @@ The frequency-domain practice of API RP 2SK and DNV-OS-E301, in the time domain:
    forced by the slowly varying loads only: the slow drift less its mean (Newman's approximation, when the
    body's ``drift`` is ``newman``) and the wind's gusts. Heave, roll and pitch are solved too: the wind's moment
    and the slow drift pitch a semi-submersible, and the fairleads move with it.
-3. **Wave frequency.** The body's RAOs from its database (:func:`seacable.hydro.response.raos`: its rigid mass,
-   ``A(w)``, ``B(w)`` and linear damping, the restoring ``C + K_m``) in the case's sea, with the phases referred
+3. **Wave frequency.** The body's RAOs from its database at the sea's own frequencies (:func:`sea_raos`: its rigid
+   mass, ``A(w)``, ``B(w)``, ``X(w)`` and linear damping, the restoring ``C + K_m``) in the case's sea, with the phases referred
    to the body's reference point as the coupled route's wave loads are (:func:`seacable.system.hydro.body_wave_loads`):
    the same sea, the same phases. The wave response starts with the body's ``ramp``, as the coupled wave loads do.
 4. **Lines.** The body, made ``prescribed``, follows ``mean + LF + WF`` and drives its lines: in time through the
@@ -51,7 +51,7 @@ from .case import SystemDynamicAnalysis, UncoupledRoute
 from .model import MooringSystem
 
 __all__ = ["LF_DOFS", "SummedMotion", "UncoupledSetup", "prepare_system_uncoupled", "run_system_uncoupled",
-           "uncoupled_motion"]
+           "sea_raos", "uncoupled_motion"]
 
 #: The DOFs ``mooring_damping`` damps (surge, sway, yaw), indices into the six.
 LF_DOFS = (0, 1, 5)
@@ -282,12 +282,38 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     return setup
 
 
+def sea_raos(db, sea, mass, stiffness, damping):
+    """The body's RAOs (:class:`seacable.raos.RAOTable`) at the frequencies of the sea's components, at its one
+    heading (a long-crested sea) or the database's headings: ``(C - w^2 (M + A(w)) - i w (B(w) + B_v)) H = X(w, b)``
+    (:func:`seacable.hydro.response.raos` at the database's frequencies), with ``A``, ``B`` and ``X`` interpolated
+    at each component's frequency as the coupled route's loads are: no RAO is interpolated across a resonance."""
+    from ..hydro.response import coefficients_at
+    from ..raos import RAOTable
+
+    omega = np.unique(np.asarray(sea.omega, float))
+    if omega.size == 1:  # a regular wave: a second node beside it (a table has two); the wave's own is exact
+        other = omega[0] * (0.99 if omega[0] * 0.99 >= db.excitation_omega[0] else 1.01)
+        omega = np.sort(np.r_[omega, other])
+    heads = np.unique(np.mod(np.asarray(sea.heading, float) + math.pi, 2 * math.pi) - math.pi)
+    if heads.size > 1:
+        heads = np.asarray(db.heading, float)
+    a, b = coefficients_at(db, omega)
+    system = (np.asarray(stiffness)[None] - omega[:, None, None] ** 2 * (np.asarray(mass)[None] + a)
+              - 1j * omega[:, None, None] * (b + np.asarray(damping)[None]))
+    x = np.stack([db.excitation_at(omega, np.full_like(omega, hd)) for hd in heads])  # (nh, nw, 6)
+    try:
+        h = np.linalg.solve(system[None], x[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        raise InputError("the body's equation of motion is singular at a wave frequency (a DOF with neither restoring "
+                         "nor inertia nor damping). Suggested fix: give the mass, inertias and the mooring.") from None
+    return RAOTable(omega=omega, heading=heads, values=np.transpose(h, (2, 0, 1)), source=f"RAOs of {db.source}")
+
+
 def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
     """The uncoupled body's motion (:class:`SummedMotion`) of an uncoupled ``system_dynamic`` case: its mean
     position, its low-frequency motion by Cummins' equation (steps 1-2 of the module docstring) and its
     wave-frequency motion through its RAOs (step 3), without the lines' run."""
     from ..hydro import simulate_cummins
-    from ..hydro.response import raos
     from ..raos import RAOResponse
     from .hydro import _moved, body_wind_loads, database
 
@@ -315,11 +341,53 @@ def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
                            kernel_length=float(h.kernel_length))
     wave = None
     if local is not None and h.excitation:
-        table = raos(db, s.mass, s.stiffness + s.mooring_stiffness, s.wave_damping)
+        table = sea_raos(db, s.sea, s.mass, s.stiffness + s.mooring_stiffness, s.wave_damping)
         wave = RAOResponse(table, s.sea, at=tuple(body.position[:2]))
     return SummedMotion(reference=tuple(body.position[:3]), mean=s.mean, time=low.time, low=low.position,
                         low_rate=low.velocity, wave=wave, ramp=float(h.ramp))
 
+
+
+def _profiles(n: int, cat, xF, zF, L: float, EA: float, w: float, mu: float):
+    """The solved catenaries ``cat`` (nt,) at ``n`` points evenly spaced in unstretched length: x, z from the
+    anchor and the tension (nt, n) each. The suspended and touching-down lines of a weighty line at once (the
+    closed forms of :func:`seacable.statics.catenary.catenary`'s profile), any other one by that profile."""
+    from ..statics.catenary import CatenaryRegime as R
+    from ..statics.catenary import _profile, _suspended_arc
+
+    s = np.linspace(0.0, L, n)[None, :]
+    nt = np.size(xF)
+    x, z, T = np.zeros((nt, n)), np.zeros((nt, n)), np.zeros((nt, n))
+    H = np.asarray(cat.H_fairlead, float)[:, None]
+    VF = np.asarray(cat.V_fairlead, float)[:, None]
+    regime = np.asarray(cat.regime)
+    hang = (regime == R.SUSPENDED) & (w > 0) & (H[:, 0] > 0)
+    if hang.any():
+        VA = VF[hang] - w * L
+        x[hang], z[hang], T[hang] = _suspended_arc(s, H[hang], VA, VA + w * s, w, EA)
+    down = ((regime == R.TOUCHDOWN) | (regime == R.TOUCHDOWN_SLACK_ANCHOR)) & (w > 0) & (H[:, 0] > 0)
+    if down.any():
+        h = H[down]
+        LB = np.asarray(cat.grounded_length, float)[down][:, None]
+        sg = np.minimum(s, LB)
+        ends = np.concatenate([sg, LB], axis=1)  # the grounded part's points and the touchdown
+        if mu > 0:
+            xB = np.maximum(LB - h / (mu * w), 0.0)
+            u = np.maximum(ends, xB)
+            xg = ends + ((h - mu * w * LB) * (u - xB) + 0.5 * mu * w * (u * u - xB * xB)) / EA
+            tg = np.maximum(h - mu * w * (LB - ends), 0.0)
+        else:
+            xg, tg = ends + h * ends / EA, np.broadcast_to(h, ends.shape)
+        xtd, xg, tg = xg[:, -1:], xg[:, :-1], tg[:, :-1]
+        u = np.maximum(s - LB, 0.0)
+        xa, za, ta = _suspended_arc(u, h, np.zeros_like(h), w * u, w, EA)
+        on = s <= LB
+        x[down], z[down], T[down] = np.where(on, xg, xtd + xa), np.where(on, 0.0, za), np.where(on, tg, ta)
+    for i in np.flatnonzero(~(hang | down)):
+        p = _profile(n, float(xF[i]), float(zF[i]), L, EA, w, mu, float(H[i, 0]), float(VF[i, 0]),
+                     float(cat.grounded_length[i]), int(regime[i]))
+        x[i], z[i], T[i] = p.x, p.z, p.tension
+    return x, z, T
 
 
 def _quasi_static_run(s: UncoupledSetup, motion: SummedMotion, times: np.ndarray):
@@ -328,7 +396,7 @@ def _quasi_static_run(s: UncoupledSetup, motion: SummedMotion, times: np.ndarray
     line's nodes at its elements' ends, its element tensions at their middles), at rest."""
     import time as _time
 
-    from ..statics.catenary import _profile, catenary
+    from ..statics.catenary import catenary
     from .dynamics import SystemRun
 
     clock = _time.perf_counter()
@@ -360,16 +428,14 @@ def _quasi_static_run(s: UncoupledSetup, motion: SummedMotion, times: np.ndarray
             raise InputError(f"lines.{name}: the quasi-static line (analysis.uncoupled.lines 'quasi_static') has no "
                              f"catenary at some time of the motion: {err} Suggested fix: 'lines: dynamic'.") from None
         ne = els.size
-        for i in range(nt):
-            p = _profile(2 * ne + 1, float(span[i]), float(fair[i, 2] - anchor[2]), float(seg.length),
-                         float(lt.axial_stiffness), w, float(env.seabed.friction), float(cat.H_fairlead[i]),
-                         float(cat.V_fairlead[i]), float(cat.grounded_length[i]), int(cat.regime[i]))
-            xs = anchor + np.column_stack([p.x[::2, None] * unit[i], p.z[::2]])
-            t_mid = p.tension[1::2]
-            if not body_end:
-                xs, t_mid = xs[::-1], t_mid[::-1]
-            X[i, nodes] = xs
-            tension[i, els] = t_mid
+        px, pz, pt = _profiles(2 * ne + 1, cat, span, fair[:, 2] - anchor[2], float(seg.length),
+                               float(lt.axial_stiffness), w, float(env.seabed.friction))
+        xs = anchor + np.concatenate([px[:, ::2, None] * unit[:, None, :], pz[:, ::2, None]], axis=2)
+        t_mid = pt[:, 1::2]
+        if not body_end:
+            xs, t_mid = xs[:, ::-1], t_mid[:, ::-1]
+        X[:, nodes] = xs
+        tension[:, els] = t_mid
     nb = len(fe.free_bodies)
     return SystemRun(time=times, position=X, velocity=np.zeros_like(X), tension=tension,
                      body_position=np.zeros((nt, nb, 6)), body_velocity=np.zeros((nt, nb, 6)),
