@@ -75,16 +75,19 @@ class SummedMotion:
     wave: object = None
     ramp: float = 0.0
 
+    def __post_init__(self):
+        from scipy.interpolate import CubicHermiteSpline
+
+        # built once: the time loop asks for the motion at every step
+        object.__setattr__(self, "_spline", CubicHermiteSpline(self.time, self.low, self.low_rate, axis=0))
+
     def model_copy(self, update=None):
         return dataclasses.replace(self, **(update or {}))
 
     def low_frequency(self, times):
         """The low-frequency motion (nt, 6) and its two derivatives, about the mean."""
-        from scipy.interpolate import CubicHermiteSpline
-
-        spline = CubicHermiteSpline(self.time, self.low, self.low_rate, axis=0)
         t = np.asarray(times, float)
-        return spline(t), spline(t, 1), spline(t, 2)
+        return self._spline(t), self._spline(t, 1), self._spline(t, 2)
 
     def wave_frequency(self, times):
         """The wave-frequency motion (nt, 6) and its two derivatives, ramped."""
@@ -152,7 +155,7 @@ def _check_quasi_static(case, system: MooringSystem, name: str) -> None:
 
     if needs_fe(env):
         raise InputError("analysis.uncoupled.lines 'quasi_static': the catenary lines take no current and no sloping "
-                         f"seabed (current {env.current is not None}, seabed slope {env.seabed.slope:g} rad). {fix}")
+                         f"seabed, and the environment has one of them (seabed slope {env.seabed.slope:g} rad). {fix}")
     for ln, line in system.lines.items():
         segs = line.line.segments
         ends = [system.points[line.end_a], system.points[line.end_b]]
@@ -219,8 +222,9 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     wind_damping = np.zeros((6, 6))
     if env.wind is not None and body.wind is not None:
         steady = body_wind_loads(body, name, env.wind.model_copy(update={"spectrum": "none"}), np.zeros(1))
-        mean += steady[0][0]
-        wind_damping = steady[1]
+        if steady is not None:  # None: no wind speed
+            mean += steady[0][0]
+            wind_damping = steady[1]
     elif env.wind is not None:
         raise InputError("environment.wind is given, but no free body gives its wind areas (bodies.NAME.wind), so "
                          "it would load nothing (the lines take no wind). Suggested fix: give the bodies' wind "
@@ -332,10 +336,10 @@ def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
 
         r = smooth_ramp(t, float(h.ramp))[0] if h.ramp > 0 else (t > 0).astype(float)
         force += r[:, None] * (slow_drift_force(db, local, t) - mean_drift_force(db, local))
-    if env.wind is not None and body.wind is not None and env.wind.spectrum != "none":
+    if env.wind is not None and body.wind is not None and env.wind.spectrum != "none" and env.wind.speed > 0:
         gusty = body_wind_loads(body, s.body, env.wind, t)[0]
         steady = body_wind_loads(body, s.body, env.wind.model_copy(update={"spectrum": "none"}), t[:1])[0][0]
-        force += gusty - steady
+        force += gusty - steady  # the gusts: the mean is in the statics
     low = simulate_cummins(db, s.mass, force, dt, stiffness=s.stiffness + s.mooring_stiffness,
                            linear_damping=s.linear_damping, quadratic_damping=s.quadratic_damping,
                            kernel_length=float(h.kernel_length))
