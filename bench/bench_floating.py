@@ -15,6 +15,17 @@ process, shared 2-core machine at load 0.7-1.7), 40 elements a line, dt 0.1 s:
   full (sea to 2.45 rad/s)               6.8 s (88x)    159 s wall, 172 s CPU (68x)      5.3x over 30 s
   full, the merged main at load 1.8                     109 s wall, 190 s CPU (99x)      3.6x over 30 s
 
+The uncoupled route (``--quasi_static``, ``--dynamic``; the lines' damping of the slow drift at 5 % of critical),
+measured 2026-11-30 on the tests' extract at load 7-11 (so the wall times are inflated; the CPU times less so):
+
+  route                                 run       wall     CPU     surge mean/max [m]  max fairlead [kN]   target
+  uncoupled, quasi-static lines         3 hours    6.8 s    2.7 s   1.77/10.28          3036                10 s: met
+  uncoupled, lines in time (40 el.)     600 s     18.2 s    3.5 s   1.81/6.97           2774
+
+The quasi-static route's time: the slow drift's sum over the 200 components (on the low-frequency step, 0.5 s),
+Cummins' equation and the three catenaries' profiles at the 10 801 outputs, each about a third. With the lines in
+time it costs what the coupled run's lines do (the same kernel, the body prescribed).
+
 With the full database the time goes to the irregular sea's kinematics grid, not the stepping: profiled over
 1200 s, 16.7 s of 21 s in ``seastate.SeaGrid.window`` (14 windows of 91 s, the short waves' fine grid; 15 % of it
 the free body's excursion allowance, ``seacable.system.dynamics.loop.SEA_EXCURSION``) against 3.7 s in the

@@ -50,11 +50,16 @@ from ..mooring.outputs import at_motion_start, water_of_environment
 from .case import SystemDynamicAnalysis, UncoupledRoute
 from .model import MooringSystem
 
-__all__ = ["LF_DOFS", "SummedMotion", "UncoupledSetup", "prepare_system_uncoupled", "run_system_uncoupled",
+__all__ = ["LF_DOFS", "LF_STEP", "SummedMotion", "UncoupledSetup", "prepare_system_uncoupled", "run_system_uncoupled",
            "sea_raos", "uncoupled_motion"]
 
 #: The DOFs ``mooring_damping`` damps (surge, sway, yaw), indices into the six.
 LF_DOFS = (0, 1, 5)
+#: The low-frequency equation's step, about (a whole multiple of the run's step, or the run's step when longer): its
+#: motions' periods are 20 s and more (heave and pitch of a semi-submersible; surge, sway and yaw 60-300 s), where
+#: Newmark's period error (w dt)^2 / 12 is under 0.1 %; the slow drift's difference frequencies above them move the
+#: body by their force over its inertia, a little. [s]
+LF_STEP = 0.5
 
 
 @dataclass(frozen=True)
@@ -315,7 +320,8 @@ def sea_raos(db, sea, mass, stiffness, damping):
 
 def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
     """The uncoupled body's motion (:class:`SummedMotion`) of an uncoupled ``system_dynamic`` case: its mean
-    position, its low-frequency motion by Cummins' equation (steps 1-2 of the module docstring) and its
+    position, its low-frequency motion by Cummins' equation at the step :data:`LF_STEP` (steps 1-2 of the module
+    docstring) and its
     wave-frequency motion through its RAOs (step 3), without the lines' run."""
     from ..hydro import simulate_cummins
     from ..raos import RAOResponse
@@ -327,7 +333,7 @@ def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
     body = s.system.bodies[s.body]
     h = body.hydrodynamics
     db = database(body, env.water_density, env.gravity)
-    dt = float(a.time_step)
+    dt = float(a.time_step) * max(1, round(LF_STEP / float(a.time_step)))
     t = dt * np.arange(math.ceil(a.duration / dt - 1e-9) + 2)
     force = np.zeros((t.size, 6))
     local = None if s.sea is None else _moved(s.sea, body.position[0], body.position[1])
