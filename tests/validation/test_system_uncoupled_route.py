@@ -215,3 +215,14 @@ def test_the_mean_wind_moves_the_uncoupled_body_as_the_statics_under_its_force(t
     assert mean[0] > 5.0  # the wind moves it metres
     np.testing.assert_allclose(ds.attrs["mean_position"][:3], mean, atol=1e-6 * abs(mean[0]))
     assert np.std(np.asarray(ds["body_low_frequency_motion"])[:, 0, 0]) > 0.01
+
+
+def test_the_coupled_runner_refuses_an_uncoupled_case(tmp_path, hull_case):
+    """Called directly, the coupled route's runner does not run an uncoupled case coupled in silence."""
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    case = sc.load_case(hull_case(tmp_path, waves={"height": 2.0, "period": 7.4}, rope=ROPE, body=_hydro(),
+                                  analysis={"duration": 10.0, "coupling": "uncoupled"}))
+    with pytest.raises(InputError, match=r"prepare_system_dynamic runs the coupled route, the case asks for coupling "
+                                         r"'uncoupled'.*seacable.run\(case\)"):
+        prepare_system_dynamic(case)
