@@ -131,8 +131,8 @@ def test_the_uncoupled_slow_drift_has_the_frequency_domain_variance(tmp_path, hu
 def test_uncoupled_keys_refused_with_one_message(tmp_path, hull_case):
     waves = {"height": 2.0, "period": 7.4}
     cases = [
-        ({"uncoupled": {"lines": "quasi_static"}}, r"'uncoupled' gives the options of the uncoupled route, but "
-                                                   r"coupling is 'coupled'"),
+        ({"uncoupled": {"lines": "quasi_static"}}, (r"'uncoupled' gives the options of the uncoupled route, but "
+                                                    r"coupling is 'coupled'")),
         ({"coupling": "uncoupled", "uncoupled": {"mooring_damping": 5.0}},
          r"mooring_damping in surge must be a fraction of critical damping in \[0, 1\), got 5.0.*0.05 for 5 %"),
         ({"coupling": "uncoupled", "uncoupled": {"lines": "static"}}, r"lines"),

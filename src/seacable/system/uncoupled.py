@@ -143,11 +143,9 @@ def _rotate(m: np.ndarray, yaw: float) -> np.ndarray:
 def _prescribed_case(case, name: str):
     """The case with the body ``name`` prescribed (held still until its motion is known), the wind left out (it
     acts on the body only), as a coupled ``system_dynamic``."""
-    from ..mooring.motion import PlatformMotion as _Still
-
     bodies = {**case.bodies, name: case.bodies[name].model_copy(update={"kind": "prescribed"})}
     a = case.analysis.model_copy(update={"coupling": "coupled", "uncoupled": None,
-                                         "body_motions": {name: _Still(amplitude=(0.0,) * 6, period=1.0)}})
+                                         "body_motions": {name: PlatformMotion(amplitude=(0.0,) * 6, period=1.0)}})
     env = case.environment.model_copy(update={"wind": None})
     return case.model_copy(update={"bodies": bodies, "analysis": a, "environment": env})
 
@@ -220,7 +218,6 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     mean = np.zeros(6)
     if sea is not None and h.drift != "none":
         from ..hydro.loads import mean_drift_force
-
         from .hydro import _moved
 
         mean += mean_drift_force(db, _moved(sea, body.position[0], body.position[1]))
@@ -482,7 +479,7 @@ def run_system_uncoupled(case, progress=None):
                               beta=(1 + nd) ** 2 / 4, gamma=0.5 + nd)
     else:
         fe.body_motions[s.body] = motion
-        times = a.output_interval * np.arange(int(math.floor(a.duration / a.output_interval + 1e-9)) + 1)
+        times = a.output_interval * np.arange(math.floor(a.duration / a.output_interval + 1e-9) + 1)
         run = _quasi_static_run(s, motion, times)
     mean = s.mean + np.asarray(s.system.bodies[s.body].position, float)
     ds = system_result(fe, run, case=case, settings={
