@@ -15,6 +15,18 @@ process, shared 2-core machine at load 0.7-1.7), 40 elements a line, dt 0.1 s:
   full (sea to 2.45 rad/s)               6.8 s (88x)    159 s wall, 172 s CPU (68x)      5.3x over 30 s
   full, the merged main at load 1.8                     109 s wall, 190 s CPU (99x)      3.6x over 30 s
 
+The uncoupled route (``--quasi_static``, ``--dynamic``; the lines' damping of the slow drift at 5 % of critical),
+measured 2026-11-30 on the tests' extract at load 7-11 (so the wall times are inflated; the CPU times less so):
+
+  route                                 run       wall     CPU     surge mean/max [m]  max fairlead [kN]   target
+  uncoupled, quasi-static lines         3 hours    6.8 s    2.7 s   1.77/10.28          3036                10 s: met
+  uncoupled, lines in time (40 el.)     600 s     18.2 s    3.5 s   1.81/6.97           2774
+
+The quasi-static route's time (profiled, 5.3 s at load 5): the three catenaries and their profiles at the 10 801
+outputs 2.4 s, the slow drift's sum over the 200 components (on the low-frequency step, 0.5 s) 1.3 s, the Dataset
+1.0 s, Cummins' equation 0.2 s. With the lines in time it costs what the coupled run's lines do (the same kernel,
+the body prescribed): the fast route is the quasi-static one.
+
 With the full database the time goes to the irregular sea's kinematics grid, not the stepping: profiled over
 1200 s, 16.7 s of 21 s in ``seastate.SeaGrid.window`` (14 windows of 91 s, the short waves' fine grid; 15 % of it
 the free body's excursion allowance, ``seacable.system.dynamics.loop.SEA_EXCURSION``) against 3.7 s in the
@@ -26,7 +38,9 @@ Reads the full database from ``../shared/peers/iea15_volturnus`` when it is ther
 drift coefficients stop at 2.5 rad/s), else the tests' extract (its excitation stops at 1.45 rad/s: the sea is cut
 there; so from a git worktree beside the main checkout, where ``../shared`` is not).
 
-Run: ``python bench/bench_floating.py [DURATION_S [ELEMENTS [TIME_STEP_S]]]`` (default 10800 s, 40, 0.1 s).
+Run: ``python bench/bench_floating.py [DURATION_S [ELEMENTS [TIME_STEP_S]]] [--quasi_static | --dynamic]`` (default
+10800 s, 40, 0.1 s, the coupled route; ``--quasi_static`` / ``--dynamic``: the uncoupled route with its lines
+quasi-static or in time, the lines' damping at 5 % of critical).
 """
 
 from __future__ import annotations
@@ -44,7 +58,7 @@ SHARED = ROOT.parent / "shared" / "peers" / "iea15_volturnus" / "IEA-15-240-RWT-
 EXTRACT = ROOT / "tests" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 
 
-def case(duration: float, elements: int, time_step: float = 0.1) -> dict:
+def case(duration: float, elements: int, time_step: float = 0.1, route: str = "coupled") -> dict:
     database = SHARED if Path(f"{SHARED}.3").is_file() else EXTRACT
     top = 1.45 if database == EXTRACT else 2.45  # the excitation (extract) or the drift (2.5 rad/s) ends
     fair = [(-58.0, 0.0), (29.0, 50.229), (29.0, -50.229)]
@@ -67,20 +81,28 @@ def case(duration: float, elements: int, time_step: float = 0.1) -> dict:
                                               "ramp": 60.0}}},
         "points": points, "lines": lines,
         "analysis": {"type": "system_dynamic", "duration": duration, "time_step": time_step, "output_interval": 1.0,
-                     "n_elements": elements},
+                     "n_elements": elements, **_route(route)},
     }
 
 
-def main(duration: float = 10800.0, elements: int = 40, time_step: float = 0.1) -> None:
+def _route(route: str) -> dict:
+    """The analysis keys of a route: 'coupled', or the uncoupled one with its lines 'quasi_static' or 'dynamic' (the
+    lines' damping of the low-frequency motion estimated at 5 % of critical: the hull has no viscous damping)."""
+    if route == "coupled":
+        return {}
+    return {"coupling": "uncoupled", "uncoupled": {"lines": route, "mooring_damping": 0.05}}
+
+
+def main(duration: float = 10800.0, elements: int = 40, time_step: float = 0.1, route: str = "coupled") -> None:
     import seacable as sc
 
     folder = Path(tempfile.mkdtemp(prefix="bench_floating_"))
     path = folder / "volturnus.yaml"
-    path.write_text(yaml.safe_dump(case(duration, elements, time_step), sort_keys=False))
-    print(f"VolturnUS-S, {duration:g} s storm, {elements} elements a line, dt {time_step:g} s, "
+    path.write_text(yaml.safe_dump(case(duration, elements, time_step, route), sort_keys=False))
+    print(f"VolturnUS-S, {route}, {duration:g} s storm, {elements} elements a line, dt {time_step:g} s, "
           f"load {os.getloadavg()[0]:.2f}")
     loaded = sc.load_case(path)
-    warm = case(2.0, elements, time_step)  # the kernels compiled (or loaded from the cache) before the timing
+    warm = case(2.0, elements, time_step, route)  # the kernels compiled (or loaded from the cache) before the timing
     (folder / "warm.yaml").write_text(yaml.safe_dump(warm, sort_keys=False))
     sc.run(sc.load_case(folder / "warm.yaml"))
     cpu, wall = time.process_time(), time.perf_counter()
@@ -94,6 +116,7 @@ def main(duration: float = 10800.0, elements: int = 40, time_step: float = 0.1) 
 
 
 if __name__ == "__main__":
-    args = sys.argv[1:]
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    flags = [a.removeprefix("--") for a in sys.argv[1:] if a.startswith("--")]
     main(float(args[0]) if args else 10800.0, int(args[1]) if len(args) > 1 else 40,
-         float(args[2]) if len(args) > 2 else 0.1)
+         float(args[2]) if len(args) > 2 else 0.1, flags[0] if flags else "coupled")

@@ -40,6 +40,10 @@ _ANALYSES = {
     "system_offsets": ("seacable.system.run", "run_system_offsets", "prepare_system_offsets"),
     "system_dynamic": ("seacable.system.dynamics", "run_system_dynamic", "prepare_system_dynamic"),
 }
+#: an analysis type's other route (``coupling`` of system_dynamic) -> its runner and check, as in ``_ANALYSES``
+_ROUTES = {
+    ("system_dynamic", "uncoupled"): ("seacable.system.uncoupled", "run_system_uncoupled", "prepare_system_uncoupled"),
+}
 
 TIME_DOMAIN = ("towed_dynamic", "laying_dynamic", "mooring_dynamic", "towline_dynamic", "system_dynamic")
 """The analyses with a time loop: they take a ``progress`` callback and can be interrupted."""
@@ -63,6 +67,12 @@ def _case(case) -> Case | SystemCase:
         raise InputError(f"run() takes a seacable.Case or a seacable.SystemCase, got {type(case).__name__}. "
                          "Suggested fix: seacable.load_case('file.yaml') or seacable.Case(...).")
     return case
+
+
+def _entry(case) -> tuple:
+    """The (module, runner, check) of a case's analysis: its type's, or its route's (``coupling``)."""
+    a = case.analysis
+    return _ROUTES.get((a.type, getattr(a, "coupling", None)), _ANALYSES[a.type])
 
 
 def run(case: Case, progress=None, out=None):
@@ -95,7 +105,7 @@ def run(case: Case, progress=None, out=None):
 
         return run_moordyn_case(case, progress=progress, out=out)
     kind = _case(case).analysis.type
-    module, runner, _ = _ANALYSES[kind]
+    module, runner, _ = _entry(case)
     runner = getattr(import_module(module), runner)
     options = {"progress": progress} if progress is not None and kind in TIME_DOMAIN else {}
     if out is not None and kind in STREAMED:
@@ -129,5 +139,5 @@ def check(case: Case) -> None:
 
         prepare_moordyn(case)
         return
-    module, runner, prepare = _ANALYSES[_case(case).analysis.type]
+    module, runner, prepare = _entry(_case(case))
     getattr(import_module(module), prepare or runner)(case)

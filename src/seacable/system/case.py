@@ -47,7 +47,8 @@ from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = ["SYSTEM_ANALYSES", "ExternalForceSeries", "LineFailure", "SystemAnalysis", "SystemCase",
-           "SystemDynamicAnalysis", "SystemOffsetsAnalysis", "SystemStaticAnalysis", "is_system_data"]
+           "SystemDynamicAnalysis", "SystemOffsetsAnalysis", "SystemStaticAnalysis", "UncoupledRoute",
+           "is_system_data"]
 
 
 class _Solve(Model):
@@ -207,6 +208,43 @@ BodyMotion = Annotated[Union[Annotated[PlatformMotion, Tag("platform")], Annotat
                        Discriminator(_motion_type)]
 
 
+
+class UncoupledRoute(Model):
+    """Options of ``system_dynamic``'s uncoupled route (``coupling: uncoupled``, :mod:`seacable.system.uncoupled`).
+
+    The free body's low-frequency motion is solved alone (Cummins' equation) with the mooring's stiffness about
+    the mean position and a damping: the body's own (linear, quadratic, the wind's) plus ``mooring_damping``, the
+    lines' damping as a fraction of critical in surge, sway and yaw. Its default, 0, assumes no line damping:
+    larger slow-drift motion than with the lines' real damping, so the route errs on the heavy side there; give
+    an estimate (a few per cent of critical for chain in deep water) to be less conservative. ``lines``: the
+    lines driven by the summed motion in time (``dynamic``: their inertia and drag, the system_dynamic kernel) or
+    by their catenary statics at each output time (``quasi_static``: fast, no line dynamics).
+    """
+
+    mooring_damping: tuple[float, float, float] = Field(
+        (0.0, 0.0, 0.0), description="The lines' damping of the low-frequency motion as a fraction of critical in "
+                                     "surge, sway and yaw (one number: all three). [-]")
+    lines: Literal["dynamic", "quasi_static"] = Field(
+        "dynamic", description="Lines driven by the summed motion in time ('dynamic') or quasi-statically "
+                               "('quasi_static': each line's elastic catenary at each output time).")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _scalar(cls, data):
+        if isinstance(data, dict) and isinstance(data.get("mooring_damping"), (int, float)) \
+                and not isinstance(data.get("mooring_damping"), bool):
+            return {**data, "mooring_damping": (data["mooring_damping"],) * 3}
+        return data
+
+    @model_validator(mode="after")
+    def _fractions(self):
+        for k, z in zip(("surge", "sway", "yaw"), self.mooring_damping, strict=True):
+            if not (math.isfinite(z) and 0.0 <= z < 1.0):
+                raise ValueError(f"mooring_damping in {k} must be a fraction of critical damping in [0, 1), got {z}. "
+                                 "Suggested fix: 0.05 for 5 % of critical (a percentage divided by 100).")
+        return self
+
+
 class SystemDynamicAnalysis(Model):
     """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
 
@@ -259,9 +297,29 @@ class SystemDynamicAnalysis(Model):
                          "resolved ones (a damping ratio of about this times w dt / 2). [-]")
     tolerance: quantity("-", gt=0, lt=1e-2) = Field(
         1e-8, description="Newton tolerance of the statics on the force residual, relative. [-]")
+    coupling: Literal["coupled", "uncoupled"] = Field(
+        "coupled", description="'coupled': the free bodies and the lines in one time step; 'uncoupled': the fast route "
+                               "(the body's low-frequency motion alone with the mooring's stiffness, its wave-frequency "
+                               "motion from its RAOs, the lines driven by their sum; seacable.system.uncoupled).")
+    uncoupled: UncoupledRoute | None = Field(
+        None, description="Options of the uncoupled route (coupling: uncoupled): mooring_damping, lines.")
 
     @model_validator(mode="after")
     def _check(self):
+        if self.uncoupled is not None and self.coupling != "uncoupled":
+            raise ValueError("'uncoupled' gives the options of the uncoupled route, but coupling is 'coupled'. "
+                             "Suggested fix: add 'coupling: uncoupled', or drop 'uncoupled'.")
+        if self.coupling == "uncoupled":
+            for key, given in (("failures", self.failures), ("release_offsets", self.release_offsets),
+                               ("external_forces", self.external_forces), ("body_motions", self.body_motions),
+                               ("point_motions", self.point_motions)):
+                if given:
+                    raise ValueError(f"coupling 'uncoupled' does not take '{key}': the uncoupled route moves its free "
+                                     "body by the summed low- and wave-frequency motion about a fixed mooring "
+                                     "(seacable.system.uncoupled). Suggested fix: drop it, or use coupling: coupled.")
+            if self.start != "equilibrium":
+                raise ValueError(f"coupling 'uncoupled' starts from the equilibrium under the mean loads, got start "
+                                 f"'{self.start}'. Suggested fix: drop 'start'.")
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")

@@ -85,6 +85,9 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     and the run size (:func:`seacable._limits.check_run_size`).
     """
     a: SystemDynamicAnalysis = case.analysis
+    if getattr(a, "coupling", "coupled") != "coupled":
+        raise InputError(f"prepare_system_dynamic runs the coupled route, the case asks for coupling '{a.coupling}'. "
+                         "Suggested fix: seacable.run(case) (or seacable.system.uncoupled.run_system_uncoupled).")
     system = _system_of(case)
     where = "analysis"
     for key, names, want in (("body_motions", a.body_motions, ("prescribed",)),

@@ -1,0 +1,228 @@
+"""The uncoupled route of ``system_dynamic`` (``coupling: uncoupled``, issue 39) against closed forms: the
+frequency-domain RAO of the database with the mooring's stiffness, and the slow-drift variance of Newman's
+approximation through the low-frequency transfer function (Pinkster's force spectrum,
+:func:`seacable.hydro.response.slow_drift_variance`); and against the coupled route of the same case.
+
+The VolturnUS-S hull of tests/data/volturnus (the ``hull_case`` fixture) on three taut ropes.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import seacable as sc
+from seacable.errors import InputError
+from seacable.hydro import frequency_response, read_wamit
+from seacable.hydro.loads import _drift
+from seacable.hydro.response import _transfer, coefficients_at, slow_drift_variance
+from seacable.mooring.motion import sea_of
+from seacable.mooring.outputs import water_of_environment
+from seacable.system.uncoupled import prepare_system_uncoupled, uncoupled_motion
+
+ROOT = Path(__file__).parents[1] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+RHO, G = 1025.0, 9.80665
+VOLUME = 20206.34889
+INERTIA = (1.2507e10, 1.2507e10, 2.3667e10)
+DAMPING = np.diag([6e5, 6e5, 1.4e6, 1.4e9, 1.4e9, 6e8])
+ZG = -5.0
+# ropes 10x stiffer than the fixture's: a mooring the low-frequency motion feels (surge period about 190 s)
+ROPE = {"diameter": 0.05, "mass_per_length": 5.0, "axial_stiffness": 1e7, "drag_normal": 1.2,
+        "added_mass_normal": 1.0}
+
+
+def _rigid():
+    m = RHO * VOLUME
+    rigid = np.diag([m, m, m, *INERTIA])
+    rigid[0, 4] = rigid[4, 0] = m * ZG
+    rigid[1, 3] = rigid[3, 1] = -m * ZG
+    rigid[3, 3] += m * ZG ** 2
+    rigid[4, 4] += m * ZG ** 2
+    return rigid
+
+
+def _hydro(**more):
+    return {"hydrodynamics": {"file": str(ROOT), "kernel_length": 60.0, "ramp": 40.0, **more}}
+
+
+def test_a_regular_wave_moves_the_uncoupled_body_by_the_database_rao(tmp_path, hull_case):
+    """(a) No drift, a regular wave at a frequency of the database (0.85 rad/s): after the ramp the body's motion
+    about its static equilibrium is ``Re(H eta)``, ``eta`` the wave's complex elevation at the reference point (the
+    run's own ``wave_elevation``) and ``H`` the frequency-domain RAO with the database's A, B and X there, the
+    body's linear damping, its hydrostatics with the weight's moment and the mooring's stiffness of system_static.
+    To 1e-6 of the motion: the same linear algebra, so round-off and the table's 8e-8 rad/s off the node."""
+    db = read_wamit(ROOT, rho=RHO, g=G)
+    omega = float(db.excitation_omega[4])
+    waves = {"height": 2.0, "period": 2 * math.pi / omega}
+    static = sc.run(sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body=_hydro(drift="none"),
+                                           analysis={"type": "system_static"})))
+    case = sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body=_hydro(drift="none"), analysis={
+        "duration": 80.0, "output_interval": 0.5, "coupling": "uncoupled", "uncoupled": {"lines": "quasi_static"}}))
+    ds = sc.run(case)
+    assert ds.attrs["coupling"] == "uncoupled" and ds.attrs["analysis"] == "system_dynamic"
+    t = np.asarray(ds["time"])
+    q = np.asarray(ds["body_position"])[:, 0]
+    mean = np.array([float(np.asarray(static[k]).reshape(-1)[0]) for k in
+                     ("body_x", "body_y", "body_z", "body_roll", "body_pitch", "body_yaw")])
+    np.testing.assert_allclose(ds.attrs["mean_position"], mean, atol=1e-9)
+    moor = np.asarray(static["stiffness"]).reshape(6, 6)
+    hydrostatic = np.asarray(case.system().bodies["hull"].hydrostatic_stiffness)
+    a, b = (m[0] for m in coefficients_at(db, omega))
+    h = frequency_response(_rigid(), a, b + DAMPING, hydrostatic + moor, db.excitation_at(omega, 0.0), omega)
+    after = t > 40.0  # the ramp's end
+    eta = np.asarray(ds["wave_elevation"])[after]
+    basis = np.column_stack([np.cos(omega * t[after]), np.sin(omega * t[after])])
+    c = np.linalg.lstsq(basis, eta, rcond=None)[0]  # eta = Re(E e^(-i w t)), E = c0 + i c1
+    expect = np.real(np.outer(np.exp(-1j * omega * t[after]), (c[0] + 1j * c[1]) * h))
+    scale = np.abs(h) * abs(c[0] + 1j * c[1])
+    for j in (0, 2, 4):  # surge, heave, pitch (sway, roll, yaw are 0 in head seas)
+        assert np.max(np.abs(q[after, j] - mean[j] - expect[:, j])) < 1e-6 * scale[j], j
+    # the quasi-static lines at the start (the mean position) have the statics' tensions, to the half end element's
+    # weight (5 kg/m of 30 m elements: 0.6 kN of 0.66 MN)
+    np.testing.assert_allclose(np.asarray(ds["fairlead_tension"])[0], np.asarray(static["fairlead_tension"])[0],
+                               rtol=2e-3)
+
+
+def test_the_uncoupled_slow_drift_has_the_frequency_domain_variance(tmp_path, hull_case):
+    """(b) Newman's slow drift in a JONSWAP storm (Hs 6 m, Tp 10 s, 60 components) through Cummins' equation with the
+    mooring's stiffness and 5 % of critical of line damping (2 z sqrt(K (M + A(0))) in surge, sway and yaw, written
+    out here), over 28 hours (the first 1000 s, the transient, left out):
+
+    - the record is the frequency-domain synthesis of its own sea, ``sum Re(H_LF(mu_ij) c_ij e^(-i mu_ij t))`` over
+      the pairs (Pinkster's terms through the LF transfer function with the database's A and B): its variance to
+      1 % (measured 0.1 %: the kernel's A and B, cut at 60 s, against the database's, and the 0.5 s step);
+    - its variance is :func:`~seacable.hydro.response.slow_drift_variance`'s expectation within three standard errors
+      of one such record, 12 % (the ratio's scatter over 30 realisations of this sea, synthesised in the frequency
+      domain: 4 % over 28 h, 13 % over 3 h, where the surge's 190 s period beats between pairs outlast the record).
+    """
+    db = read_wamit(ROOT, rho=RHO, g=G)
+    waves = {"spectrum": "jonswap", "hs": 6.0, "tp": 10.0, "seed": 1, "n_components": 60,
+             "frequency_range": [0.3, 1.4]}
+    case = sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body=_hydro(excitation=False), analysis={
+        "duration": 100000.0, "time_step": 0.5, "output_interval": 1.0, "coupling": "uncoupled",
+        "uncoupled": {"mooring_damping": 0.05, "lines": "quasi_static"}}))
+    setup = prepare_system_uncoupled(case)
+    motion = uncoupled_motion(case, setup)
+    keep = motion.time > 1000.0
+    surge = motion.low[keep, 0]
+    stiffness = setup.stiffness + setup.mooring_stiffness
+    damping = DAMPING.copy()
+    for j in (0, 1, 5):
+        damping[j, j] += 2 * 0.05 * math.sqrt(stiffness[j, j] * (_rigid()[j, j] + db.added_mass_zero[j, j]))
+    np.testing.assert_allclose(setup.linear_damping, damping, rtol=1e-12, atol=1e-6)
+    sea = sea_of(water_of_environment(case.environment, case.analysis.seabed_contact))
+    # the realisation in the frequency domain, every 4 s (the record's low frequencies, 0.03-0.2 rad/s, resolved)
+    d = np.sqrt(np.maximum(_drift(db, sea), 0.0))  # surge's drift is positive at every frequency here
+    w, a = sea.omega, sea.amplitude
+    i, j = np.triu_indices(w.size, 1)
+    c = (2 * a[i] * a[j])[:, None] * d[i] * d[j] * np.exp(1j * (sea.phase[j] - sea.phase[i]))[:, None]
+    response = np.linalg.solve(_transfer(db, _rigid(), stiffness, damping, w[j] - w[i]), c[..., None])[..., 0, 0]
+    t = motion.time[keep][::8]
+    synth = np.concatenate([(np.exp(-1j * np.outer(t[lo:lo + 1000], w[j] - w[i])) @ response).real
+                            for lo in range(0, t.size, 1000)])
+    assert np.var(surge[::8]) == pytest.approx(np.var(synth), rel=0.01)
+    expected = slow_drift_variance(db, sea, _rigid(), stiffness, damping)[0]
+    assert np.var(surge) == pytest.approx(expected, rel=0.12)
+
+
+def test_uncoupled_keys_refused_with_one_message(tmp_path, hull_case):
+    waves = {"height": 2.0, "period": 7.4}
+    cases = [
+        ({"uncoupled": {"lines": "quasi_static"}}, (r"'uncoupled' gives the options of the uncoupled route, but "
+                                                    r"coupling is 'coupled'")),
+        ({"coupling": "uncoupled", "uncoupled": {"mooring_damping": 5.0}},
+         r"mooring_damping in surge must be a fraction of critical damping in \[0, 1\), got 5.0.*0.05 for 5 %"),
+        ({"coupling": "uncoupled", "uncoupled": {"lines": "static"}}, r"lines"),
+        ({"coupling": "sometimes"}, r"coupling"),
+        ({"coupling": "uncoupled", "failures": [{"line": "rope0", "end": "b", "time": 5.0}]},
+         r"coupling 'uncoupled' does not take 'failures'"),
+        ({"coupling": "uncoupled", "start": "held"}, r"coupling 'uncoupled' starts from the equilibrium"),
+    ]
+    for analysis, message in cases:
+        with pytest.raises(InputError, match=message):
+            sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body=_hydro(), analysis=analysis))
+
+
+@pytest.mark.parametrize("body, rope, message", [
+    ({"hydrodynamics": None, "hydrostatic_stiffness": np.diag([0, 0, 4.5e6, 1e9, 1e9, 0]).tolist()}, ROPE,
+     r"bodies.hull: coupling 'uncoupled' needs the body's hydrodynamic database"),
+    (_hydro(), {**ROPE, "tension_strain": [[0.0, 0.0], [1e6, 0.1]], "axial_stiffness": 1e7},
+     r"lines.rope0: analysis.uncoupled.lines 'quasi_static' takes a constant axial stiffness"),
+])
+def test_an_uncoupled_case_it_cannot_run_is_refused_by_validate_and_run(tmp_path, hull_case, body, rope, message):
+    case = sc.load_case(hull_case(tmp_path, waves={"height": 2.0, "period": 7.4}, rope=rope, body=body, analysis={
+        "duration": 10.0, "coupling": "uncoupled", "uncoupled": {"lines": "quasi_static"}}))
+    with pytest.raises(InputError, match=message):
+        sc.check(case)
+    with pytest.raises(InputError, match=message):
+        sc.run(case)
+
+
+def test_the_uncoupled_route_against_the_coupled_one_in_a_storm(tmp_path, hull_case):
+    """(c) The same case (a JONSWAP storm, Hs 6 m, Tp 10 s, Newman's drift, 600 s) by both routes: the fairlead
+    tensions' mean and standard deviation after 200 s (the coupled body's start: its first-order force ramped on
+    over 40 s rings its 190 s surge mode, damped in about 110 s; the uncoupled route ramps the response instead).
+
+    Both start from the equilibrium under the mean drift and feel the same sea with the same phases, so they differ
+    by what the uncoupled route leaves out: the lines' damping of the body (here none is estimated, mooring_damping
+    0, against the light ropes' drag in the coupled run), the lines' inertia and drag felt by the body at wave
+    frequency, and the RAOs taken about the mean position rather than the instantaneous one. With these light taut
+    ropes (5 kg/m) all three are small: measured 0.3-0.8 % on the mean and 1.3-1.8 % on the standard deviation
+    (after 100 s of 600 s): asserted to 3 % and 5 %. The quasi-static lines give the dynamic
+    lines' tensions to 0.3 % (the ropes' own dynamics are negligible here; for chain in deep water they are not:
+    README). The README says when the uncoupled route is not conservative."""
+    waves = {"spectrum": "jonswap", "hs": 6.0, "tp": 10.0, "seed": 3, "n_components": 60,
+             "frequency_range": [0.3, 1.4]}
+    run = {"duration": 600.0, "output_interval": 0.5}
+    stats = {}
+    for route, extra in (("coupled", {}),
+                         ("dynamic", {"coupling": "uncoupled", "uncoupled": {"lines": "dynamic"}}),
+                         ("quasi_static", {"coupling": "uncoupled", "uncoupled": {"lines": "quasi_static"}})):
+        ds = sc.run(sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body=_hydro(), analysis={**run, **extra})))
+        keep = np.asarray(ds["time"]) > 200.0
+        tension = np.asarray(ds["fairlead_tension"])[keep]
+        stats[route] = tension.mean(axis=0), tension.std(axis=0)
+    for route in ("dynamic", "quasi_static"):
+        np.testing.assert_allclose(stats[route][0], stats["coupled"][0], rtol=0.03)
+        np.testing.assert_allclose(stats[route][1], stats["coupled"][1], rtol=0.05)
+    np.testing.assert_allclose(stats["quasi_static"][1], stats["dynamic"][1], rtol=0.01)
+
+
+def test_the_mean_wind_moves_the_uncoupled_body_as_the_statics_under_its_force(tmp_path, hull_case):
+    """The mean position under a 20 m/s wind (at 10 m; NPD's profile to the 100 m centre of pressure, 1/2 rho_air
+    C A U^2 with C A = 1000 m^2: about 0.4 MN) is system_static's equilibrium under that force as the body's
+    external force (to the statics' tolerance); the gusts move the body about it (a low-frequency motion > 0)."""
+    from seacable.wind import AIR_DENSITY, npd_profile
+
+    wind_areas = {"wind": {"height": 100.0, "surge": [1000.0], "sway": [0.0], "yaw": [0.0]}}
+    waves = {"height": 2.0, "period": 7.4}
+    env_wind = {"speed": 20.0, "heading": 0.0, "spectrum": "npd", "seed": 2}
+    path = hull_case(tmp_path, waves=waves, rope=ROPE, body={**_hydro(drift="none"), **wind_areas}, analysis={
+        "duration": 200.0, "output_interval": 1.0, "coupling": "uncoupled", "uncoupled": {"lines": "quasi_static"}})
+    import yaml
+
+    data = yaml.safe_load(path.read_text())
+    data["environment"]["wind"] = env_wind
+    path.write_text(yaml.safe_dump(data, sort_keys=False))
+    ds = sc.run(sc.load_case(path))
+    force = 0.5 * AIR_DENSITY * 1000.0 * float(npd_profile(20.0, 100.0)) ** 2
+    static = sc.run(sc.load_case(hull_case(tmp_path, waves=waves, rope=ROPE, body={
+        **_hydro(drift="none"), "external_force": [force, 0, 0, 0, 0, 0]}, analysis={"type": "system_static"})))
+    mean = np.array([float(np.asarray(static[k]).reshape(-1)[0]) for k in ("body_x", "body_y", "body_z")])
+    assert mean[0] > 5.0  # the wind moves it metres
+    np.testing.assert_allclose(ds.attrs["mean_position"][:3], mean, atol=1e-6 * abs(mean[0]))
+    assert np.std(np.asarray(ds["body_low_frequency_motion"])[:, 0, 0]) > 0.01
+
+
+def test_the_coupled_runner_refuses_an_uncoupled_case(tmp_path, hull_case):
+    """Called directly, the coupled route's runner does not run an uncoupled case coupled in silence."""
+    from seacable.system.dynamics import prepare_system_dynamic
+
+    case = sc.load_case(hull_case(tmp_path, waves={"height": 2.0, "period": 7.4}, rope=ROPE, body=_hydro(),
+                                  analysis={"duration": 10.0, "coupling": "uncoupled"}))
+    with pytest.raises(InputError, match=r"prepare_system_dynamic runs the coupled route, the case asks for coupling "
+                                         r"'uncoupled'.*seacable.run\(case\)"):
+        prepare_system_dynamic(case)
