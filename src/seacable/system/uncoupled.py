@@ -12,8 +12,8 @@ The frequency-domain practice of API RP 2SK and DNV-OS-E301, in the time domain:
    mean, with the restoring ``C + K_m`` (the database's hydrostatics with the weight's moment, the mooring),
    the radiation memory, the body's linear and quadratic damping, the wind's damping and the lines' damping
    ``mooring_damping`` (a fraction ``z`` of critical in surge, sway and yaw: ``2 z sqrt(K_jj (M_jj + A_jj(0)))``),
-   forced by the slowly varying loads only: the slow drift less its mean (Newman's approximation, when the
-   body's ``drift`` is ``newman``) and the wind's gusts. Heave, roll and pitch are solved too: the wind's moment
+   forced by the slowly varying loads only: the slow drift less its mean (Newman's approximation or the full
+   QTF, when the body's ``drift`` is ``newman`` or ``qtf``) and the wind's gusts. Heave, roll and pitch are solved too: the wind's moment
    and the slow drift pitch a semi-submersible, and the fairleads move with it.
 3. **Wave frequency.** The body's RAOs from its database at the sea's own frequencies (:func:`sea_raos`: its rigid
    mass, ``A(w)``, ``B(w)``, ``X(w)`` and linear damping, the restoring ``C + K_m``) in the case's sea, with the phases referred
@@ -156,7 +156,7 @@ def _check_quasi_static(case, system: MooringSystem, name: str) -> None:
     fix = "Suggested fix: 'lines: dynamic' (the lines in time), or a system the catenaries can model."
     from .statics_mode import needs_fe
 
-    if needs_fe(env):
+    if needs_fe(env.model_copy(update={"wind": None})):  # the wind acts on the body alone
         raise InputError("analysis.uncoupled.lines 'quasi_static': the catenary lines take no current and no sloping "
                          f"seabed, and the environment has one of them (seabed slope {env.seabed.slope:g} rad). {fix}")
     for ln, line in system.lines.items():
@@ -235,6 +235,7 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     from .statics_mode import needs_fe
 
     external = {name: tuple(float(v) for v in mean)}
+    env = env.model_copy(update={"wind": None})  # its mean force is in ``external`` (at the body's given heading)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # the statics' remarks are the run's own
@@ -334,11 +335,12 @@ def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
     t = dt * np.arange(math.ceil(a.duration / dt - 1e-9) + 2)
     force = np.zeros((t.size, 6))
     local = None if s.sea is None else _moved(s.sea, body.position[0], body.position[1])
-    if local is not None and h.drift == "newman":
-        from ..hydro.loads import mean_drift_force, slow_drift_force
+    if local is not None and h.drift in ("newman", "qtf"):
+        from ..hydro.loads import mean_drift_force, qtf_drift_force, slow_drift_force
 
         r = smooth_ramp(t, float(h.ramp))[0] if h.ramp > 0 else (t > 0).astype(float)
-        force += r[:, None] * (slow_drift_force(db, local, t) - mean_drift_force(db, local))
+        slow = slow_drift_force(db, local, t) if h.drift == "newman" else qtf_drift_force(db, local, t)
+        force += r[:, None] * (slow - mean_drift_force(db, local))
     if env.wind is not None and body.wind is not None and env.wind.spectrum != "none" and env.wind.speed > 0:
         gusty = body_wind_loads(body, s.body, env.wind, t)[0]
         steady = body_wind_loads(body, s.body, env.wind.model_copy(update={"spectrum": "none"}), t[:1])[0][0]
