@@ -40,7 +40,9 @@ from pathlib import Path
 import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared" / "peers" / "iea15_volturnus" / "IEA-15-240-RWT-UMaineSemi"
+#: the project's shared folder (the full database under it), or the environment's SEACABLE_SHARED (a worktree's)
+SHARED = (Path(os.environ.get("SEACABLE_SHARED", ROOT.parent / "shared")) / "peers" / "iea15_volturnus"
+          / "IEA-15-240-RWT-UMaineSemi")
 EXTRACT = ROOT / "tests" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 
 

@@ -31,6 +31,17 @@ from .fe import SystemFE, _rot
 #: margin (about Hs) covers its wave-frequency motion. A node outside the grid gets the kinematics at its edge.
 SEA_EXCURSION = 0.1
 
+#: A run with a free body takes the irregular sea's grid in depth bands (:class:`seacable.seastate.SeaBands`):
+#: below the top band, the components that carry under 0.1 % of the sea's acceleration there are left out and the
+#: grid's steps follow the shortest kept, so that the lines' deep part (a floater's mooring reaching 800 m out) is
+#: gridded for the waves that reach it. False: one grid of all components (as a lines-only run).
+SEA_BANDS = True
+
+
+def sea_bands(fe: SystemFE) -> bool:
+    """Whether the run of ``fe`` takes the irregular sea's grid in depth bands (``SEA_BANDS``, a free body)."""
+    return SEA_BANDS and len(fe.free_bodies) > 0
+
 
 @dataclass(frozen=True)
 class SystemState:
@@ -196,7 +207,9 @@ def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: f
     ``SEA_EXCURSION`` of the depth each way along x and y (a lines-only system: none, as the mooring model's own
     run takes them)."""
     t_out = np.linspace(0.0, duration, round(duration / output_interval) + 1)
-    parts = [np.asarray(X, float).reshape(-1, 3), channels(t_out)[0].reshape(-1, 3)]
+    parts = [np.asarray(X, float).reshape(-1, 3)]
+    if fe.model.network.n_channels:  # (without prescribed nodes the channels are one stand-in at the origin)
+        parts.append(channels(t_out)[0].reshape(-1, 3))
     tied = np.asarray(fe.con_node)[np.asarray(fe.con_body) >= 0]
     if len(tied):
         depth = fe.model.water.depth
@@ -317,7 +330,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     tension = np.zeros(net.n_elements)
     m.settle_viscoelastic(X, np.zeros_like(X))
     if m.water.sea is not None:  # an irregular sea: its kinematics on a grid over where the lines go
-        m.prepare_sea(duration, sea_positions(fe, X, channels, duration, output_interval))
+        m.prepare_sea(duration, sea_positions(fe, X, channels, duration, output_interval), bands=sea_bands(fe))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
     initial_accelerations(fe, X, V, A, q, qd, qdd, frame, v0[0], a0[0])
     g = _global_state(q, qd, frame)
