@@ -33,7 +33,10 @@ and in depth below the still-water level (levels closer near the surface), and i
 regular wave. The grid covers the nodes above the depth where the waves die out (:func:`cutoff_depth`;
 below it no wave kinematics), holds only the components that matter at the highest of them
 (:func:`significant`), and a long run takes it in windows of time
-(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
+(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). A run with a free body takes it in depth bands
+(:class:`SeaBands`, :func:`depth_bands`): below the top band, each band holds only the components that carry
+0.1 % or more of the acceleration's standard deviation there, on steps that follow the shortest of them, and a
+column that none of the points reaches in a band's depths holds no levels of its own. Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
 or Wheeler-stretched [2]_ (``z' = (z - eta) d / (d + eta)``, ``z' = z - eta`` in deep water): the
 stretched point ``z'`` is where the linear-theory kinematics are taken, so that the crest's
 kinematics are those of z = 0 and the seabed stays at the seabed.

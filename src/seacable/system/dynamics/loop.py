@@ -188,16 +188,18 @@ def outside_sea(sea, points) -> int | None:
 
     if sea is None or len(sea) <= S_Y0 or sea[S_MODE] <= 0 or not len(points):
         return None
-    p = np.asarray(points, float)
-    cb, sb = sea[S_COS], sea[S_SIN]
-    along = p[:, 0] * cb + p[:, 1] * sb
-    across = -p[:, 0] * sb + p[:, 1] * cb
-    tol = 1e-6 * max(1.0, sea[S_DX])
-    out = (along < sea[S_X0] - tol) | (along > sea[S_X0] + sea[S_DX] * (sea[S_NX] - 1) + tol)
-    if sea[S_NY] > 1:
-        out |= (across < sea[S_Y0] - tol) | (across > sea[S_Y0] + sea[S_DY] * (sea[S_NY] - 1) + tol)
-    hit = np.flatnonzero(out)
-    return int(hit[0]) if hit.size else None
+    # a few points once an output interval: plain floats (numpy's calls on them cost more than the arithmetic)
+    h = sea[:max(S_COS, S_SIN, S_DX, S_DY, S_NX, S_NY, S_X0, S_Y0) + 1].tolist()
+    cb, sb, dx = h[S_COS], h[S_SIN], h[S_DX]
+    tol = 1e-6 * max(1.0, dx)
+    lo, hi = h[S_X0] - tol, h[S_X0] + dx * (h[S_NX] - 1) + tol
+    wide = h[S_NY] > 1
+    ylo, yhi = h[S_Y0] - tol, h[S_Y0] + h[S_DY] * (h[S_NY] - 1) + tol
+    for i, (x, y) in enumerate(np.asarray(points, float)[:, :2].tolist()):
+        along, across = x * cb + y * sb, -x * sb + y * cb
+        if along < lo or along > hi or (wide and (across < ylo or across > yhi)):
+            return i
+    return None
 
 
 def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: float) -> np.ndarray:
