@@ -16,7 +16,6 @@ elements a line, dt 0.1 s:
   full (sea to 2.45 rad/s), one grid     6.8 s (88x)              109 s wall, 190 s CPU (99x)      3.6x over 30 s
   full, one grid, at load 4.6           22.8 s wall, 8.6 s CPU    302 s wall, 171 s CPU            10x over 30 s
   full, depth bands, at load 4.6         7.7 s wall, 3.0 s CPU    80.5 s wall, 50.6 s CPU          2.7x over 30 s
-
   full, depth bands, at load 3.1                                  50.0 s wall, 49.0 s CPU (216x)   1.7x over 30 s
 
 (the two rows at load 4.6 in the same minutes, one after the other). Profiled over 1200 s with the bands (load 3):
@@ -29,8 +28,7 @@ deviation, on steps that follow the shortest kept; columns no point reaches in a
 3.4 times less CPU for the storm, 2.9 times for 600 s; the grid's windows 5.7 times less (0.63 against 3.6-4.2 s
 of CPU per 300 s of storm at load 5-10, window by window). The coupled steps, profiled at load about 1 before the
 bands, took 0.59 s per 300 s (0.38 s with a calm sea: the waves' share, more Newton iterations and look-ups).
-The
-storm's statistics stay: surge mean 2.00 m, largest 10.36 m (10.37 m with one grid), largest fairlead tension
+The storm's statistics stay: surge mean 2.00 m, largest 10.36 m (10.37 m with one grid), largest fairlead tension
 3111 kN (3116 kN). At 0.1 s a few steps need halving (the first at t = 273.8 s), which the radiation memory
 allows (:func:`seacable.system.dynamics.kernel.coupled_steps`).
 
