@@ -19,8 +19,15 @@ from ..case import SystemDynamicAnalysis
 from ..damaged import is_most_loaded, line_tensions, most_loaded_line
 from ..model import MooringSystem
 from .fe import SystemFE, build_system_fe, lines_only
-from .loop import (SystemState, _channels_fn, _simulate_lines, sea_bands, sea_positions, simulate_system,
-                   static_system)
+from .loop import (
+    SystemState,
+    _channels_fn,
+    _simulate_lines,
+    sea_bands,
+    sea_positions,
+    simulate_system,
+    static_system,
+)
 from .outputs import system_result
 
 
