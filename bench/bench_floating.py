@@ -7,13 +7,30 @@ excitation, Newman slow drift from the .12d diagonal), in a 3-hour JONSWAP storm
 and turbine's rounded (mass 2.03e7 kg, centre of gravity 2 m below the water line, inertias 4e10, 4e10, 2.4e10 kg
 m^2): a speed figure, not a validation. Issue 39's target: under 30 s on one core with 40 elements a line.
 
-The lines feel the irregular sea (its kinematics on a grid, as a single line's run). Measured 2026-11-30 (one
-process, shared 2-core machine at load 0.7-1.7), 40 elements a line, dt 0.1 s:
+The lines feel the irregular sea (its kinematics on a grid, as a single line's run; a free body's run takes it in
+depth bands, :class:`seacable.seastate.SeaBands`). Measured 2026-11-30 (one process, shared 2-core machine), 40
+elements a line, dt 0.1 s:
 
-  database                             600 s run      3-hour storm                     target
-  tests' extract (sea to 1.45 rad/s)     2.8 s (215x)   45.9 s wall, 45.8 s CPU (235x)   1.5x over 30 s
-  full (sea to 2.45 rad/s)               6.8 s (88x)    159 s wall, 172 s CPU (68x)      5.3x over 30 s
-  full, the merged main at load 1.8                     109 s wall, 190 s CPU (99x)      3.6x over 30 s
+  database                             600 s run                3-hour storm                     target
+  tests' extract (sea to 1.45 rad/s)     2.8 s (215x)             45.9 s wall, 45.8 s CPU (235x)   1.5x over 30 s
+  full (sea to 2.45 rad/s), one grid     6.8 s (88x)              109 s wall, 190 s CPU (99x)      3.6x over 30 s
+  full, one grid, at load 4.6           22.8 s wall, 8.6 s CPU    302 s wall, 171 s CPU            10x over 30 s
+  full, depth bands, at load 4.6         7.7 s wall, 3.0 s CPU    80.5 s wall, 50.6 s CPU          2.7x over 30 s
+  full, depth bands, at load 3.1                                  50.0 s wall, 49.0 s CPU (216x)   1.7x over 30 s
+
+(the two rows at load 4.6 in the same minutes, one after the other). Profiled over 1200 s with the bands (load 3):
+6.96 s, of which 3.37 s in the coupled steps (about 30 s for 3 hours: the stepping alone is now over the
+target), 2.20 s in the grid's windows (16.7 s of 21 s with one grid), 0.59 s in the body's first-order loads'
+set-up (``seacable.hydro.loads._phasor_sum``).
+
+The depth bands (below the top band only the components carrying 0.1 % or more of the acceleration's standard
+deviation, on steps that follow the shortest kept; columns no point reaches in a band's depths hold no levels):
+3.4 times less CPU for the storm, 2.9 times for 600 s; the grid's windows 5.7 times less (0.63 against 3.6-4.2 s
+of CPU per 300 s of storm at load 5-10, window by window). The coupled steps, profiled at load about 1 before the
+bands, took 0.59 s per 300 s (0.38 s with a calm sea: the waves' share, more Newton iterations and look-ups).
+The storm's statistics stay: surge mean 2.00 m, largest 10.36 m (10.37 m with one grid), largest fairlead tension
+3111 kN (3116 kN). At 0.1 s a few steps need halving (the first at t = 273.8 s), which the radiation memory
+allows (:func:`seacable.system.dynamics.kernel.coupled_steps`).
 
 The uncoupled route (``--quasi_static``, ``--dynamic``; the lines' damping of the slow drift at 5 % of critical),
 measured 2026-11-30 on the tests' extract at load 7-11 (so the wall times are inflated; the CPU times less so):
@@ -27,16 +44,9 @@ outputs 2.4 s, the slow drift's sum over the 200 components (on the low-frequenc
 1.0 s, Cummins' equation 0.2 s. With the lines in time it costs what the coupled run's lines do (the same kernel,
 the body prescribed): the fast route is the quasi-static one.
 
-With the full database the time goes to the irregular sea's kinematics grid, not the stepping: profiled over
-1200 s, 16.7 s of 21 s in ``seastate.SeaGrid.window`` (14 windows of 91 s, the short waves' fine grid; 15 % of it
-the free body's excursion allowance, ``seacable.system.dynamics.loop.SEA_EXCURSION``) against 3.7 s in the
-coupled steps (3 ms per second of storm: about 33 s for 3 hours). At 0.1 s a few steps need halving (the first
-at t = 273.8 s), which the radiation memory allows (:func:`seacable.system.dynamics.kernel.coupled_steps`).
-The surge mean is 1.8-2.0 m, its largest 10-10.4 m; the largest fairlead tension 2.96-3.12 MN.
-
-Reads the full database from ``../shared/peers/iea15_volturnus`` when it is there (the sea cut at 2.45 rad/s: its
-drift coefficients stop at 2.5 rad/s), else the tests' extract (its excitation stops at 1.45 rad/s: the sea is cut
-there; so from a git worktree beside the main checkout, where ``../shared`` is not).
+Reads the whole database from the project (``examples/data/volturnus``, the sea cut at 2.45 rad/s: its drift
+coefficients stop at 2.5 rad/s). The figures above marked "tests' extract" were taken with the tests' extract of it
+(its excitation stops at 1.45 rad/s).
 
 Run: ``python bench/bench_floating.py [DURATION_S [ELEMENTS [TIME_STEP_S]]] [--quasi_static | --dynamic]`` (default
 10800 s, 40, 0.1 s, the coupled route; ``--quasi_static`` / ``--dynamic``: the uncoupled route with its lines
@@ -54,13 +64,12 @@ from pathlib import Path
 import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared" / "peers" / "iea15_volturnus" / "IEA-15-240-RWT-UMaineSemi"
-EXTRACT = ROOT / "tests" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+#: the whole database in the project (examples/data/volturnus: the full .1 and .3, the .12d diagonal)
+DATABASE = ROOT / "examples" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 
 
 def case(duration: float, elements: int, time_step: float = 0.1, route: str = "coupled") -> dict:
-    database = SHARED if Path(f"{SHARED}.3").is_file() else EXTRACT
-    top = 1.45 if database == EXTRACT else 2.45  # the excitation (extract) or the drift (2.5 rad/s) ends
+    database, top = DATABASE, 2.45  # the sea cut where the drift coefficients end (2.5 rad/s)
     fair = [(-58.0, 0.0), (29.0, 50.229), (29.0, -50.229)]
     anchor = [(-837.6, 0.0), (418.8, 725.383), (418.8, -725.383)]
     points, lines = {}, {}

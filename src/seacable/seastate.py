@@ -33,7 +33,10 @@ and in depth below the still-water level (levels closer near the surface), and i
 regular wave. The grid covers the nodes above the depth where the waves die out (:func:`cutoff_depth`;
 below it no wave kinematics), holds only the components that matter at the highest of them
 (:func:`significant`), and a long run takes it in windows of time
-(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
+(:meth:`seacable.mooring.solver.MooringModel.ensure_sea`). A run with a free body takes it in depth bands
+(:class:`SeaBands`, :func:`depth_bands`): below the top band, each band holds only the components that carry
+0.1 % or more of the acceleration's standard deviation there, on steps that follow the shortest of them, and a
+column that none of the points reaches in a band's depths holds no levels of its own. Above z = 0 the kinematics are the z = 0 values (constant extrapolation, the default)
 or Wheeler-stretched [2]_ (``z' = (z - eta) d / (d + eta)``, ``z' = z - eta`` in deep water): the
 stretched point ``z'`` is where the linear-theory kinematics are taken, so that the crest's
 kinematics are those of z = 0 and the seabed stays at the seabed.
@@ -60,11 +63,13 @@ from .waves import STANDARD_GRAVITY, wave_number
 
 __all__ = [
     "GRID_HEADER",
+    "SeaBands",
     "SeaComponents",
     "SeaGrid",
     "cos2s_spreading",
     "cos_sin",
     "cutoff_depth",
+    "depth_bands",
     "frequency_range",
     "grid_eta",
     "grid_point",
@@ -95,11 +100,15 @@ S_I0 = 18                         # the index i0 of the grid's top level (0: z =
 S_NQ, S_NP = 19, 20               # values a point (4: long-crested, along its heading; 6) and points a time
 S_ETAMAX = 21                     # the largest |elevation| of the grid's window [m]
 S_SINGLE = 22                     # 1: the kinematics stored in single precision (float32 pairs), 0: double
-GRID_HEADER = 23
+S_NEXT = 23                       # offset (values) of the next depth band's header from this one's (0: the last)
+GRID_HEADER = 24
 
 #: Below the depth where the sea's horizontal velocity standard deviation falls under this fraction of its
 #: value at z = 0 the kinematics grid stops and the waves' kinematics are neglected (:func:`cutoff_depth`). [-]
 CUTOFF = 1e-3
+
+#: The ratio of the shortest wave numbers of two successive depth bands of a banded grid (:func:`depth_bands`). [-]
+BAND_RATIO = 2.0
 
 
 def pierson_moskowitz(omega, hs, tp):
@@ -421,9 +430,10 @@ def significant(sea: SeaComponents, z_top: float, fraction=CUTOFF) -> SeaCompone
                          mean_heading=sea.mean_heading, band=sea.band, scale=sea.scale)
 
 
-def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10, z_max=0.0):
+def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_wavelength=10, z_max=0.0, levels=None):
     """Grid counts (nt, nx, ny, nz) and steps (dt, dx, zc, zh) of :func:`kinematics_grid` (for a size check
-    first), and the index i0 of its top level."""
+    first), and the index i0 of its top level. ``levels``: the depth levels' (zc, zh), when not the sea's own
+    (a depth band of :class:`SeaBands` takes those of the band on top)."""
     wmax = float(np.max(sea.omega))
     kmax = float(np.max(sea.wave_number))
     dt = 2.0 * math.pi / wmax / per_period
@@ -435,6 +445,8 @@ def grid_size(sea: SeaComponents, t_end, box, z_min, per_period=20, per_waveleng
     ny = 1 if long_crested or y1 <= y0 else max(math.ceil((y1 - y0) / dx) + 1, 1)
     zc = 3.0 / kmax                         # top level spacing about 0.3 / k_max
     zh = 0.1                                # levels 10 % further apart each
+    if levels is not None:
+        zc, zh = levels
     depth_span = max(-z_min, 0.0)
     nz = math.ceil(math.log1p(depth_span / zc) / zh) + 2
     # the levels above z_max are left out: the level at or just above it is the top one
@@ -472,6 +484,22 @@ def cos_sin(omega, t):
     return out
 
 
+def _nearest_own(own, nx, ny):
+    """For each column of an (nx, ny) grid, the (flat) index of the nearest column of ``own`` (itself when it is
+    one)."""
+    if np.all(own):
+        return np.arange(own.size)
+    if ny == 1:
+        idx, c = np.flatnonzero(own), np.arange(nx)
+        pos = np.searchsorted(idx, c)  # idx[pos - 1] < c <= idx[pos]
+        left, right = idx[np.maximum(pos - 1, 0)], idx[np.minimum(pos, idx.size - 1)]
+        return np.where(np.abs(c - left) <= np.abs(right - c), left, right)
+    from scipy.ndimage import distance_transform_edt
+
+    ix, iy = distance_transform_edt(~own.reshape(nx, ny), return_distances=False, return_indices=True)
+    return (ix * ny + iy).ravel()
+
+
 class SeaGrid:
     """The plan of an irregular sea's kinematics grid (see :func:`kinematics_grid`): its points and their
     phasors, computed once; :meth:`window` gives the packed array of the compiled kernel for a window of time.
@@ -482,7 +510,8 @@ class SeaGrid:
     (nt, nx, ny), and the kinematics (nt, points, nq): per point (u_h, w, a_h, a_z) along the heading b of a
     long-crested sea (nq = 4; u, v = u_h (cos b, sin b), and so the accelerations) or (u, v, w, ax, ay, az)
     (nq = 6). A level outside its column's band reads the band's edge value, as a point beyond the box reads
-    the box's edge.
+    the box's edge; a column given no levels of its own (-1 in ``columns``: no point comes near it) reads the
+    nearest column's (and so its level offset).
 
     ``single``: the kinematics computed and stored in single precision (``S_SINGLE``; float32 pairs in the
     array's doubles): half the memory and half the time of the products. A value then errs by its rounding and
@@ -496,8 +525,9 @@ class SeaGrid:
     KEEP_VALUES = 2 ** 23
 
     def __init__(self, sea: SeaComponents, box, z_min, *, stretching="none", per_period=20, per_wavelength=10,
-                 z_max=0.0, columns=None, chunk=2048, single=False):
-        (_, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, 0.0, box, z_min, per_period, per_wavelength, z_max)
+                 z_max=0.0, columns=None, chunk=2048, single=False, levels=None, elevation=True):
+        (_, nx, ny, nz), (dt, dx, zc, zh), i0 = grid_size(sea, 0.0, box, z_min, per_period, per_wavelength, z_max,
+                                                          levels)
         self.sea, self.sizes, self.steps, self.chunk = sea, (nx, ny, nz), (dt, dx, zc, zh), chunk
         self.dtype = np.float32 if single else np.float64
         (x0, _), (y0, _) = box
@@ -509,18 +539,23 @@ class SeaGrid:
               S_I0, S_NQ]] = (1.0, dt, x0, dx, nx, y0, dx, ny, cb, sb, zc, zh, nz, sea.depth, z_min, i0, self.nq)
         head[S_STRETCH] = 1.0 if stretching == "wheeler" else 0.0
         head[S_SINGLE] = 1.0 if single else 0.0
+        own = np.ones(nx * ny, bool)
         if columns is None:
             lo, hi = np.zeros(nx * ny, int), np.full(nx * ny, nz - 1)
         else:
             cols = np.asarray(columns, int).reshape(nx * ny, 2)
+            own = cols[:, 0] >= 0
+            if not np.any(own):
+                raise ValueError("a sea grid needs a column with levels of its own (all the columns are -1)")
             lo, hi = np.clip(cols[:, 0], 0, nz - 1), np.clip(cols[:, 1], 0, nz - 1)
             hi = np.maximum(hi, lo)
-        count = hi - lo + 1
+        count = np.where(own, hi - lo + 1, 0)
         start = np.concatenate(([0], np.cumsum(count)[:-1]))
         self.n_points = int(count.sum())
         head[S_NP] = self.n_points
         self.head = head
-        self.table = np.stack((lo, hi, start - lo), axis=-1).astype(float).ravel()
+        share = _nearest_own(own, nx, ny)  # a column without levels of its own reads the nearest one's
+        self.table = np.stack((lo[share], hi[share], (start - lo)[share]), axis=-1).astype(float).ravel()
         # the points, column after column, each column's levels lo..hi
         xi = x0 + dx * np.arange(nx)
         ze = y0 + dx * np.arange(ny)
@@ -532,8 +567,10 @@ class SeaGrid:
         self.pz = np.maximum(-zc * np.expm1(zh * (i0 + lev)), -sea.depth)
         self._q = None
         self._buffer = np.empty(0)
-        E = sea._spatial(self.gx, self.gy) * sea.amplitude  # the columns' elevation phasors (columns, n)
-        self._eta_q = np.ascontiguousarray(np.concatenate((E.real.T, E.imag.T)))  # [Re; Im] (2 n, columns)
+        self._eta_q = None  # without the elevation (a depth band below the top one, whose is read): zeros
+        if elevation:
+            E = sea._spatial(self.gx, self.gy) * sea.amplitude  # the columns' elevation phasors (columns, n)
+            self._eta_q = np.ascontiguousarray(np.concatenate((E.real.T, E.imag.T)))  # [Re; Im] (2 n, columns)
 
     def _phasors(self, c0, c1):
         """Phasor matrix [qr; qi] (2 n, (c1 - c0) nq) of the points c0..c1 - 1, point after point."""
@@ -546,27 +583,43 @@ class SeaGrid:
         q = np.concatenate((qr, qi)).reshape(2 * n, self.nq, m).transpose(0, 2, 1)
         return np.ascontiguousarray(q.reshape(2 * n, m * self.nq), dtype=self.dtype)
 
-    def window(self, t_start, t_end) -> np.ndarray:
+    def samples(self, t_start, t_end) -> int:
+        """The times of a window from ``t_start`` to ``t_end`` [s] (:meth:`window`)."""
+        return math.ceil((t_end - t_start) / self.steps[0]) + 2
+
+    def packed_size(self, nt) -> int:
+        """Values of the packed array of a window of ``nt`` times."""
+        nx, ny, _ = self.sizes
+        per = 2 if self.dtype == np.float32 else 1  # values a slot of the array holds
+        return GRID_HEADER + 3 * nx * ny + nt * nx * ny + -(-nt * self.n_points * self.nq // per)
+
+    def window(self, t_start, t_end, out=None) -> np.ndarray:
         """The packed array of the times ``t_start`` to ``t_end`` [s] (the grid's step; one more sample each
         side of the interval when it falls between samples). It lies in the memory of the last window, which it
-        replaces: a window is valid until the next one is asked for."""
+        replaces: a window is valid until the next one is asked for (or in ``out``, of :meth:`packed_size`
+        values, when given)."""
         nx, ny, _ = self.sizes
         dt = self.steps[0]
-        nt = math.ceil((t_end - t_start) / dt) + 2
+        nt = self.samples(t_start, t_end)
         ncol, npt, nq = nx * ny, self.n_points, self.nq
         o_eta = GRID_HEADER + 3 * ncol
         o_kin = o_eta + nt * ncol
         nkin = nt * npt * nq
-        per = 2 if self.dtype == np.float32 else 1  # values a slot of the array holds
-        size = o_kin + -(-nkin // per)
-        if self._buffer.size < size:
-            self._buffer = np.empty(size)
-        packed = self._buffer[:size]  # the last window's memory: no fresh pages to fault in each window
+        size = self.packed_size(nt)
+        if out is not None:
+            packed = out[:size]
+        else:
+            if self._buffer.size < size:
+                self._buffer = np.empty(size)
+            packed = self._buffer[:size]  # the last window's memory: no fresh pages to fault in each window
         packed[:GRID_HEADER] = self.head
         packed[S_T0], packed[S_NT] = t_start, nt
         packed[GRID_HEADER:o_eta] = self.table
         W = cos_sin(self.sea.omega, t_start + dt * np.arange(nt))  # (nt, 2 n): Re(Q exp(-i w t)) = W @ [qr; qi]
-        np.matmul(W, self._eta_q, out=packed[o_eta:o_kin].reshape(nt, ncol))
+        if self._eta_q is None:
+            packed[o_eta:o_kin] = 0.0
+        else:
+            np.matmul(W, self._eta_q, out=packed[o_eta:o_kin].reshape(nt, ncol))
         packed[S_ETAMAX] = float(np.max(np.abs(packed[o_eta:o_kin]))) if ncol else 0.0
         W = W.astype(self.dtype, copy=False)
         kin = packed[o_kin:].view(self.dtype)[:nkin].reshape(nt, npt * nq)
@@ -582,6 +635,107 @@ class SeaGrid:
             else:
                 kin[:, c0 * nq:c1 * nq] = W @ q
         return packed
+
+
+class SeaBands:
+    """A kinematics grid in depth bands: the :class:`SeaGrid` plans of :func:`depth_bands`' bands, the top one
+    first, each band with the components that matter in it and its own steps in time and along the heading (the
+    shortest of its components' period and wavelength over ``per_period`` and ``per_wavelength``), and all with
+    the top band's depth levels. A band's header holds the depth down to which it serves (``S_ZMIN``; the last
+    band's: the grid's deepest point, below it no wave kinematics) and the offset of the next band
+    (``S_NEXT``); :func:`grid_point` and :func:`grid_points` take a point's values from the band of its depth,
+    :func:`grid_eta` the elevation from the top band (all of its components, over the whole box; the others' plans
+    are made without it, ``elevation=False``). One band is :class:`SeaGrid`'s array as it stands.
+
+    Against the direct sum a point's values then err by at most its band's interpolation bound (the
+    multilinear one of :func:`kinematics_grid` with the band's steps: ``(w dt)^2 / 8 + (k dx)^2 / 8 +
+    (k dz)^2 / 8`` of each component's amplitude at the cell's top) plus the amplitudes of the components its
+    band leaves out, which together carry under ``fraction`` of the standard deviation of the sea's
+    acceleration, and so of its velocity, at the band's top and, as the shorter waves decay faster, below it
+    (:func:`depth_bands`).
+    """
+
+    def __init__(self, plans):
+        self.plans = list(plans)
+        self._buffer = np.empty(0)
+
+    @property
+    def n_points(self) -> int:
+        """Points of the grid (all bands) at each time."""
+        return sum(p.n_points for p in self.plans)
+
+    def window(self, t_start, t_end) -> np.ndarray:
+        """The packed array of the bands' windows (:meth:`SeaGrid.window`), one after the other: the top band's
+        of ``t_start`` to ``t_end`` [s], and the others' of the times it covers (its last sample's too). It lies
+        in the memory of the last window, valid until the next one is asked for."""
+        first = self.plans[0]
+        nt0 = first.samples(t_start, t_end)
+        end = t_start + first.steps[0] * (nt0 - 1)
+        nts = [nt0] + [p.samples(t_start, end) for p in self.plans[1:]]
+        sizes = [p.packed_size(nt) for p, nt in zip(self.plans, nts)]
+        total = sum(sizes)
+        if self._buffer.size < total:
+            self._buffer = np.empty(total)
+        packed = self._buffer[:total]
+        o = 0
+        for b, (plan, size) in enumerate(zip(self.plans, sizes)):
+            part = plan.window(t_start, t_end if b == 0 else end, out=packed[o:o + size])
+            part[S_NEXT] = size if b + 1 < len(self.plans) else 0.0
+            o += size
+        return packed
+
+
+def _band_kept(sea: SeaComponents, z, fraction):
+    """The number of components (the longest, in order of wave number) that matter at each depth of ``z`` [m]:
+    the shortest are left out while their acceleration variance there (``(a w^2 C(z))^2 / 2`` horizontally,
+    with S vertically) adds up to less than ``fraction^2`` of the sea's, in both directions; and the order."""
+    ch, sh = sea.profiles(np.asarray(z, float))
+    order = np.argsort(sea.wave_number)[::-1]  # shortest first
+    a2 = sea.amplitude[order] * sea.omega[order] ** 2
+    kept = np.zeros(np.shape(z), int)
+    for prof in (ch, sh):
+        var = (a2 * prof[..., order]) ** 2
+        small = np.cumsum(var, axis=-1) < fraction ** 2 * np.sum(var, axis=-1, keepdims=True)
+        kept = np.maximum(kept, sea.omega.size - np.sum(small, axis=-1))
+    return np.maximum(kept, 1), order
+
+
+def _subset(sea: SeaComponents, keep) -> SeaComponents:
+    keep = np.sort(keep)
+    return SeaComponents(amplitude=sea.amplitude[keep], omega=sea.omega[keep], wave_number=sea.wave_number[keep],
+                         heading=sea.heading[keep], phase=sea.phase[keep], depth=sea.depth, gravity=sea.gravity,
+                         mean_heading=sea.mean_heading, band=sea.band, scale=sea.scale)
+
+
+def depth_bands(sea: SeaComponents, z_top, z_bottom, fraction=CUTOFF, ratio=BAND_RATIO):
+    """The depth bands of a banded kinematics grid (:class:`SeaBands`) from ``z_top`` down to ``z_bottom`` [m]:
+    ``[(z_b, sea_b)]``, band b from depth z_b (the first: ``z_top``, with all of ``sea``) down to the next's.
+
+    A band begins where the components that matter (:func:`_band_kept`: those left out carry under
+    ``fraction`` of the standard deviation of the acceleration there, and so of the velocity, as they are the
+    shortest and fastest) have their shortest wave number at most ``1 / ratio`` of the band above's, and holds
+    those components: a grid twice as coarse in space (and 1.4 times in time). Each component's share decays
+    with depth faster the shorter it is (``cosh(k (z + d))``, ``sinh``), so what a band leaves out stays under
+    ``fraction`` below its top too.
+    """
+    bands = [(float(z_top), sea)]
+    if not z_bottom < z_top or sea.omega.size < 2:
+        return bands
+    z = np.linspace(z_top, z_bottom, 513)
+    kept, order = _band_kept(sea, z, fraction)
+    k_sorted = sea.wave_number[order]  # shortest first
+    kmax = k_sorted[sea.omega.size - kept]  # the shortest kept at each depth
+    top = float(np.max(sea.wave_number))
+    while True:
+        below = np.flatnonzero(kmax <= top / ratio)
+        if not below.size or kept[below[0]] < 1:
+            return bands
+        i = below[0]
+        if z[i] <= z_bottom:
+            return bands
+        band = _subset(sea, order[sea.omega.size - kept[i]:])
+        bands.append((float(z[i]), band))
+        top = float(kmax[i])
 
 
 def kinematics_grid(sea: SeaComponents, t_end, box, z_min, *, t_start=0.0, stretching="none", per_period=20,
@@ -629,15 +783,29 @@ def _cell(v, v0, h, n):
 
 
 @njit(cache=True)
-def _plan_cells(sea, x, y, t):
+def _plan_cells(sea, x, y, t, b=0):
     """The grid's sizes (nt, nx, ny) and the cells and fractions of time ``t`` and of the point (x, y) in the
-    grid's axes along and across the sea's heading: ``(nt, nx, ny, it, ft, ix, fx, iy, fy)``."""
-    cb, sb = sea[S_COS], sea[S_SIN]
-    nt, nx, ny = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY])
-    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
-    ix, fx = _cell(x * cb + y * sb, sea[S_X0], sea[S_DX], nx)
-    iy, fy = _cell(-x * sb + y * cb, sea[S_Y0], sea[S_DY], ny)
+    grid's axes along and across the sea's heading: ``(nt, nx, ny, it, ft, ix, fx, iy, fy)``; of the depth band
+    whose header is at ``b`` (:class:`SeaBands`)."""
+    cb, sb = sea[b + S_COS], sea[b + S_SIN]
+    nt, nx, ny = int(sea[b + S_NT]), int(sea[b + S_NX]), int(sea[b + S_NY])
+    it, ft = _cell(t, sea[b + S_T0], sea[b + S_DT], nt)
+    ix, fx = _cell(x * cb + y * sb, sea[b + S_X0], sea[b + S_DX], nx)
+    iy, fy = _cell(-x * sb + y * cb, sea[b + S_Y0], sea[b + S_DY], ny)
     return nt, nx, ny, it, ft, ix, fx, iy, fy
+
+
+@njit(cache=True)
+def _band_of(sea, zs):
+    """The offset of the header of the depth band (:class:`SeaBands`) that holds the linear-theory depth ``zs``
+    [m], or -1 below the grid's deepest point (no wave kinematics)."""
+    b = 0
+    while zs < sea[b + S_ZMIN]:
+        step = int(sea[b + S_NEXT])
+        if step <= 0:
+            return -1
+        b += step
+    return b
 
 
 @njit(cache=True)
@@ -677,7 +845,7 @@ def grid_points(sea, X, zs, t, out):
     """:func:`grid_point` at the points ``(X[k, 0], X[k, 1])`` and linear-theory depths ``zs[k]`` (NaN: none,
     zeros) at time ``t``, into ``out[k, 0:6]``: the same values. A long-crested sea in single precision (a run's
     grid) takes its own loop: the time's cell found once, each point's eight corners read without branches."""
-    nt, nx, ny, nq = int(sea[S_NT]), int(sea[S_NX]), int(sea[S_NY]), int(sea[S_NQ])
+    ny, nq = int(sea[S_NY]), int(sea[S_NQ])
     if ny != 1 or nq != 4 or sea[S_SINGLE] <= 0.0:
         for k in range(zs.size):
             if math.isnan(zs[k]):
@@ -686,22 +854,46 @@ def grid_points(sea, X, zs, t, out):
                 out[k, 0], out[k, 1], out[k, 2], out[k, 3], out[k, 4], out[k, 5] = grid_point(
                     sea, X[k, 0], X[k, 1], zs[k], t)
         return
-    cb, sb = sea[S_COS], sea[S_SIN]
-    nz, npt = int(sea[S_NZ]), int(sea[S_NP])
-    it, ft = _cell(t, sea[S_T0], sea[S_DT], nt)
+    if sea[S_NEXT] <= 0.0:  # one band
+        _points_band(sea, 0, X, zs, t, out, np.arange(zs.size))
+        return
+    # depth bands (SeaBands): each point to its band's (below the deepest: the last, which gives it zeros)
+    last = 0
+    while sea[last + S_NEXT] > 0.0:
+        last += int(sea[last + S_NEXT])
+    band = np.empty(zs.size, np.int64)
+    for k in range(zs.size):
+        bk = _band_of(sea, zs[k])
+        band[k] = last if bk < 0 else bk
+    b = 0
+    while True:
+        _points_band(sea, b, X, zs, t, out, np.flatnonzero(band == b))
+        if b == last:
+            return
+        b += int(sea[b + S_NEXT])
+
+
+@njit(cache=True)
+def _points_band(sea, b, X, zs, t, out, which):
+    """:func:`grid_points` of the points ``which`` in a long-crested single-precision grid's depth band at ``b``
+    (:class:`SeaBands`), all of whose points it holds (the last band: zeros below its deepest point)."""
+    nt, nx = int(sea[b + S_NT]), int(sea[b + S_NX])
+    cb, sb = sea[b + S_COS], sea[b + S_SIN]
+    nz, npt = int(sea[b + S_NZ]), int(sea[b + S_NP])
+    it, ft = _cell(t, sea[b + S_T0], sea[b + S_DT], nt)
     data = sea.view(np.float32)
     q = 4 * npt  # floats a time
-    r = 2 * (GRID_HEADER + 3 * nx + nt * nx) + it * q
-    zmin, x0, dx, zc, zh, i0 = sea[S_ZMIN], sea[S_X0], sea[S_DX], sea[S_ZC], sea[S_ZH], sea[S_I0]
-    for k in range(zs.size):
+    r = 2 * (b + GRID_HEADER + 3 * nx + nt * nx) + it * q
+    zmin, x0, dx, zc, zh, i0 = sea[b + S_ZMIN], sea[b + S_X0], sea[b + S_DX], sea[b + S_ZC], sea[b + S_ZH], sea[b + S_I0]
+    for k in which:
         z = zs[k]
         if not z >= zmin:  # below the grid (no waves) or NaN
             out[k, 0] = out[k, 1] = out[k, 2] = out[k, 3] = out[k, 4] = out[k, 5] = 0.0
             continue
         ix, fx = _cell(X[k, 0] * cb + X[k, 1] * sb, x0, dx, nx)
         iz, fz = _cell(math.log1p(max(-z, 0.0) / zc) / zh, i0, 1.0, nz)
-        c0 = GRID_HEADER + 3 * ix
-        c1 = GRID_HEADER + 3 * min(ix + 1, nx - 1)
+        c0 = b + GRID_HEADER + 3 * ix
+        c1 = b + GRID_HEADER + 3 * min(ix + 1, nx - 1)
         lo0, hi0, off0 = int(sea[c0]), int(sea[c0 + 1]), int(sea[c0 + 2])
         lo1, hi1, off1 = int(sea[c1]), int(sea[c1 + 1]), int(sea[c1 + 2])
         a00 = 4 * (off0 + min(max(iz, lo0), hi0))
@@ -732,18 +924,19 @@ def grid_point(sea, x, y, zs, t):
     (:class:`SeaGrid`). Below the grid's deepest point (``sea[S_ZMIN]``, :func:`cutoff_depth` or the seabed)
     the waves' kinematics are neglected: zeros.
     """
-    if zs < sea[S_ZMIN]:
+    ob = _band_of(sea, zs)
+    if ob < 0:
         return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    nt, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t)
-    nz = int(sea[S_NZ])
-    nq = int(sea[S_NQ])
-    npt = int(sea[S_NP])
+    nt, nx, ny, it, ft, ix, fx, iy, fy = _plan_cells(sea, x, y, t, ob)
+    nz = int(sea[ob + S_NZ])
+    nq = int(sea[ob + S_NQ])
+    npt = int(sea[ob + S_NP])
     # depth level: z = -c (exp(s h) - 1) -> s = log1p(-z / c) / h, counted from the top level's i0
-    zlev = math.log1p(max(-zs, 0.0) / sea[S_ZC]) / sea[S_ZH]
-    iz, fz = _cell(zlev, sea[S_I0], 1.0, nz)
-    oc = GRID_HEADER
-    o = GRID_HEADER + 3 * nx * ny + nt * nx * ny
-    single = sea[S_SINGLE] > 0.0
+    zlev = math.log1p(max(-zs, 0.0) / sea[ob + S_ZC]) / sea[ob + S_ZH]
+    iz, fz = _cell(zlev, sea[ob + S_I0], 1.0, nz)
+    oc = ob + GRID_HEADER
+    o = ob + GRID_HEADER + 3 * nx * ny + nt * nx * ny
+    single = sea[ob + S_SINGLE] > 0.0
     half = sea.view(np.float32)  # single precision: the kinematics' floats, two a slot from the slot o on
     if single:
         o *= 2
@@ -781,6 +974,6 @@ def grid_point(sea, x, y, zs, t):
                     ay += f0 * _kin(sea, half, single, p0 + 4) + f1 * _kin(sea, half, single, p1 + 4)
                     az += f0 * _kin(sea, half, single, p0 + 5) + f1 * _kin(sea, half, single, p1 + 5)
     if nq == 4:  # along the heading: its components
-        cb, sb = sea[S_COS], sea[S_SIN]
+        cb, sb = sea[ob + S_COS], sea[ob + S_SIN]
         return u * cb, u * sb, w, ax * cb, ax * sb, az
     return u, v, w, ax, ay, az

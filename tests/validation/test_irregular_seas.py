@@ -788,3 +788,82 @@ def test_a_steps_water_kinematics_held_over_its_newton_iterations_err_by_far_les
     # the Newton tolerance (1e-7 of the largest tension, 0.19 N) plus 1e-3 of the wave load: measured 0.003 N
     # (5e-5 of the wave load); kinematics held from the step's start time instead (planted): 2.3 N
     assert np.max(np.abs(residual[free])) < 1e-7 * np.max(tension) + 1e-3 * wave_load
+
+
+@pytest.mark.parametrize("single", [False, True])
+def test_a_banded_grid_holds_the_direct_sum_within_its_stated_bound(single):
+    """The kinematics grid in depth bands (what a run with a free body takes: seacable.seastate.SeaBands) against
+    the direct sum of the components (SeaComponents.kinematics) at 1500 random points and times of a Hs 8 m, Tp
+    12 s JONSWAP sea cut at 2.45 rad/s in 200 m of water, from 2 m to 190 m deep: at each point every value errs
+    by at most its stated bound, the sum of (1) each kept component's multilinear interpolation bound
+    ((w dt)^2 + (k dx)^2 + (k dz)^2) / 8 of its amplitude at the top of the point's cell, with its band's steps
+    dt and dx, (2) the amplitudes there of the components the band leaves out and (3) single precision's rounding
+    ((2n + 2) 2^-24 of the terms' magnitudes, as test_a_single_precision_grid_errs_by_its_rounding_bound_only).
+    A value taken from the wrong band, or a band that leaves out a component that matters, breaks the bound at
+    once (the left-out part (2) is under 0.1 % of the acceleration's standard deviation at each band's top). The
+    bands' products (times x points x components) are under 0.6 of the single grid's here (every column with all
+    its levels; a run's columns hold only the levels their points reach), and grid_points gives grid_point's
+    values."""
+    from seacable.seastate import SeaBands, SeaGrid, depth_bands, synthesise
+
+    sea = synthesise(lambda w: jonswap(w, 8.0, 12.0), n_components=80, omega_range=(0.25, 2.45), seed=4,
+                     heading=0.3, depth=200.0)
+    box = ((-20.0, 300.0), (0.0, 0.0))
+    bands = depth_bands(sea, -2.0, -190.0)
+    assert len(bands) >= 3
+    _, (_, _, zc, zh), _ = grid_size(sea, 0.0, box, -190.0, z_max=-2.0)
+    plans = []
+    for b, (top, part) in enumerate(bands):
+        bottom = bands[b + 1][0] if b + 1 < len(bands) else -190.0
+        plans.append(SeaGrid(part, box, bottom, z_max=top, single=single, levels=None if b == 0 else (zc, zh),
+                             elevation=b == 0))
+    grid = SeaBands(plans)
+    arr = grid.window(0.0, 12.0)
+    whole = SeaGrid(sea, box, -190.0, z_max=-2.0, single=single)
+    work = sum(p.samples(0.0, 12.0) * p.n_points * p.sea.omega.size for p in plans)
+    assert work < 0.6 * whole.samples(0.0, 12.0) * whole.n_points * sea.omega.size  # measured 0.53
+    rng = np.random.default_rng(11)
+    m = 1500
+    x, z, t = rng.uniform(0.0, 280.0, m), -np.exp(rng.uniform(math.log(2.0), math.log(190.0), m)), rng.uniform(0, 12, m)
+    cb, sb = math.cos(0.3), math.sin(0.3)
+    vel, acc, _ = sea.kinematics(t, x * cb, x * sb, z)
+    want = np.concatenate((vel[np.arange(m), np.arange(m)], acc[np.arange(m), np.arange(m)]), axis=1)
+    got = np.array([grid_point(arr, x[i] * cb, x[i] * sb, z[i], t[i]) for i in range(m)])
+    # the bound, point by point: each point's band and the top of its cell of levels
+    tops = np.array([top for top, _ in bands])
+    band = np.searchsorted(-tops, -z, side="right") - 1
+    s = np.floor(np.log1p(-z / zc) / zh)
+    z_up, dz = -zc * np.expm1(s * zh), zc * (np.exp((s + 1) * zh) - np.exp(s * zh))
+    ch_up, sh_up = sea.profiles(z_up)
+    ch, sh = sea.profiles(z)
+    w, k, a = sea.omega, sea.wave_number, sea.amplitude
+    bound = np.zeros((m, 6))
+    for i in range(m):
+        plan = plans[band[i]]
+        dt, dx = plan.steps[0], plan.steps[1]
+        kept = np.isin(w, plan.sea.omega)
+        eps = ((w * dt) ** 2 + (k * dx) ** 2 + (k * dz[i]) ** 2) / 8.0
+        for q, (power, up, here) in enumerate(((1, ch_up, ch), (1, ch_up, ch), (1, sh_up, sh),
+                                               (2, ch_up, ch), (2, ch_up, ch), (2, sh_up, sh))):
+            amp_up, amp = a * w ** power * up[i], a * w ** power * here[i]
+            part = 1.0 if q in (2, 5) else (abs(cb) if q in (0, 3) else abs(sb))  # u, v: u_h (cos b, sin b)
+            rounding = (2 * kept.sum() + 2) * 2.0 ** -24 * math.sqrt(2) * np.sum(amp_up[kept]) if single else 0.0
+            bound[i, q] = part * (np.sum(eps[kept] * amp_up[kept]) + np.sum(amp[~kept])) + rounding + 1e-12
+        # what the band leaves out: under 0.1 % of the standard deviation of each acceleration (so velocity) there
+        for prof in (ch, sh):
+            var = (a * w ** 2 * prof[i]) ** 2
+            assert np.sum(var[~kept]) <= 1e-6 * np.sum(var)
+    err = np.abs(got - want)
+    assert np.all(err <= bound), float(np.max(err / bound))
+    assert float(np.max(err / bound)) > 0.05  # the bound is tight enough to tell (measured 0.2-0.3)
+    # all points at once (the kernel's look-up; a long-crested sea in single precision: its own loop, band by band)
+    X = np.column_stack((x * cb, x * sb, z))
+    out = np.empty((m, 6))
+    for tt in (0.3, 7.7):
+        grid_points(arr, X, z, tt, out)
+        each = np.array([grid_point(arr, X[i, 0], X[i, 1], z[i], tt) for i in range(m)])
+        assert np.max(np.abs(out - each)) <= 1e-14 * np.max(np.abs(each))
+    # below the grid: no waves; the elevation: the top band's (all components)
+    assert grid_point(arr, 10.0, 0.0, -190.5, 1.0) == (0.0,) * 6
+    e_want = sea.elevation(np.array([1.0]), 50.0 * cb, 50.0 * sb)[0]
+    assert abs(grid_eta(arr, 50.0 * cb, 50.0 * sb, 1.0) - e_want) < 0.02 * 2.0

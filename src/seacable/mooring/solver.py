@@ -21,7 +21,7 @@ import numpy as np
 from .. import _validate
 from .._atomic import deferred_interrupts
 from ..errors import ConvergenceError, InputError, SeacableWarning
-from ..seastate import SeaGrid, no_sea
+from ..seastate import SeaBands, SeaGrid, no_sea
 
 #: Largest irregular-sea grid held at once (values, 8 bytes each); a longer run takes it in time windows.
 SEA_WINDOW_VALUES = 2.5e7
@@ -121,11 +121,15 @@ class Water:
         return -self.depth + np.tan(self.slope) * x
 
 
-def _sea_columns(xi, ze, z, box, dx, sizes, levels, pad):
+def _sea_columns(xi, ze, z, box, dx, sizes, levels, pad, depths=None):
     """The band of levels (first, last; from the grid's top level, inclusive) of each column of the sea's grid
     (nx, ny, 2) that the points (``xi``, ``ze`` along and across the heading, ``z`` [m]) can reach: from the
     highest to the lowest of the points within ``pad`` [m] of the column horizontally, widened by ``pad`` up and
-    down (the box's own margin, :meth:`MooringModel.prepare_sea`); one level where no point comes near."""
+    down (the box's own margin, :meth:`MooringModel.prepare_sea`); one level where no point comes near.
+
+    ``depths`` (top, bottom) [m], a depth band's (:class:`seacable.seastate.SeaBands`): a column none of whose
+    points (so widened) reaches the band is marked (-1, -1), none of its own (:class:`seacable.seastate.SeaGrid`
+    gives it the nearest column's), unless no column reaches it."""
     from scipy.ndimage import maximum_filter, minimum_filter
 
     (x0, _), (y0, _) = box
@@ -148,7 +152,13 @@ def _sea_columns(xi, ze, z, box, dx, sizes, levels, pad):
     # a point between levels s and s + 1 interpolates between them: the band holds both of its ends' cells
     first = np.where(near, np.floor(level(np.minimum(np.where(near, high, 0.0) + pad, 0.0))) - 1, 0)
     last = np.where(near, np.ceil(level(np.where(near, low, 0.0) - pad)) + 1, 0)
-    return np.clip(np.stack((first, last), axis=-1), 0, nz - 1).astype(int)
+    out = np.clip(np.stack((first, last), axis=-1), 0, nz - 1).astype(int)
+    if depths is not None:
+        top, bottom = depths
+        reach = near & (high + pad >= bottom) & (low - pad <= top)
+        if np.any(reach):
+            out[~reach] = -1
+    return out
 
 
 def wave_number_or_zero(water: Water) -> float:
@@ -228,10 +238,11 @@ class MooringModel:
             self.visco[:, [K.V_WC, K.V_K1, K.V_K2, K.V_TM0]] = syrope
             self.visco[:, K.V_TM] = self.visco[:, K.V_TM0]
 
-    def _sea_grid(self, duration: float, positions):
-        """(box, z_min, components, window [s]) of the irregular sea's grid over ``positions``, size-checked."""
+    def _sea_grid(self, duration: float, positions, bands: bool = False):
+        """(box, bands, window [s]) of the irregular sea's grid over ``positions``, size-checked: each band's
+        (components, z_min, z_max, columns, levels); one band unless ``bands`` (:func:`seacable.seastate.depth_bands`)."""
         from .._limits import check_run_size
-        from ..seastate import cutoff_depth, grid_size, significant
+        from ..seastate import cutoff_depth, depth_bands, grid_size, significant
 
         sea = self.water.sea
         P = np.array(positions, float).reshape(-1, 3)
@@ -253,7 +264,9 @@ class MooringModel:
             zmin = max(zmin, -float(self.water.depth))
         # the levels above the highest point (plus the pad) are left out: a deep line needs no surface layer
         zmax = min(float(P[:, 2].max()) + pad, 0.0)
-        (nt, nx, ny, nz), (dt, gdx, zc, zh), i0 = grid_size(sea, duration, box, zmin, z_max=zmax)
+        split = depth_bands(sea, zmax, zmin) if bands else [(zmax, sea)]
+        (nt, nx, ny, nz), (dt, gdx, zc, zh), i0 = grid_size(sea, duration, box, split[1][0] if len(split) > 1 else zmin,
+                                                            z_max=zmax)
         nq = 4 if bool(np.all(sea.heading == sea.mean_heading)) else 6
         fix = (f"narrow environment.waves.frequency_range or shorten the lines near the surface (a grid of {nx} x {ny} "
                f"horizontal x {nz} depth points at each of {nt} times)")
@@ -262,21 +275,37 @@ class MooringModel:
         check_run_size("the irregular sea's kinematics grid", steps=nt,
                        stored_values=min(nt, 10) * (nq + 1) * float(nx) * ny + 8.0 * nx * ny, fix=fix)
         # in each column, only the levels that the points near it (within the pad) can reach
-        columns = _sea_columns(xi, ze, P[:, 2], box, gdx, (nx, ny, nz), (zc, zh, i0), pad)
+        columns = _sea_columns(xi, ze, P[:, 2], box, gdx, (nx, ny, nz), (zc, zh, i0), pad,
+                               (zmax, split[1][0]) if len(split) > 1 else None)
         per_column = np.clip(columns[..., 1], 0, nz - 1) - np.clip(columns[..., 0], 0, nz - 1) + 1
-        per_time = float(nq * np.sum(np.maximum(per_column, 1)) + nx * ny)
+        per_column[columns[..., 0] < 0] = 0
+        per_time = float(nq * np.sum(np.maximum(per_column, 1) if len(split) == 1 else per_column) + nx * ny)
+        plans = [(sea, split[1][0] if len(split) > 1 else zmin, zmax, columns, None)]
+        per_second = per_time / dt
+        for b in range(1, len(split)):  # the depth bands below the top one, on its levels
+            top, part = split[b]
+            bottom = split[b + 1][0] if b + 1 < len(split) else zmin
+            (_, bnx, bny, bnz), (bdt, bdx, _, _), bi0 = grid_size(part, duration, box, bottom, z_max=top,
+                                                                  levels=(zc, zh))
+            cols = _sea_columns(xi, ze, P[:, 2], box, bdx, (bnx, bny, bnz), (zc, zh, bi0), pad, (top, bottom))
+            count = np.clip(cols[..., 1], 0, bnz - 1) - np.clip(cols[..., 0], 0, bnz - 1) + 1
+            count[cols[..., 0] < 0] = 0
+            per_second += float(nq * np.sum(count) + bnx * bny) / bdt
+            plans.append((part, bottom, top, cols, (zc, zh)))
+        if len(plans) > 1:
+            per_time = per_second * dt  # the values of all bands over one of the top band's steps
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
         window = min(duration, max(math.floor(SEA_WINDOW_VALUES / per_time) - 2, 8) * dt)
         nw = min(nt, math.ceil(window / dt) + 2)
         check_run_size("the irregular sea's kinematics grid", steps=0.0, stored_values=nw * per_time, fix=fix)
-        return box, (zmin, zmax, columns), sea, window
+        return box, plans, window
 
-    def check_sea(self, duration: float, positions) -> None:
+    def check_sea(self, duration: float, positions, bands: bool = False) -> None:
         """Refuse an irregular sea whose kinematics grid would exceed the size limits (no grid built)."""
         if self.water.sea is not None:
-            self._sea_grid(duration, positions)
+            self._sea_grid(duration, positions, bands)
 
-    def prepare_sea(self, duration: float, positions) -> None:
+    def prepare_sea(self, duration: float, positions, bands: bool = False) -> None:
         """Precompute the irregular sea's kinematics on a grid for a run of ``duration`` [s].
 
         The grid (:func:`seacable.seastate.kinematics_grid`) covers, along and across the mean heading,
@@ -293,11 +322,17 @@ class MooringModel:
         about 1e-6 of the values, is far below the grid's interpolation error). Its size is checked
         against the run size limits (:func:`seacable._limits.check_run_size`). No irregular sea: nothing
         to do.
+
+        ``bands``: the grid in depth bands (:class:`seacable.seastate.SeaBands`, :func:`seacable.seastate.depth_bands`):
+        below the top band the components that carry under 0.1 % of the acceleration's standard deviation are left
+        out and the grid's steps follow the shortest of those kept (lines reaching deep: a fraction of the work).
         """
         if self.water.sea is None:
             return
-        box, (zmin, zmax, columns), sea, window = self._sea_grid(duration, positions)
-        plan = SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns, single=True)
+        box, plans, window = self._sea_grid(duration, positions, bands)
+        grids = [SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns, single=True,
+                         levels=levels, elevation=b == 0) for b, (sea, zmin, zmax, columns, levels) in enumerate(plans)]
+        plan = grids[0] if len(grids) == 1 else SeaBands(grids)
         self._sea_spec = (plan, window, duration)
         self.sea = no_sea(self.water.stretching)
         self.ensure_sea(0.0, 0.0)

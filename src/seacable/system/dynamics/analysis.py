@@ -19,7 +19,15 @@ from ..case import SystemDynamicAnalysis
 from ..damaged import is_most_loaded, line_tensions, most_loaded_line
 from ..model import MooringSystem
 from .fe import SystemFE, build_system_fe, lines_only
-from .loop import SystemState, _channels_fn, _simulate_lines, sea_positions, simulate_system, static_system
+from .loop import (
+    SystemState,
+    _channels_fn,
+    _simulate_lines,
+    sea_bands,
+    sea_positions,
+    simulate_system,
+    static_system,
+)
 from .outputs import system_result
 
 
@@ -170,7 +178,7 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
         start_fe = dataclasses.replace(fe, model=at_motion_start(fe.model, channels))
     if fe.model.water.sea is not None:  # the irregular sea's grid over where the lines go, size-checked
         fe.model.check_sea(a.duration, sea_positions(fe, fe.model.network.position, channels, a.duration,
-                                                     a.output_interval))
+                                                     a.output_interval), bands=sea_bands(fe))
     return SystemDynamicSetup(fe, a, start_fe)
 
 

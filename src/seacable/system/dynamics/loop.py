@@ -31,6 +31,17 @@ from .fe import SystemFE, _rot
 #: margin (about Hs) covers its wave-frequency motion. A node outside the grid gets the kinematics at its edge.
 SEA_EXCURSION = 0.1
 
+#: A run with a free body takes the irregular sea's grid in depth bands (:class:`seacable.seastate.SeaBands`):
+#: below the top band, the components that carry under 0.1 % of the sea's acceleration there are left out and the
+#: grid's steps follow the shortest kept, so that the lines' deep part (a floater's mooring reaching 800 m out) is
+#: gridded for the waves that reach it. False: one grid of all components (as a lines-only run).
+SEA_BANDS = True
+
+
+def sea_bands(fe: SystemFE) -> bool:
+    """Whether the run of ``fe`` takes the irregular sea's grid in depth bands (``SEA_BANDS``, a free body)."""
+    return SEA_BANDS and len(fe.free_bodies) > 0
+
 
 @dataclass(frozen=True)
 class SystemState:
@@ -177,16 +188,18 @@ def outside_sea(sea, points) -> int | None:
 
     if sea is None or len(sea) <= S_Y0 or sea[S_MODE] <= 0 or not len(points):
         return None
-    p = np.asarray(points, float)
-    cb, sb = sea[S_COS], sea[S_SIN]
-    along = p[:, 0] * cb + p[:, 1] * sb
-    across = -p[:, 0] * sb + p[:, 1] * cb
-    tol = 1e-6 * max(1.0, sea[S_DX])
-    out = (along < sea[S_X0] - tol) | (along > sea[S_X0] + sea[S_DX] * (sea[S_NX] - 1) + tol)
-    if sea[S_NY] > 1:
-        out |= (across < sea[S_Y0] - tol) | (across > sea[S_Y0] + sea[S_DY] * (sea[S_NY] - 1) + tol)
-    hit = np.flatnonzero(out)
-    return int(hit[0]) if hit.size else None
+    # a few points once an output interval: plain floats (numpy's calls on them cost more than the arithmetic)
+    h = sea[:max(S_COS, S_SIN, S_DX, S_DY, S_NX, S_NY, S_X0, S_Y0) + 1].tolist()
+    cb, sb, dx = h[S_COS], h[S_SIN], h[S_DX]
+    tol = 1e-6 * max(1.0, dx)
+    lo, hi = h[S_X0] - tol, h[S_X0] + dx * (h[S_NX] - 1) + tol
+    wide = h[S_NY] > 1
+    ylo, yhi = h[S_Y0] - tol, h[S_Y0] + h[S_DY] * (h[S_NY] - 1) + tol
+    for i, (x, y) in enumerate(np.asarray(points, float)[:, :2].tolist()):
+        along, across = x * cb + y * sb, -x * sb + y * cb
+        if along < lo or along > hi or (wide and (across < ylo or across > yhi)):
+            return i
+    return None
 
 
 def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: float) -> np.ndarray:
@@ -196,7 +209,9 @@ def sea_positions(fe: SystemFE, X, channels, duration: float, output_interval: f
     ``SEA_EXCURSION`` of the depth each way along x and y (a lines-only system: none, as the mooring model's own
     run takes them)."""
     t_out = np.linspace(0.0, duration, round(duration / output_interval) + 1)
-    parts = [np.asarray(X, float).reshape(-1, 3), channels(t_out)[0].reshape(-1, 3)]
+    parts = [np.asarray(X, float).reshape(-1, 3)]
+    if fe.model.network.n_channels:  # (without prescribed nodes the channels are one stand-in at the origin)
+        parts.append(channels(t_out)[0].reshape(-1, 3))
     tied = np.asarray(fe.con_node)[np.asarray(fe.con_body) >= 0]
     if len(tied):
         depth = fe.model.water.depth
@@ -317,7 +332,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     tension = np.zeros(net.n_elements)
     m.settle_viscoelastic(X, np.zeros_like(X))
     if m.water.sea is not None:  # an irregular sea: its kinematics on a grid over where the lines go
-        m.prepare_sea(duration, sea_positions(fe, X, channels, duration, output_interval))
+        m.prepare_sea(duration, sea_positions(fe, X, channels, duration, output_interval), bands=sea_bands(fe))
     _, _, t0_tension, _ = m.evaluate(X, V, A, 0.0)
     initial_accelerations(fe, X, V, A, q, qd, qdd, frame, v0[0], a0[0])
     g = _global_state(q, qd, frame)
