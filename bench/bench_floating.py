@@ -7,8 +7,9 @@ excitation, Newman slow drift from the .12d diagonal), in a 3-hour JONSWAP storm
 and turbine's rounded (mass 2.03e7 kg, centre of gravity 2 m below the water line, inertias 4e10, 4e10, 2.4e10 kg
 m^2): a speed figure, not a validation. Issue 39's target: under 30 s on one core with 40 elements a line.
 
-The lines feel the irregular sea (its kinematics on a grid, as a single line's run; a free body's run takes it in
-depth bands, :class:`seacable.seastate.SeaBands`). Measured 2026-11-30 (one process, shared 2-core machine), 40
+The lines feel the irregular sea (its kinematics on a grid, as a single line's run; in depth bands,
+:class:`seacable.seastate.SeaBands`, when ``seacable.system.dynamics.loop.SEA_BANDS`` is on: off by default, see
+there). Measured 2026-11-30 (one process, shared 2-core machine), 40
 elements a line, dt 0.1 s:
 
   database                             600 s run                3-hour storm                     target
