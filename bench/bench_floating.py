@@ -18,6 +18,7 @@ elements a line, dt 0.1 s:
   full, one grid, at load 4.6           22.8 s wall, 8.6 s CPU    302 s wall, 171 s CPU            10x over 30 s
   full, depth bands, at load 4.6         7.7 s wall, 3.0 s CPU    80.5 s wall, 50.6 s CPU          2.7x over 30 s
   full, depth bands, at load 3.1                                  50.0 s wall, 49.0 s CPU (216x)   1.7x over 30 s
+  full, one grid (bands off), merged main, load 0.6               100 s wall, 158 s CPU (108x)     3.3x over 30 s
 
 (the two rows at load 4.6 in the same minutes, one after the other). Profiled over 1200 s with the bands (load 3):
 6.96 s, of which 3.37 s in the coupled steps (about 30 s for 3 hours: the stepping alone is now over the
@@ -38,6 +39,7 @@ measured 2026-11-30 on the tests' extract at load 7-11 (so the wall times are in
 
   route                                 run       wall     CPU     surge mean/max [m]  max fairlead [kN]   target
   uncoupled, quasi-static lines         3 hours    6.8 s    2.7 s   1.77/10.28          3036                10 s: met
+  same, whole database, load 2, merged   3 hours    1.7 s    2.1 s   2.12/10.75          3060                10 s: met
   uncoupled, lines in time (40 el.)     600 s     18.2 s    3.5 s   1.81/6.97           2774
 
 The quasi-static route's time (profiled, 5.3 s at load 5): the three catenaries and their profiles at the 10 801
