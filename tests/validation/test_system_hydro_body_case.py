@@ -26,7 +26,6 @@ from seacable.hydro import frequency_response, ogilvie, read_wamit, retardation_
 ROOT = Path(__file__).parents[1] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 RHO, G = 1025.0, 9.80665
 VOLUME = 20206.34889
-INERTIA = (1.2507e10, 1.2507e10, 2.3667e10)
 DAMPING = np.diag([6e5, 6e5, 1.4e6, 1.4e9, 1.4e9, 6e8])
 ZG = -5.0  # the centre of gravity 5 m below the reference point: its weight's moment m g 5 stiffens roll and pitch
 OMEGA, HEIGHT = 0.85, 2.0
@@ -72,12 +71,9 @@ def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp
     kernel[-1] *= 0.5
     a, b = (m[0] for m in ogilvie(tk, kernel, db.added_mass_inf, OMEGA))
     stiffness = np.asarray(case.system().bodies["hull"].hydrostatic_stiffness)
-    mass = RHO * VOLUME
-    rigid = np.diag([mass, mass, mass, *INERTIA])
-    rigid[0, 4] = rigid[4, 0] = mass * ZG
-    rigid[1, 3] = rigid[3, 1] = -mass * ZG
-    rigid[3, 3] += mass * ZG ** 2
-    rigid[4, 4] += mass * ZG ** 2
+    # the rigid body about the reference point (the centre of gravity ZG below it), the added mass left to the kernel
+    rigid = case.system().bodies["hull"].model_copy(update={"added_mass": None}).mass_matrix()
+    assert rigid[0, 4] == pytest.approx(RHO * VOLUME * ZG, rel=1e-12)  # surge-pitch: m z_G
     ref = frequency_response(rigid, a, b + DAMPING, stiffness, db.excitation_at(OMEGA, 0.0), OMEGA)
     for j in (0, 2, 4):
         assert abs(h[j]) == pytest.approx(abs(ref[j]), rel=0.005), (j, h[j], ref[j])

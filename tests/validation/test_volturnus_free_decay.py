@@ -50,10 +50,7 @@ def still(tmp_path_factory):
     eq = sc.run(case)
     body = case.system().bodies["hull"]  # the database's hydrostatics resolved, the weight's moment added
     stiffness = eq["coupled_stiffness"].values[0] + np.asarray(body.hydrostatic_stiffness)
-    m, c = body.mass, np.asarray(body.center_of_gravity)
-    skew = np.array([[0, -c[2], c[1]], [c[2], 0, -c[0]], [-c[1], c[0], 0]])
-    mass = np.block([[m * np.eye(3), -m * skew],
-                     [m * skew, np.diag(body.inertia) + m * (c @ c * np.eye(3) - np.outer(c, c))]])
+    mass = body.model_copy(update={"added_mass": None}).mass_matrix()  # rigid, about the reference point
     periods = natural_periods(database(body, 1025.0, 9.80665), mass, stiffness)
     pose = np.array([float(eq[f"body_{k}"].values[0, 0]) for k in DOFS])
     return data, path.parent, pose, periods
