@@ -3,10 +3,11 @@
 Usage: ``python examples/demo.py [OUTDIR]`` (default ``demo_out/``). Each case is
 read from its YAML file beside this script, exactly as ``seacable run`` does; the last
 steps are the sweep ``paper001_speed_sweep.yaml`` on a local Dask cluster, as
-``seacable sweep`` runs it, and the design of the OC3-Hywind moorings: the sweep
-``oc3_hywind_design.yaml`` (3 sea states x 5 seeds, intact and with the most loaded line removed,
-the fairleads driven by the spar's RAOs) and its report (``report.html``: extremes, DNV-OS-E301 and API RP 2SK checks,
-fatigue life over ``oc3_hywind_scatter.csv``), as ``seacable report`` writes it.
+``seacable sweep`` runs it, and the design of the IEA-15 MW VolturnUS-S moorings: the sweep
+``volturnus_design.yaml`` (2 sea states with their wind and current x 2 seeds, intact and with the most loaded chain
+removed, the hull coupled with its WAMIT database) and its report (``report.html``: extremes, the load components
+modelled, the LF + WF combination, DNV-OS-E301 and API RP 2SK checks, fatigue life over ``volturnus_scatter.csv``),
+as ``seacable report`` writes it.
 """
 
 from __future__ import annotations
@@ -130,20 +131,23 @@ def main(outdir: str = "demo_out", *extra: str) -> int:
           f"[{time.perf_counter() - start:.2f} s]")
     print(f"{'':26s} wrote {sweep_out / 'summary.nc'}, summary.csv, cases/, " + ", ".join(p.name for p in pngs))
     start = time.perf_counter()
-    design_out = out / "oc3_hywind_design"
-    summary = sc.sweep(HERE / "oc3_hywind_design.yaml", design_out)
+    design_out = out / "volturnus_design"
+    summary = sc.sweep(HERE / "volturnus_design.yaml", design_out)
     files = make_report(design_out, design_out / "report.html",
-                        ReportOptions(storm_duration=10800.0, scatter=HERE / "oc3_hywind_scatter.csv",
-                                      offset_limit=30.0))
+                        ReportOptions(storm_duration=10800.0, scatter=HERE / "volturnus_scatter.csv",
+                                      offset_limit=40.0))
     checks = pd.read_csv(design_out / "report_checks.csv")
     lives = pd.read_csv(design_out / "report_fatigue_life.csv")
     tension = checks[checks["check"].str.startswith(("DNV", "API"))]
     worst = tension.loc[tension["utilisation [-]"].idxmax()]
-    print(f"{'oc3_hywind_design':26s} {summary.sizes['case']} runs of the spar's lines in its RAO motions: largest "
-          f"tension utilisation {worst['utilisation [-]']:.3f} ({worst['check']}, {worst['item']}); "
-          f"{int(checks['passed'].sum())} of {len(checks)} checks pass (anchor uplift and offset included); "
-          f"shortest fatigue life {lives['life [years]'].min():.3g} years  "
-          f"[{time.perf_counter() - start:.2f} s]")
+    offsets = checks[checks["check"] == "offset"]
+    intact = offsets["load_case"].str.contains("damaged_lines = []", regex=False)
+    print(f"{'volturnus_design':26s} {summary.sizes['case']} coupled runs of the VolturnUS-S (WAMIT database, slow "
+          f"drift, wind, current): largest tension utilisation {worst['utilisation [-]']:.3f} ({worst['check']}, "
+          f"{worst['item']}); largest offset {offsets['demand [N or m, see unit]'][intact].max():.0f} m intact, "
+          f"{offsets['demand [N or m, see unit]'][~intact].max():.0f} m with the weather chain broken; "
+          f"{int(checks['passed'].sum())} of {len(checks)} checks pass; shortest fatigue life "
+          f"{lives['life [years]'].min():.3g} years  [{time.perf_counter() - start:.2f} s]")
     print(f"{'':26s} wrote {files[0]}, " + ", ".join(f.name for f in files[1:]))
     return 0
 

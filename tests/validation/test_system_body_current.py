@@ -96,3 +96,25 @@ def test_a_floating_body_with_a_database_runs_in_a_current(tmp_path, hull_case):
     f = BodyCurrent(**table).coefficients().force(np.array([math.cos(0.5), math.sin(0.5)]), rho_air=1025.0)
     assert xyz[0, 1] / xyz[0, 0] == pytest.approx(f[1] / f[0], rel=0.05)
     assert np.abs(xyz - xyz[0]).max() < 1e-5
+
+
+def test_the_most_loaded_line_in_a_current_is_the_intact_runs(tmp_path, hull_case):
+    """``damaged_lines: most_loaded`` with what the catenary statics cannot see (here a current on the hull's table
+    and the ropes; they refused it before): the line of the largest tension at the intact run's own static start.
+    The current flows towards -x, so the rope anchored at +x (rope0) holds the hull."""
+    from seacable.system.dynamics import most_loaded_at_start
+
+    rope = {"diameter": 0.1, "mass_per_length": 50.0, "axial_stiffness": 5e8, "drag_normal": 1.2,
+            "added_mass_normal": 1.0}
+    table = {"headings": [0.0, math.pi / 2, math.pi, 3 * math.pi / 2], "surge": [600.0, 0.0, -600.0, 0.0],
+             "sway": [0.0, 700.0, 0.0, -700.0], "yaw": [0.0, 0.0, 0.0, 0.0]}
+    path = hull_case(tmp_path, waves=None, rope=rope, body={"current": table},
+                     analysis={"duration": 1.0, "damaged_lines": "most_loaded"})
+    data = yaml.safe_load(path.read_text())
+    data["environment"]["current"] = {"speed": 1.0, "heading": math.pi}
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    case = sc.load_case(path)
+    assert most_loaded_at_start(case) == "rope0"
+    intact = sc.run(case.model_copy(update={"analysis": case.analysis.model_copy(update={"damaged_lines": ()})}))
+    start = intact["fairlead_tension"].values[0]
+    assert int(np.argmax(start)) == 0 and start[0] > 1.005 * max(start[1:])  # 1.5 % above: the taut ropes share it

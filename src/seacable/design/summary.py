@@ -158,11 +158,15 @@ def _fmt(value) -> str:
 
 
 def _label(parameters: dict, units: dict) -> str:
+    """``name = value unit, ...``: a parameter by its path's last part (last two when two end alike)."""
+    last = [path.rsplit(".", 1)[-1] for path in parameters]
     parts = []
-    for path, value in parameters.items():
+    for (path, value), name in zip(parameters.items(), last, strict=True):
+        if last.count(name) > 1:
+            name = ".".join(path.split(".")[-2:])
         unit = units.get(path, "")
         unit = "" if unit in ("", "1") else f" {unit}"
-        parts.append(f"{path.rsplit('.', 1)[-1]} = {_fmt(value)}{unit}")
+        parts.append(f"{name} = {_fmt(value)}{unit}")
     return ", ".join(parts)
 
 

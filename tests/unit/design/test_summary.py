@@ -413,3 +413,12 @@ def test_design_tables_are_the_tables_made_one_by_one_from_one_read_of_each_file
         pd.testing.assert_frame_equal(got[key], table, check_exact=True, obj=key)
     assert set(got["checks"]["status"]) == {"pass", "FAIL", "not checked: line 'L1' failed at t = 10 s"}
     assert got["fatigue"]["seeds"].tolist() == [2, 1]
+
+
+def test_load_case_labels_tell_apart_parameters_that_end_alike():
+    """A sweep of the wind's and the current's speed labels them by their last two parts, the rest by the last."""
+    from seacable.design.summary import _label
+
+    label = _label({"environment.waves.hs": 10.0, "environment.wind.speed": 30.0, "environment.current.speed": 1.0},
+                   {"environment.waves.hs": "m", "environment.wind.speed": "m/s", "environment.current.speed": "m/s"})
+    assert label == "hs = 10 m, wind.speed = 30 m/s, current.speed = 1 m/s"

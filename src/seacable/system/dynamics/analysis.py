@@ -215,21 +215,32 @@ def most_loaded_at_start(case) -> str:
     :func:`seacable.system.statics.solve_equilibrium`, :mod:`seacable.system.damaged`)."""
     from ...errors import NoSolutionError
     from ..statics import solve_equilibrium
+    from ..statics_mode import needs_fe
 
     system = case.system()
     a = case.analysis
+    lines = tuple(system.lines)
     names = [n for n, m in a.body_motions.items() if isinstance(m, RAOMotion) and m.mean_offset == "equilibrium"]
     bodies = {n: b.model_copy(update={"kind": "free"}) if n in names else b for n, b in system.bodies.items()}
+    loaded = any(b.kind == "free" and b.hydrodynamics is not None for b in system.bodies.values())
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # the run itself warns of what the statics see
+            if (needs_fe(case.environment) or loaded) and not names:
+                # what the catenary statics cannot see (a current, a wind, a body's mean wave drift): the finite-
+                # element start of the intact run itself
+                intact = a.model_copy(update={"damaged_lines": ()})
+                fe = build_system_fe(system, case.environment, intact)
+                state = static_system(fe, tol=intact.tolerance)
+                index = {n: i for i, n in enumerate(fe.line_names)}
+                tensions = [float(np.max(state.tension[np.asarray(fe.line_elements[index[n]])])) for n in lines]
+                return most_loaded_line(lines, tensions, "")
             eq = solve_equilibrium(MooringSystem(points=system.points, bodies=bodies, lines=system.lines),
                                    case.environment)
     except (InputError, NoSolutionError, ConvergenceError) as err:
         raise InputError(f"analysis.damaged_lines 'most_loaded': the intact static equilibrium that tells the most "
                          f"loaded line could not be found: {err} Suggested fix: name the line to remove "
                          "(damaged_lines: [NAME]).") from None
-    lines = tuple(system.lines)
     return most_loaded_line(lines, line_tensions(eq, lines), "")
 
 
