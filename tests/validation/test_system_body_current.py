@@ -96,6 +96,7 @@ def test_a_floating_body_with_a_database_runs_in_a_current(tmp_path, hull_case):
     f = BodyCurrent(**table).coefficients().force(np.array([math.cos(0.5), math.sin(0.5)]), rho_air=1025.0)
     assert xyz[0, 1] / xyz[0, 0] == pytest.approx(f[1] / f[0], rel=0.05)
     assert np.abs(xyz - xyz[0]).max() < 1e-5
+    assert "Cummins, W. E. (1962)" in ds.attrs["references"]  # the floating body's models cited with the result
 
 
 def test_the_most_loaded_line_in_a_current_is_the_intact_runs(tmp_path, hull_case):

@@ -24,6 +24,16 @@ REFERENCES = (
     ("Hall, M. et al. (2021). MoorPy: quasi-static mooring analysis in Python. NREL/TP (Body hydrostatics: "
      "weight at the CG, buoyancy, waterplane heave stiffness)."),
 )
+#: added when a free body carries a hydrodynamic database or wind and current areas (issue 39)
+FLOATING_REFERENCES = (
+    "Cummins, W. E. (1962). The impulse response function and ship motions. Schiffstechnik 9 (radiation memory).",
+    "Ogilvie, T. F. (1964). Recent progress toward the understanding and prediction of ship motions. 5th ONR "
+    "Symposium on Naval Hydrodynamics (the retardation kernel's A and B).",
+    "Newman, J. N. (1974). Second-order, slowly-varying forces on vessels in irregular waves. Int. Symp. on "
+    "Dynamics of Marine Vehicles and Structures in Waves (slow drift).",
+    "WAMIT User Manual, version 7 (the database's files and conventions).",
+    "DNV-RP-C205 (2021). Environmental conditions and environmental loads, sections 2.3 (wind) and 3.5 (JONSWAP).",
+)
 
 
 def _padded(per_line, width, fill=np.nan, lead=()):
@@ -132,7 +142,10 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     # the sea that drove the run: its surface at x = y = 0, as a mooring_dynamic result holds it
     data.update(elevation_variables(fe.model.water, run.time))
     title = getattr(case, "name", None) or "system_dynamic"
-    ds = make_dataset(data, coords, analysis="system_dynamic", references=REFERENCES, title=title,
+    floating = any(sysm.bodies[n].hydrodynamics is not None or sysm.bodies[n].wind is not None
+                   or sysm.bodies[n].current is not None for n in fe.free_bodies)
+    references = REFERENCES + (FLOATING_REFERENCES if floating else ())
+    ds = make_dataset(data, coords, analysis="system_dynamic", references=references, title=title,
                       case=case if hasattr(case, "model_dump") else None,  # a case file's, as YAML (a deck: its file)
                       settings={"elements": int(fe.model.network.n_elements), "nodes": int(fe.model.network.n_nodes),
                                 "time_step": run.time_step, "steps": run.steps, "newton_iterations": run.iterations,
