@@ -55,14 +55,15 @@ def test_a_free_body_held_still_gives_its_lines_the_tensions_of_a_fixed_one(monk
     times the tolerance: lines given still water instead fail the comparison. All with the one grid of the
     lines-only run (``SEA_BANDS`` off here).
 
-    Then the coupled run's own grid, in depth bands (``SEA_BANDS``, the default), against the one grid: the sea
-    share (tension minus calm water's) within 1 % in standard deviation and 3 % at its largest on each line
-    (measured at most 0.23 % and 0.7 %), at a step of 0.05 s. The bands' kinematics err by their interpolation bound
-    (about 1 % of the shortest kept component, as the one grid's), which the one grid refined four times in time
-    and space moves the share by (0.05 % and 0.4 % here). At the 0.1 s step above the comparison is
-    ill-conditioned: the touchdown node of line 0 lands at about t = 22 s, a contact whose period (about 0.12 s)
-    the step does not resolve, and after it any change of the kinematics is amplified (the one grid refined twice
-    moves line 0's largest sea share by 14 %, the bands by 17 %; before it, all agree within 70 N)."""
+    Then the coupled run's own grid, in depth bands (``SEA_BANDS``, the default), against the one grid, in the sea
+    of seed 4 at a step of 0.05 s: the sea share (tension minus calm water's) within 0.75 % in standard deviation
+    and 3 % at its largest on each line (measured 0.41 % and 0.61 %; with the seeds 1, 2, 3, 5 at most 0.21 % and
+    0.27 %). The one grid refined four times in time and space moves the share's standard deviation by 0.46 % here:
+    the tolerance is the two grids' own errors. On the bands' own steps, without ``seacable.seastate.BAND_REFINE``,
+    they took 1.1 % off it (the interpolation's bias, see there), and fail. At the 0.1 s step above the comparison
+    is ill-conditioned: the touchdown node of line 0 lands at about t = 22 s (seed 3), a seabed contact whose period
+    (about 0.12 s) the step does not resolve, and after it any change of the kinematics is amplified (the one grid
+    refined twice moves line 0's largest sea share by 14 %, the bands by 17 %; before it, all agree within 70 N)."""
     monkeypatch.setattr(DL, "SEA_BANDS", False)
     held = _spread("fixed")
     setup = D.prepare_system_dynamic(held)
@@ -84,12 +85,12 @@ def test_a_free_body_held_still_gives_its_lines_the_tensions_of_a_fixed_one(monk
     assert float(np.max(np.abs(same - ref))) < tol, float(np.max(np.abs(same - ref))) / mean
     monkeypatch.setattr(DL, "SEA_BANDS", True)
     assert DL.sea_bands(D.prepare_system_dynamic(free).fe)
-    half = {"time_step": 0.05}
+    half, sea = {"time_step": 0.05}, {**SEA, "seed": 4}
     still = _run(_spread("free", waves=None), half)
-    share, banded = _run(_spread("fixed"), half) - still, _run(free, half) - still
+    share, banded = _run(_spread("fixed", sea), half) - still, _run(_spread("free", sea), half) - still
     std = np.std(banded, axis=0) / np.std(share, axis=0) - 1.0
     top = np.max(np.abs(banded), axis=0) / np.max(np.abs(share), axis=0) - 1.0
-    assert np.all(np.abs(std) < 0.01) and np.all(np.abs(top) < 0.03), (std, top)
+    assert np.all(np.abs(std) < 0.0075) and np.all(np.abs(top) < 0.03), (std, top)
 
 
 def _run(case, analysis):
