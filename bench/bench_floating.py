@@ -8,8 +8,8 @@ and turbine's rounded (mass 2.03e7 kg, centre of gravity 2 m below the water lin
 m^2): a speed figure, not a validation. Issue 39's target: under 30 s on one core with 40 elements a line.
 
 The lines feel the irregular sea (its kinematics on a grid, as a single line's run; in depth bands,
-:class:`seacable.seastate.SeaBands`, when ``seacable.system.dynamics.loop.SEA_BANDS`` is on: off by default, see
-there). Measured 2026-11-30 (one process, shared 2-core machine), 40
+:class:`seacable.seastate.SeaBands`, when ``seacable.system.dynamics.loop.SEA_BANDS`` is on, the
+default). Measured 2026-11-30 (one process, shared 2-core machine), 40
 elements a line, dt 0.1 s:
 
   database                             600 s run                3-hour storm                     target
@@ -20,10 +20,14 @@ elements a line, dt 0.1 s:
   full, depth bands, at load 3.1                                  50.0 s wall, 49.0 s CPU (216x)   1.7x over 30 s
   full, one grid (bands off), merged main, load 0.6               100 s wall, 158 s CPU (108x)     3.3x over 30 s
 
-(the two rows at load 4.6 in the same minutes, one after the other). Profiled over 1200 s with the bands (load 3):
-6.96 s, of which 3.37 s in the coupled steps (about 30 s for 3 hours: the stepping alone is now over the
-target), 2.20 s in the grid's windows (16.7 s of 21 s with one grid), 0.59 s in the body's first-order loads'
-set-up (``seacable.hydro.loads._phasor_sum``).
+(the two rows at load 4.6 in the same minutes, one after the other). With the bands made the default (held still, a
+buoy's lines keep the one grid's tensions, tests/validation/test_system_dynamics_irregular_sea.py; the bands below
+the top one on 1.4 times finer steps, ``seacable.seastate.BAND_REFINE``), 1200 s of storm on the whole database,
+alternating twice: one grid 18.7-19.3 s CPU (10.5-10.8 s wall), bands 5.2-6.6 s CPU (3.5-4.8 s wall; on their
+own steps 4.9-5.2 s): 3.2 times less; surge largest 8.63 and 8.64 m, fairlead tension largest 2926 and 2913 kN.
+Profiled over 1200 s with the bands (load 3, on their own steps): 6.96 s, of which 3.37 s in the coupled steps
+(about 30 s for 3 hours: the stepping alone is now over the target), 2.20 s in the grid's windows (16.7 s of 21 s
+with one grid), 0.59 s in the body's first-order loads' set-up (``seacable.hydro.loads._phasor_sum``).
 
 The depth bands (below the top band only the components carrying 0.1 % or more of the acceleration's standard
 deviation, on steps that follow the shortest kept; columns no point reaches in a band's depths hold no levels):

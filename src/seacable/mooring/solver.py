@@ -240,9 +240,10 @@ class MooringModel:
 
     def _sea_grid(self, duration: float, positions, bands: bool = False):
         """(box, bands, window [s]) of the irregular sea's grid over ``positions``, size-checked: each band's
-        (components, z_min, z_max, columns, levels); one band unless ``bands`` (:func:`seacable.seastate.depth_bands`)."""
+        (components, z_min, z_max, columns, levels, steps: its points a period and a wavelength, when not the
+        defaults); one band unless ``bands`` (:func:`seacable.seastate.depth_bands`)."""
         from .._limits import check_run_size
-        from ..seastate import cutoff_depth, depth_bands, grid_size, significant
+        from ..seastate import BAND_REFINE, cutoff_depth, depth_bands, grid_size, significant
 
         sea = self.water.sea
         P = np.array(positions, float).reshape(-1, 3)
@@ -280,18 +281,19 @@ class MooringModel:
         per_column = np.clip(columns[..., 1], 0, nz - 1) - np.clip(columns[..., 0], 0, nz - 1) + 1
         per_column[columns[..., 0] < 0] = 0
         per_time = float(nq * np.sum(np.maximum(per_column, 1) if len(split) == 1 else per_column) + nx * ny)
-        plans = [(sea, split[1][0] if len(split) > 1 else zmin, zmax, columns, None)]
+        plans = [(sea, split[1][0] if len(split) > 1 else zmin, zmax, columns, None, {})]
+        finer = {"per_period": 20 * BAND_REFINE, "per_wavelength": 10 * BAND_REFINE}  # grid_size's defaults, refined
         per_second = per_time / dt
         for b in range(1, len(split)):  # the depth bands below the top one, on its levels
             top, part = split[b]
             bottom = split[b + 1][0] if b + 1 < len(split) else zmin
             (_, bnx, bny, bnz), (bdt, bdx, _, _), bi0 = grid_size(part, duration, box, bottom, z_max=top,
-                                                                  levels=(zc, zh))
+                                                                  levels=(zc, zh), **finer)
             cols = _sea_columns(xi, ze, P[:, 2], box, bdx, (bnx, bny, bnz), (zc, zh, bi0), pad, (top, bottom))
             count = np.clip(cols[..., 1], 0, bnz - 1) - np.clip(cols[..., 0], 0, bnz - 1) + 1
             count[cols[..., 0] < 0] = 0
             per_second += float(nq * np.sum(count) + bnx * bny) / bdt
-            plans.append((part, bottom, top, cols, (zc, zh)))
+            plans.append((part, bottom, top, cols, (zc, zh), finer))
         if len(plans) > 1:
             per_time = per_second * dt  # the values of all bands over one of the top band's steps
         # a window of time at most SEA_WINDOW_VALUES values (the whole run when it fits), at least 8 samples
@@ -325,13 +327,15 @@ class MooringModel:
 
         ``bands``: the grid in depth bands (:class:`seacable.seastate.SeaBands`, :func:`seacable.seastate.depth_bands`):
         below the top band the components that carry under 0.1 % of the acceleration's standard deviation are left
-        out and the grid's steps follow the shortest of those kept (lines reaching deep: a fraction of the work).
+        out and the grid's steps follow the shortest of those kept (:data:`seacable.seastate.BAND_REFINE` times finer;
+        lines reaching deep: a fraction of the work).
         """
         if self.water.sea is None:
             return
         box, plans, window = self._sea_grid(duration, positions, bands)
         grids = [SeaGrid(sea, box, zmin, stretching=self.water.stretching, z_max=zmax, columns=columns, single=True,
-                         levels=levels, elevation=b == 0) for b, (sea, zmin, zmax, columns, levels) in enumerate(plans)]
+                         levels=levels, elevation=b == 0, **steps)
+                 for b, (sea, zmin, zmax, columns, levels, steps) in enumerate(plans)]
         plan = grids[0] if len(grids) == 1 else SeaBands(grids)
         self._sea_spec = (plan, window, duration)
         self.sea = no_sea(self.water.stretching)

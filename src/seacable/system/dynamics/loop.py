@@ -34,11 +34,9 @@ SEA_EXCURSION = 0.1
 #: A run with a free body takes the irregular sea's grid in depth bands (:class:`seacable.seastate.SeaBands`):
 #: below the top band, the components that carry under 0.1 % of the sea's acceleration there are left out and the
 #: grid's steps follow the shortest kept, so that the lines' deep part (a floater's mooring reaching 800 m out) is
-#: gridded for the waves that reach it. False: one grid of all components (as a lines-only run). Off: in the held
-#: buoy's test (tests/validation/test_system_dynamics_irregular_sea.py) the bands moved the fairlead tensions'
-#: sea share by 4 % in standard deviation and 17 % at its largest on one line with DNV's JONSWAP peakedness (1.7 and
-#: 1.5 % with gamma 3.3), although the kinematics stay within their bound: not understood yet, so not the default.
-SEA_BANDS = False
+#: gridded for the waves that reach it (held still, a buoy's lines keep the one grid's tensions: the test
+#: tests/validation/test_system_dynamics_irregular_sea.py). False: one grid of all components (as a lines-only run).
+SEA_BANDS = True
 
 
 def sea_bands(fe: SystemFE) -> bool:
