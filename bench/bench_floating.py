@@ -19,6 +19,7 @@ elements a line, dt 0.1 s:
   full, depth bands, at load 4.6         7.7 s wall, 3.0 s CPU    80.5 s wall, 50.6 s CPU          2.7x over 30 s
   full, depth bands, at load 3.1                                  50.0 s wall, 49.0 s CPU (216x)   1.7x over 30 s
   full, one grid (bands off), merged main, load 0.6               100 s wall, 158 s CPU (108x)     3.3x over 30 s
+  full, bands refined 1.4x (the default), merged main, load 1.2   36.8 s wall, 48.5 s CPU (294x)   1.2x over 30 s
 
 (the two rows at load 4.6 in the same minutes, one after the other). With the bands made the default (held still, a
 buoy's lines keep the one grid's tensions, tests/validation/test_system_dynamics_irregular_sea.py; the bands below
