@@ -97,9 +97,9 @@ def test_the_newton_tangent_is_the_loads_velocity_derivative(current, wind):
     """``C = -df6/dqd`` of body_tangent in surge and sway against central differences of body_load (the Newton
     matrix of the coupled step; 1e-5 relative: the differences' own error)."""
     par = _par(current, wind)
-    flow = dict(current=(0.9, -0.4), wind=(14.0, 6.0), yaw=0.6)
+    flow = {"current": (0.9, -0.4), "wind": (14.0, 6.0), "yaw": 0.6}
     v0 = np.array([0.3, 0.5])
-    f6, uc = _load(par, v0, **flow)
+    _, uc = _load(par, v0, **flow)
     q = np.array([0.0, 0.0, 0.0, 0.0, 0.0, flow["yaw"]])
     qd = np.array([v0[0], v0[1], 0.0, 0.0, 0.0, 0.0])
     zero = np.zeros((6, 6))

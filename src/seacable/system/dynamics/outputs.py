@@ -27,10 +27,10 @@ REFERENCES = (
 #: added when a free body carries a hydrodynamic database or wind and current areas (issue 39)
 FLOATING_REFERENCES = (
     "Cummins, W. E. (1962). The impulse response function and ship motions. Schiffstechnik 9 (radiation memory).",
-    "Ogilvie, T. F. (1964). Recent progress toward the understanding and prediction of ship motions. 5th ONR "
-    "Symposium on Naval Hydrodynamics (the retardation kernel's A and B).",
-    "Newman, J. N. (1974). Second-order, slowly-varying forces on vessels in irregular waves. Int. Symp. on "
-    "Dynamics of Marine Vehicles and Structures in Waves (slow drift).",
+    ("Ogilvie, T. F. (1964). Recent progress toward the understanding and prediction of ship motions. 5th ONR "
+     "Symposium on Naval Hydrodynamics (the retardation kernel's A and B)."),
+    ("Newman, J. N. (1974). Second-order, slowly-varying forces on vessels in irregular waves. Int. Symp. on "
+     "Dynamics of Marine Vehicles and Structures in Waves (slow drift)."),
     "WAMIT User Manual, version 7 (the database's files and conventions).",
     "DNV-RP-C205 (2021). Environmental conditions and environmental loads, sections 2.3 (wind) and 3.5 (JONSWAP).",
 )
