@@ -873,18 +873,17 @@ def _add_fatigue(acc: dict, ds: xr.Dataset, run: Run, curve_given: str | None,
                 a["note"] = (f"not computed: the {fatigue.TN_CURVES[curve].name} curve of line '{line}' is on the "
                              "tension range over the breaking load, and the line has no breaking_load")
                 continue
-            a["damage"].append(fatigue.fatigue_damage(record, curve, breaking_load=mbs))
-            a["duration"].append(duration)
-            a["curve"], a["diameter"], a["basis"] = curve, math.nan, basis
-            continue
-        d = nominal_diameter
-        if d is None and i is not None and i.diameter:
-            d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
-        if d is None:
-            a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
-                         "no line type); give --nominal-diameter")
-            continue
-        a["damage"].append(fatigue.fatigue_damage(record, curve, diameter=d))
+            d, size = math.nan, {"breaking_load": mbs}
+        else:
+            d = nominal_diameter
+            if d is None and i is not None and i.diameter:
+                d = float(i.diameter) / VOLUME_EQUIVALENT_RATIO[curve]
+            if d is None:
+                a["note"] = (f"not computed: the nominal diameter of line '{line}' is unknown (the result stores "
+                             "no line type); give --nominal-diameter")
+                continue
+            size = {"diameter": d}
+        a["damage"].append(fatigue.fatigue_damage(record, curve, **size))
         a["duration"].append(duration)
         a["curve"], a["diameter"], a["basis"] = curve, d, basis
     return True

@@ -359,43 +359,18 @@ def uncoupled_motion(case, setup: UncoupledSetup | None = None) -> SummedMotion:
 
 def _profiles(n: int, cat, xF, zF, L: float, EA: float, w: float, mu: float):
     """The solved catenaries ``cat`` (nt,) at ``n`` points evenly spaced in unstretched length: x, z from the
-    anchor and the tension (nt, n) each. The suspended and touching-down lines of a weighty line at once (the
-    closed forms of :func:`seacable.statics.catenary.catenary`'s profile), any other one by that profile."""
-    from ..statics.catenary import CatenaryRegime as R
-    from ..statics.catenary import _profile, _suspended_arc
+    anchor and the tension (nt, n) each, by the system statics' compiled closed forms
+    (:func:`seacable.system.statics.catenary.closed_form_profile`, the bits of the catenary's own profile)."""
+    from .statics.catenary import closed_form_profile
 
-    s = np.linspace(0.0, L, n)[None, :]
+    s = np.linspace(0.0, L, n)
     nt = np.size(xF)
     x, z, T = np.zeros((nt, n)), np.zeros((nt, n)), np.zeros((nt, n))
-    H = np.asarray(cat.H_fairlead, float)[:, None]
-    VF = np.asarray(cat.V_fairlead, float)[:, None]
-    regime = np.asarray(cat.regime)
-    hang = (regime == R.SUSPENDED) & (w > 0) & (H[:, 0] > 0)
-    if hang.any():
-        VA = VF[hang] - w * L
-        x[hang], z[hang], T[hang] = _suspended_arc(s, H[hang], VA, VA + w * s, w, EA)
-    down = ((regime == R.TOUCHDOWN) | (regime == R.TOUCHDOWN_SLACK_ANCHOR)) & (w > 0) & (H[:, 0] > 0)
-    if down.any():
-        h = H[down]
-        LB = np.asarray(cat.grounded_length, float)[down][:, None]
-        sg = np.minimum(s, LB)
-        ends = np.concatenate([sg, LB], axis=1)  # the grounded part's points and the touchdown
-        if mu > 0:
-            xB = np.maximum(LB - h / (mu * w), 0.0)
-            u = np.maximum(ends, xB)
-            xg = ends + ((h - mu * w * LB) * (u - xB) + 0.5 * mu * w * (u * u - xB * xB)) / EA
-            tg = np.maximum(h - mu * w * (LB - ends), 0.0)
-        else:
-            xg, tg = ends + h * ends / EA, np.broadcast_to(h, ends.shape)
-        xtd, xg, tg = xg[:, -1:], xg[:, :-1], tg[:, :-1]
-        u = np.maximum(s - LB, 0.0)
-        xa, za, ta = _suspended_arc(u, h, np.zeros_like(h), w * u, w, EA)
-        on = s <= LB
-        x[down], z[down], T[down] = np.where(on, xg, xtd + xa), np.where(on, 0.0, za), np.where(on, tg, ta)
-    for i in np.flatnonzero(~(hang | down)):
-        p = _profile(n, float(xF[i]), float(zF[i]), L, EA, w, mu, float(H[i, 0]), float(VF[i, 0]),
-                     float(cat.grounded_length[i]), int(regime[i]))
-        x[i], z[i], T[i] = p.x, p.z, p.tension
+    H, VF = np.asarray(cat.H_fairlead, float), np.asarray(cat.V_fairlead, float)
+    LB, regime = np.asarray(cat.grounded_length, float), np.asarray(cat.regime).astype(np.int64)
+    for i in range(nt):
+        closed_form_profile(s, float(xF[i]), float(zF[i]), L, EA, w, mu, float(H[i]), float(VF[i]), float(LB[i]),
+                            int(regime[i]), x[i], z[i], T[i])
     return x, z, T
 
 
