@@ -63,6 +63,7 @@ quasi-static or in time, the lines' damping at 5 % of critical).
 
 from __future__ import annotations
 
+import math
 import os
 import sys
 import tempfile
@@ -74,6 +75,13 @@ import yaml
 ROOT = Path(__file__).resolve().parents[1]
 #: the whole database in the project (examples/data/volturnus: the full .1 and .3, the .12d diagonal)
 DATABASE = ROOT / "examples" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
+EXAMPLE = ROOT / "examples" / "volturnus_storm.yaml"
+
+
+#: the parked turbine's wind table of examples/volturnus_storm.yaml (C A 1700 m^2 at 72 m, the same every way)
+_HEADINGS = [k * math.pi / 6.0 for k in range(12)]
+WIND_TABLE = {"height": 72.0, "headings": _HEADINGS, "surge": [1700.0 * math.cos(b) for b in _HEADINGS],
+              "sway": [1700.0 * math.sin(b) for b in _HEADINGS], "yaw": [0.0] * 12}
 
 
 def case(duration: float, elements: int, time_step: float = 0.1, route: str = "coupled") -> dict:
@@ -91,11 +99,13 @@ def case(duration: float, elements: int, time_step: float = 0.1, route: str = "c
                                  "drag_normal": 2.0, "added_mass_normal": 0.82, "drag_tangential": 0.4}},
         "environment": {"water_density": 1025.0, "gravity": 9.80665, "depth": 200.0,
                         "waves": {"spectrum": "jonswap", "hs": 8.0, "tp": 12.0, "seed": 1, "n_components": 200,
-                                  "frequency_range": [0.25, top]}},
+                                  "frequency_range": [0.25, top]},
+                        "wind": {"speed": 25.0, "heading": 0.0, "spectrum": "npd", "seed": 1}},
         "bodies": {"hull": {"kind": "free", "mass": 2.03e7, "center_of_gravity": [0.0, 0.0, -2.0],
                             "inertia": [4e10, 4e10, 2.4e10], "volume": 20206.34889,
                             "hydrodynamics": {"file": str(database), "kernel_length": 60.0, "drift": "newman",
-                                              "ramp": 60.0}}},
+                                              "ramp": 60.0},
+                            "wind": WIND_TABLE}},
         "points": points, "lines": lines,
         "analysis": {"type": "system_dynamic", "duration": duration, "time_step": time_step, "output_interval": 1.0,
                      "n_elements": elements, **_route(route)},
@@ -110,16 +120,27 @@ def _route(route: str) -> dict:
     return {"coupling": "uncoupled", "uncoupled": {"lines": route, "mooring_damping": 0.05}}
 
 
+def example(duration: float) -> dict:
+    """examples/volturnus_storm.yaml (Hs 10 m, Tp 14 s, wind 30 m/s, current 1 m/s, HydroDyn's quadratic drag)
+    for ``duration`` [s], its database's path made absolute."""
+    data = yaml.safe_load(EXAMPLE.read_text())
+    hydro = data["bodies"]["hull"]["hydrodynamics"]
+    hydro["file"] = str(EXAMPLE.parent / hydro["file"])
+    data["analysis"]["duration"] = duration
+    return data
+
+
 def main(duration: float = 10800.0, elements: int = 40, time_step: float = 0.1, route: str = "coupled") -> None:
     import seacable as sc
 
     folder = Path(tempfile.mkdtemp(prefix="bench_floating_"))
     path = folder / "volturnus.yaml"
-    path.write_text(yaml.safe_dump(case(duration, elements, time_step, route), sort_keys=False))
+    make = example if route == "example" else lambda d: case(d, elements, time_step, route)
+    path.write_text(yaml.safe_dump(make(duration), sort_keys=False))
     print(f"VolturnUS-S, {route}, {duration:g} s storm, {elements} elements a line, dt {time_step:g} s, "
           f"load {os.getloadavg()[0]:.2f}")
     loaded = sc.load_case(path)
-    warm = case(2.0, elements, time_step, route)  # the kernels compiled (or loaded from the cache) before the timing
+    warm = make(2.0)  # the kernels compiled (or loaded from the cache) before the timing
     (folder / "warm.yaml").write_text(yaml.safe_dump(warm, sort_keys=False))
     sc.run(sc.load_case(folder / "warm.yaml"))
     cpu, wall = time.process_time(), time.perf_counter()

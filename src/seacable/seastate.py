@@ -520,7 +520,8 @@ class SeaGrid:
     long-crested sea (nq = 4; u, v = u_h (cos b, sin b), and so the accelerations) or (u, v, w, ax, ay, az)
     (nq = 6). A level outside its column's band reads the band's edge value, as a point beyond the box reads
     the box's edge; a column given no levels of its own (-1 in ``columns``: no point comes near it) reads the
-    nearest column's (and so its level offset).
+    nearest column's (and so its level offset), and holds that column's elevation (computed only where a point may
+    look it up: a tenth of the cost of the elevation everywhere when a few lines reach the surface of a wide box).
 
     ``single``: the kinematics computed and stored in single precision (``S_SINGLE``; float32 pairs in the
     array's doubles): half the memory and half the time of the products. A value then errs by its rounding and
@@ -577,8 +578,13 @@ class SeaGrid:
         self._q = None
         self._buffer = np.empty(0)
         self._eta_q = None  # without the elevation (a depth band below the top one, whose is read): zeros
+        # the elevation of the columns with levels of their own (a column without reads the nearest one's, as its
+        # kinematics): a node looks its surface up only near the surface, where its column has levels
+        self._eta_own = np.flatnonzero(own)
+        self._eta_share = None if own.all() else np.searchsorted(self._eta_own, share)
         if elevation:
-            E = sea._spatial(self.gx, self.gy) * sea.amplitude  # the columns' elevation phasors (columns, n)
+            cx, cy = self.gx[self._eta_own], self.gy[self._eta_own]
+            E = sea._spatial(cx, cy) * sea.amplitude  # the columns' elevation phasors (columns, n)
             self._eta_q = np.ascontiguousarray(np.concatenate((E.real.T, E.imag.T)))  # [Re; Im] (2 n, columns)
 
     def _phasors(self, c0, c1):
@@ -627,8 +633,10 @@ class SeaGrid:
         W = cos_sin(self.sea.omega, t_start + dt * np.arange(nt))  # (nt, 2 n): Re(Q exp(-i w t)) = W @ [qr; qi]
         if self._eta_q is None:
             packed[o_eta:o_kin] = 0.0
-        else:
+        elif self._eta_share is None:
             np.matmul(W, self._eta_q, out=packed[o_eta:o_kin].reshape(nt, ncol))
+        else:
+            np.take(W @ self._eta_q, self._eta_share, axis=1, out=packed[o_eta:o_kin].reshape(nt, ncol))
         packed[S_ETAMAX] = float(np.max(np.abs(packed[o_eta:o_kin]))) if ncol else 0.0
         W = W.astype(self.dtype, copy=False)
         kin = packed[o_kin:].view(self.dtype)[:nkin].reshape(nt, npt * nq)

@@ -32,7 +32,8 @@ import math
 import numpy as np
 
 from ..._jit import copy_1d, copy_2d, njit
-from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads, predict_nodes
+from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads_water, n_water, predict_nodes
+from ...seastate import S_MODE
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent
 from .frames import (
@@ -83,7 +84,8 @@ def _angle_rows(E, m):
 @njit(cache=True)
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
-            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0):
+            bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0, water,
+            fresh):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
     Newton matrix and no correction. ``with_waves`` and ``sea``: the waves on the lines, the regular wave of ``env``
@@ -98,6 +100,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     about which turning the body moves none of its points, centres of gravity and buoyancy nor its
     hydrostatics (a rod's own axis; zeros when none): that part of the rotation step is left out, since it
     has no stiffness and the Newton matrix's unsymmetric turning terms would give it an arbitrary size.
+    ``water`` (:func:`seacable.mooring.kernel.n_water` rows, 7): the water over each node, computed here when
+    ``fresh``, else the one it holds (:func:`seacable.mooring.kernel.loads_water`).
     ``bmem`` (nb, 6) and ``bk0`` (nb, 6, 6): each body's radiation memory (Cummins), the force of its velocities
     before this step and the matrix of the current one's share (``dt K_0 / 2``): the force ``-bmem - bk0 u``
     (global axes, ``u`` the reference point's velocity and the angular velocity); zeros without memory.
@@ -110,9 +114,9 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     rho, g = env[0], env[1]
     bnd = band if jac else band[:0]  # no rows: loads skips the Newton matrix
     bnd[:] = 0.0
-    loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc,
-          buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
-          with_waves, sea, F, M, tension, bnd, bw, cm, cc)
+    loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
+                bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
+                with_waves, sea, F, M, tension, bnd, bw, cm, cc, water, fresh)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -438,6 +442,13 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     gq = np.empty(3)
     env = env.copy()
     env[E_VDT] = dt  # viscoelastic lines: the slow stretch advances over the step
+    # an irregular sea: the water's kinematics of a step are looked up at its predicted positions and held over
+    # its Newton iterations, as the single line's kernel does (:func:`seacable.mooring.kernel.newmark_steps`): the
+    # corrections move the nodes by millimetres, the kinematics change over them by about k dx (1e-4 of themselves,
+    # far below the grid's interpolation error), and with them in the iterations the Newton matrix, which leaves
+    # out their gradient, took a third iteration at most steps of a storm
+    held = sea[S_MODE] > 0.0 and with_waves
+    water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))
     for step in range(px.shape[0]):
         copy_2d(Xn, X)
         copy_2d(Vn, V)
@@ -481,12 +492,13 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 for k in range(6):
                     qdd[b, k] = c0 * (q[b, k] - qn[b, k]) - qdn[b, k] / (beta * dt) - (0.5 / beta - 1.0) * qddn[b, k]
                     qd[b, k] = qdn[b, k] + dt * ((1.0 - gamma) * qddn[b, k] + gamma * qdd[b, k])
+            fresh = it == 0 or not held
             # the first check of a step, where most steps converge, assembles the residual only
             for jac in (it != 1, np.bool_(True)):
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
                                  env, cur_depth, cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
-                                 tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0)
+                                 tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0, water, fresh)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
                     break
             res, scale = out[0], out[1]
@@ -569,6 +581,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     out = np.zeros(2)
     Yt = np.zeros((12 * con_node.size, nd))
     tied = np.zeros(X.shape[0], np.bool_)
+    water = np.zeros((n_water(X, env, cur_depth, np.bool_(False), np.zeros(GRID_HEADER)), 7))
     gq = np.empty(3)
     for b in range(nb):
         if frame[b, F_ON] == 0.0:
@@ -586,7 +599,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, np.bool_(False), np.zeros(GRID_HEADER), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
-                         spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)))
+                         spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)), water, np.bool_(True))
         res, scale = out[0], out[1]
         stats[0] = it
         stats[1] = res
