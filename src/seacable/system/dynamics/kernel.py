@@ -32,7 +32,15 @@ import math
 import numpy as np
 
 from ..._jit import copy_1d, copy_2d, njit
-from ...mooring.kernel import E_VDT, GRID_HEADER, _force_tolerance, commit_viscoelastic, loads_water, n_water, predict_nodes
+from ...mooring.kernel import (
+    E_VDT,
+    GRID_HEADER,
+    _force_tolerance,
+    commit_viscoelastic,
+    loads_water,
+    n_water,
+    predict_nodes,
+)
 from ...seastate import S_MODE
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent
