@@ -453,10 +453,14 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     """Static equilibrium by damped Newton from ``initial`` positions (default the network's).
 
     The Newton steps move a node by at most ``max_step`` [m] (default half the mean element length). A solve
-    that does not converge is started again from ``initial`` with the limit cut to a quarter, twice: a slack
-    chain lying on the seabed can wander for hundreds of steps at the full limit (its grounded nodes have no
-    stiffness across, and each step throws some through the seabed) and converge in a few tens at a smaller
-    one. Raises :class:`~seacable.errors.ConvergenceError` with the residual when none converges.
+    that does not converge (a finely meshed one, a line of more than ``2 COARSE_ELEMENTS`` elements, in
+    ``FINE_DIRECT_ITERATIONS``) is started again by mesh sequencing (:mod:`seacable.mooring.sequencing`: the
+    equilibrium of the same lines at about ``COARSE_ELEMENTS`` elements each, itself solved so, interpolated onto
+    the fine mesh), then from ``initial``
+    with the limit cut to a quarter, twice: a slack chain lying on the seabed can wander for hundreds of steps at
+    the full limit (its grounded nodes have no stiffness across, and each step throws some through the seabed) and
+    converge in a few tens at a smaller one. Raises :class:`~seacable.errors.ConvergenceError` with the residual
+    when none converges.
     """
     net = model.network
     X0 = np.array(net.position if initial is None else initial, float)
@@ -466,22 +470,61 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     stats = np.zeros(3)
     step = max_step if max_step is not None else (0.5 * float(np.mean(net.length)) if net.n_elements else 1.0)
     spent = 0
-    for cut in (1.0, 0.25, 0.0625):
+    tried = []
+    fine = any(len(nodes) - 1 > 2 * COARSE_ELEMENTS for nodes in net.line_nodes)
+    for how in ("direct", "sequenced", 0.25, 0.0625):
         X = X0.copy()
+        limit, iterations = step, max_iter
+        if how == "direct" and fine:
+            iterations = min(max_iter, FINE_DIRECT_ITERATIONS)
+        elif how == "sequenced":
+            if not fine:
+                continue
+            tried.append(how)
+            X = _sequenced_start(model, X0, tol, max_iter)
+            if X is None:  # the coarse mesh did not converge either
+                continue
+        elif how != "direct":
+            limit = step * how
         ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env,
-                            model.cur_depth, model.cur_speed, tol, max_iter, step * cut, F, M, tension, stats)
+                            model.cur_depth, model.cur_speed, tol, iterations, limit, F, M, tension, stats)
         spent += int(stats[0])
         if ok:
             break
     if not ok:
+        also = " from a coarser mesh's equilibrium," if "sequenced" in tried else ""
         raise ConvergenceError(
-            f"the static equilibrium of the mooring did not converge in {max_iter} iterations, nor with the step "
-            f"limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
+            f"the static equilibrium of the mooring did not converge in {max_iter} iterations,{also} nor with the "
+            f"step limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
             f"tolerance of {stats[2]:.3g} N. Suggested fix: check that the line is long enough to reach its "
             "fairlead and that buoys cannot lift it out of the water.", iterations=spent, residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     _warn_sinking(model, X)
     return StaticState(X, tension, support, spent, float(stats[1]))
+
+
+#: Elements a line takes in the coarse network of mesh sequencing (:func:`static_equilibrium`).
+COARSE_ELEMENTS = 60
+#: Iterations a finely meshed network's statics is given from its start before mesh sequencing takes over: from a
+#: catenary start a fine lazy wave does not converge in 1500 (it needs tens of metres of steps each smaller than
+#: its elements), from the coarse mesh's equilibrium in 14-32.
+FINE_DIRECT_ITERATIONS = 150
+
+
+def _sequenced_start(model: MooringModel, X0, tol: float, max_iter: int):
+    """A start for ``model``'s statics from the equilibrium of its lines meshed coarsely (None when they cannot be
+    meshed more coarsely, or the coarse statics fails too): :mod:`seacable.mooring.sequencing`. The coarse network starts
+    from ``X0`` at its nodes."""
+    from .sequencing import coarsen, spline_start
+
+    coarse = coarsen(model.network.replace(position=np.asarray(X0, float)), COARSE_ELEMENTS)
+    if coarse is None:
+        return None
+    try:
+        state = static_equilibrium(MooringModel(coarse, model.water, checked=True), tol=tol, max_iter=max_iter)
+    except ConvergenceError:
+        return None
+    return spline_start(model.network, coarse, state.position)
 
 
 def _warn_sinking(model: MooringModel, X) -> None:
