@@ -413,3 +413,24 @@ def test_the_current_table_sets_the_uncoupled_mean_and_damps_the_low_frequency_m
     coupled = sc.run(_current_case(hull_case, tmp_path, analysis={"duration": 5.0}))
     np.testing.assert_allclose(coupled["body_position"].values[:, 0], np.tile(pose, (coupled.sizes["time"], 1)),
                                rtol=0, atol=1e-6 * offset)
+
+
+def test_the_current_tables_damping_gives_the_uncoupled_route_the_coupled_slow_drift(tmp_path, hull_case):
+    """The storm of (c) (JONSWAP Hs 6 m, Tp 10 s, Newman's drift, 600 s at 0.2 s) with the hull's current table in
+    its current (:data:`CURRENT_TABLE`, 1.2 m/s), by both routes: the fairlead tensions' standard deviation after
+    200 s, whose slow part the current's damping of the surge sets (0.68 MN s/m, as much as the hull's own). The
+    uncoupled route within 10 % of the coupled one (measured 3.6-5.3 % low: the lines' damping, none estimated
+    here, and the RAOs about the mean, as in (c); and the damping linearised at rest, the LF velocity 0.04 m/s
+    against the current's 1.2 m/s); without the table's damping in its LF equation it was 43-69 % high."""
+    waves = {"spectrum": "jonswap", "hs": 6.0, "tp": 10.0, "seed": 3, "n_components": 60,
+             "frequency_range": [0.3, 1.4]}
+    std = {}
+    for route, extra in (("coupled", {}), ("uncoupled", {"coupling": "uncoupled", "uncoupled": {"lines": "dynamic"}})):
+        path = hull_case(tmp_path, waves=waves, rope=ROPE, body={**_hydro(), "current": CURRENT_TABLE}, analysis={
+            "duration": 600.0, "time_step": 0.2, "output_interval": 0.5, **extra})
+        data = yaml.safe_load(path.read_text())
+        data["environment"]["current"] = CURRENT
+        path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+        ds = sc.run(sc.load_case(path))
+        std[route] = np.asarray(ds["fairlead_tension"])[np.asarray(ds["time"]) > 200.0].std(axis=0)
+    np.testing.assert_allclose(std["uncoupled"], std["coupled"], rtol=0.10)
