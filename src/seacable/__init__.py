@@ -50,6 +50,7 @@ if TYPE_CHECKING:
         TowedSteadyAnalysis,
         VerticalModesAnalysis,
     )
+    from .coupling import Coupling
     from .environment import Current, Environment, Seabed, Waves
     from .io import load_case, parse_case
     from .laying.bathymetry import BathymetryGrid
@@ -121,6 +122,8 @@ __all__ = [
     "SystemLine",
     "SystemStaticAnalysis",
     "SystemOffsetsAnalysis",
+    # coupling to another code (MoorDyn's Init/Step/Close)
+    "Coupling",
     # running
     "load_case",
     "parse_case",
@@ -150,6 +153,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
               "MooringDynamicAnalysis", "MooringPushoverAnalysis", "MooringStaticAnalysis", "PushoverAnalysis",
               "SeabedContact", "StaticAnalysis", "TowedBody", "TowedDynamicAnalysis", "TowedSteadyAnalysis",
               "VerticalModesAnalysis"),
+    ".coupling": ("Coupling",),
     ".environment": ("Current", "Environment", "Seabed", "Waves"),
     ".io": ("load_case", "parse_case"),
     ".laying.bathymetry": ("BathymetryGrid",),

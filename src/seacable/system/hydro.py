@@ -7,7 +7,8 @@ infinite-frequency added mass, so that the statics and the dynamics use them as 
 :func:`body_wave_loads` and :func:`memory_kernels` are the time loop's: the first-order force of the case's sea
 at the body's position and its mean or slow drift (Newman's, or the full QTF's), as a force series; the retardation
 kernels at the run's step. :func:`body_wind_velocity` and :func:`area_tables`: the wind at a body and its wind and
-current tables, whose forces the coupled step takes with the relative velocity.
+current tables, whose forces the coupled step takes with the relative velocity; :func:`body_wind_loads` and
+:func:`body_current_loads` the same forces linearised about the body at rest (the uncoupled route's).
 """
 
 from __future__ import annotations
@@ -22,7 +23,8 @@ from .._ramp import smooth_ramp
 from ..errors import InputError
 from .model import Body, MooringSystem
 
-__all__ = ["MEMORY_TAIL", "area_tables", "body_wave_loads", "body_wind_loads", "body_wind_velocity", "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
+__all__ = ["MEMORY_TAIL", "area_tables", "body_current_loads", "body_wave_loads", "body_wind_loads", "body_wind_velocity",
+           "database", "memory_kernels", "resolve_bodies", "weight_stiffness"]
 
 #: The largest value of a body's retardation kernel at its cut (``kernel_length``), relative to its peak, in any DOF.
 #: The VolturnUS-S kernel is at 0.5 % of its peak at 60 s (HydroDyn's RdtnTMax for it), 0.03 % at 120 s, 2.9 % at 30 s. [-]
@@ -234,6 +236,50 @@ def body_wind_loads(body: Body, name: str, wind, t: np.ndarray, rho_air: float |
     rot = np.eye(6)
     rot[:2, :2] = [[c, -s_], [s_, c]]
     return force, rot.T @ damping_global @ rot
+
+
+def body_current_loads(body: Body, current, pose, rho: float):
+    """The environment's ``current`` (:class:`seacable.environment.Current`) on a body with current areas
+    (``body.current``), the body at rest at ``pose`` (6,) [m, rad]: its force and yaw moment (6,) [N, N m], global
+    axes, ``1/2 rho |u| u C(beta)`` of the current ``u`` at the reference point's depth (the surface's when the point
+    is above the water) with ``beta`` its direction in the body's axes at the pose's yaw, and the linear damping
+    (6, 6) [N s/m, N s] in the global axes of the current relative to the body's velocity ``v``, ``-dF/dv`` at
+    ``v = 0`` (central differences of the force law; ``rho C |u|`` along the current for a table flat in heading,
+    and ``1/2 rho |u| dC/dbeta`` across it): the loads the coupled step takes with the relative velocity
+    (:func:`seacable.system.dynamics.body.body_load`), linearised for a frequency-domain or uncoupled model.
+    ``None`` when the body has no current areas or the current is nil there.
+
+    Parameters
+    ----------
+    body : Body
+        With ``current`` (:class:`~seacable.system.model.BodyCurrent`).
+    current : seacable.environment.Current
+        The environment's current.
+    pose : array_like
+        The body's reference point and angles (x, y, z, roll, pitch, yaw). [m, rad]
+    rho : float
+        The water's density. [kg/m^3]
+    """
+    if body.current is None:
+        return None
+    pose = np.asarray(pose, float)
+    u = np.asarray(current.velocity(min(float(pose[2]), 0.0)), float)[:2]
+    if not np.any(u):
+        return None
+    coef = body.current.coefficients()
+    yaw = float(pose[5])
+    force = np.zeros(6)
+    force[[0, 1, 5]] = coef.force(u, yaw=yaw, rho_air=rho)
+    jac = np.zeros((3, 2))
+    h = 1e-3 * max(float(np.hypot(*u)), 1.0)
+    for k in range(2):
+        dv = np.zeros(2)
+        dv[k] = h
+        jac[:, k] = (coef.force(u, body_velocity=dv, yaw=yaw, rho_air=rho)
+                     - coef.force(u, body_velocity=-dv, yaw=yaw, rho_air=rho)) / (2 * h)
+    damping = np.zeros((6, 6))
+    damping[np.ix_([0, 1, 5], [0, 1])] = -jac
+    return force, damping
 
 
 def area_tables(body: Body) -> tuple[int, int, np.ndarray]:

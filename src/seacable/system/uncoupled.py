@@ -4,13 +4,16 @@ wave-frequency motions solved apart, the lines driven by their sum.
 The frequency-domain practice of API RP 2SK and DNV-OS-E301, in the time domain:
 
 1. **Mean.** The body's static equilibrium with its lines (:func:`seacable.system.statics.solve_equilibrium`,
-   or the finite-element statics with a current: its drag on the body is then in the mean) under its weight,
+   or the finite-element statics with a current: its drag on the body, from its ``quadratic_damping`` and its
+   current table ``1/2 rho |u| u C(beta)`` at the heading found, is then in the mean) under its weight,
    buoyancy, hydrostatics, ``external_force`` and the mean loads: the sea's mean drift
    (:func:`seacable.hydro.loads.mean_drift_force`) and the mean wind's force. The mooring's stiffness ``K_m``
    (lines only, about the reference point) is the statics' at that position.
 2. **Low frequency.** Cummins' equation (:func:`seacable.hydro.cummins.simulate_cummins`) in six DOFs about the
    mean, with the restoring ``C + K_m`` (the database's hydrostatics with the weight's moment, the mooring),
-   the radiation memory, the body's linear and quadratic damping, the wind's damping and the lines' damping
+   the radiation memory, the body's linear and quadratic damping, the wind's and the current table's damping
+   (:func:`~seacable.system.hydro.body_wind_loads`, :func:`~seacable.system.hydro.body_current_loads`: ``-dF/dv`` of
+   the relative velocity's force at the mean), and the lines' damping
    ``mooring_damping`` (a fraction ``z`` of critical in surge, sway and yaw: ``2 z sqrt(K_jj (M_jj + A_jj(0)))``),
    forced by the slowly varying loads only: the slow drift less its mean (Newman's approximation or the full
    QTF, when the body's ``drift`` is ``newman`` or ``qtf``) and the wind's gusts. Heave, roll and pitch are solved too: the wind's moment
@@ -31,7 +34,9 @@ The result has the coupled route's variables (one vocabulary: ``body_position`` 
 When it is not conservative (README): the lines' damping is an estimate (too much of it under-predicts the slow
 drift, the largest part of a semi's or spar's offset); the LF-WF interaction is lost (the wave-drift damping,
 the RAOs taken about the mean rather than the instantaneous offset); with quasi-static lines their dynamic
-tension (inertia and drag amplifying the wave-frequency tension of chain in deep water) is left out.
+tension (inertia and drag amplifying the wave-frequency tension of chain in deep water) is left out. Left out on
+the safe side: the current's damping of the LF motion through the body's ``quadratic_damping`` (``2 B2 |u|``, which
+the coupled route has; the current table's is in).
 """
 
 from __future__ import annotations
@@ -124,7 +129,8 @@ class UncoupledSetup:
     mass: np.ndarray                 # (6, 6) rigid body about the reference point
     stiffness: np.ndarray            # (6, 6) hydrostatics and weight
     mooring_stiffness: np.ndarray    # (6, 6) lines only, at the mean
-    linear_damping: np.ndarray       # (6, 6) global axes: the body's, the wind's and the lines' estimate
+    linear_damping: np.ndarray       # (6, 6) global axes: the body's, the wind's, the current table's, the lines'
+                                     # estimate
     quadratic_damping: np.ndarray    # (6, 6) global axes
     wave_damping: np.ndarray         # (6, 6) the linear damping of the RAOs (no line estimate)
     sea: object                      # SeaComponents or None
@@ -182,7 +188,7 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     catenaries' limits for ``lines: quasi_static``.
     """
     from .case import SystemCase
-    from .hydro import body_wave_loads, body_wind_loads, database, memory_kernels
+    from .hydro import body_current_loads, body_wave_loads, body_wind_loads, database, memory_kernels
 
     a = getattr(case, "analysis", None)
     if not isinstance(case, SystemCase) or not isinstance(a, SystemDynamicAnalysis) or a.coupling != "uncoupled":
@@ -258,6 +264,11 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     mass = given.mass_matrix()  # the rigid body's (a body with a database gives no added mass)
     yaw = float(pose[5])
     lin = _rotate(body.matrix("linear_damping") + wind_damping, yaw)
+    # the hull's current table: its force is in the statics' mean (at the heading found), its damping of the relative
+    # velocity linearised there (the coupled step takes the table with the relative velocity at every step)
+    current = body_current_loads(body, env.current, pose, rho)
+    if current is not None:
+        lin += current[1]
     quad = _rotate(body.matrix("quadratic_damping"), yaw)
     wave_damping = lin.copy()
     total = hydrostatic + moor
