@@ -221,17 +221,8 @@ def body_wind_loads(body: Body, name: str, wind, t: np.ndarray, rho_air: float |
     f3 = coef.force(velocity, yaw=yaw, rho_air=rho_air)
     force = np.zeros((t.size, 6))
     force[:, [0, 1, 5]] = f3
-    # the damping of the relative wind: -dF/dv at the mean wind, by central differences of the force law
-    mean = body_wind_velocity(body, wind)[0]
-    jac = np.zeros((3, 2))
-    h = 1e-3 * max(float(np.hypot(*mean)), 1.0)
-    for k in range(2):
-        dv = np.zeros(2)
-        dv[k] = h
-        jac[:, k] = (coef.force(mean, body_velocity=dv, yaw=yaw, rho_air=rho_air)
-                     - coef.force(mean, body_velocity=-dv, yaw=yaw, rho_air=rho_air)) / (2 * h)
-    damping_global = np.zeros((6, 6))
-    damping_global[np.ix_([0, 1, 5], [0, 1])] = -jac
+    # the damping of the relative wind: -dF/dv at the mean wind
+    damping_global = _table_damping(coef, body_wind_velocity(body, wind)[0], yaw, rho_air)
     c, s_ = math.cos(yaw), math.sin(yaw)
     rot = np.eye(6)
     rot[:2, :2] = [[c, -s_], [s_, c]]
@@ -270,16 +261,23 @@ def body_current_loads(body: Body, current, pose, rho: float):
     yaw = float(pose[5])
     force = np.zeros(6)
     force[[0, 1, 5]] = coef.force(u, yaw=yaw, rho_air=rho)
+    return force, _table_damping(coef, u, yaw, rho)
+
+
+def _table_damping(coef, flow, yaw: float, rho: float) -> np.ndarray:
+    """The linear damping (6, 6) [N s/m, N s], global axes, of a coefficient table's force ``1/2 rho |w| w C(beta)``
+    on the flow ``w = flow - v`` relative to the body's velocity ``v`` (2,) [m/s]: ``-dF/dv`` at ``v = 0`` by
+    central differences of the force law (steps of 1e-3 of the flow speed), in the surge, sway and yaw rows."""
     jac = np.zeros((3, 2))
-    h = 1e-3 * max(float(np.hypot(*u)), 1.0)
+    h = 1e-3 * max(float(np.hypot(*flow)), 1.0)
     for k in range(2):
         dv = np.zeros(2)
         dv[k] = h
-        jac[:, k] = (coef.force(u, body_velocity=dv, yaw=yaw, rho_air=rho)
-                     - coef.force(u, body_velocity=-dv, yaw=yaw, rho_air=rho)) / (2 * h)
+        jac[:, k] = (coef.force(flow, body_velocity=dv, yaw=yaw, rho_air=rho)
+                     - coef.force(flow, body_velocity=-dv, yaw=yaw, rho_air=rho)) / (2 * h)
     damping = np.zeros((6, 6))
     damping[np.ix_([0, 1, 5], [0, 1])] = -jac
-    return force, damping
+    return damping
 
 
 def area_tables(body: Body) -> tuple[int, int, np.ndarray]:
