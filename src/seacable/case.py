@@ -24,7 +24,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest
-from .environment import Environment
+from .environment import Environment, _warn_if_degrees
 from .errors import InputError
 from .laying.bathymetry import BathymetryGrid
 from .laying.inputs import (
@@ -556,10 +556,18 @@ class MooringStaticAnalysis(_Mooring):
 
 
 class MooringPushoverAnalysis(_Offsets, _Mooring):
-    """Quasi-static force-excursion curve of the finite-element model: the fairlead moved along x."""
+    """Quasi-static force-excursion curve of the finite-element model: the fairlead moved horizontally by the
+    offsets along ``heading`` (0: along +x, away from the anchor, so that positive offsets are the far position and
+    negative ones the near; pi/2: across the line's plane, the cross position)."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
     USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
+    heading: quantity("rad") = Field(0.0, description="Direction of the offsets from +x towards +y. [rad]")
+
+    @model_validator(mode="after")
+    def _heading(self):
+        _warn_if_degrees("analysis.heading", self.heading, 2 * math.pi)
+        return self
 
 
 class MooringDynamicAnalysis(_Mooring):

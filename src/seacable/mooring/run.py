@@ -425,7 +425,8 @@ def prepare_mooring_pushover(case: Case) -> tuple[MooringModel, np.ndarray]:
     moved = net.kind == PRESCRIBED
     for off in (offsets.min(), offsets.max()) if offsets.size else ():
         X = net.position.copy()
-        X[moved, 0] += off
+        X[moved, 0] += off * math.cos(a.heading)
+        X[moved, 1] += off * math.sin(a.heading)
         check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope)
     return model, offsets
 
@@ -500,7 +501,8 @@ def solve_mooring_pushover(case: Case):
     :func:`run_mooring_pushover` reports (no Dataset built: :func:`seacable.simulate.check` calls it)."""
     a: MooringPushoverAnalysis = case.analysis
     model, offsets = prepare_mooring_pushover(case)
-    return model, offsets, pushover(model, offsets, tol=a.tolerance)
+    direction = (math.cos(a.heading), math.sin(a.heading), 0.0)
+    return model, offsets, pushover(model, offsets, direction, tol=a.tolerance)
 
 
 def run_mooring_static(case: Case):
@@ -523,8 +525,9 @@ def run_mooring_pushover(case: Case):
     S = np.array([st.support for st in states])
     data = network_variables(model, X, T, S, dims=("offset", "node"))
     data["H_fairlead"] = var("offset", -S[:, np.flatnonzero(model.network.kind == PRESCRIBED)[-1], 0], "N",
-                             "horizontal force of the line on the fairlead, towards the anchor")
-    coords = {**_coords(model.network), "offset": var("offset", offsets, "m", "horizontal fairlead offset")}
+                             "horizontal force of the line on the fairlead along x, towards the anchor")
+    coords = {**_coords(model.network), "offset": var("offset", offsets, "m",
+                                                      "horizontal fairlead offset along analysis.heading")}
     return make_dataset(data, coords, analysis="mooring_pushover", case=case, references=REFERENCES,
                         settings=_settings(model))
 
