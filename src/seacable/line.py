@@ -475,7 +475,9 @@ def resolve_sections(line, water_density: float, gravity: float):
     out = type(line)(segments=tuple(segments), attachments=tuple(attachments))
     weight = sum(seg.length * seg.line_type.submerged_weight(water_density, gravity) for seg in out.segments) \
         + sum(a.net_weight(water_density, gravity) for a in out.attachments)
-    if weight <= 0.0:
+    scale = sum(seg.length * abs(seg.line_type.submerged_weight(water_density, gravity)) for seg in out.segments) \
+        + sum(abs(a.net_weight(water_density, gravity)) for a in out.attachments)
+    if weight < -1e-9 * scale:  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
         lift = sum(-sec.count * sec.module.net_weight(water_density, gravity)
                    for sec in line.sections if isinstance(sec, BuoyancySection))
         raise InputError(
