@@ -13,7 +13,7 @@ import math
 import warnings
 from typing import Literal
 
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 import numpy as np
 
@@ -335,6 +335,14 @@ class Line(Model):
     segments: tuple[Segment, ...] = Field(min_length=1)
     attachments: tuple[PointMass, ...] = ()
     sections: tuple[Section, ...] = ()
+
+    @model_serializer(mode="wrap")
+    def _without_empty_sections(self, handler):
+        # a line without sections is written as before sections existed (a result's case attribute unchanged)
+        data = handler(self)
+        if not self.sections and isinstance(data, dict):
+            data.pop("sections", None)
+        return data
 
     @classmethod
     def single(cls, line_type: LineType, length: float, **kwargs) -> Line:

@@ -162,10 +162,25 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     def pad(a):
         return np.concatenate((a, np.zeros(extra)))
 
+    pm, pa, pw, pv, pd = (pad(a) for a in (pm, pa, pw, pv, pd))
+    pda = pd.copy()
+    for li, line in enumerate(md.lines):  # CableDyn's ATTACHMENTS: at the node nearest each one's arc length
+        nodes = line_nodes[li]
+        s_nodes = np.array([0.0, *np.asarray(arc)[nodes[1:-1]], line.length]) if len(nodes) > 2 else None
+        for s, mass, volume, cda, ca, cdax in line.attachments:
+            i = nodes[int(np.argmin(np.abs(s_nodes - s)))] if s_nodes is not None else nodes[0]
+            pm[i] += mass
+            pv[i] += volume
+            pw[i] += (mass - rho * volume) * g
+            pa[i] += ca * rho * volume
+            pd[i] += cda
+            pda[i] += cdax
+
     net = Network(position=np.array(pos), kind=np.array(kind, np.int64),
                   channel=np.concatenate((channel, -np.ones(extra, int))),
-                  point_mass=pad(pm), point_added_mass=pad(pa), point_weight=pad(pw), point_volume=pad(pv),
-                  point_drag_area=pad(pd), elements=np.array(elements, np.int64), length=P[:, 0],
+                  point_mass=pm, point_added_mass=pa, point_weight=pw, point_volume=pv,
+                  point_drag_area=pd, point_axial_drag_area=None if np.array_equal(pda, pd) else pda,
+                  elements=np.array(elements, np.int64), length=P[:, 0],
                   axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
                   weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
                   element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes),

@@ -87,9 +87,9 @@ def test_equivalent_buoyancy_rewrites_diameter_and_mass_from_the_weight_in_water
     ("--------------------- END CONNECTIONS -------------------------------\nLineID End Stiffness EzX EzY EzZ\n"
      "(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid -0.25 0.0 -0.97\n", "none", "Stiffness 'Rigid' (a clamped or sprung"),
     ("--------------------- ATTACHMENTS ----------------------------------\nLineID ArcLength Mass Volume CdA Ca\n"
-     "(-) (m) (kg) (m^3) (m^2) (-)\n1 70.614:5.0:115.614 114.15 0.2297 0.78 1.0\n", "none",
-     "ATTACHMENTS section has 1 row(s)"),
-    ("", "uniform", "CableDyn's option current 'uniform' is not read"),
+     "(-) (m) (kg) (m^3) (m^2) (-)\n1 170.614:5.0:175.614 114.15 0.2297 0.78 1.0\n", "none",
+     "arc length 170.614 m lies outside line 1 (0 to 170.215 m)"),
+    ("", "uniform 0.5 0.0 0.0", "CableDyn's option current 'uniform 0.5 0.0 0.0' is not read"),
     ("--------------------- EQUIVALENT BUOYANCY -----------------------------\nLineType Diam SubmergedWeightNpm\n"
      "(-) (m) (N/m)\nbuoy 0.01 -90.0\n", "none", "needs a mass in air of"),
 ])
@@ -116,3 +116,28 @@ def test_cabledyn_deck_runs_its_lazy_wave_statics(tmp_path):
     # 1 N holds the mesh and the deck's kBot contact
     assert float(ds.fairlead_tension) == pytest.approx(9320.17, abs=1.0)
     assert ds.z.values.min() == pytest.approx(-80.0, abs=0.05)  # its tail on the seabed (kBot 1e5: 1 cm in)
+
+
+MODULES = ("--------------------- ATTACHMENTS -------------------------------------------\n"
+           "LineID  ArcLength               Mass     Volume   CdA    Ca    CdAx\n"
+           "(-)     (m)                     (kg)     (m^3)    (m^2)  (-)   (m^2)\n"
+           "1       70.614:5.0:115.614      114.15   0.2297   0.78   1.0   0.2042\n")
+
+
+def test_attachments_are_point_loads_at_their_nodes_and_give_cabledyns_modules_deck(tmp_path):
+    # CableDyn's lazy_wave_buoyancy_modules.dat in still water: the bare cable with ten modules of 114.15 kg and
+    # 0.2297 m^3 at a 5 m pitch from 70.614 m of arc (hang-off first); the deck's mesh coarsened fourfold still puts
+    # a node on every module (0.625 m elements over the middle section)
+    deck = _deck(MODULES).replace("1       buoy      50.000   80", "1       bare      50.000   80")
+    md = read_moordyn(deck)
+    arcs = [a[0] for a in md.lines[0].attachments]
+    assert arcs == pytest.approx([70.614 + 5.0 * k for k in range(10)], abs=1e-12)
+    path = tmp_path / "modules.dat"
+    path.write_text(deck)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ds = sc.run(sc.load_case(path))
+    # CableDyn 0.3.0 on the deck's 1024 elements: 9324.68 N at the hang-off (seacable on them: 9324.677 N); the
+    # fourfold coarser mesh moves the smeared twin by < 0.05 N: 1 N (the smeared section gives 9320.17 N, and a
+    # module misplaced by one pitch or its lift lost moves it by far more)
+    assert float(ds.fairlead_tension) == pytest.approx(9324.68, abs=1.0)

@@ -11,12 +11,12 @@ and adds, for dynamic power cables:
 * ``EQUIVALENT BUOYANCY`` (``LineType Diam SubmergedWeightNpm``): a line type rewritten to a given diameter and
   weight in water per metre, its mass in air ``w / g + rho pi d^2 / 4`` with the deck's final rho and g;
 * ``END CONNECTIONS`` (``LineID End Stiffness EzX EzY EzZ``): the bending boundary of a line end, pinned by default;
-* ``ATTACHMENTS`` (``LineID ArcLength Mass Volume CdA Ca [CdAx]``): point loads on a finite-EI line;
+* ``ATTACHMENTS`` (``LineID ArcLength Mass Volume CdA Ca [CdAx]``): point loads on a line (buoyancy modules, clump
+  weights), each at the node nearest its arc length;
 * OPTIONS rows of its own, some written keyword first (``dynamic_solver 1e-8 1e-14 30 12``).
 
-seacable reads SECTIONS, EQUIVALENT BUOYANCY and pinned END CONNECTIONS; it refuses, by name, a clamped or sprung
-end connection and ATTACHMENTS rows (not read yet), and CableDyn's ``current`` and ``waves`` options other than
-``none``. The lines and points are otherwise MoorDyn's, read by the same tables.
+seacable reads SECTIONS, EQUIVALENT BUOYANCY, ATTACHMENTS and pinned END CONNECTIONS; it refuses, by name, a clamped
+or sprung end connection (not read yet) and CableDyn's ``current`` and ``waves`` options other than ``none``. The lines and points are otherwise MoorDyn's, read by the same tables.
 """
 
 from __future__ import annotations
@@ -108,14 +108,46 @@ def check_end_connections(rd, section, line_ids) -> None:
                                "seacable case file.")
 
 
-def refuse_attachments(rd, section) -> None:
-    """ATTACHMENTS rows are not read yet: refuse them by name rather than run the line without them."""
+def read_attachments(rd, section, lines):
+    """The lines with CableDyn's ATTACHMENTS rows (``LineID ArcLength Mass Volume CdA Ca [CdAx]``, the arc length
+    one value or a series ``first:pitch:last``) as their ``attachments``: ``(s [m], mass [kg], volume [m^3], CdA
+    [m^2], Ca [-], CdAx [m^2])`` from end A as written."""
     _, rows = _table(rd, section)
-    if rows:
-        raise rd.error(rows[0][0], f"the ATTACHMENTS section has {len(rows)} row(s) (CableDyn's point loads on a "
-                                   "cable); seacable's MoorDyn reader does not read them yet. Suggested fix: give the "
-                                   "modules as a buoyancy section (representation: discrete) in a seacable case file, "
-                                   "or smear them (EQUIVALENT BUOYANCY).")
+    by_id = {ln.id: ln for ln in lines}
+    found: dict[int, list] = {}
+    for lineno, t in rows:
+        rd.columns(lineno, t, 6, "ATTACHMENTS", "LineID ArcLength Mass Volume CdA Ca [CdAx]")
+        lid = _whole(rd, lineno, t[0], "ATTACHMENTS LineID")
+        if lid not in by_id:
+            raise rd.error(lineno, f"ATTACHMENTS names line {lid}, which is not in LINES "
+                                   f"({', '.join(map(str, sorted(by_id)))}). Suggested fix: use a line's ID.")
+        line = by_id[lid]
+        parts = t[1].split(":")
+        if len(parts) not in (1, 3):
+            raise rd.error(lineno, f"ATTACHMENTS ArcLength {t[1]!r} must be one arc length or a series first:pitch:last"
+                                   " (m). Suggested fix: e.g. 70.614:5.0:115.614.")
+        values = [rd.number(lineno, v, "ATTACHMENTS ArcLength", "m") for v in parts]
+        if len(values) == 3:
+            first, pitch, last = values
+            if not pitch > 0 or first > last:
+                raise rd.error(lineno, f"ATTACHMENTS series {t[1]!r} needs a pitch > 0 and first <= last. "
+                                       "Suggested fix: write first:pitch:last in metres.")
+            count = int(math.floor((last - first) / pitch + 1e-9)) + 1
+            arcs = [first + k * pitch for k in range(count)]
+        else:
+            arcs = values
+        mass, volume, cda, ca = (rd.number(lineno, v, f"ATTACHMENTS {c}", u) for v, c, u in
+                                 zip(t[2:6], ("Mass", "Volume", "CdA", "Ca"), ("kg", "m^3", "m^2", "-")))
+        cdax = rd.number(lineno, t[6], "ATTACHMENTS CdAx", "m^2") if len(t) > 6 else 0.0
+        if min(mass, volume, cda, ca, cdax) < 0 or not any((mass, volume, cda, cdax)):
+            raise rd.error(lineno, "ATTACHMENTS Mass, Volume, CdA, Ca and CdAx must be >= 0 and not all of Mass, "
+                                   "Volume, CdA, CdAx 0. Suggested fix: give the module's mass (kg) and volume (m^3).")
+        for s in arcs:
+            if not 0.0 <= s <= line.length * (1 + 1e-12):
+                raise rd.error(lineno, f"ATTACHMENTS arc length {s:g} m lies outside line {lid} (0 to "
+                                       f"{line.length:g} m). Suggested fix: give arc lengths from the line's end A.")
+            found.setdefault(lid, []).append((s, mass, volume, cda, ca, cdax))
+    return [dataclasses.replace(ln, attachments=tuple(found.get(ln.id, ()))) for ln in lines]
 
 
 def cabledyn_options(rd, section):
@@ -131,10 +163,11 @@ def cabledyn_options(rd, section):
             rd.notes.append(f"{rd.label}:{lineno}: CableDyn's option {tokens[0]} (its own solver's settings) is not "
                             "honoured: seacable's statics and time steps are its own.")
             continue
-        if len(tokens) >= 2 and tokens[1].lower() in _ENVIRONMENT and tokens[0].lower() not in ("none", "0"):
-            raise rd.error(lineno, f"CableDyn's option {tokens[1]} {tokens[0]!r} is not read by seacable's MoorDyn "
-                                   "reader. Suggested fix: write 'none' there and give the current or waves in a "
-                                   "seacable case file (environment.current, environment.waves).")
+        at = next((k for k, w in enumerate(tokens[1:], 1) if w.lower() in _ENVIRONMENT), None)
+        if at is not None and [w.lower() for w in tokens[:at]] not in (["none"], ["0"]):
+            raise rd.error(lineno, f"CableDyn's option {tokens[at]} {' '.join(tokens[:at])!r} is not read by seacable's "
+                                   "MoorDyn reader. Suggested fix: write 'none' there and give the current or waves in "
+                                   "a seacable case file (environment.current, environment.waves).")
         kept.append((lineno, line))
     return (kind, header_no, header, kept)
 

@@ -77,8 +77,6 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     rd = _Reader(label, Path(path).parent if path else None)
     title, echo, sections = _split_sections(rd, text)
     cable = _cabledyn.is_cabledyn(sections)  # CableDyn's cable extensions (SECTIONS and the rest)
-    if "attachments" in sections:
-        _cabledyn.refuse_attachments(rd, sections["attachments"])
     for kind, header in (("equivalent_buoyancy", "EQUIVALENT BUOYANCY"), ("end_connections", "END CONNECTIONS")):
         if kind in sections and not cable and _table(rd, sections[kind])[1]:
             raise rd.error(sections[kind][1], f"a {header} section (CableDyn's) in a deck without a SECTIONS table. "
@@ -123,6 +121,8 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     lines = (_read_lines(rd, sections["lines"], types, by_id, rod_ids, cable_sections)
              if "lines" in sections and (sections["lines"][3] or not structures)
              and (_table(rd, sections["lines"])[1] or not structures) else [])
+    if "attachments" in sections:
+        lines = _cabledyn.read_attachments(rd, sections["attachments"], lines)
     failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
     loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
              if "external_loads" in sections else [])

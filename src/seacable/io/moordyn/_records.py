@@ -168,6 +168,8 @@ class MoorDynLine:
     # CableDyn's SECTIONS: (line type, length [m], elements) from end A to end B; line_type is then the first's,
     # length and n_segments their sums; () for a MoorDyn line of one type
     sections: tuple[tuple[str, float, int], ...] = ()
+    # CableDyn's ATTACHMENTS: (s [m] from end A, mass [kg], volume [m^3], CdA [m^2], Ca [-], CdAx [m^2])
+    attachments: tuple[tuple[float, float, float, float, float, float], ...] = ()
 
 
 _DEPTH = ("WtrDpth", "depth", "WaterDepth")
