@@ -27,16 +27,16 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parents[1] / "tests" / "validation"))
 
-import _cabledyn_peer as peer  # noqa: E402
-import test_cabledyn_lazy_wave as shapes  # noqa: E402
+import _cabledyn_peer as peer
+import test_cabledyn_lazy_wave as shapes
 
-import seacable as sc  # noqa: E402
+import seacable as sc
 
 
 def main(repeat: int = 3) -> None:
     case = sc.load_case(peer.CASE)
     sizes = (1.0, 0.5, 0.25, 0.125)
-    runs = {h: case.model_copy(update=dict(analysis=case.analysis.model_copy(update=dict(element_length=h))))
+    runs = {h: case.model_copy(update={"analysis": case.analysis.model_copy(update={"element_length": h})})
             for h in sizes}
     sc.run(runs[1.0])  # compile
     kappa, walls, tension = {}, {}, {}

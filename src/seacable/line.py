@@ -9,13 +9,13 @@ given unstretched arc lengths from end A.
 
 from __future__ import annotations
 
+import itertools
 import math
 import warnings
 from typing import Literal
 
-from pydantic import Field, field_validator, model_serializer, model_validator
-
 import numpy as np
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from ._model import Model, quantity
 from .errors import InputError, SeacableWarning
@@ -380,7 +380,7 @@ class Line(Model):
                                  f"{total - sec.length:g} m (the arc length from end A).")
             spans.append((sec.start, sec.end, i))
         spans.sort()
-        for (a0, a1, i), (b0, b1, j) in zip(spans[:-1], spans[1:]):
+        for (a0, a1, i), (b0, b1, j) in itertools.pairwise(spans):
             if b0 < a1 - 1e-9 * total:
                 raise ValueError(f"sections[{i}] ({a0:g}-{a1:g} m) and sections[{j}] ({b0:g}-{b1:g} m) overlap. "
                                  "Suggested fix: one buoyancy section per stretch of cable; give the second "
@@ -435,9 +435,9 @@ def _split_segment(seg, cuts):
     """``seg`` cut at the local arc lengths ``cuts`` (0 < cut < length), its elements shared by length."""
     edges = [0.0, *sorted(cuts), seg.length]
     pieces = []
-    for lo, hi in zip(edges[:-1], edges[1:]):
+    for lo, hi in itertools.pairwise(edges):
         n = None if seg.n_elements is None else max(1, round(seg.n_elements * (hi - lo) / seg.length))
-        pieces.append(seg.model_copy(update=dict(length=hi - lo, n_elements=n)))
+        pieces.append(seg.model_copy(update={"length": hi - lo, "n_elements": n}))
     return pieces
 
 
@@ -470,10 +470,10 @@ def resolve_sections(line, water_density: float, gravity: float):
         for piece, lo in zip(_split_segment(seg, [c - s0 for c in cuts]), sorted({s0, *cuts})):
             mid = lo + 0.5 * piece.length
             for sec in line.sections:
-                if isinstance(sec, BuoyancySection) and sec.start <= mid <= sec.end:
-                    if sec.representation == "smeared":
-                        piece = piece.model_copy(update=dict(line_type=smeared_line_type(
-                            piece.line_type, sec, water_density, gravity)))
+                if isinstance(sec, BuoyancySection) and sec.start <= mid <= sec.end and \
+                        sec.representation == "smeared":
+                    piece = piece.model_copy(update={"line_type": smeared_line_type(
+                        piece.line_type, sec, water_density, gravity)})
             segments.append(piece)
     for sec in line.sections:
         if isinstance(sec, BuoyancySection) and sec.representation == "discrete":

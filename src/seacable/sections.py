@@ -149,7 +149,7 @@ class BuoyancySection(Model):
     @property
     def count(self) -> int:
         """Number of modules. [-]"""
-        return int(round(self.length / self.pitch))
+        return round(self.length / self.pitch)
 
     @property
     def end(self) -> float:
@@ -287,16 +287,16 @@ def smeared_line_type(line_type, section: BuoyancySection, water_density: float,
     ring = max(mod.diameter - d, 0.0)
     annulus = 0.25 * math.pi * max(mod.diameter**2 - d**2, 0.0)
     weight = line_type.submerged_weight(water_density, gravity) + mod.net_weight(water_density, gravity) / p
-    return line_type.model_copy(update=dict(
-        diameter=d_eq,
-        mass_per_length=line_type.mass_per_length + mod.mass / p,
-        weight_in_water=weight,
-        drag_normal=(cdn * d + mod.drag_normal * ring * mod.length / p) / d_eq,
-        drag_tangential=(math.pi * cdt * d + mod.drag_axial * annulus / p) / (math.pi * d_eq),
-        drag_law="morison", fairing_chord=None, strumming_amplitude=0.0,
-        added_mass_normal=(line_type.added_mass_normal * a + mod.added_mass * vol / p) / a_eq,
-        added_mass_tangential=(line_type.added_mass_tangential * a + mod.added_mass * vol / p) / a_eq,
-        name=f"{line_type.name or 'cable'} + {section.name or 'buoyancy'} (smeared)"))
+    return line_type.model_copy(update={
+        "diameter": d_eq,
+        "mass_per_length": line_type.mass_per_length + mod.mass / p,
+        "weight_in_water": weight,
+        "drag_normal": (cdn * d + mod.drag_normal * ring * mod.length / p) / d_eq,
+        "drag_tangential": (math.pi * cdt * d + mod.drag_axial * annulus / p) / (math.pi * d_eq),
+        "drag_law": "morison", "fairing_chord": None, "strumming_amplitude": 0.0,
+        "added_mass_normal": (line_type.added_mass_normal * a + mod.added_mass * vol / p) / a_eq,
+        "added_mass_tangential": (line_type.added_mass_tangential * a + mod.added_mass * vol / p) / a_eq,
+        "name": f"{line_type.name or 'cable'} + {section.name or 'buoyancy'} (smeared)"})
 
 
 def element_bending_stiffness(line, s, cable_ei, *, min_elements: int = 4):

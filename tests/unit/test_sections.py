@@ -77,10 +77,10 @@ def test_discrete_modules_are_attachments_at_their_centres_with_the_smeared_tota
     np.testing.assert_allclose(net.point_axial_drag_area[loaded], 0.8 * math.pi / 4 * (0.9**2 - 0.16**2),
                                rtol=1e-12)
     # totals over the section equal the smeared section's
-    smeared = _net(_line(sec.model_copy(update=dict(representation="smeared"))))
-    total = lambda n: float(np.sum(n.weight_per_length * n.length) + np.sum(n.point_weight))  # noqa: E731
+    smeared = _net(_line(sec.model_copy(update={"representation": "smeared"})))
+    total = lambda n: float(np.sum(n.weight_per_length * n.length) + np.sum(n.point_weight))
     assert total(net) == pytest.approx(total(smeared), rel=1e-12)
-    mass = lambda n: float(np.sum(n.mass_per_length * n.length) + np.sum(n.point_mass))  # noqa: E731
+    mass = lambda n: float(np.sum(n.mass_per_length * n.length) + np.sum(n.point_mass))
     assert mass(net) == pytest.approx(mass(smeared), rel=1e-12)
 
 
@@ -107,10 +107,10 @@ def test_discrete_and_smeared_sections_give_the_same_static_lazy_wave():
     base = sc.load_case(Path(__file__).parents[2] / "examples" / "lazy_wave_80m.yaml")
 
     def run(rep, h):
-        sec = base.line.sections[0].model_copy(update=dict(representation=rep))
-        return sc.run(base.model_copy(update=dict(
-            line=base.line.model_copy(update=dict(sections=(sec,))),
-            analysis=base.analysis.model_copy(update=dict(element_length=h)))))
+        sec = base.line.sections[0].model_copy(update={"representation": rep})
+        return sc.run(base.model_copy(update={
+            "line": base.line.model_copy(update={"sections": (sec,)}),
+            "analysis": base.analysis.model_copy(update={"element_length": h})}))
 
     smeared, discrete = run("smeared", 0.5), run("discrete", 0.5)
     s = smeared.s.values

@@ -103,6 +103,6 @@ def run_cabledyn(case, folder, element_length: float = 0.166, num_segs=None) -> 
     wall = time.perf_counter() - start
     table = np.loadtxt(folder / "out.static.out", skiprows=3)
     s, z, tension, kappa = table[:, 2], table[:, 5], table[:, 6], table[:, 7]
-    return dict(tension=float(tension[0]), anchor_tension=float(tension[-1]), curvature=float(kappa.max()),
-                sag_z=float(z[(s > 30.0) & (s < 68.114)].min()), hog_z=float(z[(s > 68.114) & (s < 118.114)].max()),
-                wall=wall)
+    return {"tension": float(tension[0]), "anchor_tension": float(tension[-1]), "curvature": float(kappa.max()),
+            "sag_z": float(z[(s > 30.0) & (s < 68.114)].min()),
+            "hog_z": float(z[(s > 68.114) & (s < 118.114)].max()), "wall": wall}

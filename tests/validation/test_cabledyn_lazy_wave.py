@@ -26,17 +26,17 @@ import pytest
 import seacable as sc
 
 sys.path.insert(0, str(Path(__file__).parent))
-import _cabledyn_peer  # noqa: E402
+import _cabledyn_peer
 
 CASE = _cabledyn_peer.CASE
 
-CABLEDYN = dict(tension=9320.17, anchor_tension=1326.90, curvature=0.096834, sag_z=-64.0653, hog_z=-52.4844)
-ORCAFLEX = dict(tension=9320.0, curvature=0.0968)   # 9.32 kN and 0.0968 1/m: three and three significant digits
+CABLEDYN = {"tension": 9320.17, "anchor_tension": 1326.90, "curvature": 0.096834, "sag_z": -64.0653, "hog_z": -52.4844}
+ORCAFLEX = {"tension": 9320.0, "curvature": 0.0968}   # 9.32 kN and 0.0968 1/m: three and three significant digits
 
 
 def _run(h):
     case = sc.load_case(CASE)
-    return sc.run(case.model_copy(update=dict(analysis=case.analysis.model_copy(update=dict(element_length=h)))))
+    return sc.run(case.model_copy(update={"analysis": case.analysis.model_copy(update={"element_length": h})}))
 
 
 def _shape(ds):

@@ -84,14 +84,14 @@ def test_equivalent_buoyancy_rewrites_diameter_and_mass_from_the_weight_in_water
 
 
 @pytest.mark.parametrize("extra, current, message", [
-    ("--------------------- END CONNECTIONS -------------------------------\nLineID End Stiffness EzX EzY EzZ\n"
-     "(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid -0.25 0.0 -0.97\n", "none", "Stiffness 'Rigid' (a clamped or sprung"),
-    ("--------------------- ATTACHMENTS ----------------------------------\nLineID ArcLength Mass Volume CdA Ca\n"
-     "(-) (m) (kg) (m^3) (m^2) (-)\n1 170.614:5.0:175.614 114.15 0.2297 0.78 1.0\n", "none",
+    (("--------------------- END CONNECTIONS -------------------------------\nLineID End Stiffness EzX EzY EzZ\n"
+     "(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid -0.25 0.0 -0.97\n"), "none", "Stiffness 'Rigid' (a clamped or sprung"),
+    (("--------------------- ATTACHMENTS ----------------------------------\nLineID ArcLength Mass Volume CdA Ca\n"
+     "(-) (m) (kg) (m^3) (m^2) (-)\n1 170.614:5.0:175.614 114.15 0.2297 0.78 1.0\n"), "none",
      "arc length 170.614 m lies outside line 1 (0 to 170.215 m)"),
     ("", "uniform 0.5 0.0 0.0", "CableDyn's option current 'uniform 0.5 0.0 0.0' is not read"),
-    ("--------------------- EQUIVALENT BUOYANCY -----------------------------\nLineType Diam SubmergedWeightNpm\n"
-     "(-) (m) (N/m)\nbuoy 0.01 -90.0\n", "none", "needs a mass in air of"),
+    (("--------------------- EQUIVALENT BUOYANCY -----------------------------\nLineType Diam SubmergedWeightNpm\n"
+     "(-) (m) (N/m)\nbuoy 0.01 -90.0\n"), "none", "needs a mass in air of"),
 ])
 def test_what_seacable_does_not_read_is_refused_by_name(extra, current, message):
     with pytest.raises(InputError) as err:

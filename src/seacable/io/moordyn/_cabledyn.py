@@ -40,7 +40,7 @@ def is_cabledyn(sections) -> bool:
 
 def read_cable_sections(rd, section, types) -> dict[int, tuple[tuple[str, float, int], ...]]:
     """The SECTIONS table: per line ID, its ``(line type, length [m], elements)`` from End A to End B."""
-    names, rows = _table(rd, section)
+    _names, rows = _table(rd, section)
     out: dict[int, list] = {}
     for lineno, t in rows:
         rd.columns(lineno, t, 4, "SECTIONS", "LineID LineType Length NumSegs")
@@ -132,7 +132,7 @@ def read_attachments(rd, section, lines):
             if not pitch > 0 or first > last:
                 raise rd.error(lineno, f"ATTACHMENTS series {t[1]!r} needs a pitch > 0 and first <= last. "
                                        "Suggested fix: write first:pitch:last in metres.")
-            count = int(math.floor((last - first) / pitch + 1e-9)) + 1
+            count = math.floor((last - first) / pitch + 1e-9) + 1
             arcs = [first + k * pitch for k in range(count)]
         else:
             arcs = values

@@ -316,10 +316,10 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                                     for name, length, k in ln.sections)) if ln.sections
                 else Line.single(types[ln.line_type], ln.length))
         if ln.attachments:  # CableDyn's ATTACHMENTS
-            line = line.model_copy(update=dict(attachments=tuple(sorted(
+            line = line.model_copy(update={"attachments": tuple(sorted(
                 (PointMass(s=s, mass=m, volume=v, drag_area=cda, axial_drag_area=cdax,
                            added_mass=ca * md.water_density * v, kind="float") for s, m, v, cda, ca, cdax in
-                 ln.attachments), key=lambda a: a.s))))
+                 ln.attachments), key=lambda a: a.s))})
         lines[f"line{ln.id}"] = SystemLine(line=line, end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
                                            n_elements=ln.n_segments)
 

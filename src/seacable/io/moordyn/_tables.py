@@ -405,9 +405,9 @@ def _read_cable_lines(rd, rows, types, points, rods, cable_sections, section) ->
             if _integer(rd, lineno, t[0], "line ID") in cable_sections:
                 raise rd.error(lineno, f"line {t[0]} has both a MoorDyn LINES row (type and length) and SECTIONS rows. "
                                        "Suggested fix: give its sections in SECTIONS only ('ID NodeA NodeB Outputs').")
-            out.extend(_read_lines(rd, (None, lineno, "LINES", [(lineno, "ID type AttachA AttachB UnstrLen "
-                                                                   "NumSegs outputs"), (lineno, "(-)"),
-                                                                  (lineno, " ".join(t))]), types, points, rods))
+            stock = (None, lineno, "LINES", [(lineno, "ID type AttachA AttachB UnstrLen NumSegs outputs"),
+                                             (lineno, "(-)"), (lineno, " ".join(t))])
+            out.extend(_read_lines(rd, stock, types, points, rods))
             seen[out[-1].id] = lineno
             continue
         rd.columns(lineno, t, 3, "LINES", "ID NodeA NodeB Outputs (CableDyn, with SECTIONS)")
