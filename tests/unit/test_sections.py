@@ -199,3 +199,11 @@ def test_mesh_too_coarse_for_the_stiffener_is_refused_by_validate():
                    analysis=sc.MooringStaticAnalysis(anchor=(0.0, -80.0), fairlead=(120.0, -14.0), element_length=1.0))
     with pytest.raises(InputError, match="too coarse for the bend stiffener"):
         sc.check(case)
+
+
+def test_system_lines_refuse_sections():
+    from seacable.system.model import SystemLine
+
+    line = _line(BuoyancySection(start=50.0, length=40.0, pitch=4.0, module=MODULE))
+    with pytest.raises(InputError, match="a system line takes no 'sections'"):
+        SystemLine(line=line, end_a="a", end_b="b")
