@@ -82,6 +82,19 @@ def test_discrete_modules_are_attachments_at_their_centres_with_the_smeared_tota
     assert total(net) == pytest.approx(total(smeared), rel=1e-12)
     mass = lambda n: float(np.sum(n.mass_per_length * n.length) + np.sum(n.point_mass))
     assert mass(net) == pytest.approx(mass(smeared), rel=1e-12)
+    # and so are the added mass and the drag areas across and along (the dynamics see the same modules)
+    def added(n):
+        return float(np.sum(n.can * RHO * math.pi / 4 * n.diameter**2 * n.length) + np.sum(n.point_added_mass))
+
+    def across(n):
+        return float(np.sum(n.cdn * n.diameter * n.length) + np.sum(n.point_drag_area))
+
+    def along(n):
+        axial = n.point_drag_area if n.point_axial_drag_area is None else n.point_axial_drag_area
+        return float(np.sum(math.pi * n.cdt * n.diameter * n.length) + np.sum(axial))
+
+    for quantity in (added, across, along):
+        assert quantity(net) == pytest.approx(quantity(smeared), rel=1e-12), quantity.__name__
 
 
 def _static(line, anchor, fairlead, depth=200.0, h=1.0):
