@@ -39,7 +39,7 @@ from .laying.inputs import (
     read_lay_table,
 )
 from .laying.route import Route
-from .line import Lifting, Line, LineType
+from .line import Lifting, Line, LineType, resolve_sections
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
 from .towed.vessel import VesselPath
@@ -790,6 +790,14 @@ class Case(Model):
             if missing:
                 raise ValueError(f"analysis '{a.type}' needs an axial_stiffness (EA, N) on every line type; "
                                  f"line.segments {missing} have none. Suggested fix: add 'axial_stiffness'.")
+        if self.line.sections:
+            if not isinstance(a, _Mooring):
+                raise ValueError(f"analysis '{a.type}' does not take line.sections (buoyancy sections, bend "
+                                 "stiffeners): the finite-element line of 'mooring_static', 'mooring_pushover' and "
+                                 "'mooring_dynamic' does. Suggested fix: use one of those, or give the buoyancy as "
+                                 "segments and attachments.")
+            # a line the modules would float is refused here, before anything runs (the same check the model makes)
+            resolve_sections(self.line, self.environment.water_density, self.environment.gravity)
         if isinstance(a, TowlineDynamicAnalysis):
             if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
                 raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "

@@ -9,16 +9,19 @@ given unstretched arc lengths from end A.
 
 from __future__ import annotations
 
+import itertools
 import math
 import warnings
 from typing import Literal
 
-from pydantic import Field, field_validator, model_validator
+import numpy as np
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from ._model import Model, quantity
-from .errors import SeacableWarning
+from .errors import InputError, SeacableWarning
+from .sections import BendStiffener, BuoyancySection, Section, smeared_line_type
 
-__all__ = ["Line", "LineType", "PointMass", "Segment"]
+__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections"]
 
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81
@@ -323,10 +326,23 @@ class Line(Model):
         Segments from end A to end B.
     attachments
         Point masses and buoys; their ``s`` must lie on the line.
+    sections
+        Buoyancy sections and bend stiffeners laid over the segments (:mod:`seacable.sections`): buoyancy
+        sections inside the line and apart from each other, a stiffener no longer than the segment at its end.
+        The models that take segments and attachments take the equivalent line :func:`resolve_sections` gives.
     """
 
     segments: tuple[Segment, ...] = Field(min_length=1)
     attachments: tuple[PointMass, ...] = ()
+    sections: tuple[Section, ...] = ()
+
+    @model_serializer(mode="wrap")
+    def _without_empty_sections(self, handler):
+        # a line without sections is written as before sections existed (a result's case attribute unchanged)
+        data = handler(self)
+        if not self.sections and isinstance(data, dict):
+            data.pop("sections", None)
+        return data
 
     @classmethod
     def single(cls, line_type: LineType, length: float, **kwargs) -> Line:
@@ -345,6 +361,34 @@ class Line(Model):
             if a.s > total * (1 + 1e-12):
                 raise ValueError(f"attachments[{i}].s must be <= the line length {total:g} m, "
                                  f"got {a.s:g} m. Suggested fix: give s as the arc length from end A.")
+        return self
+
+    @model_validator(mode="after")
+    def _sections_on_line(self) -> Line:
+        total = self.length
+        spans = []
+        for i, sec in enumerate(self.sections):
+            if isinstance(sec, BendStiffener):
+                sec.check_on(self)
+                continue
+            if sec.length > total * (1 + 1e-12):
+                raise ValueError(f"sections[{i}] (buoyancy) is {sec.length:g} m long, longer than the line "
+                                 f"({total:g} m). Suggested fix: check the section's length and pitch (m).")
+            if sec.end > total * (1 + 1e-12):
+                raise ValueError(f"sections[{i}] (buoyancy) runs from s = {sec.start:g} m to {sec.end:g} m, beyond "
+                                 f"the end of the line at {total:g} m. Suggested fix: start it at s <= "
+                                 f"{total - sec.length:g} m (the arc length from end A).")
+            spans.append((sec.start, sec.end, i))
+        spans.sort()
+        for (a0, a1, i), (b0, b1, j) in itertools.pairwise(spans):
+            if b0 < a1 - 1e-9 * total:
+                raise ValueError(f"sections[{i}] ({a0:g}-{a1:g} m) and sections[{j}] ({b0:g}-{b1:g} m) overlap. "
+                                 "Suggested fix: one buoyancy section per stretch of cable; give the second "
+                                 f"start >= {a1:g} m.")
+        ends = {sec.end for sec in self.sections if isinstance(sec, BendStiffener)}
+        if len(ends) < sum(isinstance(sec, BendStiffener) for sec in self.sections):
+            raise ValueError("two bend stiffeners at the same end. Suggested fix: give one, its EI table the "
+                             "combined stiffness.")
         return self
 
     @property
@@ -368,3 +412,85 @@ class Line(Model):
     def point_loads(self, water_density: float = _RHO, gravity: float = _G) -> tuple[tuple[float, float], ...]:
         """``(s, net weight)`` of each attachment. [m, N]"""
         return tuple((a.s, a.net_weight(water_density, gravity)) for a in self.attachments)
+
+
+def module_attachments(line_type, section: BuoyancySection, water_density: float, gravity: float):
+    """The modules of a section as point attachments at their centres, each with its own drag and added mass.
+
+    Each carries the module's mass, volume and net weight, the drag area ``C_d,m (D_m - d) L_m`` across and
+    ``C_a,m pi / 4 (D_m^2 - d^2)`` along the line (over the cable's own drag, which the bare cable keeps) and
+    the added mass ``C_m rho V_m``.
+    """
+    mod, d = section.module, line_type.diameter
+    vol = mod.displaced_volume(water_density, gravity)
+    return tuple(PointMass(
+        s=float(s), mass=mod.mass, volume=vol, weight_in_water=mod.net_weight(water_density, gravity),
+        drag_area=mod.drag_normal * max(mod.diameter - d, 0.0) * mod.length,
+        axial_drag_area=mod.drag_axial * 0.25 * math.pi * max(mod.diameter**2 - d**2, 0.0),
+        added_mass=mod.added_mass * water_density * vol, kind="float",
+        name=f"{section.name or 'buoyancy'} module {k + 1}") for k, s in enumerate(section.module_centres()))
+
+
+def _split_segment(seg, cuts):
+    """``seg`` cut at the local arc lengths ``cuts`` (0 < cut < length), its elements shared by length."""
+    edges = [0.0, *sorted(cuts), seg.length]
+    pieces = []
+    for lo, hi in itertools.pairwise(edges):
+        n = None if seg.n_elements is None else max(1, round(seg.n_elements * (hi - lo) / seg.length))
+        pieces.append(seg.model_copy(update={"length": hi - lo, "n_elements": n}))
+    return pieces
+
+
+def resolve_sections(line, water_density: float, gravity: float):
+    """The equivalent line of ``line`` without sections, for the models that take segments and attachments.
+
+    Smeared buoyancy sections become segments of their own (:func:`smeared_line_type` of the cable under
+    them), discrete ones attachments (:func:`module_attachments`); a segment is cut at the ends of each
+    buoyancy section and at each stiffener's tip, so that nodes lie there. The stiffeners' EI is not in the
+    segments: a discretised model adds it per element (:func:`element_bending_stiffness`). A line without
+    sections is returned as it is.
+
+    Raises :class:`~seacable.errors.InputError` when the whole line, modules included, would float.
+    """
+    if not line.sections:
+        return line
+    ends = line.segment_ends
+    total = line.length
+    segments, attachments = [], list(line.attachments)
+    for k, seg in enumerate(line.segments):
+        s0, s1 = ends[k], ends[k + 1]
+        cuts = set()
+        for sec in line.sections:
+            if isinstance(sec, BuoyancySection):
+                cuts.update(c for c in (sec.start, sec.end) if s0 + 1e-9 < c < s1 - 1e-9)
+            else:
+                tip = sec.length if sec.end == "A" else total - sec.length
+                if s0 + 1e-9 < tip < s1 - 1e-9:
+                    cuts.add(tip)
+        for piece, lo in zip(_split_segment(seg, [c - s0 for c in cuts]), sorted({s0, *cuts})):
+            mid = lo + 0.5 * piece.length
+            for sec in line.sections:
+                if isinstance(sec, BuoyancySection) and sec.start <= mid <= sec.end and \
+                        sec.representation == "smeared":
+                    piece = piece.model_copy(update={"line_type": smeared_line_type(
+                        piece.line_type, sec, water_density, gravity)})
+            segments.append(piece)
+    for sec in line.sections:
+        if isinstance(sec, BuoyancySection) and sec.representation == "discrete":
+            mid = 0.5 * (sec.start + sec.end)
+            k = min(int(np.searchsorted(ends, mid, side="right")) - 1, len(line.segments) - 1)
+            attachments += module_attachments(line.segments[k].line_type, sec, water_density, gravity)
+    out = type(line)(segments=tuple(segments), attachments=tuple(attachments))
+    weight = sum(seg.length * seg.line_type.submerged_weight(water_density, gravity) for seg in out.segments) \
+        + sum(a.net_weight(water_density, gravity) for a in out.attachments)
+    scale = sum(seg.length * abs(seg.line_type.submerged_weight(water_density, gravity)) for seg in out.segments) \
+        + sum(abs(a.net_weight(water_density, gravity)) for a in out.attachments)
+    if weight < -1e-9 * scale:  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
+        lift = sum(-sec.count * sec.module.net_weight(water_density, gravity)
+                   for sec in line.sections if isinstance(sec, BuoyancySection))
+        raise InputError(
+            f"the line's buoyancy sections would float the whole cable to the surface: its net weight in water, "
+            f"modules included, is {weight:.6g} N (the modules lift {lift:.6g} N), {-weight:.6g} N short of "
+            "sinking. Suggested fix: fewer or smaller modules (a longer pitch or a shorter section), or check "
+            "the modules' net buoyancy (N, per module) and mass (kg).")
+    return out

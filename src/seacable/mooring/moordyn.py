@@ -105,39 +105,48 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     bending, visco = [], []  # per element: EI; (EA_Dc, EA_D_Lm, BA_D) of a viscoelastic line type
     syrope = []  # per element: (form, k1, k2, Tmax0) of a Syrope rope's working curves, zeros otherwise
     for li, line in enumerate(md.lines):
-        lt = md.line_types[line.line_type]
-        wc = getattr(lt, "syrope", None) if lt.tension_strain is not None else None
-        tmax0 = getattr(md, "syrope_ic", {}).get(line.id, (0.0, 0.0))[0]
         A, B = points[line.point_a], points[line.point_b]
         L = _line_length(md, line, A, B)
+        # the line's pieces: (line type, length, elements); several for a CableDyn line of SECTIONS
+        pieces = [(md.line_types[t], length, k) for t, length, k in line.sections] or \
+            [(md.line_types[line.line_type], L, line.n_segments)]
+        tmax0 = getattr(md, "syrope_ic", {}).get(line.id, (0.0, 0.0))[0]
         n = line.n_segments
-        area = math.pi * lt.diameter**2 / 4
-        w = (lt.mass_per_length - rho * area) * g
-        s = np.linspace(0.0, L, n + 1)
-        # the catenary is solved from the lower end up
+        ws = [(lt.mass_per_length - rho * (math.pi * lt.diameter**2 / 4)) * g for lt, _, _ in pieces]
+        if len(pieces) == 1:
+            s = np.linspace(0.0, L, n + 1)
+        else:
+            ends = np.cumsum([0.0] + [length for _, length, _ in pieces])
+            s = np.concatenate([np.linspace(ends[k], ends[k + 1], p[2] + 1)[:-1] for k, p in enumerate(pieces)]
+                               + [[L]])
+        lengths, eas = [length for _, length, _ in pieces], [lt.axial_stiffness for lt, _, _ in pieces]
+        # the catenary is solved from the lower end up (a sectioned line's buoyant sections in it: a lazy wave)
         up = A.position[2] <= B.position[2]
-        guess = (catenary_positions(A.position, B.position, s, [L], [w], [lt.axial_stiffness], depth=depth)
-                 if up else catenary_positions(B.position, A.position, L - s, [L], [w], [lt.axial_stiffness],
-                                               depth=depth))
+        cable = len(pieces) > 1
+        guess = (catenary_positions(A.position, B.position, s, lengths, ws, eas, depth=depth, buoyant=cable)
+                 if up else catenary_positions(B.position, A.position, L - s, lengths[::-1], ws[::-1], eas[::-1],
+                                               depth=depth, buoyant=cable))
         first = len(pos)
         pos.extend(guess[1:-1])
         kind.extend([FREE] * (n - 1))
-        arc.extend(np.linspace(0, L, n + 1)[1:-1])
+        arc.extend(s[1:-1])
         ids = [node_of[A.id], *range(first, first + n - 1), node_of[B.id]]
         line_nodes.append(np.array(ids, np.int64))
-        seg = L / n
-        c = moordyn_axial_damping(lt.axial_damping, lt.axial_stiffness, lt.mass_per_length, seg)
-        # the line's n elements share their line type's values: each list extended by n copies at once
-        dyn = lt.dynamic_stiffness
         elements.extend(itertools.pairwise(ids))
-        props.extend([(seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
-                       lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential)] * n)
         element_line.extend([li] * n)
-        tables.extend([lt.tension_strain] * n)
-        bending.extend([lt.bending_stiffness] * n)
-        visco.extend([(dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
-                      if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0)] * n)
-        syrope.extend([(_WC_FORM[wc[0]], wc[1], wc[2], tmax0) if wc is not None else (0.0, 0.0, 0.0, 0.0)] * n)
+        for (lt, length, k), w in zip(pieces, ws):
+            wc = getattr(lt, "syrope", None) if lt.tension_strain is not None else None
+            seg = length / k
+            c = moordyn_axial_damping(lt.axial_damping, lt.axial_stiffness, lt.mass_per_length, seg)
+            # the piece's k elements share their line type's values: each list extended by k copies at once
+            dyn = lt.dynamic_stiffness
+            props.extend([(seg, lt.axial_stiffness, c, lt.mass_per_length, w, lt.diameter, lt.drag_normal,
+                           lt.drag_tangential, lt.added_mass_normal, lt.added_mass_tangential)] * k)
+            tables.extend([lt.tension_strain] * k)
+            bending.extend([lt.bending_stiffness] * k)
+            visco.extend([(dyn[0], dyn[1] if len(dyn) > 1 else 0.0, lt.dynamic_damping or 0.0)
+                          if dyn is not None and lt.tension_strain is None else (0.0, 0.0, 0.0)] * k)
+            syrope.extend([(_WC_FORM[wc[0]], wc[1], wc[2], tmax0) if wc is not None else (0.0, 0.0, 0.0, 0.0)] * k)
     special = [lt.name for lt in md.line_types.values() if getattr(lt, "syrope", None) is not None]
     for name in special:
         warnings.warn(f"line type {name} is a Syrope rope: its tension follows its working curves quasi-statically "
@@ -153,10 +162,25 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
     def pad(a):
         return np.concatenate((a, np.zeros(extra)))
 
+    pm, pa, pw, pv, pd = (pad(a) for a in (pm, pa, pw, pv, pd))
+    pda = pd.copy()
+    for li, line in enumerate(md.lines):  # CableDyn's ATTACHMENTS: at the node nearest each one's arc length
+        nodes = line_nodes[li]
+        s_nodes = np.array([0.0, *np.asarray(arc)[nodes[1:-1]], line.length]) if len(nodes) > 2 else None
+        for s, mass, volume, cda, ca, cdax in line.attachments:
+            i = nodes[int(np.argmin(np.abs(s_nodes - s)))] if s_nodes is not None else nodes[0]
+            pm[i] += mass
+            pv[i] += volume
+            pw[i] += (mass - rho * volume) * g
+            pa[i] += ca * rho * volume
+            pd[i] += cda
+            pda[i] += cdax
+
     net = Network(position=np.array(pos), kind=np.array(kind, np.int64),
                   channel=np.concatenate((channel, -np.ones(extra, int))),
-                  point_mass=pad(pm), point_added_mass=pad(pa), point_weight=pad(pw), point_volume=pad(pv),
-                  point_drag_area=pad(pd), elements=np.array(elements, np.int64), length=P[:, 0],
+                  point_mass=pm, point_added_mass=pa, point_weight=pw, point_volume=pv,
+                  point_drag_area=pd, point_axial_drag_area=None if np.array_equal(pda, pd) else pda,
+                  elements=np.array(elements, np.int64), length=P[:, 0],
                   axial_stiffness=P[:, 1], axial_damping=P[:, 2], mass_per_length=P[:, 3],
                   weight_per_length=P[:, 4], diameter=P[:, 5], cdn=P[:, 6], cdt=P[:, 7], can=P[:, 8], cat=P[:, 9],
                   element_line=np.array(element_line, np.int64), line_nodes=tuple(line_nodes),

@@ -18,7 +18,8 @@ from dataclasses import dataclass, field, fields
 import numpy as np
 
 from ..errors import InputError
-from ..line import Line
+from ..line import Line, resolve_sections
+from ..sections import element_bending_stiffness
 
 __all__ = [
     "FIXED",
@@ -232,7 +233,8 @@ def element_damping(axial_stiffness, mass_per_length, length, ratio=0.0, stiffne
     return ratio * L * np.sqrt(ea * m) + stiffness_proportional * ea
 
 
-def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_loads=(), depth=None, slope=0.0):
+def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_loads=(), depth=None, slope=0.0,
+                       buoyant=False):
     """A start shape for the line from ``a`` to ``b``: positions at unstretched arc lengths ``s`` (from ``a``).
 
     When ``b`` is beside and above ``a``, the multi-segment catenary of
@@ -243,6 +245,10 @@ def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_load
     coincide. Otherwise (ends one above the other, the catenary has no solution) the start is
     :func:`slack_positions`: straight when the line is shorter than the chord, else a V hanging
     below the chord. Returns (len(s), 3) positions. [m]
+
+    ``buoyant``: try the catenary also when some segments are buoyant (a lazy wave: the multi-segment catenary
+    takes buoyant segments), falling back on the slack start when it has no solution; without it (the
+    default, as before sections existed) a line with a buoyant segment starts slack.
     """
     from ..errors import SeacableError
     from ..statics.multisegment import line_equilibrium
@@ -252,7 +258,7 @@ def catenary_positions(a, b, s, lengths, weights, axial_stiffness, *, point_load
     total = float(np.sum(lengths))
     d = b - a
     h = math.hypot(d[0], d[1])
-    if h <= 1e-6 * total or d[2] <= 0 or min(weights) <= 0:
+    if h <= 1e-6 * total or d[2] <= 0 or (min(weights) <= 0 and not buoyant):
         return slack_positions(a, b, s, total, depth=depth, slope=slope)
     on_seabed = depth is not None and abs(a[2] + depth) < 1e-6 * depth
     try:
@@ -352,7 +358,13 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         ``"prescribed"`` (a fairlead moved by channel 0) or ``"free"`` (a buoy or a free end).
     initial
         (n, 3) initial node positions; default a straight line from anchor to fairlead.
+
+    A line with sections (``line.sections``) is first replaced by its equivalent line
+    (:func:`seacable.line.resolve_sections`: smeared buoyancy as segments of their own, discrete modules as
+    attachments) and its bend stiffeners' EI added per element at the elements' mid arc lengths
+    (:func:`seacable.sections.element_bending_stiffness`), so that the kernel takes them unchanged.
     """
+    sectioned, line = line, resolve_sections(line, water_density, gravity)
     s = node_arc_lengths(line, n_elements, element_length)
     n = len(s)
     ends = np.asarray(line.segment_ends)
@@ -405,7 +417,8 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
-        bending_stiffness=line_bending(types), element_viscoelastic=line_viscoelastic(types),
+        bending_stiffness=element_bending_stiffness(sectioned, s, line_bending(types)),
+        element_viscoelastic=line_viscoelastic(types),
         point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None)
 
 

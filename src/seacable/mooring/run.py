@@ -85,7 +85,7 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
                             stiffness_proportional=beta, end_b=end_b)
     lengths, weights, ea, loads = line_arrays(case)
     start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
-                               depth=env.depth, slope=env.seabed.slope)
+                               depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
     return MooringModel(net.replace(position=start), water_of(case))
 
 

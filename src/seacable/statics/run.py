@@ -17,6 +17,7 @@ import numpy as np
 
 from ..case import Case, LayingTheoryAnalysis, PushoverAnalysis, StaticAnalysis, TowedSteadyAnalysis
 from ..errors import InputError, NoSolutionError, SeacableWarning
+from ..line import resolve_sections
 
 __all__ = ["line_arrays", "run_laying_theory", "run_pushover", "run_static", "run_towed_steady",
            "solve_laying_theory", "solve_pushover", "solve_static", "solve_towed_steady"]
@@ -31,6 +32,9 @@ REF_001 = "Paper 001: 2-D laying simulation of a subsea cable (seeds/001), secti
 def line_arrays(case: Case):
     """Per-segment arrays of a case's line: lengths, weights, EA, and the point loads.
 
+    Of the equivalent line when the line has sections (:func:`seacable.line.resolve_sections`: smeared buoyancy
+    sections as segments of their own, discrete modules as point loads).
+
     Returns
     -------
     lengths, weights, axial_stiffness : numpy.ndarray
@@ -38,8 +42,9 @@ def line_arrays(case: Case):
     point_loads : tuple of (s, net weight)
         [m], [N].
     """
-    env, line = case.environment, case.line
+    env = case.environment
     rho, g = env.water_density, env.gravity
+    line = resolve_sections(case.line, rho, g)
     lengths = np.array([seg.length for seg in line.segments])
     weights = np.array(line.weights(rho, g))
     ea = np.array([seg.line_type.effective_axial_stiffness() for seg in line.segments])

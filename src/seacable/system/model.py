@@ -387,6 +387,17 @@ class SystemLine(Model):
                              "line at two different points.")
         return self
 
+    @model_validator(mode="after")
+    def _no_sections(self):
+        # the system statics solve catenaries of the segments and attachments: a line's sections (buoyancy modules,
+        # bend stiffeners) are refused rather than left out
+        if self.line.sections:
+            raise ValueError(f"a system line takes no 'sections' (buoyancy sections, bend stiffeners), got "
+                             f"{len(self.line.sections)}: they run in the single-line finite-element analyses "
+                             "(mooring_static, mooring_pushover, mooring_dynamic). Suggested fix: run the cable as a "
+                             "single-line case, or give its buoyancy as segments and attachments.")
+        return self
+
 
 class MooringSystem(Model):
     """Points, bodies and lines; names are the keys of each mapping.

@@ -175,7 +175,7 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
         A deck the data model refuses (a line end on a point that does not exist, ...).
     """
     from ...environment import Seabed, SystemEnvironment
-    from ...line import Line, LineType
+    from ...line import Line, LineType, PointMass, Segment
     from ...system.model import Body, MooringSystem, SystemLine, SystemPoint
 
     label = md.path or "MoorDyn file"
@@ -311,8 +311,16 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                       SeacableWarning, stacklevel=2)
     lines = {}
     for ln in md.lines:
-        lines[f"line{ln.id}"] = SystemLine(line=Line.single(types[ln.line_type], ln.length),
-                                           end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
+        # a CableDyn line of SECTIONS: its segments, each with its element count
+        line = (Line(segments=tuple(Segment(line_type=types[name], length=length, n_elements=k)
+                                    for name, length, k in ln.sections)) if ln.sections
+                else Line.single(types[ln.line_type], ln.length))
+        if ln.attachments:  # CableDyn's ATTACHMENTS
+            line = line.model_copy(update={"attachments": tuple(sorted(
+                (PointMass(s=s, mass=m, volume=v, drag_area=cda, axial_drag_area=cdax,
+                           added_mass=ca * md.water_density * v, kind="float") for s, m, v, cda, ca, cdax in
+                 ln.attachments), key=lambda a: a.s))})
+        lines[f"line{ln.id}"] = SystemLine(line=line, end_a=end(ln.point_a, ln.rod_a), end_b=end(ln.point_b, ln.rod_b),
                                            n_elements=ln.n_segments)
 
     body_force = {name: np.zeros(6) for name in spec}

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from ..._model import suggest
 from ...errors import InputError
+from . import _cabledyn
 from ._options import _fmt_value, _option_notes, _read_options, _read_outputs
 from ._records import MoorDynInput, _lookup
 from ._sections import (
@@ -75,6 +76,12 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
     text, path, label = _load(path_or_text, name)
     rd = _Reader(label, Path(path).parent if path else None)
     title, echo, sections = _split_sections(rd, text)
+    cable = _cabledyn.is_cabledyn(sections)  # CableDyn's cable extensions (SECTIONS and the rest)
+    for kind, header in (("equivalent_buoyancy", "EQUIVALENT BUOYANCY"), ("end_connections", "END CONNECTIONS")):
+        if kind in sections and not cable and _table(rd, sections[kind])[1]:
+            raise rd.error(sections[kind][1], f"a {header} section (CableDyn's) in a deck without a SECTIONS table. "
+                                              "Suggested fix: give the lines' sections in SECTIONS, as CableDyn's "
+                                              "cable decks do.")
     for kind, header in _UNSUPPORTED.items():
         if kind in sections:
             _, rows = _table(rd, sections[kind])
@@ -95,11 +102,11 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
             raise rd.error(None, f"the file must have a {header} section (a line of dashes containing "
                                  f"'{header}'), found none. Suggested fix: check that this is a MoorDyn "
                                  "input file and that the section header is spelled as MoorDyn expects.")
-    types = _read_line_types(rd, sections["line_types"]) if "line_types" in sections else {}
+    types = _read_line_types(rd, sections["line_types"], cable) if "line_types" in sections else {}
     if "points" in sections and (sections["points"][3] or not structures):
         _, point_rows = _table(rd, sections["points"])
         if point_rows or not structures:
-            points, point_lines = _read_points(rd, sections["points"])
+            points, point_lines = _read_points(rd, sections["points"], short=cable)
         else:
             points, point_lines = [], {}
     else:
@@ -110,9 +117,12 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
             raise rd.error(point_lines[p.id], f"point {p.id} is on body {p.body}, which is not in the BODIES "
                                               f"section (IDs {', '.join(str(b) for b in body_ids) or 'none'}). "
                                               "Suggested fix: add the body or correct the attachment.")
-    lines = (_read_lines(rd, sections["lines"], types, by_id, rod_ids)
+    cable_sections = _cabledyn.read_cable_sections(rd, sections["cable_sections"], types) if cable else None
+    lines = (_read_lines(rd, sections["lines"], types, by_id, rod_ids, cable_sections)
              if "lines" in sections and (sections["lines"][3] or not structures)
              and (_table(rd, sections["lines"])[1] or not structures) else [])
+    if "attachments" in sections:
+        lines = _cabledyn.read_attachments(rd, sections["attachments"], lines)
     failures = _read_failures(rd, sections["failure"], by_id, rod_ids, lines) if "failure" in sections else []
     loads = (_read_external_loads(rd, sections["external_loads"], by_id, body_ids, rod_ids)
              if "external_loads" in sections else [])
@@ -143,6 +153,8 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
             tmax, tmean = (rd.number(lineno, v, f"SYROPE IC {c}", "N") for v, c in zip(t[1:3], ("Tmax0", "Tmean0")))
             for token in t[0].split(","):
                 syrope_ic[_integer(rd, lineno, token, "SYROPE IC line")] = (tmax, tmean)
+    if cable and "options" in sections:
+        sections["options"] = _cabledyn.cabledyn_options(rd, sections["options"])
     options = _read_options(rd, sections["options"]) if "options" in sections else {}
     if echo is not None:
         options.setdefault("Echo", echo)
@@ -155,6 +167,11 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
                           rod_types=rod_types, bodies=tuple(bodies), rods=tuple(rods), failures=tuple(failures),
                           layout="v1" if v1 else "v2", external_loads=tuple(loads),
                           syrope_ic=syrope_ic)
+    if "end_connections" in sections:
+        _cabledyn.check_end_connections(rd, sections["end_connections"], {ln.id for ln in lines})
+    if "equivalent_buoyancy" in sections:
+        result = dataclasses.replace(result, line_types=_cabledyn.apply_equivalent_buoyancy(
+            rd, sections["equivalent_buoyancy"], types, result.water_density, result.gravity))
     given = result.given_water_depth
     if given is not None:
         for p in points:

@@ -165,6 +165,11 @@ class MoorDynLine:
     outputs: str  # MoorDyn's output flags, e.g. 'pt' or '-'
     rod_a: tuple[int, str] | None = None  # end A on a rod end (rod ID, 'A' or 'B'); point_a is then None
     rod_b: tuple[int, str] | None = None  # end B on a rod end (rod ID, 'A' or 'B'); point_b is then None
+    # CableDyn's SECTIONS: (line type, length [m], elements) from end A to end B; line_type is then the first's,
+    # length and n_segments their sums; () for a MoorDyn line of one type
+    sections: tuple[tuple[str, float, int], ...] = ()
+    # CableDyn's ATTACHMENTS: (s [m] from end A, mass [kg], volume [m^3], CdA [m^2], Ca [-], CdAx [m^2])
+    attachments: tuple[tuple[float, float, float, float, float, float], ...] = ()
 
 
 _DEPTH = ("WtrDpth", "depth", "WaterDepth")

@@ -13,6 +13,11 @@ from ..._text import read_text_file
 from ...errors import InputError, SeacableWarning
 
 _SECTION_KEYS = (  # order matters: 'LINE TYPES' before 'LINES', 'ROD TYPES' before 'RODS'
+    # CableDyn's cable extensions (seacable.io.moordyn._cabledyn); 'BUOYANCY SECTIONS' before 'SECTIONS'
+    ("equivalent_buoyancy", ("EQUIVALENT BUOYANCY", "EQUIVALENT SECTIONS", "BUOYANCY SECTIONS")),
+    ("end_connections", ("END CONNECTION",)),
+    ("cable_sections", ("SECTIONS",)),
+    ("attachments", ("LINE ATTACHMENTS", "ATTACHMENTS", "CLUMPS")),
     ("line_types", ("LINE DICTIONARY", "LINE TYPES")),
     ("rod_types", ("ROD DICTIONARY", "ROD TYPES")),
     ("bodies", ("BODIES", "BODY LIST", "BODY PROPERTIES")),
@@ -115,6 +120,8 @@ def _section_kind(line: str) -> str | None:
 
 def _is_end(line: str) -> bool:
     stripped = line.strip().upper()
+    if "---" in line and "END CONNECTION" in stripped:  # CableDyn's END CONNECTIONS section, not the end
+        return False
     if stripped == "END" or stripped.startswith("END "):
         return True
     return "---" in line and ("NEED THIS LINE" in stripped or _END.search(stripped) is not None)

@@ -138,13 +138,18 @@ def _empty(rd, section, header, row):
                                f"Suggested fix: add a row '{row}' after its column-names and units lines.")
 
 
-def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
+def _read_line_types(rd, section, cable=False) -> dict[str, MoorDynLineType]:
     names, rows = _table(rd, section)
     lowered = [n.lower() for n in names]
-    v1 = "ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(names) == 9)
+    # a CableDyn deck's LINE TYPES header selects its column order (its doc/driver_format.md): its decks write
+    # Cd_n Cd_t Ca_n Ca_t after EI, MoorDyn's order being Cd Ca CdAx CaAx
+    swapped = cable and [_key(n) for n in names[6:10]] == ["cdn", "cdt", "can", "cat"]
+    v1 = not swapped and "ei" not in lowered and ("can" in lowered or "cdn" in lowered or len(names) == 9)
     layout = ("name d m EA BA/-zeta Can Cat Cdn Cdt" if v1
+              else "name d m EA BA EI Cd_n Cd_t Ca_n Ca_t" if swapped
               else "name d m EA BA/-zeta EI Cd Ca CdAx CaAx")
-    _check_column_order(rd, section, names, "line_types_v1" if v1 else "line_types")
+    if not swapped:
+        _check_column_order(rd, section, names, "line_types_v1" if v1 else "line_types")
     if not rows:
         raise _empty(rd, section, "LINE TYPES", layout)
     out: dict[str, MoorDynLineType] = {}
@@ -195,6 +200,8 @@ def _read_line_types(rd, section) -> dict[str, MoorDynLineType]:
             ei = _coefficient(rd, lineno, name, t[5], "EI", "N m^2")
             cdn, can, cdt, cat = (rd.number(lineno, t[k], f"line type {name!r} {c}", "-")
                                   for k, c in zip(range(6, 10), ("Cd", "Ca", "CdAx", "CaAx")))
+            if swapped:  # CableDyn's Cd_n Cd_t Ca_n Ca_t
+                can, cdt = cdt, can
             if len(t) > 10:  # MoorDyn v2.3+: optional Cl dF cF (vortex-induced vibration)
                 cl = rd.number(lineno, t[10], f"line type {name!r} Cl (VIV lift coefficient)", "-")
                 if cl != 0:
@@ -233,8 +240,11 @@ def _attachment(rd, lineno, word, point_id) -> tuple[str, int | None]:
                            "vessel), Free (connection point), Body1 (fixed on body 1) or Turbine1 (FAST.Farm).")
 
 
-def _read_points(rd, section) -> tuple[list[MoorDynPoint], dict[int, int]]:
+def _read_points(rd, section, short=False) -> tuple[list[MoorDynPoint], dict[int, int]]:
     names, rows = _table(rd, section)
+    if short:  # a CableDyn deck: rows may stop after 'ID Type X Y Z' (no mass, volume or drag)
+        rows = [(n, tk + ["0"] * 4 if len(tk) == 5 else tk) for n, tk in rows]
+        names = names if len(names) > 5 else []
     forces = any(len(t) >= 12 for _, t in rows) or "fx" in {_key(n) for n in names}
     # the names are checked against the layout they can name: the forces' only where they name FX or every row
     # holds them (rows of both kinds under MoorDyn's nine names are read by their own length)
@@ -329,8 +339,10 @@ def _end_position(points, rods, ref):
     return p.position if p.attachment in ("fixed", "free", "vessel") else None
 
 
-def _read_lines(rd, section, types, points, rods=None) -> list[MoorDynLine]:
+def _read_lines(rd, section, types, points, rods=None, cable_sections=None) -> list[MoorDynLine]:
     names, rows = _table(rd, section)
+    if cable_sections is not None:
+        return _read_cable_lines(rd, rows, types, points, rods, cable_sections, section)
     v1 = len(names) > 2 and "len" in names[2].lower()
     layout = ("ID type UnstrLen NumSegs NodeAnch NodeFair flags" if v1
               else "ID type AttachA AttachB UnstrLen NumSegs outputs")
@@ -379,6 +391,48 @@ def _read_lines(rd, section, types, points, rods=None) -> list[MoorDynLine]:
         rod_a, rod_b = (a if isinstance(a, tuple) else None), (b if isinstance(b, tuple) else None)
         out.append(MoorDynLine(lid, t[1], None if rod_a else a, None if rod_b else b, length, nseg, t[6],
                                rod_a, rod_b))
+    return out
+
+
+def _read_cable_lines(rd, rows, types, points, rods, cable_sections, section) -> list[MoorDynLine]:
+    """The LINES of a CableDyn deck: ``ID NodeA NodeB Outputs`` with the line's SECTIONS rows, or a stock MoorDyn
+    row (``ID LineType AttachA AttachB UnstrLen NumSegs Outputs``) for a line without them."""
+    if not rows:
+        raise _empty(rd, section, "LINES", "ID NodeA NodeB Outputs")
+    out, seen = [], {}
+    for lineno, t in rows:
+        if len(t) >= 7 and _as_float(t[4]) is not None:
+            if _integer(rd, lineno, t[0], "line ID") in cable_sections:
+                raise rd.error(lineno, f"line {t[0]} has both a MoorDyn LINES row (type and length) and SECTIONS rows. "
+                                       "Suggested fix: give its sections in SECTIONS only ('ID NodeA NodeB Outputs').")
+            stock = (None, lineno, "LINES", [(lineno, "ID type AttachA AttachB UnstrLen NumSegs outputs"),
+                                             (lineno, "(-)"), (lineno, " ".join(t))])
+            out.extend(_read_lines(rd, stock, types, points, rods))
+            seen[out[-1].id] = lineno
+            continue
+        rd.columns(lineno, t, 3, "LINES", "ID NodeA NodeB Outputs (CableDyn, with SECTIONS)")
+        lid = _integer(rd, lineno, t[0], "line ID")
+        if lid in seen:
+            raise rd.error(lineno, f"line ID {lid} is used twice (first at line {seen[lid]}). "
+                                   "Suggested fix: number the lines 1, 2, 3, ... once each.")
+        seen[lid] = lineno
+        pieces = cable_sections.get(lid)
+        if not pieces:
+            raise rd.error(lineno, f"line {lid} has no SECTIONS rows (its LINES row gives no type or length). "
+                                   f"Suggested fix: add its sections, e.g. '{lid} TYPE LENGTH NUMSEGS', from end A.")
+        a = _point_ref(rd, lineno, t[1], points, lid, "A (NodeA)", rods)
+        b = _point_ref(rd, lineno, t[2], points, lid, "B (NodeB)", rods)
+        if a == b:
+            raise rd.error(lineno, f"line {lid} NodeA and NodeB are the same point ({a}). Suggested fix: attach the "
+                                   "line's two ends to two different points.")
+        rod_a, rod_b = (a if isinstance(a, tuple) else None), (b if isinstance(b, tuple) else None)
+        out.append(MoorDynLine(lid, pieces[0][0], None if rod_a else a, None if rod_b else b,
+                               float(sum(p[1] for p in pieces)), int(sum(p[2] for p in pieces)),
+                               t[3] if len(t) > 3 else "-", rod_a, rod_b, sections=pieces))
+    unknown = sorted(set(cable_sections) - set(seen))
+    if unknown:
+        raise rd.error(None, f"SECTIONS rows name line(s) {unknown}, which are not in LINES. Suggested fix: use the "
+                             "IDs of the LINES rows.")
     return out
 
 
