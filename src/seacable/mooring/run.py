@@ -3,19 +3,21 @@
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..errors import InputError, SeacableWarning
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
 from .loop import evaluate_states
-from .motion import RAOMotion, bind, forcing_period, sea_of
+from .motion import PlatformMotion, RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .outputs import (
     at_motion_start,
@@ -83,6 +85,18 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
                             stiffness_proportional=beta, end_b=end_b)
+    held = tuple(cond.hinge(0, end) for end, cond in enumerate((a.anchor_end, a.fairlead_end)) if cond.holds)
+    if held:
+        ei = np.zeros(net.n_elements) if net.bending_stiffness is None else net.bending_stiffness
+        for end, name, cond in ((0, "anchor_end", a.anchor_end), (1, "fairlead_end", a.fairlead_end)):
+            e = 0 if end == 0 else net.n_elements - 1
+            if cond.holds and not ei[e] > 0:
+                raise InputError(
+                    f"analysis.{name} is {cond.type}, but the line's end element there has no bending stiffness "
+                    f"(EI = {ei[e]:g} N m^2): a moment at the end needs a line that bends. Suggested fix: give "
+                    f"the end segment's line type 'bending_stiffness' in N m^2 (e.g. 1e4), or leave {name} "
+                    "out (pinned).")
+        net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
     start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
                                depth=env.depth, slope=env.seabed.slope)
@@ -465,6 +479,12 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
+    if a.fairlead_end.holds and isinstance(a.motion, (PlatformMotion, RAOMotion)):
+        warnings.warn(f"analysis.fairlead_end is {a.fairlead_end.type} and the fairlead moves with a platform's "
+                      "rotations: the end's direction stays at rest (its rotation is not yet followed), so the "
+                      "hang-off moment and curvature miss the platform's roll and pitch. Suggested fix: judge the "
+                      "hang-off angle range from the platform's rotations, or use a pinned end.",
+                      SeacableWarning, stacklevel=2)
     model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
     net = model.network
     steps = a.duration / min(a.time_step, a.output_interval)
