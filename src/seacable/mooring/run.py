@@ -13,6 +13,7 @@ from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..errors import InputError, SeacableWarning
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
+from .bending import bending_variables
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
@@ -383,6 +384,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     for k, name in enumerate("xyz"):
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
                                              f"{name} force of the line on its fairlead end")
+    data.update(bending_variables(net, X, dims))
     return data
 
 
@@ -456,7 +458,8 @@ class MooringDynamicSetup:
 def stored_per_output(net: Network) -> int:
     """Values the result of a time-domain run holds per output: per line (each padded to the longest, as in a
     MoorDyn deck's result) the positions and tensions of its nodes, its element tensions, its end tensions,
-    its anchor's vertical force, fairlead force and grounded length; the forces on the points; the time, the count of slack elements and
+    its anchor's vertical force, fairlead force and grounded length (and, bending, its curvature, bend moment and
+    declination at the nodes and shear per element); the forces on the points; the time, the count of slack elements and
     the wave elevation. [1]
 
     The run itself holds a block of outputs at a time (:func:`seacable.mooring.solver.simulate`,
@@ -466,7 +469,8 @@ def stored_per_output(net: Network) -> int:
     nodes = max(len(n) for n in net.line_nodes)
     elements = int(np.max(np.bincount(net.element_line, minlength=lines)))
     points = int(np.count_nonzero((net.kind != FREE) | ~np.isfinite(net.arc_length)))
-    return lines * (4 * nodes + elements + 7) + 4 * points + 3
+    bending = 3 * nodes + elements if net.hinge_arrays()[0].shape[0] else 0  # curvature, moment, declination, shear
+    return lines * (4 * nodes + elements + 7 + bending) + 4 * points + 3
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
