@@ -14,7 +14,7 @@ import numpy as np
 
 from .._jit import njit
 from ._band import _add_block
-from ._indices import H_CLAMP, H_D, H_EI, H_KIND, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_TM, V_TM0, V_U, V_U0, V_WC, V_Y, V_Y0
+from ._indices import H_CLAMP, H_D, H_EI, H_K, H_KIND, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_TM, V_TM0, V_U, V_U0, V_WC, V_Y, V_Y0
 
 
 @njit(cache=True)
@@ -223,9 +223,17 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
         kappa = 2 sin(theta / 2) / (l / 2) = 4 sin(theta / 2) / l,   M = EI kappa
 
     (the inner hinge's ``4 sin(theta / 2) / (l1 + l2)`` with a virtual element of no length along ``e``: the
-    end node's share of line is the half element ``l / 2``), or of a spring ``M = k theta``. Like an inner
-    hinge's, its forces are ``-M grad(theta)``: with ``g = M / sin(theta)``, ``2 EI / (l cos(theta / 2))``
-    (clamp) or ``k theta / sin(theta)`` (spring), both smooth at theta = 0, and ``w = (e - c b) / l``::
+    end node's share of line is the half element ``l / 2``; for small angles ``2 theta / l``, the central
+    difference of the slope with a ghost node mirrored about ``e``, the second-order clamped boundary of finite
+    differences). A rotational spring ``k`` between the holder and the line's end tangent sits in series with
+    that half element's bending, whose compliance the clamp's law gives as ``l / (2 EI)``, so that
+    ``theta = M / k + M l / (2 EI)``::
+
+        M = k_e theta,   k_e = 1 / (1 / k + l / (2 EI))
+
+    (k -> infinity: the clamp to O(theta^3); k -> 0: a pin). Like an inner hinge's, its forces are
+    ``-M grad(theta)``: with ``g = M / sin(theta)``, ``2 EI / (l cos(theta / 2))`` (clamp) or
+    ``k_e theta / sin(theta)`` (spring), both smooth at theta = 0, and ``w = (e - c b) / l``::
 
         f_w = g w on the neighbour,   f_e = -f_w on the end node
 
@@ -251,21 +259,22 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
         dd += (b[r] - row[H_D + r]) ** 2
     if c <= -1.0 + 1e-9:
         return  # folded back against its holder: the moment's plane is undefined
-    k = row[H_EI]
+    ei = row[H_EI]
     if row[H_KIND] == H_CLAMP:
-        g = 2.0 * k / (l * math.sqrt(0.5 * (1.0 + c)))
+        g = 2.0 * ei / (l * math.sqrt(0.5 * (1.0 + c)))
         gc = -g / (2.0 * (1.0 + c))
         gl = -g / l
     else:
+        ke = 1.0 / (1.0 / row[H_K] + 0.5 * l / ei)
         theta = 2.0 * math.asin(min(0.5 * math.sqrt(dd), 1.0))  # accurate at small angles, as acos(c) is not
         s = math.sin(theta)
         if theta < 1e-4:  # the series of theta / sin(theta) and of its slope on c
-            g = k * (1.0 + theta * theta / 6.0)
-            gc = -k * (1.0 / 3.0 + 2.0 * theta * theta / 15.0)
+            g = ke * (1.0 + theta * theta / 6.0)
+            gc = -ke * (1.0 / 3.0 + 2.0 * theta * theta / 15.0)
         else:
-            g = k * theta / s
-            gc = -k * (s - theta * math.cos(theta)) / (s * s * s)
-        gl = 0.0
+            g = ke * theta / s
+            gc = -ke * (s - theta * math.cos(theta)) / (s * s * s)
+        gl = -g * ke / (2.0 * ei)   # dk_e/dl = -k_e^2 / (2 EI)
     for r in range(3):
         w[r] = (row[H_D + r] - c * b[r]) / l
         F[iw, r] += g * w[r]

@@ -45,9 +45,9 @@ V_WC, V_K1, V_K2, V_TM0, V_TM = 7, 8, 9, 10, 11
 V_SIZE = 12
 
 # Columns of the bending hinges' table ``hinge_ei`` (one row per row of ``hinges``, :func:`bending_loads`): the
-# bending stiffness EI [N m^2] of an inner hinge or a clamped end, or a rotational spring's stiffness k [N m/rad]
-# (H_EI); the hinge's kind (H_KIND: H_INNER, H_CLAMP or H_SPRING); and for an end hinge the end's given direction,
-# a unit vector from the end node into the line (H_D, H_D + 1, H_D + 2) [-]
-H_EI, H_KIND, H_D = 0, 1, 2
-H_SIZE = 5
+# bending stiffness EI [N m^2] of an inner hinge (the mean of its two elements') or of a held end's end element
+# (H_EI); the hinge's kind (H_KIND: H_INNER, H_CLAMP or H_SPRING); for a held end its given direction, a unit vector
+# from the end node into the line (H_D, H_D + 1, H_D + 2) [-], and a spring's rotational stiffness (H_K) [N m/rad]
+H_EI, H_KIND, H_D, H_K = 0, 1, 2, 5
+H_SIZE = 6
 H_INNER, H_CLAMP, H_SPRING = 0.0, 1.0, 2.0

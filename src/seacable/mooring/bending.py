@@ -4,8 +4,8 @@ The same discrete quantities the kernel's hinges act with (:func:`seacable.moori
 :func:`seacable.mooring.kernel.end_bending_loads`), evaluated in NumPy over any number of states: at an inner
 node of elements ``l1``, ``l2`` turned by ``theta``, ``kappa = 4 sin(theta / 2) / (l1 + l2)`` and ``M = EI kappa``
 (EI the mean of its two elements'); at a clamped end ``kappa = 4 sin(theta / 2) / l`` from the end's given
-direction, ``M = EI kappa``; at a spring end ``M = k theta`` and ``kappa = M / EI`` (the line's own curvature
-under that moment); at a pinned end none. The moment is a vector along the binormal ``a x b / |a x b|`` of the
+direction, ``M = EI kappa``; at a spring end ``M = k_e theta`` (the spring in series with the half element) and
+``kappa = M / EI`` (the line's own curvature under that moment); at a pinned end none. The moment is a vector along the binormal ``a x b / |a x b|`` of the
 hinge (``a`` the direction before the node, ``b`` after, along the line from end A); the shear force across the
 line in an element is ``|dM/ds|``, the difference of the moment vectors at its nodes over its stretched length
 (a rod without torsion or distributed moment: ``dM/ds = -t x Q``, so this is the shear force normal to the line).
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._indices import H_D, H_EI, H_KIND, H_SPRING
+from ._indices import H_D, H_EI, H_K, H_KIND, H_SPRING
 from .network import Network
 
 __all__ = ["bending_state", "bending_variables"]
@@ -50,15 +50,15 @@ def bending_state(net: Network, X):
         b = np.where(at_b[:, None], -e, b)     # end B: the line's direction there (towards end B)
         theta = 2.0 * np.arcsin(np.clip(0.5 * np.linalg.norm(b - a, axis=-1), 0.0, 1.0))
         spring = table[:, H_KIND] == H_SPRING
-        stiffness = table[:, H_EI]
-        kappa = 4.0 * np.sin(0.5 * theta) / (l1 * ~at_a + l2 * ~at_b)
-        m = np.where(spring, stiffness * theta, stiffness * kappa)
+        ei = table[:, H_EI]
+        length = l1 * ~at_a + l2 * ~at_b       # an end hinge's one element
+        kappa = 4.0 * np.sin(0.5 * theta) / length
+        m = ei * kappa
         if np.any(spring):
-            ei = np.zeros(net.n_elements) if net.bending_stiffness is None else np.asarray(net.bending_stiffness)
-            of = {(int(p), int(q)): k for k, (p, q) in enumerate(net.elements)}
-            end_ei = np.array([ei[of.get((int(p), int(q)), of.get((int(q), int(p)), 0))] if s else 1.0
-                               for p, q, s in zip(i1, np.where(at_a, i2, i0), spring)])
-            kappa = np.where(spring, m / end_ei, kappa)
+            # the spring in series with the end's half element (kernel.end_bending_loads): M = k_e theta
+            ke = 1.0 / (1.0 / np.where(spring, table[:, H_K], 1.0) + 0.5 * length / ei)
+            m = np.where(spring, ke * theta, m)
+            kappa = np.where(spring, m / ei, kappa)
         axis, _ = _unit(np.cross(a, b))
         curvature[..., i1] = kappa
         moment[..., i1, :] = m[..., None] * axis

@@ -38,7 +38,8 @@ class EndCondition(Model):
     ``pinned`` (the default): no moment, the end free to turn. ``clamped``: the line leaves the end along the
     direction given by ``declination`` and ``azimuth`` (towards end B, :func:`end_direction`), the moment
     ``EI kappa`` of its end element's EI. ``spring``: a rotational spring of ``stiffness`` about that
-    direction, the moment ``k theta`` at the angle ``theta`` between the end element and the direction.
+    direction between the holder and the line's end tangent (the moment ``k theta`` at the angle ``theta`` between
+    them; the kernel puts it in series with the end's half element, :func:`seacable.mooring.kernel.end_bending_loads`).
     The direction is fixed in space in statics; in dynamics it is the direction at rest (a fairlead's motion
     moves the end, not yet its direction).
     """

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..line import Line
-from ._indices import H_CLAMP, H_D, H_EI, H_KIND, H_SIZE, H_SPRING
+from ._indices import H_CLAMP, H_D, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -142,8 +142,8 @@ class Network:
         with its two neighbours along its line (end A side first), then the held ends (``end_hinges``), each
         ``(end node, end node, neighbour)`` at end A and ``(neighbour, end node, end node)`` at end B;
         ``hinge_ei`` (h, H_SIZE) their table (:mod:`seacable.mooring._indices`): at an inner node the mean EI
-        of its two elements [N m^2]; at a held end the end element's EI (a clamp) or the spring's stiffness
-        [N m/rad], the kind and the direction from the end into the line. No rows for a truss with pinned ends.
+        of its two elements [N m^2]; at a held end the end element's EI, the kind, the direction from the end into
+        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends.
         """
         rows, vals = [], []
         ei = self.bending_stiffness
@@ -167,10 +167,10 @@ class Network:
             ie, iw = (int(nodes[0]), int(nodes[1])) if end == 0 else (int(nodes[-1]), int(nodes[-2]))
             e = of.get((ie, iw), of.get((iw, ie)))
             row = np.zeros(H_SIZE)
-            if kind == "clamp":
-                row[H_KIND], row[H_EI] = H_CLAMP, 0.0 if ei is None else float(np.asarray(ei, float)[e])
-            else:
-                row[H_KIND], row[H_EI] = H_SPRING, float(stiffness)
+            row[H_EI] = 0.0 if ei is None else float(np.asarray(ei, float)[e])
+            row[H_KIND] = H_CLAMP if kind == "clamp" else H_SPRING
+            if kind != "clamp":
+                row[H_K] = float(stiffness)
             d = np.asarray(direction, float)
             row[H_D:H_D + 3] = (d if end == 0 else -d) / np.linalg.norm(d)
             rows.append((ie, ie, iw) if end == 0 else (iw, ie, ie))
