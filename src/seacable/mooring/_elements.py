@@ -14,7 +14,25 @@ import numpy as np
 
 from .._jit import njit
 from ._band import _add_block
-from ._indices import H_CLAMP, H_D, H_EI, H_K, H_KIND, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_TM, V_TM0, V_U, V_U0, V_WC, V_Y, V_Y0
+from ._indices import (
+    H_CLAMP,
+    H_D,
+    H_EI,
+    H_K,
+    H_KIND,
+    V_BAD,
+    V_EAD,
+    V_K1,
+    V_K2,
+    V_LM,
+    V_TM,
+    V_TM0,
+    V_U,
+    V_U0,
+    V_WC,
+    V_Y,
+    V_Y0,
+)
 
 
 @njit(cache=True)

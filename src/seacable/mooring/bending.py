@@ -5,10 +5,11 @@ The same discrete quantities the kernel's hinges act with (:func:`seacable.moori
 node of elements ``l1``, ``l2`` turned by ``theta``, ``kappa = 4 sin(theta / 2) / (l1 + l2)`` and ``M = EI kappa``
 (EI the mean of its two elements'); at a clamped end ``kappa = 4 sin(theta / 2) / l`` from the end's given
 direction, ``M = EI kappa``; at a spring end ``M = k_e theta`` (the spring in series with the half element) and
-``kappa = M / EI`` (the line's own curvature under that moment); at a pinned end none. The moment is a vector along the binormal ``a x b / |a x b|`` of the
-hinge (``a`` the direction before the node, ``b`` after, along the line from end A); the shear force across the
-line in an element is ``|dM/ds|``, the difference of the moment vectors at its nodes over its stretched length
-(a rod without torsion or distributed moment: ``dM/ds = -t x Q``, so this is the shear force normal to the line).
+``kappa = M / EI`` (the line's own curvature under that moment); at a pinned end none. The moment is a vector
+along the binormal ``a x b / |a x b|`` of the hinge (``a`` the direction before the node, ``b`` after, along the
+line from end A); the shear force across the line in an element is ``|dM/ds|``, the difference of the moment
+vectors at its nodes over its stretched length (a rod without torsion or distributed moment: ``dM/ds = -t x Q``,
+so this is the shear force normal to the line).
 """
 
 from __future__ import annotations
