@@ -14,7 +14,25 @@ import numpy as np
 
 from .._jit import njit
 from ._band import _add_block
-from ._indices import V_BAD, V_EAD, V_K1, V_K2, V_LM, V_TM, V_TM0, V_U, V_U0, V_WC, V_Y, V_Y0
+from ._indices import (
+    H_CLAMP,
+    H_D,
+    H_EI,
+    H_K,
+    H_KIND,
+    V_BAD,
+    V_EAD,
+    V_K1,
+    V_K2,
+    V_LM,
+    V_TM,
+    V_TM0,
+    V_U,
+    V_U0,
+    V_WC,
+    V_Y,
+    V_Y0,
+)
 
 
 @njit(cache=True)
@@ -107,9 +125,12 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
 
         f0 = -g (b - c a) / l1,   f2 = g (a - c b) / l2,   f1 = -f0 - f2
 
-    The line's ends at points are pinned (no moment), as MoorDyn's ends at points. When ``band`` has
-    rows, ``K = -df/dx`` of the nine node pairs is added for the free nodes (exact: it couples ``i0`` with
-    ``i2``, which the caller's band width allows for).
+    ``hinge_ei`` (h, H_SIZE) holds each hinge's EI in its column ``H_EI`` (:mod:`seacable.mooring._indices`).
+    A line's ends are pinned (no moment), as MoorDyn's ends at points, unless a row ends it: a row
+    ``(i1, i1, i2)`` or ``(i0, i1, i1)`` is an end hinge at the end node ``i1`` with its one neighbour
+    (:func:`end_bending_loads`: a clamp or a rotational spring). When ``band`` has rows, ``K = -df/dx`` of
+    the nine node pairs is added for the free nodes (exact: it couples ``i0`` with ``i2``, which the caller's
+    band width allows for).
     """
     jac = band.shape[0] > 0
     a, b, u, w = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
@@ -123,6 +144,9 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
     J = np.zeros((3, 3, 3, 3))    # J[m, k] = d f_m / d r_k
     for h in range(hinges.shape[0]):
         i0, i1, i2 = hinges[h, 0], hinges[h, 1], hinges[h, 2]
+        if i0 == i1 or i1 == i2:
+            end_bending_loads(X, i1, i2 if i0 == i1 else i0, hinge_ei[h], F, band, bw, fidx)
+            continue
         l1 = l2 = 0.0
         for r in range(3):
             a[r] = X[i1, r] - X[i0, r]
@@ -139,7 +163,7 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
             c += a[r] * b[r]
         if c <= -1.0 + 1e-9:
             continue  # folded back on itself: the moment's plane is undefined
-        ei = hinge_ei[h]
+        ei = hinge_ei[h, H_EI]
         g = 2.0 * ei / ((l1 + l2) * math.sqrt(0.5 * (1.0 + c)))
         for r in range(3):
             u[r] = (b[r] - c * a[r]) / l1
@@ -203,6 +227,89 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
                     for q in range(3):
                         blk[r, q] = J[m, k, r, q]
                 _add_block(band, bw, fm, fidx[nodes[k]], -1.0, blk)
+
+
+@njit(cache=True)
+def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
+    """The bending moment at a line's end node ``ie`` held at a given direction: a clamp or a rotational spring.
+
+    The end hinge lies between the end's given direction ``e`` (``row[H_D:H_D + 3]``, a unit vector from the
+    end into the line: the line's tangent there, turned to point into the line at end B) and the end element
+    to the neighbour ``iw``, of stretched length ``l`` and unit vector ``b`` from ``ie`` to ``iw``. With
+    ``c = cos(theta) = e . b``, the moment is that of a clamp::
+
+        kappa = 2 sin(theta / 2) / (l / 2) = 4 sin(theta / 2) / l,   M = EI kappa
+
+    (the inner hinge's ``4 sin(theta / 2) / (l1 + l2)`` with a virtual element of no length along ``e``: the
+    end node's share of line is the half element ``l / 2``; for small angles ``2 theta / l``, the central
+    difference of the slope with a ghost node mirrored about ``e``, the second-order clamped boundary of finite
+    differences). A rotational spring ``k`` between the holder and the line's end tangent sits in series with
+    that half element's bending, whose compliance the clamp's law gives as ``l / (2 EI)``, so that
+    ``theta = M / k + M l / (2 EI)``::
+
+        M = k_e theta,   k_e = 1 / (1 / k + l / (2 EI))
+
+    (k -> infinity: the clamp to O(theta^3); k -> 0: a pin). Like an inner hinge's, its forces are
+    ``-M grad(theta)``: with ``g = M / sin(theta)``, ``2 EI / (l cos(theta / 2))`` (clamp) or
+    ``k_e theta / sin(theta)`` (spring), both smooth at theta = 0, and ``w = (e - c b) / l``::
+
+        f_w = g w on the neighbour,   f_e = -f_w on the end node
+
+    a couple of moment ``M`` that turns the element towards ``e``; the end's holder (an anchor, a fairlead,
+    a body) takes ``f_e`` and the reaction moment ``-M``. When ``band`` has rows, ``K = -df/dx`` is added for
+    the free nodes, exact: ``d f_w / d x_w = w (g_c w + g_l b)^T - g (b w^T + w b^T + c (I - b b^T) / l) / l``
+    with ``g_c = dg/dc``, ``g_l = dg/dl``, and ``d f_w / d x_e = -d f_w / d x_w``.
+    """
+    b = np.zeros(3)
+    w = np.zeros(3)
+    l = 0.0
+    for r in range(3):
+        b[r] = X[iw, r] - X[ie, r]
+        l += b[r] * b[r]
+    l = math.sqrt(l)
+    if l <= 0.0:
+        return  # coincident nodes: no direction, no moment
+    c = 0.0
+    dd = 0.0
+    for r in range(3):
+        b[r] /= l
+        c += row[H_D + r] * b[r]
+        dd += (b[r] - row[H_D + r]) ** 2
+    if c <= -1.0 + 1e-9:
+        return  # folded back against its holder: the moment's plane is undefined
+    ei = row[H_EI]
+    if row[H_KIND] == H_CLAMP:
+        g = 2.0 * ei / (l * math.sqrt(0.5 * (1.0 + c)))
+        gc = -g / (2.0 * (1.0 + c))
+        gl = -g / l
+    else:
+        ke = 1.0 / (1.0 / row[H_K] + 0.5 * l / ei)
+        theta = 2.0 * math.asin(min(0.5 * math.sqrt(dd), 1.0))  # accurate at small angles, as acos(c) is not
+        s = math.sin(theta)
+        if theta < 1e-4:  # the series of theta / sin(theta) and of its slope on c
+            g = ke * (1.0 + theta * theta / 6.0)
+            gc = -ke * (1.0 / 3.0 + 2.0 * theta * theta / 15.0)
+        else:
+            g = ke * theta / s
+            gc = -ke * (s - theta * math.cos(theta)) / (s * s * s)
+        gl = -g * ke / (2.0 * ei)   # dk_e/dl = -k_e^2 / (2 EI)
+    for r in range(3):
+        w[r] = (row[H_D + r] - c * b[r]) / l
+        F[iw, r] += g * w[r]
+        F[ie, r] -= g * w[r]
+    if band.shape[0] == 0:
+        return
+    J = np.zeros((3, 3))   # d f_w / d x_w
+    for r in range(3):
+        for q in range(3):
+            d = 1.0 if r == q else 0.0
+            J[r, q] = (w[r] * (gc * w[q] + gl * b[q])
+                       - g * (b[r] * w[q] + w[r] * b[q] + c * (d - b[r] * b[q]) / l) / l)
+    fw, fe = fidx[iw], fidx[ie]
+    _add_block(band, bw, fw, fw, -1.0, J)
+    _add_block(band, bw, fw, fe, 1.0, J)
+    _add_block(band, bw, fe, fw, 1.0, J)
+    _add_block(band, bw, fe, fe, -1.0, J)
 
 
 @njit(cache=True)

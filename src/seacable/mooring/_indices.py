@@ -1,5 +1,6 @@
 """The layouts of the mooring kernel's flat arrays, in one place: the environment vector ``env`` (``E_*``), the
-attachments' hydrodynamics ``pcda`` (``P_*``) and the viscoelastic element table ``visco`` (``V_*``).
+attachments' hydrodynamics ``pcda`` (``P_*``), the viscoelastic element table ``visco`` (``V_*``) and the bending
+hinges' table ``hinge_ei`` (``H_*``).
 
 Read by the parts of :mod:`seacable.mooring.kernel` and filled by :mod:`seacable.mooring.solver` and the coupled
 system kernel; :mod:`seacable.mooring.kernel` re-exports every name.
@@ -42,3 +43,11 @@ V_EAD, V_LM, V_BAD, V_Y0, V_U0, V_Y, V_U = 0, 1, 2, 3, 4, 5, 6
 # evaluated (TM) [N] (:func:`syrope_tension`)
 V_WC, V_K1, V_K2, V_TM0, V_TM = 7, 8, 9, 10, 11
 V_SIZE = 12
+
+# Columns of the bending hinges' table ``hinge_ei`` (one row per row of ``hinges``, :func:`bending_loads`): the
+# bending stiffness EI [N m^2] of an inner hinge (the mean of its two elements') or of a held end's end element
+# (H_EI); the hinge's kind (H_KIND: H_INNER, H_CLAMP or H_SPRING); for a held end its given direction, a unit vector
+# from the end node into the line (H_D, H_D + 1, H_D + 2) [-], and a spring's rotational stiffness (H_K) [N m/rad]
+H_EI, H_KIND, H_D, H_K = 0, 1, 2, 5
+H_SIZE = 6
+H_INNER, H_CLAMP, H_SPRING = 0.0, 1.0, 2.0

@@ -36,8 +36,8 @@ def loads(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     Fills ``F`` (n, 3) with internal, gravity, hydrodynamic and seabed forces, ``M`` (n, 3, 3) with the
     node mass including added mass, ``tension`` (e,) and, when ``band`` has rows, adds
     ``cm M + cc C + K`` (C = -dF/dv, K = -dF/dx) for the free nodes (``fidx`` >= 0) in band storage.
-    ``hinges`` (h, 3) and ``hinge_ei`` (h,) are the inner nodes of lines with bending stiffness
-    (:func:`bending_loads`; none: a truss); ``visco`` (e, V_SIZE) the viscoelastic elements
+    ``hinges`` (h, 3) and ``hinge_ei`` (h, H_SIZE) are the bending hinges, inner nodes and held ends of lines with
+    bending stiffness (:func:`bending_loads`; none: a truss with pinned ends); ``visco`` (e, V_SIZE) the viscoelastic elements
     (:func:`viscoelastic_tension`, advanced over ``env[E_VDT]``; no rows: none).
     """
     water = np.zeros((n_water(X, env, cur_depth, with_waves, sea), 7))

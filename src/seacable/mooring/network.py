@@ -20,6 +20,7 @@ import numpy as np
 from ..errors import InputError
 from ..line import Line, resolve_sections
 from ..sections import element_bending_stiffness
+from ._indices import H_CLAMP, H_D, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -75,12 +76,18 @@ class Network:
         ``(strain, tension)`` pairs) or None for a linear EA; None when no element has one. [-, N]
     bending_stiffness : (e,) EI of each element's line type; None (or all 0) for a truss. The bending
         moment acts at the inner nodes of each line (:func:`seacable.mooring.kernel.bending_loads`),
-        with the mean EI of the node's two elements; line ends are pinned. [N m^2]
+        with the mean EI of the node's two elements; line ends are pinned unless ``end_hinges`` holds them. [N m^2]
     element_viscoelastic : (e, 3) per element ``(EA_Dc, EA_D_Lm, BA_D)`` of a viscoelastic line type
         (``LineType.dynamic_axial_stiffness`` and the fast damper), zeros for an elastic element; None
         when no element is viscoelastic. ``axial_stiffness`` is then the static EA_s and
         ``axial_damping`` the slow damper BA (:func:`seacable.mooring.kernel.viscoelastic_tension`).
         [N, -, N s]
+    end_hinges : the line ends held at a direction, each ``(line, end, kind, stiffness, direction)``: the line's
+        index, its end (0: end A, 1: end B), ``"clamp"`` or ``"spring"``, a spring's rotational stiffness
+        (None for a clamp, whose stiffness is its end element's EI) and the direction the line leaves or
+        reaches the end in, a unit vector along the line from end A towards end B (:class:`seacable.mooring.ends.
+        EndCondition`); the other ends are pinned (:func:`seacable.mooring.kernel.end_bending_loads`). [-, -, -,
+        N m/rad, -]
     element_syrope : (e, 4) per element ``(form, k1, k2, Tmax0)`` of a Syrope rope (its working curve's form,
         1 linear, 2 quadratic, 3 exponential, and parameters, and the largest mean tension before the run),
         whose ``element_tension_strain`` is its original working curve; zeros for other elements; None when
@@ -119,6 +126,7 @@ class Network:
     element_syrope: np.ndarray | None = None
     point_axial_drag_area: np.ndarray | None = None
     point_lift_area: np.ndarray | None = None
+    end_hinges: tuple = ()
 
     def __post_init__(self):
         # the kernels are compiled for C-contiguous arrays: a column of a table (``P[:, 1]``) would make numba
@@ -129,30 +137,47 @@ class Network:
                 object.__setattr__(self, f.name, np.ascontiguousarray(value))
 
     def hinge_arrays(self):
-        """The inner nodes of the lines with bending stiffness as the kernel takes them.
+        """The bending hinges as the kernel takes them (:func:`seacable.mooring.kernel.bending_loads`).
 
-        Returns ``(hinges, ei)``: ``hinges`` (h, 3) the node and its two neighbours along its line
-        (end A side first), ``ei`` (h,) the mean EI of the two elements [N m^2]; no rows for a truss.
+        Returns ``(hinges, hinge_ei)``: ``hinges`` (h, 3) the inner nodes of the lines with bending stiffness, each
+        with its two neighbours along its line (end A side first), then the held ends (``end_hinges``), each
+        ``(end node, end node, neighbour)`` at end A and ``(neighbour, end node, end node)`` at end B;
+        ``hinge_ei`` (h, H_SIZE) their table (:mod:`seacable.mooring._indices`): at an inner node the mean EI
+        of its two elements [N m^2]; at a held end the end element's EI, the kind, the direction from the end into
+        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends.
         """
-        ei = self.bending_stiffness
-        if ei is None or not np.any(np.asarray(ei) > 0):
-            return np.zeros((0, 3), np.int64), np.zeros(0)
-        ei = np.asarray(ei, float)
-        of = {(int(a), int(b)): e for e, (a, b) in enumerate(self.elements)}
         rows, vals = [], []
-        for nodes in self.line_nodes:
-            for k in range(1, len(nodes) - 1):
-                i0, i1, i2 = int(nodes[k - 1]), int(nodes[k]), int(nodes[k + 1])
-                e1 = of.get((i0, i1), of.get((i1, i0)))
-                e2 = of.get((i1, i2), of.get((i2, i1)))
-                if e1 is None or e2 is None:
-                    continue
-                value = 0.5 * (ei[e1] + ei[e2])
-                if value > 0:
-                    rows.append((i0, i1, i2))
-                    vals.append(value)
+        ei = self.bending_stiffness
+        of = {(int(a), int(b)): e for e, (a, b) in enumerate(self.elements)}
+        if ei is not None and np.any(np.asarray(ei) > 0):
+            ei = np.asarray(ei, float)
+            for nodes in self.line_nodes:
+                for k in range(1, len(nodes) - 1):
+                    i0, i1, i2 = int(nodes[k - 1]), int(nodes[k]), int(nodes[k + 1])
+                    e1 = of.get((i0, i1), of.get((i1, i0)))
+                    e2 = of.get((i1, i2), of.get((i2, i1)))
+                    if e1 is None or e2 is None:
+                        continue
+                    value = 0.5 * (ei[e1] + ei[e2])
+                    if value > 0:
+                        rows.append((i0, i1, i2))
+                        vals.append(np.zeros(H_SIZE))
+                        vals[-1][H_EI] = value
+        for line, end, kind, stiffness, direction in self.end_hinges:
+            nodes = self.line_nodes[line]
+            ie, iw = (int(nodes[0]), int(nodes[1])) if end == 0 else (int(nodes[-1]), int(nodes[-2]))
+            e = of.get((ie, iw), of.get((iw, ie)))
+            row = np.zeros(H_SIZE)
+            row[H_EI] = 0.0 if ei is None else float(np.asarray(ei, float)[e])
+            row[H_KIND] = H_CLAMP if kind == "clamp" else H_SPRING
+            if kind != "clamp":
+                row[H_K] = float(stiffness)
+            d = np.asarray(direction, float)
+            row[H_D:H_D + 3] = (d if end == 0 else -d) / np.linalg.norm(d)
+            rows.append((ie, ie, iw) if end == 0 else (iw, ie, ie))
+            vals.append(row)
         if not rows:
-            return np.zeros((0, 3), np.int64), np.zeros(0)
+            return np.zeros((0, 3), np.int64), np.zeros((0, H_SIZE))
         return np.array(rows, np.int64), np.array(vals, float)
 
     def tension_strain_arrays(self):

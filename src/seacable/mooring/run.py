@@ -3,19 +3,22 @@
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
+from ..errors import InputError, SeacableWarning
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
+from .bending import bending_variables
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
 from .loop import evaluate_states
-from .motion import RAOMotion, bind, forcing_period, sea_of
+from .motion import PlatformMotion, RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .outputs import (
     at_motion_start,
@@ -83,6 +86,19 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
                             stiffness_proportional=beta, end_b=end_b)
+    conditions = (("anchor_end_condition", a.anchor_end_condition), ("fairlead_end_condition", a.fairlead_end_condition))
+    held = tuple(cond.hinge(0, end) for end, (_, cond) in enumerate(conditions) if cond.holds)
+    if held:
+        ei = np.zeros(net.n_elements) if net.bending_stiffness is None else net.bending_stiffness
+        for end, (name, cond) in enumerate(conditions):
+            e = 0 if end == 0 else net.n_elements - 1
+            if cond.holds and not ei[e] > 0:
+                raise InputError(
+                    f"analysis.{name} is {cond.type}, but the line's end element there has no bending stiffness "
+                    f"(EI = {ei[e]:g} N m^2): a moment at the end needs a line that bends. Suggested fix: give "
+                    f"the end segment's line type 'bending_stiffness' in N m^2 (e.g. 1e4), or leave {name} "
+                    "out (pinned).")
+        net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
     start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
                                depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
@@ -369,6 +385,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     for k, name in enumerate("xyz"):
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
                                              f"{name} force of the line on its fairlead end")
+    data.update(bending_variables(net, X, dims))
     return data
 
 
@@ -443,7 +460,8 @@ class MooringDynamicSetup:
 def stored_per_output(net: Network) -> int:
     """Values the result of a time-domain run holds per output: per line (each padded to the longest, as in a
     MoorDyn deck's result) the positions and tensions of its nodes, its element tensions, its end tensions,
-    its anchor's vertical force, fairlead force and grounded length; the forces on the points; the time, the count of slack elements and
+    its anchor's vertical force, fairlead force and grounded length (and, bending, its curvature, bend moment and
+    declination at the nodes and shear per element); the forces on the points; the time, the count of slack elements and
     the wave elevation. [1]
 
     The run itself holds a block of outputs at a time (:func:`seacable.mooring.solver.simulate`,
@@ -453,7 +471,8 @@ def stored_per_output(net: Network) -> int:
     nodes = max(len(n) for n in net.line_nodes)
     elements = int(np.max(np.bincount(net.element_line, minlength=lines)))
     points = int(np.count_nonzero((net.kind != FREE) | ~np.isfinite(net.arc_length)))
-    return lines * (4 * nodes + elements + 7) + 4 * points + 3
+    bending = 3 * nodes + elements if net.hinge_arrays()[0].shape[0] else 0  # curvature, moment, declination, shear
+    return lines * (4 * nodes + elements + 7 + bending) + 4 * points + 3
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
@@ -466,6 +485,12 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
+    if a.fairlead_end_condition.holds and isinstance(a.motion, (PlatformMotion, RAOMotion)):
+        warnings.warn(f"analysis.fairlead_end_condition is {a.fairlead_end_condition.type} and the fairlead moves "
+                      "with a platform's rotations: the end's direction stays at rest (its rotation is not yet followed), so the "
+                      "hang-off moment and curvature miss the platform's roll and pitch. Suggested fix: judge the "
+                      "hang-off angle range from the platform's rotations, or use a pinned end.",
+                      SeacableWarning, stacklevel=2)
     model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
     net = model.network
     steps = a.duration / min(a.time_step, a.output_interval)

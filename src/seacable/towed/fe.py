@@ -315,7 +315,9 @@ def simulate_towed(system: TowedSystem, path, duration: float, dt: float, output
         ei = _grown(np.asarray(net.bending_stiffness, float), cap - 1)
         ei[ne:] = ei[ne - 1]
         hh = np.arange(cap - 2)[:, None] + np.arange(3)[None, :]
-        args[22], args[23] = hh.astype(np.int64), 0.5 * (ei[:-1] + ei[1:])
+        table = np.zeros((cap - 2, K.H_SIZE))  # inner hinges (H_INNER), their EI in column H_EI
+        table[:, K.H_EI] = 0.5 * (ei[:-1] + ei[1:])
+        args[22], args[23] = hh.astype(np.int64), table
     visco = args[24]
     if visco.shape[0]:
         g = _grown(visco, cap - 1)

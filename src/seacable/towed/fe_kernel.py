@@ -120,7 +120,8 @@ def _birth(ia, X, V, A, G, L0, ds, rate, elems, ts_lo, ts_hi, visco, fidx, chann
     nh = n - 2  # hinges before the birth: the inner nodes 1 .. n - 2
     if hinges.shape[0] > 0 and nh >= 1:
         hinges[nh, 0], hinges[nh, 1], hinges[nh, 2] = below, j, n
-        hinge_ei[nh] = hinge_ei[nh - 1]
+        for q in range(hinge_ei.shape[1]):
+            hinge_ei[nh, q] = hinge_ei[nh - 1, q]
     ia[I_N] = n + 1
     ia[I_NFREE] += 1
     ia[I_BORN] += 1
