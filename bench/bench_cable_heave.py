@@ -1,38 +1,43 @@
 """A lazy-wave power cable in 800 m of water: its static shape and 60 s of 3 m heave at 12 s, seacable against
-MoorDyn 2.7.2 (issue 40's speed target: at most 0.1 of MoorDyn's wall time, each code at its own 1 % on the peak
-curvature).
+CableDyn 0.3.0 and MoorDyn 2.7.2 (issue 40's speed target: at most 0.5 of CableDyn's wall time and 0.1 of MoorDyn's,
+each code at its own 1 % on the peak curvature).
 
 The cable (a stand-in for a deep-water dynamic umbilical, our own numbers): 0.2 m, 70 kg/m (37.8 kg/m in water), EA
 700 MN, EI 20 kN m^2, Cd 1.2, Ca 1; 1400 m from an anchor on the seabed to a hang-off 900 m away and 20 m down: 700 m
 of bare cable (on the seabed, then rising), 150 m of smeared buoyancy (0.473 m, 120 kg/m: 60 kg/m net up), 550 m of
 bare cable up to the hang-off (pinned: MoorDyn's ends are). The hang-off heaves 3 m at 12 s after a 12 s ramp. The
-static hang-off tension is 213.08 kN; the arch's crest at 504 m depth.
+static hang-off tension is 213.08 kN in all three codes (CableDyn 213.082, seacable 213.080, MoorDyn 213.04 kN).
 
 Accuracy on the peak curvature (the largest nodal ``4 sin(theta/2) / (l1 + l2)``, at the end of the buoyant section),
 seacable statics (mesh sequencing from 60 elements): elements of 4 / 2 / 1 / 0.5 / 0.25 m give 0.016165 / 0.016469 /
 0.016552 / 0.016573 / 0.016586 1/m, so 2 m elements are within 0.7 % of the converged 0.01659 (second order), 1 m
-within 0.2 %. MoorDyn joins the three sections at free points, which carry no moment: its curvature peaks elsewhere
-(0.016327 1/m at 2 m segments, in the arch), so its 1 % mesh was not searched for (its static solve at 2 m alone takes
-minutes); it runs here at seacable's 2 m mesh, which favours it.
+within 0.2 %. In time, 0.1 s and 0.05 s steps give the hang-off's largest tension 251.6 and 251.3 kN (0.1 %). CableDyn
+runs at the same 2 m (its deck's fixed step 0.05 s); its own 1 % mesh was not searched for. MoorDyn joins the three
+sections at free points, which carry no moment: its curvature peaks elsewhere (0.016327 1/m at 2 m segments, in the
+arch), so its 1 % mesh was not searched for either (its static solve at 2 m alone takes minutes); both run here at
+seacable's 2 m mesh, which favours them.
 
-Measured 2026-11-30 on the shared 2-core machine at load 6-8 (other jobs running; one process each):
+Measured 2026-11-30 on the shared 2-core machine at load 6-8 (other jobs running; one process each; wall times):
 
-=========================  =================================  =============================================
-code, mesh                 statics                            60 s of heave
-=========================  =================================  =============================================
-seacable, 2 m elements     0.25-0.47 s (178 iterations)       1.1 s CPU (2.2 s wall) at spectral radius 0.9,
-                                                              5.9 Newton iterations a step; 7.1 s at 1 (no
-                                                              numerical damping: 16.7 a step, and halvings)
-MoorDyn 2.7.2, 2 m         139-242 s (IC to 2.3e-3 m/s^2 in   about 89 s (2.96 s for 2 s at dtM 2e-4 s)
-                           its 200 s; 20 s leaves 0.5 kN)
-=========================  =================================  =============================================
+=========================  ==========================  ==================================================
+code, mesh                 statics                     60 s of heave
+=========================  ==========================  ==================================================
+seacable, 2 m elements     0.14-0.47 s                 1.15 s at 0.1 s steps, spectral radius 0.9 (5.9
+                                                       Newton iterations a step); 4.1 s at 0.05 s; 7.1 s
+                                                       at 0.1 s and radius 1 (no numerical damping: 16.7
+                                                       iterations a step, and halvings)
+CableDyn 0.3.0, 2 m        0.22-0.24 s                 6.9-7.1 s at its 0.05 s (largest hang-off 251.6 kN)
+MoorDyn 2.7.2, 2 m         139-242 s (IC to 2.3e-3     about 89 s (2.96 s for 2 s at dtM 2e-4 s)
+                           m/s^2 in its 200 s; 20 s
+                           leaves 0.5 kN)
+=========================  ==========================  ==================================================
 
-So statics plus heave: seacable about 1.5-2.7 s against MoorDyn's 230-330 s, under 0.01 of its time (target 0.1).
-The average-acceleration step (spectral radius 1, the mooring default) rings in the cable's unresolved axial and
-bending modes here, and Newton pays for it; at 0.9 (as CableDyn's generalised-alpha damps them) the response the
-heave drives keeps its peak (the hang-off's largest tension 251.7 kN at 1, 251.6 kN at 0.9).
-MoorDyn's static solve needs its free points started near the answer (from a rough guess it diverged to 2e8 N);
-they are started at seacable's static positions. Hang-off tension: seacable 213.08 kN, MoorDyn 213.04 kN.
+Statics plus heave: seacable 1.3 s at its own 0.1 s step against CableDyn's 7.1 s, 0.18 of it (target 0.5; at
+CableDyn's 0.05 s step 0.60), and against MoorDyn's 230-330 s under 0.01 (target 0.1). MoorDyn's static solve needs
+its free points started near the answer (from a rough guess it diverged to 2e8 N); they are started at seacable's
+static positions. The average-acceleration step (spectral radius 1, the mooring default) rings in the cable's
+unresolved axial and bending modes here, and Newton pays for it; at 0.9 (as CableDyn's generalised-alpha damps
+them) the response the heave drives keeps its peak (the hang-off's largest tension 251.7 kN at 1, 251.6 kN at 0.9).
 
 Run: ``python bench/bench_cable_heave.py [--moordyn]`` (MoorDyn takes minutes; ``pip install -e ".[bench]"``).
 """
@@ -57,11 +62,11 @@ HANG_OFF = (900.0, -20.0)  # from the anchor [m], and its depth [m]
 DEPTH = 800.0
 
 
-def case(element_length: float, *, heave: bool = False, spectral_radius: float = 0.9) -> dict:
-    """The seacable case: statics, or 60 s of 3 m heave at 12 s after a 12 s ramp."""
+def case(element_length: float, *, heave: bool = False, spectral_radius: float = 0.9, time_step: float = 0.1) -> dict:
+    """The seacable case: statics, or 60 s of 3 m heave at 12 s after a 12 s ramp, at ``time_step`` [s]."""
     analysis = {"type": "mooring_static", "fairlead": list(HANG_OFF)}
     if heave:
-        analysis = {"type": "mooring_dynamic", "fairlead": list(HANG_OFF), "duration": 60.0, "time_step": 0.1,
+        analysis = {"type": "mooring_dynamic", "fairlead": list(HANG_OFF), "duration": 60.0, "time_step": time_step,
                     "output_interval": 0.5, "spectral_radius": spectral_radius,
                     "motion": {"type": "harmonic", "amplitude": [0.0, 0.0, 3.0], "period": 12.0, "ramp": 12.0}}
     return {"name": "lazy_wave_800", "line_types": {"cable": CABLE, "buoyant": BUOYANT},
@@ -147,6 +152,42 @@ def run_moordyn(path: Path, duration: float = 60.0, dt: float = 0.01):
     return static, time.perf_counter() - wall, force, peak_curvature(shape[:, 0], shape[:, 2])
 
 
+def run_cabledyn(case, folder: Path, element_length: float = 2.0, dt: float = 0.05):
+    """CableDyn 0.3.0 on the same case (the deck written by ``tests/validation/_cabledyn_peer.py``, its hang-off a
+    coupled point driven through its MoorDyn-like Python API with the heave's position, velocity and acceleration at
+    each step's end, at its deck's fixed step ``dt``): (static s, dynamic s, static hang-off [N], largest hang-off
+    tension of the heave [N])."""
+    sys.path.insert(0, str(Path(__file__).parents[1] / "tests" / "validation"))
+    import _cabledyn_peer as peer
+    from cabledyn.model import CableDyn
+
+    deck = folder / "lazy_wave_800.dat"
+    peer.write_deck(case, deck, element_length=element_length)
+    wall = time.perf_counter()
+    model = CableDyn()
+    model.init_deck(deck)
+    static = time.perf_counter() - wall
+    q0, _, _ = model.get_coupled_motion()
+    top = model.channel("FairTen1")
+    omega, ramp, t, largest = 2.0 * math.pi / 12.0, 12.0, 0.0, 0.0
+    wall = time.perf_counter()
+    for _ in range(round(60.0 / dt)):
+        t += dt
+        x = min(t / ramp, 1.0)
+        r = 0.5 * (1.0 - math.cos(math.pi * x))
+        dr = 0.5 * math.pi / ramp * math.sin(math.pi * x) if t < ramp else 0.0
+        ddr = 0.5 * (math.pi / ramp) ** 2 * math.cos(math.pi * x) if t < ramp else 0.0
+        sn, cs = math.sin(omega * t), math.cos(omega * t)
+        q, v, a = q0.copy(), np.zeros_like(q0), np.zeros_like(q0)
+        q[2] += 3.0 * r * sn
+        v[2] = 3.0 * (dr * sn + r * omega * cs)
+        a[2] = 3.0 * (ddr * sn + 2.0 * dr * omega * cs - r * omega * omega * sn)
+        model.step(dt, q, v, a)
+        largest = max(largest, model.channel("FairTen1"))
+    model.close()
+    return static, time.perf_counter() - wall, top, largest
+
+
 def main(with_moordyn: bool = False) -> None:
     import seacable as sc
 
@@ -167,9 +208,21 @@ def main(with_moordyn: bool = False) -> None:
         ds, wall, _ = solve(case(h))
         print(f"{h:17.2f} {wall:12.2f} {peak_curvature(ds['x'].values, ds['z'].values):21.6f} "
               f"{float(ds['fairlead_tension']) / 1e3:14.3f}")
-    ds, wall, cpu = solve(case(2.0, heave=True))
-    print(f"seacable 2 m, 60 s of heave at spectral radius 0.9: {wall:.2f} s wall, {cpu:.2f} s CPU, hang-off "
-          f"{ds['fairlead_tension'].values.min() / 1e3:.1f}-{ds['fairlead_tension'].values.max() / 1e3:.1f} kN")
+    for dt in (0.1, 0.05):
+        ds, wall, cpu = solve(case(2.0, heave=True, time_step=dt))
+        print(f"seacable 2 m, 60 s of heave at {dt:g} s, spectral radius 0.9: {wall:.2f} s wall, {cpu:.2f} s CPU, "
+              f"hang-off {ds['fairlead_tension'].values.min() / 1e3:.1f}-"
+              f"{ds['fairlead_tension'].values.max() / 1e3:.1f} kN")
+    try:
+        import cabledyn  # noqa: F401
+    except ImportError:
+        print("CableDyn: not installed (pip install cabledyn)")
+    else:
+        path = folder / "case.yaml"
+        path.write_text(yaml.safe_dump(case(2.0), sort_keys=False))
+        static, dynamic, top, largest = run_cabledyn(sc.load_case(path), folder)
+        print(f"CableDyn 2 m: statics {static:.2f} s (hang-off {top / 1e3:.3f} kN), 60 s of heave at 0.05 s "
+              f"{dynamic:.2f} s (largest hang-off {largest / 1e3:.1f} kN)")
     if with_moordyn:
         st, _, _ = solve(case(2.0))
         s = st["s"].values
