@@ -22,18 +22,19 @@ Measured 2026-11-30 on the shared 2-core machine at load 6-8 (other jobs running
 =========================  ==========================  ==================================================
 code, mesh                 statics                     60 s of heave
 =========================  ==========================  ==================================================
-seacable, 2 m elements     0.14-0.47 s                 1.15 s at 0.1 s steps, spectral radius 0.9 (5.9
-                                                       Newton iterations a step); 4.1 s at 0.05 s; 7.1 s
+seacable, 2 m elements     0.14-0.47 s                 1.15-1.28 s at 0.1 s steps, spectral radius 0.9
+                                                       (5.9 Newton iterations a step); 1.57 s at 0.05 s
+                                                       (3.8 a step; once 4.1 s at load 7); 7.1 s
                                                        at 0.1 s and radius 1 (no numerical damping: 16.7
                                                        iterations a step, and halvings)
-CableDyn 0.3.0, 2 m        0.22-0.24 s                 6.9-7.1 s at its 0.05 s (largest hang-off 251.6 kN)
+CableDyn 0.3.0, 2 m        0.21-0.24 s                 6.9-7.4 s at its 0.05 s (largest hang-off 251.6 kN)
 MoorDyn 2.7.2, 2 m         139-242 s (IC to 2.3e-3     about 89 s (2.96 s for 2 s at dtM 2e-4 s)
                            m/s^2 in its 200 s; 20 s
                            leaves 0.5 kN)
 =========================  ==========================  ==================================================
 
-Statics plus heave: seacable 1.3 s at its own 0.1 s step against CableDyn's 7.1 s, 0.18 of it (target 0.5; at
-CableDyn's 0.05 s step 0.60), and against MoorDyn's 230-330 s under 0.01 (target 0.1). MoorDyn's static solve needs
+Statics plus heave: seacable 1.3-1.4 s at its own 0.1 s step against CableDyn's 7.1-7.7 s, 0.18-0.2 of it (target
+0.5; at CableDyn's 0.05 s step, 1.7 s, 0.23), and against MoorDyn's 230-330 s under 0.01 (target 0.1). MoorDyn's static solve needs
 its free points started near the answer (from a rough guess it diverged to 2e8 N); they are started at seacable's
 static positions. The average-acceleration step (spectral radius 1, the mooring default) rings in the cable's
 unresolved axial and bending modes here, and Newton pays for it; at 0.9 (as CableDyn's generalised-alpha damps
