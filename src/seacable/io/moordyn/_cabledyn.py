@@ -90,15 +90,21 @@ def apply_equivalent_buoyancy(rd, section, types, water_density: float, gravity:
     return types
 
 
+def _line_id(rd, lineno, token, table: str, line_ids) -> int:
+    """The line ID ``token`` of a ``table`` row, which must name a line of LINES (``line_ids``)."""
+    lid = _whole(rd, lineno, token, f"{table} LineID")
+    if lid not in line_ids:
+        raise rd.error(lineno, f"{table} names line {lid}, which is not in LINES "
+                               f"({', '.join(map(str, sorted(line_ids)))}). Suggested fix: use a line's ID.")
+    return lid
+
+
 def check_end_connections(rd, section, line_ids) -> None:
     """Read the END CONNECTIONS rows: pinned ends are seacable's own; a clamped or sprung end is refused."""
     _, rows = _table(rd, section)
     for lineno, t in rows:
         rd.columns(lineno, t, 3, "END CONNECTIONS", "LineID End Stiffness EzX EzY EzZ")
-        lid = _whole(rd, lineno, t[0], "END CONNECTIONS LineID")
-        if lid not in line_ids:
-            raise rd.error(lineno, f"END CONNECTIONS names line {lid}, which is not in LINES "
-                                   f"({', '.join(map(str, sorted(line_ids)))}). Suggested fix: use a line's ID.")
+        lid = _line_id(rd, lineno, t[0], "END CONNECTIONS", line_ids)
         stiffness = t[2]
         if stiffness.lower() in ("pinned", "free", "zero") or _as_float(stiffness) == 0.0:
             continue
@@ -117,10 +123,7 @@ def read_attachments(rd, section, lines):
     found: dict[int, list] = {}
     for lineno, t in rows:
         rd.columns(lineno, t, 6, "ATTACHMENTS", "LineID ArcLength Mass Volume CdA Ca [CdAx]")
-        lid = _whole(rd, lineno, t[0], "ATTACHMENTS LineID")
-        if lid not in by_id:
-            raise rd.error(lineno, f"ATTACHMENTS names line {lid}, which is not in LINES "
-                                   f"({', '.join(map(str, sorted(by_id)))}). Suggested fix: use a line's ID.")
+        lid = _line_id(rd, lineno, t[0], "ATTACHMENTS", by_id)
         line = by_id[lid]
         parts = t[1].split(":")
         if len(parts) not in (1, 3):
