@@ -47,7 +47,9 @@ V_SIZE = 12
 # Columns of the bending hinges' table ``hinge_ei`` (one row per row of ``hinges``, :func:`bending_loads`): the
 # bending stiffness EI [N m^2] of an inner hinge (the mean of its two elements') or of a held end's end element
 # (H_EI); the hinge's kind (H_KIND: H_INNER, H_CLAMP or H_SPRING); for a held end its given direction, a unit vector
-# from the end node into the line (H_D, H_D + 1, H_D + 2) [-], and a spring's rotational stiffness (H_K) [N m/rad]
-H_EI, H_KIND, H_D, H_K = 0, 1, 2, 5
-H_SIZE = 6
+# from the end node into the line (H_D, H_D + 1, H_D + 2) [-], and a spring's rotational stiffness (H_K) [N m/rad];
+# for a held end that turns with a moving platform, the motion channels of its direction's point (the end plus its
+# direction, moved by the same rigid motion: H_DCH) and of the end itself (H_ECH), -1 for a fixed direction
+H_EI, H_KIND, H_D, H_K, H_DCH, H_ECH = 0, 1, 2, 5, 6, 7
+H_SIZE = 8
 H_INNER, H_CLAMP, H_SPRING = 0.0, 1.0, 2.0

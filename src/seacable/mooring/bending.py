@@ -27,14 +27,15 @@ def _unit(v):
     return np.divide(v, n, out=np.zeros_like(v), where=n > 0), n[..., 0]
 
 
-def bending_state(net: Network, X):
+def bending_state(net: Network, X, directions=None):
     """Curvature [1/m], bend-moment vectors [N m], shear [N] and declination [rad] of a network's lines at ``X``.
 
     ``X`` (..., n, 3) node positions [m]. Returns ``(curvature, moment, shear, declination)``: ``curvature``
     (..., n) at every node (0 where no hinge acts: a pinned end, a node without EI), ``moment`` (..., n, 3) the
     bend moment vectors (their norm the bend moment), ``shear`` (..., e) per element, ``declination`` (..., n)
     the angle of the line's direction (towards end B) from the upward vertical, at an inner node that of the
-    bisector of its two elements, at an end node that of its end element.
+    bisector of its two elements, at an end node that of its end element. ``directions`` (..., h, 3), optional: each
+    hinge's given direction at each state (a held end turning with a platform), instead of the table's at rest.
     """
     X = np.asarray(X, float)
     lead = X.shape[:-2]
@@ -46,7 +47,7 @@ def bending_state(net: Network, X):
         at_a, at_b = i0 == i1, i1 == i2
         a, l1 = _unit(X[..., i1, :] - X[..., i0, :])
         b, l2 = _unit(X[..., i2, :] - X[..., i1, :])
-        e = table[:, H_D:H_D + 3]
+        e = table[:, H_D:H_D + 3] if directions is None else np.asarray(directions, float)
         a = np.where(at_a[:, None], e, a)      # end A: the direction given, into the line
         b = np.where(at_b[:, None], -e, b)     # end B: the line's direction there (towards end B)
         theta = 2.0 * np.arcsin(np.clip(0.5 * np.linalg.norm(b - a, axis=-1), 0.0, 1.0))
@@ -77,16 +78,17 @@ def bending_state(net: Network, X):
     return curvature, moment, shear, declination
 
 
-def bending_variables(net: Network, X, dims=("node",)) -> dict:
+def bending_variables(net: Network, X, dims=("node",), directions=None) -> dict:
     """The Dataset variables of a line with bending stiffness or a held end (none for a truss with pinned ends):
     ``curvature``, ``bend_moment``, ``declination`` at the nodes and ``shear_force`` per element
-    (:func:`bending_state`). ``dims`` as the positions', the node's last."""
+    (:func:`bending_state`, ``directions`` its held ends' directions at each state). ``dims`` as the positions', the
+    node's last."""
     from ..results import var
 
     if not net.hinge_arrays()[0].shape[0]:
         return {}
     lead = tuple(dims[:-1])
-    curvature, moment, shear, declination = bending_state(net, X)
+    curvature, moment, shear, declination = bending_state(net, X, directions)
     return {
         "curvature": var(dims, curvature, "1/m", "curvature of the line (0 at a pinned end)"),
         "bend_moment": var(dims, np.linalg.norm(moment, axis=-1), "N m",

@@ -40,8 +40,8 @@ class EndCondition(Model):
     ``EI kappa`` of its end element's EI. ``spring``: a rotational spring of ``stiffness`` about that
     direction between the holder and the line's end tangent (the moment ``k theta`` at the angle ``theta`` between
     them; the kernel puts it in series with the end's half element, :func:`seacable.mooring.kernel.end_bending_loads`).
-    The direction is fixed in space in statics; in dynamics it is the direction at rest (a fairlead's motion
-    moves the end, not yet its direction).
+    The direction is fixed in space in statics; in dynamics, at a fairlead a motion moves, it turns with the motion's
+    rigid rotation (a platform's roll, pitch and yaw; :func:`seacable.mooring.run.turn_with_motion`).
     """
 
     type: Literal["pinned", "clamped", "spring"] = Field(

@@ -86,8 +86,8 @@ from ._loads import loads, loads_water, n_water
 # this module, and the parts' names they and the tests use
 from ._indices import (  # noqa: F401
     E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_MU, E_RHO,
-    E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_EI, H_INNER, H_K,
-    H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
+    E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_DCH, H_ECH, H_EI,
+    H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
 from ._seabed import seabed_at  # noqa: F401
 from ._water import _fluid, point_lift  # noqa: F401
 
@@ -224,6 +224,23 @@ def predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt):
 
 
 @njit(cache=True)
+def turn_held_ends(hinge_ei, px, step):
+    """The held ends that turn with a moving platform (``hinge_ei[h, H_DCH] >= 0``) take their direction at ``step``:
+    from the end's motion channel to its direction point's, both moved by the platform's rigid motion."""
+    for h in range(hinge_ei.shape[0]):
+        dch = int(hinge_ei[h, H_DCH])
+        if hinge_ei[h, H_KIND] == H_INNER or dch < 0:
+            continue
+        ech = int(hinge_ei[h, H_ECH])
+        norm = 0.0
+        for r in range(3):
+            norm += (px[step, dch, r] - px[step, ech, r]) ** 2
+        norm = math.sqrt(norm)
+        for r in range(3):
+            hinge_ei[h, H_D + r] = (px[step, dch, r] - px[step, ech, r]) / norm
+
+
+@njit(cache=True)
 def newmark_steps(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can,
                   cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx,
                   nfree, bw,
@@ -284,6 +301,7 @@ def newmark_work(X, V, A, t0, dt, px, pv, pa, channel, elements, L0, EA, cdamp, 
         copy_2d(An, A)
         t = t0 + (step + 1) * dt
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
+        turn_held_ends(hinge_ei, px, step)
         ok = False
         res = 0.0
         res_prev = np.inf

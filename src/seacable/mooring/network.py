@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import InputError
 from ..line import Line, resolve_sections
 from ..sections import element_bending_stiffness
-from ._indices import H_CLAMP, H_D, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
+from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -168,6 +168,7 @@ class Network:
             ie, iw = (int(nodes[0]), int(nodes[1])) if end == 0 else (int(nodes[-1]), int(nodes[-2]))
             e = of.get((ie, iw), of.get((iw, ie)))
             row = np.zeros(H_SIZE)
+            row[H_DCH] = row[H_ECH] = -1.0  # a direction fixed in space (a moving platform's: the run sets them)
             row[H_EI] = 0.0 if ei is None else float(np.asarray(ei, float)[e])
             row[H_KIND] = H_CLAMP if kind == "clamp" else H_SPRING
             if kind != "clamp":

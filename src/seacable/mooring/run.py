@@ -3,22 +3,22 @@
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
-from ..errors import InputError, SeacableWarning
+from ..errors import InputError
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
 from .bending import bending_variables
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
+from .kernel import H_D, H_DCH, H_ECH, H_INNER, H_KIND
 from .loop import evaluate_states
-from .motion import PlatformMotion, RAOMotion, bind, forcing_period, sea_of
+from .motion import RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .outputs import (
     at_motion_start,
@@ -245,6 +245,51 @@ def _end_setup(model: MooringModel, part: bool = False):
     return kept
 
 
+def turning_points(model: MooringModel):
+    """The held ends of ``model`` at a prescribed node, which turn with the node's platform: ``(rows, end channels,
+    points)``, the hinge rows, the end nodes' motion channels and the points (k, 3) [m] one metre from each end along
+    its given direction (into the line), which the platform's rigid motion moves with the end."""
+    net = model.network
+    rows, channels, points = [], [], []
+    for h in range(model.hinges.shape[0]):
+        end = int(model.hinges[h, 1])
+        if model.hinge_ei[h, H_KIND] == H_INNER or net.channel[end] < 0:
+            continue
+        rows.append(h)
+        channels.append(int(net.channel[end]))
+        points.append(net.position[end] + model.hinge_ei[h, H_D:H_D + 3])
+    return rows, channels, np.array(points, float).reshape(-1, 3)
+
+
+def turn_with_motion(model: MooringModel, motion, n_channels: int) -> None:
+    """Make ``model``'s held ends at prescribed nodes turn with the platform's motion (:func:`turning_points`): their
+    direction points are the bound ``motion``'s channels from ``n_channels`` on, in their order; the kernel takes each
+    step's direction from them (:func:`seacable.mooring.kernel.turn_held_ends`), the static start the direction at
+    t = 0."""
+    rows, channels, _ = turning_points(model)
+    if not rows or motion is None:
+        return
+    at_start = motion(np.zeros(1))[0][0]
+    for j, (h, ch) in enumerate(zip(rows, channels)):
+        model.hinge_ei[h, H_DCH], model.hinge_ei[h, H_ECH] = n_channels + j, ch
+        d = at_start[n_channels + j] - at_start[ch]
+        model.hinge_ei[h, H_D:H_D + 3] = d / np.linalg.norm(d)
+
+
+def turning_end_directions(model: MooringModel, motion, times):
+    """The held ends' given directions (nt, h, 3) at ``times`` [s] of a run whose held ends turn with its platform
+    (:func:`turn_with_motion`), the others' at rest; None when none turns."""
+    table = model.hinge_ei
+    if motion is None or not table.shape[0] or not np.any(table[:, H_DCH] >= 0):
+        return None
+    P = motion(np.asarray(times, float))[0]
+    out = np.repeat(table[None, :, H_D:H_D + 3], len(times), axis=0)
+    for h in np.flatnonzero(table[:, H_DCH] >= 0):
+        d = P[:, int(table[h, H_DCH])] - P[:, int(table[h, H_ECH])]
+        out[:, h] = d / np.linalg.norm(d, axis=-1, keepdims=True)
+    return out
+
+
 def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
     """Whether the support forces and element tensions of ``model`` at its states, as a static solve or a time
     loop stores them, hold the line's end loads as :func:`line_end_forces` evaluates them, the same floats: the
@@ -253,6 +298,8 @@ def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
     time is that of its last step, which may round differently from the output time)."""
     if own is not model or own.visco.shape[0]:
         return False
+    if time is not None and np.any(own.hinge_ei[:, H_DCH] >= 0):
+        return True  # held ends turning with a platform: the loop's own end loads, at each step's direction
     return time is None or (own.env[K_WH] <= 0.0 and own.sea[S_MODE] <= 0.0)
 
 
@@ -346,7 +393,8 @@ def _fairlead_end(net: Network) -> tuple[int, int]:
 
 
 def network_variables(model: MooringModel, X, tension, support, dims=("node",), *, velocity=None,
-                      acceleration=None, time=None, kinematic_nodes=None, own_support=False, end_support=None):
+                      acceleration=None, time=None, kinematic_nodes=None, own_support=False, end_support=None,
+                      end_directions=None):
     """Shape, tensions and end forces of one line at one or more states.
 
     ``fairlead_tension`` and ``anchor_tension`` are the line's own end tensions
@@ -356,7 +404,8 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     environment), read where they hold the line's end loads (:func:`line_end_forces`); ``end_support``
     (..., 2, 3) gives those support forces at the line's two end nodes only (``support`` then unused). Give ``velocity``,
     ``acceleration`` and ``time`` of a time-domain run so that the end forces include the half element's
-    water loads and inertia (``kinematic_nodes``: the nodes they hold, None for all).
+    water loads and inertia (``kinematic_nodes``: the nodes they hold, None for all). ``end_directions`` (..., h, 3):
+    the bending hinges' given directions at each state (:func:`turning_end_directions`), None: at rest.
     """
     from ..results import var
 
@@ -385,7 +434,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
     for k, name in enumerate("xyz"):
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
                                              f"{name} force of the line on its fairlead end")
-    data.update(bending_variables(net, X, dims))
+    data.update(bending_variables(net, X, dims, end_directions))
     return data
 
 
@@ -485,12 +534,6 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
-    if a.fairlead_end_condition.holds and isinstance(a.motion, (PlatformMotion, RAOMotion)):
-        warnings.warn(f"analysis.fairlead_end_condition is {a.fairlead_end_condition.type} and the fairlead moves "
-                      "with a platform's rotations: the end's direction stays at rest (its rotation is not yet followed), so the "
-                      "hang-off moment and curvature miss the platform's roll and pitch. Suggested fix: judge the "
-                      "hang-off angle range from the platform's rotations, or use a pinned end.",
-                      SeacableWarning, stacklevel=2)
     model = case_model(case, end_b="free" if free else "prescribed", fairlead=a.release_from)
     net = model.network
     steps = a.duration / min(a.time_step, a.output_interval)
@@ -501,10 +544,16 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
     # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
     # now (a time series too short fails here) and check it at the output times
-    motion = bind(a.motion, net.channel_positions(), a.duration, sea=sea_of(model.water))
+    # a held end at the moved fairlead turns with the platform: a point one metre along its direction is moved by the
+    # same motion, as extra channels after the network's own (turn_with_motion)
+    base = net.channel_positions()
+    n_channels = len(base)
+    motion = bind(a.motion, np.concatenate((base, turning_points(model)[2])), a.duration, sea=sea_of(model.water))
     if isinstance(a.motion, RAOMotion):  # the platform's mean offset: the static start is there
         model, start = (at_motion_start(m, motion) for m in (model, start))
         net = model.network
+    for m in {id(model): model, id(start): start}.values():
+        turn_with_motion(m, motion, n_channels)
     times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
         check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
@@ -615,14 +664,18 @@ def run_attributes(run: MooringRun) -> dict:
             "recommended_time_step": run.recommended_time_step}  # solver.recommended_time_step [s]
 
 
-def run_variables(model: MooringModel, run: MooringRun):
+def run_variables(model: MooringModel, run: MooringRun, motion=None):
     """The variables and coordinates of (a block of outputs of) a time-domain run of a single-line network:
-    everything but the snap loads, which take the whole run (:func:`snap_variables`)."""
+    everything but the snap loads, which take the whole run (:func:`snap_variables`). ``motion``: the run's bound
+    motion, whose channels turn its held ends (:func:`turn_with_motion`)."""
     from ..results import var
 
+    turning = turning_end_directions(model, motion, run.time)
+    # held ends turning with the platform: the end forces as the loop computed them, at each step's direction
     data = network_variables(model, run.position, run.tension, run.support, dims=("time", "node"),
                              velocity=run.velocity, acceleration=run.acceleration, time=run.time,
-                             kinematic_nodes=run.kinematic_nodes)
+                             kinematic_nodes=run.kinematic_nodes, end_directions=turning,
+                             own_support=turning is not None and run.support is not None)
     data.update(slack_variables(run))
     data.update(elevation_variables(model.water, run.time))
     return data, {**_coords(model.network), "time": var("time", run.time, "s", "time")}
@@ -647,7 +700,7 @@ def run_mooring_dynamic(case: Case, progress=None, out=None):
                        forcing_period=forcing_period(a.motion, getattr(waves, "period", None)
                                                      or getattr(waves, "tp", None)),
                        kinematics=line_end_nodes(model.network),
-                       on_outputs=lambda block: sink.append(*run_variables(model, block)))
+                       on_outputs=lambda block: sink.append(*run_variables(model, block, setup.motion)))
         events = {**snap_variables(sink, model.network), **strength_variables(model.network)}
     settings = _settings(model, time_step=run.time_step, steps=run.steps, newton_iterations=run.iterations,
                          spectral_radius=run.spectral_radius, damping_ratio=a.damping_ratio,
