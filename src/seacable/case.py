@@ -729,7 +729,7 @@ Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]  # noqa: UP00
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
-_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, name="stand-in for an invalid line type")
+_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, axial_stiffness=1.0, name="stand-in for an invalid line type")
 
 
 class Case(Model):
