@@ -228,6 +228,23 @@ def test_limits_by_segment_from_the_case():
     assert rows["compression"].value == -300.0 and rows["compression"].limit == 0.0  # element 2 lies in segment a
 
 
+def test_the_worst_point_is_by_utilisation_not_by_value():
+    """Segments 0-35 m (MBR 10 m, no compression) and 35-60 m (MBR 1 m, 1000 N of compression allowed): the worst
+    curvature is node 3's 0.25 x 10 = 2.5 (s = 30 m), not node 6's larger share of its own radius (0.12 / 1 m
+    over 0.25 / 10 m, what kappa / MBR would pick); the worst compression is element 2's -300 N against none
+    (margin -300 N), not element 4's -800 N against 1000 N allowed (margin +200 N)."""
+    types = {"a": {"diameter": 0.15, "mass_per_length": 40.0, "minimum_bend_radius_dynamic": 10.0},
+             "b": {"diameter": 0.15, "mass_per_length": 40.0, "minimum_bend_radius_dynamic": 1.0,
+                   "allowable_compression": 1000.0}}
+    case = _case(line_types=types, segments=[{"line_type": "a", "length": 35.0}, {"line_type": "b", "length": 25.0}])
+    tension = TENSION.copy()
+    tension[0, 4] = -800.0
+    rows = _by_check(cable_checks(_result(case=case, tension=tension)))
+    curv, comp = rows["curvature (dynamic MBR)"], rows["compression"]
+    assert (curv.value, curv.s, curv.time) == (0.25, 30.0, 1.0) and curv.utilisation == pytest.approx(2.5, rel=REL)
+    assert (comp.value, comp.limit, comp.margin, comp.s, comp.passed) == (-300.0, 0.0, -300.0, 25.0, False)
+
+
 def test_sag_and_hog_bend_clearance():
     """The mean shape's arch is node 3 (28.67 m), its sag bend node 5 (13.67 m), the low point before it node 0.
     The sag bend comes down to 12 m (node 5, s = 50 m, t = 1 s): with 5 m required, margin 7 m, utilisation
