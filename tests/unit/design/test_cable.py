@@ -316,3 +316,33 @@ def test_bad_limits_are_refused_with_one_clear_message(kwargs, message):
     with pytest.raises(InputError, match=message) as err:
         CableLimits.uniform(7, **kwargs)
     assert "Suggested fix" in str(err.value) and len(err.value.problems) == 1
+
+
+def test_the_limits_go_into_a_dumped_case_only_when_given():
+    """A case without cable limits dumps as it did before they existed (so its results' 'case' attribute, and their
+    fingerprints, are unchanged); one with them keeps them through a dump and a reload."""
+    import seacable as sc
+    from seacable._model import dump_yaml
+
+    data = yaml.safe_load(_case(analysis="mooring_static"))
+    data["line"]["segments"][0]["length"] = 60.0
+    data["line_types"]["cable"]["axial_stiffness"] = 1e8
+    data["analysis"].update(fairlead=[40.0, -10.0])
+    plain = dump_yaml(sc.Case(**data))
+    assert "minimum_bend_radius" not in plain and "allowable_" not in plain and "design" not in plain
+    data["line_types"]["cable"].update(minimum_bend_radius=2.0, allowable_compression=0.0)
+    data["analysis"]["design"] = {"hang_off_declination": [0.1, 0.3]}
+    text = dump_yaml(sc.Case(**data))
+    again = sc.Case(**yaml.safe_load(text))
+    assert again.line.segments[0].line_type.minimum_bend_radius == 2.0
+    assert again.line.segments[0].line_type.allowable_compression == 0.0
+    assert again.analysis.design.hang_off_declination == (0.1, 0.3)
+    assert dump_yaml(again) == text
+
+
+def test_an_mbr_in_millimetres_is_warned_about():
+    import seacable as sc
+    from seacable.errors import SeacableWarning
+
+    with pytest.warns(SeacableWarning, match=r"minimum_bend_radius = 3000 m is over 1000 times the diameter 0.15 m"):
+        sc.LineType(diameter=0.15, mass_per_length=40.0, minimum_bend_radius=3000.0)
