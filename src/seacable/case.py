@@ -594,10 +594,10 @@ class _Mooring(_Moored):
     tolerance: quantity("-", gt=0, lt=1e-2) = Field(
         1e-8, description="Newton tolerance on the force residual, relative to the largest tension or "
                           "node weight. [-]")
-    anchor_end: EndCondition = Field(
+    anchor_end_condition: EndCondition = Field(
         default_factory=EndCondition, description="How end A (the anchor) is held in bending: pinned (default), "
                                                   "clamped at a declination and azimuth, or a rotational spring.")
-    fairlead_end: EndCondition = Field(
+    fairlead_end_condition: EndCondition = Field(
         default_factory=EndCondition, description="How end B (the fairlead, a hang-off) is held in bending: "
                                                   "pinned (default), clamped or a rotational spring.")
     design: CableDesign | None = Field(
@@ -661,10 +661,10 @@ class MooringDynamicAnalysis(_Mooring):
         if self.output_interval > self.duration:
             raise ValueError(f"output_interval ({self.output_interval:g} s) must not exceed duration "
                              f"({self.duration:g} s).")
-        if self.end_b == "free" and self.fairlead_end.holds:
-            raise ValueError(f"a free end B cannot be held at a direction (fairlead_end: {self.fairlead_end.type}): "
-                             "nothing holds it. Suggested fix: leave fairlead_end out (pinned), or use "
-                             "end_b: fairlead.")
+        if self.end_b == "free" and self.fairlead_end_condition.holds:
+            raise ValueError(f"a free end B cannot be held at a direction (fairlead_end_condition: "
+                             f"{self.fairlead_end_condition.type}): nothing holds it. Suggested fix: leave "
+                             "fairlead_end_condition out (pinned), or use end_b: fairlead.")
         if self.end_b == "free" and self.motion is not None:
             raise ValueError("a free end B cannot follow a 'motion'. Suggested fix: drop 'motion' or use "
                              "end_b: fairlead.")

@@ -1,7 +1,7 @@
 """Clamped and spring line ends of the mooring finite-element line with bending stiffness, against closed forms.
 
-Issue 40: a line end held at a direction (``analysis.anchor_end`` / ``fairlead_end``) is a hinge between the
-given direction ``e`` and the end element (:func:`seacable.mooring.kernel.end_bending_loads`):
+Issue 40: a line end held at a direction (``analysis.anchor_end_condition`` / ``fairlead_end_condition``) is a
+hinge between the given direction ``e`` and the end element (:func:`seacable.mooring.kernel.end_bending_loads`):
 ``kappa = 4 sin(theta / 2) / l`` (the end node's half element ``l / 2``), ``M = EI kappa`` for a clamp, and a
 rotational spring ``k`` in series with that half element, ``M = theta / (1 / k + l / (2 EI))``. Its curvature,
 bend moment and shear outputs are :func:`seacable.mooring.bending.bending_state`.
@@ -372,7 +372,8 @@ def test_case_fairlead_clamp_declination_convention():
     the same moment (to 1e-9). End A pinned: no curvature there."""
     errors, runs = [], {}
     for n, azimuth in ((60, 0.0), (120, 0.0), (60, math.pi)):
-        ds = sc.run(_case(n_elements=n, fairlead_end={"type": "clamped", "declination": 0.1, "azimuth": azimuth}))
+        clamp = {"type": "clamped", "declination": 0.1, "azimuth": azimuth}
+        ds = sc.run(_case(n_elements=n, fairlead_end_condition=clamp))
         runs[n, azimuth] = ds
         assert float(ds.curvature[0]) == 0.0
         if azimuth == 0.0:
@@ -397,7 +398,7 @@ def test_case_fairlead_clamp_declination_convention():
 ])
 def test_bad_end_conditions_are_refused(end, message):
     with pytest.raises(InputError, match=message):
-        _case(fairlead_end=end)
+        _case(fairlead_end_condition=end)
 
 
 def test_clamp_on_a_line_without_bending_stiffness_is_refused():
@@ -405,6 +406,6 @@ def test_clamp_on_a_line_without_bending_stiffness_is_refused():
 
     data = yaml.safe_load(_HANG)
     data["line"]["segments"][0]["line_type"]["bending_stiffness"] = 0.0
-    data["analysis"]["anchor_end"] = {"type": "clamped", "declination": 0.0}
-    with pytest.raises(InputError, match=r"anchor_end is clamped, but .* no bending stiffness \(EI = 0 N m\^2\)"):
+    data["analysis"]["anchor_end_condition"] = {"type": "clamped", "declination": 0.0}
+    with pytest.raises(InputError, match=r"anchor_end_condition is clamped, but .* bending stiffness \(EI = 0 N m\^2\)"):
         sc.check(sc.Case(**data))

@@ -86,10 +86,11 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
                             stiffness_proportional=beta, end_b=end_b)
-    held = tuple(cond.hinge(0, end) for end, cond in enumerate((a.anchor_end, a.fairlead_end)) if cond.holds)
+    conditions = (("anchor_end_condition", a.anchor_end_condition), ("fairlead_end_condition", a.fairlead_end_condition))
+    held = tuple(cond.hinge(0, end) for end, (_, cond) in enumerate(conditions) if cond.holds)
     if held:
         ei = np.zeros(net.n_elements) if net.bending_stiffness is None else net.bending_stiffness
-        for end, name, cond in ((0, "anchor_end", a.anchor_end), (1, "fairlead_end", a.fairlead_end)):
+        for end, (name, cond) in enumerate(conditions):
             e = 0 if end == 0 else net.n_elements - 1
             if cond.holds and not ei[e] > 0:
                 raise InputError(
@@ -483,9 +484,9 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     """
     a: MooringDynamicAnalysis = case.analysis
     free = a.end_b == "free"
-    if a.fairlead_end.holds and isinstance(a.motion, (PlatformMotion, RAOMotion)):
-        warnings.warn(f"analysis.fairlead_end is {a.fairlead_end.type} and the fairlead moves with a platform's "
-                      "rotations: the end's direction stays at rest (its rotation is not yet followed), so the "
+    if a.fairlead_end_condition.holds and isinstance(a.motion, (PlatformMotion, RAOMotion)):
+        warnings.warn(f"analysis.fairlead_end_condition is {a.fairlead_end_condition.type} and the fairlead moves "
+                      "with a platform's rotations: the end's direction stays at rest (its rotation is not yet followed), so the "
                       "hang-off moment and curvature miss the platform's roll and pitch. Suggested fix: judge the "
                       "hang-off angle range from the platform's rotations, or use a pinned end.",
                       SeacableWarning, stacklevel=2)

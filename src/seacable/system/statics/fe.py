@@ -117,8 +117,8 @@ def _end_force(model, X, e: int, node: int) -> np.ndarray:
              net.axial_damping[sl], net.mass_per_length[sl], net.diameter[sl], net.cdn[sl], net.cdt[sl], net.can[sl],
              net.cat[sl], weight, zeros, zeros, zeros, np.zeros((n, 3)), bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl],
              tx, ty,
-             np.zeros((0, 3), np.int64), np.zeros(0), visco, model.fidx, model.env, model.cur_depth, model.cur_speed,
-             False, model.sea, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
+             np.zeros((0, 3), np.int64), np.zeros((0, MK.H_SIZE)), visco, model.fidx, model.env, model.cur_depth,
+             model.cur_speed, False, model.sea, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
     f = F[node]
     bed = _on_seabed(model, X[[a, b]])
     if net.kind[node] != FREE and bed.all():
