@@ -32,7 +32,7 @@ analysis:
   anchor: [0, -100]
   fairlead: [80, -10]
   n_elements: 20
-  fairlead_end: {type: clamped, declination: 0.1}
+  fairlead_end_condition: {type: clamped, declination: 0.1}
   design: {hang_off_declination: [0.0, 0.3]}
 """
 MOTION = {"type": "harmonic", "amplitude": [1.0, 0.0, 0.5], "period": 4.0, "ramp": 1.0}
@@ -118,7 +118,7 @@ def test_a_result_without_curvature_gets_the_report_it_had(tmp_path):
 
     data = _data(type="mooring_dynamic", duration=3.0, time_step=0.1, output_interval=0.5, motion=MOTION)
     data["line_types"]["cable"]["bending_stiffness"] = 0.0
-    del data["analysis"]["fairlead_end"]
+    del data["analysis"]["fairlead_end_condition"]
     ds = sc.run(sc.Case(**data))
     assert "curvature" not in ds
     written = make_report(ds, tmp_path / "report.html")
