@@ -53,6 +53,7 @@ the result's ``attrs["depth"]`` (flat). A node on the seabed shows the contact's
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, fields
 
 import numpy as np
@@ -215,7 +216,8 @@ def range_graphs(ds: xr.Dataset, line: str | None = None) -> xr.Dataset:
         keep = np.isfinite(values).any(axis=0)  # a line padded to a longer one's nodes (NaN)
         values = np.where(keep, values, np.nan)
         for stat, word in _STATS.items():
-            with np.errstate(all="ignore"):
+            with warnings.catch_warnings():  # a padded node's all-NaN column is NaN, as it should be
+                warnings.simplefilter("ignore", RuntimeWarning)
                 v = getattr(np, f"nan{stat}")(values, axis=0) if keep.any() else values[0]
             data[f"{name}_{stat}"] = xr.Variable(dim, v, {"units": units, "long_name": f"{word} {long_name}"})
     coords = {"s": ("node", _node_s(one), {"units": "m", "long_name": "unstretched arc length from end A"})}
@@ -624,7 +626,9 @@ def _clearance_checks(ds, one, limits, state, states, s_node, line) -> list[Cabl
     if h_da is None:
         return [_skip(n, "seabed_clearance", "m", "min", "the result tells no seabed (no depth)") for n in names]
     h = _states(h_da, state, "node")
-    found = bends(np.nanmean(h, axis=0))
+    keep = np.isfinite(h).all(axis=0)  # a line padded to a longer one's nodes (NaN) is its own nodes
+    h, s_node = h[:, keep], s_node[keep]
+    found = bends(np.mean(h, axis=0))
     if found is None:
         why = ("the line's mean shape has no arch (a hog bend): its only sag bend is the touchdown, on the seabed "
                "by design")

@@ -346,3 +346,21 @@ def test_an_mbr_in_millimetres_is_warned_about():
 
     with pytest.warns(SeacableWarning, match=r"minimum_bend_radius = 3000 m is over 1000 times the diameter 0.15 m"):
         sc.LineType(diameter=0.15, mass_per_length=40.0, minimum_bend_radius=3000.0)
+
+
+def test_a_result_of_several_lines_is_read_line_by_line():
+    """A result with a ``line`` dimension (a MoorDyn deck's): line 'b' is line 'a' with a node less, padded with
+    NaN as the results pad a shorter line; its checks and range graphs are its own nodes'; a missing name is
+    refused naming the lines."""
+    a = _result()
+    b = a.copy(deep=True)
+    for v in ("x", "y", "z", "tension", "curvature", "bend_moment", "declination"):
+        b[v].values[..., -1] = np.nan
+    b["z"].values[:, 5] = H[:, 5] - DEPTH - 1.0  # its sag bend a metre lower
+    both = xr.concat([a, b], dim="line").assign_coords(line=["a", "b"])
+    sag = _by_check(cable_checks(both, CableLimits.uniform(7), line="b"))["sag bend clearance"]
+    assert sag.passed and sag.value == 11.0 and (sag.s, sag.time) == (50.0, 1.0)
+    rg = range_graphs(both, line="b")
+    assert rg["curvature_max"][3] == 0.25 and np.isnan(rg["curvature_max"][6])
+    with pytest.raises(InputError, match=r"the result holds the lines \['a', 'b'\]; line='c'"):
+        range_graphs(both, line="c")
