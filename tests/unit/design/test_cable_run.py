@@ -126,3 +126,25 @@ def test_a_result_without_curvature_gets_the_report_it_had(tmp_path):
         ["report.html", "report_extremes.csv", "report_seeds.csv", "report_checks.csv", "report_fatigue.csv",
          "report_components.csv", "report_combined.csv"])
     assert "Cable" not in (tmp_path / "report.html").read_text()
+
+
+def test_the_report_envelopes_a_load_cases_seeds_and_keeps_load_cases_apart(dynamic, tmp_path):
+    """Two seeds of one load case (the second's curvature 1.1 times the first's): the report's range graphs are
+    their envelope (the larger maximum at each node, the mean of the means); two load cases: a load_case
+    dimension, and the checks of each run in the CSV."""
+    from seacable.report import make_report
+
+    other = dynamic.copy(deep=True)
+    other["curvature"] = other["curvature"] * 1.1
+    make_report({"storm": [dynamic, other]}, tmp_path / "one" / "report.html")
+    first, second = cable.range_graphs(dynamic), cable.range_graphs(other)
+    with xr.open_dataset(tmp_path / "one" / "report_range_graphs.nc") as rg:
+        assert np.allclose(rg["curvature_max"], np.fmax(first["curvature_max"], second["curvature_max"]))
+        assert np.allclose(rg["curvature_mean"], 0.5 * (first["curvature_mean"] + second["curvature_mean"]))
+        assert rg.attrs["states"] == 2 * dynamic.sizes["time"]
+    make_report({"near": [dynamic], "far": [other]}, tmp_path / "two" / "report.html")
+    with xr.open_dataset(tmp_path / "two" / "report_range_graphs.nc") as rg:
+        assert list(rg["load_case"].values) == ["near", "far"]
+        assert np.allclose(rg["curvature_max"].sel(load_case="far"), second["curvature_max"])
+    table = pd.read_csv(tmp_path / "two" / "report_cable_checks.csv")
+    assert sorted(set(table["load_case"])) == ["far", "near"] and len(table) == 14
