@@ -21,7 +21,7 @@ import math
 from typing import Annotated, Any, ClassVar, Literal, Union
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, model_serializer, model_validator
 
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest
 from .environment import Environment, _warn_if_degrees
@@ -48,6 +48,7 @@ from .towline.barge_model import Barge
 
 __all__ = [
     "Analysis",
+    "CableDesign",
     "Case",
     "LayPlanAnalysis",
     "LayingDynamicAnalysis",
@@ -535,6 +536,52 @@ class VerticalModesAnalysis(Model):
         return ("string", "exact", "wave") if self.bottom_tension > 0 else ("exact", "wave")
 
 
+class CableDesign(Model):
+    """The design criteria of a cable's configuration that its line types do not hold (issue 40), read by the
+    cable checks of :mod:`seacable.design.cable` from the case a result records.
+
+    Parameters
+    ----------
+    sag_bend_clearance
+        The smallest height above the seabed the sag bend (the trough between the hog bend's arch and end B, the
+        hang-off) may come down to; 0: it must not touch the seabed. [m]
+    hog_bend_clearance
+        The smallest height above the seabed the hog bend's crest (the arch over the buoyancy) may come down to;
+        0: the arch must not fall onto the seabed. [m]
+    hang_off_declination
+        The range ``(lowest, highest)`` the line's declination at end B (its angle from the upward vertical,
+        towards end B, as ``declination`` in the results) must stay in; None: not checked. [rad]
+    """
+
+    sag_bend_clearance: quantity("m", ge=0, fix="give the sag bend's required height above the seabed in m "
+                                               "(0: it must not touch down).") = Field(
+        0.0, description="Smallest height of the sag bend above the seabed; 0: no touchdown. [m]")
+    hog_bend_clearance: quantity("m", ge=0, fix="give the hog bend's required height above the seabed in m "
+                                               "(0: the arch must not fall onto it).") = Field(
+        0.0, description="Smallest height of the hog bend's crest above the seabed. [m]")
+    hang_off_declination: tuple[float, float] | None = Field(
+        None, description="Range (lowest, highest) of the declination at end B, 0 to pi. [rad]")
+
+    @model_validator(mode="after")
+    def _check_range(self):
+        r = self.hang_off_declination
+        if r is None:
+            return self
+        lo, hi = r
+        fix = ("Suggested fix: give the range in radians from the upward vertical, 0 to pi (0 to 180 deg), lowest "
+               "first, e.g. [0.1, 0.35] for a hang-off between 6 and 20 deg off vertical.")
+        if not all(math.isfinite(v) for v in r):
+            raise ValueError(f"hang_off_declination must be two finite angles in rad, got {list(r)}. {fix}")
+        if min(r) < 0.0 or max(r) > math.pi:
+            degrees = " (it looks like degrees)" if max(r) > math.pi and max(r) <= 180.0 else ""
+            raise ValueError(f"hang_off_declination must lie within 0 to 3.14159 rad, got [{lo:g}, {hi:g}] rad"
+                             f"{degrees}. {fix}")
+        if not lo < hi:
+            raise ValueError(f"hang_off_declination must be (lowest, highest) with lowest < highest, got [{lo:g}, "
+                             f"{hi:g}] rad. {fix}")
+        return self
+
+
 class _Mooring(_Moored):
     """Options shared by the analyses of the mooring finite-element model (paper 004)."""
 
@@ -553,6 +600,18 @@ class _Mooring(_Moored):
     fairlead_end_condition: EndCondition = Field(
         default_factory=EndCondition, description="How end B (the fairlead, a hang-off) is held in bending: "
                                                   "pinned (default), clamped or a rotational spring.")
+    design: CableDesign | None = Field(
+        None, description="Design criteria of a cable's configuration (clearances of its bends, the hang-off "
+                          "angle range) for the cable checks; the cable's own limits are on its line types.")
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_design(self, handler):
+        # 'design' appears in a dumped case (a result's 'case' attribute) only when given: the cases without it
+        # read as they did before it existed
+        data = handler(self)
+        if isinstance(data, dict) and data.get("design", 0) is None:
+            del data["design"]
+        return data
 
 
 class MooringStaticAnalysis(_Mooring):
@@ -678,7 +737,7 @@ Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]  # noqa: UP00
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
-_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, name="stand-in for an invalid line type")
+_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, axial_stiffness=1.0, name="stand-in for an invalid line type")
 
 
 class Case(Model):

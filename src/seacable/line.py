@@ -26,6 +26,12 @@ __all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "re
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81
 
+#: The cable limits of a line type, left out of a dumped case when not given.
+_LIMITS = ("minimum_bend_radius", "minimum_bend_radius_dynamic", "allowable_tension", "allowable_compression")
+_MBR_FIX = "give the minimum bend radius in metres (> 0 m), e.g. 3.0 for a cable of 0.15 m diameter."
+#: An MBR over this many diameters looks like millimetres (cables' MBRs are about 10-40 diameters). [-]
+_MBR_IN_MM = 1000.0
+
 
 class LineType(Model):
     """Properties of one kind of cable, rope or chain.
@@ -88,6 +94,20 @@ class LineType(Model):
         ``"spiral_strand_rope"``, ``"polyester_rope"`` or ``"other"`` (no curve of the standard: a cable, an
         umbilical). ``None`` (the default): not said; the design tables then read it from the name where the name
         is not ambiguous, and compute no fatigue where it is.
+    minimum_bend_radius
+        The cable's minimum bend radius (MBR) in a static configuration (the cable maker's static, or
+        installation, MBR): the cable checks (:mod:`seacable.design.cable`) hold a static result's curvature
+        (``mooring_static``, ``mooring_pushover``) to ``1 / MBR``. ``None``: not checked. [m]
+    minimum_bend_radius_dynamic
+        The cable's MBR in service under dynamic loads (the maker's dynamic MBR, no smaller than the static
+        one): the limit of a ``mooring_dynamic`` run's largest curvature. ``None``: not checked (the static MBR
+        is not used for a dynamic run). [m]
+    allowable_tension
+        The largest effective tension allowed in the cable (the maker's allowable, or maximum working,
+        tension). ``None``: not checked. [N]
+    allowable_compression
+        The largest compression (negative effective tension) the cable may take without harm (buckling,
+        armour bird-caging); ``None``: 0 N, the effective tension must stay >= 0. [N]
     """
 
     diameter: quantity("m", gt=0, fix="give the outer diameter in metres, e.g. 0.035.") = Field(
@@ -120,6 +140,44 @@ class LineType(Model):
         None, description="Viscoelastic dynamic stiffness (EA_Dc [N], EA_D_Lm [-]); statics use axial_stiffness.")
     dynamic_axial_damping: quantity("N s", ge=0) | None = Field(
         None, description="Viscoelastic fast damper BA_D, in parallel with the dynamic spring. [N s]")
+    minimum_bend_radius: quantity("m", gt=0, fix=_MBR_FIX) | None = Field(
+        None, description="Minimum bend radius in a static configuration: the limit of a static result's "
+                          "curvature, 1 / MBR. [m]")
+    minimum_bend_radius_dynamic: quantity("m", gt=0, fix=_MBR_FIX) | None = Field(
+        None, description="Minimum bend radius in service under dynamic loads: the limit of a dynamic run's "
+                          "largest curvature. [m]")
+    allowable_tension: quantity("N", gt=0, fix="give the cable's allowable tension in N, e.g. 2.0e5.") | None = Field(
+        None, description="Largest effective tension allowed. [N]")
+    allowable_compression: quantity(
+        "N", ge=0, fix="give the compression the cable may take as a positive force in N (0: none).") | None = Field(
+        None, description="Largest compression (negative effective tension) allowed; None: 0 N. [N]")
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_limits(self, handler):
+        # the cable limits appear in a dumped case (and so in a result's 'case' attribute) only when given, so that
+        # the cases and results of lines without them read as they did before the limits existed
+        data = handler(self)
+        if isinstance(data, dict):
+            for key in _LIMITS:
+                if data.get(key, 0) is None:
+                    del data[key]
+        return data
+
+    @model_validator(mode="after")
+    def _check_limits(self):
+        static, dynamic = self.minimum_bend_radius, self.minimum_bend_radius_dynamic
+        if static is not None and dynamic is not None and dynamic < static:
+            raise ValueError(
+                f"minimum_bend_radius_dynamic {dynamic:g} m is smaller than minimum_bend_radius {static:g} m: a "
+                "cable's dynamic MBR (in service, under cyclic bending) is no smaller than its static one. Suggested "
+                "fix: check that the two are not swapped, and give both in metres.")
+        for key in ("minimum_bend_radius", "minimum_bend_radius_dynamic"):
+            mbr = getattr(self, key)
+            if mbr is not None and mbr > _MBR_IN_MM * self.diameter:
+                warnings.warn(f"LineType.{key} = {mbr:g} m is over {_MBR_IN_MM:g} times the diameter "
+                              f"{self.diameter:g} m (cables' MBRs are about 10-40 diameters): is it in millimetres? "
+                              "Give it in metres.", SeacableWarning, stacklevel=2)
+        return self
 
     @model_validator(mode="after")
     def _drag_law(self):

@@ -9,7 +9,11 @@ design tables of :mod:`seacable.design.summary` (extremes, code checks, fatigue)
   digits) and the figures (matplotlib, inline base64 PNG); inline CSS, no script, nothing fetched;
 - ``report_extremes.csv``, ``report_seeds.csv``, ``report_checks.csv``, ``report_fatigue.csv`` (and
   ``report_fatigue_life.csv`` with a scatter diagram): the same tables in SI units (N, m, s), full precision,
-  the unit of each column in its header.
+  the unit of each column in its header;
+- for a result of a line with bending stiffness (one with ``curvature``, issue 40), also its range graphs and
+  cable checks (:mod:`seacable.design.cable`): a section of the page, ``report_cable_checks.csv`` and the range
+  graphs in ``report_range_graphs.nc`` (a ``load_case`` dimension when there are several). A result without
+  curvature gives the same page and files as before.
 
 Every file is written whole (:mod:`seacable._atomic`).
 """
@@ -32,13 +36,14 @@ import pandas as pd
 
 from ._atomic import atomic_write
 from ._version import __version__
+from .design import cable as cable_
 from .design import checks as checks_
 from .design import summary as ds_
 from .design.combination import API_COMBINATION, DNV_COMBINATION, SPLIT_PERIOD
 from .design.fatigue import DNV_DESIGN_FATIGUE_FACTOR
 from .errors import InputError
 
-__all__ = ["CSV_UNITS", "ReportOptions", "make_report"]
+__all__ = ["CABLE_CSV_UNITS", "CSV_UNITS", "ReportOptions", "make_report"]
 
 #: The unit of each column of the CSV tables, appended to its header.
 CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": "N", "weibull_mpm": "N",
@@ -48,6 +53,10 @@ CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": 
              "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years",
              "lf_std": "N", "wf_std": "N", "lf_period": "s", "wf_period": "s", "api_maximum": "N", "dnv_dynamic": "N",
              "dnv_maximum": "N", "time_domain_maximum": "N"}
+
+#: The units of the cable checks' CSV columns (value, limit and margin in the row's unit: N, 1/m, m or rad).
+CABLE_CSV_UNITS = {"value": "see unit", "limit": "see unit", "margin": "see unit", "utilisation": "-", "s": "m",
+                   "time": "s", "offset": "m"}
 
 
 @dataclass
@@ -140,8 +149,9 @@ def _relative(text, base: Path | None) -> str:
     return _ABSOLUTE.sub(one, str(text))
 
 
-def _with_units(table: pd.DataFrame) -> pd.DataFrame:
-    return table.rename(columns={c: f"{c} [{CSV_UNITS[c]}]" for c in table.columns if c in CSV_UNITS})
+def _with_units(table: pd.DataFrame, units: dict | None = None) -> pd.DataFrame:
+    units = CSV_UNITS if units is None else units
+    return table.rename(columns={c: f"{c} [{units[c]}]" for c in table.columns if c in units})
 
 
 # ------------------------------------------------------------------------------------------------- figures
@@ -192,6 +202,122 @@ class _MostLoaded:
                 self.run, self.line = run, line
                 self.time = np.asarray(ds["time"].values, float)
                 self.tension = record
+
+
+class _Cable:
+    """Kept as the results are read (with :class:`_MostLoaded`): of each run whose result has curvature, each line's
+    range graphs, limits and cable checks (:mod:`seacable.design.cable`)."""
+
+    def __init__(self):
+        self.rows: list[pd.DataFrame] = []
+        self.graphs: list[tuple] = []  # (run, line, range graphs, limits)
+
+    def __call__(self, run, ds) -> None:
+        if not cable_.has_curvature(ds):
+            return
+        for line in ds_.line_names(ds) if "line" in ds.dims else [None]:
+            view = ds.sel(line=line) if line is not None else ds
+            limits = cable_.cable_limits(view)
+            table = cable_.cable_check_table(cable_.cable_checks(ds, limits, line))
+            name = line if line is not None else ds_.line_names(ds)[0]
+            table.insert(0, "line", name)
+            table.insert(0, "seed", run.seed)
+            table.insert(0, "case", run.name)
+            table.insert(0, "load_case", run.load_case)
+            self.rows.append(table)
+            self.graphs.append((run, name, cable_.range_graphs(ds, line), limits))
+
+    def table(self) -> pd.DataFrame | None:
+        return pd.concat(self.rows, ignore_index=True) if self.rows else None
+
+    def by_load_case(self) -> dict[tuple[str, str], tuple[object, object]]:
+        """(load case, line) -> (range graphs over its seeds: the least minimum, the largest maximum, the mean of
+        the means, limits): the seeds' envelope."""
+        out: dict = {}
+        for run, line, rg, limits in self.graphs:
+            key = (run.load_case, line)
+            if key not in out:
+                out[key] = (rg, limits, 1)
+                continue
+            prev, lim, n = out[key]
+            if prev.sizes != rg.sizes:
+                continue  # another mesh: its first seed's stand
+            merged = prev.copy()
+            for v in rg.data_vars:
+                a, b = prev[v].values, rg[v].values
+                merged[v].values = (np.fmin(a, b) if v.endswith("_min") else np.fmax(a, b) if v.endswith("_max")
+                                    else (a * n + b) / (n + 1))
+            merged.attrs["states"] = int(prev.attrs["states"]) + int(rg.attrs["states"])
+            out[key] = (merged, lim, n + 1)
+        return {k: (rg, lim) for k, (rg, lim, _) in out.items()}
+
+
+def _figure_range_graphs(key, rg, limits) -> tuple[str, str]:
+    load_case, line = key
+    plt = _pyplot()
+    fig = cable_.plot_range_graphs(rg, limits, colour=_SERIES)
+    over = rg.attrs.get("statistics_over", "none")
+    what = "its static state" if over == "none" else f"{int(rg.attrs.get('states', 0))} states ({over})"
+    caption = (f"Range graphs of {line} ({load_case}) along the arc length from end A: the band from the minimum to "
+               f"the maximum over {what}, the mean a line; dashed red: the allowable tension, dash-dot: 1 / MBR "
+               f"where the line types give them. Seabed: {rg.attrs.get('seabed', '')}.")
+    img = _png(fig)
+    plt.close(fig)
+    return img, caption
+
+
+#: How the cable checks' units are shown: unit -> (unit shown, scale of the SI value).
+_CABLE_UNITS = {"N": ("kN", 1e3), "1/m": ("1/m", 1.0), "m": ("m", 1.0), "rad": ("deg", math.pi / 180.0)}
+
+
+def _cable_html(table: pd.DataFrame) -> str:
+    """The cable checks, one row a check and run: value and limit in the row's unit, utilisation, margin, status,
+    where (s) and when (t)."""
+    rows, classes = [], []
+    notes: dict[str, str] = {}
+    for _, r in table.iterrows():
+        shown, scale = _CABLE_UNITS.get(r["unit"], (r["unit"], 1.0))
+        value, limit, margin = (_column([r[c]], scale, 4, like=[r["value"], r["limit"]])[0]
+                                for c in ("value", "limit", "margin"))
+        u = _column([r["utilisation"]], 1.0, 4, like=[1.0])[0]
+        if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
+            status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
+        elif bool(r["passed"]):
+            status, cls = '<span class="pass">PASS</span>', "passed"
+        else:
+            status, cls = '<span class="fail">FAIL</span>', "failed"
+        bound = "&le;" if r["bound"] == "max" else "&ge;"
+        when = r["time"] if math.isfinite(r["time"]) else r["offset"]
+        when_text = "static" if not math.isfinite(when) else (
+            f"t = {_num(when)} s" if math.isfinite(r["time"]) else f"offset {_num(when)} m")
+        checked = math.isfinite(r["value"])
+        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["check"]) + _mark(notes, r["formula"]),
+                     f"{value} {shown}" if checked else "&ndash;",
+                     f"{bound} {limit} {shown}" if checked else "&ndash;", u,
+                     f"{margin} {shown}" if checked else "&ndash;",
+                     _num(r["s"]) if checked else "&ndash;", when_text if checked else "&ndash;", status])
+        classes.append(cls)
+    return _table(["Load case", "Line", "Check", "Value", "Limit", "Utilisation [-]", "Margin", "s [m]", "When",
+                   "Status"], rows, classes, cls="num checks cable",
+                  single=table["load_case"].nunique() == 1) + _notes_block(notes)
+
+
+def _cable_section(table: pd.DataFrame | None, figures: list) -> list[str]:
+    if table is None:
+        return []
+    return ["<h2>6. Cable: range graphs and checks</h2>",
+            ('<p class="method">The line has bending stiffness: along its arc length s from end A, the effective '
+             "tension, curvature, bend moment, declination and height above the seabed, their minimum, maximum and "
+             "mean over the run (<code>seacable.design.cable.range_graphs</code>; in "
+             "<code>*_range_graphs.nc</code>). Checks: the largest curvature against 1 / MBR (the line type's "
+             "<code>minimum_bend_radius_dynamic</code> for a dynamic run), utilisation &kappa; MBR; the largest "
+             "element tension against <code>allowable_tension</code>; the smallest against &minus;"
+             "<code>allowable_compression</code> (0 N unless given); the sag bend (the lowest point between the hog "
+             "bend's crest and end B) and the hog bend's crest above the seabed by <code>analysis.design</code>'s "
+             "clearances (0 m: no touchdown); the declination at end B within "
+             "<code>analysis.design.hang_off_declination</code>. Where: the arc length of the worst node or element; "
+             "when: the time of the worst state.</p>"),
+            _cable_html(table)] + [_figure(f) for f in figures]
 
 
 def _figure_time_series(runs, seeds: pd.DataFrame, kept: _MostLoaded | None = None) -> tuple[str, str] | None:
@@ -550,7 +676,7 @@ def _settings_html(settings: str) -> str:
 
 
 def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None,
-             parts: pd.DataFrame | None = None) -> str:
+             parts: pd.DataFrame | None = None, cable: pd.DataFrame | None = None) -> str:
     checked = chk[chk["passed"].notna()]
     failed = checked[~checked["passed"].astype(bool)]
     skipped = chk[chk["passed"].isna()]
@@ -587,6 +713,12 @@ def _verdict(chk: pd.DataFrame, ext: pd.DataFrame, life: pd.DataFrame | None,
         top = fair.loc[fair["design_maximum"].idxmax()]
         cards.append(("", f"Design max. fairlead tension ({_e(top['line'])})",
                       f"{_num(top['design_maximum'], scale=1e3)} kN"))
+    if cable is not None:
+        done = cable[cable["passed"].notna()]
+        bad = done[~done["passed"].astype(bool)]
+        cards.append(("bad" if len(bad) else "ok" if len(done) else "warn", "Cable checks",
+                      f"{len(bad)} of {len(done)} fail" if len(bad) else f"all {len(done)} pass" if len(done)
+                      else "none made"))
     if life is not None and not life.empty and life["life"].notna().any():
         top = life.loc[life["life"].idxmin()]
         cards.append(("", f"Shortest fatigue life ({_e(top['line'])})", f"{_num(top['life'], sig=3)} years"))
@@ -632,7 +764,8 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
              (f'<header class="top"><h1>Mooring design report &ndash; {_e(name)}</h1>'
              f'<div class="meta">{_e(now)} &middot; seacable {_e(__version__)}'
              f"{' &middot; ' + _e(description) if description else ''}</div></header>"),
-             "<h2>Summary</h2>", _verdict(chk, ext, life if not life.empty else None, tables.get("components"))]
+             "<h2>Summary</h2>", _verdict(chk, ext, life if not life.empty else None, tables.get("components"),
+                                          tables.get("cable_checks"))]
     parts += ["<h2>1. Inputs</h2>", _kv(inputs)]
     if tables.get("components") is not None and not tables["components"].empty:
         parts += ["<h3>Components of the load modelled</h3>",
@@ -714,6 +847,7 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
              _e(r["line"]), _e(r["end"]), col["maximum"][k], col["mean"][k], col["std"][k], col["weibull_mpm"][k],
              col["weibull_quantile"][k]] for k, (_, r) in enumerate(seeds.iterrows())]
     q = f"q{round(opts.quantile * 100):d}"
+    parts += _cable_section(tables.get("cable_checks"), figures.get("range_graphs") or [])
     parts += ["<h2>Appendix: every seed</h2>",
               f"<details><summary>Tensions of each run ({len(seeds)} rows)</summary>"
               + _table(["Load case", "Case", "Seed", "Line", "End", "Maximum [kN]", "Mean [kN]", "Std. dev. [kN]",
@@ -758,11 +892,16 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     if not (math.isfinite(opts.design_fatigue_factor) and opts.design_fatigue_factor >= 1.0):
         raise InputError(f"--design-fatigue-factor must be a number >= 1, got {opts.design_fatigue_factor}. Suggested "
                          "fix: 5 (DNV-OS-E301), or 3 / 10 (API RP 2SK, inspected / not inspected lines).")
-    kept = _MostLoaded()
+    kept, cable = _MostLoaded(), _Cable()
+
+    def visit(run, ds):
+        kept(run, ds)
+        cable(run, ds)
+
     runs, made = ds_.design_tables(source, storm_duration=opts.storm_duration, quantile=opts.quantile,
                                    consequence_class=opts.consequence_class, offset_limit=opts.offset_limit,
                                    allowed_uplift=opts.allowed_uplift, tn_curve=opts.tn_curve,
-                                   nominal_diameter=opts.nominal_diameter, scatter=opts.scatter, visit=kept)
+                                   nominal_diameter=opts.nominal_diameter, scatter=opts.scatter, visit=visit)
     seeds, ext, chk, fat = (made[k] for k in ("seeds", "extremes", "checks", "fatigue"))
     life = ds_.fatigue_life_table(fat, design_fatigue_factor=opts.design_fatigue_factor) if opts.scatter else \
         pd.DataFrame(columns=["line", "tn_curve", "load_cases", "damage_per_year", "life", "design_fatigue_factor",
@@ -771,6 +910,10 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
               "components": made["components"], "combined": made["combined"]}
     figures = {"series": _figure_time_series(runs, seeds, kept), "maxima": _figure_maxima(seeds, ext),
                "utilisation": _figure_utilisation(chk)}
+    graphs = cable.by_load_case()
+    if cable.table() is not None:
+        tables["cable_checks"] = cable.table()
+        figures["range_graphs"] = [_figure_range_graphs(k, rg, lim) for k, (rg, lim) in list(graphs.items())[:6]]
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
                  opts, output.resolve().parent, kept.attrs)
     output.parent.mkdir(parents=True, exist_ok=True)
@@ -779,6 +922,29 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
         if key == "fatigue_life" and not opts.scatter:
             continue
         path = output.with_name(f"{output.stem}_{key}.csv")
-        written.append(atomic_write(path, lambda tmp, t=table: _with_units(t).to_csv(tmp, index=False)))
+        units = CABLE_CSV_UNITS if key == "cable_checks" else None
+        written.append(atomic_write(path, lambda tmp, t=table, u=units: _with_units(t, u).to_csv(tmp, index=False)))
+    if graphs:
+        path = output.with_name(f"{output.stem}_range_graphs.nc")
+        merged = _range_graphs_file(graphs)
+        written.append(atomic_write(path, lambda tmp: merged.to_netcdf(tmp, engine="netcdf4")))
     return written
+
+
+def _range_graphs_file(graphs: dict):
+    """The range graphs of the report in one Dataset: one load case and line as it is; several on a ``load_case``
+    dimension (and ``line`` beside it), those of another mesh than the first left out (named in its attrs)."""
+    import xarray as xr
+
+    items = list(graphs.items())
+    if len(items) == 1:
+        return items[0][1][0]
+    first = items[0][1][0]
+    same = [(k, rg) for k, (rg, _) in items if rg.sizes == first.sizes]
+    out = xr.concat([rg for _, rg in same], dim="load_case", combine_attrs="drop_conflicts")
+    out = out.assign_coords(load_case=("load_case", [k[0] for k, _ in same]), line=("load_case", [k[1] for k, _ in same]))
+    left = [f"{k[0]} / {k[1]}" for k, (rg, _) in items if rg.sizes != first.sizes]
+    if left:
+        out.attrs["left_out"] = "; ".join(left) + " (another mesh)"
+    return out
 
