@@ -600,8 +600,7 @@ def run_mooring_pushover(case: Case):
     data = network_variables(model, X, T, S, dims=("offset", "node"))
     data["H_fairlead"] = var("offset", -S[:, np.flatnonzero(model.network.kind == PRESCRIBED)[-1], 0], "N",
                              "horizontal force of the line on the fairlead along x, towards the anchor")
-    coords = {**_coords(model.network), "offset": var("offset", offsets, "m",
-                                                      "horizontal fairlead offset along analysis.heading")}
+    coords = {**_coords(model.network), "offset": var("offset", offsets, "m", "horizontal fairlead offset")}
     return make_dataset(data, coords, analysis="mooring_pushover", case=case, references=REFERENCES,
                         settings=_settings(model))
 
