@@ -276,15 +276,22 @@ def turn_with_motion(model: MooringModel, motion, n_channels: int) -> None:
         model.hinge_ei[h, H_D:H_D + 3] = d / np.linalg.norm(d)
 
 
+def _turning(model: MooringModel) -> np.ndarray:
+    """Which rows of ``model``'s hinge table are held ends that turn with the platform (:func:`turn_with_motion`)."""
+    table = model.hinge_ei
+    return (table[:, H_KIND] != H_INNER) & (table[:, H_DCH] >= 0)
+
+
 def turning_end_directions(model: MooringModel, motion, times):
     """The held ends' given directions (nt, h, 3) at ``times`` [s] of a run whose held ends turn with its platform
     (:func:`turn_with_motion`), the others' at rest; None when none turns."""
     table = model.hinge_ei
-    if motion is None or not table.shape[0] or not np.any(table[:, H_DCH] >= 0):
+    turning = _turning(model)
+    if motion is None or not np.any(turning):
         return None
     P = motion(np.asarray(times, float))[0]
     out = np.repeat(table[None, :, H_D:H_D + 3], len(times), axis=0)
-    for h in np.flatnonzero(table[:, H_DCH] >= 0):
+    for h in np.flatnonzero(turning):
         d = P[:, int(table[h, H_DCH])] - P[:, int(table[h, H_ECH])]
         out[:, h] = d / np.linalg.norm(d, axis=-1, keepdims=True)
     return out
@@ -298,7 +305,7 @@ def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
     time is that of its last step, which may round differently from the output time)."""
     if own is not model or own.visco.shape[0]:
         return False
-    if time is not None and np.any(own.hinge_ei[:, H_DCH] >= 0):
+    if time is not None and np.any(_turning(own)):
         return True  # held ends turning with a platform: the loop's own end loads, at each step's direction
     return time is None or (own.env[K_WH] <= 0.0 and own.sea[S_MODE] <= 0.0)
 
