@@ -563,3 +563,36 @@ def test_a_report_inside_its_sweep_folder_names_the_folder_in_words(synth, tmp_p
     assert main(["report", str(folder), "-o", str(out)]) == 0
     text = out.read_text(encoding="utf-8")
     assert "<td>the report's own folder</td>" in text and "<code>.</code>" not in text
+
+
+@pytest.mark.skipif(shutil.which(CHROMIUM) is None,
+                    reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
+def test_the_cable_section_renders_in_headless_chromium(tmp_path):
+    """A cable's report (issue 40: range graphs and checks of a clamped 160 m cable, EI 2e4 N m^2, 3 s of hang-off
+    motion) in a real browser: no console message, and its section drawn. Without the cable section the page is
+    the mooring tables alone; with it, the range graphs' five panels add their light-blue min-to-max bands
+    ((191, 219, 235): 38 600 px when this was written, none anywhere else on the page) and the allowable tension's
+    and the MBR's dashed red lines ((206, 59, 59): 1 800 px)."""
+    from PIL import Image
+
+    import seacable as sc
+    from seacable.report import make_report
+
+    ds = sc.run(sc.Case(**{
+        "name": "hang",
+        "line_types": {"cable": {"diameter": 0.15, "mass_per_length": 40, "axial_stiffness": 5e8,
+                                 "bending_stiffness": 2e4, "minimum_bend_radius": 2.0,
+                                 "minimum_bend_radius_dynamic": 4.0, "allowable_tension": 2.5e4}},
+        "line": {"line_type": "cable", "length": 160}, "environment": {"depth": 100},
+        "analysis": {"type": "mooring_dynamic", "anchor": [0, -100], "fairlead": [80, -10], "n_elements": 20,
+                     "fairlead_end_condition": {"type": "clamped", "declination": 0.1},
+                     "duration": 3.0, "time_step": 0.1, "output_interval": 0.5,
+                     "motion": {"type": "harmonic", "amplitude": [1.0, 0.0, 0.5], "period": 4.0, "ramp": 1.0}}}))
+    page = tmp_path / "report.html"
+    make_report(ds, page)
+    assert "6. Cable: range graphs and checks" in page.read_text()
+    png = tmp_path / "report.png"
+    assert _console(_start_chromium(page, png, tmp_path / "profile", size=(1280, 8000))) == []
+    rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
+    assert _near(rgb, (191, 219, 235), 3) > 20_000
+    assert _near(rgb, (206, 59, 59), 3) > 800
