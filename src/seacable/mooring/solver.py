@@ -456,11 +456,10 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     that does not converge (a finely meshed one, a line of more than ``2 COARSE_ELEMENTS`` elements, in
     ``FINE_DIRECT_ITERATIONS``) is started again by mesh sequencing (:mod:`seacable.mooring.sequencing`: the
     equilibrium of the same lines at about ``COARSE_ELEMENTS`` elements each, itself solved so, interpolated onto
-    the fine mesh), then from ``initial``
-    with the limit cut to a quarter, twice: a slack chain lying on the seabed can wander for hundreds of steps at
-    the full limit (its grounded nodes have no stiffness across, and each step throws some through the seabed) and
-    converge in a few tens at a smaller one. Raises :class:`~seacable.errors.ConvergenceError` with the residual
-    when none converges.
+    the fine mesh), then from ``initial`` with the limit cut to a quarter, twice: a slack chain lying on the seabed
+    can wander for hundreds of steps at the full limit (its grounded nodes have no stiffness across, and each step
+    throws some through the seabed) and converge in a few tens at a smaller one. Raises
+    :class:`~seacable.errors.ConvergenceError` with the residual when none converges.
     """
     net = model.network
     X0 = np.array(net.position if initial is None else initial, float)
