@@ -132,6 +132,17 @@ def _e(text) -> str:
 _ABSOLUTE = re.compile(r"(?<![\w.~/:])(/(?:[^\s'\"<>|,;()\[\]{}]+/)+[^\s'\"<>|,;()\[\]{}]*)")
 
 
+
+def _status(row) -> tuple[str, str]:
+    """A check row's status badge (HTML) and its row class: PASS, FAIL, or the reason it was not checked."""
+    passed = row["passed"]
+    if passed is None or (isinstance(passed, float) and math.isnan(passed)):
+        return f'<span class="skip">{_e(row["status"])}</span>', "skipped"
+    if bool(passed):
+        return '<span class="pass">PASS</span>', "passed"
+    return '<span class="fail">FAIL</span>', "failed"
+
+
 def _relative(text, base: Path | None) -> str:
     """``text`` with each absolute path in it shown relative to ``base`` (the report's folder), or by its file name
     alone where the two share no folder but the root (or a drive): a report shows no absolute path of the
@@ -280,12 +291,7 @@ def _cable_html(table: pd.DataFrame) -> str:
         value, limit, margin = (_column([r[c]], scale, 4, like=[r["value"], r["limit"]])[0]
                                 for c in ("value", "limit", "margin"))
         u = _column([r["utilisation"]], 1.0, 4, like=[1.0])[0]
-        if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
-            status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
-        elif bool(r["passed"]):
-            status, cls = '<span class="pass">PASS</span>', "passed"
-        else:
-            status, cls = '<span class="fail">FAIL</span>', "failed"
+        status, cls = _status(r)
         bound = "&le;" if r["bound"] == "max" else "&ge;"
         when = r["time"] if math.isfinite(r["time"]) else r["offset"]
         when_text = "static" if not math.isfinite(when) else (
@@ -530,12 +536,7 @@ def _checks_html(chk: pd.DataFrame) -> str:
         col["utilisation"] = _column(list(group["utilisation"]), 1.0, 4, like=[1.0])  # three decimals (below 10)
         rows, classes = [], []
         for k, (_, r) in enumerate(group.iterrows()):
-            if r["passed"] is None or (isinstance(r["passed"], float) and math.isnan(r["passed"])):
-                status, cls = f'<span class="skip">{_e(r["status"])}</span>', "skipped"
-            elif bool(r["passed"]):
-                status, cls = '<span class="pass">PASS</span>', "passed"
-            else:
-                status, cls = '<span class="fail">FAIL</span>', "failed"
+            status, cls = _status(r)
             rows.append([_e(r["load_case"]), _e(r["check"]), _e(r["item"]), col["demand"][k], col["capacity"][k],
                          col["margin"][k], col["utilisation"][k], status])
             classes.append(cls)
