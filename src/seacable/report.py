@@ -132,7 +132,6 @@ def _e(text) -> str:
 _ABSOLUTE = re.compile(r"(?<![\w.~/:])(/(?:[^\s'\"<>|,;()\[\]{}]+/)+[^\s'\"<>|,;()\[\]{}]*)")
 
 
-
 def _status(row) -> tuple[str, str]:
     """A check row's status badge (HTML) and its row class: PASS, FAIL, or the reason it was not checked."""
     passed = row["passed"]
