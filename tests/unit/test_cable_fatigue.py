@@ -61,7 +61,6 @@ def test_a_cyclic_tension_stresses_every_point_alike():
 def test_tension_and_bend_in_phase_add_at_the_inside_point():
     """Both cycling in phase: the inside point's range (phi = 3 pi / 2, facing the centre of curvature) is the sum 40 +
     80 MPa, and it is the hot spot; the outside point's 80 - 40 MPa."""
-    n = N_CYCLES * PER_CYCLE + 1
     ds = bent_line(cycle(0.05, 0.02), cycle(3.0e5, 1.0e5))
     stress = armour_stress(ds, 200.0, 2e9)
     assert np.ptp(stress[:, 4, 6]) == pytest.approx(120e6, rel=1e-9)
@@ -69,7 +68,6 @@ def test_tension_and_bend_in_phase_add_at_the_inside_point():
     damage, hot = cable_fatigue_damage(ds, CURVE, 200.0, 2e9)
     assert damage[4] == pytest.approx(N_CYCLES / CURVE.cycles_to_failure(120.0), rel=1e-9)
     assert hot[4] == pytest.approx(1.5 * math.pi)
-    assert n == stress.shape[0]
 
 
 def test_two_slope_curve_is_continuous_at_its_knee():

@@ -48,6 +48,12 @@ def _element_key(net: Network, e: int) -> tuple:
     return tuple(key)
 
 
+def _between(of: dict, a, b) -> int | None:
+    """The element joining nodes ``a`` and ``b`` in either order (``of``: node pair -> element), or None."""
+    a, b = int(a), int(b)
+    return of.get((a, b), of.get((b, a)))
+
+
 def _kept_nodes(net: Network, step: int) -> np.ndarray:
     """A mask of the nodes a coarse network keeps (every ``step``-th of each line and those that matter)."""
     n = len(net.position)
@@ -66,8 +72,7 @@ def _kept_nodes(net: Network, step: int) -> np.ndarray:
     of = {(int(a), int(b)): e for e, (a, b) in enumerate(net.elements)}
     for nodes in net.line_nodes:
         for k in range(1, len(nodes) - 1):
-            e1 = of.get((int(nodes[k - 1]), int(nodes[k])), of.get((int(nodes[k]), int(nodes[k - 1]))))
-            e2 = of.get((int(nodes[k]), int(nodes[k + 1])), of.get((int(nodes[k + 1]), int(nodes[k]))))
+            e1, e2 = _between(of, nodes[k - 1], nodes[k]), _between(of, nodes[k], nodes[k + 1])
             if e1 is None or e2 is None or _element_key(net, e1) != _element_key(net, e2):
                 keep[nodes[k]] = True
     return keep
@@ -97,8 +102,7 @@ def coarsen(net: Network, elements_per_line: int = 60) -> Network | None:
         for k in range(1, len(nodes)):
             if not keep[nodes[k]]:
                 continue
-            run = [of.get((int(nodes[j]), int(nodes[j + 1])), of.get((int(nodes[j + 1]), int(nodes[j]))))
-                   for j in range(start, k)]
+            run = [_between(of, nodes[j], nodes[j + 1]) for j in range(start, k)]
             if any(e is None for e in run):
                 return None
             forward = int(net.elements[run[0], 0]) == int(nodes[start])
