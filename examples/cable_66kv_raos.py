@@ -7,7 +7,8 @@ mean position in its storm (the statics of the hull on its three chains under th
 turbine's mean wind load and the 1 m/s current: :func:`seacable.system.uncoupled.prepare_system_uncoupled`) and
 the first-order RAOs there, :func:`seacable.hydro.response.raos` with the rigid body's mass, the database's
 hydrostatics with the weight's moment, the chains' stiffness at the mean position and the hull's drag linearised
-at the current (HydroDyn's AddBQuad on the relative velocity), at the database's frequencies and at its headings within 10 deg of the storm's (+x).
+at the current (HydroDyn's AddBQuad on the relative velocity), at the database's frequencies and at its
+headings within 10 deg of the storm's (+x).
 The OpenFAST model ships no WAMIT ``.4`` file; these RAOs are what a ``.4`` of this mass, stiffness and damping
 would hold.
 
@@ -54,5 +55,6 @@ def write(path: Path) -> np.ndarray:
 
 if __name__ == "__main__":
     mean = write(HERE / "cable_66kv_raos.csv")
-    print("mean position: surge %.3f m, sway %.3f m, heave %.3f m, roll %.5f rad, pitch %.5f rad (%.2f deg), "
-          "yaw %.5f rad" % (*mean[:4], mean[4], math.degrees(mean[4]), mean[5]))
+    surge, sway, heave, roll, pitch, yaw = (float(v) for v in mean)
+    print(f"mean position: surge {surge:.3f} m, sway {sway:.3f} m, heave {heave:.3f} m, roll {roll:.5f} rad, "
+          f"pitch {pitch:.5f} rad ({math.degrees(pitch):.2f} deg), yaw {yaw:.5f} rad")
