@@ -37,6 +37,7 @@ from ._version import __version__
 from .design import cable as cable_
 from .design import summary as ds_
 from .design.cable_fatigue import SNCurve, cable_fatigue_damage
+from .design.clearance import line_clearance_check
 from .errors import InputError
 
 __all__ = ["CABLE_CSV_UNITS", "STATIC_ANALYSES", "armour_fatigue_table", "make_static_report", "offset_table"]
@@ -67,7 +68,10 @@ class _Cable:
         for line in ds_.line_names(ds) if "line" in ds.dims else [None]:
             view = ds.sel(line=line) if line is not None else ds
             limits = cable_.cable_limits(view)
-            table = cable_.cable_check_table(cable_.cable_checks(ds, limits, line))
+            checks = cable_.cable_checks(ds, limits, line)
+            if line is not None and _bends(view) and _line_clearance(ds) is not None:
+                checks.append(line_clearance_check(ds, line))  # a system's cable: its distance to the other lines
+            table = cable_.cable_check_table(checks)
             name = line if line is not None else ds_.line_names(ds)[0]
             table.insert(0, "line", name)
             table.insert(0, "seed", run.seed)
@@ -165,7 +169,9 @@ def _cable_section(table: pd.DataFrame | None, figures: list, armour: pd.DataFra
              "<code>allowable_compression</code> (0 N unless given); the sag bend (the lowest point between the hog "
              "bend's crest and end B) and the hog bend's crest above the seabed by <code>analysis.design</code>'s "
              "clearances (0 m: no touchdown); the declination at end B within "
-             "<code>analysis.design.hang_off_declination</code>. Where: the arc length of the worst node or element; "
+             "<code>analysis.design.hang_off_declination</code>; in a system, where <code>analysis.design."
+             "line_clearance</code> is given, a cable's smallest distance to the other lines, segment to segment "
+             "(<code>seacable.design.clearance</code>). Where: the arc length of the worst node or element; "
              "when: the time of the worst state.</p>"),
             _cable_html(table)] + [_figure(f) for f in figures] + armour_section(armour)
 
@@ -186,6 +192,17 @@ def _range_graphs_file(graphs: dict):
     if left:
         out.attrs["left_out"] = "; ".join(left) + " (another mesh)"
     return out
+
+
+def _bends(view) -> bool:
+    """Whether a line of a result bends (a cable: some finite, non-zero curvature)."""
+    kappa = np.asarray(view["curvature"].values, float)
+    return bool(np.any(np.isfinite(kappa) & (kappa != 0.0)))
+
+
+def _line_clearance(ds) -> float | None:
+    value = (((ds_.case_data(ds) or {}).get("analysis") or {}).get("design") or {}).get("line_clearance")
+    return None if value is None else float(value)
 
 
 # ------------------------------------------------------------------------------------------- armour fatigue
