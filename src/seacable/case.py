@@ -560,11 +560,14 @@ class ArmourFatigue(Model):
     curvature_factor: quantity("Pa m", fix="give the armour stress per 1/m of curvature, about E r cos^2 alpha "
                                            "while the wires stick, e.g. 1.5e10.") = Field(
         description="Armour stress per unit curvature c_kappa (its sign picks the hot spot only). [Pa m]")
-    points: int = Field(8, ge=1, le=360, description="Points around the section where the stress is counted.")
+    points: int = Field(8, description="Points around the section where the stress is counted, 1 to 360.")
     sn_curve: ArmourSNCurve = Field(description="The armour's S-N curve on the stress range in MPa.")
 
     @model_validator(mode="after")
     def _nonzero(self):
+        if not 1 <= self.points <= 360:
+            raise ValueError(f"armour.points must be 1 to 360 points around the section, got {self.points}. Suggested "
+                             "fix: 8 points (every 45 deg) find the hot spot of a bend in any plane.")
         if self.curvature_factor == 0.0:
             raise ValueError("armour.curvature_factor is 0 Pa m: the bend would stress no wire. Suggested fix: give the "
                              "stress per 1/m of curvature, about E r cos^2 alpha, e.g. 1.5e10 Pa m.")

@@ -623,9 +623,9 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     graphs = cable.by_load_case()
     if cable.table() is not None:
         tables["cable_checks"] = cable.table()
+        figures["range_graphs"] = [_figure_range_graphs(k, rg, lim) for k, (rg, lim) in list(graphs.items())[:6]]
     if cable.armour_table() is not None:
         tables["cable_fatigue"] = cable.armour_table()
-        figures["range_graphs"] = [_figure_range_graphs(k, rg, lim) for k, (rg, lim) in list(graphs.items())[:6]]
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
                  opts, output.resolve().parent, kept.attrs)
     output.parent.mkdir(parents=True, exist_ok=True)
