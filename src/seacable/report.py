@@ -12,8 +12,12 @@ design tables of :mod:`seacable.design.summary` (extremes, code checks, fatigue)
   the unit of each column in its header;
 - for a result of a line with bending stiffness (one with ``curvature``, issue 40), also its range graphs and
   cable checks (:mod:`seacable.design.cable`): a section of the page, ``report_cable_checks.csv`` and the range
-  graphs in ``report_range_graphs.nc`` (a ``load_case`` dimension when there are several). A result without
-  curvature gives the same page and files as before.
+  graphs in ``report_range_graphs.nc`` (a ``load_case`` dimension when there are several), and where the case gives
+  ``analysis.design.armour`` the armour's fatigue (``report_cable_fatigue.csv``). A result without curvature gives
+  the same page and files as before.
+
+A ``mooring_static`` or ``mooring_pushover`` result of a cable (with ``curvature``) gets a page of its own
+(:func:`seacable.report_cable.make_static_report`: its shape, the checks against the static MBR, per offset).
 
 Every file is written whole (:mod:`seacable._atomic`).
 """
@@ -571,7 +575,9 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     Parameters
     ----------
     source
-        What :func:`seacable.design.summary.read_results` reads.
+        What :func:`seacable.design.summary.read_results` reads; or one ``mooring_static`` or ``mooring_pushover``
+        result (file or Dataset) of a line with curvature: its cable page
+        (:func:`seacable.report_cable.make_static_report`).
     output
         The HTML file (``.html``); the CSV files go beside it, ``STEM_extremes.csv`` and so on.
     options

@@ -238,7 +238,7 @@ def armour_fatigue_table(ds, line: str | None = None, load_case: str = "", seed=
                           "s": float(s[k]), "hot_spot": float(hot[k]), "damage": float(damage[k]),
                           "duration": duration, "damage_per_year": per_year,
                           "life": 1.0 / per_year if per_year > 0 else math.inf,
-                          "sn_curve": f"N = {sn.a:.4g} s^-{sn.m:g}" + (f", m2 = {sn.m2:g} below {sn.n_knee:.3g} cycles"
+                          "sn_curve": f"N = {sn.a:.4g} s^-{sn.m:g}" + (f", m2 = {sn.m2:g} beyond {sn.n_knee:.3g} cycles"
                                                                        if sn.m2 is not None else ""),
                           "stress_model": f"c_T = {float(armour['tension_factor']):.4g} Pa/N, c_kappa = "
                                           f"{float(armour['curvature_factor']):.4g} Pa m, "
