@@ -268,7 +268,8 @@ def armour_section(table: pd.DataFrame | None) -> list[str]:
              "(n &middot; e(&phi;)) at points around the section along the line, each point's record rainflow-counted "
              "(ASTM E1049-85), the S-N curve of <code>analysis.design.armour</code> and Miner's sum "
              "(<code>seacable.design.cable_fatigue</code>); the most damaged node and point. &ldquo;If "
-             "permanent&rdquo;: were the run's sea to last the year (no scatter diagram, no design fatigue factor).</p>"),
+             "permanent&rdquo;: were the run's sea to last the year (the whole record, its ramp included; no scatter "
+             "diagram, no design fatigue factor).</p>"),
             _armour_html(table)]
 
 
