@@ -114,3 +114,30 @@ def test_a_result_without_lines_or_a_missing_line_is_refused():
         line_distance(_system(lines), "riser")
     with pytest.raises(InputError, match="no 'line' dimension.*Suggested fix"):
         line_distance(_system(lines).isel(line=0), "cable")
+
+
+def test_a_system_cable_s_report_rows_add_its_line_clearance():
+    """In the report's cable section (seacable.report_cable), a line of a system result that bends (some non-zero
+    curvature: a cable) gets the line-clearance row when the case gives the limit; a line that does not bend (a
+    chain: curvature 0) gets none."""
+    from types import SimpleNamespace
+
+    from seacable.report_cable import _Cable
+
+    t = np.arange(0.0, 10.01, 0.5)
+    h = 5.0 + 2.0 * np.cos(2 * np.pi * t / 10.0)
+    cable = np.repeat(_straight((0, 0, -100), (100, 0, -100), 21)[None], t.size, axis=0)
+    chain = np.stack([_straight((30, -40, -100 + hk), (30, 40, -100 + hk), 21) for hk in h])
+    ds = _system({"cable": cable, "chain": chain}, times=t, design={"line_clearance": 4.0})
+    kappa = np.zeros((t.size, 2, 21))
+    kappa[:, 0, 5:15] = 0.01
+    ds["curvature"] = (("time", "line", "node"), kappa)
+    ds["tension"] = (("time", "line", "node"), np.full((t.size, 2, 21), 1.0e4))
+    keep = _Cable()
+    keep(SimpleNamespace(load_case="storm", name="storm", seed=1), ds)
+    table = keep.table()
+    rows = table[table["check"] == "line clearance"]
+    assert list(rows["line"]) == ["cable"]
+    row = rows.iloc[0]
+    # the chain comes within 3 m of the cable at t = 5 s: under the 4 m asked
+    assert row["status"] == "FAIL" and row["value"] == pytest.approx(3.0) and row["time"] == 5.0
