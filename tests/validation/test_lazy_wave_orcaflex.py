@@ -61,9 +61,9 @@ ELEMENT = 1.0  # [m]
 TOLERANCE = 3e-3  # see the module's docstring
 
 
-def _case(site: str, heave: bool) -> Case:
+def _case(site: str, heave: bool, bending_stiffness: float = 1.99e4) -> Case:
     span, touchdown, depth, top, buoyant, mass, diameter = SITES[site][0]
-    bare = {"diameter": 0.16, "mass_per_length": 36.7, "axial_stiffness": 4.69e8, "bending_stiffness": 1.99e4,
+    bare = {"diameter": 0.16, "mass_per_length": 36.7, "axial_stiffness": 4.69e8, "bending_stiffness": bending_stiffness,
             "drag_normal": 1.2, "drag_tangential": 0.1, "added_mass_normal": 1.0}
     lengths = (("bare", span - top - buoyant), ("buoyant", buoyant), ("bare", top))  # from the touchdown (end A)
     analysis = {"type": "mooring_static", "anchor": [0.0, -depth], "fairlead": [touchdown, -HANG_OFF_DEPTH]}
@@ -104,3 +104,20 @@ def test_lazy_wave_statics_and_heave_match_orcaflex(site):
     assert tension.mean() == pytest.approx(mean_ref * 1e3, rel=TOLERANCE)
     assert tension.min() == pytest.approx(least_ref * 1e3, rel=TOLERANCE)
     assert tension.max() == pytest.approx(largest_ref * 1e3, rel=TOLERANCE)
+
+
+def test_a_cable_runs_at_spectral_radius_0_9_unless_the_case_says_otherwise():
+    """The default of mooring_dynamic: 0.9 for a line with bending stiffness (the docstring's heave: the same peaks,
+    a twentieth of the time), 1 (average acceleration, no numerical damping) for one without."""
+    import json
+
+    def short(case, radius=None):
+        return case.model_copy(update={"analysis": case.analysis.model_copy(
+            update={"duration": 0.5, "spectral_radius": radius})})
+
+    def radius(case):
+        return json.loads(sc.run(case).attrs["settings"])["spectral_radius"]
+
+    assert radius(short(_case("200m", heave=True))) == 0.9
+    assert radius(short(_case("200m", heave=True, bending_stiffness=0.0))) == 1.0
+    assert radius(short(_case("200m", heave=True), 0.7)) == 0.7
