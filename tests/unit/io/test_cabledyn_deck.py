@@ -74,7 +74,7 @@ def test_sections_make_one_line_of_three_pieces_in_cabledyn_column_order():
 
 
 def test_cabledyn_friction_is_the_seabed_friction_coefficient():
-    md = read_moordyn(_deck().replace("{0}      TMax".format("0.0"), "0.3      frictionMu\n0.0      TMax"))
+    md = read_moordyn(_deck().replace("0.0      TMax", "0.3      frictionMu\n0.0      TMax"))
     assert md.options["FrictionCoefficient"] == 0.3 and not md.notes
 
 
