@@ -19,8 +19,9 @@ import numpy as np
 
 from ..errors import InputError
 from ..line import Line, resolve_sections
+from ..moment_curvature import law_sum, linear_law
 from ..sections import element_bending_stiffness
-from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
+from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_NLAW, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -82,6 +83,9 @@ class Network:
         when no element is viscoelastic. ``axial_stiffness`` is then the static EA_s and
         ``axial_damping`` the slow damper BA (:func:`seacable.mooring.kernel.viscoelastic_tension`).
         [N, -, N s]
+    element_moment_curvature : per element its nonlinear moment-curvature law, knots ``(kappa, M)`` from
+        ``(0, 0)`` (:mod:`seacable.moment_curvature`), or None for the linear ``bending_stiffness``; None when no
+        element has one. ``bending_stiffness`` is then each law's initial slope. [1/m, N m]
     end_hinges : the line ends held at a direction, each ``(line, end, kind, stiffness, direction)``: the line's
         index, its end (0: end A, 1: end B), ``"clamp"`` or ``"spring"``, a spring's rotational stiffness
         (None for a clamp, whose stiffness is its end element's EI) and the direction the line leaves or
@@ -127,6 +131,7 @@ class Network:
     point_axial_drag_area: np.ndarray | None = None
     point_lift_area: np.ndarray | None = None
     end_hinges: tuple = ()
+    element_moment_curvature: tuple | None = None
 
     def __post_init__(self):
         # the kernels are compiled for C-contiguous arrays: a column of a table (``P[:, 1]``) would make numba
@@ -144,11 +149,23 @@ class Network:
         ``(end node, end node, neighbour)`` at end A and ``(neighbour, end node, end node)`` at end B;
         ``hinge_ei`` (h, H_SIZE) their table (:mod:`seacable.mooring._indices`): at an inner node the mean EI
         of its two elements [N m^2]; at a held end the end element's EI, the kind, the direction from the end into
-        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends.
+        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends. A hinge next to an element
+        with a nonlinear law (``element_moment_curvature``) takes the mean of its two elements' laws (a held end its
+        element's), its knots in the columns from ``H_SIZE`` on.
         """
-        rows, vals = [], []
+        rows, vals, laws = [], [], []
         ei = self.bending_stiffness
         of = {(int(a), int(b)): e for e, (a, b) in enumerate(self.elements)}
+        nl = self.element_moment_curvature
+        if nl is not None and ei is None:
+            ei = np.zeros(self.n_elements)
+
+        def law_of(*elements):
+            if nl is None or all(nl[e] is None for e in elements):
+                return None
+            return law_sum([linear_law(ei[e]) if nl[e] is None else nl[e] for e in elements],
+                           np.full(len(elements), 1.0 / len(elements)))
+
         if ei is not None and np.any(np.asarray(ei) > 0):
             ei = np.asarray(ei, float)
             for nodes in self.line_nodes:
@@ -159,10 +176,12 @@ class Network:
                     if e1 is None or e2 is None:
                         continue
                     value = 0.5 * (ei[e1] + ei[e2])
-                    if value > 0:
+                    law = law_of(e1, e2)
+                    if value > 0 or law is not None:
                         rows.append((i0, i1, i2))
                         vals.append(np.zeros(H_SIZE))
                         vals[-1][H_EI] = value
+                        laws.append(law)
         for line, end, kind, stiffness, direction in self.end_hinges:
             nodes = self.line_nodes[line]
             ie, iw = (int(nodes[0]), int(nodes[1])) if end == 0 else (int(nodes[-1]), int(nodes[-2]))
@@ -177,9 +196,18 @@ class Network:
             row[H_D:H_D + 3] = (d if end == 0 else -d) / np.linalg.norm(d)
             rows.append((ie, ie, iw) if end == 0 else (iw, ie, ie))
             vals.append(row)
+            laws.append(law_of(e))
         if not rows:
             return np.zeros((0, 3), np.int64), np.zeros((0, H_SIZE))
-        return np.array(rows, np.int64), np.array(vals, float)
+        table = np.array(vals, float)
+        if any(law is not None for law in laws):
+            width = max(len(law) for law in laws if law is not None)
+            table = np.column_stack([table, np.zeros((len(rows), 2 * width))])
+            for h, law in enumerate(laws):
+                if law is not None:
+                    table[h, H_NLAW] = len(law)
+                    table[h, H_SIZE:H_SIZE + 2 * len(law)] = np.asarray(law, float).ravel()
+        return np.array(rows, np.int64), table
 
     def tension_strain_arrays(self):
         """The strain-tension tables as the kernel takes them: ``(lo, hi, strain, tension)``.
