@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import InputError
 from ..line import Line, resolve_sections
 from ..moment_curvature import law_sum, linear_law
-from ..sections import element_bending_stiffness
+from ..sections import element_bending_stiffness, element_moment_curvature, element_section_properties
 from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_NLAW, H_SIZE, H_SPRING
 
 __all__ = [
@@ -416,7 +416,10 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
     A line with sections (``line.sections``) is first replaced by its equivalent line
     (:func:`seacable.line.resolve_sections`: smeared buoyancy as segments of their own, discrete modules as
     attachments) and its bend stiffeners' EI added per element at the elements' mid arc lengths
-    (:func:`seacable.sections.element_bending_stiffness`), so that the kernel takes them unchanged.
+    (:func:`seacable.sections.element_bending_stiffness`), so that the kernel takes them unchanged. Elements with a
+    nonlinear moment-curvature law (a line type's, a stiffener's, a bend restrictor's) carry it in
+    ``element_moment_curvature`` (:func:`seacable.sections.element_moment_curvature`), and stiffeners with a density
+    and restrictors their own mass, weight, drag and added mass (:func:`seacable.sections.element_section_properties`).
     """
     sectioned, line = line, resolve_sections(line, water_density, gravity)
     s = node_arc_lengths(line, n_elements, element_length)
@@ -454,24 +457,31 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         pd[i] += att.drag_area
         pda[i] += att.drag_area if att.axial_drag_area is None else att.axial_drag_area
         pla[i] += att.lift_area()
+    ei = element_bending_stiffness(sectioned, s, line_bending(types))
+    laws = element_moment_curvature(sectioned, s, types, ei)
+    if laws is not None:  # EI: each law's initial slope
+        ei = np.array([law[1, 1] / law[1, 0] if law is not None else (0.0 if ei is None else ei[e])
+                       for e, law in enumerate(laws)])
+    hydro = {"mass_per_length": m,
+             "weight_per_length": np.array([t.submerged_weight(water_density, gravity) for t in types], float),
+             "diameter": np.array([t.diameter for t in types], float),
+             "cdn": np.array([t.effective_drag()[0] for t in types], float),
+             "cdt": np.array([t.effective_drag()[1] for t in types], float),
+             "can": np.array([t.added_mass_normal for t in types], float),
+             "cat": np.array([t.added_mass_tangential for t in types], float)}
+    hydro.update(element_section_properties(sectioned, s, types, water_density, gravity) or {})
+    m = hydro["mass_per_length"]
     return Network(
         position=position, kind=kind, channel=channel, point_mass=pm, point_added_mass=pa, point_weight=pw,
         point_volume=pv, point_drag_area=pd,
         elements=np.column_stack([np.arange(n - 1), np.arange(1, n)]).astype(np.int64),
         length=length, axial_stiffness=ea,
-        axial_damping=element_damping(ea, m, length, damping_ratio, stiffness_proportional),
-        mass_per_length=m,
-        weight_per_length=np.array([t.submerged_weight(water_density, gravity) for t in types], float),
-        diameter=np.array([t.diameter for t in types], float),
-        cdn=np.array([t.effective_drag()[0] for t in types], float),
-        cdt=np.array([t.effective_drag()[1] for t in types], float),
-        can=np.array([t.added_mass_normal for t in types], float),
-        cat=np.array([t.added_mass_tangential for t in types], float),
+        axial_damping=element_damping(ea, m, length, damping_ratio, stiffness_proportional), **hydro,
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
-        bending_stiffness=element_bending_stiffness(sectioned, s, line_bending(types)),
+        bending_stiffness=ei, element_moment_curvature=laws,
         element_viscoelastic=line_viscoelastic(types),
         point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None)
 
