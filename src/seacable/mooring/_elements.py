@@ -20,6 +20,7 @@ from ._indices import (
     H_EI,
     H_K,
     H_KIND,
+    H_L0,
     H_NLAW,
     H_SIZE,
     V_BAD,
@@ -164,13 +165,12 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
     band width allows for).
 
     A hinge with a nonlinear law ``M(kappa)`` (``hinge_ei[h, H_NLAW] > 0``, :func:`hinge_law`) acts with the exact
-    gradient of its stored energy ``U = L W(kappa)``, ``L = (l1 + l2) / 2`` the hinge's length, ``W`` the law's
-    energy per length and ``kappa = 2 sin(theta / 2) / L`` as above: with ``U_c = dU/dc = -M / (2 sin(theta /
-    2))`` and ``P = dU/dL = W - M kappa``, ``f = -U_c grad(c) - P grad(L)``, that is the forms above with
-    ``g = -U_c = sigma / L`` (``sigma = M / kappa``) and the axial pair ``(P / 2) a`` on ``i0``, ``-(P / 2) b``
-    on ``i2``. Its tangent is the Hessian of U (symmetric), from ``U_cc = q / L^3``, ``U_cL = M' / L^2`` and
-    ``U_LL = kappa^2 M' / L`` (``q`` of :func:`hinge_law`). A linear hinge keeps MoorDyn's ``-EI kappa grad
-    (theta)``, the same to ``O(theta^2)`` and without the small axial pair ``-EI kappa^2 / 2``.
+    gradient of its stored energy ``U = L0 W(kappa)``, ``L0`` the hinge's unstretched length (``H_L0``: the mean of
+    its elements'), ``W`` the law's energy per length and ``kappa = 2 sin(theta / 2) / L0``: ``f = -U_c grad(c)``,
+    ``U_c = dU/dc = -M / (2 sin(theta / 2))``, the forms above with ``g = -U_c = sigma / L0`` (``sigma = M / kappa``,
+    smooth at theta = 0) and ``dg/dc = -U_cc = -q / L0^3`` (``q`` of :func:`hinge_law`), ``dg/dl = 0``: a symmetric
+    tangent, the Hessian of U. A linear hinge keeps MoorDyn's ``-EI kappa grad(theta)`` on the stretched lengths,
+    the same to ``O(theta^2)`` (the factor ``cos(theta / 2)``) and the strain.
     """
     jac = band.shape[0] > 0
     a, b, u, w = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
@@ -182,7 +182,6 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
     dg = np.zeros(3)
     du, dw, blk = np.zeros((3, 3)), np.zeros((3, 3)), np.zeros((3, 3))
     J = np.zeros((3, 3, 3, 3))    # J[m, k] = d f_m / d r_k
-    sk = np.zeros(3)              # d c / d r_k
     for h in range(hinges.shape[0]):
         i0, i1, i2 = hinges[h, 0], hinges[h, 1], hinges[h, 2]
         if i0 == i1 or i1 == i2:
@@ -205,19 +204,16 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
         if c <= -1.0 + 1e-9:
             continue  # folded back on itself: the moment's plane is undefined
         law = hinge_ei[h, H_NLAW] > 0.0
-        pax = pc = pl = ql = mp = 0.0
         lh = 1.0
+        ql = 0.0
         if law:
-            lh = 0.5 * (l1 + l2)
+            lh = hinge_ei[h, H_L0]
             dd = 0.0
             for r in range(3):
                 dd += (b[r] - a[r]) ** 2
-            kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L, accurate at small angles
-            mm, mp, wl, sigma, ql = hinge_law(hinge_ei[h], kappa)
+            kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L0, accurate at small angles
+            _, _, _, sigma, ql = hinge_law(hinge_ei[h], kappa)
             g = sigma / lh
-            pax = wl - mm * kappa
-            pc = mp / (lh * lh)
-            pl = kappa * kappa * mp / lh
         else:
             ei = hinge_ei[h, H_EI]
             g = 2.0 * ei / ((l1 + l2) * math.sqrt(0.5 * (1.0 + c)))
@@ -227,11 +223,6 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
             F[i0, r] -= g * u[r]
             F[i2, r] += g * w[r]
             F[i1, r] += g * (u[r] - w[r])
-        if law:
-            for r in range(3):
-                F[i0, r] += 0.5 * pax * a[r]
-                F[i2, r] -= 0.5 * pax * b[r]
-                F[i1, r] += 0.5 * pax * (b[r] - a[r])
         if not jac:
             continue
         for r in range(3):
@@ -252,8 +243,8 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
             dl1[0, r], dl1[1, r] = -a[r], a[r]
             dl2[1, r], dl2[2, r] = -b[r], b[r]
         if law:
-            gc = -ql / (lh * lh * lh)      # dg/dc = -U_cc
-            gl = -0.5 * mp / (lh * lh)    # dg/dl1 = dg/dl2 = -U_cL / 2
+            gc = -ql / (lh * lh * lh)     # dg/dc = -U_cc
+            gl = 0.0                      # L0 does not stretch
         else:
             gc = -g / (2.0 * (1.0 + c))   # dg/dc
             gl = -g / (l1 + l2)           # dg/dl1 = dg/dl2
@@ -263,7 +254,6 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
                 s = 0.0
                 for r in range(3):
                     s += b[r] * Da[k, r, q] + a[r] * Db[k, r, q]
-                sk[q] = s
                 dg[q] = gc * s + gl * (dl1[k, q] + dl2[k, q])
             for r in range(3):
                 for q in range(3):
@@ -282,10 +272,6 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
                 for q in range(3):
                     J[0, k, r, q] = -(u[r] * dg[q] + g * du[r, q])
                     J[2, k, r, q] = w[r] * dg[q] + g * dw[r, q]
-                    if law:  # the axial pair's (P a / 2 on i0, -P b / 2 on i2), dP = U_Lc dc + U_LL dL
-                        dp = pc * sk[q] + pl * 0.5 * (dl1[k, q] + dl2[k, q])
-                        J[0, k, r, q] += 0.5 * (a[r] * dp + pax * Da[k, r, q])
-                        J[2, k, r, q] -= 0.5 * (b[r] * dp + pax * Db[k, r, q])
                     J[1, k, r, q] = -J[0, k, r, q] - J[2, k, r, q]
         nodes = (i0, i1, i2)
         for m in range(3):
@@ -331,9 +317,9 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
     with ``g_c = dg/dc``, ``g_l = dg/dl``, and ``d f_w / d x_e = -d f_w / d x_w``.
 
     A clamp with a nonlinear law (``row[H_NLAW] > 0``) acts, as an inner hinge with one (:func:`bending_loads`), with
-    the gradient of ``U = L W(kappa)`` over the half element ``L = l / 2``: ``g = sigma / L`` and the axial term
-    ``-(P / 2) b`` on the neighbour (``P = W - M kappa``), with its exact tangent. A spring end takes the linear
-    law of its row's EI (a spring end over a nonlinear law is refused before a run).
+    the gradient of ``U = L0 W(kappa)`` over the unstretched half element ``L0`` (``row[H_L0]``), ``kappa = 2 sin(theta
+    / 2) / L0``: ``g = sigma / L0``, ``g_c = -q / L0^3``, ``g_l = 0``. A spring end takes the linear law of its
+    row's EI (a spring end over a nonlinear law is refused before a run).
     """
     b = np.zeros(3)
     w = np.zeros(3)
@@ -354,17 +340,13 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
         return  # folded back against its holder: the moment's plane is undefined
     ei = row[H_EI]
     law = row[H_NLAW] > 0.0 and row[H_KIND] == H_CLAMP
-    pax = pc = pl = 0.0
     if law:
-        lh = 0.5 * l
-        kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L
-        mm, mp, wl, sigma, ql = hinge_law(row, kappa)
+        lh = row[H_L0]
+        kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L0
+        _, _, _, sigma, ql = hinge_law(row, kappa)
         g = sigma / lh
         gc = -ql / (lh * lh * lh)
-        gl = -0.5 * mp / (lh * lh)    # dg/dl = (dg/dL) / 2 = -U_cL / 2
-        pax = wl - mm * kappa
-        pc = mp / (lh * lh)
-        pl = kappa * kappa * mp / lh
+        gl = 0.0
     elif row[H_KIND] == H_CLAMP:
         g = 2.0 * ei / (l * math.sqrt(0.5 * (1.0 + c)))
         gc = -g / (2.0 * (1.0 + c))
@@ -384,10 +366,6 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
         w[r] = (row[H_D + r] - c * b[r]) / l
         F[iw, r] += g * w[r]
         F[ie, r] -= g * w[r]
-    if law:
-        for r in range(3):
-            F[iw, r] -= 0.5 * pax * b[r]
-            F[ie, r] += 0.5 * pax * b[r]
     if band.shape[0] == 0:
         return
     J = np.zeros((3, 3))   # d f_w / d x_w
@@ -396,8 +374,6 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
             d = 1.0 if r == q else 0.0
             J[r, q] = (w[r] * (gc * w[q] + gl * b[q])
                        - g * (b[r] * w[q] + w[r] * b[q] + c * (d - b[r] * b[q]) / l) / l)
-            if law:  # dc/dx_w = w, dL/dx_w = b / 2, db/dx_w = (I - b b^T) / l
-                J[r, q] -= 0.5 * (b[r] * (pc * w[q] + 0.5 * pl * b[q]) + pax * (d - b[r] * b[q]) / l)
     fw, fe = fidx[iw], fidx[ie]
     _add_block(band, bw, fw, fw, -1.0, J)
     _add_block(band, bw, fw, fe, 1.0, J)

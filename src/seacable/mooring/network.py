@@ -21,7 +21,7 @@ from ..errors import InputError
 from ..line import Line, resolve_sections
 from ..moment_curvature import law_sum, linear_law
 from ..sections import element_bending_stiffness, element_moment_curvature, element_section_properties
-from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_NLAW, H_SIZE, H_SPRING
+from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_L0, H_NLAW, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -181,6 +181,7 @@ class Network:
                         rows.append((i0, i1, i2))
                         vals.append(np.zeros(H_SIZE))
                         vals[-1][H_EI] = value
+                        vals[-1][H_L0] = 0.5 * (self.length[e1] + self.length[e2])
                         laws.append(law)
         for line, end, kind, stiffness, direction in self.end_hinges:
             nodes = self.line_nodes[line]
@@ -190,6 +191,7 @@ class Network:
             row[H_DCH] = row[H_ECH] = -1.0  # a direction fixed in space (a moving platform's: the run sets them)
             row[H_EI] = 0.0 if ei is None else float(np.asarray(ei, float)[e])
             row[H_KIND] = H_CLAMP if kind == "clamp" else H_SPRING
+            row[H_L0] = 0.5 * self.length[e]
             if kind != "clamp":
                 row[H_K] = float(stiffness)
             d = np.asarray(direction, float)
