@@ -101,11 +101,11 @@ def _bending_energy(model, X):
 def test_law_hinges_act_with_the_gradient_of_their_energy():
     """On a bent 3D line (every node free, clamped at both ends, every element with a three-piece law whose pieces
     its hinges all fall on), the kernel's bending forces (the loads less those of the same line without bending)
-    against central differences of ``U = sum L W(kappa)`` summed independently from the law (:func:`law_energy`):
-    to 1e-7 of the largest force (measured 2e-10 with a 1e-6 m step). The forces of MoorDyn's linear hinge,
-    ``-M grad(theta)``, miss this by the axial pair ``-EI kappa^2 / 2`` and ``cos(theta / 2)`` (about 1e-2 here, so
-    the test tells them apart), and without the law's slope (a law's M with its slope 1 % off, or its energy
-    summed wrongly) it fails."""
+    against central differences of ``U = sum L0 W(kappa)`` summed independently from the law (:func:`law_energy`):
+    to 1e-7 of the largest force (measured 8e-10 with a 1e-6 m step). MoorDyn's linear hinge, ``-M grad(theta)``
+    on the stretched lengths, is not such a gradient (with a linear law's U it misses by 0.57 of the largest force
+    on this strongly bent and stretched line), and the law's force written that way (planted) fails, as does a law
+    whose slopes the kernel takes 1 % off."""
     n = 6
     s = np.linspace(0.0, L, n + 1)
     rng = np.random.default_rng(7)
@@ -133,8 +133,8 @@ def test_cantilever_with_a_bilinear_law_under_a_tip_load():
     errors 5.5e-3, 1.37e-3, 3.4e-4 at 10, 20, 40 elements: order 2 to 0.05 (the kink of the law at u_y does not
     spoil it) and within 3.5e-4 at 40. The root curvature is the law's inverse of the clamp's moment, P times the
     tip's lever arm (statics), to 1e-7 (the law's hinge transmits M cos(theta / 2), theta ~ 4e-4 rad here), and
-    kappa_y + (P L - M_y) / EI2 = 4.2e-4 1/m to 2e-6 (the lever arm is L less 1e-5 m). A law's second slope 1 %
-    off moves the deflection by 1.2 %."""
+    kappa_y + (P L - M_y) / EI2 = 4.2e-4 1/m to 2e-6 (the lever arm is L less 1e-5 m; measured 7e-9 and 1.16e-6 at
+    10 elements). A law the kernel took 1 % stiffer (planted) moves the tip 0.9 %: it fails."""
     uy = MY / P
     w = (P * uy**3 / (3 * EI1) + KY * (L**2 - uy**2) / 2 + P * (L**3 - uy**3) / (3 * EI2)
          - MY * (L**2 - uy**2) / (2 * EI2))
@@ -166,7 +166,7 @@ def test_restrictor_caps_the_curvature_of_a_cantilever(lock_stiffness):
     the cantilever, whose free root curvature would be P L / EI = 1e-4 1/m: the root's curvature is 1 / R + (P x_tip
     - EI / R) / (EI + k), k = LOCK_FACTOR EI by default (1 / R (1 + 0.999e-3)) or as given (3e8 N m^2: 1 / R (1 +
     0.323)), to 1e-9 (statics; measured 1e-13); the free nodes' curvature is P u / EI (to 1e-6: the lever arm's
-    shortening); a restrictor that did not lock (no lock law) fails both."""
+    shortening); a restrictor that did not lock (its lock law left out, planted) fails."""
     R = 2e4
     k = LOCK_FACTOR * EI1 if lock_stiffness is None else lock_stiffness
     n = 20
@@ -195,11 +195,11 @@ def _hang_off_force(line, rho=1025.0, g=9.81):
 
 def test_a_stiffeners_and_a_restrictors_own_weight_in_the_hang_off_force():
     """A 30 m cable (40 kg/m, d = 0.1 m) hanging free, 1025 kg/m^3 water: its hang-off force is its weight in water
-    w L = 8671.8 N; a 4 m polyurethane cone (D 0.4 to 0.12 m, 1150 kg/m^3) adds (rho_s - rho) g V, V the frustum
-    less its bore, 0.1848 m^3: 226.6 N (the Simpson mean over each element is exact for the cone's quadratic
+    w L = 9402.8 N; a 4 m polyurethane cone (D 0.4 to 0.12 m, 1150 kg/m^3) adds (rho_s - rho) g V, V the frustum
+    less its bore, 0.2015 m^3: 247.1 N (the Simpson mean over each element is exact for the cone's quadratic
     area); a table stiffener with the same diameters as its geometry the same; a restrictor of 20 kg/m at 1150
-    kg/m^3 over 4 m, 85.31 N. To 1e-6 of the added weight (the static solve's residual: measured 1.4e-7); a
-    stiffener that added only its EI (none of this) fails."""
+    kg/m^3 over 4 m, 85.30 N. To 1e-6 of the added weight (the static solve's residual: measured 1.4e-7 and
+    5.6e-7); sections that added only their EI (their weight left out, planted) fail."""
     rho, g, d = 1025.0, 9.81, 0.1
     cable = LineType(diameter=d, mass_per_length=40.0, axial_stiffness=1e9, bending_stiffness=1e4)
     bare = Line(segments=(Segment(line_type=cable, length=30.0),))
