@@ -1,4 +1,4 @@
-"""Sections along a line: buoyancy sections and bend stiffeners (data model and their equivalent line).
+"""Sections along a line: buoyancy sections, bend stiffeners and bend restrictors (data model and equivalent line).
 
 A dynamic power cable or umbilical is a bare cable with *sections* laid over it: a run of buoyancy
 modules that lifts it into a lazy wave, and a bend stiffener at the hang-off. Both are given as the
@@ -38,7 +38,7 @@ import math
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, model_serializer, model_validator
 
 from ._model import Model, quantity
 from .errors import InputError
@@ -236,6 +236,17 @@ class BendStiffener(Model):
     geometry: tuple[tuple[float, float], ...] | None = Field(
         None, description="(x [m] from the root, outer diameter [m]) pairs of a table stiffener.")
     name: str | None = None
+
+    @model_serializer(mode="wrap")
+    def _omit_unset(self, handler):
+        # a stiffener without a law, a density or a geometry is written as before they existed (a result's case
+        # attribute unchanged)
+        data = handler(self)
+        if isinstance(data, dict):
+            for key in ("moment_curvature", "density", "geometry"):
+                if data.get(key, 0) is None:
+                    del data[key]
+        return data
 
     @model_validator(mode="after")
     def _law_and_geometry(self):
