@@ -617,10 +617,11 @@ def element_moment_curvature(line, s, types, element_ei):
     mid = 0.5 * (s[:-1] + s[1:])
     n = len(mid)
     cable_ei = np.array([o[1, 1] / o[1, 0] if o is not None else t.bending_stiffness for o, t in zip(own, types)])
-    total_ei = cable_ei if element_ei is None else np.asarray(element_ei, float)
-    parts = [[own[e] if own[e] is not None else None] for e in range(n)]
+    given_ei = np.array([t.bending_stiffness for t in types], float)   # what element_ei starts from
+    added_ei = np.zeros(n) if element_ei is None else np.asarray(element_ei, float) - given_ei  # the stiffeners'
+    parts = [[own[e] if own[e] is not None else linear_law(cable_ei[e])] for e in range(n)]
     has = [own[e] is not None for e in range(n)]
-    stiff = np.zeros(n)   # the stiffeners' EI with a law, taken out of the linear rest
+    stiff = np.zeros(n)   # the EI of the stiffeners with a law, taken out of the linear rest
     for sec in with_law:
         x = sec.distance_from_root(mid, line.length)
         root = sec.root_law()
@@ -651,10 +652,8 @@ def element_moment_curvature(line, s, types, element_ei):
         if not has[e]:
             laws.append(None)
             continue
-        rest = total_ei[e] - stiff[e] - (cable_ei[e] if own[e] is not None else 0.0)
-        terms = [p for p in parts[e] if p is not None]
-        if abs(rest) > 0:
-            terms.append(linear_law(rest))
+        rest = added_ei[e] - stiff[e]   # the stiffeners' without a law
+        terms = parts[e] + ([linear_law(rest)] if abs(rest) > 1e-12 * max(cable_ei[e], 1.0) else [])
         laws.append(_simplified(law_sum(terms)))
     return tuple(laws)
 

@@ -98,3 +98,56 @@ def test_validate_refuses_them_before_a_run(tmp_path, capsys, edit, message):
     path.write_text(yaml.safe_dump(data))
     assert main(["validate", str(path)]) == 2
     assert message in capsys.readouterr().err
+
+
+def test_elements_take_the_cable_the_stiffener_and_the_restrictor_laws():
+    """Per element (its mid arc length x from the root): a bilinear cable (20000 then 5000 N m^2) inside a table
+    stiffener with a root law (EI 2e5 N m^2 to 0.02 1/m, then 5e4) tapering to 1e3 N m^2 at 4 m, and inside a
+    restrictor at the other end locking at 4 m with the default LOCK_FACTOR: M(kappa) = M_cable + EI_s(x) / EI_s(0)
+    M_root(kappa), and M_cable + LOCK_FACTOR 2e4 (kappa - 0.25)+; the element's EI the initial slope. To rounding."""
+    from seacable.mooring.network import network_from_line
+    from seacable.sections import LOCK_FACTOR
+
+    cable = sc.LineType(**_LT, moment_curvature=BILINEAR)
+    root = ((0.0, 0.0), (0.02, 4000.0), (0.1, 8000.0))
+    stiffener = BendStiffener(end="B", length=4.0, table=((0, 2e5), (4, 1e3)), moment_curvature=root)
+    restrictor = BendRestrictor(end="A", length=3.0, locking_radius=4.0, diameter=0.3)
+    line = sc.Line(segments=(sc.Segment(line_type=cable, length=20.0),), sections=(stiffener, restrictor))
+    net = network_from_line(line, (0, 0, -30), (15, 0, -5), water_density=1025.0, gravity=9.81, element_length=0.5)
+    mid = 0.5 * (net.arc_length[:-1] + net.arc_length[1:])
+    k = np.array([0.01, 0.05, 0.2, 0.3, 1.0])
+    for e, law in enumerate(net.element_moment_curvature):
+        expected = law_moment(BILINEAR, k)
+        if mid[e] > 16.0:
+            expected = expected + np.interp(20.0 - mid[e], [0, 4], [2e5, 1e3]) / 2e5 * law_moment(root, k)
+        if mid[e] < 3.0:
+            expected = expected + LOCK_FACTOR * 2e4 * np.maximum(k - 0.25, 0.0)
+        assert law_moment(law, k) == pytest.approx(expected, rel=1e-12)
+        assert net.bending_stiffness[e] == pytest.approx(law_slope(law, 0.0), rel=1e-12)
+
+
+def test_a_restrictors_and_a_cones_drag_and_added_mass_are_on_their_outer_diameter():
+    """Per element: the drag C_dn d' = C_dn <D> and the added mass C_an pi/4 d'^2 = C_an <pi/4 D^2> (<> the element's
+    mean: a restrictor's constant D = 0.3 m, a cone's D(x) linear, its mean the mid value and its mean square
+    exact), and outside the sections the cable's own. To rounding."""
+    from seacable.mooring.network import network_from_line
+
+    cable = sc.LineType(**_LT, bending_stiffness=1e4, drag_normal=1.1, drag_tangential=0.2, added_mass_normal=0.9)
+    cone = BendStiffener(end="B", length=4.0, cone=Cone(root_diameter=0.5, tip_diameter=0.2, modulus=5e7),
+                         density=1150.0)
+    restrictor = BendRestrictor(end="A", length=3.0, locking_radius=4.0, diameter=0.3, mass_per_length=8.0)
+    line = sc.Line(segments=(sc.Segment(line_type=cable, length=20.0),), sections=(cone, restrictor))
+    net = network_from_line(line, (0, 0, -30), (15, 0, -5), water_density=1025.0, gravity=9.81, element_length=0.5)
+    s = net.arc_length
+    x0, x1 = 20.0 - s[:-1], 20.0 - s[1:]          # from the cone's root
+
+    def dia(x):
+        return np.where((x >= 0) & (x <= 4), 0.5 - 0.3 * x / 4, 0.15)
+
+    mean_d = np.where(s[1:] <= 3.0 + 1e-9, 0.3, np.where(s[:-1] >= 16.0 - 1e-9, dia(0.5 * (x0 + x1)), 0.15))
+    d0, d1 = dia(x0), dia(x1)
+    cone_sq = (d0**2 + d0 * d1 + d1**2) / 3   # the mean of a linear D's square
+    mean_sq = np.where(s[1:] <= 3.0 + 1e-9, 0.09, np.where(s[:-1] >= 16.0 - 1e-9, cone_sq, 0.15**2))
+    assert net.cdn * net.diameter == pytest.approx(1.1 * mean_d, rel=1e-12)
+    assert net.cdt * net.diameter == pytest.approx(0.2 * mean_d, rel=1e-12)
+    assert net.can * net.diameter**2 == pytest.approx(0.9 * mean_sq, rel=1e-12)
