@@ -34,6 +34,7 @@ buoyant section is a smeared equivalent cylinder). Seo, J. H. (2026). CableDyn 0
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Annotated, Literal
 
@@ -519,7 +520,7 @@ def _mean_over(f, lo, hi, knots, length):
     out = np.zeros(len(lo))
     for e in np.flatnonzero(hi > lo):
         edges = np.unique(np.r_[lo[e], knots[(knots > lo[e]) & (knots < hi[e])], hi[e]])
-        for a, b in zip(edges[:-1], edges[1:]):
+        for a, b in itertools.pairwise(edges):
             out[e] += (b - a) / 6.0 * (f(a) + 4.0 * f(0.5 * (a + b)) + f(b))
     return out / length
 
@@ -568,11 +569,14 @@ def element_section_properties(line, s, types, water_density: float, gravity: fl
             knots = sec.geometry_knots()
             mat = np.zeros(len(h))
             for e in np.flatnonzero(hi > lo):
-                de = d[e]
-                mat[e] = _mean_over(lambda x: 0.25 * math.pi * (float(sec.outer_diameter(x, de)) ** 2 - de**2),
-                                    lo[e:e + 1], hi[e:e + 1], knots, h[e])[0]
-                dia[e] += _mean_over(lambda x: float(sec.outer_diameter(x, de)) - de, lo[e:e + 1], hi[e:e + 1],
-                                     knots, h[e])[0]
+                def ring(x, sec=sec, de=d[e]):
+                    return 0.25 * math.pi * (float(sec.outer_diameter(x, de)) ** 2 - de**2)
+
+                def over(x, sec=sec, de=d[e]):
+                    return float(sec.outer_diameter(x, de)) - de
+
+                mat[e] = _mean_over(ring, lo[e:e + 1], hi[e:e + 1], knots, h[e])[0]
+                dia[e] += _mean_over(over, lo[e:e + 1], hi[e:e + 1], knots, h[e])[0]
             env += mat
         a_s += mat
         out["mass_per_length"] = out["mass_per_length"] + rho_s * mat

@@ -10,7 +10,15 @@ import yaml
 import seacable as sc
 from seacable.cli import main
 from seacable.errors import InputError
-from seacable.moment_curvature import check_table, law_energy, law_moment, law_slope, law_sum, linear_law, lock_law
+from seacable.moment_curvature import (
+    check_table,
+    law_energy,
+    law_moment,
+    law_slope,
+    law_sum,
+    linear_law,
+    lock_law,
+)
 from seacable.sections import BendRestrictor, BendStiffener, Cone
 
 BILINEAR = ((0.0, 0.0), (0.1, 2000.0), (0.5, 4000.0))   # 20000 then 5000 N m^2

@@ -67,8 +67,8 @@ from ..errors import InputError
 from .summary import case_data
 
 __all__ = ["ARCH_PROMINENCE", "CableCheck", "CableLimits", "bends", "cable_check_table", "cable_checks",
-           "cable_limits", "has_curvature", "plot_range_graphs", "range_graphs", "seabed_clearance", "section_checks",
-           "seabed_elevation"]
+           "cable_limits", "has_curvature", "plot_range_graphs", "range_graphs", "seabed_clearance",
+           "seabed_elevation", "section_checks"]
 
 #: An arch (a hog bend) stands above the lowest point on either side of it by at least this share of the line's
 #: height range above the seabed, so that a ripple of the mesh or of the contact is not taken for one. [-]
