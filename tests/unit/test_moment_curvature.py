@@ -53,6 +53,16 @@ def test_full_odd_table_is_its_positive_half():
 _LT = {"diameter": 0.15, "mass_per_length": 40.0, "axial_stiffness": 5e8}
 
 
+def _cone_with_law():
+    from seacable.mooring.network import network_from_line
+
+    cone = Cone(root_diameter=0.4, tip_diameter=0.2, modulus=5e7)   # root EI 5e7 pi / 64 (0.4^4 - 0.15^4) = 61,589 N m^2
+    stiffener = BendStiffener(length=4.0, cone=cone, moment_curvature=((0, 0), (0.1, 600.0)))
+    line = sc.Line(segments=(sc.Segment(line_type=sc.LineType(**_LT, bending_stiffness=1e4), length=20.0),),
+                   sections=(stiffener,))
+    return network_from_line(line, (0, 0, -30), (15, 0, -5), water_density=1025.0, gravity=9.81, element_length=0.5)
+
+
 @pytest.mark.parametrize("make, message", [
     (lambda: sc.LineType(**_LT, moment_curvature=((0, 0), (0.1, 2000), (0.2, 1500))), "the law must be monotone"),
     (lambda: sc.LineType(**_LT, moment_curvature=((-0.1, -1000), (0, 0), (0.1, 2000))), "is not odd"),
@@ -73,6 +83,7 @@ _LT = {"diameter": 0.15, "mass_per_length": 40.0, "axial_stiffness": 5e8}
                            geometry=((0, 0.4), (4, 0.2))), "'geometry' is not used"),
     (lambda: BendStiffener(length=4.0, table=((0, 2e5), (4, 1e3)), density=1150.0, geometry=((0, 0.4), (3, 0.2))),
      "geometry must run from x = 0 (the root) to x = length = 4 m"),
+    (_cone_with_law, "moment_curvature starts at slope 6000 N m^2, but its cone's EI at the root is 61589.3 N m^2"),
 ])
 def test_bad_laws_restrictors_and_stiffeners_get_one_clear_message(make, message):
     with pytest.raises((InputError, ValueError)) as err:
