@@ -28,6 +28,7 @@ __all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "re
 _RHO, _G = 1025.0, 9.81
 
 #: The cable limits of a line type, left out of a dumped case when not given.
+# left out of a dumped line type when not given (with the bending law, which came later)
 _LIMITS = ("minimum_bend_radius", "minimum_bend_radius_dynamic", "allowable_tension", "allowable_compression",
            "moment_curvature")
 _MBR_FIX = "give the minimum bend radius in metres (> 0 m), e.g. 3.0 for a cable of 0.15 m diameter."
@@ -227,14 +228,6 @@ class LineType(Model):
                              f"{ei:.6g} N m^2: the law's initial slope is the cable's EI. Suggested fix: leave "
                              "bending_stiffness out (the law gives it), or check the table's units (1/m, N m).")
         return self
-
-    @property
-    def initial_bending_stiffness(self) -> float:
-        """EI: the moment-curvature law's initial slope, else ``bending_stiffness``. [N m^2]"""
-        if self.moment_curvature is None:
-            return self.bending_stiffness
-        half = check_table(self.moment_curvature, "moment_curvature")
-        return half[1][1] / half[1][0]
 
     @field_validator("tension_strain")
     @classmethod
