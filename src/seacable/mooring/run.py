@@ -98,6 +98,13 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
                     f"(EI = {ei[e]:g} N m^2): a moment at the end needs a line that bends. Suggested fix: give "
                     f"the end segment's line type 'bending_stiffness' in N m^2 (e.g. 1e4), or leave {name} "
                     "out (pinned).")
+            laws = net.element_moment_curvature
+            if cond.type == "spring" and laws is not None and laws[e] is not None:
+                raise InputError(
+                    f"analysis.{name} is a rotational spring, but the line's end element there has a nonlinear "
+                    "moment-curvature law (a line type's, a bend stiffener's or a bend restrictor's): a spring in "
+                    "series with a nonlinear half element is not supported. Suggested fix: type: clamped, or a "
+                    "linear law (bending_stiffness) on the end segment.")
         net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
     start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
