@@ -11,13 +11,15 @@ static hang-off tension is 213.08 kN in all three codes (CableDyn 213.082, seaca
 Accuracy on the peak curvature (the largest nodal ``4 sin(theta/2) / (l1 + l2)``, at the end of the buoyant section),
 seacable statics (mesh sequencing from 60 elements): elements of 4 / 2 / 1 / 0.5 / 0.25 m give 0.016165 / 0.016469 /
 0.016552 / 0.016573 / 0.016586 1/m, so 2 m elements are within 0.7 % of the converged 0.01659 (second order), 1 m
-within 0.2 %. In time, 0.1 s and 0.05 s steps give the hang-off's largest tension 251.6 and 251.3 kN (0.1 %). CableDyn
-runs at the same 2 m (its deck's fixed step 0.05 s); its own 1 % mesh was not searched for. MoorDyn joins the three
-sections at free points, which carry no moment: its curvature peaks elsewhere (0.016327 1/m at 2 m segments, in the
-arch), so its 1 % mesh was not searched for either (its static solve at 2 m alone takes minutes); both run here at
-seacable's 2 m mesh, which favours them.
+within 0.2 %. In time, 0.1 s and 0.05 s steps give the hang-off's largest tension 251.6 and 251.3 kN (0.1 %).
+CableDyn's own 1 % mesh is searched for the same way, on the peak of its own curvature output (cubic Hermite, so
+it overshoots on coarse meshes) against seacable's converged 0.016581 1/m: 4 / 3 / 2.5 / 2 / 1 m give +6.9 / +2.2 /
++0.15 / +0.33 / -0.07 %, so its 1 % mesh is 2.5 m (560 elements), and it runs the heave there (its deck's fixed
+step 0.05 s) and at 2 m. MoorDyn's hinges are seacable's (the same discrete rod), so its 1 % mesh is seacable's 2 m;
+it joins the three sections at free points, which carry no moment, so its curvature peaks elsewhere (0.016327 1/m
+at 2 m segments, in the arch), and its static solve at 2 m alone takes minutes: it runs at 2 m.
 
-Measured 2026-11-30 on the shared 2-core machine at load 6-8 (other jobs running; one process each; wall times):
+Measured 2026-11-29 and -30 on the shared 2-core machine at load 0.5-8 (other jobs running; one process each; wall times):
 
 =========================  ==========================  ==================================================
 code, mesh                 statics                     60 s of heave
@@ -27,14 +29,15 @@ seacable, 2 m elements     0.14-0.47 s                 1.15-1.28 s at 0.1 s step
                                                        (3.8 a step; once 4.1 s at load 7); 7.1 s
                                                        at 0.1 s and radius 1 (no numerical damping: 16.7
                                                        iterations a step, and halvings)
-CableDyn 0.3.0, 2 m        0.21-0.24 s                 6.9-7.4 s at its 0.05 s (largest hang-off 251.6 kN)
+CableDyn 0.3.0, 2.5 m      0.19 s                      5.7 s at its 0.05 s (largest hang-off 251.6 kN)
+CableDyn 0.3.0, 2 m        0.21-0.24 s                 6.7-7.4 s at its 0.05 s (largest hang-off 251.6 kN)
 MoorDyn 2.7.2, 2 m         139-242 s (IC to 2.3e-3     about 89 s (2.96 s for 2 s at dtM 2e-4 s)
                            m/s^2 in its 200 s; 20 s
                            leaves 0.5 kN)
 =========================  ==========================  ==================================================
 
-Statics plus heave: seacable 1.3-1.4 s at its own 0.1 s step against CableDyn's 7.1-7.7 s, 0.18-0.2 of it (target
-0.5; at CableDyn's 0.05 s step, 1.7 s, 0.23), and against MoorDyn's 230-330 s under 0.01 (target 0.1). MoorDyn's static solve needs
+Statics plus heave, each code at its own 1 % mesh: seacable 1.3-1.4 s at its own 0.1 s step against CableDyn's
+5.9 s at 2.5 m, 0.22-0.24 of it (target 0.5; at CableDyn's 0.05 s step, 1.7 s, 0.29; at CableDyn's 2 m, 6.9-7.7 s), and against MoorDyn's 230-330 s under 0.01 (target 0.1). MoorDyn's static solve needs
 its free points started near the answer (from a rough guess it diverged to 2e8 N); they are started at seacable's
 static positions. The average-acceleration step (spectral radius 1, the mooring default) rings in the cable's
 unresolved axial and bending modes here, and Newton pays for it; at 0.9 (as CableDyn's generalised-alpha damps
@@ -153,11 +156,12 @@ def run_moordyn(path: Path, duration: float = 60.0, dt: float = 0.01):
     return static, time.perf_counter() - wall, force, peak_curvature(shape[:, 0], shape[:, 2])
 
 
-def run_cabledyn(case, folder: Path, element_length: float = 2.0, dt: float = 0.05):
+def run_cabledyn(case, folder: Path, element_length: float = 2.0, dt: float = 0.05, heave: bool = True):
     """CableDyn 0.3.0 on the same case (the deck written by ``tests/validation/_cabledyn_peer.py``, its hang-off a
     coupled point driven through its MoorDyn-like Python API with the heave's position, velocity and acceleration at
     each step's end, at its deck's fixed step ``dt``): (static s, dynamic s, static hang-off [N], largest hang-off
-    tension of the heave [N])."""
+    tension of the heave [N], the static shape's peak curvature [1/m] from its own cubic-Hermite output); without
+    ``heave`` the statics alone (dynamic s and the largest tension then 0)."""
     sys.path.insert(0, str(Path(__file__).parents[1] / "tests" / "validation"))
     import _cabledyn_peer as peer
     from cabledyn.model import CableDyn
@@ -170,6 +174,10 @@ def run_cabledyn(case, folder: Path, element_length: float = 2.0, dt: float = 0.
     static = time.perf_counter() - wall
     q0, _, _ = model.get_coupled_motion()
     top = model.channel("FairTen1")
+    kappa = float(np.max(np.abs(model.line(1).curvature())))
+    if not heave:
+        model.close()
+        return static, 0.0, top, 0.0, kappa
     omega, ramp, t, largest = 2.0 * math.pi / 12.0, 12.0, 0.0, 0.0
     wall = time.perf_counter()
     for _ in range(round(60.0 / dt)):
@@ -186,7 +194,7 @@ def run_cabledyn(case, folder: Path, element_length: float = 2.0, dt: float = 0.
         model.step(dt, q, v, a)
         largest = max(largest, model.channel("FairTen1"))
     model.close()
-    return static, time.perf_counter() - wall, top, largest
+    return static, time.perf_counter() - wall, top, largest, kappa
 
 
 def main(with_moordyn: bool = False) -> None:
@@ -205,10 +213,14 @@ def main(with_moordyn: bool = False) -> None:
     solve(case(50.0))  # the kernels compiled (or loaded from the cache) before the timing
     solve(case(50.0, heave=True))
     print(f"{'seacable mesh [m]':>17} {'statics [s]':>12} {'peak curvature [1/m]':>21} {'hang-off [kN]':>14}")
+    peaks = {}
     for h in (4.0, 2.0, 1.0, 0.5):
         ds, wall, _ = solve(case(h))
-        print(f"{h:17.2f} {wall:12.2f} {peak_curvature(ds['x'].values, ds['z'].values):21.6f} "
-              f"{float(ds['fairlead_tension']) / 1e3:14.3f}")
+        peaks[h] = peak_curvature(ds['x'].values, ds['z'].values)
+        print(f"{h:17.2f} {wall:12.2f} {peaks[h]:21.6f} {float(ds['fairlead_tension']) / 1e3:14.3f}")
+    converged = peaks[0.5] + (peaks[0.5] - peaks[1.0]) / 3.0  # Richardson: the nodal curvature is second order
+    print(f"converged peak curvature (Richardson, 1 and 0.5 m): {converged:.6f} 1/m; seacable at 2 m "
+          f"{100.0 * (peaks[2.0] / converged - 1.0):+.2f} %")
     for dt in (0.1, 0.05):
         ds, wall, cpu = solve(case(2.0, heave=True, time_step=dt))
         print(f"seacable 2 m, 60 s of heave at {dt:g} s, spectral radius 0.9: {wall:.2f} s wall, {cpu:.2f} s CPU, "
@@ -221,9 +233,17 @@ def main(with_moordyn: bool = False) -> None:
     else:
         path = folder / "case.yaml"
         path.write_text(yaml.safe_dump(case(2.0), sort_keys=False))
-        static, dynamic, top, largest = run_cabledyn(sc.load_case(path), folder)
-        print(f"CableDyn 2 m: statics {static:.2f} s (hang-off {top / 1e3:.3f} kN), 60 s of heave at 0.05 s "
-              f"{dynamic:.2f} s (largest hang-off {largest / 1e3:.1f} kN)")
+        own = 2.0
+        for h in (4.0, 3.0, 2.5, 2.0):  # CableDyn's own 1 % mesh: the coarsest within 1 % of the converged peak
+            static, _, top, _, kappa = run_cabledyn(sc.load_case(path), folder, element_length=h, heave=False)
+            error = kappa / converged - 1.0
+            print(f"CableDyn {h:g} m: statics {static:.2f} s, peak curvature {kappa:.6f} 1/m ({100.0 * error:+.2f} %)")
+            if abs(error) <= 0.01:
+                own = max(own, h)
+        for h in sorted({own, 2.0}, reverse=True):
+            static, dynamic, top, largest, _ = run_cabledyn(sc.load_case(path), folder, element_length=h)
+            print(f"CableDyn {h:g} m: statics {static:.2f} s (hang-off {top / 1e3:.3f} kN), 60 s of heave at 0.05 s "
+                  f"{dynamic:.2f} s (largest hang-off {largest / 1e3:.1f} kN)")
     if with_moordyn:
         st, _, _ = solve(case(2.0))
         s = st["s"].values

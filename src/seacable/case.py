@@ -694,8 +694,8 @@ class MooringDynamicAnalysis(_Mooring):
 
     Truss finite elements, lumped and added mass, Morison loads, seabed contact, the generalised-alpha
     method (Chung and Hulbert 1993) with Newton iterations each step: ``spectral_radius`` 1 (the
-    default) is Newmark's average acceleration (beta 1/4, gamma 1/2), below 1 it damps the modes the
-    step cannot resolve (a snap load's ringing). The run starts from the static equilibrium. With
+    default for lines without bending stiffness) is Newmark's average acceleration (beta 1/4, gamma 1/2), below 1
+    it damps the modes the step cannot resolve (a snap load's ringing; 0.9, a cable's default). The run starts from the static equilibrium. With
     ``end_b: free`` the line's end B is a free node (a buoy: put an attachment at its end) and
     ``release_from`` holds it at (x, z) for the static start, then lets it go at t = 0.
     """
@@ -708,9 +708,11 @@ class MooringDynamicAnalysis(_Mooring):
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
     spectral_radius: quantity("-", ge=0, le=1, fix="use 1 (no numerical damping) or 0.7-0.9 to damp the "
-                                                   "ringing of stiff modes at a coarse step.") = Field(
-        1.0, description="Generalised-alpha amplification per step of the modes far above 1 / time_step "
-                         "(1: average acceleration, no numerical damping; 0: the most damping). [-]")
+                                                   "ringing of stiff modes at a coarse step.") | None = Field(
+        None, description="Generalised-alpha amplification per step of the modes far above 1 / time_step "
+                          "(1: average acceleration, no numerical damping; 0: the most damping). Default: 1 for "
+                          "lines without bending stiffness, 0.9 for a cable (a line with bending stiffness, whose "
+                          "unresolved bending and axial modes ring at 1 and cost Newton iterations). [-]")
     output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
     damping_ratio: quantity("-", ge=0, le=10) = Field(
         0.0, description="Axial damping ratio of each element's axial mode (MoorDyn's BA = -ratio). [-]")

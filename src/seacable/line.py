@@ -19,7 +19,8 @@ from pydantic import Field, field_validator, model_serializer, model_validator
 
 from ._model import Model, quantity
 from .errors import InputError, SeacableWarning
-from .sections import BendStiffener, BuoyancySection, Section, smeared_line_type
+from .moment_curvature import check_table
+from .sections import BendRestrictor, BendStiffener, BuoyancySection, Section, smeared_line_type
 
 __all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections"]
 
@@ -27,7 +28,9 @@ __all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "re
 _RHO, _G = 1025.0, 9.81
 
 #: The cable limits of a line type, left out of a dumped case when not given.
-_LIMITS = ("minimum_bend_radius", "minimum_bend_radius_dynamic", "allowable_tension", "allowable_compression")
+# left out of a dumped line type when not given (with the bending law, which came later)
+_LIMITS = ("minimum_bend_radius", "minimum_bend_radius_dynamic", "allowable_tension", "allowable_compression",
+           "moment_curvature")
 _MBR_FIX = "give the minimum bend radius in metres (> 0 m), e.g. 3.0 for a cable of 0.15 m diameter."
 #: An MBR over this many diameters looks like millimetres (cables' MBRs are about 10-40 diameters). [-]
 _MBR_IN_MM = 1000.0
@@ -55,6 +58,12 @@ class LineType(Model):
         Axial stiffness EA; ``None`` for an inextensible line. [N]
     bending_stiffness
         Bending stiffness EI. [N m^2]
+    moment_curvature
+        Optional nonlinear bending law instead of EI, ``(kappa [1/m], M [N m])`` pairs from ``(0, 0)``, curvature and
+        moment rising (e.g. bilinear: the armour's stick and slip, without hysteresis), odd (negative curvatures, if
+        given, mirror the positive), linear between pairs and along the last slope beyond (reported by the cable
+        checks); its initial slope is the cable's EI (``bending_stiffness``, if given, must agree within 1 %)
+        (:mod:`seacable.moment_curvature`; the mooring finite-element line). [1/m, N m]
     drag_normal, drag_tangential
         Drag coefficients normal and tangential to the line, on the diameter (a faired cable: on the fairing's
         chord and on its wetted perimeter, ``drag_law``). [-]
@@ -120,6 +129,8 @@ class LineType(Model):
     axial_stiffness: quantity("N", gt=0, fix="give EA in newtons, e.g. 4.2e5.") | None = Field(
         None, description="Axial stiffness EA; left out for an inextensible line. [N]")
     bending_stiffness: quantity("N m^2", ge=0) = Field(0.0, description="Bending stiffness EI. [N m^2]")
+    moment_curvature: tuple[tuple[float, float], ...] | None = Field(
+        None, description="Nonlinear bending law: (curvature [1/m], moment [N m]) pairs from (0, 0), rising, odd.")
     drag_normal: quantity("-", ge=0) = Field(1.2, description="Normal drag coefficient. [-]")
     drag_tangential: quantity("-", ge=0) = Field(0.0, description="Tangential drag coefficient. [-]")
     drag_law: Literal["morison", "faired"] = Field(
@@ -204,6 +215,19 @@ class LineType(Model):
             c = self.fairing_chord
             cdn, cdt = cdn * c / self.diameter, cdt * 2.1 * c / (math.pi * self.diameter)
         return cdn * self.drag_amplification(), cdt
+
+    @model_validator(mode="after")
+    def _check_moment_curvature(self):
+        if self.moment_curvature is None:
+            return self
+        half = check_table(self.moment_curvature, "moment_curvature")
+        slope = half[1][1] / half[1][0]
+        ei = self.bending_stiffness
+        if ei > 0 and not abs(slope - ei) <= 0.01 * ei:
+            raise ValueError(f"moment_curvature starts at slope M/kappa = {slope:.6g} N m^2, but bending_stiffness is "
+                             f"{ei:.6g} N m^2: the law's initial slope is the cable's EI. Suggested fix: leave "
+                             "bending_stiffness out (the law gives it), or check the table's units (1/m, N m).")
+        return self
 
     @field_validator("tension_strain")
     @classmethod
@@ -426,7 +450,7 @@ class Line(Model):
         total = self.length
         spans = []
         for i, sec in enumerate(self.sections):
-            if isinstance(sec, BendStiffener):
+            if isinstance(sec, (BendStiffener, BendRestrictor)):
                 sec.check_on(self)
                 continue
             if sec.length > total * (1 + 1e-12):
@@ -521,7 +545,7 @@ def resolve_sections(line, water_density: float, gravity: float):
         for sec in line.sections:
             if isinstance(sec, BuoyancySection):
                 cuts.update(c for c in (sec.start, sec.end) if s0 + 1e-9 < c < s1 - 1e-9)
-            else:
+            else:  # a stiffener's tip, a restrictor's far end
                 tip = sec.length if sec.end == "A" else total - sec.length
                 if s0 + 1e-9 < tip < s1 - 1e-9:
                     cuts.add(tip)

@@ -99,3 +99,79 @@ def test_cabledyn_runs_the_same_data(tmp_path):
     assert got["curvature"] == pytest.approx(CABLEDYN["curvature"], rel=1e-4)  # its nodal peak, 0.096829
     assert got["sag_z"] == pytest.approx(CABLEDYN["sag_z"], abs=1e-4)
     assert got["hog_z"] == pytest.approx(CABLEDYN["hog_z"], abs=1e-4)
+
+
+# CableDyn's example decks of the two deeper installed cables of Lozon et al. (2025), lozon_gomaine200_power_cable.dat
+# and lozon_humboldt800_power_cable.dat (their numbers; of the solver options only the step and TMax 0, statics only):
+# (site, depth [m], buoyant section's diameter [m] and mass [kg/m], sections' lengths [m] and element counts from the
+# hang-off)
+INSTALLED = {
+    "gomaine200": (200.0, 0.300, 60.85, ((171.978, 464), (60.0, 160), (121.527, 328))),
+    "humboldt800": (800.0, 0.290, 59.17, ((372.449, 256), (400.0, 256), (597.981, 512))),
+}
+INSTALLED_DECK = """--------------------- CableDyn Input File ------------------------------------
+Lozon et al. (2025) {site} installed lazy-wave dynamic power cable (CableDyn's example deck)
+--------------------- LINE TYPES ---------------------------------------------
+TypeName  Diam   MassDenInAir  EA       BA   EI       Cd_n  Cd_t  Ca_n  Ca_t
+(-)       (m)    (kg/m)        (N)      (-)  (N-m2)   (-)   (-)   (-)   (-)
+bare      0.160  36.70         4.69e8   0.0  1.99e4   1.2   0.1   1.0   0.0
+buoy      {d:.3f}  {m:.2f}         4.69e8   0.0  1.99e4   1.2   0.1   1.0   0.0
+--------------------- POINTS ------------------------------------------------
+ID  Type     X       Y    Z
+(-) (-)      (m)     (m)  (m)
+1   Coupled  5.0     0.0  -14.0
+2   Fixed    {x:.1f}   0.0  -{depth:.1f}
+--------------------- LINES -------------------------------------------------
+ID  NodeA  NodeB  Outputs
+(-) (-)    (-)    (-)
+1   1      2      -
+--------------------- SECTIONS ----------------------------------------------
+LineID  LineType  Length   NumSegs
+(-)     (-)       (m)      (-)
+1       bare      {l0:.3f}  {n0}
+1       buoy      {l1:.3f}  {n1}
+1       bare      {l2:.3f}  {n2}
+--------------------- OPTIONS -----------------------------------------------
+9.80665  g
+1025.0   rhoW
+{depth:.1f}    WtrDpth
+1.0e5    kBot
+1.0e4    cBot
+0.05     dtM
+0.0      TMax
+--------------------- OUTPUTS -----------------------------------------------
+"FairTen1"
+"AnchTen1"
+--------------------- need this line ----------------------------------------
+"""
+
+
+@pytest.mark.parametrize("site", list(INSTALLED))
+def test_installed_200m_and_800m_decks_run_as_in_cabledyn(site, tmp_path):
+    """The deeper installed cables, each deck read by seacable's MoorDyn reader and run by both codes: the same
+    hang-off and seabed-end tension and peak curvature (measured: 200 m 25159.80 / 25159.82 N, 1677.65 / 1677.12 N,
+    0.083151 / 0.083156 1/m; 800 m 56538.31 / 56538.48 N, 5601.33 / 5601.19 N, 0.028011 / 0.028017 1/m)."""
+    cabledyn = pytest.importorskip("cabledyn.model", reason="pip install -e '.[test]' brings CableDyn")
+    from seacable.mooring.moordyn import run_moordyn_file
+
+    depth, diameter, mass, sections = INSTALLED[site]
+    (l0, n0), (l1, n1), (l2, n2) = sections
+    deck = tmp_path / f"lozon_{site}_power_cable.dat"
+    deck.write_text(INSTALLED_DECK.format(site=site, d=diameter, m=mass, x=5.0 + depth, depth=depth,
+                                          l0=l0, n0=n0, l1=l1, n1=n1, l2=l2, n2=n2))
+    ours = run_moordyn_file(deck)
+    peer = cabledyn.CableDyn()
+    peer.init_deck(deck)
+    try:
+        tension, anchor = peer.channel("FairTen1"), peer.channel("AnchTen1")
+        kappa = float(np.max(np.abs(peer.line(1).curvature())))
+    finally:
+        peer.close()
+    # the hang-off: one static equilibrium of the same discretised load, 1e-6 apart measured; 1e-5 holds it
+    assert float(ours.fairlead_tension.squeeze()) == pytest.approx(tension, rel=1e-5)
+    # the seabed end: the penalty contact spreads the touchdown over a node's length differently in the two
+    # element types (0.53 and 0.14 N measured, as the 80 m case's 0.47 N): 1 N
+    assert float(ours.anchor_tension.squeeze()) == pytest.approx(anchor, abs=1.0)
+    # the peak curvature: our hinge's central difference against CableDyn's cubic element, both on the deck's
+    # 1.2-1.6 m elements: 0.006 and 0.02 % apart measured; 0.1 %
+    assert float(np.nanmax(ours.curvature.values)) == pytest.approx(kappa, rel=1e-3)

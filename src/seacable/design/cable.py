@@ -37,6 +37,8 @@ The checks (each a row; a check without its limit or its data is "not checked: <
   clearance (``design.sag_bend_clearance``, ``hog_bend_clearance``, 0 m by default), margin ``c - c_req`` [m],
   utilisation ``c_req / c`` where both are > 0. A line without an arch (a plain catenary: its only sag bend is the
   touchdown, on the seabed by design) or without a seabed (no depth) is not checked.
+- **bend restrictor**, **moment-curvature table** (:func:`section_checks`): a restrictor locked or free, with its
+  utilisation ``kappa R_lock``; a hinge past the end of a user's moment-curvature table.
 - **hang-off declination** (a range, two rows: its lowest against the range's lower end, its highest against the
   upper): the declination at end B (the result's ``declination`` at the last node: the direction of the end
   element, the angle the cable leaves its hang-off at, also at a clamped end, whose given direction is fixed) over
@@ -52,6 +54,7 @@ the result's ``attrs["depth"]`` (flat). A node on the seabed shows the contact's
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass, fields
@@ -65,7 +68,7 @@ from .summary import case_data
 
 __all__ = ["ARCH_PROMINENCE", "CableCheck", "CableLimits", "bends", "cable_check_table", "cable_checks",
            "cable_limits", "has_curvature", "plot_range_graphs", "range_graphs", "seabed_clearance",
-           "seabed_elevation"]
+           "seabed_elevation", "section_checks"]
 
 #: An arch (a hog bend) stands above the lowest point on either side of it by at least this share of the line's
 #: height range above the seabed, so that a ripple of the mesh or of the contact is not taken for one. [-]
@@ -433,7 +436,7 @@ class CableCheck:
     check
         ``"curvature (dynamic MBR)"``, ``"curvature (static MBR)"``, ``"tension"``, ``"compression"``, ``"sag bend
         clearance"``, ``"hog bend clearance"``, ``"hang-off declination (lowest)"``, ``"hang-off declination
-        (highest)"``.
+        (highest)"``, ``"bend restrictor at end A"`` (or B), ``"moment-curvature table (<whose>)"``.
     quantity
         The result's variable checked (``curvature``, ``segment_tension``, ``seabed_clearance``, ``declination``).
     unit
@@ -451,7 +454,7 @@ class CableCheck:
     passed
         ``margin >= 0``; None: not checked.
     status
-        ``"pass"``, ``"FAIL"`` or ``"not checked: <why>"``.
+        ``"pass"``, ``"FAIL"`` or ``"not checked: <why>"``; a bend restrictor's ``"free"`` or ``"LOCKED"``.
     s
         Where: the arc length of the worst node or element's middle. [m]
     time
@@ -544,7 +547,8 @@ def cable_checks(ds: xr.Dataset, limits: CableLimits | None = None, line: str | 
     Returns
     -------
     list of CableCheck
-        In the order curvature, tension, compression, sag bend, hog bend, hang-off declination (lowest, highest).
+        In the order curvature, tension, compression, sag bend, hog bend, hang-off declination (lowest, highest),
+        then a row a bend restrictor and a row a moment-curvature table (:func:`section_checks`).
     """
     one = _line_view(ds, line)
     if limits is None:
@@ -557,6 +561,72 @@ def cable_checks(ds: xr.Dataset, limits: CableLimits | None = None, line: str | 
     out += _tension_checks(one, limits, state, states, s_node)
     out += _clearance_checks(ds, one, limits, state, states, s_node, line)
     out += _declination_checks(one, limits, state, states, s_node)
+    out += section_checks(one, state, states, s_node)
+    return out
+
+
+def _spans(data: dict) -> list[tuple[str, float, float, dict]]:
+    """``(kind, s_from, s_to, data)`` of the case's bend restrictors and moment-curvature tables (a line type's over
+    its segments, a stiffener's over its length), by arc length from end A. [m]"""
+    segments = _segments(data)
+    total = segments[-1][1] if segments else 0.0
+    out = []
+    for i, (a, b, lt) in enumerate(segments):
+        if lt.get("moment_curvature"):
+            out.append((f"line type {lt['name']}" if lt.get("name") else f"line.segments[{i}]", a, b, lt))
+    for sec in ((data.get("line") or {}).get("sections") or []):
+        if not isinstance(sec, dict) or sec.get("type") not in ("bend_restrictor", "bend_stiffener"):
+            continue
+        length = float(sec.get("length") or 0.0)
+        a, b = (0.0, length) if sec.get("end", "B") == "A" else (total - length, total)
+        if sec["type"] == "bend_restrictor":
+            out.append(("restrictor", a, b, sec))
+        elif sec.get("moment_curvature"):
+            out.append((f"bend stiffener at end {sec.get('end', 'B')}", a, b, sec))
+    return out
+
+
+def section_checks(one: xr.Dataset, state, states, s_node) -> list[CableCheck]:
+    """The rows of a line's bend restrictors and moment-curvature tables, from the case the result records.
+
+    - **bend restrictor at end A/B** (bound: max): the largest curvature over its length against its locking
+      curvature ``1 / R_lock``, utilisation ``kappa R_lock``, margin ``1 / R_lock - kappa`` [1/m]; status ``free``
+      or ``LOCKED`` (locked: the vertebrae carry the moment beyond the lock, the curvature held near ``1 / R_lock``).
+    - **moment-curvature table (<whose>)** (max): the largest curvature where a user's table applies (a line type's
+      segments, a stiffener's length) against the table's last curvature: beyond it the law is extrapolated along
+      its last slope, utilisation ``kappa / kappa_last``.
+
+    None of either: no rows. A result without curvature: no rows either (the curvature row says why).
+    """
+    data = case_data(one) or {}
+    spans = _spans(data)
+    if not spans or "curvature" not in one.variables:
+        return []
+    kappa = _states(one["curvature"], state, "node")
+    tol = 1e-9 * max(1.0, float(np.max(np.abs(s_node))))
+    out = []
+    for kind, a, b, sec in spans:
+        on = np.flatnonzero((s_node >= a - tol) & (s_node <= b + tol))
+        if kind == "restrictor":
+            check = f"bend restrictor at end {sec.get('end', 'B')}"
+            limit = 1.0 / float(sec["locking_radius"])
+            formula = f"kappa <= 1 / R_lock = 1 / {float(sec['locking_radius']):.6g} m (free below, locked above)"
+        else:
+            table = sec["moment_curvature"]
+            check = f"moment-curvature table ({kind})"
+            limit = max(abs(float(k)) for k, _ in table)
+            formula = f"kappa <= {limit:.6g} 1/m, the table's last curvature (extrapolated beyond)"
+        if on.size == 0:
+            out.append(_skip(check, "curvature", "1/m", "max", "no node of the result lies on it"))
+            continue
+        sub = kappa[:, on]
+        k_state, k_node = np.unravel_index(int(np.nanargmax(sub)), sub.shape)
+        value = float(sub[k_state, k_node])
+        row = _row(check, "curvature", "1/m", "max", value, limit, value / limit,
+                   _where(state, states, k_state, s_node[on[k_node]]), formula)
+        if kind == "restrictor":
+            row = dataclasses.replace(row, status="free" if row.passed else "LOCKED")
+        out.append(row)
     return out
 
 

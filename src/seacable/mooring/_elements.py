@@ -20,6 +20,9 @@ from ._indices import (
     H_EI,
     H_K,
     H_KIND,
+    H_L0,
+    H_NLAW,
+    H_SIZE,
     V_BAD,
     V_EAD,
     V_K1,
@@ -109,6 +112,35 @@ def syrope_tension(eps, row, lo, hi, ts_x, ts_y):
 
 
 @njit(cache=True)
+def hinge_law(row, kappa):
+    """A hinge's nonlinear law at curvature ``kappa >= 0`` (its knots from ``row[H_SIZE]`` on, :mod:`._indices`).
+
+    Returns ``(M, dM/dkappa, W, sigma, q)``: the moment [N m], its slope [N m^2], the energy per length
+    ``W = integral_0^kappa M dk`` [N], the secant ``sigma = M / kappa`` [N m^2] and ``q = (dM/dkappa - sigma) /
+    kappa^2`` [N m^4], the last two exact (the first segment's slope, 0) on the first segment, where kappa may be 0.
+    Beyond the last knot the law goes on along its last segment's slope.
+    """
+    n = int(row[H_NLAW])
+    w = 0.0
+    j = 0
+    while j < n - 2 and kappa > row[H_SIZE + 2 * (j + 1)]:
+        k0, m0 = row[H_SIZE + 2 * j], row[H_SIZE + 2 * j + 1]
+        k1, m1 = row[H_SIZE + 2 * j + 2], row[H_SIZE + 2 * j + 3]
+        w += 0.5 * (m0 + m1) * (k1 - k0)
+        j += 1
+    k0, m0 = row[H_SIZE + 2 * j], row[H_SIZE + 2 * j + 1]
+    k1, m1 = row[H_SIZE + 2 * j + 2], row[H_SIZE + 2 * j + 3]
+    mp = (m1 - m0) / (k1 - k0)
+    dk = kappa - k0
+    m = m0 + mp * dk
+    w += m0 * dk + 0.5 * mp * dk * dk
+    if j == 0:
+        return m, mp, w, mp, 0.0
+    sigma = m / kappa
+    return m, mp, w, sigma, (mp - sigma) / (kappa * kappa)
+
+
+@njit(cache=True)
 def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
     """MoorDyn v2's nodal bending stiffness: forces on the three nodes of each hinge, and their tangent.
 
@@ -131,6 +163,14 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
     (:func:`end_bending_loads`: a clamp or a rotational spring). When ``band`` has rows, ``K = -df/dx`` of
     the nine node pairs is added for the free nodes (exact: it couples ``i0`` with ``i2``, which the caller's
     band width allows for).
+
+    A hinge with a nonlinear law ``M(kappa)`` (``hinge_ei[h, H_NLAW] > 0``, :func:`hinge_law`) acts with the exact
+    gradient of its stored energy ``U = L0 W(kappa)``, ``L0`` the hinge's unstretched length (``H_L0``: the mean of
+    its elements'), ``W`` the law's energy per length and ``kappa = 2 sin(theta / 2) / L0``: ``f = -U_c grad(c)``,
+    ``U_c = dU/dc = -M / (2 sin(theta / 2))``, the forms above with ``g = -U_c = sigma / L0`` (``sigma = M / kappa``,
+    smooth at theta = 0) and ``dg/dc = -U_cc = -q / L0^3`` (``q`` of :func:`hinge_law`), ``dg/dl = 0``: a symmetric
+    tangent, the Hessian of U. A linear hinge keeps MoorDyn's ``-EI kappa grad(theta)`` on the stretched lengths,
+    the same to ``O(theta^2)`` (the factor ``cos(theta / 2)``) and the strain.
     """
     jac = band.shape[0] > 0
     a, b, u, w = np.zeros(3), np.zeros(3), np.zeros(3), np.zeros(3)
@@ -163,8 +203,20 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
             c += a[r] * b[r]
         if c <= -1.0 + 1e-9:
             continue  # folded back on itself: the moment's plane is undefined
-        ei = hinge_ei[h, H_EI]
-        g = 2.0 * ei / ((l1 + l2) * math.sqrt(0.5 * (1.0 + c)))
+        law = hinge_ei[h, H_NLAW] > 0.0
+        lh = 1.0
+        ql = 0.0
+        if law:
+            lh = hinge_ei[h, H_L0]
+            dd = 0.0
+            for r in range(3):
+                dd += (b[r] - a[r]) ** 2
+            kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L0, accurate at small angles
+            _, _, _, sigma, ql = hinge_law(hinge_ei[h], kappa)
+            g = sigma / lh
+        else:
+            ei = hinge_ei[h, H_EI]
+            g = 2.0 * ei / ((l1 + l2) * math.sqrt(0.5 * (1.0 + c)))
         for r in range(3):
             u[r] = (b[r] - c * a[r]) / l1
             w[r] = (a[r] - c * b[r]) / l2
@@ -190,8 +242,12 @@ def bending_loads(X, hinges, hinge_ei, F, band, bw, fidx):
                 Db[2, r, q] = Pb[r, q]
             dl1[0, r], dl1[1, r] = -a[r], a[r]
             dl2[1, r], dl2[2, r] = -b[r], b[r]
-        gc = -g / (2.0 * (1.0 + c))   # dg/dc
-        gl = -g / (l1 + l2)           # dg/dl1 = dg/dl2
+        if law:
+            gc = -ql / (lh * lh * lh)     # dg/dc = -U_cc
+            gl = 0.0                      # L0 does not stretch
+        else:
+            gc = -g / (2.0 * (1.0 + c))   # dg/dc
+            gl = -g / (l1 + l2)           # dg/dl1 = dg/dl2
         for k in range(3):
             # dg/dr_k (a row), du/dr_k and dw/dr_k (3x3), from c = a.b, u(a, b, l1), w(a, b, l2)
             for q in range(3):
@@ -259,6 +315,11 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
     a body) takes ``f_e`` and the reaction moment ``-M``. When ``band`` has rows, ``K = -df/dx`` is added for
     the free nodes, exact: ``d f_w / d x_w = w (g_c w + g_l b)^T - g (b w^T + w b^T + c (I - b b^T) / l) / l``
     with ``g_c = dg/dc``, ``g_l = dg/dl``, and ``d f_w / d x_e = -d f_w / d x_w``.
+
+    A clamp with a nonlinear law (``row[H_NLAW] > 0``) acts, as an inner hinge with one (:func:`bending_loads`), with
+    the gradient of ``U = L0 W(kappa)`` over the unstretched half element ``L0`` (``row[H_L0]``), ``kappa = 2 sin(theta
+    / 2) / L0``: ``g = sigma / L0``, ``g_c = -q / L0^3``, ``g_l = 0``. A spring end takes the linear law of its
+    row's EI (a spring end over a nonlinear law is refused before a run).
     """
     b = np.zeros(3)
     w = np.zeros(3)
@@ -278,7 +339,15 @@ def end_bending_loads(X, ie, iw, row, F, band, bw, fidx):
     if c <= -1.0 + 1e-9:
         return  # folded back against its holder: the moment's plane is undefined
     ei = row[H_EI]
-    if row[H_KIND] == H_CLAMP:
+    law = row[H_NLAW] > 0.0 and row[H_KIND] == H_CLAMP
+    if law:
+        lh = row[H_L0]
+        kappa = math.sqrt(dd) / lh   # 2 sin(theta / 2) / L0
+        _, _, _, sigma, ql = hinge_law(row, kappa)
+        g = sigma / lh
+        gc = -ql / (lh * lh * lh)
+        gl = 0.0
+    elif row[H_KIND] == H_CLAMP:
         g = 2.0 * ei / (l * math.sqrt(0.5 * (1.0 + c)))
         gc = -g / (2.0 * (1.0 + c))
         gl = -g / l

@@ -49,7 +49,11 @@ V_SIZE = 12
 # (H_EI); the hinge's kind (H_KIND: H_INNER, H_CLAMP or H_SPRING); for a held end its given direction, a unit vector
 # from the end node into the line (H_D, H_D + 1, H_D + 2) [-], and a spring's rotational stiffness (H_K) [N m/rad];
 # for a held end that turns with a moving platform, the motion channels of its direction's point (the end plus its
-# direction, moved by the same rigid motion: H_DCH) and of the end itself (H_ECH), -1 for a fixed direction
-H_EI, H_KIND, H_D, H_K, H_DCH, H_ECH = 0, 1, 2, 5, 6, 7
-H_SIZE = 8
+# direction, moved by the same rigid motion: H_DCH) and of the end itself (H_ECH), -1 for a fixed direction; for a
+# hinge with a nonlinear moment-curvature law (:mod:`seacable.moment_curvature`) its number of knots n (H_NLAW; 0:
+# linear, M = EI kappa), its unstretched length L0 (H_L0: the mean of its two elements', half a held end's element)
+# [m] and, from column H_SIZE on, the knots in pairs (kappa_j [1/m], M_j [N m]), j = 0 .. n - 1, from (0, 0): the
+# table is then H_SIZE + 2 n_max wide
+H_EI, H_KIND, H_D, H_K, H_DCH, H_ECH, H_NLAW, H_L0 = 0, 1, 2, 5, 6, 7, 8, 9
+H_SIZE = 10
 H_INNER, H_CLAMP, H_SPRING = 0.0, 1.0, 2.0

@@ -4,7 +4,8 @@ The same discrete quantities the kernel's hinges act with (:func:`seacable.moori
 :func:`seacable.mooring.kernel.end_bending_loads`), evaluated in NumPy over any number of states: at an inner
 node of elements ``l1``, ``l2`` turned by ``theta``, ``kappa = 4 sin(theta / 2) / (l1 + l2)`` and ``M = EI kappa``
 (EI the mean of its two elements'); at a clamped end ``kappa = 4 sin(theta / 2) / l`` from the end's given
-direction, ``M = EI kappa``; at a spring end ``M = k_e theta`` (the spring in series with the half element) and
+direction, ``M = EI kappa`` (a hinge with a nonlinear law: ``M(kappa)``, kappa over its unstretched length, as
+the kernel's); at a spring end ``M = k_e theta`` (the spring in series with the half element) and
 ``kappa = M / EI`` (the line's own curvature under that moment); at a pinned end none. The moment is a vector
 along the binormal ``a x b / |a x b|`` of the hinge (``a`` the direction before the node, ``b`` after, along the
 line from end A); the shear force across the line in an element is ``|dM/ds|``, the difference of the moment
@@ -16,7 +17,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._indices import H_D, H_EI, H_K, H_KIND, H_SPRING
+from ..moment_curvature import law_moment
+from ._indices import H_D, H_EI, H_K, H_KIND, H_L0, H_NLAW, H_SIZE, H_SPRING
 from .network import Network
 
 __all__ = ["bending_state", "bending_variables"]
@@ -56,6 +58,9 @@ def bending_state(net: Network, X, directions=None):
         length = l1 * ~at_a + l2 * ~at_b       # an end hinge's one element
         kappa = 4.0 * np.sin(0.5 * theta) / length
         m = ei * kappa
+        for h in np.flatnonzero(table[:, H_NLAW] > 0):  # a nonlinear law on the unstretched length (kernel.hinge_law)
+            kappa[..., h] = 2.0 * np.sin(0.5 * theta[..., h]) / table[h, H_L0]
+            m[..., h] = law_moment(table[h, H_SIZE:H_SIZE + 2 * int(table[h, H_NLAW])], kappa[..., h])
         if np.any(spring):
             # the spring in series with the end's half element (kernel.end_bending_loads): M = k_e theta
             ke = 1.0 / (1.0 / np.where(spring, table[:, H_K], 1.0) + 0.5 * length / ei)

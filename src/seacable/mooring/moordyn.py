@@ -298,7 +298,19 @@ def catenary_check(md: MoorDynInput, model: MooringModel, position, views=None, 
         cat = (float(eq.end_a_tension[k]), float(eq.end_b_tension[k]))
         seg = float(np.sum(net.length[net.element_line == k])) / line.n_segments
         bending = math.sqrt(lt.bending_stiffness / max(max(cat), 1e-300))
-        if getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg:
+        # a bending stiffness the catenary leaves out: its boundary layer where the line bends most (a touchdown,
+        # curvature w / H) changes the end tension by about EI (w / H)^2 / 2 (Irvine's boundary-layer correction); a
+        # line where that is over a tenth of the tolerance is not compared (a lazy-wave cable: 5 %)
+        boundary_layer = 0.0
+        if lt.bending_stiffness > 0:
+            wet = max(abs((md.line_types[name].mass_per_length - md.water_density * math.pi
+                           * md.line_types[name].diameter**2 / 4) * md.gravity)
+                      for name in {line.line_type, *(sec[0] for sec in (getattr(line, "sections", None) or ()))})
+            horizontal = math.hypot(*np.asarray(eq.end_a_force[k], float)[:2])
+            boundary_layer = (0.5 * lt.bending_stiffness * wet**2 / horizontal**3 if horizontal > 0.0
+                              else math.inf)
+        if (getattr(lt, "syrope", None) is not None or bending > 0.05 * line.n_segments * seg
+                or boundary_layer > 0.1 * CATENARY_TOLERANCE):
             skipped.append(line.id)
             continue
         view = _line_view(model, k) if views is None else views[k]

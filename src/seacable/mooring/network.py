@@ -19,8 +19,9 @@ import numpy as np
 
 from ..errors import InputError
 from ..line import Line, resolve_sections
-from ..sections import element_bending_stiffness
-from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
+from ..moment_curvature import law_sum, linear_law
+from ..sections import element_bending_stiffness, element_moment_curvature, element_section_properties
+from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_L0, H_NLAW, H_SIZE, H_SPRING
 
 __all__ = [
     "FIXED",
@@ -82,6 +83,9 @@ class Network:
         when no element is viscoelastic. ``axial_stiffness`` is then the static EA_s and
         ``axial_damping`` the slow damper BA (:func:`seacable.mooring.kernel.viscoelastic_tension`).
         [N, -, N s]
+    element_moment_curvature : per element its nonlinear moment-curvature law, knots ``(kappa, M)`` from
+        ``(0, 0)`` (:mod:`seacable.moment_curvature`), or None for the linear ``bending_stiffness``; None when no
+        element has one. ``bending_stiffness`` is then each law's initial slope. [1/m, N m]
     end_hinges : the line ends held at a direction, each ``(line, end, kind, stiffness, direction)``: the line's
         index, its end (0: end A, 1: end B), ``"clamp"`` or ``"spring"``, a spring's rotational stiffness
         (None for a clamp, whose stiffness is its end element's EI) and the direction the line leaves or
@@ -127,6 +131,7 @@ class Network:
     point_axial_drag_area: np.ndarray | None = None
     point_lift_area: np.ndarray | None = None
     end_hinges: tuple = ()
+    element_moment_curvature: tuple | None = None
 
     def __post_init__(self):
         # the kernels are compiled for C-contiguous arrays: a column of a table (``P[:, 1]``) would make numba
@@ -144,11 +149,23 @@ class Network:
         ``(end node, end node, neighbour)`` at end A and ``(neighbour, end node, end node)`` at end B;
         ``hinge_ei`` (h, H_SIZE) their table (:mod:`seacable.mooring._indices`): at an inner node the mean EI
         of its two elements [N m^2]; at a held end the end element's EI, the kind, the direction from the end into
-        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends.
+        the line and a spring's stiffness [N m/rad]. No rows for a truss with pinned ends. A hinge next to an element
+        with a nonlinear law (``element_moment_curvature``) takes the mean of its two elements' laws (a held end its
+        element's), its knots in the columns from ``H_SIZE`` on.
         """
-        rows, vals = [], []
+        rows, vals, laws = [], [], []
         ei = self.bending_stiffness
         of = {(int(a), int(b)): e for e, (a, b) in enumerate(self.elements)}
+        nl = self.element_moment_curvature
+        if nl is not None and ei is None:
+            ei = np.zeros(self.n_elements)
+
+        def law_of(*elements):
+            if nl is None or all(nl[e] is None for e in elements):
+                return None
+            return law_sum([linear_law(ei[e]) if nl[e] is None else nl[e] for e in elements],
+                           np.full(len(elements), 1.0 / len(elements)))
+
         if ei is not None and np.any(np.asarray(ei) > 0):
             ei = np.asarray(ei, float)
             for nodes in self.line_nodes:
@@ -159,10 +176,13 @@ class Network:
                     if e1 is None or e2 is None:
                         continue
                     value = 0.5 * (ei[e1] + ei[e2])
-                    if value > 0:
+                    law = law_of(e1, e2)
+                    if value > 0 or law is not None:
                         rows.append((i0, i1, i2))
                         vals.append(np.zeros(H_SIZE))
                         vals[-1][H_EI] = value
+                        vals[-1][H_L0] = 0.5 * (self.length[e1] + self.length[e2])
+                        laws.append(law)
         for line, end, kind, stiffness, direction in self.end_hinges:
             nodes = self.line_nodes[line]
             ie, iw = (int(nodes[0]), int(nodes[1])) if end == 0 else (int(nodes[-1]), int(nodes[-2]))
@@ -171,15 +191,25 @@ class Network:
             row[H_DCH] = row[H_ECH] = -1.0  # a direction fixed in space (a moving platform's: the run sets them)
             row[H_EI] = 0.0 if ei is None else float(np.asarray(ei, float)[e])
             row[H_KIND] = H_CLAMP if kind == "clamp" else H_SPRING
+            row[H_L0] = 0.5 * self.length[e]
             if kind != "clamp":
                 row[H_K] = float(stiffness)
             d = np.asarray(direction, float)
             row[H_D:H_D + 3] = (d if end == 0 else -d) / np.linalg.norm(d)
             rows.append((ie, ie, iw) if end == 0 else (iw, ie, ie))
             vals.append(row)
+            laws.append(law_of(e))
         if not rows:
             return np.zeros((0, 3), np.int64), np.zeros((0, H_SIZE))
-        return np.array(rows, np.int64), np.array(vals, float)
+        table = np.array(vals, float)
+        if any(law is not None for law in laws):
+            width = max(len(law) for law in laws if law is not None)
+            table = np.column_stack([table, np.zeros((len(rows), 2 * width))])
+            for h, law in enumerate(laws):
+                if law is not None:
+                    table[h, H_NLAW] = len(law)
+                    table[h, H_SIZE:H_SIZE + 2 * len(law)] = np.asarray(law, float).ravel()
+        return np.array(rows, np.int64), table
 
     def tension_strain_arrays(self):
         """The strain-tension tables as the kernel takes them: ``(lo, hi, strain, tension)``.
@@ -388,7 +418,10 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
     A line with sections (``line.sections``) is first replaced by its equivalent line
     (:func:`seacable.line.resolve_sections`: smeared buoyancy as segments of their own, discrete modules as
     attachments) and its bend stiffeners' EI added per element at the elements' mid arc lengths
-    (:func:`seacable.sections.element_bending_stiffness`), so that the kernel takes them unchanged.
+    (:func:`seacable.sections.element_bending_stiffness`), so that the kernel takes them unchanged. Elements with a
+    nonlinear moment-curvature law (a line type's, a stiffener's, a bend restrictor's) carry it in
+    ``element_moment_curvature`` (:func:`seacable.sections.element_moment_curvature`), and stiffeners with a density
+    and restrictors their own mass, weight, drag and added mass (:func:`seacable.sections.element_section_properties`).
     """
     sectioned, line = line, resolve_sections(line, water_density, gravity)
     s = node_arc_lengths(line, n_elements, element_length)
@@ -426,24 +459,31 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         pd[i] += att.drag_area
         pda[i] += att.drag_area if att.axial_drag_area is None else att.axial_drag_area
         pla[i] += att.lift_area()
+    ei = element_bending_stiffness(sectioned, s, line_bending(types))
+    laws = element_moment_curvature(sectioned, s, types, ei)
+    if laws is not None:  # EI: each law's initial slope
+        ei = np.array([law[1, 1] / law[1, 0] if law is not None else (0.0 if ei is None else ei[e])
+                       for e, law in enumerate(laws)])
+    hydro = {"mass_per_length": m,
+             "weight_per_length": np.array([t.submerged_weight(water_density, gravity) for t in types], float),
+             "diameter": np.array([t.diameter for t in types], float),
+             "cdn": np.array([t.effective_drag()[0] for t in types], float),
+             "cdt": np.array([t.effective_drag()[1] for t in types], float),
+             "can": np.array([t.added_mass_normal for t in types], float),
+             "cat": np.array([t.added_mass_tangential for t in types], float)}
+    hydro.update(element_section_properties(sectioned, s, types, water_density, gravity) or {})
+    m = hydro["mass_per_length"]
     return Network(
         position=position, kind=kind, channel=channel, point_mass=pm, point_added_mass=pa, point_weight=pw,
         point_volume=pv, point_drag_area=pd,
         elements=np.column_stack([np.arange(n - 1), np.arange(1, n)]).astype(np.int64),
         length=length, axial_stiffness=ea,
-        axial_damping=element_damping(ea, m, length, damping_ratio, stiffness_proportional),
-        mass_per_length=m,
-        weight_per_length=np.array([t.submerged_weight(water_density, gravity) for t in types], float),
-        diameter=np.array([t.diameter for t in types], float),
-        cdn=np.array([t.effective_drag()[0] for t in types], float),
-        cdt=np.array([t.effective_drag()[1] for t in types], float),
-        can=np.array([t.added_mass_normal for t in types], float),
-        cat=np.array([t.added_mass_tangential for t in types], float),
+        axial_damping=element_damping(ea, m, length, damping_ratio, stiffness_proportional), **hydro,
         element_line=np.zeros(n - 1, np.int64), line_nodes=(np.arange(n),), line_names=("line",),
         arc_length=s, n_channels=1 if end_b == "prescribed" else 0,
         breaking_load=np.array([np.nan if t.breaking_load is None else t.breaking_load for t in types], float),
         channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
-        bending_stiffness=element_bending_stiffness(sectioned, s, line_bending(types)),
+        bending_stiffness=ei, element_moment_curvature=laws,
         element_viscoelastic=line_viscoelastic(types),
         point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None)
 

@@ -33,7 +33,7 @@ NODE_FIELDS = ("position", "kind", "channel", "point_mass", "point_added_mass", 
 #: Per-element arrays (the first axis the elements) whose values a merged element keeps; ``length`` adds up.
 ELEMENT_FIELDS = ("axial_stiffness", "axial_damping", "mass_per_length", "weight_per_length", "diameter", "cdn",
                   "cdt", "can", "cat", "element_line", "breaking_load", "bending_stiffness", "element_viscoelastic",
-                  "element_syrope", "element_tension_strain")
+                  "element_syrope", "element_tension_strain", "element_moment_curvature")
 
 
 def _element_key(net: Network, e: int) -> tuple:
@@ -44,7 +44,8 @@ def _element_key(net: Network, e: int) -> tuple:
         if value is None:
             continue
         item = value[e]
-        key.append(repr(item) if isinstance(value, tuple) else np.asarray(item, float).tobytes())
+        key.append(repr(None if item is None else np.asarray(item, float).tolist()) if isinstance(value, tuple)
+                   else np.asarray(item, float).tobytes())
     return tuple(key)
 
 

@@ -69,7 +69,13 @@ def test_sections_make_one_line_of_three_pieces_in_cabledyn_column_order():
     assert (bare.drag_normal, bare.drag_tangential, bare.added_mass_normal, bare.added_mass_tangential) == \
         (1.2, 0.1, 1.0, 0.0)
     assert md.points[0].attachment == "vessel" and md.points[0].mass == 0.0
-    assert any("dynamic_solver" in n for n in md.notes)
+    # CableDyn's solver settings (rhoInf, TMax, dynamic_solver) and 'none' current are dropped as MoorDyn's dtM is
+    assert not md.notes
+
+
+def test_cabledyn_friction_is_the_seabed_friction_coefficient():
+    md = read_moordyn(_deck().replace("0.0      TMax", "0.3      frictionMu\n0.0      TMax"))
+    assert md.options["FrictionCoefficient"] == 0.3 and not md.notes
 
 
 def test_equivalent_buoyancy_rewrites_diameter_and_mass_from_the_weight_in_water():

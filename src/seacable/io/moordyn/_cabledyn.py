@@ -13,7 +13,9 @@ and adds, for dynamic power cables:
 * ``END CONNECTIONS`` (``LineID End Stiffness EzX EzY EzZ``): the bending boundary of a line end, pinned by default;
 * ``ATTACHMENTS`` (``LineID ArcLength Mass Volume CdA Ca [CdAx]``): point loads on a line (buoyancy modules, clump
   weights), each at the node nearest its arc length;
-* OPTIONS rows of its own, some written keyword first (``dynamic_solver 1e-8 1e-14 30 12``).
+* OPTIONS rows of its own, some written keyword first (``dynamic_solver 1e-8 1e-14 30 12``): its solver's settings
+  (dropped, as MoorDyn's ``dtM`` is: seacable's statics and time steps are its own), ``frictionMu`` (read as MoorDyn's
+  ``FrictionCoefficient``), ``current`` and ``waves`` (``none`` only).
 
 seacable reads SECTIONS, EQUIVALENT BUOYANCY, ATTACHMENTS and pinned END CONNECTIONS; it refuses, by name, a clamped
 or sprung end connection (not read yet) and CableDyn's ``current`` and ``waves`` options other than ``none``. The lines and points are otherwise MoorDyn's, read by the same tables.
@@ -31,6 +33,10 @@ from ._sections import _as_float, _table
 _KEYWORD_FIRST = ("dynamic_solver", "static_solver", "sequenced", "cable_statics")
 #: CableDyn's environment options: seacable refuses any value but 'none' rather than run without it
 _ENVIRONMENT = ("current", "waves")
+#: CableDyn's value-first OPTIONS that steer its own solver, not the problem (as MoorDyn's dtM and threshIC do): seacable
+#: has its own statics and time steps, and drops them without a note, as it drops MoorDyn's
+_SOLVER = frozenset(k.lower() for k in ("rhoInf", "modified_newton", "TMax", "adaptive_mesh", "tensile_safety",
+                                        "tensile_strain_tolerance", "recovery_max_substeps", "alpha_force_blend"))
 
 
 def is_cabledyn(sections) -> bool:
@@ -154,20 +160,25 @@ def read_attachments(rd, section, lines):
 
 
 def cabledyn_options(rd, section):
-    """The OPTIONS section without CableDyn's keyword-first rows (noted as not honoured); its ``current`` and
-    ``waves`` refused unless ``none``."""
+    """The OPTIONS section without CableDyn's own solver settings (keyword-first rows such as ``dynamic_solver``,
+    and ``rhoInf``, ``TMax`` and the like: dropped as MoorDyn's ``dtM`` is); its ``frictionMu`` as MoorDyn's
+    ``FrictionCoefficient``; its ``current`` and ``waves`` dropped when ``none`` and refused otherwise."""
     kind, header_no, header, body = section
     kept = []
     for lineno, line in body:
         tokens = line.split()
         if tokens and tokens[0].startswith("--"):  # CableDyn's comment row
             continue
-        if tokens and tokens[0].lower() in _KEYWORD_FIRST:
-            rd.notes.append(f"{rd.label}:{lineno}: CableDyn's option {tokens[0]} (its own solver's settings) is not "
-                            "honoured: seacable's statics and time steps are its own.")
+        if tokens and (tokens[0].lower() in _KEYWORD_FIRST or (len(tokens) > 1 and tokens[1].lower() in _SOLVER)):
+            continue
+        if len(tokens) > 1 and tokens[1].lower() == "frictionmu":
+            if tokens[0].lower() != "none":  # the seabed's Coulomb coefficient, MoorDyn's name for it
+                kept.append((lineno, f"{tokens[0]} FrictionCoefficient"))
             continue
         at = next((k for k, w in enumerate(tokens[1:], 1) if w.lower() in _ENVIRONMENT), None)
-        if at is not None and [w.lower() for w in tokens[:at]] not in (["none"], ["0"]):
+        if at is not None:
+            if [w.lower() for w in tokens[:at]] in (["none"], ["0"]):
+                continue
             raise rd.error(lineno, f"CableDyn's option {tokens[at]} {' '.join(tokens[:at])!r} is not read by seacable's "
                                    "MoorDyn reader. Suggested fix: write 'none' there and give the current or waves in "
                                    "a seacable case file (environment.current, environment.waves).")

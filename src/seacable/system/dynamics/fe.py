@@ -163,6 +163,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     fairlead_end = []
     tables = []  # per element: its line type's strain-tension table or None
     bending, visco = [], []  # per line: its elements' EI and viscoelastic parameters
+    laws = []  # per element: its moment-curvature law or None (seacable.sections.element_moment_curvature)
     line_names = tuple(system.lines)
     for li, (lname, sl) in enumerate(system.lines.items()):
         ends = [sl.end_a, sl.end_b]
@@ -233,6 +234,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         props.append(np.column_stack([getattr(sub, f) for f in fields]))
         tables.extend(sub.element_tension_strain or [None] * (n - 1))
         bending.append(np.zeros(n - 1) if sub.bending_stiffness is None else sub.bending_stiffness)
+        laws.extend(sub.element_moment_curvature or [None] * (n - 1))
         visco.append(np.zeros((n - 1, 3)) if sub.element_viscoelastic is None else sub.element_viscoelastic)
         element_line.extend([li] * (n - 1))
         line_nodes.append(ids)
@@ -267,7 +269,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         channel_names=tuple(f"{src[0]} {src[1]}" for src in channel_source),
         breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
         bending_stiffness=np.concatenate(bending) if bending else np.zeros(0),
-            element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None)
+            element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None,
+        element_moment_curvature=tuple(laws) if any(law is not None for law in laws) else None)
     model = MooringModel(net, _water(environment, analysis))
     nb = len(free_bodies)
     tables = {name: area_tables(system.bodies[name]) for name in free_bodies}
