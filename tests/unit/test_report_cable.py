@@ -85,6 +85,11 @@ def test_the_pushover_page_has_a_row_an_offset_whose_worst_is_the_checks(pushove
     assert offsets["offset [m]"][k] == checks.loc["curvature (static MBR)", "offset [m]"]
     text = page.read_text(encoding="utf-8")
     assert text.count("offset ") >= 3 and "<h3>Per offset</h3>" in text
+    # the summary's largest utilisation is of a demand over its limit: the declination's place in its range (0.71
+    # here, the largest number) is not one
+    ratios = checks[~checks.index.str.startswith("hang-off declination")]["utilisation [-]"].dropna()
+    top = ratios.idxmax()
+    assert f'Largest utilisation ({top})</div><div class="v">{ratios[top]:.3f}' in text
 
 
 def test_the_armour_fatigue_is_in_a_dynamic_report_when_the_case_asks(tmp_path):
