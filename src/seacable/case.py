@@ -536,6 +536,44 @@ class VerticalModesAnalysis(Model):
         return ("string", "exact", "wave") if self.bottom_tension > 0 else ("exact", "wave")
 
 
+class ArmourSNCurve(Model):
+    """An S-N curve of the cable's armour wires on the stress range ``s`` [MPa] (:class:`seacable.design.cable_fatigue.
+    SNCurve`): ``N = a s^-m``, below the knee at ``n_knee`` cycles ``m2`` when given."""
+
+    a: quantity("MPa^m", gt=0, fix="give the intercept of N = a s^-m, e.g. 1.0e12 (DNV-RP-C203's B1 in seawater "
+                                   "with cathodic protection: 4.0e12 with m = 4).") = Field(
+        description="Intercept of the first slope. [MPa^m]")
+    m: quantity("-", gt=0, fix="give the slope of N = a s^-m, e.g. 3 or 4.") = Field(description="First slope. [-]")
+    m2: quantity("-", gt=0, fix="give the second slope, e.g. 5, or leave it out for one slope.") | None = Field(
+        None, description="Second slope, below the knee; none: one slope. [-]")
+    n_knee: quantity("1", gt=0, fix="give the cycles at the knee, e.g. 1e7.") = Field(
+        1e7, description="Cycles at the knee. [1]")
+
+
+class ArmourFatigue(Model):
+    """The armour's stress model and S-N curve for the cable's fatigue in the report
+    (:func:`seacable.design.cable_fatigue.cable_fatigue_damage`): ``sigma = c_T T + c_kappa kappa (n . e(phi))``."""
+
+    tension_factor: quantity("Pa/N", gt=0, fix="give the armour stress per newton of tension, about 1 / (A_armour "
+                                               "cos^2 alpha), e.g. 1500 for 600 mm^2 of wires.") = Field(
+        description="Armour stress per unit effective tension c_T. [Pa/N]")
+    curvature_factor: quantity("Pa m", fix="give the armour stress per 1/m of curvature, about E r cos^2 alpha "
+                                           "while the wires stick, e.g. 1.5e10.") = Field(
+        description="Armour stress per unit curvature c_kappa (its sign picks the hot spot only). [Pa m]")
+    points: int = Field(8, description="Points around the section where the stress is counted, 1 to 360.")
+    sn_curve: ArmourSNCurve = Field(description="The armour's S-N curve on the stress range in MPa.")
+
+    @model_validator(mode="after")
+    def _nonzero(self):
+        if not 1 <= self.points <= 360:
+            raise ValueError(f"armour.points must be 1 to 360 points around the section, got {self.points}. Suggested "
+                             "fix: 8 points (every 45 deg) find the hot spot of a bend in any plane.")
+        if self.curvature_factor == 0.0:
+            raise ValueError("armour.curvature_factor is 0 Pa m: the bend would stress no wire. Suggested fix: give the "
+                             "stress per 1/m of curvature, about E r cos^2 alpha, e.g. 1.5e10 Pa m.")
+        return self
+
+
 class CableDesign(Model):
     """The design criteria of a cable's configuration that its line types do not hold (issue 40), read by the
     cable checks of :mod:`seacable.design.cable` from the case a result records.
@@ -561,6 +599,21 @@ class CableDesign(Model):
         0.0, description="Smallest height of the hog bend's crest above the seabed. [m]")
     hang_off_declination: tuple[float, float] | None = Field(
         None, description="Range (lowest, highest) of the declination at end B, 0 to pi. [rad]")
+    armour: ArmourFatigue | None = Field(None, description="Armour stress model and S-N curve for the cable's fatigue.")
+    line_clearance: quantity("m", gt=0, fix="give the smallest distance in metres between the cable's and another "
+                                            "line's centrelines, e.g. 10.") | None = Field(
+        None, description="Smallest distance to the system's other lines. [m]")
+
+    @model_serializer(mode="wrap")
+    def _omit_unset(self, handler):
+        # the armour and the line clearance appear in a dumped case only when given: a case without them reads as it
+        # did before they existed
+        data = handler(self)
+        if isinstance(data, dict):
+            for key in ("armour", "line_clearance"):
+                if data.get(key, 0) is None:
+                    del data[key]
+        return data
 
     @model_validator(mode="after")
     def _check_range(self):

@@ -512,10 +512,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("report", parents=[common],
                        help="design report (HTML and CSV) of a mooring_dynamic or system_dynamic result or sweep: "
-                            "extremes, DNV-OS-E301 and API RP 2SK checks, fatigue")
-    p.add_argument("source", help="result file (.nc) of a time-domain mooring run, or a folder written by "
-                                  "'seacable sweep' (its cases differing only in environment.waves.seed are seeds "
-                                  "of one load case)")
+                            "extremes, DNV-OS-E301 and API RP 2SK checks, fatigue; or the cable checks of a "
+                            "mooring_static or mooring_pushover result of a cable")
+    p.add_argument("source", help="result file (.nc) of a time-domain mooring run (or of a cable's static or "
+                                  "pushover run), or a folder written by 'seacable sweep' (its cases differing only "
+                                  "in environment.waves.seed are seeds of one load case)")
     p.add_argument("-o", "--output", required=True,
                    help="the HTML report (.html); the tables go beside it as CSV (REPORT_extremes.csv, ...)")
     p.add_argument("--storm-duration", type=_number,

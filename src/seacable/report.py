@@ -12,22 +12,21 @@ design tables of :mod:`seacable.design.summary` (extremes, code checks, fatigue)
   the unit of each column in its header;
 - for a result of a line with bending stiffness (one with ``curvature``, issue 40), also its range graphs and
   cable checks (:mod:`seacable.design.cable`): a section of the page, ``report_cable_checks.csv`` and the range
-  graphs in ``report_range_graphs.nc`` (a ``load_case`` dimension when there are several). A result without
-  curvature gives the same page and files as before.
+  graphs in ``report_range_graphs.nc`` (a ``load_case`` dimension when there are several), and where the case gives
+  ``analysis.design.armour`` the armour's fatigue (``report_cable_fatigue.csv``). A result without curvature gives
+  the same page and files as before.
+
+A ``mooring_static`` or ``mooring_pushover`` result of a cable (with ``curvature``) gets a page of its own
+(:func:`seacable.report_cable.make_static_report`: its shape, the checks against the static MBR, per offset).
 
 Every file is written whole (:mod:`seacable._atomic`).
 """
 
 from __future__ import annotations
 
-import base64
 import datetime
-import html
-import io
 import json
 import math
-import os
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -35,13 +34,40 @@ import numpy as np
 import pandas as pd
 
 from ._atomic import atomic_write
+from ._report_html import (
+    _CSS,
+    _SERIES,
+    _column,
+    _columns,
+    _e,
+    _figure,
+    _kv,
+    _mark,
+    _notes_block,
+    _num,
+    _plain,
+    _png,
+    _pyplot,
+    _relative,
+    _status,
+    _table,
+)
 from ._version import __version__
-from .design import cable as cable_
 from .design import checks as checks_
 from .design import summary as ds_
 from .design.combination import API_COMBINATION, DNV_COMBINATION, SPLIT_PERIOD
 from .design.fatigue import DNV_DESIGN_FATIGUE_FACTOR
 from .errors import InputError
+from .report_cable import (
+    ARMOUR_CSV_UNITS,
+    CABLE_CSV_UNITS,
+    STATIC_ANALYSES,
+    _Cable,
+    _cable_section,
+    _figure_range_graphs,
+    _range_graphs_file,
+    make_static_report,
+)
 
 __all__ = ["CABLE_CSV_UNITS", "CSV_UNITS", "ReportOptions", "make_report"]
 
@@ -53,10 +79,6 @@ CSV_UNITS = {"duration": "s", "storm": "s", "maximum": "N", "mean": "N", "std": 
              "damage_per_year": "1/year", "life_alone": "years", "probability": "-", "life": "years",
              "lf_std": "N", "wf_std": "N", "lf_period": "s", "wf_period": "s", "api_maximum": "N", "dnv_dynamic": "N",
              "dnv_maximum": "N", "time_domain_maximum": "N"}
-
-#: The units of the cable checks' CSV columns (value, limit and margin in the row's unit: N, 1/m, m or rad).
-CABLE_CSV_UNITS = {"value": "see unit", "limit": "see unit", "margin": "see unit", "utilisation": "-", "s": "m",
-                   "time": "s", "offset": "m"}
 
 
 @dataclass
@@ -77,87 +99,6 @@ class ReportOptions:
 
 # ------------------------------------------------------------------------------------------------- numbers
 
-def _num(value, sig: int = 4, scale: float = 1.0) -> str:
-    """One number alone (not in a table column): ``sig`` significant digits, scientific below 1e-3 and from 1e7."""
-    return _column([value], scale=scale, sig=sig)[0]
-
-
-def _scientific(x: float, sig: int) -> str:
-    m, e = f"{x:.{sig - 1}e}".split("e")
-    return f"{m.replace('-', '&minus;')}&times;10<sup>{int(e)}</sup>"
-
-
-def _column(values, scale: float = 1.0, sig: int = 4, like=None) -> list[str]:
-    """The numbers of one table column in one format: fixed decimals, those that give the largest magnitude
-    ``sig`` significant digits, when every other nonzero value still shows one; else all scientific with
-    ``sig`` significant digits. None or NaN is a dash, 0 is "0" (and "0.00" in a column of two decimals).
-    ``like``: more values [SI] the format is chosen over too (columns of one quantity shown alike)."""
-    def scaled(vs):
-        return [math.nan if v is None or (isinstance(v, float) and math.isnan(v)) else float(v) / scale for v in vs]
-
-    xs = scaled(values)
-    finite = [abs(x) for x in xs + scaled(like if like is not None else []) if math.isfinite(x) and x != 0.0]
-    if finite:
-        hi, lo = max(finite), min(finite)
-        decimals = max(sig - 1 - math.floor(math.log10(hi)), 0)
-        fixed = hi < 1e7 and lo >= 10.0 ** -decimals and decimals <= 6
-    else:
-        decimals, fixed = 0, True
-    out = []
-    for x in xs:
-        if math.isnan(x):
-            out.append("&ndash;")
-        elif math.isinf(x):
-            out.append("&infin;" if x > 0 else "&minus;&infin;")
-        elif fixed:
-            out.append(f"{x:.{decimals}f}".replace("-", "&minus;"))
-        elif x == 0:
-            out.append("0")
-        else:
-            out.append(_scientific(x, sig))
-    return out
-
-
-def _columns(table: pd.DataFrame, spec: dict[str, tuple[float, int]], alike: tuple[str, ...] = ()) -> dict[str, list[str]]:
-    """The formatted columns of a table: column -> (scale, significant digits); the columns ``alike`` (one
-    quantity: a demand, its capacity and margin) in one format chosen over all of them."""
-    pool = [v for c in alike for v in table[c]]
-    return {c: _column(list(table[c]), scale, sig, pool if c in alike else None) for c, (scale, sig) in spec.items()}
-
-
-def _e(text) -> str:
-    return html.escape(str(text))
-
-
-_ABSOLUTE = re.compile(r"(?<![\w.~/:])(/(?:[^\s'\"<>|,;()\[\]{}]+/)+[^\s'\"<>|,;()\[\]{}]*)")
-
-
-def _status(row) -> tuple[str, str]:
-    """A check row's status badge (HTML) and its row class: PASS, FAIL, or the reason it was not checked."""
-    passed = row["passed"]
-    if passed is None or (isinstance(passed, float) and math.isnan(passed)):
-        return f'<span class="skip">{_e(row["status"])}</span>', "skipped"
-    if bool(passed):
-        return '<span class="pass">PASS</span>', "passed"
-    return '<span class="fail">FAIL</span>', "failed"
-
-
-def _relative(text, base: Path | None) -> str:
-    """``text`` with each absolute path in it shown relative to ``base`` (the report's folder), or by its file name
-    alone where the two share no folder but the root (or a drive): a report shows no absolute path of the
-    machine it was made on."""
-    def one(m):
-        path = m.group(1)
-        try:
-            common = os.path.commonpath([path, str(base)]) if base is not None else ""
-        except ValueError:  # another drive
-            common = ""
-        if not common or Path(common) == Path(common).parent:  # only the root in common
-            return Path(path).name
-        return os.path.relpath(path, base)
-
-    return _ABSOLUTE.sub(one, str(text))
-
 
 def _with_units(table: pd.DataFrame, units: dict | None = None) -> pd.DataFrame:
     units = CSV_UNITS if units is None else units
@@ -165,31 +106,6 @@ def _with_units(table: pd.DataFrame, units: dict | None = None) -> pd.DataFrame:
 
 
 # ------------------------------------------------------------------------------------------------- figures
-
-#: The colour of the data in the figures (Okabe & Ito's blue), apart from the page's own blue.
-_SERIES = "#0072b2"
-
-
-#: The resolution of the figures on the page. [dots per inch]
-_DPI = 110
-
-
-def _png(fig) -> str:
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=_DPI, bbox_inches="tight", facecolor="white")
-    return base64.b64encode(buf.getvalue()).decode("ascii")
-
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
-
-    plt.rcParams.update({"font.size": 9, "axes.titlesize": 10, "axes.labelsize": 9, "axes.spines.top": False,
-                         "axes.spines.right": False, "axes.grid": True, "grid.color": "#dddddd",
-                         "grid.linewidth": 0.6, "font.family": "DejaVu Sans"})
-    return plt
 
 
 class _MostLoaded:
@@ -212,117 +128,6 @@ class _MostLoaded:
                 self.run, self.line = run, line
                 self.time = np.asarray(ds["time"].values, float)
                 self.tension = record
-
-
-class _Cable:
-    """Kept as the results are read (with :class:`_MostLoaded`): of each run whose result has curvature, each line's
-    range graphs, limits and cable checks (:mod:`seacable.design.cable`)."""
-
-    def __init__(self):
-        self.rows: list[pd.DataFrame] = []
-        self.graphs: list[tuple] = []  # (run, line, range graphs, limits)
-
-    def __call__(self, run, ds) -> None:
-        if not cable_.has_curvature(ds):
-            return
-        for line in ds_.line_names(ds) if "line" in ds.dims else [None]:
-            view = ds.sel(line=line) if line is not None else ds
-            limits = cable_.cable_limits(view)
-            table = cable_.cable_check_table(cable_.cable_checks(ds, limits, line))
-            name = line if line is not None else ds_.line_names(ds)[0]
-            table.insert(0, "line", name)
-            table.insert(0, "seed", run.seed)
-            table.insert(0, "case", run.name)
-            table.insert(0, "load_case", run.load_case)
-            self.rows.append(table)
-            self.graphs.append((run, name, cable_.range_graphs(ds, line), limits))
-
-    def table(self) -> pd.DataFrame | None:
-        return pd.concat(self.rows, ignore_index=True) if self.rows else None
-
-    def by_load_case(self) -> dict[tuple[str, str], tuple[object, object]]:
-        """(load case, line) -> (range graphs over its seeds: the least minimum, the largest maximum, the mean of
-        the means, limits): the seeds' envelope."""
-        out: dict = {}
-        for run, line, rg, limits in self.graphs:
-            key = (run.load_case, line)
-            if key not in out:
-                out[key] = (rg, limits, 1)
-                continue
-            prev, lim, n = out[key]
-            if prev.sizes != rg.sizes:
-                continue  # another mesh: its first seed's stand
-            merged = prev.copy()
-            for v in rg.data_vars:
-                a, b = prev[v].values, rg[v].values
-                merged[v].values = (np.fmin(a, b) if v.endswith("_min") else np.fmax(a, b) if v.endswith("_max")
-                                    else (a * n + b) / (n + 1))
-            merged.attrs["states"] = int(prev.attrs["states"]) + int(rg.attrs["states"])
-            out[key] = (merged, lim, n + 1)
-        return {k: (rg, lim) for k, (rg, lim, _) in out.items()}
-
-
-def _figure_range_graphs(key, rg, limits) -> tuple[str, str]:
-    load_case, line = key
-    plt = _pyplot()
-    fig = cable_.plot_range_graphs(rg, limits, colour=_SERIES)
-    over = rg.attrs.get("statistics_over", "none")
-    what = "its static state" if over == "none" else f"{int(rg.attrs.get('states', 0))} states ({over})"
-    caption = (f"Range graphs of {line} ({load_case}) along the arc length from end A: the band from the minimum to "
-               f"the maximum over {what}, the mean a line; dashed red: the allowable tension, dash-dot: 1 / MBR "
-               f"where the line types give them. Seabed: {rg.attrs.get('seabed', '')}.")
-    img = _png(fig)
-    plt.close(fig)
-    return img, caption
-
-
-#: How the cable checks' units are shown: unit -> (unit shown, scale of the SI value).
-_CABLE_UNITS = {"N": ("kN", 1e3), "1/m": ("1/m", 1.0), "m": ("m", 1.0), "rad": ("deg", math.pi / 180.0)}
-
-
-def _cable_html(table: pd.DataFrame) -> str:
-    """The cable checks, one row a check and run: value and limit in the row's unit, utilisation, margin, status,
-    where (s) and when (t)."""
-    rows, classes = [], []
-    notes: dict[str, str] = {}
-    for _, r in table.iterrows():
-        shown, scale = _CABLE_UNITS.get(r["unit"], (r["unit"], 1.0))
-        value, limit, margin = (_column([r[c]], scale, 4, like=[r["value"], r["limit"]])[0]
-                                for c in ("value", "limit", "margin"))
-        u = _column([r["utilisation"]], 1.0, 4, like=[1.0])[0]
-        status, cls = _status(r)
-        bound = "&le;" if r["bound"] == "max" else "&ge;"
-        when = r["time"] if math.isfinite(r["time"]) else r["offset"]
-        when_text = "static" if not math.isfinite(when) else (
-            f"t = {_num(when)} s" if math.isfinite(r["time"]) else f"offset {_num(when)} m")
-        checked = math.isfinite(r["value"])
-        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["check"]) + _mark(notes, r["formula"]),
-                     f"{value} {shown}" if checked else "&ndash;",
-                     f"{bound} {limit} {shown}" if checked else "&ndash;", u,
-                     f"{margin} {shown}" if checked else "&ndash;",
-                     _num(r["s"]) if checked else "&ndash;", when_text if checked else "&ndash;", status])
-        classes.append(cls)
-    return _table(["Load case", "Line", "Check", "Value", "Limit", "Utilisation [-]", "Margin", "s [m]", "When",
-                   "Status"], rows, classes, cls="num checks cable",
-                  single=table["load_case"].nunique() == 1) + _notes_block(notes)
-
-
-def _cable_section(table: pd.DataFrame | None, figures: list) -> list[str]:
-    if table is None:
-        return []
-    return ["<h2>6. Cable: range graphs and checks</h2>",
-            ('<p class="method">The line has bending stiffness: along its arc length s from end A, the effective '
-             "tension, curvature, bend moment, declination and height above the seabed, their minimum, maximum and "
-             "mean over the run (<code>seacable.design.cable.range_graphs</code>; in "
-             "<code>*_range_graphs.nc</code>). Checks: the largest curvature against 1 / MBR (the line type's "
-             "<code>minimum_bend_radius_dynamic</code> for a dynamic run), utilisation &kappa; MBR; the largest "
-             "element tension against <code>allowable_tension</code>; the smallest against &minus;"
-             "<code>allowable_compression</code> (0 N unless given); the sag bend (the lowest point between the hog "
-             "bend's crest and end B) and the hog bend's crest above the seabed by <code>analysis.design</code>'s "
-             "clearances (0 m: no touchdown); the declination at end B within "
-             "<code>analysis.design.hang_off_declination</code>. Where: the arc length of the worst node or element; "
-             "when: the time of the worst state.</p>"),
-            _cable_html(table)] + [_figure(f) for f in figures]
 
 
 def _figure_time_series(runs, seeds: pd.DataFrame, kept: _MostLoaded | None = None) -> tuple[str, str] | None:
@@ -426,40 +231,7 @@ def _figure_utilisation(checks: pd.DataFrame) -> tuple[str, str] | None:
     return img, caption
 
 
-def _plain(x) -> str:
-    text = re.sub(r"<sup>(.*?)</sup>", r"^\1", _num(float(x)))
-    return html.unescape(text).replace("\u2212", "-")
-
-
 # -------------------------------------------------------------------------------------------------- tables
-
-def _table(headers: list[str], rows: list[list[str]], classes: list[str] | None = None, cls: str = "",
-           single: bool = False) -> str:
-    """An HTML table; ``single``: the first column (the load case) is the same in every row and left out."""
-    if single and headers and headers[0] == "Load case":
-        headers, rows = headers[1:], [r[1:] for r in rows]
-        cls = f"{cls} single".strip()
-    head = "".join(f"<th>{h}</th>" for h in headers)
-    body = []
-    for k, row in enumerate(rows):
-        rc = f' class="{classes[k]}"' if classes and classes[k] else ""
-        body.append(f"<tr{rc}>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>")
-    return (f'<table class="{cls}"><thead><tr>{head}</tr></thead><tbody>{"".join(body)}</tbody></table>')
-
-
-def _notes_block(notes: dict[str, str]) -> str:
-    if not notes:
-        return ""
-    items = "".join(f"<li><sup>{k}</sup> {_e(v)}</li>" for v, k in notes.items())
-    return f'<ol class="notes">{items}</ol>'
-
-
-def _mark(notes: dict[str, str], text: str) -> str:
-    if not text:
-        return ""
-    if text not in notes:
-        notes[text] = chr(ord("a") + len(notes)) if len(notes) < 26 else str(len(notes) + 1)
-    return f"<sup>{notes[text]}</sup>"
 
 
 def _extremes_html(ext: pd.DataFrame, quantile: float) -> str:
@@ -581,68 +353,6 @@ def _life_html(life: pd.DataFrame) -> str:
 
 
 # ----------------------------------------------------------------------------------------------------- page
-
-_CSS = """
-:root { --ink: #1d2733; --muted: #5b6673; --rule: #d5dbe1; --head: #eef2f6; --accent: #1f4e79; }
-* { box-sizing: border-box; }
-body { margin: 0; background: #ffffff; color: var(--ink);
-       font: 14px/1.5 "Segoe UI", "Helvetica Neue", Helvetica, Arial, "DejaVu Sans", sans-serif; }
-main { max-width: 1180px; margin: 0 auto; padding: 32px 40px 64px; }
-header.top { border-bottom: 3px solid var(--accent); padding-bottom: 12px; margin-bottom: 24px; }
-header.top h1 { margin: 0 0 4px; font-size: 26px; font-weight: 600; color: var(--accent); }
-header.top .meta { color: var(--muted); font-size: 13px; }
-h2 { font-size: 19px; font-weight: 600; margin: 36px 0 10px; padding-bottom: 4px; border-bottom: 1px solid var(--rule);
-     color: var(--accent); }
-h3 { font-size: 15px; font-weight: 600; margin: 20px 0 8px; }
-p { margin: 6px 0 10px; }
-.verdict { display: flex; flex-wrap: wrap; gap: 12px; margin: 8px 0 4px; }
-.card { flex: 1 1 200px; border: 1px solid var(--rule); border-radius: 6px; padding: 10px 14px; background: #fafbfc; }
-.card .k { color: var(--muted); font-size: 12px; text-transform: uppercase; letter-spacing: .04em; }
-.card .v { font-size: 20px; font-weight: 600; margin-top: 2px; }
-.card.ok .v { color: #2e7d32; } .card.bad .v { color: #c62828; } .card.warn .v { color: #8a6d00; }
-table { border-collapse: collapse; margin: 6px 0 8px; font-size: 12.5px; width: 100%; }
-th { background: var(--head); text-align: left; font-weight: 600; padding: 6px 8px; border-bottom: 2px solid var(--rule);
-     vertical-align: bottom; }
-td { padding: 4px 8px; border-bottom: 1px solid #e8ecf0; vertical-align: top; }
-tbody tr:nth-child(even) td { background: #f8fafb; }
-table.num td { font-variant-numeric: tabular-nums; white-space: nowrap; }
-table.num td:nth-child(n+4) { text-align: right; }
-table.num.single td:nth-child(n+3) { text-align: right; }
-table.num:not(.single) td:first-child { white-space: normal; min-width: 120px; }
-table.num.checks td:last-child, table.num.extremes td:last-child { text-align: left; white-space: normal; }
-table.kv { width: auto; min-width: 480px; } table.kv th { width: 240px; background: none; font-weight: 600;
-     border-bottom: 1px solid #e8ecf0; padding: 4px 8px; vertical-align: top; }
-table.kv tbody tr:nth-child(even) td { background: none; }
-table.basis td:nth-child(2) { white-space: nowrap; }
-tr.failed td { background: #fdecea !important; }
-span.pass { color: #1b5e20; background: #e3f1e4; padding: 1px 8px; border-radius: 10px; font-weight: 600; }
-span.fail { color: #ffffff; background: #c62828; padding: 1px 8px; border-radius: 10px; font-weight: 600; }
-span.skip { color: var(--muted); font-style: italic; }
-ol.notes { font-size: 12px; color: var(--muted); margin: 2px 0 12px; padding-left: 18px; list-style: none; }
-ol.notes li sup { font-weight: 600; margin-right: 4px; }
-figure { margin: 14px 0 20px; } figure img { max-width: 100%; height: auto; border: 1px solid #eef0f2; }
-figcaption { color: var(--muted); font-size: 12.5px; margin-top: 4px; }
-details { margin: 8px 0; border: 1px solid var(--rule); border-radius: 6px; padding: 6px 12px; background: #fafbfc; }
-details summary { cursor: pointer; font-weight: 600; }
-pre { font: 12px/1.45 "DejaVu Sans Mono", Menlo, Consolas, monospace; white-space: pre-wrap; margin: 8px 0; }
-code { font: 12px "DejaVu Sans Mono", Menlo, Consolas, monospace; }
-.method { color: var(--muted); font-size: 12.5px; }
-footer { margin-top: 48px; color: var(--muted); font-size: 12px; border-top: 1px solid var(--rule); padding-top: 8px; }
-@media print { main { padding: 0; } h2 { break-after: avoid; } figure, table { break-inside: avoid; } }
-"""
-
-
-def _figure(fig) -> str:
-    if fig is None:
-        return ""
-    img, caption = fig
-    return (f'<figure><img alt="{_e(caption)}" src="data:image/png;base64,{img}">'
-            f"<figcaption>{_e(caption)}</figcaption></figure>")
-
-
-def _kv(pairs: list[tuple[str, str]]) -> str:
-    return '<table class="kv"><tbody>' + "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in pairs) + \
-        "</tbody></table>"
 
 
 def _first_attrs(runs) -> dict:
@@ -847,7 +557,7 @@ def _html(source, runs, tables: dict, figures: dict, opts: ReportOptions, base: 
              _e(r["line"]), _e(r["end"]), col["maximum"][k], col["mean"][k], col["std"][k], col["weibull_mpm"][k],
              col["weibull_quantile"][k]] for k, (_, r) in enumerate(seeds.iterrows())]
     q = f"q{round(opts.quantile * 100):d}"
-    parts += _cable_section(tables.get("cable_checks"), figures.get("range_graphs") or [])
+    parts += _cable_section(tables.get("cable_checks"), figures.get("range_graphs") or [], tables.get("cable_fatigue"))
     parts += ["<h2>Appendix: every seed</h2>",
               f"<details><summary>Tensions of each run ({len(seeds)} rows)</summary>"
               + _table(["Load case", "Case", "Seed", "Line", "End", "Maximum [kN]", "Mean [kN]", "Std. dev. [kN]",
@@ -865,7 +575,9 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     Parameters
     ----------
     source
-        What :func:`seacable.design.summary.read_results` reads.
+        What :func:`seacable.design.summary.read_results` reads; or one ``mooring_static`` or ``mooring_pushover``
+        result (file or Dataset) of a line with curvature: its cable page
+        (:func:`seacable.report_cable.make_static_report`).
     output
         The HTML file (``.html``); the CSV files go beside it, ``STEM_extremes.csv`` and so on.
     options
@@ -885,6 +597,10 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
 
     opts = options or ReportOptions()
     output = check_output_file(output, "-o", (".html", ".htm"))
+    static = _static_cable(source)
+    if static is not None:  # a static or pushover result of a cable: its own page (issue 40)
+        return make_static_report(static, output, str(source) if isinstance(source, (str, Path)) else
+                                  "result Dataset (Python)")
     if opts.scatter is not None and not isinstance(opts.scatter, pd.DataFrame):
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
     if opts.tn_curve is not None:
@@ -914,6 +630,8 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     if cable.table() is not None:
         tables["cable_checks"] = cable.table()
         figures["range_graphs"] = [_figure_range_graphs(k, rg, lim) for k, (rg, lim) in list(graphs.items())[:6]]
+    if cable.armour_table() is not None:
+        tables["cable_fatigue"] = cable.armour_table()
     page = _html(source if isinstance(source, (str, Path)) else "result Datasets (Python)", runs, tables, figures,
                  opts, output.resolve().parent, kept.attrs)
     output.parent.mkdir(parents=True, exist_ok=True)
@@ -922,7 +640,7 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
         if key == "fatigue_life" and not opts.scatter:
             continue
         path = output.with_name(f"{output.stem}_{key}.csv")
-        units = CABLE_CSV_UNITS if key == "cable_checks" else None
+        units = {"cable_checks": CABLE_CSV_UNITS, "cable_fatigue": ARMOUR_CSV_UNITS}.get(key)
         written.append(atomic_write(path, lambda tmp, t=table, u=units: _with_units(t, u).to_csv(tmp, index=False)))
     if graphs:
         path = output.with_name(f"{output.stem}_range_graphs.nc")
@@ -931,20 +649,23 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     return written
 
 
-def _range_graphs_file(graphs: dict):
-    """The range graphs of the report in one Dataset: one load case and line as it is; several on a ``load_case``
-    dimension (and ``line`` beside it), those of another mesh than the first left out (named in its attrs)."""
+
+
+def _static_cable(source):
+    """The result of ``source`` when it is one ``mooring_static`` or ``mooring_pushover`` result of a line with
+    curvature (loaded), else None (what the time-domain report reads, or refuses)."""
     import xarray as xr
 
-    items = list(graphs.items())
-    if len(items) == 1:
-        return items[0][1][0]
-    first = items[0][1][0]
-    same = [(k, rg) for k, (rg, _) in items if rg.sizes == first.sizes]
-    out = xr.concat([rg for _, rg in same], dim="load_case", combine_attrs="drop_conflicts")
-    out = out.assign_coords(load_case=("load_case", [k[0] for k, _ in same]), line=("load_case", [k[1] for k, _ in same]))
-    left = [f"{k[0]} / {k[1]}" for k, (rg, _) in items if rg.sizes != first.sizes]
-    if left:
-        out.attrs["left_out"] = "; ".join(left) + " (another mesh)"
-    return out
-
+    if isinstance(source, xr.Dataset):
+        ds = source
+    elif isinstance(source, (str, Path)) and Path(source).is_file():
+        try:
+            with xr.open_dataset(source, engine="netcdf4") as f:
+                if f.attrs.get("analysis") not in STATIC_ANALYSES or "curvature" not in f.variables:
+                    return None
+                ds = f.load()
+        except (OSError, ValueError, RuntimeError, KeyError, TypeError):
+            return None  # the time-domain reader says what is wrong with it
+    else:
+        return None
+    return ds if ds.attrs.get("analysis") in STATIC_ANALYSES and "curvature" in ds.variables else None

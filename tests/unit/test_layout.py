@@ -149,7 +149,8 @@ def test_lower_layers_do_not_import_higher_ones(package_graph):
 def _runs(module: str) -> bool:
     """An analysis (it runs a case) or anything above the analyses: files, sweeps, figures, the command line."""
     return (module.rpartition(".")[2] in ("run", "plan_run", "fe_run") or module in (
-        "seacable", "seacable.simulate", "seacable.cli", "seacable.report", "seacable.extremes", "seacable.sink")
+        "seacable", "seacable.simulate", "seacable.cli", "seacable.report", "seacable.report_cable", "seacable.extremes",
+        "seacable.sink")
         or module.startswith(("seacable.io", "seacable.sweeps", "seacable.plot", "seacable.design",
                               "seacable.system.dynamics", "seacable.system.statics")))
 

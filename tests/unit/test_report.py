@@ -147,7 +147,7 @@ def _record(seed: int, n: int = 600, mean: float = 2.0e6, amplitude: float = 4e4
 def files_only(monkeypatch):
     """The report's figures at 30 dpi instead of 110, for a test that reads the page's text and the CSV files, not
     the figures' pixels (a third less time to draw them)."""
-    monkeypatch.setattr("seacable.report._DPI", 30)
+    monkeypatch.setattr("seacable._report_html._DPI", 30)
 
 
 @pytest.fixture(scope="module")

@@ -36,10 +36,10 @@ from pathlib import Path
 from typing import Annotated, Any, ClassVar, Literal, Union
 
 import numpy as np
-from pydantic import Discriminator, Field, Tag, model_validator
+from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest
-from ..case import _STAND_IN, SeabedContact, check_unused_inputs
+from ..case import _STAND_IN, CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import LineType
@@ -80,7 +80,23 @@ class _Solve(Model):
         return self
 
 
-class SystemStaticAnalysis(_Solve):
+class _Designed(Model):
+    """The cable checks' criteria of a system's result (issue 40): ``design.line_clearance``, the smallest distance
+    from a cable to the other lines (:func:`seacable.design.clearance.line_clearance_check`)."""
+
+    design: CableDesign | None = Field(
+        None, description="Design criteria of the system's cables (the smallest distance to the other lines).")
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_design(self, handler):
+        # 'design' appears in a dumped case only when given: the cases without it read as they did before it existed
+        data = handler(self)
+        if isinstance(data, dict) and data.get("design", 0) is None:
+            del data["design"]
+        return data
+
+
+class SystemStaticAnalysis(_Designed, _Solve):
     """Static equilibrium and stiffness of the system, intact and (with ``damaged_lines``) damaged."""
 
     type: Literal["system_static"] = "system_static"
@@ -245,7 +261,7 @@ class UncoupledRoute(Model):
         return self
 
 
-class SystemDynamicAnalysis(Model):
+class SystemDynamicAnalysis(_Designed):
     """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
 
     Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force

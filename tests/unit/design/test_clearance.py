@@ -1,0 +1,143 @@
+"""The smallest distance from a cable to the other lines of its system (seacable.design.clearance, issue 40): closed
+forms of straight lines, and the check against analysis.design.line_clearance."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+import yaml
+
+from seacable.design.clearance import line_clearance_check, line_distance, segment_distances
+from seacable.errors import InputError
+
+
+def _system(lines: dict[str, np.ndarray], times=None, design: dict | None = None) -> xr.Dataset:
+    """A system result of polylines: name -> positions (time, node, 3) [m] (or (node, 3) for one state), padded with
+    NaN to the longest; ``s`` the polyline's own arc length (straight lines: unstretched)."""
+    names = list(lines)
+    n = max(p.shape[-2] for p in lines.values())
+    timed = times is not None
+    nt = len(times) if timed else 1
+    xyz = np.full((nt, len(names), n, 3), np.nan)
+    s = np.full((len(names), n), np.nan)
+    for k, name in enumerate(names):
+        p = lines[name] if timed else lines[name][None]
+        xyz[:, k, :p.shape[1]] = p
+        s[k, :p.shape[1]] = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(p[0], axis=0), axis=1))])
+    dims = ("time", "line", "node") if timed else ("line", "node")
+    data = {c: (dims, xyz[..., i] if timed else xyz[0, ..., i]) for i, c in enumerate("xyz")}
+    coords = {"line": names, "s": (("line", "node"), s)}
+    if timed:
+        coords["time"] = np.asarray(times, float)
+    case = {"name": "sys", "analysis": {"type": "system_dynamic" if timed else "system_static"}}
+    if design is not None:
+        case["analysis"]["design"] = design
+    return xr.Dataset(data, coords=coords, attrs={"analysis": case["analysis"]["type"], "case": yaml.safe_dump(case)})
+
+
+def _straight(a, b, n):
+    return np.linspace(np.asarray(a, float), np.asarray(b, float), n)
+
+
+def test_two_crossing_straight_lines_are_their_offset_apart_where_they_cross():
+    # closed form: line A along x at z = 0 from x = -50 to 50; line B along (cos 30 deg, sin 30 deg, 0) at height h
+    # through (x0, y0, h). Their common normal is z: the distance is h, at the point of A under the crossing
+    # (x0 - y0 / tan 30 deg, 0, 0), s_A = that x + 50, and on B at the same point's arc length from its end A.
+    # The nodes (11 on A, 7 on B) do not fall on the crossing: the segments' own closest points find it.
+    h, x0, y0 = 3.7, 4.0, 2.0
+    u = np.array([math.cos(math.radians(30)), math.sin(math.radians(30)), 0.0])
+    start = np.array([x0, y0, h]) - 40.0 * u
+    ds = _system({"cable": _straight((-50, 0, 0), (50, 0, 0), 11), "chain": _straight(start, start + 80.0 * u, 7)})
+    (d,) = line_distance(ds, "cable")
+    x_cross = x0 - y0 / math.tan(math.radians(30))
+    assert d.other == "chain"
+    # exact to round-off: straight segments are the lines themselves
+    assert d.distance == pytest.approx(h, abs=1e-12)
+    assert d.s == pytest.approx(x_cross + 50.0, abs=1e-9)
+    assert d.s_other == pytest.approx(40.0 - y0 / math.sin(math.radians(30)), abs=1e-9)
+    assert d.position == pytest.approx((x_cross, 0.0, 0.0), abs=1e-9)
+    assert d.position_other == pytest.approx((x_cross, 0.0, h), abs=1e-9)
+    assert math.isnan(d.time)
+
+
+def test_the_smallest_distance_over_time_is_found_where_and_when_it_is():
+    # the chain crosses over the cable at a height h(t) = 5 + 2 cos(2 pi t / 10), least (3 m) at t = 5 s; the
+    # cable's segment under the crossing moves nowhere. Each state's distance is h(t) exactly.
+    t = np.arange(0.0, 10.01, 0.5)
+    h = 5.0 + 2.0 * np.cos(2 * np.pi * t / 10.0)
+    cable = np.repeat(_straight((0, 0, -100), (100, 0, -100), 21)[None], t.size, axis=0)
+    chain = np.stack([_straight((30, -40, -100 + hk), (30, 40, -100 + hk), 9) for hk in h])
+    ds = _system({"cable": cable, "chain": chain}, times=t)
+    (d,) = line_distance(ds, "cable")
+    np.testing.assert_allclose(d.history.values, h, atol=1e-12)
+    assert d.distance == pytest.approx(3.0, abs=1e-12) and d.time == 5.0
+    assert d.s == pytest.approx(30.0, abs=1e-9) and d.s_other == pytest.approx(40.0, abs=1e-9)
+
+
+def test_parallel_and_end_to_end_segments():
+    # parallel segments 2 m apart, overlapping: 2 m; collinear segments end to end with a 1.5 m gap: 1.5 m; a
+    # segment against one of no length (a point) 0.5 m off its middle: 0.5 m
+    d, _, _ = segment_distances([0, 0, 0], [10, 0, 0], [3, 2, 0], [20, 2, 0])
+    assert d == pytest.approx(2.0, abs=1e-12)
+    d, a, b = segment_distances([0, 0, 0], [10, 0, 0], [11.5, 0, 0], [20, 0, 0])
+    assert (d, a, b) == pytest.approx((1.5, 1.0, 0.0), abs=1e-12)
+    d, a, _ = segment_distances([0, 0, 0], [10, 0, 0], [5, 0.5, 0], [5, 0.5, 0])
+    assert (d, a) == pytest.approx((0.5, 0.5), abs=1e-12)
+
+
+def test_the_check_against_the_case_limit():
+    h = 3.7
+    lines = {"cable": _straight((-50, 0, 0), (50, 0, 0), 11), "chain": _straight((0, -50, h), (0, 50, h), 11),
+             "chain2": _straight((-50, 20, 0), (50, 20, 0), 3)}
+    fails = line_clearance_check(_system(lines, design={"line_clearance": 5.0}), "cable")
+    assert fails.status == "FAIL" and fails.value == pytest.approx(h) and fails.limit == 5.0
+    assert fails.utilisation == pytest.approx(5.0 / h) and fails.margin == pytest.approx(h - 5.0)
+    assert "chain " in fails.formula and fails.s == pytest.approx(50.0)
+    passes = line_clearance_check(_system(lines), "cable", limit=2.0)
+    assert passes.passed and passes.utilisation == pytest.approx(2.0 / h)
+    assert line_clearance_check(_system(lines), "cable").status.startswith("not checked")
+
+
+@pytest.mark.parametrize("bad", [0.0, -3.0, math.nan])
+def test_a_bad_clearance_limit_is_refused(bad):
+    lines = {"cable": _straight((-50, 0, 0), (50, 0, 0), 11), "chain": _straight((0, -50, 3), (0, 50, 3), 11)}
+    with pytest.raises(InputError, match="line_clearance must be a distance > 0 m.*Suggested fix"):
+        line_clearance_check(_system(lines), "cable", limit=bad)
+
+
+def test_a_result_without_lines_or_a_missing_line_is_refused():
+    lines = {"cable": _straight((-50, 0, 0), (50, 0, 0), 11), "chain": _straight((0, -50, 3), (0, 50, 3), 11)}
+    with pytest.raises(InputError, match="line 'riser' is not in the result.*Suggested fix"):
+        line_distance(_system(lines), "riser")
+    with pytest.raises(InputError, match="no 'line' dimension.*Suggested fix"):
+        line_distance(_system(lines).isel(line=0), "cable")
+
+
+def test_a_system_cable_s_report_rows_add_its_line_clearance():
+    """In the report's cable section (seacable.report_cable), a line of a system result that bends (some non-zero
+    curvature: a cable) gets the line-clearance row when the case gives the limit; a line that does not bend (a
+    chain: curvature 0) gets none."""
+    from types import SimpleNamespace
+
+    from seacable.report_cable import _Cable
+
+    t = np.arange(0.0, 10.01, 0.5)
+    h = 5.0 + 2.0 * np.cos(2 * np.pi * t / 10.0)
+    cable = np.repeat(_straight((0, 0, -100), (100, 0, -100), 21)[None], t.size, axis=0)
+    chain = np.stack([_straight((30, -40, -100 + hk), (30, 40, -100 + hk), 21) for hk in h])
+    ds = _system({"cable": cable, "chain": chain}, times=t, design={"line_clearance": 4.0})
+    kappa = np.zeros((t.size, 2, 21))
+    kappa[:, 0, 5:15] = 0.01
+    ds["curvature"] = (("time", "line", "node"), kappa)
+    ds["tension"] = (("time", "line", "node"), np.full((t.size, 2, 21), 1.0e4))
+    keep = _Cable()
+    keep(SimpleNamespace(load_case="storm", name="storm", seed=1), ds)
+    table = keep.table()
+    rows = table[table["check"] == "line clearance"]
+    assert list(rows["line"]) == ["cable"]
+    row = rows.iloc[0]
+    # the chain comes within 3 m of the cable at t = 5 s: under the 4 m asked
+    assert row["status"] == "FAIL" and row["value"] == pytest.approx(3.0) and row["time"] == 5.0
