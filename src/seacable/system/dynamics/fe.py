@@ -79,6 +79,9 @@ class SystemFE:
     # the held line ends on free bodies (:func:`_turning_ends`): per row, the row of the model's hinge table, the free
     # body and the end's direction into the line in the body's axes (c, 5); (0, 5) when none
     clamps: np.ndarray = field(default_factory=lambda: np.zeros((0, 5)))
+    # every held line end: (row of the hinge table, its point, its direction into the line in its body's axes or None
+    # at a point not on a body), for the outputs' directions (:func:`seacable.system.bending.held_directions`)
+    held: tuple = ()
 
     def kernel_args(self):
         m = self.model
@@ -373,7 +376,7 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
-        clamps=clamps,
+        clamps=clamps, held=tuple((model.hinges.shape[0] - len(held) + k, h[5], h[6]) for k, h in enumerate(held)),
         bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
         memory_kernel=memory, memory_step=step)
     return fe
