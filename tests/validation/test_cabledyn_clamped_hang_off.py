@@ -36,8 +36,8 @@ import seacable as sc
 
 sys.path.insert(0, str(Path(__file__).parent))
 sys.path.insert(0, str(Path(__file__).parents[1] / "unit" / "io"))
-import _cabledyn_peer  # noqa: E402
-from test_cabledyn_deck import _deck  # noqa: E402
+import _cabledyn_peer
+from test_cabledyn_deck import _deck
 
 CABLEDYN = {1: (9319.5598, 0.096868581, 0.01915408), 2: (9319.5603, 0.09693285, 0.019153253)}
 CONVERGED_HANG_OFF = 0.019153221  # k = 4

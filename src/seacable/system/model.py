@@ -22,7 +22,7 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from .._model import Model, quantity, suggest
 from ..line import Line
@@ -402,6 +402,16 @@ class SystemLine(Model):
                              "line at two different points.")
         return self
 
+    @model_serializer(mode="wrap")
+    def _without_pinned_ends(self, handler):
+        # a line with pinned ends is written as before end conditions existed (a result's case attribute unchanged)
+        data = handler(self)
+        if isinstance(data, dict):
+            for key in ("end_a_condition", "end_b_condition"):
+                if not getattr(self, key).holds and key not in self.model_fields_set:
+                    data.pop(key, None)
+        return data
+
     @model_validator(mode="after")
     def _held_ends(self):
         for end, key in enumerate(("end_a_condition", "end_b_condition")):
@@ -410,10 +420,9 @@ class SystemLine(Model):
             stiffened = any(getattr(sec, "end", None) == "AB"[end] for sec in self.line.sections)
             if cond.holds and not seg.line_type.bending_stiffness > 0 and not stiffened:
                 raise ValueError(f"{key} is {cond.type}, but the line's end segment there has no bending stiffness "
-                                 f"(line type {seg.line_type.name or 'unnamed'}, EI = {seg.line_type.bending_stiffness:g} N m^2, no "
-                                 "bend stiffener): a moment at the end needs a line that bends. Suggested fix: give the "
-                                 "end segment's line type 'bending_stiffness' in N m^2 (e.g. 1e4), or leave "
-                                 f"{key} out (pinned).")
+                                 f"(EI = {seg.line_type.bending_stiffness:g} N m^2, no bend stiffener): a moment at the "
+                                 "end needs a line that bends. Suggested fix: give the end segment's line type "
+                                 f"'bending_stiffness' in N m^2 (e.g. 1e4), or leave {key} out (pinned).")
         return self
 
     @property
