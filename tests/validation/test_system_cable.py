@@ -31,6 +31,7 @@ from seacable.mooring.ends import end_direction
 from seacable.mooring.motion import rotation_matrix
 from seacable.mooring.run import case_model
 from seacable.mooring.solver import static_equilibrium
+from seacable.system.bending import held_directions, pose_rotations
 from seacable.system.case import SystemCase
 from seacable.system.statics.fe import fe_equilibrium
 
@@ -166,6 +167,28 @@ def test_a_held_end_on_a_free_body_balances_its_moment_on_the_body(cond):
     assert np.abs(force).max() < 1e-4
     assert np.abs(moment).max() < 1e-2
     assert np.linalg.norm(clamp) > 1e2
+
+
+def test_a_free_body_turns_its_clamp_as_a_body_held_at_its_pose():
+    """The free buoy's equilibrium pose, given to the same buoy held fixed there: the held body's clamp is turned by
+    the pose once (as the single line's test above pins down), the free body's by the coupled iteration at each
+    pose; the lines' shapes agree to the solvers' tolerance, so the free body turns its clamp the same way (a
+    rotation the wrong way round, or by the transpose, moves the hang-off's curvature by 1e-2 1/m)."""
+    case = _buoy(CLAMP)
+    eq = fe_equilibrium(case.system(), case.environment, stiffness=False, tol=1e-10)
+    pose = eq.state.body_position[0]
+    data = case.model_dump(exclude_none=True)
+    data["bodies"]["buoy"] = {**data["bodies"]["buoy"], "kind": "fixed", "position": [float(v) for v in pose]}
+    held = SystemCase.parse(data)
+    eq2 = fe_equilibrium(held.system(), held.environment, stiffness=False, tol=1e-10)
+    nodes = eq.fe.line_nodes[0]
+    # the free body's clamp at its pose (the outputs' directions, :func:`seacable.system.bending.held_directions`)
+    turned = held_directions(eq.fe, {"buoy": pose_rotations(pose)})
+    k_free = bending_state(eq.fe.model.network, eq.state.position, turned)[0][nodes]
+    k_held = bending_state(eq2.fe.model.network, eq2.state.position)[0][eq2.fe.line_nodes[0]]
+    assert np.abs(eq.state.position[nodes] - eq2.state.position[eq2.fe.line_nodes[0]]).max() < 1e-6
+    assert np.abs(k_free - k_held).max() < 1e-7
+    assert k_held[-1] > 1e-3  # the hang-off bends: a clamp, not a pin
 
 
 def test_newton_converges_quadratically_with_a_clamp_on_a_free_body():

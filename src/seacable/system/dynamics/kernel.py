@@ -317,8 +317,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         ie, iw = end_nodes(hinges, int(clamps[c, C_ROW]))
         clamp_slopes(cf[c], cJ[c], cd[c], cBw[c], cBm[c], Kb[:3, :3])
         for r in range(3):
-            for cc in range(3):
-                Jq[6 * b + 3 + r, 6 * b + 3 + cc] += Kb[r, cc]
+            for col in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + col] += Kb[r, col]
         for j in range(con_node.size):
             if con_active[j] == 0 or con_node[j] != ie or con_body[j] != b:
                 continue
@@ -326,12 +326,12 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
             # the moment's slope -Bm on the end as (-Bm) T
             _skew(arms[j], S2)
             for r in range(3):
-                for cc in range(3):
-                    sb = S2[r, 0] * cBw[c, 0, cc] + S2[r, 1] * cBw[c, 1, cc] + S2[r, 2] * cBw[c, 2, cc]
-                    sm = cBm[c, r, 0] * S2[0, cc] + cBm[c, r, 1] * S2[1, cc] + cBm[c, r, 2] * S2[2, cc]
-                    Jq[6 * b + r, 6 * b + 3 + cc] -= cBw[c, r, cc]
-                    Jq[6 * b + 3 + r, 6 * b + cc] -= cBm[c, r, cc]
-                    Jq[6 * b + 3 + r, 6 * b + 3 + cc] += sm - sb
+                for col in range(3):
+                    sb = S2[r, 0] * cBw[c, 0, col] + S2[r, 1] * cBw[c, 1, col] + S2[r, 2] * cBw[c, 2, col]
+                    sm = cBm[c, r, 0] * S2[0, col] + cBm[c, r, 1] * S2[1, col] + cBm[c, r, 2] * S2[2, col]
+                    Jq[6 * b + r, 6 * b + 3 + col] -= cBw[c, r, col]
+                    Jq[6 * b + 3 + r, 6 * b + col] -= cBm[c, r, col]
+                    Jq[6 * b + 3 + r, 6 * b + 3 + col] += sm - sb
         if fidx[iw] >= 0 and not tied[iw]:
             wrow[c] = 3 * fidx[iw]
             nwc += 1
@@ -427,8 +427,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         b = int(clamps[c, C_BODY])
         r = a % 3
         coef = 0.0
-        for cc in range(3):
-            coef += cBw[c, r, cc] * rhs[nc3 + 6 * b + 3 + cc]
+        for col in range(3):
+            coef += cBw[c, r, col] * rhs[nc3 + 6 * b + 3 + col]
         v = Yt[2 * nt3 + a]
         for k in range(wk3[a], lastw[a] + 1):
             du[k] -= v[k] * coef
