@@ -282,3 +282,24 @@ def test_bad_cable_input_is_refused_with_a_fix(change, message):
         with pytest.raises(InputError) as err:
             sc.validate(case) if hasattr(sc, "validate") else sc.run(case)
     assert message in str(err.value) and "Suggested fix" in str(err.value)
+
+
+def test_a_clamp_on_a_prescribed_body_turns_with_its_motion():
+    """A hull pitching harmonically (0.1 rad, 4 s) about its reference point: after 1 s (a quarter period, pitch 0.1
+    rad) the coupled loop's clamp direction is the closed-form ``Ry(0.1) e`` of its direction at rest, and the
+    result's hang-off curvature is taken from it."""
+    from seacable.mooring.kernel import H_D
+    from seacable.system.dynamics import build_system_fe, simulate_system, static_system
+
+    data = _system(CLAMP, kind="prescribed").model_dump(exclude_none=True)
+    data["lines"]["cable"]["n_elements"] = 20
+    data["analysis"] = {"type": "system_dynamic", "duration": 1.0, "time_step": 0.05, "output_interval": 0.5,
+                        "body_motions": {"hull": {"type": "platform", "amplitude": [0, 0, 0, 0, 0.1, 0],
+                                                  "period": 4.0}}}
+    case = SystemCase.parse(data)
+    fe = build_system_fe(case.system(), case.environment, case.analysis)
+    (h, _, into), = fe.held
+    simulate_system(fe, static_system(fe), 1.0, 0.05, 0.5, analysis=case.analysis)
+    expected = rotation_matrix(0.0, 0.1, 0.0) @ into  # the body at rest has no rotation
+    assert fe.model.hinge_ei[h, H_D:H_D + 3] == pytest.approx(expected, abs=1e-12)
+    assert not np.allclose(expected, into, atol=1e-2)  # and it has turned
