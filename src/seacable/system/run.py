@@ -131,8 +131,8 @@ def statics_used(case, statics: str | None = None) -> str:
     """'catenary' or 'finite_element': the statics a system case is solved with.
 
     ``statics`` (default the analysis option ``statics``, else ``auto``): ``auto`` takes the catenary
-    statics unless the environment has what they cannot model (a current, a sloping seabed:
-    :func:`seacable.system.statics_mode.needs_fe`); ``catenary`` then refuses those.
+    statics unless the system has what they cannot model (a current, a sloping seabed, a line with sections or an
+    end held in bending: :func:`seacable.system.statics_mode.needs_fe`); ``catenary`` then refuses those.
     """
     mode = statics if statics is not None else getattr(case.analysis, "statics", "auto")
     if mode not in STATICS:
