@@ -214,12 +214,27 @@ def test_mesh_too_coarse_for_the_stiffener_is_refused_by_validate():
         sc.check(case)
 
 
-def test_system_lines_refuse_sections():
-    from seacable.system.model import SystemLine
+def test_system_lines_take_sections_as_the_single_line_does():
+    # issue 40: a system line's sections are resolved onto its finite-element line by the single line's own
+    # network_from_line (the same nodes: one at each section's end), and the catenary statics refuse them
+    from seacable.mooring.network import network_from_line
+    from seacable.system.dynamics import build_system_fe
+    from seacable.system.model import MooringSystem, SystemLine, SystemPoint
+    from seacable.system.statics import solve_equilibrium
 
     line = _line(BuoyancySection(start=50.0, length=40.0, pitch=4.0, module=MODULE))
-    with pytest.raises(InputError, match="a system line takes no 'sections'"):
-        SystemLine(line=line, end_a="a", end_b="b")
+    system = MooringSystem(points={"a": SystemPoint(kind="fixed", position=(0.0, 0.0, -100.0)),
+                                   "b": SystemPoint(kind="fixed", position=(150.0, 0.0, -20.0))},
+                           lines={"c": SystemLine(line=line, end_a="a", end_b="b", n_elements=40)})
+    env = sc.Environment(depth=100.0)
+    fe = build_system_fe(system, env)
+    single = network_from_line(line, (0.0, 0.0, -100.0), (150.0, 0.0, -20.0), water_density=env.water_density,
+                               gravity=env.gravity, n_elements=40)
+    els = fe.line_elements[0]
+    assert np.array_equal(fe.model.network.length[els], single.length)
+    assert np.array_equal(fe.model.network.weight_per_length[els], single.weight_per_length)
+    with pytest.raises(InputError, match="cannot carry a line 'c' with sections"):
+        solve_equilibrium(system, env)
 
 
 def test_stiffened_beam_deflects_as_euler_bernoulli_with_the_tapered_ei():

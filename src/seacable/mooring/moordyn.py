@@ -190,11 +190,31 @@ def moordyn_model(md: MoorDynInput | str) -> MooringModel:
                   element_viscoelastic=visco if np.any(visco[:, 0] > 0) else None,
                   element_syrope=syrope if np.any(syrope[:, 0] > 0) else None,
                   n_channels=len(vessels), channel_names=tuple(f"point {p.id}" for p in points.values()
-                                                               if p.attachment == "vessel"))
+                                                               if p.attachment == "vessel"),
+                  end_hinges=_end_hinges(md, bending))
     water = Water(density=rho, gravity=g, depth=depth, seabed_stiffness=md.kbot, seabed_damping=md.cbot,
                   friction=md.friction, slack_damping=True,  # MoorDyn's damper acts in slack segments too
                   full_seabed_damping=True)  # and cBot in full on a penetrating node
     return MooringModel(net, water)
+
+
+def _end_hinges(md: MoorDynInput, bending) -> tuple:
+    """The network's ``end_hinges`` of CableDyn's END CONNECTIONS held in bending (clamped, or a rotational spring),
+    their directions global; refuses one at an end whose element has no bending stiffness."""
+    ends = getattr(md, "end_connections", {})
+    index = {ln.id: li for li, ln in enumerate(md.lines)}
+    first = np.cumsum([0] + [ln.n_segments for ln in md.lines])
+    out = []
+    for (lid, end), (kind, stiffness, direction) in sorted(ends.items()):
+        li = index[lid]
+        e = first[li] if end == 0 else first[li + 1] - 1
+        if not bending[e] > 0:
+            raise InputError(f"END CONNECTIONS line {lid} End {'AB'[end]} is {'rigid' if kind == 'clamp' else 'a spring'}"
+                             f", but the line's end element there has no bending stiffness (EI = {bending[e]:g} N m^2): "
+                             "a moment at the end needs a line that bends. Suggested fix: give the line type its EI, "
+                             "or write Pinned.")
+        out.append((li, end, kind, stiffness, direction))
+    return tuple(out)
 
 
 def _line_view(model: MooringModel, li: int) -> MooringModel:
@@ -215,7 +235,8 @@ def _line_view(model: MooringModel, li: int) -> MooringModel:
                    else tuple(net.element_tension_strain[e] for e in els),
                    bending_stiffness=None if net.bending_stiffness is None else net.bending_stiffness[els],
                    element_viscoelastic=None if net.element_viscoelastic is None else net.element_viscoelastic[els],
-                   element_syrope=None if net.element_syrope is None else net.element_syrope[els])
+                   element_syrope=None if net.element_syrope is None else net.element_syrope[els],
+                   end_hinges=tuple((0, *h[1:]) for h in net.end_hinges if h[0] == li))
     # a network of one line: the view is that line renumbered, which the model's own check covered (the same
     # nodes, positions and elements)
     line = MooringModel(view, model.water, checked=len(net.line_nodes) == 1)

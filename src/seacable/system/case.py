@@ -19,7 +19,8 @@ system case (:func:`seacable.io.parse_case`)::
     analysis: {type: system_static, damaged_lines: [line1]}
 
 Each line is written as a single-line case's ``line`` (``line_type`` and ``length`` for one
-segment, or ``segments`` and ``attachments``) plus its ends ``end_a``, ``end_b`` and ``n_elements``.
+segment, or ``segments``, ``attachments`` and ``sections``) plus its ends ``end_a``, ``end_b``, ``n_elements``
+and how each end is held in bending, ``end_a_condition`` and ``end_b_condition`` (pinned, clamped, spring).
 
 Analyses: ``system_static`` (equilibrium, end tensions, anchor loads, stiffness; intact and
 damaged) and ``system_offsets`` (equilibrium under an external load on one body swept over
@@ -355,7 +356,7 @@ SYSTEM_ANALYSES = (SystemStaticAnalysis, SystemOffsetsAnalysis, SystemDynamicAna
 SystemAnalysis = Annotated[Union[SYSTEM_ANALYSES], Field(discriminator="type")]  # noqa: UP007
 UNION_TAGS.update(cls.model_fields["type"].default for cls in SYSTEM_ANALYSES)
 
-_LINE_KEYS = ("segments", "attachments", "line_type", "length")
+_LINE_KEYS = ("segments", "attachments", "sections", "line_type", "length")
 
 
 def is_system_data(data: Any) -> bool:

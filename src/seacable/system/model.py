@@ -22,10 +22,11 @@ from collections.abc import Sequence
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from .._model import Model, quantity, suggest
 from ..line import Line
+from ..mooring.ends import EndCondition
 
 __all__ = ["Body", "BodyCurrent", "BodyHydrodynamics", "BodyWind", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
 
@@ -373,12 +374,26 @@ class SystemLine(Model):
         Names of the points the line ends at.
     n_elements
         Elements a finite-element model uses on the line (a segment's own ``n_elements`` wins).
+    end_a_condition, end_b_condition
+        How each end is held in bending (:class:`seacable.mooring.ends.EndCondition`): pinned (the default),
+        clamped at a declination and azimuth, or a rotational spring. At a point on a body the direction is in
+        the body's axes and turns with the body; at any other point it is global. A held end needs bending
+        stiffness (the line type's EI or a bend stiffener).
+
+    A line's ``sections`` (buoyancy modules, bend stiffeners: :mod:`seacable.sections`) are resolved onto its
+    finite-element mesh as a single line's are (:func:`seacable.mooring.network.network_from_line`); the catenary
+    statics cannot carry them, so a system with sections or a held end is solved by its finite-element statics
+    (:func:`seacable.system.statics_mode.needs_fe`).
     """
 
     line: Line
     end_a: str = Field(min_length=1, description="Point at end A.")
     end_b: str = Field(min_length=1, description="Point at end B.")
     n_elements: int = Field(20, ge=1, le=100_000, description="Elements of a finite-element model.")
+    end_a_condition: EndCondition = Field(
+        EndCondition(), description="How end A is held in bending: pinned, clamped at a direction, or a rotational "
+                                    "spring (the direction in the axes of the body the end's point is on).")
+    end_b_condition: EndCondition = Field(EndCondition(), description="How end B is held in bending (as end A's).")
 
     @model_validator(mode="after")
     def _ends(self):
@@ -387,16 +402,39 @@ class SystemLine(Model):
                              "line at two different points.")
         return self
 
+    @model_serializer(mode="wrap")
+    def _without_pinned_ends(self, handler):
+        # a line with pinned ends is written as before end conditions existed (a result's case attribute unchanged)
+        data = handler(self)
+        if isinstance(data, dict):
+            for key in ("end_a_condition", "end_b_condition"):
+                if not getattr(self, key).holds and key not in self.model_fields_set:
+                    data.pop(key, None)
+        return data
+
     @model_validator(mode="after")
-    def _no_sections(self):
-        # the system statics solve catenaries of the segments and attachments: a line's sections (buoyancy modules,
-        # bend stiffeners) are refused rather than left out
-        if self.line.sections:
-            raise ValueError(f"a system line takes no 'sections' (buoyancy sections, bend stiffeners), got "
-                             f"{len(self.line.sections)}: they run in the single-line finite-element analyses "
-                             "(mooring_static, mooring_pushover, mooring_dynamic). Suggested fix: run the cable as a "
-                             "single-line case, or give its buoyancy as segments and attachments.")
+    def _held_ends(self):
+        for end, key in enumerate(("end_a_condition", "end_b_condition")):
+            cond = getattr(self, key)
+            seg = self.line.segments[0 if end == 0 else -1]
+            stiffened = any(getattr(sec, "end", None) == "AB"[end] for sec in self.line.sections)
+            if cond.holds and not seg.line_type.bending_stiffness > 0 and not stiffened:
+                raise ValueError(f"{key} is {cond.type}, but the line's end segment there has no bending stiffness "
+                                 f"(EI = {seg.line_type.bending_stiffness:g} N m^2, no bend stiffener): a moment at the "
+                                 "end needs a line that bends. Suggested fix: give the end segment's line type "
+                                 f"'bending_stiffness' in N m^2 (e.g. 1e4), or leave {key} out (pinned).")
         return self
+
+    @property
+    def holds_ends(self) -> bool:
+        """Whether an end of the line is clamped or held by a rotational spring."""
+        return self.end_a_condition.holds or self.end_b_condition.holds
+
+    def end_hinges(self, index: int) -> tuple:
+        """The network's ``end_hinges`` entries of this line's held ends (:meth:`seacable.mooring.ends.EndCondition.
+        hinge`), its index in the system being ``index``."""
+        return tuple(cond.hinge(index, end) for end, cond in enumerate((self.end_a_condition, self.end_b_condition))
+                     if cond.holds)
 
 
 class MooringSystem(Model):

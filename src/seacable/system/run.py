@@ -33,7 +33,7 @@ from ..errors import ConvergenceError, InputError, NoSolutionError
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
 from .damaged import is_most_loaded, line_tensions, most_loaded_line
 from .model import MooringSystem
-from .statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
+from .statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, line_reasons, needs_fe
 
 __all__ = ["DOFS", "REFERENCES", "SystemSetup", "check_bodies_without_lines", "equilibrium_variables",
            "prepare_system_offsets", "prepare_system_static", "run_system_offsets", "run_system_static"]
@@ -131,15 +131,19 @@ def statics_used(case, statics: str | None = None) -> str:
     """'catenary' or 'finite_element': the statics a system case is solved with.
 
     ``statics`` (default the analysis option ``statics``, else ``auto``): ``auto`` takes the catenary
-    statics unless the environment has what they cannot model (a current, a sloping seabed:
-    :func:`seacable.system.statics_mode.needs_fe`); ``catenary`` then refuses those.
+    statics unless the system has what they cannot model (a current, a sloping seabed, a line with sections or an
+    end held in bending: :func:`seacable.system.statics_mode.needs_fe`); ``catenary`` then refuses those.
     """
     mode = statics if statics is not None else getattr(case.analysis, "statics", "auto")
     if mode not in STATICS:
         raise InputError(f"analysis.statics: '{mode}' is not one of {', '.join(STATICS)}. Suggested fix: use "
                          "'auto' (the catenary statics unless there is a current or a sloping seabed).")
     if mode == "auto":
-        return "finite_element" if needs_fe(case.environment) else "catenary"
+        return "finite_element" if needs_fe(case.environment, case.lines) else "catenary"
+    lines = line_reasons(case.lines) if mode == "catenary" else ""
+    if lines:
+        raise InputError(f"analysis.statics: catenary, but the system has {lines}, which the catenary lines cannot "
+                         "carry (no bending, no sections). Suggested fix: use statics: auto (or finite_element).")
     return mode
 
 
@@ -529,6 +533,56 @@ def _profiles(eq, setup: SystemSetup, n: int) -> dict[str, np.ndarray]:
     return out
 
 
+def _bending(eq, setup: SystemSetup) -> dict:
+    """The bending outputs of the finite-element equilibrium ``eq`` at its nodes (:func:`seacable.system.bending.
+    line_bending`), the held ends on free bodies turned to their poses: {name: (line, k) per line of ``setup``, NaN
+    for a line not in ``eq``}, with ``fe_s`` the nodes' unstretched arc lengths [m]; {} for the catenary statics or
+    lines without bending."""
+    fe = getattr(eq, "fe", None)
+    if fe is None or not fe.model.hinges.shape[0]:
+        return {}
+    from .bending import held_directions, line_bending, pose_rotations
+
+    poses = {name: eq.body_position[eq.body_names.index(name)] for name in eq.body_names}
+    directions = held_directions(fe, {name: pose_rotations(p) for name, p in poses.items()})
+    got = line_bending(fe, eq.state.position, directions)
+    net = fe.model.network
+    got["fe_s"] = np.array([np.r_[0.0, np.cumsum(net.length[e])] for e in fe.line_elements], dtype=object)
+    out = {}
+    for name, values in got.items():
+        rows = {line: values[i] for i, line in enumerate(fe.line_names)}
+        width = max(len(v) for v in values) if name == "fe_s" else values.shape[-1]
+        out[name] = np.array([np.pad(np.asarray(rows[line], float), (0, width - len(rows[line])),
+                                     constant_values=np.nan) if line in rows else np.full(width, np.nan)
+                              for line in setup.lines])
+    return out
+
+
+def _bending_variables(bends: list[dict], data: dict, coords: dict) -> None:
+    """The bending outputs of each condition (:func:`_bending`) into ``data`` (condition, line, fe_node or
+    fe_element) and their arc lengths ``fe_s`` into ``coords``."""
+    from ..results import var
+    from .bending import BENDING
+
+    keys = next(b for b in bends if b).keys()
+    widths = {k: max(b[k].shape[-1] for b in bends if b) for k in keys}
+    nl = next(b for b in bends if b)["fe_s"].shape[0]
+
+    def padded(b, k):
+        if not b:
+            return np.full((nl, widths[k]), np.nan)
+        return np.pad(b[k], ((0, 0), (0, widths[k] - b[k].shape[-1])), constant_values=np.nan)
+
+    for name, (where, units, long_name) in BENDING.items():
+        data[name] = var(("condition", "line", f"fe_{where}"), np.stack([padded(b, name) for b in bends]), units,
+                         long_name + " (at the finite-element nodes)")
+    s = np.fmax.reduce([padded(b, "fe_s") for b in bends])
+    coords["fe_node"] = var("fe_node", np.arange(widths["fe_s"]), "1", "finite-element node along the line, 0 at end A")
+    coords["fe_element"] = var("fe_element", np.arange(widths["shear_force"]), "1",
+                               "finite element along the line, 0 at end A")
+    coords["fe_s"] = var(("line", "fe_node"), s, "m", "unstretched arc length of the finite-element node from end A")
+
+
 def _stack(records: list[dict], lead: tuple[int, ...]) -> dict[str, np.ndarray]:
     if len(records) == 1:  # one equilibrium (system_static intact): its arrays, with the leading axes
         return {k: np.asarray(v).reshape(lead + np.shape(v)) for k, v in records[0].items()}
@@ -631,7 +685,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
 
     a: SystemStaticAnalysis = case.analysis
     setup = prepare_system_static(case, statics)
-    records, profiles, coupled, iterations, residuals = [], [], [], [], []
+    records, profiles, bends, coupled, iterations, residuals = [], [], [], [], [], []
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
     intact_eq = None   # the intact equilibrium (the first condition), that most_loaded chooses its line by
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
@@ -655,6 +709,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
             intact_eq = eq
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
+        bends.append(_bending(eq, setup))
         coupled.append(np.asarray(eq.stiffness, float))
         iterations.append(int(eq.iterations))
         residuals.append(float(eq.residual))
@@ -675,6 +730,8 @@ def run_system_static(case: SystemCase, statics: str | None = None):
             data[f"pin_reaction_{axis}"] = var(("condition", "body"), pins[..., k], "N",
                                                f"force of the pin on a pinned body, {axis} (0: not pinned)")
     coords = _coords(setup, a.profile_points)
+    if any(bends):
+        _bending_variables(bends, data, coords)
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)
@@ -807,7 +864,9 @@ def _statics_attrs(ds, setup: SystemSetup) -> None:
     ds.attrs["stiffness_method"] = STIFFNESS_FD if setup.fe else STIFFNESS_ANALYTIC
     if setup.fe:
         why = needs_fe(setup.case.environment)
-        ds.attrs["statics_reason"] = (f"the environment has {why}, which the catenary lines cannot model" if why
+        lines = line_reasons(setup.case.lines)
+        why = "; ".join(([f"the environment has {why}"] if why else []) + ([f"the system has {lines}"] if lines else []))
+        ds.attrs["statics_reason"] = (f"{why}, which the catenary lines cannot model" if why
                                       else "asked for (analysis.statics: finite_element)")
 
 

@@ -7,15 +7,17 @@ of a system case (``seacable validate``), before any statics module is imported.
 
 from __future__ import annotations
 
-__all__ = ["STIFFNESS_ANALYTIC", "STIFFNESS_FD", "needs_fe"]
+__all__ = ["STIFFNESS_ANALYTIC", "STIFFNESS_FD", "line_reasons", "needs_fe"]
 
 STIFFNESS_FD = "central differences of the finite-element statics"
 STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
 
 
-def needs_fe(env) -> str:
+def needs_fe(env, lines=None) -> str:
     """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed, a wind (its
-    force on a body turns with the body's heading)."""
+    force on a body turns with the body's heading); and, given the system's ``lines`` ({name: SystemLine}), a line
+    with sections (buoyancy modules, bend stiffeners) or with an end held in bending (clamped, a rotational spring),
+    which need the finite-element line's bending and its sections resolved on the mesh."""
     cur = env.current
     speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
     why = []
@@ -26,4 +28,19 @@ def needs_fe(env) -> str:
     wind = getattr(env, "wind", None)
     if wind is not None and wind.speed > 0:
         why.append(f"a wind of {wind.speed:g} m/s on the bodies")
+    lines = line_reasons(lines or {})
+    return " and ".join(why + ([lines] if lines else []))
+
+
+def line_reasons(lines) -> str:
+    """Why the catenary statics cannot carry the system's ``lines`` ({name: SystemLine}; '' when they can): a line
+    with sections or with an end held in bending."""
+    why = []
+    for name, line in lines.items():
+        if line.line.sections:
+            why.append(f"line '{name}' with sections (buoyancy modules or bend stiffeners)")
+        held = [k for k in ("end_a", "end_b") if getattr(line, f"{k}_condition").holds]
+        if held:
+            kinds = "/".join(sorted({getattr(line, f"{k}_condition").type for k in held}))
+            why.append(f"line '{name}' with {' and '.join(held)} held in bending ({kinds})")
     return " and ".join(why)

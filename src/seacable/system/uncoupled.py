@@ -170,9 +170,10 @@ def _check_quasi_static(case, system: MooringSystem, name: str) -> None:
         ends = [system.points[line.end_a], system.points[line.end_b]]
         kinds = sorted(p.kind for p in ends)
         on_body = [p for p in ends if p.kind == "body"]
-        if len(segs) != 1 or line.line.attachments or kinds != ["body", "fixed"] or on_body[0].body != name:
+        if (len(segs) != 1 or line.line.attachments or line.line.sections or line.holds_ends
+                or kinds != ["body", "fixed"] or on_body[0].body != name):
             raise InputError(f"lines.{ln}: analysis.uncoupled.lines 'quasi_static' takes lines of one segment without "
-                             f"attachments from a fixed point to the body '{name}'. {fix}")
+                             f"attachments, sections or ends held in bending from a fixed point to the body '{name}'. {fix}")
         lt = segs[0].line_type
         if getattr(lt, "tension_strain", None) is not None:
             raise InputError(f"lines.{ln}: analysis.uncoupled.lines 'quasi_static' takes a constant axial stiffness, "
@@ -245,7 +246,7 @@ def prepare_system_uncoupled(case) -> UncoupledSetup:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # the statics' remarks are the run's own
-            if needs_fe(env):
+            if needs_fe(env, system.lines):
                 from .statics.fe import fe_equilibrium
 
                 eq = fe_equilibrium(system, env, external=external, tol=a.tolerance, n_elements=a.n_elements)

@@ -90,8 +90,11 @@ def test_equivalent_buoyancy_rewrites_diameter_and_mass_from_the_weight_in_water
 
 
 @pytest.mark.parametrize("extra, current, message", [
+    (("--------------------- END CONNECTIONS -------------------------------\nLineID End Stiffness EzX EzY EzZ "
+      "TorsStiffness NxX NxY NxZ\n(-) (-) (N-m/rad) (-) (-) (-) (N-m/rad) (-) (-) (-)\n"
+      "1 A Rigid 0.17 0.0 -0.98 Rigid 0 1 0\n"), "none", "TorsStiffness 'Rigid' restrains the line's twist"),
     (("--------------------- END CONNECTIONS -------------------------------\nLineID End Stiffness EzX EzY EzZ\n"
-     "(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid -0.25 0.0 -0.97\n"), "none", "Stiffness 'Rigid' (a clamped or sprung"),
+      "(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid 0 0 0\n"), "none", "must be a non-zero vector"),
     (("--------------------- ATTACHMENTS ----------------------------------\nLineID ArcLength Mass Volume CdA Ca\n"
      "(-) (m) (kg) (m^3) (m^2) (-)\n1 170.614:5.0:175.614 114.15 0.2297 0.78 1.0\n"), "none",
      "arc length 170.614 m lies outside line 1 (0 to 170.215 m)"),
@@ -103,6 +106,16 @@ def test_what_seacable_does_not_read_is_refused_by_name(extra, current, message)
     with pytest.raises(InputError) as err:
         read_moordyn(_deck(extra, current))
     assert message in str(err.value) and "Suggested fix" in str(err.value)
+
+
+def test_held_end_connections_are_read_as_end_conditions():
+    """A Rigid row is a clamp, a positive Stiffness a rotational spring, both along (EzX, EzY, EzZ) towards End B."""
+    extra = ("--------------------- END CONNECTIONS -------------------------------\n"
+             "LineID End Stiffness EzX EzY EzZ\n(-) (-) (N-m/rad) (-) (-) (-)\n1 A Rigid 0.6 0.0 -0.8\n"
+             "1 B 2.5e4 0 3 4\n")
+    md = read_moordyn(_deck(extra))
+    assert md.end_connections[(1, 0)] == ("clamp", None, pytest.approx((0.6, 0.0, -0.8), abs=1e-15))
+    assert md.end_connections[(1, 1)] == ("spring", 2.5e4, pytest.approx((0.0, 0.6, 0.8), abs=1e-15))
 
 
 def test_pinned_end_connections_are_read():

@@ -17,8 +17,9 @@ and adds, for dynamic power cables:
   (dropped, as MoorDyn's ``dtM`` is: seacable's statics and time steps are its own), ``frictionMu`` (read as MoorDyn's
   ``FrictionCoefficient``), ``current`` and ``waves`` (``none`` only).
 
-seacable reads SECTIONS, EQUIVALENT BUOYANCY, ATTACHMENTS and pinned END CONNECTIONS; it refuses, by name, a clamped
-or sprung end connection (not read yet) and CableDyn's ``current`` and ``waves`` options other than ``none``. The lines and points are otherwise MoorDyn's, read by the same tables.
+seacable reads SECTIONS, EQUIVALENT BUOYANCY, ATTACHMENTS and END CONNECTIONS (pinned, rigid: a clamp, or a
+rotational spring, :class:`seacable.mooring.ends.EndCondition`; a torsional restraint is refused, the line carrying
+no torque); it refuses CableDyn's ``current`` and ``waves`` options other than ``none``. The lines and points are otherwise MoorDyn's, read by the same tables.
 """
 
 from __future__ import annotations
@@ -105,19 +106,70 @@ def _line_id(rd, lineno, token, table: str, line_ids) -> int:
     return lid
 
 
-def check_end_connections(rd, section, line_ids) -> None:
-    """Read the END CONNECTIONS rows: pinned ends are seacable's own; a clamped or sprung end is refused."""
+#: END CONNECTIONS Stiffness keywords: a pinned end, and a rigid one (a clamp)
+_PINNED = ("pinned", "free", "zero")
+_RIGID = ("rigid", "infinity", "inf")
+
+
+def read_end_connections(rd, section, line_ids) -> dict:
+    """The END CONNECTIONS rows as ``{(line ID, end): (kind, stiffness, direction)}`` for the ends held in bending:
+    ``end`` 0 for End A, 1 for End B; ``kind`` ``"clamp"`` (Stiffness Rigid, Infinity or Inf) or ``"spring"`` (a
+    rotational stiffness > 0 [N m/rad]); ``direction`` the unit vector ``(EzX, EzY, EzZ)`` along the line towards
+    End B (CableDyn's convention, as :class:`seacable.mooring.ends.EndCondition`'s), global axes. Pinned ends
+    (Pinned, Free, Zero or 0) are left out: seacable's ends are pinned by default. The torsion columns are refused
+    (the line carries no torque)."""
     _, rows = _table(rd, section)
+    out = {}
     for lineno, t in rows:
         rd.columns(lineno, t, 3, "END CONNECTIONS", "LineID End Stiffness EzX EzY EzZ")
         lid = _line_id(rd, lineno, t[0], "END CONNECTIONS", line_ids)
-        stiffness = t[2]
-        if stiffness.lower() in ("pinned", "free", "zero") or _as_float(stiffness) == 0.0:
+        letter = t[1].strip("'\"").upper()
+        if letter not in ("A", "B"):
+            raise rd.error(lineno, f"END CONNECTIONS line {lid}: End must be A or B, got {t[1]!r}. Suggested fix: "
+                                   "write A or B.")
+        end = "AB".index(letter)
+        if (lid, end) in out:
+            raise rd.error(lineno, f"END CONNECTIONS line {lid} End {letter} is given twice. Suggested fix: keep one "
+                                   "row per line end.")
+        if len(t) > 6 and t[6].strip("'\"").lower() not in ("free", "zero", "0", "0.0"):
+            raise rd.error(lineno, f"END CONNECTIONS line {lid} End {letter}: TorsStiffness {t[6]!r} restrains the "
+                                   "line's twist, and seacable's line carries no torsion. Suggested fix: write Free.")
+        token = t[2].strip("'\"").lower()
+        if token in _PINNED or (token not in _RIGID and _as_float(token) == 0.0):
             continue
-        raise rd.error(lineno, f"END CONNECTIONS line {lid} end {t[1]}: Stiffness {stiffness!r} (a clamped or sprung "
-                               "end) is not read by seacable's MoorDyn reader yet: its decks' ends are pinned. "
-                               "Suggested fix: write Pinned to run the line pinned there, or give the line in a "
-                               "seacable case file.")
+        rd.columns(lineno, t, 6, "END CONNECTIONS", "LineID End Stiffness EzX EzY EzZ")
+        if token in _RIGID:
+            kind, stiffness = "clamp", None
+        else:
+            stiffness = _as_float(token)
+            if stiffness is None or not math.isfinite(stiffness) or stiffness < 0:
+                raise rd.error(lineno, f"END CONNECTIONS line {lid} End {letter}: Stiffness {t[2]!r} must be Pinned, "
+                                       "Rigid or a rotational stiffness >= 0 in N m/rad. Suggested fix: e.g. 1e5.")
+            kind = "spring"
+        d = [rd.number(lineno, v, f"END CONNECTIONS {c}", "-") for v, c in zip(t[3:6], ("EzX", "EzY", "EzZ"))]
+        norm = math.sqrt(sum(v * v for v in d))
+        if not norm > 0 or not math.isfinite(norm):
+            raise rd.error(lineno, f"END CONNECTIONS line {lid} End {letter}: the direction ({', '.join(t[3:6])}) "
+                                   "must be a non-zero vector along the line towards End B. Suggested fix: e.g. "
+                                   "0 0 1 for a line rising vertically to a hang-off.")
+        out[(lid, end)] = (kind, stiffness, tuple(v / norm for v in d))
+    return out
+
+
+def end_condition(kind: str, stiffness, direction, rotation=None):
+    """The :class:`seacable.mooring.ends.EndCondition` of an END CONNECTIONS row (:func:`read_end_connections`),
+    its direction turned into a body's axes by the transpose of ``rotation`` (the body's rotation at its given pose)
+    when the end is on a body."""
+    from ...mooring.ends import EndCondition
+
+    d = [float(v) for v in direction]
+    if rotation is not None:
+        d = [float(sum(rotation[r][c] * d[r] for r in range(3))) for c in range(3)]
+    declination = math.acos(max(-1.0, min(1.0, d[2])))
+    azimuth = math.atan2(d[1], d[0]) if math.hypot(d[0], d[1]) > 1e-12 else 0.0
+    if kind == "clamp":
+        return EndCondition(type="clamped", declination=declination, azimuth=azimuth)
+    return EndCondition(type="spring", declination=declination, azimuth=azimuth, stiffness=stiffness)
 
 
 def read_attachments(rd, section, lines):

@@ -11,6 +11,7 @@ from pydantic import ValidationError
 
 from ..._model import format_validation_error
 from ...errors import InputError, SeacableWarning
+from . import _cabledyn
 from ._records import MoorDynInput, MoorDynRod, MoorDynRodType
 
 
@@ -373,6 +374,21 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
             linear_damping=(tuple(tuple(float(v) for v in row) for row in np.diag(body_lin[name]))
                             if body_lin[name].any() else None),
             external_force=tuple(float(v) for v in body_force[name]), pinned=s["pinned"])
+    for (lid, end_index), (kind, stiffness, direction) in getattr(md, "end_connections", {}).items():
+        # CableDyn's END CONNECTIONS held in bending: its global direction, in the body's axes at its given pose for
+        # an end on a body
+        name = f"line{lid}"
+        key = ("end_a", "end_b")[end_index]
+        point = points[getattr(lines[name], key)]
+        rotation = (_rotation(*bodies[point.body].position[3:]) if point.kind == "body" and point.body in bodies
+                    else None)
+        try:
+            condition = _cabledyn.end_condition(kind, stiffness, direction, rotation)
+            lines[name] = lines[name].model_copy(update={f"{key}_condition": condition})
+            SystemLine.model_validate(lines[name].model_dump())  # its checks (EI at the end)
+        except (ValidationError, ValueError) as exc:
+            raise InputError(f"{label}: END CONNECTIONS line {lid} End {'AB'[end_index]}: "
+                             f"{format_validation_error(exc) if isinstance(exc, ValidationError) else exc}") from None
     try:
         system = MooringSystem(points=points, bodies=bodies, lines=lines)
     except ValidationError as exc:  # say which deck

@@ -168,7 +168,8 @@ def read_moordyn(path_or_text, *, name=None) -> MoorDynInput:
                           layout="v1" if v1 else "v2", external_loads=tuple(loads),
                           syrope_ic=syrope_ic)
     if "end_connections" in sections:
-        _cabledyn.check_end_connections(rd, sections["end_connections"], {ln.id for ln in lines})
+        ends = _cabledyn.read_end_connections(rd, sections["end_connections"], {ln.id for ln in lines})
+        result = dataclasses.replace(result, end_connections=ends)
     if "equivalent_buoyancy" in sections:
         result = dataclasses.replace(result, line_types=_cabledyn.apply_equivalent_buoyancy(
             rd, sections["equivalent_buoyancy"], types, result.water_density, result.gravity))

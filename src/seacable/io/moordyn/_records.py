@@ -231,6 +231,9 @@ class MoorDynInput:
     failures: tuple[MoorDynFailure, ...] = ()
     layout: str = "v2"
     external_loads: tuple[MoorDynExternalLoad, ...] = ()
+    # CableDyn's END CONNECTIONS of the ends held in bending: {(line ID, end 0 A / 1 B): (kind, stiffness, direction)}
+    # (:func:`seacable.io.moordyn._cabledyn.read_end_connections`)
+    end_connections: dict = dataclasses.field(default_factory=dict)
     syrope_ic: dict[int, tuple[float, float]] = dataclasses.field(default_factory=dict)  # line: (Tmax0, Tmean0) [N]  # 'v2', or 'v1' (a file with NTypes/NConnects/NLines count lines or v1 columns)
 
     water_density = _option("water_density", _RHO, 1025.0, "``WtrDnsty``/``rho``/``rhoW``, default 1025. [kg/m^3]")

@@ -226,7 +226,7 @@ def most_loaded_at_start(case) -> str:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", SeacableWarning)  # the run itself warns of what the statics see
-            if (needs_fe(case.environment) or loaded) and not names:
+            if (needs_fe(case.environment, system.lines) or loaded) and not names:
                 # what the catenary statics cannot see (a current, a wind, a body's mean wave drift): the finite-
                 # element start of the intact run itself
                 intact = a.model_copy(update={"damaged_lines": ()})

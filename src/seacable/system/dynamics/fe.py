@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...case import SeabedContact
+from ...line import resolve_sections
 from ...mooring.motion import rotation_matrix
 from ...mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from ...mooring.outputs import water_of_environment
@@ -75,6 +76,12 @@ class SystemFE:
     memory_kernel: np.ndarray = None
     memory_step: float = 0.0
     body_motions: dict = field(default_factory=dict)  # prescribed body -> its motion bound to the run (dofs(times))
+    # the held line ends on free bodies (:func:`_turning_ends`): per row, the row of the model's hinge table, the free
+    # body and the end's direction into the line in the body's axes (c, 5); (0, 5) when none
+    clamps: np.ndarray = field(default_factory=lambda: np.zeros((0, 5)))
+    # every held line end: (row of the hinge table, its point, its direction into the line in its body's axes or None
+    # at a point not on a body), for the outputs' directions (:func:`seacable.system.bending.held_directions`)
+    held: tuple = ()
 
     def kernel_args(self):
         m = self.model
@@ -82,7 +89,7 @@ class SystemFE:
         args = (net.elements, net.length, net.axial_stiffness, net.axial_damping, net.mass_per_length, net.diameter,
                 net.cdn, net.cdt, net.can, net.cat, net.point_mass, net.point_added_mass, net.point_volume,
                 net.point_hydrodynamics(), m.bedc, m.buoyancy, m.point_buoyancy, *m.tension_strain, m.hinges, m.hinge_ei,
-                m.visco)
+                m.visco, self.clamps)
         return args
 
     def body_args(self):
@@ -173,18 +180,21 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
                                 stiffness_proportional=beta, end_b="free")
         s = sub.arc_length
         n = len(s)
-        # start shape: the catenary, solved from the lower end up
-        lengths = np.array([seg.length for seg in sl.line.segments])
-        weights = np.array(sl.line.weights(rho, g))
-        ea = np.array([seg.line_type.effective_axial_stiffness() for seg in sl.line.segments])
+        # start shape: the catenary, solved from the lower end up (of the line with its sections resolved: a
+        # buoyancy section's segment and modules; a line without sections is its own)
+        line = resolve_sections(sl.line, rho, g)
+        buoyant = bool(sl.line.sections)
+        lengths = np.array([seg.length for seg in line.segments])
+        weights = np.array(line.weights(rho, g))
+        ea = np.array([seg.line_type.effective_axial_stiffness() for seg in line.segments])
         if xa[2] <= xb[2]:
-            shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=sl.line.point_loads(rho, g),
-                                       depth=depth, slope=slope)
+            shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=line.point_loads(rho, g),
+                                       depth=depth, slope=slope, buoyant=buoyant)
         else:
             L = s[-1]
-            rev = [(L - ps, w) for ps, w in sl.line.point_loads(rho, g)][::-1]
+            rev = [(L - ps, w) for ps, w in line.point_loads(rho, g)][::-1]
             shape = catenary_positions(xb, xa, L - s, lengths[::-1], weights[::-1], ea[::-1], point_loads=rev,
-                                       depth=depth, slope=slope)
+                                       depth=depth, slope=slope, buoyant=buoyant)
         ids = np.empty(n, np.int64)
         for j, (end, at) in enumerate(((0, 0), (1, n - 1))):
             pname = ends[end]
@@ -254,6 +264,9 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         if c[1] <= -2 and not used[-2 - c[1]]:
             c[1] = -1  # a free point no other line ends at: its line's end is held there until it fails
 
+    held = held_ends(system, failures)
+    directions = _direction_channels(system, held, channel_source)
+
     def full(point_values, key):
         return np.r_[point_values, np.asarray(extra[key], float)] if nn > len(names) else point_values
 
@@ -271,7 +284,10 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         bending_stiffness=np.concatenate(bending) if bending else np.zeros(0),
             element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None,
         element_moment_curvature=tuple(laws) if any(law is not None for law in laws) else None)
+    if held:
+        net = net.replace(end_hinges=tuple(h[:5] for h in held))
     model = MooringModel(net, _water(environment, analysis))
+    clamps = _turning_ends(system, model, held, bindex, directions)
     nb = len(free_bodies)
     tables = {name: area_tables(system.bodies[name]) for name in free_bodies}
     bpar = np.zeros((nb, DB.B_SIZE + max([t[2].size for t in tables.values()], default=0)))
@@ -347,7 +363,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     cur_still = not np.any(model.cur_speed)
     for k, name in enumerate(free_bodies):
         arms = [c[2] for c in con if c[1] == k]
-        spin[k] = _free_spin_axis(system.bodies[name], arms, cur_still)
+        if not np.any(clamps[:, 1] == k):  # a held line end turns with the body about any axis
+            spin[k] = _free_spin_axis(system.bodies[name], arms, cur_still)
     C = list(zip(*con, strict=True)) if con else [[]] * 9
     fe = SystemFE(
         model=model, system=system, free_bodies=free_bodies,
@@ -359,9 +376,87 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         con_arm=np.array(C[2], float).reshape(-1, 3), con_target=np.array(C[3], float).reshape(-1, 3),
         con_chan=np.array(C[4], np.int64), fail_time=np.array(C[5], float), fail_tension=np.array(C[6], float),
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
+        clamps=clamps, held=tuple((model.hinges.shape[0] - len(held) + k, h[5], h[6]) for k, h in enumerate(held)),
         bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
         memory_kernel=memory, memory_step=step)
     return fe
+
+
+def held_ends(system: MooringSystem, failures=()) -> list:
+    """The held line ends of ``system`` (clamped or through a rotational spring), each ``(line index, end, kind,
+    stiffness, direction, point, body_direction)``: the first five the network's ``end_hinges`` entry
+    (:meth:`seacable.system.model.SystemLine.end_hinges`) with the direction in global axes, the point's name, and
+    for a point on a body the direction into the line (from the end towards the line's inside) in the body's axes
+    (None otherwise). A body's direction is turned by the body's given pose here; the statics and dynamics turn it
+    with the body.
+
+    Raises
+    ------
+    InputError
+        A held end at a free point (it has no rotation to take the moment), or at an end that may fail.
+    """
+    from ...errors import InputError
+
+    out = []
+    for li, (lname, sl) in enumerate(system.lines.items()):
+        for entry in sl.end_hinges(li):
+            end = entry[1]
+            key = ("end_a", "end_b")[end]
+            pname = getattr(sl, key)
+            p = system.points[pname]
+            cond = getattr(sl, f"{key}_condition")
+            if p.kind == "free":
+                raise InputError(
+                    f"lines.{lname}.{key}_condition is {cond.type}, but its point '{pname}' is a free point, which has "
+                    "no rotation of its own: nothing would take the end's moment. Suggested fix: hold the end at a "
+                    "fixed or coupled point or at a point on a body, or leave it pinned.")
+            if (lname, "ab"[end]) in failures:
+                raise InputError(
+                    f"lines.{lname}.{key}_condition is {cond.type}, and analysis.failures releases that end: a held end "
+                    "that fails is not modelled. Suggested fix: leave the end pinned, or the failure out.")
+            d = np.asarray(entry[4], float)
+            into = d if end == 0 else -d  # from the end into the line
+            body = None
+            if p.kind == "body":
+                body = into
+                d = _rot(system.bodies[p.body].position) @ d
+            out.append((li, end, entry[2], entry[3], d, pname, body))
+    return out
+
+
+def _direction_channels(system: MooringSystem, held, channel_source) -> dict:
+    """The motion channels of the held ends on prescribed bodies' points (added to ``channel_source``): a point
+    one metre from the end into the line, moved by the body's rigid motion with the end
+    (:func:`seacable.mooring.kernel.turn_held_ends`). Returns {index in ``held``: its channel}."""
+    out = {}
+    for k, (_, _, _, _, _, pname, into) in enumerate(held):
+        p = system.points[pname]
+        if into is None or system.bodies[p.body].kind != "prescribed":
+            continue
+        body = system.bodies[p.body]
+        arm = np.asarray(p.position, float) + into
+        out[k] = len(channel_source)
+        channel_source.append(("body", p.body, arm, np.asarray(body.position[:3]) + _rot(body.position) @ arm))
+    return out
+
+
+def _turning_ends(system: MooringSystem, model: MooringModel, held, bindex: dict, directions: dict) -> np.ndarray:
+    """The held ends that turn with their body: those on prescribed bodies take their direction from their
+    channels (``hinge_ei`` columns H_DCH, H_ECH, in place), those on free bodies are returned as the rows of
+    :attr:`SystemFE.clamps` (hinge row, free body, direction into the line in body axes); those on fixed bodies
+    keep the direction of the body's given pose."""
+    from ...mooring.kernel import H_DCH, H_ECH
+
+    first = model.hinges.shape[0] - len(held)  # the end hinges follow the inner ones, in their order
+    rows = []
+    for k, (_, _, _, _, _, pname, into) in enumerate(held):
+        h = first + k
+        if k in directions:
+            end = int(model.hinges[h, 1])
+            model.hinge_ei[h, H_DCH], model.hinge_ei[h, H_ECH] = directions[k], model.network.channel[end]
+        elif into is not None and system.points[pname].body in bindex:
+            rows.append((h, bindex[system.points[pname].body], *into))
+    return np.array(rows, float).reshape(-1, 5)
 
 
 def _free_spin_axis(body, arms, still_water: bool) -> np.ndarray:

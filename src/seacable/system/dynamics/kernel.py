@@ -40,10 +40,12 @@ from ...mooring.kernel import (
     loads_water,
     n_water,
     predict_nodes,
+    turn_held_ends,
 )
 from ...seastate import S_MODE
 from ..statics.kernel import _skew
 from .body import B_MASS, B_VOL, _body_current, _mv, body_load, body_tangent
+from .clamps import C_BODY, C_ROW, clamp_moment, clamp_slopes, clamp_state, end_nodes, turn_clamps
 from .frames import (
     CHART_LIMIT,
     F_GLOB,
@@ -115,11 +117,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     (global axes, ``u`` the reference point's velocity and the angular velocity); zeros without memory.
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
-     ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco) = args
+     ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, clamps) = args
     n = X.shape[0]
     nd = 3 * nfree
     nb = q.shape[0]
     rho, g = env[0], env[1]
+    ncl = clamps.shape[0]
+    if ncl:  # the held line ends on free bodies turn with them
+        turn_clamps(q, frame, clamps, hinge_ei)
     bnd = band if jac else band[:0]  # no rows: loads skips the Newton matrix
     bnd[:] = 0.0
     loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
@@ -230,6 +235,14 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                     Jq[6 * b + k, 6 * b + 3 + c] += cc * (M6[k, 3] * P[0, c] + M6[k, 4] * P[1, c] + M6[k, 5] * P[2, c])
         if check:
             scale = max(scale, tol * max(par[B_MASS] * g, rho * g * par[B_VOL]))
+    # the held line ends' moments on their free bodies (:mod:`.clamps`): each end's couple on its line, reversed
+    cf, cd, cJ = np.zeros((ncl, 3)), np.zeros((ncl, 3)), np.zeros((ncl, 3, 3))
+    for c in range(ncl):
+        b = int(clamps[c, C_BODY])
+        clamp_state(X, hinges, hinge_ei, int(clamps[c, C_ROW]), cf[c], cJ[c], cd[c])
+        clamp_moment(cf[c], cd[c], ed)
+        for r in range(3):
+            Rq[6 * b + 3 + r] -= ed[r]
     copy_1d(Rr, Rq)
     for j in range(con_node.size):
         b = con_body[j]
@@ -294,6 +307,34 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         for r in range(3):
             rows[k] = 3 * f + r
             k += 1
+    # the held line ends on free bodies: their slopes on the body's rotation and the moment's on the nodes (:mod:`.clamps`);
+    # the end node's through its tie, the neighbour's (a band node) through the Schur complement below
+    cBw, cBm = np.zeros((ncl, 3, 3)), np.zeros((ncl, 3, 3))
+    wrow = np.full(ncl, -1, np.int64)  # first band row of the neighbour, -1: not a band node of its own
+    nwc = 0
+    for c in range(ncl):
+        b = int(clamps[c, C_BODY])
+        ie, iw = end_nodes(hinges, int(clamps[c, C_ROW]))
+        clamp_slopes(cf[c], cJ[c], cd[c], cBw[c], cBm[c], Kb[:3, :3])
+        for r in range(3):
+            for col in range(3):
+                Jq[6 * b + 3 + r, 6 * b + 3 + col] += Kb[r, col]
+        for j in range(con_node.size):
+            if con_active[j] == 0 or con_node[j] != ie or con_body[j] != b:
+                continue
+            # du_e = T dq, T = [I, -skew(arm)]: the end's residual slope -Bw on the rotation enters as T^T (-Bw),
+            # the moment's slope -Bm on the end as (-Bm) T
+            _skew(arms[j], S2)
+            for r in range(3):
+                for col in range(3):
+                    sb = S2[r, 0] * cBw[c, 0, col] + S2[r, 1] * cBw[c, 1, col] + S2[r, 2] * cBw[c, 2, col]
+                    sm = cBm[c, r, 0] * S2[0, col] + cBm[c, r, 1] * S2[1, col] + cBm[c, r, 2] * S2[2, col]
+                    Jq[6 * b + r, 6 * b + 3 + col] -= cBw[c, r, col]
+                    Jq[6 * b + 3 + r, 6 * b + col] -= cBm[c, r, col]
+                    Jq[6 * b + 3 + r, 6 * b + 3 + col] += sm - sb
+        if fidx[iw] >= 0 and not tied[iw]:
+            wrow[c] = 3 * fidx[iw]
+            nwc += 1
     # Schur complement of the band J = L U: z0 = L^-1 (-Ru), v_k = L^-1 e_k and w_k = U^-T e_k (w_k = D^-1 v_k
     # when J is symmetric) for the touched rows k, so that (P J^-1 P^T)_ik = w_i . v_k and P J^-1 (-Ru) = w_i .
     # z0, and C = D P with D +1 at a tied row and -1 at its free node's row; each column is short when its node
@@ -361,6 +402,13 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         rhs[nc3 + a] = -Rq[a]
         for c in range(6 * nb):
             Sm[nc3 + a, nc3 + c] += Jq[a, c]
+    nw3 = 3 * nwc
+    wk3 = np.empty(nw3, np.int64)   # the neighbours' band rows, and their clamps
+    wcl = np.empty(nw3, np.int64)
+    lastw = np.empty(2 * nw3, np.int64)
+    if nw3:
+        _clamp_schur(band, bw, kind, Yt, 2 * nt3, rows, last, nt3, nc3, prow, wrow, wk3, wcl, lastw, clamps, cBw, cBm,
+                     z0, Sm, rhs)
     if not dense_solve(Sm, rhs):
         return False
     # du = U^-1 (z0 - sum_k (v_k - v_pk) mu_k)
@@ -374,6 +422,16 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                     mu = -rhs[k]
         for a in range(rows[c], last[c] + 1):
             du[a] -= v[a] * mu
+    for a in range(nw3):  # the neighbours' share of the bodies' turn: du -= J^-1 P_w^T Bw dphi
+        c = wcl[a]
+        b = int(clamps[c, C_BODY])
+        r = a % 3
+        coef = 0.0
+        for col in range(3):
+            coef += cBw[c, r, col] * rhs[nc3 + 6 * b + 3 + col]
+        v = Yt[2 * nt3 + a]
+        for k in range(wk3[a], lastw[a] + 1):
+            du[k] -= v[k] * coef
     band_backward(band, bw, du)
     for a in range(6 * nb):
         dq[a] = rhs[nc3 + a]
@@ -387,6 +445,85 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                 d[r] -= s * arm[r]
         _angle_increment(q[b], d, frame[b])
     return True
+
+
+@njit(cache=True)
+def _dot(x, y, lo, hi):
+    s = 0.0
+    for a in range(lo, hi + 1):
+        s += x[a] * y[a]
+    return s
+
+
+@njit(cache=True)
+def _clamp_schur(band, bw, kind, Yt, base, rows, last, nt3, nc3, prow, wrow, wk3, wcl, lastw, clamps, cBw, cBm, z0,
+                 Sm, rhs):
+    """The held line ends' neighbour nodes in the Schur complement of :func:`iterate` (:mod:`.clamps`).
+
+    With ``P_w`` the neighbours' rows, ``Bw`` their residuals' slope on their bodies' rotation and ``Bm`` the bodies'
+    moment residual's slope on them, the bordered system gains ``J du + C^T mu + P_w^T Bw dq = -R_u`` and ``Bm P_w du
+    - T^T mu + J_q dq = -R_q``; with ``G = P J^-1 P^T`` over the touched rows (``w_i . v_k``, as the tied rows'),
+    the constraint rows gain ``+ G_cw Bw`` on the rotations, and the bodies' rows ``- Bm G_wc`` on ``mu``, ``- Bm
+    G_ww Bw`` on the rotations and ``- Bm P_w J^-1 (-R_u)`` on the right. ``wk3``, ``wcl``, ``lastw`` receive the
+    rows, their clamps and the columns' last rows; ``Yt[base:]`` their columns ``v`` then ``w``."""
+    nw3 = wk3.size
+    a = 0
+    for c in range(clamps.shape[0]):
+        if wrow[c] < 0:
+            continue
+        for r in range(3):
+            wk3[a] = wrow[c] + r
+            wcl[a] = c
+            a += 1
+    for a in range(nw3):
+        lastw[a] = unit_column(band, bw, Yt[base + a], wk3[a], np.bool_(False))
+        if kind == 1:
+            lastw[nw3 + a] = unit_column(band, bw, Yt[base + nw3 + a], wk3[a], np.bool_(True))
+        else:
+            for k in range(wk3[a], lastw[a] + 1):
+                Yt[base + nw3 + a, k] = Yt[base + a, k] / band[k, bw]
+            lastw[nw3 + a] = lastw[a]
+    # the constraint rows (the tied rows and their free nodes', as iterate maps them) on the rotations
+    for i in range(nt3):
+        w = Yt[nt3 + i]
+        ri = i
+        if i >= nc3:
+            for k in range(nc3):
+                if prow[k] == i:
+                    ri = k
+        sgn_i = 1.0 if i < nc3 else -1.0
+        for a in range(nw3):
+            G = _dot(w, Yt[base + a], max(rows[i], wk3[a]), min(last[nt3 + i], lastw[a]))
+            c = wcl[a]
+            b = int(clamps[c, 1])
+            for cc in range(3):
+                Sm[ri, nc3 + 6 * b + 3 + cc] += sgn_i * G * cBw[c, a % 3, cc]
+    # the bodies' moment rows
+    for a in range(nw3):
+        w = Yt[base + nw3 + a]
+        c = wcl[a]
+        b = int(clamps[c, 1])
+        r = a % 3
+        s = _dot(w, z0, wk3[a], lastw[nw3 + a])
+        for p in range(3):
+            rhs[nc3 + 6 * b + 3 + p] -= cBm[c, p, r] * s
+        for k in range(nt3):
+            G = _dot(w, Yt[k], max(wk3[a], rows[k]), min(lastw[nw3 + a], last[k]))
+            rk = k
+            if k >= nc3:
+                for kk in range(nc3):
+                    if prow[kk] == k:
+                        rk = kk
+            sgn = 1.0 if k < nc3 else -1.0
+            for p in range(3):
+                Sm[nc3 + 6 * b + 3 + p, rk] -= cBm[c, p, r] * sgn * G
+        for a2 in range(nw3):
+            G = _dot(w, Yt[base + a2], max(wk3[a], wk3[a2]), min(lastw[nw3 + a], lastw[a2]))
+            c2 = wcl[a2]
+            b2 = int(clamps[c2, 1])
+            for p in range(3):
+                for cc in range(3):
+                    Sm[nc3 + 6 * b + 3 + p, nc3 + 6 * b2 + 3 + cc] -= cBm[c, p, r] * G * cBw[c2, a2 % 3, cc]
 
 
 @njit(cache=True)
@@ -440,7 +577,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
     Du = np.zeros(nd)
     Dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((12 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size + 6 * args[24].shape[0], nd))
     tied = np.zeros(n, np.bool_)
     Xn, Vn, An = np.empty_like(X), np.empty_like(V), np.empty_like(A)
     qn, qdn, qddn = np.empty_like(q), np.empty_like(qd), np.empty_like(qdd)
@@ -477,6 +614,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                     for c in range(6):
                         bk0[b, r, c] = 0.5 * hk * rker[b, 0, r, c]
         predict_nodes(X, V, A, Xn, Vn, An, px, pv, pa, step, channel, fidx, dt)
+        turn_held_ends(args[22], px, step)  # the held ends on prescribed bodies turn with their motion
         for j in range(con_node.size):
             if con_chan[j] >= 0:
                 for r in range(3):
@@ -540,7 +678,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
             copy_2d(qd, qdn)
             copy_2d(qdd, qddn)
             return step
-        commit_viscoelastic(args[-1])
+        commit_viscoelastic(args[23])
         # this step's velocities into the memory (before a re-chart changes the angles' map), at multiples of hk
         if nk > 1 and (dt == hk or abs(t / hk - round(t / hk)) < 1e-6):
             for b in range(nb):
@@ -587,7 +725,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     du = np.zeros(nd)
     dq = np.zeros(6 * nb)
     out = np.zeros(2)
-    Yt = np.zeros((12 * con_node.size, nd))
+    Yt = np.zeros((12 * con_node.size + 6 * args[24].shape[0], nd))
     tied = np.zeros(X.shape[0], np.bool_)
     water = np.zeros((n_water(X, env, cur_depth, np.bool_(False), np.zeros(GRID_HEADER)), 7))
     gq = np.empty(3)

@@ -21,6 +21,7 @@ from ...mooring.solver import advance_interval
 from ...mooring.solver import simulate as simulate_lines
 from ..case import SystemDynamicAnalysis
 from . import body as DB
+from . import clamps as DC
 from . import frames as DF
 from . import kernel as DK
 from .fe import SystemFE, _rot
@@ -84,10 +85,15 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
     body_mass = float(np.max(fe.bpar[:, DB.B_MASS], initial=0.0)) + float(np.max(fe.badd[:, 0, 0], initial=0.0))
     body_scale = min(1.0, node_mass / body_mass) if body_mass > 0 and node_mass > 0 else 1.0
     bargs = fe.body_args() if not held else tuple(np.zeros((0,) + a.shape[1:], a.dtype) for a in fe.body_args())
+    args = fe.kernel_args()
+    if held and fe.clamps.shape[0]:
+        # the held line ends on the held bodies: turned to the bodies' poses, and held there
+        DC.turn_clamps(q, np.zeros((len(q), DF.F_SIZE)), fe.clamps, m.hinge_ei)
+        args = (*args[:-1], np.zeros((0, 5)))
     qs = np.array(qs, float)
     frame = np.zeros((len(qs), DF.F_SIZE))
     spin = (fe.spin if fe.spin is not None else np.zeros((len(qs), 3))) if len(qs) else np.zeros((0, 3))
-    ok = DK.coupled_static(X, qs, fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
+    ok = DK.coupled_static(X, qs, args, m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
                            fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
                            step, body_scale, F, M, tension, stats, frame, spin)
     qs = _global_pose(qs, frame)
@@ -104,6 +110,7 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
 def body_line_force(fe: SystemFE, X, q, V=None, A=None, t=0.0) -> np.ndarray:
     """Force and moment of the lines on each free body (nb, 6) at a state (statics when V, A are None). [N, N m]"""
     m = fe.model
+    clamp = DC.clamp_moments(fe, X, q)  # the held line ends' moments, their directions turned to ``q`` first
     V = np.zeros_like(X) if V is None else V
     A = np.zeros_like(X) if A is None else A
     F, M, _, _ = m.evaluate(X, V, A, t, waves=V is not None)
@@ -118,6 +125,7 @@ def body_line_force(fe: SystemFE, X, q, V=None, A=None, t=0.0) -> np.ndarray:
         arm = _rot(q[b]) @ fe.con_arm[j]
         out[b, :3] += mu
         out[b, 3:] += np.cross(arm, mu)
+    out[:, 3:] += clamp
     return out
 
 
@@ -147,6 +155,9 @@ def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration:
     """Positions, velocities and accelerations (len(times), n_channels, 3) of the prescribed nodes."""
     net = fe.model.network
     base = net.channel_positions()
+    for k, src in enumerate(fe.channel_source):
+        if len(src) > 3:  # a held end's direction point (no node): its rest position
+            base[k] = src[3]
     nch = max(net.n_channels, 1)
     groups = {}
     for k, src in enumerate(fe.channel_source):
@@ -240,6 +251,7 @@ def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> N
     line in waves that the mooring model, which starts here, does not have.
     """
     m = fe.model
+    clamp = DC.clamp_moments(fe, X, q, frame)  # the held line ends' moments on the bodies, turned with them first
     F, M, _, _ = m.evaluate(X, V, A, 0.0, settled=True)
     F = F + fe.node_fext
     free = m.fidx >= 0
@@ -287,6 +299,7 @@ def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> N
             T = np.hstack((np.eye(3), -_cross_matrix(r)))
             M6 += T.T @ M[i] @ T
             f6 += T.T @ (F[i] - M[i] @ np.cross(w, np.cross(w, r)))
+        f6[3:] += clamp[b]
         acc = np.linalg.solve(M6, f6)
         qdd[b] = np.r_[acc[:3], np.linalg.solve(E, acc[3:] - ed)]
         for j, r in arms.items():

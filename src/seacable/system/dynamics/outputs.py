@@ -69,6 +69,28 @@ def _anchor_vertical_force(fe: SystemFE, run: SystemRun) -> np.ndarray:
     return out
 
 
+def _bending_outputs(fe: SystemFE, run: SystemRun, bodies: list, bp: np.ndarray) -> dict:
+    """Curvature, bend moment, declination (time, line, node) and shear (time, line, element) of lines with bending
+    stiffness (:func:`seacable.system.bending.line_bending`), each held end on a body turned with the body's pose at
+    each output time (a prescribed body's motion turns it by ``R(d)`` from its given pose); {} when no line bends."""
+    from ...mooring.motion import rotation_matrix
+    from ..bending import BENDING, held_directions, line_bending, pose_rotations
+
+    if not fe.model.hinges.shape[0]:
+        return {}
+    rotations = {}
+    for k, name in enumerate(bodies):
+        body = fe.system.bodies[name]
+        if name in fe.free_bodies:
+            rotations[name] = pose_rotations(bp[:, k])
+        elif body.kind == "prescribed" and fe.body_motions.get(name) is not None:
+            d = bp[:, k, 3:] - np.asarray(body.position[3:])
+            rotations[name] = pose_rotations(np.pad(d, ((0, 0), (3, 0)))) @ rotation_matrix(*body.position[3:])
+    got = line_bending(fe, run.position, held_directions(fe, rotations))
+    return {name: var(("time", "line", BENDING[name][0]), values, BENDING[name][1], BENDING[name][2])
+            for name, values in got.items()}
+
+
 def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     """The Dataset of a coupled run."""
     sysm = fe.system
@@ -122,6 +144,7 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 bv[:, k] = dd
                 for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
                     bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
+    data.update(_bending_outputs(fe, run, bodies, bp))
     coords = {"time": var("time", run.time, "s", "time"),
               "line": var("line", list(fe.line_names), "1", "line"),
               "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),

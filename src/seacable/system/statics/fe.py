@@ -113,11 +113,14 @@ def _end_force(model, X, e: int, node: int) -> np.ndarray:
     visco = model.visco[sl] if model.visco.shape[0] else model.visco
     F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
     tension = np.zeros(1)
+    # the bending hinges at the element's two nodes (a held end's, and the inner one next to it): their forces on the
+    # end node are the line's too (none for a line without bending stiffness)
+    rows = np.flatnonzero(np.any(model.hinges == a, axis=1) & np.any(model.hinges == b, axis=1))
     MK.loads(X, np.zeros_like(X), 0.0, net.elements[sl], net.length[sl], net.axial_stiffness[sl],
              net.axial_damping[sl], net.mass_per_length[sl], net.diameter[sl], net.cdn[sl], net.cdt[sl], net.can[sl],
              net.cat[sl], weight, zeros, zeros, zeros, np.zeros((n, 3)), bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl],
              tx, ty,
-             np.zeros((0, 3), np.int64), np.zeros((0, MK.H_SIZE)), visco, model.fidx, model.env, model.cur_depth,
+             model.hinges[rows], model.hinge_ei[rows], visco, model.fidx, model.env, model.cur_depth,
              model.cur_speed, False, model.sea, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
     f = F[node]
     bed = _on_seabed(model, X[[a, b]])

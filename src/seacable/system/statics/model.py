@@ -182,6 +182,13 @@ def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = 
     sub-line (its middle in one) weighs its dry weight ``m g``.
     """
     check_environment(env)
+    from ..statics_mode import line_reasons
+
+    lines = line_reasons(system.lines)
+    if lines:
+        raise InputError(f"the catenary system statics cannot carry a {lines}: each line is an elastic catenary "
+                         "without bending or sections. Suggested fix: leave analysis.statics at 'auto' (the system "
+                         "analyses then use the finite-element statics: seacable.system.statics.fe.fe_equilibrium).")
     rho, g = env.water_density, env.gravity
     depth = env.depth
     body_names = list(system.bodies)
