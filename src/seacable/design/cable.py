@@ -121,6 +121,21 @@ def _states(da: xr.DataArray, state: str | None, last: str) -> np.ndarray:
     return np.asarray(da.transpose(last).values, float)[None, :]
 
 
+def node_tension(segment_tension: xr.DataArray) -> xr.DataArray:
+    """The effective tension at the nodes from the elements' (the mean of a node's two elements, an end node its one
+    element's, as the mooring analyses' ``tension``), on ``node`` in place of ``element``. [N]"""
+    t = np.asarray(segment_tension.values, float)
+    pad = np.full(t.shape[:-1] + (1,), np.nan)
+    before, after = np.concatenate([pad, t], axis=-1), np.concatenate([t, pad], axis=-1)
+    with warnings.catch_warnings():  # a padded node's two NaN: NaN, as it should be
+        warnings.simplefilter("ignore", RuntimeWarning)
+        nodes = np.nanmean(np.stack([before, after]), axis=0)
+    dims = tuple("node" if d == "element" else d for d in segment_tension.dims)
+    coords = {k: c for k, c in segment_tension.coords.items() if "element" not in c.dims}
+    return xr.DataArray(nodes, dims=dims, coords=coords,
+                        attrs={"units": "N", "long_name": "effective tension (node average)"})
+
+
 def _environment(ds: xr.Dataset) -> dict:
     return ((case_data(ds) or {}).get("environment") or {})
 
@@ -201,6 +216,8 @@ def range_graphs(ds: xr.Dataset, line: str | None = None) -> xr.Dataset:
     InputError
         A result without the positions and tension of a line.
     """
+    if "tension" not in ds.variables and "segment_tension" in ds.variables:
+        ds = ds.assign(tension=node_tension(ds["segment_tension"]))  # a system_dynamic result keeps the elements'
     missing = [k for k in ("x", "z", "tension", "s") if k not in ds.variables]
     if missing:
         raise InputError(f"the result ('{ds.attrs.get('analysis', '?')}') has no {', '.join(missing)}: range graphs "
@@ -287,7 +304,7 @@ def plot_range_graphs(rg: xr.Dataset, limits: CableLimits | None = None, *, colo
     axes[0, 0].legend(shown.values(), shown.keys(), loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8,
                       frameon=False, ncol=len(shown))
     axes[-1, 0].set_xlabel("arc length s from end A [m]")
-    axes[-1, 0].set_xlim(s[0], s[-1])
+    axes[-1, 0].set_xlim(np.nanmin(s), np.nanmax(s))  # a line padded to a longer one's nodes: its s ends in NaN
     fig.align_ylabels(axes[:, 0])
     return fig
 

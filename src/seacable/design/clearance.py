@@ -90,7 +90,8 @@ class LineDistance:
     s, s_other
         Where: the unstretched arc length from end A of the closest point on each. [m]
     time
-        When: the state's time (NaN for a result of one state). [s]
+        When: the state's time [s] (a system_static's: its condition's value, else its index; NaN for a result of one
+        state).
     position, position_other
         The closest points, (x, y, z). [m]
     history
@@ -116,24 +117,28 @@ def _lines(ds: xr.Dataset) -> list[str]:
     return [str(v) for v in ds["line"].values]
 
 
-def _positions(ds: xr.Dataset, line: str) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """A line's node positions (states, node, 3) [m], their arc lengths (node,) [m] (NaN padding dropped) and the
-    states' times (None for one state)."""
-    extra = [d for d in ds["x"].dims if d not in ("line", "node", "time")]
-    if extra:
+def _positions(ds: xr.Dataset, line: str) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, str | None]:
+    """A line's node positions (states, node, 3) [m], their arc lengths (node,) [m] (NaN padding dropped), the
+    states' values (times [s], or a statics' conditions: their coordinate, else their index; None for one state) and
+    the states' dimension (``time``, ``condition``; None for one state)."""
+    extra = [d for d in ds["x"].dims if d not in ("line", "node")]
+    if len(extra) > 1:
         raise InputError(f"the result's positions have the dimensions {list(ds['x'].dims)}; the distance between lines "
-                         f"takes one state or a time series. Suggested fix: select one value of {', '.join(extra)}, "
-                         f"e.g. ds.isel({extra[0]}=0).")
+                         f"takes one state or a series of states (times, or a statics' conditions). Suggested fix: "
+                         f"select one value of {', '.join(extra[1:])}, e.g. ds.isel({extra[1]}=0).")
     one = ds.sel(line=line)
-    timed = "time" in one["x"].dims
-    xyz = np.stack([np.asarray(one[c].transpose(*(("time",) if timed else ()), "node").values, float)
+    states = extra[0] if extra else None  # time, or a system_static's condition
+    xyz = np.stack([np.asarray(one[c].transpose(*((states,) if states else ()), "node").values, float)
                     for c in "xyz"], axis=-1)
-    if not timed:
+    if states is None:
         xyz = xyz[None]
     keep = np.all(np.isfinite(xyz[0]), axis=-1)
     s = np.asarray(one["s"].values, float) if "s" in one.variables else np.arange(xyz.shape[1], dtype=float)
-    times = np.asarray(ds["time"].values, float) if timed else None
-    return xyz[:, keep], s[keep], times
+    times = None
+    if states is not None:
+        times = (np.asarray(ds[states].values, float) if states in ds.coords and ds[states].dtype.kind in "fiu"
+                 else np.arange(ds.sizes[states], dtype=float))
+    return xyz[:, keep], s[keep], times, states
 
 
 def line_distance(ds: xr.Dataset, line: str, others=None, *, block: int = 2_000_000) -> list[LineDistance]:
@@ -166,10 +171,10 @@ def line_distance(ds: xr.Dataset, line: str, others=None, *, block: int = 2_000_
             raise InputError(f"line '{name}' is not in the result (its lines: {', '.join(names)}). Suggested fix: "
                              "give one of them.")
     others = [n for n in names if n != line] if others is None else [n for n in others if n != line]
-    P, sp, times = _positions(ds, line)
+    P, sp, times, states = _positions(ds, line)
     out = []
     for other in others:
-        Q, sq, _ = _positions(ds, other)
+        Q, sq, _, _ = _positions(ds, other)
         n_states, m, n = P.shape[0], P.shape[1] - 1, Q.shape[1] - 1
         if m < 1 or n < 1:
             raise InputError(f"line '{line if m < 1 else other}' has fewer than two nodes in the result. Suggested fix: "
@@ -192,8 +197,8 @@ def line_distance(ds: xr.Dataset, line: str, others=None, *, block: int = 2_000_
         i, j, a, b = int(where[kt, 0]), int(where[kt, 1]), where[kt, 2], where[kt, 3]
         pos = P[kt, i] + a * (P[kt, i + 1] - P[kt, i])
         pos_o = Q[kt, j] + b * (Q[kt, j + 1] - Q[kt, j])
-        history = xr.DataArray(best if times is not None else best[0], dims=("time",) if times is not None else (),
-                               coords={"time": times} if times is not None else None, name="line_distance",
+        history = xr.DataArray(best if times is not None else best[0], dims=(states,) if times is not None else (),
+                               coords={states: times} if times is not None else None, name="line_distance",
                                attrs={"units": "m", "long_name": f"smallest distance from {line} to {other}"})
         out.append(LineDistance(line, other, float(best[kt]), float(sp[i] + a * (sp[i + 1] - sp[i])),
                                 float(sq[j] + b * (sq[j + 1] - sq[j])),

@@ -141,3 +141,63 @@ def test_a_system_cable_s_report_rows_add_its_line_clearance():
     row = rows.iloc[0]
     # the chain comes within 3 m of the cable at t = 5 s: under the 4 m asked
     assert row["status"] == "FAIL" and row["value"] == pytest.approx(3.0) and row["time"] == 5.0
+
+
+def test_the_66kv_cable_in_its_mooring_system_keeps_clear_of_the_chains():
+    """examples/cable_66kv_system.yaml: the cable clamped on the VolturnUS-S, with its three chains, in the storm's
+    mean wind and current (a system_static result, on the dimension ``condition``). The configuration is symmetric
+    about y = 0 (chains 2 and 3 at +-60 deg, the cable along +x, the loads along +x), so the cable is as far from
+    chain 2 as from chain 3; nearest at the hull, between the hang-off and the chains' fairleads."""
+    from pathlib import Path
+
+    import seacable as sc
+
+    ds = sc.run(sc.load_case(Path(__file__).parents[3] / "examples" / "cable_66kv_system.yaml"))
+    assert "'cable' with sections" in ds.attrs["statics_reason"]  # the finite-element statics, saying why
+    assert float(ds.body_x.squeeze()) > 10.0  # the hull drifts along +x, towards the cable's seabed end
+    near = {d.other: d for d in line_distance(ds, "cable")}
+    # mirror images: the same to the solver's tolerance (1e-8 of the forces; measured 1e-9 m)
+    assert near["chain2"].distance == pytest.approx(near["chain3"].distance, abs=1e-6)
+    assert near["chain2"].position_other[1] == pytest.approx(-near["chain3"].position_other[1], abs=1e-6)
+    # nearest at chain 2's fairlead (its end B, s = 850 m): then the distance is that point's to the cable's polyline,
+    # no nearer than to its hang-off's segment (a closed form of the two points' places in the result)
+    assert near["chain2"].s_other == pytest.approx(850.0)
+    fairlead = ds.sel(point="fairlead2")
+    hang_off = ds.sel(point="hang_off")
+    to_hang_off = math.dist(*[[float(p[f"point_{c}"].squeeze()) for c in "xyz"] for p in (fairlead, hang_off)])
+    assert near["chain2"].distance <= to_hang_off + 1e-9
+    assert near["chain2"].distance == pytest.approx(to_hang_off, rel=0.05)  # the cable leaves it 10 deg off vertical
+    check = line_clearance_check(ds, "cable")
+    assert check.passed and check.limit == 20.0 and check.value == pytest.approx(near["chain2"].distance)
+
+
+def test_the_66kv_cable_system_runs_in_time_and_its_range_graphs_read_the_element_tensions(tmp_path):
+    """The same system in time (system_dynamic, 1 s): the floating hull's start is checked without the cable (the
+    catenary check takes no sections or clamps), the range graphs take the node tension from the elements'
+    (system_dynamic results keep ``segment_tension`` only) and a chain's, padded to the cable's nodes, plots."""
+    from pathlib import Path
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import seacable as sc
+    from seacable.design.cable import node_tension, plot_range_graphs, range_graphs
+
+    examples = Path(__file__).parents[3] / "examples"
+    data = yaml.safe_load((examples / "cable_66kv_system.yaml").read_text())
+    data["analysis"] = {"type": "system_dynamic", "duration": 1.0, "time_step": 0.1, "output_interval": 0.5,
+                        "design": {"line_clearance": 20.0}}
+    hydro = data["bodies"]["hull"]["hydrodynamics"]
+    hydro["file"] = str(examples / hydro["file"])
+    (tmp_path / "case.yaml").write_text(yaml.safe_dump(data, sort_keys=False))
+    ds = sc.run(sc.load_case(tmp_path / "case.yaml"))
+    element = ds.segment_tension.sel(line="cable").isel(time=-1).values
+    node = node_tension(ds.segment_tension).sel(line="cable").isel(time=-1).values
+    # a node's tension is its two elements' mean, an end node's its element's (the mooring analyses' 'tension')
+    assert node[1:-1][:279] == pytest.approx(0.5 * (element[:-1] + element[1:]), rel=1e-12)
+    assert (node[0], node[280]) == (element[0], element[279])
+    rg = range_graphs(ds, "cable")
+    assert float(rg.tension_max.max()) == pytest.approx(float(np.nanmax(node_tension(ds.segment_tension)
+                                                                         .sel(line="cable"))), rel=1e-12)
+    plot_range_graphs(range_graphs(ds, "chain1"))  # its s padded with NaN past its 41 nodes
+    assert line_clearance_check(ds, "cable").passed

@@ -156,11 +156,18 @@ def prepare_system_dynamic(case) -> SystemDynamicSetup:
     if any(b.kind == "free" and b.hydrodynamics is not None for b in system.bodies.values()):
         # a floating body from a database: its hydrostatics with the lines must restore it (the catenary statics'
         # checks, at the equilibrium they find), or it would capsize in the first disturbance of the run
+        from ..model import bodies_without_lines
         from ..statics import check_statics
+        from ..statics_mode import line_reasons
 
-        # (its hydrostatics and lines alone: the catenary statics take no current or wind)
+        # (its hydrostatics and lines alone: the catenary statics take no current or wind, nor a line with sections or
+        # a held end, a cable: it is left out of this check, its weight a small part of a hull's restoring)
         env = case.environment
-        check_statics(system, env.model_copy(update={"current": type(env.current)(), "wind": None}))
+        cables = tuple(name for name, line in case.lines.items() if line_reasons({name: line}))
+        checked = case.damaged_system(cables) if cables else system
+        if not any(checked.bodies[b].kind == "free" and checked.bodies[b].hydrodynamics is not None
+                   for b in bodies_without_lines(checked)):
+            check_statics(checked, env.model_copy(update={"current": type(env.current)(), "wind": None}))
     a = _mean_offsets(case, system, a)
     fe = build_system_fe(system, case.environment, a)
     net = fe.model.network
