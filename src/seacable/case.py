@@ -43,6 +43,7 @@ from .line import Lifting, Line, LineType, resolve_sections
 from .mooring.ends import EndCondition
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
+from .ties import tie_points
 from .towed.vessel import VesselPath
 from .towline.barge_model import Barge
 
@@ -868,6 +869,7 @@ class Case(Model):
                                  "segments and attachments.")
             # a line the modules would float is refused here, before anything runs (the same check the model makes)
             resolve_sections(self.line, self.environment.water_density, self.environment.gravity)
+            tie_points(self.line, self.environment)  # a tie's point below the seabed, or on a seabed not given
         if isinstance(a, TowlineDynamicAnalysis):
             if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
                 raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "

@@ -35,6 +35,7 @@ from pydantic import Field, model_validator
 
 from ._model import Model, quantity
 from .errors import InputError
+from .ties import Clamp, Tether
 
 __all__ = ["BendStiffener", "BuoyancyModule", "BuoyancySection", "Cone", "Section", "element_bending_stiffness",
            "smeared_line_type"]
@@ -259,7 +260,8 @@ class BendStiffener(Model):
                              f"shorten the stiffener, or make that segment at least {self.length:g} m long.")
 
 
-Section = Annotated[BuoyancySection | BendStiffener, Field(discriminator="type")]
+# clamps and tethers to the seabed (:mod:`seacable.ties`) are sections too: the finite-element line takes them
+Section = Annotated[BuoyancySection | BendStiffener | Clamp | Tether, Field(discriminator="type")]
 
 
 def smeared_line_type(line_type, section: BuoyancySection, water_density: float, gravity: float):

@@ -18,8 +18,9 @@ from ._band import _add_block, _add_pair
 from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_loads
 from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DEPTH, E_DRAGTURN, E_FRAMEX,
                        E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
-                       E_WH, P_CDA, P_CDA_AXIAL, P_CLA, V_EAD, V_WC)
+                       E_WH, P_CDA, P_CDA_AXIAL, P_CLA, P_TX, V_EAD, V_WC)
 from ._seabed import seabed_at
+from ._ties import tie_loads
 from ._water import (_drag_tangent, _drag_turn, _dry_fraction, _fluid, _point_drag_split, _surface, _water_local,
                      point_lift)
 
@@ -280,6 +281,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                      bw, cc, env[E_G])
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
+    if pcda.shape[1] > P_TX:  # a node tied to the seabed: tethers and spring clamps
+        tie_loads(X, pcda, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
     sl = env[E_SLOPE]
     nrm[0], nrm[1], nrm[2] = -math.sin(sl), 0.0, math.cos(sl)

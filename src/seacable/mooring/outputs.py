@@ -12,10 +12,11 @@ import math
 import numpy as np
 
 from ..environment import IrregularWaves
+from .network import FIXED, Network
 from .solver import MooringModel, Water, wave_number_or_zero
 
-__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "wave_elevation",
-           "water_of_environment"]
+__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "tie_variables",
+           "wave_elevation", "water_of_environment"]
 
 
 def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0) -> Water:
@@ -107,3 +108,64 @@ def at_motion_start(model: MooringModel, motion) -> MooringModel:
     X = net.position.copy()
     X[pres] = motion(np.zeros(1))[0][0, net.channel[pres]]
     return MooringModel(net.replace(position=X), model.water)
+
+
+def tether_tension(net: Network, X) -> np.ndarray:
+    """Tension of each tether of ``net`` (its nodes with ``point_tether``) at the states ``X`` (..., n, 3), (...,
+    tethers): ``EA psi(l / L0 - 1)``, the tension-only law of the kernel (:func:`seacable.mooring._ties.tie_loads`)
+    with its rounding. [N]"""
+    table = net.point_tether
+    nodes = np.flatnonzero(table[:, 4] > 0) if table is not None else np.zeros(0, np.int64)
+    X = np.asarray(X, float)
+    if not nodes.size:
+        return np.zeros(X.shape[:-2] + (0,))
+    row = table[nodes]
+    eps = np.linalg.norm(X[..., nodes, :] - row[:, :3], axis=-1) / row[:, 4] - 1.0
+    b = row[:, 5]
+    rounded = np.where(b > 0, (eps + b) ** 2 / (4.0 * np.where(b > 0, b, 1.0)), 0.0)
+    psi = np.where(eps >= b, eps, np.where(eps > -b, rounded, 0.0))
+    return row[:, 3] * psi
+
+
+def clamp_nodes(net: Network) -> np.ndarray:
+    """The clamped nodes of a single line: its inner FIXED nodes (rigid clamps) and those with a spring clamp,
+    in the order of the line."""
+    inner = np.asarray(net.line_nodes[0])[1:-1]
+    rigid = inner[net.kind[inner] == FIXED]
+    spring = np.flatnonzero(net.point_clamp[:, 3] > 0) if net.point_clamp is not None else np.zeros(0, np.int64)
+    return np.sort(np.concatenate((rigid, spring)).astype(np.int64))
+
+
+def tie_variables(net: Network, X, support, dims=("node",)) -> dict:
+    """The tethers' tension and the clamps' reactions of a single line at its states (nothing without ties).
+
+    ``tether_tension`` (dims ``tether``; its node's arc length ``tether_s``) from the tether's stretch;
+    ``clamp_force`` and ``clamp_force_x``, ``_y``, ``_z`` (dims ``clamp``, at ``clamp_s``): the force of the line
+    on the clamp, for a rigid clamp the support force of its fixed node (``support`` (..., n, 3): every load on the
+    node, the line's two elements, its bending, its half elements' weight, water and seabed loads, and a tether
+    there), for a spring clamp the spring's ``k (x - p)``. [N]
+    """
+    from ..results import var
+
+    lead = tuple(dims[:-1])
+    X = np.asarray(X, float)
+    data = {}
+    table = net.point_tether
+    tethered = np.flatnonzero(table[:, 4] > 0) if table is not None else np.zeros(0, np.int64)
+    if tethered.size:
+        data["tether_s"] = var("tether", net.arc_length[tethered], "m", "arc length of the tethered node")
+        data["tether_tension"] = var(lead + ("tether",), tether_tension(net, X), "N", "tension of the tether")
+    clamped = clamp_nodes(net)
+    if clamped.size:
+        force = np.array(np.asarray(support, float)[..., clamped, :])
+        if net.point_clamp is not None:
+            row = net.point_clamp[clamped]
+            spring = row[:, 3] > 0
+            force[..., spring, :] = row[spring, 3, None] * (X[..., clamped[spring], :] - row[spring, :3])
+        data["clamp_s"] = var("clamp", net.arc_length[clamped], "m", "arc length of the clamped node")
+        data["clamp_force"] = var(lead + ("clamp",), np.linalg.norm(force, axis=-1), "N",
+                                  "force of the line on the clamp")
+        for k, name in enumerate("xyz"):
+            data[f"clamp_force_{name}"] = var(lead + ("clamp",), force[..., k], "N",
+                                              f"{name} force of the line on the clamp")
+    return data

@@ -12,6 +12,7 @@ from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..errors import InputError
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
+from ..ties import tie_points, ties_of
 from .bending import bending_variables
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
@@ -25,6 +26,7 @@ from .outputs import (
     elevation_variables,
     grounded_end_force,
     height_above_seabed,
+    tie_variables,
     water_of_environment,
     wave_elevation,
 )
@@ -83,9 +85,11 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     anchor, fair = (ax, 0.0, az), (fx, 0.0, fz)
     env = case.environment
     ratio, beta = (a.damping_ratio, a.rayleigh[1]) if isinstance(a, MooringDynamicAnalysis) else (0.0, 0.0)
+    points = tie_points(case.line, env)
+    ties = tuple((tie, points[i]) for i, tie in ties_of(case.line))
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
-                            stiffness_proportional=beta, end_b=end_b)
+                            stiffness_proportional=beta, end_b=end_b, ties=ties)
     conditions = (("anchor_end_condition", a.anchor_end_condition), ("fairlead_end_condition", a.fairlead_end_condition))
     held = tuple(cond.hinge(0, end) for end, (_, cond) in enumerate(conditions) if cond.holds)
     if held:
@@ -100,9 +104,28 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
                     "out (pinned).")
         net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
-    start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
-                               depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
+    held = [(0.0, anchor)] + sorted((tie.s, p) for tie, p in ties if tie.type == "clamp" and tie.stiffness is None)
+    start = _start_positions(held + [(float(np.sum(lengths)), fair)], net.arc_length, lengths, weights, ea, loads,
+                             depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
     return MooringModel(net.replace(position=start), water_of(case))
+
+
+def _start_positions(held, s, lengths, weights, ea, loads, **kwargs):
+    """The start shape of a line held at the points ``held`` (``(arc length, (x, y, z))`` from end A to end B: its
+    ends and its rigid clamps): the catenary start (:func:`seacable.mooring.network.catenary_positions`) of each
+    piece between two held points, the piece's segments and point loads cut from the line's. [m]"""
+    if len(held) == 2:  # ends only: the line's own start, as before clamps
+        return catenary_positions(held[0][1], held[1][1], s, lengths, weights, ea, point_loads=loads, **kwargs)
+    ends = np.concatenate(([0.0], np.cumsum(lengths)))
+    X = np.zeros((len(s), 3))
+    for (s0, p0), (s1, p1) in zip(held[:-1], held[1:]):
+        cut = np.clip(ends, s0, s1)
+        keep = np.diff(cut) > 0.0
+        inside = (s >= s0 - 1e-9) & (s <= s1 + 1e-9)
+        piece = tuple((q - s0, w) for q, w in loads if s0 < q < s1)
+        X[inside] = catenary_positions(p0, p1, s[inside] - s0, np.diff(cut)[keep], np.asarray(weights)[keep],
+                                       np.asarray(ea)[keep], point_loads=piece, **kwargs)
+    return X
 
 
 def _node_tension(net: Network, tension):
@@ -442,6 +465,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
                                              f"{name} force of the line on its fairlead end")
     data.update(bending_variables(net, X, dims, end_directions))
+    data.update(tie_variables(net, X, support, dims))
     return data
 
 
