@@ -619,7 +619,7 @@ class MooringStaticAnalysis(_Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
 
 
 class MooringPushoverAnalysis(_Offsets, _Mooring):
@@ -628,7 +628,7 @@ class MooringPushoverAnalysis(_Offsets, _Mooring):
     negative ones the near; pi/2: across the line's plane, the cross position)."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
     heading: quantity("rad") = Field(0.0, description="Direction of the offsets from +x towards +y. [rad]")
 
     @model_validator(mode="after")
@@ -649,7 +649,7 @@ class MooringDynamicAnalysis(_Mooring):
     """
 
     type: Literal["mooring_dynamic"] = "mooring_dynamic"
-    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves"}
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves", "seabed.profile"}
     motion: Motion | None = Field(None, description="Fairlead motion: harmonic, time_series or platform.")
     end_b: Literal["fairlead", "free"] = Field("fairlead", description="End B moved by 'motion', or free.")
     release_from: _XZ | None = Field(None, description="Where a free end B is held before release (x, z). [m]")
@@ -834,7 +834,8 @@ class Case(Model):
         self._unused_inputs()
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or (
-                    a.anchor is None and not getattr(a, "free_end", False))):
+                    a.anchor is None and not getattr(a, "free_end", False)
+                    and not (isinstance(a, _Mooring) and self.environment.seabed.profile is not None))):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
         if isinstance(a, (LayingTheoryAnalysis, VerticalModesAnalysis)):
@@ -894,6 +895,9 @@ class Case(Model):
         a = self.analysis
         if getattr(a, "anchor", None) is not None:
             return a.anchor
+        profile = self.environment.seabed.profile
+        if profile is not None:  # on the profile's seabed under the origin
+            return (0.0, -float(np.interp(0.0, profile.distance, profile.depth)))
         return (0.0, -float(self.environment.depth))
 
 

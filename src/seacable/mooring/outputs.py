@@ -15,7 +15,8 @@ from ..environment import IrregularWaves
 from .network import FIXED, Network
 from .solver import MooringModel, Water, wave_number_or_zero
 
-__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "tie_variables",
+__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "seabed_slope",
+           "tie_variables",
            "wave_elevation", "water_of_environment"]
 
 
@@ -31,7 +32,10 @@ def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0
     sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
     w_reg = None if sea is not None else w
     profile = env.seabed.profile
-    return Water(density=env.water_density, gravity=env.gravity, depth=env.depth, slope=env.seabed.slope,
+    depth = env.depth
+    if depth is None and profile is not None:  # the water depth at the origin, the profile's there
+        depth = float(np.interp(0.0, profile.distance, profile.depth))
+    return Water(density=env.water_density, gravity=env.gravity, depth=depth, slope=env.seabed.slope,
                  seabed_stiffness=seabed_contact.stiffness, seabed_damping=seabed_contact.damping,
                  friction=env.seabed.friction, friction_velocity=seabed_contact.friction_velocity,
                  current_depths=tuple(depths), current_speeds=tuple(speeds), current_heading=cur.heading,
@@ -41,8 +45,24 @@ def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0
                  profile=None if profile is None else (profile.distance, profile.depth))
 
 
+def seabed_slope(water: Water, x):
+    """Slope dz/dx [-] of the seabed under ``x`` [m]: the plane's ``tan(slope)``, or the profile's segment's (level
+    beyond its ends, the segment above a point at a breakpoint: :func:`seacable.mooring.kernel.seabed_at`)."""
+    x = np.asarray(x, float)
+    if water.profile is None:
+        return np.full_like(x, math.tan(water.slope))
+    dist, depth = (np.asarray(v, float) for v in water.profile)
+    k = np.clip(np.searchsorted(dist, x, side="right"), 1, dist.size - 1)
+    slope = -(depth[k] - depth[k - 1]) / (dist[k] - dist[k - 1])
+    return np.where((x <= dist[0]) | (x >= dist[-1]), 0.0, slope)
+
+
 def height_above_seabed(water: Water, X):
-    """Height of points above the seabed plane, normal to it (negative inside it), (..., n). [m]"""
+    """Height of points above the seabed, normal to it (negative inside it), (..., n): the plane's, or the profile's
+    segment under each point's (the kernel's contact, :func:`seacable.mooring.kernel.seabed_at`). [m]"""
+    if water.profile is not None:
+        slope = seabed_slope(water, X[..., 0])
+        return (X[..., 2] - water.seabed_z(X[..., 0])) / np.sqrt(1.0 + slope * slope)
     sl = water.slope
     return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
 

@@ -26,6 +26,7 @@ from .outputs import (
     elevation_variables,
     grounded_end_force,
     height_above_seabed,
+    seabed_slope,
     tie_variables,
     water_of_environment,
     wave_elevation,
@@ -170,12 +171,16 @@ def contact_length(model: MooringModel, X):
     dl = float(model.env[K_BEDRAMP])
     # the penetration -height_above_seabed(water, X) by the same operations, in two arrays instead of five (a
     # run's block of outputs: each temporary is as large as an output variable)
-    sl = water.slope
-    pen = np.multiply(X[..., 0], -math.sin(sl))
-    depth = np.add(X[..., 2], water.depth)
-    np.multiply(depth, math.cos(sl), out=depth)
-    np.add(pen, depth, out=pen)
-    np.negative(pen, out=pen)
+    if water.profile is not None:  # the profile's segment under each node
+        pen = -height_above_seabed(water, X)
+        depth = np.empty_like(pen)
+    else:
+        sl = water.slope
+        pen = np.multiply(X[..., 0], -math.sin(sl))
+        depth = np.add(X[..., 2], water.depth)
+        np.multiply(depth, math.cos(sl), out=depth)
+        np.add(pen, depth, out=pen)
+        np.negative(pen, out=pen)
     touching = pen >= -dl
     kb = water.seabed_stiffness
     if kb > 0:
@@ -375,8 +380,9 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
                 d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
                 norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
                 half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
-                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half,
-                                                      model.water.slope)
+                slope = model.water.slope if model.water.profile is None else \
+                    float(np.arctan(seabed_slope(model.water, Xs[grounded, ends[j], 0]).mean()))
+                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope)
     return out.reshape(lead + (2, 3))
 
 
@@ -524,7 +530,8 @@ def prepare_mooring_pushover(case: Case) -> tuple[MooringModel, np.ndarray]:
         X = net.position.copy()
         X[moved, 0] += off * math.cos(a.heading)
         X[moved, 1] += off * math.sin(a.heading)
-        check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope)
+        check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope,
+                      profile=model.water.profile)
     return model, offsets
 
 
@@ -587,7 +594,8 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
         turn_with_motion(m, motion, n_channels)
     times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
-        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
+        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope,
+                     profile=model.water.profile)
     # an irregular sea: the size of its kinematics grid over the nodes and the fairlead's range
     model.check_sea(a.duration, np.concatenate((net.position, motion(times)[0].reshape(-1, 3)))
                     if motion is not None else net.position)

@@ -186,7 +186,7 @@ class MooringModel:
     def __post_init__(self, checked):
         net = self.network
         if not checked:
-            check_network(net, depth=self.water.depth, slope=self.water.slope)
+            check_network(net, depth=self.water.depth, slope=self.water.slope, profile=self.water.profile)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
