@@ -101,8 +101,8 @@ class Tether(Model):
     s: quantity("m", ge=0, fix="give the tethered node's arc length from end A in metres.") = Field(
         description="Arc length of the tethered node from end A. [m]")
     anchor: SeabedPoint = Field(description="The tether's anchor point. [m]")
-    axial_stiffness: quantity("N", gt=0, fix="give the tether's axial stiffness EA in N, e.g. 5e7 for a 40 mm "
-                                             "steel wire rope.") = Field(description="Axial stiffness EA. [N]")
+    axial_stiffness: quantity("N", gt=0, fix="give the tether's axial stiffness EA in N, e.g. 5e7.") = Field(
+        description="Axial stiffness EA. [N]")
     length: quantity("m", gt=0, fix="give the tether's unstretched length in metres, e.g. 10.0.") = Field(
         description="Unstretched length. [m]")
     weight_in_water: quantity("N") = Field(0.0, description="Submerged weight of the whole tether. [N]")
