@@ -7,6 +7,7 @@ held against the line's pull has no equilibrium on a fine mesh (the elements car
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -129,3 +130,20 @@ def test_a_base_held_against_the_lines_pull_fails_with_the_reason():
     with pytest.raises(ConvergenceError, match=r"end A is held at a direction 90\.\d deg from the line's pull .*"
                                                r"would carry T cos\(angle\) = -\d+(\.\d+)? N"):
         sc.run(_steep(1.0, 100.0))
+
+
+def test_near_far_and_cross_offsets_of_a_pliant_wave():
+    """A pushover of the pliant wave (its tether holding the touchdown) along x, near -8 m to far +8 m, holds at
+    each offset the static equilibrium with the hang-off moved there (the fairlead tension within 1e-6: both
+    solve to the same tolerance from different starts), and across (heading pi / 2, the cross offsets) the
+    tether's pull grows as the hang-off moves sideways by 8 m (the cable swings about its touchdown)."""
+    data = yaml.safe_load((EXAMPLES / "pliant_wave_80m.yaml").read_text())
+    data["analysis"].update(type="mooring_pushover", offsets=[-8.0, 0.0, 8.0])
+    sweep = sc.run(Case.parse(data))
+    for k, offset in enumerate((-8.0, 0.0, 8.0)):
+        static = sc.run(_case("pliant_wave_80m.yaml", "flat", offset))
+        assert float(sweep.fairlead_tension[k]) == pytest.approx(float(static.fairlead_tension), rel=1e-6)
+        assert float(sweep.tether_tension[k, 0]) == pytest.approx(float(static.tether_tension[0]), rel=1e-5)
+    data["analysis"].update(offsets=[0.0, 4.0, 8.0], heading=math.pi / 2)
+    cross = sc.run(Case.parse(data)).tether_tension.values[:, 0]
+    assert np.all(np.diff(cross) > 10.0)

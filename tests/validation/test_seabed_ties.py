@@ -78,7 +78,7 @@ def test_buoy_on_a_tether_below_a_vertical_cable():
         (T_c L + w L^2 / 2) / EA + L0 (T_c + B) / EA_t = H - L - L0
 
     The lumped model's nodes are exact for a uniform load in 1D (its half elements' weights are the consistent
-    loads), so the tether's tension is the closed form's to round-off: measured 1e-13, 1e-9 asserted; the buoy's
+    loads), so the tether's tension is the closed form's to round-off: measured 3e-12, 1e-9 asserted; the buoy's
     buoyancy left out of the balance, or the cable's weight, fails by 25 kN or 5 %."""
     w, L, ea, B, L0, eat, H = 300.0, 60.0, 5e6, 25e3, 19.0, 2e6, 80.0
     cable = LineType(diameter=0.1, mass_per_length=w / G + RHO * math.pi / 4 * 0.01, axial_stiffness=ea)
@@ -97,8 +97,8 @@ def test_clamp_reaction_is_the_sum_of_the_lines_end_forces():
     """A 200 m chain (no bending stiffness) from an anchor to a fairlead, clamped rigidly at s = 90 m to a point
     in mid-water: the clamp's fixed node splits it into two lines, each solved on its own (anchor to clamp, clamp to
     fairlead). The clamp's reaction (the force of the line on it, ``clamp_force``) is the sum of the two lines'
-    end forces there (their end elements' pull and half elements' weight, :func:`line_end_forces`): measured 3e-11
-    of it (the two solves' Newton tolerances), 1e-8 asserted. Leaving out either half element's weight (1.2 kN)
+    end forces there (their end elements' pull and half elements' weight, :func:`line_end_forces`): measured 7e-10
+    of it (three solves' Newton tolerances), 1e-8 asserted. Leaving out either half element's weight (3.1 kN)
     fails it."""
     from seacable.mooring.outputs import tie_variables
 
@@ -162,3 +162,32 @@ def test_tethered_buoy_heave_period_and_amplitude():
     assert T_t == pytest.approx(4000.0, rel=1e-2)  # the tether carries the buoyancy
     assert measured / newmark == pytest.approx(period, rel=2e-4)
     assert np.ptp(energy) < 1e-3 * energy[0]
+
+
+def test_spring_clamp_tends_to_the_rigid_clamp():
+    """The clamp of :func:`test_clamp_reaction_is_the_sum_of_the_lines_end_forces` as a spring: its node sits
+    ``F / k`` from the clamp's point along the reaction ``F`` (to round-off), and the reaction differs from the
+    rigid clamp's by ``K F / k`` (K the hanging lines' stiffness at the node, about 2e5 N/m here): at first order
+    in 1 / k, the difference falling tenfold (measured 9.996) from k = 1e9 to 1e10 N/m, where it is 1.8e-5 of the
+    reaction (1e-4 asserted). A spring acting the other way, or at the wrong point, fails it."""
+    from seacable.mooring.outputs import tie_variables
+
+    chain = LineType(diameter=0.08, mass_per_length=130.0, axial_stiffness=5e8)
+    clamp_at = (80.0, 0.0, -60.0)
+    water = Water(density=RHO, gravity=G)
+    out = {}
+    for k in (None, 1e9, 1e10):
+        clamp = Clamp(s=90.0, position=SeabedPoint(x=80.0, z=-60.0), stiffness=k)
+        net = network_from_line(Line.single(chain, 200.0), (0, 0, -100.0), (170.0, 0, -10.0), water_density=RHO,
+                                gravity=G, element_length=5.0, ties=((clamp, clamp_at),))
+        start = net.position.copy()
+        start[18] = clamp_at
+        st = static_equilibrium(MooringModel(net, water), start, tol=1e-12)
+        got = tie_variables(net, st.position, st.support)
+        out[k] = np.array([got[f"clamp_force_{c}"].values[0] for c in "xyz"]), st.position[18]
+    rigid = out[None][0]
+    for k in (1e9, 1e10):
+        assert out[k][1] - np.array(clamp_at) == pytest.approx(out[k][0] / k, rel=1e-6, abs=1e-12)
+    errors = [np.linalg.norm(out[k][0] - rigid) for k in (1e9, 1e10)]
+    assert errors[0] / errors[1] == pytest.approx(10.0, rel=0.1)
+    assert errors[1] < 1e-4 * np.linalg.norm(rigid)
