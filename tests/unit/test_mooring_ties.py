@@ -4,13 +4,9 @@ clear message for each bad input (also from ``validate``)."""
 
 from __future__ import annotations
 
-import copy
-
 import numpy as np
 import pytest
 
-from seacable.case import Case
-from seacable.errors import InputError
 from seacable.mooring import kernel as K
 from seacable.mooring._ties import tie_loads
 

@@ -59,7 +59,7 @@ def test_slack_tether_exerts_no_force():
     length (it would have to push): the equilibrium is the untethered line's to the bit and the tether's tension
     0. A tether carrying compression (EA (l / L0 - 1) < 0 applied) would pull the node 2 m towards its anchor."""
     line = Line.single(LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e7), 100.0)
-    args = dict(water_density=RHO, gravity=G, n_elements=10)
+    args = {"water_density": RHO, "gravity": G, "n_elements": 10}
     ends = (0, 0, -60.0), (99.0, 0, -40.0)
     free = static_equilibrium(MooringModel(network_from_line(line, *ends, **args), Water(density=RHO, gravity=G)))
     tied = network_from_line(line, *ends, **args, ties=(_tether(50.0, (49.0, 0.0, -62.0), 1e6, 15.0),))
@@ -105,7 +105,7 @@ def test_clamp_reaction_is_the_sum_of_the_lines_end_forces():
     chain = LineType(diameter=0.08, mass_per_length=130.0, axial_stiffness=5e8)
     clamp_at = (80.0, 0.0, -60.0)
     water = Water(density=RHO, gravity=G)
-    args = dict(water_density=RHO, gravity=G, element_length=5.0)
+    args = {"water_density": RHO, "gravity": G, "element_length": 5.0}
     whole = network_from_line(Line.single(chain, 200.0), (0, 0, -100.0), (170.0, 0, -10.0), **args,
                               ties=((Clamp(s=90.0, position=SeabedPoint(x=80.0, z=-60.0)), clamp_at),))
     model = MooringModel(whole, water)

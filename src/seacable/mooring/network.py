@@ -19,10 +19,26 @@ import numpy as np
 
 from ..errors import InputError
 from ..line import Line, resolve_sections
-from ..ties import Clamp
 from ..sections import element_bending_stiffness
-from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_SIZE, H_SPRING
-from ._indices import P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX
+from ..ties import Clamp
+from ._indices import (
+    H_CLAMP,
+    H_D,
+    H_DCH,
+    H_ECH,
+    H_EI,
+    H_K,
+    H_KIND,
+    H_SIZE,
+    H_SPRING,
+    P_CK,
+    P_CX,
+    P_SIZE,
+    P_TB,
+    P_TEA,
+    P_TL,
+    P_TX,
+)
 
 __all__ = [
     "FIXED",

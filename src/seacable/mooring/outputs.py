@@ -15,9 +15,16 @@ from ..environment import IrregularWaves
 from .network import FIXED, Network
 from .solver import MooringModel, Water, wave_number_or_zero
 
-__all__ = ["at_motion_start", "elevation_variables", "grounded_end_force", "height_above_seabed", "seabed_slope",
-           "tie_variables",
-           "wave_elevation", "water_of_environment"]
+__all__ = [
+    "at_motion_start",
+    "elevation_variables",
+    "grounded_end_force",
+    "height_above_seabed",
+    "seabed_slope",
+    "tie_variables",
+    "water_of_environment",
+    "wave_elevation",
+]
 
 
 def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0) -> Water:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -119,7 +120,7 @@ def _start_positions(held, s, lengths, weights, ea, loads, **kwargs):
         return catenary_positions(held[0][1], held[1][1], s, lengths, weights, ea, point_loads=loads, **kwargs)
     ends = np.concatenate(([0.0], np.cumsum(lengths)))
     X = np.zeros((len(s), 3))
-    for (s0, p0), (s1, p1) in zip(held[:-1], held[1:]):
+    for (s0, p0), (s1, p1) in itertools.pairwise(held):
         cut = np.clip(ends, s0, s1)
         keep = np.diff(cut) > 0.0
         inside = (s >= s0 - 1e-9) & (s <= s1 + 1e-9)
