@@ -604,14 +604,20 @@ class _Mooring(_Moored):
     design: CableDesign | None = Field(
         None, description="Design criteria of a cable's configuration (clearances of its bends, the hang-off "
                           "angle range) for the cable checks; the cable's own limits are on its line types.")
+    compression: bool = Field(
+        False, description="The elements carry compression too (EA times a negative strain), as a cable with bending "
+                           "stiffness does; false: tension only (MoorDyn's rule). A cable's end held at a direction "
+                           "the line pulls away from (a steep wave's base) needs it.")
 
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
-        # 'design' appears in a dumped case (a result's 'case' attribute) only when given: the cases without it
-        # read as they did before it existed
+        # 'design' and 'compression' appear in a dumped case (a result's 'case' attribute) only when given: the
+        # cases without them read as they did before they existed
         data = handler(self)
         if isinstance(data, dict) and data.get("design", 0) is None:
             del data["design"]
+        if isinstance(data, dict) and data.get("compression", True) is False:
+            del data["compression"]
         return data
 
 

@@ -36,7 +36,7 @@ from typing import Literal
 import numpy as np
 from pydantic import Field
 
-from ._model import Model, quantity
+from ._model import UNION_TAGS, Model, quantity
 
 __all__ = ["Clamp", "SeabedPoint", "Tether", "seabed_elevation", "tie_points", "ties_of"]
 
@@ -108,6 +108,10 @@ class Tether(Model):
     weight_in_water: quantity("N") = Field(0.0, description="Submerged weight of the whole tether. [N]")
     mass: quantity("kg", ge=0) = Field(0.0, description="Mass of the whole tether. [kg]")
     name: str | None = None
+
+
+# the tags are not keys: an error's path reads ``line.sections[1].s``, not ``line.sections[1].clamp.s``
+UNION_TAGS.update(("clamp", "tether"))
 
 
 def ties_of(line) -> tuple:

@@ -25,7 +25,10 @@ E_DRAGTURN = 23
 # a seabed profile: its number of points m (0: the plane of E_DEPTH and E_SLOPE); the points follow the vector's
 # ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond)
 E_BEDTAB = 24
-ENV_SIZE = 25
+# 1: the elements of linear EA carry compression too, EA eps below eps = 0 (a cable with bending stiffness, a beam), 0:
+# tension only (MoorDyn's rule: no compression)
+E_COMPRESS = 25
+ENV_SIZE = 26
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift

@@ -90,8 +90,8 @@ from ._indices import (  # noqa: F401
     H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
 from ._seabed import seabed_at  # noqa: F401
 from ._water import _fluid, point_lift  # noqa: F401
-# the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`)
-from ._indices import P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401
+# the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`); compression
+from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401
 from ._ties import tie_loads  # noqa: F401
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",

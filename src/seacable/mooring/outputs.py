@@ -27,11 +27,11 @@ __all__ = [
 ]
 
 
-def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0) -> Water:
+def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0, compression: bool = False) -> Water:
     """The :class:`~seacable.mooring.solver.Water` of an environment (a line's or a system's): density, gravity,
     depth, the seabed (plane, or its profile when the environment has one) with ``seabed_contact``'s stiffness,
     damping and friction velocity, the current profile, regular waves or an irregular sea's components, and
-    the mass-proportional Rayleigh damping ``rayleigh_mass``. [1/s]"""
+    the mass-proportional Rayleigh damping ``rayleigh_mass`` [1/s], and whether the elements carry ``compression``."""
     env = environment
     cur = env.current
     depths, speeds = ((0.0,), (cur.speed,)) if cur.depths is None else (cur.depths, cur.speeds)
@@ -49,7 +49,7 @@ def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0
                  wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
                  wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
                  rayleigh_mass=rayleigh_mass, sea=sea, stretching=w.stretching if w else "none",
-                 profile=None if profile is None else (profile.distance, profile.depth))
+                 profile=None if profile is None else (profile.distance, profile.depth), compression=compression)
 
 
 def seabed_slope(water: Water, x):

@@ -76,7 +76,7 @@ def water_of(case: Case) -> Water:
     """The :class:`~seacable.mooring.solver.Water` of a case's environment and seabed contact."""
     a = case.analysis
     alpha = a.rayleigh[0] if isinstance(a, MooringDynamicAnalysis) else 0.0
-    return water_of_environment(case.environment, a.seabed_contact, alpha)
+    return water_of_environment(case.environment, a.seabed_contact, alpha, compression=a.compression)
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:

@@ -66,6 +66,9 @@ class Water:
     band (where the spring is linear), rounded with the spring's slope inside it (MoorDyn's rule, set for
     MoorDyn decks: ``(kBot pen - cBot v_n) d l``); False: it engages gradually, as ``q / (q + b)`` of the
     rounded penetration ``q`` and the band ``b`` (two thirds of it at a node's static penetration ``2 b``).
+    ``compression``: the elements of linear EA carry compression too, ``EA eps`` for ``eps < 0`` (a cable with
+    bending stiffness, a beam; False: tension only, MoorDyn's rule). ``profile``: the seabed's depths along X
+    instead of the plane, ``(distances, depths)`` [m].
     """
 
     density: float = 1025.0
@@ -90,6 +93,7 @@ class Water:
     full_seabed_damping: bool = False  # the seabed damper in full on a node pressed in (MoorDyn's rule)
     # a seabed profile along X instead of the plane: (distances [m], depths [m]), linear between, level beyond
     profile: tuple | None = None
+    compression: bool = False  # the elements of linear EA carry compression too (a cable as a beam: E_COMPRESS)
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         m = 0 if self.profile is None else len(self.profile[0])
@@ -109,6 +113,7 @@ class Water:
         env[K.E_VDT] = math.inf  # viscoelastic elements at their static stiffness unless a time step says
         env[K.E_SLACKDAMP] = float(bool(self.slack_damping))
         env[K.E_BEDFULL] = float(bool(self.full_seabed_damping))
+        env[K.E_COMPRESS] = float(bool(self.compression))
         return env
 
     def seabed_z(self, x) -> np.ndarray:
@@ -515,7 +520,7 @@ def _held_end_hint(model: MooringModel, X0, tol: float) -> str:
     has no equilibrium. ``Delta`` and ``T`` are those of the line with its held ends pinned, solved here."""
     net = model.network
     held = [(line, end, direction) for line, end, _, _, direction in net.end_hinges]
-    if not held:
+    if not held or model.water.compression:
         return ""
     try:
         pinned = static_equilibrium(MooringModel(net.replace(end_hinges=()), model.water, checked=True), X0,
@@ -534,8 +539,9 @@ def _held_end_hint(model: MooringModel, X0, tol: float) -> str:
             out.append(f" Its end {'AB'[end]} is held at a direction {math.degrees(math.acos(min(max(cos, -1), 1))):.1f} "
                        f"deg from the line's pull there (pinned, the line pulls with {T:.4g} N): the end element "
                        f"would carry T cos(angle) = {T * cos:.4g} N, and the elements carry no compression, so a "
-                       "fine mesh has no equilibrium there. Hold the end closer to the line's direction (or the "
-                       "line so that it pulls along the held direction: buoyancy nearer the end).")
+                       "fine mesh has no equilibrium there. Let the elements carry compression (a mooring analysis's "
+                       "'compression: true'), or hold the end closer to the line's direction (or the line so that it "
+                       "pulls along the held direction: buoyancy nearer the end).")
     return "".join(out)
 
 
