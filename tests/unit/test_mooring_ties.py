@@ -74,3 +74,50 @@ def test_a_slack_tether_exerts_no_force_and_a_taut_one_its_closed_form():
     l = np.hypot(6.0, 8.5)
     assert taut[0] == pytest.approx(-1e6 * (l / 10.0 - 1.0) * np.array([6.0, 0.0, 8.5]) / l, rel=1e-14)
     assert np.all(_forces(np.array([[6.0, 0.0, 7.9]]), P, np.zeros(1, np.int64)) == 0.0)
+
+
+def test_compressed_elements_tangent_is_the_derivative_of_the_forces():
+    """With compression (:data:`seacable.mooring.kernel.E_COMPRESS`) a shortened bent rod's elements carry
+    ``EA eps < 0``: the loads pass's Newton matrix (axial EA / L and the geometric T / l, negative) against central
+    differences of step 1e-6 m (round-off: EA / L = 2e6 N/m times 1e-14 m over 2e-6 m, 0.01 N/m; measured 9e-4,
+    0.1 asserted against entries up to 4e6 N/m, bending's included). A tangent that kept the tension-only switch
+    (no axial stiffness in compression) would be 2e6 N/m off."""
+    import math
+
+    from seacable.line import Line, LineType
+    from seacable.mooring.network import network_from_line
+    from seacable.mooring.solver import MooringModel, Water
+
+    rod = LineType(diameter=0.1, mass_per_length=20.0, axial_stiffness=1e6, bending_stiffness=1e4)
+    net = network_from_line(Line.single(rod, 2.0), (0, 0, -50.0), (1.9, 0, -50.0), water_density=1025.0,
+                            gravity=9.81, n_elements=4)
+    model = MooringModel(net, Water(compression=True))
+    X = net.position.copy()
+    X[1:-1, 2] += 0.05 * np.sin(math.pi * net.arc_length[1:-1] / 2.0)  # a bow: every element shortened
+    nd = 3 * model.nfree
+    free = np.flatnonzero(model.fidx >= 0)
+
+    def forces(Y, band=None):
+        F, M, ten = np.zeros_like(Y), np.zeros((len(Y), 3, 3)), np.zeros(net.n_elements)
+        K.loads(Y, np.zeros_like(Y), 0.0, *model.element_args(), model.fidx, model.env, model.cur_depth,
+                model.cur_speed, False, model.sea, F, M, ten,
+                np.zeros((0, 2 * model.bw + 1)) if band is None else band, model.bw, 0.0, 0.0)
+        return F, ten
+
+    band = np.zeros((nd, 2 * model.bw + 1))
+    _, ten = forces(X, band)
+    assert np.all(ten < -1e3)
+    got = np.zeros((nd, nd))
+    for r in range(nd):
+        for c in range(max(0, r - model.bw), min(nd, r + model.bw + 1)):
+            got[r, c] = band[r, model.bw + c - r]
+    want = np.zeros((nd, nd))
+    for i in free:
+        for r in range(3):
+            Xp, Xm = X.copy(), X.copy()
+            Xp[i, r] += 1e-6
+            Xm[i, r] -= 1e-6
+            dF = (forces(Xp)[0] - forces(Xm)[0]) / 2e-6
+            want[:, 3 * model.fidx[i] + r] = -dF[free].ravel()
+    assert np.max(np.abs(want)) > 1e6
+    assert np.max(np.abs(got - want)) < 0.1
