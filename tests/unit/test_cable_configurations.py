@@ -147,3 +147,23 @@ def test_near_far_and_cross_offsets_of_a_pliant_wave():
     data["analysis"].update(offsets=[0.0, 4.0, 8.0], heading=math.pi / 2)
     cross = sc.run(Case.parse(data)).tether_tension.values[:, 0]
     assert np.all(np.diff(cross) > 10.0)
+
+
+def test_tether_and_clamp_in_the_dynamics():
+    """``mooring_dynamic`` of the lazy-S at 2 m elements, its fairlead held, with a spring clamp (1 MN/m) on the
+    seabed at s = 20 m: the tether's tension and the clamp's force are outputs over time (dims ``time``,
+    ``tether`` / ``clamp``), at t = 0 the statics' (the run starts from it: within 1e-6), and the clamp's force is
+    ``k |x - p|`` at every output."""
+    data = yaml.safe_load((EXAMPLES / "lazy_s_80m.yaml").read_text())
+    data["line"]["sections"].append({"type": "clamp", "s": 20.0, "position": {"x": 19.8}, "stiffness": 1e6})
+    data["analysis"]["element_length"] = 2.0
+    static = sc.run(Case.parse(data))
+    data["analysis"].update(type="mooring_dynamic", duration=1.0, time_step=0.05, output_interval=0.5,
+                            spectral_radius=0.9)
+    ds = sc.run(Case.parse(data))
+    assert ds.tether_tension.dims == ("time", "tether") and ds.clamp_force.dims == ("time", "clamp")
+    assert float(ds.tether_tension[0, 0]) == pytest.approx(float(static.tether_tension[0]), rel=1e-6)
+    assert float(ds.clamp_force[0, 0]) == pytest.approx(float(static.clamp_force[0]), rel=1e-6)
+    k = _at(ds, 20.0)
+    moved = np.stack([ds.x[:, k] - 19.8, ds.y[:, k], ds.z[:, k] + 80.0], axis=-1)
+    assert ds.clamp_force.values[:, 0] == pytest.approx(1e6 * np.linalg.norm(moved, axis=-1), rel=1e-9)
