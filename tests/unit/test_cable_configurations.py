@@ -158,7 +158,7 @@ def test_tether_and_clamp_in_the_dynamics():
     data["line"]["sections"].append({"type": "clamp", "s": 20.0, "position": {"x": 19.8}, "stiffness": 1e6})
     data["analysis"]["element_length"] = 2.0
     static = sc.run(Case.parse(data))
-    data["analysis"].update(type="mooring_dynamic", duration=1.0, time_step=0.05, output_interval=0.5,
+    data["analysis"].update(type="mooring_dynamic", duration=0.5, time_step=0.05, output_interval=0.25,
                             spectral_radius=0.9)
     ds = sc.run(Case.parse(data))
     assert ds.tether_tension.dims == ("time", "tether") and ds.clamp_force.dims == ("time", "clamp")
