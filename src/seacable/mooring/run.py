@@ -76,7 +76,8 @@ def water_of(case: Case) -> Water:
     """The :class:`~seacable.mooring.solver.Water` of a case's environment and seabed contact."""
     a = case.analysis
     alpha = a.rayleigh[0] if isinstance(a, MooringDynamicAnalysis) else 0.0
-    return water_of_environment(case.environment, a.seabed_contact, alpha, compression=a.compression)
+    compression = getattr(a, "compression", False)  # a mooring analysis's (the towed lines' take none)
+    return water_of_environment(case.environment, a.seabed_contact, alpha, compression=compression)
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:
