@@ -43,6 +43,7 @@ from .line import Lifting, Line, LineType, resolve_sections
 from .mooring.ends import EndCondition
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
+from .ties import tie_points
 from .towed.vessel import VesselPath
 from .towline.barge_model import Barge
 
@@ -656,14 +657,20 @@ class _Mooring(_Moored):
     design: CableDesign | None = Field(
         None, description="Design criteria of a cable's configuration (clearances of its bends, the hang-off "
                           "angle range) for the cable checks; the cable's own limits are on its line types.")
+    compression: bool = Field(
+        False, description="The elements carry compression too (EA times a negative strain), as a cable with bending "
+                           "stiffness does; false: tension only (MoorDyn's rule). A cable's end held at a direction "
+                           "the line pulls away from (a steep wave's base) needs it.")
 
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
-        # 'design' appears in a dumped case (a result's 'case' attribute) only when given: the cases without it
-        # read as they did before it existed
+        # 'design' and 'compression' appear in a dumped case (a result's 'case' attribute) only when given: the
+        # cases without them read as they did before they existed
         data = handler(self)
         if isinstance(data, dict) and data.get("design", 0) is None:
             del data["design"]
+        if isinstance(data, dict) and data.get("compression", True) is False:
+            del data["compression"]
         return data
 
 
@@ -671,7 +678,7 @@ class MooringStaticAnalysis(_Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
 
 
 class MooringPushoverAnalysis(_Offsets, _Mooring):
@@ -680,7 +687,7 @@ class MooringPushoverAnalysis(_Offsets, _Mooring):
     negative ones the near; pi/2: across the line's plane, the cross position)."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
     heading: quantity("rad") = Field(0.0, description="Direction of the offsets from +x towards +y. [rad]")
 
     @model_validator(mode="after")
@@ -701,7 +708,7 @@ class MooringDynamicAnalysis(_Mooring):
     """
 
     type: Literal["mooring_dynamic"] = "mooring_dynamic"
-    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves"}
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves", "seabed.profile"}
     motion: Motion | None = Field(None, description="Fairlead motion: harmonic, time_series or platform.")
     end_b: Literal["fairlead", "free"] = Field("fairlead", description="End B moved by 'motion', or free.")
     release_from: _XZ | None = Field(None, description="Where a free end B is held before release (x, z). [m]")
@@ -888,7 +895,8 @@ class Case(Model):
         self._unused_inputs()
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or (
-                    a.anchor is None and not getattr(a, "free_end", False))):
+                    a.anchor is None and not getattr(a, "free_end", False)
+                    and not (isinstance(a, _Mooring) and self.environment.seabed.profile is not None))):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
         if isinstance(a, (LayingTheoryAnalysis, VerticalModesAnalysis)):
@@ -923,6 +931,7 @@ class Case(Model):
                                  "segments and attachments.")
             # a line the modules would float is refused here, before anything runs (the same check the model makes)
             resolve_sections(self.line, self.environment.water_density, self.environment.gravity)
+            tie_points(self.line, self.environment)  # a tie's point below the seabed, or on a seabed not given
         if isinstance(a, TowlineDynamicAnalysis):
             if self.environment.depth is not None and self.environment.seabed.slope != 0.0:
                 raise ValueError(f"analysis 'towline_dynamic' takes a level seabed, got seabed.slope "
@@ -947,6 +956,9 @@ class Case(Model):
         a = self.analysis
         if getattr(a, "anchor", None) is not None:
             return a.anchor
+        profile = self.environment.seabed.profile
+        if profile is not None:  # on the profile's seabed under the origin
+            return (0.0, -float(np.interp(0.0, profile.distance, profile.depth)))
         return (0.0, -float(self.environment.depth))
 
 

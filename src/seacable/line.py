@@ -21,6 +21,7 @@ from ._model import Model, quantity
 from .errors import InputError, SeacableWarning
 from .moment_curvature import check_table
 from .sections import BendRestrictor, BendStiffener, BuoyancySection, Section, smeared_line_type
+from .ties import Clamp, Tether
 
 __all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections"]
 
@@ -449,9 +450,13 @@ class Line(Model):
     def _sections_on_line(self) -> Line:
         total = self.length
         spans = []
+        held = {}
         for i, sec in enumerate(self.sections):
             if isinstance(sec, (BendStiffener, BendRestrictor)):
                 sec.check_on(self)
+                continue
+            if isinstance(sec, (Clamp, Tether)):
+                _check_tie(i, sec, total, held)
                 continue
             if sec.length > total * (1 + 1e-12):
                 raise ValueError(f"sections[{i}] (buoyancy) is {sec.length:g} m long, longer than the line "
@@ -494,6 +499,27 @@ class Line(Model):
     def point_loads(self, water_density: float = _RHO, gravity: float = _G) -> tuple[tuple[float, float], ...]:
         """``(s, net weight)`` of each attachment. [m, N]"""
         return tuple((a.s, a.net_weight(water_density, gravity)) for a in self.attachments)
+
+
+def _check_tie(i: int, tie, total: float, held: dict) -> None:
+    """Refuse a clamp or tether off the line, a clamp at an end (the anchor or the fairlead holds it already), and
+    two clamps or two tethers at one node (``held``: the ties seen so far, by kind and arc length)."""
+    what = f"sections[{i}] ({tie.type})"
+    if tie.s > total * (1 + 1e-12):
+        raise ValueError(f"{what} is at s = {tie.s:g} m, beyond the end of the line at {total:g} m. Suggested fix: "
+                         f"give s as the arc length from end A, 0 to {total:g} m.")
+    if tie.type == "clamp" and (tie.s <= 1e-9 * total or tie.s >= total * (1 - 1e-9)):
+        end = "A (the anchor)" if tie.s <= 1e-9 * total else "B (the fairlead)"
+        raise ValueError(f"{what} is at s = {tie.s:g} m, at end {end}, which the analysis holds already. Suggested "
+                         "fix: move the anchor or fairlead there (and clamp its direction with "
+                         "analysis.anchor_end_condition or fairlead_end_condition), or clamp a node inside the line.")
+    for s, j in held.get(tie.type, ()):
+        if abs(s - tie.s) <= 1e-9 * total:
+            raise ValueError(f"sections[{j}] and sections[{i}] are two {tie.type}s at one node (s = {tie.s:g} m). "
+                             f"Suggested fix: give one {tie.type} there"
+                             + (", its stiffness the combined one." if tie.type == "clamp" else
+                                ", its axial stiffness the combined one, or tether a node beside it."))
+    held.setdefault(tie.type, []).append((tie.s, i))
 
 
 def module_attachments(line_type, section: BuoyancySection, water_density: float, gravity: float):
@@ -545,7 +571,7 @@ def resolve_sections(line, water_density: float, gravity: float):
         for sec in line.sections:
             if isinstance(sec, BuoyancySection):
                 cuts.update(c for c in (sec.start, sec.end) if s0 + 1e-9 < c < s1 - 1e-9)
-            else:  # a stiffener's tip, a restrictor's far end
+            elif isinstance(sec, (BendStiffener, BendRestrictor)):  # a stiffener's tip, a restrictor's far end
                 tip = sec.length if sec.end == "A" else total - sec.length
                 if s0 + 1e-9 < tip < s1 - 1e-9:
                     cuts.add(tip)
@@ -567,7 +593,8 @@ def resolve_sections(line, water_density: float, gravity: float):
         + sum(a.net_weight(water_density, gravity) for a in out.attachments)
     scale = sum(seg.length * abs(seg.line_type.submerged_weight(water_density, gravity)) for seg in out.segments) \
         + sum(abs(a.net_weight(water_density, gravity)) for a in out.attachments)
-    if weight < -1e-9 * scale:  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
+    tied = any(isinstance(sec, (Clamp, Tether)) for sec in line.sections)  # ties to the seabed hold it down
+    if weight < -1e-9 * scale and not tied:  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
         lift = sum(-sec.count * sec.module.net_weight(water_density, gravity)
                    for sec in line.sections if isinstance(sec, BuoyancySection))
         raise InputError(

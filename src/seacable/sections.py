@@ -44,6 +44,7 @@ from pydantic import Field, model_serializer, model_validator
 from ._model import Model, quantity
 from .errors import InputError
 from .moment_curvature import check_table, law_sum, linear_law, lock_law
+from .ties import Clamp, Tether
 
 __all__ = ["LOCK_FACTOR", "BendRestrictor", "BendStiffener", "BuoyancyModule", "BuoyancySection", "Cone", "Section",
            "element_bending_stiffness", "element_moment_curvature", "element_section_properties", "smeared_line_type"]
@@ -427,7 +428,8 @@ class BendRestrictor(Model):
                              f"shorten the restrictor, or make that segment at least {self.length:g} m long.")
 
 
-Section = Annotated[BuoyancySection | BendStiffener | BendRestrictor, Field(discriminator="type")]
+# clamps and tethers to the seabed (:mod:`seacable.ties`) are sections too: the finite-element line takes them
+Section = Annotated[BuoyancySection | BendStiffener | BendRestrictor | Clamp | Tether, Field(discriminator="type")]
 
 
 def smeared_line_type(line_type, section: BuoyancySection, water_density: float, gravity: float):

@@ -25,12 +25,22 @@ E_DRAGTURN = 23
 # a seabed profile: its number of points m (0: the plane of E_DEPTH and E_SLOPE); the points follow the vector's
 # ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond)
 E_BEDTAB = 24
-ENV_SIZE = 25
+# 1: the elements of linear EA carry compression too, EA eps below eps = 0 (a cable with bending stiffness, a beam), 0:
+# tension only (MoorDyn's rule: no compression)
+E_COMPRESS = 25
+ENV_SIZE = 26
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift
 # 1/2 rho C_L A (|u|^2 e_z - (u . e_z) u) at the water's velocity u relative to the point (:func:`point_lift`)
 P_CDA, P_CDA_AXIAL, P_CLA = 0, 1, 2
+# and, when a node of the network is tied to the seabed (:mod:`seacable.ties`; else the table has the three columns
+# above), the node's tether: its anchor (P_TX, P_TX + 1, P_TX + 2) [m], axial stiffness EA (P_TEA) [N], unstretched
+# length (P_TL, 0: no tether) [m] and the strain band its slack switch is rounded over (P_TB, 0: a sharp switch)
+# [-]; and its spring clamp: the point it holds the node to (P_CX, P_CX + 1, P_CX + 2) [m] and its stiffness
+# (P_CK, 0: none) [N/m] (:func:`seacable.mooring._ties.tie_loads`)
+P_TX, P_TEA, P_TL, P_TB, P_CX, P_CK = 3, 6, 7, 8, 9, 12
+P_SIZE = 13
 
 # Columns of the viscoelastic element table (one row per element, or none when no element is viscoelastic):
 # dynamic stiffness EA_Dc [N] (0: an elastic element) and its slope on the mean tension EA_D_Lm [-], the

@@ -16,10 +16,11 @@ from .._jit import njit
 from ..seastate import S_ETAMAX, S_MODE, S_STRETCH, grid_points
 from ._band import _add_block, _add_pair
 from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_loads
-from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DEPTH, E_DRAGTURN, E_FRAMEX,
-                       E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
-                       E_WH, P_CDA, P_CDA_AXIAL, P_CLA, V_EAD, V_WC)
+from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_COMPRESS, E_DEPTH, E_DRAGTURN,
+                       E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
+                       E_WH, P_CDA, P_CDA_AXIAL, P_CLA, P_TX, V_EAD, V_WC)
 from ._seabed import seabed_at
+from ._ties import tie_loads
 from ._water import (_drag_tangent, _drag_turn, _dry_fraction, _fluid, _point_drag_split, _surface, _water_local,
                      point_lift)
 
@@ -66,6 +67,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     nvis = visco.shape[0]
     vstatic = math.isinf(env[E_VDT])
     sdamp = env[E_SLACKDAMP] > 0.0
+    compress = env[E_COMPRESS] > 0.0
     n = X.shape[0]
     rho = env[E_RHO]
     pdia = pvol  # the attachments' sphere diameters, needed (and computed) only when one has a buoyancy
@@ -150,13 +152,15 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
         # eps = 0), below the lumped model's own resolution (tensions step by an element's weight from
         # element to element of a hanging line), and nothing once eps > sband
         sband = 0.25 * mpl[e] * env[E_G] * L / EA[e]
-        if eps >= sband:
+        tab = ts_hi[e] > ts_lo[e]
+        # EA eps in compression too (a beam's; not a strain-tension table's element, nor coincident nodes')
+        comp = compress and not tab and l > 0.0
+        if eps >= sband or comp:
             psi, dpsi, ddpsi = eps, 1.0, 0.0
         elif eps > -sband:
             psi, dpsi, ddpsi = (eps + sband) ** 2 / (4.0 * sband), (eps + sband) / (2.0 * sband), 0.5 / sband
         else:
             psi, dpsi, ddpsi = 0.0, 0.0, 0.0
-        tab = ts_hi[e] > ts_lo[e]
         tel = kel = 0.0
         if tab and dpsi > 0.0:
             # a strain-tension table: T(eps) and its slope beyond the band; within it the same quadratic
@@ -177,7 +181,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 T = tel + cd * ldot / L
             else:
                 T = EA[e] * psi + cd * ldot / L
-            if not sdamp:
+            if not sdamp and not comp:
                 T = max(T, 0.0)
             tension[e] = T
             F[a, 0] += T * t0
@@ -280,6 +284,8 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                      bw, cc, env[E_G])
     if hinges.shape[0] > 0:
         bending_loads(X, hinges, hinge_ei, F, band, bw, fidx)
+    if pcda.shape[1] > P_TX:  # a node tied to the seabed: tethers and spring clamps
+        tie_loads(X, pcda, F, band, bw, fidx)
     # node loads: weight, attachments, seabed, mass-proportional damping
     sl = env[E_SLOPE]
     nrm[0], nrm[1], nrm[2] = -math.sin(sl), 0.0, math.cos(sl)

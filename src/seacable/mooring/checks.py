@@ -50,7 +50,15 @@ def _describe(network: Network, node: int) -> str:
     return f"{kind} node {node} at ({x:.6g}, {y:.6g}, {z:.6g}) m"
 
 
-def check_network(network: Network, *, depth: float | None, slope: float = 0.0) -> None:
+def _below_seabed(x, z, depth: float, slope: float, profile) -> np.ndarray:
+    """How far points (x, z) lie under the seabed [m]: normal to the plane through (0, -depth) rising at ``slope``,
+    or vertically under a profile ``(distances, depths)`` along X (level beyond its ends)."""
+    if profile is not None:
+        return -np.interp(x, profile[0], profile[1]) - z
+    return ((-depth + math.tan(slope) * x) - z) * math.cos(slope)
+
+
+def check_network(network: Network, *, depth: float | None, slope: float = 0.0, profile=None) -> None:
     """Refuse a start no line can take: a placed node under the seabed, or held ends beyond the stretch limit.
 
     Parameters
@@ -59,6 +67,8 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0) 
         The mooring network at its start positions.
     depth, slope
         The seabed plane, through (0, 0, -depth) rising towards +x at ``slope`` (None: no seabed). [m], [rad]
+    profile
+        The seabed's profile along X instead of the plane, ``(distances, depths)``; None: the plane. [m]
 
     Raises
     ------
@@ -69,8 +79,8 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0) 
     held = np.flatnonzero(network.kind != 0)
     placed = np.union1d(held, np.flatnonzero(~np.isfinite(network.arc_length)))  # plus MoorDyn points
     if depth is not None:
-        bed = -depth + math.tan(slope) * X[placed, 0]
-        below = (bed - X[placed, 2]) * math.cos(slope)
+        below = _below_seabed(X[placed, 0], X[placed, 2], depth, slope, profile)
+        bed = X[placed, 2] + below / (1.0 if profile is not None else math.cos(slope))
         k = int(np.argmax(below)) if placed.size else 0
         if placed.size and below[k] > 1e-6 * max(depth, 1.0):
             node = int(placed[k])
@@ -153,7 +163,8 @@ def _chain_distances(place: np.ndarray, held: np.ndarray, reach: np.ndarray) -> 
     return dist
 
 
-def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0) -> None:
+def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0,
+                 profile=None) -> None:
     """Refuse a prescribed motion that takes a moved node under the seabed or beyond the lines' reach.
 
     Parameters
@@ -164,8 +175,8 @@ def check_motion(network: Network, times, positions, *, depth: float | None, slo
         (nt,) sample times of the motion. [s]
     positions
         (nt, n_channels, 3) positions of the motion channels at ``times``. [m]
-    depth, slope
-        The seabed plane (see :func:`check_network`). [m], [rad]
+    depth, slope, profile
+        The seabed plane or profile (see :func:`check_network`). [m], [rad], [m]
 
     Raises
     ------
@@ -180,7 +191,7 @@ def check_motion(network: Network, times, positions, *, depth: float | None, slo
     for node in moved:
         path = positions[:, network.channel[node], :]
         if depth is not None:
-            below = ((-depth + math.tan(slope) * path[:, 0]) - path[:, 2]) * math.cos(slope)
+            below = _below_seabed(path[:, 0], path[:, 2], depth, slope, profile)
             k = int(np.argmax(below))
             if below[k] > 1e-6 * max(depth, 1.0):
                 raise InputError(

@@ -63,7 +63,7 @@ a straight line.
 The kernel's parts are private modules, their public names re-exported here: :mod:`._indices` (the layouts
 of ``env``, ``pcda`` and ``visco``), :mod:`._water` (the surface, the water's kinematics, the attachments'
 drag and lift), :mod:`._elements` (tension laws, the viscoelastic and Syrope passes, bending),
-:mod:`._seabed` (the seabed's elevation under a node), :mod:`._band` (band storage: blocks and
+:mod:`._seabed` (the seabed's elevation under a node), :mod:`._ties` (tethers and spring clamps), :mod:`._band` (band storage: blocks and
 LU) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
 integration and the statics.
 """
@@ -90,6 +90,9 @@ from ._indices import (  # noqa: F401
     H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
 from ._seabed import seabed_at  # noqa: F401
 from ._water import _fluid, point_lift  # noqa: F401
+# the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`); compression
+from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401
+from ._ties import tie_loads  # noqa: F401
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
            "loads", "loads_water", "lu_solve", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",

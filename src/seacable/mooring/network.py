@@ -21,7 +21,27 @@ from ..errors import InputError
 from ..line import Line, resolve_sections
 from ..moment_curvature import law_sum, linear_law
 from ..sections import element_bending_stiffness, element_moment_curvature, element_section_properties
-from ._indices import H_CLAMP, H_D, H_DCH, H_ECH, H_EI, H_K, H_KIND, H_L0, H_NLAW, H_SIZE, H_SPRING
+from ..ties import Clamp
+from ._indices import (
+    H_CLAMP,
+    H_D,
+    H_DCH,
+    H_ECH,
+    H_EI,
+    H_K,
+    H_KIND,
+    H_L0,
+    H_NLAW,
+    H_SIZE,
+    H_SPRING,
+    P_CK,
+    P_CX,
+    P_SIZE,
+    P_TB,
+    P_TEA,
+    P_TL,
+    P_TX,
+)
 
 __all__ = [
     "FIXED",
@@ -86,6 +106,12 @@ class Network:
     element_moment_curvature : per element its nonlinear moment-curvature law, knots ``(kappa, M)`` from
         ``(0, 0)`` (:mod:`seacable.moment_curvature`), or None for the linear ``bending_stiffness``; None when no
         element has one. ``bending_stiffness`` is then each law's initial slope. [1/m, N m]
+    point_tether : (n, 6) per node its tether to the seabed (:class:`seacable.ties.Tether`): the anchor (x, y, z),
+        the axial stiffness EA, the unstretched length (0: no tether) and the strain band of its slack switch's
+        rounding (:func:`seacable.mooring._ties.tie_loads`); None when no node has one. [m, m, m, N, m, -]
+    point_clamp : (n, 4) per node its spring clamp (:class:`seacable.ties.Clamp` with a stiffness): the point it
+        holds the node to (x, y, z) and its stiffness (0: none); None when no node has one. A rigid clamp is a
+        FIXED node. [m, m, m, N/m]
     end_hinges : the line ends held at a direction, each ``(line, end, kind, stiffness, direction)``: the line's
         index, its end (0: end A, 1: end B), ``"clamp"`` or ``"spring"``, a spring's rotational stiffness
         (None for a clamp, whose stiffness is its end element's EI) and the direction the line leaves or
@@ -132,6 +158,8 @@ class Network:
     point_lift_area: np.ndarray | None = None
     end_hinges: tuple = ()
     element_moment_curvature: tuple | None = None
+    point_tether: np.ndarray | None = None
+    point_clamp: np.ndarray | None = None
 
     def __post_init__(self):
         # the kernels are compiled for C-contiguous arrays: a column of a table (``P[:, 1]``) would make numba
@@ -261,7 +289,18 @@ class Network:
         out[:, 1] = self.point_drag_area if self.point_axial_drag_area is None else self.point_axial_drag_area
         if self.point_lift_area is not None:
             out[:, 2] = self.point_lift_area
-        return out
+        if self.point_tether is None and self.point_clamp is None:
+            return out
+        # a node tied to the seabed: the ties' columns too (kernel.P_TX on)
+        wide = np.zeros((self.n_nodes, P_SIZE))
+        wide[:, :3] = out
+        if self.point_tether is not None:
+            wide[:, P_TX:P_TX + 3] = self.point_tether[:, :3]
+            wide[:, [P_TEA, P_TL, P_TB]] = self.point_tether[:, 3:6]
+        if self.point_clamp is not None:
+            wide[:, P_CX:P_CX + 3] = self.point_clamp[:, :3]
+            wide[:, P_CK] = self.point_clamp[:, 3]
+        return wide
 
     def channel_positions(self, X=None) -> np.ndarray:
         """Positions (n_channels, 3) of the prescribed nodes in channel order, from ``X`` or at rest. [m]"""
@@ -369,8 +408,10 @@ def slack_positions(a, b, s, length, *, depth=None, slope=0.0):
     return X
 
 
-def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: float | None = None):
-    """Unstretched arc lengths of the nodes of ``line``, with a node at every segment end and attachment.
+def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: float | None = None,
+                     breaks=()):
+    """Unstretched arc lengths of the nodes of ``line``, with a node at every segment end and attachment, and at
+    the arc lengths ``breaks`` (a tie's node). [m]
 
     Each segment uses its own ``n_elements`` when given; otherwise pieces between break points get
     elements of about ``element_length``, or of ``L / n_elements`` for the whole line.
@@ -381,7 +422,8 @@ def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: 
     cuts = []
     for k, seg in enumerate(line.segments):
         s0, s1 = ends[k], ends[k + 1]
-        inner = sorted({a.s for a in line.attachments if s0 + 1e-9 < a.s < s1 - 1e-9})
+        inner = sorted({a.s for a in line.attachments if s0 + 1e-9 < a.s < s1 - 1e-9}
+                       | {float(b) for b in breaks if s0 + 1e-9 < b < s1 - 1e-9})
         if seg.n_elements is not None and not inner:
             cuts.append(np.linspace(s0, s1, seg.n_elements + 1)[:-1])
             continue
@@ -395,7 +437,7 @@ def node_arc_lengths(line: Line, n_elements: int | None = None, element_length: 
 def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gravity: float,
                       n_elements: int | None = None, element_length: float | None = None,
                       damping_ratio: float = 0.0, stiffness_proportional: float = 0.0,
-                      end_b: str = "prescribed", initial=None) -> Network:
+                      end_b: str = "prescribed", initial=None, ties=()) -> Network:
     """One line from ``anchor`` (node 0, fixed) to ``fairlead`` (last node), as a network.
 
     Parameters
@@ -414,6 +456,11 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         ``"prescribed"`` (a fairlead moved by channel 0) or ``"free"`` (a buoy or a free end).
     initial
         (n, 3) initial node positions; default a straight line from anchor to fairlead.
+    ties
+        The line's clamps and tethers to the seabed (:mod:`seacable.ties`), each ``(tie, point)`` with the point
+        it holds to (x, y, z) [m] (:func:`seacable.ties.tie_points`): a node at each one's arc length; a rigid
+        clamp's node FIXED there (the initial positions put it there), a spring clamp's and a tether's in
+        ``point_clamp`` and ``point_tether``, half a tether's mass and weight on its node.
 
     A line with sections (``line.sections``) is first replaced by its equivalent line
     (:func:`seacable.line.resolve_sections`: smeared buoyancy as segments of their own, discrete modules as
@@ -424,7 +471,7 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
     and restrictors their own mass, weight, drag and added mass (:func:`seacable.sections.element_section_properties`).
     """
     sectioned, line = line, resolve_sections(line, water_density, gravity)
-    s = node_arc_lengths(line, n_elements, element_length)
+    s = node_arc_lengths(line, n_elements, element_length, breaks=[tie.s for tie, _ in ties])
     n = len(s)
     ends = np.asarray(line.segment_ends)
     mid = 0.5 * (s[:-1] + s[1:])
@@ -441,7 +488,7 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
     m = np.array([t.mass_per_length for t in types], float)
     a = np.asarray(anchor, float)
     b = np.asarray(fairlead, float)
-    position = a + np.outer(s / s[-1], b - a) if initial is None else np.asarray(initial, float)
+    position = a + np.outer(s / s[-1], b - a) if initial is None else np.array(initial, float)
     kind = np.zeros(n, np.int64)
     kind[0] = FIXED
     channel = np.full(n, -1, np.int64)
@@ -473,6 +520,21 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
              "cat": np.array([t.added_mass_tangential for t in types], float)}
     hydro.update(element_section_properties(sectioned, s, types, water_density, gravity) or {})
     m = hydro["mass_per_length"]
+    tether = clamp = None
+    for tie, point in ties:
+        i = int(np.argmin(np.abs(s - tie.s)))
+        if isinstance(tie, Clamp) and tie.stiffness is None:
+            kind[i] = FIXED
+            position[i] = point
+        elif isinstance(tie, Clamp):
+            clamp = np.zeros((n, 4)) if clamp is None else clamp
+            clamp[i] = (*point, tie.stiffness)
+        else:
+            tether = np.zeros((n, 6)) if tether is None else tether
+            # the slack switch rounded as an element's: over the strain at which EA eps is a quarter of its weight
+            tether[i] = (*point, tie.axial_stiffness, tie.length, 0.25 * tie.mass * gravity / tie.axial_stiffness)
+            pm[i] += 0.5 * tie.mass
+            pw[i] += 0.5 * tie.weight_in_water
     return Network(
         position=position, kind=kind, channel=channel, point_mass=pm, point_added_mass=pa, point_weight=pw,
         point_volume=pv, point_drag_area=pd,
@@ -485,7 +547,8 @@ def network_from_line(line: Line, anchor, fairlead, *, water_density: float, gra
         channel_names=("fairlead",) if end_b == "prescribed" else (), element_tension_strain=tables,
         bending_stiffness=ei, element_moment_curvature=laws,
         element_viscoelastic=line_viscoelastic(types),
-        point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None)
+        point_axial_drag_area=None if np.array_equal(pda, pd) else pda, point_lift_area=pla if np.any(pla) else None,
+        point_tether=tether, point_clamp=clamp)
 
 
 def line_bending(types) -> np.ndarray | None:

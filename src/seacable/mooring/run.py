@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -12,6 +13,7 @@ from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..errors import InputError
 from ..seastate import S_MODE
 from ..statics.run import line_arrays
+from ..ties import tie_points, ties_of
 from .bending import bending_variables
 from .checks import check_motion, check_network
 from .kernel import E_BEDRAMP as K_BEDRAMP
@@ -25,6 +27,8 @@ from .outputs import (
     elevation_variables,
     grounded_end_force,
     height_above_seabed,
+    seabed_slope,
+    tie_variables,
     water_of_environment,
     wave_elevation,
 )
@@ -72,7 +76,8 @@ def water_of(case: Case) -> Water:
     """The :class:`~seacable.mooring.solver.Water` of a case's environment and seabed contact."""
     a = case.analysis
     alpha = a.rayleigh[0] if isinstance(a, MooringDynamicAnalysis) else 0.0
-    return water_of_environment(case.environment, a.seabed_contact, alpha)
+    compression = getattr(a, "compression", False)  # a mooring analysis's (the towed lines' take none)
+    return water_of_environment(case.environment, a.seabed_contact, alpha, compression=compression)
 
 
 def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> MooringModel:
@@ -83,9 +88,11 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
     anchor, fair = (ax, 0.0, az), (fx, 0.0, fz)
     env = case.environment
     ratio, beta = (a.damping_ratio, a.rayleigh[1]) if isinstance(a, MooringDynamicAnalysis) else (0.0, 0.0)
+    points = tie_points(case.line, env)
+    ties = tuple((tie, points[i]) for i, tie in ties_of(case.line))
     net = network_from_line(case.line, anchor, fair, water_density=env.water_density, gravity=env.gravity,
                             n_elements=a.n_elements, element_length=a.element_length, damping_ratio=ratio,
-                            stiffness_proportional=beta, end_b=end_b)
+                            stiffness_proportional=beta, end_b=end_b, ties=ties)
     conditions = (("anchor_end_condition", a.anchor_end_condition), ("fairlead_end_condition", a.fairlead_end_condition))
     held = tuple(cond.hinge(0, end) for end, (_, cond) in enumerate(conditions) if cond.holds)
     if held:
@@ -107,9 +114,28 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
                     "linear law (bending_stiffness) on the end segment.")
         net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
-    start = catenary_positions(anchor, fair, net.arc_length, lengths, weights, ea, point_loads=loads,
-                               depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
+    held = [(0.0, anchor)] + sorted((tie.s, p) for tie, p in ties if tie.type == "clamp" and tie.stiffness is None)
+    start = _start_positions(held + [(float(np.sum(lengths)), fair)], net.arc_length, lengths, weights, ea, loads,
+                             depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
     return MooringModel(net.replace(position=start), water_of(case))
+
+
+def _start_positions(held, s, lengths, weights, ea, loads, **kwargs):
+    """The start shape of a line held at the points ``held`` (``(arc length, (x, y, z))`` from end A to end B: its
+    ends and its rigid clamps): the catenary start (:func:`seacable.mooring.network.catenary_positions`) of each
+    piece between two held points, the piece's segments and point loads cut from the line's. [m]"""
+    if len(held) == 2:  # ends only: the line's own start, as before clamps
+        return catenary_positions(held[0][1], held[1][1], s, lengths, weights, ea, point_loads=loads, **kwargs)
+    ends = np.concatenate(([0.0], np.cumsum(lengths)))
+    X = np.zeros((len(s), 3))
+    for (s0, p0), (s1, p1) in itertools.pairwise(held):
+        cut = np.clip(ends, s0, s1)
+        keep = np.diff(cut) > 0.0
+        inside = (s >= s0 - 1e-9) & (s <= s1 + 1e-9)
+        piece = tuple((q - s0, w) for q, w in loads if s0 < q < s1)
+        X[inside] = catenary_positions(p0, p1, s[inside] - s0, np.diff(cut)[keep], np.asarray(weights)[keep],
+                                       np.asarray(ea)[keep], point_loads=piece, **kwargs)
+    return X
 
 
 def _node_tension(net: Network, tension):
@@ -154,12 +180,16 @@ def contact_length(model: MooringModel, X):
     dl = float(model.env[K_BEDRAMP])
     # the penetration -height_above_seabed(water, X) by the same operations, in two arrays instead of five (a
     # run's block of outputs: each temporary is as large as an output variable)
-    sl = water.slope
-    pen = np.multiply(X[..., 0], -math.sin(sl))
-    depth = np.add(X[..., 2], water.depth)
-    np.multiply(depth, math.cos(sl), out=depth)
-    np.add(pen, depth, out=pen)
-    np.negative(pen, out=pen)
+    if water.profile is not None:  # the profile's segment under each node
+        pen = -height_above_seabed(water, X)
+        depth = np.empty_like(pen)
+    else:
+        sl = water.slope
+        pen = np.multiply(X[..., 0], -math.sin(sl))
+        depth = np.add(X[..., 2], water.depth)
+        np.multiply(depth, math.cos(sl), out=depth)
+        np.add(pen, depth, out=pen)
+        np.negative(pen, out=pen)
     touching = pen >= -dl
     kb = water.seabed_stiffness
     if kb > 0:
@@ -359,8 +389,9 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
                 d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
                 norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
                 half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
-                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half,
-                                                      model.water.slope)
+                slope = model.water.slope if model.water.profile is None else \
+                    float(np.arctan(seabed_slope(model.water, Xs[grounded, ends[j], 0]).mean()))
+                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope)
     return out.reshape(lead + (2, 3))
 
 
@@ -449,6 +480,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
                                              f"{name} force of the line on its fairlead end")
     data.update(bending_variables(net, X, dims, end_directions))
+    data.update(tie_variables(net, X, support, dims))
     return data
 
 
@@ -507,7 +539,8 @@ def prepare_mooring_pushover(case: Case) -> tuple[MooringModel, np.ndarray]:
         X = net.position.copy()
         X[moved, 0] += off * math.cos(a.heading)
         X[moved, 1] += off * math.sin(a.heading)
-        check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope)
+        check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope,
+                      profile=model.water.profile)
     return model, offsets
 
 
@@ -570,7 +603,8 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
         turn_with_motion(m, motion, n_channels)
     times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
-        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope)
+        check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope,
+                     profile=model.water.profile)
     # an irregular sea: the size of its kinematics grid over the nodes and the fairlead's range
     model.check_sea(a.duration, np.concatenate((net.position, motion(times)[0].reshape(-1, 3)))
                     if motion is not None else net.position)

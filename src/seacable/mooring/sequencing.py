@@ -29,7 +29,7 @@ __all__ = ["coarsen", "spline_start"]
 
 #: Per-node arrays of a :class:`Network` (its first axis the nodes).
 NODE_FIELDS = ("position", "kind", "channel", "point_mass", "point_added_mass", "point_weight", "point_volume",
-               "point_drag_area", "arc_length", "point_axial_drag_area", "point_lift_area")
+               "point_drag_area", "arc_length", "point_axial_drag_area", "point_lift_area", "point_tether", "point_clamp")
 #: Per-element arrays (the first axis the elements) whose values a merged element keeps; ``length`` adds up.
 ELEMENT_FIELDS = ("axial_stiffness", "axial_damping", "mass_per_length", "weight_per_length", "diameter", "cdn",
                   "cdt", "can", "cat", "element_line", "breaking_load", "bending_stiffness", "element_viscoelastic",

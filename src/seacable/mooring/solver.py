@@ -66,6 +66,9 @@ class Water:
     band (where the spring is linear), rounded with the spring's slope inside it (MoorDyn's rule, set for
     MoorDyn decks: ``(kBot pen - cBot v_n) d l``); False: it engages gradually, as ``q / (q + b)`` of the
     rounded penetration ``q`` and the band ``b`` (two thirds of it at a node's static penetration ``2 b``).
+    ``compression``: the elements of linear EA carry compression too, ``EA eps`` for ``eps < 0`` (a cable with
+    bending stiffness, a beam; False: tension only, MoorDyn's rule). ``profile``: the seabed's depths along X
+    instead of the plane, ``(distances, depths)`` [m].
     """
 
     density: float = 1025.0
@@ -90,6 +93,7 @@ class Water:
     full_seabed_damping: bool = False  # the seabed damper in full on a node pressed in (MoorDyn's rule)
     # a seabed profile along X instead of the plane: (distances [m], depths [m]), linear between, level beyond
     profile: tuple | None = None
+    compression: bool = False  # the elements of linear EA carry compression too (a cable as a beam: E_COMPRESS)
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         m = 0 if self.profile is None else len(self.profile[0])
@@ -109,6 +113,7 @@ class Water:
         env[K.E_VDT] = math.inf  # viscoelastic elements at their static stiffness unless a time step says
         env[K.E_SLACKDAMP] = float(bool(self.slack_damping))
         env[K.E_BEDFULL] = float(bool(self.full_seabed_damping))
+        env[K.E_COMPRESS] = float(bool(self.compression))
         return env
 
     def seabed_z(self, x) -> np.ndarray:
@@ -186,7 +191,7 @@ class MooringModel:
     def __post_init__(self, checked):
         net = self.network
         if not checked:
-            check_network(net, depth=self.water.depth, slope=self.water.slope)
+            check_network(net, depth=self.water.depth, slope=self.water.slope, profile=self.water.profile)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
@@ -495,11 +500,49 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations,{also} nor with the "
             f"step limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
-            f"tolerance of {stats[2]:.3g} N. Suggested fix: check that the line is long enough to reach its "
-            "fairlead and that buoys cannot lift it out of the water.", iterations=spent, residual=float(stats[1]))
+            f"tolerance of {stats[2]:.3g} N ({spent} iterations in all).{_held_end_hint(model, X0, tol)} Suggested "
+            "fix: check that the line is long enough to reach its fairlead and that buoys cannot lift it out of the "
+            "water.", iterations=spent, residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     _warn_sinking(model, X)
     return StaticState(X, tension, support, spent, float(stats[1]))
+
+
+def _held_end_hint(model: MooringModel, X0, tol: float) -> str:
+    """Why a line with an end held at a direction (clamped, or a rotational spring) may have no static equilibrium
+    (:func:`static_equilibrium`'s message; "" when it is not that).
+
+    The elements carry no compression (MoorDyn's rule). As the mesh is refined, the tension of a held end's end
+    element tends to the component of the line's force along the end's given direction, ``T cos(Delta)`` with
+    ``Delta`` the angle between the line's pull and that direction (the bending boundary layer turns the line,
+    not its force): a coarse end element's is larger by O(l). Where ``cos(Delta) <= 0`` (a steep wave's base
+    clamped straight up while the line pulls sideways or down) the end must carry compression: a fine mesh then
+    has no equilibrium. ``Delta`` and ``T`` are those of the line with its held ends pinned, solved here."""
+    net = model.network
+    held = [(line, end, direction) for line, end, _, _, direction in net.end_hinges]
+    if not held or model.water.compression:
+        return ""
+    try:
+        pinned = static_equilibrium(MooringModel(net.replace(end_hinges=()), model.water, checked=True), X0,
+                                    tol=tol)
+    except ConvergenceError:
+        return ""
+    out = []
+    for line, end, direction in held:
+        nodes = net.line_nodes[line]
+        ie, iw = (nodes[0], nodes[1]) if end == 0 else (nodes[-1], nodes[-2])
+        pull = pinned.position[iw] - pinned.position[ie]
+        into = np.asarray(direction, float) * (1.0 if end == 0 else -1.0)
+        cos = float(pull @ into / (np.linalg.norm(pull) * np.linalg.norm(into)))
+        T = float(np.linalg.norm(pinned.support[ie]))
+        if cos < 0.1:
+            out.append(f" Its end {'AB'[end]} is held at a direction {math.degrees(math.acos(min(max(cos, -1), 1))):.1f} "
+                       f"deg from the line's pull there (pinned, the line pulls with {T:.4g} N): the end element "
+                       f"would carry T cos(angle) = {T * cos:.4g} N, and the elements carry no compression, so a "
+                       "fine mesh has no equilibrium there. Let the elements carry compression (a mooring analysis's "
+                       "'compression: true'), or hold the end closer to the line's direction (or the line so that it "
+                       "pulls along the held direction: buoyancy nearer the end).")
+    return "".join(out)
 
 
 #: Elements a line takes in the coarse network of mesh sequencing (:func:`static_equilibrium`).
