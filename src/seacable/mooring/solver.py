@@ -500,7 +500,8 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations,{also} nor with the "
             f"step limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
-            f"tolerance of {stats[2]:.3g} N ({spent} iterations in all).{_held_end_hint(model, X0, tol)} Suggested "
+            f"tolerance of {stats[2]:.3g} N ({spent} iterations in all).{_held_end_hint(model, X0, tol)}"
+            f"{_seabed_current_hint(model, X)} Suggested "
             "fix: check that the line is long enough to reach its fairlead and that buoys cannot lift it out of the "
             "water.", iterations=spent, residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
@@ -543,6 +544,30 @@ def _held_end_hint(model: MooringModel, X0, tol: float) -> str:
                        "'compression: true'), or hold the end closer to the line's direction (or the line so that it "
                        "pulls along the held direction: buoyancy nearer the end).")
     return "".join(out)
+
+
+def _seabed_current_hint(model: MooringModel, X) -> str:
+    """Why a line lying on the seabed in a current may have no static equilibrium (:func:`static_equilibrium`'s
+    message; "" when it is not that): the statics have no friction (the seabed's Coulomb friction acts on the nodes'
+    velocity, in the dynamics), so a current at the seabed drags the grounded line with nothing to hold it; pushed
+    along itself towards its anchor it would take compression, which the elements do not carry. ``X`` is the last
+    state tried."""
+    from .outputs import height_above_seabed
+
+    water = model.water
+    if water.depth is None:
+        return ""
+    grounded = height_above_seabed(water, np.asarray(X, float)) <= 0.0
+    if not np.any(grounded):
+        return ""
+    speed = np.abs(np.interp(-np.asarray(X, float)[grounded, 2], water.current_depths, water.current_speeds))
+    if float(np.max(speed)) <= 0.0:
+        return ""
+    return (f" The current at the seabed ({float(np.max(speed)):.3g} m/s where the line lies on it) drags the grounded "
+            "line, and the statics have no friction to hold it (the seabed's friction acts on the nodes' velocity, in "
+            "the dynamics): pushed towards its anchor, a grounded line has no equilibrium. Give a current profile that "
+            "falls to zero at the seabed (environment.current depths and speeds), as the seabed's boundary layer "
+            "does.")
 
 
 #: Elements a line takes in the coarse network of mesh sequencing (:func:`static_equilibrium`).
