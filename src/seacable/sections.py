@@ -36,7 +36,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from typing import Annotated, Literal
+from typing import Annotated, ClassVar, Literal
 
 import numpy as np
 from pydantic import Field, model_serializer, model_validator
@@ -191,7 +191,29 @@ class Cone(Model):
         Field(description="Young's modulus of the stiffener's material. [Pa]")
 
 
-class BendStiffener(Model):
+class _AtLineEnd:
+    """What a section running ``length`` from one end of the line (``end``, "A" or "B") does: a bend stiffener, a
+    bend restrictor (``_NOUN`` names it in messages)."""
+
+    _NOUN: ClassVar[str] = "section"
+
+    def distance_from_root(self, s, line_length: float):
+        """Distance from the end it runs from (its root) of points at arc lengths ``s`` from end A. [m]"""
+        s = np.asarray(s, float)
+        return s if self.end == "A" else line_length - s
+
+    def check_on(self, line) -> None:
+        """Refuse a section longer than the segment at its end."""
+        k = 0 if self.end == "A" else len(line.segments) - 1
+        seg = line.segments[k]
+        if self.length > seg.length * (1 + 1e-9):
+            noun = self._NOUN.split()[-1]
+            raise ValueError(f"the {self._NOUN} at end {self.end} is {self.length:g} m long, longer than the "
+                             f"segment it sits on (line.segments[{k}], {seg.length:g} m). Suggested fix: "
+                             f"shorten the {noun}, or make that segment at least {self.length:g} m long.")
+
+
+class BendStiffener(_AtLineEnd, Model):
     """A bend stiffener at one end of the line: bending stiffness over the cable's own, tapered along it.
 
     Parameters
@@ -222,6 +244,7 @@ class BendStiffener(Model):
         A label.
     """
 
+    _NOUN: ClassVar[str] = "bend stiffener"
     type: Literal["bend_stiffener"] = "bend_stiffener"
     end: Literal["A", "B"] = Field("B", description="End of the line with the stiffener's root.")
     length: quantity("m", gt=0, fix="give the stiffener's length from the end to its tip in metres.") = Field(
@@ -349,22 +372,9 @@ class BendStiffener(Model):
             ei = c.modulus * math.pi / 64.0 * np.maximum(dia**4 - cable_diameter**4, 0.0)
         return np.where(inside, ei, 0.0)
 
-    def distance_from_root(self, s, line_length: float):
-        """Distance from the root of points at arc lengths ``s`` from end A. [m]"""
-        s = np.asarray(s, float)
-        return s if self.end == "A" else line_length - s
-
-    def check_on(self, line) -> None:
-        """Refuse a stiffener longer than the segment at its end."""
-        k = 0 if self.end == "A" else len(line.segments) - 1
-        seg = line.segments[k]
-        if self.length > seg.length * (1 + 1e-9):
-            raise ValueError(f"the bend stiffener at end {self.end} is {self.length:g} m long, longer than the "
-                             f"segment it sits on (line.segments[{k}], {seg.length:g} m). Suggested fix: "
-                             f"shorten the stiffener, or make that segment at least {self.length:g} m long.")
 
 
-class BendRestrictor(Model):
+class BendRestrictor(_AtLineEnd, Model):
     """A bend restrictor (interlocking vertebrae) at one end of the line: free to bend up to its locking radius,
     then locked.
 
@@ -395,6 +405,7 @@ class BendRestrictor(Model):
         A label.
     """
 
+    _NOUN: ClassVar[str] = "bend restrictor"
     type: Literal["bend_restrictor"] = "bend_restrictor"
     end: Literal["A", "B"] = Field("B", description="End of the line it runs from.")
     length: quantity("m", gt=0, fix="give the restrictor's length from the end in metres.") = Field(
@@ -413,19 +424,6 @@ class BendRestrictor(Model):
         1150.0, description="Density of the vertebrae's material. [kg/m^3]")
     name: str | None = None
 
-    def distance_from_root(self, s, line_length: float):
-        """Distance from the end it runs from of points at arc lengths ``s`` from end A. [m]"""
-        s = np.asarray(s, float)
-        return s if self.end == "A" else line_length - s
-
-    def check_on(self, line) -> None:
-        """Refuse a restrictor longer than the segment at its end."""
-        k = 0 if self.end == "A" else len(line.segments) - 1
-        seg = line.segments[k]
-        if self.length > seg.length * (1 + 1e-9):
-            raise ValueError(f"the bend restrictor at end {self.end} is {self.length:g} m long, longer than the "
-                             f"segment it sits on (line.segments[{k}], {seg.length:g} m). Suggested fix: "
-                             f"shorten the restrictor, or make that segment at least {self.length:g} m long.")
 
 
 # clamps and tethers to the seabed (:mod:`seacable.ties`) are sections too: the finite-element line takes them
