@@ -552,15 +552,14 @@ def _seabed_current_hint(model: MooringModel, X) -> str:
     velocity, in the dynamics), so a current at the seabed drags the grounded line with nothing to hold it; pushed
     along itself towards its anchor it would take compression, which the elements do not carry. ``X`` is the last
     state tried."""
-    from .outputs import height_above_seabed
-
     water = model.water
     if water.depth is None:
         return ""
-    grounded = height_above_seabed(water, np.asarray(X, float)) <= 0.0
+    X = np.asarray(X, float)
+    grounded = X[:, 2] <= water.seabed_z(X[:, 0])  # on the seabed or in it (the penalty contact)
     if not np.any(grounded):
         return ""
-    speed = np.abs(np.interp(-np.asarray(X, float)[grounded, 2], water.current_depths, water.current_speeds))
+    speed = np.abs(np.interp(-X[grounded, 2], water.current_depths, water.current_speeds))
     if float(np.max(speed)) <= 0.0:
         return ""
     return (f" The current at the seabed ({float(np.max(speed)):.3g} m/s where the line lies on it) drags the grounded "
