@@ -548,10 +548,12 @@ def _bending(eq, setup: SystemSetup) -> dict:
     got = line_bending(fe, eq.state.position, directions)
     net = fe.model.network
     got["fe_s"] = np.array([np.r_[0.0, np.cumsum(net.length[e])] for e in fe.line_elements], dtype=object)
+    for c, axis in enumerate("xyz"):  # the shape the bending is of: the nodes' positions
+        got[f"fe_{axis}"] = np.array([eq.state.position[nodes, c] for nodes in fe.line_nodes], dtype=object)
     out = {}
     for name, values in got.items():
         rows = {line: values[i] for i, line in enumerate(fe.line_names)}
-        width = max(len(v) for v in values) if name == "fe_s" else values.shape[-1]
+        width = max(len(v) for v in values) if values.dtype == object else values.shape[-1]
         out[name] = np.array([np.pad(np.asarray(rows[line], float), (0, width - len(rows[line])),
                                      constant_values=np.nan) if line in rows else np.full(width, np.nan)
                               for line in setup.lines])
@@ -576,6 +578,9 @@ def _bending_variables(bends: list[dict], data: dict, coords: dict) -> None:
     for name, (where, units, long_name) in BENDING.items():
         data[name] = var(("condition", "line", f"fe_{where}"), np.stack([padded(b, name) for b in bends]), units,
                          long_name + " (at the finite-element nodes)")
+    for axis, long_name in (("x", "x position"), ("y", "y position"), ("z", "elevation (0 at the still water level)")):
+        data[f"fe_{axis}"] = var(("condition", "line", "fe_node"), np.stack([padded(b, f"fe_{axis}") for b in bends]),
+                                 "m", long_name + " of the finite-element node")
     s = np.fmax.reduce([padded(b, "fe_s") for b in bends])
     coords["fe_node"] = var("fe_node", np.arange(widths["fe_s"]), "1", "finite-element node along the line, 0 at end A")
     coords["fe_element"] = var("fe_element", np.arange(widths["shear_force"]), "1",

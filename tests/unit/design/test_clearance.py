@@ -169,6 +169,19 @@ def test_the_66kv_cable_in_its_mooring_system_keeps_clear_of_the_chains():
     assert near["chain2"].distance == pytest.approx(to_hang_off, rel=0.05)  # the cable leaves it 10 deg off vertical
     check = line_clearance_check(ds, "cable")
     assert check.passed and check.limit == 20.0 and check.value == pytest.approx(near["chain2"].distance)
+    # the finite-element shape the curvature is of (fe_x, fe_y, fe_z): its hinges' 4 sin(theta/2) / (l1 + l2) at the
+    # inner nodes are the result's curvature (the discrete rod's; 7e-9 1/m apart at most, where the grounded cable's
+    # hinges are straight to 1e-8 and arccos loses its digits), its ends the profile's
+    cable = ds.sel(line="cable").isel(condition=0)
+    xyz = np.stack([cable[f"fe_{c}"].values for c in "xyz"], axis=-1)
+    xyz = xyz[np.isfinite(xyz).all(axis=1)]
+    d = np.diff(xyz, axis=0)
+    length = np.linalg.norm(d, axis=1)
+    t = d / length[:, None]
+    theta = np.arccos(np.clip(np.sum(t[:-1] * t[1:], axis=1), -1.0, 1.0))
+    kappa = 4.0 * np.sin(theta / 2.0) / (length[:-1] + length[1:])
+    assert kappa == pytest.approx(cable.curvature.values[1:len(xyz) - 1], rel=1e-9, abs=1e-8)
+    assert xyz[-1] == pytest.approx([float(cable[c].values[np.isfinite(cable[c].values)][-1]) for c in "xyz"])
 
 
 def test_the_66kv_cable_system_runs_in_time_and_its_range_graphs_read_the_element_tensions(tmp_path):
