@@ -383,9 +383,18 @@ class CableLimits:
                    design.hog_bend_clearance, design.hang_off_declination)
 
 
-def _segments(data: dict) -> list[tuple[float, float, dict]]:
-    """``(s_start, s_end, line type)`` of the case's line segments, from end A. [m]"""
+def _segments(data: dict, name: str | None = None) -> list[tuple[float, float, dict]]:
+    """``(s_start, s_end, line type)`` of the case's line segments, from end A: a single-line case's ``line``, or a
+    system case's line ``name`` (its ``segments``, or its one ``line_type`` and ``length``, in the file's form or
+    under ``line`` as a result stores it). [m]"""
     line = data.get("line") or {}
+    lines = data.get("lines")
+    if name is not None and isinstance(lines, dict) and isinstance(lines.get(name), dict):
+        line = lines[name]
+        if isinstance(line.get("line"), dict):  # the case as a result stores it: the line under its own key
+            line = line["line"]
+        if not line.get("segments") and line.get("line_type") is not None:
+            line = {"segments": [{"line_type": line["line_type"], "length": line.get("length")}]}
     types = data.get("line_types") or {}
     out, s0 = [], 0.0
     for seg in line.get("segments") or []:
@@ -416,13 +425,15 @@ def _by_arc_length(segments, s: np.ndarray, key: str, stricter) -> np.ndarray | 
 
 
 def cable_limits(ds: xr.Dataset) -> CableLimits:
-    """The cable checks' limits from the case a single-line result records (its ``case`` attribute): the line
-    types' ``minimum_bend_radius``, ``minimum_bend_radius_dynamic``, ``allowable_tension`` and
+    """The cable checks' limits from the case a result records (its ``case`` attribute; a system result's line
+    selected, ``ds.sel(line=NAME)``): the line types' ``minimum_bend_radius``, ``minimum_bend_radius_dynamic``, ``allowable_tension`` and
     ``allowable_compression`` at each node by its arc length (at a joint, the stricter: the larger MBR, the
     smaller allowable), and the analysis's ``design`` block (:class:`seacable.case.CableDesign`); the defaults
     (no MBR or allowable tension, no compression, clearances 0 m, no declination range) where it has none."""
     data = case_data(ds) or {}
-    segments = _segments(data)
+    # a system result's line, selected (ds.sel(line=NAME)): its own segments in the system case
+    name = str(ds["line"].values) if "line" in ds.coords and ds["line"].ndim == 0 else None
+    segments = _segments(data, name)
     s = np.asarray(ds["s"].values, float)
     if "line" in ds["s"].dims:
         s = s[0]

@@ -214,3 +214,12 @@ def test_the_66kv_cable_system_runs_in_time_and_its_range_graphs_read_the_elemen
                                                                          .sel(line="cable"))), rel=1e-12)
     plot_range_graphs(range_graphs(ds, "chain1"))  # its s padded with NaN past its 41 nodes
     assert line_clearance_check(ds, "cable").passed
+    # a system line's limits are its own line type's (the system case's lines.cable): the MBR checks are made
+    from seacable.design.cable import cable_checks, cable_limits
+
+    limits = cable_limits(ds.sel(line="cable"))
+    assert np.nanmin(limits.minimum_bend_radius) == 2.37 and np.nanmax(limits.minimum_bend_radius_dynamic) == 3.55
+    assert np.nanmin(limits.allowable_tension) == 4.309e5
+    mbr = next(c for c in cable_checks(ds, limits, "cable") if c.check == "curvature (dynamic MBR)")
+    assert mbr.utilisation == pytest.approx(float(ds.curvature.sel(line="cable").max()) * 3.55, rel=1e-12)
+    assert cable_limits(ds.sel(line="chain1")).minimum_bend_radius is None  # the chain's type gives none
