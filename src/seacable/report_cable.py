@@ -40,10 +40,11 @@ from .design.cable_fatigue import SNCurve, cable_fatigue_damage
 from .design.clearance import line_clearance_check
 from .errors import InputError
 
-__all__ = ["CABLE_CSV_UNITS", "STATIC_ANALYSES", "armour_fatigue_table", "make_static_report", "offset_table"]
+__all__ = ["CABLE_CSV_UNITS", "STATIC_ANALYSES", "armour_fatigue_table", "make_static_report", "offset_table",
+           "system_cable_view"]
 
 #: The static analyses whose results of a cable :func:`make_static_report` reports.
-STATIC_ANALYSES = ("mooring_static", "mooring_pushover")
+STATIC_ANALYSES = ("mooring_static", "mooring_pushover", "system_static")
 
 #: Seconds in a year (365.25 days), for a record's damage as if it lasted the year. [s]
 YEAR = 365.25 * 86400.0
@@ -389,6 +390,42 @@ def _limits_html(limits, data: dict) -> str:
                  f"{_num(float(design['line_clearance']))} m (a system result's)")])
 
 
+def system_cable_view(ds, line: str | None = None):
+    """A ``system_static`` result's cable as a single line's static result: its finite-element nodes' shape
+    (``fe_x``, ``fe_y``, ``fe_z``), tensions and bending outputs on ``node`` and ``element`` with ``s``, in the intact
+    condition, the result's attributes (its case) and the line's name as a scalar coordinate ``line`` (its limits:
+    :func:`seacable.design.cable.cable_limits`). ``line`` None: the first line that bends (a line without bending
+    stiffness has zero curvature).
+
+    Raises
+    ------
+    InputError
+        A result without a line with curvature, or a ``line`` it does not hold.
+    """
+    import xarray as xr
+
+    names = [str(v) for v in ds["line"].values]
+    # a line without bending stiffness has its curvature 0 (a chain); a cable's bends
+    bends = [n for n in names if np.nanmax(np.abs(ds["curvature"].sel(line=n).values), initial=0.0) > 0.0]
+    if line is None and bends:
+        line = bends[0]
+    if line not in bends:
+        raise InputError(f"the system result has no line {line!r} with curvature (lines with bending stiffness: "
+                         f"{bends or 'none'}). Suggested fix: give one of them.")
+    one = ds.sel(line=line)
+    if "condition" in one.dims:
+        one = one.isel(condition=0)  # the intact condition
+    s = np.asarray(one["fe_s"].values, float)
+    n = int(np.isfinite(s).sum())
+    node = {k: ("node", np.asarray(one[f"fe_{k}"].values, float)[:n]) for k in "xyz"}
+    node.update({k: ("node", np.asarray(one[k].values, float)[:n]) for k in ("curvature", "bend_moment", "declination")})
+    element = {"segment_tension": ("element", np.asarray(one["fe_segment_tension"].values, float)[:n - 1]),
+               "shear_force": ("element", np.asarray(one["shear_force"].values, float)[:n - 1])}
+    view = xr.Dataset({**node, **element}, coords={"s": ("node", s[:n]), "line": line}, attrs=dict(ds.attrs))
+    view["tension"] = cable_.node_tension(view["segment_tension"])
+    return view
+
+
 def make_static_report(ds, output: Path, source_label: str) -> list[Path]:
     """The report of a static or pushover result of a cable: one HTML page (inputs and limits, the shape, the
     cable checks against the static MBR, per offset, the range graphs) and the CSV and NetCDF tables beside it
@@ -406,14 +443,20 @@ def make_static_report(ds, output: Path, source_label: str) -> list[Path]:
     analysis = str(ds.attrs.get("analysis", ""))
     if analysis not in STATIC_ANALYSES or not cable_.has_curvature(ds):
         raise InputError(f"the result has analysis '{analysis}'{'' if cable_.has_curvature(ds) else ' and no curvature'}"
-                         ": the static cable report takes a mooring_static or mooring_pushover result of a line with "
+                         ": the static cable report takes a mooring_static, mooring_pushover or system_static result of a line with "
                          "bending stiffness. Suggested fix: give the cable's EI (line_types.*.bending_stiffness).")
+    system = ds if analysis == "system_static" else None
+    if system is not None:  # the system's cable, as a single line's static result; its distance to the others
+        ds = system_cable_view(system)
     data = ds_.case_data(ds) or {}
     name = str(ds.attrs.get("case_name") or "result")
     line = None
     limits = cable_.cable_limits(ds)
-    checks = cable_.cable_check_table(cable_.cable_checks(ds, limits))
-    line_name = ds_.line_names(ds)[0]
+    rows = cable_.cable_checks(ds, limits)
+    line_name = str(ds["line"].values) if system is not None else ds_.line_names(ds)[0]
+    if system is not None and _line_clearance(system) is not None:
+        rows.append(line_clearance_check(system, line_name))
+    checks = cable_.cable_check_table(rows)
     for col, value in (("line", line_name), ("seed", None), ("case", name), ("load_case", name)):
         checks.insert(0, col, value)
     offsets = offset_table(ds, limits, line)

@@ -69,6 +69,30 @@ def test_a_static_result_of_a_cable_gets_its_own_page_with_each_check_and_its_ut
         float(ds.segment_tension.max()) / 2.0e4, rel=1e-12)
 
 
+def test_a_system_static_result_of_a_cable_gets_the_page_of_its_cable_with_its_clearance(tmp_path):
+    """examples/cable_66kv_system.yaml: the page of the system's cable (the line that bends: the chains' curvature is
+    0), on its finite-element shape, its limits its own line type's, and its distance to the chains as a row."""
+    from seacable.design.clearance import line_distance
+    from seacable.report_cable import system_cable_view
+
+    ds = sc.run(sc.load_case(EXAMPLES / "cable_66kv_system.yaml"))
+    page = tmp_path / "system.html"
+    make_report(ds, page)
+    text = page.read_text(encoding="utf-8")
+    assert "<td>cable</td>" in text and "system_static" in text
+    table = pd.read_csv(tmp_path / "system_cable_checks.csv").set_index("check")
+    view = system_cable_view(ds)
+    assert str(view["line"].values) == "cable" and view.sizes["node"] == 281  # its 280 finite elements
+    kappa = float(np.nanmax(ds.curvature.sel(line="cable").values))
+    assert table.loc["curvature (static MBR)", "utilisation [-]"] == pytest.approx(kappa * 2.37, rel=1e-12)
+    assert table.loc["tension", "value [see unit]"] == pytest.approx(
+        float(np.nanmax(ds.fe_segment_tension.sel(line="cable"))))
+    nearest = min(d.distance for d in line_distance(ds, "cable"))
+    assert table.loc["line clearance", "value [see unit]"] == pytest.approx(nearest) and table.loc["line clearance", "status"] \
+        == "pass"
+    assert (table["status"].isin(["pass"]) | table["status"].str.startswith("not checked")).all()
+
+
 def test_the_pushover_page_has_a_row_an_offset_whose_worst_is_the_checks(pushover, tmp_path):
     page = tmp_path / "push.html"
     make_report(pushover, page)

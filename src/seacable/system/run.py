@@ -550,6 +550,7 @@ def _bending(eq, setup: SystemSetup) -> dict:
     got["fe_s"] = np.array([np.r_[0.0, np.cumsum(net.length[e])] for e in fe.line_elements], dtype=object)
     for c, axis in enumerate("xyz"):  # the shape the bending is of: the nodes' positions
         got[f"fe_{axis}"] = np.array([eq.state.position[nodes, c] for nodes in fe.line_nodes], dtype=object)
+    got["fe_segment_tension"] = np.array([eq.state.tension[els] for els in fe.line_elements], dtype=object)
     out = {}
     for name, values in got.items():
         rows = {line: values[i] for i, line in enumerate(fe.line_names)}
@@ -581,6 +582,9 @@ def _bending_variables(bends: list[dict], data: dict, coords: dict) -> None:
     for axis, long_name in (("x", "x position"), ("y", "y position"), ("z", "elevation (0 at the still water level)")):
         data[f"fe_{axis}"] = var(("condition", "line", "fe_node"), np.stack([padded(b, f"fe_{axis}") for b in bends]),
                                  "m", long_name + " of the finite-element node")
+    data["fe_segment_tension"] = var(("condition", "line", "fe_element"),
+                                     np.stack([padded(b, "fe_segment_tension") for b in bends]), "N",
+                                     "effective tension of the finite element")
     s = np.fmax.reduce([padded(b, "fe_s") for b in bends])
     coords["fe_node"] = var("fe_node", np.arange(widths["fe_s"]), "1", "finite-element node along the line, 0 at end A")
     coords["fe_element"] = var("fe_element", np.arange(widths["shear_force"]), "1",
