@@ -90,8 +90,8 @@ class LineDistance:
     s, s_other
         Where: the unstretched arc length from end A of the closest point on each. [m]
     time
-        When: the state's time [s] (a system_static's: its condition's value, else its index; NaN for a result of one
-        state).
+        When: the state's time [s] (NaN for a static result: one state, or a system_static's conditions; its
+        ``history`` is on the conditions).
     position, position_other
         The closest points, (x, y, z). [m]
     history
@@ -202,7 +202,7 @@ def line_distance(ds: xr.Dataset, line: str, others=None, *, block: int = 2_000_
                                attrs={"units": "m", "long_name": f"smallest distance from {line} to {other}"})
         out.append(LineDistance(line, other, float(best[kt]), float(sp[i] + a * (sp[i + 1] - sp[i])),
                                 float(sq[j] + b * (sq[j + 1] - sq[j])),
-                                float(times[kt]) if times is not None else math.nan,
+                                float(times[kt]) if states == "time" else math.nan,
                                 tuple(float(v) for v in pos), tuple(float(v) for v in pos_o), history))
     return out
 
