@@ -1,7 +1,10 @@
-"""Small synthetic results of time-domain mooring runs, for the design tables and the report."""
+"""Small synthetic results of time-domain mooring runs, for the design tables and the report; the report pages'
+browser checks (headless Chromium)."""
 
 from __future__ import annotations
 
+import subprocess
+from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
@@ -121,3 +124,40 @@ def count_colours(pixels) -> int:
 def n_colours():
     """:func:`count_colours`: the plot tests' check that something was drawn."""
     return count_colours
+
+
+# ------------------------------------------------------------------------------- a page in a real browser
+
+#: Debian's headless Chromium (the 'chromium' package: .ci/run installs it); the browser tests skip without it
+CHROMIUM = "/usr/bin/chromium"
+
+
+def _start_chromium(page: Path, png: Path, profile: Path, size=(1280, 5000)) -> subprocess.Popen:
+    """Start headless Chromium on ``page``, to write its screenshot (:func:`_console` waits for it)."""
+    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+           "--disable-background-networking", "--disable-component-update", "--disable-sync",
+           f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
+           f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
+    return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def _console(browser: subprocess.Popen) -> list[str]:
+    """Wait for a Chromium of :func:`_start_chromium`, its screenshot written; the console lines it logged."""
+    try:
+        _, stderr = browser.communicate(timeout=180)
+    finally:
+        browser.kill()
+    assert browser.returncode == 0, stderr[-2000:]
+    return [line for line in stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
+
+
+def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
+    """Pixels of ``rgb`` (h, w, 3) within ``tol`` of ``colour`` in every channel."""
+    return int(np.sum(np.all(np.abs(rgb - np.array(colour)) <= tol, axis=-1)))
+
+
+@pytest.fixture(scope="session")
+def browser():
+    """The report pages' browser checks: ``start(page, png, profile, size)`` (headless Chromium writing ``png``),
+    ``console(process)`` (waits; the console lines it logged) and ``near(rgb, colour, tol)`` (pixels of a colour)."""
+    return SimpleNamespace(start=_start_chromium, console=_console, near=_near)

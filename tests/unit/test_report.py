@@ -10,7 +10,6 @@ import io
 import math
 import re
 import shutil
-import subprocess
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -366,32 +365,9 @@ def test_a_missing_source_or_another_analysis_is_refused(synth, tmp_path, capsys
 
 # ------------------------------------------------------------------------------------------ in a real browser
 
-def _start_chromium(page: Path, png: Path, profile: Path, size=(1280, 5000)) -> subprocess.Popen:
-    """Start headless Chromium on ``page``, to write its screenshot (:func:`_console` waits for it)."""
-    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-           "--disable-background-networking", "--disable-component-update", "--disable-sync",
-           f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
-           f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
-    return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-
-
-def _console(browser: subprocess.Popen) -> list[str]:
-    """Wait for a Chromium of :func:`_start_chromium`, its screenshot written; the console lines it logged."""
-    try:
-        _, stderr = browser.communicate(timeout=180)
-    finally:
-        browser.kill()
-    assert browser.returncode == 0, stderr[-2000:]
-    return [line for line in stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
-
-
-def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int = 12) -> int:
-    return int(np.sum(np.all(np.abs(rgb - np.array(colour)) <= tol, axis=-1)))
-
-
 @pytest.mark.skipif(shutil.which(CHROMIUM) is None,
                     reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
-def test_the_report_renders_in_headless_chromium(storm_report, tmp_path):
+def test_the_report_renders_in_headless_chromium(storm_report, tmp_path, browser):
     from PIL import Image
 
     # the page of the CSV test (built once for both; this test built its own for the runs' duration, the same page
@@ -402,16 +378,16 @@ def test_the_report_renders_in_headless_chromium(storm_report, tmp_path):
     # third browser, 2 to 4 s on a loaded 2-core machine)
     out, _ = storm_report
     png = tmp_path / "report.png"
-    report_browser = _start_chromium(out, png, tmp_path / "profile")
+    report_browser = browser.start(out, png, tmp_path / "profile")
     planted = tmp_path / "planted.html"
     planted.write_text("<html><body><script>console.error('planted'); missing();</script></body></html>")
     blank = tmp_path / "blank.png"
-    planted_browser = _start_chromium(planted, blank, tmp_path / "profile0")
+    planted_browser = browser.start(planted, blank, tmp_path / "profile0")
     # the console is read: a page with an error in its console is caught
-    lines = _console(planted_browser)
+    lines = browser.console(planted_browser)
     assert any("planted" in line for line in lines) and any("Uncaught" in line for line in lines)
 
-    assert _console(report_browser) == []  # no console message at all
+    assert browser.console(report_browser) == []  # no console message at all
     rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
     assert rgb.shape == (5000, 1280, 3)
     # non-background pixels: any channel 10 levels off white. A blank page has none; a page of text alone
@@ -429,10 +405,10 @@ def test_the_report_renders_in_headless_chromium(storm_report, tmp_path):
     # green (#2e7d32: 60 000 px) and the failing bar's red (#c62828, also the FAIL badge: 11 000 px). The same
     # page without its figures has 65 px of that green, 950 px of that red and none of that blue. The 3-hour
     # storm's page: 195 000, 4 300, 50 000 and 10 900 px.
-    assert _near(rgb, (0xEE, 0xF2, 0xF6), 2) > 20_000
-    assert _near(rgb, (0x00, 0x72, 0xB2)) > 1_500
-    assert _near(rgb, (0x2E, 0x7D, 0x32)) > 10_000
-    assert _near(rgb, (0xC6, 0x28, 0x28)) > 4_000
+    assert browser.near(rgb, (0xEE, 0xF2, 0xF6), 2) > 20_000
+    assert browser.near(rgb, (0x00, 0x72, 0xB2)) > 1_500
+    assert browser.near(rgb, (0x2E, 0x7D, 0x32)) > 10_000
+    assert browser.near(rgb, (0xC6, 0x28, 0x28)) > 4_000
 
 
 def test_failed_cases_are_listed_and_left_out(synth, tmp_path, files_only):
@@ -567,7 +543,7 @@ def test_a_report_inside_its_sweep_folder_names_the_folder_in_words(synth, tmp_p
 
 @pytest.mark.skipif(shutil.which(CHROMIUM) is None,
                     reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
-def test_the_cable_section_renders_in_headless_chromium(tmp_path):
+def test_the_cable_section_renders_in_headless_chromium(tmp_path, browser):
     """A cable's report (issue 40: range graphs and checks of a clamped 160 m cable, EI 2e4 N m^2, 3 s of hang-off
     motion) in a real browser: no console message, and its section drawn. Without the cable section the page is
     the mooring tables alone; with it, the range graphs' five panels add their light-blue min-to-max bands
@@ -578,21 +554,17 @@ def test_the_cable_section_renders_in_headless_chromium(tmp_path):
     import seacable as sc
     from seacable.report import make_report
 
-    ds = sc.run(sc.Case(**{
-        "name": "hang",
-        "line_types": {"cable": {"diameter": 0.15, "mass_per_length": 40, "axial_stiffness": 5e8,
+    ds = sc.run(sc.Case(name="hang", line_types={"cable": {"diameter": 0.15, "mass_per_length": 40, "axial_stiffness": 5e8,
                                  "bending_stiffness": 2e4, "minimum_bend_radius": 2.0,
-                                 "minimum_bend_radius_dynamic": 4.0, "allowable_tension": 2.5e4}},
-        "line": {"line_type": "cable", "length": 160}, "environment": {"depth": 100},
-        "analysis": {"type": "mooring_dynamic", "anchor": [0, -100], "fairlead": [80, -10], "n_elements": 20,
+                                 "minimum_bend_radius_dynamic": 4.0, "allowable_tension": 2.5e4}}, line={"line_type": "cable", "length": 160}, environment={"depth": 100}, analysis={"type": "mooring_dynamic", "anchor": [0, -100], "fairlead": [80, -10], "n_elements": 20,
                      "fairlead_end_condition": {"type": "clamped", "declination": 0.1},
                      "duration": 3.0, "time_step": 0.1, "output_interval": 0.5,
-                     "motion": {"type": "harmonic", "amplitude": [1.0, 0.0, 0.5], "period": 4.0, "ramp": 1.0}}}))
+                     "motion": {"type": "harmonic", "amplitude": [1.0, 0.0, 0.5], "period": 4.0, "ramp": 1.0}}))
     page = tmp_path / "report.html"
     make_report(ds, page)
     assert "6. Cable: range graphs and checks" in page.read_text()
     png = tmp_path / "report.png"
-    assert _console(_start_chromium(page, png, tmp_path / "profile", size=(1280, 8000))) == []
+    assert browser.console(browser.start(page, png, tmp_path / "profile", size=(1280, 8000))) == []
     rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
-    assert _near(rgb, (191, 219, 235), 3) > 20_000
-    assert _near(rgb, (206, 59, 59), 3) > 800
+    assert browser.near(rgb, (191, 219, 235), 3) > 20_000
+    assert browser.near(rgb, (206, 59, 59), 3) > 800

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import math
 import shutil
-import subprocess
 from pathlib import Path
 
 import numpy as np
@@ -175,31 +174,9 @@ def test_bad_design_limits_are_refused_by_validate_and_run(tmp_path, capsys, des
     assert not (tmp_path / "out.nc").exists()
 
 
-def _start_chromium(page: Path, png: Path, profile: Path, size) -> subprocess.Popen:
-    """Headless Chromium on ``page`` writing its screenshot (as tests/unit/test_report.py starts it)."""
-    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-           "--disable-background-networking", "--disable-component-update", "--disable-sync",
-           f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
-           f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
-    return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-
-
-def _console(browser: subprocess.Popen) -> list[str]:
-    try:
-        _, stderr = browser.communicate(timeout=180)
-    finally:
-        browser.kill()
-    assert browser.returncode == 0, stderr[-2000:]
-    return [line for line in stderr.splitlines() if "CONSOLE" in line or "Uncaught" in line]
-
-
-def _near(rgb: np.ndarray, colour: tuple[int, int, int], tol: int) -> int:
-    return int(np.sum(np.all(np.abs(rgb - np.array(colour)) <= tol, axis=-1)))
-
-
 @pytest.mark.skipif(shutil.which(CHROMIUM) is None,
                     reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
-def test_the_pushover_page_renders_in_headless_chromium(pushover, tmp_path):
+def test_the_pushover_page_renders_in_headless_chromium(pushover, tmp_path, browser):
     """The page of a pushover in a real browser: no console message; its shape figure drawn (the seabed's brown,
     (140, 109, 70): 1 770 px when this was written, none on the same page without its figures), its range graphs'
     light-blue bands ((191, 219, 235): 8 130 px, none without the figures) and the tables' PASS badges' green
@@ -209,8 +186,8 @@ def test_the_pushover_page_renders_in_headless_chromium(pushover, tmp_path):
     page = tmp_path / "push.html"
     make_report(pushover, page)
     png = tmp_path / "push.png"
-    assert _console(_start_chromium(page, png, tmp_path / "profile", size=(1280, 4000))) == []
+    assert browser.console(browser.start(page, png, tmp_path / "profile", size=(1280, 4000))) == []
     rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
-    assert _near(rgb, (140, 109, 70), 3) > 800
-    assert _near(rgb, (191, 219, 235), 3) > 4000
-    assert _near(rgb, (227, 241, 228), 3) > 3000
+    assert browser.near(rgb, (140, 109, 70), 3) > 800
+    assert browser.near(rgb, (191, 219, 235), 3) > 4000
+    assert browser.near(rgb, (227, 241, 228), 3) > 3000
