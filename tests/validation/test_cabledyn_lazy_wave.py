@@ -102,48 +102,30 @@ def test_cabledyn_runs_the_same_data(tmp_path):
 
 
 # CableDyn's example decks of the two deeper installed cables of Lozon et al. (2025), lozon_gomaine200_power_cable.dat
-# and lozon_humboldt800_power_cable.dat (their numbers; of the solver options only the step and TMax 0, statics only):
+# and lozon_humboldt800_power_cable.dat, written from their numbers by _cabledyn_peer.write_deck:
 # (site, depth [m], buoyant section's diameter [m] and mass [kg/m], sections' lengths [m] and element counts from the
 # hang-off)
 INSTALLED = {
     "gomaine200": (200.0, 0.300, 60.85, ((171.978, 464), (60.0, 160), (121.527, 328))),
     "humboldt800": (800.0, 0.290, 59.17, ((372.449, 256), (400.0, 256), (597.981, 512))),
 }
-INSTALLED_DECK = """--------------------- CableDyn Input File ------------------------------------
-Lozon et al. (2025) {site} installed lazy-wave dynamic power cable (CableDyn's example deck)
---------------------- LINE TYPES ---------------------------------------------
-TypeName  Diam   MassDenInAir  EA       BA   EI       Cd_n  Cd_t  Ca_n  Ca_t
-(-)       (m)    (kg/m)        (N)      (-)  (N-m2)   (-)   (-)   (-)   (-)
-bare      0.160  36.70         4.69e8   0.0  1.99e4   1.2   0.1   1.0   0.0
-buoy      {d:.3f}  {m:.2f}         4.69e8   0.0  1.99e4   1.2   0.1   1.0   0.0
---------------------- POINTS ------------------------------------------------
-ID  Type     X       Y    Z
-(-) (-)      (m)     (m)  (m)
-1   Coupled  5.0     0.0  -14.0
-2   Fixed    {x:.1f}   0.0  -{depth:.1f}
---------------------- LINES -------------------------------------------------
-ID  NodeA  NodeB  Outputs
-(-) (-)    (-)    (-)
-1   1      2      -
---------------------- SECTIONS ----------------------------------------------
-LineID  LineType  Length   NumSegs
-(-)     (-)       (m)      (-)
-1       bare      {l0:.3f}  {n0}
-1       buoy      {l1:.3f}  {n1}
-1       bare      {l2:.3f}  {n2}
---------------------- OPTIONS -----------------------------------------------
-9.80665  g
-1025.0   rhoW
-{depth:.1f}    WtrDpth
-1.0e5    kBot
-1.0e4    cBot
-0.05     dtM
-0.0      TMax
---------------------- OUTPUTS -----------------------------------------------
-"FairTen1"
-"AnchTen1"
---------------------- need this line ----------------------------------------
-"""
+
+
+def _installed(site: str) -> sc.Case:
+    """The installed cable of ``site`` as a seacable case, its seabed end 800 (200) m from the hang-off 14 m down,
+    the deck's seabed stiffness and damping (kBot 1e5 Pa/m, cBot 1e4 Pa s/m)."""
+    depth, diameter, mass, sections = INSTALLED[site]
+    bare = {"diameter": 0.16, "mass_per_length": 36.7, "axial_stiffness": 4.69e8, "bending_stiffness": 1.99e4,
+            "drag_normal": 1.2, "drag_tangential": 0.1, "added_mass_normal": 1.0}
+    types = ("bare", "buoy", "bare")  # from the hang-off, as the sections
+    return sc.Case.parse({
+        "name": f"lozon_{site}", "line_types": {"bare": bare, "buoy": {**bare, "diameter": diameter,
+                                                                          "mass_per_length": mass}},
+        "line": {"segments": [{"line_type": t, "length": length, "n_elements": n}
+                              for t, (length, n) in reversed(list(zip(types, sections, strict=True)))]},
+        "environment": {"water_density": 1025.0, "gravity": 9.80665, "depth": depth},
+        "analysis": {"type": "mooring_static", "anchor": [0.0, -depth], "fairlead": [depth, -14.0],
+                     "seabed_contact": {"stiffness": 1.0e5, "damping": 1.0e4}}})
 
 
 @pytest.mark.parametrize("site", list(INSTALLED))
@@ -154,11 +136,8 @@ def test_installed_200m_and_800m_decks_run_as_in_cabledyn(site, tmp_path):
     cabledyn = pytest.importorskip("cabledyn.model", reason="pip install -e '.[test]' brings CableDyn")
     from seacable.mooring.moordyn import run_moordyn_file
 
-    depth, diameter, mass, sections = INSTALLED[site]
-    (l0, n0), (l1, n1), (l2, n2) = sections
     deck = tmp_path / f"lozon_{site}_power_cable.dat"
-    deck.write_text(INSTALLED_DECK.format(site=site, d=diameter, m=mass, x=5.0 + depth, depth=depth,
-                                          l0=l0, n0=n0, l1=l1, n1=n1, l2=l2, n2=n2))
+    _cabledyn_peer.write_deck(_installed(site), deck, num_segs=[n for _, n in INSTALLED[site][3]])
     ours = run_moordyn_file(deck)
     peer = cabledyn.CableDyn()
     peer.init_deck(deck)
