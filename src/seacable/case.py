@@ -39,7 +39,7 @@ from .laying.inputs import (
     read_lay_table,
 )
 from .laying.route import Route
-from .line import Lifting, Line, LineType, resolve_sections
+from .line import STAND_IN, Lifting, Line, LineType, resolve_sections
 from .mooring.ends import EndCondition
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
@@ -799,9 +799,6 @@ Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]  # noqa: UP00
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
-_STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, axial_stiffness=1.0, name="stand-in for an invalid line type")
-
-
 class Case(Model):
     """A line, its environment and an analysis.
 
@@ -845,7 +842,7 @@ class Case(Model):
                 checked[name] = LineType.parse(entry)
             except InputError as err:
                 problems += [(("line_types", name) + loc, tail) for loc, tail in err.problems]
-                checked[name] = _STAND_IN  # keeps segments that use it from failing again
+                checked[name] = STAND_IN  # keeps segments that use it from failing again
         try:
             case = super().parse({**data, "line_types": checked}, root=root)
         except InputError as err:

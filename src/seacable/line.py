@@ -549,6 +549,11 @@ def _split_segment(seg, cuts):
     return pieces
 
 
+#: The line type that stands in, during a case's validation, for a named line type that failed its own checks (each
+#: problem is reported once, at ``line_types.NAME``); checks on the line's physics (its weight) skip lines that use it.
+STAND_IN = LineType(diameter=1.0, mass_per_length=1.0, axial_stiffness=1.0, name="stand-in for an invalid line type")
+
+
 def resolve_sections(line, water_density: float, gravity: float):
     """The equivalent line of ``line`` without sections, for the models that take segments and attachments.
 
@@ -594,7 +599,8 @@ def resolve_sections(line, water_density: float, gravity: float):
     scale = sum(seg.length * abs(seg.line_type.submerged_weight(water_density, gravity)) for seg in out.segments) \
         + sum(abs(a.net_weight(water_density, gravity)) for a in out.attachments)
     tied = any(isinstance(sec, (Clamp, Tether)) for sec in line.sections)  # ties to the seabed hold it down
-    if weight < -1e-9 * scale and not tied:  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
+    stand_in = any(seg.line_type.name == STAND_IN.name for seg in line.segments)  # its weight is not the user's
+    if weight < -1e-9 * scale and not (tied or stand_in):  # a neutrally buoyant line (weight 0 to rounding) hangs, under tension
         lift = sum(-sec.count * sec.module.net_weight(water_density, gravity)
                    for sec in line.sections if isinstance(sec, BuoyancySection))
         raise InputError(

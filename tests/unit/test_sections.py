@@ -199,6 +199,20 @@ def test_floating_cable_says_by_how_much_and_validate_refuses_it():
                 analysis=sc.MooringStaticAnalysis(fairlead=(120.0, -14.0)))
 
 
+def test_an_invalid_line_type_is_reported_once_not_as_a_floating_cable():
+    # the line type that stands in for an invalid one during validation (1 m diameter, 1 kg/m) floats; the cable
+    # must not be reported floating for it, only the line type's own problem
+    data = {"name": "t", "line_types": {"cable": {**CABLE.model_dump(exclude={"name"}), "minimum_bend_radius": 0.0}},
+            "line": {"segments": [{"line_type": "cable", "length": 170.0}],
+                     "sections": [{"type": "buoyancy", "start": 50.0, "length": 40.0, "pitch": 4.0,
+                                   "module": MODULE.model_dump()}]},
+            "environment": {"depth": 200.0}, "analysis": {"type": "mooring_static", "fairlead": [120.0, -14.0]}}
+    with pytest.raises(InputError) as err:
+        sc.Case.parse(data)
+    assert "line_types.cable.minimum_bend_radius must be > 0 m" in str(err.value)
+    assert "float" not in str(err.value)
+
+
 def test_analyses_without_the_finite_element_line_refuse_sections():
     line = _line(BuoyancySection(start=50.0, length=40.0, pitch=4.0, module=MODULE))
     with pytest.raises(InputError, match="does not take line.sections"):

@@ -40,10 +40,10 @@ import numpy as np
 from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest
-from ..case import _STAND_IN, CableDesign, SeabedContact, check_unused_inputs
+from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
-from ..line import LineType
+from ..line import STAND_IN, LineType
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
@@ -435,7 +435,7 @@ class SystemCase(Model):
                     checked[name] = LineType.parse(entry)
                 except InputError as err:
                     problems += [(("line_types", name) + loc, tail) for loc, tail in err.problems]
-                    checked[name] = _STAND_IN  # keeps lines that use it from failing again
+                    checked[name] = STAND_IN  # keeps lines that use it from failing again
         try:
             case = super().parse(data if checked is types else {**data, "line_types": checked}, root=root)
         except InputError as err:
