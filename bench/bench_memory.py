@@ -6,7 +6,7 @@ moved together in heave (2 m at 10 s), 3 h at dt = 0.1 s with the state stored e
 outputs), read and run through the user path (``run_moordyn_case``: file, model, statics, time loop,
 result), two ways:
 
-- ``memory``: the result Dataset in memory (0.57 GB of it), filled block by block as the run goes;
+- ``memory``: the result Dataset in memory (0.58 GB of it), filled block by block as the run goes;
 - ``file``: the result written into a NetCDF file as the run goes (``out=``), the Dataset returned read
   lazily from it;
 - ``cli``: ``seacable run deck.txt --duration 10800 --output-interval 0.1 --motion heave.csv -o

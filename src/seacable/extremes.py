@@ -40,7 +40,7 @@ _SERIES = {
     "towed_dynamic": {"extremes": ("lower_end_depth", "layback", "seabed_clearance"),
                       "end": ("lower_end_depth", "layback")},
     "towline_dynamic": {"extremes": ("barge_tension", "seabed_clearance"), "end": ("barge_tension", "barge_speed")},
-    "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length"), "end": ()},
+    "mooring_dynamic": {"extremes": ("anchor_tension", "seabed_contact_length", "touchdown_s"), "end": ()},
 }
 
 #: The model's own figures a sweep shows first (in its printed table and its plot), by analysis.

@@ -199,30 +199,30 @@ def test_snap_loads_of_a_result_in_blocks_are_those_of_the_whole_run(tmp_path, m
 
 
 def test_the_size_of_a_result_is_what_the_run_size_check_counts(monkeypatch):
-    """``stored_per_output`` counts the values of the result an output: for three 40-element lines 660
-    (x, y, z and node tension of 3 x 41 nodes, 3 x 40 element tensions, 7 per line, 4 per point for 6 points,
-    time, slack count and wave elevation), 0.570 GB for the issue's 3 hours at 0.1 s, which a 1 GB limit
-    lets through. A 20 s result holds that but the wave elevation (calm water)."""
+    """``stored_per_output`` counts the values of the result an output: for three 40-element lines
+    (x, y, z and node tension of 3 x 41 nodes, 3 x 40 element tensions, 7 per line and the touchdown's s, x and
+    y, 4 per point for 6 points, time, slack count and wave elevation): 669, 0.578 GB for the issue's 3 hours at
+    0.1 s, which a 1 GB limit lets through. A 20 s result holds that but the wave elevation (calm water)."""
     from seacable.mooring.moordyn import prepare_moordyn
 
     model = moordyn_model(THREE)
-    assert stored_per_output(model.network) == 4 * 123 + 120 + 21 + 24 + 3
-    assert 108_001 * 660 * 8 == pytest.approx(0.570e9, rel=1e-3)
+    assert stored_per_output(model.network, model.water.depth is not None) == 4 * 123 + 120 + 21 + 9 + 24 + 3
+    assert 108_001 * 669 * 8 == pytest.approx(0.578e9, rel=1e-3)
     monkeypatch.setenv("SEACABLE_MAX_MEMORY", "1e9")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         prepare_moordyn(_three_case(3 * 3600.0))  # refused above the limit
         monkeypatch.setenv("SEACABLE_MAX_MEMORY", "0.5e9")
-        with pytest.raises(sc.InputError, match="would store about 570 MB of results"):
+        with pytest.raises(sc.InputError, match="would store about 578 MB of results"):
             prepare_moordyn(_three_case(3 * 3600.0))
     ds = _run(_three_case(20.0))
     timed = sum(v.nbytes for v in ds.variables.values() if "time" in v.dims)
-    assert timed == 201 * (660 - 1) * 8
+    assert timed == 201 * (669 - 1) * 8
 
 
 def test_a_run_written_as_it_goes_holds_a_block_not_the_run(tmp_path, monkeypatch):
     """Python's allocations (tracemalloc) of the three chains over 15 s and 60 s (an output every 0.1 s,
-    blocks of 64): kept in memory, the peak grows by the result (450 outputs of 656 values, 2.36 MB; measured
+    blocks of 64): kept in memory, the peak grows by the result (450 outputs of 665 values, 2.39 MB; measured
     2.47 MB); written as it goes, by at most about 7 % of that: what is left in proportion to the outputs is the
     fairlead motion at the output times (for the checks, 3 channels x 9 values), and one line's element
     tensions read back for the snap loads (40 values). Bound 15 %: twice that. (Measured 4 % over 15 s and
@@ -245,7 +245,7 @@ def test_a_run_written_as_it_goes_holds_a_block_not_the_run(tmp_path, monkeypatc
     # and the file's under the same bound
     grown_memory = peak(60.0, None) - peak(15.0, None)
     grown_file = peak(60.0, tmp_path / "b.nc") - peak(15.0, tmp_path / "a.nc")
-    assert grown_memory >= 450 * 656 * 8  # the result, at least
+    assert grown_memory >= 450 * 665 * 8  # the result, at least
     assert grown_file <= 0.15 * grown_memory
 
 

@@ -75,6 +75,46 @@ def test_the_contact_length_is_interpolated_between_nodes_on_a_taut_line():
     assert ds.seabed_contact_length.values == pytest.approx(ref, abs=0.05 * h)
 
 
+@pytest.mark.parametrize("mirrored", [False, True])
+def test_the_touchdown_follows_the_catenary_from_the_grounded_end(mirrored):
+    """The touchdown's migration (issue 40): the taut catenary's fairlead moved 2 m in 0.5 m steps, 10 m elements.
+
+    ``touchdown_s`` is the catenary's grounded length ``L_B`` from the grounded end, ``touchdown_x`` its end
+    stretched under the horizontal tension, ``L_B (1 + H / EA)`` (frictionless). Mirrored, the line is grounded
+    at end B (its end A held 15 m deep): the touchdown is counted from end B, ``s = L - L_B``.
+    """
+    h, span = 10.0, 790.0
+    offsets = [0.0, 0.5, 1.0, 1.5, 2.0]
+    ends = {"anchor": [0.0, -200.0], "fairlead": [span, -15.0]}
+    if mirrored:  # end A up, end B on the seabed, moved away from end A by the offsets
+        ends = {"anchor": [0.0, -15.0], "fairlead": [span, -200.0]}
+    case = sc.Case(name="taut", line_types={"chain": CHAIN}, line={"line_type": "chain", "length": 850.0},
+                   environment={"depth": 200.0},
+                   analysis={"type": "mooring_pushover", **ends, "n_elements": int(850 / h), "offsets": offsets})
+    ds = sc.run(case)
+    ref = catenary(span + np.array(offsets), 185.0, 850.0, 6.03e8, W)
+    L_B, x_td = ref.grounded_length, ref.grounded_length * (1 + ref.H_fairlead / 6.03e8)
+    # the same resolution as the contact length's (measured at most 0.18 m there): 1/20 of an element
+    if mirrored:
+        assert ds.touchdown_s.values == pytest.approx(850.0 - L_B, abs=0.05 * h)
+        assert ds.touchdown_x.values == pytest.approx(span + np.array(offsets) - x_td, abs=0.05 * h)
+    else:
+        assert ds.touchdown_s.values == pytest.approx(L_B, abs=0.05 * h)
+        assert ds.touchdown_x.values == pytest.approx(x_td, abs=0.05 * h)
+    assert np.all(ds.touchdown_y.values == 0.0)
+    # it migrates: 2 m of offset pulls 5.3 m of chain off the seabed
+    assert float(np.ptp(ds.touchdown_s.values)) == pytest.approx(float(np.ptp(L_B)), rel=0.05)
+
+
+def test_a_hanging_line_has_no_touchdown():
+    ds = sc.run(sc.Case(name="hanging", line_types={"chain": CHAIN}, line={"line_type": "chain", "length": 220.0},
+                        environment={"depth": 300.0},
+                        analysis={"type": "mooring_static", "anchor": [0.0, -250.0], "fairlead": [50.0, -15.0],
+                                  "n_elements": 22}))
+    assert np.isnan(float(ds.touchdown_s)) and np.isnan(float(ds.touchdown_x))
+    assert float(ds.seabed_contact_length) == 0.0
+
+
 def test_a_line_lying_entirely_on_the_seabed_has_no_tension():
     """400 m of chain with both ends on the seabed 300 m apart: it lies slack on the seabed."""
     line = sc.Line.single(sc.LineType(**CHAIN), 400.0)

@@ -531,7 +531,8 @@ def prepare_moordyn(case) -> MooringModel:
     if case.duration is not None:
         check_water_kinematics(md, "a mooring_dynamic run")
         net = model.network
-        stored = (math.floor(case.duration / case.output_interval) + 1) * stored_per_output(net)
+        stored = (math.floor(case.duration / case.output_interval) + 1) * stored_per_output(
+            net, model.water.depth is not None)
         check_run_size(f"the mooring_dynamic run of {case.name}", steps=case.duration / case.time_step,
                        stored_values=stored, fix="shorten the duration, or lengthen the time step or the output "
                                                  "interval")

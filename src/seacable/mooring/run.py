@@ -170,10 +170,54 @@ def contact_length(model: MooringModel, X):
     (a node near the touchdown carries part of its weight, the hanging line the rest). A held node
     (an anchor) or a model without seabed stiffness counts as on the seabed when it touches it.
     """
+    got = _seabed_shares(model, X)
+    if got is None:
+        return np.zeros(np.asarray(X).shape[:-2])
+    frac, share = got
+    return np.sum(np.multiply(frac, share, out=frac), axis=-1)
+
+
+def touchdown_variables(model: MooringModel, X, dims=("node",)) -> dict:
+    """Where a line leaves the seabed, at each state: ``touchdown_s`` (unstretched arc length from end A),
+    ``touchdown_x``, ``touchdown_y`` [m]; {} without a seabed.
+
+    The grounded stretch is the one that holds the line's grounded end (end A when it rests on the seabed, else
+    end B), its length the seabed's shares of its nodes as in :func:`contact_length` (a node near the touchdown
+    carries part of its weight), so the touchdown moves smoothly through an element and its range over a run is the
+    touchdown's migration. NaN at a state where neither end rests on the seabed. A line grounded in several
+    stretches (a lazy-S's tied arch, a buoy between two touchdowns) has its touchdown at the end of the first.
+    """
+    from ..results import var
+
+    got = _seabed_shares(model, X)
+    if got is None:
+        return {}
+    frac, share = got
+    s = np.asarray(model.network.arc_length, float)
+    on = frac > 0
+    from_a = np.sum(frac * share * np.cumprod(on, axis=-1), axis=-1)
+    from_b = np.sum((frac * share * np.cumprod(on[..., ::-1], axis=-1)[..., ::-1]), axis=-1)
+    s_td = np.where(on[..., 0], from_a, np.where(on[..., -1], s[-1] - from_b, np.nan))
+    # the position at s_td along the nodes (linear between them)
+    k = np.clip(np.searchsorted(s, np.nan_to_num(s_td), side="right") - 1, 0, s.size - 2)
+    u = np.clip((np.nan_to_num(s_td) - s[k]) / (s[k + 1] - s[k]), 0.0, 1.0)
+    X = np.asarray(X, float)
+    pos = [np.take_along_axis(X[..., c], k[..., None], -1)[..., 0] * (1 - u)
+           + np.take_along_axis(X[..., c], k[..., None] + 1, -1)[..., 0] * u for c in range(2)]
+    lead = tuple(dims[:-1])
+    bad = ~np.isfinite(s_td)
+    return {"touchdown_s": var(lead, s_td, "m", "unstretched arc length from end A where the line leaves the seabed"),
+            "touchdown_x": var(lead, np.where(bad, np.nan, pos[0]), "m", "x where the line leaves the seabed"),
+            "touchdown_y": var(lead, np.where(bad, np.nan, pos[1]), "m", "y where the line leaves the seabed")}
+
+
+def _seabed_shares(model: MooringModel, X):
+    """(fraction of each node's weight the seabed carries (..., node), each node's share of line (node,) [m]) for
+    :func:`contact_length`, None without a seabed."""
     net, water = model.network, model.water
     X = np.asarray(X, float)
     if water.depth is None:
-        return np.zeros(X.shape[:-2])
+        return None
     share = np.zeros(net.n_nodes)
     np.add.at(share, net.elements[:, 0], 0.5 * net.length)
     np.add.at(share, net.elements[:, 1], 0.5 * net.length)
@@ -209,7 +253,7 @@ def contact_length(model: MooringModel, X):
         frac[..., held] = touching[..., held]
     else:
         frac = (pen >= 0).astype(float)
-    return np.sum(np.multiply(frac, share, out=frac), axis=-1)
+    return frac, share
 
 
 def _own_model(model: MooringModel) -> MooringModel:
@@ -475,6 +519,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
                                      "and half-element loads)"),
         "seabed_contact_length": var(lead, contact_length(model, X), "m",
                                      "length of line on the seabed"),
+        **touchdown_variables(model, X, dims),
     }
     for k, name in enumerate("xyz"):
         data[f"fairlead_force_{name}"] = var(lead, ends[..., fair, k], "N",
@@ -553,12 +598,12 @@ class MooringDynamicSetup:
     motion: object = None      # the bound fairlead motion: times -> positions, velocities, accelerations
 
 
-def stored_per_output(net: Network) -> int:
+def stored_per_output(net: Network, seabed: bool = True) -> int:
     """Values the result of a time-domain run holds per output: per line (each padded to the longest, as in a
     MoorDyn deck's result) the positions and tensions of its nodes, its element tensions, its end tensions,
-    its anchor's vertical force, fairlead force and grounded length (and, bending, its curvature, bend moment and
-    declination at the nodes and shear per element); the forces on the points; the time, the count of slack elements and
-    the wave elevation. [1]
+    its anchor's vertical force, fairlead force and grounded length, with a ``seabed`` its touchdown (s, x, y) (and,
+    bending, its curvature, bend moment and declination at the nodes and shear per element); the forces on the points;
+    the time, the count of slack elements and the wave elevation. [1]
 
     The run itself holds a block of outputs at a time (:func:`seacable.mooring.solver.simulate`,
     ``on_outputs``), and a run written to a file as it goes (:class:`seacable.sink.NetcdfSink`) holds
@@ -568,7 +613,7 @@ def stored_per_output(net: Network) -> int:
     elements = int(np.max(np.bincount(net.element_line, minlength=lines)))
     points = int(np.count_nonzero((net.kind != FREE) | ~np.isfinite(net.arc_length)))
     bending = 3 * nodes + elements if net.hinge_arrays()[0].shape[0] else 0  # curvature, moment, declination, shear
-    return lines * (4 * nodes + elements + 7 + bending) + 4 * points + 3
+    return lines * (4 * nodes + elements + 7 + 3 * seabed + bending) + 4 * points + 3
 
 
 def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
@@ -586,7 +631,7 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     steps = a.duration / min(a.time_step, a.output_interval)
     outputs = a.duration / a.output_interval + 1
     check_run_size(f"mooring_dynamic case '{case.name}'", steps=steps,
-                   stored_values=outputs * stored_per_output(net),
+                   stored_values=outputs * stored_per_output(net, model.water.depth is not None),
                    fix="lengthen analysis.time_step or analysis.output_interval, or shorten analysis.duration")
     start = MooringModel(net.replace(kind=_held(net)), model.water) if free and a.release_from is not None else model
     # the motion moves the held fairlead from where the case puts it (statics does not move it): bind it
