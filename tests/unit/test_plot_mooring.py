@@ -334,3 +334,29 @@ def test_wrong_analysis_is_an_input_error(function, wrong, static, pushover):
     with pytest.raises(InputError, match=r"needs a 'mooring_\w+' result, got analysis 'mooring_\w+'\. "
                                          r"Suggested fix"):
         function(ds)
+
+
+def test_a_cable_pushover_gets_its_range_graphs(monkeypatch, tmp_path):
+    """A line with curvature (the 80 m lazy wave, 2 m elements, hang-off moved 0 and 5 m) gets the range graphs
+    among its figures, their curvature panel the result's largest curvature at each node; a chain's figures stay
+    as they were (test_plot_result_writes_pngs)."""
+    from seacable.design.cable import range_graphs
+
+    data = yaml.safe_load((EXAMPLE.parent / "lazy_wave_80m.yaml").read_text())
+    data["analysis"] = {**data["analysis"], "type": "mooring_pushover", "element_length": 2.0, "offsets": [0.0, 5.0]}
+    data["line_types"]["cable"]["minimum_bend_radius"] = 3.0
+    ds = sc.run(sc.Case.model_validate(data))
+    for analysis, function in MOORING_FIGURES.items():
+        monkeypatch.setitem(plot_module.FIGURES, analysis, function)
+    paths = plot_result(ds, tmp_path, prefix="lw")
+    assert [p.name for p in paths] == ["lw_pushover.png", "lw_pushover_shapes.png", "lw_range_graphs.png"]
+    fig = plot_mooring_pushover(ds)[-1]
+    rg = range_graphs(ds)
+    panel = next(ax for ax in fig.axes if "curvature" in ax.get_ylabel())
+    tops = [ln.get_ydata() for ln in panel.get_lines() if len(ln.get_ydata()) == rg.sizes["node"]]
+    assert any(np.allclose(y, rg.curvature_max.values) for y in tops)
+    # the static MBR's limit drawn at 1 / 3 m
+    assert any(np.allclose(ln.get_ydata(), 1 / 3.0) for ln in panel.get_lines())
+    static = ds.isel(offset=0).drop_vars("offset")
+    static.attrs["analysis"] = "mooring_static"
+    assert [p.name for p in plot_result(static, tmp_path, prefix="st")] == ["st_shape.png", "st_range_graphs.png"]

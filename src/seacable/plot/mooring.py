@@ -172,7 +172,22 @@ def _mooring_static(ds, plt):
     else:
         ax2.legend(fontsize=8)
     ax2.set(xlabel=s_label, ylabel=f"effective tension [{unit}]", title=title)
-    return {"shape": fig}
+    return {"shape": fig, **_range_graphs(ds)}
+
+
+def _range_graphs(ds) -> dict:
+    """The range graphs of a cable's result (a line with curvature, :func:`seacable.design.cable.range_graphs`), with
+    its limits where the case gives them: {} for a line without curvature or a result of several lines."""
+    from ..design.cable import cable_limits, has_curvature, plot_range_graphs, range_graphs
+
+    if not has_curvature(ds) or "line" in ds.dims:
+        return {}
+    rg = range_graphs(ds)
+    try:
+        limits = cable_limits(ds)
+    except (KeyError, ValueError, TypeError):  # a result without its case (a deck's): the ranges alone
+        limits = None
+    return {"range_graphs": plot_range_graphs(rg, limits)}
 
 
 # ----------------------------------------------------------------------------- pushover
@@ -236,6 +251,7 @@ def _mooring_pushover(ds, plt):
     ax2.set(xlabel=s_label, ylabel=f"effective tension [{t_unit}]", title="Tension along the line")
     ax2.legend(fontsize=7)
     figs["pushover_shapes"] = fig
+    figs.update(_range_graphs(ds))
     return figs
 
 
@@ -311,6 +327,7 @@ def _mooring_dynamic(ds, plt):
         axes[2].set(ylabel="slack elements")
     axes[-1].set_xlabel(_label(ds.time))
     figs["tension"] = fig
+    figs.update(_range_graphs(ds))
     return figs
 
 
@@ -339,7 +356,9 @@ def plot_mooring_static(ds) -> list:
     -------
     list of matplotlib.figure.Figure
         One figure: shape (x or horizontal distance, z) with the seabed and the sea surface,
-        and the effective tension against the arc length (kN above 10 kN), one curve per line.
+        and the effective tension against the arc length (kN above 10 kN), one curve per line; for a cable (a
+        line with curvature) its tension, curvature, bend moment, declination and seabed clearance along the arc
+        length (:func:`seacable.design.cable.plot_range_graphs` of its one state).
 
     Raises
     ------
@@ -362,7 +381,8 @@ def plot_mooring_pushover(ds) -> list:
     list of matplotlib.figure.Figure
         The force-excursion curve (horizontal and total fairlead tension against the offset,
         kN above 10 kN) with the length of line on the seabed; then the shapes and the
-        tension along the line at up to five offsets, first and last included.
+        tension along the line at up to five offsets, first and last included; for a cable (a line with
+        curvature) its range graphs over the offsets (:func:`seacable.design.cable.plot_range_graphs`).
 
     Raises
     ------
@@ -386,7 +406,8 @@ def plot_mooring_dynamic(ds) -> list:
         The shapes and the tension along the line at about eight output times (every N s,
         N round, coloured by time); then the fairlead and anchor tensions with the snap loads
         marked, the length of line on the seabed and, when stored, the number of slack
-        elements against time.
+        elements against time; for a cable (a line with curvature) its range graphs along the arc length
+        (:func:`seacable.design.cable.plot_range_graphs`).
 
     Raises
     ------
