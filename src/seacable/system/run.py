@@ -691,10 +691,11 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     ``finite_element``.
     """
     from ..results import make_dataset, var
+    from .ties import equilibrium_ties, tie_variables
 
     a: SystemStaticAnalysis = case.analysis
     setup = prepare_system_static(case, statics)
-    records, profiles, bends, coupled, iterations, residuals = [], [], [], [], [], []
+    records, profiles, bends, ties, coupled, iterations, residuals = [], [], [], [], [], [], []
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
     intact_eq = None   # the intact equilibrium (the first condition), that most_loaded chooses its line by
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
@@ -719,6 +720,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
         bends.append(_bending(eq, setup))
+        ties.append(equilibrium_ties(eq, setup.lines))
         coupled.append(np.asarray(eq.stiffness, float))
         iterations.append(int(eq.iterations))
         residuals.append(float(eq.residual))
@@ -741,6 +743,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     coords = _coords(setup, a.profile_points)
     if any(bends):
         _bending_variables(bends, data, coords)
+    tie_variables(ties, ("condition",), (nc,), data, coords)
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)

@@ -1,0 +1,202 @@
+"""Ties to the seabed on a mooring system's lines (issue 40): clamps and tethers (:mod:`seacable.ties`) of a system
+line, in the system's finite-element statics and dynamics.
+
+References and closed forms:
+
+- the single-line finite-element analysis (``mooring_static``, ``mooring_dynamic``): the same tied line between
+  two fixed points of a system solves the same discrete equations (the same nodes, a node at each tie, the same
+  tie forces), so shapes, tensions and the tethers' tensions agree to the solvers' tolerance;
+- a rigid clamp's node divides the line into two lines held at the clamp's point: the system of those two lines
+  meeting at a fixed point is the same discrete system, and the clamp's reaction is the sum of their end forces
+  there (a chain, no bending: the two lines' pinned ends at the point are the clamped line's hinge-less node);
+- a buoy below a vertical cable, held down by a tether (the single line's closed form of
+  ``tests/validation/test_seabed_ties.py``): ``T_t = T_c + B``, with the cable's stretch under its own weight and
+  the tether's adding up to the gap between the fixed points;
+- a dynamic run left alone from its static start stays there: the coupled kernel's tie forces are the statics'.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import yaml
+
+import seacable as sc
+from seacable.errors import InputError
+from seacable.io import parse_case
+from seacable.mooring.outputs import tether_tension, tie_variables
+from seacable.mooring.run import case_model
+from seacable.mooring.solver import static_equilibrium
+from seacable.system.case import SystemCase
+from seacable.system.statics.fe import fe_equilibrium
+
+RHO, G = 1025.0, 9.80665
+N = 85  # 2 m elements on the 170 m cable: a node at each tie; both solvers converge from their default starts
+
+
+def _example(name):
+    with open(f"examples/{name}.yaml") as f:
+        return yaml.safe_load(f)
+
+
+def _single_and_system(name):
+    """The example's tied cable as a single line (``mooring_static``) and as the line of a system between two fixed
+    points at its anchor and hang-off, in the example's current."""
+    d = _example(name)
+    d["analysis"] = {"type": "mooring_static", "anchor": [0.0, -80.0], "fairlead": [120.0, -14.0], "n_elements": N}
+    system = SystemCase.parse({
+        "name": name, "line_types": d["line_types"], "environment": d["environment"],
+        "points": {"anchor": {"kind": "fixed", "position": [0.0, 0.0, -80.0]},
+                   "hang": {"kind": "fixed", "position": [120.0, 0.0, -14.0]}},
+        "lines": {"cable": {**d["line"], "end_a": "anchor", "end_b": "hang", "n_elements": N}},
+        "analysis": {"type": "system_static"}})
+    return parse_case(d), system
+
+
+@pytest.mark.parametrize("name", ["lazy_s_80m", "pliant_wave_80m"])
+def test_tied_cable_as_a_system_line_is_the_single_line(name):
+    """The lazy-S (a 35 kN subsea buoy on a 35 m tether at s = 75 m) and the pliant wave (a 2 m tether at the
+    touchdown, s = 45 m, and smeared buoyancy) in their current, as a single line and as a system line. Both are
+    solved to a force residual of 1e-10 of the line's scale by their own Newton schemes: measured 1.3e-7 m and
+    4.9e-7 m apart, tensions 3.5e-4 N and 7e-5 N, the tethers' tensions 2e-9 of 22.3 kN and 5e-8 of 499 N. The
+    bounds (1e-6 m, 1e-2 N) are those of tests/validation/test_system_cable.py; a tie dropped moves the cable by
+    metres, a tether on the next node by decimetres."""
+    single, system = _single_and_system(name)
+    model = case_model(single)
+    st = static_equilibrium(model, tol=1e-10)
+    eq = fe_equilibrium(system.system(), system.environment, stiffness=False, tol=1e-10)
+    s, X, T = eq.line_nodes("cable")
+    assert s == pytest.approx(model.network.arc_length, abs=1e-12)
+    assert np.abs(X - st.position).max() < 1e-6
+    assert np.abs(T - st.tension).max() < 1e-2
+    t1 = tether_tension(model.network, st.position)
+    assert tether_tension(eq.fe.model.network, eq.state.position) == pytest.approx(t1, abs=1e-2)
+    # the result: the system's tether_tension (condition, line, tether) and the tether's arc length
+    ds = sc.run(system)
+    got = ds.tether_tension.sel(condition="intact", line="cable").values
+    assert ds.tether_tension.dims == ("condition", "line", "tether")
+    assert got == pytest.approx(t1, abs=1e-2) and got[0] > 400.0
+    assert ds.tether_s.sel(line="cable").values == pytest.approx([75.0 if name == "lazy_s_80m" else 45.0])
+    assert "line 'cable' with " in ds.attrs["statics_reason"] and "ties to the seabed" in ds.attrs["statics_reason"]
+
+
+# ------------------------------------------------------------------------------------------------ clamps
+
+CHAIN = {"diameter": 0.08, "mass_per_length": 130.0, "axial_stiffness": 5e8}
+CLAMP_AT = [80.0, 0.0, -60.0]
+
+
+def _chain_system(lines, points=None, analysis="system_static"):
+    return SystemCase.parse({
+        "name": "clamped", "line_types": {"chain": CHAIN}, "environment": {"water_density": RHO, "gravity": G,
+                                                                          "depth": 100.0},
+        "points": {"anchor": {"kind": "fixed", "position": [0.0, 0.0, -100.0]},
+                   "fair": {"kind": "fixed", "position": [170.0, 0.0, -10.0]}, **(points or {})},
+        "lines": lines, "analysis": {"type": analysis}})
+
+
+def _clamped(stiffness=None):
+    clamp = {"type": "clamp", "s": 90.0, "position": {"x": CLAMP_AT[0], "z": CLAMP_AT[2]}}
+    if stiffness is not None:
+        clamp["stiffness"] = stiffness
+    return _chain_system({"chain": {"line_type": "chain", "length": 200.0, "end_a": "anchor", "end_b": "fair",
+                                    "n_elements": 40, "sections": [clamp]}})
+
+
+def test_rigid_clamp_on_a_system_line_is_two_lines_meeting_at_its_point():
+    """A 200 m chain clamped rigidly at s = 90 m to a point in mid-water, and the two chains (90 m, 110 m, 5 m
+    elements as the clamped line's) from the anchor and the fairlead to a fixed point there: the same nodes and
+    equations, measured 3e-14 m apart (1e-9 asserted); the clamp's reaction (``clamp_force``) is the sum of the two
+    lines' end forces at the point, measured 4e-9 of it (two Newton solves to 1e-10 of the loads), 1e-7 asserted. A clamp dropped
+    lets the chain sag tens of metres; its force read at the wrong node, or the half elements' weight (3.2 kN) left
+    out, fails by kilonewtons."""
+    ds = sc.run(_clamped())
+    split = _chain_system({"a": {"line_type": "chain", "length": 90.0, "end_a": "anchor", "end_b": "clamp",
+                                 "n_elements": 18},
+                           "b": {"line_type": "chain", "length": 110.0, "end_a": "clamp", "end_b": "fair",
+                                 "n_elements": 22}},
+                          {"clamp": {"kind": "fixed", "position": CLAMP_AT}})
+    eq = fe_equilibrium(split.system(), split.environment, stiffness=False, tol=1e-10)
+    eq1 = fe_equilibrium(_clamped().system(), split.environment, stiffness=False, tol=1e-10)
+    _, X1, _ = eq1.line_nodes("chain")
+    Xs = np.vstack([eq.line_nodes("a")[1], eq.line_nodes("b")[1][1:]])
+    assert np.abs(X1 - Xs).max() < 1e-9
+    assert X1[18] == pytest.approx(CLAMP_AT, abs=0.0)  # the clamped node is held at the point
+    total = eq.end_b_force[0] + eq.end_a_force[1]
+    reaction = np.array([float(ds[f"clamp_force_{c}"].sel(condition="intact", line="chain")[0]) for c in "xyz"])
+    assert reaction == pytest.approx(total, abs=1e-7 * np.linalg.norm(total))
+    assert float(ds.clamp_force.sel(condition="intact", line="chain")[0]) == pytest.approx(np.linalg.norm(total),
+                                                                                        rel=1e-7)
+    assert float(ds.clamp_s.sel(line="chain")[0]) == 90.0 and abs(reaction[2]) > 1e4
+
+
+def test_spring_clamp_on_a_system_line_holds_its_node_by_its_stiffness():
+    """The clamp as a spring of 1e9 N/m: its node sits ``F / k`` from the point along the force ``F`` of the line
+    on it (the result's ``clamp_force``), to round-off (1e-6 of the offset asserted), and that force is the rigid
+    clamp's to first order in 1 / k (the hanging chains' stiffness over k: measured 1.8e-4; 1e-3 asserted). A spring
+    acting the other way, or at the wrong point, fails both."""
+    rigid = sc.run(_clamped())
+    case = _clamped(1e9)
+    eq = fe_equilibrium(case.system(), case.environment, stiffness=False, tol=1e-12)
+    ds = sc.run(case)
+    force = np.array([float(ds[f"clamp_force_{c}"].sel(condition="intact", line="chain")[0]) for c in "xyz"])
+    node = eq.line_nodes("chain")[1][18]
+    assert node - np.array(CLAMP_AT) == pytest.approx(force / 1e9, rel=1e-6, abs=1e-12)
+    f_rigid = np.array([float(rigid[f"clamp_force_{c}"].sel(condition="intact", line="chain")[0]) for c in "xyz"])
+    assert np.linalg.norm(force - f_rigid) < 1e-3 * np.linalg.norm(f_rigid)
+
+
+# ------------------------------------------------------------------------------------------------ a tethered buoy
+
+W, L, EA, B, L0, EAT, H = 300.0, 60.0, 5e6, 25e3, 19.0, 2e6, 80.0
+
+
+def _buoy_system(analysis=None, push=0.0):
+    """A 60 m cable (EA 5 MN, 300 N/m in water) from a fixed point at z = -20 m down to a free point, a buoy of
+    25 kN net buoyancy (and ``push`` [N] of external force down), held by a 19 m tether (EA 2 MN) at the cable's
+    end s = 60 m to the seabed at z = -100 m."""
+    cable = {"diameter": 0.1, "mass_per_length": W / G + RHO * math.pi / 4 * 0.01, "axial_stiffness": EA}
+    return SystemCase.parse({
+        "name": "buoy", "line_types": {"cable": cable}, "environment": {"water_density": RHO, "gravity": G,
+                                                                        "depth": 100.0},
+        "points": {"top": {"kind": "fixed", "position": [0.0, 0.0, -20.0]},
+                   "buoy": {"kind": "free", "position": [0.0, 0.0, -80.5], "volume": B / (RHO * G),
+                            "external_force": [0.0, 0.0, -push]}},
+        "lines": {"cable": {"line_type": "cable", "length": L, "end_a": "top", "end_b": "buoy", "n_elements": 12,
+                            "sections": [{"type": "tether", "s": L, "anchor": {"x": 0.0},
+                                          "axial_stiffness": EAT, "length": L0}]}},
+        "analysis": analysis or {"type": "system_static"}})
+
+
+def test_tether_holds_the_buoyancy_of_a_free_point():
+    """The closed form of the single line's buoy (tests/validation/test_seabed_ties.py) in a system: the buoy a
+    free point at the cable's end, the tether at that end. Along the vertical ``T(s) = T_c + w s`` and the buoy's
+    balance ``T_t = T_c + B``::
+
+        (T_c L + w L^2 / 2) / EA + L0 (T_c + B) / EA_t = H - L - L0
+
+    The lumped nodes are exact for a uniform load in 1D, so the tether's tension is the closed form's to the
+    solver's tolerance (measured 5e-12; 1e-8 asserted, the solver's 1e-10 of the loads); the buoyancy left out, or the tether pushing, fails by
+    25 kN."""
+    ds = sc.run(_buoy_system())
+    Tc = (H - L - L0 - W * L**2 / (2 * EA) - L0 * B / EAT) / (L / EA + L0 / EAT)
+    assert float(ds.tether_tension.sel(condition="intact", line="cable")[0]) == pytest.approx(Tc + B, rel=1e-8)
+    assert float(ds.tether_s.sel(line="cable")[0]) == L
+    z = float(ds.point_z.sel(condition="intact", point="buoy"))
+    assert z == pytest.approx(-100.0 + L0 * (1 + (Tc + B) / EAT), abs=1e-8)
+
+
+def test_system_dynamic_stays_at_the_tethered_equilibrium():
+    """The buoy pushed down by 1 kN (a node's external force: the coupled kernel, not the lines-only loop), left
+    alone from its static start: the tether's tension stays the closed form's ``T_c + B - 1 kN`` (measured 2e-11
+    relative over 2 s; 1e-8 asserted, the start's residual of 1e-9 of the loads); a kernel without the tie's force (or with it the other way)
+    lets the buoy rise at once."""
+    analysis = {"type": "system_dynamic", "duration": 2.0, "time_step": 0.05, "output_interval": 0.5}
+    ds = sc.run(_buoy_system(analysis, push=1000.0))
+    b = B - 1000.0
+    Tc = (H - L - L0 - W * L**2 / (2 * EA) - L0 * b / EAT) / (L / EA + L0 / EAT)
+    got = ds.tether_tension.sel(line="cable").values[:, 0]
+    assert ds.tether_tension.dims == ("time", "line", "tether")
+    assert got == pytest.approx(np.full(got.shape, Tc + b), rel=1e-8)
