@@ -200,3 +200,38 @@ def test_system_dynamic_stays_at_the_tethered_equilibrium():
     got = ds.tether_tension.sel(line="cable").values[:, 0]
     assert ds.tether_tension.dims == ("time", "line", "tether")
     assert got == pytest.approx(np.full(got.shape, Tc + b), rel=1e-8)
+
+
+# ------------------------------------------------------------------------------------------------ bad input
+
+@pytest.mark.parametrize("change, message", [
+    (lambda d: d["lines"]["cable"]["sections"][0].update(s=70.0), "sections[0] (tether) is at s = 70 m, beyond the end"),
+    (lambda d: d["lines"]["cable"]["sections"][0]["anchor"].update(z=5.0),
+     "lines.cable.sections[0] (tether).anchor.z = 5 m is above the still water level"),
+    (lambda d: d["lines"]["cable"]["sections"][0]["anchor"].update(z=-120.0),
+     "lines.cable.sections[0] (tether).anchor.z = -120 m is 20 m below the seabed"),
+    (lambda d: d["points"]["buoy"].update(kind="fixed"),
+     "lines.cable.sections[0] (tether) is at s = 60 m, the line's end_b at point 'buoy', which is a fixed point"),
+])
+@pytest.mark.parametrize("analysis", ["system_static", "system_dynamic"])
+def test_bad_ties_on_a_system_line_are_refused_before_anything_runs(change, message, analysis):
+    """What ``run`` refuses, ``validate`` (:func:`seacable.simulate.check`) refuses, naming the line."""
+    from seacable.simulate import check
+
+    data = {
+        "name": "buoy", "line_types": {"cable": {"diameter": 0.1, "mass_per_length": 40.0, "axial_stiffness": EA}},
+        "environment": {"water_density": RHO, "gravity": G, "depth": 100.0},
+        "points": {"top": {"kind": "fixed", "position": [0.0, 0.0, -20.0]},
+                   "buoy": {"kind": "free", "position": [0.0, 0.0, -80.5], "volume": 2.5}},
+        "lines": {"cable": {"line_type": "cable", "length": L, "end_a": "top", "end_b": "buoy",
+                            "sections": [{"type": "tether", "s": L, "anchor": {"x": 0.0}, "axial_stiffness": EAT,
+                                          "length": L0}]}},
+        "analysis": {"type": analysis} if analysis == "system_static" else
+        {"type": analysis, "duration": 1.0, "time_step": 0.1}}
+    change(data)
+    with pytest.raises(InputError) as err:
+        check(SystemCase.parse(data))
+    assert message in str(err.value) and "Suggested fix" in str(err.value)
+    with pytest.raises(InputError) as err:
+        sc.run(SystemCase.parse(data))
+    assert message in str(err.value)
