@@ -246,6 +246,50 @@ def test_tied_line_in_system_dynamic_is_the_single_line():
     assert d1.clamp_force.values.max() > 1e3
 
 
+def _subsea_buoy(analysis, force=(0.0, 0.0)):
+    """A subsea buoy (40 m^3, 20 t) held by two chains, with a cable hung off it that is tethered at s = 60 m (a
+    500 kg, 3 m^3 buoy there) to a point 10 m above the seabed (300 m), ``force`` [N] on the buoy in x and y."""
+    cable = {"diameter": 0.16, "mass_per_length": 36.7, "axial_stiffness": 4.69e8}
+    return SystemCase.parse({
+        "name": "subsea", "line_types": {"cable": cable, "chain": CHAIN},
+        "environment": {"water_density": RHO, "gravity": G, "depth": 300.0},
+        "bodies": {"buoy": {"kind": "free", "position": [0.0, 0.0, -40.0, 0.0, 0.0, 0.0], "mass": 2.0e4,
+                            "center_of_gravity": [0.0, 0.0, -1.0], "inertia": [1e5, 1e5, 1e5], "volume": 40.0,
+                            "center_of_buoyancy": [0.0, 0.0, 1.0], "external_force": [*force, 0.0, 0.0, 0.0, 0.0]}},
+        "points": {"a1": {"kind": "fixed", "position": [-80.0, 0.0, -120.0]},
+                   "a2": {"kind": "fixed", "position": [30.0, 0.0, -120.0]},
+                   "a3": {"kind": "fixed", "position": [0.0, 30.0, -120.0]},
+                   "hang": {"kind": "body", "body": "buoy", "position": [-2.0, 0.0, -2.0]},
+                   "t1": {"kind": "body", "body": "buoy", "position": [2.0, 0.0, -2.0]},
+                   "t2": {"kind": "body", "body": "buoy", "position": [0.0, 2.0, -2.0]}},
+        "lines": {"cable": {"segments": [{"line_type": "cable", "length": 130.0}], "end_a": "a1", "end_b": "hang",
+                            "n_elements": 26, "attachments": [{"s": 60.0, "volume": 3.0, "mass": 500.0, "kind": "buoy"}],
+                            "sections": [{"type": "tether", "s": 60.0, "anchor": {"x": -45.0, "z": -140.0},
+                                          "axial_stiffness": 1e7, "length": 30.0}]},
+                  "tether": {"line_type": "chain", "length": 90.0, "end_a": "a2", "end_b": "t1", "n_elements": 10},
+                  "tether2": {"line_type": "chain", "length": 90.0, "end_a": "a3", "end_b": "t2", "n_elements": 10}},
+        "analysis": analysis})
+
+
+def test_system_offsets_carry_the_tethers_tension_per_load_and_heading():
+    """``system_offsets`` of a free body whose cable is tethered: ``tether_tension`` (condition, applied_load,
+    heading, line, tether) at each load and heading is that of ``system_static`` with the same force on the body
+    (the same finite-element equilibrium: 1e-8 relative, the solves' tolerance), NaN for the lines without
+    tethers; a load and heading transposed, or the tether left out of the offsets' statics, fails by 10 %."""
+    ds = sc.run(_subsea_buoy({"type": "system_offsets", "body": "buoy", "loads": [0.0, 2e4],
+                              "headings": [0.0, math.pi / 2], "load_steps": 2}))
+    assert ds.tether_tension.dims == ("condition", "applied_load", "heading", "line", "tether")
+    got = ds.tether_tension.sel(condition="intact", line="cable").values[..., 0]
+    for j, load in enumerate((0.0, 2e4)):
+        for k, heading in enumerate((0.0, math.pi / 2)):
+            force = (load * math.cos(heading), load * math.sin(heading))
+            case = _subsea_buoy({"type": "system_static"}, force)
+            eq = fe_equilibrium(case.system(), case.environment, stiffness=False)
+            assert got[j, k] == pytest.approx(tether_tension(eq.fe.model.network, eq.state.position)[0], rel=1e-8)
+    assert abs(got[1, 0] / got[1, 1] - 1) > 0.1  # the headings differ: a transposition is seen
+    assert np.isnan(ds.tether_tension.sel(line="tether").values).all()
+
+
 # ------------------------------------------------------------------------------------------------ bad input
 
 @pytest.mark.parametrize("change, message", [
