@@ -323,3 +323,14 @@ def test_bad_ties_on_a_system_line_are_refused_before_anything_runs(change, mess
     with pytest.raises(InputError) as err:
         sc.run(SystemCase.parse(data))
     assert message in str(err.value)
+
+
+def test_catenary_statics_refuse_a_tied_line():
+    """The catenary statics cannot carry a tie: asked for, they are refused naming the line (``auto`` takes the
+    finite-element statics, :func:`test_tied_cable_as_a_system_line_is_the_single_line`)."""
+    data = _buoy_system().model_dump(exclude_none=True)
+    data["analysis"]["statics"] = "catenary"
+    with pytest.raises(InputError) as err:
+        sc.run(SystemCase.parse(data))
+    assert "line 'cable' with ties to the seabed (clamps or tethers)" in str(err.value)
+    assert "Suggested fix" in str(err.value)
