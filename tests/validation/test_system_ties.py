@@ -26,7 +26,7 @@ import yaml
 import seacable as sc
 from seacable.errors import InputError
 from seacable.io import parse_case
-from seacable.mooring.outputs import tether_tension, tie_variables
+from seacable.mooring.outputs import tether_tension
 from seacable.mooring.run import case_model
 from seacable.mooring.solver import static_equilibrium
 from seacable.system.case import SystemCase
