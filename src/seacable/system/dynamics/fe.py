@@ -431,9 +431,9 @@ def line_tie_points(name: str, sl, system: MooringSystem, environment, failures=
         if kind != "free":
             raise InputError(
                 f"lines.{name}.sections[{i}] ({tie.type}) is at s = {tie.s:g} m, the line's {key} at point '{pname}', "
-                f"which is a {kind} point: it holds the end already, a tether there would pull on nothing that "
-                "moves. Suggested fix: tether a node inside the line (s between 0 and "
-                f"{total:g} m), or end the line at a free point.")
+                f"which is a {kind} point: a tether at a line's end is taken only at a free point (a buoy where "
+                "lines meet). Suggested fix: tether a node inside the line (s between 0 and "
+                f"{total:g} m), or run the tether as a line of its own from a fixed point to '{pname}'.")
         if (name, "ab"[end]) in failures:
             raise InputError(
                 f"lines.{name}.sections[{i}] ({tie.type}) is at the line's {key}, which analysis.failures releases: "
