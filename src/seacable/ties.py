@@ -130,12 +130,13 @@ def seabed_elevation(environment, x: float) -> float | None:
     return -float(environment.depth) + math.tan(bed.slope) * float(x)
 
 
-def tie_points(line, environment) -> dict:
+def tie_points(line, environment, where: str = "line") -> dict:
     """The point each clamp and tether of ``line`` holds to, ``{section index: (x, y, z)}`` [m]: as given, or on
     the seabed of ``environment`` under ``(x, y)`` when ``z`` is left out.
 
-    Raises ValueError (a case's validation error) for a point left on the seabed with no seabed, and for a point
-    below the seabed (a tether's anchor, a clamp's position).
+    Raises ValueError (a case's validation error) for a point left on the seabed with no seabed, for a point
+    below the seabed and for a point above the still water level (a tether's anchor, a clamp's position); the
+    message names the line as ``where`` (``line``, or a system's ``lines.NAME``).
     """
     out = {}
     for i, tie in ties_of(line):
@@ -143,12 +144,17 @@ def tie_points(line, environment) -> dict:
         zb = seabed_elevation(environment, p.x)
         if p.z is None:
             if zb is None:
-                raise ValueError(f"line.sections[{i}] ({tie.type}).{key} has no z and the environment no seabed to "
+                raise ValueError(f"{where}.sections[{i}] ({tie.type}).{key} has no z and the environment no seabed to "
                                  f"put it on. Suggested fix: give {key}.z in m, or environment.depth.")
             out[i] = (p.x, p.y, zb)
             continue
+        if p.z > 0.0:
+            raise ValueError(f"{where}.sections[{i}] ({tie.type}).{key}.z = {p.z:g} m is above the still water "
+                             "level (z = 0 m): a tie holds the cable to the seabed or to a point in the water. "
+                             f"Suggested fix: give {key}.z <= 0 m (elevation, 0 at the surface, negative down), or "
+                             f"leave it out to put the point on the seabed.")
         if zb is not None and p.z < zb - 1e-9 * max(abs(zb), 1.0):
-            raise ValueError(f"line.sections[{i}] ({tie.type}).{key}.z = {p.z:g} m is {zb - p.z:.4g} m below the "
+            raise ValueError(f"{where}.sections[{i}] ({tie.type}).{key}.z = {p.z:g} m is {zb - p.z:.4g} m below the "
                              f"seabed there (z = {zb:g} m at x = {p.x:g} m). Suggested fix: give a point on or above "
                              f"the seabed, or leave {key}.z out to put it on the seabed.")
         out[i] = (p.x, p.y, p.z)

@@ -45,6 +45,7 @@ from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import STAND_IN, LineType
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
+from ..ties import tie_points
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
 __all__ = ["SYSTEM_ANALYSES", "ExternalForceSeries", "LineFailure", "SystemAnalysis", "SystemCase",
@@ -486,6 +487,8 @@ class SystemCase(Model):
                                  f"{where}. Suggested fix: put the point on the seabed (z = {bed:g} m) or "
                                  "above it.")
         for name, line in system.lines.items():
+            # a tie's point below the seabed or above the sea, or left on a seabed not given (the single line's check)
+            tie_points(line.line, self.environment, f"lines.{name}")
             missing = [i for i, seg in enumerate(line.line.segments) if seg.line_type.axial_stiffness is None]
             if missing:
                 raise ValueError(f"lines.{name}: the system statics need an axial_stiffness (EA, N) on every "

@@ -691,10 +691,11 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     ``finite_element``.
     """
     from ..results import make_dataset, var
+    from .ties import equilibrium_ties, tie_variables
 
     a: SystemStaticAnalysis = case.analysis
     setup = prepare_system_static(case, statics)
-    records, profiles, bends, coupled, iterations, residuals = [], [], [], [], [], []
+    records, profiles, bends, ties, coupled, iterations, residuals = [], [], [], [], [], [], []
     pins, held = np.zeros((len(setup.conditions), len(setup.bodies), 3)), []
     intact_eq = None   # the intact equilibrium (the first condition), that most_loaded chooses its line by
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
@@ -719,6 +720,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
         records.append(equilibrium_variables(eq, system, setup))
         profiles.append(_profiles(eq, setup, a.profile_points))
         bends.append(_bending(eq, setup))
+        ties.append(equilibrium_ties(eq, setup.lines))
         coupled.append(np.asarray(eq.stiffness, float))
         iterations.append(int(eq.iterations))
         residuals.append(float(eq.residual))
@@ -741,6 +743,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     coords = _coords(setup, a.profile_points)
     if any(bends):
         _bending_variables(bends, data, coords)
+    tie_variables(ties, ("condition",), (nc,), data, coords)
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup), owned=True)
     ds.attrs["depth"] = float(case.environment.depth)
@@ -751,13 +754,16 @@ def run_system_static(case: SystemCase, statics: str | None = None):
 
 
 def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, restoring: list,
-                   chosen: list | None = None) -> None:
+                   chosen: list | None = None, ties: list | None = None) -> None:
     """Solve the swept loads of each condition and heading in order, appending each equilibrium's
-    variables to ``records`` and its restoring force to ``restoring`` (so that an interrupt keeps them).
+    variables to ``records`` and its restoring force to ``restoring`` (so that an interrupt keeps them), and its
+    ties' outputs to ``ties`` (:func:`seacable.system.ties.equilibrium_ties`) when given.
 
     A damaged condition of ``damaged_lines: most_loaded`` (its system None) removes, at each heading, the line
     of the largest tension in the intact equilibrium under that heading's largest load; ``chosen`` gets those
     lines, heading by heading."""
+    from .ties import equilibrium_ties
+
     a: SystemOffsetsAnalysis = case.analysis
     for c, (condition, system) in enumerate(zip(setup.conditions, setup.systems)):
         where = f"system_offsets case '{case.name}', {condition} condition"
@@ -799,6 +805,8 @@ def _sweep_offsets(case: SystemCase, setup, loads, headings, records: list, rest
                     last = load
                 records.append(equilibrium_variables(eq, system, setup))
                 restoring.append(-_body_line_force(eq, system, a.body)[:2] @ direction[:2])
+                if ties is not None:
+                    ties.append(equilibrium_ties(eq, setup.lines))
 
 
 def run_system_offsets(case: SystemCase, statics: str | None = None):
@@ -812,13 +820,14 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
         heading; ``offset`` the loaded body's offset along the heading from its given position.
     """
     from ..results import make_dataset, var
+    from .ties import tie_variables
 
     a: SystemOffsetsAnalysis = case.analysis
     setup = prepare_system_offsets(case, statics)
     loads, headings = np.asarray(setup.loads, float), np.asarray(setup.headings, float)
-    records, restoring, chosen = [], [], []
+    records, restoring, chosen, ties = [], [], [], []
     try:
-        _sweep_offsets(case, setup, loads, headings, records, restoring, chosen)
+        _sweep_offsets(case, setup, loads, headings, records, restoring, chosen, ties)
         interrupted = False
     except KeyboardInterrupt:  # Ctrl-C or SIGTERM: keep the equilibria found, NaN for the rest
         if not records:
@@ -857,6 +866,10 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     coords = _coords(setup)
     coords.update({"applied_load": var("applied_load", loads, "N", f"external horizontal load on body '{a.body}'"),
                    "heading": var("heading", headings, "rad", "heading of the load, from +x towards +y")})
+    # the ties' outputs (condition, applied_load, heading, line, tether or clamp), solved heading by heading
+    ties += [{}] * (lead[0] * lead[1] * lead[2] - len(ties))  # an interrupted sweep: NaN for the rest
+    order = np.arange(len(ties)).reshape(lead[0], lead[2], lead[1]).transpose(0, 2, 1).ravel()
+    tie_variables([ties[k] for k in order], dims, lead, data, coords)
     ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
                       settings=_settings(case, setup, body=a.body), owned=True)
     ds.attrs["loaded_body"] = a.body

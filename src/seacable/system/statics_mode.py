@@ -16,8 +16,9 @@ STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
 def needs_fe(env, lines=None) -> str:
     """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed, a wind (its
     force on a body turns with the body's heading); and, given the system's ``lines`` ({name: SystemLine}), a line
-    with sections (buoyancy modules, bend stiffeners) or with an end held in bending (clamped, a rotational spring),
-    which need the finite-element line's bending and its sections resolved on the mesh."""
+    with sections (buoyancy modules, bend stiffeners), with ties to the seabed (clamps, tethers) or with an end held
+    in bending (clamped, a rotational spring), which need the finite-element line's bending and its sections
+    resolved on the mesh."""
     cur = env.current
     speeds = [cur.speed] if cur.depths is None else list(cur.speeds)
     why = []
@@ -34,11 +35,14 @@ def needs_fe(env, lines=None) -> str:
 
 def line_reasons(lines) -> str:
     """Why the catenary statics cannot carry the system's ``lines`` ({name: SystemLine}; '' when they can): a line
-    with sections or with an end held in bending."""
+    with sections, with ties to the seabed or with an end held in bending."""
     why = []
     for name, line in lines.items():
-        if line.line.sections:
-            why.append(f"line '{name}' with sections (buoyancy modules or bend stiffeners)")
+        ties = sum(getattr(sec, "type", None) in ("clamp", "tether") for sec in line.line.sections)
+        parts = (["sections (buoyancy modules or bend stiffeners)"] if len(line.line.sections) > ties else []) + (
+            ["ties to the seabed (clamps or tethers)"] if ties else [])
+        if parts:
+            why.append(f"line '{name}' with {' and '.join(parts)}")
         held = [k for k in ("end_a", "end_b") if getattr(line, f"{k}_condition").holds]
         if held:
             kinds = "/".join(sorted({getattr(line, f"{k}_condition").type for k in held}))

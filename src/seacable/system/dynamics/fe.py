@@ -15,6 +15,7 @@ from ...mooring.motion import rotation_matrix
 from ...mooring.network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from ...mooring.outputs import water_of_environment
 from ...mooring.solver import MooringModel, Water
+from ...ties import Clamp, tie_points, ties_of
 from ...wind import AIR_DENSITY
 from ..case import SystemDynamicAnalysis
 from ..hydro import area_tables
@@ -82,6 +83,9 @@ class SystemFE:
     # every held line end: (row of the hinge table, its point, its direction into the line in its body's axes or None
     # at a point not on a body), for the outputs' directions (:func:`seacable.system.bending.held_directions`)
     held: tuple = ()
+    # per line, its ties to the seabed (:mod:`seacable.ties`) in the order of the line: ``(kind, j, node)`` with kind
+    # "tether" or "clamp", j the node's index along the line and node its network node (:mod:`seacable.system.ties`)
+    line_ties: tuple = ()
 
     def kernel_args(self):
         m = self.model
@@ -171,13 +175,15 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     tables = []  # per element: its line type's strain-tension table or None
     bending, visco = [], []  # per line: its elements' EI and viscoelastic parameters
     laws = []  # per element: its moment-curvature law or None (seacable.sections.element_moment_curvature)
+    tethers, springs, line_ties = {}, {}, []  # node -> its tether's or spring clamp's row; per line its ties
     line_names = tuple(system.lines)
     for li, (lname, sl) in enumerate(system.lines.items()):
         ends = [sl.end_a, sl.end_b]
         xa, xb = pos[point_node[ends[0]]], pos[point_node[ends[1]]]
+        ties = line_tie_points(lname, sl, system, environment, failures)
         sub = network_from_line(sl.line, xa, xb, water_density=rho, gravity=g,
                                 n_elements=n_el if n_el is not None else sl.n_elements, damping_ratio=ratio,
-                                stiffness_proportional=beta, end_b="free")
+                                stiffness_proportional=beta, end_b="free", ties=ties)
         s = sub.arc_length
         n = len(s)
         # start shape: the catenary, solved from the lower end up (of the line with its sections resolved: a
@@ -187,7 +193,16 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         lengths = np.array([seg.length for seg in line.segments])
         weights = np.array(line.weights(rho, g))
         ea = np.array([seg.line_type.effective_axial_stiffness() for seg in line.segments])
-        if xa[2] <= xb[2]:
+        rigid = sorted(((tie.s, np.asarray(p, float)) for tie, p in ties
+                        if isinstance(tie, Clamp) and tie.stiffness is None), key=lambda held: held[0])
+        if rigid:  # held at its rigid clamps too: the catenary start of each piece between them (as a single line's)
+            from ...mooring.run import _start_positions
+
+            shape = _start_positions([(0.0, xa)] + rigid + [(float(s[-1]), xb)], s, lengths, weights, ea,
+                                     line.point_loads(rho, g), depth=depth, slope=slope, buoyant=buoyant)
+            inner = sub.kind == FIXED
+            shape[inner] = sub.position[inner]
+        elif xa[2] <= xb[2]:
             shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=line.point_loads(rho, g),
                                        depth=depth, slope=slope, buoyant=buoyant)
         else:
@@ -224,7 +239,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         first = len(pos)
         ids[1:-1] = np.arange(first, first + n - 2)
         pos.extend(shape[1:-1])
-        kind.extend([FREE] * (n - 2))
+        kind.extend(np.where(sub.kind[1:-1] == FIXED, FIXED, FREE).tolist())  # a rigid clamp's node is held
+        line_ties.append(_gather_ties(lname, sub, ids, tethers, springs))
         chan.extend([-1] * (n - 2))
         arc.extend(s[1:-1])
         fext.extend([np.zeros(3)] * (n - 2))
@@ -283,7 +299,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         breaking_load=P[:, 10], element_tension_strain=tuple(tables) if any(t is not None for t in tables) else None,
         bending_stiffness=np.concatenate(bending) if bending else np.zeros(0),
             element_viscoelastic=np.vstack(visco) if visco and np.any(np.vstack(visco)) else None,
-        element_moment_curvature=tuple(laws) if any(law is not None for law in laws) else None)
+        element_moment_curvature=tuple(laws) if any(law is not None for law in laws) else None,
+        point_tether=_tie_table(tethers, nn, 6), point_clamp=_tie_table(springs, nn, 4))
     if held:
         net = net.replace(end_hinges=tuple(h[:5] for h in held))
     model = MooringModel(net, _water(environment, analysis))
@@ -378,8 +395,87 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         fail_elem=np.array(C[7], np.int64), con_line=np.array(C[8], np.int64), channel_source=channel_source,
         clamps=clamps, held=tuple((model.hinges.shape[0] - len(held) + k, h[5], h[6]) for k, h in enumerate(held)),
         bpar=bpar, bkhs=bkhs, badd=badd, blin=blin, bquad=bquad, ext_t=ext_t, ext_f=ext_f, ext_n=ext_n, spin=spin,
-        memory_kernel=memory, memory_step=step)
+        memory_kernel=memory, memory_step=step, line_ties=tuple(line_ties))
     return fe
+
+
+def line_tie_points(name: str, sl, system: MooringSystem, environment, failures=()) -> tuple:
+    """The ties to the seabed of the system line ``name`` (:mod:`seacable.ties`), each ``(tie, point)`` with the
+    point it holds to (x, y, z) [m] (:func:`seacable.ties.tie_points`), as
+    :func:`seacable.mooring.network.network_from_line` takes them; () for a line without.
+
+    Raises
+    ------
+    InputError
+        A tie's point left on the seabed with no seabed, below the seabed or above the still water level; a tether
+        at a line's end anywhere but at a free point (a fixed, coupled or body point holds the end already), or at
+        an end that may fail (``failures``: {(line, "a" or "b"): ...}).
+    """
+    from ...errors import InputError
+
+    found = ties_of(sl.line)
+    if not found:
+        return ()
+    try:
+        points = tie_points(sl.line, environment, f"lines.{name}")
+    except ValueError as err:
+        raise InputError(str(err)) from None
+    total = float(sl.line.length)
+    for i, tie in found:
+        if not (tie.s <= 1e-9 * total or tie.s >= total * (1 - 1e-9)):
+            continue
+        end = 0 if tie.s <= 1e-9 * total else 1
+        key = ("end_a", "end_b")[end]
+        pname = getattr(sl, key)
+        kind = system.points[pname].kind
+        if kind != "free":
+            raise InputError(
+                f"lines.{name}.sections[{i}] ({tie.type}) is at s = {tie.s:g} m, the line's {key} at point '{pname}', "
+                f"which is a {kind} point: a tether at a line's end is taken only at a free point (a buoy where "
+                "lines meet). Suggested fix: tether a node inside the line (s between 0 and "
+                f"{total:g} m), or run the tether as a line of its own from a fixed point to '{pname}'.")
+        if (name, "ab"[end]) in failures:
+            raise InputError(
+                f"lines.{name}.sections[{i}] ({tie.type}) is at the line's {key}, which analysis.failures releases: "
+                "a tethered end that fails is not modelled. Suggested fix: tether a node inside the line, or leave "
+                "the failure out.")
+    return tuple((tie, points[i]) for i, tie in found)
+
+
+def _gather_ties(name: str, sub, ids, tethers: dict, springs: dict) -> tuple:
+    """The ties of one line's network ``sub`` (its tethers' and spring clamps' rows, its rigid clamps' held inner
+    nodes) moved to the system's nodes ``ids``: rows into ``tethers`` and ``springs`` ({node: row}); returns the
+    line's ``(kind, j, node)`` in the order of the line (:attr:`SystemFE.line_ties`).
+
+    Raises InputError for two tethers on one point's node (two lines tethered at the free point they share)."""
+    from ...errors import InputError
+
+    out = []
+    for j in range(len(ids)):
+        node = int(ids[j])
+        if 0 < j < len(ids) - 1 and sub.kind[j] == FIXED:
+            out.append(("clamp", j, node))
+        for table, rows, kind in ((sub.point_tether, tethers, "tether"), (sub.point_clamp, springs, "clamp")):
+            if table is None or not table[j, -2 if kind == "tether" else 3] > 0:
+                continue
+            if node in rows:
+                raise InputError(
+                    f"lines.{name}: its {kind} at its end is at a free point another line is tethered at already; a "
+                    f"node takes one {kind}. Suggested fix: give one {kind} there, its axial stiffness the combined "
+                    "one, or tether a node inside one of the lines.")
+            rows[node] = table[j]
+            out.append((kind, j, node))
+    return tuple(out)
+
+
+def _tie_table(rows: dict, n: int, width: int):
+    """The network's ``point_tether`` or ``point_clamp`` (n, width) of the rows {node: row}; None without any."""
+    if not rows:
+        return None
+    out = np.zeros((n, width))
+    for node, row in rows.items():
+        out[node] = row
+    return out
 
 
 def held_ends(system: MooringSystem, failures=()) -> list:

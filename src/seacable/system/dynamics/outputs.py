@@ -10,6 +10,7 @@ from ...mooring.kernel import E_BEDRAMP as K_BEDRAMP
 from ...mooring.outputs import elevation_variables, grounded_end_force, height_above_seabed
 from ...results import make_dataset, var
 from ..statics.model import euler_rate_map
+from ..ties import run_tie_variables
 from .fe import SystemFE
 from .loop import SystemRun
 
@@ -145,6 +146,8 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
                     bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
     data.update(_bending_outputs(fe, run, bodies, bp))
+    tie_data, tie_coords = run_tie_variables(fe, run)
+    data.update(tie_data)
     coords = {"time": var("time", run.time, "s", "time"),
               "line": var("line", list(fe.line_names), "1", "line"),
               "node": var("node", np.arange(nmax), "1", "node index along the line, 0 at end A"),
@@ -152,6 +155,7 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
               "s": var(("line", "node"), _padded([np.r_[0.0, np.cumsum(fe.model.network.length[e])]
                                                   for e in fe.line_elements], nmax), "m",
                        "unstretched arc length from end A")}
+    coords.update(tie_coords)
     if bodies:
         coords["body"] = var("body", bodies, "1", "body")
         coords["dof"] = var("dof", list(DOFS), "1", "degree of freedom: x, y, z [m], roll, pitch, yaw [rad]")
