@@ -334,3 +334,25 @@ def test_grounded_length_and_node_tensions_are_their_formulas_to_the_bit(tmp_pat
         np.add.at(total, (..., net.elements[:, end]), T)
         np.add.at(count, net.elements[:, end], 1)
     assert np.array_equal(R._node_tension(net, T), total / np.maximum(count, 1))
+
+
+def test_a_run_that_fails_after_a_jump_at_the_start_says_so():
+    """A harmonic hang-off heave of 5 cm at 8 s without a ramp (the 80 m lazy wave, 0.5 m elements) starts the
+    hang-off at 0.0393 m/s beside a cable at rest: the jump sends an axial wave of ``sqrt(EA m) dv`` = 5.15 kN
+    (EA 4.69e8 N, m 36.7 kg/m) along a line held at 9.3 kN, which slackens and snaps it, and the tension-only
+    elements' Newton fails within 0.3 s (with compression the same run passes, its tension 0.6 to 13.5 kN: the
+    wave). The message names the jump and the ramp that removes it; with a one-period ramp the run passes."""
+    case = sc.load_case(Path(__file__).parents[2] / "examples" / "lazy_wave_80m.yaml")
+    analysis = {**case.analysis.model_dump(exclude={"type"}), "type": "mooring_dynamic", "duration": 0.5,
+                "time_step": 0.05, "output_interval": 0.1,
+                "motion": {"type": "harmonic", "amplitude": [0.0, 0.0, 0.05], "period": 8.0}}
+    dv = 0.05 * 2 * math.pi / 8.0
+    with pytest.raises(ConvergenceError) as err:
+        sc.run(case.model_copy(update={"analysis": sc.Case.model_validate(
+            {**case.model_dump(), "analysis": analysis}).analysis}))
+    assert f"starts from rest at {dv:.3g} m/s" in str(err.value)
+    assert f"sqrt(EA m) dv = {math.sqrt(4.69e8 * 36.7) * dv:.3g} N" in str(err.value)
+    assert "'ramp'" in str(err.value)
+    analysis["motion"]["ramp"] = 8.0
+    ds = sc.run(sc.Case.model_validate({**case.model_dump(), "analysis": analysis}))
+    assert float(ds.fairlead_tension.max()) < 9.4e3  # no snap

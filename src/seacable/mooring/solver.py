@@ -782,6 +782,25 @@ class MooringRun:
     kinematic_nodes: np.ndarray | None = None  # the nodes of velocity and acceleration (nt, k, 3); None: all
 
 
+def _start_jump_fix(model: MooringModel, V, pres) -> str:
+    """The suggested fix of a time step that fails in a run whose motion starts moving from rest ("" if it does not):
+    the moved nodes start at the motion's velocity ``V[pres]`` beside nodes at rest, a jump that sends an axial wave
+    of ``sqrt(EA m) dv`` along each moved end's element (its impedance), which can slacken and snap a taut line."""
+    if pres.size == 0:
+        return ""
+    net = model.network
+    dv = np.linalg.norm(V[pres], axis=-1)
+    k = int(np.argmax(dv))
+    if dv[k] <= 0.0:
+        return ""
+    node = int(pres[k])
+    e = np.flatnonzero((net.elements == node).any(axis=1))
+    wave = float(np.max(np.sqrt(net.axial_stiffness[e] * net.mass_per_length[e]))) * float(dv[k]) if e.size else 0.0
+    return (f"the motion starts from rest at {dv[k]:.3g} m/s (moved node {node}), a jump that sends an axial wave of "
+            f"sqrt(EA m) dv = {wave:.3g} N along the line: give the motion a smooth start (its 'ramp' [s], e.g. one "
+            "period), or a smaller time_step or more elements")
+
+
 def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: float, output_interval: float,
              *, initial: np.ndarray | None = None, tol: float = 1e-7, max_iter: int = 30,
              beta: float | None = None, gamma: float | None = None, spectral_radius: float = 1.0, progress=None,
@@ -907,7 +926,7 @@ def simulate(model: MooringModel, motion: MotionFn | None, duration: float, dt: 
     record(0)
     stats = np.zeros(3)
     count = np.zeros(4, np.int64)  # outputs stored, steps, Newton iterations, steps of a failed interval
-    fix = "smaller time_step, more elements, or check the motion for a jump"
+    fix = _start_jump_fix(model, V, pres) or "smaller time_step, more elements, or check the motion for a jump"
     interrupted = False
     start = _time.perf_counter()
     reported, reporting = 0, False
