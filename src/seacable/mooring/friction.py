@@ -1,0 +1,215 @@
+"""The seabed's Coulomb friction in the statics of a mooring line or cable: where the friction targets come from,
+how they follow a line that slides, and the analyses' choice (:class:`StaticFriction`).
+
+The dynamics' friction acts on the nodes' velocity (:mod:`seacable.mooring._loads`): at rest it gives no force, so
+the statics used to be frictionless, and a current at the seabed dragged a grounded cable with nothing to hold it.
+The statics now take OrcaFlex's model (Orcina, *OrcaFlex help: Friction theory*): each grounded node has a
+friction *target position* and the friction acts in the seabed's plane towards it, elastic (a shear spring) up to
+``mu N`` and sliding beyond, regularised smoothly (:mod:`seacable.mooring._friction`, with its exact tangent).
+
+**The targets** (``mode: as_laid``, the default, OrcaFlex's): the *as-laid* state is the frictionless equilibrium
+in still water at the nominal positions (the case's fairlead; no current, no offset); every free node on the seabed
+there takes its position as its target, and the analysis's loads (the current, the pushover's offsets) are then
+applied with friction, from that state. In still water the result is the frictionless one (the as-laid state is in
+equilibrium with no friction force). A node not on the seabed in the as-laid state has no target and no friction.
+``mode: off`` keeps the frictionless statics. Seabed friction 0 (``environment.seabed.friction``, the default) is
+frictionless whatever the mode, to the bit as before.
+
+**A pushover** (``pushover_path``): ``as_laid`` (the default) loads each offset from the as-laid targets, so that
+each offset is the line pulled monotonically from its lay to that offset, independent of the others and of their
+order; ``incremental`` applies the offsets in the order given, the first from the as-laid state, each from the
+previous offset's slid state: after each offset the targets follow the nodes that slid (a node farther than
+``SLIDE_FACTOR d_f`` from its target has it moved along the slip to that distance behind it: the force stays
+within 0.5 % of ``mu N``), a node that touched down takes its position as its target and one that lifted off loses
+its. That is the path dependence of a real lay: a line pulled out and then pushed back stays where friction holds
+it.
+
+**The regularisation scale** ``friction_distance`` ``d_f`` (default 1 mm, as the laying analysis's): a grounded
+node moved ``d`` from its target feels ``mu N d / sqrt(d^2 + d_f^2)``, so that a line held by friction (a lateral
+drag ``q < mu w``) moves ``d_f r / sqrt(1 - r^2)`` with ``r = q / (mu w)``, and a line pulled along itself mobilises
+its friction over the length where its stretch has moved it more than about ``d_f``: the shear-lag length
+``sqrt(2 EA d_f / (mu w))`` (tens of metres for a stiff cable at 1 mm): a smaller ``d_f`` is nearer rigid-plastic
+Coulomb friction (MoorPy's), at more Newton iterations.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Literal
+
+import numpy as np
+from pydantic import Field
+
+from .._model import Model, quantity
+from ..errors import ConvergenceError
+
+__all__ = ["SLIDE_FACTOR", "StaticFriction", "StaticFrictionOption", "friction_pushover", "friction_static",
+           "friction_targets", "slide_targets"]
+
+#: A node farther than this many ``friction_distance`` from its target has slid: an incremental path moves its
+#: target along the slip to that distance behind it (the regularised force there is 10 / sqrt(101) = 0.995 of mu N).
+SLIDE_FACTOR = 10.0
+
+
+class StaticFriction(Model):
+    """The seabed's friction in the statics of a mooring line (``mooring_static``, ``mooring_pushover``).
+
+    ``mode``: ``as_laid`` (the default): friction towards the targets of the as-laid state (the frictionless
+    equilibrium in still water at the nominal fairlead), the analysis's current and offsets applied from there;
+    ``off``: frictionless statics. ``pushover_path``: ``as_laid``, each offset loaded from the as-laid targets, or
+    ``incremental``, each from the previous offset's slid state (the offsets in the order given).
+    ``friction_distance``: the slip at which the friction reaches its limit, the regularisation's scale [m]
+    (:mod:`seacable.mooring.friction`)."""
+
+    mode: Literal["as_laid", "off"] = Field(
+        "as_laid", description="'as_laid': Coulomb friction in the statics towards the as-laid positions (the "
+                               "frictionless equilibrium in still water); 'off': frictionless statics.")
+    pushover_path: Literal["as_laid", "incremental"] = Field(
+        "as_laid", description="A pushover's offsets each loaded from the as-laid targets ('as_laid'), or in the "
+                               "order given, each from the previous offset's slid state ('incremental').")
+    friction_distance: quantity("m", gt=0, fix="give the slip in metres at which the friction reaches mu N, e.g. "
+                                               "0.001.") = Field(
+        1e-3, description="Slip at which the static friction reaches its limit mu N; below it a shear spring of "
+                          "stiffness mu N / friction_distance. [m]")
+
+
+class StaticFrictionOption(Model):
+    """The ``static_friction`` key of the mooring analyses that solve statics (a mix-in of their schemas)."""
+
+    static_friction: StaticFriction = Field(
+        default_factory=StaticFriction,
+        description="The seabed's friction in the statics (with environment.seabed.friction > 0): its targets, a "
+                    "pushover's path and the slip distance.")
+
+
+def _active(model, settings: StaticFriction | None) -> bool:
+    water = model.water
+    return (settings is not None and settings.mode != "off" and water.friction > 0.0 and water.seabed_stiffness > 0.0
+            and (water.depth is not None or water.profile is not None))
+
+
+def _still(model):
+    """``model`` in still water (no current): the as-laid state's."""
+    from .solver import MooringModel
+
+    water = model.water
+    if not any(water.current_speeds):
+        return model
+    still = dataclasses.replace(water, current_speeds=(0.0,) * len(water.current_speeds))
+    return MooringModel(model.network, still, checked=True)
+
+
+def _normals(water, x):
+    """The seabed's unit normal under each ``x`` (k, 3), from its slope along X. [-]"""
+    h = 1e-6
+    slope = (water.seabed_z(x + h) - water.seabed_z(x - h)) / (2 * h)
+    c = 1.0 / np.sqrt(1.0 + slope * slope)
+    return np.column_stack([-slope * c, np.zeros_like(c), c])
+
+
+def _in_contact(model, X) -> np.ndarray:
+    """The free nodes that press on the seabed (a normal force > 0: penetration above minus the contact's rounding
+    band, as the kernel's), (n,) bool."""
+    from . import kernel as K
+
+    water = model.water
+    X = np.asarray(X, float)
+    pen = (water.seabed_z(X[:, 0]) - X[:, 2]) * _normals(water, X[:, 0])[:, 2]
+    return (pen > -model.env[K.E_BEDRAMP]) & (model.bedc > 0.0) & (model.fidx >= 0)
+
+
+def friction_targets(model, X) -> np.ndarray:
+    """The friction targets of the state ``X`` (n, 3): the positions of the free nodes on the seabed there, NaN rows
+    for the others (no friction). [m]"""
+    X = np.asarray(X, float)
+    targets = np.full_like(X, np.nan)
+    on = _in_contact(model, X)
+    targets[on] = X[on]
+    return targets
+
+
+def slide_targets(model, X, targets, friction_distance: float) -> np.ndarray:
+    """The targets after a converged load step at ``X`` (module docstring): those of nodes that slid farther than
+    ``SLIDE_FACTOR friction_distance`` follow them to that distance, touched-down nodes take their positions,
+    lifted-off ones none. [m]"""
+    X = np.asarray(X, float)
+    out = np.full_like(X, np.nan)
+    on = _in_contact(model, X)
+    held = on & np.isfinite(targets[:, 0])
+    out[on & ~held] = X[on & ~held]
+    r = X[held] - targets[held]
+    n = _normals(model.water, X[held, 0])
+    d = r - np.sum(r * n, axis=1)[:, None] * n
+    size = np.linalg.norm(d, axis=1)
+    reach = SLIDE_FACTOR * friction_distance
+    far = size > reach
+    moved = targets[held].copy()
+    moved[far] = X[held][far] - reach * d[far] / size[far, None]
+    out[held] = moved
+    return out
+
+
+def _solve(model, start, tol, targets, settings, what: str):
+    from .solver import static_equilibrium
+
+    try:
+        return static_equilibrium(model, start, tol=tol, targets=targets,
+                                  friction_distance=settings.friction_distance)
+    except ConvergenceError as err:
+        raise ConvergenceError(f"{what}: {err}", iterations=getattr(err, "iterations", None),
+                               residual=getattr(err, "residual", None)) from None
+
+
+def _as_laid(model, tol):
+    """The as-laid state: the frictionless equilibrium in still water at the nominal positions."""
+    from .solver import static_equilibrium
+
+    try:
+        return static_equilibrium(_still(model), tol=tol)
+    except ConvergenceError as err:
+        raise ConvergenceError(
+            f"the as-laid state (the frictionless equilibrium in still water, which gives the static friction its "
+            f"targets) has no solution: {err} If the line lies across a slope that only friction holds, the as-laid "
+            "state cannot be found: set analysis.static_friction.mode: off and give the line a layout its tension "
+            "holds.", iterations=getattr(err, "iterations", None), residual=getattr(err, "residual", None)) from None
+
+
+def friction_static(model, settings: StaticFriction | None, *, tol: float = 1e-9):
+    """The static equilibrium of ``model`` with the seabed's friction towards the as-laid targets (module
+    docstring); frictionless (:func:`seacable.mooring.solver.static_equilibrium`, unchanged) when ``settings`` is
+    None or off, or the seabed has no friction. Its ``iterations`` count the as-laid state's too."""
+    from .solver import static_equilibrium
+
+    if not _active(model, settings):
+        return static_equilibrium(model, tol=tol)
+    laid = _as_laid(model, tol)
+    state = _solve(model, laid.position, tol, friction_targets(model, laid.position), settings,
+                   "the statics with seabed friction, from the as-laid state")
+    return dataclasses.replace(state, iterations=state.iterations + laid.iterations)
+
+
+def friction_pushover(model, offsets, direction, settings: StaticFriction | None, *, tol: float = 1e-9):
+    """A pushover (:func:`seacable.mooring.solver.pushover`) with the seabed's friction: each offset from the
+    as-laid targets, or along the incremental path (module docstring); the frictionless one when ``settings`` is
+    None or off, or the seabed has no friction."""
+    from .network import PRESCRIBED
+    from .solver import pushover
+
+    if not _active(model, settings):
+        return pushover(model, offsets, direction, tol=tol)
+    d = np.asarray(direction, float)
+    d = d / np.linalg.norm(d)
+    moving = model.network.kind == PRESCRIBED
+    base = model.network.position
+    laid = _as_laid(model, tol)
+    targets = friction_targets(model, laid.position)
+    X = laid.position.copy()
+    states = []
+    for off in np.asarray(offsets, float):
+        X[moving] = base[moving] + off * d
+        state = _solve(model, X, tol, targets, settings, f"the statics with seabed friction at the offset {off:g} m")
+        states.append(state)
+        X = state.position.copy()
+        if settings.pushover_path == "incremental":
+            targets = slide_targets(model, X, targets, settings.friction_distance)
+    return states
