@@ -260,7 +260,18 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
         return ""  # frictionless, no current: the grounded line is held along itself by its tension
     k = int(np.argmax(q - hold))
     if q[k] <= 0.0 or q[k] <= hold[k]:
-        return ""
+        if not friction or water.compression:
+            return ""
+        # held node by node, but pushed along itself: tension-only elements pass no push on to the nodes behind
+        tension = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)[2]
+        slack = els[tension[els] <= 0.0]
+        if slack.size == 0:
+            return ""
+        return (f" The grounded line is pushed along itself towards its anchor: {slack.size} of its elements on the "
+                "seabed are slack, and elements that carry no compression pass no push on, so each node there has "
+                "only its own friction to hold it. Suggested fix: let the elements carry compression (the "
+                "analysis's 'compression: true'), as a cable with bending stiffness does, so that the friction of "
+                "the whole grounded length holds the push.")
     s = 0.5 * (net.arc_length[a[k]] + net.arc_length[b[k]])
     what = (f"the current's drag ({float(np.linalg.norm(drag[k])):.4g} N/m; {float(speed[k]):.3g} m/s at the seabed)"
             if np.any(drag[k]) else "")
@@ -272,11 +283,11 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
                 f"all, more than the seabed's friction holds, mu w cos(slope) = {water.friction:g} x "
                 f"{float(w[k]):.4g} N/m x {math.cos(slope[k]):.4g} = {float(hold[k]):.4g} N/m: it slides, and has no "
                 "static equilibrium (the statics' friction acts towards each grounded node's target, at most mu N). "
-                "Give the seabed more friction (environment.seabed.friction) if the soil has it, or a current "
+                "Suggested fix: give the seabed more friction (environment.seabed.friction) if the soil has it, or a current "
                 "profile that falls towards the seabed (environment.current), as the seabed's boundary layer does.")
     return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what} ({float(q[k]):.4g} N/m), and "
             "the statics have no friction to hold it (environment.seabed.friction is 0, or the analysis's "
-            "static_friction mode is 'off'): pushed towards its anchor, a grounded line has no equilibrium. Give the "
-            "seabed its friction coefficient (environment.seabed.friction, e.g. 0.5-1 for a cable or chain on clay), "
+            "static_friction mode is 'off'): pushed towards its anchor, a grounded line has no equilibrium. Suggested "
+            "fix: give the seabed its friction coefficient (environment.seabed.friction, e.g. 0.5-1 for a cable or chain on clay), "
             "or a current profile that falls to zero at the seabed (environment.current depths and speeds), as the "
             "seabed's boundary layer does.")

@@ -46,6 +46,9 @@ from ..errors import ConvergenceError
 __all__ = ["SLIDE_FACTOR", "StaticFriction", "StaticFrictionOption", "friction_pushover", "friction_static",
            "friction_targets", "slide_targets"]
 
+#: The smallest load step (a fraction of the load from the last equilibrium) the statics with friction take before
+#: they give up (:func:`friction_static`): 4^-4.
+SMALLEST_STEP = 1.0 / 256.0
 #: A node farther than this many ``friction_distance`` from its target has slid: an incremental path moves its
 #: target along the slip to that distance behind it (the regularised force there is 10 / sqrt(101) = 0.995 of mu N).
 SLIDE_FACTOR = 10.0
@@ -128,10 +131,11 @@ def friction_targets(model, X) -> np.ndarray:
     return targets
 
 
-def slide_targets(model, X, targets, friction_distance: float) -> np.ndarray:
+def slide_targets(model, X, targets, friction_distance: float, follow: bool = True) -> np.ndarray:
     """The targets after a converged load step at ``X`` (module docstring): those of nodes that slid farther than
-    ``SLIDE_FACTOR friction_distance`` follow them to that distance, touched-down nodes take their positions,
-    lifted-off ones none. [m]"""
+    ``SLIDE_FACTOR friction_distance`` follow them to that distance (unless ``follow`` is False: the load steps of
+    one monotonic loading, where the regularised force of a slid node must stay ``mu N``), touched-down nodes take
+    their positions, lifted-off ones none. [m]"""
     X = np.asarray(X, float)
     out = np.full_like(X, np.nan)
     on = _in_contact(model, X)
@@ -142,22 +146,56 @@ def slide_targets(model, X, targets, friction_distance: float) -> np.ndarray:
     d = r - np.sum(r * n, axis=1)[:, None] * n
     size = np.linalg.norm(d, axis=1)
     reach = SLIDE_FACTOR * friction_distance
-    far = size > reach
+    far = (size > reach) & follow
     moved = targets[held].copy()
     moved[far] = X[held][far] - reach * d[far] / size[far, None]
     out[held] = moved
     return out
 
 
-def _solve(model, start, tol, targets, settings, what: str):
+def _loaded(model, fraction: float):
+    """``model`` with its current's speeds times ``fraction``."""
+    from .solver import MooringModel
+
+    water = model.water
+    if fraction == 1.0 or not any(water.current_speeds):
+        return model
+    speeds = tuple(fraction * v for v in water.current_speeds)
+    return MooringModel(model.network, dataclasses.replace(water, current_speeds=speeds), checked=True)
+
+
+def _load_path(model, X, targets, settings, tol, *, to, current_from: float, what: str):
+    """From the equilibrium ``X`` with friction targets ``targets`` to ``model``'s: the prescribed nodes moved from
+    their places in ``X`` to ``to``, the current from ``current_from`` of its speeds to all of them, in load steps
+    (the whole load first; a step that fails is cut to a quarter, down to :data:`SMALLEST_STEP`); after each,
+    touched-down nodes take their positions as targets and lifted-off ones lose theirs (:func:`slide_targets`; a slid
+    node keeps its target: one monotonic loading). Returns the state, its targets and the iterations spent."""
+    from .network import PRESCRIBED
     from .solver import static_equilibrium
 
-    try:
-        return static_equilibrium(model, start, tol=tol, targets=targets,
-                                  friction_distance=settings.friction_distance)
-    except ConvergenceError as err:
-        raise ConvergenceError(f"{what}: {err}", iterations=getattr(err, "iterations", None),
-                               residual=getattr(err, "residual", None)) from None
+    moving = model.network.kind == PRESCRIBED
+    start = X[moving].copy()
+    done, step, spent, state = 0.0, 1.0, 0, None
+    while state is None or done < 1.0:
+        nxt = min(1.0, done + step)
+        stepped = _loaded(model, current_from + nxt * (1.0 - current_from))
+        Y = X.copy()
+        Y[moving] = start + nxt * (to - start)
+        try:
+            state = static_equilibrium(stepped, Y, tol=tol, targets=targets,
+                                       friction_distance=settings.friction_distance)
+        except ConvergenceError as err:
+            if step <= SMALLEST_STEP:
+                raise ConvergenceError(
+                    f"{what}, applied in load steps down to {step:.3g} of it, did not converge beyond {done:.3g} of "
+                    f"the load: {err}", iterations=spent + (err.iterations or 0), residual=err.residual) from None
+            step *= 0.25
+            continue
+        spent += state.iterations
+        done, X = nxt, state.position
+        targets = slide_targets(model, X, targets, settings.friction_distance, follow=False)
+        step = min(4.0 * step, 1.0)
+    return state, targets, spent
 
 
 def _as_laid(model, tol):
@@ -175,22 +213,25 @@ def _as_laid(model, tol):
 
 
 def friction_static(model, settings: StaticFriction | None, *, tol: float = 1e-9):
-    """The static equilibrium of ``model`` with the seabed's friction towards the as-laid targets (module
-    docstring); frictionless (:func:`seacable.mooring.solver.static_equilibrium`, unchanged) when ``settings`` is
-    None or off, or the seabed has no friction. Its ``iterations`` count the as-laid state's too."""
+    """The static equilibrium of ``model`` with the seabed's friction, from the as-laid state (module docstring);
+    frictionless (:func:`seacable.mooring.solver.static_equilibrium`, unchanged) when ``settings`` is None or off, or
+    the seabed has no friction. Its ``iterations`` count the as-laid state's and every load step's."""
+    from .network import PRESCRIBED
     from .solver import static_equilibrium
 
     if not _active(model, settings):
         return static_equilibrium(model, tol=tol)
     laid = _as_laid(model, tol)
-    state = _solve(model, laid.position, tol, friction_targets(model, laid.position), settings,
-                   "the statics with seabed friction, from the as-laid state")
-    return dataclasses.replace(state, iterations=state.iterations + laid.iterations)
+    moving = model.network.kind == PRESCRIBED
+    state, _, spent = _load_path(model, laid.position, friction_targets(model, laid.position), settings, tol,
+                                 to=laid.position[moving], current_from=0.0,
+                                 what="the statics with seabed friction, the current applied from the as-laid state")
+    return dataclasses.replace(state, iterations=spent + laid.iterations)
 
 
 def friction_pushover(model, offsets, direction, settings: StaticFriction | None, *, tol: float = 1e-9):
     """A pushover (:func:`seacable.mooring.solver.pushover`) with the seabed's friction: each offset from the
-    as-laid targets, or along the incremental path (module docstring); the frictionless one when ``settings`` is
+    as-laid state, or along the incremental path (module docstring); the frictionless one when ``settings`` is
     None or off, or the seabed has no friction."""
     from .network import PRESCRIBED
     from .solver import pushover
@@ -202,14 +243,17 @@ def friction_pushover(model, offsets, direction, settings: StaticFriction | None
     moving = model.network.kind == PRESCRIBED
     base = model.network.position
     laid = _as_laid(model, tol)
-    targets = friction_targets(model, laid.position)
-    X = laid.position.copy()
+    laid_targets = friction_targets(model, laid.position)
+    X, targets, loaded = laid.position, laid_targets, 0.0
     states = []
     for off in np.asarray(offsets, float):
-        X[moving] = base[moving] + off * d
-        state = _solve(model, X, tol, targets, settings, f"the statics with seabed friction at the offset {off:g} m")
-        states.append(state)
-        X = state.position.copy()
-        if settings.pushover_path == "incremental":
+        if settings.pushover_path == "as_laid":
+            X, targets, loaded = laid.position, laid_targets, 0.0
+        state, targets, spent = _load_path(
+            model, X, targets, settings, tol, to=base[moving] + off * d, current_from=loaded,
+            what=f"the statics with seabed friction at the offset {off:g} m")
+        states.append(dataclasses.replace(state, iterations=spent))
+        X, loaded = state.position, 1.0
+        if settings.pushover_path == "incremental":  # the next offset from this one's slid state
             targets = slide_targets(model, X, targets, settings.friction_distance)
     return states

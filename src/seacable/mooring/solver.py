@@ -503,13 +503,14 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
             break
     if not ok:
         also = " from a coarser mesh's equilibrium," if "sequenced" in tried else ""
+        generic = (" Suggested fix: check that the line is long enough to reach its fairlead and that buoys cannot "
+                   "lift it out of the water.")
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations,{also} nor with the "
             f"step limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
             f"tolerance of {stats[2]:.3g} N ({spent} iterations in all).{_held_end_hint(model, X0, tol)}"
-            f"{_seabed_current_hint(model, X, targets is not None)} Suggested "
-            "fix: check that the line is long enough to reach its fairlead and that buoys cannot lift it out of the "
-            "water.", iterations=spent, residual=float(stats[1]))
+            f"{_seabed_current_hint(model, X, targets is not None) or generic}", iterations=spent,
+            residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     _warn_sinking(model, X)
     return StaticState(X, tension, support, spent, float(stats[1]))
