@@ -273,21 +273,22 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
                 "analysis's 'compression: true'), as a cable with bending stiffness does, so that the friction of "
                 "the whole grounded length holds the push.")
     s = 0.5 * (net.arc_length[a[k]] + net.arc_length[b[k]])
-    what = (f"the current's drag ({float(np.linalg.norm(drag[k])):.4g} N/m; {float(speed[k]):.3g} m/s at the seabed)"
+    what = (f"the current's drag, {float(np.linalg.norm(drag[k])):.4g} N/m ({float(speed[k]):.3g} m/s at the seabed)"
             if np.any(drag[k]) else "")
     if slope[k] != 0.0:
         what += (" and " if what else "") + (f"the weight down the seabed's {math.degrees(abs(slope[k])):.3g} deg "
                                              f"slope ({float(w[k] * abs(math.sin(slope[k]))):.4g} N/m)")
     if friction:
-        return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what}: {float(q[k]):.4g} N/m in "
-                f"all, more than the seabed's friction holds, mu w cos(slope) = {water.friction:g} x "
+        return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what}: {float(q[k]):.4g} N/m "
+                f"in all, more than the seabed's friction holds, mu w cos(slope) = {water.friction:g} x "
                 f"{float(w[k]):.4g} N/m x {math.cos(slope[k]):.4g} = {float(hold[k]):.4g} N/m: it slides, and has no "
                 "static equilibrium (the statics' friction acts towards each grounded node's target, at most mu N). "
-                "Suggested fix: give the seabed more friction (environment.seabed.friction) if the soil has it, or a current "
-                "profile that falls towards the seabed (environment.current), as the seabed's boundary layer does.")
-    return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what} ({float(q[k]):.4g} N/m), and "
-            "the statics have no friction to hold it (environment.seabed.friction is 0, or the analysis's "
-            "static_friction mode is 'off'): pushed towards its anchor, a grounded line has no equilibrium. Suggested "
-            "fix: give the seabed its friction coefficient (environment.seabed.friction, e.g. 0.5-1 for a cable or chain on clay), "
-            "or a current profile that falls to zero at the seabed (environment.current depths and speeds), as the "
+                "Suggested fix: give the seabed more friction (environment.seabed.friction) if the soil has it, or a "
+                "current profile that falls towards the seabed (environment.current), as the seabed's boundary layer "
+                "does.")
+    return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what}, and the statics have no "
+            "friction to hold it (environment.seabed.friction is 0, or the analysis's static_friction mode is 'off'): "
+            "pushed towards its anchor, a grounded line has no equilibrium. Suggested fix: give the seabed its "
+            "friction coefficient (environment.seabed.friction, e.g. 0.5-1 for a cable or chain on clay), or a "
+            "current profile that falls to zero at the seabed (environment.current depths and speeds), as the "
             "seabed's boundary layer does.")
