@@ -262,16 +262,12 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
     if q[k] <= 0.0 or q[k] <= hold[k]:
         if not friction or water.compression:
             return ""
-        # held node by node, but pushed along itself: tension-only elements pass no push on to the nodes behind
-        tension = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)[2]
-        slack = els[tension[els] <= 0.0]
-        if slack.size == 0:
-            return ""
-        return (f" The grounded line is pushed along itself towards its anchor: {slack.size} of its elements on the "
-                "seabed are slack, and elements that carry no compression pass no push on, so each node there has "
-                "only its own friction to hold it. Suggested fix: let the elements carry compression (the "
-                "analysis's 'compression: true'), as a cable with bending stiffness does, so that the friction of "
-                "the whole grounded length holds the push.")
+        # held node by node, but perhaps pushed along itself: tension-only elements pass no push on
+        return (" Friction can hold each grounded node's own load; if the grounded line is pushed along itself towards "
+                "its anchor (a current towards it, the suspended part pushed over), its elements, which carry no "
+                "compression, pass no push on, and the nodes there have only their own friction. Suggested fix: let "
+                "the elements carry compression (the analysis's 'compression: true'), as a cable with bending "
+                "stiffness does, so that the friction of the whole grounded length holds the push.")
     s = 0.5 * (net.arc_length[a[k]] + net.arc_length[b[k]])
     what = (f"the current's drag, {float(np.linalg.norm(drag[k])):.4g} N/m ({float(speed[k]):.3g} m/s at the seabed)"
             if np.any(drag[k]) else "")

@@ -47,8 +47,11 @@ __all__ = ["SLIDE_FACTOR", "StaticFriction", "StaticFrictionOption", "friction_p
            "friction_targets", "slide_targets"]
 
 #: The smallest load step (a fraction of the load from the last equilibrium) the statics with friction take before
-#: they give up (:func:`friction_static`): 4^-4.
-SMALLEST_STEP = 1.0 / 256.0
+#: they give up (:func:`friction_static`): 4^-3.
+SMALLEST_STEP = 1.0 / 64.0
+#: The iterations of a load step cut after a failure (:func:`_load_path`): it starts from the last equilibrium, a
+#: little load away (the lazy wave's steps converge in 10-60), so that a load no friction can hold fails in seconds.
+CUT_STEP_ITERATIONS = 150
 #: A node farther than this many ``friction_distance`` from its target has slid: an incremental path moves its
 #: target along the slip to that distance behind it (the regularised force there is 10 / sqrt(101) = 0.995 of mu N).
 SLIDE_FACTOR = 10.0
@@ -170,6 +173,7 @@ def _load_path(model, X, targets, settings, tol, *, to, current_from: float, wha
     (the whole load first; a step that fails is cut to a quarter, down to :data:`SMALLEST_STEP`); after each,
     touched-down nodes take their positions as targets and lifted-off ones lose theirs (:func:`slide_targets`; a slid
     node keeps its target: one monotonic loading). Returns the state, its targets and the iterations spent."""
+    from .checks import seabed_hold_hint
     from .network import PRESCRIBED
     from .solver import static_equilibrium
 
@@ -182,13 +186,16 @@ def _load_path(model, X, targets, settings, tol, *, to, current_from: float, wha
         Y = X.copy()
         Y[moving] = start + nxt * (to - start)
         try:
-            state = static_equilibrium(stepped, Y, tol=tol, targets=targets,
-                                       friction_distance=settings.friction_distance)
+            state = static_equilibrium(stepped, Y, tol=tol, targets=targets, max_iter=500 if step == 1.0 else
+                                       CUT_STEP_ITERATIONS, friction_distance=settings.friction_distance)
         except ConvergenceError as err:
             if step <= SMALLEST_STEP:
+                # why, from the last equilibrium (the failed step's last state wanders)
+                hint = seabed_hold_hint(stepped, X, True) if done > 0.0 else ""
                 raise ConvergenceError(
                     f"{what}, applied in load steps down to {step:.3g} of it, did not converge beyond {done:.3g} of "
-                    f"the load: {err}", iterations=spent + (err.iterations or 0), residual=err.residual) from None
+                    f"the load.{hint if hint not in str(err) else ''} The last step: {err}",
+                    iterations=spent + (err.iterations or 0), residual=err.residual) from None
             step *= 0.25
             continue
         spent += state.iterations

@@ -64,8 +64,8 @@ a straight line; with friction targets it adds the seabed's static Coulomb frict
 The kernel's parts are private modules, their public names re-exported here: :mod:`._indices` (the layouts
 of ``env``, ``pcda`` and ``visco``), :mod:`._water` (the surface, the water's kinematics, the attachments'
 drag and lift), :mod:`._elements` (tension laws, the viscoelastic and Syrope passes, bending),
-:mod:`._seabed` (the seabed's elevation under a node), :mod:`._friction` (the statics' seabed friction), :mod:`._ties` (tethers and spring clamps), :mod:`._band` (band storage: blocks and
-LU) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
+:mod:`._seabed` (the seabed's elevation under a node), :mod:`._ties` (tethers and spring clamps), :mod:`._band` (band storage: blocks and
+LU), :mod:`._friction` (the statics' seabed friction) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
 integration and the statics.
 """
 
@@ -97,7 +97,8 @@ from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  #
 from ._ties import tie_loads  # noqa: F401
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
-           "friction_loads", "loads", "loads_water", "lu_solve", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
+           "friction_loads",
+           "loads", "loads_water", "lu_solve", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
            "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
 
