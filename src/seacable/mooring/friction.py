@@ -10,8 +10,12 @@ friction *target position* and the friction acts in the seabed's plane towards i
 **The targets** (``mode: as_laid``, the default, OrcaFlex's): the *as-laid* state is the frictionless equilibrium
 in still water at the nominal positions (the case's fairlead; no current, no offset); every free node on the seabed
 there takes its position as its target, and the analysis's loads (the current, the pushover's offsets) are then
-applied with friction, from that state. In still water the result is the frictionless one (the as-laid state is in
-equilibrium with no friction force). A node not on the seabed in the as-laid state has no target and no friction.
+applied with friction, from that state, in load steps: the whole load first, a step that fails cut to a quarter
+(down to :data:`SMALLEST_STEP`); after each step a node that touched down takes its position as its target and one
+that lifted off loses its (a slid node keeps its target within one monotonic loading, so that its force stays
+``mu N``). In still water the result is the frictionless one, to the bit (the as-laid state is in equilibrium with
+no friction force). A node off the seabed has no target and no friction. The dynamics keep the velocity's friction,
+and their static start the frictionless statics (a start held by static friction would slide at t = 0).
 ``mode: off`` keeps the frictionless statics. Seabed friction 0 (``environment.seabed.friction``, the default) is
 frictionless whatever the mode, to the bit as before.
 
