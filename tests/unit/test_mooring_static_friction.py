@@ -154,3 +154,39 @@ def test_without_friction_or_in_still_water_the_statics_are_the_frictionless_one
 def test_bad_static_friction_is_refused_by_name(key, value, says):
     with pytest.raises(InputError, match=says):
         _case(0.5, {key: value})
+
+
+@pytest.mark.parametrize("load", ["current", "slope"])
+def test_the_message_weighs_the_grounded_lines_load_against_its_friction(load):
+    """When the statics fail, :func:`seabed_hold_hint` says which load on the grounded line friction cannot hold:
+    per metre of an element on the seabed, the current's drag across it (``1/2 rho d C_dn U^2``) or the weight down
+    the slope (``w sin(beta)``) against ``mu w cos(beta)``, with the numbers in N/m and a suggested fix; under the
+    friction it names no such load (and, the elements carrying no compression, suggests they do)."""
+    from seacable.mooring.checks import seabed_hold_hint
+
+    rope = sc.LineType(diameter=0.05, mass_per_length=12.0, axial_stiffness=1e6, drag_normal=1.2,
+                       drag_tangential=0.0)
+    net = network_from_line(sc.Line.single(rope, 100.0), (0, 0, -50.0), (0, 100.0, -50.0), water_density=1025.0,
+                            gravity=9.81, n_elements=10)
+    w = float(net.weight_per_length[0])
+    for ratio in (1.2, 0.8):
+        if load == "current":
+            speed = math.sqrt(ratio * 0.5 * w / (0.5 * 1025.0 * 0.05 * 1.2))
+            water = Water(depth=50.0, gravity=9.81, friction=0.5, current_speeds=(speed,), current_heading=0.0)
+            X = net.position.copy()
+            X[:, 0] = 0.0
+            q, hold = ratio * 0.5 * w, 0.5 * w
+        else:
+            beta = math.atan(ratio * 0.5)
+            water = Water(depth=50.0, gravity=9.81, slope=beta, friction=0.5)
+            X = net.position.copy()
+            X[:, 0], X[:, 2] = 0.0, -50.0
+            q, hold = w * math.sin(beta), 0.5 * w * math.cos(beta)
+        model = MooringModel(net.replace(position=X), water, checked=True)
+        X[1:-1, 2] -= 1e-4  # pressed into the seabed
+        text = seabed_hold_hint(model, X, True)
+        if ratio > 1:
+            assert f"{q:.4g} N/m in all, more than the seabed's friction holds" in text
+            assert f"= {hold:.4g} N/m: it slides" in text and "Suggested fix" in text
+        else:
+            assert "more than the seabed's friction holds" not in text and "'compression: true'" in text
