@@ -41,6 +41,7 @@ from .laying.inputs import (
 from .laying.route import Route
 from .line import STAND_IN, Lifting, Line, LineType, resolve_sections
 from .mooring.ends import EndCondition
+from .mooring.friction import StaticFriction, StaticFrictionOption
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
 from .ties import tie_points
@@ -671,17 +672,19 @@ class _Mooring(_Moored):
             del data["design"]
         if isinstance(data, dict) and data.get("compression", True) is False:
             del data["compression"]
+        if isinstance(data, dict) and data.get("static_friction", 0) == StaticFriction().model_dump():
+            del data["static_friction"]  # and the default static friction: a case without it reads as before
         return data
 
 
-class MooringStaticAnalysis(_Mooring):
+class MooringStaticAnalysis(StaticFrictionOption, _Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
     USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
 
 
-class MooringPushoverAnalysis(_Offsets, _Mooring):
+class MooringPushoverAnalysis(StaticFrictionOption, _Offsets, _Mooring):
     """Quasi-static force-excursion curve of the finite-element model: the fairlead moved horizontally by the
     offsets along ``heading`` (0: along +x, away from the anchor, so that positive offsets are the far position and
     negative ones the near; pi/2: across the line's plane, the cross position)."""

@@ -120,12 +120,18 @@ def test_the_rao_table_is_its_scripts_output_and_heaves_with_long_waves(tmp_path
 
 
 def test_a_current_at_the_seabed_pushing_the_grounded_cable_to_its_anchor_says_why_the_statics_fail():
-    """The statics have no friction (the seabed's acts on velocity): a uniform 1 m/s current along +x, from the
+    """The demo's seabed has no friction (environment.seabed.friction 0): a uniform 1 m/s current along +x, from the
     hang-off towards the cable's seabed end, pushes the grounded cable along itself towards its anchor, into the
     compression the elements do not carry (0.9 m/s converges, its grounded tension down to 458 N; 0.95 does not).
-    The message says so and gives the fix; the profile falling to the seabed converges (the storm's)."""
+    The message says so and gives the fixes; with the seabed's friction (0.5) and the elements carrying compression
+    (a cable's) the statics hold it (:mod:`seacable.mooring.friction`; tests/unit/test_lazy_wave_friction.py)."""
     data = yaml.safe_load((EXAMPLES / "cable_66kv_static.yaml").read_text())
     data["environment"]["current"] = {"speed": 1.0, "heading": 0.0}
-    with pytest.raises(sc.errors.ConvergenceError, match=r"current at the seabed \(1 m/s where the line lies on it\)"
+    with pytest.raises(sc.errors.ConvergenceError, match=r"the current's drag, 2.035 N/m \(1 m/s at the seabed\), "
+                                                         r"and the statics have no friction to hold it"
                                                          r".*falls to zero at the seabed"):
         sc.run(sc.Case.parse(data))
+    data["environment"]["seabed"] = {"friction": 0.5}
+    data["analysis"]["compression"] = True
+    ds = sc.run(sc.Case.parse(data))
+    assert float(ds.seabed_contact_length) > 10.0  # the cable still lies on the seabed, held there

@@ -216,3 +216,75 @@ def check_motion(network: Network, times, positions, *, depth: float | None, slo
         except InputError as err:
             raise InputError(f"at t = {times[k]:.6g} s of the motion: {err}") from None
         worst[node] = X[node]
+
+
+def seabed_hold_hint(model, X, friction: bool) -> str:
+    """Why a line lying on the seabed may have no static equilibrium, for the statics' message ("" when it is not
+    that): the load in the seabed's plane on its grounded elements against what friction can hold.
+
+    Per unit length of each element whose two nodes are on the seabed (``X`` the last state tried): the current's
+    drag (``1/2 rho d (C_dn U_n^2 + pi C_dt U_t^2)``, across and along the element) plus the weight's component down
+    the seabed's slope (``w sin(beta)``), against the friction ``mu w cos(beta)`` (``w`` the weight in water per
+    length, ``beta`` the slope under the element). With ``friction`` False (the seabed has no friction, or the
+    statics' friction is off) any such load is unheld: pushed along itself towards its anchor a grounded line would
+    take compression, which its elements do not carry.
+    """
+    water, net = model.water, model.network
+    if water.depth is None and water.profile is None:
+        return ""
+    X = np.asarray(X, float)
+    grounded = X[:, 2] <= water.seabed_z(X[:, 0]) + 1e-9  # on the seabed or in it (the penalty contact)
+    els = np.flatnonzero(grounded[net.elements[:, 0]] & grounded[net.elements[:, 1]])
+    if els.size == 0:
+        return ""
+    a, b = net.elements[els, 0], net.elements[els, 1]
+    chord = X[b] - X[a]
+    t = chord / np.maximum(np.linalg.norm(chord, axis=1), 1e-300)[:, None]
+    mid = 0.5 * (X[a] + X[b])
+    h = 1e-3  # the slope under the element's middle, by a central difference [m]
+    slope = np.arctan((water.seabed_z(mid[:, 0] + h) - water.seabed_z(mid[:, 0] - h)) / (2 * h))
+    speed = np.interp(-mid[:, 2], water.current_depths, water.current_speeds)
+    u = speed[:, None] * np.array([math.cos(water.current_heading), math.sin(water.current_heading), 0.0])
+    ut = np.sum(u * t, axis=1)
+    un = np.linalg.norm(u - ut[:, None] * t, axis=1)
+    rho = water.density
+    d = net.diameter[els]
+    drag = 0.5 * rho * d[:, None] * (net.cdn[els][:, None] * un[:, None] * (u - ut[:, None] * t)
+                                     + math.pi * net.cdt[els][:, None] * np.abs(ut)[:, None] * ut[:, None] * t)
+    w = net.weight_per_length[els]
+    along = np.column_stack([np.cos(slope), np.zeros_like(slope), np.sin(slope)])  # up the seabed towards +x
+    load = drag - (w * np.sin(slope))[:, None] * along  # the weight's part in the seabed's plane
+    q = np.linalg.norm(load, axis=1)
+    hold = water.friction * w * np.cos(slope) if friction else np.zeros_like(w)
+    if not friction and not np.any(speed != 0.0):
+        return ""  # frictionless, no current: the grounded line is held along itself by its tension
+    k = int(np.argmax(q - hold))
+    if q[k] <= 0.0 or q[k] <= hold[k]:
+        if not friction or water.compression:
+            return ""
+        # held node by node, but perhaps pushed along itself: tension-only elements pass no push on
+        return (" Friction can hold each grounded node's own load; if the grounded line is pushed along itself towards "
+                "its anchor (a current towards it, the suspended part pushed over), its elements, which carry no "
+                "compression, pass no push on, and the nodes there have only their own friction. Suggested fix: let "
+                "the elements carry compression (the analysis's 'compression: true'), as a cable with bending "
+                "stiffness does, so that the friction of the whole grounded length holds the push.")
+    s = 0.5 * (net.arc_length[a[k]] + net.arc_length[b[k]])
+    what = (f"the current's drag, {float(np.linalg.norm(drag[k])):.4g} N/m ({float(speed[k]):.3g} m/s at the seabed)"
+            if np.any(drag[k]) else "")
+    if slope[k] != 0.0:
+        what += (" and " if what else "") + (f"the weight down the seabed's {math.degrees(abs(slope[k])):.3g} deg "
+                                             f"slope ({float(w[k] * abs(math.sin(slope[k]))):.4g} N/m)")
+    if friction:
+        return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what}: {float(q[k]):.4g} N/m "
+                f"in all, more than the seabed's friction holds, mu w cos(slope) = {water.friction:g} x "
+                f"{float(w[k]):.4g} N/m x {math.cos(slope[k]):.4g} = {float(hold[k]):.4g} N/m: it slides, and has no "
+                "static equilibrium (the statics' friction acts towards each grounded node's target, at most mu N). "
+                "Suggested fix: give the seabed more friction (environment.seabed.friction) if the soil has it, or a "
+                "current profile that falls towards the seabed (environment.current), as the seabed's boundary layer "
+                "does.")
+    return (f" At s = {s:.4g} m the grounded line is loaded along the seabed by {what}, and the statics have no "
+            "friction to hold it (environment.seabed.friction is 0, or the analysis's static_friction mode is 'off'): "
+            "pushed towards its anchor, a grounded line has no equilibrium. Suggested fix: give the seabed its "
+            "friction coefficient (environment.seabed.friction, e.g. 0.5-1 for a cable or chain on clay), or a "
+            "current profile that falls to zero at the seabed (environment.current depths and speeds), as the "
+            "seabed's boundary layer does.")

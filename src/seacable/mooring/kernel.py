@@ -58,13 +58,14 @@ A step's first correction is a full Newton one; the next reuse its factors (modi
 cuts the residual at least tenfold, a fresh matrix otherwise; every step ends on the same force tolerance.
 Statics drops the inertia and solves ``(K + lam M) dx = -R`` with ``lam`` following the residual
 (pseudo-transient continuation, switched evolution relaxation), so that it starts from
-a straight line.
+a straight line; with friction targets it adds the seabed's static Coulomb friction towards them
+(:mod:`._friction`: the velocity's friction gives no force at rest).
 
 The kernel's parts are private modules, their public names re-exported here: :mod:`._indices` (the layouts
 of ``env``, ``pcda`` and ``visco``), :mod:`._water` (the surface, the water's kinematics, the attachments'
 drag and lift), :mod:`._elements` (tension laws, the viscoelastic and Syrope passes, bending),
 :mod:`._seabed` (the seabed's elevation under a node), :mod:`._ties` (tethers and spring clamps), :mod:`._band` (band storage: blocks and
-LU) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
+LU), :mod:`._friction` (the statics' seabed friction) and :mod:`._loads` (the loads pass that assembles them); this module keeps the residual, the time
 integration and the statics.
 """
 
@@ -79,6 +80,7 @@ from ..seastate import GRID_HEADER, S_MODE
 from ._band import band_factor, band_solve, lu_solve
 from ._elements import (bending_loads, syrope_loads, syrope_tension, table_tension, viscoelastic_loads,
                         viscoelastic_tension)
+from ._friction import friction_loads
 from ._indices import E_DEPTH, E_G, E_KBOT, E_VDT, ENV_SIZE, V_SIZE, V_TM, V_TM0, V_U, V_U0, V_Y, V_Y0
 from ._loads import loads, loads_water, n_water
 
@@ -95,6 +97,7 @@ from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  #
 from ._ties import tie_loads  # noqa: F401
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
+           "friction_loads",
            "loads", "loads_water", "lu_solve", "n_water", "newmark_steps", "static_solve", "syrope_loads", "syrope_tension",
            "table_tension", "viscoelastic_loads", "viscoelastic_tension"]
 
@@ -402,11 +405,13 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
                  bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, nfree, bw, env, cur_depth, cur_speed,
                  tol, max_iter,
                  max_step, F, M, tension,
-                 stats):
+                 stats, targets, dfric):
     """Static equilibrium by pseudo-transient Newton, ``(K + lam M) dx = -R``; X is updated in place.
 
     Returns True when ``max |F|`` at the free nodes is within the tolerance of :func:`_force_tolerance`.
-    ``stats`` receives (iterations, residual, absolute force tolerance [N]).
+    ``stats`` receives (iterations, residual, absolute force tolerance [N]). ``targets`` (n, 3): the nodes' friction
+    targets [m] of the seabed's static friction, its slip distance ``dfric`` [m] (:func:`friction_loads`); no rows:
+    frictionless statics.
     """
     n = X.shape[0]
     nd = 3 * nfree
@@ -424,6 +429,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
     loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
           bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, np.bool_(False), sea, F, M, tension,
           band, bw, 0.0, 0.0)
+    friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric)
     res = _residual(F, M, A, fidx, R)
     # pseudo-transient continuation: (K + lam M) dx = -R, lam [1/s^2] starting where a node under its
     # weight moves a fraction of an element, and decreasing as Newton takes over
@@ -449,6 +455,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
             loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
                   pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, np.bool_(False), sea,
                   F, M, tension, band, bw, 0.0, 0.0)
+            friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric)
             res = _residual(F, M, A, fidx, R)
             continue
         big = 0.0
@@ -464,6 +471,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
         loads(Xt, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol,
               pcda, bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, np.bool_(False), sea, F,
               M, tension, empty, bw, 0.0, 0.0)
+        friction_loads(Xt, targets, bedc, env, fidx, F, empty, bw, dfric)
         _residual(F, M, A, fidx, Rt)
         # switched evolution relaxation: always step, lam follows the residual
         r_new, r_old = _norm2(Rt), _norm2(R0)
@@ -476,6 +484,7 @@ def static_solve(X, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weigh
         loads(X, V, 0.0, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
               bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed, np.bool_(False), sea, F, M,
               tension, band, bw, 0.0, 0.0)
+        friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric)
         res = _residual(F, M, A, fidx, R)
     stats[1] = res
     return False

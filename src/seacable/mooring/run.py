@@ -16,6 +16,7 @@ from ..statics.run import line_arrays
 from ..ties import tie_points, ties_of
 from .bending import bending_variables
 from .checks import check_motion, check_network
+from .friction import friction_pushover, friction_static
 from .kernel import E_BEDRAMP as K_BEDRAMP
 from .kernel import E_WH as K_WH
 from .kernel import H_D, H_DCH, H_ECH, H_EI, H_INNER, H_KIND
@@ -32,7 +33,7 @@ from .outputs import (
     water_of_environment,
     wave_elevation,
 )
-from .solver import MooringModel, MooringRun, Water, line_end_nodes, pushover, simulate, static_equilibrium
+from .solver import MooringModel, MooringRun, Water, line_end_nodes, simulate, static_equilibrium
 
 __all__ = [
     "REFERENCES",
@@ -660,7 +661,7 @@ def solve_mooring_static(case: Case):
     """The checks and the static equilibrium of a ``mooring_static`` case: ``(model, state)``, what
     :func:`run_mooring_static` reports (no Dataset built: :func:`seacable.simulate.check` calls it)."""
     model = prepare_mooring_static(case)
-    return model, static_equilibrium(model, tol=case.analysis.tolerance)
+    return model, friction_static(model, case.analysis.static_friction, tol=case.analysis.tolerance)
 
 
 def solve_mooring_pushover(case: Case):
@@ -669,7 +670,7 @@ def solve_mooring_pushover(case: Case):
     a: MooringPushoverAnalysis = case.analysis
     model, offsets = prepare_mooring_pushover(case)
     direction = (math.cos(a.heading), math.sin(a.heading), 0.0)
-    return model, offsets, pushover(model, offsets, direction, tol=a.tolerance)
+    return model, offsets, friction_pushover(model, offsets, direction, a.static_friction, tol=a.tolerance)
 
 
 def run_mooring_static(case: Case):

@@ -28,7 +28,7 @@ SEA_WINDOW_VALUES = 2.5e7
 BLOCK_VALUES = 2**21
 from . import kernel as K
 from ._alpha import generalized_alpha
-from .checks import check_network
+from .checks import check_network, seabed_hold_hint
 from .network import FREE, PRESCRIBED, Network
 
 __all__ = [
@@ -454,8 +454,12 @@ class StaticState:
 
 
 def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, max_iter: int = 500,
-                       max_step: float | None = None) -> StaticState:
+                       max_step: float | None = None, targets=None, friction_distance: float = 1e-3) -> StaticState:
     """Static equilibrium by damped Newton from ``initial`` positions (default the network's).
+
+    ``targets`` (n, 3) [m]: the seabed's static friction towards these friction targets (a row of NaN: none), with
+    the slip distance ``friction_distance`` [m] (:mod:`seacable.mooring._friction`, :mod:`seacable.mooring.friction`);
+    None: frictionless statics.
 
     The Newton steps move a node by at most ``max_step`` [m] (default half the mean element length). A solve
     that does not converge (a finely meshed one, a line of more than ``2 COARSE_ELEMENTS`` elements, in
@@ -476,6 +480,7 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
     spent = 0
     tried = []
     fine = any(len(nodes) - 1 > 2 * COARSE_ELEMENTS for nodes in net.line_nodes)
+    held = np.zeros((0, 3)) if targets is None else np.ascontiguousarray(targets, float)
     for how in ("direct", "sequenced", 0.25, 0.0625):
         X = X0.copy()
         limit, iterations = step, max_iter
@@ -491,19 +496,21 @@ def static_equilibrium(model: MooringModel, initial=None, *, tol: float = 1e-9, 
         elif how != "direct":
             limit = step * how
         ok = K.static_solve(X, *model.element_args(), model.fidx, model.nfree, model.bw, model.env,
-                            model.cur_depth, model.cur_speed, tol, iterations, limit, F, M, tension, stats)
+                            model.cur_depth, model.cur_speed, tol, iterations, limit, F, M, tension, stats, held,
+                            friction_distance)
         spent += int(stats[0])
         if ok:
             break
     if not ok:
         also = " from a coarser mesh's equilibrium," if "sequenced" in tried else ""
+        generic = (" Suggested fix: check that the line is long enough to reach its fairlead and that buoys cannot "
+                   "lift it out of the water.")
         raise ConvergenceError(
             f"the static equilibrium of the mooring did not converge in {max_iter} iterations,{also} nor with the "
             f"step limit {step:.3g} m cut to a quarter and a sixteenth: force residual {stats[1]:.3g} N against a "
             f"tolerance of {stats[2]:.3g} N ({spent} iterations in all).{_held_end_hint(model, X0, tol)}"
-            f"{_seabed_current_hint(model, X)} Suggested "
-            "fix: check that the line is long enough to reach its fairlead and that buoys cannot lift it out of the "
-            "water.", iterations=spent, residual=float(stats[1]))
+            f"{_seabed_current_hint(model, X, targets is not None) or generic}", iterations=spent,
+            residual=float(stats[1]))
     _, _, tension, support = model.evaluate(X, np.zeros_like(X), np.zeros_like(X), waves=False)
     _warn_sinking(model, X)
     return StaticState(X, tension, support, spent, float(stats[1]))
@@ -546,27 +553,12 @@ def _held_end_hint(model: MooringModel, X0, tol: float) -> str:
     return "".join(out)
 
 
-def _seabed_current_hint(model: MooringModel, X) -> str:
-    """Why a line lying on the seabed in a current may have no static equilibrium (:func:`static_equilibrium`'s
-    message; "" when it is not that): the statics have no friction (the seabed's Coulomb friction acts on the nodes'
-    velocity, in the dynamics), so a current at the seabed drags the grounded line with nothing to hold it; pushed
-    along itself towards its anchor it would take compression, which the elements do not carry. ``X`` is the last
-    state tried."""
-    water = model.water
-    if water.depth is None:
-        return ""
-    X = np.asarray(X, float)
-    grounded = X[:, 2] <= water.seabed_z(X[:, 0])  # on the seabed or in it (the penalty contact)
-    if not np.any(grounded):
-        return ""
-    speed = np.abs(np.interp(-X[grounded, 2], water.current_depths, water.current_speeds))
-    if float(np.max(speed)) <= 0.0:
-        return ""
-    return (f" The current at the seabed ({float(np.max(speed)):.3g} m/s where the line lies on it) drags the grounded "
-            "line, and the statics have no friction to hold it (the seabed's friction acts on the nodes' velocity, in "
-            "the dynamics): pushed towards its anchor, a grounded line has no equilibrium. Give a current profile that "
-            "falls to zero at the seabed (environment.current depths and speeds), as the seabed's boundary layer "
-            "does.")
+def _seabed_current_hint(model: MooringModel, X, friction: bool = False) -> str:
+    """Why a line lying on the seabed may have no static equilibrium (:func:`static_equilibrium`'s message; ""
+    when it is not that): a current at the seabed, or the slope, loads the grounded line along the seabed more than
+    the statics' friction holds (``friction``: the statics had friction targets; else none holds it).
+    :func:`seacable.mooring.checks.seabed_hold_hint`; ``X`` is the last state tried."""
+    return seabed_hold_hint(model, X, friction)
 
 
 #: Elements a line takes in the coarse network of mesh sequencing (:func:`static_equilibrium`).

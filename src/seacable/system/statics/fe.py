@@ -25,7 +25,9 @@ analyses read, so that :mod:`seacable.system.run` reports both the same way.
   analytic one of the catenary statics (the bodies' own weight, buoyancy and waterplane).
 * Seabed friction: a static line does not slide, so the dynamics' regularised Coulomb friction (force
   proportional to the sliding velocity below ``friction_velocity``) gives no static force: the
-  finite-element statics are frictionless (a warning says so when the seabed has friction).
+  finite-element system statics are frictionless (a warning says so when the seabed has friction). A single line's
+  statics have the friction (``mooring_static``, ``mooring_pushover``: :mod:`seacable.mooring.friction`'s targets);
+  the system's do not yet.
 * Pinned bodies (only their rotations free) are not modelled by the finite-element system: refused.
 """
 
@@ -56,9 +58,11 @@ def check_fe(system, env, where: str = "") -> None:
                              "current to 0 and the seabed slope to 0 for the catenary statics.")
     if env.seabed.friction > 0 and env.depth is not None:
         warnings.warn(f"{where}environment.seabed.friction = {env.seabed.friction:g}: the finite-element statics (used for "
-                      "a current or a sloping seabed) are frictionless: a line at rest does not slide, and the "
-                      "dynamics' regularised friction gives no static force. Suggested fix: none needed if friction "
-                      "does not hold the lines; else compare with the catenary statics at no current.",
+                      "a current or a sloping seabed) are frictionless: a system's lines at rest do not slide, and "
+                      "the dynamics' regularised friction gives no static force (a single line's mooring_static and "
+                      "mooring_pushover have the seabed's static friction, not yet a system's). Suggested fix: none "
+                      "needed if friction does not hold the lines; else check a line on its own with mooring_static, "
+                      "or compare with the catenary statics at no current.",
                       SeacableWarning, stacklevel=3)
 
 
