@@ -511,8 +511,9 @@ def _check_tie(i: int, tie, total: float, held: dict) -> None:
     if tie.type == "clamp" and (tie.s <= 1e-9 * total or tie.s >= total * (1 - 1e-9)):
         end = "A (the anchor)" if tie.s <= 1e-9 * total else "B (the fairlead)"
         raise ValueError(f"{what} is at s = {tie.s:g} m, at end {end}, which the analysis holds already. Suggested "
-                         "fix: move the anchor or fairlead there (and clamp its direction with "
-                         "analysis.anchor_end_condition or fairlead_end_condition), or clamp a node inside the line.")
+                         "fix: move the anchor or fairlead there (and clamp its direction with the end's condition: "
+                         "a single line's analysis.anchor_end_condition or fairlead_end_condition, a system line's "
+                         "lines.NAME.end_a_condition or end_b_condition), or clamp a node inside the line.")
     for s, j in held.get(tie.type, ()):
         if abs(s - tie.s) <= 1e-9 * total:
             raise ValueError(f"sections[{j}] and sections[{i}] are two {tie.type}s at one node (s = {tie.s:g} m). "
