@@ -317,7 +317,8 @@ def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> N
 def tied_accelerations(fe: SystemFE, A, q, qd, qdd, frame, active, channels, t: float) -> np.ndarray:
     """The nodes' accelerations (n, 3) [m/s^2] at a converged state, each node still tied taking what it is tied to:
     a free body's rigid acceleration at its arm (``a + alpha x r + w x (w x r)``, :func:`initial_accelerations`),
-    its free point's node's, its channel's (``channels`` at ``t`` [s]) or none (held fixed).
+    its free point's node's, its channel's (``channels`` at ``t`` [s]; None: the prescribed node's that follows the
+    channel) or none (held fixed).
 
     The time loop steps a tied node's acceleration by Newmark's rule from the positions it is placed at, which
     holds, besides the body's acceleration, the average-acceleration scheme's undamped mode of period two steps
@@ -339,6 +340,9 @@ def tied_accelerations(fe: SystemFE, A, q, qd, qdd, frame, active, channels, t: 
         elif b <= -2:
             out[i] = A[-2 - b]
         elif fe.con_chan[j] >= 0:
+            if channels is None:  # the prescribed node that follows the channel
+                out[i] = A[np.flatnonzero(fe.model.network.channel == fe.con_chan[j])[0]]
+                continue
             if chan is None:
                 chan = channels(np.array([t]))[2][0]
             out[i] = chan[fe.con_chan[j]]
