@@ -344,6 +344,7 @@ class Coupling:
         ndarray, shape (n_dof,)
             The coupled forces at the start. [N, N m]
         """
+        from .mooring.solver import line_end_nodes
         from .system.dynamics import build_system_fe, static_system
         from .system.dynamics import frames as DF
         from .system.dynamics.loop import SystemState, initial_accelerations
@@ -406,7 +407,9 @@ class Coupling:
         _, _, tension, _ = m.evaluate(X, V, A, self.time, settled=True)
         self._tension[:] = tension
         self.forces = self._coupled_forces()
-        self._store = {k: [] for k in ("time", "X", "V", "tension", "q", "qd", "w", "x", "xd", "xs", "xds", "f")}
+        self._store = {k: [] for k in ("time", "X", "V", "A", "tension", "q", "qd", "w", "x", "xd", "xs", "xds",
+                                       "f")}
+        self._knodes = line_end_nodes(net)  # the lines' end nodes and their neighbours: their accelerations kept
         self._next_out = self.time
         self._keep()
         return self.forces.copy()
@@ -522,11 +525,14 @@ class Coupling:
         if self.output_interval is not None:
             self._next_out += self.output_interval * max(1, math.floor((self.time - self._next_out)
                                                                        / self.output_interval + 1 + 1e-9))
-        from .system.dynamics.loop import _global_state
+        from .system.dynamics.loop import _global_state, tied_accelerations
 
         g = _global_state(self._q, self._qd, self._frame)
         s = self._store
-        for key, v in (("time", self.time), ("X", self._X), ("V", self._V), ("tension", self._tension),
+        # the nodes' accelerations for the lines' end forces, a tied node's that of what it is tied to
+        acc = tied_accelerations(self._fe, self._A, self._q, self._qd, self._qdd, self._frame, self._active, None,
+                                 self.time)[self._knodes]
+        for key, v in (("time", self.time), ("X", self._X), ("V", self._V), ("A", acc), ("tension", self._tension),
                        ("q", g[0]), ("qd", g[1]), ("w", g[2]), ("x", self._given[0]), ("xd", self._given[1]), ("xs", self._x), ("xds", self._xd),
                        ("f", self.forces)):
             s[key].append(np.array(v, float, copy=True))
@@ -736,7 +742,8 @@ class Coupling:
                         tension=np.array(s["tension"]), body_position=np.array(s["q"]).reshape(nt, nb, 6),
                         body_velocity=np.array(s["qd"]).reshape(nt, nb, 6), failure_time=self._fail_at.copy(),
                         time_step=self.time_step, steps=self._steps, iterations=self._iterations, wall_time=0.0,
-                        interrupted=False, body_angular_velocity=np.array(s["w"]).reshape(nt, nb, 3))
+                        interrupted=False, body_angular_velocity=np.array(s["w"]).reshape(nt, nb, 3),
+                        acceleration=np.array(s["A"]).reshape(nt, self._knodes.size, 3), kinematic_nodes=self._knodes)
         ds = system_result(self._fe, run, case=self.case, settings={"coupling": 1})
         x, xd = np.array(s["x"]), np.array(s["xd"])
         xs, xds = np.array(s["xs"]), np.array(s["xds"])

@@ -266,6 +266,7 @@ def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_
     of a run are the network's stored support forces at its end nodes (and its end elements' tensions for an end
     on the seabed), read instead of evaluated again, the same floats to the last bit; and a run of such a deck
     evaluates no state for them (issue 38: the overhead around the time loop)."""
+    import seacable.mooring.outputs as O
     import seacable.mooring.run as R
     from seacable.io.moordyn import load_moordyn_case
     from seacable.mooring.moordyn import run_moordyn_case
@@ -293,7 +294,7 @@ def test_single_line_end_forces_read_from_the_stored_supports_are_the_evaluated_
     assert grounded.all()  # the anchor end lies on the seabed: its force comes from the end element's tension
     # and the whole run reads them: no state evaluated for the end forces
     calls = []
-    monkeypatch.setattr(R, "evaluate_states", lambda *a: calls.append(a) or (_ for _ in ()).throw(AssertionError))
+    monkeypatch.setattr(O, "evaluate_states", lambda *a: calls.append(a) or (_ for _ in ()).throw(AssertionError))
     case = load_moordyn_case(path).with_run(duration=2.0, time_step=0.1, output_interval=0.1,
                                             motion=HarmonicMotion(amplitude=(0.0, 0.0, 2.0), period=10.0))
     ds = run_moordyn_case(case)

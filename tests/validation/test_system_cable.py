@@ -303,3 +303,95 @@ def test_a_clamp_on_a_prescribed_body_turns_with_its_motion():
     expected = rotation_matrix(0.0, 0.1, 0.0) @ into  # the body at rest has no rotation
     assert fe.model.hinge_ei[h, H_D:H_D + 3] == pytest.approx(expected, abs=1e-12)
     assert not np.allclose(expected, into, atol=1e-2)  # and it has turned
+
+
+# ------------------------------------------------------------------------------- the end force (one definition)
+#
+# A line's end force is defined once (seacable.mooring.outputs.line_end_forces): its end element's pull, the half
+# element's loads lumped at the end node (weight in water, drag, added mass and inertia, seabed) and, for a line
+# with bending stiffness, its hinges' forces on the end node (a held end's shear). The single line, the system's
+# finite-element statics and system_dynamic report it; these tests hold each of them to the others and to the
+# closed form of a cantilever's reaction.
+
+MOTION = {"type": "platform", "amplitude": [0.0, 0.0, 0.5, 0.0, 0.05, 0.0], "period": 4.0, "ramp": 2.0}
+DYNAMIC = {"duration": 3.0, "time_step": 0.05, "output_interval": 0.25, "damping_ratio": 0.5}
+N_DYN = 20
+
+
+def test_system_dynamic_end_force_is_the_single_lines_on_a_pitching_hull():
+    """The lazy-wave cable clamped to a hull that heaves 0.5 m and pitches 0.05 rad at 4 s, as a system line (the
+    hull a prescribed body) and as a single line (``mooring_dynamic``, the platform motion about the hull's reference
+    point, the clamp turning with it), 20 elements, 2 s at 0.05 s (Newmark's average acceleration in both): the
+    same discrete equations, so the fairlead tension and force agree to the Newton tolerance (1e-8 of the force
+    scale: measured 3e-9 of the mean tension here; held to 1e-7). The end force holds the clamp's shear and the half
+    element's weight, drag and inertia: the end element's tension alone is 0.3-0.7 % off it (600-1300 N), 10^4
+    times the bound; a clamp left at rest (its direction not turned with the hull) moves it by 2e-4."""
+    data = _system(CLAMP, kind="prescribed").model_dump(exclude_none=True)
+    data["lines"]["cable"]["n_elements"] = N_DYN
+    data["analysis"] = {"type": "system_dynamic", **DYNAMIC, "tolerance": 1e-9, "body_motions": {"hull": MOTION}}
+    ds = sc.run(SystemCase.parse(data))
+    fair = HULL + ARM
+    single = _single(CLAMP, (fair[0], fair[2])).model_dump(exclude_none=True)
+    single["analysis"] = {**single["analysis"], "type": "mooring_dynamic", "n_elements": N_DYN, **DYNAMIC,
+                          "spectral_radius": 1.0, "tolerance": 1e-9,
+                          "motion": {**MOTION, "reference": [float(v) for v in HULL]}}
+    one = sc.run(parse_case(single))
+    ours, theirs = ds.fairlead_tension.sel(line="cable").values, one.fairlead_tension.values
+    scale = float(np.mean(theirs))
+    assert np.abs(ours - theirs).max() < 1e-7 * scale, np.abs(ours - theirs).max() / scale
+    for k in "xyz":
+        got = ds[f"fairlead_force_{k}"].sel(line="cable").values
+        assert np.abs(got - one[f"fairlead_force_{k}"].values).max() < 1e-7 * scale
+    # and the definition matters here: the end element's tension alone is far from it
+    element = ds.segment_tension.sel(line="cable").values[:, N_DYN - 1]
+    assert np.abs(element - ours).max() > 1e-3 * scale
+
+
+
+BEAM = {**CABLE, "bending_stiffness": 2.0e6}   # a stiff cable: EI 2e6 N m^2, 158 N/m in water
+TIP_LOAD = np.array([0.0, 2.0e3, 0.0])         # a lateral load on the tip [N]
+
+
+def _cantilever(analysis):
+    """A 10 m cable clamped horizontally at a fixed point (end A, along +x) with a free point at its tip (end B)
+    pushed sideways by 2 kN, 50 m down in 300 m of water, 10 elements."""
+    return SystemCase.parse({
+        "name": "cantilever", "line_types": {"beam": BEAM}, "environment": {**ENV, "depth": 300.0},
+        "points": {"root": {"kind": "fixed", "position": [0.0, 0.0, -50.0]},
+                   "tip": {"kind": "free", "position": [10.0, 0.0, -50.0],
+                           "external_force": [float(v) for v in TIP_LOAD]}},
+        "lines": {"beam": {"line_type": "beam", "length": 10.0, "end_a": "root", "end_b": "tip", "n_elements": 10,
+                           "end_a_condition": {"type": "clamped", "declination": math.pi / 2, "azimuth": 0.0}}},
+        "analysis": analysis})
+
+
+def test_a_cantilevers_end_forces_are_its_loads_in_the_statics_and_at_rest_in_the_dynamics():
+    """A cable clamped at its root and pushed sideways at its free tip (a hang-off under a lateral load, where the
+    shear carries the load): at equilibrium the line's force on its root is the sum of the loads on the line, its
+    weight in water ``w L`` and the tip load ``P`` (the closed form of any cantilever's reaction, at any deflection),
+    and its force on its tip is ``-P``. The finite-element statics (``system_static``) give them to the solver's
+    tolerance (measured 1e-7 N of 2.5 kN; held to 1e-3 N); the clamp's shear is nearly all of it, the end element's
+    tension 13 N: without the hinges' forces the root force is off by 2.5 kN, without the half element's weight by
+    79 N. ``system_dynamic`` left at rest from that equilibrium reports the same end forces (the static limit:
+    measured 2e-7 N, held to 1e-7 of them), fairlead (the tip, end B) and anchor (the root) alike."""
+    w = (BEAM["mass_per_length"] - ENV["water_density"] * math.pi * BEAM["diameter"] ** 2 / 4) * ENV["gravity"]
+    root = TIP_LOAD + np.array([0.0, 0.0, -w * 10.0])  # the closed form: the line's loads, carried to the root
+    case = _cantilever({"type": "system_static"})
+    eq = fe_equilibrium(case.system(), case.environment, stiffness=False, tol=1e-12)
+    np.testing.assert_allclose(eq.end_a_force[0], root, rtol=0, atol=1e-3)
+    np.testing.assert_allclose(eq.end_b_force[0], -TIP_LOAD, rtol=0, atol=1e-3)
+    # the definition matters: the end element's tension is not the root's force
+    assert abs(float(eq.state.tension[eq.fe.line_elements[0][0]]) - np.linalg.norm(root)) > 1e3
+    # system_dynamic left at rest: the static limit, every output
+    ds = sc.run(_cantilever({"type": "system_dynamic", "duration": 0.5, "time_step": 0.05, "output_interval": 0.25,
+                             "tolerance": 1e-10}))
+    scale = float(np.linalg.norm(root))
+    line = ds.sel(line="beam")
+    np.testing.assert_allclose(line.anchor_tension.values, np.linalg.norm(eq.end_a_force[0]), rtol=0,
+                               atol=1e-7 * scale)
+    np.testing.assert_allclose(line.anchor_vertical_force.values, eq.end_a_force[0][2], rtol=0, atol=1e-7 * scale)
+    np.testing.assert_allclose(line.fairlead_tension.values, np.linalg.norm(eq.end_b_force[0]), rtol=0,
+                               atol=1e-7 * scale)
+    for k, name in enumerate("xyz"):
+        np.testing.assert_allclose(line[f"fairlead_force_{name}"].values, eq.end_b_force[0][k], rtol=0,
+                                   atol=1e-7 * scale)

@@ -1,6 +1,7 @@
-"""What the single-line and the system time-domain runs share around the solver: the height of points above
-the seabed and the force of a line on an anchor resting on it, the surface elevation output, and a model with
-its prescribed nodes where a motion starts.
+"""What the single-line and the system analyses share around the solver: the force of a line on its end points
+(:func:`line_end_forces`, one definition for both), the height of points above the seabed and the force of a line
+on an anchor resting on it, the surface elevation output, and a model with its prescribed nodes where a motion
+starts.
 
 Below both runners (:mod:`seacable.mooring.run`, :mod:`seacable.system.dynamics`), which import these from here.
 """
@@ -12,6 +13,10 @@ import math
 import numpy as np
 
 from ..environment import IrregularWaves
+from ..seastate import S_MODE
+from . import kernel as K
+from ._indices import H_D, H_DCH, H_INNER, H_KIND
+from .loop import evaluate_states
 from .network import FIXED, Network
 from .solver import MooringModel, Water, wave_number_or_zero
 
@@ -20,8 +25,10 @@ __all__ = [
     "elevation_variables",
     "grounded_end_force",
     "height_above_seabed",
+    "line_end_forces",
     "seabed_slope",
     "tie_variables",
+    "turning_hinges",
     "water_of_environment",
     "wave_elevation",
 ]
@@ -196,3 +203,231 @@ def tie_variables(net: Network, X, support, dims=("node",)) -> dict:
             data[f"clamp_force_{name}"] = var(lead + ("clamp",), force[..., k], "N",
                                               f"{name} force of the line on the clamp")
     return data
+
+
+# ------------------------------------------------------------------------------------ a line's force on its ends
+
+
+def _point_nodes(net: Network) -> np.ndarray:
+    """The nodes of ``net`` that are shared points (no arc length: MoorDyn points, a system's points), (n,) bool;
+    their attachments are the point's, not a line's."""
+    return ~np.isfinite(net.arc_length)
+
+
+def _loaded_points(net: Network) -> bool:
+    """Whether a shared point of ``net`` (:func:`_point_nodes`) carries an attachment (mass, weight, volume,
+    hydrodynamic areas): the support forces there are then not a line's own end loads."""
+    point = _point_nodes(net)
+    loaded = point & ((net.point_mass != 0) | (net.point_weight != 0) | (net.point_volume != 0)
+                      | np.any(net.point_hydrodynamics() != 0, axis=1) | (net.point_added_mass != 0))
+    return bool(np.any(loaded))
+
+
+def _joining(elements, a: int, b: int) -> int:
+    """The element joining the nodes ``a`` and ``b``."""
+    return int(np.flatnonzero(((elements[:, 0] == a) & (elements[:, 1] == b))
+                              | ((elements[:, 0] == b) & (elements[:, 1] == a)))[0])
+
+
+def _end_part(model: MooringModel, line: int):
+    """The part of ``model``'s network whose loads reach the two end nodes of its line ``line`` from that line: its
+    elements and bending hinges holding an end (another line meeting at a shared point left out), and their nodes.
+
+    Returns a dict: ``ends``, ``nbrs`` and ``end_el`` (the end nodes, their neighbours and the end elements, end A and
+    end B, network numbering), ``sub`` (the nodes kept, sorted), ``inside`` (those nodes as a mask over the
+    network's), ``args`` (:meth:`~seacable.mooring.solver.MooringModel.element_args` of the part but the hinge table
+    and the viscoelastic state, which a run changes: :func:`_evaluate_ends` takes them afresh at each call),
+    ``hinge_rows`` (the rows of the hinge table kept), ``fidx``, ``ends_sub`` and ``el_sub`` (renumbered) and
+    ``elements`` (the elements kept). The part's nodes carry the loads of its own elements only (half of each) and
+    no attachment at a shared point (:func:`_point_nodes`): the loads of
+    :func:`seacable.mooring.kernel.loads` at the end nodes are then the line's own, the same floats as the whole
+    network of that line alone gives (every term that reaches a node comes from its elements, its hinges and the
+    node itself), for a fraction of the work.
+    """
+    net = model.network
+    nodes = np.asarray(net.line_nodes[line], np.int64)
+    E = net.elements
+    ends = np.array([nodes[0], nodes[-1]], np.int64)
+    end_el = [_joining(E, nodes[0], nodes[1]), _joining(E, nodes[-1], nodes[-2])]
+    mine = np.zeros(net.n_nodes, bool)
+    mine[nodes] = True
+    elements = np.flatnonzero(np.isin(E, ends).any(axis=1) & mine[E].all(axis=1))
+    H = model.hinges
+    hinges = (np.flatnonzero(np.isin(H, ends).any(axis=1) & mine[H].all(axis=1)) if H.size
+              else np.zeros(0, np.int64))
+    sub = np.unique(np.concatenate([ends, E[elements].ravel(), H[hinges].ravel()]))
+    (elem, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, _weight, pmass, padd, pvol, pcda, _bedc, buoy, pbuoy, ts_lo,
+     ts_hi, ts_x, ts_y, hinge_nodes, _hinge_ei, _visco) = model.element_args()
+    renum = np.searchsorted(sub, elem[elements]).astype(elem.dtype)
+    keep = ~_point_nodes(net)[sub]
+    # each node's weight and seabed contact width from the part's elements (a model's sum those of every line
+    # meeting at a point), as MooringModel lumps them (Network.node_weight)
+    weight = np.where(keep, net.point_weight[sub], 0.0)
+    half = 0.5 * net.weight_per_length[elements] * net.length[elements]
+    np.add.at(weight, renum[:, 0], half)
+    np.add.at(weight, renum[:, 1], half)
+    bedc = np.zeros(sub.size)
+    half = 0.5 * net.diameter[elements] * net.length[elements]
+    np.add.at(bedc, renum[:, 0], half)
+    np.add.at(bedc, renum[:, 1], half)
+    args = (renum, *(a[elements] for a in (L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat)), weight,
+            *(np.where(keep, a[sub], 0.0) for a in (pmass, padd, pvol)), np.where(keep[:, None], pcda[sub], 0.0),
+            bedc, buoy[elements], np.where(keep, pbuoy[sub], 0.0), ts_lo[elements], ts_hi[elements], ts_x, ts_y,
+            np.searchsorted(sub, hinge_nodes[hinges]).astype(hinge_nodes.dtype).reshape(-1, 3))
+    inside = np.zeros(net.n_nodes, bool)
+    inside[sub] = True
+    return {"ends": ends, "nbrs": [int(nodes[1]), int(nodes[-2])], "end_el": end_el, "sub": sub, "inside": inside,
+            "args": tuple(np.ascontiguousarray(a) for a in args), "hinge_rows": hinges,
+            "fidx": np.ascontiguousarray(model.fidx[sub]), "ends_sub": np.searchsorted(sub, ends).astype(np.int64),
+            "el_sub": np.searchsorted(elements, np.asarray(end_el)).astype(np.int64), "elements": elements}
+
+
+def _end_setup(model: MooringModel, line: int = 0):
+    """:func:`_end_part` of ``model``'s line ``line``, built at the first call that needs it and kept on ``model`` (a
+    run's outputs call it block after block, with the same model), built again if its network, water, environment
+    or hinges were replaced."""
+    key = (model.network, model.water, model.env, model.hinges)
+    kept = model.__dict__.get("_line_ends")
+    if kept is None or not all(a is b for a, b in zip(kept["key"], key)):
+        kept = {"key": key, "lines": {}}
+        model.__dict__["_line_ends"] = kept
+    if line not in kept["lines"]:
+        kept["lines"][line] = _end_part(model, line)
+    return kept["lines"][line]
+
+
+def turning_hinges(model: MooringModel) -> np.ndarray:
+    """Which rows of ``model``'s hinge table are held ends that turn with a platform's motion channels
+    (:func:`seacable.mooring.run.turn_with_motion`)."""
+    table = model.hinge_ei
+    return (table[:, H_KIND] != H_INNER) & (table[:, H_DCH] >= 0)
+
+
+def _reads_support(model: MooringModel, time) -> bool:
+    """Whether the support forces and element tensions of ``model`` at its states, as a static solve or a time
+    loop stores them, hold the line's end loads as :func:`line_end_forces` evaluates them, the same floats: a
+    single line (no other line at its ends), no attachment at an end point (:func:`_loaded_points`), no
+    viscoelastic element (a time loop's outputs keep their slow stretch apart), and for time-domain states no
+    waves (a stored state's time is that of its last step, which may round differently from the output time)."""
+    if len(model.network.line_nodes) != 1 or _loaded_points(model.network) or model.visco.shape[0]:
+        return False
+    if time is not None and np.any(turning_hinges(model)):
+        return True  # held ends turning with a platform: the loop's own end loads, at each step's direction
+    return time is None or (model.env[K.E_WH] <= 0.0 and model.sea[S_MODE] <= 0.0)
+
+
+def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None, *, support=None,
+                    tension=None, end_support=None, line: int = 0, end_directions=None):
+    """Force of a line on its two end points (end A, end B), (..., 2, 3). [N]
+
+    The pull of the end element plus the loads lumped at the end node from that line's half element
+    (weight, seabed, water, inertia) and, for a line with bending stiffness, the forces of its bending hinges on
+    the end node (the shear of a held end): the line's own end force, as MoorDyn reports it from the end
+    segment. A point's attachments and the other lines meeting there are left out (see
+    :func:`seacable.mooring.run.point_variables` for the force on a point). The single-line analyses and the
+    system's (``system_static``'s finite-element statics, ``system_dynamic``) all report this force.
+
+    Parameters
+    ----------
+    model : MooringModel
+        The network (a single line, or a system's lines).
+    X : array_like
+        Node positions (..., n, 3) of the whole network. [m]
+    V, A : array_like, optional
+        Node velocities and accelerations (..., n, 3), or (..., k, 3) of ``kinematic_nodes`` (the others at rest;
+        exact when they hold the line's end nodes and their neighbours,
+        :func:`seacable.mooring.solver.line_end_nodes`); None: at rest. [m/s], [m/s^2]
+    time : array_like, optional
+        Time of each state (...,), for the waves; None: a static state (no waves). [s]
+    kinematic_nodes : array_like, optional
+        The nodes ``V`` and ``A`` hold; None: all.
+    support, tension : array_like, optional
+        ``model``'s own support forces ``F - M a`` (..., n, 3) and element tensions (..., e) at these states, as
+        :func:`seacable.mooring.solver.static_equilibrium` or :func:`seacable.mooring.solver.simulate` store them
+        (evaluated with ``model``'s environment). Where they are the line's own end loads (:func:`_reads_support`)
+        the end forces are read from them, the same floats as the evaluation gives, without evaluating the states
+        again. [N]
+    end_support : array_like, optional
+        Instead of ``support``: those support forces at the line's two end nodes only (..., 2, 3). [N]
+    line : int
+        The line of the network (its index in ``model.network.line_nodes``).
+    end_directions : array_like, optional
+        The hinge table's given directions (..., h, 3) at each state (a held end turning with a platform or a body:
+        :func:`seacable.mooring.run.turning_end_directions`, :func:`seacable.system.bending.held_directions`);
+        None: the table's as it stands. [-]
+
+    Returns
+    -------
+    ndarray
+        (..., 2, 3): the force of the line on its end A and end B. [N]
+    """
+    part = _end_setup(model, line)
+    ends, nbrs, end_el = part["ends"], part["nbrs"], part["end_el"]
+    net = model.network
+    ramp = float(model.env[K.E_BEDRAMP])
+    X = np.asarray(X, float)
+    lead = X.shape[:-2]
+    nt = int(np.prod(lead, dtype=np.int64))
+    Xs = X.reshape((nt,) + X.shape[-2:])
+    given = support is not None or end_support is not None
+    if given and tension is not None and _reads_support(model, time):
+        out = (np.asarray(support, float).reshape((nt,) + X.shape[-2:])[:, ends] if end_support is None
+               else np.array(end_support, float).reshape((nt, 2, 3)))
+        tension = np.asarray(tension, float).reshape((nt, -1))[:, end_el]
+    else:
+        out, tension = _evaluate_ends(model, part, Xs, lead, V, A, time, kinematic_nodes, end_directions)
+    if model.water.depth is not None:
+        # an end resting on the seabed: the seabed carries its half element's weight as far as the line lies
+        # there; the line pulls along its end element, its end slope to second order (grounded_end_force)
+        for j in (0, 1):
+            grounded = height_above_seabed(model.water, Xs[:, ends[j]]) <= ramp
+            if np.any(grounded):
+                d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
+                norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
+                half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
+                slope = model.water.slope if model.water.profile is None else \
+                    float(np.arctan(seabed_slope(model.water, Xs[grounded, ends[j], 0]).mean()))
+                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope)
+    return out.reshape(lead + (2, 3))
+
+
+def _evaluate_ends(model: MooringModel, part: dict, Xs, lead, V, A, time, kinematic_nodes, end_directions=None):
+    """The support forces at the line's two end nodes and the tensions of its end elements at the states ``Xs``
+    (nt, n, 3) (:func:`line_end_forces`; ``lead`` the states' shape; ``part`` the line's :func:`_end_part`),
+    evaluated: ``(nt, 2, 3)``, ``(nt, 2)``."""
+    sub, inside, args, fidx = part["sub"], part["inside"], part["args"], part["fidx"]
+    ends_sub, el_sub, elements, rows = part["ends_sub"], part["el_sub"], part["elements"], part["hinge_rows"]
+    # the hinge table and the viscoelastic state as they are now (a run turns held ends and advances the state)
+    hinge_ei = np.ascontiguousarray(model.hinge_ei[rows])
+    visco = np.ascontiguousarray(model.visco[elements]) if model.visco.shape[0] else model.visco
+    nt = Xs.shape[0]
+    knodes = np.arange(Xs.shape[-2]) if kinematic_nodes is None else np.asarray(kinematic_nodes, np.int64)
+    kshape = lead + (knodes.size, 3)
+    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
+                                                                 float).reshape(nt)
+    # every state in one compiled call (what model.evaluate gives state by state), on the part of the network
+    # that loads the two end nodes
+    Xp = np.ascontiguousarray(Xs[:, sub])
+    kin = np.flatnonzero(inside[knodes])
+    if V is None:
+        Vp = np.zeros((nt, kin.size, 3))
+    else:
+        Vp = np.ascontiguousarray(np.broadcast_to(np.asarray(V, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
+    if A is None:
+        Ap = np.zeros((nt, kin.size, 3))
+    else:
+        Ap = np.ascontiguousarray(np.broadcast_to(np.asarray(A, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
+    ksub = np.searchsorted(sub, knodes[kin]).astype(np.int64)
+    turning = end_directions is not None and rows.size
+    if turning:  # each state's directions of the part's hinges
+        directions = np.asarray(end_directions, float)
+        directions = directions.reshape((nt,) + directions.shape[-2:])[:, rows]
+    out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
+    for i0, i1 in model.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
+        for j0, j1 in ((i, i + 1) for i in range(i0, i1)) if turning else ((i0, i1),):
+            if turning:
+                hinge_ei[:, H_D:H_D + 3] = directions[j0]
+            out[j0:j1], tension[j0:j1] = evaluate_states(
+                Xp[j0:j1], Vp[j0:j1], Ap[j0:j1], ksub, ts[j0:j1], time is not None, ends_sub, el_sub, *args,
+                hinge_ei, visco, fidx, model.bw, model.env, model.cur_depth, model.cur_speed, model.sea)
+    return out, tension

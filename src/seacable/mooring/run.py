@@ -11,16 +11,13 @@ import numpy as np
 from .._limits import check_run_size
 from ..case import Case, MooringDynamicAnalysis, MooringPushoverAnalysis
 from ..errors import InputError
-from ..seastate import S_MODE
 from ..statics.run import line_arrays
 from ..ties import tie_points, ties_of
 from .bending import bending_variables
 from .checks import check_motion, check_network
 from .friction import friction_pushover, friction_static
 from .kernel import E_BEDRAMP as K_BEDRAMP
-from .kernel import E_WH as K_WH
 from .kernel import H_D, H_DCH, H_ECH, H_EI, H_INNER, H_KIND
-from .loop import evaluate_states
 from .motion import RAOMotion, bind, forcing_period, sea_of
 from .network import FIXED, FREE, PRESCRIBED, Network, catenary_positions, network_from_line
 from .outputs import (
@@ -28,8 +25,9 @@ from .outputs import (
     elevation_variables,
     grounded_end_force,
     height_above_seabed,
-    seabed_slope,
+    line_end_forces,
     tie_variables,
+    turning_hinges,
     water_of_environment,
     wave_elevation,
 )
@@ -257,76 +255,6 @@ def _seabed_shares(model: MooringModel, X):
     return frac, share
 
 
-def _own_model(model: MooringModel) -> MooringModel:
-    """The model without the attachments of shared points (nodes with no arc length: MoorDyn points),
-    so that the end forces are those of the line alone."""
-    net = model.network
-    point = ~np.isfinite(net.arc_length)
-    loaded = point & ((net.point_mass != 0) | (net.point_weight != 0) | (net.point_volume != 0)
-                      | np.any(net.point_hydrodynamics() != 0, axis=1) | (net.point_added_mass != 0))
-    if not np.any(loaded):
-        return model
-    keep = ~point
-    own = MooringModel(net.replace(**{f: np.where(keep, getattr(net, f), 0.0) for f in (
-        "point_mass", "point_added_mass", "point_weight", "point_volume", "point_drag_area", "point_axial_drag_area",
-        "point_lift_area") if getattr(net, f) is not None}), model.water)
-    own.sea, own._sea_spec = model.sea, model._sea_spec  # the irregular sea's grid of the run
-    return own
-
-
-def _end_part(model: MooringModel, ends, end_elements):
-    """The part of ``model``'s network whose loads reach the nodes ``ends``: the elements and bending hinges
-    holding one of them, and their nodes.
-
-    Returns the nodes kept (sorted), :meth:`~seacable.mooring.solver.MooringModel.element_args` and ``fidx``
-    of that part (node and element indices renumbered) but the viscoelastic state (``model.visco``, which a
-    run advances: :func:`_evaluate_ends` takes it afresh at each call), ``ends`` and ``end_elements``
-    renumbered, and the elements kept. The loads of :func:`seacable.mooring.kernel.loads` at ``ends`` are those of
-    the whole network (every term that reaches a node comes from its elements, its hinges and the node itself),
-    for a fraction of the work.
-    """
-    net = model.network
-    ends = np.asarray(ends, np.int64)
-    elements = np.flatnonzero(np.isin(net.elements, ends).any(axis=1))
-    hinges = np.flatnonzero(np.isin(model.hinges, ends).any(axis=1)) if model.hinges.size else np.zeros(0, np.int64)
-    sub = np.unique(np.concatenate([ends, net.elements[elements].ravel(), model.hinges[hinges].ravel()]))
-    (elem, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda, bedc, buoy, pbuoy, ts_lo,
-     ts_hi, ts_x, ts_y, hinge_nodes, hinge_ei, _visco) = model.element_args()
-    renum = np.searchsorted(sub, elem[elements]).astype(elem.dtype)
-    args = (renum, *(a[elements] for a in (L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat)),
-            *(a[sub] for a in (weight, pmass, padd, pvol, pcda, bedc)), buoy[elements], pbuoy[sub],
-            ts_lo[elements], ts_hi[elements], ts_x, ts_y,
-            np.searchsorted(sub, hinge_nodes[hinges]).astype(hinge_nodes.dtype).reshape(-1, 3), hinge_ei[hinges])
-    args = tuple(np.ascontiguousarray(a) for a in args)
-    return (sub, args, np.ascontiguousarray(model.fidx[sub]), np.searchsorted(sub, ends).astype(np.int64),
-            np.searchsorted(elements, np.asarray(end_elements)).astype(np.int64), elements)
-
-
-def _end_setup(model: MooringModel, part: bool = False):
-    """What :func:`line_end_forces` needs of ``model`` whatever the states: its own model (:func:`_own_model`),
-    the line's end nodes, their neighbours and end elements, and with ``part`` the part of the network that
-    loads the ends (:func:`_end_part`; its nodes also as a mask over the network's). Built at the first call
-    that needs it and kept on ``model`` (a run's outputs call it block after block, with the same model), built
-    again if its network, water, environment or hinges were replaced."""
-    key = (model.network, model.water, model.env, model.hinges)
-    kept = model.__dict__.get("_line_ends")
-    if kept is None or not all(a is b for a, b in zip(kept["key"], key)):
-        own = _own_model(model)
-        net = own.network
-        nodes = net.line_nodes[0]
-        ends = [nodes[0], nodes[-1]]
-        kept = {"key": key, "own": own, "ends": ends, "nbrs": [nodes[1], nodes[-2]],
-                "end_el": [int(np.flatnonzero((net.elements == k).any(axis=1))[0]) for k in ends]}
-        model.__dict__["_line_ends"] = kept
-    if part and "part" not in kept:
-        own = kept["own"]
-        sub, args, fidx, ends_sub, el_sub, elements = _end_part(own, kept["ends"], kept["end_el"])
-        inside = np.zeros(own.network.n_nodes, bool)
-        inside[sub] = True
-        kept["part"] = (sub, inside, args, fidx, ends_sub, el_sub, elements)
-    return kept
-
-
 def turning_points(model: MooringModel):
     """The held ends of ``model`` at a prescribed node, which turn with the node's platform: ``(rows, end channels,
     points)``, the hinge rows, the end nodes' motion channels and the points (k, 3) [m] one metre from each end along
@@ -358,17 +286,11 @@ def turn_with_motion(model: MooringModel, motion, n_channels: int) -> None:
         model.hinge_ei[h, H_D:H_D + 3] = d / np.linalg.norm(d)
 
 
-def _turning(model: MooringModel) -> np.ndarray:
-    """Which rows of ``model``'s hinge table are held ends that turn with the platform (:func:`turn_with_motion`)."""
-    table = model.hinge_ei
-    return (table[:, H_KIND] != H_INNER) & (table[:, H_DCH] >= 0)
-
-
 def turning_end_directions(model: MooringModel, motion, times):
     """The held ends' given directions (nt, h, 3) at ``times`` [s] of a run whose held ends turn with its platform
     (:func:`turn_with_motion`), the others' at rest; None when none turns."""
     table = model.hinge_ei
-    turning = _turning(model)
+    turning = turning_hinges(model)
     if motion is None or not np.any(turning):
         return None
     P = motion(np.asarray(times, float))[0]
@@ -377,101 +299,6 @@ def turning_end_directions(model: MooringModel, motion, times):
         d = P[:, int(table[h, H_DCH])] - P[:, int(table[h, H_ECH])]
         out[:, h] = d / np.linalg.norm(d, axis=-1, keepdims=True)
     return out
-
-
-def _reads_support(own: MooringModel, model: MooringModel, time) -> bool:
-    """Whether the support forces and element tensions of ``model`` at its states, as a static solve or a time
-    loop stores them, hold the line's end loads as :func:`line_end_forces` evaluates them, the same floats: the
-    line's own model is the model (no attachment at an end point, :func:`_own_model`), no viscoelastic element
-    (a time loop's outputs keep their slow stretch apart), and for time-domain states no waves (a stored state's
-    time is that of its last step, which may round differently from the output time)."""
-    if own is not model or own.visco.shape[0]:
-        return False
-    if time is not None and np.any(_turning(own)):
-        return True  # held ends turning with a platform: the loop's own end loads, at each step's direction
-    return time is None or (own.env[K_WH] <= 0.0 and own.sea[S_MODE] <= 0.0)
-
-
-def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic_nodes=None, *, support=None,
-                    tension=None, end_support=None):
-    """Force of a single line on its two end points (end A, end B), (..., 2, 3). [N]
-
-    The pull of the end element plus the loads lumped at the end node from that line's half element
-    (weight, seabed, water, inertia): the line's own end tension, as MoorDyn reports it from the end
-    segment. A point's attachments and the other lines meeting there are left out (see
-    :func:`point_variables` for the force on a point). ``time`` None: a static state (no waves).
-    ``kinematic_nodes``: ``V`` and ``A`` hold those nodes only (the others at rest; exact when they hold the
-    line's end nodes and their neighbours, :func:`seacable.mooring.solver.line_end_nodes`).
-
-    ``support`` (..., n, 3) and ``tension`` (..., e), optional: ``model``'s own support forces ``F - M a`` and
-    element tensions at these states, as :func:`seacable.mooring.solver.static_equilibrium` or
-    :func:`seacable.mooring.solver.simulate` store them (evaluated with ``model``'s environment). Where they are
-    the line's own end loads (:func:`_reads_support`) the end forces are read from them, the same floats as the
-    evaluation gives, without evaluating the states again. ``end_support`` (..., 2, 3), instead of ``support``:
-    those support forces at the line's two end nodes only (end A, end B), all that is read of them.
-    """
-    setup = _end_setup(model)
-    own, ends, nbrs, end_el = setup["own"], setup["ends"], setup["nbrs"], setup["end_el"]
-    net = own.network
-    ramp = float(own.env[K_BEDRAMP])
-    X = np.asarray(X, float)
-    lead = X.shape[:-2]
-    nt = int(np.prod(lead, dtype=np.int64))
-    Xs = X.reshape((nt,) + X.shape[-2:])
-    given = support is not None or end_support is not None
-    if given and tension is not None and _reads_support(own, model, time):
-        out = (np.asarray(support, float).reshape((nt,) + X.shape[-2:])[:, ends] if end_support is None
-               else np.array(end_support, float).reshape((nt, 2, 3)))
-        tension = np.asarray(tension, float).reshape((nt, -1))[:, end_el]
-    else:
-        out, tension = _evaluate_ends(model, own, Xs, lead, V, A, time, kinematic_nodes)
-    if model.water.depth is not None:
-        # an end resting on the seabed: the seabed carries its half element's weight as far as the line lies
-        # there; the line pulls along its end element, its end slope to second order (grounded_end_force)
-        for j in (0, 1):
-            grounded = height_above_seabed(model.water, Xs[:, ends[j]]) <= ramp
-            if np.any(grounded):
-                d = Xs[grounded, nbrs[j]] - Xs[grounded, ends[j]]
-                norm = np.maximum(np.linalg.norm(d, axis=-1), 1e-300)
-                half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
-                slope = model.water.slope if model.water.profile is None else \
-                    float(np.arctan(seabed_slope(model.water, Xs[grounded, ends[j], 0]).mean()))
-                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope)
-    return out.reshape(lead + (2, 3))
-
-
-def _evaluate_ends(model: MooringModel, own: MooringModel, Xs, lead, V, A, time, kinematic_nodes):
-    """The support forces at the line's two end nodes and the tensions of its end elements at the states ``Xs``
-    (nt, n, 3) (:func:`line_end_forces`; ``lead`` the states' shape), evaluated: ``(nt, 2, 3)``, ``(nt, 2)``."""
-    sub, inside, args, fidx, ends_sub, el_sub, elements = _end_setup(model, part=True)["part"]
-    if own is not model:  # the sea of the run (an irregular sea's grid), as _own_model gives it
-        own.sea, own._sea_spec = model.sea, model._sea_spec
-    # the viscoelastic state as it is now (a run advances it)
-    visco = np.ascontiguousarray(own.visco[elements]) if own.visco.shape[0] else own.visco
-    nt = Xs.shape[0]
-    knodes = np.arange(Xs.shape[-2]) if kinematic_nodes is None else np.asarray(kinematic_nodes, np.int64)
-    kshape = lead + (knodes.size, 3)
-    ts = np.zeros(nt) if time is None else np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), lead),
-                                                                 float).reshape(nt)
-    # every state in one compiled call (what own.evaluate gives state by state), on the part of the network
-    # that loads the two end nodes
-    Xp = np.ascontiguousarray(Xs[:, sub])
-    kin = np.flatnonzero(inside[knodes])
-    if V is None:
-        Vp = np.zeros((nt, kin.size, 3))
-    else:
-        Vp = np.ascontiguousarray(np.broadcast_to(np.asarray(V, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
-    if A is None:
-        Ap = np.zeros((nt, kin.size, 3))
-    else:
-        Ap = np.ascontiguousarray(np.broadcast_to(np.asarray(A, float), kshape).reshape((nt,) + kshape[-2:])[:, kin])
-    ksub = np.searchsorted(sub, knodes[kin]).astype(np.int64)
-    out, tension = np.zeros((nt, 2, 3)), np.zeros((nt, 2))
-    for i0, i1 in own.sea_spans(ts, time is not None):  # an irregular sea: its grid window by window
-        out[i0:i1], tension[i0:i1] = evaluate_states(
-            Xp[i0:i1], Vp[i0:i1], Ap[i0:i1], ksub, ts[i0:i1], time is not None, ends_sub, el_sub, *args, visco, fidx,
-            own.bw, own.env, own.cur_depth, own.cur_speed, own.sea)
-    return out, tension
 
 
 def _fairlead_end(net: Network) -> tuple[int, int]:
@@ -501,7 +328,7 @@ def network_variables(model: MooringModel, X, tension, support, dims=("node",), 
 
     net = model.network
     lead = tuple(dims[:-1])
-    ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes,
+    ends = line_end_forces(model, X, velocity, acceleration, time, kinematic_nodes, end_directions=end_directions,
                            **({"support": support, "tension": tension, "end_support": end_support} if own_support
                               else {}))
     anchor, fair = _fairlead_end(net)

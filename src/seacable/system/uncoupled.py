@@ -401,6 +401,7 @@ def _quasi_static_run(s: UncoupledSetup, motion: SummedMotion, times: np.ndarray
     nt = times.size
     X = np.broadcast_to(net.position, (nt, *net.position.shape)).copy()
     tension = np.zeros((nt, net.n_elements))
+    ends = np.zeros((nt, len(fe.line_names), 2, 3))  # the catenaries' force on their end points, end A then end B
     x_ch = motion.channels(times, net.channel_positions())[0]  # (nt, channels, 3)
     depth = float(env.depth)
     for il, name in enumerate(fe.line_names):
@@ -432,11 +433,19 @@ def _quasi_static_run(s: UncoupledSetup, motion: SummedMotion, times: np.ndarray
             xs, t_mid = xs[:, ::-1], t_mid[:, ::-1]
         X[:, nodes] = xs
         tension[:, els] = t_mid
+        # the line pulls its fairlead towards the anchor and down (H, V the fairlead's force on the line) and its
+        # anchor towards the fairlead and up
+        at_fair = np.concatenate([-np.asarray(cat.H_fairlead)[:, None] * unit, -np.asarray(cat.V_fairlead)[:, None]],
+                                 axis=1)
+        at_anchor = np.concatenate([np.asarray(cat.H_anchor)[:, None] * unit, np.asarray(cat.V_anchor)[:, None]],
+                                   axis=1)
+        ends[:, il] = np.stack([at_anchor, at_fair] if body_end else [at_fair, at_anchor], axis=1)
     nb = len(fe.free_bodies)
     return SystemRun(time=times, position=X, velocity=np.zeros_like(X), tension=tension,
                      body_position=np.zeros((nt, nb, 6)), body_velocity=np.zeros((nt, nb, 6)),
                      failure_time=np.full(len(fe.con_node), np.nan), time_step=float(s.case.analysis.output_interval),
-                     steps=nt - 1, iterations=0, wall_time=_time.perf_counter() - clock, interrupted=False)
+                     steps=nt - 1, iterations=0, wall_time=_time.perf_counter() - clock, interrupted=False,
+                     end_force=ends)
 
 
 def run_system_uncoupled(case, progress=None):

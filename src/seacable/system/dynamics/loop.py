@@ -17,7 +17,7 @@ import numpy as np
 from ..._atomic import keep_whole_outputs
 from ...errors import ConvergenceError, InputError, SeacableWarning
 from ...mooring.motion import RAOMotion, sea_of
-from ...mooring.solver import advance_interval
+from ...mooring.solver import advance_interval, line_end_nodes
 from ...mooring.solver import simulate as simulate_lines
 from ..case import SystemDynamicAnalysis
 from . import body as DB
@@ -149,6 +149,13 @@ class SystemRun:
     wall_time: float
     interrupted: bool
     body_angular_velocity: np.ndarray | None = None  # (nt, nb, 3) global axes [rad/s]
+    # the accelerations (nt, k, 3) [m/s^2] of the nodes ``kinematic_nodes`` (k,): each line's end nodes and their
+    # neighbours (seacable.mooring.solver.line_end_nodes), for the lines' end forces; None: not stored (at rest)
+    acceleration: np.ndarray | None = None
+    kinematic_nodes: np.ndarray | None = None
+    # the lines' force on their end points (nt, line, 2, 3) [N] when the run gives them itself (quasi-static lines:
+    # their catenaries' end forces); None: the finite-element lines' (seacable.mooring.outputs.line_end_forces)
+    end_force: np.ndarray | None = None
 
 
 def _channels_fn(fe: SystemFE, analysis: SystemDynamicAnalysis | None, duration: float):
@@ -307,6 +314,43 @@ def initial_accelerations(fe: SystemFE, X, V, A, q, qd, qdd, frame, v0, a0) -> N
             A[fe.con_node[j]] = acc[:3] + np.cross(acc[3:], r) + np.cross(w, np.cross(w, r))
 
 
+def tied_accelerations(fe: SystemFE, A, q, qd, qdd, frame, active, channels, t: float) -> np.ndarray:
+    """The nodes' accelerations (n, 3) [m/s^2] at a converged state, each node still tied taking what it is tied to:
+    a free body's rigid acceleration at its arm (``a + alpha x r + w x (w x r)``, :func:`initial_accelerations`),
+    its free point's node's, its channel's (``channels`` at ``t`` [s]; None: the prescribed node's that follows the
+    channel) or none (held fixed).
+
+    The time loop steps a tied node's acceleration by Newmark's rule from the positions it is placed at, which
+    holds, besides the body's acceleration, the average-acceleration scheme's undamped mode of period two steps
+    (``a`` changing sign at each step, ``x`` and ``v`` untouched) that a jump starts (a line failing): 1.8 m/s^2
+    at the fairleads of tests/validation/test_system_dynamics.py's line break, 595 s after it, where the body is at
+    rest. The body's own acceleration carries that mode scaled by the nodes' mass over the body's (1e-3 there)."""
+    out = np.array(A, float)
+    R, E, ed = np.zeros((3, 3)), np.zeros((3, 3)), np.zeros(3)
+    chan = None
+    for j in range(len(fe.con_node)):
+        if not active[j]:
+            continue  # a failed end: free, its own equation of motion
+        i, b = fe.con_node[j], fe.con_body[j]
+        if b >= 0:
+            DF.angular_map(q[b], qd[b], E, ed, frame[b])
+            DF.body_rotation(q[b], frame[b], R)
+            w, alpha, r = E @ qd[b, 3:], E @ qdd[b, 3:] + ed, R @ fe.con_arm[j]
+            out[i] = qdd[b, :3] + np.cross(alpha, r) + np.cross(w, np.cross(w, r))
+        elif b <= -2:
+            out[i] = A[-2 - b]
+        elif fe.con_chan[j] >= 0:
+            if channels is None:  # the prescribed node that follows the channel
+                out[i] = A[np.flatnonzero(fe.model.network.channel == fe.con_chan[j])[0]]
+                continue
+            if chan is None:
+                chan = channels(np.array([t]))[2][0]
+            out[i] = chan[fe.con_chan[j]]
+        else:
+            out[i] = 0.0
+    return out
+
+
 def _cross_matrix(r) -> np.ndarray:
     """skew(r): skew(r) v = r x v."""
     return np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
@@ -351,6 +395,8 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     initial_accelerations(fe, X, V, A, q, qd, qdd, frame, v0[0], a0[0])
     g = _global_state(q, qd, frame)
     times, pos, vel, ten, bq, bqd, bw = [0.0], [X.copy()], [V.copy()], [t0_tension], [g[0]], [g[1]], [g[2]]
+    knodes = line_end_nodes(net)  # the lines' end nodes and their neighbours: their accelerations, for the end forces
+    acc = [A[knodes]]  # (at t = 0 the tied nodes' are their bodies' and points': initial_accelerations)
     stats = np.zeros(3)
     iterations = steps = 0
     interrupted = False
@@ -390,6 +436,7 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
             pos.append(X.copy())
             vel.append(V.copy())
             ten.append(tension.copy())
+            acc.append(tied_accelerations(fe, A, q, qd, qdd, frame, active, channels, times[-1])[knodes])
             g = _global_state(q, qd, frame)
             bq.append(g[0])
             bqd.append(g[1])
@@ -410,12 +457,13 @@ def simulate_system(fe: SystemFE, start: SystemState, duration: float, dt: float
     except KeyboardInterrupt:
         interrupted = True
     wall = _time.perf_counter() - begin
-    nt = keep_whole_outputs(times, pos, vel, ten, bq, bqd, bw)
+    nt = keep_whole_outputs(times, pos, vel, ten, bq, bqd, bw, acc)
     return SystemRun(time=np.array(times), position=np.array(pos), velocity=np.array(vel),
                      tension=np.array(ten), body_position=np.array(bq).reshape(nt, nb, 6),
                      body_velocity=np.array(bqd).reshape(nt, nb, 6), failure_time=fail_at, time_step=h,
                      steps=steps, iterations=iterations, wall_time=wall, interrupted=interrupted,
-                     body_angular_velocity=np.array(bw).reshape(nt, nb, 3))
+                     body_angular_velocity=np.array(bw).reshape(nt, nb, 3),
+                     acceleration=np.array(acc).reshape(nt, knodes.size, 3), kinematic_nodes=knodes)
 
 
 def _simulate_lines(fe: SystemFE, start: SystemState, duration: float, dt: float, output_interval: float, *,
@@ -431,7 +479,8 @@ def _simulate_lines(fe: SystemFE, start: SystemState, duration: float, dt: float
                      body_position=np.zeros((nt, 0, 6)), body_velocity=np.zeros((nt, 0, 6)),
                      failure_time=np.zeros(0), time_step=run.time_step, steps=run.steps, iterations=run.iterations,
                      wall_time=run.wall_time, interrupted=run.interrupted,
-                     body_angular_velocity=np.zeros((nt, 0, 3)))
+                     body_angular_velocity=np.zeros((nt, 0, 3)), acceleration=run.acceleration,
+                     kinematic_nodes=run.kinematic_nodes)
 
 
 def _global_pose(q, frame) -> np.ndarray:

@@ -6,8 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ...mooring.kernel import E_BEDRAMP as K_BEDRAMP
-from ...mooring.outputs import elevation_variables, grounded_end_force, height_above_seabed
+from ...mooring.outputs import elevation_variables
 from ...results import make_dataset, var
 from ..statics.model import euler_rate_map
 from ..ties import run_tie_variables
@@ -49,36 +48,15 @@ def _padded(per_line, width, fill=np.nan, lead=()):
     return np.stack(out, axis=-2)
 
 
-def _anchor_vertical_force(fe: SystemFE, run: SystemRun) -> np.ndarray:
-    """Vertical force of each line on its anchor end (the end away from the fairlead), (time, line), upward
-    positive [N]: the end element's pull less the half element's weight in water, which the seabed carries at an
-    end resting on it (:func:`seacable.mooring.outputs.grounded_end_force`, the single-line analyses' rule)."""
-    net, water = fe.model.network, fe.model.water
-    ramp = float(fe.model.env[K_BEDRAMP])
-    out = np.zeros((len(run.time), len(fe.line_names)))
-    for j, (nodes, els) in enumerate(zip(fe.line_nodes, fe.line_elements)):
-        at_a = fe.fairlead_end[j] == 1
-        a, b, e = (nodes[0], nodes[1], els[0]) if at_a else (nodes[-1], nodes[-2], els[-1])
-        d = run.position[:, b] - run.position[:, a]
-        pull = run.tension[:, e, None] * d / np.maximum(np.linalg.norm(d, axis=-1), 1e-300)[:, None]
-        half = 0.5 * net.weight_per_length[e] * net.length[e]
-        force = pull[:, 2] - half
-        if water.depth is not None:
-            grounded = height_above_seabed(water, run.position[:, a]) <= ramp
-            force[grounded] = grounded_end_force(pull[grounded], half, water.slope)[:, 2]
-        out[:, j] = force
-    return out
-
-
-def _bending_outputs(fe: SystemFE, run: SystemRun, bodies: list, bp: np.ndarray) -> dict:
-    """Curvature, bend moment, declination (time, line, node) and shear (time, line, element) of lines with bending
-    stiffness (:func:`seacable.system.bending.line_bending`), each held end on a body turned with the body's pose at
-    each output time (a prescribed body's motion turns it by ``R(d)`` from its given pose); {} when no line bends."""
+def _turned_directions(fe: SystemFE, bodies: list, bp: np.ndarray):
+    """The hinge table's given directions (time, h, 3) at each output: each held end on a body turned with the
+    body's pose (a prescribed body's motion turns it by ``R(d)`` from its given pose); None when no held end is on a
+    moving body (:func:`seacable.system.bending.held_directions`)."""
     from ...mooring.motion import rotation_matrix
-    from ..bending import BENDING, held_directions, line_bending, pose_rotations
+    from ..bending import held_directions, pose_rotations
 
     if not fe.model.hinges.shape[0]:
-        return {}
+        return None
     rotations = {}
     for k, name in enumerate(bodies):
         body = fe.system.bodies[name]
@@ -87,9 +65,67 @@ def _bending_outputs(fe: SystemFE, run: SystemRun, bodies: list, bp: np.ndarray)
         elif body.kind == "prescribed" and fe.body_motions.get(name) is not None:
             d = bp[:, k, 3:] - np.asarray(body.position[3:])
             rotations[name] = pose_rotations(np.pad(d, ((0, 0), (3, 0)))) @ rotation_matrix(*body.position[3:])
-    got = line_bending(fe, run.position, held_directions(fe, rotations))
+    return held_directions(fe, rotations)
+
+
+def line_end_force_series(fe: SystemFE, run: SystemRun, directions=None) -> np.ndarray:
+    """Force of each line on its two end points at the outputs of a run, (time, line, 2, 3), end A then end B. [N]
+
+    The single line's definition (:func:`seacable.mooring.outputs.line_end_forces`, the same function): the end
+    element's pull, the loads of the half element lumped at the end node (weight in water, drag, added mass and
+    inertia at the stored velocities and accelerations, seabed contact; the seabed carrying the half element's
+    weight at a grounded anchor) and, for a line with bending stiffness, its hinges' forces on the end node (a held
+    end's shear), the held ends' ``directions`` (time, h, 3) those of each output (:func:`_turned_directions`; None:
+    the hinge table's). A run that gives its lines' end forces itself (``run.end_force``: quasi-static lines, their
+    catenaries') gives them."""
+    from ...mooring.outputs import line_end_forces
+
+    if run.end_force is not None:
+        return np.asarray(run.end_force, float)
+    nt, nl = len(run.time), len(fe.line_names)
+    knodes = run.kinematic_nodes
+    V = run.velocity if knodes is None else run.velocity[:, knodes]
+    out = np.zeros((nt, nl, 2, 3))
+    for j in range(nl):
+        out[:, j] = line_end_forces(fe.model, run.position, V, run.acceleration, run.time, knodes, line=j,
+                                    end_directions=directions)
+    return out
+
+
+def _bending_outputs(fe: SystemFE, run: SystemRun, directions) -> dict:
+    """Curvature, bend moment, declination (time, line, node) and shear (time, line, element) of lines with bending
+    stiffness (:func:`seacable.system.bending.line_bending`), each held end on a body turned with the body's pose at
+    each output time (``directions``, :func:`_turned_directions`); {} when no line bends."""
+    from ..bending import BENDING, line_bending
+
+    if not fe.model.hinges.shape[0]:
+        return {}
+    got = line_bending(fe, run.position, directions)
     return {name: var(("time", "line", BENDING[name][0]), values, BENDING[name][1], BENDING[name][2])
             for name, values in got.items()}
+
+
+def _end_variables(fe: SystemFE, ends: np.ndarray) -> dict:
+    """``fairlead_tension``, ``anchor_tension``, ``anchor_vertical_force`` and ``fairlead_force_x``, ``_y``, ``_z``
+    (time, line) of the lines' end forces ``ends`` (time, line, 2, 3) (:func:`line_end_force_series`), as the single
+    line reports them (:func:`seacable.mooring.run.network_variables`)."""
+    nl = len(fe.line_names)
+    rows = np.arange(nl)
+    fair = fe.fairlead_end
+    at_fair, at_anchor = ends[:, rows, fair], ends[:, rows, 1 - fair]  # (time, line, 3)
+    data = {
+        "fairlead_tension": var(("time", "line"), np.linalg.norm(at_fair, axis=-1), "N",
+                                "tension at the fairlead end of the line (its end element and half-element loads)"),
+        "anchor_tension": var(("time", "line"), np.linalg.norm(at_anchor, axis=-1), "N",
+                              "tension at the anchor end of the line (its end element and half-element loads)"),
+        "anchor_vertical_force": var(("time", "line"), at_anchor[..., 2], "N",
+                                     "vertical force of the line on its anchor, upward positive (its end element "
+                                     "and half-element loads)"),
+    }
+    for k, name in enumerate("xyz"):
+        data[f"fairlead_force_{name}"] = var(("time", "line"), at_fair[..., k], "N",
+                                             f"{name} force of the line on its fairlead end")
+    return data
 
 
 def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
@@ -107,16 +143,6 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     data["segment_tension"] = var(("time", "line", "element"),
                                   _padded([run.tension[:, els] for els in fe.line_elements], emax, lead=(nt,)), "N",
                                   "element effective tension")
-    end_t = np.stack([np.stack([run.tension[:, els[0]], run.tension[:, els[-1]]], axis=-1)
-                      for els in fe.line_elements], axis=1) if nl else np.zeros((nt, 0, 2))  # (nt, line, 2)
-    fair = fe.fairlead_end
-    data["fairlead_tension"] = var(("time", "line"), end_t[:, np.arange(nl), fair], "N",
-                                   "tension at the fairlead end of the line (its end element)")
-    data["anchor_tension"] = var(("time", "line"), end_t[:, np.arange(nl), 1 - fair], "N",
-                                 "tension at the anchor end of the line (its end element)")
-    data["anchor_vertical_force"] = var(("time", "line"), _anchor_vertical_force(fe, run), "N",
-                                        "vertical force of the line on its anchor, upward positive (its end element "
-                                        "and half element's weight)")
     ft = np.full(nl, np.nan)
     for j, li in enumerate(fe.con_line):
         if li >= 0 and np.isfinite(run.failure_time[j]):
@@ -145,7 +171,9 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
                 bv[:, k] = dd
                 for i in range(nt):  # the motion turns the body by R(d) from its given pose: w = E(d) d'
                     bw[i, k] = euler_rate_map(d[i, 3:]) @ dd[i, 3:]
-    data.update(_bending_outputs(fe, run, bodies, bp))
+    directions = _turned_directions(fe, bodies, bp)
+    data.update(_end_variables(fe, line_end_force_series(fe, run, directions)))
+    data.update(_bending_outputs(fe, run, directions))
     tie_data, tie_coords = run_tie_variables(fe, run)
     data.update(tie_data)
     coords = {"time": var("time", run.time, "s", "time"),

@@ -8,14 +8,17 @@ quadratic damping in the current), and its equilibrium is the dynamics' pseudo-t
 with the attributes and methods of :class:`~seacable.system.statics.SystemEquilibrium` that the system
 analyses read, so that :mod:`seacable.system.run` reports both the same way.
 
-* End forces: the force a line exerts on its end node is its end element's contribution to that node: the
-  element's tension along its chord plus the half element lumped there (its weight in water, its drag in
-  the current, its seabed contact). The chord tension is the tension at the element's middle to second
-  order, and the half-element load carries it to the end, so the end force converges to the continuous
-  line's at second order in the element length (as the profile).
-  At an end held on the seabed (an anchor) with its element lying there, the seabed carries the half
-  element's weight: its component into the seabed is left out of the end force (the catenary's grounded
-  anchor takes no vertical load).
+* End forces: the force a line exerts on its end node is the single line's
+  (:func:`seacable.mooring.outputs.line_end_forces`, the same function, as ``system_dynamic`` reports it): its
+  end element's tension along its chord plus the half element lumped there (its weight in water, its drag in
+  the current, its seabed contact) and, for a line with bending stiffness, its hinges' forces on the end node
+  (a held end's shear). The chord tension is the tension at the element's middle to second order, and the
+  half-element load carries it to the end, so the end force converges to the continuous line's at second
+  order in the element length (as the profile).
+  At an end resting on the seabed (an anchor) the seabed carries the half element's weight as far as the line
+  lies there (:func:`seacable.mooring.outputs.grounded_end_force`: the end element's pull less that weight's
+  part normal to the seabed, never pressing the end into it; the catenary's grounded anchor takes no vertical
+  load).
 * Grounded length: the unstretched length of the elements whose two nodes press on the seabed (penalty
   force > 0): first order in the element length.
 * Stiffness: ``K = -dF/dq`` of the lines' force and moment on each free body (about its reference point,
@@ -41,7 +44,7 @@ import numpy as np
 
 from ...errors import InputError, SeacableWarning
 from ...mooring import kernel as MK
-from ...mooring.network import FREE
+from ...mooring.outputs import line_end_forces
 from ..statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 from .model import EquilibriumFields, euler, rotation
 
@@ -98,48 +101,6 @@ class FEEquilibrium(EquilibriumFields):
         t = np.linspace(0.0, s[-1], int(n))
         pos = np.column_stack([np.interp(t, s, X[:, j]) for j in range(3)])
         return pos, np.interp(t, s, Tn)
-
-
-def _end_force(model, X, e: int, node: int) -> np.ndarray:
-    """Force of element ``e`` (its tension and the half element lumped at its end ``node``: weight in water,
-    drag, seabed contact) on ``node``, at rest. [N]"""
-    net = model.network
-    n = net.n_nodes
-    a, b = net.elements[e]
-    half = 0.5 * net.length[e]
-    weight = np.zeros(n)
-    weight[a] = weight[b] = net.weight_per_length[e] * half
-    bedc = np.zeros(n)
-    bedc[a] = bedc[b] = net.diameter[e] * half
-    zeros = np.zeros(n)
-    lo, hi, tx, ty = model.tension_strain
-    sl = slice(e, e + 1)
-    visco = model.visco[sl] if model.visco.shape[0] else model.visco
-    F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
-    tension = np.zeros(1)
-    # the bending hinges at the element's two nodes (a held end's, and the inner one next to it): their forces on the
-    # end node are the line's too (none for a line without bending stiffness)
-    rows = np.flatnonzero(np.any(model.hinges == a, axis=1) & np.any(model.hinges == b, axis=1))
-    MK.loads(X, np.zeros_like(X), 0.0, net.elements[sl], net.length[sl], net.axial_stiffness[sl],
-             net.axial_damping[sl], net.mass_per_length[sl], net.diameter[sl], net.cdn[sl], net.cdt[sl], net.can[sl],
-             net.cat[sl], weight, zeros, zeros, zeros, np.zeros((n, 3)), bedc, model.buoyancy[sl], zeros, lo[sl], hi[sl],
-             tx, ty,
-             model.hinges[rows], model.hinge_ei[rows], visco, model.fidx, model.env, model.cur_depth,
-             model.cur_speed, False, model.sea, F, M, tension, np.zeros((0, 2 * model.bw + 1)), model.bw, 0.0, 0.0)
-    f = F[node]
-    bed = _on_seabed(model, X[[a, b]])
-    if net.kind[node] != FREE and bed.all():
-        # an end held on the seabed with its element lying there: the seabed carries the half element's
-        # weight (a free node would sink into the penalty seabed until it does), not the end
-        sl = model.water.slope
-        nrm = np.array([-math.sin(sl), 0.0, math.cos(sl)])
-        other = b if node == a else a
-        chord = X[other] - X[node]
-        pull = tension[0] * chord / max(float(np.linalg.norm(chord)), 1e-300)
-        fn = float((f - pull) @ nrm)
-        if fn < 0.0:
-            f = f - fn * nrm
-    return f
 
 
 def _on_seabed(model, X) -> np.ndarray:
@@ -244,9 +205,8 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
     bed = _on_seabed(model, X)
     net = model.network
     for il in range(nl):
-        nodes, els = fe.line_nodes[il], fe.line_elements[il]
-        fa[il] = _end_force(model, X, int(els[0]), int(nodes[0]))
-        fb[il] = _end_force(model, X, int(els[-1]), int(nodes[-1]))
+        els = fe.line_elements[il]
+        fa[il], fb[il] = line_end_forces(model, X, line=il)
         e2 = net.elements[els]
         grounded[il] = float(net.length[els][bed[e2[:, 0]] & bed[e2[:, 1]]].sum())
     body_names = list(system.bodies)
