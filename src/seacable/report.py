@@ -68,6 +68,7 @@ from .report_cable import (
     _range_graphs_file,
     make_static_report,
 )
+from .report_system_cable import make_system_static_report
 
 __all__ = ["CABLE_CSV_UNITS", "CSV_UNITS", "ReportOptions", "make_report"]
 
@@ -598,9 +599,11 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     opts = options or ReportOptions()
     output = check_output_file(output, "-o", (".html", ".htm"))
     static = _static_cable(source)
-    if static is not None:  # a static or pushover result of a cable: its own page (issue 40)
-        return make_static_report(static, output, str(source) if isinstance(source, (str, Path)) else
-                                  "result Dataset (Python)")
+    if static is not None:  # a static or pushover result of a cable: its own page (issue 40); a system's: its cables'
+        label = str(source) if isinstance(source, (str, Path)) else "result Dataset (Python)"
+        if static.attrs.get("analysis") == "system_static":
+            return make_system_static_report(static, output, label)
+        return make_static_report(static, output, label)
     if opts.scatter is not None and not isinstance(opts.scatter, pd.DataFrame):
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
     if opts.tn_curve is not None:

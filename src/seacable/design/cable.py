@@ -84,7 +84,7 @@ QUANTITIES = {
     "shear_force": ("element", "N", "shear force across the line"),
 }
 
-_STATE_DIMS = ("time", "offset")
+_STATE_DIMS = ("time", "offset", "condition")  # a system_static cable's conditions, stacked
 _STATS = {"min": "minimum", "max": "maximum", "mean": "mean"}
 
 

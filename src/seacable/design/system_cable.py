@@ -29,7 +29,7 @@ from .clearance import line_clearance_check
 from .summary import case_data
 
 __all__ = ["SYSTEM_ANALYSES", "cable_lines", "conditions", "system_cable_check_table", "system_cable_checks",
-           "system_cable_view"]
+           "system_cable_states", "system_cable_view"]
 
 #: The system analyses whose results hold the lines' shapes the checks read.
 SYSTEM_ANALYSES = ("system_static", "system_dynamic")
@@ -146,6 +146,19 @@ def system_cable_view(ds: xr.Dataset, line: str | None = None, condition: str | 
     if name:
         view.attrs["condition"] = name
     return view
+
+
+def system_cable_states(ds: xr.Dataset, line: str) -> xr.Dataset:
+    """A ``system_static`` result's cable in every condition it is in, as :func:`system_cable_view` gives each,
+    stacked on the dimension ``condition`` (its names as the coordinate): what
+    :func:`seacable.design.cable.range_graphs` takes for the range over the conditions."""
+    keep = [k for k in range(len(conditions(ds)))
+            if _present(ds.isel(condition=k) if "condition" in ds.dims else ds, line)]
+    views = [system_cable_view(ds, line, k) for k in keep]
+    out = xr.concat(views, dim="condition", coords="minimal", compat="override", combine_attrs="drop_conflicts")
+    out = out.assign_coords(condition=("condition", [conditions(ds)[k] or "intact" for k in keep]))
+    out.attrs.pop("condition", None)
+    return out
 
 
 def _present(ds: xr.Dataset, line: str) -> bool:
