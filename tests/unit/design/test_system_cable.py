@@ -124,6 +124,42 @@ def test_a_system_dynamic_run_checks_each_cable_against_its_own_dynamic_limits(t
                                                              abs=TOLERANCE[still.loc[check, "unit"]]), check
 
 
+def test_the_66kv_system_checks_its_cable_in_each_condition_on_that_condition_s_shape():
+    """examples/cable_66kv_system.yaml with chain 2 broken (damaged_lines): the free hull drifts and turns, and the
+    cable's shape changes (its largest curvature from 0.050 to 0.039 1/m); each condition's checks read that
+    condition's result: the largest curvature and element tension, the declination of the end element at end B (the
+    hang-off), and the distance to the chains still there."""
+    from pathlib import Path
+
+    case = sc.load_case(Path(__file__).resolve().parents[3] / "examples" / "cable_66kv_system.yaml")
+    data = case.model_dump(mode="json", exclude_none=True)
+    data["analysis"]["damaged_lines"] = ["chain2"]
+    data["analysis"]["design"].update(sag_bend_clearance=30.0, hog_bend_clearance=50.0, hang_off_declination=[0.05, 0.4])
+    ds = sc.run(type(case).parse(data))
+    table = system_cable_check_table(ds)
+    assert set(table["line"]) == {"cable"}  # the chains do not bend
+    got = {}
+    for k, condition in enumerate(("intact", "damaged")):
+        rows = _rows(table, "cable", condition)
+        one = ds.sel(condition=condition, line="cable")
+        kappa = float(np.nanmax(one["curvature"].values))
+        assert rows.loc["curvature (static MBR)", "value"] == kappa
+        assert rows.loc["curvature (static MBR)", "utilisation"] == pytest.approx(kappa * 2.37, rel=1e-12)
+        assert rows.loc["tension", "value"] == float(np.nanmax(one["fe_segment_tension"].values))
+        declination = one["declination"].values
+        end_b = declination[np.isfinite(declination)][-1]
+        assert rows.loc["hang-off declination (lowest)", "value"] == end_b
+        others = ["chain1", "chain3"] + (["chain2"] if condition == "intact" else [])
+        nearest = min(d.distance for d in line_distance(ds.isel(condition=k), "cable", others=others))
+        assert rows.loc["line clearance", "value"] == nearest
+        got[condition] = rows
+        assert (rows["status"] == "pass").all()
+    # the conditions differ (so a condition read in place of another is seen)
+    for check, apart in (("curvature (static MBR)", 5e-3), ("hang-off declination (lowest)", 1e-2),
+                         ("sag bend clearance", 1.0), ("hog bend clearance", 1.0)):
+        assert abs(got["intact"].loc[check, "value"] - got["damaged"].loc[check, "value"]) > apart, check
+
+
 def test_the_view_of_a_condition_and_its_refusals(two_cables):
     ds = two_cables.static
     view = system_cable_view(ds, "cable_b", "intact")
