@@ -3,8 +3,11 @@
 :mod:`seacable.design.cable_fatigue`), and the whole page of a static or pushover result of a cable
 (:func:`make_static_report`: its shape, the checks against the static MBR, and per offset).
 
-:mod:`seacable.report` adds the section to the page of a time-domain result and calls :func:`make_static_report`
-for a ``mooring_static`` or ``mooring_pushover`` result with curvature.
+:mod:`seacable.report` adds the section to the page of a time-domain result (of a system: each line with bending
+stiffness, :func:`seacable.design.system_cable.cable_lines`, with its distance to the other lines) and calls
+:func:`make_static_report` for a ``mooring_static`` or ``mooring_pushover`` result with curvature (a
+``system_static`` one: :mod:`seacable.report_system_cable`). :func:`system_cable_view` is
+:func:`seacable.design.system_cable.system_cable_view`.
 """
 
 from __future__ import annotations

@@ -22,7 +22,13 @@ from ._report_html import _CSS, _SERIES, _column, _e, _figure, _kv, _num, _png, 
 from ._version import __version__
 from .design import cable as cable_
 from .design import summary as ds_
-from .design.system_cable import cable_lines, conditions, system_cable_checks, system_cable_states, system_cable_view
+from .design.system_cable import (
+    cable_lines,
+    conditions,
+    system_cable_checks,
+    system_cable_states,
+    system_cable_view,
+)
 from .errors import InputError
 from .report_cable import CABLE_CSV_UNITS, _cable_html, _figure_range_graphs, _limits_html, offset_table
 

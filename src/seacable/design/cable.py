@@ -208,7 +208,8 @@ def range_graphs(ds: xr.Dataset, line: str | None = None) -> xr.Dataset:
         ``bend_moment`` [N m], ``declination`` [rad] and ``seabed_clearance`` [m] (those the result holds: the
         bending ones with bending stiffness, the clearance with a seabed), and of ``shear_force`` [N] on
         ``element`` (coordinate ``element_s``, the element's middle); over the states of the dimension
-        ``attrs["statistics_over"]`` (``time``, ``offset``, or ``none``: a single state, the three equal). Each
+        ``attrs["statistics_over"]`` (``time``, ``offset``, a system cable's ``condition``
+        (:func:`seacable.design.system_cable.system_cable_states`), or ``none``: a single state, the three equal). Each
         variable has ``units`` and ``long_name``.
 
     Raises

@@ -82,11 +82,15 @@ class _Solve(Model):
 
 
 class _Designed(Model):
-    """The cable checks' criteria of a system's result (issue 40): ``design.line_clearance``, the smallest distance
-    from a cable to the other lines (:func:`seacable.design.clearance.line_clearance_check`)."""
+    """The cable checks' criteria of a system's result (issue 40), the single line's ``design`` block: the sag and
+    hog bends' clearances and the hang-off (end B) declination range of every line with bending stiffness, each
+    checked against its own line types' limits too (:mod:`seacable.design.system_cable`), and
+    ``design.line_clearance``, the smallest distance from a cable to the other lines
+    (:func:`seacable.design.clearance.line_clearance_check`)."""
 
     design: CableDesign | None = Field(
-        None, description="Design criteria of the system's cables (the smallest distance to the other lines).")
+        None, description="Design criteria of the system's cables (the bends' clearances, the hang-off declination "
+                          "range, the smallest distance to the other lines).")
 
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
