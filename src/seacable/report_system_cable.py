@@ -91,8 +91,9 @@ def _figure_system_shape(ds, line: str) -> tuple[str, str]:
         one = stack.isel(condition=k)
         colour = _CONDITION_COLOURS[k % len(_CONDITION_COLOURS)]
         x, y, z = (np.asarray(one[c].values, float) for c in "xyz")
-        ax.plot(x, z, color=colour, lw=1.4, label=f"{line}, {name}")
-        plan.plot(x, y, color=colour, lw=1.4, label=f"{line}, {name}")
+        style = {"color": colour, "lw": 1.4, "ls": "-" if k == 0 else (0, (5, 3)), "label": f"{line}, {name}"}
+        ax.plot(x, z, **style)  # a damaged condition dashed: where it keeps the intact shape, both are seen
+        plan.plot(x, y, **style)
     for k, name in enumerate(conditions(ds)):
         state = ds.isel(condition=k) if "condition" in ds.dims else ds
         for other in (str(v) for v in ds["line"].values):
@@ -210,6 +211,7 @@ def make_system_static_report(ds, output: Path, source_label: str) -> list[Path]
     verdict = '<div class="verdict">' + "".join(
         f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
     base = output.resolve().parent
+    comment = ds.attrs.get("comment") or data.get("description") or ""
     damaged = (data.get("analysis") or {}).get("damaged_lines")
     inputs = [("Source", f"<code>{_e(_relative(source_label, base))}</code>"), ("Analysis", _e(analysis)),
               ("Lines with bending stiffness", _e(", ".join(lines))),
@@ -222,7 +224,7 @@ def make_system_static_report(ds, output: Path, source_label: str) -> list[Path]
               f"<title>Cable design report &ndash; {_e(name)}</title><style>{_CSS}</style></head><body><main>"),
              (f'<header class="top"><h1>Cable design report &ndash; {_e(name)}</h1>'
               f'<div class="meta">{_e(now)} &middot; seacable {_e(__version__)}'
-              f"{' &middot; ' + _e(ds.attrs.get('comment') or data.get('description') or '')}</div></header>"),
+              f"{(' &middot; ' + _e(comment)) if comment else ''}</div></header>"),
              "<h2>Summary</h2>", verdict, "<h2>1. Inputs</h2>", _kv(inputs)]
     if ds.attrs.get("case"):
         parts.append(f"<details><summary>Case file (YAML)</summary><pre>{_e(_relative(ds.attrs['case'], base))}</pre>"
