@@ -74,10 +74,11 @@ def test_a_system_dynamic_report_checks_its_cables_not_its_chain(two_cables, tmp
                     reason=f"{CHROMIUM} is missing (Debian's 'chromium' package: .ci/run installs it)")
 def test_the_system_page_renders_in_headless_chromium(two_cables, tmp_path, browser):
     """The page in a real browser: no console message; the shapes of the damaged condition drawn in its orange
-    ((213, 94, 0): cable_a's damaged shape in its elevation and plan, and the legend's; none on the page without
-    them), the seabed's brown ((140, 109, 70)) in both cables' elevations, the FAIL badge's red ((198, 40, 40):
-    cable_b's sag bend) and the range graphs' light-blue bands ((191, 219, 235), cable_a's over its two
-    conditions)."""
+    ((213, 94, 0), dashed over the intact shape: cable_a's in its elevation and plan and the legends'), the seabed's
+    brown ((140, 109, 70)) in both cables' elevations, the FAIL badge's red ((198, 40, 40): cable_b's sag bend, in
+    its checks and its per-condition row) and the range graphs' light-blue bands ((191, 219, 235): the legends'
+    patches). When this was written: 227, 3 780, 969 and 531 px; on the same page without its figures 0, 0, 971
+    and 0. The bounds are about half of these."""
     from PIL import Image
 
     page = tmp_path / "two.html"
@@ -87,7 +88,7 @@ def test_the_system_page_renders_in_headless_chromium(two_cables, tmp_path, brow
     rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
     counts = {name: browser.near(rgb, colour, 3) for name, colour in (
         ("damaged", (213, 94, 0)), ("seabed", (140, 109, 70)), ("fail", (198, 40, 40)), ("band", (191, 219, 235)))}
-    assert counts["damaged"] > 300, counts
-    assert counts["seabed"] > 1000, counts
-    assert counts["fail"] > 100, counts
-    assert counts["band"] > 200, counts
+    assert counts["damaged"] > 100, counts
+    assert counts["seabed"] > 1800, counts
+    assert counts["fail"] > 450, counts
+    assert counts["band"] > 250, counts
