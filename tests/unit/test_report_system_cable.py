@@ -75,8 +75,8 @@ def test_a_system_dynamic_report_checks_its_cables_not_its_chain(two_cables, tmp
 def test_the_system_page_renders_in_headless_chromium(two_cables, tmp_path, browser):
     """The page in a real browser: no console message; the shapes of the damaged condition drawn in its orange
     ((213, 94, 0), dashed over the intact shape: cable_a's in its elevation and plan and the legends'), the seabed's
-    brown ((140, 109, 70)) in both cables' elevations, the FAIL badge's red ((198, 40, 40): cable_b's sag bend, in
-    its checks and its per-condition row) and the range graphs' light-blue bands ((191, 219, 235): the legends'
+    brown ((140, 109, 70)) in both cables' elevations, the FAIL red ((198, 40, 40): cable_b's sag bend's badge and
+    the summary's count) and the range graphs' light-blue bands ((191, 219, 235): the legends'
     patches). When this was written: 227, 3 780, 969 and 531 px; on the same page without its figures 0, 0, 971
     and 0. The bounds are about half of these."""
     from PIL import Image
