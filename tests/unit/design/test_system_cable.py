@@ -28,6 +28,7 @@ from seacable.design.system_cable import (
     system_cable_view,
 )
 from seacable.errors import InputError
+from seacable.system.case import SystemCase
 
 #: Each check's tolerance against the single line's: the solvers' (module docstring), with a factor 10; a check's
 #: unit -> absolute tolerance (curvature [1/m], tension [N], clearance [m], declination [rad]).
@@ -196,6 +197,11 @@ def _bad_cases():
             del d["lines"][name]
         d["analysis"]["design"] = {"sag_bend_clearance": 5.0}
 
+    def catenary(d):
+        for name in ("cable_a", "cable_b"):
+            d["lines"][name].pop("sections")
+            d["lines"][name].pop("end_b_condition")
+
     return [
         ("negative sag bend clearance", design(sag_bend_clearance=-1.0), ["sag_bend_clearance", "Suggested fix"]),
         ("hog bend clearance not a number", design(hog_bend_clearance="high"), ["hog_bend_clearance"]),
@@ -209,6 +215,8 @@ def _bad_cases():
         ("a hang-off range for a cable hung off at end A", hung_at_a,
          ["line 'cable_b'", "hung off at end A", "Suggested fix: swap"]),
         ("cable limits without a cable", no_cable, ["no line of the system has bending stiffness", "Suggested fix"]),
+        ("cable limits on the catenary statics", catenary,
+         ["catenary statics", "no bending", "Suggested fix: add 'statics: finite_element'"]),
     ]
 
 
@@ -219,6 +227,11 @@ def test_bad_limits_are_refused_by_validate_and_run_alike(two_cables, tmp_path, 
     data = two_cables.data({"type": analysis, "design": dict(two_cables.design), **extra})
     two_cables.case(data["analysis"])  # the case as given is good
     edit(data)
+    if what == "cable limits on the catenary statics":
+        fixed = {**data, "analysis": {**data["analysis"], "statics": "finite_element"}}
+        SystemCase.parse(fixed if analysis == "system_static" else data)  # as the message suggests; the dynamics'
+        if analysis == "system_dynamic":                                  # lines bend whatever the statics
+            return
     path = tmp_path / "bad.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
     messages = []
