@@ -504,7 +504,6 @@ class SystemCase(Model):
         design = getattr(a, "design", None)
         if design is not None:
             _check_cable_design(design, system, self.points)
-            _check_static_bending(a, design, self.environment, system)
         if isinstance(a, SystemOffsetsAnalysis):
             body = self.bodies.get(a.body)
             if body is None:
@@ -597,26 +596,6 @@ def _check_cable_design(design: CableDesign, system: MooringSystem, points: dict
                              "cable checks take end B as the hang-off (its declination, and the sag bend between "
                              f"the hog bend and end B). Suggested fix: swap the line's ends (end_a: {line.end_b}, "
                              f"end_b: {line.end_a}, and their end conditions).")
-
-
-def _check_static_bending(analysis, design: CableDesign, environment, system: MooringSystem) -> None:
-    """A ``system_static`` that asks for the cable checks (a bend clearance above 0, a hang-off range) is solved by
-    the finite-element statics, whose lines bend: the catenary statics (``statics: catenary``, or ``auto`` with
-    nothing that needs the finite elements) carry no bending stiffness, so the checks would have no curvature."""
-    if not isinstance(analysis, SystemStaticAnalysis):
-        return
-    given = [k for k in _CABLE_LIMITS if getattr(design, k) not in (None, 0.0)]
-    if not given:
-        return
-    from .statics_mode import needs_fe
-
-    if analysis.statics == "finite_element" or (analysis.statics == "auto" and needs_fe(environment, system.lines)):
-        return
-    why = "statics: catenary" if analysis.statics == "catenary" else (
-        "statics: auto, and nothing in the system needs the finite elements (no current, sections or held ends)")
-    raise ValueError(f"analysis.design gives {', '.join(given)}, but the system is solved by the catenary statics "
-                     f"({why}), whose lines carry no bending: the cable checks would have no curvature or bends. "
-                     "Suggested fix: add 'statics: finite_element' to the analysis.")
 
 
 def _file_path(loc: tuple, data: Any) -> tuple:
