@@ -129,8 +129,9 @@ def _plain(x) -> str:
 
 def _table(headers: list[str], rows: list[list[str]], classes: list[str] | None = None, cls: str = "",
            single: bool = False) -> str:
-    """An HTML table; ``single``: the first column (the load case) is the same in every row and left out."""
-    if single and headers and headers[0] == "Load case":
+    """An HTML table; ``single``: the first column (the load case, or a system's condition) is the same in every row
+    and left out."""
+    if single and headers and headers[0] in ("Load case", "Condition"):
         headers, rows = headers[1:], [r[1:] for r in rows]
         cls = f"{cls} single".strip()
     head = "".join(f"<th>{h}</th>" for h in headers)

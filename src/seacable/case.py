@@ -578,7 +578,8 @@ class ArmourFatigue(Model):
 
 class CableDesign(Model):
     """The design criteria of a cable's configuration that its line types do not hold (issue 40), read by the
-    cable checks of :mod:`seacable.design.cable` from the case a result records.
+    cable checks of :mod:`seacable.design.cable` from the case a result records (a system's: for each of its lines
+    with bending stiffness, :mod:`seacable.design.system_cable`).
 
     Parameters
     ----------

@@ -17,7 +17,10 @@ design tables of :mod:`seacable.design.summary` (extremes, code checks, fatigue)
   the same page and files as before.
 
 A ``mooring_static`` or ``mooring_pushover`` result of a cable (with ``curvature``) gets a page of its own
-(:func:`seacable.report_cable.make_static_report`: its shape, the checks against the static MBR, per offset).
+(:func:`seacable.report_cable.make_static_report`: its shape, the checks against the static MBR, per offset), and a
+``system_static`` result with a cable a page of its cables (:func:`seacable.report_system_cable.
+make_system_static_report`: a section a cable, its checks in each condition). A ``system_dynamic`` result's cable
+section checks each line with bending stiffness (:mod:`seacable.design.system_cable`), not its chains.
 
 Every file is written whole (:mod:`seacable._atomic`).
 """
@@ -68,6 +71,7 @@ from .report_cable import (
     _range_graphs_file,
     make_static_report,
 )
+from .report_system_cable import make_system_static_report
 
 __all__ = ["CABLE_CSV_UNITS", "CSV_UNITS", "ReportOptions", "make_report"]
 
@@ -577,7 +581,8 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     source
         What :func:`seacable.design.summary.read_results` reads; or one ``mooring_static`` or ``mooring_pushover``
         result (file or Dataset) of a line with curvature: its cable page
-        (:func:`seacable.report_cable.make_static_report`).
+        (:func:`seacable.report_cable.make_static_report`); or a ``system_static`` result with curvature: the page
+        of its cables (:func:`seacable.report_system_cable.make_system_static_report`).
     output
         The HTML file (``.html``); the CSV files go beside it, ``STEM_extremes.csv`` and so on.
     options
@@ -598,9 +603,11 @@ def make_report(source, output: str | Path, options: ReportOptions | None = None
     opts = options or ReportOptions()
     output = check_output_file(output, "-o", (".html", ".htm"))
     static = _static_cable(source)
-    if static is not None:  # a static or pushover result of a cable: its own page (issue 40)
-        return make_static_report(static, output, str(source) if isinstance(source, (str, Path)) else
-                                  "result Dataset (Python)")
+    if static is not None:  # a static or pushover result of a cable: its own page (issue 40); a system's: its cables'
+        label = str(source) if isinstance(source, (str, Path)) else "result Dataset (Python)"
+        if static.attrs.get("analysis") == "system_static":
+            return make_system_static_report(static, output, label)
+        return make_static_report(static, output, label)
     if opts.scatter is not None and not isinstance(opts.scatter, pd.DataFrame):
         ds_.read_scatter(opts.scatter)  # checked before the results are read, whether or not a life is computed
     if opts.tn_curve is not None:

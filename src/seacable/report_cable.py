@@ -3,8 +3,11 @@
 :mod:`seacable.design.cable_fatigue`), and the whole page of a static or pushover result of a cable
 (:func:`make_static_report`: its shape, the checks against the static MBR, and per offset).
 
-:mod:`seacable.report` adds the section to the page of a time-domain result and calls :func:`make_static_report`
-for a ``mooring_static`` or ``mooring_pushover`` result with curvature.
+:mod:`seacable.report` adds the section to the page of a time-domain result (of a system: each line with bending
+stiffness, :func:`seacable.design.system_cable.cable_lines`, with its distance to the other lines) and calls
+:func:`make_static_report` for a ``mooring_static`` or ``mooring_pushover`` result with curvature (a
+``system_static`` one: :mod:`seacable.report_system_cable`). :func:`system_cable_view` is
+:func:`seacable.design.system_cable.system_cable_view`.
 """
 
 from __future__ import annotations
@@ -38,6 +41,7 @@ from .design import cable as cable_
 from .design import summary as ds_
 from .design.cable_fatigue import SNCurve, cable_fatigue_damage
 from .design.clearance import line_clearance_check
+from .design.system_cable import cable_lines, system_cable_view
 from .errors import InputError
 
 __all__ = ["CABLE_CSV_UNITS", "STATIC_ANALYSES", "armour_fatigue_table", "make_static_report", "offset_table",
@@ -66,12 +70,14 @@ class _Cable:
     def __call__(self, run, ds) -> None:
         if not cable_.has_curvature(ds):
             return
-        for line in ds_.line_names(ds) if "line" in ds.dims else [None]:
+        # a system's lines: those with bending stiffness (a chain's curvature is 0), each with its distance to the
+        # other lines (seacable.design.system_cable)
+        for line in cable_lines(ds) if "line" in ds.dims else [None]:
             view = ds.sel(line=line) if line is not None else ds
             limits = cable_.cable_limits(view)
             checks = cable_.cable_checks(ds, limits, line)
-            if line is not None and _bends(view) and _line_clearance(ds) is not None:
-                checks.append(line_clearance_check(ds, line))  # a system's cable: its distance to the other lines
+            if line is not None:
+                checks.append(line_clearance_check(ds, line))
             table = cable_.cable_check_table(checks)
             name = line if line is not None else ds_.line_names(ds)[0]
             table.insert(0, "line", name)
@@ -117,7 +123,9 @@ def _figure_range_graphs(key, rg, limits) -> tuple[str, str]:
     plt = _pyplot()
     fig = cable_.plot_range_graphs(rg, limits, colour=_SERIES)
     over = rg.attrs.get("statistics_over", "none")
-    what = "its static state" if over == "none" else f"{int(rg.attrs.get('states', 0))} states ({over})"
+    n = int(rg.attrs.get("states", 0))
+    what = ("its static state" if over == "none" else f"its {n} conditions" if over == "condition" else
+            f"{n} states ({over})")
     caption = (f"Range graphs of {line} ({load_case}) along the arc length from end A: the band from the minimum to "
                f"the maximum over {what}, the mean a line; dashed red: the allowable tension, dash-dot: 1 / MBR "
                f"where the line types give them. Seabed: {rg.attrs.get('seabed', '')}.")
@@ -130,9 +138,9 @@ def _figure_range_graphs(key, rg, limits) -> tuple[str, str]:
 _CABLE_UNITS = {"N": ("kN", 1e3), "1/m": ("1/m", 1.0), "m": ("m", 1.0), "rad": ("deg", math.pi / 180.0)}
 
 
-def _cable_html(table: pd.DataFrame) -> str:
+def _cable_html(table: pd.DataFrame, first: tuple[str, str] = ("Load case", "load_case")) -> str:
     """The cable checks, one row a check and run: value and limit in the row's unit, utilisation, margin, status,
-    where (s) and when (t)."""
+    where (s) and when (t); ``first``: the first column's header and the table's column (a system's condition)."""
     rows, classes = [], []
     notes: dict[str, str] = {}
     for _, r in table.iterrows():
@@ -146,15 +154,15 @@ def _cable_html(table: pd.DataFrame) -> str:
         when_text = "static" if not math.isfinite(when) else (
             f"t = {_num(when)} s" if math.isfinite(r["time"]) else f"offset {_num(when)} m")
         checked = math.isfinite(r["value"])
-        rows.append([_e(r["load_case"]), _e(r["line"]), _e(r["check"]) + _mark(notes, r["formula"]),
+        rows.append([_e(r[first[1]]), _e(r["line"]), _e(r["check"]) + _mark(notes, r["formula"]),
                      f"{value} {shown}" if checked else "&ndash;",
                      f"{bound} {limit} {shown}" if checked else "&ndash;", u,
                      f"{margin} {shown}" if checked else "&ndash;",
                      _num(r["s"]) if checked else "&ndash;", when_text if checked else "&ndash;", status])
         classes.append(cls)
-    return _table(["Load case", "Line", "Check", "Value", "Limit", "Utilisation [-]", "Margin", "s [m]", "When",
+    return _table([first[0], "Line", "Check", "Value", "Limit", "Utilisation [-]", "Margin", "s [m]", "When",
                    "Status"], rows, classes, cls="num checks cable",
-                  single=table["load_case"].nunique() == 1) + _notes_block(notes)
+                  single=table[first[1]].nunique() == 1) + _notes_block(notes)
 
 
 def _cable_section(table: pd.DataFrame | None, figures: list, armour: pd.DataFrame | None = None) -> list[str]:
@@ -170,9 +178,9 @@ def _cable_section(table: pd.DataFrame | None, figures: list, armour: pd.DataFra
              "<code>allowable_compression</code> (0 N unless given); the sag bend (the lowest point between the hog "
              "bend's crest and end B) and the hog bend's crest above the seabed by <code>analysis.design</code>'s "
              "clearances (0 m: no touchdown); the declination at end B within "
-             "<code>analysis.design.hang_off_declination</code>; in a system, where <code>analysis.design."
-             "line_clearance</code> is given, a cable's smallest distance to the other lines, segment to segment "
-             "(<code>seacable.design.clearance</code>). Where: the arc length of the worst node or element; "
+             "<code>analysis.design.hang_off_declination</code>; in a system, each line with bending stiffness, and its "
+             "smallest distance to the other lines, segment to segment, against <code>analysis.design."
+             "line_clearance</code> (<code>seacable.design.clearance</code>). Where: the arc length of the worst node or element; "
              "when: the time of the worst state.</p>"),
             _cable_html(table)] + [_figure(f) for f in figures] + armour_section(armour)
 
@@ -193,17 +201,6 @@ def _range_graphs_file(graphs: dict):
     if left:
         out.attrs["left_out"] = "; ".join(left) + " (another mesh)"
     return out
-
-
-def _bends(view) -> bool:
-    """Whether a line of a result bends (a cable: some finite, non-zero curvature)."""
-    kappa = np.asarray(view["curvature"].values, float)
-    return bool(np.any(np.isfinite(kappa) & (kappa != 0.0)))
-
-
-def _line_clearance(ds) -> float | None:
-    value = (((ds_.case_data(ds) or {}).get("analysis") or {}).get("design") or {}).get("line_clearance")
-    return None if value is None else float(value)
 
 
 # ------------------------------------------------------------------------------------------- armour fatigue
@@ -390,42 +387,6 @@ def _limits_html(limits, data: dict) -> str:
                  f"{_num(float(design['line_clearance']))} m (a system result's)")])
 
 
-def system_cable_view(ds, line: str | None = None):
-    """A ``system_static`` result's cable as a single line's static result: its finite-element nodes' shape
-    (``fe_x``, ``fe_y``, ``fe_z``), tensions and bending outputs on ``node`` and ``element`` with ``s``, in the intact
-    condition, the result's attributes (its case) and the line's name as a scalar coordinate ``line`` (its limits:
-    :func:`seacable.design.cable.cable_limits`). ``line`` None: the first line that bends (a line without bending
-    stiffness has zero curvature).
-
-    Raises
-    ------
-    InputError
-        A result without a line with curvature, or a ``line`` it does not hold.
-    """
-    import xarray as xr
-
-    names = [str(v) for v in ds["line"].values]
-    # a line without bending stiffness has its curvature 0 (a chain); a cable's bends
-    bends = [n for n in names if np.nanmax(np.abs(ds["curvature"].sel(line=n).values), initial=0.0) > 0.0]
-    if line is None and bends:
-        line = bends[0]
-    if line not in bends:
-        raise InputError(f"the system result has no line {line!r} with curvature (lines with bending stiffness: "
-                         f"{bends or 'none'}). Suggested fix: give one of them.")
-    one = ds.sel(line=line)
-    if "condition" in one.dims:
-        one = one.isel(condition=0)  # the intact condition
-    s = np.asarray(one["fe_s"].values, float)
-    n = int(np.isfinite(s).sum())
-    node = {k: ("node", np.asarray(one[f"fe_{k}"].values, float)[:n]) for k in "xyz"}
-    node.update({k: ("node", np.asarray(one[k].values, float)[:n]) for k in ("curvature", "bend_moment", "declination")})
-    element = {"segment_tension": ("element", np.asarray(one["fe_segment_tension"].values, float)[:n - 1]),
-               "shear_force": ("element", np.asarray(one["shear_force"].values, float)[:n - 1])}
-    view = xr.Dataset({**node, **element}, coords={"s": ("node", s[:n]), "line": line}, attrs=dict(ds.attrs))
-    view["tension"] = cable_.node_tension(view["segment_tension"])
-    return view
-
-
 def make_static_report(ds, output: Path, source_label: str) -> list[Path]:
     """The report of a static or pushover result of a cable: one HTML page (inputs and limits, the shape, the
     cable checks against the static MBR, per offset, the range graphs) and the CSV and NetCDF tables beside it
@@ -445,17 +406,16 @@ def make_static_report(ds, output: Path, source_label: str) -> list[Path]:
         raise InputError(f"the result has analysis '{analysis}'{'' if cable_.has_curvature(ds) else ' and no curvature'}"
                          ": the static cable report takes a mooring_static, mooring_pushover or system_static result of a line with "
                          "bending stiffness. Suggested fix: give the cable's EI (line_types.*.bending_stiffness).")
-    system = ds if analysis == "system_static" else None
-    if system is not None:  # the system's cable, as a single line's static result; its distance to the others
-        ds = system_cable_view(system)
+    if analysis == "system_static":
+        raise InputError("make_static_report takes a single line's static or pushover result; a system_static result's "
+                         "cables have a page of their own. Suggested fix: seacable.report_system_cable."
+                         "make_system_static_report (what seacable report calls for it).")
     data = ds_.case_data(ds) or {}
     name = str(ds.attrs.get("case_name") or "result")
     line = None
     limits = cable_.cable_limits(ds)
     rows = cable_.cable_checks(ds, limits)
-    line_name = str(ds["line"].values) if system is not None else ds_.line_names(ds)[0]
-    if system is not None and _line_clearance(system) is not None:
-        rows.append(line_clearance_check(system, line_name))
+    line_name = ds_.line_names(ds)[0]
     checks = cable_.cable_check_table(rows)
     for col, value in (("line", line_name), ("seed", None), ("case", name), ("load_case", name)):
         checks.insert(0, col, value)

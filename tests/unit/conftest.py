@@ -3,6 +3,7 @@ browser checks (headless Chromium)."""
 
 from __future__ import annotations
 
+import functools
 import subprocess
 from pathlib import Path
 from types import SimpleNamespace
@@ -161,3 +162,96 @@ def browser():
     """The report pages' browser checks: ``start(page, png, profile, size)`` (headless Chromium writing ``png``),
     ``console(process)`` (waits; the console lines it logged) and ``near(rgb, colour, tol)`` (pixels of a colour)."""
     return SimpleNamespace(start=_start_chromium, console=_console, near=_near)
+
+
+# --------------------------------------------------------------------------- two cables in a mooring system (issue 40)
+
+#: The 80 m lazy wave's cable (examples/lazy_wave_80m.yaml: Lozon et al. 2025) and its smeared buoyancy, twice on a
+#: fixed hull with a chain: two line types of the same cable with different limits, so a check that takes the other
+#: line's limits (or shape) is seen.
+_CABLE = {"diameter": 0.16, "mass_per_length": 36.70, "axial_stiffness": 4.69e8, "bending_stiffness": 1.99e4,
+          "drag_normal": 1.2, "drag_tangential": 0.1, "added_mass_normal": 1.0}
+_SECTIONS = [{"type": "buoyancy", "start": 52.101, "length": 50.0, "pitch": 5.0, "representation": "smeared",
+              "module": {"length": 5.0, "diameter": 0.29, "mass": 114.15, "volume": 0.2297289628,
+                         "drag_normal": 1.2}}]
+_TWO = SimpleNamespace(
+    limits={"cable_a": {"minimum_bend_radius": 2.0, "minimum_bend_radius_dynamic": 3.0, "allowable_tension": 2.0e4},
+            "cable_b": {"minimum_bend_radius": 4.0, "minimum_bend_radius_dynamic": 6.0, "allowable_tension": 1.5e4,
+                        "allowable_compression": 500.0}},
+    length={"cable_a": 170.215, "cable_b": 175.0},
+    # the hang-offs' horizontal distance from each cable's anchor (0 and 240 m, the hull at x = 120 m) [m]
+    span={"cable_a": 120.0, "cable_b": 115.0},
+    design={"sag_bend_clearance": 12.0, "hog_bend_clearance": 25.0, "hang_off_declination": [0.1, 0.3],
+            "line_clearance": 4.0},
+    n_elements=60)
+
+
+def _two_cables_case(analysis: dict):
+    """:func:`_two_cables_data` as a case."""
+    from seacable.system.case import SystemCase
+
+    return SystemCase.parse(_two_cables_data(analysis))
+
+
+def _two_cables_data(analysis: dict) -> dict:
+    """A fixed hull at (120, 0, -4) m in 80 m of water: cable_a from an anchor at x = 0 to a hang-off 10 m below the
+    hull, cable_b (4.785 m longer) from x = 240 m to a hang-off 5 m aft of it, both clamped 10 deg off vertical, and a
+    chain from the seabed to a fairlead 20 m to the side; the case's data, as a file holds it."""
+    types = {"ca": {**_CABLE, **_TWO.limits["cable_a"]}, "cb": {**_CABLE, **_TWO.limits["cable_b"]},
+             "chain": {"diameter": 0.1, "mass_per_length": 60.0, "axial_stiffness": 5e8}}
+    lines = {name: {"segments": [{"line_type": t, "length": _TWO.length[name]}], "sections": _SECTIONS,
+                    "end_a": f"anchor_{name[-1]}", "end_b": f"hang_{name[-1]}", "n_elements": _TWO.n_elements,
+                    "end_b_condition": {"type": "clamped", "declination": 0.1745, "azimuth": az}}
+             for name, t, az in (("cable_a", "ca", 0.0), ("cable_b", "cb", np.pi))}
+    lines["chain"] = {"line_type": "chain", "length": 160.0, "end_a": "anchor_c", "end_b": "fair_c", "n_elements": 10}
+    return {
+        "name": "two_cables", "line_types": types, "environment": {"water_density": 1025.0, "gravity": 9.80665,
+                                                                   "depth": 80.0},
+        "bodies": {"hull": {"kind": "fixed", "position": [120.0, 0.0, -4.0, 0.0, 0.0, 0.0]}},
+        "points": {"anchor_a": {"kind": "fixed", "position": [0.0, 0.0, -80.0]},
+                   "anchor_b": {"kind": "fixed", "position": [240.0, 0.0, -80.0]},
+                   "anchor_c": {"kind": "fixed", "position": [120.0, -150.0, -80.0]},
+                   "hang_a": {"kind": "body", "body": "hull", "position": [0.0, 0.0, -10.0]},
+                   "hang_b": {"kind": "body", "body": "hull", "position": [5.0, 0.0, -10.0]},
+                   "fair_c": {"kind": "body", "body": "hull", "position": [0.0, -20.0, -10.0]}},
+        "lines": lines, "analysis": analysis}
+
+
+def _two_cables_single(name: str, analysis: str = "mooring_static"):
+    """One of the two cables alone, in its own vertical plane: the same line, mesh, limits and hang-off."""
+    from seacable.io import parse_case
+
+    design = {k: v for k, v in _TWO.design.items() if k != "line_clearance"}
+    return parse_case({"name": name, "line_types": {"cable": {**_CABLE, **_TWO.limits[name]}},
+                       "line": {"segments": [{"line_type": "cable", "length": _TWO.length[name]}],
+                                "sections": _SECTIONS},
+                       "environment": {"water_density": 1025.0, "gravity": 9.80665, "depth": 80.0},
+                       "analysis": {"type": analysis, "anchor": [0.0, -80.0], "fairlead": [_TWO.span[name], -14.0],
+                                    "n_elements": _TWO.n_elements, "design": design,
+                                    "fairlead_end_condition": {"type": "clamped", "declination": 0.1745}}})
+
+
+class _TwoCables(SimpleNamespace):
+    """Two lazy-wave cables and a chain on a fixed hull (:func:`_two_cables_case`): ``case(analysis)``,
+    ``single(name)`` (a cable alone), the constants, and the results, each run once when first asked for: ``static``
+    (system_static, damaged without cable_b) and ``dynamic`` (system_dynamic, 1 s of still water from the
+    equilibrium)."""
+
+    @functools.cached_property
+    def static(self):
+        import seacable as sc
+
+        return sc.run(self.case({"type": "system_static", "design": self.design, "damaged_lines": ["cable_b"]}))
+
+    @functools.cached_property
+    def dynamic(self):
+        import seacable as sc
+
+        return sc.run(self.case({"type": "system_dynamic", "duration": 1.0, "time_step": 0.1, "output_interval": 0.5,
+                                 "design": self.design}))
+
+
+@pytest.fixture(scope="session")
+def two_cables():
+    """:class:`_TwoCables`, one for the session."""
+    return _TwoCables(case=_two_cables_case, data=_two_cables_data, single=_two_cables_single, **vars(_TWO))

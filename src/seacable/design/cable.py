@@ -84,7 +84,7 @@ QUANTITIES = {
     "shear_force": ("element", "N", "shear force across the line"),
 }
 
-_STATE_DIMS = ("time", "offset")
+_STATE_DIMS = ("time", "offset", "condition")  # a system_static cable's conditions, stacked
 _STATS = {"min": "minimum", "max": "maximum", "mean": "mean"}
 
 
@@ -208,7 +208,8 @@ def range_graphs(ds: xr.Dataset, line: str | None = None) -> xr.Dataset:
         ``bend_moment`` [N m], ``declination`` [rad] and ``seabed_clearance`` [m] (those the result holds: the
         bending ones with bending stiffness, the clearance with a seabed), and of ``shear_force`` [N] on
         ``element`` (coordinate ``element_s``, the element's middle); over the states of the dimension
-        ``attrs["statistics_over"]`` (``time``, ``offset``, or ``none``: a single state, the three equal). Each
+        ``attrs["statistics_over"]`` (``time``, ``offset``, a system cable's ``condition``
+        (:func:`seacable.design.system_cable.system_cable_states`), or ``none``: a single state, the three equal). Each
         variable has ``units`` and ``long_name``.
 
     Raises
@@ -310,7 +311,7 @@ def plot_range_graphs(rg: xr.Dataset, limits: CableLimits | None = None, *, colo
 
 
 def _draw_limits(ax, q, s, limits: CableLimits, scale, analysis) -> None:
-    dynamic = analysis == "mooring_dynamic"
+    dynamic = analysis in ("mooring_dynamic", "system_dynamic")
     if q == "curvature":
         mbr = limits.minimum_bend_radius_dynamic if dynamic else limits.minimum_bend_radius
         if mbr is not None and np.isfinite(mbr).any():
@@ -432,8 +433,7 @@ def cable_limits(ds: xr.Dataset) -> CableLimits:
     (no MBR or allowable tension, no compression, clearances 0 m, no declination range) where it has none."""
     data = case_data(ds) or {}
     # a system result's line, selected (ds.sel(line=NAME)): its own segments in the system case
-    name = str(ds["line"].values) if "line" in ds.coords and ds["line"].ndim == 0 else None
-    segments = _segments(data, name)
+    segments = _segments(data, _line_name(ds))
     s = np.asarray(ds["s"].values, float)
     if "line" in ds["s"].dims:
         s = s[0]
@@ -593,16 +593,26 @@ def cable_checks(ds: xr.Dataset, limits: CableLimits | None = None, line: str | 
     return out
 
 
-def _spans(data: dict) -> list[tuple[str, float, float, dict]]:
+def _line_name(one: xr.Dataset) -> str | None:
+    """The line of a system result's selected line (``ds.sel(line=NAME)``: its scalar ``line``), else None."""
+    return str(one["line"].values) if "line" in one.coords and one["line"].ndim == 0 else None
+
+
+def _spans(data: dict, name: str | None = None) -> list[tuple[str, float, float, dict]]:
     """``(kind, s_from, s_to, data)`` of the case's bend restrictors and moment-curvature tables (a line type's over
-    its segments, a stiffener's over its length), by arc length from end A. [m]"""
-    segments = _segments(data)
+    its segments, a stiffener's over its length), by arc length from end A: a single-line case's line, or a system
+    case's line ``name``. [m]"""
+    segments = _segments(data, name)
     total = segments[-1][1] if segments else 0.0
+    line = data.get("line") or {}
+    entry = (data.get("lines") or {}).get(name) if name is not None and isinstance(data.get("lines"), dict) else None
+    if isinstance(entry, dict):  # a system's line: its sections beside its segments (under 'line' as stored)
+        line = entry["line"] if isinstance(entry.get("line"), dict) else entry
     out = []
     for i, (a, b, lt) in enumerate(segments):
         if lt.get("moment_curvature"):
             out.append((f"line type {lt['name']}" if lt.get("name") else f"line.segments[{i}]", a, b, lt))
-    for sec in ((data.get("line") or {}).get("sections") or []):
+    for sec in (line.get("sections") or []):
         if not isinstance(sec, dict) or sec.get("type") not in ("bend_restrictor", "bend_stiffener"):
             continue
         length = float(sec.get("length") or 0.0)
@@ -627,7 +637,7 @@ def section_checks(one: xr.Dataset, state, states, s_node) -> list[CableCheck]:
     None of either: no rows. A result without curvature: no rows either (the curvature row says why).
     """
     data = case_data(one) or {}
-    spans = _spans(data)
+    spans = _spans(data, _line_name(one))
     if not spans or "curvature" not in one.variables:
         return []
     kappa = _states(one["curvature"], state, "node")

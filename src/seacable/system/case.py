@@ -83,11 +83,15 @@ class _Solve(Model):
 
 
 class _Designed(Model):
-    """The cable checks' criteria of a system's result (issue 40): ``design.line_clearance``, the smallest distance
-    from a cable to the other lines (:func:`seacable.design.clearance.line_clearance_check`)."""
+    """The cable checks' criteria of a system's result (issue 40), the single line's ``design`` block: the sag and
+    hog bends' clearances and the hang-off (end B) declination range of every line with bending stiffness, each
+    checked against its own line types' limits too (:mod:`seacable.design.system_cable`), and
+    ``design.line_clearance``, the smallest distance from a cable to the other lines
+    (:func:`seacable.design.clearance.line_clearance_check`)."""
 
     design: CableDesign | None = Field(
-        None, description="Design criteria of the system's cables (the smallest distance to the other lines).")
+        None, description="Design criteria of the system's cables (the bends' clearances, the hang-off declination "
+                          "range, the smallest distance to the other lines).")
 
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
@@ -500,6 +504,9 @@ class SystemCase(Model):
             if ref not in self.lines:
                 raise ValueError(f"analysis.damaged_lines[{i}]: line '{ref}' is not defined (lines: "
                                  f"{', '.join(self.lines)}).{suggest(ref, self.lines)}")
+        design = getattr(a, "design", None)
+        if design is not None:
+            _check_cable_design(design, system, self.points)
         if isinstance(a, SystemOffsetsAnalysis):
             body = self.bodies.get(a.body)
             if body is None:
@@ -550,6 +557,48 @@ class SystemCase(Model):
             raise InputError(f"analysis.damaged_lines {list(names)}: the damaged system is not valid: "
                              f"{str(err).removeprefix('MooringSystem').lstrip('.: ')} Suggested fix: remove fewer "
                              "lines, or give the body another line.") from None
+
+
+#: The cable limits of ``analysis.design`` that the cable checks read off a line's shape (beside line_clearance).
+_CABLE_LIMITS = ("sag_bend_clearance", "hog_bend_clearance", "hang_off_declination")
+
+
+def _bends(line) -> bool:
+    """Whether a system line bends: a line type's EI > 0, a bend stiffener or restrictor, or an end held."""
+    return (any((seg.line_type.bending_stiffness or 0.0) > 0.0 for seg in line.line.segments)
+            or any(getattr(sec, "type", "") in ("bend_stiffener", "bend_restrictor") for sec in line.line.sections)
+            or line.end_a_condition.holds or line.end_b_condition.holds)
+
+
+def _check_cable_design(design: CableDesign, system: MooringSystem, points: dict) -> None:
+    """A system's cable limits (``analysis.design``) apply to its lines with bending stiffness, hung off at end B:
+    limits with no such line to check, or a hang-off declination range for a cable whose only moving end is A,
+    are refused (the checks take end B as the hang-off, :mod:`seacable.design.system_cable`)."""
+    # given: a clearance above its default 0 m, a declination range (a dumped case writes the defaults)
+    given = [k for k in _CABLE_LIMITS if getattr(design, k) not in (None, 0.0)]
+    if not given:
+        return
+    cables = [name for name, line in system.lines.items() if _bends(line)]
+    if not cables:
+        raise ValueError(f"analysis.design gives {', '.join(given)}, but no line of the system has bending stiffness "
+                         "(a line type's bending_stiffness, a bend stiffener or a held end), so there is no cable "
+                         "to check. Suggested fix: give the cable's line type its bending_stiffness (EI, N m^2), or "
+                         f"remove {', '.join(given)}.")
+    if design.hang_off_declination is None:
+        return
+
+    def moves(name):
+        p = points.get(name)
+        return p is not None and p.kind in ("body", "coupled")
+
+    for name in cables:
+        line = system.lines[name]
+        if moves(line.end_a) and not moves(line.end_b):
+            raise ValueError(f"analysis.design.hang_off_declination: line '{name}' is hung off at end A (point "
+                             f"'{line.end_a}' moves with a body or vessel, end B's '{line.end_b}' does not), but the "
+                             "cable checks take end B as the hang-off (its declination, and the sag bend between "
+                             f"the hog bend and end B). Suggested fix: swap the line's ends (end_a: {line.end_b}, "
+                             f"end_b: {line.end_a}, and their end conditions).")
 
 
 def _file_path(loc: tuple, data: Any) -> tuple:

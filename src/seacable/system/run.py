@@ -139,12 +139,31 @@ def statics_used(case, statics: str | None = None) -> str:
         raise InputError(f"analysis.statics: '{mode}' is not one of {', '.join(STATICS)}. Suggested fix: use "
                          "'auto' (the catenary statics unless there is a current or a sloping seabed).")
     if mode == "auto":
-        return "finite_element" if needs_fe(case.environment, case.lines) else "catenary"
+        mode = "finite_element" if needs_fe(case.environment, case.lines) else "catenary"
+        _check_cable_statics(case, mode, "statics: auto, and nothing in the system needs the finite elements (no "
+                                         "current, sections or held ends)")
+        return mode
     lines = line_reasons(case.lines) if mode == "catenary" else ""
     if lines:
         raise InputError(f"analysis.statics: catenary, but the system has {lines}, which the catenary lines cannot "
                          "carry (no bending, no sections). Suggested fix: use statics: auto (or finite_element).")
+    _check_cable_statics(case, mode, "statics: catenary")
     return mode
+
+
+def _check_cable_statics(case, mode: str, why: str) -> None:
+    """A ``system_static`` that asks for the cable checks (a bend clearance above 0 m, a hang-off declination
+    range: :mod:`seacable.design.system_cable`) needs the finite-element statics, whose lines bend: on the
+    catenary statics the checks would have no curvature and no bends."""
+    design = getattr(case.analysis, "design", None)
+    if mode != "catenary" or design is None or case.analysis.type != "system_static":
+        return
+    given = [k for k in ("sag_bend_clearance", "hog_bend_clearance", "hang_off_declination")
+             if getattr(design, k) not in (None, 0.0)]
+    if given:
+        raise InputError(f"analysis.design gives {', '.join(given)}, but the system is solved by the catenary statics "
+                         f"({why}), whose lines carry no bending: the cable checks would have no curvature or bends. "
+                         "Suggested fix: add 'statics: finite_element' to the analysis.")
 
 
 def _setup(case, analysis_type: str, statics: str | None = None) -> SystemSetup:
