@@ -64,7 +64,7 @@ class _Scene:
     lines: list[tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray | None]] = field(default_factory=list)
     markers: list[tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=list)
     seabed: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None   # surface x, y, z [m]
-    note: str = ""
+    tension_range: tuple[float, float] | None = None                  # over the whole result, every time [N]
 
 
 def _refuse(ds, source: str) -> None:
@@ -125,31 +125,37 @@ def _pick(da, index: dict, nf: int) -> np.ndarray:
     return np.broadcast_to(values, (nf,) + values.shape)
 
 
-def _node_tension(ds, index: dict, nf: int, n_along: int) -> tuple[np.ndarray | None, list[str]]:
-    """The tension at the nodes [N] (frames, [line,] node), and the dims; segment tensions are averaged to the
-    nodes (an end node takes its segment's)."""
-    x_dims = list(ds["x"].dims)
+def _tension_name(ds) -> str | None:
+    """The tension variable: at the nodes (``tension`` along ``x``'s last dimension) or per segment (one fewer)."""
+    along, n_along = ds["x"].dims[-1], ds["x"].shape[-1]
     for name in ("tension", "segment_tension"):
-        if name not in ds.variables:
-            continue
-        da = ds[name]
-        along = da.dims[-1] if da.dims else None
-        if along == x_dims[-1]:
-            return _pick(da, index, nf), list(da.dims)
-        if along is not None and ds.sizes[along] == n_along - 1:  # per segment: to the nodes
-            seg = _pick(da, index, nf)
-            node = np.empty(seg.shape[:-1] + (n_along,))
-            node[..., 0], node[..., -1] = seg[..., 0], seg[..., -1]
-            node[..., 1:-1] = 0.5 * (seg[..., :-1] + seg[..., 1:])
-            return node, list(da.dims[:-1]) + [x_dims[-1]]
-    return None, []
+        if name in ds.variables and ds[name].dims:
+            last = ds[name].dims[-1]
+            if last == along or ds.sizes[last] == n_along - 1:
+                return name
+    return None
+
+
+def _node_tension(ds, index: dict, nf: int) -> np.ndarray | None:
+    """The tension at the nodes [N] (frames, [line,] node); segment tensions are averaged to the nodes (an end
+    node takes its segment's)."""
+    name = _tension_name(ds)
+    if name is None:
+        return None
+    values = _pick(ds[name], index, nf)
+    if ds[name].dims[-1] == ds["x"].dims[-1]:
+        return values
+    node = np.empty(values.shape[:-1] + (values.shape[-1] + 1,))
+    node[..., 0], node[..., -1] = values[..., 0], values[..., -1]
+    node[..., 1:-1] = 0.5 * (values[..., :-1] + values[..., 1:])
+    return node
 
 
 def _lines(ds, index: dict, nf: int) -> list:
     x = _pick(ds["x"], index, nf)
     z = _pick(ds["z"], index, nf)
     y = _pick(ds["y"], index, nf) if "y" in ds.variables else np.zeros_like(x)  # a 2-D result: the x-z plane
-    tension, _ = _node_tension(ds, index, nf, x.shape[-1])
+    tension = _node_tension(ds, index, nf)
     if _LINE in ds["x"].dims:
         names = [str(v) for v in ds[_LINE].values] if _LINE in ds.coords else [str(k) for k in range(x.shape[1])]
     else:
@@ -276,6 +282,12 @@ def _scene(ds, max_frames: int, source: str) -> _Scene:
         y0, y1 = mid - 0.1 * dx, mid + 0.1 * dx
     box = (float(xs.min()) - pad, float(xs.max()) + pad, y0 - pad, y1 + pad)
     scene.seabed = _seabed(ds, box)
+    name = _tension_name(ds)
+    if name is not None:
+        values = np.asarray(ds[name].values, float)
+        values = values[np.isfinite(values)]
+        if values.size:   # every output time, not only the frames': one scale for every decimation
+            scene.tension_range = (float(values.min()), float(values.max()))
     return scene
 
 
@@ -310,10 +322,8 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
                          "fix: max_frames=120.")
     scene = _scene(ds, int(max_frames), source)
     nf = len(scene.labels)
-    tension = [t for *_, t in scene.lines if t is not None]
-    finite = np.concatenate([t[np.isfinite(t)].ravel() for t in tension]) if tension else np.array([])
-    coloured = finite.size > 0
-    cmin, cmax = (float(finite.min()) / 1e3, float(finite.max()) / 1e3) if coloured else (0.0, 1.0)
+    coloured = scene.tension_range is not None and any(t is not None for *_, t in scene.lines)
+    cmin, cmax = (scene.tension_range[0] / 1e3, scene.tension_range[1] / 1e3) if coloured else (0.0, 1.0)
     if cmax <= cmin:
         cmax = cmin + 1.0
 
@@ -325,8 +335,8 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
                 line.update(color=t[f] / 1e3, coloraxis="coloraxis")
             else:
                 line.update(color="rgb(0,114,178)")
-            out.append(go.Scatter3d(x=x[f], y=y[f], z=z[f], mode="lines", name=name, line=line,
-                                    connectgaps=False, hovertemplate=f"{name}<br>x %{{x:.2f}} m<br>y %{{y:.2f}} m"
+            out.append(go.Scatter3d(x=x[f], y=y[f], z=z[f], mode="lines", name=name, line=line, legendgroup=name,
+                                    showlegend=False, connectgaps=False, hovertemplate=f"{name}<br>x %{{x:.2f}} m<br>y %{{y:.2f}} m"
                                     "<br>z %{z:.2f} m" + ("<br>T %{line.color:.1f} kN" if t is not None and coloured
                                                           else "") + "<extra></extra>"))
         for name, x, y, z in scene.markers:
@@ -371,6 +381,11 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
         factor = _FLAT / ratio["z"]
         ratio["z"] = _FLAT
         title += f"; vertical scale x {factor:.3g}"
+    # the lines' legend entries: a trace of no point each, in one colour, grouped with its line (a legend
+    # drawn from a line of typed-array colours warns 'Invalid color specifier' in the browser's console)
+    fixed += [go.Scatter3d(x=[None], y=[None], z=[None], mode="lines", name=name, legendgroup=name,
+                           line=dict(color="rgb(80,80,80)", width=6), hoverinfo="skip")
+              for name, *_ in scene.lines]
     fig = go.Figure(data=fixed + moving(0))
     n_fixed = len(fixed)
     moving_idx = list(range(n_fixed, n_fixed + len(scene.lines) + len(scene.markers)))
@@ -393,7 +408,7 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
                                                         transition=dict(duration=0), mode="immediate")]),
                                   dict(label="pause", method="animate", args=[[None], step])])],
             sliders=[dict(active=0, x=0.15, len=0.85, y=0.0, yanchor="top", pad=dict(t=20),
-                          currentvalue=dict(prefix="", font=dict(size=13)),
+                          currentvalue=dict(prefix="", font=dict(size=13, color="#444")),
                           font=dict(color="rgba(0,0,0,0)"),    # no label under every tick: the value above
                           steps=[dict(label=label, method="animate", args=[[str(f)], step])
                                  for f, label in enumerate(scene.labels)])])
