@@ -231,7 +231,8 @@ def _seabed(ds, box) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
             norm = np.hypot(tx, ty)
             norm[norm == 0] = 1.0
             nx, ny = -ty / norm, tx / norm
-            return (np.stack([cx - half * nx, cx + half * nx], axis=1), np.stack([cy - half * ny, cy + half * ny], axis=1),
+            return (np.stack([cx - half * nx, cx + half * nx], axis=1),
+                    np.stack([cy - half * ny, cy + half * ny], axis=1),
                     np.stack([bz, bz], axis=1))
         if "seabed_x" in ds.variables:       # a lay in its plane: the profile under the track, level across
             bx = np.asarray(ds["seabed_x"].values, float)
@@ -313,7 +314,7 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
     Raises
     ------
     InputError
-        If the result holds no line shape, or ``max_frames`` is under 2.
+        If the result holds no line shape (or its time is not increasing), or ``max_frames`` is under 1.
     """
     import plotly.graph_objects as go
 
@@ -330,19 +331,20 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
     def moving(f: int) -> list:
         out = []
         for name, x, y, z, t in scene.lines:
-            line = dict(width=6)
+            line = {"width": 6}
             if t is not None and coloured:
                 line.update(color=t[f] / 1e3, coloraxis="coloraxis")
             else:
                 line.update(color="rgb(0,114,178)")
+            hover = f"{name}<br>x %{{x:.2f}} m<br>y %{{y:.2f}} m<br>z %{{z:.2f}} m"
+            if t is not None and coloured:
+                hover += "<br>T %{line.color:.1f} kN"
             out.append(go.Scatter3d(x=x[f], y=y[f], z=z[f], mode="lines", name=name, line=line, legendgroup=name,
-                                    showlegend=False, connectgaps=False, hovertemplate=f"{name}<br>x %{{x:.2f}} m<br>y %{{y:.2f}} m"
-                                    "<br>z %{z:.2f} m" + ("<br>T %{line.color:.1f} kN" if t is not None and coloured
-                                                          else "") + "<extra></extra>"))
+                                    showlegend=False, connectgaps=False, hovertemplate=hover + "<extra></extra>"))
         for name, x, y, z in scene.markers:
             out.append(go.Scatter3d(x=np.atleast_1d(x[f]), y=np.atleast_1d(y[f]), z=np.atleast_1d(z[f]),
-                                    mode="markers", name=name, marker=dict(size=6, color="rgb(213,94,0)",
-                                                                           symbol="square")))
+                                    mode="markers", name=name,
+                                    marker={"size": 6, "color": "rgb(213,94,0)", "symbol": "square"}))
         return out
 
     fixed = []
@@ -384,35 +386,35 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
     # the lines' legend entries: a trace of no point each, in one colour, grouped with its line (a legend
     # drawn from a line of typed-array colours warns 'Invalid color specifier' in the browser's console)
     fixed += [go.Scatter3d(x=[None], y=[None], z=[None], mode="lines", name=name, legendgroup=name,
-                           line=dict(color="rgb(80,80,80)", width=6), hoverinfo="skip")
+                           line={"color": "rgb(80,80,80)", "width": 6}, hoverinfo="skip")
               for name, *_ in scene.lines]
     fig = go.Figure(data=fixed + moving(0))
     n_fixed = len(fixed)
     moving_idx = list(range(n_fixed, n_fixed + len(scene.lines) + len(scene.markers)))
-    axis = {k: dict(range=list(ranges[k]), title=f"{k} [m]", autorange=False, nticks=5) for k in ranges}
-    fig.update_layout(title=dict(text=title, font=dict(size=14)), template="plotly_white",
-                      scene=dict(xaxis=axis["x"], yaxis=axis["y"], zaxis=axis["z"], aspectmode="manual",
-                                 aspectratio=dict(x=ratio["x"], y=ratio["y"], z=ratio["z"])),
-                      legend=dict(x=0.0, y=1.0), margin=dict(l=0, r=0, t=40, b=0))
+    axis = {k: {"range": list(ranges[k]), "title": f"{k} [m]", "autorange": False, "nticks": 5} for k in ranges}
+    fig.update_layout(title={"text": title, "font": {"size": 14}}, template="plotly_white",
+                      scene={"xaxis": axis["x"], "yaxis": axis["y"], "zaxis": axis["z"], "aspectmode": "manual",
+                             "aspectratio": {"x": ratio["x"], "y": ratio["y"], "z": ratio["z"]}},
+                      legend={"x": 0.0, "y": 1.0}, margin={"l": 0, "r": 0, "t": 40, "b": 0})
     if coloured:
-        fig.update_layout(coloraxis=dict(colorscale=COLORSCALE, cmin=cmin, cmax=cmax,
-                                         colorbar=dict(title=dict(text="tension [kN]"))))
+        fig.update_layout(coloraxis={"colorscale": COLORSCALE, "cmin": cmin, "cmax": cmax,
+                                     "colorbar": {"title": {"text": "tension [kN]"}}})
     if nf > 1:
         fig.frames = [go.Frame(data=moving(f), traces=moving_idx, name=str(f)) for f in range(nf)]
-        step = dict(frame=dict(duration=0, redraw=True), mode="immediate", transition=dict(duration=0))
+        step = {"frame": {"duration": 0, "redraw": True}, "mode": "immediate", "transition": {"duration": 0}}
+        play = {"frame": {"duration": 100, "redraw": True}, "fromcurrent": True, "transition": {"duration": 0},
+                "mode": "immediate"}
+        buttons = [{"label": "play", "method": "animate", "args": [None, play]},
+                   {"label": "pause", "method": "animate", "args": [[None], step]}]
         fig.update_layout(
-            updatemenus=[dict(type="buttons", direction="left", x=0.0, y=0.0, xanchor="left", yanchor="top",
-                              pad=dict(t=30), buttons=[
-                                  dict(label="play", method="animate",
-                                       args=[None, dict(frame=dict(duration=100, redraw=True), fromcurrent=True,
-                                                        transition=dict(duration=0), mode="immediate")]),
-                                  dict(label="pause", method="animate", args=[[None], step])])],
-            sliders=[dict(active=0, x=0.15, len=0.85, y=0.0, yanchor="top", pad=dict(t=20),
-                          currentvalue=dict(prefix="", font=dict(size=13, color="#444")),
-                          font=dict(color="rgba(0,0,0,0)"),    # no label under every tick: the value above
-                          steps=[dict(label=label, method="animate", args=[[str(f)], step])
-                                 for f, label in enumerate(scene.labels)])])
-    fig.layout.meta = dict(frame_index={d: [int(i) for i in v] for d, v in scene.index.items()})
+            updatemenus=[{"type": "buttons", "direction": "left", "x": 0.0, "y": 0.0, "xanchor": "left",
+                          "yanchor": "top", "pad": {"t": 30}, "buttons": buttons}],
+            sliders=[{"active": 0, "x": 0.15, "len": 0.85, "y": 0.0, "yanchor": "top", "pad": {"t": 20},
+                      "currentvalue": {"prefix": "", "font": {"size": 13, "color": "#444"}},
+                      "font": {"color": "rgba(0,0,0,0)"},    # no label under every tick: the value above them
+                      "steps": [{"label": label, "method": "animate", "args": [[str(f)], step]}
+                                for f, label in enumerate(scene.labels)]}])
+    fig.layout.meta = {"frame_index": {d: [int(i) for i in v] for d, v in scene.index.items()}}
     return fig
 
 
@@ -455,5 +457,5 @@ def view(ds, output: str | Path | None = None, *, max_frames: int = 120, source:
         path = check_output_file(output, "output", (".html", ".htm"))
         with atomic_path(path, "the 3-D view") as tmp:
             fig.write_html(tmp, include_plotlyjs=True, full_html=True, auto_play=False,
-                           config=dict(displaylogo=False, responsive=True))
+                           config={"displaylogo": False, "responsive": True})
     return fig
