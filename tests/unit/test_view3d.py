@@ -249,8 +249,9 @@ def test_a_three_hour_runs_page_stays_a_few_megabytes(tmp_path):
     import plotly
 
     # a 3-hour storm stored every 0.5 s (21 601 output times) of 3 lines of 41 nodes: 120 frames; the page is
-    # plotly's script (4.8 MB) and the figure (0.62 MB when this was written: 120 frames of 3 x 41 nodes of
-    # x, y, z, tension as float64; all 21 601 times would be 110 MB). Bound: 1.5 MB of figure, 6.5 MB in all
+    # plotly's script (4.8 MB) and the figure (0.87 MB when this was written: 120 frames of 3 x 41 nodes of
+    # x, y, z, tension as float64 in base64, and each frame's trace settings; every one of the 21 601 times
+    # would make a page of about 150 MB). Bound: 1.5 MB of figure, 6.5 MB in all
     ds = _lines_result(nt=21_601, dt=0.5, n_nodes=41, lines=("L1", "L2", "L3"))
     out = tmp_path / "storm.html"
     fig = sc.view(ds, out)

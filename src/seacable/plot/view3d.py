@@ -1,7 +1,8 @@
 """A 3-D interactive view of a result: one self-contained HTML page (plotly, its script embedded).
 
-The lines of any result with a shape (``static``, ``towed_steady``, ``modal``, ``mooring_*``, ``system_*``,
-``towed_dynamic``, ``laying_dynamic``, ``towline_dynamic``) are drawn in 3-D, Z up, coloured by their tension
+The lines of any result with a shape (``static``, ``towed_steady``, ``modal``, ``mooring_*``, ``system_static``,
+``system_dynamic``, ``towed_dynamic``, ``laying_dynamic``, ``towline_dynamic``) are drawn in 3-D, Z up, coloured by
+their tension
 (kN, one colour bar), over the sea surface (z = 0) and the seabed the result knows: the case's flat or sloped
 plane or its profile along X, or the lay's seabed on its track or route. Bodies, vessels and the lay ship are
 markers. A result with several states (output times, pushover offsets, system conditions) is animated: one
@@ -33,7 +34,7 @@ __all__ = ["SHAPE_ANALYSES", "view", "view_figure"]
 
 #: analysis types whose results hold line shapes (x and z along a line, y where the result is 3-D)
 SHAPE_ANALYSES = ("static", "towed_steady", "modal", "mooring_static", "mooring_pushover", "mooring_dynamic",
-                  "system_static", "system_offsets", "system_dynamic", "towed_dynamic", "laying_dynamic",
+                  "system_static", "system_dynamic", "towed_dynamic", "laying_dynamic",
                   "towline_dynamic")
 
 #: the dimensions along a line (the last dimension of ``x``)
