@@ -241,6 +241,9 @@ def test_the_page_is_written_whole_or_not_at_all(tmp_path, monkeypatch):
     with pytest.raises(InputError, match="cannot write the 3-D view"):
         sc.view(_lines_result(nt=3), out)
     assert out.read_bytes() == good and sorted(p.name for p in tmp_path.iterdir()) == ["r.nc", "v.html"]
+    monkeypatch.undo()
+    # without -o: RESULT.html beside the result (the same page but for its random element id)
+    assert main(["view", str(path)]) == 0 and (tmp_path / "r.html").stat().st_size == len(good)
 
 
 # -------------------------------------------------------------------------------------------------- its size
