@@ -180,6 +180,34 @@ def test_the_lays_seabed_and_the_ship_are_drawn():
     assert (_array(ship[0]["x"])[0], _array(ship[0]["y"])[0], _array(ship[0]["z"])[0]) == (42.0, 0.0, 0.0)
 
 
+def test_the_seabed_along_a_lay_route_is_under_the_route():
+    # a route of two legs, (-1000, 0) -> (300, 0) -> (300, 500), its KP -1000 at the first vertex (the ship's KP
+    # tells); the seabed on the route at KP -500 (on the first leg), 300 (the corner) and 550 (250 m up the
+    # second): its ribbon's middle is on the route there, at the seabed's elevation
+    nt, nn = 3, 4
+    ship_kp = np.array([400.0, 450.0, 500.0])
+    ship_xy = np.column_stack([np.full(nt, 300.0), ship_kp - 300.0])
+    x = np.repeat(ship_xy[:, :1], nn, axis=1)
+    y = ship_xy[:, 1:] - np.linspace(40.0, 0.0, nn)
+    z = np.broadcast_to(np.linspace(-60.0, 0.0, nn), (nt, nn)).copy()
+    tn = ("time", "node")
+    ds = make_dataset({"x": var(tn, x, "m", "x"), "y": var(tn, y, "m", "y"), "z": var(tn, z, "m", "z"),
+                       "ship_x": var("time", ship_xy[:, 0], "m", "ship x"),
+                       "ship_y": var("time", ship_xy[:, 1], "m", "ship y"),
+                       "ship_kp": var("time", ship_kp, "m", "ship KP"),
+                       "route_x": var("route_point", [-1000.0, 300.0, 300.0], "m", "route x"),
+                       "route_y": var("route_point", [0.0, 0.0, 500.0], "m", "route y"),
+                       "seabed_kp": var("seabed_point", [-500.0, 300.0, 550.0], "m", "seabed KP"),
+                       "seabed_z": var("seabed_point", [-70.0, -60.0, -65.0], "m", "seabed z")},
+                      {"time": var("time", np.arange(nt) * 1.0, "s", "time")}, analysis="laying_dynamic",
+                      settings={}, references=["r"], title="lay")
+    bed = _seabed_surface(_figure_json(ds))
+    mid_x, mid_y = _array(bed["x"]).mean(axis=1), _array(bed["y"]).mean(axis=1)
+    np.testing.assert_allclose(mid_x, [-500.0, 300.0, 300.0], atol=1e-9)
+    np.testing.assert_allclose(mid_y, [0.0, 0.0, 250.0], atol=1e-9)
+    np.testing.assert_array_equal(_array(bed["z"]), [[-70.0, -70.0], [-60.0, -60.0], [-65.0, -65.0]])
+
+
 def test_system_bodies_are_markers_at_their_positions(synth):
     body = np.column_stack([np.linspace(0.0, 10.0, 5), np.linspace(0.0, -3.0, 5)])
     ds = synth.result({"L1": np.ones(5), "L2": np.ones(5)}, body_xy=body, analysis="system_dynamic")

@@ -66,6 +66,7 @@ class _Scene:
     markers: list[tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=list)
     seabed: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None   # surface x, y, z [m]
     tension_range: tuple[float, float] | None = None                  # over the whole result, every time [N]
+    box: tuple[float, float, float, float] = (0.0, 1.0, 0.0, 1.0)     # x0, x1, y0, y1 of lines and markers [m]
 
 
 def _refuse(ds, source: str) -> None:
@@ -216,6 +217,23 @@ def _case_seabed(ds):
         return None
 
 
+def _kp_origin(rx, ry, rkp, ds) -> float:
+    """The KP of the route's first vertex [m]: the ship's KP less its distance along the vertices' polyline
+    (the median over the output times)."""
+    px, py = np.asarray(ds["ship_x"].values, float).ravel(), np.asarray(ds["ship_y"].values, float).ravel()
+    ship_kp = np.asarray(ds["ship_kp"].values, float).ravel()
+    ax, ay = rx[:-1, None], ry[:-1, None]
+    ex, ey = np.diff(rx)[:, None], np.diff(ry)[:, None]
+    length2 = np.where(ex**2 + ey**2 > 0, ex**2 + ey**2, 1.0)
+    u = np.clip(((px - ax) * ex + (py - ay) * ey) / length2, 0.0, 1.0)          # (leg, time)
+    gap = np.hypot(ax + u * ex - px, ay + u * ey - py)
+    leg = np.argmin(gap, axis=0)
+    cols = np.arange(px.size)
+    along = rkp[leg] + u[leg, cols] * np.sqrt(length2[leg, 0])
+    ok = np.isfinite(along) & np.isfinite(ship_kp)
+    return float(np.median(ship_kp[ok] - along[ok])) if ok.any() else 0.0
+
+
 def _seabed(ds, box) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """The seabed surface (x, y, z) [m] over the horizontal ``box`` (x0, x1, y0, y1) [m]."""
     x0, x1, y0, y1 = box
@@ -226,6 +244,8 @@ def _seabed(ds, box) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
             kp = np.asarray(ds["seabed_kp"].values, float)
             rx, ry = np.asarray(ds["route_x"].values, float), np.asarray(ds["route_y"].values, float)
             rkp = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(rx), np.diff(ry)))])
+            if "ship_kp" in ds.variables and "ship_y" in ds.variables:   # where the route's KP 0 is: the ship's
+                rkp += _kp_origin(rx, ry, rkp, ds)
             cx, cy = np.interp(kp, rkp, rx), np.interp(kp, rkp, ry)
             half = 0.5 * max(y1 - y0, x1 - x0) * 0.25
             tx, ty = np.gradient(cx), np.gradient(cy)
@@ -284,6 +304,7 @@ def _scene(ds, max_frames: int, source: str) -> _Scene:
         y0, y1 = mid - 0.1 * dx, mid + 0.1 * dx
     box = (float(xs.min()) - pad, float(xs.max()) + pad, y0 - pad, y1 + pad)
     scene.seabed = _seabed(ds, box)
+    scene.box = box
     name = _tension_name(ds)
     if name is not None:
         values = np.asarray(ds[name].values, float)
@@ -358,7 +379,9 @@ def view_figure(ds, *, max_frames: int = 120, source: str = "the result"):
         fixed.append(go.Surface(x=bx, y=by, z=bz, surfacecolor=np.zeros_like(bz), showscale=False,
                                 colorscale=[[0, SEABED], [1, SEABED]], opacity=0.9, name="seabed",
                                 hoverinfo="skip", showlegend=True))
-        sx, sy = (float(bx.min()), float(bx.max())), (float(by.min()), float(by.max()))
+        lo, hi = scene.box[0::2], scene.box[1::2]      # the lines' and markers' box, and the seabed's
+        sx = (min(float(bx.min()), lo[0]), max(float(bx.max()), hi[0]))
+        sy = (min(float(by.min()), lo[1]), max(float(by.max()), hi[1]))
         zlo = min(float(zs.min()), float(bz.min()))
     else:
         xs_all = xs if xs.size else np.array([0.0])
