@@ -20,7 +20,7 @@ from __future__ import annotations
 import functools
 import re
 
-__all__ = ["to_si", "UnitProblem", "AMBIGUOUS", "UNIT_PATTERN"]
+__all__ = ["AMBIGUOUS", "UNIT_PATTERN", "UnitProblem", "to_si"]
 
 #: Unit names read two ways in marine work -> what to write instead. pint would take the first reading
 #: silently (``nm`` as a nanometre, ``ton`` as a short ton of 907 kg, ``kt`` as a knot).
@@ -113,7 +113,7 @@ def to_si(value: str, unit: str) -> float:
         name = err.unit_names[0] if getattr(err, "unit_names", None) else ""
         raise UnitProblem(f"has an unknown unit {name!r} in {value!r}, expected {kind} in {unit}. {fix} "
                           "Units are spelled as pint spells them (mm, m, nmi, kn, deg, rad, s, kN, MN, t, kg/m).") from None
-    except Exception:  # pint's parser: text that is no quantity at all
+    except Exception:  # noqa: BLE001  (pint's parser raises many kinds for text that is no quantity)
         raise UnitProblem(f"must be {kind} in {unit}, got {value!r}. {fix}") from None
     if not isinstance(quantity, registry.Quantity) or not isinstance(quantity.magnitude, (int, float)):
         raise UnitProblem(f"must be {kind} in {unit}, got {value!r}. {fix}")
