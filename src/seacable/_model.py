@@ -19,7 +19,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationEr
 
 from .errors import InputError
 
-__all__ = ["Model", "quantity", "dump_yaml", "load_yaml", "YAML_LOADER", "format_validation_error", "input_error", "suggest"]
+__all__ = ["Model", "quantity", "unit_float", "dump_yaml", "load_yaml", "YAML_LOADER", "format_validation_error", "input_error", "suggest"]
 
 
 def dump_yaml(model: BaseModel) -> str:
@@ -109,6 +109,30 @@ def quantity(unit: str, *, gt: float | None = None, ge: float | None = None, lt:
     """
     return Annotated[float, BeforeValidator(_number_checker(unit, gt, ge, lt, le, fix)),
                      Field(json_schema_extra=_unit_schema(unit))]
+
+
+def _unit_converter(unit: str):
+    def convert(value: Any) -> Any:
+        if isinstance(value, str) and any(c.isdigit() for c in value):
+            try:
+                float(value)
+            except ValueError:
+                from ._units import to_si
+
+                return to_si(value, unit)
+        return value
+
+    return convert
+
+
+def unit_float(unit: str):
+    """A float in SI ``unit`` that also takes a number with a unit (``"120 m"``), for the items of vectors and tables.
+
+    Unlike :func:`quantity` it adds no check of its own: a plain number is validated as the field's ``float``
+    always was (so that a vector's own checks and messages stay), a number with a unit is turned into ``unit``
+    by :func:`seacable._units.to_si`. Use as an item type: ``fairlead: tuple[unit_float("m"), unit_float("m")]``.
+    """
+    return Annotated[float, BeforeValidator(_unit_converter(unit)), Field(json_schema_extra=_unit_schema(unit))]
 
 
 #: Values of discriminated-union tags; pydantic puts them in error locations, where they
