@@ -92,6 +92,10 @@ def to_si(value: str, unit: str) -> float:
         An unknown or ambiguous unit, a dimension or an angle exponent other than the field's, or a field
         without dimension (a ratio, a coefficient), which takes a plain number only.
     """
+    try:
+        return float(value)   # a plain number is in the field's unit already
+    except ValueError:
+        pass
     for word in _WORD.findall(value):
         if word in AMBIGUOUS:
             raise UnitProblem(f"has an ambiguous unit '{word}' in {value!r}. "
@@ -101,7 +105,11 @@ def to_si(value: str, unit: str) -> float:
     import pint
 
     registry = _registry()
-    target = registry.Unit(unit)
+    try:
+        target = registry.Unit(unit)
+    except Exception:  # noqa: BLE001  (a field whose unit pint cannot read, as "m, rad": no units there)
+        raise UnitProblem(f"takes a plain number in {unit}, got {value!r}. Suggested fix: write the number "
+                          f"in {unit}.") from None
     kind = _kind(registry, target)
     example = {"an angle": " (as '45 deg' or '0.8 rad')", "a rate of turn": " (as '3 deg/s')",
                "a speed": " (as '3 kn')", "a force": " (as '7500 kN')", "a mass": " (as '10 t')",

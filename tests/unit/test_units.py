@@ -212,3 +212,15 @@ def test_the_unit_registry_loads_once():
     sc.Case.parse(_steady(**{"analysis.vessel_speed": "3 kn"}))
     sc.Case.parse(_steady(**{"analysis.vessel_speed": "2 kn", "line.length": "0.17 km"}))
     assert _units._registry.cache_info().currsize == 1 and _units._registry.cache_info().misses == 1
+
+
+def test_a_sweep_takes_units_and_its_summary_is_in_SI(tmp_path):
+    """Swept values with units are read as the cases read them: the summary's column is the SI number."""
+    sweep = tmp_path / "sweep.yaml"
+    sweep.write_text(yaml.safe_dump({"name": "knots", "base": str(EXAMPLES / "paper000_steady_statics.yaml"),
+                                     "grid": {"analysis.vessel_speed": ["1 kn", "2 kn"]}}))
+    summary = sc.sweep(sweep, tmp_path / "out", scheduler="synchronous")
+    column = summary["analysis.vessel_speed"]
+    assert column.attrs["units"] == "m/s"
+    assert column.values.tolist() == pytest.approx([KNOT, 2 * KNOT], rel=1e-12)
+    assert list(summary.status.values) == ["done", "done"]
