@@ -215,12 +215,16 @@ def test_the_unit_registry_loads_once():
 
 
 def test_a_sweep_takes_units_and_its_summary_is_in_SI(tmp_path):
-    """Swept values with units are read as the cases read them: the summary's column is the SI number."""
+    """Swept values with units are read as the cases read them: each case and the summary's column hold the SI
+    number (the summary of cases not run: its parameter columns are the same as after a run)."""
+    from seacable.sweeps import load_sweep
+    from seacable.sweeps.engine import summary_dataset
+
     sweep = tmp_path / "sweep.yaml"
     sweep.write_text(yaml.safe_dump({"name": "knots", "base": str(EXAMPLES / "paper000_steady_statics.yaml"),
                                      "grid": {"analysis.vessel_speed": ["1 kn", "2 kn"]}}))
-    summary = sc.sweep(sweep, tmp_path / "out", scheduler="synchronous")
-    column = summary["analysis.vessel_speed"]
+    spec = load_sweep(sweep)
+    assert [c.case.analysis.vessel_speed for c in spec.cases()] == pytest.approx([KNOT, 2 * KNOT], rel=1e-12)
+    column = summary_dataset(spec, {})["analysis.vessel_speed"]
     assert column.attrs["units"] == "m/s"
     assert column.values.tolist() == pytest.approx([KNOT, 2 * KNOT], rel=1e-12)
-    assert list(summary.status.values) == ["done", "done"]
