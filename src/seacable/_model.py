@@ -2,7 +2,8 @@
 
 Input objects (line types, environments, cases) are frozen pydantic models. A
 value is checked where it is declared, with its unit, through :func:`quantity`;
-every validation failure, whether the object is built in code or read from a
+a number may also be written with a unit (``"3 kn"``), read into the field's SI
+unit by :mod:`seacable._units`; every validation failure, whether the object is built in code or read from a
 case file, surfaces as one :class:`~seacable.errors.InputError` whose lines name
 the key path, the value with its unit, what was expected and a fix. Unknown keys
 get a "did you mean" suggestion.
