@@ -228,3 +228,25 @@ def test_a_sweep_takes_units_and_its_summary_is_in_SI(tmp_path):
     column = summary_dataset(spec, {})["analysis.vessel_speed"]
     assert column.attrs["units"] == "m/s"
     assert column.values.tolist() == pytest.approx([KNOT, 2 * KNOT], rel=1e-12)
+
+
+def test_a_system_case_takes_units():
+    """The system case (bodies, points, line types) reads units as the single-line cases do."""
+    from seacable.system.case import SystemCase
+
+    data = yaml.safe_load((EXAMPLES / "spread_mooring.yaml").read_text())
+    data["line_types"]["chain"].update(diameter="171 mm", breaking_load="7.3 MN", mass_per_length="0.18 t/m")
+    data["bodies"]["buoy"].update(mass="1650 t", position=["0 m", "0 m", "0 m", "0 deg", "0 deg", "90 deg"])
+    data["points"]["anchor1"]["position"] = ["-0.606 km", "0 m", "-150 m"]
+    data["lines"]["line1"]["length"] = "650 m"
+    case = SystemCase.parse(data)
+    chain = case.line_types["chain"]
+    assert (chain.diameter, chain.breaking_load, chain.mass_per_length) == pytest.approx((0.171, 7.3e6, 180.0),
+                                                                                         rel=1e-12)
+    buoy = case.bodies["buoy"]
+    assert buoy.mass == pytest.approx(1.65e6, rel=1e-12)
+    assert buoy.position == pytest.approx((0.0, 0.0, 0.0, 0.0, 0.0, math.pi / 2), rel=1e-12)
+    assert case.points["anchor1"].position == pytest.approx((-606.0, 0.0, -150.0), rel=1e-12)
+    with pytest.raises(InputError, match=r"bodies\.buoy\.position\[5\] must be an angle in rad, got '90 m'"):
+        SystemCase.parse({**data, "bodies": {"buoy": {**data["bodies"]["buoy"],
+                                                      "position": [0, 0, 0, 0, 0, "90 m"]}}})
