@@ -39,7 +39,7 @@ from typing import Annotated, Any, ClassVar, Literal, Union
 import numpy as np
 from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
-from .._model import UNION_TAGS, Model, input_error, quantity, suggest
+from .._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
@@ -125,8 +125,8 @@ class SystemOffsetsAnalysis(_Solve):
     type: Literal["system_offsets"] = "system_offsets"
     USES: ClassVar[frozenset[str]] = SystemStaticAnalysis.USES
     body: str = Field(min_length=1, description="The free body the load acts on.")
-    loads: tuple[float, ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
-    headings: tuple[float, ...] | None = Field(None, min_length=1,
+    loads: tuple[unit_float("N"), ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
+    headings: tuple[unit_float("rad"), ...] | None = Field(None, min_length=1,
                                                description="Load headings from +x towards +y. [rad]")
     n_headings: int = Field(12, ge=1, le=3600, description="Headings over the circle when 'headings' is not given.")
 
