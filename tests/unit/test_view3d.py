@@ -146,6 +146,11 @@ def test_the_seabed_is_the_cases_flat_sloped_or_profile():
     bx, bz = _array(bed["x"]), _array(bed["z"])
     np.testing.assert_allclose(bz, -100.0 + bx * math.tan(slope), rtol=0, atol=1e-12)
     assert np.ptp(bz) > 10.0   # a slope seen (the lines span 600 m: 30 m of rise)
+    # the case's own units (issue 41): a slope of "3 deg" is 3 degrees, read through the case's Seabed model
+    bed = _seabed_surface(_figure_json(_lines_result(nt=3, case={
+        "environment": {"depth": 100.0, "seabed": {"slope": "3 deg"}}})))
+    bx, bz = _array(bed["x"]), _array(bed["z"])
+    np.testing.assert_allclose(bz, -100.0 + bx * math.tan(math.radians(3.0)), rtol=0, atol=1e-12)
     # a profile along X: the depths at its points, linear between them, level beyond
     profile = {"distance": [-100.0, 0.0, 200.0], "depth": [150.0, 100.0, 80.0]}
     bed = _seabed_surface(_figure_json(_lines_result(nt=3, case={
