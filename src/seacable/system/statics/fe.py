@@ -31,8 +31,9 @@ analyses read, so that :mod:`seacable.system.run` reports both the same way.
   the applied loads are then applied with friction in load steps (:func:`seacable.mooring.friction.load_steps`,
   the single line's: each a fraction of the current's and the wind's speeds and of the loads). A solve from an
   ``initial`` equilibrium with friction (a ramp's next step, a sweep's next load) keeps its targets and goes from
-  its loads to the new ones: one monotonic loading. The stiffness's equilibria keep the targets (the regularised
-  friction's secant over ``+-delta``). ``mode: off`` or seabed friction 0: frictionless, as before to the bit.
+  its loads to the new ones: one monotonic loading. The stiffness's equilibria keep the targets, the bodies moved
+  by ``+-delta`` at most ``SLIDE_FACTOR friction_distance`` (1 cm at the default: the regularised friction's
+  tangent for a small further load; a larger move from the friction's state does not converge). ``mode: off`` or seabed friction 0: frictionless, as before to the bit.
 * Pinned bodies (only their rotations free) are not modelled by the finite-element system: refused.
 """
 
@@ -47,7 +48,7 @@ import numpy as np
 
 from ...errors import ConvergenceError, InputError, SeacableWarning
 from ...mooring import kernel as MK
-from ...mooring.friction import _active
+from ...mooring.friction import SLIDE_FACTOR, _active
 from ...mooring.network import FREE
 from ..statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 from .model import EquilibriumFields, euler, rotation
@@ -293,7 +294,10 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
     K = np.zeros((6 * nbf, 6 * nbf))
     if stiffness and nbf:
         span = max([float(np.ptp(X[:, k])) for k in range(3)] + [1.0])
-        K = fd_stiffness(fe, st, tol=min(tol, 1e-10), delta=1e-4 * span, delta_r=1e-4, targets=targets,
+        delta = 1e-4 * span
+        if targets is not None:  # within the friction's reach: the held equilibria converge from the state
+            delta = min(delta, SLIDE_FACTOR * friction.friction_distance)
+        K = fd_stiffness(fe, st, tol=min(tol, 1e-10), delta=delta, delta_r=1e-4, targets=targets,
                          friction_distance=friction.friction_distance if targets is not None else 1e-3)
     return FEEquilibrium(
         system=system, environment=env, body_names=body_names, body_position=bpos, free_body_names=free,
