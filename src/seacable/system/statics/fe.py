@@ -33,7 +33,8 @@ analyses read, so that :mod:`seacable.system.run` reports both the same way.
   ``initial`` equilibrium with friction (a ramp's next step, a sweep's next load) keeps its targets and goes from
   its loads to the new ones: one monotonic loading. The stiffness's equilibria keep the targets, the bodies moved
   by ``+-delta`` at most ``SLIDE_FACTOR friction_distance`` (1 cm at the default: the regularised friction's
-  tangent for a small further load; a larger move from the friction's state does not converge). ``mode: off`` or seabed friction 0: frictionless, as before to the bit.
+  tangent for a small further load; a larger move from the friction's state does not converge). ``mode: off`` or
+  seabed friction 0: frictionless, as before to the bit.
 * Pinned bodies (only their rotations free) are not modelled by the finite-element system: refused.
 """
 
@@ -90,7 +91,6 @@ class FEEquilibrium(EquilibriumFields):
     stiffness_method: str = STIFFNESS_FD
     statics: str = "finite_element"
     targets: np.ndarray | None = dataclasses.field(default=None, repr=False)  # the friction targets (n, 3) [m]
-    friction_distance: float = 1e-3
 
     def line_nodes(self, line_name: str):
         """Unstretched arc length (k,) [m], node positions (k, 3) [m] and element tensions (k - 1,) [N]."""
@@ -304,8 +304,7 @@ def fe_equilibrium(system, env, *, external: dict | None = None, tol: float = 1e
         point_names=point_names, point_position=ppos, line_names=list(fe.line_names), end_a_force=fa,
         end_b_force=fb, end_a_tension=np.linalg.norm(fa, axis=1), end_b_tension=np.linalg.norm(fb, axis=1),
         grounded_length=grounded, stiffness=K, hydrostatic=hydrostatic(system, env, free, q), iterations=st.iterations,
-        residual=st.residual / scale, fe=fe, state=st, base_fe=fe0, targets=targets,
-        friction_distance=friction.friction_distance if targets is not None else 1e-3)
+        residual=st.residual / scale, fe=fe, state=st, base_fe=fe0, targets=targets)
 
 
 def _scaled(fe, t: float):
