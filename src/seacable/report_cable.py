@@ -118,6 +118,25 @@ class _Cable:
         return {k: (rg, lim) for k, (rg, lim, _) in out.items()}
 
 
+def verdict_cards(checks: pd.DataFrame, *more, where=("check",)) -> str:
+    """The cable page's verdict cards (HTML): how many of the ``checks`` made fail, the largest utilisation (the
+    hang-off declination's is a place in its range, not a ratio of a demand to its limit, and is left out here: its
+    rows say it), named by the row's ``where`` columns, and the ``more`` cards, ``(class, key, value)`` each."""
+    done = checks[checks["passed"].notna()]
+    bad = done[~done["passed"].astype(bool)]
+    ratio = done[done["utilisation"].notna() & ~done["check"].str.startswith("hang-off declination")]
+    cards = [("bad" if len(bad) else "ok" if len(done) else "warn", "Cable checks",
+              f"{len(bad)} of {len(done)} fail" if len(bad) else f"all {len(done)} pass" if len(done) else "none made")]
+    if not ratio.empty:
+        top = ratio.loc[ratio["utilisation"].idxmax()]
+        cards.append(("bad" if top["utilisation"] > 1 else "ok",
+                      f"Largest utilisation ({', '.join(_e(top[c]) for c in where)})",
+                      _column([float(top["utilisation"])], sig=4, like=[1.0])[0]))
+    return '<div class="verdict">' + "".join(
+        f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>'
+        for c, k, v in (*cards, *more)) + "</div>"
+
+
 def _figure_range_graphs(key, rg, limits) -> tuple[str, str]:
     load_case, line = key
     plt = _pyplot()
@@ -424,22 +443,10 @@ def make_static_report(ds, output: Path, source_label: str) -> list[Path]:
     shape = _figure_shape(ds, line)
     graphs = _figure_range_graphs((name, line_name), rg, limits)
     now = datetime.datetime.now(datetime.UTC).strftime("%d %B %Y, %H:%M UTC")
-    done = checks[checks["passed"].notna()]
-    bad = done[~done["passed"].astype(bool)]
-    # the largest ratio of a demand to its limit: the hang-off declination's utilisation is a place in its range, not
-    # a ratio, and is left out here (its rows say it)
-    ratio = done[done["utilisation"].notna() & ~done["check"].str.startswith("hang-off declination")]
-    cards = [("bad" if len(bad) else "ok" if len(done) else "warn", "Cable checks",
-              f"{len(bad)} of {len(done)} fail" if len(bad) else f"all {len(done)} pass" if len(done) else "none made")]
-    if not ratio.empty:
-        top = ratio.loc[ratio["utilisation"].idxmax()]
-        cards.append(("bad" if top["utilisation"] > 1 else "ok", f"Largest utilisation ({_e(top['check'])})",
-                      _column([float(top["utilisation"])], sig=4, like=[1.0])[0]))
-    cards.append(("", "Hang-off tension" + (" (range over the offsets)" if len(offsets) > 1 else ""),
-                  f"{_num(offsets['hang_off_tension'].min() / 1e3)}" + (
-                      f" to {_num(offsets['hang_off_tension'].max() / 1e3)}" if len(offsets) > 1 else "") + " kN"))
-    verdict = '<div class="verdict">' + "".join(
-        f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
+    verdict = verdict_cards(checks, ("", "Hang-off tension" + (" (range over the offsets)" if len(offsets) > 1 else ""),
+                                     f"{_num(offsets['hang_off_tension'].min() / 1e3)}" + (
+                                         f" to {_num(offsets['hang_off_tension'].max() / 1e3)}" if len(offsets) > 1
+                                         else "") + " kN"))
     base = output.resolve().parent
     heading = (data.get("analysis") or {}).get("heading")
     pushover = analysis == "mooring_pushover"

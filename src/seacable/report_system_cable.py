@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from ._atomic import atomic_write
-from ._report_html import _CSS, _SERIES, _column, _e, _figure, _kv, _num, _png, _pyplot, _relative, _table
+from ._report_html import _CSS, _SERIES, _e, _figure, _kv, _num, _png, _pyplot, _relative, _table
 from ._version import __version__
 from .design import cable as cable_
 from .design import summary as ds_
@@ -30,7 +30,14 @@ from .design.system_cable import (
     system_cable_view,
 )
 from .errors import InputError
-from .report_cable import CABLE_CSV_UNITS, _cable_html, _figure_range_graphs, _limits_html, offset_table
+from .report_cable import (
+    CABLE_CSV_UNITS,
+    _cable_html,
+    _figure_range_graphs,
+    _limits_html,
+    offset_table,
+    verdict_cards,
+)
 
 __all__ = ["make_system_static_report", "system_condition_table"]
 
@@ -194,22 +201,11 @@ def make_system_static_report(ds, output: Path, source_label: str) -> list[Path]
     per_condition = pd.concat([system_condition_table(ds, line) for line in lines], ignore_index=True)
     graphs = {line: cable_.range_graphs(system_cable_states(ds, line)) for line in lines}
     now = datetime.datetime.now(datetime.UTC).strftime("%d %B %Y, %H:%M UTC")
-    done = checks[checks["passed"].notna()]
-    bad = done[~done["passed"].astype(bool)]
-    ratio = done[done["utilisation"].notna() & ~done["check"].str.startswith("hang-off declination")]
-    cards = [("bad" if len(bad) else "ok" if len(done) else "warn", "Cable checks",
-              f"{len(bad)} of {len(done)} fail" if len(bad) else f"all {len(done)} pass" if len(done) else "none made")]
-    if not ratio.empty:
-        top = ratio.loc[ratio["utilisation"].idxmax()]
-        cards.append(("bad" if top["utilisation"] > 1 else "ok",
-                      f"Largest utilisation ({_e(top['check'])}, {_e(top['line'])}, {_e(top['condition'])})",
-                      _column([float(top["utilisation"])], sig=4, like=[1.0])[0]))
     t_ho = per_condition["hang_off_tension"]
-    cards.append(("", "Hang-off tension" + (" (range)" if len(per_condition) > 1 else ""),
-                  f"{_num(t_ho.min() / 1e3)}" + (f" to {_num(t_ho.max() / 1e3)}" if len(per_condition) > 1 else "")
-                  + " kN"))
-    verdict = '<div class="verdict">' + "".join(
-        f'<div class="card {c}"><div class="k">{k}</div><div class="v">{v}</div></div>' for c, k, v in cards) + "</div>"
+    verdict = verdict_cards(checks, ("", "Hang-off tension" + (" (range)" if len(per_condition) > 1 else ""),
+                                     f"{_num(t_ho.min() / 1e3)}"
+                                     + (f" to {_num(t_ho.max() / 1e3)}" if len(per_condition) > 1 else "") + " kN"),
+                            where=("check", "line", "condition"))
     base = output.resolve().parent
     comment = ds.attrs.get("comment") or data.get("description") or ""
     damaged = (data.get("analysis") or {}).get("damaged_lines")

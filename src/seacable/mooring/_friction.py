@@ -31,7 +31,7 @@ import numpy as np
 from .._jit import njit
 from ._band import _add_block
 from ._indices import E_BEDRAMP, E_BEDTAB, E_DEPTH, E_KBOT, E_MU, E_SLOPE
-from ._seabed import seabed_at
+from ._seabed import penetration
 
 __all__ = ["friction_loads"]
 
@@ -64,13 +64,7 @@ def friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric):
     for i in range(X.shape[0]):
         if bedc[i] <= 0.0 or math.isnan(targets[i, 0]):
             continue
-        if profile:  # the profile's segment under the node: its elevation and normal
-            zb, slope = seabed_at(env, X[i, 0])
-            cs = 1.0 / math.sqrt(1.0 + slope * slope)
-            nrm[0], nrm[2] = -slope * cs, cs
-            pen = (zb - X[i, 2]) * cs
-        else:
-            pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
+        pen = penetration(env, X[i, 0], X[i, 2], profile, depth, nrm)  # the normal too, on a profile
         if pen <= -dl:
             continue  # off the seabed: no normal force, no friction
         if pen < dl:

@@ -19,7 +19,7 @@ from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_
 from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_COMPRESS, E_DEPTH, E_DRAGTURN,
                        E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
                        E_WH, P_CDA, P_CDA_AXIAL, P_CLA, P_TX, V_EAD, V_WC)
-from ._seabed import seabed_at
+from ._seabed import penetration
 from ._ties import tie_loads
 from ._water import (_drag_tangent, _drag_turn, _dry_fraction, _fluid, _point_drag_split, _surface, _water_local,
                      point_lift)
@@ -336,13 +336,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             if jac and fidx[i] >= 0:
                 _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
         if kb > 0.0 and bedc[i] > 0.0 and (profile or math.isfinite(depth)):
-            if profile:  # the profile's segment under the node: its elevation and normal
-                zb, slope = seabed_at(env, X[i, 0])
-                cs = 1.0 / math.sqrt(1.0 + slope * slope)
-                nrm[0], nrm[2] = -slope * cs, cs
-                pen = (zb - X[i, 2]) * cs
-            else:
-                pen = -(nrm[0] * X[i, 0] + nrm[2] * (X[i, 2] + depth))
+            pen = penetration(env, X[i, 0], X[i, 2], profile, depth, nrm)  # the normal too, on a profile
             dl = env[E_BEDRAMP]
             if pen > -dl:
                 # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,

@@ -36,3 +36,16 @@ def seabed_at(env, x):
     slope = (env[z0 + hi] - env[z0 + lo]) / (env[x0 + hi] - env[x0 + lo])
     return env[z0 + lo] + slope * (x - env[x0 + lo]), slope
 
+
+
+@njit(cache=True)
+def penetration(env, x, z, profile, depth, nrm):
+    """How far the point ``(x, z)`` lies into the seabed along its normal [m] (> 0 in it): with a ``profile``, of the
+    profile's segment under ``x``, whose unit normal it writes into ``nrm`` (x and z); else of the plane through
+    ``z = -depth`` at ``x = 0`` whose normal ``nrm`` holds already."""
+    if profile:
+        zb, slope = seabed_at(env, x)
+        cs = 1.0 / math.sqrt(1.0 + slope * slope)
+        nrm[0], nrm[2] = -slope * cs, cs
+        return (zb - z) * cs
+    return -(nrm[0] * x + nrm[2] * (z + depth))
