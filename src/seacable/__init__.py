@@ -130,6 +130,7 @@ __all__ = [
     "run",
     "read_netcdf",
     "write_netcdf",
+    "summary",
     # sweeps
     "Sweep",
     "Range",
@@ -163,6 +164,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
     ".line": ("Line", "LineType", "PointMass", "Segment"),
     ".mooring.motion": ("HarmonicMotion", "PlatformMotion", "RAOMotion", "TimeSeriesMotion"),
     ".results": ("read_netcdf", "write_netcdf"),
+    ".run_summary": ("summary",),
     ".simulate": ("check", "run"),
     ".sweeps": ("Range", "Sweep", "load_sweep", "sweep"),
     ".system.case": ("SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis"),

@@ -45,6 +45,7 @@ from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import STAND_IN, LineType
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
+from .._window import StatisticsWindow, omit_unset_window
 from ..ties import tie_points
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
@@ -99,7 +100,7 @@ class _Designed(Model):
         data = handler(self)
         if isinstance(data, dict) and data.get("design", 0) is None:
             del data["design"]
-        return data
+        return omit_unset_window(data)
 
 
 class SystemStaticAnalysis(_Designed, _Solve):
@@ -267,7 +268,7 @@ class UncoupledRoute(Model):
         return self
 
 
-class SystemDynamicAnalysis(_Designed):
+class SystemDynamicAnalysis(_Designed, StatisticsWindow):
     """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
 
     Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force
