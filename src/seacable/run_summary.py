@@ -82,6 +82,8 @@ def _where(da: xr.DataArray, index: tuple) -> str:
             continue
         if dim == "time":
             parts.append(f"t = {float(da['time'].values[i]):.6g} s")
+        elif "s" in da.coords and da["s"].dims == (dim,):    # a node by its arc length from end A
+            parts.append(f"s = {_number(float(da['s'].values[i]), da['s'])}")
         elif dim in da.coords and dim not in _SIZE_DIMS:
             value = da[dim].values[i]
             value = value.decode() if isinstance(value, bytes) else value

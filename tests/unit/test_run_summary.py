@@ -233,3 +233,15 @@ def test_progress_to_a_pipe_is_whole_lines_every_tenth(monkeypatch):
     for t in (0.0, 50.0, 100.0):
         progress(t, 100.0)
     assert quiet.getvalue() == ""
+
+
+def test_the_reports_seed_statistics_leave_the_transient_out():
+    from seacable.design.summary import Run, seed_table
+
+    ds = _series("mooring_dynamic", ["fairlead_tension", "anchor_tension"], statistics_from=10.0)
+    table = seed_table([Run("synthetic", "synthetic", None, source=ds)])
+    fair = table[table.end == "fairlead"].iloc[0]
+    after = ds.fairlead_tension.sel(time=slice(10.0, None))
+    # the start spike (1e5 N at 1 s) is left out: the maximum, mean and duration are those from 10 s on
+    assert fair["maximum"] == float(after.max()) and fair["mean"] == pytest.approx(float(after.mean()), rel=1e-12)
+    assert fair["duration"] == float(after.time[-1] - after.time[0])
