@@ -68,6 +68,7 @@ if TYPE_CHECKING:
     from .line import Line, LineType, PointMass, Segment
     from .mooring.motion import HarmonicMotion, PlatformMotion, RAOMotion, TimeSeriesMotion
     from .results import read_netcdf, write_netcdf
+    from .run_summary import summary
     from .simulate import check, run
     from .sweeps import Range, Sweep, load_sweep, sweep
     from .system.case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis

@@ -14,11 +14,14 @@ from __future__ import annotations
 
 import functools
 import math
+from typing import TYPE_CHECKING
 
-import xarray as xr
 from pydantic import Field, model_serializer, model_validator
 
 from ._model import Model, load_yaml, quantity
+
+if TYPE_CHECKING:  # xarray is not imported by reading a case (case.py imports this module)
+    import xarray as xr
 
 __all__ = ["StatisticsWindow", "default_statistics_from", "omit_unset_window", "statistics_start",
            "statistics_window"]
