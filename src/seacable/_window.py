@@ -27,16 +27,18 @@ __all__ = ["StatisticsWindow", "default_statistics_from", "omit_unset_window", "
            "statistics_window"]
 
 
-def default_statistics_from(analysis: dict) -> float:
+def default_statistics_from(analysis: dict, bodies: dict | None = None) -> float:
     """The default start of the statistics of an analysis (a dict, as dumped): the end of its ramp. [s]
 
-    The ramp of ``motion`` (mooring_dynamic) or the longest of ``body_motions`` and ``point_motions``
-    (system_dynamic); 0 without one, and 0 when the ramp does not end before ``duration`` (the whole run is
-    then the ramp: its statistics are the run's).
+    The ramp of ``motion`` (mooring_dynamic), or the longest of ``body_motions``, ``point_motions`` and the
+    ``bodies``' ``hydrodynamics`` (the case's, system_dynamic: the ramp of a free body's wave loads); 0 without
+    one, and 0 when the ramp does not end before ``duration`` (the whole run is then the ramp: its statistics are
+    the run's).
     """
     motions = [analysis.get("motion")]
     for key in ("body_motions", "point_motions"):
         motions.extend((analysis.get(key) or {}).values())
+    motions.extend(b.get("hydrodynamics") for b in (bodies or {}).values() if isinstance(b, dict))
     ramps = [float(m.get("ramp") or 0.0) for m in motions if isinstance(m, dict)]
     ramp = max(ramps, default=0.0)
     duration = float(analysis.get("duration") or math.inf)
@@ -61,7 +63,8 @@ class StatisticsWindow(Model):
         return self
 
     def statistics_start(self) -> float:
-        """The time from which this run's statistics are taken: ``statistics_from`` or its default. [s]"""
+        """The time from which this run's statistics are taken: ``statistics_from`` or the end of the analysis's
+        own ramp (a system's bodies' hydrodynamics ramp is the case's: :func:`statistics_start` of its result). [s]"""
         if self.statistics_from is not None:
             return float(self.statistics_from)
         return default_statistics_from(self.model_dump(mode="json"))
@@ -82,13 +85,15 @@ def omit_unset_window(data):
 @functools.lru_cache(maxsize=64)
 def _start_of_case(text: str) -> float:
     try:
-        analysis = (load_yaml(text) or {}).get("analysis") or {}
+        data = load_yaml(text) or {}
+        analysis = data.get("analysis") or {}
     except Exception:  # noqa: BLE001 - a result whose case does not parse has no window
         return 0.0
     if not isinstance(analysis, dict):
         return 0.0
     given = analysis.get("statistics_from")
-    return float(given) if given is not None else default_statistics_from(analysis)
+    bodies = data.get("bodies") if isinstance(data.get("bodies"), dict) else None
+    return float(given) if given is not None else default_statistics_from(analysis, bodies)
 
 
 def statistics_start(ds: xr.Dataset) -> float:

@@ -127,6 +127,11 @@ def test_default_window_is_the_end_of_the_ramp():
     assert statistics_start(_series("mooring_dynamic", ["fairlead_tension"], ramp=20.0)) == 20.0
     assert statistics_start(_series("mooring_dynamic", ["fairlead_tension"], ramp=20.0, statistics_from=5.0)) == 5.0
     assert statistics_start(_series("towline_dynamic", ["top_tension"])) == 0.0
+    # a free body's wave-load ramp (the case's bodies) counts too, the longest ramp wins
+    ds = _series("system_dynamic", ["fairlead_tension"], ramp=20.0)
+    data = yaml.safe_load(ds.attrs["case"])
+    data["bodies"] = {"hull": {"kind": "free", "hydrodynamics": {"ramp": 60.0}}}
+    assert statistics_start(ds.assign_attrs(case=yaml.safe_dump(data))) == 60.0
     # a ramp as long as the run leaves the whole run to the statistics
     assert statistics_start(_series("mooring_dynamic", ["fairlead_tension"], ramp=100.0)) == 0.0
 
