@@ -131,6 +131,8 @@ def _derived(ds: xr.Dataset) -> xr.Dataset:
     horizontal distance from the touchdown. [m]"""
     if ds.attrs.get("analysis") not in ("static", "mooring_static") or "layback" in ds or "touchdown_x" not in ds:
         return ds
+    if ds["x"].ndim != 1 or ds["touchdown_x"].ndim != 0:   # a network of lines (a MoorDyn deck): no one layback
+        return ds
     dim = "point" if "point" in ds["x"].dims else "node"
     dx = float(ds["x"].isel({dim: -1})) - float(ds["touchdown_x"])
     dy = float(ds["y"].isel({dim: -1})) - float(ds["touchdown_y"]) if "y" in ds and "touchdown_y" in ds else 0.0
