@@ -34,7 +34,7 @@ CASES = {
         f"000 Table 3: -1.54 %); vessel {float(ds.vessel_y[-1]):.1f} m, free end "
         f"{float(ds.y[-1, 0] - ds.y[0, 0]):.1f} m sideways"),
     "paper001_lay_2ms_50m": lambda ds: (
-        f"entry angle {float(ds.entry_angle[-1]):.3f} deg (paper 001 Table 1: 13.053), ship tension "
+        f"entry angle {np.degrees(float(ds.entry_angle[-1])):.3f} deg (paper 001 Table 1: 13.053), ship tension "
         f"{float(ds.top_tension[-20:].mean()):.1f} N (w h = 224.5 N), slack {float(ds.slack[-1]):.4f}; "
         f"{float(ds.laid_length[-1]):.0f} m laid"),
     "lay_route_3d": lambda ds: (
@@ -97,7 +97,7 @@ CASES = {
         f"heading's most loaded line broken; "
         f"largest fairlead tension {float(ds.fairlead_tension.sel(condition='intact').max()) / 1e3:.0f} kN intact"),
     "paper000_steady_statics": lambda ds: f"top tension {float(ds.top_tension):.1f} N (paper 000 eq. 6 drag)",
-    "paper001_table1": lambda ds: (f"entry angle at 2 m/s {float(ds.angle.sel(ship_speed=2.0)):.3f} deg "
+    "paper001_table1": lambda ds: (f"entry angle at 2 m/s {np.degrees(float(ds.angle.sel(ship_speed=2.0))):.3f} deg "
                                    "(paper 001 Table 1: 13.053)"),
     "paper002_vertical_cable": lambda ds: ("fundamental period string/exact/wave "
                                            + "/".join(f"{p:.3f}" for p in ds.period.isel(mode=0).values)
@@ -124,7 +124,7 @@ def main(outdir: str = "demo_out", *extra: str) -> int:
     sweep_out = out / "paper001_speed_sweep"
     summary = sc.sweep(HERE / "paper001_speed_sweep.yaml", sweep_out)
     pngs = plot_result(summary, sweep_out, prefix="summary")
-    angles = summary.entry_angle_end.values
+    angles = np.degrees(summary.entry_angle_end.values)  # results hold angles in rad
     print(f"{'paper001_speed_sweep':26s} {summary.sizes['case']} laying cases on a local Dask cluster: entry angle "
           f"{angles[0]:.3f} deg at {float(summary['analysis.ship.speed'][0]):g} m/s to {angles[-1]:.3f} deg at "
           f"{float(summary['analysis.ship.speed'][-1]):g} m/s (paper 001 Table 1: 33.798 to 5.241)  "

@@ -30,7 +30,7 @@ TABLE1 = np.array([
 def main(outdir: str = "sweep_out") -> int:
     summary = sc.sweep(HERE / "paper001_speed_sweep.yaml", outdir)
     speed = summary["analysis.ship.speed"].values
-    ours = summary["entry_angle_end"].values
+    ours = np.degrees(summary["entry_angle_end"].values)  # results hold angles in rad
     paper = np.interp(speed, TABLE1[:, 0], TABLE1[:, 2])
     print("ship speed [m/s] | paper: straight line [deg] | paper: numerical [deg] | seacable [deg] | "
           "seacable - paper [deg] | layback [m]")

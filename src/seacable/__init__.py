@@ -65,6 +65,7 @@ if TYPE_CHECKING:
         ShipMotion,
     )
     from .laying.route import Route
+    from .plot.view3d import view
     from .line import Line, LineType, PointMass, Segment
     from .mooring.motion import HarmonicMotion, PlatformMotion, RAOMotion, TimeSeriesMotion
     from .results import read_netcdf, write_netcdf
@@ -137,6 +138,8 @@ __all__ = [
     "Range",
     "load_sweep",
     "sweep",
+    # pictures
+    "view",
     # physics
     "statics",
     "modal",
@@ -164,6 +167,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
     ".laying.route": ("Route",),
     ".line": ("Line", "LineType", "PointMass", "Segment"),
     ".mooring.motion": ("HarmonicMotion", "PlatformMotion", "RAOMotion", "TimeSeriesMotion"),
+    ".plot.view3d": ("view",),
     ".results": ("read_netcdf", "write_netcdf"),
     ".run_summary": ("summary",),
     ".simulate": ("check", "run"),

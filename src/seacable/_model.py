@@ -2,7 +2,8 @@
 
 Input objects (line types, environments, cases) are frozen pydantic models. A
 value is checked where it is declared, with its unit, through :func:`quantity`;
-every validation failure, whether the object is built in code or read from a
+a number may also be written with a unit (``"3 kn"``), read into the field's SI
+unit by :mod:`seacable._units`; every validation failure, whether the object is built in code or read from a
 case file, surfaces as one :class:`~seacable.errors.InputError` whose lines name
 the key path, the value with its unit, what was expected and a fix. Unknown keys
 get a "did you mean" suggestion.
@@ -19,7 +20,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationEr
 
 from .errors import InputError
 
-__all__ = ["Model", "quantity", "dump_yaml", "load_yaml", "YAML_LOADER", "format_validation_error", "input_error", "suggest"]
+__all__ = ["Model", "quantity", "unit_float", "dump_yaml", "load_yaml", "YAML_LOADER", "format_validation_error", "input_error", "suggest"]
 
 
 def dump_yaml(model: BaseModel) -> str:
@@ -61,7 +62,10 @@ def _number_checker(unit: str, gt, ge, lt, le, fix: str | None):
             try:
                 number = float(value)
             except ValueError:
-                pass
+                if any(c.isdigit() for c in value):  # a number with a unit ("3 kn"): its SI number
+                    from ._units import to_si
+
+                    number = to_si(value, unit)
         if isinstance(number, bool) or not isinstance(number, (int, float)):
             raise ValueError(f"must be a number{shown_unit and ' in' + shown_unit}, got {value!r}."
                              + (hint or " Suggested fix: write a plain number in SI units."))
@@ -77,16 +81,59 @@ def _number_checker(unit: str, gt, ge, lt, le, fix: str | None):
     return check
 
 
+def _unit_schema(unit: str):
+    """The JSON schema of a field in ``unit``: a number in SI, or (with a dimension) a number with a unit as text."""
+    if unit in ("", "-", "1") or "^m" in unit:
+        return {"unit": unit}
+
+    def edit(schema: dict) -> None:
+        from ._units import UNIT_PATTERN
+
+        schema.pop("type", None)
+        schema["unit"] = unit
+        schema["anyOf"] = [{"type": "number"},
+                           {"type": "string", "pattern": UNIT_PATTERN,
+                            "description": f"a number and a unit convertible to {unit} (as '3 kn', '45 deg', '7500 kN')"}]
+
+    return edit
+
+
 def quantity(unit: str, *, gt: float | None = None, ge: float | None = None, lt: float | None = None,
              le: float | None = None, fix: str | None = None):
     """A float field in SI ``unit`` with bounds, checked with a house-style message.
 
     Use as a type: ``diameter: quantity("m", gt=0) = Field(description="... [m]")``.
-    Strings holding numbers (``"1e9"``, as YAML 1.1 reads them) are accepted; booleans,
-    NaN and infinities are not.
+    Strings holding numbers (``"1e9"``, as YAML 1.1 reads them) are accepted, and so are a
+    number with a unit (``"3 kn"``, ``"45 deg"``, ``"7500 kN"``), turned into ``unit`` by
+    :func:`seacable._units.to_si` (a unit of another dimension, an unknown or an ambiguous one is
+    an error naming the key); booleans, NaN and infinities are not.
     """
     return Annotated[float, BeforeValidator(_number_checker(unit, gt, ge, lt, le, fix)),
-                     Field(json_schema_extra={"unit": unit})]
+                     Field(json_schema_extra=_unit_schema(unit))]
+
+
+def _unit_converter(unit: str):
+    def convert(value: Any) -> Any:
+        if isinstance(value, str) and any(c.isdigit() for c in value):
+            try:
+                float(value)
+            except ValueError:
+                from ._units import to_si
+
+                return to_si(value, unit)
+        return value
+
+    return convert
+
+
+def unit_float(unit: str):
+    """A float in SI ``unit`` that also takes a number with a unit (``"120 m"``), for the items of vectors and tables.
+
+    Unlike :func:`quantity` it adds no check of its own: a plain number is validated as the field's ``float``
+    always was (so that a vector's own checks and messages stay), a number with a unit is turned into ``unit``
+    by :func:`seacable._units.to_si`. Use as an item type: ``fairlead: tuple[unit_float("m"), unit_float("m")]``.
+    """
+    return Annotated[float, BeforeValidator(_unit_converter(unit)), Field(json_schema_extra=_unit_schema(unit))]
 
 
 #: Values of discriminated-union tags; pydantic puts them in error locations, where they

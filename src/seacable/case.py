@@ -23,7 +23,7 @@ from typing import Annotated, Any, ClassVar, Literal, Union
 import numpy as np
 from pydantic import Field, model_serializer, model_validator
 
-from ._model import UNION_TAGS, Model, input_error, quantity, suggest
+from ._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
 from ._window import StatisticsWindow, omit_unset_window
 from .environment import Environment, _warn_if_degrees
 from .errors import InputError
@@ -69,7 +69,7 @@ __all__ = [
     "VerticalModesAnalysis",
 ]
 
-_XZ = tuple[float, float]
+_XZ = tuple[unit_float("m"), unit_float("m")]
 
 #: The environment's optional inputs (key paths under ``environment``) whose use depends on the analysis; each
 #: analysis declares those it takes (:meth:`uses`), and a case that gives one its analysis does not use is
@@ -118,7 +118,7 @@ class StaticAnalysis(_Moored):
 class _Offsets(Model):
     """Horizontal fairlead offsets of a force-excursion curve: a list, or a range."""
 
-    offsets: tuple[float, ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
+    offsets: tuple[unit_float("m"), ...] | None = Field(None, description="Horizontal fairlead offsets. [m]")
     min_offset: quantity("m") = Field(0.0, description="First offset when 'offsets' is not given. [m]")
     max_offset: quantity("m") | None = Field(None, description="Last offset when 'offsets' is not given. [m]")
     n_offsets: int = Field(41, ge=2, le=100_000, description="Number of offsets from min to max.")
@@ -224,8 +224,8 @@ class Winch(Model):
     ramp: quantity("s", ge=0) = Field(0.0, description="Time over which the rate builds up from 0 (and, with a "
                                                        "'length', falls back to 0 before it). [s]")
     length: quantity("m", gt=0) | None = Field(None, description="Deployed length at which the rate stops. [m]")
-    times: tuple[float, ...] | None = Field(None, description="Times of a length table. [s]")
-    lengths: tuple[float, ...] | None = Field(None, description="Deployed lengths at those times. [m]")
+    times: tuple[unit_float("s"), ...] | None = Field(None, description="Times of a length table. [s]")
+    lengths: tuple[unit_float("m"), ...] | None = Field(None, description="Deployed lengths at those times. [m]")
 
     @model_validator(mode="after")
     def _check(self):
@@ -361,7 +361,7 @@ class LayingTheoryAnalysis(Model):
 
     type: Literal["laying_theory"] = "laying_theory"
     USES: ClassVar[frozenset[str]] = frozenset({"depth"})
-    ship_speeds: tuple[float, ...] = Field(min_length=1, description="Ship speeds. [m/s]")
+    ship_speeds: tuple[unit_float("m/s"), ...] = Field(min_length=1, description="Ship speeds. [m/s]")
     bottom_tension: quantity("N", ge=0) = Field(0.0, description="Tension at the touchdown. [N]")
     slack: quantity("-", ge=-0.5, le=10.0) = Field(
         0.0, description="Payout speed over ship speed minus one. [-]")

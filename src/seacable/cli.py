@@ -367,6 +367,18 @@ def _cmd_animate(args) -> int:
     return 0
 
 
+def _cmd_view(args) -> int:
+    from .plot.view3d import view
+    from .results import check_output_file, read_netcdf
+
+    path = Path(args.result)
+    out = Path(args.output) if args.output else path.with_suffix(".html")
+    check_output_file(out, "-o", (".html", ".htm"))
+    view(read_netcdf(path), out, max_frames=args.max_frames, source=f"result file '{path}'")
+    print(f"wrote {out}")
+    return 0
+
+
 def _cmd_report(args) -> int:
     from .report import ReportOptions, make_report
 
@@ -545,6 +557,15 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-frames", type=_whole, default=200,
                    help="largest number of frames; output times are subsampled evenly (default 200)")
     p.set_defaults(func="_cmd_animate")
+
+    p = sub.add_parser("view", parents=[common],
+                       help="3-D interactive view of a result (a self-contained HTML page): the lines coloured by "
+                            "tension over the seabed, animated over time")
+    p.add_argument("result", help="result file (.nc) of a run with line shapes (static, pushover or time domain)")
+    p.add_argument("-o", "--output", help="the HTML page (.html); default RESULT.html beside the result")
+    p.add_argument("--max-frames", type=_whole, default=120,
+                   help="largest number of animation frames; output times are subsampled evenly (default 120)")
+    p.set_defaults(func="_cmd_view")
 
     p = sub.add_parser("report", parents=[common],
                        help="design report (HTML and CSV) of a mooring_dynamic or system_dynamic result or sweep: "

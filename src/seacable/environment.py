@@ -14,7 +14,7 @@ from typing import Literal
 import numpy as np
 from pydantic import Field, field_validator, model_validator
 
-from ._model import Model, input_error, quantity
+from ._model import Model, input_error, quantity, unit_float
 from .errors import SeacableWarning
 from .waves import MIN_WAVELENGTH, STANDARD_GRAVITY, check_sea_state
 
@@ -46,8 +46,8 @@ class Current(Model):
 
     speed: quantity("m/s") = Field(0.0, description="Uniform current speed. [m/s]")
     heading: quantity("rad") = Field(0.0, description="Direction the current flows towards. [rad]")
-    depths: tuple[float, ...] | None = Field(None, description="Profile depths below the surface. [m]")
-    speeds: tuple[float, ...] | None = Field(None, description="Profile speeds. [m/s]")
+    depths: tuple[unit_float("m"), ...] | None = Field(None, description="Profile depths below the surface. [m]")
+    speeds: tuple[unit_float("m/s"), ...] | None = Field(None, description="Profile speeds. [m/s]")
 
     @model_validator(mode="after")
     def _check(self) -> Current:
@@ -98,8 +98,8 @@ class SeabedProfile(Model):
     """Water depths at distances along X: the seabed's elevation is linear between the points and level beyond
     them, the same across Y."""
 
-    distance: tuple[float, ...] = Field(description="Distances along X, increasing. [m]")
-    depth: tuple[float, ...] = Field(description="Water depths there, > 0. [m]")
+    distance: tuple[unit_float("m"), ...] = Field(description="Distances along X, increasing. [m]")
+    depth: tuple[unit_float("m"), ...] = Field(description="Water depths there, > 0. [m]")
 
     @model_validator(mode="after")
     def _check(self):
@@ -227,7 +227,7 @@ class IrregularWaves(Model):
         None, description="cos-2s spreading exponent s; None: long-crested. [-]")
     seed: int = Field(0, ge=0, description="Random seed.")
     n_components: int = Field(200, ge=1, le=100000, description="Number of wave components.")
-    frequency_range: tuple[float, float] | None = Field(None, description="Component frequency band. [rad/s]")
+    frequency_range: tuple[unit_float("rad/s"), unit_float("rad/s")] | None = Field(None, description="Component frequency band. [rad/s]")
     stretching: Literal["none", "wheeler"] = Field(
         "none", description="Kinematics above z = 0: 'none' (constant) or 'wheeler' (Wheeler stretching).")
 

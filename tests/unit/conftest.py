@@ -133,12 +133,13 @@ def n_colours():
 CHROMIUM = "/usr/bin/chromium"
 
 
-def _start_chromium(page: Path, png: Path, profile: Path, size=(1280, 5000)) -> subprocess.Popen:
-    """Start headless Chromium on ``page``, to write its screenshot (:func:`_console` waits for it)."""
+def _start_chromium(page: Path, png: Path, profile: Path, size=(1280, 5000), extra=()) -> subprocess.Popen:
+    """Start headless Chromium on ``page``, to write its screenshot (:func:`_console` waits for it); ``extra``:
+    more command-line switches (a proxy that records the page's requests, a time budget for its scripts)."""
     cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
            "--disable-background-networking", "--disable-component-update", "--disable-sync",
            f"--user-data-dir={profile}", "--enable-logging=stderr", "--v=0", f"--screenshot={png}",
-           f"--window-size={size[0]},{size[1]}", page.resolve().as_uri()]
+           f"--window-size={size[0]},{size[1]}", *extra, page.resolve().as_uri()]
     return subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 

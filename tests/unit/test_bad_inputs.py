@@ -199,6 +199,8 @@ def _option_corpus() -> list[Bad]:
     for option in ("--fps", "--max-frames"):
         for value in ("0", "-3", "nan", "abc", "1.5", "inf"):
             out.append(Bad(f"animate{option}={value}", ["animate", "{nc_lay}", option, value], [option]))
+    for value in ("0", "-3", "nan", "abc", "1.5", "inf"):
+        out.append(Bad(f"view--max-frames={value}", ["view", "{nc_lay}", "--max-frames", value], ["--max-frames"]))
     for value in ("0", "-1", "nan", "1.5", "abc"):
         out.append(Bad(f"sweep--workers={value}", ["sweep", "{sweep}", "--workers", value], ["--workers"]))
     for value in ("not a scheduler", "http://host:8786", "tcp://host", "host:99999", "tcp://:8786", "", "tcp://a b:1"):
@@ -212,7 +214,7 @@ def _option_corpus() -> list[Bad]:
     out.append(Bad("sweep-workers-and-scheduler", ["sweep", "{sweep}", "--workers", "2", "--scheduler",
                                                   "synchronous"], ["workers"]))
     for command, target in (("run", STATIC), ("validate", STATIC), ("plot", "{nc_static}"), ("animate", "{nc_lay}"),
-                            ("sweep", "{sweep}")):
+                            ("sweep", "{sweep}"), ("view", "{nc_lay}")):
         out.append(Bad(f"{command}-unknown-option", [command, target, "--frobnicate"], ["--frobnicate"]))
     out.append(Bad("schema-unknown-option", ["schema", "--frobnicate"], ["--frobnicate"]))
     out.append(Bad("unknown-command", ["frobnicate"], ["frobnicate"]))
@@ -245,6 +247,9 @@ def _path_corpus() -> list[Bad]:
         Bad("animate-o-a-folder", ["animate", "{nc_lay}", "-o", "{dir}"], ["-o", "folder"]),
         Bad("animate-o-png", ["animate", "{nc_lay}", "-o", "{tmp}/a.png"], ["-o", ".gif"]),
         Bad("animate-o-inside-a-file", ["animate", "{nc_lay}", "-o", "{file}/a.gif"], ["-o", "is a file"]),
+        Bad("view-o-a-folder", ["view", "{nc_lay}", "-o", "{dir}"], ["-o", "folder"]),
+        Bad("view-o-png", ["view", "{nc_lay}", "-o", "{tmp}/a.png"], ["-o", ".html"]),
+        Bad("view-o-inside-a-file", ["view", "{nc_lay}", "-o", "{file}/a.html"], ["-o", "is a file"]),
         Bad("sweep-o-a-file", ["sweep", "{sweep}", "-o", "{file}"], ["-o"]),
         Bad("sweep-o-inside-a-file", ["sweep", "{sweep}", "-o", "{file}/out"], ["-o"]),
     ]
@@ -294,7 +299,7 @@ def _motion_corpus() -> list[Bad]:
 
 def _netcdf_corpus() -> list[Bad]:
     out = []
-    for command in ("plot", "animate"):
+    for command in ("plot", "animate", "view"):
         for kind in ("missing", "dir", "text", "empty", "no_analysis", "unknown_analysis", "truncated"):
             out.append(Bad(f"{command}-nc-{kind}", [command, "{nc_" + kind + "}"], ["{nc_" + kind + "}"]))
     for analysis, names in ANALYSIS_VARIABLES.items():
@@ -305,6 +310,10 @@ def _netcdf_corpus() -> list[Bad]:
                 out.append(Bad(f"animate-{analysis}-without-{name}",
                                ["animate", "{nc_" + analysis + "_no_" + name + "}"], [name, analysis]))
     out.append(Bad("animate-static-result", ["animate", "{nc_static}", "-o", "{tmp}/a.gif"], ["laying_dynamic"]))
+    # a result without a line shape: nothing to view
+    out.append(Bad("view-static-without-x", ["view", "{nc_static_no_x}", "-o", "{tmp}/v.html"], ["x", "static"]))
+    out.append(Bad("view-pushover-result", ["view", "{nc_pushover}", "-o", "{tmp}/v.html"],
+                   ["pushover", "no line shape"]))
     return out
 
 

@@ -22,7 +22,9 @@ import seacable
 
 ROOT = Path(seacable.__file__).parent
 EXAMPLES = ROOT.parents[1] / "examples"
-HEAVY = ("numba", "xarray", "pandas", "matplotlib", "dask", "scipy.optimize")
+#: pint (case files' units, issue 41) is loaded by the first unit a case file holds, not by plain numbers: its import
+#: brings Dask's base
+HEAVY = ("numba", "xarray", "pandas", "matplotlib", "dask", "scipy.optimize", "pint")
 
 
 def _loaded_after_each(codes: list[str]) -> list[set[str]]:

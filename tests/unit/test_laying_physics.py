@@ -46,7 +46,7 @@ def test_tangential_drag_lowers_the_ship_tension_of_a_steady_lay():
     top = float(np.mean(ds.top_tension.values[-20:]))
     assert top == pytest.approx(theory.top_tension, abs=5e-3 * W * DEPTH)
     # the tangential drag does not enter the normal balance: the angle is eq. (7)'s, to the transient's 1e-4 deg
-    assert float(ds.entry_angle[-1]) == pytest.approx(math.degrees(float(laying_angle(vs, W, D, CD, RHO))), abs=1e-4)
+    assert float(ds.entry_angle[-1]) == pytest.approx(float(laying_angle(vs, W, D, CD, RHO)), abs=math.radians(1e-4))
     assert float(np.max(ds.bottom_tension.values[-20:])) == 0.0
 
 

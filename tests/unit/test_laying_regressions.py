@@ -184,7 +184,7 @@ def test_ship_slowing_from_2_to_1_ms():
     assert_touchdown_from_geometry(ds)
     alpha = float(laying_angle(1.0, W, D, CD, RHO))
     # the straight lay is exact in the lumped model: the 1e-5 deg left is the decaying transient
-    assert float(ds.entry_angle[-1]) == pytest.approx(math.degrees(alpha), abs=1e-5)
+    assert float(ds.entry_angle[-1]) == pytest.approx(alpha, abs=math.radians(1e-5))
     # interpolated touchdown: the lowest free node hangs on a slack segment about 1 cm off the straight line,
     # 2 cm along the seabed at 26 deg; 0.1 m, where the last node landed was up to a landing spacing
     # (2 m / 1.05) behind

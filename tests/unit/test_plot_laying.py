@@ -94,7 +94,7 @@ def synthetic_lay(time, *, repeater=True, interrupted=0):
         "paid_out": var(t1, s_ship, "m", "cable paid out"),
         "top_tension": var(t1, np.full(time.size, H + W * DEPTH), "N", "top tension"),
         "bottom_tension": var(t1, np.full(time.size, H), "N", "bottom tension"),
-        "entry_angle": var(t1, np.full(time.size, 13.0), "degree", "entry angle"),
+        "entry_angle": var(t1, np.full(time.size, np.radians(13.0)), "rad", "entry angle"),
         "touchdown_x": var(t1, _touchdown_x(time), "m", "touchdown x"),
         "touchdown_z": var(t1, np.full(time.size, -DEPTH), "m", "touchdown z"),
         "slack": var(t1, slack, "1", "slack"),

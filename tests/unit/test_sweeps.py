@@ -264,7 +264,7 @@ def test_cli_sweep_exit_status_table_and_plot(tmp_path, capsys):
     out = tmp_path / "out"
     assert main(["sweep", str(spec), "-o", str(out), "--scheduler", "synchronous"]) == 1  # a case failed
     captured = capsys.readouterr()
-    assert "t_0002" in captured.out and "entry_angle_end [degree]" in captured.out
+    assert "t_0002" in captured.out and "entry_angle_end [rad]" in captured.out
     assert "case 1 (t_0001) failed: InputError" in captured.err
     assert "1 of 3 cases failed" in captured.err
     assert (out / "summary_sweep.png").exists()

@@ -236,7 +236,7 @@ def _newton_residuals(case, n=4, dt=0.1):
                    fe.kernel_args(), m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed, np.bool_(False),
                    sea, fe.node_fext, fe.con_node, fe.con_body, fe.con_arm, fe.con_target, active, *fe.body_args(), 1e-12,
                    F, M, tension, band, du, dq, out, Yt, np.zeros(nn, np.bool_), frame, np.zeros((nb, 3)),
-                   np.zeros((nb, 6)), np.zeros((nb, 6, 6)), water, np.bool_(True))
+                   np.zeros((nb, 6)), np.zeros((nb, 6, 6)), water, np.bool_(True), np.zeros((0, 3)), 0.0)
         res.append(out[0])
         DK._apply(X, q, du, dq, m.fidx, 1.0)
         DK.place_tied(X, q, fe.con_node, fe.con_body, fe.con_arm, fe.con_target, active, frame)

@@ -196,7 +196,7 @@ def test_a_depressors_lift_pulls_the_body_down_by_its_force_balance():
     drag = 0.5 * RHO * 0.5 * U**2
     lift = 0.5 * RHO * -0.6 * 1.2 * U**2
     assert float(winged.tension[0]) == pytest.approx(np.hypot(drag, 3000.0 - lift), rel=1e-12)
-    assert float(winged.angle[0]) == pytest.approx(np.degrees(np.arctan2(3000.0 - lift, drag)), rel=1e-12)
+    assert float(winged.angle[0]) == pytest.approx(np.arctan2(3000.0 - lift, drag), rel=1e-12)
     assert float(winged.lower_end_depth) > float(plain.lower_end_depth) + 10.0
 
 

@@ -15,7 +15,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from .._model import UNION_TAGS, Model, quantity
+from .._model import UNION_TAGS, Model, quantity, unit_float
 from ..errors import InputError
 
 __all__ = [
@@ -78,8 +78,8 @@ class ShipMotion(Model):
 
     speed: quantity("m/s", ge=0, fix="give the ship speed over ground, e.g. 2.0 m/s.") | None = Field(
         None, description="Constant ship speed. [m/s]")
-    times: tuple[float, ...] | None = Field(None, description="Times of the speed schedule. [s]")
-    speeds: tuple[float, ...] | None = Field(None, description="Speeds of the schedule. [m/s]")
+    times: tuple[unit_float("s"), ...] | None = Field(None, description="Times of the speed schedule. [s]")
+    speeds: tuple[unit_float("m/s"), ...] | None = Field(None, description="Speeds of the schedule. [m/s]")
     start_x: quantity("m") = Field(0.0, description="Water-entry x at t = 0 (its KP along a route). [m]")
     repeater_speed: quantity("m/s", ge=0) | None = Field(
         None, description="Ship speed while a repeater descends. [m/s]")
@@ -104,8 +104,8 @@ class PayoutRate(Model):
 
     type: Literal["rate"] = "rate"
     speed: quantity("m/s", ge=0) | None = Field(None, description="Constant payout speed. [m/s]")
-    times: tuple[float, ...] | None = Field(None, description="Times of the payout schedule. [s]")
-    speeds: tuple[float, ...] | None = Field(None, description="Payout speeds of the schedule. [m/s]")
+    times: tuple[unit_float("s"), ...] | None = Field(None, description="Times of the payout schedule. [s]")
+    speeds: tuple[unit_float("m/s"), ...] | None = Field(None, description="Payout speeds of the schedule. [m/s]")
 
     @model_validator(mode="after")
     def _check(self):
@@ -159,8 +159,8 @@ class Bathymetry(Model):
     Linear between the points, constant beyond the ends.
     """
 
-    distance: tuple[float, ...] | None = Field(None, description="Distances along the track. [m]")
-    depth: tuple[float, ...] | None = Field(None, description="Water depths at those distances. [m]")
+    distance: tuple[unit_float("m"), ...] | None = Field(None, description="Distances along the track. [m]")
+    depth: tuple[unit_float("m"), ...] | None = Field(None, description="Water depths at those distances. [m]")
     file: str | None = Field(None, description="CSV file with columns 'distance' and 'depth' (relative "
                                                "to the case file).")
 
@@ -229,8 +229,8 @@ class PlanShip(Model):
 
     speed: quantity("m/s", gt=0, fix="give the ship speed over ground, e.g. 1.5 m/s.") | None = Field(
         None, description="Constant ship speed. [m/s]")
-    kp: tuple[float, ...] | None = Field(None, description="Ship KPs of the speed table. [m]")
-    speeds: tuple[float, ...] | None = Field(None, description="Ship speeds of the table. [m/s]")
+    kp: tuple[unit_float("m"), ...] | None = Field(None, description="Ship KPs of the speed table. [m]")
+    speeds: tuple[unit_float("m/s"), ...] | None = Field(None, description="Ship speeds of the table. [m/s]")
     repeater_speed: quantity("m/s", gt=0, fix="a cable ship slows to about 0.3-0.8 m/s for a repeater.") | None = \
         Field(None, description="Ship speed while a repeater descends. [m/s]")
     acceleration: quantity("m/s^2", gt=0, fix="a cable ship changes speed at about 0.01-0.1 m/s^2.") = Field(
@@ -287,7 +287,7 @@ class LayTarget(Model):
 
     slack: float | tuple[float, ...] | None = Field(None, description="Target slack, >= 0. [-]")
     bottom_tension: float | tuple[float, ...] | None = Field(None, description="Target bottom tension. [N]")
-    kp: tuple[float, ...] | None = Field(None, description="KPs of a target table. [m]")
+    kp: tuple[unit_float("m"), ...] | None = Field(None, description="KPs of a target table. [m]")
 
     @model_validator(mode="after")
     def _check(self):

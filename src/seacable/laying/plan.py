@@ -361,7 +361,7 @@ def plan_lay(route, seabed, kp, *, scheduled_speed, slack=None, bottom_tension=N
         "layback_along": np.cos(psi) * (ship_xy - td_xy)[:, 0] + np.sin(psi) * (ship_xy - td_xy)[:, 1],
         "layback_across": -np.sin(psi) * (ship_xy - td_xy)[:, 0] + np.cos(psi) * (ship_xy - td_xy)[:, 1],
         "suspended_length": out[:, 2], "laid_length": s_td, "top_tension": out[:, 3],
-        "bottom_tension": t0.copy(), "entry_angle": np.degrees(out[:, 4]),
+        "bottom_tension": t0.copy(), "entry_angle": out[:, 4].copy(),
         "slack": (slack if not tension_mode else per_metre - 1.0),
         "route_slack": route_slack, "span_clearance": clearance, "span_speed": speed_eff, "turn_rate": omega,
     }

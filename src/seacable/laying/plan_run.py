@@ -37,7 +37,7 @@ LAY_TABLE_COLUMNS = (
     ("layback", "m", "layback: horizontal distance from the water entry to the touchdown"),
     ("top_tension", "N", "tension at the water entry"),
     ("bottom_tension", "N", "tension at the touchdown"),
-    ("entry_angle", "degree", "cable angle to the sea surface at the water entry"),
+    ("entry_angle", "rad", "cable angle to the sea surface at the water entry"),
     ("slack", "1", "laid length over the seabed distance, minus one"),
     ("route_slack", "1", "laid length per metre of route KP, minus one"),
     ("water_depth", "m", "water depth at the ship"),

@@ -262,7 +262,7 @@ def run_laying_dynamic(case: Case, progress=None):
         "paid_out": var(t1, s["paid_out"], "m", "cable paid out since t = 0"),
         "top_tension": var(t1, s["top_tension"], "N", "tension at the water entry"),
         "bottom_tension": var(t1, s["bottom_tension"], "N", "tension at the touchdown"),
-        "entry_angle": var(t1, s["entry_angle"], "degree", "cable angle to the sea surface at the water entry"),
+        "entry_angle": var(t1, s["entry_angle"], "rad", "cable angle to the sea surface at the water entry"),
         "touchdown_x": var(t1, res.touchdown[:, 0], "m", "touchdown x (interpolated between nodes)"),
         "touchdown_z": var(t1, res.touchdown[:, -1], "m", "touchdown elevation"),
         "layback": var(t1, s["layback"], "m", "layback: horizontal distance from the water entry to the touchdown"),

@@ -147,7 +147,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         # the horizontal distance, negative when the touchdown is ahead of the ship (in 2-D: x_ship - x_td)
         reach = ship_p[:-1] - p_td[:-1]
         layback = math.copysign(_length(reach), float(reach @ lay.heading()[0]))
-        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, math.degrees(angle), p_td[0],
+        values = (lay.x_ship, ctl.speed, lay.vc, lay.s_paid - lay.s_paid0, top, bottom, angle, p_td[0],
                   p_td[-1], layback, lay.slack(t, slack_window), lay.s_paid - s_td, s_td - lay.s_start)
         points.append((ship_p.copy(), p_td.copy()))
         for k, val in zip(_SERIES, values):

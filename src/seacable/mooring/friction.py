@@ -48,7 +48,7 @@ from .._model import Model, quantity
 from ..errors import ConvergenceError
 
 __all__ = ["SLIDE_FACTOR", "StaticFriction", "StaticFrictionOption", "friction_pushover", "friction_static",
-           "friction_targets", "slide_targets"]
+           "friction_targets", "load_steps", "slide_targets"]
 
 #: The smallest load step (a fraction of the load from the last equilibrium) the statics with friction take before
 #: they give up (:func:`friction_static`): 4^-3.
@@ -171,42 +171,63 @@ def _loaded(model, fraction: float):
     return MooringModel(model.network, dataclasses.replace(water, current_speeds=speeds), checked=True)
 
 
+def load_steps(solve, model, start, targets, settings, *, what: str, hint=None):
+    """Apply a load from the equilibrium ``start`` with friction targets ``targets`` in load steps: the whole load
+    first; a step that fails is cut to a quarter, down to :data:`SMALLEST_STEP`; after each, touched-down nodes take
+    their positions as targets and lifted-off ones lose theirs (:func:`slide_targets`; a slid node keeps its target:
+    one monotonic loading). The single line's statics and the system's finite-element statics share it.
+
+    ``solve(fraction, last, targets, max_iter)`` returns the equilibrium (with ``position`` (n, 3) [m] and
+    ``iterations``) under ``fraction`` of the load, started from ``last`` (``start`` or the last step's
+    equilibrium), or raises :class:`ConvergenceError`; ``model`` (a :class:`~seacable.mooring.solver.MooringModel`)
+    gives the seabed and the nodes for the targets; ``hint(fraction, last)`` says why a step may fail (appended to
+    the message). Returns the state, its targets and the iterations spent."""
+    done, step, spent, state, last = 0.0, 1.0, 0, None, start
+    while state is None or done < 1.0:
+        nxt = min(1.0, done + step)
+        try:
+            state = solve(nxt, last, targets, 500 if step == 1.0 else CUT_STEP_ITERATIONS)
+        except ConvergenceError as err:
+            if step <= SMALLEST_STEP:
+                # why, from the last equilibrium (the failed step's last state wanders)
+                said = hint(nxt, last) if done > 0.0 and hint is not None else ""
+                raise ConvergenceError(
+                    f"{what}, applied in load steps down to {step:.3g} of it, did not converge beyond {done:.3g} of "
+                    f"the load.{said if said not in str(err) else ''} The last step: {err}",
+                    iterations=spent + (err.iterations or 0), residual=err.residual) from None
+            step *= 0.25
+            continue
+        spent += state.iterations
+        done, last = nxt, state
+        targets = slide_targets(model, state.position, targets, settings.friction_distance, follow=False)
+        step = min(4.0 * step, 1.0)
+    return state, targets, spent
+
+
 def _load_path(model, X, targets, settings, tol, *, to, current_from: float, what: str):
     """From the equilibrium ``X`` with friction targets ``targets`` to ``model``'s: the prescribed nodes moved from
     their places in ``X`` to ``to``, the current from ``current_from`` of its speeds to all of them, in load steps
-    (the whole load first; a step that fails is cut to a quarter, down to :data:`SMALLEST_STEP`); after each,
-    touched-down nodes take their positions as targets and lifted-off ones lose theirs (:func:`slide_targets`; a slid
-    node keeps its target: one monotonic loading). Returns the state, its targets and the iterations spent."""
+    (:func:`load_steps`). Returns the state, its targets and the iterations spent."""
+    from types import SimpleNamespace
+
     from .checks import seabed_hold_hint
     from .network import PRESCRIBED
     from .solver import static_equilibrium
 
     moving = model.network.kind == PRESCRIBED
-    start = X[moving].copy()
-    done, step, spent, state = 0.0, 1.0, 0, None
-    while state is None or done < 1.0:
-        nxt = min(1.0, done + step)
-        stepped = _loaded(model, current_from + nxt * (1.0 - current_from))
-        Y = X.copy()
-        Y[moving] = start + nxt * (to - start)
-        try:
-            state = static_equilibrium(stepped, Y, tol=tol, targets=targets, max_iter=500 if step == 1.0 else
-                                       CUT_STEP_ITERATIONS, friction_distance=settings.friction_distance)
-        except ConvergenceError as err:
-            if step <= SMALLEST_STEP:
-                # why, from the last equilibrium (the failed step's last state wanders)
-                hint = seabed_hold_hint(stepped, X, True) if done > 0.0 else ""
-                raise ConvergenceError(
-                    f"{what}, applied in load steps down to {step:.3g} of it, did not converge beyond {done:.3g} of "
-                    f"the load.{hint if hint not in str(err) else ''} The last step: {err}",
-                    iterations=spent + (err.iterations or 0), residual=err.residual) from None
-            step *= 0.25
-            continue
-        spent += state.iterations
-        done, X = nxt, state.position
-        targets = slide_targets(model, X, targets, settings.friction_distance, follow=False)
-        step = min(4.0 * step, 1.0)
-    return state, targets, spent
+    begin = X[moving].copy()
+
+    def stepped(fraction):
+        return _loaded(model, current_from + fraction * (1.0 - current_from))
+
+    def solve(fraction, last, targets, max_iter):
+        Y = last.position.copy()
+        Y[moving] = begin + fraction * (to - begin)
+        return static_equilibrium(stepped(fraction), Y, tol=tol, targets=targets, max_iter=max_iter,
+                                  friction_distance=settings.friction_distance)
+
+    return load_steps(solve, model, SimpleNamespace(position=X), targets, settings, what=what,
+                      hint=lambda fraction, last: seabed_hold_hint(stepped(fraction), last.position, True))
 
 
 def _as_laid(model, tol):

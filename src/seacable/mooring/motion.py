@@ -19,7 +19,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from .._model import UNION_TAGS, Model, quantity
+from .._model import UNION_TAGS, Model, quantity, unit_float
 from .._ramp import smooth_ramp
 from .._text import read_text_file
 from ..errors import InputError, SeacableWarning
@@ -27,8 +27,10 @@ from ..errors import InputError, SeacableWarning
 __all__ = ["HarmonicMotion", "Motion", "PlatformMotion", "RAOMotion", "SeaRAOMotion", "TimeSeriesMotion", "bind",
            "forcing_period", "rotation_matrix", "sea_of"]
 
-_XYZ = tuple[float, float, float]
-_SIX = tuple[float, float, float, float, float, float]
+_XYZ = tuple[unit_float("m"), unit_float("m"), unit_float("m")]
+#: x, y, z [m], roll, pitch, yaw [rad]
+_SIX = tuple[unit_float("m"), unit_float("m"), unit_float("m"), unit_float("rad"), unit_float("rad"), unit_float("rad")]
+_PHASES = tuple[(unit_float("rad"),) * 6]
 
 
 def _ramped(off, doff, ddoff, times, T):
@@ -163,7 +165,7 @@ class PlatformMotion(Model):
     type: Literal["platform"] = "platform"
     reference: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of rotation at rest. [m]")
     amplitude: _SIX | None = Field(None, description="Harmonic amplitudes [m, m, m, rad, rad, rad].")
-    phase: _SIX = Field((0.0,) * 6, description="Phases of the six motions. [rad]")
+    phase: _PHASES = Field((0.0,) * 6, description="Phases of the six motions. [rad]")
     period: quantity("s", gt=0) | None = Field(None, description="Period of the harmonic motion. [s]")
     file: str | None = Field(None, description="CSV of the six motions, relative to the case file.")
     ramp: quantity("s", ge=0) = Field(0.0, description="Duration of the smooth start. [s]")

@@ -19,6 +19,12 @@ def _label(da) -> str:
     return f"{name} [{units}]" if units and units != "1" else str(name)
 
 
+def _degrees(da):
+    """An angle variable's values in degrees, for a figure: results hold angles in rad (older files: degree)."""
+    values = np.asarray(da, dtype=float)
+    return values if da.attrs.get("units", "rad") in ("degree", "deg") else np.degrees(values)
+
+
 def _nice_step(target: float) -> float:
     """The 'round' number (1, 2, 2.5 or 5 times a power of ten) nearest ``target`` in ratio."""
     exp = np.floor(np.log10(target))

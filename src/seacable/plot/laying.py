@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._core import _finite_xz, _interrupted_note, _label, _snapshot_times, animation_writer
+from ._core import _degrees, _finite_xz, _interrupted_note, _label, _snapshot_times, animation_writer
 
 __all__ = ["animate_laying"]
 
@@ -188,8 +188,8 @@ def _laying_dynamic(ds, plt):
     ax2.plot(time, ds.slack * (1.0 if in_percent else 100.0), mark, color="C2", label="slack")
     ax2.set_ylabel("slack [%]")
     twin = ax2.twinx()
-    twin.plot(time, ds.entry_angle, mark, color="C4", label="entry angle")
-    twin.set_ylabel(_label(ds.entry_angle))
+    twin.plot(time, _degrees(ds.entry_angle), mark, color="C4", label="entry angle")
+    twin.set_ylabel(f"{ds.entry_angle.attrs.get('long_name', 'entry angle')} [deg]")
     lines = ax2.get_lines() + twin.get_lines()
     ax2.legend(lines, [ln.get_label() for ln in lines], fontsize=8)
     ax3.plot(time, ds.ship_speed, mark, label="ship")
@@ -427,7 +427,7 @@ def _lay_plan(ds, plt):
     ax.plot(kp, ds.bottom_tension / scale, label="bottom (touchdown)")
     ax.set_ylabel(f"tension [{unit}]")
     twin = ax.twinx()
-    twin.plot(kp, ds.entry_angle, "C4--", lw=1, label="entry angle")
+    twin.plot(kp, _degrees(ds.entry_angle), "C4--", lw=1, label="entry angle")
     twin.set_ylabel("entry angle [deg]")      # (the variable's long name runs into the panel above)
     lines = ax.get_lines() + twin.get_lines()
     ax.legend(lines, [ln.get_label() for ln in lines], fontsize=7)

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._core import _label
+from ._core import _degrees, _label
 
 
 def _static(ds, plt):
@@ -71,8 +71,8 @@ def _towed(ds, plt):
 
 def _laying(ds, plt):
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    ax1.plot(ds.ship_speed, ds.angle, "o-", label="exact root")
-    ax1.plot(ds.ship_speed, ds.angle_small, "x--", label="small angle H/V")
+    ax1.plot(ds.ship_speed, _degrees(ds.angle), "o-", label="exact root")
+    ax1.plot(ds.ship_speed, _degrees(ds.angle_small), "x--", label="small angle H/V")
     ax1.set(xlabel=_label(ds.ship_speed), ylabel="entry angle [deg]", title="Laying angle", ylim=(0, 90))
     ax1.legend()
     ax2.plot(ds.ship_speed, ds.layback, "o-")

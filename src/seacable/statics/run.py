@@ -271,12 +271,12 @@ def run_towed_steady(case: Case):
         "x": var("node", res.x, "m", "position relative to the tow point, positive astern"),
         "z": var("node", res.z, "m", "elevation relative to the tow point"),
         "tension": var("node", res.tension, "N", "effective tension"),
-        "angle": var("node", np.degrees(res.angle), "degree", "cable angle to the horizontal"),
+        "angle": var("node", res.angle, "rad", "cable angle to the horizontal"),
         "top_tension": var((), res.top_tension, "N", "tension at the tow point"),
         "top_angle": var((), res.top_angle, "rad", "cable angle below the horizontal at the tow point"),
         "layback": var((), res.layback, "m", "layback of the lower end"),
         "lower_end_depth": var((), res.depth_of_lower_end, "m", "depth of the lower end below the tow point"),
-        "critical_angle": var((), math.degrees(res.critical_angle), "degree", "critical angle of the lowest segment"),
+        "critical_angle": var((), res.critical_angle, "rad", "critical angle of the lowest segment"),
         "relative_speed": var((), speed if np.ndim(speed) == 0 else float(np.interp(0.0, *speed)), "m s-1",
                               "flow speed relative to the cable (at the tow point's depth with a current profile)"),
         "point_layback": var("point", res.x[at], "m",
@@ -318,8 +318,8 @@ def run_laying_theory(case: Case):
     a: LayingTheoryAnalysis = case.analysis
     speeds, exact, small = solve_laying_theory(case)
     data = {
-        "angle": var("ship_speed", np.degrees(exact.angle), "degree", "entry angle (exact root)"),
-        "angle_small": var("ship_speed", np.degrees(small.angle), "degree", "entry angle (H/V small-angle)"),
+        "angle": var("ship_speed", exact.angle, "rad", "entry angle (exact root)"),
+        "angle_small": var("ship_speed", small.angle, "rad", "entry angle (H/V small-angle)"),
         "layback": var("ship_speed", exact.layback, "m", "layback ship to touchdown"),
         "suspended_length": var("ship_speed", exact.suspended_length, "m", "suspended cable length"),
         "top_tension": var("ship_speed", exact.top_tension, "N", "tension at the ship"),

@@ -563,7 +563,15 @@ def _parameter_units(case, parts) -> str:
     return "1" if unit == "-" else unit
 
 
-def _column(values) -> np.ndarray:
+def _column(values, unit: str = "") -> np.ndarray:
+    if unit and any(isinstance(v, str) for v in values):
+        # numbers with units ("3 kn") as the cases read them: the column in the field's SI unit
+        from .._units import UnitProblem, to_si
+
+        try:
+            values = [to_si(v, unit) if isinstance(v, str) else v for v in values]
+        except (UnitProblem, ValueError):
+            pass
     if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
         return np.array(values, float)
     return np.array([v if isinstance(v, str) else json.dumps(v) for v in values], dtype=object)
@@ -583,8 +591,8 @@ def summary_dataset(sweep_: Sweep, records: dict[int, dict], reused=frozenset())
     coords = {"case": var("case", np.arange(n), "1", "case index"),
               "name": var("case", np.array([c.name for c in cases], dtype=object), "1", "case name")}
     for k, path in enumerate(sweep_.parameters):
-        coords[path] = var("case", _column([c.values[k] for c in cases]),
-                           _parameter_units(first, parse_path(path)), path)
+        unit = _parameter_units(first, parse_path(path))
+        coords[path] = var("case", _column([c.values[k] for c in cases], unit), unit, path)
     get = [records.get(c.index) for c in cases]
 
     def text(key, join=""):

@@ -39,11 +39,12 @@ from typing import Annotated, Any, ClassVar, Literal, Union
 import numpy as np
 from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
-from .._model import UNION_TAGS, Model, input_error, quantity, suggest
+from .._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import STAND_IN, LineType
+from ..mooring.friction import StaticFriction, StaticFrictionOption
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from .._window import StatisticsWindow, omit_unset_window
 from ..ties import tie_points
@@ -54,7 +55,17 @@ __all__ = ["SYSTEM_ANALYSES", "ExternalForceSeries", "LineFailure", "SystemAnaly
            "is_system_data"]
 
 
-class _Solve(Model):
+def _omit_defaults(data):
+    """A dumped analysis without 'design' when None and 'static_friction' when the default: the cases without them
+    read as they did before they existed."""
+    if isinstance(data, dict) and data.get("design", 0) is None:
+        del data["design"]
+    if isinstance(data, dict) and data.get("static_friction", 0) == StaticFriction().model_dump():
+        del data["static_friction"]
+    return data
+
+
+class _Solve(StaticFrictionOption):
     """Options of the system equilibrium shared by the system analyses."""
 
     damaged_lines: tuple[str, ...] | Literal["most_loaded"] = Field(
@@ -75,8 +86,17 @@ class _Solve(Model):
                             "'auto' takes the catenaries unless a current, a sloping seabed or a wind needs the "
                             "finite elements.")
 
+    @model_serializer(mode="wrap")
+    def _omit_unset_design(self, handler):
+        return _omit_defaults(handler(self))
+
     @model_validator(mode="after")
     def _damaged(self):
+        if self.static_friction.pushover_path != "as_laid":
+            raise ValueError(f"static_friction.pushover_path: '{self.static_friction.pushover_path}' applies to a "
+                             "single line's mooring_pushover; a system's loads are applied from the as-laid state, "
+                             "each heading's in increasing order from the last (one monotonic loading). Suggested "
+                             "fix: drop static_friction.pushover_path.")
         d = self.damaged_lines
         if not isinstance(d, str) and len(set(d)) != len(d):
             raise ValueError(f"damaged_lines names a line twice: {list(d)}. Suggested fix: name each once.")
@@ -97,10 +117,7 @@ class _Designed(Model):
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
         # 'design' appears in a dumped case only when given: the cases without it read as they did before it existed
-        data = handler(self)
-        if isinstance(data, dict) and data.get("design", 0) is None:
-            del data["design"]
-        return omit_unset_window(data)
+        return omit_unset_window(_omit_defaults(handler(self)))
 
 
 class SystemStaticAnalysis(_Designed, _Solve):
@@ -126,8 +143,8 @@ class SystemOffsetsAnalysis(_Solve):
     type: Literal["system_offsets"] = "system_offsets"
     USES: ClassVar[frozenset[str]] = SystemStaticAnalysis.USES
     body: str = Field(min_length=1, description="The free body the load acts on.")
-    loads: tuple[float, ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
-    headings: tuple[float, ...] | None = Field(None, min_length=1,
+    loads: tuple[unit_float("N"), ...] = Field(min_length=1, description="Load magnitudes, increasing, >= 0. [N]")
+    headings: tuple[unit_float("rad"), ...] | None = Field(None, min_length=1,
                                                description="Load headings from +x towards +y. [rad]")
     n_headings: int = Field(12, ge=1, le=3600, description="Headings over the circle when 'headings' is not given.")
 

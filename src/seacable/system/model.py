@@ -24,14 +24,17 @@ from typing import Literal
 import numpy as np
 from pydantic import Field, field_validator, model_serializer, model_validator
 
-from .._model import Model, quantity, suggest
+from .._model import Model, quantity, suggest, unit_float
 from ..line import Line
 from ..mooring.ends import EndCondition
 
 __all__ = ["Body", "BodyCurrent", "BodyHydrodynamics", "BodyWind", "MooringSystem", "SystemLine", "SystemPoint", "bodies_without_lines"]
 
-_XYZ = tuple[float, float, float]
+_XYZ = tuple[unit_float("m"), unit_float("m"), unit_float("m")]
 _SIX = tuple[float, float, float, float, float, float]
+#: x, y, z [m], roll, pitch, yaw [rad]
+_POSE = tuple[unit_float("m"), unit_float("m"), unit_float("m"), unit_float("rad"), unit_float("rad"), unit_float("rad")]
+_FORCE = tuple[(unit_float("N"),) * 3]
 _MATRIX6 = tuple[_SIX, _SIX, _SIX, _SIX, _SIX, _SIX]
 
 
@@ -73,7 +76,7 @@ class SystemPoint(Model):
     body: str | None = Field(None, description="The body a 'kind: body' point is fixed on.")
     mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air at the point. [kg]")
     volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume at the point. [m^3]")
-    external_force: _XYZ = Field((0.0, 0.0, 0.0), description="Constant external force. [N]")
+    external_force: _FORCE = Field((0.0, 0.0, 0.0), description="Constant external force. [N]")
     drag_area: quantity("m^2", ge=0) = Field(0.0, description="C_D A for the dynamics. [m^2]")
     added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass for the dynamics. [kg]")
 
@@ -241,11 +244,11 @@ class Body(Model):
 
     kind: Literal["free", "fixed", "prescribed", "coupled"] = Field(
         "free", description="free, fixed or prescribed ('coupled', moved by a coupled code, is read as prescribed).")
-    position: _SIX = Field((0.0,) * 6, description="x, y, z [m], roll, pitch, yaw [rad].")
+    position: _POSE = Field((0.0,) * 6, description="x, y, z [m], roll, pitch, yaw [rad].")
     mass: quantity("kg", ge=0, fix="give the body's mass in air in kg.") = Field(
         0.0, description="Mass in air. [kg]")
     center_of_gravity: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of gravity, body axes. [m]")
-    inertia: _XYZ = Field((0.0, 0.0, 0.0), description="Ixx, Iyy, Izz about the centre of gravity. [kg m^2]")
+    inertia: tuple[float, float, float] = Field((0.0, 0.0, 0.0), description="Ixx, Iyy, Izz about the centre of gravity. [kg m^2]")
     volume: quantity("m^3", ge=0) = Field(0.0, description="Displaced volume. [m^3]")
     center_of_buoyancy: _XYZ = Field((0.0, 0.0, 0.0), description="Centre of buoyancy, body axes. [m]")
     waterplane_area: quantity("m^2", ge=0) = Field(0.0, description="Waterplane area. [m^2]")

@@ -231,19 +231,19 @@ def _check_condition(case, system: MooringSystem, removed, mode: str):
     where = "" if removed is None else f"damaged condition (analysis.damaged_lines {list(removed)} removed): "
     check_bodies_without_lines(system, where)
     if mode == "finite_element":
-        _fe_checks(system, case.environment, where)
+        _fe_checks(system, case.environment, where, getattr(case.analysis, "static_friction", None))
         return None
     return _start_checks(system, case.environment, where, case.analysis.max_strain)
 
 
-def _fe_checks(system: MooringSystem, environment, where: str) -> None:
+def _fe_checks(system: MooringSystem, environment, where: str, friction=None) -> None:
     """The finite-element statics' checks without solving: what they cannot model (a pinned body), and the
     finite-element system's geometry (line ends below the seabed, lines that cannot reach: as the dynamics)."""
     from .dynamics import build_system_fe
     from .statics.fe import check_fe
 
     try:
-        check_fe(system, environment, where)
+        check_fe(system, environment, where, friction)
         build_system_fe(system, environment, None)
     except InputError as err:
         raise type(err)(f"{where}{err}" if where and not str(err).startswith(where) else str(err)) from None
@@ -367,7 +367,8 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
                     last = label == steps[-1][0]
                     eq = fe_equilibrium(system, case.environment, external=external, tol=a.tolerance,
                                         max_iter=max(a.max_iterations, 1000), initial=eq,
-                                        stiffness=stiffness and last)
+                                        stiffness=stiffness and last,
+                                        friction=getattr(a, "static_friction", None))
                 else:
                     eq = solve_equilibrium(system, case.environment, external=external, tol=a.tolerance,
                                            max_iter=a.max_iterations, initial=eq, max_strain=a.max_strain,
@@ -376,8 +377,9 @@ def _solve_path(case: SystemCase, system: MooringSystem, steps, initial, where: 
             residual = getattr(err, "residual", None)
             done = f" (the step before, {last_label}, converged)" if last_label else ""
             said = str(err).split(" Suggested fix:")[0].rstrip(". ")
+            own = f"{err.fix}; else " if getattr(err, "fix", None) else ""  # the solver's own, for what it found
             message = (f"{where}: no equilibrium found at {label}{done}: {said}{_offsets_text(system, eq)}. "
-                       f"Suggested fix: {fix}.")
+                       f"Suggested fix: {own}{fix}.")
             if isinstance(err, ConvergenceError):
                 raise ConvergenceError(message, iterations=getattr(err, "iterations", None),
                                        residual=residual) from None

@@ -60,7 +60,7 @@ from typing import Annotated, Any, Literal, Union
 import numpy as np
 from pydantic import Field, TypeAdapter, ValidationError, model_validator
 
-from .._model import UNION_TAGS, Model, _problems, input_error, quantity
+from .._model import UNION_TAGS, Model, _problems, input_error, quantity, unit_float
 from .._ramp import smooth_ramp
 from .._validate import finite
 from ..environment import _warn_if_degrees
@@ -69,7 +69,7 @@ from ..errors import InputError
 __all__ = ["StraightPath", "SpeedSchedule", "TurnPath", "ZigZagPath", "TablePath", "VESSEL_PATHS",
            "VesselPath", "initial_heading", "parse_vessel_path", "sample_path"]
 
-_XY = tuple[float, float]
+_XY = tuple[unit_float("m"), unit_float("m")]
 
 #: A turn rate above this looks like degrees per second (0.5 rad/s = 29 deg/s). [rad/s]
 _RATE_LOOKS_LIKE_DEGREES = 0.5
@@ -157,8 +157,8 @@ class SpeedSchedule(_Headed):
     """
 
     type: Literal["speed_schedule"] = "speed_schedule"
-    times: tuple[float, ...] = Field(min_length=1, description="Times of the table points. [s]")
-    speeds: tuple[float, ...] = Field(min_length=1, description="Speeds at those times. [m/s]")
+    times: tuple[unit_float("s"), ...] = Field(min_length=1, description="Times of the table points. [s]")
+    speeds: tuple[unit_float("m/s"), ...] = Field(min_length=1, description="Speeds at those times. [m/s]")
 
     @model_validator(mode="after")
     def _table(self):

@@ -37,6 +37,7 @@ from ...mooring.kernel import (
     GRID_HEADER,
     _force_tolerance,
     commit_viscoelastic,
+    friction_loads,
     loads_water,
     n_water,
     predict_nodes,
@@ -95,7 +96,7 @@ def _angle_rows(E, m):
 def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed,
             with_waves, sea, node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs, badd, blin,
             bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0, water,
-            fresh):
+            fresh, targets, dfric):
     """Assemble at the current state and solve one Newton correction ``du`` (3 per band node) and ``dq``
     (6 per body). Returns False when the matrix is singular. ``jac`` False: the residual only (``out``), no
     Newton matrix and no correction. ``with_waves`` and ``sea``: the waves on the lines, the regular wave of ``env``
@@ -115,6 +116,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     ``bmem`` (nb, 6) and ``bk0`` (nb, 6, 6): each body's radiation memory (Cummins), the force of its velocities
     before this step and the matrix of the current one's share (``dt K_0 / 2``): the force ``-bmem - bk0 u``
     (global axes, ``u`` the reference point's velocity and the angular velocity); zeros without memory.
+    ``targets`` (n, 3) and ``dfric`` [m]: the statics' seabed friction towards the nodes' friction targets
+    (:func:`seacable.mooring.kernel.friction_loads`; no rows: none, as in the dynamics).
     """
     (elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, pmass, padd, pvol, pcda, bedc, buoy, pbuoy,
      ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, clamps) = args
@@ -130,6 +133,7 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat, weight, pmass, padd, pvol, pcda,
                 bedc, buoy, pbuoy, ts_lo, ts_hi, ts_x, ts_y, hinges, hinge_ei, visco, fidx, env, cur_depth, cur_speed,
                 with_waves, sea, F, M, tension, bnd, bw, cm, cc, water, fresh)
+    friction_loads(X, targets, bedc, env, fidx, F, bnd, bw, dfric)
     for i in range(n):
         for r in range(3):
             F[i, r] += node_fext[i, r]
@@ -644,7 +648,8 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
                 solved = iterate(X, V, A, q, qd, qdd, t, c0, c0, c1, np.bool_(True), it > 0, jac, args, weight, fidx, nfree, bw,
                                  env, cur_depth, cur_speed, with_waves, sea, node_fext, con_node, con_body, con_arm,
                                  con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M,
-                                 tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0, water, fresh)
+                                 tension, band, du, dq, out, Yt, tied, frame, spin, bmem, bk0, water, fresh,
+                                 np.zeros((0, 3)), 0.0)
                 if jac or out[0] <= out[1] or not (out[0] < res_prev):
                     break
             res, scale = out[0], out[1]
@@ -702,7 +707,7 @@ def coupled_steps(X, V, A, q, qd, qdd, t0, dt, px, pv, pa, channel, args, weight
 @njit(cache=True)
 def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_speed, node_fext, con_node, con_body,
                    con_arm, con_target, con_active, bpar, bkhs, badd, blin, bquad, ext_t, ext_f, ext_n, tol, max_iter,
-                   max_step, body_scale, F, M, tension, stats, frame, spin):
+                   max_step, body_scale, F, M, tension, stats, frame, spin, targets, dfric):
     """Static equilibrium of the lines and bodies by pseudo-transient Newton, ``(K + lam M) dx = -R``.
 
     The bodies' mass matrices in ``M`` are scaled by ``body_scale`` (a node's mass over a body's), so
@@ -713,7 +718,8 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
     and 0.1 rad of rotation (the turn about a body's free ``spin`` axis left out, see :func:`iterate`). A
     body whose |pitch| exceeds ``CHART_LIMIT`` after an iteration is re-charted (``frame``, in place, as in
     :func:`coupled_steps`). Returns True when converged; ``stats`` receives (iterations, residual, absolute
-    force tolerance [N]).
+    force tolerance [N]). ``targets`` (n, 3), ``dfric`` [m]: the seabed's static friction (:func:`iterate`; no rows:
+    frictionless).
     """
     nb = q.shape[0]
     nd = 3 * nfree
@@ -745,7 +751,7 @@ def coupled_static(X, q, args, weight, fidx, nfree, bw, env, cur_depth, cur_spee
         solved = iterate(X, V, A, q, qd, qdd, 0.0, lam, lam * body_scale, 0.0, np.bool_(False), np.bool_(True), np.bool_(True), args, weight, fidx, nfree, bw, env, cur_depth,
                          cur_speed, np.bool_(False), np.zeros(GRID_HEADER), node_fext, con_node, con_body, con_arm, con_target, con_active, bpar, bkhs,
                          badd, blin, bquad, ext_t, ext_f, ext_n, tol, F, M, tension, band, du, dq, out, Yt, tied, frame,
-                         spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)), water, np.bool_(True))
+                         spin, np.zeros((nb, 6)), np.zeros((nb, 6, 6)), water, np.bool_(True), targets, dfric)
         res, scale = out[0], out[1]
         stats[0] = it
         stats[1] = res

@@ -58,9 +58,11 @@ class SystemState:
 
 
 def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: float = 1e-9,
-                  max_iter: int = 1000) -> SystemState:
+                  max_iter: int = 1000, targets=None, friction_distance: float = 1e-3) -> SystemState:
     """Static equilibrium of the finite-element system, bodies included (``held``: free bodies held at ``q``,
-    default their given positions). Raises :class:`ConvergenceError` with the residual."""
+    default their given positions). ``targets`` (n, 3): the nodes' friction targets of the seabed's static
+    friction, ``friction_distance`` its slip distance [m] (:mod:`seacable.mooring.friction`; None: frictionless).
+    Raises :class:`ConvergenceError` with the residual."""
     m = fe.model
     net = m.network
     X = np.array(net.position if X is None else X, float)
@@ -95,7 +97,8 @@ def static_system(fe: SystemFE, *, held: bool = False, q=None, X=None, tol: floa
     spin = (fe.spin if fe.spin is not None else np.zeros((len(qs), 3))) if len(qs) else np.zeros((0, 3))
     ok = DK.coupled_static(X, qs, args, m.weight, m.fidx, m.nfree, m.bw, m.env, m.cur_depth, m.cur_speed,
                            fe.node_fext, fe.con_node, con_body, fe.con_arm, con_target, active, *bargs, tol, max_iter,
-                           step, body_scale, F, M, tension, stats, frame, spin)
+                           step, body_scale, F, M, tension, stats, frame, spin,
+                           np.zeros((0, 3)) if targets is None else np.asarray(targets, float), float(friction_distance))
     qs = _global_pose(qs, frame)
     if not ok:
         qtxt = "" if not len(qs) else f"; the bodies ended at {np.array2string(qs, precision=4)}"
