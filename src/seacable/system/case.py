@@ -40,13 +40,13 @@ import numpy as np
 from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
+from .._window import StatisticsWindow, omit_unset_window
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
 from ..line import STAND_IN, LineType
 from ..mooring.friction import StaticFriction, StaticFrictionOption
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
-from .._window import StatisticsWindow, omit_unset_window
 from ..ties import tie_points
 from .model import Body, MooringSystem, SystemLine, SystemPoint
 
