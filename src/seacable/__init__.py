@@ -69,6 +69,7 @@ if TYPE_CHECKING:
     from .line import Line, LineType, PointMass, Segment
     from .mooring.motion import HarmonicMotion, PlatformMotion, RAOMotion, TimeSeriesMotion
     from .results import read_netcdf, write_netcdf
+    from .run_summary import summary
     from .simulate import check, run
     from .sweeps import Range, Sweep, load_sweep, sweep
     from .system.case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
@@ -131,6 +132,7 @@ __all__ = [
     "run",
     "read_netcdf",
     "write_netcdf",
+    "summary",
     # sweeps
     "Sweep",
     "Range",
@@ -167,6 +169,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
     ".mooring.motion": ("HarmonicMotion", "PlatformMotion", "RAOMotion", "TimeSeriesMotion"),
     ".plot.view3d": ("view",),
     ".results": ("read_netcdf", "write_netcdf"),
+    ".run_summary": ("summary",),
     ".simulate": ("check", "run"),
     ".sweeps": ("Range", "Sweep", "load_sweep", "sweep"),
     ".system.case": ("SystemCase", "SystemOffsetsAnalysis", "SystemStaticAnalysis"),

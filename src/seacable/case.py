@@ -24,6 +24,7 @@ import numpy as np
 from pydantic import Field, model_serializer, model_validator
 
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
+from ._window import StatisticsWindow, omit_unset_window
 from .environment import Environment, _warn_if_degrees
 from .errors import InputError
 from .laying.bathymetry import BathymetryGrid
@@ -287,7 +288,7 @@ class Winch(Model):
                              "shorter ramp or a smaller rate.")
 
 
-class TowedDynamicAnalysis(Model):
+class TowedDynamicAnalysis(StatisticsWindow):
     """Time-domain dynamics of a towed system behind a vessel path.
 
     ``formulation``: ``finite_element`` (the default) is the mooring model's (paper 004: lumped masses on
@@ -373,7 +374,7 @@ class LayingTheoryAnalysis(Model):
         return self
 
 
-class LayingDynamicAnalysis(Model):
+class LayingDynamicAnalysis(StatisticsWindow):
     """Time-domain laying from a moving ship: paper 001's lumped-mass model with payout, in 2-D or along a route
     in 3-D.
 
@@ -675,7 +676,7 @@ class _Mooring(_Moored):
             del data["compression"]
         if isinstance(data, dict) and data.get("static_friction", 0) == StaticFriction().model_dump():
             del data["static_friction"]  # and the default static friction: a case without it reads as before
-        return data
+        return omit_unset_window(data)
 
 
 class MooringStaticAnalysis(StaticFrictionOption, _Mooring):
@@ -700,7 +701,7 @@ class MooringPushoverAnalysis(StaticFrictionOption, _Offsets, _Mooring):
         return self
 
 
-class MooringDynamicAnalysis(_Mooring):
+class MooringDynamicAnalysis(_Mooring, StatisticsWindow):
     """Time-domain response of the line to fairlead motion, current and waves (paper 004).
 
     Truss finite elements, lumped and added mass, Morison loads, seabed contact, the generalised-alpha
@@ -750,7 +751,7 @@ class MooringDynamicAnalysis(_Mooring):
         return self
 
 
-class TowlineDynamicAnalysis(Model):
+class TowlineDynamicAnalysis(StatisticsWindow):
     """A tug towing a barge on the towline: the multibody model of paper 003.
 
     The line is ``n_elements`` rigid elements joined by spring-dampers; its axial stiffness is the

@@ -40,12 +40,29 @@ def _show_warning(message, category, filename, lineno, file=None, line=None):
         print(warnings.formatwarning(message, category, filename, lineno, line), file=sys.stderr, end="")
 
 
-class _Progress:
-    """Progress line on stderr for time-domain runs, at most once a second."""
+def _is_tty(stream) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):  # closed or not a file
+        return False
 
-    def __init__(self, every: float = 1.0):
-        self.every = every
+
+class _Progress:
+    """Progress of a time-domain run on stderr.
+
+    On a terminal: one line rewritten in place (carriage returns), at most once a second. Written to a file
+    or a pipe (a batch job's log): one whole line per update, at most every ``pipe_step`` of the run (10 %) or
+    every ``pipe_every`` seconds, whichever comes first, so that a log reads line by line and stays short.
+    """
+
+    def __init__(self, every: float = 1.0, pipe_every: float = 10.0, pipe_step: float = 0.1, tty: bool | None = None,
+                 quiet: bool = False):
+        self.tty = _is_tty(sys.stderr) if tty is None else tty
+        self.every = every if self.tty else pipe_every
+        self.step = pipe_step
         self.last = None
+        self.shown = 0.0    # the fraction of the run last shown (pipe)
+        self.quiet = quiet  # --quiet: nothing shown (the end of the computation still noted)
 
     def __call__(self, t: float, duration: float) -> None:
         import time
@@ -56,10 +73,14 @@ class _Progress:
             self.last = now
         if done:
             _computation_done()
-        if done or now - self.last >= self.every:
-            self.last = now
-            end = "\n" if done else "\r"
-            print(f"seacable: t = {t:.6g} s of {duration:.6g} s ({100 * t / duration:.0f} %)",
+        fraction = t / duration
+        if self.quiet:
+            return
+        due = now - self.last >= self.every or (not self.tty and fraction - self.shown >= self.step - 1e-12)
+        if done or due:
+            self.last, self.shown = now, fraction
+            end = "\n" if done or not self.tty else "\r"
+            print(f"seacable: t = {t:.6g} s of {duration:.6g} s ({100 * fraction:.0f} %)",
                   file=sys.stderr, end=end, flush=True)
 
 
@@ -114,22 +135,23 @@ def _cmd_run(args) -> int:
         case = load_case(args.case)
     out = _result_path(args, case.name)
     _check_run_paths(args, out)
+    say = (lambda text: None) if args.quiet else print   # --quiet: nothing on stdout
     _GUARD.update(armed=True, holding=False, held=[])
     try:
         streamed = streams(case)  # a long mooring run writes its outputs into the file as it goes
-        ds = run(case, progress=_Progress(), out=out if streamed else None)
+        ds = run(case, progress=_Progress(quiet=args.quiet), out=out if streamed else None)
         _computation_done()
         path = out if streamed else write_netcdf(ds, out)
-        print(f"wrote {path}")
+        say(f"wrote {path}")
         if ds.attrs.get("analysis") == "lay_plan":      # the lay table, as the ship's crew reads it
             from .laying.plan_run import write_lay_table, write_repeater_table
 
             table = path.with_name(f"{path.stem}_lay_table.csv")
             write_lay_table(ds, table)
-            print(f"wrote {table}")
+            say(f"wrote {table}")
             events = path.with_name(f"{path.stem}_repeaters.csv")
             if write_repeater_table(ds, events):
-                print(f"wrote {events}")
+                say(f"wrote {events}")
     finally:
         _GUARD.update(armed=False, holding=False)
     if _GUARD["held"]:
@@ -140,11 +162,15 @@ def _cmd_run(args) -> int:
 
         try:
             for png in plot_result(ds, args.plot_dir or path.parent, prefix=path.stem):
-                print(f"wrote {png}")
+                say(f"wrote {png}")
         except KeyboardInterrupt:
             print(f"seacable: interrupted while plotting; {path} holds the whole result. Suggested fix: "
                   f"'seacable plot {path}' makes the figures.", file=sys.stderr)
             return EXIT_INTERRUPTED
+    if not args.quiet and not ds.attrs.get("interrupted"):   # the figures an engineer reads first
+        from .run_summary import summary
+
+        print(summary(ds))
     if ds.attrs.get("interrupted"):
         if "time" in ds and ds["time"].size:
             print(f"seacable: interrupted at t = {float(ds['time'].values[-1]):g} s; {path} holds the result up "
@@ -157,33 +183,41 @@ def _cmd_run(args) -> int:
 
 
 class _SweepProgress:
-    """Progress line of a sweep on stderr (at most once a second), and each failure as it comes."""
+    """Progress line of a sweep on stderr, and each failure as it comes: on a terminal one line rewritten in
+    place at most once a second; to a file or a pipe one whole line per update, at most every 10 % of the cases
+    or every 10 s (as :class:`_Progress`)."""
 
-    def __init__(self, every: float = 1.0):
-        self.every = every
+    def __init__(self, every: float = 1.0, pipe_every: float = 10.0, pipe_step: float = 0.1, tty: bool | None = None):
+        self.tty = _is_tty(sys.stderr) if tty is None else tty
+        self.every = every if self.tty else pipe_every
+        self.step = pipe_step
         self.last = None
+        self.shown = 0.0
 
     def __call__(self, p) -> None:
         import time
 
         r = p.record
+        nl = "\n" if self.tty else ""   # ends the line being rewritten on a terminal
         if r is not None and r["status"] == "failed":
             first = r["error"].splitlines()[0] if r["error"] else "failed"
-            print(f"\nseacable: case {r['index']} ({r['name']}) failed: {first}", file=sys.stderr)
+            print(f"{nl}seacable: case {r['index']} ({r['name']}) failed: {first}", file=sys.stderr)
         if r is not None:
             for w in r["warnings"]:
-                print(f"\nseacable: case {r['index']} ({r['name']}): warning: {w}", file=sys.stderr)
+                print(f"{nl}seacable: case {r['index']} ({r['name']}): warning: {w}", file=sys.stderr)
         now = time.monotonic()
         done = p.done == p.total
-        if self.last is not None and not done and now - self.last < self.every:
+        fraction = p.done / p.total if p.total else 1.0
+        step_due = not self.tty and fraction - self.shown >= self.step - 1e-12
+        if self.last is not None and not done and now - self.last < self.every and not step_due:
             return
-        self.last = now
+        self.last, self.shown = now, fraction
         left = p.remaining_time
         eta = f", about {left:.0f} s left" if math.isfinite(left) and not done else ""
         extra = "".join([f", {p.failed} failed" if p.failed else "",
                          f", {p.reused} from an earlier run" if p.reused else ""])
         print(f"seacable: sweep {p.done} of {p.total} cases{extra}; {p.elapsed:.0f} s{eta}",
-              file=sys.stderr, end="\n" if done else "\r", flush=True)
+              file=sys.stderr, end="\n" if done or not self.tty else "\r", flush=True)
 
 
 def _print_summary(summary) -> None:
@@ -484,6 +518,8 @@ def build_parser() -> argparse.ArgumentParser:
                         "default; 0.7-0.9 damps the ringing of stiff modes at a coarse step)")
     p.add_argument("--plot-dir", help="folder for the PNG plots; default beside the result")
     p.add_argument("--no-plots", action="store_true", help="write the result only")
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on stdout (no 'wrote' lines, no summary) "
+                                                              "and no progress; warnings and errors still on stderr")
     _add_limits(p)
     p.set_defaults(func="_cmd_run")
 

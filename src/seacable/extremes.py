@@ -5,7 +5,8 @@ summary keeps per case: maximum and minimum top tension, maximum and minimum ten
 (a minimum of 0 or less is slack), snap loads, every scalar of the result (fairlead tension,
 touchdown, layback, ...) and the model's own figures (laying: touchdown, bottom tension, layback,
 entry angle; towline: barge tension; mooring: anchor tension). Values at the end of a
-time-domain run are means over its last tenth, the steady state of a case that settles.
+time-domain run are means over its last tenth, the steady state of a case that settles; the extremes of a
+time-domain run leave out its start-up transient (``analysis.statistics_from``, :mod:`seacable._window`).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ import numpy as np
 import xarray as xr
 
 from ._jit import njit
+from ._window import statistics_start, statistics_window
 from .results import var
 
 __all__ = ["KEY_FIGURES", "TOP_TENSION", "case_extremes", "snap_loads", "snap_rows"]
@@ -136,9 +138,12 @@ def case_extremes(ds: xr.Dataset) -> dict[str, xr.Variable]:
         model's own figures: ``NAME_max`` and ``NAME_min`` of its key time series and ``NAME_end``,
         their mean over the last tenth of the run (``layback_end``: the water entry or tow point to
         the touchdown or lower end; ``seabed_clearance_min``: the deepest a line went through a
-        seabed its model does not contact).
+        seabed its model does not contact). The extremes of a time-domain result are taken from
+        ``analysis.statistics_from`` on (:func:`seacable._window.statistics_window`; the output times
+        before it, a start-up transient, left out), and ``statistics_from`` is one of the figures.
     """
     analysis = ds.attrs.get("analysis")
+    full, ds = ds, statistics_window(ds)  # the start-up transient left out (analysis.statistics_from)
     out: dict[str, xr.Variable] = {}
     top = TOP_TENSION.get(analysis)
     if top in ds:
@@ -165,9 +170,11 @@ def case_extremes(ds: xr.Dataset) -> dict[str, xr.Variable]:
         if name in ds:
             out[f"{name}_max"] = _scalar(ds[name].max(), ds[name], "maximum of")
             out[f"{name}_min"] = _scalar(ds[name].min(), ds[name], "minimum of")
-    for name in series.get("end", ()):
+    for name in series.get("end", ()):   # the last tenth of the whole run, whatever the window
         if name in ds:
-            out[f"{name}_end"] = _scalar(_end_mean(ds[name]), ds[name], "end of run:")
+            out[f"{name}_end"] = _scalar(_end_mean(full[name]), ds[name], "end of run:")
+    if "time" in ds.dims:
+        out["statistics_from"] = var((), statistics_start(ds), "s", "start of the statistics window")
     if analysis == "modal" and "frequency" in ds:
         out["frequency_min"] = _scalar(ds["frequency"].min(), ds["frequency"], "lowest")
     return out

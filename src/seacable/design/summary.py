@@ -40,6 +40,7 @@ import xarray as xr
 import yaml
 
 from .._model import load_yaml
+from .._window import statistics_window
 from ..errors import InputError
 from ..results import check_time
 from . import combination, fatigue, statistics
@@ -414,7 +415,6 @@ def failed_lines(ds: xr.Dataset) -> dict[str, float]:
             out.setdefault(str(f["line"]), float(f.get("time", 0.0) or 0.0))
     return out
 
-
 def _duration(ds: xr.Dataset) -> float:
     t = np.asarray(ds["time"].values, float)
     return float(t[-1] - t[0]) if t.size > 1 else 0.0
@@ -461,8 +461,8 @@ def seed_table(runs: Sequence[Run], *, storm_duration: float | None = None, quan
 
 
 def _seed_rows(run: Run, ds: xr.Dataset, storm_duration: float | None, quantile: float) -> list[dict]:
-    """The rows of :func:`seed_table` of one run, ``ds`` its result."""
-    rows = []
+    """The rows of :func:`seed_table` of one run, ``ds`` its result, over its statistics window."""
+    rows, ds = [], statistics_window(ds)  # the start-up transient left out (analysis.statistics_from)
     duration = _duration(ds)
     time = np.asarray(ds["time"].values, float)
     for line in line_names(ds):

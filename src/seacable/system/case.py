@@ -40,6 +40,7 @@ import numpy as np
 from pydantic import Discriminator, Field, Tag, model_serializer, model_validator
 
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
+from .._window import StatisticsWindow, omit_unset_window
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment
 from ..errors import InputError
@@ -116,7 +117,7 @@ class _Designed(Model):
     @model_serializer(mode="wrap")
     def _omit_unset_design(self, handler):
         # 'design' appears in a dumped case only when given: the cases without it read as they did before it existed
-        return _omit_defaults(handler(self))
+        return omit_unset_window(_omit_defaults(handler(self)))
 
 
 class SystemStaticAnalysis(_Designed, _Solve):
@@ -284,7 +285,7 @@ class UncoupledRoute(Model):
         return self
 
 
-class SystemDynamicAnalysis(_Designed):
+class SystemDynamicAnalysis(_Designed, StatisticsWindow):
     """Time-domain response of a mooring system: finite-element lines coupled with rigid bodies.
 
     Free bodies move under their loads and the lines' (added mass, damping, hydrostatics, external force
