@@ -31,7 +31,7 @@ import numpy as np
 from .._jit import njit
 from ._band import _add_block
 from ._indices import E_BEDRAMP, E_BEDTAB, E_DEPTH, E_KBOT, E_MU, E_SLOPE
-from ._seabed import penetration
+from ._seabed import penetration, rounded_depth
 
 __all__ = ["friction_loads"]
 
@@ -67,12 +67,7 @@ def friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric):
         pen = penetration(env, X[i, 0], X[i, 2], profile, depth, nrm)  # the normal too, on a profile
         if pen <= -dl:
             continue  # off the seabed: no normal force, no friction
-        if pen < dl:
-            q = (pen + dl) ** 2 / (4.0 * dl)
-            dq = (pen + dl) / (2.0 * dl)
-        else:
-            q = pen
-            dq = 1.0
+        q, dq = rounded_depth(pen, dl)
         fn = kb * bedc[i] * q
         # the displacement from the target in the seabed's plane
         r0, r1, r2 = X[i, 0] - targets[i, 0], X[i, 1] - targets[i, 1], X[i, 2] - targets[i, 2]

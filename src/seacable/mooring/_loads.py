@@ -19,7 +19,7 @@ from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_
 from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_COMPRESS, E_DEPTH, E_DRAGTURN,
                        E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
                        E_WH, P_CDA, P_CDA_AXIAL, P_CLA, P_TX, V_EAD, V_WC)
-from ._seabed import penetration
+from ._seabed import penetration, rounded_depth
 from ._ties import tie_loads
 from ._water import (_drag_tangent, _drag_turn, _dry_fraction, _fluid, _point_drag_split, _surface, _water_local,
                      point_lift)
@@ -343,12 +343,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 # so that Newton does not cycle at lift-off); the damper engages as r = q / (q + dl), or with
                 # ``bedfull`` (MoorDyn's rule: c_b in full on every penetrating node) as the spring's slope
                 # r = dq: c_b in full once pen >= dl, where the spring is k pen, rounded with it below
-                if pen < dl:
-                    q = (pen + dl) ** 2 / (4.0 * dl)
-                    dq = (pen + dl) / (2.0 * dl)
-                else:
-                    q = pen
-                    dq = 1.0
+                q, dq = rounded_depth(pen, dl)
                 # the node's velocity over the seabed (which moves at -frame in a moving frame)
                 g0, g1, g2 = V[i, 0] + env[E_FRAMEX], V[i, 1] + env[E_FRAMEY], V[i, 2] + env[E_FRAMEZ]
                 vn = nrm[0] * g0 + nrm[1] * g1 + nrm[2] * g2

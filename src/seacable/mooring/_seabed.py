@@ -49,3 +49,13 @@ def penetration(env, x, z, profile, depth, nrm):
         nrm[0], nrm[2] = -slope * cs, cs
         return (zb - z) * cs
     return -(nrm[0] * x + nrm[2] * (z + depth))
+
+
+@njit(cache=True)
+def rounded_depth(pen, dl):
+    """The penalty contact's depth ``q`` and its slope ``dq/dpen`` at penetration ``pen`` [m]: ``pen`` beyond the ramp
+    ``dl``, rounded quadratically to ``(pen + dl)^2 / (4 dl)`` over ``|pen| < dl`` (a continuous stiffness, so that
+    Newton does not cycle at lift-off); the caller has ``pen > -dl``."""
+    if pen < dl:
+        return (pen + dl) ** 2 / (4.0 * dl), (pen + dl) / (2.0 * dl)
+    return pen, 1.0
