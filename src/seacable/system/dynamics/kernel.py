@@ -367,24 +367,15 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
         s = 0.0
         for a in range(rows[i], last[nt3 + i] + 1):
             s += w[a] * z0[a]
-        ri = i if i < nc3 else -1
-        if i >= nc3:  # a free node's row: into the rows of the tied rows it belongs to, with -1
-            for k in range(nc3):
-                if prow[k] == i:
-                    ri = k
-        sgn_i = 1.0 if i < nc3 else -1.0
+        ri, sgn_i = _tied_row(i, nc3, prow)  # a free node's row: into the tied row it belongs to, with -1
         rhs[ri] += sgn_i * s
         for c in range(nt3):
             v = Yt[c]
             s = 0.0
             for a in range(max(rows[i], rows[c]), min(last[nt3 + i], last[c]) + 1):
                 s += w[a] * v[a]
-            rc = c if c < nc3 else -1
-            if c >= nc3:
-                for k in range(nc3):
-                    if prow[k] == c:
-                        rc = k
-            Sm[ri, rc] += sgn_i * (1.0 if c < nc3 else -1.0) * s
+            rc, sgn_c = _tied_row(c, nc3, prow)
+            Sm[ri, rc] += sgn_i * sgn_c * s
     # S mu + T dq = C y0 and -T^T mu + Jq dq = -Rq, T = [I, -skew(arm)], dq[3:] a rotation vector
     k = 0
     for j in range(con_node.size):
@@ -418,12 +409,8 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
     # du = U^-1 (z0 - sum_k (v_k - v_pk) mu_k)
     for c in range(nt3):
         v = Yt[c]
-        if c < nc3:
-            mu = rhs[c]
-        else:
-            for k in range(nc3):
-                if prow[k] == c:
-                    mu = -rhs[k]
+        rc, sgn_c = _tied_row(c, nc3, prow)
+        mu = sgn_c * rhs[rc]
         for a in range(rows[c], last[c] + 1):
             du[a] -= v[a] * mu
     for a in range(nw3):  # the neighbours' share of the bodies' turn: du -= J^-1 P_w^T Bw dphi
@@ -449,6 +436,19 @@ def iterate(X, V, A, q, qd, qdd, t, cm, cmb, cc, dynamic, check, jac, args, weig
                 d[r] -= s * arm[r]
         _angle_increment(q[b], d, frame[b])
     return True
+
+
+@njit(cache=True)
+def _tied_row(i, nc3, prow):
+    """The constraint row of unknown ``i`` and its sign: a tied row (``i < nc3``) its own, +1; a free node's row the
+    tied row it belongs to (``prow[k] == i``), -1 (-1 and -1 when it belongs to none)."""
+    if i < nc3:
+        return i, 1.0
+    r = -1
+    for k in range(nc3):
+        if prow[k] == i:
+            r = k
+    return r, -1.0
 
 
 @njit(cache=True)
@@ -490,12 +490,7 @@ def _clamp_schur(band, bw, kind, Yt, base, rows, last, nt3, nc3, prow, wrow, wk3
     # the constraint rows (the tied rows and their free nodes', as iterate maps them) on the rotations
     for i in range(nt3):
         w = Yt[nt3 + i]
-        ri = i
-        if i >= nc3:
-            for k in range(nc3):
-                if prow[k] == i:
-                    ri = k
-        sgn_i = 1.0 if i < nc3 else -1.0
+        ri, sgn_i = _tied_row(i, nc3, prow)
         for a in range(nw3):
             G = _dot(w, Yt[base + a], max(rows[i], wk3[a]), min(last[nt3 + i], lastw[a]))
             c = wcl[a]
@@ -513,12 +508,7 @@ def _clamp_schur(band, bw, kind, Yt, base, rows, last, nt3, nc3, prow, wrow, wk3
             rhs[nc3 + 6 * b + 3 + p] -= cBm[c, p, r] * s
         for k in range(nt3):
             G = _dot(w, Yt[k], max(wk3[a], rows[k]), min(lastw[nw3 + a], last[k]))
-            rk = k
-            if k >= nc3:
-                for kk in range(nc3):
-                    if prow[kk] == k:
-                        rk = kk
-            sgn = 1.0 if k < nc3 else -1.0
+            rk, sgn = _tied_row(k, nc3, prow)
             for p in range(3):
                 Sm[nc3 + 6 * b + 3 + p, rk] -= cBm[c, p, r] * sgn * G
         for a2 in range(nw3):
