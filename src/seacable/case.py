@@ -852,6 +852,10 @@ class Case(Model):
         """A copy with some fields changed, validated again; new ``line_types`` reach the line's segments."""
         return super().replace(**retyped_changes(self, changes))
 
+    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False) -> Case:
+        """Pydantic's copy (``update`` not validated), with new ``line_types`` reaching the line(s) as in :meth:`replace`."""
+        return super().model_copy(update=retyped_changes(self, update) if update else update, deep=deep)
+
     @model_validator(mode="before")
     @classmethod
     def _resolve_line_types(cls, data: Any) -> Any:

@@ -1,6 +1,6 @@
-"""A case changed in code (``replace``, ``model_copy(update=...)``) is validated again, and new line types reach
-its line: a line holds its line types, not their names, so a copy that changed only ``line_types`` used to run the
-old line (a silent wrong answer)."""
+"""A case changed in code (``replace``, ``model_copy(update=...)``): new line types reach its line(s). A line holds its
+line types, not their names, so a copy that changed only ``line_types`` used to run the old line (a silent wrong
+answer)."""
 
 import pytest
 
@@ -39,10 +39,3 @@ def test_a_system_copy_with_new_line_types_reaches_every_line():
 def test_a_copy_that_drops_a_used_line_type_is_refused_by_name():
     with pytest.raises(InputError, match=r"lines\.line1\.segments\[0\] uses line type 'chain'.*Suggested fix"):
         sc.load_case(SYSTEM).replace(line_types={})
-
-
-def test_model_copy_with_an_update_validates_it():
-    # pydantic's own model_copy(update=...) would keep a negative length
-    seg = sc.load_case(LINE).line.segments[0]
-    with pytest.raises(InputError, match="length"):
-        seg.model_copy(update={"length": -5.0})
