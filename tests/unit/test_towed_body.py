@@ -124,3 +124,35 @@ def test_bad_per_axis_values_are_clear_errors(field, value, words):
         TowedBody(mass=10.0, **{field: value})
     for word in words:
         assert word in str(err.value)
+
+
+@pytest.mark.parametrize("body", ["{mass: 200, drag_area: [0.3, 0.8]}", "{mass: 200, added_mass: [20, -80, 100]}"])
+def test_validate_rejects_a_bad_body_as_run_does(tmp_path, capsys, body):
+    """A towed case with a body of two drag areas, or a negative added mass, fails validate and run alike
+    (exit code 2, the key and the fix in one message, no traceback)."""
+    from pathlib import Path
+
+    from seacable.cli import main
+
+    text = (Path(__file__).resolve().parents[2] / "examples" / "paper000_turn.yaml").read_text()
+    case = tmp_path / "body.yaml"
+    case.write_text(text + f"  body: {body}\n")
+    assert main(["validate", str(case)]) == 2
+    out, err = capsys.readouterr()
+    assert "analysis.body" in err and "Suggested fix" in err and "Traceback" not in err and ": valid" not in out
+    assert main(["run", str(case), "-o", str(tmp_path / "r.nc")]) == 2
+    assert "analysis.body" in capsys.readouterr().err
+
+
+def test_a_per_axis_body_in_a_case_file_runs_and_validates(tmp_path, capsys):
+    """The same case with [along, across, vertical] values (one with a unit) validates."""
+    from pathlib import Path
+
+    from seacable.cli import main
+
+    text = (Path(__file__).resolve().parents[2] / "examples" / "paper000_turn.yaml").read_text()
+    case = tmp_path / "body.yaml"
+    case.write_text(text + "  body: {mass: 200, weight_in_water: 500, drag_area: [0.3, '0.8 m^2', 0.5], "
+                           "added_mass: [20, 80, 100]}\n")
+    assert main(["validate", str(case)]) == 0
+    assert ": valid" in capsys.readouterr().out
