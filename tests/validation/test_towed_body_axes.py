@@ -66,7 +66,7 @@ def test_a_sled_paid_out_vertically_feels_its_vertical_drag_only():
     assert got_axes - got_iso == pytest.approx(0.5 * RHO * (0.33 - 0.1), abs=0.5)
 
 
-TOWFISH = dict(mass=300.0, weight_in_water=2000.0)
+TOWFISH = {"mass": 300.0, "weight_in_water": 2000.0}
 
 
 def test_the_steady_tow_balances_the_bodys_along_drag_and_weight():

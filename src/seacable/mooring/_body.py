@@ -17,7 +17,7 @@ import math
 
 from .._jit import njit
 
-__all__ = ["body_axes", "body_drag", "body_drag_turn", "body_added_mass"]
+__all__ = ["body_added_mass", "body_axes", "body_drag", "body_drag_turn"]
 
 
 @njit(cache=True)

@@ -76,7 +76,7 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
 
     ``n_nodes`` sets the element length ``L / (n_nodes - 1)`` (a node also at every segment joint and
     attachment); ``body`` (:class:`seacable.case.TowedBody`) adds its mass, added mass, weight, drag and lift
-    at node 0. ``tangential_drag``: ``"common"`` (the kernel's ``1/2 rho C_dt pi d |u_t| u_t``) or
+    at node 0 (a drag or added mass per axis of the body through the kernel's ``E_BODY`` slots of ``env``). ``tangential_drag``: ``"common"`` (the kernel's ``1/2 rho C_dt pi d |u_t| u_t``) or
     ``"diameter"`` (C_dt referred to the diameter: divided by pi).
     """
     L = float(line.length)

@@ -10,7 +10,10 @@ Lower end (node 0), paper 000 eq. (14): a free end has ``T = S_n = S_b = Om_n = 
 9-10). A towed body of mass ``M`` and added mass ``M_a`` with weight in water ``W`` and drag area
 ``C_D A`` obeys, in the global frame and centred in time like the box scheme,
 ``(M + M_a) (v^{i+1} - v^i)/dt = 1/2 (F^{i+1} + F^i)`` with
-``F = T t + S_n n + S_b b - W Z - 1/2 rho C_D A |v - U| (v - U)`` and ``Om_n = Om_b = 0`` (pinned).
+``F = T t + S_n n + S_b b - W Z - 1/2 rho C_D A |v - U| (v - U)`` and ``Om_n = Om_b = 0`` (pinned). A body
+with drag or added mass per axis of the body (:mod:`seacable.mooring._body`: along the horizontal projection of the
+tangent t, across it, vertical) has ``sum_k 1/2 rho (C_D A)_k |w_k| w_k e_k`` (w = U - v) for its drag and
+``M + sum_k m_k e_k e_k^T`` (the axes at the new step) for its inertia; its Jacobian holds the axes' turn with phi.
 Vessel end (node n-1), eq. (15): the cable velocity equals the vessel's, ``(v_t, v_n, v_b) =
 (t.V, n.V, b.V)``, and ``Om_n = Om_b = 0``.
 """
@@ -22,6 +25,7 @@ import math
 import numpy as np
 
 from .._jit import copy_1d, copy_2d, njit
+from ..mooring._body import body_axes, body_drag, body_drag_turn
 from .equations import (
     I_OB,
     I_ON,
@@ -42,7 +46,6 @@ from .equations import (
     g_terms,
     integrate_positions,
 )
-from ..mooring._body import body_axes, body_drag, body_drag_turn
 from .lapack import solve_banded, solve_dense
 from .linalg import block_thomas, block_tridiagonal_workspace
 
