@@ -5,10 +5,11 @@ The body's axes
 A towed body in seacable has no attitude of its own (no rotational degrees of freedom): its axes are those a
 towfish or sled keeps in tow, set by its fins and its bridle,
 
-* ``vertical``: the global Z axis (up). The body stays level, as WHOI Cable takes its towed terminal body: its
-  drag is resolved on the vertical, with the drag coefficient along its axis (``Cdt``), and on the horizontal
-  (``Cdn``), each with its own quadratic law (Gobat & Grosenbaugh 2000; ``solver/dynamic_2d.c`` of WHOI Cable,
-  where the terminal buoy's vertical drag is ``Mdr Cdt / Cdn``);
+* ``vertical``: the global Z axis (up). The body stays level, as WHOI Cable takes the body at the lower end of
+  a towing or deployment problem: its drag is resolved on the global vertical, with the coefficient along the
+  body's axis (``Cdt``), and on the horizontal (``Cdn``), each with its own quadratic law ``bdr |U_r| U_r``
+  (Gobat & Grosenbaugh 2000; WHOI Cable's ``solver/dynamic_2d.c``, whose bottom boundary takes a terminal buoy's
+  vertical drag ``Mdr Cdt / Cdn`` and horizontal drag ``Mdr``, and a lowered anchor's ``Cdt`` and ``Cdn``);
 * ``along``: horizontal, along the towing cable's direction at the body projected on the horizontal, towards the
   tow point: the bridle holds the body's nose to its tow (when the cable is vertical at the body that direction
   is undefined and ``along`` falls back to +X; no horizontal flow acts on such a body in the cases that reach it,
