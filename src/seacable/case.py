@@ -31,12 +31,13 @@ from .laying.bathymetry import BathymetryGrid
 from .laying.inputs import (Bathymetry, LayTableFile, LayTarget, Payout, PayoutBottomTension, PayoutSlack,
                              PlanShip, ShipMotion, read_lay_table)
 from .laying.route import Route
-from .line import STAND_IN, Lifting, Line, LineType, resolve_sections, retyped_changes
+from .line import STAND_IN, Line, LineType, resolve_sections, retyped_changes
 from .mooring.ends import EndCondition
 from .mooring.friction import StaticFriction, StaticFrictionOption
 from .mooring.motion import Motion
 from .statics.towed import TangentialDragForm
 from .ties import tie_points
+from .towed.body import TowedBody
 from .towed.vessel import VesselPath
 from .towline.barge_model import Barge
 
@@ -155,19 +156,6 @@ class ModalAnalysis(_Moored):
             raise ValueError("'anchor' is not used with 'free_end: true' (end A hangs free below the "
                              "fairlead). Suggested fix: leave 'anchor' out, or set 'free_end: false'.")
         return self
-
-
-class TowedBody(Lifting):
-    """A body at the lower end of a towed cable: its weight, drag and (a depressor's, a towfish's wing) lift
-    ``1/2 rho C_L A U^2``, positive up (a depressor's is negative), at the flow speed U past it."""
-
-    weight_in_water: quantity("N") = Field(0.0, description="Net weight in water (negative floats). [N]")
-    drag_area: quantity("m^2", ge=0) = Field(0.0, description="Drag coefficient times frontal area. [m^2]")
-    mass: quantity("kg", ge=0) = Field(0.0, description="Mass in air; needed (> 0) by towed_dynamic. [kg]")
-    added_mass: quantity("kg", ge=0) = Field(0.0, description="Added mass (isotropic). [kg]")
-    seabed_area: quantity("m^2", ge=0) = Field(
-        1.0, description="Area the body bears on the seabed with (towed_dynamic, finite_element): its contact "
-                         "force is seabed_contact.stiffness times this times its penetration. [m^2]")
 
 
 class TowedSteadyAnalysis(Model):

@@ -106,9 +106,10 @@ def test_the_newton_matrix_is_the_derivative_of_the_forces(which, atol):
     np.testing.assert_allclose(got, want, rtol=0, atol=atol)
 
 
-def _towed_state():
+def _towed_state(drag_area=0.4, added_mass=0.0):
     """A towed line in a 2 m/s flow (the frame moving with the vessel), with the drag's turning terms on: a body
-    with lift at the end, a lifting clump in line, moving nodes."""
+    with lift at the end (its drag and added mass one number or three, per axis of the body), a lifting clump in
+    line, moving nodes."""
     from seacable.case import TowedBody
     from seacable.towed.fe import steady_start, towed_system
 
@@ -116,7 +117,8 @@ def _towed_state():
                         drag_tangential=0.02)
     clump = sc.PointMass(s=60.0, mass=200.0, weight_in_water=1500.0, drag_area=0.3, lift_coefficient=-0.5,
                          reference_area=0.4)
-    body = TowedBody(mass=300.0, weight_in_water=2000.0, drag_area=0.4, lift_coefficient=0.6, reference_area=1.0)
+    body = TowedBody(mass=300.0, weight_in_water=2000.0, drag_area=drag_area, added_mass=added_mass,
+                     lift_coefficient=0.6, reference_area=1.0)
     system = towed_system(sc.Line.single(cable, 200.0, attachments=(clump,)), (0.0, 0.0, 0.0),
                           Water(depth=None, current_speeds=(0.3,), current_heading=0.4), n_nodes=21, body=body)
     X = steady_start(system, (0.0, 0.0, 0.0), (2.0, 0.0, 0.0))
@@ -151,3 +153,39 @@ def test_a_towed_lines_newton_matrix_is_the_derivative_of_its_forces(which, atol
     _forces(model, X, V, bare, cc=1.0 if which == "C" else 0.0)
     if which == "K":
         assert np.abs(_dense(model, bare) - got).max() > 10.0
+
+
+@pytest.mark.parametrize("which", ["K", "C"])
+def test_a_towed_bodys_drag_per_axis_is_in_the_newton_matrix(which):
+    """A body with C_D A = [0.4, 1.2, 2.5] (along, across, vertical) and added mass [50, 150, 400] kg in the
+    towed line above, across a current at 0.4 rad: its drag's damping sum_k 2 q_k |u_k| e_k e_k^T (in C) and the
+    turn of its axes with the cable's direction at it (in K, the blocks of nodes 0 and 1) against central
+    differences to the same round-off, 1e-2 (the body's drag is 1e3 N here: a dropped turn term is about
+    q U^2 / l ~ 1e2 N/m, a dropped axis's damping 2 q U ~ 1e3 N s/m). And the body's node mass is
+    M + sum_k m_k e_k e_k^T with the axes from nodes 0 and 1, to round-off."""
+    from seacable.mooring._body import body_added_mass, body_axes
+
+    model, X, V = _towed_state(drag_area=[0.4, 1.2, 2.5], added_mass=[50.0, 150.0, 400.0])
+    nd = 3 * model.nfree
+    band = np.zeros((nd, 2 * model.bw + 1))
+    _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
+    if which == "C":
+        k_only = np.zeros_like(band)
+        _forces(model, X, V, k_only, cc=0.0)
+        band = band - k_only
+    got = _dense(model, band)
+    want = _differences(model, X, V, which, 1e-6)
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-2)
+    def node_mass(m):
+        n = X.shape[0]
+        F, M = np.zeros((n, 3)), np.zeros((n, 3, 3))
+        K.loads(X, V, 0.0, *m.element_args(), m.fidx, m.env, m.cur_depth, m.cur_speed, False, m.sea, F, M,
+                np.zeros(n - 1), np.zeros((0, 2 * m.bw + 1)), m.bw, 0.0, 0.0)
+        return M[0]
+
+    without, _, _ = _towed_state(drag_area=[0.4, 1.2, 2.5], added_mass=0.0)
+    axes, ma = np.zeros((3, 3)), np.zeros((3, 3))
+    body_axes(X[1, 0] - X[0, 0], X[1, 1] - X[0, 1], axes)
+    body_added_mass(axes, np.array([50.0, 150.0, 400.0]), ma)
+    assert abs(ma[0, 1]) > 1.0  # the axes are turned from the global ones: the tensor is not diagonal
+    np.testing.assert_allclose(node_mass(model) - node_mass(without), ma, rtol=0, atol=1e-9)

@@ -28,7 +28,11 @@ E_BEDTAB = 24
 # 1: the elements of linear EA carry compression too, EA eps below eps = 0 (a cable with bending stiffness, a beam), 0:
 # tension only (MoorDyn's rule: no compression)
 E_COMPRESS = 25
-ENV_SIZE = 26
+# a towed body at node 0 (the towed line's lower end, node 1 its neighbour) with drag or added mass per axis of the
+# body (:mod:`seacable.mooring._body`): 1 (0: none, its isotropic parts are the node's point arrays), its C_D A along,
+# across and vertical (E_BDRAG + k) [m^2] and its added mass along, across and vertical (E_BMASS + k) [kg]
+E_BODY, E_BDRAG, E_BMASS = 26, 27, 30
+ENV_SIZE = 33
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift

@@ -15,8 +15,9 @@ import numpy as np
 from .._jit import njit
 from ..seastate import S_ETAMAX, S_MODE, S_STRETCH, grid_points
 from ._band import _add_block, _add_pair
+from ._body import body_added_mass, body_axes, body_drag, body_drag_turn
 from ._elements import bending_loads, syrope_loads, table_tension, viscoelastic_loads
-from ._indices import (E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_COMPRESS, E_DEPTH, E_DRAGTURN,
+from ._indices import (E_ALPHA, E_BDRAG, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_BMASS, E_BODY, E_CBOT, E_CHEAD, E_COMPRESS, E_DEPTH, E_DRAGTURN,
                        E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_G, E_KBOT, E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VDT, E_VFRIC, E_WDEPTH,
                        E_WH, P_CDA, P_CDA_AXIAL, P_CLA, P_TX, V_EAD, V_WC)
 from ._seabed import penetration, rounded_depth
@@ -81,11 +82,11 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     jac = band.shape[0] > 0
     turn = env[E_DRAGTURN] > 0.0
     # the small work arrays in two allocations (a call's fixed cost: 14 allocations were about 1 us)
-    mats = np.zeros((3, 3, 3))
-    eye, blk, hb = mats[0], mats[1], mats[2]
+    mats = np.zeros((5, 3, 3))
+    eye, blk, hb, baxes, bma = mats[0], mats[1], mats[2], mats[3], mats[4]
     eye[0, 0] = eye[1, 1] = eye[2, 2] = 1.0
-    vecs = np.zeros((6, 3))
-    uw, aw, ur, vt, nrm, origin = vecs[0], vecs[1], vecs[2], vecs[3], vecs[4], vecs[5]
+    vecs = np.zeros((7, 3))
+    uw, aw, ur, vt, nrm, origin, bq = vecs[0], vecs[1], vecs[2], vecs[3], vecs[4], vecs[5], vecs[6]
     # still water and a current uniform over depth: the same water velocity at every immersed point
     uniform = not wavy and cur_depth.size == 1
     if uniform:
@@ -294,10 +295,19 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     bedfull = env[E_BEDFULL] > 0.0
     alpha = env[E_ALPHA]
     profile = env[E_BEDTAB] > 0.0
+    # a towed body at node 0 with drag or added mass per axis of the body (mooring._body), its axes from the
+    # towing cable's direction at it (node 0 to node 1)
+    body = env[E_BODY] > 0.0 and n > 1
+    bh = 0.0
+    if body:
+        for k in range(3):
+            bq[k] = 0.5 * rho * env[E_BDRAG + k]
+        bh = body_axes(X[1, 0] - X[0, 0], X[1, 1] - X[0, 1], baxes)
+        body_added_mass(baxes, env[E_BMASS:E_BMASS + 3], bma)
     for i in range(n):
         F[i, 2] -= weight[i]
         qn, qa, ql = 0.5 * rho * pcda[i, P_CDA], 0.5 * rho * pcda[i, P_CDA_AXIAL], 0.5 * rho * pcda[i, P_CLA]
-        wet = qn > 0.0 or qa > 0.0 or ql != 0.0 or pvol[i] > 0.0 or padd[i] > 0.0
+        wet = qn > 0.0 or qa > 0.0 or ql != 0.0 or pvol[i] > 0.0 or padd[i] > 0.0 or (body and i == 0)
         ei = _surface(X[i, 0], X[i, 1], t, env, with_waves, sea) if wavy and (pbuoy[i] != 0.0 or wet) else 0.0
         if pbuoy[i] != 0.0 and X[i, 2] - ei > -0.5 * pdia[i]:
             # an attachment at the surface: its buoyancy scales with the immersed fraction of a body of
@@ -305,6 +315,10 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             F[i, 2] -= pbuoy[i] * min((X[i, 2] - ei) / pdia[i] + 0.5, 1.0) if pdia[i] > 0.0 else pbuoy[i]
         for r in range(3):
             M[i, r, r] += pmass[i] + padd[i]
+        if body and i == 0:
+            for r in range(3):
+                for c in range(3):
+                    M[0, r, c] += bma[r, c]
         if wet and X[i, 2] <= ei:
             _fluid(X[i], t, env, cur_depth, cur_speed, with_waves, sea, uw, aw)
             for r in range(3):
@@ -329,6 +343,18 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
                 point_lift(ur, ql, F[i], hb)
                 if jac and fidx[i] >= 0 and cc != 0.0:
                     _add_block(band, bw, fidx[i], fidx[i], cc, hb)
+            if body and i == 0:
+                for r in range(3):
+                    for c in range(3):
+                        F[0, r] += bma[r, c] * aw[c]
+                body_drag(ur, baxes, bq, F[0], hb)
+                if jac and fidx[0] >= 0:
+                    if cc != 0.0:
+                        _add_block(band, bw, fidx[0], fidx[0], cc, hb)
+                    # the axes turn with the cable's direction t = X1 - X0: K = -dF/dX, dF0/dX1 = df/dt = -dF0/dX0
+                    body_drag_turn(ur, baxes, bq, bh, blk)
+                    _add_block(band, bw, fidx[0], fidx[1], -1.0, blk)
+                    _add_block(band, bw, fidx[0], fidx[0], 1.0, blk)
         if alpha > 0.0:
             for r in range(3):
                 for c in range(3):

@@ -95,6 +95,8 @@ from ._water import _fluid, point_lift  # noqa: F401
 # the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`); compression
 from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401
 from ._ties import tie_loads  # noqa: F401
+# a towed body with drag and added mass per axis of the body at node 0 (:mod:`._body`)
+from ._indices import E_BDRAG, E_BMASS, E_BODY  # noqa: F401
 
 __all__ = ["ENV_SIZE", "V_SIZE", "alpha_history", "band_factor", "band_solve", "bending_loads", "commit_viscoelastic",
            "friction_loads",

@@ -235,7 +235,7 @@ def solve_towed_steady(case: Case):
         warnings.filterwarnings("ignore", "part of the towed cable lies", SeacableWarning)
         res, points = towed_line_steady(case.line, speed, water_density=env.water_density, gravity=env.gravity,
                                         body_weight=body.weight_in_water if body else 0.0,
-                                        body_drag_area=body.drag_area if body else 0.0,
+                                        body_drag_area=body.steady_drag_area() if body else 0.0,
                                         body_lift_area=body.lift_area() if body else 0.0,
                                         tangential_drag=a.tangential_drag, n_points=a.n_nodes)
     k = int(np.argmax(res.z))

@@ -76,7 +76,7 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
 
     ``n_nodes`` sets the element length ``L / (n_nodes - 1)`` (a node also at every segment joint and
     attachment); ``body`` (:class:`seacable.case.TowedBody`) adds its mass, added mass, weight, drag and lift
-    at node 0. ``tangential_drag``: ``"common"`` (the kernel's ``1/2 rho C_dt pi d |u_t| u_t``) or
+    at node 0 (a drag or added mass per axis of the body through the kernel's ``E_BODY`` slots of ``env``). ``tangential_drag``: ``"common"`` (the kernel's ``1/2 rho C_dt pi d |u_t| u_t``) or
     ``"diameter"`` (C_dt referred to the diameter: divided by pi).
     """
     L = float(line.length)
@@ -94,13 +94,17 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
                          "Suggested fix: 'common' (1/2 rho C_dt pi d U_t^2, the default) or 'diameter' (C_dt "
                          "referred to d); paper 000's stretch factor is the box formulation's.")
     if body is not None:
-        for field, value in (("point_mass", body.mass), ("point_added_mass", body.added_mass),
-                             ("point_weight", body.weight_in_water), ("point_drag_area", body.drag_area)):
+        # a drag or added mass per axis of the body is the kernel's body at node 0 (env E_BODY, below); a single
+        # number joins the node's point arrays (isotropic), as it always did
+        iso_drag = 0.0 if body.drag_per_axis else body.drag_area
+        iso_added = 0.0 if body.added_mass_per_axis else body.added_mass
+        for field, value in (("point_mass", body.mass), ("point_added_mass", iso_added),
+                             ("point_weight", body.weight_in_water), ("point_drag_area", iso_drag)):
             arr = getattr(net, field).copy()
             arr[0] += value
             changes[field] = arr
         axial = net.point_drag_area.copy() if net.point_axial_drag_area is None else net.point_axial_drag_area.copy()
-        axial[0] += body.drag_area
+        axial[0] += iso_drag
         changes["point_axial_drag_area"] = None if np.array_equal(axial, changes["point_drag_area"]) else axial
         lift = np.zeros(net.n_nodes) if net.point_lift_area is None else net.point_lift_area.copy()
         lift[0] += body.lift_area()
@@ -113,6 +117,10 @@ def towed_system(line, tow_point, water: Water, *, n_nodes: int, body=None, tang
     top_ds = float(np.max(np.diff(net.arc_length[net.arc_length >= lock - 1e-9 * L])))
     model = MooringModel(net, water)
     model.env[K.E_DRAGTURN] = 1.0  # the drag sets a towed line's shape: its turning terms in the Newton matrix
+    if body is not None and (body.drag_per_axis or body.added_mass_per_axis):
+        model.env[K.E_BODY] = 1.0
+        model.env[K.E_BDRAG:K.E_BDRAG + 3] = body.drag_areas() if body.drag_per_axis else 0.0
+        model.env[K.E_BMASS:K.E_BMASS + 3] = body.added_masses() if body.added_mass_per_axis else 0.0
     contact = np.zeros(net.n_nodes)
     if body is not None:
         contact[0] = body.seabed_area
@@ -146,7 +154,7 @@ def _steady_guess(system: TowedSystem, top, flow):
         with np.errstate(all="ignore"):  # a weightless line: no 2-D solution (the static solve starts otherwise)
             res, _ = towed_line_steady(
                 system.line, speed, water_density=water.density, gravity=water.gravity,
-                body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.drag_area if b else 0.0,
+                body_weight=b.weight_in_water if b else 0.0, body_drag_area=b.steady_drag_area() if b else 0.0,
                 body_lift_area=b.lift_area() if b else 0.0, tangential_drag=system.tangential_drag,
                 n_points=max(net.n_nodes, 11), rtol=1e-6)  # a start for the static solve, which makes it exact
     except (SeacableError, ValueError):

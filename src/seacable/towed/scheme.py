@@ -10,7 +10,10 @@ Lower end (node 0), paper 000 eq. (14): a free end has ``T = S_n = S_b = Om_n = 
 9-10). A towed body of mass ``M`` and added mass ``M_a`` with weight in water ``W`` and drag area
 ``C_D A`` obeys, in the global frame and centred in time like the box scheme,
 ``(M + M_a) (v^{i+1} - v^i)/dt = 1/2 (F^{i+1} + F^i)`` with
-``F = T t + S_n n + S_b b - W Z - 1/2 rho C_D A |v - U| (v - U)`` and ``Om_n = Om_b = 0`` (pinned).
+``F = T t + S_n n + S_b b - W Z - 1/2 rho C_D A |v - U| (v - U)`` and ``Om_n = Om_b = 0`` (pinned). A body
+with drag or added mass per axis of the body (:mod:`seacable.mooring._body`: along the horizontal projection of the
+tangent t, across it, vertical) has ``sum_k 1/2 rho (C_D A)_k |w_k| w_k e_k`` (w = U - v) for its drag and
+``M + sum_k m_k e_k e_k^T`` (the axes at the new step) for its inertia; its Jacobian holds the axes' turn with phi.
 Vessel end (node n-1), eq. (15): the cable velocity equals the vessel's, ``(v_t, v_n, v_b) =
 (t.V, n.V, b.V)``, and ``Om_n = Om_b = 0``.
 """
@@ -22,6 +25,7 @@ import math
 import numpy as np
 
 from .._jit import copy_1d, copy_2d, njit
+from ..mooring._body import body_axes, body_drag, body_drag_turn
 from .equations import (
     I_OB,
     I_ON,
@@ -45,11 +49,15 @@ from .equations import (
 from .lapack import solve_banded, solve_dense
 from .linalg import block_thomas, block_tridiagonal_workspace
 
-__all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "STATUS", "newton_step", "march", "node_currents"]
+__all__ = ["B_HAS", "B_MASS", "B_WEIGHT", "B_DRAG", "B_AXES", "B_QAXES", "B_MAXES", "B_SIZE", "STATUS", "newton_step",
+           "march", "node_currents"]
 
-B_HAS, B_MASS, B_WEIGHT, B_DRAG = range(4)
+B_HAS, B_MASS, B_WEIGHT, B_DRAG, B_AXES, B_QAXES, B_MAXES, B_SIZE = 0, 1, 2, 3, 4, 5, 8, 11
 """Entries of the body vector ``bpar``: 1 if a body is attached (else a free end), its mass plus
-added mass [kg], its weight in water [N, positive sinks] and ``1/2 rho C_D A`` [kg/m]."""
+isotropic added mass [kg], its weight in water [N, positive sinks] and its isotropic ``1/2 rho C_D A`` [kg/m];
+then 1 if it has drag or added mass per axis of the body (:mod:`seacable.mooring._body`), its ``1/2 rho C_D A``
+along, across and vertical (``B_QAXES + k``) [kg/m] and its added mass along, across and vertical
+(``B_MAXES + k``) [kg]."""
 
 STATUS = {0: "converged", 1: "Newton-Raphson did not converge", 2: "the solution became non-finite",
           3: "the linear system is singular", 4: "the cable became vertical (|cos theta| < 1e-6), where "
@@ -91,6 +99,45 @@ def _bc_lower(hn, ho, un, uo, bpar, dt, steady, res, jac):
         res[d] = mass * (vg[d] - vgo[d]) / dt - 0.5 * (fn[d] + fo[d])
         for c in range(NV):
             jac[d, c] = mass * dvg[d, c] / dt - 0.5 * dfn[d, c]
+    if bpar[B_AXES] > 0.0:
+        _added_mass_axes(hn, bpar, vg, vgo, dvg, dt, res, jac)
+
+
+@njit(cache=True)
+def _added_mass_axes(h, bpar, vg, vgo, dvg, dt, res, jac):
+    """The added mass per axis ``M_a = sum_k m_k e_k e_k^T`` (axes at the new state) in the body's equation:
+    ``M_a (v^{i+1} - v^i) / dt`` added to ``res`` (3 rows), with its Jacobian (``M_a dv/dH`` and the axes'
+    turn with phi, ``dM_a/dphi = (m_a - m_c) (e_c e_a^T + e_a e_c^T)`` times ``e_c . dt_h/dphi / h``)."""
+    r = frame(h[I_PH], h[I_TH])
+    axes = np.zeros((3, 3))
+    hh = body_axes(r[0, 0], r[0, 1], axes)
+    ma = np.zeros((3, 3))
+    dma = np.zeros((3, 3))
+    turn = 0.0
+    if hh > 0.0:  # e_c . d(t_h)/dphi / h, t_h = cos(theta) (cos phi, sin phi): 1
+        turn = (axes[1, 0] * r[1, 0] * math.cos(h[I_TH]) + axes[1, 1] * r[1, 1] * math.cos(h[I_TH])) / hh
+    for k in range(3):
+        mk = bpar[B_MAXES + k]
+        for a in range(3):
+            for b in range(3):
+                ma[a, b] += mk * axes[k, a] * axes[k, b]
+    dm = (bpar[B_MAXES] - bpar[B_MAXES + 1]) * turn
+    for a in range(3):
+        for b in range(3):
+            dma[a, b] = dm * (axes[1, a] * axes[0, b] + axes[0, a] * axes[1, b])
+    for d in range(3):
+        dv = 0.0
+        ddv = 0.0
+        for e in range(3):
+            dv += ma[d, e] * (vg[e] - vgo[e])
+            ddv += dma[d, e] * (vg[e] - vgo[e])
+        res[d] += dv / dt
+        jac[d, I_PH] += ddv / dt
+        for c in range(NV):
+            acc = 0.0
+            for e in range(3):
+                acc += ma[d, e] * dvg[e, c]
+            jac[d, c] += acc / dt
 
 
 @njit(cache=True)
@@ -128,6 +175,24 @@ def _body_force(h, u, bpar, f, df, vg, dvg):
                     dd = kd * (speed * (1.0 if d == e else 0.0) + vr[d] * vr[e] / speed)
                     for c in range(df.shape[1]):  # a loop: numba's slice assignment compiles its error message
                         df[d, c] -= dd * dvg[e, c]
+    if bpar[B_AXES] > 0.0:
+        # drag per axis of the body: the water's velocity past it w = u - v, df/dH = (df/dw)(-dv/dH) + (df/dt) dt/dH
+        axes = np.zeros((3, 3))
+        dfw = np.zeros((3, 3))
+        dft = np.zeros((3, 3))
+        w = u - vg
+        hh = body_axes(tv[0], tv[1], axes)
+        body_drag(w, axes, bpar[B_QAXES:B_QAXES + 3], f, dfw)
+        body_drag_turn(w, axes, bpar[B_QAXES:B_QAXES + 3], hh, dft)
+        for d in range(3):
+            for c in range(df.shape[1]):
+                acc = 0.0
+                for e in range(3):
+                    acc -= dfw[d, e] * dvg[e, c]
+                df[d, c] += acc
+            for e in range(3):
+                df[d, I_PH] += dft[d, e] * dt_dph[e]
+                df[d, I_TH] += dft[d, e] * dt_dth[e]
 
 
 @njit(cache=True)

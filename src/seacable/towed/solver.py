@@ -50,8 +50,8 @@ from .equations import (
     frame,
     integrate_positions,
 )
-from .scheme import (B_DRAG, B_HAS, B_MASS, B_WEIGHT, STATUS, node_currents, march, newton_step, velocity_global,
-                     workspace)
+from .scheme import (B_AXES, B_DRAG, B_HAS, B_MASS, B_MAXES, B_QAXES, B_SIZE, B_WEIGHT, STATUS, march,
+                     newton_step, node_currents, velocity_global, workspace)
 
 __all__ = ["TowedBodyParameters", "TowedRun", "cable_parameters", "body_parameters", "steady_tow",
            "simulate"]
@@ -140,27 +140,51 @@ def cable_parameters(length, n_nodes, mass_per_length, weight_per_length, diamet
 @dataclass(frozen=True)
 class TowedBodyParameters:
     """A towed body at the lower end: mass and added mass [kg], weight in water [N, positive
-    sinks] and drag area C_D A [m^2]."""
+    sinks] and drag area C_D A [m^2]; the added mass and the drag area one number (isotropic) or three, along,
+    across and vertical in the body's axes (:mod:`seacable.towed.body`)."""
 
     mass: float
-    added_mass: float = 0.0
+    added_mass: float | tuple = 0.0
     weight_in_water: float = 0.0
-    drag_area: float = 0.0
+    drag_area: float | tuple = 0.0
+
+
+def _per_axis(name, value, unit, fix):
+    """``value`` checked >= 0: a float (isotropic) or a tuple of three (along, across, vertical)."""
+    if isinstance(value, (tuple, list, np.ndarray)):
+        if len(value) != 3:
+            raise InputError(f"{name} must be one number or three (along, across, vertical), got {len(value)} values "
+                             f"{list(value)} {unit}. Suggested fix: {fix}")
+        return tuple(v.nonnegative(f"{name}[{k}]", x, unit, fix) for k, x in enumerate(value))
+    return v.nonnegative(name, value, unit, fix)
 
 
 def body_parameters(body: TowedBodyParameters | None, water_density=1025.0) -> np.ndarray:
     """Body vector of :mod:`seacable.towed.scheme` (a free end when ``body`` is None)."""
-    out = np.zeros(4)
+    out = np.zeros(B_SIZE)
     if body is None:
         return out
     mass = v.positive("body.mass", body.mass, "kg",
                       "give the towed body's mass in air (its weight in water alone does not set its inertia)")
+    added = _per_axis("body.added_mass", body.added_mass, "kg", "give the added mass in kg")
+    drag = _per_axis("body.drag_area", body.drag_area, "m^2", "give C_D times the frontal area")
     out[B_HAS] = 1.0
-    out[B_MASS] = mass + v.nonnegative("body.added_mass", body.added_mass, "kg", "give the added mass in kg")
+    out[B_MASS] = mass + (0.0 if isinstance(added, tuple) else added)
     out[B_WEIGHT] = v.finite("body.weight_in_water", body.weight_in_water, "N", "positive when it sinks")
-    out[B_DRAG] = 0.5 * water_density * v.nonnegative("body.drag_area", body.drag_area, "m^2",
-                                                      "give C_D times the frontal area")
+    out[B_DRAG] = 0.0 if isinstance(drag, tuple) else 0.5 * water_density * drag
+    if isinstance(added, tuple) or isinstance(drag, tuple):
+        out[B_AXES] = 1.0
+        if isinstance(drag, tuple):
+            out[B_QAXES:B_QAXES + 3] = [0.5 * water_density * x for x in drag]
+        if isinstance(added, tuple):
+            out[B_MAXES:B_MAXES + 3] = added
     return out
+
+
+def _steady_drag_area(bpar, water_density):
+    """C_D A of the body in the steady tow, whose flow past it is horizontal along the tow: the isotropic one, or
+    the along axis's. [m^2]"""
+    return (bpar[B_DRAG] + (bpar[B_QAXES] if bpar[B_AXES] > 0.0 else 0.0)) * 2.0 / water_density
 
 
 def _current_arrays(current, follows_vessel=False):
@@ -248,7 +272,7 @@ def steady_tow(par, n_nodes, vessel_velocity, current=None, body=None, *, water_
         length, par[P_W], max(2.0 * par[P_KN] / water_density, 1e-9), speed, 1.0,
         0.0, water_density=water_density,
         axial_stiffness=None if par[P_IEA] == 0 else 1.0 / par[P_IEA],
-        body_weight=bpar[B_WEIGHT], body_drag_area=bpar[B_DRAG] * 2.0 / water_density,
+        body_weight=bpar[B_WEIGHT], body_drag_area=_steady_drag_area(bpar, water_density),
         tangential_drag="common", n_points=n)
     h = np.zeros((n, NV))
     h[:, I_T] = guess.tension
