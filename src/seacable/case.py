@@ -48,6 +48,7 @@ from .statics.towed import TangentialDragForm
 from .ties import tie_points
 from .towed.vessel import VesselPath
 from .towline.barge_model import Barge
+from .vessel_motion import VesselMotionOption
 
 __all__ = [
     "Analysis",
@@ -288,7 +289,7 @@ class Winch(Model):
                              "shorter ramp or a smaller rate.")
 
 
-class TowedDynamicAnalysis(StatisticsWindow):
+class TowedDynamicAnalysis(VesselMotionOption, StatisticsWindow):
     """Time-domain dynamics of a towed system behind a vessel path.
 
     ``formulation``: ``finite_element`` (the default) is the mooring model's (paper 004: lumped masses on
@@ -374,7 +375,7 @@ class LayingTheoryAnalysis(Model):
         return self
 
 
-class LayingDynamicAnalysis(StatisticsWindow):
+class LayingDynamicAnalysis(VesselMotionOption, StatisticsWindow):
     """Time-domain laying from a moving ship: paper 001's lumped-mass model with payout, in 2-D or along a route
     in 3-D.
 
