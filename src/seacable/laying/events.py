@@ -60,6 +60,7 @@ class _Lay:
         # (seacable.vessel_motion.bind_vessel_motion); None: the chute follows the track
         self.motion = motion
         self.t_new = 0.0                   # the time at the end of the step last tried (the chute's there) [s]
+        self.slack_seen = False            # whether a slack has been measured (see slack())
         seg = par.segment_length
         props = par.props
         self.ctl = ctl = Control(ship, payout, par)
@@ -692,7 +693,13 @@ class _Lay:
         """Laid length over seabed distance minus one, over the nodes landed in the last ``window`` s."""
         lp, ls, lt = self.laid["p"], self.laid["s"], self.laid["time"]
         k0 = bisect.bisect_right(lt, max(t - window, 0.0))   # landed during the run (lt: sorted)
+        if len(lt) - k0 < 3 and self.slack_seen:
+            # fewer than 3 in the window after a slack was measured: nodes lifted off again (a heaving chute picks
+            # laid cable up) or landings slowed; the last 3 laid nodes, not a NaN after numbers
+            k0 = max(min(k0, len(lt) - 3), 0)
         if len(lt) - k0 < 3:
             return np.nan
         run = self.track.run(lp[k0:])
+        if run > 0:
+            self.slack_seen = True
         return (ls[-1] - ls[k0]) / run - 1.0 if run > 0 else np.nan
