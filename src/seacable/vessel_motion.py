@@ -198,7 +198,7 @@ def bind_vessel_motion(motion: VesselMotion | None, environment, *, heading: flo
     offsets(np.array([0.0, float(duration)]))
     if dims == 2:
         across = float(np.max(np.abs(offsets(np.linspace(0.0, float(duration), 2001), 3)[0][:, 1])))
-        if across > 0.0:
+        if across > 1e-6:                 # (a heading of pi leaves round-off across: 1e-16 m)
             warnings.warn(f"analysis.motion moves the chute up to {across:.3g} m across the track (sway, roll, yaw), "
                           "which paper 001's 2-D plane does not model: only the motion along the track and up enters. "
                           "Suggested fix: give analysis.route to lay in 3-D.", SeacableWarning, stacklevel=2)

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import seacable as sc
+from seacable.environment import IrregularWaves
 from seacable.errors import InputError
 from seacable.mooring.motion import HarmonicMotion
 from seacable.vessel_motion import VesselMotion, bind_vessel_motion
@@ -136,3 +137,38 @@ def test_waves_without_a_vessel_motion_are_still_refused_by_a_lay():
     """The waves move the lay vessel only: a laying_dynamic case without 'motion' does not take them (as before)."""
     with pytest.raises(Exception, match="waves"):
         lay_case(None)
+
+
+def test_an_irregular_sea_moves_the_chute_as_the_moorings_rao_path_moves_a_platform(tmp_path):
+    """In a JONSWAP sea the chute's heave is the RAO response of seacable.raos at the reference point's start (the
+    one RAO path: rao_motion with at = the start), ramped; round-off tolerance. A case file's relative RAO file is
+    read from the case's folder, and the statistics start by default at the motion's ramp."""
+    from seacable.raos import rao_motion, read_rao_csv
+
+    table = rao_csv(tmp_path / "raos.csv", (0.3, 0.0, 0.9, 0.0, 0.01, 0.0), (0.2, 0.0, -0.4, 0.0, 1.1, 0.0))
+    sea_env = sc.Environment(depth=DEPTH, waves=IrregularWaves(spectrum="jonswap", hs=2.0, tp=9.0, seed=3,
+                                                                  n_components=50))
+    motion = VesselMotion(file=table, point=(0.0, 0.0, 0.0), ramp=0.0)
+    f = bind_vessel_motion(motion, sea_env, heading=0.0, start=(120.0, 0.0), duration=100.0, dims=2)
+    t = np.linspace(0.0, 100.0, 201)
+    q = rao_motion(read_rao_csv(table), sea_env.waves.components(DEPTH, sea_env.gravity), t, at=(120.0, 0.0))
+    np.testing.assert_allclose(f(t)[0][:, 1], q[2], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(f(t)[0][:, 0], q[0], rtol=0, atol=1e-12)     # surge; pitch at no lever arm: none
+    (tmp_path / "lay.yaml").write_text(
+        "name: lay\nline_types: {c: {diameter: 0.1, mass_per_length: 20.0, weight_in_water: 120.0, drag_normal: 1.2}}\n"
+        "line: {line_type: c, length: 500.0}\n"
+        "environment: {depth: 60.0, waves: {spectrum: jonswap, hs: 2.0, tp: 9.0, seed: 3}}\n"
+        "analysis: {type: laying_dynamic, ship: {speed: 0.5}, duration: 60.0, max_time_step: 0.2,\n"
+        "           motion: {type: rao, file: raos.csv, point: [-40, 0, 4], wave_heading: 180 deg, ramp: 20}}\n")
+    case = sc.load_case(tmp_path / "lay.yaml")
+    assert case.analysis.motion.wave_heading == pytest.approx(math.pi)
+    assert case.analysis.statistics_start() == 20.0
+    sc.check(case)                                   # the relative file is found and the sea is covered
+
+
+def test_motion_across_a_2d_lay_is_warned_about(tmp_path):
+    """Roll at a chute 3 m to port and 5 m up moves it across the track, which paper 001's plane does not hold: warned with the
+    size (roll r = 0.02 rad at a 1 m wave: y moves by 3 (cos r - 1) - 5 sin r, 0.1 m; the vertical part enters)."""
+    motion = VesselMotion(file=rao_csv(tmp_path / "roll.csv", (0.0, 0.0, 0.0, 0.02, 0.0, 0.0)), point=(0.0, 3.0, 5.0))
+    with pytest.warns(sc.SeacableWarning, match=r"moves the chute up to 0.1\d* m across the track"):
+        bind_vessel_motion(motion, env(), heading=0.0, start=(0.0, 0.0), duration=30.0, dims=2)
