@@ -167,8 +167,9 @@ def test_an_irregular_sea_moves_the_chute_as_the_moorings_rao_path_moves_a_platf
 
 
 def test_motion_across_a_2d_lay_is_warned_about(tmp_path):
-    """Roll at a chute 3 m to port and 5 m up moves it across the track, which paper 001's plane does not hold: warned with the
-    size (roll r = 0.02 rad at a 1 m wave: y moves by 3 (cos r - 1) - 5 sin r, 0.1 m; the vertical part enters)."""
+    """Roll at a chute 3 m to port and 5 m up moves it across the track, which paper 001's plane does not hold:
+    warned with the size (roll r = 0.02 rad at a 1 m wave: y moves by 3 (cos r - 1) - 5 sin r, 0.1 m; the vertical
+    part enters)."""
     motion = VesselMotion(file=rao_csv(tmp_path / "roll.csv", (0.0, 0.0, 0.0, 0.02, 0.0, 0.0)), point=(0.0, 3.0, 5.0))
     with pytest.warns(sc.SeacableWarning, match=r"moves the chute up to 0.1\d* m across the track"):
         bind_vessel_motion(motion, env(), heading=0.0, start=(0.0, 0.0), duration=30.0, dims=2)
