@@ -40,9 +40,10 @@ import warnings
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, model_serializer, model_validator
 
 from ._model import Model, quantity, unit_float
+from ._window import omit_unset_window
 from .errors import InputError, SeacableWarning
 from .mooring.motion import RAOMotion, _rigid_channels
 
@@ -109,6 +110,16 @@ class VesselMotionOption(Model):
     def uses(self, env) -> frozenset[str]:
         """The environment inputs of the analysis: its ``USES``, and the waves that move the vessel."""
         return frozenset(self.USES) | ({"waves"} if self.motion is not None else frozenset())
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_window(self, handler):
+        """Drop an unset ``motion`` (and an unset ``statistics_from``, :func:`seacable._window.omit_unset_window`: one
+        serializer serves the class) from the dumped analysis, so that a case without them dumps, and a result records
+        it, as before the options existed."""
+        data = handler(self)
+        if isinstance(data, dict) and "motion" in data and data["motion"] is None:
+            del data["motion"]
+        return omit_unset_window(data)
 
 
 def sea_of_environment(environment):
