@@ -40,6 +40,7 @@ from .ties import tie_points
 from .towed.body import TowedBody
 from .towed.vessel import VesselPath
 from .towline.barge_model import Barge
+from .vessel_motion import VesselMotionOption
 
 __all__ = [
     "Analysis",
@@ -267,7 +268,7 @@ class Winch(Model):
                              "shorter ramp or a smaller rate.")
 
 
-class TowedDynamicAnalysis(StatisticsWindow):
+class TowedDynamicAnalysis(VesselMotionOption, StatisticsWindow):
     """Time-domain dynamics of a towed system behind a vessel path.
 
     ``formulation``: ``finite_element`` (the default) is the mooring model's (paper 004: lumped masses on
@@ -353,7 +354,7 @@ class LayingTheoryAnalysis(Model):
         return self
 
 
-class LayingDynamicAnalysis(StatisticsWindow):
+class LayingDynamicAnalysis(VesselMotionOption, StatisticsWindow):
     """Time-domain laying from a moving ship: paper 001's lumped-mass model with payout, in 2-D or along a route
     in 3-D.
 

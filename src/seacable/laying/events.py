@@ -53,8 +53,14 @@ def _rounds(n_segments: int) -> int:
 class _Lay:
     """State of a laying run and the events between steps."""
 
-    def __init__(self, par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None):
+    def __init__(self, par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None,
+                 motion=None):
         self.par, self.track = par, track
+        # the chute's motion on the vessel's RAOs: times -> offsets from the track, velocities, accelerations
+        # (seacable.vessel_motion.bind_vessel_motion); None: the chute follows the track
+        self.motion = motion
+        self.t_new = 0.0                   # the time at the end of the step last tried (the chute's there) [s]
+        self.slack_seen = False            # whether a slack has been measured (see slack())
         seg = par.segment_length
         props = par.props
         self.ctl = ctl = Control(ship, payout, par)
@@ -66,6 +72,8 @@ class _Lay:
         self._contact = par.friction is not None   # whether rows of c.contact may be 1 (see contact_forces())
         self._above = getattr(track, "highest", math.inf) + 1.0   # nodes higher are neither on nor under the seabed
         chute = track.point(self.x_ship)
+        if motion is not None:
+            chute = chute + motion(np.zeros(1))[0][0]
         depth0 = -float(track.zb(chute[:-1]))
         t = _initial_tangent(par, track, self.x_ship, ctl.speed, depth0, initial_angle)
         ell = _touchdown_distance(track, chute, t, 0.25 * seg)
@@ -130,7 +138,7 @@ class _Lay:
                 c.T[row] = props[c.seg_type[row], P_WEIGHT] * t[-1] * 0.5 * (s + s_nodes[k + 1] - 2 * pre)
         c.pos[c.lo] = self.laid["p"][-1]
         c.vel[c.lo] = 0.0
-        c.vel[c.hi] = ship_v
+        c.vel[c.hi] = ship_v if motion is None else ship_v + motion(np.zeros(1))[1][0]
         c.active[c.lo], c.T[c.lo] = 0, 0.0    # zero tension at the touchdown: the straight lay's bottom is slack
         self.s_paid = pre + ell
         self.s_start = pre                 # material coordinate of the touchdown at t = 0 [m]
@@ -156,6 +164,13 @@ class _Lay:
         """:meth:`ship_velocity` as a list: ``speed`` times the direction, and 0 up (the same products). [m/s]"""
         v = [speed * e for e in self.heading()[1]]
         v.append(0.0)
+        return v
+
+    def _chute_velocity(self, speed: float) -> list[float]:
+        """The chute's velocity: :meth:`_ship_velocity` plus the vessel's motion at the time of the last step. [m/s]"""
+        v = self._ship_velocity(speed)
+        if self.motion is not None:
+            v = (np.asarray(v) + self.motion(np.array([self.t_new]))[1][0]).tolist()
         return v
 
     def changed(self) -> None:
@@ -188,8 +203,12 @@ class _Lay:
         props, cur_d, cur_v, rho, tol, max_iter = kernel_args
         pos, vel, point, new_pos, new_vel, contact, normal, grip, anchor, L, seg_type, T, active = c.window()
         seabed = (contact, normal, grip, anchor, self.par.friction_distance)
+        chute = self.track.point(x_new)
+        if self.motion is not None:
+            self.t_new = t + dt
+            chute = chute + self.motion(np.array([t + dt]))[0][0]
         status, it, res = implicit_step(
-            pos, vel, self.track.point(x_new), L, seg_type, props, point, cur_d, cur_v, rho, dt, T, active,
+            pos, vel, chute, L, seg_type, props, point, cur_d, cur_v, rho, dt, T, active,
             self.floor, seabed, tol, max_iter, _rounds(hi - c.lb), new_pos, new_vel)
         return status, it, res, vs_new, x_new
 
@@ -341,7 +360,7 @@ class _Lay:
             self.laid["p"][-n:] = [row.copy() for row in c.pos[rows]]     # (a copy each: a row of one block would
             self.laid["T"][-n:] = (c.T[c.lb:c.lo] * c.active[c.lb:c.lo]).tolist()   # keep the whole block alive)
         self.x_ship, self.vc, self.dt = x_new, vc_new, dt
-        c.vel[hi] = self._ship_velocity(vs_new)
+        c.vel[hi] = self._chute_velocity(vs_new)
         self.s_paid += vc_new * dt
         c.s[hi] = self.s_paid
 
@@ -365,7 +384,7 @@ class _Lay:
             chord = c.pos[hi] - c.pos[hi - 1]
             ln, vc = _length(chord), self.vc
             chord = chord.tolist()
-            v_exit = [v - vc * d / ln for v, d in zip(self._ship_velocity(self.ctl.speed), chord)]
+            v_exit = [v - vc * d / ln for v, d in zip(self._chute_velocity(self.ctl.speed), chord)]
             f = (nxt - s_last) / (self.s_paid - s_last)
             for arr in (c.pos, c.vel, c.s, c.point, c.rep):
                 arr[hi + 1] = arr[hi]
@@ -674,7 +693,13 @@ class _Lay:
         """Laid length over seabed distance minus one, over the nodes landed in the last ``window`` s."""
         lp, ls, lt = self.laid["p"], self.laid["s"], self.laid["time"]
         k0 = bisect.bisect_right(lt, max(t - window, 0.0))   # landed during the run (lt: sorted)
+        if len(lt) - k0 < 3 and self.slack_seen:
+            # fewer than 3 in the window after a slack was measured: nodes lifted off again (a heaving chute picks
+            # laid cable up) or landings slowed; the last 3 laid nodes, not a NaN after numbers
+            k0 = max(min(k0, len(lt) - 3), 0)
         if len(lt) - k0 < 3:
             return np.nan
         run = self.track.run(lp[k0:])
+        if run > 0:
+            self.slack_seen = True
         return (ls[-1] - ls[k0]) / run - 1.0 if run > 0 else np.nan

@@ -13,6 +13,7 @@ from ..case import Case, LayingDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from ..statics.laying import laying_angle
+from ..vessel_motion import bind_vessel_motion, sea_of_environment
 from .bathymetry import seabed_map
 from .inputs import PayoutRate, PayoutSlack, Seabed2D, sinking_weights
 from .kernel import P_CDN, P_DIAMETER, P_WEIGHT
@@ -99,6 +100,7 @@ class LayingSetup:
     track: Track2D | Track3D
     steps: float            # estimated time steps [1]
     stored_values: float    # estimated values kept for the result [1]
+    motion: object = None   # the chute's motion on the vessel's RAOs (seacable.vessel_motion), or None
 
 
 def _ship_speed_range(case: Case) -> tuple[float, float]:
@@ -215,12 +217,35 @@ def prepare_laying_dynamic(case: Case) -> LayingSetup:
     outputs = a.duration / a.output_interval + 1.0
     laid = (par.cable_length / a.segment_length + len(par.repeaters)) * 4.0
     stored = outputs * (3.0 * nodes + _N_SERIES + 2.0 * len(par.repeaters)) + laid
+    motion = lay_motion(case, track)
     # the starting lay (the straight span and the cable already on the seabed behind it): its line and seabed
-    initial_state(par, a.ship, a.payout, track, a.initial_angle)
+    initial_state(par, a.ship, a.payout, track, a.initial_angle, motion)
     check_run_size(f"laying_dynamic case {case.name!r}", steps=steps, stored_values=stored,
                    fix="shorten analysis.duration, lengthen analysis.output_interval or analysis.segment_length, "
                        "or lower analysis.steps_per_segment")
-    return LayingSetup(parameters=par, track=track, steps=steps, stored_values=stored)
+    return LayingSetup(parameters=par, track=track, steps=steps, stored_values=stored, motion=motion)
+
+
+def lay_motion(case: Case, track):
+    """The chute's motion on the vessel's RAOs (``analysis.motion``, :func:`seacable.vessel_motion.bind_vessel_motion`)
+    about the ship's track, the vessel heading along the track at the start; None without it."""
+    a: LayingDynamicAnalysis = case.analysis
+    if a.motion is None:
+        return None
+    p0 = track.point(a.ship.start_x)
+    e = track.direction(a.ship.start_x)
+    heading = 0.0 if track.dim == 2 else math.atan2(float(e[1]), float(e[0]))
+    start = (float(p0[0]), 0.0) if track.dim == 2 else (float(p0[0]), float(p0[1]))
+    motion = bind_vessel_motion(a.motion, case.environment, heading=heading, start=start, duration=a.duration,
+                                dims=track.dim)
+    sea = sea_of_environment(case.environment)
+    period = 2 * math.pi / float(sea.omega[int(np.argmax(sea.amplitude))])
+    if a.max_time_step > period / 20.0:
+        warnings.warn(f"analysis.max_time_step = {a.max_time_step:g} s is more than 1/20 of the period of the waves "
+                      f"that move the chute ({period:.3g} s, the largest component's): the implicit (backward Euler) step damps the chute's "
+                      f"motion. Suggested fix: max_time_step <= {period / 20.0:.3g} s.", SeacableWarning, stacklevel=3)
+    return motion
+
 
 
 def _laid_slack(laid) -> np.ndarray:
@@ -248,7 +273,7 @@ def run_laying_dynamic(case: Case, progress=None):
     res = simulate(par, a.ship, a.payout, track, a.duration, output_interval=a.output_interval,
                    steps_per_segment=a.steps_per_segment, max_time_step=a.max_time_step,
                    initial_angle=a.initial_angle, slack_window=a.slack_window, tol=a.tolerance,
-                   max_iter=a.max_iterations, progress=progress)
+                   max_iter=a.max_iterations, progress=progress, motion=setup.motion)
     s = res.series
     t1 = "time"
     three = track.dim == 3
@@ -324,6 +349,11 @@ def run_laying_dynamic(case: Case, progress=None):
         data["repeater_z"] = var(("time", "repeater"), res.repeater_pos[..., -1], "m", "repeater elevation")
         data["repeater_s"] = var("repeater", np.array([r.s for r in sorted(par.repeaters, key=lambda r: r.s)]),
                                  "m", "repeater arc length from end A")
+    if setup.motion is not None:
+        off = setup.motion(res.time)[0]
+        for k, axis in enumerate(("x", "y", "z") if three else ("x", "z")):
+            data[f"vessel_motion_{axis}"] = var(t1, off[:, k], "m", f"{axis} offset of the chute from the ship's track "
+                                                                     "by the vessel's motion on its RAOs")
     coords = {"time": var("time", res.time, "s", "time")}
     settings = {"segment_length": a.segment_length, "steps_per_segment": a.steps_per_segment,
                 "extensible": int(a.extensible), "payout": a.payout.type, "steps": res.steps,

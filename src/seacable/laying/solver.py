@@ -86,17 +86,18 @@ _SERIES = ("ship_x", "ship_speed", "payout_speed", "paid_out", "top_tension", "b
            "touchdown_x", "touchdown_z", "layback", "slack", "suspended_length", "laid_length")
 
 
-def initial_state(par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None = None) -> None:
+def initial_state(par: LayParameters, ship: ShipMotion, payout, track, initial_angle: float | None = None,
+                  motion=None) -> None:
     """Build the run's starting lay (the straight span and the cable already on the seabed behind it) and raise
     the InputError :func:`simulate` would (a line too short for it, a seabed that does not cover it): the checks of
     ``validate`` before the time loop."""
-    _Lay(par, ship, payout, track, initial_angle)
+    _Lay(par, ship, payout, track, initial_angle, motion)
 
 
 def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: float, *,
              output_interval: float = 1.0, steps_per_segment: float = 4.0, max_time_step: float = 1.0,
              initial_angle: float | None = None, slack_window: float = 60.0, tol: float = 1e-9,
-             max_iter: int = 50, progress=None) -> LayRun:
+             max_iter: int = 50, progress=None, motion=None) -> LayRun:
     """Lay cable from a moving ship for ``duration`` seconds.
 
     Parameters
@@ -123,6 +124,10 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         Newton tolerance (relative constraint residual) and iterations per step.
     progress
         Optional ``progress(t, duration)`` callback.
+    motion
+        The chute's motion on the vessel's RAOs: ``motion(times)`` -> offsets from the track, velocities and
+        accelerations, each (len(times), D) (:func:`seacable.vessel_motion.bind_vessel_motion`); default None,
+        the chute on the track. [m, m/s, m/s^2]
 
     Returns
     -------
@@ -134,7 +139,7 @@ def simulate(par: LayParameters, ship: ShipMotion, payout, track, duration: floa
         When a step fails after ``6`` halvings, with the time and the residual.
     """
     wall0 = _time.perf_counter()
-    lay = _Lay(par, ship, payout, track, initial_angle)
+    lay = _Lay(par, ship, payout, track, initial_angle, motion)
     c, ctl, props = lay.c, lay.ctl, par.props
     kernel_args = (props, par.current_depths, par.current_velocity, par.water_density, tol, max_iter)
     out_t, series, snaps, rep_out, points = [], {k: [] for k in _SERIES}, [], [], []

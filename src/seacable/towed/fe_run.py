@@ -14,11 +14,12 @@ from ..environment import IrregularWaves
 from ..errors import InputError
 from ..mooring.run import water_of
 from ..results import make_dataset, var
+from ..vessel_motion import bind_vessel_motion
 from .fe import TOLERANCE, TowedSystem, simulate_towed, steady_start, towed_system
 from .fe_kernel import MERGE
-from .vessel import sample_path
+from .vessel import initial_heading, sample_path
 
-__all__ = ["PreparedTowedFE", "check_towed_size", "prepare_towed_fe", "run_towed_fe"]
+__all__ = ["PreparedTowedFE", "check_towed_size", "prepare_towed_fe", "run_towed_fe", "tow_path"]
 
 REFERENCES = (
     "Paper 004 (seeds/004): truss finite elements, Newmark's method, Morison loads, seabed contact.",
@@ -41,6 +42,7 @@ class PreparedTowedFE:
     deployed: object
     initial: np.ndarray
     points: tuple  # (name, s [m], node) of the body and each attachment
+    motion: object = None  # the tow point's motion on the vessel's RAOs (seacable.vessel_motion), or None
 
 
 def _checked_winch(a: TowedDynamicAnalysis, system: TowedSystem, length: float):
@@ -73,6 +75,28 @@ def _checked_winch(a: TowedDynamicAnalysis, system: TowedSystem, length: float):
     return deployed
 
 
+def tow_path(case: Case):
+    """The tow point's path of a ``towed_dynamic`` case, ``path(times)`` -> positions and velocities (n, 3), and the
+    motion on the vessel's RAOs in it (None without ``analysis.motion``): the vessel path
+    (:func:`seacable.towed.vessel.sample_path`) plus the motion's offsets and their velocities
+    (:func:`seacable.vessel_motion.bind_vessel_motion`, the vessel heading its path's at the start). The
+    formulations take the tow point's acceleration from these velocities."""
+    a: TowedDynamicAnalysis = case.analysis
+    track = functools.partial(sample_path, a.vessel)
+    if a.motion is None:
+        return track, None
+    p0, _ = track(np.array([0.0]))
+    heading = initial_heading(a.vessel, a.duration, distance=1e-3 * case.line.length)
+    motion = bind_vessel_motion(a.motion, case.environment, heading=heading, start=p0[0, :2], duration=a.duration)
+
+    def path(times):
+        p, v = track(times)
+        off, vel, _ = motion(np.atleast_1d(np.asarray(times, float)))
+        return p + off, v + vel
+
+    return path, motion
+
+
 def check_towed_size(case: Case, nodes: int, per_node: int) -> None:
     """Refuse a ``towed_dynamic`` run whose steps or stored values (``per_node`` a node and output) exceed the
     limits (:func:`seacable._limits.check_run_size`), either formulation."""
@@ -101,7 +125,7 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     if a.current_follows_vessel:
         raise InputError("analysis.current_follows_vessel turns the current with the vessel, which only the box "
                          "formulation does. Suggested fix: formulation: box, or give the current's heading.")
-    path = functools.partial(sample_path, a.vessel)
+    path, motion = tow_path(case)
     p0, v0 = path(np.array([0.0]))  # a table too short fails below, before the run
     path(np.array([0.0, a.duration]))
     water = water_of(case)
@@ -131,7 +155,7 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     for k, att in enumerate(case.line.attachments):
         node = int(np.argmin(np.abs(net.arc_length - att.s)))
         points.append((att.name or f"attachments[{k}] ({att.kind})", float(att.s), node))
-    return PreparedTowedFE(system, path, deployed, X0, tuple(points))
+    return PreparedTowedFE(system, path, deployed, X0, tuple(points), motion)
 
 
 def _node_tension(tension, n_nodes):
@@ -199,6 +223,7 @@ def run_towed_fe(case: Case, prep: PreparedTowedFE, progress=None):
         "paid_out_length": var("time", res.deployed - case.line.length, "m",
                                "cable paid out since t = 0 (negative: hauled in)"),
     }
+    data.update(motion_variables(prep.motion, res.time))
     coords = {"time": var("time", res.time, "s", "time"),
               "s": var("node", _material_arc(res), "m", "unstretched arc length from the lower end")}
     if prep.deployed is not None:
@@ -236,3 +261,13 @@ def run_towed_fe(case: Case, prep: PreparedTowedFE, progress=None):
     ds = make_dataset(data, coords, analysis="towed_dynamic", case=case, references=REFERENCES, settings=settings)
     ds.attrs["interrupted"] = int(res.interrupted)
     return ds
+
+
+def motion_variables(motion, times) -> dict:
+    """The tow point's offsets from the vessel path by the vessel's motion on its RAOs (none without it)."""
+    if motion is None:
+        return {}
+    off = motion(np.asarray(times, float))[0]
+    return {f"vessel_motion_{axis}": var("time", off[:, k], "m", f"{axis} offset of the tow point from the vessel "
+                                                                 "path by the vessel's motion on its RAOs")
+            for k, axis in enumerate("xyz")}

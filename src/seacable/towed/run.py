@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import functools
 import math
 import warnings
 from dataclasses import dataclass
@@ -14,10 +13,10 @@ from ..case import Case, TowedDynamicAnalysis
 from ..errors import InputError, SeacableWarning
 from ..results import make_dataset, var
 from .equations import I_OB, I_ON, I_PH, I_SB, I_SN, I_T, I_TH, I_VB, I_VN, I_VT, NV
-from .fe_run import check_towed_size
+from .fe_run import check_towed_size, motion_variables, tow_path
 from .seabed import seabed_clearance, surface_excursion, warn_depth_not_modelled
 from .solver import TowedBodyParameters, cable_parameters, simulate, steady_tow
-from .vessel import initial_heading, sample_path
+from .vessel import initial_heading
 
 __all__ = ["PreparedTowed", "case_setup", "prepare_towed_dynamic", "run_towed_dynamic"]
 
@@ -37,8 +36,9 @@ REFERENCES = (
 )
 
 
-def case_setup(case: Case):
-    """Parameter vector, node count, vessel path (callable), body and solver keywords of a box-scheme case."""
+def case_setup(case: Case, with_motion: bool = False):
+    """Parameter vector, node count, vessel path (callable), body and solver keywords of a box-scheme case; with
+    ``with_motion``, also the tow point's motion on the vessel's RAOs (:func:`seacable.towed.fe_run.tow_path`)."""
     a: TowedDynamicAnalysis = case.analysis
     env = case.environment
     if len(case.line.segments) != 1 or case.line.attachments:
@@ -69,12 +69,12 @@ def case_setup(case: Case):
     if a.body is not None:
         body = TowedBodyParameters(mass=a.body.mass, added_mass=a.body.added_mass,
                                    weight_in_water=a.body.weight_in_water, drag_area=a.body.drag_area)
-    path = functools.partial(sample_path, a.vessel)
+    path, motion = tow_path(case)
     path(np.array([0.0, a.duration]))  # a table too short fails here, before the run
     kwargs = dict(output_interval=a.output_interval, current=env.current, body=body,
                   water_density=env.water_density, current_follows_vessel=a.current_follows_vessel,
                   tol=a.tolerance, max_iter=a.max_iterations)
-    return par, a.n_nodes, path, kwargs
+    return (par, a.n_nodes, path, kwargs, motion) if with_motion else (par, a.n_nodes, path, kwargs)
 
 
 @dataclass(frozen=True)
@@ -86,6 +86,7 @@ class PreparedTowed:
     path: object
     options: dict
     initial_state: np.ndarray
+    motion: object = None  # the tow point's motion on the vessel's RAOs (seacable.vessel_motion), or None
 
 
 def _check_start_direction(a: TowedDynamicAnalysis, path, length: float) -> None:
@@ -135,7 +136,7 @@ def prepare_towed_box(case: Case) -> PreparedTowed:
         As :func:`run_towed_dynamic` would before its first step.
     """
     a: TowedDynamicAnalysis = case.analysis
-    par, n, path, kwargs = case_setup(case)
+    par, n, path, kwargs, motion = case_setup(case, with_motion=True)
     check_towed_size(case, n, _PER_NODE)
     _check_start_direction(a, path, case.line.length)
     _, vel0 = path(np.array([0.0]))
@@ -163,7 +164,7 @@ def prepare_towed_box(case: Case) -> PreparedTowed:
                 "formulation has no seabed contact. Suggested fix: formulation: finite_element (seabed contact), "
                 "a shorter cable or a faster tow.")
     warn_depth_not_modelled("towed_dynamic (box formulation)", depth)
-    return PreparedTowed(par, n, path, kwargs, h0)
+    return PreparedTowed(par, n, path, kwargs, h0, motion)
 
 
 def run_towed_dynamic(case: Case, progress=None):
@@ -231,6 +232,7 @@ def run_towed_dynamic(case: Case, progress=None):
             res.time, pos[..., 2], depth, analysis="towed_dynamic",
             node_name=lambda j: f"node {j}" + ("" if j else " (the towed body)" if a.body else " (the lower end)")),
             "m", "least height of a node above the seabed (negative: below it; no seabed contact modelled)")
+    data.update(motion_variables(prep.motion, res.time))
     coords = {"time": var("time", res.time, "s", "time"),
               "s": var("node", res.s, "m", "unstretched arc length from the lower end")}
     settings = dict(res.settings)
