@@ -35,6 +35,9 @@ os.environ.pop("PYTHONDONTWRITEBYTECODE", None)  # the xdist workers and the pro
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))   # the tests' own helpers: _evidence
+import _evidence  # noqa: E402
+
 #: A parallel run of at least this many tests shares the compilation out (a run of a few files does not).
 _MIN_TESTS = 1000
 
@@ -85,3 +88,62 @@ def _compile_this_workers_kernels(request, tmp_path_factory):
             if _claim(folder, k):
                 for name, analysis in _FAMILIES[k][0]:
                     _run_example(name, analysis)
+
+
+# ------------------------------------------------------------------------- the validation ledger (_evidence)
+# Each process records the checks its tests make (_evidence.RECORDS); a pytest-xdist worker hands its records to
+# the controller at its end, and the controller (or a run without workers) writes them to the evidence file the
+# documentation's validation page is built from, merged with that file's records of the tests not run this time.
+
+_WORKER_RECORDS: list[dict] = []
+
+
+def pytest_sessionfinish(session, exitstatus):
+    import json
+
+    if hasattr(session.config, "workerinput"):          # an xdist worker: to the controller
+        session.config.workeroutput["seacable_evidence"] = json.dumps(_evidence.RECORDS)
+        return
+    records = _WORKER_RECORDS + _evidence.RECORDS
+    if records:
+        _write_evidence(records)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    import json
+
+    _WORKER_RECORDS.extend(json.loads(getattr(node, "workeroutput", {}).get("seacable_evidence", "[]")))
+
+
+def _write_evidence(records: list[dict]) -> None:
+    """Write ``records`` to the evidence file atomically, keeping the file's records of tests not run now (whose
+    file still exists)."""
+    import json
+    import tempfile
+    import time
+
+    path = Path(_evidence.evidence_path())
+    root = Path(__file__).resolve().parents[1]
+    ran = {r["test"] for r in records}
+    kept = []
+    try:
+        old = json.loads(path.read_text())["records"]
+    except (OSError, ValueError, KeyError, TypeError):
+        old = []
+    for r in old:
+        if r.get("test") not in ran and (root / r.get("test", "").split("::")[0]).is_file():
+            kept.append(r)
+    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    for r in records:
+        r.setdefault("recorded", stamp)
+    out = {"written": stamp, "records": sorted(kept + records, key=lambda r: (r["source"], r["test"]))}
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as f:
+            json.dump(out, f, indent=1)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
