@@ -13,6 +13,7 @@ import math
 from pathlib import Path
 
 import numpy as np
+from _evidence import check
 import pytest
 import yaml
 
@@ -65,8 +66,12 @@ def test_steady_tow_tension_is_the_barge_resistance(steady):
     resistance = barge_resistance(barge, 2.5722)
     # the towline pulls along its last element, 1-2 deg from horizontal: H = T cos(angle) differs from
     # T by < 1e-3; the barge has settled to the tug's speed (its surge oscillation decays by 1e-4 by then)
-    assert last.barge_speed.values == pytest.approx(2.5722, rel=1e-4)
-    assert last.barge_tension.values == pytest.approx(resistance, rel=1e-3)
+    check(last.barge_speed.values, 2.5722, rtol=1e-4, source="Paper 003 (towline), steady tow", unit="m/s",
+          quantity="barge speed behind the tug at 5 kn (last 50 outputs)",
+          why="the barge's surge oscillation has decayed to 1e-4 by then")
+    check(last.barge_tension.values, resistance, rtol=1e-3, source="Paper 003 (towline), steady tow", unit="N",
+          quantity="towline tension at the barge = the barge's resistance at 5 kn (last 50 outputs)",
+          why="the line pulls 1-2 deg from horizontal: T and H differ by < 1e-3")
 
 
 def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
@@ -85,8 +90,12 @@ def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
     # the joints on the catenary within 1 cm of a 0.9 m sag (measured 5.5 mm): rigid elements carry
     # their weight at their centres, the catenary continuously, so the joints of a chain of rigid links
     # lie on it to O(l^2); and each pin gives by its shear over its stiffness k / 3 (some 2 mm here)
-    assert float(last.barge_tension) == pytest.approx(float(res.anchor_tension), rel=1e-4)
-    assert float(last.top_tension) == pytest.approx(float(res.fairlead_tension), rel=1e-4)
+    check(float(last.barge_tension), float(res.anchor_tension), rtol=1e-4, unit="N",
+          source="Closed form: elastic catenary (towline in air)", quantity="paper 003's steady tow, barge-end tension",
+          why="the chain of rigid links settles 3.6e-5 below the continuous catenary")
+    check(float(last.top_tension), float(res.fairlead_tension), rtol=1e-4, unit="N",
+          source="Closed form: elastic catenary (towline in air)", quantity="paper 003's steady tow, tug-end tension",
+          why="the chain of rigid links settles 3.6e-5 below the continuous catenary")
     assert np.max(np.abs(z - z_cat)) < 1e-2
 
 
