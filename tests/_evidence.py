@@ -92,6 +92,39 @@ def check(ours, reference, *, rtol: float | None = None, atol: float | None = No
         "ours": _number(ours), "reference": _number(reference),
         "rtol": rtol, "atol": atol, "deviation": float(dev.ravel()[worst]) if dev.size else 0.0,
         "relative_deviation": rel, "why": why, "passed": ok, "test": _test_id()})
-    assert ok, (f"{source}: {quantity}: ours {a.ravel()[worst]!r} vs reference {b.ravel()[worst]!r} {unit}; "
+    assert ok, (f"{source}: {quantity}: ours {float(a.ravel()[worst])!r} vs reference {float(b.ravel()[worst])!r}"
+                f"{' ' + unit if unit else ''}; "
                 f"deviation {dev.ravel()[worst]:.6g} > tolerance {limit.ravel()[worst]:.6g} "
                 f"(rtol={rtol}, atol={atol}: {why})")
+
+
+def write_records(records: list[dict[str, Any]]) -> None:
+    """Write a run's ``records`` to :func:`evidence_path` atomically (a temporary file renamed into place), keeping
+    the file's records of the tests not run this time whose test file still exists (a run of a few files updates
+    their records and leaves the rest)."""
+    import json
+    import tempfile
+    import time
+    from pathlib import Path
+
+    path = Path(evidence_path())
+    root = Path(__file__).resolve().parents[1]
+    ran = {r["test"] for r in records}
+    try:
+        old = json.loads(path.read_text())["records"]
+    except (OSError, ValueError, KeyError, TypeError):
+        old = []
+    kept = [r for r in old if r.get("test") not in ran and (root / r.get("test", "").split("::")[0]).is_file()]
+    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    for r in records:
+        r.setdefault("recorded", stamp)
+    out = {"written": stamp, "records": sorted(kept + records, key=lambda r: (r["source"], r["test"]))}
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w") as f:
+            json.dump(out, f, indent=1)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

@@ -106,7 +106,7 @@ def pytest_sessionfinish(session, exitstatus):
         return
     records = _WORKER_RECORDS + _evidence.RECORDS
     if records:
-        _write_evidence(records)
+        _evidence.write_records(records)
 
 
 @pytest.hookimpl(optionalhook=True)
@@ -114,36 +114,3 @@ def pytest_testnodedown(node, error):
     import json
 
     _WORKER_RECORDS.extend(json.loads(getattr(node, "workeroutput", {}).get("seacable_evidence", "[]")))
-
-
-def _write_evidence(records: list[dict]) -> None:
-    """Write ``records`` to the evidence file atomically, keeping the file's records of tests not run now (whose
-    file still exists)."""
-    import json
-    import tempfile
-    import time
-
-    path = Path(_evidence.evidence_path())
-    root = Path(__file__).resolve().parents[1]
-    ran = {r["test"] for r in records}
-    kept = []
-    try:
-        old = json.loads(path.read_text())["records"]
-    except (OSError, ValueError, KeyError, TypeError):
-        old = []
-    for r in old:
-        if r.get("test") not in ran and (root / r.get("test", "").split("::")[0]).is_file():
-            kept.append(r)
-    stamp = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
-    for r in records:
-        r.setdefault("recorded", stamp)
-    out = {"written": stamp, "records": sorted(kept + records, key=lambda r: (r["source"], r["test"]))}
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as f:
-            json.dump(out, f, indent=1)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
