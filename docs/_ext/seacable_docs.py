@@ -178,7 +178,8 @@ def examples_page() -> str:
            _title("Examples", "="),
            "The case files in ``examples/``: run one with ``seacable run examples/NAME.yaml -o out/NAME.nc`` "
            "(its figures beside the result); ``python examples/demo.py`` runs the main ones. Figures shown here "
-           "were made by those runs and are kept in ``docs/_static/examples`` (the site does not run cases).", ""]
+           "were made by those runs (``python docs/make_figures.py``) and are kept in ``docs/_static/examples``: the site "
+           "does not run cases.", ""]
     figures = DOCS / "_static" / "examples"
     for path in sorted((ROOT / "examples").glob("*.yaml")):
         data = yaml.safe_load(path.read_text()) or {}
@@ -189,7 +190,7 @@ def examples_page() -> str:
             out += [_cell(desc), ""]
         if analysis:
             out += [f"Analysis: ``{analysis}``.", ""]
-        for png in sorted(figures.glob(f"{path.stem}*.png")):
+        for png in sorted(figures.glob(f"{path.stem}_*.png")):
             out += [f".. figure:: _static/examples/{png.name}", "   :width: 90%", "", f"   ``{png.name}``", ""]
         out += [f".. literalinclude:: ../examples/{path.name}", "   :language: yaml", ""]
     return "\n".join(out) + "\n"

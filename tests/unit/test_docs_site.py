@@ -157,6 +157,12 @@ def test_the_site_has_its_pages_and_asks_nothing_of_the_network(site):
         for attr in ('src="http', "src='http", 'href="//', 'src="//'):
             assert attr not in text, (page, attr)
         assert "<link rel=\"stylesheet\" href=\"http" not in text, page
+    # the examples page shows every example file, and the pre-built figures (docs/make_figures.py)
+    examples = (site / "examples.html").read_text()
+    for path in (ROOT / "examples").glob("*.yaml"):
+        assert f'id="example-{path.stem.replace("_", "-")}"' in examples, path.stem
+    for png in (DOCS / "_static" / "examples").glob("*.png"):
+        assert f'src="_images/{png.name}"' in examples, png.name
     towed = (site / "models" / "towed.html").read_text()
     assert "../_static/mathjax/tex-chtml.js" in towed and "\\frac{\\partial T}{\\partial s}" in towed
 
