@@ -19,8 +19,8 @@ Two independent checks of every regime:
 """
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 from scipy.integrate import solve_ivp
 
 from seacable.statics.catenary import CatenaryRegime as R

@@ -40,8 +40,8 @@ curvature, 0.09 % on the 80 m largest tension) but rings in the unresolved axial
 from __future__ import annotations
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 import seacable as sc
 from seacable.case import Case

@@ -23,8 +23,8 @@ References
 """
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 from scipy.integrate import quad
 from scipy.optimize import brentq
 from scipy.special import j0, jn_zeros, y0

@@ -22,8 +22,8 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 from seacable.errors import ConvergenceError, InputError, NoSolutionError
 from seacable.io.moordyn import is_moordyn_file, moordyn_system, read_moordyn

@@ -21,8 +21,8 @@ import importlib
 import os
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 from seacable.statics.catenary import CatenaryRegime as R
 from seacable.statics.catenary import catenary

@@ -19,8 +19,8 @@ line lies 0.65 mm into the seabed between ends held on its surface, and the end 
 from __future__ import annotations
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 import seacable as sc
 

@@ -23,8 +23,8 @@ import functools
 import math
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 from seacable import Current
 from seacable.statics.towed import critical_angle, towed_cable_steady

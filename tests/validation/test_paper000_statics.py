@@ -22,8 +22,8 @@ pi d) dT/ds gains 1/2 rho C_dt pi d U^2 cos^2(phi) = 1.912 N/m and the top tensi
 """
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 from seacable.statics.towed import critical_angle, towed_cable_steady
 

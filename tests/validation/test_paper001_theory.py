@@ -24,8 +24,8 @@ Findings:
 """
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 from seacable.errors import SeacableWarning
 from seacable.statics.laying import hydrodynamic_constant, laying_angle, straight_line_lay

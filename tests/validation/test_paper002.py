@@ -21,8 +21,8 @@ import csv
 from pathlib import Path
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 from scipy.special import jn_zeros
 
 from seacable.modal.vertical import vertical_cable_frequencies, vertical_cable_period

@@ -13,9 +13,9 @@ import math
 from pathlib import Path
 
 import numpy as np
-from _evidence import check
 import pytest
 import yaml
+from _evidence import check
 
 import seacable as sc
 from seacable.statics.catenary import catenary

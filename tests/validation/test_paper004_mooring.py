@@ -25,9 +25,9 @@ the catenary's seabed is rigid. The sinkage enters the comparisons only at the 1
 from pathlib import Path
 
 import numpy as np
-from _evidence import check
 import pytest
 import yaml
+from _evidence import check
 from scipy.optimize import brentq
 
 import seacable

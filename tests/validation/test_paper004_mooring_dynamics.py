@@ -13,8 +13,8 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 import seacable as sc
 

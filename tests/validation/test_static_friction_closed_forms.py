@@ -26,8 +26,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from _evidence import check
 import pytest
+from _evidence import check
 
 import seacable as sc
 from seacable.mooring.friction import SLIDE_FACTOR, friction_targets
