@@ -46,6 +46,7 @@ REQUIRED_SOURCES = (
     "MoorDyn",
     "OrcaFlex",
     "CableDyn",
+    "Lowe & Langley",
     "Closed form",
 )
 
