@@ -241,19 +241,21 @@ def validation_page(evidence: dict | None, path: str) -> str:
         by_source.setdefault(r["source"], []).append(r)
     for source in sorted(by_source):
         out += [_title(source, "-"),
-                ".. list-table::", "   :header-rows: 1", "   :widths: 26 12 12 10 8 6 26", "",
-                "   * - quantity", "     - ours", "     - reference", "     - tolerance", "     - deviation",
-                "     - pass", "     - why (and the test)"]
+                ".. list-table::", "   :header-rows: 1", "   :widths: 40 15 15 11 13 6", "",
+                "   * - quantity (why the tolerance; the test file)", "     - ours", "     - reference",
+                "     - tolerance", "     - deviation", "     - pass"]
         for r in by_source[source]:
             unit = f" {r['unit']}" if r.get("unit") else ""
             dev = _fmt(r.get("deviation"))
             rel = r.get("relative_deviation")
             if rel is not None and not math.isnan(rel):
                 dev += f" ({rel:.2g} rel)"
-            out += [f"   * - {_cell(r['quantity'])}", f"     - {_cell(_fmt(r['ours']) + unit)}",
+            test = r.get("test", "").split("::")   # the file (the function is in the evidence file)
+            out += [f"   * - {_cell(r['quantity'])}", "",
+                    f"       *why:* {_cell(r.get('why', ''))} (``{_cell(test[0].rsplit('/', 1)[-1])}``)",
+                    f"     - {_cell(_fmt(r['ours']) + unit)}",
                     f"     - {_cell(_fmt(r['reference']) + unit)}", f"     - {_cell(_tolerance(r))}",
-                    f"     - {_cell(dev)}", f"     - {'yes' if r.get('passed') else '**NO**'}",
-                    f"     - {_cell(r.get('why', ''))} (``{_cell(r.get('test', ''))}``)"]
+                    f"     - {_cell(dev)}", f"     - {'yes' if r.get('passed') else '**NO**'}"]
         out.append("")
     return "\n".join(out) + "\n"
 

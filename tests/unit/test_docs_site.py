@@ -10,6 +10,7 @@ suite's own evidence file is written when the whole run ends, after this test). 
 from __future__ import annotations
 
 import ast
+import html
 import json
 import os
 import shutil
@@ -188,7 +189,7 @@ def test_the_case_reference_is_the_schema(site):
 def test_the_validation_page_tabulates_the_evidence(site):
     text = (site / "validation.html").read_text()
     for source in seacable_docs.REQUIRED_SOURCES:
-        assert f"{source} (test)" in text, source
+        assert html.escape(f"{source} (test)", quote=False) in text, source
     assert "5 values, 1 to 5" in text and "rel 0.001" in text and "printed digits" in text
     n = len(seacable_docs.REQUIRED_SOURCES)
     assert f"{n} checks, {n} passed" in text
@@ -281,10 +282,10 @@ def test_the_index_page_opens_in_headless_chromium_offline(site, tmp_path, brows
                for line in console_planted), console_planted
     dom = _dom(index, tmp_path / "profile_dom")
     assert dom.returncode == 0, dom.stderr[-2000:]
-    html = dom.stdout
-    assert "<title>seacable" in html and "sidebar-tree" in html
+    page = dom.stdout
+    assert "<title>seacable" in page and "sidebar-tree" in page
     for entry in ("Getting started", "Models", "Case-file reference", "Validation", "API reference"):
-        assert f">{entry}</a>" in html, entry
+        assert f">{entry}</a>" in page, entry
     rgb = np.asarray(Image.open(png).convert("RGB"), dtype=int)
     assert rgb.shape == (900, 1280, 3)
     # text drawn: dark pixels in the navigation (left) and in the page (the title and the text)
