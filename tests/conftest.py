@@ -35,6 +35,9 @@ os.environ.pop("PYTHONDONTWRITEBYTECODE", None)  # the xdist workers and the pro
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))   # the tests' own helpers: _evidence
+import _evidence  # noqa: E402
+
 #: A parallel run of at least this many tests shares the compilation out (a run of a few files does not).
 _MIN_TESTS = 1000
 
@@ -85,3 +88,29 @@ def _compile_this_workers_kernels(request, tmp_path_factory):
             if _claim(folder, k):
                 for name, analysis in _FAMILIES[k][0]:
                     _run_example(name, analysis)
+
+
+# ------------------------------------------------------------------------- the validation ledger (_evidence)
+# Each process records the checks its tests make (_evidence.RECORDS); a pytest-xdist worker hands its records to
+# the controller at its end, and the controller (or a run without workers) writes them to the evidence file the
+# documentation's validation page is built from, merged with that file's records of the tests not run this time.
+
+_WORKER_RECORDS: list[dict] = []
+
+
+def pytest_sessionfinish(session, exitstatus):
+    import json
+
+    if hasattr(session.config, "workerinput"):          # an xdist worker: to the controller
+        session.config.workeroutput["seacable_evidence"] = json.dumps(_evidence.RECORDS)
+        return
+    records = _WORKER_RECORDS + _evidence.RECORDS
+    if records:
+        _evidence.write_records(records)
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node, error):
+    import json
+
+    _WORKER_RECORDS.extend(json.loads(getattr(node, "workeroutput", {}).get("seacable_evidence", "[]")))

@@ -74,6 +74,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from _evidence import check
 
 sys.path.insert(0, str(Path(__file__).parent))
 import _moordyn_peer as peer
@@ -106,4 +107,8 @@ def test_chain_heave_rms_error_no_larger_than_moordyns(tag, amp, rho):
                              spectral_radius=rho)
     acc = peer.accuracy(ours, ref)
     assert acc["n_compared"] == len(ref["time"]) == 201
-    assert acc["fairlead_rms_error"] <= _moordyn_error(tag, amp)
+    check(acc["fairlead_rms_error"], 0.0, atol=_moordyn_error(tag, amp), unit="N",
+          source="MoorDyn 2.7.2 (chain cases against OrcaFlex)",
+          quantity=f"{tag} chain, {amp} heave, spectral radius {rho}: RMS error of the fairlead tension against "
+                   "OrcaFlex (reference 0, bound MoorDyn's own RMS error)",
+          why="no larger than MoorDyn 2.7.2's error on the same deck, motion, times and measure")

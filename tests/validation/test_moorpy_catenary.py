@@ -22,6 +22,7 @@ import os
 
 import numpy as np
 import pytest
+from _evidence import check
 
 from seacable.statics.catenary import CatenaryRegime as R
 from seacable.statics.catenary import catenary
@@ -77,8 +78,11 @@ def test_end_forces_match_moorpy(case):
     r = catenary(*case)
     scale = max(abs(HF), abs(VF))
     # 1e-5 of the larger fairlead component (see module docstring)
-    for ours, theirs in ((r.H_fairlead, HF), (r.V_fairlead, VF), (r.H_anchor, HA), (r.V_anchor, VA)):
-        assert float(ours) == pytest.approx(theirs, rel=1e-5, abs=1e-5 * scale)
+    check([float(v) for v in (r.H_fairlead, r.V_fairlead, r.H_anchor, r.V_anchor)], [HF, VF, HA, VA],
+          rtol=1e-5, atol=1e-5 * scale, source="MoorPy (catenary)", unit="N",
+          quantity=f"end forces H_B, V_B, H_A, V_A: span {case[0]:g} m, height {case[1]:g} m, L {case[2]:g} m, "
+                   f"w {case[4]:g} N/m, mu {case[5]:g}, seabed {bool(case[6])}",
+          why="1e-5 of the larger fairlead component: both solve the same equations to 1e-9 L")
     assert float(r.grounded_length) == pytest.approx(info["LBot"], rel=1e-5, abs=1e-5 * case[2])
 
 

@@ -23,6 +23,7 @@ pi d) dT/ds gains 1/2 rho C_dt pi d U^2 cos^2(phi) = 1.912 N/m and the top tensi
 
 import numpy as np
 import pytest
+from _evidence import check
 
 from seacable.statics.towed import critical_angle, towed_cable_steady
 
@@ -38,18 +39,24 @@ def test_table2_tension_by_node_without_tangential_drag():
     r = towed_cable_steady(L, W, D, U, CDN, 0.0, water_density=RHO, n_points=7)
     # 0.5 % is the brief's acceptance band; the measured worst deviation is 0.16 % at node 2,
     # where the paper's own values are not exactly linear in s (195.50 * 6 = 1173 != 1171.15).
-    np.testing.assert_allclose(r.tension[1:], TABLE2_PRESENT[1:], rtol=5e-3)
+    check(r.tension[1:], TABLE2_PRESENT[1:], rtol=5e-3, source="Paper 000 (towed cable), Table 2", unit="N",
+          quantity="quasi-static tension by node, free end to vessel (no tangential drag)",
+          why="0.5 % acceptance band; the printed values are not exactly linear in s (195.50 x 6 != 1171.15)")
     assert r.tension[0] == 0.0
     # Peer code (WHOI Cable) column, same band: measured worst 0.12 %.
-    np.testing.assert_allclose(r.tension[1:], TABLE2_WHOI[1:], rtol=5e-3)
+    check(r.tension[1:], TABLE2_WHOI[1:], rtol=5e-3, source="WHOI Cable (paper 000, Table 2)", unit="N",
+          quantity="quasi-static tension by node, free end to vessel",
+          why="0.5 % band as for the paper's own column; WHOI Cable is a different discretisation")
     # Top value: ours 1171.16 N vs 1171.15 N; 0.05 N is the rounding of the printed 1171.1 check.
-    assert r.top_tension == pytest.approx(1171.1, abs=0.1)
+    check(r.top_tension, 1171.1, atol=0.1, source="Paper 000 (towed cable), Table 2", unit="N", quantity="top tension (SPEC's check)",
+          why="the printed 1171.1 N has one decimal")
 
 
 def test_analytic_slope_and_critical_angle():
     phi = critical_angle(W, D, U, CDN, RHO)
     # SPEC.md: 6.889 N/m (printed to 4 digits, so +-0.0005 N/m).
-    assert W * np.sin(phi) == pytest.approx(6.889, abs=5e-4)
+    check(W * np.sin(phi), 6.889, atol=5e-4, source="Paper 000 (towed cable), critical angle", unit="N/m",
+          quantity="tension gradient w0 sin(phi) at the critical angle", why="printed to 4 digits")
     r = towed_cable_steady(L, W, D, U, CDN, 0.0, water_density=RHO, n_points=7)
     # The integrated tension is the closed form to the integrator tolerance (rtol 1e-10).
     np.testing.assert_allclose(np.diff(r.tension) / np.diff(r.s), W * np.sin(phi), rtol=1e-8)
@@ -68,9 +75,13 @@ def test_top_tension_with_tangential_drag_eq6():
     analytic = L * (W * np.sin(phi) + 0.5 * RHO * CDT * np.pi * D * U**2 * np.cos(phi) ** 2)
     r = towed_cable_steady(L, W, D, U, CDN, CDT, water_density=RHO, n_points=7)
     # Closed form (straight cable, linear tension) to the integrator tolerance.
-    assert r.top_tension == pytest.approx(analytic, rel=1e-8)
+    check(r.top_tension, analytic, rtol=1e-8, source="Closed form: straight towed cable", unit="N",
+          quantity="top tension with tangential drag, L (w sin phi + 1/2 rho Cdt pi d U^2 cos^2 phi)",
+          why="the integrator's tolerance")
     # SPEC.md's "about 1496 N": 0.5 % band of the brief; measured 1496.3 N.
-    assert r.top_tension == pytest.approx(1496.0, rel=5e-3)
+    check(r.top_tension, 1496.0, rtol=5e-3, source="Paper 000 (towed cable), eq. (6)", unit="N",
+          quantity="top tension with eq. (6)'s tangential drag (SPEC: about 1496 N)",
+          why="0.5 % band; SPEC gives 'about' 1496 N")
     # And it is clearly not Table 2: the paper's table was computed without tangential drag.
     assert r.top_tension > 1.2 * TABLE2_PRESENT[-1]
 

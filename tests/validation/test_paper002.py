@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _evidence import check
 from scipy.special import jn_zeros
 
 from seacable.modal.vertical import vertical_cable_frequencies, vertical_cable_period
@@ -72,7 +73,9 @@ def test_table1_feet_inputs(row):
     # The paper rounds some entries and truncates others (C(61, 427) = 11.3894 printed 11.38,
     # B(152.5, 183) = 2.3554 printed 2.35), so the printed value is within one unit of its last
     # digit of the true value; 1e-9 s covers our root-finding and floating-point error.
-    assert abs(ours - printed) <= _unit(row["period_s"]) + 1e-9
+    check(ours, printed, atol=_unit(row["period_s"]) + 1e-9, source="Paper 002 (natural periods), Table 1", unit="s",
+          quantity=f"fundamental period, row {row['row']}, v = {row['v_mps']} m/s, L = {row['length_m']} m",
+          why="one unit of the printed last digit (the paper rounds some entries and truncates others)")
 
 
 @pytest.mark.parametrize("row", [r for r in _table() if r["corrected_s"]],
@@ -84,7 +87,10 @@ def test_table1_misprints(row):
     # The printed entry is off by far more than the print precision ...
     assert abs(ours - float(row["period_s"])) > 3 * unit
     # ... while our reading of it is reproduced like every other entry (same tolerance as above).
-    assert abs(ours - float(row["corrected_s"])) <= unit + 1e-9
+    check(ours, float(row["corrected_s"]), atol=unit + 1e-9, source="Paper 002 (natural periods), Table 1 (misprints corrected)", unit="s",
+          quantity=f"fundamental period, row {row['row']}, v = {row['v_mps']} m/s, L = {row['length_m']} m "
+                   f"(printed {row['period_s']})",
+          why="one unit of the last digit, as the other entries")
 
 
 def test_table1_metric_headings():
@@ -111,7 +117,9 @@ def test_eq15_within_about_5_percent_of_exact():
     # The paper says "within 5 %"; the largest error, at v = 20 ft/s and L = 1400 ft, is
     # 1 - 24.0075/25.3447 = 5.28 %. The paper's own numbers (24.00 vs 25.34) give 5.29 %, so the
     # claim is slightly optimistic; 1e-3 brackets the 4-digit values.
-    assert err.max() == pytest.approx(0.0528, abs=1e-3)
+    check(err.max(), 0.0528, atol=1e-3, source="Paper 002 (natural periods), section 4",
+          quantity="largest error of eq. (15) against the exact Bessel solution (v = 20 ft/s, L = 1400 ft)",
+          why="brackets the paper's 4-digit values (24.00 vs 25.34 s: 5.29 %)")
     assert np.unravel_index(err.argmax(), err.shape) == (4, 8)
 
 
@@ -124,12 +132,16 @@ def test_near_vertical_limit_equal_height():
     w_in = mode_frequencies(T1, 2, "in") / scale
     # f(phi0) sqrt(cos phi0) -> 2 with an O(sqrt(cos phi0)) = O(3e-5) remainder: 1e-4 relative.
     assert w_out == pytest.approx(np.pi / 4, rel=1e-4)  # out of plane: 0.785
-    assert w_in[0] == pytest.approx(np.pi / 2, rel=1e-4)  # in plane: 1.571, the paper's "1.6"
+    check(w_in[0], np.pi / 2, rtol=1e-4, source="Paper 002 (natural periods), section 5",
+          quantity="near-vertical in-plane frequency over sqrt(2g/L) (the paper's 1.6)",
+          why="the O(sqrt(cos phi0)) remainder at phi0 = pi/2 - 1e-9")  # in plane: 1.571, the paper's "1.6"
     assert round(w_in[0], 1) == 1.6
     assert w_in[1] / w_in[0] == pytest.approx(1.5, rel=1e-12)  # "second = 1.5 x first"
     # Exact limit: two hanging chains of length L/2 (T0 = 0), omega = (j01/2) sqrt(g/(L/2)).
     exact = vertical_cable_frequencies(length / 2, 0.0, 1.0, method="exact", n_modes=1, gravity=g)
-    assert exact[0] / scale == pytest.approx(jn_zeros(0, 1)[0] / 2, rel=1e-12)
+    check(exact[0] / scale, jn_zeros(0, 1)[0] / 2, rtol=1e-12, source="Closed form: hanging chain (Bessel J0)",
+          quantity="near-vertical exact frequency over sqrt(2g/L), j01/2 (the paper's 1.20)",
+          why="root finding to machine precision")
     assert round(exact[0] / scale, 2) == 1.20
 
 
@@ -139,4 +151,6 @@ def test_small_sag_is_taut_string_eq12():
     H = m * g * length / (2 * np.tan(phi0))
     T1 = suspended_cable_period(length, phi0, m, gravity=g)
     # Relative error of the small-angle limit is O(phi0^2) ~ 1e-8.
-    assert 2 * np.pi / T1 == pytest.approx(np.pi / length * np.sqrt(H / m), rel=1e-7)
+    check(2 * np.pi / T1, np.pi / length * np.sqrt(H / m), rtol=1e-7, source="Closed form: taut string",
+          quantity="first frequency of a nearly taut cable, (pi/L) sqrt(H/m) (paper 002 eq. (12))", unit="rad/s",
+          why="the small-angle limit's O(phi0^2) ~ 1e-8 error")

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import yaml
+from _evidence import check
 
 import seacable as sc
 from seacable.statics.catenary import catenary
@@ -65,8 +66,12 @@ def test_steady_tow_tension_is_the_barge_resistance(steady):
     resistance = barge_resistance(barge, 2.5722)
     # the towline pulls along its last element, 1-2 deg from horizontal: H = T cos(angle) differs from
     # T by < 1e-3; the barge has settled to the tug's speed (its surge oscillation decays by 1e-4 by then)
-    assert last.barge_speed.values == pytest.approx(2.5722, rel=1e-4)
-    assert last.barge_tension.values == pytest.approx(resistance, rel=1e-3)
+    check(last.barge_speed.values, 2.5722, rtol=1e-4, source="Paper 003 (towline), steady tow", unit="m/s",
+          quantity="barge speed behind the tug at 5 kn (last 50 outputs)",
+          why="the barge's surge oscillation has decayed to 1e-4 by then")
+    check(last.barge_tension.values, resistance, rtol=1e-3, source="Paper 003 (towline), steady tow", unit="N",
+          quantity="towline tension at the barge = the barge's resistance at 5 kn (last 50 outputs)",
+          why="the line pulls 1-2 deg from horizontal: T and H differ by < 1e-3")
 
 
 def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
@@ -85,8 +90,12 @@ def test_steady_tow_shape_is_the_elastic_catenary_in_air(steady):
     # the joints on the catenary within 1 cm of a 0.9 m sag (measured 5.5 mm): rigid elements carry
     # their weight at their centres, the catenary continuously, so the joints of a chain of rigid links
     # lie on it to O(l^2); and each pin gives by its shear over its stiffness k / 3 (some 2 mm here)
-    assert float(last.barge_tension) == pytest.approx(float(res.anchor_tension), rel=1e-4)
-    assert float(last.top_tension) == pytest.approx(float(res.fairlead_tension), rel=1e-4)
+    check(float(last.barge_tension), float(res.anchor_tension), rtol=1e-4, unit="N",
+          source="Closed form: elastic catenary (towline in air)", quantity="paper 003's steady tow, barge-end tension",
+          why="the chain of rigid links settles 3.6e-5 below the continuous catenary")
+    check(float(last.top_tension), float(res.fairlead_tension), rtol=1e-4, unit="N",
+          source="Closed form: elastic catenary (towline in air)", quantity="paper 003's steady tow, tug-end tension",
+          why="the chain of rigid links settles 3.6e-5 below the continuous catenary")
     assert np.max(np.abs(z - z_cat)) < 1e-2
 
 
@@ -154,7 +163,9 @@ def test_zigzag_barge_tension_is_periodic_with_the_tug(zigzag):
     # the line stays taut, and pulls on the average the barge's resistance at 2 knots: 0.8 % more (the
     # yawing barge's cross-flow drag and lift, and the line's angle); asserted within 2 %
     assert not late.slack.values.any()
-    assert tension.mean() == pytest.approx(_zigzag_tow()[1], rel=2e-2)
+    check(tension.mean(), _zigzag_tow()[1], rtol=2e-2, source="Paper 003 (towline), zig-zag", unit="N",
+          quantity="mean barge tension in the 2 kn zig-zag = the barge's straight-ahead resistance",
+          why="the yawing barge's cross-flow drag and lift and the line's angle add 0.8 %")
 
 
 def test_barge_overrunning_the_line_piles_it_up_and_the_run_goes_on():
@@ -194,7 +205,8 @@ def test_payout_releases_elements_at_equal_intervals_and_reaches_steady_tow():
     # only the quadratic resistance damps: +-0.3 % in speed and +-2 % in tension at 250-300 s; their
     # means over that window (1.35 periods) are within 0.1 % and 1 %
     late = ds.where(ds.time >= 250.0, drop=True)
-    assert float(late.barge_speed.mean()) == pytest.approx(2.5722, rel=1e-3)
+    check(float(late.barge_speed.mean()), 2.5722, rtol=1e-3, source="Paper 003 (towline), payout", unit="m/s",
+          quantity="barge speed once the line is paid out (tug at 5 kn)", why="the late window's surge oscillation")
     barge = sc.load_case(EXAMPLES / "paper003_payout.yaml").analysis.barge
     assert float(late.barge_tension.mean()) == pytest.approx(barge_resistance(barge, 2.5722), rel=1e-2)
 

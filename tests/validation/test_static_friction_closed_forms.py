@@ -27,6 +27,7 @@ import math
 
 import numpy as np
 import pytest
+from _evidence import check
 
 import seacable as sc
 from seacable.mooring.friction import SLIDE_FACTOR, friction_targets
@@ -96,7 +97,9 @@ def test_the_slid_length_of_a_pulled_line_is_its_pull_over_the_friction():
     slid = L - float(ds.s.values[np.argmax(moved > u_s)])
     assert slid + math.sqrt(2 * EA * u_s / (MU * W)) == pytest.approx(P / (MU * W), abs=1.5 * L / 100)
     np.testing.assert_allclose(once.x.values[0], ds.x.values[1], rtol=0, atol=1e-6)
-    assert float(once.fairlead_tension[0]) == pytest.approx(P, rel=1e-6)
+    check(float(once.fairlead_tension[0]), P, rtol=1e-6, source="Closed form: Coulomb friction with a slip distance",
+          unit="N", quantity="pull on a grounded line held by friction: fairlead tension = the pull",
+          why="the Newton solve's tolerance")
 
 
 def _lateral(speed, friction_distance=0.01):
@@ -122,7 +125,9 @@ def test_a_grounded_line_in_a_lateral_current_below_its_friction_is_held_its_sli
     ds = sc.run(_lateral(speed))
     mid = ds.sizes["node"] // 2
     want = 0.01 * ratio / math.sqrt(1 - ratio**2)
-    assert float(ds.y[mid]) == pytest.approx(want, rel=1e-4)
+    check(float(ds.y[mid]), want, rtol=1e-4, source="Closed form: Coulomb friction with a slip distance", unit="m",
+          quantity=f"grounded line in a lateral current at {ratio} of its friction: slip d_f r / sqrt(1 - r^2)",
+          why="the line's tension bends it only near its held ends")
     assert float(ds.x[mid]) == pytest.approx(1.001 * float(ds.s[mid]), abs=1e-6)
 
 
