@@ -15,7 +15,9 @@ Refused, each with what to change: bodies (MoorDyn's body is a 6-DOF point mass:
 hydrodynamic databases and loads a deck cannot hold), lines of several sections or with attachments (clump weights,
 buoyancy modules), ends held in bending, line types with a weight in water of their own or a nonlinear or
 viscoelastic EA, points with an external force, and an environment with current, waves, wind or a sloping seabed.
-MoorDyn's axial damping BA has no counterpart in a case: the deck gets ``BA = -1`` (a critically damped segment
+The deck's time step ``dtM`` is a tenth of the shortest segment's axial wave time; ``threshIC`` 1e-7 (``TmaxIC``
+500 s) has MoorDyn relax its initial condition to the statics to 7 digits (its default, 0.01, stops 1e-4 short). MoorDyn's axial damping BA
+has no counterpart in a case: the deck gets ``BA = -1`` (a critically damped segment
 axial mode, which MoorDyn's own examples use; it damps the dynamics only, not the statics), said in its title lines.
 
 References
@@ -190,6 +192,21 @@ def _deck_line_type(name: str, lt, rho: float, g: float) -> str:
             f"{lt.added_mass_tangential!r}")
 
 
+def _time_step(case) -> float:
+    """MoorDyn's ``dtM`` for a converted deck: a tenth of the shortest time an axial wave takes to cross a segment,
+    ``l / sqrt(EA / m)``, rounded down to one significant figure (MoorDyn's own default from its CFL factor can be
+    several times that and blows a stiff chain up). [s]"""
+    times = []
+    for line in case.lines.values():
+        seg = line.line.segments[0]
+        lt = seg.line_type
+        n = seg.n_elements or line.n_elements
+        times.append(seg.length / n / math.sqrt(lt.axial_stiffness / lt.mass_per_length))
+    dt = 0.1 * min(times, default=0.01)
+    scale = 10.0 ** math.floor(math.log10(dt))
+    return math.floor(dt / scale) * scale
+
+
 def _same_type(a, b) -> bool:
     return a.model_dump(exclude={"name"}) == b.model_dump(exclude={"name"})
 
@@ -262,7 +279,10 @@ def case_to_deck(case) -> str:
         x, y, z = (float(v) for v in p.position)
         rows_points.append(f"{number[name]:<4} {kind:<10} {x!r:<12} {y!r:<12} {z!r:<12} {p.mass!r:<10} "
                            f"{p.volume!r:<10} {p.drag_area!r:<10} {ca!r}")
-    options = [f"{rho!r:<14} WtrDnsty  water density (kg/m^3)", f"{g!r:<14} g         gravity (m/s^2)"]
+    options = [f"{_time_step(case)!r:<14} dtM       time step (s): a tenth of the shortest segment's axial wave time",
+               "1.0e-7         threshIC  initial condition converged to 1e-7 (-): the statics to 7 digits",
+               "500.0          TmaxIC    longest dynamic relaxation of the initial condition (s)",
+               f"{rho!r:<14} WtrDnsty  water density (kg/m^3)", f"{g!r:<14} g         gravity (m/s^2)"]
     if env.depth is not None:
         options.append(f"{float(env.depth)!r:<14} WtrDpth   water depth (m)")
     friction = float(getattr(bed, "friction", 0.0) or 0.0)
