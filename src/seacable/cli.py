@@ -528,7 +528,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--duration", type=_number, help="MoorDyn file: simulated time after the statics [s]")
     p.add_argument("--motion", help="MoorDyn file: CSV of vessel offsets (time, x, y, z) applied to every "
                                     "vessel point [s, m], or of rigid platform motions about the origin "
-                                    "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]")
+                                    "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]; a deck's coupled "
+                                    "bodies and rods follow the platform motions about their reference points")
     p.add_argument("--time-step", type=_number, help="MoorDyn file: Newmark time step [s] (0.1)")
     p.add_argument("--output-interval", type=_number, help="MoorDyn file: time between stored states [s] (0.5)")
     p.add_argument("--spectral-radius", type=_number,
