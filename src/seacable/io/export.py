@@ -127,6 +127,8 @@ def _table_columns(ds: xr.Dataset, names, state) -> dict:
 
 def _node_table(ds: xr.Dataset, names, state, dim, line: int | None) -> dict | None:
     """The tidy table of one line's ``dim`` (node or element) quantities: a row per state and node."""
+    if not names:
+        return None
     n_rows, n = (ds.sizes[state] if state else 1), ds.sizes[dim]
     data = {}
     for name in names:
@@ -136,8 +138,6 @@ def _node_table(ds: xr.Dataset, names, state, dim, line: int | None) -> dict | N
         order = [state, dim] if state in v.dims else [dim]
         a = v.transpose(*order).values
         data[_header(name, v)] = np.broadcast_to(a if state in v.dims else a[None], (n_rows, n)).reshape(-1)
-    if not data:
-        return None
     keep = ~np.all(np.isnan(np.column_stack([np.asarray(c, float) for c in data.values()])), axis=1)
     columns = {}
     if state is not None:
@@ -247,14 +247,14 @@ def export_moordyn(ds: xr.Dataset, folder, stem: str) -> list[Path]:
     """
     folder = Path(folder)
     analysis = ds.attrs.get("analysis", "unknown analysis")
-    if not all(c in ds and "node" in ds[c].dims for c in "xyz"):
-        raise InputError(f"the result ({analysis}) has no node positions x, y, z [m]: MoorDyn's line files hold a "
-                         "line's nodes. Suggested fix: export it with --format csv.")
     state = _state_dim(ds)
     if state not in (None, "time"):
         raise InputError(f"the result ({analysis}) runs along '{state}' ({ds.sizes[state]} states), not time: "
                          "MoorDyn's .out files are time series. Suggested fix: export it with --format csv (a row "
                          f"per {state}).")
+    if not all(c in ds and "node" in ds[c].dims for c in "xyz"):
+        raise InputError(f"the result ({analysis}) has no node positions x, y, z [m]: MoorDyn's line files hold a "
+                         "line's nodes. Suggested fix: export it with --format csv.")
     extra = {d for c in "xyz" for d in ds[c].dims} - {"time", "node", "line"}
     if extra:
         raise InputError(f"the result ({analysis}) has node positions along {', '.join(sorted(extra))} too: MoorDyn's "

@@ -68,7 +68,7 @@ def dynamic(deck):
 
 
 def _read(path: Path) -> pd.DataFrame:
-    return pd.read_csv(path, float_precision="round_trip")
+    return pd.read_csv(path)  # pandas reads a float's shortest repr back to the same float
 
 
 def test_csv_of_a_time_series_reads_back_to_the_results_numbers(dynamic, tmp_path):
