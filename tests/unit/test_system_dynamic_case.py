@@ -330,6 +330,19 @@ def test_vessel_motion_of_offsets_for_a_deck_with_a_coupled_body_is_refused(tmp_
     assert not (tmp_path / "x.nc").exists()
 
 
+def test_vessel_motion_for_a_deck_with_nothing_coupled_is_refused(tmp_path):
+    """The body made Free: no coupled point, body or rod for the motion to move; refused before the run."""
+    from seacable.mooring.motion import PlatformMotion
+
+    free = tmp_path / "free_body.txt"
+    free.write_text(BODY_DECK.read_text().replace("1    Coupled      0    0  -70", "1    Free         0    0  -70"),
+                    encoding="utf-8")
+    motion = PlatformMotion(amplitude=(1.0, 0.0, 0.0, 0.0, 0.0, 0.0), period=10.0)
+    case = load_moordyn_case(free).with_run(duration=1.0, motion=motion)
+    with pytest.raises(InputError, match=r"no coupled point, body or rod for it to move.*Suggested fix"):
+        case.system_case()
+
+
 def _static_fairlead_tensions(deck) -> np.ndarray:
     """The fairlead tensions of a deck's system statics on its NumSegs lumped-mass lines (the dynamics' lines)."""
     case = load_moordyn_case(deck).system_case()

@@ -99,10 +99,8 @@ def _comment(lines) -> str:
     return "".join(f"# {ln}".rstrip() + "\n" for ln in lines)
 
 
-def _left_out(md, network: bool) -> list[str]:
+def _left_out(md) -> list[str]:
     """What the deck sets that the case file has no place for, one line each."""
-    from .moordyn._options import _read_outputs  # noqa: F401  (the reader's module: its names are MoorDyn's)
-
     out = []
     honoured = {"wtrdpth", "depth", "waterdepth", "wtrdnsty", "rho", "rhow", "g", "gravity", "frictioncoefficient"}
     numerics = [f"{k} {v}" for k, v in md.options.items() if k.lower() not in honoured]
@@ -160,13 +158,13 @@ def deck_to_yaml(path) -> str:
     _shared_line_types(data)
     order = ("name", "description", "line_types", "environment", "bodies", "points", "lines", "analysis")
     data = {k: data[k] for k in order if k in data} | {k: v for k, v in data.items() if k not in order}
-    head = [f"{case.name}: the MoorDyn file {path.name} as a seacable case file (seacable {__version__}, "
-            "'seacable convert'). Units: SI (m, kg, N, s, rad).",
+    head = [(f"{case.name}: the MoorDyn file {path.name} as a seacable case file (seacable {__version__}, "
+             "'seacable convert'). Units: SI (m, kg, N, s, rad)."),
             *(f"deck title: {t}" for t in deck.data.title.splitlines() if t.strip() and "---" not in t),
             ("statics: finite_element with each line's NumSegs as n_elements: the deck's lumped-mass lines, the "
              "numbers 'seacable run' gives the deck." if network else
              "the deck has bodies or rods: 'seacable run' runs it as this mooring system."),
-            "", "Left out (no counterpart in a case file):", *(f"- {t}" for t in _left_out(deck.data, network))]
+            "", "Left out (no counterpart in a case file):", *(f"- {t}" for t in _left_out(deck.data))]
     return _comment(head) + yaml.dump(data, Dumper=_Dumper, sort_keys=False, width=110)
 
 

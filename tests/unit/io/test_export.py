@@ -96,7 +96,7 @@ def test_csv_of_a_time_series_reads_back_to_the_results_numbers(dynamic, tmp_pat
 
 def test_csv_of_a_static_result_is_one_row(deck, tmp_path):
     ds = _quiet_run(sc.load_case(deck))
-    written, _ = export_csv(ds, tmp_path, "static")
+    export_csv(ds, tmp_path, "static")
     table = _read(tmp_path / "static.csv")
     assert len(table) == 1 and "time [s]" not in table
     assert table["anchor_tension (line 1) [N]"].iloc[0] == float(ds.anchor_tension.sel(line="line 1"))
