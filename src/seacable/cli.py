@@ -386,7 +386,7 @@ def _cmd_export(args) -> int:
     for path in written:
         print(f"wrote {path}")
     if skipped:
-        print(f"not exported (not along a state, a line, a point or the nodes): {', '.join(skipped)}")
+        print(f"not exported (not along the states, or more than 1000 columns): {', '.join(skipped)}")
     return 0
 
 

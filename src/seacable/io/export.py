@@ -4,13 +4,14 @@ CSV (:func:`export_csv`): headers ``name [units]``, numbers as Python writes the
 back to the same float, so a table holds the NetCDF values to the bit).
 
 - ``<stem>.csv``: one row per state (``time``; a pushover's ``offset``; a system cable's ``condition``; a static
-  result is one row) and a column per quantity of the whole model, of a line, a point or a body:
-  ``fairlead_tension (line 1) [N]``.
+  result is one row) and a column per quantity and entry of its other axes (a line, a point, a body and its
+  degrees of freedom): ``fairlead_tension (line 1) [N]``, ``body_position (body1, pitch) [...]``.
 - ``<stem>_<line>.csv``, one per line (``<stem>_nodes.csv`` for a single-line result): the node-resolved
-  quantities as a tidy table, a row per state and node (``time [s], node, x [m], ..., tension [N]``); element
+  quantities as a tidy table, a row per state and node (``time [s], node, s [m], x [m], ..., tension [N]``); element
   quantities (``segment_tension``) in ``<stem>_<line>_elements.csv``, a row per state and element.
 
-Quantities on other axes (snap events, spectra, frequencies) are listed as not exported.
+Quantities that are not along the states (snap events, a result's constants) or that would spread over more than
+1000 columns (spectra) are listed as not exported.
 
 MoorDyn (:func:`export_moordyn`): the files MoorDyn v2 writes (layout taken from MoorDyn 2.7.2's own output,
 ``MoorDyn::WriteOutputs`` and ``Line::Output``): ``<stem>_Line<N>.out`` per line with the node positions
@@ -28,6 +29,8 @@ References
 
 from __future__ import annotations
 
+import itertools
+import math
 import re
 from pathlib import Path
 
@@ -45,6 +48,8 @@ EXPORT_FORMATS = ("csv", "moordyn")
 #: the axes a result's states run along: a time series, a pushover's offsets, a system cable's conditions
 _STATE_DIMS = ("time", "offset", "condition")
 _NODE_DIMS = ("node", "element")
+#: the most columns one quantity may spread over in the state table (a spectrum's frequencies are not a table's)
+_MAX_COLUMNS = 1000
 
 
 def _state_dim(ds: xr.Dataset) -> str | None:
@@ -93,35 +98,32 @@ def _plan(ds: xr.Dataset):
     table, nodes, skipped = [], {"node": [], "element": []}, []
     for name, v in ds.data_vars.items():
         dims = set(v.dims)
-        if not _numeric(v):
+        on_nodes = dims & set(_NODE_DIMS)
+        if not _numeric(v) or (state is not None and state not in dims):
             skipped.append(name)
-            continue
-        others = dims - {state, "line", "point", "body"}
-        if not others and (state is None or state in dims) and len(dims - {state}) <= 1:
+        elif not on_nodes and math.prod(v.sizes[d] for d in dims - {state}) <= _MAX_COLUMNS:
             table.append(name)
-        elif len(others) == 1 and others <= set(_NODE_DIMS) and dims - others - {state} <= {"line"}:
-            nodes[others.pop()].append(name)
+        elif len(on_nodes) == 1 and dims - on_nodes - {state} <= {"line"}:
+            nodes[on_nodes.pop()].append(name)
         else:
             skipped.append(name)
     return state, table, nodes, skipped
 
 
 def _table_columns(ds: xr.Dataset, names, state) -> dict:
+    """A column per entry of each quantity's other axes: ``body_position (body1, x) [m]``."""
     columns = _state_column(ds, state)
     n_rows = ds.sizes[state] if state else 1
     for name in names:
         v = ds[name]
         extra = [d for d in v.dims if d != state]
+        data = v.transpose(*([state] if state else []), *extra).values.reshape(n_rows, -1)
+        units = v.attrs.get("units", "")
         if not extra:
-            values = v.values if state in v.dims else np.full(n_rows, v.values[()])
-            columns[_header(name, v)] = np.broadcast_to(values, (n_rows,))
+            columns[f"{name} [{units}]"] = data[:, 0]
             continue
-        (dim,) = extra  # one of line, point, body (_plan)
-        order = [state, dim] if state in v.dims else [dim]
-        data = v.transpose(*order).values
-        for k, label in enumerate(_labels(ds, dim)):
-            col = data[:, k] if state in v.dims else np.full(n_rows, data[k])
-            columns[f"{name} ({label}) [{v.attrs.get('units', '')}]"] = col
+        for k, labels in enumerate(itertools.product(*(_labels(ds, d) for d in extra))):
+            columns[f"{name} ({', '.join(labels)}) [{units}]"] = data[:, k]
     return columns
 
 
@@ -139,10 +141,16 @@ def _node_table(ds: xr.Dataset, names, state, dim, line: int | None) -> dict | N
         a = v.transpose(*order).values
         data[_header(name, v)] = np.broadcast_to(a if state in v.dims else a[None], (n_rows, n)).reshape(-1)
     keep = ~np.all(np.isnan(np.column_stack([np.asarray(c, float) for c in data.values()])), axis=1)
+    coords = {}
+    for cname, c in ds.coords.items():  # the arc length s of each node, a coordinate of the result
+        if cname != dim and dim in c.dims and set(c.dims) <= {dim, "line"} and _numeric(c):
+            c = c.isel(line=line) if line is not None and "line" in c.dims else c
+            coords[_header(cname, c)] = np.broadcast_to(c.values[None], (n_rows, n)).reshape(-1)
     columns = {}
     if state is not None:
         columns.update({k: np.repeat(c, n)[keep] for k, c in _state_column(ds, state).items()})
     columns[dim] = np.tile(np.arange(n), n_rows)[keep]
+    columns.update({k: c[keep] for k, c in coords.items()})
     columns.update({k: c[keep] for k, c in data.items()})
     return columns
 

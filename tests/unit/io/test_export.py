@@ -170,11 +170,35 @@ def test_export_bad_input_is_one_clear_line(setup, args, expected, deck, tmp_pat
 def test_a_result_without_tables_is_refused(tmp_path):
     import xarray as xr
 
-    ds = xr.Dataset({"spectrum": ("frequency", np.ones(3), {"units": "m2 s"})}, coords={"frequency": [0.1, 0.2, 0.3]},
-                    attrs={"analysis": "modal"})
+    f = np.linspace(0.01, 2.0, 2000)
+    ds = xr.Dataset({"spectrum": ("frequency", np.ones(f.size), {"units": "m2 s"})}, coords={"frequency": f},
+                    attrs={"analysis": "spectral"})
     with pytest.raises(InputError, match=r"no quantity along a state axis.*Suggested fix"):
         export_csv(ds, tmp_path, "x")
     with pytest.raises(InputError, match=r"no node positions.*Suggested fix: export it with --format csv"):
         export_moordyn(ds, tmp_path, "x")
     with pytest.raises(InputError, match=r"format must be one of csv, moordyn"):
         export_result(tmp_path / "x.nc", "json")
+
+
+def test_quantities_on_two_label_axes_and_the_arc_length(tmp_path):
+    """A body's six motions (time, body, dof) spread over a column per body and dof, labelled by the coordinates;
+    a line's tidy table carries the nodes' arc length s, a coordinate of the result."""
+    import xarray as xr
+
+    rng = np.random.default_rng(1)
+    pos = rng.normal(size=(3, 2, 6))
+    s = np.array([[0.0, 5.0, 10.0], [0.0, 4.0, 8.0]])
+    ds = xr.Dataset({"body_position": (("time", "body", "dof"), pos, {"units": "m"}),
+                     "x": (("time", "line", "node"), rng.normal(size=(3, 2, 3)), {"units": "m"})},
+                    coords={"time": ("time", [0.0, 0.5, 1.0], {"units": "s"}), "body": ["buoy", "hull"],
+                            "dof": ["x", "y", "z", "roll", "pitch", "yaw"], "line": ["line1", "line2"],
+                            "s": (("line", "node"), s, {"units": "m"})},
+                    attrs={"analysis": "system_dynamic"})
+    export_csv(ds, tmp_path, "r")
+    table = _read(tmp_path / "r.csv")
+    assert len(table.columns) == 1 + 2 * 6
+    np.testing.assert_array_equal(table["body_position (hull, pitch) [m]"], pos[:, 1, 4])
+    nodes = _read(tmp_path / "r_line2.csv")
+    assert list(nodes.columns) == ["time [s]", "node", "s [m]", "x [m]"]
+    np.testing.assert_array_equal(nodes["s [m]"], np.tile(s[1], 3))
