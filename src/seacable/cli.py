@@ -379,6 +379,24 @@ def _cmd_view(args) -> int:
     return 0
 
 
+def _cmd_export(args) -> int:
+    from .io.export import export_result
+
+    written, skipped = export_result(args.result, args.format, args.output)
+    for path in written:
+        print(f"wrote {path}")
+    if skipped:
+        print(f"not exported (not along the states, or more than 1000 columns): {', '.join(skipped)}")
+    return 0
+
+
+def _cmd_convert(args) -> int:
+    from .io.convert import convert
+
+    print(f"wrote {convert(args.source, args.output)}")
+    return 0
+
+
 def _cmd_report(args) -> int:
     from .report import ReportOptions, make_report
 
@@ -510,7 +528,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--duration", type=_number, help="MoorDyn file: simulated time after the statics [s]")
     p.add_argument("--motion", help="MoorDyn file: CSV of vessel offsets (time, x, y, z) applied to every "
                                     "vessel point [s, m], or of rigid platform motions about the origin "
-                                    "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]")
+                                    "(time, surge, sway, heave, roll, pitch, yaw) [s, m, rad]; a deck's coupled "
+                                    "bodies and rods follow the platform motions about their reference points")
     p.add_argument("--time-step", type=_number, help="MoorDyn file: Newmark time step [s] (0.1)")
     p.add_argument("--output-interval", type=_number, help="MoorDyn file: time between stored states [s] (0.5)")
     p.add_argument("--spectral-radius", type=_number,
@@ -566,6 +585,22 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--max-frames", type=_whole, default=120,
                    help="largest number of animation frames; output times are subsampled evenly (default 120)")
     p.set_defaults(func="_cmd_view")
+
+    p = sub.add_parser("export", parents=[common],
+                       help="write a result as files other tools read: CSV tables, or MoorDyn .out files")
+    p.add_argument("result", help="result file (.nc)")
+    p.add_argument("--format", required=True, choices=("csv", "moordyn"),
+                   help="csv: a table of the states (RESULT.csv) and one of each line's nodes (RESULT_LINE.csv); "
+                        "moordyn: MoorDyn v2's RESULT.out and RESULT_Line<N>.out")
+    p.add_argument("-o", "--output", help="folder for the files (created if missing); default beside the result")
+    p.set_defaults(func="_cmd_export")
+
+    p = sub.add_parser("convert", parents=[common],
+                       help="convert a MoorDyn input file into a seacable case file (YAML), or the reverse")
+    p.add_argument("source", help="MoorDyn input file, or a seacable system case file (.yaml)")
+    p.add_argument("-o", "--output", required=True, help="the file to write: case.yaml from a MoorDyn file, "
+                                                         "deck.txt from a case file")
+    p.set_defaults(func="_cmd_convert")
 
     p = sub.add_parser("report", parents=[common],
                        help="design report (HTML and CSV) of a mooring_dynamic or system_dynamic result or sweep: "

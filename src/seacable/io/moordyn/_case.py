@@ -111,17 +111,13 @@ class MoorDynCase:
         Raises
         ------
         InputError
-            What :func:`moordyn_system` refuses; a vessel ``motion`` (a deck with structures takes its
-            motions in a YAML system case: ``body_motions``, ``point_motions``).
+            What :func:`moordyn_system` refuses; a vessel ``motion`` of offsets x, y, z for a deck with a coupled
+            body, or for a deck with nothing coupled (:func:`_deck_motions`: the coupled points follow ``motion``,
+            the coupled bodies and rods its six platform motions about their reference points).
         """
         from ...system.case import SystemCase, SystemDynamicAnalysis, SystemStaticAnalysis
 
         label = self.data.path or "MoorDyn file"
-        if self.motion is not None:
-            raise InputError(f"{label}: a vessel motion for a deck with bodies, rods or points on a body is not "
-                             "taken from the command line. Suggested fix: write the system as a YAML case "
-                             "(seacable.io.dump_case(case.system_case())) and give 'body_motions' or "
-                             "'point_motions' in its system_dynamic analysis.")
         if self.duration is not None and self.spectral_radius != 1.0:
             raise InputError(f"{label}: spectral radius {self.spectral_radius:g}: a deck with bodies, rods or points "
                              "on a body runs as a mooring system, whose dynamics step by average acceleration only "
@@ -140,9 +136,11 @@ class MoorDynCase:
                 start = "auto"  # the static start, or held where the deck puts the bodies when none is found
             except InputError:
                 start = "held"
+            body_motions, point_motions = _deck_motions(label, self.motion, system)
             analysis = SystemDynamicAnalysis(duration=self.duration, time_step=self.time_step,
                                              output_interval=self.output_interval,
-                                             failures=_line_failures(self.data), start=start)
+                                             failures=_line_failures(self.data), start=start,
+                                             body_motions=body_motions, point_motions=point_motions)
         return SystemCase(name=self.name, description=f"MoorDyn file {label}", environment=environment,
                           points=system.points, bodies=system.bodies, lines=system.lines, analysis=analysis)
 
@@ -160,6 +158,33 @@ class MoorDynCase:
 #: the largest line strain the statics of a MoorDyn deck accept: MoorDyn has no limit, and its test decks
 #: model springs as lines stretched to 10 times their length (stability/spring.txt); above 10 % a warning says so
 _DECK_MAX_STRAIN = 20.0
+
+
+def _deck_motions(label: str, motion, system) -> tuple[dict, dict]:
+    """The ``body_motions`` and ``point_motions`` of a deck with structures under one ``motion``, as MoorDyn's driver
+    moves a deck: every coupled point (``point<ID>``, kind coupled) follows the motion as a deck without bodies does
+    (offsets x, y, z; or the six platform motions about the origin), every coupled body or rod (and FAST.Farm turbine:
+    the prescribed bodies) the six platform motions about its own reference point at rest.
+
+    Raises
+    ------
+    InputError
+        Offsets x, y, z for a deck with a coupled body (a body moves in six degrees of freedom), or a deck with
+        nothing coupled to move.
+    """
+    if motion is None:
+        return {}, {}
+    points = {name: motion for name, p in system.points.items() if p.kind == "coupled"}
+    prescribed = [name for name, b in system.bodies.items() if b.kind == "prescribed"]
+    if prescribed and getattr(motion, "type", None) != "platform":
+        raise InputError(f"{label}: the motion moves coupled bodies ({', '.join(prescribed)}), which move in six "
+                         f"degrees of freedom, but it is a '{getattr(motion, 'type', motion)}' motion of offsets x, y, "
+                         "z. Suggested fix: give a CSV of the platform motions with the header 'time, surge, sway, "
+                         "heave, roll, pitch, yaw' [s, m, rad] (about each body's reference point at rest).")
+    if not points and not prescribed:
+        raise InputError(f"{label}: a vessel motion is given, but the deck has no coupled point, body or rod for it "
+                         "to move. Suggested fix: leave out the motion (--motion), or make the fairleads 'Coupled'.")
+    return {name: motion for name in prescribed}, points
 
 
 def _line_failures(md: MoorDynInput) -> list:
