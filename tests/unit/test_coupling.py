@@ -81,7 +81,7 @@ def test_init_step_and_close_give_system_dynamics_dataset(hull):
         assert name in ds
     assert ds.time.values == pytest.approx([0.0, 0.2, 0.4, 0.6, 0.8])
     assert ds.coupled_force.values == pytest.approx(np.array(forces))
-    assert ds.body_position.sel(body="hull", dof="x").values == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
+    assert ds.body_position.sel(body="hull", axis="x").values == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
 
 
 def test_bad_inputs_get_one_clear_error_each():
