@@ -20,6 +20,9 @@ A result in memory keeps seacable's one vocabulary (``time`` in seconds from the
   against the entry's canonical units, in tests/unit/test_cf.py).
 - integers are written as 32-bit integers (CF-1.8 knows no 64-bit type), and a dimension coordinate has no
   ``_FillValue`` (CF 2.5.1).
+- a dimension of names (``line``, ``body``, ``dof``, ``condition``) has no coordinate variable in the file (a CF
+  coordinate variable is numeric and monotonic): its names are the label variable ``line_label`` (CF 6.1), listed
+  in the ``coordinates`` attribute of the variables along it; :func:`decode` makes it the coordinate again.
 
 References
 ----------
@@ -39,6 +42,8 @@ __all__ = ["ANGLES", "STANDARD_NAMES", "STIFFNESS_BLOCKS", "TIME_UNITS", "annota
 #: The units of the time coordinate in a result file: t = 0 (the start of the run) at a nominal epoch.
 TIME_UNITS = "seconds since 1970-01-01 00:00:00"
 TIME_CALENDAR = "standard"
+#: the suffix of the label variable that holds a dimension's names in a file (``line`` -> ``line_label``)
+LABEL = "_label"
 
 #: result variable -> its CF standard name. Only genuine table entries whose meaning is the variable's (the
 #: table's platform_surge ... platform_yaw are displacements of a platform from rest along its own forward axis,
@@ -110,6 +115,12 @@ def encode(ds: xr.Dataset, encoding: dict | None = None) -> tuple[xr.Dataset, di
             enc["dtype"] = small
         if name in out.dims and v.dtype.kind in "fc":  # a coordinate variable holds no missing values
             enc["_FillValue"] = None
+    # a dimension of names (lines, bodies, degrees of freedom) has no CF coordinate variable (numeric and monotonic,
+    # CF 1.2, 5): its names are a label variable NAME_label (CF 6.1), named in its variables' coordinates attribute
+    labels = {name: name + LABEL for name in out.dims if name in out.variables and out[name].dtype.kind in "OUS"}
+    if labels:
+        out = out.rename_vars(labels)
+        encoding = {labels.get(name, name): enc for name, enc in encoding.items()}
     if "history" not in out.attrs:
         out.attrs["history"] = f"written by {out.attrs.get('source', 'seacable')}"
     return out, encoding
@@ -117,7 +128,12 @@ def encode(ds: xr.Dataset, encoding: dict | None = None) -> tuple[xr.Dataset, di
 
 def decode(ds: xr.Dataset) -> xr.Dataset:
     """A result file as read (``decode_times=False``) back in seacable's vocabulary: ``time`` in seconds from
-    the start of the run (units ``"s"``), in place; files written before the CF times (units ``"s"``) too."""
+    the start of the run (units ``"s"``), and each dimension's names (``line_label``) its coordinate (``line``)
+    again; files written before (units ``"s"``, names as coordinates) pass unchanged. Returns the Dataset."""
+    labels = {name: name[:-len(LABEL)] for name in ds.variables if name.endswith(LABEL)
+              and ds[name].dims == (name[:-len(LABEL)],) and name[:-len(LABEL)] not in ds.variables}
+    if labels:  # the names of a dimension back as its coordinate (an index: ds.sel(line="line1"))
+        ds = ds.rename_vars(labels)
     if "time" in ds.variables:
         attrs = ds["time"].attrs
         if attrs.get("units") == TIME_UNITS:

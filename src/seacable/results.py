@@ -18,14 +18,14 @@ import numpy as np
 import xarray as xr
 
 from . import _cf
-from ._cf import body_pose, stiffness_matrix
+from ._cf import body_pose, joined, stiffness_matrix
 from ._model import dump_yaml
 from ._version import __version__
 from .errors import ConvergenceError, InputError
 
-__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "body_pose", "check_output_file", "check_output_folder", "check_result",
-           "check_schema", "check_time",
-           "compression", "dataset", "make_dataset", "open_netcdf", "read_netcdf", "result_file", "stiffness_matrix", "var", "write_error",
+__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "body_pose", "check_output_file", "check_output_folder",
+           "check_result", "check_schema", "check_time", "compression", "dataset", "joined", "make_dataset",
+           "open_netcdf", "read_netcdf", "result_file", "stiffness_matrix", "var", "write_error",
            "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and

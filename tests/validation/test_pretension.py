@@ -85,7 +85,7 @@ def test_moorpy_chain_tension_gives_back_its_length(oc3):
     seacable's catenary to 1e-6 relative or better (test_moorpy_catenary.py: 1e-5 bound); near the OC3 line,
     dT/dL = -2.9e4 N/m, so 1e-6 of 9e5 N is 3e-5 m of length, 3e-8 relative."""
     true_length = 880.0
-    fxa, fza, fxb, fzb, info = moorpy_catenary(X_F, Z_F, true_length, EA, W, CB=0.0, Tol=1e-9 * true_length)
+    _, _, fxb, fzb, _ = moorpy_catenary(X_F, Z_F, true_length, EA, W, CB=0.0, Tol=1e-9 * true_length)
     tension = math.hypot(fxb, fzb)
     found = line_length_for(oc3, target_tension=tension)
     assert found.length == pytest.approx(true_length, rel=1e-6)
