@@ -132,8 +132,10 @@ def decode(ds: xr.Dataset) -> xr.Dataset:
     again; files written before (units ``"s"``, names as coordinates) pass unchanged. Returns the Dataset."""
     labels = {name: name[:-len(LABEL)] for name in ds.variables if name.endswith(LABEL)
               and ds[name].dims == (name[:-len(LABEL)],) and name[:-len(LABEL)] not in ds.variables}
-    if labels:  # the names of a dimension back as its coordinate (an index: ds.sel(line="line1"))
+    if labels:  # the names of a dimension back as its coordinate, with its index (ds.sel(line="line1"))
         ds = ds.rename_vars(labels)
+        for name in labels.values():
+            ds = ds.set_xindex(name)
     if "time" in ds.variables:
         attrs = ds["time"].attrs
         if attrs.get("units") == TIME_UNITS:
