@@ -26,10 +26,7 @@ from seacable.cli import main  # noqa: E402
 from seacable.errors import InputError  # noqa: E402
 from seacable.io.moordyn import load_moordyn_case, moordyn_system, read_moordyn  # noqa: E402
 from seacable.mooring.outputs import line_end_forces  # noqa: E402
-from seacable.results import (
-    body_pose,  # noqa: E402
-    open_netcdf,  # noqa: E402
-)
+from seacable.results import body_pose, open_netcdf  # noqa: E402
 from seacable.system.dynamics import LineFailure, build_system_fe, static_system  # noqa: E402
 from seacable.system.statics import solve_equilibrium  # noqa: E402
 
