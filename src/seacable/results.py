@@ -208,6 +208,7 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
         "analysis": analysis,
         "seacable_version": __version__,
         "Conventions": "CF-1.8",
+        "history": f"created by seacable {__version__}",   # CF 2.6.2: the file's audit trail
         "source": f"seacable {__version__}",
         "settings": _attr_value(settings or {}),
         "references": "\n".join(references),
