@@ -88,7 +88,7 @@ CASES = {
         + f" (intact / {json.loads(ds.attrs['settings'])['damaged_lines'][0]}, the most loaded, broken); fairlead tensions "
         + " / ".join(", ".join("-" if np.isnan(t) else f"{t / 1e3:.0f}" for t in ds.fairlead_tension.sel(condition=c).values)
                      for c in ds.condition.values)
-        + f" kN; surge stiffness {float(ds.stiffness.sel(condition='intact', body='buoy', dof='surge', dof2='surge')) / 1e3:.1f} kN/m"),
+        + f" kN; surge stiffness {float(ds.stiffness_translation.sel(condition='intact', body='buoy', dof='surge', dof2='surge')) / 1e3:.1f} kN/m"),
     "spread_mooring_watch_circle": lambda ds: (
         f"watch circle, {ds.heading.size} headings: at {float(ds.applied_load[-1]) / 1e6:g} MN the buoy moves "
         f"{float(ds.body_offset.sel(condition='intact', body='buoy').isel(applied_load=-1).min()):.1f} to "

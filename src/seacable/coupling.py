@@ -83,6 +83,9 @@ from .errors import ConvergenceError, InputError, SeacableWarning
 __all__ = ["Coupling"]
 
 _DOF6 = ("x", "y", "z", "roll", "pitch", "yaw")
+#: the UDUNITS units of the coupled DOFs' variables by kind (translation, rotation), by the translation's name
+_COUPLED_UNITS = {"coupled_position": ("m", "rad"), "coupled_velocity": ("m s-1", "rad s-1"),
+                  "coupled_force": ("N", "N m")}
 
 
 def _case_of(case):
@@ -730,6 +733,7 @@ class Coupling:
         (:func:`seacable.system.dynamics.system_result`), with the coupled DOFs and forces at each kept time
         (``coupled_position``, ``coupled_velocity``, ``coupled_force``, dimension ``coupled_dof``) and the coupled
         bodies' ``body_position`` and ``body_velocity`` from the coupled code's motion."""
+        from ._cf import body_pose, dof_kind, split_by_kind
         from .results import var
         from .system.dynamics import system_result
         from .system.dynamics.loop import SystemRun
@@ -748,17 +752,25 @@ class Coupling:
         x, xd = np.array(s["x"]), np.array(s["xd"])
         xs, xds = np.array(s["xs"]), np.array(s["xds"])
         ds = ds.assign_coords(coupled_dof=var("coupled_dof", list(self.dof_names), "1", "coupled degree of freedom"))
-        ds["coupled_position"] = var(("time", "coupled_dof"), x, "m or rad", "coupled DOFs given by the coupled code")
-        ds["coupled_velocity"] = var(("time", "coupled_dof"), xd, "m/s or rad/s", "their velocities")
-        ds["coupled_force"] = var(("time", "coupled_dof"), np.array(s["f"]), "N or N m",
-                                  "force of the lines on the coupled object (moments about its reference point)")
+        # one unit per variable (CF): the translations, rotations, forces and moments of the coupled DOFs apart,
+        # each NaN at the DOFs of the other kind (seacable._cf.split_by_kind; seacable._cf.joined puts them back)
+        kinds = [dof_kind(n) for n in self.dof_names]
+        for value, names, what in ((x, ("coupled_position", "coupled_rotation"), "given by the coupled code"),
+                                   (xd, ("coupled_velocity", "coupled_rotation_rate"), "given by the coupled code"),
+                                   (np.array(s["f"]), ("coupled_force", "coupled_moment"),
+                                    "of the lines on the coupled object (moments about its reference point)")):
+            parts = split_by_kind(value.reshape(nt, len(kinds)), kinds, axis=1)
+            for (name, units), kind in zip(zip(names, _COUPLED_UNITS[names[0]]), ("translation", "rotation")):
+                ds[name] = var(("time", "coupled_dof"), parts.get(kind, np.full((nt, len(kinds)), np.nan)), units,
+                               f"{name.replace('_', ' ')} {what} (NaN at the coupled DOFs of the other kind)")
         if "body" in ds.dims:
             names = list(ds["body"].values)
-            bp, bv = ds["body_position"].values.copy(), ds["body_velocity"].values.copy()
+            bp, bv = body_pose(ds), body_pose(ds, "body_velocity", "body_rotation_rate")
             for k, n in enumerate(self.bodies):
                 bp[:, names.index(n)] = xs[:, 6 * k:6 * k + 6]  # seacable's angles, as every body's
                 bv[:, names.index(n)] = xds[:, 6 * k:6 * k + 6]
-            ds["body_position"].values[:], ds["body_velocity"].values[:] = bp, bv
+            ds["body_position"].values[:], ds["body_rotation"].values[:] = bp[..., :3], bp[..., 3:]
+            ds["body_velocity"].values[:], ds["body_rotation_rate"].values[:] = bv[..., :3], bv[..., 3:]
         self._fe = None
         self._state = "closed"
         return ds

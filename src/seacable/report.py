@@ -667,7 +667,9 @@ def _static_cable(source):
         ds = source
     elif isinstance(source, (str, Path)) and Path(source).is_file():
         try:
-            with xr.open_dataset(source, engine="netcdf4") as f:
+            from .results import open_netcdf
+
+            with open_netcdf(source) as f:   # the file's CF form read back (names of lines as their coordinate)
                 if f.attrs.get("analysis") not in STATIC_ANALYSES or "curvature" not in f.variables:
                     return None
                 ds = f.load()

@@ -17,13 +17,16 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
+from . import _cf
+from ._cf import body_pose, joined, stiffness_matrix
 from ._model import dump_yaml
 from ._version import __version__
 from .errors import ConvergenceError, InputError
 
-__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "check_output_file", "check_output_folder", "check_result",
-           "check_schema", "check_time",
-           "compression", "dataset", "make_dataset", "read_netcdf", "result_file", "var", "write_error", "write_netcdf"]
+__all__ = ["ANALYSIS_VARIABLES", "FiniteGuard", "body_pose", "check_output_file", "check_output_folder",
+           "check_result", "check_schema", "check_time", "compression", "dataset", "joined", "make_dataset",
+           "open_netcdf", "read_netcdf", "result_file", "stiffness_matrix", "var", "write_error",
+           "write_netcdf"]
 
 #: analysis type -> the variables and coordinates its result must hold: those its standard figures and
 #: animation draw unconditionally (optional ones, such as ``seabed_z``, are not listed). A result file
@@ -199,11 +202,13 @@ def make_dataset(data_vars: dict[str, xr.Variable], coords: dict[str, xr.Variabl
     else:  # the blocks were checked as they came: the variables added at the end only
         guard.check({k: v for k, v in data_vars.items() if k not in guard.checked}, coords)
     ds = dataset(data_vars, coords, owned)
+    _cf.annotate(ds.variables)   # CF standard names (seacable._cf)
     attrs = {
         "title": title or (case.name if case is not None else analysis),
         "analysis": analysis,
         "seacable_version": __version__,
         "Conventions": "CF-1.8",
+        "history": f"created by seacable {__version__}",   # CF 2.6.2: the file's audit trail
         "source": f"seacable {__version__}",
         "settings": _attr_value(settings or {}),
         "references": "\n".join(references),
@@ -469,6 +474,10 @@ def _make_folder(folder: Path, what: str) -> None:
 def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     """Write a result to NetCDF-4, whole, creating the folder if needed. Returns the path.
 
+    The file follows the CF-1.8 conventions (:mod:`seacable._cf`): its ``time`` is a CF time coordinate, in
+    seconds since the nominal epoch 1970-01-01 00:00:00 at the start of the run; :func:`read_netcdf` reads it back
+    in seconds.
+
     The file is written under a temporary name in the same folder and renamed into place
     (:func:`seacable._atomic.atomic_path`), so that a failed or interrupted write leaves the file
     that was there before intact. Ctrl-C or SIGTERM during the write takes effect once the file is
@@ -483,7 +492,8 @@ def write_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     from ._atomic import atomic_path, deferred_interrupts
 
     path = result_file(path)
-    encoding = {name: compression(v) for name, v in ds.data_vars.items()}
+    # CF-1.8 as the file says: CF time, 32-bit integers, no fill value on coordinates (seacable._cf)
+    ds, encoding = _cf.encode(ds, {name: compression(v) for name, v in ds.data_vars.items()})
     # Ctrl-C and SIGTERM wait for the end of the write (then raise): never half a file or a held lock;
     # a failed write (full disk, no permission, the NetCDF library's HDF error) is an InputError naming the file
     with deferred_interrupts(), atomic_path(path, "the result") as tmp:
@@ -520,8 +530,15 @@ def write_error(path: Path, err: BaseException) -> InputError:
     return write_failure(path, err, "the result")
 
 
+def open_netcdf(path: str | Path) -> xr.Dataset:
+    """A NetCDF result opened lazily (variables read when used; close it), its ``time`` in seconds from the start
+    of the run (:func:`seacable._cf.decode`). Raises what ``xarray.open_dataset`` raises."""
+    return _cf.decode(xr.open_dataset(path, engine="netcdf4", decode_times=False))
+
+
 def read_netcdf(path: str | Path) -> xr.Dataset:
-    """Read a seacable result file (loaded into memory, file closed)."""
+    """Read a seacable result file (loaded into memory, file closed), its ``time`` in seconds from the start of
+    the run (:func:`seacable._cf.decode`)."""
     path = Path(path)
     if not path.exists():
         raise InputError(f"result file '{path}' does not exist. Suggested fix: run 'seacable run CASE.yaml "
@@ -530,8 +547,8 @@ def read_netcdf(path: str | Path) -> xr.Dataset:
         raise InputError(f"result file '{path}' is a folder, expected a .nc file. Suggested fix: give the "
                          "path of the .nc file 'seacable run' wrote.")
     try:
-        with xr.open_dataset(path, engine="netcdf4") as ds:
-            ds = ds.load()
+        with xr.open_dataset(path, engine="netcdf4", decode_times=False) as ds:
+            ds = _cf.decode(ds.load())
     except (OSError, ValueError, RuntimeError, KeyError, TypeError) as err:
         raise InputError(f"result file '{path}' is not a readable NetCDF file: {err}. Suggested fix: give a "
                          "file written by 'seacable run', or run the case again.") from None

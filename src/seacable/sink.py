@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import xarray as xr
 
+from . import _cf
 from ._atomic import is_write_failure
 from .results import FiniteGuard, check_schema, compression, make_dataset, result_file, write_error
 
@@ -178,6 +179,8 @@ class NetcdfSink(MemorySink):
                 rows = 2 ** max(0, (CHUNK_VALUES // max(other, 1)).bit_length() - 1)
                 enc["chunksizes"] = v.shape[:axis] + (rows,) + v.shape[axis + 1:]
             encoding[name] = enc
+        ds, encoding = _cf.encode(ds, encoding)   # CF-1.8: CF time, 32-bit integers (seacable._cf)
+        del ds.attrs["history"]   # the file's global attributes are written at the end (finish)
         ds.to_netcdf(self.tmp, engine="netcdf4", encoding=encoding, unlimited_dims=["time"])
         self._nc = netCDF4.Dataset(self.tmp, "a")
         self._nc.set_auto_mask(False)
@@ -207,10 +210,13 @@ class NetcdfSink(MemorySink):
                         nc.createDimension(dim, size)
                 for name, v in header.data_vars.items():
                     fill = np.nan if v.dtype.kind == "f" else None
-                    out = nc.createVariable(name, v.dtype, v.dims, fill_value=fill, **compression(v))
+                    dtype = _cf.int32_dtype(v.values) or v.dtype   # CF-1.8 has no 64-bit integers
+                    out = nc.createVariable(name, dtype, v.dims, fill_value=fill, **compression(v))
                     out.setncatts(v.attrs)
                     out[...] = v.values
-                nc.setncatts({k: _attr_value(val) for k, val in {**header.attrs, **(attrs or {})}.items()})
+                final = {**header.attrs, **(attrs or {})}
+                final.setdefault("history", f"written by {final.get('source', 'seacable')}")
+                nc.setncatts({k: _attr_value(val) for k, val in final.items()})
                 nc.close()
                 self._nc = None
                 os.replace(self.tmp, self.path)
@@ -218,7 +224,8 @@ class NetcdfSink(MemorySink):
             if not is_write_failure(err):
                 raise
             raise self._failed(err) from None
-        return xr.open_dataset(self.path, engine="netcdf4")
+        # seconds from the start, as in memory (the file's CF time: seacable._cf)
+        return _cf.decode(xr.open_dataset(self.path, engine="netcdf4", decode_times=False))
 
     def abort(self) -> None:
         """Close and delete the temporary file (a run that failed)."""

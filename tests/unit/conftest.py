@@ -44,11 +44,13 @@ def synthetic_result(fairlead: dict, *, dt: float = 0.5, anchor: dict | None = N
     if failure_time is not None:
         data["failure_time"] = var("line", [failure_time.get(k, np.nan) for k in lines], "s", "failure time")
     if body_xy is not None:
-        bp = np.zeros((nt, 1, 6))
+        bp = np.zeros((nt, 1, 3))
         bp[:, 0, :2] = body_xy
         coords["body"] = var("body", ["hull"], "1", "body")
-        coords["dof"] = var("dof", ["x", "y", "z", "roll", "pitch", "yaw"], "1", "degree of freedom")
-        data["body_position"] = var(("time", "body", "dof"), bp, "m or rad", "body position")
+        coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
+        coords["angle"] = var("angle", ["roll", "pitch", "yaw"], "1", "rotation")
+        data["body_position"] = var(("time", "body", "axis"), bp, "m", "body position")
+        data["body_rotation"] = var(("time", "body", "angle"), np.zeros((nt, 1, 3)), "rad", "body rotation")
     ds = make_dataset(data, coords, analysis=analysis, settings={"time_step": dt},
                       references=["A reference of the model."], title=(case or {}).get("name", "synthetic"))
     if case is not None:

@@ -9,12 +9,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import xarray as xr
 import yaml
 
 import seacable as sc
 from seacable.cli import main
-from seacable.results import ANALYSIS_VARIABLES
+from seacable.results import ANALYSIS_VARIABLES, open_netcdf
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -32,7 +31,7 @@ def test_run_writes_a_labelled_netcdf_and_plots(tmp_path, capsys):
     assert main(["run", str(EXAMPLES / "paper000_steady_statics.yaml"), "-o", str(out)]) == 0
     printed = capsys.readouterr().out
     assert f"wrote {out}" in printed and ".png" in printed
-    ds = xr.open_dataset(out)
+    ds = open_netcdf(out)
     assert ds.attrs["analysis"] == "towed_steady"
     assert ds.attrs["seacable_version"] == sc.__version__
     assert "vessel_speed: 1.0" in ds.attrs["case"]

@@ -13,6 +13,7 @@ import pytest
 
 from seacable.coupling import Coupling
 from seacable.errors import InputError
+from seacable.results import joined
 
 BODY_DECK = Path(__file__).parents[1] / "validation" / "data" / "moordyn_decks" / "MoorDyn" / "example" / "body.txt"
 
@@ -80,8 +81,9 @@ def test_init_step_and_close_give_system_dynamics_dataset(hull):
                  "coupled_position", "coupled_force"):
         assert name in ds
     assert ds.time.values == pytest.approx([0.0, 0.2, 0.4, 0.6, 0.8])
-    assert ds.coupled_force.values == pytest.approx(np.array(forces))
-    assert ds.body_position.sel(body="hull", dof="x").values == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
+    # the forces [N] and moments [N m] of the coupled DOFs, one variable per unit (NaN at the other kind's DOFs)
+    assert joined([ds.coupled_force, ds.coupled_moment]) == pytest.approx(np.array(forces))
+    assert ds.body_position.sel(body="hull", axis="x").values == pytest.approx([0.0, 0.5, 1.0, 1.5, 2.0])
 
 
 def test_bad_inputs_get_one_clear_error_each():

@@ -13,6 +13,7 @@ from seacable.cli import main
 from seacable.mooring.motion import HarmonicMotion, PlatformMotion, TimeSeriesMotion
 from seacable.mooring.network import element_damping, network_from_line
 from seacable.mooring.solver import MooringModel, Water, simulate, static_equilibrium
+from seacable.results import open_netcdf
 
 EXAMPLES = Path(__file__).parents[2] / "examples"
 CHAIN = sc.LineType(diameter=0.09, mass_per_length=77.7066, weight_in_water=698.094, axial_stiffness=384.243e6)
@@ -232,7 +233,6 @@ def test_cli_runs_a_moordyn_file(tmp_path, capsys):
 
 def test_cli_moves_vessel_points_rigidly_from_a_platform_csv(tmp_path):
     """A CSV with surge and yaw columns is a rigid platform motion: the three fairleads move on it."""
-    import xarray as xr
 
     from seacable.mooring.moordyn import run_moordyn_file
 
@@ -246,7 +246,7 @@ def test_cli_moves_vessel_points_rigidly_from_a_platform_csv(tmp_path):
                comments="")
     out = tmp_path / "spread.nc"
     assert main(["run", str(f), "--duration", "2", "--motion", str(csv), "-o", str(out), "--no-plots"]) == 0
-    ds = xr.open_dataset(out)
+    ds = open_netcdf(out)
     ref = run_moordyn_file(f, duration=2.0, motion=PlatformMotion(file=str(csv)))
     # the CLI ran the platform motion (not offsets of x): the same tensions as the Python API, to the
     # NetCDF round trip
@@ -272,7 +272,6 @@ def test_cli_takes_the_spectral_radius_of_a_moordyn_file(tmp_path, capsys):
     the tensions differ from average acceleration's: the scheme damps); outside [0, 1] it is refused with
     the range; a YAML case takes it in its analysis; a deck with a body (the system dynamics, average
     acceleration only) refuses it."""
-    import xarray as xr
 
     f = tmp_path / "three.txt"
     f.write_text(THREE_LINES.replace("4     Free        0       0       -50     100    30      1.0    1.0",
@@ -286,7 +285,7 @@ def test_cli_takes_the_spectral_radius_of_a_moordyn_file(tmp_path, capsys):
         out = tmp_path / f"r{rho}.nc"
         assert main(["run", str(f), "--duration", "3", "--motion", str(csv), "--time-step", "0.1",
                      "--spectral-radius", rho, "-o", str(out), "--no-plots"]) == 0
-        runs[rho] = xr.open_dataset(out)
+        runs[rho] = open_netcdf(out)
     assert '"spectral_radius": 0.5' in runs["0.5"].attrs["settings"]
     assert '"spectral_radius": 1.0' in runs["1"].attrs["settings"]
     assert not np.allclose(runs["1"].fairlead_tension.values, runs["0.5"].fairlead_tension.values, rtol=1e-6)

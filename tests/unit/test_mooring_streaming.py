@@ -25,6 +25,7 @@ from seacable.mooring.moordyn import moordyn_model, run_moordyn_case
 from seacable.mooring.motion import HarmonicMotion, bind
 from seacable.mooring.run import prepare_mooring_dynamic, stored_per_output
 from seacable.mooring.solver import line_end_nodes, simulate, static_equilibrium
+from seacable.results import open_netcdf
 
 DATA = Path(__file__).parents[1] / "validation" / "data"
 THREE = DATA / "three_chains_deck.txt"  # three 40-segment WD0200 chains (bench/bench_memory.py's case)
@@ -169,7 +170,7 @@ def test_a_result_written_as_it_goes_is_the_result_in_memory(tmp_path, monkeypat
     _same(one, many)
     _same(one, written.load())
     assert sorted(p.name for p in tmp_path.iterdir()) == ["three.nc"]
-    with xr.open_dataset(out) as ds:
+    with open_netcdf(out) as ds:
         # chunks of about 2**17 values: 1065 outputs of 3 x 41, down to a power of two (whole chunks a block)
         assert ds["x"].encoding["chunksizes"] == (3, 1024, 41)
 

@@ -16,10 +16,10 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
-import xarray as xr
 
 from seacable.cli import main
 from seacable.design import summary
+from seacable.results import open_netcdf
 
 DT = 0.5
 CHROMIUM = "/usr/bin/chromium"
@@ -308,7 +308,7 @@ def test_a_short_real_run_of_the_three_chain_deck(tmp_path, files_only):
     out = tmp_path / "three.html"
     assert main(["report", str(nc), "-o", str(out), "--tn-curve", "studless", "--nominal-diameter", "0.14"]) == 0
     seeds = pd.read_csv(tmp_path / "three_seeds.csv")
-    with xr.open_dataset(nc) as ds:
+    with open_netcdf(nc) as ds:   # seacable's reader: the lines' names (the file's line_label) as the coordinate
         for line in ds["line"].values:
             row = seeds[(seeds["line"] == line) & (seeds["end"] == "fairlead")].iloc[0]
             assert row["maximum [N]"] == float(ds["fairlead_tension"].sel(line=line).max())

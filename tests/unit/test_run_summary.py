@@ -16,7 +16,7 @@ from seacable import cli
 from seacable._window import statistics_start
 from seacable.cli import main
 from seacable.extremes import case_extremes
-from seacable.results import case_yaml
+from seacable.results import case_yaml, open_netcdf
 from seacable.run_summary import _fmt, summary_rows
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -197,7 +197,7 @@ def test_run_prints_the_summary_and_quiet_prints_nothing(tmp_path, capsys):
     case = str(EXAMPLES / "oc3_hywind_static.yaml")
     assert main(["run", case, "--no-plots", "-o", str(tmp_path / "a.nc")]) == 0
     out = capsys.readouterr().out
-    ds = xr.open_dataset(tmp_path / "a.nc")
+    ds = open_netcdf(tmp_path / "a.nc")
     assert "fairlead tension" in out and f"{_fmt(float(ds.fairlead_tension) / 1e3)} kN" in out
     ds.close()
     assert main(["run", case, "--no-plots", "--quiet", "-o", str(tmp_path / "b.nc")]) == 0

@@ -15,12 +15,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import xarray as xr
 import yaml
 
 import seacable as sc
 from seacable.cli import main
 from seacable.errors import CaseFileError, InputError
+from seacable.results import open_netcdf
 from seacable.sweeps import Sweep, load_sweep, parse_path, run_case
 from seacable.sweeps.engine import summary_table
 
@@ -189,7 +189,7 @@ def test_sweep_on_2_workers_equals_cases_one_by_one(tmp_path, scheduler, one_by_
     np.testing.assert_array_equal(summary["analysis.payout.slack"].values, np.tile(SLACKS, 6))
     for i, ds in enumerate(one_by_one):
         # the same numbers: the per-case file is the result of seacable.run, bit for bit
-        with xr.open_dataset(tmp_path / "cases" / f"{i:04d}.nc") as saved:
+        with open_netcdf(tmp_path / "cases" / f"{i:04d}.nc") as saved:
             for name in ("top_tension", "entry_angle", "x", "z", "tension"):
                 np.testing.assert_array_equal(saved[name].values, ds[name].values, err_msg=name)
         # and the summary row is the extremes of that result

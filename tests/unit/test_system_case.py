@@ -17,12 +17,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import xarray as xr
 import yaml
 
 import seacable as sc
 from seacable.cli import main
 from seacable.io import dump_case, parse_case
+from seacable.results import open_netcdf, stiffness_matrix
 from seacable.system import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -195,8 +195,8 @@ def test_result_holds_the_solver_values(spread):
     np.testing.assert_allclose(intact.anchor_horizontal_force.values, np.hypot(fa[:, 0], fa[:, 1]), rtol=1e-12)
     np.testing.assert_allclose(intact.anchor_vertical_force.values, fa[:, 2], rtol=1e-12, atol=1e-9)
     np.testing.assert_allclose(intact.grounded_length.values, np.asarray(eq.grounded_length)[order], rtol=1e-12)
-    np.testing.assert_allclose(intact.stiffness.sel(body="buoy").values, eq.body_stiffness("buoy"), rtol=1e-12)
-    np.testing.assert_allclose(intact.coupled_stiffness.values, eq.stiffness, rtol=1e-12)
+    np.testing.assert_allclose(stiffness_matrix(intact).sel(body="buoy").values, eq.body_stiffness("buoy"), rtol=1e-12)
+    np.testing.assert_allclose(stiffness_matrix(intact, "coupled_stiffness").values, eq.stiffness, rtol=1e-12)
 
 
 def test_anchor_loads_are_the_components_of_the_anchor_tension(spread):
@@ -249,13 +249,13 @@ def test_the_damaged_body_drifts_away_from_the_broken_line(spread):
 
 def test_translational_stiffness_is_symmetric_and_positive(spread):
     _, ds = spread
-    k = ds.stiffness.sel(condition="intact", body="buoy").values
+    k = stiffness_matrix(ds).sel(condition="intact", body="buoy").values
     # translations: the lines' force derives from their elastic and gravity energy, so the translational
     # block is symmetric to rounding (the rotational blocks are not under a net line moment)
     t = k[:3, :3]
     np.testing.assert_allclose(t, t.T, rtol=1e-6, atol=1e-9 * np.abs(t).max())
     assert k[0, 0] > 0 and k[1, 1] > 0 and k[5, 5] > 0
-    assert ds.stiffness.dims == ("condition", "body", "dof", "dof2")
+    assert ds.stiffness_translation.dims == ("condition", "body", "dof", "dof2")
     assert list(ds.dof.values) == ["surge", "sway", "heave", "roll", "pitch", "yaw"]
 
 
@@ -309,7 +309,7 @@ def test_small_loads_follow_the_stiffness(offsets):
     """A 1 kN load displaces the buoy by the compliance: the inverse of the total 6x6 stiffness."""
     _, ds, static = offsets
     s = static.sel(condition="intact")
-    k = s.stiffness.sel(body="buoy").values + s.hydrostatic_stiffness.sel(body="buoy").values
+    k = stiffness_matrix(s).sel(body="buoy").values + stiffness_matrix(s, "hydrostatic_stiffness").sel(body="buoy").values
     d = ds.sel(condition="intact")
     f = 1.0e3
     for h in d.heading.values:
@@ -344,7 +344,7 @@ def test_cli_runs_and_plots_a_system_case(tmp_path, capsys):
     assert "spread_system.png" in printed and "spread_tensions.png" in printed
     assert main(["plot", str(out), "-o", str(tmp_path / "figs")]) == 0
     assert sorted(p.name for p in (tmp_path / "figs").glob("*.png")) == ["spread_system.png", "spread_tensions.png"]
-    ds = xr.open_dataset(out)
+    ds = open_netcdf(out)
     assert ds.attrs["analysis"] == "system_static"
     ds.close()
 
@@ -656,7 +656,7 @@ def test_a_system_without_lines_has_an_empty_line_dimension_that_writes_and_plot
     assert abs(ds["body_pitch"].item()) < 1e-7
     assert ds["pin_reaction_z"].item() == pytest.approx(-(1025.0 * 0.0490874 - 10.0) * 9.81, rel=1e-9)
     ds.to_netcdf(tmp_path / "rod.nc")
-    with xr.open_dataset(tmp_path / "rod.nc") as back:
+    with open_netcdf(tmp_path / "rod.nc") as back:
         assert back.sizes["line"] == 0 and back["body_pitch"].item() == pytest.approx(ds["body_pitch"].item())
     assert plot_system_static(ds)
     # in time the same rod, free (the dynamics hold no pin): released level, it rises
@@ -664,7 +664,7 @@ def test_a_system_without_lines_has_an_empty_line_dimension_that_writes_and_plot
                           "start": "held"})
     data["bodies"]["rod"]["pinned"] = False
     dyn = sc.run(parse_case(data))
-    z = dyn["body_position"].sel(body="rod", dof="z").values
+    z = dyn.body_position.sel(body="rod", axis="z").values
     assert dyn.sizes["line"] == 0 and np.all(np.isfinite(z)) and z[-1] > z[0]
     dyn.to_netcdf(tmp_path / "rod_dyn.nc")
     assert plot_system_dynamic(dyn)

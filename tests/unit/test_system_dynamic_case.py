@@ -18,7 +18,6 @@ from pathlib import Path
 import matplotlib
 import numpy as np
 import pytest
-import xarray as xr
 import yaml
 
 matplotlib.use("Agg")
@@ -28,6 +27,7 @@ from seacable.cli import main  # noqa: E402
 from seacable.errors import InputError  # noqa: E402
 from seacable.io.moordyn import load_moordyn_case, moordyn_system, read_moordyn  # noqa: E402
 from seacable.mooring.outputs import line_end_forces  # noqa: E402
+from seacable.results import body_pose, open_netcdf  # noqa: E402
 from seacable.system.dynamics import LineFailure, build_system_fe, static_system  # noqa: E402
 from seacable.system.statics import solve_equilibrium  # noqa: E402
 
@@ -89,7 +89,7 @@ def rest(tmp_path_factory):
 def test_run_from_rest_stays_at_the_static_start(rest):
     _, _, ds = rest
     assert ds.attrs["analysis"] == "system_dynamic"
-    bp = ds.body_position.sel(body="buoy").values
+    bp = body_pose(ds.sel(body="buoy"))
     ten = ds.fairlead_tension.values
     # The run starts at the static equilibrium of the same FE system and nothing loads it: the only
     # change is the Newton residual of each step (1e-7 relative on forces of ~1e5 N -> ~1e-2 N, on
@@ -107,10 +107,10 @@ def test_start_is_the_catenary_equilibrium_to_second_order(rest):
     differ by the discretisation error, which falls by 4 per halving of the element length."""
     _, case, ds = rest
     eq = solve_equilibrium(case.system(), case.environment)
-    z0 = ds.body_position.sel(body="buoy", dof="z").values[0]
+    z0 = ds.body_position.sel(body="buoy", axis="z").values[0]
     # measured 4.64e-3 m at 10 elements (4.6e-3 = the FE sag error of 11 m elements); 6e-3 bounds it
     assert abs(z0 - eq.body_position[0, 2]) < 6e-3
-    assert abs(ds.body_position.sel(body="buoy", dof="x").values[0] - eq.body_position[0, 0]) < 1e-6  # symmetric
+    assert abs(ds.body_position.sel(body="buoy", axis="x").values[0] - eq.body_position[0, 0]) < 1e-6  # symmetric
     # the fairlead tension is the line's end force (its end element and half element, as a single line's): the
     # catenary's at the fairlead to the discretisation error
     t_fair = ds.fairlead_tension.values[0]
@@ -145,20 +145,20 @@ def test_cli_validate_run_plot_and_netcdf_round_trip(rest, tmp_path, capsys):
     assert "system_dynamic" in capsys.readouterr().out
     out = tmp_path / "out" / "buoy3.nc"
     assert main(["run", str(path), "-o", str(out), "--no-plots"]) == 0
-    with xr.open_dataset(out) as back:
+    with open_netcdf(out) as back:
         assert back.attrs["analysis"] == "system_dynamic"
         # the same deterministic run: bit-for-bit up to NetCDF's float64 storage
         np.testing.assert_array_equal(back.fairlead_tension.values, ds.fairlead_tension.values)
-        np.testing.assert_array_equal(back.body_position.values, ds.body_position.values)
+        np.testing.assert_array_equal(body_pose(back), body_pose(ds))
         assert list(back.line.values) == ["line1", "line2", "line3"]
         for name in list(back.data_vars) + list(back.coords):
             assert {"units", "long_name"} <= set(back[name].attrs), name
     capsys.readouterr()
     assert main(["plot", str(out), "-o", str(tmp_path / "figs")]) == 0
     assert len(list((tmp_path / "figs").glob("*.png"))) == 3
-    from seacable.plot.system import plot_system_dynamic
-
     import matplotlib.pyplot as plt
+
+    from seacable.plot.system import plot_system_dynamic
 
     figs = plot_system_dynamic(ds)
     assert len(figs) == 3
@@ -186,7 +186,7 @@ def test_external_force_csv_beside_the_case_moves_the_buoy_to_the_static_offset(
     elsewhere.mkdir()
     monkeypatch.chdir(elsewhere)
     ds = sc.run(sc.load_case(path))
-    bp = ds.body_position.sel(body="buoy").values
+    bp = body_pose(ds.sel(body="buoy"))
     offset = bp[ds.time.values >= 50.0, :3].mean(axis=0) - bp[0, :3]
     static = eqf.body_position[0, :3] - eq0.body_position[0, :3]  # (0.2856, 0, -0.0111) m
     # Surge: the FE lines' stiffness carries their discretisation error (0.35 % in tension at 10
@@ -230,7 +230,7 @@ def test_moordyn_deck_with_a_body_validates_and_runs_as_system_static(tmp_path, 
     assert main(["run", str(BODY_DECK), "-o", str(out), "--no-plots"]) == 0
     system, environment = moordyn_system(read_moordyn(BODY_DECK))
     eq = solve_equilibrium(system, environment)
-    with xr.open_dataset(out) as ds:
+    with open_netcdf(out) as ds:
         assert ds.attrs["analysis"] == "system_static"
         # the same statics: the run is moordyn_system + solve_equilibrium (all line ends B on the body)
         np.testing.assert_allclose(ds.fairlead_tension.values.ravel(), eq.end_b_tension, rtol=1e-9)
@@ -242,7 +242,7 @@ def test_moordyn_deck_with_a_body_and_a_duration_runs_system_dynamic(tmp_path, c
     out = tmp_path / "body_dyn.nc"
     assert main(["run", str(BODY_DECK), "-o", str(out), "--no-plots", "--duration", "1", "--time-step", "0.1",
                  "--output-interval", "0.5"]) == 0
-    with xr.open_dataset(out) as ds:
+    with open_netcdf(out) as ds:
         assert ds.attrs["analysis"] == "system_dynamic"
         np.testing.assert_allclose(ds.time.values, [0.0, 0.5, 1.0])
         ten = ds.fairlead_tension.values

@@ -15,6 +15,7 @@ import seacable as sc
 import seacable.system.dynamics as D
 from seacable.errors import InputError, SeacableWarning
 from seacable.raos import rao_motion, read_rao_csv
+from seacable.results import body_pose
 from seacable.system.dynamics.loop import _simulate_lines
 
 from .test_rao_motion import _csv
@@ -67,7 +68,7 @@ def test_a_platform_follows_its_raos_in_an_irregular_sea_about_a_mean_offset(tmp
     t = ds.time.values
     q = rao_motion(read_rao_csv(_csv(tmp_path)), case.environment.waves.components(150.0, 9.81), t).T
     ramp = np.where(t < 10.0, 0.5 * (1 - np.cos(math.pi * t / 10.0)), 1.0)[:, None]
-    np.testing.assert_allclose(ds.body_position.values[:, 0], np.asarray(mean) + ramp * q, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(body_pose(ds)[:, 0], np.asarray(mean) + ramp * q, rtol=0, atol=1e-12)
     fair = np.array([-6.0, 0.0, -10.0])  # fairlead1 on the buoy, turned by the mean yaw and moved by the offset
     c, s = math.cos(0.02), math.sin(0.02)
     expected = np.array([c * fair[0] - s * fair[1] + 8.0, s * fair[0] + c * fair[1] - 1.0, fair[2]])

@@ -27,6 +27,7 @@ from _evidence import check
 
 from seacable.errors import ConvergenceError, InputError, NoSolutionError
 from seacable.io.moordyn import is_moordyn_file, moordyn_system, read_moordyn
+from seacable.results import body_pose
 
 HERE = Path(__file__).parent / "data" / "moordyn_decks"
 REFERENCE = json.loads((HERE / "reference.json").read_text())
@@ -185,7 +186,7 @@ def test_decks_without_a_static_equilibrium_run_in_time(deck):
             _run_in_time(deck)
         return
     _, _, ds = _run_in_time(deck)
-    assert np.all(np.isfinite(ds["body_position"].values))
+    assert np.all(np.isfinite(body_pose(ds)))
     assert ds.sizes["time"] == 3
 
 
@@ -391,7 +392,7 @@ def test_gravity_off_leaves_straight_lines_stretched_by_hookes_law():
     # in time (released where the deck puts it) nothing moves: the same tensions throughout, 1e-9
     _, _, ds = _run_in_time("MoorDyn/tests/Mooring/body_tests/rotatingBody.txt")
     assert np.allclose(ds["fairlead_tension"].values[:, :6], ea * (1.0 / 0.9 - 1.0), rtol=1e-9)
-    assert np.allclose(ds["body_position"].values[:, 0, :3], (0.0, 0.0, 5.0), atol=1e-9)
+    assert np.allclose(body_pose(ds)[:, 0, :3], (0.0, 0.0, 5.0), atol=1e-9)
 
     deck = "MoorDyn/tests/Mooring/syrope/linear_wc/line.txt"
     md, eq = _solve(deck)
@@ -444,10 +445,10 @@ def test_a_rising_rod_accelerates_with_its_added_mass():
     a = (rho * rod.volume - rod.mass) * g / (rod.mass + ca * rho * rod.volume)
     assert a == pytest.approx(3.296, rel=1e-3)
     t = ds["time"].values
-    z = ds["body_position"].sel(body="rod1", dof="z").values
+    z = ds.body_position.sel(body="rod1", axis="z").values
     assert z == pytest.approx(-10.0 + a * t**2 / 2, rel=1e-9)
     # it rises level: the added mass acts along the rod, about the reference point at its end A
-    assert np.allclose(ds["body_position"].sel(body="rod1", dof="pitch").values, math.pi / 2, atol=1e-9)
+    assert np.allclose(ds.body_rotation.sel(body="rod1", angle="pitch").values, math.pi / 2, atol=1e-9)
 
 
 def test_shared_mooring_agrees_with_fast_farm_where_its_moordyn_had_settled():

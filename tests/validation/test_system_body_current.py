@@ -18,6 +18,7 @@ import yaml
 
 import seacable as sc
 from seacable.errors import InputError
+from seacable.results import body_pose
 from seacable.system.model import BodyCurrent
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "spread_mooring.yaml"
@@ -89,7 +90,7 @@ def test_a_floating_body_with_a_database_runs_in_a_current(tmp_path, hull_case):
     data["environment"]["current"] = {"speed": 1.0, "heading": 0.5}
     path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
     ds = sc.run(sc.load_case(path))
-    xyz = ds["body_position"].values[:, 0, :3]
+    xyz = body_pose(ds)[:, 0, :3]
     assert np.hypot(*xyz[0, :2]) > 0.1  # the current pushes it along 0.5 rad
     # along the table's force (409 and 223 kN/(m/s)^2 in surge and sway at 0.5 rad, interpolated) and the ropes' drag
     # (along the current): the three ropes' horizontal stiffness is isotropic (three-fold symmetry), so within 5 %

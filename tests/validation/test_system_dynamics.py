@@ -25,6 +25,7 @@ import pytest
 from seacable.environment import Environment
 from seacable.line import Line, LineType
 from seacable.mooring.outputs import line_end_forces
+from seacable.results import body_pose
 from seacable.system.dynamics import (
     SystemDynamicAnalysis,
     body_line_force,
@@ -127,7 +128,7 @@ def test_surge_decay_period_against_the_single_dof_closed_form():
     K, _ = mooring_stiffness(system, 0, 0.1)
     T0 = 2 * math.pi * math.sqrt((mass + RHO * 1050) / K[0])
     ds, _ = release(system, [0.3, 0, 0, 0, 0, 0], duration=4 * T0, time_step=T0 / 200, output_interval=T0 / 200)
-    T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(dof="x").values[:, 0])))
+    T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(axis="x").values[:, 0])))
     assert 0.0 < T / T0 - 1 < 0.012, (T, T0)
 
 
@@ -220,8 +221,8 @@ def test_surge_decay_side_by_side_with_moordyn(tmp_path):
     t_ref = np.arange(len(ref)) * dt
     ds = run(with_body(system, position=tuple(start)), start="held", duration=200.0, time_step=0.1,
              output_interval=dt)
-    x = ds.body_position.sel(dof="x").values[:, 0]
-    pitch = ds.body_position.sel(dof="pitch").values[:, 0]
+    x = ds.body_position.sel(axis="x").values[:, 0]
+    pitch = ds.body_rotation.sel(angle="pitch").values[:, 0]
     ours, theirs = np.diff(crossings(ds.time.values, x)), np.diff(crossings(t_ref, ref[:, 0]))
     assert len(ours) == len(theirs) == 3
     np.testing.assert_allclose(ours, theirs, rtol=0.005)
@@ -267,7 +268,7 @@ def test_heave_oscillates_at_the_hydrostatic_frequency(hydrostatics):
         system = floating(waterplane_area=0.0, hydrostatic_stiffness=C.tolist())
     ds, T0, _k_total, k_lines, _ = heave_run(system)
     assert abs(k_lines) < 0.01 * RHO * G * 50.0  # a weak mooring: the waterplane carries the heave
-    T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(dof="z").values[:, 0])))
+    T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(axis="z").values[:, 0])))
     assert T == pytest.approx(T0, rel=0.003)
 
 
@@ -282,7 +283,7 @@ def test_linear_damping_gives_the_logarithmic_decrement():
     B = np.zeros((6, 6))
     B[2, 2] = 2 * zeta * math.sqrt(k * (1e6 + 5e5))
     ds, *_ = heave_run(with_body(system, linear_damping=B.tolist()))
-    z = ds.body_position.sel(dof="z").values[:, 0]
+    z = ds.body_position.sel(axis="z").values[:, 0]
     p = peaks(z - z[-len(z) // 4:].mean())
     dec = np.log(p[:-1] / p[1:])
     np.testing.assert_allclose(dec, 2 * math.pi * zeta / math.sqrt(1 - zeta**2), rtol=0.03)
@@ -296,7 +297,7 @@ def test_quadratic_damping_takes_its_energy_per_cycle():
     B2 = np.zeros((6, 6))
     B2[2, 2] = 2e5
     ds, *_ = heave_run(floating(quadratic_damping=B2.tolist()), periods=3)
-    z = ds.body_position.sel(dof="z").values[:, 0]
+    z = ds.body_position.sel(axis="z").values[:, 0]
     _, st = mooring_stiffness(floating(quadratic_damping=B2.tolist()), 2, 0.05)
     p = peaks(z - st.body_position[0, 2])
     A = 0.5 * (p[:-1] + p[1:])
@@ -324,7 +325,7 @@ def test_external_force_series_moves_the_body_to_the_static_offset(tmp_path):
     q1 = static_system(build_system_fe(loaded, ENV)).body_position[0]
     ds = run(damped, duration=600.0, time_step=0.5, output_interval=1.0,
              external_forces={"buoy": {"file": str(csv)}})
-    x = ds.body_position.sel(dof="x").values[:, 0] - q0[0]
+    x = ds.body_position.sel(axis="x").values[:, 0] - q0[0]
     assert q1[0] - q0[0] > 0.3
     assert x[-1] == pytest.approx(q1[0] - q0[0], rel=0.01)
     assert x[150] / x[-1] == pytest.approx((150 - c / K[0]) / 200, rel=0.02)
@@ -370,7 +371,7 @@ def test_pitch_mode_of_a_low_cg_couples_with_surge():
     shape = vec[:, k].real / vec[1, k].real * 0.01
     ds = run(system, release_offsets={"buoy": (shape[0], 0, 0, 0, shape[1], 0)}, duration=4 * T0,
              time_step=T0 / 100, output_interval=T0 / 100)
-    T = np.mean(np.diff(crossings(ds.time.values, ds.body_position.sel(dof="pitch").values[:, 0])))
+    T = np.mean(np.diff(crossings(ds.time.values, ds.body_rotation.sel(angle="pitch").values[:, 0])))
     assert T == pytest.approx(T0, rel=0.003)
 
 
@@ -501,7 +502,7 @@ def test_a_prescribed_body_moved_as_the_free_one_moved_loads_its_lines_alike(tmp
     sit at r + R p."""
     system = buoy_system(body={"center_of_gravity": (0, 0, -10)})
     free, _q = release(system, [2.0, 0, 0, 0, 0, 0], duration=100.0, time_step=0.1, output_interval=0.1)
-    qt = free.body_position.sel(body="buoy").values
+    qt = body_pose(free.sel(body="buoy"))
     csv = tmp_path / "motion.csv"
     rows = np.column_stack([free.time.values, qt - qt[0]])
     np.savetxt(csv, rows, delimiter=",", header="time,surge,sway,heave,roll,pitch,yaw", comments="")
@@ -513,7 +514,7 @@ def test_a_prescribed_body_moved_as_the_free_one_moved_loads_its_lines_alike(tmp
     # first sample, where the free body starts with 0.074 m/s^2, 114 N of the 1540 kg half element's; compared
     # from the second output on: 7.9e-5 measured)
     assert np.max(np.abs(T_pres - T_free)[1:]) < 2e-4 * np.mean(T_free)
-    np.testing.assert_allclose(ds.body_position.sel(body="buoy").values, qt, atol=1e-9)
+    np.testing.assert_allclose(body_pose(ds.sel(body="buoy")), qt, atol=1e-9)
     # the fairleads sit on the moved body: x = r + R p
     from seacable.mooring.motion import rotation_matrix
 

@@ -22,6 +22,7 @@ import pytest
 from seacable.environment import Environment
 from seacable.line import Line, LineType
 from seacable.mooring.motion import rotation_matrix
+from seacable.results import body_pose
 from seacable.system.dynamics import SystemDynamicAnalysis, build_system_fe, run_system_dynamic, static_system
 from seacable.system.model import MooringSystem
 from seacable.system.statics import solve_equilibrium
@@ -78,7 +79,7 @@ def test_a_body_in_current_drifts_to_the_offset_of_its_drag():
                                                                            output_interval=1.0, start="held",
                                                                            damping_ratio=0.5, rayleigh=(0.05, 0),
                                                                            n_elements=n)))
-    q_end = ds.body_position.sel(body="buoy").isel(time=-1).values
+    q_end = body_pose(ds.sel(body="buoy").isel(time=-1))
     force = drag_at(q_end)
     # per axis |u| u: B2 u^2 (cos^2, sin^2) for a body that barely turns
     assert np.linalg.norm(force[:3]) == pytest.approx(1e5 * SPEED**2 * math.hypot(math.cos(HEADING) ** 2,

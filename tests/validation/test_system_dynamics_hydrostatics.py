@@ -36,6 +36,7 @@ import pytest
 
 from seacable.environment import Environment
 from seacable.line import Line, LineType
+from seacable.results import body_pose
 from seacable.system.dynamics import (
     SystemDynamicAnalysis,
     body_line_force,
@@ -58,7 +59,6 @@ ADDED = np.diag([5e5, 5e5, 5e5, 2e7, 3e7, 1e7])
 ZB = -1.0                                 # centre of buoyancy above the reference point [m]
 C = np.array([0.0, 0.0, RHO * G * AWP, RHO * G * (IWP[0] + VOLUME * ZB), RHO * G * (IWP[1] + VOLUME * ZB), 0.0])
 DOF = {"heave": 2, "roll": 3, "pitch": 4}
-NAME = {2: "z", 3: "roll", 4: "pitch"}
 
 
 def floating(hydrostatics):
@@ -119,7 +119,7 @@ def test_free_decay_period_is_the_hydrostatic_one(mode, hydrostatics):
     a = SystemDynamicAnalysis(release_offsets={"buoy": tuple(offset)}, duration=3.0 * T0, time_step=T0 / 100,
                               output_interval=T0 / 100)
     ds = run_system_dynamic(SimpleNamespace(environment=ENV, analysis=a, system=system, name="test"))
-    x = ds.body_position.sel(dof=NAME[dof]).values[:, 0] - st.body_position[0, dof]
+    x = body_pose(ds)[:, 0, dof] - st.body_position[0, dof]   # dof 2: heave, 3: roll, 4: pitch
     assert np.max(np.abs(x)) < 1.01 * amp                   # oscillates about the equilibrium, no capsize
     T = np.mean(np.diff(crossings(ds.time.values, x)))
     assert T == pytest.approx(T0, rel=0.002)

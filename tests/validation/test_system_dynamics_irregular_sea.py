@@ -18,6 +18,7 @@ import yaml
 
 import seacable as sc
 import seacable.system.dynamics as D
+from seacable.results import body_pose
 from seacable.system.dynamics import kernel as DK
 from seacable.system.dynamics import loop as DL
 
@@ -73,7 +74,7 @@ def test_a_free_body_held_still_gives_its_lines_the_tensions_of_a_fixed_one(monk
     free = _spread("free")
     assert not D.lines_only(D.prepare_system_dynamic(free).fe)  # the coupled loop
     widened = sc.run(free)
-    q = widened.body_position.values
+    q = body_pose(widened)
     assert float(np.max(np.abs(q - q[0]))) < 1e-6  # held nearly still
     calm = sc.run(_spread("free", waves=None)).fairlead_tension.values
     tol = 1e-4 * mean
@@ -118,8 +119,8 @@ def test_a_floating_body_with_its_database_runs_in_an_irregular_sea(tmp_path, hu
     ds = sc.run(sc.load_case(_hull(hull_case, tmp_path, sea)))
     t = ds.time.values
     after = t > 20.0
-    heave = ds.body_position.values[:, 0, 2]
-    assert np.all(np.isfinite(ds.body_position.values)) and np.all(np.isfinite(ds.fairlead_tension.values))
+    heave = body_pose(ds)[:, 0, 2]
+    assert np.all(np.isfinite(body_pose(ds))) and np.all(np.isfinite(ds.fairlead_tension.values))
     assert 0.05 < float(np.ptp(heave[after])) < 4.0, float(np.ptp(heave[after]))
     eta = ds.wave_elevation.values
     assert 2.0 < float(np.ptp(eta[after])) < 12.0  # the irregular sea stored, about Hs to 2.5 Hs in a minute
@@ -137,7 +138,7 @@ def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeyp
     memory force is lagged by at most one step (0.1 s of the kernel's 60 s), a difference the lightly damped
     surge (5 % of critical) carries on; and the halved interval does change the run."""
     case = sc.load_case(_hull(hull_case, tmp_path, {"height": 2.0, "period": 7.4}))
-    ref = sc.run(case).body_position.values[:, 0]
+    ref = body_pose(sc.run(case))[:, 0]
     orig = DK.coupled_steps
     forced = []
 
@@ -148,7 +149,7 @@ def test_a_body_with_radiation_memory_halves_a_step_that_fails(tmp_path, monkeyp
         return orig(*args)
 
     monkeypatch.setattr(DK, "coupled_steps", flaky)
-    halved = sc.run(case).body_position.values[:, 0]
+    halved = body_pose(sc.run(case))[:, 0]
     assert forced == [30.0]
     span = np.ptp(ref, axis=0)
     err = np.max(np.abs(halved - ref), axis=0)

@@ -29,6 +29,7 @@ from scipy.special import ellipk
 from seacable.environment import SystemEnvironment
 from seacable.line import Line, LineType
 from seacable.mooring.motion import rotation_matrix
+from seacable.results import body_pose
 from seacable.system.dynamics import SystemDynamicAnalysis, build_system_fe, simulate_system, static_system
 from seacable.system.dynamics import frames as DF
 from seacable.system.model import MooringSystem
@@ -290,7 +291,7 @@ def test_md_linefail_rod_falls_and_turns_over_at_the_default_time_step():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the rod's indeterminate spin is reported by a warning
         eq = solve_equilibrium(system, env)
-    q = ds.body_position.sel(body="rod1").values
+    q = body_pose(ds.sel(body="rod1"))
     assert q[0, 2] == pytest.approx(eq.body_position[0][2], abs=1e-3)
     assert abs(q[0, 3]) < 1e-3 and abs(q[0, 4]) < 1e-3
     ft = dict(zip(ds.line.values, ds.failure_time.values, strict=True))
@@ -309,7 +310,7 @@ def test_md_linefail_rod_falls_and_turns_over_at_the_default_time_step():
     drag, added = rod.matrix("quadratic_damping")[2, 2], rod.matrix("added_mass")[2, 2]
     vt = math.sqrt(wet / drag)
     tau = (rod.mass + added) * vt / wet
-    v = ds.body_velocity.sel(body="rod1").values[:, 2]
+    v = body_pose(ds.sel(body="rod1"), "body_velocity", "body_rotation_rate")[:, 2]
     k15, k30 = np.searchsorted(t, 15.0), len(t) - 1
     expect = -vt * math.tanh(math.atanh(-v[k15] / vt) + (t[k30] - t[k15]) / tau)
     assert v[k30] == pytest.approx(expect, rel=1e-3)

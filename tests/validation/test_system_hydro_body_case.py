@@ -22,6 +22,7 @@ import pytest
 import seacable as sc
 from seacable.errors import InputError
 from seacable.hydro import frequency_response, ogilvie, read_wamit, retardation_kernel
+from seacable.results import body_pose
 
 ROOT = Path(__file__).parents[1] / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi"
 RHO, G = 1025.0, 9.80665
@@ -60,7 +61,7 @@ def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp
     case = sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE))
     ds = sc.run(case)
     t = np.asarray(ds["time"])
-    q = np.asarray(ds["body_position"]).reshape(t.size, 6)
+    q = body_pose(ds).reshape(t.size, 6)
     period = 2 * math.pi / OMEGA
     window = t > t[-1] - 10 * period
     basis = np.column_stack([np.cos(OMEGA * t[window]), np.sin(OMEGA * t[window]), np.ones(window.sum())])
@@ -84,7 +85,7 @@ def test_a_regular_wave_from_the_case_moves_the_body_as_the_frequency_domain(tmp
     # motion (the damping, in the body's axes, turning with its pitch: about 1 kN here, 3 % of the move).
     bare = sc.run(sc.load_case(hull_case(tmp_path, waves=WAVES, rope=ROPE, body={"hydrodynamics": {
         "file": str(ROOT), "kernel_length": 60.0, "ramp": 40.0, "drift": "none"}})))
-    mean_bare = np.linalg.lstsq(basis, np.asarray(bare["body_position"]).reshape(t.size, 6)[window], rcond=None)[0][2]
+    mean_bare = np.linalg.lstsq(basis, body_pose(bare).reshape(t.size, 6)[window], rcond=None)[0][2]
     drift = db.drift_at(OMEGA, 0.0) * (HEIGHT / 2) ** 2
     poses = []
     for force in (None, drift):

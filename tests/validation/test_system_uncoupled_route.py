@@ -28,6 +28,7 @@ from seacable.hydro.loads import _drift, qtf_at
 from seacable.hydro.response import _transfer, coefficients_at, slow_drift_variance
 from seacable.mooring.motion import sea_of
 from seacable.mooring.outputs import water_of_environment
+from seacable.results import body_pose, stiffness_matrix
 from seacable.system.uncoupled import prepare_system_uncoupled, uncoupled_motion
 
 DATA = Path(__file__).parents[1] / "data" / "volturnus"
@@ -73,11 +74,11 @@ def test_a_regular_wave_moves_the_uncoupled_body_by_the_database_rao(tmp_path, h
     ds = sc.run(case)
     assert ds.attrs["coupling"] == "uncoupled" and ds.attrs["analysis"] == "system_dynamic"
     t = np.asarray(ds["time"])
-    q = np.asarray(ds["body_position"])[:, 0]
+    q = body_pose(ds)[:, 0]
     mean = np.array([float(np.asarray(static[k]).reshape(-1)[0]) for k in
                      ("body_x", "body_y", "body_z", "body_roll", "body_pitch", "body_yaw")])
     np.testing.assert_allclose(ds.attrs["mean_position"], mean, atol=1e-9)
-    moor = np.asarray(static["stiffness"]).reshape(6, 6)
+    moor = np.asarray(stiffness_matrix(static)).reshape(6, 6)
     hydrostatic = np.asarray(case.system().bodies["hull"].hydrostatic_stiffness)
     a, b = (m[0] for m in coefficients_at(db, omega))
     h = frequency_response(_rigid(), a, b + DAMPING, hydrostatic + moor, db.excitation_at(omega, 0.0), omega)
@@ -412,7 +413,7 @@ def test_the_current_table_sets_the_uncoupled_mean_and_damps_the_low_frequency_m
     np.testing.assert_allclose(setup.linear_damping, expected, rtol=1e-5, atol=1e-5 * np.abs(damping).max())
     assert damping[0, 0] > 0.5e6  # the current damps the surge by as much as the hull's own 0.6 MN s/m
     coupled = sc.run(_current_case(hull_case, tmp_path, analysis={"duration": 5.0}))
-    np.testing.assert_allclose(coupled["body_position"].values[:, 0], np.tile(pose, (coupled.sizes["time"], 1)),
+    np.testing.assert_allclose(body_pose(coupled)[:, 0], np.tile(pose, (coupled.sizes["time"], 1)),
                                rtol=0, atol=1e-6 * offset)
 
 

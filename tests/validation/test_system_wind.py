@@ -17,8 +17,9 @@ from scipy import integrate
 
 import seacable as sc
 from seacable.errors import InputError
-from seacable.system.dynamics import build_system_fe
+from seacable.results import body_pose
 from seacable.system.dynamics import body as DB
+from seacable.system.dynamics import build_system_fe
 from seacable.wind import AIR_DENSITY, npd_spectrum
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "spread_mooring.yaml"
@@ -46,7 +47,7 @@ def test_a_steady_wind_pushes_the_body_as_its_force_by_hand(tmp_path):
     its table in the body's row), not a linearised damping."""
     windy = sc.run(sc.load_case(_case(tmp_path, {"speed": U0, "spectrum": "none"})))
     pushed = sc.run(sc.load_case(_case(tmp_path, None, external=(FORCE, 0, 0, 0, 0, 0), areas=False)))
-    x_wind, x_force = (float(ds["body_position"].values[0, 0, 0]) for ds in (windy, pushed))
+    x_wind, x_force = (float(body_pose(ds)[0, 0, 0]) for ds in (windy, pushed))
     assert x_force > 1.0  # 490 kN moves the buoy by metres
     assert x_wind == pytest.approx(x_force, rel=1e-6)
     case = sc.load_case(_case(tmp_path, {"speed": U0, "spectrum": "none"}))

@@ -28,6 +28,7 @@ from _evidence import check
 
 import seacable as sc
 from seacable.hydro.response import natural_periods
+from seacable.results import body_pose, stiffness_matrix
 from seacable.system.hydro import database
 
 EXAMPLE = Path(__file__).parents[2] / "examples" / "volturnus_storm.yaml"
@@ -50,7 +51,7 @@ def still(tmp_path_factory):
     case = sc.load_case(path)
     eq = sc.run(case)
     body = case.system().bodies["hull"]  # the database's hydrostatics resolved, the weight's moment added
-    stiffness = eq["coupled_stiffness"].values[0] + np.asarray(body.hydrostatic_stiffness)
+    stiffness = stiffness_matrix(eq, "coupled_stiffness").values[0] + np.asarray(body.hydrostatic_stiffness)
     mass = body.model_copy(update={"added_mass": None}).mass_matrix()  # rigid, about the reference point
     periods = natural_periods(database(body, 1025.0, 9.80665), mass, stiffness)
     pose = np.array([float(eq[f"body_{k}"].values[0, 0]) for k in DOFS])
@@ -66,7 +67,7 @@ def _period(still, dof: int, offset: float, duration: float) -> float:
     path = folder / f"decay{dof}.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
     ds = sc.run(sc.load_case(path))
-    x = ds["body_position"].values[:, 0, dof] - pose[dof]
+    x = body_pose(ds)[:, 0, dof] - pose[dof]
     t = ds["time"].values
     i = np.where(np.sign(x[:-1]) * np.sign(x[1:]) < 0)[0]
     crossings = t[i] - x[i] * (t[i + 1] - t[i]) / (x[i + 1] - x[i])

@@ -42,7 +42,7 @@ import yaml
 from .._model import load_yaml
 from .._window import statistics_window
 from ..errors import InputError
-from ..results import check_time
+from ..results import check_time, open_netcdf
 from . import combination, fatigue, statistics
 from .fatigue import resolve_tn_curve
 from .scatter import HEADING_PATH, HS_PATH, SEED_PATH, TP_PATH, read_scatter, scatter_probabilities
@@ -99,7 +99,7 @@ class Run:
             yield self.source
             return
         try:
-            ds = xr.open_dataset(self.source, engine="netcdf4")
+            ds = open_netcdf(self.source)   # time in seconds from the start (the file's is CF time)
         except (OSError, ValueError, RuntimeError, KeyError, TypeError) as err:
             raise InputError(f"result file '{self.source}' cannot be read: {err}. Suggested fix: give a file "
                              "written by 'seacable run' or 'seacable sweep'.") from None
@@ -621,7 +621,8 @@ def body_offsets(ds: xr.Dataset) -> dict[str, tuple[float, str]]:
     out = {}
     data = case_data(ds) or {}
     if "body_position" in ds.variables:
-        bp = ds["body_position"].transpose("time", "body", "dof")
+        bp = ds["body_position"]   # (time, body, axis) [m], or (time, body, dof) of six in an older file
+        bp = bp.transpose("time", "body", bp.dims[-1])
         for k, body in enumerate(str(b) for b in ds["body"].values):
             xy = np.asarray(bp.values[:, k, :2], float)
             given = ((data.get("bodies") or {}).get(body) or {}).get("position")

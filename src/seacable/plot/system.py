@@ -242,7 +242,9 @@ def _dynamic_bodies(ds, plt):
     """Each body's translations and rotations in time, failures marked."""
     time = np.asarray(ds.time.values, float)
     fig, (trans, rot) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
-    pos = np.asarray(ds.body_position.values, float)  # (time, body, dof)
+    from ..results import body_pose
+
+    pos = body_pose(ds)  # (time, body, dof): x, y, z [m], roll, pitch, yaw [rad]
     for j, body in enumerate(_names(ds, "body")):
         for d, (name, ls) in enumerate(zip(("x", "y", "z"), ("-", "--", ":"))):
             trans.plot(time, pos[:, j, d] - pos[0, j, d], ls, color=f"C{j}", lw=1.1, label=f"{body} {name}")

@@ -183,7 +183,7 @@ def _markers(ds, index: dict, nf: int) -> list:
             out += [(f"{label} {n}", mx[:, k], my[:, k], mz[:, k]) for k, n in enumerate(names)]
         else:
             out.append((label, mx, my, mz))
-    if "body_position" in ds.variables and "body_x" not in ds.variables:  # a system_dynamic run: (time, body, dof)
+    if "body_position" in ds.variables and "body_x" not in ds.variables:  # system_dynamic: (time, body, axis)
         pos = _pick(ds["body_position"], index, nf)
         names = [str(v) for v in ds["body"].values] if "body" in ds.coords else [str(k) for k in range(pos.shape[1])]
         out += [(f"body {n}", pos[:, k, 0], pos[:, k, 1], pos[:, k, 2]) for k, n in enumerate(names)]

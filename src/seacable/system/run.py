@@ -28,6 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .._cf import matrix_variables
 from .._limits import check_run_size
 from ..errors import ConvergenceError, InputError, NoSolutionError
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
@@ -45,7 +46,6 @@ _POSE = (("body_x", "m", "x of the body's reference point"), ("body_y", "m", "y 
          ("body_roll", "rad", "body roll (rotation about x, applied first)"),
          ("body_pitch", "rad", "body pitch (rotation about y, applied second)"),
          ("body_yaw", "rad", "body yaw (rotation about z, applied last)"))
-_STIFFNESS_UNITS = "N/m, N/rad, N m/m, N m/rad (by block)"
 
 REFERENCES = (
     "Irvine, H. M. (1981). Cable Structures. MIT Press (the elastic catenary).",
@@ -77,9 +77,9 @@ _VARIABLES = {
 _BY_DIMS = {dims: tuple(n for n, v in _VARIABLES.items() if v[0] == dims)
             for dims in (("line",), ("body",), ("point",))}
 _MATRICES = {
-    "stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
+    "stiffness": (("body", "dof", "dof2"), "N/m, N/rad, N m/m, N m/rad by block",
                   "mooring stiffness of the free body, lines only, about its reference point (NaN: not free)"),
-    "hydrostatic_stiffness": (("body", "dof", "dof2"), _STIFFNESS_UNITS,
+    "hydrostatic_stiffness": (("body", "dof", "dof2"), "N/m, N/rad, N m/m, N m/rad by block",
                               "hydrostatic stiffness of the free body about its reference point (NaN: not free)"),
 }
 _PROFILE = {
@@ -749,12 +749,15 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     values = _stack(records, (nc,))
     _warn_breaking(case, values, f"system_static case '{case.name}'")
     data = _variables(values, ("condition",), _VARIABLES)
-    data.update(_variables(values, ("condition",), _MATRICES))
+    for name, (dims, _, long) in _MATRICES.items():  # a block per unit (CF): seacable._cf.matrix_variables
+        if name in values:
+            data.update(matrix_variables(name, ("condition",) + dims, values[name], DOFS, DOFS, long))
     data.update(_variables(_stack(profiles, (nc,)), ("condition",), _PROFILE))
     data["line_present"] = var(("condition", "line"), _line_present(setup), "1",
                                "1 where the line is in the condition, 0 where it is removed (its values NaN)")
-    data["coupled_stiffness"] = var(("condition", "body_dof", "body_dof2"), np.stack(coupled), _STIFFNESS_UNITS,
-                                    "coupled mooring stiffness of the free bodies, lines only")
+    labels = [f"{b} {d}" for b in setup.free_bodies for d in DOFS]
+    data.update(matrix_variables("coupled_stiffness", ("condition", "body_dof", "body_dof2"), np.stack(coupled),
+                                 labels, labels, "coupled mooring stiffness of the free bodies, lines only"))
     data["iterations"] = var("condition", iterations, "1", "iterations of the equilibrium solve")
     data["residual"] = var("condition", residuals, "1", "residual of the equilibrium, relative")
     if setup.bodies:

@@ -487,11 +487,13 @@ def run_system_uncoupled(case, progress=None):
                     mean_position=[float(v) for v in mean])
     t = np.asarray(ds["time"])
     body = list(ds["body"].values).index(s.body)
-    for key, part, long in (("body_low_frequency_motion", motion.low_frequency(t)[0],
-                             "low-frequency motion of the body about its mean position (uncoupled route)"),
-                            ("body_wave_frequency_motion", motion.wave_frequency(t)[0],
-                             "wave-frequency motion of the body about its mean position (uncoupled route)")):
+    for key, part, long in (("body_low_frequency", motion.low_frequency(t)[0],
+                             "low-frequency {} of the body about its mean position (uncoupled route)"),
+                            ("body_wave_frequency", motion.wave_frequency(t)[0],
+                             "wave-frequency {} of the body about its mean position (uncoupled route)")):
         full = np.zeros((t.size, ds.sizes["body"], 6))
         full[:, body] = part
-        ds[key] = var(("time", "body", "dof"), full, "m or rad", long)
+        # one unit per variable (CF): translations [m] and rotations [rad] apart, as body_position, body_rotation
+        ds[f"{key}_motion"] = var(("time", "body", "axis"), full[..., :3], "m", long.format("motion"))
+        ds[f"{key}_rotation"] = var(("time", "body", "angle"), full[..., 3:], "rad", long.format("rotation"))
     return ds

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..._cf import ANGLES
 from ...mooring.outputs import elevation_variables
 from ...results import make_dataset, var
 from ..statics.model import euler_rate_map
@@ -186,13 +187,17 @@ def system_result(fe: SystemFE, run: SystemRun, *, case=None, settings=None):
     coords.update(tie_coords)
     if bodies:
         coords["body"] = var("body", bodies, "1", "body")
-        coords["dof"] = var("dof", list(DOFS), "1", "degree of freedom: x, y, z [m], roll, pitch, yaw [rad]")
-        data["body_position"] = var(("time", "body", "dof"), bp, "m or rad",
-                                    "body reference point (x, y, z) [m] and rotation (roll, pitch, yaw) [rad]")
-        data["body_velocity"] = var(("time", "body", "dof"), bv, "m/s or rad/s",
-                                    "body velocity (x, y, z) [m/s] and rotation rates [rad/s]")
         coords["axis"] = var("axis", ["x", "y", "z"], "1", "global axis")
-        data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad/s",
+        coords["angle"] = var("angle", list(ANGLES), "1", "rotation: roll (about x, first), pitch (y), yaw (z, last)")
+        # one unit per variable (CF): the translations [m] and the rotations [rad] apart (seacable._cf)
+        data["body_position"] = var(("time", "body", "axis"), bp[..., :3], "m", "body reference point")
+        data["body_rotation"] = var(("time", "body", "angle"), bp[..., 3:], "rad",
+                                    "body rotation (roll, pitch, yaw: global angles)")
+        data["body_velocity"] = var(("time", "body", "axis"), bv[..., :3], "m s-1",
+                                    "body reference point velocity")
+        data["body_rotation_rate"] = var(("time", "body", "angle"), bv[..., 3:], "rad s-1",
+                                         "rate of change of the body rotation (roll, pitch, yaw)")
+        data["body_angular_velocity"] = var(("time", "body", "axis"), bw, "rad s-1",
                                             "body angular velocity, global axes")
     # the sea that drove the run: its surface at x = y = 0, as a mooring_dynamic result holds it
     data.update(elevation_variables(fe.model.water, run.time))
