@@ -87,10 +87,10 @@ from ._loads import loads, loads_water, n_water
 # re-exported: the arrays' layouts, which the solver, the run modules and the coupled system kernel fill through
 # this module, and the parts' names they and the tests use
 from ._indices import (  # noqa: F401
-    E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_MU, E_RHO,
-    E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_DCH, H_ECH, H_EI,
-    H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
-from ._seabed import seabed_at  # noqa: F401
+    E_ALPHA, E_BEDFULL, E_BEDNY, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ,
+    E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_DCH,
+    H_ECH, H_EI, H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
+from ._seabed import grid_at, seabed_at  # noqa: F401
 from ._water import _fluid, point_lift  # noqa: F401
 # the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`); compression
 from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401
