@@ -964,7 +964,7 @@ class Case(Model):
         if profile is not None:  # on the profile's seabed under the origin
             return (0.0, -float(np.interp(0.0, profile.distance, profile.depth)))
         if self.environment.seabed.grid is not None:  # on the grid's seabed under the origin
-            return (0.0, seabed_elevation(self.environment.seabed, 0.0, 0.0, "the anchor (its default: the origin)"))
+            return (0.0, seabed_elevation(self.environment.seabed, 0.0, 0.0, "anchor (its default: the origin)"))
         return (0.0, -float(self.environment.depth))
 
 

@@ -241,10 +241,10 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
     take compression, which its elements do not carry.
     """
     water, net = model.water, model.network
-    if water.depth is None and water.profile is None:
+    if water.depth is None and not water.tabulated:
         return ""
     X = np.asarray(X, float)
-    grounded = X[:, 2] <= water.seabed_z(X[:, 0]) + 1e-9  # on the seabed or in it (the penalty contact)
+    grounded = X[:, 2] <= water.seabed_z(X[:, 0], X[:, 1]) + 1e-9  # on the seabed or in it (the penalty contact)
     els = np.flatnonzero(grounded[net.elements[:, 0]] & grounded[net.elements[:, 1]])
     if els.size == 0:
         return ""
@@ -253,7 +253,7 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
     t = chord / np.maximum(np.linalg.norm(chord, axis=1), 1e-300)[:, None]
     mid = 0.5 * (X[a] + X[b])
     h = 1e-3  # the slope under the element's middle, by a central difference [m]
-    slope = np.arctan((water.seabed_z(mid[:, 0] + h) - water.seabed_z(mid[:, 0] - h)) / (2 * h))
+    slope = np.arctan((water.seabed_z(mid[:, 0] + h, mid[:, 1]) - water.seabed_z(mid[:, 0] - h, mid[:, 1])) / (2 * h))
     speed = np.interp(-mid[:, 2], water.current_depths, water.current_speeds)
     u = speed[:, None] * np.array([math.cos(water.current_heading), math.sin(water.current_heading), 0.0])
     ut = np.sum(u * t, axis=1)

@@ -604,7 +604,10 @@ def _warn_sinking(model: MooringModel, X) -> None:
     water, net = model.water, model.network
     if water.depth is None or water.seabed_stiffness <= 0:
         return
-    depth_in = (water.seabed_z(X[:, 0]) - X[:, 2]) * math.cos(water.slope)
+    if water.grid is not None:  # along the grid's normal under each node
+        depth_in = (water.seabed_z(X[:, 0], X[:, 1]) - X[:, 2]) * water.grid.normal(X[:, 0], X[:, 1])[:, 2]
+    else:
+        depth_in = (water.seabed_z(X[:, 0]) - X[:, 2]) * math.cos(water.slope)
     thick = np.zeros(net.n_nodes)
     np.maximum.at(thick, net.elements[:, 0], net.diameter)
     np.maximum.at(thick, net.elements[:, 1], net.diameter)
