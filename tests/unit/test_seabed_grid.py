@@ -251,3 +251,91 @@ def test_the_lay_planner_and_the_moorings_read_one_grid_class():
             g = cartesian_grid(BathymetryGrid(file=path))
     np.testing.assert_array_equal(g.x, x)
     np.testing.assert_array_equal(g.elevation, np.where(elev < 0, elev, np.nan))
+
+
+def _spread(seabed, anchors_on_seabed=True, statics="auto"):
+    """The example spread mooring (3 chains of 650 m to a buoy in 150 m) with its anchors given by x, y only."""
+    import yaml
+
+    data = yaml.safe_load((EXAMPLES / "spread_mooring.yaml").read_text())
+    data["environment"]["seabed"] = seabed
+    data["analysis"] = {"type": "system_static", "statics": statics}
+    for k in ("anchor1", "anchor2", "anchor3"):
+        p = data["points"][k]["position"]
+        data["points"][k]["position"] = [p[0], p[1]] if anchors_on_seabed else [p[0], p[1], "seabed"]
+    from seacable.system.case import SystemCase
+
+    return SystemCase.parse(data)
+
+
+EXAMPLES = __import__("pathlib").Path(sc.__file__).resolve().parents[2] / "examples"
+
+
+def test_a_system_on_a_plane_grid_gives_the_sloped_seabeds_statics():
+    """The spread mooring's finite-element statics (a sloped seabed or a grid need them: the catenary statics'
+    seabed is level) on a 0.03 rad slope and on the grid of that plane, the anchors given at (x, y) only (on the
+    seabed: the plane's or the grid's under them, -168.19 m at x = -606 m): the same fairlead and anchor tensions
+    within 1e-8 of the largest (Newton's tolerance; measured 1e-10), and the same anchor positions."""
+    x = np.linspace(-700.0, 700.0, 15)
+    grid = _grid(x, [-700.0, 700.0], [150.0 - math.tan(0.03) * x] * 2)
+    a, b = _spread({"slope": 0.03}, False), _spread({"grid": grid})
+    assert b.points["anchor1"].position == pytest.approx((-606.0, 0.0, -150.0 - math.tan(0.03) * 606.0), abs=1e-9)
+    assert a.points["anchor1"].position == pytest.approx(b.points["anchor1"].position, abs=1e-9)
+    ra, rb = sc.run(a), sc.run(b)
+    assert ra.attrs["statics"] == rb.attrs["statics"] == "finite_element"
+    top = float(ra.fairlead_tension.max())
+    for v in ("fairlead_tension", "anchor_tension", "anchor_vertical_force"):
+        np.testing.assert_allclose(rb[v].values, ra[v].values, rtol=0, atol=1e-8 * top)
+    catenary = _spread({"grid": grid}, statics="catenary")
+    with pytest.raises(InputError, match=r"environment.seabed.grid is not supported by the system catenary statics"):
+        sc.run(catenary)
+
+
+def test_a_system_point_off_the_grid_is_refused():
+    """An anchor given on the seabed (x, y only) beyond the grid: the case is refused, naming the point."""
+    grid = _grid([-500.0, 700.0], [-700.0, 700.0], [[150.0, 150.0]] * 2)
+    with pytest.raises(InputError, match=r"environment.seabed.grid does not cover the point 'anchor1' \(given on the "
+                                         r"seabed\): no seabed under x = -606.0 m, y = 0.0 m"):
+        _spread({"grid": grid})
+
+
+def test_a_towed_sled_rides_on_a_grid_as_on_the_profile():
+    """The towed finite-element line: a heavy sled on 300 m of cable towed over a seabed rising from 100 to 70 m
+    (the profile of towed/test_fe_inputs' sled) and over the grid of the same depths: the same run (positions within
+    1 mm, the contact's rounding of the grid's normal; measured below 1e-9 m) and the same clearance, the grid's
+    depth under each node."""
+    import copy
+
+    spec = {"name": "tow", "line_types": {"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
+                                               "drag_normal": 1.5, "drag_tangential": 0.01}},
+            "line": {"line_type": "c", "length": 300.0}, "environment": {"water_density": 1025.0},
+            "analysis": {"type": "towed_dynamic", "vessel": {"type": "straight", "speed": 1.0}, "duration": 40.0,
+                         "time_step": 1.0, "n_nodes": 31,
+                         "body": {"mass": 600.0, "weight_in_water": 5000.0, "drag_area": 0.2, "seabed_area": 2.0}}}
+    dist, dep = [-400.0, -260.0, 0.0, 100.0], [100.0, 100.0, 70.0, 70.0]
+    a, b = copy.deepcopy(spec), copy.deepcopy(spec)
+    a["environment"]["seabed"] = {"profile": {"distance": dist, "depth": dep}, "friction": 0.3}
+    b["environment"]["seabed"] = {"grid": _grid(dist, [-50.0, 50.0], [dep, dep]), "friction": 0.3}
+    ra, rb = sc.run(sc.Case.parse(a)), sc.run(sc.Case.parse(b))
+    for v in ("x", "z"):
+        np.testing.assert_allclose(rb[v].values, ra[v].values, rtol=0, atol=1e-3)
+    np.testing.assert_allclose(rb.seabed_clearance.values, ra.seabed_clearance.values, rtol=0, atol=1e-3)
+    assert float(np.max(rb.z.values[:, 0])) > -100.0 + 1.0  # the sled has climbed the rise
+    b["analysis"]["vessel"]["speed"] = 12.0  # 480 m in 40 s: past the grid's end at x = 100 m
+    with pytest.raises(InputError, match=r"does not cover the tow point's path: no seabed under x = 1[0-9.]+ m"):
+        sc.check(sc.Case.parse(b))
+
+
+def test_the_box_tows_clearance_is_over_the_grid():
+    """The box scheme has no contact: its clearance is each node's height above the grid's seabed under it (here a
+    seabed rising 10 m across the tow, in y), and its warning names the grid; with a wrong floor the clearance
+    differs."""
+    from seacable.towed.seabed import seabed_clearance
+
+    z = np.array([[-80.0, -60.0, -5.0], [-95.0, -60.0, -5.0]])
+    floor = np.array([[-90.0, -85.0, -80.0], [-90.0, -85.0, -80.0]])
+    with pytest.warns(sc.SeacableWarning, match=r"at t = 1 s node 0 is 95 m deep, below the seabed at 90 m "
+                                                r"\(environment.seabed.grid\)"):
+        h = seabed_clearance([0.0, 1.0], z, 100.0, analysis="test", floor=floor)
+    np.testing.assert_array_equal(h, [10.0, -5.0])
+    np.testing.assert_array_equal(seabed_clearance([0.0], z[:1], 100.0, analysis="test"), [20.0])
