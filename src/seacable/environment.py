@@ -12,7 +12,7 @@ import warnings
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from ._model import Model, input_error, quantity, unit_float
 from .bathymetry import BathymetryGrid
@@ -146,6 +146,15 @@ class Seabed(Model):
             raise ValueError(f"seabed.grid and {given} both give the seabed. Suggested fix: give the seabed once: "
                              "its depths in the grid, and leave the slope and the profile out.")
         return self
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_grid(self, handler):
+        # 'grid' appears in a dumped case (a result's 'case' attribute) only when given: the cases without it read
+        # as they did before it existed
+        data = handler(self)
+        if isinstance(data, dict) and data.get("grid", 0) is None:
+            del data["grid"]
+        return data
 
     @property
     def tabulated(self) -> bool:
