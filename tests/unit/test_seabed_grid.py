@@ -27,8 +27,9 @@ CHAIN = {"diameter": 0.09, "mass_per_length": 77.7, "weight_in_water": 698.0, "a
 SLOPE = 0.05  # [rad]
 
 
-def _mooring(seabed, *, depth=100.0, analysis=None, length=400.0, fairlead=(350.0, -20.0), **more):
-    env = {"seabed": seabed, **({"depth": depth} if depth is not None else {})}
+def _mooring(seabed, *, depth=100.0, analysis=None, length=400.0, fairlead=(350.0, -20.0), current=None, **more):
+    env = {"seabed": seabed, **({"depth": depth} if depth is not None else {}),
+           **({"current": current} if current else {})}
     a = {"type": "mooring_static", "fairlead": list(fairlead), "element_length": 10.0, **(analysis or {})}
     return Case.parse({"name": "grid", "line_types": {"ch": CHAIN}, "line": {"line_type": "ch", "length": length},
                        "environment": env, "analysis": a, **more})
@@ -63,6 +64,16 @@ def test_the_kernel_and_numpy_read_the_same_bilinear_grid():
     np.testing.assert_allclose(got, np.column_stack(g.at(px, py)), rtol=0, atol=1e-12)  # rounding of ~100 m
     beyond = px > 40.0
     assert np.all(got[beyond, 1] == 0.0) and np.any(beyond)
+    # the contact's penetration along the normal, and the normal it writes, as the outputs' height above the seabed
+    from seacable.mooring._seabed import penetration
+
+    water = Water(depth=100.0, grid=g)
+    pz = rng.uniform(-112.0, -88.0, px.size)
+    nrm = np.zeros(3)
+    for k in range(px.size):
+        pen = penetration(env, px[k], py[k], pz[k], True, 100.0, nrm)
+        assert pen == pytest.approx(-float(height_above_seabed(water, np.array([px[k], py[k], pz[k]]))), abs=1e-12)
+        np.testing.assert_allclose(nrm, g.normal(px[k], py[k]), rtol=0, atol=1e-14)
     # a plane, z = -100 + 0.03 x - 0.02 y: exact elevation and gradient, and its unit normal
     plane = SeabedGrid(x, y, -100.0 + 0.03 * x[None, :] - 0.02 * y[:, None])
     inside = (px > 0) & (px < 40) & (py > -5) & (py < 12)
@@ -73,13 +84,18 @@ def test_the_kernel_and_numpy_read_the_same_bilinear_grid():
     np.testing.assert_allclose(plane.normal(5.0, 1.0), np.array([-0.03, 0.02, 1.0]) / math.sqrt(1.0013), rtol=1e-12)
 
 
-def test_a_plane_grid_gives_the_sloped_seabed_statics():
+@pytest.mark.parametrize("friction", [0.0, 0.8])
+def test_a_plane_grid_gives_the_sloped_seabed_statics(friction):
     """A grid that is the plane of a 0.05 rad slope gives the sloped plane's static line to the solver's
     tolerance: positions within 1 micrometre and tensions within 1e-8 of the largest (Newton stops at a force
-    residual 1e-8 of it; the two normals differ by rounding only), and the same touchdown. The anchor, given by
-    neither, sits on the grid under the origin."""
-    a = sc.run(_mooring({"slope": SLOPE}))
-    b = sc.run(_mooring({"grid": _plane_grid()}))
+    residual 1e-8 of it; the two normals differ by rounding only), and the same touchdown, in a 1 m/s current
+    across the line; with the seabed's static friction too (its targets and force in the seabed's plane, which hold
+    the grounded chain 46 m nearer its as-laid line than without). The anchor, given by neither, sits on the grid
+    under the origin."""
+    cur = {"speed": 1.0, "heading": math.pi / 2}
+    a = sc.run(_mooring({"slope": SLOPE, "friction": friction}, current=cur))
+    b = sc.run(_mooring({"grid": _plane_grid(), "friction": friction}, current=cur))
+    assert float(np.max(np.abs(b.y.values))) > 5.0  # the current moves the line across
     for v in ("x", "y", "z"):
         np.testing.assert_allclose(b[v].values, a[v].values, rtol=0, atol=1e-6)
     top = float(a.tension.max())
