@@ -95,7 +95,7 @@ def test_a_plane_grid_gives_the_sloped_seabed_statics(friction):
     cur = {"speed": 1.0, "heading": math.pi / 2}
     a = sc.run(_mooring({"slope": SLOPE, "friction": friction}, current=cur))
     b = sc.run(_mooring({"grid": _plane_grid(), "friction": friction}, current=cur))
-    assert float(np.max(np.abs(b.y.values))) > 5.0  # the current moves the line across
+    assert float(np.max(np.abs(b.y.values))) > (1.0 if friction else 40.0)  # the current moves the line across
     for v in ("x", "y", "z"):
         np.testing.assert_allclose(b[v].values, a[v].values, rtol=0, atol=1e-6)
     top = float(a.tension.max())
