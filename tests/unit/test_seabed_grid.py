@@ -355,3 +355,32 @@ def test_the_box_tows_clearance_is_over_the_grid():
         h = seabed_clearance([0.0, 1.0], z, 100.0, analysis="test", floor=floor)
     np.testing.assert_array_equal(h, [10.0, -5.0])
     np.testing.assert_array_equal(seabed_clearance([0.0], z[:1], 100.0, analysis="test"), [20.0])
+
+
+def test_a_system_dynamic_run_on_a_plane_grid_gives_the_sloped_seabeds():
+    """The system dynamics take the grid through the same environment vector: 2 s of the spread mooring from its
+    equilibrium on the 0.03 rad slope (its anchors given with ``z: seabed``) and on the grid of that plane (no depth
+    given; its anchors at x, y only): the same tensions and anchor forces within 1e-8 of the largest (measured
+    1e-10)."""
+    import copy
+
+    import yaml
+
+    from seacable.system.case import SystemCase
+
+    d = yaml.safe_load((EXAMPLES / "spread_mooring.yaml").read_text())
+    d["analysis"] = {"type": "system_dynamic", "duration": 2.0, "time_step": 0.1, "output_interval": 0.5}
+    x = np.linspace(-700.0, 700.0, 15)
+    a, b = copy.deepcopy(d), copy.deepcopy(d)
+    a["environment"]["seabed"] = {"slope": 0.03}
+    del b["environment"]["depth"]
+    b["environment"]["seabed"] = {"grid": _grid(x, [-700.0, 700.0], [150.0 - math.tan(0.03) * x] * 2)}
+    for k in ("anchor1", "anchor2", "anchor3"):
+        p = d["points"][k]["position"]
+        a["points"][k]["position"] = [p[0], p[1], "seabed"]
+        b["points"][k]["position"] = [p[0], p[1]]
+    ra, rb = sc.run(SystemCase.parse(a)), sc.run(SystemCase.parse(b))
+    top = float(ra.fairlead_tension.max())
+    for v in ("fairlead_tension", "anchor_tension", "anchor_vertical_force", "fairlead_force_x"):
+        np.testing.assert_allclose(rb[v].values, ra[v].values, rtol=0, atol=1e-8 * top)
+    assert rb.attrs["depth"] == pytest.approx(150.0)  # the grid's under the origin
