@@ -355,6 +355,22 @@ def test_the_box_tows_clearance_is_over_the_grid():
         h = seabed_clearance([0.0, 1.0], z, 100.0, analysis="test", floor=floor)
     np.testing.assert_array_equal(h, [10.0, -5.0])
     np.testing.assert_array_equal(seabed_clearance([0.0], z[:1], 100.0, analysis="test"), [20.0])
+    # a box run over a grid rising from 170 to 130 m along the tow (no depth given): its clearance is the least
+    # height over the grid's bilinear (here linear) seabed under each node, not over the depth at the origin
+    spec = {"name": "tow", "line_types": {"c": {"diameter": 0.03, "mass_per_length": 2.0, "axial_stiffness": 4e6,
+                                               "drag_normal": 1.5, "drag_tangential": 0.01, "bending_stiffness": 30.0}},
+            "line": {"line_type": "c", "length": 200.0}, "environment": {"water_density": 1025.0, "seabed": {
+                "grid": _grid([-400.0, 100.0], [-100.0, 100.0], [[170.0, 130.0]] * 2)}},
+            "analysis": {"type": "towed_dynamic", "formulation": "box", "vessel": {"type": "straight", "speed": 1.5},
+                         "duration": 10.0, "time_step": 1.0, "n_nodes": 21,
+                         "body": {"mass": 300.0, "weight_in_water": 2000.0, "drag_area": 0.3}}}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sc.SeacableWarning)  # the box scheme's 'no seabed contact' warning
+        ds = sc.run(sc.Case.parse(spec))
+    floor = -170.0 + 40.0 * (ds.x.values + 400.0) / 500.0
+    np.testing.assert_allclose(ds.seabed_clearance.values, np.nanmin(ds.z.values - floor, axis=1), rtol=0, atol=1e-9)
+    # not the plane at the depth under the origin, 138 m (the body, 150 m behind it, is 12 m deeper there)
+    assert np.all(np.abs(ds.seabed_clearance.values - np.nanmin(ds.z.values + 138.0, axis=1)) > 5.0)
 
 
 def test_a_system_dynamic_run_on_a_plane_grid_gives_the_sloped_seabeds():
