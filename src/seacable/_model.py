@@ -267,3 +267,13 @@ class Model(BaseModel):
     def replace(self, **changes: Any):
         """Return a copy with some fields changed, validated again."""
         return type(self)(**{**{k: getattr(self, k) for k in type(self).model_fields}, **changes})
+
+    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False):
+        """A copy; with ``update``, the changed copy validated again as :meth:`replace` makes it.
+
+        Pydantic's own ``model_copy(update=...)`` skips validation: a negative length, or a case whose line
+        types changed while its line kept the old ones, would pass silently to a run.
+        """
+        if update:
+            return self.replace(**update)
+        return super().model_copy(deep=deep)

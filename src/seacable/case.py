@@ -28,19 +28,10 @@ from ._window import StatisticsWindow, omit_unset_window
 from .bathymetry import BathymetryGrid
 from .environment import Environment, _warn_if_degrees, seabed_elevation
 from .errors import InputError
-from .laying.inputs import (
-    Bathymetry,
-    LayTableFile,
-    LayTarget,
-    Payout,
-    PayoutBottomTension,
-    PayoutSlack,
-    PlanShip,
-    ShipMotion,
-    read_lay_table,
-)
+from .laying.inputs import (Bathymetry, LayTableFile, LayTarget, Payout, PayoutBottomTension, PayoutSlack,
+                             PlanShip, ShipMotion, read_lay_table)
 from .laying.route import Route
-from .line import STAND_IN, Lifting, Line, LineType, resolve_sections
+from .line import STAND_IN, Lifting, Line, LineType, resolve_sections, retyped_changes
 from .mooring.ends import EndCondition
 from .mooring.friction import StaticFriction, StaticFrictionOption
 from .mooring.motion import Motion
@@ -858,6 +849,10 @@ class Case(Model):
         if problems:
             raise input_error(problems, root)
         return case
+
+    def replace(self, **changes: Any) -> Case:
+        """A copy with some fields changed, validated again; new ``line_types`` reach the line's segments."""
+        return super().replace(**retyped_changes(self, changes))
 
     @model_validator(mode="before")
     @classmethod

@@ -23,7 +23,7 @@ from .moment_curvature import check_table
 from .sections import BendRestrictor, BendStiffener, BuoyancySection, Section, smeared_line_type
 from .ties import Clamp, Tether
 
-__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections"]
+__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections", "retyped_changes"]
 
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81
@@ -499,6 +499,36 @@ class Line(Model):
     def point_loads(self, water_density: float = _RHO, gravity: float = _G) -> tuple[tuple[float, float], ...]:
         """``(s, net weight)`` of each attachment. [m, N]"""
         return tuple((a.s, a.net_weight(water_density, gravity)) for a in self.attachments)
+
+
+def _retyped(line: Line, old: dict, new: dict, where: str) -> Line:
+    """``line`` with each segment's named line type (an entry of ``old``, the very object a case's validation put
+    there, or one equal to it) replaced by the entry of the same name in ``new``."""
+    segments = []
+    for i, seg in enumerate(line.segments):
+        name = next((k for k, v in old.items() if v is seg.line_type), None)
+        name = name or next((k for k, v in old.items() if v == seg.line_type), None)
+        if name is not None and name not in new:
+            raise InputError(f"{where}.segments[{i}] uses line type '{name}', which the new line_types leave out "
+                             f"(given: {', '.join(new) or 'none'}). Suggested fix: keep '{name}' in line_types, or "
+                             "give the line anew with its line types.")
+        segments.append(seg if name is None else seg.replace(line_type=new[name]))
+    return line.replace(segments=tuple(segments))
+
+
+def retyped_changes(case, changes: dict) -> dict:
+    """The ``changes`` of ``case.replace`` (a :class:`~seacable.case.Case` or a system's case), with the line(s)
+    retyped when they change ``line_types`` and leave the line(s) as they are: a line holds its line types, not their
+    names, so that new types would otherwise reach the case and not its line (a silent wrong answer)."""
+    if "line_types" not in changes:
+        return changes
+    old, new = case.line_types, changes["line_types"]
+    if "line" in type(case).model_fields and "line" not in changes:
+        return {**changes, "line": _retyped(case.line, old, new, "line")}
+    if "lines" in type(case).model_fields and "lines" not in changes:
+        return {**changes, "lines": {name: entry.replace(line=_retyped(entry.line, old, new, f"lines.{name}"))
+                                     for name, entry in case.lines.items()}}
+    return changes
 
 
 def _check_tie(i: int, tie, total: float, held: dict) -> None:

@@ -44,7 +44,7 @@ from .._window import StatisticsWindow, omit_unset_window
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment, seabed_elevation
 from ..errors import InputError
-from ..line import STAND_IN, LineType
+from ..line import STAND_IN, LineType, retyped_changes
 from ..mooring.friction import StaticFriction, StaticFrictionOption
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from ..ties import tie_points
@@ -467,6 +467,10 @@ class SystemCase(Model):
         if problems:
             raise input_error(problems, root)
         return case
+
+    def replace(self, **changes: Any) -> SystemCase:
+        """A copy with some fields changed, validated again; new ``line_types`` reach the lines' segments."""
+        return super().replace(**retyped_changes(self, changes))
 
     @model_validator(mode="before")
     @classmethod
