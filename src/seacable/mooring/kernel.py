@@ -36,7 +36,8 @@ argument ``sea`` of :mod:`seacable.seastate`; above z = 0 the z = 0 kinematics o
 
 (the tangential drag on the wetted perimeter ``pi d``, as MoorDyn). Attachments add mass, isotropic
 added mass, drag ``1/2 rho C_D A |u| u`` and the Froude-Krylov force of their volume. The seabed
-is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
+is a plane, a profile along X or a grid over X and Y (:mod:`._seabed`: bilinear, the normal from its
+gradient); a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
 over a small band of penetration so that the contact stiffness is continuous (the damper engaging
 gradually, or for MoorDyn decks in full beyond the band, ``E_BEDFULL``), with ``d_n`` the sum of
 ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m, Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
