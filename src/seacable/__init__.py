@@ -33,6 +33,7 @@ from .errors import (
 
 if TYPE_CHECKING:
     from . import modal, statics
+    from .bathymetry import BathymetryGrid
     from .case import (
         Case,
         LayingDynamicAnalysis,
@@ -53,7 +54,6 @@ if TYPE_CHECKING:
     from .coupling import Coupling
     from .environment import Current, Environment, Seabed, Waves
     from .io import load_case, parse_case
-    from .laying.bathymetry import BathymetryGrid
     from .laying.inputs import (
         Bathymetry,
         LayTableFile,
@@ -161,7 +161,7 @@ __getattr__, __dir__ = lazy_names(__name__, {
     ".coupling": ("Coupling",),
     ".environment": ("Current", "Environment", "Seabed", "Waves"),
     ".io": ("load_case", "parse_case"),
-    ".laying.bathymetry": ("BathymetryGrid",),
+    ".bathymetry": ("BathymetryGrid",),
     ".laying.inputs": ("Bathymetry", "LayTableFile", "LayTarget", "PayoutBottomTension", "PayoutRate", "PayoutSlack",
                        "PlanShip", "ShipMotion"),
     ".laying.route": ("Route",),

@@ -8,11 +8,13 @@ file, what it is, and where the first bad byte is (line and column), never a ``U
 
 from __future__ import annotations
 
+import csv
+import io
 from pathlib import Path
 
 from .errors import InputError
 
-__all__ = ["read_text_file"]
+__all__ = ["csv_rows", "read_text_file"]
 
 
 def read_text_file(path: str | Path, what: str, fix: str | None = None) -> str:
@@ -67,3 +69,14 @@ def read_text_file(path: str | Path, what: str, fix: str | None = None) -> str:
         # IndexError on an empty CSV)
         raise InputError(f"{what} '{path}' is empty. Suggested fix: {fix}.")
     return text
+
+
+def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
+    """``(path, header, rows)`` of a CSV file: the header in lower case, blank rows dropped; a file that cannot
+    be read is an InputError naming ``what`` it is."""
+    path = Path(file)
+    text = read_text_file(path, what, "give a CSV text file with a header row (its path relative to the case "
+                                      "file's folder)")
+    rows = [[c.strip() for c in row] for row in csv.reader(io.StringIO(text, newline=""))
+            if any(c.strip() for c in row)]
+    return path, [c.lower() for c in rows[0]] if rows else [], rows

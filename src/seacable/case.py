@@ -25,9 +25,9 @@ from pydantic import Field, model_serializer, model_validator
 
 from ._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
 from ._window import StatisticsWindow, omit_unset_window
-from .environment import Environment, _warn_if_degrees
+from .bathymetry import BathymetryGrid
+from .environment import Environment, _warn_if_degrees, seabed_elevation
 from .errors import InputError
-from .laying.bathymetry import BathymetryGrid
 from .laying.inputs import (Bathymetry, LayTableFile, LayTarget, Payout, PayoutBottomTension, PayoutSlack,
                              PlanShip, ShipMotion, read_lay_table)
 from .laying.route import Route
@@ -67,7 +67,8 @@ _XZ = tuple[unit_float("m"), unit_float("m")]
 #: The environment's optional inputs (key paths under ``environment``) whose use depends on the analysis; each
 #: analysis declares those it takes (:meth:`uses`), and a case that gives one its analysis does not use is
 #: refused (:meth:`Case._unused_inputs`): a silently ignored input is a result of something other than asked.
-ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "waves", "wind")
+ENVIRONMENT_INPUTS = ("depth", "current", "seabed.slope", "seabed.friction", "seabed.profile", "seabed.grid", "waves",
+                      "wind")
 _SEABED = frozenset({"depth", "seabed.slope", "seabed.friction"})
 #: A static analysis is the still-water equilibrium: waves (a zero-mean load in linear theory) are taken, so that one
 #: environment serves a line's statics and its dynamics, and have no part in it.
@@ -79,7 +80,8 @@ def given_environment_inputs(env: Environment) -> tuple[str, ...]:
     cur, bed = env.current, env.seabed
     given = {"depth": env.depth is not None, "current": cur.speed != 0.0 or cur.depths is not None,
              "seabed.slope": bed.slope != 0.0, "seabed.friction": bed.friction != 0.0,
-             "seabed.profile": bed.profile is not None, "waves": env.waves is not None, "wind": env.wind is not None}
+             "seabed.profile": bed.profile is not None, "seabed.grid": bed.grid is not None,
+             "waves": env.waves is not None, "wind": env.wind is not None}
     return tuple(k for k in ENVIRONMENT_INPUTS if given[k])
 
 
@@ -285,7 +287,7 @@ class TowedDynamicAnalysis(VesselMotionOption, StatisticsWindow):
         only; beside a profile (the seabed) the depth sets only the waves' dispersion."""
         if self.formulation != "finite_element":
             return self.USES - {"seabed.profile"}
-        if env.seabed.profile is not None and env.waves is None:
+        if (env.seabed.profile is not None or env.seabed.grid is not None) and env.waves is None:
             return self.USES - {"depth"}
         return self.USES
     formulation: Literal["finite_element", "box"] = Field(
@@ -663,7 +665,7 @@ class MooringStaticAnalysis(StaticFrictionOption, _Mooring):
     """Static equilibrium of the line by the finite-element model (paper 004), Newton's method."""
 
     type: Literal["mooring_static"] = "mooring_static"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile", "seabed.grid"}
 
 
 class MooringPushoverAnalysis(StaticFrictionOption, _Offsets, _Mooring):
@@ -672,7 +674,7 @@ class MooringPushoverAnalysis(StaticFrictionOption, _Offsets, _Mooring):
     negative ones the near; pi/2: across the line's plane, the cross position)."""
 
     type: Literal["mooring_pushover"] = "mooring_pushover"
-    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile"}
+    USES: ClassVar[frozenset[str]] = _SEABED | _STILL_WATER | {"current", "seabed.profile", "seabed.grid"}
     heading: quantity("rad") = Field(0.0, description="Direction of the offsets from +x towards +y. [rad]")
 
     @model_validator(mode="after")
@@ -693,7 +695,7 @@ class MooringDynamicAnalysis(_Mooring, StatisticsWindow):
     """
 
     type: Literal["mooring_dynamic"] = "mooring_dynamic"
-    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves", "seabed.profile"}
+    USES: ClassVar[frozenset[str]] = _SEABED | {"current", "waves", "seabed.profile", "seabed.grid"}
     motion: Motion | None = Field(None, description="Fairlead motion: harmonic, time_series or platform.")
     end_b: Literal["fairlead", "free"] = Field("fairlead", description="End B moved by 'motion', or free.")
     release_from: _XZ | None = Field(None, description="Where a free end B is held before release (x, z). [m]")
@@ -886,7 +888,7 @@ class Case(Model):
         if isinstance(a, (StaticAnalysis, PushoverAnalysis, ModalAnalysis, LayingTheoryAnalysis, _Mooring)):
             if self.environment.depth is None and (a.type == "laying_theory" or (
                     a.anchor is None and not getattr(a, "free_end", False)
-                    and not (isinstance(a, _Mooring) and self.environment.seabed.profile is not None))):
+                    and not (isinstance(a, _Mooring) and self.environment.seabed.tabulated))):
                 raise ValueError(f"analysis '{a.type}' needs environment.depth (m). "
                                  "Suggested fix: add 'depth:' under 'environment'.")
         if isinstance(a, (LayingTheoryAnalysis, VerticalModesAnalysis)):
@@ -949,6 +951,8 @@ class Case(Model):
         profile = self.environment.seabed.profile
         if profile is not None:  # on the profile's seabed under the origin
             return (0.0, -float(np.interp(0.0, profile.distance, profile.depth)))
+        if self.environment.seabed.grid is not None:  # on the grid's seabed under the origin
+            return (0.0, seabed_elevation(self.environment.seabed, 0.0, 0.0, "anchor (its default: the origin)"))
         return (0.0, -float(self.environment.depth))
 
 
@@ -973,8 +977,8 @@ def check_unused_inputs(analysis, environment: Environment, analyses) -> None:
         extra = " (a laying_dynamic case takes its seabed as analysis.bathymetry)"
     if "seabed.profile" in unused and a.type == "towed_dynamic":
         extra = " (the profile is taken by towed_dynamic's finite_element formulation only)"
-    if "depth" in unused and environment.seabed.profile is not None:
-        extra = " (environment.seabed.profile gives the seabed; the depth would set only the waves' dispersion)"
+    if "depth" in unused and environment.seabed.tabulated:
+        extra = " (environment.seabed's profile or grid gives the seabed; the depth sets only the waves' dispersion)"
     keys = ", ".join(f"environment.{k}" for k in unused)
     raise ValueError(f"{keys} {'is' if len(unused) == 1 else 'are'} given, but analysis '{a.type}' does not use "
                      f"{'it' if len(unused) == 1 else 'them'}{extra}: the result would not hold "

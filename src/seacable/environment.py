@@ -12,9 +12,10 @@ import warnings
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_serializer, model_validator
 
 from ._model import Model, input_error, quantity, unit_float
+from .bathymetry import BathymetryGrid
 from .errors import SeacableWarning
 from .waves import MIN_WAVELENGTH, STANDARD_GRAVITY, check_sea_state
 
@@ -110,7 +111,7 @@ class SeabedProfile(Model):
 
 
 class Seabed(Model):
-    """A plane seabed, or a profile along X.
+    """A plane seabed, a profile along X, or a grid over X and Y.
 
     Parameters
     ----------
@@ -120,6 +121,10 @@ class Seabed(Model):
         Coulomb friction coefficient of the line on the seabed. [-]
     profile
         Depths along X instead of the plane (towed_dynamic's finite-element formulation).
+    grid
+        Depths on an x, y grid instead of the plane (:class:`seacable.bathymetry.BathymetryGrid`, the lay
+        planner's: inline, CSV or NetCDF, GEBCO-like elevations, land masked), bilinear between its points:
+        the finite-element line of moorings, systems and towed cables.
     """
 
     slope: quantity("rad", gt=-math.pi / 2, lt=math.pi / 2,
@@ -128,6 +133,7 @@ class Seabed(Model):
     friction: quantity("-", ge=0, fix="give a friction coefficient such as 0.5 (chain on clay ~ 1).") = Field(
         0.0, description="Coulomb friction coefficient. [-]")
     profile: SeabedProfile | None = Field(None, description="Depths along X instead of the plane.")
+    grid: BathymetryGrid | None = Field(None, description="Depths on an x, y grid instead of the plane.")
 
     @model_validator(mode="after")
     def _check(self) -> Seabed:
@@ -135,7 +141,35 @@ class Seabed(Model):
         if self.profile is not None and self.slope != 0.0:
             raise ValueError(f"seabed.slope {self.slope:g} rad and seabed.profile both give the seabed. Suggested "
                              "fix: give the slope in the profile's depths, and leave slope out.")
+        if self.grid is not None and (self.profile is not None or self.slope != 0.0):
+            given = "seabed.profile" if self.profile is not None else f"seabed.slope {self.slope:g} rad"
+            raise ValueError(f"seabed.grid and {given} both give the seabed. Suggested fix: give the seabed once: "
+                             "its depths in the grid, and leave the slope and the profile out.")
         return self
+
+    @model_serializer(mode="wrap")
+    def _omit_unset_grid(self, handler):
+        # 'grid' appears in a dumped case (a result's 'case' attribute) only when given: the cases without it read
+        # as they did before it existed
+        data = handler(self)
+        if isinstance(data, dict) and data.get("grid", 0) is None:
+            del data["grid"]
+        return data
+
+    @property
+    def tabulated(self) -> bool:
+        """Whether the seabed is a profile or a grid (it gives the depth: the environment's depth may be left out)."""
+        return self.profile is not None or self.grid is not None
+
+
+def seabed_elevation(seabed: Seabed, x: float, y: float, what: str) -> float:
+    """The elevation [m] of ``seabed``'s grid under ``(x, y)`` [m], for ``what`` stands there (an anchor); an
+    InputError naming it, where, and a fix when the grid does not cover the point or it lies over land."""
+    from .bathymetry import cartesian_grid
+
+    grid = cartesian_grid(seabed.grid)
+    grid.check_covers(np.array([[x, y, 0.0]]), what)
+    return float(grid.at(x, y)[0])
 
 
 class Waves(Model):
@@ -429,6 +463,17 @@ class Environment(Model):
         for message in found.warned:
             warnings.warn(f"environment.waves.{message}", SeacableWarning, stacklevel=3)
         return self
+
+    def origin_depth(self) -> float | None:
+        """The water depth under the origin [m]: ``depth``, else the seabed profile's or grid's there (the grid's
+        nearest edge beyond it); None without a seabed."""
+        if self.depth is not None or not self.seabed.tabulated:
+            return self.depth
+        if self.seabed.profile is not None:
+            return float(np.interp(0.0, self.seabed.profile.distance, self.seabed.profile.depth))
+        from .bathymetry import cartesian_grid
+
+        return float(-cartesian_grid(self.seabed.grid).at(0.0, 0.0)[0])
 
     @model_validator(mode="after")
     def _check(self) -> Environment:

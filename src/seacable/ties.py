@@ -18,7 +18,7 @@ and added mass) at the arc length of a tether; the arch's saddle (the cable's cu
 modelled: the cable bends over a point.
 
 A point given without ``z`` lies on the seabed under ``(x, y)`` (the plane of the environment's depth and slope,
-or its profile). The finite-element line (:mod:`seacable.mooring`) puts a node at every tie's arc length; the
+or its profile or grid). The finite-element line (:mod:`seacable.mooring`) puts a node at every tie's arc length; the
 kernel adds their forces and exact tangents (:func:`seacable.mooring._ties.tie_loads`).
 
 References
@@ -119,10 +119,14 @@ def ties_of(line) -> tuple:
     return tuple((i, sec) for i, sec in enumerate(getattr(line, "sections", ())) if isinstance(sec, (Clamp, Tether)))
 
 
-def seabed_elevation(environment, x: float) -> float | None:
+def seabed_elevation(environment, x: float, y: float = 0.0) -> float | None:
     """Elevation of the seabed of ``environment`` under ``x`` (its profile, or the plane of its depth and slope
-    through ``(0, -depth)``); None without a seabed. [m]"""
+    through ``(0, -depth)``), or under ``(x, y)`` on its grid; None without a seabed. [m]"""
     bed = environment.seabed
+    if bed.grid is not None:
+        from .environment import seabed_elevation as on_grid
+
+        return on_grid(bed, float(x), float(y), f"seabed point at ({float(x):g}, {float(y):g}) m")
     if bed.profile is not None:
         return -float(np.interp(x, bed.profile.distance, bed.profile.depth))
     if environment.depth is None:
@@ -141,7 +145,7 @@ def tie_points(line, environment, where: str = "line") -> dict:
     out = {}
     for i, tie in ties_of(line):
         p, key = (tie.position, "position") if isinstance(tie, Clamp) else (tie.anchor, "anchor")
-        zb = seabed_elevation(environment, p.x)
+        zb = seabed_elevation(environment, p.x, p.y)
         if p.z is None:
             if zb is None:
                 raise ValueError(f"{where}.sections[{i}] ({tie.type}).{key} has no z and the environment no seabed to "

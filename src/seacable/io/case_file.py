@@ -177,15 +177,21 @@ def resolve_files(data, folder: Path) -> None:
     hydro = [b.get("hydrodynamics") for b in bodies.values() if isinstance(b, dict)] if isinstance(bodies, dict) else []
     analysis = data.get("analysis") if isinstance(data, dict) else None
     if not isinstance(analysis, dict):
-        _relative(hydro, folder)
+        _relative(hydro + [_seabed_grid(data)], folder)
         return
-    tables = hydro + [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "lay_table", "motion",
+    tables = hydro + [_seabed_grid(data)] + [analysis.get(key) for key in ("vessel", "bathymetry", "bathymetry_grid", "route", "lay_table", "motion",
                                             "tug")]
     for key in ("body_motions", "point_motions", "external_forces"):  # system_dynamic: one table per name
         named = analysis.get(key)
         if isinstance(named, dict):
             tables += list(named.values())
     _relative(tables, folder)
+
+
+def _seabed_grid(data):
+    """The case's ``environment.seabed.grid`` mapping, or None."""
+    bed = (data.get("environment") or {}).get("seabed") if isinstance(data.get("environment"), dict) else None
+    return bed.get("grid") if isinstance(bed, dict) else None
 
 
 def _relative(tables, folder: Path) -> None:

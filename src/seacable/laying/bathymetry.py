@@ -1,8 +1,7 @@
 """Water depth for a route: a table along the route (KP, depth) or a grid (x, y, depth).
 
-A grid comes inline, from a CSV file (columns x, y, depth, or longitude, latitude and depth or
-elevation) or from a NetCDF file (an xarray grid with coordinates x, y or lon, lat and a variable
-``depth``, positive down, or ``elevation``, positive up as GEBCO gives it). A complete rectangular
+The grid and its readers (inline, CSV, NetCDF; GEBCO-like elevations; land masked) are
+:class:`seacable.bathymetry.BathymetryGrid`'s, shared with the moorings' seabed; re-exported here. A complete rectangular
 grid is interpolated bilinearly (``scipy.interpolate.RegularGridInterpolator``); scattered points
 linearly on their Delaunay triangles (``LinearNDInterpolator``). A grid in longitude and latitude
 needs a geographic route: points are taken back to degrees with the route's projection.
@@ -11,169 +10,15 @@ needs a geographic route: points are taken back to degrees with the route's proj
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
-from pydantic import Field, model_validator
 
-from .._model import Model
+from ..bathymetry import BathymetryGrid
 from ..errors import InputError
-from .inputs import Bathymetry, csv_rows
+from .inputs import Bathymetry
 from .route import RouteGeometry
 
 __all__ = ["BathymetryGrid", "SeabedMap", "seabed_map"]
-
-_DEPTH_NAMES = ("depth",)
-_ELEVATION_NAMES = ("elevation", "z", "height")
-
-
-class BathymetryGrid(Model):
-    """Water depth on a grid: inline ``x``, ``y`` and ``depth[iy][ix]``, or a CSV or NetCDF ``file``.
-
-    Parameters
-    ----------
-    x, y
-        Grid lines, increasing. [m]
-    depth
-        Water depth at (y[i], x[j]), rows along y, > 0. [m]
-    file
-        A ``.csv`` (columns x, y, depth; or longitude, latitude and depth or elevation) or ``.nc`` file.
-    variable
-        Name of the depth (positive down) or elevation (positive up) variable in a NetCDF file; default
-        ``depth``, else ``elevation``.
-    """
-
-    x: tuple[float, ...] | None = Field(None, description="Grid x, increasing. [m]")
-    y: tuple[float, ...] | None = Field(None, description="Grid y, increasing. [m]")
-    depth: tuple[tuple[float, ...], ...] | None = Field(None, description="Depths, one row per y. [m]")
-    file: str | None = Field(None, description="CSV or NetCDF grid (relative to the case file).")
-    variable: str | None = Field(None, description="NetCDF variable: depth (down) or elevation (up).")
-
-    @model_validator(mode="after")
-    def _check(self):
-        inline = any(v is not None for v in (self.x, self.y, self.depth))
-        if inline == (self.file is not None):
-            raise ValueError("give the grid inline ('x', 'y' and 'depth', m) or as a 'file' (.csv or .nc).")
-        if inline:
-            if self.x is None or self.y is None or self.depth is None:
-                raise ValueError("an inline grid needs 'x', 'y' and 'depth' (one row of depths per y).")
-            _check_grid(np.asarray(self.x, float), np.asarray(self.y, float), _rows(self.depth), "bathymetry_grid")
-        elif Path(self.file).suffix.lower() not in (".csv", ".nc", ".nc4", ".cdf"):
-            raise ValueError(f"bathymetry_grid.file '{self.file}': give a .csv or a NetCDF (.nc) file.")
-        return self
-
-    def load(self) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
-        """``(kind, a, b, depth)``: kind ``"xy"`` or ``"lonlat"``; a regular grid as (1-D, 1-D, 2-D [b, a])
-        or scattered points as three 1-D arrays."""
-        if self.file is None:
-            return "xy", np.asarray(self.x, float), np.asarray(self.y, float), _rows(self.depth)
-        if Path(self.file).suffix.lower() == ".csv":
-            return _read_csv_grid(self.file)
-        return _read_netcdf_grid(self.file, self.variable)
-
-
-def _rows(depth) -> np.ndarray:
-    try:
-        return np.asarray(depth, float)
-    except ValueError:
-        raise ValueError("bathymetry_grid.depth: every row needs one depth per x.") from None
-
-
-def _check_grid(x: np.ndarray, y: np.ndarray, depth: np.ndarray, where: str) -> None:
-    for name, a in (("x", x), ("y", y)):
-        if a.ndim != 1 or a.size < 2 or not np.all(np.isfinite(a)) or np.any(np.diff(a) <= 0):
-            raise ValueError(f"{where}: {name} must be 2 or more finite grid lines, strictly increasing [m].")
-    if depth.shape != (y.size, x.size):
-        raise ValueError(f"{where}: depth must have one row per y and one column per x, {y.size} x {x.size}, "
-                         f"got shape {depth.shape}.")
-    bad = ~(depth > 0)
-    if bad.any():
-        i, j = np.argwhere(bad)[0]
-        raise ValueError(f"{where}: depth at x = {x[j]:g} m, y = {y[i]:g} m must be > 0 m, got {depth[i, j]:g} m. "
-                         "Suggested fix: give depths below the surface as positive numbers (land cannot be laid "
-                         "on).")
-
-
-def _read_csv_grid(file: str):
-    path, header, rows = csv_rows(file, "bathymetry grid")
-    kind = "xy" if "x" in header and "y" in header else "lonlat" if "longitude" in header and "latitude" in \
-        header else None
-    value = next((n for n in _DEPTH_NAMES + _ELEVATION_NAMES if n in header), None)
-    if kind is None or value is None:
-        raise InputError(f"bathymetry grid '{path}' needs columns x, y (m) or longitude, latitude (degrees), and "
-                         f"depth (m, down) or elevation (m, up); got {', '.join(header) or 'an empty file'}.")
-    cols = ("x", "y") if kind == "xy" else ("longitude", "latitude")
-    idx = [header.index(c) for c in (*cols, value)]
-    try:
-        v = np.array([[float(r[i]) for i in idx] for r in rows[1:]], float).reshape(-1, 3)
-    except (ValueError, IndexError):
-        raise InputError(f"bathymetry grid '{path}': every row needs numbers in {', '.join(cols)} and "
-                         f"{value}.") from None
-    if v.shape[0] < 3 or not np.all(np.isfinite(v)):
-        raise InputError(f"bathymetry grid '{path}': needs at least 3 points, all finite.")
-    depth = v[:, 2] if value in _DEPTH_NAMES else -v[:, 2]
-    a, b = np.unique(v[:, 0]), np.unique(v[:, 1])
-    if a.size * b.size == v.shape[0]:            # a complete grid in any row order
-        grid = np.full((b.size, a.size), np.nan)
-        grid[np.searchsorted(b, v[:, 1]), np.searchsorted(a, v[:, 0])] = depth
-        if not np.isnan(grid).any():
-            return kind, a, b, _checked(kind, a, b, grid, path)
-    return kind, v[:, 0], v[:, 1], _checked(kind, v[:, 0], v[:, 1], depth, path)
-
-
-def _checked(kind, a, b, depth, path) -> np.ndarray:
-    """The grid's depths with land (and zero depth) marked +inf, as a hole: a file cut from GEBCO or EMODnet holds
-    land, and only the cable's way over it matters (:meth:`SeabedMap.check_covers` names a point on land). A grid
-    all land, or all at or above the surface, is refused: a sign error."""
-    water = depth > 0
-    if not water.any():
-        k = tuple(np.argwhere(~water)[0]) if (~water).any() else (0,) * depth.ndim
-        at = (a[k[-1]], b[k[0]]) if depth.ndim == 2 else (a[k[0]], b[k[0]])
-        unit = "m" if kind == "xy" else "degree"
-        raise InputError(f"bathymetry grid '{path}': no point of it is under water (at ({at[0]:g}, {at[1]:g}) {unit} "
-                         f"the depth is {depth[k]:g} m): land, or a sign error (elevations are up, depths down). "
-                         "Suggested fix: name the column or variable 'elevation' if the values are heights above the "
-                         "sea, 'depth' if they are depths below it.")
-    return np.where(water | np.isinf(depth), depth, np.inf)
-
-
-def _read_netcdf_grid(file: str, variable: str | None):
-    import xarray as xr
-
-    path = Path(file)
-    try:
-        ds = xr.open_dataset(path)
-    except (OSError, ValueError) as err:
-        raise InputError(f"bathymetry grid '{path}' cannot be read as NetCDF ({err}). Suggested fix: check the "
-                         "path (relative to the case file's folder) and the format.") from None
-    with ds:
-        names = [variable] if variable else [n for n in _DEPTH_NAMES + _ELEVATION_NAMES if n in ds.data_vars]
-        if not names or names[0] not in ds.data_vars:
-            raise InputError(f"bathymetry grid '{path}' has no variable {variable or 'depth or elevation'}; it has "
-                             f"{', '.join(map(str, ds.data_vars)) or 'none'}. Suggested fix: name it with "
-                             "bathymetry_grid.variable.")
-        da = ds[names[0]]
-        for kind, (xa, ya) in (("xy", ("x", "y")), ("lonlat", ("lon", "lat")), ("lonlat", ("longitude", "latitude"))):
-            if xa in da.dims and ya in da.dims and da.ndim == 2:
-                da = da.transpose(ya, xa)
-                a, b = np.asarray(da[xa], float), np.asarray(da[ya], float)
-                values = np.asarray(da, float)
-                break
-        else:
-            raise InputError(f"bathymetry grid '{path}': variable '{names[0]}' must have the two dimensions (y, x) or "
-                             f"(lat, lon), got {da.dims}.")
-        elevation = names[0] in _ELEVATION_NAMES or (variable is not None and
-                                                     str(da.attrs.get("positive", "")).lower() == "up")
-    if a.size > 1 and a[1] < a[0]:
-        a, values = a[::-1], values[:, ::-1]
-    if b.size > 1 and b[1] < b[0]:
-        b, values = b[::-1], values[::-1]
-    depth = -values if elevation else values
-    try:
-        _check_grid(a, b, np.ones(depth.shape), f"bathymetry grid '{path}'")     # its lines (land: below)
-    except ValueError as err:
-        raise InputError(str(err)) from None
-    return kind, a, b, _checked(kind, a, b, np.where(np.isnan(depth), np.inf, depth), path)
 
 
 class SeabedMap:

@@ -6,16 +6,14 @@ x runs along the ship's track (the ship moves towards +x), z is up with 0 at the
 from __future__ import annotations
 
 import bisect
-import csv
-import io
 import math
-from pathlib import Path
 from typing import Annotated, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
 
 from .._model import UNION_TAGS, Model, quantity, unit_float
+from .._text import csv_rows
 from ..errors import InputError
 
 __all__ = [
@@ -362,19 +360,6 @@ def sinking_weights(line, water_density: float, gravity: float) -> list[float]:
                              "water > 0). Suggested fix: check mass_per_length, diameter and weight_in_water.")
         weights.append(w)
     return weights
-
-
-def csv_rows(file: str, what: str) -> tuple[Path, list[str], list[list[str]]]:
-    """``(path, header, rows)`` of a CSV file: the header in lower case, blank rows dropped; a file that cannot
-    be read is an InputError naming ``what`` it is."""
-    from .._text import read_text_file
-
-    path = Path(file)
-    text = read_text_file(path, what, "give a CSV text file with a header row (its path relative to the case "
-                                      "file's folder)")
-    rows = [[c.strip() for c in row] for row in csv.reader(io.StringIO(text, newline=""))
-            if any(c.strip() for c in row)]
-    return path, [c.lower() for c in rows[0]] if rows else [], rows
 
 
 def _read_table(file: str) -> tuple[np.ndarray, np.ndarray]:

@@ -49,7 +49,7 @@ def friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric):
     kb = env[E_KBOT]
     if targets.shape[0] == 0 or mu <= 0.0 or kb <= 0.0:
         return
-    profile = env[E_BEDTAB] > 0.0
+    profile = env[E_BEDTAB] != 0.0  # a profile (> 0) or a grid (< 0)
     depth = env[E_DEPTH]
     if not profile and not math.isfinite(depth):
         return
@@ -64,7 +64,7 @@ def friction_loads(X, targets, bedc, env, fidx, F, band, bw, dfric):
     for i in range(X.shape[0]):
         if bedc[i] <= 0.0 or math.isnan(targets[i, 0]):
             continue
-        pen = penetration(env, X[i, 0], X[i, 2], profile, depth, nrm)  # the normal too, on a profile
+        pen = penetration(env, X[i, 0], X[i, 1], X[i, 2], profile, depth, nrm)  # the normal too, tabulated
         if pen <= -dl:
             continue  # off the seabed: no normal force, no friction
         q, dq = rounded_depth(pen, dl)

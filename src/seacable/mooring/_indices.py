@@ -23,7 +23,9 @@ E_FRAMEX, E_FRAMEY, E_FRAMEZ = 20, 21, 22
 # shape the drag sets), 0: not (a mooring line, whose shape its weight and tension set: the terms cost time)
 E_DRAGTURN = 23
 # a seabed profile: its number of points m (0: the plane of E_DEPTH and E_SLOPE); the points follow the vector's
-# ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond)
+# ENV_SIZE slots, m distances along X [m] then m seabed elevations there [m] (linear between, level beyond); or a
+# seabed grid (issue 41): -nx, its number of lines along X, with E_BEDNY its number along Y, ny; then follow nx x
+# [m], ny y [m] and the ny nx elevations [m], row by row along y (bilinear in each cell, level beyond)
 E_BEDTAB = 24
 # 1: the elements of linear EA carry compression too, EA eps below eps = 0 (a cable with bending stiffness, a beam), 0:
 # tension only (MoorDyn's rule: no compression)
@@ -32,7 +34,8 @@ E_COMPRESS = 25
 # body (:mod:`seacable.mooring._body`): 1 (0: none, its isotropic parts are the node's point arrays), its C_D A along,
 # across and vertical (E_BDRAG + k) [m^2] and its added mass along, across and vertical (E_BMASS + k) [kg]
 E_BODY, E_BDRAG, E_BMASS = 26, 27, 30
-ENV_SIZE = 33
+E_BEDNY = 33
+ENV_SIZE = 34
 
 # Columns of the attachments' hydrodynamics ``pcda`` (n, 3): drag area C_D A across the line (of all directions at
 # a point whose axial one is the same) and along it [m^2], and lift area C_L A [m^2], the lift

@@ -294,7 +294,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
     kb, cb, mu, vf = env[E_KBOT], env[E_CBOT], env[E_MU], env[E_VFRIC]
     bedfull = env[E_BEDFULL] > 0.0
     alpha = env[E_ALPHA]
-    profile = env[E_BEDTAB] > 0.0
+    profile = env[E_BEDTAB] != 0.0  # a profile (> 0) or a grid (< 0)
     # a towed body at node 0 with drag or added mass per axis of the body (mooring._body), its axes from the
     # towing cable's direction at it (node 0 to node 1)
     body = env[E_BODY] > 0.0 and n > 1
@@ -362,7 +362,7 @@ def loads_water(X, V, t, elements, L0, EA, cdamp, mpl, dia, cdn, cdt, can, cat,
             if jac and fidx[i] >= 0:
                 _add_block(band, bw, fidx[i], fidx[i], cc * alpha, M[i])
         if kb > 0.0 and bedc[i] > 0.0 and (profile or math.isfinite(depth)):
-            pen = penetration(env, X[i, 0], X[i, 2], profile, depth, nrm)  # the normal too, on a profile
+            pen = penetration(env, X[i, 0], X[i, 1], X[i, 2], profile, depth, nrm)  # the normal too, tabulated
             dl = env[E_BEDRAMP]
             if pen > -dl:
                 # penalty spring k q(pen), q rounded quadratically over |pen| < dl (continuous stiffness,

@@ -1,5 +1,5 @@
 """The seabed under the mooring line: its elevation and slope, a plane or a profile along X
-(:func:`seabed_at`).
+(:func:`seabed_at`), or a grid over X and Y (:func:`grid_at`).
 
 Part of :mod:`seacable.mooring.kernel`, which re-exports the public names.
 """
@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from .._jit import njit
-from ._indices import E_BEDTAB, E_DEPTH, E_SLOPE, ENV_SIZE
+from ._indices import E_BEDNY, E_BEDTAB, E_DEPTH, E_SLOPE, ENV_SIZE
 
 
 @njit(cache=True)
@@ -39,11 +39,56 @@ def seabed_at(env, x):
 
 
 @njit(cache=True)
-def penetration(env, x, z, profile, depth, nrm):
-    """How far the point ``(x, z)`` lies into the seabed along its normal [m] (> 0 in it): with a ``profile``, of the
-    profile's segment under ``x``, whose unit normal it writes into ``nrm`` (x and z); else of the plane through
-    ``z = -depth`` at ``x = 0`` whose normal ``nrm`` holds already."""
+def _cell(env, g0, n, p):
+    """The cell of the grid lines ``env[g0:g0 + n]`` (increasing) under ``p`` (bisection), the fraction ``t`` across
+    it, and whether ``p`` lies strictly inside the lines' span (beyond it: clamped to the edge, level)."""
+    if p <= env[g0]:
+        return 0, 0.0, False
+    if p >= env[g0 + n - 1]:
+        return n - 2, 1.0, False
+    lo, hi = 0, n - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if env[g0 + mid] <= p:
+            lo = mid
+        else:
+            hi = mid
+    return lo, (p - env[g0 + lo]) / (env[g0 + hi] - env[g0 + lo]), True
+
+
+@njit(cache=True)
+def grid_at(env, x, y):
+    """Seabed elevation [m] and its gradient dz/dx, dz/dy [-] at ``(x, y)`` on the grid held in ``env`` (``E_BEDTAB``
+    = -nx, ``E_BEDNY`` = ny): bilinear in the cell under the point (located by bisection on x and on y), level beyond
+    the grid's edges (the gradient along an axis 0 beyond its span). :class:`seacable.bathymetry.SeabedGrid`'s ``at``
+    in NumPy."""
+    nx = int(-env[E_BEDTAB])
+    ny = int(env[E_BEDNY])
+    i, tx, inx = _cell(env, ENV_SIZE, nx, x)
+    j, ty, iny = _cell(env, ENV_SIZE + nx, ny, y)
+    z0 = ENV_SIZE + nx + ny + j * nx + i
+    z00, z10, z01, z11 = env[z0], env[z0 + 1], env[z0 + nx], env[z0 + nx + 1]
+    zb = (1.0 - ty) * ((1.0 - tx) * z00 + tx * z10) + ty * ((1.0 - tx) * z01 + tx * z11)
+    gx = gy = 0.0
+    if inx:
+        gx = ((1.0 - ty) * (z10 - z00) + ty * (z11 - z01)) / (env[ENV_SIZE + i + 1] - env[ENV_SIZE + i])
+    if iny:
+        gy = ((1.0 - tx) * (z01 - z00) + tx * (z11 - z10)) / (env[ENV_SIZE + nx + j + 1] - env[ENV_SIZE + nx + j])
+    return zb, gx, gy
+
+
+@njit(cache=True)
+def penetration(env, x, y, z, profile, depth, nrm):
+    """How far the point ``(x, y, z)`` lies into the seabed along its normal [m] (> 0 in it): with ``profile`` (a
+    tabulated seabed), of the profile's segment under ``x``, whose unit normal it writes into ``nrm`` (x and z), or of
+    the grid under ``(x, y)``, whose unit normal ``(-dz/dx, -dz/dy, 1) / norm`` it writes into ``nrm``; else of the
+    plane through ``z = -depth`` at ``x = 0`` whose normal ``nrm`` holds already."""
     if profile:
+        if env[E_BEDTAB] < 0.0:
+            zb, gx, gy = grid_at(env, x, y)
+            cs = 1.0 / math.sqrt(1.0 + gx * gx + gy * gy)
+            nrm[0], nrm[1], nrm[2] = -gx * cs, -gy * cs, cs
+            return (zb - z) * cs
         zb, slope = seabed_at(env, x)
         cs = 1.0 / math.sqrt(1.0 + slope * slope)
         nrm[0], nrm[2] = -slope * cs, cs

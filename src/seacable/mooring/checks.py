@@ -50,15 +50,18 @@ def _describe(network: Network, node: int) -> str:
     return f"{kind} node {node} at ({x:.6g}, {y:.6g}, {z:.6g}) m"
 
 
-def _below_seabed(x, z, depth: float, slope: float, profile) -> np.ndarray:
+def _below_seabed(x, z, depth: float, slope: float, profile, grid=None, y=None) -> np.ndarray:
     """How far points (x, z) lie under the seabed [m]: normal to the plane through (0, -depth) rising at ``slope``,
-    or vertically under a profile ``(distances, depths)`` along X (level beyond its ends)."""
+    or vertically under a profile ``(distances, depths)`` along X (level beyond its ends) or a ``grid``
+    (:class:`seacable.bathymetry.SeabedGrid`) at (x, ``y``)."""
+    if grid is not None:
+        return grid.at(x, y)[0] - z
     if profile is not None:
         return -np.interp(x, profile[0], profile[1]) - z
     return ((-depth + math.tan(slope) * x) - z) * math.cos(slope)
 
 
-def check_network(network: Network, *, depth: float | None, slope: float = 0.0, profile=None) -> None:
+def check_network(network: Network, *, depth: float | None, slope: float = 0.0, profile=None, grid=None) -> None:
     """Refuse a start no line can take: a placed node under the seabed, or held ends beyond the stretch limit.
 
     Parameters
@@ -69,6 +72,9 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0, 
         The seabed plane, through (0, 0, -depth) rising towards +x at ``slope`` (None: no seabed). [m], [rad]
     profile
         The seabed's profile along X instead of the plane, ``(distances, depths)``; None: the plane. [m]
+    grid
+        The seabed's grid instead (:class:`seacable.bathymetry.SeabedGrid`): every node, at its start, over it and
+        not over land.
 
     Raises
     ------
@@ -78,9 +84,12 @@ def check_network(network: Network, *, depth: float | None, slope: float = 0.0, 
     X = network.position
     held = np.flatnonzero(network.kind != 0)
     placed = np.union1d(held, np.flatnonzero(~np.isfinite(network.arc_length)))  # plus MoorDyn points
+    if grid is not None:
+        for nodes, what in ((placed, "anchors, fairleads and points"), (np.arange(network.n_nodes), "line's nodes")):
+            grid.check_covers(X[nodes], what)
     if depth is not None:
-        below = _below_seabed(X[placed, 0], X[placed, 2], depth, slope, profile)
-        bed = X[placed, 2] + below / (1.0 if profile is not None else math.cos(slope))
+        below = _below_seabed(X[placed, 0], X[placed, 2], depth, slope, profile, grid, X[placed, 1])
+        bed = X[placed, 2] + below / (1.0 if profile is not None or grid is not None else math.cos(slope))
         k = int(np.argmax(below)) if placed.size else 0
         if placed.size and below[k] > 1e-6 * max(depth, 1.0):
             node = int(placed[k])
@@ -164,7 +173,7 @@ def _chain_distances(place: np.ndarray, held: np.ndarray, reach: np.ndarray) -> 
 
 
 def check_motion(network: Network, times, positions, *, depth: float | None, slope: float = 0.0,
-                 profile=None) -> None:
+                 profile=None, grid=None) -> None:
     """Refuse a prescribed motion that takes a moved node under the seabed or beyond the lines' reach.
 
     Parameters
@@ -175,8 +184,8 @@ def check_motion(network: Network, times, positions, *, depth: float | None, slo
         (nt,) sample times of the motion. [s]
     positions
         (nt, n_channels, 3) positions of the motion channels at ``times``. [m]
-    depth, slope, profile
-        The seabed plane or profile (see :func:`check_network`). [m], [rad], [m]
+    depth, slope, profile, grid
+        The seabed plane, profile or grid (see :func:`check_network`). [m], [rad], [m]
 
     Raises
     ------
@@ -191,7 +200,9 @@ def check_motion(network: Network, times, positions, *, depth: float | None, slo
     for node in moved:
         path = positions[:, network.channel[node], :]
         if depth is not None:
-            below = _below_seabed(path[:, 0], path[:, 2], depth, slope, profile)
+            if grid is not None:
+                grid.check_covers(path, f"moved node {node}'s path")
+            below = _below_seabed(path[:, 0], path[:, 2], depth, slope, profile, grid, path[:, 1])
             k = int(np.argmax(below))
             if below[k] > 1e-6 * max(depth, 1.0):
                 raise InputError(
@@ -230,10 +241,10 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
     take compression, which its elements do not carry.
     """
     water, net = model.water, model.network
-    if water.depth is None and water.profile is None:
+    if water.depth is None and not water.tabulated:
         return ""
     X = np.asarray(X, float)
-    grounded = X[:, 2] <= water.seabed_z(X[:, 0]) + 1e-9  # on the seabed or in it (the penalty contact)
+    grounded = X[:, 2] <= water.seabed_z(X[:, 0], X[:, 1]) + 1e-9  # on the seabed or in it (the penalty contact)
     els = np.flatnonzero(grounded[net.elements[:, 0]] & grounded[net.elements[:, 1]])
     if els.size == 0:
         return ""
@@ -242,7 +253,7 @@ def seabed_hold_hint(model, X, friction: bool) -> str:
     t = chord / np.maximum(np.linalg.norm(chord, axis=1), 1e-300)[:, None]
     mid = 0.5 * (X[a] + X[b])
     h = 1e-3  # the slope under the element's middle, by a central difference [m]
-    slope = np.arctan((water.seabed_z(mid[:, 0] + h) - water.seabed_z(mid[:, 0] - h)) / (2 * h))
+    slope = np.arctan((water.seabed_z(mid[:, 0] + h, mid[:, 1]) - water.seabed_z(mid[:, 0] - h, mid[:, 1])) / (2 * h))
     speed = np.interp(-mid[:, 2], water.current_depths, water.current_speeds)
     u = speed[:, None] * np.array([math.cos(water.current_heading), math.sin(water.current_heading), 0.0])
     ut = np.sum(u * t, axis=1)

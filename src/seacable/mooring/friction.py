@@ -95,7 +95,7 @@ class StaticFrictionOption(Model):
 def _active(model, settings: StaticFriction | None) -> bool:
     water = model.water
     return (settings is not None and settings.mode != "off" and water.friction > 0.0 and water.seabed_stiffness > 0.0
-            and (water.depth is not None or water.profile is not None))
+            and (water.depth is not None or water.tabulated))
 
 
 def _still(model):
@@ -109,8 +109,11 @@ def _still(model):
     return MooringModel(model.network, still, checked=True)
 
 
-def _normals(water, x):
-    """The seabed's unit normal under each ``x`` (k, 3), from its slope along X. [-]"""
+def _normals(water, x, y=None):
+    """The seabed's unit normal under each ``x`` (k, 3), from its slope along X; on a grid, its normal under each
+    ``(x, y)`` (:meth:`seacable.bathymetry.SeabedGrid.normal`). [-]"""
+    if water.grid is not None:
+        return water.grid.normal(x, y)
     h = 1e-6
     slope = (water.seabed_z(x + h) - water.seabed_z(x - h)) / (2 * h)
     c = 1.0 / np.sqrt(1.0 + slope * slope)
@@ -124,7 +127,7 @@ def _in_contact(model, X) -> np.ndarray:
 
     water = model.water
     X = np.asarray(X, float)
-    pen = (water.seabed_z(X[:, 0]) - X[:, 2]) * _normals(water, X[:, 0])[:, 2]
+    pen = (water.seabed_z(X[:, 0], X[:, 1]) - X[:, 2]) * _normals(water, X[:, 0], X[:, 1])[:, 2]
     return (pen > -model.env[K.E_BEDRAMP]) & (model.bedc > 0.0) & (model.fidx >= 0)
 
 
@@ -149,7 +152,7 @@ def slide_targets(model, X, targets, friction_distance: float, follow: bool = Tr
     held = on & np.isfinite(targets[:, 0])
     out[on & ~held] = X[on & ~held]
     r = X[held] - targets[held]
-    n = _normals(model.water, X[held, 0])
+    n = _normals(model.water, X[held, 0], X[held, 1])
     d = r - np.sum(r * n, axis=1)[:, None] * n
     size = np.linalg.norm(d, axis=1)
     reach = SLIDE_FACTOR * friction_distance

@@ -36,7 +36,8 @@ argument ``sea`` of :mod:`seacable.seastate`; above z = 0 the z = 0 kinematics o
 
 (the tangential drag on the wetted perimeter ``pi d``, as MoorDyn). Attachments add mass, isotropic
 added mass, drag ``1/2 rho C_D A |u| u`` and the Froude-Krylov force of their volume. The seabed
-is a plane; a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
+is a plane, a profile along X or a grid over X and Y (:mod:`._seabed`: bilinear, the normal from its
+gradient); a node below it gets a penalty force ``k_b d_n (penetration) - c_b d_n v_n``, rounded
 over a small band of penetration so that the contact stiffness is continuous (the damper engaging
 gradually, or for MoorDyn decks in full beyond the band, ``E_BEDFULL``), with ``d_n`` the sum of
 ``d L / 2`` of the node's elements (MoorDyn's kBot, cBot in Pa/m, Pa s/m), and Coulomb friction regularised as ``-mu N v_t / sqrt(|v_t|^2 + v_f^2)``.
@@ -87,10 +88,10 @@ from ._loads import loads, loads_water, n_water
 # re-exported: the arrays' layouts, which the solver, the run modules and the coupled system kernel fill through
 # this module, and the parts' names they and the tests use
 from ._indices import (  # noqa: F401
-    E_ALPHA, E_BEDFULL, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ, E_MU, E_RHO,
-    E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_DCH, H_ECH, H_EI,
-    H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
-from ._seabed import seabed_at  # noqa: F401
+    E_ALPHA, E_BEDFULL, E_BEDNY, E_BEDRAMP, E_BEDTAB, E_CBOT, E_CHEAD, E_DRAGTURN, E_FRAMEX, E_FRAMEY, E_FRAMEZ,
+    E_MU, E_RHO, E_SLACKDAMP, E_SLOPE, E_VFRIC, E_WDEPTH, E_WH, E_WHEAD, E_WK, E_WPHASE, E_WT, H_CLAMP, H_D, H_DCH,
+    H_ECH, H_EI, H_INNER, H_K, H_KIND, H_SIZE, H_SPRING, P_CDA, P_CDA_AXIAL, P_CLA, V_BAD, V_EAD, V_K1, V_K2, V_LM, V_WC)
+from ._seabed import grid_at, seabed_at  # noqa: F401
 from ._water import _fluid, point_lift  # noqa: F401
 # the ties to the seabed: their columns of the attachments' table and their pass (:mod:`._ties`); compression
 from ._indices import E_COMPRESS, P_CK, P_CX, P_SIZE, P_TB, P_TEA, P_TL, P_TX  # noqa: F401

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from ..bathymetry import cartesian_grid
 from ..environment import IrregularWaves
 from ..seastate import S_MODE
 from . import kernel as K
@@ -46,9 +47,12 @@ def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0
     sea = w.components(env.depth, env.gravity) if isinstance(w, IrregularWaves) else None
     w_reg = None if sea is not None else w
     profile = env.seabed.profile
+    grid = None if env.seabed.grid is None else cartesian_grid(env.seabed.grid)
     depth = env.depth
     if depth is None and profile is not None:  # the water depth at the origin, the profile's there
         depth = float(np.interp(0.0, profile.distance, profile.depth))
+    if depth is None and grid is not None:  # the grid's under the origin (or its nearest point), for the waves
+        depth = float(-grid.at(0.0, 0.0)[0])
     return Water(density=env.water_density, gravity=env.gravity, depth=depth, slope=env.seabed.slope,
                  seabed_stiffness=seabed_contact.stiffness, seabed_damping=seabed_contact.damping,
                  friction=env.seabed.friction, friction_velocity=seabed_contact.friction_velocity,
@@ -56,13 +60,17 @@ def water_of_environment(environment, seabed_contact, rayleigh_mass: float = 0.0
                  wave_height=w_reg.height if w_reg else 0.0, wave_period=w_reg.period if w_reg else 10.0,
                  wave_heading=w_reg.heading if w_reg else 0.0, wave_phase=w_reg.phase if w_reg else 0.0,
                  rayleigh_mass=rayleigh_mass, sea=sea, stretching=w.stretching if w else "none",
-                 profile=None if profile is None else (profile.distance, profile.depth), compression=compression)
+                 profile=None if profile is None else (profile.distance, profile.depth), compression=compression,
+                 grid=grid)
 
 
-def seabed_slope(water: Water, x):
+def seabed_slope(water: Water, x, y=None):
     """Slope dz/dx [-] of the seabed under ``x`` [m]: the plane's ``tan(slope)``, or the profile's segment's (level
-    beyond its ends, the segment above a point at a breakpoint: :func:`seacable.mooring.kernel.seabed_at`)."""
+    beyond its ends, the segment above a point at a breakpoint: :func:`seacable.mooring.kernel.seabed_at`); on a
+    grid, its gradient along x under ``(x, y)`` (``y`` 0 if not given)."""
     x = np.asarray(x, float)
+    if water.grid is not None:
+        return water.grid.at(x, np.zeros_like(x) if y is None else y)[1]
     if water.profile is None:
         return np.full_like(x, math.tan(water.slope))
     dist, depth = (np.asarray(v, float) for v in water.profile)
@@ -73,7 +81,11 @@ def seabed_slope(water: Water, x):
 
 def height_above_seabed(water: Water, X):
     """Height of points above the seabed, normal to it (negative inside it), (..., n): the plane's, or the profile's
-    segment under each point's (the kernel's contact, :func:`seacable.mooring.kernel.seabed_at`). [m]"""
+    segment under each point's (the kernel's contact, :func:`seacable.mooring.kernel.seabed_at`), or the grid's
+    cell's (:func:`seacable.mooring.kernel.grid_at`). [m]"""
+    if water.grid is not None:
+        zb, gx, gy = water.grid.at(X[..., 0], X[..., 1])
+        return (X[..., 2] - zb) / np.sqrt(1.0 + gx * gx + gy * gy)
     if water.profile is not None:
         slope = seabed_slope(water, X[..., 0])
         return (X[..., 2] - water.seabed_z(X[..., 0])) / np.sqrt(1.0 + slope * slope)
@@ -81,7 +93,7 @@ def height_above_seabed(water: Water, X):
     return -math.sin(sl) * X[..., 0] + math.cos(sl) * (X[..., 2] + water.depth)
 
 
-def grounded_end_force(pull, half_weight, slope: float = 0.0):
+def grounded_end_force(pull, half_weight, slope: float = 0.0, normal=None):
     """Force of a line on an end held on the seabed (an anchor), (..., 3). [N]
 
     The end element pulls along its chord with its tension, ``pull = T d / |d|``; that direction is the line's
@@ -101,8 +113,15 @@ def grounded_end_force(pull, half_weight, slope: float = 0.0):
         The half end element's weight in water, (...,) or scalar (negative: buoyant). [N]
     slope
         The seabed's slope, rising towards +x. [rad]
+    normal
+        The seabed's unit normal under each end instead, (..., 3) (a grid's). [-]
     """
     pull = np.asarray(pull, float)
+    if normal is not None:  # a grid: each end's own normal, its weight's normal share n_z
+        n = np.asarray(normal, float)
+        across = np.sum(pull * n, axis=-1)
+        kept = np.maximum(across - np.asarray(half_weight, float) * n[..., 2], 0.0)
+        return pull + (kept - across)[..., None] * n
     n = np.array([-math.sin(slope), 0.0, math.cos(slope)])
     normal = pull @ n
     kept = np.maximum(normal - np.asarray(half_weight, float) * math.cos(slope), 0.0)
@@ -387,7 +406,10 @@ def line_end_forces(model: MooringModel, X, V=None, A=None, time=None, kinematic
                 half = 0.5 * net.weight_per_length[end_el[j]] * net.length[end_el[j]]
                 slope = model.water.slope if model.water.profile is None else \
                     float(np.arctan(seabed_slope(model.water, Xs[grounded, ends[j], 0]).mean()))
-                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope)
+                nrm = None if model.water.grid is None else \
+                    model.water.grid.normal(Xs[grounded, ends[j], 0], Xs[grounded, ends[j], 1])
+                out[grounded, j] = grounded_end_force(tension[grounded, j, None] * d / norm[:, None], half, slope,
+                                                      nrm)
     return out.reshape(lead + (2, 3))
 
 

@@ -114,9 +114,12 @@ def case_model(case: Case, *, end_b: str = "prescribed", fairlead=None) -> Moori
         net = net.replace(end_hinges=held)
     lengths, weights, ea, loads = line_arrays(case)
     held = [(0.0, anchor)] + sorted((tie.s, p) for tie, p in ties if tie.type == "clamp" and tie.stiffness is None)
+    water = water_of(case)
+    grid = water.grid  # a grid: the catenary on the plane under the anchor along the line, lifted onto the grid
+    depth, slope = (env.depth, env.seabed.slope) if grid is None else grid.plane_under(anchor, fair)
     start = _start_positions(held + [(float(np.sum(lengths)), fair)], net.arc_length, lengths, weights, ea, loads,
-                             depth=env.depth, slope=env.seabed.slope, buoyant=bool(case.line.sections))
-    return MooringModel(net.replace(position=start), water_of(case))
+                             depth=depth, slope=slope, buoyant=bool(case.line.sections))
+    return MooringModel(net.replace(position=start if grid is None else grid.lift(start)), water)
 
 
 def _start_positions(held, s, lengths, weights, ea, loads, **kwargs):
@@ -223,7 +226,7 @@ def _seabed_shares(model: MooringModel, X):
     dl = float(model.env[K_BEDRAMP])
     # the penetration -height_above_seabed(water, X) by the same operations, in two arrays instead of five (a
     # run's block of outputs: each temporary is as large as an output variable)
-    if water.profile is not None:  # the profile's segment under each node
+    if water.tabulated:  # the profile's segment, or the grid's cell, under each node
         pen = -height_above_seabed(water, X)
         depth = np.empty_like(pen)
     else:
@@ -413,7 +416,7 @@ def prepare_mooring_pushover(case: Case) -> tuple[MooringModel, np.ndarray]:
         X[moved, 0] += off * math.cos(a.heading)
         X[moved, 1] += off * math.sin(a.heading)
         check_network(net.replace(position=X), depth=model.water.depth, slope=model.water.slope,
-                      profile=model.water.profile)
+                      profile=model.water.profile, grid=model.water.grid)
     return model, offsets
 
 
@@ -477,7 +480,7 @@ def prepare_mooring_dynamic(case: Case) -> MooringDynamicSetup:
     times = np.linspace(0.0, a.duration, round(a.duration / a.output_interval) + 1)
     if motion is not None:
         check_motion(net, times, motion(times)[0], depth=model.water.depth, slope=model.water.slope,
-                     profile=model.water.profile)
+                     profile=model.water.profile, grid=model.water.grid)
     # an irregular sea: the size of its kinematics grid over the nodes and the fairlead's range
     model.check_sea(a.duration, np.concatenate((net.position, motion(times)[0].reshape(-1, 3)))
                     if motion is not None else net.position)

@@ -68,7 +68,8 @@ class Water:
     rounded penetration ``q`` and the band ``b`` (two thirds of it at a node's static penetration ``2 b``).
     ``compression``: the elements of linear EA carry compression too, ``EA eps`` for ``eps < 0`` (a cable with
     bending stiffness, a beam; False: tension only, MoorDyn's rule). ``profile``: the seabed's depths along X
-    instead of the plane, ``(distances, depths)`` [m].
+    instead of the plane, ``(distances, depths)`` [m]. ``grid``: the seabed on an x, y grid instead
+    (:class:`seacable.bathymetry.SeabedGrid`; ``depth`` then the water depth at the origin, for the waves).
     """
 
     density: float = 1025.0
@@ -94,14 +95,24 @@ class Water:
     # a seabed profile along X instead of the plane: (distances [m], depths [m]), linear between, level beyond
     profile: tuple | None = None
     compression: bool = False  # the elements of linear EA carry compression too (a cable as a beam: E_COMPRESS)
+    grid: object = None  # a seabed grid over x, y instead of the plane (seacable.bathymetry.SeabedGrid)
+
+    @property
+    def tabulated(self) -> bool:
+        """Whether the seabed is a profile or a grid (not the plane of ``depth`` and ``slope``)."""
+        return self.profile is not None or self.grid is not None
 
     def env_vector(self, bed_ramp: float = 1e-3) -> np.ndarray:
         m = 0 if self.profile is None else len(self.profile[0])
-        env = np.zeros(K.ENV_SIZE + 2 * m)
+        block = None if self.grid is None else self.grid.env_block()
+        env = np.zeros(K.ENV_SIZE + (2 * m if block is None else block.size))
         if m:
             env[K.E_BEDTAB] = m
             env[K.ENV_SIZE:K.ENV_SIZE + m] = self.profile[0]
             env[K.ENV_SIZE + m:] = -np.asarray(self.profile[1], float)
+        if block is not None:  # the grid: -nx, ny, then its lines and elevations (kernel.grid_at)
+            env[K.E_BEDTAB], env[K.E_BEDNY] = -self.grid.x.size, self.grid.y.size
+            env[K.ENV_SIZE:] = block
         depth = math.inf if self.depth is None else float(self.depth)
         env[[K.E_RHO, K.E_G, K.E_DEPTH, K.E_SLOPE]] = self.density, self.gravity, depth, self.slope
         env[[K.E_KBOT, K.E_CBOT, K.E_MU, K.E_VFRIC]] = (self.seabed_stiffness, self.seabed_damping, self.friction,
@@ -116,9 +127,11 @@ class Water:
         env[K.E_COMPRESS] = float(bool(self.compression))
         return env
 
-    def seabed_z(self, x) -> np.ndarray:
-        """Seabed elevation under ``x`` (NaN without a seabed). [m]"""
+    def seabed_z(self, x, y=None) -> np.ndarray:
+        """Seabed elevation under ``x`` (and ``y``, on a grid: 0 if not given) (NaN without a seabed). [m]"""
         x = np.asarray(x, float)
+        if self.grid is not None:
+            return self.grid.at(x, np.zeros_like(x) if y is None else np.asarray(y, float))[0]
         if self.profile is not None:
             return -np.interp(x, self.profile[0], self.profile[1])
         if self.depth is None:
@@ -191,7 +204,8 @@ class MooringModel:
     def __post_init__(self, checked):
         net = self.network
         if not checked:
-            check_network(net, depth=self.water.depth, slope=self.water.slope, profile=self.water.profile)
+            check_network(net, depth=self.water.depth, slope=self.water.slope, profile=self.water.profile,
+                          grid=self.water.grid)
         free = np.flatnonzero(net.kind == FREE)
         order = _band_order(net, free)
         self.fidx = np.full(net.n_nodes, -1, np.int64)
@@ -590,7 +604,10 @@ def _warn_sinking(model: MooringModel, X) -> None:
     water, net = model.water, model.network
     if water.depth is None or water.seabed_stiffness <= 0:
         return
-    depth_in = (water.seabed_z(X[:, 0]) - X[:, 2]) * math.cos(water.slope)
+    if water.grid is not None:  # along the grid's normal under each node
+        depth_in = (water.seabed_z(X[:, 0], X[:, 1]) - X[:, 2]) * water.grid.normal(X[:, 0], X[:, 1])[:, 2]
+    else:
+        depth_in = (water.seabed_z(X[:, 0]) - X[:, 2]) * math.cos(water.slope)
     thick = np.zeros(net.n_nodes)
     np.maximum.at(thick, net.elements[:, 0], net.diameter)
     np.maximum.at(thick, net.elements[:, 1], net.diameter)

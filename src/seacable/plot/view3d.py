@@ -207,6 +207,8 @@ def _case_seabed(ds):
             bed = Seabed.model_validate(env.get("seabed") or {})
     except (yaml.YAMLError, AttributeError, TypeError, ValueError):
         return None  # a result written by another tool: no seabed drawn rather than no page
+    if bed.grid is not None:
+        return None  # a seabed grid is not drawn yet: none rather than the plane of its depth
     profile = None if bed.profile is None else (np.asarray(bed.profile.distance), np.asarray(bed.profile.depth))
     depth = env.get("depth")
     if profile is None and depth is None:

@@ -42,7 +42,7 @@ from pydantic import Discriminator, Field, Tag, model_serializer, model_validato
 from .._model import UNION_TAGS, Model, input_error, quantity, suggest, unit_float
 from .._window import StatisticsWindow, omit_unset_window
 from ..case import CableDesign, SeabedContact, check_unused_inputs
-from ..environment import SystemEnvironment
+from ..environment import SystemEnvironment, seabed_elevation
 from ..errors import InputError
 from ..line import STAND_IN, LineType, retyped_changes
 from ..mooring.friction import StaticFriction, StaticFrictionOption
@@ -127,7 +127,7 @@ class SystemStaticAnalysis(_Designed, _Solve):
     #: environment inputs taken (seacable.case.check_unused_inputs): waves, as every static analysis (still water);
     #: the mean wind on the bodies that give their wind areas
     USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves",
-                                                "wind"})
+                                                "wind", "seabed.grid"})
     profile_points: int = Field(41, ge=2, le=10_000, description="Points of each line's stored profile.")
 
 
@@ -298,10 +298,10 @@ class SystemDynamicAnalysis(_Designed, StatisticsWindow):
     """
 
     type: Literal["system_dynamic"] = "system_dynamic"
-    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane seabed); the wind
+    #: environment inputs taken (seacable.case.check_unused_inputs): not seabed.profile (a plane or a grid); the wind
     #: on the bodies that give their wind areas
     USES: ClassVar[frozenset[str]] = frozenset({"depth", "current", "seabed.slope", "seabed.friction", "waves",
-                                                "wind"})
+                                                "wind", "seabed.grid"})
     duration: quantity("s", gt=0) = Field(description="Simulated time. [s]")
     time_step: quantity("s", gt=0) = Field(0.1, description="Newmark time step (halved on a failed step). [s]")
     output_interval: quantity("s", gt=0) = Field(0.5, description="Time between stored states. [s]")
@@ -478,6 +478,13 @@ class SystemCase(Model):
 
     @model_validator(mode="before")
     @classmethod
+    def _points_on_seabed(cls, data: Any) -> Any:
+        """A fixed or free point given at ``(x, y)`` only, or with ``z: seabed``, sits on the seabed there (the
+        grid's, or the plane's of the depth and slope): :func:`seabed_points`."""
+        return seabed_points(data)
+
+    @model_validator(mode="before")
+    @classmethod
     def _resolve_lines(cls, data: Any) -> Any:
         """Expand each line's short form and replace line-type names by the entries of ``line_types``."""
         if not isinstance(data, dict) or not isinstance(data.get("lines"), dict):
@@ -489,9 +496,9 @@ class SystemCase(Model):
     @model_validator(mode="after")
     def _system(self):
         check_unused_inputs(self.analysis, self.environment, SYSTEM_ANALYSES)
-        if self.environment.depth is None:
-            raise ValueError(f"analysis '{self.analysis.type}' needs environment.depth (m): the seabed the lines "
-                             "rest on. Suggested fix: add 'depth:' under 'environment'.")
+        if self.environment.depth is None and self.environment.seabed.grid is None:
+            raise ValueError(f"analysis '{self.analysis.type}' needs environment.depth (m) or seabed.grid: the seabed "
+                             "the lines rest on. Suggested fix: add 'depth:' under 'environment'.")
         for name, body in self.bodies.items():
             given = body.database_conflicts()
             if given:
@@ -509,10 +516,16 @@ class SystemCase(Model):
         depth = self.environment.depth
         slope = self.environment.seabed.slope
         for name, p in system.points.items():
-            bed = -depth + math.tan(slope) * p.position[0]  # the plane seabed, rising towards +X by its slope
-            if p.kind != "body" and p.position[2] < bed - 1e-9 * (depth + abs(bed)) - 1e-9:
+            if self.environment.seabed.grid is not None:  # the grid's seabed under the point (refused off it)
+                bed = seabed_elevation(self.environment.seabed, *p.position[:2], f"point '{name}'") \
+                    if p.kind != "body" else 0.0
+                depth = -bed
+                where = f"z = {bed:g} m (environment.seabed.grid under x = {p.position[0]:g} m, y = {p.position[1]:g} m)"
+            else:
+                bed = -depth + math.tan(slope) * p.position[0]  # the plane seabed, rising towards +X by its slope
                 where = f"z = {bed:g} m" + (f" (environment.depth {depth:g} m" + (
                     f", seabed.slope {slope:g} rad at x = {p.position[0]:g} m)" if slope else ")"))
+            if p.kind != "body" and p.position[2] < bed - 1e-9 * (depth + abs(bed)) - 1e-9:
                 raise ValueError(f"points.{name}.position: z = {p.position[2]:g} m is below the seabed at "
                                  f"{where}. Suggested fix: put the point on the seabed (z = {bed:g} m) or "
                                  "above it.")
@@ -639,3 +652,35 @@ def _file_path(loc: tuple, data: Any) -> tuple:
     if "segments" not in entry and rest[:2] == ("segments", 0):
         rest = rest[2:]
     return loc[:2] + rest
+
+
+def seabed_points(data: Any) -> Any:
+    """Case data with each fixed or free point given at ``(x, y)`` only, or at ``(x, y, "seabed")``, put on the
+    seabed there: the grid's elevation under it (:func:`seacable.environment.seabed_elevation`, refused off the grid
+    or over land), or the plane's, ``-depth + tan(slope) x``. Data it cannot read (an environment that does not
+    validate) is left as it is, for the case's validation to name."""
+    points = data.get("points") if isinstance(data, dict) else None
+    if not isinstance(points, dict):
+        return data
+    todo = [n for n, p in points.items() if isinstance(p, dict) and p.get("kind") in ("fixed", "free")
+            and isinstance(p.get("position"), (list, tuple)) and (len(p["position"]) == 2 or (
+                len(p["position"]) == 3 and p["position"][2] == "seabed"))]
+    if not todo:
+        return data
+    try:
+        env = SystemEnvironment.model_validate(data.get("environment") or {})
+        xy = {n: (float(points[n]["position"][0]), float(points[n]["position"][1])) for n in todo}
+    except (ValueError, TypeError):
+        return data
+    out = dict(points)
+    for name in todo:
+        x, y = xy[name]
+        if env.seabed.grid is not None:
+            z = seabed_elevation(env.seabed, x, y, f"point '{name}' (given on the seabed)")
+        elif env.depth is not None:
+            z = -env.depth + math.tan(env.seabed.slope) * x
+        else:
+            raise ValueError(f"points.{name}.position: given on the seabed (no z), but the environment has no seabed "
+                             "(environment.depth or seabed.grid). Suggested fix: give z in m, or the depth.")
+        out[name] = {**points[name], "position": [x, y, z]}
+    return {**data, "points": out}

@@ -770,7 +770,7 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     tie_variables(ties, ("condition",), (nc,), data, coords)
     ds = make_dataset(data, coords, analysis="system_static", case=case, references=REFERENCES,
                       settings=_settings(case, setup), owned=True)
-    ds.attrs["depth"] = float(case.environment.depth)
+    ds.attrs["depth"] = float(case.environment.origin_depth())
     _statics_attrs(ds, setup)
     if held:
         ds.attrs["indeterminate"] = "; ".join(held)  # rotations nothing resists, held where they start
@@ -897,7 +897,7 @@ def run_system_offsets(case: SystemCase, statics: str | None = None):
     ds = make_dataset(data, coords, analysis="system_offsets", case=case, references=REFERENCES,
                       settings=_settings(case, setup, body=a.body), owned=True)
     ds.attrs["loaded_body"] = a.body
-    ds.attrs["depth"] = float(case.environment.depth)
+    ds.attrs["depth"] = float(case.environment.origin_depth())
     ds.attrs["interrupted"] = int(interrupted)
     _statics_attrs(ds, setup)
     return ds

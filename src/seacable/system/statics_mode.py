@@ -14,7 +14,8 @@ STIFFNESS_ANALYTIC = "analytic (catenary tangents)"
 
 
 def needs_fe(env, lines=None) -> str:
-    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed, a wind (its
+    """Why the catenary statics cannot model ``env`` ('' when they can): a current, a sloping seabed or a seabed
+    grid, a wind (its
     force on a body turns with the body's heading); and, given the system's ``lines`` ({name: SystemLine}), a line
     with sections (buoyancy modules, bend stiffeners), with ties to the seabed (clamps, tethers) or with an end held
     in bending (clamped, a rotational spring), which need the finite-element line's bending and its sections
@@ -26,6 +27,8 @@ def needs_fe(env, lines=None) -> str:
         why.append(f"a current of {max(abs(v) for v in speeds):g} m/s")
     if env.seabed.slope != 0:
         why.append(f"a seabed sloping at {env.seabed.slope:g} rad")
+    if env.seabed.grid is not None:
+        why.append("a seabed grid (environment.seabed.grid)")
     wind = getattr(env, "wind", None)
     if wind is not None and wind.speed > 0:
         why.append(f"a wind of {wind.speed:g} m/s on the bodies")

@@ -165,8 +165,8 @@ def _steady_guess(system: TowedSystem, top, flow):
     x = np.interp(s, res.s, res.x)
     z = np.interp(s, res.s, res.z)
     X = np.asarray(top, float) + x[:, None] * e[None, :] + z[:, None] * np.array([0.0, 0.0, 1.0])
-    if water.depth is not None or water.profile is not None:  # the shape without the seabed: held above it
-        X[:, 2] = np.maximum(X[:, 2], water.seabed_z(X[:, 0]) + 1e-3)
+    if water.depth is not None or water.tabulated:  # the shape without the seabed: held above it
+        X[:, 2] = np.maximum(X[:, 2], water.seabed_z(X[:, 0], X[:, 1]) + 1e-3)
     return X
 
 
@@ -219,7 +219,7 @@ def steady_start(system: TowedSystem, top, velocity) -> np.ndarray:
         f0 = flow(0.0)
         speed = float(np.hypot(f0[0], f0[1]))
         astern = np.array([f0[0] / speed, f0[1] / speed, 0.0]) if speed > 0.0 else np.array([1.0, 0.0, 0.0])
-        X = _hanging(net, top, float(water.seabed_z(np.asarray(top, float)[0])), astern)
+        X = _hanging(net, top, float(water.seabed_z(*np.asarray(top, float)[:2])), astern)
         for f in (0.25, 0.5, 0.75, 1.0) if np.any(v) else (1.0,):
             X = solve(X, f * v)
         return X

@@ -129,11 +129,13 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     p0, v0 = path(np.array([0.0]))  # a table too short fails below, before the run
     path(np.array([0.0, a.duration]))
     water = water_of(case)
-    floor = float(water.seabed_z(p0[0, 0]))
+    if water.grid is not None:  # the tow point's whole path over the grid (the line trails it: a margin astern)
+        water.grid.check_covers(path(np.linspace(0.0, a.duration, 201))[0], "tow point's path")
+    floor = float(water.seabed_z(p0[0, 0], p0[0, 1]))
     if p0[0, 2] < floor:
         raise InputError(f"the tow point starts {-p0[0, 2]:g} m deep, below the seabed at {-floor:g} m "
-                         "(environment.depth or seabed.profile). Suggested fix: check the vessel path's z and the "
-                         "depth.")
+                         "(environment.depth or seabed.profile or grid). Suggested fix: check the vessel path's z "
+                         "and the depth.")
     system = towed_system(case.line, p0[0], water, n_nodes=a.n_nodes, body=a.body,
                           tangential_drag=a.tangential_drag or "common")
     deployed = _checked_winch(a, system, case.line.length)
@@ -142,8 +144,10 @@ def prepare_towed_fe(case: Case) -> PreparedTowedFE:
     slots = net.n_nodes + math.ceil(max(0.0, longest - case.line.length) / system.element_length) + 2
     check_towed_size(case, slots, _PER_NODE)
     X0 = steady_start(system, p0[0], v0[0])
-    if env.depth is not None or water.profile is not None:
-        into = water.seabed_z(X0[:, 0]) - X0[:, 2]
+    if env.depth is not None or water.tabulated:
+        if water.grid is not None:
+            water.grid.check_covers(X0, "towed line's nodes at the start")
+        into = water.seabed_z(X0[:, 0], X0[:, 1]) - X0[:, 2]
         k = int(np.argmax(into))
         if into[k] > max(float(np.max(net.diameter)), 0.05):
             raise InputError(f"the steady start puts node {k} (s = {net.arc_length[k]:g} m) {into[k]:g} m into the "
@@ -244,9 +248,9 @@ def run_towed_fe(case: Case, prep: PreparedTowedFE, progress=None):
                               "the body and the attachments")
     water = prep.system.model.water
     depth = case.environment.depth
-    if depth is not None or water.profile is not None:
-        if water.profile is not None:  # the height above the profile under the node
-            height = pos[..., 2] - water.seabed_z(pos[..., 0])
+    if depth is not None or water.tabulated:
+        if water.tabulated:  # the height above the profile or the grid under the node
+            height = pos[..., 2] - water.seabed_z(pos[..., 0], pos[..., 1])
         else:
             height = -math.sin(water.slope) * pos[..., 0] + math.cos(water.slope) * (pos[..., 2] + depth)
         data["seabed_clearance"] = var("time", np.nanmin(height, axis=1), "m",

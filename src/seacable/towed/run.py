@@ -155,7 +155,20 @@ def prepare_towed_box(case: Case) -> PreparedTowed:
             f"{pos[j, 2]:.4g} m above the sea surface, and the box formulation weighs every node as immersed. "
             "Suggested fix: a heavier body or cable (less buoyancy), or formulation: finite_element, which weighs "
             "a node above the water at its dry weight.")
-    if depth is not None:
+    grid = _grid(case)
+    if grid is not None:  # the tow point's path and the start over the grid, the start above it
+        grid.check_covers(path(np.linspace(0.0, a.duration, 201))[0], "tow point's path")
+        grid.check_covers(pos, "towed line's nodes at the start")
+        into = grid.at(pos[:, 0], pos[:, 1])[0] - pos[:, 2]
+        j = int(np.argmax(into))
+        if into[j] > 0.0:
+            raise InputError(
+                f"the steady tow that starts the run puts node {j}{' (the towed body)' if j == 0 and body else ''} "
+                f"{into[j]:.4g} m below the seabed of environment.seabed.grid at x = {pos[j, 0]:.1f} m, y = "
+                f"{pos[j, 1]:.1f} m, and the box formulation has no seabed contact. Suggested fix: formulation: "
+                "finite_element (seabed contact), a shorter cable or a faster tow.")
+        depth = case.environment.origin_depth()
+    elif depth is not None:
         j = int(np.argmin(pos[:, 2]))
         if pos[j, 2] < -depth:
             raise InputError(
@@ -226,11 +239,13 @@ def run_towed_dynamic(case: Case, progress=None):
     data["surface_excursion"] = var("time", surface_excursion(res.time, pos[..., 2], analysis="towed_dynamic (box)"),
                                     "m", "highest node (the tow point left out) above the still water level "
                                     "(positive: out of the water, where the box scheme still weighs it as immersed)")
-    depth = case.environment.depth
+    grid = _grid(case)  # the grid's depth under each node
+    depth = case.environment.depth if grid is None else case.environment.origin_depth()
     if depth is not None:
         data["seabed_clearance"] = var("time", seabed_clearance(
             res.time, pos[..., 2], depth, analysis="towed_dynamic",
-            node_name=lambda j: f"node {j}" + ("" if j else " (the towed body)" if a.body else " (the lower end)")),
+            node_name=lambda j: f"node {j}" + ("" if j else " (the towed body)" if a.body else " (the lower end)"),
+            floor=None if grid is None else grid.at(pos[..., 0], pos[..., 1])[0]),
             "m", "least height of a node above the seabed (negative: below it; no seabed contact modelled)")
     data.update(motion_variables(prep.motion, res.time))
     coords = {"time": var("time", res.time, "s", "time"),
@@ -246,3 +261,11 @@ def run_towed_dynamic(case: Case, progress=None):
                       settings=settings)
     ds.attrs["interrupted"] = int(res.interrupted)
     return ds
+
+
+def _grid(case: Case):
+    """The case's seabed grid (:class:`seacable.bathymetry.SeabedGrid`), None without one."""
+    from ..bathymetry import cartesian_grid
+
+    bed = case.environment.seabed
+    return None if bed.grid is None else cartesian_grid(bed.grid)

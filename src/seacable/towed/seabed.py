@@ -39,7 +39,7 @@ def warn_depth_not_modelled(analysis: str, depth: float | None) -> None:
         SeacableWarning, stacklevel=3)
 
 
-def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None) -> np.ndarray:
+def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None, floor=None) -> np.ndarray:
     """Minimum height of the nodes above the seabed at each output time; warns if it is negative.
 
     Parameters
@@ -55,15 +55,18 @@ def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None) ->
         The analysis type, for the message.
     node_name
         Optional ``node_name(j) -> str`` describing node ``j`` (e.g. "node 0, the lower end").
+    floor
+        The seabed's elevation under each node instead of ``-depth`` (a grid's,
+        :class:`seacable.bathymetry.SeabedGrid`), shape (nt, nodes); ``depth`` then only names it. [m]
 
     Returns
     -------
     numpy.ndarray
-        ``min over nodes (z + depth)`` at each time, shape (nt,); negative where a node is below the
-        seabed. [m]
+        ``min over nodes (z + depth)`` (or ``z - floor``) at each time, shape (nt,); negative where a node is
+        below the seabed. [m]
     """
     z = np.asarray(z, float)
-    height = z + float(depth)
+    height = z + float(depth) if floor is None else z - np.asarray(floor, float)
     finite = np.isfinite(height)
     clearance = np.where(finite.any(axis=1), np.min(np.where(finite, height, np.inf), axis=1), np.nan)
     below = np.flatnonzero(clearance < 0)
@@ -72,9 +75,11 @@ def seabed_clearance(time, z, depth: float, *, analysis: str, node_name=None) ->
         j = int(np.nanargmin(height[i]))
         worst = int(np.nanargmin(clearance))
         name = node_name(j) if node_name is not None else f"node {j}"
+        at = f"{depth:g} m (environment.depth)" if floor is None else \
+            f"{-float(floor[i, j]):g} m (environment.seabed.grid)"
         warnings.warn(
             f"{analysis}: at t = {float(time[i]):g} s {name} is {-z[i, j]:g} m deep, below the seabed at "
-            f"{depth:g} m (environment.depth); this model has no seabed contact, so the line went on through "
+            f"{at}; this model has no seabed contact, so the line went on through "
             f"it (deepest: {-float(clearance[worst]):g} m below the seabed at t = {float(time[worst]):g} s). "
             "The result's 'seabed_clearance' is negative where a node is below the seabed. Suggested fix: "
             "a shorter or lighter line, a faster tow, or a model with seabed contact (mooring_dynamic).",

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ...bathymetry import cartesian_grid
 from ...case import SeabedContact
 from ...line import resolve_sections
 from ...mooring.motion import rotation_matrix
@@ -107,7 +108,7 @@ def _rot(six) -> np.ndarray:
 def _water(environment, analysis: SystemDynamicAnalysis | None) -> Water:
     contact = analysis.seabed_contact if analysis is not None else SeabedContact()
     alpha = analysis.rayleigh[0] if analysis is not None else 0.0
-    return water_of_environment(environment, contact, alpha)  # a plane seabed: a system refuses a profile
+    return water_of_environment(environment, contact, alpha)  # a plane or a grid: a system refuses a profile
 
 
 def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicAnalysis | None = None, *,
@@ -118,6 +119,8 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
     rho, g = environment.water_density, environment.gravity
     depth = environment.depth
     slope = environment.seabed.slope
+    # a seabed grid: each line's catenary start on the plane under its lower end along the line, lifted onto the grid
+    grid = None if environment.seabed.grid is None else cartesian_grid(environment.seabed.grid)
     a = analysis
     n_el = n_elements if n_elements is not None else (a.n_elements if a is not None else None)
     ratio, beta = (a.damping_ratio, a.rayleigh[1]) if a is not None else (0.0, 0.0)
@@ -193,23 +196,26 @@ def build_system_fe(system: MooringSystem, environment, analysis: SystemDynamicA
         lengths = np.array([seg.length for seg in line.segments])
         weights = np.array(line.weights(rho, g))
         ea = np.array([seg.line_type.effective_axial_stiffness() for seg in line.segments])
+        dl, sl_ = (depth, slope) if grid is None else grid.plane_under(*((xa, xb) if xa[2] <= xb[2] else (xb, xa)))
         rigid = sorted(((tie.s, np.asarray(p, float)) for tie, p in ties
                         if isinstance(tie, Clamp) and tie.stiffness is None), key=lambda held: held[0])
         if rigid:  # held at its rigid clamps too: the catenary start of each piece between them (as a single line's)
             from ...mooring.run import _start_positions
 
             shape = _start_positions([(0.0, xa)] + rigid + [(float(s[-1]), xb)], s, lengths, weights, ea,
-                                     line.point_loads(rho, g), depth=depth, slope=slope, buoyant=buoyant)
+                                     line.point_loads(rho, g), depth=dl, slope=sl_, buoyant=buoyant)
             inner = sub.kind == FIXED
             shape[inner] = sub.position[inner]
         elif xa[2] <= xb[2]:
             shape = catenary_positions(xa, xb, s, lengths, weights, ea, point_loads=line.point_loads(rho, g),
-                                       depth=depth, slope=slope, buoyant=buoyant)
+                                       depth=dl, slope=sl_, buoyant=buoyant)
         else:
             L = s[-1]
             rev = [(L - ps, w) for ps, w in line.point_loads(rho, g)][::-1]
             shape = catenary_positions(xb, xa, L - s, lengths[::-1], weights[::-1], ea[::-1], point_loads=rev,
-                                       depth=depth, slope=slope, buoyant=buoyant)
+                                       depth=dl, slope=sl_, buoyant=buoyant)
+        if grid is not None:
+            shape = grid.lift(shape)
         ids = np.empty(n, np.int64)
         for j, (end, at) in enumerate(((0, 0), (1, n - 1))):
             pname = ends[end]

@@ -53,7 +53,7 @@ import numpy as np
 from ...errors import ConvergenceError, InputError, SeacableWarning
 from ...mooring import kernel as MK
 from ...mooring.friction import SLIDE_FACTOR, _active
-from ...mooring.outputs import line_end_forces
+from ...mooring.outputs import height_above_seabed, line_end_forces
 from ..statics_mode import STIFFNESS_ANALYTIC, STIFFNESS_FD, needs_fe
 from .model import EquilibriumFields, euler, rotation
 
@@ -120,6 +120,8 @@ def _on_seabed(model, X) -> np.ndarray:
     w = model.water
     if w.depth is None:
         return np.zeros(X.shape[0], bool)
+    if w.grid is not None:  # the grid's cell under each node, along its normal
+        return -height_above_seabed(w, X) > -model.env[MK.E_BEDRAMP]
     sl = w.slope
     pen = -(-math.sin(sl) * X[:, 0] + math.cos(sl) * (X[:, 2] + w.depth))
     return pen > -model.env[MK.E_BEDRAMP]

@@ -170,6 +170,10 @@ def check_environment(env: Environment) -> None:
         raise InputError(f"environment.seabed.slope = {env.seabed.slope:g} rad is not supported by the system "
                          "catenary statics: their seabed is horizontal. Suggested fix: use slope 0, or leave "
                          "analysis.statics at 'auto' (the system analyses then use the finite-element statics).")
+    if env.seabed.grid is not None:
+        raise InputError("environment.seabed.grid is not supported by the system catenary statics: their seabed is a "
+                         "horizontal plane. Suggested fix: leave analysis.statics at 'auto' (the system analyses then "
+                         "use the finite-element statics, whose contact follows the grid).")
 
 
 def assemble(system: MooringSystem, env: Environment, extra_cuts: dict | None = None,
