@@ -366,7 +366,7 @@ def test_vessel_motion_for_a_deck_with_a_coupled_body_moves_the_body(tmp_path):
         warnings.simplefilter("ignore", sc.SeacableWarning)
         assert main(["run", str(BODY_DECK), "--duration", "40", "--motion", str(motion_csv), "--time-step", "0.2",
                      "--output-interval", "1", "--no-plots", "-q", "-o", str(out)]) == 0
-    ds = xr.open_dataset(out)
+    ds = sc.read_netcdf(out)
     # the body's reference point is the motion, to the spline's exactness at its knots
     np.testing.assert_allclose(ds.body_position.sel(time=[0.0, 10.0, 30.0], body="body1").values[:, 0],
                                [0.0, 1.0, 2.0], atol=1e-9)
