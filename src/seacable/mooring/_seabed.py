@@ -22,20 +22,11 @@ def seabed_at(env, x):
         return -env[E_DEPTH] + t * x, t
     x0 = ENV_SIZE
     z0 = ENV_SIZE + m
-    if x <= env[x0]:
-        return env[z0], 0.0
-    if x >= env[x0 + m - 1]:
-        return env[z0 + m - 1], 0.0
-    lo, hi = 0, m - 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        if env[x0 + mid] <= x:
-            lo = mid
-        else:
-            hi = mid
-    slope = (env[z0 + hi] - env[z0 + lo]) / (env[x0 + hi] - env[x0 + lo])
-    return env[z0 + lo] + slope * (x - env[x0 + lo]), slope
-
+    i, f, inside = _cell(env, x0, m, x)
+    if not inside:  # level beyond the profile's ends
+        return env[z0 if f == 0.0 else z0 + m - 1], 0.0
+    slope = (env[z0 + i + 1] - env[z0 + i]) / (env[x0 + i + 1] - env[x0 + i])
+    return env[z0 + i] + slope * (x - env[x0 + i]), slope
 
 
 @njit(cache=True)
