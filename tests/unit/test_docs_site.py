@@ -148,7 +148,7 @@ def test_the_site_has_its_pages_and_asks_nothing_of_the_network(site):
     for page in ("index", "getting_started", "validation", "case_reference", "examples", "vocabulary", "api",
                  "models/towed", "models/laying", "models/modal", "models/towline", "models/mooring",
                  "models/systems", "models/cables", "models/lay_planning", "models/design", "models/units",
-                 "models/view3d"):
+                 "models/view3d", "models/seabed", "files"):
         assert (site / f"{page}.html").is_file(), page
     # MathJax is the site's own copy; no page loads a script, a style sheet or a font from elsewhere
     assert (site / "_static" / "mathjax" / "tex-chtml.js").is_file()
