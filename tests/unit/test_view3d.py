@@ -17,6 +17,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 import yaml
 
 import seacable as sc
@@ -163,6 +164,30 @@ def test_the_seabed_is_the_cases_flat_sloped_or_profile():
     # no depth known: no seabed drawn, the sea surface still is
     fig = _figure_json(_lines_result(nt=3))
     assert [d["name"] for d in fig["data"] if d["type"] == "surface"] == ["sea surface"]
+
+
+def test_a_seabed_grid_is_drawn_as_the_grid_with_land_left_open(tmp_path):
+    """A case's seabed grid (``environment.seabed.grid``) is drawn over the lines' box at the grid's own bilinear
+    elevations (here a saddle ``z = -100 + x y / 1e4``, which bilinear interpolation holds exactly), and a land
+    cell is a gap in the surface, not a plane at some depth."""
+    x, y = [-400.0, 0.0, 400.0], [-400.0, 0.0, 400.0]
+    depth = [[100.0 - a * b / 1e4 for a in x] for b in y]
+    bed = _seabed_surface(_figure_json(_lines_result(nt=3, case={
+        "environment": {"depth": 100.0, "seabed": {"grid": {"x": x, "y": y, "depth": depth}}}})))
+    bx, by, bz = _array(bed["x"]), _array(bed["y"]), _array(bed["z"])
+    assert bz.shape == bx.shape == by.shape and bz.size > 100
+    np.testing.assert_allclose(bz, -100.0 + bx * by / 1e4, rtol=0, atol=1e-9)
+    assert np.ptp(bz) > 5.0   # the saddle seen, not a plane
+    # a GEBCO-like file, elevation up, with land (5 m above the sea) at the corner (-400, -400): no seabed drawn
+    # over its cell
+    elevation = -np.array(depth)
+    elevation[0, 0] = 5.0
+    path = tmp_path / "grid.nc"
+    xr.Dataset({"elevation": (("y", "x"), elevation)}, coords={"x": x, "y": y}).to_netcdf(path)
+    bed = _seabed_surface(_figure_json(_lines_result(nt=3, case={
+        "environment": {"depth": 100.0, "seabed": {"grid": {"file": str(path)}}}})))
+    bx, by, bz = _array(bed["x"]), _array(bed["y"]), _array(bed["z"])
+    assert np.all(np.isnan(bz[(bx < 0.0) & (by < 0.0)])) and np.all(np.isfinite(bz[(bx > 0.0) | (by > 0.0)]))
 
 
 def test_the_lays_seabed_and_the_ship_are_drawn():

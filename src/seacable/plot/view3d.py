@@ -4,7 +4,7 @@ The lines of any result with a shape (``static``, ``towed_steady``, ``modal``, `
 ``system_dynamic``, ``towed_dynamic``, ``laying_dynamic``, ``towline_dynamic``) are drawn in 3-D, Z up, coloured by
 their tension
 (kN, one colour bar), over the sea surface (z = 0) and the seabed the result knows: the case's flat or sloped
-plane or its profile along X, or the lay's seabed on its track or route. Bodies, vessels and the lay ship are
+plane, its profile along X or its seabed grid (land left open), or the lay's seabed on its track or route. Bodies, vessels and the lay ship are
 markers. A result with several states (output times, pushover offsets, system conditions) is animated: one
 frame a state, a slider and a play button; output times are decimated evenly to at most ``max_frames`` frames
 (the first and the last kept), so that a 3-hour run's page stays a few megabytes (plotly's own script is 4.8 MB
@@ -43,6 +43,9 @@ _ALONG = ("node", "point")
 _LINE = "line"
 #: the lines' colour scale (a perceptually uniform one, readable in grey)
 COLORSCALE = "Viridis"
+#: points along x and along y at which a seabed grid is drawn (bilinear between them)
+_GRID_SAMPLES = 41
+
 #: sea surface and seabed colours
 SEA = "rgb(70,130,180)"
 SEABED = "rgb(194,166,120)"
@@ -191,7 +194,8 @@ def _markers(ds, index: dict, nf: int) -> list:
 
 
 def _case_seabed(ds):
-    """(depth [m], slope [rad], profile (distance, depth) [m] or None) of the case stamped in the result, or None."""
+    """(depth [m], slope [rad], profile (distance, depth) [m] or None) of the case stamped in the result, its seabed
+    grid (:class:`seacable.bathymetry.SeabedGrid`), or None."""
     text = ds.attrs.get("case")
     if not text:
         return None
@@ -207,8 +211,14 @@ def _case_seabed(ds):
             bed = Seabed.model_validate(env.get("seabed") or {})
     except (yaml.YAMLError, AttributeError, TypeError, ValueError):
         return None  # a result written by another tool: no seabed drawn rather than no page
-    if bed.grid is not None:
-        return None  # a seabed grid is not drawn yet: none rather than the plane of its depth
+    if bed.grid is not None:  # a seabed grid (issue 41): drawn as it is (its file read again: a path may have moved)
+        from ..bathymetry import cartesian_grid
+        from ..errors import InputError
+
+        try:
+            return cartesian_grid(bed.grid)
+        except (InputError, OSError, ValueError):
+            return None
     profile = None if bed.profile is None else (np.asarray(bed.profile.distance), np.asarray(bed.profile.depth))
     depth = env.get("depth")
     if profile is None and depth is None:
@@ -266,6 +276,11 @@ def _seabed(ds, box) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
                 zs = np.interp(xs, bx, bz)
                 return np.stack([xs, xs], 1), np.tile([y0, y1], (xs.size, 1)), np.stack([zs, zs], 1)
     bed = _case_seabed(ds)
+    if bed is not None and not isinstance(bed, tuple):   # a seabed grid: sampled over the box (land NaN: a gap)
+        gx = np.linspace(max(x0, bed.x[0]), min(x1, bed.x[-1]), _GRID_SAMPLES)
+        gy = np.linspace(max(y0, bed.y[0]), min(y1, bed.y[-1]), _GRID_SAMPLES)
+        X, Y = np.meshgrid(gx, gy, indexing="ij")
+        return X, Y, bed.at(X, Y)[0]
     if bed is None:
         if "seabed_z" in ds.variables and ds["seabed_z"].ndim == 0:
             depth, slope, profile = -float(ds["seabed_z"].values), 0.0, None
