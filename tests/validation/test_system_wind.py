@@ -7,7 +7,6 @@ The spread mooring of ``examples/spread_mooring.yaml`` (a buoy on three chains) 
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
