@@ -31,7 +31,7 @@ from .errors import InputError
 from .laying.inputs import (Bathymetry, LayTableFile, LayTarget, Payout, PayoutBottomTension, PayoutSlack,
                              PlanShip, ShipMotion, read_lay_table)
 from .laying.route import Route
-from .line import STAND_IN, Line, LineType, resolve_sections, retyped_changes
+from .line import STAND_IN, Line, LineType, RetypedCopies, resolve_sections
 from .mooring.ends import EndCondition
 from .mooring.friction import StaticFriction, StaticFrictionOption
 from .mooring.motion import Motion
@@ -786,7 +786,7 @@ Analysis = Annotated[Union[ANALYSES], Field(discriminator="type")]  # noqa: UP00
 UNION_TAGS.update(cls.model_fields["type"].default for cls in ANALYSES)
 
 
-class Case(Model):
+class Case(RetypedCopies, Model):
     """A line, its environment and an analysis.
 
     Parameters
@@ -838,14 +838,6 @@ class Case(Model):
         if problems:
             raise input_error(problems, root)
         return case
-
-    def replace(self, **changes: Any) -> Case:
-        """A copy with some fields changed, validated again; new ``line_types`` reach the line's segments."""
-        return super().replace(**retyped_changes(self, changes))
-
-    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False) -> Case:
-        """Pydantic's copy (``update`` not validated), with new ``line_types`` reaching the line(s) as in :meth:`replace`."""
-        return super().model_copy(update=retyped_changes(self, update) if update else update, deep=deep)
 
     @model_validator(mode="before")
     @classmethod

@@ -23,7 +23,7 @@ from .moment_curvature import check_table
 from .sections import BendRestrictor, BendStiffener, BuoyancySection, Section, smeared_line_type
 from .ties import Clamp, Tether
 
-__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "resolve_sections", "retyped_changes"]
+__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "RetypedCopies", "resolve_sections", "retyped_changes"]
 
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81
@@ -529,6 +529,19 @@ def retyped_changes(case, changes: dict) -> dict:
         return {**changes, "lines": {name: entry.replace(line=_retyped(entry.line, old, new, f"lines.{name}"))
                                      for name, entry in case.lines.items()}}
     return changes
+
+
+class RetypedCopies:
+    """The copies of a case that holds named ``line_types`` and a line (or lines) made of them (a
+    :class:`~seacable.case.Case`, a system's case): new ``line_types`` reach the line(s) (:func:`retyped_changes`)."""
+
+    def replace(self, **changes):
+        """A copy with some fields changed, validated again; new ``line_types`` reach the line(s)' segments."""
+        return super().replace(**retyped_changes(self, changes))
+
+    def model_copy(self, *, update=None, deep: bool = False):
+        """Pydantic's copy (``update`` not validated), new ``line_types`` reaching the line(s) as in :meth:`replace`."""
+        return super().model_copy(update=retyped_changes(self, update) if update else update, deep=deep)
 
 
 def _check_tie(i: int, tie, total: float, held: dict) -> None:

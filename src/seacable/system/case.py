@@ -44,7 +44,7 @@ from .._window import StatisticsWindow, omit_unset_window
 from ..case import CableDesign, SeabedContact, check_unused_inputs
 from ..environment import SystemEnvironment, seabed_elevation
 from ..errors import InputError
-from ..line import STAND_IN, LineType, retyped_changes
+from ..line import STAND_IN, LineType, RetypedCopies
 from ..mooring.friction import StaticFriction, StaticFrictionOption
 from ..mooring.motion import Motion, PlatformMotion, RAOMotion
 from ..ties import tie_points
@@ -412,7 +412,7 @@ def _line_entry(entry: Any, types: Any, where: str) -> Any:
     return {**entry, "line": line}
 
 
-class SystemCase(Model):
+class SystemCase(RetypedCopies, Model):
     """A mooring system, its environment and an analysis.
 
     Parameters
@@ -467,14 +467,6 @@ class SystemCase(Model):
         if problems:
             raise input_error(problems, root)
         return case
-
-    def replace(self, **changes: Any) -> SystemCase:
-        """A copy with some fields changed, validated again; new ``line_types`` reach the lines' segments."""
-        return super().replace(**retyped_changes(self, changes))
-
-    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False) -> SystemCase:
-        """Pydantic's copy (``update`` not validated), with new ``line_types`` reaching the line(s) as in :meth:`replace`."""
-        return super().model_copy(update=retyped_changes(self, update) if update else update, deep=deep)
 
     @model_validator(mode="before")
     @classmethod
