@@ -28,7 +28,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._cf import matrix_variables
 from .._limits import check_run_size
 from ..errors import ConvergenceError, InputError, NoSolutionError
 from .case import SystemCase, SystemOffsetsAnalysis, SystemStaticAnalysis
@@ -749,6 +748,8 @@ def run_system_static(case: SystemCase, statics: str | None = None):
     values = _stack(records, (nc,))
     _warn_breaking(case, values, f"system_static case '{case.name}'")
     data = _variables(values, ("condition",), _VARIABLES)
+    from .._cf import matrix_variables  # here: _cf imports xarray, which 'validate' (this module's checks) needs not
+
     for name, (dims, _, long) in _MATRICES.items():  # a block per unit (CF): seacable._cf.matrix_variables
         if name in values:
             data.update(matrix_variables(name, ("condition",) + dims, values[name], DOFS, DOFS, long))
