@@ -1,18 +1,19 @@
 """A system case's bodies as MoorDyn v2 ``BODIES`` rows, for ``seacable convert case.yaml -o deck.txt``.
 
 MoorDyn's body [1]_ is a rigid body with a mass, a centre of gravity, three moments of inertia, a displaced volume
-whose buoyancy acts at the reference point, drag areas and added-mass coefficients per axis; points on it
+whose buoyancy acts at the centre of gravity (MoorDyn v2's
+``Body::doRHS`` puts the body's ``(V rho - M) g`` there), drag areas and added-mass coefficients per axis; points on it
 (``Body<N>``) move with it. seacable's deck reader (:func:`seacable.io.moordyn.moordyn_system`) reads such a row into
 a :class:`~seacable.system.model.Body` so (``rho`` the water density)::
 
     added_mass[i][i] = Ca_i rho V  (i = surge, sway, heave; nothing else)
     quadratic_damping[i][i] = rho CdA_i / 2  (i = the six degrees of freedom; nothing else)
-    center_of_buoyancy = (0, 0, 0), waterplane_area = 0, waterplane_moments = (0, 0)
+    center_of_buoyancy = center_of_gravity, waterplane_area = 0, waterplane_moments = (0, 0)
 
 and a point on the body's mass and volume are lumped into the body's. :func:`deck_bodies` writes the inverse, so
 the deck reads back to the same body, and refuses by name what a body row cannot hold: a hydrodynamic database, a
 waterplane or a hydrostatic stiffness matrix (a MoorDyn body has no hydrostatic stiffness: its buoyancy is the
-volume's, at the reference point), a centre of buoyancy off the reference point, wind or current areas, a linear
+volume's, at the centre of gravity), a centre of buoyancy off the centre of gravity, wind or current areas, a linear
 damping matrix, a quadratic damping or added mass off the diagonal (or rotational added mass), a constant external
 force, a free body pinned (MoorDyn pins rods, not bodies), and a point on a body with its own mass, volume or added
 mass.
@@ -57,17 +58,18 @@ def _body_row(number: int, name: str, body, rho: float) -> str:
                 "has no radiation, wave excitation nor hydrostatics of its own)")
     if body.hydrostatic_stiffness is not None:
         _refuse(f"{label} has a hydrostatic_stiffness matrix",
-                "leave it out: a MoorDyn body has no hydrostatic stiffness, only the buoyancy of its volume at the "
-                "reference point")
+                "leave it out: a MoorDyn body has no hydrostatic stiffness, only the buoyancy of its volume at its "
+                "centre of gravity")
     if body.waterplane_area or any(body.waterplane_moments):
         _refuse(f"{label} has a waterplane (waterplane_area {body.waterplane_area:g} m^2, waterplane_moments "
                 f"{tuple(body.waterplane_moments)} m^4)",
                 "set them to 0: a MoorDyn body has no waterplane and no hydrostatic stiffness, only the buoyancy of "
-                "its volume at the reference point (a surface-piercing body needs a rod on it, written by hand)")
-    if body.volume > 0 and any(body.center_of_buoyancy):
-        _refuse(f"{label} has its centre of buoyancy at {tuple(body.center_of_buoyancy)} m from its reference point",
-                "put the reference point at the centre of buoyancy (shift position, center_of_gravity and the "
-                "points on the body by the same vector): a MoorDyn body's buoyancy acts at its reference point")
+                "its volume at its centre of gravity (a surface-piercing body needs a rod on it, written by hand)")
+    if body.volume > 0 and tuple(body.center_of_buoyancy) != tuple(body.center_of_gravity):
+        _refuse(f"{label} has its centre of buoyancy at {tuple(body.center_of_buoyancy)} m, its centre of gravity at "
+                f"{tuple(body.center_of_gravity)} m",
+                "give both the same point: a MoorDyn body's buoyancy acts at its centre of gravity (MoorDyn v2 "
+                "applies (V rho - M) g there), so a body whose buoyancy rights it needs a rod on it, written by hand")
     for key in ("wind", "current"):
         if getattr(body, key) is not None:
             _refuse(f"{label} has {key} areas", f"leave out the body's '{key}' (a MoorDyn body takes no {key} load)")

@@ -178,7 +178,8 @@ bodies:
   buoy:
     position: [0.3, -0.2, -20.0, 0.02, -0.03, 0.1]
     mass: 2000.0
-    center_of_gravity: [0.4, -0.2, -1.0]
+    center_of_gravity: [0.4, -0.2, 1.0]
+    center_of_buoyancy: [0.4, -0.2, 1.0]
     inertia: [20000.0, 25000.0, 15000.0]
     volume: 12.0
     added_mass: [[12300.0, 0, 0, 0, 0, 0], [0, 12300.0, 0, 0, 0, 0], [0, 0, 6150.0, 0, 0, 0], [0, 0, 0, 0, 0, 0],
@@ -250,7 +251,8 @@ def test_a_free_body_converts_to_a_deck_that_reads_back_to_the_same_system(tmp_p
                                                                  "stiffness"),
     (lambda d: d["bodies"]["buoy"].update(hydrostatic_stiffness=[[0.0] * 6] * 5 + [[0.0] * 5 + [1.0]]),
      "hydrostatic_stiffness matrix"),
-    (lambda d: d["bodies"]["buoy"].update(center_of_buoyancy=[0.0, 0.0, -0.5]), "centre of buoyancy"),
+    (lambda d: d["bodies"]["buoy"].update(center_of_buoyancy=[0.4, -0.2, 0.5]), "centre of buoyancy.*centre of "
+                                                                                 "gravity"),
     (lambda d: d["bodies"]["buoy"].update(linear_damping=[[1.0] * 6] * 6), "linear_damping"),
     (lambda d: d["bodies"]["buoy"]["quadratic_damping"][0].__setitem__(1, 10.0), "off its diagonal"),
     (lambda d: d["bodies"]["buoy"]["added_mass"][3].__setitem__(3, 10.0), "added mass in rotation"),
