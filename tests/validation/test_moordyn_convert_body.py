@@ -113,10 +113,10 @@ def _case(tmp_path, data=None):
 
 def test_moordyn_holds_the_converted_free_body_where_seacable_finds_its_statics(tmp_path):
     """The pads MoorDyn holds agree with seacable's equilibrium to 2e-3 m, the fairlead tensions to 1e-3. Measured:
-    the pads' mean position within 1e-4 m (MoorDyn's initial condition converges to 1.3e-4 m/s^2 and leaves a heave
-    oscillation of 4e-4 m standard deviation, which 2e-3 m covers five times), the tensions within 1e-5. A CG with
-    its z sign wrong, or a pad written at its global place instead of relative to the body, takes MoorDyn's buoy
-    decimetres away (it rolls over, or sinks 20 m), so these fail."""
+    the pads' mean position within 1.1e-4 m (MoorDyn's initial condition converges to 1.3e-4 m/s^2 and leaves a
+    heave oscillation of 4e-4 m standard deviation, which 2e-3 m covers five times), the tensions within 3.5e-6.
+    Planted in the converter, a CG's z sign wrong moves a pad 1.26 m, its x sign 0.36 m, and a pad written at its
+    global depth instead of relative to the body 0.92 m: each fails."""
     case = _case(tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", sc.SeacableWarning)
