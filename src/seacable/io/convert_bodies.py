@@ -35,10 +35,10 @@ from ..errors import InputError
 __all__ = ["BODY_HEADER", "body_point_attachment", "deck_bodies"]
 
 #: the BODIES section's two header lines
-BODY_HEADER = ("ID   Attachment X0           Y0           Z0           r0         p0         y0         Mass       "
-               "CG*                  I*                   Volume     CdA*                                Ca*",
-               "(#)  (-)        (m)          (m)          (m)          (deg)      (deg)      (deg)      (kg)       "
-               "(m)                  (kg-m^2)             (m^3)      (m^2)                               (-)")
+BODY_HEADER = (("ID   Attachment X0           Y0           Z0           r0         p0         y0         Mass       "
+                "CG*                  I*                   Volume     CdA*                                Ca*"),
+               ("(#)  (-)        (m)          (m)          (m)          (deg)      (deg)      (deg)      (kg)       "
+                "(m)                  (kg-m^2)             (m^3)      (m^2)                               (-)"))
 
 
 def _refuse(what: str, fix: str):

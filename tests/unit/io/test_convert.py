@@ -247,12 +247,12 @@ def test_a_free_body_converts_to_a_deck_that_reads_back_to_the_same_system(tmp_p
 
 
 @pytest.mark.parametrize("edit, expected", [
-    (lambda d: d["bodies"]["buoy"].update(waterplane_area=3.0), "has a waterplane.*no waterplane and no hydrostatic "
-                                                                 "stiffness"),
+    (lambda d: d["bodies"]["buoy"].update(waterplane_area=3.0),
+     "has a waterplane.*no waterplane and no hydrostatic stiffness"),
     (lambda d: d["bodies"]["buoy"].update(hydrostatic_stiffness=[[0.0] * 6] * 5 + [[0.0] * 5 + [1.0]]),
      "hydrostatic_stiffness matrix"),
-    (lambda d: d["bodies"]["buoy"].update(center_of_buoyancy=[0.4, -0.2, 0.5]), "centre of buoyancy.*centre of "
-                                                                                 "gravity"),
+    (lambda d: d["bodies"]["buoy"].update(center_of_buoyancy=[0.4, -0.2, 0.5]),
+     "centre of buoyancy.*centre of gravity"),
     (lambda d: d["bodies"]["buoy"].update(linear_damping=[[1.0] * 6] * 6), "linear_damping"),
     (lambda d: d["bodies"]["buoy"]["quadratic_damping"][0].__setitem__(1, 10.0), "off its diagonal"),
     (lambda d: d["bodies"]["buoy"]["added_mass"][3].__setitem__(3, 10.0), "added mass in rotation"),
