@@ -9,10 +9,14 @@ statics ``seacable run`` gives it. What the deck sets and a case file has no pla
 initial-condition settings, the axial damping BA, the soft seabed kBot/cBot, the output channels) is listed in
 comments at the top of the file.
 
-Case -> deck (:func:`case_to_deck`): a ``SystemCase``'s line types, points and lines as a MoorDyn v2 deck (points
-numbered 1, 2, ... in the case's order; line ``<i>`` in its order; the outputs FairTen and AnchTen of every line).
-Refused, each with what to change: bodies (MoorDyn's body is a 6-DOF point mass: seacable's bodies carry waterplanes,
-hydrodynamic databases and loads a deck cannot hold), lines of several sections or with attachments (clump weights,
+Case -> deck (:func:`case_to_deck`): a ``SystemCase``'s line types, bodies, points and lines as a MoorDyn v2 deck
+(bodies and points numbered 1, 2, ... in the case's order, a point on a body ``Body<N>`` at its position in body axes;
+line ``<i>`` in its order; the outputs FairTen and AnchTen of every line). A body is a MoorDyn body row
+(:mod:`seacable.io.convert_bodies`: mass, centre of gravity, inertia, volume, drag areas, added mass; free, fixed,
+prescribed as Coupled) when it has nothing a row cannot hold. Refused, each with what to change: a body's
+hydrodynamic database, waterplane or hydrostatic stiffness (MoorDyn bodies have none), centre of buoyancy off its
+reference point, wind or current areas, damping or added mass a row cannot hold, external force (the module says
+which), lines of several sections or with attachments (clump weights,
 buoyancy modules), ends held in bending, line types with a weight in water of their own or a nonlinear or
 viscoelastic EA, points with an external force, and an environment with current, waves, wind or a sloping seabed.
 The deck's time step ``dtM`` is a tenth of the shortest segment's axial wave time; ``threshIC`` 1e-7 (``TmaxIC``
@@ -35,6 +39,7 @@ import yaml
 
 from .._atomic import atomic_write
 from ..errors import InputError
+from .convert_bodies import BODY_HEADER, body_point_attachment, deck_bodies
 
 __all__ = ["case_to_deck", "convert", "deck_to_yaml"]
 
@@ -224,11 +229,7 @@ def case_to_deck(case) -> str:
                 "write it as a system case (points, lines) to convert it to a MoorDyn deck")
     env = case.environment
     rho, g = env.water_density, env.gravity
-    if case.bodies:
-        _refuse(f"case '{case.name}' has bodies ({', '.join(case.bodies)}): a seacable body's waterplane, "
-                "hydrodynamic database and loads have no place in a MoorDyn body row",
-                "convert the lines and points alone (their fairleads as coupled points), or write the bodies into "
-                "the deck by hand")
+    rows_bodies, body_number = deck_bodies(case)
     cur = env.current
     if getattr(cur, "speed", 0.0) or getattr(cur, "speeds", None):
         _refuse("environment.current", "remove the current (MoorDyn takes currents from its own water-kinematics "
@@ -267,9 +268,8 @@ def case_to_deck(case) -> str:
         if any(p.external_force):
             _refuse(f"point '{name}' has an external force {tuple(p.external_force)} N",
                     "leave out external_force (MoorDyn's 12-column POINTS layout is MoorDyn-F's only)")
-        kind = {"fixed": "Fixed", "coupled": "Coupled", "free": "Free"}.get(p.kind)
-        if kind is None:
-            _refuse(f"point '{name}' is on body '{p.body}'", "give the point as coupled or fixed")
+        kind = ({"fixed": "Fixed", "coupled": "Coupled", "free": "Free"}.get(p.kind)
+                or body_point_attachment(name, p, body_number))
         ca = p.added_mass / (rho * p.volume) if p.volume > 0 else 0.0
         if p.added_mass > 0 and not p.volume > 0:
             _refuse(f"point '{name}' has added_mass {p.added_mass:g} kg and no volume: MoorDyn's Ca is per displaced "
@@ -296,6 +296,7 @@ def case_to_deck(case) -> str:
             "TypeName     Diam       Mass/m     EA             BA/-zeta EI         Cd     Ca     CdAx   CaAx",
             "(name)       (m)        (kg/m)     (N)            (N-s/-)  (N-m^2)    (-)    (-)    (-)    (-)",
             *(_deck_line_type(n, lt, rho, g) for n, lt in types.items()),
+            *([f"{rule} BODIES {rule}", *BODY_HEADER, *rows_bodies] if rows_bodies else []),
             f"{rule} POINTS {rule}",
             "ID   Attachment X            Y            Z            Mass       Volume     CdA        Ca",
             "(#)  (-)        (m)          (m)          (m)          (kg)       (m^3)      (m^2)      (-)",

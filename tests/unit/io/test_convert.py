@@ -4,9 +4,11 @@ MoorDyn can express, and the refusals. MoorDyn's own run of the converted decks 
 
 from __future__ import annotations
 
+import re
 import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 
@@ -119,8 +121,8 @@ def test_deck_with_bodies_converts_and_the_case_keeps_its_bodies(tmp_path):
     assert "statics" not in data["analysis"]  # the system statics 'seacable run body.txt' runs
     case_file = tmp_path / "body.yaml"
     case_file.write_text(text, encoding="utf-8")
-    with pytest.raises(InputError, match=r"bodies \(body1\).*MoorDyn cannot express it\. Suggested fix"):
-        case_to_deck(sc.load_case(case_file))
+    back = load_moordyn_case_quietly(case_to_deck(sc.load_case(case_file)), tmp_path)
+    assert back.data.bodies[0].attachment == "coupled" and back.data.points[3].attachment == "body"
 
 
 @pytest.mark.parametrize("edit, expected", [
@@ -163,3 +165,108 @@ def test_convert_bad_input_is_one_clear_line(source, output, expected, deck, tmp
     assert main(["convert", str(paths[source]), "-o", str(tmp_path / output)]) == 2
     err = capsys.readouterr().err
     assert err.count("seacable: error:") == 1 and expected in err and "Traceback" not in err
+
+
+# ------------------------------------------------------------------------------------------------ bodies
+
+_BODY_CASE = """
+name: subsurface_buoy
+line_types:
+  chain: {diameter: 0.1, mass_per_length: 50.0, axial_stiffness: 1.0e8}
+environment: {depth: 50.0}
+bodies:
+  buoy:
+    position: [0.3, -0.2, -20.0, 0.02, -0.03, 0.1]
+    mass: 2000.0
+    center_of_gravity: [0.4, -0.2, 1.0]
+    center_of_buoyancy: [0.4, -0.2, 1.0]
+    inertia: [20000.0, 25000.0, 15000.0]
+    volume: 12.0
+    added_mass: [[12300.0, 0, 0, 0, 0, 0], [0, 12300.0, 0, 0, 0, 0], [0, 0, 6150.0, 0, 0, 0], [0, 0, 0, 0, 0, 0],
+                 [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0]]
+    quadratic_damping: [[5000.0, 0, 0, 0, 0, 0], [0, 5000.0, 0, 0, 0, 0], [0, 0, 8000.0, 0, 0, 0],
+                        [0, 0, 0, 40000.0, 0, 0], [0, 0, 0, 0, 40000.0, 0], [0, 0, 0, 0, 0, 20000.0]]
+points:
+  anchor1: {kind: fixed, position: [-100.0, 0.0, -50.0]}
+  anchor2: {kind: fixed, position: [50.0, 86.6, -50.0]}
+  anchor3: {kind: fixed, position: [50.0, -86.6, -50.0]}
+  pad1: {kind: body, body: buoy, position: [-1.0, 0.0, -0.5]}
+  pad2: {kind: body, body: buoy, position: [0.5, 0.866, -0.5]}
+  pad3: {kind: body, body: buoy, position: [0.5, -0.866, -0.5]}
+lines:
+  line1: {line_type: chain, length: 106.0, end_a: anchor1, end_b: pad1, n_elements: 8}
+  line2: {line_type: chain, length: 104.0, end_a: anchor2, end_b: pad2, n_elements: 8}
+  line3: {line_type: chain, length: 105.0, end_a: anchor3, end_b: pad3, n_elements: 8}
+analysis: {type: system_static, statics: finite_element}
+"""
+
+
+def load_moordyn_case_quietly(text, folder, name="back.txt"):
+    path = Path(folder) / name
+    path.write_text(text, encoding="utf-8")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sc.SeacableWarning)
+        return load_moordyn_case(path)
+
+
+def _body_case(tmp_path, edit=None):
+    data = yaml.safe_load(_BODY_CASE)
+    if edit is not None:
+        edit(data)
+    path = tmp_path / "buoy.yaml"
+    path.write_text(yaml.safe_dump(data), encoding="utf-8")
+    return sc.load_case(path)
+
+
+def test_a_free_body_converts_to_a_deck_that_reads_back_to_the_same_system(tmp_path):
+    """case -> deck -> case: the body (mass, CG, inertia, volume, added mass, drag, a turned pose) and the points on
+    it come back as they were (names aside: MoorDyn numbers them), and the statics of both cases agree. The only
+    change is the pose's angles through degrees and back (1 ulp), so the body's equilibrium agrees to the Newton
+    tolerance (1e-8, the statics' own); a CG sign or a point's body-relative position written wrong moves the
+    equilibrium by centimetres and fails."""
+    case = _body_case(tmp_path)
+    back = load_moordyn_case_quietly(case_to_deck(case), tmp_path).system_case()
+    body, again = case.bodies["buoy"], back.bodies["body1"]
+    assert again.kind == "free"
+    for key in ("mass", "volume", "center_of_gravity", "inertia", "added_mass", "quadratic_damping",
+                "center_of_buoyancy", "external_force"):
+        np.testing.assert_allclose(np.asarray(getattr(again, key), float), np.asarray(getattr(body, key), float),
+                                   rtol=1e-12, atol=1e-12, err_msg=key)  # through repr and back: exact but Ca, CdA
+    assert again.position == pytest.approx(body.position, rel=1e-14, abs=1e-15)  # angles through degrees
+    for k, name in enumerate(("pad1", "pad2", "pad3"), start=4):
+        assert back.points[f"point{k}"].body == "body1"
+        assert back.points[f"point{k}"].position == case.points[name].position
+    back = back.model_copy(update={"analysis": case.analysis})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sc.SeacableWarning)
+        ours, theirs = sc.run(case), sc.run(back)
+    for key in ("x", "y", "z", "roll", "pitch", "yaw"):
+        a, b = float(ours[f"body_{key}"].values.ravel()[0]), float(theirs[f"body_{key}"].values.ravel()[0])
+        assert b == pytest.approx(a, rel=1e-8, abs=1e-8), key
+    assert theirs.fairlead_tension.values == pytest.approx(ours.fairlead_tension.values, rel=1e-8)
+
+
+@pytest.mark.parametrize("edit, expected", [
+    (lambda d: d["bodies"]["buoy"].update(waterplane_area=3.0),
+     "has a waterplane.*no waterplane and no hydrostatic stiffness"),
+    (lambda d: d["bodies"]["buoy"].update(hydrostatic_stiffness=[[0.0] * 6] * 5 + [[0.0] * 5 + [1.0]]),
+     "hydrostatic_stiffness matrix"),
+    (lambda d: d["bodies"]["buoy"].update(center_of_buoyancy=[0.4, -0.2, 0.5]),
+     "centre of buoyancy.*centre of gravity"),
+    (lambda d: d["bodies"]["buoy"].update(linear_damping=[[1.0] * 6] * 6), "linear_damping"),
+    (lambda d: d["bodies"]["buoy"]["quadratic_damping"][0].__setitem__(1, 10.0), "off its diagonal"),
+    (lambda d: d["bodies"]["buoy"]["added_mass"][3].__setitem__(3, 10.0), "added mass in rotation"),
+    (lambda d: d["bodies"]["buoy"].update(external_force=[1.0e3, 0, 0, 0, 0, 0]), "external force"),
+    (lambda d: d["bodies"]["buoy"].update(pinned=True), "free and pinned"),
+    (lambda d: d["bodies"]["buoy"].update(wind={"surge": [1.0], "sway": [1.0], "yaw": [0.0], "height": 5.0}),
+     "wind areas"),
+    (lambda d: (d["bodies"]["buoy"].pop("added_mass"), d["bodies"]["buoy"].update(
+        hydrodynamics={"file": str(ROOT / "examples" / "data" / "volturnus" / "IEA-15-240-RWT-UMaineSemi")})),
+     "hydrodynamic database"),
+    (lambda d: d["points"]["pad1"].update(mass=50.0), "point 'pad1' on body 'buoy' has mass 50 kg"),
+])
+def test_what_a_moordyn_body_cannot_hold_is_refused_by_name(edit, expected, tmp_path):
+    case = _body_case(tmp_path, edit)
+    with pytest.raises(InputError, match=r"MoorDyn cannot express it\. Suggested fix: ") as info:
+        case_to_deck(case)
+    assert re.search(expected, str(info.value)), str(info.value)

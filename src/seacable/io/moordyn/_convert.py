@@ -147,7 +147,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
       on a turbine are moved with its position (a rotated turbine carries points only).
     - bodies: free/fixed/coupled -> ``free``/``fixed``/``prescribed`` (CoupledPinned: prescribed
       and ``pinned``). Mass, centre of gravity and inertia as written; MoorDyn's body volume acts
-      at the reference point and bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
+      at the body's centre of gravity (MoorDyn v2's ``Body::doRHS`` puts ``(V rho - M) g`` there) and
+      bodies have no waterplane (buoyancy only). ``Ca rho V`` on the
       translations of ``added_mass``; ``rho CdA / 2`` on the diagonal of ``quadratic_damping``.
     - rods: a rod on body N (``BodyN``, and ``BodyNPinned``, taken as rigidly fixed there: the
       data model has no joint on a moving body, a SeacableWarning says so) adds its mass,
@@ -209,7 +210,8 @@ def moordyn_system(md: MoorDynInput, *, turbine_positions: dict | None = None):
                           volume=b.volume)
         r = _Rigid()
         r.add_mass(b.mass, b.center_of_gravity, np.diag(b.inertia))
-        r.add_volume(b.volume, (0.0, 0.0, 0.0))  # MoorDyn: the body's buoyancy acts at its reference point
+        # MoorDyn v2 (Body::doRHS): the body's own weight and buoyancy, (V rho - M) g, act together at its CG
+        r.add_volume(b.volume, b.center_of_gravity)
         rigid[name] = r
 
     rod_end_points: dict[tuple[int, str], str] = {}
