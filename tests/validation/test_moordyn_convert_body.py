@@ -31,36 +31,7 @@ from seacable.io.convert import case_to_deck
 
 moordyn = pytest.importorskip("moordyn")
 
-_CASE = """
-name: subsurface_buoy
-line_types:
-  chain: {diameter: 0.1, mass_per_length: 50.0, axial_stiffness: 1.0e8}
-environment: {depth: 50.0}
-bodies:
-  buoy:
-    position: [0.0, 0.0, -20.0, 0.0, 0.0, 0.0]
-    mass: 2000.0
-    center_of_gravity: [0.4, -0.2, 1.0]
-    center_of_buoyancy: [0.4, -0.2, 1.0]
-    inertia: [20000.0, 25000.0, 15000.0]
-    volume: 12.0
-    added_mass: [[12300.0, 0, 0, 0, 0, 0], [0, 12300.0, 0, 0, 0, 0], [0, 0, 6150.0, 0, 0, 0], [0, 0, 0, 0, 0, 0],
-                 [0, 0, 0, 0, 0, 0], [0, 0, 0, 0, 0, 0]]
-    quadratic_damping: [[5000.0, 0, 0, 0, 0, 0], [0, 5000.0, 0, 0, 0, 0], [0, 0, 8000.0, 0, 0, 0],
-                        [0, 0, 0, 40000.0, 0, 0], [0, 0, 0, 0, 40000.0, 0], [0, 0, 0, 0, 0, 20000.0]]
-points:
-  anchor1: {kind: fixed, position: [-100.0, 0.0, -50.0]}
-  anchor2: {kind: fixed, position: [50.0, 86.6, -50.0]}
-  anchor3: {kind: fixed, position: [50.0, -86.6, -50.0]}
-  pad1: {kind: body, body: buoy, position: [-1.0, 0.0, -0.5]}
-  pad2: {kind: body, body: buoy, position: [0.5, 0.866, -0.5]}
-  pad3: {kind: body, body: buoy, position: [0.5, -0.866, -0.5]}
-lines:
-  line1: {line_type: chain, length: 106.0, end_a: anchor1, end_b: pad1, n_elements: 8}
-  line2: {line_type: chain, length: 104.0, end_a: anchor2, end_b: pad2, n_elements: 8}
-  line3: {line_type: chain, length: 105.0, end_a: anchor3, end_b: pad3, n_elements: 8}
-analysis: {type: system_static, statics: finite_element}
-"""
+_CASE = (Path(__file__).parents[1] / "data" / "subsurface_buoy.yaml").read_text(encoding="utf-8")
 
 _PADS = ("pad1", "pad2", "pad3")
 
