@@ -23,7 +23,8 @@ from .moment_curvature import check_table
 from .sections import BendRestrictor, BendStiffener, BuoyancySection, Section, smeared_line_type
 from .ties import Clamp, Tether
 
-__all__ = ["Line", "LineType", "PointMass", "Segment", "module_attachments", "RetypedCopies", "resolve_sections", "retyped_changes"]
+__all__ = ["Line", "LineType", "PointMass", "RetypedCopies", "Segment", "module_attachments", "resolve_sections",
+           "retyped_changes"]
 
 #: Default water density [kg/m^3] and gravity [m/s^2] used where no environment is given.
 _RHO, _G = 1025.0, 9.81

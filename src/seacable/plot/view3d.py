@@ -4,8 +4,8 @@ The lines of any result with a shape (``static``, ``towed_steady``, ``modal``, `
 ``system_dynamic``, ``towed_dynamic``, ``laying_dynamic``, ``towline_dynamic``) are drawn in 3-D, Z up, coloured by
 their tension
 (kN, one colour bar), over the sea surface (z = 0) and the seabed the result knows: the case's flat or sloped
-plane, its profile along X or its seabed grid (land left open), or the lay's seabed on its track or route. Bodies, vessels and the lay ship are
-markers. A result with several states (output times, pushover offsets, system conditions) is animated: one
+plane, its profile along X or its seabed grid (land left open), or the lay's seabed on its track or route. Bodies,
+vessels and the lay ship are markers. A result with several states (output times, pushover offsets, system conditions) is animated: one
 frame a state, a slider and a play button; output times are decimated evenly to at most ``max_frames`` frames
 (the first and the last kept), so that a 3-hour run's page stays a few megabytes (plotly's own script is 4.8 MB
 of it). The page needs no network: plotly's script is written into it (``include_plotlyjs=True``).
@@ -45,7 +45,6 @@ _LINE = "line"
 COLORSCALE = "Viridis"
 #: points along x and along y at which a seabed grid is drawn (bilinear between them)
 _GRID_SAMPLES = 41
-
 #: sea surface and seabed colours
 SEA = "rgb(70,130,180)"
 SEABED = "rgb(194,166,120)"
