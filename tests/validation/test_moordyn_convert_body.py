@@ -18,7 +18,8 @@ pads are below the centre of gravity: the net buoyancy above the lines' pull kee
 from __future__ import annotations
 
 import math
-import os
+import contextlib
+import sys
 import warnings
 from pathlib import Path
 
@@ -28,6 +29,9 @@ import yaml
 
 import seacable as sc
 from seacable.io.convert import case_to_deck
+
+sys.path.insert(0, str(Path(__file__).parent))
+import _moordyn_peer as peer  # noqa: E402
 
 moordyn = pytest.importorskip("moordyn")
 
@@ -47,31 +51,19 @@ def _rotation(roll, pitch, yaw):
 def _run_moordyn(deck: Path, seconds: int = 20):
     """MoorDyn's initial condition, then ``seconds`` of steps of 1 s with nothing moving: the pads' positions (the
     deck's points 4, 5, 6) and the lines' pull on them, averaged over the last half."""
-    cwd = os.getcwd()
     pads, tens = [], []
-    try:
-        os.chdir(deck.parent)
-        fd = os.dup(1)
-        with open(os.devnull, "w") as null:  # MoorDyn's console output
-            os.dup2(null.fileno(), 1)
-            try:
-                system = moordyn.Create(deck.name)
-                assert moordyn.Init(system, [], []) == 0
-                t = 0.0
-                for _ in range(seconds):
-                    moordyn.Step(system, [], [], t, 1.0)
-                    t += 1.0
-                    pads.append([moordyn.GetPointPos(moordyn.GetPoint(system, k)) for k in (4, 5, 6)])
-                    # the line's pull on its pad: seacable's fairlead tension (MoorDyn's FairTen is its top
-                    # segment's tension, short of the end node's weight and buoyancy)
-                    tens.append([np.linalg.norm(moordyn.GetPointForce(moordyn.GetPoint(system, k)))
-                                 for k in (4, 5, 6)])
-                moordyn.Close(system)
-            finally:
-                os.dup2(fd, 1)
-                os.close(fd)
-    finally:
-        os.chdir(cwd)
+    with contextlib.chdir(deck.parent), peer._quiet():  # MoorDyn writes beside its deck; its console output
+        system = moordyn.Create(deck.name)
+        assert moordyn.Init(system, [], []) == 0
+        t = 0.0
+        for _ in range(seconds):
+            moordyn.Step(system, [], [], t, 1.0)
+            t += 1.0
+            pads.append([moordyn.GetPointPos(moordyn.GetPoint(system, k)) for k in (4, 5, 6)])
+            # the line's pull on its pad: seacable's fairlead tension (MoorDyn's FairTen is its top segment's
+            # tension, short of the end node's weight and buoyancy)
+            tens.append([np.linalg.norm(moordyn.GetPointForce(moordyn.GetPoint(system, k))) for k in (4, 5, 6)])
+        moordyn.Close(system)
     half = seconds // 2
     return np.mean(pads[half:], axis=0), np.mean(tens[half:], axis=0)
 

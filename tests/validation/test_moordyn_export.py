@@ -9,7 +9,8 @@ The round trip deck -> case file -> deck gives MoorDyn a deck it solves to the s
 
 from __future__ import annotations
 
-import os
+import contextlib
+import sys
 import warnings
 from pathlib import Path
 
@@ -21,6 +22,9 @@ from seacable.cli import main
 from seacable.io import load_moordyn_case
 from seacable.io.convert import case_to_deck, deck_to_yaml
 from seacable.io.export import export_moordyn
+
+sys.path.insert(0, str(Path(__file__).parent))
+import _moordyn_peer as peer  # noqa: E402
 
 moordyn = pytest.importorskip("moordyn")
 
@@ -67,25 +71,14 @@ def _deck(folder: Path, name="deck") -> Path:
 def _run_moordyn(deck: Path, seconds: float = 1.0) -> None:
     """MoorDyn's statics (its dynamic relaxation in Init), then ``seconds`` with the coupled point held: the .out
     files beside the deck (MoorDyn writes a row per step of 0.5 s, from the first step's end)."""
-    cwd = os.getcwd()
-    try:
-        os.chdir(deck.parent)
-        fd = os.dup(1)
-        with open(os.devnull, "w") as null:  # MoorDyn's console output
-            os.dup2(null.fileno(), 1)
-            try:
-                system = moordyn.Create(str(deck.name))
-                assert moordyn.Init(system, [0.0, 0.0, -5.0], [0.0, 0.0, 0.0]) == 0
-                t = 0.0
-                for _ in range(round(seconds / 0.5)):
-                    moordyn.Step(system, [0.0, 0.0, -5.0], [0.0, 0.0, 0.0], t, 0.5)
-                    t += 0.5
-                moordyn.Close(system)
-            finally:
-                os.dup2(fd, 1)
-                os.close(fd)
-    finally:
-        os.chdir(cwd)
+    with contextlib.chdir(deck.parent), peer._quiet():  # MoorDyn writes beside its deck; its console output
+        system = moordyn.Create(str(deck.name))
+        assert moordyn.Init(system, [0.0, 0.0, -5.0], [0.0, 0.0, 0.0]) == 0
+        t = 0.0
+        for _ in range(round(seconds / 0.5)):
+            moordyn.Step(system, [0.0, 0.0, -5.0], [0.0, 0.0, 0.0], t, 0.5)
+            t += 0.5
+        moordyn.Close(system)
 
 
 def _table(path: Path) -> tuple[list[str], np.ndarray]:
