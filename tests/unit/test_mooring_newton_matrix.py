@@ -130,6 +130,18 @@ def _towed_state(drag_area=0.4, added_mass=0.0):
     return model, X, V
 
 
+def _matrix_and_differences(model, X, V, which):
+    """The towed line's Newton matrix ``which`` (K, or C alone: the band with cc = 1 less the band with cc = 0), its
+    band, its dense form and the central differences of the forces it should equal."""
+    band = np.zeros((3 * model.nfree, 2 * model.bw + 1))
+    _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
+    if which == "C":
+        k_only = np.zeros_like(band)
+        _forces(model, X, V, k_only, cc=0.0)
+        band = band - k_only
+    return band, _dense(model, band), _differences(model, X, V, which, 1e-6)
+
+
 @pytest.mark.parametrize(("which", "atol"), [("K", 1e-2), ("C", 1e-2)])
 def test_a_towed_lines_newton_matrix_is_the_derivative_of_its_forces(which, atol):
     """The same check on a towed line, whose shape the drag sets: with ``E_DRAGTURN`` the drag's change with the
@@ -137,15 +149,7 @@ def test_a_towed_lines_newton_matrix_is_the_derivative_of_its_forces(which, atol
     and the lift of the body and of a clump in line (1/2 rho C_L A (|u|^2 e_z - u_z u)) is in C. Nothing is left
     out: both to their round-off, 1e-2 (a dropped turning term or a lift tangent of the wrong sign is 1 to 1e3)."""
     model, X, V = _towed_state()
-    nd = 3 * model.nfree
-    band = np.zeros((nd, 2 * model.bw + 1))
-    _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
-    if which == "C":
-        k_only = np.zeros_like(band)
-        _forces(model, X, V, k_only, cc=0.0)
-        band = band - k_only
-    got = _dense(model, band)
-    want = _differences(model, X, V, which, 1e-6)
+    band, got, want = _matrix_and_differences(model, X, V, which)
     np.testing.assert_allclose(got, want, rtol=0, atol=atol)
     # the terms under test are there: the turning terms without E_DRAGTURN, the lift's without lift, differ
     model.env[K.E_DRAGTURN] = 0.0
@@ -166,15 +170,7 @@ def test_a_towed_bodys_drag_per_axis_is_in_the_newton_matrix(which):
     from seacable.mooring._body import body_added_mass, body_axes
 
     model, X, V = _towed_state(drag_area=[0.4, 1.2, 2.5], added_mass=[50.0, 150.0, 400.0])
-    nd = 3 * model.nfree
-    band = np.zeros((nd, 2 * model.bw + 1))
-    _forces(model, X, V, band, cc=1.0 if which == "C" else 0.0)
-    if which == "C":
-        k_only = np.zeros_like(band)
-        _forces(model, X, V, k_only, cc=0.0)
-        band = band - k_only
-    got = _dense(model, band)
-    want = _differences(model, X, V, which, 1e-6)
+    band, got, want = _matrix_and_differences(model, X, V, which)
     np.testing.assert_allclose(got, want, rtol=0, atol=1e-2)
     def node_mass(m):
         n = X.shape[0]
